@@ -1,0 +1,184 @@
+#include "apps/starter_pipeline.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "contact/type7_prepare.hpp"
+#include "io/model_file.hpp"
+#include "io/starter_listing.hpp"
+#include "parser/deck.hpp"
+#include "parser/deck_echo.hpp"
+#include "parser/model_builder.hpp"
+#include "solver/model/masses.hpp"
+
+namespace radx::app {
+
+namespace fs = std::filesystem;
+
+std::string starter_output_root(const std::string& deck) {
+  std::string stem = fs::path(deck).stem().string();
+  if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, "_0000") == 0) return stem;
+  return stem + "_0000";
+}
+
+namespace {
+
+std::string engine_deck_beside(const std::string& deck) {
+  const fs::path p(deck);
+  std::string stem = p.stem().string();
+  if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, "_0000") == 0) {
+    const fs::path e = p.parent_path() / (stem.substr(0, stem.size() - 5) + "_0001" + p.extension().string());
+    if (fs::exists(e)) return e.string();
+  }
+  return {};
+}
+
+bool write_text_atomically(const std::string& path, const std::string& text, std::string& error) {
+  const std::string part = path + ".part";
+  {
+    std::ofstream f(part, std::ios::binary | std::ios::trunc);
+    if (!f) {
+      error = "cannot create " + part;
+      return false;
+    }
+    f << text;
+    f.flush();
+    if (!f) {
+      error = "cannot write " + part;
+      std::error_code ec;
+      fs::remove(part, ec);
+      return false;
+    }
+  }
+  std::error_code ec;
+  fs::rename(part, path, ec);
+  if (ec) {
+    error = "cannot rename " + part + " to " + path + ": " + ec.message();
+    fs::remove(part, ec);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ostream& err) {
+  const auto t0 = std::chrono::steady_clock::now();
+  StarterResult res;
+  Diagnostics diags;
+  const Deck deck = read_starter_deck(opt.deck, diags);
+  model::Model model;
+  const bool readable = !deck.records.empty();
+  if (readable) {
+    model = build_model(deck, diags);
+    if (!diags.has_errors()) {
+      contact::prepare_type7_interfaces(model);
+      bool moved = false;
+      for (const auto& in : model.interfaces) {
+        if (in.initial_penetrations == 0) continue;
+        moved = moved || in.inacti == 3;
+        std::ostringstream msg;
+        msg << in.initial_penetrations << " secondary node(s) start inside the gap; largest penetration "
+            << in.max_initial_penetration << " at node " << in.max_penetration_node
+            << "; Inacti = " << in.inacti
+            << (in.inacti == 0   ? ": no action, the penalty will push them out (this may inject energy)"
+                : in.inacti == 1 ? ": their stiffness is deactivated"
+                : in.inacti == 2 ? ": the stiffness of the main segments concerned is deactivated"
+                : in.inacti == 3 ? ": the starter moved them out to the gap surface"
+                                 : ": their gap starts reduced and grows back as the pair opens");
+        const auto* r = [&]() -> const KeywordRecord* {
+          for (const auto& rec : deck.records)
+            if (rec.id == in.id &&
+                (rec.decl->path == "/INTER/TYPE7" || rec.decl->path == "/INTER/LAGDT/TYPE7"))
+              return &rec;
+          return nullptr;
+        }();
+        diags.warning(Diag::InitialPenetration, r ? deck.where(r->pos, 1) : Where{opt.deck},
+                      About{in.lagdt ? "/INTER/LAGDT/TYPE7" : "/INTER/TYPE7", in.id, in.title}, msg.str());
+      }
+      if (moved) model::compute_lumped_masses(model);
+    }
+  }
+  if (opt.check_engine_deck) {
+    std::string engine = is_one_file_deck(opt.deck) ? opt.deck : engine_deck_beside(opt.deck);
+    if (!engine.empty()) read_engine_deck(engine, diags);
+  }
+  diags.sort();
+  res.errors = diags.error_count();
+  res.warnings = diags.warning_count();
+  diags.print(err);
+
+  std::vector<std::string> diag_lines;
+  for (const auto& d : diags.items()) diag_lines.push_back(Diagnostics::format(d));
+
+  // Summary on stdout.
+  out << "radx starter: " << opt.deck << '\n';
+  if (readable) {
+    out << "  nodes " << model.nodes.size() << ", shells " << model.shells.size() << ", 3-node shells "
+        << model.shells3.size() << ", bricks " << model.bricks.size() << ", parts " << model.parts.size()
+        << ", interfaces " << model.interfaces.size() << '\n';
+    out << "  total mass " << std::setprecision(6) << model.total_mass << ' ' << model.units.mass_name
+        << '\n';
+    for (const auto& in : model.interfaces) {
+      out << "  interface " << in.id << (in.lagdt ? " (LAGDT)" : "") << ": " << in.secondary_nodes.size()
+          << " secondary nodes, gap " << in.gap_lo << " to " << in.gap_hi << ", stiffness " << in.stiff_lo
+          << " to " << in.stiff_hi << '\n';
+    }
+  }
+  out << "  " << res.errors << " error(s), " << res.warnings << " warning(s)\n";
+
+  if (opt.write_outputs && readable) {
+    std::error_code ec;
+    fs::create_directories(opt.out_dir, ec);
+    const std::string root = (fs::path(opt.out_dir) / starter_output_root(opt.deck)).string();
+    res.listing_path = root + ".out";
+    const std::string model_path = root + ".hdf";
+    std::string error;
+    if (!diags.has_errors()) {
+      if (!io::write_model_file(model, model_path, error)) {
+        err << opt.deck << ": error: cannot write the model file: " << error << '\n';
+        ++res.errors;
+      } else {
+        res.model_path = model_path;
+      }
+    } else if (fs::exists(model_path)) {
+      // A model file from an earlier run no longer matches this deck: do not leave it for the engine.
+      fs::remove(model_path, ec);
+      out << "  removed the stale model file " << model_path << " (it does not match the deck any more)\n";
+    }
+    io::StarterListingInput li;
+    li.deck_path = opt.deck;
+    li.program_version = RADX_VERSION;
+    li.model = &model;
+    for (const auto& in : model.interfaces) {
+      std::vector<std::string> echo;
+      for (const auto& rec : deck.records)
+        if (rec.id == in.id && (rec.decl->path == "/INTER/TYPE7" || rec.decl->path == "/INTER/LAGDT/TYPE7"))
+          echo = echo_keyword(rec);
+      li.interface_echo.push_back(std::move(echo));
+    }
+    li.diagnostics = diag_lines;
+    li.errors = res.errors;
+    li.warnings = res.warnings;
+    li.model_file = res.model_path;
+    li.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::ostringstream listing;
+    io::write_starter_listing(listing, li);
+    if (!write_text_atomically(res.listing_path, listing.str(), error)) {
+      err << opt.deck << ": error: " << error << '\n';
+      ++res.errors;
+    }
+    out << "  listing " << res.listing_path << '\n';
+    if (!res.model_path.empty()) out << "  model file " << res.model_path << '\n';
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out << "  starter time " << std::fixed << std::setprecision(3) << secs << " s\n";
+  res.exit_code = res.errors > 0 ? 1 : 0;
+  return res;
+}
+
+}  // namespace radx::app

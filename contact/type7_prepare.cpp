@@ -1,0 +1,437 @@
+// TYPE7 starter computations (shared/spec/type7-lagdt.md):
+//
+// Gap, 4.1. Igap 0: g = Gapmin, with Gapmin = min(t, l/10, lmin/2) when the input is 0 (t the mean
+//   thickness of the main shells, l the mean side of the main bricks, lmin the shortest side of all
+//   main segments; a term with no element behind it is left out).
+//   Igap 1: g = max(Gapmin, gs + gm); Igap 2: g = max(Gapmin, min(Fscalegap (gs + gm), Gapmax)),
+//   Gapmax = 0 meaning no cap. gm = t/2 of the main shell (0 for a brick face); gs = t/2 of the
+//   thickest shell at the secondary node (0 for bricks only or no element).
+// Stiffness, 4.2. Main segment on a shell: Km = Stfac 0.5 E t; on a brick: Km = Stfac B S^2 / V.
+//   Secondary node on a shell: Ks = Stfac 0.5 E t; on a brick: Ks = Stfac B V^(1/3).
+//   Istf 0: K = Km; 1: K = Stfac; 2..5: K = clamp(Kn, Stmin, Stmax) with Kn = (Km + Ks)/2,
+//   max(Km, Ks), min(Km, Ks), Km Ks / (Km + Ks).
+// Initial penetrations, 4.6: a secondary node closer than g to a main segment (p = g - d > 0) is
+//   treated by Inacti: 0 nothing, 1 node without stiffness, 2 segment without stiffness, 3 node moved
+//   out to the gap surface, 5 gap reduced to g - P0, 6 gap reduced to (g - P0) - 0.05 (g - P0).
+//
+// The search for pairs is a uniform bucket grid: segments are binned by their box enlarged by the
+// largest gap, nodes look up their own cell, so the cost is linear in nodes plus segments.
+#include "contact/type7_prepare.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "solver/model/geometry.hpp"
+
+namespace radx::contact {
+
+using model::kNone;
+using model::Vec3;
+
+double closest_point_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, Vec3& w) {
+  // Voronoi-region walk over vertices, edges and the face (Ericson, Real-Time Collision Detection 5.1.5).
+  const Vec3 ab = model::sub(b, a), ac = model::sub(c, a), ap = model::sub(p, a);
+  const double d1 = model::dot(ab, ap), d2 = model::dot(ac, ap);
+  auto finish = [&](double wa, double wb, double wc) {
+    w = {wa, wb, wc};
+    const Vec3 q{wa * a[0] + wb * b[0] + wc * c[0], wa * a[1] + wb * b[1] + wc * c[1],
+                 wa * a[2] + wb * b[2] + wc * c[2]};
+    const Vec3 d = model::sub(p, q);
+    return model::dot(d, d);
+  };
+  if (d1 <= 0 && d2 <= 0) return finish(1, 0, 0);
+  const Vec3 bp = model::sub(p, b);
+  const double d3 = model::dot(ab, bp), d4 = model::dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return finish(0, 1, 0);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double v = d1 / (d1 - d3);
+    return finish(1 - v, v, 0);
+  }
+  const Vec3 cp = model::sub(p, c);
+  const double d5 = model::dot(ab, cp), d6 = model::dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return finish(0, 0, 1);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double t = d2 / (d2 - d6);
+    return finish(1 - t, 0, t);
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return finish(0, 1 - t, t);
+  }
+  const double denom = va + vb + vc;
+  if (denom == 0) return finish(1, 0, 0);  // degenerate triangle: fall back to a vertex
+  const double v = vb / denom, t = vc / denom;
+  return finish(1 - v - t, v, t);
+}
+
+double closest_point_segment(const Vec3& p, const std::array<Vec3, 4>& x, bool triangle,
+                             std::array<double, 4>& h) {
+  Vec3 w{};
+  if (triangle) {
+    const double d2 = closest_point_triangle(p, x[0], x[1], x[2], w);
+    h = {w[0], w[1], w[2], 0.0};
+    return std::sqrt(d2);
+  }
+  const Vec3 c = model::scale(model::add(model::add(x[0], x[1]), model::add(x[2], x[3])), 0.25);
+  double best = std::numeric_limits<double>::max();
+  for (int k = 0; k < 4; ++k) {
+    const int k1 = (k + 1) % 4;
+    const double d2 = closest_point_triangle(p, x[k], x[k1], c, w);
+    if (d2 < best) {
+      best = d2;
+      h = {0.25 * w[2], 0.25 * w[2], 0.25 * w[2], 0.25 * w[2]};
+      h[k] += w[0];
+      h[k1] += w[1];
+    }
+  }
+  return std::sqrt(best);
+}
+
+double shell_element_thickness(const model::Model& m, model::ElementType type, std::int32_t e) {
+  const auto& b = type == model::ElementType::Shell3 ? m.shells3 : m.shells;
+  if (b.thickness[e] > 0) return b.thickness[e];
+  const auto part = b.part[e];
+  if (part == kNone || m.parts[part].property == kNone) return 0.0;
+  return m.properties[m.parts[part].property].shell.thickness;
+}
+
+double shell_contact_thickness(const model::Model& m, model::ElementType type, std::int32_t e) {
+  const auto& b = type == model::ElementType::Shell3 ? m.shells3 : m.shells;
+  const auto part = b.part[e];
+  if (part != kNone && m.parts[part].contact_thickness > 0) return m.parts[part].contact_thickness;
+  return shell_element_thickness(m, type, e);
+}
+
+double pair_stiffness(const model::Interface& in, double km, double ks) {
+  double kn = km;
+  switch (in.istf) {
+    case 0: return km;
+    case 1: return in.stfac;
+    case 2: kn = 0.5 * (km + ks); break;
+    case 3: kn = std::max(km, ks); break;
+    case 4: kn = std::min(km, ks); break;
+    case 5: kn = (km + ks) > 0 ? km * ks / (km + ks) : 0.0; break;
+    default: break;
+  }
+  return std::clamp(kn, in.stmin, in.stmax);
+}
+
+double pair_gap(const model::Interface& in, double gs, double gm) {
+  switch (in.igap) {
+    case 1: return std::max(in.gapmin, gs + gm);
+    case 2: {
+      double g = in.fscale_gap * (gs + gm);
+      if (in.gap_max > 0) g = std::min(g, in.gap_max);
+      return std::max(in.gapmin, g);
+    }
+    default: return in.gapmin;
+  }
+}
+
+namespace {
+
+struct ElementProps {
+  double young = 0, bulk = 0;
+};
+
+ElementProps material_of(const model::Model& m, std::int32_t part) {
+  if (part == kNone || m.parts[part].material == kNone) return {};
+  const auto& mat = m.materials[m.parts[part].material];
+  return {mat.young, mat.bulk};
+}
+
+Vec3 node_x(const model::Model& m, std::int32_t n) {
+  return {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
+}
+
+std::array<Vec3, 8> brick_x(const model::Model& m, std::int32_t e) {
+  std::array<Vec3, 8> x{};
+  for (int k = 0; k < 8; ++k) x[k] = node_x(m, m.bricks.conn[8 * static_cast<std::size_t>(e) + k]);
+  return x;
+}
+
+// Mean edge length of a brick (12 edges).
+double brick_mean_side(const std::array<Vec3, 8>& x) {
+  static constexpr int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                       {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  double s = 0;
+  for (const auto& e : edges) s += model::norm(model::sub(x[e[1]], x[e[0]]));
+  return s / 12.0;
+}
+
+// Per-node properties of the elements around each node: thickest shell (contact thickness), and the
+// largest shell and brick stiffness terms.
+struct NodeSupport {
+  std::vector<double> half_thickness;  // gs
+  std::vector<double> k_shell;         // 0.5 E t (max over shells)
+  std::vector<double> k_brick;         // B V^(1/3) (max over bricks)
+};
+
+NodeSupport node_support(const model::Model& m) {
+  NodeSupport s;
+  const auto n = m.nodes.size();
+  s.half_thickness.assign(n, 0.0);
+  s.k_shell.assign(n, 0.0);
+  s.k_brick.assign(n, 0.0);
+  for (auto type : {model::ElementType::Shell4, model::ElementType::Shell3}) {
+    const auto& b = type == model::ElementType::Shell3 ? m.shells3 : m.shells;
+    const auto npe = static_cast<std::size_t>(b.npe());
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const auto ei = static_cast<std::int32_t>(e);
+      const double tc = shell_contact_thickness(m, type, ei);
+      const double k = 0.5 * material_of(m, b.part[e]).young * shell_element_thickness(m, type, ei);
+      for (std::size_t j = 0; j < npe; ++j) {
+        const auto node = b.conn[e * npe + j];
+        if (node < 0) continue;
+        s.half_thickness[node] = std::max(s.half_thickness[node], 0.5 * tc);
+        s.k_shell[node] = std::max(s.k_shell[node], k);
+      }
+    }
+  }
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+    const auto x = brick_x(m, static_cast<std::int32_t>(e));
+    const double v = std::max(0.0, model::brick_volume(x));
+    const double k = material_of(m, m.bricks.part[e]).bulk * std::cbrt(v);
+    for (int j = 0; j < 8; ++j) {
+      const auto node = m.bricks.conn[8 * e + j];
+      if (node >= 0) s.k_brick[node] = std::max(s.k_brick[node], k);
+    }
+  }
+  return s;
+}
+
+std::array<Vec3, 4> segment_x(const model::Model& m, const std::array<std::int32_t, 4>& seg) {
+  return {node_x(m, seg[0]), node_x(m, seg[1]), node_x(m, seg[2]), node_x(m, seg[3])};
+}
+
+// Gap and stiffness of one interface.
+void gap_and_stiffness(model::Model& m, model::Interface& in, const NodeSupport& support) {
+  const auto& surf = m.surfaces[in.main_surface];
+  const auto ns = surf.segments.size();
+  in.gap_segment.assign(ns, 0.0);
+  in.stiff_segment.assign(ns, 0.0);
+  double t_sum = 0, l_sum = 0, lmin = std::numeric_limits<double>::max();
+  int t_count = 0, l_count = 0;
+  for (std::size_t s = 0; s < ns; ++s) {
+    const auto& seg = surf.segments[s];
+    const auto x = segment_x(m, seg);
+    const bool tri = seg[2] == seg[3];
+    const int sides = tri ? 3 : 4;
+    for (int k = 0; k < sides; ++k) lmin = std::min(lmin, model::norm(model::sub(x[(k + 1) % sides], x[k])));
+    const double area =
+        tri ? model::triangle_area(x[0], x[1], x[2]) : model::quad_area(x[0], x[1], x[2], x[3]);
+    const auto owner = surf.owner[s];
+    switch (surf.owner_type[s]) {
+      case model::SegmentOwner::Shell4:
+      case model::SegmentOwner::Shell3: {
+        const auto type = surf.owner_type[s] == model::SegmentOwner::Shell3 ? model::ElementType::Shell3
+                                                                            : model::ElementType::Shell4;
+        const auto& b = type == model::ElementType::Shell3 ? m.shells3 : m.shells;
+        const double t = shell_element_thickness(m, type, owner);
+        t_sum += t;
+        ++t_count;
+        in.gap_segment[s] = 0.5 * shell_contact_thickness(m, type, owner);
+        in.stiff_segment[s] = in.stfac * 0.5 * material_of(m, b.part[owner]).young * t;
+        break;
+      }
+      case model::SegmentOwner::Brick8: {
+        const auto bx = brick_x(m, owner);
+        l_sum += brick_mean_side(bx);
+        ++l_count;
+        const double v = model::brick_volume(bx);
+        in.stiff_segment[s] =
+            v > 0 ? in.stfac * material_of(m, m.bricks.part[owner]).bulk * area * area / v : 0.0;
+        break;
+      }
+      case model::SegmentOwner::None: break;
+    }
+  }
+  in.gapmin_automatic = in.gapmin_input == 0;
+  if (in.gapmin_automatic) {
+    double g = ns > 0 ? 0.5 * lmin : 0.0;
+    if (t_count > 0) g = std::min(g, t_sum / t_count);
+    if (l_count > 0) g = std::min(g, 0.1 * l_sum / l_count);
+    in.gapmin = g;
+  } else {
+    in.gapmin = in.gapmin_input;
+  }
+  const auto nn = in.secondary_nodes.size();
+  in.gap_node.assign(nn, 0.0);
+  in.stiff_node.assign(nn, 0.0);
+  for (std::size_t k = 0; k < nn; ++k) {
+    const auto node = in.secondary_nodes[k];
+    in.gap_node[k] = support.half_thickness[node];
+    in.stiff_node[k] = in.stfac * std::max(support.k_shell[node], support.k_brick[node]);
+  }
+  // Ranges: every combination rule is monotone in both arguments, so the extremes of the pair values
+  // are reached at the extremes of the node and segment values.
+  auto range = [](const std::vector<double>& v) {
+    if (v.empty()) return std::pair{0.0, 0.0};
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    return std::pair{*lo, *hi};
+  };
+  const auto [gs_lo, gs_hi] = range(in.gap_node);
+  const auto [gm_lo, gm_hi] = range(in.gap_segment);
+  in.gap_lo = pair_gap(in, gs_lo, gm_lo);
+  in.gap_hi = pair_gap(in, gs_hi, gm_hi);
+  const auto [ks_lo, ks_hi] = range(in.stiff_node);
+  const auto [km_lo, km_hi] = range(in.stiff_segment);
+  in.stiff_lo = pair_stiffness(in, km_lo, ks_lo);
+  in.stiff_hi = pair_stiffness(in, km_hi, ks_hi);
+}
+
+// Uniform bucket grid over segment boxes enlarged by `reach`.
+class SegmentGrid {
+ public:
+  SegmentGrid(const model::Model& m, const model::Surface& surf, double reach) {
+    const auto ns = surf.segments.size();
+    if (ns == 0) return;
+    lo_ = {1e300, 1e300, 1e300};
+    Vec3 hi{-1e300, -1e300, -1e300};
+    double size_sum = 0;
+    std::vector<std::array<Vec3, 2>> boxes(ns);
+    for (std::size_t s = 0; s < ns; ++s) {
+      const auto x = segment_x(m, surf.segments[s]);
+      Vec3 a = x[0], b = x[0];
+      for (const auto& p : x)
+        for (int d = 0; d < 3; ++d) {
+          a[d] = std::min(a[d], p[d]);
+          b[d] = std::max(b[d], p[d]);
+        }
+      size_sum += std::max({b[0] - a[0], b[1] - a[1], b[2] - a[2]});
+      for (int d = 0; d < 3; ++d) {
+        a[d] -= reach;
+        b[d] += reach;
+        lo_[d] = std::min(lo_[d], a[d]);
+        hi[d] = std::max(hi[d], b[d]);
+      }
+      boxes[s] = {a, b};
+    }
+    cell_ = std::max(size_sum / static_cast<double>(ns) + 2 * reach, 1e-30);
+    for (int d = 0; d < 3; ++d)
+      dims_[d] =
+          std::clamp<std::int64_t>(static_cast<std::int64_t>((hi[d] - lo_[d]) / cell_) + 1, 1, 1 << 20);
+    for (std::size_t s = 0; s < ns; ++s) {
+      const auto i0 = cell_of(boxes[s][0]), i1 = cell_of(boxes[s][1]);
+      for (auto i = i0[0]; i <= i1[0]; ++i)
+        for (auto j = i0[1]; j <= i1[1]; ++j)
+          for (auto k = i0[2]; k <= i1[2]; ++k)
+            entries_.push_back({key(i, j, k), static_cast<std::int32_t>(s)});
+    }
+    std::sort(entries_.begin(), entries_.end());
+  }
+
+  template <class F>
+  void for_candidates(const Vec3& p, F&& f) const {
+    if (entries_.empty()) return;
+    for (int d = 0; d < 3; ++d)
+      if (p[d] < lo_[d] || p[d] > lo_[d] + cell_ * static_cast<double>(dims_[d])) return;
+    const auto c = cell_of(p);
+    const auto k = key(c[0], c[1], c[2]);
+    auto it =
+        std::lower_bound(entries_.begin(), entries_.end(), std::pair<std::int64_t, std::int32_t>{k, -1});
+    for (; it != entries_.end() && it->first == k; ++it) f(it->second);
+  }
+
+ private:
+  std::array<std::int64_t, 3> cell_of(const Vec3& p) const {
+    std::array<std::int64_t, 3> c{};
+    for (int d = 0; d < 3; ++d)
+      c[d] = std::clamp<std::int64_t>(static_cast<std::int64_t>((p[d] - lo_[d]) / cell_), 0, dims_[d] - 1);
+    return c;
+  }
+  std::int64_t key(std::int64_t i, std::int64_t j, std::int64_t k) const {
+    return (i * dims_[1] + j) * dims_[2] + k;
+  }
+
+  Vec3 lo_{};
+  double cell_ = 1;
+  std::array<std::int64_t, 3> dims_{1, 1, 1};
+  std::vector<std::pair<std::int64_t, std::int32_t>> entries_;
+};
+
+void initial_penetrations(model::Model& m, model::Interface& in) {
+  const auto& surf = m.surfaces[in.main_surface];
+  if (surf.segments.empty() || in.secondary_nodes.empty()) return;
+  const double reach = std::max(in.gap_hi, in.gapmin);
+  const SegmentGrid grid(m, surf, reach);
+  std::vector<std::uint8_t> segment_off(surf.segments.size(), 0);
+  for (std::size_t k = 0; k < in.secondary_nodes.size(); ++k) {
+    const auto node = in.secondary_nodes[k];
+    const Vec3 p = node_x(m, node);
+    double worst = 0;
+    std::int32_t worst_seg = kNone;
+    Vec3 worst_dir{};
+    double worst_gap = 0;
+    grid.for_candidates(p, [&](std::int32_t s) {
+      const auto& seg = surf.segments[s];
+      if (seg[0] == node || seg[1] == node || seg[2] == node || seg[3] == node) return;  // own segment
+      const auto x = segment_x(m, seg);
+      std::array<double, 4> h{};
+      const double d = closest_point_segment(p, x, seg[2] == seg[3], h);
+      const double g = pair_gap(in, in.gap_node[k], in.gap_segment[s]);
+      const double pen = g - d;
+      if (pen > worst) {
+        worst = pen;
+        worst_seg = s;
+        worst_gap = g;
+        Vec3 q{};
+        for (int j = 0; j < 4; ++j)
+          for (int c = 0; c < 3; ++c) q[c] += h[j] * x[j][c];
+        worst_dir = model::sub(p, q);
+        if (d < 1e-300) {
+          const auto nrm = model::quad_normal(x[0], x[1], x[2], x[3]);
+          worst_dir = nrm;
+        }
+      }
+    });
+    if (worst_seg == kNone) continue;
+    ++in.initial_penetrations;
+    if (worst > in.max_initial_penetration) {
+      in.max_initial_penetration = worst;
+      in.max_penetration_node = m.nodes.id[node];
+    }
+    switch (in.inacti) {
+      case 1: in.inactive_nodes.push_back(node); break;
+      case 2: segment_off[worst_seg] = 1; break;
+      case 3: {
+        const double len = model::norm(worst_dir);
+        if (len > 0) {
+          const double s = worst / len;
+          m.nodes.x[node] += s * worst_dir[0];
+          m.nodes.y[node] += s * worst_dir[1];
+          m.nodes.z[node] += s * worst_dir[2];
+        }
+        break;
+      }
+      case 5:
+      case 6: {
+        const double open = worst_gap - worst;  // gap - P0
+        in.penetrating_nodes.push_back(node);
+        in.initial_gap_reduction.push_back(in.inacti == 5 ? worst : worst + 0.05 * open);
+        break;
+      }
+      default: break;
+    }
+  }
+  for (std::size_t s = 0; s < segment_off.size(); ++s)
+    if (segment_off[s]) in.inactive_segments.push_back(static_cast<std::int32_t>(s));
+}
+
+}  // namespace
+
+void prepare_type7_interfaces(model::Model& m) {
+  if (m.interfaces.empty()) return;
+  const NodeSupport support = node_support(m);
+  for (auto& in : m.interfaces) {
+    if (in.main_surface == kNone) continue;
+    gap_and_stiffness(m, in, support);
+    initial_penetrations(m, in);
+  }
+}
+
+}  // namespace radx::contact

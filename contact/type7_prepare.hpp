@@ -1,0 +1,41 @@
+// What the starter computes for each TYPE7 / LAGDT interface before the engine runs:
+// the gap (type7-lagdt.md 4.1), the stiffness per pair family (4.2) and the initial penetrations with
+// their Inacti treatment (4.6). Inputs and outputs are the model's interface records.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "solver/model/model.hpp"
+
+namespace radx::contact {
+
+// Closest point of triangle (a, b, c) to p; returns the squared distance and the barycentric
+// weights (wa, wb, wc) of the closest point.
+double closest_point_triangle(const std::array<double, 3>& p, const std::array<double, 3>& a,
+                              const std::array<double, 3>& b, const std::array<double, 3>& c,
+                              std::array<double, 3>& weights);
+
+// Closest point of a segment (quadrangle split into four triangles around its centroid, or a
+// triangle when n4 == n3) to p. Returns the distance; `weights` receives the shape-function weights
+// h1..h4 of the closest point (they sum to 1).
+double closest_point_segment(const std::array<double, 3>& p, const std::array<std::array<double, 3>, 4>& x,
+                             bool triangle, std::array<double, 4>& weights);
+
+// Thickness a shell element uses for its mechanics: element card value if > 0, else the property's.
+double shell_element_thickness(const model::Model& m, model::ElementType type, std::int32_t e);
+// Thickness a shell element uses for contact gaps: /PART Thick > element Thick > /PROP Thick.
+double shell_contact_thickness(const model::Model& m, model::ElementType type, std::int32_t e);
+
+// Pair stiffness from the segment and node stiffnesses for Istf 0..5 (4.2).
+double pair_stiffness(const model::Interface& in, double k_main, double k_secondary);
+// Pair gap from the node and segment half-thicknesses for Igap 0..2 (4.1).
+double pair_gap(const model::Interface& in, double g_secondary, double g_main);
+
+// Fills gapmin, gap_node, gap_segment, stiff_node, stiff_segment, the gap and stiffness ranges, and
+// the initial-penetration fields of every interface. Inacti = 3 moves the penetrating nodes in
+// `m.nodes` (the engine then starts from the corrected coordinates).
+void prepare_type7_interfaces(model::Model& m);
+
+}  // namespace radx::contact

@@ -1,0 +1,1082 @@
+// Model file writer and reader (layout: docs/model-file.md; VTKHDF part: results-format.md section 2).
+//
+// How the code is organised:
+// - Handle: RAII owner of an hid_t; every HDF5 call that can fail goes through Handle or check(), which
+//   throw Failure with the path of the HDF5 object and the innermost message of the HDF5 error stack.
+//   write_model_file / read_model_file catch it and return false: nothing else escapes.
+// - Schema<S>: one table per Model struct of (member name, member pointer). It drives both directions:
+//   a collection (vector of records) is written as a "table" group: attribute count, one dataset per
+//   member (a column), variable-length members as CSR (values + <name>_offsets), nested structs
+//   flattened as <outer>_<inner>. Interfaces and Units are written one group per record: scalars as
+//   attributes, vectors as datasets.
+// - Big arrays (points, connectivity, element blocks) are written with one H5Dwrite each, contiguous
+//   layout, no fill, no conversion (memory and file types are both little-endian).
+#include "io/model_file.hpp"
+
+#include <fcntl.h>
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <array>
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#ifndef RADX_VERSION
+#define RADX_VERSION "unknown"
+#endif
+
+namespace radx::io {
+
+namespace {
+
+namespace fs = std::filesystem;
+using model::Model;
+
+// ---------------------------------------------------------------------------------------------------
+// Errors and handles
+
+struct Failure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Innermost (most specific) message of the HDF5 error stack, e.g. "unable to open file: name = ...,
+// errno = 2, error message = 'No such file or directory'". Clears the stack.
+std::string hdf5_detail() {
+  std::string detail;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_UPWARD,
+      [](unsigned n, const H5E_error2_t* e, void* data) -> herr_t {
+        if (n == 0 && e->desc != nullptr) *static_cast<std::string*>(data) = e->desc;
+        return 0;
+      },
+      &detail);
+  H5Eclear2(H5E_DEFAULT);
+  return detail;
+}
+
+[[noreturn]] void fail(const std::string& what) {
+  const std::string detail = hdf5_detail();
+  throw Failure(detail.empty() ? what : what + " (HDF5: " + detail + ")");
+}
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) fail(what);
+}
+
+// Silences HDF5's automatic error printing while we run; failures are reported through `error`.
+class QuietHdf5 {
+ public:
+  QuietHdf5() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+  QuietHdf5(const QuietHdf5&) = delete;
+  QuietHdf5& operator=(const QuietHdf5&) = delete;
+
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
+class Handle {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  Handle(hid_t id, Closer close, const std::string& what) : id_(id), close_(close) {
+    if (id_ < 0) fail(what);
+  }
+  Handle(Handle&& o) noexcept : id_(std::exchange(o.id_, -1)), close_(o.close_) {}
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  Handle& operator=(Handle&&) = delete;
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  operator hid_t() const { return id_; }  // NOLINT: used as an hid_t in HDF5 calls
+  // Closes now and reports a failure (for a file: the data may not be complete on disk).
+  void close(const std::string& what) { check(close_(std::exchange(id_, -1)), what); }
+
+ private:
+  hid_t id_;
+  Closer close_;
+};
+
+// Path of the object `loc` ("/radx/materials"), or of its member `name` ("/radx/materials/rho").
+std::string path_of(hid_t loc, const std::string& name) {
+  std::string base;
+  const ssize_t n = H5Iget_name(loc, nullptr, 0);
+  if (n > 0) {
+    base.resize(static_cast<std::size_t>(n));
+    H5Iget_name(loc, base.data(), static_cast<std::size_t>(n) + 1);
+  }
+  if (name.empty()) return base.empty() ? "/" : base;
+  if (base.empty() || base.back() != '/') base += '/';
+  return base + name;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Types
+
+template <class T>
+struct Hdf5Type;
+template <>
+struct Hdf5Type<double> {
+  static hid_t mem() { return H5T_NATIVE_DOUBLE; }
+  static hid_t file() { return H5T_IEEE_F64LE; }
+};
+template <>
+struct Hdf5Type<std::int64_t> {
+  static hid_t mem() { return H5T_NATIVE_INT64; }
+  static hid_t file() { return H5T_STD_I64LE; }
+};
+template <>
+struct Hdf5Type<std::int32_t> {
+  static hid_t mem() { return H5T_NATIVE_INT32; }
+  static hid_t file() { return H5T_STD_I32LE; }
+};
+template <>
+struct Hdf5Type<std::uint8_t> {
+  static hid_t mem() { return H5T_NATIVE_UINT8; }
+  static hid_t file() { return H5T_STD_U8LE; }
+};
+
+// How a member type is stored: bool as uint8 (0/1), enums as their underlying integer.
+template <class M>
+struct StoredT {
+  using type = M;
+};
+template <>
+struct StoredT<bool> {
+  using type = std::uint8_t;
+};
+template <class M>
+requires std::is_enum_v<M>
+struct StoredT<M> {
+  using type = std::underlying_type_t<M>;
+};
+template <class M>
+using Stored = typename StoredT<M>::type;
+
+// An item of a dataset row: a scalar (one value) or a std::array (K values, dataset [n, K]).
+template <class E>
+struct Item {
+  using value = E;
+  static constexpr hsize_t k = 0;  // 0: scalar, 1-D dataset
+};
+template <class E, std::size_t K>
+struct Item<std::array<E, K>> {
+  using value = E;
+  static constexpr hsize_t k = K;
+};
+
+template <class M>
+inline constexpr bool kIsVector = false;
+template <class E>
+inline constexpr bool kIsVector<std::vector<E>> = true;
+template <class M>
+inline constexpr bool kIsArray = false;
+template <class E, std::size_t K>
+inline constexpr bool kIsArray<std::array<E, K>> = true;
+
+Handle vlen_string_type() {
+  Handle t(H5Tcopy(H5T_C_S1), H5Tclose, "cannot create the string type");
+  check(H5Tset_size(t, H5T_VARIABLE), "cannot create the string type");
+  check(H5Tset_cset(t, H5T_CSET_UTF8), "cannot create the string type");
+  return t;
+}
+
+// Frees the strings HDF5 allocated in a variable-length string read. (H5Treclaim is declared by the
+// 1.10.8 headers but not exported by Debian 12's libhdf5: use the 1.10 name there.)
+void reclaim_strings(hid_t type, hid_t space, void* buf) {
+#if H5_VERSION_GE(1, 12, 0)
+  H5Treclaim(type, space, H5P_DEFAULT, buf);
+#else
+  H5Dvlen_reclaim(type, space, H5P_DEFAULT, buf);
+#endif
+}
+
+Handle simple_space(const std::vector<hsize_t>& dims, const std::string& what) {
+  return Handle(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose, what);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Groups, datasets, attributes
+
+Handle create_group(hid_t loc, const std::string& name) {
+  return Handle(H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                "cannot create group " + path_of(loc, name));
+}
+
+Handle open_group(hid_t loc, const std::string& name) {
+  return Handle(H5Gopen2(loc, name.c_str(), H5P_DEFAULT), H5Gclose,
+                "cannot open group " + path_of(loc, name));
+}
+
+// Creates a contiguous dataset and writes it with a single H5Dwrite. `data` holds product(dims) values.
+void write_raw(hid_t loc, const std::string& name, hid_t file_type, hid_t mem_type, const void* data,
+               const std::vector<hsize_t>& dims) {
+  const std::string what = "cannot write dataset " + path_of(loc, name);
+  const Handle space = simple_space(dims, what);
+  const Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, what);
+  check(H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER), what);
+  const Handle ds(H5Dcreate2(loc, name.c_str(), file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose,
+                  what);
+  hsize_t count = 1;
+  for (const hsize_t d : dims) count *= d;
+  if (count > 0) check(H5Dwrite(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), what);
+}
+
+// 1-D dataset [size] when cols == 0, else [size / cols, cols].
+template <class T>
+void write_dataset(hid_t loc, const std::string& name, const std::vector<T>& v, hsize_t cols = 0) {
+  std::vector<hsize_t> dims{v.size()};
+  if (cols > 0) dims = {v.size() / cols, cols};
+  write_raw(loc, name, Hdf5Type<T>::file(), Hdf5Type<T>::mem(), v.data(), dims);
+}
+
+// Reads a 1-D dataset (cols == 0) or a [n, cols] dataset, flattened row-major.
+template <class T>
+std::vector<T> read_dataset(hid_t loc, const std::string& name, hsize_t cols = 0) {
+  const std::string where = "dataset " + path_of(loc, name);
+  const Handle ds(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose, "cannot open " + where);
+  const Handle space(H5Dget_space(ds), H5Sclose, "cannot read " + where);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  const int want = cols > 0 ? 2 : 1;
+  if (rank != want) {
+    throw Failure(where + " has rank " + std::to_string(rank) + ", expected " + std::to_string(want));
+  }
+  std::array<hsize_t, 2> dims{0, 0};
+  check(H5Sget_simple_extent_dims(space, dims.data(), nullptr), "cannot read " + where);
+  if (cols > 0 && dims[1] != cols) {
+    throw Failure(where + " has " + std::to_string(dims[1]) + " columns, expected " + std::to_string(cols));
+  }
+  std::vector<T> out(static_cast<std::size_t>(dims[0] * (cols > 0 ? cols : 1)));
+  if (!out.empty()) {
+    check(H5Dread(ds, Hdf5Type<T>::mem(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "cannot read " + where);
+  }
+  return out;
+}
+
+void write_strings(hid_t loc, const std::string& name, const std::vector<std::string>& v) {
+  const std::string what = "cannot write dataset " + path_of(loc, name);
+  std::vector<const char*> ptr(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) ptr[i] = v[i].c_str();
+  const Handle type = vlen_string_type();
+  const Handle space = simple_space({v.size()}, what);
+  const Handle ds(H5Dcreate2(loc, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+                  what);
+  if (!v.empty()) check(H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptr.data()), what);
+}
+
+std::vector<std::string> read_strings(hid_t loc, const std::string& name) {
+  const std::string where = "dataset " + path_of(loc, name);
+  const Handle ds(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose, "cannot open " + where);
+  const Handle space(H5Dget_space(ds), H5Sclose, "cannot read " + where);
+  const Handle file_type(H5Dget_type(ds), H5Tclose, "cannot read " + where);
+  if (H5Sget_simple_extent_ndims(space) != 1 || H5Tget_class(file_type) != H5T_STRING ||
+      H5Tis_variable_str(file_type) <= 0) {
+    throw Failure(where + " is not a 1-D dataset of variable-length strings");
+  }
+  const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space));
+  std::vector<std::string> out(n);
+  if (n == 0) return out;
+  const Handle type = vlen_string_type();
+  std::vector<char*> ptr(n, nullptr);
+  check(H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptr.data()), "cannot read " + where);
+  for (std::size_t i = 0; i < n; ++i) out[i] = ptr[i] != nullptr ? ptr[i] : "";
+  reclaim_strings(type, space, ptr.data());
+  return out;
+}
+
+// Scalar attribute (n == 0) or 1-D attribute [n].
+template <class T>
+void write_attr(hid_t obj, const std::string& name, const T* data, hsize_t n = 0) {
+  const std::string what = "cannot write attribute " + name + " of " + path_of(obj, "");
+  const Handle space = n == 0 ? Handle(H5Screate(H5S_SCALAR), H5Sclose, what) : simple_space({n}, what);
+  const Handle a(H5Acreate2(obj, name.c_str(), Hdf5Type<T>::file(), space, H5P_DEFAULT, H5P_DEFAULT),
+                 H5Aclose, what);
+  check(H5Awrite(a, Hdf5Type<T>::mem(), data), what);
+}
+
+void write_string_attr(hid_t obj, const std::string& name, const std::string& value) {
+  const std::string what = "cannot write attribute " + name + " of " + path_of(obj, "");
+  const Handle type = vlen_string_type();
+  const Handle space(H5Screate(H5S_SCALAR), H5Sclose, what);
+  const Handle a(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, what);
+  const char* p = value.c_str();
+  check(H5Awrite(a, type, &p), what);
+}
+
+// Reads an attribute of exactly n values (n == 1 for a scalar).
+template <class T>
+void read_attr(hid_t obj, const std::string& name, T* data, hsize_t n = 1) {
+  const std::string where = "attribute " + name + " of " + path_of(obj, "");
+  const Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose, "cannot open " + where);
+  const Handle space(H5Aget_space(a), H5Sclose, "cannot read " + where);
+  const hssize_t have = H5Sget_simple_extent_npoints(space);
+  if (have != static_cast<hssize_t>(n)) {
+    throw Failure(where + " has " + std::to_string(have) + " values, expected " + std::to_string(n));
+  }
+  check(H5Aread(a, Hdf5Type<T>::mem(), data), "cannot read " + where);
+}
+
+template <class T>
+T read_attr(hid_t obj, const std::string& name) {
+  T value{};
+  read_attr(obj, name, &value);
+  return value;
+}
+
+std::string read_string_attr(hid_t obj, const std::string& name) {
+  const std::string where = "attribute " + name + " of " + path_of(obj, "");
+  const Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose, "cannot open " + where);
+  const Handle file_type(H5Aget_type(a), H5Tclose, "cannot read " + where);
+  const Handle space(H5Aget_space(a), H5Sclose, "cannot read " + where);
+  if (H5Tget_class(file_type) != H5T_STRING || H5Sget_simple_extent_npoints(space) != 1) {
+    throw Failure(where + " is not a scalar string");
+  }
+  if (H5Tis_variable_str(file_type) > 0) {
+    const Handle type = vlen_string_type();
+    char* p = nullptr;
+    check(H5Aread(a, type, &p), "cannot read " + where);
+    std::string out = p != nullptr ? p : "";
+    reclaim_strings(type, space, &p);
+    return out;
+  }
+  std::string out(H5Tget_size(file_type), '\0');  // fixed length: NUL padded or terminated
+  check(H5Aread(a, file_type, out.data()), "cannot read " + where);
+  out.resize(out.find('\0') == std::string::npos ? out.size() : out.find('\0'));
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Items: a vector of scalars or std::arrays of scalars, stored as [n] or [n, K] with the stored type.
+
+template <class E>
+void write_items(hid_t loc, const std::string& name, const std::vector<E>& items) {
+  using V = typename Item<E>::value;
+  using S = Stored<V>;
+  constexpr hsize_t k = Item<E>::k;
+  if constexpr (k == 0 && std::is_same_v<S, E>) {
+    write_dataset(loc, name, items);
+  } else {
+    std::vector<S> flat;
+    flat.reserve(items.size() * (k > 0 ? k : 1));
+    for (const E& e : items) {
+      if constexpr (k == 0) {
+        flat.push_back(static_cast<S>(e));
+      } else {
+        for (const V& x : e) flat.push_back(static_cast<S>(x));
+      }
+    }
+    write_dataset(loc, name, flat, k);
+  }
+}
+
+template <class E>
+std::vector<E> read_items(hid_t loc, const std::string& name) {
+  using V = typename Item<E>::value;
+  using S = Stored<V>;
+  constexpr hsize_t k = Item<E>::k;
+  if constexpr (k == 0 && std::is_same_v<S, E>) {
+    return read_dataset<S>(loc, name);
+  } else {
+    const std::vector<S> flat = read_dataset<S>(loc, name, k);
+    std::vector<E> items(flat.size() / (k > 0 ? k : 1));
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      if constexpr (k == 0) {
+        items[i] = static_cast<E>(flat[i]);
+      } else {
+        for (std::size_t j = 0; j < k; ++j) items[i][j] = static_cast<V>(flat[i * k + j]);
+      }
+    }
+    return items;
+  }
+}
+
+std::string join_lines(const std::vector<std::string>& v) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i > 0 ? "\n" : "") + v[i];
+  return s;
+}
+
+std::vector<std::string> split_lines(const std::string& s) {
+  std::vector<std::string> v;
+  if (s.empty()) return v;
+  std::size_t start = 0;
+  for (std::size_t nl = s.find('\n'); nl != std::string::npos; nl = s.find('\n', start)) {
+    v.push_back(s.substr(start, nl - start));
+    start = nl + 1;
+  }
+  v.push_back(s.substr(start));
+  return v;
+}
+
+// CSR offsets of n rows over `total` values: offsets[0] = 0, non-decreasing, offsets[n] = total.
+void check_offsets(const std::vector<std::int64_t>& off, std::size_t n, std::size_t total,
+                   const std::string& where) {
+  bool ok = off.size() == n + 1 && off.front() == 0 && off.back() == static_cast<std::int64_t>(total);
+  for (std::size_t i = 1; ok && i < off.size(); ++i) ok = off[i] >= off[i - 1];
+  if (!ok) {
+    throw Failure(where + " is not a valid CSR offsets array for " + std::to_string(n) + " rows and " +
+                  std::to_string(total) + " values");
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Schemas: (name, member pointer) for every member of every Model struct, in declaration order.
+
+template <class S, class M>
+struct Field {
+  const char* name;
+  M S::*member;
+};
+template <class S, class M>
+constexpr Field<S, M> field(const char* name, M S::*member) {
+  return {name, member};
+}
+
+template <class S>
+struct Schema {};
+
+template <class M>
+concept Record = requires {
+  Schema<M>::fields;
+};
+
+template <class S, class Fn>
+void for_each_field(Fn&& fn) {
+  std::apply([&](const auto&... f) { (fn(f.name, f.member), ...); }, Schema<S>::fields);
+}
+
+// Number of members of an aggregate: the largest N for which S{x1, ..., xN} compiles, each x converting
+// to anything. Lets the compiler check that a Schema lists every member: a member added to model.hpp
+// and not here is a compile error, not a field silently missing from the file.
+struct AnyValue {
+  template <class T>
+  operator T() const;  // NOLINT: declared only, used in unevaluated context
+};
+template <class S, std::size_t... I>
+constexpr bool brace_initializable(std::index_sequence<I...>) {
+  return requires {
+    S{(void(I), AnyValue{})...};
+  };
+}
+template <class S, std::size_t N = 0>
+constexpr std::size_t member_count() {
+  if constexpr (brace_initializable<S>(std::make_index_sequence<N + 1>())) {
+    return member_count<S, N + 1>();
+  } else {
+    return N;
+  }
+}
+
+#define RADX_FIELD(m) field(#m, &S::m)
+#define RADX_SCHEMA(Type, ...)                                                                           \
+  template <>                                                                                            \
+  struct Schema<model::Type> {                                                                           \
+    using S = model::Type;                                                                               \
+    static constexpr auto fields = std::make_tuple(__VA_ARGS__);                                         \
+  };                                                                                                     \
+  static_assert(std::tuple_size_v<decltype(Schema<model::Type>::fields)> == member_count<model::Type>(), \
+                "the Schema of " #Type " must list every member of model::" #Type                        \
+                " (then update docs/model-file.md and kModelFormatVersion)")
+
+RADX_SCHEMA(Units, RADX_FIELD(mass), RADX_FIELD(length), RADX_FIELD(time), RADX_FIELD(mass_name),
+            RADX_FIELD(length_name), RADX_FIELD(time_name));
+RADX_SCHEMA(Material, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(law), RADX_FIELD(keyword),
+            RADX_FIELD(rho), RADX_FIELD(rho_ref), RADX_FIELD(young), RADX_FIELD(poisson), RADX_FIELD(shear),
+            RADX_FIELD(bulk), RADX_FIELD(iflag), RADX_FIELD(flag_vp), RADX_FIELD(icc), RADX_FIELD(fsmooth),
+            RADX_FIELD(a), RADX_FIELD(b), RADX_FIELD(n), RADX_FIELD(eps_p_max), RADX_FIELD(sig_max0),
+            RADX_FIELD(sig_y_input), RADX_FIELD(uts), RADX_FIELD(e_uts), RADX_FIELD(c), RADX_FIELD(eps_dot_0),
+            RADX_FIELD(f_cut), RADX_FIELD(chard), RADX_FIELD(p_min), RADX_FIELD(m_temp), RADX_FIELD(t_melt),
+            RADX_FIELD(rho_cp), RADX_FIELD(t_ref), RADX_FIELD(t_max));
+RADX_SCHEMA(ShellProperty, RADX_FIELD(ishell), RADX_FIELD(ismstr), RADX_FIELD(ish3n), RADX_FIELD(idrill),
+            RADX_FIELD(ipinch), RADX_FIELD(n_ip), RADX_FIELD(ithick), RADX_FIELD(iplas), RADX_FIELD(ipos),
+            RADX_FIELD(p_thick_fail), RADX_FIELD(hm), RADX_FIELD(hf), RADX_FIELD(hr), RADX_FIELD(dm),
+            RADX_FIELD(dn), RADX_FIELD(thickness), RADX_FIELD(ashear));
+RADX_SCHEMA(SolidProperty, RADX_FIELD(isolid), RADX_FIELD(ismstr), RADX_FIELD(icpre), RADX_FIELD(iframe),
+            RADX_FIELD(inpts), RADX_FIELD(itetra4), RADX_FIELD(itetra10), RADX_FIELD(iale), RADX_FIELD(qa),
+            RADX_FIELD(qb), RADX_FIELD(h), RADX_FIELD(lambda_v), RADX_FIELD(mu_v), RADX_FIELD(dn),
+            RADX_FIELD(dt_min));
+RADX_SCHEMA(Property, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(shell),
+            RADX_FIELD(solid));
+RADX_SCHEMA(Part, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(property), RADX_FIELD(material),
+            RADX_FIELD(subset), RADX_FIELD(contact_thickness), RADX_FIELD(mass), RADX_FIELD(element_count));
+RADX_SCHEMA(Subset, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(children), RADX_FIELD(parts));
+RADX_SCHEMA(NodeGroup, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(nodes));
+RADX_SCHEMA(Box, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lo), RADX_FIELD(hi));
+RADX_SCHEMA(Surface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(segments),
+            RADX_FIELD(owner_type), RADX_FIELD(owner));
+RADX_SCHEMA(Function, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(x), RADX_FIELD(y));
+RADX_SCHEMA(BoundaryCondition, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(fixed), RADX_FIELD(skew),
+            RADX_FIELD(group));
+RADX_SCHEMA(ImposedVelocity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(function), RADX_FIELD(dir),
+            RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(frame), RADX_FIELD(icoor), RADX_FIELD(group),
+            RADX_FIELD(ascale_x), RADX_FIELD(fscale_y), RADX_FIELD(t_start), RADX_FIELD(t_stop));
+RADX_SCHEMA(InitialVelocity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(v), RADX_FIELD(group),
+            RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(t_start));
+RADX_SCHEMA(ConcentratedLoad, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(function), RADX_FIELD(dir),
+            RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(group), RADX_FIELD(itypfun),
+            RADX_FIELD(ascale_x), RADX_FIELD(fscale_y));
+RADX_SCHEMA(PressureLoad, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(surface), RADX_FIELD(function),
+            RADX_FIELD(sensor), RADX_FIELD(ipinch), RADX_FIELD(idel), RADX_FIELD(itypfun),
+            RADX_FIELD(ascale_x), RADX_FIELD(fscale_y));
+RADX_SCHEMA(Gravity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(function), RADX_FIELD(dir),
+            RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(group), RADX_FIELD(ascale_x),
+            RADX_FIELD(fscale_y));
+RADX_SCHEMA(RigidWall, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(node), RADX_FIELD(slide),
+            RADX_FIELD(iform), RADX_FIELD(ifq), RADX_FIELD(group1), RADX_FIELD(group2), RADX_FIELD(distance),
+            RADX_FIELD(friction), RADX_FIELD(diameter), RADX_FIELD(ffac), RADX_FIELD(mass), RADX_FIELD(m),
+            RADX_FIELD(m1), RADX_FIELD(v0), RADX_FIELD(normal), RADX_FIELD(secondary));
+RADX_SCHEMA(RigidBody, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(main_node), RADX_FIELD(sensor),
+            RADX_FIELD(skew), RADX_FIELD(ispher), RADX_FIELD(ikrem), RADX_FIELD(icog), RADX_FIELD(ioptoff),
+            RADX_FIELD(iexpams), RADX_FIELD(ifail), RADX_FIELD(mass), RADX_FIELD(inertia), RADX_FIELD(fn),
+            RADX_FIELD(ft), RADX_FIELD(exp_n), RADX_FIELD(exp_t), RADX_FIELD(group), RADX_FIELD(surface),
+            RADX_FIELD(secondary));
+RADX_SCHEMA(TimeHistoryGroup, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(variables),
+            RADX_FIELD(objects));
+RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RADX_FIELD(secondary_group),
+            RADX_FIELD(main_surface), RADX_FIELD(istf), RADX_FIELD(igap), RADX_FIELD(ibag), RADX_FIELD(idel),
+            RADX_FIELD(ithe), RADX_FIELD(icurv), RADX_FIELD(iadm), RADX_FIELD(itied), RADX_FIELD(ists),
+            RADX_FIELD(fscale_gap), RADX_FIELD(gap_max), RADX_FIELD(fpenmax), RADX_FIELD(stmin),
+            RADX_FIELD(stmax), RADX_FIELD(mesh_size_pct), RADX_FIELD(dt_min), RADX_FIELD(irem_gap),
+            RADX_FIELD(irem_i2), RADX_FIELD(stfac), RADX_FIELD(fric), RADX_FIELD(gapmin_input),
+            RADX_FIELD(t_start), RADX_FIELD(t_stop), RADX_FIELD(ibc), RADX_FIELD(inacti), RADX_FIELD(vis_s),
+            RADX_FIELD(vis_f), RADX_FIELD(bumult), RADX_FIELD(ifric), RADX_FIELD(ifiltr), RADX_FIELD(iform),
+            RADX_FIELD(xfreq), RADX_FIELD(c), RADX_FIELD(sens_id), RADX_FIELD(fct_id_f), RADX_FIELD(fric_id),
+            RADX_FIELD(ascale_f), RADX_FIELD(secondary_nodes), RADX_FIELD(gapmin),
+            RADX_FIELD(gapmin_automatic), RADX_FIELD(gap_node), RADX_FIELD(gap_segment),
+            RADX_FIELD(stiff_node), RADX_FIELD(stiff_segment), RADX_FIELD(gap_lo), RADX_FIELD(gap_hi),
+            RADX_FIELD(stiff_lo), RADX_FIELD(stiff_hi), RADX_FIELD(initial_penetrations),
+            RADX_FIELD(max_initial_penetration), RADX_FIELD(max_penetration_node), RADX_FIELD(inactive_nodes),
+            RADX_FIELD(inactive_segments), RADX_FIELD(penetrating_nodes), RADX_FIELD(initial_gap_reduction));
+
+#undef RADX_SCHEMA
+#undef RADX_FIELD
+
+// Written member by member below (write_radx, read_file, write_block, read_block): a new member of these
+// structs must be added there.
+static_assert(member_count<Model>() == 29, "model::Model changed: update write_radx and read_file");
+static_assert(member_count<model::Nodes>() == 5, "model::Nodes changed: update write_radx and read_file");
+static_assert(member_count<model::ElementBlock>() == 7, "model::ElementBlock changed: update write_block");
+
+// The collections of the Model: table groups under /radx (one column per member) ...
+template <class ModelT, class Fn>
+void for_each_table(ModelT& m, Fn&& fn) {
+  fn("materials", m.materials);
+  fn("properties", m.properties);
+  fn("parts", m.parts);
+  fn("subsets", m.subsets);
+  fn("node_groups", m.node_groups);
+  fn("boxes", m.boxes);
+  fn("surfaces", m.surfaces);
+  fn("functions", m.functions);
+  fn("bcs", m.bcs);
+  fn("imposed_velocities", m.imposed_velocities);
+  fn("initial_velocities", m.initial_velocities);
+  fn("concentrated_loads", m.concentrated_loads);
+  fn("pressure_loads", m.pressure_loads);
+  fn("gravities", m.gravities);
+  fn("rigid_walls", m.rigid_walls);
+  fn("rigid_bodies", m.rigid_bodies);
+  fn("time_histories", m.time_histories);
+}
+
+// ... and the element blocks under /radx/elements.
+template <class ModelT, class Fn>
+void for_each_block(ModelT& m, Fn&& fn) {
+  fn("shell4", m.shells);
+  fn("shell3", m.shells3);
+  fn("brick8", m.bricks);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Tables: one group per collection, attribute count, one column per member.
+
+template <class T, class Get>
+void write_column(hid_t g, const std::string& name, const std::vector<T>& recs, const Get& get) {
+  using M = std::remove_cvref_t<decltype(get(std::declval<const T&>()))>;
+  if constexpr (Record<M>) {
+    for_each_field<M>([&](const char* sub, auto member) {
+      write_column(
+          g, name + "_" + sub, recs, [&get, member ](auto& r) -> auto& { return get(r).*member; });
+    });
+  } else if constexpr (std::is_same_v<M, std::string> || std::is_same_v<M, std::vector<std::string>>) {
+    std::vector<std::string> col;
+    col.reserve(recs.size());
+    for (const T& r : recs) {
+      if constexpr (std::is_same_v<M, std::string>) {
+        col.push_back(get(r));
+      } else {
+        col.push_back(join_lines(get(r)));
+      }
+    }
+    write_strings(g, name, col);
+  } else if constexpr (kIsVector<M>) {  // CSR
+    M values;
+    std::vector<std::int64_t> offsets{0};
+    for (const T& r : recs) {
+      values.insert(values.end(), get(r).begin(), get(r).end());
+      offsets.push_back(static_cast<std::int64_t>(values.size()));
+    }
+    write_items(g, name, values);
+    write_dataset(g, name + "_offsets", offsets);
+  } else {
+    std::vector<M> col;
+    col.reserve(recs.size());
+    for (const T& r : recs) col.push_back(get(r));
+    write_items(g, name, col);
+  }
+}
+
+template <class T, class Get>
+void read_column(hid_t g, const std::string& name, std::vector<T>& recs, const Get& get) {
+  using M = std::remove_cvref_t<decltype(get(std::declval<T&>()))>;
+  const std::size_t n = recs.size();
+  const auto check_rows = [&](std::size_t have) {
+    if (have != n) {
+      throw Failure("dataset " + path_of(g, name) + " has " + std::to_string(have) + " rows, expected " +
+                    std::to_string(n) + " (attribute count of " + path_of(g, "") + ")");
+    }
+  };
+  if constexpr (Record<M>) {
+    for_each_field<M>([&](const char* sub, auto member) {
+      read_column(
+          g, name + "_" + sub, recs, [&get, member ](auto& r) -> auto& { return get(r).*member; });
+    });
+  } else if constexpr (std::is_same_v<M, std::string> || std::is_same_v<M, std::vector<std::string>>) {
+    const std::vector<std::string> col = read_strings(g, name);
+    check_rows(col.size());
+    for (std::size_t i = 0; i < n; ++i) {
+      if constexpr (std::is_same_v<M, std::string>) {
+        get(recs[i]) = col[i];
+      } else {
+        get(recs[i]) = split_lines(col[i]);
+      }
+    }
+  } else if constexpr (kIsVector<M>) {
+    const M values = read_items<typename M::value_type>(g, name);
+    const std::vector<std::int64_t> offsets = read_dataset<std::int64_t>(g, name + "_offsets");
+    check_offsets(offsets, n, values.size(), "dataset " + path_of(g, name + "_offsets"));
+    for (std::size_t i = 0; i < n; ++i) {
+      get(recs[i]).assign(values.begin() + offsets[i], values.begin() + offsets[i + 1]);
+    }
+  } else {
+    const std::vector<M> col = read_items<M>(g, name);
+    check_rows(col.size());
+    for (std::size_t i = 0; i < n; ++i) get(recs[i]) = col[i];
+  }
+}
+
+// Accessor of a top-level member, usable on const and non-const records.
+template <class P>
+auto member_of(P member) {
+  return [member](auto& r) -> auto& {
+    return r.*member;
+  };
+}
+
+template <class T>
+void write_table(hid_t parent, const std::string& name, const std::vector<T>& recs) {
+  const Handle g = create_group(parent, name);
+  const auto count = static_cast<std::int64_t>(recs.size());
+  write_attr(g, "count", &count);
+  for_each_field<T>([&](const char* col, auto member) { write_column(g, col, recs, member_of(member)); });
+}
+
+std::size_t read_count(hid_t g) {
+  const auto count = read_attr<std::int64_t>(g, "count");
+  if (count < 0 || count > std::numeric_limits<std::int32_t>::max()) {
+    throw Failure("attribute count of " + path_of(g, "") + " is out of range: " + std::to_string(count));
+  }
+  return static_cast<std::size_t>(count);
+}
+
+template <class T>
+void read_table(hid_t parent, const std::string& name, std::vector<T>& recs) {
+  const Handle g = open_group(parent, name);
+  recs.assign(read_count(g), T{});
+  for_each_field<T>([&](const char* col, auto member) { read_column(g, col, recs, member_of(member)); });
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Records: one group per record, scalars and fixed arrays as attributes, vectors as datasets.
+
+template <class R>
+void write_record(hid_t g, const R& r, const std::string& prefix = "") {
+  for_each_field<R>([&](const char* field_name, auto member) {
+    using M = std::remove_cvref_t<decltype(r.*member)>;
+    const std::string name = prefix + field_name;
+    const M& v = r.*member;
+    if constexpr (Record<M>) {
+      write_record(g, v, name + "_");
+    } else if constexpr (std::is_same_v<M, std::string>) {
+      write_string_attr(g, name, v);
+    } else if constexpr (std::is_same_v<M, std::vector<std::string>>) {
+      write_string_attr(g, name, join_lines(v));
+    } else if constexpr (kIsVector<M>) {
+      write_items(g, name, v);
+    } else if constexpr (kIsArray<M>) {
+      using S = Stored<typename M::value_type>;
+      std::array<S, std::tuple_size_v<M>> s{};
+      for (std::size_t i = 0; i < s.size(); ++i) s[i] = static_cast<S>(v[i]);
+      write_attr(g, name, s.data(), s.size());
+    } else {
+      const auto s = static_cast<Stored<M>>(v);
+      write_attr(g, name, &s);
+    }
+  });
+}
+
+template <class R>
+void read_record(hid_t g, R& r, const std::string& prefix = "") {
+  for_each_field<R>([&](const char* field_name, auto member) {
+    using M = std::remove_cvref_t<decltype(r.*member)>;
+    const std::string name = prefix + field_name;
+    M& v = r.*member;
+    if constexpr (Record<M>) {
+      read_record(g, v, name + "_");
+    } else if constexpr (std::is_same_v<M, std::string>) {
+      v = read_string_attr(g, name);
+    } else if constexpr (std::is_same_v<M, std::vector<std::string>>) {
+      v = split_lines(read_string_attr(g, name));
+    } else if constexpr (kIsVector<M>) {
+      v = read_items<typename M::value_type>(g, name);
+    } else if constexpr (kIsArray<M>) {
+      using S = Stored<typename M::value_type>;
+      std::array<S, std::tuple_size_v<M>> s{};
+      read_attr(g, name, s.data(), s.size());
+      for (std::size_t i = 0; i < s.size(); ++i) v[i] = static_cast<typename M::value_type>(s[i]);
+    } else {
+      v = static_cast<M>(read_attr<Stored<M>>(g, name));
+    }
+  });
+}
+
+// Group `name` with attribute count and sub-groups "0", "1", ... one per record.
+template <class T>
+void write_record_list(hid_t parent, const std::string& name, const std::vector<T>& recs) {
+  const Handle g = create_group(parent, name);
+  const auto count = static_cast<std::int64_t>(recs.size());
+  write_attr(g, "count", &count);
+  for (std::size_t i = 0; i < recs.size(); ++i) write_record(create_group(g, std::to_string(i)), recs[i]);
+}
+
+template <class T>
+void read_record_list(hid_t parent, const std::string& name, std::vector<T>& recs) {
+  const Handle g = open_group(parent, name);
+  recs.assign(read_count(g), T{});
+  for (std::size_t i = 0; i < recs.size(); ++i) read_record(open_group(g, std::to_string(i)), recs[i]);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Writing
+
+const char* block_name(model::ElementType t) {
+  switch (t) {
+    case model::ElementType::Shell4: return "shell";
+    case model::ElementType::Shell3: return "3-node shell";
+    case model::ElementType::Brick8: return "brick";
+  }
+  return "element";
+}
+
+// The writer refuses a model whose arrays do not match, so the mesh written is always valid.
+void check_model(const Model& m) {
+  const std::size_t nn = m.nodes.size();
+  if (m.nodes.x.size() != nn || m.nodes.y.size() != nn || m.nodes.z.size() != nn) {
+    throw Failure("invalid model: the node coordinate arrays do not have one value per node id");
+  }
+  if (nn > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
+    throw Failure("invalid model: too many nodes for 32-bit node indices");
+  }
+  for_each_block(m, [&](const char*, const model::ElementBlock& b) {
+    const std::size_t n = b.size();
+    if (b.part.size() != n || b.conn.size() != n * static_cast<std::size_t>(b.npe())) {
+      throw Failure(std::string("invalid model: the ") + block_name(b.type) +
+                    " block part or connectivity array does not match its id count");
+    }
+    for (std::size_t e = 0; e < n; ++e) {
+      if (b.part[e] < 0 || static_cast<std::size_t>(b.part[e]) >= m.parts.size()) {
+        throw Failure(std::string("invalid model: ") + block_name(b.type) + " " + std::to_string(b.id[e]) +
+                      " has part index " + std::to_string(b.part[e]) + " out of range");
+      }
+      for (int k = 0; k < b.npe(); ++k) {
+        const std::int32_t node = b.conn[e * static_cast<std::size_t>(b.npe()) + static_cast<std::size_t>(k)];
+        if (node < 0 || static_cast<std::size_t>(node) >= nn) {
+          throw Failure(std::string("invalid model: ") + block_name(b.type) + " " + std::to_string(b.id[e]) +
+                        " has node index " + std::to_string(node) + " out of range");
+        }
+      }
+    }
+  });
+}
+
+// results-format.md section 2: /VTKHDF UnstructuredGrid and /XDMF/MixedTopology.
+void write_vtkhdf(hid_t file, const Model& m) {
+  constexpr std::uint8_t kVtkTriangle = 5, kVtkQuad = 9, kVtkHexahedron = 12;
+  constexpr std::int64_t kXdmfTriangle = 4, kXdmfQuad = 5, kXdmfHexahedron = 9;
+  const std::size_t nn = m.nodes.size();
+  const std::size_t nc = m.element_count();
+  const std::size_t max_conn = 4 * m.shells.size() + 3 * m.shells3.size() + 8 * m.bricks.size();
+
+  std::vector<std::int64_t> connectivity, offsets, element_id, mixed;
+  std::vector<std::uint8_t> types;
+  std::vector<std::int32_t> part_id;
+  connectivity.reserve(max_conn);
+  mixed.reserve(max_conn + nc);
+  offsets.reserve(nc + 1);
+  types.reserve(nc);
+  part_id.reserve(nc);
+  element_id.reserve(nc);
+  offsets.push_back(0);
+  for_each_block(m, [&](const char*, const model::ElementBlock& b) {
+    const auto npe = static_cast<std::size_t>(b.npe());
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const std::int32_t* nodes = b.conn.data() + e * npe;
+      std::size_t used = npe;
+      std::uint8_t vtk = kVtkHexahedron;
+      std::int64_t xdmf = kXdmfHexahedron;
+      if (b.type == model::ElementType::Shell4 && nodes[2] != nodes[3]) {
+        vtk = kVtkQuad;
+        xdmf = kXdmfQuad;
+      } else if (b.type != model::ElementType::Brick8) {  // 3-node shell, or a quad with n3 == n4
+        used = 3;
+        vtk = kVtkTriangle;
+        xdmf = kXdmfTriangle;
+      }
+      mixed.push_back(xdmf);
+      for (std::size_t k = 0; k < used; ++k) {
+        connectivity.push_back(nodes[k]);
+        mixed.push_back(nodes[k]);
+      }
+      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+      types.push_back(vtk);
+      part_id.push_back(static_cast<std::int32_t>(m.parts[static_cast<std::size_t>(b.part[e])].id));
+      element_id.push_back(b.id[e]);
+    }
+  });
+  std::vector<double> points(3 * nn);
+  for (std::size_t i = 0; i < nn; ++i) {
+    points[3 * i] = m.nodes.x[i];
+    points[3 * i + 1] = m.nodes.y[i];
+    points[3 * i + 2] = m.nodes.z[i];
+  }
+
+  const Handle vtk = create_group(file, "VTKHDF");
+  const std::array<std::int64_t, 2> version{1, 0};
+  write_attr(vtk, "Version", version.data(), version.size());
+  {  // Type: fixed 16-byte ASCII, NULLPAD, no terminating NUL (a 17-byte one breaks the reader)
+    const std::string what = "cannot write attribute Type of /VTKHDF";
+    const Handle type(H5Tcopy(H5T_C_S1), H5Tclose, what);
+    check(H5Tset_size(type, 16), what);
+    check(H5Tset_strpad(type, H5T_STR_NULLPAD), what);
+    check(H5Tset_cset(type, H5T_CSET_ASCII), what);
+    const Handle space(H5Screate(H5S_SCALAR), H5Sclose, what);
+    const Handle a(H5Acreate2(vtk, "Type", type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, what);
+    check(H5Awrite(a, type, "UnstructuredGrid"), what);
+  }
+  write_dataset(vtk, "NumberOfPoints", std::vector<std::int64_t>{static_cast<std::int64_t>(nn)});
+  write_dataset(vtk, "NumberOfCells", std::vector<std::int64_t>{static_cast<std::int64_t>(nc)});
+  write_dataset(vtk, "NumberOfConnectivityIds",
+                std::vector<std::int64_t>{static_cast<std::int64_t>(connectivity.size())});
+  write_dataset(vtk, "Points", points, 3);
+  write_dataset(vtk, "Connectivity", connectivity);
+  write_dataset(vtk, "Offsets", offsets);
+  write_dataset(vtk, "Types", types);
+  const Handle point_data = create_group(vtk, "PointData");
+  write_dataset(point_data, "node_id", m.nodes.id);
+  const Handle cell_data = create_group(vtk, "CellData");
+  write_dataset(cell_data, "part_id", part_id);
+  write_dataset(cell_data, "element_id", element_id);
+  const Handle xdmf = create_group(file, "XDMF");
+  write_dataset(xdmf, "MixedTopology", mixed);
+}
+
+void write_block(hid_t elements, const std::string& name, const model::ElementBlock& b) {
+  const Handle g = create_group(elements, name);
+  const auto type = static_cast<std::uint8_t>(b.type);
+  const auto count = static_cast<std::int64_t>(b.size());
+  write_attr(g, "type", &type);
+  write_attr(g, "count", &count);
+  write_dataset(g, "id", b.id);
+  write_dataset(g, "part", b.part);
+  write_dataset(g, "conn", b.conn, static_cast<hsize_t>(b.npe()));
+  write_dataset(g, "thickness", b.thickness);
+  write_dataset(g, "phi", b.phi);
+}
+
+void link(hid_t file, const std::string& target, hid_t loc, const std::string& name) {
+  check(H5Lcreate_hard(file, target.c_str(), loc, name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
+        "cannot link " + path_of(loc, name) + " to " + target);
+}
+
+void write_radx(hid_t file, const Model& m) {
+  const Handle radx = create_group(file, "radx");
+  write_string_attr(radx, "title", m.title);
+  write_string_attr(radx, "run_name", m.run_name);
+  const auto deck_version = static_cast<std::int32_t>(m.deck_version);
+  write_attr(radx, "deck_version", &deck_version);
+  write_attr(radx, "total_mass", &m.total_mass);
+  write_record(create_group(radx, "units"), m.units);
+  {  // The node arrays are already in /VTKHDF: hard links, not copies.
+    const Handle nodes = create_group(radx, "nodes");
+    const auto count = static_cast<std::int64_t>(m.nodes.size());
+    write_attr(nodes, "count", &count);
+    link(file, "/VTKHDF/PointData/node_id", nodes, "id");
+    link(file, "/VTKHDF/Points", nodes, "xyz");
+  }
+  write_dataset(radx, "node_mass", m.node_mass);
+  const Handle elements = create_group(radx, "elements");
+  for_each_block(m, [&](const char* name, const model::ElementBlock& b) { write_block(elements, name, b); });
+  for_each_table(m, [&](const char* name, const auto& recs) { write_table(radx, name, recs); });
+  write_record_list(radx, "interfaces", m.interfaces);
+  write_strings(radx, "ignored_keywords", m.ignored_keywords);
+}
+
+// Writes the whole file at `part`; closes it (and flushes it to disk) before returning.
+void write_file(const Model& m, const std::string& part) {
+  check_model(m);
+  const Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a file access list");
+  // SEMI: closing the file fails (instead of being deferred) if an object were still open.
+  check(H5Pset_fclose_degree(fapl, H5F_CLOSE_SEMI), "cannot set the file close degree");
+  Handle file(H5Fcreate(part.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose,
+              "cannot create file " + part);
+  {
+    const std::string version = RADX_VERSION;
+    write_attr(file, "radx_model_format_version", &kModelFormatVersion);
+    write_string_attr(file, "radx_version", version);
+    write_vtkhdf(file, m);
+    write_radx(file, m);
+  }
+  file.close("cannot close file " + part);
+  // Data on disk before the rename, so a system crash cannot leave a renamed but empty file.
+  const int fd = ::open(part.c_str(), O_RDONLY);
+  const bool synced = fd >= 0 && ::fsync(fd) == 0;
+  if (fd >= 0) ::close(fd);
+  if (!synced) throw Failure("cannot flush file " + part + " to disk");
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Reading
+
+void read_block(hid_t elements, const std::string& name, model::ElementBlock& b, std::size_t node_count) {
+  const Handle g = open_group(elements, name);
+  const auto type = read_attr<std::uint8_t>(g, "type");
+  if (type != static_cast<std::uint8_t>(b.type)) {
+    throw Failure("attribute type of " + path_of(g, "") + " is " + std::to_string(type) + ", expected " +
+                  std::to_string(static_cast<int>(b.type)));
+  }
+  b.id = read_dataset<std::int64_t>(g, "id");
+  b.part = read_dataset<std::int32_t>(g, "part");
+  b.conn = read_dataset<std::int32_t>(g, "conn", static_cast<hsize_t>(b.npe()));
+  b.thickness = read_dataset<double>(g, "thickness");
+  b.phi = read_dataset<double>(g, "phi");
+  if (b.part.size() != b.size() || b.conn.size() != b.size() * static_cast<std::size_t>(b.npe())) {
+    throw Failure("datasets part and conn of " + path_of(g, "") + " do not match its id count");
+  }
+  for (const std::int32_t node : b.conn) {
+    if (node < 0 || static_cast<std::size_t>(node) >= node_count) {
+      throw Failure("dataset " + path_of(g, "conn") + " has node index " + std::to_string(node) +
+                    " out of range");
+    }
+  }
+  std::int64_t duplicate = 0;
+  if (!b.index.build(b.id, duplicate)) {
+    throw Failure("dataset " + path_of(g, "id") + " repeats element id " + std::to_string(duplicate));
+  }
+}
+
+void read_file(const std::string& path, Model& m) {
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open file " + path);
+  const auto format = read_attr<std::int64_t>(file, "radx_model_format_version");
+  if (format != kModelFormatVersion) {
+    throw Failure("model format version " + std::to_string(format) + " (written by radx " +
+                  read_string_attr(file, "radx_version") + "), this radx reads version " +
+                  std::to_string(kModelFormatVersion) + ": run the starter of this radx again");
+  }
+  m = Model{};
+  const Handle radx = open_group(file, "radx");
+  m.title = read_string_attr(radx, "title");
+  m.run_name = read_string_attr(radx, "run_name");
+  m.deck_version = read_attr<std::int32_t>(radx, "deck_version");
+  m.total_mass = read_attr<double>(radx, "total_mass");
+  read_record(open_group(radx, "units"), m.units);
+  {
+    const Handle nodes = open_group(radx, "nodes");
+    m.nodes.id = read_dataset<std::int64_t>(nodes, "id");
+    const std::vector<double> xyz = read_dataset<double>(nodes, "xyz", 3);
+    const std::size_t nn = m.nodes.size();
+    if (xyz.size() != 3 * nn)
+      throw Failure("dataset " + path_of(nodes, "xyz") + " does not match the node ids");
+    m.nodes.x.resize(nn);
+    m.nodes.y.resize(nn);
+    m.nodes.z.resize(nn);
+    for (std::size_t i = 0; i < nn; ++i) {
+      m.nodes.x[i] = xyz[3 * i];
+      m.nodes.y[i] = xyz[3 * i + 1];
+      m.nodes.z[i] = xyz[3 * i + 2];
+    }
+    std::int64_t duplicate = 0;
+    if (!m.nodes.index.build(m.nodes.id, duplicate)) {
+      throw Failure("dataset " + path_of(nodes, "id") + " repeats node id " + std::to_string(duplicate));
+    }
+  }
+  m.node_mass = read_dataset<double>(radx, "node_mass");
+  const Handle elements = open_group(radx, "elements");
+  for_each_block(
+      m, [&](const char* name, model::ElementBlock& b) { read_block(elements, name, b, m.nodes.size()); });
+  for_each_table(m, [&](const char* name, auto& recs) { read_table(radx, name, recs); });
+  read_record_list(radx, "interfaces", m.interfaces);
+  m.ignored_keywords = read_strings(radx, "ignored_keywords");
+  file.close("cannot close file " + path);
+}
+
+// Best effort: makes the rename itself durable. Some file systems cannot fsync a folder; the file is
+// complete either way.
+void sync_folder_of(const std::string& path) {
+  const fs::path folder = fs::path(path).parent_path();
+  const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+bool write_model_file(const Model& m, const std::string& path, std::string& error) {
+  const std::string part = path + ".part";
+  try {
+    const QuietHdf5 quiet;
+    write_file(m, part);
+    std::error_code ec;
+    fs::rename(part, path, ec);
+    if (ec) throw Failure("cannot rename " + part + " to " + path + ": " + ec.message());
+    sync_folder_of(path);
+    return true;
+  } catch (const std::exception& e) {
+    error = "cannot write model file " + path + ": " + e.what();
+  }
+  std::error_code ignored;
+  fs::remove(part, ignored);
+  return false;
+}
+
+bool read_model_file(const std::string& path, Model& m, std::string& error) {
+  try {
+    const QuietHdf5 quiet;
+    read_file(path, m);
+    return true;
+  } catch (const std::exception& e) {
+    error = "cannot read model file " + path + ": " + e.what();
+  }
+  return false;
+}
+
+}  // namespace radx::io

@@ -1,0 +1,206 @@
+#include "io/starter_listing.hpp"
+
+#include <iomanip>
+#include <ostream>
+
+namespace radx::io {
+
+namespace {
+
+const char* rule =
+    "---------------------------------------------------------------------------------------------------\n";
+
+void heading(std::ostream& os, const char* title) {
+  os << '\n' << rule << "  " << title << '\n' << rule;
+}
+
+std::string law_name(model::MaterialLaw l) {
+  return l == model::MaterialLaw::Elastic ? "LAW1 elastic" : "LAW2 Johnson-Cook";
+}
+
+std::string inacti_text(int inacti) {
+  switch (inacti) {
+    case 0: return "no action (the penalty pushes the node out)";
+    case 1: return "stiffness of the node deactivated";
+    case 2: return "stiffness of the main segment deactivated";
+    case 3: return "node moved out of the gap by the starter";
+    case 5: return "gap reduced to g - P0, growing back to g as the pair opens";
+    case 6: return "gap reduced to (g - P0) - 5 %, growing back to g as the pair opens";
+    default: return "?";
+  }
+}
+
+}  // namespace
+
+std::string shell_formulation(int ishell) {
+  switch (ishell) {
+    case 1: return "Belytschko-Tsay Q4, one point, viscous hourglass (Hm, Hf, Hr)";
+    case 2:
+      return "Q4 with Hallquist hourglass -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+    case 3:
+      return "Q4 elasto-plastic hourglass -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+    case 4: return "Q4 improved type 1 -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+    case 12: return "QBAT -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+    case 24: return "QEPH -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+    default:
+      return "Ishell " + std::to_string(ishell) +
+             " -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+  }
+}
+
+std::string shell3_formulation(int ish3n) {
+  switch (ish3n) {
+    case 1: return "C0 triangle";
+    case 2: return "C0 triangle with large-rotation correction -> radx uses the C0 triangle";
+    default: return "Ish3n " + std::to_string(ish3n) + " -> radx uses the C0 triangle";
+  }
+}
+
+std::string solid_formulation(int isolid) {
+  switch (isolid) {
+    case 1: return "8-node brick, one point, Flanagan-Belytschko viscous hourglass (h)";
+    case 2:
+      return "8-node brick, Hallquist hourglass -> radx uses one point, Flanagan-Belytschko viscous "
+             "hourglass";
+    default:
+      return "Isolid " + std::to_string(isolid) +
+             " -> radx uses the 8-node brick, one point, Flanagan-Belytschko "
+             "viscous hourglass";
+  }
+}
+
+void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
+  const model::Model& m = *in.model;
+  const auto& u = m.units;
+  os << "radx starter " << in.program_version << "\n"
+     << "deck          " << in.deck_path << "\n"
+     << "title         " << m.title << "\n"
+     << "run name      " << m.run_name << "\n"
+     << "deck version  " << m.deck_version << "\n"
+     << "work units    mass " << u.mass_name << ", length " << u.length_name << ", time " << u.time_name
+     << "\n";
+
+  heading(os, "COUNTS");
+  auto count = [&](const char* what, std::size_t n) {
+    os << "  " << std::left << std::setw(32) << what << n << '\n';
+  };
+  count("nodes", m.nodes.size());
+  count("4-node shells", m.shells.size());
+  count("3-node shells", m.shells3.size());
+  count("8-node bricks", m.bricks.size());
+  count("parts", m.parts.size());
+  count("properties", m.properties.size());
+  count("materials", m.materials.size());
+  count("subsets", m.subsets.size());
+  count("node groups", m.node_groups.size());
+  count("surfaces", m.surfaces.size());
+  count("functions", m.functions.size());
+  count("boundary conditions", m.bcs.size());
+  count("imposed velocities", m.imposed_velocities.size());
+  count("initial velocities", m.initial_velocities.size());
+  count("concentrated loads", m.concentrated_loads.size());
+  count("pressure loads", m.pressure_loads.size());
+  count("gravity loads", m.gravities.size());
+  count("rigid walls", m.rigid_walls.size());
+  count("rigid bodies", m.rigid_bodies.size());
+  count("time-history groups", m.time_histories.size());
+  count("contact interfaces", m.interfaces.size());
+
+  os << std::setprecision(6);
+  heading(os, "MATERIALS");
+  for (const auto& mat : m.materials) {
+    os << "  material " << mat.id << " \"" << mat.title << "\"  " << law_name(mat.law) << " (" << mat.keyword
+       << ")\n"
+       << "    density " << mat.rho << "  E " << mat.young << "  nu " << mat.poisson << "  G " << mat.shear
+       << "  K " << mat.bulk << '\n';
+    if (mat.law == model::MaterialLaw::JohnsonCook) {
+      os << "    yield (a + b eps_p^n)(1 + c ln(rate/rate0)): a " << mat.a << "  b " << mat.b << "  n "
+         << mat.n << "  c " << mat.c << "  rate0 " << mat.eps_dot_0 << '\n'
+         << "    SIG_max0 " << mat.sig_max0 << "  EPS_p_max " << mat.eps_p_max << "  ICC " << mat.icc
+         << "  flagVP " << mat.flag_vp;
+      if (mat.iflag == 1)
+        os << "  (Iflag 1: from SIG_Y " << mat.sig_y_input << ", UTS " << mat.uts << ", EUTS " << mat.e_uts
+           << ")";
+      os << '\n';
+      if (mat.rho_cp > 0)
+        os << "    rhoCp " << mat.rho_cp
+           << " given: adiabatic heating is not implemented in radx; the temperature "
+           << "term stays 1\n";
+    }
+  }
+
+  heading(os, "PROPERTIES");
+  for (const auto& p : m.properties) {
+    os << "  property " << p.id << " \"" << p.title << "\"  ";
+    if (p.kind == model::PropertyKind::Shell) {
+      const auto& s = p.shell;
+      os << "/PROP/SHELL\n    Ishell " << s.ishell << ": " << shell_formulation(s.ishell) << "\n    Ish3n "
+         << s.ish3n << ": " << shell3_formulation(s.ish3n) << "\n    thickness " << s.thickness << "  N "
+         << s.n_ip << "  Hm " << s.hm << "  Hf " << s.hf << "  Hr " << s.hr << "  Ashear " << s.ashear
+         << "  Ismstr " << s.ismstr << "  Ithick " << s.ithick << "  Iplas " << s.iplas << '\n';
+    } else {
+      const auto& s = p.solid;
+      os << "/PROP/SOLID\n    Isolid " << s.isolid << ": " << solid_formulation(s.isolid) << "\n    qa "
+         << s.qa << "  qb " << s.qb << "  h " << s.h << "  Ismstr " << s.ismstr << "  Iframe " << s.iframe
+         << '\n';
+    }
+  }
+
+  heading(os, "PARTS AND MASSES");
+  os << "  " << std::left << std::setw(10) << "part" << std::setw(34) << "title" << std::setw(10)
+     << "property" << std::setw(10) << "material" << std::setw(12) << "elements"
+     << "mass\n";
+  for (const auto& p : m.parts) {
+    os << "  " << std::left << std::setw(10) << p.id << std::setw(34) << p.title.substr(0, 32)
+       << std::setw(10) << (p.property >= 0 ? m.properties[p.property].id : 0) << std::setw(10)
+       << (p.material >= 0 ? m.materials[p.material].id : 0) << std::setw(12) << p.element_count << p.mass
+       << '\n';
+  }
+  os << "  total mass " << m.total_mass << " " << u.mass_name << '\n';
+
+  heading(os, "CONTACT INTERFACES");
+  for (std::size_t k = 0; k < m.interfaces.size(); ++k) {
+    const auto& c = m.interfaces[k];
+    os << "  interface " << c.id << " \"" << c.title << "\"  "
+       << (c.lagdt ? "/INTER/LAGDT/TYPE7" : "/INTER/TYPE7") << '\n';
+    if (k < in.interface_echo.size())
+      for (const auto& line : in.interface_echo[k]) os << line << '\n';
+    os << "    values in use:\n"
+       << "      secondary nodes        " << c.secondary_nodes.size() << '\n'
+       << "      main segments          "
+       << (c.main_surface >= 0 ? m.surfaces[c.main_surface].segments.size() : 0) << '\n'
+       << "      Gapmin                 " << c.gapmin
+       << (c.gapmin_automatic ? "  (automatic: min(t, l/10, lmin/2))" : "") << '\n'
+       << "      gap g                  " << c.gap_lo << " to " << c.gap_hi << '\n'
+       << "      stiffness K            " << c.stiff_lo << " to " << c.stiff_hi << '\n'
+       << "      Stfac                  " << c.stfac << '\n'
+       << "      VISs                   " << c.vis_s << '\n'
+       << "      VISF                   " << c.vis_f << '\n'
+       << "      Bumult                 " << c.bumult << '\n'
+       << "      Tstart, Tstop          " << c.t_start << ", "
+       << (c.t_stop >= model::kNever ? std::string("never") : std::to_string(c.t_stop)) << '\n';
+    if (!c.contact_law.empty())
+      os << "      contact law /CTCLAW/" << c.contact_law_id << "  " << c.contact_law << '\n';
+    os << "      initial penetrations   " << c.initial_penetrations;
+    if (c.initial_penetrations > 0)
+      os << " (largest " << c.max_initial_penetration << " at node " << c.max_penetration_node << "; Inacti "
+         << c.inacti << ": " << inacti_text(c.inacti) << ")";
+    os << '\n';
+  }
+
+  if (!m.ignored_keywords.empty()) {
+    heading(os, "CONTROL CARDS ACCEPTED AND IGNORED");
+    for (const auto& k : m.ignored_keywords) os << "  " << k << '\n';
+  }
+
+  heading(os, "DIAGNOSTICS");
+  for (const auto& d : in.diagnostics) os << "  " << d << '\n';
+  os << "  " << in.errors << " error(s), " << in.warnings << " warning(s)\n";
+  os << '\n'
+     << (in.errors == 0 ? "  model file written: " + in.model_file
+                        : std::string("  no model file written: fix the errors above"))
+     << '\n'
+     << "  starter time " << std::fixed << std::setprecision(3) << in.seconds << " s\n";
+}
+
+}  // namespace radx::io

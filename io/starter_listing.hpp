@@ -1,0 +1,35 @@
+// The starter listing NAME_0000.out: what the starter understood of the deck, in work units: counts,
+// materials, properties with the formulation each flag maps to, parts with their masses, every
+// interface with its fields as used (defaults marked) and its computed gap and stiffness ranges and
+// initial penetrations, and every diagnostic.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "solver/model/model.hpp"
+
+namespace radx::io {
+
+struct StarterListingInput {
+  std::string deck_path;
+  std::string program_version;
+  const model::Model* model = nullptr;
+  // Per interface (same order as model->interfaces): its echoed fields.
+  std::vector<std::vector<std::string>> interface_echo;
+  std::vector<std::string> diagnostics;  // formatted, one per line
+  std::size_t errors = 0;
+  std::size_t warnings = 0;
+  double seconds = 0;      // wall time of the starter so far
+  std::string model_file;  // written model file, empty when none
+};
+
+void write_starter_listing(std::ostream& os, const StarterListingInput& in);
+
+// The formulation radx uses for a shell Ishell / 3-node Ish3n / solid Isolid value, in words.
+std::string shell_formulation(int ishell);
+std::string shell3_formulation(int ish3n);
+std::string solid_formulation(int isolid);
+
+}  // namespace radx::io

@@ -1,0 +1,166 @@
+// Deck -> Model: /INTER/TYPE7 and /INTER/LAGDT/TYPE7 into one interface definition, with the
+// defaults and checks of type7-lagdt.md section 3, and /CTCLAW law strings attached to their
+// interface (contact-laws.md section 5). The gap, stiffness and initial-penetration computations of
+// sections 4.1, 4.2 and 4.6 are physics and live in contact/type7_prepare.cpp.
+#include <sstream>
+
+#include "parser/model_builder.hpp"
+
+namespace radx {
+namespace detail {
+
+using model::kNone;
+
+namespace {
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+}  // namespace
+
+void ModelBuilder::build_interfaces() {
+  std::unordered_map<std::int64_t, SourcePos> first;
+  for (const auto& r : deck_.records) {
+    const auto path = r.decl->path;
+    const bool lagdt = path == "/INTER/LAGDT/TYPE7";
+    if (path != "/INTER/TYPE7" && !lagdt) continue;
+    model::Interface in;
+    in.id = r.id;
+    in.title = r.title;
+    in.lagdt = lagdt;
+    in.secondary_group = ref(grnod_ids_, r, "grnd_IDs", "node group", "/GRNOD", false);
+    in.main_surface = ref(surf_ids_, r, "surf_IDm", "surface", "/SURF", false);
+    auto geti = [&](std::string_view f) { return static_cast<int>(r.get_int(f)); };
+    in.istf = geti("Istf");
+    in.igap = geti("Igap");
+    in.ibag = geti("Ibag");
+    in.idel = geti("Idel");
+    in.ithe = geti("Ithe");
+    in.icurv = geti("Icurv");
+    in.iadm = geti("Iadm");
+    in.itied = geti("Itied");
+    in.ists = geti("Ists");
+    in.fscale_gap = r.get_real("Fscalegap");
+    if (in.fscale_gap == 0) in.fscale_gap = 1.0;
+    in.gap_max = r.get_real("Gapmax");
+    in.fpenmax = r.get_real("Fpenmax");
+    in.stmin = r.get_real("Stmin");
+    in.stmax = r.get_real("Stmax");
+    if (in.stmax == 0) in.stmax = 1e30;
+    in.mesh_size_pct = r.get_real("mesh_size");
+    in.dt_min = r.get_real("dtmin");
+    in.irem_gap = geti("Irem_gap");
+    in.irem_i2 = geti("Irem_i2");
+    in.stfac = r.get_real("Stfac");
+    in.fric = r.get_real("Fric");
+    in.gapmin_input = r.get_real("Gapmin");
+    in.t_start = r.get_real("Tstart");
+    in.t_stop = r.get_real("Tstop");
+    if (in.t_stop == 0) in.t_stop = model::kNever;
+    in.ibc = {static_cast<std::uint8_t>(r.get_int("IBCX")), static_cast<std::uint8_t>(r.get_int("IBCY")),
+              static_cast<std::uint8_t>(r.get_int("IBCZ"))};
+    in.inacti = geti("Inacti");
+    in.vis_s = r.get_real("VISs");
+    if (in.vis_s == 0) in.vis_s = 0.05;
+    in.vis_f = r.get_real("VISF");
+    if (in.vis_f == 0) in.vis_f = 1.0;
+    in.bumult = r.get_real("Bumult");
+    if (in.bumult == 0) {
+      const auto n = m_.nodes.size();
+      in.bumult = n > 2500000 ? 0.4 : (n > 1500000 ? 0.3 : 0.2);
+    }
+    in.ifric = geti("Ifric");
+    in.ifiltr = geti("Ifiltr");
+    in.xfreq = r.get_real("Xfreq");
+    in.iform = geti("Iform");
+    if (in.iform == 0) in.iform = 1;
+    for (int k = 0; k < 6; ++k) in.c[k] = r.get_real("C" + std::to_string(k + 1));
+    in.sens_id = r.get_int("sens_ID");
+    in.fct_id_f = r.get_int("fct_IDF");
+    in.ascale_f = r.get_real("AscaleF");
+    in.fric_id = r.get_int("fric_ID");
+
+    // Checks the declarations cannot make alone.
+    if (in.istf == 1) {
+      if (in.stfac <= 0)
+        error_at(r, "Stfac", Diag::RequiredValueMissing,
+                 "Istf = 1 takes the stiffness value from Stfac, which is " + num(in.stfac) +
+                     "; give the interface stiffness (force per length) > 0");
+    } else {
+      if (in.stfac == 0) in.stfac = 1.0;
+      if (in.stfac < 0)
+        error_at(r, "Stfac", Diag::ValueOutOfRange, "Stfac = " + num(in.stfac) + " must be > 0 (0 means 1)");
+    }
+    if (in.istf >= 2 && in.stmax < in.stmin)
+      error_at(r, "Stmax", Diag::InconsistentValues,
+               "Stmax = " + num(in.stmax) + " is below Stmin = " + num(in.stmin) + "; need Stmin <= Stmax");
+    if (in.t_stop <= in.t_start)
+      error_at(r, "Tstop", Diag::InconsistentValues,
+               "Tstop = " + num(in.t_stop) + " is not after Tstart = " + num(in.t_start) +
+                   ": the interface would never act; need Tstop > Tstart (0 = never stop)");
+    if (in.ibag != 0)
+      warning_at(r, "Ibag", Diag::UnimplementedOption,
+                 "Ibag = " + std::to_string(in.ibag) +
+                     ": airbag vent-hole closure is accepted but monitored volumes are not modelled by radx");
+    if ((in.ifiltr == 1 || in.ifiltr == 2) && (in.xfreq < 0 || in.xfreq > 1))
+      error_at(
+          r, "Xfreq", Diag::ValueOutOfRange,
+          "Xfreq = " + num(in.xfreq) + " with Ifiltr = " + std::to_string(in.ifiltr) + " must be in [0, 1]");
+    if (in.ifric == 3) {
+      // Renard: C1 = mu_s, C2 = mu_d, C3 = mu_max, C4 = mu_min, C5 = V_cr1, C6 = V_cr2.
+      const auto& c = in.c;
+      std::string why;
+      if (c[4] == 0)
+        why = "C5 (critical speed V_cr1) is 0";
+      else if (!(c[4] < c[5]))
+        why = "C5 = " + num(c[4]) + " is not below C6 = " + num(c[5]);
+      else if (!(c[3] <= c[0] && c[0] <= c[2]))
+        why = "C1 (mu_s) must lie in [C4, C3] = [mu_min, mu_max]";
+      else if (!(c[3] <= c[1] && c[1] <= c[2]))
+        why = "C2 (mu_d) must lie in [C4, C3] = [mu_min, mu_max]";
+      if (!why.empty())
+        error_at(r, "C1", Diag::BadFrictionLaw,
+                 "Renard friction (Ifric = 3): " + why +
+                     "; the law needs C5 != 0, C5 < C6, C4 <= C1 <= C3 and "
+                     "C4 <= C2 <= C3");
+    }
+    if (in.secondary_group != kNone) {
+      if (const auto* nodes = group_nodes(in.secondary_group)) in.secondary_nodes = *nodes;
+    }
+    if (register_id(inter_ids_, in.id, static_cast<std::int32_t>(m_.interfaces.size()), r, "interface",
+                    first))
+      m_.interfaces.push_back(std::move(in));
+  }
+}
+
+void ModelBuilder::build_contact_laws() {
+  for (const auto* r : deck_.of("/CTCLAW")) {
+    const auto k = ref(inter_ids_, *r, "inter_ID", "interface", "/INTER/TYPE7 or /INTER/LAGDT/TYPE7", false);
+    if (r->text.empty()) {
+      diags_.error(Diag::MissingCard, at(r->pos, 1), about(*r),
+                   "/CTCLAW needs a law string after the interface card, e.g. n1s13{Kc1e12,Mu0.1,CtLin1e3}");
+      continue;
+    }
+    const char c0 = static_cast<char>(std::tolower(static_cast<unsigned char>(r->text[0])));
+    if (c0 != 'n' && c0 != 's') {
+      diags_.error(Diag::ValueOutOfRange, at(r->pos, 1), about(*r),
+                   "law string '" + r->text + "' must start with n<normal law> or s<friction law>");
+      continue;
+    }
+    if (k == kNone) continue;
+    auto& in = m_.interfaces[k];
+    if (in.contact_law_id != 0) {
+      diags_.error(
+          Diag::InconsistentValues, at(r->pos, 1), about(*r),
+          "interface " + std::to_string(in.id) + " already has /CTCLAW/" + std::to_string(in.contact_law_id));
+      continue;
+    }
+    in.contact_law_id = r->id;
+    in.contact_law = r->text;
+  }
+}
+
+}  // namespace detail
+}  // namespace radx

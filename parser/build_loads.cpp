@@ -1,0 +1,593 @@
+// Deck -> Model: kinematic conditions and loads (/BCS, /IMPVEL, /INIVEL/TRA, /CLOAD, /PLOAD, /GRAV), rigid
+// walls (/RWALL/PLANE), rigid bodies (/RBODY) and time-history requests (/TH/NODE, /TH/PART, /TH/INTER,
+// /TH/RWALL, /TH/SHEL, /TH/SUBS); deck-format.md section 2 and 5.5, elements.md section 7.
+// * Loads: value = Fscale_y f(t / Ascale_x), both scales 0 -> 1; the function is required except for
+//   /GRAV (0 = constant); /GRAV grnod_ID 0 = all nodes.
+// * /RWALL/PLANE: normal n = (M1 - M)/|M1 - M|; secondary nodes = grnd_ID1 + every node with
+//   0 <= (X - M).n <= d at t = 0 (when d > 0) - grnd_ID2 (elements.md 7.1).
+// * /RBODY: the main node is removed from the secondary group; Ispher 0 -> 2, ICoG 0 -> 1 (elements.md 7.2).
+// * /TH/*: group names (DEF, D, V, ...) are expanded to variables; objects resolve to dense indices.
+// /SKEW, /SENSOR and /FRAME are not read by radx, so a non-zero reference to one of them cannot be resolved
+// and is reported as a missing reference.
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <iterator>
+#include <map>
+#include <sstream>
+
+#include "parser/model_builder.hpp"
+#include "solver/model/geometry.hpp"
+
+namespace radx {
+namespace detail {
+
+using model::kNone;
+
+namespace {
+
+using IdIndex = ModelBuilder::IdIndex;
+using FirstPos = std::unordered_map<std::int64_t, SourcePos>;
+using NodeList = std::vector<std::int32_t>;
+
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+std::string point(const model::Vec3& p) {
+  return "(" + num(p[0]) + ", " + num(p[1]) + ", " + num(p[2]) + ")";
+}
+
+int geti(const KeywordRecord& r, std::string_view field) {
+  return static_cast<int>(r.get_int(field));
+}
+int int_or(const KeywordRecord& r, std::string_view field, int dflt) {
+  const int v = geti(r, field);
+  return v == 0 ? dflt : v;
+}
+double real_or(const KeywordRecord& r, std::string_view field, double dflt) {
+  const double v = r.get_real(field);
+  return v == 0 ? dflt : v;
+}
+model::Vec3 reals3(const KeywordRecord& r, std::string_view a, std::string_view b, std::string_view c) {
+  return {r.get_real(a), r.get_real(b), r.get_real(c)};
+}
+SourcePos field_pos(const KeywordRecord& r, std::string_view field) {
+  const FieldValue* f = r.find(field);
+  return f ? f->pos : r.pos;
+}
+
+// An id reference. `optional`: 0 means none. Otherwise 0 is an error, reported here unless the field is
+// declared required, in which case the reader has already reported it (RX502).
+std::int32_t lookup(ModelBuilder& b, const IdIndex& index, const KeywordRecord& r, std::string_view field,
+                    std::string_view what, std::string_view target, bool optional) {
+  const FieldValue* f = r.find(field);
+  return b.ref(index, r, field, what, target, optional || (f && f->decl->required));
+}
+std::int32_t function_ref(ModelBuilder& b, const KeywordRecord& r, bool optional) {
+  return lookup(b, b.funct_ids_, r, "funct_IDT", "function", "/FUNCT", optional);
+}
+std::int32_t group_ref(ModelBuilder& b, const KeywordRecord& r, std::string_view field, bool optional) {
+  return lookup(b, b.grnod_ids_, r, field, "node group", "/GRNOD", optional);
+}
+const NodeList& nodes_of(ModelBuilder& b, std::int32_t group) {
+  static const NodeList kEmpty;
+  const NodeList* nodes = b.group_nodes(group);
+  return nodes ? *nodes : kEmpty;
+}
+
+// A reference to a kind of object radx does not read (/SKEW, /SENSOR, /FRAME): only 0 is accepted.
+std::string unreadable_ref_text(std::string_view field, std::int64_t id, std::string_view target,
+                                std::string_view zero_means) {
+  return std::string(field) + " = " + std::to_string(id) + ": there is no " + std::string(target) + "/" +
+         std::to_string(id) + " in the deck; radx does not read " + std::string(target) +
+         " (not supported), so leave " + std::string(field) + " blank or 0 (" + std::string(zero_means) + ")";
+}
+std::int64_t unreadable_ref(ModelBuilder& b, const KeywordRecord& r, std::string_view field,
+                            std::string_view target, std::string_view zero_means) {
+  const std::int64_t id = r.get_int(field);
+  if (id != 0)
+    b.error_at(r, field, Diag::MissingReference, unreadable_ref_text(field, id, target, zero_means));
+  return id;
+}
+std::int64_t skew_ref(ModelBuilder& b, const KeywordRecord& r) {
+  return unreadable_ref(b, r, "skew_ID", "/SKEW", "global axes");
+}
+std::int64_t sensor_ref(ModelBuilder& b, const KeywordRecord& r, std::string_view field = "sensor_ID") {
+  return unreadable_ref(b, r, field, "/SENSOR", "active from the start");
+}
+
+// Direction codes 0..5 = X Y Z XX YY ZZ; `count` 3 accepts the translations only.
+int direction(ModelBuilder& b, const KeywordRecord& r, std::size_t count, std::string_view accepted) {
+  static constexpr std::array<std::string_view, 6> kDirections = {"X", "Y", "Z", "XX", "YY", "ZZ"};
+  std::string s = r.get_string("Dir");
+  for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (std::size_t k = 0; k < count; ++k)
+    if (s == kDirections[k]) return static_cast<int>(k);
+  b.error_at(r, "Dir", Diag::ValueOutOfRange,
+             (s.empty() ? std::string("Dir is blank") : "Dir = '" + s + "' is not a direction") +
+                 "; accepted: " + std::string(accepted));
+  return 0;
+}
+constexpr std::string_view kSixDirections = "X, Y, Z (translation) or XX, YY, ZZ (rotation)";
+constexpr std::string_view kLoadDirections = "X, Y, Z (force) or XX, YY, ZZ (moment)";
+
+double mass_field(ModelBuilder& b, const KeywordRecord& r, std::string_view meaning) {
+  const double m = r.get_real("Mass");
+  if (m < 0)
+    b.error_at(
+        r, "Mass", Diag::ValueOutOfRange,
+        "Mass = " + num(m) + " is negative; it is the mass " + std::string(meaning) + "; accepted: >= 0");
+  return m;
+}
+
+// Builds one object per record of `path`, registers its id (duplicates are reported and dropped) and
+// returns the records kept, in the order of `out`.
+template <class T, class Make>
+std::vector<const KeywordRecord*> build_each(ModelBuilder& b, std::string_view path, std::string_view what,
+                                             std::vector<T>& out, IdIndex& ids, Make make) {
+  FirstPos first;
+  std::vector<const KeywordRecord*> kept;
+  for (const auto* r : b.deck_.of(path)) {
+    T obj = make(*r);
+    obj.id = r->id;
+    obj.title = r->title;
+    if (b.register_id(ids, obj.id, static_cast<std::int32_t>(out.size()), *r, what, first)) {
+      out.push_back(std::move(obj));
+      kept.push_back(r);
+    }
+  }
+  return kept;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Loads
+
+// Several /BCS on one node are OR-ed, but in one frame: two different non-zero skews on a node are an error.
+void check_bcs_skews(ModelBuilder& b, const std::vector<const KeywordRecord*>& recs) {
+  const auto& bcs = b.m_.bcs;
+  std::vector<std::int32_t> owner(b.m_.nodes.size(), kNone);  // first /BCS giving the node a skew
+  for (std::size_t i = 0; i < bcs.size(); ++i) {
+    if (bcs[i].skew == 0) continue;
+    std::map<std::int32_t, std::pair<std::int32_t, std::size_t>> clashes;  // other /BCS -> first node, count
+    for (const auto n : nodes_of(b, bcs[i].group)) {
+      auto& o = owner[n];
+      if (o == kNone) o = static_cast<std::int32_t>(i);
+      if (bcs[o].skew == bcs[i].skew) continue;
+      ++clashes.try_emplace(o, n, 0).first->second.second;
+    }
+    for (const auto& [o, clash] : clashes) {
+      const SourcePos p = recs[o]->pos;
+      const std::size_t others = clash.second - 1;
+      b.error_at(
+          *recs[i], "skew_ID", Diag::InconsistentValues,
+          "node " + std::to_string(b.m_.nodes.id[clash.first]) +
+              (others ? " (and " + std::to_string(others) + (others == 1 ? " other node)" : " other nodes)")
+                      : std::string()) +
+              " is fixed here in skew " + std::to_string(bcs[i].skew) + " and by /BCS/" +
+              std::to_string(bcs[o].id) + " (" + b.deck_.files[p.file] + ":" + std::to_string(p.line) +
+              ") in skew " + std::to_string(bcs[o].skew) +
+              "; a node's fixed directions have one frame: use the same skew_ID or separate node groups");
+    }
+  }
+}
+
+void build_bcs(ModelBuilder& b) {
+  IdIndex ids;
+  const auto recs = build_each(b, "/BCS", "boundary condition", b.m_.bcs, ids, [&](const KeywordRecord& r) {
+    static constexpr std::array<std::string_view, 6> kDofs = {"Tx", "Ty", "Tz", "Rx", "Ry", "Rz"};
+    model::BoundaryCondition c;
+    for (std::size_t k = 0; k < kDofs.size(); ++k) c.fixed[k] = r.get_int(kDofs[k]) != 0 ? 1 : 0;
+    c.skew = skew_ref(b, r);
+    c.group = group_ref(b, r, "grnod_ID", false);
+    return c;
+  });
+  check_bcs_skews(b, recs);
+}
+
+void build_imposed_velocities(ModelBuilder& b) {
+  IdIndex ids;
+  build_each(b, "/IMPVEL", "imposed velocity", b.m_.imposed_velocities, ids, [&](const KeywordRecord& r) {
+    model::ImposedVelocity v;
+    v.function = function_ref(b, r, false);
+    v.dir = direction(b, r, 6, kSixDirections);
+    v.skew = skew_ref(b, r);
+    v.sensor = sensor_ref(b, r);
+    v.frame = unreadable_ref(b, r, "frame_ID", "/FRAME", "no moving frame");
+    v.icoor = geti(r, "Icoor");
+    v.group = group_ref(b, r, "grnod_ID", false);
+    v.ascale_x = real_or(r, "Ascale_x", 1.0);
+    v.fscale_y = real_or(r, "Fscale_y", 1.0);
+    v.t_start = r.get_real("Tstart");
+    v.t_stop = real_or(r, "Tstop", model::kNever);
+    if (r.get_real("Tstop") != 0 && v.t_stop <= v.t_start)
+      b.error_at(r, "Tstop", Diag::InconsistentValues,
+                 "Tstop = " + num(v.t_stop) + " is not after Tstart = " + num(v.t_start) +
+                     ": the velocity would never be imposed; need Tstop > Tstart (0 = never stop)");
+    if (v.icoor == 1 && v.frame == 0)
+      b.error_at(
+          r, "Icoor", Diag::InconsistentValues,
+          "Icoor = 1 (cylindrical) needs a moving frame (frame_ID), which radx does not read; use Icoor = 0 "
+          "(Cartesian)");
+    return v;
+  });
+}
+
+void build_initial_velocities(ModelBuilder& b) {
+  IdIndex ids;
+  build_each(b, "/INIVEL/TRA", "initial velocity", b.m_.initial_velocities, ids, [&](const KeywordRecord& r) {
+    model::InitialVelocity v;
+    v.v = reals3(r, "Vx", "Vy", "Vz");
+    v.group = group_ref(b, r, "grnod_ID", false);
+    v.skew = skew_ref(b, r);
+    v.sensor = sensor_ref(b, r);
+    v.t_start = r.get_real("Tstart");
+    return v;
+  });
+}
+
+void build_concentrated_loads(ModelBuilder& b) {
+  IdIndex ids;
+  build_each(b, "/CLOAD", "concentrated load", b.m_.concentrated_loads, ids, [&](const KeywordRecord& r) {
+    model::ConcentratedLoad c;
+    c.function = function_ref(b, r, false);
+    c.dir = direction(b, r, 6, kLoadDirections);
+    c.skew = skew_ref(b, r);
+    c.sensor = sensor_ref(b, r);
+    c.group = group_ref(b, r, "grnod_ID", false);
+    c.itypfun = int_or(r, "Itypfun", 1);
+    c.ascale_x = real_or(r, "Ascale_x", 1.0);
+    c.fscale_y = real_or(r, "Fscale_y", 1.0);
+    return c;
+  });
+}
+
+void build_pressure_loads(ModelBuilder& b) {
+  IdIndex ids;
+  build_each(b, "/PLOAD", "pressure load", b.m_.pressure_loads, ids, [&](const KeywordRecord& r) {
+    model::PressureLoad p;
+    p.surface = lookup(b, b.surf_ids_, r, "surf_ID", "surface", "/SURF", false);
+    p.function = function_ref(b, r, false);
+    p.sensor = sensor_ref(b, r);
+    p.ipinch = geti(r, "Ipinch");
+    p.idel = int_or(r, "Idel", 1);
+    p.itypfun = int_or(r, "Itypfun", 1);
+    p.ascale_x = real_or(r, "Ascale_x", 1.0);
+    p.fscale_y = real_or(r, "Fscale_y", 1.0);
+    return p;
+  });
+}
+
+void build_gravities(ModelBuilder& b) {
+  IdIndex ids;
+  build_each(b, "/GRAV", "gravity", b.m_.gravities, ids, [&](const KeywordRecord& r) {
+    model::Gravity g;
+    g.function = function_ref(b, r, true);  // 0: constant
+    g.dir = direction(b, r, 3, "X, Y or Z (the sign of Fscale_y gives the sense)");
+    g.skew = skew_ref(b, r);
+    g.sensor = sensor_ref(b, r);
+    g.group = group_ref(b, r, "grnod_ID", true);  // 0: all nodes
+    g.ascale_x = real_or(r, "Ascale_x", 1.0);
+    g.fscale_y = real_or(r, "Fscale_y", 1.0);
+    return g;
+  });
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Rigid walls
+
+double model_size(const model::Nodes& n) {
+  if (n.size() == 0) return 0.0;
+  const auto [x0, x1] = std::minmax_element(n.x.begin(), n.x.end());
+  const auto [y0, y1] = std::minmax_element(n.y.begin(), n.y.end());
+  const auto [z0, z1] = std::minmax_element(n.z.begin(), n.z.end());
+  return model::norm({*x1 - *x0, *y1 - *y0, *z1 - *z0});
+}
+
+model::Vec3 node_point(const model::Nodes& n, std::int32_t k) {
+  return {n.x[k], n.y[k], n.z[k]};
+}
+
+// grnd_ID1 + nodes within d on the positive side - grnd_ID2, without the wall's own node; sorted, unique.
+NodeList wall_secondary(ModelBuilder& b, const model::RigidWall& w, bool normal_ok) {
+  NodeList s = nodes_of(b, w.group1);
+  if (normal_ok && w.distance > 0) {
+    for (std::size_t n = 0; n < b.m_.nodes.size(); ++n) {
+      const auto k = static_cast<std::int32_t>(n);
+      const double h = model::dot(model::sub(node_point(b.m_.nodes, k), w.m), w.normal);
+      if (h >= 0 && h <= w.distance) s.push_back(k);
+    }
+  }
+  std::sort(s.begin(), s.end());
+  s.erase(std::unique(s.begin(), s.end()), s.end());
+  NodeList removed = nodes_of(b, w.group2);
+  if (w.node != kNone) removed.insert(std::lower_bound(removed.begin(), removed.end(), w.node), w.node);
+  NodeList out;
+  std::set_difference(s.begin(), s.end(), removed.begin(), removed.end(), std::back_inserter(out));
+  return out;
+}
+
+// n = (M1 - M)/|M1 - M|; false (and an error) when M1 and M coincide at the scale of the model.
+bool wall_normal(ModelBuilder& b, const KeywordRecord& r, model::RigidWall& w, double size) {
+  const model::Vec3 axis = model::sub(w.m1, w.m);
+  const double len = model::norm(axis);
+  if (len > 1e-12 * size && len > 0) {
+    w.normal = model::scale(axis, 1.0 / len);
+    return true;
+  }
+  b.error_at(
+      r, "XM1", Diag::InconsistentValues,
+      "M1 = " + point(w.m1) + " and M = " + point(w.m) + (w.node != kNone ? " (the wall node)" : "") +
+          " coincide (|M1 - M| = " + num(len) +
+          "): the wall normal (M1 - M)/|M1 - M| is undefined; M1 must be a distinct point on the side the "
+          "wall acts on");
+  return false;
+}
+
+model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double size) {
+  model::RigidWall w;
+  bool placed = true;  // M is known
+  if (const std::int64_t node = r.get_int("node_ID"); node != 0) {
+    w.node = b.node_ref(node, r, field_pos(r, "node_ID"), "node_ID (node carrying the moving wall)");
+    placed = w.node != kNone;
+    if (placed) {
+      b.node_used_[w.node] = 1;
+      w.m = node_point(b.m_.nodes, w.node);
+    }
+    w.mass = mass_field(b, r, "added to the wall node");
+    w.v0 = reals3(r, "VX0", "VY0", "VZ0");
+  } else {
+    w.m = reals3(r, "XM", "YM", "ZM");
+  }
+  w.slide = geti(r, "Slide");
+  w.iform = geti(r, "Iform");
+  w.ifq = geti(r, "ifq");
+  w.group1 = group_ref(b, r, "grnd_ID1", true);
+  w.group2 = group_ref(b, r, "grnd_ID2", true);
+  w.distance = r.get_real("d");
+  if (w.distance < 0)
+    b.error_at(
+        r, "d", Diag::ValueOutOfRange,
+        "d = " + num(w.distance) +
+            " is negative; it is the search distance on the positive side of the wall; accepted: 0 (no "
+            "search) or > 0");
+  w.friction = r.get_real("fric");
+  w.diameter = r.get_real("Diameter");
+  w.ffac = r.get_real("ffac");
+  w.m1 = reals3(r, "XM1", "YM1", "ZM1");
+  const bool defined = placed && wall_normal(b, r, w, size);
+  w.secondary = wall_secondary(b, w, defined);
+  if (defined && w.secondary.empty())
+    b.warning_at(
+        r, "grnd_ID1", Diag::EmptyGroup,
+        "the rigid wall has no secondary node (grnd_ID1, plus the nodes within d = " + num(w.distance) +
+            " on the positive side, minus grnd_ID2, is empty): it acts on nothing; give a grnd_ID1 group or "
+            "a search distance d > 0");
+  return w;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Rigid bodies
+
+model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
+  model::RigidBody rb;
+  if (const std::int64_t node = r.get_int("node_ID"); node == 0) {
+    b.error_at(
+        r, "node_ID", Diag::RequiredIdMissing,
+        "node_ID is blank or 0: radx does not create main nodes automatically (Radioss does); give the id "
+        "of a main node, usually a node of no element (ICoG 1 and 2 move it to the centre of gravity)");
+  } else {
+    rb.main_node = b.node_ref(node, r, field_pos(r, "node_ID"), "node_ID (main node of the rigid body)");
+    if (rb.main_node != kNone) b.node_used_[rb.main_node] = 1;
+  }
+  rb.sensor = sensor_ref(b, r, "sens_ID");
+  rb.skew = skew_ref(b, r);
+  rb.ispher = int_or(r, "Ispher", 2);
+  rb.mass = mass_field(b, r, "added to the main node");
+  rb.group = group_ref(b, r, "grnd_ID", false);
+  rb.ikrem = geti(r, "Ikrem");
+  rb.icog = int_or(r, "ICoG", 1);
+  rb.surface = lookup(b, b.surf_ids_, r, "surf_ID", "surface", "/SURF", true);
+  static constexpr std::array<std::string_view, 6> kInertia = {"Jxx", "Jyy", "Jzz", "Jxy", "Jyz", "Jxz"};
+  for (std::size_t k = 0; k < kInertia.size(); ++k) rb.inertia[k] = r.get_real(kInertia[k]);
+  rb.ioptoff = geti(r, "Ioptoff");
+  rb.iexpams = geti(r, "Iexpams");
+  rb.ifail = geti(r, "Ifail");
+  rb.fn = real_or(r, "FN", 1e20);
+  rb.ft = real_or(r, "FT", 1e20);
+  rb.exp_n = real_or(r, "expN", 2.0);
+  rb.exp_t = real_or(r, "expT", 2.0);
+  const NodeList& group = nodes_of(b, rb.group);
+  std::copy_if(group.begin(), group.end(), std::back_inserter(rb.secondary),
+               [&](std::int32_t n) { return n != rb.main_node; });
+  if (!group.empty() && rb.secondary.empty())
+    b.warning_at(
+        r, "grnd_ID", Diag::EmptyGroup,
+        "grnd_ID holds only the main node, which is removed from the secondary nodes: the rigid body "
+        "drives no node");
+  return rb;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Time histories: the accepted names per kind (deck-format.md /TH/*, results-format.md section 7).
+
+struct ThGroup {
+  std::string_view name;
+  std::vector<std::string_view> variables;
+};
+struct ThKindDef {
+  std::string_view path;
+  model::ThKind kind;
+  std::string_view object;              // what an id names, for messages
+  std::string_view target;              // the keyword defining those objects
+  std::vector<ThGroup> groups;          // DEF first
+  std::vector<std::string_view> names;  // single variables
+};
+
+const std::vector<ThKindDef>& th_kinds() {
+  using K = model::ThKind;
+  static const std::vector<std::string_view> kForces = {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"};
+  static const std::vector<std::string_view> kPart = {"IE",   "KE", "XMOM",   "YMOM", "ZMOM",
+                                                      "MASS", "HE", "ERODED", "HEAT"};
+  static const std::vector<std::string_view> kShell = {"F1",  "F2",  "F12", "M1",   "M2",  "M12",
+                                                       "IEM", "IEB", "OFF", "EMIN", "EMAX"};
+  static const std::vector<ThKindDef> kinds = {
+      {"/TH/NODE",
+       K::Node,
+       "node",
+       "/NODE",
+       {{"DEF", {"DX", "DY", "DZ", "VX", "VY", "VZ"}},
+        {"D", {"DX", "DY", "DZ"}},
+        {"V", {"VX", "VY", "VZ"}},
+        {"A", {"AX", "AY", "AZ"}},
+        {"VR", {"VRX", "VRY", "VRZ"}},
+        {"AR", {"ARX", "ARY", "ARZ"}},
+        {"XYZ", {"X", "Y", "Z"}}},
+       {"DX",  "DY",  "DZ",  "VX",    "VY",    "VZ",    "AX",     "AY",     "AZ",
+        "VRX", "VRY", "VRZ", "ARX",   "ARY",   "ARZ",   "DRX",    "DRY",    "DRZ",
+        "X",   "Y",   "Z",   "REACX", "REACY", "REACZ", "REACXX", "REACYY", "REACZZ"}},
+      {"/TH/PART", K::Part, "part", "/PART", {{"DEF", kPart}}, kPart},
+      {"/TH/SUBS", K::Subset, "subset", "/SUBSET", {{"DEF", kPart}}, kPart},
+      {"/TH/INTER",
+       K::Inter,
+       "interface",
+       "/INTER",
+       {{"DEF", kForces}, {"FN", {"FNX", "FNY", "FNZ"}}, {"FT", {"FTX", "FTY", "FTZ"}}},
+       {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "CE_ELAST", "CE_FRIC", "CE_DAMP"}},
+      {"/TH/RWALL", K::Rwall, "rigid wall", "/RWALL", {{"DEF", kForces}}, kForces},
+      {"/TH/SHEL", K::Shell, "4-node shell", "/SHELL", {{"DEF", kShell}}, kShell},
+  };
+  return kinds;
+}
+
+std::string accepted_th_names(const ThKindDef& k) {
+  std::string groups, names;
+  for (const auto& g : k.groups) groups += (groups.empty() ? "" : ", ") + std::string(g.name);
+  for (const auto& n : k.names) names += (names.empty() ? "" : ", ") + std::string(n);
+  return "groups " + groups + "; variables " + names;
+}
+
+std::vector<std::string> th_variables(ModelBuilder& b, const KeywordRecord& r, const ThKindDef& k) {
+  std::vector<std::string> out;
+  auto add = [&](std::string_view v) {
+    if (std::find(out.begin(), out.end(), v) == out.end()) out.emplace_back(v);
+  };
+  for (const auto& name : r.th_variables) {
+    const auto g =
+        std::find_if(k.groups.begin(), k.groups.end(), [&](const ThGroup& x) { return x.name == name; });
+    if (g != k.groups.end()) {
+      for (const auto v : g->variables) add(v);
+    } else if (std::find(k.names.begin(), k.names.end(), name) != k.names.end()) {
+      add(name);
+    } else {
+      b.diags_.error(Diag::ValueOutOfRange, b.at(r.pos, 1), ModelBuilder::about(r),
+                     "unknown " + std::string(k.path) + " variable '" + name +
+                         "' in the variable lines; accepted: " + accepted_th_names(k));
+    }
+  }
+  if (r.th_variables.empty())
+    b.diags_.error(
+        Diag::RequiredValueMissing, b.at(r.pos, 1), ModelBuilder::about(r),
+        "no variable names: the line after the title lists the variables, 10 columns each (DEF for the "
+        "default set); accepted: " +
+            accepted_th_names(k));
+  return out;
+}
+
+std::int32_t th_object(const ModelBuilder& b, model::ThKind kind, std::int64_t id) {
+  auto in = [id](const IdIndex& index) {
+    const auto it = index.find(id);
+    return it == index.end() ? kNone : it->second;
+  };
+  switch (kind) {
+    case model::ThKind::Node: return b.m_.nodes.index.find(id);  // -1 when unknown, = kNone
+    case model::ThKind::Part: return in(b.part_ids_);
+    case model::ThKind::Inter: return in(b.inter_ids_);
+    case model::ThKind::Rwall: return in(b.rwall_ids_);
+    case model::ThKind::Shell: return b.m_.shells.index.find(id);
+    case model::ThKind::Subset: return in(b.subset_ids_);
+  }
+  return kNone;
+}
+
+std::vector<std::int32_t> th_objects(ModelBuilder& b, const KeywordRecord& r, const ThKindDef& k) {
+  std::vector<std::int32_t> out;
+  bool missing = false;
+  auto take = [&](std::int64_t id, SourcePos pos) {
+    const auto o = th_object(b, k.kind, id);
+    if (o != kNone) {
+      out.push_back(o);
+      return;
+    }
+    missing = true;
+    b.diags_.error(Diag::MissingReference, b.at(pos, 1), ModelBuilder::about(r),
+                   std::string(k.object) + " " + std::to_string(id) + " does not exist: no " +
+                       std::string(k.target) + " defines it");
+  };
+  if (r.decl->tail == schema::Tail::ThVarsThenRecords) {
+    const auto& t = r.records;
+    const int cid = t.column("id"), cskew = t.column("skew_ID");
+    for (std::size_t i = 0; cid >= 0 && i < t.size(); ++i) {
+      take(t.ints[cid][i], t.pos[i]);
+      if (cskew >= 0 && t.ints[cskew][i] != 0)
+        b.diags_.error(Diag::MissingReference, b.at(t.pos[i], 11), ModelBuilder::about(r),
+                       unreadable_ref_text("skew_ID", t.ints[cskew][i], "/SKEW", "global axes"));
+    }
+  } else {
+    for (std::size_t i = 0; i < r.ids.size(); ++i) take(r.ids[i], r.id_pos[i]);
+  }
+  if (out.empty() && !missing)
+    b.diags_.warning(Diag::EmptyGroup, b.at(r.pos, 1), ModelBuilder::about(r),
+                     std::string(k.path) + " lists no " + std::string(k.object) +
+                         ": nothing will be written for it; give the ids after the variable lines");
+  return out;
+}
+
+}  // namespace
+
+void ModelBuilder::build_loads() {
+  build_bcs(*this);
+  build_imposed_velocities(*this);
+  build_initial_velocities(*this);
+  build_concentrated_loads(*this);
+  build_pressure_loads(*this);
+  build_gravities(*this);
+}
+
+void ModelBuilder::build_rigid_walls() {
+  const double size = model_size(m_.nodes);
+  build_each(*this, "/RWALL/PLANE", "rigid wall", m_.rigid_walls, rwall_ids_,
+             [&](const KeywordRecord& r) { return make_rigid_wall(*this, r, size); });
+}
+
+void ModelBuilder::build_rigid_bodies() {
+  build_each(*this, "/RBODY", "rigid body", m_.rigid_bodies, rbody_ids_,
+             [&](const KeywordRecord& r) { return make_rigid_body(*this, r); });
+}
+
+void ModelBuilder::build_time_histories() {
+  const auto& kinds = th_kinds();
+  std::vector<IdIndex> ids(kinds.size());
+  std::vector<FirstPos> first(kinds.size());
+  for (const auto& r : deck_.records) {
+    const auto k =
+        std::find_if(kinds.begin(), kinds.end(), [&](const ThKindDef& d) { return d.path == r.decl->path; });
+    if (k == kinds.end()) continue;
+    model::TimeHistoryGroup g;
+    g.id = r.id;
+    g.title = r.title;
+    g.kind = k->kind;
+    g.variables = th_variables(*this, r, *k);
+    g.objects = th_objects(*this, r, *k);
+    const auto i = static_cast<std::size_t>(k - kinds.begin());
+    const std::string what = std::string(k->path) + " group";
+    if (register_id(ids[i], g.id, static_cast<std::int32_t>(m_.time_histories.size()), r, what, first[i]))
+      m_.time_histories.push_back(std::move(g));
+  }
+}
+
+}  // namespace detail
+}  // namespace radx

@@ -1,0 +1,125 @@
+// What a deck said and where, with nothing interpreted beyond the keyword declarations: each keyword
+// block becomes a KeywordRecord holding typed field values (defaults applied, units converted to work
+// units) and the file:line of every card, so later checks can point at the right place.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "parser/diagnostics.hpp"
+#include "parser/keyword_schema.hpp"
+
+namespace radx {
+
+struct SourcePos {
+  std::uint32_t file = 0;  // index into Deck::files
+  std::uint32_t line = 0;  // 1-based
+};
+
+// One field value of a card. `blank` says the columns were empty; `defaulted` that the value came from
+// the declaration's zero default.
+struct FieldValue {
+  const schema::FieldDecl* decl = nullptr;
+  std::int64_t i = 0;
+  double r = 0.0;
+  std::string s;
+  bool blank = true;
+  bool defaulted = false;
+  SourcePos pos;
+  std::uint16_t column = 0;
+};
+
+// Columnar storage for record tails (/NODE, /SHELL, ...): one column per field of the record card.
+struct RecordTable {
+  std::vector<const schema::FieldDecl*> fields;
+  std::vector<std::vector<std::int64_t>> ints;    // per field; empty for non-integer fields
+  std::vector<std::vector<double>> reals;         // per field; empty for non-real fields
+  std::vector<std::vector<std::string>> strings;  // per field; empty for non-string fields
+  std::vector<SourcePos> pos;                     // per record
+  [[nodiscard]] std::size_t size() const { return pos.size(); }
+  // Index of a field by name; -1 when the record has no such field.
+  [[nodiscard]] int column(std::string_view name) const;
+};
+
+struct KeywordRecord {
+  const schema::KeywordDecl* decl = nullptr;
+  std::string written;  // the keyword line as written (trimmed)
+  std::int64_t id = 0;  // header object id (or part id for element blocks)
+  std::int64_t unit_id = 0;
+  std::string title;
+  SourcePos pos;                   // the keyword line
+  std::vector<FieldValue> fields;  // all fixed-card fields, in card order
+  RecordTable records;             // Tail::Records and ThVarsThenRecords
+  std::vector<std::int64_t> ids;   // Tail::IdList and ThVarsThenIds
+  std::vector<SourcePos> id_pos;   // where each id was written
+  std::vector<std::string> th_variables;
+  std::string text;  // Tail::Text
+
+  [[nodiscard]] std::string_view keyword() const;
+  [[nodiscard]] const FieldValue* find(std::string_view name) const;
+  [[nodiscard]] std::int64_t get_int(std::string_view name) const;  // 0 when absent
+  [[nodiscard]] double get_real(std::string_view name) const;       // 0 when absent
+  [[nodiscard]] std::string get_string(std::string_view name) const;
+  [[nodiscard]] bool given(std::string_view name) const;  // present and not blank
+};
+
+// Unit system: factors of one unit of mass, length and time in SI.
+struct UnitSystem {
+  double mass = 1.0;
+  double length = 1.0;
+  double time = 1.0;
+  std::string mass_name = "kg";
+  std::string length_name = "m";
+  std::string time_name = "s";
+};
+
+// Parses a unit name (kg, g, mg, Mg, t, lb, m, mm, cm, km, um/mum, in, ft, s, ms, mus/us, ns, min, h)
+// or a numeric factor; returns the SI factor or nullopt.
+std::optional<double> unit_factor(std::string_view name, char kind /* 'M', 'L', 'T' */);
+
+struct Deck {
+  std::vector<std::string> files;  // display paths, index = SourcePos::file
+  int version = 0;                 // INVERS from /BEGIN
+  std::string run_name;            // RUNNAME from /BEGIN
+  UnitSystem input_units;
+  UnitSystem work_units;
+  std::vector<KeywordRecord> records;  // starter keywords in deck order
+  std::vector<const KeywordRecord*> of(std::string_view path) const;
+  [[nodiscard]] Where where(SourcePos p, int column = 0) const;
+};
+
+struct EngineRecord {
+  const schema::EngineKeywordDecl* decl = nullptr;
+  std::string written;
+  SourcePos pos;
+  std::vector<std::string> header;         // header field values as written
+  std::vector<std::vector<double>> lines;  // numbers per data line
+  std::vector<std::int64_t> ids;           // id_lines keywords
+  [[nodiscard]] double value(std::size_t line, std::size_t k, double dflt = 0.0) const;
+};
+
+struct EngineDeck {
+  std::vector<std::string> files;
+  std::vector<EngineRecord> records;
+  [[nodiscard]] std::vector<const EngineRecord*> of(std::string_view path) const;
+  [[nodiscard]] Where where(SourcePos p, int column = 0) const;
+};
+
+struct ReadOptions {
+  // Treat a file with an /END/ENGINE line as a one-file deck: the starter part starts after it.
+  bool allow_one_file = true;
+};
+
+// Reads a starter deck (or the starter part of a one-file deck). Never throws on bad input: every
+// problem goes to `diags`.
+Deck read_starter_deck(const std::string& path, Diagnostics& diags, const ReadOptions& opt = {});
+// Reads an engine deck (or the engine part of a one-file deck).
+EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags);
+// True when the file has a line starting with /END/ENGINE (a one-file deck).
+bool is_one_file_deck(const std::string& path);
+
+}  // namespace radx

@@ -1,0 +1,795 @@
+// The starter-deck reader, driven entirely by the keyword declarations of keywords_starter.cpp:
+// header line -> declaration (longest path match, aliases included), then the title line, the cards
+// of the deck's version (conditional cards by their condition), then the tail (records, id lists,
+// text). Values get their declared defaults, are checked against their declared bounds and allowed
+// sets, and are converted from input units to work units. Nothing here knows a keyword by name except
+// /BEGIN (its version selects every layout), /UNIT and /END.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <unordered_map>
+
+#include "parser/deck.hpp"
+#include "parser/deck_text.hpp"
+#include "parser/field_parse.hpp"
+
+namespace radx {
+
+using schema::CardDecl;
+using schema::FieldDecl;
+using schema::FieldType;
+using schema::KeywordDecl;
+
+namespace {
+
+constexpr int kOldestVersion = 2017;
+constexpr int kNewestVersion = 2026;
+
+std::string upper(std::string_view s) {
+  std::string r(s);
+  for (auto& c : r) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return r;
+}
+
+// "/INTER/TYPE7/ 12" -> {"INTER", "TYPE7", "12"}; blanks inside a field are dropped.
+std::vector<std::string> split_keyword(std::string_view line) {
+  std::vector<std::string> tokens;
+  std::string cur;
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '/') {
+      tokens.push_back(cur);
+      cur.clear();
+    } else if (c != ' ' && c != '\t') {
+      cur += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+  }
+  tokens.push_back(cur);
+  while (!tokens.empty() && tokens.back().empty()) tokens.pop_back();
+  return tokens;
+}
+
+std::string join_path(const std::vector<std::string>& tokens, std::size_t n) {
+  std::string p;
+  for (std::size_t i = 0; i < n; ++i) p += "/" + tokens[i];
+  return p;
+}
+
+struct Registry {
+  std::unordered_map<std::string, const KeywordDecl*> by_path;
+  std::size_t max_tokens = 1;
+};
+
+const Registry& starter_registry() {
+  static const Registry reg = [] {
+    Registry r;
+    for (const auto& k : schema::starter_keywords()) {
+      auto add = [&](std::string_view path) {
+        r.by_path[std::string(path)] = &k;
+        const auto n = static_cast<std::size_t>(std::count(path.begin(), path.end(), '/'));
+        r.max_tokens = std::max(r.max_tokens, n);
+      };
+      add(k.path);
+      for (auto a : k.aliases) add(a);
+    }
+    return r;
+  }();
+  return reg;
+}
+
+bool is_known_unsupported(const std::string& path) {
+  for (auto root : schema::known_unsupported_roots()) {
+    if (path.size() >= root.size() && path.compare(0, root.size(), root) == 0 &&
+        (path.size() == root.size() || path[root.size()] == '/'))
+      return true;
+  }
+  return false;
+}
+
+std::string_view cell(std::string_view line, int first, int last) {
+  const auto f = static_cast<std::size_t>(first - 1);
+  if (line.size() <= f) return {};
+  const auto l = std::min(line.size(), static_cast<std::size_t>(last));
+  return line.substr(f, l - f);
+}
+
+std::vector<std::string_view> split_free(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  while (true) {
+    const auto comma = line.find(',', start);
+    out.push_back(
+        trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::string fmt_num(double v) {
+  std::ostringstream os;
+  os.precision(10);
+  os << v;
+  return os.str();
+}
+
+std::string describe_allowed(const FieldDecl& f) {
+  std::string s;
+  for (std::size_t i = 0; i < f.allowed.size(); ++i) s += (i ? ", " : "") + std::to_string(f.allowed[i]);
+  return s;
+}
+
+std::string describe_bounds(const FieldDecl& f) {
+  std::string s;
+  if (f.min) s += (f.min_exclusive ? "> " : ">= ") + fmt_num(*f.min);
+  if (f.max) s += std::string(s.empty() ? "" : " and ") + (f.max_exclusive ? "< " : "<= ") + fmt_num(*f.max);
+  return s;
+}
+
+class StarterReader {
+ public:
+  StarterReader(DeckText& text, Diagnostics& diags, Deck& deck) : text_(text), diags_(diags), deck_(deck) {}
+
+  void read(std::size_t first_line) {
+    const auto& lines = text_.lines;
+    // Find /BEGIN and /END: the starter reads between them.
+    std::size_t begin = lines.size();
+    for (std::size_t i = first_line; i < lines.size(); ++i) {
+      if (is_keyword(lines[i]) && split_keyword(lines[i].text) == std::vector<std::string>{"BEGIN"}) {
+        begin = i;
+        break;
+      }
+    }
+    if (begin == lines.size()) {
+      const SourcePos p =
+          lines.empty() ? SourcePos{0, 1} : lines[first_line < lines.size() ? first_line : 0].pos;
+      diags_.error(
+          Diag::MissingBegin, text_.where(p, 1), About{"/BEGIN"},
+          "no /BEGIN line: a starter deck starts with /BEGIN (run name, version, units) and ends with /END");
+      return;
+    }
+    std::size_t end = lines.size();
+    for (std::size_t i = begin + 1; i < lines.size(); ++i) {
+      if (is_keyword(lines[i])) {
+        const auto t = split_keyword(lines[i].text);
+        if (!t.empty() && t[0] == "END" && (t.size() == 1)) {
+          end = i;
+          break;
+        }
+      }
+    }
+    if (end == lines.size()) {
+      const SourcePos p = lines.back().pos;
+      diags_.error(Diag::MissingEnd, text_.where(p, 1), About{"/END"},
+                   "the deck has no /END line: the file looks truncated; a starter deck ends with /END");
+    }
+    // The version selects every layout: read it from /BEGIN card 2 before anything else.
+    read_version(begin, end);
+    // Blocks.
+    std::size_t i = begin;
+    while (i < end) {
+      std::size_t j = i + 1;
+      while (j < end && !is_keyword(lines[j])) ++j;
+      read_block(i, j);
+      i = j;
+    }
+    convert_units();
+  }
+
+ private:
+  static bool is_keyword(const TextLine& l) { return !l.text.empty() && l.text.front() == '/'; }
+
+  Where at(SourcePos p, int col = 0) const { return text_.where(p, col); }
+
+  void read_version(std::size_t begin, std::size_t end) {
+    const auto& lines = text_.lines;
+    int version = kNewestVersion;
+    if (begin + 2 < end && !is_keyword(lines[begin + 2])) {
+      std::int64_t v = 0;
+      const auto st = parse_int(cell(lines[begin + 2].text, 1, 10), v);
+      if (st == NumberStatus::Ok && v > 0) {
+        version = static_cast<int>(v);
+        if (v < kOldestVersion) {
+          diags_.error(Diag::UnsupportedVersion, at(lines[begin + 2].pos, 1), About{"/BEGIN"},
+                       "deck version " + std::to_string(v) +
+                           " is not read by radx: it reads the layouts of versions " +
+                           std::to_string(kOldestVersion) + " to " + std::to_string(kNewestVersion) +
+                           "; convert the deck to a 2017 or newer format");
+        } else if (v > kNewestVersion) {
+          diags_.warning(Diag::UnsupportedVersion, at(lines[begin + 2].pos, 1), About{"/BEGIN"},
+                         "deck version " + std::to_string(v) + " is newer than radx knows; the " +
+                             std::to_string(kNewestVersion) + " layouts are used");
+          version = kNewestVersion;
+        }
+      }
+    }
+    deck_.version = version;
+  }
+
+  // A field's text -> value, with defaults and checks.
+  FieldValue parse_field(const FieldDecl& f, std::string_view raw, SourcePos pos, int column,
+                         const About& about) {
+    FieldValue v;
+    v.decl = &f;
+    v.pos = pos;
+    v.column = static_cast<std::uint16_t>(column);
+    raw = trim(raw);
+    v.blank = raw.empty();
+    const std::string what = "field " + std::string(f.name) + " (" + std::string(f.meaning) + ")";
+    switch (f.type) {
+      case FieldType::String: v.s = std::string(raw); break;
+      case FieldType::Int: {
+        const auto st = parse_int(raw, v.i);
+        if (st == NumberStatus::Malformed) {
+          // A real with no fractional part written in an integer field is common in decks written by
+          // hand; anything else is an error.
+          double r = 0;
+          if (parse_real(raw, r) == NumberStatus::Ok && r == std::floor(r) && std::abs(r) < 9e15) {
+            v.i = static_cast<std::int64_t>(r);
+          } else {
+            diags_.error(Diag::BadInteger, at(pos, column), about,
+                         what + ": '" + std::string(raw) + "' is not an integer; write digits only, e.g. 12");
+            v.blank = true;
+          }
+        } else if (st == NumberStatus::Overflow) {
+          diags_.error(Diag::IntegerOverflow, at(pos, column), about,
+                       what + ": '" + std::string(raw) + "' is out of the integer range");
+          v.blank = true;
+        }
+        v.r = static_cast<double>(v.i);
+        break;
+      }
+      case FieldType::Real: {
+        const auto st = parse_real(raw, v.r);
+        if (st == NumberStatus::Malformed) {
+          diags_.error(
+              Diag::BadReal, at(pos, column), about,
+              what + ": '" + std::string(raw) +
+                  "' is not a number; accepted forms: 1.5, .5, 5., 1E-3, 1.D3, 1.5d-3, 210000003000");
+          v.blank = true;
+        } else if (st == NumberStatus::Overflow) {
+          diags_.error(
+              Diag::RealOverflow, at(pos, column), about,
+              what + ": '" + std::string(raw) + "' is beyond the double-precision range (about 1.8E308)");
+          v.blank = true;
+        }
+        v.i = 0;
+        break;
+      }
+    }
+    if (f.type != FieldType::String) {
+      const bool zero = (f.type == FieldType::Int) ? v.i == 0 : v.r == 0.0;
+      if (zero && f.required) {
+        diags_.error(Diag::RequiredValueMissing, at(pos, column), about,
+                     what + " is " + (v.blank ? "blank" : "0") + ": a value is required");
+      }
+      if (zero && f.zero_default) {
+        v.r = *f.zero_default;
+        v.i = static_cast<std::int64_t>(*f.zero_default);
+        v.defaulted = true;
+      }
+      const double value = f.type == FieldType::Int ? static_cast<double>(v.i) : v.r;
+      if (!f.allowed.empty() && f.type == FieldType::Int &&
+          std::find(f.allowed.begin(), f.allowed.end(), v.i) == f.allowed.end()) {
+        diags_.error(
+            Diag::ValueOutOfRange, at(pos, column), about,
+            what + " = " + std::to_string(v.i) + " is not accepted; accepted values: " + describe_allowed(f));
+      } else if ((f.min && (f.min_exclusive ? value <= *f.min : value < *f.min)) ||
+                 (f.max && (f.max_exclusive ? value >= *f.max : value > *f.max))) {
+        if (!(zero && !f.required && !f.zero_default && v.blank)) {
+          diags_.error(Diag::ValueOutOfRange, at(pos, column), about,
+                       what + " = " + fmt_num(value) + " is out of range; accepted: " + describe_bounds(f));
+        }
+      }
+      if (f.ignored && !zero && !v.defaulted) {
+        diags_.warning(
+            Diag::UnimplementedOption, at(pos, column), about,
+            what + " = " + fmt_num(value) + " is read but not used by radx; the run goes on without it");
+      }
+    }
+    return v;
+  }
+
+  std::vector<const FieldDecl*> active_fields(const CardDecl& card) const {
+    std::vector<const FieldDecl*> out;
+    for (const auto& f : card.fields)
+      if (f.in_version(deck_.version)) out.push_back(&f);
+    std::stable_sort(out.begin(), out.end(),
+                     [](const FieldDecl* a, const FieldDecl* b) { return a->first_col < b->first_col; });
+    return out;
+  }
+
+  bool check_tabs(const TextLine& line, const About& about) {
+    const auto tab = line.text.find('\t');
+    if (tab == std::string_view::npos) return true;
+    if (line.text.find(',') != std::string_view::npos) return true;  // free format: tabs are blanks
+    diags_.error(
+        Diag::TabInFixedField, at(line.pos, static_cast<int>(tab) + 1), about,
+        "tab character in a fixed-column line: tabs are rejected in fixed columns because their width "
+        "is ambiguous; replace them with spaces, or write the values comma-separated");
+    return false;
+  }
+
+  void check_width(const TextLine& line, const About& about) {
+    if (line.text.size() > 100 && !trim(line.text.substr(100)).empty()) {
+      diags_.warning(Diag::TextBeyondColumn100, at(line.pos, 101), about,
+                     "text beyond column 100 is ignored: '" + std::string(trim(line.text.substr(100))) + "'");
+    }
+  }
+
+  // Reads one card from `line` (nullptr: the card is missing and read as blank).
+  void read_card(const CardDecl& card, const TextLine* line, SourcePos keyword_pos, KeywordRecord& rec,
+                 const About& about) {
+    const auto fields = active_fields(card);
+    std::string_view text;
+    SourcePos pos = keyword_pos;
+    bool free = false;
+    std::vector<std::string_view> values;
+    if (line) {
+      text = line->text;
+      pos = line->pos;
+      if (!check_tabs(*line, about)) text = {};
+      check_width(*line, about);
+      free = text.find(',') != std::string_view::npos;
+      if (free) values = split_free(text);
+    }
+    for (std::size_t k = 0; k < fields.size(); ++k) {
+      const auto& f = *fields[k];
+      std::string_view raw;
+      if (free) {
+        raw = k < values.size() ? values[k] : std::string_view{};
+      } else {
+        raw = cell(text, f.first_col, std::min(f.last_col, 100));
+      }
+      rec.fields.push_back(parse_field(f, raw, pos, line ? f.first_col : 0, about));
+    }
+    if (free && values.size() > fields.size()) {
+      diags_.warning(Diag::ExtraData, at(pos, 1), about,
+                     "this free-format line has " + std::to_string(values.size()) + " values; the card has " +
+                         std::to_string(fields.size()) + " fields; the extra values are ignored");
+    }
+  }
+
+  void init_table(RecordTable& t, const CardDecl& card) {
+    t.fields = active_fields(card);
+    t.ints.resize(t.fields.size());
+    t.reals.resize(t.fields.size());
+    t.strings.resize(t.fields.size());
+  }
+
+  void read_record(RecordTable& t, const TextLine& line, const About& about) {
+    if (!check_tabs(line, about)) return;
+    check_width(line, about);
+    const bool free = line.text.find(',') != std::string_view::npos;
+    std::vector<std::string_view> values;
+    if (free) values = split_free(line.text);
+    t.pos.push_back(line.pos);
+    for (std::size_t k = 0; k < t.fields.size(); ++k) {
+      const auto& f = *t.fields[k];
+      std::string_view raw = free ? (k < values.size() ? values[k] : std::string_view{})
+                                  : cell(line.text, f.first_col, std::min(f.last_col, 100));
+      // Fast path for the common case: a plain number with no default or check to apply.
+      FieldValue v = parse_field(f, raw, line.pos, f.first_col, about);
+      switch (f.type) {
+        case FieldType::Int: t.ints[k].push_back(v.i); break;
+        case FieldType::Real: t.reals[k].push_back(v.r); break;
+        case FieldType::String: t.strings[k].push_back(std::move(v.s)); break;
+      }
+    }
+  }
+
+  void read_ids(KeywordRecord& rec, const TextLine& line, const About& about) {
+    const bool free = line.text.find(',') != std::string_view::npos;
+    if (!free && !check_tabs(line, about)) return;
+    check_width(line, about);
+    auto take = [&](std::string_view raw, int col) {
+      std::int64_t v = 0;
+      const auto st = parse_int(raw, v);
+      if (st == NumberStatus::Blank) return;
+      if (st != NumberStatus::Ok) {
+        diags_.error(Diag::BadInteger, at(line.pos, col), about,
+                     "'" + std::string(trim(raw)) +
+                         "' is not an id; ids are integers, 10 per line in 10-column cells");
+        return;
+      }
+      if (v == 0) return;
+      rec.ids.push_back(v);
+      rec.id_pos.push_back(line.pos);
+    };
+    if (free) {
+      for (auto v : split_free(line.text)) take(v, 1);
+    } else {
+      for (int c = 0; c < 10; ++c) take(cell(line.text, 10 * c + 1, 10 * c + 10), 10 * c + 1);
+    }
+  }
+
+  void read_block(std::size_t first, std::size_t last) {
+    const auto& lines = text_.lines;
+    const TextLine& head = lines[first];
+    const auto tokens = split_keyword(head.text);
+    if (tokens.empty()) {
+      diags_.error(Diag::UnknownKeyword, at(head.pos, 1), About{"/"}, "a lone '/' is not a keyword");
+      return;
+    }
+    if (tokens[0] == "END") return;
+    // Longest declared path that matches the leading tokens.
+    const auto& reg = starter_registry();
+    const KeywordDecl* decl = nullptr;
+    std::size_t used = 0;
+    for (std::size_t n = std::min(tokens.size(), reg.max_tokens); n >= 1; --n) {
+      const auto it = reg.by_path.find(join_path(tokens, n));
+      if (it != reg.by_path.end()) {
+        decl = it->second;
+        used = n;
+        break;
+      }
+    }
+    const std::string written(trim(head.text));
+    // The declaration must take every leading non-numeric field: `/SURF/PART/ALL/5` is not
+    // `/SURF/PART` with id "ALL".
+    std::size_t words = 0;
+    while (words < tokens.size() &&
+           !(std::isdigit(static_cast<unsigned char>(tokens[words].empty() ? 'x' : tokens[words][0])) ||
+             tokens[words][0] == '-'))
+      ++words;
+    if (decl && used < words) decl = nullptr;
+    if (!decl) {
+      // Strip trailing numeric header fields for the message.
+      std::size_t n = tokens.size();
+      while (n > 1 && !tokens[n - 1].empty() && std::isdigit(static_cast<unsigned char>(tokens[n - 1][0])))
+        --n;
+      const std::string path = join_path(tokens, n);
+      if (is_known_unsupported(path)) {
+        diags_.error(Diag::UnsupportedKeyword, at(head.pos, 1), About{path},
+                     "the Radioss keyword " + path +
+                         " is not supported by radx; see docs/keywords.md for the "
+                         "keywords radx reads");
+      } else {
+        diags_.error(Diag::UnknownKeyword, at(head.pos, 1), About{path},
+                     "unknown keyword " + path +
+                         ": not a keyword radx knows (check the spelling); see "
+                         "docs/keywords.md for the keywords radx reads");
+      }
+      return;
+    }
+    KeywordRecord rec;
+    rec.decl = decl;
+    rec.written = written;
+    rec.pos = head.pos;
+    // Header fields.
+    std::vector<std::int64_t> header;
+    bool header_ok = true;
+    for (std::size_t k = used; k < tokens.size(); ++k) {
+      std::int64_t v = 0;
+      if (parse_int(tokens[k], v) != NumberStatus::Ok || v < 0) {
+        diags_.error(Diag::BadHeader, at(head.pos, 1), About{decl->path},
+                     "'" + tokens[k] + "' in the keyword line is not a valid id: " + std::string(decl->path) +
+                         " takes " + header_help(*decl));
+        header_ok = false;
+      }
+      header.push_back(v);
+    }
+    using schema::Header;
+    const std::size_t allowed = decl->header == Header::None ? 0 : (decl->header == Header::IdUnit ? 2 : 1);
+    if (header_ok && header.size() > allowed) {
+      diags_.error(
+          Diag::BadHeader, at(head.pos, 1), About{decl->path},
+          "too many fields in the keyword line: " + std::string(decl->path) + " takes " + header_help(*decl));
+    }
+    const bool needs_id =
+        decl->header == Header::IdUnit || decl->header == Header::Id || decl->header == Header::PartId;
+    if (header_ok && needs_id && (header.empty() || header[0] <= 0)) {
+      diags_.error(Diag::BadHeader, at(head.pos, 1), About{decl->path},
+                   std::string(decl->path) + " needs a positive " + std::string(decl->id_name) +
+                       " in the keyword line: " + header_help(*decl));
+    }
+    if (decl->header == Header::UnitOnly) {
+      rec.unit_id = header.empty() ? 0 : header[0];
+    } else if (decl->header != Header::None) {
+      rec.id = header.empty() ? 0 : header[0];
+      if (header.size() > 1) rec.unit_id = header[1];
+    }
+    std::size_t cur = first + 1;
+    if (decl->has_title) {
+      if (cur < last) {
+        rec.title =
+            std::string(trim(lines[cur].text.substr(0, std::min<std::size_t>(100, lines[cur].text.size()))));
+        for (auto& c : rec.title)
+          if (c == '\t') c = ' ';
+        ++cur;
+      } else {
+        diags_.error(
+            Diag::MissingTitle, at(head.pos, 1), About{decl->path, rec.id},
+            std::string(decl->path) + " is followed by a title line, then its cards; this block has none");
+      }
+    }
+    const About about{decl->path, rec.id, rec.title};
+    if (decl->support == schema::Support::Ignored) {
+      diags_.note(Diag::IgnoredControlCard, at(head.pos, 1), about,
+                  written + " is accepted and ignored: it changes no physics in radx");
+    }
+    // Fixed cards.
+    for (const auto& card : decl->cards) {
+      if (!card.in_version(deck_.version)) continue;
+      if (card.condition.op != schema::CondOp::Always) {
+        const FieldValue* f = rec.find(card.condition.field);
+        if (!card.condition.holds(f ? f->i : 0)) continue;
+      }
+      const TextLine* line = cur < last ? &lines[cur] : nullptr;
+      read_card(card, line, head.pos, rec, about);
+      if (line) ++cur;
+    }
+    // Tail.
+    using schema::Tail;
+    switch (decl->tail) {
+      case Tail::None:
+        for (; cur < last; ++cur) {
+          if (!trim(lines[cur].text).empty()) {
+            diags_.warning(Diag::ExtraData, at(lines[cur].pos, 1), about,
+                           "data line after the last card of " + std::string(decl->path) + " is ignored: '" +
+                               std::string(trim(lines[cur].text)) + "'");
+            break;
+          }
+        }
+        break;
+      case Tail::Records:
+        init_table(rec.records, decl->record);
+        for (; cur < last; ++cur) {
+          if (trim(lines[cur].text).empty()) continue;
+          read_record(rec.records, lines[cur], about);
+        }
+        break;
+      case Tail::IdList:
+        for (; cur < last; ++cur) read_ids(rec, lines[cur], about);
+        break;
+      case Tail::Text:
+        for (; cur < last; ++cur)
+          for (char c : lines[cur].text)
+            if (c != ' ' && c != '\t') rec.text += c;
+        break;
+      case Tail::ThVarsThenIds:
+      case Tail::ThVarsThenRecords: {
+        bool first_line = true;
+        for (; cur < last; ++cur) {
+          const auto head_cell = trim(cell(lines[cur].text, 1, 10));
+          const bool var_line =
+              first_line || (!head_cell.empty() && !std::isdigit(static_cast<unsigned char>(head_cell[0])) &&
+                             head_cell[0] != '-' && head_cell[0] != '+');
+          if (!var_line) break;
+          first_line = false;
+          for (int c = 0; c < 10; ++c) {
+            const auto name = trim(cell(lines[cur].text, 10 * c + 1, 10 * c + 10));
+            if (!name.empty()) rec.th_variables.push_back(upper(name));
+          }
+        }
+        if (decl->tail == Tail::ThVarsThenIds) {
+          for (; cur < last; ++cur) read_ids(rec, lines[cur], about);
+        } else {
+          init_table(rec.records, decl->record);
+          for (; cur < last; ++cur) {
+            if (trim(lines[cur].text).empty()) continue;
+            read_record(rec.records, lines[cur], about);
+          }
+        }
+        break;
+      }
+    }
+    if (decl->singleton) {
+      for (const auto& r : deck_.records) {
+        if (r.decl == decl) {
+          diags_.warning(Diag::DuplicateSingleton, at(head.pos, 1), about,
+                         std::string(decl->path) + " appears more than once; only the first (line " +
+                             std::to_string(r.pos.line) + ") counts");
+          return;
+        }
+      }
+    }
+    deck_.records.push_back(std::move(rec));
+  }
+
+  static std::string header_help(const KeywordDecl& d) {
+    using schema::Header;
+    const std::string p(d.path);
+    switch (d.header) {
+      case Header::None: return "no id (" + p + ")";
+      case Header::IdUnit: return p + "/" + std::string(d.id_name) + "[/unit_ID]";
+      case Header::Id: return p + "/" + std::string(d.id_name);
+      case Header::UnitOnly: return p + "[/unit_ID]";
+      case Header::PartId: return p + "/part_ID";
+      case Header::OptionalId: return p + "[/" + std::string(d.id_name) + "]";
+    }
+    return p;
+  }
+
+  std::optional<UnitSystem> units_from(const KeywordRecord& r, std::string_view mname, std::string_view lname,
+                                       std::string_view tname) {
+    UnitSystem u;
+    bool ok = true;
+    auto one = [&](std::string_view field, char kind, double& factor, std::string& name) {
+      const FieldValue* f = r.find(field);
+      const std::string text = f ? std::string(trim(f->s)) : std::string();
+      if (text.empty()) return;  // blank: SI base unit
+      const auto v = unit_factor(text, kind);
+      if (!v) {
+        diags_.error(Diag::BadUnit, at(f->pos, f->column), About{r.decl->path, r.id, r.title},
+                     "unknown " +
+                         std::string(kind == 'M'   ? "mass"
+                                     : kind == 'L' ? "length"
+                                                   : "time") +
+                         " unit '" + text + "'; accepted: " +
+                         (kind == 'M'   ? "kg, g, mg, Mg (or t), lb"
+                          : kind == 'L' ? "m, cm, mm, um (or mum), km, in, ft"
+                                        : "s, ms, us (or mus), ns, min, h") +
+                         ", or a numeric factor to SI");
+        ok = false;
+        return;
+      }
+      factor = *v;
+      name = text;
+    };
+    one(mname, 'M', u.mass, u.mass_name);
+    one(lname, 'L', u.length, u.length_name);
+    one(tname, 'T', u.time, u.time_name);
+    if (!ok) return std::nullopt;
+    return u;
+  }
+
+  void convert_units() {
+    std::map<std::int64_t, UnitSystem> systems;
+    for (const auto& r : deck_.records) {
+      if (r.decl->path == "/BEGIN") {
+        deck_.run_name = r.get_string("RUNNAME");
+        if (auto u = units_from(r, "input_mass", "input_length", "input_time")) deck_.input_units = *u;
+        if (auto u = units_from(r, "work_mass", "work_length", "work_time")) deck_.work_units = *u;
+      } else if (r.decl->path == "/UNIT") {
+        if (auto u = units_from(r, "MUNIT", "LUNIT", "TUNIT")) systems[r.id] = *u;
+      }
+    }
+    const UnitSystem& w = deck_.work_units;
+    for (auto& r : deck_.records) {
+      const UnitSystem* u = &deck_.input_units;
+      if (r.unit_id != 0) {
+        const auto it = systems.find(r.unit_id);
+        if (it == systems.end()) {
+          diags_.error(Diag::MissingReference, at(r.pos, 1), About{r.decl->path, r.id, r.title},
+                       "unit system " + std::to_string(r.unit_id) +
+                           " named in the keyword line has no /UNIT/" + std::to_string(r.unit_id));
+          continue;
+        }
+        u = &it->second;
+      }
+      const double fm = u->mass / w.mass;
+      const double fl = u->length / w.length;
+      const double ft = u->time / w.time;
+      if (fm == 1.0 && fl == 1.0 && ft == 1.0) continue;
+      auto factor = [&](schema::Dim d) { return std::pow(fm, d.m) * std::pow(fl, d.l) * std::pow(ft, d.t); };
+      for (auto& f : r.fields) {
+        // Values of 1e19 and beyond stand for "never" or "no limit" and stay as they are.
+        if (f.decl->type == FieldType::Real && !f.decl->dimension.none() && std::abs(f.r) < 1e19)
+          f.r *= factor(f.decl->dimension);
+      }
+      for (std::size_t k = 0; k < r.records.fields.size(); ++k) {
+        const auto& f = *r.records.fields[k];
+        if (f.type != FieldType::Real || f.dimension.none()) continue;
+        const double s = factor(f.dimension);
+        for (auto& v : r.records.reals[k])
+          if (std::abs(v) < 1e19) v *= s;
+      }
+    }
+  }
+
+  DeckText& text_;
+  Diagnostics& diags_;
+  Deck& deck_;
+};
+
+std::size_t one_file_start(const DeckText& text) {
+  for (std::size_t i = 0; i < text.lines.size(); ++i) {
+    const auto& l = text.lines[i].text;
+    if (!l.empty() && l.front() == '/' && upper(trim(l)).rfind("/END/ENGINE", 0) == 0) return i + 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::optional<double> unit_factor(std::string_view name, char kind) {
+  name = trim(name);
+  struct U {
+    std::string_view n;
+    double f;
+  };
+  static const U mass[] = {{"kg", 1.0}, {"g", 1e-3},  {"mg", 1e-6},      {"Mg", 1e3},
+                           {"t", 1e3},  {"ton", 1e3}, {"lb", 0.45359237}};
+  static const U length[] = {{"m", 1.0},  {"cm", 1e-2},   {"mm", 1e-3},   {"um", 1e-6}, {"mum", 1e-6},
+                             {"km", 1e3}, {"in", 0.0254}, {"ft", 0.3048}, {"dm", 0.1}};
+  static const U time[] = {{"s", 1.0},   {"ms", 1e-3}, {"us", 1e-6}, {"mus", 1e-6},
+                           {"ns", 1e-9}, {"min", 60.}, {"h", 3600.}};
+  auto look = [&](const auto& table) -> std::optional<double> {
+    for (const auto& u : table)
+      if (u.n == name) return u.f;
+    return std::nullopt;
+  };
+  std::optional<double> f;
+  if (kind == 'M') f = look(mass);
+  if (kind == 'L') f = look(length);
+  if (kind == 'T') f = look(time);
+  if (f) return f;
+  double v = 0;
+  if (parse_real(name, v) == NumberStatus::Ok && v > 0) return v;
+  return std::nullopt;
+}
+
+bool is_one_file_deck(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (upper(trim(line)).rfind("/END/ENGINE", 0) == 0) return true;
+  }
+  return false;
+}
+
+Deck read_starter_deck(const std::string& path, Diagnostics& diags, const ReadOptions& opt) {
+  Deck deck;
+  DeckText text;
+  if (!load_deck_text(path, text, diags)) {
+    deck.files = text.files;
+    return deck;
+  }
+  deck.files = text.files;
+  StarterReader reader(text, diags, deck);
+  reader.read(opt.allow_one_file ? one_file_start(text) : 0);
+  return deck;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Accessors.
+
+int RecordTable::column(std::string_view name) const {
+  for (std::size_t k = 0; k < fields.size(); ++k)
+    if (fields[k]->name == name) return static_cast<int>(k);
+  return -1;
+}
+
+std::string_view KeywordRecord::keyword() const {
+  return decl ? decl->path : std::string_view{};
+}
+
+const FieldValue* KeywordRecord::find(std::string_view name) const {
+  for (const auto& f : fields)
+    if (f.decl->name == name) return &f;
+  return nullptr;
+}
+std::int64_t KeywordRecord::get_int(std::string_view name) const {
+  const auto* f = find(name);
+  return f ? f->i : 0;
+}
+double KeywordRecord::get_real(std::string_view name) const {
+  const auto* f = find(name);
+  return f ? (f->decl->type == FieldType::Int ? static_cast<double>(f->i) : f->r) : 0.0;
+}
+std::string KeywordRecord::get_string(std::string_view name) const {
+  const auto* f = find(name);
+  return f ? f->s : std::string();
+}
+bool KeywordRecord::given(std::string_view name) const {
+  const auto* f = find(name);
+  return f && !f->blank;
+}
+
+std::vector<const KeywordRecord*> Deck::of(std::string_view path) const {
+  std::vector<const KeywordRecord*> out;
+  for (const auto& r : records)
+    if (r.decl->path == path) out.push_back(&r);
+  return out;
+}
+
+Where Deck::where(SourcePos p, int column) const {
+  return Where{p.file < files.size() ? std::string_view(files[p.file]) : std::string_view{},
+               static_cast<int>(p.line), column};
+}
+
+}  // namespace radx

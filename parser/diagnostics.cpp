@@ -1,0 +1,148 @@
+#include "parser/diagnostics.hpp"
+
+#include <algorithm>
+#include <ostream>
+#include <sstream>
+
+namespace radx {
+
+namespace {
+
+struct CodeInfo {
+  Diag code;
+  std::string_view summary;
+};
+
+// The one table of codes and what they mean; docs/keywords.md prints it.
+const std::vector<CodeInfo>& code_table() {
+  static const std::vector<CodeInfo> table = {
+      {Diag::FileNotFound, "the deck file cannot be opened"},
+      {Diag::IncludeLoop, "an #include chain includes a file that is already being read"},
+      {Diag::IncludeNotFound, "an #include names a file that cannot be opened"},
+      {Diag::TabInFixedField, "a tab character in a fixed-column line (tabs are rejected there)"},
+      {Diag::MissingBegin, "no /BEGIN line: the starter reads from /BEGIN to /END"},
+      {Diag::MissingEnd, "no /END line: the file is truncated"},
+      {Diag::NotUtf8OrBinary, "the file holds binary data (NUL bytes)"},
+      {Diag::BadInteger, "a field that must hold an integer holds something else"},
+      {Diag::BadReal, "a field that must hold a real number holds something else"},
+      {Diag::RealOverflow, "a real number outside the double-precision range"},
+      {Diag::IntegerOverflow, "an integer outside the 64-bit range"},
+      {Diag::FieldTruncated, "a number that does not fit its columns"},
+      {Diag::TextBeyondColumn100, "text beyond column 100 is ignored"},
+      {Diag::UnknownKeyword, "a keyword radx does not know"},
+      {Diag::UnsupportedKeyword, "a Radioss keyword that radx does not support"},
+      {Diag::IgnoredControlCard, "a control card accepted and ignored (it changes no physics)"},
+      {Diag::MissingCard, "a card the keyword needs is missing"},
+      {Diag::EmptyRecordList, "a keyword that lists records or ids has none"},
+      {Diag::BadHeader, "the keyword line's id or unit id is not a positive integer"},
+      {Diag::UnsupportedVersion, "the /BEGIN deck version is outside the versions radx reads"},
+      {Diag::DuplicateSingleton, "a keyword that may appear once appears again"},
+      {Diag::MissingTitle, "the keyword needs a title line"},
+      {Diag::ExtraData, "data lines after the last card of a keyword"},
+      {Diag::DuplicateId, "two objects of one kind share an id"},
+      {Diag::MissingReference, "a reference to an object that does not exist"},
+      {Diag::EmptyGroup, "a group or surface that holds nothing"},
+      {Diag::RequiredIdMissing, "a required id field is blank or 0"},
+      {Diag::UnusedNode, "a node used by no element"},
+      {Diag::ElementNodeMissing, "an element refers to a node that does not exist"},
+      {Diag::PartWrongKind, "a part of the wrong kind for this use (solid part in /SURF/PART, ...)"},
+      {Diag::ValueOutOfRange, "a value outside the accepted set or range"},
+      {Diag::RequiredValueMissing, "a value the keyword needs is blank or 0"},
+      {Diag::BadPoisson, "Poisson's ratio outside [0, 0.5)"},
+      {Diag::NonPositiveThickness,
+       "a shell thickness that is negative, or zero on both element and property"},
+      {Diag::NonMonotonicFunction, "function abscissas that are not strictly increasing"},
+      {Diag::BadUnit, "a unit name or factor that radx does not know"},
+      {Diag::InconsistentValues, "values that contradict each other"},
+      {Diag::DefaultApplied, "a value replaced by a default worth knowing about"},
+      {Diag::UnimplementedOption, "an option radx reads but does not implement"},
+      {Diag::NonPositiveVolume, "a solid element with zero or negative volume"},
+      {Diag::NonPositiveArea, "a shell element with zero area"},
+      {Diag::DegenerateElement, "a degenerate element (repeated nodes) used as a lower-order shape"},
+      {Diag::RepeatedNodeInElement, "an element lists the same node where that is not allowed"},
+      {Diag::InitialPenetration, "secondary nodes closer to the main surface than the gap at t = 0"},
+      {Diag::InterfaceFieldIgnored, "an interface field radx reads but does not use is set"},
+      {Diag::BadFrictionLaw, "friction law coefficients that are inconsistent"},
+      {Diag::EngineMissingRun, "the engine deck has no /RUN"},
+      {Diag::EngineBadLine, "an engine deck data line with too few or unreadable values"},
+      {Diag::EngineRunNameMismatch, "the /RUN name or number differs from the file name"},
+  };
+  return table;
+}
+
+}  // namespace
+
+std::string diag_code(Diag d) {
+  return "RX" + std::to_string(static_cast<int>(d));
+}
+
+std::string_view diag_summary(Diag d) {
+  for (const auto& c : code_table())
+    if (c.code == d) return c.summary;
+  return "";
+}
+
+const std::vector<Diag>& all_diag_codes() {
+  static const std::vector<Diag> codes = [] {
+    std::vector<Diag> v;
+    for (const auto& c : code_table()) v.push_back(c.code);
+    return v;
+  }();
+  return codes;
+}
+
+void Diagnostics::add(Severity s, Diag code, Where where, About about, std::string message) {
+  Diagnostic d;
+  d.severity = s;
+  d.code = code;
+  d.file = std::string(where.file);
+  d.line = where.line;
+  d.column = where.column;
+  d.keyword = std::string(about.keyword);
+  d.id = about.id;
+  d.title = std::string(about.title);
+  d.message = std::move(message);
+  if (s == Severity::Error) ++errors_;
+  if (s == Severity::Warning) ++warnings_;
+  items_.push_back(std::move(d));
+}
+
+bool Diagnostics::contains(Diag code) const {
+  return std::any_of(items_.begin(), items_.end(), [&](const Diagnostic& d) { return d.code == code; });
+}
+
+void Diagnostics::sort() {
+  std::stable_sort(items_.begin(), items_.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    if (a.file != b.file) return a.file < b.file;
+    if (a.line != b.line) return a.line < b.line;
+    return a.column < b.column;
+  });
+}
+
+std::string Diagnostics::format(const Diagnostic& d) {
+  std::ostringstream os;
+  os << (d.file.empty() ? std::string("radx") : d.file);
+  if (d.line > 0) os << ':' << d.line;
+  if (d.line > 0 && d.column > 0) os << ':' << d.column;
+  os << ": ";
+  switch (d.severity) {
+    case Severity::Error: os << "error"; break;
+    case Severity::Warning: os << "warning"; break;
+    case Severity::Note: os << "note"; break;
+  }
+  os << ": " << diag_code(d.code) << ": ";
+  if (!d.keyword.empty()) {
+    os << '[' << d.keyword;
+    if (d.id != 0) os << " id " << d.id;
+    if (!d.title.empty()) os << " \"" << d.title << '"';
+    os << "] ";
+  }
+  os << d.message;
+  return os.str();
+}
+
+void Diagnostics::print(std::ostream& os) const {
+  for (const auto& d : items_) os << format(d) << '\n';
+}
+
+}  // namespace radx

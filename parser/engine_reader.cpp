@@ -1,0 +1,225 @@
+// The engine-deck reader. Engine decks are free format (Fortran list-directed): numbers separated by
+// blanks or commas, one data line per declared line. Keyword fields are compared on their first five
+// non-blank characters, as the Radioss engine does (`/PARITH/ON` is `/PARIT/ON`), except `/ANIM`
+// keywords, which are compared at full length. Reading stops at the first `/END` line (so the engine
+// part of a one-file deck ends at `/END/ENGINE`). Unlike Radioss, an unknown engine keyword is an
+// error, never skipped.
+#include <algorithm>
+
+#include "parser/deck.hpp"
+#include "parser/deck_text.hpp"
+#include "parser/field_parse.hpp"
+
+namespace radx {
+
+using schema::EngineKeywordDecl;
+
+namespace {
+
+std::vector<std::string> engine_tokens(std::string_view line, bool& is_anim) {
+  std::vector<std::string> tokens;
+  std::string cur;
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '/') {
+      tokens.push_back(cur);
+      cur.clear();
+    } else if (c != ' ' && c != '\t') {
+      cur += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+  }
+  tokens.push_back(cur);
+  while (!tokens.empty() && tokens.back().empty()) tokens.pop_back();
+  is_anim = !tokens.empty() && tokens[0] == "ANIM";
+  return tokens;
+}
+
+std::string five(const std::string& s) {
+  return s.substr(0, std::min<std::size_t>(5, s.size()));
+}
+
+std::vector<std::string> path_tokens(std::string_view path) {
+  bool dummy = false;
+  return engine_tokens(path, dummy);
+}
+
+// Number of leading tokens of `tokens` that match `decl` (0: no match).
+std::size_t match(const EngineKeywordDecl& decl, std::string_view path,
+                  const std::vector<std::string>& tokens, bool is_anim) {
+  const auto want = path_tokens(path);
+  if (want.size() > tokens.size()) return 0;
+  for (std::size_t k = 0; k < want.size(); ++k) {
+    const bool ok = is_anim ? want[k] == tokens[k] : five(want[k]) == five(tokens[k]);
+    if (!ok) return 0;
+  }
+  if (!decl.prefix_match && tokens.size() - want.size() > decl.header_fields.size()) return 0;
+  return want.size();
+}
+
+std::vector<std::string_view> split_values(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == ',')) ++i;
+    if (i >= line.size()) break;
+    std::size_t j = i;
+    while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != ',') ++j;
+    out.push_back(line.substr(i, j - i));
+    i = j;
+  }
+  return out;
+}
+
+}  // namespace
+
+double EngineRecord::value(std::size_t line, std::size_t k, double dflt) const {
+  if (line >= lines.size() || k >= lines[line].size()) return dflt;
+  return lines[line][k];
+}
+
+std::vector<const EngineRecord*> EngineDeck::of(std::string_view path) const {
+  std::vector<const EngineRecord*> out;
+  for (const auto& r : records)
+    if (r.decl->path == path) out.push_back(&r);
+  return out;
+}
+
+Where EngineDeck::where(SourcePos p, int column) const {
+  return Where{p.file < files.size() ? std::string_view(files[p.file]) : std::string_view{},
+               static_cast<int>(p.line), column};
+}
+
+EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
+  EngineDeck deck;
+  DeckText text;
+  if (!load_deck_text(path, text, diags)) {
+    deck.files = text.files;
+    return deck;
+  }
+  deck.files = text.files;
+  const auto& lines = text.lines;
+  const auto& decls = schema::engine_keywords();
+  bool ended = false;
+  std::size_t i = 0;
+  while (i < lines.size()) {
+    const TextLine& head = lines[i];
+    if (head.text.empty() || head.text.front() != '/') {
+      if (!trim(head.text).empty()) {
+        diags.error(Diag::EngineBadLine, text.where(head.pos, 1), About{},
+                    "data line outside any keyword: '" + std::string(trim(head.text)) +
+                        "'; engine decks start every block with a /KEYWORD line");
+      }
+      ++i;
+      continue;
+    }
+    bool is_anim = false;
+    const auto tokens = engine_tokens(head.text, is_anim);
+    if (!tokens.empty() && five(tokens[0]) == "END") {
+      ended = true;
+      break;
+    }
+    std::size_t j = i + 1;
+    while (j < lines.size() && (lines[j].text.empty() || lines[j].text.front() != '/')) ++j;
+    const EngineKeywordDecl* decl = nullptr;
+    std::size_t used = 0;
+    for (const auto& d : decls) {
+      std::size_t n = match(d, d.path, tokens, is_anim);
+      for (auto a : d.aliases) n = std::max(n, match(d, a, tokens, is_anim));
+      if (n > used) {
+        used = n;
+        decl = &d;
+      }
+    }
+    std::string written(trim(head.text));
+    if (!decl) {
+      diags.error(Diag::UnsupportedKeyword, text.where(head.pos, 1), About{written},
+                  "engine keyword " + written +
+                      " is not supported by radx (Radioss would skip it silently); remove it or see "
+                      "docs/keywords.md for the engine keywords radx reads");
+      i = j;
+      continue;
+    }
+    EngineRecord rec;
+    rec.decl = decl;
+    rec.written = written;
+    rec.pos = head.pos;
+    for (std::size_t k = used; k < tokens.size(); ++k) rec.header.push_back(tokens[k]);
+    const About about{decl->path};
+    if (rec.header.size() < decl->header_required) {
+      diags.error(Diag::BadHeader, text.where(head.pos, 1), about,
+                  std::string(decl->path) + " needs " + std::to_string(decl->header_required) +
+                      " field(s) after the keyword in the keyword line");
+    }
+    if (decl->support == schema::Support::Ignored) {
+      diags.note(Diag::IgnoredControlCard, text.where(head.pos, 1), about,
+                 written + " is accepted and ignored: it changes no physics in radx");
+    }
+    std::size_t cur = i + 1;
+    // Skip blank lines between data lines: list-directed reads pass over them.
+    auto next_data = [&]() -> const TextLine* {
+      while (cur < j && trim(lines[cur].text).empty()) ++cur;
+      return cur < j ? &lines[cur] : nullptr;
+    };
+    for (const auto& ld : decl->lines) {
+      const TextLine* line = next_data();
+      std::vector<double> values;
+      if (line) {
+        const auto parts = split_values(line->text);
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+          double v = 0;
+          const auto st = parse_real(parts[k], v);
+          if (st != NumberStatus::Ok) {
+            const std::string name =
+                k < ld.names.size() ? std::string(ld.names[k]) : "value " + std::to_string(k + 1);
+            diags.error(st == NumberStatus::Overflow ? Diag::RealOverflow : Diag::BadReal,
+                        text.where(line->pos, 1), about,
+                        name + ": '" + std::string(parts[k]) + "' is not a number");
+          }
+          values.push_back(v);
+        }
+        ++cur;
+      }
+      if (values.size() < ld.required) {
+        std::string names;
+        for (std::size_t k = 0; k < ld.names.size(); ++k) names += (k ? " " : "") + std::string(ld.names[k]);
+        diags.error(Diag::EngineBadLine, text.where(line ? line->pos : head.pos, 1), about,
+                    std::string(decl->path) + " needs " + std::to_string(ld.required) +
+                        " value(s) on this line (" + names + "); found " + std::to_string(values.size()));
+      }
+      rec.lines.push_back(std::move(values));
+    }
+    if (decl->id_lines) {
+      for (; cur < j; ++cur) {
+        for (auto part : split_values(lines[cur].text)) {
+          std::int64_t v = 0;
+          if (parse_int(part, v) != NumberStatus::Ok) {
+            diags.error(Diag::BadInteger, text.where(lines[cur].pos, 1), about,
+                        "'" + std::string(part) + "' is not an id");
+            continue;
+          }
+          rec.ids.push_back(v);
+        }
+      }
+    }
+    if (next_data()) {
+      diags.warning(Diag::ExtraData, text.where(lines[cur].pos, 1), about,
+                    "data line after the last line of " + std::string(decl->path) + " is ignored: '" +
+                        std::string(trim(lines[cur].text)) + "'");
+    }
+    deck.records.push_back(std::move(rec));
+    i = j;
+  }
+  if (!ended) {
+    const SourcePos p = lines.empty() ? SourcePos{0, 1} : lines.back().pos;
+    diags.error(Diag::MissingEnd, text.where(p, 1), About{"/END"},
+                "the engine deck has no /END line: the file looks truncated; an engine deck ends with /END");
+  }
+  if (deck.of("/RUN").empty()) {
+    diags.error(
+        Diag::EngineMissingRun, text.where(SourcePos{0, 1}, 1), About{"/RUN"},
+        "the engine deck has no /RUN: it sets the run name, number and end time (/RUN/name/1, then Tstop)");
+  }
+  return deck;
+}
+
+}  // namespace radx

@@ -1,0 +1,922 @@
+// The starter deck's keywords as data: one declaration per keyword of the subset radx reads (see
+// shared/spec/deck-format.md section 2, type7-lagdt.md section 3 and contact-laws.md section 5), in the
+// order of deck-format.md, plus the list of real Radioss keywords radx knows but does not support.
+//
+// Conventions used throughout:
+// * The earliest band of a versioned field starts at kAnyVersion, so decks older than 2017 (INVERS 41..140)
+//   get the oldest layout described here.
+// * zero_is() only for constant defaults; defaults that depend on other fields or on /DEF_SHELL and
+//   /DEF_SOLID are resolved by the model builder from the raw value.
+// * unused(): read and echoed, but radx does not act on it; a non-default value warns.
+#include "parser/keyword_schema.hpp"
+
+namespace radx::schema {
+
+namespace {
+
+CardDecl card(std::string_view name, std::vector<FieldDecl> fields) {
+  CardDecl c;
+  c.name = name;
+  c.fields = std::move(fields);
+  return c;
+}
+
+CardDecl card_if(std::string_view name, Condition cond, std::vector<FieldDecl> fields) {
+  CardDecl c = card(name, std::move(fields));
+  c.condition = cond;
+  return c;
+}
+
+CardDecl card_v(std::string_view name, int since, int until, std::vector<FieldDecl> fields) {
+  CardDecl c = card(name, std::move(fields));
+  c.since = since;
+  c.until = until;
+  return c;
+}
+
+KeywordDecl kw(std::string_view path, std::string_view meaning, Header header, bool has_title,
+               std::string_view id_name = "id") {
+  KeywordDecl k;
+  k.path = path;
+  k.meaning = meaning;
+  k.header = header;
+  k.has_title = has_title;
+  k.id_name = id_name;
+  return k;
+}
+
+// Heat exchange coefficient and radiation factor of the TYPE7 thermal cards: power per area per kelvin
+// (per kelvin^4 for the radiation factor), M T^-3.
+constexpr Dim kHeatTransfer{1, 0, -3};
+
+// ---------------------------------------------------------------------------------------------------------
+// Run control, units, mesh
+void add_control_and_mesh(std::vector<KeywordDecl>& t) {
+  {
+    KeywordDecl k = kw("/BEGIN", "start of the starter deck: run name, deck version and unit systems",
+                       Header::None, false);
+    k.singleton = true;
+    k.cards = {
+        card("card 1", {S("RUNNAME", 1, 100, "free run name; outputs are named after the input file")}),
+        card("card 2", {I("INVERS", 1, 10, "deck format version; selects the layout of every keyword").must(),
+                        I("IRUN", 11, 20, "run number of old layouts, read and not used")
+                            .versions(kAnyVersion, 2020)
+                            .unused()}),
+        card("card 3 (input units)",
+             {S("input_mass", 1, 20, "mass unit the deck is written in (name or factor to kg)"),
+              S("input_length", 21, 40, "length unit the deck is written in (name or factor to m)"),
+              S("input_time", 41, 60, "time unit the deck is written in (name or factor to s)")}),
+        card("card 4 (work units)", {S("work_mass", 1, 20, "mass unit the solver computes in"),
+                                     S("work_length", 21, 40, "length unit the solver computes in"),
+                                     S("work_time", 41, 60, "time unit the solver computes in")}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/TITLE", "model title printed in the listings", Header::None, false);
+    k.singleton = true;
+    k.cards = {card("card 1", {S("TITLE", 1, 100, "model title")})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/UNIT", "a named unit system that objects can refer to by their unit id", Header::Id,
+                       true, "unit_ID");
+    k.cards = {card("card 1", {S("MUNIT", 1, 20, "mass unit: a unit name or a factor relative to kg"),
+                               S("LUNIT", 21, 40, "length unit: a unit name or a factor relative to m"),
+                               S("TUNIT", 41, 60, "time unit: a unit name or a factor relative to s")})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/NODE", "node coordinates, one node per line", Header::UnitOnly, false, "unit_ID");
+    k.tail = Tail::Records;
+    k.record = card("node", {I("node_ID", 1, 10, "user node id, positive and unique").must().gt(0),
+                             R("X", 11, 30, "X coordinate").dims(dim::length),
+                             R("Y", 31, 50, "Y coordinate").dims(dim::length),
+                             R("Z", 51, 70, "Z coordinate").dims(dim::length)});
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/SHELL", "4-node shell elements of one part, one element per line", Header::PartId,
+                       false, "part_ID");
+    k.tail = Tail::Records;
+    k.record =
+        card("shell",
+             {I("shell_ID", 1, 10, "element id").must().gt(0),
+              I("n1", 11, 20, "first node; the normal follows n1, n2, n3 by the right-hand rule").must(),
+              I("n2", 21, 30, "second node").must(), I("n3", 31, 40, "third node").must(),
+              I("n4", 41, 50, "fourth node; 0 or equal to n3 makes a degenerate triangle"),
+              R("PHI", 61, 80, "material direction angle in degrees"),
+              R("Thick", 81, 100, "element thickness; 0 takes the property thickness").dims(dim::length)});
+    t.push_back(std::move(k));
+  }
+  {
+    // Columns as the reference reader cuts the card (71-90 and 91-100), not as its comment ruler shows them
+    // (61-80 and 81-100). Right-justified numbers of up to 10 characters read the same either way.
+    KeywordDecl k = kw("/SH3N", "3-node shell elements of one part, one element per line", Header::PartId,
+                       false, "part_ID");
+    k.tail = Tail::Records;
+    k.record = card(
+        "sh3n", {I("tria_ID", 1, 10, "element id").must().gt(0),
+                 I("n1", 11, 20, "first node; the normal follows n1, n2, n3 by the right-hand rule").must(),
+                 I("n2", 21, 30, "second node").must(), I("n3", 31, 40, "third node").must(),
+                 R("PHI", 71, 90, "material direction angle in degrees"),
+                 R("Thick", 91, 100, "element thickness; 0 takes the property thickness").dims(dim::length)});
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/BRICK", "8-node solid elements of one part, one element per line", Header::PartId,
+                       false, "part_ID");
+    k.tail = Tail::Records;
+    k.record = card(
+        "brick", {I("brick_ID", 1, 10, "element id").must().gt(0),
+                  I("n1", 11, 20, "node 1 (n1..n4 form one face)").must(), I("n2", 21, 30, "node 2").must(),
+                  I("n3", 31, 40, "node 3").must(), I("n4", 41, 50, "node 4").must(),
+                  I("n5", 51, 60, "node 5, joined to n1 (repeated nodes give degenerate shapes)"),
+                  I("n6", 61, 70, "node 6, joined to n2"), I("n7", 71, 80, "node 7, joined to n3"),
+                  I("n8", 81, 90, "node 8, joined to n4")});
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/PART", "a part: the property and material of a set of elements", Header::IdUnit,
+                       true, "part_ID");
+    k.cards = {card(
+        "card 1",
+        {I("prop_ID", 1, 10, "property (/PROP) of the part's elements").must(),
+         I("mat_ID", 11, 20, "material (/MAT) of the part's elements").must(),
+         I("subset_ID", 21, 30, "subset the part belongs to; 0 = top level"),
+         R("Thick", 31, 50, "virtual thickness used only for contact gaps; 0 = none").dims(dim::length)})};
+    t.push_back(std::move(k));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Properties and materials
+void add_properties_and_materials(std::vector<KeywordDecl>& t) {
+  {
+    KeywordDecl k = kw("/PROP/SHELL", "shell property: formulation flags, hourglass, thickness",
+                       Header::IdUnit, true, "prop_ID");
+    k.aliases = {"/PROP/TYPE1"};
+    k.cards = {
+        card("card 1", {I("Ishell", 1, 10, "4-node shell formulation; 0 takes /DEF_SHELL, then 1")
+                            .allow({0, 1, 2, 3, 4, 12, 22, 23, 24}),
+                        I("Ismstr", 11, 20, "shell strain formulation; 0 takes /DEF_SHELL, then 2")
+                            .allow({0, 1, 2, 3, 4, 10}),
+                        I("Ish3n", 21, 30, "3-node shell formulation; 0 takes /DEF_SHELL, then 2")
+                            .allow({0, 1, 2, 30, 31}),
+                        I("Idrill", 31, 40, "drilling stiffness: 1 on, 2 off; 0 takes /DEF_SHELL, then off")
+                            .allow({0, 1, 2}),
+                        I("Ipinch", 41, 50, "pinching degree of freedom (QBAT only)")
+                            .versions(2020)
+                            .allow({0, 1})
+                            .unused(),
+                        R("P_Thick_Fail", 61, 80,
+                          "failed fraction of thickness (>0) or of points (<0) that deletes the element")
+                            .versions(2018)
+                            .zero_is(0.999999)}),
+        card("card 2",
+             {R("Hm", 1, 20, "membrane hourglass coefficient").zero_is(0.01),
+              R("Hf", 21, 40, "out-of-plane hourglass coefficient").zero_is(0.01),
+              R("Hr", 41, 60, "rotational hourglass coefficient").zero_is(0.01),
+              R("Dm", 61, 80, "membrane damping coefficient; 0 = none"),
+              R("Dn", 81, 100, "numerical damping of QBAT and QEPH; 0 takes the formulation default")}),
+        card("card 3",
+             {I("N", 1, 10, "integration points through the thickness; 0 = global plasticity").ge(0).le(10),
+              I("Istrain", 11, 20, "strain output flag, forced on by the reference starter")
+                  .versions(kAnyVersion, 2023)
+                  .unused(),
+              R("Thick", 21, 40, "shell thickness, used where the element gives none").dims(dim::length),
+              R("Ashear", 41, 60, "transverse shear correction factor").zero_is(5.0 / 6.0),
+              I("Ithick", 71, 80, "1 = thickness follows membrane strain, 2 = constant; 0 takes /DEF_SHELL")
+                  .allow({0, 1, 2}),
+              I("Iplas", 81, 90,
+                "plane-stress plasticity: 1 iterative projection, 2 radial return; 0 takes /DEF_SHELL")
+                  .allow({0, 1, 2}),
+              I("Ipos", 91, 100, "reference plane of the shell (0 mid-surface, 3 top, 4 bottom)")
+                  .versions(2024)
+                  .unused()}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/PROP/SOLID", "solid property: formulation flags, bulk viscosity, hourglass",
+                       Header::IdUnit, true, "prop_ID");
+    k.aliases = {"/PROP/TYPE14"};
+    k.cards = {
+        card(
+            "card 1",
+            {I("Isolid", 1, 10, "8-node solid formulation; 0 takes /DEF_SOLID, then 1")
+                 .allow({0, 1, 2, 14, 15, 16, 17, 18, 24}),
+             I("Ismstr", 11, 20, "solid strain formulation; 0 takes /DEF_SOLID, then 4")
+                 .allow({0, 1, 2, 3, 4, 10, 11, 12}),
+             I("Iale", 21, 30, "0 Lagrange, 1 ALE, 2 Euler").versions(2022).allow({0, 1, 2}).unused(),
+             I("Icpre", 31, 40, "constant-pressure option (3 = off); 0 takes /DEF_SOLID").allow({0, 1, 2, 3}),
+             I("Itetra10", 41, 50, "10-node tetra formulation; 0 takes /DEF_SOLID")
+                 .versions(2019)
+                 .allow({0, 2, 1000})
+                 .unused(),
+             I("Inpts", 51, 60, "integration points coded 100r + 10s + t; 0 = formulation default"),
+             I("Itetra4", 61, 70, "4-node tetra formulation; 0 takes /DEF_SOLID")
+                 .allow({0, 1, 3, 1000})
+                 .unused(),
+             I("Iframe", 71, 80, "1 non-co-rotational, 2 co-rotational; 0 takes /DEF_SOLID").allow({0, 1, 2}),
+             R("dn", 81, 100, "numerical damping of HEPH (Isolid 24); 0 takes the formulation default")}),
+        card("card 2", {R("qa", 1, 20, "quadratic bulk viscosity coefficient").zero_is(1.1),
+                        R("qb", 21, 40, "linear bulk viscosity coefficient").zero_is(0.05),
+                        R("h", 41, 60, "hourglass coefficient of Isolid 1 and 2").zero_is(0.1),
+                        R("Lambda", 61, 80, "numerical (Navier-Stokes) viscosity lambda; 0 = off").unused(),
+                        R("Mu", 81, 100, "numerical (Navier-Stokes) viscosity mu; 0 = off").unused()}),
+        card("card 3",
+             {R("deltaT_min", 1, 20, "minimum element time step").dims(dim::time).unused(),
+              I("Istrain", 21, 30, "strain output flag").versions(kAnyVersion, 2022).unused(),
+              I("Ihkt", 31, 40, "hourglass formulation option of old layouts")
+                  .versions(kAnyVersion, 2022)
+                  .unused(),
+              R("vdef_min", 21, 40, "distortion control: lower volumetric deformation limit; 0 = off")
+                  .versions(2023)
+                  .unused(),
+              R("vdef_max", 41, 60, "distortion control: upper volumetric deformation limit; 0 = off")
+                  .versions(2023)
+                  .unused(),
+              R("ASP_max", 61, 80, "distortion control: largest aspect ratio; 0 = off")
+                  .versions(2023)
+                  .unused(),
+              R("COL_min", 81, 100, "distortion control: smallest collapse ratio; 0 = off")
+                  .versions(2023)
+                  .unused()}),
+        card("card 4", {I("Ndir", 1, 10, "solid-to-SPH conversion: particles per direction").unused(),
+                        I("sphpart_ID", 11, 20, "solid-to-SPH conversion: SPH part").unused(),
+                        I("Icontrol", 21, 30, "distortion control: 1 on, 2 or 0 off")
+                            .versions(2025)
+                            .allow({0, 1, 2})
+                            .unused()}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/MAT/LAW1", "linear elastic isotropic material", Header::IdUnit, true, "mat_ID");
+    k.aliases = {"/MAT/ELAST", "/MAT/LAW01"};
+    k.cards = {
+        card("card 1", {R("RHO_I", 1, 20, "initial density").must().gt(0.0).dims(dim::density),
+                        R("RHO_ref", 21, 40, "reference density; 0 takes RHO_I").dims(dim::density)}),
+        card("card 2", {R("E", 1, 20, "Young's modulus").must().gt(0.0).dims(dim::pressure),
+                        R("nu", 21, 40, "Poisson's ratio; exactly 0.5 is taken as 0.499")}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/MAT/LAW2", "Johnson-Cook elasto-plastic material", Header::IdUnit, true, "mat_ID");
+    k.aliases = {"/MAT/PLAS_JOHNS", "/MAT/LAW02"};
+    k.cards = {
+        card("card 1", {R("RHO_I", 1, 20, "initial density").must().gt(0.0).dims(dim::density),
+                        R("RHO_ref", 21, 40, "reference density; 0 takes RHO_I").dims(dim::density)}),
+        card("card 2",
+             {R("E", 1, 20, "Young's modulus").must().gt(0.0).dims(dim::pressure),
+              R("nu", 21, 40, "Poisson's ratio; exactly 0.5 is taken as 0.499"),
+              I("Iflag", 41, 50, "card 3 input: 0 gives a, b, n; 1 gives yield, UTS and strain at UTS")
+                  .allow({0, 1}),
+              I("flagVP", 51, 60, "strain rate used: 1 plastic, 2 total, 3 deviatoric")
+                  .versions(2023)
+                  .zero_is(2)
+                  .allow({0, 1, 2, 3}),
+              R("Pmin", 61, 80, "pressure cut-off in tension")
+                  .versions(2025)
+                  .zero_is(-1e20)
+                  .dims(dim::pressure)}),
+        card_if("card 3 (Iflag = 0)", when_eq("Iflag", 0),
+                {R("a", 1, 20, "initial yield stress").gt(0.0).dims(dim::pressure),
+                 R("b", 21, 40, "hardening modulus").dims(dim::pressure),
+                 R("n", 41, 60, "hardening exponent").zero_is(1.0).le(1.0),
+                 R("EPS_p_max", 61, 80, "plastic strain at which the element fails").zero_is(1e20),
+                 R("SIG_max0", 81, 100, "cap on the flow stress").zero_is(1e20).dims(dim::pressure)}),
+        card_if("card 3 (Iflag = 1)", when_eq("Iflag", 1),
+                {R("SIG_Y", 1, 20, "initial yield stress").dims(dim::pressure),
+                 R("UTS", 21, 40, "ultimate tensile stress").dims(dim::pressure),
+                 R("EUTS", 41, 60, "engineering strain at UTS"),
+                 R("EPS_p_max", 61, 80, "plastic strain at which the element fails").zero_is(1e20),
+                 R("SIG_max0", 81, 100, "cap on the flow stress").zero_is(1e20).dims(dim::pressure)}),
+        card(
+            "card 4",
+            {R("c", 1, 20, "strain-rate coefficient; 0 = no rate effect"),
+             R("EPS_DOT_0", 21, 40, "reference strain rate (needed when c is not 0)").dims(dim::rate),
+             I("ICC", 41, 50, "1: the rate term also scales SIG_max0; 2: it does not")
+                 .zero_is(1)
+                 .allow({0, 1, 2}),
+             I("Fsmooth", 51, 60, "strain-rate filtering flag (filtering is on whenever c is not 0)")
+                 .allow({0, 1})
+                 .unused(),
+             R("F_cut", 61, 80, "cut-off frequency of the strain-rate filter; 0 = no filter").dims(dim::rate),
+             R("Chard", 81, 100, "hardening mix: 0 isotropic to 1 kinematic").ge(0.0).le(1.0).unused()}),
+        card(
+            "card 5",
+            {R("m", 1, 20, "temperature softening exponent").zero_is(1.0),
+             R("T_melt", 21, 40, "melting temperature (kelvin)").zero_is(1e20),
+             R("rhoC_p", 41, 60, "density times specific heat; 0 = no adiabatic heating")
+                 .dims(dim::heat_capacity_per_volume),
+             R("T_r", 61, 80, "reference (initial) temperature (kelvin); 0 or less means 300").zero_is(300.0),
+             R("T_max", 81, 100, "largest temperature (kelvin)").versions(2025).zero_is(1e20)}),
+    };
+    t.push_back(std::move(k));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Groups and surfaces
+void add_groups(std::vector<KeywordDecl>& t) {
+  auto id_group = [&t](std::string_view path, std::string_view meaning, std::string_view id_name) {
+    KeywordDecl k = kw(path, meaning, Header::Id, true, id_name);
+    k.tail = Tail::IdList;
+    t.push_back(std::move(k));
+  };
+  id_group("/GRNOD/NODE", "node group: the listed node ids", "grnod_ID");
+  id_group("/GRNOD/PART", "node group: the nodes of the listed parts' elements; a negative id removes",
+           "grnod_ID");
+  id_group("/GRNOD/GRNOD", "node group: union of node groups; a negative id removes", "grnod_ID");
+  id_group("/GRNOD/BOX", "node group: the nodes inside the listed boxes", "grnod_ID");
+  id_group("/GRNOD/GENE", "node group: existing node ids in ranges given as pairs (first, last)", "grnod_ID");
+  {
+    // Declared for every version: the 2017/2018 layouts lack it, and a deck of those versions that uses it
+    // reads the same way.
+    KeywordDecl k = kw("/GRNOD/GEN_INCR", "node group: arithmetic node id ranges, one per line", Header::Id,
+                       true, "grnod_ID");
+    k.tail = Tail::Records;
+    k.record = card("range", {I("first", 1, 10, "first node id of the range"),
+                              I("last", 11, 20, "last node id of the range"),
+                              I("incr", 21, 30, "step between node ids")});
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/BOX/RECTA", "axis-aligned box given by two opposite corners", Header::IdUnit, true, "box_ID");
+    k.cards = {
+        card("card 1", {I("N1", 1, 10, "node giving the first corner (replaces Xp1 Yp1 Zp1)"),
+                        I("N2", 11, 20, "node giving the second corner (replaces Xp2 Yp2 Zp2)"),
+                        I("Iskew", 21, 30, "skew the box is aligned with; 0 = global axes")}),
+        card("card 2", {R("Xp1", 1, 20, "first corner X").dims(dim::length),
+                        R("Yp1", 21, 40, "first corner Y").dims(dim::length),
+                        R("Zp1", 41, 60, "first corner Z").dims(dim::length)}),
+        card("card 3", {R("Xp2", 1, 20, "second corner X").dims(dim::length),
+                        R("Yp2", 21, 40, "second corner Y").dims(dim::length),
+                        R("Zp2", 41, 60, "second corner Z").dims(dim::length)}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/SUBSET", "subset of parts: lists its child subsets", Header::OptionalId, true, "subset_ID");
+    k.tail = Tail::IdList;
+    t.push_back(std::move(k));
+  }
+  id_group("/SURF/PART", "surface: the shell and 3-node shell segments of the listed parts", "surf_ID");
+  id_group("/SURF/PART/EXT", "surface: shell segments and outer solid faces of the listed parts", "surf_ID");
+  {
+    KeywordDecl k = kw("/SURF/SEG", "surface: explicit segments, one per line", Header::Id, true, "surf_ID");
+    k.tail = Tail::Records;
+    k.record = card("segment", {I("seg_ID", 1, 10, "segment id"),
+                                I("n1", 11, 20, "first node; the normal follows n1, n2, n3").must(),
+                                I("n2", 21, 30, "second node").must(), I("n3", 31, 40, "third node").must(),
+                                I("n4", 41, 50, "fourth node; 0 makes a triangle")});
+    t.push_back(std::move(k));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Contact
+std::vector<FieldDecl> type7_friction_c1_c5() {
+  return {R("C1", 1, 20, "friction law coefficient 1"), R("C2", 21, 40, "friction law coefficient 2"),
+          R("C3", 41, 60, "friction law coefficient 3"), R("C4", 61, 80, "friction law coefficient 4"),
+          R("C5", 81, 100, "friction law coefficient 5")};
+}
+
+FieldDecl ibc(std::string_view name, int col, std::string_view meaning) {
+  return I(name, col, col, meaning).allow({0, 1});
+}
+
+void add_contact(std::vector<KeywordDecl>& t) {
+  {
+    KeywordDecl k =
+        kw("/INTER/TYPE7", "node-to-surface penalty contact with a gap", Header::IdUnit, true, "inter_ID");
+    k.cards = {
+        card("card 1", {I("grnd_IDs", 1, 10, "secondary node group").must(),
+                        I("surf_IDm", 11, 20, "main surface").must(),
+                        I("Istf", 21, 30, "stiffness definition").allow({0, 1, 2, 3, 4, 5}),
+                        I("Ithe", 31, 40, "heat transfer through the contact").allow({0, 1}).unused(),
+                        I("Igap", 41, 50, "gap option: 0 constant, 1 variable, 2 variable with scale and cap")
+                            .allow({0, 1, 2}),
+                        I("Ibag", 61, 70, "airbag vent-hole closure on contact").allow({0, 1}).unused(),
+                        I("Idel", 71, 80, "removal of deleted segments and free secondary nodes")
+                            .allow({-2, -1, 0, 1, 2}),
+                        I("Icurv", 81, 90, "curved gap envelope").unused(),
+                        I("Iadm", 91, 100, "local curvature for adaptive meshing").unused()}),
+        card("card 2",
+             {R("Fscalegap", 1, 20, "gap scale factor (Igap = 2)").zero_is(1.0).gt(0.0),
+              R("Gapmax", 21, 40, "largest gap (Igap = 2); 0 = no cap").ge(0.0).dims(dim::length),
+              R("Fpenmax", 41, 60, "initial penetrations above this fraction of the gap are deactivated")
+                  .ge(0.0),
+              I("Itied", 81, 90, "tie nodes once in contact").versions(2020).unused(),
+              I("Ists", 91, 100, "surface-to-surface option").versions(2026).unused()}),
+        card("card 3",
+             {R("Stmin", 1, 20, "smallest pair stiffness (Istf 2..5)").ge(0.0).dims(dim::stiffness),
+              R("Stmax", 21, 40, "largest pair stiffness (Istf 2..5)")
+                  .zero_is(1e30)
+                  .ge(0.0)
+                  .dims(dim::stiffness),
+              R("mesh_size", 41, 60, "percentage of mesh size for the self-contact gap").unused(),
+              R("dtmin", 61, 80, "interface minimum time step: a node below it is removed")
+                  .ge(0.0)
+                  .dims(dim::time),
+              I("Irem_gap", 81, 90, "deactivate secondary nodes when element size is below the gap").unused(),
+              I("Irem_i2", 91, 100, "deactivate secondary nodes also tied by a TYPE2 interface").unused()}),
+        card_if("card 4 (Icurv = 1 or 2)", when_in("Icurv", 1, 2),
+                {I("node_ID1", 1, 10, "first node defining the curvature").unused(),
+                 I("node_ID2", 11, 20, "second node defining the curvature").unused()}),
+        card("card 5",
+             {R("Stfac", 1, 20, "stiffness scale factor, or the stiffness itself when Istf = 1")
+                  .zero_is(1.0)
+                  .gt(0.0),
+              R("Fric", 21, 40, "Coulomb friction coefficient").ge(0.0),
+              R("Gapmin", 41, 60, "smallest gap; the constant gap when Igap = 0").ge(0.0).dims(dim::length),
+              R("Tstart", 61, 80, "time the interface starts acting").dims(dim::time),
+              R("Tstop", 81, 100, "time the interface stops acting; 0 = never").dims(dim::time)}),
+        card("card 6",
+             {ibc("IBCX", 8, "release the secondary node's fixed X translation at first impact"),
+              ibc("IBCY", 9, "release the secondary node's fixed Y translation at first impact"),
+              ibc("IBCZ", 10, "release the secondary node's fixed Z translation at first impact"),
+              I("Inacti", 31, 40, "treatment of initial penetrations").allow({0, 1, 2, 3, 5, 6}),
+              R("VISs", 41, 60, "critical damping ratio on the normal stiffness").zero_is(0.05).ge(0.0),
+              R("VISF", 61, 80, "critical damping ratio on friction").zero_is(1.0).ge(0.0),
+              R("Bumult", 81, 100, "sorting margin factor; 0 = default by model size").ge(0.0)}),
+        card("card 7", {I("Ifric", 1, 10, "friction law: 0 Coulomb, 1 viscous, 2 Darmstad, 3 Renard")
+                            .allow({0, 1, 2, 3}),
+                        I("Ifiltr", 11, 20, "friction force filter").allow({0, 1, 2, 3}),
+                        R("Xfreq", 21, 40, "filter coefficient (a frequency for Ifiltr = 3)").ge(0.0),
+                        I("Iform", 41, 50, "friction penalty: 1 viscous (total), 2 stiffness (incremental)")
+                            .zero_is(1)
+                            .allow({0, 1, 2}),
+                        I("sens_ID", 51, 60, "sensor that switches the interface on or off").unused(),
+                        I("fct_IDF", 61, 70, "function scaling friction with temperature").unused(),
+                        R("AscaleF", 71, 90, "abscissa scale of fct_IDF").unused(),
+                        I("fric_ID", 91, 100, "/FRICTION definition").versions(2018).unused()}),
+        card_if("friction C1..C5 (Ifric > 0)", when_gt("Ifric", 0), type7_friction_c1_c5()),
+        card_if("friction C6 (Ifric > 1)", when_gt("Ifric", 1),
+                {R("C6", 1, 20, "friction law coefficient 6")}),
+        card_if("adaptive meshing (Iadm = 2)", when_eq("Iadm", 2),
+                {I("NRadm", 1, 10, "elements through a 90 degree radius").unused(),
+                 R("Padm", 11, 30, "penetration percentage criterion").unused(),
+                 R("Angladm", 31, 50, "angle criterion (degrees)").unused()}),
+        card_if("thermal 1 (Ithe = 1)", when_eq("Ithe", 1),
+                {R("Kthe", 1, 20, "heat exchange coefficient").dims(kHeatTransfer).unused(),
+                 I("fct_IDK", 21, 30, "function of the heat exchange coefficient versus pressure").unused(),
+                 R("Tint", 41, 60, "interface temperature (kelvin)").unused(),
+                 I("Ithe_form", 61, 70, "heat contact formulation").unused(),
+                 R("AscaleK", 71, 90, "abscissa (pressure) scale of fct_IDK").dims(dim::pressure).unused()}),
+        card_if("thermal 2 (Ithe = 1)", when_eq("Ithe", 1),
+                {R("Frad", 1, 20, "radiation factor").dims(kHeatTransfer).unused(),
+                 R("Drad", 21, 40, "largest distance for radiation").dims(dim::length).unused(),
+                 R("Fheats", 41, 60, "share of frictional heat given to the secondary side").unused(),
+                 R("Fheatm", 61, 80, "share of frictional heat given to the main side").unused()}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/INTER/LAGDT/TYPE7",
+                       "TYPE7 contact whose pairs switch to Lagrange multipliers below the minimum time step",
+                       Header::IdUnit, true, "inter_ID");
+    k.cards = {
+        card("card 1", {I("grnd_IDs", 1, 10, "secondary node group").must(),
+                        I("surf_IDm", 11, 20, "main surface").must(),
+                        I("Istf", 21, 30, "stiffness definition").allow({0, 1, 2, 3, 4, 5}),
+                        I("Igap", 41, 50, "gap option: 0 constant, 1 variable, 2 variable with scale and cap")
+                            .allow({0, 1, 2}),
+                        I("Ibag", 61, 70, "airbag vent-hole closure on contact").allow({0, 1}).unused(),
+                        I("Idel", 71, 80, "removal of deleted segments and free secondary nodes")
+                            .allow({-2, -1, 0, 1, 2})}),
+        card("card 2", {R("Fscalegap", 1, 20, "gap scale factor (Igap = 2)").zero_is(1.0).gt(0.0),
+                        R("Gapmax", 21, 40, "largest gap (Igap = 2); 0 = no cap").ge(0.0).dims(dim::length)}),
+        card("card 3", {R("Stmin", 1, 20, "smallest pair stiffness (Istf 2..5)").ge(0.0).dims(dim::stiffness),
+                        R("Stmax", 21, 40, "largest pair stiffness (Istf 2..5)")
+                            .zero_is(1e30)
+                            .ge(0.0)
+                            .dims(dim::stiffness)}),
+        card("card 4",
+             {R("Stfac", 1, 20, "stiffness scale factor, or the stiffness itself when Istf = 1")
+                  .zero_is(1.0)
+                  .gt(0.0),
+              R("Fric", 21, 40, "Coulomb friction coefficient").ge(0.0),
+              R("Gapmin", 41, 60, "smallest gap; the constant gap when Igap = 0").ge(0.0).dims(dim::length),
+              R("Tstart", 61, 80, "time the interface starts acting").dims(dim::time),
+              R("Tstop", 81, 100, "time the interface stops acting; 0 = never").dims(dim::time)}),
+        card("card 5",
+             {ibc("IBCX", 8, "release the secondary node's fixed X translation at first impact"),
+              ibc("IBCY", 9, "release the secondary node's fixed Y translation at first impact"),
+              ibc("IBCZ", 10, "release the secondary node's fixed Z translation at first impact"),
+              I("Inacti", 31, 40, "treatment of initial penetrations").allow({0, 1, 2, 3, 5, 6}),
+              R("VISs", 41, 60, "critical damping ratio on the normal stiffness").zero_is(0.05).ge(0.0),
+              R("VISF", 61, 80, "critical damping ratio on friction").zero_is(1.0).ge(0.0),
+              R("Bumult", 81, 100, "sorting margin factor; 0 = default by model size").ge(0.0)}),
+        card("card 6", {I("Ifric", 1, 10, "friction law: 0 Coulomb, 1 viscous, 2 Darmstad, 3 Renard")
+                            .allow({0, 1, 2, 3}),
+                        I("Ifiltr", 11, 20, "friction force filter").allow({0, 1, 2, 3}),
+                        R("Xfreq", 21, 40, "filter coefficient (a frequency for Ifiltr = 3)").ge(0.0),
+                        I("Iform", 41, 50, "friction penalty: 1 viscous (total), 2 stiffness (incremental)")
+                            .zero_is(1)
+                            .allow({0, 1, 2})}),
+        card_if("friction C1..C5 (Ifric > 0)", when_gt("Ifric", 0), type7_friction_c1_c5()),
+        card_if("friction C6 (Ifric > 1)", when_gt("Ifric", 1),
+                {R("C6", 1, 20, "friction law coefficient 6")}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/CTCLAW", "contact and friction law (URN string) attached to one interface",
+                       Header::Id, true, "law_ID");
+    k.cards = {
+        card("card 1", {I("inter_ID", 1, 10, "interface (TYPE7 or LAGDT/TYPE7) that uses the law").must()})};
+    k.tail = Tail::Text;
+    t.push_back(std::move(k));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Boundary conditions, initial conditions, loads, functions
+void add_loads(std::vector<KeywordDecl>& t) {
+  {
+    KeywordDecl k =
+        kw("/BCS", "fixed translations and rotations of a node group", Header::Id, true, "bcs_ID");
+    k.cards = {card("card 1", {I("Tx", 4, 4, "1 = X translation fixed").allow({0, 1}),
+                               I("Ty", 5, 5, "1 = Y translation fixed").allow({0, 1}),
+                               I("Tz", 6, 6, "1 = Z translation fixed").allow({0, 1}),
+                               I("Rx", 8, 8, "1 = X rotation fixed").allow({0, 1}),
+                               I("Ry", 9, 9, "1 = Y rotation fixed").allow({0, 1}),
+                               I("Rz", 10, 10, "1 = Z rotation fixed").allow({0, 1}),
+                               I("skew_ID", 11, 20, "skew of the fixed directions; 0 = global axes"),
+                               I("grnod_ID", 21, 30, "nodes concerned")})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/IMPVEL", "imposed velocity on a node group, following a function of time",
+                       Header::IdUnit, true, "impvel_ID");
+    k.cards = {
+        card("card 1",
+             {I("funct_IDT", 1, 10, "velocity versus time function").must(),
+              S("Dir", 11, 20, "direction: X, Y, Z (translation) or XX, YY, ZZ (rotation)"),
+              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes"),
+              I("sensor_ID", 31, 40, "sensor that starts the velocity; 0 = none"),
+              I("grnod_ID", 41, 50, "nodes concerned"),
+              I("frame_ID", 51, 60, "moving frame of the direction (exclusive with skew); 0 = none"),
+              I("Icoor", 61, 70, "0 Cartesian, 1 cylindrical (with a frame)").allow({0, 1})}),
+        card("card 2",
+             {R("Ascale_x", 1, 20, "abscissa (time) scale of the function").zero_is(1.0).dims(dim::time),
+              R("Fscale_y", 21, 40, "ordinate scale of the function").zero_is(1.0).dims(dim::velocity),
+              R("Tstart", 41, 60, "time the velocity starts being imposed").dims(dim::time),
+              R("Tstop", 61, 80, "time it stops being imposed; 0 = never").dims(dim::time)}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/INIVEL/TRA", "initial translational velocity of a node group", Header::IdUnit, true,
+                       "inivel_ID");
+    k.cards = {
+        card("card 1", {R("Vx", 1, 20, "initial X velocity").dims(dim::velocity),
+                        R("Vy", 21, 40, "initial Y velocity").dims(dim::velocity),
+                        R("Vz", 41, 60, "initial Z velocity").dims(dim::velocity),
+                        I("grnod_ID", 61, 70, "nodes concerned"),
+                        I("skew_ID", 71, 80, "skew of the velocity components; 0 = global axes")}),
+        card_v("card 2", 2025, kLastVersion,
+               {R("Tstart", 1, 20, "time the velocity is imposed; 0 = at the start").dims(dim::time),
+                I("sensor_ID", 21, 30, "sensor that triggers the velocity; 0 = none")}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/CLOAD", "concentrated force or moment on a node group, following a function",
+                       Header::IdUnit, true, "cload_ID");
+    k.cards = {
+        card("card 1",
+             {I("funct_IDT", 1, 10, "force versus time function").must(),
+              S("Dir", 11, 20, "direction: X, Y, Z (force) or XX, YY, ZZ (moment)"),
+              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes"),
+              I("sensor_ID", 31, 40, "sensor that starts the load; 0 = none"),
+              I("grnod_ID", 41, 50, "loaded nodes; each receives the full value"),
+              I("Itypfun", 51, 60, "abscissa of the function: 1 time, 2 nodal displacement, 3 nodal velocity")
+                  .versions(2023)
+                  .zero_is(1)
+                  .allow({0, 1, 2, 3}),
+              R("Ascale_x", 61, 80, "abscissa (time) scale of the function").zero_is(1.0).dims(dim::time),
+              R("Fscale_y", 81, 100, "ordinate scale of the function").zero_is(1.0).dims(dim::force)})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/PLOAD", "pressure on a surface, following a function", Header::IdUnit, true, "pload_ID");
+    k.cards = {
+        card("card 1",
+             {I("surf_ID", 1, 10, "loaded surface"),
+              I("funct_IDT", 11, 20, "pressure versus time function").must(),
+              I("sensor_ID", 21, 30, "sensor that starts the load; 0 = none"),
+              I("Ipinch", 31, 40, "apply the load to pinching degrees of freedom").versions(2020).unused(),
+              I("Idel", 41, 50, "1 remove the load from deleted elements, 2 keep it")
+                  .versions(2021)
+                  .zero_is(1)
+                  .allow({0, 1, 2}),
+              I("Itypfun", 51, 60, "abscissa of the function: 1 time, 2 nodal displacement, 3 nodal velocity")
+                  .versions(2023)
+                  .zero_is(1)
+                  .allow({0, 1, 2, 3}),
+              R("Ascale_x", 61, 80, "abscissa (time) scale of the function").zero_is(1.0).dims(dim::time),
+              R("Fscale_y", 81, 100, "ordinate scale of the function").zero_is(1.0).dims(dim::pressure)})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/GRAV", "gravity acceleration on a node group", Header::IdUnit, true, "grav_ID");
+    k.cards = {
+        card("card 1",
+             {I("funct_IDT", 1, 10, "acceleration versus time function; 0 = constant"),
+              S("Dir", 11, 20, "direction: X, Y or Z (the sign comes from Fscale_y)"),
+              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes"),
+              I("sensor_ID", 31, 40, "sensor that starts the load; 0 = none"),
+              I("grnod_ID", 41, 50, "nodes concerned; 0 = all nodes"),
+              R("Ascale_x", 61, 80, "abscissa (time) scale of the function").zero_is(1.0).dims(dim::time),
+              R("Fscale_y", 81, 100, "acceleration, or ordinate scale of the function")
+                  .zero_is(1.0)
+                  .dims(dim::acceleration)})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/FUNCT", "piecewise-linear function y(x), one point per line", Header::Id, true, "funct_ID");
+    k.tail = Tail::Records;
+    k.record = card("point", {R("X", 1, 20, "abscissa; strictly increasing"), R("Y", 21, 40, "ordinate")});
+    t.push_back(std::move(k));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Rigid wall, rigid body
+void add_rigid(std::vector<KeywordDecl>& t) {
+  {
+    KeywordDecl k = kw("/RWALL/PLANE", "infinite rigid plane wall acting on secondary nodes", Header::IdUnit,
+                       true, "rwall_ID");
+    k.cards = {
+        card("card 1",
+             {I("node_ID", 1, 10, "node carrying a moving wall; 0 = fixed wall"),
+              I("Slide", 11, 20, "0 frictionless sliding, 1 tied, 2 Coulomb friction").allow({0, 1, 2}),
+              I("grnd_ID1", 21, 30, "secondary nodes"),
+              I("grnd_ID2", 31, 40, "nodes removed from the secondary set"),
+              I("Iform", 41, 50, "0 kinematic, 1 penalty").versions(2026).allow({0, 1})}),
+        card_if("card 2 (Slide = 2)", when_eq("Slide", 2),
+                {R("d", 1, 20, "search distance: nodes on the positive side within it become secondary")
+                     .dims(dim::length),
+                 R("fric", 21, 40, "Coulomb friction coefficient").ge(0.0),
+                 R("Diameter", 41, 60, "cylinder or sphere diameter, unused for a plane")
+                     .dims(dim::length)
+                     .unused(),
+                 R("ffac", 61, 80, "friction filtering factor"),
+                 I("ifq", 81, 90, "friction filtering: 0 none, 1 user factor, 2 period, 3 cut-off frequency")
+                     .allow({0, 1, 2, 3})}),
+        card_if("card 2 (Slide != 2)", when_ne("Slide", 2),
+                {R("d", 1, 20, "search distance: nodes on the positive side within it become secondary")
+                     .dims(dim::length)}),
+        card_if("card 3 (fixed wall)", when_eq("node_ID", 0),
+                {R("XM", 1, 20, "point M on the wall, X").dims(dim::length),
+                 R("YM", 21, 40, "point M on the wall, Y").dims(dim::length),
+                 R("ZM", 41, 60, "point M on the wall, Z").dims(dim::length)}),
+        card_if("card 3 (moving wall)", when_gt("node_ID", 0),
+                {R("Mass", 1, 20, "mass added to the wall node").dims(dim::mass),
+                 R("VX0", 21, 40, "initial X velocity of the wall node").dims(dim::velocity),
+                 R("VY0", 41, 60, "initial Y velocity of the wall node").dims(dim::velocity),
+                 R("VZ0", 61, 80, "initial Z velocity of the wall node").dims(dim::velocity)}),
+        card("card 4",
+             {R("XM1", 1, 20, "second point M1, X; the normal points from M to M1").dims(dim::length),
+              R("YM1", 21, 40, "second point M1, Y").dims(dim::length),
+              R("ZM1", 41, 60, "second point M1, Z").dims(dim::length)}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/RBODY", "rigid body: a main node driving a node group", Header::IdUnit, true, "rbody_ID");
+    k.cards = {
+        card("card 1",
+             {I("node_ID", 1, 10, "main node; 0 creates one"),
+              I("sens_ID", 11, 20, "sensor that activates the body; 0 = active from the start"),
+              I("skew_ID", 21, 30, "frame of the added inertia; 0 = global axes"),
+              I("Ispher", 31, 40, "1 spherical inertia, 2 full inertia tensor").zero_is(2).allow({0, 1, 2}),
+              R("Mass", 41, 60, "mass added to the main node").dims(dim::mass),
+              I("grnd_ID", 61, 70, "secondary nodes"),
+              I("Ikrem", 71, 80, "handling of secondary nodes also on a rigid wall").unused(),
+              I("ICoG", 81, 90, "centre of gravity and main node position option")
+                  .zero_is(1)
+                  .allow({0, 1, 2, 3, 4}),
+              I("surf_ID", 91, 100, "surface linked to the body").unused()}),
+        card("card 2", {R("Jxx", 1, 20, "added inertia xx").dims(dim::inertia),
+                        R("Jyy", 21, 40, "added inertia yy").dims(dim::inertia),
+                        R("Jzz", 41, 60, "added inertia zz").dims(dim::inertia)}),
+        card("card 3", {R("Jxy", 1, 20, "added inertia xy").dims(dim::inertia),
+                        R("Jyz", 21, 40, "added inertia yz").dims(dim::inertia),
+                        R("Jxz", 41, 60, "added inertia xz").dims(dim::inertia)}),
+        card("card 4",
+             {I("Ioptoff", 1, 10, "1 = elements entirely inside the body are not computed").allow({0, 1}),
+              I("Iexpams", 11, 20, "AMS expansion flag").unused(),
+              I("Ifail", 21, 30, "failure criterion; >0 reads card 5").versions(2021).unused()}),
+        card_v("card 5 (Ifail > 0)", 2021, kLastVersion,
+               {R("FN", 1, 20, "normal failure force").zero_is(1e20).dims(dim::force).unused(),
+                R("FT", 21, 40, "tangential failure force").zero_is(1e20).dims(dim::force).unused(),
+                R("expN", 41, 60, "normal failure exponent").zero_is(2.0).unused(),
+                R("expT", 61, 80, "tangential failure exponent").zero_is(2.0).unused()}),
+    };
+    k.cards.back().condition = when_gt("Ifail", 0);
+    t.push_back(std::move(k));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Time history
+void add_time_history(std::vector<KeywordDecl>& t) {
+  auto th_record = [] {
+    return card("object",
+                {I("id", 1, 10, "object id"), I("skew_ID", 11, 20, "skew of the output; 0 = global"),
+                 S("name", 21, 100, "label of the object in the output")});
+  };
+  auto th = [&t, &th_record](std::string_view path, std::vector<std::string_view> aliases,
+                             std::string_view meaning, bool records) {
+    KeywordDecl k = kw(path, meaning, Header::Id, true, "th_ID");
+    k.aliases = std::move(aliases);
+    k.tail = records ? Tail::ThVarsThenRecords : Tail::ThVarsThenIds;
+    if (records) k.record = th_record();
+    t.push_back(std::move(k));
+  };
+  th("/TH/NODE", {}, "time history of nodal variables", true);
+  th("/TH/PART", {}, "time history of part energies and momenta", false);
+  th("/TH/INTER", {}, "time history of interface forces and energies", false);
+  th("/TH/RWALL", {}, "time history of rigid wall forces", false);
+  th("/TH/SHEL", {"/TH/SHELL"}, "time history of shell element results", true);
+  th("/TH/SUBS", {}, "time history of subset energies and momenta", false);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Global defaults and control cards
+void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
+  {
+    KeywordDecl k =
+        kw("/DEF_SHELL", "global defaults for shell property flags left at 0", Header::None, false);
+    k.singleton = true;
+    k.cards = {card("card 1",
+                    {I("Ishell", 1, 10, "default 4-node shell formulation"),
+                     I("Ismstr", 11, 20, "default shell strain formulation"),
+                     I("Ithick", 21, 30, "default thickness update flag"),
+                     I("Iplas", 31, 40, "default plane-stress plasticity"),
+                     I("Istrain", 41, 50, "strain output flag, ignored by the reference starter").unused(),
+                     I("Ioffset", 51, 60, "1 = shell offset used in contact").versions(2024).unused(),
+                     I("Ish3n", 71, 80, "default 3-node shell formulation"),
+                     I("Idrill", 81, 90, "default drilling stiffness flag"),
+                     I("Ithin_drape", 91, 100, "drape thinning option").versions(2026).zero_is(1).unused()})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/DEF_SOLID", "global defaults for solid property flags left at 0", Header::None, false);
+    k.singleton = true;
+    k.cards = {card("card 1",
+                    {I("Isolid", 1, 10, "default 8-node solid formulation"),
+                     I("Ismstr", 11, 20, "default solid strain formulation"),
+                     I("Icpre", 21, 30, "default constant-pressure option").versions(2021),
+                     I("Istrain", 31, 40, "strain output flag, ignored").versions(kAnyVersion, 2020).unused(),
+                     I("Itetra4", 41, 50, "default 4-node tetra formulation").versions(2019).unused(),
+                     I("Itetra10", 51, 60, "default 10-node tetra formulation").versions(2019).unused(),
+                     I("Imas", 61, 70, "nodal mass distribution: 1 by angle, 2 uniform").unused(),
+                     I("Iframe", 71, 80, "default element frame"),
+                     I("Icontrol", 81, 90, "default distortion control").versions(2025).unused()})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/ANALY", "analysis type and parallel arithmetic switch", Header::None, false);
+    k.support = Support::Ignored;
+    k.singleton = true;
+    k.cards = {
+        card("card 1", {I("N2D3D", 1, 10, "0 3-D, 1 axisymmetric, 2 plane strain").allow({0, 1, 2}),
+                        I("ITEMP", 11, 20, "temperature also evolves in expansion").versions(2026),
+                        I("IPARITH", 21, 30, "parallel arithmetic: 1 on, 2 off").zero_is(1).allow({0, 1, 2}),
+                        I("ISUBCYC", 31, 40, "subcycling flag, ignored").versions(kAnyVersion, 2022)})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/IOFLAG", "listing and output format options", Header::None, false);
+    k.support = Support::Ignored;
+    k.singleton = true;
+    k.cards = {card("card 1", {I("IPRI", 1, 10, "listing detail level"),
+                               I("IOUTP", 31, 40, "starter geometry output in animation format"),
+                               I("IOUTYY", 41, 50, "output format option"),
+                               I("IROOTYY", 51, 60, "root-name format option"),
+                               I("Irot", 61, 70, "1 = always compute rotational degrees of freedom")})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/RANDOM", "random perturbation of all node coordinates", Header::None, false);
+    k.support = Support::Ignored;
+    k.cards = {card("card 1", {R("XALEA", 1, 20, "largest random perturbation; 0 = none").dims(dim::length),
+                               R("SEED", 21, 40, "random seed")})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/RANDOM/GRNOD", "random perturbation of a node group's coordinates", Header::Id,
+                       false, "grnod_ID");
+    k.support = Support::Ignored;
+    k.cards = {card("card 1", {R("XALEA", 1, 20, "largest random perturbation; 0 = none").dims(dim::length),
+                               R("SEED", 21, 40, "random seed")})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/SPMD", "domain decomposition and thread settings", Header::None, false);
+    k.support = Support::Ignored;
+    k.singleton = true;
+    k.cards = {card(
+        "card 1", {I("Domdec", 1, 10, "decomposition method"), I("Nspmd", 11, 20, "number of domains"),
+                   I("Dkword", 31, 40, "decomposition option"), I("Nthread", 51, 60, "threads per domain")})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/SHFRA/V4", "selects the old shell local frame definition", Header::None, false);
+    k.aliases = {"/SHFRA"};
+    k.support = Support::Ignored;
+    k.singleton = true;
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/END", "end of the starter deck", Header::None, false);
+    k.singleton = true;
+    t.push_back(std::move(k));
+  }
+}
+
+}  // namespace
+
+const std::vector<KeywordDecl>& starter_keywords() {
+  static const std::vector<KeywordDecl> table = [] {
+    std::vector<KeywordDecl> t;
+    add_control_and_mesh(t);
+    add_properties_and_materials(t);
+    add_groups(t);
+    add_contact(t);
+    add_loads(t);
+    add_rigid(t);
+    add_time_history(t);
+    add_defaults_and_controls(t);
+    return t;
+  }();
+  return table;
+}
+
+const std::vector<std::string_view>& known_unsupported_roots() {
+  static const std::vector<std::string_view> roots = [] {
+    return std::vector<std::string_view>{
+        // materials
+        "/MAT/LAW0", "/MAT/VOID", "/MAT/LAW3", "/MAT/HYDPLA", "/MAT/LAW4", "/MAT/HYD_JCOOK", "/MAT/LAW6",
+        "/MAT/HYDRO", "/MAT/LAW10", "/MAT/LAW19", "/MAT/FABRI", "/MAT/LAW25", "/MAT/COMPSH", "/MAT/LAW27",
+        "/MAT/PLAS_BRIT", "/MAT/LAW32", "/MAT/HILL", "/MAT/LAW34", "/MAT/BOLTZMAN", "/MAT/LAW36",
+        "/MAT/PLAS_TAB", "/MAT/LAW42", "/MAT/OGDEN", "/MAT/LAW44", "/MAT/COWPER", "/MAT/LAW57",
+        "/MAT/BARLAT3", "/MAT/LAW58", "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW70",
+        "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90", "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO", "/MAT/USER",
+        // properties
+        "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE2", "/PROP/TRUSS", "/PROP/TYPE3", "/PROP/BEAM", "/PROP/TYPE4",
+        "/PROP/SPRING", "/PROP/TYPE8", "/PROP/TYPE9", "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP",
+        "/PROP/TYPE11", "/PROP/SH_SANDW", "/PROP/TYPE13", "/PROP/TYPE16", "/PROP/SH_FABR", "/PROP/TYPE17",
+        "/PROP/TYPE18", "/PROP/INT_BEAM", "/PROP/TYPE20", "/PROP/TSHELL", "/PROP/TYPE22", "/PROP/TYPE23",
+        "/PROP/TYPE51", "/PROP/TYPE52", "/PROP/USER",
+        // elements
+        "/SPRING", "/BEAM", "/TRUSS", "/TETRA4", "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD",
+        "/TRIA", "/SPHCEL",
+        // groups, surfaces, boxes
+        "/GRNOD/SUBSET", "/GRNOD/MAT", "/GRNOD/PROP", "/GRNOD/SURF", "/GRNOD/LINE", "/GRNOD/GRSHEL",
+        "/GRNOD/GRSH3N", "/GRNOD/GRBRIC", "/GRSHEL", "/GRSH3N", "/GRBRIC", "/GRBEAM", "/GRTRUS", "/GRSPRI",
+        "/GRPART", "/GRQUAD", "/SURF/PART/ALL", "/SURF/SURF", "/SURF/GRSHEL", "/SURF/GRSH3N", "/SURF/GRBRIC",
+        "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE", "/SURF/ELLIPS", "/LINE",
+        "/SET", "/BOX/CYLIN", "/BOX/SPHER",
+        // interfaces
+        "/INTER/TYPE1", "/INTER/TYPE2", "/INTER/TYPE3", "/INTER/TYPE5", "/INTER/TYPE8", "/INTER/TYPE10",
+        "/INTER/TYPE11", "/INTER/TYPE14", "/INTER/TYPE15", "/INTER/TYPE17", "/INTER/TYPE18", "/INTER/TYPE19",
+        "/INTER/TYPE20", "/INTER/TYPE21", "/INTER/TYPE23", "/INTER/TYPE24", "/INTER/TYPE25", "/INTER/SUB",
+        "/FRICTION", "/DEFAULT", "/INTTHICK",
+        // constraints, kinematics, loads, initial state
+        "/SKEW", "/FRAME", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT", "/MPC", "/GJOINT",
+        "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPDISP", "/IMPACC", "/IMPTEMP", "/INIVEL/ROT", "/INIVEL/T+G",
+        "/INIVEL/GRID", "/INIVEL/AXIS", "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD",
+        "/RWALL/CYL", "/RWALL/SPHER", "/RWALL/PARAL", "/RWALL/LAGMUL", "/RWALL/THERM", "/INISHE", "/INIBRI",
+        "/INISH3", "/INITEMP", "/INISTA",
+        // physics and model structure
+        "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
+        "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS", "/DAMP", "/IMPLICIT", "/TABLE", "/MOVE_FUNCT",
+        "/SECT", "/ACCEL", "/GAUGE", "/PRELOAD",
+        // time history that radx does not write
+        "/TH/BRIC", "/TH/SH3N", "/TH/SPRING", "/TH/BEAM", "/TH/TRUSS", "/TH/RBODY", "/TH/SECTIO", "/TH/ACCEL",
+        "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME", "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH",
+        "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
+        // engine keywords
+        "/DT/BRICK/DEL", "/DT/BRICK/STOP", "/DT/SHELL/DEL", "/DT/SHELL/STOP", "/DT/SH_3N/DEL", "/DT/SH3N/DEL",
+        "/DT/NODA/STOP", "/DT/NODA/KILL", "/DT/NODA/SET", "/DT/INTER/STOP", "/DT/AMS", "/ATFILE", "/H3D",
+        "/OUTP", "/DEL", "/KILL", "/CHKPT", "/ANIM/SHELL", "/ANIM/BRICK", "/ANIM/MASS", "/DYREL", "/ADYREL",
+        "/IMPL", "/MON/FULL"};
+  }();
+  return roots;
+}
+
+}  // namespace radx::schema

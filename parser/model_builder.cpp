@@ -1,0 +1,590 @@
+// Deck -> Model, core steps: nodes, materials, properties (with /DEF_SHELL and /DEF_SOLID two-stage
+// defaults, deck-format.md section 5.1), subsets, parts, elements and their geometry checks, lumped
+// masses (elements.md section 5: shells m = rho t0 A0 split equally over the 4 slots, bricks
+// m = rho V0 split 1/8 per node, 3-node shells split by interior angle alpha_k / pi).
+#include "parser/model_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "solver/model/geometry.hpp"
+#include "solver/model/masses.hpp"
+
+namespace radx {
+namespace detail {
+
+using model::kNone;
+
+namespace {
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+}  // namespace
+
+Where ModelBuilder::at_field(const KeywordRecord& r, std::string_view field) const {
+  const FieldValue* f = r.find(field);
+  if (f && f->column > 0) return at(f->pos, f->column);
+  if (f) return at(f->pos, 1);
+  return at(r.pos, 1);
+}
+
+void ModelBuilder::error_at(const KeywordRecord& r, std::string_view field, Diag code, std::string msg) {
+  diags_.error(code, at_field(r, field), about(r), std::move(msg));
+}
+void ModelBuilder::warning_at(const KeywordRecord& r, std::string_view field, Diag code, std::string msg) {
+  diags_.warning(code, at_field(r, field), about(r), std::move(msg));
+}
+
+bool ModelBuilder::register_id(IdIndex& index, std::int64_t id, std::int32_t dense, const KeywordRecord& r,
+                               std::string_view what,
+                               std::unordered_map<std::int64_t, SourcePos>& first_pos) {
+  const auto [it, inserted] = index.emplace(id, dense);
+  if (!inserted) {
+    const SourcePos p = first_pos[id];
+    diags_.error(Diag::DuplicateId, at(r.pos, 1), about(r),
+                 std::string(what) + " id " + std::to_string(id) + " is already used at " +
+                     deck_.files[p.file] + ":" + std::to_string(p.line) + "; ids must be unique among " +
+                     std::string(what) + "s");
+    return false;
+  }
+  first_pos[id] = r.pos;
+  return true;
+}
+
+std::int32_t ModelBuilder::ref(const IdIndex& index, const KeywordRecord& r, std::string_view field,
+                               std::string_view what, std::string_view target_keyword, bool optional) {
+  const std::int64_t id = r.get_int(field);
+  if (id == 0) {
+    if (!optional)
+      error_at(r, field, Diag::RequiredIdMissing,
+               std::string(field) + " is blank or 0: a " + std::string(what) + " id (" +
+                   std::string(target_keyword) + ") is required");
+    return kNone;
+  }
+  const auto it = index.find(id);
+  if (it == index.end()) {
+    error_at(r, field, Diag::MissingReference,
+             std::string(field) + " = " + std::to_string(id) + ": there is no " +
+                 std::string(target_keyword) + "/" + std::to_string(id) + " in the deck");
+    return kNone;
+  }
+  return it->second;
+}
+
+std::int32_t ModelBuilder::node_ref(std::int64_t user_id, const KeywordRecord& r, SourcePos pos,
+                                    std::string_view what) {
+  const auto k = m_.nodes.index.find(user_id);
+  if (k < 0) {
+    diags_.error(Diag::MissingReference, at(pos, 1), about(r),
+                 std::string(what) + ": node " + std::to_string(user_id) +
+                     " does not exist (no /NODE line defines it)");
+  }
+  return k;
+}
+
+// ---------------------------------------------------------------------------------------------------
+
+void ModelBuilder::build_nodes() {
+  auto& n = m_.nodes;
+  for (const auto* r : deck_.of("/NODE")) {
+    const auto& t = r->records;
+    const int cid = t.column("node_ID"), cx = t.column("X"), cy = t.column("Y"), cz = t.column("Z");
+    if (cid < 0 || cx < 0 || cy < 0 || cz < 0) continue;
+    n.id.insert(n.id.end(), t.ints[cid].begin(), t.ints[cid].end());
+    n.x.insert(n.x.end(), t.reals[cx].begin(), t.reals[cx].end());
+    n.y.insert(n.y.end(), t.reals[cy].begin(), t.reals[cy].end());
+    n.z.insert(n.z.end(), t.reals[cz].begin(), t.reals[cz].end());
+    node_pos_.insert(node_pos_.end(), t.pos.begin(), t.pos.end());
+  }
+  std::int64_t dup = 0;
+  if (!n.index.build(n.id, dup)) {
+    // Report every duplicate with both lines.
+    std::unordered_map<std::int64_t, std::size_t> first;
+    first.reserve(n.id.size());
+    for (std::size_t i = 0; i < n.id.size(); ++i) {
+      const auto [it, ok] = first.emplace(n.id[i], i);
+      if (!ok) {
+        const SourcePos p = node_pos_[it->second];
+        diags_.error(Diag::DuplicateId, at(node_pos_[i], 1), About{"/NODE", n.id[i]},
+                     "node id " + std::to_string(n.id[i]) + " is already defined at " + deck_.files[p.file] +
+                         ":" + std::to_string(p.line) + "; node ids must be unique");
+      }
+    }
+    // Keep going with the first definition of each id so references can still be checked.
+    std::vector<std::int64_t> ids = n.id;
+    std::unordered_map<std::int64_t, int> seen;
+    for (auto& id : ids)
+      if (seen[id]++ > 0) id = -id - 1;  // an id no reference can name
+    n.index.build(ids, dup);
+  }
+  for (std::size_t i = 0; i < n.id.size(); ++i) {
+    if (n.id[i] <= 0)
+      diags_.error(Diag::ValueOutOfRange, at(node_pos_[i], 1), About{"/NODE", n.id[i]},
+                   "node id " + std::to_string(n.id[i]) + " is not a positive integer");
+  }
+  node_used_.assign(n.size(), 0);
+}
+
+void ModelBuilder::build_materials() {
+  std::unordered_map<std::int64_t, SourcePos> first;
+  for (const auto& r : deck_.records) {
+    const auto path = r.decl->path;
+    const bool law1 = path == "/MAT/LAW1";
+    const bool law2 = path == "/MAT/LAW2";
+    if (!law1 && !law2) continue;
+    model::Material mat;
+    mat.id = r.id;
+    mat.title = r.title;
+    mat.keyword = r.written.substr(0, r.written.find_last_of('/'));
+    mat.law = law1 ? model::MaterialLaw::Elastic : model::MaterialLaw::JohnsonCook;
+    mat.rho = r.get_real("RHO_I");
+    mat.rho_ref = r.get_real("RHO_ref");
+    if (mat.rho_ref == 0) mat.rho_ref = mat.rho;
+    mat.young = r.get_real("E");
+    mat.poisson = r.get_real("nu");
+    if (mat.rho <= 0 && r.given("RHO_I"))
+      error_at(r, "RHO_I", Diag::ValueOutOfRange, "density RHO_I = " + num(mat.rho) + " must be > 0");
+    if (mat.young < 0)
+      error_at(r, "E", Diag::ValueOutOfRange, "Young's modulus E = " + num(mat.young) + " must be > 0");
+    if (mat.poisson < 0 || mat.poisson >= 0.5) {
+      error_at(r, "nu", Diag::BadPoisson,
+               "Poisson's ratio nu = " + num(mat.poisson) +
+                   " is outside [0, 0.5): the bulk modulus E/3(1-2nu) would be infinite or negative (Radioss "
+                   "turns "
+                   "exactly 0.5 into 0.499 silently; radx asks for the value you mean, e.g. 0.499)");
+    }
+    mat.shear = mat.young / (2.0 * (1.0 + mat.poisson));
+    mat.bulk = mat.poisson < 0.5 ? mat.young / (3.0 * (1.0 - 2.0 * mat.poisson)) : 0.0;
+    if (law2) {
+      mat.iflag = static_cast<int>(r.get_int("Iflag"));
+      mat.flag_vp = static_cast<int>(r.get_int("flagVP"));
+      if (mat.flag_vp == 0) mat.flag_vp = 2;
+      mat.p_min = r.given("Pmin") && r.get_real("Pmin") != 0 ? r.get_real("Pmin") : -1e20;
+      mat.eps_p_max = r.get_real("EPS_p_max");
+      mat.sig_max0 = r.get_real("SIG_max0");
+      if (mat.eps_p_max == 0) mat.eps_p_max = 1e20;
+      if (mat.sig_max0 == 0) mat.sig_max0 = 1e20;
+      if (mat.iflag == 1) {
+        mat.sig_y_input = r.get_real("SIG_Y");
+        mat.uts = r.get_real("UTS");
+        mat.e_uts = r.get_real("EUTS");
+        // Iflag = 1: rm = UTS (1 + e_uts), ag = ln(1 + e_uts), n = rm ag / (rm - sy), b = rm / (n ag^(n-1)).
+        const double sy = mat.sig_y_input;
+        const double rm = mat.uts * (1.0 + mat.e_uts);
+        const double ag = std::log1p(mat.e_uts);
+        if (sy <= 0 || mat.uts <= 0 || mat.e_uts <= 0 || rm <= sy) {
+          error_at(r, "SIG_Y", Diag::InconsistentValues,
+                   "Iflag = 1 needs SIG_Y > 0, UTS > 0, EUTS > 0 and UTS(1+EUTS) > SIG_Y; got SIG_Y = " +
+                       num(sy) + ", UTS = " + num(mat.uts) + ", EUTS = " + num(mat.e_uts));
+        } else {
+          mat.a = sy;
+          mat.n = rm * ag / (rm - sy);
+          mat.b = rm / (mat.n * std::pow(ag, mat.n - 1.0));
+          if (mat.n > 1.0) {
+            mat.n = 1.0;
+            mat.b = (rm - sy) / (ag - rm / mat.young - sy / mat.young);
+            warning_at(r, "SIG_Y", Diag::DefaultApplied,
+                       "Iflag = 1 gives a hardening exponent above 1; n = 1 is used with b = " + num(mat.b));
+          }
+        }
+      } else {
+        mat.a = r.get_real("a");
+        mat.b = r.get_real("b");
+        mat.n = r.get_real("n");
+        if (mat.n == 0) mat.n = 1.0;
+        if (mat.a <= 0)
+          error_at(r, "a", Diag::ValueOutOfRange, "yield stress a = " + num(mat.a) + " must be > 0");
+        if (mat.n > 1.0)
+          error_at(r, "n", Diag::ValueOutOfRange, "hardening exponent n = " + num(mat.n) + " must be <= 1");
+      }
+      mat.c = r.get_real("c");
+      mat.eps_dot_0 = r.get_real("EPS_DOT_0");
+      if (mat.c != 0 && mat.eps_dot_0 <= 0) {
+        error_at(r, "EPS_DOT_0", Diag::RequiredValueMissing,
+                 "strain-rate coefficient c = " + num(mat.c) +
+                     " needs a reference strain rate EPS_DOT_0 > 0 (it is blank or 0)");
+      }
+      if (mat.c == 0) mat.eps_dot_0 = 1.0;
+      mat.icc = static_cast<int>(r.get_int("ICC"));
+      if (mat.icc == 0) mat.icc = 1;
+      mat.fsmooth = static_cast<int>(r.get_int("Fsmooth"));
+      mat.f_cut = r.get_real("F_cut");
+      mat.chard = r.get_real("Chard");
+      mat.m_temp = r.get_real("m");
+      if (mat.m_temp == 0) mat.m_temp = 1.0;
+      mat.t_melt = r.get_real("T_melt");
+      if (mat.t_melt == 0) mat.t_melt = 1e20;
+      mat.rho_cp = r.get_real("rhoC_p");
+      mat.t_ref = r.get_real("T_r");
+      if (mat.t_ref <= 0) mat.t_ref = 300.0;
+      mat.t_max = r.get_real("T_max");
+      if (mat.t_max == 0) mat.t_max = 1e20;
+    }
+    if (register_id(mat_ids_, mat.id, static_cast<std::int32_t>(m_.materials.size()), r, "material", first))
+      m_.materials.push_back(std::move(mat));
+  }
+}
+
+void ModelBuilder::build_properties() {
+  // Two-stage defaults: the /PROP value if non-zero, else the first /DEF_SHELL or /DEF_SOLID value if
+  // non-zero, else the hard default (explicit analysis).
+  const auto def_shell = deck_.of("/DEF_SHELL");
+  const auto def_solid = deck_.of("/DEF_SOLID");
+  auto dshell = [&](std::string_view name) -> std::int64_t {
+    return def_shell.empty() ? 0 : def_shell.front()->get_int(name);
+  };
+  auto dsolid = [&](std::string_view name) -> std::int64_t {
+    return def_solid.empty() ? 0 : def_solid.front()->get_int(name);
+  };
+  auto pick = [](std::int64_t prop, std::int64_t def, int hard) {
+    if (def == -2) return -1;  // /DEF_* -2: "automatic" forced on every property
+    if (prop != 0) return static_cast<int>(prop);
+    if (def != 0) return static_cast<int>(def);
+    return hard;
+  };
+  std::unordered_map<std::int64_t, SourcePos> first;
+  for (const auto& r : deck_.records) {
+    const auto path = r.decl->path;
+    if (path != "/PROP/SHELL" && path != "/PROP/SOLID") continue;
+    model::Property p;
+    p.id = r.id;
+    p.title = r.title;
+    if (path == "/PROP/SHELL") {
+      p.kind = model::PropertyKind::Shell;
+      auto& s = p.shell;
+      s.ishell = pick(r.get_int("Ishell"), dshell("Ishell"), 1);
+      if (s.ishell == 22 || s.ishell == 23) s.ishell = 24;
+      s.ismstr = pick(r.get_int("Ismstr"), dshell("Ismstr"), 2);
+      s.ish3n = pick(r.get_int("Ish3n"), dshell("Ish3n"), 2);
+      s.idrill = pick(r.get_int("Idrill"), dshell("Idrill"), 0);
+      if (s.idrill == 2) s.idrill = 0;
+      s.ithick = pick(r.get_int("Ithick"), dshell("Ithick"), 2);
+      s.iplas = pick(r.get_int("Iplas"), dshell("Iplas"), 2);
+      s.ipinch = static_cast<int>(r.get_int("Ipinch"));
+      s.ipos = static_cast<int>(r.get_int("Ipos"));
+      s.p_thick_fail = r.get_real("P_Thick_Fail");
+      if (s.p_thick_fail == 0) s.p_thick_fail = 0.999999;
+      const bool h3 = s.ishell == 3;
+      s.hm = r.find("Hm") && !r.find("Hm")->defaulted ? r.get_real("Hm") : (h3 ? 0.1 : 0.01);
+      s.hf = r.find("Hf") && !r.find("Hf")->defaulted ? r.get_real("Hf") : (h3 ? 0.1 : 0.01);
+      s.hr = r.find("Hr") && !r.find("Hr")->defaulted ? r.get_real("Hr") : 0.01;
+      s.dm = r.get_real("Dm");
+      s.dn = r.get_real("Dn");
+      if (s.dn == 0 && s.ishell == 24) s.dn = 0.015;
+      s.n_ip = static_cast<int>(r.get_int("N"));
+      if (s.n_ip < 0 || s.n_ip > 10)
+        error_at(
+            r, "N", Diag::ValueOutOfRange,
+            "N = " + std::to_string(s.n_ip) + " integration points through the thickness; accepted: 0 to 10");
+      s.thickness = r.get_real("Thick");
+      if (s.thickness < 0)
+        error_at(r, "Thick", Diag::NonPositiveThickness,
+                 "shell thickness Thick = " + num(s.thickness) + " is negative; it must be > 0");
+      s.ashear = r.get_real("Ashear");
+      if (s.ashear == 0) s.ashear = 5.0 / 6.0;
+    } else {
+      p.kind = model::PropertyKind::Solid;
+      auto& s = p.solid;
+      s.isolid = pick(r.get_int("Isolid"), dsolid("Isolid"), 1);
+      s.ismstr = pick(r.get_int("Ismstr"), dsolid("Ismstr"), 4);
+      s.icpre = pick(r.get_int("Icpre"), dsolid("Icpre"), 0);
+      s.iframe = pick(r.get_int("Iframe"), dsolid("Iframe"), 1);
+      if (s.isolid == 14 || s.isolid == 15 || s.isolid == 18 || s.isolid == 24) s.iframe = 2;
+      s.itetra4 = pick(r.get_int("Itetra4"), dsolid("Itetra4"), 1000);
+      s.itetra10 = pick(r.get_int("Itetra10"), dsolid("Itetra10"), 1000);
+      s.iale = static_cast<int>(r.get_int("Iale"));
+      s.inpts = static_cast<int>(r.get_int("Inpts"));
+      s.qa = r.get_real("qa");
+      if (s.qa == 0) s.qa = 1.1;
+      s.qb = r.get_real("qb");
+      if (s.qb == 0) s.qb = 0.05;
+      s.h = r.get_real("h");
+      if (s.h == 0) s.h = 0.1;
+      s.lambda_v = r.get_real("Lambda");
+      s.mu_v = r.get_real("Mu");
+      s.dn = r.get_real("dn");
+      s.dt_min = r.get_real("deltaT_min");
+    }
+    if (register_id(prop_ids_, p.id, static_cast<std::int32_t>(m_.properties.size()), r, "property", first))
+      m_.properties.push_back(std::move(p));
+  }
+}
+
+void ModelBuilder::build_subsets_and_parts() {
+  std::unordered_map<std::int64_t, SourcePos> first_subset;
+  const auto subsets = deck_.of("/SUBSET");
+  for (const auto* r : subsets) {
+    model::Subset s;
+    s.id = r->id;
+    s.title = r->title;
+    if (register_id(subset_ids_, s.id, static_cast<std::int32_t>(m_.subsets.size()), *r, "subset",
+                    first_subset))
+      m_.subsets.push_back(std::move(s));
+  }
+  for (const auto* r : subsets) {
+    const auto it = subset_ids_.find(r->id);
+    if (it == subset_ids_.end()) continue;
+    for (std::size_t k = 0; k < r->ids.size(); ++k) {
+      const auto c = subset_ids_.find(r->ids[k]);
+      if (c == subset_ids_.end()) {
+        diags_.error(Diag::MissingReference, at(r->id_pos[k], 1), about(*r),
+                     "child subset " + std::to_string(r->ids[k]) + " does not exist (no /SUBSET/" +
+                         std::to_string(r->ids[k]) + ")");
+      } else {
+        m_.subsets[it->second].children.push_back(c->second);
+      }
+    }
+  }
+  std::unordered_map<std::int64_t, SourcePos> first;
+  for (const auto* r : deck_.of("/PART")) {
+    model::Part p;
+    p.id = r->id;
+    p.title = r->title;
+    p.property = ref(prop_ids_, *r, "prop_ID", "property", "/PROP", false);
+    p.material = ref(mat_ids_, *r, "mat_ID", "material", "/MAT", false);
+    p.subset = ref(subset_ids_, *r, "subset_ID", "subset", "/SUBSET", true);
+    p.contact_thickness = r->get_real("Thick");
+    if (p.contact_thickness < 0)
+      error_at(
+          *r, "Thick", Diag::NonPositiveThickness,
+          "/PART contact thickness " + num(p.contact_thickness) + " is negative; it must be >= 0 (0 = none)");
+    const auto dense = static_cast<std::int32_t>(m_.parts.size());
+    if (register_id(part_ids_, p.id, dense, *r, "part", first)) {
+      if (p.subset != kNone) m_.subsets[p.subset].parts.push_back(dense);
+      m_.parts.push_back(std::move(p));
+    }
+  }
+}
+
+void ModelBuilder::build_elements() {
+  using model::ElementType;
+  struct Kind {
+    std::string_view keyword;
+    std::string_view id_field;
+    model::ElementBlock* block;
+    model::PropertyKind prop_kind;
+  };
+  const Kind kinds[] = {{"/SHELL", "shell_ID", &m_.shells, model::PropertyKind::Shell},
+                        {"/SH3N", "tria_ID", &m_.shells3, model::PropertyKind::Shell},
+                        {"/BRICK", "brick_ID", &m_.bricks, model::PropertyKind::Solid}};
+  const char* node_names[8] = {"n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"};
+  for (const auto& kind : kinds) {
+    auto& b = *kind.block;
+    const int npe = b.npe();
+    std::vector<SourcePos> pos;
+    for (const auto* r : deck_.of(kind.keyword)) {
+      const auto& t = r->records;
+      const auto pit = part_ids_.find(r->id);
+      std::int32_t part = kNone;
+      if (pit == part_ids_.end()) {
+        diags_.error(Diag::MissingReference, at(r->pos, 1), about(*r),
+                     std::string(kind.keyword) + "/" + std::to_string(r->id) + ": part " +
+                         std::to_string(r->id) + " does not exist (no /PART/" + std::to_string(r->id) +
+                         "); the keyword line names the part");
+      } else {
+        part = pit->second;
+        const auto& p = m_.parts[part];
+        if (p.property != kNone && m_.properties[p.property].kind != kind.prop_kind) {
+          diags_.error(Diag::PartWrongKind, at(r->pos, 1), about(*r),
+                       "part " + std::to_string(r->id) + " has a " +
+                           (kind.prop_kind == model::PropertyKind::Shell ? "solid" : "shell") +
+                           " property (/PROP/" + std::to_string(m_.properties[p.property].id) + "); " +
+                           std::string(kind.keyword) + " elements need a " +
+                           (kind.prop_kind == model::PropertyKind::Shell ? "/PROP/SHELL" : "/PROP/SOLID"));
+        }
+      }
+      const int cid = t.column(kind.id_field);
+      int cn[8];
+      for (int k = 0; k < npe; ++k) cn[k] = t.column(node_names[k]);
+      const int cthick = t.column("Thick");
+      const int cphi = t.column("PHI");
+      if (cid < 0) continue;
+      for (std::size_t e = 0; e < t.size(); ++e) {
+        const std::int64_t eid = t.ints[cid][e];
+        b.id.push_back(eid);
+        b.part.push_back(part);
+        b.thickness.push_back(cthick >= 0 ? t.reals[cthick][e] : 0.0);
+        b.phi.push_back(cphi >= 0 ? t.reals[cphi][e] : 0.0);
+        pos.push_back(t.pos[e]);
+        std::int64_t user[8] = {};
+        for (int k = 0; k < npe; ++k) user[k] = cn[k] >= 0 ? t.ints[cn[k]][e] : 0;
+        // A quad with n4 = 0 is a triangle written as a quad: n4 := n3.
+        if (kind.block->type == ElementType::Shell4 && user[3] == 0) user[3] = user[2];
+        bool missing = false;
+        for (int k = 0; k < npe; ++k) {
+          std::int32_t n = kNone;
+          if (user[k] == 0) {
+            diags_.error(Diag::ElementNodeMissing, at(t.pos[e], 11 + 10 * k), About{kind.keyword, eid},
+                         std::string(node_names[k]) + " is blank or 0: element " + std::to_string(eid) +
+                             " needs " + std::to_string(npe) + " nodes");
+            missing = true;
+          } else {
+            n = m_.nodes.index.find(user[k]);
+            if (n < 0) {
+              diags_.error(Diag::ElementNodeMissing, at(t.pos[e], 11 + 10 * k), About{kind.keyword, eid},
+                           "element " + std::to_string(eid) + " uses node " + std::to_string(user[k]) + " (" +
+                               node_names[k] + "), which does not exist");
+              missing = true;
+            } else {
+              node_used_[n] = 1;
+            }
+          }
+          b.conn.push_back(n);
+        }
+        if (part != kNone) ++m_.parts[part].element_count;
+        if (missing) continue;
+        // Geometry.
+        const std::size_t base = b.conn.size() - static_cast<std::size_t>(npe);
+        auto X = [&](int k) {
+          const auto n = b.conn[base + static_cast<std::size_t>(k)];
+          return model::Vec3{m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n]};
+        };
+        const About ab{kind.keyword, eid};
+        if (b.type == ElementType::Brick8) {
+          std::array<model::Vec3, 8> x{};
+          for (int k = 0; k < 8; ++k) x[k] = X(k);
+          const double v = model::brick_volume(x);
+          if (!(v > 0)) {
+            diags_.error(
+                Diag::NonPositiveVolume, at(t.pos[e], 1), ab,
+                "brick " + std::to_string(eid) + " has " + (v == 0 ? "zero" : "negative") + " volume (" +
+                    num(v) + "): " +
+                    (v < 0 ? "its nodes n1-n4 and n5-n8 are numbered so that the element is inverted; "
+                             "n1-n4 must turn counter-clockwise seen from the n5-n8 face"
+                           : "its nodes are flat or collapsed"));
+          }
+        } else {
+          double area = 0;
+          if (b.type == ElementType::Shell3) {
+            area = model::triangle_area(X(0), X(1), X(2));
+          } else {
+            area = model::quad_area(X(0), X(1), X(2), X(3));
+            if (b.conn[base + 2] == b.conn[base + 3]) {
+              // n4 = n3: a degenerate triangle, accepted as Radioss does.
+            }
+          }
+          int distinct = 0;
+          for (int k = 0; k < npe; ++k) {
+            bool seen = false;
+            for (int l = 0; l < k; ++l) seen = seen || b.conn[base + k] == b.conn[base + l];
+            distinct += seen ? 0 : 1;
+          }
+          if (distinct < 3) {
+            diags_.error(Diag::RepeatedNodeInElement, at(t.pos[e], 1), ab,
+                         "shell " + std::to_string(eid) + " has only " + std::to_string(distinct) +
+                             " distinct nodes; a shell needs 3 (triangle) or 4");
+          } else if (!(area > 0)) {
+            diags_.error(
+                Diag::NonPositiveArea, at(t.pos[e], 1), ab,
+                "shell " + std::to_string(eid) + " has zero area: its nodes are aligned or collapsed");
+          }
+          const double th = b.thickness.back();
+          if (th < 0) {
+            diags_.error(Diag::NonPositiveThickness,
+                         at(t.pos[e], cthick >= 0 ? t.fields[cthick]->first_col : 1), ab,
+                         "element thickness " + num(th) +
+                             " is negative; it must be > 0 (or blank to use the "
+                             "property thickness)");
+          } else if (th == 0 && part != kNone && m_.parts[part].property != kNone &&
+                     m_.properties[m_.parts[part].property].kind == model::PropertyKind::Shell &&
+                     m_.properties[m_.parts[part].property].shell.thickness <= 0) {
+            diags_.error(Diag::NonPositiveThickness, at(t.pos[e], 1), ab,
+                         "shell " + std::to_string(eid) +
+                             " has no thickness: the element card gives none and /PROP/" +
+                             std::to_string(m_.properties[m_.parts[part].property].id) +
+                             " Thick is 0; give a thickness > 0 on either");
+          }
+        }
+      }
+    }
+    // Element ids unique within the type.
+    std::int64_t dup = 0;
+    if (!b.index.build(b.id, dup)) {
+      std::unordered_map<std::int64_t, std::size_t> first;
+      for (std::size_t i = 0; i < b.id.size(); ++i) {
+        const auto [it, ok] = first.emplace(b.id[i], i);
+        if (!ok) {
+          const SourcePos p = pos[it->second];
+          diags_.error(Diag::DuplicateId, at(pos[i], 1), About{kind.keyword, b.id[i]},
+                       "element id " + std::to_string(b.id[i]) + " is already used at " +
+                           deck_.files[p.file] + ":" + std::to_string(p.line) +
+                           "; element ids must be unique");
+        }
+      }
+    }
+  }
+}
+
+void ModelBuilder::compute_masses() {
+  model::compute_lumped_masses(m_);
+}
+
+void ModelBuilder::check_unused_nodes() {
+  std::size_t unused = 0;
+  std::string first_ids;
+  for (std::size_t n = 0; n < node_used_.size(); ++n) {
+    if (node_used_[n]) continue;
+    ++unused;
+    if (unused <= 10) first_ids += (unused > 1 ? ", " : "") + std::to_string(m_.nodes.id[n]);
+  }
+  if (unused > 0) {
+    const SourcePos p = node_pos_.empty() ? SourcePos{} : node_pos_[0];
+    // One warning for all of them: a generated mesh can leave thousands and each would drown the rest.
+    for (std::size_t n = 0; n < node_used_.size(); ++n) {
+      if (!node_used_[n]) {
+        diags_.warning(Diag::UnusedNode, at(node_pos_[n], 1), About{"/NODE", m_.nodes.id[n]},
+                       std::to_string(unused) +
+                           " node(s) are used by no element, rigid body or rigid wall (" + first_ids +
+                           (unused > 10 ? ", ..." : "") +
+                           "); they carry no mass and take no part in the run");
+        break;
+      }
+    }
+    (void)p;
+  }
+}
+
+model::Model ModelBuilder::build() {
+  m_.deck_version = deck_.version;
+  m_.run_name = deck_.run_name;
+  m_.units.mass = deck_.work_units.mass;
+  m_.units.length = deck_.work_units.length;
+  m_.units.time = deck_.work_units.time;
+  m_.units.mass_name = deck_.work_units.mass_name;
+  m_.units.length_name = deck_.work_units.length_name;
+  m_.units.time_name = deck_.work_units.time_name;
+  for (const auto* r : deck_.of("/TITLE")) m_.title = r->get_string("TITLE");
+  for (const auto& r : deck_.records)
+    if (r.decl->support == schema::Support::Ignored) m_.ignored_keywords.push_back(r.written);
+  build_nodes();
+  build_materials();
+  build_properties();
+  build_subsets_and_parts();
+  build_elements();
+  build_boxes();
+  build_functions();
+  build_groups();
+  build_surfaces();
+  build_loads();
+  build_rigid_walls();
+  build_rigid_bodies();
+  build_interfaces();
+  build_contact_laws();
+  build_time_histories();
+  compute_masses();
+  check_unused_nodes();
+  return std::move(m_);
+}
+
+}  // namespace detail
+
+model::Model build_model(const Deck& deck, Diagnostics& diags) {
+  detail::ModelBuilder b(deck, diags);
+  return b.build();
+}
+
+}  // namespace radx

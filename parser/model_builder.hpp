@@ -1,0 +1,80 @@
+// Deck -> Model: resolves every user id to a dense index, checks every reference and value the
+// keyword declarations cannot check alone (cross-field and cross-keyword rules), applies two-stage
+// defaults (/DEF_SHELL, /DEF_SOLID), builds groups and surfaces, and computes element masses. Every
+// problem is reported through Diagnostics with the file:line of the field at fault.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "parser/deck.hpp"
+#include "solver/model/model.hpp"
+
+namespace radx {
+
+model::Model build_model(const Deck& deck, Diagnostics& diags);
+
+namespace detail {
+
+// Shared state of the builder steps (one file per keyword family).
+class ModelBuilder {
+ public:
+  ModelBuilder(const Deck& deck, Diagnostics& diags) : deck_(deck), diags_(diags) {}
+  model::Model build();
+
+  // -- helpers used by every step
+  Where at(SourcePos p, int col = 0) const { return deck_.where(p, col); }
+  static About about(const KeywordRecord& r) { return About{r.decl->path, r.id, r.title}; }
+  Where at_field(const KeywordRecord& r, std::string_view field) const;
+  void error_at(const KeywordRecord& r, std::string_view field, Diag code, std::string msg);
+  void warning_at(const KeywordRecord& r, std::string_view field, Diag code, std::string msg);
+
+  using IdIndex = std::unordered_map<std::int64_t, std::int32_t>;
+  // Registers an object id; reports a duplicate (RX401) and returns false.
+  bool register_id(IdIndex& index, std::int64_t id, std::int32_t dense, const KeywordRecord& r,
+                   std::string_view what, std::unordered_map<std::int64_t, SourcePos>& first_pos);
+  // Looks up the id held by `field` of `r`; reports RX402 when it does not exist. `optional`: 0 means
+  // "none" and returns kNone silently; otherwise 0 is RX404.
+  std::int32_t ref(const IdIndex& index, const KeywordRecord& r, std::string_view field,
+                   std::string_view what, std::string_view target_keyword, bool optional);
+
+  // -- steps
+  void build_nodes();
+  void build_materials();
+  void build_properties();
+  void build_subsets_and_parts();
+  void build_elements();
+  void build_boxes();
+  void build_functions();
+  void build_groups();
+  void build_surfaces();
+  void build_loads();
+  void build_rigid_walls();
+  void build_rigid_bodies();
+  void build_time_histories();
+  void build_interfaces();
+  void build_contact_laws();
+  void compute_masses();
+  void check_unused_nodes();
+
+  // Group resolution (recursive /GRNOD/GRNOD with loop detection).
+  const std::vector<std::int32_t>* group_nodes(std::int32_t g);
+  std::int32_t node_ref(std::int64_t user_id, const KeywordRecord& r, SourcePos pos, std::string_view what);
+
+  const Deck& deck_;
+  Diagnostics& diags_;
+  model::Model m_;
+
+  IdIndex mat_ids_, prop_ids_, part_ids_, subset_ids_, box_ids_, funct_ids_, grnod_ids_, surf_ids_,
+      inter_ids_, rwall_ids_, rbody_ids_;
+  std::vector<const KeywordRecord*> grnod_records_;
+  std::vector<std::uint8_t> grnod_state_;  // 0 not built, 1 building, 2 built
+  std::vector<std::uint8_t> node_used_;    // by an element or as a rigid-body / wall node
+  std::vector<SourcePos> node_pos_;        // where each node was defined
+};
+
+}  // namespace detail
+}  // namespace radx

@@ -1,0 +1,915 @@
+#!/usr/bin/env python3
+"""Independent column and consistency checker for the decks under decks/ (plain python3).
+
+This is NOT radx's reader. It is a small second implementation, written from deck-format.md, used to check
+the hand-made and generated decks:
+
+  * every line is at most 100 columns and has no tab;
+  * every data token lies inside one field of its card (so nothing straddles two fields or sits in unused
+    columns) and parses as that field's type; integers are right-justified;
+  * the field-name comment line in front of a card has each name ending at a field's last column;
+  * cross references, duplicate ids, empty groups, element geometry and a few value checks.
+
+Problems are reported with the RX codes of parser/diagnostics.hpp. For decks that carry `# expect:` lines
+(decks/invalid/), the set of problems found must equal the set expected; for the other decks it must be
+empty. Exit status 0 when every deck checks out.
+
+    python3 scripts/check_decks.py                 # every deck under decks/
+    python3 scripts/check_decks.py FILE.rad ...    # given decks (one-file, starter or engine)
+    python3 scripts/check_decks.py -v FILE.rad     # also print what was read
+"""
+import math
+import os
+import re
+import sys
+
+RULER_RE = re.compile(r"^#-+1-+\|")
+REAL_RE = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([EeDd][+-]?\d+|[+-]\d+)?$")
+INT_RE = re.compile(r"^[+-]?\d+$")
+EXPECT_RE = re.compile(r"^#\s*expect:\s*(RX\d{3})\s+line\s+(\d+)(?:\s+file\s+(\S+))?\s*$")
+
+MASS_UNITS = {"kg", "g", "mg", "Mg", "t", "lb"}
+LENGTH_UNITS = {"m", "mm", "cm", "km", "um", "mum", "in", "ft"}
+TIME_UNITS = {"s", "ms", "mus", "us", "ns", "min", "h"}
+
+# Radioss keyword roots radx does not read: "not supported" (RX302) rather than unknown (RX301).
+UNSUPPORTED_ROOTS = ("/MAT/", "/PROP/", "/INTER/", "/SPRING", "/BEAM", "/TRUSS", "/RBE2", "/RBE3", "/MONVOL",
+                     "/SENSOR", "/SKEW", "/FRAME", "/ADMAS", "/TETRA4", "/TETRA10", "/FAIL", "/EOS", "/TABLE",
+                     "/SECT", "/ACCEL", "/GAUGE", "/SPHCEL", "/PARAMETER", "/INISHE", "/INIBRI", "/GRSHEL",
+                     "/GRBRIC", "/LINE", "/MERGE", "/CYL_JOINT", "/IMPDISP", "/IMPACC", "/FXBODY", "/DAMP")
+
+
+def F(name, typ, a, b):
+    return (name, typ, a, b)
+
+
+def reals(*specs):
+    """R fields of 20 columns: reals('a', 'b') -> a 1-20, b 21-40."""
+    return [F(n, "R", 1 + 20 * k, 20 + 20 * k) for k, n in enumerate(specs) if n]
+
+
+def card(fields, cond=None, optional=False):
+    return {"fields": fields, "cond": cond, "optional": optional}
+
+
+# ---------------------------------------------------------------------------------------------------
+# Starter keyword layouts (deck-format.md), by deck version v
+
+
+def def_shell(v):
+    f = [F("Ishell", "I", 1, 10), F("Ismstr", "I", 11, 20), F("Ithick", "I", 21, 30), F("Iplas", "I", 31, 40),
+         F("Istrain", "I", 41, 50)]
+    if v >= 2024:
+        f.append(F("Ioffset", "I", 51, 60))
+    f += [F("Ish3n", "I", 71, 80), F("Idrill", "I", 81, 90)]
+    if v >= 2026:
+        f.append(F("Ithin_drape", "I", 91, 100))
+    return [card(f)]
+
+
+def def_solid(v):
+    f = [F("Isolid", "I", 1, 10), F("Ismstr", "I", 11, 20)]
+    if v >= 2021:
+        f.append(F("Icpre", "I", 21, 30))
+    else:
+        f.append(F("Istrain", "I", 31, 40))
+    if v >= 2019:
+        f += [F("Itetra4", "I", 41, 50), F("Itetra10", "I", 51, 60)]
+    f += [F("Imas", "I", 61, 70), F("Iframe", "I", 71, 80)]
+    if v >= 2025:
+        f.append(F("Icontrol", "I", 81, 90))
+    return [card(f)]
+
+
+def part(v):
+    return [card([F("prop_ID", "I", 1, 10), F("mat_ID", "I", 11, 20), F("subset_ID", "I", 21, 30),
+                  F("Thick", "R", 31, 50)])]
+
+
+def prop_shell(v):
+    c1 = [F("Ishell", "I", 1, 10), F("Ismstr", "I", 11, 20), F("Ish3n", "I", 21, 30), F("Idrill", "I", 31, 40)]
+    if v >= 2020:
+        c1.append(F("Ipinch", "I", 41, 50))
+    if v >= 2018:
+        c1.append(F("P_Thick_Fail", "R", 61, 80))
+    c2 = reals("Hm", "Hf", "Hr", "Dm", "Dn")
+    c3 = [F("N", "I", 1, 10)]
+    if v < 2024:
+        c3.append(F("Istrain", "I", 11, 20))
+    c3 += [F("Thick", "R", 21, 40), F("Ashear", "R", 41, 60), F("Ithick", "I", 71, 80), F("Iplas", "I", 81, 90)]
+    if v >= 2024:
+        c3.append(F("Ipos", "I", 91, 100))
+    return [card(c1), card(c2), card(c3)]
+
+
+def prop_solid(v):
+    c1 = [F("Isolid", "I", 1, 10), F("Ismstr", "I", 11, 20)]
+    if v >= 2022:
+        c1.append(F("Iale", "I", 21, 30))
+    c1.append(F("Icpre", "I", 31, 40))
+    if v >= 2019:
+        c1.append(F("Itetra10", "I", 41, 50))
+    c1 += [F("Inpts", "I", 51, 60), F("Itetra4", "I", 61, 70), F("Iframe", "I", 71, 80), F("dn", "R", 81, 100)]
+    c2 = reals("qa", "qb", "h", "Lambda", "Mu")
+    if v >= 2023:
+        c3 = reals("deltaT_min", "vdef_min", "vdef_max", "ASP_max", "COL_min")
+    else:
+        c3 = [F("deltaT_min", "R", 1, 20), F("Istrain", "I", 21, 30), F("Ihkt", "I", 31, 40)]
+    c4 = [F("Ndir", "I", 1, 10), F("sphpart_ID", "I", 11, 20)]
+    if v >= 2025:
+        c4.append(F("Icontrol", "I", 21, 30))
+    return [card(c1), card(c2), card(c3), card(c4, optional=True)]
+
+
+def mat_law1(v):
+    return [card(reals("RHO_I", "RHO_ref")), card(reals("E", "nu"))]
+
+
+def mat_law2(v):
+    c2 = [F("E", "R", 1, 20), F("nu", "R", 21, 40), F("Iflag", "I", 41, 50)]
+    if v >= 2023:
+        c2.append(F("flagVP", "I", 51, 60))
+    if v >= 2025:
+        c2.append(F("Pmin", "R", 61, 80))
+    c4 = [F("c", "R", 1, 20), F("EPS_DOT_0", "R", 21, 40), F("ICC", "I", 41, 50), F("Fsmooth", "I", 51, 60),
+          F("F_cut", "R", 61, 80), F("Chard", "R", 81, 100)]
+    c5 = reals("m", "T_melt", "rhoC_p", "T_r", "T_max" if v >= 2025 else None)
+    return [card(reals("RHO_I", "RHO_ref")), card(c2), card(reals("a", "b", "n", "EPS_p_max", "SIG_max0")),
+            card(c4), card(c5)]
+
+
+def ibc_fields():
+    return [F("IBCX", "I", 8, 8), F("IBCY", "I", 9, 9), F("IBCZ", "I", 10, 10)]
+
+
+def inter_type7(v):
+    c1 = [F("grnd_IDs", "I", 1, 10), F("surf_IDm", "I", 11, 20), F("Istf", "I", 21, 30), F("Ithe", "I", 31, 40),
+          F("Igap", "I", 41, 50), F("Ibag", "I", 61, 70), F("Idel", "I", 71, 80), F("Icurv", "I", 81, 90),
+          F("Iadm", "I", 91, 100)]
+    c2 = reals("Fscalegap", "Gap_max", "Fpenmax")
+    if v >= 2020:
+        c2.append(F("Itied", "I", 81, 90))
+    if v >= 2026:
+        c2.append(F("Ists", "I", 91, 100))
+    c3 = reals("Stmin", "Stmax", "%mesh_size", "dtmin") + [F("Irem_gap", "I", 81, 90), F("Irem_i2", "I", 91, 100)]
+    c4 = [F("node_ID1", "I", 1, 10), F("node_ID2", "I", 11, 20)]
+    c5 = reals("Stfac", "Fric", "Gapmin", "Tstart", "Tstop")
+    c6 = ibc_fields() + [F("Inacti", "I", 31, 40), F("VISs", "R", 41, 60), F("VISf", "R", 61, 80),
+                         F("Bumult", "R", 81, 100)]
+    c7 = [F("Ifric", "I", 1, 10), F("Ifiltr", "I", 11, 20), F("Xfreq", "R", 21, 40), F("Iform", "I", 41, 50),
+          F("sens_ID", "I", 51, 60), F("fct_IDF", "I", 61, 70), F("AscaleF", "R", 71, 90)]
+    if v >= 2018:
+        c7.append(F("fric_ID", "I", 91, 100))
+    return [card(c1), card(c2), card(c3), card(c4, cond=lambda x: x.get("Icurv", 0) in (1, 2)), card(c5), card(c6),
+            card(c7), card(reals("C1", "C2", "C3", "C4", "C5"), cond=lambda x: x.get("Ifric", 0) > 0),
+            card(reals("C6"), cond=lambda x: x.get("Ifric", 0) > 1)]
+
+
+def inter_lagdt(v):
+    c1 = [F("grnd_IDs", "I", 1, 10), F("surf_IDm", "I", 11, 20), F("Istf", "I", 21, 30), F("Igap", "I", 41, 50),
+          F("Ibag", "I", 61, 70), F("Idel", "I", 71, 80)]
+    c5 = ibc_fields() + [F("Inacti", "I", 31, 40), F("VISs", "R", 41, 60), F("VISf", "R", 61, 80),
+                         F("Bumult", "R", 81, 100)]
+    c6 = [F("Ifric", "I", 1, 10), F("Ifiltr", "I", 11, 20), F("Xfreq", "R", 21, 40), F("Iform", "I", 41, 50)]
+    return [card(c1), card(reals("Fscalegap", "Gapmax")), card(reals("Stmin", "Stmax")),
+            card(reals("Stfac", "Fric", "Gapmin", "Tstart", "Tstop")), card(c5), card(c6),
+            card(reals("C1", "C2", "C3", "C4", "C5"), cond=lambda x: x.get("Ifric", 0) > 0),
+            card(reals("C6"), cond=lambda x: x.get("Ifric", 0) > 1)]
+
+
+def bcs(v):
+    return [card([F("Tx", "I", 4, 4), F("Ty", "I", 5, 5), F("Tz", "I", 6, 6), F("Rx", "I", 8, 8),
+                  F("Ry", "I", 9, 9), F("Rz", "I", 10, 10), F("skew_ID", "I", 11, 20), F("grnod_ID", "I", 21, 30)])]
+
+
+def impvel(v):
+    return [card([F("funct_IDT", "I", 1, 10), F("Dir", "S", 11, 20), F("skew_ID", "I", 21, 30),
+                  F("sensor_ID", "I", 31, 40), F("grnod_ID", "I", 41, 50), F("frame_ID", "I", 51, 60),
+                  F("Icoor", "I", 61, 70)]),
+            card(reals("Ascale_x", "Fscale_y", "Tstart", "Tstop"))]
+
+
+def inivel(v):
+    cards = [card(reals("Vx", "Vy", "Vz") + [F("grnod_ID", "I", 61, 70), F("skew_ID", "I", 71, 80)])]
+    if v >= 2025:
+        cards.append(card([F("Tstart", "R", 1, 20), F("sensor_ID", "I", 21, 30)], optional=True))
+    return cards
+
+
+def grav(v):
+    return [card([F("funct_IDT", "I", 1, 10), F("DIR", "S", 11, 20), F("skew_ID", "I", 21, 30),
+                  F("sensor_ID", "I", 31, 40), F("grnod_ID", "I", 41, 50), F("Ascale_x", "R", 61, 80),
+                  F("Fscale_y", "R", 81, 100)])]
+
+
+NODE_REC = [F("node_ID", "I", 1, 10), F("X", "R", 11, 30), F("Y", "R", 31, 50), F("Z", "R", 51, 70)]
+SHELL_REC = [F("shell_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)] + \
+    [F("PHI", "R", 61, 80), F("Thick", "R", 81, 100)]
+BRICK_REC = [F("brick_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(8)]
+FUNCT_REC = reals("X", "Y")
+THNODE_REC = [F("node_ID", "I", 1, 10), F("skew_ID", "I", 11, 20), F("name", "S", 21, 100)]
+ID_REC = [F("id%d" % (k + 1), "I", 1 + 10 * k, 10 + 10 * k) for k in range(10)]
+
+# path -> (header, has_title, cards(v), tail, record)
+STARTER = {
+    "/TITLE": ("none", False, lambda v: [card([F("title", "S", 1, 100)])], None, None),
+    "/DEF_SHELL": ("none", False, def_shell, None, None),
+    "/DEF_SOLID": ("none", False, def_solid, None, None),
+    "/NODE": ("unit", False, lambda v: [], "records", NODE_REC),
+    "/SHELL": ("part", False, lambda v: [], "records", SHELL_REC),
+    "/BRICK": ("part", False, lambda v: [], "records", BRICK_REC),
+    "/PART": ("id", True, part, None, None),
+    "/PROP/SHELL": ("id", True, prop_shell, None, None),
+    "/PROP/TYPE1": ("id", True, prop_shell, None, None),
+    "/PROP/SOLID": ("id", True, prop_solid, None, None),
+    "/PROP/TYPE14": ("id", True, prop_solid, None, None),
+    "/MAT/LAW1": ("id", True, mat_law1, None, None),
+    "/MAT/ELAST": ("id", True, mat_law1, None, None),
+    "/MAT/LAW01": ("id", True, mat_law1, None, None),
+    "/MAT/LAW2": ("id", True, mat_law2, None, None),
+    "/MAT/PLAS_JOHNS": ("id", True, mat_law2, None, None),
+    "/MAT/LAW02": ("id", True, mat_law2, None, None),
+    "/GRNOD/NODE": ("id", True, lambda v: [], "ids", ID_REC),
+    "/GRNOD/PART": ("id", True, lambda v: [], "ids", ID_REC),
+    "/SURF/PART/EXT": ("id", True, lambda v: [], "ids", ID_REC),
+    "/SURF/PART": ("id", True, lambda v: [], "ids", ID_REC),
+    "/INTER/LAGDT/TYPE7": ("id", True, inter_lagdt, None, None),
+    "/INTER/TYPE7": ("id", True, inter_type7, None, None),
+    "/BCS": ("id", True, bcs, None, None),
+    "/IMPVEL": ("id", True, impvel, None, None),
+    "/INIVEL/TRA": ("id", True, inivel, None, None),
+    "/GRAV": ("id", True, grav, None, None),
+    "/FUNCT": ("id", True, lambda v: [], "records", FUNCT_REC),
+    "/TH/NODE": ("id", True, lambda v: [], "threcords", THNODE_REC),
+    "/TH/PART": ("id", True, lambda v: [], "thids", ID_REC),
+    "/TH/INTER": ("id", True, lambda v: [], "thids", ID_REC),
+}
+
+
+def match_keyword(parts):
+    """parts: keyword fields without blanks, upper case. Returns (path, rest) or (None, None)."""
+    for n in range(min(len(parts), 4), 0, -1):
+        path = "/" + "/".join(parts[:n])
+        if path in STARTER:
+            return path, parts[n:]
+    return None, None
+
+
+# ---------------------------------------------------------------------------------------------------
+# Reading
+
+
+class Issue:
+    def __init__(self, code, file, line, msg):
+        self.code, self.file, self.line, self.msg = code, file, line, msg
+
+    def key(self):
+        return (self.code, self.file, self.line)
+
+    def __str__(self):
+        return "%s:%d: %s %s" % (self.file, self.line, self.code, self.msg)
+
+
+class Checker:
+    def __init__(self, verbose=False):
+        self.issues = []
+        self.style = []  # column/style problems that are not input errors (ruler mismatch, etc.)
+        self.verbose = verbose
+
+    def issue(self, code, file, line, msg):
+        self.issues.append(Issue(code, file, line, msg))
+
+    def warn(self, file, line, msg):
+        self.style.append(Issue("STYLE", file, line, msg))
+
+    # ---- files and includes
+    def load(self, path, display, stack, out):
+        try:
+            with open(path, "rb") as f:
+                raw = f.read()
+        except OSError:
+            return False
+        text = raw.decode("utf-8", errors="replace")
+        lines = text.split("\n")
+        if lines and lines[-1] == "":
+            lines.pop()
+        for k, ln in enumerate(lines, 1):
+            ln = ln.rstrip("\r")
+            if ln.lower().startswith("#include"):
+                name = ln[8:].strip()
+                target = os.path.normpath(os.path.join(os.path.dirname(path), name))
+                tdisp = os.path.normpath(os.path.join(os.path.dirname(display), name))
+                if os.path.abspath(target) in stack:
+                    self.issue("RX102", display, k, "include loop: %s is already being read" % name)
+                    continue
+                if not os.path.exists(target):
+                    self.issue("RX103", display, k, "include file not found: %s" % name)
+                    continue
+                self.load(target, tdisp, stack + [os.path.abspath(target)], out)
+                continue
+            out.append((display, k, ln))
+        return True
+
+    # ---- field parsing
+    def parse_fields(self, fields, rec, kw, strict=True):
+        """Parse one data line against fields. Returns dict name -> value (blank -> None)."""
+        file, lineno, text = rec
+        vals = {}
+        if len(text) > 100:
+            self.warn(file, lineno, "line longer than 100 columns")
+        if "," in text:
+            return vals
+        body = text[:100].replace("\t", " ")
+        # token placement
+        for m in re.finditer(r"\S+", body):
+            s, e = m.start() + 1, m.end()
+            host = [f for f in fields if f[2] <= s and e <= f[3]]
+            digits = all(any(f[2] == f[3] == c for f in fields) for c in range(s, e + 1))
+            if not host and not digits:
+                self.warn(file, lineno, "%s: token %r at columns %d-%d is not inside one field" % (kw, m.group(), s, e))
+        for name, typ, a, b in fields:
+            cell = body[a - 1:b]
+            tok = cell.strip()
+            if not tok:
+                vals[name] = None
+                continue
+            if typ == "I":
+                if not INT_RE.match(tok):
+                    self.issue("RX201", file, lineno, "%s: %s = %r is not an integer" % (kw, name, tok))
+                    vals[name] = None
+                    continue
+                if strict and cell.rstrip() != cell:
+                    self.warn(file, lineno, "%s: integer %s not right-justified in columns %d-%d" % (kw, name, a, b))
+                vals[name] = int(tok)
+            elif typ == "R":
+                if not REAL_RE.match(tok):
+                    self.issue("RX202", file, lineno, "%s: %s = %r is not a real" % (kw, name, tok))
+                    vals[name] = None
+                    continue
+                t = tok.replace("D", "E").replace("d", "e")
+                t = re.sub(r"(\d)([+-]\d+)$", r"\1E\2", t)
+                x = float(t)
+                if math.isinf(x):
+                    self.issue("RX203", file, lineno, "%s: %s = %r overflows a double" % (kw, name, tok))
+                    vals[name] = None
+                    continue
+                vals[name] = x
+            else:
+                vals[name] = tok
+        return vals
+
+    def check_names_line(self, comment, fields, kw):
+        """The comment line in front of a card: every name must end at a field's last column (or, for a
+        string field, start inside it)."""
+        if comment is None:
+            return
+        file, lineno, text = comment
+        if RULER_RE.match(text) or text.startswith("# expect") or text.startswith("# fault"):
+            return
+        body = " " + text[1:]
+        for m in re.finditer(r"\S+", body):
+            s, e = m.start() + 1, m.end()
+            ok = any(f[3] == e for f in fields) or any(f[1] == "S" and f[2] <= s <= f[3] for f in fields)
+            if not ok:
+                self.warn(file, lineno, "%s: field name %r ends at column %d, not at a field end" % (kw, m.group(), e))
+
+    # ---- starter
+    def starter(self, recs, mainfile, last_line, version_hint=None, fragment=False):
+        """recs: (file, line, text) of the whole file set, includes expanded."""
+        i = 0
+        n = len(recs)
+        version = version_hint or 2026
+        if not fragment:
+            while i < n and not recs[i][2].upper().startswith("/BEGIN"):
+                i += 1
+            if i == n:
+                first_kw = next((r for r in recs if r[2].startswith("/")), recs[0] if recs else (mainfile, 1, ""))
+                self.issue("RX105", first_kw[0], first_kw[1], "no /BEGIN")
+                return None
+            i += 1
+            cards = []
+            while i < n and len(cards) < 4:
+                r = recs[i]
+                if r[2].startswith("/"):
+                    break
+                if not is_comment(r[2]):
+                    cards.append(r)
+                i += 1
+            if len(cards) < 4:
+                self.issue("RX502", mainfile, recs[i - 1][1], "/BEGIN has fewer than 4 cards")
+                return None
+            vv = self.parse_fields([F("INVERS", "I", 1, 10), F("IRUN", "I", 11, 20)], cards[1], "/BEGIN")
+            version = vv.get("INVERS") or 0
+            if version not in (2017, 2018, 2019, 2020, 2021, 2022, 2023, 2024, 2025, 2026):
+                self.issue("RX307", cards[1][0], cards[1][1], "unsupported version %r" % version)
+            for c, kinds in ((cards[2], "input"), (cards[3], "work")):
+                uv = self.parse_fields([F("M", "S", 1, 20), F("L", "S", 21, 40), F("T", "S", 41, 60)], c, "/BEGIN")
+                bad = [x for x, ok in ((uv.get("M"), MASS_UNITS), (uv.get("L"), LENGTH_UNITS),
+                                       (uv.get("T"), TIME_UNITS)) if x is not None and x not in ok and not
+                       REAL_RE.match(x)]
+                if bad:
+                    self.issue("RX506", c[0], c[1], "unknown %s unit(s) %s" % (kinds, ", ".join(bad)))
+        model = Model(version)
+        end_seen = False
+        prev_comment = None
+        while i < n:
+            file, lineno, text = recs[i]
+            if is_comment(text):
+                prev_comment = recs[i]
+                i += 1
+                continue
+            if not text.startswith("/"):
+                self.warn(file, lineno, "data line outside any keyword")
+                i += 1
+                continue
+            parts = [p.replace(" ", "").upper() for p in text.rstrip().split("/")[1:]]
+            if parts and parts[0] == "END" and len(parts) == 1:
+                end_seen = True
+                break
+            path, rest = match_keyword(parts)
+            # block lines up to the next keyword
+            j = i + 1
+            block = []
+            while j < n and not recs[j][2].startswith("/"):
+                block.append(recs[j])
+                j += 1
+            if path is None:
+                written = "/" + "/".join(parts)
+                if any(written.startswith(u) for u in UNSUPPORTED_ROOTS):
+                    self.issue("RX302", file, lineno, "keyword %s is not supported" % written)
+                else:
+                    self.issue("RX301", file, lineno, "unknown keyword %s" % written)
+                i = j
+                continue
+            self.keyword(model, path, rest, recs[i], block, version)
+            i = j
+        if not end_seen and not fragment:
+            self.issue("RX106", mainfile, last_line, "no /END")
+        return model
+
+    def keyword(self, model, path, rest, kwrec, block, v):
+        header, has_title, cards_fn, tail, recfields = STARTER[path]
+        file, lineno, text = kwrec
+        oid = 0
+        if header in ("id", "part"):
+            if not rest or not INT_RE.match(rest[0]):
+                self.issue("RX306", file, lineno, "%s needs an id" % path)
+            else:
+                oid = int(rest[0])
+        # split into (comment before, data line) pairs
+        data = []
+        comment = None
+        for r in block:
+            if is_comment(r[2]):
+                comment = r
+                continue
+            data.append((comment, r))
+            comment = None
+        k = 0
+        title = ""
+        if has_title:
+            if k < len(data):
+                title = data[k][1][2]
+                k += 1
+        obj = {"path": path, "id": oid, "pos": (file, lineno), "title": title, "cards": [], "vals": {},
+               "recs": [], "ids": []}
+        vals = {}
+        card_list = cards_fn(v)
+        for c in card_list:
+            if c["cond"] is not None and not c["cond"](vals):
+                continue
+            if k >= len(data):
+                obj["cards"].append(None)
+                obj.setdefault("missing", []).append(c)
+                continue
+            cm, r = data[k]
+            k += 1
+            self.check_names_line(cm, c["fields"], path)
+            cv = self.parse_fields(c["fields"], r, path)
+            for key, val in cv.items():
+                vals[key] = val
+                obj["vals"][key] = (val, (r[0], r[1]))
+            obj["cards"].append((r[0], r[1]))
+        if tail in ("thids", "threcords"):
+            # variable lines: first line always, then while col 1-10 non-blank and not starting with a digit
+            first = True
+            while k < len(data):
+                t = data[k][1][2]
+                head = t[:10].strip()
+                if first or (head and not head[0].isdigit() and head[0] not in "+-"):
+                    obj.setdefault("vars", []).append(t.split())
+                    k += 1
+                    first = False
+                    continue
+                break
+        if tail in ("records", "threcords"):
+            for cm, r in data[k:]:
+                self.check_names_line(cm, recfields, path)
+                obj["recs"].append((self.parse_fields(recfields, r, path), (r[0], r[1])))
+            k = len(data)
+        elif tail in ("ids", "thids"):
+            for cm, r in data[k:]:
+                self.check_names_line(cm, ID_REC, path)
+                cv = self.parse_fields(ID_REC, r, path)
+                for f in ID_REC:
+                    if cv.get(f[0]) is not None:
+                        obj["ids"].append((cv[f[0]], (r[0], r[1])))
+            k = len(data)
+        if k < len(data):
+            self.warn(data[k][1][0], data[k][1][1], "%s: extra data line" % path)
+        if self.verbose:
+            print("  %s/%s %r cards=%d recs=%d ids=%d" % (path, oid, title, len(obj["cards"]), len(obj["recs"]),
+                                                          len(obj["ids"])))
+        model.add(obj)
+
+    # ---- engine
+    def engine(self, recs):
+        for file, lineno, text in recs:
+            if len(text) > 100:
+                self.warn(file, lineno, "line longer than 100 columns")
+            if "\t" in text:
+                self.warn(file, lineno, "tab in engine line")
+            if is_comment(text) or text.startswith("/"):
+                if text.upper().startswith("/END"):
+                    return
+                continue
+            for tok in text.replace(",", " ").split():
+                if not REAL_RE.match(tok):
+                    self.warn(file, lineno, "engine data %r is not a number" % tok)
+
+
+def is_comment(text):
+    return text.startswith("#") or text.startswith("$")
+
+
+# ---------------------------------------------------------------------------------------------------
+# Semantic checks
+
+
+class Model:
+    def __init__(self, version):
+        self.version = version
+        self.objs = []
+
+    def add(self, obj):
+        self.objs.append(obj)
+
+    def of(self, *paths):
+        return [o for o in self.objs if o["path"] in paths]
+
+
+def val(o, name, default=0):
+    v = o["vals"].get(name)
+    if v is None or v[0] is None:
+        return default
+    return v[0]
+
+
+def pos(o, name):
+    v = o["vals"].get(name)
+    return v[1] if v else o["pos"]
+
+
+def semantic(ck, m):
+    I = ck.issue
+    nodes = {}
+    for o in m.of("/NODE"):
+        for r, p in o["recs"]:
+            nid = r.get("node_ID")
+            if nid is None:
+                continue
+            if nid in nodes:
+                I("RX401", p[0], p[1], "node %d defined twice" % nid)
+                continue
+            nodes[nid] = (r.get("X") or 0.0, r.get("Y") or 0.0, r.get("Z") or 0.0)
+
+    def by_id(paths, what):
+        table = {}
+        for o in m.of(*paths):
+            if o["id"] in table:
+                I("RX401", o["pos"][0], o["pos"][1], "%s %d defined twice" % (what, o["id"]))
+                continue
+            table[o["id"]] = o
+        return table
+
+    parts = by_id(("/PART",), "part")
+    props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14"), "property")
+    mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02"), "material")
+    grnods = by_id(("/GRNOD/NODE", "/GRNOD/PART"), "node group")
+    surfs = by_id(("/SURF/PART", "/SURF/PART/EXT"), "surface")
+    functs = by_id(("/FUNCT",), "function")
+    inters = by_id(("/INTER/TYPE7", "/INTER/LAGDT/TYPE7"), "interface")
+
+    # elements
+    elem_ids = {"/SHELL": set(), "/BRICK": set()}
+    part_kind = {}
+    for o in m.of("/SHELL", "/BRICK"):
+        kind = o["path"]
+        if o["id"] not in parts:
+            I("RX402", o["pos"][0], o["pos"][1], "%s: part %d does not exist" % (kind, o["id"]))
+        part_kind.setdefault(o["id"], set()).add(kind)
+        nn = 4 if kind == "/SHELL" else 8
+        for r, p in o["recs"]:
+            eid = r.get(kind == "/SHELL" and "shell_ID" or "brick_ID")
+            if eid in elem_ids[kind]:
+                I("RX401", p[0], p[1], "element %d defined twice" % eid)
+                continue
+            elem_ids[kind].add(eid)
+            ns = [r.get("n%d" % (k + 1)) for k in range(nn)]
+            if any(x is None or x not in nodes for x in ns):
+                I("RX406", p[0], p[1], "element %s uses a node that does not exist" % eid)
+                continue
+            pts = [nodes[x] for x in ns]
+            if kind == "/SHELL":
+                a = cross(sub(pts[2], pts[0]), sub(pts[3], pts[1]))
+                if 0.5 * norm(a) <= 1e-12:
+                    I("RX602", p[0], p[1], "shell %d has zero area" % eid)
+                # thickness
+                t_el = r.get("Thick") or 0.0
+                po = parts.get(o["id"])
+                if po is None:
+                    continue
+                t_pr = 0.0
+                if po is not None and val(po, "prop_ID") in props:
+                    t_pr = val(props[val(po, "prop_ID")], "Thick", 0.0)
+                t = t_el if t_el != 0.0 else t_pr
+                if t == 0.0:
+                    I("RX504", p[0], p[1], "shell %d has no thickness (element and property are 0)" % eid)
+            else:
+                vol = hex_volume(pts)
+                if vol <= 1e-12:
+                    I("RX601", p[0], p[1], "brick %d has volume %g" % (eid, vol))
+
+    # parts
+    for pid, o in parts.items():
+        if val(o, "prop_ID") not in props:
+            p = pos(o, "prop_ID")
+            I("RX402", p[0], p[1], "part %d: property %d does not exist" % (pid, val(o, "prop_ID")))
+        if val(o, "mat_ID") not in mats:
+            p = pos(o, "mat_ID")
+            I("RX402", p[0], p[1], "part %d: material %d does not exist" % (pid, val(o, "mat_ID")))
+
+    # properties
+    for o in props.values():
+        if o["path"] in ("/PROP/SHELL", "/PROP/TYPE1"):
+            if val(o, "Thick", 0.0) < 0:
+                p = pos(o, "Thick")
+                I("RX504", p[0], p[1], "negative shell thickness")
+            nn = val(o, "N", 0)
+            if nn < 0 or nn > 10:
+                p = pos(o, "N")
+                I("RX501", p[0], p[1], "N = %d outside 0..10" % nn)
+
+    # materials
+    for o in mats.values():
+        if o.get("missing"):
+            I("RX502", o["pos"][0], o["pos"][1], "%s %d ends before its required cards" % (o["path"], o["id"]))
+            continue
+        nu = val(o, "nu", 0.0)
+        if nu >= 0.5 or nu <= -1.0:
+            p = pos(o, "nu")
+            I("RX503", p[0], p[1], "Poisson's ratio %g" % nu)
+        if val(o, "E", 0.0) <= 0:
+            p = pos(o, "E")
+            I("RX502", p[0], p[1], "E must be > 0")
+        if o["path"] in ("/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02"):
+            if val(o, "c", 0.0) > 0 and val(o, "EPS_DOT_0", 0.0) == 0:
+                p = pos(o, "EPS_DOT_0")
+                I("RX502", p[0], p[1], "c > 0 needs EPS_DOT_0")
+            if val(o, "n", 0.0) > 1:
+                p = pos(o, "n")
+                I("RX501", p[0], p[1], "JC exponent n > 1")
+            if val(o, "a", 0.0) <= 0:
+                p = pos(o, "a")
+                I("RX502", p[0], p[1], "JC a must be > 0")
+
+    # groups
+    group_nodes = {}
+    for gid, o in grnods.items():
+        s = set()
+        if not o["ids"]:
+            I("RX403", o["pos"][0], o["pos"][1], "group %d is empty" % gid)
+        for x, p in o["ids"]:
+            if o["path"] == "/GRNOD/NODE":
+                if x not in nodes:
+                    I("RX402", p[0], p[1], "group %d: node %d does not exist" % (gid, x))
+                s.add(x)
+            else:
+                if abs(x) not in parts:
+                    I("RX402", p[0], p[1], "group %d: part %d does not exist" % (gid, x))
+                s.add(("part", x))
+        group_nodes[gid] = s
+    for sid, o in surfs.items():
+        if not o["ids"]:
+            I("RX403", o["pos"][0], o["pos"][1], "surface %d is empty" % sid)
+        for x, p in o["ids"]:
+            if abs(x) not in parts:
+                I("RX402", p[0], p[1], "surface %d: part %d does not exist" % (sid, x))
+            elif o["path"] == "/SURF/PART" and "/BRICK" in part_kind.get(abs(x), set()):
+                I("RX407", p[0], p[1], "surface %d: /SURF/PART on solid part %d" % (sid, x))
+
+    # functions
+    for fid, o in functs.items():
+        xs = [(r.get("X"), p) for r, p in o["recs"]]
+        for k in range(1, len(xs)):
+            if xs[k][0] is not None and xs[k - 1][0] is not None and xs[k][0] <= xs[k - 1][0]:
+                I("RX505", xs[k][1][0], xs[k][1][1], "function %d: X not increasing" % fid)
+                break
+
+    # loads and conditions
+    def need(o, field, table, what, zero_ok=True):
+        x = val(o, field, 0)
+        p = pos(o, field)
+        if x == 0:
+            if not zero_ok:
+                I("RX502", p[0], p[1], "%s %d: %s is required" % (o["path"], o["id"], field))
+            return
+        if x not in table:
+            I("RX402", p[0], p[1], "%s %d: %s %d does not exist" % (o["path"], o["id"], what, x))
+
+    for o in m.of("/BCS"):
+        need(o, "grnod_ID", grnods, "node group", zero_ok=False)
+    for o in m.of("/INIVEL/TRA"):
+        need(o, "grnod_ID", grnods, "node group", zero_ok=False)
+    for o in m.of("/IMPVEL"):
+        need(o, "funct_IDT", functs, "function", zero_ok=False)
+        need(o, "grnod_ID", grnods, "node group", zero_ok=False)
+    for o in m.of("/GRAV"):
+        need(o, "funct_IDT", functs, "function")
+        need(o, "grnod_ID", grnods, "node group")
+
+    # interfaces
+    for iid, o in inters.items():
+        need(o, "grnd_IDs", grnods, "node group", zero_ok=False)
+        need(o, "surf_IDm", surfs, "surface", zero_ok=False)
+        rng = {"Istf": (0, 1, 2, 3, 4, 5), "Igap": (0, 1, 2), "Inacti": (0, 1, 2, 3, 5, 6), "Ifric": (0, 1, 2, 3),
+               "Idel": (-2, -1, 0, 1, 2), "Iform": (0, 1, 2), "Ifiltr": (0, 1, 2, 3)}
+        for f, allowed in rng.items():
+            if val(o, f, 0) not in allowed:
+                p = pos(o, f)
+                I("RX501", p[0], p[1], "interface %d: %s = %d" % (iid, f, val(o, f, 0)))
+        if val(o, "Istf", 0) == 1 and val(o, "Stfac", 0.0) == 0:
+            p = pos(o, "Stfac")
+            I("RX502", p[0], p[1], "interface %d: Istf = 1 needs a stiffness in Stfac" % iid)
+        ts, te = val(o, "Tstart", 0.0), val(o, "Tstop", 0.0)
+        if te != 0 and te <= ts:
+            p = pos(o, "Tstop")
+            I("RX507", p[0], p[1], "interface %d: Tstop <= Tstart" % iid)
+        if val(o, "Ifric", 0) == 3:
+            c = [val(o, "C%d" % k, 0.0) for k in range(1, 7)]
+            if c[4] == 0 or not (c[4] < c[5]) or not (c[3] <= c[0] <= c[2]) or not (c[3] <= c[1] <= c[2]):
+                p = pos(o, "C5")
+                I("RX507", p[0], p[1], "interface %d: Renard coefficients inconsistent" % iid)
+
+    # time history
+    for o in m.of("/TH/NODE"):
+        for r, p in o["recs"]:
+            if r.get("node_ID") not in nodes:
+                I("RX402", p[0], p[1], "TH node %s does not exist" % r.get("node_ID"))
+    for o in m.of("/TH/PART"):
+        for x, p in o["ids"]:
+            if x not in parts:
+                I("RX402", p[0], p[1], "TH part %d does not exist" % x)
+    for o in m.of("/TH/INTER"):
+        for x, p in o["ids"]:
+            if x not in inters:
+                I("RX402", p[0], p[1], "TH interface %d does not exist" % x)
+    return nodes, parts
+
+
+def sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def norm(a):
+    return math.sqrt(dot(a, a))
+
+
+def hex_volume(p):
+    """Volume of an 8-node hexahedron by 2x2x2 Gauss integration of the trilinear Jacobian."""
+    sgn = [(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1), (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)]
+    g = 1 / math.sqrt(3)
+    vol = 0.0
+    for xi in (-g, g):
+        for eta in (-g, g):
+            for ze in (-g, g):
+                J = [[0.0] * 3 for _ in range(3)]
+                for (a, b, c), x in zip(sgn, p):
+                    dn = (a * (1 + b * eta) * (1 + c * ze) / 8, b * (1 + a * xi) * (1 + c * ze) / 8,
+                          c * (1 + a * xi) * (1 + b * eta) / 8)
+                    for r in range(3):
+                        for s in range(3):
+                            J[r][s] += dn[r] * x[s]
+                vol += dot(cross(J[0], J[1]), J[2])
+    return vol
+
+
+# ---------------------------------------------------------------------------------------------------
+# Driver
+
+
+def check_file(path, root, verbose=False):
+    ck = Checker(verbose)
+    display = os.path.relpath(path, root)
+    recs = []
+    ck.load(path, display, [os.path.abspath(path)], recs)
+    # raw line checks on the files actually read
+    seen = set()
+    for f, k, t in recs:
+        if len(t) > 100:
+            ck.warn(f, k, "line longer than 100 columns")
+        if "\t" in t and not is_comment(t):
+            ck.issue("RX104", f, k, "tab in a fixed-column line")
+        if "," in t and not is_comment(t):
+            ck.warn(f, k, "comma in a non-comment line (would switch the line to free format)")
+        seen.add(f)
+    with open(path, encoding="utf-8", errors="replace") as fh:
+        nlines = sum(1 for _ in fh)
+    own = [r for r in recs]
+    split = next((n for n, r in enumerate(own) if r[2].upper().startswith("/END/ENGINE")), None)
+    has_begin = any(r[2].upper().startswith("/BEGIN") for r in own)
+    if split is not None:
+        ck.engine(own[:split + 1])
+        model = ck.starter(own[split + 1:], display, nlines)
+    elif not has_begin and any(r[2].upper().startswith("/RUN") for r in own):
+        ck.engine(own)
+        model = None
+    else:
+        frag = os.path.basename(os.path.dirname(path)) == "inc"
+        model = ck.starter(own, display, nlines, fragment=frag)
+    if model is not None:
+        semantic(ck, model)
+    return ck
+
+
+def expectations(path, root):
+    exp = set()
+    display = os.path.relpath(path, root)
+    with open(path, encoding="utf-8", errors="replace") as fh:
+        for ln in fh:
+            m = EXPECT_RE.match(ln.rstrip("\n"))
+            if m:
+                f = display if not m.group(3) else os.path.normpath(os.path.join(os.path.dirname(display),
+                                                                                  m.group(3)))
+                exp.add((m.group(1), f, int(m.group(2))))
+    return exp
+
+
+def main(argv):
+    verbose = "-v" in argv
+    files = [a for a in argv if a != "-v"]
+    here = os.path.dirname(os.path.abspath(__file__))
+    root = os.path.normpath(os.path.join(here, ".."))
+    if not files:
+        for d, _, fs in sorted(os.walk(os.path.join(root, "decks"))):
+            for f in sorted(fs):
+                if f.endswith(".rad"):
+                    files.append(os.path.join(d, f))
+    bad = 0
+    for path in files:
+        path = os.path.abspath(path)
+        if os.path.basename(os.path.dirname(path)) == "inc":
+            ck = check_file(path, root, verbose)
+            probs = [str(x) for x in ck.style]
+            # fragments are checked for columns only; their errors belong to the deck that includes them
+            if probs:
+                bad += 1
+                print("FAIL %s" % os.path.relpath(path, root))
+                for p in probs:
+                    print("   ", p)
+            else:
+                print("ok   %s (fragment, columns only)" % os.path.relpath(path, root))
+            continue
+        ck = check_file(path, root, verbose)
+        exp = expectations(path, root)
+        got = {x.key() for x in ck.issues}
+        style = [x for x in ck.style if (x.file, x.line) not in {(e[1], e[2]) for e in exp}]
+        ok = got == exp and not style
+        rel = os.path.relpath(path, root)
+        if ok:
+            print("ok   %s%s" % (rel, ("  expects " + " ".join("%s@%d" % (e[0], e[2]) for e in sorted(exp,
+                  key=lambda e: (e[2], e[0])))) if exp else ""))
+        else:
+            bad += 1
+            print("FAIL %s" % rel)
+            for x in sorted(ck.issues, key=lambda x: (x.file, x.line)):
+                tag = "  " if x.key() in exp else "+ "
+                print("   %s%s" % (tag, x))
+            for e in sorted(exp - got):
+                print("   - expected but not found: %s %s line %d" % e)
+            for x in style:
+                print("   ! %s" % x)
+    print("%d file(s) checked, %d failed" % (len(files), bad))
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,778 @@
+#!/usr/bin/env python3
+"""Write the malformed starter decks of decks/invalid/ and their README table.
+
+Every deck is the same tiny valid model (two shells, one brick, two parts, JC steel, elastic aluminium,
+clamped plate nodes) with ONE fault put in (several_errors.rad has four). Lines of the base model carry tags;
+a fault edits tagged lines, and the expected diagnostics name a tag, so the `# expect: RXnnn line N` headers
+are computed, never counted by hand.
+
+    python3 scripts/make_invalid_decks.py            # writes decks/invalid/*.rad, inc/*.rad, README.md
+    python3 scripts/make_invalid_decks.py --out DIR  # elsewhere
+    python3 scripts/make_invalid_decks.py --base F   # also write the fault-free base deck to F
+
+Check the result with scripts/check_decks.py (an independent reader that re-derives the diagnostics).
+Plain python3, standard library only.
+"""
+import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_block_on_plate import I, R, S, RULER, bcs_code, blank, ibc_code, line, names  # noqa: E402
+
+
+class Deck:
+    """Lines with optional tags. Tags are unique; edits address lines by tag."""
+
+    def __init__(self):
+        self.rows = []  # [text, tag]
+
+    def add(self, text, tag=None):
+        if tag is not None and any(r[1] == tag for r in self.rows):
+            raise KeyError("duplicate tag %s" % tag)
+        self.rows.append([text, tag])
+
+    def extend(self, rows):
+        for r in rows:
+            self.add(*r) if isinstance(r, tuple) else self.add(r)
+
+    def index(self, tag):
+        for k, r in enumerate(self.rows):
+            if r[1] == tag:
+                return k
+        raise KeyError(tag)
+
+    def has(self, tag):
+        return any(r[1] == tag for r in self.rows)
+
+    def set(self, tag, text):
+        self.rows[self.index(tag)][0] = text
+
+    def insert_before(self, tag, rows):
+        k = self.index(tag)
+        new = Deck()
+        new.extend(rows)
+        self.rows[k:k] = new.rows
+
+    def insert_after(self, tag, rows):
+        k = self.index(tag) + 1
+        new = Deck()
+        new.extend(rows)
+        self.rows[k:k] = new.rows
+
+    def delete(self, first_tag, last_tag=None, keep_first=False):
+        a = self.index(first_tag) + (1 if keep_first else 0)
+        b = self.index(last_tag or first_tag)
+        del self.rows[a:b + 1]
+
+    def lineno(self, tag, offset):
+        return offset + self.index(tag) + 1
+
+    def texts(self):
+        return [r[0] for r in self.rows]
+
+
+# ---------------------------------------------------------------------------------------------------
+# Line makers for the base model
+
+NODES = [
+    (1, 0.0, 0.0, 0.0), (2, 10.0, 0.0, 0.0), (3, 20.0, 0.0, 0.0),
+    (4, 0.0, 10.0, 0.0), (5, 10.0, 10.0, 0.0), (6, 20.0, 10.0, 0.0),
+    (11, 5.0, 1.0, 1.5), (12, 15.0, 1.0, 1.5), (13, 15.0, 9.0, 1.5), (14, 5.0, 9.0, 1.5),
+    (15, 5.0, 1.0, 11.5), (16, 15.0, 1.0, 11.5), (17, 15.0, 9.0, 11.5), (18, 5.0, 9.0, 11.5),
+]
+SHELLS = [(1, 1, 2, 5, 4), (2, 2, 3, 6, 5)]
+BRICK = (11, 11, 12, 13, 14, 15, 16, 17, 18)
+
+
+def node_line(nid, x, y, z):
+    return line(I(nid), R(x), R(y), R(z))
+
+
+def shell_line(eid, n1, n2, n3, n4, phi=None, thick=None):
+    return line(I(eid), I(n1), I(n2), I(n3), I(n4), blank(10), R(phi), R(thick))
+
+
+def brick_line(*v):
+    return line(*[I(x) for x in v])
+
+
+def part_line(prop, mat):
+    return line(I(prop), I(mat), I(0), R(0.0))
+
+
+def psh_c1(ishell=1, ismstr=2, ish3n=2, idrill=0):
+    return line(I(ishell), I(ismstr), I(ish3n), I(idrill), I(0), blank(10), R(0.0))
+
+
+def psh_c2(hm=0.0):
+    return line(R(hm), R(0.0), R(0.0), R(0.0), R(0.0))
+
+
+def psh_c3(n=5, thick=1.0):
+    return line(I(n), blank(10), R(thick), R(0.0), blank(10), I(1), I(1), I(0))
+
+
+def pso_c1(isolid=1):
+    return line(I(isolid), I(4), I(0), I(0), I(0), I(0), I(0), I(1), R(0.0))
+
+
+def jc_c2(nu=0.3):
+    return line(R(210000.0), R(nu), I(0), I(0), R(0.0))
+
+
+def jc_c3(a=250.0, b=450.0, n=0.3, sigmax=0.0):
+    return line(R(a), R(b), R(n), R(0.0), R(sigmax))
+
+
+def jc_c4(c=0.0, eps0=0.0):
+    return line(R(c), R(eps0), I(0), I(0), R(0.0), R(0.0))
+
+
+def el_c2(e=70000.0, nu=0.33):
+    return line(R(e), R(nu))
+
+
+def units_line(m="Mg", length="mm", t="s"):
+    return line(S(m, 20), S(length, 20), S(t, 20))
+
+
+def law1_block(mid, tag_prefix, nu=0.33):
+    return [("/MAT/LAW1/%d" % mid, tag_prefix + "_KW"), "Aluminium (elastic)",
+            names(("RHO_I", 20), ("RHO_ref", 20)), (line(R(2.7e-9)), tag_prefix + "_C1"),
+            names(("E", 20), ("nu", 20)), (el_c2(nu=nu), tag_prefix + "_C2")]
+
+
+def base():
+    d = Deck()
+    d.add(RULER)
+    d.add("/BEGIN", "BEGIN")
+    d.add("TINY")
+    d.add(names(("INVERS", 10)))
+    d.add(line(I(2026)), "VERSION")
+    d.add(names(("Input_mass", 20), ("Input_length", 20), ("Input_time", 20)))
+    d.add(units_line(), "UNITS_IN")
+    d.add(names(("Work_mass", 20), ("Work_length", 20), ("Work_time", 20)))
+    d.add(units_line(), "UNITS_WORK")
+    d.add(RULER, "AFTER_BEGIN")
+    d.add("/TITLE", "TITLE_KW")
+    d.add("Tiny model for the invalid-deck tests: two shells and one brick")
+    d.add(RULER)
+    d.add("/NODE", "NODE_KW")
+    d.add(names(("node_ID", 10), ("Xc", 20), ("Yc", 20), ("Zc", 20)))
+    for n in NODES:
+        d.add(node_line(*n), "NODE_%d" % n[0])
+    d.add(RULER)
+    d.add("/SHELL/1", "SHELL_KW")
+    d.add(names(("shell_ID", 10), ("node_ID1", 10), ("node_ID2", 10), ("node_ID3", 10), ("node_ID4", 10),
+                ("", 10), ("PHI", 20), ("Thick", 20)))
+    for e in SHELLS:
+        d.add(shell_line(*e), "SHELL_%d" % e[0])
+    d.add("/BRICK/2", "BRICK_KW")
+    d.add(names(("brick_ID", 10), ("node_ID1", 10), ("node_ID2", 10), ("node_ID3", 10), ("node_ID4", 10),
+                ("node_ID5", 10), ("node_ID6", 10), ("node_ID7", 10), ("node_ID8", 10)))
+    d.add(brick_line(*BRICK), "BRICK_11")
+    d.add(RULER)
+    for pid, title in ((1, "Plate"), (2, "Block")):
+        d.add("/PART/%d" % pid, "PART%d_KW" % pid)
+        d.add(title)
+        d.add(names(("prop_ID", 10), ("mat_ID", 10), ("subset_ID", 10), ("Thick", 20)))
+        d.add(part_line(pid, pid), "PART%d" % pid)
+    d.add(RULER, "AFTER_PARTS")
+    d.add("/PROP/SHELL/1", "PSH_KW")
+    d.add("Plate shell 1 mm")
+    d.add(names(("Ishell", 10), ("Ismstr", 10), ("Ish3n", 10), ("Idrill", 10), ("Ipinch", 10), ("", 10),
+                ("P_Thick_Fail", 20)))
+    d.add(psh_c1(), "PSH_C1")
+    d.add(names(("Hm", 20), ("Hf", 20), ("Hr", 20), ("Dm", 20), ("Dn", 20)))
+    d.add(psh_c2(), "PSH_C2")
+    d.add(names(("N", 10), ("", 10), ("Thick", 20), ("Ashear", 20), ("", 10), ("Ithick", 10), ("Iplas", 10),
+                ("Ipos", 10)))
+    d.add(psh_c3(), "PSH_C3")
+    d.add("/PROP/SOLID/2", "PSO_KW")
+    d.add("Block solid")
+    d.add(names(("Isolid", 10), ("Ismstr", 10), ("Iale", 10), ("Icpre", 10), ("Itetra10", 10), ("Inpts", 10),
+                ("Itetra4", 10), ("Iframe", 10), ("dn", 20)))
+    d.add(pso_c1(), "PSO_C1")
+    d.add(names(("qa", 20), ("qb", 20), ("h", 20), ("LAMBDA_V", 20), ("MU_V", 20)))
+    d.add(line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0)), "PSO_C2")
+    d.add(names(("dtmin", 20), ("vdef_min", 20), ("vdef_max", 20), ("ASP_max", 20), ("COL_min", 20)))
+    d.add(line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0)), "PSO_C3")
+    d.add(RULER)
+    d.add("/MAT/PLAS_JOHNS/1", "JC_KW")
+    d.add("Steel (Johnson-Cook)")
+    d.add(names(("RHO_I", 20), ("RHO_ref", 20)))
+    d.add(line(R(7.85e-9)), "JC_C1")
+    d.add(names(("E", 20), ("nu", 20), ("Iflag", 10), ("flagVP", 10), ("Pmin", 20)))
+    d.add(jc_c2(), "JC_C2")
+    d.add(names(("a", 20), ("b", 20), ("n", 20), ("EPS_p_max", 20), ("SIG_max0", 20)))
+    d.add(jc_c3(), "JC_C3")
+    d.add(names(("c", 20), ("EPS_DOT_0", 20), ("ICC", 10), ("Fsmooth", 10), ("F_cut", 20), ("Chard", 20)))
+    d.add(jc_c4(), "JC_C4")
+    d.add(names(("m", 20), ("T_melt", 20), ("rhoC_p", 20), ("T_r", 20), ("T_max", 20)))
+    d.add(line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0)), "JC_C5")
+    d.extend(law1_block(2, "EL"))
+    d.add(RULER, "AFTER_MATS")
+    d.add("/GRNOD/NODE/1", "GRN1_KW")
+    d.add("Plate nodes (clamped)")
+    d.add(names(("node_ID1", 10), ("node_ID2", 10), ("node_ID3", 10), ("node_ID4", 10), ("node_ID5", 10),
+                ("node_ID6", 10)))
+    d.add(line(*[I(x) for x in (1, 2, 3, 4, 5, 6)]), "GRN1_L1")
+    d.add("/BCS/1", "BCS_KW")
+    d.add("Clamped plate")
+    d.add(names(("Tra rot", 10), ("skew_ID", 10), ("grnod_ID", 10)))
+    d.add(line(bcs_code("111", "111"), I(0), I(1)), "BCS_C1")
+    d.add(RULER, "BEFORE_END")
+    d.add("/END", "END")
+    return d
+
+
+def block_group():
+    return [("/GRNOD/PART/2", "GRP2_KW"), "Block nodes", names(("part_ID1", 10)), (line(I(2)), "GRP2_L1")]
+
+
+def type7(istf=4, igap=0, grnod=2, surf=1, stfac=1.0, tstart=0.0, tstop=0.0, inacti=0, ifric=0, ccards=(),
+          lagdt=False, iid=1):
+    """A TYPE7 (2026 layout) or LAGDT/TYPE7 interface, with /GRNOD/PART/2 and /SURF/PART/1 in front."""
+    rows = block_group()
+    rows += [("/SURF/PART/1", "SURF1_KW"), "Plate surface", names(("part_ID1", 10)), (line(I(1)), "SURF1_L1")]
+    if lagdt:
+        rows += [("/INTER/LAGDT/TYPE7/%d" % iid, "INT_KW"), "Block nodes on plate (LAGDT)",
+                 names(("grnd_IDs", 10), ("surf_IDm", 10), ("Istf", 10), ("", 10), ("Igap", 10), ("", 10),
+                       ("Ibag", 10), ("Idel", 10)),
+                 (line(I(grnod), I(surf), I(istf), blank(10), I(igap), blank(10), I(0), I(0)), "INT_C1"),
+                 names(("Fscalegap", 20), ("Gapmax", 20)), (line(R(0.0), R(0.0)), "INT_C2"),
+                 names(("Stmin", 20), ("Stmax", 20)), (line(R(0.0), R(0.0)), "INT_C3"),
+                 names(("Stfac", 20), ("Fric", 20), ("Gapmin", 20), ("Tstart", 20), ("Tstop", 20)),
+                 (line(R(stfac), R(0.1), R(0.0), R(tstart), R(tstop)), "INT_C5"),
+                 names(("IBC", 10), ("", 20), ("Inacti", 10), ("VISs", 20), ("VISf", 20), ("Bumult", 20)),
+                 (line(ibc_code(0, 0, 0), blank(20), I(inacti), R(0.0), R(0.0), R(0.0)), "INT_C6"),
+                 names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10)),
+                 (line(I(ifric), I(0), R(0.0), I(0)), "INT_C7")]
+    else:
+        rows += [("/INTER/TYPE7/%d" % iid, "INT_KW"), "Block nodes on plate",
+                 names(("grnd_IDs", 10), ("surf_IDm", 10), ("Istf", 10), ("Ithe", 10), ("Igap", 10), ("", 10),
+                       ("Ibag", 10), ("Idel", 10), ("Icurv", 10), ("Iadm", 10)),
+                 (line(I(grnod), I(surf), I(istf), I(0), I(igap), blank(10), I(0), I(0), I(0), I(0)), "INT_C1"),
+                 names(("Fscalegap", 20), ("Gap_max", 20), ("Fpenmax", 20), ("", 20), ("Itied", 10),
+                       ("Ists", 10)),
+                 (line(R(0.0), R(0.0), R(0.0), blank(20), I(0), I(0)), "INT_C2"),
+                 names(("Stmin", 20), ("Stmax", 20), ("%mesh_size", 20), ("dtmin", 20), ("Irem_gap", 10),
+                       ("Irem_i2", 10)),
+                 (line(R(0.0), R(0.0), R(0.0), R(0.0), I(0), I(0)), "INT_C3"),
+                 names(("Stfac", 20), ("Fric", 20), ("Gapmin", 20), ("Tstart", 20), ("Tstop", 20)),
+                 (line(R(stfac), R(0.1), R(0.0), R(tstart), R(tstop)), "INT_C5"),
+                 names(("IBC", 10), ("", 20), ("Inacti", 10), ("VISs", 20), ("VISf", 20), ("Bumult", 20)),
+                 (line(ibc_code(0, 0, 0), blank(20), I(inacti), R(0.0), R(0.0), R(0.0)), "INT_C6"),
+                 names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10), ("sens_ID", 10),
+                       ("fct_IDF", 10), ("AscaleF", 20), ("fric_ID", 10)),
+                 (line(I(ifric), I(0), R(0.0), I(0), I(0), I(0), R(0.0), I(0)), "INT_C7")]
+    if ccards:
+        rows += [names(("C1", 20), ("C2", 20), ("C3", 20), ("C4", 20), ("C5", 20)),
+                 (line(*[R(c) for c in ccards[:5]]), "INT_C8")]
+        if len(ccards) > 5:
+            rows += [names(("C6", 20)), (line(R(ccards[5])), "INT_C9")]
+    return rows
+
+
+def with_inter(d, **kw):
+    d.insert_before("BEFORE_END", type7(**kw))
+    return d
+
+
+def funct_rows(fid, points, title="Function", tag="F"):
+    rows = [("/FUNCT/%d" % fid, tag + "_KW"), title, names(("X", 20), ("Y", 20))]
+    for k, (x, y) in enumerate(points, 1):
+        rows.append((line(R(x), R(y)), "%s_P%d" % (tag, k)))
+    return rows
+
+
+# ---------------------------------------------------------------------------------------------------
+# The faults. Each returns (deck, fault text, [(code, tag)], extra files {relpath: (Deck, [(code, tag)])}).
+
+FAULTS = []
+
+
+def fault(name):
+    def reg(fn):
+        FAULTS.append((name, fn))
+        return fn
+    return reg
+
+
+@fault("truncated_card")
+def _():
+    d = base()
+    d.delete("EL_C1", "EL_C2", keep_first=True)
+    return d, "/MAT/LAW1/2 ends after its density card: the E, nu card is missing", [("RX502", "EL_KW")]
+
+
+@fault("letters_in_number")
+def _():
+    d = base()
+    d.set("PSH_C2", psh_c2(hm="0.O1"))
+    return d, "/PROP/SHELL/1 Hm written 0.O1 (letter O for a zero) in a real field", [("RX202", "PSH_C2")]
+
+
+@fault("letters_in_integer")
+def _():
+    d = base()
+    d.set("PSO_C1", pso_c1(isolid="1x"))
+    return d, "/PROP/SOLID/2 Isolid written 1x in an integer field", [("RX201", "PSO_C1")]
+
+
+@fault("real_overflow")
+def _():
+    d = base()
+    d.set("JC_C3", jc_c3(sigmax="1e400"))
+    return d, "/MAT/PLAS_JOHNS/1 SIG_max0 = 1e400 overflows a double", [("RX203", "JC_C3")]
+
+
+@fault("tab_in_fixed_field")
+def _():
+    d = base()
+    text = node_line(2, 10.0, 0.0, 0.0)
+    assert text[10] == " "
+    d.set("NODE_2", text[:10] + "\t" + text[11:])
+    return d, "node 2: a tab character in column 11 (first column of X)", [("RX104", "NODE_2")]
+
+
+@fault("unknown_keyword")
+def _():
+    d = base()
+    d.insert_after("AFTER_PARTS", [("/FOOBAR/1", "BAD_KW"), "Not a Radioss keyword", line(I(1), I(2))])
+    return d, "/FOOBAR/1 is not a keyword (its block is skipped)", [("RX301", "BAD_KW")]
+
+
+@fault("unsupported_keyword_law36")
+def _():
+    d = base()
+    rows = [("/MAT/LAW36/3", "L36_KW"), "Tabulated steel (not supported by radx)",
+            names(("RHO_I", 20), ("RHO_ref", 20)), line(R(7.85e-9)),
+            names(("E", 20), ("nu", 20), ("Eps_p_max", 20), ("Eps_t", 20), ("Eps_m", 20)),
+            line(R(210000.0), R(0.3), R(0.0), R(0.0), R(0.0)),
+            names(("N_funct", 10), ("F_smooth", 10), ("C_hard", 20), ("F_cut", 20), ("Eps_f", 20), ("", 10),
+                  ("VP", 10)),
+            line(I(1), I(0), R(0.0), R(0.0), R(0.0), blank(10), I(0)),
+            names(("fct_IDp", 10), ("Fscale", 20), ("Fct_IDE", 10), ("EInf", 20), ("CE", 20)),
+            line(I(0), R(0.0), I(0), R(0.0), R(0.0)),
+            names(("fct_ID1", 10)), line(I(1)),
+            names(("Fscale1", 20)), line(R(1.0)),
+            names(("Eps_dot1", 20)), line(R(0.0))]
+    rows += funct_rows(1, [(0.0, 250.0), (0.1, 350.0), (1.0, 600.0)], "Yield stress vs plastic strain")
+    d.insert_before("AFTER_MATS", rows)
+    return d, "/MAT/LAW36/3 (with the /FUNCT/1 it names) is a real Radioss keyword radx does not read", \
+        [("RX302", "L36_KW")]
+
+
+@fault("include_loop_a")
+def _():
+    d = base()
+    k0 = d.index("EL_KW")
+    k1 = d.index("EL_C2")
+    del d.rows[k0:k1 + 1]
+    d.insert_before("AFTER_MATS", [("#include inc/include_loop_b.rad", "INC")])
+    b = Deck()
+    b.add("# Included by include_loop_a.rad. Holds /MAT/LAW1/2, then includes include_loop_a.rad again:")
+    b.add("# the include loop closes here. Paths are relative to the file holding the #include.")
+    b.extend(law1_block(2, "EL"))
+    b.add("#include ../include_loop_a.rad", "LOOP")
+    return d, "include_loop_a.rad includes inc/include_loop_b.rad, which includes include_loop_a.rad", \
+        [("RX102", "LOOP", "inc/include_loop_b.rad")], {"inc/include_loop_b.rad": b}
+
+
+@fault("missing_include")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", [("#include inc/no_such_file.rad", "INC")])
+    return d, "#include of a file that does not exist", [("RX103", "INC")]
+
+
+@fault("no_end_truncated")
+def _():
+    d = base()
+    d.delete("BEFORE_END", "END")
+    return d, "the file stops after /BCS/1: no /END (error at the last line of the file)", [("RX106", "BCS_C1")]
+
+
+@fault("missing_begin")
+def _():
+    d = base()
+    d.delete("BEGIN", "AFTER_BEGIN")
+    return d, "no /BEGIN (version and units missing); pointed at the first keyword line", \
+        [("RX105", "TITLE_KW")]
+
+
+@fault("unknown_unit")
+def _():
+    d = base()
+    d.set("UNITS_IN", units_line(length="furlong"))
+    return d, "/BEGIN input length unit 'furlong' is not a known unit", [("RX506", "UNITS_IN")]
+
+
+@fault("duplicate_node_id")
+def _():
+    d = base()
+    d.insert_after("NODE_18", [(node_line(3, 20.0, 0.0, 0.0), "DUP")])
+    return d, "node 3 defined twice (same coordinates); the second line is the error", [("RX401", "DUP")]
+
+
+@fault("duplicate_element_id")
+def _():
+    d = base()
+    d.set("SHELL_2", shell_line(1, 2, 3, 6, 5))
+    return d, "the second shell reuses element id 1", [("RX401", "SHELL_2")]
+
+
+@fault("duplicate_mat_id")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", law1_block(2, "EL2"))
+    return d, "/MAT/LAW1/2 defined twice; the second keyword line is the error", [("RX401", "EL2_KW")]
+
+
+@fault("missing_reference_part_mat")
+def _():
+    d = base()
+    d.set("PART2", part_line(2, 99))
+    return d, "/PART/2 names material 99, which does not exist", [("RX402", "PART2")]
+
+
+@fault("part_missing_property")
+def _():
+    d = base()
+    d.set("PART2", part_line(99, 2))
+    return d, "/PART/2 names property 99, which does not exist", [("RX402", "PART2")]
+
+
+@fault("brick_missing_part")
+def _():
+    d = base()
+    d.set("BRICK_KW", "/BRICK/7")
+    return d, "/BRICK/7: the element block names part 7, which does not exist (id on the keyword line)", \
+        [("RX402", "BRICK_KW")]
+
+
+@fault("element_missing_node")
+def _():
+    d = base()
+    d.insert_after("SHELL_2", [(shell_line(3, 3, 99, 6, 5), "SHELL_3")])
+    return d, "shell 3 uses node 99, which does not exist", [("RX406", "SHELL_3")]
+
+
+@fault("bcs_missing_group")
+def _():
+    d = base()
+    d.set("BCS_C1", line(bcs_code("111", "111"), I(0), I(99)))
+    return d, "/BCS/1 names node group 99, which does not exist", [("RX402", "BCS_C1")]
+
+
+@fault("empty_group")
+def _():
+    d = base()
+    d.delete("GRN1_L1")
+    return d, "/GRNOD/NODE/1 (used by /BCS/1) lists no node", [("RX403", "GRN1_KW")]
+
+
+@fault("surf_part_on_solid")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", [("/SURF/PART/1", "SURF_KW"), "Block as a /SURF/PART (must be /SURF/PART/EXT)",
+                                   names(("part_ID1", 10)), (line(I(2)), "SURF_L1")])
+    return d, "/SURF/PART/1 lists part 2, a solid part (needs /SURF/PART/EXT)", [("RX407", "SURF_L1")]
+
+
+@fault("degenerate_brick_zero_volume")
+def _():
+    d = base()
+    for nid, x, y in ((15, 3.0, -1.0), (16, 17.0, -1.0), (17, 17.0, 11.0), (18, 3.0, 11.0)):
+        d.set("NODE_%d" % nid, node_line(nid, x, y, 1.5))
+    return d, "brick 11 is flat: its eight (distinct) nodes all lie in the plane z = 1.5", [("RX601", "BRICK_11")]
+
+
+@fault("inverted_brick_negative_volume")
+def _():
+    d = base()
+    d.set("BRICK_11", brick_line(11, 15, 16, 17, 18, 11, 12, 13, 14))
+    return d, "brick 11 lists its top face first: negative volume", [("RX601", "BRICK_11")]
+
+
+@fault("zero_area_shell")
+def _():
+    d = base()
+    d.set("NODE_1", node_line(1, 10.0, -10.0, 0.0))
+    d.set("NODE_4", node_line(4, 10.0, 20.0, 0.0))
+    return d, "shell 1: nodes 1, 2, 5, 4 moved onto one line (x = 10): zero area", [("RX602", "SHELL_1")]
+
+
+@fault("negative_thickness")
+def _():
+    d = base()
+    d.set("PSH_C3", psh_c3(thick=-1.0))
+    return d, "/PROP/SHELL/1 Thick = -1", [("RX504", "PSH_C3")]
+
+
+@fault("zero_shell_thickness")
+def _():
+    d = base()
+    d.set("PSH_C3", psh_c3(thick=0.0))
+    d.set("SHELL_1", shell_line(1, 1, 2, 5, 4, thick=0.0))
+    d.set("SHELL_2", shell_line(2, 2, 3, 6, 5, thick=1.0))
+    return d, "shell 1 has Thick 0 on its element card and in /PROP/SHELL/1 (shell 2 gives 1.0 on its card)", \
+        [("RX504", "SHELL_1")]
+
+
+@fault("shell_n_over_10")
+def _():
+    d = base()
+    d.set("PSH_C3", psh_c3(n=12))
+    return d, "/PROP/SHELL/1 N = 12 integration points (0..10 allowed)", [("RX501", "PSH_C3")]
+
+
+@fault("poisson_half")
+def _():
+    d = base()
+    d.set("EL_C2", el_c2(nu=0.5))
+    return d, "/MAT/LAW1/2 nu = 0.5 (Radioss silently uses 0.499)", [("RX503", "EL_C2")]
+
+
+@fault("poisson_over_half")
+def _():
+    d = base()
+    d.set("JC_C2", jc_c2(nu=0.6))
+    return d, "/MAT/PLAS_JOHNS/1 nu = 0.6", [("RX503", "JC_C2")]
+
+
+@fault("jc_c_without_epsdot0")
+def _():
+    d = base()
+    d.set("JC_C4", jc_c4(c=0.014, eps0=0.0))
+    return d, "/MAT/PLAS_JOHNS/1 c = 0.014 with EPS_DOT_0 = 0", [("RX502", "JC_C4")]
+
+
+@fault("jc_n_over_one")
+def _():
+    d = base()
+    d.set("JC_C3", jc_c3(n=1.5))
+    return d, "/MAT/PLAS_JOHNS/1 hardening exponent n = 1.5 (must be <= 1)", [("RX501", "JC_C3")]
+
+
+@fault("funct_not_increasing")
+def _():
+    d = base()
+    rows = funct_rows(1, [(0.0, 0.0), (0.001, 1.0), (0.0005, 1.0), (0.01, 1.0)], "Gravity ramp")
+    rows += [("/GRAV/1", "GRAV_KW"), "Gravity through /FUNCT/1",
+             names(("funct_IDT", 10), ("DIR", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10), ("", 10),
+                   ("Ascale_x", 20), ("Fscale_y", 20)),
+             line(I(1), S("Z", 10), I(0), I(0), I(0), blank(10), R(0.0), R(-9810.0))]
+    d.insert_before("BEFORE_END", rows)
+    return d, "/FUNCT/1: the third X (0.0005) is below the second (0.001)", [("RX505", "F_P3")]
+
+
+def impvel_rows(funct):
+    return block_group() + [
+        ("/IMPVEL/1", "IMP_KW"), "Block pushed down",
+        names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+              ("frame_ID", 10), ("Icoor", 10)),
+        (line(I(funct), S("Z", 10), I(0), I(0), I(2), I(0), I(0)), "IMP_C1"),
+        names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
+        (line(R(0.0), R(-1000.0), R(0.0), R(0.0)), "IMP_C2")]
+
+
+@fault("impvel_no_function")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", impvel_rows(0))
+    return d, "/IMPVEL/1 with funct_IDT = 0 (a function is required)", [("RX502", "IMP_C1")]
+
+
+@fault("impvel_missing_function")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", impvel_rows(99))
+    return d, "/IMPVEL/1 names function 99, which does not exist", [("RX402", "IMP_C1")]
+
+
+@fault("inter_missing_surface")
+def _():
+    return with_inter(base(), surf=99), "/INTER/TYPE7/1 names surface 99, which does not exist", \
+        [("RX402", "INT_C1")]
+
+
+@fault("inter_missing_group")
+def _():
+    return with_inter(base(), grnod=99), "/INTER/TYPE7/1 names node group 99, which does not exist", \
+        [("RX402", "INT_C1")]
+
+
+@fault("istf_7")
+def _():
+    return with_inter(base(), istf=7), "/INTER/TYPE7/1 Istf = 7 (0..5 allowed)", [("RX501", "INT_C1")]
+
+
+@fault("igap_3")
+def _():
+    return with_inter(base(), igap=3), "/INTER/TYPE7/1 Igap = 3 (0..2 allowed)", [("RX501", "INT_C1")]
+
+
+@fault("istf1_stfac_zero")
+def _():
+    return with_inter(base(), istf=1, stfac=0.0), \
+        "/INTER/TYPE7/1 Istf = 1 (stiffness given in Stfac) with Stfac = 0", [("RX502", "INT_C5")]
+
+
+@fault("inter_tstop_before_tstart")
+def _():
+    return with_inter(base(), tstart=0.001, tstop=0.0005), "/INTER/TYPE7/1 Tstart = 0.001, Tstop = 0.0005", \
+        [("RX507", "INT_C5")]
+
+
+@fault("inacti_4")
+def _():
+    return with_inter(base(), inacti=4), "/INTER/TYPE7/1 Inacti = 4 (0, 1, 2, 3, 5, 6 allowed)", \
+        [("RX501", "INT_C6")]
+
+
+@fault("lagdt_inacti_4")
+def _():
+    return with_inter(base(), inacti=4, lagdt=True), \
+        "/INTER/LAGDT/TYPE7/1 Inacti = 4 (0, 1, 2, 3, 5, 6 allowed)", [("RX501", "INT_C6")]
+
+
+@fault("ifric_4")
+def _():
+    return with_inter(base(), ifric=4), \
+        "/INTER/TYPE7/1 Ifric = 4 (0..3 allowed); no C1..C6 cards follow", [("RX501", "INT_C7")]
+
+
+@fault("ifric3_c5_zero")
+def _():
+    return with_inter(base(), ifric=3, ccards=(0.2, 0.15, 0.3, 0.1, 0.0, 2.0)), \
+        "/INTER/TYPE7/1 Renard friction (Ifric 3) with C5 = V_cr1 = 0", [("RX507", "INT_C8")]
+
+
+@fault("several_errors")
+def _():
+    d = base()
+    d.insert_after("NODE_18", [(node_line(3, 20.0, 0.0, 0.0), "DUP")])
+    d.insert_after("AFTER_PARTS", [("/FOOBAR/1", "BAD_KW"), "Not a Radioss keyword", line(I(1), I(2))])
+    d.set("EL_C2", el_c2(nu=0.6))
+    d.insert_before("BEFORE_END", funct_rows(5, [(0.0, 0.0), (0.002, 1.0), (0.002, 2.0)], "Bad function"))
+    return d, "four independent errors: duplicate node 3, unknown /FOOBAR, nu = 0.6 on /MAT/LAW1/2, " \
+        "/FUNCT/5 X not increasing", [("RX401", "DUP"), ("RX301", "BAD_KW"), ("RX503", "EL_C2"),
+                                      ("RX505", "F_P3")]
+
+
+# ---------------------------------------------------------------------------------------------------
+
+
+def wrap(text, width=96):
+    out, cur = [], ""
+    for w in text.split():
+        if cur and len(cur) + 1 + len(w) > width:
+            out.append(cur)
+            cur = w
+        else:
+            cur = (cur + " " + w) if cur else w
+    if cur:
+        out.append(cur)
+    return out
+
+
+def render(name, d, what, expects, extras):
+    """Returns (lines, [(code, line, file or None)]). Expected lines are computed from tags."""
+    nexp = len(expects)
+    fault_lines = ["# fault: " + x for x in wrap(what, 90)]
+    head_len = nexp + len(fault_lines)
+    resolved = []
+    for e in expects:
+        code, tag = e[0], e[1]
+        if len(e) > 2:
+            resolved.append((code, extras[e[2]].index(tag) + 1, e[2]))
+        else:
+            resolved.append((code, d.index(tag) + head_len + 1, None))
+    resolved.sort(key=lambda r: (r[2] or "", r[1], r[0]))
+    head = []
+    for code, ln, f in resolved:
+        head.append("# expect: %s line %d%s" % (code, ln, (" file " + f) if f else ""))
+    lines = head + fault_lines + d.texts()
+    for code, ln, f in resolved:
+        if f is None:
+            assert 1 <= ln <= len(lines)
+    return lines, resolved
+
+
+def write(path, lines):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w", newline="\n") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def main(argv):
+    here = os.path.dirname(os.path.abspath(__file__))
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--out", default=os.path.join(here, "..", "decks", "invalid"))
+    p.add_argument("--base", help="also write the fault-free base deck to this file")
+    args = p.parse_args(argv)
+    out = os.path.normpath(args.out)
+    table = []
+    for name, fn in FAULTS:
+        res = fn()
+        d, what, expects = res[0], res[1], res[2]
+        extras = res[3] if len(res) > 3 else {}
+        lines, resolved = render(name, d, what, expects, extras)
+        write(os.path.join(out, name + ".rad"), lines)
+        for rel, deck in extras.items():
+            write(os.path.join(out, rel), deck.texts())
+        table.append((name, what, resolved, sorted(extras)))
+    if args.base:
+        write(args.base, base().texts())
+    write(os.path.join(out, "README.md"), readme(table))
+    print("wrote %d invalid decks into %s" % (len(table), out))
+    return 0
+
+
+def readme(table):
+    L = ["# Invalid starter decks",
+         "",
+         "Each `.rad` file here is a small starter deck (format 2026, units Mg mm s) that must be REJECTED. It is",
+         "the same tiny valid model every time (two 4-node shells of part 1 with Johnson-Cook steel, one brick",
+         "of part 2 with elastic aluminium, plate nodes clamped by `/BCS`) with one fault put in, so that it",
+         "should produce only the diagnostics listed (`several_errors.rad` has four independent faults, and",
+         "all four must be reported).",
+         "",
+         "The first lines of each deck state what the reader must report, one line per error:",
+         "",
+         "```",
+         "# expect: RX402 line 37",
+         "# expect: RX102 line 5 file inc/include_loop_b.rad",
+         "# fault: free text describing the fault",
+         "```",
+         "",
+         "* the code is a `Diag` of `parser/diagnostics.hpp`; the line is 1-based, in the deck itself unless",
+         "  `file` names another file (relative to this folder);",
+         "* the line is the data line that holds the bad value or the bad reference; the keyword line for",
+         "  keyword-level faults (unknown or unsupported keyword, empty group, a block that ends before a",
+         "  required card, an id given on the keyword line); the last line of the file for a missing `/END`;",
+         "  the `#include` line that closes the loop, or that names a missing file;",
+         "* only errors are listed. Warnings and notes are not part of the expectation.",
+         "",
+         "Files that are only included sit in `inc/`: they are not decks and must not be run on their own.",
+         "`#include` paths are relative to the folder of the file that holds the `#include` line.",
+         "",
+         "The decks are generated by `scripts/make_invalid_decks.py` (edit the script, not the decks) and",
+         "checked by `scripts/check_decks.py`, an independent reader that re-derives the expected",
+         "diagnostics from the deck text.",
+         "",
+         "| file | fault | expected |",
+         "|---|---|---|"]
+    for name, what, resolved, extras in table:
+        exp = "<br>".join("%s line %d%s" % (c, ln, (" of " + f) if f else "") for c, ln, f in resolved)
+        files = "`%s.rad`" % name + "".join(" + `%s`" % x for x in extras)
+        L.append("| %s | %s | %s |" % (files, what.replace("|", "\\|"), exp))
+    L += ["", "%d decks." % len(table), ""]
+    return L
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

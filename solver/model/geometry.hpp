@@ -1,0 +1,72 @@
+// Element geometry shared by the starter's checks and masses and by the engine. Formulas follow
+// OpenRadioss's one-point elements (shared/spec/elements.md):
+//   quad area      A = 1/2 |d13 x d24|                         (d13 = x3 - x1, d24 = x4 - x2)
+//   triangle area  A = 1/2 |d12 x d13|
+//   brick volume   V = j1 . (j2 x j3) / 64 = 8 det J(0)        with d17 = x7 - x1, d28 = x8 - x2,
+//                  j1 = d17 + d28 - d35 - d46, j2 = d17 + d46 + d28 + d35, j3 = d17 + d46 - d28 - d35
+// The one-point brick volume is not the exact trilinear volume of a distorted brick; it is the volume
+// the element uses, so the mass and the density agree with the element.
+#pragma once
+
+#include <array>
+#include <cmath>
+
+namespace radx::model {
+
+using Vec3 = std::array<double, 3>;
+
+inline Vec3 sub(const Vec3& a, const Vec3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+inline Vec3 add(const Vec3& a, const Vec3& b) {
+  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+}
+inline Vec3 scale(const Vec3& a, double s) {
+  return {a[0] * s, a[1] * s, a[2] * s};
+}
+inline double dot(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double norm(const Vec3& a) {
+  return std::sqrt(dot(a, a));
+}
+
+inline double quad_area(const Vec3& x1, const Vec3& x2, const Vec3& x3, const Vec3& x4) {
+  return 0.5 * norm(cross(sub(x3, x1), sub(x4, x2)));
+}
+inline double triangle_area(const Vec3& x1, const Vec3& x2, const Vec3& x3) {
+  return 0.5 * norm(cross(sub(x2, x1), sub(x3, x1)));
+}
+// Unnormalised quad normal d13 x d24 (its length is twice the area).
+inline Vec3 quad_normal(const Vec3& x1, const Vec3& x2, const Vec3& x3, const Vec3& x4) {
+  return cross(sub(x3, x1), sub(x4, x2));
+}
+
+inline double brick_volume(const std::array<Vec3, 8>& x) {
+  const Vec3 d17 = sub(x[6], x[0]);
+  const Vec3 d28 = sub(x[7], x[1]);
+  const Vec3 d35 = sub(x[4], x[2]);
+  const Vec3 d46 = sub(x[5], x[3]);
+  const Vec3 j1 = sub(add(d17, d28), add(d35, d46));
+  const Vec3 j2 = add(add(d17, d46), add(d28, d35));
+  const Vec3 j3 = sub(add(d17, d46), add(d28, d35));
+  return dot(j1, cross(j2, j3)) / 64.0;
+}
+
+// The six faces of a brick, node positions 0..7, ordered so that the right-hand normal points out of
+// a positively oriented brick (nodes 1-4 bottom counter-clockwise seen from outside below... i.e. the
+// normal of 1-2-3-4 by the right-hand rule points to 5-8 for a positive volume, so the bottom face is
+// written reversed).
+inline constexpr std::array<std::array<int, 4>, 6> kBrickFaces = {{
+    {0, 3, 2, 1},  // bottom (1-4 reversed)
+    {4, 5, 6, 7},  // top
+    {0, 1, 5, 4},
+    {1, 2, 6, 5},
+    {2, 3, 7, 6},
+    {3, 0, 4, 7},
+}};
+
+}  // namespace radx::model

@@ -1,0 +1,65 @@
+#include "solver/model/masses.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "solver/model/geometry.hpp"
+
+namespace radx::model {
+
+void compute_lumped_masses(Model& m) {
+  m.node_mass.assign(m.nodes.size(), 0.0);
+  auto X = [&](std::int32_t n) { return Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]}; };
+  auto rho_of = [&](std::int32_t part) -> double {
+    if (part == kNone) return 0.0;
+    const auto mat = m.parts[part].material;
+    return mat == kNone ? 0.0 : m.materials[mat].rho;
+  };
+  auto shell_t = [&](const ElementBlock& b, std::size_t e) -> double {
+    if (b.thickness[e] > 0) return b.thickness[e];
+    const auto part = b.part[e];
+    if (part == kNone || m.parts[part].property == kNone) return 0.0;
+    return m.properties[m.parts[part].property].shell.thickness;
+  };
+  auto valid = [](const ElementBlock& b, std::size_t e) {
+    for (int k = 0; k < b.npe(); ++k)
+      if (b.conn[e * static_cast<std::size_t>(b.npe()) + static_cast<std::size_t>(k)] < 0) return false;
+    return b.part[e] != kNone;
+  };
+  for (std::size_t e = 0; e < m.shells.size(); ++e) {
+    if (!valid(m.shells, e)) continue;
+    const auto* c = &m.shells.conn[4 * e];
+    const double me =
+        rho_of(m.shells.part[e]) * shell_t(m.shells, e) * quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[3]));
+    for (int k = 0; k < 4; ++k) m.node_mass[c[k]] += 0.25 * me;
+    m.parts[m.shells.part[e]].mass += me;
+  }
+  for (std::size_t e = 0; e < m.shells3.size(); ++e) {
+    if (!valid(m.shells3, e)) continue;
+    const auto* c = &m.shells3.conn[3 * e];
+    const Vec3 x[3] = {X(c[0]), X(c[1]), X(c[2])};
+    const double me = rho_of(m.shells3.part[e]) * shell_t(m.shells3, e) * triangle_area(x[0], x[1], x[2]);
+    for (int k = 0; k < 3; ++k) {
+      const auto a = sub(x[(k + 1) % 3], x[k]);
+      const auto b = sub(x[(k + 2) % 3], x[k]);
+      const double na = norm(a), nb = norm(b);
+      const double cosang = (na > 0 && nb > 0) ? std::clamp(dot(a, b) / (na * nb), -1.0, 1.0) : 1.0;
+      m.node_mass[c[k]] += me * std::acos(cosang) / std::numbers::pi;
+    }
+    m.parts[m.shells3.part[e]].mass += me;
+  }
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+    if (!valid(m.bricks, e)) continue;
+    const auto* c = &m.bricks.conn[8 * e];
+    std::array<Vec3, 8> x{};
+    for (int k = 0; k < 8; ++k) x[k] = X(c[k]);
+    const double me = rho_of(m.bricks.part[e]) * std::max(0.0, brick_volume(x));
+    for (int k = 0; k < 8; ++k) m.node_mass[c[k]] += 0.125 * me;
+    m.parts[m.bricks.part[e]].mass += me;
+  }
+  m.total_mass = 0;
+  for (const auto& p : m.parts) m.total_mass += p.mass;
+}
+
+}  // namespace radx::model

@@ -1,0 +1,310 @@
+// The validated model: what the starter produces and the engine runs. Immutable once the starter has
+// finished. User ids live only at the edges (ids arrays and IdMap); everything else refers to other
+// objects by dense 0-based index. All values are in work units. Depends on nothing of ours.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "solver/model/id_map.hpp"
+
+namespace radx::model {
+
+inline constexpr std::int32_t kNone = -1;  // "no object" for an optional index
+inline constexpr double kNever = 1e30;     // time that never comes (Tstop of an interface, ...)
+
+struct Units {
+  // SI factor of one work unit, and its name as written in /BEGIN.
+  double mass = 1.0, length = 1.0, time = 1.0;
+  std::string mass_name = "kg", length_name = "m", time_name = "s";
+};
+
+struct Nodes {
+  std::vector<std::int64_t> id;
+  std::vector<double> x, y, z;  // initial coordinates
+  IdMap index;
+  [[nodiscard]] std::size_t size() const { return id.size(); }
+};
+
+enum class ElementType : std::uint8_t { Shell4 = 0, Shell3 = 1, Brick8 = 2 };
+[[nodiscard]] constexpr int nodes_per_element(ElementType t) {
+  return t == ElementType::Shell4 ? 4 : (t == ElementType::Shell3 ? 3 : 8);
+}
+
+// All elements of one type, element-major connectivity (conn[e * npe + k], dense node indices).
+struct ElementBlock {
+  ElementType type = ElementType::Shell4;
+  std::vector<std::int64_t> id;
+  std::vector<std::int32_t> part;  // dense part index
+  std::vector<std::int32_t> conn;
+  std::vector<double> thickness;  // shells: element-card thickness, 0 = property thickness
+  std::vector<double> phi;        // shells: material angle (degrees)
+  IdMap index;
+  [[nodiscard]] std::size_t size() const { return id.size(); }
+  [[nodiscard]] int npe() const { return nodes_per_element(type); }
+};
+
+enum class MaterialLaw : std::uint8_t { Elastic = 1, JohnsonCook = 2 };
+
+struct Material {
+  std::int64_t id = 0;
+  std::string title;
+  MaterialLaw law = MaterialLaw::Elastic;
+  std::string keyword;  // as written, e.g. /MAT/PLAS_JOHNS
+  double rho = 0, rho_ref = 0, young = 0, poisson = 0;
+  double shear = 0, bulk = 0;  // derived: G = E/2(1+nu), K = E/3(1-2nu)
+  // Johnson-Cook (law 2). sigma_y = (a + b eps_p^n)(1 + c ln(epsdot/epsdot0))(1 - T*^m), capped.
+  int iflag = 0, flag_vp = 2, icc = 1, fsmooth = 0;
+  double a = 0, b = 0, n = 1, eps_p_max = 1e20, sig_max0 = 1e20;
+  double sig_y_input = 0, uts = 0, e_uts = 0;  // Iflag = 1 input, kept for the listing
+  double c = 0, eps_dot_0 = 0, f_cut = 0, chard = 0, p_min = -1e20;
+  double m_temp = 1, t_melt = 1e20, rho_cp = 0, t_ref = 300, t_max = 1e20;
+};
+
+enum class PropertyKind : std::uint8_t { Shell = 1, Solid = 14 };
+
+struct ShellProperty {
+  int ishell = 1, ismstr = 2, ish3n = 2, idrill = 0, ipinch = 0, n_ip = 0, ithick = 2, iplas = 2, ipos = 0;
+  double p_thick_fail = 0.999999, hm = 0.01, hf = 0.01, hr = 0.01, dm = 0, dn = 0;
+  double thickness = 0, ashear = 5.0 / 6.0;
+};
+
+struct SolidProperty {
+  int isolid = 1, ismstr = 4, icpre = 0, iframe = 1, inpts = 0, itetra4 = 1000, itetra10 = 1000, iale = 0;
+  double qa = 1.1, qb = 0.05, h = 0.1, lambda_v = 0, mu_v = 0, dn = 0, dt_min = 0;
+};
+
+struct Property {
+  std::int64_t id = 0;
+  std::string title;
+  PropertyKind kind = PropertyKind::Shell;
+  ShellProperty shell;
+  SolidProperty solid;
+};
+
+struct Part {
+  std::int64_t id = 0;
+  std::string title;
+  std::int32_t property = kNone;
+  std::int32_t material = kNone;
+  std::int32_t subset = kNone;
+  double contact_thickness = 0;  // /PART Thick: used only for contact gaps
+  // Computed by the starter.
+  double mass = 0;
+  std::int64_t element_count = 0;
+};
+
+struct Subset {
+  std::int64_t id = 0;
+  std::string title;
+  std::vector<std::int32_t> children;  // dense subset indices
+  std::vector<std::int32_t> parts;     // parts directly in this subset
+};
+
+struct NodeGroup {
+  std::int64_t id = 0;
+  std::string title;
+  std::string kind;                 // NODE, PART, GRNOD, BOX, GENE, ...
+  std::vector<std::int32_t> nodes;  // sorted, unique dense node indices
+};
+
+struct Box {
+  std::int64_t id = 0;
+  std::string title;
+  std::array<double, 3> lo{}, hi{};
+};
+
+// A main-surface segment. Triangles repeat their third node (n4 == n3).
+enum class SegmentOwner : std::uint8_t { None = 0, Shell4 = 1, Shell3 = 2, Brick8 = 3 };
+struct Surface {
+  std::int64_t id = 0;
+  std::string title;
+  std::string kind;  // PART, PART/EXT, SEG
+  std::vector<std::array<std::int32_t, 4>> segments;
+  std::vector<SegmentOwner> owner_type;  // element type behind each segment
+  std::vector<std::int32_t> owner;       // element index in its block (kNone for /SURF/SEG without one)
+};
+
+struct Function {
+  std::int64_t id = 0;
+  std::string title;
+  std::vector<double> x, y;
+};
+
+struct BoundaryCondition {
+  std::int64_t id = 0;
+  std::string title;
+  std::array<std::uint8_t, 6> fixed{};  // Tx Ty Tz Rx Ry Rz
+  std::int64_t skew = 0;
+  std::int32_t group = kNone;
+};
+
+// Direction codes: 0..2 translations X Y Z, 3..5 rotations XX YY ZZ.
+struct ImposedVelocity {
+  std::int64_t id = 0;
+  std::string title;
+  std::int32_t function = kNone;
+  int dir = 0;
+  std::int64_t skew = 0, sensor = 0, frame = 0;
+  int icoor = 0;
+  std::int32_t group = kNone;
+  double ascale_x = 1, fscale_y = 1, t_start = 0, t_stop = kNever;
+};
+
+struct InitialVelocity {
+  std::int64_t id = 0;
+  std::string title;
+  std::array<double, 3> v{};
+  std::int32_t group = kNone;
+  std::int64_t skew = 0, sensor = 0;
+  double t_start = 0;
+};
+
+struct ConcentratedLoad {
+  std::int64_t id = 0;
+  std::string title;
+  std::int32_t function = kNone;
+  int dir = 0;
+  std::int64_t skew = 0, sensor = 0;
+  std::int32_t group = kNone;
+  int itypfun = 1;
+  double ascale_x = 1, fscale_y = 1;
+};
+
+struct PressureLoad {
+  std::int64_t id = 0;
+  std::string title;
+  std::int32_t surface = kNone;
+  std::int32_t function = kNone;
+  std::int64_t sensor = 0;
+  int ipinch = 0, idel = 1, itypfun = 1;
+  double ascale_x = 1, fscale_y = 1;
+};
+
+struct Gravity {
+  std::int64_t id = 0;
+  std::string title;
+  std::int32_t function = kNone;  // kNone: constant
+  int dir = 0;
+  std::int64_t skew = 0, sensor = 0;
+  std::int32_t group = kNone;  // kNone: all nodes
+  double ascale_x = 1, fscale_y = 1;
+};
+
+struct RigidWall {
+  std::int64_t id = 0;
+  std::string title;
+  std::int32_t node = kNone;  // moving wall node, kNone for a fixed wall
+  int slide = 0, iform = 0, ifq = 0;
+  std::int32_t group1 = kNone, group2 = kNone;
+  double distance = 0, friction = 0, diameter = 0, ffac = 0, mass = 0;
+  std::array<double, 3> m{}, m1{}, v0{}, normal{};
+  std::vector<std::int32_t> secondary;  // resolved secondary nodes (group1 + distance - group2)
+};
+
+struct RigidBody {
+  std::int64_t id = 0;
+  std::string title;
+  std::int32_t main_node = kNone;
+  std::int64_t sensor = 0, skew = 0;
+  int ispher = 2, ikrem = 0, icog = 1, ioptoff = 0, iexpams = 0, ifail = 0;
+  double mass = 0;
+  std::array<double, 6> inertia{};  // Jxx Jyy Jzz Jxy Jyz Jxz (added)
+  double fn = 1e20, ft = 1e20, exp_n = 2, exp_t = 2;
+  std::int32_t group = kNone;
+  std::int32_t surface = kNone;
+  std::vector<std::int32_t> secondary;  // main node removed
+};
+
+enum class ThKind : std::uint8_t { Node, Part, Inter, Rwall, Shell, Subset };
+struct TimeHistoryGroup {
+  std::int64_t id = 0;
+  std::string title;
+  ThKind kind = ThKind::Node;
+  std::vector<std::string> variables;  // expanded (DEF replaced)
+  std::vector<std::int32_t> objects;   // dense indices of the objects of `kind`
+};
+
+// /INTER/TYPE7 and /INTER/LAGDT/TYPE7 as one definition (type7-lagdt.md section 3), plus what the
+// starter computes for it (sections 4.1, 4.2, 4.6).
+struct Interface {
+  std::int64_t id = 0;
+  std::string title;
+  bool lagdt = false;
+  std::int32_t secondary_group = kNone;
+  std::int32_t main_surface = kNone;
+  int istf = 0, igap = 0, ibag = 0, idel = 0, ithe = 0, icurv = 0, iadm = 0, itied = 0, ists = 0;
+  double fscale_gap = 1.0, gap_max = 0, fpenmax = 0;
+  double stmin = 0, stmax = 1e30, mesh_size_pct = 0, dt_min = 0;
+  int irem_gap = 0, irem_i2 = 0;
+  double stfac = 1.0, fric = 0, gapmin_input = 0, t_start = 0, t_stop = kNever;
+  std::array<std::uint8_t, 3> ibc{};
+  int inacti = 0;
+  double vis_s = 0.05, vis_f = 1.0, bumult = 0.2;
+  int ifric = 0, ifiltr = 0, iform = 1;
+  double xfreq = 0;
+  std::array<double, 6> c{};  // C1..C6
+  std::int64_t sens_id = 0, fct_id_f = 0, fric_id = 0;
+  double ascale_f = 0;
+  std::int64_t contact_law_id = 0;  // /CTCLAW that replaces the normal and friction laws (0: none)
+  std::string contact_law;          // its law string, e.g. n2s13{pz1e5,lambda2e3,Mu0.3,CtLin10}
+
+  // Computed by the starter.
+  std::vector<std::int32_t> secondary_nodes;  // sorted dense node indices
+  double gapmin = 0;                          // the Gapmin in use (input or automatic)
+  bool gapmin_automatic = false;
+  std::vector<double> gap_node;       // gs per secondary node (Igap 1, 2)
+  std::vector<double> gap_segment;    // gm per main segment (Igap 1, 2)
+  std::vector<double> stiff_node;     // Ks per secondary node
+  std::vector<double> stiff_segment;  // Km per main segment
+  double gap_lo = 0, gap_hi = 0;      // range of the pair gaps g
+  double stiff_lo = 0, stiff_hi = 0;  // range of the pair stiffnesses K
+  // Initial penetrations (section 4.6).
+  std::int64_t initial_penetrations = 0;
+  double max_initial_penetration = 0;
+  std::int64_t max_penetration_node = 0;        // user id
+  std::vector<std::int32_t> inactive_nodes;     // Inacti 1: nodes without stiffness
+  std::vector<std::int32_t> inactive_segments;  // Inacti 2: segments without stiffness
+  std::vector<std::int32_t> penetrating_nodes;  // Inacti 5, 6: nodes with a reduced initial gap
+  std::vector<double> initial_gap_reduction;    // P0 (+5 % margin for 6) per penetrating node
+};
+
+struct Model {
+  std::string title;
+  std::string run_name;
+  int deck_version = 0;
+  Units units;
+  Nodes nodes;
+  ElementBlock shells{ElementType::Shell4, {}, {}, {}, {}, {}, {}};
+  ElementBlock shells3{ElementType::Shell3, {}, {}, {}, {}, {}, {}};
+  ElementBlock bricks{ElementType::Brick8, {}, {}, {}, {}, {}, {}};
+  std::vector<Material> materials;
+  std::vector<Property> properties;
+  std::vector<Part> parts;
+  std::vector<Subset> subsets;
+  std::vector<NodeGroup> node_groups;
+  std::vector<Box> boxes;
+  std::vector<Surface> surfaces;
+  std::vector<Function> functions;
+  std::vector<BoundaryCondition> bcs;
+  std::vector<ImposedVelocity> imposed_velocities;
+  std::vector<InitialVelocity> initial_velocities;
+  std::vector<ConcentratedLoad> concentrated_loads;
+  std::vector<PressureLoad> pressure_loads;
+  std::vector<Gravity> gravities;
+  std::vector<RigidWall> rigid_walls;
+  std::vector<RigidBody> rigid_bodies;
+  std::vector<TimeHistoryGroup> time_histories;
+  std::vector<Interface> interfaces;
+  std::vector<std::string> ignored_keywords;  // control cards accepted as ignored, as written
+
+  // Per-node lumped mass from the elements (computed by the starter).
+  std::vector<double> node_mass;
+  double total_mass = 0;
+
+  [[nodiscard]] std::size_t element_count() const { return shells.size() + shells3.size() + bricks.size(); }
+};
+
+}  // namespace radx::model
