@@ -550,12 +550,13 @@ RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RAD
             RADX_FIELD(t_start), RADX_FIELD(t_stop), RADX_FIELD(ibc), RADX_FIELD(inacti), RADX_FIELD(vis_s),
             RADX_FIELD(vis_f), RADX_FIELD(bumult), RADX_FIELD(ifric), RADX_FIELD(ifiltr), RADX_FIELD(iform),
             RADX_FIELD(xfreq), RADX_FIELD(c), RADX_FIELD(sens_id), RADX_FIELD(fct_id_f), RADX_FIELD(fric_id),
-            RADX_FIELD(ascale_f), RADX_FIELD(secondary_nodes), RADX_FIELD(gapmin),
-            RADX_FIELD(gapmin_automatic), RADX_FIELD(gap_node), RADX_FIELD(gap_segment),
-            RADX_FIELD(stiff_node), RADX_FIELD(stiff_segment), RADX_FIELD(gap_lo), RADX_FIELD(gap_hi),
-            RADX_FIELD(stiff_lo), RADX_FIELD(stiff_hi), RADX_FIELD(initial_penetrations),
-            RADX_FIELD(max_initial_penetration), RADX_FIELD(max_penetration_node), RADX_FIELD(inactive_nodes),
-            RADX_FIELD(inactive_segments), RADX_FIELD(penetrating_nodes), RADX_FIELD(initial_gap_reduction));
+            RADX_FIELD(ascale_f), RADX_FIELD(contact_law_id), RADX_FIELD(contact_law),
+            RADX_FIELD(secondary_nodes), RADX_FIELD(gapmin), RADX_FIELD(gapmin_automatic),
+            RADX_FIELD(gap_node), RADX_FIELD(gap_segment), RADX_FIELD(stiff_node), RADX_FIELD(stiff_segment),
+            RADX_FIELD(gap_lo), RADX_FIELD(gap_hi), RADX_FIELD(stiff_lo), RADX_FIELD(stiff_hi),
+            RADX_FIELD(initial_penetrations), RADX_FIELD(max_initial_penetration),
+            RADX_FIELD(max_penetration_node), RADX_FIELD(inactive_nodes), RADX_FIELD(inactive_segments),
+            RADX_FIELD(penetrating_nodes), RADX_FIELD(initial_gap_reduction));
 
 #undef RADX_SCHEMA
 #undef RADX_FIELD
@@ -599,13 +600,39 @@ void for_each_block(ModelT& m, Fn&& fn) {
 // ---------------------------------------------------------------------------------------------------
 // Tables: one group per collection, attribute count, one column per member.
 
+// Accessors of a member (and of a member of a member), usable on const and non-const records.
+template <class P>
+struct MemberOf {
+  P member;
+  template <class R>
+  auto& operator()(R& r) const {
+    return r.*member;
+  }
+};
+template <class Outer, class P>
+struct NestedMemberOf {
+  const Outer& outer;
+  P member;
+  template <class R>
+  auto& operator()(R& r) const {
+    return outer(r).*member;
+  }
+};
+template <class P>
+MemberOf<P> member_of(P member) {
+  return {member};
+}
+template <class Outer, class P>
+NestedMemberOf<Outer, P> member_of(const Outer& outer, P member) {
+  return {outer, member};
+}
+
 template <class T, class Get>
 void write_column(hid_t g, const std::string& name, const std::vector<T>& recs, const Get& get) {
   using M = std::remove_cvref_t<decltype(get(std::declval<const T&>()))>;
   if constexpr (Record<M>) {
     for_each_field<M>([&](const char* sub, auto member) {
-      write_column(
-          g, name + "_" + sub, recs, [&get, member ](auto& r) -> auto& { return get(r).*member; });
+      write_column(g, name + "_" + sub, recs, member_of(get, member));
     });
   } else if constexpr (std::is_same_v<M, std::string> || std::is_same_v<M, std::vector<std::string>>) {
     std::vector<std::string> col;
@@ -647,8 +674,7 @@ void read_column(hid_t g, const std::string& name, std::vector<T>& recs, const G
   };
   if constexpr (Record<M>) {
     for_each_field<M>([&](const char* sub, auto member) {
-      read_column(
-          g, name + "_" + sub, recs, [&get, member ](auto& r) -> auto& { return get(r).*member; });
+      read_column(g, name + "_" + sub, recs, member_of(get, member));
     });
   } else if constexpr (std::is_same_v<M, std::string> || std::is_same_v<M, std::vector<std::string>>) {
     const std::vector<std::string> col = read_strings(g, name);
@@ -672,14 +698,6 @@ void read_column(hid_t g, const std::string& name, std::vector<T>& recs, const G
     check_rows(col.size());
     for (std::size_t i = 0; i < n; ++i) get(recs[i]) = col[i];
   }
-}
-
-// Accessor of a top-level member, usable on const and non-const records.
-template <class P>
-auto member_of(P member) {
-  return [member](auto& r) -> auto& {
-    return r.*member;
-  };
 }
 
 template <class T>

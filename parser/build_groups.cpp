@@ -272,6 +272,7 @@ void ModelBuilder::build_surfaces() {
   for (const auto& r : deck_.records) {
     const auto path = r.decl->path;
     if (path != "/SURF/PART" && path != "/SURF/PART/EXT" && path != "/SURF/SEG") continue;
+    const std::size_t errors_before = diags_.error_count();
     model::Surface s;
     s.id = r.id;
     s.title = r.title;
@@ -382,7 +383,7 @@ void ModelBuilder::build_surfaces() {
         }
       }
     }
-    if (s.segments.empty()) {
+    if (s.segments.empty() && diags_.error_count() == errors_before) {
       diags_.error(Diag::EmptyGroup, at(r.pos, 1), about(r),
                    "surface " + std::to_string(s.id) + " holds no segment: check its part list");
     }

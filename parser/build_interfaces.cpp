@@ -84,9 +84,12 @@ void ModelBuilder::build_interfaces() {
 
     // Checks the declarations cannot make alone.
     if (in.istf == 1) {
-      if (in.stfac <= 0)
+      // Stfac is the stiffness itself here: its "0 means 1" default does not apply.
+      const FieldValue* f = r.find("Stfac");
+      if (!f || f->blank || f->defaulted || in.stfac <= 0)
         error_at(r, "Stfac", Diag::RequiredValueMissing,
-                 "Istf = 1 takes the stiffness value from Stfac, which is " + num(in.stfac) +
+                 "Istf = 1 takes the stiffness value from Stfac, which is " +
+                     std::string(f && !f->defaulted && !f->blank ? num(in.stfac) : "0 or blank") +
                      "; give the interface stiffness (force per length) > 0");
     } else {
       if (in.stfac == 0) in.stfac = 1.0;

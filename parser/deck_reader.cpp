@@ -6,6 +6,7 @@
 // /BEGIN (its version selects every layout), /UNIT and /END.
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -272,7 +273,9 @@ class StarterReader {
         v.defaulted = true;
       }
       const double value = f.type == FieldType::Int ? static_cast<double>(v.i) : v.r;
-      if (!f.allowed.empty() && f.type == FieldType::Int &&
+      if (zero && f.required) {
+        // Already reported as missing; a range message on top would repeat it.
+      } else if (!f.allowed.empty() && f.type == FieldType::Int &&
           std::find(f.allowed.begin(), f.allowed.end(), v.i) == f.allowed.end()) {
         diags_.error(
             Diag::ValueOutOfRange, at(pos, column), about,
@@ -302,15 +305,21 @@ class StarterReader {
     return out;
   }
 
-  bool check_tabs(const TextLine& line, const About& about) {
+  // A tab in a fixed-column line is an error. The line is then read as an editor shows it (tab stops
+  // every 8 columns) only so that later checks do not cascade from it; no model is written anyway.
+  std::string_view check_tabs(const TextLine& line, const About& about) {
     const auto tab = line.text.find('\t');
-    if (tab == std::string_view::npos) return true;
-    if (line.text.find(',') != std::string_view::npos) return true;  // free format: tabs are blanks
-    diags_.error(
-        Diag::TabInFixedField, at(line.pos, static_cast<int>(tab) + 1), about,
-        "tab character in a fixed-column line: tabs are rejected in fixed columns because their width "
-        "is ambiguous; replace them with spaces, or write the values comma-separated");
-    return false;
+    if (tab == std::string_view::npos) return line.text;
+    if (line.text.find(',') != std::string_view::npos) return line.text;  // free format: tabs are blanks
+    diags_.error(Diag::TabInFixedField, at(line.pos, static_cast<int>(tab) + 1), about,
+                 "tab character in a fixed-column line: tabs are rejected in fixed columns because their width "
+                 "is ambiguous; replace them with spaces, or write the values comma-separated");
+    std::string& expanded = expanded_.emplace_back();
+    for (char c : line.text) {
+      if (c == '\t') expanded.append(8 - expanded.size() % 8, ' ');
+      else expanded += c;
+    }
+    return expanded;
   }
 
   void check_width(const TextLine& line, const About& about) {
@@ -329,9 +338,8 @@ class StarterReader {
     bool free = false;
     std::vector<std::string_view> values;
     if (line) {
-      text = line->text;
       pos = line->pos;
-      if (!check_tabs(*line, about)) text = {};
+      text = check_tabs(*line, about);
       check_width(*line, about);
       free = text.find(',') != std::string_view::npos;
       if (free) values = split_free(text);
@@ -361,17 +369,17 @@ class StarterReader {
   }
 
   void read_record(RecordTable& t, const TextLine& line, const About& about) {
-    if (!check_tabs(line, about)) return;
+    const std::size_t errors_before = diags_.error_count();
+    const std::string_view text = check_tabs(line, about);
     check_width(line, about);
-    const bool free = line.text.find(',') != std::string_view::npos;
+    const bool free = text.find(',') != std::string_view::npos;
     std::vector<std::string_view> values;
-    if (free) values = split_free(line.text);
+    if (free) values = split_free(text);
     t.pos.push_back(line.pos);
     for (std::size_t k = 0; k < t.fields.size(); ++k) {
       const auto& f = *t.fields[k];
       std::string_view raw = free ? (k < values.size() ? values[k] : std::string_view{})
-                                  : cell(line.text, f.first_col, std::min(f.last_col, 100));
-      // Fast path for the common case: a plain number with no default or check to apply.
+                                  : cell(text, f.first_col, std::min(f.last_col, 100));
       FieldValue v = parse_field(f, raw, line.pos, f.first_col, about);
       switch (f.type) {
         case FieldType::Int: t.ints[k].push_back(v.i); break;
@@ -379,11 +387,12 @@ class StarterReader {
         case FieldType::String: t.strings[k].push_back(std::move(v.s)); break;
       }
     }
+    t.bad.push_back(diags_.error_count() > errors_before ? 1 : 0);
   }
 
   void read_ids(KeywordRecord& rec, const TextLine& line, const About& about) {
-    const bool free = line.text.find(',') != std::string_view::npos;
-    if (!free && !check_tabs(line, about)) return;
+    const std::string_view text = check_tabs(line, about);
+    const bool free = text.find(',') != std::string_view::npos;
     check_width(line, about);
     auto take = [&](std::string_view raw, int col) {
       std::int64_t v = 0;
@@ -400,9 +409,9 @@ class StarterReader {
       rec.id_pos.push_back(line.pos);
     };
     if (free) {
-      for (auto v : split_free(line.text)) take(v, 1);
+      for (auto v : split_free(text)) take(v, 1);
     } else {
-      for (int c = 0; c < 10; ++c) take(cell(line.text, 10 * c + 1, 10 * c + 10), 10 * c + 1);
+      for (int c = 0; c < 10; ++c) take(cell(text, 10 * c + 1, 10 * c + 10), 10 * c + 1);
     }
   }
 
@@ -684,6 +693,7 @@ class StarterReader {
   DeckText& text_;
   Diagnostics& diags_;
   Deck& deck_;
+  std::deque<std::string> expanded_;  // tab-expanded copies of rejected lines (stable addresses)
 };
 
 std::size_t one_file_start(const DeckText& text) {

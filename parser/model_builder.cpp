@@ -99,6 +99,7 @@ void ModelBuilder::build_nodes() {
     n.y.insert(n.y.end(), t.reals[cy].begin(), t.reals[cy].end());
     n.z.insert(n.z.end(), t.reals[cz].begin(), t.reals[cz].end());
     node_pos_.insert(node_pos_.end(), t.pos.begin(), t.pos.end());
+    node_bad_.insert(node_bad_.end(), t.bad.begin(), t.bad.end());
   }
   std::int64_t dup = 0;
   if (!n.index.build(n.id, dup)) {
@@ -437,6 +438,10 @@ void ModelBuilder::build_elements() {
         }
         if (part != kNone) ++m_.parts[part].element_count;
         if (missing) continue;
+        // Coordinates that could not be read are already reported; their geometry would only echo it.
+        bool unreadable = false;
+        for (int k = 0; k < npe; ++k) unreadable = unreadable || node_bad_[b.conn[b.conn.size() - npe + k]];
+        if (unreadable) continue;
         // Geometry.
         const std::size_t base = b.conn.size() - static_cast<std::size_t>(npe);
         auto X = [&](int k) {
@@ -491,7 +496,7 @@ void ModelBuilder::build_elements() {
                              "property thickness)");
           } else if (th == 0 && part != kNone && m_.parts[part].property != kNone &&
                      m_.properties[m_.parts[part].property].kind == model::PropertyKind::Shell &&
-                     m_.properties[m_.parts[part].property].shell.thickness <= 0) {
+                     m_.properties[m_.parts[part].property].shell.thickness == 0) {
             diags_.error(Diag::NonPositiveThickness, at(t.pos[e], 1), ab,
                          "shell " + std::to_string(eid) +
                              " has no thickness: the element card gives none and /PROP/" +

@@ -74,6 +74,7 @@ class ModelBuilder {
   std::vector<std::uint8_t> grnod_state_;  // 0 not built, 1 building, 2 built
   std::vector<std::uint8_t> node_used_;    // by an element or as a rigid-body / wall node
   std::vector<SourcePos> node_pos_;        // where each node was defined
+  std::vector<std::uint8_t> node_bad_;     // 1 when the node's line could not be read
 };
 
 }  // namespace detail

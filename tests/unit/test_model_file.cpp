@@ -312,6 +312,8 @@ Model make_model() {
   it.c = {v.real(), v.real(), v.real(), v.real(), v.real(), v.real()};
   it.sens_id = v.big(), it.fct_id_f = v.big(), it.fric_id = v.big();
   it.ascale_f = v.real();
+  it.contact_law_id = v.big();
+  it.contact_law = "n2s13{pz1e5,lambda2e3,Mu0.3,CtLin10}";
   it.secondary_nodes = {0, 1, 4, 5};
   it.gapmin = v.real();
   it.gapmin_automatic = true;
@@ -702,6 +704,8 @@ void check_same(const Model& a, const Model& b) {
     CHECK(x.fct_id_f == y.fct_id_f);
     CHECK(x.fric_id == y.fric_id);
     CHECK(x.ascale_f == y.ascale_f);
+    CHECK(x.contact_law_id == y.contact_law_id);
+    CHECK(x.contact_law == y.contact_law);
     CHECK(x.secondary_nodes == y.secondary_nodes);
     CHECK(x.gapmin == y.gapmin);
     CHECK(x.gapmin_automatic == y.gapmin_automatic);

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages radx needs, only those missing (safe to run again).
+# Build: cmake, ninja, g++, Eigen, SuiteSparse (CHOLMOD), HDF5, Catch2. Tests: hdf5-tools, h5py.
+set -euo pipefail
+packages=(cmake ninja-build g++ libeigen3-dev libsuitesparse-dev libhdf5-dev catch2 hdf5-tools python3-h5py
+          python3-numpy)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "radx: installing Debian packages: ${missing[*]}"
+  if [[ $(id -u) -ne 0 ]]; then
+    echo "radx: installing packages needs root (run as root, or: sudo apt-get install ${missing[*]})" >&2
+    exit 1
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

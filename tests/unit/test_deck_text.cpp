@@ -1,0 +1,152 @@
+// The text layer of the reader: comments, includes, CRLF, trailing blanks, free format, tabs.
+#include <catch2/catch.hpp>
+
+#include "parser/deck.hpp"
+#include "test_util.hpp"
+
+using radx::Diag;
+using radx::test::Line;
+using radx::test::TempDir;
+
+namespace {
+
+std::string node_line(long long id, double x, double y, double z) {
+  return Line().put(id, 1, 10).put(x, 11, 30).put(y, 31, 50).put(z, 51, 70).str();
+}
+
+std::string codes(const radx::Diagnostics& d) {
+  std::string s;
+  for (const auto& i : d.items()) s += radx::Diagnostics::format(i) + "\n";
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("comments between cards, CRLF and trailing blanks do not change values", "[lexer]") {
+  TempDir dir;
+  std::string deck = radx::test::begin_block(2026);
+  deck += "/NODE\n# a comment line\r\n$ another comment\r\n" + node_line(1, 1.5, 2.5, 3.5) + "   \r\n" +
+          "#---1----|----2----|\r\n" + node_line(2, -1, 0, 1e3) + "\r\n/END\r\n";
+  for (auto& c : deck)
+    if (c == '\n') c = '\n';
+  const auto path = dir.write("crlf_0000.rad", deck);
+  radx::Diagnostics diags;
+  const auto d = radx::read_starter_deck(path, diags);
+  INFO(codes(diags));
+  REQUIRE_FALSE(diags.has_errors());
+  const auto nodes = d.of("/NODE");
+  REQUIRE(nodes.size() == 1);
+  const auto& t = nodes[0]->records;
+  REQUIRE(t.size() == 2);
+  CHECK(t.ints[t.column("node_ID")][1] == 2);
+  CHECK(t.reals[t.column("X")][0] == 1.5);
+  CHECK(t.reals[t.column("Z")][1] == 1000.0);
+  // Positions point at the physical lines of the file (comments counted).
+  CHECK(t.pos[0].line == 9);
+  CHECK(t.pos[1].line == 11);
+}
+
+TEST_CASE("#include inserts a file relative to the including file", "[lexer]") {
+  TempDir dir;
+  dir.write("sub/nodes.inc", node_line(7, 1, 2, 3) + "\n");
+  const auto path = dir.write("inc_0000.rad", radx::test::begin_block(2026) + "/NODE\n#include sub/nodes.inc\n/END\n");
+  radx::Diagnostics diags;
+  const auto d = radx::read_starter_deck(path, diags);
+  INFO(codes(diags));
+  REQUIRE_FALSE(diags.has_errors());
+  const auto& t = d.of("/NODE")[0]->records;
+  REQUIRE(t.size() == 1);
+  CHECK(t.ints[t.column("node_ID")][0] == 7);
+  CHECK(d.files[t.pos[0].file].find("nodes.inc") != std::string::npos);
+  CHECK(t.pos[0].line == 1);
+}
+
+TEST_CASE("an include loop and a missing include are located errors", "[lexer]") {
+  TempDir dir;
+  dir.write("a.inc", "#include b.inc\n");
+  dir.write("b.inc", "\n#include a.inc\n");
+  const auto path =
+      dir.write("loop_0000.rad", radx::test::begin_block(2026) + "#include a.inc\n#include missing.inc\n/END\n");
+  radx::Diagnostics diags;
+  radx::read_starter_deck(path, diags);
+  REQUIRE(diags.contains(Diag::IncludeLoop));
+  REQUIRE(diags.contains(Diag::IncludeNotFound));
+  for (const auto& i : diags.items()) {
+    if (i.code == Diag::IncludeLoop) {
+      CHECK(i.file.find("b.inc") != std::string::npos);
+      CHECK(i.line == 2);
+    }
+    if (i.code == Diag::IncludeNotFound) CHECK(i.line == 7);
+  }
+}
+
+TEST_CASE("a comma line is read as free format, field by field in declaration order", "[lexer]") {
+  TempDir dir;
+  const auto path = dir.write("free_0000.rad", radx::test::begin_block(2026) + "/NODE\n 3, 1.D3, .5 ,-2\n/END\n");
+  radx::Diagnostics diags;
+  const auto d = radx::read_starter_deck(path, diags);
+  INFO(codes(diags));
+  REQUIRE_FALSE(diags.has_errors());
+  const auto& t = d.of("/NODE")[0]->records;
+  CHECK(t.ints[t.column("node_ID")][0] == 3);
+  CHECK(t.reals[t.column("X")][0] == 1000.0);
+  CHECK(t.reals[t.column("Y")][0] == 0.5);
+  CHECK(t.reals[t.column("Z")][0] == -2.0);
+}
+
+TEST_CASE("a tab in a fixed-column line is rejected with its column; in a comma line it is a blank", "[lexer]") {
+  TempDir dir;
+  const auto path = dir.write("tab_0000.rad", radx::test::begin_block(2026) + "/NODE\n         1\t1.0\n2,\t3.,4.,5.\n/END\n");
+  radx::Diagnostics diags;
+  const auto d = radx::read_starter_deck(path, diags);
+  REQUIRE(diags.error_count() == 1);
+  const auto& e = diags.items().front();
+  CHECK(e.code == Diag::TabInFixedField);
+  CHECK(e.line == 7);
+  CHECK(e.column == 11);
+  CHECK(e.message.find("rejected") != std::string::npos);
+  const auto& t = d.of("/NODE")[0]->records;
+  REQUIRE(t.size() == 1);
+  CHECK(t.reals[t.column("X")][0] == 3.0);
+}
+
+TEST_CASE("letters in a number, an overflowing real and text past column 100 are reported", "[lexer]") {
+  TempDir dir;
+  std::string bad = node_line(1, 0, 0, 0);
+  bad.replace(25, 5, "1.0x5");
+  std::string overflow = Line().put(2LL, 1, 10).put("1e400", 11, 30).str();
+  std::string wide = node_line(3, 0, 0, 0);
+  wide.resize(100, ' ');
+  wide += "junk";
+  const auto path = dir.write("bad_0000.rad", radx::test::begin_block(2026) + "/NODE\n" + bad + "\n" + overflow + "\n" +
+                                                  wide + "\n/END\n");
+  radx::Diagnostics diags;
+  radx::read_starter_deck(path, diags);
+  INFO(codes(diags));
+  REQUIRE(diags.contains(Diag::BadReal));
+  REQUIRE(diags.contains(Diag::RealOverflow));
+  REQUIRE(diags.contains(Diag::TextBeyondColumn100));
+  for (const auto& i : diags.items()) {
+    if (i.code == Diag::BadReal) CHECK((i.line == 7 && i.column == 11));
+    if (i.code == Diag::RealOverflow) CHECK(i.line == 8);
+    if (i.code == Diag::TextBeyondColumn100) CHECK((i.line == 9 && i.column == 101));
+  }
+}
+
+TEST_CASE("a one-file deck splits at /END/ENGINE for both readers", "[lexer]") {
+  TempDir dir;
+  const std::string text = "/RUN/ONE/1\n0.01\n/PRINT/-10\n/END/ENGINE\n" + radx::test::begin_block(2019) + "/NODE\n" +
+                           node_line(1, 0, 0, 0) + "\n/END\n";
+  const auto path = dir.write("ONE.rad", text);
+  CHECK(radx::is_one_file_deck(path));
+  radx::Diagnostics diags;
+  const auto s = radx::read_starter_deck(path, diags);
+  const auto e = radx::read_engine_deck(path, diags);
+  INFO(codes(diags));
+  REQUIRE_FALSE(diags.has_errors());
+  CHECK(s.version == 2019);
+  CHECK(s.of("/NODE").size() == 1);
+  REQUIRE(e.of("/RUN").size() == 1);
+  CHECK(e.of("/RUN")[0]->value(0, 0) == 0.01);
+  CHECK(e.of("/PRINT").size() == 1);
+}

@@ -1,0 +1,107 @@
+// The starter executables as a user runs them: exit codes, outputs, listing content, and the model
+// masses against the closed form rho * t * A (shells) and rho * V (bricks).
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "io/model_file.hpp"
+#include "test_util.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+int run(const std::string& cmd) {
+  const int rc = std::system((cmd + " >/dev/null 2>&1").c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+const std::string kDefaultDeck = std::string(RADX_SOURCE_DIR) + "/decks/block_on_plate/BLOCK_ON_PLATE_0000.rad";
+
+}  // namespace
+
+TEST_CASE("radx-starter exit codes: 0 success, 1 input error, 2 usage error", "[app]") {
+  radx::test::TempDir dir;
+  const std::string exe = RADX_STARTER_EXE;
+  CHECK(run(exe + " --help") == 0);
+  CHECK(run(exe + " --version") == 0);
+  CHECK(run(exe + " --bogus") == 2);
+  CHECK(run(exe + " -i") == 2);
+  CHECK(run(exe + " " + kDefaultDeck + " --out " + dir.path().string()) == 0);
+  CHECK(run(exe + " -i " + kDefaultDeck + " --out " + dir.path().string()) == 0);
+  CHECK(run(exe + " " + dir.file("no_such_0000.rad") + " --out " + dir.path().string()) == 1);
+  const std::string driver = RADX_DRIVER_EXE;
+  CHECK(run(driver + " --help") == 0);
+  CHECK(run(driver + " check " + kDefaultDeck) == 0);
+  CHECK(run(driver + " check " + std::string(RADX_SOURCE_DIR) + "/decks/invalid/istf_7.rad") == 1);
+  CHECK(run(driver + " frobnicate") == 2);
+}
+
+TEST_CASE("the default deck gives a listing and a model file whose masses match rho t A and rho V", "[app]") {
+  radx::test::TempDir dir;
+  REQUIRE(run(std::string(RADX_STARTER_EXE) + " " + kDefaultDeck + " --out " + dir.path().string()) == 0);
+  const auto listing = slurp(dir.path() / "BLOCK_ON_PLATE_0000.out");
+  for (const char* section : {"COUNTS", "MATERIALS", "PROPERTIES", "PARTS AND MASSES", "CONTACT INTERFACES",
+                              "DIAGNOSTICS", "model file written"})
+    CHECK(listing.find(section) != std::string::npos);
+  CHECK(listing.find("(default)") != std::string::npos);  // defaults are marked in the interface echo
+
+  radx::model::Model m;
+  std::string error;
+  REQUIRE(radx::io::read_model_file((dir.path() / "BLOCK_ON_PLATE_0000.hdf").string(), m, error));
+  // Independent mass from the deck's own data: every shell part rho * t * area, every brick part
+  // rho * volume, with the areas and volumes of the (axis-aligned) elements from their node boxes.
+  double expected = 0;
+  for (std::size_t e = 0; e < m.shells.size(); ++e) {
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (int k = 0; k < 4; ++k) {
+      const auto n = m.shells.conn[4 * e + k];
+      const double x[3] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
+      for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
+    }
+    const auto& part = m.parts[m.shells.part[e]];
+    const double t = m.shells.thickness[e] > 0 ? m.shells.thickness[e] : m.properties[part.property].shell.thickness;
+    expected += m.materials[part.material].rho * t * (hi[0] - lo[0]) * (hi[1] - lo[1]);
+  }
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (int k = 0; k < 8; ++k) {
+      const auto n = m.bricks.conn[8 * e + k];
+      const double x[3] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
+      for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
+    }
+    const auto& part = m.parts[m.bricks.part[e]];
+    expected += m.materials[part.material].rho * (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+  }
+  // Same arithmetic up to summation order: 1e-12 relative.
+  CHECK(m.total_mass == Approx(expected).epsilon(1e-12));
+  double nodal = 0;
+  for (double v : m.node_mass) nodal += v;
+  CHECK(nodal == Approx(expected).epsilon(1e-12));  // lumping conserves the mass
+  CHECK(m.interfaces.size() == 2);
+}
+
+TEST_CASE("a deck that now has errors removes the stale model file of an earlier run", "[app]") {
+  radx::test::TempDir dir;
+  const std::string deck_text = slurp(kDefaultDeck);
+  const auto deck = dir.write("CASE_0000.rad", deck_text);
+  REQUIRE(run(std::string(RADX_STARTER_EXE) + " " + deck + " --out " + dir.path().string()) == 0);
+  REQUIRE(fs::exists(dir.path() / "CASE_0000.hdf"));
+  // Break one reference: the first /PART's material id.
+  std::string broken = deck_text;
+  const auto p = broken.find("/PART/");
+  REQUIRE(p != std::string::npos);
+  dir.write("CASE_0000.rad", broken.substr(0, p) + "/MAT/LAW36/99\n" + broken.substr(p));
+  CHECK(run(std::string(RADX_STARTER_EXE) + " " + deck + " --out " + dir.path().string()) == 1);
+  CHECK_FALSE(fs::exists(dir.path() / "CASE_0000.hdf"));
+  CHECK(fs::exists(dir.path() / "CASE_0000.out"));
+}

@@ -1,0 +1,83 @@
+// Helpers for tests: a temporary folder removed at the end, file writing, and a small deck writer that
+// places values at exact columns so tests never hand-count spaces.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace radx::test {
+
+class TempDir {
+ public:
+  TempDir() {
+    std::random_device rd;
+    path_ = std::filesystem::temp_directory_path() / ("radx_test_" + std::to_string(rd()) + std::to_string(rd()));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+  [[nodiscard]] std::string file(const std::string& name) const { return (path_ / name).string(); }
+  std::string write(const std::string& name, const std::string& text) const {
+    const auto p = path_ / name;
+    std::filesystem::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << text;
+    return p.string();
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// A card line built field by field: put(value, first_col, last_col) right-justifies the value.
+class Line {
+ public:
+  Line& put(const std::string& v, int first, int last) {
+    if (static_cast<int>(s_.size()) < last) s_.resize(static_cast<std::size_t>(last), ' ');
+    const int width = last - first + 1;
+    const std::string t = v.size() > static_cast<std::size_t>(width) ? v.substr(0, static_cast<std::size_t>(width)) : v;
+    s_.replace(static_cast<std::size_t>(last) - t.size(), t.size(), t);
+    return *this;
+  }
+  Line& put(long long v, int first, int last) { return put(std::to_string(v), first, last); }
+  Line& put(int v, int first, int last) { return put(std::to_string(v), first, last); }
+  Line& put(double v, int first, int last) {
+    std::ostringstream os;
+    os.precision(15);
+    os << v;
+    std::string t = os.str();
+    if (t.find_first_of(".eE") == std::string::npos) t += ".";
+    return put(t, first, last);
+  }
+  Line& left(const std::string& v, int first) {
+    if (s_.size() < static_cast<std::size_t>(first - 1 + static_cast<int>(v.size())))
+      s_.resize(static_cast<std::size_t>(first - 1) + v.size(), ' ');
+    s_.replace(static_cast<std::size_t>(first - 1), v.size(), v);
+    return *this;
+  }
+  [[nodiscard]] std::string str() const { return s_; }
+
+ private:
+  std::string s_;
+};
+
+inline std::string begin_block(int version, const char* units = "Mg mm s") {
+  std::istringstream is(units);
+  std::string m, l, t;
+  is >> m >> l >> t;
+  std::ostringstream os;
+  os << "/BEGIN\nTEST\n" << Line().put(version, 1, 10).str() << '\n'
+     << Line().put(m, 1, 20).put(l, 21, 40).put(t, 41, 60).str() << '\n'
+     << Line().put(m, 1, 20).put(l, 21, 40).put(t, 41, 60).str() << '\n';
+  return os.str();
+}
+
+}  // namespace radx::test
