@@ -1,0 +1,248 @@
+// TYPE7 starter computations against type7-lagdt.md sections 4.1 (gap), 4.2 (stiffness), 4.3
+// (projection weights) and 4.6 (initial penetrations), on small models built in the test.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "contact/type7_prepare.hpp"
+#include "solver/model/masses.hpp"
+
+using radx::model::Model;
+namespace m = radx::model;
+
+namespace {
+
+// A flat plate of n x n shells of side h and thickness t (part 0, E, nu) at z = 0, and a cube of side a
+// made of one brick (part 1, E2, nu2) whose bottom face is at z = z0 above the plate centre.
+Model plate_and_brick(int n, double h, double t, double a, double z0) {
+  Model mod;
+  mod.materials.resize(2);
+  mod.materials[0].young = 210000;
+  mod.materials[0].poisson = 0.3;
+  mod.materials[0].rho = 7.85e-9;
+  mod.materials[1].young = 70000;
+  mod.materials[1].poisson = 0.25;
+  mod.materials[1].rho = 2.7e-9;
+  for (auto& mat : mod.materials) mat.bulk = mat.young / (3 * (1 - 2 * mat.poisson));
+  mod.properties.resize(2);
+  mod.properties[0].kind = m::PropertyKind::Shell;
+  mod.properties[0].shell.thickness = t;
+  mod.properties[1].kind = m::PropertyKind::Solid;
+  mod.parts.resize(2);
+  mod.parts[0].property = 0;
+  mod.parts[0].material = 0;
+  mod.parts[1].property = 1;
+  mod.parts[1].material = 1;
+  auto add_node = [&](double x, double y, double z) {
+    mod.nodes.id.push_back(static_cast<std::int64_t>(mod.nodes.id.size() + 1));
+    mod.nodes.x.push_back(x);
+    mod.nodes.y.push_back(y);
+    mod.nodes.z.push_back(z);
+    return static_cast<std::int32_t>(mod.nodes.id.size() - 1);
+  };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) add_node(i * h, j * h, 0.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const auto n1 = j * (n + 1) + i;
+      mod.shells.id.push_back(static_cast<std::int64_t>(mod.shells.id.size() + 1));
+      mod.shells.part.push_back(0);
+      mod.shells.thickness.push_back(0.0);
+      mod.shells.phi.push_back(0.0);
+      for (auto k : {n1, n1 + 1, n1 + n + 2, n1 + n + 1}) mod.shells.conn.push_back(k);
+    }
+  const double c = 0.5 * n * h;
+  std::int32_t b[8];
+  for (int k = 0; k < 8; ++k) {
+    const double x = c + ((k == 1 || k == 2 || k == 5 || k == 6) ? 0.5 : -0.5) * a;
+    const double y = c + ((k == 2 || k == 3 || k == 6 || k == 7) ? 0.5 : -0.5) * a;
+    b[k] = add_node(x, y, z0 + (k >= 4 ? a : 0.0));
+  }
+  mod.bricks.id.push_back(1);
+  mod.bricks.part.push_back(1);
+  mod.bricks.thickness.push_back(0.0);
+  mod.bricks.phi.push_back(0.0);
+  for (auto k : b) mod.bricks.conn.push_back(k);
+  // Surface 0: the plate; surface 1: the bottom face of the brick (outward normal -z).
+  m::Surface plate;
+  for (std::size_t e = 0; e < mod.shells.size(); ++e) {
+    const auto* q = &mod.shells.conn[4 * e];
+    plate.segments.push_back({q[0], q[1], q[2], q[3]});
+    plate.owner_type.push_back(m::SegmentOwner::Shell4);
+    plate.owner.push_back(static_cast<std::int32_t>(e));
+  }
+  mod.surfaces.push_back(plate);
+  m::Surface bottom;
+  bottom.segments.push_back({b[0], b[3], b[2], b[1]});
+  bottom.owner_type.push_back(m::SegmentOwner::Brick8);
+  bottom.owner.push_back(0);
+  mod.surfaces.push_back(bottom);
+  return mod;
+}
+
+m::Interface block_on_plate(const Model& mod) {
+  m::Interface in;
+  in.main_surface = 0;
+  for (std::int32_t k = static_cast<std::int32_t>(mod.nodes.size()) - 8; k < static_cast<std::int32_t>(mod.nodes.size());
+       ++k)
+    in.secondary_nodes.push_back(k);
+  return in;
+}
+
+}  // namespace
+
+TEST_CASE("automatic Gapmin is min(t, l/10, lmin/2) with missing terms left out", "[type7]") {
+  // Plate main surface: only shells, so Gapmin = min(t, lmin/2).
+  Model mod = plate_and_brick(4, 10.0, 1.5, 20.0, 5.0);
+  mod.interfaces.push_back(block_on_plate(mod));
+  // Brick main surface: only the brick term, Gapmin = min(l/10, lmin/2) with l = a.
+  m::Interface brick_main;
+  brick_main.main_surface = 1;
+  for (std::int32_t k = 0; k < 25; ++k) brick_main.secondary_nodes.push_back(k);
+  mod.interfaces.push_back(brick_main);
+  radx::contact::prepare_type7_interfaces(mod);
+  // Geometric identities, exact to round-off.
+  CHECK(mod.interfaces[0].gapmin == Approx(std::min(1.5, 10.0 / 2)).epsilon(1e-14));
+  CHECK(mod.interfaces[0].gapmin_automatic);
+  CHECK(mod.interfaces[1].gapmin == Approx(std::min(20.0 / 10, 20.0 / 2)).epsilon(1e-14));
+  // A thin plate: t wins over lmin/2.
+  Model thin = plate_and_brick(4, 10.0, 0.4, 20.0, 5.0);
+  thin.interfaces.push_back(block_on_plate(thin));
+  radx::contact::prepare_type7_interfaces(thin);
+  CHECK(thin.interfaces[0].gapmin == Approx(0.4).epsilon(1e-14));
+}
+
+TEST_CASE("variable gaps Igap 1 and 2 follow max(Gapmin, gs + gm) and the scaled, capped form", "[type7]") {
+  m::Interface in;
+  in.gapmin = 0.3;
+  in.igap = 0;
+  CHECK(radx::contact::pair_gap(in, 0.5, 0.5) == 0.3);
+  in.igap = 1;
+  CHECK(radx::contact::pair_gap(in, 0.5, 0.25) == Approx(0.75));
+  CHECK(radx::contact::pair_gap(in, 0.1, 0.1) == Approx(0.3));  // never below Gapmin
+  in.igap = 2;
+  in.fscale_gap = 0.5;
+  in.gap_max = 0;
+  CHECK(radx::contact::pair_gap(in, 1.0, 1.0) == Approx(1.0));  // 0.5 * 2, no cap
+  in.gap_max = 0.8;
+  CHECK(radx::contact::pair_gap(in, 1.0, 1.0) == Approx(0.8));
+  in.gap_max = 0.1;
+  CHECK(radx::contact::pair_gap(in, 1.0, 1.0) == Approx(0.3));  // the cap never goes below Gapmin
+}
+
+TEST_CASE("shell and brick stiffnesses follow 0.5 E t, B S^2 / V and B V^(1/3)", "[type7]") {
+  const double t = 1.2, a = 20.0, h = 10.0;
+  Model mod = plate_and_brick(4, h, t, a, 5.0);
+  auto in = block_on_plate(mod);
+  in.stfac = 2.0;
+  mod.interfaces.push_back(in);
+  m::Interface brick_main;
+  brick_main.main_surface = 1;
+  brick_main.stfac = 0.5;
+  for (std::int32_t k = 0; k < 25; ++k) brick_main.secondary_nodes.push_back(k);
+  mod.interfaces.push_back(brick_main);
+  radx::contact::prepare_type7_interfaces(mod);
+  const double e_plate = 210000, b_brick = 70000 / (3 * (1 - 2 * 0.25));
+  const auto& i0 = mod.interfaces[0];
+  for (double km : i0.stiff_segment) CHECK(km == Approx(2.0 * 0.5 * e_plate * t).epsilon(1e-14));
+  // Secondary brick nodes: Ks = Stfac B V^(1/3) = Stfac B a.
+  for (double ks : i0.stiff_node) CHECK(ks == Approx(2.0 * b_brick * a).epsilon(1e-12));
+  CHECK(i0.stiff_lo == Approx(2.0 * 0.5 * e_plate * t));  // Istf 0: K = Km
+  const auto& i1 = mod.interfaces[1];
+  // Brick face: Km = Stfac B S^2 / V = Stfac B a.
+  CHECK(i1.stiff_segment[0] == Approx(0.5 * b_brick * a * a * a * a / (a * a * a)).epsilon(1e-12));
+  // Plate nodes: Ks = Stfac 0.5 E t.
+  for (double ks : i1.stiff_node) CHECK(ks == Approx(0.5 * 0.5 * e_plate * t).epsilon(1e-14));
+}
+
+TEST_CASE("pair stiffness for Istf 0 to 5 with Stmin and Stmax", "[type7]") {
+  m::Interface in;
+  in.stmin = 0;
+  in.stmax = 1e30;
+  in.stfac = 123.0;
+  const double km = 300, ks = 100;
+  in.istf = 0;
+  CHECK(radx::contact::pair_stiffness(in, km, ks) == km);
+  in.istf = 1;
+  CHECK(radx::contact::pair_stiffness(in, km, ks) == 123.0);
+  in.istf = 2;
+  CHECK(radx::contact::pair_stiffness(in, km, ks) == Approx((km + ks) / 2));
+  in.istf = 3;
+  CHECK(radx::contact::pair_stiffness(in, km, ks) == Approx(km));
+  in.istf = 4;
+  CHECK(radx::contact::pair_stiffness(in, km, ks) == Approx(ks));
+  in.istf = 5;
+  CHECK(radx::contact::pair_stiffness(in, km, ks) == Approx(km * ks / (km + ks)));
+  in.stmin = 90;
+  in.stmax = 95;
+  CHECK(radx::contact::pair_stiffness(in, km, ks) == Approx(90));  // 75 clamped up to Stmin
+  in.istf = 3;
+  CHECK(radx::contact::pair_stiffness(in, km, ks) == Approx(95));  // 300 clamped down to Stmax
+}
+
+TEST_CASE("closest point on a quadrangle: distance and shape-function weights", "[type7]") {
+  using V = std::array<double, 3>;
+  const std::array<V, 4> quad = {V{0, 0, 0}, V{2, 0, 0}, V{2, 2, 0}, V{0, 2, 0}};
+  std::array<double, 4> h{};
+  // Above the centroid: distance is the height, weights 1/4 each.
+  CHECK(radx::contact::closest_point_segment({1, 1, 0.7}, quad, false, h) == Approx(0.7));
+  for (double w : h) CHECK(w == Approx(0.25));
+  // Above a corner: all weight on that node.
+  CHECK(radx::contact::closest_point_segment({2, 2, -0.5}, quad, false, h) == Approx(0.5));
+  CHECK(h[2] == Approx(1.0));
+  // Beyond an edge: distance to the edge, weights split on its two nodes, summing to 1.
+  const double d = radx::contact::closest_point_segment({1, -1, 1}, quad, false, h);
+  CHECK(d == Approx(std::sqrt(2.0)));
+  CHECK(h[0] == Approx(0.5));
+  CHECK(h[1] == Approx(0.5));
+  CHECK(h[0] + h[1] + h[2] + h[3] == Approx(1.0));
+  // A point inside the face: the weights reproduce the point (interpolation property).
+  const V p{0.5, 1.5, 0.2};
+  radx::contact::closest_point_segment(p, quad, false, h);
+  double x = 0, y = 0;
+  for (int k = 0; k < 4; ++k) x += h[k] * quad[k][0], y += h[k] * quad[k][1];
+  CHECK(x == Approx(0.5));
+  CHECK(y == Approx(1.5));
+  // Triangle segment (n4 = n3).
+  CHECK(radx::contact::closest_point_segment({0.2, 0.2, 3}, quad, true, h) == Approx(3.0));
+  CHECK(h[3] == 0.0);
+}
+
+TEST_CASE("initial penetrations are found and treated by Inacti", "[type7]") {
+  // The brick bottom sits 0.4 above the plate; the gap is t = 1, so p0 = 0.6 at the 4 bottom nodes.
+  const double t = 1.0, z0 = 0.4;
+  for (int inacti : {0, 1, 3, 5, 6}) {
+    Model mod = plate_and_brick(4, 10.0, t, 10.0, z0);
+    auto in = block_on_plate(mod);
+    in.inacti = inacti;
+    mod.interfaces.push_back(in);
+    radx::contact::prepare_type7_interfaces(mod);
+    const auto& r = mod.interfaces[0];
+    INFO("Inacti " << inacti);
+    CHECK(r.initial_penetrations == 4);
+    CHECK(r.max_initial_penetration == Approx(t - z0).epsilon(1e-12));
+    if (inacti == 1) CHECK(r.inactive_nodes.size() == 4);
+    if (inacti == 3) {
+      // Moved out to the gap surface: z = g.
+      for (std::size_t k = 0; k < 4; ++k) CHECK(mod.nodes.z[r.secondary_nodes[k]] == Approx(t).epsilon(1e-12));
+    }
+    if (inacti == 5)
+      for (double red : r.initial_gap_reduction) CHECK(red == Approx(t - z0));
+    if (inacti == 6)
+      for (double red : r.initial_gap_reduction) CHECK(red == Approx((t - z0) + 0.05 * z0));
+  }
+  // Out of the gap: nothing found.
+  Model clear = plate_and_brick(4, 10.0, t, 10.0, 1.5 * t);
+  clear.interfaces.push_back(block_on_plate(clear));
+  radx::contact::prepare_type7_interfaces(clear);
+  CHECK(clear.interfaces[0].initial_penetrations == 0);
+}
+
+TEST_CASE("a node never pairs with a segment that contains it (self-contact)", "[type7]") {
+  Model mod = plate_and_brick(3, 10.0, 1.0, 10.0, 5.0);
+  m::Interface self;
+  self.main_surface = 0;
+  for (std::int32_t k = 0; k < 16; ++k) self.secondary_nodes.push_back(k);  // the plate's own nodes
+  mod.interfaces.push_back(self);
+  radx::contact::prepare_type7_interfaces(mod);
+  CHECK(mod.interfaces[0].initial_penetrations == 0);
+}
