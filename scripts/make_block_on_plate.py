@@ -7,6 +7,8 @@ exact columns (deck-format.md). Edit the script and regenerate rather than editi
     python3 scripts/make_block_on_plate.py                  # both variants, into decks/
     python3 scripts/make_block_on_plate.py --variant lagdt  # only the /INTER/LAGDT/TYPE7 variant
     python3 scripts/make_block_on_plate.py --out /tmp/x     # somewhere else
+    python3 scripts/make_block_on_plate.py --variant lagdt --lagdt-tmin 1e-6 --out /tmp/x
+                                                            # a LAGDT run that really switches pairs
 
 Variants:
   penalty  decks/block_on_plate/BLOCK_ON_PLATE_0000.rad and _0001.rad (two /INTER/TYPE7)
@@ -442,7 +444,7 @@ def interface(iid, title, lagdt, grnod, surf, istf, inacti, fric, iform, viss):
 # Engine deck
 
 
-def engine_deck(variant):
+def engine_deck(variant, lagdt_tmin=1e-7):
     lagdt = variant == "lagdt"
     run = "BLOCK_ON_PLATE_LAGDT" if lagdt else "BLOCK_ON_PLATE"
     L = []
@@ -475,7 +477,7 @@ def engine_deck(variant):
         a("#  Lagrange multipliers (type7-lagdt.md section 6; OpenRadioss itself needs /DT/INTER/LAG).")
         a("/DT/INTER/CST")
         a(names(("Tscale", 20), ("Tmin", 20)))
-        a(line(R(0.9), R(1e-7)))
+        a(line(R(0.9), R(lagdt_tmin)))
     a("/PRINT/-100")
     a("/STOP")
     a(names(("Emax", 20), ("Mmax", 20), ("Nmax", 20), ("NTH", 10), ("NANIM", 10)))
@@ -496,6 +498,8 @@ def main(argv):
     here = os.path.dirname(os.path.abspath(__file__))
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--variant", choices=("penalty", "lagdt", "all"), default="all")
+    p.add_argument("--lagdt-tmin", type=float, default=1e-7,
+                   help="Tmin of /DT/INTER/CST in the LAGDT engine deck (default 1e-7 s; see the README)")
     p.add_argument("--out", default=os.path.join(here, "..", "decks"),
                    help="parent folder of block_on_plate/ and block_on_plate_lagdt/ (default: decks/)")
     args = p.parse_args(argv)
@@ -505,7 +509,7 @@ def main(argv):
             ("block_on_plate", "BLOCK_ON_PLATE")
         d = os.path.normpath(os.path.join(args.out, folder))
         write(os.path.join(d, root + "_0000.rad"), starter_deck(v))
-        write(os.path.join(d, root + "_0001.rad"), engine_deck(v))
+        write(os.path.join(d, root + "_0001.rad"), engine_deck(v, args.lagdt_tmin))
     return 0
 
 

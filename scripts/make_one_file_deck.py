@@ -107,7 +107,7 @@ def deck():
     a(names(("Hm", 20), ("Hf", 20), ("Hr", 20), ("Dm", 20), ("Dn", 20)))
     a(line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0)))
     a(names(("N", 10), ("Istrain", 10), ("Thick", 20), ("Ashear", 20), ("", 10), ("Ithick", 10), ("Iplas", 10)))
-    a(line(I(5), I(1), R(1.0), R(0.0), blank(10), I(1), I(1)))
+    a(line(I(5), I(0), R(1.0), R(0.0), blank(10), I(1), I(1)))
     a("/PROP/SOLID/2")
     a("Brick solid")
     a(names(("Isolid", 10), ("Ismstr", 10), ("", 10), ("Icpre", 10), ("Itetra10", 10), ("Inpts", 10),
