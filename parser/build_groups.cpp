@@ -213,6 +213,28 @@ const std::vector<std::int32_t>* ModelBuilder::group_nodes(std::int32_t g) {
         if (n >= 0) add.push_back(n);
       }
     }
+  } else if (kind == "MAT" || kind == "PROP") {
+    const bool mat = kind == "MAT";
+    for (std::size_t k = 0; k < r.ids.size(); ++k) {
+      const auto& index = mat ? mat_ids_ : prop_ids_;
+      const auto it = index.find(r.ids[k]);
+      if (it == index.end()) {
+        missing(k, mat ? "material" : "property", r.ids[k]);
+        continue;
+      }
+      for (std::size_t p = 0; p < m_.parts.size(); ++p)
+        if ((mat ? m_.parts[p].material : m_.parts[p].property) == it->second)
+          part_nodes(static_cast<std::int32_t>(p), add);
+    }
+  } else if (kind == "SURF") {
+    for (std::size_t k = 0; k < r.ids.size(); ++k) {
+      const auto it = surf_ids_.find(r.ids[k]);
+      if (it == surf_ids_.end()) {
+        missing(k, "surface", r.ids[k]);
+        continue;
+      }
+      for (const auto& seg : m_.surfaces[it->second].segments) add.insert(add.end(), seg.begin(), seg.end());
+    }
   } else if (kind == "SUBSET") {
     for (std::size_t k = 0; k < r.ids.size(); ++k) {
       const auto it = subset_ids_.find(r.ids[k]);

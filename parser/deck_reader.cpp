@@ -276,7 +276,7 @@ class StarterReader {
       if (zero && f.required) {
         // Already reported as missing; a range message on top would repeat it.
       } else if (!f.allowed.empty() && f.type == FieldType::Int &&
-          std::find(f.allowed.begin(), f.allowed.end(), v.i) == f.allowed.end()) {
+                 std::find(f.allowed.begin(), f.allowed.end(), v.i) == f.allowed.end()) {
         diags_.error(
             Diag::ValueOutOfRange, at(pos, column), about,
             what + " = " + std::to_string(v.i) + " is not accepted; accepted values: " + describe_allowed(f));
@@ -311,13 +311,16 @@ class StarterReader {
     const auto tab = line.text.find('\t');
     if (tab == std::string_view::npos) return line.text;
     if (line.text.find(',') != std::string_view::npos) return line.text;  // free format: tabs are blanks
-    diags_.error(Diag::TabInFixedField, at(line.pos, static_cast<int>(tab) + 1), about,
-                 "tab character in a fixed-column line: tabs are rejected in fixed columns because their width "
-                 "is ambiguous; replace them with spaces, or write the values comma-separated");
+    diags_.error(
+        Diag::TabInFixedField, at(line.pos, static_cast<int>(tab) + 1), about,
+        "tab character in a fixed-column line: tabs are rejected in fixed columns because their width "
+        "is ambiguous; replace them with spaces, or write the values comma-separated");
     std::string& expanded = expanded_.emplace_back();
     for (char c : line.text) {
-      if (c == '\t') expanded.append(8 - expanded.size() % 8, ' ');
-      else expanded += c;
+      if (c == '\t')
+        expanded.append(8 - expanded.size() % 8, ' ');
+      else
+        expanded += c;
     }
     return expanded;
   }

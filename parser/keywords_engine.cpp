@@ -8,6 +8,12 @@ namespace radx::schema {
 
 namespace {
 
+// Control cards that change no physics in radx: accepted, echoed as ignored.
+EngineKeywordDecl ignored(EngineKeywordDecl k) {
+  k.support = Support::Ignored;
+  return k;
+}
+
 EngineKeywordDecl ekw(std::string_view path, std::string_view meaning) {
   EngineKeywordDecl k;
   k.path = path;
@@ -70,7 +76,7 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
     anim_field("/ANIM/VECT", "nodal vector field written to the animation files");
     anim_field("/ANIM/TENS", "element tensor field written to the animation files");
     anim_field("/ANIM/NODA", "nodal scalar field written to the animation files");
-    t.push_back(ekw("/ANIM/GZIP", "write the animation files gzip-compressed"));
+    t.push_back(ignored(ekw("/ANIM/GZIP", "gzip-compressed animation files (radx writes HDF5 states)")));
     {
       auto k = ekw("/ANIM/VERS", "animation file format version");
       k.header_fields = {"version"};
@@ -135,16 +141,18 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
       t.push_back(std::move(k));
     }
     {
-      auto k = ekw("/RFILE", "restart file frequency in cycles");
+      auto k = ignored(ekw("/RFILE", "restart file frequency in cycles (radx writes no restart files)"));
       k.header_fields = {"n"};
       k.lines = {line({"Ncycle"}, 1)};
       t.push_back(std::move(k));
     }
-    t.push_back(ekw("/RFILE/OFF", "no restart files"));
-    t.push_back(ekw("/MON/ON", "CPU and memory monitoring report on"));
-    t.push_back(ekw("/MON/OFF", "CPU and memory monitoring report off"));
-    t.push_back(ekw("/PARITH/ON", "parallel arithmetic on: results independent of threads and domains"));
-    t.push_back(ekw("/PARITH/OFF", "parallel arithmetic off"));
+    t.push_back(ignored(ekw("/RFILE/OFF", "no restart files")));
+    t.push_back(ignored(ekw("/MON/ON", "CPU and memory monitoring report (radx always prints its cost)")));
+    t.push_back(ignored(ekw("/MON/OFF", "CPU and memory monitoring report off")));
+    t.push_back(
+        ignored(ekw("/PARITH/ON", "parallel arithmetic on (radx results never depend on the thread count)")));
+    t.push_back(
+        ignored(ekw("/PARITH/OFF", "parallel arithmetic off (radx keeps results independent of threads)")));
     {
       auto k = ekw("/RBODY/ON", "activate the listed rigid bodies");
       k.id_lines = true;

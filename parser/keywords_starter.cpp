@@ -332,6 +332,13 @@ void add_groups(std::vector<KeywordDecl>& t) {
            "grnod_ID");
   id_group("/GRNOD/GRNOD", "node group: union of node groups; a negative id removes", "grnod_ID");
   id_group("/GRNOD/BOX", "node group: the nodes inside the listed boxes", "grnod_ID");
+  id_group("/GRNOD/SUBSET", "node group: the nodes of the parts of the listed subsets (and their children)",
+           "grnod_ID");
+  id_group("/GRNOD/MAT", "node group: the nodes of the elements of the parts with the listed materials",
+           "grnod_ID");
+  id_group("/GRNOD/PROP", "node group: the nodes of the elements of the parts with the listed properties",
+           "grnod_ID");
+  id_group("/GRNOD/SURF", "node group: the nodes of the listed surfaces' segments", "grnod_ID");
   id_group("/GRNOD/GENE", "node group: existing node ids in ranges given as pairs (first, last)", "grnod_ID");
   {
     // Declared for every version: the 2017/2018 layouts lack it, and a deck of those versions that uses it
@@ -886,11 +893,10 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/SPRING", "/BEAM", "/TRUSS", "/TETRA4", "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD",
         "/TRIA", "/SPHCEL",
         // groups, surfaces, boxes
-        "/GRNOD/SUBSET", "/GRNOD/MAT", "/GRNOD/PROP", "/GRNOD/SURF", "/GRNOD/LINE", "/GRNOD/GRSHEL",
-        "/GRNOD/GRSH3N", "/GRNOD/GRBRIC", "/GRSHEL", "/GRSH3N", "/GRBRIC", "/GRBEAM", "/GRTRUS", "/GRSPRI",
-        "/GRPART", "/GRQUAD", "/SURF/PART/ALL", "/SURF/SURF", "/SURF/GRSHEL", "/SURF/GRSH3N", "/SURF/GRBRIC",
-        "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE", "/SURF/ELLIPS", "/LINE",
-        "/SET", "/BOX/CYLIN", "/BOX/SPHER",
+        "/GRNOD/LINE", "/GRNOD/GRSHEL", "/GRNOD/GRSH3N", "/GRNOD/GRBRIC", "/GRSHEL", "/GRSH3N", "/GRBRIC",
+        "/GRBEAM", "/GRTRUS", "/GRSPRI", "/GRPART", "/GRQUAD", "/SURF/PART/ALL", "/SURF/SURF", "/SURF/GRSHEL",
+        "/SURF/GRSH3N", "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE",
+        "/SURF/ELLIPS", "/LINE", "/SET", "/BOX/CYLIN", "/BOX/SPHER",
         // interfaces
         "/INTER/TYPE1", "/INTER/TYPE2", "/INTER/TYPE3", "/INTER/TYPE5", "/INTER/TYPE8", "/INTER/TYPE10",
         "/INTER/TYPE11", "/INTER/TYPE14", "/INTER/TYPE15", "/INTER/TYPE17", "/INTER/TYPE18", "/INTER/TYPE19",

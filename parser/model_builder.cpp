@@ -572,8 +572,8 @@ model::Model ModelBuilder::build() {
   build_elements();
   build_boxes();
   build_functions();
+  build_surfaces();  // before the groups: /GRNOD/SURF takes the nodes of surfaces
   build_groups();
-  build_surfaces();
   build_loads();
   build_rigid_walls();
   build_rigid_bodies();

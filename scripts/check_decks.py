@@ -759,7 +759,7 @@ def semantic(ck, m):
             c = [val(o, "C%d" % k, 0.0) for k in range(1, 7)]
             if c[4] == 0 or not (c[4] < c[5]) or not (c[3] <= c[0] <= c[2]) or not (c[3] <= c[1] <= c[2]):
                 p = pos(o, "C5")
-                I("RX507", p[0], p[1], "interface %d: Renard coefficients inconsistent" % iid)
+                I("RX703", p[0], p[1], "interface %d: Renard coefficients inconsistent" % iid)
 
     # time history
     for o in m.of("/TH/NODE"):

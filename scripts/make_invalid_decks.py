@@ -648,7 +648,7 @@ def _():
 @fault("ifric3_c5_zero")
 def _():
     return with_inter(base(), ifric=3, ccards=(0.2, 0.15, 0.3, 0.1, 0.0, 2.0)), \
-        "/INTER/TYPE7/1 Renard friction (Ifric 3) with C5 = V_cr1 = 0", [("RX507", "INT_C8")]
+        "/INTER/TYPE7/1 Renard friction (Ifric 3) with C5 = V_cr1 = 0", [("RX703", "INT_C8")]
 
 
 @fault("several_errors")

@@ -49,7 +49,8 @@ TEST_CASE("comments between cards, CRLF and trailing blanks do not change values
 TEST_CASE("#include inserts a file relative to the including file", "[lexer]") {
   TempDir dir;
   dir.write("sub/nodes.inc", node_line(7, 1, 2, 3) + "\n");
-  const auto path = dir.write("inc_0000.rad", radx::test::begin_block(2026) + "/NODE\n#include sub/nodes.inc\n/END\n");
+  const auto path =
+      dir.write("inc_0000.rad", radx::test::begin_block(2026) + "/NODE\n#include sub/nodes.inc\n/END\n");
   radx::Diagnostics diags;
   const auto d = radx::read_starter_deck(path, diags);
   INFO(codes(diags));
@@ -65,8 +66,8 @@ TEST_CASE("an include loop and a missing include are located errors", "[lexer]")
   TempDir dir;
   dir.write("a.inc", "#include b.inc\n");
   dir.write("b.inc", "\n#include a.inc\n");
-  const auto path =
-      dir.write("loop_0000.rad", radx::test::begin_block(2026) + "#include a.inc\n#include missing.inc\n/END\n");
+  const auto path = dir.write("loop_0000.rad",
+                              radx::test::begin_block(2026) + "#include a.inc\n#include missing.inc\n/END\n");
   radx::Diagnostics diags;
   radx::read_starter_deck(path, diags);
   REQUIRE(diags.contains(Diag::IncludeLoop));
@@ -82,7 +83,8 @@ TEST_CASE("an include loop and a missing include are located errors", "[lexer]")
 
 TEST_CASE("a comma line is read as free format, field by field in declaration order", "[lexer]") {
   TempDir dir;
-  const auto path = dir.write("free_0000.rad", radx::test::begin_block(2026) + "/NODE\n 3, 1.D3, .5 ,-2\n/END\n");
+  const auto path =
+      dir.write("free_0000.rad", radx::test::begin_block(2026) + "/NODE\n 3, 1.D3, .5 ,-2\n/END\n");
   radx::Diagnostics diags;
   const auto d = radx::read_starter_deck(path, diags);
   INFO(codes(diags));
@@ -94,9 +96,11 @@ TEST_CASE("a comma line is read as free format, field by field in declaration or
   CHECK(t.reals[t.column("Z")][0] == -2.0);
 }
 
-TEST_CASE("a tab in a fixed-column line is rejected with its column; in a comma line it is a blank", "[lexer]") {
+TEST_CASE("a tab in a fixed-column line is rejected with its column; in a comma line it is a blank",
+          "[lexer]") {
   TempDir dir;
-  const auto path = dir.write("tab_0000.rad", radx::test::begin_block(2026) + "/NODE\n         1\t1.0\n2,\t3.,4.,5.\n/END\n");
+  const auto path = dir.write("tab_0000.rad",
+                              radx::test::begin_block(2026) + "/NODE\n         1\t1.0\n2,\t3.,4.,5.\n/END\n");
   radx::Diagnostics diags;
   const auto d = radx::read_starter_deck(path, diags);
   REQUIRE(diags.error_count() == 1);
@@ -122,8 +126,8 @@ TEST_CASE("letters in a number, an overflowing real and text past column 100 are
   std::string wide = node_line(3, 0, 0, 0);
   wide.resize(100, ' ');
   wide += "junk";
-  const auto path = dir.write("bad_0000.rad", radx::test::begin_block(2026) + "/NODE\n" + bad + "\n" + overflow + "\n" +
-                                                  wide + "\n/END\n");
+  const auto path = dir.write("bad_0000.rad", radx::test::begin_block(2026) + "/NODE\n" + bad + "\n" +
+                                                  overflow + "\n" + wide + "\n/END\n");
   radx::Diagnostics diags;
   radx::read_starter_deck(path, diags);
   INFO(codes(diags));
@@ -139,8 +143,8 @@ TEST_CASE("letters in a number, an overflowing real and text past column 100 are
 
 TEST_CASE("a one-file deck splits at /END/ENGINE for both readers", "[lexer]") {
   TempDir dir;
-  const std::string text = "/RUN/ONE/1\n0.01\n/PRINT/-10\n/END/ENGINE\n" + radx::test::begin_block(2019) + "/NODE\n" +
-                           node_line(1, 0, 0, 0) + "\n/END\n";
+  const std::string text = "/RUN/ONE/1\n0.01\n/PRINT/-10\n/END/ENGINE\n" + radx::test::begin_block(2019) +
+                           "/NODE\n" + node_line(1, 0, 0, 0) + "\n/END\n";
   const auto path = dir.write("ONE.rad", text);
   CHECK(radx::is_one_file_deck(path));
   radx::Diagnostics diags;

@@ -30,7 +30,8 @@ std::vector<Expected> read_expectations(const fs::path& deck) {
   const std::regex re(R"(^#\s*expect:\s*RX(\d+)\s+line\s+(\d+)(?:\s+file\s+(\S+))?)");
   while (std::getline(in, line)) {
     std::smatch m;
-    if (std::regex_search(line, m, re)) out.push_back({std::stoi(m[1]), std::stoi(m[2]), m[3].matched ? m[3].str() : ""});
+    if (std::regex_search(line, m, re))
+      out.push_back({std::stoi(m[1]), std::stoi(m[2]), m[3].matched ? m[3].str() : ""});
   }
   return out;
 }
@@ -85,7 +86,8 @@ TEST_CASE("every invalid deck gives its diagnostics, exit code 1 and no model fi
       for (const auto& e : expected) {
         const fs::path want = e.file.empty() ? deck : deck.parent_path() / e.file;
         const auto hit = std::find_if(got.begin(), got.end(), [&](const Got& g) {
-          return g.code == e.code && g.line == e.line && fs::weakly_canonical(g.file) == fs::weakly_canonical(want);
+          return g.code == e.code && g.line == e.line &&
+                 fs::weakly_canonical(g.file) == fs::weakly_canonical(want);
         });
         INFO("expected RX" << e.code << " at " << want.filename().string() << ":" << e.line);
         CHECK(hit != got.end());

@@ -25,7 +25,8 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-const std::string kDefaultDeck = std::string(RADX_SOURCE_DIR) + "/decks/block_on_plate/BLOCK_ON_PLATE_0000.rad";
+const std::string kDefaultDeck =
+    std::string(RADX_SOURCE_DIR) + "/decks/block_on_plate/BLOCK_ON_PLATE_0000.rad";
 
 }  // namespace
 
@@ -69,7 +70,8 @@ TEST_CASE("the default deck gives a listing and a model file whose masses match 
       for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
     }
     const auto& part = m.parts[m.shells.part[e]];
-    const double t = m.shells.thickness[e] > 0 ? m.shells.thickness[e] : m.properties[part.property].shell.thickness;
+    const double t =
+        m.shells.thickness[e] > 0 ? m.shells.thickness[e] : m.properties[part.property].shell.thickness;
     expected += m.materials[part.material].rho * t * (hi[0] - lo[0]) * (hi[1] - lo[1]);
   }
   for (std::size_t e = 0; e < m.bricks.size(); ++e) {

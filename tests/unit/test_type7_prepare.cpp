@@ -82,8 +82,8 @@ Model plate_and_brick(int n, double h, double t, double a, double z0) {
 m::Interface block_on_plate(const Model& mod) {
   m::Interface in;
   in.main_surface = 0;
-  for (std::int32_t k = static_cast<std::int32_t>(mod.nodes.size()) - 8; k < static_cast<std::int32_t>(mod.nodes.size());
-       ++k)
+  for (std::int32_t k = static_cast<std::int32_t>(mod.nodes.size()) - 8;
+       k < static_cast<std::int32_t>(mod.nodes.size()); ++k)
     in.secondary_nodes.push_back(k);
   return in;
 }
@@ -223,7 +223,8 @@ TEST_CASE("initial penetrations are found and treated by Inacti", "[type7]") {
     if (inacti == 1) CHECK(r.inactive_nodes.size() == 4);
     if (inacti == 3) {
       // Moved out to the gap surface: z = g.
-      for (std::size_t k = 0; k < 4; ++k) CHECK(mod.nodes.z[r.secondary_nodes[k]] == Approx(t).epsilon(1e-12));
+      for (std::size_t k = 0; k < 4; ++k)
+        CHECK(mod.nodes.z[r.secondary_nodes[k]] == Approx(t).epsilon(1e-12));
     }
     if (inacti == 5)
       for (double red : r.initial_gap_reduction) CHECK(red == Approx(t - z0));

@@ -15,7 +15,8 @@ class TempDir {
  public:
   TempDir() {
     std::random_device rd;
-    path_ = std::filesystem::temp_directory_path() / ("radx_test_" + std::to_string(rd()) + std::to_string(rd()));
+    path_ =
+        std::filesystem::temp_directory_path() / ("radx_test_" + std::to_string(rd()) + std::to_string(rd()));
     std::filesystem::create_directories(path_);
   }
   ~TempDir() {
@@ -43,7 +44,8 @@ class Line {
   Line& put(const std::string& v, int first, int last) {
     if (static_cast<int>(s_.size()) < last) s_.resize(static_cast<std::size_t>(last), ' ');
     const int width = last - first + 1;
-    const std::string t = v.size() > static_cast<std::size_t>(width) ? v.substr(0, static_cast<std::size_t>(width)) : v;
+    const std::string t =
+        v.size() > static_cast<std::size_t>(width) ? v.substr(0, static_cast<std::size_t>(width)) : v;
     s_.replace(static_cast<std::size_t>(last) - t.size(), t.size(), t);
     return *this;
   }
@@ -74,7 +76,8 @@ inline std::string begin_block(int version, const char* units = "Mg mm s") {
   std::string m, l, t;
   is >> m >> l >> t;
   std::ostringstream os;
-  os << "/BEGIN\nTEST\n" << Line().put(version, 1, 10).str() << '\n'
+  os << "/BEGIN\nTEST\n"
+     << Line().put(version, 1, 10).str() << '\n'
      << Line().put(m, 1, 20).put(l, 21, 40).put(t, 41, 60).str() << '\n'
      << Line().put(m, 1, 20).put(l, 21, 40).put(t, 41, 60).str() << '\n';
   return os.str();
