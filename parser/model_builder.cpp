@@ -533,6 +533,8 @@ void ModelBuilder::check_unused_nodes() {
   std::string first_ids;
   for (std::size_t n = 0; n < node_used_.size(); ++n) {
     if (node_used_[n]) continue;
+    // A repeated node id is already an error; its second definition is unused by construction.
+    if (m_.nodes.index.find(m_.nodes.id[n]) != static_cast<std::int32_t>(n)) continue;
     ++unused;
     if (unused <= 10) first_ids += (unused > 1 ? ", " : "") + std::to_string(m_.nodes.id[n]);
   }
@@ -540,7 +542,7 @@ void ModelBuilder::check_unused_nodes() {
     const SourcePos p = node_pos_.empty() ? SourcePos{} : node_pos_[0];
     // One warning for all of them: a generated mesh can leave thousands and each would drown the rest.
     for (std::size_t n = 0; n < node_used_.size(); ++n) {
-      if (!node_used_[n]) {
+      if (!node_used_[n] && m_.nodes.index.find(m_.nodes.id[n]) == static_cast<std::int32_t>(n)) {
         diags_.warning(Diag::UnusedNode, at(node_pos_[n], 1), About{"/NODE", m_.nodes.id[n]},
                        std::to_string(unused) +
                            " node(s) are used by no element, rigid body or rigid wall (" + first_ids +
