@@ -89,12 +89,10 @@ std::vector<std::string> echo_keyword(const KeywordRecord& r) {
   std::vector<std::string> lines;
   for (const auto& v : r.fields) {
     std::ostringstream os;
-    os << "    " << std::left << std::setw(14) << v.decl->name << std::setw(52)
-       << std::string(v.decl->meaning).substr(0, 50) << " = " << value_text(v);
-    if (v.defaulted)
-      os << "  (default)";
-    else if (v.blank)
-      os << "  (blank)";
+    std::string value = value_text(v);
+    if (v.defaulted) value += " (default)";
+    else if (v.blank) value += " (blank)";
+    os << "    " << std::left << std::setw(14) << v.decl->name << std::setw(24) << value << v.decl->meaning;
     lines.push_back(os.str());
   }
   return lines;
