@@ -29,44 +29,17 @@ import os
 import sys
 import time
 
-RULER = ("#---1----|----2----|----3----|----4----|----5----|----6----|"
-         "----7----|----8----|----9----|---10----|")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
+from radx_deck_format import I, R, S, RULER, bcs_code, blank, ibc_code, line, names, write  # noqa: E402
+
 L_PLATE = 1000.0       # mm
 THICK = 1.0            # mm
 E_STEEL, NU_STEEL, RHO_STEEL = 210000.0, 0.3, 7.85e-9
 E_ALU, NU_ALU, RHO_ALU = 70000.0, 0.33, 2.7e-9
 CYCLES = 1500
+SIG = 12               # significant digits of a computed real whose shortest exact text is too long
 BLOCK_NX, BLOCK_NZ = 10, 4
 BLOCK_Z0 = 1.5
-
-
-def fr(v):
-    """Real in 20 columns: shortest exact text when it fits, else 12 significant digits."""
-    if isinstance(v, str):
-        s = v
-    else:
-        s = repr(float(v))
-        if len(s) > 19:
-            s = "%.12g" % v
-    if len(s) > 20:
-        raise ValueError(s)
-    return s.rjust(20)
-
-
-def fi(v):
-    s = str(int(v))
-    if len(s) > 10:
-        raise ValueError("integer %s does not fit in 10 columns" % s)
-    return s.rjust(10)
-
-
-def names(*cells):
-    text = "".join(str(n).rjust(w) for n, w in cells)
-    return ("#" + text[1:]).rstrip()
-
-
-def row(*cells):
-    return "".join(cells).rstrip()
 
 
 def sig3(x):
@@ -95,11 +68,11 @@ def starter(n, impact, root):
     a("/BEGIN")
     a(root)
     a(names(("INVERS", 10)))
-    a(fi(2026))
+    a(I(2026))
     a(names(("Input_mass", 20), ("Input_length", 20), ("Input_time", 20)))
-    a("%20s%20s%20s" % ("Mg", "mm", "s"))
+    a(line(S("Mg", 20), S("mm", 20), S("s", 20)))
     a(names(("Work_mass", 20), ("Work_length", 20), ("Work_time", 20)))
-    a("%20s%20s%20s" % ("Mg", "mm", "s"))
+    a(line(S("Mg", 20), S("mm", 20), S("s", 20)))
     a(RULER)
     a("/TITLE")
     a("Clamped %g mm steel plate: %d x %d shells%s" % (L_PLATE, n, n, " hit by an aluminium block" if impact
@@ -107,8 +80,9 @@ def starter(n, impact, root):
     a(RULER)
     a("/NODE")
     a(names(("node_ID", 10), ("Xc", 20), ("Yc", 20), ("Zc", 20)))
-    cs = [fr((2 * i - n) * L_PLATE / (2 * n)) for i in range(nn)]
-    z0 = fr(0.0)
+    cs = [R((2 * i - n) * L_PLATE / (2 * n), sig=SIG) for i in range(nn)]
+    z0 = R(0.0)
+    # the plate nodes and shells are the bulk of the deck: "%10d" is I() without its checks, for speed
     nid = 1
     for j in range(nn):
         yz = cs[j] + z0
@@ -123,12 +97,12 @@ def starter(n, impact, root):
                                                                                      BLOCK_Z0))
         a("/NODE")
         a(names(("node_ID", 10), ("Xc", 20), ("Yc", 20), ("Zc", 20)))
-        bc = [fr((2 * i - BLOCK_NX) * hb / 2) for i in range(nb)]
+        bc = [R((2 * i - BLOCK_NX) * hb / 2, sig=SIG) for i in range(nb)]
         for k in range(BLOCK_NZ + 1):
-            zs = fr(BLOCK_Z0 + k * hb)
+            zs = R(BLOCK_Z0 + k * hb, sig=SIG)
             for j in range(nb):
                 for i in range(nb):
-                    a("%10d%s%s%s" % (block_node0 + 1 + i + nb * j + nb * nb * k, bc[i], bc[j], zs))
+                    a(line(I(block_node0 + 1 + i + nb * j + nb * nb * k), bc[i], bc[j], zs))
     a(RULER)
     a("/SHELL/1")
     a(names(("shell_ID", 10), ("node_ID1", 10), ("node_ID2", 10), ("node_ID3", 10), ("node_ID4", 10),
@@ -154,58 +128,58 @@ def starter(n, impact, root):
                     e = block_elem0 + 1 + i + BLOCK_NX * j + BLOCK_NX * BLOCK_NX * k
                     ids = (bn(i, j, k), bn(i + 1, j, k), bn(i + 1, j + 1, k), bn(i, j + 1, k),
                            bn(i, j, k + 1), bn(i + 1, j, k + 1), bn(i + 1, j + 1, k + 1), bn(i, j + 1, k + 1))
-                    a("%10d" % e + "".join("%10d" % x for x in ids))
+                    a(line(I(e), *[I(x) for x in ids]))
     a(RULER)
     a("/PART/1")
     a("Plate")
     a(names(("prop_ID", 10), ("mat_ID", 10), ("subset_ID", 10), ("Thick", 20)))
-    a(row(fi(1), fi(1), fi(0), fr(0.0)))
+    a(line(I(1), I(1), I(0), R(0.0)))
     if impact:
         a("/PART/2")
         a("Block")
         a(names(("prop_ID", 10), ("mat_ID", 10), ("subset_ID", 10), ("Thick", 20)))
-        a(row(fi(2), fi(2), fi(0), fr(0.0)))
+        a(line(I(2), I(2), I(0), R(0.0)))
     a(RULER)
     a("/PROP/SHELL/1")
     a("Plate shell %g mm with 5 integration points" % THICK)
     a(names(("Ishell", 10), ("Ismstr", 10), ("Ish3n", 10), ("Idrill", 10), ("Ipinch", 10), ("", 10),
             ("P_Thick_Fail", 20)))
-    a(row(fi(1), fi(2), fi(2), fi(0), fi(0), " " * 10, fr(0.0)))
+    a(line(I(1), I(2), I(2), I(0), I(0), blank(10), R(0.0)))
     a(names(("Hm", 20), ("Hf", 20), ("Hr", 20), ("Dm", 20), ("Dn", 20)))
-    a(row(fr(0.0), fr(0.0), fr(0.0), fr(0.0), fr(0.0)))
+    a(line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0)))
     a(names(("N", 10), ("", 10), ("Thick", 20), ("Ashear", 20), ("", 10), ("Ithick", 10), ("Iplas", 10),
             ("Ipos", 10)))
-    a(row(fi(5), " " * 10, fr(THICK), fr(0.0), " " * 10, fi(1), fi(1), fi(0)))
+    a(line(I(5), blank(10), R(THICK), R(0.0), blank(10), I(1), I(1), I(0)))
     if impact:
         a("/PROP/SOLID/2")
         a("Block solid")
         a(names(("Isolid", 10), ("Ismstr", 10), ("Iale", 10), ("Icpre", 10), ("Itetra10", 10), ("Inpts", 10),
                 ("Itetra4", 10), ("Iframe", 10), ("dn", 20)))
-        a(row(fi(1), fi(4), fi(0), fi(0), fi(0), fi(0), fi(0), fi(1), fr(0.0)))
+        a(line(I(1), I(4), I(0), I(0), I(0), I(0), I(0), I(1), R(0.0)))
         a(names(("qa", 20), ("qb", 20), ("h", 20), ("LAMBDA_V", 20), ("MU_V", 20)))
-        a(row(fr(0.0), fr(0.0), fr(0.0), fr(0.0), fr(0.0)))
+        a(line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0)))
         a(names(("dtmin", 20), ("vdef_min", 20), ("vdef_max", 20), ("ASP_max", 20), ("COL_min", 20)))
-        a(row(fr(0.0), fr(0.0), fr(0.0), fr(0.0), fr(0.0)))
+        a(line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0)))
     a(RULER)
     a("/MAT/PLAS_JOHNS/1")
     a("Steel (Johnson-Cook)")
     a(names(("RHO_I", 20), ("RHO_ref", 20)))
-    a(row(fr(RHO_STEEL)))
+    a(line(R(RHO_STEEL)))
     a(names(("E", 20), ("nu", 20), ("Iflag", 10), ("flagVP", 10), ("Pmin", 20)))
-    a(row(fr(E_STEEL), fr(NU_STEEL), fi(0), fi(0), fr(0.0)))
+    a(line(R(E_STEEL), R(NU_STEEL), I(0), I(0), R(0.0)))
     a(names(("a", 20), ("b", 20), ("n", 20), ("EPS_p_max", 20), ("SIG_max0", 20)))
-    a(row(fr(250.0), fr(450.0), fr(0.3), fr(0.0), fr(0.0)))
+    a(line(R(250.0), R(450.0), R(0.3), R(0.0), R(0.0)))
     a(names(("c", 20), ("EPS_DOT_0", 20), ("ICC", 10), ("Fsmooth", 10), ("F_cut", 20), ("Chard", 20)))
-    a(row(fr(0.014), fr(1.0), fi(0), fi(0), fr(0.0), fr(0.0)))
+    a(line(R(0.014), R(1.0), I(0), I(0), R(0.0), R(0.0)))
     a(names(("m", 20), ("T_melt", 20), ("rhoC_p", 20), ("T_r", 20), ("T_max", 20)))
-    a(row(fr(0.0), fr(0.0), fr(0.0), fr(0.0), fr(0.0)))
+    a(line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0)))
     if impact:
         a("/MAT/LAW1/2")
         a("Aluminium (elastic)")
         a(names(("RHO_I", 20), ("RHO_ref", 20)))
-        a(row(fr(RHO_ALU)))
+        a(line(R(RHO_ALU)))
         a(names(("E", 20), ("nu", 20)))
-        a(row(fr(E_ALU), fr(NU_ALU)))
+        a(line(R(E_ALU), R(NU_ALU)))
     a(RULER)
     a("/GRNOD/NODE/1")
     a("Plate edge nodes (clamped)")
@@ -214,33 +188,33 @@ def starter(n, impact, root):
     for j in range(1, nn - 1):
         edge += [1 + nn * j, nn + nn * j]                              # x = -L/2 and x = +L/2
     edge += list(range(1 + nn * (nn - 1), nn * nn + 1))                # y = +L/2
-    a("\n".join("".join("%10d" % x for x in edge[k:k + 10]) for k in range(0, len(edge), 10)))
+    a("\n".join(line(*[I(x) for x in edge[k:k + 10]]) for k in range(0, len(edge), 10)))
     a("/GRNOD/PART/2")
     a("Plate nodes")
     a(names(("part_ID1", 10)))
-    a(fi(1))
+    a(I(1))
     if impact:
         a("/GRNOD/PART/3")
         a("Block nodes")
         a(names(("part_ID1", 10)))
-        a(fi(2))
+        a(I(2))
         a("/SURF/PART/1")
         a("Plate surface")
         a(names(("part_ID1", 10)))
-        a(fi(1))
+        a(I(1))
         a("/SURF/PART/EXT/2")
         a("Block outer faces")
         a(names(("part_ID1", 10)))
-        a(fi(2))
+        a(I(2))
     a(RULER)
     a("/BCS/1")
     a("Clamped plate edges")
     a(names(("Tra rot", 10), ("skew_ID", 10), ("grnod_ID", 10)))
-    a(row("   111 111", fi(0), fi(1)))
+    a(line(bcs_code("111", "111"), I(0), I(1)))
     a("/INIVEL/TRA/1")
     a("Block at 10 m/s downwards" if impact else "Plate at 1 m/s downwards")
     a(names(("Vx", 20), ("Vy", 20), ("Vz", 20), ("grnod_ID", 10), ("skew_ID", 10)))
-    a(row(fr(0.0), fr(0.0), fr(-10000.0 if impact else -1000.0), fi(3 if impact else 2), fi(0)))
+    a(line(R(0.0), R(0.0), R(-10000.0 if impact else -1000.0), I(3 if impact else 2), I(0)))
     if impact:
         a(RULER)
         for iid, title, grnod, surf, istf, inacti, fric, iform, viss in (
@@ -250,19 +224,19 @@ def starter(n, impact, root):
             a(title)
             a(names(("grnd_IDs", 10), ("surf_IDm", 10), ("Istf", 10), ("Ithe", 10), ("Igap", 10), ("", 10),
                     ("Ibag", 10), ("Idel", 10), ("Icurv", 10), ("Iadm", 10)))
-            a(row(fi(grnod), fi(surf), fi(istf), fi(0), fi(0), " " * 10, fi(0), fi(0), fi(0), fi(0)))
+            a(line(I(grnod), I(surf), I(istf), I(0), I(0), blank(10), I(0), I(0), I(0), I(0)))
             a(names(("Fscalegap", 20), ("Gap_max", 20), ("Fpenmax", 20), ("", 20), ("Itied", 10), ("Ists", 10)))
-            a(row(fr(0.0), fr(0.0), fr(0.0), " " * 20, fi(0), fi(0)))
+            a(line(R(0.0), R(0.0), R(0.0), blank(20), I(0), I(0)))
             a(names(("Stmin", 20), ("Stmax", 20), ("%mesh_size", 20), ("dtmin", 20), ("Irem_gap", 10),
                     ("Irem_i2", 10)))
-            a(row(fr(0.0), fr("1E30" if istf >= 2 else 0.0), fr(0.0), fr(0.0), fi(0), fi(0)))
+            a(line(R(0.0), R("1E30" if istf >= 2 else 0.0), R(0.0), R(0.0), I(0), I(0)))
             a(names(("Stfac", 20), ("Fric", 20), ("Gapmin", 20), ("Tstart", 20), ("Tstop", 20)))
-            a(row(fr(1.0), fr(fric), fr(0.0), fr(0.0), fr(0.0)))
+            a(line(R(1.0), R(fric), R(0.0), R(0.0), R(0.0)))
             a(names(("IBC", 10), ("", 20), ("Inacti", 10), ("VISs", 20), ("VISf", 20), ("Bumult", 20)))
-            a(row("       000", " " * 20, fi(inacti), fr(viss), fr(1.0), fr(0.0)))
+            a(line(ibc_code(0, 0, 0), blank(20), I(inacti), R(viss), R(1.0), R(0.0)))
             a(names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10), ("sens_ID", 10),
                     ("fct_IDF", 10), ("AscaleF", 20), ("fric_ID", 10)))
-            a(row(fi(0), fi(0), fr(0.0), fi(iform), fi(0), fi(0), fr(0.0), fi(0)))
+            a(line(I(0), I(0), R(0.0), I(iform), I(0), I(0), R(0.0), I(0)))
     a(RULER)
     a("/TH/NODE/1")
     a("Plate centre")
@@ -270,20 +244,20 @@ def starter(n, impact, root):
     a("DEF")
     a(names(("node_ID", 10), ("skew_ID", 10)) + " node_name (columns 21-100)")
     centre = 1 + (n // 2) + nn * (n // 2)
-    a(row(fi(centre), fi(0), " Plate centre"))
+    a(line(I(centre), I(0), " Plate centre"))
     a("/TH/PART/2")
     a("Parts")
     a(names(("var_ID1", 10)))
     a("DEF")
     a(names(("part_ID1", 10), ("part_ID2", 10)) if impact else names(("part_ID1", 10)))
-    a(row(fi(1), fi(2)) if impact else fi(1))
+    a(line(I(1), I(2)) if impact else I(1))
     if impact:
         a("/TH/INTER/3")
         a("Both interfaces")
         a(names(("var_ID1", 10)))
         a("DEF")
         a(names(("inter_ID1", 10), ("inter_ID2", 10)))
-        a(row(fi(1), fi(2)))
+        a(line(I(1), I(2)))
     a(RULER)
     a("/END")
     return out
@@ -297,23 +271,17 @@ def engine(n, root):
            "# Tstop = %d cycles x shell time step 0.9 h / sqrt(E/rho) = %d x %.4g s" % (CYCLES, CYCLES, dt_shell),
            RULER,
            "/RUN/%s/1" % root,
-           names(("Tstop", 20)), fr(tstop),
-           "/TFILE", names(("dt_his", 20)), fr(sig3(tstop / 100)),
-           "/ANIM/DT", names(("Tstart", 20), ("dT", 20)), row(fr(0.0), fr(sig3(tstop / 2))),
+           names(("Tstop", 20)), R(tstop, sig=SIG),
+           "/TFILE", names(("dt_his", 20)), R(sig3(tstop / 100), sig=SIG),
+           "/ANIM/DT", names(("Tstart", 20), ("dT", 20)), line(R(0.0), R(sig3(tstop / 2), sig=SIG)),
            "/ANIM/ELEM/VONM", "/ANIM/ELEM/EPSP", "/ANIM/VECT/VEL",
-           "/DT", names(("Tscale", 20), ("Tmin", 20)), row(fr(0.9), fr(0.0)),
+           "/DT", names(("Tscale", 20), ("Tmin", 20)), line(R(0.9), R(0.0)),
            "/PRINT/-100",
            "/STOP", names(("Emax", 20), ("Mmax", 20), ("Nmax", 20), ("NTH", 10), ("NANIM", 10)),
-           row(fr("1.0E+30"), fr("1.0E+30"), fr("1.0E+30"), fi(1), fi(1)),
+           line(R("1.0E+30"), R("1.0E+30"), R("1.0E+30"), I(1), I(1)),
            RULER,
            "/END"]
     return out, tstop
-
-
-def write(path, chunks):
-    with open(path, "w", newline="\n") as f:
-        f.write("\n".join(chunks))
-        f.write("\n")
 
 
 def main(argv):

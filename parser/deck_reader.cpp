@@ -190,7 +190,9 @@ class StarterReader {
     int version = kNewestVersion;
     if (begin + 2 < end && !is_keyword(lines[begin + 2])) {
       std::int64_t v = 0;
-      const auto st = parse_int(cell(lines[begin + 2].text, 1, 10), v);
+      const std::string_view card = lines[begin + 2].text;
+      const auto comma = card.find(',');
+      const auto st = parse_int(comma == std::string_view::npos ? cell(card, 1, 10) : card.substr(0, comma), v);
       if (st == NumberStatus::Ok && v > 0) {
         version = static_cast<int>(v);
         if (v < kOldestVersion) {
@@ -649,6 +651,19 @@ class StarterReader {
     return u;
   }
 
+  // The declared dimension of a field, or the one an override selects from another field's value.
+  static schema::Dim field_dimension(const KeywordRecord& r, const FieldValue& f) {
+    for (const auto& o : r.decl->dim_overrides) {
+      if (o.field != f.decl->name) continue;
+      const FieldValue* w = r.find(o.when_field);
+      if (!w) continue;
+      const std::string text = w->decl->type == FieldType::String ? upper(trim(w->s)) : std::to_string(w->i);
+      if (std::find(o.when_values.begin(), o.when_values.end(), text) != o.when_values.end())
+        return o.dimension;
+    }
+    return f.decl->dimension;
+  }
+
   void convert_units() {
     std::map<std::int64_t, UnitSystem> systems;
     for (const auto& r : deck_.records) {
@@ -679,9 +694,10 @@ class StarterReader {
       if (fm == 1.0 && fl == 1.0 && ft == 1.0) continue;
       auto factor = [&](schema::Dim d) { return std::pow(fm, d.m) * std::pow(fl, d.l) * std::pow(ft, d.t); };
       for (auto& f : r.fields) {
+        if (f.decl->type != FieldType::Real) continue;
+        const schema::Dim d = field_dimension(r, f);
         // Values of 1e19 and beyond stand for "never" or "no limit" and stay as they are.
-        if (f.decl->type == FieldType::Real && !f.decl->dimension.none() && std::abs(f.r) < 1e19)
-          f.r *= factor(f.decl->dimension);
+        if (!d.none() && std::abs(f.r) < 1e19) f.r *= factor(d);
       }
       for (std::size_t k = 0; k < r.records.fields.size(); ++k) {
         const auto& f = *r.records.fields[k];

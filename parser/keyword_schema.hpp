@@ -203,6 +203,16 @@ enum class Support : std::uint8_t {
   Ignored,  // accepted control card that changes no physics: echoed as ignored
 };
 
+// A real field whose dimension depends on another field of the same keyword: Stfac is a stiffness
+// when Istf = 1, Fscale_y a moment when a /CLOAD acts on a rotation. `when_values` are compared with
+// the other field as written (integers as decimal text, strings trimmed and upper-cased).
+struct DimOverride {
+  std::string_view field;
+  std::string_view when_field;
+  std::vector<std::string_view> when_values;
+  Dim dimension;
+};
+
 struct KeywordDecl {
   std::string_view path;                  // canonical, e.g. "/INTER/TYPE7"
   std::vector<std::string_view> aliases;  // e.g. "/MAT/PLAS_JOHNS", "/MAT/LAW02"
@@ -215,6 +225,7 @@ struct KeywordDecl {
   Support support = Support::Read;
   bool singleton = false;           // may appear once (/BEGIN, /TITLE, /DEF_SHELL counts only its first)
   std::string_view id_name = "id";  // name of the header id in messages and listings
+  std::vector<DimOverride> dim_overrides;
 };
 
 // The starter deck's keywords, in the order of deck-format.md.

@@ -482,6 +482,7 @@ void add_contact(std::vector<KeywordDecl>& t) {
                  R("Fheats", 41, 60, "share of frictional heat given to the secondary side").unused(),
                  R("Fheatm", 61, 80, "share of frictional heat given to the main side").unused()}),
     };
+    k.dim_overrides = {{"Stfac", "Istf", {"1"}, dim::stiffness}, {"Xfreq", "Ifiltr", {"3"}, dim::rate}};
     t.push_back(std::move(k));
   }
   {
@@ -531,6 +532,7 @@ void add_contact(std::vector<KeywordDecl>& t) {
         card_if("friction C6 (Ifric > 1)", when_gt("Ifric", 1),
                 {R("C6", 1, 20, "friction law coefficient 6")}),
     };
+    k.dim_overrides = {{"Stfac", "Istf", {"1"}, dim::stiffness}, {"Xfreq", "Ifiltr", {"3"}, dim::rate}};
     t.push_back(std::move(k));
   }
   {
@@ -577,6 +579,7 @@ void add_loads(std::vector<KeywordDecl>& t) {
               R("Tstart", 41, 60, "time the velocity starts being imposed").dims(dim::time),
               R("Tstop", 61, 80, "time it stops being imposed; 0 = never").dims(dim::time)}),
     };
+    k.dim_overrides = {{"Fscale_y", "Dir", {"XX", "YY", "ZZ"}, dim::rate}};
     t.push_back(std::move(k));
   }
   {
@@ -610,6 +613,9 @@ void add_loads(std::vector<KeywordDecl>& t) {
                   .allow({0, 1, 2, 3}),
               R("Ascale_x", 61, 80, "abscissa (time) scale of the function").zero_is(1.0).dims(dim::time),
               R("Fscale_y", 81, 100, "ordinate scale of the function").zero_is(1.0).dims(dim::force)})};
+    k.dim_overrides = {{"Fscale_y", "Dir", {"XX", "YY", "ZZ"}, dim::moment},
+                       {"Ascale_x", "Itypfun", {"2"}, dim::length},
+                       {"Ascale_x", "Itypfun", {"3"}, dim::velocity}};
     t.push_back(std::move(k));
   }
   {
@@ -631,6 +637,8 @@ void add_loads(std::vector<KeywordDecl>& t) {
                   .allow({0, 1, 2, 3}),
               R("Ascale_x", 61, 80, "abscissa (time) scale of the function").zero_is(1.0).dims(dim::time),
               R("Fscale_y", 81, 100, "ordinate scale of the function").zero_is(1.0).dims(dim::pressure)})};
+    k.dim_overrides = {{"Ascale_x", "Itypfun", {"2"}, dim::length},
+                       {"Ascale_x", "Itypfun", {"3"}, dim::velocity}};
     t.push_back(std::move(k));
   }
   {

@@ -23,73 +23,9 @@ import argparse
 import os
 import sys
 
+from radx_deck_format import I, R, S, RULER, bcs_code, blank, ibc_code, line, names, write  # fixed-column cells
+
 VERSION = 2026
-RULER = ("#---1----|----2----|----3----|----4----|----5----|----6----|"
-         "----7----|----8----|----9----|---10----|")
-
-# ---------------------------------------------------------------------------------------------------
-# Fixed-column formatting
-
-
-def fmt_real(v):
-    """Shortest text that reads back as the same double (Fortran-readable)."""
-    if isinstance(v, str):
-        return v
-    s = repr(float(v))
-    return s
-
-
-def I(v, w=10):
-    s = "" if v is None else (v if isinstance(v, str) else str(int(v)))
-    if len(s) > w:
-        raise ValueError(f"integer {s!r} does not fit in {w} columns")
-    return s.rjust(w)
-
-
-def R(v, w=20):
-    s = "" if v is None else fmt_real(v)
-    if len(s) > w:
-        raise ValueError(f"real {s!r} does not fit in {w} columns")
-    return s.rjust(w)
-
-
-def S(v, w):
-    s = "" if v is None else str(v)
-    if len(s) > w:
-        raise ValueError(f"string {s!r} does not fit in {w} columns")
-    return s.rjust(w)
-
-
-def blank(w):
-    return " " * w
-
-
-def line(*cells):
-    text = "".join(cells).rstrip()
-    if len(text) > 100:
-        raise ValueError(f"line longer than 100 columns: {text!r}")
-    return text
-
-
-def names(*cells):
-    """Field-name comment line: each name right-justified in its cell, '#' in column 1."""
-    text = "".join(str(n).rjust(w) for n, w in cells)
-    if text[0] != " ":
-        raise ValueError(f"first field name fills column 1: {text!r}")
-    text = ("#" + text[1:]).rstrip()
-    if len(text) > 100:
-        raise ValueError(f"name line longer than 100 columns: {text!r}")
-    return text
-
-
-def bcs_code(t, r):
-    """/BCS columns 1-10: blank 1-3, Tx Ty Tz at 4-6, blank 7, Rx Ry Rz at 8-10."""
-    return "   " + t + " " + r
-
-
-def ibc_code(x, y, z):
-    """TYPE7 IBC: one digit each at columns 8, 9, 10."""
-    return "       " + str(x) + str(y) + str(z)
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -487,13 +423,6 @@ def engine_deck(variant, lagdt_tmin=1e-7):
     return L
 
 
-def write(path, lines):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w", newline="\n") as f:
-        f.write("\n".join(lines) + "\n")
-    print("wrote %s (%d lines)" % (path, len(lines)))
-
-
 def main(argv):
     here = os.path.dirname(os.path.abspath(__file__))
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
@@ -508,8 +437,8 @@ def main(argv):
         folder, root = ("block_on_plate_lagdt", "BLOCK_ON_PLATE_LAGDT") if v == "lagdt" else \
             ("block_on_plate", "BLOCK_ON_PLATE")
         d = os.path.normpath(os.path.join(args.out, folder))
-        write(os.path.join(d, root + "_0000.rad"), starter_deck(v))
-        write(os.path.join(d, root + "_0001.rad"), engine_deck(v, args.lagdt_tmin))
+        write(os.path.join(d, root + "_0000.rad"), starter_deck(v), report=True)
+        write(os.path.join(d, root + "_0001.rad"), engine_deck(v, args.lagdt_tmin), report=True)
     return 0
 
 

@@ -18,7 +18,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_block_on_plate import I, R, S, RULER, bcs_code, blank, ibc_code, line, names  # noqa: E402
+from radx_deck_format import I, R, S, RULER, bcs_code, blank, ibc_code, line, names, write  # noqa: E402
 
 
 class Deck:
@@ -700,12 +700,6 @@ def render(name, d, what, expects, extras):
         if f is None:
             assert 1 <= ln <= len(lines)
     return lines, resolved
-
-
-def write(path, lines):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w", newline="\n") as f:
-        f.write("\n".join(lines) + "\n")
 
 
 def main(argv):

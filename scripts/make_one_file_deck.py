@@ -17,7 +17,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_block_on_plate import I, R, S, RULER, bcs_code, blank, ibc_code, line, names  # noqa: E402
+from radx_deck_format import I, R, S, RULER, bcs_code, blank, ibc_code, line, names, write  # noqa: E402
 
 VERSION = 2019
 
@@ -215,12 +215,7 @@ def main(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--out", default=os.path.join(here, "..", "decks", "one_file"))
     args = p.parse_args(argv)
-    path = os.path.normpath(os.path.join(args.out, "ONE_FILE_0000.rad"))
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    lines = deck()
-    with open(path, "w", newline="\n") as f:
-        f.write("\n".join(lines) + "\n")
-    print("wrote %s (%d lines)" % (path, len(lines)))
+    write(os.path.normpath(os.path.join(args.out, "ONE_FILE_0000.rad")), deck(), report=True)
     return 0
 
 

@@ -1,5 +1,6 @@
 // The starter executables as a user runs them: exit codes, outputs, listing content, and the model
 // masses against the closed form rho * t * A (shells) and rho * V (bricks).
+#include <array>
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
@@ -62,27 +63,26 @@ TEST_CASE("the default deck gives a listing and a model file whose masses match 
   // Independent mass from the deck's own data: every shell part rho * t * area, every brick part
   // rho * volume, with the areas and volumes of the (axis-aligned) elements from their node boxes.
   double expected = 0;
-  for (std::size_t e = 0; e < m.shells.size(); ++e) {
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (int k = 0; k < 4; ++k) {
-      const auto n = m.shells.conn[4 * e + k];
+  // Extent of an element's node box along each axis.
+  auto extent = [&](const std::vector<std::int32_t>& conn, std::size_t e, int npe) {
+    std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (int k = 0; k < npe; ++k) {
+      const auto n = conn[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(k)];
       const double x[3] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
       for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
     }
+    return std::array<double, 3>{hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+  };
+  for (std::size_t e = 0; e < m.shells.size(); ++e) {
+    const auto d = extent(m.shells.conn, e, 4);
     const auto& part = m.parts[m.shells.part[e]];
     const double t =
         m.shells.thickness[e] > 0 ? m.shells.thickness[e] : m.properties[part.property].shell.thickness;
-    expected += m.materials[part.material].rho * t * (hi[0] - lo[0]) * (hi[1] - lo[1]);
+    expected += m.materials[part.material].rho * t * d[0] * d[1];
   }
   for (std::size_t e = 0; e < m.bricks.size(); ++e) {
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (int k = 0; k < 8; ++k) {
-      const auto n = m.bricks.conn[8 * e + k];
-      const double x[3] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
-      for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
-    }
-    const auto& part = m.parts[m.bricks.part[e]];
-    expected += m.materials[part.material].rho * (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+    const auto d = extent(m.bricks.conn, e, 8);
+    expected += m.materials[m.parts[m.bricks.part[e]].material].rho * d[0] * d[1] * d[2];
   }
   // Same arithmetic up to summation order: 1e-12 relative.
   CHECK(m.total_mass == Approx(expected).epsilon(1e-12));
