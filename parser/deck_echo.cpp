@@ -126,6 +126,11 @@ void write_keyword_reference(std::ostream& os) {
       field_rows(os, c.fields);
       os << "\n";
     }
+    for (const auto& o : k.dim_overrides) {
+      os << "Unit of " << o.field << ": " << dim_text(o.dimension) << " when " << o.when_field << " is";
+      for (auto v : o.when_values) os << ' ' << v;
+      os << ".\n\n";
+    }
     using schema::Tail;
     switch (k.tail) {
       case Tail::None: break;
