@@ -403,6 +403,8 @@ model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
   const NodeList& group = nodes_of(b, rb.group);
   std::copy_if(group.begin(), group.end(), std::back_inserter(rb.secondary),
                [&](std::int32_t n) { return n != rb.main_node; });
+  // Nodes carried by a rigid body take part in the run even without elements (lumped masses).
+  for (auto n : rb.secondary) b.node_used_[n] = 1;
   if (!group.empty() && rb.secondary.empty())
     b.warning_at(
         r, "grnd_ID", Diag::EmptyGroup,
