@@ -192,7 +192,8 @@ class StarterReader {
       std::int64_t v = 0;
       const std::string_view card = lines[begin + 2].text;
       const auto comma = card.find(',');
-      const auto st = parse_int(comma == std::string_view::npos ? cell(card, 1, 10) : card.substr(0, comma), v);
+      const auto st =
+          parse_int(comma == std::string_view::npos ? cell(card, 1, 10) : card.substr(0, comma), v);
       if (st == NumberStatus::Ok && v > 0) {
         version = static_cast<int>(v);
         if (v < kOldestVersion) {
@@ -344,9 +345,11 @@ class StarterReader {
     std::vector<std::string_view> values;
     if (line) {
       pos = line->pos;
-      text = check_tabs(*line, about);
+      // A card that is one text field (a title, a run name) keeps its commas and tabs.
+      const bool single_text = fields.size() == 1 && fields[0]->type == FieldType::String;
+      text = single_text ? line->text : check_tabs(*line, about);
       check_width(*line, about);
-      free = text.find(',') != std::string_view::npos;
+      free = !single_text && text.find(',') != std::string_view::npos;
       if (free) values = split_free(text);
     }
     for (std::size_t k = 0; k < fields.size(); ++k) {
