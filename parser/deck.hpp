@@ -40,7 +40,7 @@ struct RecordTable {
   std::vector<std::vector<double>> reals;         // per field; empty for non-real fields
   std::vector<std::vector<std::string>> strings;  // per field; empty for non-string fields
   std::vector<SourcePos> pos;                     // per record
-  std::vector<std::uint8_t> bad;  // per record: 1 when a field could not be read
+  std::vector<std::uint8_t> bad;                  // per record: 1 when a field could not be read
   [[nodiscard]] std::size_t size() const { return pos.size(); }
   // Index of a field by name; -1 when the record has no such field.
   [[nodiscard]] int column(std::string_view name) const;

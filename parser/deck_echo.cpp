@@ -90,8 +90,10 @@ std::vector<std::string> echo_keyword(const KeywordRecord& r) {
   for (const auto& v : r.fields) {
     std::ostringstream os;
     std::string value = value_text(v);
-    if (v.defaulted) value += " (default)";
-    else if (v.blank) value += " (blank)";
+    if (v.defaulted)
+      value += " (default)";
+    else if (v.blank)
+      value += " (blank)";
     os << "    " << std::left << std::setw(14) << v.decl->name << std::setw(24) << value << v.decl->meaning;
     lines.push_back(os.str());
   }

@@ -4,7 +4,7 @@
 # ParaView's pvpython (python3-paraview), which the tests use to open the files as a user would.
 set -euo pipefail
 packages=(cmake ninja-build g++ libeigen3-dev libsuitesparse-dev libhdf5-dev catch2 hdf5-tools python3-h5py
-          python3-numpy python3-paraview)
+          python3-numpy python3-paraview clang-format git)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
