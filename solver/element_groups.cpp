@@ -1,0 +1,29 @@
+#include "solver/element_groups.hpp"
+
+namespace radx::solver {
+
+void ShellGroup::allocate(int n, int points) {
+  count = n;
+  props.n_points = points;
+  const auto G = static_cast<std::size_t>(kGroupSize);
+  const auto np = static_cast<std::size_t>(points > 0 ? points : 1);
+  conn.assign(4 * G, 0);
+  for (auto* v : {&t0, &thick, &area0, &e_int, &e_hg, &w_plastic, &rate, &dt, &k_nodal}) v->assign(G, 0.0);
+  off.assign(G, 1.0);
+  sig.assign(np * 5 * G, 0.0);
+  eps_p.assign(np * G, 0.0);
+  hg.assign(3 * G, 0.0);
+  nodal_force.assign(4 * 6 * G, 0.0);
+}
+
+void BrickGroup::allocate(int n) {
+  count = n;
+  const auto G = static_cast<std::size_t>(kGroupSize);
+  conn.assign(8 * G, 0);
+  for (auto* v : {&vol0, &vol, &rho, &eps_p, &q, &e_int, &e_hg, &w_plastic, &rate, &dt, &k_nodal}) v->assign(G, 0.0);
+  off.assign(G, 1.0);
+  sig.assign(6 * G, 0.0);
+  nodal_force.assign(8 * 3 * G, 0.0);
+}
+
+}  // namespace radx::solver
