@@ -31,7 +31,7 @@ struct ShellProps {
 struct ShellGroup {
   int count = 0;                 // elements in this group
   bool triangle = false;         // 3-node C0 shells (conn rows 0..2)
-  std::int32_t block_first = 0;  // index of the group's first element in its model block (contiguous)
+  std::vector<std::int32_t> element;  // [G] index of each slot's element in its model block
   std::int32_t part = -1;        // dense part index (all elements of a group share it)
   std::int32_t material = -1;    // index into the engine's MaterialParams
   ShellProps props;
@@ -56,7 +56,7 @@ struct ShellGroup {
 
 struct BrickGroup {
   int count = 0;
-  std::int32_t block_first = 0;
+  std::vector<std::int32_t> element;  // [G] index of each slot's element in the model's brick block
   std::int32_t part = -1;
   std::int32_t material = -1;
   int isolid = 1;

@@ -10,7 +10,7 @@ namespace radx::solver {
 // Parameters as the kernels use them (work units), derived once per material.
 struct MaterialParams {
   model::MaterialLaw law = model::MaterialLaw::Elastic;
-  double rho0 = 0;            // initial density rho_I
+  double rho0 = 0;  // initial density rho_I
   double young = 0, nu = 0;
   double shear = 0, bulk = 0;  // G = E / 2(1 + nu), K = E / 3(1 - 2 nu)
   double a11 = 0, a12 = 0;     // plane stress: A11 = E / (1 - nu^2), A12 = nu A11
@@ -38,13 +38,13 @@ struct ShellPointResult {
   double deps_p = 0;  // plastic strain increment
   double dezz = 0;    // thickness strain increment (for the thickness output)
 };
-ShellPointResult shell_point_update(const MaterialParams& p, int iplas, double rate, double off, const double de[5],
-                                    double gs, double sig[5], double& eps_p);
+ShellPointResult shell_point_update(const MaterialParams& p, int iplas, double rate, double off,
+                                    const double de[5], double gs, double sig[5], double& eps_p);
 
 // Solid point (3.3, 6.3). de = {d_xx, d_yy, d_zz, d_gxy, d_gyz, d_gzx} strain increments (engineering
 // shears), mu = rho / rho0 - 1 (total volumetric strain measure), sig = {xx, yy, zz, xy, yz, zx}
-// (already rotated by the element) updated in place. Pressure p = -K mu (total), deviator incremental
-// with radial return; once eps_p > EPS_p_max the deviator stays zero. Returns the plastic strain
+// (already rotated by the element) updated in place. Pressure p = K mu (total), sig = s - p I; deviator
+// incremental with radial return; once eps_p > EPS_p_max the deviator stays zero. Returns the plastic strain
 // increment.
 double solid_point_update(const MaterialParams& p, double rate, const double de[6], double mu, double sig[6],
                           double& eps_p);

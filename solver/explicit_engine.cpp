@@ -1,0 +1,443 @@
+// The explicit time loop; see explicit_engine.hpp for the cycle order and the energy definitions.
+// Masses and rotational inertias (elements.md section 5): shells m_e = rho t0 A0, m_e/4 per slot,
+// I = (m_e/4)(A0/9 + t0^2/12); 3-node shells m_e alpha_k/pi with I_e = m_e (A0/4.5 + t0^2/12);
+// bricks m_e/8 per node and no inertia.
+#include "solver/explicit_engine.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include "solver/kinematics_driver.hpp"
+#include "solver/model/geometry.hpp"
+
+namespace radx::solver {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double shell_thickness(const model::Model& m, const model::ElementBlock& b, std::size_t e) {
+  if (b.thickness[e] > 0) return b.thickness[e];
+  const auto part = b.part[e];
+  return m.properties[m.parts[part].property].shell.thickness;
+}
+
+}  // namespace
+
+struct ExplicitEngine::Impl {
+  KinematicsDriver kinematics;
+  explicit Impl(const model::Model& m, const model::RunControls& c, NodeState& n) : kinematics(m, c, n) {}
+};
+
+ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunControls& controls, EngineOptions options)
+    : model_(model), controls_(controls), options_(options) {
+  materials_.reserve(model_.materials.size());
+  for (const auto& m : model_.materials) materials_.push_back(make_material_params(m));
+  build_nodes();
+  build_groups();
+  build_assembly();
+  impl_ = new Impl(model_, controls_, nodes_);
+}
+
+ExplicitEngine::~ExplicitEngine() { delete impl_; }
+
+void ExplicitEngine::build_nodes() {
+  const auto& m = model_;
+  nodes_.resize(m.nodes.size());
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
+    nodes_.x[n] = nodes_.x0[n] = m.nodes.x[n];
+    nodes_.y[n] = nodes_.y0[n] = m.nodes.y[n];
+    nodes_.z[n] = nodes_.z0[n] = m.nodes.z[n];
+  }
+  auto X = [&](std::int32_t n) { return model::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]}; };
+  auto rho_of = [&](std::int32_t part) { return m.materials[m.parts[part].material].rho; };
+  for (std::size_t e = 0; e < m.shells.size(); ++e) {
+    const auto* c = &m.shells.conn[4 * e];
+    const double t0 = shell_thickness(m, m.shells, e);
+    const double a0 = model::quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[3]));
+    const double me = rho_of(m.shells.part[e]) * t0 * a0;
+    const double inertia = 0.25 * me * (a0 / 9.0 + t0 * t0 / 12.0);
+    for (int k = 0; k < 4; ++k) {
+      nodes_.mass[c[k]] += 0.25 * me;
+      nodes_.inertia[c[k]] += inertia;
+    }
+  }
+  for (std::size_t e = 0; e < m.shells3.size(); ++e) {
+    const auto* c = &m.shells3.conn[3 * e];
+    const double t0 = shell_thickness(m, m.shells3, e);
+    const model::Vec3 x[3] = {X(c[0]), X(c[1]), X(c[2])};
+    const double a0 = model::triangle_area(x[0], x[1], x[2]);
+    const double me = rho_of(m.shells3.part[e]) * t0 * a0;
+    const double ie = me * (a0 / 4.5 + t0 * t0 / 12.0);
+    for (int k = 0; k < 3; ++k) {
+      const auto u = model::sub(x[(k + 1) % 3], x[k]);
+      const auto v = model::sub(x[(k + 2) % 3], x[k]);
+      const double cosang = std::clamp(model::dot(u, v) / (model::norm(u) * model::norm(v)), -1.0, 1.0);
+      const double share = std::acos(cosang) / std::numbers::pi;
+      nodes_.mass[c[k]] += me * share;
+      nodes_.inertia[c[k]] += ie * share;
+    }
+  }
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+    const auto* c = &m.bricks.conn[8 * e];
+    std::array<model::Vec3, 8> x{};
+    for (int k = 0; k < 8; ++k) x[k] = X(c[k]);
+    const double me = rho_of(m.bricks.part[e]) * model::brick_volume(x);
+    for (int k = 0; k < 8; ++k) nodes_.mass[c[k]] += 0.125 * me;
+  }
+  mass0_ = 0;
+  for (double v : nodes_.mass) mass0_ += v;
+}
+
+void ExplicitEngine::build_groups() {
+  const auto& m = model_;
+  // Elements sorted by part (stable), then cut into groups of at most kGroupSize.
+  auto order_by_part = [](const model::ElementBlock& b) {
+    std::vector<std::int32_t> order(b.size());
+    for (std::size_t e = 0; e < b.size(); ++e) order[e] = static_cast<std::int32_t>(e);
+    std::stable_sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t c) { return b.part[a] < b.part[c]; });
+    return order;
+  };
+  auto shell_groups = [&](const model::ElementBlock& b, bool triangle) {
+    const auto order = order_by_part(b);
+    const int npe = b.npe();
+    std::size_t k = 0;
+    while (k < order.size()) {
+      const auto part = b.part[order[k]];
+      const auto& prop = m.properties[m.parts[part].property].shell;
+      const auto mat = m.parts[part].material;
+      int points = prop.n_ip;
+      if (m.materials[mat].law != model::MaterialLaw::Elastic && points == 0) points = 3;  // LAW2 with N = 0
+      if (m.materials[mat].law == model::MaterialLaw::Elastic && points > 1) points = 0;   // LAW1: resultant
+      ShellGroup g;
+      std::size_t end = k;
+      while (end < order.size() && b.part[order[end]] == part && end - k < static_cast<std::size_t>(kGroupSize)) ++end;
+      g.allocate(static_cast<int>(end - k), points);
+      g.triangle = triangle;
+      g.part = part;
+      g.material = mat;
+      g.props.ishell = prop.ishell;
+      g.props.ismstr = prop.ismstr;
+      g.props.ithick = prop.ithick == 1 ? 1 : 0;
+      g.props.iplas = prop.iplas == 1 ? 1 : 0;
+      g.props.hm = prop.hm;
+      g.props.hf = prop.hf;
+      g.props.hr = prop.hr;
+      g.props.dm = prop.dm;
+      g.props.ashear = points == 1 ? 0.0 : prop.ashear;
+      for (int i = 0; i < g.count; ++i) {
+        const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
+        g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
+        for (int q = 0; q < npe; ++q)
+          g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = b.conn[e * static_cast<std::size_t>(npe) + q];
+        if (triangle) g.conn[static_cast<std::size_t>(3 * kGroupSize + i)] = b.conn[e * 3 + 2];
+        const double t0 = shell_thickness(m, b, e);
+        g.t0[static_cast<std::size_t>(i)] = g.thick[static_cast<std::size_t>(i)] = t0;
+      }
+      shells_.push_back(std::move(g));
+      k = end;
+    }
+  };
+  shell_groups(m.shells, false);
+  shell_groups(m.shells3, true);
+  const auto order = order_by_part(m.bricks);
+  std::size_t k = 0;
+  while (k < order.size()) {
+    const auto part = m.bricks.part[order[k]];
+    const auto& prop = m.properties[m.parts[part].property].solid;
+    BrickGroup g;
+    std::size_t end = k;
+    while (end < order.size() && m.bricks.part[order[end]] == part && end - k < static_cast<std::size_t>(kGroupSize))
+      ++end;
+    g.allocate(static_cast<int>(end - k));
+    g.part = part;
+    g.material = m.parts[part].material;
+    g.isolid = prop.isolid;
+    g.qa = prop.qa;
+    g.qb = prop.qb;
+    g.h = prop.h;
+    const double rho0 = materials_[static_cast<std::size_t>(g.material)].rho0;
+    for (int i = 0; i < g.count; ++i) {
+      const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
+      g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
+      std::array<model::Vec3, 8> x{};
+      for (int q = 0; q < 8; ++q) {
+        const auto n = m.bricks.conn[8 * e + static_cast<std::size_t>(q)];
+        g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = n;
+        x[static_cast<std::size_t>(q)] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
+      }
+      const double v0 = model::brick_volume(x);
+      g.vol0[static_cast<std::size_t>(i)] = g.vol[static_cast<std::size_t>(i)] = v0;
+      g.rho[static_cast<std::size_t>(i)] = rho0;
+    }
+    bricks_.push_back(std::move(g));
+    k = end;
+  }
+  element_count_ = m.shells.size() + m.shells3.size() + m.bricks.size();
+}
+
+void ExplicitEngine::build_assembly() {
+  // Count, then fill, the entries of each node in a fixed order: shell groups, then brick groups, each
+  // in group order, slot order and connectivity order.
+  const std::size_t n = nodes_.n;
+  std::vector<std::size_t> count(n + 1, 0);
+  auto each_entry = [&](auto&& f) {
+    for (auto& g : shells_) {
+      const int npe = g.triangle ? 3 : 4;
+      for (int i = 0; i < g.count; ++i)
+        for (int q = 0; q < npe; ++q) {
+          // A degenerate quad (n3 == n4) still has four slots; each carries its share.
+          const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
+          f(node, &g.nodal_force[static_cast<std::size_t>(q * 6 * kGroupSize + i)], true);
+        }
+    }
+    for (auto& g : bricks_)
+      for (int i = 0; i < g.count; ++i)
+        for (int q = 0; q < 8; ++q) {
+          const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
+          f(node, &g.nodal_force[static_cast<std::size_t>(q * 3 * kGroupSize + i)], false);
+        }
+  };
+  each_entry([&](std::int32_t node, const double*, bool) { ++count[static_cast<std::size_t>(node) + 1]; });
+  for (std::size_t k = 0; k < n; ++k) count[k + 1] += count[k];
+  slot_offsets_ = count;
+  slots_.assign(count[n], Slot{nullptr, false});
+  std::vector<std::size_t> fill(count.begin(), count.end() - 1);
+  each_entry([&](std::int32_t node, const double* base, bool rot) {
+    slots_[fill[static_cast<std::size_t>(node)]++] = Slot{base, rot};
+  });
+}
+
+void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
+  const auto ns = static_cast<std::int64_t>(shells_.size());
+  const auto nb = static_cast<std::int64_t>(bricks_.size());
+#pragma omp parallel
+  {
+#pragma omp for schedule(dynamic, 1) nowait
+    for (std::int64_t k = 0; k < ns; ++k) {
+      auto& g = shells_[static_cast<std::size_t>(k)];
+      const auto& mat = materials_[static_cast<std::size_t>(g.material)];
+      if (g.triangle) shell_c0_tri3_forces(g, nodes_, mat, cyc);
+      else shell_bt4_forces(g, nodes_, mat, cyc);
+    }
+#pragma omp for schedule(dynamic, 1)
+    for (std::int64_t k = 0; k < nb; ++k) {
+      auto& g = bricks_[static_cast<std::size_t>(k)];
+      hex8_forces(g, nodes_, materials_[static_cast<std::size_t>(g.material)], cyc);
+    }
+  }
+}
+
+void ExplicitEngine::assemble() {
+  const auto n = static_cast<std::int64_t>(nodes_.n);
+  auto& s = nodes_;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const auto node = static_cast<std::size_t>(k);
+    double f[6] = {0, 0, 0, 0, 0, 0};
+    for (std::size_t q = slot_offsets_[node]; q < slot_offsets_[node + 1]; ++q) {
+      const Slot& sl = slots_[q];
+      for (int d = 0; d < 3; ++d) f[d] += sl.base[d * kGroupSize];
+      if (sl.rot)
+        for (int d = 3; d < 6; ++d) f[d] += sl.base[d * kGroupSize];
+    }
+    // External loads were put in f*_ext by the loads; the total is their sum with the element forces.
+    s.fx[node] = s.fx_ext[node] + f[0];
+    s.fy[node] = s.fy_ext[node] + f[1];
+    s.fz[node] = s.fz_ext[node] + f[2];
+    s.mx[node] += f[3];
+    s.my[node] += f[4];
+    s.mz[node] += f[5];
+  }
+}
+
+double ExplicitEngine::element_time_step(StepControl& control) const {
+  double best = kInf;
+  auto family_scale = [&](const model::DtControl& fam) {
+    return fam.given ? fam.scale : controls_.global.scale;
+  };
+  const double s_shell = family_scale(controls_.shell);
+  const double s_shell3 = family_scale(controls_.shell3);
+  const double s_brick = family_scale(controls_.brick);
+  for (const auto& g : shells_) {
+    const double scale = g.triangle ? s_shell3 : s_shell;
+    for (int i = 0; i < g.count; ++i) {
+      const double dt = scale * g.dt[static_cast<std::size_t>(i)];
+      if (dt < best) {
+        best = dt;
+        const auto e = static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)]);
+        control.kind = g.triangle ? StepControl::Kind::Shell3 : StepControl::Kind::Shell;
+        control.user_id = g.triangle ? model_.shells3.id[e] : model_.shells.id[e];
+      }
+    }
+  }
+  for (const auto& g : bricks_) {
+    for (int i = 0; i < g.count; ++i) {
+      const double dt = s_brick * g.dt[static_cast<std::size_t>(i)];
+      if (dt < best) {
+        best = dt;
+        control.kind = StepControl::Kind::Brick;
+        control.user_id = model_.bricks.id[static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])];
+      }
+    }
+  }
+  return best;
+}
+
+CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt, const StepControl& control) const {
+  CycleReport r;
+  r.cycle = cycle;
+  r.time = time;
+  r.dt = dt;
+  r.control = control;
+  r.energy = energy_;
+  r.mass0 = mass0_;
+  double mass = 0, added = 0;
+  for (std::size_t n = 0; n < nodes_.n; ++n) {
+    mass += nodes_.mass[n];
+    added += nodes_.added_mass[n];
+  }
+  r.mass = mass;
+  r.added_mass = added;
+  return r;
+}
+
+RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_cycle) {
+  if (options_.threads > 0) omp_set_num_threads(options_.threads);
+  RunResult res;
+  res.threads = omp_get_max_threads();
+  const auto t_wall0 = std::chrono::steady_clock::now();
+  double element_seconds = 0;
+  auto& s = nodes_;
+  auto& kin = impl_->kinematics;
+  kin.initial_conditions();
+
+  double time = 0, dt1 = 0, dt2 = 0;
+  std::int64_t cycle = 0;
+  StepControl control;
+  bool first = true;
+  while (true) {
+    // 1. external loads at t_n.
+    std::fill(s.fx_ext.begin(), s.fx_ext.end(), 0.0);
+    std::fill(s.fy_ext.begin(), s.fy_ext.end(), 0.0);
+    std::fill(s.fz_ext.begin(), s.fz_ext.end(), 0.0);
+    std::fill(s.mx.begin(), s.mx.end(), 0.0);
+    std::fill(s.my.begin(), s.my.end(), 0.0);
+    std::fill(s.mz.begin(), s.mz.end(), 0.0);
+    kin.external_loads(time, dt1, dt2);
+    // 3. element groups.
+    const auto te0 = std::chrono::steady_clock::now();
+    compute_element_forces(CycleInfo{dt1, dt2, time});
+    // 4. assembly.
+    assemble();
+    element_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - te0).count();
+    // 9 (early): the step of this cycle comes from the element steps just computed.
+    StepControl ctl;
+    double dt_elem = element_time_step(ctl);
+    if (first) {
+      dt2 = dt_elem;
+    } else {
+      dt2 = std::min(dt_elem, 1.1 * dt1);
+      if (dt2 != dt_elem) ctl.kind = control.kind, ctl.user_id = control.user_id;
+    }
+    if (!std::isfinite(dt2) || dt2 <= 0) {
+      res.status = RunStatus::Error;
+      res.message = "no finite time step: the model has no element with a stable step";
+      break;
+    }
+    if (time + dt2 > controls_.t_stop) dt2 = std::max(controls_.t_stop - time, 0.0);
+    control = ctl;
+    if (controls_.global.t_min > 0 && dt_elem < controls_.global.t_min) {
+      res.status = RunStatus::Error;
+      res.message = "the time step " + std::to_string(dt_elem) + " fell below the /DT minimum " +
+                    std::to_string(controls_.global.t_min);
+      break;
+    }
+    // 5. accelerations.
+    for (std::size_t n = 0; n < s.n; ++n) {
+      const double m = s.mass[n];
+      const double inv = m > 0 ? 1.0 / m : 0.0;
+      s.ax[n] = s.fx[n] * inv;
+      s.ay[n] = s.fy[n] * inv;
+      s.az[n] = s.fz[n] * inv;
+      const double I = s.inertia[n];
+      const double invI = I > 0 ? 1.0 / I : 0.0;
+      s.awx[n] = s.mx[n] * invI;
+      s.awy[n] = s.my[n] * invI;
+      s.awz[n] = s.mz[n] * invI;
+    }
+    // 7. kinematic conditions.
+    kin.kinematic_conditions(time, dt1, dt2);
+    // Energies at t_n (elements.md section 8).
+    energy_.internal = energy_.hourglass = energy_.plastic_work = 0;
+    for (const auto& g : shells_)
+      for (int i = 0; i < g.count; ++i) {
+        energy_.internal += g.e_int[static_cast<std::size_t>(i)];
+        energy_.hourglass += g.e_hg[static_cast<std::size_t>(i)];
+        energy_.plastic_work += g.w_plastic[static_cast<std::size_t>(i)];
+      }
+    for (const auto& g : bricks_)
+      for (int i = 0; i < g.count; ++i) {
+        energy_.internal += g.e_int[static_cast<std::size_t>(i)];
+        energy_.hourglass += g.e_hg[static_cast<std::size_t>(i)];
+        energy_.plastic_work += g.w_plastic[static_cast<std::size_t>(i)];
+      }
+    kin.kinetic_energy(dt1, energy_.kinetic_t, energy_.kinetic_r);
+    energy_.external_work = kin.external_work();
+    if (first) energy_.initial_total = energy_.total() - energy_.external_work;
+    const double denom = energy_.initial_total + energy_.external_work;
+    const double e_tot = energy_.total();
+    energy_.error_percent =
+        std::abs(denom) <= 1e-20 ? 0.0 : std::clamp(100.0 * (e_tot / denom - 1.0), -99.9, 99.9);
+    // 10. outputs.
+    CycleReport rep = report(cycle, time, dt2, control);
+    rep.momentum = kin.momentum(dt1);
+    res.last = rep;
+    if (on_cycle && !on_cycle(rep)) {
+      res.status = RunStatus::Error;
+      if (res.message.empty()) res.message = "stopped by a /STOP criterion";
+      break;
+    }
+    if (time >= controls_.t_stop || dt2 <= 0) break;
+    // 8. velocities and positions.
+    const double dt12 = first ? 0.5 * dt2 : 0.5 * (dt1 + dt2);
+    bool finite = true;
+    for (std::size_t n = 0; n < s.n; ++n) {
+      s.vx[n] += dt12 * s.ax[n];
+      s.vy[n] += dt12 * s.ay[n];
+      s.vz[n] += dt12 * s.az[n];
+      s.wx[n] += dt12 * s.awx[n];
+      s.wy[n] += dt12 * s.awy[n];
+      s.wz[n] += dt12 * s.awz[n];
+      s.x[n] += dt2 * s.vx[n];
+      s.y[n] += dt2 * s.vy[n];
+      s.z[n] += dt2 * s.vz[n];
+      finite = finite && std::isfinite(s.x[n] + s.y[n] + s.z[n]);
+    }
+    kin.after_update(dt2);
+    if (!finite) {
+      res.status = RunStatus::Error;
+      res.message = "non-finite coordinates at cycle " + std::to_string(cycle) + ": the run is unstable";
+      break;
+    }
+    // 11.
+    time += dt2;
+    dt1 = dt2;
+    ++cycle;
+    first = false;
+  }
+  res.cycles = cycle;
+  res.time = time;
+  res.dt = dt2;
+  res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_wall0).count();
+  res.element_seconds = element_seconds;
+  return res;
+}
+
+}  // namespace radx::solver

@@ -1,0 +1,120 @@
+// The explicit engine: central differences with lumped mass over the model's element groups.
+//
+// One cycle (architecture.md section 4; elements.md section 0), cycle n at time t_n:
+//   1. external loads at t_n (gravity, concentrated loads, pressures);
+//   2. contact (TYPE7: its own issue) would go here;
+//   3. element groups: gather, strain rate, material update, internal forces, element time step;
+//   4. deterministic assembly of element forces, node by node in a fixed order;
+//   5. accelerations a = f / m (rotations: moment / scalar inertia);
+//   6. Lagrange-multiplier correction (LAGDT: its own issue);
+//   7. kinematic conditions: rigid bodies, boundary conditions, imposed velocities, rigid walls;
+//   8. v^{n+1/2} = v^{n-1/2} + dt12 a^n,  x^{n+1} = x^n + dt2 v^{n+1/2},  dt12 = (dt1 + dt2) / 2;
+//   9. next time step dt = min(scale * element steps, 1.1 dt_previous);
+//  10. outputs when due (listing, states); 11. t += dt.
+// Energies follow elements.md section 8: internal (element work), hourglass, kinetic (at the full
+// step, v^{n-1/2} + dt1/2 a^n), external work; error % = 100 (E / (E0 + W) - 1).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "solver/element_groups.hpp"
+#include "solver/model/model.hpp"
+#include "solver/model/run_controls.hpp"
+#include "solver/node_state.hpp"
+
+namespace radx::solver {
+
+struct EnergyBalance {
+  double kinetic_t = 0, kinetic_r = 0, internal = 0, hourglass = 0, external_work = 0, plastic_work = 0;
+  double contact_elastic = 0, contact_damping = 0, contact_friction = 0, contact_lagrange = 0;
+  double initial_total = 0;  // E_tot at cycle 0
+  double error_percent = 0;
+  [[nodiscard]] double total() const {
+    return kinetic_t + kinetic_r + internal + hourglass + contact_elastic + contact_damping + contact_friction +
+           contact_lagrange;
+  }
+};
+
+// What controls the time step this cycle.
+struct StepControl {
+  enum class Kind : std::uint8_t { None, Shell, Shell3, Brick, Node } kind = Kind::None;
+  std::int64_t user_id = 0;
+};
+
+// The state the listing and outputs read after each cycle.
+struct CycleReport {
+  std::int64_t cycle = 0;
+  double time = 0, dt = 0;
+  StepControl control;
+  EnergyBalance energy;
+  double mass = 0, mass0 = 0, added_mass = 0;
+  std::array<double, 3> momentum{};
+};
+
+struct EngineOptions {
+  int threads = 0;  // 0: OpenMP default (OMP_NUM_THREADS or all cores)
+};
+
+enum class RunStatus : std::uint8_t { Normal, Error };
+
+struct RunResult {
+  RunStatus status = RunStatus::Normal;
+  std::string message;
+  std::int64_t cycles = 0;
+  double time = 0, dt = 0;
+  double wall_seconds = 0, element_seconds = 0;
+  int threads = 1;
+  CycleReport last;
+};
+
+class ExplicitEngine {
+ public:
+  ExplicitEngine(const model::Model& model, const model::RunControls& controls, EngineOptions options);
+  ~ExplicitEngine();
+  ExplicitEngine(const ExplicitEngine&) = delete;
+  ExplicitEngine& operator=(const ExplicitEngine&) = delete;
+
+  // Runs to the end time. `on_cycle` is called after every cycle with the cycle's report (the caller
+  // decides what to print or write); returning false stops the run (status Error, its message kept).
+  RunResult run(const std::function<bool(const CycleReport&)>& on_cycle);
+
+  [[nodiscard]] const NodeState& nodes() const { return nodes_; }
+  [[nodiscard]] const std::vector<ShellGroup>& shell_groups() const { return shells_; }
+  [[nodiscard]] const std::vector<BrickGroup>& brick_groups() const { return bricks_; }
+  [[nodiscard]] std::size_t element_count() const { return element_count_; }
+
+ private:
+  struct Impl;
+  void build_nodes();
+  void build_groups();
+  void build_assembly();
+  void compute_element_forces(const CycleInfo& cyc);
+  void assemble();
+  double element_time_step(StepControl& control) const;
+  CycleReport report(std::int64_t cycle, double time, double dt, const StepControl& control) const;
+
+  const model::Model& model_;
+  const model::RunControls& controls_;
+  EngineOptions options_;
+  NodeState nodes_;
+  std::vector<MaterialParams> materials_;
+  std::vector<ShellGroup> shells_;
+  std::vector<BrickGroup> bricks_;
+  std::size_t element_count_ = 0;
+  // Assembly: for node n, slots_[offsets_[n] .. offsets_[n+1]) point at its entries in the groups'
+  // nodal_force buffers, in a fixed order; `rot` says whether the entry carries moments.
+  struct Slot {
+    const double* base;  // force component d is base[d * kGroupSize]
+    bool rot;
+  };
+  std::vector<std::size_t> slot_offsets_;
+  std::vector<Slot> slots_;
+  Impl* impl_ = nullptr;  // kinematic conditions and loads (owned)
+  EnergyBalance energy_;
+  double mass0_ = 0;
+};
+
+}  // namespace radx::solver

@@ -1,0 +1,44 @@
+// The engine's single entry point to loads and kinematic conditions: it owns the objects of
+// /GRAV, /CLOAD, /PLOAD, /BCS, /IMPVEL, /INIVEL, /RWALL and /RBODY and calls them in the order of the
+// cycle (explicit_engine.hpp). It also computes the kinetic energy and momentum with the rigid-body
+// corrections, so the time loop never needs to know which conditions exist.
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include "solver/model/model.hpp"
+#include "solver/model/run_controls.hpp"
+#include "solver/node_state.hpp"
+
+namespace radx::solver {
+
+class KinematicsDriver {
+ public:
+  KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes);
+  ~KinematicsDriver();
+  KinematicsDriver(const KinematicsDriver&) = delete;
+  KinematicsDriver& operator=(const KinematicsDriver&) = delete;
+
+  // t = 0: fixed dofs, initial velocities, rigid-body set-up.
+  void initial_conditions();
+  // Step 1 of the cycle: external forces at time t into f*_ext (and moments into m*).
+  void external_loads(double t, double dt1, double dt2);
+  // Step 7: after a = f/m, before v += dt12 a.
+  void kinematic_conditions(double t, double dt1, double dt2);
+  // After x += dt2 v (moving frames of rigid bodies).
+  void after_update(double dt2);
+  // KE at the full step, v = v^{n-1/2} + dt1/2 a^n (elements.md section 8), rigid bodies counted once.
+  void kinetic_energy(double dt1, double& translational, double& rotational) const;
+  [[nodiscard]] std::array<double, 3> momentum(double dt1) const;
+  [[nodiscard]] double external_work() const;
+
+ private:
+  struct Parts;
+  const model::Model& model_;
+  const model::RunControls& controls_;
+  NodeState& nodes_;
+  std::unique_ptr<Parts> parts_;
+};
+
+}  // namespace radx::solver
