@@ -10,6 +10,7 @@
 #include "contact/type7_prepare.hpp"
 #include "io/model_file.hpp"
 #include "io/starter_listing.hpp"
+#include "parser/build_run_controls.hpp"
 #include "parser/deck.hpp"
 #include "parser/deck_echo.hpp"
 #include "parser/model_builder.hpp"
@@ -105,7 +106,7 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
   }
   if (opt.check_engine_deck) {
     std::string engine = is_one_file_deck(opt.deck) ? opt.deck : engine_deck_beside(opt.deck);
-    if (!engine.empty()) read_engine_deck(engine, diags);
+    if (!engine.empty()) read_run_controls(engine, diags);
   }
   diags.sort();
   res.errors = diags.error_count();

@@ -35,7 +35,8 @@ struct ExplicitEngine::Impl {
   explicit Impl(const model::Model& m, const model::RunControls& c, NodeState& n) : kinematics(m, c, n) {}
 };
 
-ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunControls& controls, EngineOptions options)
+ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunControls& controls,
+                               EngineOptions options)
     : model_(model), controls_(controls), options_(options) {
   materials_.reserve(model_.materials.size());
   for (const auto& m : model_.materials) materials_.push_back(make_material_params(m));
@@ -45,7 +46,9 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
   impl_ = new Impl(model_, controls_, nodes_);
 }
 
-ExplicitEngine::~ExplicitEngine() { delete impl_; }
+ExplicitEngine::~ExplicitEngine() {
+  delete impl_;
+}
 
 void ExplicitEngine::build_nodes() {
   const auto& m = model_;
@@ -101,7 +104,8 @@ void ExplicitEngine::build_groups() {
   auto order_by_part = [](const model::ElementBlock& b) {
     std::vector<std::int32_t> order(b.size());
     for (std::size_t e = 0; e < b.size(); ++e) order[e] = static_cast<std::int32_t>(e);
-    std::stable_sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t c) { return b.part[a] < b.part[c]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::int32_t a, std::int32_t c) { return b.part[a] < b.part[c]; });
     return order;
   };
   auto shell_groups = [&](const model::ElementBlock& b, bool triangle) {
@@ -117,7 +121,9 @@ void ExplicitEngine::build_groups() {
       if (m.materials[mat].law == model::MaterialLaw::Elastic && points > 1) points = 0;   // LAW1: resultant
       ShellGroup g;
       std::size_t end = k;
-      while (end < order.size() && b.part[order[end]] == part && end - k < static_cast<std::size_t>(kGroupSize)) ++end;
+      while (end < order.size() && b.part[order[end]] == part &&
+             end - k < static_cast<std::size_t>(kGroupSize))
+        ++end;
       g.allocate(static_cast<int>(end - k), points);
       g.triangle = triangle;
       g.part = part;
@@ -135,7 +141,8 @@ void ExplicitEngine::build_groups() {
         const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
         g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
         for (int q = 0; q < npe; ++q)
-          g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = b.conn[e * static_cast<std::size_t>(npe) + q];
+          g.conn[static_cast<std::size_t>(q * kGroupSize + i)] =
+              b.conn[e * static_cast<std::size_t>(npe) + q];
         if (triangle) g.conn[static_cast<std::size_t>(3 * kGroupSize + i)] = b.conn[e * 3 + 2];
         const double t0 = shell_thickness(m, b, e);
         g.t0[static_cast<std::size_t>(i)] = g.thick[static_cast<std::size_t>(i)] = t0;
@@ -153,7 +160,8 @@ void ExplicitEngine::build_groups() {
     const auto& prop = m.properties[m.parts[part].property].solid;
     BrickGroup g;
     std::size_t end = k;
-    while (end < order.size() && m.bricks.part[order[end]] == part && end - k < static_cast<std::size_t>(kGroupSize))
+    while (end < order.size() && m.bricks.part[order[end]] == part &&
+           end - k < static_cast<std::size_t>(kGroupSize))
       ++end;
     g.allocate(static_cast<int>(end - k));
     g.part = part;
@@ -223,8 +231,10 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
     for (std::int64_t k = 0; k < ns; ++k) {
       auto& g = shells_[static_cast<std::size_t>(k)];
       const auto& mat = materials_[static_cast<std::size_t>(g.material)];
-      if (g.triangle) shell_c0_tri3_forces(g, nodes_, mat, cyc);
-      else shell_bt4_forces(g, nodes_, mat, cyc);
+      if (g.triangle)
+        shell_c0_tri3_forces(g, nodes_, mat, cyc);
+      else
+        shell_bt4_forces(g, nodes_, mat, cyc);
     }
 #pragma omp for schedule(dynamic, 1)
     for (std::int64_t k = 0; k < nb; ++k) {
@@ -290,7 +300,8 @@ double ExplicitEngine::element_time_step(StepControl& control) const {
   return best;
 }
 
-CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt, const StepControl& control) const {
+CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
+                                   const StepControl& control) const {
   CycleReport r;
   r.cycle = cycle;
   r.time = time;

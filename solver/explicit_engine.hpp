@@ -33,8 +33,8 @@ struct EnergyBalance {
   double initial_total = 0;  // E_tot at cycle 0
   double error_percent = 0;
   [[nodiscard]] double total() const {
-    return kinetic_t + kinetic_r + internal + hourglass + contact_elastic + contact_damping + contact_friction +
-           contact_lagrange;
+    return kinetic_t + kinetic_r + internal + hourglass + contact_elastic + contact_damping +
+           contact_friction + contact_lagrange;
   }
 };
 

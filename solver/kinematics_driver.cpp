@@ -40,6 +40,8 @@ std::array<double, 3> KinematicsDriver::momentum(double dt1) const {
   return p;
 }
 
-double KinematicsDriver::external_work() const { return parts_->external_work; }
+double KinematicsDriver::external_work() const {
+  return parts_->external_work;
+}
 
 }  // namespace radx::solver

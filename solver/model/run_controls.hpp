@@ -26,17 +26,17 @@ struct RunControls {
   // Outputs.
   double anim_start = 0, anim_dt = 0, anim_stop = 1e20;  // /ANIM/DT (anim_dt 0: no states but first/last)
   std::vector<std::string> anim_elem, anim_vect, anim_tens, anim_noda;  // names as written, upper case
-  double th_dt = 1e30;  // /TFILE
-  int print_every = 100;   // |n| of /PRINT/n
-  bool print_stdout = true;  // negative n also prints to stdout
+  double th_dt = 1e30;                                                  // /TFILE
+  int print_every = 100;                                                // |n| of /PRINT/n
+  bool print_stdout = true;                                             // negative n also prints to stdout
   int print_header_every = 0;
 
   // Time step.
-  DtControl global;   // /DT: element step scale and minimum (Tmin reached: stop)
-  DtControl nodal;    // /DT/NODA/CST: mass added below Tmin
+  DtControl global;                     // /DT: element step scale and minimum (Tmin reached: stop)
+  DtControl nodal;                      // /DT/NODA/CST: mass added below Tmin
   double nodal_max_added_mass_pct = 0;  // /DT/NODA/CST third value: stop beyond it (0: no limit)
-  DtControl brick, shell, shell3;  // /DT/BRICK|SHELL|SH_3N/CST: small-strain switch at Tmin
-  DtControl inter;    // /DT/INTER/CST, /DEL, /LAG
+  DtControl brick, shell, shell3;       // /DT/BRICK|SHELL|SH_3N/CST: small-strain switch at Tmin
+  DtControl inter;                      // /DT/INTER/CST, /DEL, /LAG
 
   // /STOP.
   double stop_energy_error_pct = 1e30, stop_mass_error = 1e30, stop_nodal_mass_error = 1e30;

@@ -1,0 +1,177 @@
+// The engine listing (standard output and NAME_0001.out), Radioss style: a header block with the model and
+// the resolved run controls, then every /PRINT cycles one line (shared/spec/elements.md section 8):
+//   CYCLE TIME TIME-STEP ELEMENT(type id) ERROR% I-ENERGY K-ENERGY-T K-ENERGY-R EXT-WORK MAS.ERR TOTAL-MASS
+//   MASS-ADDED
+// with the column titles repeated every nh lines when /PRINT/n/nh asks; a progress line on interactive
+// terminals only (rewritten in place with '\r'); and the end-of-run block: energy balance by kind, cycles,
+// wall time, cost in microseconds per element per cycle, mass added, status and message.
+//
+// The engine fills the plain structs below; nothing here knows solver internals. Energies, masses and times
+// are in work units.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "solver/model/run_controls.hpp"
+
+namespace radx::io {
+
+// ERROR % of elements.md 8: 100 (E_tot / (E_tot0 + W_ext) - 1), clipped to [-99.9, 99.9]; 0 when
+// |E_tot0 + W_ext| <= 1e-20. E_tot = KE_T + KE_R + IE; E_tot0 = E_tot at cycle 0 minus the work booked at
+// cycle 0; W_ext the external work so far. NaN inputs give NaN (shown, never hidden).
+double energy_error_percent(double e_total, double e_total0, double w_ext);
+
+// What controls the time step printed on a listing line.
+enum class StepSource : std::uint8_t { None, Brick, Shell, Shell3, Node, Interface };
+// "BRICK", "SHELL", "SH3N", "NODE", "INTER", or "-" for None.
+std::string_view step_source_label(StepSource s);
+
+// One listing line.
+struct ListingLine {
+  std::int64_t cycle = 0;
+  double time = 0;
+  double dt = 0;  // the time step of this cycle
+  StepSource source = StepSource::None;
+  std::int64_t source_id = 0;  // user id of the element, node or interface controlling dt
+  double error_percent = 0;    // energy_error_percent(...)
+  double internal_energy = 0;  // I-ENERGY (no hourglass, no contact)
+  double kinetic_t = 0;        // K-ENERGY T
+  double kinetic_r = 0;        // K-ENERGY R
+  double external_work = 0;    // EXT-WORK
+  double mass_error = 0;       // MAS.ERR = (M - M0) / M0
+  double total_mass = 0;       // TOTAL MASS
+  double added_mass = 0;       // MASS ADDED by /DT/.../CST
+};
+
+// The column titles, aligned with format_listing_line (one line, no line end).
+std::string listing_column_titles();
+// One listing line (no line end). Columns are blank separated; reals are printed with 6 significant
+// digits (%.5E), the error with one decimal and a '%'; an element is "TYPE id" ("- -" when none).
+std::string format_listing_line(const ListingLine& l);
+
+// Energies at the end of the run (or at any cycle), by kind.
+struct EnergyBalance {
+  double kinetic_t = 0;
+  double kinetic_r = 0;
+  double internal = 0;
+  double hourglass = 0;
+  double contact_elastic = 0;
+  double contact_damping = 0;
+  double contact_friction = 0;
+  double contact_lagrange = 0;
+  double external_work = 0;
+  double initial_total = 0;  // E_tot0 of elements.md 8
+  // E_tot = KE_T + KE_R + IE + hourglass + contact. Radioss leaves hourglass and contact energies out of
+  // its ERROR % (they show as a negative error); radx books them, so its balance closes
+  // (verification.md C). This is a deliberate difference.
+  [[nodiscard]] double total() const {
+    return kinetic_t + kinetic_r + internal + hourglass + contact_elastic + contact_damping +
+           contact_friction + contact_lagrange;
+  }
+  [[nodiscard]] double error_percent() const {
+    return energy_error_percent(total(), initial_total, external_work);
+  }
+};
+
+struct InterfaceSummary {
+  std::int64_t id = 0;
+  std::int64_t active_pairs = 0;          // pairs in contact at the end of the run
+  double max_penetration = 0;             // largest penetration seen during the run
+  std::int64_t switched_pairs_max = 0;    // LAGDT: most pairs switched to Lagrange in one cycle
+  std::int64_t switched_pairs_total = 0;  // LAGDT: pair-cycles handled by Lagrange multipliers
+};
+
+enum class RunStatus : std::uint8_t { Normal, Error };
+
+// What the engine knows at the end of a run.
+struct RunSummary {
+  RunStatus status = RunStatus::Normal;
+  std::string message;  // why the run ended ("end time reached", "/STOP: energy error ...")
+  std::string run_name;
+  int run_number = 1;
+  std::int64_t cycles = 0;
+  double time = 0;  // final time
+  double dt = 0;    // last time step
+  std::size_t nodes = 0;
+  std::size_t elements = 0;
+  int threads = 1;
+  double wall_seconds = 0;
+  double initial_mass = 0;
+  double mass = 0;        // total mass at the end (with added mass)
+  double added_mass = 0;  // by /DT/NODA/CST and /DT/INTER/CST
+  std::array<double, 3> momentum{0, 0, 0};
+  EnergyBalance energy;
+  std::vector<InterfaceSummary> interfaces;
+};
+
+// Wall microseconds per element per cycle: 1e6 wall / (elements cycles); 0 when either count is 0.
+double us_per_element_cycle(const RunSummary& s);
+
+// What the header block shows.
+struct EngineListingHeader {
+  std::string program_version;
+  std::string engine_deck;
+  std::string model_file;
+  std::string output_root;  // NAME: outputs NAME_0001.out, NAME_summary.json, ...
+  int threads = 1;
+  std::size_t nodes = 0;
+  std::size_t shells = 0;
+  std::size_t shells3 = 0;
+  std::size_t bricks = 0;
+  std::size_t interfaces = 0;
+  double total_mass = 0;
+  std::string mass_unit = "kg", length_unit = "m", time_unit = "s";
+  const model::RunControls* controls = nullptr;  // echoed when set
+};
+
+void write_engine_header(std::ostream& os, const EngineListingHeader& h);
+// The end-of-run block.
+void write_run_summary(std::ostream& os, const RunSummary& s);
+
+// "2 h 05 min", "3 min 07 s", "12.4 s".
+std::string format_duration(double seconds);
+// The progress text (no '\r', no line end): percentage of Tstop done, cycle, elapsed and estimated time
+// left (linear in simulated time).
+std::string format_progress(std::int64_t cycle, double time, double t_stop, double wall_seconds);
+// isatty(STDOUT_FILENO).
+bool stdout_is_terminal();
+
+// Where listing output goes, and how.
+struct ListingSinks {
+  std::ostream* file = nullptr;      // NAME_0001.out (may be null)
+  std::ostream* terminal = nullptr;  // standard output (may be null)
+  bool lines_to_terminal = true;     // /PRINT with negative n
+  bool terminal_is_tty = false;      // progress lines only on an interactive terminal
+  int header_every = 0;              // /PRINT nh: column titles again every nh lines (0: once)
+};
+
+// The listing of one run: header block, lines (with their column titles), progress and end-of-run block,
+// each to the right sinks. The progress line is cleared before any other output reaches the terminal.
+class EngineListing {
+ public:
+  explicit EngineListing(ListingSinks sinks) : s_(sinks) {}
+  void header(const EngineListingHeader& h);
+  void line(const ListingLine& l);
+  // Written at most every `min_interval` wall seconds; nothing when the terminal is not a tty.
+  void progress(std::int64_t cycle, double time, double t_stop, double wall_seconds,
+                double min_interval = 0.5);
+  // A free message line (a warning during the run) to the file and the terminal.
+  void message(std::string_view text);
+  void summary(const RunSummary& s);
+  [[nodiscard]] std::size_t lines_written() const { return lines_; }
+
+ private:
+  void clear_progress();
+  ListingSinks s_;
+  std::size_t lines_ = 0;
+  std::size_t progress_len_ = 0;
+  double last_progress_ = -1e300;
+};
+
+}  // namespace radx::io

@@ -1,0 +1,35 @@
+// NAME_summary.json: the end-of-run summary as JSON, for scripts and regression checks. Written by hand
+// (no library): strings escaped (", \, control characters as \uXXXX; UTF-8 passed through), doubles with
+// 17 significant digits (they read back to the same double), non-finite values as null. Written crash-safe:
+// NAME_summary.json.part first, flushed to disk, then renamed over the real name.
+//
+// Keys: status ("normal" or "error"), message, run_name, run_number, cycles, time, dt, nodes, elements,
+// threads, wall_seconds, us_per_element_cycle, initial_mass, mass, added_mass, momentum [x, y, z],
+// energy {kinetic, kinetic_translational, kinetic_rotational, internal, hourglass, external_work,
+// contact_elastic, contact_damping, contact_friction, contact_lagrange, initial_total, total, error_percent},
+// interfaces [{id, active_pairs, max_penetration, switched_pairs_max, switched_pairs_total}].
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "io/engine_listing.hpp"
+
+namespace radx::io {
+
+// `s` as a JSON string literal, quotes included.
+std::string json_string(std::string_view s);
+// `v` with 17 significant digits (shortest exact form is not required), or null when not finite.
+std::string json_number(double v);
+
+// The summary document (pretty-printed, ends with a line end).
+std::string summary_json(const RunSummary& s);
+
+// dir/ROOT_summary.json.
+std::string summary_json_path(const std::string& dir, const std::string& output_root);
+
+// Writes summary_json(s) to `path` through path + ".part" and a rename. False with `error` set on failure
+// (the .part file is removed).
+bool write_summary_json(const std::string& path, const RunSummary& s, std::string& error);
+
+}  // namespace radx::io

@@ -1,0 +1,565 @@
+// Engine deck -> RunControls. Rules (shared/spec/deck-format.md section 3, type7-lagdt.md section 6):
+// * /RUN/name/irun: Tstop > 0 required; irun >= 1; a restart letter is refused (radx writes no restarts).
+// * /PRINT/n/nh: default -100; n != 0, |n| the line interval, n < 0 also to standard output; nh >= 0.
+// * /TFILE: dt_his > 0; without /TFILE, 1e30 (no time history beyond the first and last states).
+// * /ANIM/DT Tstart dT [Tstop Nframes fct_ID]: Tstop 0 -> 1e20, negative Tstop or Tstart an error; dT <= 0 is
+//   an error unless Nframes > 0 gives it as (end - Tstart) / Nframes; a function id is not implemented.
+// * /DT: Tscale 0 -> 0.9, Tmin 0 -> 0; action Stop (the run stops when the element step reaches Tmin).
+//   The per-family controls (/DT/BRICK|SHELL|SH_3N/CST, action Constant: small-strain switch) default to
+//   the /DT values: a family Tscale or Tmin of 0 takes the /DT value, and a family not given is a copy of
+//   /DT (action Stop, given = false), so the engine can read the three families directly.
+// * /DT/NODA/CST: action AddMass; Tscale 0 -> 0.9; third value: added-mass percentage that stops the run.
+// * /DT/INTER/CST -> AddMass, /DEL -> Delete, /LAG -> Lagrange; Tscale 0 -> 0.9. /DEL has precedence
+//   over the others (a warning says the others are ignored); /CST with /LAG is an error.
+// * /STOP Emax Mmax Nmax [NTH NANIM [NERR_POSIT]]: 0 -> 1e30; negatives are errors; flags 0 or 1.
+// * /ANIM/ELEM|VECT|TENS|NODA/name: the name must be in anim_field_names(); stored in its canonical
+//   spelling, each once, in deck order.
+// * Every singleton keyword given twice is an error at the second one.
+#include "parser/build_run_controls.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "parser/field_parse.hpp"
+
+namespace radx {
+
+namespace {
+
+constexpr double kOff = 1e30;          // /STOP values and /TFILE: never
+constexpr double kAnimNever = 1e20;    // /ANIM/DT Tstop 0
+constexpr double kDefaultScale = 0.9;  // Tscale 0
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (auto& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+class Builder {
+ public:
+  Builder(const EngineDeck& deck, Diagnostics& diags) : deck_(deck), diags_(diags) {}
+
+  void error(const EngineRecord& r, Diag code, std::string msg) {
+    diags_.error(code, deck_.where(r.pos, 1), About{r.decl->path}, std::move(msg));
+  }
+  void warning(const EngineRecord& r, Diag code, std::string msg) {
+    diags_.warning(code, deck_.where(r.pos, 1), About{r.decl->path}, std::move(msg));
+  }
+
+  // The one record of a singleton keyword; a second one is an error that points at the first.
+  const EngineRecord* single(std::string_view path) {
+    const auto recs = deck_.of(path);
+    if (recs.empty()) return nullptr;
+    for (std::size_t k = 1; k < recs.size(); ++k) {
+      const Where first = deck_.where(recs[0]->pos);
+      error(*recs[k], Diag::DuplicateSingleton,
+            std::string(path) + " is given again (first at " + std::string(first.file) + ":" +
+                std::to_string(first.line) + "); give it once");
+    }
+    return recs[0];
+  }
+
+  // Header field k as an integer into `out` (`dflt` when absent). False, after an error, when the field is
+  // not an integer.
+  bool header_int(const EngineRecord& r, std::size_t k, std::int64_t dflt, std::int64_t& out) {
+    out = dflt;
+    if (k >= r.header.size()) return true;
+    const std::string_view field =
+        k < r.decl->header_fields.size() ? r.decl->header_fields[k] : std::string_view("field");
+    if (parse_int(r.header[k], out) != NumberStatus::Ok) {
+      error(r, Diag::BadInteger,
+            std::string(field) + " = '" + r.header[k] + "' in the keyword line is not an integer");
+      out = dflt;
+      return false;
+    }
+    return true;
+  }
+
+  // Tscale and Tmin of a /DT line into `c`. Tscale 0 -> default_scale, Tmin 0 -> default_tmin.
+  void read_dt(const EngineRecord& r, model::DtControl& c, double default_scale, double default_tmin,
+               model::DtAction action) {
+    const double s = r.value(0, 0);
+    const double tmin = r.value(0, 1);
+    c.given = true;
+    c.action = action;
+    c.scale = default_scale;
+    c.t_min = default_tmin;
+    if (s < 0) {
+      error(r, Diag::ValueOutOfRange,
+            "Tscale = " + num(s) + " is negative; give 0 < Tscale <= 1 (0 means " + num(default_scale) + ")");
+    } else if (s > 0) {
+      c.scale = s;
+      if (s > 1)
+        warning(r, Diag::ValueOutOfRange,
+                "Tscale = " + num(s) + " is above 1: the time step exceeds the stability limit estimate");
+    }
+    if (tmin < 0) {
+      error(r, Diag::ValueOutOfRange, "Tmin = " + num(tmin) + " is negative; give Tmin >= 0 (0: no minimum)");
+    } else if (tmin > 0) {
+      c.t_min = tmin;
+    }
+  }
+
+  model::RunControls build();
+
+ private:
+  void run(model::RunControls& rc);
+  void print(model::RunControls& rc);
+  void tfile(model::RunControls& rc);
+  void anim_dt(model::RunControls& rc);
+  void anim_names(model::RunControls& rc);
+  void time_steps(model::RunControls& rc);
+  void stop(model::RunControls& rc);
+  void rbodies(model::RunControls& rc);
+  void versions();
+
+  const EngineDeck& deck_;
+  Diagnostics& diags_;
+};
+
+void Builder::run(model::RunControls& rc) {
+  const EngineRecord* r = single("/RUN");
+  if (!r) return;  // the reader reports a missing /RUN (RX801)
+  if (!r->header.empty()) {
+    // The reader stores keyword fields in upper case; keep the name as written when it can be found.
+    rc.run_name = r->header[0];
+    std::vector<std::string> parts(1);
+    for (char c : r->written) {
+      if (c == '/')
+        parts.emplace_back();
+      else if (c != ' ' && c != '\t')
+        parts.back() += c;
+    }
+    if (parts.size() >= 3 && upper(parts[2]) == r->header[0]) rc.run_name = parts[2];
+  }
+  std::int64_t irun = 1;
+  if (header_int(*r, 1, 1, irun)) {
+    if (irun < 1 || irun > 99999) {
+      error(*r, Diag::ValueOutOfRange,
+            "run number irun = " + std::to_string(irun) +
+                " is out of range; engine runs are numbered 1 to 99999 (run 0 is the starter)");
+    } else {
+      rc.run_number = static_cast<int>(irun);
+    }
+  }
+  if (r->header.size() > 2) {
+    error(*r, Diag::UnimplementedOption,
+          "restart letter '" + r->header[2] +
+              "': radx writes no restart files and cannot restart a run; remove the letter "
+              "(/RUN/name/irun)");
+  }
+  if (!r->lines.empty() && !r->lines[0].empty()) {
+    const double t = r->lines[0][0];
+    if (t <= 0)
+      error(*r, Diag::ValueOutOfRange, "Tstop = " + num(t) + ": the end time of the run must be > 0");
+    else
+      rc.t_stop = t;
+  }
+}
+
+void Builder::print(model::RunControls& rc) {
+  const EngineRecord* r = single("/PRINT");
+  if (!r) return;
+  std::int64_t n = -100, nh = 0;
+  if (header_int(*r, 0, -100, n)) {
+    if (n == 0 || n < -1000000000 || n > 1000000000) {
+      error(*r, Diag::ValueOutOfRange,
+            "/PRINT/n with n = " + std::to_string(n) +
+                ": give the listing line interval in cycles, non-zero (negative: also to standard "
+                "output; default -100)");
+    } else {
+      rc.print_every = static_cast<int>(n < 0 ? -n : n);
+      rc.print_stdout = n < 0;
+    }
+  }
+  if (header_int(*r, 1, 0, nh)) {
+    if (nh < 0 || nh > 1000000000)
+      error(*r, Diag::ValueOutOfRange,
+            "/PRINT/n/nh with nh = " + std::to_string(nh) +
+                ": the header interval in lines must be >= 0 (0: header once)");
+    else
+      rc.print_header_every = static_cast<int>(nh);
+  }
+}
+
+void Builder::tfile(model::RunControls& rc) {
+  const EngineRecord* r = single("/TFILE");
+  if (!r) return;
+  std::int64_t ityp = 0;
+  if (header_int(*r, 0, 0, ityp) && (ityp < 0 || ityp > 4))
+    error(
+        *r, Diag::ValueOutOfRange,
+        "/TFILE/ityp = " + std::to_string(ityp) + ": the format must be 0 to 4 (radx writes its own format)");
+  if (!r->lines.empty() && !r->lines[0].empty()) {
+    const double dt = r->lines[0][0];
+    if (dt <= 0)
+      error(*r, Diag::ValueOutOfRange,
+            "dt_his = " + num(dt) + ": the time-history interval must be > 0 (remove /TFILE for none)");
+    else
+      rc.th_dt = dt;
+  }
+}
+
+void Builder::anim_dt(model::RunControls& rc) {
+  const EngineRecord* r = single("/ANIM/DT");
+  if (!r || r->lines.empty() || r->lines[0].size() < 2) return;  // the reader reports missing values
+  const auto& v = r->lines[0];
+  const double start = v[0], dt = v[1];
+  const double stop = v.size() > 2 ? v[2] : 0.0;
+  const double nframes = v.size() > 3 ? v[3] : 0.0;
+  const double fct = v.size() > 4 ? v[4] : 0.0;
+  bool ok = true;
+  if (start < 0) {
+    error(*r, Diag::ValueOutOfRange, "Tstart = " + num(start) + " is negative; give Tstart >= 0");
+    ok = false;
+  }
+  if (stop < 0) {
+    error(*r, Diag::ValueOutOfRange,
+          "Tstop = " + num(stop) + " is negative; give Tstop >= 0 (0: until the end of the run)");
+    ok = false;
+  }
+  const double end = stop > 0 ? stop : kAnimNever;
+  if (stop > 0 && stop < start) {
+    error(*r, Diag::InconsistentValues,
+          "Tstop = " + num(stop) + " is before Tstart = " + num(start) +
+              ": no animation state would be written");
+    ok = false;
+  }
+  if (fct != 0) {
+    error(*r, Diag::UnimplementedOption,
+          "fct_ID = " + num(fct) + ": animation times from a function are not implemented in radx; give dT");
+    ok = false;
+  }
+  if (nframes < 0 || nframes > 1e9 || nframes != std::floor(nframes)) {
+    error(*r, Diag::ValueOutOfRange, "Nframes = " + num(nframes) + ": give a whole number of frames >= 0");
+    ok = false;
+  }
+  double interval = dt;
+  if (dt <= 0) {
+    if (nframes > 0) {
+      const double last = std::min(end, rc.t_stop > 0 ? rc.t_stop : end);
+      interval = (last - start) / nframes;
+      if (!(interval > 0)) {
+        error(*r, Diag::InconsistentValues,
+              "dT = " + num(dt) + " with Nframes = " + num(nframes) +
+                  ": the frames span no time (end before Tstart); give dT > 0");
+        ok = false;
+      }
+    } else {
+      error(*r, Diag::ValueOutOfRange,
+            "dT = " + num(dt) + ": the animation interval must be > 0 (or give Nframes > 0)");
+      ok = false;
+    }
+  } else if (nframes > 0) {
+    warning(*r, Diag::InconsistentValues,
+            "Nframes = " + num(nframes) + " is ignored: dT = " + num(dt) + " is given and sets the interval");
+  }
+  if (!ok) return;
+  rc.anim_start = start;
+  rc.anim_dt = interval;
+  rc.anim_stop = end;
+  if (rc.t_stop > 0 && start > rc.t_stop)
+    warning(*r, Diag::InconsistentValues,
+            "Tstart = " + num(start) + " is after the end of the run (" + num(rc.t_stop) +
+                "): only the first and last states are written");
+}
+
+void Builder::anim_names(model::RunControls& rc) {
+  struct Family {
+    std::string_view path;
+    std::vector<std::string>* out;
+    const char* what;
+  };
+  const Family families[] = {{"/ANIM/ELEM", &rc.anim_elem, "an element scalar field"},
+                             {"/ANIM/VECT", &rc.anim_vect, "a nodal vector field"},
+                             {"/ANIM/TENS", &rc.anim_tens, "an element tensor field"},
+                             {"/ANIM/NODA", &rc.anim_noda, "a nodal scalar field"}};
+  for (const auto& f : families) {
+    for (const EngineRecord* r : deck_.of(f.path)) {
+      if (r->header.empty()) continue;  // the reader reports the missing name (RX306)
+      const AnimFieldName* a = find_anim_field(f.path, r->header[0]);
+      if (!a) {
+        error(*r, Diag::UnsupportedKeyword,
+              std::string(f.path) + "/" + r->header[0] + ": '" + r->header[0] + "' is not " + f.what +
+                  " radx writes; accepted names: " + accepted_anim_names(f.path));
+        continue;
+      }
+      if (r->header.size() > 1) {
+        std::string extra;
+        for (std::size_t k = 1; k < r->header.size(); ++k) extra += "/" + r->header[k];
+        error(*r, Diag::BadHeader,
+              std::string(f.path) + "/" + r->header[0] + extra + ": radx reads " + std::string(f.path) + "/" +
+                  std::string(a->name) + " without further fields ('" + extra.substr(1) + "' is not read)");
+        continue;
+      }
+      if (std::find(f.out->begin(), f.out->end(), a->name) == f.out->end()) f.out->emplace_back(a->name);
+    }
+  }
+}
+
+void Builder::time_steps(model::RunControls& rc) {
+  using model::DtAction;
+  rc.global = model::DtControl{};
+  rc.global.action = DtAction::Stop;
+  if (const EngineRecord* r = single("/DT")) read_dt(*r, rc.global, kDefaultScale, 0.0, DtAction::Stop);
+
+  struct Fam {
+    std::string_view path;
+    model::DtControl* c;
+  };
+  for (const Fam f :
+       {Fam{"/DT/BRICK/CST", &rc.brick}, Fam{"/DT/SHELL/CST", &rc.shell}, Fam{"/DT/SH_3N/CST", &rc.shell3}}) {
+    *f.c = rc.global;
+    f.c->given = false;
+    if (const EngineRecord* r = single(f.path)) {
+      read_dt(*r, *f.c, rc.global.scale, rc.global.t_min, DtAction::Constant);
+      if (f.path == "/DT/BRICK/CST" && r->lines.size() > 1 &&
+          std::any_of(r->lines[1].begin(), r->lines[1].end(), [](double x) { return x != 0; }))
+        warning(*r, Diag::UnimplementedOption,
+                "COL_min and DEFV_min (second line) are not used by radx: bricks switch to small strain at "
+                "Tmin only");
+    }
+  }
+
+  rc.nodal = model::DtControl{};
+  if (const EngineRecord* r = single("/DT/NODA/CST")) {
+    read_dt(*r, rc.nodal, kDefaultScale, 0.0, DtAction::AddMass);
+    const double pct = r->value(0, 2);
+    if (pct < 0)
+      error(*r, Diag::ValueOutOfRange,
+            "%AddedMass = " + num(pct) +
+                " is negative; give the added-mass percentage that stops the run "
+                "(0: no limit)");
+    else
+      rc.nodal_max_added_mass_pct = pct;
+    std::int64_t option = 0;
+    if (header_int(*r, 0, 0, option)) {
+      if (option != 0 && option != 1)
+        error(*r, Diag::ValueOutOfRange,
+              "/DT/NODA/CST/" + std::to_string(option) + ": the option is 0 or 1 (1: a node group follows)");
+      const double grnod = r->value(1, 0);
+      if (option == 1 && grnod != 0)
+        error(*r, Diag::UnimplementedOption,
+              "grnod_ID = " + num(grnod) +
+                  ": radx applies the nodal time step to every node; restricting it to a node group is not "
+                  "implemented (remove the option /1 and the group line)");
+    }
+  }
+
+  rc.inter = model::DtControl{};
+  const EngineRecord* cst = single("/DT/INTER/CST");
+  const EngineRecord* del = single("/DT/INTER/DEL");
+  const EngineRecord* lag = single("/DT/INTER/LAG");
+  if (del) {
+    read_dt(*del, rc.inter, kDefaultScale, 0.0, DtAction::Delete);
+    for (const EngineRecord* other : {cst, lag})
+      if (other)
+        warning(*other, Diag::InconsistentValues,
+                other->written +
+                    " is ignored: /DT/INTER/DEL is also given and has precedence for the "
+                    "interface time step");
+  } else if (cst && lag) {
+    const Where first = deck_.where(cst->pos);
+    error(*lag, Diag::InconsistentValues,
+          "/DT/INTER/LAG and /DT/INTER/CST (" + std::string(first.file) + ":" + std::to_string(first.line) +
+              ") are both given; give one (for /INTER/LAGDT/TYPE7 both switch pairs to Lagrange "
+              "multipliers; for /INTER/TYPE7, CST adds mass)");
+  } else if (cst) {
+    read_dt(*cst, rc.inter, kDefaultScale, 0.0, DtAction::AddMass);
+  } else if (lag) {
+    read_dt(*lag, rc.inter, kDefaultScale, 0.0, DtAction::Lagrange);
+  }
+}
+
+void Builder::stop(model::RunControls& rc) {
+  const EngineRecord* r = single("/STOP");
+  if (!r || r->lines.empty()) return;
+  const char* names[] = {"Emax", "Mmax", "Nmax"};
+  double* out[] = {&rc.stop_energy_error_pct, &rc.stop_mass_error, &rc.stop_nodal_mass_error};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double v = r->value(0, k);
+    if (v < 0)
+      error(*r, Diag::ValueOutOfRange,
+            std::string(names[k]) + " = " + num(v) + " is negative; give >= 0 (0: off)");
+    else
+      *out[k] = v > 0 ? v : kOff;
+  }
+  const char* flags[] = {"NTH", "NANIM", "NERR_POSIT"};
+  bool* fout[] = {&rc.stop_writes_th, &rc.stop_writes_anim, &rc.stop_positive_error_only};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double v = r->value(0, 3 + k);
+    if (v != 0 && v != 1)
+      error(*r, Diag::ValueOutOfRange, std::string(flags[k]) + " = " + num(v) + ": give 0 or 1");
+    else
+      *fout[k] = v == 1;
+  }
+}
+
+void Builder::rbodies(model::RunControls& rc) {
+  std::map<std::int64_t, const EngineRecord*> on;
+  for (const auto* path : {"/RBODY/ON", "/RBODY/OFF"}) {
+    const bool is_on = std::string_view(path) == "/RBODY/ON";
+    for (const EngineRecord* r : deck_.of(path)) {
+      if (r->ids.empty())
+        warning(*r, Diag::EmptyRecordList, std::string(path) + " lists no rigid-body id: it does nothing");
+      for (const auto id : r->ids) {
+        if (id <= 0) {
+          error(*r, Diag::ValueOutOfRange, "rigid-body id " + std::to_string(id) + " must be > 0");
+          continue;
+        }
+        if (is_on) {
+          on.emplace(id, r);
+          rc.rbody_on.push_back(id);
+        } else {
+          if (on.count(id)) {
+            const Where first = deck_.where(on[id]->pos);
+            error(*r, Diag::InconsistentValues,
+                  "rigid body " + std::to_string(id) + " is both switched on (" + std::string(first.file) +
+                      ":" + std::to_string(first.line) + ") and off in this run");
+          }
+          rc.rbody_off.push_back(id);
+        }
+      }
+    }
+  }
+}
+
+void Builder::versions() {
+  for (const auto* path : {"/VERS", "/ANIM/VERS"}) {
+    if (const EngineRecord* r = single(path)) {
+      std::int64_t v = 0;
+      if (header_int(*r, 0, 0, v) && v < 0)
+        error(*r, Diag::ValueOutOfRange, "version " + std::to_string(v) + " must be >= 0");
+    }
+  }
+}
+
+model::RunControls Builder::build() {
+  model::RunControls rc;
+  run(rc);
+  print(rc);
+  tfile(rc);
+  anim_dt(rc);
+  anim_names(rc);
+  time_steps(rc);
+  stop(rc);
+  rbodies(rc);
+  versions();
+  return rc;
+}
+
+}  // namespace
+
+const std::vector<AnimFieldName>& anim_field_names() {
+  static const std::vector<AnimFieldName> table = {
+      {"/ANIM/ELEM", "VONM", {}, "von_mises", "von Mises stress"},
+      {"/ANIM/ELEM", "EPSP", {}, "plastic_strain", "equivalent plastic strain"},
+      {"/ANIM/ELEM", "THIC", {}, "thickness", "current shell thickness (0 for solids)"},
+      {"/ANIM/ELEM", "ENER", {}, "internal_energy_density", "internal energy per unit volume"},
+      {"/ANIM/ELEM", "P", {}, "pressure", "pressure -trace(stress)/3"},
+      {"/ANIM/ELEM", "DENS", {}, "density", "current density"},
+      {"/ANIM/ELEM", "HOUR", {}, "hourglass_energy_density", "hourglass energy per unit volume"},
+      {"/ANIM/VECT", "VEL", {}, "velocity", "nodal velocity"},
+      {"/ANIM/VECT", "DISP", {"DIS"}, "displacement", "nodal displacement"},
+      {"/ANIM/VECT", "ACC", {}, "acceleration", "nodal acceleration"},
+      {"/ANIM/VECT", "CONT", {}, "contact_force", "penalty and Lagrange contact forces"},
+      {"/ANIM/VECT", "FINT", {}, "internal_force", "nodal internal forces"},
+      {"/ANIM/VECT", "FEXT", {}, "external_force", "nodal external forces"},
+      {"/ANIM/VECT", "FREAC", {}, "reaction_force", "reaction forces of kinematic conditions"},
+      {"/ANIM/TENS", "STRESS", {}, "stress", "stress tensor XX YY ZZ XY YZ XZ"},
+      {"/ANIM/NODA", "DMAS", {}, "added_mass", "mass added by /DT/NODA/CST and /DT/INTER/CST"},
+      {"/ANIM/NODA", "DT", {}, "nodal_time_step", "nodal time step"},
+  };
+  return table;
+}
+
+const AnimFieldName* find_anim_field(std::string_view family, std::string_view written) {
+  const std::string w = upper(written);
+  for (const auto& a : anim_field_names()) {
+    if (a.family != family) continue;
+    if (a.name == w) return &a;
+    for (auto alias : a.aliases)
+      if (alias == w) return &a;
+  }
+  return nullptr;
+}
+
+std::string accepted_anim_names(std::string_view family) {
+  std::string out;
+  for (const auto& a : anim_field_names()) {
+    if (a.family != family) continue;
+    if (!out.empty()) out += ' ';
+    out += a.name;
+    for (auto alias : a.aliases) out += " (" + std::string(alias) + ")";
+  }
+  return out;
+}
+
+model::RunControls build_run_controls(const EngineDeck& deck, Diagnostics& diags) {
+  return Builder(deck, diags).build();
+}
+
+namespace {
+
+// The stem of `path` and, when it ends with _NNNN, the stem without it and the number.
+std::string split_run_suffix(const std::string& path, int& number) {
+  std::string stem = std::filesystem::path(path).stem().string();
+  number = -1;
+  const std::size_t n = stem.size();
+  if (n > 5 && stem[n - 5] == '_' && std::all_of(stem.end() - 4, stem.end(), [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c));
+      })) {
+    number = std::stoi(stem.substr(n - 4));
+    stem.resize(n - 5);
+  }
+  return stem;
+}
+
+}  // namespace
+
+std::string run_output_root(const std::string& engine_deck_path) {
+  int number = 0;
+  return split_run_suffix(engine_deck_path, number);
+}
+
+void check_run_name(const EngineDeck& deck, const model::RunControls& controls,
+                    const std::string& engine_deck_path, Diagnostics& diags) {
+  const auto runs = deck.of("/RUN");
+  if (runs.empty()) return;
+  const EngineRecord& r = *runs.front();
+  int number = -1;
+  const std::string root = split_run_suffix(engine_deck_path, number);
+  const std::string file = std::filesystem::path(engine_deck_path).filename().string();
+  if (!controls.run_name.empty() && upper(controls.run_name) != upper(root)) {
+    diags.warning(Diag::EngineRunNameMismatch, deck.where(r.pos, 1), About{"/RUN"},
+                  "the /RUN name " + controls.run_name + " differs from the root " + root +
+                      " of the file name " + file + "; radx names the outputs after the file (" + root +
+                      "_0001.out, " + root + "_summary.json)");
+  }
+  if (number > 0 && number != controls.run_number) {
+    diags.warning(Diag::EngineRunNameMismatch, deck.where(r.pos, 1), About{"/RUN"},
+                  "the /RUN number " + std::to_string(controls.run_number) + " differs from the run number " +
+                      std::to_string(number) + " of the file name " + file);
+  }
+}
+
+model::RunControls read_run_controls(const std::string& engine_deck_path, Diagnostics& diags) {
+  const EngineDeck deck = read_engine_deck(engine_deck_path, diags);
+  if (deck.records.empty()) return {};
+  model::RunControls rc = build_run_controls(deck, diags);
+  check_run_name(deck, rc, engine_deck_path, diags);
+  return rc;
+}
+
+}  // namespace radx

@@ -1,0 +1,55 @@
+// Engine deck -> model::RunControls (shared/spec/deck-format.md section 3): every engine keyword resolved
+// with its defaults (Tscale 0 -> 0.9, /PRINT -100, no /TFILE -> 1e30, /ANIM/DT Tstop 0 -> 1e20, /STOP
+// values 0 -> 1e30), each /DT option mapped to its action, the /ANIM field names checked against the names
+// radx writes, and every problem reported at the keyword line with a code. Times are taken as written:
+// engine decks are in the starter's work units.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "parser/deck.hpp"
+#include "parser/diagnostics.hpp"
+#include "solver/model/run_controls.hpp"
+
+namespace radx {
+
+// One /ANIM field name radx maps to a results array (results-format.md section 3).
+struct AnimFieldName {
+  std::string_view family;                // "/ANIM/ELEM", "/ANIM/VECT", "/ANIM/TENS" or "/ANIM/NODA"
+  std::string_view name;                  // the name radx stores in RunControls (canonical spelling)
+  std::vector<std::string_view> aliases;  // other accepted spellings (e.g. DIS for DISP)
+  std::string_view array;                 // the results array it fills
+  std::string_view meaning;
+};
+
+// The data table of every /ANIM name radx maps.
+const std::vector<AnimFieldName>& anim_field_names();
+
+// The entry for `written` (upper case, as the reader stores it) in `family`; nullptr when radx does not
+// map that name.
+const AnimFieldName* find_anim_field(std::string_view family, std::string_view written);
+
+// The accepted names of a family, blank separated, aliases in parentheses: "VEL DISP (DIS) ACC ...".
+std::string accepted_anim_names(std::string_view family);
+
+// Resolves every engine keyword of `deck` into run controls. Problems go to `diags` (errors for values
+// radx cannot run with, warnings for values it ignores); the returned controls hold defaults wherever a
+// value was wrong, so callers must check diags.has_errors() before running.
+model::RunControls build_run_controls(const EngineDeck& deck, Diagnostics& diags);
+
+// The root name of a run's outputs from the engine deck path: NAME_0001.rad -> NAME (any _NNNN suffix of
+// four digits is removed, so the one-file NAME_0000.rad also gives NAME); a one-file NAME.rad -> NAME.
+std::string run_output_root(const std::string& engine_deck_path);
+
+// Warning RX803 at the /RUN line when the /RUN name differs from run_output_root(engine_deck_path)
+// (compared without case: the engine reader stores keyword fields in upper case), or when the file name
+// carries a run number (NAME_0003.rad) different from the /RUN number.
+void check_run_name(const EngineDeck& deck, const model::RunControls& controls,
+                    const std::string& engine_deck_path, Diagnostics& diags);
+
+// read_engine_deck + build_run_controls + check_run_name: what the engine calls.
+model::RunControls read_run_controls(const std::string& engine_deck_path, Diagnostics& diags);
+
+}  // namespace radx
