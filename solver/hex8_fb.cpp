@@ -1,0 +1,325 @@
+// Eight-node one-point brick with Flanagan-Belytschko viscous hourglass control (Isolid 1; Isolid 2 =
+// plain Hallquist h vectors for all modes; every other Isolid value is treated as 1).
+//
+// Source: shared/spec/elements.md 3.1-3.4 (kinematics, material call, bulk viscosity, energy, hourglass),
+// 4.4-4.5 (element step, nodal stiffness), 6.2 (strain-rate measure), read from OpenRadioss sderi3.F,
+// sdefo3.F, srota3.F, srho3.F, mqviscb.F, meint.F, shvis3.F, sdlen3.F.
+//
+// Nodes 1-4 one face, 5-8 the opposite face (node i + 4 above node i); natural coordinates
+// (xi, eta, zeta)_k of node k = (-1,-1,-1), (1,-1,-1), (1,1,-1), (-1,1,-1), then the same with zeta = +1.
+// All on the current geometry x^n with the mid-step velocities v^{n-1/2}; dt1 = t^n - t^{n-1}.
+//
+//   d17 = x7 - x1, d28 = x8 - x2, d35 = x5 - x3, d46 = x6 - x4
+//   j1 = d17 + d28 - d35 - d46 (= 8 dx/deta),  j2 = d17 + d28 + d35 + d46 (= 8 dx/dzeta),
+//   j3 = d17 - d28 - d35 + d46 (= 8 dx/dxi)
+//   V  = j1 . (j2 x j3) / 64 = 8 det J(0)                    (one-point volume, not the trilinear one)
+//   b_k = dN_k/dx(0) = [xi_k (j1 x j2) + eta_k (j2 x j3) + zeta_k (j3 x j1)] / (64 V)
+//         so b5 = -b3, b6 = -b4, b7 = -b1, b8 = -b2, sum_k b_k = 0, sum_k x_k (x) b_k = I
+//   L  = sum_k v_k (x) b_k = (v1 - v7)(x)b1 + (v2 - v8)(x)b2 + (v3 - v5)(x)b3 + (v4 - v6)(x)b4
+//   D  = sym L: Dxx, Dyy, Dzz, D4 = Lxy + Lyx, D5 = Lyz + Lzy, D6 = Lzx + Lxz (engineering shears)
+//   Wz = dt1/2 (dvy/dx - dvx/dy), Wy = dt1/2 (dvx/dz - dvz/dx), Wx = dt1/2 (dvz/dy - dvy/dz)
+//   Jaumann rotation of the stored stress, first order, old values on the right (3.2):
+//     sxx += -2 sxy Wz + 2 szx Wy,  syy += 2 sxy Wz - 2 syz Wx,  szz += -2 szx Wy + 2 syz Wx,
+//     sxy += Wz (sxx - syy) + Wy syz - Wx szx,  syz += Wx (syy - szz) + Wz szx - Wy sxy,
+//     szx += Wy (szz - sxx) + Wx sxy - Wz syz
+//   rho = rho0 V0 / V,  mu = rho / rho0 - 1,  material: solid_point_update(de = D dt1, mu)
+//   strain-rate measure (JC, 6.2): e = sqrt(Dxx^2 + Dyy^2 + Dzz^2 + (D4^2 + D5^2 + D6^2) / 2),
+//     rate <- alpha e + (1 - alpha) rate, alpha = min(1, 2 pi Fcut dt1) (alpha = 1 when Fcut = 0)
+//   bulk viscosity (3.3): l = V^(1/3), ec = max(0, -tr D), q = rho ec l (qa^2 l ec + qb c),
+//     c = sqrt((K + 4G/3) / rho0); acts as an extra pressure: sigma - q I in the force integral
+//   internal energy (3.3), total (not per volume), including the bulk-viscosity work:
+//     dE = dt1/2 Vavg (sigma_old + sigma_new) : D - dV/2 (q_old + q_new),  dV = V - V_old,
+//     Vavg = V - dV/2; sigma_old is the stored stress after the Jaumann rotation
+//   plastic work (6.5): dW = svm_new d_eps_p V
+//   internal forces (added to the nodes): f_k = -V (sigma - q I) b_k
+//   hourglass (3.4), modes h1 = (1,-1,1,-1,1,-1,1,-1), h2 = (1,1,-1,-1,-1,-1,1,1),
+//     h3 = (1,-1,-1,1,-1,1,1,-1), h4 = (1,-1,1,-1,-1,1,-1,1):
+//     Isolid 1: G_j = h_j - (h_j . x) b for j = 1..3 ((h_j . x) = sum_k h_jk x_k, a 3-vector),
+//               G_4 = h4 (plain); Isolid 2: G_j = h_j for all four
+//     q_j = sum_k G_jk v_k (per direction),  a = h/4,  Cl = a rho V^(2/3) c,  Cq = 100 a^2 rho V^(2/3)
+//     H_j = q_j (Cl + Cq |q_j|) per direction,  f_k += -sum_j G_jk H_j,  dE_hg = dt1 sum_j H_j . q_j
+//   computed as q_j = hv_j - L hx_j (hv_j = sum_k h_jk v_k) and f_k = -T b_k - sum_j h_jk H_j with
+//     T = V (sigma - q I) - sum_j H_j (x) hx_j: the same quantities, fewer operations
+//   element step (4.4), before the /DT scale: dx = V / max face area (face area = |d13 x d24| / 2),
+//     qt = qb c + qa^2 l ec,  c_eff = qt + sqrt(qt^2 + c^2),  dt = dx / c_eff
+//   nodal stiffness (4.5): k = rho V / (4 dt^2) for each of the 8 nodes
+//
+// Degenerate bricks (repeated nodes: pentahedra, tetrahedra) go through the same formulas. An element
+// with V <= 0 (or not a number) gets zero force, dt = 0 and k = 0, keeps its stress and energies and
+// stores the bad volume in `vol`: the engine reports it and stops. Elements with off == 0 give no force
+// and dt = +inf. Forces and energy increments are scaled by off (1 for a live brick).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "solver/element_groups.hpp"
+
+namespace radx::solver {
+
+namespace {
+
+// Faces (node positions 0..7) for the characteristic length; orientation does not matter here.
+constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                              {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+// Mode sums r[j][d] = sum_k h_jk a_k for the four mode vectors (pairwise, as the mode table):
+// with p = a1 - a4 - a6 + a7, m = a2 - a3 - a5 + a8, s = a1 - a2 - a5 + a6, t = a3 - a4 - a7 + a8:
+// h1 = p - m, h2 = p + m, h3 = s - t, h4 = s + t.
+inline void mode_sums(double a1, double a2, double a3, double a4, double a5, double a6, double a7, double a8,
+                      double r[4][3], int d) {
+  const double p = a1 - a4 - a6 + a7, m = a2 - a3 - a5 + a8;
+  const double s = a1 - a2 - a5 + a6, t = a3 - a4 - a7 + a8;
+  r[0][d] = p - m;
+  r[1][d] = p + m;
+  r[2][d] = s - t;
+  r[3][d] = s + t;
+}
+
+inline void cross(const double a[3], const double b[3], double c[3]) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+}  // namespace
+
+void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
+  constexpr std::size_t G = kGroupSize;
+  const double dt1 = cyc.dt1;
+  const double c = mat.c_solid;
+  const double rho0 = mat.rho0;
+  const double qa2 = g.qa * g.qa;
+  const double qb = g.qb;
+  const double a_hg = 0.25 * g.h;
+  const bool plain_h = g.isolid == 2;
+  const double alpha = mat.f_cut > 0 ? std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1) : 1.0;
+  const double inf = std::numeric_limits<double>::infinity();
+
+  const std::int32_t* conn = g.conn.data();
+  double* force = g.nodal_force.data();
+  auto clear_force = [&](std::size_t i) {
+    for (std::size_t r = 0; r < 24; ++r) force[r * G + i] = 0.0;
+  };
+
+  // One element at a time through local arrays. The short fixed-count loops carry "GCC unroll": GCC does
+  // not unroll them completely at -O2, and unrolled the kernel runs about 35 % fewer instructions.
+  const auto n = static_cast<std::size_t>(g.count);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double off = g.off[i];
+    if (off == 0.0) {
+      clear_force(i);
+      g.dt[i] = inf;
+      g.k_nodal[i] = 0.0;
+      continue;
+    }
+
+    // Gather.
+    double x[8][3], v[8][3];
+#pragma GCC unroll 8
+    for (std::size_t k = 0; k < 8; ++k) {
+      const auto nd = static_cast<std::size_t>(conn[k * G + i]);
+      x[k][0] = nodes.x[nd];
+      x[k][1] = nodes.y[nd];
+      x[k][2] = nodes.z[nd];
+      v[k][0] = nodes.vx[nd];
+      v[k][1] = nodes.vy[nd];
+      v[k][2] = nodes.vz[nd];
+    }
+
+    // Centre Jacobian, volume, gradients.
+    double j1[3], j2[3], j3[3];
+#pragma GCC unroll 8
+    for (int d = 0; d < 3; ++d) {
+      const double d17 = x[6][d] - x[0][d];
+      const double d28 = x[7][d] - x[1][d];
+      const double d35 = x[4][d] - x[2][d];
+      const double d46 = x[5][d] - x[3][d];
+      j1[d] = d17 + d28 - d35 - d46;
+      j2[d] = d17 + d28 + d35 + d46;
+      j3[d] = d17 - d28 - d35 + d46;
+    }
+    double c12[3], c23[3], c31[3];
+    cross(j1, j2, c12);
+    cross(j2, j3, c23);
+    cross(j3, j1, c31);
+    const double vol = (j1[0] * c23[0] + j1[1] * c23[1] + j1[2] * c23[2]) / 64.0;
+    if (!(vol > 0.0)) {  // inverted, flat or not a number: reported and stopped by the engine
+      clear_force(i);
+      g.vol[i] = vol;
+      g.dt[i] = 0.0;
+      g.k_nodal[i] = 0.0;
+      continue;
+    }
+    const double inv = 1.0 / (64.0 * vol);
+    double b[8][3];
+#pragma GCC unroll 8
+    for (int d = 0; d < 3; ++d) {
+      b[0][d] = -(c12[d] + c23[d] + c31[d]) * inv;
+      b[1][d] = (c12[d] - c23[d] - c31[d]) * inv;
+      b[2][d] = (c12[d] + c23[d] - c31[d]) * inv;
+      b[3][d] = (-c12[d] + c23[d] - c31[d]) * inv;
+      b[4][d] = -b[2][d];
+      b[5][d] = -b[3][d];
+      b[6][d] = -b[0][d];
+      b[7][d] = -b[1][d];
+    }
+
+    // Velocity gradient L[a][c] = d v_a / d x_c, from the opposite-node differences.
+    double L[3][3] = {};
+#pragma GCC unroll 8
+    for (int k = 0; k < 4; ++k) {
+      const int o = (k < 2) ? k + 6 : k + 2;  // opposite nodes: 1-7, 2-8, 3-5, 4-6
+#pragma GCC unroll 8
+      for (int a = 0; a < 3; ++a) {
+        const double dv = v[k][a] - v[o][a];
+        L[a][0] += dv * b[k][0];
+        L[a][1] += dv * b[k][1];
+        L[a][2] += dv * b[k][2];
+      }
+    }
+    const double D[6] = {L[0][0], L[1][1], L[2][2], L[0][1] + L[1][0], L[1][2] + L[2][1], L[2][0] + L[0][2]};
+    const double wz = 0.5 * dt1 * (L[1][0] - L[0][1]);
+    const double wy = 0.5 * dt1 * (L[0][2] - L[2][0]);
+    const double wx = 0.5 * dt1 * (L[2][1] - L[1][2]);
+
+    // Jaumann rotation of the stored stress (old values on the right-hand side).
+    double s[6];
+#pragma GCC unroll 8
+    for (int m = 0; m < 6; ++m) s[m] = g.sig[static_cast<std::size_t>(m) * G + i];
+    double so[6];
+    so[0] = s[0] - 2.0 * s[3] * wz + 2.0 * s[5] * wy;
+    so[1] = s[1] + 2.0 * s[3] * wz - 2.0 * s[4] * wx;
+    so[2] = s[2] - 2.0 * s[5] * wy + 2.0 * s[4] * wx;
+    so[3] = s[3] + wz * (s[0] - s[1]) + wy * s[4] - wx * s[5];
+    so[4] = s[4] + wx * (s[1] - s[2]) + wz * s[5] - wy * s[3];
+    so[5] = s[5] + wy * (s[2] - s[0]) + wx * s[3] - wz * s[4];
+
+    // Density, strain rate, material.
+    const double rho = rho0 * g.vol0[i] / vol;
+    const double mu = rho / rho0 - 1.0;
+    const double e_rate =
+        std::sqrt(D[0] * D[0] + D[1] * D[1] + D[2] * D[2] + 0.5 * (D[3] * D[3] + D[4] * D[4] + D[5] * D[5]));
+    const double rate = alpha * e_rate + (1.0 - alpha) * g.rate[i];
+    const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
+    double sn[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
+    double eps_p = g.eps_p[i];
+    const double deps_p = solid_point_update(mat, rate, de, mu, sn, eps_p);
+
+    // Bulk viscosity and element step.
+    const double l = std::cbrt(vol);
+    const double ec = std::max(0.0, -(D[0] + D[1] + D[2]));
+    const double q_new = rho * ec * l * (qa2 * l * ec + qb * c);
+    double area_max = 0.0;
+#pragma GCC unroll 8
+    for (const auto& f : kFaces) {
+      double d13[3], d24[3], nf[3];
+#pragma GCC unroll 8
+      for (int d = 0; d < 3; ++d) {
+        d13[d] = x[f[2]][d] - x[f[0]][d];
+        d24[d] = x[f[3]][d] - x[f[1]][d];
+      }
+      cross(d13, d24, nf);
+      area_max = std::max(area_max, nf[0] * nf[0] + nf[1] * nf[1] + nf[2] * nf[2]);
+    }
+    area_max = 0.5 * std::sqrt(area_max);
+    const double qt = qb * c + qa2 * l * ec;
+    const double dt_e = (vol / area_max) / (qt + std::sqrt(qt * qt + c * c));
+
+    // Energies.
+    const double dvol = vol - g.vol[i];
+    const double vavg = vol - 0.5 * dvol;
+    double work = 0.0;
+#pragma GCC unroll 8
+    for (int m = 0; m < 6; ++m) work += (so[m] + sn[m]) * D[m];
+    const double de_int = 0.5 * dt1 * vavg * work - 0.5 * dvol * (g.q[i] + q_new);
+    const double sm = (sn[0] + sn[1] + sn[2]) / 3.0;
+    const double svm = std::sqrt(
+        1.5 * ((sn[0] - sm) * (sn[0] - sm) + (sn[1] - sm) * (sn[1] - sm) + (sn[2] - sm) * (sn[2] - sm)) +
+        3.0 * (sn[3] * sn[3] + sn[4] * sn[4] + sn[5] * sn[5]));
+
+    // Hourglass rates. With hx_j = sum_k h_jk x_k and hv_j = sum_k h_jk v_k (3-vectors):
+    //   q_j = sum_k (h_jk - hx_j . b_k) v_k = hv_j - L hx_j   (hx_j taken as 0 for the plain modes).
+    double hx[4][3], hv[4][3];
+#pragma GCC unroll 8
+    for (int d = 0; d < 3; ++d) {
+      mode_sums(x[0][d], x[1][d], x[2][d], x[3][d], x[4][d], x[5][d], x[6][d], x[7][d], hx, d);
+      mode_sums(v[0][d], v[1][d], v[2][d], v[3][d], v[4][d], v[5][d], v[6][d], v[7][d], hv, d);
+    }
+#pragma GCC unroll 8
+    for (int d = 0; d < 3; ++d) {
+      hx[3][d] = 0.0;  // mode 4: plain h4 for Isolid 1 and 2
+      if (plain_h) hx[0][d] = hx[1][d] = hx[2][d] = 0.0;
+    }
+    const double v23 = l * l;  // V^(2/3)
+    const double cl = a_hg * rho * v23 * c;
+    const double cq = 100.0 * a_hg * a_hg * rho * v23;
+    double hg[4][3];  // H_j = q_j (Cl + Cq |q_j|) per direction
+    double de_hg = 0.0;
+    for (int j = 0; j < 4; ++j)
+#pragma GCC unroll 8
+      for (int d = 0; d < 3; ++d) {
+        const double qj = hv[j][d] - (L[d][0] * hx[j][0] + L[d][1] * hx[j][1] + L[d][2] * hx[j][2]);
+        hg[j][d] = qj * (cl + cq * std::abs(qj));
+        de_hg += hg[j][d] * qj;
+      }
+
+    // Nodal forces. Stress part f_k = -V (sigma - q I) b_k; hourglass part
+    //   -sum_j G_jk H_j = -sum_j h_jk H_j + M b_k with M = sum_j H_j (x) hx_j,
+    // so f_k = -T b_k - sum_j h_jk H_j with T = V (sigma - q I) - M, and b_{5..8} = -b_{3,4,1,2}.
+    double T[3][3];
+    {
+      const double sg[3][3] = {
+          {sn[0] - q_new, sn[3], sn[5]}, {sn[3], sn[1] - q_new, sn[4]}, {sn[5], sn[4], sn[2] - q_new}};
+#pragma GCC unroll 8
+      for (int a = 0; a < 3; ++a)
+#pragma GCC unroll 8
+        for (int e = 0; e < 3; ++e)
+          T[a][e] = vol * sg[a][e] -
+                    (hg[0][a] * hx[0][e] + hg[1][a] * hx[1][e] + hg[2][a] * hx[2][e] + hg[3][a] * hx[3][e]);
+    }
+    double f[8][3];
+#pragma GCC unroll 8
+    for (int k = 0; k < 4; ++k) {
+      const int o = (k < 2) ? k + 6 : k + 2;
+#pragma GCC unroll 8
+      for (int a = 0; a < 3; ++a) {
+        const double tb = T[a][0] * b[k][0] + T[a][1] * b[k][1] + T[a][2] * b[k][2];
+        f[k][a] = -tb;
+        f[o][a] = tb;
+      }
+    }
+#pragma GCC unroll 8
+    for (int a = 0; a < 3; ++a) {
+      const double h1 = hg[0][a], h2 = hg[1][a], h3 = hg[2][a], h4 = hg[3][a];
+      f[0][a] -= h1 + h2 + h3 + h4;
+      f[1][a] -= -h1 + h2 - h3 - h4;
+      f[2][a] -= h1 - h2 - h3 + h4;
+      f[3][a] -= -h1 - h2 + h3 - h4;
+      f[4][a] -= h1 - h2 - h3 - h4;
+      f[5][a] -= -h1 - h2 + h3 + h4;
+      f[6][a] -= h1 + h2 + h3 - h4;
+      f[7][a] -= -h1 + h2 - h3 + h4;
+    }
+
+    // Store.
+#pragma GCC unroll 8
+    for (std::size_t k = 0; k < 8; ++k)
+#pragma GCC unroll 8
+      for (std::size_t d = 0; d < 3; ++d) force[(k * 3 + d) * G + i] = off * f[k][d];
+#pragma GCC unroll 8
+    for (int m = 0; m < 6; ++m) g.sig[static_cast<std::size_t>(m) * G + i] = sn[m];
+    g.eps_p[i] = eps_p;
+    g.vol[i] = vol;
+    g.rho[i] = rho;
+    g.q[i] = q_new;
+    g.rate[i] = rate;
+    g.e_int[i] += off * de_int;
+    g.e_hg[i] += off * dt1 * de_hg;
+    g.w_plastic[i] += off * svm * deps_p * vol;
+    g.dt[i] = dt_e;
+    g.k_nodal[i] = 0.25 * rho * vol / (dt_e * dt_e);
+  }
+}
+
+}  // namespace radx::solver
