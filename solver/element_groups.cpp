@@ -11,7 +11,8 @@ void ShellGroup::allocate(int n, int points) {
   element.assign(G, -1);
   for (auto* v : {&t0, &thick, &area0, &e_int, &e_hg, &w_plastic, &rate, &dt, &k_nodal}) v->assign(G, 0.0);
   off.assign(G, 1.0);
-  sig.assign(np * 5 * G, 0.0);
+  // N = 0 (resultant elasticity) keeps 5 force and 3 moment resultants.
+  sig.assign((points > 0 ? np * 5 : 8) * G, 0.0);
   eps_p.assign(np * G, 0.0);
   hg.assign(3 * G, 0.0);
   nodal_force.assign(4 * 6 * G, 0.0);

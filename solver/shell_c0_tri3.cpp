@@ -1,0 +1,231 @@
+// Three-node C0 shell (Ish3n 2, the default): constant-strain membrane, Mindlin transverse shear, one point
+// in the plane, no hourglass. Source of every formula: shared/spec/elements.md (sections in brackets), read
+// from OpenRadioss c3forc3.F, c3evec3.F, c3deri3.F, c3defo3.F, c3curv3.F, c3fint3.F, c3dt3.F.
+//
+// Geometry [2], rebuilt every cycle from X^n: e1 = (X2 - X1)/|X2 - X1|, e3 = normalise((X3 - X1) x (X3 -
+// X2)),
+//   e2 = e3 x e1; local x2 = |X2 - X1|, x3 = e1.(X3 - X1), y3 = e2.(X3 - X1); A = x2 y3 / 2 (>= 1e-20);
+//   PX1 = -y3/2, PY1 = (x3 - x2)/2, PY2 = -x3/2, PX2 = -PX1, PX3 = 0, PY3 = -(PY1 + PY2).
+// Large-rotation velocity correction (tau = dt1/4; T11, T22 are the Ish3n 2 terms):
+//   T1 = tau (vz1 - vz2)/(PY1 + PY2), T2 = tau [(PY1 vz1 + PY2 vz2)/(PY1 + PY2) - vz3]/PX1,
+//   T11 = tau (vy1 - vy2)/(PY1 + PY2), T22 = tau [(PY1 vx1 + PY2 vx2)/(PY1 + PY2) - vx3]/PX1,
+//   vx_k <- vx_k - vz_k T1 - vy_k T11, vy_k <- vy_k - vz_k T2 - vx_k(old) T22 (vz unchanged).
+// Rates times A: exx = PX1 (vx1 - vx2), eyy = PY1 (vy1 - vy3) + PY2 (vy2 - vy3),
+//   gxy = PY1 (vx1 - vx3) + PY2 (vx2 - vx3) + PX1 (vy1 - vy2);
+//   kxx = PX1 (ry1 - ry2), kyy = -[PY1 (rx1 - rx3) + PY2 (rx2 - rx3)],
+//   kxy = PY1 (ry1 - ry3) + PY2 (ry2 - ry3) - PX1 (rx1 - rx2);
+//   gzx = PX1 (vz1 - vz2) + PX1/3 [PX1 (rx2 - rx1) + (2PY1 + 3PY2) ry1 + (3PY1 + 2PY2) ry2 + (PY1 + PY2)
+//   ry3], gyz = PY1 (vz1 - vz3) + PY2 (vz2 - vz3) + 1/3 {-PX1 [(2PY1 + PY2) rx1 + (PY1 + 2PY2) rx2
+//         + 3 (PY1 + PY2) rx3] + PY1 (PY1 + 2PY2) ry1 - PY2 (2PY1 + PY2) ry2 + (PY2^2 - PY1^2) ry3};
+//   increments = rates dt1 / A.
+// Section, energy, failure, thickness: as the quad [1.3-1.5, 1.8, 6.4, 6.5] (shell_section.hpp).
+// Nodal forces: the virtual-power transpose of the rates above (as c3fint3.F), N = FOR t, M = MOM t^2,
+//   times OFF; rotated to global axes and stored with the minus sign (force added to the node).
+// Element step [4.2] (before the /DT scale): dt = L phi / c, L = 2A / longest side, c = sqrt(E/rho),
+//   phi = sqrt(1 + Dm^2) - Dm (1 by default). Nodal stiffness [4.5]: 0.81^2 A t A11 / L^2 per node.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "solver/element_groups.hpp"
+#include "solver/shell_section.hpp"
+
+namespace radx::solver {
+
+namespace {
+
+inline double signed_floor3(double v, double eps) {
+  return v >= 0 ? std::max(v, eps) : std::min(v, -eps);
+}
+
+}  // namespace
+
+void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                          const CycleInfo& cyc) {
+  using namespace shell_detail;
+  constexpr std::size_t G = kGroupSize;
+  const ShellProps& pr = g.props;
+  const double dt1 = cyc.dt1;
+  const ThicknessRule rule = thickness_rule(std::max(pr.n_points, 0));
+  ensure_resultant_storage(g);
+
+  const double young = mat.young, rho = mat.rho0;
+  const double c = mat.c_shell > 0 ? mat.c_shell : std::sqrt(young / rho);
+  const double shf = pr.n_points == 1 ? 0.0 : pr.ashear;
+  const double gs = shf * mat.shear;
+  const double dm = pr.dm;
+  const double phi = std::sqrt(1.0 + dm * dm) - dm;
+  const double visc0 = (dm > 0 && dt1 > 0) ? 1.414 * dm * rho * c / dt1 : 0.0;
+  const double alpha = rate_filter_alpha(mat, dt1);
+  const double a11 = mat.a11 > 0 ? mat.a11 : young / (1.0 - mat.nu * mat.nu);
+  const double tau = 0.25 * dt1;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  constexpr double kThird = 1.0 / 3.0;
+
+  const double* X = nodes.x.data();
+  const double* Y = nodes.y.data();
+  const double* Z = nodes.z.data();
+  const double* VX = nodes.vx.data();
+  const double* VY = nodes.vy.data();
+  const double* VZ = nodes.vz.data();
+  const double* WX = nodes.wx.data();
+  const double* WY = nodes.wy.data();
+  const double* WZ = nodes.wz.data();
+  double* nf = g.nodal_force.data();
+
+  for (int i = 0; i < g.count; ++i) {
+    const std::size_t ii = static_cast<std::size_t>(i);
+    for (int r = 18; r < 24; ++r) nf[r * G + ii] = 0.0;  // row 3 is unused by triangles
+    const double off_start = g.off[ii];
+    if (off_start <= 0.0) {
+      for (int r = 0; r < 18; ++r) nf[r * G + ii] = 0.0;
+      g.dt[ii] = kInf;
+      g.k_nodal[ii] = 0.0;
+      continue;
+    }
+    std::int32_t n[3];
+    double px[3], py[3], pz[3];
+    for (int k = 0; k < 3; ++k) {
+      n[k] = g.conn[k * G + ii];
+      px[k] = X[n[k]];
+      py[k] = Y[n[k]];
+      pz[k] = Z[n[k]];
+    }
+    if (g.thick[ii] <= 0.0) g.thick[ii] = g.t0[ii];
+    const double t = pr.ithick == 1 ? g.thick[ii] : g.t0[ii];
+
+    // Frame [2].
+    const double d21x = px[1] - px[0], d21y = py[1] - py[0], d21z = pz[1] - pz[0];
+    const double d31x = px[2] - px[0], d31y = py[2] - py[0], d31z = pz[2] - pz[0];
+    const double d32x = px[2] - px[1], d32y = py[2] - py[1], d32z = pz[2] - pz[1];
+    const double x2 = std::sqrt(d21x * d21x + d21y * d21y + d21z * d21z);
+    double inv = 1.0 / std::max(x2, 1e-30);
+    const double e1x = d21x * inv, e1y = d21y * inv, e1z = d21z * inv;
+    double e3x = d31y * d32z - d31z * d32y, e3y = d31z * d32x - d31x * d32z, e3z = d31x * d32y - d31y * d32x;
+    inv = 1.0 / std::max(std::sqrt(e3x * e3x + e3y * e3y + e3z * e3z), 1e-30);
+    e3x *= inv, e3y *= inv, e3z *= inv;
+    const double e2x = e3y * e1z - e3z * e1y, e2y = e3z * e1x - e3x * e1z, e2z = e3x * e1y - e3y * e1x;
+    const double x3 = e1x * d31x + e1y * d31y + e1z * d31z;
+    const double y3 = e2x * d31x + e2y * d31y + e2z * d31z;
+    const double area = std::max(0.5 * x2 * y3, 1e-20);
+    const double ainv = 1.0 / area;
+    const double PX1 = -0.5 * y3, PY1 = 0.5 * (x3 - x2), PY2 = -0.5 * x3;
+    const double PX[3] = {PX1, -PX1, 0.0};
+    const double PY[3] = {PY1, PY2, -(PY1 + PY2)};
+
+    double vx[3], vy[3], vz[3], rx[3], ry[3];
+    for (int k = 0; k < 3; ++k) {
+      const double ux = VX[n[k]], uy = VY[n[k]], uz = VZ[n[k]];
+      const double wx = WX[n[k]], wy = WY[n[k]], wz = WZ[n[k]];
+      vx[k] = e1x * ux + e1y * uy + e1z * uz;
+      vy[k] = e2x * ux + e2y * uy + e2z * uz;
+      vz[k] = e3x * ux + e3y * uy + e3z * uz;
+      rx[k] = e1x * wx + e1y * wy + e1z * wz;
+      ry[k] = e2x * wx + e2y * wy + e2z * wz;
+    }
+
+    // Large-rotation correction (Ish3n 2).
+    const double s12 = signed_floor3(PY1 + PY2, 1e-20), sx1 = signed_floor3(PX1, 1e-20);
+    const double T1 = tau * (vz[0] - vz[1]) / s12;
+    const double T2 = tau * ((PY1 * vz[0] + PY2 * vz[1]) / s12 - vz[2]) / sx1;
+    const double T11 = tau * (vy[0] - vy[1]) / s12;
+    const double T22 = tau * ((PY1 * vx[0] + PY2 * vx[1]) / s12 - vx[2]) / sx1;
+    double cx[3], cy[3];
+    for (int k = 0; k < 3; ++k) {
+      cx[k] = vx[k] - vz[k] * T1 - vy[k] * T11;
+      cy[k] = vy[k] - vz[k] * T2 - vx[k] * T22;
+    }
+
+    // Rates times A, then increments.
+    const double f = dt1 * ainv;
+    const double sp = PY1 + PY2;
+    const double gzx_r =
+        kThird * PX1 *
+        (PX1 * (rx[1] - rx[0]) + (2 * PY1 + 3 * PY2) * ry[0] + (3 * PY1 + 2 * PY2) * ry[1] + sp * ry[2]);
+    const double gyz_r =
+        kThird *
+        (-PX1 * ((2 * PY1 + PY2) * rx[0] + (PY1 + 2 * PY2) * rx[1] + 3 * sp * rx[2]) +
+         PY1 * (PY1 + 2 * PY2) * ry[0] - PY2 * (2 * PY1 + PY2) * ry[1] + (PY2 * PY2 - PY1 * PY1) * ry[2]);
+    double dem[5], dk[3];
+    dem[0] = f * PX1 * (cx[0] - cx[1]);
+    dem[1] = f * (PY1 * (cy[0] - cy[2]) + PY2 * (cy[1] - cy[2]));
+    dem[2] = f * (PY1 * (cx[0] - cx[2]) + PY2 * (cx[1] - cx[2]) + PX1 * (cy[0] - cy[1]));
+    dem[3] = f * (PY1 * (vz[0] - vz[2]) + PY2 * (vz[1] - vz[2]) + gyz_r);
+    dem[4] = f * (PX1 * (vz[0] - vz[1]) + gzx_r);
+    dk[0] = f * PX1 * (ry[0] - ry[1]);
+    dk[1] = -f * (PY1 * (rx[0] - rx[2]) + PY2 * (rx[1] - rx[2]));
+    dk[2] = f * (PY1 * (ry[0] - ry[2]) + PY2 * (ry[1] - ry[2]) - PX1 * (rx[0] - rx[1]));
+
+    const double rate = alpha * equivalent_rate(dem, dk, g.thick[ii], dt1) + (1.0 - alpha) * g.rate[ii];
+    g.rate[ii] = rate;
+    SectionUpdate su;
+    section_update(g, i, mat, rule, gs, t, area, rate, off_start, dem, dk, su);
+    const double off = next_off(mat, off_start, su.eps_p_max);
+    g.off[ii] = off;
+    g.w_plastic[ii] += su.w_plastic;
+    g.thick[ii] += su.dthick * off;
+
+    double fv[3] = {0.0, 0.0, 0.0};
+    if (visc0 > 0) {
+      const double visc = visc0 * std::sqrt(area);
+      fv[0] = visc * (dem[0] + 0.5 * dem[1]);
+      fv[1] = visc * (dem[1] + 0.5 * dem[0]);
+      fv[2] = visc * dem[2] / 3.0;
+    }
+    double de_mem = 0, de_bend = 0;
+    for (int k = 0; k < 5; ++k) de_mem += (off_start * su.for_old[k] + off * su.for_new[k]) * dem[k];
+    for (int k = 0; k < 3; ++k) de_bend += (off_start * su.mom_old[k] + off * su.mom_new[k]) * dk[k];
+    g.e_int[ii] += 0.5 * area * t * (de_mem + t * de_bend) +
+                   area * t * off * (fv[0] * dem[0] + fv[1] * dem[1] + fv[2] * dem[2]);
+
+    if (off <= 0.0) {
+      for (int r = 0; r < 18; ++r) nf[r * G + ii] = 0.0;
+      g.dt[ii] = kInf;
+      g.k_nodal[ii] = 0.0;
+      continue;
+    }
+
+    // Internal nodal forces: transpose of the rates.
+    const double ot = off * t, ot2 = off * t * t;
+    const double Nxx = ot * (su.for_new[0] + fv[0]), Nyy = ot * (su.for_new[1] + fv[1]),
+                 Nxy = ot * (su.for_new[2] + fv[2]);
+    const double Qy = ot * su.for_new[3], Qx = ot * su.for_new[4];
+    const double Mxx = ot2 * su.mom_new[0], Myy = ot2 * su.mom_new[1], Mxy = ot2 * su.mom_new[2];
+    double fx[3], fy[3], fz[3], mx[3], my[3];
+    for (int k = 0; k < 3; ++k) {
+      fx[k] = Nxx * PX[k] + Nxy * PY[k];
+      fy[k] = Nxy * PX[k] + Nyy * PY[k];
+      fz[k] = Qx * PX[k] + Qy * PY[k];
+      mx[k] = -(Myy * PY[k] + Mxy * PX[k]);
+      my[k] = Mxx * PX[k] + Mxy * PY[k];
+    }
+    // Transverse shear rotation terms (transpose of gzx_r and gyz_r).
+    const double qx3 = kThird * Qx * PX1, qy3 = kThird * Qy;
+    my[0] += qx3 * (2 * PY1 + 3 * PY2) + qy3 * PY1 * (PY1 + 2 * PY2);
+    my[1] += qx3 * (3 * PY1 + 2 * PY2) - qy3 * PY2 * (2 * PY1 + PY2);
+    my[2] += qx3 * sp + qy3 * (PY2 * PY2 - PY1 * PY1);
+    mx[0] += -qx3 * PX1 - qy3 * PX1 * (2 * PY1 + PY2);
+    mx[1] += qx3 * PX1 - qy3 * PX1 * (PY1 + 2 * PY2);
+    mx[2] += -qy3 * PX1 * 3 * sp;
+
+    for (int k = 0; k < 3; ++k) {
+      double* o = nf + static_cast<std::size_t>(k) * 6 * G + ii;
+      o[0] = -(fx[k] * e1x + fy[k] * e2x + fz[k] * e3x);
+      o[G] = -(fx[k] * e1y + fy[k] * e2y + fz[k] * e3y);
+      o[2 * G] = -(fx[k] * e1z + fy[k] * e2z + fz[k] * e3z);
+      o[3 * G] = -(mx[k] * e1x + my[k] * e2x);
+      o[4 * G] = -(mx[k] * e1y + my[k] * e2y);
+      o[5 * G] = -(mx[k] * e1z + my[k] * e2z);
+    }
+
+    // Element step [4.2] and nodal stiffness [4.5].
+    const double l12 = x2 * x2, l23 = (x3 - x2) * (x3 - x2) + y3 * y3, l31 = x3 * x3 + y3 * y3;
+    const double lmax2 = std::max({l12, l23, l31, 1e-40});
+    const double l = 2.0 * area / std::sqrt(lmax2);
+    g.dt[ii] = l * phi / c;
+    g.k_nodal[ii] = 0.81 * 0.81 * area * t * a11 / (l * l);
+  }
+}
+
+}  // namespace radx::solver
