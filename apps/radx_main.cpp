@@ -6,8 +6,12 @@
 #include <string>
 #include <vector>
 
+#include <filesystem>
+
 #include "apps/cli_common.hpp"
+#include "apps/engine_pipeline.hpp"
 #include "apps/starter_pipeline.hpp"
+#include "parser/deck.hpp"
 #include "parser/deck_echo.hpp"
 
 namespace {
@@ -21,7 +25,11 @@ void usage(std::ostream& os) {
         "  keywords [--markdown] [--output FILE]\n"
         "                              the keyword reference (every keyword, card, field and diagnostic "
         "code)\n"
-        "  run, regress                not available yet: they come with the engine\n"
+        "  run [DECK] [--out DIR] [--threads N]\n"
+        "                              the starter then the engine: DECK is NAME_0000.rad (NAME_0001.rad "
+        "beside\n"
+        "                              it) or a one-file deck; without DECK, the embedded default deck\n"
+        "  regress                     not available yet\n"
         "\n"
         "  --help, --version\n"
         "\n"
@@ -38,6 +46,60 @@ int check(const std::vector<std::string>& args) {
   opt.write_outputs = false;
   opt.check_engine_deck = true;
   return radx::app::run_starter(opt, std::cout, std::cerr).exit_code;
+}
+
+int run(const std::vector<std::string>& args) {
+  radx::app::StarterOptions sopt;
+  radx::app::EngineOptions eopt;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if ((a == "--out" || a == "--threads") && i + 1 >= args.size()) {
+      std::cerr << "radx run: " << a << " needs a value\n";
+      return radx::app::kExitUsage;
+    }
+    if (a == "--out") {
+      sopt.out_dir = eopt.out_dir = args[++i];
+    } else if (a == "--threads") {
+      try {
+        eopt.threads = std::stoi(args[++i]);
+      } catch (...) {
+        eopt.threads = -1;
+      }
+      if (eopt.threads < 1) {
+        std::cerr << "radx run: --threads needs a positive integer\n";
+        return radx::app::kExitUsage;
+      }
+    } else if (!a.empty() && a[0] == '-') {
+      std::cerr << "radx run: unknown option " << a << '\n';
+      return radx::app::kExitUsage;
+    } else if (sopt.deck.empty()) {
+      sopt.deck = a;
+    } else {
+      std::cerr << "radx run: one deck at a time\n";
+      return radx::app::kExitUsage;
+    }
+  }
+  if (sopt.deck.empty()) {
+    sopt.deck = radx::app::write_default_starter_deck(sopt.out_dir);
+    eopt.engine_deck = radx::app::write_default_engine_deck(sopt.out_dir);
+    std::cout << "radx run: no deck given, running the embedded default deck " << sopt.deck << '\n';
+  }
+  if (eopt.engine_deck.empty()) {
+    if (radx::is_one_file_deck(sopt.deck)) {
+      eopt.engine_deck = sopt.deck;
+    } else {
+      const std::filesystem::path p(sopt.deck);
+      const std::string stem = p.stem().string();
+      const std::string base = stem.size() > 5 && stem.compare(stem.size() - 5, 5, "_0000") == 0
+                                   ? stem.substr(0, stem.size() - 5)
+                                   : stem;
+      eopt.engine_deck = (p.parent_path() / (base + "_0001" + p.extension().string())).string();
+    }
+  }
+  const auto s = radx::app::run_starter(sopt, std::cout, std::cerr);
+  if (s.exit_code != 0) return s.exit_code;
+  eopt.model_file = s.model_path;
+  return radx::app::run_engine(eopt, std::cout, std::cerr);
 }
 
 int keywords(const std::vector<std::string>& args) {
@@ -83,10 +145,11 @@ int main(int argc, char** argv) {
   }
   if (cmd == "check") return check(args);
   if (cmd == "keywords") return keywords(args);
-  if (cmd == "run" || cmd == "regress") {
-    std::cerr << "radx " << cmd
-              << ": not available in this version: the engine is not built yet; run radx-starter "
-                 "to check a deck and write its model file\n";
+  if (cmd == "run") return run(args);
+  if (cmd == "regress") {
+    std::cerr
+        << "radx regress: not available in this version (batch regression of sample decks comes later); "
+           "run `radx run DECK` per deck\n";
     return radx::app::kExitUsage;
   }
   std::cerr << "radx: unknown command '" << cmd << "'\n";

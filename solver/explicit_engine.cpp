@@ -314,7 +314,7 @@ CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
     mass += nodes_.mass[n];
     added += nodes_.added_mass[n];
   }
-  r.mass = mass;
+  r.mass = mass + impl_->kinematics.mass_correction();
   r.added_mass = added;
   return r;
 }
@@ -328,6 +328,9 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
   auto& s = nodes_;
   auto& kin = impl_->kinematics;
   kin.initial_conditions();
+  // Reference mass after the set-up (rigid bodies and moving walls may add mass).
+  mass0_ = kin.mass_correction();
+  for (std::size_t n = 0; n < s.n; ++n) mass0_ += s.mass[n];
 
   double time = 0, dt1 = 0, dt2 = 0;
   std::int64_t cycle = 0;

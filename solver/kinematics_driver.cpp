@@ -1,19 +1,56 @@
 #include "solver/kinematics_driver.hpp"
 
+#include "solver/kinematics.hpp"
+
 namespace radx::solver {
 
+// The call order is the one documented in solver/kinematics.hpp.
 struct KinematicsDriver::Parts {
+  BoundaryConditions bcs;
+  InitialVelocities inivel;
+  RigidWalls walls;
+  RigidBodies bodies;
+  ImposedVelocities impvel;
+  std::unique_ptr<ExternalLoads> loads;
   double external_work = 0;
+  explicit Parts(const model::Model& m) : bcs(m), inivel(m), walls(m), bodies(m), impvel(m) {}
 };
 
 KinematicsDriver::KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes)
-    : model_(m), controls_(c), nodes_(nodes), parts_(std::make_unique<Parts>()) {}
+    : model_(m), controls_(c), nodes_(nodes), parts_(std::make_unique<Parts>(m)) {}
 
 KinematicsDriver::~KinematicsDriver() = default;
 
-void KinematicsDriver::initial_conditions() {}
-void KinematicsDriver::external_loads(double, double, double) {}
-void KinematicsDriver::kinematic_conditions(double, double, double) {}
+void KinematicsDriver::initial_conditions() {
+  auto& p = *parts_;
+  p.bcs.set_fixed_bits(nodes_);
+  p.inivel.apply(nodes_, 0.0);  // initial kinetic energy, not work
+  p.walls.initialize(nodes_);
+  p.bodies.initialize(nodes_);
+  p.loads = std::make_unique<ExternalLoads>(
+      model_, p.bodies.size() > 0 ? std::span<const std::uint8_t>(p.bodies.secondary_flags())
+                                  : std::span<const std::uint8_t>());
+  p.bcs.apply(nodes_);
+}
+
+void KinematicsDriver::external_loads(double t, double dt1, double) {
+  auto& p = *parts_;
+  if (p.inivel.pending()) p.external_work += p.inivel.apply(nodes_, t);
+  if (!p.loads->empty()) p.external_work += p.loads->apply(nodes_, t, dt1);
+}
+
+void KinematicsDriver::kinematic_conditions(double t, double dt1, double dt2) {
+  auto& p = *parts_;
+  p.walls.apply_wall_node_forces(nodes_);
+  if (p.bodies.size() > 0) p.bodies.gather_and_accelerate(nodes_, dt1);
+  p.bcs.apply(nodes_);
+  p.external_work += p.impvel.apply(nodes_, t, dt1, dt2);
+  p.external_work += p.walls.apply(nodes_, dt1, dt2);
+  p.bcs.apply(nodes_);
+  if (p.bodies.size() > 0 && dt1 + dt2 > 0) p.bodies.secondary_kinematics(nodes_, dt1, dt2);
+  if (!p.loads->empty()) p.external_work += p.loads->concentrated_load_work(dt2);
+}
+
 void KinematicsDriver::after_update(double) {}
 
 void KinematicsDriver::kinetic_energy(double dt1, double& translational, double& rotational) const {
@@ -26,6 +63,11 @@ void KinematicsDriver::kinetic_energy(double dt1, double& translational, double&
     const double wx = s.wx[n] + h * s.awx[n], wy = s.wy[n] + h * s.awy[n], wz = s.wz[n] + h * s.awz[n];
     rotational += 0.5 * s.inertia[n] * (wx * wx + wy * wy + wz * wz);
   }
+  if (parts_->bodies.size() > 0) {
+    const auto c = parts_->bodies.kinetic_correction(s, dt1);
+    translational += c.translational;
+    rotational += c.rotational;
+  }
 }
 
 std::array<double, 3> KinematicsDriver::momentum(double dt1) const {
@@ -37,11 +79,19 @@ std::array<double, 3> KinematicsDriver::momentum(double dt1) const {
     p[1] += s.mass[n] * (s.vy[n] + h * s.ay[n]);
     p[2] += s.mass[n] * (s.vz[n] + h * s.az[n]);
   }
+  if (parts_->bodies.size() > 0) {
+    const auto c = parts_->bodies.kinetic_correction(s, dt1);
+    for (int k = 0; k < 3; ++k) p[k] += c.momentum[k];
+  }
   return p;
 }
 
 double KinematicsDriver::external_work() const {
   return parts_->external_work;
+}
+
+double KinematicsDriver::mass_correction() const {
+  return parts_->bodies.size() > 0 ? parts_->bodies.kinetic_correction(nodes_, 0.0).mass : 0.0;
 }
 
 }  // namespace radx::solver

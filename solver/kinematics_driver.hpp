@@ -6,6 +6,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
@@ -32,6 +33,8 @@ class KinematicsDriver {
   void kinetic_energy(double dt1, double& translational, double& rotational) const;
   [[nodiscard]] std::array<double, 3> momentum(double dt1) const;
   [[nodiscard]] double external_work() const;
+  // Correction to the nodal mass sum so that each rigid body counts once.
+  [[nodiscard]] double mass_correction() const;
 
  private:
   struct Parts;

@@ -1,0 +1,167 @@
+#include "apps/engine_pipeline.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+
+#include "io/engine_listing.hpp"
+#include "io/model_file.hpp"
+#include "io/summary_json.hpp"
+#include "parser/build_run_controls.hpp"
+#include "parser/diagnostics.hpp"
+#include "solver/explicit_engine.hpp"
+
+namespace radx::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+io::StepSource source_of(solver::StepControl::Kind k) {
+  switch (k) {
+    case solver::StepControl::Kind::Shell: return io::StepSource::Shell;
+    case solver::StepControl::Kind::Shell3: return io::StepSource::Shell3;
+    case solver::StepControl::Kind::Brick: return io::StepSource::Brick;
+    case solver::StepControl::Kind::Node: return io::StepSource::Node;
+    case solver::StepControl::Kind::None: break;
+  }
+  return io::StepSource::None;
+}
+
+io::EnergyBalance to_io(const solver::EnergyBalance& e) {
+  io::EnergyBalance b;
+  b.kinetic_t = e.kinetic_t;
+  b.kinetic_r = e.kinetic_r;
+  b.internal = e.internal;
+  b.hourglass = e.hourglass;
+  b.contact_elastic = e.contact_elastic;
+  b.contact_damping = e.contact_damping;
+  b.contact_friction = e.contact_friction;
+  b.contact_lagrange = e.contact_lagrange;
+  b.external_work = e.external_work;
+  b.initial_total = e.initial_total;
+  return b;
+}
+
+}  // namespace
+
+int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
+  Diagnostics diags;
+  const model::RunControls controls = read_run_controls(opt.engine_deck, diags);
+  diags.sort();
+  diags.print(err);
+  if (diags.has_errors()) {
+    err << "radx-engine: " << diags.error_count() << " error(s) in " << opt.engine_deck
+        << "; nothing was run\n";
+    return 1;
+  }
+  const std::string root = run_output_root(opt.engine_deck);
+  const std::string model_path =
+      opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;
+  model::Model model;
+  std::string error;
+  if (!io::read_model_file(model_path, model, error)) {
+    err << model_path << ": error: cannot read the model file: " << error
+        << "\n  run the starter first (radx-starter " << root << "_0000.rad), or give it with --model FILE\n";
+    return 1;
+  }
+  std::error_code ec;
+  fs::create_directories(opt.out_dir, ec);
+  const std::string listing_path = (fs::path(opt.out_dir) / (root + "_0001.out")).string();
+  std::ofstream listing_file(listing_path, std::ios::trunc);
+  if (!listing_file) {
+    err << "radx-engine: cannot write " << listing_path << '\n';
+    return 1;
+  }
+
+  solver::ExplicitEngine engine(model, controls, solver::EngineOptions{opt.threads});
+  io::EngineListing listing(io::ListingSinks{&listing_file, &out, controls.print_stdout,
+                                             io::stdout_is_terminal(), controls.print_header_every});
+  io::EngineListingHeader h;
+  h.program_version = RADX_VERSION;
+  h.engine_deck = opt.engine_deck;
+  h.model_file = model_path;
+  h.output_root = root;
+  h.nodes = model.nodes.size();
+  h.shells = model.shells.size();
+  h.shells3 = model.shells3.size();
+  h.bricks = model.bricks.size();
+  h.interfaces = model.interfaces.size();
+  h.total_mass = model.total_mass;
+  h.mass_unit = model.units.mass_name;
+  h.length_unit = model.units.length_name;
+  h.time_unit = model.units.time_name;
+  h.controls = &controls;
+  listing.header(h);
+
+  const auto wall0 = std::chrono::steady_clock::now();
+  auto to_line = [&](const solver::CycleReport& r) {
+    io::ListingLine l;
+    l.cycle = r.cycle;
+    l.time = r.time;
+    l.dt = r.dt;
+    l.source = source_of(r.control.kind);
+    l.source_id = r.control.user_id;
+    l.error_percent = r.energy.error_percent;
+    l.internal_energy = r.energy.internal;
+    l.kinetic_t = r.energy.kinetic_t;
+    l.kinetic_r = r.energy.kinetic_r;
+    l.external_work = r.energy.external_work;
+    l.mass_error = r.mass0 > 0 ? (r.mass - r.mass0) / r.mass0 : 0.0;
+    l.total_mass = r.mass;
+    l.added_mass = r.added_mass;
+    return l;
+  };
+  std::string stop_message;
+  const int every = std::max(1, controls.print_every);
+  const auto result = engine.run([&](const solver::CycleReport& r) {
+    const bool last = r.time >= controls.t_stop;
+    if (r.cycle % every == 0 || last) listing.line(to_line(r));
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    listing.progress(r.cycle, r.time, controls.t_stop, wall);
+    const double err_pct = r.energy.error_percent;
+    const bool err_hit = controls.stop_positive_error_only
+                             ? err_pct > controls.stop_energy_error_pct
+                             : std::abs(err_pct) > controls.stop_energy_error_pct;
+    if (err_hit) {
+      stop_message = "/STOP: energy error " + std::to_string(err_pct) + " % beyond " +
+                     std::to_string(controls.stop_energy_error_pct) + " %";
+      listing.line(to_line(r));
+      return false;
+    }
+    if (r.mass0 > 0 && (r.mass - r.mass0) / r.mass0 > controls.stop_mass_error) {
+      stop_message = "/STOP: mass error beyond " + std::to_string(controls.stop_mass_error);
+      listing.line(to_line(r));
+      return false;
+    }
+    return true;
+  });
+
+  io::RunSummary s;
+  s.status = result.status == solver::RunStatus::Normal ? io::RunStatus::Normal : io::RunStatus::Error;
+  s.message = !stop_message.empty()    ? stop_message
+              : result.message.empty() ? std::string("end time reached")
+                                       : result.message;
+  s.run_name = controls.run_name;
+  s.run_number = controls.run_number;
+  s.cycles = result.cycles;
+  s.time = result.time;
+  s.dt = result.dt;
+  s.nodes = model.nodes.size();
+  s.elements = engine.element_count();
+  s.threads = result.threads;
+  s.wall_seconds = result.wall_seconds;
+  s.initial_mass = result.last.mass0;
+  s.mass = result.last.mass;
+  s.added_mass = result.last.added_mass;
+  s.momentum = result.last.momentum;
+  s.energy = to_io(result.last.energy);
+  listing.summary(s);
+  if (!io::write_summary_json(io::summary_json_path(opt.out_dir, root), s, error)) {
+    err << "radx-engine: " << error << '\n';
+    return 1;
+  }
+  return s.status == io::RunStatus::Normal ? 0 : 1;
+}
+
+}  // namespace radx::app

@@ -1,0 +1,80 @@
+// radx-engine: runs the explicit engine on NAME_0001.rad and the starter's model file NAME_0000.hdf.
+#include <iostream>
+#include <string>
+
+#include "apps/cli_common.hpp"
+#include "apps/engine_pipeline.hpp"
+
+namespace {
+
+void usage(std::ostream& os) {
+  os << "usage: radx-engine [NAME_0001.rad] [--out DIR] [--model FILE] [--threads N]\n"
+        "       radx-engine -i NAME_0001.rad ...\n"
+        "\n"
+        "Runs the explicit engine: reads the engine deck and the starter's model file NAME_0000.hdf (in the\n"
+        "output folder unless --model is given), and writes the listing NAME_0001.out (also on stdout) and\n"
+        "NAME_summary.json in the current folder or in DIR.\n"
+        "\n"
+        "  -i DECK        the engine deck\n"
+        "  --out DIR      output folder (default: the current folder)\n"
+        "  --model FILE   the model file (default: DIR/NAME_0000.hdf)\n"
+        "  --threads N    OpenMP threads (default: OMP_NUM_THREADS, else all cores); results do not depend "
+        "on it\n"
+        "  --help, --version\n"
+        "\n"
+        "Exit code: 0 normal termination, 1 input error or error termination, 2 usage errors.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  radx::app::EngineOptions opt;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      usage(std::cout);
+      return radx::app::kExitOk;
+    }
+    if (a == "--version") {
+      std::cout << "radx-engine " << RADX_VERSION << '\n';
+      return radx::app::kExitOk;
+    }
+    const bool takes_value = a == "-i" || a == "--out" || a == "--model" || a == "--threads";
+    if (takes_value && i + 1 >= argc) {
+      std::cerr << "radx-engine: " << a << " needs a value\n";
+      return radx::app::kExitUsage;
+    }
+    if (a == "-i") {
+      opt.engine_deck = argv[++i];
+    } else if (a == "--out") {
+      opt.out_dir = argv[++i];
+    } else if (a == "--model") {
+      opt.model_file = argv[++i];
+    } else if (a == "--threads") {
+      try {
+        opt.threads = std::stoi(argv[++i]);
+      } catch (...) {
+        opt.threads = -1;
+      }
+      if (opt.threads < 1) {
+        std::cerr << "radx-engine: --threads needs a positive integer\n";
+        return radx::app::kExitUsage;
+      }
+    } else if (!a.empty() && a[0] == '-') {
+      std::cerr << "radx-engine: unknown option " << a << '\n';
+      usage(std::cerr);
+      return radx::app::kExitUsage;
+    } else if (opt.engine_deck.empty()) {
+      opt.engine_deck = a;
+    } else {
+      std::cerr << "radx-engine: one deck at a time\n";
+      return radx::app::kExitUsage;
+    }
+  }
+  if (opt.engine_deck.empty()) {
+    std::cerr << "radx-engine: give the engine deck (NAME_0001.rad)\n";
+    usage(std::cerr);
+    return radx::app::kExitUsage;
+  }
+  return radx::app::run_engine(opt, std::cout, std::cerr);
+}

@@ -1,0 +1,165 @@
+#include "solver/boundary_conditions.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "solver/functions.hpp"
+
+namespace radx::solver {
+
+namespace {
+
+const std::vector<std::int32_t>& group_of(const model::Model& m, std::int32_t index,
+                                          const std::string& what) {
+  if (index < 0 || static_cast<std::size_t>(index) >= m.node_groups.size())
+    throw std::runtime_error(what + ": no node group");
+  return m.node_groups[static_cast<std::size_t>(index)].nodes;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------------------
+// /BCS
+
+BoundaryConditions::BoundaryConditions(const model::Model& m) {
+  std::vector<std::uint8_t> bits(m.nodes.size(), 0);
+  for (const auto& c : m.bcs) {
+    std::uint8_t b = 0;
+    for (std::size_t k = 0; k < 6; ++k)
+      if (c.fixed[k]) b = static_cast<std::uint8_t>(b | (1u << k));
+    if (b == 0) continue;
+    for (const auto n : group_of(m, c.group, "/BCS/" + std::to_string(c.id)))
+      bits[static_cast<std::size_t>(n)] = static_cast<std::uint8_t>(bits[static_cast<std::size_t>(n)] | b);
+  }
+  for (std::size_t n = 0; n < bits.size(); ++n)
+    if (bits[n]) {
+      node_.push_back(static_cast<std::int32_t>(n));
+      mask_.push_back(bits[n]);
+    }
+}
+
+void BoundaryConditions::set_fixed_bits(NodeState& s) const {
+  for (std::size_t k = 0; k < node_.size(); ++k) {
+    auto& f = s.fixed[static_cast<std::size_t>(node_[k])];
+    f = static_cast<std::uint8_t>(f | mask_[k]);
+  }
+}
+
+void BoundaryConditions::apply(NodeState& s) const {
+  for (std::size_t k = 0; k < node_.size(); ++k) {
+    const auto n = static_cast<std::size_t>(node_[k]);
+    const unsigned b = mask_[k];
+    if (b & 1u) s.vx[n] = s.ax[n] = 0;
+    if (b & 2u) s.vy[n] = s.ay[n] = 0;
+    if (b & 4u) s.vz[n] = s.az[n] = 0;
+    if (b & 8u) s.wx[n] = s.awx[n] = 0;
+    if (b & 16u) s.wy[n] = s.awy[n] = 0;
+    if (b & 32u) s.wz[n] = s.awz[n] = 0;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// /IMPVEL
+
+ImposedVelocities::ImposedVelocities(const model::Model& m) {
+  std::size_t total = 0;
+  for (const auto& iv : m.imposed_velocities) {
+    const std::string what = "/IMPVEL/" + std::to_string(iv.id);
+    if (iv.function < 0 || static_cast<std::size_t>(iv.function) >= m.functions.size())
+      throw std::runtime_error(what + ": no function (funct_IDT is required)");
+    if (iv.dir < 0 || iv.dir > 5) throw std::runtime_error(what + ": Dir must be X, Y, Z, XX, YY or ZZ");
+    Entry e;
+    e.f = m.functions[static_cast<std::size_t>(iv.function)];
+    e.dir = iv.dir;
+    e.ascale = iv.ascale_x;
+    e.fscale = iv.fscale_y;
+    e.t_start = iv.t_start;
+    e.t_stop = iv.t_stop;
+    e.nodes = group_of(m, iv.group, what);
+    e.first = total;
+    total += e.nodes.size();
+    entries_.push_back(std::move(e));
+  }
+  pending_.assign(total, 0.0);
+}
+
+double ImposedVelocities::pending_work() const {
+  double w = 0;
+  for (const double p : pending_) w += p;
+  return w;
+}
+
+double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) {
+  const double dt12 = 0.5 * (dt1 + dt2);
+  double work = 0;
+  for (const auto& e : entries_) {
+    const bool active = t >= e.t_start && t <= e.t_stop && dt12 > 0;
+    const double v_imp = active ? scaled_function_value(e.f, t + 0.5 * dt2, e.ascale, e.fscale) : 0.0;
+    const bool rot = e.dir >= 3;
+    const int d = rot ? e.dir - 3 : e.dir;
+    std::vector<double>& v = rot ? (d == 0   ? s.wx
+                                    : d == 1 ? s.wy
+                                             : s.wz)
+                                 : (d == 0   ? s.vx
+                                    : d == 1 ? s.vy
+                                             : s.vz);
+    std::vector<double>& a = rot ? (d == 0   ? s.awx
+                                    : d == 1 ? s.awy
+                                             : s.awz)
+                                 : (d == 0   ? s.ax
+                                    : d == 1 ? s.ay
+                                             : s.az);
+    const std::vector<double>& mass = rot ? s.inertia : s.mass;
+    for (std::size_t k = 0; k < e.nodes.size(); ++k) {
+      double& pend = pending_[e.first + k];
+      work += pend;
+      pend = 0;
+      if (!active) continue;
+      const auto n = static_cast<std::size_t>(e.nodes[k]);
+      const double a_free = a[n];
+      const double a_imp = (v_imp - v[n]) / dt12;
+      a[n] = a_imp;
+      const double dw = 0.25 * mass[n] * (a_imp * dt12 + 2.0 * v[n]) * (a_imp - a_free);
+      work += dt1 * dw;
+      pend = dt2 * dw;
+    }
+  }
+  return work;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// /INIVEL/TRA
+
+InitialVelocities::InitialVelocities(const model::Model& m) {
+  for (const auto& iv : m.initial_velocities) {
+    Entry e;
+    e.v = iv.v;
+    e.t_start = iv.t_start;
+    e.nodes = group_of(m, iv.group, "/INIVEL/TRA/" + std::to_string(iv.id));
+    entries_.push_back(std::move(e));
+  }
+  remaining_ = entries_.size();
+}
+
+double InitialVelocities::apply(NodeState& s, double t) {
+  if (remaining_ == 0) return 0.0;
+  double dke = 0;
+  for (auto& e : entries_) {
+    if (e.applied || t < e.t_start) continue;
+    e.applied = true;
+    --remaining_;
+    for (const auto n32 : e.nodes) {
+      const auto n = static_cast<std::size_t>(n32);
+      const double old2 = s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n];
+      s.vx[n] = e.v[0];
+      s.vy[n] = e.v[1];
+      s.vz[n] = e.v[2];
+      const double new2 = s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n];
+      dke += 0.5 * s.mass[n] * (new2 - old2);
+    }
+  }
+  return dke;
+}
+
+}  // namespace radx::solver

@@ -1,0 +1,89 @@
+// Nodal kinematic conditions: /BCS, /IMPVEL, /INIVEL/TRA (deck-format.md; elements.md sections 0 and 8;
+// OpenRadioss constraints/general/impvel/fixvel.F, loads/general/inivel/inivel_start.F90).
+// v is the state's v^{n-1/2}, a the accelerations of the cycle, dt12 = (dt1 + dt2) / 2.
+//
+//   /BCS      the fixed bits (bit 0..2 Tx Ty Tz, 3..5 Rx Ry Rz) are OR-ed into state.fixed once; each call
+//             of apply() zeroes both v and a of the fixed components (translations and rotations).
+//             It does no work (elements.md 8).
+//   /IMPVEL   active for Tstart <= t <= Tstop. With v_imp(t) = Fscale_y f(t / Ascale_x), the imposed
+//             dof gets
+//                 a_imp = (v_imp(t + dt2/2) - v^{n-1/2}) / dt12,
+//             so that v^{n+1/2} = v_imp(t_n + dt2/2). Reaction R = m (a_imp - a_free) (m: scalar
+//             inertia for XX YY ZZ). Work of the cycle
+//                 DW = 1/4 m (a_imp dt12 + 2 v^{n-1/2}) (a_imp - a_free) = 1/2 R vbar,
+//                 vbar = v^{n-1/2} + 1/2 a_imp dt12,
+//             booked as dt1 DW now and dt2 DW at the next apply() (total dt12 R vbar). For a free node
+//             this is exactly 1/2 m ((v^{n+1/2})^2 - (v^{n-1/2})^2) per cycle.
+//   /INIVEL/TRA  v = (Vx, Vy, Vz) on the group's nodes, at t = 0 (Tstart = 0) or at the first cycle
+//             with t_n >= Tstart.
+// Skews, sensors and frames are 0 in a valid model (the starter rejects them). No allocation in the
+// per-cycle calls.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "solver/model/model.hpp"
+#include "solver/node_state.hpp"
+
+namespace radx::solver {
+
+class BoundaryConditions {
+ public:
+  explicit BoundaryConditions(const model::Model& m);
+  // Once, before cycle 0: state.fixed |= the /BCS bits.
+  void set_fixed_bits(NodeState& s) const;
+  // Zero v and a of the fixed components (called twice per cycle, around the imposed velocities and
+  // rigid walls).
+  void apply(NodeState& s) const;
+
+ private:
+  std::vector<std::int32_t> node_;  // nodes with at least one fixed dof, sorted
+  std::vector<std::uint8_t> mask_;  // their OR-ed bits
+};
+
+class ImposedVelocities {
+ public:
+  explicit ImposedVelocities(const model::Model& m);
+  // Cycle step 5, after the first BoundaryConditions::apply. t = t_n. Returns the work booked now
+  // (this cycle's dt1 part plus the previous cycle's dt2 part). Precondition: dt1 + dt2 > 0.
+  double apply(NodeState& s, double t, double dt1, double dt2);
+  // Work of the last cycle not booked yet (its dt2 part); the next apply() books it.
+  [[nodiscard]] double pending_work() const;
+  [[nodiscard]] bool empty() const { return entries_.empty(); }
+
+ private:
+  struct Entry {
+    model::Function f;
+    int dir = 0;  // 0..2 translation, 3..5 rotation
+    double ascale = 1, fscale = 1, t_start = 0, t_stop = model::kNever;
+    std::vector<std::int32_t> nodes;
+    std::size_t first = 0;  // offset of its nodes in pending_
+  };
+  std::vector<Entry> entries_;
+  std::vector<double> pending_;  // dt2 DW per (entry, node)
+};
+
+class InitialVelocities {
+ public:
+  explicit InitialVelocities(const model::Model& m);
+  // Sets the velocity of every /INIVEL/TRA not applied yet whose Tstart <= t: call once with t = 0
+  // before cycle 0, then at the start of each cycle with t = t_n (cheap when nothing is pending).
+  // Returns the kinetic-energy change 1/2 m (|v_new|^2 - |v_old|^2) it caused: initial energy at t = 0,
+  // to be booked as external work when a later Tstart applies it.
+  double apply(NodeState& s, double t);
+  [[nodiscard]] bool pending() const { return remaining_ > 0; }
+
+ private:
+  struct Entry {
+    std::array<double, 3> v{};
+    double t_start = 0;
+    bool applied = false;
+    std::vector<std::int32_t> nodes;
+  };
+  std::vector<Entry> entries_;
+  std::size_t remaining_ = 0;
+};
+
+}  // namespace radx::solver

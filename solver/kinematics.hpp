@@ -1,0 +1,41 @@
+// Loads and kinematic conditions of the explicit cycle, and the order the time loop calls them in
+// (architecture.md section 4, elements.md section 0). The objects are built once from the Model; they
+// own copies of what they need (functions, node lists) and keep between cycles only what the work
+// bookkeeping needs. Times: t = t_n, dt1 = t_n - t_{n-1} (0 at cycle 0), dt2 = t_{n+1} - t_n,
+// dt12 = (dt1 + dt2)/2. Every call returning a double returns external work to ADD to W_ext.
+//
+// SET-UP, once, after the engine has filled NodeState (x = x0 = model coordinates, mass = model node_mass,
+// inertia = element inertias, v = w = 0):
+//   BoundaryConditions bcs(model);          bcs.set_fixed_bits(s);
+//   InitialVelocities  inivel(model);       inivel.apply(s, 0.0);  // returns the initial KE it gave (not
+//   work) RigidWalls         walls(model);        walls.initialize(s);   // moving walls: + Mass, v = V0
+//   RigidBodies        bodies(model);       bodies.initialize(s);  // ICoG, M, inertia, principal frame
+//   ExternalLoads      loads(model, bodies.secondary_flags());
+//   ImposedVelocities  impvel(model);
+//   bcs.apply(s);                                                  // fixed dofs start at rest
+//
+// CYCLE n (t, dt1; dt2 once the element step is known):
+//   0. if (inivel.pending()) W += inivel.apply(s, t);              // /INIVEL with Tstart > 0
+//   1. zero fx_ext.. and mx.. (and fx.. unless the assembly overwrites fx = fx_ext + f_elements);
+//      W += loads.apply(s, t, dt1);                                // gravity m g, /CLOAD, /PLOAD at t_n
+//   2-4. contact, elements, assembly; choose dt2.
+//   5. a = f/m, aw = m/I (engine), then in this order:
+//      walls.apply_wall_node_forces(s);                            // moving walls: previous wall force
+//      bodies.gather_and_accelerate(s, dt1);                       // a_N = F/M, Euler step (dt1: frame)
+//      bcs.apply(s);
+//      W += impvel.apply(s, t, dt1, dt2);                          // a = (v_imp(t + dt2/2) - v)/dt12
+//      W += walls.apply(s, dt1, dt2);                              // kinematic contact, slide 0/1/2
+//      bcs.apply(s);
+//      bodies.secondary_kinematics(s, dt1, dt2);                   // secondaries follow rigidly
+//      W += loads.concentrated_load_work(dt2);                     // /CLOAD: 1/2 (F_old+F_new) v dt2
+//   6. outputs: KE = sums over all nodes of 1/2 m |v + dt1/2 a|^2 (and rotations) plus
+//      bodies.kinetic_correction(s, dt1); wall forces: walls.outputs().
+//   7. v += dt12 a, w += dt12 aw, x += dt2 v.
+// When an element is deleted: loads.remove_element(type, index) (/PLOAD Idel = 1).
+#pragma once
+
+#include "solver/boundary_conditions.hpp"
+#include "solver/external_loads.hpp"
+#include "solver/functions.hpp"
+#include "solver/rigid_body.hpp"
+#include "solver/rigid_wall_plane.hpp"

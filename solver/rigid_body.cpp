@@ -1,0 +1,313 @@
+#include "solver/rigid_body.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace radx::solver {
+
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using RowMat3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+
+Vec3 position(const NodeState& s, std::size_t n) {
+  return {s.x[n], s.y[n], s.z[n]};
+}
+Vec3 velocity(const NodeState& s, std::size_t n) {
+  return {s.vx[n], s.vy[n], s.vz[n]};
+}
+Vec3 spin(const NodeState& s, std::size_t n) {
+  return {s.wx[n], s.wy[n], s.wz[n]};
+}
+Vec3 acceleration(const NodeState& s, std::size_t n) {
+  return {s.ax[n], s.ay[n], s.az[n]};
+}
+Vec3 spin_rate(const NodeState& s, std::size_t n) {
+  return {s.awx[n], s.awy[n], s.awz[n]};
+}
+
+// Rotation matrix of the rotation vector theta (Rodrigues).
+Mat3 rotation(const Vec3& theta) {
+  const double phi = theta.norm();
+  if (phi == 0) return Mat3::Identity();
+  return Eigen::AngleAxisd(phi, theta / phi).toRotationMatrix();
+}
+
+// (R(theta) - 1) r / dt = c1 (w x r) + c2 dt w x (w x r), theta = w dt, phi = |theta|.
+void rotation_series(double phi, double& c1, double& c2) {
+  if (phi < 1e-4) {
+    const double p2 = phi * phi;
+    c1 = 1.0 - p2 / 6.0;
+    c2 = 0.5 - p2 / 24.0;
+  } else {
+    c1 = std::sin(phi) / phi;
+    const double h = std::sin(0.5 * phi);
+    c2 = 2.0 * h * h / (phi * phi);
+  }
+}
+
+// Rows orthonormal and right-handed again after many incremental rotations.
+void orthonormalize(RowMat3& r) {
+  Vec3 e0 = r.row(0).transpose(), e1 = r.row(1).transpose();
+  e0.normalize();
+  e1 -= e1.dot(e0) * e0;
+  e1.normalize();
+  const Vec3 e2 = e0.cross(e1);
+  r.row(0) = e0.transpose();
+  r.row(1) = e1.transpose();
+  r.row(2) = e2.transpose();
+}
+
+}  // namespace
+
+RigidBodies::RigidBodies(const model::Model& m) : secondary_flag_(m.nodes.size(), 0) {
+  for (const auto& rb : m.rigid_bodies) {
+    const std::string what = "/RBODY/" + std::to_string(rb.id);
+    if (rb.main_node == model::kNone || static_cast<std::size_t>(rb.main_node) >= m.nodes.size())
+      throw std::runtime_error(what + ": no main node");
+    if (rb.icog < 1 || rb.icog > 4) throw std::runtime_error(what + ": ICoG must be 1, 2, 3 or 4");
+    RigidBodyInfo b;
+    b.id = rb.id;
+    b.main = rb.main_node;
+    b.secondary = rb.secondary;
+    b.ispher = rb.ispher == 1 ? 1 : 2;
+    b.icog = rb.icog;
+    for (const auto n : b.secondary) secondary_flag_[static_cast<std::size_t>(n)] = 1;
+    bodies_.push_back(std::move(b));
+    deck_mass_.push_back(rb.mass);
+    deck_inertia_.push_back(rb.inertia);
+  }
+}
+
+void RigidBodies::initialize(NodeState& s) {
+  for (std::size_t bi = 0; bi < bodies_.size(); ++bi) {
+    auto& b = bodies_[bi];
+    const std::string what = "/RBODY/" + std::to_string(b.id);
+    const auto mn = static_cast<std::size_t>(b.main);
+    double m0 = s.mass[mn] + deck_mass_[bi];
+    if (m0 == 0) m0 = 1e-20;
+    const auto& j = deck_inertia_[bi];  // Jxx Jyy Jzz Jxy Jyz Jxz
+    Mat3 inertia;
+    inertia << j[0], j[3], j[5], j[3], j[1], j[4], j[5], j[4], j[2];
+    inertia += s.inertia[mn] * Mat3::Identity();
+
+    const Vec3 x_old = position(s, mn);
+    double ms = 0;
+    Vec3 mx = Vec3::Zero();
+    for (const auto n : b.secondary) {
+      const auto k = static_cast<std::size_t>(n);
+      ms += s.mass[k];
+      mx += s.mass[k] * position(s, k);
+    }
+    Vec3 x_new = x_old, x_g = x_old;
+    double mass = m0 + ms;
+    switch (b.icog) {
+      case 1:
+        if (mass <= 1e-30) throw std::runtime_error(what + ": the rigid body has no mass (ICoG 1)");
+        x_new = (m0 * x_old + mx) / mass;
+        break;
+      case 2:
+        if (ms <= 1e-30) throw std::runtime_error(what + ": the secondary nodes have no mass (ICoG 2)");
+        x_new = mx / ms;
+        x_g = x_new;
+        break;
+      case 3: break;
+      default: mass = m0; break;
+    }
+    if (b.icog <= 3) {
+      const Vec3 d = x_g - x_new;
+      inertia += m0 * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+      if (b.secondary.size() == 1) inertia += 1e-20 * Mat3::Identity();
+      for (const auto n : b.secondary) {
+        const auto k = static_cast<std::size_t>(n);
+        const Vec3 r = position(s, k) - x_new;
+        inertia += s.inertia[k] * Mat3::Identity() +
+                   s.mass[k] * (r.squaredNorm() * Mat3::Identity() - r * r.transpose());
+      }
+    }
+    b.tensor = {inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1), inertia(1, 2), inertia(0, 2)};
+
+    // Principal values and axes (columns of V), right-handed.
+    Eigen::SelfAdjointEigenSolver<Mat3> eig(inertia);
+    Vec3 lam = eig.eigenvalues();
+    Mat3 v = eig.eigenvectors();
+    if (v.determinant() < 0) v.col(2) = -v.col(2);
+    const double imax = lam.maxCoeff();
+    if (b.ispher == 1) {
+      lam.setConstant(lam.mean());
+    } else if (lam.minCoeff() <= 1e-3 * imax) {
+      for (int i = 0; i < 3; ++i)
+        if (lam(i) / imax < 1e-3) lam(i) += 0.1 * imax;
+    }
+    if (!(lam.minCoeff() > 0))
+      throw std::runtime_error(what +
+                               ": the rigid body has no rotational inertia (all its mass at the main "
+                               "node and no inertia given)");
+    b.principal = {lam(0), lam(1), lam(2)};
+    RowMat3 r = v.transpose();
+    std::copy(r.data(), r.data() + 9, b.axes.begin());
+    b.mass = mass;
+
+    // The main node: position, mass, inertia; the secondaries follow its motion.
+    s.x[mn] = s.x0[mn] = x_new(0);
+    s.y[mn] = s.y0[mn] = x_new(1);
+    s.z[mn] = s.z0[mn] = x_new(2);
+    s.mass[mn] = mass;
+    s.inertia[mn] = lam.minCoeff();
+    const Vec3 vm = velocity(s, mn), wm = spin(s, mn);
+    for (const auto n : b.secondary) {
+      const auto k = static_cast<std::size_t>(n);
+      const Vec3 vs = vm + wm.cross(position(s, k) - x_new);
+      s.vx[k] = vs(0);
+      s.vy[k] = vs(1);
+      s.vz[k] = vs(2);
+      s.wx[k] = wm(0);
+      s.wy[k] = wm(1);
+      s.wz[k] = wm(2);
+    }
+  }
+}
+
+void RigidBodies::gather_and_accelerate(NodeState& s, double dt1) {
+  for (auto& b : bodies_) {
+    const auto mn = static_cast<std::size_t>(b.main);
+    const Vec3 xm = position(s, mn);
+    Vec3 f(s.fx[mn], s.fy[mn], s.fz[mn]);
+    Vec3 mom(s.mx[mn], s.my[mn], s.mz[mn]);
+    double k_main = s.stiffness[mn];
+    for (const auto n : b.secondary) {
+      const auto k = static_cast<std::size_t>(n);
+      const Vec3 fs(s.fx[k], s.fy[k], s.fz[k]);
+      f += fs;
+      mom += Vec3(s.mx[k], s.my[k], s.mz[k]) + (position(s, k) - xm).cross(fs);
+      k_main += s.stiffness[k];
+      s.stiffness[k] = 1e-20;
+    }
+    s.stiffness[mn] = k_main;
+    s.fx[mn] = f(0);
+    s.fy[mn] = f(1);
+    s.fz[mn] = f(2);
+    s.mx[mn] = mom(0);
+    s.my[mn] = mom(1);
+    s.mz[mn] = mom(2);
+    b.force = {f(0), f(1), f(2)};
+    b.moment = {mom(0), mom(1), mom(2)};
+
+    // Translation: a = F / M.
+    const double mass = s.mass[mn];
+    if (mass > 0) {
+      s.ax[mn] = f(0) / mass;
+      s.ay[mn] = f(1) / mass;
+      s.az[mn] = f(2) / mass;
+    }
+
+    // Rotation: advance the principal frame to t_n, then Euler's equations.
+    Eigen::Map<RowMat3> r(b.axes.data());
+    const Vec3 w = spin(s, mn);
+    if (dt1 > 0 && w.squaredNorm() > 0) {
+      RowMat3 rn = r * rotation(w * dt1).transpose();
+      orthonormalize(rn);
+      r = rn;
+    }
+    const Vec3 ip(b.principal[0], b.principal[1], b.principal[2]);
+    Vec3 alpha;
+    const unsigned fixed_rot = (s.fixed[mn] >> 3) & 7u;
+    if (fixed_rot == 0) {
+      const Vec3 wp = r * w;
+      const Vec3 mp = r * mom;
+      Vec3 ap;
+      ap(0) = (mp(0) + (ip(1) - ip(2)) * wp(1) * wp(2)) / ip(0);
+      ap(1) = (mp(1) + (ip(2) - ip(0)) * wp(2) * wp(0)) / ip(1);
+      ap(2) = (mp(2) + (ip(0) - ip(1)) * wp(0) * wp(1)) / ip(2);
+      alpha = r.transpose() * ap;
+    } else {
+      // Global system I alpha = Mom - w x (I w) restricted to the free rotations.
+      const Mat3 ig = r.transpose() * ip.asDiagonal() * r;
+      const Vec3 rhs = mom - w.cross(ig * w);
+      int free_idx[3];
+      int nf = 0;
+      for (int i = 0; i < 3; ++i)
+        if (!(fixed_rot & (1u << i))) free_idx[nf++] = i;
+      alpha.setZero();
+      if (nf == 1) {
+        const int i = free_idx[0];
+        alpha(i) = rhs(i) / ig(i, i);
+      } else if (nf == 2) {
+        const int i = free_idx[0], k = free_idx[1];
+        const double det = ig(i, i) * ig(k, k) - ig(i, k) * ig(k, i);
+        alpha(i) = (ig(k, k) * rhs(i) - ig(i, k) * rhs(k)) / det;
+        alpha(k) = (-ig(k, i) * rhs(i) + ig(i, i) * rhs(k)) / det;
+      }
+    }
+    s.awx[mn] = alpha(0);
+    s.awy[mn] = alpha(1);
+    s.awz[mn] = alpha(2);
+  }
+}
+
+void RigidBodies::secondary_kinematics(NodeState& s, double dt1, double dt2) const {
+  const double dt12 = 0.5 * (dt1 + dt2);
+  const double inv = 1.0 / dt12;
+  for (const auto& b : bodies_) {
+    const auto mn = static_cast<std::size_t>(b.main);
+    const Vec3 xm = position(s, mn);
+    const Vec3 w = spin(s, mn) + dt12 * spin_rate(s, mn);          // omega^{n+1/2}
+    const Vec3 vm = velocity(s, mn) + dt12 * acceleration(s, mn);  // v_N^{n+1/2}
+    double c1, c2;
+    rotation_series(w.norm() * dt2, c1, c2);
+    for (const auto n : b.secondary) {
+      const auto k = static_cast<std::size_t>(n);
+      const Vec3 r = position(s, k) - xm;
+      const Vec3 wr = w.cross(r);
+      const Vec3 target = vm + c1 * wr + (c2 * dt2) * w.cross(wr);
+      s.ax[k] = (target(0) - s.vx[k]) * inv;
+      s.ay[k] = (target(1) - s.vy[k]) * inv;
+      s.az[k] = (target(2) - s.vz[k]) * inv;
+      s.awx[k] = (w(0) - s.wx[k]) * inv;
+      s.awy[k] = (w(1) - s.wy[k]) * inv;
+      s.awz[k] = (w(2) - s.wz[k]) * inv;
+    }
+  }
+}
+
+KineticCorrection RigidBodies::kinetic_correction(const NodeState& s, double dt1) const {
+  KineticCorrection c;
+  const double h = 0.5 * dt1;
+  for (const auto& b : bodies_) {
+    const auto mn = static_cast<std::size_t>(b.main);
+    const Eigen::Map<const RowMat3> r(b.axes.data());
+    const Vec3 w = spin(s, mn) + h * spin_rate(s, mn);
+    const Vec3 wp = r * w;
+    c.rotational += 0.5 * (b.principal[0] * wp(0) * wp(0) + b.principal[1] * wp(1) * wp(1) +
+                           b.principal[2] * wp(2) * wp(2)) -
+                    0.5 * s.inertia[mn] * w.squaredNorm();
+    for (const auto n : b.secondary) {
+      const auto k = static_cast<std::size_t>(n);
+      const Vec3 v = velocity(s, k) + h * acceleration(s, k);
+      const Vec3 ws = spin(s, k) + h * spin_rate(s, k);
+      c.translational -= 0.5 * s.mass[k] * v.squaredNorm();
+      c.rotational -= 0.5 * s.inertia[k] * ws.squaredNorm();
+      c.mass -= s.mass[k];
+      for (int d = 0; d < 3; ++d) c.momentum[static_cast<std::size_t>(d)] -= s.mass[k] * v(d);
+    }
+  }
+  return c;
+}
+
+double RigidBodies::kinetic_energy(std::size_t bi, const NodeState& s, double dt1) const {
+  const auto& b = bodies_.at(bi);
+  const auto mn = static_cast<std::size_t>(b.main);
+  const double h = 0.5 * dt1;
+  const Eigen::Map<const RowMat3> r(b.axes.data());
+  const Vec3 v = velocity(s, mn) + h * acceleration(s, mn);
+  const Vec3 wp = r * (spin(s, mn) + h * spin_rate(s, mn));
+  return 0.5 * s.mass[mn] * v.squaredNorm() +
+         0.5 * (b.principal[0] * wp(0) * wp(0) + b.principal[1] * wp(1) * wp(1) +
+                b.principal[2] * wp(2) * wp(2));
+}
+
+}  // namespace radx::solver

@@ -1,0 +1,170 @@
+#include "solver/rigid_wall_plane.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace radx::solver {
+
+RigidWalls::RigidWalls(const model::Model& m) {
+  for (const auto& w : m.rigid_walls) {
+    const std::string what = "/RWALL/PLANE/" + std::to_string(w.id);
+    if (w.iform != 0)
+      throw std::runtime_error(what + ": Iform = " + std::to_string(w.iform) +
+                               " (penalty formulation) is not supported by the radx engine; use Iform = 0 "
+                               "(kinematic)");
+    if (w.slide < 0 || w.slide > 2)
+      throw std::runtime_error(what + ": Slide = " + std::to_string(w.slide) + " is not 0, 1 or 2");
+    if (w.slide == 2 && w.ifq != 0)
+      throw std::runtime_error(what + ": friction filtering ifq = " + std::to_string(w.ifq) +
+                               " is not supported by the radx engine; use ifq = 0 (no filter)");
+    const double nn =
+        std::sqrt(w.normal[0] * w.normal[0] + w.normal[1] * w.normal[1] + w.normal[2] * w.normal[2]);
+    if (!(nn > 0)) throw std::runtime_error(what + ": the wall normal is undefined (M1 = M)");
+    Wall out;
+    out.node = w.node;
+    out.slide = w.slide;
+    out.friction = w.slide == 2 ? w.friction : 0.0;
+    out.added_mass = w.mass;
+    out.point = w.m;
+    out.normal = {w.normal[0] / nn, w.normal[1] / nn, w.normal[2] / nn};
+    out.v0 = w.v0;
+    out.secondary = w.secondary;
+    walls_.push_back(std::move(out));
+    RigidWallOutput o;
+    o.id = w.id;
+    out_.push_back(o);
+  }
+}
+
+void RigidWalls::initialize(NodeState& s) const {
+  for (std::size_t k = 0; k < walls_.size(); ++k) {
+    const auto& w = walls_[k];
+    if (w.node == model::kNone) continue;
+    const auto n = static_cast<std::size_t>(w.node);
+    s.mass[n] += w.added_mass;
+    if (!(s.mass[n] > 0))
+      throw std::runtime_error("/RWALL/PLANE/" + std::to_string(out_[k].id) +
+                               ": the moving wall's node has no mass (its own mass plus the wall Mass is " +
+                               std::to_string(s.mass[n]) + "); give a Mass > 0");
+    s.vx[n] = w.v0[0];
+    s.vy[n] = w.v0[1];
+    s.vz[n] = w.v0[2];
+  }
+}
+
+void RigidWalls::apply_wall_node_forces(NodeState& s) const {
+  for (const auto& w : walls_) {
+    if (w.node == model::kNone) continue;
+    const auto n = static_cast<std::size_t>(w.node);
+    const double m = s.mass[n];
+    const double denom = m + w.contact_mass_prev;
+    if (!(denom > 0)) continue;
+    s.ax[n] = (m * s.ax[n] + w.force_prev[0]) / denom;
+    s.ay[n] = (m * s.ay[n] + w.force_prev[1]) / denom;
+    s.az[n] = (m * s.az[n] + w.force_prev[2]) / denom;
+  }
+}
+
+double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
+  const double dt12 = 0.5 * (dt1 + dt2);
+  const double fact = dt12 != 0 ? 1.0 / dt12 : 0.0;
+  double work = 0;
+  for (std::size_t k = 0; k < walls_.size(); ++k) {
+    auto& w = walls_[k];
+    auto& o = out_[k];
+    const double nx = w.normal[0], ny = w.normal[1], nz = w.normal[2];
+    double vwx = 0, vwy = 0, vwz = 0;
+    double xwx = w.point[0], xwy = w.point[1], xwz = w.point[2];
+    if (w.node != model::kNone) {
+      const auto m = static_cast<std::size_t>(w.node);
+      vwx = s.vx[m] + s.ax[m] * dt12;
+      vwy = s.vy[m] + s.ay[m] * dt12;
+      vwz = s.vz[m] + s.az[m] * dt12;
+      xwx = s.x[m] + vwx * dt2;
+      xwy = s.y[m] + vwy * dt2;
+      xwz = s.z[m] + vwz * dt2;
+    }
+    const double mu2 = w.friction * w.friction;
+    double fnx = 0, fny = 0, fnz = 0, ftx = 0, fty = 0, ftz = 0;
+    double contact_mass = 0, w_normal = 0, w_tangential = 0;
+    int contacts = 0;
+    for (const auto n32 : w.secondary) {
+      const auto n = static_cast<std::size_t>(n32);
+      // Prediction.
+      const double vsx = s.vx[n] + s.ax[n] * dt12, vsy = s.vy[n] + s.ay[n] * dt12,
+                   vsz = s.vz[n] + s.az[n] * dt12;
+      const double gap =
+          (s.x[n] + vsx * dt2 - xwx) * nx + (s.y[n] + vsy * dt2 - xwy) * ny + (s.z[n] + vsz * dt2 - xwz) * nz;
+      if (gap > 0) continue;
+      if ((vsx - vwx) * nx + (vsy - vwy) * ny + (vsz - vwz) * nz > 0) continue;
+      ++contacts;
+      const double m = s.mass[n];
+      // Normal impulse and work.
+      const double rvx = s.vx[n] - vwx, rvy = s.vy[n] - vwy, rvz = s.vz[n] - vwz;
+      const double u = rvx * nx + rvy * ny + rvz * nz;
+      const double p = s.ax[n] * nx + s.ay[n] * ny + s.az[n] * nz;
+      const double fn = m * (u + p * dt12);
+      const double fx = fn * nx, fy = fn * ny, fz = fn * nz;
+      w_normal -= fact * u * fn;
+      fnx += fx;
+      fny += fy;
+      fnz += fz;
+      contact_mass += m;
+      if (w.slide == 0) {
+        s.ax[n] -= p * nx;
+        s.ay[n] -= p * ny;
+        s.az[n] -= p * nz;
+        s.vx[n] -= u * nx;
+        s.vy[n] -= u * ny;
+        s.vz[n] -= u * nz;
+        continue;
+      }
+      // Tangential impulse that would stop the node relative to the wall.
+      double tx = (rvx + s.ax[n] * dt12) * m - fx;
+      double ty = (rvy + s.ay[n] * dt12) * m - fy;
+      double tz = (rvz + s.az[n] * dt12) * m - fz;
+      const double ft2 = tx * tx + ty * ty + tz * tz;
+      const double fn2 = fx * fx + fy * fy + fz * fz;
+      if (w.slide == 1 || ft2 <= mu2 * fn2 || !(m > 0)) {
+        // Tied, or sticking.
+        s.ax[n] = s.ay[n] = s.az[n] = 0;
+        s.vx[n] = vwx;
+        s.vy[n] = vwy;
+        s.vz[n] = vwz;
+      } else {
+        // Slip: the tangential impulse is limited to mu |Fn|.
+        const double c = w.friction * std::sqrt(fn2 / ft2);
+        tx *= c;
+        ty *= c;
+        tz *= c;
+        const double inv = 1.0 / (dt12 * m);
+        s.ax[n] -= p * nx + tx * inv;
+        s.ay[n] -= p * ny + ty * inv;
+        s.az[n] -= p * nz + tz * inv;
+        s.vx[n] -= u * nx;
+        s.vy[n] -= u * ny;
+        s.vz[n] -= u * nz;
+        w_tangential -= (s.vx[n] - vwx) * tx + (s.vy[n] - vwy) * ty + (s.vz[n] - vwz) * tz;
+      }
+      ftx += tx;
+      fty += ty;
+      ftz += tz;
+    }
+    work += w_tangential + 0.5 * dt1 * w_normal;
+    o.contacts = contacts;
+    o.normal_force = {fnx * fact, fny * fact, fnz * fact};
+    o.tangential_force = {ftx * fact, fty * fact, ftz * fact};
+    o.normal_impulse[0] += fnx;
+    o.normal_impulse[1] += fny;
+    o.normal_impulse[2] += fnz;
+    o.tangential_impulse[0] += ftx;
+    o.tangential_impulse[1] += fty;
+    o.tangential_impulse[2] += ftz;
+    w.force_prev = {(fnx + ftx) * fact, (fny + fty) * fact, (fnz + ftz) * fact};
+    w.contact_mass_prev = contact_mass;
+  }
+  return work;
+}
+
+}  // namespace radx::solver

@@ -1,0 +1,76 @@
+// /RWALL/PLANE, kinematic formulation (Iform 0): elements.md 7.1, OpenRadioss
+// constraints/general/rwall/rgwall.F (explicit branch, no friction filter) and rgwal0.F (RGWALF, RGWALT).
+// Run after the accelerations are final and before the velocity update; v = v^{n-1/2}, a = a^n,
+// dt12 = (dt1 + dt2)/2, n the unit normal (M1 - M)/|M1 - M|; the wall acts on the positive side.
+//
+// Wall point and velocity: fixed wall x_w = M, v_w = 0; moving wall (node_ID > 0, node N):
+//     v_w = v_N + a_N dt12,   x_w = x_N + dt2 v_w        (predicted like the secondary nodes).
+// For each secondary node (mass m):
+//     v* = v + dt12 a,  x* = x + dt2 v*;   free if (x* - x_w).n > 0, or if (v* - v_w).n > 0 (separating).
+//     Otherwise   u = (v - v_w).n,  p = a.n,  normal impulse  Fn = m (u + p dt12) n,
+//     and the normal work  W += -1/2 dt1 m u (u + p dt12) / dt12   (~ -1/2 m u^2 on impact).
+//   Slide 0 (sliding):   a <- a - p n,  v <- v - u n  (normal velocity becomes the wall's: perfectly
+//                        plastic; positions are never pushed back).
+//   Slide 1 (tied):      v <- v_w, a <- 0;  tangential impulse Ft = m ((v - v_w) + a dt12) - Fn (output).
+//   Slide 2 (Coulomb mu, no filter): Ft = m ((v - v_w) + a dt12) - Fn;
+//                        |Ft| <= mu |Fn|: stick (v <- v_w, a <- 0);
+//                        else slip: Ft <- mu |Fn| Ft/|Ft|,  a <- a - p n - Ft/(m dt12),  v <- v - u n,
+//                        tangential work W += -(v - v_w).Ft  (v after the normal correction).
+// Wall force of the cycle (output, force of the nodes ON the wall): F = sum(Fn + Ft) / dt12; the
+// normal and tangential parts are kept separately, and their impulses are accumulated for time history.
+// Moving wall dynamics (RGWALF): the force of the previous cycle acts on the wall node with the masses
+// of the nodes that were in contact added to its inertia,
+//     a_N <- (m_N a_N + F_prev) / (m_N + sum m_contact,prev)          (apply_wall_node_forces).
+// This lagged coupling is Radioss's; it does not conserve momentum exactly when contact nodes separate
+// at once (error m^2 V / (m_N + m) for one node of mass m hit at speed V).
+// Not supported (construction throws std::runtime_error naming the wall): Iform 1 (penalty), friction
+// filtering (ifq != 0), a slide value other than 0, 1, 2.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "solver/model/model.hpp"
+#include "solver/node_state.hpp"
+
+namespace radx::solver {
+
+struct RigidWallOutput {
+  std::int64_t id = 0;
+  int contacts = 0;                                              // nodes treated in the last cycle
+  std::array<double, 3> normal_force{}, tangential_force{};      // last cycle: sum of impulses / dt12
+  std::array<double, 3> normal_impulse{}, tangential_impulse{};  // accumulated since the start
+};
+
+class RigidWalls {
+ public:
+  explicit RigidWalls(const model::Model& m);
+
+  // Once, before cycle 0 (after /INIVEL): a moving wall's node gets the wall Mass added to its mass and
+  // the velocity (VX0, VY0, VZ0). Throws when a moving wall's node has no mass.
+  void initialize(NodeState& s) const;
+  // Cycle step 5, right after a = f/m: moving walls receive the previous cycle's wall force.
+  void apply_wall_node_forces(NodeState& s) const;
+  // Cycle step 5, after the imposed velocities: the kinematic contact above. Returns the external work
+  // booked this cycle. Precondition: dt1 + dt2 > 0.
+  double apply(NodeState& s, double dt1, double dt2);
+
+  [[nodiscard]] const std::vector<RigidWallOutput>& outputs() const { return out_; }
+  [[nodiscard]] std::size_t size() const { return walls_.size(); }
+
+ private:
+  struct Wall {
+    std::int32_t node = model::kNone;  // moving wall node
+    int slide = 0;
+    double friction = 0, added_mass = 0;
+    std::array<double, 3> point{}, normal{}, v0{};
+    std::vector<std::int32_t> secondary;
+    std::array<double, 3> force_prev{};  // sum(Fn + Ft)/dt12 of the last cycle, on the wall
+    double contact_mass_prev = 0;
+  };
+  std::vector<Wall> walls_;
+  std::vector<RigidWallOutput> out_;
+};
+
+}  // namespace radx::solver
