@@ -74,7 +74,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return 1;
   }
 
-  solver::ExplicitEngine engine(model, controls, solver::EngineOptions{opt.threads});
+  solver::ExplicitEngine engine(model, controls,
+                                solver::EngineOptions{opt.threads, std::max(1, controls.print_every)});
   io::EngineListing listing(io::ListingSinks{&listing_file, &out, controls.print_stdout,
                                              io::stdout_is_terminal(), controls.print_header_every});
   io::EngineListingHeader h;
@@ -113,12 +114,11 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return l;
   };
   std::string stop_message;
-  const int every = std::max(1, controls.print_every);
   const auto result = engine.run([&](const solver::CycleReport& r) {
-    const bool last = r.time >= controls.t_stop;
-    if (r.cycle % every == 0 || last) listing.line(to_line(r));
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     listing.progress(r.cycle, r.time, controls.t_stop, wall);
+    if (!r.full) return true;
+    listing.line(to_line(r));
     const double err_pct = r.energy.error_percent;
     const bool err_hit = controls.stop_positive_error_only
                              ? err_pct > controls.stop_energy_error_pct
@@ -126,12 +126,10 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     if (err_hit) {
       stop_message = "/STOP: energy error " + std::to_string(err_pct) + " % beyond " +
                      std::to_string(controls.stop_energy_error_pct) + " %";
-      listing.line(to_line(r));
       return false;
     }
     if (r.mass0 > 0 && (r.mass - r.mass0) / r.mass0 > controls.stop_mass_error) {
       stop_message = "/STOP: mass error beyond " + std::to_string(controls.stop_mass_error);
-      listing.line(to_line(r));
       return false;
     }
     return true;

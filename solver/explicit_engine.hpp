@@ -46,6 +46,7 @@ struct StepControl {
 
 // The state the listing and outputs read after each cycle.
 struct CycleReport {
+  bool full = false;  // energies, masses and momentum are filled only on report cycles
   std::int64_t cycle = 0;
   double time = 0, dt = 0;
   StepControl control;
@@ -56,6 +57,9 @@ struct CycleReport {
 
 struct EngineOptions {
   int threads = 0;  // 0: OpenMP default (OMP_NUM_THREADS or all cores)
+  // Energies are summed every report_every cycles (and at the first and last): the listing's /PRINT
+  // frequency. /STOP criteria are checked on those cycles.
+  int report_every = 1;
 };
 
 enum class RunStatus : std::uint8_t { Normal, Error };
