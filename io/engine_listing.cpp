@@ -208,7 +208,7 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
   erow("contact, Lagrange", e.contact_lagrange);
   erow("external work", e.external_work);
   erow("initial total E0", e.initial_total);
-  erow("total E (kinetic + internal)", e.total());
+  erow("total E (all but external work)", e.total());
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.1f %%", e.error_percent());
   row(os, "error 100 (E / (E0 + W) - 1)", buf);

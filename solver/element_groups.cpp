@@ -9,7 +9,8 @@ void ShellGroup::allocate(int n, int points) {
   const auto np = static_cast<std::size_t>(points > 0 ? points : 1);
   conn.assign(4 * G, 0);
   element.assign(G, -1);
-  for (auto* v : {&t0, &thick, &area0, &e_int, &e_hg, &w_plastic, &rate, &dt, &k_nodal}) v->assign(G, 0.0);
+  for (auto* v : {&t0, &thick, &area0, &e_int, &e_hg, &w_plastic, &rate, &dt, &dt_fixed, &k_nodal})
+    v->assign(G, 0.0);
   off.assign(G, 1.0);
   // N = 0 (resultant elasticity) keeps 5 force and 3 moment resultants.
   sig.assign((points > 0 ? np * 5 : 8) * G, 0.0);
@@ -23,7 +24,7 @@ void BrickGroup::allocate(int n) {
   const auto G = static_cast<std::size_t>(kGroupSize);
   conn.assign(8 * G, 0);
   element.assign(G, -1);
-  for (auto* v : {&vol0, &vol, &rho, &eps_p, &q, &e_int, &e_hg, &w_plastic, &rate, &dt, &k_nodal})
+  for (auto* v : {&vol0, &vol, &rho, &eps_p, &q, &e_int, &e_hg, &w_plastic, &rate, &dt, &dt_fixed, &k_nodal})
     v->assign(G, 0.0);
   off.assign(G, 1.0);
   sig.assign(6 * G, 0.0);

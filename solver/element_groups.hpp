@@ -48,6 +48,7 @@ struct ShellGroup {
   std::vector<double> w_plastic;    // [G] accumulated plastic work
   std::vector<double> rate;         // [G] filtered equivalent strain rate (Johnson-Cook)
   std::vector<double> dt;           // [G] stable step of the cycle, before the /DT scale
+  std::vector<double> dt_fixed;     // [G] engine: constant step after a /DT/SHELL|SH_3N/CST switch (0: none)
   std::vector<double> k_nodal;      // [G] nodal stiffness contribution of each node (for nodal steps)
   std::vector<double> nodal_force;  // [4][6][G] force (fx fy fz) and moment (mx my mz) ADDED to each node,
                                     // global axes (internal forces enter with their minus sign)
@@ -74,6 +75,7 @@ struct BrickGroup {
   std::vector<double> w_plastic;    // [G]
   std::vector<double> rate;         // [G] strain rate measure (Johnson-Cook)
   std::vector<double> dt;           // [G]
+  std::vector<double> dt_fixed;     // [G] engine: constant step after a /DT/BRICK/CST switch (0: none)
   std::vector<double> k_nodal;      // [G] nodal stiffness contribution (1/4 rho V / dt_e^2)
   std::vector<double> nodal_force;  // [8][3][G] force ADDED to each node, global axes
   void allocate(int n);

@@ -267,37 +267,109 @@ void ExplicitEngine::assemble() {
   }
 }
 
-double ExplicitEngine::element_time_step(StepControl& control) const {
+double ExplicitEngine::element_time_step(StepControl& control) {
   double best = kInf;
-  auto family_scale = [&](const model::DtControl& fam) {
-    return fam.given ? fam.scale : controls_.global.scale;
-  };
-  const double s_shell = family_scale(controls_.shell);
-  const double s_shell3 = family_scale(controls_.shell3);
-  const double s_brick = family_scale(controls_.brick);
-  for (const auto& g : shells_) {
-    const double scale = g.triangle ? s_shell3 : s_shell;
-    for (int i = 0; i < g.count; ++i) {
-      const double dt = scale * g.dt[static_cast<std::size_t>(i)];
-      if (dt < best) {
-        best = dt;
-        const auto e = static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)]);
-        control.kind = g.triangle ? StepControl::Kind::Shell3 : StepControl::Kind::Shell;
-        control.user_id = g.triangle ? model_.shells3.id[e] : model_.shells.id[e];
+  // /DT/<family>/CST: an element whose scaled step reaches Tmin is switched to a constant step (the
+  // small-strain switch of Radioss); radx freezes the step at Tmin and keeps the element's large-strain
+  // kinematics (a documented difference). Without /DT/<family>/CST the step is the element's.
+  auto visit = [&](double scale, const model::DtControl& fam, double raw, double& frozen,
+                   StepControl::Kind kind, std::int64_t id) {
+    double dt = scale * raw;
+    if (fam.action == model::DtAction::Constant && fam.t_min > 0) {
+      if (frozen > 0)
+        dt = frozen;
+      else if (dt < fam.t_min && raw > 0) {
+        frozen = fam.t_min;
+        dt = frozen;
+        ++switched_elements_;
       }
     }
-  }
-  for (const auto& g : bricks_) {
+    if (dt < best) {
+      best = dt;
+      control.kind = kind;
+      control.user_id = id;
+    }
+  };
+  for (auto& g : shells_) {
+    const auto& fam = g.triangle ? controls_.shell3 : controls_.shell;
+    const double scale = fam.given ? fam.scale : controls_.global.scale;
     for (int i = 0; i < g.count; ++i) {
-      const double dt = s_brick * g.dt[static_cast<std::size_t>(i)];
-      if (dt < best) {
-        best = dt;
-        control.kind = StepControl::Kind::Brick;
-        control.user_id = model_.bricks.id[static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])];
-      }
+      const auto k = static_cast<std::size_t>(i);
+      const auto e = static_cast<std::size_t>(g.element[k]);
+      visit(scale, fam, g.dt[k], g.dt_fixed[k],
+            g.triangle ? StepControl::Kind::Shell3 : StepControl::Kind::Shell,
+            g.triangle ? model_.shells3.id[e] : model_.shells.id[e]);
+    }
+  }
+  const double scale = controls_.brick.given ? controls_.brick.scale : controls_.global.scale;
+  for (auto& g : bricks_) {
+    for (int i = 0; i < g.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      visit(scale, controls_.brick, g.dt[k], g.dt_fixed[k], StepControl::Kind::Brick,
+            model_.bricks.id[static_cast<std::size_t>(g.element[k])]);
     }
   }
   return best;
+}
+
+double ExplicitEngine::nodal_time_step(StepControl& control) {
+  // /DT/NODA/CST: dt_n = Tscale sqrt(2 m / K) with K the sum of the element stiffness estimates at the
+  // node (elements.md 4.5); below Tmin, mass is added so that dt_n = Tmin: m = K (Tmin / Tscale)^2 / 2.
+  auto& s = nodes_;
+  std::fill(s.stiffness.begin(), s.stiffness.end(), 0.0);
+  for (const auto& g : shells_) {
+    const int npe = g.triangle ? 3 : 4;
+    for (int i = 0; i < g.count; ++i)
+      for (int q = 0; q < npe; ++q)
+        s.stiffness[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
+            g.k_nodal[static_cast<std::size_t>(i)];
+  }
+  for (const auto& g : bricks_)
+    for (int i = 0; i < g.count; ++i)
+      for (int q = 0; q < 8; ++q)
+        s.stiffness[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
+            g.k_nodal[static_cast<std::size_t>(i)];
+  const auto& noda = controls_.nodal;
+  double best = kInf;
+  for (std::size_t n = 0; n < s.n; ++n) {
+    const double k = s.stiffness[n];
+    if (k <= 0 || s.mass[n] <= 0) continue;
+    double dt = noda.scale * std::sqrt(2.0 * s.mass[n] / k);
+    if (noda.t_min > 0 && dt < noda.t_min) {
+      const double m_needed = 0.5 * k * (noda.t_min / noda.scale) * (noda.t_min / noda.scale);
+      s.added_mass[n] += m_needed - s.mass[n];
+      s.mass[n] = m_needed;
+      dt = noda.t_min;
+    }
+    if (dt < best) {
+      best = dt;
+      control.kind = StepControl::Kind::Node;
+      control.user_id = model_.nodes.id[n];
+    }
+  }
+  return best;
+}
+
+std::string ExplicitEngine::bad_element(double time, std::int64_t cycle) const {
+  for (const auto& g : bricks_)
+    for (int i = 0; i < g.count; ++i)
+      if (g.dt[static_cast<std::size_t>(i)] <= 0)
+        return "brick " +
+               std::to_string(
+                   model_.bricks.id[static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])]) +
+               " has a zero or negative volume (" + std::to_string(g.vol[static_cast<std::size_t>(i)]) +
+               ") at cycle " + std::to_string(cycle) + ", time " + std::to_string(time) +
+               ": the mesh is inverted; the run stops";
+  for (const auto& g : shells_)
+    for (int i = 0; i < g.count; ++i)
+      if (!(g.dt[static_cast<std::size_t>(i)] > 0)) {
+        const auto e = static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)]);
+        return std::string(g.triangle ? "3-node shell " : "shell ") +
+               std::to_string(g.triangle ? model_.shells3.id[e] : model_.shells.id[e]) +
+               " has no valid time step (collapsed or non-finite) at cycle " + std::to_string(cycle) +
+               ", time " + std::to_string(time) + "; the run stops";
+      }
+  return "an element has no valid time step at cycle " + std::to_string(cycle);
 }
 
 CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
@@ -354,13 +426,24 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     // 9 (early): the step of this cycle comes from the element steps just computed.
     StepControl ctl;
     double dt_elem = element_time_step(ctl);
+    if (!(dt_elem > 0)) {
+      res.status = RunStatus::Error;
+      res.message = bad_element(time, cycle);
+      break;
+    }
+    if (controls_.nodal.action == model::DtAction::AddMass && controls_.nodal.given) {
+      StepControl nctl;
+      const double dt_nodal = nodal_time_step(nctl);
+      dt_elem = dt_nodal;  // /DT/NODA replaces the element step by the nodal one
+      ctl = nctl;
+    }
     if (first) {
       dt2 = dt_elem;
     } else {
       dt2 = std::min(dt_elem, 1.1 * dt1);
       if (dt2 != dt_elem) ctl.kind = control.kind, ctl.user_id = control.user_id;
     }
-    if (!std::isfinite(dt2) || dt2 <= 0) {
+    if (!std::isfinite(dt2)) {
       res.status = RunStatus::Error;
       res.message = "no finite time step: the model has no element with a stable step";
       break;
@@ -374,7 +457,10 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
       break;
     }
     // 5. accelerations.
-    for (std::size_t n = 0; n < s.n; ++n) {
+    const auto nn = static_cast<std::int64_t>(s.n);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t k = 0; k < nn; ++k) {
+      const auto n = static_cast<std::size_t>(k);
       const double m = s.mass[n];
       const double inv = m > 0 ? 1.0 / m : 0.0;
       s.ax[n] = s.fx[n] * inv;
@@ -434,7 +520,9 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     // 8. velocities and positions.
     const double dt12 = first ? 0.5 * dt2 : 0.5 * (dt1 + dt2);
     bool finite = true;
-    for (std::size_t n = 0; n < s.n; ++n) {
+#pragma omp parallel for schedule(static) reduction(&& : finite)
+    for (std::int64_t k = 0; k < nn; ++k) {
+      const auto n = static_cast<std::size_t>(k);
       s.vx[n] += dt12 * s.ax[n];
       s.vy[n] += dt12 * s.ay[n];
       s.vz[n] += dt12 * s.az[n];

@@ -97,7 +97,9 @@ class ExplicitEngine {
   void build_assembly();
   void compute_element_forces(const CycleInfo& cyc);
   void assemble();
-  double element_time_step(StepControl& control) const;
+  double element_time_step(StepControl& control);
+  double nodal_time_step(StepControl& control);
+  [[nodiscard]] std::string bad_element(double time, std::int64_t cycle) const;
   CycleReport report(std::int64_t cycle, double time, double dt, const StepControl& control) const;
 
   const model::Model& model_;
@@ -119,6 +121,7 @@ class ExplicitEngine {
   Impl* impl_ = nullptr;  // kinematic conditions and loads (owned)
   EnergyBalance energy_;
   double mass0_ = 0;
+  std::int64_t switched_elements_ = 0;  // elements whose step was frozen by /DT/<family>/CST
 };
 
 }  // namespace radx::solver
