@@ -1,0 +1,139 @@
+// Engine time-step controls and the run pipeline, with expected values from elements.md 4.4-4.5 and
+// deck-format.md section 3: nodal mass scaling (/DT/NODA/CST), the /DT minimum stop, inverted elements,
+// and `radx run` on the default deck (energy balance and mass in NAME_summary.json).
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "parser/deck.hpp"
+#include "parser/model_builder.hpp"
+#include "solver/explicit_engine.hpp"
+#include "test_util.hpp"
+
+using radx::test::Line;
+
+namespace {
+
+// One steel cube of side a (LAW1), at rest, nothing else.
+radx::model::Model cube(double a, double vz = 0.0) {
+  std::string s = radx::test::begin_block(2026, "Mg mm s") + "/NODE\n";
+  for (int k = 0; k < 8; ++k) {
+    const double x = (k == 1 || k == 2 || k == 5 || k == 6) ? a : 0.0;
+    const double y = (k == 2 || k == 3 || k == 6 || k == 7) ? a : 0.0;
+    const double z = k >= 4 ? a : 0.0;
+    s += Line().put(k + 1, 1, 10).put(x, 11, 30).put(y, 31, 50).put(z, 51, 70).str() + "\n";
+  }
+  Line b;
+  b.put(1, 1, 10);
+  for (int k = 0; k < 8; ++k) b.put(k + 1, 11 + 10 * k, 20 + 10 * k);
+  s += "/BRICK/1\n" + b.str() + "\n/PART/1\ncube\n" + Line().put(1, 1, 10).put(1, 11, 20).str() + "\n";
+  s += "/PROP/SOLID/1\nsolid\n\n\n/MAT/LAW1/1\nsteel\n" + Line().put(7.85e-9, 1, 20).str() + "\n" +
+       Line().put(210000.0, 1, 20).put(0.3, 21, 40).str() + "\n";
+  if (vz != 0.0)
+    s += "/GRNOD/PART/1\nall\n" + Line().put(1, 1, 10).str() + "\n/INIVEL/TRA/1\nv\n" +
+         Line().put(0.0, 1, 20).put(0.0, 21, 40).put(vz, 41, 60).put(1, 61, 70).str() + "\n";
+  s += "/END\n";
+  radx::test::TempDir dir;
+  const auto path = dir.write("c_0000.rad", s);
+  radx::Diagnostics diags;
+  const auto deck = radx::read_starter_deck(path, diags);
+  auto m = radx::build_model(deck, diags);
+  for (const auto& d : diags.items()) INFO(radx::Diagnostics::format(d));
+  REQUIRE_FALSE(diags.has_errors());
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("/DT/NODA/CST adds the mass that keeps the nodal step at Tmin", "[engine]") {
+  const double a = 10.0;
+  auto m = cube(a);
+  const double E = 210000, nu = 0.3, rho = 7.85e-9;
+  const double K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
+  const double c = std::sqrt((K + 4 * G / 3) / rho);
+  const double dt_e = a / (c * (0.05 + std::sqrt(1 + 0.05 * 0.05)));  // elements.md 4.4, at rest
+  radx::model::RunControls rc;
+  rc.t_stop = 1e-5;
+  rc.nodal.given = true;
+  rc.nodal.action = radx::model::DtAction::AddMass;
+  rc.nodal.scale = 0.9;
+  rc.nodal.t_min = 2 * 0.9 * dt_e;  // twice the natural nodal step: the mass must grow 4 times
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  const auto res = engine.run({});
+  REQUIRE(res.status == radx::solver::RunStatus::Normal);
+  const double m0 = rho * a * a * a;
+  // A cube alone reproduces its own step at the nodes (elements.md 4.5): sqrt(2 (m/8) / K_e) = dt_e.
+  // Holding the step at 2 x 0.9 dt_e needs (2)^2 = 4 times the mass: 3 m0 added. Round-off tolerance.
+  CHECK(res.last.added_mass == Approx(3 * m0).epsilon(1e-9));
+  CHECK(res.last.control.kind == radx::solver::StepControl::Kind::Node);
+  CHECK(res.dt <= rc.nodal.t_min * (1 + 1e-12));
+}
+
+TEST_CASE("the /DT minimum stops the run with a message; the step grows by at most 10 % a cycle",
+          "[engine]") {
+  auto m = cube(10.0);
+  radx::model::RunControls rc;
+  rc.t_stop = 1e-4;
+  rc.global.t_min = 1.0;  // far above any step of this cube
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  const auto res = engine.run({});
+  CHECK(res.status == radx::solver::RunStatus::Error);
+  CHECK(res.message.find("minimum") != std::string::npos);
+
+  radx::model::RunControls free_run;
+  free_run.t_stop = 2e-5;
+  radx::solver::ExplicitEngine e2(m, free_run, radx::solver::EngineOptions{1, 1});
+  double previous = 0;
+  bool growth_ok = true;
+  e2.run([&](const radx::solver::CycleReport& r) {
+    if (previous > 0 && r.time < free_run.t_stop)
+      growth_ok = growth_ok && r.dt <= 1.1 * previous * (1 + 1e-12);
+    previous = r.dt;
+    return true;
+  });
+  CHECK(growth_ok);
+}
+
+TEST_CASE("a free cube with an initial velocity keeps its momentum and energy", "[engine]") {
+  auto m = cube(10.0, -1000.0);
+  radx::model::RunControls rc;
+  rc.t_stop = 5e-5;
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  const double mass = 7.85e-9 * 1000.0;
+  bool ok = true;
+  double worst = 0;
+  engine.run([&](const radx::solver::CycleReport& r) {
+    if (!r.full) return true;
+    // No external force: momentum m v0 to round-off (1e-12 of m v0), energy unchanged (rigid translation).
+    worst = std::max(worst, std::abs(r.momentum[2] - mass * -1000.0) / (mass * 1000.0));
+    ok = ok && std::abs(r.energy.error_percent) < 1e-9;
+    return true;
+  });
+  CHECK(worst < 1e-12);
+  CHECK(ok);
+}
+
+TEST_CASE("radx run on the default deck closes its energy balance and writes NAME_summary.json", "[engine]") {
+  radx::test::TempDir dir;
+  const std::string cmd = std::string(RADX_DRIVER_EXE) + " run " + RADX_SOURCE_DIR +
+                          "/decks/block_on_plate/BLOCK_ON_PLATE_0000.rad --out " + dir.path().string() +
+                          " --threads 1 > " + dir.file("log.txt") + " 2>&1";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  // Read the JSON with Python's json module (an independent parser).
+  const std::string check =
+      "/usr/bin/python3 -c \"import json,sys; s=json.load(open(sys.argv[1])); e=s['energy'];"
+      " assert s['status']=='normal', s['status'];"
+      " assert abs(e['error_percent'])<1.0, e['error_percent'];"  // balance closes within 1 %
+      " assert s['cycles']>0 and s['us_per_element_cycle']>0;"
+      " assert abs(s['mass']-1.001e-4)<1e-12, s['mass'];"  // rho t A + rho V of the deck: 7.85e-5 + 2.16e-5
+      "\" " +
+      dir.file("BLOCK_ON_PLATE_summary.json");
+  CHECK(std::system(check.c_str()) == 0);
+  std::ifstream log(dir.file("log.txt"));
+  std::stringstream ss;
+  ss << log.rdbuf();
+  CHECK(ss.str().find("us per element per cycle") != std::string::npos);
+  CHECK(ss.str().find("ENERGY BALANCE") != std::string::npos);
+}
