@@ -55,6 +55,11 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
         << "; nothing was run\n";
     return 1;
   }
+  if (!controls.rbody_on.empty() || !controls.rbody_off.empty()) {
+    err << opt.engine_deck << ": error: RX509: /RBODY/ON and /RBODY/OFF are read but not supported by this "
+        << "version of the engine: remove them (every /RBODY of the model is active)\n";
+    return 1;
+  }
   const std::string root = run_output_root(opt.engine_deck);
   const std::string model_path =
       opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;

@@ -537,7 +537,12 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     kin.after_update(dt2);
     if (!finite) {
       res.status = RunStatus::Error;
-      res.message = "non-finite coordinates at cycle " + std::to_string(cycle) + ": the run is unstable";
+      std::int64_t bad = 0;
+      for (std::size_t n = 0; n < s.n && bad == 0; ++n)
+        if (!std::isfinite(s.x[n] + s.y[n] + s.z[n])) bad = model_.nodes.id[n];
+      res.message = "node " + std::to_string(bad) + " has non-finite coordinates at cycle " +
+                    std::to_string(cycle) + ", time " + std::to_string(time) +
+                    ": the run is unstable (check the time step and the mesh)";
       break;
     }
     // 11.
