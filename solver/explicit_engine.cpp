@@ -553,7 +553,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
   }
   res.cycles = cycle;
   res.time = time;
-  res.dt = dt2;
+  res.dt = dt2 > 0 ? dt2 : dt1;  // the last step taken (the final cycle only reaches Tstop)
   res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_wall0).count();
   res.element_seconds = element_seconds;
   return res;
