@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "parser/field_parse.hpp"
 #include "parser/model_builder.hpp"
 #include "solver/model/geometry.hpp"
 
@@ -18,10 +19,7 @@ using model::kNone;
 namespace {
 
 std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
+  return number_text(v);
 }
 
 using FaceKey = std::array<std::int32_t, 4>;

@@ -4,6 +4,7 @@
 // sections 4.1, 4.2 and 4.6 are physics and live in contact/type7_prepare.cpp.
 #include <sstream>
 
+#include "parser/field_parse.hpp"
 #include "parser/model_builder.hpp"
 
 namespace radx {
@@ -13,10 +14,7 @@ using model::kNone;
 
 namespace {
 std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
+  return number_text(v);
 }
 }  // namespace
 

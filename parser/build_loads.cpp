@@ -16,6 +16,7 @@
 #include <map>
 #include <sstream>
 
+#include "parser/field_parse.hpp"
 #include "parser/model_builder.hpp"
 #include "solver/model/geometry.hpp"
 
@@ -31,10 +32,7 @@ using FirstPos = std::unordered_map<std::int64_t, SourcePos>;
 using NodeList = std::vector<std::int32_t>;
 
 std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
+  return number_text(v);
 }
 
 std::string point(const model::Vec3& p) {

@@ -35,22 +35,8 @@ std::string upper(std::string_view s) {
   return r;
 }
 
-// "/INTER/TYPE7/ 12" -> {"INTER", "TYPE7", "12"}; blanks inside a field are dropped.
 std::vector<std::string> split_keyword(std::string_view line) {
-  std::vector<std::string> tokens;
-  std::string cur;
-  for (std::size_t i = 1; i < line.size(); ++i) {
-    const char c = line[i];
-    if (c == '/') {
-      tokens.push_back(cur);
-      cur.clear();
-    } else if (c != ' ' && c != '\t') {
-      cur += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    }
-  }
-  tokens.push_back(cur);
-  while (!tokens.empty() && tokens.back().empty()) tokens.pop_back();
-  return tokens;
+  return keyword_fields(line);
 }
 
 std::string join_path(const std::vector<std::string>& tokens, std::size_t n) {

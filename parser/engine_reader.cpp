@@ -17,19 +17,7 @@ using schema::EngineKeywordDecl;
 namespace {
 
 std::vector<std::string> engine_tokens(std::string_view line, bool& is_anim) {
-  std::vector<std::string> tokens;
-  std::string cur;
-  for (std::size_t i = 1; i < line.size(); ++i) {
-    const char c = line[i];
-    if (c == '/') {
-      tokens.push_back(cur);
-      cur.clear();
-    } else if (c != ' ' && c != '\t') {
-      cur += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    }
-  }
-  tokens.push_back(cur);
-  while (!tokens.empty() && tokens.back().empty()) tokens.pop_back();
+  auto tokens = keyword_fields(line);
   is_anim = !tokens.empty() && tokens[0] == "ANIM";
   return tokens;
 }

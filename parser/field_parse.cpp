@@ -1,8 +1,10 @@
 #include "parser/field_parse.hpp"
 
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <sstream>
 
 namespace radx {
 
@@ -95,6 +97,30 @@ NumberStatus parse_real(std::string_view text, double& out) {
   if (res.ec != std::errc() || res.ptr != buf.data() + n) return NumberStatus::Malformed;
   if (!std::isfinite(out)) return NumberStatus::Overflow;
   return NumberStatus::Ok;
+}
+
+std::vector<std::string> keyword_fields(std::string_view line) {
+  std::vector<std::string> tokens;
+  std::string cur;
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '/') {
+      tokens.push_back(cur);
+      cur.clear();
+    } else if (c != ' ' && c != '\t') {
+      cur += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+  }
+  tokens.push_back(cur);
+  while (!tokens.empty() && tokens.back().empty()) tokens.pop_back();
+  return tokens;
+}
+
+std::string number_text(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
 }
 
 }  // namespace radx

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace radx {
 
@@ -13,5 +15,12 @@ enum class NumberStatus : std::uint8_t { Ok, Blank, Malformed, Overflow };
 std::string_view trim(std::string_view s);
 NumberStatus parse_int(std::string_view text, std::int64_t& out);
 NumberStatus parse_real(std::string_view text, double& out);
+
+// "/INTER/TYPE7/ 12" -> {"INTER", "TYPE7", "12"}: the fields of a keyword line, upper-cased, blanks
+// inside a field dropped, trailing empty fields removed.
+std::vector<std::string> keyword_fields(std::string_view line);
+
+// A number for a message: 6 significant digits ("0.0025", "2.1e+11").
+std::string number_text(double v);
 
 }  // namespace radx

@@ -3,6 +3,7 @@
 // masses (elements.md section 5: shells m = rho t0 A0 split equally over the 4 slots, bricks
 // m = rho V0 split 1/8 per node, 3-node shells split by interior angle alpha_k / pi).
 #include "parser/model_builder.hpp"
+#include "parser/field_parse.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,10 +19,7 @@ using model::kNone;
 
 namespace {
 std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
+  return number_text(v);
 }
 }  // namespace
 
