@@ -202,6 +202,20 @@ def grav(v):
                   F("Fscale_y", "R", 81, 100)])]
 
 
+def rwall_plane(v):
+    """/RWALL/PLANE (deck-format.md): card 2 depends on Slide, card 3 on node_ID; Iform only from 2026."""
+    c1 = [F("node_ID", "I", 1, 10), F("Slide", "I", 11, 20), F("grnd_ID1", "I", 21, 30), F("grnd_ID2", "I", 31, 40)]
+    if v >= 2026:
+        c1.append(F("Iform", "I", 41, 50))
+    return [card(c1),
+            card(reals("d", "fric", "Diameter", "ffac") + [F("ifq", "I", 81, 90)],
+                 cond=lambda x: x.get("Slide", 0) == 2),
+            card(reals("d"), cond=lambda x: x.get("Slide", 0) != 2),
+            card(reals("XM", "YM", "ZM"), cond=lambda x: x.get("node_ID", 0) == 0),
+            card(reals("Mass", "VX0", "VY0", "VZ0"), cond=lambda x: x.get("node_ID", 0) > 0),
+            card(reals("XM1", "YM1", "ZM1"))]
+
+
 NODE_REC = [F("node_ID", "I", 1, 10), F("X", "R", 11, 30), F("Y", "R", 31, 50), F("Z", "R", 51, 70)]
 SHELL_REC = [F("shell_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)] + \
     [F("PHI", "R", 61, 80), F("Thick", "R", 81, 100)]
@@ -239,6 +253,7 @@ STARTER = {
     "/IMPVEL": ("id", True, impvel, None, None),
     "/INIVEL/TRA": ("id", True, inivel, None, None),
     "/GRAV": ("id", True, grav, None, None),
+    "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
     "/FUNCT": ("id", True, lambda v: [], "records", FUNCT_REC),
     "/TH/NODE": ("id", True, lambda v: [], "threcords", THNODE_REC),
     "/TH/PART": ("id", True, lambda v: [], "thids", ID_REC),
@@ -737,6 +752,9 @@ def semantic(ck, m):
     for o in m.of("/GRAV"):
         need(o, "funct_IDT", functs, "function")
         need(o, "grnod_ID", grnods, "node group")
+    for o in m.of("/RWALL/PLANE"):
+        need(o, "grnd_ID1", grnods, "node group")
+        need(o, "grnd_ID2", grnods, "node group")
 
     # interfaces
     for iid, o in inters.items():

@@ -1,0 +1,540 @@
+// Verification decks (decks/verification/, written by scripts/make_verification_decks.py) run through the
+// whole library: read_starter_deck + build_model + contact::prepare_type7_interfaces + read_run_controls,
+// then solver::ExplicitEngine with a callback that records what each check needs. Every expected value is
+// computed HERE from the deck's own parameters read back from the Model (E, rho, lengths from the node
+// coordinates, v0 from the initial velocity), with the closed forms of shared/spec/verification.md.
+//
+// Cases: A.3 elastic bar on a rigid wall, B.10 cantilever strip of shells, B.9 Taylor bar, B.14 uniaxial
+// Johnson-Cook at one element; and on every deck the global checks of section C (energy balance, momentum
+// where no external force acts) plus thread-count independence.
+//
+// Runs use one thread (small models: a parallel region per cycle costs more than it saves, and a loaded
+// machine makes OpenMP barriers slow), except the Taylor bar, which also runs with 2 threads to check that
+// the result does not depend on the thread count.
+//
+// Set RADX_VERIFICATION_VERBOSE=1 to print the measured values of every case.
+#include <algorithm>
+#include <array>
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "contact/type7_prepare.hpp"
+#include "parser/build_run_controls.hpp"
+#include "parser/deck.hpp"
+#include "parser/model_builder.hpp"
+#include "solver/explicit_engine.hpp"
+
+namespace {
+
+namespace sv = radx::solver;
+namespace md = radx::model;
+constexpr std::size_t G = sv::kGroupSize;
+
+bool verbose() {
+  static const bool v = std::getenv("RADX_VERIFICATION_VERBOSE") != nullptr;
+  return v;
+}
+
+struct Case {
+  md::Model model;
+  md::RunControls controls;
+};
+
+std::string diag_text(const radx::Diagnostics& d) {
+  std::string s;
+  for (const auto& x : d.items()) s += radx::Diagnostics::format(x) + "\n";
+  return s;
+}
+
+// The deck pair decks/verification/<folder>/<ROOT>_0000.rad and _0001.rad, read as the starter and the
+// engine read them.
+Case load_case(const std::string& folder, const std::string& root) {
+  const std::string dir = std::string(RADX_SOURCE_DIR) + "/decks/verification/" + folder + "/";
+  radx::Diagnostics d;
+  const radx::Deck deck = radx::read_starter_deck(dir + root + "_0000.rad", d);
+  Case c;
+  c.model = radx::build_model(deck, d);
+  INFO(diag_text(d));
+  REQUIRE(!d.has_errors());
+  radx::contact::prepare_type7_interfaces(c.model);
+  c.controls = radx::read_run_controls(dir + root + "_0001.rad", d);
+  INFO(diag_text(d));
+  REQUIRE(!d.has_errors());
+  REQUIRE(d.warning_count() == 0);
+  return c;
+}
+
+// Energy balance (verification.md C): |error %| of elements.md 8 at every cycle; keeps the worst.
+struct EnergyWatch {
+  double worst = 0;
+  std::int64_t worst_cycle = -1;
+  std::int64_t cycles = 0, partial = 0;  // reports seen, and those without energies (must be none)
+  void operator()(const sv::CycleReport& r) {
+    ++cycles;
+    if (!r.full) {
+      ++partial;
+      return;
+    }
+    if (std::abs(r.energy.error_percent) > std::abs(worst) || worst_cycle < 0) {
+      worst = r.energy.error_percent;
+      worst_cycle = r.cycle;
+    }
+  }
+};
+
+// The energy balance must hold within 1 % of the initial total energy at every cycle: the error of
+// elements.md 8, E / (E0 + W_ext) - 1, counts kinetic, internal (with bulk-viscosity heat), hourglass and
+// contact energies, so 1 % is the whole budget for the time integration and the work bookkeeping of the
+// walls and imposed velocities.
+void check_energy(const EnergyWatch& e, const char* what) {
+  INFO(what << ": worst energy error " << e.worst << " % at cycle " << e.worst_cycle);
+  REQUIRE(e.cycles > 0);
+  REQUIRE(e.partial == 0);  // EngineOptions::report_every = 1: energies at every cycle
+  if (verbose())
+    std::printf("%s: worst energy error %.4f %% at cycle %lld\n", what, e.worst, (long long)e.worst_cycle);
+  CHECK(std::abs(e.worst) < 1.0);
+}
+
+const md::Material& only_material(const md::Model& m) {
+  REQUIRE(m.parts.size() == 1);
+  return m.materials[static_cast<std::size_t>(m.parts[0].material)];
+}
+
+double min_of(const std::vector<double>& v) {
+  return *std::min_element(v.begin(), v.end());
+}
+double max_of(const std::vector<double>& v) {
+  return *std::max_element(v.begin(), v.end());
+}
+
+// Smallest spacing between the distinct values of v (the element length along that axis of a regular mesh).
+double smallest_spacing(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  double h = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 1; k < v.size(); ++k) h = std::min(h, v[k] - v[k - 1]);
+  return h;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------------------
+// A.3: elastic bar on a rigid wall (kg, m, s). c = sqrt(E/rho), contact stress rho c v0, contact time 2L/c,
+// rebound at v0; momentum constant while no force acts (free flight before the impact and after the rebound).
+TEST_CASE("verification: elastic bar on a rigid wall", "[verification]") {
+  const auto t0 = std::chrono::steady_clock::now();
+  Case c = load_case("bar_rwall", "BAR_RWALL");
+  const md::Model& m = c.model;
+  const md::Material& mat = only_material(m);
+  REQUIRE(mat.law == md::MaterialLaw::Elastic);
+  REQUIRE(mat.poisson == 0.0);  // the 1-D closed form needs nu = 0 (then K + 4G/3 = E for the brick)
+  REQUIRE(m.rigid_walls.size() == 1);
+  const md::RigidWall& wall = m.rigid_walls[0];
+  REQUIRE(wall.node == md::kNone);
+  const double nn = std::hypot(wall.normal[0], wall.normal[1], wall.normal[2]);
+  REQUIRE(wall.normal[2] / nn == 1.0);  // a fixed plane z = const facing +Z
+  REQUIRE(m.initial_velocities.size() == 1);
+  const auto& iv = m.initial_velocities[0];
+  REQUIRE(m.node_groups[static_cast<std::size_t>(iv.group)].nodes.size() == m.nodes.size());
+  REQUIRE(iv.v[0] == 0.0);
+  REQUIRE(iv.v[1] == 0.0);
+
+  // Closed form from the deck.
+  const double E = mat.young, rho = mat.rho, v0 = -iv.v[2];
+  REQUIRE(v0 > 0);
+  const double zmin = min_of(m.nodes.z), zmax = max_of(m.nodes.z);
+  const double L = zmax - zmin;
+  const double h = smallest_spacing(m.nodes.z);  // element length along the bar
+  const double cw = std::sqrt(E / rho);
+  const double sigma_c = rho * cw * v0;
+  const double t_contact = 2.0 * L / cw;
+  const double t_impact = (zmin - wall.m[2]) / v0;
+  const double t_transit = h / cw;  // one element transit time
+
+  std::vector<std::size_t> lower;  // lower end face nodes
+  for (std::size_t n = 0; n < m.nodes.size(); ++n)
+    if (m.nodes.z[n] == zmin) lower.push_back(n);
+  REQUIRE(!lower.empty());
+
+  sv::ExplicitEngine eng(m, c.controls, sv::EngineOptions{1});
+  // Bricks of the lower layer (a node on the lower face), as (group, slot).
+  std::vector<std::pair<std::size_t, std::size_t>> lower_bricks;
+  for (std::size_t gi = 0; gi < eng.brick_groups().size(); ++gi) {
+    const auto& g = eng.brick_groups()[gi];
+    for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i) {
+      const auto e = static_cast<std::size_t>(g.element[i]);
+      bool low = false;
+      for (std::size_t k = 0; k < 8; ++k)
+        low = low || m.nodes.z[static_cast<std::size_t>(m.bricks.conn[8 * e + k])] == zmin;
+      if (low) lower_bricks.emplace_back(gi, i);
+    }
+  }
+  REQUIRE(!lower_bricks.empty());
+
+  struct Rec {
+    double t, dt, v_lower, szz, lower_z_min;
+    std::array<double, 3> p;
+  };
+  std::vector<Rec> rec;
+  EnergyWatch energy;
+  double mass = 0;
+  double dt1 = 0;
+  const auto res = eng.run([&](const sv::CycleReport& r) {
+    const auto& s = eng.nodes();
+    // Velocity of the lower face at t_n: v^{n-1/2} + dt1/2 a^n after the wall has acted (elements.md 8).
+    double vl = 0, zl = std::numeric_limits<double>::infinity();
+    for (const auto n : lower) {
+      vl += s.vz[n] + 0.5 * dt1 * s.az[n];
+      zl = std::min(zl, s.z[n]);
+    }
+    double szz = 0;
+    for (const auto& [gi, i] : lower_bricks) szz += eng.brick_groups()[gi].sig[2 * G + i];
+    rec.push_back(Rec{r.time, r.dt, vl / static_cast<double>(lower.size()),
+                      szz / static_cast<double>(lower_bricks.size()), zl, r.momentum});
+    energy(r);
+    mass = r.mass;
+    dt1 = r.dt;
+    return true;
+  });
+  REQUIRE(res.status == sv::RunStatus::Normal);
+
+  // Contact: from the first cycle where the wall has stopped the lower face (its velocity is no longer
+  // -v0) to the first later cycle where the face moves away from the wall.
+  std::size_t k_start = rec.size(), k_end = rec.size();
+  for (std::size_t k = 0; k < rec.size(); ++k)
+    if (rec[k].v_lower > -0.5 * v0) {
+      k_start = k;
+      break;
+    }
+  REQUIRE(k_start < rec.size());
+  for (std::size_t k = k_start; k < rec.size(); ++k)
+    if (rec[k].v_lower > 0) {
+      k_end = k;
+      break;
+    }
+  REQUIRE(k_end < rec.size());
+  const double duration = rec[k_end].t - rec[k_start].t;
+
+  // Contact stress: the lower bricks' sigma_zz averaged (time-weighted) over the middle 80 % of the contact,
+  // so that the ringing of the discrete compression front averages out.
+  double s_int = 0, t_int = 0;
+  for (std::size_t k = k_start; k < k_end; ++k)
+    if (rec[k].t >= rec[k_start].t + 0.1 * t_contact && rec[k].t <= rec[k_start].t + 0.9 * t_contact) {
+      s_int += rec[k].szz * rec[k].dt;
+      t_int += rec[k].dt;
+    }
+  REQUIRE(t_int > 0.5 * t_contact);
+  const double sigma = -s_int / t_int;
+
+  // Rebound speed: total momentum / total mass at the end of the run (free flight by then, see below).
+  const double v_rebound = rec.back().p[2] / mass;
+
+  if (verbose())
+    std::printf(
+        "bar: c %.6g m/s; impact at %.6e s (closed form %.6e); contact %.6e s (2L/c %.6e, h/c %.3e); "
+        "stress %.6e (rho c v0 %.6e); rebound %.6f m/s (v0 %.6g); %zu cycles, %.2f s\n",
+        cw, rec[k_start].t, t_impact, duration, t_contact, t_transit, sigma, sigma_c, v_rebound, v0,
+        rec.size(), seconds_since(t0));
+
+  // The wall stops the face in the cycle whose predicted position would cross the plane, so the contact
+  // starts at most one time step (less than one element transit time) before gap / v0.
+  CHECK(std::abs(rec[k_start].t - t_impact) <= t_transit);
+  // Contact duration 2L/c within two element transit times h/c: the discrete front is spread over about
+  // one element at each end of the contact (arrival of the compression, departure of the unloading wave).
+  CHECK(std::abs(duration - t_contact) <= 2.0 * t_transit);
+  // Contact stress rho c v0 within 5 %: the plateau behind the front.
+  CHECK(std::abs(sigma - sigma_c) <= 0.05 * sigma_c);
+  // Rebound speed within 2 % of v0. Budget (measured, see the README): the kinematic wall stops the lower
+  // face perfectly plastically (its kinetic energy, 1/(2 N) of the total, is lost: 0.125 % of the speed
+  // for N = 200 layers); the default bulk viscosity (qa 1.1, qb 0.05) dissipates about 1.1 % of the speed
+  // at the fronts (the bar rebounds at 0.984 v0, and at 0.995 v0 with qa = qb = 1e-6); the rest stays as
+  // vibration of the discrete bar.
+  CHECK(std::abs(v_rebound - v0) <= 0.02 * v0);
+
+  // Momentum while no external force acts, constant to round-off (1e-12 of m v0):
+  // (1) free flight before the impact: P = -m v0 exactly (no stress, no force);
+  const double p0 = mass * v0;
+  std::size_t before = 0;
+  for (std::size_t k = 0; k < k_start; ++k) {
+    ++before;
+    CHECK(std::abs(rec[k].p[0]) <= 1e-12 * p0);
+    CHECK(std::abs(rec[k].p[1]) <= 1e-12 * p0);
+    CHECK(std::abs(rec[k].p[2] + p0) <= 1e-12 * p0);
+  }
+  CHECK(before >= 5);
+  // (2) free flight after the rebound, with the bar vibrating (internal forces act, but sum to zero):
+  //     from four transit times after the face left the wall, the face stays clear of the plane.
+  std::size_t after = 0;
+  std::size_t k_free = rec.size();
+  for (std::size_t k = k_end; k < rec.size(); ++k) {
+    if (rec[k].t < rec[k_end].t + 4.0 * t_transit) continue;
+    if (k_free == rec.size()) k_free = k;
+    REQUIRE(rec[k].lower_z_min > wall.m[2]);
+    ++after;
+    for (int d = 0; d < 3; ++d)
+      CHECK(std::abs(rec[k].p[static_cast<std::size_t>(d)] - rec[k_free].p[static_cast<std::size_t>(d)]) <=
+            1e-12 * p0);
+  }
+  CHECK(after >= 50);
+  check_energy(energy, "bar_rwall");
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// B.10: cantilever strip of shells (kg, m, s), f1 = (beta1 L)^2 / (2 pi L^2) sqrt(E I / (rho A)), I/A =
+// t^2/12.
+TEST_CASE("verification: cantilever strip first frequency", "[verification]") {
+  const auto t0 = std::chrono::steady_clock::now();
+  Case c = load_case("cantilever_strip", "CANTILEVER_STRIP");
+  const md::Model& m = c.model;
+  const md::Material& mat = only_material(m);
+  REQUIRE(mat.poisson == 0.0);  // beam formula = plate strip formula only for nu = 0
+  const auto& prop = m.properties[static_cast<std::size_t>(m.parts[0].property)].shell;
+  for (double t : m.shells.thickness) REQUIRE(t == 0.0);  // the property thickness applies
+  const double thick = prop.thickness;
+  const double xmin = min_of(m.nodes.x), xmax = max_of(m.nodes.x);
+  const double L = xmax - xmin;
+  constexpr double beta1 = 1.8751040687119611;  // first root of cos(b) cosh(b) = -1
+  const double f1 = beta1 * beta1 / (2.0 * std::numbers::pi * L * L) *
+                    std::sqrt(mat.young * thick * thick / (12.0 * mat.rho));
+
+  std::vector<std::size_t> tip;
+  for (std::size_t n = 0; n < m.nodes.size(); ++n)
+    if (m.nodes.x[n] == xmax) tip.push_back(n);
+  REQUIRE(!tip.empty());
+
+  sv::ExplicitEngine eng(m, c.controls, sv::EngineOptions{1});
+  std::vector<double> t, w;
+  EnergyWatch energy;
+  const auto res = eng.run([&](const sv::CycleReport& r) {
+    const auto& s = eng.nodes();
+    double z = 0;
+    for (const auto n : tip) z += s.z[n] - s.z0[n];
+    t.push_back(r.time);
+    w.push_back(z / static_cast<double>(tip.size()));
+    energy(r);
+    return true;
+  });
+  REQUIRE(res.status == sv::RunStatus::Normal);
+
+  // Zero crossings of the tip displacement (linear interpolation between cycles); w(0) = 0 is not one.
+  std::vector<double> cross;
+  for (std::size_t k = 1; k < w.size(); ++k)
+    if (w[k - 1] * w[k] < 0) cross.push_back(t[k - 1] + (t[k] - t[k - 1]) * w[k - 1] / (w[k - 1] - w[k]));
+  REQUIRE(cross.size() >= 6);  // about three periods
+  const double period = 2.0 * (cross.back() - cross.front()) / static_cast<double>(cross.size() - 1);
+  const double f = 1.0 / period;
+  double amplitude = 0;
+  for (double v : w) amplitude = std::max(amplitude, std::abs(v));
+  if (verbose())
+    std::printf(
+        "cantilever: f1 measured %.6f Hz over %zu zero crossings, beam formula %.6f Hz (%+.3f %%); "
+        "tip amplitude %.4e m; %zu cycles, %.2f s\n",
+        f, cross.size(), f1, 100.0 * (f / f1 - 1.0), amplitude, t.size(), seconds_since(t0));
+  // First frequency within 2 % of the Euler-Bernoulli value: the one-point shells (Q4 bending with
+  // a constant curvature per element) and the lumped rotary inertia (elements.md 5) shift it by a fraction
+  // of a percent on this mesh; 2 % of f1 is 0.17 Hz, far below the distance to the second mode (52 Hz).
+  CHECK(std::abs(f - f1) <= 0.02 * f1);
+  check_energy(energy, "cantilever_strip");
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// B.9: Taylor bar (Mg, mm, s). Final length 21.42 to 21.48 mm for L0 = 32.4 mm (and foot radius 7.11 to 7.23
+// mm). The same deck with 1 and 2 threads gives bit-identical node coordinates.
+TEST_CASE("verification: Taylor bar final length, thread independence", "[verification]") {
+  const auto t0 = std::chrono::steady_clock::now();
+  Case c = load_case("taylor_bar", "TAYLOR_BAR");
+  const md::Model& m = c.model;
+  const md::Material& mat = only_material(m);
+  // The reference answer belongs to these parameters (verification.md B.9), so the deck must carry them
+  // (compared in SI; relative 1e-12: only the decimal reading and the unit factors round).
+  const double f_len = m.units.length, f_mass = m.units.mass, f_time = m.units.time;
+  const double f_stress = f_mass / (f_len * f_time * f_time);
+  const auto same = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); };
+  REQUIRE(mat.law == md::MaterialLaw::JohnsonCook);
+  CHECK(same(mat.rho * f_mass / (f_len * f_len * f_len), 8930.0));
+  CHECK(same(mat.young * f_stress, 117e9));
+  CHECK(mat.poisson == 0.35);
+  CHECK(same(mat.a * f_stress, 400e6));
+  CHECK(same(mat.b * f_stress, 100e6));
+  CHECK(mat.n == 1.0);
+  CHECK(mat.c == 0.0);
+  const double zmin0 = min_of(m.nodes.z), zmax0 = max_of(m.nodes.z);
+  const double L0 = zmax0 - zmin0;
+  double r0 = 0;
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) r0 = std::max(r0, std::hypot(m.nodes.x[n], m.nodes.y[n]));
+  CHECK(same(L0 * f_len, 32.4e-3));
+  CHECK(same(r0 * f_len, 3.2e-3));
+  REQUIRE(m.initial_velocities.size() == 1);
+  CHECK(same(-m.initial_velocities[0].v[2] * f_len / f_time, 227.0));
+  CHECK(same(c.controls.t_stop * f_time, 80e-6));
+
+  auto run = [&](int threads, EnergyWatch& energy, std::vector<double>& xyz, double& seconds) {
+    const auto ts = std::chrono::steady_clock::now();
+    sv::ExplicitEngine eng(m, c.controls, sv::EngineOptions{threads});
+    const auto res = eng.run([&](const sv::CycleReport& r) {
+      energy(r);
+      return true;
+    });
+    INFO(res.message);
+    REQUIRE(res.status == sv::RunStatus::Normal);
+    const auto& s = eng.nodes();
+    xyz.clear();
+    xyz.insert(xyz.end(), s.x.begin(), s.x.end());
+    xyz.insert(xyz.end(), s.y.begin(), s.y.end());
+    xyz.insert(xyz.end(), s.z.begin(), s.z.end());
+    seconds = seconds_since(ts);
+    return res.cycles;
+  };
+  EnergyWatch energy2, energy1;
+  std::vector<double> xyz2, xyz1;
+  double s2 = 0, s1 = 0;
+  const auto cycles = run(2, energy2, xyz2, s2);
+
+  const std::size_t nn = m.nodes.size();
+  double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin, foot = 0;
+  for (std::size_t n = 0; n < nn; ++n) {
+    zmin = std::min(zmin, xyz2[2 * nn + n]);
+    zmax = std::max(zmax, xyz2[2 * nn + n]);
+    foot = std::max(foot, std::hypot(xyz2[n], xyz2[nn + n]));  // the widest section is the foot
+  }
+  const double length = (zmax - zmin) * f_len, radius = foot * f_len;
+  // Distance to the accepted window, relative to the window's centre.
+  const auto outside = [](double v, double lo, double hi) {
+    return std::max({0.0, lo - v, v - hi}) / (0.5 * (lo + hi));
+  };
+
+  // Final length within 3 % of the accepted 21.42-21.48 mm window. Why 3 %: the window comes from converged
+  // solutions, while this mesh has 8 one-point bricks across the radius with viscous hourglass control and
+  // bulk viscosity, and the foot (plastic strains above 2 near the axis) is resolved by a few strongly
+  // flattened bricks; the discretisation error is of the order of one element length along the axis,
+  // 0.6 mm, i.e. 3 % of 21.45 mm (measured when this test was written: 21.56, 21.53, 21.51 mm with layers
+  // of 0.9, 0.6, 0.45 mm, so the mesh effect is real but well inside). The foot radius is held to the same
+  // 3 % of its 7.11-7.23 mm window.
+  CHECK(outside(length, 21.42e-3, 21.48e-3) <= 0.03);
+  CHECK(outside(radius, 7.11e-3, 7.23e-3) <= 0.03);
+  check_energy(energy2, "taylor_bar");
+
+  // Threads: the assembly sums element forces node by node in a fixed order, so 1 and 2 threads must give
+  // the same bits.
+  run(1, energy1, xyz1, s1);
+  REQUIRE(xyz1.size() == xyz2.size());
+  std::size_t differ = 0;
+  for (std::size_t k = 0; k < xyz1.size(); ++k) differ += xyz1[k] != xyz2[k] ? 1 : 0;
+  CHECK(differ == 0);
+  if (verbose())
+    std::printf(
+        "taylor: final length %.5f mm (window 21.42-21.48, L0 %.4g mm), foot radius %.4f mm "
+        "(window 7.11-7.23); %lld cycles; 2 threads %.2f s, 1 thread %.2f s; %zu coordinates differ; "
+        "total %.2f s\n",
+        length * 1e3, L0 * f_len * 1e3, radius * 1e3, (long long)cycles, s2, s1, differ, seconds_since(t0));
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// B.14: uniaxial Johnson-Cook at one brick (Mg, mm, s): the axial stress follows sigma_y = a + b eps_p^n and
+// the plastic work is the area under that curve.
+TEST_CASE("verification: Johnson-Cook single brick flow curve", "[verification]") {
+  const auto t0 = std::chrono::steady_clock::now();
+  Case c = load_case("jc_single_brick", "JC_SINGLE_BRICK");
+  const md::Model& m = c.model;
+  const md::Material& mat = only_material(m);
+  REQUIRE(mat.law == md::MaterialLaw::JohnsonCook);
+  REQUIRE(mat.c == 0.0);  // no rate effect: the flow stress depends on eps_p only
+  REQUIRE(m.bricks.size() == 1);
+  const double a = mat.a, b = mat.b, n = mat.n;
+  const auto flow = [&](double e) { return a + b * std::pow(e, n); };
+
+  sv::ExplicitEngine eng(m, c.controls, sv::EngineOptions{1});
+  struct Rec {
+    double t, eps_p, w_plastic, vol;
+    std::array<double, 6> sig;
+  };
+  std::vector<Rec> rec;
+  EnergyWatch energy;
+  const auto res = eng.run([&](const sv::CycleReport& r) {
+    const auto& g = eng.brick_groups().at(0);
+    Rec x{r.time, g.eps_p[0], g.w_plastic[0], g.vol[0], {}};
+    for (std::size_t k = 0; k < 6; ++k) x.sig[k] = g.sig[k * G];
+    rec.push_back(x);
+    energy(r);
+    return true;
+  });
+  REQUIRE(res.status == sv::RunStatus::Normal);
+
+  // Along the run, on every cycle after the first yield:
+  //  * uniaxial stress s_u = szz - (sxx + syy) / 2: for this axisymmetric state (sxx = syy by symmetry, no
+  //    shear) it is the von Mises stress, the quantity the return mapping puts on the flow curve;
+  //  * axial stress szz = s_u + lateral stress; the lateral faces are free, so the lateral stress is only
+  //    the inertia of the lateral contraction, of order rho c (0.5 - nu) eps_dot h ~ 0.1 MPa when the
+  //    contraction speeds up at yield (README): it must stay below 1e-3 of the flow stress.
+  // Johnson-Cook hardening is explicit (elements.md 6.2-6.3: the slope H is taken at the plastic strain of
+  // the start of the step, H = 0 at eps_p = 0 for n < 1), so on a cycle where eps_p grows from e0 to e1 the
+  // stress lies on the curve up to that cycle's hardening increment |sigma_y(e1) - sigma_y(e0)| (1.7 MPa on
+  // the first plastic cycle, below 1e-5 of the flow stress once eps_p > 1e-4), plus round-off (1e-12).
+  // On the few cycles right after the first yield where eps_p does not grow, the point reloads
+  // elastically inside the yield surface (s_u <= sigma_y), which is only allowed before eps_p reaches 1e-5.
+  double worst_u = 0, worst_axial = 0, worst_lateral = 0, worst_late = 0;
+  std::size_t plastic = 0, reload = 0;
+  for (std::size_t k = 1; k < rec.size(); ++k) {
+    const auto& x = rec[k];
+    if (x.eps_p <= 0) continue;
+    const double e0 = rec[k - 1].eps_p, e1 = x.eps_p;
+    const double sy = flow(e1);
+    const double lateral = 0.5 * (x.sig[0] + x.sig[1]);
+    const double s_u = x.sig[2] - lateral;
+    INFO("cycle " << k << " eps_p " << e0 << " -> " << e1 << ": uniaxial " << s_u << ", axial " << x.sig[2]
+                  << ", flow " << sy);
+    REQUIRE(std::abs(x.sig[0] - x.sig[1]) <= 1e-12 * sy);  // symmetry x <-> y
+    CHECK(std::abs(lateral) <= 1e-3 * sy);
+    worst_lateral = std::max(worst_lateral, std::abs(lateral) / sy);
+    if (e1 > e0) {
+      ++plastic;
+      const double lag = std::abs(sy - flow(e0));
+      CHECK(std::abs(s_u - sy) <= lag + 1e-12 * sy);
+      CHECK(std::abs(x.sig[2] - sy) <= lag + 1e-3 * sy);
+      worst_u = std::max(worst_u, std::abs(s_u - sy) / sy);
+      worst_axial = std::max(worst_axial, std::abs(x.sig[2] - sy) / sy);
+      if (e1 > 1e-3) worst_late = std::max(worst_late, std::abs(s_u - sy) / sy);
+    } else {
+      ++reload;
+      CHECK(s_u <= sy * (1 + 1e-12));
+      CHECK(e1 < 1e-5);
+    }
+  }
+  CHECK(plastic > rec.size() / 2);  // the run is mostly plastic flow
+
+  // Plastic work = area under the flow curve times the volume. The engine books sigma_vm,new d_eps_p V each
+  // cycle (elements.md 6.5) with the current volume V; the reference integrates the closed-form curve
+  // exactly over each cycle's plastic increment with the same V:  sum_k V_k [F(e_k) - F(e_k-1)],
+  // F(e) = a e + b e^(n+1) / (n + 1). The two differ by where the stress is sampled inside each increment
+  // (at most that cycle's hardening increment, below 1e-5 of the stress after the onset of yield):
+  // relative 1e-5. Against the initial volume (the README's closed form) the volume differs by the elastic
+  // dilatation (1 - 2 nu) sigma / E, below 1e-3 here: relative 2e-3.
+  const auto area = [&](double e) { return a * e + b * std::pow(e, n + 1.0) / (n + 1.0); };
+  double w_ref = 0;
+  for (std::size_t k = 1; k < rec.size(); ++k)
+    w_ref += rec[k].vol * (area(rec[k].eps_p) - area(rec[k - 1].eps_p));
+  const double eps_end = rec.back().eps_p, w_end = rec.back().w_plastic;
+  const double vol0 = eng.brick_groups().at(0).vol0[0];
+  CHECK(std::abs(w_end - w_ref) <= 1e-5 * w_ref);
+  CHECK(std::abs(w_end - vol0 * area(eps_end)) <= 2e-3 * vol0 * area(eps_end));
+  if (verbose())
+    std::printf(
+        "jc: %zu plastic cycles (%zu elastic reloads after the first yield), eps_p end %.5f; worst "
+        "|s_u - flow|/flow %.3e (%.3e for eps_p > 1e-3), |axial - flow|/flow %.3e, lateral/flow %.3e; "
+        "plastic work %.6e, area x V %.6e (%+.2e), area x V0 %.6e (%+.2e); %.2f s\n",
+        plastic, reload, eps_end, worst_u, worst_late, worst_axial, worst_lateral, w_end, w_ref,
+        w_end / w_ref - 1, vol0 * area(eps_end), w_end / (vol0 * area(eps_end)) - 1, seconds_since(t0));
+  check_energy(energy, "jc_single_brick");
+}
