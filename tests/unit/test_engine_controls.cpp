@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -99,7 +100,9 @@ TEST_CASE("the /DT minimum stops the run with a message; the step grows by at mo
 TEST_CASE("a free cube with an initial velocity keeps its momentum and energy", "[engine]") {
   auto m = cube(10.0, -1000.0);
   radx::model::RunControls rc;
-  rc.t_stop = 5e-5;
+  // A lone one-point brick becomes unstable at its own step after some tens of cycles (elements.md 9, a
+  // property of the element seeded by round-off): the run is kept to about 14 cycles.
+  rc.t_stop = 2e-5;
   radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
   const double mass = 7.85e-9 * 1000.0;
   bool ok = true;
@@ -136,4 +139,31 @@ TEST_CASE("radx run on the default deck closes its energy balance and writes NAM
   ss << log.rdbuf();
   CHECK(ss.str().find("us per element per cycle") != std::string::npos);
   CHECK(ss.str().find("ENERGY BALANCE") != std::string::npos);
+}
+
+TEST_CASE("every sample deck runs to its end time with the energy balance closed within 1 %", "[engine]") {
+  // verification.md C: kinetic + internal + hourglass (+ contact) - external work stays within 1 % of the
+  // initial total. Contact is not part of the engine yet, so the sample decks' bodies pass through each
+  // other; the balance must close all the same.
+  for (const char* deck :
+       {"block_on_plate/BLOCK_ON_PLATE_0000.rad", "block_on_plate_lagdt/BLOCK_ON_PLATE_LAGDT_0000.rad",
+        "one_file/ONE_FILE_0000.rad"}) {
+    DYNAMIC_SECTION(deck) {
+      radx::test::TempDir dir;
+      const std::string cmd = std::string(RADX_DRIVER_EXE) + " run " + RADX_SOURCE_DIR + "/decks/" + deck +
+                              " --out " + dir.path().string() + " --threads 1 > " + dir.file("log.txt") +
+                              " 2>&1";
+      REQUIRE(std::system(cmd.c_str()) == 0);
+      std::string summary;
+      for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+        if (e.path().string().find("_summary.json") != std::string::npos) summary = e.path().string();
+      REQUIRE_FALSE(summary.empty());
+      const std::string check =
+          "/usr/bin/python3 -c \"import json,sys; s=json.load(open(sys.argv[1])); e=s['energy'];"
+          " assert s['status']=='normal', s['message']; assert abs(e['error_percent'])<1.0, "
+          "e['error_percent']\" " +
+          summary;
+      CHECK(std::system(check.c_str()) == 0);
+    }
+  }
 }
