@@ -55,15 +55,117 @@ struct JcRate {
   double cap = 1e20;
 };
 
-JcRate jc_rate(const MaterialParams& p, double rate) {
+JcRate jc_rate_of_factor(const MaterialParams& p, double r) {
   JcRate out;
-  out.r = 1.0 + p.c * std::log(std::max(rate, p.eps_dot0) / p.eps_dot0);
-  out.cap = p.sig_max0 * (p.icc == 1 ? out.r : 1.0);
+  out.r = r;
+  out.cap = p.sig_max0 * (p.icc == 1 ? r : 1.0);
   return out;
 }
 
+double rate_factor(const MaterialParams& p, double rate) {
+  // rate <= rate0: max(rate, rate0)/rate0 = 1 and ln 1 = 0, so R = 1 exactly; c = 0: R = 1 + 0 ln(.) = 1.
+  if (p.c == 0 || rate <= p.eps_dot0) return 1.0;
+  return 1.0 + p.c * std::log(std::max(rate, p.eps_dot0) / p.eps_dot0);
+}
+
+JcRate jc_rate(const MaterialParams& p, double rate) {
+  return jc_rate_of_factor(p, rate_factor(p, rate));
+}
+
+// Flow stress (6.2) for a known rate factor: the one implementation behind jc_flow_stress and the shells.
+inline double jc_flow_stress_at(const MaterialParams& p, double eps_p, const JcRate& jr, double* slope) {
+  double hard = p.a;
+  double h = 0;
+  if (p.n == 1.0) {
+    hard += p.b * eps_p;
+    h = p.b;
+  } else if (eps_p > 0) {
+    const double en = std::pow(eps_p, p.n);
+    hard += p.b * en;
+    h = p.n * p.b * en / eps_p;
+  }
+  double sy = hard * jr.r;
+  h *= jr.r;
+  if (sy >= jr.cap) {
+    sy = jr.cap;
+    h = 0;
+  }
+  if (slope != nullptr) *slope = h;
+  return sy;
+}
+
 double plane_stress_vm(double sxx, double syy, double sxy) {
-  return std::sqrt(std::max(0.0, sxx * sxx + syy * syy - sxx * syy + 3.0 * sxy * sxy));
+  return std::sqrt(std::max(0.0, shell_vm2_radial(sxx, syy, sxy)));
+}
+
+// von Mises stress of the plastic work (6.5).
+inline double vm_work(double sxx, double syy, double sxy) {
+  return std::sqrt(sxx * sxx + syy * syy - sxx * syy + 3.0 * sxy * sxy);
+}
+
+// The shell point update (1.4, 1.8, 6.3) for a known strain-rate factor: the one implementation behind
+// shell_point_update, shell_point_update_r and (for the points that may yield) the shell kernels.
+ShellPointResult shell_point_core(const MaterialParams& p, int iplas, const JcRate& jr, double off,
+                                  const double de[5], double gs, double sig[5], double& eps_p) {
+  double sxx = sig[0], syy = sig[1], sxy = sig[2];
+  shell_trial(p, gs, de[0], de[1], de[2], de[3], de[4], sxx, syy, sxy, sig[3], sig[4]);
+
+  ShellPointResult out;
+  double dezz_p = 0;  // plastic in-plane trace term of 1.8
+  if (p.law == model::MaterialLaw::JohnsonCook) {
+    const double sy = jc_flow_stress_at(p, eps_p, jr, nullptr);
+    if (iplas != 1) {
+      const double svm = plane_stress_vm(sxx, syy, sxy);
+      if (svm > sy) {
+        const double scale = sy / svm;
+        sxx *= scale;
+        syy *= scale;
+        sxy *= scale;
+        out.deps_p = off * (svm - sy) / p.young;
+        dezz_p = out.deps_p * 0.5 * (sxx + syy) / std::max(sy, kTiny);
+      }
+    } else if (off == 1.0) {
+      const double s1 = sxx + syy;
+      const double s2 = sxx - syy;
+      const double a = 0.25 * s1 * s1;
+      const double b = 0.75 * s2 * s2 + 3.0 * sxy * sxy;
+      const double svm = std::sqrt(a + b);
+      if (svm > sy) {
+        const double h = sy >= jr.cap ? 0.0 : p.n * p.b * jr.r * std::pow(eps_p + kShellSlopeEps, p.n - 1.0);
+        const double nu1 = 1.0 / (1.0 - p.nu);
+        const double nu2 = 1.0 / (1.0 + p.nu);
+        double next = (svm - sy) / (3.0 * p.shear + h);
+        double dp = 0, r = 0, pp = 1, qq = 1;
+        for (int it = 0; it < 3; ++it) {
+          dp = next;
+          const double sy_i = std::max(jc_flow_stress_at(p, eps_p + dp, jr, nullptr), kTiny);
+          r = 0.5 * p.young * dp / sy_i;
+          pp = 1.0 / (1.0 + r * nu1);
+          qq = 1.0 / (1.0 + 3.0 * r * nu2);
+          const double f = a * pp * pp + b * qq * qq - sy_i * sy_i;
+          const double df =
+              -(a * nu1 * pp * pp * pp + 3.0 * b * nu2 * qq * qq * qq) * (p.young - 2.0 * r * h) / sy_i -
+              2.0 * h * sy_i;
+          next = dp > 0 ? std::max(0.0, dp - f / df) : 0.0;
+        }
+        const double t1 = pp * s1;
+        const double t2 = qq * s2;
+        sxx = 0.5 * (t1 + t2);
+        syy = 0.5 * (t1 - t2);
+        sxy *= qq;
+        out.deps_p = dp;
+        dezz_p = r * t1 / p.young;
+      }
+    }
+    eps_p += out.deps_p;
+    if (out.deps_p > 0)
+      out.w_plastic = 0.5 * (vm_work(sig[0], sig[1], sig[2]) + vm_work(sxx, syy, sxy)) * out.deps_p;
+  }
+  sig[0] = sxx;
+  sig[1] = syy;
+  sig[2] = sxy;
+  out.dezz = shell_dezz(p, de[0], de[1], dezz_p);
+  return out;
 }
 
 }  // namespace
@@ -97,91 +199,21 @@ MaterialParams make_material_params(const model::Material& m) {
 }
 
 double jc_flow_stress(const MaterialParams& p, double eps_p, double rate, double* slope) {
-  const JcRate jr = jc_rate(p, rate);
-  double hard = p.a;
-  double h = 0;
-  if (p.n == 1.0) {
-    hard += p.b * eps_p;
-    h = p.b;
-  } else if (eps_p > 0) {
-    const double en = std::pow(eps_p, p.n);
-    hard += p.b * en;
-    h = p.n * p.b * en / eps_p;
-  }
-  double sy = hard * jr.r;
-  h *= jr.r;
-  if (sy >= jr.cap) {
-    sy = jr.cap;
-    h = 0;
-  }
-  if (slope != nullptr) *slope = h;
-  return sy;
+  return jc_flow_stress_at(p, eps_p, jc_rate(p, rate), slope);
+}
+
+double jc_rate_factor(const MaterialParams& p, double rate) {
+  return p.law == model::MaterialLaw::JohnsonCook ? rate_factor(p, rate) : 1.0;
 }
 
 ShellPointResult shell_point_update(const MaterialParams& p, int iplas, double rate, double off,
                                     const double de[5], double gs, double sig[5], double& eps_p) {
-  // Elastic trial (1.4 / 6.3 step 1).
-  double sxx = sig[0] + p.a11 * de[0] + p.a12 * de[1];
-  double syy = sig[1] + p.a12 * de[0] + p.a11 * de[1];
-  double sxy = sig[2] + p.shear * de[2];
-  sig[3] += gs * de[3];
-  sig[4] += gs * de[4];
+  return shell_point_update_r(p, iplas, jc_rate_factor(p, rate), off, de, gs, sig, eps_p);
+}
 
-  ShellPointResult out;
-  double dezz_p = 0;  // plastic in-plane trace term of 1.8
-  if (p.law == model::MaterialLaw::JohnsonCook) {
-    const double sy = jc_flow_stress(p, eps_p, rate);
-    if (iplas != 1) {
-      const double svm = plane_stress_vm(sxx, syy, sxy);
-      if (svm > sy) {
-        const double scale = sy / svm;
-        sxx *= scale;
-        syy *= scale;
-        sxy *= scale;
-        out.deps_p = off * (svm - sy) / p.young;
-        dezz_p = out.deps_p * 0.5 * (sxx + syy) / std::max(sy, kTiny);
-      }
-    } else if (off == 1.0) {
-      const double s1 = sxx + syy;
-      const double s2 = sxx - syy;
-      const double a = 0.25 * s1 * s1;
-      const double b = 0.75 * s2 * s2 + 3.0 * sxy * sxy;
-      const double svm = std::sqrt(a + b);
-      if (svm > sy) {
-        const JcRate jr = jc_rate(p, rate);
-        const double h = sy >= jr.cap ? 0.0 : p.n * p.b * jr.r * std::pow(eps_p + kShellSlopeEps, p.n - 1.0);
-        const double nu1 = 1.0 / (1.0 - p.nu);
-        const double nu2 = 1.0 / (1.0 + p.nu);
-        double next = (svm - sy) / (3.0 * p.shear + h);
-        double dp = 0, r = 0, pp = 1, qq = 1;
-        for (int it = 0; it < 3; ++it) {
-          dp = next;
-          const double sy_i = std::max(jc_flow_stress(p, eps_p + dp, rate), kTiny);
-          r = 0.5 * p.young * dp / sy_i;
-          pp = 1.0 / (1.0 + r * nu1);
-          qq = 1.0 / (1.0 + 3.0 * r * nu2);
-          const double f = a * pp * pp + b * qq * qq - sy_i * sy_i;
-          const double df =
-              -(a * nu1 * pp * pp * pp + 3.0 * b * nu2 * qq * qq * qq) * (p.young - 2.0 * r * h) / sy_i -
-              2.0 * h * sy_i;
-          next = dp > 0 ? std::max(0.0, dp - f / df) : 0.0;
-        }
-        const double t1 = pp * s1;
-        const double t2 = qq * s2;
-        sxx = 0.5 * (t1 + t2);
-        syy = 0.5 * (t1 - t2);
-        sxy *= qq;
-        out.deps_p = dp;
-        dezz_p = r * t1 / p.young;
-      }
-    }
-    eps_p += out.deps_p;
-  }
-  sig[0] = sxx;
-  sig[1] = syy;
-  sig[2] = sxy;
-  out.dezz = (-p.nu * (de[0] + de[1]) - (1.0 - 2.0 * p.nu) * dezz_p) / (1.0 - p.nu);
-  return out;
+ShellPointResult shell_point_update_r(const MaterialParams& p, int iplas, double rfac, double off,
+                                      const double de[5], double gs, double sig[5], double& eps_p) {
+  return shell_point_core(p, iplas, jc_rate_of_factor(p, rfac), off, de, gs, sig, eps_p);
 }
 
 double solid_point_update(const MaterialParams& p, double rate, const double de[6], double mu, double sig[6],

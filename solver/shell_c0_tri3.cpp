@@ -23,6 +23,10 @@
 //   times OFF; rotated to global axes and stored with the minus sign (force added to the node).
 // Element step [4.2] (before the /DT scale): dt = L phi / c, L = 2A / longest side, c = sqrt(E/rho),
 //   phi = sqrt(1 + Dm^2) - Dm (1 by default). Nodal stiffness [4.5]: 0.81^2 A t A11 / L^2 per node.
+//
+// Layout: the group is run in blocks of kBlock elements: geometry and increments element by element, the
+// through-thickness section of the whole block (shell_section.hpp, vectorised), then forces and steps
+// element by element.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -35,9 +39,18 @@ namespace radx::solver {
 
 namespace {
 
+constexpr int kBlock = 64;  // elements per block (see shell_bt4.cpp)
+
 inline double signed_floor3(double v, double eps) {
   return v >= 0 ? std::max(v, eps) : std::min(v, -eps);
 }
+
+// What the force stage needs from the geometry stage, [quantity][slot].
+struct Tri3Block {
+  double e1[3][kBlock], e2[3][kBlock], e3[3][kBlock];
+  double px1[kBlock], py1[kBlock], py2[kBlock], x2[kBlock], x3[kBlock], y3[kBlock];
+  shell_detail::SectionBlock<kBlock> sec;
+};
 
 }  // namespace
 
@@ -61,6 +74,7 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
   const double a11 = mat.a11 > 0 ? mat.a11 : young / (1.0 - mat.nu * mat.nu);
   const double tau = 0.25 * dt1;
   constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double fail_limit = failure_limit(mat);  // EPS_p_max (6.4)
   constexpr double kThird = 1.0 / 3.0;
 
   const double* X = nodes.x.data();
@@ -74,157 +88,206 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
   const double* WZ = nodes.wz.data();
   double* nf = g.nodal_force.data();
 
-  for (int i = 0; i < g.count; ++i) {
-    const std::size_t ii = static_cast<std::size_t>(i);
-    for (int r = 18; r < 24; ++r) nf[r * G + ii] = 0.0;  // row 3 is unused by triangles
-    const double off_start = g.off[ii];
-    if (off_start <= 0.0) {
-      for (int r = 0; r < 18; ++r) nf[r * G + ii] = 0.0;
-      g.dt[ii] = kInf;
-      g.k_nodal[ii] = 0.0;
-      continue;
-    }
-    std::int32_t n[3];
-    double px[3], py[3], pz[3];
-    for (int k = 0; k < 3; ++k) {
-      n[k] = g.conn[k * G + ii];
-      px[k] = X[n[k]];
-      py[k] = Y[n[k]];
-      pz[k] = Z[n[k]];
-    }
-    if (g.thick[ii] <= 0.0) g.thick[ii] = g.t0[ii];
-    const double t = pr.ithick == 1 ? g.thick[ii] : g.t0[ii];
+  Tri3Block bk;
+  SectionBlock<kBlock>& sec = bk.sec;
+  for (int i0 = 0; i0 < g.count; i0 += kBlock) {
+    const int len = std::min(kBlock, g.count - i0);
 
-    // Frame [2].
-    const double d21x = px[1] - px[0], d21y = py[1] - py[0], d21z = pz[1] - pz[0];
-    const double d31x = px[2] - px[0], d31y = py[2] - py[0], d31z = pz[2] - pz[0];
-    const double d32x = px[2] - px[1], d32y = py[2] - py[1], d32z = pz[2] - pz[1];
-    const double x2 = std::sqrt(d21x * d21x + d21y * d21y + d21z * d21z);
-    double inv = 1.0 / std::max(x2, 1e-30);
-    const double e1x = d21x * inv, e1y = d21y * inv, e1z = d21z * inv;
-    double e3x = d31y * d32z - d31z * d32y, e3y = d31z * d32x - d31x * d32z, e3z = d31x * d32y - d31y * d32x;
-    inv = 1.0 / std::max(std::sqrt(e3x * e3x + e3y * e3y + e3z * e3z), 1e-30);
-    e3x *= inv, e3y *= inv, e3z *= inv;
-    const double e2x = e3y * e1z - e3z * e1y, e2y = e3z * e1x - e3x * e1z, e2z = e3x * e1y - e3y * e1x;
-    const double x3 = e1x * d31x + e1y * d31y + e1z * d31z;
-    const double y3 = e2x * d31x + e2y * d31y + e2z * d31z;
-    const double area = std::max(0.5 * x2 * y3, 1e-20);
-    const double ainv = 1.0 / area;
-    const double PX1 = -0.5 * y3, PY1 = 0.5 * (x3 - x2), PY2 = -0.5 * x3;
-    const double PX[3] = {PX1, -PX1, 0.0};
-    const double PY[3] = {PY1, PY2, -(PY1 + PY2)};
+    // Geometry, rates and increments.
+    for (int j = 0; j < len; ++j) {
+      const std::size_t ii = static_cast<std::size_t>(i0 + j);
+      const double off_start = g.off[ii];
+      sec.off[j] = off_start;
+      if (off_start <= 0.0) {  // deleted: the section leaves it alone
+        for (int k = 0; k < 5; ++k) sec.dem[k][j] = 0.0;
+        for (int k = 0; k < 3; ++k) sec.dk[k][j] = 0.0;
+        sec.t[j] = sec.area[j] = 0.0;
+        sec.rfac[j] = 1.0;
+        continue;
+      }
+      std::int32_t n[3];
+      double px[3], py[3], pz[3];
+      for (int k = 0; k < 3; ++k) {
+        n[k] = g.conn[k * G + ii];
+        px[k] = X[n[k]];
+        py[k] = Y[n[k]];
+        pz[k] = Z[n[k]];
+      }
+      if (g.thick[ii] <= 0.0) g.thick[ii] = g.t0[ii];
+      const double t = pr.ithick == 1 ? g.thick[ii] : g.t0[ii];
 
-    double vx[3], vy[3], vz[3], rx[3], ry[3];
-    for (int k = 0; k < 3; ++k) {
-      const double ux = VX[n[k]], uy = VY[n[k]], uz = VZ[n[k]];
-      const double wx = WX[n[k]], wy = WY[n[k]], wz = WZ[n[k]];
-      vx[k] = e1x * ux + e1y * uy + e1z * uz;
-      vy[k] = e2x * ux + e2y * uy + e2z * uz;
-      vz[k] = e3x * ux + e3y * uy + e3z * uz;
-      rx[k] = e1x * wx + e1y * wy + e1z * wz;
-      ry[k] = e2x * wx + e2y * wy + e2z * wz;
-    }
+      // Frame [2].
+      const double d21x = px[1] - px[0], d21y = py[1] - py[0], d21z = pz[1] - pz[0];
+      const double d31x = px[2] - px[0], d31y = py[2] - py[0], d31z = pz[2] - pz[0];
+      const double d32x = px[2] - px[1], d32y = py[2] - py[1], d32z = pz[2] - pz[1];
+      const double x2 = std::sqrt(d21x * d21x + d21y * d21y + d21z * d21z);
+      double inv = 1.0 / std::max(x2, 1e-30);
+      const double e1x = d21x * inv, e1y = d21y * inv, e1z = d21z * inv;
+      double e3x = d31y * d32z - d31z * d32y, e3y = d31z * d32x - d31x * d32z,
+             e3z = d31x * d32y - d31y * d32x;
+      inv = 1.0 / std::max(std::sqrt(e3x * e3x + e3y * e3y + e3z * e3z), 1e-30);
+      e3x *= inv, e3y *= inv, e3z *= inv;
+      const double e2x = e3y * e1z - e3z * e1y, e2y = e3z * e1x - e3x * e1z, e2z = e3x * e1y - e3y * e1x;
+      const double x3 = e1x * d31x + e1y * d31y + e1z * d31z;
+      const double y3 = e2x * d31x + e2y * d31y + e2z * d31z;
+      const double area = std::max(0.5 * x2 * y3, 1e-20);
+      const double ainv = 1.0 / area;
+      const double PX1 = -0.5 * y3, PY1 = 0.5 * (x3 - x2), PY2 = -0.5 * x3;
 
-    // Large-rotation correction (Ish3n 2).
-    const double s12 = signed_floor3(PY1 + PY2, 1e-20), sx1 = signed_floor3(PX1, 1e-20);
-    const double T1 = tau * (vz[0] - vz[1]) / s12;
-    const double T2 = tau * ((PY1 * vz[0] + PY2 * vz[1]) / s12 - vz[2]) / sx1;
-    const double T11 = tau * (vy[0] - vy[1]) / s12;
-    const double T22 = tau * ((PY1 * vx[0] + PY2 * vx[1]) / s12 - vx[2]) / sx1;
-    double cx[3], cy[3];
-    for (int k = 0; k < 3; ++k) {
-      cx[k] = vx[k] - vz[k] * T1 - vy[k] * T11;
-      cy[k] = vy[k] - vz[k] * T2 - vx[k] * T22;
-    }
+      double vx[3], vy[3], vz[3], rx[3], ry[3];
+      for (int k = 0; k < 3; ++k) {
+        const double ux = VX[n[k]], uy = VY[n[k]], uz = VZ[n[k]];
+        const double wx = WX[n[k]], wy = WY[n[k]], wz = WZ[n[k]];
+        vx[k] = e1x * ux + e1y * uy + e1z * uz;
+        vy[k] = e2x * ux + e2y * uy + e2z * uz;
+        vz[k] = e3x * ux + e3y * uy + e3z * uz;
+        rx[k] = e1x * wx + e1y * wy + e1z * wz;
+        ry[k] = e2x * wx + e2y * wy + e2z * wz;
+      }
 
-    // Rates times A, then increments.
-    const double f = dt1 * ainv;
-    const double sp = PY1 + PY2;
-    const double gzx_r =
-        kThird * PX1 *
-        (PX1 * (rx[1] - rx[0]) + (2 * PY1 + 3 * PY2) * ry[0] + (3 * PY1 + 2 * PY2) * ry[1] + sp * ry[2]);
-    const double gyz_r =
-        kThird *
-        (-PX1 * ((2 * PY1 + PY2) * rx[0] + (PY1 + 2 * PY2) * rx[1] + 3 * sp * rx[2]) +
-         PY1 * (PY1 + 2 * PY2) * ry[0] - PY2 * (2 * PY1 + PY2) * ry[1] + (PY2 * PY2 - PY1 * PY1) * ry[2]);
-    double dem[5], dk[3];
-    dem[0] = f * PX1 * (cx[0] - cx[1]);
-    dem[1] = f * (PY1 * (cy[0] - cy[2]) + PY2 * (cy[1] - cy[2]));
-    dem[2] = f * (PY1 * (cx[0] - cx[2]) + PY2 * (cx[1] - cx[2]) + PX1 * (cy[0] - cy[1]));
-    dem[3] = f * (PY1 * (vz[0] - vz[2]) + PY2 * (vz[1] - vz[2]) + gyz_r);
-    dem[4] = f * (PX1 * (vz[0] - vz[1]) + gzx_r);
-    dk[0] = f * PX1 * (ry[0] - ry[1]);
-    dk[1] = -f * (PY1 * (rx[0] - rx[2]) + PY2 * (rx[1] - rx[2]));
-    dk[2] = f * (PY1 * (ry[0] - ry[2]) + PY2 * (ry[1] - ry[2]) - PX1 * (rx[0] - rx[1]));
+      // Large-rotation correction (Ish3n 2).
+      const double s12 = signed_floor3(PY1 + PY2, 1e-20), sx1 = signed_floor3(PX1, 1e-20);
+      const double T1 = tau * (vz[0] - vz[1]) / s12;
+      const double T2 = tau * ((PY1 * vz[0] + PY2 * vz[1]) / s12 - vz[2]) / sx1;
+      const double T11 = tau * (vy[0] - vy[1]) / s12;
+      const double T22 = tau * ((PY1 * vx[0] + PY2 * vx[1]) / s12 - vx[2]) / sx1;
+      double cx[3], cy[3];
+      for (int k = 0; k < 3; ++k) {
+        cx[k] = vx[k] - vz[k] * T1 - vy[k] * T11;
+        cy[k] = vy[k] - vz[k] * T2 - vx[k] * T22;
+      }
 
-    const double rate = alpha * equivalent_rate(dem, dk, g.thick[ii], dt1) + (1.0 - alpha) * g.rate[ii];
-    g.rate[ii] = rate;
-    SectionUpdate su;
-    section_update(g, i, mat, rule, gs, t, area, rate, off_start, dem, dk, su);
-    const double off = next_off(mat, off_start, su.eps_p_max);
-    g.off[ii] = off;
-    g.w_plastic[ii] += su.w_plastic;
-    g.thick[ii] += su.dthick * off;
+      // Rates times A, then increments.
+      const double f = dt1 * ainv;
+      const double sp = PY1 + PY2;
+      const double gzx_r =
+          kThird * PX1 *
+          (PX1 * (rx[1] - rx[0]) + (2 * PY1 + 3 * PY2) * ry[0] + (3 * PY1 + 2 * PY2) * ry[1] + sp * ry[2]);
+      const double gyz_r =
+          kThird *
+          (-PX1 * ((2 * PY1 + PY2) * rx[0] + (PY1 + 2 * PY2) * rx[1] + 3 * sp * rx[2]) +
+           PY1 * (PY1 + 2 * PY2) * ry[0] - PY2 * (2 * PY1 + PY2) * ry[1] + (PY2 * PY2 - PY1 * PY1) * ry[2]);
+      double dem[5], dk[3];
+      dem[0] = f * PX1 * (cx[0] - cx[1]);
+      dem[1] = f * (PY1 * (cy[0] - cy[2]) + PY2 * (cy[1] - cy[2]));
+      dem[2] = f * (PY1 * (cx[0] - cx[2]) + PY2 * (cx[1] - cx[2]) + PX1 * (cy[0] - cy[1]));
+      dem[3] = f * (PY1 * (vz[0] - vz[2]) + PY2 * (vz[1] - vz[2]) + gyz_r);
+      dem[4] = f * (PX1 * (vz[0] - vz[1]) + gzx_r);
+      dk[0] = f * PX1 * (ry[0] - ry[1]);
+      dk[1] = -f * (PY1 * (rx[0] - rx[2]) + PY2 * (rx[1] - rx[2]));
+      dk[2] = f * (PY1 * (ry[0] - ry[2]) + PY2 * (ry[1] - ry[2]) - PX1 * (rx[0] - rx[1]));
 
-    double fv[3] = {0.0, 0.0, 0.0};
-    if (visc0 > 0) {
-      const double visc = visc0 * std::sqrt(area);
-      fv[0] = visc * (dem[0] + 0.5 * dem[1]);
-      fv[1] = visc * (dem[1] + 0.5 * dem[0]);
-      fv[2] = visc * dem[2] / 3.0;
-    }
-    double de_mem = 0, de_bend = 0;
-    for (int k = 0; k < 5; ++k) de_mem += (off_start * su.for_old[k] + off * su.for_new[k]) * dem[k];
-    for (int k = 0; k < 3; ++k) de_bend += (off_start * su.mom_old[k] + off * su.mom_new[k]) * dk[k];
-    g.e_int[ii] += 0.5 * area * t * (de_mem + t * de_bend) +
-                   area * t * off * (fv[0] * dem[0] + fv[1] * dem[1] + fv[2] * dem[2]);
+      const double eq =
+          dt1 > 0
+              ? std::sqrt(equivalent_rate_arg(dem[0], dem[1], dem[2], dk[0], dk[1], dk[2], g.thick[ii])) / dt1
+              : 0.0;
+      const double rate = alpha * eq + (1.0 - alpha) * g.rate[ii];
+      g.rate[ii] = rate;
 
-    if (off <= 0.0) {
-      for (int r = 0; r < 18; ++r) nf[r * G + ii] = 0.0;
-      g.dt[ii] = kInf;
-      g.k_nodal[ii] = 0.0;
-      continue;
+      for (int k = 0; k < 5; ++k) sec.dem[k][j] = dem[k];
+      for (int k = 0; k < 3; ++k) sec.dk[k][j] = dk[k];
+      sec.t[j] = t;
+      sec.area[j] = area;
+      sec.rfac[j] = jc_rate_factor(mat, rate);
+      bk.e1[0][j] = e1x, bk.e1[1][j] = e1y, bk.e1[2][j] = e1z;
+      bk.e2[0][j] = e2x, bk.e2[1][j] = e2y, bk.e2[2][j] = e2z;
+      bk.e3[0][j] = e3x, bk.e3[1][j] = e3y, bk.e3[2][j] = e3z;
+      bk.px1[j] = PX1, bk.py1[j] = PY1, bk.py2[j] = PY2;
+      bk.x2[j] = x2, bk.x3[j] = x3, bk.y3[j] = y3;
     }
 
-    // Internal nodal forces: transpose of the rates.
-    const double ot = off * t, ot2 = off * t * t;
-    const double Nxx = ot * (su.for_new[0] + fv[0]), Nyy = ot * (su.for_new[1] + fv[1]),
-                 Nxy = ot * (su.for_new[2] + fv[2]);
-    const double Qy = ot * su.for_new[3], Qx = ot * su.for_new[4];
-    const double Mxx = ot2 * su.mom_new[0], Myy = ot2 * su.mom_new[1], Mxy = ot2 * su.mom_new[2];
-    double fx[3], fy[3], fz[3], mx[3], my[3];
-    for (int k = 0; k < 3; ++k) {
-      fx[k] = Nxx * PX[k] + Nxy * PY[k];
-      fy[k] = Nxy * PX[k] + Nyy * PY[k];
-      fz[k] = Qx * PX[k] + Qy * PY[k];
-      mx[k] = -(Myy * PY[k] + Mxy * PX[k]);
-      my[k] = Mxx * PX[k] + Mxy * PY[k];
-    }
-    // Transverse shear rotation terms (transpose of gzx_r and gyz_r).
-    const double qx3 = kThird * Qx * PX1, qy3 = kThird * Qy;
-    my[0] += qx3 * (2 * PY1 + 3 * PY2) + qy3 * PY1 * (PY1 + 2 * PY2);
-    my[1] += qx3 * (3 * PY1 + 2 * PY2) - qy3 * PY2 * (2 * PY1 + PY2);
-    my[2] += qx3 * sp + qy3 * (PY2 * PY2 - PY1 * PY1);
-    mx[0] += -qx3 * PX1 - qy3 * PX1 * (2 * PY1 + PY2);
-    mx[1] += qx3 * PX1 - qy3 * PX1 * (PY1 + 2 * PY2);
-    mx[2] += -qy3 * PX1 * 3 * sp;
+    // Section [1.4, 1.8, 6].
+    section_update_block(g, i0, len, mat, rule, gs, sec);
 
-    for (int k = 0; k < 3; ++k) {
-      double* o = nf + static_cast<std::size_t>(k) * 6 * G + ii;
-      o[0] = -(fx[k] * e1x + fy[k] * e2x + fz[k] * e3x);
-      o[G] = -(fx[k] * e1y + fy[k] * e2y + fz[k] * e3y);
-      o[2 * G] = -(fx[k] * e1z + fy[k] * e2z + fz[k] * e3z);
-      o[3 * G] = -(mx[k] * e1x + my[k] * e2x);
-      o[4 * G] = -(mx[k] * e1y + my[k] * e2y);
-      o[5 * G] = -(mx[k] * e1z + my[k] * e2z);
-    }
+    // Failure, thickness, energy, forces, step.
+    for (int j = 0; j < len; ++j) {
+      const std::size_t ii = static_cast<std::size_t>(i0 + j);
+      for (int r = 18; r < 24; ++r) nf[r * G + ii] = 0.0;  // row 3 is unused by triangles
+      const double off_start = sec.off[j];
+      if (off_start <= 0.0) {
+        for (int r = 0; r < 18; ++r) nf[r * G + ii] = 0.0;
+        g.dt[ii] = kInf;
+        g.k_nodal[ii] = 0.0;
+        continue;
+      }
+      const double t = sec.t[j], area = sec.area[j];
+      const double dem[5] = {sec.dem[0][j], sec.dem[1][j], sec.dem[2][j], sec.dem[3][j], sec.dem[4][j]};
+      const double dk[3] = {sec.dk[0][j], sec.dk[1][j], sec.dk[2][j]};
+      const double off = next_off(fail_limit, off_start, sec.eps_p_max[j]);
+      g.off[ii] = off;
+      g.w_plastic[ii] += sec.w_plastic[j];
+      g.thick[ii] += sec.dthick[j] * off;
 
-    // Element step [4.2] and nodal stiffness [4.5].
-    const double l12 = x2 * x2, l23 = (x3 - x2) * (x3 - x2) + y3 * y3, l31 = x3 * x3 + y3 * y3;
-    const double lmax2 = std::max({l12, l23, l31, 1e-40});
-    const double l = 2.0 * area / std::sqrt(lmax2);
-    g.dt[ii] = l * phi / c;
-    g.k_nodal[ii] = 0.81 * 0.81 * area * t * a11 / (l * l);
+      double fv[3] = {0.0, 0.0, 0.0};
+      if (visc0 > 0) {
+        const double visc = visc0 * std::sqrt(area);
+        fv[0] = visc * (dem[0] + 0.5 * dem[1]);
+        fv[1] = visc * (dem[1] + 0.5 * dem[0]);
+        fv[2] = visc * dem[2] / 3.0;
+      }
+      double de_mem = 0, de_bend = 0;
+      for (int k = 0; k < 5; ++k)
+        de_mem += (off_start * sec.for_old[k][j] + off * sec.for_new[k][j]) * dem[k];
+      for (int k = 0; k < 3; ++k)
+        de_bend += (off_start * sec.mom_old[k][j] + off * sec.mom_new[k][j]) * dk[k];
+      g.e_int[ii] += 0.5 * area * t * (de_mem + t * de_bend) +
+                     area * t * off * (fv[0] * dem[0] + fv[1] * dem[1] + fv[2] * dem[2]);
+
+      if (off <= 0.0) {
+        for (int r = 0; r < 18; ++r) nf[r * G + ii] = 0.0;
+        g.dt[ii] = kInf;
+        g.k_nodal[ii] = 0.0;
+        continue;
+      }
+
+      // Internal nodal forces: transpose of the rates.
+      const double PX1 = bk.px1[j], PY1 = bk.py1[j], PY2 = bk.py2[j], sp = PY1 + PY2;
+      const double PX[3] = {PX1, -PX1, 0.0};
+      const double PY[3] = {PY1, PY2, -(PY1 + PY2)};
+      const double ot = off * t, ot2 = off * t * t;
+      const double Nxx = ot * (sec.for_new[0][j] + fv[0]), Nyy = ot * (sec.for_new[1][j] + fv[1]),
+                   Nxy = ot * (sec.for_new[2][j] + fv[2]);
+      const double Qy = ot * sec.for_new[3][j], Qx = ot * sec.for_new[4][j];
+      const double Mxx = ot2 * sec.mom_new[0][j], Myy = ot2 * sec.mom_new[1][j],
+                   Mxy = ot2 * sec.mom_new[2][j];
+      double fx[3], fy[3], fz[3], mx[3], my[3];
+      for (int k = 0; k < 3; ++k) {
+        fx[k] = Nxx * PX[k] + Nxy * PY[k];
+        fy[k] = Nxy * PX[k] + Nyy * PY[k];
+        fz[k] = Qx * PX[k] + Qy * PY[k];
+        mx[k] = -(Myy * PY[k] + Mxy * PX[k]);
+        my[k] = Mxx * PX[k] + Mxy * PY[k];
+      }
+      // Transverse shear rotation terms (transpose of gzx_r and gyz_r).
+      const double qx3 = kThird * Qx * PX1, qy3 = kThird * Qy;
+      my[0] += qx3 * (2 * PY1 + 3 * PY2) + qy3 * PY1 * (PY1 + 2 * PY2);
+      my[1] += qx3 * (3 * PY1 + 2 * PY2) - qy3 * PY2 * (2 * PY1 + PY2);
+      my[2] += qx3 * sp + qy3 * (PY2 * PY2 - PY1 * PY1);
+      mx[0] += -qx3 * PX1 - qy3 * PX1 * (2 * PY1 + PY2);
+      mx[1] += qx3 * PX1 - qy3 * PX1 * (PY1 + 2 * PY2);
+      mx[2] += -qy3 * PX1 * 3 * sp;
+
+      const double e1x = bk.e1[0][j], e1y = bk.e1[1][j], e1z = bk.e1[2][j];
+      const double e2x = bk.e2[0][j], e2y = bk.e2[1][j], e2z = bk.e2[2][j];
+      const double e3x = bk.e3[0][j], e3y = bk.e3[1][j], e3z = bk.e3[2][j];
+      for (int k = 0; k < 3; ++k) {
+        double* o = nf + static_cast<std::size_t>(k) * 6 * G + ii;
+        o[0] = -(fx[k] * e1x + fy[k] * e2x + fz[k] * e3x);
+        o[G] = -(fx[k] * e1y + fy[k] * e2y + fz[k] * e3y);
+        o[2 * G] = -(fx[k] * e1z + fy[k] * e2z + fz[k] * e3z);
+        o[3 * G] = -(mx[k] * e1x + my[k] * e2x);
+        o[4 * G] = -(mx[k] * e1y + my[k] * e2y);
+        o[5 * G] = -(mx[k] * e1z + my[k] * e2z);
+      }
+
+      // Element step [4.2] and nodal stiffness [4.5].
+      const double x2 = bk.x2[j], x3 = bk.x3[j], y3 = bk.y3[j];
+      const double l12 = x2 * x2, l23 = (x3 - x2) * (x3 - x2) + y3 * y3, l31 = x3 * x3 + y3 * y3;
+      const double lmax2 = std::max({l12, l23, l31, 1e-40});
+      const double l = 2.0 * area / std::sqrt(lmax2);
+      g.dt[ii] = l * phi / c;
+      g.k_nodal[ii] = 0.81 * 0.81 * area * t * a11 / (l * l);
+    }
   }
 }
 

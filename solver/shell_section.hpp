@@ -1,6 +1,12 @@
-// Shared by the shell kernels (shell_bt4.cpp, shell_c0_tri3.cpp): the through-thickness integration of one
-// element's section, the element equivalent strain rate and the progressive failure factor. Internal to the
-// solver; not a public API.
+// Shared by the shell kernels (shell_bt4.cpp, shell_c0_tri3.cpp): the through-thickness integration of a
+// block of elements' sections, the element equivalent strain rate and the progressive failure factor.
+// Internal to the solver; not a public API.
+//
+// The section runs point by point (two points per pass) over the block's elements, vectorised: every point
+// gets its elastic trial and the sums, and the points that may yield (shell_stays_elastic false, see
+// material_point.hpp) get the exact update shell_point_update_r afterwards, with their element's sums
+// redone in the order of the points. Either way each point's result and each sum are those of the
+// element-by-element update, operation for operation.
 //
 // Equations (shared/spec/elements.md):
 //   1.4  point i of n at z_i = zeta_i t, zeta_i = -1/2 + (i-1)/(n-1) (n = 1: zeta = 0);
@@ -22,7 +28,14 @@
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <numbers>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "solver/element_groups.hpp"
 #include "solver/material_point.hpp"
@@ -74,12 +87,22 @@ inline void ensure_resultant_storage(ShellGroup& g) {
   if (g.props.n_points <= 0 && g.sig.size() < need) g.sig.resize(need, 0.0);
 }
 
-// Equivalent strain rate of the element (1.3), before the filter. Zero when dt1 = 0 (cycle 0).
-inline double equivalent_rate(const double dem[5], const double dk[3], double t, double dt1) {
-  if (dt1 <= 0) return 0.0;
-  const double m = dem[0] * dem[0] + dem[1] * dem[1] + dem[0] * dem[1] + 0.25 * dem[2] * dem[2];
-  const double b = dk[0] * dk[0] + dk[1] * dk[1] + dk[0] * dk[1] + 0.25 * dk[2] * dk[2];
-  return std::sqrt((4.0 / 3.0) * m + (t * t / 9.0) * b) / dt1;
+// Square roots of v[0 .. n). std::sqrt may set errno, which keeps GCC from vectorising a loop that calls
+// it; the kernels put the arguments in an array and take the roots here (sqrtpd rounds exactly as sqrtsd).
+inline void sqrt_in_place(double* v, int n) {
+  int i = 0;
+#if defined(__SSE2__)
+  for (; i + 2 <= n; i += 2) _mm_storeu_pd(v + i, _mm_sqrt_pd(_mm_loadu_pd(v + i)));
+#endif
+  for (; i < n; ++i) v[i] = std::sqrt(v[i]);
+}
+
+// Argument of the square root of the element equivalent strain rate (1.3): rate = sqrt(arg) / dt1.
+inline double equivalent_rate_arg(double dexx, double deyy, double dgxy, double dkxx, double dkyy,
+                                  double dkxy, double t) {
+  const double m = dexx * dexx + deyy * deyy + dexx * deyy + 0.25 * dgxy * dgxy;
+  const double b = dkxx * dkxx + dkyy * dkyy + dkxx * dkyy + 0.25 * dkxy * dkxy;
+  return (4.0 / 3.0) * m + (t * t / 9.0) * b;
 }
 
 // Filter factor of 6.1.
@@ -88,78 +111,242 @@ inline double rate_filter_alpha(const MaterialParams& mat, double dt1) {
   return std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1);
 }
 
-// Result of one element's section update. FOR, MOM are the raw (not yet multiplied by OFF) averaged
-// stress N/t and M/t^2 before and after the update, in the order xx yy xy yz zx / xx yy xy.
-struct SectionUpdate {
-  double for_old[5] = {}, for_new[5] = {};
-  double mom_old[3] = {}, mom_new[3] = {};
-  double dthick = 0;     // thickness increment before the OFF factor (1.8)
-  double w_plastic = 0;  // plastic work increment (6.5)
-  double eps_p_max = 0;  // largest plastic strain over the points after the update
+// Section update of a block of B elements (slots j = 0 .. len of the group's elements i0 + j), structure of
+// arrays. The kernel fills the inputs; FOR, MOM are the raw (not yet multiplied by OFF) averaged stress N/t
+// and M/t^2 before and after the update, in the order xx yy xy yz zx / xx yy xy.
+template <int B>
+struct SectionBlock {
+  // Inputs.
+  double dem[5][B];  // membrane and transverse shear increments xx yy xy yz zx (engineering shears)
+  double dk[3][B];   // curvature increments xx yy xy
+  double t[B];       // mechanics thickness
+  double area[B];    // current area
+  double rfac[B];    // Johnson-Cook strain-rate factor R of the element rate (jc_rate_factor)
+  double off[B];     // element factor at the start of the cycle; <= 0: deleted, its state is left alone
+  // Results.
+  double for_old[5][B], for_new[5][B];
+  double mom_old[3][B], mom_new[3][B];
+  double dthick[B];     // thickness increment before the OFF factor (1.8)
+  double w_plastic[B];  // plastic work increment (6.5)
+  double eps_p_max[B];  // largest plastic strain over the points after the update
+  // Scratch of the points that take the exact update (shell_point_update_r).
+  double old[2][5][B];                                // their stress before the update (points of the pass)
+  std::int64_t exact[2][B];                           // 1: that point of element j takes it
+  std::int64_t redo[B] = {};                          // 1: element j has such a point, its sums are redone
+  unsigned char point_exact[kMaxPoints][B] = {};      // which points of element j took it
+  double dezz_x[kMaxPoints][B], wp_x[kMaxPoints][B];  // their dezz and plastic work per volume
 };
 
-inline double von_mises_plane(const double s[5]) {
-  return std::sqrt(s[0] * s[0] + s[1] * s[1] - s[0] * s[1] + 3.0 * s[2] * s[2]);
+// Through-thickness points p0, p0 + 1 (kPts = 2) or p0 alone (kPts = 1) of the block, vectorised. For each
+// point: strain increment de(z) = de_m + z dkappa, the sums of FOR/MOM before the update, the elastic trial
+// (stored), the sums after it, the thickness strain and the largest eps_p, all as if the point stayed
+// elastic; the sums are taken point after point, as one point at a time would. exact[q][j] = 1 marks the
+// points the caller must finish: those that may yield (shell_stays_elastic false), updated exactly, with
+// their element's sums redone, and those of deleted elements (off <= 0), whose stress is put back.
+template <bool kFirst, bool kNewton, int kPts, int B>
+std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParams& mat,
+                                const ShellYieldBound& yb, double gs, const ThicknessRule& rule, int p0,
+                                double* sig, double* eps_p) {
+  // Local copies: the stores of the loop could alias the caller's objects, which would keep the compiler
+  // from holding their fields in registers.
+  const MaterialParams mp = mat;
+  const ShellYieldBound bound = yb;
+  double zeta[kPts], w[kPts], m[kPts];
+  double* sp[kPts][5];
+  const double* ep[kPts];
+  for (int q = 0; q < kPts; ++q) {
+    zeta[q] = rule.zeta[p0 + q], w[q] = rule.w[p0 + q], m[q] = rule.m[p0 + q];
+    for (int c = 0; c < 5; ++c) sp[q][c] = sig + (static_cast<std::size_t>(p0 + q) * 5 + c) * kGroupSize;
+    ep[q] = eps_p + static_cast<std::size_t>(p0 + q) * kGroupSize;
+  }
+  std::int64_t any = 0;
+  RADX_IVDEP
+  for (int j = 0; j < len; ++j) {
+    const double off = s.off[j], t = s.t[j], rfac = s.rfac[j];
+    const double dm[5] = {s.dem[0][j], s.dem[1][j], s.dem[2][j], s.dem[3][j], s.dem[4][j]};
+    const double dk[3] = {s.dk[0][j], s.dk[1][j], s.dk[2][j]};
+    double fo[5], mo[3], fn[5], mn[3], dth = 0, epm = 0;
+    if constexpr (!kFirst) {
+      for (int c = 0; c < 5; ++c) fo[c] = s.for_old[c][j], fn[c] = s.for_new[c][j];
+      for (int c = 0; c < 3; ++c) mo[c] = s.mom_old[c][j], mn[c] = s.mom_new[c][j];
+      dth = s.dthick[j];
+      epm = s.eps_p_max[j];
+    }
+    // One point, q a compile-time constant (so that the first point's sums start without a branch).
+    const auto point = [&](auto q_constant) {
+      constexpr int q = decltype(q_constant)::value;
+      const double z = zeta[q] * t;
+      const double d0 = dm[0] + z * dk[0], d1 = dm[1] + z * dk[1], d2 = dm[2] + z * dk[2];
+      const double o[5] = {sp[q][0][j], sp[q][1][j], sp[q][2][j], sp[q][3][j], sp[q][4][j]};
+      double n[5] = {o[0], o[1], o[2], o[3], o[4]};
+      shell_trial(mp, gs, d0, d1, d2, dm[3], dm[4], n[0], n[1], n[2], n[3], n[4]);
+      const double eps = ep[q][j];
+      const bool elastic = shell_stays_elastic<kNewton>(bound, rfac, off, eps, n[0], n[1], n[2]);
+      const std::int64_t e = ((off > 0) & elastic) ? 0 : 1;
+      s.exact[q][j] = e;
+      any |= e;
+      const double dz = shell_dezz(mp, d0, d1, 0.0) * w[q];
+      for (int c = 0; c < 5; ++c) {
+        s.old[q][c][j] = o[c];
+        sp[q][c][j] = n[c];
+      }
+      if constexpr (kFirst && q == 0) {
+        for (int c = 0; c < 5; ++c) fo[c] = w[q] * o[c], fn[c] = w[q] * n[c];
+        for (int c = 0; c < 3; ++c) mo[c] = m[q] * o[c], mn[c] = m[q] * n[c];
+        dth = dz;
+        epm = std::max(0.0, eps);
+      } else {
+        for (int c = 0; c < 5; ++c) fo[c] += w[q] * o[c], fn[c] += w[q] * n[c];
+        for (int c = 0; c < 3; ++c) mo[c] += m[q] * o[c], mn[c] += m[q] * n[c];
+        dth += dz;
+        epm = std::max(epm, eps);
+      }
+    };
+    point(std::integral_constant<int, 0>{});
+    if constexpr (kPts == 2) point(std::integral_constant<int, 1>{});
+    for (int c = 0; c < 5; ++c) s.for_old[c][j] = fo[c], s.for_new[c][j] = fn[c];
+    for (int c = 0; c < 3; ++c) s.mom_old[c][j] = mo[c], s.mom_new[c][j] = mn[c];
+    s.dthick[j] = dth;
+    s.eps_p_max[j] = epm;
+    if constexpr (kFirst) s.w_plastic[j] = 0;
+  }
+  return any;
 }
 
-// Through-thickness update of element i: dem = membrane + transverse shear increments (xx yy xy yz zx,
-// engineering shears), dk = curvature increments (xx yy xy), t = mechanics thickness, area = current area,
-// gs = transverse shear modulus, off = element factor at the start of the cycle.
-inline void section_update(ShellGroup& g, int i, const MaterialParams& mat, const ThicknessRule& rule,
-                           double gs, double t, double area, double rate, double off, const double dem[5],
-                           const double dk[3], SectionUpdate& out) {
+template <bool kNewton, int B>
+std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParams& mat,
+                                const ShellYieldBound& yb, double gs, const ThicknessRule& rule, int p0,
+                                int pts, double* sig, double* eps_p) {
+  if (pts == 2)
+    return p0 == 0 ? section_point_pass<true, kNewton, 2>(s, len, mat, yb, gs, rule, p0, sig, eps_p)
+                   : section_point_pass<false, kNewton, 2>(s, len, mat, yb, gs, rule, p0, sig, eps_p);
+  return p0 == 0 ? section_point_pass<true, kNewton, 1>(s, len, mat, yb, gs, rule, p0, sig, eps_p)
+                 : section_point_pass<false, kNewton, 1>(s, len, mat, yb, gs, rule, p0, sig, eps_p);
+}
+
+// Section update of the block: N = 0 resultant elasticity, or the N points (1.4) with the material update
+// (6.3), thickness strain (1.8), plastic work (6.5) and the largest eps_p (6.4).
+template <int B>
+void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& mat,
+                          const ThicknessRule& rule, double gs, SectionBlock<B>& s) {
+  constexpr std::size_t G = kGroupSize;
   if (rule.n == 0) {
     // Resultant elasticity (LAW1, N = 0).
-    double* s = g.sig.data();
-    const std::size_t G = kGroupSize;
-    for (int c = 0; c < 5; ++c) out.for_old[c] = s[c * G + i];
-    for (int c = 0; c < 3; ++c) out.mom_old[c] = s[(5 + c) * G + i];
-    const double a11 = mat.a11, a12 = mat.a12, gm = mat.shear, t12 = t / 12.0;
-    out.for_new[0] = out.for_old[0] + a11 * dem[0] + a12 * dem[1];
-    out.for_new[1] = out.for_old[1] + a12 * dem[0] + a11 * dem[1];
-    out.for_new[2] = out.for_old[2] + gm * dem[2];
-    out.for_new[3] = out.for_old[3] + gs * dem[3];
-    out.for_new[4] = out.for_old[4] + gs * dem[4];
-    out.mom_new[0] = out.mom_old[0] + t12 * (a11 * dk[0] + a12 * dk[1]);
-    out.mom_new[1] = out.mom_old[1] + t12 * (a12 * dk[0] + a11 * dk[1]);
-    out.mom_new[2] = out.mom_old[2] + t12 * gm * dk[2];
-    for (int c = 0; c < 5; ++c) s[c * G + i] = out.for_new[c];
-    for (int c = 0; c < 3; ++c) s[(5 + c) * G + i] = out.mom_new[c];
-    // Elastic plane stress: dezz = -nu/(1 - nu) (dexx + deyy) at mid-surface.
-    out.dthick = -mat.nu / (1.0 - mat.nu) * (dem[0] + dem[1]) * t;
+    double* r = g.sig.data() + i0;
+    const double a11 = mat.a11, a12 = mat.a12, gm = mat.shear;
+    const double fz = -mat.nu / (1.0 - mat.nu);
+    RADX_IVDEP
+    for (int j = 0; j < len; ++j) {
+      const double t12 = s.t[j] / 12.0;
+      const bool live = s.off[j] > 0;
+      double fo[5], mo[3];
+      for (int c = 0; c < 5; ++c) fo[c] = r[c * G + j];
+      for (int c = 0; c < 3; ++c) mo[c] = r[(5 + c) * G + j];
+      const double fn[5] = {fo[0] + a11 * s.dem[0][j] + a12 * s.dem[1][j],
+                            fo[1] + a12 * s.dem[0][j] + a11 * s.dem[1][j], fo[2] + gm * s.dem[2][j],
+                            fo[3] + gs * s.dem[3][j], fo[4] + gs * s.dem[4][j]};
+      const double mn[3] = {mo[0] + t12 * (a11 * s.dk[0][j] + a12 * s.dk[1][j]),
+                            mo[1] + t12 * (a12 * s.dk[0][j] + a11 * s.dk[1][j]),
+                            mo[2] + t12 * gm * s.dk[2][j]};
+      for (int c = 0; c < 5; ++c) {
+        s.for_old[c][j] = fo[c];
+        s.for_new[c][j] = fn[c];
+        r[c * G + j] = live ? fn[c] : fo[c];
+      }
+      for (int c = 0; c < 3; ++c) {
+        s.mom_old[c][j] = mo[c];
+        s.mom_new[c][j] = mn[c];
+        r[(5 + c) * G + j] = live ? mn[c] : mo[c];
+      }
+      // Elastic plane stress: dezz = -nu/(1 - nu) (dexx + deyy) at mid-surface.
+      s.dthick[j] = fz * (s.dem[0][j] + s.dem[1][j]) * s.t[j];
+      s.w_plastic[j] = 0;
+      s.eps_p_max[j] = 0;
+    }
     return;
   }
   const int iplas = g.props.iplas;
-  const bool elastic = mat.law == model::MaterialLaw::Elastic;
-  double dthk = 0, wpl = 0, epmax = 0;
-  for (int p = 0; p < rule.n; ++p) {
-    double* sp = g.sig.data() + sig_index(p, 0, i);
-    double& ep = g.eps_p[static_cast<std::size_t>(p) * kGroupSize + static_cast<std::size_t>(i)];
-    const double z = rule.zeta[p] * t, w = rule.w[p], m = rule.m[p];
-    const double de[5] = {dem[0] + z * dk[0], dem[1] + z * dk[1], dem[2] + z * dk[2], dem[3], dem[4]};
-    double s[5];
-    for (int c = 0; c < 5; ++c) s[c] = sp[c * kGroupSize];
-    for (int c = 0; c < 5; ++c) out.for_old[c] += w * s[c];
-    for (int c = 0; c < 3; ++c) out.mom_old[c] += m * s[c];
-    const double svm_old = elastic ? 0.0 : von_mises_plane(s);
-    const ShellPointResult r = shell_point_update(mat, iplas, rate, off, de, gs, s, ep);
-    for (int c = 0; c < 5; ++c) sp[c * kGroupSize] = s[c];
-    for (int c = 0; c < 5; ++c) out.for_new[c] += w * s[c];
-    for (int c = 0; c < 3; ++c) out.mom_new[c] += m * s[c];
-    if (r.deps_p > 0) wpl += 0.5 * (svm_old + von_mises_plane(s)) * r.deps_p * w * t * area;
-    dthk += r.dezz * w;
-    epmax = std::max(epmax, ep);
+  const ShellYieldBound yb = shell_yield_bound(mat);
+  double* sig = g.sig.data() + i0;
+  double* eps_p = g.eps_p.data() + i0;
+  bool any_redo = false;
+  for (int p0 = 0; p0 < rule.n; p0 += 2) {
+    const int pts = std::min(2, rule.n - p0);  // two points per pass: the sums are loaded and stored once
+    const std::int64_t any = iplas == 1
+                                 ? section_point_pass<true>(s, len, mat, yb, gs, rule, p0, pts, sig, eps_p)
+                                 : section_point_pass<false>(s, len, mat, yb, gs, rule, p0, pts, sig, eps_p);
+    if (any == 0) continue;
+    // Deleted elements: stress put back. The points that may yield: the exact update from their stress
+    // before the step.
+    for (int q = 0; q < pts; ++q) {
+      const int p = p0 + q;
+      const double zeta = rule.zeta[p];
+      double* sp[5];
+      for (int c = 0; c < 5; ++c) sp[c] = g.sig.data() + sig_index(p, c, i0);
+      double* ep = g.eps_p.data() + static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0);
+      for (int j = 0; j < len; ++j) {
+        if (s.exact[q][j] == 0) continue;
+        if (s.off[j] <= 0) {
+          for (int c = 0; c < 5; ++c) sp[c][j] = s.old[q][c][j];
+          continue;
+        }
+        any_redo = true;
+        const double z = zeta * s.t[j];
+        const double de[5] = {s.dem[0][j] + z * s.dk[0][j], s.dem[1][j] + z * s.dk[1][j],
+                              s.dem[2][j] + z * s.dk[2][j], s.dem[3][j], s.dem[4][j]};
+        double sg[5] = {s.old[q][0][j], s.old[q][1][j], s.old[q][2][j], s.old[q][3][j], s.old[q][4][j]};
+        const ShellPointResult r = shell_point_update_r(mat, iplas, s.rfac[j], s.off[j], de, gs, sg, ep[j]);
+        for (int c = 0; c < 5; ++c) sp[c][j] = sg[c];
+        s.point_exact[p][j] = 1;
+        s.dezz_x[p][j] = r.dezz;
+        s.wp_x[p][j] = r.w_plastic;
+        s.redo[j] = 1;
+      }
+    }
   }
-  out.dthick = dthk * t;
-  out.w_plastic = wpl;
-  out.eps_p_max = epmax;
+  if (any_redo) {
+    // Sums after the update of the elements with an exactly updated point, redone in the order of the points.
+    for (int j = 0; j < len; ++j) {
+      if (s.redo[j] == 0) continue;
+      s.redo[j] = 0;
+      const double t = s.t[j];
+      double fn[5] = {0, 0, 0, 0, 0}, mn[3] = {0, 0, 0}, dthk = 0, wpl = 0, epmax = 0;
+      for (int p = 0; p < rule.n; ++p) {
+        const double w = rule.w[p], m = rule.m[p];
+        for (int c = 0; c < 5; ++c) fn[c] += w * g.sig[sig_index(p, c, i0 + j)];
+        for (int c = 0; c < 3; ++c) mn[c] += m * g.sig[sig_index(p, c, i0 + j)];
+        double dezz = 0, wp = 0;
+        if (s.point_exact[p][j] != 0) {
+          s.point_exact[p][j] = 0;
+          dezz = s.dezz_x[p][j];
+          wp = s.wp_x[p][j];
+        } else {
+          const double z = rule.zeta[p] * t;
+          dezz = shell_dezz(mat, s.dem[0][j] + z * s.dk[0][j], s.dem[1][j] + z * s.dk[1][j], 0.0);
+        }
+        wpl += wp * w * t * s.area[j];  // wp = 0 unless d_eps_p > 0
+        dthk += dezz * w;
+        epmax = std::max(epmax, g.eps_p[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)]);
+      }
+      for (int c = 0; c < 5; ++c) s.for_new[c][j] = fn[c];
+      for (int c = 0; c < 3; ++c) s.mom_new[c][j] = mn[c];
+      s.dthick[j] = dthk;
+      s.w_plastic[j] = wpl;
+      s.eps_p_max[j] = epmax;
+    }
+  }
+  RADX_IVDEP
+  for (int j = 0; j < len; ++j) s.dthick[j] *= s.t[j];
 }
 
-// Element factor after this cycle's material update (6.4). off_start = factor at the start of the cycle.
-inline double next_off(const MaterialParams& mat, double off_start, double eps_p_max) {
+// limit = EPS_p_max of a Johnson-Cook material, +infinity for a law that does not fail (failure_limit).
+inline double next_off(double limit, double off_start, double eps_p_max) {
   if (off_start < 1.0) return off_start < 0.1 ? 0.0 : 0.8 * off_start;
-  if (mat.law == model::MaterialLaw::JohnsonCook && eps_p_max >= mat.eps_p_max) return 0.8;
-  return off_start;
+  return eps_p_max >= limit ? 0.8 : off_start;
+}
+
+inline double failure_limit(const MaterialParams& mat) {
+  return mat.law == model::MaterialLaw::JohnsonCook ? mat.eps_p_max : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace radx::solver::shell_detail

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "solver/material_point.hpp"
@@ -14,6 +15,7 @@
 using radx::model::Material;
 using radx::model::MaterialLaw;
 using radx::solver::jc_flow_stress;
+using radx::solver::jc_rate_factor;
 using radx::solver::make_material_params;
 using radx::solver::MaterialParams;
 using radx::solver::shell_point_update;
@@ -487,6 +489,121 @@ TEST_CASE("shell point is isotropic in its plane (rotation about the normal comm
     const double sb6[6] = {sb[0], sb[1], 0.0, sb[2], sb[3], sb[4]};
     for (int i = 0; i < 6; ++i) CHECK(std::abs(sb6[i] - expect[i]) <= kRound * 500.0);
   }
+}
+
+TEST_CASE("shell point with the rate factor given: shell_point_update_r(R) is shell_point_update(rate)",
+          "[material]") {
+  // The shell kernels take R = jc_rate_factor(rate) once per element: the update must be the same to the bit.
+  Material capped = steel(MaterialLaw::JohnsonCook);
+  capped.sig_max0 = 420.0;
+  capped.icc = 2;
+  const MaterialParams mats[] = {make_material_params(steel(MaterialLaw::JohnsonCook)),
+                                 make_material_params(capped),
+                                 make_material_params(steel(MaterialLaw::Elastic))};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int plastic = 0;
+  for (const MaterialParams& p : mats)
+    for (const int iplas : {0, 1})
+      for (const double off : {1.0, 0.8})
+        for (const double rate : {0.0, 0.005, 0.01, 3.0, 2e3})
+          for (int k = 0; k < 20; ++k) {
+            const double gs = 5.0 / 6.0 * p.shear;
+            const double sig0[5] = {300 * u(rng), 300 * u(rng), 150 * u(rng), 20 * u(rng), 20 * u(rng)};
+            const double de[5] = {2e-3 * u(rng), 2e-3 * u(rng), 2e-3 * u(rng), 1e-3 * u(rng), 1e-3 * u(rng)};
+            const double eps0 = k % 3 == 0 ? 0.0 : 0.05 * (1.0 + u(rng));
+            double sa[5], sb[5];
+            std::copy(sig0, sig0 + 5, sa);
+            std::copy(sig0, sig0 + 5, sb);
+            double ea = eps0, eb = eps0;
+            const auto ra = shell_point_update(p, iplas, rate, off, de, gs, sa, ea);
+            const auto rb =
+                radx::solver::shell_point_update_r(p, iplas, jc_rate_factor(p, rate), off, de, gs, sb, eb);
+            for (int c = 0; c < 5; ++c) CHECK(sa[c] == sb[c]);
+            CHECK(ea == eb);
+            CHECK(ra.deps_p == rb.deps_p);
+            CHECK(ra.dezz == rb.dezz);
+            CHECK(ra.w_plastic == rb.w_plastic);
+            plastic += ra.deps_p > 0;
+            // Plastic work per volume (6.5): 1/2 (svm_old + svm_new) d_eps_p.
+            if (ra.deps_p > 0)
+              CHECK(close(ra.w_plastic, 0.5 * (vm_plane(sig0) + vm_plane(sa)) * ra.deps_p, kRound));
+            else
+              CHECK(ra.w_plastic == 0.0);
+          }
+  CHECK(plastic > 50);  // both paths were exercised
+  // R: exactly 1 at or below rate0 and for c = 0 (no logarithm); 1 + c ln(rate/rate0) above.
+  const MaterialParams& p = mats[0];
+  CHECK(jc_rate_factor(p, 0.0) == 1.0);
+  CHECK(jc_rate_factor(p, p.eps_dot0) == 1.0);
+  CHECK(close(jc_rate_factor(p, 50.0), 1.0 + p.c * std::log(50.0 / p.eps_dot0), kRound));
+  CHECK(jc_rate_factor(mats[2], 50.0) == 1.0);
+  Material no_rate = steel(MaterialLaw::JohnsonCook);
+  no_rate.c = 0;
+  CHECK(jc_rate_factor(make_material_params(no_rate), 1e6) == 1.0);
+}
+
+TEST_CASE("shell_stays_elastic: the points it passes take no plastic step, the points well inside pass",
+          "[material]") {
+  // The batched shell loops trust shell_stays_elastic to skip the exact update: a point it passes must come
+  // out of shell_point_update_r as its elastic trial (d_eps_p = 0, dezz = shell_dezz(.., 0)), to the bit.
+  // Trial states are scaled to svm / min(a R, SIG_max0) in [0.5, 1.5], with eps_p = 0 (flow stress = bound)
+  // or > 0 (flow stress above it).
+  Material capped = steel(MaterialLaw::JohnsonCook);
+  capped.sig_max0 = 260.0;
+  Material softening = steel(MaterialLaw::JohnsonCook);
+  softening.b = -100.0;  // the bound does not hold: never passed
+  const MaterialParams mats[] = {make_material_params(steel(MaterialLaw::JohnsonCook)),
+                                 make_material_params(capped), make_material_params(softening),
+                                 make_material_params(steel(MaterialLaw::Elastic))};
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int passed = 0, inside = 0;
+  for (int mi = 0; mi < 4; ++mi) {
+    const MaterialParams& p = mats[mi];
+    const radx::solver::ShellYieldBound yb = radx::solver::shell_yield_bound(p);
+    for (const int iplas : {0, 1})
+      for (const double off : {1.0, 0.8})
+        for (const double rate : {0.0, 40.0})
+          for (int k = 0; k < 200; ++k) {
+            const double r = jc_rate_factor(p, rate);
+            const double lb = std::min(p.a * r, p.sig_max0);
+            const double gs = 5.0 / 6.0 * p.shear;
+            const double de[5] = {1e-4 * u(rng), 1e-4 * u(rng), 1e-4 * u(rng), 1e-4 * u(rng), 1e-4 * u(rng)};
+            const double eps0 = k % 2 == 0 ? 0.0 : 0.02 * (1.0 + u(rng));
+            // A random direction, scaled so that the trial von Mises is `ratio` times the bound.
+            double sig0[5] = {u(rng), u(rng), u(rng), 10 * u(rng), 10 * u(rng)};
+            double t[5] = {sig0[0], sig0[1], sig0[2], sig0[3], sig0[4]};
+            radx::solver::shell_trial(p, gs, de[0], de[1], de[2], de[3], de[4], t[0], t[1], t[2], t[3], t[4]);
+            const double ratio = 1.0 + 0.5 * u(rng);
+            const double scale = ratio * lb / std::max(vm_plane(t), 1e-300);
+            for (int c = 0; c < 3; ++c) sig0[c] *= scale;
+            std::copy(sig0, sig0 + 5, t);
+            radx::solver::shell_trial(p, gs, de[0], de[1], de[2], de[3], de[4], t[0], t[1], t[2], t[3], t[4]);
+            const bool pass =
+                iplas == 1 ? radx::solver::shell_stays_elastic<true>(yb, r, off, eps0, t[0], t[1], t[2])
+                           : radx::solver::shell_stays_elastic<false>(yb, r, off, eps0, t[0], t[1], t[2]);
+            double sig[5];
+            std::copy(sig0, sig0 + 5, sig);
+            double eps_p = eps0;
+            const auto res = radx::solver::shell_point_update_r(p, iplas, r, off, de, gs, sig, eps_p);
+            if (pass) {
+              ++passed;
+              CHECK(res.deps_p == 0.0);
+              CHECK(eps_p == eps0);
+              for (int c = 0; c < 5; ++c) CHECK(sig[c] == t[c]);
+              CHECK(res.dezz == radx::solver::shell_dezz(p, de[0], de[1], 0.0));
+            }
+            if (mi == 2 && !(iplas == 1 && off != 1.0)) CHECK_FALSE(pass);  // b < 0: no bound
+            if (mi == 3) CHECK(pass);                                       // law 1 never yields
+            if (mi < 2 && vm_plane(t) < 0.999 * lb) {
+              ++inside;
+              CHECK(pass);  // well inside the bound: the fast path is taken
+            }
+          }
+  }
+  CHECK(passed > 1000);
+  CHECK(inside > 300);
 }
 
 TEST_CASE("solid point: pressure K mu, elastic shear G gamma, plastic return to sigma_y + d_eps_p H",
