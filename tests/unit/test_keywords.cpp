@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "parser/deck.hpp"
+#include "test_util.hpp"
 
 namespace {
 
@@ -33,33 +34,7 @@ using radx::Diagnostics;
 
 constexpr double kEps = 1e-12;
 
-// A fresh folder under the system temp folder, removed at the end of the test.
-class TempDir {
- public:
-  TempDir() {
-    static int counter = 0;
-    path_ = fs::temp_directory_path() /
-            ("radx_test_keywords_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  // Writes `text` as is (no line-end translation) and returns the path.
-  std::string write(const std::string& name, const std::string& text) const {
-    const fs::path p = path_ / name;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << text;
-    return p.string();
-  }
-
- private:
-  fs::path path_;
-};
+using radx::test::TempDir;
 
 // One card line: values placed right-justified in columns [first, last] (1-based, inclusive), or
 // left-justified from a column.

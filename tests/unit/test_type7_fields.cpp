@@ -23,6 +23,7 @@
 #include "parser/deck.hpp"
 #include "parser/model_builder.hpp"
 #include "solver/model/model.hpp"
+#include "test_util.hpp"
 
 namespace {
 
@@ -32,30 +33,7 @@ using radx::Diagnostics;
 
 constexpr double kEps = 1e-12;
 
-class TempDir {
- public:
-  TempDir() {
-    static int counter = 0;
-    path_ = fs::temp_directory_path() /
-            ("radx_test_type7_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  std::string write(const std::string& name, const std::string& text) const {
-    const fs::path p = path_ / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p.string();
-  }
-
- private:
-  fs::path path_;
-};
+using radx::test::TempDir;
 
 // One card line: values right-justified in columns [first, last] (1-based, inclusive).
 class Card {
