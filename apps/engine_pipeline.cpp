@@ -1,7 +1,9 @@
 #include "apps/engine_pipeline.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <ostream>
 
 #include "io/engine_listing.hpp"
@@ -55,11 +57,6 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
         << "; nothing was run\n";
     return 1;
   }
-  if (!controls.rbody_on.empty() || !controls.rbody_off.empty()) {
-    err << opt.engine_deck << ": error: RX509: /RBODY/ON and /RBODY/OFF are read but not supported by this "
-        << "version of the engine: remove them (every /RBODY of the model is active)\n";
-    return 1;
-  }
   const std::string root = run_output_root(opt.engine_deck);
   const std::string model_path =
       opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;
@@ -70,6 +67,20 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
         << "\n  run the starter first (radx-starter " << root << "_0000.rad), or give it with --model FILE\n";
     return 1;
   }
+  // /RBODY/ON and /RBODY/OFF name rigid bodies of the model. Every body is active at the start of a run
+  // (radx has no sensors), so ON keeps it and OFF leaves it out of this run.
+  bool unknown_body = false;
+  for (const auto* list : {&controls.rbody_on, &controls.rbody_off})
+    for (const auto id : *list) {
+      const bool found = std::any_of(model.rigid_bodies.begin(), model.rigid_bodies.end(),
+                                     [&](const model::RigidBody& b) { return b.id == id; });
+      if (!found) {
+        err << opt.engine_deck << ": error: RX402: /RBODY/" << (list == &controls.rbody_on ? "ON" : "OFF")
+            << " names rigid body " << id << ", which the model does not have\n";
+        unknown_body = true;
+      }
+    }
+  if (unknown_body) return 1;
   std::error_code ec;
   fs::create_directories(opt.out_dir, ec);
   const std::string listing_path = (fs::path(opt.out_dir) / (root + "_0001.out")).string();
@@ -79,8 +90,17 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return 1;
   }
 
-  solver::ExplicitEngine engine(model, controls,
-                                solver::EngineOptions{opt.threads, std::max(1, controls.print_every)});
+  // Kinematic conditions check what the starter could not (a moving wall without mass, a rigid body
+  // without inertia) and throw with a message; report it as an input error.
+  std::unique_ptr<solver::ExplicitEngine> engine_ptr;
+  try {
+    engine_ptr = std::make_unique<solver::ExplicitEngine>(
+        model, controls, solver::EngineOptions{opt.threads, std::max(1, controls.print_every)});
+  } catch (const std::exception& e) {
+    err << opt.engine_deck << ": error: " << e.what() << '\n';
+    return 1;
+  }
+  auto& engine = *engine_ptr;
   io::EngineListing listing(io::ListingSinks{&listing_file, &out, controls.print_stdout,
                                              io::stdout_is_terminal(), controls.print_header_every});
   io::EngineListingHeader h;
@@ -119,26 +139,32 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return l;
   };
   std::string stop_message;
-  const auto result = engine.run([&](const solver::CycleReport& r) {
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    listing.progress(r.cycle, r.time, controls.t_stop, wall);
-    if (!r.full) return true;
-    listing.line(to_line(r));
-    const double err_pct = r.energy.error_percent;
-    const bool err_hit = controls.stop_positive_error_only
-                             ? err_pct > controls.stop_energy_error_pct
-                             : std::abs(err_pct) > controls.stop_energy_error_pct;
-    if (err_hit) {
-      stop_message = "/STOP: energy error " + std::to_string(err_pct) + " % beyond " +
-                     std::to_string(controls.stop_energy_error_pct) + " %";
-      return false;
-    }
-    if (r.mass0 > 0 && (r.mass - r.mass0) / r.mass0 > controls.stop_mass_error) {
-      stop_message = "/STOP: mass error beyond " + std::to_string(controls.stop_mass_error);
-      return false;
-    }
-    return true;
-  });
+  solver::RunResult result;
+  try {
+    result = engine.run([&](const solver::CycleReport& r) {
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+      listing.progress(r.cycle, r.time, controls.t_stop, wall);
+      if (!r.full) return true;
+      listing.line(to_line(r));
+      const double err_pct = r.energy.error_percent;
+      const bool err_hit = controls.stop_positive_error_only
+                               ? err_pct > controls.stop_energy_error_pct
+                               : std::abs(err_pct) > controls.stop_energy_error_pct;
+      if (err_hit) {
+        stop_message = "/STOP: energy error " + std::to_string(err_pct) + " % beyond " +
+                       std::to_string(controls.stop_energy_error_pct) + " %";
+        return false;
+      }
+      if (r.mass0 > 0 && (r.mass - r.mass0) / r.mass0 > controls.stop_mass_error) {
+        stop_message = "/STOP: mass error beyond " + std::to_string(controls.stop_mass_error);
+        return false;
+      }
+      return true;
+    });
+  } catch (const std::exception& e) {
+    err << opt.engine_deck << ": error: " << e.what() << '\n';
+    return 1;
+  }
 
   io::RunSummary s;
   s.status = result.status == solver::RunStatus::Normal ? io::RunStatus::Normal : io::RunStatus::Error;

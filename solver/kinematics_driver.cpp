@@ -13,11 +13,12 @@ struct KinematicsDriver::Parts {
   ImposedVelocities impvel;
   std::unique_ptr<ExternalLoads> loads;
   double external_work = 0;
-  explicit Parts(const model::Model& m) : bcs(m), inivel(m), walls(m), bodies(m), impvel(m) {}
+  Parts(const model::Model& m, const model::RunControls& c)
+      : bcs(m), inivel(m), walls(m), bodies(m, c.rbody_off), impvel(m) {}
 };
 
 KinematicsDriver::KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes)
-    : model_(m), controls_(c), nodes_(nodes), parts_(std::make_unique<Parts>(m)) {}
+    : model_(m), controls_(c), nodes_(nodes), parts_(std::make_unique<Parts>(m, c)) {}
 
 KinematicsDriver::~KinematicsDriver() = default;
 

@@ -64,8 +64,11 @@ void orthonormalize(RowMat3& r) {
 
 }  // namespace
 
-RigidBodies::RigidBodies(const model::Model& m) : secondary_flag_(m.nodes.size(), 0) {
+RigidBodies::RigidBodies(const model::Model& m, std::span<const std::int64_t> inactive)
+    : secondary_flag_(m.nodes.size(), 0) {
   for (const auto& rb : m.rigid_bodies) {
+    // /RBODY/OFF in the engine deck: the body is not formed in this run; its nodes move freely.
+    if (std::find(inactive.begin(), inactive.end(), rb.id) != inactive.end()) continue;
     const std::string what = "/RBODY/" + std::to_string(rb.id);
     if (rb.main_node == model::kNone || static_cast<std::size_t>(rb.main_node) >= m.nodes.size())
       throw std::runtime_error(what + ": no main node");

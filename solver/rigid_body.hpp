@@ -40,6 +40,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "solver/model/model.hpp"
@@ -68,7 +69,8 @@ struct KineticCorrection {
 
 class RigidBodies {
  public:
-  explicit RigidBodies(const model::Model& m);
+  // `inactive`: user ids of the bodies switched off for this run (/RBODY/OFF).
+  explicit RigidBodies(const model::Model& m, std::span<const std::int64_t> inactive = {});
 
   // Once before cycle 0, after the nodal masses and inertias, /INIVEL and rigid walls are in the state.
   void initialize(NodeState& s);
