@@ -276,9 +276,16 @@ double ExplicitEngine::element_time_step(StepControl& control) {
                    StepControl::Kind kind, std::int64_t id) {
     double dt = scale * raw;
     if (fam.action == model::DtAction::Constant && fam.t_min > 0) {
-      if (frozen > 0)
+      if (frozen > 0) {
+        // Without the small-strain kinematics the element's own stable step keeps falling; below half the
+        // frozen step the run would go unstable, so it stops and says which element.
+        if (dt < 0.5 * frozen && cst_violation_.empty())
+          cst_violation_ = "element " + std::to_string(id) + " was held at the /DT/.../CST step " +
+                           std::to_string(frozen) + " but its own stable step fell to " + std::to_string(dt) +
+                           " (radx keeps large-strain kinematics after the switch); the run stops before it "
+                           "goes unstable: refine the mesh or use /DT/NODA/CST";
         dt = frozen;
-      else if (dt < fam.t_min && raw > 0) {
+      } else if (dt < fam.t_min && raw > 0) {
         frozen = fam.t_min;
         dt = frozen;
         ++switched_elements_;
@@ -429,6 +436,12 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     if (!(dt_elem > 0)) {
       res.status = RunStatus::Error;
       res.message = bad_element(time, cycle);
+      break;
+    }
+    if (!cst_violation_.empty()) {
+      res.status = RunStatus::Error;
+      res.message =
+          cst_violation_ + " (cycle " + std::to_string(cycle) + ", time " + std::to_string(time) + ")";
       break;
     }
     if (controls_.nodal.action == model::DtAction::AddMass && controls_.nodal.given) {

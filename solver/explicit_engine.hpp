@@ -122,6 +122,7 @@ class ExplicitEngine {
   EnergyBalance energy_;
   double mass0_ = 0;
   std::int64_t switched_elements_ = 0;  // elements whose step was frozen by /DT/<family>/CST
+  std::string cst_violation_;  // set when a frozen element's own step falls below half the frozen step
 };
 
 }  // namespace radx::solver

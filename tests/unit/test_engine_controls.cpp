@@ -216,3 +216,36 @@ TEST_CASE("/RBODY/OFF leaves the body out of the run; its nodes move freely", "[
   // Active: the secondary nodes follow the main node at rest.
   CHECK(std::abs(final_pz(false)) < 1e-9 * cube_mass * 1000.0);
 }
+
+TEST_CASE("/DT/BRICK/CST holds a brick's step at Tmin and stops if the brick's own step falls too far",
+          "[engine]") {
+  const double a = 10.0;
+  auto m = cube(a);
+  const double E = 210000, nu = 0.3, rho = 7.85e-9;
+  const double K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
+  const double c = std::sqrt((K + 4 * G / 3) / rho);
+  const double dt_own = 0.9 * a / (c * (0.05 + std::sqrt(1 + 0.05 * 0.05)));  // elements.md 4.4 at rest
+  double second_dt = 0;
+  auto run_with = [&](double t_min) {
+    radx::model::RunControls rc;
+    rc.t_stop = 20 * dt_own;
+    rc.brick.given = true;
+    rc.brick.action = radx::model::DtAction::Constant;
+    rc.brick.scale = 0.9;
+    rc.brick.t_min = t_min;
+    radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+    return engine.run([&](const radx::solver::CycleReport& r) {
+      if (r.cycle == 1) second_dt = r.dt;
+      return true;
+    });
+  };
+  // Tmin 1.2 x the brick's step: the step is Tmin exactly (the frozen value), the run ends normally.
+  const auto held = run_with(1.2 * dt_own);
+  CHECK(held.status == radx::solver::RunStatus::Normal);
+  CHECK(second_dt == Approx(1.2 * dt_own).epsilon(1e-12));
+  // Tmin 3 x the brick's step: the element's own step is below half the held step: the run stops and
+  // names the brick.
+  const auto stopped = run_with(3.0 * dt_own);
+  CHECK(stopped.status == radx::solver::RunStatus::Error);
+  CHECK(stopped.message.find("element 1") != std::string::npos);
+}
