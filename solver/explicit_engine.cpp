@@ -30,11 +30,6 @@ double shell_thickness(const model::Model& m, const model::ElementBlock& b, std:
 
 }  // namespace
 
-struct ExplicitEngine::Impl {
-  KinematicsDriver kinematics;
-  explicit Impl(const model::Model& m, const model::RunControls& c, NodeState& n) : kinematics(m, c, n) {}
-};
-
 ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunControls& controls,
                                EngineOptions options)
     : model_(model), controls_(controls), options_(options) {
@@ -43,12 +38,10 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
   build_nodes();
   build_groups();
   build_assembly();
-  impl_ = new Impl(model_, controls_, nodes_);
+  kinematics_ = std::make_unique<KinematicsDriver>(model_, controls_, nodes_);
 }
 
-ExplicitEngine::~ExplicitEngine() {
-  delete impl_;
-}
+ExplicitEngine::~ExplicitEngine() = default;
 
 void ExplicitEngine::build_nodes() {
   const auto& m = model_;
@@ -58,6 +51,9 @@ void ExplicitEngine::build_nodes() {
     nodes_.y[n] = nodes_.y0[n] = m.nodes.y[n];
     nodes_.z[n] = nodes_.z0[n] = m.nodes.z[n];
   }
+  // Masses are the starter's lumped masses (solver/model/masses.cpp); the engine adds the scalar
+  // rotational inertias, which only shells carry.
+  nodes_.mass = m.node_mass;
   auto X = [&](std::int32_t n) { return model::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]}; };
   auto rho_of = [&](std::int32_t part) { return m.materials[m.parts[part].material].rho; };
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
@@ -66,36 +62,21 @@ void ExplicitEngine::build_nodes() {
     const double a0 = model::quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[3]));
     const double me = rho_of(m.shells.part[e]) * t0 * a0;
     const double inertia = 0.25 * me * (a0 / 9.0 + t0 * t0 / 12.0);
-    for (int k = 0; k < 4; ++k) {
-      nodes_.mass[c[k]] += 0.25 * me;
-      nodes_.inertia[c[k]] += inertia;
-    }
+    for (int k = 0; k < 4; ++k) nodes_.inertia[c[k]] += inertia;
   }
   for (std::size_t e = 0; e < m.shells3.size(); ++e) {
     const auto* c = &m.shells3.conn[3 * e];
     const double t0 = shell_thickness(m, m.shells3, e);
     const model::Vec3 x[3] = {X(c[0]), X(c[1]), X(c[2])};
     const double a0 = model::triangle_area(x[0], x[1], x[2]);
-    const double me = rho_of(m.shells3.part[e]) * t0 * a0;
-    const double ie = me * (a0 / 4.5 + t0 * t0 / 12.0);
+    const double ie = rho_of(m.shells3.part[e]) * t0 * a0 * (a0 / 4.5 + t0 * t0 / 12.0);
     for (int k = 0; k < 3; ++k) {
       const auto u = model::sub(x[(k + 1) % 3], x[k]);
       const auto v = model::sub(x[(k + 2) % 3], x[k]);
       const double cosang = std::clamp(model::dot(u, v) / (model::norm(u) * model::norm(v)), -1.0, 1.0);
-      const double share = std::acos(cosang) / std::numbers::pi;
-      nodes_.mass[c[k]] += me * share;
-      nodes_.inertia[c[k]] += ie * share;
+      nodes_.inertia[c[k]] += ie * std::acos(cosang) / std::numbers::pi;
     }
   }
-  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
-    const auto* c = &m.bricks.conn[8 * e];
-    std::array<model::Vec3, 8> x{};
-    for (int k = 0; k < 8; ++k) x[k] = X(c[k]);
-    const double me = rho_of(m.bricks.part[e]) * model::brick_volume(x);
-    for (int k = 0; k < 8; ++k) nodes_.mass[c[k]] += 0.125 * me;
-  }
-  mass0_ = 0;
-  for (double v : nodes_.mass) mass0_ += v;
 }
 
 void ExplicitEngine::build_groups() {
@@ -393,7 +374,7 @@ CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
     mass += nodes_.mass[n];
     added += nodes_.added_mass[n];
   }
-  r.mass = mass + impl_->kinematics.mass_correction();
+  r.mass = mass + kinematics_->mass_correction();
   r.added_mass = added;
   return r;
 }
@@ -405,7 +386,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
   const auto t_wall0 = std::chrono::steady_clock::now();
   double element_seconds = 0;
   auto& s = nodes_;
-  auto& kin = impl_->kinematics;
+  auto& kin = *kinematics_;
   kin.initial_conditions();
   // Reference mass after the set-up (rigid bodies and moving walls may add mass).
   mass0_ = kin.mass_correction();

@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,8 @@
 #include "solver/node_state.hpp"
 
 namespace radx::solver {
+
+class KinematicsDriver;
 
 struct EnergyBalance {
   double kinetic_t = 0, kinetic_r = 0, internal = 0, hourglass = 0, external_work = 0, plastic_work = 0;
@@ -91,7 +94,6 @@ class ExplicitEngine {
   [[nodiscard]] std::size_t element_count() const { return element_count_; }
 
  private:
-  struct Impl;
   void build_nodes();
   void build_groups();
   void build_assembly();
@@ -118,7 +120,7 @@ class ExplicitEngine {
   };
   std::vector<std::size_t> slot_offsets_;
   std::vector<Slot> slots_;
-  Impl* impl_ = nullptr;  // kinematic conditions and loads (owned)
+  std::unique_ptr<KinematicsDriver> kinematics_;  // loads and kinematic conditions
   EnergyBalance energy_;
   double mass0_ = 0;
   std::int64_t switched_elements_ = 0;  // elements whose step was frozen by /DT/<family>/CST
