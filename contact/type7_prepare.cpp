@@ -23,6 +23,7 @@
 #include <limits>
 
 #include "solver/model/geometry.hpp"
+#include "solver/model/masses.hpp"
 
 namespace radx::contact {
 
@@ -92,11 +93,8 @@ double closest_point_segment(const Vec3& p, const std::array<Vec3, 4>& x, bool t
 }
 
 double shell_element_thickness(const model::Model& m, model::ElementType type, std::int32_t e) {
-  const auto& b = type == model::ElementType::Shell3 ? m.shells3 : m.shells;
-  if (b.thickness[e] > 0) return b.thickness[e];
-  const auto part = b.part[e];
-  if (part == kNone || m.parts[part].property == kNone) return 0.0;
-  return m.properties[m.parts[part].property].shell.thickness;
+  return model::shell_thickness(m, type == model::ElementType::Shell3 ? m.shells3 : m.shells,
+                                static_cast<std::size_t>(e));
 }
 
 double shell_contact_thickness(const model::Model& m, model::ElementType type, std::int32_t e) {

@@ -15,18 +15,13 @@
 
 #include "solver/kinematics_driver.hpp"
 #include "solver/model/geometry.hpp"
+#include "solver/model/masses.hpp"
 
 namespace radx::solver {
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double shell_thickness(const model::Model& m, const model::ElementBlock& b, std::size_t e) {
-  if (b.thickness[e] > 0) return b.thickness[e];
-  const auto part = b.part[e];
-  return m.properties[m.parts[part].property].shell.thickness;
-}
 
 }  // namespace
 
@@ -58,7 +53,7 @@ void ExplicitEngine::build_nodes() {
   auto rho_of = [&](std::int32_t part) { return m.materials[m.parts[part].material].rho; };
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
     const auto* c = &m.shells.conn[4 * e];
-    const double t0 = shell_thickness(m, m.shells, e);
+    const double t0 = model::shell_thickness(m, m.shells, e);
     const double a0 = model::quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[3]));
     const double me = rho_of(m.shells.part[e]) * t0 * a0;
     const double inertia = 0.25 * me * (a0 / 9.0 + t0 * t0 / 12.0);
@@ -66,7 +61,7 @@ void ExplicitEngine::build_nodes() {
   }
   for (std::size_t e = 0; e < m.shells3.size(); ++e) {
     const auto* c = &m.shells3.conn[3 * e];
-    const double t0 = shell_thickness(m, m.shells3, e);
+    const double t0 = model::shell_thickness(m, m.shells3, e);
     const model::Vec3 x[3] = {X(c[0]), X(c[1]), X(c[2])};
     const double a0 = model::triangle_area(x[0], x[1], x[2]);
     const double ie = rho_of(m.shells3.part[e]) * t0 * a0 * (a0 / 4.5 + t0 * t0 / 12.0);
@@ -125,7 +120,7 @@ void ExplicitEngine::build_groups() {
           g.conn[static_cast<std::size_t>(q * kGroupSize + i)] =
               b.conn[e * static_cast<std::size_t>(npe) + q];
         if (triangle) g.conn[static_cast<std::size_t>(3 * kGroupSize + i)] = b.conn[e * 3 + 2];
-        const double t0 = shell_thickness(m, b, e);
+        const double t0 = model::shell_thickness(m, b, e);
         g.t0[static_cast<std::size_t>(i)] = g.thick[static_cast<std::size_t>(i)] = t0;
       }
       shells_.push_back(std::move(g));

@@ -8,6 +8,13 @@
 
 namespace radx::model {
 
+double shell_thickness(const Model& m, const ElementBlock& b, std::size_t e) {
+  if (b.thickness[e] > 0) return b.thickness[e];
+  const auto part = b.part[e];
+  if (part == kNone || m.parts[part].property == kNone) return 0.0;
+  return m.properties[m.parts[part].property].shell.thickness;
+}
+
 void compute_lumped_masses(Model& m) {
   m.node_mass.assign(m.nodes.size(), 0.0);
   auto X = [&](std::int32_t n) { return Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]}; };
@@ -15,12 +22,6 @@ void compute_lumped_masses(Model& m) {
     if (part == kNone) return 0.0;
     const auto mat = m.parts[part].material;
     return mat == kNone ? 0.0 : m.materials[mat].rho;
-  };
-  auto shell_t = [&](const ElementBlock& b, std::size_t e) -> double {
-    if (b.thickness[e] > 0) return b.thickness[e];
-    const auto part = b.part[e];
-    if (part == kNone || m.parts[part].property == kNone) return 0.0;
-    return m.properties[m.parts[part].property].shell.thickness;
   };
   auto valid = [](const ElementBlock& b, std::size_t e) {
     for (int k = 0; k < b.npe(); ++k)
@@ -30,8 +31,8 @@ void compute_lumped_masses(Model& m) {
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
     if (!valid(m.shells, e)) continue;
     const auto* c = &m.shells.conn[4 * e];
-    const double me =
-        rho_of(m.shells.part[e]) * shell_t(m.shells, e) * quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[3]));
+    const double me = rho_of(m.shells.part[e]) * shell_thickness(m, m.shells, e) *
+                      quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[3]));
     for (int k = 0; k < 4; ++k) m.node_mass[c[k]] += 0.25 * me;
     m.parts[m.shells.part[e]].mass += me;
   }
@@ -39,7 +40,8 @@ void compute_lumped_masses(Model& m) {
     if (!valid(m.shells3, e)) continue;
     const auto* c = &m.shells3.conn[3 * e];
     const Vec3 x[3] = {X(c[0]), X(c[1]), X(c[2])};
-    const double me = rho_of(m.shells3.part[e]) * shell_t(m.shells3, e) * triangle_area(x[0], x[1], x[2]);
+    const double me =
+        rho_of(m.shells3.part[e]) * shell_thickness(m, m.shells3, e) * triangle_area(x[0], x[1], x[2]);
     for (int k = 0; k < 3; ++k) {
       const auto a = sub(x[(k + 1) % 3], x[k]);
       const auto b = sub(x[(k + 2) % 3], x[k]);

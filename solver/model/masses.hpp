@@ -8,6 +8,10 @@
 
 namespace radx::model {
 
+// Thickness a shell element uses for its mechanics and mass (deck-format.md 5.4): the element card's
+// value if > 0, else its property's; 0 when neither is known.
+double shell_thickness(const Model& m, const ElementBlock& b, std::size_t e);
+
 // Fills m.node_mass, every part's mass and m.total_mass from the current coordinates. Elements with a
 // missing node or part are skipped (the starter has reported them).
 void compute_lumped_masses(Model& m);
