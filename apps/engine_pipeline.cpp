@@ -1,5 +1,7 @@
 #include "apps/engine_pipeline.hpp"
 
+#include "apps/engine_outputs.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -93,14 +95,22 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   // Kinematic conditions check what the starter could not (a moving wall without mass, a rigid body
   // without inertia) and throw with a message; report it as an input error.
   std::unique_ptr<solver::ExplicitEngine> engine_ptr;
+  std::unique_ptr<EngineOutputs> outputs;
+  solver::EngineOptions engine_options(opt.threads, std::max(1, controls.print_every));
+  engine_options.output_due = [&outputs](double t) { return outputs && outputs->due(t); };
   try {
-    engine_ptr = std::make_unique<solver::ExplicitEngine>(
-        model, controls, solver::EngineOptions{opt.threads, std::max(1, controls.print_every)});
+    engine_ptr = std::make_unique<solver::ExplicitEngine>(model, controls, engine_options);
   } catch (const std::exception& e) {
     err << opt.engine_deck << ": error: " << e.what() << '\n';
     return 1;
   }
   auto& engine = *engine_ptr;
+  try {
+    outputs = std::make_unique<EngineOutputs>(model, controls, engine, opt.out_dir, root);
+  } catch (const std::exception& e) {
+    err << "radx-engine: error: cannot write the results: " << e.what() << '\n';
+    return 1;
+  }
   io::EngineListing listing(io::ListingSinks{&listing_file, &out, controls.print_stdout,
                                              io::stdout_is_terminal(), controls.print_header_every});
   io::EngineListingHeader h;
@@ -145,6 +155,13 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
       listing.progress(r.cycle, r.time, controls.t_stop, wall);
       if (!r.full) return true;
+      try {
+        outputs->on_report(r);
+      } catch (const std::exception& e) {
+        stop_message = std::string("cannot write the results: ") + e.what();
+        return false;
+      }
+      if (r.cycle % std::max(1, controls.print_every) != 0 && r.time < controls.t_stop) return true;
       listing.line(to_line(r));
       const double err_pct = r.energy.error_percent;
       const bool err_hit = controls.stop_positive_error_only
@@ -166,6 +183,15 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return 1;
   }
 
+  // The last state and time-history row, also after an error stop, and the energy plot.
+  try {
+    outputs->finish(result, opt.plot, err);
+  } catch (const std::exception& e) {
+    err << "radx-engine: error: cannot write the results: " << e.what() << '\n';
+    if (stop_message.empty()) stop_message = std::string("cannot write the results: ") + e.what();
+    result.status = solver::RunStatus::Error;
+  }
+
   io::RunSummary s;
   s.status = result.status == solver::RunStatus::Normal ? io::RunStatus::Normal : io::RunStatus::Error;
   s.message = !stop_message.empty()    ? stop_message
@@ -185,6 +211,11 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   s.added_mass = result.last.added_mass;
   s.momentum = result.last.momentum;
   s.energy = to_io(result.last.energy);
+  s.states = outputs->states_written();
+  s.series = outputs->series_path();
+  if (!model.time_histories.empty() || controls.th_dt < 1e29)
+    s.time_history = (fs::path(opt.out_dir) / (root + "_th.h5")).string();
+  s.output_seconds = outputs->seconds_writing();
   listing.summary(s);
   if (!io::write_summary_json(io::summary_json_path(opt.out_dir, root), s, error)) {
     err << "radx-engine: " << error << '\n';

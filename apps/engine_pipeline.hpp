@@ -12,7 +12,8 @@ struct EngineOptions {
   std::string engine_deck;  // NAME_0001.rad (or a one-file deck)
   std::string model_file;   // default: NAME_0000.hdf in the output folder
   std::string out_dir = ".";
-  int threads = 0;  // 0: OMP_NUM_THREADS or all cores
+  int threads = 0;   // 0: OMP_NUM_THREADS or all cores
+  bool plot = true;  // draw NAME_energy.png at the end (--no-plot)
 };
 
 // 0 normal termination, 1 input error or error termination.

@@ -8,18 +8,21 @@
 namespace {
 
 void usage(std::ostream& os) {
-  os << "usage: radx-engine [NAME_0001.rad] [--out DIR] [--model FILE] [--threads N]\n"
+  os << "usage: radx-engine [NAME_0001.rad] [--out DIR] [--model FILE] [--threads N] [--no-plot]\n"
         "       radx-engine -i NAME_0001.rad ...\n"
         "\n"
         "Runs the explicit engine: reads the engine deck and the starter's model file NAME_0000.hdf (in the\n"
         "output folder unless --model is given), and writes the listing NAME_0001.out (also on stdout) and\n"
-        "NAME_summary.json in the current folder or in DIR.\n"
+        "NAME_summary.json, the animation states for ParaView (open NAME.hdf.series; also NAME.xmf), the\n"
+        "time history NAME_th.h5 (read it with `radx th`) and the energy balance NAME_energy.csv and\n"
+        "NAME_energy.png in the current folder or in DIR.\n"
         "\n"
         "  -i DECK        the engine deck\n"
         "  --out DIR      output folder (default: the current folder)\n"
         "  --model FILE   the model file (default: DIR/NAME_0000.hdf)\n"
         "  --threads N    OpenMP threads (default: OMP_NUM_THREADS, else all cores); results do not depend "
         "on it\n"
+        "  --no-plot      do not draw NAME_energy.png (the CSV is still written)\n"
         "  --help, --version\n"
         "\n"
         "Exit code: 0 normal termination, 1 input error or error termination, 2 usage errors.\n";
@@ -60,6 +63,8 @@ int main(int argc, char** argv) {
         std::cerr << "radx-engine: --threads needs a positive integer\n";
         return radx::app::kExitUsage;
       }
+    } else if (a == "--no-plot") {
+      opt.plot = false;
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << "radx-engine: unknown option " << a << '\n';
       usage(std::cerr);

@@ -1,6 +1,6 @@
 // radx: the driver. `radx check DECK` runs every starter check (and the engine deck's, when one is
 // beside it or in the same one-file deck) without writing anything; `radx keywords` prints the
-// keyword reference generated from the declarations.
+// keyword reference generated from the declarations; `radx th FILE` lists or exports a time history.
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -11,6 +11,8 @@
 #include "apps/cli_common.hpp"
 #include "apps/engine_pipeline.hpp"
 #include "apps/starter_pipeline.hpp"
+#include "io/time_history.hpp"
+#include "io/time_history_export.hpp"
 #include "parser/deck.hpp"
 #include "parser/deck_echo.hpp"
 
@@ -25,10 +27,16 @@ void usage(std::ostream& os) {
         "  keywords [--markdown] [--output FILE]\n"
         "                              the keyword reference (every keyword, card, field and diagnostic "
         "code)\n"
-        "  run [DECK] [--out DIR] [--threads N]\n"
+        "  run [DECK] [--out DIR] [--threads N] [--no-plot]\n"
         "                              the starter then the engine: DECK is NAME_0000.rad (NAME_0001.rad "
         "beside\n"
         "                              it) or a one-file deck; without DECK, the embedded default deck\n"
+        "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]...]\n"
+        "                              a time history P_th.h5: without --csv, list its groups (objects,\n"
+        "                              variables, units, rows, time range); with --csv, write the chosen\n"
+        "                              columns (all by default) as CSV to OUT.csv or standard output.\n"
+        "                              SELECTOR: a group (node/1), a column (global:IE, node/1:12:DX) or an\n"
+        "                              object's columns (node/1:12); '*' and '?' are wildcards; repeatable\n"
         "  regress                     not available yet\n"
         "\n"
         "  --help, --version\n"
@@ -69,6 +77,8 @@ int run(const std::vector<std::string>& args) {
         std::cerr << "radx run: --threads needs a positive integer\n";
         return radx::app::kExitUsage;
       }
+    } else if (a == "--no-plot") {
+      eopt.plot = false;
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << "radx run: unknown option " << a << '\n';
       return radx::app::kExitUsage;
@@ -126,6 +136,66 @@ int keywords(const std::vector<std::string>& args) {
   return radx::app::kExitOk;
 }
 
+// Parsing only: reading, selecting and writing are io's (io/time_history_export.hpp).
+int th(const std::vector<std::string>& args) {
+  std::string file, output;
+  bool csv = false, have_output = false;
+  std::vector<std::string> selectors;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if ((a == "-o" || a == "--output" || a == "--var") && i + 1 >= args.size()) {
+      std::cerr << "radx th: " << a << " needs a value\n";
+      return radx::app::kExitUsage;
+    }
+    if (a == "--csv") {
+      csv = true;
+    } else if (a == "-o" || a == "--output") {
+      output = args[++i];
+      have_output = true;
+    } else if (a == "--var") {
+      selectors.push_back(args[++i]);
+    } else if (!a.empty() && a[0] == '-') {
+      std::cerr << "radx th: unknown option " << a << '\n';
+      return radx::app::kExitUsage;
+    } else if (file.empty()) {
+      file = a;
+    } else {
+      std::cerr << "radx th: one file at a time\n";
+      return radx::app::kExitUsage;
+    }
+  }
+  if (file.empty()) {
+    std::cerr << "radx th: give a time-history file (P_th.h5)\n";
+    return radx::app::kExitUsage;
+  }
+  if (!csv && (have_output || !selectors.empty())) {
+    std::cerr << "radx th: -o and --var go with --csv\n";
+    return radx::app::kExitUsage;
+  }
+  std::vector<radx::io::ThGroupData> groups;
+  std::string error;
+  if (!radx::io::read_time_history(file, groups, error)) {
+    std::cerr << "radx th: " << error << '\n';
+    return radx::app::kExitInputError;
+  }
+  if (!csv) {
+    radx::io::list_time_history(file, groups, std::cout);
+    return radx::app::kExitOk;
+  }
+  std::vector<radx::io::ThColumnRef> chosen;
+  if (!radx::io::select_th_columns(groups, selectors, chosen, error)) {
+    std::cerr << "radx th: " << file << ": " << error << '\n';
+    return radx::app::kExitInputError;
+  }
+  const bool written = have_output ? radx::io::write_th_csv_file(groups, chosen, output, error)
+                                   : radx::io::write_th_csv(groups, chosen, std::cout, error);
+  if (!written) {
+    std::cerr << "radx th: " << file << ": " << error << '\n';
+    return radx::app::kExitInputError;
+  }
+  return radx::app::kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -146,6 +216,7 @@ int main(int argc, char** argv) {
   if (cmd == "check") return check(args);
   if (cmd == "keywords") return keywords(args);
   if (cmd == "run") return run(args);
+  if (cmd == "th") return th(args);
   if (cmd == "regress") {
     std::cerr
         << "radx regress: not available in this version (batch regression of sample decks comes later); "

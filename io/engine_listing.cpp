@@ -239,6 +239,14 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
          << in.switched_pairs_total << '\n';
     }
   }
+  if (s.states > 0 || !s.time_history.empty()) {
+    heading(os, "RESULTS");
+    if (s.states > 0) row(os, "animation states", std::to_string(s.states) + " in " + s.series);
+    if (!s.time_history.empty()) row(os, "time history", s.time_history);
+    std::snprintf(buf, sizeof buf, " (%.1f %% of the wall time)",
+                  s.wall_seconds > 0 ? 100.0 * s.output_seconds / s.wall_seconds : 0.0);
+    row(os, "writing time", format_duration(s.output_seconds) + buf);
+  }
   os << rule;
   os << "  " << (s.status == RunStatus::Normal ? "NORMAL TERMINATION" : "ERROR TERMINATION") << '\n';
 }

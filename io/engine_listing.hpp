@@ -108,6 +108,11 @@ struct RunSummary {
   std::array<double, 3> momentum{0, 0, 0};
   EnergyBalance energy;
   std::vector<InterfaceSummary> interfaces;
+  // Result files (empty when none were written) and the wall time spent writing them.
+  int states = 0;
+  std::string series;        // the ParaView index P.hdf.series
+  std::string time_history;  // P_th.h5, or empty
+  double output_seconds = 0;
 };
 
 // Wall microseconds per element per cycle: 1e6 wall / (elements cycles); 0 when either count is 0.

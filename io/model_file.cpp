@@ -1,9 +1,11 @@
 // Model file writer and reader (layout: docs/model-file.md; VTKHDF part: results-format.md section 2).
 //
 // How the code is organised:
-// - Handle: RAII owner of an hid_t; every HDF5 call that can fail goes through Handle or check(), which
-//   throw Failure with the path of the HDF5 object and the innermost message of the HDF5 error stack.
-//   write_model_file / read_model_file catch it and return false: nothing else escapes.
+// - HDF5 calls go through the helpers of io/hdf5_util.hpp (Handle, check, typed datasets and
+//   attributes), which throw h5::Failure with the path of the HDF5 object and the innermost message of
+//   the HDF5 error stack. write_model_file / read_model_file catch it and return false: nothing else
+//   escapes.
+// - The /VTKHDF mesh is written by io/vtkhdf_mesh.cpp, shared with the result mesh file P.mesh.hdf.
 // - Schema<S>: one table per Model struct of (member name, member pointer). It drives both directions:
 //   a collection (vector of records) is written as a "table" group: attribute count, one dataset per
 //   member (a column), variable-length members as CSR (values + <name>_offsets), nested structs
@@ -13,18 +15,18 @@
 //   layout, no fill, no conversion (memory and file types are both little-endian).
 #include "io/model_file.hpp"
 
-#include <fcntl.h>
 #include <hdf5.h>
-#include <unistd.h>
 
 #include <array>
 #include <filesystem>
 #include <limits>
-#include <stdexcept>
 #include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#include "io/hdf5_util.hpp"
+#include "io/vtkhdf_mesh.hpp"
 
 #ifndef RADX_VERSION
 #define RADX_VERSION "unknown"
@@ -36,114 +38,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using model::Model;
-
-// ---------------------------------------------------------------------------------------------------
-// Errors and handles
-
-struct Failure : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-// Innermost (most specific) message of the HDF5 error stack, e.g. "unable to open file: name = ...,
-// errno = 2, error message = 'No such file or directory'". Clears the stack.
-std::string hdf5_detail() {
-  std::string detail;
-  H5Ewalk2(
-      H5E_DEFAULT, H5E_WALK_UPWARD,
-      [](unsigned n, const H5E_error2_t* e, void* data) -> herr_t {
-        if (n == 0 && e->desc != nullptr) *static_cast<std::string*>(data) = e->desc;
-        return 0;
-      },
-      &detail);
-  H5Eclear2(H5E_DEFAULT);
-  return detail;
-}
-
-[[noreturn]] void fail(const std::string& what) {
-  const std::string detail = hdf5_detail();
-  throw Failure(detail.empty() ? what : what + " (HDF5: " + detail + ")");
-}
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) fail(what);
-}
-
-// Silences HDF5's automatic error printing while we run; failures are reported through `error`.
-class QuietHdf5 {
- public:
-  QuietHdf5() {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-  QuietHdf5(const QuietHdf5&) = delete;
-  QuietHdf5& operator=(const QuietHdf5&) = delete;
-
- private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
-
-class Handle {
- public:
-  using Closer = herr_t (*)(hid_t);
-  Handle(hid_t id, Closer close, const std::string& what) : id_(id), close_(close) {
-    if (id_ < 0) fail(what);
-  }
-  Handle(Handle&& o) noexcept : id_(std::exchange(o.id_, -1)), close_(o.close_) {}
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  Handle& operator=(Handle&&) = delete;
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  operator hid_t() const { return id_; }  // NOLINT: used as an hid_t in HDF5 calls
-  // Closes now and reports a failure (for a file: the data may not be complete on disk).
-  void close(const std::string& what) { check(close_(std::exchange(id_, -1)), what); }
-
- private:
-  hid_t id_;
-  Closer close_;
-};
-
-// Path of the object `loc` ("/radx/materials"), or of its member `name` ("/radx/materials/rho").
-std::string path_of(hid_t loc, const std::string& name) {
-  std::string base;
-  const ssize_t n = H5Iget_name(loc, nullptr, 0);
-  if (n > 0) {
-    base.resize(static_cast<std::size_t>(n));
-    H5Iget_name(loc, base.data(), static_cast<std::size_t>(n) + 1);
-  }
-  if (name.empty()) return base.empty() ? "/" : base;
-  if (base.empty() || base.back() != '/') base += '/';
-  return base + name;
-}
+// The generic HDF5 helpers are this file's vocabulary: used unqualified.
+using namespace radx::io::h5;  // NOLINT(google-build-using-namespace)
 
 // ---------------------------------------------------------------------------------------------------
 // Types
-
-template <class T>
-struct Hdf5Type;
-template <>
-struct Hdf5Type<double> {
-  static hid_t mem() { return H5T_NATIVE_DOUBLE; }
-  static hid_t file() { return H5T_IEEE_F64LE; }
-};
-template <>
-struct Hdf5Type<std::int64_t> {
-  static hid_t mem() { return H5T_NATIVE_INT64; }
-  static hid_t file() { return H5T_STD_I64LE; }
-};
-template <>
-struct Hdf5Type<std::int32_t> {
-  static hid_t mem() { return H5T_NATIVE_INT32; }
-  static hid_t file() { return H5T_STD_I32LE; }
-};
-template <>
-struct Hdf5Type<std::uint8_t> {
-  static hid_t mem() { return H5T_NATIVE_UINT8; }
-  static hid_t file() { return H5T_STD_U8LE; }
-};
 
 // How a member type is stored: bool as uint8 (0/1), enums as their underlying integer.
 template <class M>
@@ -182,177 +81,6 @@ template <class M>
 inline constexpr bool kIsArray = false;
 template <class E, std::size_t K>
 inline constexpr bool kIsArray<std::array<E, K>> = true;
-
-Handle vlen_string_type() {
-  Handle t(H5Tcopy(H5T_C_S1), H5Tclose, "cannot create the string type");
-  check(H5Tset_size(t, H5T_VARIABLE), "cannot create the string type");
-  check(H5Tset_cset(t, H5T_CSET_UTF8), "cannot create the string type");
-  return t;
-}
-
-// Frees the strings HDF5 allocated in a variable-length string read. (H5Treclaim is declared by the
-// 1.10.8 headers but not exported by Debian 12's libhdf5: use the 1.10 name there.)
-void reclaim_strings(hid_t type, hid_t space, void* buf) {
-#if H5_VERSION_GE(1, 12, 0)
-  H5Treclaim(type, space, H5P_DEFAULT, buf);
-#else
-  H5Dvlen_reclaim(type, space, H5P_DEFAULT, buf);
-#endif
-}
-
-Handle simple_space(const std::vector<hsize_t>& dims, const std::string& what) {
-  return Handle(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose, what);
-}
-
-// ---------------------------------------------------------------------------------------------------
-// Groups, datasets, attributes
-
-Handle create_group(hid_t loc, const std::string& name) {
-  return Handle(H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
-                "cannot create group " + path_of(loc, name));
-}
-
-Handle open_group(hid_t loc, const std::string& name) {
-  return Handle(H5Gopen2(loc, name.c_str(), H5P_DEFAULT), H5Gclose,
-                "cannot open group " + path_of(loc, name));
-}
-
-// Creates a contiguous dataset and writes it with a single H5Dwrite. `data` holds product(dims) values.
-void write_raw(hid_t loc, const std::string& name, hid_t file_type, hid_t mem_type, const void* data,
-               const std::vector<hsize_t>& dims) {
-  const std::string what = "cannot write dataset " + path_of(loc, name);
-  const Handle space = simple_space(dims, what);
-  const Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, what);
-  check(H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER), what);
-  const Handle ds(H5Dcreate2(loc, name.c_str(), file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose,
-                  what);
-  hsize_t count = 1;
-  for (const hsize_t d : dims) count *= d;
-  if (count > 0) check(H5Dwrite(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), what);
-}
-
-// 1-D dataset [size] when cols == 0, else [size / cols, cols].
-template <class T>
-void write_dataset(hid_t loc, const std::string& name, const std::vector<T>& v, hsize_t cols = 0) {
-  std::vector<hsize_t> dims{v.size()};
-  if (cols > 0) dims = {v.size() / cols, cols};
-  write_raw(loc, name, Hdf5Type<T>::file(), Hdf5Type<T>::mem(), v.data(), dims);
-}
-
-// Reads a 1-D dataset (cols == 0) or a [n, cols] dataset, flattened row-major.
-template <class T>
-std::vector<T> read_dataset(hid_t loc, const std::string& name, hsize_t cols = 0) {
-  const std::string where = "dataset " + path_of(loc, name);
-  const Handle ds(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose, "cannot open " + where);
-  const Handle space(H5Dget_space(ds), H5Sclose, "cannot read " + where);
-  const int rank = H5Sget_simple_extent_ndims(space);
-  const int want = cols > 0 ? 2 : 1;
-  if (rank != want) {
-    throw Failure(where + " has rank " + std::to_string(rank) + ", expected " + std::to_string(want));
-  }
-  std::array<hsize_t, 2> dims{0, 0};
-  check(H5Sget_simple_extent_dims(space, dims.data(), nullptr), "cannot read " + where);
-  if (cols > 0 && dims[1] != cols) {
-    throw Failure(where + " has " + std::to_string(dims[1]) + " columns, expected " + std::to_string(cols));
-  }
-  std::vector<T> out(static_cast<std::size_t>(dims[0] * (cols > 0 ? cols : 1)));
-  if (!out.empty()) {
-    check(H5Dread(ds, Hdf5Type<T>::mem(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "cannot read " + where);
-  }
-  return out;
-}
-
-void write_strings(hid_t loc, const std::string& name, const std::vector<std::string>& v) {
-  const std::string what = "cannot write dataset " + path_of(loc, name);
-  std::vector<const char*> ptr(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) ptr[i] = v[i].c_str();
-  const Handle type = vlen_string_type();
-  const Handle space = simple_space({v.size()}, what);
-  const Handle ds(H5Dcreate2(loc, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
-                  what);
-  if (!v.empty()) check(H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptr.data()), what);
-}
-
-std::vector<std::string> read_strings(hid_t loc, const std::string& name) {
-  const std::string where = "dataset " + path_of(loc, name);
-  const Handle ds(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose, "cannot open " + where);
-  const Handle space(H5Dget_space(ds), H5Sclose, "cannot read " + where);
-  const Handle file_type(H5Dget_type(ds), H5Tclose, "cannot read " + where);
-  if (H5Sget_simple_extent_ndims(space) != 1 || H5Tget_class(file_type) != H5T_STRING ||
-      H5Tis_variable_str(file_type) <= 0) {
-    throw Failure(where + " is not a 1-D dataset of variable-length strings");
-  }
-  const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space));
-  std::vector<std::string> out(n);
-  if (n == 0) return out;
-  const Handle type = vlen_string_type();
-  std::vector<char*> ptr(n, nullptr);
-  check(H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptr.data()), "cannot read " + where);
-  for (std::size_t i = 0; i < n; ++i) out[i] = ptr[i] != nullptr ? ptr[i] : "";
-  reclaim_strings(type, space, ptr.data());
-  return out;
-}
-
-// Scalar attribute (n == 0) or 1-D attribute [n].
-template <class T>
-void write_attr(hid_t obj, const std::string& name, const T* data, hsize_t n = 0) {
-  const std::string what = "cannot write attribute " + name + " of " + path_of(obj, "");
-  const Handle space = n == 0 ? Handle(H5Screate(H5S_SCALAR), H5Sclose, what) : simple_space({n}, what);
-  const Handle a(H5Acreate2(obj, name.c_str(), Hdf5Type<T>::file(), space, H5P_DEFAULT, H5P_DEFAULT),
-                 H5Aclose, what);
-  check(H5Awrite(a, Hdf5Type<T>::mem(), data), what);
-}
-
-void write_string_attr(hid_t obj, const std::string& name, const std::string& value) {
-  const std::string what = "cannot write attribute " + name + " of " + path_of(obj, "");
-  const Handle type = vlen_string_type();
-  const Handle space(H5Screate(H5S_SCALAR), H5Sclose, what);
-  const Handle a(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, what);
-  const char* p = value.c_str();
-  check(H5Awrite(a, type, &p), what);
-}
-
-// Reads an attribute of exactly n values (n == 1 for a scalar).
-template <class T>
-void read_attr(hid_t obj, const std::string& name, T* data, hsize_t n = 1) {
-  const std::string where = "attribute " + name + " of " + path_of(obj, "");
-  const Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose, "cannot open " + where);
-  const Handle space(H5Aget_space(a), H5Sclose, "cannot read " + where);
-  const hssize_t have = H5Sget_simple_extent_npoints(space);
-  if (have != static_cast<hssize_t>(n)) {
-    throw Failure(where + " has " + std::to_string(have) + " values, expected " + std::to_string(n));
-  }
-  check(H5Aread(a, Hdf5Type<T>::mem(), data), "cannot read " + where);
-}
-
-template <class T>
-T read_attr(hid_t obj, const std::string& name) {
-  T value{};
-  read_attr(obj, name, &value);
-  return value;
-}
-
-std::string read_string_attr(hid_t obj, const std::string& name) {
-  const std::string where = "attribute " + name + " of " + path_of(obj, "");
-  const Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose, "cannot open " + where);
-  const Handle file_type(H5Aget_type(a), H5Tclose, "cannot read " + where);
-  const Handle space(H5Aget_space(a), H5Sclose, "cannot read " + where);
-  if (H5Tget_class(file_type) != H5T_STRING || H5Sget_simple_extent_npoints(space) != 1) {
-    throw Failure(where + " is not a scalar string");
-  }
-  if (H5Tis_variable_str(file_type) > 0) {
-    const Handle type = vlen_string_type();
-    char* p = nullptr;
-    check(H5Aread(a, type, &p), "cannot read " + where);
-    std::string out = p != nullptr ? p : "";
-    reclaim_strings(type, space, &p);
-    return out;
-  }
-  std::string out(H5Tget_size(file_type), '\0');  // fixed length: NUL padded or terminated
-  check(H5Aread(a, file_type, out.data()), "cannot read " + where);
-  out.resize(out.find('\0') == std::string::npos ? out.size() : out.find('\0'));
-  return out;
-}
 
 // ---------------------------------------------------------------------------------------------------
 // Items: a vector of scalars or std::arrays of scalars, stored as [n] or [n, K] with the stored type.
@@ -796,127 +524,6 @@ void read_record_list(hid_t parent, const std::string& name, std::vector<T>& rec
 // ---------------------------------------------------------------------------------------------------
 // Writing
 
-const char* block_name(model::ElementType t) {
-  switch (t) {
-    case model::ElementType::Shell4: return "shell";
-    case model::ElementType::Shell3: return "3-node shell";
-    case model::ElementType::Brick8: return "brick";
-  }
-  return "element";
-}
-
-// The writer refuses a model whose arrays do not match, so the mesh written is always valid.
-void check_model(const Model& m) {
-  const std::size_t nn = m.nodes.size();
-  if (m.nodes.x.size() != nn || m.nodes.y.size() != nn || m.nodes.z.size() != nn) {
-    throw Failure("invalid model: the node coordinate arrays do not have one value per node id");
-  }
-  if (nn > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
-    throw Failure("invalid model: too many nodes for 32-bit node indices");
-  }
-  for_each_block(m, [&](const char*, const model::ElementBlock& b) {
-    const std::size_t n = b.size();
-    if (b.part.size() != n || b.conn.size() != n * static_cast<std::size_t>(b.npe())) {
-      throw Failure(std::string("invalid model: the ") + block_name(b.type) +
-                    " block part or connectivity array does not match its id count");
-    }
-    for (std::size_t e = 0; e < n; ++e) {
-      if (b.part[e] < 0 || static_cast<std::size_t>(b.part[e]) >= m.parts.size()) {
-        throw Failure(std::string("invalid model: ") + block_name(b.type) + " " + std::to_string(b.id[e]) +
-                      " has part index " + std::to_string(b.part[e]) + " out of range");
-      }
-      for (int k = 0; k < b.npe(); ++k) {
-        const std::int32_t node = b.conn[e * static_cast<std::size_t>(b.npe()) + static_cast<std::size_t>(k)];
-        if (node < 0 || static_cast<std::size_t>(node) >= nn) {
-          throw Failure(std::string("invalid model: ") + block_name(b.type) + " " + std::to_string(b.id[e]) +
-                        " has node index " + std::to_string(node) + " out of range");
-        }
-      }
-    }
-  });
-}
-
-// results-format.md section 2: /VTKHDF UnstructuredGrid and /XDMF/MixedTopology.
-void write_vtkhdf(hid_t file, const Model& m) {
-  constexpr std::uint8_t kVtkTriangle = 5, kVtkQuad = 9, kVtkHexahedron = 12;
-  constexpr std::int64_t kXdmfTriangle = 4, kXdmfQuad = 5, kXdmfHexahedron = 9;
-  const std::size_t nn = m.nodes.size();
-  const std::size_t nc = m.element_count();
-  const std::size_t max_conn = 4 * m.shells.size() + 3 * m.shells3.size() + 8 * m.bricks.size();
-
-  std::vector<std::int64_t> connectivity, offsets, element_id, mixed;
-  std::vector<std::uint8_t> types;
-  std::vector<std::int32_t> part_id;
-  connectivity.reserve(max_conn);
-  mixed.reserve(max_conn + nc);
-  offsets.reserve(nc + 1);
-  types.reserve(nc);
-  part_id.reserve(nc);
-  element_id.reserve(nc);
-  offsets.push_back(0);
-  for_each_block(m, [&](const char*, const model::ElementBlock& b) {
-    const auto npe = static_cast<std::size_t>(b.npe());
-    for (std::size_t e = 0; e < b.size(); ++e) {
-      const std::int32_t* nodes = b.conn.data() + e * npe;
-      std::size_t used = npe;
-      std::uint8_t vtk = kVtkHexahedron;
-      std::int64_t xdmf = kXdmfHexahedron;
-      if (b.type == model::ElementType::Shell4 && nodes[2] != nodes[3]) {
-        vtk = kVtkQuad;
-        xdmf = kXdmfQuad;
-      } else if (b.type != model::ElementType::Brick8) {  // 3-node shell, or a quad with n3 == n4
-        used = 3;
-        vtk = kVtkTriangle;
-        xdmf = kXdmfTriangle;
-      }
-      mixed.push_back(xdmf);
-      for (std::size_t k = 0; k < used; ++k) {
-        connectivity.push_back(nodes[k]);
-        mixed.push_back(nodes[k]);
-      }
-      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-      types.push_back(vtk);
-      part_id.push_back(static_cast<std::int32_t>(m.parts[static_cast<std::size_t>(b.part[e])].id));
-      element_id.push_back(b.id[e]);
-    }
-  });
-  std::vector<double> points(3 * nn);
-  for (std::size_t i = 0; i < nn; ++i) {
-    points[3 * i] = m.nodes.x[i];
-    points[3 * i + 1] = m.nodes.y[i];
-    points[3 * i + 2] = m.nodes.z[i];
-  }
-
-  const Handle vtk = create_group(file, "VTKHDF");
-  const std::array<std::int64_t, 2> version{1, 0};
-  write_attr(vtk, "Version", version.data(), version.size());
-  {  // Type: fixed 16-byte ASCII, NULLPAD, no terminating NUL (a 17-byte one breaks the reader)
-    const std::string what = "cannot write attribute Type of /VTKHDF";
-    const Handle type(H5Tcopy(H5T_C_S1), H5Tclose, what);
-    check(H5Tset_size(type, 16), what);
-    check(H5Tset_strpad(type, H5T_STR_NULLPAD), what);
-    check(H5Tset_cset(type, H5T_CSET_ASCII), what);
-    const Handle space(H5Screate(H5S_SCALAR), H5Sclose, what);
-    const Handle a(H5Acreate2(vtk, "Type", type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, what);
-    check(H5Awrite(a, type, "UnstructuredGrid"), what);
-  }
-  write_dataset(vtk, "NumberOfPoints", std::vector<std::int64_t>{static_cast<std::int64_t>(nn)});
-  write_dataset(vtk, "NumberOfCells", std::vector<std::int64_t>{static_cast<std::int64_t>(nc)});
-  write_dataset(vtk, "NumberOfConnectivityIds",
-                std::vector<std::int64_t>{static_cast<std::int64_t>(connectivity.size())});
-  write_dataset(vtk, "Points", points, 3);
-  write_dataset(vtk, "Connectivity", connectivity);
-  write_dataset(vtk, "Offsets", offsets);
-  write_dataset(vtk, "Types", types);
-  const Handle point_data = create_group(vtk, "PointData");
-  write_dataset(point_data, "node_id", m.nodes.id);
-  const Handle cell_data = create_group(vtk, "CellData");
-  write_dataset(cell_data, "part_id", part_id);
-  write_dataset(cell_data, "element_id", element_id);
-  const Handle xdmf = create_group(file, "XDMF");
-  write_dataset(xdmf, "MixedTopology", mixed);
-}
-
 void write_block(hid_t elements, const std::string& name, const model::ElementBlock& b) {
   const Handle g = create_group(elements, name);
   const auto type = static_cast<std::uint8_t>(b.type);
@@ -928,11 +535,6 @@ void write_block(hid_t elements, const std::string& name, const model::ElementBl
   write_dataset(g, "conn", b.conn, static_cast<hsize_t>(b.npe()));
   write_dataset(g, "thickness", b.thickness);
   write_dataset(g, "phi", b.phi);
-}
-
-void link(hid_t file, const std::string& target, hid_t loc, const std::string& name) {
-  check(H5Lcreate_hard(file, target.c_str(), loc, name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
-        "cannot link " + path_of(loc, name) + " to " + target);
 }
 
 void write_radx(hid_t file, const Model& m) {
@@ -947,8 +549,8 @@ void write_radx(hid_t file, const Model& m) {
     const Handle nodes = create_group(radx, "nodes");
     const auto count = static_cast<std::int64_t>(m.nodes.size());
     write_attr(nodes, "count", &count);
-    link(file, "/VTKHDF/PointData/node_id", nodes, "id");
-    link(file, "/VTKHDF/Points", nodes, "xyz");
+    link_hard(file, "/VTKHDF/PointData/node_id", nodes, "id");
+    link_hard(file, "/VTKHDF/Points", nodes, "xyz");
   }
   write_dataset(radx, "node_mass", m.node_mass);
   const Handle elements = create_group(radx, "elements");
@@ -960,25 +562,17 @@ void write_radx(hid_t file, const Model& m) {
 
 // Writes the whole file at `part`; closes it (and flushes it to disk) before returning.
 void write_file(const Model& m, const std::string& part) {
-  check_model(m);
-  const Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a file access list");
-  // SEMI: closing the file fails (instead of being deferred) if an object were still open.
-  check(H5Pset_fclose_degree(fapl, H5F_CLOSE_SEMI), "cannot set the file close degree");
-  Handle file(H5Fcreate(part.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose,
-              "cannot create file " + part);
+  check_vtkhdf_mesh(m);
+  Handle file = create_file(part);
   {
     const std::string version = RADX_VERSION;
     write_attr(file, "radx_model_format_version", &kModelFormatVersion);
     write_string_attr(file, "radx_version", version);
-    write_vtkhdf(file, m);
+    write_vtkhdf_mesh(file, m);
     write_radx(file, m);
   }
   file.close("cannot close file " + part);
-  // Data on disk before the rename, so a system crash cannot leave a renamed but empty file.
-  const int fd = ::open(part.c_str(), O_RDONLY);
-  const bool synced = fd >= 0 && ::fsync(fd) == 0;
-  if (fd >= 0) ::close(fd);
-  if (!synced) throw Failure("cannot flush file " + part + " to disk");
+  sync_file(part);
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -1012,7 +606,7 @@ void read_block(hid_t elements, const std::string& name, model::ElementBlock& b,
 }
 
 void read_file(const std::string& path, Model& m) {
-  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open file " + path);
+  Handle file = open_file_read_only(path);
   const auto format = read_attr<std::int64_t>(file, "radx_model_format_version");
   if (format != kModelFormatVersion) {
     throw Failure("model format version " + std::to_string(format) + " (written by radx " +
@@ -1056,16 +650,6 @@ void read_file(const std::string& path, Model& m) {
   file.close("cannot close file " + path);
 }
 
-// Best effort: makes the rename itself durable. Some file systems cannot fsync a folder; the file is
-// complete either way.
-void sync_folder_of(const std::string& path) {
-  const fs::path folder = fs::path(path).parent_path();
-  const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
-}
-
 }  // namespace
 
 bool write_model_file(const Model& m, const std::string& path, std::string& error) {
@@ -1073,10 +657,7 @@ bool write_model_file(const Model& m, const std::string& path, std::string& erro
   try {
     const QuietHdf5 quiet;
     write_file(m, part);
-    std::error_code ec;
-    fs::rename(part, path, ec);
-    if (ec) throw Failure("cannot rename " + part + " to " + path + ": " + ec.message());
-    sync_folder_of(path);
+    replace_file(part, path);
     return true;
   } catch (const std::exception& e) {
     error = "cannot write model file " + path + ": " + e.what();

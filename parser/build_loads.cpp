@@ -581,6 +581,17 @@ void ModelBuilder::build_time_histories() {
     g.title = r.title;
     g.kind = k->kind;
     g.variables = th_variables(*this, r, *k);
+    // Variables radx lists but does not compute are written as 0 (solver/time_history_values.hpp): say so.
+    static const std::vector<std::string_view> kNotComputed = {"DRX", "DRY", "DRZ", "IEB", "EMIN", "EMAX"};
+    std::string zero;
+    for (const auto& v : g.variables)
+      if (std::find(kNotComputed.begin(), kNotComputed.end(), v) != kNotComputed.end())
+        zero += (zero.empty() ? "" : " ") + v;
+    if (!zero.empty())
+      diags_.warning(Diag::UnimplementedOption, at(r.pos, 1), about(r),
+                     "radx does not compute " + zero +
+                         " (rotation angles, the bending share of the shell energy, strains): they are "
+                         "written as 0 in the time history");
     g.objects = th_objects(*this, r, *k);
     const auto i = static_cast<std::size_t>(k - kinds.begin());
     const std::string what = std::string(k->path) + " group";

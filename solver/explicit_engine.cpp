@@ -122,6 +122,12 @@ void ExplicitEngine::build_groups() {
         if (triangle) g.conn[static_cast<std::size_t>(3 * kGroupSize + i)] = b.conn[e * 3 + 2];
         const double t0 = model::shell_thickness(m, b, e);
         g.t0[static_cast<std::size_t>(i)] = g.thick[static_cast<std::size_t>(i)] = t0;
+        auto X = [&](int q) {
+          const auto n = b.conn[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(q)];
+          return model::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
+        };
+        g.area0[static_cast<std::size_t>(i)] =
+            triangle ? model::triangle_area(X(0), X(1), X(2)) : model::quad_area(X(0), X(1), X(2), X(3));
       }
       shells_.push_back(std::move(g));
       k = end;
@@ -466,7 +472,8 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     // Energies at t_n (elements.md section 8): summed only on report cycles, they cost a pass over every
     // element and node.
     const bool last = time >= controls_.t_stop || dt2 <= 0;
-    const bool full = first || last || cycle % std::max<std::int64_t>(1, options_.report_every) == 0;
+    const bool full = first || last || cycle % std::max<std::int64_t>(1, options_.report_every) == 0 ||
+                      (options_.output_due && options_.output_due(time));
     CycleReport rep;
     if (full) {
       energy_.internal = energy_.hourglass = energy_.plastic_work = 0;
@@ -491,11 +498,13 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
           std::abs(denom) <= 1e-20 ? 0.0 : std::clamp(100.0 * (e_tot / denom - 1.0), -99.9, 99.9);
       rep = report(cycle, time, dt2, control);
       rep.momentum = kin.momentum(dt1);
+      rep.dt1 = dt1;
       res.last = rep;
     } else {
       rep.cycle = cycle;
       rep.time = time;
       rep.dt = dt2;
+      rep.dt1 = dt1;
       rep.control = control;
     }
     rep.full = full;
@@ -542,6 +551,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
   }
   res.cycles = cycle;
   res.time = time;
+  res.dt1 = dt1;
   res.dt = dt2 > 0 ? dt2 : dt1;  // the last step taken (the final cycle only reaches Tstop)
   res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_wall0).count();
   res.element_seconds = element_seconds;

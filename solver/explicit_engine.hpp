@@ -52,6 +52,8 @@ struct CycleReport {
   bool full = false;  // energies, masses and momentum are filled only on report cycles
   std::int64_t cycle = 0;
   double time = 0, dt = 0;
+  double dt1 =
+      0;  // the step that led to this cycle, t^n - t^{n-1} (full-step velocity v^{n-1/2} + dt1/2 a^n)
   StepControl control;
   EnergyBalance energy;
   double mass = 0, mass0 = 0, added_mass = 0;
@@ -59,10 +61,15 @@ struct CycleReport {
 };
 
 struct EngineOptions {
+  explicit EngineOptions(int threads_ = 0, int report_every_ = 1)
+      : threads(threads_), report_every(report_every_) {}
   int threads = 0;  // 0: OpenMP default (OMP_NUM_THREADS or all cores)
   // Energies are summed every report_every cycles (and at the first and last): the listing's /PRINT
   // frequency. /STOP criteria are checked on those cycles.
   int report_every = 1;
+  // Also a full report on cycles where this returns true for the cycle's time (outputs due: animation
+  // states, time-history rows). Called once per cycle; empty: never.
+  std::function<bool(double time)> output_due;
 };
 
 enum class RunStatus : std::uint8_t { Normal, Error };
@@ -72,6 +79,7 @@ struct RunResult {
   std::string message;
   std::int64_t cycles = 0;
   double time = 0, dt = 0;
+  double dt1 = 0;  // t^n - t^{n-1} of the last cycle reached
   double wall_seconds = 0, element_seconds = 0;
   int threads = 1;
   CycleReport last;
@@ -92,6 +100,9 @@ class ExplicitEngine {
   [[nodiscard]] const std::vector<ShellGroup>& shell_groups() const { return shells_; }
   [[nodiscard]] const std::vector<BrickGroup>& brick_groups() const { return bricks_; }
   [[nodiscard]] std::size_t element_count() const { return element_count_; }
+  [[nodiscard]] const model::Model& model() const { return model_; }
+  [[nodiscard]] const std::vector<MaterialParams>& materials() const { return materials_; }
+  [[nodiscard]] const KinematicsDriver& kinematics() const { return *kinematics_; }
 
  private:
   void build_nodes();

@@ -95,4 +95,8 @@ double KinematicsDriver::mass_correction() const {
   return parts_->bodies.size() > 0 ? parts_->bodies.kinetic_correction(nodes_, 0.0).mass : 0.0;
 }
 
+const std::vector<RigidWallOutput>& KinematicsDriver::wall_outputs() const {
+  return parts_->walls.outputs();
+}
+
 }  // namespace radx::solver

@@ -11,6 +11,7 @@
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
 #include "solver/node_state.hpp"
+#include "solver/rigid_wall_plane.hpp"
 
 namespace radx::solver {
 
@@ -35,6 +36,8 @@ class KinematicsDriver {
   [[nodiscard]] double external_work() const;
   // Correction to the nodal mass sum so that each rigid body counts once.
   [[nodiscard]] double mass_correction() const;
+  // Rigid-wall forces of the last cycle and impulses since the start, one per /RWALL in model order.
+  [[nodiscard]] const std::vector<RigidWallOutput>& wall_outputs() const;
 
  private:
   struct Parts;

@@ -15,8 +15,8 @@ double shell_thickness(const Model& m, const ElementBlock& b, std::size_t e) {
   return m.properties[m.parts[part].property].shell.thickness;
 }
 
-void compute_lumped_masses(Model& m) {
-  m.node_mass.assign(m.nodes.size(), 0.0);
+void for_each_nodal_mass(const Model& m,
+                         const std::function<void(std::int32_t, std::int32_t, std::size_t, double)>& fn) {
   auto X = [&](std::int32_t n) { return Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]}; };
   auto rho_of = [&](std::int32_t part) -> double {
     if (part == kNone) return 0.0;
@@ -28,38 +28,46 @@ void compute_lumped_masses(Model& m) {
       if (b.conn[e * static_cast<std::size_t>(b.npe()) + static_cast<std::size_t>(k)] < 0) return false;
     return b.part[e] != kNone;
   };
-  for (std::size_t e = 0; e < m.shells.size(); ++e) {
+  std::size_t cell = 0;
+  for (std::size_t e = 0; e < m.shells.size(); ++e, ++cell) {
     if (!valid(m.shells, e)) continue;
     const auto* c = &m.shells.conn[4 * e];
-    const double me = rho_of(m.shells.part[e]) * shell_thickness(m, m.shells, e) *
-                      quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[3]));
-    for (int k = 0; k < 4; ++k) m.node_mass[c[k]] += 0.25 * me;
-    m.parts[m.shells.part[e]].mass += me;
+    const auto part = m.shells.part[e];
+    const double me =
+        rho_of(part) * shell_thickness(m, m.shells, e) * quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[3]));
+    for (int k = 0; k < 4; ++k) fn(c[k], part, cell, 0.25 * me);
   }
-  for (std::size_t e = 0; e < m.shells3.size(); ++e) {
+  for (std::size_t e = 0; e < m.shells3.size(); ++e, ++cell) {
     if (!valid(m.shells3, e)) continue;
     const auto* c = &m.shells3.conn[3 * e];
+    const auto part = m.shells3.part[e];
     const Vec3 x[3] = {X(c[0]), X(c[1]), X(c[2])};
-    const double me =
-        rho_of(m.shells3.part[e]) * shell_thickness(m, m.shells3, e) * triangle_area(x[0], x[1], x[2]);
+    const double me = rho_of(part) * shell_thickness(m, m.shells3, e) * triangle_area(x[0], x[1], x[2]);
     for (int k = 0; k < 3; ++k) {
       const auto a = sub(x[(k + 1) % 3], x[k]);
       const auto b = sub(x[(k + 2) % 3], x[k]);
       const double na = norm(a), nb = norm(b);
       const double cosang = (na > 0 && nb > 0) ? std::clamp(dot(a, b) / (na * nb), -1.0, 1.0) : 1.0;
-      m.node_mass[c[k]] += me * std::acos(cosang) / std::numbers::pi;
+      fn(c[k], part, cell, me * std::acos(cosang) / std::numbers::pi);
     }
-    m.parts[m.shells3.part[e]].mass += me;
   }
-  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+  for (std::size_t e = 0; e < m.bricks.size(); ++e, ++cell) {
     if (!valid(m.bricks, e)) continue;
     const auto* c = &m.bricks.conn[8 * e];
     std::array<Vec3, 8> x{};
     for (int k = 0; k < 8; ++k) x[k] = X(c[k]);
     const double me = rho_of(m.bricks.part[e]) * std::max(0.0, brick_volume(x));
-    for (int k = 0; k < 8; ++k) m.node_mass[c[k]] += 0.125 * me;
-    m.parts[m.bricks.part[e]].mass += me;
+    for (int k = 0; k < 8; ++k) fn(c[k], m.bricks.part[e], cell, 0.125 * me);
   }
+}
+
+void compute_lumped_masses(Model& m) {
+  m.node_mass.assign(m.nodes.size(), 0.0);
+  for (auto& p : m.parts) p.mass = 0;
+  for_each_nodal_mass(m, [&](std::int32_t node, std::int32_t part, std::size_t, double mass) {
+    m.node_mass[static_cast<std::size_t>(node)] += mass;
+    m.parts[static_cast<std::size_t>(part)].mass += mass;
+  });
   m.total_mass = 0;
   for (const auto& p : m.parts) m.total_mass += p.mass;
 }

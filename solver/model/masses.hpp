@@ -4,6 +4,8 @@
 // shells m alpha_k / pi to node k (alpha_k the interior angle).
 #pragma once
 
+#include <functional>
+
 #include "solver/model/model.hpp"
 
 namespace radx::model {
@@ -11,6 +13,13 @@ namespace radx::model {
 // Thickness a shell element uses for its mechanics and mass (deck-format.md 5.4): the element card's
 // value if > 0, else its property's; 0 when neither is known.
 double shell_thickness(const Model& m, const ElementBlock& b, std::size_t e);
+
+// Calls fn(node, part, element_index_in_block_order, mass) for every lumped-mass contribution of every
+// valid element, in model cell order (4-node shells, 3-node shells, bricks); `cell` numbers the elements
+// that way. Elements with a missing node or part are skipped.
+void for_each_nodal_mass(
+    const Model& m,
+    const std::function<void(std::int32_t node, std::int32_t part, std::size_t cell, double mass)>& fn);
 
 // Fills m.node_mass, every part's mass and m.total_mass from the current coordinates. Elements with a
 // missing node or part are skipped (the starter has reported them).

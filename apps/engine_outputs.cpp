@@ -1,0 +1,294 @@
+#include "apps/engine_outputs.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "io/energy_plot.hpp"
+#include "io/results_writer.hpp"
+#include "io/time_history.hpp"
+#include "io/unit_labels.hpp"
+#include "parser/build_run_controls.hpp"
+#include "solver/result_fields.hpp"
+#include "solver/time_history_values.hpp"
+
+namespace radx::app {
+
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+constexpr double kNoInterval = 1e29;  // /TFILE absent: dt_his = 1e30
+
+// One extra array of the states: a cell or a node field and its buffer.
+struct StateArray {
+  bool cell = false;
+  solver::CellField cell_field{};
+  solver::NodeField node_field{};
+  std::vector<float> values;
+};
+
+std::string kind_path(model::ThKind k) {
+  switch (k) {
+    case model::ThKind::Node: return "node";
+    case model::ThKind::Part: return "part";
+    case model::ThKind::Inter: return "interface";
+    case model::ThKind::Rwall: return "rwall";
+    case model::ThKind::Shell: return "shell";
+    case model::ThKind::Subset: return "subset";
+  }
+  return "other";
+}
+
+std::string kind_name(model::ThKind k) {
+  switch (k) {
+    case model::ThKind::Node: return "node";
+    case model::ThKind::Part: return "part";
+    case model::ThKind::Inter: return "interface";
+    case model::ThKind::Rwall: return "rigid wall";
+    case model::ThKind::Shell: return "shell";
+    case model::ThKind::Subset: return "subset";
+  }
+  return "";
+}
+
+std::int64_t user_id(const model::Model& m, model::ThKind k, std::int32_t i) {
+  const auto n = static_cast<std::size_t>(i);
+  switch (k) {
+    case model::ThKind::Node: return m.nodes.id[n];
+    case model::ThKind::Part: return m.parts[n].id;
+    case model::ThKind::Inter: return m.interfaces[n].id;
+    case model::ThKind::Rwall: return m.rigid_walls[n].id;
+    case model::ThKind::Shell: return m.shells.id[n];
+    case model::ThKind::Subset: return m.subsets[n].id;
+  }
+  return 0;
+}
+
+}  // namespace
+
+struct EngineOutputs::Impl {
+  const model::Model& model;
+  const model::RunControls& controls;
+  const solver::ExplicitEngine& engine;
+  std::string out_dir, root;
+
+  // Animation states.
+  std::unique_ptr<io::ResultsWriter> results;
+  std::vector<StateArray> arrays;
+  std::vector<double> points;
+  std::vector<float> displacement, velocity;
+  std::vector<std::uint8_t> status;
+  double next_state = kNever;
+  double last_state_time = -kNever;
+
+  // Time history.
+  std::unique_ptr<io::TimeHistoryWriter> th;
+  std::vector<solver::ThGroupSampler> samplers;
+  std::vector<std::vector<double>> th_values;  // [1 + groups]
+  double next_th = kNever;
+  double last_th_time = -kNever;
+  std::chrono::steady_clock::time_point last_flush;
+
+  std::vector<io::EnergySample> energy;
+  double seconds = 0;
+
+  Impl(const model::Model& m, const model::RunControls& c, const solver::ExplicitEngine& e, std::string dir,
+       std::string r)
+      : model(m), controls(c), engine(e), out_dir(std::move(dir)), root(std::move(r)) {}
+
+  [[nodiscard]] std::string unit(const solver::Dim& d) const {
+    return io::unit_label(model.units, d.mass, d.length, d.time);
+  }
+
+  void setup_states() {
+    std::vector<io::ResultArray> specs;
+    const std::pair<const std::vector<std::string>*, std::string_view> families[] = {
+        {&controls.anim_vect, "/ANIM/VECT"},
+        {&controls.anim_noda, "/ANIM/NODA"},
+        {&controls.anim_elem, "/ANIM/ELEM"},
+        {&controls.anim_tens, "/ANIM/TENS"}};
+    for (const auto& [names, family] : families)
+      for (const auto& name : *names) {
+        const AnimFieldName* a = find_anim_field(family, name);
+        if (a == nullptr)
+          throw std::runtime_error(std::string(family) + "/" + name + " has no results array");
+        const std::string array(a->array);
+        if (array == "displacement" || array == "velocity") continue;  // always written
+        bool seen = false;
+        for (const auto& s : specs) seen = seen || s.name == array;
+        if (seen) continue;
+        StateArray sa;
+        io::ResultArray spec;
+        spec.name = array;
+        if (const auto f = solver::cell_field_named(array)) {
+          sa.cell = true;
+          sa.cell_field = *f;
+          spec.components = solver::components(*f);
+          spec.on_points = false;
+          sa.values.resize(model.element_count() * static_cast<std::size_t>(spec.components));
+        } else if (const auto g = solver::node_field_named(array)) {
+          sa.node_field = *g;
+          spec.components = solver::components(*g);
+          sa.values.resize(model.nodes.size() * static_cast<std::size_t>(spec.components));
+        } else {
+          throw std::runtime_error(std::string(family) + "/" + name + ": the engine has no field " + array);
+        }
+        specs.push_back(spec);
+        arrays.push_back(std::move(sa));
+      }
+    results = std::make_unique<io::ResultsWriter>(model, out_dir, root, specs);
+    points.resize(3 * model.nodes.size());
+    displacement.resize(3 * model.nodes.size());
+    velocity.resize(3 * model.nodes.size());
+    status.resize(model.element_count());
+    next_state = 0.0;  // the first cycle
+  }
+
+  void setup_time_history() {
+    const bool wanted = controls.th_dt < kNoInterval || !model.time_histories.empty();
+    if (!wanted) return;
+    std::vector<io::ThGroupLayout> layouts;
+    io::ThGroupLayout global;
+    global.path = "global";
+    for (const auto& v : solver::global_th_variables()) {
+      global.variables.push_back(v.name);
+      global.units.push_back(v.name == "DMAS_PCT" ? "%" : unit(v.dim));
+    }
+    layouts.push_back(global);
+    th_values.emplace_back(global.variables.size(), 0.0);
+    for (const auto& g : model.time_histories) {
+      io::ThGroupLayout l;
+      l.path = kind_path(g.kind) + "/" + std::to_string(g.id);
+      l.title = g.title;
+      l.object_kind = kind_name(g.kind);
+      for (const auto o : g.objects) l.objects.push_back(user_id(model, g.kind, o));
+      l.variables = g.variables;
+      for (const auto& v : g.variables) l.units.push_back(unit(solver::th_variable_dim(g.kind, v)));
+      samplers.emplace_back(engine, g);
+      th_values.emplace_back(samplers.back().size(), 0.0);
+      layouts.push_back(std::move(l));
+    }
+    const std::string path = (std::filesystem::path(out_dir) / (root + "_th.h5")).string();
+    std::error_code ec;
+    std::filesystem::remove(path + ".part", ec);  // a stray file of a killed run
+    th = std::make_unique<io::TimeHistoryWriter>(path, std::move(layouts), model.units.time_name);
+    next_th = 0.0;
+    last_flush = std::chrono::steady_clock::now();
+  }
+
+  void write_state(double time, double dt1) {
+    const auto t0 = std::chrono::steady_clock::now();
+    solver::gather_points(engine, points);
+    solver::gather_node_field(engine, solver::NodeField::Displacement, dt1, displacement);
+    solver::gather_node_field(engine, solver::NodeField::Velocity, dt1, velocity);
+    solver::gather_element_status(engine, status);
+    io::ResultState st;
+    st.time = time;
+    st.points = points;
+    st.displacement = displacement;
+    st.velocity = velocity;
+    st.element_status = status;
+    for (auto& a : arrays) {
+      if (a.cell)
+        solver::gather_cell_field(engine, a.cell_field, a.values);
+      else
+        solver::gather_node_field(engine, a.node_field, dt1, a.values);
+      st.arrays.emplace_back(a.values);
+    }
+    if (results->write_state(st)) last_state_time = time;
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
+  void write_th_row(const solver::CycleReport& r, bool force_flush) {
+    const auto t0 = std::chrono::steady_clock::now();
+    solver::global_th_values(engine, r, th_values[0]);
+    for (std::size_t g = 0; g < samplers.size(); ++g) samplers[g].sample(engine, r, th_values[g + 1]);
+    std::vector<std::span<const double>> spans(th_values.begin(), th_values.end());
+    th->append(r.time, spans);
+    last_th_time = r.time;
+    // The file is rewritten whole at a flush: at most every few seconds, so its cost stays small.
+    if (force_flush || t0 - last_flush > std::chrono::seconds(5)) {
+      th->flush();
+      last_flush = std::chrono::steady_clock::now();
+    }
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+};
+
+EngineOutputs::EngineOutputs(const model::Model& m, const model::RunControls& c,
+                             const solver::ExplicitEngine& engine, const std::string& out_dir,
+                             const std::string& root)
+    : impl_(std::make_unique<Impl>(m, c, engine, out_dir, root)) {
+  impl_->setup_states();
+  impl_->setup_time_history();
+}
+
+EngineOutputs::~EngineOutputs() = default;
+
+bool EngineOutputs::due(double time) const {
+  return time >= impl_->next_state || time >= impl_->next_th;
+}
+
+void EngineOutputs::on_report(const solver::CycleReport& r) {
+  auto& s = *impl_;
+  const auto& c = s.controls;
+  const auto& e = r.energy;
+  s.energy.push_back(
+      io::EnergySample{r.time, e.kinetic_t + e.kinetic_r, e.internal, e.hourglass,
+                       e.contact_elastic + e.contact_damping + e.contact_friction + e.contact_lagrange,
+                       e.external_work, e.total()});
+  if (r.time >= s.next_state) {
+    s.write_state(r.time, r.dt1);
+    // Next /ANIM/DT time strictly after this one (several intervals may pass in one cycle).
+    double next = kNever;
+    if (c.anim_dt > 0) {
+      next = c.anim_start;
+      if (r.time >= next) next += c.anim_dt * (std::floor((r.time - c.anim_start) / c.anim_dt) + 1.0);
+      if (next > c.anim_stop) next = kNever;
+    }
+    s.next_state = next;
+  }
+  if (s.th && r.time >= s.next_th) {
+    s.write_th_row(r, s.th->rows() == 0);  // the file exists from the first row on
+    s.next_th = c.th_dt < kNoInterval ? c.th_dt * (std::floor(r.time / c.th_dt) + 1.0) : kNever;
+  }
+}
+
+void EngineOutputs::finish(const solver::RunResult& result, bool plot, std::ostream& warn) {
+  auto& s = *impl_;
+  // What follows happens after the engine's wall clock stopped: it is not part of seconds_writing().
+  const double in_run = s.seconds;
+  if (result.time > s.last_state_time) s.write_state(result.time, result.dt1);
+  if (s.th) {
+    if (result.last.time > s.last_th_time) s.write_th_row(result.last, false);
+    const auto t0 = std::chrono::steady_clock::now();
+    s.th->flush();
+    s.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  s.seconds = in_run;
+  if (!plot || s.energy.empty()) return;
+  io::EnergyPlotRequest req;
+  req.csv_path = (std::filesystem::path(s.out_dir) / (s.root + "_energy.csv")).string();
+  req.png_path = (std::filesystem::path(s.out_dir) / (s.root + "_energy.png")).string();
+  req.title = s.root + ": energy balance";
+  req.time_unit = s.model.units.time_name;
+  req.energy_unit = io::unit_label(s.model.units, 1, 2, -2);
+  req.samples = s.energy;
+  std::string warning;
+  if (!io::write_energy_plot(req, warning)) warn << "radx-engine: warning: " << warning << '\n';
+}
+
+int EngineOutputs::states_written() const {
+  return impl_->results->states_written();
+}
+double EngineOutputs::seconds_writing() const {
+  return impl_->seconds;
+}
+std::string EngineOutputs::series_path() const {
+  return impl_->results->series_path();
+}
+
+}  // namespace radx::app

@@ -1,0 +1,51 @@
+// What an engine run writes besides its listing and summary: the animation states for ParaView
+// (P.mesh.hdf, P_%06d.hdf, P.hdf.series, P.xmf), the time history P_th.h5, and the energy balance
+// P_energy.csv + P_energy.png. It decides when each is due:
+//   states: the first cycle, every /ANIM/DT interval from Tstart to Tstop (at the first cycle whose time
+//     reaches the due time), and the last cycle of the run, also when the run stops on an error;
+//   time-history rows: the first cycle, every /TFILE interval, and the last cycle (when the deck has
+//     /TFILE or any /TH group);
+//   energy samples: every full report (the /PRINT cycles and every output cycle).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <ostream>
+#include <string>
+
+#include "solver/explicit_engine.hpp"
+#include "solver/model/model.hpp"
+#include "solver/model/run_controls.hpp"
+
+namespace radx::app {
+
+class EngineOutputs {
+ public:
+  // Removes what an earlier run of the same name left (states, indexes, stray .part files) and writes
+  // the mesh file. Throws std::runtime_error naming the file on an I/O failure.
+  EngineOutputs(const model::Model& m, const model::RunControls& c, const solver::ExplicitEngine& engine,
+                const std::string& out_dir, const std::string& root);
+  ~EngineOutputs();
+  EngineOutputs(const EngineOutputs&) = delete;
+  EngineOutputs& operator=(const EngineOutputs&) = delete;
+
+  // True when a state or a time-history row is due at `time` (the engine then makes a full report).
+  [[nodiscard]] bool due(double time) const;
+  // Called with every full report: writes what is due.
+  void on_report(const solver::CycleReport& r);
+  // At the end of the run (normal or error): the last state and time-history row if not yet written,
+  // the final time-history flush, and the energy plot (a missing plotting tool is a warning on `warn`).
+  void finish(const solver::RunResult& result, bool plot, std::ostream& warn);
+
+  [[nodiscard]] int states_written() const;
+  // Wall time spent writing states and time-history rows during the run (not the mesh file written
+  // before it, nor the last state and plot written after it).
+  [[nodiscard]] double seconds_writing() const;
+  [[nodiscard]] std::string series_path() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace radx::app

@@ -1,0 +1,272 @@
+// NAME_energy.csv and NAME_energy.png (io/energy_plot.hpp): the CSV written here, the chart drawn by the
+// embedded io/plot_energy.py in a child /usr/bin/python3 started with posix_spawn (no shell: arguments pass
+// byte for byte), its standard output and error captured through a pipe to word the warning on failure.
+#include "io/energy_plot.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <system_error>
+
+namespace radx::io {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The first matplotlib run under a new home builds its font cache (seconds); a normal chart takes about a
+// second. A hung interpreter must still not hold the end of a run for ever.
+constexpr std::chrono::seconds kScriptTimeout{120};
+// Exit code of plot_energy.py when matplotlib cannot be imported (see the script's docstring).
+constexpr int kExitNoMatplotlib = 3;
+// Only the end of the script's output is kept: a Python traceback ends with the line that explains it.
+constexpr std::size_t kMaxCapturedOutput = 16 * 1024;
+constexpr const char* kInstallHint = "apt-get install python3-matplotlib";
+
+// A unit as it may appear inside a CSV header field: the characters that would end the field or the line
+// are replaced, since the header is split on commas by every reader.
+std::string header_unit(const std::string& unit) {
+  std::string u = unit;
+  for (char& c : u)
+    if (c == ',' || c == '"' || c == '\n' || c == '\r') c = ' ';
+  return u;
+}
+
+std::string header_field(const char* name, const std::string& unit) {
+  std::string f = name;
+  if (!unit.empty()) f += " [" + header_unit(unit) + "]";
+  return f;
+}
+
+// 17 significant digits: enough for any double to read back to the same value.
+void append_number(std::string& out, double v) {
+  std::array<char, 40> buf{};
+  const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 17);
+  out.append(buf.data(), res.ptr);
+}
+
+struct ProcessResult {
+  int spawn_error = 0;  // errno from posix_spawn; 0 when the process started
+  bool timed_out = false;
+  int exit_code = -1;  // when it exited normally
+  int signal = 0;      // when a signal ended it
+  std::string output;  // standard output and error, interleaved, at most kMaxCapturedOutput (the end)
+};
+
+// Runs argv[0] (an absolute path, no PATH search) with `env`, standard input from /dev/null and both output
+// streams into one pipe, and waits for it; killed after `timeout`.
+ProcessResult run_captured(const std::vector<std::string>& args, const std::vector<std::string>& env,
+                           std::chrono::seconds timeout) {
+  ProcessResult result;
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  std::vector<char*> envp;
+  for (const auto& e : env) envp.push_back(const_cast<char*>(e.c_str()));
+  envp.push_back(nullptr);
+
+  // Close-on-exec, so processes spawned by other threads at the same moment do not inherit the pipe (which
+  // would keep it open and delay the end of file we wait for). The dup2 copies in the child are inherited.
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC) != 0) {
+    result.spawn_error = errno;
+    return result;
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], 2);
+  // The child starts with no blocked signals and default SIGPIPE, whatever the engine set for itself.
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t none, defaults;
+  sigemptyset(&none);
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, argv[0], &actions, &attr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attr);
+  close(fds[1]);
+  if (rc != 0) {
+    close(fds[0]);
+    result.spawn_error = rc;
+    return result;
+  }
+
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  std::array<char, 4096> buf{};
+  for (;;) {
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) {
+      result.timed_out = true;
+      kill(pid, SIGKILL);
+      break;
+    }
+    pollfd p{fds[0], POLLIN, 0};
+    const int ready = poll(&p, 1, static_cast<int>(left.count()));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) continue;  // timeout: the deadline check above ends the loop
+    const ssize_t n = read(fds[0], buf.data(), buf.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;  // end of file: the child closed its output (it is exiting)
+    result.output.append(buf.data(), static_cast<std::size_t>(n));
+    if (result.output.size() > kMaxCapturedOutput)
+      result.output.erase(0, result.output.size() - kMaxCapturedOutput);
+  }
+  close(fds[0]);
+
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
+  return result;
+}
+
+// The last few non-empty lines of `text`, joined with " | ": enough to show a Python error on one line.
+std::string last_lines(const std::string& text, int count) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    if (!line.empty()) lines.push_back(line);
+    start = end + 1;
+  }
+  std::string out;
+  const std::size_t first = lines.size() > static_cast<std::size_t>(count) ? lines.size() - count : 0;
+  for (std::size_t i = first; i < lines.size(); ++i) {
+    if (!out.empty()) out += " | ";
+    out += lines[i];
+  }
+  return out;
+}
+
+// The caller's environment with MPLBACKEND=Agg, so matplotlib never looks for a display.
+std::vector<std::string> plot_environment() {
+  std::vector<std::string> env;
+  for (char** e = environ; e != nullptr && *e != nullptr; ++e)
+    if (std::strncmp(*e, "MPLBACKEND=", 11) != 0) env.emplace_back(*e);
+  env.emplace_back("MPLBACKEND=Agg");
+  return env;
+}
+
+}  // namespace
+
+bool write_energy_csv(const EnergyPlotRequest& r, std::string& error) {
+  std::string text = header_field("time", r.time_unit);
+  for (const char* name : {"kinetic", "internal", "hourglass", "contact", "external_work", "total"}) {
+    text += ',';
+    text += header_field(name, r.energy_unit);
+  }
+  text += '\n';
+  for (const EnergySample& s : r.samples) {
+    bool first = true;
+    for (const double v : {s.time, s.kinetic, s.internal, s.hourglass, s.contact, s.external_work, s.total}) {
+      if (!first) text += ',';
+      first = false;
+      append_number(text, v);
+    }
+    text += '\n';
+  }
+
+  // Through a temporary name: a reader never sees half a table, and the previous one stays until then.
+  const std::string part = r.csv_path + ".part";
+  std::FILE* f = std::fopen(part.c_str(), "wb");
+  if (f == nullptr) {
+    error = "cannot write " + r.csv_path + ": " + std::strerror(errno);
+    return false;
+  }
+  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  const bool closed = std::fclose(f) == 0;
+  std::error_code ec;
+  if (!written || !closed) {
+    error = "cannot write " + r.csv_path + " (disk full?)";
+    fs::remove(part, ec);
+    return false;
+  }
+  fs::rename(part, r.csv_path, ec);
+  if (ec) {
+    error = "cannot rename " + part + " to " + r.csv_path + ": " + ec.message();
+    fs::remove(part, ec);
+    return false;
+  }
+  return true;
+}
+
+bool draw_energy_png(const EnergyPlotRequest& r, const std::string& python, std::string& warning) {
+  const auto fail = [&](const std::string& reason) {
+    warning = "energy chart " + r.png_path + " not drawn: " + reason + "; the energies are in " + r.csv_path;
+    return false;
+  };
+  fs::path folder = fs::path(r.png_path).parent_path();
+  if (folder.empty()) folder = ".";
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) return fail("folder " + folder.string() + " does not exist");
+  if (access(python.c_str(), X_OK) != 0)
+    return fail(python + " not found (install it with: " + std::string(kInstallHint) + ")");
+
+  // matplotlib picks the format from the name, hence ".part.png" rather than ".part".
+  const std::string part = r.png_path + ".part.png";
+  fs::remove(part, ec);  // left by a run that was killed while drawing
+  const std::vector<std::string> args{python,       "-I", "-c",    std::string(energy_plot_script()),
+                                      r.csv_path,   part, r.title, r.time_unit,
+                                      r.energy_unit};
+  // -I: isolated mode. PYTHONPATH, PYTHONHOME and user site-packages of the caller's environment (often set
+  // for another Python) must not change which matplotlib /usr/bin/python3 imports.
+  const ProcessResult p = run_captured(args, plot_environment(), kScriptTimeout);
+
+  std::string reason;
+  if (p.spawn_error != 0) {
+    reason = "cannot start " + python + ": " + std::strerror(p.spawn_error);
+  } else if (p.timed_out) {
+    reason = "the plotting script did not finish within " + std::to_string(kScriptTimeout.count()) + " s";
+  } else if (p.exit_code == kExitNoMatplotlib) {
+    reason = "matplotlib is not available to " + python + " (install it with: " + kInstallHint + ")";
+  } else if (p.signal != 0) {
+    reason = "the plotting script was ended by signal " + std::to_string(p.signal);
+  } else if (p.exit_code != 0) {
+    reason = "the plotting script failed (exit " + std::to_string(p.exit_code) + ")";
+    const std::string why = last_lines(p.output, 3);
+    if (!why.empty()) reason += ": " + why;
+  } else if (!fs::is_regular_file(part, ec) || fs::file_size(part, ec) == 0) {
+    reason = "the plotting script wrote no image";
+  } else {
+    fs::rename(part, r.png_path, ec);  // atomic: the previous chart is replaced only by a complete one
+    if (ec) reason = "cannot rename " + part + " to " + r.png_path + ": " + ec.message();
+  }
+  if (reason.empty()) return true;
+  fs::remove(part, ec);
+  return fail(reason);
+}
+
+bool write_energy_plot(const EnergyPlotRequest& r, std::string& warning) {
+  std::string error;
+  if (!write_energy_csv(r, error)) {
+    warning = "energy balance not written: " + error;
+    return false;
+  }
+  return draw_energy_png(r, kDebianPython, warning);
+}
+
+}  // namespace radx::io

@@ -1,0 +1,267 @@
+// Time-history file P_th.h5 (results-format.md section 7; layout: docs/results.md "Time history").
+//
+// Layout, one HDF5 file:
+// - root attributes: radx_th_format_version (int64, 1), time_unit (string), groups (string array: the
+//   dataset path of every group, in the order they were written, which is the order of the columns of
+//   `radx th --csv`).
+// - one float64 dataset [rows, 1 + columns] per group at the group's path ("global", "node/1"; the
+//   groups on the way are created), column 0 the time; chunked with an unlimited first dimension, so
+//   other tools can extend it, although radx itself rewrites the file whole.
+// - dataset attributes: columns (string array, one name per column: "time", then "<object id>:<variable>"
+//   object-major, or "<variable>" for the global group), units (string array, one per column), variables
+//   (string array), variable_units (string array, one per variable: the units of a group without objects
+//   are kept too), objects (int64 array of user ids; absent when there is none), object_kind (string, ""
+//   for the global group, which has one value per variable), title (string).
+//
+// Why rewrite the whole file at each flush instead of extending datasets in place: an HDF5 file being
+// modified is not readable (and can be left corrupt) if the process dies mid-write, while a file written
+// to `.part` and renamed is always the previous or the new complete file. Time histories are small (tens
+// of columns, thousands of rows), so rewriting costs little; the rows stay in memory for that.
+#include "io/time_history.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+#include <utility>
+
+#include "io/hdf5_util.hpp"
+
+namespace radx::io {
+
+namespace {
+
+constexpr std::int64_t kFormatVersion = 1;
+
+// A group of objects (a /TH group: it has an object kind) has variables per object, possibly no object
+// at all (a deck may list none, with a warning); a group without a kind (the global variables) has one
+// value per variable.
+bool per_object(const ThGroupLayout& g) {
+  return !g.object_kind.empty() || !g.objects.empty();
+}
+
+// Values per row of a group, time excluded.
+std::size_t value_count(const ThGroupLayout& g) {
+  return g.variables.size() * (per_object(g) ? g.objects.size() : 1);
+}
+
+// Column names inside the group (the `columns` attribute): ThColumn::name without "<path>:".
+std::vector<std::string> local_column_names(const ThGroupLayout& g) {
+  std::vector<std::string> names{"time"};
+  names.reserve(1 + value_count(g));
+  if (!per_object(g)) {
+    names.insert(names.end(), g.variables.begin(), g.variables.end());
+  } else {
+    for (const auto id : g.objects) {
+      for (const auto& v : g.variables) names.push_back(std::to_string(id) + ':' + v);
+    }
+  }
+  return names;
+}
+
+std::vector<std::string> column_units(const ThGroupLayout& g, const std::string& time_unit) {
+  std::vector<std::string> units{time_unit};
+  const std::size_t repeat = per_object(g) ? g.objects.size() : 1;
+  for (std::size_t o = 0; o < repeat; ++o) units.insert(units.end(), g.units.begin(), g.units.end());
+  return units;
+}
+
+// Names are split at ':' (column names, `radx th` selectors) and paths at '/', so a group path must be
+// a plain relative HDF5 path without ':', and no group may sit inside another group's dataset. A
+// repeated object is accepted (the deck may list a node twice): its columns repeat, under the same names.
+void validate(const std::string& file, const std::vector<ThGroupLayout>& groups) {
+  auto bad = [&](const std::string& why) {
+    throw std::invalid_argument("time history " + file + ": " + why);
+  };
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    const auto& g = groups[i];
+    const std::string& p = g.path;
+    if (p.empty() || p.front() == '/' || p.back() == '/' || p.find("//") != std::string::npos ||
+        p.find(':') != std::string::npos || p == "." || p.starts_with("./") ||
+        p.find("/./") != std::string::npos || p.ends_with("/.")) {
+      bad("group path '" + p + "' is not a relative path of names without ':'");
+    }
+    if (g.variables.empty()) bad("group " + p + " has no variables");
+    if (g.units.size() != g.variables.size()) {
+      bad("group " + p + " has " + std::to_string(g.variables.size()) + " variables but " +
+          std::to_string(g.units.size()) + " units");
+    }
+    for (std::size_t v = 0; v < g.variables.size(); ++v) {
+      const auto& name = g.variables[v];
+      if (name.empty() || name.find(':') != std::string::npos) {
+        bad("group " + p + " has a variable name that is empty or holds ':' ('" + name + "')");
+      }
+      for (std::size_t w = 0; w < v; ++w) {
+        if (g.variables[w] == name) bad("group " + p + " lists variable " + name + " twice");
+      }
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      const std::string& q = groups[j].path;
+      if (q == p) bad("two groups have the path " + p);
+      if (p.starts_with(q + '/') || q.starts_with(p + '/'))
+        bad("group " + p + " and group " + q + " overlap");
+    }
+  }
+}
+
+// Rows per chunk: the rows held (at least 1), up to about 64 KiB per chunk. A short history stays a small
+// file, a long one is not cut into tiny chunks.
+hsize_t chunk_rows(std::size_t rows, std::size_t cols) {
+  const std::size_t cap = std::max<std::size_t>(1, 8192 / cols);
+  return static_cast<hsize_t>(std::clamp<std::size_t>(rows, 1, cap));
+}
+
+}  // namespace
+
+std::vector<ThColumn> th_columns(const ThGroupLayout& layout, const std::string& time_unit) {
+  const auto names = local_column_names(layout);
+  const auto units = column_units(layout, time_unit);
+  std::vector<ThColumn> out;
+  out.reserve(names.size());
+  out.push_back({names[0], units[0]});
+  for (std::size_t c = 1; c < names.size(); ++c) out.push_back({layout.path + ':' + names[c], units[c]});
+  return out;
+}
+
+struct TimeHistoryWriter::Impl {
+  std::string path;
+  std::vector<ThGroupLayout> groups;
+  std::string time_unit;
+  std::vector<std::vector<double>> data;  // per group, [rows][1 + value_count], time first
+  std::size_t rows = 0;
+};
+
+TimeHistoryWriter::TimeHistoryWriter(std::string path, std::vector<ThGroupLayout> groups,
+                                     std::string time_unit)
+    : impl_(std::make_unique<Impl>()) {
+  validate(path, groups);
+  impl_->path = std::move(path);
+  impl_->groups = std::move(groups);
+  impl_->time_unit = std::move(time_unit);
+  impl_->data.resize(impl_->groups.size());
+}
+
+TimeHistoryWriter::~TimeHistoryWriter() = default;
+
+// Checked before anything is stored, so a bad call leaves every group with the same rows.
+void TimeHistoryWriter::append(double time, const std::vector<std::span<const double>>& values) {
+  Impl& m = *impl_;
+  const std::string where = "time history " + m.path + ": ";
+  if (values.size() != m.groups.size()) {
+    throw std::invalid_argument(where + "append got " + std::to_string(values.size()) + " value sets for " +
+                                std::to_string(m.groups.size()) + " groups");
+  }
+  if (!std::isfinite(time)) throw std::invalid_argument(where + "append got a time that is not finite");
+  // Times must not go back: the CSV export and plots read each column as a function of time.
+  if (m.rows > 0 && time < m.data.front()[(m.rows - 1) * (1 + value_count(m.groups.front()))]) {
+    throw std::invalid_argument(where + "append got a time earlier than the last row's");
+  }
+  for (std::size_t g = 0; g < m.groups.size(); ++g) {
+    if (values[g].size() != value_count(m.groups[g])) {
+      throw std::invalid_argument(where + "group " + m.groups[g].path + " needs " +
+                                  std::to_string(value_count(m.groups[g])) + " values per row, got " +
+                                  std::to_string(values[g].size()));
+    }
+  }
+  for (std::size_t g = 0; g < m.groups.size(); ++g) {
+    m.data[g].push_back(time);
+    m.data[g].insert(m.data[g].end(), values[g].begin(), values[g].end());
+  }
+  ++m.rows;
+}
+
+void TimeHistoryWriter::flush() {
+  const Impl& m = *impl_;
+  const std::string part = m.path + ".part";
+  const h5::QuietHdf5 quiet;
+  try {
+    {
+      h5::Handle file = h5::create_file(part);
+      h5::write_attr(file, "radx_th_format_version", &kFormatVersion);
+      h5::write_string_attr(file, "time_unit", m.time_unit);
+      std::vector<std::string> paths;
+      for (const auto& g : m.groups) paths.push_back(g.path);
+      h5::write_string_array_attr(file, "groups", paths);
+      for (std::size_t i = 0; i < m.groups.size(); ++i) {
+        const ThGroupLayout& g = m.groups[i];
+        const std::size_t cols = 1 + value_count(g);
+        const h5::Handle ds =
+            h5::write_extendible_dataset<double>(file, g.path, m.data[i], cols, chunk_rows(m.rows, cols));
+        h5::write_string_array_attr(ds, "columns", local_column_names(g));
+        h5::write_string_array_attr(ds, "units", column_units(g, m.time_unit));
+        h5::write_string_array_attr(ds, "variables", g.variables);
+        h5::write_string_array_attr(ds, "variable_units", g.units);
+        if (!g.objects.empty()) {
+          h5::write_attr(ds, "objects", g.objects.data(), static_cast<hsize_t>(g.objects.size()));
+        }
+        h5::write_string_attr(ds, "object_kind", g.object_kind);
+        h5::write_string_attr(ds, "title", g.title);
+      }
+      file.close("cannot close file " + part);
+    }
+    h5::sync_file(part);
+    h5::replace_file(part, m.path);
+  } catch (const std::exception& e) {
+    std::error_code ignored;
+    std::filesystem::remove(part, ignored);
+    throw std::runtime_error("cannot write the time history " + m.path + ": " + e.what());
+  }
+}
+
+std::size_t TimeHistoryWriter::rows() const {
+  return impl_->rows;
+}
+
+bool read_time_history(const std::string& path, std::vector<ThGroupData>& groups, std::string& error) {
+  groups.clear();
+  const h5::QuietHdf5 quiet;
+  try {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) throw h5::Failure("no such file");
+    const h5::Handle file = h5::open_file_read_only(path);
+    if (!h5::has_attr(file, "radx_th_format_version")) {
+      throw h5::Failure("not a radx time-history file (no root attribute radx_th_format_version)");
+    }
+    const auto version = h5::read_attr<std::int64_t>(file, "radx_th_format_version");
+    if (version != kFormatVersion) {
+      throw h5::Failure("time-history format version " + std::to_string(version) +
+                        ", this radx reads version " + std::to_string(kFormatVersion));
+    }
+    const std::string time_unit = h5::read_string_attr(file, "time_unit");
+    for (const auto& p : h5::read_string_array_attr(file, "groups")) {
+      ThGroupData d;
+      d.time_unit = time_unit;
+      d.layout.path = p;
+      const std::string where = "dataset /" + p;
+      const h5::Handle ds(H5Dopen2(file, p.c_str(), H5P_DEFAULT), H5Dclose, "cannot open " + where);
+      d.layout.title = h5::read_string_attr(ds, "title");
+      d.layout.object_kind = h5::read_string_attr(ds, "object_kind");
+      d.layout.variables = h5::read_string_array_attr(ds, "variables");
+      if (h5::has_attr(ds, "objects")) d.layout.objects = h5::read_attr_array<std::int64_t>(ds, "objects");
+      d.layout.units = h5::read_string_array_attr(ds, "variable_units");
+      const auto units = h5::read_string_array_attr(ds, "units");
+      const auto columns = h5::read_string_array_attr(ds, "columns");
+      const auto dims = h5::dataset_dims(file, p);
+      const std::size_t cols = 1 + value_count(d.layout);
+      if (d.layout.variables.empty() || d.layout.units.size() != d.layout.variables.size() ||
+          dims.size() != 2 || dims[1] != cols) {
+        throw h5::Failure(where + ": its shape, variables, variable units and objects do not agree");
+      }
+      // The column names and units follow from the variables and objects; attributes that say otherwise
+      // mean a file written by something else, whose columns we would mislabel.
+      if (columns != local_column_names(d.layout) || units != column_units(d.layout, time_unit)) {
+        throw h5::Failure(where + ": attributes columns and units do not follow its variables and objects");
+      }
+      d.columns = cols;
+      d.rows = h5::read_dataset<double>(file, p, cols);
+      groups.push_back(std::move(d));
+    }
+  } catch (const std::exception& e) {
+    groups.clear();
+    error = path + ": " + e.what();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace radx::io

@@ -1,0 +1,69 @@
+// Time history P_th.h5 (results-format.md section 7): one dataset per group of variables, rows in time,
+// time as the first column, the variable names, object ids and units as attributes. Rows are kept in
+// memory and the file is rewritten through `P_th.h5.part` and an atomic rename at each flush, so the
+// file on disk is always complete (a killed run keeps what the last flush wrote).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace radx::io {
+
+// A group of columns written together: the global variables, or one /TH/... group of the deck.
+struct ThGroupLayout {
+  std::string path;                    // dataset path in the file, e.g. "global", "node/1", "part/2"
+  std::string title;                   // the deck's title of the /TH group ("" for global)
+  std::string object_kind;             // "node", "part", "interface", "rigid wall", "shell", "subset", ""
+  std::vector<std::int64_t> objects;   // user ids, in column order (empty for global)
+  std::vector<std::string> variables;  // names per object, e.g. DX DY DZ (the same for every object)
+  std::vector<std::string> units;      // unit of each variable, same length as `variables`
+};
+
+class TimeHistoryWriter {
+ public:
+  // `path` is the file to write; nothing is written before the first flush. `time_unit` labels column 0.
+  // Throws std::invalid_argument for layouts the file cannot hold: a path that is empty, absolute, holds
+  // ':' or lies inside another group's path; no variables; units not one per variable; a repeated
+  // variable. A group with an object_kind has values per object, even with no objects (no columns).
+  TimeHistoryWriter(std::string path, std::vector<ThGroupLayout> groups, std::string time_unit);
+  ~TimeHistoryWriter();
+  TimeHistoryWriter(const TimeHistoryWriter&) = delete;
+  TimeHistoryWriter& operator=(const TimeHistoryWriter&) = delete;
+
+  // Appends a row at `time` to every group: values[g] holds objects.size() * variables.size() values of
+  // group g (object-major: object 0's variables, then object 1's), or variables.size() for global.
+  // Throws std::invalid_argument, storing nothing, when a value count is wrong or `time` is not finite
+  // or earlier than the last row's (equal times are kept).
+  void append(double time, const std::vector<std::span<const double>>& values);
+  // Writes the whole file (P_th.h5.part, then rename). Throws std::runtime_error naming the file.
+  void flush();
+  [[nodiscard]] std::size_t rows() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Reading, for `radx th`: the groups of a file and their columns.
+struct ThColumn {
+  std::string name;  // "<group path>:<object id>:<variable>" or "global:<variable>"; "time" for column 0
+  std::string unit;
+};
+struct ThGroupData {
+  ThGroupLayout layout;
+  std::vector<double> rows;  // [rows][1 + columns], time first
+  std::size_t columns = 0;   // including time
+  std::string time_unit;     // unit of column 0 (the file's root attribute time_unit)
+};
+// Reads every group of the file, in the order they were written. Returns false with `error` naming the
+// file (and the HDF5 object) when the file cannot be read or is not a radx time history of version 1.
+bool read_time_history(const std::string& path, std::vector<ThGroupData>& groups, std::string& error);
+
+// The columns of a group, time first, named as ThColumn says (the `columns` attribute of the file holds
+// the same names without the "<group path>:" prefix).
+std::vector<ThColumn> th_columns(const ThGroupLayout& layout, const std::string& time_unit);
+
+}  // namespace radx::io

@@ -1,0 +1,284 @@
+// Result fields: see result_fields.hpp for the definition of every field. Shell frames are rebuilt from
+// the current coordinates with the element's own construction (shell_bt4.cpp [1.2] for quads,
+// shell_c0_tri3.cpp [2] for triangles) so the rotated stress is the one the kernel holds.
+#include "solver/result_fields.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "solver/model/geometry.hpp"
+#include "solver/shell_section.hpp"
+
+namespace radx::solver {
+
+namespace {
+
+using model::Vec3;
+
+struct CellFieldInfo {
+  CellField field;
+  std::string_view name;
+  int components;
+};
+struct NodeFieldInfo {
+  NodeField field;
+  std::string_view name;
+  int components;
+};
+
+// Names match parser's anim_field_names() output names (a test keeps the two in step).
+constexpr std::array<CellFieldInfo, 8> kCellFields = {{
+    {CellField::VonMises, "von_mises", 1},
+    {CellField::PlasticStrain, "plastic_strain", 1},
+    {CellField::Thickness, "thickness", 1},
+    {CellField::InternalEnergyDensity, "internal_energy_density", 1},
+    {CellField::Pressure, "pressure", 1},
+    {CellField::Density, "density", 1},
+    {CellField::HourglassEnergyDensity, "hourglass_energy_density", 1},
+    {CellField::Stress, "stress", 6},
+}};
+constexpr std::array<NodeFieldInfo, 9> kNodeFields = {{
+    {NodeField::Displacement, "displacement", 3},
+    {NodeField::Velocity, "velocity", 3},
+    {NodeField::Acceleration, "acceleration", 3},
+    {NodeField::ContactForce, "contact_force", 3},
+    {NodeField::InternalForce, "internal_force", 3},
+    {NodeField::ExternalForce, "external_force", 3},
+    {NodeField::ReactionForce, "reaction_force", 3},
+    {NodeField::AddedMass, "added_mass", 1},
+    {NodeField::NodalTimeStep, "nodal_time_step", 1},
+}};
+
+// The stress state of one cell in global axes, with what the scalar fields need.
+struct CellValues {
+  std::array<double, 6> sig{};  // xx yy zz xy yz zx
+  double eps_p = 0, thickness = 0, volume0 = 0, e_int = 0, e_hg = 0, density = 0;
+};
+
+double von_mises(const std::array<double, 6>& s) {
+  const double a = s[0] - s[1], b = s[1] - s[2], c = s[2] - s[0];
+  return std::sqrt(0.5 * (a * a + b * b + c * c) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+}
+
+// Local plane stress (sxx syy sxy syz szx in frame e1 e2 e3) to global: sigma = R s R^T with R = [e1 e2 e3].
+std::array<double, 6> to_global(const double loc[5], const Vec3& e1, const Vec3& e2, const Vec3& e3) {
+  const double s[3][3] = {{loc[0], loc[2], loc[4]}, {loc[2], loc[1], loc[3]}, {loc[4], loc[3], 0.0}};
+  const Vec3 R[3] = {e1, e2, e3};  // R[k] is local axis k
+  auto comp = [&](int i, int j) {
+    double v = 0;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        v += R[a][static_cast<std::size_t>(i)] * s[a][b] * R[b][static_cast<std::size_t>(j)];
+    return v;
+  };
+  return {comp(0, 0), comp(1, 1), comp(2, 2), comp(0, 1), comp(1, 2), comp(2, 0)};
+}
+
+Vec3 unit(const Vec3& v) {
+  const double n = model::norm(v);
+  return n > 0 ? model::scale(v, 1.0 / n) : v;
+}
+
+// Element frame of a shell from its current nodes.
+void shell_frame(const ShellGroup& g, int i, const NodeState& s, Vec3& e1, Vec3& e2, Vec3& e3) {
+  auto X = [&](int k) {
+    const auto n = static_cast<std::size_t>(g.conn[static_cast<std::size_t>(k * kGroupSize + i)]);
+    return Vec3{s.x[n], s.y[n], s.z[n]};
+  };
+  if (g.triangle) {
+    const Vec3 x1 = X(0), x2 = X(1), x3 = X(2);
+    e1 = unit(model::sub(x2, x1));
+    e3 = unit(model::cross(model::sub(x3, x1), model::sub(x3, x2)));
+    e2 = model::cross(e3, e1);
+    return;
+  }
+  const Vec3 x1 = X(0), x2 = X(1), x3 = X(2), x4 = X(3);
+  const Vec3 g1 = model::add(model::sub(x2, x1), model::sub(x3, x4));
+  const Vec3 g2 = model::add(model::sub(x3, x2), model::sub(x4, x1));
+  e3 = unit(model::cross(g1, g2));
+  const double n1 = model::norm(g1), n2 = model::norm(g2);
+  e1 = unit(model::add(g1, model::scale(model::cross(g2, e3), n2 > 0 ? n1 / n2 : 0.0)));
+  e2 = model::cross(e3, e1);
+}
+
+std::size_t cell_offset(const model::Model& m, bool triangle) {
+  return triangle ? m.shells.size() : 0;
+}
+
+// Calls fn(cell index, CellValues) for every element of the model.
+template <class Fn>
+void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
+  const auto& m = e.model();
+  const auto& s = e.nodes();
+  const auto& mats = e.materials();
+  for (const auto& g : e.shell_groups()) {
+    const int np = g.props.n_points;
+    const auto rule = shell_detail::thickness_rule(np > 0 ? np : 0);
+    for (int i = 0; i < g.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      CellValues c;
+      double loc[5] = {0, 0, 0, 0, 0};
+      if (np <= 0) {  // resultant elasticity: the first 5 rows are the mean stresses
+        for (int q = 0; q < 5; ++q) loc[q] = g.sig[static_cast<std::size_t>(q) * kGroupSize + k];
+      } else {
+        for (int p = 0; p < np; ++p) {
+          for (int q = 0; q < 5; ++q) loc[q] += rule.w[p] * g.sig[shell_detail::sig_index(p, q, i)];
+          c.eps_p = std::max(c.eps_p, g.eps_p[static_cast<std::size_t>(p) * kGroupSize + k]);
+        }
+      }
+      Vec3 e1, e2, e3;
+      shell_frame(g, i, s, e1, e2, e3);
+      c.sig = to_global(loc, e1, e2, e3);
+      c.thickness = g.thick[k] > 0 ? g.thick[k] : g.t0[k];
+      c.volume0 = g.area0[k] * g.t0[k];
+      c.e_int = g.e_int[k];
+      c.e_hg = g.e_hg[k];
+      c.density = mats[static_cast<std::size_t>(g.material)].rho0;
+      fn(cell_offset(m, g.triangle) + static_cast<std::size_t>(g.element[k]), c);
+    }
+  }
+  const std::size_t brick0 = m.shells.size() + m.shells3.size();
+  for (const auto& g : e.brick_groups()) {
+    for (int i = 0; i < g.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      CellValues c;
+      for (int q = 0; q < 6; ++q)
+        c.sig[static_cast<std::size_t>(q)] = g.sig[static_cast<std::size_t>(q) * kGroupSize + k];
+      c.eps_p = g.eps_p[k];
+      c.volume0 = g.vol0[k];
+      c.e_int = g.e_int[k];
+      c.e_hg = g.e_hg[k];
+      c.density = g.rho[k];
+      fn(brick0 + static_cast<std::size_t>(g.element[k]), c);
+    }
+  }
+}
+
+}  // namespace
+
+std::string_view field_name(CellField f) {
+  for (const auto& i : kCellFields)
+    if (i.field == f) return i.name;
+  return {};
+}
+std::string_view field_name(NodeField f) {
+  for (const auto& i : kNodeFields)
+    if (i.field == f) return i.name;
+  return {};
+}
+std::optional<CellField> cell_field_named(std::string_view name) {
+  for (const auto& i : kCellFields)
+    if (i.name == name) return i.field;
+  return std::nullopt;
+}
+std::optional<NodeField> node_field_named(std::string_view name) {
+  for (const auto& i : kNodeFields)
+    if (i.name == name) return i.field;
+  return std::nullopt;
+}
+int components(CellField f) {
+  for (const auto& i : kCellFields)
+    if (i.field == f) return i.components;
+  return 1;
+}
+int components(NodeField f) {
+  for (const auto& i : kNodeFields)
+    if (i.field == f) return i.components;
+  return 1;
+}
+
+void gather_cell_field(const ExplicitEngine& e, CellField f, std::span<float> out) {
+  std::fill(out.begin(), out.end(), 0.0f);
+  const auto k = static_cast<std::size_t>(components(f));
+  for_each_cell(e, [&](std::size_t cell, const CellValues& c) {
+    float* o = out.data() + cell * k;
+    const double per_volume = c.volume0 > 0 ? 1.0 / c.volume0 : 0.0;
+    switch (f) {
+      case CellField::VonMises: o[0] = static_cast<float>(von_mises(c.sig)); break;
+      case CellField::PlasticStrain: o[0] = static_cast<float>(c.eps_p); break;
+      case CellField::Thickness: o[0] = static_cast<float>(c.thickness); break;
+      case CellField::InternalEnergyDensity: o[0] = static_cast<float>(c.e_int * per_volume); break;
+      case CellField::Pressure: o[0] = static_cast<float>(-(c.sig[0] + c.sig[1] + c.sig[2]) / 3.0); break;
+      case CellField::Density: o[0] = static_cast<float>(c.density); break;
+      case CellField::HourglassEnergyDensity: o[0] = static_cast<float>(c.e_hg * per_volume); break;
+      case CellField::Stress:
+        for (std::size_t q = 0; q < 6; ++q) o[q] = static_cast<float>(c.sig[q]);
+        break;
+    }
+  });
+}
+
+void gather_node_field(const ExplicitEngine& e, NodeField f, double dt1, std::span<float> out) {
+  const auto& s = e.nodes();
+  std::fill(out.begin(), out.end(), 0.0f);
+  auto put3 = [&](std::size_t n, double x, double y, double z) {
+    out[3 * n] = static_cast<float>(x);
+    out[3 * n + 1] = static_cast<float>(y);
+    out[3 * n + 2] = static_cast<float>(z);
+  };
+  if (f == NodeField::NodalTimeStep) {
+    std::vector<double> k(s.n, 0.0);
+    for (const auto& g : e.shell_groups()) {
+      const int npe = g.triangle ? 3 : 4;
+      for (int i = 0; i < g.count; ++i)
+        for (int q = 0; q < npe; ++q)
+          k[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
+              g.k_nodal[static_cast<std::size_t>(i)];
+    }
+    for (const auto& g : e.brick_groups())
+      for (int i = 0; i < g.count; ++i)
+        for (int q = 0; q < 8; ++q)
+          k[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
+              g.k_nodal[static_cast<std::size_t>(i)];
+    for (std::size_t n = 0; n < s.n; ++n)
+      out[n] = k[n] > 0 ? static_cast<float>(std::sqrt(2.0 * s.mass[n] / k[n])) : 0.0f;
+    return;
+  }
+  for (std::size_t n = 0; n < s.n; ++n) {
+    switch (f) {
+      case NodeField::Displacement: put3(n, s.x[n] - s.x0[n], s.y[n] - s.y0[n], s.z[n] - s.z0[n]); break;
+      case NodeField::Velocity:
+        put3(n, s.vx[n] + 0.5 * dt1 * s.ax[n], s.vy[n] + 0.5 * dt1 * s.ay[n], s.vz[n] + 0.5 * dt1 * s.az[n]);
+        break;
+      case NodeField::Acceleration: put3(n, s.ax[n], s.ay[n], s.az[n]); break;
+      case NodeField::ContactForce: break;  // no contact forces yet
+      case NodeField::InternalForce:
+        put3(n, s.fx_ext[n] - s.fx[n], s.fy_ext[n] - s.fy[n], s.fz_ext[n] - s.fz[n]);
+        break;
+      case NodeField::ExternalForce: put3(n, s.fx_ext[n], s.fy_ext[n], s.fz_ext[n]); break;
+      case NodeField::ReactionForce:
+        put3(n, s.mass[n] * s.ax[n] - s.fx[n], s.mass[n] * s.ay[n] - s.fy[n], s.mass[n] * s.az[n] - s.fz[n]);
+        break;
+      case NodeField::AddedMass: out[n] = static_cast<float>(s.added_mass[n]); break;
+      case NodeField::NodalTimeStep: break;
+    }
+  }
+}
+
+void gather_element_status(const ExplicitEngine& e, std::span<std::uint8_t> out) {
+  const auto& m = e.model();
+  std::fill(out.begin(), out.end(), std::uint8_t{1});
+  for (const auto& g : e.shell_groups())
+    for (int i = 0; i < g.count; ++i)
+      if (g.off[static_cast<std::size_t>(i)] <= 0)
+        out[cell_offset(m, g.triangle) + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] =
+            0;
+  const std::size_t brick0 = m.shells.size() + m.shells3.size();
+  for (const auto& g : e.brick_groups())
+    for (int i = 0; i < g.count; ++i)
+      if (g.off[static_cast<std::size_t>(i)] <= 0)
+        out[brick0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+}
+
+void gather_points(const ExplicitEngine& e, std::span<double> out) {
+  const auto& s = e.nodes();
+  for (std::size_t n = 0; n < s.n; ++n) {
+    out[3 * n] = s.x[n];
+    out[3 * n + 1] = s.y[n];
+    out[3 * n + 2] = s.z[n];
+  }
+}
+
+}  // namespace radx::solver

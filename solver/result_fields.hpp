@@ -1,0 +1,68 @@
+// Result fields of the running model, gathered from the element groups and the node state into flat
+// arrays in model order, for animation states and time histories (results-format.md sections 3 and 7).
+// Cells are numbered as the model file numbers them: 4-node shells, then 3-node shells, then bricks,
+// each block in its model order. Nothing here changes the engine's state.
+//
+// Definitions (work units):
+//   shells: the stress of a cell is the through-thickness mean (the force resultant divided by the
+//     thickness, i.e. the membrane stress), rotated from the element frame to global axes; its plastic
+//     strain is the largest over the thickness points (the point that fails first); the plane-stress
+//     szz is 0. Volume = A0 t0 (initial).
+//   bricks: the one-point stress; volume the current one-point volume.
+//   von Mises = sqrt(1/2 [(sxx-syy)^2 + (syy-szz)^2 + (szz-sxx)^2] + 3 (sxy^2 + syz^2 + szx^2));
+//   pressure = -(sxx + syy + szz)/3; energy densities = accumulated energy / initial volume;
+//   density: bricks rho0 V0/V, shells rho0.
+//   velocity at the full step v^n = v^{n-1/2} + dt1/2 a^n (as the kinetic energy, elements.md 8);
+//   internal force f_int = f_ext - f (m a = f_ext - f_int before kinematic conditions);
+//   reaction force = m a - f (a after the kinematic conditions): what boundary conditions, imposed
+//   velocities, rigid walls and rigid bodies add to the node; contact force: 0 until contact exists.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "solver/explicit_engine.hpp"
+
+namespace radx::solver {
+
+enum class CellField : std::uint8_t {
+  VonMises,
+  PlasticStrain,
+  Thickness,
+  InternalEnergyDensity,
+  Pressure,
+  Density,
+  HourglassEnergyDensity,
+  Stress,  // 6 components XX YY ZZ XY YZ XZ
+};
+
+enum class NodeField : std::uint8_t {
+  Displacement,
+  Velocity,
+  Acceleration,
+  ContactForce,
+  InternalForce,
+  ExternalForce,
+  ReactionForce,
+  AddedMass,      // scalar
+  NodalTimeStep,  // scalar: sqrt(2 m / k) from the element stiffness estimates (0 where k = 0)
+};
+
+// The output array name of a field (results-format.md: no '/' or '.'), and back.
+std::string_view field_name(CellField f);
+std::string_view field_name(NodeField f);
+std::optional<CellField> cell_field_named(std::string_view name);
+std::optional<NodeField> node_field_named(std::string_view name);
+int components(CellField f);
+int components(NodeField f);
+
+// Fill `out` ([cells * components] or [nodes * components]). `dt1` is the step t^n - t^{n-1}.
+void gather_cell_field(const ExplicitEngine& e, CellField f, std::span<float> out);
+void gather_node_field(const ExplicitEngine& e, NodeField f, double dt1, std::span<float> out);
+void gather_element_status(const ExplicitEngine& e, std::span<std::uint8_t> out);  // 1 active, 0 deleted
+void gather_points(const ExplicitEngine& e, std::span<double> out);                // [3 nodes]
+
+}  // namespace radx::solver

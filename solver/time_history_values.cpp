@@ -1,0 +1,272 @@
+// Time-history values; the definition of every variable is in time_history_values.hpp.
+#include "solver/time_history_values.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "solver/kinematics_driver.hpp"
+#include "solver/model/masses.hpp"
+#include "solver/shell_section.hpp"
+
+namespace radx::solver {
+
+namespace {
+
+constexpr Dim kEnergy{1, 2, -2}, kMomentum{1, 1, -1}, kMass{1, 0, 0}, kTime{0, 0, 1}, kLength{0, 1, 0},
+    kVelocity{0, 1, -1}, kAcceleration{0, 1, -2}, kForce{1, 1, -2}, kMoment{1, 2, -2}, kNone{0, 0, 0},
+    kAngularVelocity{0, 0, -1}, kAngularAcceleration{0, 0, -2}, kForcePerLength{1, 0, -2},
+    kMomentPerLength{1, 1, -2};
+
+std::size_t index_of(const std::vector<std::string>& names, const std::string& v) {
+  return static_cast<std::size_t>(std::find(names.begin(), names.end(), v) - names.begin());
+}
+
+}  // namespace
+
+const std::vector<ThVariableInfo>& global_th_variables() {
+  static const std::vector<ThVariableInfo> v = {
+      {"IE", kEnergy}, {"KE", kEnergy}, {"XMOM", kMomentum},   {"YMOM", kMomentum},  {"ZMOM", kMomentum},
+      {"MASS", kMass}, {"DT", kTime},   {"RKE", kEnergy},      {"EXTW", kEnergy},    {"SE", kEnergy},
+      {"CE", kEnergy}, {"HE", kEnergy}, {"CE_ELAST", kEnergy}, {"CE_FRIC", kEnergy}, {"CE_DAMP", kEnergy},
+      {"PW", kEnergy}, {"DMAS", kMass}, {"DMAS_PCT", kNone},
+  };
+  return v;
+}
+
+Dim th_variable_dim(model::ThKind kind, const std::string& n) {
+  using K = model::ThKind;
+  switch (kind) {
+    case K::Node:
+      if (n[0] == 'D' && n.size() == 2) return kLength;
+      if (n == "X" || n == "Y" || n == "Z") return kLength;
+      if (n[0] == 'V' && n.size() == 2) return kVelocity;
+      if (n[0] == 'A' && n.size() == 2) return kAcceleration;
+      if (n.rfind("VR", 0) == 0) return kAngularVelocity;
+      if (n.rfind("AR", 0) == 0) return kAngularAcceleration;
+      if (n.rfind("DR", 0) == 0) return kNone;
+      if (n.size() == 6) return kMoment;  // REACXX..
+      return kForce;                      // REACX..
+    case K::Part:
+    case K::Subset:
+      if (n == "MASS" || n == "ERODED") return kMass;
+      if (n.find("MOM") != std::string::npos) return kMomentum;
+      return kEnergy;
+    case K::Inter:
+      if (n.rfind("CE_", 0) == 0) return kEnergy;
+      return kForce;
+    case K::Rwall: return kForce;
+    case K::Shell:
+      if (n == "F1" || n == "F2" || n == "F12") return kForcePerLength;
+      if (n == "M1" || n == "M2" || n == "M12") return kMomentPerLength;
+      if (n == "IEM" || n == "IEB") return kEnergy;
+      return kNone;
+  }
+  return kNone;
+}
+
+void global_th_values(const ExplicitEngine& e, const CycleReport& r, std::span<double> out) {
+  const auto& en = r.energy;
+  const double contact = en.contact_elastic + en.contact_friction + en.contact_damping + en.contact_lagrange;
+  (void)e;
+  const double v[] = {en.internal,
+                      en.kinetic_t,
+                      r.momentum[0],
+                      r.momentum[1],
+                      r.momentum[2],
+                      r.mass,
+                      r.dt,
+                      en.kinetic_r,
+                      en.external_work,
+                      0.0,
+                      contact,
+                      en.hourglass,
+                      en.contact_elastic,
+                      en.contact_friction,
+                      en.contact_damping,
+                      en.plastic_work,
+                      r.added_mass,
+                      r.mass0 > 0 ? 100.0 * r.added_mass / r.mass0 : 0.0};
+  std::copy(std::begin(v), std::end(v), out.begin());
+}
+
+ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistoryGroup& g)
+    : kind_(g.kind), objects_(g.objects), variables_(g.variables) {
+  const auto& m = e.model();
+  if (kind_ != model::ThKind::Part && kind_ != model::ThKind::Subset) return;
+  // Node shares of each part: the part's lumped-mass contribution over the node's total mass.
+  std::vector<std::map<std::int32_t, double>> shares(m.parts.size());
+  model::for_each_nodal_mass(m, [&](std::int32_t node, std::int32_t part, std::size_t, double mass) {
+    shares[static_cast<std::size_t>(part)][node] += mass;
+  });
+  part_nodes_.resize(m.parts.size());
+  for (std::size_t p = 0; p < m.parts.size(); ++p)
+    for (const auto& [node, mass] : shares[p]) {
+      const double total = m.node_mass[static_cast<std::size_t>(node)];
+      if (total > 0) part_nodes_[p].emplace_back(node, mass / total);
+    }
+  for (const auto o : objects_) {
+    std::vector<std::int32_t> parts;
+    if (kind_ == model::ThKind::Part) {
+      parts.push_back(o);
+    } else {  // a subset: its parts and those of its child subsets, recursively
+      std::vector<std::int32_t> todo{o}, seen;
+      while (!todo.empty()) {
+        const auto s = todo.back();
+        todo.pop_back();
+        if (std::find(seen.begin(), seen.end(), s) != seen.end()) continue;
+        seen.push_back(s);
+        const auto& sub = m.subsets[static_cast<std::size_t>(s)];
+        parts.insert(parts.end(), sub.parts.begin(), sub.parts.end());
+        todo.insert(todo.end(), sub.children.begin(), sub.children.end());
+      }
+      std::sort(parts.begin(), parts.end());
+      parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+    }
+    object_parts_.push_back(std::move(parts));
+  }
+}
+
+void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::span<double> out) const {
+  const auto& s = e.nodes();
+  const auto& m = e.model();
+  const std::size_t nv = variables_.size();
+  std::fill(out.begin(), out.end(), 0.0);
+  const double h = 0.5 * r.dt1;
+  auto put = [&](std::size_t obj, const std::string& name, double value) {
+    const std::size_t k = index_of(variables_, name);
+    if (k < nv) out[obj * nv + k] = value;
+  };
+  using K = model::ThKind;
+  switch (kind_) {
+    case K::Node:
+      for (std::size_t o = 0; o < objects_.size(); ++o) {
+        const auto n = static_cast<std::size_t>(objects_[o]);
+        const double v[3] = {s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]};
+        const double reac[3] = {s.mass[n] * s.ax[n] - s.fx[n], s.mass[n] * s.ay[n] - s.fy[n],
+                                s.mass[n] * s.az[n] - s.fz[n]};
+        const double mreac[3] = {s.inertia[n] * s.awx[n] - s.mx[n], s.inertia[n] * s.awy[n] - s.my[n],
+                                 s.inertia[n] * s.awz[n] - s.mz[n]};
+        const char* axes[3] = {"X", "Y", "Z"};
+        const double x[3] = {s.x[n], s.y[n], s.z[n]}, x0[3] = {s.x0[n], s.y0[n], s.z0[n]};
+        const double a[3] = {s.ax[n], s.ay[n], s.az[n]}, w[3] = {s.wx[n], s.wy[n], s.wz[n]};
+        const double aw[3] = {s.awx[n], s.awy[n], s.awz[n]};
+        for (int d = 0; d < 3; ++d) {
+          const std::string ax = axes[d];
+          put(o, "D" + ax, x[d] - x0[d]);
+          put(o, "V" + ax, v[d]);
+          put(o, "A" + ax, a[d]);
+          put(o, "VR" + ax, w[d] + h * aw[d]);
+          put(o, "AR" + ax, aw[d]);
+          put(o, ax, x[d]);
+          put(o, "REAC" + ax, reac[d]);
+          put(o, "REAC" + ax + ax, mreac[d]);
+        }
+      }
+      break;
+    case K::Part:
+    case K::Subset: {
+      // Element energies and eroded mass per part, then node sums per part.
+      std::vector<double> ie(m.parts.size(), 0.0), he(m.parts.size(), 0.0), eroded(m.parts.size(), 0.0);
+      const auto& mats = e.materials();
+      for (const auto& g : e.shell_groups())
+        for (int i = 0; i < g.count; ++i) {
+          const auto k = static_cast<std::size_t>(i);
+          const auto p = static_cast<std::size_t>(g.part);
+          ie[p] += g.e_int[k];
+          he[p] += g.e_hg[k];
+          if (g.off[k] <= 0)
+            eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.area0[k] * g.t0[k];
+        }
+      for (const auto& g : e.brick_groups())
+        for (int i = 0; i < g.count; ++i) {
+          const auto k = static_cast<std::size_t>(i);
+          const auto p = static_cast<std::size_t>(g.part);
+          ie[p] += g.e_int[k];
+          he[p] += g.e_hg[k];
+          if (g.off[k] <= 0) eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.vol0[k];
+        }
+      for (std::size_t o = 0; o < objects_.size(); ++o) {
+        double v_ie = 0, v_he = 0, v_er = 0, ke = 0, mass = 0, mom[3] = {0, 0, 0};
+        for (const auto p : object_parts_[o]) {
+          const auto pp = static_cast<std::size_t>(p);
+          v_ie += ie[pp];
+          v_he += he[pp];
+          v_er += eroded[pp];
+          for (const auto& [node, share] : part_nodes_[pp]) {
+            const auto n = static_cast<std::size_t>(node);
+            const double mn = share * s.mass[n];
+            const double v[3] = {s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]};
+            ke += 0.5 * mn * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            mass += mn;
+            for (int d = 0; d < 3; ++d) mom[d] += mn * v[d];
+          }
+        }
+        put(o, "IE", v_ie);
+        put(o, "KE", ke);
+        put(o, "XMOM", mom[0]);
+        put(o, "YMOM", mom[1]);
+        put(o, "ZMOM", mom[2]);
+        put(o, "MASS", mass);
+        put(o, "HE", v_he);
+        put(o, "ERODED", v_er);
+      }
+      break;
+    }
+    case K::Rwall: {
+      const auto& walls = e.kinematics().wall_outputs();
+      for (std::size_t o = 0; o < objects_.size(); ++o) {
+        const auto& w = walls[static_cast<std::size_t>(objects_[o])];
+        const char* axes[3] = {"X", "Y", "Z"};
+        for (std::size_t d = 0; d < 3; ++d) {
+          put(o, std::string("FN") + axes[d], w.normal_force[d]);
+          put(o, std::string("FT") + axes[d], w.tangential_force[d]);
+        }
+      }
+      break;
+    }
+    case K::Inter: break;  // contact forces and energies: 0 until TYPE7 runs in the engine
+    case K::Shell: {
+      // Object -> (group, slot) lookup, built per sample: TH shell lists are short.
+      for (const auto& g : e.shell_groups()) {
+        if (g.triangle) continue;
+        const int np = g.props.n_points;
+        const auto rule = shell_detail::thickness_rule(np > 0 ? np : 0);
+        for (int i = 0; i < g.count; ++i) {
+          const auto k = static_cast<std::size_t>(i);
+          for (std::size_t o = 0; o < objects_.size(); ++o) {
+            if (objects_[o] != g.element[k]) continue;
+            const double t = g.thick[k] > 0 ? g.thick[k] : g.t0[k];
+            double f[3] = {0, 0, 0}, mm[3] = {0, 0, 0};
+            if (np <= 0) {
+              for (std::size_t q = 0; q < 3; ++q) {
+                f[q] = g.sig[q * kGroupSize + k];
+                mm[q] = g.sig[(5 + q) * kGroupSize + k];
+              }
+            } else {
+              for (int p = 0; p < np; ++p) {
+                const int comp[3] = {0, 1, 2};
+                for (int q = 0; q < 3; ++q) {
+                  const double sg = g.sig[shell_detail::sig_index(p, comp[q], i)];
+                  f[q] += rule.w[p] * sg;
+                  mm[q] += rule.m[p] * sg;
+                }
+              }
+            }
+            put(o, "F1", f[0] * t);
+            put(o, "F2", f[1] * t);
+            put(o, "F12", f[2] * t);
+            put(o, "M1", mm[0] * t * t);
+            put(o, "M2", mm[1] * t * t);
+            put(o, "M12", mm[2] * t * t);
+            put(o, "IEM", g.e_int[k]);
+            put(o, "OFF", g.off[k]);
+          }
+        }
+      }
+      break;
+    }
+  }
+}
+
+}  // namespace radx::solver

@@ -1,0 +1,65 @@
+// Time-history values (results-format.md section 7): the global variables in Radioss's order and the
+// values of each /TH group of the model, sampled from the running engine on a full report cycle.
+//
+// Global, in this order: IE internal energy, KE kinetic (translational), XMOM YMOM ZMOM momentum, MASS,
+// DT time step, RKE rotational kinetic energy, EXTW external work, SE spring energy (0: no springs), CE
+// contact energy (elastic + friction + damping + Lagrange), HE hourglass energy, CE_ELAST, CE_FRIC,
+// CE_DAMP, PW plastic work, DMAS added mass, DMAS_PCT added mass in % of the initial mass.
+//
+// Per part (and subset, over its parts and child subsets): IE and HE sum the element energies of the
+// part; KE, XMOM.. and MASS share each node's mass among the parts of its elements in proportion to
+// their lumped-mass contributions (a node between two parts counts for both, in shares); ERODED is the
+// initial mass of the part's deleted elements; HEAT is 0 (radx has no thermal analysis).
+// Per node: D = x - x0, V at the full step v^{n-1/2} + dt1/2 a^n, A = a^n, VR, AR the angular velocity
+// and acceleration, DR = 0 (rotations are not integrated as angles), X Y Z current, REAC = m a - f and
+// REACXX.. = I aw - M (what kinematic conditions add).
+// Per rigid wall: FN, FT the normal and tangential force of the last cycle.
+// Per interface: forces and energies (0 until TYPE7 contact runs in the engine).
+// Per 4-node shell: F1 F2 F12 = t x mean stress (membrane forces per unit length, element frame),
+// M1 M2 M12 = t^2 sum m_i sigma_i (moments per unit length), IEM = the element's internal energy (radx
+// does not split membrane and bending energy), IEB = 0, OFF the kill factor, EMIN EMAX = 0 (strains are
+// not kept). The starter lists these limits (deck check warning) where a deck asks for them.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "solver/explicit_engine.hpp"
+
+namespace radx::solver {
+
+// Physical dimension as exponents of mass, length and time (for unit labels).
+struct Dim {
+  int mass = 0, length = 0, time = 0;
+};
+
+struct ThVariableInfo {
+  std::string name;
+  Dim dim;
+};
+
+const std::vector<ThVariableInfo>& global_th_variables();
+Dim th_variable_dim(model::ThKind kind, const std::string& name);
+
+// Values of the global variables for report `r` (a full report).
+void global_th_values(const ExplicitEngine& e, const CycleReport& r, std::span<double> out);
+
+// One /TH group: objects x variables values, object-major.
+class ThGroupSampler {
+ public:
+  ThGroupSampler(const ExplicitEngine& e, const model::TimeHistoryGroup& g);
+  [[nodiscard]] std::size_t size() const { return objects_.size() * variables_.size(); }
+  void sample(const ExplicitEngine& e, const CycleReport& r, std::span<double> out) const;
+
+ private:
+  model::ThKind kind_;
+  std::vector<std::int32_t> objects_;
+  std::vector<std::string> variables_;
+  // Parts and subsets: for each part, (node, mass share) of its nodes; for each object, its parts.
+  std::vector<std::vector<std::pair<std::int32_t, double>>> part_nodes_;
+  std::vector<std::vector<std::int32_t>> object_parts_;
+};
+
+}  // namespace radx::solver
