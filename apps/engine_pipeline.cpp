@@ -27,6 +27,7 @@ io::StepSource source_of(solver::StepControl::Kind k) {
     case solver::StepControl::Kind::Shell3: return io::StepSource::Shell3;
     case solver::StepControl::Kind::Brick: return io::StepSource::Brick;
     case solver::StepControl::Kind::Node: return io::StepSource::Node;
+    case solver::StepControl::Kind::Interface: return io::StepSource::Interface;
     case solver::StepControl::Kind::None: break;
   }
   return io::StepSource::None;
@@ -138,6 +139,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     l.dt = r.dt;
     l.source = source_of(r.control.kind);
     l.source_id = r.control.user_id;
+    l.source_node = r.control.node_id;
     l.error_percent = r.energy.error_percent;
     l.internal_energy = r.energy.internal;
     l.kinetic_t = r.energy.kinetic_t;
@@ -153,6 +155,10 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   try {
     result = engine.run([&](const solver::CycleReport& r) {
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+      for (const auto& m : engine.take_messages()) {
+        listing_file << "  WARNING (cycle " << r.cycle << "): " << m << '\n';
+        err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
+      }
       listing.progress(r.cycle, r.time, controls.t_stop, wall);
       if (!r.full) return true;
       try {
@@ -206,11 +212,16 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   s.elements = engine.element_count();
   s.threads = result.threads;
   s.wall_seconds = result.wall_seconds;
+  s.contact_seconds = result.contact_seconds;
   s.initial_mass = result.last.mass0;
   s.mass = result.last.mass;
   s.added_mass = result.last.added_mass;
   s.momentum = result.last.momentum;
   s.energy = to_io(result.last.energy);
+  if (const auto* c = engine.contact())
+    for (const auto& r : c->results())
+      s.interfaces.push_back(io::InterfaceSummary{r.id, r.active_pairs, r.max_penetration,
+                                                  r.switched_pairs_max, r.switched_pairs_total});
   s.states = outputs->states_written();
   s.series = outputs->series_path();
   if (!model.time_histories.empty() || controls.th_dt < 1e29)

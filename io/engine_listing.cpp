@@ -106,7 +106,8 @@ std::string listing_column_titles() {
 }
 
 std::string format_listing_line(const ListingLine& l) {
-  const std::string id = l.source == StepSource::None ? std::string("-") : std::to_string(l.source_id);
+  std::string id = l.source == StepSource::None ? std::string("-") : std::to_string(l.source_id);
+  if (l.source == StepSource::Interface && l.source_node != 0) id += ":" + std::to_string(l.source_node);
   const std::string kind(step_source_label(l.source));
   // "+ 0.0" turns -0.0 into 0.0, so a zero never prints as "-0.0%".
   char buf[320];
@@ -222,6 +223,12 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
   row(os, "cost",
       std::string(buf) + " us per element per cycle (" + std::to_string(s.elements) + " elements, " +
           std::to_string(s.threads) + " thread(s))");
+  if (s.contact_seconds > 0) {
+    std::snprintf(buf, sizeof buf, "%.1f %% of the wall time (%s)",
+                  s.wall_seconds > 0 ? 100.0 * s.contact_seconds / s.wall_seconds : 0.0,
+                  format_duration(s.contact_seconds).c_str());
+    row(os, "contact (search and forces)", buf);
+  }
   row(os, "initial mass", sci(s.initial_mass));
   row(os, "final mass", sci(s.mass));
   std::string added = sci(s.added_mass);

@@ -38,15 +38,16 @@ struct ListingLine {
   double time = 0;
   double dt = 0;  // the time step of this cycle
   StepSource source = StepSource::None;
-  std::int64_t source_id = 0;  // user id of the element, node or interface controlling dt
-  double error_percent = 0;    // energy_error_percent(...)
-  double internal_energy = 0;  // I-ENERGY (no hourglass, no contact)
-  double kinetic_t = 0;        // K-ENERGY T
-  double kinetic_r = 0;        // K-ENERGY R
-  double external_work = 0;    // EXT-WORK
-  double mass_error = 0;       // MAS.ERR = (M - M0) / M0
-  double total_mass = 0;       // TOTAL MASS
-  double added_mass = 0;       // MASS ADDED by /DT/.../CST
+  std::int64_t source_id = 0;    // user id of the element, node or interface controlling dt
+  std::int64_t source_node = 0;  // Interface: the secondary node of the controlling pair (printed id:node)
+  double error_percent = 0;      // energy_error_percent(...)
+  double internal_energy = 0;    // I-ENERGY (no hourglass, no contact)
+  double kinetic_t = 0;          // K-ENERGY T
+  double kinetic_r = 0;          // K-ENERGY R
+  double external_work = 0;      // EXT-WORK
+  double mass_error = 0;         // MAS.ERR = (M - M0) / M0
+  double total_mass = 0;         // TOTAL MASS
+  double added_mass = 0;         // MASS ADDED by /DT/.../CST
 };
 
 // The column titles, aligned with format_listing_line (one line, no line end).
@@ -102,6 +103,7 @@ struct RunSummary {
   std::size_t elements = 0;
   int threads = 1;
   double wall_seconds = 0;
+  double contact_seconds = 0;  // wall time in the contact step (search, forces), part of wall_seconds
   double initial_mass = 0;
   double mass = 0;        // total mass at the end (with added mass)
   double added_mass = 0;  // by /DT/NODA/CST and /DT/INTER/CST

@@ -49,7 +49,8 @@ void BoundaryConditions::set_fixed_bits(NodeState& s) const {
 void BoundaryConditions::apply(NodeState& s) const {
   for (std::size_t k = 0; k < node_.size(); ++k) {
     const auto n = static_cast<std::size_t>(node_[k]);
-    const unsigned b = mask_[k];
+    // s.fixed can lose bits during the run (TYPE7 IBC releases a node's conditions at its first impact).
+    const unsigned b = mask_[k] & s.fixed[n];
     if (b & 1u) s.vx[n] = s.ax[n] = 0;
     if (b & 2u) s.vy[n] = s.ay[n] = 0;
     if (b & 4u) s.vz[n] = s.az[n] = 0;

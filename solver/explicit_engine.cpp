@@ -34,6 +34,47 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
   build_groups();
   build_assembly();
   kinematics_ = std::make_unique<KinematicsDriver>(model_, controls_, nodes_);
+  if (!model_.interfaces.empty()) {
+    contact::ContactControls cc;
+    const auto& inter = controls_.inter;
+    cc.dt_scale = inter.given ? inter.scale : controls_.global.scale;
+    cc.t_min = inter.given ? inter.t_min : 0.0;
+    cc.action = inter.action == model::DtAction::AddMass  ? contact::ContactControls::Action::AddMass
+                : inter.action == model::DtAction::Delete ? contact::ContactControls::Action::Delete
+                                                          : contact::ContactControls::Action::None;
+    contact_ = std::make_unique<contact::Type7Contact>(model_, cc);
+    if (contact_->empty()) contact_.reset();
+  }
+}
+
+std::int64_t ExplicitEngine::count_deleted() const {
+  std::int64_t n = 0;
+  for (const auto& g : shells_)
+    for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
+  for (const auto& g : bricks_)
+    for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
+  return n;
+}
+
+void ExplicitEngine::contact_forces(double time, double dt1, StepControl& control, double& dt_contact) {
+  dt_contact = kInf;
+  if (!contact_) return;
+  auto& s = nodes_;
+  contact::ContactNodes v{s.x, s.y, s.z, s.vx, s.vy, s.vz, s.mass, s.added_mass, s.fixed};
+  const contact::ContactStep step = contact_->compute(time, dt1, v);
+  const auto& f = contact_->force();
+  for (const auto n : contact_->touched()) {
+    const auto k = static_cast<std::size_t>(n);
+    s.fx[k] += f[3 * k];
+    s.fy[k] += f[3 * k + 1];
+    s.fz[k] += f[3 * k + 2];
+  }
+  if (step.dt < kInf) {
+    dt_contact = step.dt;
+    control.kind = StepControl::Kind::Interface;
+    control.user_id = step.interface_id;
+    control.node_id = step.node_id;
+  }
 }
 
 ExplicitEngine::~ExplicitEngine() = default;
@@ -385,7 +426,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
   RunResult res;
   res.threads = omp_get_max_threads();
   const auto t_wall0 = std::chrono::steady_clock::now();
-  double element_seconds = 0;
+  double element_seconds = 0, contact_seconds = 0;
   auto& s = nodes_;
   auto& kin = *kinematics_;
   kin.initial_conditions();
@@ -409,9 +450,33 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     // 3. element groups.
     const auto te0 = std::chrono::steady_clock::now();
     compute_element_forces(CycleInfo{dt1, dt2, time});
-    // 4. assembly.
+    // 4. assembly, then the contact forces (2.) added node by node in ascending order.
     assemble();
     element_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - te0).count();
+    StepControl contact_ctl;
+    double dt_contact = kInf;
+    if (contact_) {
+      // Idel: tell contact when elements were deleted since the last cycle.
+      const std::int64_t deleted = count_deleted();
+      if (deleted != deleted_elements_) {
+        deleted_elements_ = deleted;
+        std::vector<std::uint8_t> alive(model_.element_count(), 1);
+        const std::size_t tri0 = model_.shells.size(), brick0 = tri0 + model_.shells3.size();
+        for (const auto& g : shells_)
+          for (int i = 0; i < g.count; ++i)
+            if (g.off[static_cast<std::size_t>(i)] <= 0)
+              alive[(g.triangle ? tri0 : 0) +
+                    static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+        for (const auto& g : bricks_)
+          for (int i = 0; i < g.count; ++i)
+            if (g.off[static_cast<std::size_t>(i)] <= 0)
+              alive[brick0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+        contact_->elements_deleted(alive);
+      }
+      const auto tc0 = std::chrono::steady_clock::now();
+      contact_forces(time, dt1, contact_ctl, dt_contact);
+      contact_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tc0).count();
+    }
     // 9 (early): the step of this cycle comes from the element steps just computed.
     StepControl ctl;
     double dt_elem = element_time_step(ctl);
@@ -431,6 +496,10 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
       const double dt_nodal = nodal_time_step(nctl);
       dt_elem = dt_nodal;  // /DT/NODA replaces the element step by the nodal one
       ctl = nctl;
+    }
+    if (dt_contact < dt_elem) {  // contact votes on the step (its own scale is already applied)
+      dt_elem = dt_contact;
+      ctl = contact_ctl;
     }
     if (first) {
       dt2 = dt_elem;
@@ -489,6 +558,11 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
           energy_.hourglass += g.e_hg[static_cast<std::size_t>(i)];
           energy_.plastic_work += g.w_plastic[static_cast<std::size_t>(i)];
         }
+      if (contact_) {
+        energy_.contact_elastic = contact_->energy_elastic();
+        energy_.contact_damping = contact_->energy_damping();
+        energy_.contact_friction = contact_->energy_friction();
+      }
       kin.kinetic_energy(dt1, energy_.kinetic_t, energy_.kinetic_r);
       energy_.external_work = kin.external_work();
       if (first) energy_.initial_total = energy_.total() - energy_.external_work;
@@ -555,6 +629,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
   res.dt = dt2 > 0 ? dt2 : dt1;  // the last step taken (the final cycle only reaches Tstop)
   res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_wall0).count();
   res.element_seconds = element_seconds;
+  res.contact_seconds = contact_seconds;
   return res;
 }
 

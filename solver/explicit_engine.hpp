@@ -2,9 +2,10 @@
 //
 // One cycle (architecture.md section 4; elements.md section 0), cycle n at time t_n:
 //   1. external loads at t_n (gravity, concentrated loads, pressures);
-//   2. contact (TYPE7: its own issue) would go here;
+//   2. contact (TYPE7 penalty, contact/type7_engine.hpp): forces at t_n into the contact buffer, time-step
+//   vote;
 //   3. element groups: gather, strain rate, material update, internal forces, element time step;
-//   4. deterministic assembly of element forces, node by node in a fixed order;
+//   4. deterministic assembly of element and contact forces, node by node in a fixed order;
 //   5. accelerations a = f / m (rotations: moment / scalar inertia);
 //   6. Lagrange-multiplier correction (LAGDT: its own issue);
 //   7. kinematic conditions: rigid bodies, boundary conditions, imposed velocities, rigid walls;
@@ -21,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/type7_engine.hpp"
 #include "solver/element_groups.hpp"
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
@@ -43,8 +45,9 @@ struct EnergyBalance {
 
 // What controls the time step this cycle.
 struct StepControl {
-  enum class Kind : std::uint8_t { None, Shell, Shell3, Brick, Node } kind = Kind::None;
+  enum class Kind : std::uint8_t { None, Shell, Shell3, Brick, Node, Interface } kind = Kind::None;
   std::int64_t user_id = 0;
+  std::int64_t node_id = 0;  // Interface: the secondary node of the controlling pair
 };
 
 // The state the listing and outputs read after each cycle.
@@ -80,7 +83,7 @@ struct RunResult {
   std::int64_t cycles = 0;
   double time = 0, dt = 0;
   double dt1 = 0;  // t^n - t^{n-1} of the last cycle reached
-  double wall_seconds = 0, element_seconds = 0;
+  double wall_seconds = 0, element_seconds = 0, contact_seconds = 0;
   int threads = 1;
   CycleReport last;
 };
@@ -103,6 +106,12 @@ class ExplicitEngine {
   [[nodiscard]] const model::Model& model() const { return model_; }
   [[nodiscard]] const std::vector<MaterialParams>& materials() const { return materials_; }
   [[nodiscard]] const KinematicsDriver& kinematics() const { return *kinematics_; }
+  // TYPE7 contact (nullptr when the model has no interface).
+  [[nodiscard]] const contact::Type7Contact* contact() const { return contact_.get(); }
+  // Contact warnings since the last call (a node deactivated or removed), each naming node and interface.
+  std::vector<std::string> take_messages() {
+    return contact_ ? contact_->take_messages() : std::vector<std::string>{};
+  }
 
  private:
   void build_nodes();
@@ -132,6 +141,10 @@ class ExplicitEngine {
   std::vector<std::size_t> slot_offsets_;
   std::vector<Slot> slots_;
   std::unique_ptr<KinematicsDriver> kinematics_;  // loads and kinematic conditions
+  std::unique_ptr<contact::Type7Contact> contact_;
+  std::int64_t deleted_elements_ = 0;  // elements with off == 0, to tell contact (Idel) when it changes
+  void contact_forces(double time, double dt1, StepControl& control, double& dt_contact);
+  std::int64_t count_deleted() const;
   EnergyBalance energy_;
   double mass0_ = 0;
   std::int64_t switched_elements_ = 0;  // elements whose step was frozen by /DT/<family>/CST

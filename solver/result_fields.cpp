@@ -243,7 +243,7 @@ void gather_node_field(const ExplicitEngine& e, NodeField f, double dt1, std::sp
         put3(n, s.vx[n] + 0.5 * dt1 * s.ax[n], s.vy[n] + 0.5 * dt1 * s.ay[n], s.vz[n] + 0.5 * dt1 * s.az[n]);
         break;
       case NodeField::Acceleration: put3(n, s.ax[n], s.ay[n], s.az[n]); break;
-      case NodeField::ContactForce: break;  // no contact forces yet
+      case NodeField::ContactForce: break;  // filled below from the contact buffer
       case NodeField::InternalForce:
         put3(n, s.fx_ext[n] - s.fx[n], s.fy_ext[n] - s.fy[n], s.fz_ext[n] - s.fz[n]);
         break;
@@ -253,6 +253,13 @@ void gather_node_field(const ExplicitEngine& e, NodeField f, double dt1, std::sp
         break;
       case NodeField::AddedMass: out[n] = static_cast<float>(s.added_mass[n]); break;
       case NodeField::NodalTimeStep: break;
+    }
+  }
+  if (f == NodeField::ContactForce && e.contact() != nullptr) {
+    const auto& fc = e.contact()->force();
+    for (const auto n : e.contact()->touched()) {
+      const auto k = static_cast<std::size_t>(n);
+      put3(k, fc[3 * k], fc[3 * k + 1], fc[3 * k + 2]);
     }
   }
 }

@@ -15,7 +15,7 @@
 //   velocity at the full step v^n = v^{n-1/2} + dt1/2 a^n (as the kinetic energy, elements.md 8);
 //   internal force f_int = f_ext - f (m a = f_ext - f_int before kinematic conditions);
 //   reaction force = m a - f (a after the kinematic conditions): what boundary conditions, imposed
-//   velocities, rigid walls and rigid bodies add to the node; contact force: 0 until contact exists.
+//   velocities, rigid walls and rigid bodies add to the node; contact force: the TYPE7 forces of the cycle.
 #pragma once
 
 #include <cstdint>

@@ -225,7 +225,25 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
       }
       break;
     }
-    case K::Inter: break;  // contact forces and energies: 0 until TYPE7 runs in the engine
+    case K::Inter: {
+      if (e.contact() == nullptr) break;
+      const auto results = e.contact()->results();
+      for (std::size_t o = 0; o < objects_.size(); ++o) {
+        const auto id = m.interfaces[static_cast<std::size_t>(objects_[o])].id;
+        for (const auto& res : results) {
+          if (res.id != id) continue;
+          const char* axes[3] = {"X", "Y", "Z"};
+          for (std::size_t d = 0; d < 3; ++d) {
+            put(o, std::string("FN") + axes[d], res.normal_force[d]);
+            put(o, std::string("FT") + axes[d], res.tangential_force[d]);
+          }
+          put(o, "CE_ELAST", res.e_elastic);
+          put(o, "CE_FRIC", res.e_friction);
+          put(o, "CE_DAMP", res.e_damping);
+        }
+      }
+      break;
+    }
     case K::Shell: {
       // Object -> (group, slot) lookup, built per sample: TH shell lists are short.
       for (const auto& g : e.shell_groups()) {

@@ -14,7 +14,8 @@
 // and acceleration, DR = 0 (rotations are not integrated as angles), X Y Z current, REAC = m a - f and
 // REACXX.. = I aw - M (what kinematic conditions add).
 // Per rigid wall: FN, FT the normal and tangential force of the last cycle.
-// Per interface: forces and energies (0 until TYPE7 contact runs in the engine).
+// Per interface: FN, FT the sums over the secondary nodes of the normal (with damping) and friction forces
+// of the last cycle; CE_ELAST, CE_FRIC, CE_DAMP the booked contact energies.
 // Per 4-node shell: F1 F2 F12 = t x mean stress (membrane forces per unit length, element frame),
 // M1 M2 M12 = t^2 sum m_i sigma_i (moments per unit length), IEM = the element's internal energy (radx
 // does not split membrane and bending energy), IEB = 0, OFF the kill factor, EMIN EMAX = 0 (strains are

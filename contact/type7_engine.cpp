@@ -1,0 +1,551 @@
+// TYPE7 penalty contact, one cycle per call (type7-lagdt.md sections 4 and 5).
+//
+// For each interface active at t (Tstart <= t < Tstop), after a new candidate sort when due (4.8):
+//   for each secondary node s (in order), over its candidate segments m (not containing s, not removed,
+//   not made inactive by Inacti 2): the closest point c of m (four triangles around the centroid for a
+//   quadrangle), d = |x_s - c|, weights h_1..h_4 of c; the pair is the candidate of smallest d.
+//   Gap g = pair_gap(gs, gm) (4.1), reduced by r_s for Inacti 5, 6, where r_s = min(r_s, max(0, g - d))
+//   so that it shrinks back to 0 as the pair opens; penetration p = g - r_s - d; active while p > 0.
+//   n = (x_s - c)/d (two-sided gap; the segment normal when d = 0).
+//   K = pair_stiffness(Km, Ks) (4.2). Normal force on s: F_n = K p g/(g - p) (4.3).
+//   Relative velocity v_r = v_s - sum h_j v_j, v_n = v_r . n; damping force on s: -c v_n n with
+//   c = VISs sqrt(2 k m_s / r) + 0.32 m_s max(0, -v_n)/(g - p) (4.3).
+//   Friction (4.5): v_t = v_r - v_n n, pressure F_n / A_m, mu by Ifric, F_t by Iform 1 (viscous) or 2
+//   (incremental, the previous force of the node rotated into the current tangent plane), then the filter.
+//   Force on s: F = (F_n - c v_n) n + F_t; on main node j: -h_j F.
+//   Time step (4.4): k_t = K (g/(g - p))^2; the damping ratio xi = c / (2 sqrt(k_t m)) lowers the stable step
+//   of the spring by (sqrt(1 + xi^2) - xi), taken as k_eff = k_t / (sqrt(1 + xi^2) - xi)^2. Each free node
+//   sums, over all pairs of all interfaces (two-pass contact puts two springs on the same nodes), the
+//   Gershgorin row sum of M^-1 K: G_s = k_eff (1 + sum of the free main nodes' h), G_j = h_j k_eff ([s free]
+//   + sum of the free h); it votes dt = scale sqrt(2 m / G). Against a fixed segment this is the
+//   specification's scale sqrt(2 m / k_eff); when both sides move it keeps the same margin to the critical
+//   step of the relative motion, which the per-node formula alone does not (a deliberate difference).
+//   A pair about to close (gap closed within two steps at its approach speed) adds K already.
+//   dt_k = 0.5 (g - p) / max(-v_n, tiny); the dashpots (damping c, viscous friction C) add dt <= scale m/(c +
+//   C). /DT/INTER/CST (plain TYPE7): below Tmin the node's mass grows to m = k_eff (Tmin / scale)^2 / 2 (main
+//   nodes with h_j k_eff); /DT/INTER/DEL: the node leaves the interface. A node whose remaining gap (g - p)/g
+//   falls below 1e-6 cannot be held by the penalty: it is deactivated with a warning naming the node and the
+//   interface. IBC: at the node's first impact, its fixed X/Y/Z translations selected by IBCX/Y/Z are
+//   released.
+// Energies: the work of each force kind over each step, W += 1/2 (F^{n-1} + F^n) . v_r^{n-1/2} dt1 (the
+// trapezoidal rule the engine uses for element and load work, consistent with its full-step kinetic
+// energy): elastic = -W_elastic (stored, returned as the pair opens), damping and friction = -W
+// (dissipated). So the energy balance of the engine closes with contact.
+// Forces are scattered node by node in a fixed order (secondary nodes in order, then their segments'
+// nodes), so the result does not depend on the thread count.
+#include "contact/type7_engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "contact/type7_laws.hpp"
+#include "contact/type7_prepare.hpp"
+#include "contact/type7_search.hpp"
+#include "solver/model/geometry.hpp"
+
+namespace radx::contact {
+
+namespace {
+
+using model::Vec3;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kTiny = 1e-300;
+
+// The forces of one active pair in the last cycle, kept to book their work over the step.
+struct PairRecord {
+  std::int32_t node;                      // dense node index
+  std::array<std::int32_t, 4> seg;        // dense node indices of the segment
+  std::array<double, 4> h;                // weights
+  Vec3 f_elastic, f_damping, f_friction;  // forces on the secondary node
+};
+
+struct InterfaceState {
+  const model::Interface* in = nullptr;
+  std::vector<std::array<std::int32_t, 4>> segments;
+  std::vector<double> segment_area0;
+  std::unique_ptr<Type7Search> search;
+  std::vector<std::uint8_t> node_off, segment_off;  // per secondary index / segment index
+  std::vector<double> reduction;                    // Inacti 5, 6: r per secondary index
+  std::vector<Vec3> f_t;                            // previous tangential force per secondary index
+  std::vector<std::uint8_t> hit;                    // IBC: first impact seen
+  std::vector<std::int32_t> owner_cell;             // model cell behind each segment (Idel), -1 unknown
+  std::vector<PairRecord> pairs;
+  InterfaceResult result;
+  double w_elastic = 0, w_damping = 0, w_friction = 0;
+};
+
+Vec3 node_x(const ContactNodes& n, std::int32_t i) {
+  const auto k = static_cast<std::size_t>(i);
+  return {n.x[k], n.y[k], n.z[k]};
+}
+Vec3 node_v(const ContactNodes& n, std::int32_t i) {
+  const auto k = static_cast<std::size_t>(i);
+  return {n.vx[k], n.vy[k], n.vz[k]};
+}
+
+double segment_area(const std::array<Vec3, 4>& x, bool triangle) {
+  return triangle ? model::triangle_area(x[0], x[1], x[2]) : model::quad_area(x[0], x[1], x[2], x[3]);
+}
+
+}  // namespace
+
+struct Type7Contact::Impl {
+  const model::Model& model;
+  ContactControls controls;
+  std::vector<InterfaceState> interfaces;
+  std::vector<double> force;          // [3 nodes]
+  std::vector<std::int32_t> touched;  // nodes with a force this cycle, ascending
+  std::vector<std::uint8_t> is_touched;
+  std::vector<std::string> messages;
+  // Contact stiffness summed per node this cycle, for the nodal stability steps.
+  std::vector<double> k_sum;
+  std::vector<std::int32_t> k_nodes;
+  std::vector<std::int64_t> k_interface;     // an interface that touched the node (for the listing)
+  std::vector<std::uint8_t> k_mass_scaling;  // a plain TYPE7 pair touched it (/DT/INTER/CST adds mass)
+
+  void add_stiffness(std::int32_t n, double k, const InterfaceState& st) {
+    const auto i = static_cast<std::size_t>(n);
+    if (k_sum[i] == 0) {
+      k_nodes.push_back(n);
+      k_interface[i] = st.in->id;
+      k_mass_scaling[i] = 0;
+    }
+    k_sum[i] += k;
+    if (!st.in->lagdt) k_mass_scaling[i] = 1;
+  }
+
+  // The pair's spring k between the node s and the point sum h_j x_j adds to each free node's row of
+  // M^-1 K the sum of its absolute entries (Gershgorin): G_s = k (1 + sum_free h_j),
+  // G_j = h_j k ([s free] + sum_free h_l). A node fixed in X, Y and Z does not move and takes nothing.
+  void add_pair_stiffness(std::int32_t s_node, const std::array<std::int32_t, 4>& seg,
+                          const std::array<double, 4>& h, double k, const ContactNodes& nodes,
+                          const InterfaceState& st) {
+    auto is_free = [&](std::int32_t n) { return (nodes.fixed[static_cast<std::size_t>(n)] & 7u) != 7u; };
+    const bool triangle = seg[3] == seg[2];
+    double h_free = 0;
+    for (std::size_t j = 0; j < 4; ++j)
+      if (h[j] > 0 && !(j == 3 && triangle) && is_free(seg[j])) h_free += h[j];
+    const bool s_free = is_free(s_node);
+    if (s_free) add_stiffness(s_node, k * (1.0 + h_free), st);
+    for (std::size_t j = 0; j < 4; ++j)
+      if (h[j] > 0 && !(j == 3 && triangle) && is_free(seg[j]))
+        add_stiffness(seg[j], h[j] * k * ((s_free ? 1.0 : 0.0) + h_free), st);
+  }
+
+  // Nodal steps dt = scale sqrt(2 m / G) (G the Gershgorin row sums above: for a node against a fixed
+  // segment G = k_eff and this is type7-lagdt.md 4.4's sqrt(2 m / k_eff); when both sides move the
+  // relative motion is stiffer and the step shrinks with it); /DT/INTER/CST on plain TYPE7 adds mass below
+  // Tmin.
+  ContactStep nodal_steps(const ContactNodes& nodes) {
+    ContactStep vote;
+    std::sort(k_nodes.begin(), k_nodes.end());
+    const double scale = controls.dt_scale;
+    for (const auto n : k_nodes) {
+      const auto i = static_cast<std::size_t>(n);
+      const double k = k_sum[i];
+      k_sum[i] = 0;
+      auto& m = nodes.mass[i];
+      if (!(k > 0) || m <= 0) continue;
+      double dt = scale * std::sqrt(2.0 * m / k);
+      if (controls.t_min > 0 && dt < controls.t_min && controls.action == ContactControls::Action::AddMass &&
+          k_mass_scaling[i]) {
+        const double m_new = 0.5 * k * (controls.t_min / scale) * (controls.t_min / scale);
+        nodes.added_mass[i] += m_new - m;
+        for (auto& st : interfaces)
+          if (st.in->id == k_interface[i]) st.result.added_mass += m_new - m;
+        m = m_new;
+        dt = controls.t_min;
+      }
+      if (dt < vote.dt) {
+        vote.dt = dt;
+        vote.interface_id = k_interface[i];
+        vote.node_id = model.nodes.id[i];
+      }
+    }
+    k_nodes.clear();
+    return vote;
+  }
+
+  Impl(const model::Model& m, ContactControls c) : model(m), controls(c) {
+    for (const auto& in : m.interfaces) {
+      if (in.contact_law_id != 0)
+        throw std::runtime_error("/INTER " + std::to_string(in.id) + " uses /CTCLAW/" +
+                                 std::to_string(in.contact_law_id) + " (" + in.contact_law +
+                                 "): the contact-law family of /CTCLAW is not supported by the engine yet; "
+                                 "remove the /CTCLAW to run with the interface's own penalty and friction");
+      if (in.main_surface == model::kNone || in.secondary_nodes.empty()) continue;
+      InterfaceState st;
+      st.in = &in;
+      const auto& surf = m.surfaces[static_cast<std::size_t>(in.main_surface)];
+      st.segments = surf.segments;
+      const std::size_t ns = in.secondary_nodes.size(), nm = st.segments.size();
+      st.node_off.assign(ns, 0);
+      st.segment_off.assign(nm, 0);
+      st.reduction.assign(ns, 0.0);
+      st.f_t.assign(ns, Vec3{});
+      st.hit.assign(ns, 0);
+      for (const auto s : in.inactive_segments) st.segment_off[static_cast<std::size_t>(s)] = 1;
+      for (const auto node : in.inactive_nodes) {
+        const auto it = std::lower_bound(in.secondary_nodes.begin(), in.secondary_nodes.end(), node);
+        if (it != in.secondary_nodes.end() && *it == node)
+          st.node_off[static_cast<std::size_t>(it - in.secondary_nodes.begin())] = 1;
+      }
+      for (std::size_t k = 0; k < in.penetrating_nodes.size(); ++k) {
+        const auto it =
+            std::lower_bound(in.secondary_nodes.begin(), in.secondary_nodes.end(), in.penetrating_nodes[k]);
+        if (it != in.secondary_nodes.end() && *it == in.penetrating_nodes[k])
+          st.reduction[static_cast<std::size_t>(it - in.secondary_nodes.begin())] =
+              in.initial_gap_reduction[k];
+      }
+      st.segment_area0.resize(nm);
+      for (std::size_t s = 0; s < nm; ++s) {
+        std::array<Vec3, 4> x{};
+        for (int j = 0; j < 4; ++j) {
+          const auto n = static_cast<std::size_t>(st.segments[s][static_cast<std::size_t>(j)]);
+          x[static_cast<std::size_t>(j)] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
+        }
+        st.segment_area0[s] = segment_area(x, st.segments[s][2] == st.segments[s][3]);
+      }
+      // Model cell of each segment's owner element (cells: 4-node shells, 3-node shells, bricks).
+      st.owner_cell.assign(nm, -1);
+      for (std::size_t s = 0; s < nm && s < surf.owner.size(); ++s) {
+        const auto o = surf.owner[s];
+        if (o == model::kNone) continue;
+        std::size_t base = 0;
+        switch (surf.owner_type[s]) {
+          case model::SegmentOwner::Shell4: base = 0; break;
+          case model::SegmentOwner::Shell3: base = m.shells.size(); break;
+          case model::SegmentOwner::Brick8: base = m.shells.size() + m.shells3.size(); break;
+          default: continue;
+        }
+        st.owner_cell[s] = static_cast<std::int32_t>(base + static_cast<std::size_t>(o));
+      }
+      const double gap_max = in.igap == 0 ? in.gapmin : std::max(in.gap_hi, in.gapmin);
+      st.search = std::make_unique<Type7Search>(in.secondary_nodes, st.segments, gap_max, in.bumult);
+      st.result.id = in.id;
+      interfaces.push_back(std::move(st));
+    }
+    force.assign(3 * m.nodes.size(), 0.0);
+    is_touched.assign(m.nodes.size(), 0);
+    k_sum.assign(m.nodes.size(), 0.0);
+    k_interface.assign(m.nodes.size(), 0);
+    k_mass_scaling.assign(m.nodes.size(), 0);
+  }
+
+  void touch(std::int32_t n) {
+    const auto k = static_cast<std::size_t>(n);
+    if (!is_touched[k]) {
+      is_touched[k] = 1;
+      touched.push_back(n);
+    }
+  }
+
+  void add_force(std::int32_t n, const Vec3& f) {
+    touch(n);
+    const auto k = 3 * static_cast<std::size_t>(n);
+    force[k] += f[0];
+    force[k + 1] += f[1];
+    force[k + 2] += f[2];
+  }
+
+  // Work over the step just taken, trapezoidal in the force as the engine books element and load work:
+  // 1/2 (F^{n-1} + F^n) . v_r^{n-1/2} dt1, v_r = v_s - sum h_j v_j with each pair's own weights. The first
+  // half (last cycle's forces) is booked here, the second when this cycle's forces are computed.
+  void book_work(InterfaceState& st, const ContactNodes& nodes, double dt1) {
+    for (const auto& p : st.pairs) {
+      Vec3 vr = node_v(nodes, p.node);
+      for (int j = 0; j < 4; ++j) {
+        if (p.h[static_cast<std::size_t>(j)] == 0) continue;
+        const Vec3 vj = node_v(nodes, p.seg[static_cast<std::size_t>(j)]);
+        for (std::size_t d = 0; d < 3; ++d) vr[d] -= p.h[static_cast<std::size_t>(j)] * vj[d];
+      }
+      st.w_elastic += 0.5 * model::dot(p.f_elastic, vr) * dt1;
+      st.w_damping += 0.5 * model::dot(p.f_damping, vr) * dt1;
+      st.w_friction += 0.5 * model::dot(p.f_friction, vr) * dt1;
+    }
+    st.result.e_elastic = -st.w_elastic;
+    st.result.e_damping = -st.w_damping;
+    st.result.e_friction = -st.w_friction;
+  }
+
+  void deactivate(InterfaceState& st, std::size_t k, const std::string& why) {
+    st.node_off[k] = 1;
+    st.search->remove_node(static_cast<std::int32_t>(k));
+    ++st.result.deactivated_nodes;
+    messages.push_back("interface " + std::to_string(st.in->id) + ": secondary node " +
+                       std::to_string(model.nodes.id[static_cast<std::size_t>(st.in->secondary_nodes[k])]) +
+                       " " + why);
+  }
+
+  ContactStep interface_cycle(InterfaceState& st, double t, double dt1, const ContactNodes& nodes) {
+    ContactStep vote;
+    const auto& in = *st.in;
+    st.pairs.clear();
+    st.result.active_pairs = 0;
+    st.result.normal_force = {0, 0, 0};
+    st.result.tangential_force = {0, 0, 0};
+    if (t < in.t_start || t >= in.t_stop) return vote;
+    st.search->update(Coordinates{nodes.x, nodes.y, nodes.z});
+    const auto& cand = st.search->candidates();
+    const double scale = controls.dt_scale;
+    const double alpha = friction_filter_alpha(in.ifric >= 0 ? in.ifiltr : 0, in.xfreq, dt1);
+    std::size_t c = 0;
+    while (c < cand.size()) {
+      const std::int32_t k = cand[c].node;
+      std::size_t end = c;
+      while (end < cand.size() && cand[end].node == k) ++end;
+      const auto ks = static_cast<std::size_t>(k);
+      const std::int32_t node = in.secondary_nodes[ks];
+      if (st.node_off[ks]) {
+        c = end;
+        continue;
+      }
+      // The closest candidate segment.
+      const Vec3 xs = node_x(nodes, node);
+      double best_d = kInf;
+      std::int32_t best = -1;
+      std::array<double, 4> best_h{};
+      std::array<Vec3, 4> best_x{};
+      for (std::size_t q = c; q < end; ++q) {
+        const auto s = static_cast<std::size_t>(cand[q].segment);
+        if (st.segment_off[s]) continue;
+        std::array<Vec3, 4> x{};
+        for (std::size_t j = 0; j < 4; ++j) x[j] = node_x(nodes, st.segments[s][j]);
+        std::array<double, 4> h{};
+        const double d = closest_point_segment(xs, x, st.segments[s][2] == st.segments[s][3], h);
+        if (d < best_d) {
+          best_d = d;
+          best = cand[q].segment;
+          best_h = h;
+          best_x = x;
+        }
+      }
+      c = end;
+      if (best < 0) continue;
+      const auto sb = static_cast<std::size_t>(best);
+      const double g_full = pair_gap(in, in.gap_node[ks], in.gap_segment[sb]);
+      // Inacti 5, 6: the reduced initial gap returns to the full gap as the pair opens.
+      if (st.reduction[ks] > 0) st.reduction[ks] = std::min(st.reduction[ks], std::max(0.0, g_full - best_d));
+      const double g = g_full - st.reduction[ks];
+      const double p = g - best_d;
+      if (g <= 0) continue;
+      // Normal from the contact point to the node (two-sided), or the segment normal.
+      Vec3 cpt{};
+      for (std::size_t j = 0; j < 4; ++j)
+        for (std::size_t d = 0; d < 3; ++d) cpt[d] += best_h[j] * best_x[j][d];
+      Vec3 n = model::sub(xs, cpt);
+      if (best_d > 1e-12 * g) {
+        n = model::scale(n, 1.0 / best_d);
+      } else {
+        n = model::quad_normal(best_x[0], best_x[1], best_x[2], best_x[3]);
+        const double ln = model::norm(n);
+        n = ln > 0 ? model::scale(n, 1.0 / ln) : Vec3{0, 0, 1};
+      }
+      const double K = pair_stiffness(in, in.stiff_segment[sb], in.stiff_node[ks]);
+      const double ms = nodes.mass[static_cast<std::size_t>(node)];
+      Vec3 vr = node_v(nodes, node);
+      for (std::size_t j = 0; j < 4; ++j) {
+        if (best_h[j] == 0) continue;
+        const Vec3 vj = node_v(nodes, st.segments[sb][j]);
+        for (std::size_t d = 0; d < 3; ++d) vr[d] -= best_h[j] * vj[d];
+      }
+      const double vn = model::dot(vr, n);
+      if (!(p > 0)) {
+        st.f_t[ks] = Vec3{};
+        // A pair about to close (within two steps at its approach speed) already votes with its stiffness at
+        // p = 0: the step must be small before the force appears, because the velocity update of the first
+        // contact cycle uses (dt1 + dt2)/2, half of it from the step before.
+        if (vn < 0 && -p < -2.0 * vn * dt1) add_pair_stiffness(node, st.segments[sb], best_h, K, nodes, st);
+        continue;
+      }
+      if ((g - p) / g < 1e-6) {
+        deactivate(st, ks, "reached the main surface (remaining gap below 1e-6 of the gap): deactivated");
+        continue;
+      }
+      const double fn = penalty_force(K, g, p);
+      const double cdamp = damping_coefficient(in.vis_s, K, g, p, ms, vn);
+      const Vec3 f_el = model::scale(n, fn);
+      const Vec3 f_dp = model::scale(n, -cdamp * vn);
+      // Friction.
+      Vec3 f_fr{};
+      const double area = st.segment_area0[sb];
+      Vec3 vt = model::sub(vr, model::scale(n, vn));
+      if (in.fric > 0 || in.ifric > 0) {
+        const double speed = model::norm(vt);
+        const double mu = friction_coefficient(in.ifric, in.fric, in.c, area > 0 ? fn / area : 0.0, speed);
+        // The previous force, rotated into the current tangent plane with its length kept.
+        Vec3 old = st.f_t[ks];
+        const double len_old = model::norm(old);
+        old = model::sub(old, model::scale(n, model::dot(old, n)));
+        const double len_new = model::norm(old);
+        if (len_new > 0) old = model::scale(old, len_old / len_new);
+        FrictionInput fi;
+        fi.iform = in.iform == 2 ? 2 : 1;
+        fi.mu = mu;
+        fi.normal_force = std::abs(fn - cdamp * vn);
+        fi.K = K;
+        fi.mass = ms;
+        fi.vis_f = in.vis_f;
+        fi.dt = dt1;
+        fi.alpha = alpha;
+        fi.v_t = vt;
+        fi.f_old = old;
+        const auto ft = tangential_force(fi);
+        f_fr = {ft[0], ft[1], ft[2]};
+      }
+      st.f_t[ks] = f_fr;
+      // IBC: release the selected boundary conditions at the first impact.
+      if (!st.hit[ks]) {
+        st.hit[ks] = 1;
+        std::uint8_t mask = 0;
+        for (unsigned d = 0; d < 3; ++d)
+          if (in.ibc[d]) mask = static_cast<std::uint8_t>(mask | (1u << d));
+        if (mask) nodes.fixed[static_cast<std::size_t>(node)] &= static_cast<std::uint8_t>(~mask);
+      }
+      // Forces: secondary node, then the main nodes with the weights.
+      Vec3 f_total{};
+      for (std::size_t d = 0; d < 3; ++d) f_total[d] = f_el[d] + f_dp[d] + f_fr[d];
+      add_force(node, f_total);
+      for (std::size_t j = 0; j < 4; ++j) {
+        if (best_h[j] == 0) continue;
+        if (j == 3 && st.segments[sb][3] == st.segments[sb][2]) continue;
+        add_force(st.segments[sb][j], model::scale(f_total, -best_h[j]));
+      }
+      st.pairs.push_back(PairRecord{node, st.segments[sb], best_h, f_el, f_dp, f_fr});
+      // The other half of the step's work (see book_work): this cycle's force with v^{n-1/2}.
+      st.w_elastic += 0.5 * model::dot(f_el, vr) * dt1;
+      st.w_damping += 0.5 * model::dot(f_dp, vr) * dt1;
+      st.w_friction += 0.5 * model::dot(f_fr, vr) * dt1;
+      ++st.result.active_pairs;
+      st.result.max_penetration = std::max(st.result.max_penetration, p);
+      for (std::size_t d = 0; d < 3; ++d) {
+        st.result.normal_force[d] += f_el[d] + f_dp[d];
+        st.result.tangential_force[d] += f_fr[d];
+      }
+      // Time step of the pair.
+      const double kt = penalty_tangent_stiffness(K, g, p);
+      const double xi = ms > 0 ? cdamp / (2.0 * std::sqrt(kt * ms)) : 0.0;
+      const double shrink = std::sqrt(1.0 + xi * xi) - xi;
+      const double keff = kt / (shrink * shrink);
+      // Stability: the pair's stiffness is summed per node over every pair of every interface (two-pass
+      // contact puts two springs in parallel on the same nodes), and the nodal steps are taken in compute().
+      add_pair_stiffness(node, st.segments[sb], best_h, keff, nodes, st);
+      double dt_pair = ms > 0 ? scale * std::sqrt(2.0 * ms / keff) : kInf;  // for /DT/INTER/DEL
+      const double dt_kin = 0.5 * (g - p) / std::max(-vn, kTiny);
+      dt_pair = std::min(dt_pair, dt_kin);
+      // Dashpots computed with v^{n-1/2} overshoot when c dt / m > 1 (the velocity they damp changes sign
+      // every cycle): the normal damping c and the viscous friction C = VISF sqrt(2 K m) keep dt <= m / c.
+      const double c_visc = cdamp + (in.iform == 2 ? 0.0 : in.vis_f * std::sqrt(2.0 * K * ms));
+      if (c_visc > 0 && (in.fric > 0 || in.ifric > 0 || cdamp > 0)) {
+        const double c_total = cdamp + ((in.fric > 0 || in.ifric > 0) ? c_visc - cdamp : 0.0);
+        if (c_total > 0) dt_pair = std::min(dt_pair, scale * ms / c_total);
+      }
+      if (controls.t_min > 0 && dt_pair < controls.t_min &&
+          controls.action == ContactControls::Action::Delete) {
+        deactivate(st, ks, "left the interface: its contact time step fell below the /DT/INTER/DEL minimum");
+        continue;
+      }
+      if (dt_pair < vote.dt) {
+        vote.dt = dt_pair;
+        vote.interface_id = in.id;
+        vote.node_id = model.nodes.id[static_cast<std::size_t>(node)];
+      }
+    }
+    return vote;
+  }
+};
+
+Type7Contact::Type7Contact(const model::Model& m, ContactControls controls)
+    : impl_(std::make_unique<Impl>(m, controls)) {}
+Type7Contact::~Type7Contact() = default;
+
+bool Type7Contact::empty() const {
+  return impl_->interfaces.empty();
+}
+
+ContactStep Type7Contact::compute(double t, double dt1, const ContactNodes& nodes) {
+  auto& s = *impl_;
+  for (const auto n : s.touched) {
+    const auto k = static_cast<std::size_t>(n);
+    s.is_touched[k] = 0;
+    s.force[3 * k] = s.force[3 * k + 1] = s.force[3 * k + 2] = 0.0;
+  }
+  s.touched.clear();
+  ContactStep vote;
+  for (auto& st : s.interfaces) {
+    s.book_work(st, nodes, dt1);
+    const ContactStep v = s.interface_cycle(st, t, dt1, nodes);
+    if (v.dt < vote.dt) vote = v;
+  }
+  std::sort(s.touched.begin(), s.touched.end());
+  const ContactStep nodal = s.nodal_steps(nodes);
+  if (nodal.dt < vote.dt) vote = nodal;
+  return vote;
+}
+
+const std::vector<double>& Type7Contact::force() const {
+  return impl_->force;
+}
+const std::vector<std::int32_t>& Type7Contact::touched() const {
+  return impl_->touched;
+}
+
+void Type7Contact::elements_deleted(std::span<const std::uint8_t> alive) {
+  auto& s = *impl_;
+  const auto& m = s.model;
+  // Alive elements around each node, for the removal of secondary nodes left without any (Idel > 0).
+  std::vector<std::int32_t> alive_around(m.nodes.size(), 0);
+  std::size_t cell = 0;
+  for (const auto* b : {&m.shells, &m.shells3, &m.bricks}) {
+    const auto npe = static_cast<std::size_t>(b->npe());
+    for (std::size_t e = 0; e < b->size(); ++e, ++cell)
+      if (alive[cell])
+        for (std::size_t k = 0; k < npe; ++k) ++alive_around[static_cast<std::size_t>(b->conn[e * npe + k])];
+  }
+  for (auto& st : s.interfaces) {
+    const int idel = st.in->idel;
+    if (idel == 0) continue;
+    for (std::size_t g = 0; g < st.segments.size(); ++g) {
+      const auto oc = st.owner_cell[g];
+      if (st.segment_off[g] || oc < 0 || alive[static_cast<std::size_t>(oc)]) continue;
+      st.segment_off[g] = 1;
+      st.search->remove_segment(static_cast<std::int32_t>(g));
+    }
+    if (idel < 0) continue;
+    for (std::size_t k = 0; k < st.in->secondary_nodes.size(); ++k)
+      if (!st.node_off[k] && alive_around[static_cast<std::size_t>(st.in->secondary_nodes[k])] == 0)
+        s.deactivate(st, k, "is no longer connected to any element (Idel): removed");
+  }
+}
+
+std::vector<InterfaceResult> Type7Contact::results() const {
+  std::vector<InterfaceResult> out;
+  for (const auto& st : impl_->interfaces) out.push_back(st.result);
+  return out;
+}
+
+double Type7Contact::energy_elastic() const {
+  double e = 0;
+  for (const auto& st : impl_->interfaces) e += st.result.e_elastic;
+  return e;
+}
+double Type7Contact::energy_damping() const {
+  double e = 0;
+  for (const auto& st : impl_->interfaces) e += st.result.e_damping;
+  return e;
+}
+double Type7Contact::energy_friction() const {
+  double e = 0;
+  for (const auto& st : impl_->interfaces) e += st.result.e_friction;
+  return e;
+}
+
+std::vector<std::string> Type7Contact::take_messages() {
+  std::vector<std::string> out;
+  out.swap(impl_->messages);
+  return out;
+}
+
+}  // namespace radx::contact

@@ -1,0 +1,90 @@
+// TYPE7 contact in the engine: the penalty path of /INTER/TYPE7 and /INTER/LAGDT/TYPE7 (type7-lagdt.md
+// sections 3 to 5) for every interface of the model, one call per cycle (architecture.md step 2).
+// Contact does not know the time loop: it receives views of the node state and the time, and returns its
+// nodal forces (in its own buffer, which the engine adds to the assembled forces), its time-step vote and
+// its energies. The equations are in type7_penalty.cpp.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "solver/model/model.hpp"
+
+namespace radx::contact {
+
+// Views of the engine's node state, dense node indices, valid during the call.
+struct ContactNodes {
+  std::span<const double> x, y, z;     // x^n
+  std::span<const double> vx, vy, vz;  // v^{n-1/2}
+  std::span<double> mass;              // lumped mass (grows with /DT/INTER/CST mass scaling)
+  std::span<double> added_mass;        // mass added so far by /DT/.../CST
+  std::span<std::uint8_t> fixed;       // boundary-condition bits; IBC clears bits 0..2 at first impact
+};
+
+// /DT/INTER/CST, /DT/INTER/DEL (and the scale of the interface steps).
+struct ContactControls {
+  double dt_scale = 0.9;  // Tscale of /DT/INTER/..., else of /DT
+  double t_min = 0;       // Tmin (0: none)
+  enum class Action : std::uint8_t { None, AddMass, Delete } action = Action::None;
+};
+
+// The smallest contact time step of the cycle and what imposes it.
+struct ContactStep {
+  double dt = std::numeric_limits<double>::infinity();
+  std::int64_t interface_id = 0;
+  std::int64_t node_id = 0;  // user id of the secondary node of the pair
+};
+
+// Per-interface results (listing, summary, time history).
+struct InterfaceResult {
+  std::int64_t id = 0;
+  std::int64_t active_pairs = 0;             // pairs with p > 0 in the last cycle
+  double max_penetration = 0;                // largest p seen during the run
+  std::array<double, 3> normal_force{};      // sum over the secondary nodes of the normal forces, last cycle
+  std::array<double, 3> tangential_force{};  // same for friction
+  double e_elastic = 0, e_damping = 0, e_friction = 0;  // booked energies (work of the contact forces)
+  std::int64_t deactivated_nodes = 0;  // nodes that reached the surface, or removed by Idel or /DT/INTER/DEL
+  double added_mass = 0;               // by /DT/INTER/CST
+  std::int64_t switched_pairs_max = 0, switched_pairs_total = 0;  // LAGDT (0: the penalty path only)
+};
+
+class Type7Contact {
+ public:
+  Type7Contact(const model::Model& m, ContactControls controls);
+  ~Type7Contact();
+  Type7Contact(const Type7Contact&) = delete;
+  Type7Contact& operator=(const Type7Contact&) = delete;
+
+  [[nodiscard]] bool empty() const;
+
+  // Cycle step 2 at time t (dt1 = t^n - t^{n-1}): books the work of the previous cycle's forces over the
+  // step just taken, sorts when due, computes the penalty, damping and friction forces of every active
+  // pair into force() and returns the contact time-step vote. Messages (a node deactivated, removed)
+  // accumulate in messages().
+  ContactStep compute(double t, double dt1, const ContactNodes& nodes);
+
+  // This cycle's contact forces: for each node in touched() (ascending), force()[3 n .. 3 n + 2].
+  [[nodiscard]] const std::vector<double>& force() const;
+  [[nodiscard]] const std::vector<std::int32_t>& touched() const;
+
+  // Element deletion (Idel): `alive` per model cell (4-node shells, 3-node shells, bricks), 1 alive.
+  void elements_deleted(std::span<const std::uint8_t> alive);
+
+  [[nodiscard]] std::vector<InterfaceResult> results() const;
+  double energy_elastic() const;
+  double energy_damping() const;
+  double energy_friction() const;
+  // Warnings of the run so far, taken (emptied) by the call.
+  std::vector<std::string> take_messages();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace radx::contact
