@@ -5,7 +5,8 @@
 //   not made inactive by Inacti 2): the closest point c of m (four triangles around the centroid for a
 //   quadrangle), d = |x_s - c|, weights h_1..h_4 of c; the pair is the candidate of smallest d.
 //   Gap g = pair_gap(gs, gm) (4.1), reduced by r_s for Inacti 5, 6, where r_s = min(r_s, max(0, g - d))
-//   so that it shrinks back to 0 as the pair opens; penetration p = g - r_s - d; active while p > 0.
+//   (Inacti 6: g - 0.95 d, the 5 % margin) so that it shrinks back to 0 as the pair opens; penetration
+//   p = g - r_s - d; active while p > 0.
 //   n = (x_s - c)/d (two-sided gap; the segment normal when d = 0).
 //   K = pair_stiffness(Km, Ks) (4.2). Normal force on s: F_n = K p g/(g - p) (4.3).
 //   Relative velocity v_r = v_s - sum h_j v_j, v_n = v_r . n; damping force on s: -c v_n n with
@@ -327,7 +328,10 @@ struct Type7Contact::Impl {
       const auto sb = static_cast<std::size_t>(best);
       const double g_full = pair_gap(in, in.gap_node[ks], in.gap_segment[sb]);
       // Inacti 5, 6: the reduced initial gap returns to the full gap as the pair opens.
-      if (st.reduction[ks] > 0) st.reduction[ks] = std::min(st.reduction[ks], std::max(0.0, g_full - best_d));
+      // Inacti 6 keeps 5 % of the open distance as margin: r = g - 0.95 d (= P0 + 0.05 (g - P0) at t = 0).
+      if (st.reduction[ks] > 0)
+        st.reduction[ks] =
+            std::min(st.reduction[ks], std::max(0.0, g_full - (in.inacti == 6 ? 0.95 : 1.0) * best_d));
       const double g = g_full - st.reduction[ks];
       const double p = g - best_d;
       if (g <= 0) continue;

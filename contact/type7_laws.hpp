@@ -20,7 +20,8 @@ double damping_coefficient(double vis_s, double K, double g, double p, double m,
 
 // Friction coefficient (4.5) for law ifric 0..3 with Fric and C1..C6, at contact pressure `pressure` and
 // tangential speed `speed`.
-double friction_coefficient(int ifric, double fric, const std::array<double, 6>& c, double pressure, double speed);
+double friction_coefficient(int ifric, double fric, const std::array<double, 6>& c, double pressure,
+                            double speed);
 
 // Filter factor alpha (clamped to [0, 1]) of Ifiltr 1..3 with Xfreq and the time step dt; 1 for Ifiltr 0.
 double friction_filter_alpha(int ifiltr, double xfreq, double dt);
@@ -33,8 +34,8 @@ double friction_filter_alpha(int ifiltr, double xfreq, double dt);
 struct FrictionInput {
   int iform = 1;
   double mu = 0, normal_force = 0, K = 0, mass = 0, vis_f = 1.0, dt = 0, alpha = 1.0;
-  std::array<double, 3> v_t{};     // tangential relative velocity of the node with respect to the segment
-  std::array<double, 3> f_old{};   // previous tangential force in the current tangent plane (Iform 2, filter)
+  std::array<double, 3> v_t{};    // tangential relative velocity of the node with respect to the segment
+  std::array<double, 3> f_old{};  // previous tangential force in the current tangent plane (Iform 2, filter)
 };
 std::array<double, 3> tangential_force(const FrictionInput& in);
 

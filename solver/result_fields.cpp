@@ -113,7 +113,12 @@ void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
   const auto& m = e.model();
   const auto& s = e.nodes();
   const auto& mats = e.materials();
-  for (const auto& g : e.shell_groups()) {
+  // Groups write disjoint cells: the engine's threads, idle while a state is written, share the passes.
+  const auto& shells = e.shell_groups();
+  const auto n_shell_groups = static_cast<std::int64_t>(shells.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::int64_t gi = 0; gi < n_shell_groups; ++gi) {
+    const auto& g = shells[static_cast<std::size_t>(gi)];
     const int np = g.props.n_points;
     const auto rule = shell_detail::thickness_rule(np > 0 ? np : 0);
     for (int i = 0; i < g.count; ++i) {
@@ -140,7 +145,11 @@ void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
     }
   }
   const std::size_t brick0 = m.shells.size() + m.shells3.size();
-  for (const auto& g : e.brick_groups()) {
+  const auto& bricks = e.brick_groups();
+  const auto n_brick_groups = static_cast<std::int64_t>(bricks.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::int64_t gi = 0; gi < n_brick_groups; ++gi) {
+    const auto& g = bricks[static_cast<std::size_t>(gi)];
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
       CellValues c;
