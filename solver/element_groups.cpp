@@ -12,6 +12,8 @@ void ShellGroup::allocate(int n, int points) {
   for (auto* v : {&t0, &thick, &area0, &e_int, &e_hg, &w_plastic, &rate, &dt, &dt_fixed, &k_nodal})
     v->assign(G, 0.0);
   off.assign(G, 1.0);
+  small.assign(G, 0.0);
+  ref_local.assign(6 * G, 0.0);
   // N = 0 (resultant elasticity) keeps 5 force and 3 moment resultants.
   sig.assign((points > 0 ? np * 5 : 8) * G, 0.0);
   eps_p.assign(np * G, 0.0);
@@ -29,6 +31,8 @@ void BrickGroup::allocate(int n) {
   off.assign(G, 1.0);
   sig.assign(6 * G, 0.0);
   nodal_force.assign(8 * 3 * G, 0.0);
+  small.assign(G, 0);
+  x_ref.assign(8 * 3 * G, 0.0);
 }
 
 }  // namespace radx::solver

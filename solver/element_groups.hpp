@@ -35,20 +35,24 @@ struct ShellGroup {
   std::int32_t part = -1;             // dense part index (all elements of a group share it)
   std::int32_t material = -1;         // index into the engine's MaterialParams
   ShellProps props;
-  std::vector<std::int32_t> conn;   // [4][G] dense node indices (triangles: row 3 unused)
-  std::vector<double> t0;           // [G] thickness used by the mechanics
-  std::vector<double> thick;        // [G] current thickness (output; mechanics when ithick = 1)
-  std::vector<double> area0;        // [G] initial area
-  std::vector<double> off;          // [G] 1 alive, decaying by 0.8 after failure, 0 deleted
-  std::vector<double> sig;          // [n_points][5][G]  sxx syy sxy syz szx, local frame
-  std::vector<double> eps_p;        // [n_points][G]
-  std::vector<double> hg;           // [3][G] elastic hourglass resultants Sx Sy Sz (Ishell 1)
-  std::vector<double> e_int;        // [G] accumulated internal energy (membrane + bending)
-  std::vector<double> e_hg;         // [G] accumulated hourglass energy
-  std::vector<double> w_plastic;    // [G] accumulated plastic work
-  std::vector<double> rate;         // [G] filtered equivalent strain rate (Johnson-Cook)
-  std::vector<double> dt;           // [G] stable step of the cycle, before the /DT scale
-  std::vector<double> dt_fixed;     // [G] engine: constant step after a /DT/SHELL|SH_3N/CST switch (0: none)
+  std::vector<std::int32_t> conn;  // [4][G] dense node indices (triangles: row 3 unused)
+  std::vector<double> t0;          // [G] thickness used by the mechanics
+  std::vector<double> thick;       // [G] current thickness (output; mechanics when ithick = 1)
+  std::vector<double> area0;       // [G] initial area
+  std::vector<double> off;         // [G] 1 alive, decaying by 0.8 after failure, 0 deleted
+  std::vector<double> sig;         // [n_points][5][G]  sxx syy sxy syz szx, local frame
+  std::vector<double> eps_p;       // [n_points][G]
+  std::vector<double> hg;          // [3][G] elastic hourglass resultants Sx Sy Sz (Ishell 1)
+  std::vector<double> e_int;       // [G] accumulated internal energy (membrane + bending)
+  std::vector<double> e_hg;        // [G] accumulated hourglass energy
+  std::vector<double> w_plastic;   // [G] accumulated plastic work
+  std::vector<double> rate;        // [G] filtered equivalent strain rate (Johnson-Cook)
+  std::vector<double> dt;          // [G] stable step of the cycle, before the /DT scale
+  std::vector<double> dt_fixed;    // [G] engine: constant step after a /DT/SHELL|SH_3N/CST switch (0: none)
+  // Small strain after that switch: 1.0 once the element's local geometry is frozen in ref_local
+  // (quads: x2 x3 x4 y2 y3 y4; triangles: x2 x3 y3 and 0), so its B matrix, area and step stay constant.
+  std::vector<double> small;        // [G] 0 or 1
+  std::vector<double> ref_local;    // [6][G]
   std::vector<double> k_nodal;      // [G] nodal stiffness contribution of each node (for nodal steps)
   std::vector<double> nodal_force;  // [4][6][G] force (fx fy fz) and moment (mx my mz) ADDED to each node,
                                     // global axes (internal forces enter with their minus sign)
@@ -62,20 +66,24 @@ struct BrickGroup {
   std::int32_t material = -1;
   int isolid = 1;
   double qa = 1.1, qb = 0.05, h = 0.1;
-  std::vector<std::int32_t> conn;   // [8][G]
-  std::vector<double> vol0;         // [G] initial (one-point) volume
-  std::vector<double> vol;          // [G] current volume
-  std::vector<double> rho;          // [G] current density rho0 V0 / V
-  std::vector<double> off;          // [G]
-  std::vector<double> sig;          // [6][G] xx yy zz xy yz zx, global axes
-  std::vector<double> eps_p;        // [G]
-  std::vector<double> q;            // [G] bulk viscosity pressure of the last cycle
-  std::vector<double> e_int;        // [G] accumulated internal energy (includes bulk viscosity work)
-  std::vector<double> e_hg;         // [G]
-  std::vector<double> w_plastic;    // [G]
-  std::vector<double> rate;         // [G] strain rate measure (Johnson-Cook)
-  std::vector<double> dt;           // [G]
-  std::vector<double> dt_fixed;     // [G] engine: constant step after a /DT/BRICK/CST switch (0: none)
+  std::vector<std::int32_t> conn;  // [8][G]
+  std::vector<double> vol0;        // [G] initial (one-point) volume
+  std::vector<double> vol;         // [G] current volume
+  std::vector<double> rho;         // [G] current density rho0 V0 / V
+  std::vector<double> off;         // [G]
+  std::vector<double> sig;         // [6][G] xx yy zz xy yz zx, global axes
+  std::vector<double> eps_p;       // [G]
+  std::vector<double> q;           // [G] bulk viscosity pressure of the last cycle
+  std::vector<double> e_int;       // [G] accumulated internal energy (includes bulk viscosity work)
+  std::vector<double> e_hg;        // [G]
+  std::vector<double> w_plastic;   // [G]
+  std::vector<double> rate;        // [G] strain rate measure (Johnson-Cook)
+  std::vector<double> dt;          // [G]
+  std::vector<double> dt_fixed;    // [G] engine: constant step after a /DT/BRICK/CST switch (0: none)
+  // Small strain after that switch: 1 once the node coordinates are frozen in x_ref; the gradients, volume
+  // and step then come from x_ref (Radioss's small-strain switch), the velocities stay current.
+  std::vector<std::uint8_t> small;  // [G]
+  std::vector<double> x_ref;        // [8][3][G]
   std::vector<double> k_nodal;      // [G] nodal stiffness contribution (1/4 rho V / dt_e^2)
   std::vector<double> nodal_force;  // [8][3][G] force ADDED to each node, global axes
   void allocate(int n);

@@ -44,6 +44,9 @@
 //     qt = qb c + qa^2 l ec,  c_eff = qt + sqrt(qt^2 + c^2),  dt = dx / c_eff
 //   nodal stiffness (4.5): k = rho V / (4 dt^2) for each of the 8 nodes
 //
+// Small strain (after a /DT/BRICK/CST switch, g.dt_fixed > 0): the node coordinates are frozen in g.x_ref at
+// the first cycle after the switch and replace x^n in every formula above, so b_k, V, rho and the step stay
+// those of that geometry (the step constant, as Radioss's small-strain switch); velocities stay v^{n-1/2}.
 // Degenerate bricks (repeated nodes: pentahedra, tetrahedra) go through the same formulas. An element
 // with V <= 0 (or not a number) gets zero force, dt = 0 and k = 0, keeps its stress and energies and
 // stores the bad volume in `vol`: the engine reports it and stops. Elements with off == 0 give no force
@@ -125,6 +128,18 @@ void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& ma
       v[k][0] = nodes.vx[nd];
       v[k][1] = nodes.vy[nd];
       v[k][2] = nodes.vz[nd];
+    }
+
+    // /DT/BRICK/CST switched this element: freeze its coordinates once, then take the geometry (gradients,
+    // volume, density, step) from them; the velocities stay current (small strain).
+    if (g.dt_fixed[i] > 0.0 && !g.small[i]) {
+      for (std::size_t k = 0; k < 8; ++k)
+        for (std::size_t d = 0; d < 3; ++d) g.x_ref[(k * 3 + d) * G + i] = x[k][d];
+      g.small[i] = 1;
+    }
+    if (g.small[i]) {
+      for (std::size_t k = 0; k < 8; ++k)
+        for (std::size_t d = 0; d < 3; ++d) x[k][d] = g.x_ref[(k * 3 + d) * G + i];
     }
 
     // Centre Jacobian, volume, gradients.

@@ -36,6 +36,9 @@
 //   sides (and the diagonals, n3 != n4), hourglass guard L^2 <= (Lmin^2 + L^2)/(2 max(Hm, Hf));
 //   dt = L phi / c, c = sqrt(E/rho), phi = sqrt(1 + Dm^2) - Dm.
 // Nodal stiffness [4.5]: k_nodal = 0.81 * 1/2 A t E / L^2 for each of the 4 nodes.
+// Small strain (after a /DT/SHELL/CST switch, g.dt_fixed > 0): the local coordinates x_k, y_k are frozen at
+// the first cycle after the switch and replace the current ones from then on; the frame and the velocities
+// stay current, so PX, PY, A, L and the step stay those of the frozen geometry (the step is constant).
 //
 // Conventions: nodal_force ([4][6][G], fx fy fz mx my mz) is the force ADDED to each node (minus the
 // internal force), global axes; dt is in the model's time unit, before the /DT scale; at cycle 0
@@ -150,6 +153,16 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
   double* k_nodal = g.k_nodal.data();
   double* nf = g.nodal_force.data();
 
+  // /DT/SHELL/CST switch: elements switched since the last cycle capture their local geometry now.
+  double* small = g.small.data();
+  double* ref = g.ref_local.data();
+  double capture[kGroupSize];
+  for (int i = 0; i < g.count; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    capture[ii] = (g.dt_fixed[ii] > 0.0 && small[ii] == 0.0) ? 1.0 : 0.0;
+    if (capture[ii] != 0.0) small[ii] = 1.0;
+  }
+
   Bt4Block bk;
   SectionBlock<kBlock>& sec = bk.sec;
   for (int i0 = 0; i0 < g.count; i0 += kBlock) {
@@ -225,10 +238,20 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
       bk.e2[0][j] = e2x, bk.e2[1][j] = e2y, bk.e2[2][j] = e2z;
       double lx[4], ly[4];
       lx[0] = ly[0] = 0.0;
+      // Small strain after a /DT/SHELL/CST switch: the local coordinates are frozen at the first cycle after
+      // it (cap = 1) and used from then on (sm = 1), so PX, PY, A and the step stay constant. The selects are
+      // arithmetic so the loop stays vectorised; with sm = 0 they return the current values exactly.
+      const std::size_t ii = static_cast<std::size_t>(i0 + j);
+      const double sm = small[ii], cap = capture[ii];
       for (int k = 1; k < 4; ++k) {
         const double dx = bk.x[k][j] - bk.x[0][j], dy = bk.y[k][j] - bk.y[0][j], dz = bk.z[k][j] - bk.z[0][j];
-        lx[k] = e1x * dx + e1y * dy + e1z * dz;
-        ly[k] = e2x * dx + e2y * dy + e2z * dz;
+        const double cx = e1x * dx + e1y * dy + e1z * dz, cy = e2x * dx + e2y * dy + e2z * dz;
+        double& rx0 = ref[static_cast<std::size_t>(k - 1) * G + ii];
+        double& ry0 = ref[static_cast<std::size_t>(k + 2) * G + ii];
+        rx0 = cap * cx + (1.0 - cap) * rx0;
+        ry0 = cap * cy + (1.0 - cap) * ry0;
+        lx[k] = sm * rx0 + (1.0 - sm) * cx;
+        ly[k] = sm * ry0 + (1.0 - sm) * cy;
         bk.lx[k][j] = lx[k];
         bk.ly[k][j] = ly[k];
       }

@@ -21,6 +21,8 @@
 // Section, energy, failure, thickness: as the quad [1.3-1.5, 1.8, 6.4, 6.5] (shell_section.hpp).
 // Nodal forces: the virtual-power transpose of the rates above (as c3fint3.F), N = FOR t, M = MOM t^2,
 //   times OFF; rotated to global axes and stored with the minus sign (force added to the node).
+// Small strain (after a /DT/SH_3N/CST switch, g.dt_fixed > 0): x2, x3, y3 are frozen at the first cycle after
+//   the switch and used from then on, so the B terms, A and the step stay constant.
 // Element step [4.2] (before the /DT scale): dt = L phi / c, L = 2A / longest side, c = sqrt(E/rho),
 //   phi = sqrt(1 + Dm^2) - Dm (1 by default). Nodal stiffness [4.5]: 0.81^2 A t A11 / L^2 per node.
 //
@@ -120,16 +122,26 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
       const double d21x = px[1] - px[0], d21y = py[1] - py[0], d21z = pz[1] - pz[0];
       const double d31x = px[2] - px[0], d31y = py[2] - py[0], d31z = pz[2] - pz[0];
       const double d32x = px[2] - px[1], d32y = py[2] - py[1], d32z = pz[2] - pz[1];
-      const double x2 = std::sqrt(d21x * d21x + d21y * d21y + d21z * d21z);
-      double inv = 1.0 / std::max(x2, 1e-30);
+      const double x2_now = std::sqrt(d21x * d21x + d21y * d21y + d21z * d21z);
+      double inv = 1.0 / std::max(x2_now, 1e-30);
       const double e1x = d21x * inv, e1y = d21y * inv, e1z = d21z * inv;
       double e3x = d31y * d32z - d31z * d32y, e3y = d31z * d32x - d31x * d32z,
              e3z = d31x * d32y - d31y * d32x;
       inv = 1.0 / std::max(std::sqrt(e3x * e3x + e3y * e3y + e3z * e3z), 1e-30);
       e3x *= inv, e3y *= inv, e3z *= inv;
       const double e2x = e3y * e1z - e3z * e1y, e2y = e3z * e1x - e3x * e1z, e2z = e3x * e1y - e3y * e1x;
-      const double x3 = e1x * d31x + e1y * d31y + e1z * d31z;
-      const double y3 = e2x * d31x + e2y * d31y + e2z * d31z;
+      double x2 = x2_now;
+      double x3 = e1x * d31x + e1y * d31y + e1z * d31z;
+      double y3 = e2x * d31x + e2y * d31y + e2z * d31z;
+      // Small strain after a /DT/SH_3N/CST switch: the local coordinates are frozen at the first cycle after
+      // it and used from then on (the frame and velocities stay current), so the step stays constant.
+      if (g.dt_fixed[ii] > 0.0) {
+        if (g.small[ii] == 0.0) {
+          g.ref_local[0 * G + ii] = x2, g.ref_local[1 * G + ii] = x3, g.ref_local[2 * G + ii] = y3;
+          g.small[ii] = 1.0;
+        }
+        x2 = g.ref_local[0 * G + ii], x3 = g.ref_local[1 * G + ii], y3 = g.ref_local[2 * G + ii];
+      }
       const double area = std::max(0.5 * x2 * y3, 1e-20);
       const double ainv = 1.0 / area;
       const double PX1 = -0.5 * y3, PY1 = 0.5 * (x3 - x2), PY2 = -0.5 * x3;

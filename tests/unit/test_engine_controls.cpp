@@ -249,3 +249,173 @@ TEST_CASE("/DT/BRICK/CST holds a brick's step at Tmin and stops if the brick's o
   CHECK(stopped.status == radx::solver::RunStatus::Error);
   CHECK(stopped.message.find("element 1") != std::string::npos);
 }
+
+TEST_CASE("/DT/BRICK/CST switches the brick to small strain: its step stays constant while it is crushed",
+          "[engine]") {
+  // One steel cube (side a) on symmetry supports (x = 0, y = 0, z = 0 faces), its top face pushed down at
+  // constant speed V so that it is crushed by 40 % in the run. Large strain would shrink its step with its
+  // height (dt ~ V / A_max); after the switch at Tmin the geometry of the switch is kept, so the element's
+  // own step (before the scale) and the run's step stay constant: elements.md's "step stays constant".
+  const double a = 10.0, V = 2.0e5;  // mm/s: 40 % of a in 2e-5 s, some tens of brick steps
+  std::string s = radx::test::begin_block(2026, "Mg mm s") + "/NODE\n";
+  for (int k = 0; k < 8; ++k) {
+    const double x = (k == 1 || k == 2 || k == 5 || k == 6) ? a : 0.0;
+    const double y = (k == 2 || k == 3 || k == 6 || k == 7) ? a : 0.0;
+    const double z = k >= 4 ? a : 0.0;
+    s += Line().put(k + 1, 1, 10).put(x, 11, 30).put(y, 31, 50).put(z, 51, 70).str() + "\n";
+  }
+  Line b;
+  b.put(1, 1, 10);
+  for (int k = 0; k < 8; ++k) b.put(k + 1, 11 + 10 * k, 20 + 10 * k);
+  s += "/BRICK/1\n" + b.str() + "\n/PART/1\ncube\n" + Line().put(1, 1, 10).put(1, 11, 20).str() + "\n";
+  s += "/PROP/SOLID/1\nsolid\n\n\n/MAT/LAW1/1\nsteel\n" + Line().put(7.85e-9, 1, 20).str() + "\n" +
+       Line().put(210000.0, 1, 20).put(0.3, 21, 40).str() + "\n";
+  auto group = [&](int id, std::vector<int> nodes) {
+    Line l;
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      l.put(nodes[k], 1 + 10 * static_cast<int>(k), 10 + 10 * static_cast<int>(k));
+    s += "/GRNOD/NODE/" + std::to_string(id) + "\ng\n" + l.str() + "\n";
+  };
+  group(1, {1, 4, 5, 8});  // x = 0
+  group(2, {1, 2, 5, 6});  // y = 0
+  group(3, {1, 2, 3, 4});  // z = 0
+  group(4, {5, 6, 7, 8});  // top
+  const char* codes[3] = {"   100 000", "   010 000", "   001 000"};
+  for (int k = 0; k < 3; ++k)
+    s += "/BCS/" + std::to_string(k + 1) + "\nsym\n" +
+         Line().put(codes[k], 1, 10).put(0, 11, 20).put(k + 1, 21, 30).str() + "\n";
+  s += "/IMPVEL/1\ncrush\n" +
+       Line()
+           .put(1, 1, 10)
+           .put("Z", 11, 20)
+           .put(0, 21, 30)
+           .put(0, 31, 40)
+           .put(4, 41, 50)
+           .put(0, 51, 60)
+           .put(0, 61, 70)
+           .str() +
+       "\n" + Line().put(0.0, 1, 20).put(-V, 21, 40).put(0.0, 41, 60).put(0.0, 61, 80).str() + "\n";
+  s += "/FUNCT/1\none\n" + Line().put(0.0, 1, 20).put(1.0, 21, 40).str() + "\n" +
+       Line().put(1.0, 1, 20).put(1.0, 21, 40).str() + "\n/END\n";
+  radx::test::TempDir dir;
+  radx::Diagnostics diags;
+  const auto deck = radx::read_starter_deck(dir.write("c_0000.rad", s), diags);
+  auto m = radx::build_model(deck, diags);
+  for (const auto& d : diags.items()) INFO(radx::Diagnostics::format(d));
+  REQUIRE_FALSE(diags.has_errors());
+
+  radx::model::RunControls rc;
+  rc.t_stop = 0.4 * a / V;
+  rc.brick.given = true;
+  rc.brick.action = radx::model::DtAction::Constant;
+  rc.brick.scale = 0.9;
+  // Tmin just below the step at the start: the switch happens in the first cycles, long before the crush.
+  double first_dt = 0;
+  {
+    radx::model::RunControls probe = rc;
+    probe.brick.given = false;
+    radx::solver::ExplicitEngine e(m, probe, radx::solver::EngineOptions{1, 1});
+    e.run([&](const radx::solver::CycleReport& r) {
+      first_dt = r.dt;  // the scaled step of cycle 0
+      return false;
+    });
+  }
+  REQUIRE(first_dt > 0);
+  rc.brick.t_min = 0.98 * first_dt;
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  std::vector<double> steps, own;
+  const auto res = engine.run([&](const radx::solver::CycleReport& r) {
+    steps.push_back(r.dt);
+    own.push_back(engine.brick_groups().at(0).dt[0]);
+    return true;
+  });
+  INFO(res.message);
+  REQUIRE(res.status == radx::solver::RunStatus::Normal);
+  REQUIRE(steps.size() > 10);
+  // The crush really happened: the top face moved down by V t_stop (imposed).
+  const auto& s_nodes = engine.nodes();
+  CHECK(s_nodes.z[4] == Approx(a - V * rc.t_stop).epsilon(1e-9));
+  // After the switch (from the third cycle on, once the frozen geometry is captured) every step is Tmin (the
+  // last two cycles are cut to end at t_stop). The element's own step is that of the frozen geometry: its
+  // length V/A_max no longer shrinks with the height (0.6 a at the end: a large-strain step would be about
+  // 0.6 of the first one); it varies only through the bulk-viscosity term qb c + qa^2 l ec of the compression
+  // rate, some per cent here, so it stays above 0.85 of its value at the switch.
+  for (std::size_t k = 3; k + 2 < steps.size(); ++k) {
+    INFO("cycle " << k);
+    CHECK(steps[k] == Approx(rc.brick.t_min).epsilon(1e-12));
+  }
+  const double own_min = *std::min_element(own.begin() + 3, own.end() - 1);
+  CHECK(own_min > 0.85 * own[3]);
+}
+
+TEST_CASE("/DT/SHELL/CST switches the shell to small strain: its step stays exactly constant", "[engine]") {
+  // One square steel shell (side a): the edge x = 0 clamped, the edge x = a pushed towards it at speed V
+  // (in plane, z and rotations held), 40 % of a in the run. Large strain would shrink the step with the
+  // side (dt = L / c); after the switch the frozen local geometry gives the same L every cycle, and with no
+  // membrane damping (Dm = 0) the shell step has no rate term: the element's own step is constant exactly.
+  const double a = 10.0, V = 2.0e5;
+  std::string s = radx::test::begin_block(2026, "Mg mm s") + "/NODE\n";
+  const double xy[4][2] = {{0, 0}, {a, 0}, {a, a}, {0, a}};
+  for (int k = 0; k < 4; ++k)
+    s += Line().put(k + 1, 1, 10).put(xy[k][0], 11, 30).put(xy[k][1], 31, 50).put(0.0, 51, 70).str() + "\n";
+  s += "/SHELL/1\n" + Line().put(1, 1, 10).put(1, 11, 20).put(2, 21, 30).put(3, 31, 40).put(4, 41, 50).str() +
+       "\n";
+  s += "/PART/1\nplate\n" + Line().put(1, 1, 10).put(1, 11, 20).str() + "\n";
+  s += "/PROP/SHELL/1\nshell\n\n\n" + Line().put(1.0, 21, 40).str() + "\n";
+  s += "/MAT/LAW1/1\nsteel\n" + Line().put(7.85e-9, 1, 20).str() + "\n" +
+       Line().put(210000.0, 1, 20).put(0.3, 21, 40).str() + "\n";
+  s += "/GRNOD/NODE/1\nclamped\n" + Line().put(1, 1, 10).put(4, 11, 20).str() + "\n";
+  s += "/GRNOD/NODE/2\npushed\n" + Line().put(2, 1, 10).put(3, 11, 20).str() + "\n";
+  s += "/BCS/1\nclamp\n" + Line().put("   111 111", 1, 10).put(0, 11, 20).put(1, 21, 30).str() + "\n";
+  s += "/BCS/2\nin plane\n" + Line().put("   011 111", 1, 10).put(0, 11, 20).put(2, 21, 30).str() + "\n";
+  s += "/IMPVEL/1\npush\n" +
+       Line()
+           .put(1, 1, 10)
+           .put("X", 11, 20)
+           .put(0, 21, 30)
+           .put(0, 31, 40)
+           .put(2, 41, 50)
+           .put(0, 51, 60)
+           .put(0, 61, 70)
+           .str() +
+       "\n" + Line().put(0.0, 1, 20).put(-V, 21, 40).put(0.0, 41, 60).put(0.0, 61, 80).str() + "\n";
+  s += "/FUNCT/1\none\n" + Line().put(0.0, 1, 20).put(1.0, 21, 40).str() + "\n" +
+       Line().put(1.0, 1, 20).put(1.0, 21, 40).str() + "\n/END\n";
+  radx::test::TempDir dir;
+  radx::Diagnostics diags;
+  const auto deck = radx::read_starter_deck(dir.write("s_0000.rad", s), diags);
+  auto m = radx::build_model(deck, diags);
+  for (const auto& d : diags.items()) INFO(radx::Diagnostics::format(d));
+  REQUIRE_FALSE(diags.has_errors());
+
+  radx::model::RunControls rc;
+  rc.t_stop = 0.4 * a / V;
+  double first_dt = 0;
+  {
+    radx::solver::ExplicitEngine e(m, rc, radx::solver::EngineOptions{1, 1});
+    e.run([&](const radx::solver::CycleReport& r) {
+      first_dt = r.dt;
+      return false;
+    });
+  }
+  REQUIRE(first_dt > 0);
+  rc.shell.given = true;
+  rc.shell.action = radx::model::DtAction::Constant;
+  rc.shell.scale = 0.9;
+  rc.shell.t_min = 0.98 * first_dt;
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  std::vector<double> steps, own;
+  const auto res = engine.run([&](const radx::solver::CycleReport& r) {
+    steps.push_back(r.dt);
+    own.push_back(engine.shell_groups().at(0).dt[0]);
+    return true;
+  });
+  INFO(res.message);
+  REQUIRE(res.status == radx::solver::RunStatus::Normal);
+  CHECK(engine.nodes().x[1] == Approx(a - V * rc.t_stop).epsilon(1e-9));  // pushed by 0.4 a
+  for (std::size_t k = 3; k + 2 < steps.size(); ++k) {
+    INFO("cycle " << k);
+    CHECK(steps[k] == Approx(rc.shell.t_min).epsilon(1e-12));
+    CHECK(own[k] == own[3]);
+  }
+}
