@@ -17,6 +17,17 @@ using radx::test::Line;
 
 namespace {
 
+// The model of a starter deck given as text (errors fail the test).
+radx::model::Model model_of(const std::string& text) {
+  radx::test::TempDir dir;
+  radx::Diagnostics diags;
+  const auto deck = radx::read_starter_deck(dir.write("m_0000.rad", text), diags);
+  auto m = radx::build_model(deck, diags);
+  for (const auto& d : diags.items()) INFO(radx::Diagnostics::format(d));
+  REQUIRE_FALSE(diags.has_errors());
+  return m;
+}
+
 // One steel cube of side a (LAW1), at rest, nothing else.
 radx::model::Model cube(double a, double vz = 0.0) {
   std::string s = radx::test::begin_block(2026, "Mg mm s") + "/NODE\n";
@@ -36,14 +47,27 @@ radx::model::Model cube(double a, double vz = 0.0) {
     s += "/GRNOD/PART/1\nall\n" + Line().put(1, 1, 10).str() + "\n/INIVEL/TRA/1\nv\n" +
          Line().put(0.0, 1, 20).put(0.0, 21, 40).put(vz, 41, 60).put(1, 61, 70).str() + "\n";
   s += "/END\n";
-  radx::test::TempDir dir;
-  const auto path = dir.write("c_0000.rad", s);
-  radx::Diagnostics diags;
-  const auto deck = radx::read_starter_deck(path, diags);
-  auto m = radx::build_model(deck, diags);
-  for (const auto& d : diags.items()) INFO(radx::Diagnostics::format(d));
-  REQUIRE_FALSE(diags.has_errors());
-  return m;
+  return model_of(s);
+}
+
+// /IMPVEL/1 moving node group `group` along `dir` at the constant speed `v` (with /FUNCT/1 = 1), then /END.
+std::string constant_impvel_and_end(const char* dir, int group, double v) {
+  return "/IMPVEL/1\nimposed\n" +
+         Line().put(1, 1, 10).put(dir, 11, 20).put(0, 21, 30).put(0, 31, 40).put(group, 41, 50).str() + "\n" +
+         Line().put(0.0, 1, 20).put(v, 21, 40).str() + "\n/FUNCT/1\none\n" +
+         Line().put(0.0, 1, 20).put(1.0, 21, 40).str() + "\n" +
+         Line().put(1.0, 1, 20).put(1.0, 21, 40).str() + "\n/END\n";
+}
+
+// The scaled step of cycle 0 of a run of `m` with `rc`.
+double first_step(const radx::model::Model& m, const radx::model::RunControls& rc) {
+  double dt = 0;
+  radx::solver::ExplicitEngine e(m, rc, radx::solver::EngineOptions{1, 1});
+  e.run([&](const radx::solver::CycleReport& r) {
+    dt = r.dt;
+    return false;
+  });
+  return dt;
 }
 
 }  // namespace
@@ -284,43 +308,17 @@ TEST_CASE("/DT/BRICK/CST switches the brick to small strain: its step stays cons
   for (int k = 0; k < 3; ++k)
     s += "/BCS/" + std::to_string(k + 1) + "\nsym\n" +
          Line().put(codes[k], 1, 10).put(0, 11, 20).put(k + 1, 21, 30).str() + "\n";
-  s += "/IMPVEL/1\ncrush\n" +
-       Line()
-           .put(1, 1, 10)
-           .put("Z", 11, 20)
-           .put(0, 21, 30)
-           .put(0, 31, 40)
-           .put(4, 41, 50)
-           .put(0, 51, 60)
-           .put(0, 61, 70)
-           .str() +
-       "\n" + Line().put(0.0, 1, 20).put(-V, 21, 40).put(0.0, 41, 60).put(0.0, 61, 80).str() + "\n";
-  s += "/FUNCT/1\none\n" + Line().put(0.0, 1, 20).put(1.0, 21, 40).str() + "\n" +
-       Line().put(1.0, 1, 20).put(1.0, 21, 40).str() + "\n/END\n";
-  radx::test::TempDir dir;
-  radx::Diagnostics diags;
-  const auto deck = radx::read_starter_deck(dir.write("c_0000.rad", s), diags);
-  auto m = radx::build_model(deck, diags);
-  for (const auto& d : diags.items()) INFO(radx::Diagnostics::format(d));
-  REQUIRE_FALSE(diags.has_errors());
+  s += constant_impvel_and_end("Z", 4, -V);
+  const auto m = model_of(s);
 
   radx::model::RunControls rc;
   rc.t_stop = 0.4 * a / V;
+  // Tmin just below the step at the start: the switch happens in the first cycles, long before the crush.
+  const double first_dt = first_step(m, rc);
+  REQUIRE(first_dt > 0);
   rc.brick.given = true;
   rc.brick.action = radx::model::DtAction::Constant;
   rc.brick.scale = 0.9;
-  // Tmin just below the step at the start: the switch happens in the first cycles, long before the crush.
-  double first_dt = 0;
-  {
-    radx::model::RunControls probe = rc;
-    probe.brick.given = false;
-    radx::solver::ExplicitEngine e(m, probe, radx::solver::EngineOptions{1, 1});
-    e.run([&](const radx::solver::CycleReport& r) {
-      first_dt = r.dt;  // the scaled step of cycle 0
-      return false;
-    });
-  }
-  REQUIRE(first_dt > 0);
   rc.brick.t_min = 0.98 * first_dt;
   radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
   std::vector<double> steps, own;
@@ -368,36 +366,12 @@ TEST_CASE("/DT/SHELL/CST switches the shell to small strain: its step stays exac
   s += "/GRNOD/NODE/2\npushed\n" + Line().put(2, 1, 10).put(3, 11, 20).str() + "\n";
   s += "/BCS/1\nclamp\n" + Line().put("   111 111", 1, 10).put(0, 11, 20).put(1, 21, 30).str() + "\n";
   s += "/BCS/2\nin plane\n" + Line().put("   011 111", 1, 10).put(0, 11, 20).put(2, 21, 30).str() + "\n";
-  s += "/IMPVEL/1\npush\n" +
-       Line()
-           .put(1, 1, 10)
-           .put("X", 11, 20)
-           .put(0, 21, 30)
-           .put(0, 31, 40)
-           .put(2, 41, 50)
-           .put(0, 51, 60)
-           .put(0, 61, 70)
-           .str() +
-       "\n" + Line().put(0.0, 1, 20).put(-V, 21, 40).put(0.0, 41, 60).put(0.0, 61, 80).str() + "\n";
-  s += "/FUNCT/1\none\n" + Line().put(0.0, 1, 20).put(1.0, 21, 40).str() + "\n" +
-       Line().put(1.0, 1, 20).put(1.0, 21, 40).str() + "\n/END\n";
-  radx::test::TempDir dir;
-  radx::Diagnostics diags;
-  const auto deck = radx::read_starter_deck(dir.write("s_0000.rad", s), diags);
-  auto m = radx::build_model(deck, diags);
-  for (const auto& d : diags.items()) INFO(radx::Diagnostics::format(d));
-  REQUIRE_FALSE(diags.has_errors());
+  s += constant_impvel_and_end("X", 2, -V);
+  const auto m = model_of(s);
 
   radx::model::RunControls rc;
   rc.t_stop = 0.4 * a / V;
-  double first_dt = 0;
-  {
-    radx::solver::ExplicitEngine e(m, rc, radx::solver::EngineOptions{1, 1});
-    e.run([&](const radx::solver::CycleReport& r) {
-      first_dt = r.dt;
-      return false;
-    });
-  }
+  const double first_dt = first_step(m, rc);
   REQUIRE(first_dt > 0);
   rc.shell.given = true;
   rc.shell.action = radx::model::DtAction::Constant;
