@@ -14,6 +14,8 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <vector>
@@ -265,6 +267,149 @@ TEST_CASE("brick patch test: a linear field on the distorted 7-element cube", "[
     e2 += g2.e_hg[e];
   }
   CHECK(e2 > 10 * e1);
+}
+
+// The patch of verification.md 13 under the infinitesimal field u = s B X, B = [[1, 1/2, 1/2], [1/2, 1, 1/2],
+// [1/2, 1/2, 1]] (the spec's field is s = 1e-3), imposed as in the test above: one step from the initial
+// geometry, x^n = X + u, at the constant velocity v = u / dt1.
+struct PatchResult {
+  double err_linear = 0;       // max over elements and components |sigma - sigma_lin| / max |sigma_lin|
+  double err_finite = 0;       // same against the element's own finite-strain closed form
+  double e_hg = 0, e_int = 0;  // sums over the elements
+  double worst_mode4 = 0;      // max over elements |e_hg - mode-4 energy| / mode-4 energy
+};
+
+PatchResult infinitesimal_patch(const MaterialParams& mat, double s, double dt1) {
+  const auto pts = patch_points();
+  NodeState ns = make_nodes(pts);
+  BrickGroup g = make_group(kPatch, ns, mat.rho0);
+  const M3 B = {{{1.0, 0.5, 0.5}, {0.5, 1.0, 0.5}, {0.5, 0.5, 1.0}}};
+  M3 A;
+  for (std::size_t a = 0; a < 3; ++a)
+    for (std::size_t b = 0; b < 3; ++b) A[a][b] = s * B[a][b];
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    double u[3];
+    for (std::size_t a = 0; a < 3; ++a)
+      u[a] = A[a][0] * pts[k][0] + A[a][1] * pts[k][1] + A[a][2] * pts[k][2];
+    ns.x[k] += u[0];
+    ns.y[k] += u[1];
+    ns.z[k] += u[2];
+    ns.vx[k] = u[0] / dt1;
+    ns.vy[k] = u[1] / dt1;
+    ns.vz[k] = u[2] / dt1;
+  }
+  CycleInfo cyc;
+  cyc.dt1 = dt1;
+  hex8_forces(g, ns, mat, cyc);
+
+  // Linear elasticity: sigma = lambda tr(eps) I + 2 mu eps with eps = A (symmetric).
+  const double lambda = mat.young * mat.nu / ((1 + mat.nu) * (1 - 2 * mat.nu));
+  const double mu = mat.shear;
+  const double tr = A[0][0] + A[1][1] + A[2][2];
+  const std::array<double, 6> lin = {lambda * tr + 2 * mu * A[0][0],
+                                     lambda * tr + 2 * mu * A[1][1],
+                                     lambda * tr + 2 * mu * A[2][2],
+                                     2 * mu * A[0][1],
+                                     2 * mu * A[1][2],
+                                     2 * mu * A[2][0]};
+  double scale = 0;
+  for (double v : lin) scale = std::max(scale, std::abs(v));
+  // The element's finite-strain closed form (as in the test above), evaluated without cancellation so that
+  // it is accurate to round-off relative to s: det F - 1 = I1 + I2 + I3 (invariants of A), the volumetric
+  // measure 1/det F - 1 = -(det F - 1)/det F, and L dt1 = A F^-1.
+  M3 F = A;
+  for (std::size_t a = 0; a < 3; ++a) F[a][a] += 1.0;
+  double tr_a2 = 0;
+  for (std::size_t a = 0; a < 3; ++a)
+    for (std::size_t b = 0; b < 3; ++b) tr_a2 += A[a][b] * A[b][a];
+  const double ddet = tr + 0.5 * (tr * tr - tr_a2) + det3(A);
+  const auto fin = elastic_stress(mat, mul(A, inverse(F)), -ddet / (1.0 + ddet));
+
+  PatchResult r;
+  for (std::size_t e = 0; e < kPatch.size(); ++e) {
+    for (std::size_t m = 0; m < 6; ++m) {
+      r.err_linear = std::max(r.err_linear, std::abs(stress(g, e, m) - lin[m]) / scale);
+      r.err_finite = std::max(r.err_finite, std::abs(stress(g, e, m) - fin[m]) / scale);
+    }
+    // Mode-4 energy from its definition (elements.md 3.4): q4 = sum h4_k v_k, H = q4 (Cl + Cq |q4|) per
+    // direction, E = dt1 H . q4.
+    std::array<radx::model::Vec3, 8> xe;
+    double q4[3] = {0, 0, 0};
+    for (std::size_t k = 0; k < 8; ++k) {
+      const auto nd = static_cast<std::size_t>(kPatch[e][k]);
+      xe[k] = {ns.x[nd], ns.y[nd], ns.z[nd]};
+      q4[0] += kH4[k] * ns.vx[nd];
+      q4[1] += kH4[k] * ns.vy[nd];
+      q4[2] += kH4[k] * ns.vz[nd];
+    }
+    const double vol = radx::model::brick_volume(xe);
+    const double rho = mat.rho0 * g.vol0[e] / vol;
+    const double a = 0.25 * g.h;
+    const double cl = a * rho * std::pow(vol, 2.0 / 3.0) * mat.c_solid;
+    const double cq = 100 * a * a * rho * std::pow(vol, 2.0 / 3.0);
+    double e4 = 0;
+    for (double q : q4) e4 += dt1 * q * q * (cl + cq * std::abs(q));
+    r.e_hg += g.e_hg[e];
+    r.e_int += g.e_int[e];
+    r.worst_mode4 = std::max(r.worst_mode4, rel(g.e_hg[e], e4));
+  }
+  return r;
+}
+
+TEST_CASE("brick patch test: an infinitesimal linear field gives the linear-elastic stress",
+          "[brick][patch]") {
+  // Every element of the distorted patch against linear elasticity, sigma = lambda tr(eps) I + 2 mu eps.
+  // What limits the agreement in double precision, for a strain of size s (relative to the normal stress
+  // 2e6 s; eps = 2.2e-16, the machine epsilon):
+  //  * geometric nonlinearity, relative O(s): the element works on the current geometry x^n = (I + A) X
+  //    (L dt1 = A (I + A)^-1 = A - A^2 + ...) and takes the pressure from the volume ratio
+  //    (mu = 1/det F - 1 = -tr A + O(s^2)). For this field it is 2.25 s (measured at s = 1e-3 .. 1e-6,
+  //    where round-off is negligible);
+  //  * round-off, relative O(eps / s): the pressure comes from V0/V - 1, the difference of two volumes
+  //    computed from coordinates of size 1 (the rounding of X + u and of the volume formula are ~eps in
+  //    V/V0, against tr A = 3 s). The deviatoric part comes from the velocities (v = u / dt1 carries its own
+  //    relative precision) and stays at ~eps relative. Measured against the element's own finite-strain
+  //    formula (err_finite): 0.45 .. 0.93 eps / s for s = 1e-3 .. 1e-12, i.e. 1e-7 at s = 1e-9.
+  // The sum 2.25 s + eps / s is smallest at s ~ 1e-8, where it is ~4e-8 (measured 4.3e-8; 1e-7 at s = 1e-7
+  // and at s = 1e-9): agreement to 1e-9 relative is IMPOSSIBLE in double precision for this one-point brick
+  // on a 3-D patch. It would need s < 4e-10 for the nonlinearity and s > 2e-7 for the round-off.
+  // The test holds the stress to 2.5 s + 2 eps / s (the measured coefficients with a margin): 6.9e-8 at
+  // s = 1e-8 (the tightest the arithmetic allows), 2.5e-6 at s = 1e-6; and to the element's finite-strain
+  // formula within the round-off alone, 2 eps / s (4.4e-8 and 4.4e-10).
+  const MaterialParams mat = elastic(1e6, 0.25, 1.0);
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const bool print = std::getenv("RADX_PATCH_VERBOSE") != nullptr;
+  for (const double s : {1e-8, 1e-6}) {
+    INFO("strain " << s);
+    const PatchResult r = infinitesimal_patch(mat, s, 1.0);
+    CHECK(r.err_linear <= 2.5 * s + 2 * eps / s);
+    CHECK(r.err_finite <= 2 * eps / s);
+    // Hourglass energy. Isolid 1 projects modes 1-3 on the linear fields (Gamma = h - (h . x) b) but uses
+    // the plain h4 for mode 4 (elements.md 3.4), and h4 . x != 0 on a brick that is not a parallelepiped:
+    // a linear field has a mode-4 rate q4 = sum h4_k v_k on the distorted patch, so the hourglass energy
+    // is NOT zero here (it is zero on a parallelepiped mesh, next test). All of it is mode 4 (modes 1-3
+    // stay silent: 1e-9 relative), and it is small: E_hg / E_int = 3.0e-7 for this loading over dt1 = 1
+    // (whatever s: both are quadratic in s), checked below 1e-6.
+    CHECK(r.worst_mode4 < 1e-9);
+    CHECK(r.e_hg < 1e-6 * r.e_int);
+    // The hourglass control is viscous, so this energy is a rate effect that vanishes in the quasi-static
+    // limit: the same displacement over dt1 = 10 gives the same stress and a tenth of the hourglass energy
+    // (the quadratic term Cq |q4|, ~1e-11 of the linear one here, aside).
+    const PatchResult slow = infinitesimal_patch(mat, s, 10.0);
+    CHECK(slow.err_linear <= 2.5 * s + 2 * eps / s);
+    CHECK(rel(10.0 * slow.e_hg, r.e_hg) < 1e-6);
+    if (print)
+      std::printf(
+          "patch s = %.0e: |sigma - linear| %.3e, |sigma - finite| %.3e (%.3f eps / s), E_hg / E_int %.3e\n",
+          s, r.err_linear, r.err_finite, r.err_finite * s / eps, r.e_hg / r.e_int);
+  }
+  // The trade-off over s = 1e-3 .. 1e-12, printed with RADX_PATCH_VERBOSE=1.
+  if (print)
+    for (double s = 1e-3; s > 0.5e-12; s /= 10) {
+      const PatchResult r = infinitesimal_patch(mat, s, 1.0);
+      std::printf("  s %.0e: |sigma - linear| %.3e (%.3f s), |sigma - finite| %.3e (%.3f eps / s)\n", s,
+                  r.err_linear, r.err_linear / s, r.err_finite, r.err_finite * s / eps);
+    }
 }
 
 TEST_CASE("brick: every interior node of a parallelepiped mesh is in equilibrium under a linear field",

@@ -4,9 +4,10 @@
 // computed HERE from the deck's own parameters read back from the Model (E, rho, lengths from the node
 // coordinates, v0 from the initial velocity), with the closed forms of shared/spec/verification.md.
 //
-// Cases: A.3 elastic bar on a rigid wall, B.10 cantilever strip of shells, B.9 Taylor bar, B.14 uniaxial
-// Johnson-Cook at one element; and on every deck the global checks of section C (energy balance, momentum
-// where no external force acts) plus thread-count independence.
+// Cases: A.3 elastic bar on a rigid wall, A.4 two bars exchanging velocities through TYPE7 contact, B.10
+// cantilever strip of shells, B.9 Taylor bar, B.14 uniaxial Johnson-Cook at one element; and on every deck
+// the global checks of section C (energy balance, momentum where no external force acts) plus thread-count
+// independence.
 //
 // Runs use one thread (small models: a parallel region per cycle costs more than it saves, and a loaded
 // machine makes OpenMP barriers slow), except the Taylor bar, which also runs with 2 threads to check that
@@ -289,6 +290,229 @@ TEST_CASE("verification: elastic bar on a rigid wall", "[verification]") {
   }
   CHECK(after >= 50);
   check_energy(energy, "bar_rwall");
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// A.4: two equal elastic bars, one at rest, longitudinal impact through TYPE7 contact (consistent units,
+// E = rho = 1). c = sqrt(E/rho); interface stress rho c v0 / 2 (equal impedances share the velocity jump);
+// contact lasts 2L/c; then the striker is at rest and the struck bar moves at v0 (exchange of velocities).
+// No external force acts (contact forces are internal): momentum is constant to round-off all along.
+// Why the deck has Fric 0.1 (Iform 2): see its README (without friction the faces slide sideways off each
+// other's boundary edges; the test checks that friction does no work).
+TEST_CASE("verification: two bars exchange velocities", "[verification]") {
+  const auto t0 = std::chrono::steady_clock::now();
+  Case c = load_case("two_bars", "TWO_BARS");
+  const md::Model& m = c.model;
+  REQUIRE(m.parts.size() == 2);
+  REQUIRE(m.parts[0].material == m.parts[1].material);  // equal bars: same material and property
+  REQUIRE(m.parts[0].property == m.parts[1].property);
+  const md::Material& mat = m.materials[static_cast<std::size_t>(m.parts[0].material)];
+  REQUIRE(mat.law == md::MaterialLaw::Elastic);
+  REQUIRE(mat.poisson == 0.0);  // the 1-D closed form needs nu = 0 (then K + 4G/3 = E for the brick)
+  REQUIRE(m.shells.size() == 0);
+  REQUIRE(m.rigid_walls.empty());
+  REQUIRE(m.bcs.empty());  // lateral motion free, no support
+  REQUIRE(m.interfaces.size() == 1);
+  const md::Interface& in = m.interfaces[0];
+  REQUIRE(in.istf == 1);
+  REQUIRE(in.igap == 0);
+  REQUIRE(in.vis_s <= 1e-9);  // the linear dashpot is negligible (a 0 in the deck would mean 0.05)
+  const double gap = in.gapmin;
+  REQUIRE(gap > 0);
+
+  // Striker = the nodes given the initial velocity (v0 along +Z); struck bar = the nodes of the other part.
+  REQUIRE(m.initial_velocities.size() == 1);
+  const auto& iv = m.initial_velocities[0];
+  REQUIRE(iv.v[0] == 0.0);
+  REQUIRE(iv.v[1] == 0.0);
+  const double v0 = iv.v[2];
+  REQUIRE(v0 > 0);
+  const std::size_t nn = m.nodes.size();
+  std::vector<int> bar(nn, -1);  // 0 striker, 1 struck bar
+  for (std::size_t e = 0; e < m.bricks.size(); ++e)
+    for (std::size_t k = 0; k < 8; ++k)
+      bar[static_cast<std::size_t>(m.bricks.conn[8 * e + k])] = m.bricks.part[e];
+  const auto& moving = m.node_groups[static_cast<std::size_t>(iv.group)].nodes;
+  REQUIRE(!moving.empty());
+  const int striker_part = bar[static_cast<std::size_t>(moving[0])];
+  std::vector<double> zs[2];
+  for (std::size_t n = 0; n < nn; ++n) {
+    REQUIRE(bar[n] >= 0);
+    bar[n] = bar[n] == striker_part ? 0 : 1;
+    zs[bar[n]].push_back(m.nodes.z[n]);
+  }
+  REQUIRE(moving.size() == zs[0].size());  // the initial velocity is on the whole striker and only there
+  for (const auto n : moving) REQUIRE(bar[static_cast<std::size_t>(n)] == 0);
+
+  // Closed form from the deck: equal bars of length L, section A, element length h.
+  const double L = max_of(zs[0]) - min_of(zs[0]);
+  REQUIRE(std::abs(max_of(zs[1]) - min_of(zs[1]) - L) <= 1e-12 * L);
+  const double z_face0 = max_of(zs[0]), z_face1 = min_of(zs[1]);  // the striker is below, moving up
+  REQUIRE(z_face1 - z_face0 > gap);                               // starts apart, outside the gap
+  const double area = (max_of(m.nodes.x) - min_of(m.nodes.x)) * (max_of(m.nodes.y) - min_of(m.nodes.y));
+  const double h = smallest_spacing(zs[1]);
+  const double E = mat.young, rho = mat.rho;
+  const double cw = std::sqrt(E / rho);
+  const double sigma_c = rho * cw * v0 / 2.0;
+  const double t_contact = 2.0 * L / cw;
+  const double t_impact = (z_face1 - z_face0 - gap) / v0;  // the gap closes: the contact force starts
+  const double t_transit = h / cw;                         // one element transit time
+  // The secondary nodes are the striker's end face.
+  REQUIRE(!in.secondary_nodes.empty());
+  for (const auto n : in.secondary_nodes) REQUIRE(m.nodes.z[static_cast<std::size_t>(n)] == z_face0);
+
+  sv::ExplicitEngine eng(m, c.controls, sv::EngineOptions{1});
+  REQUIRE(eng.contact() != nullptr);
+  // The bricks of each bar at the interface (a node on the bar's end face), as (group, slot).
+  std::array<std::vector<std::pair<std::size_t, std::size_t>>, 2> end_bricks;
+  for (std::size_t gi = 0; gi < eng.brick_groups().size(); ++gi) {
+    const auto& g = eng.brick_groups()[gi];
+    for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i) {
+      const auto e = static_cast<std::size_t>(g.element[i]);
+      for (std::size_t b = 0; b < 2; ++b) {
+        bool touches = false;
+        for (std::size_t k = 0; k < 8; ++k) {
+          const auto nd = static_cast<std::size_t>(m.bricks.conn[8 * e + k]);
+          touches =
+              touches || (bar[nd] == static_cast<int>(b) && m.nodes.z[nd] == (b == 0 ? z_face0 : z_face1));
+        }
+        if (touches) end_bricks[b].emplace_back(gi, i);
+      }
+    }
+  }
+  REQUIRE(!end_bricks[0].empty());
+  REQUIRE(end_bricks[0].size() == end_bricks[1].size());
+
+  struct Rec {
+    double t, dt, force, szz[2];
+    std::int64_t pairs;
+    std::array<double, 3> p;
+  };
+  std::vector<Rec> rec;
+  EnergyWatch energy;
+  sv::EnergyBalance last{};
+  double dt1 = 0, lateral = 0;
+  const auto res = eng.run([&](const sv::CycleReport& r) {
+    const auto ir = eng.contact()->results();
+    REQUIRE(ir.size() == 1);
+    // force: the normal contact force on the striker's face, positive in compression (it pushes along -Z).
+    Rec x{r.time, r.dt, -ir[0].normal_force[2], {0, 0}, ir[0].active_pairs, r.momentum};
+    for (std::size_t b = 0; b < 2; ++b) {
+      for (const auto& [gi, i] : end_bricks[b]) x.szz[b] += eng.brick_groups()[gi].sig[2 * G + i];
+      x.szz[b] /= static_cast<double>(end_bricks[b].size());
+    }
+    rec.push_back(x);
+    const auto& s = eng.nodes();
+    for (std::size_t n = 0; n < nn; ++n)
+      lateral = std::max({lateral, std::abs(s.x[n] - s.x0[n]), std::abs(s.y[n] - s.y0[n])});
+    energy(r);
+    last = r.energy;
+    dt1 = r.dt;
+    return true;
+  });
+  REQUIRE(res.status == sv::RunStatus::Normal);
+  CHECK(eng.take_messages().empty());  // no node deactivated (the gap never closes)
+
+  // Contact: from the first to the last cycle with an active pair. Episodes counts the separate intervals
+  // (the penalty, stiffer than the elements, lets the end nodes bounce at the first touch).
+  std::size_t k_start = rec.size(), k_end = rec.size(), episodes = 0;
+  for (std::size_t k = 0; k < rec.size(); ++k)
+    if (rec[k].pairs > 0) {
+      if (k_start == rec.size()) k_start = k;
+      if (k == 0 || rec[k - 1].pairs == 0) ++episodes;
+      k_end = k;
+    }
+  REQUIRE(k_start < rec.size());
+  REQUIRE(k_end + 1 < rec.size());  // the run goes on after the separation
+  const double duration = rec[k_end].t - rec[k_start].t;
+
+  // Stresses, time-weighted over the middle 80 % of the contact (the ringing of the discrete fronts
+  // averages out): the contact pressure (normal force on the secondary nodes over the section) and the mean
+  // axial stress of the bricks on each side of the interface.
+  double f_int = 0, s_int[2] = {0, 0}, t_int = 0;
+  for (std::size_t k = k_start; k <= k_end; ++k)
+    if (rec[k].t >= rec[k_start].t + 0.1 * t_contact && rec[k].t <= rec[k_start].t + 0.9 * t_contact) {
+      f_int += rec[k].force * rec[k].dt;
+      for (std::size_t b = 0; b < 2; ++b) s_int[b] += rec[k].szz[b] * rec[k].dt;
+      t_int += rec[k].dt;
+    }
+  REQUIRE(t_int > 0.5 * t_contact);
+  const double pressure = f_int / t_int / area;
+  const double sigma0 = -s_int[0] / t_int, sigma1 = -s_int[1] / t_int;
+
+  // Final mean velocity of each bar: its momentum over its mass, sum_i m_i v_i / sum_i m_i over its nodes,
+  // with the full-step velocity v^{n-1/2} + dt1/2 a^n (elements.md 8).
+  const auto& s = eng.nodes();
+  double pb[2] = {0, 0}, mb[2] = {0, 0};
+  for (std::size_t n = 0; n < nn; ++n) {
+    pb[bar[n]] += s.mass[n] * (s.vz[n] + 0.5 * dt1 * s.az[n]);
+    mb[bar[n]] += s.mass[n];
+  }
+  REQUIRE(std::abs(mb[0] - mb[1]) <= 1e-12 * mb[0]);  // equal bars
+  const double v_striker = pb[0] / mb[0], v_struck = pb[1] / mb[1];
+  const double e0 = 0.5 * mb[0] * v0 * v0;
+
+  if (verbose())
+    std::printf(
+        "two bars: c %.6g; contact from %.6f (closed form %.6f) for %.6f (2L/c %.6f, h/c %.3g) in %zu "
+        "episode(s); contact pressure %.6e, interface stress striker %.6e struck %.6e (rho c v0/2 %.6e); "
+        "final mean velocities striker %+.5f v0, struck %.5f v0; energies / E0: contact damping %.3e, "
+        "contact elastic left %.3e, friction %.3e, hourglass %.3e; largest lateral displacement %.3e h; "
+        "worst energy error %.4f %%; %zu cycles, %.2f s\n",
+        cw, rec[k_start].t, t_impact, duration, t_contact, t_transit, episodes, pressure, sigma0, sigma1,
+        sigma_c, v_striker / v0, v_struck / v0, last.contact_damping / e0, last.contact_elastic / e0,
+        last.contact_friction / e0, last.hourglass / e0, lateral / h, energy.worst, rec.size(),
+        seconds_since(t0));
+
+  // The gap closes at (distance - g) / v0: the first active cycle is within one step of that.
+  CHECK(std::abs(rec[k_start].t - t_impact) <= t_transit);
+  // Contact duration 2L/c within two element transit times h/c: the discrete fronts are spread over about
+  // one element at each end of the contact (arrival of the compression, return of the unloading waves);
+  // the penalty spring in series adds its own rise time h / (20 c) (README).
+  CHECK(std::abs(duration - t_contact) <= 2.0 * t_transit);
+  // Interface stress rho c v0 / 2 within 5 %: the plateau behind the fronts, as the contact pressure and
+  // as the axial stress of the bricks on both sides of the interface.
+  CHECK(std::abs(pressure - sigma_c) <= 0.05 * sigma_c);
+  CHECK(std::abs(sigma0 - sigma_c) <= 0.05 * sigma_c);
+  CHECK(std::abs(sigma1 - sigma_c) <= 0.05 * sigma_c);
+  // Exchange of velocities: each bar's mean velocity (its momentum over its mass) within 2 % of v0 of its
+  // closed-form value, 0 for the striker and v0 for the struck bar. The total momentum is m v0 exactly
+  // (below), so both say how much momentum the striker keeps: v_striker = (1 - e) v0 / 2 for an effective
+  // coefficient of restitution e, i.e. e >= 0.96. What lowers e is the energy not returned to rigid-body
+  // motion, Delta E / E0 ~ 2 v_striker / v0: bulk viscosity at the fronts, hourglass damping, the contact
+  // damping, and the vibration left in the discrete bars (README).
+  CHECK(std::abs(v_striker) <= 0.02 * v0);
+  CHECK(std::abs(v_struck - v0) <= 0.02 * v0);
+  CHECK(v_struck > v_striker);  // the bars separate for good
+
+  // The contact's own losses. The quadratic damping term of type7-lagdt.md 4.3 always applies (VISs ~ 0
+  // removes only the linear one); it acts while the faces approach, i.e. at the first touch: its work must
+  // stay below 1e-3 of E0, i.e. below 0.05 % of v0 on the final speeds (Delta v ~ Delta E / (2 E0) v0).
+  CHECK(last.contact_damping >= 0);
+  CHECK(last.contact_damping <= 1e-3 * e0);
+  // Friction only holds the faces against sideways sliding: in the 1-D solution they do not slide, so it
+  // must do no work (1e-6 of E0); and the bars stay straight: no lateral displacement beyond 1e-3 h at any
+  // time (the bulk-viscosity pressure of the compression fronts spreads the bricks by up to ~5e-5 h, most
+  // at the first touch; faces sliding off each other reach 5e-2 h, README).
+  CHECK(std::abs(last.contact_friction) <= 1e-6 * e0);
+  CHECK(lateral <= 1e-3 * h);
+
+  // Momentum, no external force: P = m v0 along Z and 0 across, at every cycle, to round-off (1e-12 of m v0;
+  // the contact forces on the secondary node and on the main nodes cancel up to the rounding of the weights).
+  const double p0 = mb[0] * v0;
+  std::array<double, 3> dp{0, 0, 0};  // worst deviation over the run, per direction
+  for (const auto& x : rec) {
+    dp[0] = std::max(dp[0], std::abs(x.p[0]));
+    dp[1] = std::max(dp[1], std::abs(x.p[1]));
+    dp[2] = std::max(dp[2], std::abs(x.p[2] - p0));
+  }
+  if (verbose())
+    std::printf("  momentum: worst deviation / (m v0) %.2e %.2e %.2e\n", dp[0] / p0, dp[1] / p0, dp[2] / p0);
+  CHECK(dp[0] <= 1e-12 * p0);
+  CHECK(dp[1] <= 1e-12 * p0);
+  CHECK(dp[2] <= 1e-12 * p0);
+  CHECK(k_start >= 5);  // some free flight before the contact
+  check_energy(energy, "two_bars");
 }
 
 // ---------------------------------------------------------------------------------------------------------
