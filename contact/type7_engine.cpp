@@ -24,10 +24,13 @@
 //   A pair about to close (gap closed within two steps at its approach speed) adds K already.
 //   dt_k = 0.5 (g - p) / max(-v_n, tiny); the dashpots (damping c, viscous friction C) add dt <= scale m/(c +
 //   C). /DT/INTER/CST (plain TYPE7): below Tmin the node's mass grows to m = k_eff (Tmin / scale)^2 / 2 (main
-//   nodes with h_j k_eff); /DT/INTER/DEL: the node leaves the interface. A node whose remaining gap (g - p)/g
-//   falls below 1e-6 cannot be held by the penalty: it is deactivated with a warning naming the node and the
-//   interface. IBC: at the node's first impact, its fixed X/Y/Z translations selected by IBCX/Y/Z are
-//   released.
+//   nodes with h_j k_eff), and the pair's own vote leaves the spring step to the nodal step so that it does
+//   not undercut Tmin; /DT/INTER/DEL: a pair whose step (spring, kinematic, dashpot) is below Tmin leaves the
+//   interface before it acts (no force, IBC release or stiffness in that cycle), and a pair about to close
+//   whose step at p = 0 is already below Tmin does not vote (it will leave as it closes). A node whose
+//   remaining gap (g - p)/g falls below 1e-6 cannot be held by the penalty: it is deactivated with a warning
+//   naming the node and the interface. IBC: at the node's first impact, its fixed X/Y/Z translations selected
+//   by IBCX/Y/Z are released.
 // Energies: the work of each force kind over each step, W += 1/2 (F^{n-1} + F^n) . v_r^{n-1/2} dt1 (the
 // trapezoidal rule the engine uses for element and load work, consistent with its full-step kinetic
 // energy): elastic = -W_elastic (stored, returned as the pair opens), damping and friction = -W
@@ -361,7 +364,12 @@ struct Type7Contact::Impl {
         // A pair about to close (within two steps at its approach speed) already votes with its stiffness at
         // p = 0: the step must be small before the force appears, because the velocity update of the first
         // contact cycle uses (dt1 + dt2)/2, half of it from the step before.
-        if (vn < 0 && -p < -2.0 * vn * dt1) add_pair_stiffness(node, st.segments[sb], best_h, K, nodes, st);
+        // Not under /DT/INTER/DEL when the pair's step at p = 0 is already below Tmin: it will leave the
+        // interface as soon as it closes (k_eff >= K), so it must not pull the step below Tmin before.
+        const bool leaves = controls.action == ContactControls::Action::Delete && controls.t_min > 0 &&
+                            ms > 0 && scale * std::sqrt(2.0 * ms / K) < controls.t_min;
+        if (vn < 0 && -p < -2.0 * vn * dt1 && !leaves)
+          add_pair_stiffness(node, st.segments[sb], best_h, K, nodes, st);
         continue;
       }
       if ((g - p) / g < 1e-6) {
@@ -400,6 +408,27 @@ struct Type7Contact::Impl {
         f_fr = {ft[0], ft[1], ft[2]};
       }
       st.f_t[ks] = f_fr;
+      // Time step of the pair (4.4), before anything is applied: under /DT/INTER/DEL a pair below Tmin leaves
+      // the interface without acting in this cycle (no force, no IBC release, no stiffness).
+      const double kt = penalty_tangent_stiffness(K, g, p);
+      const double xi = ms > 0 ? cdamp / (2.0 * std::sqrt(kt * ms)) : 0.0;
+      const double shrink = std::sqrt(1.0 + xi * xi) - xi;
+      const double keff = kt / (shrink * shrink);
+      const double dt_spring = ms > 0 ? scale * std::sqrt(2.0 * ms / keff) : kInf;
+      double dt_pair = 0.5 * (g - p) / std::max(-vn, kTiny);  // kinematic
+      // Dashpots computed with v^{n-1/2} overshoot when c dt / m > 1 (the velocity they damp changes sign
+      // every cycle): the normal damping c and the viscous friction C = VISF sqrt(2 K m) keep dt <= m / c.
+      const double c_visc = cdamp + (in.iform == 2 ? 0.0 : in.vis_f * std::sqrt(2.0 * K * ms));
+      if (c_visc > 0 && (in.fric > 0 || in.ifric > 0 || cdamp > 0)) {
+        const double c_total = cdamp + ((in.fric > 0 || in.ifric > 0) ? c_visc - cdamp : 0.0);
+        if (c_total > 0) dt_pair = std::min(dt_pair, scale * ms / c_total);
+      }
+      if (controls.t_min > 0 && std::min(dt_spring, dt_pair) < controls.t_min &&
+          controls.action == ContactControls::Action::Delete) {
+        st.f_t[ks] = Vec3{};
+        deactivate(st, ks, "left the interface: its contact time step fell below the /DT/INTER/DEL minimum");
+        continue;
+      }
       // IBC: release the selected boundary conditions at the first impact.
       if (!st.hit[ks]) {
         st.hit[ks] = 1;
@@ -428,29 +457,15 @@ struct Type7Contact::Impl {
         st.result.normal_force[d] += f_el[d] + f_dp[d];
         st.result.tangential_force[d] += f_fr[d];
       }
-      // Time step of the pair.
-      const double kt = penalty_tangent_stiffness(K, g, p);
-      const double xi = ms > 0 ? cdamp / (2.0 * std::sqrt(kt * ms)) : 0.0;
-      const double shrink = std::sqrt(1.0 + xi * xi) - xi;
-      const double keff = kt / (shrink * shrink);
       // Stability: the pair's stiffness is summed per node over every pair of every interface (two-pass
       // contact puts two springs in parallel on the same nodes), and the nodal steps are taken in compute().
       add_pair_stiffness(node, st.segments[sb], best_h, keff, nodes, st);
-      double dt_pair = ms > 0 ? scale * std::sqrt(2.0 * ms / keff) : kInf;  // for /DT/INTER/DEL
-      const double dt_kin = 0.5 * (g - p) / std::max(-vn, kTiny);
-      dt_pair = std::min(dt_pair, dt_kin);
-      // Dashpots computed with v^{n-1/2} overshoot when c dt / m > 1 (the velocity they damp changes sign
-      // every cycle): the normal damping c and the viscous friction C = VISF sqrt(2 K m) keep dt <= m / c.
-      const double c_visc = cdamp + (in.iform == 2 ? 0.0 : in.vis_f * std::sqrt(2.0 * K * ms));
-      if (c_visc > 0 && (in.fric > 0 || in.ifric > 0 || cdamp > 0)) {
-        const double c_total = cdamp + ((in.fric > 0 || in.ifric > 0) ? c_visc - cdamp : 0.0);
-        if (c_total > 0) dt_pair = std::min(dt_pair, scale * ms / c_total);
-      }
-      if (controls.t_min > 0 && dt_pair < controls.t_min &&
-          controls.action == ContactControls::Action::Delete) {
-        deactivate(st, ks, "left the interface: its contact time step fell below the /DT/INTER/DEL minimum");
-        continue;
-      }
+      // The pair's own vote: kinematic and dashpot limits, and the spring's step (never below the nodal step
+      // of a free node, so redundant there) except under /DT/INTER/CST on a plain TYPE7, where the nodal step
+      // adds mass to stay at Tmin and the pair's step, taken with the mass before that, must not undercut it.
+      const bool mass_scaled =
+          controls.action == ContactControls::Action::AddMass && controls.t_min > 0 && !in.lagdt;
+      if (!mass_scaled) dt_pair = std::min(dt_pair, dt_spring);
       if (dt_pair < vote.dt) {
         vote.dt = dt_pair;
         vote.interface_id = in.id;

@@ -132,13 +132,17 @@ def type7_fields(data):
     f = dict(grnd=integer(c[0], 1, 10), surf=integer(c[0], 11, 20), Istf=integer(c[0], 21, 30),
              Igap=integer(c[0], 41, 50), Icurv=integer(c[0], 81, 90))
     k = 3 + (1 if f["Icurv"] in (1, 2) else 0)
-    f.update(Stfac=real(c[k], 1, 20), Fric=real(c[k], 21, 40), Gapmin=real(c[k], 41, 60))
+    f.update(Idel=integer(c[0], 71, 80))
+    f.update(Stfac=real(c[k], 1, 20), Fric=real(c[k], 21, 40), Gapmin=real(c[k], 41, 60),
+             Tstart=real(c[k], 61, 80), Tstop=real(c[k], 81, 100))
+    f.update(IBC=tuple(integer(c[k + 1], col, col) for col in (8, 9, 10)))
     f.update(Inacti=integer(c[k + 1], 31, 40), VISs=real(c[k + 1], 41, 60), VISf=real(c[k + 1], 61, 80))
     f.update(Ifric=integer(c[k + 2], 1, 10), Iform=integer(c[k + 2], 41, 50))
     # Two-stage defaults (type7-lagdt.md 3): 0 means the default.
     f["VISs"] = f["VISs"] or 0.05
     f["VISf"] = f["VISf"] or 1.0
     f["Iform"] = f["Iform"] or 1
+    f["Tstop"] = f["Tstop"] or 1e30
     return f
 
 
@@ -196,25 +200,12 @@ def rigid_impact(M, masses, K, g, vis_s, p0, vn0, quadratic=True, steps_per_t0=4
     Returns dict(p_max, v_rebound (v_n after the contact), t_contact (time in contact), t_max (time from the
     first contact to p_max), t_free (free flight before contact))."""
     n = len(masses)
-    sum_m = sum(masses)
-    sum_sqrt = sum(math.sqrt(m) for m in masses)
     t_free = 0.0
     p, v = p0, vn0
     if p < 0:
         t_free = -p / -v
         p = 0.0
-
-    def acc(p, v):
-        if p <= 0:
-            return 0.0
-        rem = g - p
-        k = K * g / rem
-        r = rem / g if v < 0 else 1.0
-        c = vis_s * math.sqrt(2 * k / r) * sum_sqrt
-        if quadratic:
-            c += 0.32 * max(0.0, -v) / rem * sum_m
-        return (n * K * p * g / rem - c * v) / M
-
+    acc = _rigid_acceleration(M, masses, K, g, vis_s, quadratic)
     h = math.sqrt(M / (n * K)) / steps_per_t0
     t, p_max, t_max = 0.0, p, 0.0
     for _ in range(1000 * steps_per_t0):
@@ -237,6 +228,50 @@ def rigid_impact(M, masses, K, g, vis_s, p0, vn0, quadratic=True, steps_per_t0=4
     raise RuntimeError("rigid_impact: the pair did not open")
 
 
+def _rigid_acceleration(M, masses, K, g, vis_s, quadratic):
+    """dv_n/dt(p, v_n) of rigid_impact's body (the law and damping of type7-lagdt.md 4.3)."""
+    n = len(masses)
+    sum_m = sum(masses)
+    sum_sqrt = sum(math.sqrt(m) for m in masses)
+
+    def acc(p, v):
+        if p <= 0:
+            return 0.0
+        rem = g - p
+        k = K * g / rem
+        r = rem / g if v < 0 else 1.0
+        c = vis_s * math.sqrt(2 * k / r) * sum_sqrt
+        if quadratic:
+            c += 0.32 * max(0.0, -v) / rem * sum_m
+        return (n * K * p * g / rem - c * v) / M
+
+    return acc
+
+
+def rigid_state(M, masses, K, g, vis_s, p0, vn0, t_end, quadratic=True, steps_per_t0=4000):
+    """rigid_impact's body (same law, damping and start) at the time t_end after the start: (p, v_n), by
+    the same fixed-step RK4 (the last step shortened to land on t_end). Free flight before contact
+    (p < 0) and after it are exact."""
+    acc = _rigid_acceleration(M, masses, K, g, vis_s, quadratic)
+    p, v, t = p0, vn0, 0.0
+    if p < 0 and v < 0:
+        t_c = -p / -v
+        if t_c >= t_end:
+            return p - v * t_end, v
+        p, t = 0.0, t_c
+    h0 = math.sqrt(M / (len(masses) * K)) / steps_per_t0
+    while t < t_end:
+        h = min(h0, t_end - t)
+        k1p, k1v = -v, acc(p, v)
+        k2p, k2v = -(v + 0.5 * h * k1v), acc(p + 0.5 * h * k1p, v + 0.5 * h * k1v)
+        k3p, k3v = -(v + 0.5 * h * k2v), acc(p + 0.5 * h * k2p, v + 0.5 * h * k2v)
+        k4p, k4v = -(v + h * k3v), acc(p + h * k3p, v + h * k3v)
+        p += h / 6 * (k1p + 2 * k2p + 2 * k3p + k4p)
+        v += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v)
+        t += h
+    return p, v
+
+
 def self_test():
     """Without damping the integrator must reproduce the energy equation (relative 1e-6 on x) and a rebound
     at the impact speed (1e-6): guards the expected values of the checks against a broken integrator."""
@@ -252,10 +287,11 @@ def self_test():
 # Running radx and reading its outputs
 
 
-def run_radx(radx, deck, out):
-    """radx run DECK --out OUT --no-plot; returns the run name (NAME of NAME_0000.rad). Exits on failure."""
+def run_radx(radx, deck, out, extra=()):
+    """radx run DECK --out OUT --no-plot [extra arguments, e.g. ("--threads", "2")]; returns the run name (NAME
+    of NAME_0000.rad). Exits on failure."""
     os.makedirs(out, exist_ok=True)
-    r = subprocess.run([radx, "run", deck, "--out", out, "--no-plot"], capture_output=True, text=True)
+    r = subprocess.run([radx, "run", deck, "--out", out, "--no-plot", *extra], capture_output=True, text=True)
     if r.returncode != 0:
         sys.exit("radx run %s failed (exit %d):\n%s\n%s" % (deck, r.returncode, r.stdout[-4000:], r.stderr[-4000:]))
     name = os.path.basename(deck)
@@ -290,6 +326,40 @@ def has_column(th, name):
 def read_summary(out, name):
     with open(os.path.join(out, name + "_summary.json")) as f:
         return json.load(f)
+
+
+def engine_card(deck, keyword):
+    """The numbers of the first data line after `keyword` (e.g. "/DT/INTER/CST") in the engine deck beside the
+    starter deck (NAME_0001.rad, free format), or None when the card is absent."""
+    path = deck[:-len("_0000.rad")] + "_0001.rad" if deck.endswith("_0000.rad") else deck
+    lines = [ln.rstrip("\n") for ln in open(path, encoding="utf-8")]
+    for k, ln in enumerate(lines):
+        if ln.strip().upper() == keyword.upper():
+            for data in lines[k + 1:]:
+                if data.startswith("#") or data.startswith("$") or not data.strip():
+                    continue
+                return [float(x.replace("D", "E").replace("d", "e")) for x in data.replace(",", " ").split()]
+    return None
+
+
+def read_listing(out, name):
+    """The engine listing NAME_0001.out as text (for its warnings and summary rows)."""
+    with open(os.path.join(out, name + "_0001.out"), encoding="utf-8", errors="replace") as f:
+        return f.read()
+
+
+def listing_rows(text):
+    """The cycle lines of an engine listing: list of dict(cycle, time, dt, added_mass) (docs: the columns
+    CYCLE, TIME, TIME-STEP, ..., MASS ADDED; the last column is the mass added so far)."""
+    rows = []
+    for ln in text.splitlines():
+        f = ln.split()
+        if len(f) >= 12 and f[0].isdigit() and any(x.endswith("%") for x in f):
+            try:
+                rows.append(dict(cycle=int(f[0]), time=float(f[1]), dt=float(f[2]), added_mass=float(f[-1])))
+            except ValueError:
+                pass
+    return rows
 
 
 def read_states(out, name):

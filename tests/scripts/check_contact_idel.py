@@ -1,0 +1,104 @@
+"""Idel (type7-lagdt.md 4.7): the segment of a deleted element stops acting with Idel = 1 or 2, keeps acting with 0.
+
+usage: /usr/bin/python3 check_contact_idel.py --radx RADX
+           --decks decks/verification/idel/IDEL0_0000.rad decks/verification/idel/IDEL1_0000.rad
+                   decks/verification/idel/IDEL2_0000.rad --out DIR
+
+Each deck: the main surface is one Johnson-Cook shell with EPS_p_max failure, lying at z = 0 with all its nodes
+fixed in Z; it is pulled in its plane until it fails and is deleted (elements.md 6.4), staying flat. A stiff
+cube (mass M) then comes down at v0 on it, its lower-face nodes the secondary nodes. Everything is read from the
+deck; Idel decides what is expected:
+
+  Idel 0      the deleted element's segment keeps acting: a flat plane of Z-fixed nodes, so the cube is the
+              one-degree-of-freedom body of check_contact_common.rigid_impact (as in node_on_segment);
+  Idel 1, 2   the segment went with its element: the cube passes where the element was.
+
+Tolerances (what they mean):
+  * the element is deleted before the cube reaches the gap: the patch part's ERODED (time history) reaches the
+    patch's mass rho t A (relative 1e-9: it is that mass, summed) at a time before the lower face enters the
+    gap, so the contact only ever meets a deleted element;
+  * Idel 0: largest penetration and rebound speed within 1 % of the one-DOF values (as in
+    check_contact_node_on_segment);
+  * Idel 1, 2: the interface's FNX, FNY, FNZ exactly 0 at every row, the cube keeps -v0 to 1e-9 (round-off; a
+    single cycle of contact force would change it by more than 1e-4) and its lower face ends below z = 0;
+  * energy error within 1 % (verification.md C).
+"""
+import argparse
+import os
+
+import numpy as np
+
+import check_contact_common as cc
+
+
+def one_deck(radx, deck, out, checks):
+    m = cc.Model(deck)
+    (it,) = m.interfaces.values()
+    assert it["Istf"] == 1 and it["Igap"] == 0
+    K, g, vis_s, idel = it["Stfac"], it["Gapmin"], it["VISs"], it["Idel"]
+    secondary = m.groups[it["grnd"]]
+    (vel, body_group), = m.inivel
+    body = m.groups[body_group]
+    M = sum(m.masses[n] for n in body)
+    masses = [m.masses[n] for n in secondary]
+    v0 = -vel[2]
+    (patch_part,) = {pid for pid, _, _ in m.shells.values()}
+    patch_nodes = sorted({n for _, ns, _ in m.shells.values() for n in ns})
+    patch_mass = sum(m.masses[n] for n in patch_nodes)
+    z_plate = m.nodes[patch_nodes[0]][2]
+    assert all(m.nodes[n][2] == z_plate for n in patch_nodes), "the patch must be flat, normal along Z"
+    z0 = np.array([m.nodes[n][2] for n in secondary])
+    p_start = g - (z0.min() - z_plate)
+    t_in = -p_start / v0
+    print("%s: Idel %d, M = %g, %d pairs, K = %g, g = %g, v0 = %g; the cube enters the gap at %.6g s"
+          % (os.path.basename(deck), idel, M, len(secondary), K, g, v0, t_in))
+
+    name = cc.run_radx(radx, deck, out)
+    th = cc.read_th(out, name)
+    iid = next(iter(m.interfaces))
+    t, _ = cc.th_column(th, "%d:FNZ" % iid)
+    fn = np.array([cc.th_column(th, "%d:FN%s" % (iid, a))[1] for a in "XYZ"])
+    pen = np.array([g - (z0[k] + cc.th_column(th, "%d:DZ" % n)[1] - z_plate) for k, n in enumerate(secondary)])
+    pen = pen.mean(axis=0)
+    _, eroded = cc.th_column(th, "%d:ERODED" % patch_part)
+    gone = np.nonzero(np.abs(eroded - patch_mass) <= 1e-9 * patch_mass)[0]
+    t_del = t[gone[0]] if len(gone) else np.inf
+    checks.check(t_del < t_in, "the patch element is deleted (ERODED = its mass %.4g) at %.6g s, before the cube "
+                 "enters the gap at %.6g s" % (patch_mass, t_del, t_in))
+    part = next(pid for pid in m.parts if any(b[0] == pid for b in m.bricks.values()))
+    vz = cc.th_column(th, "%d:ZMOM" % part)[1] / cc.th_column(th, "%d:MASS" % part)[1]
+    if idel == 0:
+        exp = cc.rigid_impact(M, masses, K, g, vis_s, p_start, -v0)
+        checks.check(np.any(fn[2] != 0), "the deleted element's segment pushes the cube")
+        checks.close(pen.max(), exp["p_max"], 0.01, "largest penetration (mm)")
+        checks.check(pen[-1] < 0, "the cube left the gap before the end")
+        checks.close(vz[-1], exp["v_rebound"], 0.01, "rebound speed (mm/s)")
+    else:
+        checks.check(np.all(fn == 0), "no contact force at any row: largest |FN| %.3g N" % np.abs(fn).max())
+        dev = np.max(np.abs(vz + v0)) / v0
+        checks.check(dev <= 1e-9, "the cube keeps -v0 to %.3g (allowed 1e-9)" % dev)
+        checks.check(pen[-1] > g, "the cube passed where the element was: lower face %.4g mm below it"
+                     % (pen[-1] - g))
+    s = cc.read_summary(out, name)
+    err = s["energy"]["error_percent"]
+    checks.check(abs(err) <= 1.0, "energy error %.3g %% (allowed 1 %%)" % err)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--radx", required=True)
+    ap.add_argument("--decks", nargs="+", required=True)
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args()
+    cc.self_test()
+    all_checks = []
+    for deck in a.decks:
+        label = os.path.basename(deck).replace("_0000.rad", "")
+        c = cc.Checks(label)
+        one_deck(a.radx, deck, os.path.join(a.out, label), c)
+        all_checks.append(c)
+    cc.finish(all_checks)
+
+
+if __name__ == "__main__":
+    main()
