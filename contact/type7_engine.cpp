@@ -31,6 +31,9 @@
 //   remaining gap (g - p)/g falls below 1e-6 cannot be held by the penalty: it is deactivated with a warning
 //   naming the node and the interface. IBC: at the node's first impact, its fixed X/Y/Z translations selected
 //   by IBCX/Y/Z are released.
+// Initial penetrations at Tstart > 0 (4.6): on the interface's first active cycle the nodes closer than the
+// gap get the Inacti treatment from the current coordinates (1: the node, 2: the segment leave; 3: the node
+// is moved out to the gap; 5, 6: reduced gap), reported once; at t = 0 the starter did it.
 // Energies: the work of each force kind over each step, W += 1/2 (F^{n-1} + F^n) . v_r^{n-1/2} dt1 (the
 // trapezoidal rule the engine uses for element and load work, consistent with its full-step kinetic
 // energy): elastic = -W_elastic (stored, returned as the pair opens), damping and friction = -W
@@ -78,6 +81,7 @@ struct InterfaceState {
   std::vector<PairRecord> pairs;
   InterfaceResult result;
   double w_elastic = 0, w_damping = 0, w_friction = 0;
+  bool started = false;  // the first cycle inside [Tstart, Tstop) has been seen
 };
 
 Vec3 node_x(const ContactNodes& n, std::int32_t i) {
@@ -190,13 +194,17 @@ struct Type7Contact::Impl {
       st.reduction.assign(ns, 0.0);
       st.f_t.assign(ns, Vec3{});
       st.hit.assign(ns, 0);
-      for (const auto s : in.inactive_segments) st.segment_off[static_cast<std::size_t>(s)] = 1;
-      for (const auto node : in.inactive_nodes) {
+      // The starter's initial-penetration treatment holds for an interface active from t = 0; with Tstart > 0
+      // the engine treats the penetrations it finds at Tstart instead (start_penetrations).
+      const bool from_start = !(in.t_start > 0);
+      for (const auto s : in.inactive_segments)
+        if (from_start) st.segment_off[static_cast<std::size_t>(s)] = 1;
+      for (const auto node : from_start ? in.inactive_nodes : std::vector<std::int32_t>{}) {
         const auto it = std::lower_bound(in.secondary_nodes.begin(), in.secondary_nodes.end(), node);
         if (it != in.secondary_nodes.end() && *it == node)
           st.node_off[static_cast<std::size_t>(it - in.secondary_nodes.begin())] = 1;
       }
-      for (std::size_t k = 0; k < in.penetrating_nodes.size(); ++k) {
+      for (std::size_t k = 0; from_start && k < in.penetrating_nodes.size(); ++k) {
         const auto it =
             std::lower_bound(in.secondary_nodes.begin(), in.secondary_nodes.end(), in.penetrating_nodes[k]);
         if (it != in.secondary_nodes.end() && *it == in.penetrating_nodes[k])
@@ -283,6 +291,84 @@ struct Type7Contact::Impl {
                        " " + why);
   }
 
+  struct Closest {
+    std::int32_t segment = -1;
+    double d = kInf;
+    std::array<double, 4> h{};
+    std::array<Vec3, 4> x{};
+  };
+  // The closest of the candidate segments cand[c .. end) of one node at xs (removed segments skipped).
+  static Closest closest_segment(const InterfaceState& st, const std::vector<Candidate>& cand, std::size_t c,
+                                 std::size_t end, const Vec3& xs, const ContactNodes& nodes) {
+    Closest best;
+    for (std::size_t q = c; q < end; ++q) {
+      const auto s = static_cast<std::size_t>(cand[q].segment);
+      if (st.segment_off[s]) continue;
+      std::array<Vec3, 4> x{};
+      for (std::size_t j = 0; j < 4; ++j) x[j] = node_x(nodes, st.segments[s][j]);
+      std::array<double, 4> h{};
+      const double d = closest_point_segment(xs, x, st.segments[s][2] == st.segments[s][3], h);
+      if (d < best.d) best = Closest{cand[q].segment, d, h, x};
+    }
+    return best;
+  }
+
+  // type7-lagdt.md 4.6 at Tstart > 0 (the starter treated t = 0): nodes already closer than the gap when
+  // the interface starts get the Inacti treatment then, from the current coordinates.
+  void start_penetrations(InterfaceState& st, const ContactNodes& nodes) {
+    const auto& in = *st.in;
+    st.search->update(Coordinates{nodes.x, nodes.y, nodes.z}, true);
+    const auto& cand = st.search->candidates();
+    std::int64_t count = 0;
+    double worst = 0;
+    std::size_t c = 0;
+    while (c < cand.size()) {
+      const std::int32_t k = cand[c].node;
+      std::size_t end = c;
+      while (end < cand.size() && cand[end].node == k) ++end;
+      const auto ks = static_cast<std::size_t>(k);
+      const std::int32_t node = in.secondary_nodes[ks];
+      const Vec3 xs = node_x(nodes, node);
+      const Closest cl = st.node_off[ks] ? Closest{} : closest_segment(st, cand, c, end, xs, nodes);
+      c = end;
+      if (cl.segment < 0) continue;
+      const double g = pair_gap(in, in.gap_node[ks], in.gap_segment[static_cast<std::size_t>(cl.segment)]);
+      const double p0 = g - cl.d;
+      if (!(p0 > 0)) continue;
+      ++count;
+      worst = std::max(worst, p0);
+      switch (in.inacti) {
+        case 1: st.node_off[ks] = 1; break;
+        case 2: st.segment_off[static_cast<std::size_t>(cl.segment)] = 1; break;
+        case 3:
+          if (cl.d > 0) {  // move the node out to the gap along the line from its closest point
+            Vec3 q{};
+            for (std::size_t j = 0; j < 4; ++j)
+              for (std::size_t d = 0; d < 3; ++d) q[d] += cl.h[j] * cl.x[j][d];
+            const auto n = static_cast<std::size_t>(node);
+            const double f = g / cl.d;
+            nodes.x[n] = q[0] + f * (xs[0] - q[0]);
+            nodes.y[n] = q[1] + f * (xs[1] - q[1]);
+            nodes.z[n] = q[2] + f * (xs[2] - q[2]);
+          }
+          break;
+        case 5: st.reduction[ks] = p0; break;
+        case 6: st.reduction[ks] = p0 + 0.05 * (g - p0); break;
+        default: break;
+      }
+    }
+    for (std::size_t g = 0; g < st.segment_off.size(); ++g)
+      if (st.segment_off[g]) st.search->remove_segment(static_cast<std::int32_t>(g));
+    for (std::size_t k = 0; k < st.node_off.size(); ++k)
+      if (st.node_off[k]) st.search->remove_node(static_cast<std::int32_t>(k));
+    if (count > 0)
+      messages.push_back("interface " + std::to_string(in.id) + " starts (Tstart " +
+                         std::to_string(in.t_start) + ") with " + std::to_string(count) +
+                         " secondary node(s) closer than the gap, largest " + "penetration " +
+                         std::to_string(worst) + ": Inacti " + std::to_string(in.inacti) +
+                         (in.inacti == 0 ? " (no action: the penalty pushes them out)" : " applied"));
+  }
+
   ContactStep interface_cycle(InterfaceState& st, double t, double dt1, const ContactNodes& nodes) {
     ContactStep vote;
     const auto& in = *st.in;
@@ -291,6 +377,10 @@ struct Type7Contact::Impl {
     st.result.normal_force = {0, 0, 0};
     st.result.tangential_force = {0, 0, 0};
     if (t < in.t_start || t >= in.t_stop) return vote;
+    if (!st.started) {
+      st.started = true;
+      if (in.t_start > 0) start_penetrations(st, nodes);
+    }
     st.search->update(Coordinates{nodes.x, nodes.y, nodes.z});
     const auto& cand = st.search->candidates();
     const double scale = controls.dt_scale;
@@ -308,24 +398,11 @@ struct Type7Contact::Impl {
       }
       // The closest candidate segment.
       const Vec3 xs = node_x(nodes, node);
-      double best_d = kInf;
-      std::int32_t best = -1;
-      std::array<double, 4> best_h{};
-      std::array<Vec3, 4> best_x{};
-      for (std::size_t q = c; q < end; ++q) {
-        const auto s = static_cast<std::size_t>(cand[q].segment);
-        if (st.segment_off[s]) continue;
-        std::array<Vec3, 4> x{};
-        for (std::size_t j = 0; j < 4; ++j) x[j] = node_x(nodes, st.segments[s][j]);
-        std::array<double, 4> h{};
-        const double d = closest_point_segment(xs, x, st.segments[s][2] == st.segments[s][3], h);
-        if (d < best_d) {
-          best_d = d;
-          best = cand[q].segment;
-          best_h = h;
-          best_x = x;
-        }
-      }
+      const Closest cl = closest_segment(st, cand, c, end, xs, nodes);
+      const double best_d = cl.d;
+      const std::int32_t best = cl.segment;
+      const std::array<double, 4>& best_h = cl.h;
+      const std::array<Vec3, 4>& best_x = cl.x;
       c = end;
       if (best < 0) continue;
       const auto sb = static_cast<std::size_t>(best);

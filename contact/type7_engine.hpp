@@ -19,7 +19,7 @@ namespace radx::contact {
 
 // Views of the engine's node state, dense node indices, valid during the call.
 struct ContactNodes {
-  std::span<const double> x, y, z;     // x^n
+  std::span<double> x, y, z;           // x^n (Inacti 3 at Tstart moves penetrating nodes out)
   std::span<const double> vx, vy, vz;  // v^{n-1/2}
   std::span<double> mass;              // lumped mass (grows with /DT/INTER/CST mass scaling)
   std::span<double> added_mass;        // mass added so far by /DT/.../CST
