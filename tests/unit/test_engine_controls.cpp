@@ -17,17 +17,6 @@ using radx::test::Line;
 
 namespace {
 
-// The model of a starter deck given as text (errors fail the test).
-radx::model::Model model_of(const std::string& text) {
-  radx::test::TempDir dir;
-  radx::Diagnostics diags;
-  const auto deck = radx::read_starter_deck(dir.write("m_0000.rad", text), diags);
-  auto m = radx::build_model(deck, diags);
-  for (const auto& d : diags.items()) INFO(radx::Diagnostics::format(d));
-  REQUIRE_FALSE(diags.has_errors());
-  return m;
-}
-
 // One steel cube of side a (LAW1), at rest, nothing else.
 radx::model::Model cube(double a, double vz = 0.0) {
   std::string s = radx::test::begin_block(2026, "Mg mm s") + "/NODE\n";
@@ -47,7 +36,7 @@ radx::model::Model cube(double a, double vz = 0.0) {
     s += "/GRNOD/PART/1\nall\n" + Line().put(1, 1, 10).str() + "\n/INIVEL/TRA/1\nv\n" +
          Line().put(0.0, 1, 20).put(0.0, 21, 40).put(vz, 41, 60).put(1, 61, 70).str() + "\n";
   s += "/END\n";
-  return model_of(s);
+  return radx::test::model_of_deck(s);
 }
 
 // /IMPVEL/1 moving node group `group` along `dir` at the constant speed `v` (with /FUNCT/1 = 1), then /END.
@@ -309,7 +298,7 @@ TEST_CASE("/DT/BRICK/CST switches the brick to small strain: its step stays cons
     s += "/BCS/" + std::to_string(k + 1) + "\nsym\n" +
          Line().put(codes[k], 1, 10).put(0, 11, 20).put(k + 1, 21, 30).str() + "\n";
   s += constant_impvel_and_end("Z", 4, -V);
-  const auto m = model_of(s);
+  const auto m = radx::test::model_of_deck(s);
 
   radx::model::RunControls rc;
   rc.t_stop = 0.4 * a / V;
@@ -367,7 +356,7 @@ TEST_CASE("/DT/SHELL/CST switches the shell to small strain: its step stays exac
   s += "/BCS/1\nclamp\n" + Line().put("   111 111", 1, 10).put(0, 11, 20).put(1, 21, 30).str() + "\n";
   s += "/BCS/2\nin plane\n" + Line().put("   011 111", 1, 10).put(0, 11, 20).put(2, 21, 30).str() + "\n";
   s += constant_impvel_and_end("X", 2, -V);
-  const auto m = model_of(s);
+  const auto m = radx::test::model_of_deck(s);
 
   radx::model::RunControls rc;
   rc.t_stop = 0.4 * a / V;

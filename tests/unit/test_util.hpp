@@ -2,6 +2,11 @@
 // places values at exact columns so tests never hand-count spaces.
 #pragma once
 
+#include <catch2/catch.hpp>
+
+#include "parser/deck.hpp"
+#include "parser/model_builder.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -81,6 +86,17 @@ inline std::string begin_block(int version, const char* units = "Mg mm s") {
      << Line().put(m, 1, 20).put(l, 21, 40).put(t, 41, 60).str() << '\n'
      << Line().put(m, 1, 20).put(l, 21, 40).put(t, 41, 60).str() << '\n';
   return os.str();
+}
+
+// The model of a starter deck given as text, read and built as the starter does (errors fail the test).
+inline radx::model::Model model_of_deck(const std::string& text) {
+  TempDir dir;
+  radx::Diagnostics diags;
+  const auto deck = radx::read_starter_deck(dir.write("m_0000.rad", text), diags);
+  auto m = radx::build_model(deck, diags);
+  for (const auto& d : diags.items()) INFO(radx::Diagnostics::format(d));
+  REQUIRE_FALSE(diags.has_errors());
+  return m;
 }
 
 }  // namespace radx::test
