@@ -221,7 +221,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   if (const auto* c = engine.contact())
     for (const auto& r : c->results())
       s.interfaces.push_back(io::InterfaceSummary{r.id, r.active_pairs, r.max_penetration,
-                                                  r.switched_pairs_max, r.switched_pairs_total});
+                                                  r.switched_pairs_max, r.switched_pairs_total, r.added_mass,
+                                                  r.deactivated_nodes});
   s.states = outputs->states_written();
   s.series = outputs->series_path();
   if (!model.time_histories.empty() || controls.th_dt < 1e29)

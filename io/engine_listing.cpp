@@ -243,7 +243,8 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
     for (const auto& in : s.interfaces) {
       os << "  interface " << in.id << ": active pairs " << in.active_pairs << ", max penetration "
          << sci(in.max_penetration) << ", switched pairs max " << in.switched_pairs_max << " total "
-         << in.switched_pairs_total << '\n';
+         << in.switched_pairs_total << ", added mass " << sci(in.added_mass) << ", nodes removed "
+         << in.removed_nodes << '\n';
     }
   }
   if (s.states > 0 || !s.time_history.empty()) {

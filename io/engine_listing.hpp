@@ -86,6 +86,8 @@ struct InterfaceSummary {
   double max_penetration = 0;             // largest penetration seen during the run
   std::int64_t switched_pairs_max = 0;    // LAGDT: most pairs switched to Lagrange in one cycle
   std::int64_t switched_pairs_total = 0;  // LAGDT: pair-cycles handled by Lagrange multipliers
+  double added_mass = 0;                  // by /DT/INTER/CST on this interface's nodes
+  std::int64_t removed_nodes = 0;         // deactivated (surface reached), Idel or /DT/INTER/DEL
 };
 
 enum class RunStatus : std::uint8_t { Normal, Error };

@@ -174,7 +174,8 @@ std::string summary_json(const RunSummary& s) {
     w.raw("{\"id\": " + std::to_string(in.id) + ", \"active_pairs\": " + std::to_string(in.active_pairs) +
           ", \"max_penetration\": " + json_number(in.max_penetration) +
           ", \"switched_pairs_max\": " + std::to_string(in.switched_pairs_max) +
-          ", \"switched_pairs_total\": " + std::to_string(in.switched_pairs_total) + "}");
+          ", \"switched_pairs_total\": " + std::to_string(in.switched_pairs_total) + ", \"added_mass\": " +
+          json_number(in.added_mass) + ", \"removed_nodes\": " + std::to_string(in.removed_nodes) + "}");
   }
   w.close(']');
   w.close('}');

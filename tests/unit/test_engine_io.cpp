@@ -577,7 +577,7 @@ radx::io::RunSummary sample_summary() {
   s.energy.contact_lagrange = 0.4;
   s.energy.external_work = 1.0;
   s.energy.initial_total = 12.0;
-  s.interfaces = {{7, 12, 1.5e-3, 4, 40}, {9, 0, 0, 0, 0}};
+  s.interfaces = {{7, 12, 1.5e-3, 4, 40, 2.5e-6, 3}, {9, 0, 0, 0, 0, 0, 0}};
   return s;
 }
 
@@ -655,7 +655,7 @@ need(abs(e["error_percent"] - 100 * (15.25 / 13.0 - 1)) <= 1e-12, "error_percent
 i = d["interfaces"]
 need(len(i) == 2, "interfaces")
 need(i[0] == {"id": 7, "active_pairs": 12, "max_penetration": 1.5e-3, "switched_pairs_max": 4,
-              "switched_pairs_total": 40}, "interface 7 " + repr(i[0]))
+              "switched_pairs_total": 40, "added_mass": 2.5e-6, "removed_nodes": 3}, "interface 7 " + repr(i[0]))
 need(i[1]["id"] == 9 and i[1]["max_penetration"] == 0, "interface 9")
 )PY");
   const std::string cmd = "/usr/bin/python3 " + script + " " + path;
