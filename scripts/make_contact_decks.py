@@ -23,13 +23,13 @@ Cases (units):
 
 (The thread-determinism check, tests/scripts/check_contact_threads.py, runs tube_crush and the default deck.)
 
-The shared fixed-column pieces (header, nodes, elements, materials, groups, /BCS, /INIVEL, the engine deck)
-come from scripts/make_verification_decks.py; the one-degree-of-freedom impact model used for the expected
-values in the READMEs is tests/scripts/check_contact_common.py, the same code the checks use.
+The shared fixed-column pieces (header, nodes, elements, /PROP/SHELL, materials, groups, /BCS, /INIVEL,
+/INTER/TYPE7, the engine deck) and the writing of the case folders come from scripts/make_verification_decks.py;
+the one-degree-of-freedom impact model used for the expected values in the READMEs is
+tests/scripts/check_contact_common.py, the same code the checks use.
 
 Plain python3, standard library only.
 """
-import argparse
 import math
 import os
 import sys
@@ -41,7 +41,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "tests", "scripts"))
 
 import check_contact_common as cc  # noqa: E402  (one-DOF impact model and the energy equation)
 import make_verification_decks as v  # noqa: E402  (shared deck pieces)
-from radx_deck_format import I, R, S, RULER, blank, ibc_code, line, names, write  # noqa: E402
+from radx_deck_format import I, R, S, RULER, blank, line, names  # noqa: E402
 
 VERSION = v.VERSION
 CASES = ("node_on_segment", "block_sliding", "tube_crush", "initial_penetration", "tstart_tstop", "ibc", "idel",
@@ -73,54 +73,29 @@ def engine(run, t_stop, anim_dt, print_every, comments, th_dt):
     return E
 
 
-def type7(iid, title, grnod, surf, stiffness, gapmin, inacti, viss, fric=0.0, iform=1, visf=1.0, istf=1, idel=0,
-          tstart=0.0, tstop=0.0, ibc=(0, 0, 0)):
-    """/INTER/TYPE7, 2026 layout (deck-format.md): Igap 0 (constant gap = Gapmin), Ifric 0, no filter.
-    istf 1: `stiffness` is the pair stiffness K (Stfac); otherwise it is the scale factor Stfac. idel: Idel;
-    tstart, tstop: the interface acts for Tstart <= t < Tstop (Tstop 0: never stops); ibc: (IBCX, IBCY, IBCZ)."""
-    return [
-        "/INTER/TYPE7/%d" % iid, title,
-        names(("grnd_IDs", 10), ("surf_IDm", 10), ("Istf", 10), ("Ithe", 10), ("Igap", 10), ("", 10),
-              ("Ibag", 10), ("Idel", 10), ("Icurv", 10), ("Iadm", 10)),
-        line(I(grnod), I(surf), I(istf), I(0), I(0), blank(10), I(0), I(idel), I(0), I(0)),
-        names(("Fscalegap", 20), ("Gap_max", 20), ("Fpenmax", 20), ("", 20), ("Itied", 10), ("Ists", 10)),
-        line(R(0.0), R(0.0), R(0.0), blank(20), I(0), I(0)),
-        names(("Stmin", 20), ("Stmax", 20), ("%mesh_size", 20), ("dtmin", 20), ("Irem_gap", 10),
-              ("Irem_i2", 10)),
-        line(R(0.0), R("1E30" if istf >= 2 else 0.0), R(0.0), R(0.0), I(0), I(0)),
-        names(("Stfac", 20), ("Fric", 20), ("Gapmin", 20), ("Tstart", 20), ("Tstop", 20)),
-        line(R(stiffness), R(fric), R(gapmin), R(tstart), R(tstop)),
-        names(("IBC", 10), ("", 20), ("Inacti", 10), ("VISs", 20), ("VISf", 20), ("Bumult", 20)),
-        line(ibc_code(*ibc), blank(20), I(inacti), R(viss), R(visf), R(0.0)),
-        names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10), ("sens_ID", 10), ("fct_IDF", 10),
-              ("AscaleF", 20), ("fric_ID", 10)),
-        line(I(0), I(0), R(0.0), I(iform), I(0), I(0), R(0.0), I(0))]
-
-
-def prop_shell(pid, title, thick, n_ip):
-    """/PROP/SHELL with every flag 0 (Ishell 1, Ismstr 2, hourglass defaults), n_ip points through the
-    thickness (0 with LAW1: resultant elasticity), Ithick 1 and Iplas 1."""
-    return ["/PROP/SHELL/%d" % pid, title,
-            names(("Ishell", 10), ("Ismstr", 10), ("Ish3n", 10), ("Idrill", 10), ("Ipinch", 10), ("", 10),
-                  ("P_Thick_Fail", 20)),
-            line(I(0), I(0), I(0), I(0), I(0), blank(10), R(0.0)),
-            names(("Hm", 20), ("Hf", 20), ("Hr", 20), ("Dm", 20), ("Dn", 20)),
-            line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0)),
-            names(("N", 10), ("", 10), ("Thick", 20), ("Ashear", 20), ("", 10), ("Ithick", 10), ("Iplas", 10),
-                  ("Ipos", 10)),
-            line(I(n_ip), blank(10), R(thick), R(0.0), blank(10), I(1), I(1), I(0))]
-
-
 def surf_part(sid, title, parts):
     return ["/SURF/PART/%d" % sid, title, names(("part_ID1", 10)), line(*[I(p) for p in parts])]
 
 
-def grav(gid, title, gz):
-    """Constant gravity gz along Z (signed) on every node."""
+def grav(gid, title, gz, group=0):
+    """Constant gravity gz along Z (signed) on the nodes of group (0: every node)."""
     return ["/GRAV/%d" % gid, title,
             names(("funct_IDT", 10), ("DIR", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10), ("", 10),
                   ("Ascale_x", 20), ("Fscale_y", 20)),
-            line(I(0), S("Z", 10), I(0), I(0), I(0), blank(10), R(0.0), R(gz))]
+            line(I(0), S("Z", 10), I(0), I(0), I(group), blank(10), R(0.0), R(gz))]
+
+
+def impvel(iid, title, funct, direction, group, scale):
+    return ["/IMPVEL/%d" % iid, title,
+            names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+                  ("frame_ID", 10), ("Icoor", 10)),
+            line(I(funct), S(direction, 10), I(0), I(0), I(group), I(0), I(0)),
+            names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
+            line(R(0.0), R(scale), R(0.0), R(0.0))]
+
+
+def funct(fid, title, points):
+    return ["/FUNCT/%d" % fid, title, names(("X", 20), ("Y", 20))] + [line(R(x), R(y)) for x, y in points]
 
 
 def th_node(tid, title, nodes):
@@ -183,7 +158,13 @@ def shell_node_masses(nodes, shells, rho, t):
     return m
 
 
-def finish(D):
+def th_and_end(D, node_title, nodes, part_title, parts, inter_title="Contact"):
+    """End the starter deck D: /TH/NODE/1 of the (node id, name) pairs, /TH/INTER/2 of interface 1,
+    /TH/PART/3 of the parts, then /END."""
+    D.append(RULER)
+    D += th_node(1, node_title, nodes)
+    D += th_ids("INTER", 2, inter_title, [1])
+    D += th_ids("PART", 3, part_title, parts)
     D.append(RULER)
     D.append("/END")
     return D
@@ -196,8 +177,35 @@ NOS = dict(A=0.1, N=(1, 1, 2), RHO=9000.0, E=210e9, NU=0.3, K=2.25e6, GAP=1e-3, 
            PLATE_T=0.005, T_STOP=0.005, TH_DT=1e-6, ANIM_DT=2.5e-4, VISS=(1e-10, 0.05))
 
 
-def node_on_segment_model(viss):
-    p = NOS
+def plate_and_cube_cards(ps, cb, bottom, p, plate_comment, cube_title):
+    """The cards of a fixed plate (part 1: the shells ps, its only main segments) and a stiff cube (part 2: the
+    bricks cb, material p["RHO"], p["E"], p["NU"]) that follow their nodes, up to the plate's /BCS: elements,
+    parts, properties, materials, /GRNOD 1 (plate), 2 (cube), 3 (the cube's lower face `bottom`, the secondary
+    nodes) and /SURF/PART/1 (the plate)."""
+    D = [RULER]
+    D += v.shell_block(1, ps, plate_comment)
+    D += v.brick_block(2, cb, "Cube: %d bricks" % len(cb))
+    D.append(RULER)
+    D += v.part_card(1, "Main plate (fixed)", 1, 1)
+    D += v.part_card(2, "Cube", 2, 2)
+    D += v.prop_shell(1, "Plate shell", p["PLATE_T"], 0)
+    D += v.prop_solid(2, "Cube solid")
+    D += v.mat_law1(1, "Plate steel (does not move)", 7850.0, 210e9, 0.3)
+    D += v.mat_law1(2, cube_title, p["RHO"], p["E"], p["NU"])
+    D.append(RULER)
+    D += v.grnod_part(1, "Main plate nodes", [1])
+    D += v.grnod_part(2, "Cube nodes", [2])
+    D += v.grnod_node(3, "Cube lower-face nodes (secondary nodes)", bottom)
+    D += surf_part(1, "Main plate segment (normal +Z)", [1])
+    D += v.bcs(1, "Fixed main plate", "111", "111", 1)
+    return D
+
+
+def falling_cube_on_plate(run, title, comments, p):
+    """node_on_segment's model (a stiff cube of 1 x 1 x 2 bricks falling flat at V0 on one fixed shell
+    segment, its lower-face nodes the secondary nodes /GRNOD/NODE/3, the plate /SURF/PART/1) up to its TYPE7
+    card; p holds the NOS-like parameters. Returns (deck lines, cube nodal masses, lower-face node ids, cube
+    mass, top corner id)."""
     a, n = p["A"], p["N"]
     z0 = p["GAP"] + p["CLEAR"]
     cn, cb, cid = cube(101, 101, a, n, (-a / 2, -a / 2, z0))
@@ -207,46 +215,37 @@ def node_on_segment_model(viss):
     bottom = [cid(i, j, 0) for j in range(n[1] + 1) for i in range(n[0] + 1)]
     masses = brick_node_masses(cn, cb, p["RHO"])
     M = sum(masses.values())
-    damped = viss >= 0.01
-    run = "NODE_ON_SEGMENT_VISS" if damped else "NODE_ON_SEGMENT"
-    D = header(run, "Stiff cube falling flat on one fixed TYPE7 main segment (VISs = %g)" % viss, ("kg", "m", "s"),
-               ["Verification case A.2: secondary nodes against one TYPE7 main segment. Units kg, m, s (N, J).",
-                "A %g m steel-like cube of %dx%dx%d bricks moves at %g m/s along -Z; its %d lower-face nodes"
-                % (a, *n, p["V0"], len(bottom)),
-                "(the secondary nodes) start %g m above one fixed shell segment (the main surface) and hit it"
-                % z0,
-                "together: the cube is a rigid body on %d identical hyperbolic springs (Istf 1, K = %g N/m,"
-                % (len(bottom), p["K"]),
-                "constant gap %g m). VISs = %g%s. No gravity, no friction." % (
-                    p["GAP"], viss, "" if damped else " (a 0 would mean the default 0.05)")])
+    D = header(run, title, ("kg", "m", "s"), comments)
     D += v.node_block(pn, "Main plate nodes 1..4 (z = 0), all fixed")
     D += v.node_block(cn, "Cube nodes %d..%d, lower face at z = %g" % (cn[0][0], cn[-1][0], z0))
-    D.append(RULER)
-    D += v.shell_block(1, ps, "Main plate: one %g x %g m shell (its only segment)" % (p["PLATE"], p["PLATE"]))
-    D += v.brick_block(2, cb, "Cube: %d bricks" % len(cb))
-    D.append(RULER)
-    D += v.part_card(1, "Main plate (fixed)", 1, 1)
-    D += v.part_card(2, "Cube", 2, 2)
-    D += prop_shell(1, "Plate shell", p["PLATE_T"], 0)
-    D += v.prop_solid(2, "Cube solid")
-    D += v.mat_law1(1, "Plate steel (does not move)", 7850.0, 210e9, 0.3)
-    D += v.mat_law1(2, "Stiff cube (rho %g: mass %g kg)" % (p["RHO"], M), p["RHO"], p["E"], p["NU"])
-    D.append(RULER)
-    D += v.grnod_part(1, "Main plate nodes", [1])
-    D += v.grnod_part(2, "Cube nodes", [2])
-    D += v.grnod_node(3, "Cube lower-face nodes (secondary nodes)", bottom)
-    D += surf_part(1, "Main plate segment (normal +Z)", [1])
-    D += v.bcs(1, "Fixed main plate", "111", "111", 1)
+    D += plate_and_cube_cards(ps, cb, bottom, p, "Main plate: one %g x %g m shell (its only segment)"
+                              % (p["PLATE"], p["PLATE"]), "Stiff cube (rho %g: mass %g kg)" % (p["RHO"], M))
     D += v.inivel(1, "Cube moving towards the plate", (0.0, 0.0, -p["V0"]), 2)
     D.append(RULER)
+    return D, masses, bottom, M, cid(0, 0, n[2])
+
+
+def node_on_segment_model(viss):
+    p = NOS
+    a, n = p["A"], p["N"]
+    z0 = p["GAP"] + p["CLEAR"]
+    nb = (n[0] + 1) * (n[1] + 1)
+    damped = viss >= 0.01
+    run = "NODE_ON_SEGMENT_VISS" if damped else "NODE_ON_SEGMENT"
+    D, masses, bottom, M, top = falling_cube_on_plate(
+        run, "Stiff cube falling flat on one fixed TYPE7 main segment (VISs = %g)" % viss,
+        ["Verification case A.2: secondary nodes against one TYPE7 main segment. Units kg, m, s (N, J).",
+         "A %g m steel-like cube of %dx%dx%d bricks moves at %g m/s along -Z; its %d lower-face nodes"
+         % (a, *n, p["V0"], nb),
+         "(the secondary nodes) start %g m above one fixed shell segment (the main surface) and hit it" % z0,
+         "together: the cube is a rigid body on %d identical hyperbolic springs (Istf 1, K = %g N/m,"
+         % (nb, p["K"]),
+         "constant gap %g m). VISs = %g%s. No gravity, no friction." % (
+             p["GAP"], viss, "" if damped else " (a 0 would mean the default 0.05)")], p)
     D += ["#  Istf 1: Stfac is the pair stiffness K (N/m); Igap 0: the gap is Gapmin; Fric 0; Inacti 0"]
-    D += type7(1, "Cube lower face on the plate", 3, 1, p["K"], p["GAP"], 0, viss)
-    D.append(RULER)
-    D += th_node(1, "Cube lower-face nodes and top centre",
-                 [(b, "lower face %d" % b) for b in bottom] + [(cid(0, 0, n[2]), "top corner")])
-    D += th_ids("INTER", 2, "Contact", [1])
-    D += th_ids("PART", 3, "Cube", [2])
-    finish(D)
+    D += v.type7(1, "Cube lower face on the plate", 3, 1, p["K"], p["GAP"], 0, viss)
+    th_and_end(D, "Cube lower-face nodes and top centre",
+               [(b, "lower face %d" % b) for b in bottom] + [(top, "top corner")], "Cube", [2])
     return run, D, masses, bottom, M
 
 
@@ -367,34 +366,17 @@ def block_sliding_deck(iform):
                 % (p["V0"], p["MU"], iform, "incremental stiffness" if iform == 2 else "viscous")])
     D += v.node_block(pn, "Main plate nodes 1..4 (z = 0), all fixed")
     D += v.node_block(cn, "Cube nodes %d..%d, lower face at z = gap - p0 = %s" % (cn[0][0], cn[-1][0], g(z0, 12)))
-    D.append(RULER)
-    D += v.shell_block(1, ps, "Main plate: one shell, x from %g to %g m" % p["PLATE_X"])
-    D += v.brick_block(2, cb, "Cube: %d bricks" % len(cb))
-    D.append(RULER)
-    D += v.part_card(1, "Main plate (fixed)", 1, 1)
-    D += v.part_card(2, "Cube", 2, 2)
-    D += prop_shell(1, "Plate shell", p["PLATE_T"], 0)
-    D += v.prop_solid(2, "Cube solid")
-    D += v.mat_law1(1, "Plate steel (does not move)", 7850.0, 210e9, 0.3)
-    D += v.mat_law1(2, "Stiff cube (mass %g kg)" % M, rho, p["E"], p["NU"])
-    D.append(RULER)
-    D += v.grnod_part(1, "Main plate nodes", [1])
-    D += v.grnod_part(2, "Cube nodes", [2])
-    D += v.grnod_node(3, "Cube lower-face nodes (secondary nodes)", bottom)
-    D += surf_part(1, "Main plate segment (normal +Z)", [1])
-    D += v.bcs(1, "Fixed main plate", "111", "111", 1)
+    D += plate_and_cube_cards(ps, cb, bottom, p, "Main plate: one shell, x from %g to %g m" % p["PLATE_X"],
+                              "Stiff cube (mass %g kg)" % M)
     D += v.inivel(1, "Cube sliding along +X", (p["V0"], 0.0, 0.0), 2)
     D += grav(1, "Gravity along -Z on every node", -p["G"])
     D.append(RULER)
     D += ["#  Istf 1: Stfac is the pair stiffness K (N/m); Igap 0: the gap is Gapmin; Inacti 0: the initial",
           "#  penetration p0 is the static one, so the penalty holds the cube's weight from the first cycle"]
-    D += type7(1, "Cube lower face on the plate", 3, 1, p["K"], p["GAP"], 0, p["VISS"], fric=p["MU"], iform=iform)
-    D.append(RULER)
-    D += th_node(1, "Cube lower-face centre and top centre",
-                 [(cid(0, 0, 0), "lower face corner"), (cid(0, 0, n[2]), "top corner")])
-    D += th_ids("INTER", 2, "Contact", [1])
-    D += th_ids("PART", 3, "Cube", [2])
-    finish(D)
+    D += v.type7(1, "Cube lower face on the plate", 3, 1, p["K"], p["GAP"], 0, p["VISS"], fric=p["MU"], iform=iform)
+    th_and_end(D, "Cube lower-face centre and top centre",
+               [(cid(0, 0, 0), "lower face corner"), (cid(0, 0, n[2]), "top corner")],
+               "Cube", [2])
     t_stop = p["V0"] / (p["MU"] * p["G"])
     E = engine(run, p["T_STOP"], p["ANIM_DT"], 1000,
                ["Sliding until about %s s, then at rest (Iform 2) or creeping viscously (Iform 1)." % g(t_stop)],
@@ -526,7 +508,7 @@ def tube_crush():
     D.append(RULER)
     D += v.part_card(1, "Tube", 1, 1)
     D += ["#  Ishell 0 (Belytschko-Tsay), 5 points through the thickness, Ithick 1, Iplas 1"]
-    D += prop_shell(1, "Tube shell %g mm" % p["T"], p["T"], 5)
+    D += v.prop_shell(1, "Tube shell %g mm" % p["T"], p["T"], 5)
     D += v.mat_jc(1, "Steel (Johnson-Cook without rate effect)", p["RHO"], p["E"], p["NU"], p["A"], p["B"], p["N"])
     D.append(RULER)
     D += v.grnod_part(1, "All tube nodes (secondary nodes)", [1])
@@ -535,24 +517,14 @@ def tube_crush():
     D += surf_part(1, "Tube shells (main surface)", [1])
     D += v.bcs(1, "Fixed end", "111", "111", 2)
     D += v.bcs(2, "Moving end: guided along Z without rotation", "110", "111", 3)
-    D += ["/IMPVEL/1", "Moving end along -Z at %g mm/s after a %g s ramp" % (p["V"], p["RAMP"]),
-          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                ("frame_ID", 10), ("Icoor", 10)),
-          line(I(1), S("Z", 10), I(0), I(0), I(3), I(0), I(0)),
-          names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
-          line(R(0.0), R(-p["V"]), R(0.0), R(0.0))]
-    D += ["/FUNCT/1", "Ramp to 1 over %g s then constant" % p["RAMP"], names(("X", 20), ("Y", 20))]
-    for x, y in ((0.0, 0.0), (p["RAMP"], 1.0), (1.0, 1.0)):
-        D.append(line(R(x), R(y)))
+    D += impvel(1, "Moving end along -Z at %g mm/s after a %g s ramp" % (p["V"], p["RAMP"]), 1, "Z", 3, -p["V"])
+    D += funct(1, "Ramp to 1 over %g s then constant" % p["RAMP"], [(0.0, 0.0), (p["RAMP"], 1.0), (1.0, 1.0)])
     D.append(RULER)
     D += ["#  Self-contact: secondary = all tube nodes, main = all tube shells (a node never pairs with a",
           "#  segment that contains it). Istf 4: K = min(Km, Ks) = Stfac 0.5 E t; Igap 0, Gapmin %g mm" % p["GAP"]]
-    D += type7(1, "Tube self-contact", 1, 1, 1.0, p["GAP"], 0, 0.05, fric=p["FRIC"], iform=1, istf=4)
-    D.append(RULER)
-    D += th_node(1, "Moving end corner", [(top[0], "moving end corner")])
-    D += th_ids("INTER", 2, "Self-contact", [1])
-    D += th_ids("PART", 3, "Tube", [1])
-    finish(D)
+    D += v.type7(1, "Tube self-contact", 1, 1, 1.0, p["GAP"], 0, 0.05, fric=p["FRIC"], iform=1, istf=4)
+    th_and_end(D, "Moving end corner", [(top[0], "moving end corner")],
+               "Tube", [1], inter_title="Self-contact")
     crush = p["V"] * (p["T_STOP"] - p["RAMP"] / 2)
     E = engine(run, p["T_STOP"], p["ANIM_DT"], 1000,
                ["Crush by %s mm; states every %g s (the moving end travels %g mm between states)."
@@ -630,8 +602,8 @@ def initial_penetration_deck(inacti):
     D += v.part_card(1, "Main plate (fixed)", 1, 1)
     D += v.part_card(2, "Tile A (initially penetrating)", 2, 1)
     D += v.part_card(3, "Tile B (outside the gap)", 2, 1)
-    D += prop_shell(1, "Plate shell", p["PLATE_T"], 0)
-    D += prop_shell(2, "Tile shell", p["T"], 0)
+    D += v.prop_shell(1, "Plate shell", p["PLATE_T"], 0)
+    D += v.prop_shell(2, "Tile shell", p["T"], 0)
     D += v.mat_law1(1, "Steel", p["RHO"], p["E"], p["NU"])
     D.append(RULER)
     D += v.grnod_part(1, "Main plate nodes", [1])
@@ -642,12 +614,9 @@ def initial_penetration_deck(inacti):
     D.append(RULER)
     D += ["#  Istf 1: Stfac is the pair stiffness K (N/mm); Igap 0: the gap is Gapmin; VISs ~ 0 (a 0 would",
           "#  mean the default 0.05)"]
-    D += type7(1, "Tiles on the plate", 2, 1, p["K"], p["GAP"], inacti, p["VISS"])
-    D.append(RULER)
-    D += th_node(1, "Tile centres", [(aid(n // 2, n // 2), "tile A centre"), (bid(n // 2, n // 2), "tile B centre")])
-    D += th_ids("INTER", 2, "Contact", [1])
-    D += th_ids("PART", 3, "Tiles", [2, 3])
-    finish(D)
+    D += v.type7(1, "Tiles on the plate", 2, 1, p["K"], p["GAP"], inacti, p["VISS"])
+    th_and_end(D, "Tile centres", [(aid(n // 2, n // 2), "tile A centre"), (bid(n // 2, n // 2), "tile B centre")],
+               "Tiles", [2, 3])
     E = engine(run, p["T_STOP"], p["ANIM_DT"], 500, ["Approach, impact and rebound of both tiles."], p["TH_DT"])
     masses = shell_node_masses(an, ash, p["RHO"], p["T"])
     return run, D, E, masses
@@ -714,14 +683,6 @@ both would mean that the margin is not applied.
 # Shared pieces of the cases below (Tstart/Tstop, IBC, Idel, /DT/INTER, threads)
 
 
-def grav_group(gid, title, gz, group):
-    """Constant gravity gz along Z (signed) on the nodes of one group."""
-    return ["/GRAV/%d" % gid, title,
-            names(("funct_IDT", 10), ("DIR", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10), ("", 10),
-                  ("Ascale_x", 20), ("Fscale_y", 20)),
-            line(I(0), S("Z", 10), I(0), I(0), I(group), blank(10), R(0.0), R(gz))]
-
-
 def mat_jc_fail(mid, title, rho, e, nu, a, b, n, eps_p_max):
     """/MAT/PLAS_JOHNS (Iflag 0) without rate or temperature, with the EPS_p_max failure of shells
     (elements.md 6.4: the element is deleted about 11 cycles after a point reaches EPS_p_max)."""
@@ -731,62 +692,12 @@ def mat_jc_fail(mid, title, rho, e, nu, a, b, n, eps_p_max):
     return L
 
 
-def impvel(iid, title, funct, direction, group, scale):
-    return ["/IMPVEL/%d" % iid, title,
-            names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                  ("frame_ID", 10), ("Icoor", 10)),
-            line(I(funct), S(direction, 10), I(0), I(0), I(group), I(0), I(0)),
-            names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
-            line(R(0.0), R(scale), R(0.0), R(0.0))]
-
-
-def funct(fid, title, points):
-    return ["/FUNCT/%d" % fid, title, names(("X", 20), ("Y", 20))] + [line(R(x), R(y)) for x, y in points]
-
-
 def with_dt_inter(E, keyword, tscale, tmin, comments):
     """The engine deck E with a /DT/INTER/<keyword> card after /DT (before /PRINT)."""
     k = next(i for i, l in enumerate(E) if l.startswith("/PRINT"))
     E[k:k] = ["#  " + c for c in comments] + ["/DT/INTER/%s" % keyword, names(("Tscale", 20), ("Tmin", 20)),
                                               line(R(tscale), R(tmin))]
     return E
-
-
-def falling_cube_on_plate(run, title, comments, p, plate_x=None, extra_parts=None, **inter):
-    """node_on_segment's model (a stiff cube of 1 x 1 x 2 bricks falling flat at V0 on one fixed shell
-    segment, its lower-face nodes the secondary nodes) with the given TYPE7 options; p holds the NOS-like
-    parameters. Returns (deck lines, cube nodal masses, lower-face node ids, cube mass, top corner id)."""
-    a, n = p["A"], p["N"]
-    z0 = p["GAP"] + p["CLEAR"]
-    cn, cb, cid = cube(101, 101, a, n, (-a / 2, -a / 2, z0))
-    v.check_bricks(cn, cb)
-    pn, ps, _ = grid(1, 1, -p["PLATE"] / 2, p["PLATE"] / 2, 1, -p["PLATE"] / 2, p["PLATE"] / 2, 1, 0.0)
-    v.check_shells(pn, ps)
-    bottom = [cid(i, j, 0) for j in range(n[1] + 1) for i in range(n[0] + 1)]
-    masses = brick_node_masses(cn, cb, p["RHO"])
-    M = sum(masses.values())
-    D = header(run, title, ("kg", "m", "s"), comments)
-    D += v.node_block(pn, "Main plate nodes 1..4 (z = 0), all fixed")
-    D += v.node_block(cn, "Cube nodes %d..%d, lower face at z = %g" % (cn[0][0], cn[-1][0], z0))
-    D.append(RULER)
-    D += v.shell_block(1, ps, "Main plate: one %g x %g m shell (its only segment)" % (p["PLATE"], p["PLATE"]))
-    D += v.brick_block(2, cb, "Cube: %d bricks" % len(cb))
-    D.append(RULER)
-    D += v.part_card(1, "Main plate (fixed)", 1, 1)
-    D += v.part_card(2, "Cube", 2, 2)
-    D += prop_shell(1, "Plate shell", p["PLATE_T"], 0)
-    D += v.prop_solid(2, "Cube solid")
-    D += v.mat_law1(1, "Plate steel (does not move)", 7850.0, 210e9, 0.3)
-    D += v.mat_law1(2, "Stiff cube (rho %g: mass %g kg)" % (p["RHO"], M), p["RHO"], p["E"], p["NU"])
-    D.append(RULER)
-    D += v.grnod_part(1, "Main plate nodes", [1])
-    D += v.grnod_part(2, "Cube nodes", [2])
-    D += v.grnod_node(3, "Cube lower-face nodes (secondary nodes)", bottom)
-    D += surf_part(1, "Main plate segment (normal +Z)", [1])
-    D += v.bcs(1, "Fixed main plate", "111", "111", 1)
-    D += v.inivel(1, "Cube moving towards the plate", (0.0, 0.0, -p["V0"]), 2)
-    D.append(RULER)
-    return D, masses, bottom, M, cid(0, 0, n[2])
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -815,13 +726,10 @@ def tstart_tstop_deck(run, tstart, tstop, what):
          "Units kg, m, s (N, J)."], p)
     D += ["#  Istf 1: Stfac is the pair stiffness K (N/m); Igap 0: the gap is Gapmin; Inacti 0 (no action at",
           "#  Tstart for a node already inside the gap); Tstart and Tstop in card 4, columns 61-100"]
-    D += type7(1, "Cube lower face on the plate", 3, 1, p["K"], p["GAP"], 0, p["VISS"], tstart=tstart, tstop=tstop)
-    D.append(RULER)
-    D += th_node(1, "Cube lower-face nodes and top corner",
-                 [(b, "lower face %d" % b) for b in bottom] + [(top, "top corner")])
-    D += th_ids("INTER", 2, "Contact", [1])
-    D += th_ids("PART", 3, "Cube", [2])
-    finish(D)
+    D += v.type7(1, "Cube lower face on the plate", 3, 1, p["K"], p["GAP"], 0, p["VISS"], tstart=tstart, tstop=tstop)
+    th_and_end(D, "Cube lower-face nodes and top corner",
+               [(b, "lower face %d" % b) for b in bottom] + [(top, "top corner")],
+               "Cube", [2])
     E = engine(run, p["T_STOP"], p["ANIM_DT"], 100, textwrap.wrap(what[0].upper() + what[1:] + ".", 96), p["TH_DT"])
     return D, E, masses, bottom, M
 
@@ -920,7 +828,7 @@ def ibc_deck(ibcz):
     D.append(RULER)
     D += v.part_card(1, "Tile (secondary nodes)", 1, 1)
     D += v.part_card(2, "Cube (main surface)", 2, 2)
-    D += prop_shell(1, "Tile shell %g m" % p["TILE_T"], p["TILE_T"], 0)
+    D += v.prop_shell(1, "Tile shell %g m" % p["TILE_T"], p["TILE_T"], 0)
     D += v.prop_solid(2, "Cube solid")
     D += v.mat_law1(1, "Tile steel", p["TILE_RHO"], p["TILE_E"], 0.3)
     D += v.mat_law1(2, "Stiff cube (rho %g: mass %g kg)" % (p["RHO"], M), p["RHO"], p["E"], p["NU"])
@@ -931,17 +839,14 @@ def ibc_deck(ibcz):
           names(("part_ID1", 10)), line(I(2))]
     D += v.bcs(1, "Tile held in Z (IBCZ releases this at the first impact)", "001", "000", 1)
     D += v.inivel(1, "Cube moving towards the tile", (0.0, 0.0, -p["V0"]), 2)
-    D += grav_group(1, "Gravity on the tile only: the /BCS holds it until the impact", -p["GRAV"], 1)
+    D += grav(1, "Gravity on the tile only: the /BCS holds it until the impact", -p["GRAV"], 1)
     D.append(RULER)
     D += ["#  Istf 1: Stfac is the pair stiffness K (N/m); Igap 0: the gap is Gapmin; IBC digits at columns",
           "#  8, 9, 10 (IBCX IBCY IBCZ)"]
-    D += type7(1, "Tile nodes on the cube", 1, 1, p["K"], p["GAP"], 0, p["VISS"], ibc=(0, 0, ibcz))
-    D.append(RULER)
-    D += th_node(1, "Tile nodes and cube lower face",
-                 [(t, "tile %d" % t) for t in tile] + [(b, "cube lower face %d" % b) for b in bottom])
-    D += th_ids("INTER", 2, "Contact", [1])
-    D += th_ids("PART", 3, "Tile and cube", [1, 2])
-    finish(D)
+    D += v.type7(1, "Tile nodes on the cube", 1, 1, p["K"], p["GAP"], 0, p["VISS"], ibc=(0, 0, ibcz))
+    th_and_end(D, "Tile nodes and cube lower face",
+               [(t, "tile %d" % t) for t in tile] + [(b, "cube lower face %d" % b) for b in bottom],
+               "Tile and cube", [1, 2])
     E = engine(run, p["T_STOP"], p["ANIM_DT"], 100, ["Impact of the cube on the tile (IBCZ = %d)." % ibcz],
                p["TH_DT"])
     tm = shell_node_masses(tn, ts, p["TILE_RHO"], p["TILE_T"])
@@ -1037,7 +942,7 @@ def idel_deck(idel):
     D.append(RULER)
     D += v.part_card(1, "Patch (fails)", 1, 1)
     D += v.part_card(2, "Cube", 2, 2)
-    D += prop_shell(1, "Patch shell %g mm" % p["T"], p["T"], 5)
+    D += v.prop_shell(1, "Patch shell %g mm" % p["T"], p["T"], 5)
     D += v.prop_solid(2, "Cube solid")
     D += mat_jc_fail(1, "Steel: Johnson-Cook with EPS_p_max failure", p["RHO"], p["E"], p["NU"], p["A"], p["B"],
                      p["N"], p["EPS_MAX"])
@@ -1057,12 +962,9 @@ def idel_deck(idel):
     D += v.inivel(1, "Cube moving towards the patch", (0.0, 0.0, -p["V0"]), 4)
     D.append(RULER)
     D += ["#  Istf 1: Stfac is the pair stiffness K (N/mm); Igap 0: the gap is Gapmin; Idel = %d" % idel]
-    D += type7(1, "Cube lower face on the patch", 5, 1, p["K"], p["GAP"], 0, p["VISS"], idel=idel)
-    D.append(RULER)
-    D += th_node(1, "Cube lower-face nodes", [(b, "lower face %d" % b) for b in bottom])
-    D += th_ids("INTER", 2, "Contact", [1])
-    D += th_ids("PART", 3, "Patch and cube", [1, 2])
-    finish(D)
+    D += v.type7(1, "Cube lower face on the patch", 5, 1, p["K"], p["GAP"], 0, p["VISS"], idel=idel)
+    th_and_end(D, "Cube lower-face nodes", [(b, "lower face %d" % b) for b in bottom],
+               "Patch and cube", [1, 2])
     E = engine(run, p["T_STOP"], p["ANIM_DT"], 500, ["Failure of the patch, then the cube reaches it (Idel = %d)."
                                                       % idel], p["TH_DT"])
     return run, D, E, M, [masses[b] for b in bottom], t_fail
@@ -1162,9 +1064,9 @@ def dt_inter_deck(action):
     D += v.part_card(1, "Main plate (fixed)", 1, 1)
     D += v.part_card(2, "Cube (heavy nodes)", 2, 2)
     D += v.part_card(3, "Tile (light nodes)", 3, 3)
-    D += prop_shell(1, "Plate shell", p["PLATE_T"], 0)
+    D += v.prop_shell(1, "Plate shell", p["PLATE_T"], 0)
     D += v.prop_solid(2, "Cube solid")
-    D += prop_shell(3, "Tile shell %g m" % p["TILE_T"], p["TILE_T"], 0)
+    D += v.prop_shell(3, "Tile shell %g m" % p["TILE_T"], p["TILE_T"], 0)
     D += v.mat_law1(1, "Plate steel (does not move)", 7850.0, 210e9, 0.3)
     D += v.mat_law1(2, "Stiff cube (mass %g kg)" % M, p["RHO"], p["E"], p["NU"])
     D += v.mat_law1(3, "Light tile (soft: its element step stays above Tmin)", p["TILE_RHO"], p["TILE_E"], 0.3)
@@ -1177,13 +1079,10 @@ def dt_inter_deck(action):
     D += v.inivel(1, "Cube and tile moving towards the plate", (0.0, 0.0, -p["V0"]), 2)
     D.append(RULER)
     D += ["#  Istf 1: Stfac is the pair stiffness K (N/m); Igap 0: the gap is Gapmin; Inacti 0"]
-    D += type7(1, "Cube lower face and tile on the plate", 3, 1, p["K"], p["GAP"], 0, p["VISS"])
-    D.append(RULER)
-    D += th_node(1, "Cube lower-face nodes and tile nodes",
-                 [(b, "cube lower face %d" % b) for b in bottom] + [(t, "tile %d" % t) for t in tile])
-    D += th_ids("INTER", 2, "Contact", [1])
-    D += th_ids("PART", 3, "Cube and tile", [2, 3])
-    finish(D)
+    D += v.type7(1, "Cube lower face and tile on the plate", 3, 1, p["K"], p["GAP"], 0, p["VISS"])
+    th_and_end(D, "Cube lower-face nodes and tile nodes",
+               [(b, "cube lower face %d" % b) for b in bottom] + [(t, "tile %d" % t) for t in tile],
+               "Cube and tile", [2, 3])
     E = engine(run, p["T_STOP"], p["ANIM_DT"], 1,
                textwrap.wrap("Both bodies reach the plate; /DT/INTER/%s %s. A listing line every cycle (its time"
                              " step column is checked)." % (action, what), 96), p["TH_DT"])
@@ -1254,26 +1153,10 @@ never falls below Tmin either (the tile's pairs neither act nor vote).
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--case", choices=CASES + ("all",), default="all")
-    ap.add_argument("--out", default=os.path.join(HERE, "..", "decks", "verification"),
-                    help="parent folder of the case folders (default: decks/verification/)")
-    args = ap.parse_args(argv)
     makers = {"node_on_segment": node_on_segment, "block_sliding": block_sliding, "tube_crush": tube_crush,
               "initial_penetration": initial_penetration, "tstart_tstop": tstart_tstop, "ibc": ibc, "idel": idel,
               "dt_inter": dt_inter}
-    for case in (CASES if args.case == "all" else (args.case,)):
-        runs, readme = makers[case]()
-        d = os.path.normpath(os.path.join(args.out, case))
-        for run, starter, eng in runs:
-            for text in starter + eng:
-                assert len(text) <= 100, "line longer than 100 columns: %r" % text
-            write(os.path.join(d, run + "_0000.rad"), starter, report=True)
-            write(os.path.join(d, run + "_0001.rad"), eng, report=True)
-        with open(os.path.join(d, "README.md"), "w", newline="\n") as f:
-            f.write(readme)
-        print("wrote %s" % os.path.join(d, "README.md"))
-    return 0
+    return v.write_cases(argv, __doc__, CASES, lambda case: makers[case]())
 
 
 if __name__ == "__main__":

@@ -140,6 +140,20 @@ def prop_solid(pid, title):
             line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0))]
 
 
+def prop_shell(pid, title, thick, n_ip, ithick=1, iplas=1):
+    """/PROP/SHELL with every other flag 0 (Ishell 1, Ismstr 2, hourglass defaults, Ashear 5/6), n_ip points
+    through the thickness (0 with LAW1: resultant elasticity), Ithick and Iplas as given."""
+    return ["/PROP/SHELL/%d" % pid, title,
+            names(("Ishell", 10), ("Ismstr", 10), ("Ish3n", 10), ("Idrill", 10), ("Ipinch", 10), ("", 10),
+                  ("P_Thick_Fail", 20)),
+            line(I(0), I(0), I(0), I(0), I(0), blank(10), R(0.0)),
+            names(("Hm", 20), ("Hf", 20), ("Hr", 20), ("Dm", 20), ("Dn", 20)),
+            line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0)),
+            names(("N", 10), ("", 10), ("Thick", 20), ("Ashear", 20), ("", 10), ("Ithick", 10), ("Iplas", 10),
+                  ("Ipos", 10)),
+            line(I(n_ip), blank(10), R(thick), R(0.0), blank(10), I(ithick), I(iplas), I(0))]
+
+
 def mat_law1(mid, title, rho, e, nu):
     return ["/MAT/LAW1/%d" % mid, title, names(("RHO_I", 20), ("RHO_ref", 20)), line(R(rho)),
             names(("E", 20), ("nu", 20)), line(R(e), R(nu))]
@@ -191,6 +205,30 @@ def rwall_fixed(wid, title, group, point, head):
             names(("d", 20)), line(R(0.0)),
             names(("XM", 20), ("YM", 20), ("ZM", 20)), line(R(point[0]), R(point[1]), R(point[2])),
             names(("XM1", 20), ("YM1", 20), ("ZM1", 20)), line(R(head[0]), R(head[1]), R(head[2]))]
+
+
+def type7(iid, title, grnod, surf, stiffness, gapmin, inacti, viss, fric=0.0, iform=1, visf=1.0, istf=1, idel=0,
+          tstart=0.0, tstop=0.0, ibc=(0, 0, 0)):
+    """/INTER/TYPE7, 2026 layout (deck-format.md): Igap 0 (constant gap = Gapmin), Ifric 0, no filter.
+    istf 1: `stiffness` is the pair stiffness K (Stfac); otherwise it is the scale factor Stfac. idel: Idel;
+    tstart, tstop: the interface acts for Tstart <= t < Tstop (Tstop 0: never stops); ibc: (IBCX, IBCY, IBCZ)."""
+    return [
+        "/INTER/TYPE7/%d" % iid, title,
+        names(("grnd_IDs", 10), ("surf_IDm", 10), ("Istf", 10), ("Ithe", 10), ("Igap", 10), ("", 10),
+              ("Ibag", 10), ("Idel", 10), ("Icurv", 10), ("Iadm", 10)),
+        line(I(grnod), I(surf), I(istf), I(0), I(0), blank(10), I(0), I(idel), I(0), I(0)),
+        names(("Fscalegap", 20), ("Gap_max", 20), ("Fpenmax", 20), ("", 20), ("Itied", 10), ("Ists", 10)),
+        line(R(0.0), R(0.0), R(0.0), blank(20), I(0), I(0)),
+        names(("Stmin", 20), ("Stmax", 20), ("%mesh_size", 20), ("dtmin", 20), ("Irem_gap", 10),
+              ("Irem_i2", 10)),
+        line(R(0.0), R("1E30" if istf >= 2 else 0.0), R(0.0), R(0.0), I(0), I(0)),
+        names(("Stfac", 20), ("Fric", 20), ("Gapmin", 20), ("Tstart", 20), ("Tstop", 20)),
+        line(R(stiffness), R(fric), R(gapmin), R(tstart), R(tstop)),
+        names(("IBC", 10), ("", 20), ("Inacti", 10), ("VISs", 20), ("VISf", 20), ("Bumult", 20)),
+        line(ibc_code(*ibc), blank(20), I(inacti), R(viss), R(visf), R(0.0)),
+        names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10), ("sens_ID", 10), ("fct_IDF", 10),
+              ("AscaleF", 20), ("fric_ID", 10)),
+        line(I(0), I(0), R(0.0), I(iform), I(0), I(0), R(0.0), I(0))]
 
 
 def engine_deck(run, t_stop, anim_dt, print_every, comments):
@@ -378,16 +416,8 @@ def cantilever_strip():
     D.append(RULER)
     D += part_card(1, "Strip", 1, 1)
     D += ["#  Ishell 0 -> 1 (Belytschko-Tsay, viscous + elastic hourglass 0.01); N = 0 with LAW1: resultant",
-          "#  elasticity; Ashear 0 -> 5/6",
-          "/PROP/SHELL/1", "Strip shell",
-          names(("Ishell", 10), ("Ismstr", 10), ("Ish3n", 10), ("Idrill", 10), ("Ipinch", 10), ("", 10),
-                ("P_Thick_Fail", 20)),
-          line(I(0), I(0), I(0), I(0), I(0), blank(10), R(0.0)),
-          names(("Hm", 20), ("Hf", 20), ("Hr", 20), ("Dm", 20), ("Dn", 20)),
-          line(R(0.0), R(0.0), R(0.0), R(0.0), R(0.0)),
-          names(("N", 10), ("", 10), ("Thick", 20), ("Ashear", 20), ("", 10), ("Ithick", 10), ("Iplas", 10),
-                ("Ipos", 10)),
-          line(I(0), blank(10), R(p["T"]), R(0.0), blank(10), I(0), I(0), I(0))]
+          "#  elasticity; Ashear 0 -> 5/6"]
+    D += prop_shell(1, "Strip shell", p["T"], 0, ithick=0, iplas=0)
     D += mat_law1(1, "Steel with nu = 0", p["RHO"], p["E"], 0.0)
     D.append(RULER)
     root = [cant_node_id(0, j) for j in range(ny + 1)]
@@ -845,23 +875,9 @@ def two_bars():
           % (gap, p["GAP_H"]),
           "#  VISs = %g (a 0 would mean the default 0.05); Fric %g with Iform %d (stick: holds the faces"
           % (p["VISS"], p["FRIC"], p["IFORM"]),
-          "#  against sliding sideways off each other's edges, see the README); Inacti 0",
-          "/INTER/TYPE7/1", "Striker end face on the struck bar",
-          names(("grnd_IDs", 10), ("surf_IDm", 10), ("Istf", 10), ("Ithe", 10), ("Igap", 10), ("", 10),
-                ("Ibag", 10), ("Idel", 10), ("Icurv", 10), ("Iadm", 10)),
-          line(I(2), I(1), I(1), I(0), I(0), blank(10), I(0), I(0), I(0), I(0)),
-          names(("Fscalegap", 20), ("Gap_max", 20), ("Fpenmax", 20), ("", 20), ("Itied", 10), ("Ists", 10)),
-          line(R(0.0), R(0.0), R(0.0), blank(20), I(0), I(0)),
-          names(("Stmin", 20), ("Stmax", 20), ("%mesh_size", 20), ("dtmin", 20), ("Irem_gap", 10),
-                ("Irem_i2", 10)),
-          line(R(0.0), R(0.0), R(0.0), R(0.0), I(0), I(0)),
-          names(("Stfac", 20), ("Fric", 20), ("Gapmin", 20), ("Tstart", 20), ("Tstop", 20)),
-          line(R(k_pair), R(p["FRIC"]), R(gap), R(0.0), R(0.0)),
-          names(("IBC", 10), ("", 20), ("Inacti", 10), ("VISs", 20), ("VISf", 20), ("Bumult", 20)),
-          line(ibc_code(0, 0, 0), blank(20), I(0), R(p["VISS"]), R(1.0), R(0.0)),
-          names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10), ("sens_ID", 10), ("fct_IDF", 10),
-                ("AscaleF", 20), ("fric_ID", 10)),
-          line(I(0), I(0), R(0.0), I(p["IFORM"]), I(0), I(0), R(0.0), I(0))]
+          "#  against sliding sideways off each other's edges, see the README); Inacti 0"]
+    D += type7(1, "Striker end face on the struck bar", 2, 1, k_pair, gap, 0, p["VISS"], fric=p["FRIC"],
+               iform=p["IFORM"])
     D.append(RULER)
     D.append("/END")
     E = engine_deck(run, t_stop, 1.0, 100,
@@ -951,26 +967,44 @@ vibration left in the discrete bars.
 # ---------------------------------------------------------------------------------------------------
 
 
-def main(argv):
+def write_case(out, case, runs, readme):
+    """Write a case folder out/<case>/: RUN_0000.rad (starter) and RUN_0001.rad (engine) for each
+    (run, starter lines, engine lines) of runs, then its README.md."""
+    d = os.path.normpath(os.path.join(out, case))
+    for run, starter, engine in runs:
+        for text in starter + engine:
+            assert len(text) <= 100, "line longer than 100 columns: %r" % text
+        write(os.path.join(d, run + "_0000.rad"), starter, report=True)
+        write(os.path.join(d, run + "_0001.rad"), engine, report=True)
+    with open(os.path.join(d, "README.md"), "w", newline="\n") as f:
+        f.write(readme)
+    print("wrote %s" % os.path.join(d, "README.md"))
+
+
+def write_cases(argv, doc, cases, make):
+    """The command line of a deck writer (--case CASE or all, --out DIR; doc: the script's docstring): writes
+    each case asked for with write_case, make(case) giving its ([(run, starter, engine)], readme)."""
     here = os.path.dirname(os.path.abspath(__file__))
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--case", choices=CASES + ("all",), default="all")
+    ap = argparse.ArgumentParser(description=doc.split("\n")[0])
+    ap.add_argument("--case", choices=cases + ("all",), default="all")
     ap.add_argument("--out", default=os.path.join(here, "..", "decks", "verification"),
                     help="parent folder of the case folders (default: decks/verification/)")
     args = ap.parse_args(argv)
+    for case in (cases if args.case == "all" else (args.case,)):
+        runs, readme = make(case)
+        write_case(args.out, case, runs, readme)
+    return 0
+
+
+def main(argv):
     makers = {"bar_rwall": bar_rwall, "cantilever_strip": cantilever_strip, "taylor_bar": taylor_bar,
               "jc_single_brick": jc_single_brick, "free_fall": free_fall, "two_bars": two_bars}
-    for case in (CASES if args.case == "all" else (args.case,)):
+
+    def make(case):
         run, starter, engine, readme = makers[case]()
-        for text in starter + engine:
-            assert len(text) <= 100, "line longer than 100 columns: %r" % text
-        d = os.path.normpath(os.path.join(args.out, case))
-        write(os.path.join(d, run + "_0000.rad"), starter, report=True)
-        write(os.path.join(d, run + "_0001.rad"), engine, report=True)
-        with open(os.path.join(d, "README.md"), "w", newline="\n") as f:
-            f.write(readme)
-        print("wrote %s" % os.path.join(d, "README.md"))
-    return 0
+        return [(run, starter, engine)], readme
+
+    return write_cases(argv, __doc__, CASES, make)
 
 
 if __name__ == "__main__":

@@ -6,16 +6,22 @@ Not a test by itself. It holds:
   * the one-degree-of-freedom model of a rigid body on N identical TYPE7 pairs (type7-lagdt.md 4.3), used for
     the expected penetration and rebound speed when damping makes the energy equation of verification.md A.2
     inexact; without damping it reduces to that equation (checked by self_test());
-  * running radx and reading its outputs (NAME_th.h5, NAME_summary.json, the animation states), with h5py.
+  * running radx (results_common.py) and reading its outputs (NAME_th.h5, NAME_summary.json, the animation
+    states), with h5py;
+  * what the checks share around that: the command line and the loop over the decks (main_per_deck), the
+    moving body, the flat main plate, the penetrations, part speeds and contact forces from the time history,
+    and the energy-error check.
 
-Plain /usr/bin/python3 with Debian's numpy and h5py.
+Plain /usr/bin/python3 with Debian's numpy and h5py (imported where used: scripts/make_contact_decks.py imports
+this module for rigid_impact with the standard library only).
 """
+import argparse
 import glob
-import json
 import math
 import os
-import subprocess
 import sys
+
+from results_common import read_summary, run_radx  # noqa: F401  (part of this module's interface)
 
 # ---------------------------------------------------------------------------------------------------
 # Deck reading (fixed columns, deck-format.md); only what the contact decks use.
@@ -117,6 +123,22 @@ class Model:
             for n in ns:
                 m[n] += self.rho[self.parts[pid][1]] * t * area / 4
         return m
+
+    def moving_body(self):
+        """The deck's only /INIVEL/TRA: (its group's nodes, their total mass, the velocity)."""
+        (vel, gid), = self.inivel
+        nodes = self.groups[gid]
+        return nodes, sum(self.masses[n] for n in nodes), vel
+
+    def brick_part(self):
+        """The first part (in deck order) that has bricks."""
+        return next(pid for pid in self.parts if any(b[0] == pid for b in self.bricks.values()))
+
+    def flat_z(self, nodes, what):
+        """The common z of nodes, asserting that they lie in one plane normal to Z (what: for the message)."""
+        z = self.nodes[nodes[0]][2]
+        assert all(self.nodes[n][2] == z for n in nodes), "%s must be flat, normal along Z" % what
+        return z
 
     def initial_velocity(self, node):
         v = (0.0, 0.0, 0.0)
@@ -287,17 +309,6 @@ def self_test():
 # Running radx and reading its outputs
 
 
-def run_radx(radx, deck, out, extra=()):
-    """radx run DECK --out OUT --no-plot [extra arguments, e.g. ("--threads", "2")]; returns the run name (NAME
-    of NAME_0000.rad). Exits on failure."""
-    os.makedirs(out, exist_ok=True)
-    r = subprocess.run([radx, "run", deck, "--out", out, "--no-plot", *extra], capture_output=True, text=True)
-    if r.returncode != 0:
-        sys.exit("radx run %s failed (exit %d):\n%s\n%s" % (deck, r.returncode, r.stdout[-4000:], r.stderr[-4000:]))
-    name = os.path.basename(deck)
-    return name[:-len("_0000.rad")] if name.endswith("_0000.rad") else os.path.splitext(name)[0]
-
-
 def read_th(out, name):
     """{group path: (rows [n, 1 + c] float64, {column name: index})} of NAME_th.h5."""
     import h5py
@@ -323,9 +334,25 @@ def has_column(th, name):
     return any(name in cols for _, cols in th.values())
 
 
-def read_summary(out, name):
-    with open(os.path.join(out, name + "_summary.json")) as f:
-        return json.load(f)
+def part_velocity(th, pid, axis="Z"):
+    """(time, mean velocity of part pid along axis: <axis>MOM / MASS) from the time history."""
+    t, mom = th_column(th, "%d:%sMOM" % (pid, axis))
+    return t, mom / th_column(th, "%d:MASS" % pid)[1]
+
+
+def contact_forces(th, iid):
+    """(time, [FNX, FNY, FNZ] as a [3, rows] array) of interface iid from the time history."""
+    import numpy as np
+    t, _ = th_column(th, "%d:FNZ" % iid)
+    return t, np.array([th_column(th, "%d:FN%s" % (iid, a))[1] for a in "XYZ"])
+
+
+def penetrations(m, th, nodes, g, z_plate):
+    """Penetration g - (z - z_plate) of each node into the gap g of a flat plane at z_plate, at every
+    time-history row ([len(nodes), rows]; z from the deck's position and the time history's DZ)."""
+    import numpy as np
+    z0 = np.array([m.nodes[n][2] for n in nodes])
+    return np.array([g - (z0[k] + th_column(th, "%d:DZ" % n)[1] - z_plate) for k, n in enumerate(nodes)])
 
 
 def engine_card(deck, keyword):
@@ -401,9 +428,37 @@ class Checks:
                           % (what, value, expected, 100 * err, 100 * rel))
 
 
+def check_energy_error(checks, summary, detail=""):
+    """The run's energy error (summary) within 1 % (verification.md C); detail is added to the message."""
+    err = summary["energy"]["error_percent"]
+    return checks.check(abs(err) <= 1.0, "energy error %.3g %% (allowed 1 %%%s)" % (err, detail))
+
+
 def finish(all_checks):
     bad = [f for c in all_checks for f in c.failures]
     if bad:
         print("%d check(s) failed" % len(bad))
         sys.exit(1)
     print("all checks passed")
+
+
+def main_per_deck(one_deck, self_test_first=False, options=()):
+    """The command line of a check that runs decks one after another: --radx RADX --decks DECK... --out DIR,
+    plus options ((flag, add_argument keywords) pairs). Runs self_test() first if asked, then
+    one_deck(radx, deck, OUT/<run name>, checks, <options by name>) for every deck, each with its own Checks
+    labelled with the run name (NAME of NAME_0000.rad), and finish()."""
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--radx", required=True)
+    ap.add_argument("--decks", nargs="+", required=True)
+    ap.add_argument("--out", required=True)
+    dests = [ap.add_argument(flag, **kw).dest for flag, kw in options]
+    a = ap.parse_args()
+    if self_test_first:
+        self_test()
+    all_checks = []
+    for deck in a.decks:
+        label = os.path.basename(deck).replace("_0000.rad", "")
+        c = Checks(label)
+        one_deck(a.radx, deck, os.path.join(a.out, label), c, **{d: getattr(a, d) for d in dests})
+        all_checks.append(c)
+    finish(all_checks)

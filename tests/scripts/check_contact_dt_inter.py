@@ -37,7 +37,6 @@ Tolerances (what they mean):
     check_contact_node_on_segment);
   * energy error within 1 % (verification.md C).
 """
-import argparse
 import math
 import os
 import re
@@ -75,8 +74,7 @@ def one_deck(radx, deck, out, checks):
     (vel, _), = m.inivel
     v0 = -vel[2]
     plate_nodes = sorted({n for n, pid in part_of.items() if pid not in (light_part, heavy_part)})
-    z_plate = m.nodes[plate_nodes[0]][2]
-    assert all(m.nodes[n][2] == z_plate for n in plate_nodes), "the main plate must be flat, normal along Z"
+    z_plate = m.flat_z(plate_nodes, "the main plate")
     print("%s: /DT/INTER/%s Tscale %g Tmin %g; K = %g, g = %g, v0 = %g; light nodes %s (steps %.4g s), heavy nodes "
           "%s (steps %.4g s)" % (os.path.basename(deck), action, tscale, tmin, K, g, v0, light,
                                  max(step0[n] for n in light), heavy, min(step0[n] for n in heavy)))
@@ -95,22 +93,15 @@ def one_deck(radx, deck, out, checks):
                  "listing: TIME-STEP never below Tmin (smallest %.6g s over %d lines; 6 printed digits)"
                  % (min(r["dt"] for r in rows), len(rows)))
 
-    def pen_of(nodes):
-        z0 = np.array([m.nodes[n][2] for n in nodes])
-        p = np.array([g - (z0[k] + cc.th_column(th, "%d:DZ" % n)[1] - z_plate) for k, n in enumerate(nodes)])
-        return p, g - (z0.min() - z_plate)
-
-    def speed(pid):
-        return cc.th_column(th, "%d:ZMOM" % pid)[1] / cc.th_column(th, "%d:MASS" % pid)[1]
-
-    pen_c, p0 = pen_of(heavy)
+    pen_c = cc.penetrations(m, th, heavy, g, z_plate)
+    p0 = g - (min(m.nodes[n][2] for n in heavy) - z_plate)
     exp = cc.rigid_impact(M, [m.masses[n] for n in heavy], K, g, vis_s, p0, -v0)
     checks.close(pen_c.mean(axis=0).max(), exp["p_max"], 0.01, "cube largest penetration (m)")
-    checks.close(speed(heavy_part)[-1], exp["v_rebound"], 0.01, "cube rebound speed (m/s)")
+    checks.close(cc.part_velocity(th, heavy_part)[1][-1], exp["v_rebound"], 0.01, "cube rebound speed (m/s)")
     mass_c = cc.th_column(th, "%d:MASS" % heavy_part)[1]
     checks.check(np.all(mass_c == mass_c[0]), "no mass added to the cube (its part MASS %.9g to %.9g kg)"
                  % (mass_c.min(), mass_c.max()))
-    pen_l, _ = pen_of(light)
+    pen_l = cc.penetrations(m, th, light, g, z_plate)
 
     if action == "CST":
         checks.check(abs(dt[full].min() - tmin) <= 1e-9 * tmin, "the contact held the step at Tmin: smallest step "
@@ -150,31 +141,14 @@ def one_deck(radx, deck, out, checks):
         names = sorted((int(i), int(n)) for i, n in found)
         checks.check(names == sorted((iid, n) for n in light), "listing warnings name each light node once with "
                      "interface %d: %s" % (iid, ", ".join("%d:%d" % x for x in names) or "none"))
-        vz = speed(light_part)
+        _, vz = cc.part_velocity(th, light_part)
         dev = np.max(np.abs(vz + v0)) / v0
         checks.check(dev <= 1e-9, "the tile feels no contact force: speed -v0 to %.3g (allowed 1e-9)" % dev)
         checks.check(np.all(pen_l[:, -1] > g), "the tile passed through the plate (%.4g m below it)"
                      % (pen_l[:, -1].min() - g))
         checks.check(s["added_mass"] == 0, "no mass added (%g)" % s["added_mass"])
-    err = s["energy"]["error_percent"]
-    checks.check(abs(err) <= 1.0, "energy error %.3g %% (allowed 1 %%)" % err)
-
-
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--radx", required=True)
-    ap.add_argument("--decks", nargs="+", required=True)
-    ap.add_argument("--out", required=True)
-    a = ap.parse_args()
-    cc.self_test()
-    all_checks = []
-    for deck in a.decks:
-        label = os.path.basename(deck).replace("_0000.rad", "")
-        c = cc.Checks(label)
-        one_deck(a.radx, deck, os.path.join(a.out, label), c)
-        all_checks.append(c)
-    cc.finish(all_checks)
+    cc.check_energy_error(checks, s)
 
 
 if __name__ == "__main__":
-    main()
+    cc.main_per_deck(one_deck, self_test_first=True)

@@ -28,7 +28,6 @@ Tolerances (what they mean):
     2 M v0 / (M + m), plus g_z t_end;
   * energy error within 1 % (verification.md C).
 """
-import argparse
 import os
 
 import numpy as np
@@ -43,16 +42,13 @@ def one_deck(radx, deck, out, checks):
     K, g, vis_s = it["Stfac"], it["Gapmin"], it["VISs"]
     ibcz = it["IBC"][2]
     tile = m.groups[it["grnd"]]
-    (vel, cube_group), = m.inivel
-    cube = m.groups[cube_group]
+    cube, M, vel = m.moving_body()
     v0 = -vel[2]
-    M = sum(m.masses[n] for n in cube)
     mt = sum(m.masses[n] for n in tile)
     masses = [m.masses[n] for n in tile]
     (direction, grav_group, gz), = m.grav
     assert direction == "Z" and sorted(m.groups[grav_group]) == sorted(tile), "gravity acts on the tile only"
-    z_tile = m.nodes[tile[0]][2]
-    assert all(m.nodes[n][2] == z_tile for n in tile), "the tile must be flat, normal along Z"
+    z_tile = m.flat_z(tile, "the tile")
     face = [n for n in cube if m.nodes[n][2] == min(m.nodes[c][2] for c in cube)]
     z_face = m.nodes[face[0]][2]
     print("%s: IBC %s, M = %g, m = %g, %d pairs, K = %g, g = %g, v0 = %g, gravity %g on the tile"
@@ -70,8 +66,7 @@ def one_deck(radx, deck, out, checks):
         return
     k_r = int(hit[0])
     tile_part = next(pid for pid in m.parts if any(s[0] == pid for s in m.shells.values()))
-    cube_part = next(pid for pid in m.parts if any(b[0] == pid for b in m.bricks.values()))
-    vcube = cc.th_column(th, "%d:ZMOM" % cube_part)[1] / cc.th_column(th, "%d:MASS" % cube_part)[1]
+    vcube = cc.part_velocity(th, m.brick_part())[1]
 
     if ibcz == 0:
         checks.check(np.all(dz == 0), "the tile never moves in Z: largest |DZ| %.3g m (must be 0)" % np.abs(dz).max())
@@ -95,30 +90,12 @@ def one_deck(radx, deck, out, checks):
         checks.check(dev <= allowed, "no /BCS reaction after the impact: total ZMOM = -M v0 + m g_z (t - t_impact) "
                      "to %.3g (allowed %.3g = m g_z dt_max; a cycle of contact force is ~%.3g)"
                      % (dev, allowed, np.abs(fnz).max() * dt.max()))
-        u = cc.th_column(th, "%d:ZMOM" % tile_part)[1][-1] / cc.th_column(th, "%d:MASS" % tile_part)[1][-1]
+        u = cc.part_velocity(th, tile_part)[1][-1]
         bound = 2 * M * v0 / (M + mt) + abs(gz) * t[-1]
         checks.check(u < vcube[-1] < 0 and -u <= bound, "the tile is pushed away: %.5g m/s, faster than the cube "
                      "(%.5g m/s), not faster than the elastic bound %.5g m/s" % (u, vcube[-1], -bound))
-    s = cc.read_summary(out, name)
-    err = s["energy"]["error_percent"]
-    checks.check(abs(err) <= 1.0, "energy error %.3g %% (allowed 1 %%)" % err)
-
-
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--radx", required=True)
-    ap.add_argument("--decks", nargs="+", required=True)
-    ap.add_argument("--out", required=True)
-    a = ap.parse_args()
-    cc.self_test()
-    all_checks = []
-    for deck in a.decks:
-        label = os.path.basename(deck).replace("_0000.rad", "")
-        c = cc.Checks(label)
-        one_deck(a.radx, deck, os.path.join(a.out, label), c)
-        all_checks.append(c)
-    cc.finish(all_checks)
+    cc.check_energy_error(checks, cc.read_summary(out, name))
 
 
 if __name__ == "__main__":
-    main()
+    cc.main_per_deck(one_deck, self_test_first=True)

@@ -23,13 +23,7 @@ import sys
 import h5py
 import numpy as np
 
-failures = []
-
-
-def check(ok, msg):
-    if not ok:
-        failures.append(msg)
-        print("FAIL: " + msg)
+from results_common import check, finish
 
 
 def run(radx, deck, out):
@@ -81,9 +75,7 @@ def main():
         check(abs(v_1 - v_0) <= 1e-3 * v0, "Inacti %d: final VZ %.9g with Tstart > 0, %.9g from t = 0" % (inacti, v_1, v_0))
         check(re.search(r"starts \(Tstart [^)]*\) with \d+ secondary node\(s\) closer than the gap.*Inacti %d applied"
                         % inacti, log) is not None, "Inacti %d: no message about the penetrations at Tstart" % inacti)
-    if failures:
-        sys.exit(1)
-    print("ok: Inacti 1, 2, 5 at Tstart > 0 match the treatment from t = 0")
+    finish("Inacti 1, 2, 5 at Tstart > 0 match the treatment from t = 0")
 
 
 if __name__ == "__main__":

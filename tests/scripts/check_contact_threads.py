@@ -21,7 +21,6 @@ The decks: tube_crush (self-contact of a folding shell tube: many pairs, both si
 Johnson-Cook shells in several element groups) and the default block_on_plate deck (two-pass contact with
 Iform 1 and 2 friction and Inacti 6, shells and bricks).
 """
-import argparse
 import glob
 import os
 
@@ -52,7 +51,7 @@ def summary_key(s):
     return {k: s[k] for k in keep if k in s}
 
 
-def one_deck(radx, deck, out, threads, checks):
+def one_deck(radx, deck, out, checks, threads):
     runs = []
     for n in threads:
         o = os.path.join(out, "threads%d" % n)
@@ -100,21 +99,5 @@ def one_deck(radx, deck, out, threads, checks):
                                     "" if not bad else "; differs in " + ", ".join(bad)))
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--radx", required=True)
-    ap.add_argument("--decks", nargs="+", required=True)
-    ap.add_argument("--out", required=True)
-    ap.add_argument("--threads", nargs="+", type=int, default=[1, 2])
-    a = ap.parse_args()
-    all_checks = []
-    for deck in a.decks:
-        label = os.path.basename(deck).replace("_0000.rad", "")
-        c = cc.Checks(label)
-        one_deck(a.radx, deck, os.path.join(a.out, label), a.threads, c)
-        all_checks.append(c)
-    cc.finish(all_checks)
-
-
 if __name__ == "__main__":
-    main()
+    cc.main_per_deck(one_deck, options=[("--threads", dict(nargs="+", type=int, default=[1, 2]))])

@@ -17,22 +17,14 @@ The last row is the last cycle: its energies must equal NAME_summary.json's (the
 digits: exact) and the listing's last line (printed with 6 digits: relative 5e-6).
 """
 import argparse
-import json
 import os
-import subprocess
-import sys
 
 import h5py
 import numpy as np
 
+from results_common import check, finish, read_summary, run_radx
+
 G, RHO, H = 9.81, 2700.0, 0.1  # decks/verification/free_fall/README.md
-failures = []
-
-
-def check(ok, msg):
-    if not ok:
-        failures.append(msg)
-        print("FAIL: " + msg)
 
 
 def columns(ds):
@@ -45,10 +37,7 @@ def main():
     ap.add_argument("--deck", required=True)
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
-    os.makedirs(a.out, exist_ok=True)
-    run = subprocess.run([a.radx, "run", a.deck, "--out", a.out, "--no-plot"], capture_output=True, text=True)
-    if run.returncode != 0:
-        sys.exit("radx run failed:\n" + run.stdout[-3000:] + run.stderr[-3000:])
+    run_radx(a.radx, a.deck, a.out)
     M = RHO * H ** 3
     with h5py.File(os.path.join(a.out, "FREE_FALL_th.h5"), "r") as f:
         gl, node, part = f["global"], f["node/1"], f["part/2"]
@@ -58,7 +47,7 @@ def main():
     t = g[:, 0]
     check(np.array_equal(t, n[:, 0]) and np.array_equal(t, p[:, 0]), "groups have different time columns")
     check(len(t) == 11, "%d rows, expected 11 (t = 0, every 0.001 s, the end 0.01 s)" % len(t))
-    summary = json.load(open(os.path.join(a.out, "FREE_FALL_summary.json")))
+    summary = read_summary(a.out, "FREE_FALL")
     dt = summary["time"] / summary["cycles"]  # the (constant) step of this unstressed block
     for k, tk in enumerate(t):
         check(0.001 * k <= tk * (1 + 1e-12) and tk < 0.001 * k + 2 * dt, "row %d at t = %.17g" % (k, tk))
@@ -80,21 +69,18 @@ def main():
     check(units["KE"] == "J" and units["ZMOM"] == "kg.m/s" and units["time"] == "s", "units %s" % units)
 
     # Against the summary (same report, 17 digits) and the listing's last line (6 digits).
-    s = json.load(open(os.path.join(a.out, "FREE_FALL_summary.json")))
-    check(t[-1] == s["time"], "last row at %.17g, run ended at %.17g" % (t[-1], s["time"]))
-    check(g[-1, cg["KE"]] == s["energy"]["kinetic"], "last KE %.17g != summary %.17g" % (g[-1, cg["KE"]],
-                                                                                    s["energy"]["kinetic"]))
-    check(g[-1, cg["EXTW"]] == s["energy"]["external_work"], "last EXTW != summary")
-    check(g[-1, cg["ZMOM"]] == s["momentum"][2], "last ZMOM != summary")
+    check(t[-1] == summary["time"], "last row at %.17g, run ended at %.17g" % (t[-1], summary["time"]))
+    check(g[-1, cg["KE"]] == summary["energy"]["kinetic"],
+          "last KE %.17g != summary %.17g" % (g[-1, cg["KE"]], summary["energy"]["kinetic"]))
+    check(g[-1, cg["EXTW"]] == summary["energy"]["external_work"], "last EXTW != summary")
+    check(g[-1, cg["ZMOM"]] == summary["momentum"][2], "last ZMOM != summary")
     listing = open(os.path.join(a.out, "FREE_FALL_0001.out")).read().splitlines()
     rows = [l.split() for l in listing if l.strip() and l.split()[0].isdigit() and len(l.split()) >= 8]
     last = rows[-1]
     check(abs(float(last[1]) - t[-1]) <= 5e-6 * t[-1], "listing's last time %s != %.6g" % (last[1], t[-1]))
     ke_text = "%.5E" % g[-1, cg["KE"]]
     check(ke_text in last, "listing's last line %s does not show KE %s" % (last, ke_text))
-    if failures:
-        sys.exit(1)
-    print("ok: %d rows; DZ, VZ, AZ, ZMOM, KE, EXTW follow the free fall; last row = summary = listing" % len(t))
+    finish("%d rows; DZ, VZ, AZ, ZMOM, KE, EXTW follow the free fall; last row = summary = listing" % len(t))
 
 
 if __name__ == "__main__":

@@ -20,14 +20,14 @@ displacement = Points - mesh Points to float32 rounding (relative 1e-6 of the la
 """
 import argparse
 import glob
-import json
 import os
 import re
-import subprocess
 import sys
 
 import h5py
 import numpy as np
+
+import results_common as rc
 
 ANIM_ARRAYS = {  # Radioss /ANIM name -> radx array (results-format.md section 3)
     ("ELEM", "VONM"): "von_mises", ("ELEM", "EPSP"): "plastic_strain", ("ELEM", "THIC"): "thickness",
@@ -40,12 +40,9 @@ ANIM_ARRAYS = {  # Radioss /ANIM name -> radx array (results-format.md section 3
 ALWAYS_POINT = {"displacement", "velocity", "node_id"}
 ALWAYS_CELL = {"element_status", "part_id", "element_id"}
 
-failures = []
-
 
 def fail(msg):
-    failures.append(msg)
-    print("FAIL: " + msg)
+    rc.check(False, msg)
 
 
 def engine_controls(path):
@@ -73,14 +70,10 @@ def main():
     ap.add_argument("--paraview-check", required=True)
     a = ap.parse_args()
 
-    os.makedirs(a.out, exist_ok=True)
-    run = subprocess.run([a.radx, "run", a.deck, "--out", a.out, "--no-plot"], capture_output=True, text=True)
-    if run.returncode != 0:
-        sys.exit("radx run failed (%d):\n%s\n%s" % (run.returncode, run.stdout[-3000:], run.stderr[-3000:]))
-    base = os.path.basename(a.deck).replace("_0000.rad", "")
+    base = rc.run_radx(a.radx, a.deck, a.out)
     engine_deck = a.deck.replace("_0000.rad", "_0001.rad")
     t_stop, (t0, dT, t1), names = engine_controls(engine_deck)
-    summary = json.load(open(os.path.join(a.out, base + "_summary.json")))
+    summary = rc.read_summary(a.out, base)
     if summary["status"] != "normal":
         sys.exit("the run did not end normally: " + summary["message"])
 
@@ -127,8 +120,7 @@ def main():
     if arrays and (arrays[0] != point_arrays or arrays[1] != cell_arrays):
         fail("arrays %s, expected point %s cell %s" % (arrays, sorted(point_arrays), sorted(cell_arrays)))
 
-    series = json.load(open(os.path.join(a.out, base + ".hdf.series")))
-    listed = [(e["name"], e["time"]) for e in series["files"]]
+    listed = rc.listed_states(a.out, base)
     if listed != [(os.path.basename(f), t) for f, t in zip(states, times)]:
         fail("the series lists %s, the files are %s" % (listed, list(zip(map(os.path.basename, states), times))))
     stray = glob.glob(os.path.join(a.out, "*.part")) + glob.glob(os.path.join(a.out, "*.tmp"))
@@ -141,20 +133,17 @@ def main():
     if np.max(np.abs(disp - (pts - x0))) > tol:
         fail("last displacement differs from Points - initial points by %.3g" % np.max(np.abs(disp - (pts - x0))))
 
-    env = dict(os.environ, QT_QPA_PLATFORM="offscreen")
-    pv = subprocess.run(["pvpython", a.paraview_check, "--series", os.path.join(a.out, base + ".hdf.series"),
-                         "--xmf", os.path.join(a.out, base + ".xmf"), "--expect-states", str(len(states)),
-                         "--expect-cells", str(ncells),
-                         "--expect-arrays", ",".join(sorted((point_arrays | cell_arrays) - {"node_id"})),
-                         "--expect-times", ",".join("%.17g" % t for t in times),
-                         "--expect-cell-types", ",".join(map(str, types)),
-                         "--last-displacement-from", states[-1]], capture_output=True, text=True, env=env)
+    pv = rc.paraview_check(a.paraview_check, "--series", os.path.join(a.out, base + ".hdf.series"),
+                           "--xmf", os.path.join(a.out, base + ".xmf"), "--expect-states", str(len(states)),
+                           "--expect-cells", str(ncells),
+                           "--expect-arrays", ",".join(sorted((point_arrays | cell_arrays) - {"node_id"})),
+                           "--expect-times", ",".join("%.17g" % t for t in times),
+                           "--expect-cell-types", ",".join(map(str, types)),
+                           "--last-displacement-from", states[-1])
     print(pv.stdout)
     if pv.returncode != 0:
         fail("ParaView check failed:\n" + pv.stdout[-3000:] + pv.stderr[-2000:])
-    if failures:
-        sys.exit(1)
-    print("ok: %d states at %s, arrays %s, %d cells" % (len(states), times, sorted(point_arrays | cell_arrays), ncells))
+    rc.finish("%d states at %s, arrays %s, %d cells" % (len(states), times, sorted(point_arrays | cell_arrays), ncells))
 
 
 if __name__ == "__main__":

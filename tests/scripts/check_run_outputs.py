@@ -15,20 +15,12 @@ usage: /usr/bin/python3 check_run_outputs.py --radx RADX --decks DECKS_DIR --out
 import argparse
 import csv
 import glob
-import json
 import os
 import shutil
 import struct
 import subprocess
-import sys
 
-failures = []
-
-
-def check(ok, msg):
-    if not ok:
-        failures.append(msg)
-        print("FAIL: " + msg)
+from results_common import check, finish, listed_states, read_summary
 
 
 def main():
@@ -45,7 +37,7 @@ def main():
                         out], capture_output=True, text=True)
     check(r.returncode == 0, "free fall run failed: " + r.stderr[-2000:])
     check("warning" not in r.stderr, "a warning while plotting: " + r.stderr[-2000:])
-    s = json.load(open(os.path.join(out, "FREE_FALL_summary.json")))
+    s = read_summary(out, "FREE_FALL")
     rows = list(csv.reader(open(os.path.join(out, "FREE_FALL_energy.csv"))))
     check(rows[0] == ["time [s]", "kinetic [J]", "internal [J]", "hourglass [J]", "contact [J]",
                       "external_work [J]", "total [J]"], "CSV header %s" % rows[0])
@@ -78,20 +70,18 @@ def main():
     r = subprocess.run([a.radx, "run", os.path.join(out, "JC_SINGLE_BRICK_0000.rad"), "--out", out, "--no-plot"],
                        capture_output=True, text=True)
     check(r.returncode == 1, "the /STOP run exited with %d, expected 1" % r.returncode)
-    s = json.load(open(os.path.join(out, "JC_SINGLE_BRICK_summary.json")))
+    s = read_summary(out, "JC_SINGLE_BRICK")
     check(s["status"] == "error" and "/STOP" in s["message"], "summary %s: %s" % (s["status"], s["message"]))
-    series = json.load(open(os.path.join(out, "JC_SINGLE_BRICK.hdf.series")))["files"]
-    times = [f["time"] for f in series]
+    series = listed_states(out, "JC_SINGLE_BRICK")
+    times = [t for _, t in series]
     check(times[-1] == s["time"], "last state at %.17g, the run stopped at %.17g" % (times[-1], s["time"]))
     check(0 < s["time"] < 0.1, "stop time %g" % s["time"])
     due = [k * 0.005 for k in range(0, 100) if k * 0.005 < s["time"]]  # /ANIM/DT 0 0.005 in the deck
     check(len(times) == len(due) + 1, "%d states, expected %d due before the stop and the last" %
           (len(times), len(due) + 1))
-    for f in series:
-        check(os.path.exists(os.path.join(out, f["name"])), f["name"] + " listed but missing")
-    if failures:
-        sys.exit(1)
-    print("ok: energy CSV and PNG match the summary; the /STOP run wrote %d states, the last at %.6g s" %
+    for name, _ in series:
+        check(os.path.exists(os.path.join(out, name)), name + " listed but missing")
+    finish("energy CSV and PNG match the summary; the /STOP run wrote %d states, the last at %.6g s" %
           (len(times), times[-1]))
 
 

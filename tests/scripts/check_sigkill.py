@@ -16,7 +16,6 @@ Checks:
 """
 import argparse
 import glob
-import json
 import os
 import re
 import shutil
@@ -27,21 +26,13 @@ import time
 
 import h5py
 
-failures = []
+from results_common import check, finish, listed_states, paraview_check
 
 
-def check(ok, msg):
-    if not ok:
-        failures.append(msg)
-        print("FAIL: " + msg)
-
-
-def listed_states(out, base):
-    try:
-        with open(os.path.join(out, base + ".hdf.series")) as f:
-            return [(e["name"], e["time"]) for e in json.load(f)["files"]]
-    except (OSError, ValueError):
-        return []
+def data_line(lines, keyword):
+    """Index of the first data line (not a comment) after the first line that starts with keyword."""
+    k = next(i for i, l in enumerate(lines) if l.startswith(keyword))
+    return next(i for i in range(k + 1, len(lines)) if not lines[i].startswith("#"))
 
 
 def main():
@@ -61,12 +52,10 @@ def main():
     # The engine deck with 20 times the end time and a state every 1/200 of it.
     text = open(a.deck.replace("_0000.rad", "_0001.rad")).read()
     lines = text.splitlines()
-    k = next(i for i, l in enumerate(lines) if l.startswith("/RUN/"))
-    j = next(i for i in range(k + 1, len(lines)) if not lines[i].startswith("#"))
+    j = data_line(lines, "/RUN/")
     t_stop = 20 * float(lines[j].split()[0])
     lines[j] = "%20.6g" % t_stop
-    k = next(i for i, l in enumerate(lines) if l.startswith("/ANIM/DT"))
-    j = next(i for i in range(k + 1, len(lines)) if not lines[i].startswith("#"))
+    j = data_line(lines, "/ANIM/DT")
     lines[j] = "%20.6g%20.6g" % (0.0, t_stop / 200)
     engine_deck = os.path.join(a.out, base + "_0001.rad")
     open(engine_deck, "w").write("\n".join(lines) + "\n")
@@ -107,11 +96,10 @@ def main():
         ncells = int(m["/VTKHDF/NumberOfCells"][0])
     for index, entries in (("--series", listed), ("--xmf", list(zip(xmf_files, xmf_times)))):
         path = os.path.join(a.out, base + (".hdf.series" if index == "--series" else ".xmf"))
-        pv = subprocess.run(["pvpython", a.paraview_check, index, path, "--expect-states", str(len(entries)),
-                             "--expect-cells", str(ncells), "--expect-arrays", "displacement,velocity,element_status",
-                             "--expect-times", ",".join("%.17g" % t for _, t in entries),
-                             "--last-displacement-from", os.path.join(a.out, entries[-1][0])],
-                            capture_output=True, text=True, env=dict(os.environ, QT_QPA_PLATFORM="offscreen"))
+        pv = paraview_check(a.paraview_check, index, path, "--expect-states", str(len(entries)),
+                            "--expect-cells", str(ncells), "--expect-arrays", "displacement,velocity,element_status",
+                            "--expect-times", ",".join("%.17g" % t for _, t in entries),
+                            "--last-displacement-from", os.path.join(a.out, entries[-1][0]))
         print(pv.stdout[-2000:])
         check(pv.returncode == 0, "ParaView does not read the killed run's states through %s:\n%s" %
               (path, pv.stdout[-2000:]))
@@ -122,8 +110,7 @@ def main():
     far = os.path.join(a.out, base + "_%06d.hdf" % 999)
     shutil.copy(os.path.join(a.out, listed[0][0]), far)
     lines = open(engine_deck).read().splitlines()
-    k = next(i for i, l in enumerate(lines) if l.startswith("/RUN/"))
-    j = next(i for i in range(k + 1, len(lines)) if not lines[i].startswith("#"))
+    j = data_line(lines, "/RUN/")
     lines[j] = "%20.6g" % (t_stop / 40)  # 6 states: t = 0 .. t_stop/40 every t_stop/200
     open(engine_deck, "w").write("\n".join(lines) + "\n")
     r = subprocess.run([a.radx_engine, engine_deck, "--out", a.out, "--no-plot"], capture_output=True, text=True)
@@ -137,9 +124,7 @@ def main():
           ([n for n, _ in again], files))
     check(len(again) == 6, "the next run wrote %d states, expected 6 (t = 0 and every t_stop/200 up to t_stop/40)"
           % len(again))
-    if failures:
-        sys.exit(1)
-    print("ok: killed with %d states listed, all readable in ParaView; the next run cleaned up" % len(listed))
+    finish("killed with %d states listed, all readable in ParaView; the next run cleaned up" % len(listed))
 
 
 if __name__ == "__main__":
