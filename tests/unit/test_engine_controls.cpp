@@ -1,6 +1,7 @@
 // Engine time-step controls and the run pipeline, with expected values from elements.md 4.4-4.5 and
 // deck-format.md section 3: nodal mass scaling (/DT/NODA/CST), the /DT minimum stop, inverted elements,
 // and `radx run` on the default deck (energy balance and mass in NAME_summary.json).
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -57,6 +58,34 @@ double first_step(const radx::model::Model& m, const radx::model::RunControls& r
     return false;
   });
   return dt;
+}
+
+// A run of `m` to `t_stop` with `family` (rc.brick or rc.shell) held at /DT/.../CST Tmin = 0.98 x the step of
+// cycle 0, so the switch happens at once; records every cycle's step, the first element's own step and the
+// final position of node index `watch`.
+template <class Own>
+radx::solver::RunResult run_held_at_tmin(const radx::model::Model& m, double t_stop,
+                                         radx::model::DtControl radx::model::RunControls::*family,
+                                         Own own_step, radx::model::RunControls& rc,
+                                         std::vector<double>& steps, std::vector<double>& own,
+                                         std::size_t watch, std::array<double, 3>& at) {
+  rc.t_stop = t_stop;
+  const double first_dt = first_step(m, rc);
+  REQUIRE(first_dt > 0);
+  auto& f = rc.*family;
+  f.given = true;
+  f.action = radx::model::DtAction::Constant;
+  f.scale = 0.9;
+  f.t_min = 0.98 * first_dt;
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  const auto res = engine.run([&](const radx::solver::CycleReport& r) {
+    steps.push_back(r.dt);
+    own.push_back(own_step(engine));
+    return true;
+  });
+  const auto& s = engine.nodes();
+  at = {s.x[watch], s.y[watch], s.z[watch]};
+  return res;
 }
 
 }  // namespace
@@ -301,27 +330,17 @@ TEST_CASE("/DT/BRICK/CST switches the brick to small strain: its step stays cons
   const auto m = radx::test::model_of_deck(s);
 
   radx::model::RunControls rc;
-  rc.t_stop = 0.4 * a / V;
-  // Tmin just below the step at the start: the switch happens in the first cycles, long before the crush.
-  const double first_dt = first_step(m, rc);
-  REQUIRE(first_dt > 0);
-  rc.brick.given = true;
-  rc.brick.action = radx::model::DtAction::Constant;
-  rc.brick.scale = 0.9;
-  rc.brick.t_min = 0.98 * first_dt;
-  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
   std::vector<double> steps, own;
-  const auto res = engine.run([&](const radx::solver::CycleReport& r) {
-    steps.push_back(r.dt);
-    own.push_back(engine.brick_groups().at(0).dt[0]);
-    return true;
-  });
+  std::array<double, 3> top{};
+  const auto res = run_held_at_tmin(
+      m, 0.4 * a / V, &radx::model::RunControls::brick,
+      [](const radx::solver::ExplicitEngine& e) { return e.brick_groups().at(0).dt[0]; }, rc, steps, own, 4,
+      top);
   INFO(res.message);
   REQUIRE(res.status == radx::solver::RunStatus::Normal);
   REQUIRE(steps.size() > 10);
   // The crush really happened: the top face moved down by V t_stop (imposed).
-  const auto& s_nodes = engine.nodes();
-  CHECK(s_nodes.z[4] == Approx(a - V * rc.t_stop).epsilon(1e-9));
+  CHECK(top[2] == Approx(a - V * rc.t_stop).epsilon(1e-9));
   // After the switch (from the third cycle on, once the frozen geometry is captured) every step is Tmin (the
   // last two cycles are cut to end at t_stop). The element's own step is that of the frozen geometry: its
   // length V/A_max no longer shrinks with the height (0.6 a at the end: a large-strain step would be about
@@ -359,23 +378,15 @@ TEST_CASE("/DT/SHELL/CST switches the shell to small strain: its step stays exac
   const auto m = radx::test::model_of_deck(s);
 
   radx::model::RunControls rc;
-  rc.t_stop = 0.4 * a / V;
-  const double first_dt = first_step(m, rc);
-  REQUIRE(first_dt > 0);
-  rc.shell.given = true;
-  rc.shell.action = radx::model::DtAction::Constant;
-  rc.shell.scale = 0.9;
-  rc.shell.t_min = 0.98 * first_dt;
-  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
   std::vector<double> steps, own;
-  const auto res = engine.run([&](const radx::solver::CycleReport& r) {
-    steps.push_back(r.dt);
-    own.push_back(engine.shell_groups().at(0).dt[0]);
-    return true;
-  });
+  std::array<double, 3> pushed{};
+  const auto res = run_held_at_tmin(
+      m, 0.4 * a / V, &radx::model::RunControls::shell,
+      [](const radx::solver::ExplicitEngine& e) { return e.shell_groups().at(0).dt[0]; }, rc, steps, own, 1,
+      pushed);
   INFO(res.message);
   REQUIRE(res.status == radx::solver::RunStatus::Normal);
-  CHECK(engine.nodes().x[1] == Approx(a - V * rc.t_stop).epsilon(1e-9));  // pushed by 0.4 a
+  CHECK(pushed[0] == Approx(a - V * rc.t_stop).epsilon(1e-9));  // pushed by 0.4 a
   for (std::size_t k = 3; k + 2 < steps.size(); ++k) {
     INFO("cycle " << k);
     CHECK(steps[k] == Approx(rc.shell.t_min).epsilon(1e-12));
