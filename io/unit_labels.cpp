@@ -12,16 +12,23 @@ std::string power(const std::string& name, int e) {
 
 std::string unit_label(const model::Units& u, int mass, int length, int time) {
   if (mass == 0 && length == 0 && time == 0) return "1";
-  const bool si = u.mass_name == "kg" && u.length_name == "m" && u.time_name == "s";
-  if (si) {
-    struct Named {
-      int m, l, t;
-      const char* name;
-    };
-    static constexpr Named kNamed[] = {
-        {1, 2, -2, "J"}, {1, 1, -2, "N"}, {1, 0, -2, "N/m"}, {1, -1, -2, "Pa"}};
-    for (const auto& n : kNamed)
-      if (n.m == mass && n.l == length && n.t == time) return n.name;
+  // The consistent unit systems crash decks use, with the names engineers read: energy, force, force per
+  // length, stress.
+  struct System {
+    const char *mass, *length, *time;
+    const char* names[4];
+  };
+  static constexpr System kSystems[] = {
+      {"kg", "m", "s", {"J", "N", "N/m", "Pa"}},
+      {"Mg", "mm", "s", {"mJ", "N", "N/mm", "MPa"}},
+      {"kg", "mm", "ms", {"J", "kN", "kN/mm", "GPa"}},
+      {"g", "mm", "ms", {"mJ", "N", "N/mm", "MPa"}},
+  };
+  static constexpr int kDims[4][3] = {{1, 2, -2}, {1, 1, -2}, {1, 0, -2}, {1, -1, -2}};
+  for (const auto& sys : kSystems) {
+    if (u.mass_name != sys.mass || u.length_name != sys.length || u.time_name != sys.time) continue;
+    for (int k = 0; k < 4; ++k)
+      if (kDims[k][0] == mass && kDims[k][1] == length && kDims[k][2] == time) return sys.names[k];
   }
   std::string num, den;
   auto add = [&](const std::string& name, int e) {
