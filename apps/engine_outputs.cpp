@@ -246,14 +246,20 @@ void EngineOutputs::on_report(const solver::CycleReport& r) {
     double next = kNever;
     if (c.anim_dt > 0) {
       next = c.anim_start;
-      if (r.time >= next) next += c.anim_dt * (std::floor((r.time - c.anim_start) / c.anim_dt) + 1.0);
+      if (r.time >= next) next += c.anim_dt * std::floor((r.time - c.anim_start) / c.anim_dt);
+      while (next <= r.time) next += c.anim_dt;  // strictly after, whatever the rounding of the floor
       if (next > c.anim_stop) next = kNever;
     }
     s.next_state = next;
   }
   if (s.th && r.time >= s.next_th) {
     s.write_th_row(r, s.th->rows() == 0);  // the file exists from the first row on
-    s.next_th = c.th_dt < kNoInterval ? c.th_dt * (std::floor(r.time / c.th_dt) + 1.0) : kNever;
+    double next = kNever;
+    if (c.th_dt < kNoInterval) {
+      next = c.th_dt * std::floor(r.time / c.th_dt);
+      while (next <= r.time) next += c.th_dt;
+    }
+    s.next_th = next;
   }
 }
 
@@ -263,7 +269,10 @@ void EngineOutputs::finish(const solver::RunResult& result, bool plot, std::ostr
   const double in_run = s.seconds;
   if (result.time > s.last_state_time) s.write_state(result.time, result.dt1);
   if (s.th) {
-    if (result.last.time > s.last_th_time) s.write_th_row(result.last, false);
+    // The last full report is the run's last cycle unless an error stopped it first; a row then would mix
+    // that report's energies with the nodes of the later state, so none is written.
+    if (result.last.time > s.last_th_time && result.last.time == result.time)
+      s.write_th_row(result.last, false);
     const auto t0 = std::chrono::steady_clock::now();
     s.th->flush();
     s.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -107,6 +107,7 @@ struct Type7Contact::Impl {
   std::vector<std::int32_t> touched;  // nodes with a force this cycle, ascending
   std::vector<std::uint8_t> is_touched;
   std::vector<std::string> messages;
+  std::vector<std::int32_t> elements_around0;  // elements at each node at the start (Idel node removal)
   // Contact stiffness summed per node this cycle, for the nodal stability steps.
   std::vector<double> k_sum;
   std::vector<std::int32_t> k_nodes;
@@ -241,6 +242,13 @@ struct Type7Contact::Impl {
     }
     force.assign(3 * m.nodes.size(), 0.0);
     is_touched.assign(m.nodes.size(), 0);
+    elements_around0.assign(m.nodes.size(), 0);
+    for (const auto* b : {&m.shells, &m.shells3, &m.bricks}) {
+      const auto npe = static_cast<std::size_t>(b->npe());
+      for (std::size_t e = 0; e < b->size(); ++e)
+        for (std::size_t k = 0; k < npe; ++k)
+          if (b->conn[e * npe + k] >= 0) ++elements_around0[static_cast<std::size_t>(b->conn[e * npe + k])];
+    }
     k_sum.assign(m.nodes.size(), 0.0);
     k_interface.assign(m.nodes.size(), 0);
     k_mass_scaling.assign(m.nodes.size(), 0);
@@ -404,7 +412,10 @@ struct Type7Contact::Impl {
       const std::array<double, 4>& best_h = cl.h;
       const std::array<Vec3, 4>& best_x = cl.x;
       c = end;
-      if (best < 0) continue;
+      if (best < 0) {  // no segment left (removed by Idel): the friction history ends with the contact
+        st.f_t[ks] = Vec3{};
+        continue;
+      }
       const auto sb = static_cast<std::size_t>(best);
       const double g_full = pair_gap(in, in.gap_node[ks], in.gap_segment[sb]);
       // Inacti 5, 6: the reduced initial gap returns to the full gap as the pair opens.
@@ -414,7 +425,10 @@ struct Type7Contact::Impl {
             std::min(st.reduction[ks], std::max(0.0, g_full - (in.inacti == 6 ? 0.95 : 1.0) * best_d));
       const double g = g_full - st.reduction[ks];
       const double p = g - best_d;
-      if (g <= 0) continue;
+      if (g <= 0) {
+        st.f_t[ks] = Vec3{};
+        continue;
+      }
       // Normal from the contact point to the node (two-sided), or the segment normal.
       Vec3 cpt{};
       for (std::size_t j = 0; j < 4; ++j)
@@ -498,7 +512,12 @@ struct Type7Contact::Impl {
       const double c_visc = cdamp + (in.iform == 2 ? 0.0 : in.vis_f * std::sqrt(2.0 * K * ms));
       if (c_visc > 0 && (in.fric > 0 || in.ifric > 0 || cdamp > 0)) {
         const double c_total = cdamp + ((in.fric > 0 || in.ifric > 0) ? c_visc - cdamp : 0.0);
-        if (c_total > 0) dt_pair = std::min(dt_pair, scale * ms / c_total);
+        double dt_dash = c_total > 0 ? scale * ms / c_total : kInf;
+        // Under /DT/INTER/CST (plain TYPE7) the step must stay at Tmin: this limit keeps a margin of more
+        // than two to the dashpot's stability bound 2 m / c, so it is not allowed below Tmin there.
+        if (controls.t_min > 0 && controls.action == ContactControls::Action::AddMass && !in.lagdt)
+          dt_dash = std::max(dt_dash, controls.t_min);
+        dt_pair = std::min(dt_pair, dt_dash);
       }
       if (controls.t_min > 0 && std::min(dt_spring, dt_pair) < controls.t_min &&
           controls.action == ContactControls::Action::Delete) {
@@ -573,6 +592,10 @@ ContactStep Type7Contact::compute(double t, double dt1, const ContactNodes& node
   for (auto& st : s.interfaces) {
     s.book_work(st, nodes, dt1);
     const ContactStep v = s.interface_cycle(st, t, dt1, nodes);
+    // Both halves of the step's work are in now (book_work and interface_cycle).
+    st.result.e_elastic = -st.w_elastic;
+    st.result.e_damping = -st.w_damping;
+    st.result.e_friction = -st.w_friction;
     if (v.dt < vote.dt) vote = v;
   }
   std::sort(s.touched.begin(), s.touched.end());
@@ -610,9 +633,12 @@ void Type7Contact::elements_deleted(std::span<const std::uint8_t> alive) {
       st.search->remove_segment(static_cast<std::int32_t>(g));
     }
     if (idel < 0) continue;
-    for (std::size_t k = 0; k < st.in->secondary_nodes.size(); ++k)
-      if (!st.node_off[k] && alive_around[static_cast<std::size_t>(st.in->secondary_nodes[k])] == 0)
+    // Only nodes that had elements lose them: a node without any (a rigid-body or mass-only node) stays.
+    for (std::size_t k = 0; k < st.in->secondary_nodes.size(); ++k) {
+      const auto n = static_cast<std::size_t>(st.in->secondary_nodes[k]);
+      if (!st.node_off[k] && alive_around[n] == 0 && s.elements_around0[n] > 0)
         s.deactivate(st, k, "is no longer connected to any element (Idel): removed");
+    }
   }
 }
 

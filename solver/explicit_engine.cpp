@@ -505,7 +505,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
       dt2 = dt_elem;
     } else {
       dt2 = std::min(dt_elem, 1.1 * dt1);
-      if (dt2 != dt_elem) ctl.kind = control.kind, ctl.user_id = control.user_id;
+      if (dt2 != dt_elem) ctl = control;
     }
     if (!std::isfinite(dt2)) {
       res.status = RunStatus::Error;

@@ -264,11 +264,18 @@ void gather_node_field(const ExplicitEngine& e, NodeField f, double dt1, std::sp
       case NodeField::NodalTimeStep: break;
     }
   }
-  if (f == NodeField::ContactForce && e.contact() != nullptr) {
+  if (e.contact() != nullptr && (f == NodeField::ContactForce || f == NodeField::InternalForce)) {
+    // f holds the contact forces too: the contact field is the contact buffer, and the internal force
+    // f_ext - f gets them back.
     const auto& fc = e.contact()->force();
     for (const auto n : e.contact()->touched()) {
       const auto k = static_cast<std::size_t>(n);
-      put3(k, fc[3 * k], fc[3 * k + 1], fc[3 * k + 2]);
+      if (f == NodeField::ContactForce) {
+        put3(k, fc[3 * k], fc[3 * k + 1], fc[3 * k + 2]);
+      } else {
+        put3(k, s.fx_ext[k] - s.fx[k] + fc[3 * k], s.fy_ext[k] - s.fy[k] + fc[3 * k + 1],
+             s.fz_ext[k] - s.fz[k] + fc[3 * k + 2]);
+      }
     }
   }
 }
