@@ -18,8 +18,8 @@ using radx::test::Line;
 
 namespace {
 
-// One steel cube of side a (LAW1), at rest, nothing else.
-radx::model::Model cube(double a, double vz = 0.0) {
+// The deck text (no /END) of one steel cube of side a (LAW1): nodes 1-4 on z = 0, 5-8 on z = a.
+std::string cube_text(double a) {
   std::string s = radx::test::begin_block(2026, "Mg mm s") + "/NODE\n";
   for (int k = 0; k < 8; ++k) {
     const double x = (k == 1 || k == 2 || k == 5 || k == 6) ? a : 0.0;
@@ -33,6 +33,12 @@ radx::model::Model cube(double a, double vz = 0.0) {
   s += "/BRICK/1\n" + b.str() + "\n/PART/1\ncube\n" + Line().put(1, 1, 10).put(1, 11, 20).str() + "\n";
   s += "/PROP/SOLID/1\nsolid\n\n\n/MAT/LAW1/1\nsteel\n" + Line().put(7.85e-9, 1, 20).str() + "\n" +
        Line().put(210000.0, 1, 20).put(0.3, 21, 40).str() + "\n";
+  return s;
+}
+
+// One steel cube of side a (LAW1), at rest, nothing else.
+radx::model::Model cube(double a, double vz = 0.0) {
+  std::string s = cube_text(a);
   if (vz != 0.0)
     s += "/GRNOD/PART/1\nall\n" + Line().put(1, 1, 10).str() + "\n/INIVEL/TRA/1\nv\n" +
          Line().put(0.0, 1, 20).put(0.0, 21, 40).put(vz, 41, 60).put(1, 61, 70).str() + "\n";
@@ -299,19 +305,7 @@ TEST_CASE("/DT/BRICK/CST switches the brick to small strain: its step stays cons
   // height (dt ~ V / A_max); after the switch at Tmin the geometry of the switch is kept, so the element's
   // own step (before the scale) and the run's step stay constant: elements.md's "step stays constant".
   const double a = 10.0, V = 2.0e5;  // mm/s: 40 % of a in 2e-5 s, some tens of brick steps
-  std::string s = radx::test::begin_block(2026, "Mg mm s") + "/NODE\n";
-  for (int k = 0; k < 8; ++k) {
-    const double x = (k == 1 || k == 2 || k == 5 || k == 6) ? a : 0.0;
-    const double y = (k == 2 || k == 3 || k == 6 || k == 7) ? a : 0.0;
-    const double z = k >= 4 ? a : 0.0;
-    s += Line().put(k + 1, 1, 10).put(x, 11, 30).put(y, 31, 50).put(z, 51, 70).str() + "\n";
-  }
-  Line b;
-  b.put(1, 1, 10);
-  for (int k = 0; k < 8; ++k) b.put(k + 1, 11 + 10 * k, 20 + 10 * k);
-  s += "/BRICK/1\n" + b.str() + "\n/PART/1\ncube\n" + Line().put(1, 1, 10).put(1, 11, 20).str() + "\n";
-  s += "/PROP/SOLID/1\nsolid\n\n\n/MAT/LAW1/1\nsteel\n" + Line().put(7.85e-9, 1, 20).str() + "\n" +
-       Line().put(210000.0, 1, 20).put(0.3, 21, 40).str() + "\n";
+  std::string s = cube_text(a);
   auto group = [&](int id, std::vector<int> nodes) {
     Line l;
     for (std::size_t k = 0; k < nodes.size(); ++k)
