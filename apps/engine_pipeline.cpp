@@ -132,6 +132,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   listing.header(h);
 
   const auto wall0 = std::chrono::steady_clock::now();
+  const bool lagrange_column = engine.contact() != nullptr && engine.contact()->has_lagrange();
   auto to_line = [&](const solver::CycleReport& r) {
     io::ListingLine l;
     l.cycle = r.cycle;
@@ -148,6 +149,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     l.mass_error = r.mass0 > 0 ? (r.mass - r.mass0) / r.mass0 : 0.0;
     l.total_mass = r.mass;
     l.added_mass = r.added_mass;
+    if (lagrange_column) l.switched_pairs = r.switched_pairs;
     return l;
   };
   std::string stop_message;
@@ -223,6 +225,28 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
       s.interfaces.push_back(io::InterfaceSummary{r.id, r.active_pairs, r.max_penetration,
                                                   r.switched_pairs_max, r.switched_pairs_total, r.added_mass,
                                                   r.deactivated_nodes});
+  if (const auto* c = engine.contact(); c != nullptr && c->has_lagrange()) {
+    const auto& st = c->lagrange_stats();
+    auto& L = s.lagrange;
+    L.present = true;
+    L.cycles = st.cycles;
+    L.rows_max = st.rows_max;
+    L.rows_total = st.rows_total;
+    L.nonzeros_max = st.nonzeros_max;
+    L.dropped_rows = st.dropped_rows;
+    L.merged_rows = st.merged_rows;
+    L.factorizations = st.factorizations;
+    L.analyses = st.analyses;
+    L.symbolic_reuses = st.symbolic_reuses;
+    L.regularisations = st.regularisations;
+    L.active_set_passes = st.active_set_passes;
+    L.passes_max = st.passes_max;
+    L.unconverged = st.unconverged;
+    L.beta_max = st.beta_max;
+    L.seconds_assembly = st.seconds_assembly;
+    L.seconds_factorization = st.seconds_factorization;
+    L.seconds_solve = st.seconds_solve;
+  }
   s.states = outputs->states_written();
   s.series = outputs->series_path();
   if (!model.time_histories.empty() || controls.th_dt < 1e29)

@@ -21,16 +21,20 @@
 //   + sum of the free h); it votes dt = scale sqrt(2 m / G). Against a fixed segment this is the
 //   specification's scale sqrt(2 m / k_eff); when both sides move it keeps the same margin to the critical
 //   step of the relative motion, which the per-node formula alone does not (a deliberate difference).
-//   A pair about to close (gap closed within two steps at its approach speed) adds K already.
-//   dt_k = 0.5 (g - p) / max(-v_n, tiny); the dashpots (damping c, viscous friction C) add dt <= scale m/(c +
-//   C). /DT/INTER/CST (plain TYPE7): below Tmin the node's mass grows to m = k_eff (Tmin / scale)^2 / 2 (main
-//   nodes with h_j k_eff), and the pair's own vote leaves the spring step to the nodal step so that it does
-//   not undercut Tmin; /DT/INTER/DEL: a pair whose step (spring, kinematic, dashpot) is below Tmin leaves the
-//   interface before it acts (no force, IBC release or stiffness in that cycle), and a pair about to close
-//   whose step at p = 0 is already below Tmin does not vote (it will leave as it closes). A node whose
-//   remaining gap (g - p)/g falls below 1e-6 cannot be held by the penalty: it is deactivated with a warning
-//   naming the node and the interface. IBC: at the node's first impact, its fixed X/Y/Z translations selected
-//   by IBCX/Y/Z are released.
+//   A pair about to close (gap closed within two steps at its approach speed) adds K already. Every pair
+//   votes with the stiffness it can reach within the step at its approach speed w (reach_factor: k_t at p
+//   times (1 + tau0 w / g)^2, tau0 the step at p = 0), so that a fast pair cannot close into a stiffer part
+//   of the hyperbola than its vote allowed (without it a pair crossing most of a small gap in one step,
+//   voted with k_t at the start of the step, met a stiffness up to 20 times larger and the run gained
+//   energy). dt_k = 0.5 (g - p) / max(-v_n, tiny); the dashpots (damping c, viscous friction C) add dt <=
+//   scale m/(c + C). /DT/INTER/CST (plain TYPE7): below Tmin the node's mass grows to m = k_eff (Tmin /
+//   scale)^2 / 2 (main nodes with h_j k_eff), and the pair's own vote leaves the spring step to the nodal
+//   step so that it does not undercut Tmin; /DT/INTER/DEL: a pair whose step (spring, kinematic, dashpot) is
+//   below Tmin leaves the interface before it acts (no force, IBC release or stiffness in that cycle), and a
+//   pair about to close whose step at p = 0 is already below Tmin does not vote (it will leave as it closes).
+//   A node whose remaining gap (g - p)/g falls below 1e-6 cannot be held by the penalty: it is deactivated
+//   with a warning naming the node and the interface. IBC: at the node's first impact, its fixed X/Y/Z
+//   translations selected by IBCX/Y/Z are released.
 // Initial penetrations at Tstart > 0 (4.6): on the interface's first active cycle the nodes closer than the
 // gap get the Inacti treatment from the current coordinates (1: the node, 2: the segment leave; 3: the node
 // is moved out to the gap; 5, 6: reduced gap), reported once; at t = 0 the starter did it.
@@ -80,8 +84,31 @@ struct InterfaceState {
   std::vector<std::int32_t> owner_cell;             // model cell behind each segment (Idel), -1 unknown
   std::vector<PairRecord> pairs;
   InterfaceResult result;
-  double w_elastic = 0, w_damping = 0, w_friction = 0;
-  bool started = false;  // the first cycle inside [Tstart, Tstop) has been seen
+  double w_elastic = 0, w_damping = 0, w_friction = 0, w_lagrange = 0;
+  bool started = false;      // the first cycle inside [Tstart, Tstop) has been seen
+  bool warned_held = false;  // a LAGDT pair kept on the penalty path by a kinematic condition was reported
+  std::int32_t index = 0;    // position among the engine's interfaces (the friction law of its rows)
+};
+
+// A penalty pair of this cycle, computed but not applied yet: the LAGDT switch looks at the summed nodal
+// stiffness of all pairs before the forces are scattered.
+struct PendingPair {
+  InterfaceState* st = nullptr;
+  std::size_t ks = 0;  // secondary index in the interface
+  SwitchedPair row;    // what the pair becomes if it switches
+  Vec3 f_el{}, f_dp{}, f_fr{}, vr{};
+  double keff = 0, dt_vote = kInf, p = 0;
+  bool switchable = false;
+};
+
+// The work of a switched pair's forces over the half step after t^n, booked at the next cycle.
+struct LagrangeRecord {
+  std::int32_t iface;
+  std::int32_t node;
+  std::array<std::int32_t, 4> seg;
+  std::array<double, 4> h;
+  Vec3 f_normal, f_friction, vr_full;  // forces on the secondary node; v_r at t^n
+  double dt2;
 };
 
 Vec3 node_x(const ContactNodes& n, std::int32_t i) {
@@ -95,6 +122,16 @@ Vec3 node_v(const ContactNodes& n, std::int32_t i) {
 
 double segment_area(const std::array<Vec3, 4>& x, bool triangle) {
   return triangle ? model::triangle_area(x[0], x[1], x[2]) : model::quad_area(x[0], x[1], x[2], x[3]);
+}
+
+// The stiffness a pair can reach within the step, as a factor on its stiffness at the current penetration.
+// With remaining gap r = g - p and approach speed w = max(0, -v_n), a step dt takes the pair to
+// k_t(p + w dt) = K g^2 / (r - w dt)^2; with tau0 = scale sqrt(2 m / K) the stable step at p = 0,
+// dt <= tau0 (r - w dt) / g holds for dt <= tau0 r / (g + tau0 w), which is the step of the stiffness
+// k_t(p) (1 + tau0 w / g)^2.
+double reach_factor(double tau0, double g, double w) {
+  const double f = 1.0 + tau0 * std::max(w, 0.0) / g;
+  return f * f;
 }
 
 }  // namespace
@@ -113,6 +150,135 @@ struct Type7Contact::Impl {
   std::vector<std::int32_t> k_nodes;
   std::vector<std::int64_t> k_interface;     // an interface that touched the node (for the listing)
   std::vector<std::uint8_t> k_mass_scaling;  // a plain TYPE7 pair touched it (/DT/INTER/CST adds mass)
+  // LAGDT.
+  std::vector<PendingPair> pending;
+  std::vector<SwitchedPair> switched;  // this cycle's rows, in interface then node order
+  std::vector<double> switched_p;      // their penetrations (results)
+  std::vector<FrictionLaw> laws;       // per interface
+  std::vector<PairForce> lagrange_out;
+  std::vector<LagrangeRecord> lagrange_records;
+  std::vector<NodeForce> lagrange_forces;
+  std::vector<double> lagrange_buf;  // [3 nodes], zero outside a call
+  std::vector<std::int32_t> lagrange_touched;
+  LagrangeSolver lagrange;
+
+  // LAGDT pairs switch under /DT/INTER/CST or /DT/INTER/LAG with a Tmin.
+  [[nodiscard]] bool lagrange_on() const {
+    return controls.t_min > 0 && (controls.action == ContactControls::Action::AddMass ||
+                                  controls.action == ContactControls::Action::Lagrange);
+  }
+
+  // The pair's own stable step: min over its free nodes of scale sqrt(2 m_i / G_i), G the pair's
+  // Gershgorin row sums (add_pair_stiffness) for the spring k.
+  double pair_spring_step(std::int32_t s_node, const std::array<std::int32_t, 4>& seg,
+                          const std::array<double, 4>& h, double k, const ContactNodes& nodes) const {
+    auto is_free = [&](std::int32_t n) { return (nodes.fixed[static_cast<std::size_t>(n)] & 7u) != 7u; };
+    auto mass = [&](std::int32_t n) { return nodes.mass[static_cast<std::size_t>(n)]; };
+    const bool triangle = seg[3] == seg[2];
+    double h_free = 0;
+    for (std::size_t j = 0; j < 4; ++j)
+      if (h[j] > 0 && !(j == 3 && triangle) && is_free(seg[j])) h_free += h[j];
+    const bool s_free = is_free(s_node);
+    double dt = kInf;
+    const double scale = controls.dt_scale;
+    if (s_free && mass(s_node) > 0)
+      dt = std::min(dt, scale * std::sqrt(2.0 * mass(s_node) / (k * (1.0 + h_free))));
+    for (std::size_t j = 0; j < 4; ++j)
+      if (h[j] > 0 && !(j == 3 && triangle) && is_free(seg[j]) && mass(seg[j]) > 0)
+        dt = std::min(dt,
+                      scale * std::sqrt(2.0 * mass(seg[j]) / (h[j] * k * ((s_free ? 1.0 : 0.0) + h_free))));
+    return dt;
+  }
+
+  // Whether a LAGDT pair that would switch may: not when a kinematic condition other than /BCS moves one of
+  // its nodes after step 6 (it would undo the correction); reported once per interface.
+  bool may_switch(InterfaceState& st, const SwitchedPair& row, const ContactNodes& nodes) {
+    if (nodes.held.empty()) return true;
+    std::int32_t held = -1;
+    if (nodes.held[static_cast<std::size_t>(row.node)]) held = row.node;
+    for (std::size_t j = 0; j < 4 && held < 0; ++j)
+      if (row.h[j] > 0 && nodes.held[static_cast<std::size_t>(row.seg[j])]) held = row.seg[j];
+    if (held < 0) return true;
+    if (!st.warned_held) {
+      st.warned_held = true;
+      messages.push_back("interface " + std::to_string(st.in->id) + ": node " +
+                         std::to_string(model.nodes.id[static_cast<std::size_t>(held)]) +
+                         " has an imposed velocity, a rigid body or a rigid wall: LAGDT pairs on such nodes "
+                         "stay on the penalty path (reported once per interface)");
+    }
+    return false;
+  }
+
+  void switch_pair(InterfaceState& st, const SwitchedPair& row, std::size_t ks, double p) {
+    switched.push_back(row);
+    switched_p.push_back(p);
+    st.f_t[ks] = Vec3{};
+    ++st.result.switched_pairs;
+  }
+
+  void release_ibc(InterfaceState& st, std::size_t ks, std::int32_t node, const ContactNodes& nodes) {
+    if (st.hit[ks]) return;
+    st.hit[ks] = 1;
+    std::uint8_t mask = 0;
+    for (unsigned d = 0; d < 3; ++d)
+      if (st.in->ibc[d]) mask = static_cast<std::uint8_t>(mask | (1u << d));
+    if (mask) nodes.fixed[static_cast<std::size_t>(node)] &= static_cast<std::uint8_t>(~mask);
+  }
+
+  // After every interface's pairs are computed: their stiffness summed per node, then a LAGDT pair on a node
+  // whose summed step falls below Tmin switches too (several pairs at one node add up), so that the
+  // step never falls below Tmin for LAGDT pairs.
+  void settle_switches(const ContactNodes& nodes) {
+    for (const auto& q : pending) add_pair_stiffness(q.row.node, q.row.seg, q.row.h, q.keff, nodes, *q.st);
+    if (!lagrange_on()) return;
+    const double scale = controls.dt_scale;
+    auto below = [&](std::int32_t n) {
+      const auto i = static_cast<std::size_t>(n);
+      const double k = k_sum[i];
+      return (nodes.fixed[i] & 7u) != 7u && k > 0 && nodes.mass[i] > 0 &&
+             scale * std::sqrt(2.0 * nodes.mass[i] / k) < controls.t_min;
+    };
+    for (auto& q : pending) {
+      if (!q.switchable) continue;
+      bool low = below(q.row.node);
+      for (std::size_t j = 0; j < 4 && !low; ++j) low = q.row.h[j] > 0 && below(q.row.seg[j]);
+      if (!low) continue;
+      add_pair_stiffness(q.row.node, q.row.seg, q.row.h, -q.keff, nodes, *q.st);
+      switch_pair(*q.st, q.row, q.ks, q.p);
+      q.st = nullptr;  // applied as a row, not as a penalty pair
+    }
+  }
+
+  // Scatters a penalty pair's forces, books the current half of its work and records its vote.
+  void apply_pair(const PendingPair& q, ContactStep& vote) {
+    auto& st = *q.st;
+    const auto& seg = q.row.seg;
+    Vec3 f_total{};
+    for (std::size_t d = 0; d < 3; ++d) f_total[d] = q.f_el[d] + q.f_dp[d] + q.f_fr[d];
+    add_force(q.row.node, f_total);
+    for (std::size_t j = 0; j < 4; ++j) {
+      if (q.row.h[j] == 0) continue;
+      if (j == 3 && seg[3] == seg[2]) continue;
+      add_force(seg[j], model::scale(f_total, -q.row.h[j]));
+    }
+    st.pairs.push_back(PairRecord{q.row.node, seg, q.row.h, q.f_el, q.f_dp, q.f_fr});
+    // The other half of the step's work (see book_work): this cycle's force with v^{n-1/2}.
+    st.w_elastic += 0.5 * model::dot(q.f_el, q.vr) * dt1_;
+    st.w_damping += 0.5 * model::dot(q.f_dp, q.vr) * dt1_;
+    st.w_friction += 0.5 * model::dot(q.f_fr, q.vr) * dt1_;
+    ++st.result.active_pairs;
+    st.result.max_penetration = std::max(st.result.max_penetration, q.p);
+    for (std::size_t d = 0; d < 3; ++d) {
+      st.result.normal_force[d] += q.f_el[d] + q.f_dp[d];
+      st.result.tangential_force[d] += q.f_fr[d];
+    }
+    if (q.dt_vote < vote.dt) {
+      vote.dt = q.dt_vote;
+      vote.interface_id = st.in->id;
+      vote.node_id = model.nodes.id[static_cast<std::size_t>(q.row.node)];
+    }
+  }
+  double dt1_ = 0;  // the step of the cycle being computed
 
   void add_stiffness(std::int32_t n, double k, const InterfaceState& st) {
     const auto i = static_cast<std::size_t>(n);
@@ -238,6 +404,8 @@ struct Type7Contact::Impl {
       const double gap_max = in.igap == 0 ? in.gapmin : std::max(in.gap_hi, in.gapmin);
       st.search = std::make_unique<Type7Search>(in.secondary_nodes, st.segments, gap_max, in.bumult);
       st.result.id = in.id;
+      st.index = static_cast<std::int32_t>(interfaces.size());
+      laws.push_back(FrictionLaw{std::max(0, in.ifric), in.fric, in.c});
       interfaces.push_back(std::move(st));
     }
     force.assign(3 * m.nodes.size(), 0.0);
@@ -252,6 +420,7 @@ struct Type7Contact::Impl {
     k_sum.assign(m.nodes.size(), 0.0);
     k_interface.assign(m.nodes.size(), 0);
     k_mass_scaling.assign(m.nodes.size(), 0);
+    lagrange_buf.assign(3 * m.nodes.size(), 0.0);
   }
 
   void touch(std::int32_t n) {
@@ -288,6 +457,23 @@ struct Type7Contact::Impl {
     st.result.e_elastic = -st.w_elastic;
     st.result.e_damping = -st.w_damping;
     st.result.e_friction = -st.w_friction;
+  }
+
+  // The second half of the last cycle's multiplier work, over [t^n, t^{n+1/2}] with the mean velocity
+  // (v_r^n + v_r^{n+1/2}) / 2, now that v^{n+1/2} is known (the velocities of this call).
+  void book_lagrange_work(const ContactNodes& nodes) {
+    for (const auto& r : lagrange_records) {
+      Vec3 vr = node_v(nodes, r.node);
+      const bool triangle = r.seg[3] == r.seg[2];
+      for (std::size_t j = 0; j < (triangle ? 3u : 4u); ++j)
+        if (r.h[j] != 0) vr = model::sub(vr, model::scale(node_v(nodes, r.seg[j]), r.h[j]));
+      const Vec3 vmean = model::scale(model::add(vr, r.vr_full), 0.5);
+      auto& st = interfaces[static_cast<std::size_t>(r.iface)];
+      st.w_lagrange += model::dot(r.f_normal, vmean) * 0.5 * r.dt2;
+      st.w_friction += model::dot(r.f_friction, vmean) * 0.5 * r.dt2;
+      st.result.e_lagrange = -st.w_lagrange;
+    }
+    lagrange_records.clear();
   }
 
   void deactivate(InterfaceState& st, std::size_t k, const std::string& why) {
@@ -384,6 +570,7 @@ struct Type7Contact::Impl {
     st.result.active_pairs = 0;
     st.result.normal_force = {0, 0, 0};
     st.result.tangential_force = {0, 0, 0};
+    st.result.switched_pairs = 0;
     if (t < in.t_start || t >= in.t_stop) return vote;
     if (!st.started) {
       st.started = true;
@@ -393,6 +580,8 @@ struct Type7Contact::Impl {
     const auto& cand = st.search->candidates();
     const double scale = controls.dt_scale;
     const double alpha = friction_filter_alpha(in.ifric >= 0 ? in.ifiltr : 0, in.xfreq, dt1);
+    const bool mass_scaled_interface =
+        controls.action == ContactControls::Action::AddMass && controls.t_min > 0 && !in.lagdt;
     std::size_t c = 0;
     while (c < cand.size()) {
       const std::int32_t k = cand[c].node;
@@ -459,8 +648,22 @@ struct Type7Contact::Impl {
         // interface as soon as it closes (k_eff >= K), so it must not pull the step below Tmin before.
         const bool leaves = controls.action == ContactControls::Action::Delete && controls.t_min > 0 &&
                             ms > 0 && scale * std::sqrt(2.0 * ms / K) < controls.t_min;
-        if (vn < 0 && -p < -2.0 * vn * dt1 && !leaves)
-          add_pair_stiffness(node, st.segments[sb], best_h, K, nodes, st);
+        if (vn < 0 && -p < -2.0 * vn * dt1 && !leaves) {
+          // LAGDT: a pair whose step at p = 0 is already below Tmin does not drag the step down before it
+          // closes: it becomes a row that lets it close down to the gap within the step, no further.
+          // It votes with the stiffness it can reach within the step (reach_factor, from the gap's edge where
+          // the hyperbola is extended to p < 0), never less than K.
+          const double tau0 = ms > 0 && !mass_scaled_interface ? scale * std::sqrt(2.0 * ms / K) : 0.0;
+          const double ratio = g / (g - p);
+          const double k_reach = std::max(K, K * ratio * ratio * reach_factor(tau0, g, -vn));
+          const SwitchedPair row{node, st.segments[sb], best_h, n, best_d, g, st.segment_area0[sb], st.index};
+          if (lagrange_on() && in.lagdt &&
+              pair_spring_step(node, st.segments[sb], best_h, k_reach, nodes) < controls.t_min &&
+              may_switch(st, row, nodes))
+            switch_pair(st, row, ks, 0.0);
+          else
+            add_pair_stiffness(node, st.segments[sb], best_h, k_reach, nodes, st);
+        }
         continue;
       }
       if ((g - p) / g < 1e-6) {
@@ -504,7 +707,12 @@ struct Type7Contact::Impl {
       const double kt = penalty_tangent_stiffness(K, g, p);
       const double xi = ms > 0 ? cdamp / (2.0 * std::sqrt(kt * ms)) : 0.0;
       const double shrink = std::sqrt(1.0 + xi * xi) - xi;
-      const double keff = kt / (shrink * shrink);
+      // Voted with the stiffness the pair can reach within the step (reach_factor): tau0 = the step at p = 0.
+      // Not under /DT/INTER/CST on a plain TYPE7: there the step is held at Tmin by added mass, computed from
+      // k_eff as type7-lagdt.md section 6 writes it.
+      const double reach =
+          ms > 0 && !mass_scaled_interface ? reach_factor(scale * std::sqrt(2.0 * ms / K), g, -vn) : 1.0;
+      const double keff = kt / (shrink * shrink) * reach;
       const double dt_spring = ms > 0 ? scale * std::sqrt(2.0 * ms / keff) : kInf;
       double dt_pair = 0.5 * (g - p) / std::max(-vn, kTiny);  // kinematic
       // Dashpots computed with v^{n-1/2} overshoot when c dt / m > 1 (the velocity they damp changes sign
@@ -525,48 +733,35 @@ struct Type7Contact::Impl {
         deactivate(st, ks, "left the interface: its contact time step fell below the /DT/INTER/DEL minimum");
         continue;
       }
-      // IBC: release the selected boundary conditions at the first impact.
-      if (!st.hit[ks]) {
-        st.hit[ks] = 1;
-        std::uint8_t mask = 0;
-        for (unsigned d = 0; d < 3; ++d)
-          if (in.ibc[d]) mask = static_cast<std::uint8_t>(mask | (1u << d));
-        if (mask) nodes.fixed[static_cast<std::size_t>(node)] &= static_cast<std::uint8_t>(~mask);
-      }
-      // Forces: secondary node, then the main nodes with the weights.
-      Vec3 f_total{};
-      for (std::size_t d = 0; d < 3; ++d) f_total[d] = f_el[d] + f_dp[d] + f_fr[d];
-      add_force(node, f_total);
-      for (std::size_t j = 0; j < 4; ++j) {
-        if (best_h[j] == 0) continue;
-        if (j == 3 && st.segments[sb][3] == st.segments[sb][2]) continue;
-        add_force(st.segments[sb][j], model::scale(f_total, -best_h[j]));
-      }
-      st.pairs.push_back(PairRecord{node, st.segments[sb], best_h, f_el, f_dp, f_fr});
-      // The other half of the step's work (see book_work): this cycle's force with v^{n-1/2}.
-      st.w_elastic += 0.5 * model::dot(f_el, vr) * dt1;
-      st.w_damping += 0.5 * model::dot(f_dp, vr) * dt1;
-      st.w_friction += 0.5 * model::dot(f_fr, vr) * dt1;
-      ++st.result.active_pairs;
-      st.result.max_penetration = std::max(st.result.max_penetration, p);
-      for (std::size_t d = 0; d < 3; ++d) {
-        st.result.normal_force[d] += f_el[d] + f_dp[d];
-        st.result.tangential_force[d] += f_fr[d];
-      }
-      // Stability: the pair's stiffness is summed per node over every pair of every interface (two-pass
-      // contact puts two springs in parallel on the same nodes), and the nodal steps are taken in compute().
-      add_pair_stiffness(node, st.segments[sb], best_h, keff, nodes, st);
+      release_ibc(st, ks, node, nodes);
+      PendingPair q;
+      q.st = &st;
+      q.ks = ks;
+      q.row = SwitchedPair{node, st.segments[sb], best_h, n, best_d, g, area, st.index};
+      q.f_el = f_el;
+      q.f_dp = f_dp;
+      q.f_fr = f_fr;
+      q.vr = vr;
+      q.keff = keff;
+      q.p = p;
       // The pair's own vote: kinematic and dashpot limits, and the spring's step (never below the nodal step
       // of a free node, so redundant there) except under /DT/INTER/CST on a plain TYPE7, where the nodal step
       // adds mass to stay at Tmin and the pair's step, taken with the mass before that, must not undercut it.
       const bool mass_scaled =
           controls.action == ContactControls::Action::AddMass && controls.t_min > 0 && !in.lagdt;
       if (!mass_scaled) dt_pair = std::min(dt_pair, dt_spring);
-      if (dt_pair < vote.dt) {
-        vote.dt = dt_pair;
-        vote.interface_id = in.id;
-        vote.node_id = model.nodes.id[static_cast<std::size_t>(node)];
+      q.dt_vote = dt_pair;
+      // LAGDT: below Tmin the pair leaves the penalty path for this cycle and becomes a row (section 6).
+      if (lagrange_on() && in.lagdt) {
+        const bool wants =
+            std::min(dt_pair, pair_spring_step(node, st.segments[sb], best_h, keff, nodes)) < controls.t_min;
+        q.switchable = !wants || may_switch(st, q.row, nodes);
+        if (wants && q.switchable) {
+          switch_pair(st, q.row, ks, p);
+          continue;
+        }
       }
+      pending.push_back(q);
     }
     return vote;
   }
@@ -588,20 +783,132 @@ ContactStep Type7Contact::compute(double t, double dt1, const ContactNodes& node
     s.force[3 * k] = s.force[3 * k + 1] = s.force[3 * k + 2] = 0.0;
   }
   s.touched.clear();
-  ContactStep vote;
+  s.dt1_ = dt1;
+  s.book_lagrange_work(nodes);
+  s.pending.clear();
+  s.switched.clear();
+  s.switched_p.clear();
   for (auto& st : s.interfaces) {
     s.book_work(st, nodes, dt1);
-    const ContactStep v = s.interface_cycle(st, t, dt1, nodes);
-    // Both halves of the step's work are in now (book_work and interface_cycle).
+    s.interface_cycle(st, t, dt1, nodes);
+  }
+  s.settle_switches(nodes);
+  ContactStep vote;
+  for (const auto& q : s.pending)
+    if (q.st != nullptr) s.apply_pair(q, vote);
+  for (auto& st : s.interfaces) {
+    // Both halves of the step's work are in now (book_work and apply_pair).
     st.result.e_elastic = -st.w_elastic;
     st.result.e_damping = -st.w_damping;
     st.result.e_friction = -st.w_friction;
-    if (v.dt < vote.dt) vote = v;
+    st.result.switched_pairs_max = std::max(st.result.switched_pairs_max, st.result.switched_pairs);
+    st.result.switched_pairs_total += st.result.switched_pairs;
+  }
+  for (std::size_t k = 0; k < s.switched.size(); ++k) {
+    auto& r = s.interfaces[static_cast<std::size_t>(s.switched[k].law)].result;
+    r.max_penetration = std::max(r.max_penetration, s.switched_p[k]);
   }
   std::sort(s.touched.begin(), s.touched.end());
   const ContactStep nodal = s.nodal_steps(nodes);
   if (nodal.dt < vote.dt) vote = nodal;
   return vote;
+}
+
+const std::vector<NodeForce>& Type7Contact::lagrange_correction(const LagrangeNodesView& nodes, double dt1,
+                                                                double dt2) {
+  auto& s = *impl_;
+  s.lagrange_forces.clear();
+  if (s.switched.empty() || !(dt2 > 0)) return s.lagrange_forces;
+  s.lagrange_out.resize(s.switched.size());
+  const double dt12 = 0.5 * (dt1 + dt2);
+  s.lagrange.solve(
+      s.switched, s.laws,
+      LagrangeNodes{nodes.mass, nodes.vx, nodes.vy, nodes.vz, nodes.ax, nodes.ay, nodes.az, nodes.fixed},
+      dt12, dt2, s.lagrange_out);
+  // v_r at t^n = v^{n-1/2} + dt1/2 a^n (the full-step velocity of the energy balance; a held translation has
+  // a = 0 there, as the boundary conditions will make it).
+  auto v_full = [&](std::int32_t n) {
+    const auto i = static_cast<std::size_t>(n);
+    const double a[3] = {nodes.ax[i], nodes.ay[i], nodes.az[i]};
+    const double v[3] = {nodes.vx[i], nodes.vy[i], nodes.vz[i]};
+    Vec3 out{};
+    for (std::size_t d = 0; d < 3; ++d) out[d] = v[d] + ((nodes.fixed[i] >> d) & 1u ? 0.0 : 0.5 * dt1 * a[d]);
+    return out;
+  };
+  auto v_half = [&](std::int32_t n) {
+    const auto i = static_cast<std::size_t>(n);
+    return Vec3{nodes.vx[i], nodes.vy[i], nodes.vz[i]};
+  };
+  auto put = [&](std::int32_t n, const Vec3& f) {
+    s.add_force(n, f);
+    const auto k = 3 * static_cast<std::size_t>(n);
+    if (s.lagrange_buf[k] == 0 && s.lagrange_buf[k + 1] == 0 && s.lagrange_buf[k + 2] == 0)
+      s.lagrange_touched.push_back(n);
+    for (std::size_t d = 0; d < 3; ++d) s.lagrange_buf[k + d] += f[d];
+  };
+  for (std::size_t k = 0; k < s.switched.size(); ++k) {
+    const auto& row = s.switched[k];
+    const auto& out = s.lagrange_out[k];
+    if (out.lambda == 0 && model::norm(out.friction) == 0) continue;
+    auto& st = s.interfaces[static_cast<std::size_t>(row.law)];
+    const Vec3 fn = model::scale(row.n, out.lambda);
+    const Vec3 f = model::add(fn, out.friction);
+    const bool triangle = row.seg[3] == row.seg[2];
+    put(row.node, f);
+    for (std::size_t j = 0; j < (triangle ? 3u : 4u); ++j)
+      if (row.h[j] != 0) put(row.seg[j], model::scale(f, -row.h[j]));
+    for (std::size_t d = 0; d < 3; ++d) {
+      st.result.normal_force[d] += fn[d];
+      st.result.tangential_force[d] += out.friction[d];
+    }
+    // Work over [t^{n-1/2}, t^n] with the mean velocity of that half step (exact for a force constant over
+    // the step, which the multiplier is): F . (v_r^{n-1/2} + v_r^n) / 2 dt1 / 2; the other half at the next
+    // cycle (book_lagrange_work).
+    Vec3 vr_half = v_half(row.node), vr_full = v_full(row.node);
+    for (std::size_t j = 0; j < (triangle ? 3u : 4u); ++j) {
+      if (row.h[j] == 0) continue;
+      vr_half = model::sub(vr_half, model::scale(v_half(row.seg[j]), row.h[j]));
+      vr_full = model::sub(vr_full, model::scale(v_full(row.seg[j]), row.h[j]));
+    }
+    const Vec3 vmean = model::scale(model::add(vr_half, vr_full), 0.5);
+    st.w_lagrange += model::dot(fn, vmean) * 0.5 * dt1;
+    st.w_friction += model::dot(out.friction, vmean) * 0.5 * dt1;
+    st.result.e_lagrange = -st.w_lagrange;
+    st.result.e_friction = -st.w_friction;
+    s.lagrange_records.push_back(
+        LagrangeRecord{row.law, row.node, row.seg, row.h, fn, out.friction, vr_full, dt2});
+  }
+  std::sort(s.lagrange_touched.begin(), s.lagrange_touched.end());
+  for (const auto n : s.lagrange_touched) {
+    const auto k = 3 * static_cast<std::size_t>(n);
+    s.lagrange_forces.push_back(
+        NodeForce{n, {s.lagrange_buf[k], s.lagrange_buf[k + 1], s.lagrange_buf[k + 2]}});
+    s.lagrange_buf[k] = s.lagrange_buf[k + 1] = s.lagrange_buf[k + 2] = 0.0;
+  }
+  s.lagrange_touched.clear();
+  std::sort(s.touched.begin(), s.touched.end());
+  return s.lagrange_forces;
+}
+
+std::int64_t Type7Contact::switched_pairs() const {
+  return static_cast<std::int64_t>(impl_->switched.size());
+}
+
+bool Type7Contact::has_lagrange() const {
+  if (!impl_->lagrange_on()) return false;
+  for (const auto& st : impl_->interfaces)
+    if (st.in->lagdt) return true;
+  return false;
+}
+
+const LagrangeStats& Type7Contact::lagrange_stats() const {
+  return impl_->lagrange.stats();
+}
+
+double Type7Contact::energy_lagrange() const {
+  double e = 0;
+  for (const auto& st : impl_->interfaces) e += st.result.e_lagrange;
+  return e;
 }
 
 const std::vector<double>& Type7Contact::force() const {

@@ -2,7 +2,11 @@
 // sections 3 to 5) for every interface of the model, one call per cycle (architecture.md step 2).
 // Contact does not know the time loop: it receives views of the node state and the time, and returns its
 // nodal forces (in its own buffer, which the engine adds to the assembled forces), its time-step vote and
-// its energies. The equations are in type7_penalty.cpp.
+// its energies. The equations are in the opening comment of type7_engine.cpp.
+// LAGDT: the pairs of /INTER/LAGDT/TYPE7 interfaces whose time step would fall below the Tmin of
+// /DT/INTER/CST (or /DT/INTER/LAG) leave the penalty path for the cycle (no force, no stiffness, no time-step
+// vote) and become rows of the Lagrange-multiplier system that lagrange_correction() solves at cycle step 6
+// (contact/lagrange_contact.hpp).
 #pragma once
 
 #include <array>
@@ -13,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/lagrange_contact.hpp"
 #include "solver/model/model.hpp"
 
 namespace radx::contact {
@@ -24,13 +29,18 @@ struct ContactNodes {
   std::span<double> mass;              // lumped mass (grows with /DT/INTER/CST mass scaling)
   std::span<double> added_mass;        // mass added so far by /DT/.../CST
   std::span<std::uint8_t> fixed;       // boundary-condition bits; IBC clears bits 0..2 at first impact
+  // 1 for a node whose motion a kinematic condition other than /BCS prescribes after step 6 (/IMPVEL,
+  // rigid body, rigid wall): a LAGDT pair on such a node stays on the penalty path. Empty: none.
+  std::span<const std::uint8_t> held;
 };
 
 // /DT/INTER/CST, /DT/INTER/DEL (and the scale of the interface steps).
 struct ContactControls {
   double dt_scale = 0.9;  // Tscale of /DT/INTER/..., else of /DT
   double t_min = 0;       // Tmin (0: none)
-  enum class Action : std::uint8_t { None, AddMass, Delete } action = Action::None;
+  // AddMass (/DT/INTER/CST): plain TYPE7 nodes get mass, LAGDT pairs switch; Lagrange (/DT/INTER/LAG):
+  // LAGDT pairs switch; Delete (/DT/INTER/DEL): pairs leave the interface.
+  enum class Action : std::uint8_t { None, AddMass, Delete, Lagrange } action = Action::None;
 };
 
 // The smallest contact time step of the cycle and what imposes it.
@@ -50,7 +60,23 @@ struct InterfaceResult {
   double e_elastic = 0, e_damping = 0, e_friction = 0;  // booked energies (work of the contact forces)
   std::int64_t deactivated_nodes = 0;  // nodes that reached the surface, or removed by Idel or /DT/INTER/DEL
   double added_mass = 0;               // by /DT/INTER/CST
-  std::int64_t switched_pairs_max = 0, switched_pairs_total = 0;  // LAGDT (0: the penalty path only)
+  std::int64_t switched_pairs = 0;     // LAGDT: pairs switched to Lagrange multipliers in the last cycle
+  std::int64_t switched_pairs_max = 0, switched_pairs_total = 0;  // most in one cycle; pair-cycles
+  double e_lagrange = 0;                                          // work of the multipliers (dissipated)
+};
+
+// Views for cycle step 6: accelerations after a0 = f / m, corrected in place.
+struct LagrangeNodesView {
+  std::span<const double> mass;
+  std::span<const double> vx, vy, vz;  // v^{n-1/2}
+  std::span<double> ax, ay, az;
+  std::span<const std::uint8_t> fixed;
+};
+
+// A force the multipliers put on a node this cycle (normal and friction), for the engine's force sum.
+struct NodeForce {
+  std::int32_t node;
+  std::array<double, 3> f;
 };
 
 class Type7Contact {
@@ -67,6 +93,16 @@ class Type7Contact {
   // pair into force() and returns the contact time-step vote. Messages (a node deactivated, removed)
   // accumulate in messages().
   ContactStep compute(double t, double dt1, const ContactNodes& nodes);
+
+  // Cycle step 6 (dt1 = t^n - t^{n-1}, dt2 = t^{n+1} - t^n): the switched pairs of this cycle get their
+  // Lagrange multipliers; the accelerations are corrected in place, the multipliers' forces join force()
+  // and are returned node by node (ascending) for the engine's force sum. Throws CholmodError on a solver
+  // failure.
+  const std::vector<NodeForce>& lagrange_correction(const LagrangeNodesView& nodes, double dt1, double dt2);
+  [[nodiscard]] std::int64_t switched_pairs() const;  // this cycle, all interfaces
+  [[nodiscard]] bool has_lagrange() const;            // a LAGDT interface can switch pairs in this run
+  [[nodiscard]] const LagrangeStats& lagrange_stats() const;
+  double energy_lagrange() const;
 
   // This cycle's contact forces: for each node in touched() (ascending), force()[3 n .. 3 n + 2].
   [[nodiscard]] const std::vector<double>& force() const;

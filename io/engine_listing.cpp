@@ -96,13 +96,18 @@ std::string_view step_source_label(StepSource s) {
   return "-";
 }
 
-std::string listing_column_titles() {
-  char buf[256];
+std::string listing_column_titles(bool lagrange_column) {
+  char buf[320];
   std::snprintf(buf, sizeof buf, "%*s%*s%*s  %-*s%*s%*s%*s%*s%*s%*s%*s%*s", kCycleW, "CYCLE", kRealW, "TIME",
                 kRealW, "TIME-STEP", kKindW + 1 + kIdW, "ELEMENT", kErrorW + 2, "ERROR %", kRealW, "I-ENERGY",
                 kRealW, "K-ENERGY T", kRealW, "K-ENERGY R", kRealW, "EXT-WORK", kRealW, "MAS.ERR", kRealW,
                 "TOTAL MASS", kRealW, "MASS ADDED");
-  return buf;
+  std::string out = buf;
+  if (lagrange_column) {
+    std::snprintf(buf, sizeof buf, "%*s", kRealW, "LAG-PAIRS");
+    out += buf;
+  }
+  return out;
 }
 
 std::string format_listing_line(const ListingLine& l) {
@@ -117,7 +122,12 @@ std::string format_listing_line(const ListingLine& l) {
                 l.internal_energy + 0.0, kRealW, l.kinetic_t + 0.0, kRealW, l.kinetic_r + 0.0, kRealW,
                 l.external_work + 0.0, kRealW, l.mass_error + 0.0, kRealW, l.total_mass + 0.0, kRealW,
                 l.added_mass + 0.0);
-  return buf;
+  std::string out = buf;
+  if (l.switched_pairs >= 0) {
+    std::snprintf(buf, sizeof buf, "%*lld", kRealW, static_cast<long long>(l.switched_pairs));
+    out += buf;
+  }
+  return out;
 }
 
 double us_per_element_cycle(const RunSummary& s) {
@@ -247,6 +257,26 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
          << in.removed_nodes << '\n';
     }
   }
+  if (s.lagrange.present) {
+    const auto& L = s.lagrange;
+    heading(os, "LAGRANGE MULTIPLIERS (switched LAGDT pairs, CHOLMOD)");
+    row(os, "cycles with rows", std::to_string(L.cycles));
+    row(os, "rows",
+        "max " + std::to_string(L.rows_max) + " in one cycle, " + std::to_string(L.rows_total) +
+            " row-cycles; dropped (no free dof) " + std::to_string(L.dropped_rows) + ", merged " +
+            std::to_string(L.merged_rows));
+    row(os, "nonzeros of A = L M^-1/2", "max " + std::to_string(L.nonzeros_max));
+    row(os, "factorisations",
+        std::to_string(L.factorizations) + " (symbolic analyses " + std::to_string(L.analyses) + ", reuses " +
+            std::to_string(L.symbolic_reuses) + ")");
+    row(os, "active-set passes",
+        std::to_string(L.active_set_passes) + " (max " + std::to_string(L.passes_max) + " in one cycle, " +
+            std::to_string(L.unconverged) + " cycle(s) at the limit)");
+    row(os, "regularisations", std::to_string(L.regularisations) + " (largest beta " + sci(L.beta_max) + ")");
+    row(os, "time: assembly", format_duration(L.seconds_assembly));
+    row(os, "time: factorisation", format_duration(L.seconds_factorization));
+    row(os, "time: solve", format_duration(L.seconds_solve));
+  }
   if (s.states > 0 || !s.time_history.empty()) {
     heading(os, "RESULTS");
     if (s.states > 0) row(os, "animation states", std::to_string(s.states) + " in " + s.series);
@@ -308,7 +338,7 @@ void EngineListing::header(const EngineListingHeader& h) {
 void EngineListing::line(const ListingLine& l) {
   std::string text;
   if (lines_ == 0 || (s_.header_every > 0 && lines_ % static_cast<std::size_t>(s_.header_every) == 0))
-    text = listing_column_titles() + '\n';
+    text = listing_column_titles(l.switched_pairs >= 0) + '\n';
   text += format_listing_line(l) + '\n';
   ++lines_;
   if (s_.file) *s_.file << text;

@@ -48,10 +48,11 @@ struct ListingLine {
   double mass_error = 0;         // MAS.ERR = (M - M0) / M0
   double total_mass = 0;         // TOTAL MASS
   double added_mass = 0;         // MASS ADDED by /DT/.../CST
+  std::int64_t switched_pairs = -1;  // LAG-PAIRS: LAGDT pairs solved with multipliers (-1: no such column)
 };
 
 // The column titles, aligned with format_listing_line (one line, no line end).
-std::string listing_column_titles();
+std::string listing_column_titles(bool lagrange_column = false);
 // One listing line (no line end). Columns are blank separated; reals are printed with 6 significant
 // digits (%.5E), the error with one decimal and a '%'; an element is "TYPE id" ("- -" when none).
 std::string format_listing_line(const ListingLine& l);
@@ -112,6 +113,15 @@ struct RunSummary {
   std::array<double, 3> momentum{0, 0, 0};
   EnergyBalance energy;
   std::vector<InterfaceSummary> interfaces;
+  // The Lagrange-multiplier solver of switched LAGDT pairs (present: a LAGDT interface could switch).
+  struct Lagrange {
+    bool present = false;
+    std::int64_t cycles = 0, rows_max = 0, rows_total = 0, nonzeros_max = 0, dropped_rows = 0,
+                 merged_rows = 0;
+    std::int64_t factorizations = 0, analyses = 0, symbolic_reuses = 0, regularisations = 0;
+    std::int64_t active_set_passes = 0, passes_max = 0, unconverged = 0;
+    double beta_max = 0, seconds_assembly = 0, seconds_factorization = 0, seconds_solve = 0;
+  } lagrange;
   // Result files (empty when none were written) and the wall time spent writing them.
   int states = 0;
   std::string series;        // the ParaView index P.hdf.series

@@ -178,6 +178,29 @@ std::string summary_json(const RunSummary& s) {
           json_number(in.added_mass) + ", \"removed_nodes\": " + std::to_string(in.removed_nodes) + "}");
   }
   w.close(']');
+  if (s.lagrange.present) {
+    const auto& L = s.lagrange;
+    w.key("lagrange_solver");
+    w.open('{');
+    w.field_int("cycles", L.cycles);
+    w.field_int("rows_max", L.rows_max);
+    w.field_int("rows_total", L.rows_total);
+    w.field_int("nonzeros_max", L.nonzeros_max);
+    w.field_int("dropped_rows", L.dropped_rows);
+    w.field_int("merged_rows", L.merged_rows);
+    w.field_int("factorizations", L.factorizations);
+    w.field_int("symbolic_analyses", L.analyses);
+    w.field_int("symbolic_reuses", L.symbolic_reuses);
+    w.field_int("active_set_passes", L.active_set_passes);
+    w.field_int("active_set_passes_max", L.passes_max);
+    w.field_int("unconverged_cycles", L.unconverged);
+    w.field_int("regularisations", L.regularisations);
+    w.field("beta_max", L.beta_max);
+    w.field("seconds_assembly", L.seconds_assembly);
+    w.field("seconds_factorization", L.seconds_factorization);
+    w.field("seconds_solve", L.seconds_solve);
+    w.close('}');
+  }
   w.close('}');
   return w.take();
 }

@@ -52,6 +52,11 @@ class ImposedVelocities {
   // Work of the last cycle not booked yet (its dt2 part); the next apply() books it.
   [[nodiscard]] double pending_work() const;
   [[nodiscard]] bool empty() const { return entries_.empty(); }
+  // Sets flags[n] = 1 for every node with an imposed velocity.
+  void mark_nodes(std::vector<std::uint8_t>& flags) const {
+    for (const auto& e : entries_)
+      for (const auto n : e.nodes) flags[static_cast<std::size_t>(n)] = 1;
+  }
 
  private:
   struct Entry {

@@ -39,9 +39,10 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
     const auto& inter = controls_.inter;
     cc.dt_scale = inter.given ? inter.scale : controls_.global.scale;
     cc.t_min = inter.given ? inter.t_min : 0.0;
-    cc.action = inter.action == model::DtAction::AddMass  ? contact::ContactControls::Action::AddMass
-                : inter.action == model::DtAction::Delete ? contact::ContactControls::Action::Delete
-                                                          : contact::ContactControls::Action::None;
+    cc.action = inter.action == model::DtAction::AddMass    ? contact::ContactControls::Action::AddMass
+                : inter.action == model::DtAction::Delete   ? contact::ContactControls::Action::Delete
+                : inter.action == model::DtAction::Lagrange ? contact::ContactControls::Action::Lagrange
+                                                            : contact::ContactControls::Action::None;
     contact_ = std::make_unique<contact::Type7Contact>(model_, cc);
     if (contact_->empty()) contact_.reset();
   }
@@ -54,27 +55,6 @@ std::int64_t ExplicitEngine::count_deleted() const {
   for (const auto& g : bricks_)
     for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
   return n;
-}
-
-void ExplicitEngine::contact_forces(double time, double dt1, StepControl& control, double& dt_contact) {
-  dt_contact = kInf;
-  if (!contact_) return;
-  auto& s = nodes_;
-  contact::ContactNodes v{s.x, s.y, s.z, s.vx, s.vy, s.vz, s.mass, s.added_mass, s.fixed};
-  const contact::ContactStep step = contact_->compute(time, dt1, v);
-  const auto& f = contact_->force();
-  for (const auto n : contact_->touched()) {
-    const auto k = static_cast<std::size_t>(n);
-    s.fx[k] += f[3 * k];
-    s.fy[k] += f[3 * k + 1];
-    s.fz[k] += f[3 * k + 2];
-  }
-  if (step.dt < kInf) {
-    dt_contact = step.dt;
-    control.kind = StepControl::Kind::Interface;
-    control.user_id = step.interface_id;
-    control.node_id = step.node_id;
-  }
 }
 
 ExplicitEngine::~ExplicitEngine() = default;
@@ -421,216 +401,293 @@ CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
   return r;
 }
 
+// The time loop. Each cycle is the list of its stages, in the order of explicit_engine.hpp:
+//   1. external_loads        2. contact_forces (penalty, votes, LAGDT switches)
+//   3-4. element_forces (groups, then the deterministic assembly with the contact forces)
+//   9. choose_time_step (early: the step of this cycle comes from the votes just computed)
+//   5. accelerations         6. lagrange_correction (switched LAGDT pairs)
+//   7. kinematic_conditions  10. outputs (energies on report cycles, the caller's on_cycle)
+//   8. integrate             11. advance
+// A stage that ends the run returns false with res.status and res.message set.
 RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_cycle) {
   if (options_.threads > 0) omp_set_num_threads(options_.threads);
   RunResult res;
   res.threads = omp_get_max_threads();
   const auto t_wall0 = std::chrono::steady_clock::now();
-  double element_seconds = 0, contact_seconds = 0;
-  auto& s = nodes_;
-  auto& kin = *kinematics_;
-  kin.initial_conditions();
+  kinematics_->initial_conditions();
+  if (contact_) held_ = kinematics_->held_nodes();
   // Reference mass after the set-up (rigid bodies and moving walls may add mass).
-  mass0_ = kin.mass_correction();
-  for (std::size_t n = 0; n < s.n; ++n) mass0_ += s.mass[n];
+  mass0_ = kinematics_->mass_correction();
+  for (std::size_t n = 0; n < nodes_.n; ++n) mass0_ += nodes_.mass[n];
 
-  double time = 0, dt1 = 0, dt2 = 0;
-  std::int64_t cycle = 0;
-  StepControl control;
-  bool first = true;
+  LoopState L;
   while (true) {
-    // 1. external loads at t_n.
-    std::fill(s.fx_ext.begin(), s.fx_ext.end(), 0.0);
-    std::fill(s.fy_ext.begin(), s.fy_ext.end(), 0.0);
-    std::fill(s.fz_ext.begin(), s.fz_ext.end(), 0.0);
-    std::fill(s.mx.begin(), s.mx.end(), 0.0);
-    std::fill(s.my.begin(), s.my.end(), 0.0);
-    std::fill(s.mz.begin(), s.mz.end(), 0.0);
-    kin.external_loads(time, dt1, dt2);
-    // 3. element groups.
-    const auto te0 = std::chrono::steady_clock::now();
-    compute_element_forces(CycleInfo{dt1, dt2, time});
-    // 4. assembly, then the contact forces (2.) added node by node in ascending order.
-    assemble();
-    element_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - te0).count();
-    StepControl contact_ctl;
-    double dt_contact = kInf;
-    if (contact_) {
-      // Idel: tell contact when elements were deleted since the last cycle.
-      const std::int64_t deleted = count_deleted();
-      if (deleted != deleted_elements_) {
-        deleted_elements_ = deleted;
-        std::vector<std::uint8_t> alive(model_.element_count(), 1);
-        const std::size_t tri0 = model_.shells.size(), brick0 = tri0 + model_.shells3.size();
-        for (const auto& g : shells_)
-          for (int i = 0; i < g.count; ++i)
-            if (g.off[static_cast<std::size_t>(i)] <= 0)
-              alive[(g.triangle ? tri0 : 0) +
-                    static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
-        for (const auto& g : bricks_)
-          for (int i = 0; i < g.count; ++i)
-            if (g.off[static_cast<std::size_t>(i)] <= 0)
-              alive[brick0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
-        contact_->elements_deleted(alive);
-      }
-      const auto tc0 = std::chrono::steady_clock::now();
-      contact_forces(time, dt1, contact_ctl, dt_contact);
-      contact_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tc0).count();
-    }
-    // 9 (early): the step of this cycle comes from the element steps just computed.
-    StepControl ctl;
-    double dt_elem = element_time_step(ctl);
-    if (!(dt_elem > 0)) {
-      res.status = RunStatus::Error;
-      res.message = bad_element(time, cycle);
-      break;
-    }
-    if (!cst_violation_.empty()) {
-      res.status = RunStatus::Error;
-      res.message =
-          cst_violation_ + " (cycle " + std::to_string(cycle) + ", time " + std::to_string(time) + ")";
-      break;
-    }
-    if (controls_.nodal.action == model::DtAction::AddMass && controls_.nodal.given) {
-      StepControl nctl;
-      const double dt_nodal = nodal_time_step(nctl);
-      dt_elem = dt_nodal;  // /DT/NODA replaces the element step by the nodal one
-      ctl = nctl;
-    }
-    if (dt_contact < dt_elem) {  // contact votes on the step (its own scale is already applied)
-      dt_elem = dt_contact;
-      ctl = contact_ctl;
-    }
-    if (first) {
-      dt2 = dt_elem;
-    } else {
-      dt2 = std::min(dt_elem, 1.1 * dt1);
-      if (dt2 != dt_elem) ctl = control;
-    }
-    if (!std::isfinite(dt2)) {
-      res.status = RunStatus::Error;
-      res.message = "no finite time step: the model has no element with a stable step";
-      break;
-    }
-    if (time + dt2 > controls_.t_stop) dt2 = std::max(controls_.t_stop - time, 0.0);
-    control = ctl;
-    if (controls_.global.t_min > 0 && dt_elem < controls_.global.t_min) {
-      res.status = RunStatus::Error;
-      res.message = "the time step " + std::to_string(dt_elem) + " fell below the /DT minimum " +
-                    std::to_string(controls_.global.t_min);
-      break;
-    }
-    // 5. accelerations.
-    const auto nn = static_cast<std::int64_t>(s.n);
-#pragma omp parallel for schedule(static)
-    for (std::int64_t k = 0; k < nn; ++k) {
-      const auto n = static_cast<std::size_t>(k);
-      const double m = s.mass[n];
-      const double inv = m > 0 ? 1.0 / m : 0.0;
-      s.ax[n] = s.fx[n] * inv;
-      s.ay[n] = s.fy[n] * inv;
-      s.az[n] = s.fz[n] * inv;
-      const double I = s.inertia[n];
-      const double invI = I > 0 ? 1.0 / I : 0.0;
-      s.awx[n] = s.mx[n] * invI;
-      s.awy[n] = s.my[n] * invI;
-      s.awz[n] = s.mz[n] * invI;
-    }
-    // 7. kinematic conditions.
-    kin.kinematic_conditions(time, dt1, dt2);
-    // Energies at t_n (elements.md section 8): summed only on report cycles, they cost a pass over every
-    // element and node.
-    const bool last = time >= controls_.t_stop || dt2 <= 0;
-    const bool full = first || last || cycle % std::max<std::int64_t>(1, options_.report_every) == 0 ||
-                      (options_.output_due && options_.output_due(time));
-    CycleReport rep;
-    if (full) {
-      energy_.internal = energy_.hourglass = energy_.plastic_work = 0;
-      for (const auto& g : shells_)
-        for (int i = 0; i < g.count; ++i) {
-          energy_.internal += g.e_int[static_cast<std::size_t>(i)];
-          energy_.hourglass += g.e_hg[static_cast<std::size_t>(i)];
-          energy_.plastic_work += g.w_plastic[static_cast<std::size_t>(i)];
-        }
-      for (const auto& g : bricks_)
-        for (int i = 0; i < g.count; ++i) {
-          energy_.internal += g.e_int[static_cast<std::size_t>(i)];
-          energy_.hourglass += g.e_hg[static_cast<std::size_t>(i)];
-          energy_.plastic_work += g.w_plastic[static_cast<std::size_t>(i)];
-        }
-      if (contact_) {
-        energy_.contact_elastic = contact_->energy_elastic();
-        energy_.contact_damping = contact_->energy_damping();
-        energy_.contact_friction = contact_->energy_friction();
-      }
-      kin.kinetic_energy(dt1, energy_.kinetic_t, energy_.kinetic_r);
-      energy_.external_work = kin.external_work();
-      if (first) energy_.initial_total = energy_.total() - energy_.external_work;
-      const double denom = energy_.initial_total + energy_.external_work;
-      const double e_tot = energy_.total();
-      energy_.error_percent =
-          std::abs(denom) <= 1e-20 ? 0.0 : std::clamp(100.0 * (e_tot / denom - 1.0), -99.9, 99.9);
-      rep = report(cycle, time, dt2, control);
-      rep.momentum = kin.momentum(dt1);
-      rep.dt1 = dt1;
-      res.last = rep;
-    } else {
-      rep.cycle = cycle;
-      rep.time = time;
-      rep.dt = dt2;
-      rep.dt1 = dt1;
-      rep.control = control;
-    }
-    rep.full = full;
-    // 10. outputs.
-    if (on_cycle && !on_cycle(rep)) {
-      res.status = RunStatus::Error;
-      if (res.message.empty()) res.message = "stopped by a /STOP criterion";
-      break;
-    }
+    external_loads(L);
+    element_forces(L);
+    contact_forces(L);
+    if (!choose_time_step(L, res)) break;
+    accelerations();
+    if (!lagrange_correction(L, res)) break;
+    kinematics_->kinematic_conditions(L.time, L.dt1, L.dt2);
+    const bool last = L.time >= controls_.t_stop || L.dt2 <= 0;
+    if (!outputs(L, last, on_cycle, res)) break;
     if (last) break;
-    // 8. velocities and positions.
-    const double dt12 = first ? 0.5 * dt2 : 0.5 * (dt1 + dt2);
-    bool finite = true;
-#pragma omp parallel for schedule(static) reduction(&& : finite)
-    for (std::int64_t k = 0; k < nn; ++k) {
-      const auto n = static_cast<std::size_t>(k);
-      s.vx[n] += dt12 * s.ax[n];
-      s.vy[n] += dt12 * s.ay[n];
-      s.vz[n] += dt12 * s.az[n];
-      s.wx[n] += dt12 * s.awx[n];
-      s.wy[n] += dt12 * s.awy[n];
-      s.wz[n] += dt12 * s.awz[n];
-      s.x[n] += dt2 * s.vx[n];
-      s.y[n] += dt2 * s.vy[n];
-      s.z[n] += dt2 * s.vz[n];
-      finite = finite && std::isfinite(s.x[n] + s.y[n] + s.z[n]);
-    }
-    kin.after_update(dt2);
-    if (!finite) {
-      res.status = RunStatus::Error;
-      std::int64_t bad = 0;
-      for (std::size_t n = 0; n < s.n && bad == 0; ++n)
-        if (!std::isfinite(s.x[n] + s.y[n] + s.z[n])) bad = model_.nodes.id[n];
-      res.message = "node " + std::to_string(bad) + " has non-finite coordinates at cycle " +
-                    std::to_string(cycle) + ", time " + std::to_string(time) +
-                    ": the run is unstable (check the time step and the mesh)";
-      break;
-    }
-    // 11.
-    time += dt2;
-    dt1 = dt2;
-    ++cycle;
-    first = false;
+    if (!integrate(L, res)) break;
+    L.time += L.dt2;  // 11.
+    L.dt1 = L.dt2;
+    ++L.cycle;
+    L.first = false;
   }
-  res.cycles = cycle;
-  res.time = time;
-  res.dt1 = dt1;
-  res.dt = dt2 > 0 ? dt2 : dt1;  // the last step taken (the final cycle only reaches Tstop)
+  res.cycles = L.cycle;
+  res.time = L.time;
+  res.dt1 = L.dt1;
+  res.dt = L.dt2 > 0 ? L.dt2 : L.dt1;  // the last step taken (the final cycle only reaches Tstop)
   res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_wall0).count();
-  res.element_seconds = element_seconds;
-  res.contact_seconds = contact_seconds;
+  res.element_seconds = L.element_seconds;
+  res.contact_seconds = L.contact_seconds;
   return res;
+}
+
+// 1. External loads at t_n into f*_ext; moments start from zero.
+void ExplicitEngine::external_loads(LoopState& L) {
+  auto& s = nodes_;
+  for (auto* v : {&s.fx_ext, &s.fy_ext, &s.fz_ext, &s.mx, &s.my, &s.mz}) std::fill(v->begin(), v->end(), 0.0);
+  kinematics_->external_loads(L.time, L.dt1, L.dt2);
+}
+
+// 3-4. Element groups, then the assembly f = f_ext + f_elements node by node.
+void ExplicitEngine::element_forces(LoopState& L) {
+  const auto t0 = std::chrono::steady_clock::now();
+  compute_element_forces(CycleInfo{L.dt1, L.dt2, L.time});
+  assemble();
+  L.element_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// 2. Contact at x^n with v^{n-1/2}: Idel first (contact learns which elements were deleted), then the penalty
+// forces added node by node in ascending order, the contact time-step vote and this cycle's switched pairs.
+void ExplicitEngine::contact_forces(LoopState& L) {
+  L.dt_contact = kInf;
+  if (!contact_) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  tell_contact_deleted_elements();
+  auto& s = nodes_;
+  contact::ContactNodes v{s.x, s.y, s.z, s.vx, s.vy, s.vz, s.mass, s.added_mass, s.fixed, held_};
+  const contact::ContactStep step = contact_->compute(L.time, L.dt1, v);
+  const auto& f = contact_->force();
+  for (const auto n : contact_->touched()) {
+    const auto k = static_cast<std::size_t>(n);
+    s.fx[k] += f[3 * k];
+    s.fy[k] += f[3 * k + 1];
+    s.fz[k] += f[3 * k + 2];
+  }
+  if (step.dt < kInf) {
+    L.dt_contact = step.dt;
+    L.contact_control.kind = StepControl::Kind::Interface;
+    L.contact_control.user_id = step.interface_id;
+    L.contact_control.node_id = step.node_id;
+  }
+  L.contact_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void ExplicitEngine::tell_contact_deleted_elements() {
+  const std::int64_t deleted = count_deleted();
+  if (deleted == deleted_elements_) return;
+  deleted_elements_ = deleted;
+  std::vector<std::uint8_t> alive(model_.element_count(), 1);
+  const std::size_t tri0 = model_.shells.size(), brick0 = tri0 + model_.shells3.size();
+  for (const auto& g : shells_)
+    for (int i = 0; i < g.count; ++i)
+      if (g.off[static_cast<std::size_t>(i)] <= 0)
+        alive[(g.triangle ? tri0 : 0) + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+  for (const auto& g : bricks_)
+    for (int i = 0; i < g.count; ++i)
+      if (g.off[static_cast<std::size_t>(i)] <= 0)
+        alive[brick0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+  contact_->elements_deleted(alive);
+}
+
+// 9 (early). dt2 = min(element or nodal step, contact vote, 1.1 dt1), cut at Tstop; stops on a bad element,
+// a /DT/.../CST violation, a non-finite step or a step below the /DT minimum.
+bool ExplicitEngine::choose_time_step(LoopState& L, RunResult& res) {
+  StepControl ctl;
+  double dt_elem = element_time_step(ctl);
+  if (!(dt_elem > 0)) {
+    res.status = RunStatus::Error;
+    res.message = bad_element(L.time, L.cycle);
+    return false;
+  }
+  if (!cst_violation_.empty()) {
+    res.status = RunStatus::Error;
+    res.message =
+        cst_violation_ + " (cycle " + std::to_string(L.cycle) + ", time " + std::to_string(L.time) + ")";
+    return false;
+  }
+  if (controls_.nodal.action == model::DtAction::AddMass && controls_.nodal.given) {
+    StepControl nctl;
+    dt_elem = nodal_time_step(nctl);  // /DT/NODA replaces the element step by the nodal one
+    ctl = nctl;
+  }
+  if (L.dt_contact < dt_elem) {  // contact votes on the step (its own scale is already applied)
+    dt_elem = L.dt_contact;
+    ctl = L.contact_control;
+  }
+  if (L.first) {
+    L.dt2 = dt_elem;
+  } else {
+    L.dt2 = std::min(dt_elem, 1.1 * L.dt1);
+    if (L.dt2 != dt_elem) ctl = L.control;
+  }
+  if (!std::isfinite(L.dt2)) {
+    res.status = RunStatus::Error;
+    res.message = "no finite time step: the model has no element with a stable step";
+    return false;
+  }
+  if (L.time + L.dt2 > controls_.t_stop) L.dt2 = std::max(controls_.t_stop - L.time, 0.0);
+  L.control = ctl;
+  if (controls_.global.t_min > 0 && dt_elem < controls_.global.t_min) {
+    res.status = RunStatus::Error;
+    res.message = "the time step " + std::to_string(dt_elem) + " fell below the /DT minimum " +
+                  std::to_string(controls_.global.t_min);
+    return false;
+  }
+  return true;
+}
+
+// 5. a = f / m, angular a = moment / scalar inertia (a massless node gets none).
+void ExplicitEngine::accelerations() {
+  auto& s = nodes_;
+  const auto nn = static_cast<std::int64_t>(s.n);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t k = 0; k < nn; ++k) {
+    const auto n = static_cast<std::size_t>(k);
+    const double m = s.mass[n];
+    const double inv = m > 0 ? 1.0 / m : 0.0;
+    s.ax[n] = s.fx[n] * inv;
+    s.ay[n] = s.fy[n] * inv;
+    s.az[n] = s.fz[n] * inv;
+    const double I = s.inertia[n];
+    const double invI = I > 0 ? 1.0 / I : 0.0;
+    s.awx[n] = s.mx[n] * invI;
+    s.awy[n] = s.my[n] * invI;
+    s.awz[n] = s.mz[n] * invI;
+  }
+}
+
+// 6. The switched LAGDT pairs' multipliers correct a; their forces join f (outputs: reactions, internal
+// forces). A CHOLMOD failure stops the run with its message.
+bool ExplicitEngine::lagrange_correction(LoopState& L, RunResult& res) {
+  if (!contact_ || contact_->switched_pairs() == 0) return true;
+  auto& s = nodes_;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    const auto& forces = contact_->lagrange_correction(
+        contact::LagrangeNodesView{s.mass, s.vx, s.vy, s.vz, s.ax, s.ay, s.az, s.fixed}, L.dt1, L.dt2);
+    for (const auto& nf : forces) {
+      const auto k = static_cast<std::size_t>(nf.node);
+      s.fx[k] += nf.f[0];
+      s.fy[k] += nf.f[1];
+      s.fz[k] += nf.f[2];
+    }
+  } catch (const std::exception& e) {
+    res.status = RunStatus::Error;
+    res.message = std::string("the Lagrange-multiplier contact solve failed at cycle ") +
+                  std::to_string(L.cycle) + ", time " + std::to_string(L.time) + ": " + e.what();
+    return false;
+  }
+  L.contact_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return true;
+}
+
+// 10. Energies at t_n (elements.md section 8; summed only on report cycles, they cost a pass over every
+// element and node), then the caller's on_cycle (listing, states, /STOP), which may stop the run.
+bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(const CycleReport&)>& on_cycle,
+                             RunResult& res) {
+  auto& kin = *kinematics_;
+  const bool full = L.first || last || L.cycle % std::max<std::int64_t>(1, options_.report_every) == 0 ||
+                    (options_.output_due && options_.output_due(L.time));
+  CycleReport rep;
+  if (full) {
+    sum_energies(L);
+    rep = report(L.cycle, L.time, L.dt2, L.control);
+    rep.momentum = kin.momentum(L.dt1);
+    rep.dt1 = L.dt1;
+  } else {
+    rep.cycle = L.cycle;
+    rep.time = L.time;
+    rep.dt = L.dt2;
+    rep.dt1 = L.dt1;
+    rep.control = L.control;
+  }
+  rep.switched_pairs = contact_ ? contact_->switched_pairs() : 0;
+  rep.full = full;
+  if (full) res.last = rep;
+  if (on_cycle && !on_cycle(rep)) {
+    res.status = RunStatus::Error;
+    if (res.message.empty()) res.message = "stopped by a /STOP criterion";
+    return false;
+  }
+  return true;
+}
+
+void ExplicitEngine::sum_energies(const LoopState& L) {
+  auto& kin = *kinematics_;
+  energy_.internal = energy_.hourglass = energy_.plastic_work = 0;
+  auto add_groups = [&](const auto& groups) {
+    for (const auto& g : groups)
+      for (int i = 0; i < g.count; ++i) {
+        energy_.internal += g.e_int[static_cast<std::size_t>(i)];
+        energy_.hourglass += g.e_hg[static_cast<std::size_t>(i)];
+        energy_.plastic_work += g.w_plastic[static_cast<std::size_t>(i)];
+      }
+  };
+  add_groups(shells_);
+  add_groups(bricks_);
+  if (contact_) {
+    energy_.contact_elastic = contact_->energy_elastic();
+    energy_.contact_damping = contact_->energy_damping();
+    energy_.contact_friction = contact_->energy_friction();
+    energy_.contact_lagrange = contact_->energy_lagrange();
+  }
+  kin.kinetic_energy(L.dt1, energy_.kinetic_t, energy_.kinetic_r);
+  energy_.external_work = kin.external_work();
+  if (L.first) energy_.initial_total = energy_.total() - energy_.external_work;
+  const double denom = energy_.initial_total + energy_.external_work;
+  const double e_tot = energy_.total();
+  energy_.error_percent =
+      std::abs(denom) <= 1e-20 ? 0.0 : std::clamp(100.0 * (e_tot / denom - 1.0), -99.9, 99.9);
+}
+
+// 8. v^{n+1/2} = v^{n-1/2} + dt12 a^n, x^{n+1} = x^n + dt2 v^{n+1/2}; a non-finite coordinate stops the run.
+bool ExplicitEngine::integrate(LoopState& L, RunResult& res) {
+  auto& s = nodes_;
+  const double dt12 = L.first ? 0.5 * L.dt2 : 0.5 * (L.dt1 + L.dt2);
+  const double dt2 = L.dt2;
+  const auto nn = static_cast<std::int64_t>(s.n);
+  bool finite = true;
+#pragma omp parallel for schedule(static) reduction(&& : finite)
+  for (std::int64_t k = 0; k < nn; ++k) {
+    const auto n = static_cast<std::size_t>(k);
+    s.vx[n] += dt12 * s.ax[n];
+    s.vy[n] += dt12 * s.ay[n];
+    s.vz[n] += dt12 * s.az[n];
+    s.wx[n] += dt12 * s.awx[n];
+    s.wy[n] += dt12 * s.awy[n];
+    s.wz[n] += dt12 * s.awz[n];
+    s.x[n] += dt2 * s.vx[n];
+    s.y[n] += dt2 * s.vy[n];
+    s.z[n] += dt2 * s.vz[n];
+    finite = finite && std::isfinite(s.x[n] + s.y[n] + s.z[n]);
+  }
+  kinematics_->after_update(dt2);
+  if (finite) return true;
+  res.status = RunStatus::Error;
+  std::int64_t bad = 0;
+  for (std::size_t n = 0; n < s.n && bad == 0; ++n)
+    if (!std::isfinite(s.x[n] + s.y[n] + s.z[n])) bad = model_.nodes.id[n];
+  res.message = "node " + std::to_string(bad) + " has non-finite coordinates at cycle " +
+                std::to_string(L.cycle) + ", time " + std::to_string(L.time) +
+                ": the run is unstable (check the time step and the mesh)";
+  return false;
 }
 
 }  // namespace radx::solver

@@ -7,7 +7,7 @@
 //   3. element groups: gather, strain rate, material update, internal forces, element time step;
 //   4. deterministic assembly of element and contact forces, node by node in a fixed order;
 //   5. accelerations a = f / m (rotations: moment / scalar inertia);
-//   6. Lagrange-multiplier correction (LAGDT: its own issue);
+//   6. Lagrange-multiplier correction of the switched LAGDT pairs (contact/lagrange_contact.hpp);
 //   7. kinematic conditions: rigid bodies, boundary conditions, imposed velocities, rigid walls;
 //   8. v^{n+1/2} = v^{n-1/2} + dt12 a^n,  x^{n+1} = x^n + dt2 v^{n+1/2},  dt12 = (dt1 + dt2) / 2;
 //   9. next time step dt = min(scale * element steps, 1.1 dt_previous);
@@ -58,6 +58,7 @@ struct CycleReport {
   double dt1 =
       0;  // the step that led to this cycle, t^n - t^{n-1} (full-step velocity v^{n-1/2} + dt1/2 a^n)
   StepControl control;
+  std::int64_t switched_pairs = 0;  // LAGDT pairs solved with Lagrange multipliers this cycle
   EnergyBalance energy;
   double mass = 0, mass0 = 0, added_mass = 0;
   std::array<double, 3> momentum{};
@@ -143,7 +144,29 @@ class ExplicitEngine {
   std::unique_ptr<KinematicsDriver> kinematics_;  // loads and kinematic conditions
   std::unique_ptr<contact::Type7Contact> contact_;
   std::int64_t deleted_elements_ = 0;  // elements with off == 0, to tell contact (Idel) when it changes
-  void contact_forces(double time, double dt1, StepControl& control, double& dt_contact);
+  // The time loop's state between stages (run() lists the stages).
+  struct LoopState {
+    double time = 0, dt1 = 0, dt2 = 0;
+    std::int64_t cycle = 0;
+    bool first = true;
+    StepControl control;          // what set the step of the last cycle
+    double dt_contact = 0;        // this cycle's contact vote
+    StepControl contact_control;  // and its pair
+    double element_seconds = 0, contact_seconds = 0;
+  };
+  void external_loads(LoopState& L);
+  void element_forces(LoopState& L);
+  void contact_forces(LoopState& L);
+  void tell_contact_deleted_elements();
+  bool choose_time_step(LoopState& L, RunResult& res);
+  void accelerations();
+  bool lagrange_correction(LoopState& L, RunResult& res);
+  bool outputs(LoopState& L, bool last, const std::function<bool(const CycleReport&)>& on_cycle,
+               RunResult& res);
+  void sum_energies(const LoopState& L);
+  bool integrate(LoopState& L, RunResult& res);
+  std::vector<std::uint8_t>
+      held_;  // nodes moved by /IMPVEL, rigid bodies or rigid walls (LAGDT stays penalty)
   std::int64_t count_deleted() const;
   EnergyBalance energy_;
   double mass0_ = 0;

@@ -95,6 +95,17 @@ double KinematicsDriver::mass_correction() const {
   return parts_->bodies.size() > 0 ? parts_->bodies.kinetic_correction(nodes_, 0.0).mass : 0.0;
 }
 
+std::vector<std::uint8_t> KinematicsDriver::held_nodes() const {
+  std::vector<std::uint8_t> held(nodes_.n, 0);
+  parts_->impvel.mark_nodes(held);
+  parts_->walls.mark_nodes(held);
+  for (const auto& b : parts_->bodies.bodies()) {
+    if (b.main != model::kNone) held[static_cast<std::size_t>(b.main)] = 1;
+    for (const auto n : b.secondary) held[static_cast<std::size_t>(n)] = 1;
+  }
+  return held;
+}
+
 const std::vector<RigidWallOutput>& KinematicsDriver::wall_outputs() const {
   return parts_->walls.outputs();
 }

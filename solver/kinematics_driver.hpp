@@ -36,6 +36,9 @@ class KinematicsDriver {
   [[nodiscard]] double external_work() const;
   // Correction to the nodal mass sum so that each rigid body counts once.
   [[nodiscard]] double mass_correction() const;
+  // Per node, 1 where a condition applied after the accelerations moves the node (/IMPVEL, rigid bodies
+  // with their main node, rigid walls' secondary and moving nodes); /BCS only holds dofs and is not marked.
+  [[nodiscard]] std::vector<std::uint8_t> held_nodes() const;
   // Rigid-wall forces of the last cycle and impulses since the start, one per /RWALL in model order.
   [[nodiscard]] const std::vector<RigidWallOutput>& wall_outputs() const;
 

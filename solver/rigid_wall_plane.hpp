@@ -58,6 +58,13 @@ class RigidWalls {
 
   [[nodiscard]] const std::vector<RigidWallOutput>& outputs() const { return out_; }
   [[nodiscard]] std::size_t size() const { return walls_.size(); }
+  // Sets flags[n] = 1 for every secondary node and moving-wall node.
+  void mark_nodes(std::vector<std::uint8_t>& flags) const {
+    for (const auto& w : walls_) {
+      if (w.node != model::kNone) flags[static_cast<std::size_t>(w.node)] = 1;
+      for (const auto n : w.secondary) flags[static_cast<std::size_t>(n)] = 1;
+    }
+  }
 
  private:
   struct Wall {
