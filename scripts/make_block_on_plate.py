@@ -7,13 +7,13 @@ exact columns (deck-format.md). Edit the script and regenerate rather than editi
     python3 scripts/make_block_on_plate.py                  # both variants, into decks/
     python3 scripts/make_block_on_plate.py --variant lagdt  # only the /INTER/LAGDT/TYPE7 variant
     python3 scripts/make_block_on_plate.py --out /tmp/x     # somewhere else
-    python3 scripts/make_block_on_plate.py --variant lagdt --lagdt-tmin 1e-6 --out /tmp/x
-                                                            # a LAGDT run that really switches pairs
+    python3 scripts/make_block_on_plate.py --v0 50 --stfac 30 --block-layers 2 --out /tmp/x
+                                                            # stiff, fast contact (the LAGDT tests)
 
 Variants:
   penalty  decks/block_on_plate/BLOCK_ON_PLATE_0000.rad and _0001.rad (two /INTER/TYPE7)
   lagdt    decks/block_on_plate_lagdt/BLOCK_ON_PLATE_LAGDT_0000.rad and _0001.rad
-           (two /INTER/LAGDT/TYPE7, /DT/INTER/CST 0.9 1e-7 in the engine deck)
+           (two /INTER/LAGDT/TYPE7, /DT/INTER/CST 0.9 1e-6 in the engine deck: pairs switch at impact)
 
 Model (units Mg, mm, s): a 100 x 100 x 1 mm steel plate of 10 x 10 shells (Johnson-Cook), clamped on its
 four edges, and a 20 mm aluminium cube of 4 x 4 x 4 bricks 1 mm above its centre, moving down at 10 m/s.
@@ -41,6 +41,13 @@ NODE0_BLOCK = 1001
 ELEM0_BLOCK = 1001
 V0 = -10000.0         # mm/s, initial velocity of the block along Z
 GRAVITY = -9810.0     # mm/s^2 along Z
+# Options of the test variants (main()): brick layers of the block (same pitch), Stfac of both interfaces,
+# a free plate without gravity (no external force: momentum is conserved), the /DT/INTER/CST card.
+BLOCK_NZ = BLOCK_N
+STFAC = 1.0
+FREE = False
+INTER_DT = True
+TSTOP = 0.002
 
 
 def plate_node_id(i, j):
@@ -67,7 +74,7 @@ def plate_nodes():
 def block_nodes():
     h = BLOCK_L / BLOCK_N
     out = []
-    for k in range(BLOCK_N + 1):
+    for k in range(BLOCK_NZ + 1):
         for j in range(BLOCK_N + 1):
             for i in range(BLOCK_N + 1):
                 out.append((block_node_id(i, j, k), coord(i, BLOCK_N, BLOCK_L), coord(j, BLOCK_N, BLOCK_L),
@@ -87,7 +94,7 @@ def shells():
 
 def bricks():
     out = []
-    for k in range(BLOCK_N):
+    for k in range(BLOCK_NZ):
         for j in range(BLOCK_N):
             for i in range(BLOCK_N):
                 eid = ELEM0_BLOCK + i + BLOCK_N * j + BLOCK_N * BLOCK_N * k
@@ -284,21 +291,23 @@ def starter_deck(variant):
     a(names(("part_ID1", 10)))
     a(line(I(2)))
     a(RULER)
-    a("/BCS/1")
-    a("Clamped plate edges")
-    a(names(("Tra rot", 10), ("skew_ID", 10), ("grnod_ID", 10)))
-    a(line(bcs_code("111", "111"), I(0), I(1)))
+    if not FREE:
+        a("/BCS/1")
+        a("Clamped plate edges")
+        a(names(("Tra rot", 10), ("skew_ID", 10), ("grnod_ID", 10)))
+        a(line(bcs_code("111", "111"), I(0), I(1)))
     a("/INIVEL/TRA/1")
-    a("Block initial velocity 10 m/s downwards")
+    a("Block initial velocity %g m/s downwards" % (-V0 / 1000.0))
     a(names(("Vx", 20), ("Vy", 20), ("Vz", 20), ("grnod_ID", 10), ("skew_ID", 10)))
     a(line(R(0.0), R(0.0), R(V0), I(2), I(0)))
     a(names(("Tstart", 20), ("sensor_ID", 10)))
     a(line(R(0.0), I(0)))
-    a("/GRAV/1")
-    a("Gravity 9.81 m/s^2 downwards on all nodes (constant: no function)")
-    a(names(("funct_IDT", 10), ("DIR", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10), ("", 10),
-            ("Ascale_x", 20), ("Fscale_y", 20)))
-    a(line(I(0), S("Z", 10), I(0), I(0), I(0), blank(10), R(0.0), R(GRAVITY)))
+    if not FREE:
+        a("/GRAV/1")
+        a("Gravity 9.81 m/s^2 downwards on all nodes (constant: no function)")
+        a(names(("funct_IDT", 10), ("DIR", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10), ("", 10),
+                ("Ascale_x", 20), ("Fscale_y", 20)))
+        a(line(I(0), S("Z", 10), I(0), I(0), I(0), blank(10), R(0.0), R(GRAVITY)))
     a("/FUNCT/1")
     a("Unit ramp over 0.5 ms (not referenced by this deck)")
     a(names(("X", 20), ("Y", 20)))
@@ -352,7 +361,7 @@ def interface(iid, title, lagdt, grnod, surf, istf, inacti, fric, iform, viss):
         a(names(("Stmin", 20), ("Stmax", 20)))
         a(line(R(0.0), R("1E30" if istf >= 2 else 0.0)))
         a(names(("Stfac", 20), ("Fric", 20), ("Gapmin", 20), ("Tstart", 20), ("Tstop", 20)))
-        a(line(R(1.0), R(fric), R(0.0), R(0.0), R(0.0)))
+        a(line(R(STFAC), R(fric), R(0.0), R(0.0), R(0.0)))
         a(names(("IBC", 10), ("", 20), ("Inacti", 10), ("VISs", 20), ("VISf", 20), ("Bumult", 20)))
         a(line(ibc_code(0, 0, 0), blank(20), I(inacti), R(viss), R(1.0), R(0.0)))
         a(names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10)))
@@ -369,7 +378,7 @@ def interface(iid, title, lagdt, grnod, surf, istf, inacti, fric, iform, viss):
                 ("Irem_i2", 10)))
         a(line(R(0.0), R("1E30" if istf >= 2 else 0.0), R(0.0), R(0.0), I(0), I(0)))
         a(names(("Stfac", 20), ("Fric", 20), ("Gapmin", 20), ("Tstart", 20), ("Tstop", 20)))
-        a(line(R(1.0), R(fric), R(0.0), R(0.0), R(0.0)))
+        a(line(R(STFAC), R(fric), R(0.0), R(0.0), R(0.0)))
         a(names(("IBC", 10), ("", 20), ("Inacti", 10), ("VISs", 20), ("VISf", 20), ("Bumult", 20)))
         a(line(ibc_code(0, 0, 0), blank(20), I(inacti), R(viss), R(1.0), R(0.0)))
         a(names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10), ("sens_ID", 10), ("fct_IDF", 10),
@@ -382,7 +391,7 @@ def interface(iid, title, lagdt, grnod, surf, istf, inacti, fric, iform, viss):
 # Engine deck
 
 
-def engine_deck(variant, lagdt_tmin=1e-7):
+def engine_deck(variant, lagdt_tmin=1e-6):
     lagdt = variant == "lagdt"
     run = "BLOCK_ON_PLATE_LAGDT" if lagdt else "BLOCK_ON_PLATE"
     L = []
@@ -394,7 +403,7 @@ def engine_deck(variant, lagdt_tmin=1e-7):
     a(RULER)
     a("/RUN/%s/1" % run)
     a(names(("Tstop", 20)))
-    a(line(R(0.002)))
+    a(line(R(TSTOP)))
     a(RULER)
     a("/TFILE")
     a(names(("dt_his", 20)))
@@ -410,7 +419,7 @@ def engine_deck(variant, lagdt_tmin=1e-7):
     a("/DT")
     a(names(("Tscale", 20), ("Tmin", 20)))
     a(line(R(0.9), R(0.0)))
-    if lagdt:
+    if lagdt and INTER_DT:
         a("#  Contact pairs of the LAGDT interfaces whose time step would fall below Tmin switch to")
         a("#  Lagrange multipliers (type7-lagdt.md section 6; OpenRadioss itself needs /DT/INTER/LAG).")
         a("/DT/INTER/CST")
@@ -430,10 +439,19 @@ def main(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--variant", choices=("penalty", "lagdt", "all"), default="all")
     p.add_argument("--lagdt-tmin", type=float, default=1e-7,
-                   help="Tmin of /DT/INTER/CST in the LAGDT engine deck (default 1e-7 s; see the README)")
+                   help="Tmin of /DT/INTER/CST in the LAGDT engine deck (default 1e-7 s: no pair of the sample deck switches; 1e-6 switches the bottom pairs)")
     p.add_argument("--out", default=os.path.join(here, "..", "decks"),
                    help="parent folder of block_on_plate/ and block_on_plate_lagdt/ (default: decks/)")
+    p.add_argument("--v0", type=float, default=10.0, help="impact speed of the block, m/s (default 10)")
+    p.add_argument("--stfac", type=float, default=1.0, help="Stfac of both interfaces (default 1)")
+    p.add_argument("--block-layers", type=int, default=BLOCK_N, help="brick layers of the block (default 4)")
+    p.add_argument("--free", action="store_true", help="no clamped edges and no gravity (no external force)")
+    p.add_argument("--no-inter-dt", action="store_true", help="no /DT/INTER/CST in the LAGDT engine deck")
+    p.add_argument("--tstop", type=float, default=0.002, help="end time, s (default 0.002)")
     args = p.parse_args(argv)
+    global V0, STFAC, BLOCK_NZ, FREE, INTER_DT, TSTOP
+    V0, STFAC, BLOCK_NZ, FREE = -1000.0 * args.v0, args.stfac, args.block_layers, args.free
+    INTER_DT, TSTOP = not args.no_inter_dt, args.tstop
     variants = ("penalty", "lagdt") if args.variant == "all" else (args.variant,)
     for v in variants:
         folder, root = ("block_on_plate_lagdt", "BLOCK_ON_PLATE_LAGDT") if v == "lagdt" else \
