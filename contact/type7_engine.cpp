@@ -119,6 +119,19 @@ Vec3 node_v(const ContactNodes& n, std::int32_t i) {
   const auto k = static_cast<std::size_t>(i);
   return {n.vx[k], n.vy[k], n.vz[k]};
 }
+auto velocity(const ContactNodes& n) {
+  return [&n](std::int32_t i) { return node_v(n, i); };
+}
+
+// v_r = v_s - sum_j h_j v_j for the per-node velocity v(n) (a triangle's repeated node has h = 0).
+template <class Velocity>
+Vec3 relative_velocity(const Velocity& v, std::int32_t s, const std::array<std::int32_t, 4>& seg,
+                       const std::array<double, 4>& h) {
+  Vec3 vr = v(s);
+  for (std::size_t j = 0; j < 4; ++j)
+    if (h[j] != 0) vr = model::sub(vr, model::scale(v(seg[j]), h[j]));
+  return vr;
+}
 
 double segment_area(const std::array<Vec3, 4>& x, bool triangle) {
   return triangle ? model::triangle_area(x[0], x[1], x[2]) : model::quad_area(x[0], x[1], x[2], x[3]);
@@ -444,12 +457,7 @@ struct Type7Contact::Impl {
   // half (last cycle's forces) is booked here, the second when this cycle's forces are computed.
   void book_work(InterfaceState& st, const ContactNodes& nodes, double dt1) {
     for (const auto& p : st.pairs) {
-      Vec3 vr = node_v(nodes, p.node);
-      for (int j = 0; j < 4; ++j) {
-        if (p.h[static_cast<std::size_t>(j)] == 0) continue;
-        const Vec3 vj = node_v(nodes, p.seg[static_cast<std::size_t>(j)]);
-        for (std::size_t d = 0; d < 3; ++d) vr[d] -= p.h[static_cast<std::size_t>(j)] * vj[d];
-      }
+      const Vec3 vr = relative_velocity(velocity(nodes), p.node, p.seg, p.h);
       st.w_elastic += 0.5 * model::dot(p.f_elastic, vr) * dt1;
       st.w_damping += 0.5 * model::dot(p.f_damping, vr) * dt1;
       st.w_friction += 0.5 * model::dot(p.f_friction, vr) * dt1;
@@ -463,10 +471,7 @@ struct Type7Contact::Impl {
   // (v_r^n + v_r^{n+1/2}) / 2, now that v^{n+1/2} is known (the velocities of this call).
   void book_lagrange_work(const ContactNodes& nodes) {
     for (const auto& r : lagrange_records) {
-      Vec3 vr = node_v(nodes, r.node);
-      const bool triangle = r.seg[3] == r.seg[2];
-      for (std::size_t j = 0; j < (triangle ? 3u : 4u); ++j)
-        if (r.h[j] != 0) vr = model::sub(vr, model::scale(node_v(nodes, r.seg[j]), r.h[j]));
+      const Vec3 vr = relative_velocity(velocity(nodes), r.node, r.seg, r.h);
       const Vec3 vmean = model::scale(model::add(vr, r.vr_full), 0.5);
       auto& st = interfaces[static_cast<std::size_t>(r.iface)];
       st.w_lagrange += model::dot(r.f_normal, vmean) * 0.5 * r.dt2;
@@ -563,15 +568,16 @@ struct Type7Contact::Impl {
                          (in.inacti == 0 ? " (no action: the penalty pushes them out)" : " applied"));
   }
 
-  ContactStep interface_cycle(InterfaceState& st, double t, double dt1, const ContactNodes& nodes) {
-    ContactStep vote;
+  // One interface's pairs of the cycle: switched pairs into `switched`, penalty pairs into `pending` (applied
+  // after settle_switches), pairs about to close add their stiffness.
+  void interface_cycle(InterfaceState& st, double t, double dt1, const ContactNodes& nodes) {
     const auto& in = *st.in;
     st.pairs.clear();
     st.result.active_pairs = 0;
     st.result.normal_force = {0, 0, 0};
     st.result.tangential_force = {0, 0, 0};
     st.result.switched_pairs = 0;
-    if (t < in.t_start || t >= in.t_stop) return vote;
+    if (t < in.t_start || t >= in.t_stop) return;
     if (!st.started) {
       st.started = true;
       if (in.t_start > 0) start_penetrations(st, nodes);
@@ -632,12 +638,7 @@ struct Type7Contact::Impl {
       }
       const double K = pair_stiffness(in, in.stiff_segment[sb], in.stiff_node[ks]);
       const double ms = nodes.mass[static_cast<std::size_t>(node)];
-      Vec3 vr = node_v(nodes, node);
-      for (std::size_t j = 0; j < 4; ++j) {
-        if (best_h[j] == 0) continue;
-        const Vec3 vj = node_v(nodes, st.segments[sb][j]);
-        for (std::size_t d = 0; d < 3; ++d) vr[d] -= best_h[j] * vj[d];
-      }
+      const Vec3 vr = relative_velocity(velocity(nodes), node, st.segments[sb], best_h);
       const double vn = model::dot(vr, n);
       if (!(p > 0)) {
         st.f_t[ks] = Vec3{};
@@ -747,9 +748,7 @@ struct Type7Contact::Impl {
       // The pair's own vote: kinematic and dashpot limits, and the spring's step (never below the nodal step
       // of a free node, so redundant there) except under /DT/INTER/CST on a plain TYPE7, where the nodal step
       // adds mass to stay at Tmin and the pair's step, taken with the mass before that, must not undercut it.
-      const bool mass_scaled =
-          controls.action == ContactControls::Action::AddMass && controls.t_min > 0 && !in.lagdt;
-      if (!mass_scaled) dt_pair = std::min(dt_pair, dt_spring);
+      if (!mass_scaled_interface) dt_pair = std::min(dt_pair, dt_spring);
       q.dt_vote = dt_pair;
       // LAGDT: below Tmin the pair leaves the penalty path for this cycle and becomes a row (section 6).
       if (lagrange_on() && in.lagdt) {
@@ -763,7 +762,6 @@ struct Type7Contact::Impl {
       }
       pending.push_back(q);
     }
-    return vote;
   }
 };
 
@@ -864,12 +862,8 @@ const std::vector<NodeForce>& Type7Contact::lagrange_correction(const LagrangeNo
     // Work over [t^{n-1/2}, t^n] with the mean velocity of that half step (exact for a force constant over
     // the step, which the multiplier is): F . (v_r^{n-1/2} + v_r^n) / 2 dt1 / 2; the other half at the next
     // cycle (book_lagrange_work).
-    Vec3 vr_half = v_half(row.node), vr_full = v_full(row.node);
-    for (std::size_t j = 0; j < (triangle ? 3u : 4u); ++j) {
-      if (row.h[j] == 0) continue;
-      vr_half = model::sub(vr_half, model::scale(v_half(row.seg[j]), row.h[j]));
-      vr_full = model::sub(vr_full, model::scale(v_full(row.seg[j]), row.h[j]));
-    }
+    const Vec3 vr_half = relative_velocity(v_half, row.node, row.seg, row.h);
+    const Vec3 vr_full = relative_velocity(v_full, row.node, row.seg, row.h);
     const Vec3 vmean = model::scale(model::add(vr_half, vr_full), 0.5);
     st.w_lagrange += model::dot(fn, vmean) * 0.5 * dt1;
     st.w_friction += model::dot(out.friction, vmean) * 0.5 * dt1;

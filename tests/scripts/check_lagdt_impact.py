@@ -24,7 +24,8 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from check_contact_common import Checks, finish, read_listing, read_states, read_summary, run_radx  # noqa: E402
+from check_contact_common import (Checks, finish, read_listing, read_states, read_summary, read_th,  # noqa: E402
+                                  run_radx, th_column)
 
 T_MIN = 6e-7  # just below the brick step (6.9e-7 s for the 5 mm aluminium bricks)
 
@@ -76,23 +77,9 @@ def lowest_height(states, node_id):
 
 
 def momentum_z(out, name):
-    import h5py
-    with h5py.File(os.path.join(out, name + "_th.h5"), "r") as f:
-        for path in f:
-            d = f[path]
-            if hasattr(d, "attrs") and "columns" in d.attrs:
-                cols = [c.decode() if isinstance(c, bytes) else str(c) for c in d.attrs["columns"]]
-                if "ZMOM" in cols:
-                    z = d[()][:, cols.index("ZMOM")]
-                    return z[0], z[-1]
-        for path in f:
-            for sub in f[path]:
-                d = f[path][sub]
-                cols = [c.decode() if isinstance(c, bytes) else str(c) for c in d.attrs["columns"]]
-                if "ZMOM" in cols:
-                    z = d[()][:, cols.index("ZMOM")]
-                    return z[0], z[-1]
-    raise KeyError("no ZMOM in the time history")
+    """First and last global ZMOM of the time history."""
+    _, z = th_column(read_th(out, name), "ZMOM")
+    return z[0], z[-1]
 
 
 def same_th(a, b, name):
