@@ -438,8 +438,9 @@ def main(argv):
     here = os.path.dirname(os.path.abspath(__file__))
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--variant", choices=("penalty", "lagdt", "all"), default="all")
-    p.add_argument("--lagdt-tmin", type=float, default=1e-7,
-                   help="Tmin of /DT/INTER/CST in the LAGDT engine deck (default 1e-7 s: no pair of the sample deck switches; 1e-6 switches the bottom pairs)")
+    p.add_argument("--lagdt-tmin", type=float, default=1e-6,
+                   help="Tmin of /DT/INTER/CST in the LAGDT engine deck (default 1e-6 s: the block's bottom pairs "
+                        "switch at impact; 1e-7 s switches none)")
     p.add_argument("--out", default=os.path.join(here, "..", "decks"),
                    help="parent folder of block_on_plate/ and block_on_plate_lagdt/ (default: decks/)")
     p.add_argument("--v0", type=float, default=10.0, help="impact speed of the block, m/s (default 10)")

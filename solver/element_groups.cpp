@@ -30,6 +30,7 @@ void BrickGroup::allocate(int n) {
     v->assign(G, 0.0);
   off.assign(G, 1.0);
   sig.assign(6 * G, 0.0);
+  hg_force.assign(4 * 3 * G, 0.0);
   nodal_force.assign(8 * 3 * G, 0.0);
   small.assign(G, 0);
   x_ref.assign(8 * 3 * G, 0.0);

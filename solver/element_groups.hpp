@@ -76,6 +76,7 @@ struct BrickGroup {
   std::vector<double> q;           // [G] bulk viscosity pressure of the last cycle
   std::vector<double> e_int;       // [G] accumulated internal energy (includes bulk viscosity work)
   std::vector<double> e_hg;        // [G]
+  std::vector<double> hg_force;    // [4][3][G] hourglass forces H_j of the last cycle (energy trapezoid)
   std::vector<double> w_plastic;   // [G]
   std::vector<double> rate;        // [G] strain rate measure (Johnson-Cook)
   std::vector<double> dt;          // [G]

@@ -12,11 +12,11 @@ Free plate, no gravity (--free: no external force):
   plain TYPE7: the step collapses (some step below Tmin / 2), and the penalty keeps the energy balance within
     2 % at that smaller step.
 Clamped plate with gravity (the default deck at 50 m/s, Stfac 30): plain TYPE7 within 2 %, LAGDT no node
-through the plate.
-Energy of the LAGDT runs: within 4 %. The multipliers' work is booked exactly (tests/unit/test_lagrange_contact),
-but stopping the block's lower nodes within one step rings the bricks at their highest frequency, and the
-engine's full-step kinetic energy (elements.md 8) then reads high by about F a dt^2 / 8 per node (a few %
-of the energy here, constant after the impact); see docs/engine.md.
+through the plate and within 2 % (the issue's stiff-contact demand).
+Free plate, LAGDT: energy within 1 % (the issue's fast-impact demand). The multipliers' work is booked exactly
+(tests/unit/test_lagrange_contact); the one-step stop rings the bricks' hourglass modes at the highest
+frequency, which the brick's trapezoidal hourglass energy books as the work those forces do (hex8_fb.cpp; the
+rectangle rule of elements.md 3.4 read +3 % here).
 """
 import argparse
 import os
@@ -125,7 +125,7 @@ def main():
     bound = 1.15 * s["time"] / dt_brick0
     lag.check(s["cycles"] <= bound, "cycles %d <= 1.15 end time / brick step = %.0f" % (s["cycles"], bound))
     err = s["energy"]["error_percent"]
-    lag.check(abs(err) <= 4.0, "energy error %.3g %% (allowed 4 %%: see the header)" % err)
+    lag.check(abs(err) <= 1.0, "energy error %.3g %% (allowed 1 %%)" % err)
     lag_cycles = s["cycles"]
     # The same run on two threads: bit-identical summary energies and time history (fixed assembly order).
     out2 = os.path.join(free, "out_lagdt_2threads")
@@ -165,7 +165,7 @@ def main():
     h = lowest_height(st["states"], st["node_id"])
     lc.check(h > 0, "no block node through the plate (lowest height %.4g mm)" % h)
     err = read_summary(out, name)["energy"]["error_percent"]
-    lc.check(abs(err) <= 4.0, "energy error %.3g %% (allowed 4 %%: see the header)" % err)
+    lc.check(abs(err) <= 2.0, "energy error %.3g %% (allowed 2 %%)" % err)
     all_checks.append(lc)
     finish(all_checks)
 
