@@ -63,6 +63,8 @@ namespace {
 using model::Vec3;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kTiny = 1e-300;
+// A LAGDT node within this fraction of the gap outside the gap's edge counts as resting on it (see on_edge).
+constexpr double kEdgeBand = 1e-3;
 
 // The forces of one active pair in the last cycle, kept to book their work over the step.
 struct PairRecord {
@@ -649,7 +651,12 @@ struct Type7Contact::Impl {
         // interface as soon as it closes (k_eff >= K), so it must not pull the step below Tmin before.
         const bool leaves = controls.action == ContactControls::Action::Delete && controls.t_min > 0 &&
                             ms > 0 && scale * std::sqrt(2.0 * ms / K) < controls.t_min;
-        if (vn < 0 && -p < -2.0 * vn * dt1 && !leaves) {
+        // A LAGDT node resting on the gap's edge (a row of the last cycle stopped it there, p = 0 to
+        // round-off) keeps its row: without it the forces behind it would push it one step into the gap
+        // before it switches again. The row costs nothing when it does not bind: the active set releases it.
+        const bool on_edge = in.lagdt && lagrange_on() && -p <= kEdgeBand * g;
+        const bool approaching = vn < 0 && -p < -2.0 * vn * dt1;
+        if ((approaching || on_edge) && !leaves) {
           // LAGDT: a pair whose step at p = 0 is already below Tmin does not drag the step down before it
           // closes: it becomes a row that lets it close down to the gap within the step, no further.
           // It votes with the stiffness it can reach within the step (reach_factor, from the gap's edge where
@@ -662,7 +669,7 @@ struct Type7Contact::Impl {
               pair_spring_step(node, st.segments[sb], best_h, k_reach, nodes) < controls.t_min &&
               may_switch(st, row, nodes))
             switch_pair(st, row, ks, 0.0);
-          else
+          else if (approaching)
             add_pair_stiffness(node, st.segments[sb], best_h, k_reach, nodes, st);
         }
         continue;

@@ -231,6 +231,26 @@ def type7(iid, title, grnod, surf, stiffness, gapmin, inacti, viss, fric=0.0, if
         line(I(0), I(0), R(0.0), I(iform), I(0), I(0), R(0.0), I(0))]
 
 
+def type7_lagdt(iid, title, grnod, surf, stiffness, gapmin, inacti, viss, fric=0.0, iform=1, visf=1.0, istf=1):
+    """/INTER/LAGDT/TYPE7 (its one layout, deck-format.md): the fields of type7() that it has, Igap 0, Ifric 0.
+    Its pairs switch to Lagrange multipliers under /DT/INTER/CST or /DT/INTER/LAG in the engine deck."""
+    return [
+        "/INTER/LAGDT/TYPE7/%d" % iid, title,
+        names(("grnd_IDs", 10), ("surf_IDm", 10), ("Istf", 10), ("", 10), ("Igap", 10), ("", 10), ("Ibag", 10),
+              ("Idel", 10)),
+        line(I(grnod), I(surf), I(istf), blank(10), I(0), blank(10), I(0), I(0)),
+        names(("Fscalegap", 20), ("Gapmax", 20)),
+        line(R(0.0), R(0.0)),
+        names(("Stmin", 20), ("Stmax", 20)),
+        line(R(0.0), R("1E30" if istf >= 2 else 0.0)),
+        names(("Stfac", 20), ("Fric", 20), ("Gapmin", 20), ("Tstart", 20), ("Tstop", 20)),
+        line(R(stiffness), R(fric), R(gapmin), R(0.0), R(0.0)),
+        names(("IBC", 10), ("", 20), ("Inacti", 10), ("VISs", 20), ("VISf", 20), ("Bumult", 20)),
+        line(ibc_code(0, 0, 0), blank(20), I(inacti), R(viss), R(visf), R(0.0)),
+        names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10)),
+        line(I(0), I(0), R(0.0), I(iform))]
+
+
 def engine_deck(run, t_stop, anim_dt, print_every, comments):
     """Engine deck: /RUN, animation states every anim_dt, /DT 0.9 0, /PRINT, no /STOP criteria."""
     L = ["#RADIOSS ENGINE", "# Engine deck of %s_0000.rad." % run]

@@ -2,10 +2,12 @@
 
 usage: /usr/bin/python3 check_contact_block_sliding.py --radx RADX
            --decks decks/verification/block_sliding/BLOCK_SLIDING_IFORM2_0000.rad
-                   decks/verification/block_sliding/BLOCK_SLIDING_IFORM1_0000.rad --out DIR
+                   decks/verification/block_sliding/BLOCK_SLIDING_IFORM1_0000.rad
+                   decks/verification/block_sliding/BLOCK_SLIDING_LAGDT_0000.rad --out DIR
 
 A stiff cube (mass M) rests under gravity g on one fixed main segment through its lower-face secondary nodes and
-starts sliding at v0 along +X; TYPE7 with Fric = mu, Ifric 0. While it slides, the friction forces add up to
+starts sliding at v0 along +X; TYPE7 (or LAGDT/TYPE7 with every pair held switched to Lagrange multipliers,
+whose friction is Coulomb bounded by mu lambda) with Fric = mu, Ifric 0. While it slides, the friction forces add up to
 mu M g, so its mean velocity (XMOM / MASS of its part) falls as v0 - mu g t and it stops at v0 / (mu g) after
 sliding v0^2 / (2 mu g). M, g, mu, v0, the gap and the start positions are read from each deck.
 
@@ -77,6 +79,14 @@ def one_deck(radx, deck, out, checks):
     checks.check(abs(e["contact_friction"] - (ke0 - e["kinetic"])) <= 0.02 * ke0,
                  "frictional energy %.5g J = kinetic energy lost %.5g J (allowed 2 %% of %.4g J)"
                  % (e["contact_friction"], ke0 - e["kinetic"], ke0))
+    if it["lagdt"]:
+        # /INTER/LAGDT/TYPE7 with Tmin far above the pair steps: every lower-face pair is a multiplier row at
+        # every cycle (cycle 0 included), so the friction checked above is the multipliers' Coulomb bound.
+        si = s["interfaces"][0]
+        rows = len(secondary) * (s["cycles"] + 1)
+        checks.check(si["switched_pairs_total"] == rows and si["switched_pairs_max"] == len(secondary),
+                     "every pair switched at every cycle: %d pair-cycles (expected %d), at most %d in a cycle"
+                     % (si["switched_pairs_total"], rows, si["switched_pairs_max"]))
     cc.check_energy_error(checks, s)
 
 

@@ -104,6 +104,7 @@ class Model:
         self.grav = [(cell(data[1], 11, 20), integer(data[1], 41, 50), real(data[1], 81, 100))
                      for _, data in d.of("/GRAV")]
         self.interfaces = {iid: type7_fields(data) for iid, data in d.of("/INTER/TYPE7")}
+        self.interfaces.update({iid: type7_fields(data, lagdt=True) for iid, data in d.of("/INTER/LAGDT/TYPE7")})
         self.masses = self.lumped_masses()
 
     def lumped_masses(self):
@@ -148,11 +149,12 @@ class Model:
         return v
 
 
-def type7_fields(data):
-    """/INTER/TYPE7 2019+ layout (deck-format.md): data[0] is the title."""
+def type7_fields(data, lagdt=False):
+    """/INTER/TYPE7 2019+ layout or /INTER/LAGDT/TYPE7 (lagdt: no Icurv, the same columns otherwise;
+    deck-format.md): data[0] is the title."""
     c = data[1:]
     f = dict(grnd=integer(c[0], 1, 10), surf=integer(c[0], 11, 20), Istf=integer(c[0], 21, 30),
-             Igap=integer(c[0], 41, 50), Icurv=integer(c[0], 81, 90))
+             Igap=integer(c[0], 41, 50), Icurv=0 if lagdt else integer(c[0], 81, 90), lagdt=lagdt)
     k = 3 + (1 if f["Icurv"] in (1, 2) else 0)
     f.update(Idel=integer(c[0], 71, 80))
     f.update(Stfac=real(c[k], 1, 20), Fric=real(c[k], 21, 40), Gapmin=real(c[k], 41, 60),
