@@ -4,6 +4,8 @@
     python3 bench/gen_shell_plate.py                    # N = 1000: 1,000,000 shells, 1,002,001 nodes
     python3 bench/gen_shell_plate.py --n 200 --out /tmp/bench
     python3 bench/gen_shell_plate.py --impact           # adds a 10 x 10 x 4 brick block and two TYPE7
+    python3 bench/gen_shell_plate.py --n 200 --impact --contact lagdt     # the LAGDT variant (PLATE200I_LAGDT)
+    python3 bench/gen_shell_plate.py --n 200 --impact --contact addmass   # TYPE7 + /DT/INTER/CST added mass
 
 Writes PLATE<N>_0000.rad (starter) and PLATE<N>_0001.rad (engine) into --out (default: the current folder).
 With --impact the root name is PLATE<N>I (PLATE<N>I_0000.rad ...), so both variants can sit side by side.
@@ -17,6 +19,10 @@ Model (units Mg, mm, s): a 1000 x 1000 mm steel plate, 1 mm thick, meshed with N
     down at 10 m/s. Two TYPE7 interfaces as in decks/block_on_plate: block nodes on the plate surface
     (Istf 4, Inacti 6, Fric 0.1, Iform 1) and plate nodes on the block's outer faces (Istf 0, Fric 0.2,
     Iform 2).
+  --contact lagdt writes both interfaces as /INTER/LAGDT/TYPE7 and adds /DT/INTER/CST 0.9 Tmin (--tmin) to the
+  engine deck: pairs whose step would fall below Tmin switch to Lagrange multipliers; --contact addmass keeps
+  the TYPE7 cards with the same /DT/INTER/CST, which adds mass instead. Root names PLATE<N>I_LAGDT and
+  PLATE<N>I_ADDMASS.
 Tstop is set so that about 1500 cycles run at the shell time step 0.9 h / sqrt(E/rho) (h = 1000/N mm);
 contact can lower the step in the --impact variant. With Igap 0 the computed gaps are min(t, lmin/2) = 0.5 mm
 for interface 1 when h = 1 mm (N = 1000) and l/10 = 1 mm for interface 2, so nothing penetrates at t = 0.
@@ -55,7 +61,7 @@ def first_power_of_ten_above(n):
     return p
 
 
-def starter(n, impact, root):
+def starter(n, impact, root, lagdt=False):
     h = L_PLATE / n
     nn = n + 1
     out = []
@@ -220,23 +226,39 @@ def starter(n, impact, root):
         for iid, title, grnod, surf, istf, inacti, fric, iform, viss in (
                 (1, "Block nodes on plate surface", 3, 1, 4, 6, 0.1, 1, 0.05),
                 (2, "Plate nodes on block outer faces", 2, 2, 0, 0, 0.2, 2, 0.0)):
-            a("/INTER/TYPE7/%d" % iid)
-            a(title)
-            a(names(("grnd_IDs", 10), ("surf_IDm", 10), ("Istf", 10), ("Ithe", 10), ("Igap", 10), ("", 10),
-                    ("Ibag", 10), ("Idel", 10), ("Icurv", 10), ("Iadm", 10)))
-            a(line(I(grnod), I(surf), I(istf), I(0), I(0), blank(10), I(0), I(0), I(0), I(0)))
-            a(names(("Fscalegap", 20), ("Gap_max", 20), ("Fpenmax", 20), ("", 20), ("Itied", 10), ("Ists", 10)))
-            a(line(R(0.0), R(0.0), R(0.0), blank(20), I(0), I(0)))
-            a(names(("Stmin", 20), ("Stmax", 20), ("%mesh_size", 20), ("dtmin", 20), ("Irem_gap", 10),
-                    ("Irem_i2", 10)))
-            a(line(R(0.0), R("1E30" if istf >= 2 else 0.0), R(0.0), R(0.0), I(0), I(0)))
+            if lagdt:  # the LAGDT layout (deck-format.md): no Ithe, Icurv, Iadm, Fpenmax, ... fric_ID
+                a("/INTER/LAGDT/TYPE7/%d" % iid)
+                a(title)
+                a(names(("grnd_IDs", 10), ("surf_IDm", 10), ("Istf", 10), ("", 10), ("Igap", 10), ("", 10),
+                        ("Ibag", 10), ("Idel", 10)))
+                a(line(I(grnod), I(surf), I(istf), blank(10), I(0), blank(10), I(0), I(0)))
+                a(names(("Fscalegap", 20), ("Gapmax", 20)))
+                a(line(R(0.0), R(0.0)))
+                a(names(("Stmin", 20), ("Stmax", 20)))
+                a(line(R(0.0), R("1E30" if istf >= 2 else 0.0)))
+            else:
+                a("/INTER/TYPE7/%d" % iid)
+                a(title)
+                a(names(("grnd_IDs", 10), ("surf_IDm", 10), ("Istf", 10), ("Ithe", 10), ("Igap", 10), ("", 10),
+                        ("Ibag", 10), ("Idel", 10), ("Icurv", 10), ("Iadm", 10)))
+                a(line(I(grnod), I(surf), I(istf), I(0), I(0), blank(10), I(0), I(0), I(0), I(0)))
+                a(names(("Fscalegap", 20), ("Gap_max", 20), ("Fpenmax", 20), ("", 20), ("Itied", 10),
+                        ("Ists", 10)))
+                a(line(R(0.0), R(0.0), R(0.0), blank(20), I(0), I(0)))
+                a(names(("Stmin", 20), ("Stmax", 20), ("%mesh_size", 20), ("dtmin", 20), ("Irem_gap", 10),
+                        ("Irem_i2", 10)))
+                a(line(R(0.0), R("1E30" if istf >= 2 else 0.0), R(0.0), R(0.0), I(0), I(0)))
             a(names(("Stfac", 20), ("Fric", 20), ("Gapmin", 20), ("Tstart", 20), ("Tstop", 20)))
             a(line(R(1.0), R(fric), R(0.0), R(0.0), R(0.0)))
             a(names(("IBC", 10), ("", 20), ("Inacti", 10), ("VISs", 20), ("VISf", 20), ("Bumult", 20)))
             a(line(ibc_code(0, 0, 0), blank(20), I(inacti), R(viss), R(1.0), R(0.0)))
-            a(names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10), ("sens_ID", 10),
-                    ("fct_IDF", 10), ("AscaleF", 20), ("fric_ID", 10)))
-            a(line(I(0), I(0), R(0.0), I(iform), I(0), I(0), R(0.0), I(0)))
+            if lagdt:
+                a(names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10)))
+                a(line(I(0), I(0), R(0.0), I(iform)))
+            else:
+                a(names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10), ("sens_ID", 10),
+                        ("fct_IDF", 10), ("AscaleF", 20), ("fric_ID", 10)))
+                a(line(I(0), I(0), R(0.0), I(iform), I(0), I(0), R(0.0), I(0)))
     a(RULER)
     a("/TH/NODE/1")
     a("Plate centre")
@@ -263,7 +285,7 @@ def starter(n, impact, root):
     return out
 
 
-def engine(n, root):
+def engine(n, root, inter_tmin=0.0):
     h = L_PLATE / n
     dt_shell = 0.9 * h / math.sqrt(E_STEEL / RHO_STEEL)
     tstop = sig3(CYCLES * dt_shell)
@@ -276,6 +298,9 @@ def engine(n, root):
            "/ANIM/DT", names(("Tstart", 20), ("dT", 20)), line(R(0.0), R(sig3(tstop / 2), sig=SIG)),
            "/ANIM/ELEM/VONM", "/ANIM/ELEM/EPSP", "/ANIM/VECT/VEL",
            "/DT", names(("Tscale", 20), ("Tmin", 20)), line(R(0.9), R(0.0)),
+           *([] if not inter_tmin else
+             ["#  /DT/INTER/CST: LAGDT pairs below Tmin switch to Lagrange multipliers; TYPE7 nodes get added mass",
+              "/DT/INTER/CST", names(("Tscale", 20), ("Tmin", 20)), line(R(0.9), R(inter_tmin))]),
            "/PRINT/-100",
            "/STOP", names(("Emax", 20), ("Mmax", 20), ("Nmax", 20), ("NTH", 10), ("NANIM", 10)),
            line(R("1.0E+30"), R("1.0E+30"), R("1.0E+30"), I(1), I(1)),
@@ -289,16 +314,26 @@ def main(argv):
     p.add_argument("--n", type=int, default=1000, help="elements per side (default 1000: one million shells)")
     p.add_argument("--out", default=".", help="output folder (default: current folder)")
     p.add_argument("--impact", action="store_true", help="add a 10 x 10 x 4 brick block and two TYPE7")
+    p.add_argument("--contact", choices=("type7", "lagdt", "addmass"), default="type7",
+                   help="with --impact: plain TYPE7 (default); lagdt: /INTER/LAGDT/TYPE7 with /DT/INTER/CST Tmin; "
+                        "addmass: plain TYPE7 with /DT/INTER/CST Tmin (added mass)")
+    p.add_argument("--tmin", type=float, default=8e-7,
+                   help="Tmin of /DT/INTER/CST for --contact lagdt and addmass (default 8e-7 s: just below the "
+                        "shell step of --n 200)")
     args = p.parse_args(argv)
     if args.n < 2:
         p.error("--n must be at least 2")
+    if args.contact != "type7" and not args.impact:
+        p.error("--contact needs --impact")
     root = "PLATE%d%s" % (args.n, "I" if args.impact else "")
+    if args.contact != "type7":
+        root += "_" + args.contact.upper()
     os.makedirs(args.out, exist_ok=True)
     t0 = time.time()
     s_path = os.path.join(args.out, root + "_0000.rad")
     e_path = os.path.join(args.out, root + "_0001.rad")
-    write(s_path, starter(args.n, args.impact, root))
-    lines, tstop = engine(args.n, root)
+    write(s_path, starter(args.n, args.impact, root, lagdt=args.contact == "lagdt"))
+    lines, tstop = engine(args.n, root, args.tmin if args.contact != "type7" else 0.0)
     write(e_path, lines)
     print("wrote %s and %s: %d shells, %d plate nodes%s, Tstop %g s (%.1f s)" %
           (s_path, e_path, args.n * args.n, (args.n + 1) ** 2,

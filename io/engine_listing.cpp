@@ -273,9 +273,17 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
         std::to_string(L.active_set_passes) + " (max " + std::to_string(L.passes_max) + " in one cycle, " +
             std::to_string(L.unconverged) + " cycle(s) at the limit)");
     row(os, "regularisations", std::to_string(L.regularisations) + " (largest beta " + sci(L.beta_max) + ")");
-    row(os, "time: assembly", format_duration(L.seconds_assembly));
-    row(os, "time: factorisation", format_duration(L.seconds_factorization));
-    row(os, "time: solve", format_duration(L.seconds_solve));
+    // Milliseconds and the share of the run: the multiplier solve is meant to stay a small part of the cycle.
+    auto share = [&](double seconds) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "%.1f ms (%.2f %% of the wall time)", 1e3 * seconds,
+                    s.wall_seconds > 0 ? 100.0 * seconds / s.wall_seconds : 0.0);
+      return std::string(buf);
+    };
+    row(os, "time: assembly", share(L.seconds_assembly));
+    row(os, "time: factorisation", share(L.seconds_factorization));
+    row(os, "time: solve", share(L.seconds_solve));
+    row(os, "time: all three", share(L.seconds_assembly + L.seconds_factorization + L.seconds_solve));
   }
   if (s.states > 0 || !s.time_history.empty()) {
     heading(os, "RESULTS");

@@ -216,6 +216,20 @@ def rwall_plane(v):
             card(reals("XM1", "YM1", "ZM1"))]
 
 
+def rbody(v):
+    """/RBODY (deck-format.md): cards 1-4; Ifail on card 4 from 2021, and card 5 when it is set."""
+    c4 = [F("Ioptoff", "I", 1, 10), F("Iexpams", "I", 11, 20)]
+    if v >= 2021:
+        c4.append(F("Ifail", "I", 21, 30))
+    return [card([F("node_ID", "I", 1, 10), F("sens_ID", "I", 11, 20), F("skew_ID", "I", 21, 30),
+                  F("Ispher", "I", 31, 40), F("Mass", "R", 41, 60), F("grnd_ID", "I", 61, 70),
+                  F("Ikrem", "I", 71, 80), F("ICoG", "I", 81, 90), F("surf_ID", "I", 91, 100)]),
+            card(reals("Jxx", "Jyy", "Jzz")),
+            card(reals("Jxy", "Jyz", "Jxz")),
+            card(c4),
+            card(reals("FN", "FT", "expN", "expT"), cond=lambda x: x.get("Ifail", 0) != 0)]
+
+
 NODE_REC = [F("node_ID", "I", 1, 10), F("X", "R", 11, 30), F("Y", "R", 31, 50), F("Z", "R", 51, 70)]
 SHELL_REC = [F("shell_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)] + \
     [F("PHI", "R", 61, 80), F("Thick", "R", 81, 100)]
@@ -254,6 +268,7 @@ STARTER = {
     "/INIVEL/TRA": ("id", True, inivel, None, None),
     "/GRAV": ("id", True, grav, None, None),
     "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
+    "/RBODY": ("id", True, rbody, None, None),
     "/FUNCT": ("id", True, lambda v: [], "records", FUNCT_REC),
     "/TH/NODE": ("id", True, lambda v: [], "threcords", THNODE_REC),
     "/TH/PART": ("id", True, lambda v: [], "thids", ID_REC),
