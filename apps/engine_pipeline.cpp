@@ -220,6 +220,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   s.added_mass = result.last.added_mass;
   s.momentum = result.last.momentum;
   s.energy = to_io(result.last.energy);
+  s.substitutions = model.substitutions;
   if (const auto* c = engine.contact())
     for (const auto& r : c->results())
       s.interfaces.push_back(io::InterfaceSummary{r.id, r.active_pairs, r.max_penetration,

@@ -27,10 +27,13 @@ void usage(std::ostream& os) {
         "  keywords [--markdown] [--output FILE]\n"
         "                              the keyword reference (every keyword, card, field and diagnostic "
         "code)\n"
-        "  run [DECK] [--out DIR] [--threads N] [--no-plot]\n"
+        "  run [DECK] [--out DIR] [--threads N] [--no-plot] [--allow-substitutions]\n"
         "                              the starter then the engine: DECK is NAME_0000.rad (NAME_0001.rad "
         "beside\n"
-        "                              it) or a one-file deck; without DECK, the embedded default deck\n"
+        "                              it) or a one-file deck; without DECK, the embedded default deck.\n"
+        "                              --allow-substitutions: run the nearest formulation radx implements\n"
+        "                              where the deck asks for one it lacks (each is listed) instead of\n"
+        "                              refusing the deck\n"
         "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]...]\n"
         "                              a time history P_th.h5: without --csv, list its groups (objects,\n"
         "                              variables, units, rows, time range); with --csv, write the chosen\n"
@@ -79,6 +82,8 @@ int run(const std::vector<std::string>& args) {
       }
     } else if (a == "--no-plot") {
       eopt.plot = false;
+    } else if (a == "--allow-substitutions") {
+      sopt.allow_substitutions = true;
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << "radx run: unknown option " << a << '\n';
       return radx::app::kExitUsage;

@@ -9,7 +9,7 @@
 namespace {
 
 void usage(std::ostream& os) {
-  os << "usage: radx-starter [NAME_0000.rad] [--out DIR]\n"
+  os << "usage: radx-starter [NAME_0000.rad] [--out DIR] [--allow-substitutions]\n"
         "       radx-starter -i NAME_0000.rad [--out DIR]\n"
         "\n"
         "Reads a Radioss-format starter deck (or a one-file deck), checks it, and writes\n"
@@ -19,6 +19,10 @@ void usage(std::ostream& os) {
         "\n"
         "  -i DECK       the starter deck (as Radioss users type it)\n"
         "  --out DIR     output folder (default: the current folder)\n"
+        "  --allow-substitutions\n"
+        "                where the deck asks for a formulation or option radx does not implement, run\n"
+        "                the nearest one radx implements instead of refusing the deck; every substitution\n"
+        "                is listed (listing, model file, and the engine's NAME_summary.json)\n"
         "  --help        this text\n"
         "  --version     the version\n"
         "\n"
@@ -49,6 +53,8 @@ int main(int argc, char** argv) {
       opt.deck = argv[++i];
     } else if (a == "--out") {
       opt.out_dir = argv[++i];
+    } else if (a == "--allow-substitutions") {
+      opt.allow_substitutions = true;
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << "radx-starter: unknown option " << a << '\n';
       usage(std::cerr);

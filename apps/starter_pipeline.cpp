@@ -71,7 +71,9 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
   const auto t0 = std::chrono::steady_clock::now();
   StarterResult res;
   Diagnostics diags;
-  const Deck deck = read_starter_deck(opt.deck, diags);
+  ReadOptions read_opt;
+  read_opt.allow_substitutions = opt.allow_substitutions;
+  const Deck deck = read_starter_deck(opt.deck, diags, read_opt);
   model::Model model;
   const bool readable = !deck.records.empty();
   if (readable) {

@@ -13,6 +13,8 @@ struct StarterOptions {
   std::string out_dir = ".";       // where outputs go (Radioss writes them in the current folder)
   bool write_outputs = true;       // false: `radx check`, nothing is written
   bool check_engine_deck = false;  // also read NAME_0001.rad beside the deck (or the one-file engine part)
+  // Run the nearest implemented formulation instead of refusing one radx lacks; each is listed.
+  bool allow_substitutions = false;
 };
 
 struct StarterResult {

@@ -224,6 +224,11 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
   std::snprintf(buf, sizeof buf, "%.1f %%", e.error_percent());
   row(os, "error 100 (E / (E0 + W) - 1)", buf);
 
+  if (!s.substitutions.empty()) {
+    heading(os, "SUBSTITUTIONS (--allow-substitutions: these ran instead of what the deck asks)");
+    for (const auto& text : s.substitutions) os << "  " << text << '\n';
+  }
+
   heading(os, "RUN");
   row(os, "cycles", std::to_string(s.cycles));
   row(os, "final time", sci(s.time));

@@ -113,6 +113,8 @@ struct RunSummary {
   std::array<double, 3> momentum{0, 0, 0};
   EnergyBalance energy;
   std::vector<InterfaceSummary> interfaces;
+  // --allow-substitutions: what ran instead of what the deck asks (from the model file).
+  std::vector<std::string> substitutions;
   // The Lagrange-multiplier solver of switched LAGDT pairs (present: a LAGDT interface could switch).
   struct Lagrange {
     bool present = false;

@@ -291,7 +291,7 @@ RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RAD
 
 // Written member by member below (write_radx, read_file, write_block, read_block): a new member of these
 // structs must be added there.
-static_assert(member_count<Model>() == 29, "model::Model changed: update write_radx and read_file");
+static_assert(member_count<Model>() == 30, "model::Model changed: update write_radx and read_file");
 static_assert(member_count<model::Nodes>() == 5, "model::Nodes changed: update write_radx and read_file");
 static_assert(member_count<model::ElementBlock>() == 7, "model::ElementBlock changed: update write_block");
 
@@ -558,6 +558,7 @@ void write_radx(hid_t file, const Model& m) {
   for_each_table(m, [&](const char* name, const auto& recs) { write_table(radx, name, recs); });
   write_record_list(radx, "interfaces", m.interfaces);
   write_strings(radx, "ignored_keywords", m.ignored_keywords);
+  write_strings(radx, "substitutions", m.substitutions);
 }
 
 // Writes the whole file at `part`; closes it (and flushes it to disk) before returning.
@@ -647,6 +648,7 @@ void read_file(const std::string& path, Model& m) {
   for_each_table(m, [&](const char* name, auto& recs) { read_table(radx, name, recs); });
   read_record_list(radx, "interfaces", m.interfaces);
   m.ignored_keywords = read_strings(radx, "ignored_keywords");
+  m.substitutions = read_strings(radx, "substitutions");
   file.close("cannot close file " + path);
 }
 

@@ -193,6 +193,11 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
     for (const auto& k : m.ignored_keywords) os << "  " << k << '\n';
   }
 
+  if (!m.substitutions.empty()) {
+    heading(os, "SUBSTITUTIONS (--allow-substitutions: what runs instead of what the deck asks)");
+    for (const auto& k : m.substitutions) os << "  " << k << '\n';
+  }
+
   heading(os, "DIAGNOSTICS");
   for (const auto& d : in.diagnostics) os << "  " << d << '\n';
   os << "  " << in.errors << " error(s), " << in.warnings << " warning(s)\n";

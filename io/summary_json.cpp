@@ -178,6 +178,13 @@ std::string summary_json(const RunSummary& s) {
           json_number(in.added_mass) + ", \"removed_nodes\": " + std::to_string(in.removed_nodes) + "}");
   }
   w.close(']');
+  w.key("substitutions");
+  w.open('[');
+  for (const auto& text : s.substitutions) {
+    w.item();
+    w.raw(json_string(text));
+  }
+  w.close(']');
   if (s.lagrange.present) {
     const auto& L = s.lagrange;
     w.key("lagrange_solver");

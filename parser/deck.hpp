@@ -89,6 +89,9 @@ struct Deck {
   UnitSystem input_units;
   UnitSystem work_units;
   std::vector<KeywordRecord> records;  // starter keywords in deck order
+  bool allow_substitutions = false;    // ReadOptions::allow_substitutions
+  // What runs instead of what the deck asks (only with allow_substitutions), one sentence each.
+  std::vector<std::string> substitutions;
   std::vector<const KeywordRecord*> of(std::string_view path) const;
   [[nodiscard]] Where where(SourcePos p, int column = 0) const;
 };
@@ -113,6 +116,9 @@ struct EngineDeck {
 struct ReadOptions {
   // Treat a file with an /END/ENGINE line as a one-file deck: the starter part starts after it.
   bool allow_one_file = true;
+  // Run the nearest implemented formulation where the deck asks for one radx lacks (listed as
+  // substitutions) instead of refusing the deck.
+  bool allow_substitutions = false;
 };
 
 // Reads a starter deck (or the starter part of a one-file deck). Never throws on bad input: every

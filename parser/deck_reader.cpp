@@ -277,9 +277,23 @@ class StarterReader {
         }
       }
       if (f.ignored && !zero && !v.defaulted) {
-        diags_.warning(
-            Diag::UnimplementedOption, at(pos, column), about,
-            what + " = " + fmt_num(value) + " is read but not used by radx; the run goes on without it");
+        if (!f.changes_physics) {
+          diags_.warning(
+              Diag::UnimplementedOption, at(pos, column), about,
+              what + " = " + fmt_num(value) + " is read but not used by radx; it changes no result");
+        } else if (deck_.allow_substitutions) {
+          const std::string text =
+              what + " = " + fmt_num(value) + " is not implemented by radx: the run goes on without it";
+          diags_.warning(Diag::Substitution, at(pos, column), about, text);
+          deck_.substitutions.push_back(std::string(about.keyword) +
+                                        (about.id ? " " + std::to_string(about.id) : std::string()) + ": " +
+                                        text);
+        } else {
+          diags_.error(Diag::PhysicsNotImplemented, at(pos, column), about,
+                       what + " = " + fmt_num(value) +
+                           " changes the physics and radx does not implement it; leave it blank or 0, or run "
+                           "with --allow-substitutions to run without it");
+        }
       }
     }
     return v;
@@ -758,6 +772,7 @@ Deck read_starter_deck(const std::string& path, Diagnostics& diags, const ReadOp
     return deck;
   }
   deck.files = text.files;
+  deck.allow_substitutions = opt.allow_substitutions;
   StarterReader reader(text, diags, deck);
   reader.read(opt.allow_one_file ? one_file_start(text) : 0);
   return deck;

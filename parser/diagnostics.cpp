@@ -55,7 +55,12 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::BadUnit, "a unit name or factor that radx does not know"},
       {Diag::InconsistentValues, "values that contradict each other"},
       {Diag::DefaultApplied, "a value replaced by a default worth knowing about"},
-      {Diag::UnimplementedOption, "an option radx reads but does not implement"},
+      {Diag::UnimplementedOption, "an option radx reads but does not implement, and which changes no result"},
+      {Diag::PhysicsNotImplemented,
+       "a formulation, option or value that changes the physics and that radx does not implement "
+       "(--allow-substitutions runs the nearest one radx implements instead)"},
+      {Diag::Substitution,
+       "--allow-substitutions: a formulation or option replaced by the nearest one radx implements"},
       {Diag::NonPositiveVolume, "a solid element with zero or negative volume"},
       {Diag::NonPositiveArea, "a shell element with zero area"},
       {Diag::DegenerateElement, "a degenerate element (repeated nodes) used as a lower-order shape"},

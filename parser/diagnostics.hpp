@@ -61,6 +61,8 @@ enum class Diag : std::uint16_t {
   InconsistentValues = 507,
   DefaultApplied = 508,
   UnimplementedOption = 509,
+  PhysicsNotImplemented = 510,
+  Substitution = 511,
   // geometry
   NonPositiveVolume = 601,
   NonPositiveArea = 602,

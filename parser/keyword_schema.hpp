@@ -69,6 +69,9 @@ struct FieldDecl {
   std::optional<double> max;  // upper bound
   bool max_exclusive = false;
   bool ignored = false;  // read and echoed, but radx does not use it (a non-default value warns)
+  // With `ignored`: a non-default value changes the physics, so it is an error unless substitutions are
+  // allowed (then the run goes on without it, listed as a substitution).
+  bool changes_physics = false;
 
   FieldDecl& versions(int from, int to = kLastVersion) {
     since = from;
@@ -113,6 +116,12 @@ struct FieldDecl {
   }
   FieldDecl& unused() {
     ignored = true;
+    return *this;
+  }
+  // Read, not implemented, and a non-default value would change the results.
+  FieldDecl& not_implemented() {
+    ignored = true;
+    changes_physics = true;
     return *this;
   }
   [[nodiscard]] bool in_version(int v) const { return v >= since && v <= until; }

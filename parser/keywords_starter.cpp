@@ -193,7 +193,7 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                   .allow({0, 1, 2}),
               I("Ipos", 91, 100, "reference plane of the shell (0 mid-surface, 3 top, 4 bottom)")
                   .versions(2024)
-                  .unused()}),
+                  .not_implemented()}),
     };
     t.push_back(std::move(k));
   }
@@ -208,7 +208,10 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                  .allow({0, 1, 2, 14, 15, 16, 17, 18, 24}),
              I("Ismstr", 11, 20, "solid strain formulation; 0 takes /DEF_SOLID, then 4")
                  .allow({0, 1, 2, 3, 4, 10, 11, 12}),
-             I("Iale", 21, 30, "0 Lagrange, 1 ALE, 2 Euler").versions(2022).allow({0, 1, 2}).unused(),
+             I("Iale", 21, 30, "0 Lagrange, 1 ALE, 2 Euler")
+                 .versions(2022)
+                 .allow({0, 1, 2})
+                 .not_implemented(),
              I("Icpre", 31, 40, "constant-pressure option (3 = off); 0 takes /DEF_SOLID").allow({0, 1, 2, 3}),
              I("Itetra10", 41, 50, "10-node tetra formulation; 0 takes /DEF_SOLID")
                  .versions(2019)
@@ -220,13 +223,14 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                  .unused(),
              I("Iframe", 71, 80, "1 non-co-rotational, 2 co-rotational; 0 takes /DEF_SOLID").allow({0, 1, 2}),
              R("dn", 81, 100, "numerical damping of HEPH (Isolid 24); 0 takes the formulation default")}),
-        card("card 2", {R("qa", 1, 20, "quadratic bulk viscosity coefficient").zero_is(1.1),
-                        R("qb", 21, 40, "linear bulk viscosity coefficient").zero_is(0.05),
-                        R("h", 41, 60, "hourglass coefficient of Isolid 1 and 2").zero_is(0.1),
-                        R("Lambda", 61, 80, "numerical (Navier-Stokes) viscosity lambda; 0 = off").unused(),
-                        R("Mu", 81, 100, "numerical (Navier-Stokes) viscosity mu; 0 = off").unused()}),
+        card("card 2",
+             {R("qa", 1, 20, "quadratic bulk viscosity coefficient").zero_is(1.1),
+              R("qb", 21, 40, "linear bulk viscosity coefficient").zero_is(0.05),
+              R("h", 41, 60, "hourglass coefficient of Isolid 1 and 2").zero_is(0.1),
+              R("Lambda", 61, 80, "numerical (Navier-Stokes) viscosity lambda; 0 = off").not_implemented(),
+              R("Mu", 81, 100, "numerical (Navier-Stokes) viscosity mu; 0 = off").not_implemented()}),
         card("card 3",
-             {R("deltaT_min", 1, 20, "minimum element time step").dims(dim::time).unused(),
+             {R("deltaT_min", 1, 20, "minimum element time step").dims(dim::time).not_implemented(),
               I("Istrain", 21, 30, "strain output flag").versions(kAnyVersion, 2022).unused(),
               I("Ihkt", 31, 40, "hourglass formulation option of old layouts")
                   .versions(kAnyVersion, 2022)
@@ -243,12 +247,13 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
               R("COL_min", 81, 100, "distortion control: smallest collapse ratio; 0 = off")
                   .versions(2023)
                   .unused()}),
-        card("card 4", {I("Ndir", 1, 10, "solid-to-SPH conversion: particles per direction").unused(),
-                        I("sphpart_ID", 11, 20, "solid-to-SPH conversion: SPH part").unused(),
-                        I("Icontrol", 21, 30, "distortion control: 1 on, 2 or 0 off")
-                            .versions(2025)
-                            .allow({0, 1, 2})
-                            .unused()}),
+        card("card 4",
+             {I("Ndir", 1, 10, "solid-to-SPH conversion: particles per direction").not_implemented(),
+              I("sphpart_ID", 11, 20, "solid-to-SPH conversion: SPH part").not_implemented(),
+              I("Icontrol", 21, 30, "distortion control: 1 on, 2 or 0 off")
+                  .versions(2025)
+                  .allow({0, 1, 2})
+                  .unused()}),
     };
     t.push_back(std::move(k));
   }
@@ -305,7 +310,10 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                  .allow({0, 1})
                  .unused(),
              R("F_cut", 61, 80, "cut-off frequency of the strain-rate filter; 0 = no filter").dims(dim::rate),
-             R("Chard", 81, 100, "hardening mix: 0 isotropic to 1 kinematic").ge(0.0).le(1.0).unused()}),
+             R("Chard", 81, 100, "hardening mix: 0 isotropic to 1 kinematic")
+                 .ge(0.0)
+                 .le(1.0)
+                 .not_implemented()}),
         card(
             "card 5",
             {R("m", 1, 20, "temperature softening exponent").zero_is(1.0),
@@ -412,30 +420,31 @@ void add_contact(std::vector<KeywordDecl>& t) {
                         I("Ibag", 61, 70, "airbag vent-hole closure on contact").allow({0, 1}).unused(),
                         I("Idel", 71, 80, "removal of deleted segments and free secondary nodes")
                             .allow({-2, -1, 0, 1, 2}),
-                        I("Icurv", 81, 90, "curved gap envelope").unused(),
+                        I("Icurv", 81, 90, "curved gap envelope").not_implemented(),
                         I("Iadm", 91, 100, "local curvature for adaptive meshing").unused()}),
         card("card 2",
              {R("Fscalegap", 1, 20, "gap scale factor (Igap = 2)").zero_is(1.0).gt(0.0),
               R("Gapmax", 21, 40, "largest gap (Igap = 2); 0 = no cap").ge(0.0).dims(dim::length),
               R("Fpenmax", 41, 60, "initial penetrations above this fraction of the gap are deactivated")
                   .ge(0.0),
-              I("Itied", 81, 90, "tie nodes once in contact").versions(2020).unused(),
-              I("Ists", 91, 100, "surface-to-surface option").versions(2026).unused()}),
+              I("Itied", 81, 90, "tie nodes once in contact").versions(2020).not_implemented(),
+              I("Ists", 91, 100, "surface-to-surface option").versions(2026).not_implemented()}),
         card("card 3",
              {R("Stmin", 1, 20, "smallest pair stiffness (Istf 2..5)").ge(0.0).dims(dim::stiffness),
               R("Stmax", 21, 40, "largest pair stiffness (Istf 2..5)")
                   .zero_is(1e30)
                   .ge(0.0)
                   .dims(dim::stiffness),
-              R("mesh_size", 41, 60, "percentage of mesh size for the self-contact gap").unused(),
+              R("mesh_size", 41, 60, "percentage of mesh size for the self-contact gap").not_implemented(),
               R("dtmin", 61, 80, "interface minimum time step: a node below it is removed")
                   .ge(0.0)
                   .dims(dim::time),
-              I("Irem_gap", 81, 90, "deactivate secondary nodes when element size is below the gap").unused(),
+              I("Irem_gap", 81, 90, "deactivate secondary nodes when element size is below the gap")
+                  .not_implemented(),
               I("Irem_i2", 91, 100, "deactivate secondary nodes also tied by a TYPE2 interface").unused()}),
         card_if("card 4 (Icurv = 1 or 2)", when_in("Icurv", 1, 2),
-                {I("node_ID1", 1, 10, "first node defining the curvature").unused(),
-                 I("node_ID2", 11, 20, "second node defining the curvature").unused()}),
+                {I("node_ID1", 1, 10, "first node defining the curvature").not_implemented(),
+                 I("node_ID2", 11, 20, "second node defining the curvature").not_implemented()}),
         card("card 5",
              {R("Stfac", 1, 20, "stiffness scale factor, or the stiffness itself when Istf = 1")
                   .zero_is(1.0)
@@ -452,17 +461,18 @@ void add_contact(std::vector<KeywordDecl>& t) {
               R("VISs", 41, 60, "critical damping ratio on the normal stiffness").zero_is(0.05).ge(0.0),
               R("VISF", 61, 80, "critical damping ratio on friction").zero_is(1.0).ge(0.0),
               R("Bumult", 81, 100, "sorting margin factor; 0 = default by model size").ge(0.0)}),
-        card("card 7", {I("Ifric", 1, 10, "friction law: 0 Coulomb, 1 viscous, 2 Darmstad, 3 Renard")
-                            .allow({0, 1, 2, 3}),
-                        I("Ifiltr", 11, 20, "friction force filter").allow({0, 1, 2, 3}),
-                        R("Xfreq", 21, 40, "filter coefficient (a frequency for Ifiltr = 3)").ge(0.0),
-                        I("Iform", 41, 50, "friction penalty: 1 viscous (total), 2 stiffness (incremental)")
-                            .zero_is(1)
-                            .allow({0, 1, 2}),
-                        I("sens_ID", 51, 60, "sensor that switches the interface on or off").unused(),
-                        I("fct_IDF", 61, 70, "function scaling friction with temperature").unused(),
-                        R("AscaleF", 71, 90, "abscissa scale of fct_IDF").unused(),
-                        I("fric_ID", 91, 100, "/FRICTION definition").versions(2018).unused()}),
+        card("card 7",
+             {I("Ifric", 1, 10, "friction law: 0 Coulomb, 1 viscous, 2 Darmstad, 3 Renard")
+                  .allow({0, 1, 2, 3}),
+              I("Ifiltr", 11, 20, "friction force filter").allow({0, 1, 2, 3}),
+              R("Xfreq", 21, 40, "filter coefficient (a frequency for Ifiltr = 3)").ge(0.0),
+              I("Iform", 41, 50, "friction penalty: 1 viscous (total), 2 stiffness (incremental)")
+                  .zero_is(1)
+                  .allow({0, 1, 2}),
+              I("sens_ID", 51, 60, "sensor that switches the interface on or off").not_implemented(),
+              I("fct_IDF", 61, 70, "function scaling friction with temperature").not_implemented(),
+              R("AscaleF", 71, 90, "abscissa scale of fct_IDF").unused(),
+              I("fric_ID", 91, 100, "/FRICTION definition").versions(2018).not_implemented()}),
         card_if("friction C1..C5 (Ifric > 0)", when_gt("Ifric", 0), type7_friction_c1_c5()),
         card_if("friction C6 (Ifric > 1)", when_gt("Ifric", 1),
                 {R("C6", 1, 20, "friction law coefficient 6")}),
@@ -732,7 +742,7 @@ void add_rigid(std::vector<KeywordDecl>& t) {
         card("card 4",
              {I("Ioptoff", 1, 10, "1 = elements entirely inside the body are not computed").allow({0, 1}),
               I("Iexpams", 11, 20, "AMS expansion flag").unused(),
-              I("Ifail", 21, 30, "failure criterion; >0 reads card 5").versions(2021).unused()}),
+              I("Ifail", 21, 30, "failure criterion; >0 reads card 5").versions(2021).not_implemented()}),
         card_v("card 5 (Ifail > 0)", 2021, kLastVersion,
                {R("FN", 1, 20, "normal failure force").zero_is(1e20).dims(dim::force).unused(),
                 R("FT", 21, 40, "tangential failure force").zero_is(1e20).dims(dim::force).unused(),
@@ -775,16 +785,16 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
     KeywordDecl k =
         kw("/DEF_SHELL", "global defaults for shell property flags left at 0", Header::None, false);
     k.singleton = true;
-    k.cards = {card("card 1",
-                    {I("Ishell", 1, 10, "default 4-node shell formulation"),
-                     I("Ismstr", 11, 20, "default shell strain formulation"),
-                     I("Ithick", 21, 30, "default thickness update flag"),
-                     I("Iplas", 31, 40, "default plane-stress plasticity"),
-                     I("Istrain", 41, 50, "strain output flag, ignored by the reference starter").unused(),
-                     I("Ioffset", 51, 60, "1 = shell offset used in contact").versions(2024).unused(),
-                     I("Ish3n", 71, 80, "default 3-node shell formulation"),
-                     I("Idrill", 81, 90, "default drilling stiffness flag"),
-                     I("Ithin_drape", 91, 100, "drape thinning option").versions(2026).zero_is(1).unused()})};
+    k.cards = {card(
+        "card 1", {I("Ishell", 1, 10, "default 4-node shell formulation"),
+                   I("Ismstr", 11, 20, "default shell strain formulation"),
+                   I("Ithick", 21, 30, "default thickness update flag"),
+                   I("Iplas", 31, 40, "default plane-stress plasticity"),
+                   I("Istrain", 41, 50, "strain output flag, ignored by the reference starter").unused(),
+                   I("Ioffset", 51, 60, "1 = shell offset used in contact").versions(2024).not_implemented(),
+                   I("Ish3n", 71, 80, "default 3-node shell formulation"),
+                   I("Idrill", 81, 90, "default drilling stiffness flag"),
+                   I("Ithin_drape", 91, 100, "drape thinning option").versions(2026).zero_is(1).unused()})};
     t.push_back(std::move(k));
   }
   {
@@ -798,7 +808,7 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
                      I("Istrain", 31, 40, "strain output flag, ignored").versions(kAnyVersion, 2020).unused(),
                      I("Itetra4", 41, 50, "default 4-node tetra formulation").versions(2019).unused(),
                      I("Itetra10", 51, 60, "default 10-node tetra formulation").versions(2019).unused(),
-                     I("Imas", 61, 70, "nodal mass distribution: 1 by angle, 2 uniform").unused(),
+                     I("Imas", 61, 70, "nodal mass distribution: 1 by angle, 2 uniform").not_implemented(),
                      I("Iframe", 71, 80, "default element frame"),
                      I("Icontrol", 81, 90, "default distortion control").versions(2025).unused()})};
     t.push_back(std::move(k));

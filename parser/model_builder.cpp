@@ -565,11 +565,13 @@ model::Model ModelBuilder::build() {
   for (const auto* r : deck_.of("/TITLE")) m_.title = r->get_string("TITLE");
   for (const auto& r : deck_.records)
     if (r.decl->support == schema::Support::Ignored) m_.ignored_keywords.push_back(r.written);
+  m_.substitutions = deck_.substitutions;
   build_nodes();
   build_materials();
   build_properties();
   build_subsets_and_parts();
   build_elements();
+  check_formulations();
   build_boxes();
   build_functions();
   build_surfaces();  // before the groups: /GRNOD/SURF takes the nodes of surfaces

@@ -59,6 +59,7 @@ class ModelBuilder {
   void build_contact_laws();
   void compute_masses();
   void check_unused_nodes();
+  void check_formulations();  // check_formulations.cpp
 
   // Group resolution (recursive /GRNOD/GRNOD with loop detection).
   const std::vector<std::int32_t>* group_nodes(std::int32_t g);

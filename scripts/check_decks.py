@@ -690,6 +690,52 @@ def semantic(ck, m):
                 p = pos(o, "N")
                 I("RX501", p[0], p[1], "N = %d outside 0..10" % nn)
 
+    # formulations (check_formulations.cpp): a flag of a property used by elements must be one radx implements,
+    # resolved as property value, else the /DEF_SHELL or /DEF_SOLID value, else the hard default
+    defs = {k: (m.of(k) or [None])[0] for k in ("/DEF_SHELL", "/DEF_SOLID")}
+    used = {}
+    for pid, kinds in part_kind.items():
+        if pid in parts and val(parts[pid], "prop_ID") in props:
+            used.setdefault(val(parts[pid], "prop_ID"), set()).update(kinds)
+
+    def resolved(o, name, def_key, hard):
+        if val(o, name, 0) != 0:
+            return val(o, name)
+        d = defs[def_key]
+        if d is not None and val(d, name, 0) != 0:
+            return -1 if val(d, name) == -2 else val(d, name)
+        return hard
+
+    for prop_id, kinds in used.items():
+        o = props[prop_id]
+        bad = []
+        if o["path"] in ("/PROP/SHELL", "/PROP/TYPE1"):
+            if "/SHELL" in kinds and resolved(o, "Ishell", "/DEF_SHELL", 1) != 1:
+                bad.append("Ishell")
+            if resolved(o, "Ismstr", "/DEF_SHELL", 2) != 2:
+                bad.append("Ismstr")
+        elif "/BRICK" in kinds:
+            isolid = resolved(o, "Isolid", "/DEF_SOLID", 1)
+            if isolid not in (1, 2):
+                bad.append("Isolid")
+            if resolved(o, "Ismstr", "/DEF_SOLID", 4) not in (2, 4):
+                bad.append("Ismstr")
+            if resolved(o, "Iframe", "/DEF_SOLID", 1) != 1:
+                bad.append("Iframe")
+            if val(o, "Icontrol", 0) == 1:
+                bad.append("Icontrol")
+        for name in bad:
+            p = pos(o, name)
+            I("RX510", p[0], p[1], "%s %d: %s not implemented by radx" % (o["path"], o["id"], name))
+    # fields read but not implemented whose non-zero value changes the physics (keywords_starter.cpp)
+    for o in props.values():
+        if o["path"] in ("/PROP/SOLID", "/PROP/TYPE14"):
+            for name in ("Iale", "Lambda", "Mu", "deltaT_min", "Ndir", "sphpart_ID"):
+                if val(o, name, 0) not in (0, 0.0):
+                    p = pos(o, name)
+                    I("RX510", p[0], p[1], "%s %d: %s = %g changes the physics" % (o["path"], o["id"], name,
+                                                                                val(o, name)))
+
     # materials
     for o in mats.values():
         if o.get("missing"):

@@ -651,6 +651,32 @@ def _():
         "/INTER/TYPE7/1 Renard friction (Ifric 3) with C5 = V_cr1 = 0", [("RX703", "INT_C8")]
 
 
+@fault("ishell_24_qeph")
+def _():
+    d = base()
+    d.set("PSH_C1", psh_c1(ishell=24))
+    return d, "/PROP/SHELL/1 Ishell = 24 (QEPH) on the plate's 4-node shells: radx implements Ishell 1 only " \
+        "(--allow-substitutions would run Ishell 1 and list it)", [("RX510", "PSH_C1")]
+
+
+@fault("isolid_14_from_def_solid")
+def _():
+    d = base()
+    d.insert_before("PSO_KW", ["/DEF_SOLID", names(("Isolid", 10), ("Ismstr", 10), ("Icpre", 10)),
+                               line(I(14), I(0), I(0))])
+    d.set("PSO_C1", pso_c1(isolid=0))
+    return d, "/PROP/SOLID/2 leaves Isolid 0 and /DEF_SOLID sets 14 (HA8): the block's brick would run a " \
+        "formulation radx lacks", [("RX510", "PSO_C1")]
+
+
+@fault("solid_numerical_viscosity")
+def _():
+    d = base()
+    d.set("PSO_C2", line(R(0.0), R(0.0), R(0.0), R(0.01), R(0.0)))
+    return d, "/PROP/SOLID/2 numerical viscosity Lambda = 0.01: read but not implemented, and it changes " \
+        "the physics", [("RX510", "PSO_C2")]
+
+
 @fault("several_errors")
 def _():
     d = base()

@@ -24,6 +24,7 @@ struct CycleInfo {
 
 struct ShellProps {
   int ishell = 1, ismstr = 2, ithick = 0, iplas = 0;  // internal meaning: ithick 1 = update, iplas 1 = Newton
+  int ish3n = 2;     // 3-node shells: 2 with the in-plane large-rotation terms T11, T22; 1 without
   int n_points = 3;  // through-thickness points, >= 1; 0 = resultant elasticity (LAW1 only)
   double hm = 0.01, hf = 0.01, hr = 0.01, dm = 0, ashear = 5.0 / 6.0;
 };

@@ -127,6 +127,7 @@ void ExplicitEngine::build_groups() {
       g.material = mat;
       g.props.ishell = prop.ishell;
       g.props.ismstr = prop.ismstr;
+      g.props.ish3n = prop.ish3n;
       g.props.ithick = prop.ithick == 1 ? 1 : 0;
       g.props.iplas = prop.iplas == 1 ? 1 : 0;
       g.props.hm = prop.hm;

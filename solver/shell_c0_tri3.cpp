@@ -1,12 +1,12 @@
-// Three-node C0 shell (Ish3n 2, the default): constant-strain membrane, Mindlin transverse shear, one point
-// in the plane, no hourglass. Source of every formula: shared/spec/elements.md (sections in brackets), read
-// from OpenRadioss c3forc3.F, c3evec3.F, c3deri3.F, c3defo3.F, c3curv3.F, c3fint3.F, c3dt3.F.
+// Three-node C0 shell (Ish3n 2, the default, and Ish3n 1): constant-strain membrane, Mindlin transverse
+// shear, one point in the plane, no hourglass. Source of every formula: shared/spec/elements.md (sections in
+// brackets), read from OpenRadioss c3forc3.F, c3evec3.F, c3deri3.F, c3defo3.F, c3curv3.F, c3fint3.F, c3dt3.F.
 //
 // Geometry [2], rebuilt every cycle from X^n: e1 = (X2 - X1)/|X2 - X1|, e3 = normalise((X3 - X1) x (X3 -
 // X2)),
 //   e2 = e3 x e1; local x2 = |X2 - X1|, x3 = e1.(X3 - X1), y3 = e2.(X3 - X1); A = x2 y3 / 2 (>= 1e-20);
 //   PX1 = -y3/2, PY1 = (x3 - x2)/2, PY2 = -x3/2, PX2 = -PX1, PX3 = 0, PY3 = -(PY1 + PY2).
-// Large-rotation velocity correction (tau = dt1/4; T11, T22 are the Ish3n 2 terms):
+// Large-rotation velocity correction (tau = dt1/4; T11, T22 are the Ish3n 2 terms, 0 for Ish3n 1):
 //   T1 = tau (vz1 - vz2)/(PY1 + PY2), T2 = tau [(PY1 vz1 + PY2 vz2)/(PY1 + PY2) - vz3]/PX1,
 //   T11 = tau (vy1 - vy2)/(PY1 + PY2), T22 = tau [(PY1 vx1 + PY2 vx2)/(PY1 + PY2) - vx3]/PX1,
 //   vx_k <- vx_k - vz_k T1 - vy_k T11, vy_k <- vy_k - vz_k T2 - vx_k(old) T22 (vz unchanged).
@@ -75,6 +75,7 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
   const double alpha = rate_filter_alpha(mat, dt1);
   const double a11 = mat.a11 > 0 ? mat.a11 : young / (1.0 - mat.nu * mat.nu);
   const double tau = 0.25 * dt1;
+  const bool in_plane_terms = g.props.ish3n == 2;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const double fail_limit = failure_limit(mat);  // EPS_p_max (6.4)
   constexpr double kThird = 1.0 / 3.0;
@@ -157,12 +158,12 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
         ry[k] = e2x * wx + e2y * wy + e2z * wz;
       }
 
-      // Large-rotation correction (Ish3n 2).
+      // Large-rotation correction (T11, T22 only for Ish3n 2).
       const double s12 = signed_floor3(PY1 + PY2, 1e-20), sx1 = signed_floor3(PX1, 1e-20);
       const double T1 = tau * (vz[0] - vz[1]) / s12;
       const double T2 = tau * ((PY1 * vz[0] + PY2 * vz[1]) / s12 - vz[2]) / sx1;
-      const double T11 = tau * (vy[0] - vy[1]) / s12;
-      const double T22 = tau * ((PY1 * vx[0] + PY2 * vx[1]) / s12 - vx[2]) / sx1;
+      const double T11 = in_plane_terms ? tau * (vy[0] - vy[1]) / s12 : 0.0;
+      const double T22 = in_plane_terms ? tau * ((PY1 * vx[0] + PY2 * vx[1]) / s12 - vx[2]) / sx1 : 0.0;
       double cx[3], cy[3];
       for (int k = 0; k < 3; ++k) {
         cx[k] = vx[k] - vz[k] * T1 - vy[k] * T11;

@@ -299,6 +299,8 @@ struct Model {
   std::vector<TimeHistoryGroup> time_histories;
   std::vector<Interface> interfaces;
   std::vector<std::string> ignored_keywords;  // control cards accepted as ignored, as written
+  // --allow-substitutions: what runs instead of what the deck asks, one sentence each (empty otherwise).
+  std::vector<std::string> substitutions;
 
   // Per-node lumped mass from the elements (computed by the starter).
   std::vector<double> node_mass;

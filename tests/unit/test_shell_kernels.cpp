@@ -555,6 +555,31 @@ TEST_CASE("C0 triangle membrane patch: constant strain on every triangle", "[she
   for (std::size_t node = 4; node < 8; ++node)
     for (std::size_t d = 0; d < 6; ++d) CHECK(std::abs(f[node][d]) <= 1e-3 * fscale);
 
+  SECTION("Ish3n 1: without T11 and T22 the increments are the first-order rates, exact to 1e-9") {
+    // The field has vz = 0, so T1 = T2 = 0 too: dexx = Hxx, deyy = Hyy, dgxy = Hxy + Hyx in each frame.
+    NodeState s1 = make_nodes(kPatchNodes);
+    impose_patch_field(s1, dt);
+    ShellGroup g1 = make_group(tris, t, 3, true);
+    g1.props.ish3n = 1;
+    run(g1, s1, mat, dt);
+    for (int e = 0; e < g1.count; ++e) {
+      const auto& c = tris[static_cast<std::size_t>(e)];
+      double ex = s1.x[c[1]] - s1.x[c[0]], ey = s1.y[c[1]] - s1.y[c[0]];
+      const double n = std::hypot(ex, ey);
+      ex /= n, ey /= n;
+      const double r[2][2] = {{ex, ey}, {-ey, ex}};
+      double hl[2][2] = {{0, 0}, {0, 0}};
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+          for (int k = 0; k < 2; ++k)
+            for (int l = 0; l < 2; ++l) hl[i][j] += r[i][k] * hg[k][l] * r[j][l];
+      const double dxx = hl[0][0], dyy = hl[1][1], dxy = hl[0][1] + hl[1][0];
+      CHECK(close(sig(g1, 0, 0, e), a11 * dxx + a12 * dyy, 1e-9, 1e-9 * 1333.3));
+      CHECK(close(sig(g1, 0, 1, e), a12 * dxx + a11 * dyy, 1e-9, 1e-9 * 1333.3));
+      CHECK(close(sig(g1, 0, 2, e), gm * dxy, 1e-9, 1e-9 * 1333.3));
+    }
+  }
+
   SECTION("small strain: the second-order terms vanish and the patch is exact to 1e-9") {
     // Same field scaled by 1e-6: the second-order terms are 1e-6 of the first-order ones.
     NodeState s2 = make_nodes(kPatchNodes);

@@ -309,7 +309,12 @@ Built build(TempDir& dir, const Kind& kind, const Vals& v, Diagnostics& diags, c
   b.deck = make_deck(kind, v, after, only_card1);
   static int n = 0;
   const auto path = dir.write("TYPE7_" + std::to_string(n++) + "_0000.rad", b.deck.text);
-  b.parsed = radx::read_starter_deck(path, diags);
+  // Every field may hold a distinct value, also those radx reads but does not implement (Itied, Ists, ...):
+  // what is tested is the reading, so their substitution is allowed (test_formulations.cpp tests the
+  // refusal).
+  radx::ReadOptions opt;
+  opt.allow_substitutions = true;
+  b.parsed = radx::read_starter_deck(path, diags, opt);
   b.model = radx::build_model(b.parsed, diags);
   return b;
 }

@@ -1,0 +1,164 @@
+// Formulation honesty: every element formulation flag a used property asks for must be one radx implements.
+// Otherwise the deck is refused by name (RX510), or, with --allow-substitutions, runs the nearest formulation
+// radx implements and lists the substitution (RX511, the listing and NAME_summary.json). A property used by
+// no element changes nothing and is not checked; a flag that only matters for another element shape (Ish3n
+// on quadrangles, Icpre on one-point bricks) is not checked either.
+//
+// What radx implements (shared/spec/elements.md):
+//   4-node shells:  Ishell 1 (Belytschko-Tsay, viscous + elastic hourglass), Ismstr 2 (large strain, small
+//                   strain only after /DT/SHELL/CST), Ithick 1/2, Iplas 1/2
+//   3-node shells:  Ish3n 2 (C0) and 1 (C0 without the in-plane large-rotation terms), Ismstr 2
+//   8-node bricks:  Isolid 1 (one point, Flanagan-Belytschko viscous hourglass) and 2 (plain h vectors),
+//                   Ismstr 4 (large strain) and 2 (large strain, small strain after a /DT/BRICK/CST switch:
+//                   without /DT/BRICK/CST the same as 4), Iframe 1 (Jaumann rate, not co-rotational), no
+//                   distortion control (Icontrol 1)
+#include <algorithm>
+#include <string>
+
+#include "parser/model_builder.hpp"
+
+namespace radx::detail {
+
+namespace {
+
+std::string ishell_name(int v) {
+  switch (v) {
+    case 1: return "Belytschko-Tsay with viscous and elastic hourglass";
+    case 2: return "Belytschko-Tsay with the plain hourglass vector";
+    case 3: return "Belytschko-Tsay with elasto-plastic hourglass";
+    case 4: return "improved Belytschko-Tsay with warping";
+    case 12: return "QBAT, four Gauss points";
+    case 24: return "QEPH, physical hourglass";
+    default: return v < 0 ? "automatic choice" : "formulation " + std::to_string(v);
+  }
+}
+
+std::string ish3n_name(int v) {
+  switch (v) {
+    case 1: return "C0 without the second large-rotation term";
+    case 2: return "C0";
+    case 30: return "DKT18";
+    case 31: return "DKT_S3";
+    default: return v < 0 ? "automatic choice" : "formulation " + std::to_string(v);
+  }
+}
+
+std::string isolid_name(int v) {
+  switch (v) {
+    case 1: return "one point, Flanagan-Belytschko viscous hourglass";
+    case 2: return "one point, plain hourglass vectors";
+    case 12: return "S8 fully integrated (old)";
+    case 14: return "HA8, fully integrated";
+    case 15: return "HSEPH thick shell";
+    case 16: return "20-node quadratic";
+    case 17: return "H8C, fully integrated with constant pressure";
+    case 18: return "H8D, fully integrated";
+    case 24: return "HEPH, physical hourglass";
+    default: return v < 0 ? "automatic choice" : "formulation " + std::to_string(v);
+  }
+}
+
+std::string ismstr_name(int v) {
+  switch (v) {
+    case 1: return "small strain from the start";
+    case 2: return "large strain, small strain below the minimum step";
+    case 3: return "small strain on the element";
+    case 4: return "large strain, never switching";
+    case 10:
+    case 11:
+    case 12: return "total Lagrangian";
+    default: return v < 0 ? "automatic choice" : "strain formulation " + std::to_string(v);
+  }
+}
+
+}  // namespace
+
+void ModelBuilder::check_formulations() {
+  // Which element shapes use each property.
+  std::vector<std::uint8_t> use(m_.properties.size(), 0);
+  constexpr std::uint8_t kQuad = 1, kTri = 2, kBrick = 4;
+  auto mark = [&](const model::ElementBlock& b, std::uint8_t bit) {
+    std::vector<std::uint8_t> part_seen(m_.parts.size(), 0);
+    for (const auto p : b.part)
+      if (p >= 0 && static_cast<std::size_t>(p) < part_seen.size())
+        part_seen[static_cast<std::size_t>(p)] = 1;
+    for (std::size_t p = 0; p < m_.parts.size(); ++p)
+      if (part_seen[p] && m_.parts[p].property >= 0)
+        use[static_cast<std::size_t>(m_.parts[p].property)] |= bit;
+  };
+  mark(m_.shells, kQuad);
+  mark(m_.shells3, kTri);
+  mark(m_.bricks, kBrick);
+
+  for (const auto& rec : deck_.records) {
+    const auto path = rec.decl->path;
+    if (path != "/PROP/SHELL" && path != "/PROP/SOLID") continue;
+    const auto it = prop_ids_.find(rec.id);
+    if (it == prop_ids_.end()) continue;
+    auto& prop = m_.properties[static_cast<std::size_t>(it->second)];
+    const std::uint8_t used = use[static_cast<std::size_t>(it->second)];
+    if (used == 0) continue;
+    const std::string def_keyword = path == "/PROP/SHELL" ? "/DEF_SHELL" : "/DEF_SOLID";
+    // One flag: accepted when `ok`; otherwise refused, or substituted by `nearest`.
+    auto flag = [&](std::string_view field, int& value, bool ok, int nearest, const std::string& what_value,
+                    const std::string& what_nearest, std::string_view shape) {
+      if (ok) return;
+      // Where the value comes from when the property leaves the field 0.
+      std::string source;
+      if (rec.get_int(field) == 0) {
+        const auto defs = deck_.of(def_keyword);
+        const bool from_def = !defs.empty() && defs.front()->find(field) && defs.front()->get_int(field) != 0;
+        source = from_def ? " (the property leaves it 0: from " + def_keyword + ")"
+                          : " (the property leaves it 0: the formulation's default)";
+      }
+      const std::string asked =
+          std::string(field) + " = " + std::to_string(value) + " (" + what_value + ")" + source;
+      if (deck_.allow_substitutions) {
+        const std::string text = asked + " runs as " + std::string(field) + " = " + std::to_string(nearest) +
+                                 " (" + what_nearest + ") for its " + std::string(shape);
+        warning_at(rec, field, Diag::Substitution, text);
+        m_.substitutions.push_back(std::string(path) + " " + std::to_string(rec.id) + " \"" + rec.title +
+                                   "\": " + text);
+        value = nearest;
+      } else {
+        error_at(rec, field, Diag::PhysicsNotImplemented,
+                 asked + " is used by " + std::string(shape) +
+                     " and radx does not implement it; radx implements " + std::string(field) + " = " +
+                     std::to_string(nearest) + " (" + what_nearest +
+                     "); set it, or run with --allow-substitutions to run that instead");
+      }
+    };
+    if (path == "/PROP/SHELL") {
+      auto& s = prop.shell;
+      if (used & kQuad)
+        flag("Ishell", s.ishell, s.ishell == 1, 1, ishell_name(s.ishell), ishell_name(1), "4-node shells");
+      if (used & kTri)
+        flag("Ish3n", s.ish3n, s.ish3n == 1 || s.ish3n == 2, 2, ish3n_name(s.ish3n), ish3n_name(2),
+             "3-node shells");
+      flag("Ismstr", s.ismstr, s.ismstr == 2, 2, ismstr_name(s.ismstr), ismstr_name(2), "shells");
+    } else {
+      if (!(used & kBrick)) continue;
+      auto& s = prop.solid;
+      // Isolid 14, 15, 18 and 24 impose the co-rotational frame (model_builder.cpp): that is not the deck's
+      // choice, which is the property's Iframe, else /DEF_SOLID's, else 1.
+      if (s.isolid == 14 || s.isolid == 15 || s.isolid == 18 || s.isolid == 24) {
+        auto asked = rec.get_int("Iframe");
+        const auto defs = deck_.of("/DEF_SOLID");
+        if (asked == 0 && !defs.empty() && defs.front()->find("Iframe"))
+          asked = defs.front()->get_int("Iframe");
+        s.iframe = asked > 0 ? static_cast<int>(asked) : 1;
+      }
+      flag("Isolid", s.isolid, s.isolid == 1 || s.isolid == 2, 1, isolid_name(s.isolid), isolid_name(1),
+           "bricks");
+      flag("Ismstr", s.ismstr, s.ismstr == 2 || s.ismstr == 4, 4, ismstr_name(s.ismstr), ismstr_name(4),
+           "bricks");
+      flag("Iframe", s.iframe, s.iframe == 1, 1, s.iframe == 2 ? "co-rotational" : "frame option",
+           "Jaumann rate, not co-rotational", "bricks");
+      int icontrol = static_cast<int>(rec.get_int("Icontrol"));
+      flag("Icontrol", icontrol, icontrol != 1, 2, "distortion control on", "distortion control off",
+           "bricks");
+    }
+  }
+}
+
+}  // namespace radx::detail
