@@ -818,10 +818,11 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
     k.support = Support::Ignored;
     k.singleton = true;
     k.cards = {
-        card("card 1", {I("N2D3D", 1, 10, "0 3-D, 1 axisymmetric, 2 plane strain").allow({0, 1, 2}),
-                        I("ITEMP", 11, 20, "temperature also evolves in expansion").versions(2026),
-                        I("IPARITH", 21, 30, "parallel arithmetic: 1 on, 2 off").zero_is(1).allow({0, 1, 2}),
-                        I("ISUBCYC", 31, 40, "subcycling flag, ignored").versions(kAnyVersion, 2022)})};
+        card("card 1",
+             {I("N2D3D", 1, 10, "0 3-D, 1 axisymmetric, 2 plane strain").allow({0, 1, 2}).not_implemented(),
+              I("ITEMP", 11, 20, "temperature also evolves in expansion").versions(2026),
+              I("IPARITH", 21, 30, "parallel arithmetic: 1 on, 2 off").zero_is(1).allow({0, 1, 2}),
+              I("ISUBCYC", 31, 40, "subcycling flag, ignored").versions(kAnyVersion, 2022)})};
     t.push_back(std::move(k));
   }
   {
@@ -838,16 +839,29 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
   {
     KeywordDecl k = kw("/RANDOM", "random perturbation of all node coordinates", Header::None, false);
     k.support = Support::Ignored;
-    k.cards = {card("card 1", {R("XALEA", 1, 20, "largest random perturbation; 0 = none").dims(dim::length),
-                               R("SEED", 21, 40, "random seed")})};
+    k.cards = {
+        card("card 1",
+             {R("XALEA", 1, 20, "largest random perturbation; 0 = none").dims(dim::length).not_implemented(),
+              R("SEED", 21, 40, "random seed")})};
     t.push_back(std::move(k));
   }
   {
     KeywordDecl k = kw("/RANDOM/GRNOD", "random perturbation of a node group's coordinates", Header::Id,
                        false, "grnod_ID");
     k.support = Support::Ignored;
-    k.cards = {card("card 1", {R("XALEA", 1, 20, "largest random perturbation; 0 = none").dims(dim::length),
-                               R("SEED", 21, 40, "random seed")})};
+    k.cards = {
+        card("card 1",
+             {R("XALEA", 1, 20, "largest random perturbation; 0 = none").dims(dim::length).not_implemented(),
+              R("SEED", 21, 40, "random seed")})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/MEMORY", "memory reservation of old Radioss versions (radx allocates as it reads)",
+                       Header::None, false);
+    k.support = Support::Ignored;
+    k.singleton = true;
+    k.cards = {card("card 1", {I("MEMORY", 1, 10, "words of memory to reserve"),
+                               I("REAL", 31, 40, "share of the memory for reals, %")})};
     t.push_back(std::move(k));
   }
   {
