@@ -186,32 +186,45 @@ void build_bcs(ModelBuilder& b) {
   check_bcs_skews(b, recs);
 }
 
+// /IMPVEL (a velocity) and /IMPDISP (a displacement from the initial position): the same cards, one model
+// object each; the engine turns the displacement into the velocity that reaches it at the end of the step.
 void build_imposed_velocities(ModelBuilder& b) {
-  IdIndex ids;
-  build_each(b, "/IMPVEL", "imposed velocity", b.m_.imposed_velocities, ids, [&](const KeywordRecord& r) {
-    model::ImposedVelocity v;
-    v.function = function_ref(b, r, false);
-    v.dir = direction(b, r, 6, kSixDirections);
-    v.skew = skew_ref(b, r);
-    v.sensor = sensor_ref(b, r);
-    v.frame = unreadable_ref(b, r, "frame_ID", "/FRAME", "no moving frame");
-    v.icoor = geti(r, "Icoor");
-    v.group = group_ref(b, r, "grnod_ID", false);
-    v.ascale_x = real_or(r, "Ascale_x", 1.0);
-    v.fscale_y = real_or(r, "Fscale_y", 1.0);
-    v.t_start = r.get_real("Tstart");
-    v.t_stop = real_or(r, "Tstop", model::kNever);
-    if (r.get_real("Tstop") != 0 && v.t_stop <= v.t_start)
-      b.error_at(r, "Tstop", Diag::InconsistentValues,
-                 "Tstop = " + num(v.t_stop) + " is not after Tstart = " + num(v.t_start) +
-                     ": the velocity would never be imposed; need Tstop > Tstart (0 = never stop)");
-    if (v.icoor == 1 && v.frame == 0)
-      b.error_at(
-          r, "Icoor", Diag::InconsistentValues,
-          "Icoor = 1 (cylindrical) needs a moving frame (frame_ID), which radx does not read; use Icoor = 0 "
-          "(Cartesian)");
-    return v;
-  });
+  for (const bool displacement : {false, true}) {
+    IdIndex ids;
+    const std::string_view path = displacement ? "/IMPDISP" : "/IMPVEL";
+    const std::string_view what = displacement ? "imposed displacement" : "imposed velocity";
+    build_each(b, path, what, b.m_.imposed_velocities, ids, [&](const KeywordRecord& r) {
+      model::ImposedVelocity v;
+      v.displacement = displacement;
+      v.function = function_ref(b, r, false);
+      v.dir = direction(b, r, 6, kSixDirections);
+      if (displacement && v.dir >= 3)
+        b.error_at(
+            r, "Dir", Diag::PhysicsNotImplemented,
+            "Dir = " + std::string(r.get_string("Dir")) +
+                ": an imposed rotation angle is not implemented by radx (nodes carry no rotation angle); "
+                "accepted: X, Y, Z, or /IMPVEL with the rotational velocity");
+      v.skew = skew_ref(b, r);
+      v.sensor = sensor_ref(b, r);
+      v.frame = unreadable_ref(b, r, "frame_ID", "/FRAME", "no moving frame");
+      v.icoor = geti(r, "Icoor");
+      v.group = group_ref(b, r, "grnod_ID", false);
+      v.ascale_x = real_or(r, "Ascale_x", 1.0);
+      v.fscale_y = real_or(r, "Fscale_y", 1.0);
+      v.t_start = r.get_real("Tstart");
+      v.t_stop = real_or(r, "Tstop", model::kNever);
+      if (r.get_real("Tstop") != 0 && v.t_stop <= v.t_start)
+        b.error_at(r, "Tstop", Diag::InconsistentValues,
+                   "Tstop = " + num(v.t_stop) + " is not after Tstart = " + num(v.t_start) + ": the " +
+                       std::string(displacement ? "displacement" : "velocity") +
+                       " would never be imposed; need Tstop > Tstart (0 = never stop)");
+      if (v.icoor == 1 && v.frame == 0)
+        b.error_at(r, "Icoor", Diag::InconsistentValues,
+                   "Icoor = 1 (cylindrical) needs a moving frame (frame_ID), which radx does not read; use "
+                   "Icoor = 0 (Cartesian)");
+      return v;
+    });
+  }
 }
 
 void build_initial_velocities(ModelBuilder& b) {

@@ -593,6 +593,29 @@ void add_loads(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    KeywordDecl k =
+        kw("/IMPDISP",
+           "imposed displacement of a node group from its initial position, following a function of time",
+           Header::IdUnit, true, "impdisp_ID");
+    k.cards = {
+        card("card 1",
+             {I("funct_IDT", 1, 10, "displacement versus time function").must(),
+              S("Dir", 11, 20, "direction: X, Y, Z (translation) or XX, YY, ZZ (rotation)"),
+              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes"),
+              I("sensor_ID", 31, 40, "sensor that starts the displacement; 0 = none"),
+              I("grnod_ID", 41, 50, "nodes concerned"),
+              I("frame_ID", 51, 60, "moving frame of the direction (exclusive with skew); 0 = none"),
+              I("Icoor", 61, 70, "0 Cartesian, 1 cylindrical (with a frame)").allow({0, 1})}),
+        card("card 2",
+             {R("Ascale_x", 1, 20, "abscissa (time) scale of the function").zero_is(1.0).dims(dim::time),
+              R("Fscale_y", 21, 40, "ordinate scale of the function").zero_is(1.0).dims(dim::length),
+              R("Tstart", 41, 60, "time the displacement starts being imposed").dims(dim::time),
+              R("Tstop", 61, 80, "time it stops being imposed; 0 = never").dims(dim::time)}),
+    };
+    k.dim_overrides = {{"Fscale_y", "Dir", {"XX", "YY", "ZZ"}, dim::none}};
+    t.push_back(std::move(k));
+  }
+  {
     KeywordDecl k = kw("/INIVEL/TRA", "initial translational velocity of a node group", Header::IdUnit, true,
                        "inivel_ID");
     k.cards = {
@@ -936,7 +959,7 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/FRICTION", "/DEFAULT", "/INTTHICK",
         // constraints, kinematics, loads, initial state
         "/SKEW", "/FRAME", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT", "/MPC", "/GJOINT",
-        "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPDISP", "/IMPACC", "/IMPTEMP", "/INIVEL/ROT", "/INIVEL/T+G",
+        "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPDISP/FGEO", "/IMPACC", "/IMPTEMP", "/INIVEL/ROT", "/INIVEL/T+G",
         "/INIVEL/GRID", "/INIVEL/AXIS", "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD",
         "/RWALL/CYL", "/RWALL/SPHER", "/RWALL/PARAL", "/RWALL/LAGMUL", "/RWALL/THERM", "/INISHE", "/INIBRI",
         "/INISH3", "/INITEMP", "/INISTA",

@@ -265,6 +265,7 @@ STARTER = {
     "/INTER/TYPE7": ("id", True, inter_type7, None, None),
     "/BCS": ("id", True, bcs, None, None),
     "/IMPVEL": ("id", True, impvel, None, None),
+    "/IMPDISP": ("id", True, impvel, None, None),
     "/INIVEL/TRA": ("id", True, inivel, None, None),
     "/GRAV": ("id", True, grav, None, None),
     "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
@@ -807,9 +808,13 @@ def semantic(ck, m):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
     for o in m.of("/INIVEL/TRA"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
-    for o in m.of("/IMPVEL"):
+    for o in m.of("/IMPVEL", "/IMPDISP"):
         need(o, "funct_IDT", functs, "function", zero_ok=False)
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
+    for o in m.of("/IMPDISP"):
+        if str(val(o, "Dir", "")).strip().upper() in ("XX", "YY", "ZZ"):
+            p = pos(o, "Dir")
+            I("RX510", p[0], p[1], "/IMPDISP %d: an imposed rotation angle is not implemented" % o["id"])
     for o in m.of("/GRAV"):
         need(o, "funct_IDT", functs, "function")
         need(o, "grnod_ID", grnods, "node group")

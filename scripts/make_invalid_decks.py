@@ -569,12 +569,12 @@ def _():
     return d, "/FUNCT/1: the third X (0.0005) is below the second (0.001)", [("RX505", "F_P3")]
 
 
-def impvel_rows(funct):
+def impvel_rows(funct, keyword="/IMPVEL", direction="Z"):
     return block_group() + [
-        ("/IMPVEL/1", "IMP_KW"), "Block pushed down",
+        ("%s/1" % keyword, "IMP_KW"), "Block pushed down",
         names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
               ("frame_ID", 10), ("Icoor", 10)),
-        (line(I(funct), S("Z", 10), I(0), I(0), I(2), I(0), I(0)), "IMP_C1"),
+        (line(I(funct), S(direction, 10), I(0), I(0), I(2), I(0), I(0)), "IMP_C1"),
         names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
         (line(R(0.0), R(-1000.0), R(0.0), R(0.0)), "IMP_C2")]
 
@@ -591,6 +591,22 @@ def _():
     d = base()
     d.insert_before("BEFORE_END", impvel_rows(99))
     return d, "/IMPVEL/1 names function 99, which does not exist", [("RX402", "IMP_C1")]
+
+
+@fault("impdisp_missing_function")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", impvel_rows(99, "/IMPDISP"))
+    return d, "/IMPDISP/1 names function 99, which does not exist", [("RX402", "IMP_C1")]
+
+
+@fault("impdisp_rotation")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", impvel_rows(7, "/IMPDISP", "ZZ")
+                    + funct_rows(7, [(0.0, 0.0), (0.002, 0.1)], "Rotation angle"))
+    return d, "/IMPDISP/1 Dir = ZZ: an imposed rotation angle (radx imposes translations only)", \
+        [("RX510", "IMP_C1")]
 
 
 @fault("inter_missing_surface")

@@ -66,13 +66,16 @@ void BoundaryConditions::apply(NodeState& s) const {
 ImposedVelocities::ImposedVelocities(const model::Model& m) {
   std::size_t total = 0;
   for (const auto& iv : m.imposed_velocities) {
-    const std::string what = "/IMPVEL/" + std::to_string(iv.id);
+    const std::string what = (iv.displacement ? "/IMPDISP/" : "/IMPVEL/") + std::to_string(iv.id);
+    if (iv.displacement && iv.dir >= 3)
+      throw std::runtime_error(what + ": an imposed rotation angle is not implemented");
     if (iv.function < 0 || static_cast<std::size_t>(iv.function) >= m.functions.size())
       throw std::runtime_error(what + ": no function (funct_IDT is required)");
     if (iv.dir < 0 || iv.dir > 5) throw std::runtime_error(what + ": Dir must be X, Y, Z, XX, YY or ZZ");
     Entry e;
     e.f = m.functions[static_cast<std::size_t>(iv.function)];
     e.dir = iv.dir;
+    e.displacement = iv.displacement;
     e.ascale = iv.ascale_x;
     e.fscale = iv.fscale_y;
     e.t_start = iv.t_start;
@@ -95,10 +98,16 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) 
   const double dt12 = 0.5 * (dt1 + dt2);
   double work = 0;
   for (const auto& e : entries_) {
-    const bool active = t >= e.t_start && t <= e.t_stop && dt12 > 0;
-    const double v_imp = active ? scaled_function_value(e.f, t + 0.5 * dt2, e.ascale, e.fscale) : 0.0;
+    const bool active = t >= e.t_start && t <= e.t_stop && dt12 > 0 && (!e.displacement || dt2 > 0);
+    // /IMPVEL: the velocity of the mid-step. /IMPDISP: the velocity that brings the node to its initial
+    // position plus the imposed displacement at the end of the step, u(t + dt2), whatever it lags now.
+    const double f_val = !active          ? 0.0
+                         : e.displacement ? scaled_function_value(e.f, t + dt2, e.ascale, e.fscale)
+                                          : scaled_function_value(e.f, t + 0.5 * dt2, e.ascale, e.fscale);
     const bool rot = e.dir >= 3;
     const int d = rot ? e.dir - 3 : e.dir;
+    const std::vector<double>& x = d == 0 ? s.x : d == 1 ? s.y : s.z;
+    const std::vector<double>& x0 = d == 0 ? s.x0 : d == 1 ? s.y0 : s.z0;
     std::vector<double>& v = rot ? (d == 0   ? s.wx
                                     : d == 1 ? s.wy
                                              : s.wz)
@@ -118,6 +127,7 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) 
       pend = 0;
       if (!active) continue;
       const auto n = static_cast<std::size_t>(e.nodes[k]);
+      const double v_imp = e.displacement ? (f_val - (x[n] - x0[n])) / dt2 : f_val;
       const double a_free = a[n];
       const double a_imp = (v_imp - v[n]) / dt12;
       a[n] = a_imp;

@@ -1,6 +1,6 @@
-// Nodal kinematic conditions: /BCS, /IMPVEL, /INIVEL/TRA (deck-format.md; elements.md sections 0 and 8;
-// OpenRadioss constraints/general/impvel/fixvel.F, loads/general/inivel/inivel_start.F90).
-// v is the state's v^{n-1/2}, a the accelerations of the cycle, dt12 = (dt1 + dt2) / 2.
+// Nodal kinematic conditions: /BCS, /IMPVEL, /IMPDISP, /INIVEL/TRA (deck-format.md; elements.md sections 0
+// and 8; OpenRadioss constraints/general/impvel/fixvel.F, loads/general/inivel/inivel_start.F90). v is the
+// state's v^{n-1/2}, a the accelerations of the cycle, dt12 = (dt1 + dt2) / 2.
 //
 //   /BCS      the fixed bits (bit 0..2 Tx Ty Tz, 3..5 Rx Ry Rz) are OR-ed into state.fixed once; each call
 //             of apply() zeroes both v and a of the fixed components (translations and rotations).
@@ -14,6 +14,11 @@
 //                 vbar = v^{n-1/2} + 1/2 a_imp dt12,
 //             booked as dt1 DW now and dt2 DW at the next apply() (total dt12 R vbar). For a free node
 //             this is exactly 1/2 m ((v^{n+1/2})^2 - (v^{n-1/2})^2) per cycle.
+//   /IMPDISP  the same with the velocity that reaches the imposed displacement u(t) = Fscale_y f(t /
+//   Ascale_x)
+//             from the initial position X0 at the end of the step (translations only):
+//                 v_imp = (u(t_n + dt2) - (x^n - X0)) / dt2,   so x^{n+1} = X0 + u(t_{n+1}) exactly;
+//             the reaction and work as /IMPVEL.
 //   /INIVEL/TRA  v = (Vx, Vy, Vz) on the group's nodes, at t = 0 (Tstart = 0) or at the first cycle
 //             with t_n >= Tstart.
 // Skews, sensors and frames are 0 in a valid model (the starter rejects them). No allocation in the
@@ -68,7 +73,8 @@ class ImposedVelocities {
  private:
   struct Entry {
     model::Function f;
-    int dir = 0;  // 0..2 translation, 3..5 rotation
+    int dir = 0;                // 0..2 translation, 3..5 rotation
+    bool displacement = false;  // /IMPDISP: f gives the displacement from the initial position
     double ascale = 1, fscale = 1, t_start = 0, t_stop = model::kNever;
     std::vector<std::int32_t> nodes;
     std::size_t first = 0;  // offset of its nodes in pending_

@@ -151,6 +151,8 @@ struct ImposedVelocity {
   int icoor = 0;
   std::int32_t group = kNone;
   double ascale_x = 1, fscale_y = 1, t_start = 0, t_stop = kNever;
+  // /IMPDISP: the function gives the displacement from the initial position, not the velocity.
+  bool displacement = false;
 };
 
 struct InitialVelocity {
