@@ -1,6 +1,8 @@
 // radx: the driver. `radx check DECK` runs every starter check (and the engine deck's, when one is
 // beside it or in the same one-file deck) without writing anything; `radx keywords` prints the
-// keyword reference generated from the declarations; `radx th FILE` lists or exports a time history.
+// keyword reference generated from the declarations; `radx th FILE` lists or exports a time history;
+// `radx regress DIR...` runs every deck under the folders given and compares them with their references
+// (apps/regress.hpp).
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -10,6 +12,7 @@
 
 #include "apps/cli_common.hpp"
 #include "apps/engine_pipeline.hpp"
+#include "apps/regress.hpp"
 #include "apps/starter_pipeline.hpp"
 #include "io/time_history.hpp"
 #include "io/time_history_export.hpp"
@@ -40,7 +43,19 @@ void usage(std::ostream& os) {
         "                              columns (all by default) as CSV to OUT.csv or standard output.\n"
         "                              SELECTOR: a group (node/1), a column (global:IE, node/1:12:DX) or an\n"
         "                              object's columns (node/1:12); '*' and '?' are wildcards; repeatable\n"
-        "  regress                     not available yet\n"
+        "  regress DIR... [--tol PCT] [--timeout SECONDS] [--threads N] [--work DIR] [--keep]\n"
+        "          [--summary FILE]\n"
+        "                              run every deck under the folders (NAME_0000.rad, or a one-file "
+        "deck),\n"
+        "                              each as its own `radx run` (--threads, default 1) with a time limit\n"
+        "                              (--timeout, default 600 s), and compare its energies with the "
+        "folder's\n"
+        "                              OpenRadioss ref.extract (--tol, default 5 %); one line per deck, "
+        "then\n"
+        "                              a table; --summary writes it as JSON; --work keeps outputs and logs\n"
+        "                              there (default a temporary folder, removed unless --keep). Exit code "
+        "1\n"
+        "                              when a deck fails (read-error, run-error, ref-error, deviates)\n"
         "\n"
         "  --help, --version\n"
         "\n"
@@ -223,10 +238,14 @@ int main(int argc, char** argv) {
   if (cmd == "run") return run(args);
   if (cmd == "th") return th(args);
   if (cmd == "regress") {
-    std::cerr
-        << "radx regress: not available in this version (batch regression of sample decks comes later); "
-           "run `radx run DECK` per deck\n";
-    return radx::app::kExitUsage;
+    // The decks run in child processes of this same executable (`radx run`).
+    std::error_code ec;
+    const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec) {
+      std::cerr << "radx regress: cannot find this executable (/proc/self/exe): " << ec.message() << '\n';
+      return radx::app::kExitInputError;
+    }
+    return radx::app::regress_command(args, self, std::cout, std::cerr);
   }
   std::cerr << "radx: unknown command '" << cmd << "'\n";
   usage(std::cerr);

@@ -4,8 +4,15 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
 
 namespace radx::io {
 
@@ -241,6 +248,277 @@ bool write_summary_json(const std::string& path, const RunSummary& s, std::strin
     return false;
   }
   return true;
+}
+
+namespace {
+
+// A JSON value as the reader needs it: numbers as doubles (the counts written are far below 2^53), objects as
+// ordered maps (duplicate keys: the last wins, as in most readers).
+struct JsonValue {
+  enum class Kind : std::uint8_t { Null, Boolean, Number, String, Array, Object } kind = Kind::Null;
+  bool boolean = false;
+  double number = 0;
+  std::string string;
+  std::vector<JsonValue> array;
+  std::map<std::string, JsonValue, std::less<>> object;
+};
+
+// Recursive descent over RFC 8259; throws std::runtime_error naming the byte offset of the problem.
+class JsonReader {
+ public:
+  explicit JsonReader(std::string_view text) : t_(text) {}
+  JsonValue document() {
+    JsonValue v = value(0);
+    skip_space();
+    if (i_ != t_.size()) fail("text after the document");
+    return v;
+  }
+
+ private:
+  static constexpr int kMaxDepth = 64;  // a summary nests three deep; this only stops runaway input
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw std::runtime_error(what + " at byte " + std::to_string(i_));
+  }
+  void skip_space() {
+    while (i_ < t_.size() && (t_[i_] == ' ' || t_[i_] == '\t' || t_[i_] == '\n' || t_[i_] == '\r')) ++i_;
+  }
+  bool take(std::string_view word) {
+    if (t_.substr(i_, word.size()) != word) return false;
+    i_ += word.size();
+    return true;
+  }
+  JsonValue value(int depth) {
+    if (depth > kMaxDepth) fail("nesting too deep");
+    skip_space();
+    if (i_ >= t_.size()) fail("unexpected end of the document");
+    JsonValue v;
+    const char c = t_[i_];
+    if (c == '{') {
+      v.kind = JsonValue::Kind::Object;
+      ++i_;
+      skip_space();
+      if (take("}")) return v;
+      for (;;) {
+        skip_space();
+        if (i_ >= t_.size() || t_[i_] != '"') fail("expected a key");
+        std::string k = string_literal();
+        skip_space();
+        if (!take(":")) fail("expected ':'");
+        v.object[std::move(k)] = value(depth + 1);
+        skip_space();
+        if (take("}")) return v;
+        if (!take(",")) fail("expected ',' or '}'");
+      }
+    }
+    if (c == '[') {
+      v.kind = JsonValue::Kind::Array;
+      ++i_;
+      skip_space();
+      if (take("]")) return v;
+      for (;;) {
+        v.array.push_back(value(depth + 1));
+        skip_space();
+        if (take("]")) return v;
+        if (!take(",")) fail("expected ',' or ']'");
+      }
+    }
+    if (c == '"') {
+      v.kind = JsonValue::Kind::String;
+      v.string = string_literal();
+      return v;
+    }
+    if (take("null")) return v;
+    if (take("true") || take("false")) {
+      v.kind = JsonValue::Kind::Boolean;
+      v.boolean = t_[i_ - 2] == 'u';  // tr(u)e, fal(s)e
+      return v;
+    }
+    v.kind = JsonValue::Kind::Number;
+    v.number = number();
+    return v;
+  }
+  double number() {
+    const std::size_t start = i_;
+    // The JSON grammar: -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?
+    auto digits = [&] {
+      const std::size_t from = i_;
+      while (i_ < t_.size() && t_[i_] >= '0' && t_[i_] <= '9') ++i_;
+      return i_ > from;
+    };
+    if (i_ < t_.size() && t_[i_] == '-') ++i_;
+    if (i_ < t_.size() && t_[i_] == '0') {
+      ++i_;
+    } else if (!digits()) {
+      i_ = start;
+      fail("expected a value");
+    }
+    if (i_ < t_.size() && t_[i_] == '.') {
+      ++i_;
+      if (!digits()) fail("expected digits after '.'");
+    }
+    if (i_ < t_.size() && (t_[i_] == 'e' || t_[i_] == 'E')) {
+      ++i_;
+      if (i_ < t_.size() && (t_[i_] == '+' || t_[i_] == '-')) ++i_;
+      if (!digits()) fail("expected digits in the exponent");
+    }
+    double v = 0;
+    const auto r = std::from_chars(t_.data() + start, t_.data() + i_, v);
+    // Out of range: from_chars leaves v unset; a summary never holds such a number, but say so rather than 0.
+    if (r.ec == std::errc::result_out_of_range) {
+      i_ = start;
+      fail("number out of range");
+    }
+    return v;
+  }
+  unsigned hex4() {
+    if (i_ + 4 > t_.size()) fail("short \\u escape");
+    unsigned u = 0;
+    const auto r = std::from_chars(t_.data() + i_, t_.data() + i_ + 4, u, 16);
+    if (r.ptr != t_.data() + i_ + 4) fail("bad \\u escape");
+    i_ += 4;
+    return u;
+  }
+  static void append_utf8(std::string& out, unsigned cp) {
+    if (cp < 0x80) {
+      out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+      out += static_cast<char>(0xC0 | (cp >> 6));
+      out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else if (cp < 0x10000) {
+      out += static_cast<char>(0xE0 | (cp >> 12));
+      out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else {
+      out += static_cast<char>(0xF0 | (cp >> 18));
+      out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+      out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (cp & 0x3F));
+    }
+  }
+  std::string string_literal() {
+    ++i_;  // the opening quote
+    std::string out;
+    for (;;) {
+      if (i_ >= t_.size()) fail("unterminated string");
+      const char c = t_[i_++];
+      if (c == '"') return out;
+      if (static_cast<unsigned char>(c) < 0x20) fail("control character in a string");
+      if (c != '\\') {
+        out += c;
+        continue;
+      }
+      if (i_ >= t_.size()) fail("unterminated string");
+      switch (t_[i_++]) {
+        case '"': out += '"'; break;
+        case '\\': out += '\\'; break;
+        case '/': out += '/'; break;
+        case 'b': out += '\b'; break;
+        case 'f': out += '\f'; break;
+        case 'n': out += '\n'; break;
+        case 'r': out += '\r'; break;
+        case 't': out += '\t'; break;
+        case 'u': {
+          unsigned cp = hex4();
+          if (cp >= 0xD800 && cp <= 0xDBFF && take("\\u")) {
+            const unsigned lo = hex4();
+            cp = lo >= 0xDC00 && lo <= 0xDFFF ? 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00) : 0xFFFD;
+          } else if (cp >= 0xD800 && cp <= 0xDFFF) {
+            cp = 0xFFFD;  // a lone surrogate is no character
+          }
+          append_utf8(out, cp);
+          break;
+        }
+        default: fail("unknown escape");
+      }
+    }
+  }
+
+  std::string_view t_;
+  std::size_t i_ = 0;
+};
+
+const JsonValue* member(const JsonValue& v, std::string_view key) {
+  if (v.kind != JsonValue::Kind::Object) return nullptr;
+  const auto it = v.object.find(key);
+  return it == v.object.end() ? nullptr : &it->second;
+}
+
+// A number member: NaN when it is null (non-finite values are written as null); `fallback` when absent.
+double number_member(const JsonValue& v, std::string_view key, double fallback = 0) {
+  const JsonValue* m = member(v, key);
+  if (!m) return fallback;
+  if (m->kind == JsonValue::Kind::Number) return m->number;
+  if (m->kind == JsonValue::Kind::Null) return std::numeric_limits<double>::quiet_NaN();
+  throw std::runtime_error("\"" + std::string(key) + "\" is not a number");
+}
+
+std::string string_member(const JsonValue& v, std::string_view key) {
+  const JsonValue* m = member(v, key);
+  if (!m) return {};
+  if (m->kind != JsonValue::Kind::String)
+    throw std::runtime_error("\"" + std::string(key) + "\" is not a string");
+  return m->string;
+}
+
+}  // namespace
+
+bool read_summary_json(const std::string& path, RunSummary& s, std::string& error) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) {
+    error = path + ": cannot open the file";
+    return false;
+  }
+  std::ostringstream text;
+  text << f.rdbuf();
+  try {
+    const JsonValue d = JsonReader(text.str()).document();
+    if (d.kind != JsonValue::Kind::Object) throw std::runtime_error("the document is not an object");
+    for (const char* key : {"status", "cycles", "time", "energy"})
+      if (!member(d, key)) throw std::runtime_error(std::string("no \"") + key + "\" key");
+    const std::string status = string_member(d, "status");
+    if (status != "normal" && status != "error")
+      throw std::runtime_error("status \"" + status + "\" is neither \"normal\" nor \"error\"");
+    RunSummary r;
+    r.status = status == "normal" ? RunStatus::Normal : RunStatus::Error;
+    r.message = string_member(d, "message");
+    r.run_name = string_member(d, "run_name");
+    r.run_number = static_cast<int>(number_member(d, "run_number", 1));
+    r.cycles = static_cast<std::int64_t>(number_member(d, "cycles"));
+    r.time = number_member(d, "time");
+    r.dt = number_member(d, "dt");
+    r.nodes = static_cast<std::size_t>(number_member(d, "nodes"));
+    r.elements = static_cast<std::size_t>(number_member(d, "elements"));
+    r.threads = static_cast<int>(number_member(d, "threads", 1));
+    r.wall_seconds = number_member(d, "wall_seconds");
+    r.initial_mass = number_member(d, "initial_mass");
+    r.mass = number_member(d, "mass");
+    r.added_mass = number_member(d, "added_mass");
+    if (const JsonValue* m = member(d, "momentum");
+        m && m->kind == JsonValue::Kind::Array && m->array.size() == 3) {
+      for (std::size_t k = 0; k < 3; ++k)
+        r.momentum[k] = m->array[k].kind == JsonValue::Kind::Number
+                            ? m->array[k].number
+                            : std::numeric_limits<double>::quiet_NaN();
+    }
+    const JsonValue& e = *member(d, "energy");
+    if (e.kind != JsonValue::Kind::Object) throw std::runtime_error("\"energy\" is not an object");
+    r.energy.kinetic_t = number_member(e, "kinetic_translational");
+    r.energy.kinetic_r = number_member(e, "kinetic_rotational");
+    r.energy.internal = number_member(e, "internal");
+    r.energy.hourglass = number_member(e, "hourglass");
+    r.energy.external_work = number_member(e, "external_work");
+    r.energy.contact_elastic = number_member(e, "contact_elastic");
+    r.energy.contact_damping = number_member(e, "contact_damping");
+    r.energy.contact_friction = number_member(e, "contact_friction");
+    r.energy.contact_lagrange = number_member(e, "contact_lagrange");
+    r.energy.initial_total = number_member(e, "initial_total");
+    s = std::move(r);
+    return true;
+  } catch (const std::exception& ex) {
+    error = path + ": " + ex.what();
+    return false;
+  }
 }
 
 }  // namespace radx::io

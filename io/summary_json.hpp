@@ -7,7 +7,11 @@
 // threads, wall_seconds, us_per_element_cycle, initial_mass, mass, added_mass, momentum [x, y, z],
 // energy {kinetic, kinetic_translational, kinetic_rotational, internal, hourglass, external_work,
 // contact_elastic, contact_damping, contact_friction, contact_lagrange, initial_total, total, error_percent},
-// interfaces [{id, active_pairs, max_penetration, switched_pairs_max, switched_pairs_total}].
+// interfaces [{id, active_pairs, max_penetration, switched_pairs_max, switched_pairs_total, added_mass,
+// removed_nodes}], and lagrange_solver {...} when a LAGDT interface could switch.
+//
+// read_summary_json reads a document back (for `radx regress`, which runs each deck in a child process and
+// reads its figures from this file): a small strict JSON reader, no library.
 #pragma once
 
 #include <string>
@@ -31,5 +35,12 @@ std::string summary_json_path(const std::string& dir, const std::string& output_
 // Writes summary_json(s) to `path` through path + ".part" and a rename. False with `error` set on failure
 // (the .part file is removed).
 bool write_summary_json(const std::string& path, const RunSummary& s, std::string& error);
+
+// Reads `path` into `s`: status, message, run_name, run_number, cycles, time, dt, nodes, elements, threads,
+// wall_seconds, initial_mass, mass, added_mass, momentum and the energies by kind (the derived kinetic, total
+// and error_percent are not stored; interfaces and lagrange_solver are not read). A null number reads as NaN.
+// False with `error` set ("PATH: what is wrong") when the file cannot be read, is not JSON, or lacks status,
+// cycles, time or energy.
+bool read_summary_json(const std::string& path, RunSummary& s, std::string& error);
 
 }  // namespace radx::io

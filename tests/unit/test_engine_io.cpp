@@ -679,3 +679,57 @@ need(i[1]["id"] == 9 and i[1]["max_penetration"] == 0, "interface 9")
   CHECK_FALSE(radx::io::write_summary_json((dir.path() / "no" / "x.json").string(), s, error));
   CHECK_FALSE(error.empty());
 }
+
+TEST_CASE("NAME_summary.json reads back through read_summary_json", "[engine-io]") {
+  radx::test::TempDir dir;
+  const auto s = sample_summary();
+  const std::string path = radx::io::summary_json_path(dir.path().string(), "BLOCK");
+  std::string error;
+  REQUIRE(radx::io::write_summary_json(path, s, error));
+  radx::io::RunSummary r;
+  REQUIRE(radx::io::read_summary_json(path, r, error));
+  CHECK(r.status == radx::io::RunStatus::Error);
+  // The invalid byte 0xff was written as U+FFFD; the rest of the message comes back byte for byte.
+  CHECK(r.message == "stop: \"energy\" \\ error\n\tabove 5 %\x01 caf\xc3\xa9 \xef\xbf\xbd");
+  CHECK(r.run_name == "BLOCK");
+  CHECK(r.run_number == 2);
+  CHECK(r.cycles == 500);
+  CHECK(r.time == 0.1);
+  CHECK(r.dt == 1.0 / 3.0);  // 17 digits: the same double
+  CHECK(r.nodes == 1234);
+  CHECK(r.elements == 1000);
+  CHECK(r.threads == 4);
+  CHECK(r.mass == 7.625);
+  CHECK(r.momentum[0] == 1e-300);
+  CHECK(std::isnan(r.momentum[2]));  // infinity was written as null
+  CHECK(r.energy.kinetic_t == 10.5);
+  CHECK(r.energy.kinetic_r == 0.25);
+  CHECK(r.energy.internal == 3.0);
+  CHECK(r.energy.hourglass == 0.5);
+  CHECK(r.energy.contact_lagrange == 0.4);
+  CHECK(r.energy.external_work == 1.0);
+  CHECK(r.energy.initial_total == 12.0);
+
+  // Not JSON, or not a summary: an error naming the file.
+  for (const char* bad :
+       {"{\"status\": \"normal\", \"cycles\": 1, \"time\": 0.1}",                 // no energy
+        "{\"status\": \"normal\", \"cycles\": 1, \"time\": 0.1, \"energy\": {}",  // unclosed
+        "{\"status\": \"fine\", \"cycles\": 1, \"time\": 0.1, \"energy\": {}}",
+        "{\"status\": \"normal\", \"cycles\": \"1\", \"time\": 0.1, \"energy\": {}}",
+        "{\"status\": \"normal\", \"cycles\": 01, \"time\": 0.1, \"energy\": {}}", "[]", ""}) {
+    INFO(bad);
+    const std::string p = dir.write("bad.json", bad);
+    error.clear();
+    CHECK_FALSE(radx::io::read_summary_json(p, r, error));
+    CHECK(error.rfind(p + ": ", 0) == 0);
+  }
+  const std::string ok = dir.write("ok.json",
+                                   " {\"status\":\"normal\",\"cycles\":7,\"time\":2.5E-1,\"energy\":{"
+                                   "\"internal\":-1e-3},\"x\":[true,false,null]}\n");
+  REQUIRE(radx::io::read_summary_json(ok, r, error));
+  CHECK(r.status == radx::io::RunStatus::Normal);
+  CHECK(r.cycles == 7);
+  CHECK(r.time == 0.25);
+  CHECK(r.energy.internal == -1e-3);
+  CHECK_FALSE(radx::io::read_summary_json((dir.path() / "none.json").string(), r, error));
+}

@@ -1,0 +1,776 @@
+// radx regress: deck discovery, the child runs, the status of each deck and the report (apps/regress.hpp).
+#include "apps/regress.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <ostream>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "apps/cli_common.hpp"
+#include "apps/starter_pipeline.hpp"
+#include "io/summary_json.hpp"
+#include "parser/build_run_controls.hpp"
+#include "parser/deck.hpp"
+
+extern char** environ;
+
+namespace radx::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Marks a work folder as radx regress's own, so a second run may clear the deck folders inside it; a folder
+// without it that is not empty is refused (it could be anything, a deck folder included).
+constexpr const char* kWorkMarker = ".radx-regress";
+constexpr const char* kRunLog = "run.log";
+// Widths of the refusal text: on the line printed per deck, and in the table.
+constexpr std::size_t kLineRefusalChars = 160;
+constexpr std::size_t kTableRefusalChars = 72;
+constexpr std::size_t kMostFrequentShown = 10;
+
+bool ends_with(std::string_view s, std::string_view tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+bool all_digits(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// NAME_NNNN.rad: the run number NNNN (four digits), or -1.
+int run_number_of(std::string_view file_name) {
+  if (!ends_with(file_name, ".rad") || file_name.size() < 10) return -1;
+  const std::string_view digits = file_name.substr(file_name.size() - 8, 4);
+  if (file_name[file_name.size() - 9] != '_' || !all_digits(digits)) return -1;
+  return std::stoi(std::string(digits));
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// A percentage for the report: two decimals, or three significant digits when large.
+std::string percent(double fraction) {
+  if (std::isnan(fraction)) return "nan";
+  if (std::isinf(fraction)) return "inf";
+  char buf[32];
+  const double p = 100.0 * fraction;
+  std::snprintf(buf, sizeof buf, p < 1000 ? "%.2f" : "%.3g", p);
+  return buf;
+}
+
+// The tolerance as the user gave it: "5", "2.5".
+std::string tolerance_text(double fraction) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", 100.0 * fraction);
+  return buf;
+}
+
+std::string seconds_text(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f s", s);
+  return buf;
+}
+
+// The name of a folder as given ("a/b/" and "a/b/." are "b"; "." is the current folder's name).
+std::string folder_name(const fs::path& dir) {
+  std::error_code ec;
+  fs::path p = fs::absolute(dir, ec).lexically_normal();
+  if (p.filename().empty()) p = p.parent_path();
+  return p.filename().empty() ? std::string("root") : p.filename().string();
+}
+
+std::string signal_text(int sig) {
+  const char* name = sigabbrev_np(sig);
+  return "signal " + std::to_string(sig) + (name ? std::string(" (SIG") + name + ")" : std::string());
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------------
+// Finding the decks.
+
+std::vector<RegressDeck> find_regress_decks(const std::vector<fs::path>& dirs, const fs::path& skip) {
+  std::vector<RegressDeck> out;
+  std::set<fs::path> seen;  // the same deck reached through overlapping DIRs runs once
+  std::error_code ec;
+  const fs::path skip_canonical = skip.empty() ? fs::path() : fs::weakly_canonical(skip, ec);
+  for (std::size_t k = 0; k < dirs.size(); ++k) {
+    const fs::path& dir = dirs[k];
+    const std::string dir_name = folder_name(dir);
+
+    std::map<fs::path, std::vector<std::string>> rad_files;  // folder -> the names of its .rad files
+    const auto add_folder_files = [&](const fs::path& folder) {
+      std::error_code e1;
+      for (const auto& e :
+           fs::directory_iterator(folder, fs::directory_options::skip_permission_denied, e1)) {
+        std::error_code e2;
+        const std::string name = e.path().filename().string();
+        if (ends_with(name, ".rad") && e.is_regular_file(e2)) rad_files[folder].push_back(name);
+      }
+    };
+    add_folder_files(dir);
+    std::error_code walk;
+    for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied, walk);
+         !walk && it != fs::recursive_directory_iterator(); it.increment(walk)) {
+      std::error_code e1;
+      if (it->is_symlink(e1) || !it->is_directory(e1)) continue;  // symbolic links are not followed
+      const std::string name = it->path().filename().string();
+      const bool hidden = !name.empty() && name[0] == '.';
+      if (hidden || (!skip_canonical.empty() && fs::weakly_canonical(it->path(), e1) == skip_canonical)) {
+        it.disable_recursion_pending();
+        continue;
+      }
+      add_folder_files(it->path());
+    }
+
+    for (auto& [folder, names] : rad_files) {
+      std::sort(names.begin(), names.end());
+      std::vector<std::string> decks;
+      for (const auto& n : names)
+        if (run_number_of(n) == 0) decks.push_back(n);
+      if (decks.empty())
+        for (const auto& n : names)
+          if (run_number_of(n) < 0 && is_one_file_deck((folder / n).string())) decks.push_back(n);
+      fs::path rel = folder.lexically_relative(dir);
+      if (rel.empty() || rel == ".") rel = dir_name;
+      const bool has_reference = fs::is_regular_file(folder / "ref.extract", ec);
+      for (const auto& deck : decks) {
+        const fs::path starter = fs::absolute(folder / deck, ec).lexically_normal();
+        if (!seen.insert(fs::weakly_canonical(starter, ec)).second) continue;
+        RegressDeck d;
+        d.starter_deck = starter;
+        // Several DIRs: the label starts with DIR as given, the work folder with DIR's rank and name.
+        d.label = dirs.size() > 1 ? (dir / folder.lexically_relative(dir)).lexically_normal().generic_string()
+                                  : rel.generic_string();
+        while (d.label.size() > 1 && d.label.back() == '/') d.label.pop_back();
+        d.work_subdir = dirs.size() > 1 ? fs::path(std::to_string(k + 1) + "_" + dir_name) / rel : rel;
+        if (decks.size() > 1) {
+          d.label += "/" + deck;
+          d.work_subdir /= fs::path(deck).stem();
+        }
+        std::vector<std::string> notes;
+        if (has_reference) {
+          if (decks.size() == 1)
+            d.reference = folder / "ref.extract";
+          else
+            notes.push_back("ref.extract not used: the folder holds " + std::to_string(decks.size()) +
+                            " decks");
+        }
+        // Later engine decks of the same run (NAME_0002.rad, ...): OpenRadioss restarts, which radx lacks.
+        if (run_number_of(deck) == 0) {
+          const std::string prefix = deck.substr(0, deck.size() - 8);  // "NAME_"
+          std::string later;
+          for (const auto& n : names)
+            if (run_number_of(n) >= 2 && n.size() == deck.size() && n.compare(0, prefix.size(), prefix) == 0)
+              later += (later.empty() ? "" : ", ") + n;
+          if (!later.empty())
+            notes.push_back(later + " not run (radx runs " + prefix + "0001.rad only: it has no restart)");
+        }
+        for (const auto& n : notes) d.note += (d.note.empty() ? "" : "; ") + n;
+        out.push_back(std::move(d));
+      }
+    }
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// The child run.
+
+ChildOutcome run_child(const std::vector<std::string>& args, const fs::path& log_path,
+                       std::chrono::duration<double> timeout) {
+  ChildOutcome r;
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const std::string log = log_path.string();
+  const std::string cwd = log_path.parent_path().string();
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  // Any file a run writes outside --out lands in its work folder, not in the caller's.
+  if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
+  // The child starts with no blocked signals and default handlers, whatever this process set.
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t none, defaults;
+  sigemptyset(&none);
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+
+  const auto start = std::chrono::steady_clock::now();
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, argv[0], &actions, &attr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attr);
+  if (rc != 0) {
+    r.start_error = "cannot start " + args[0] + ": " + std::strerror(rc);
+    return r;
+  }
+  // Polled rather than woken by SIGCHLD: no handler to install in a process that may run other children
+  // (the energy chart's Python), and a few milliseconds of latency are nothing next to a deck's run.
+  int status = 0;
+  auto pause = std::chrono::milliseconds(2);
+  for (;;) {
+    const pid_t w = waitpid(pid, &status, WNOHANG);
+    if (w == pid) break;
+    if (w < 0 && errno != EINTR) {
+      r.start_error = std::string("lost the child process: ") + std::strerror(errno);
+      return r;
+    }
+    if (std::chrono::steady_clock::now() - start >= timeout) {
+      r.timed_out = true;
+      kill(pid, SIGKILL);
+      while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      break;
+    }
+    std::this_thread::sleep_for(pause);
+    pause = std::min(pause * 2, std::chrono::milliseconds(50));
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Reading the output.
+
+FirstError first_error(std::string_view output) {
+  FirstError first;
+  std::size_t pos = 0;
+  while (pos < output.size()) {
+    const std::size_t end = std::min(output.find('\n', pos), output.size());
+    const std::string_view line = output.substr(pos, end - pos);
+    pos = end + 1;
+    const std::size_t at = line.find("error: ");
+    if (at == std::string_view::npos) continue;
+    std::string_view prefix = line.substr(0, at);
+    const bool at_start = prefix.find_first_not_of(" \t") == std::string_view::npos;
+    if (!at_start && !ends_with(prefix, ": ")) continue;
+    FirstError e;
+    e.message = std::string(line.substr(at + 7));
+    while (!e.message.empty() && (e.message.back() == '\r' || e.message.back() == ' ')) e.message.pop_back();
+    if (!at_start) {
+      prefix.remove_suffix(2);
+      // FILE:LINE:COL or FILE:LINE -> FILE_NAME:LINE; a program name stays as it is.
+      std::string_view file = prefix, line_no;
+      for (int part = 0; part < 2; ++part) {
+        const std::size_t colon = file.rfind(':');
+        if (colon == std::string_view::npos || !all_digits(file.substr(colon + 1))) break;
+        line_no = file.substr(colon + 1);
+        file = file.substr(0, colon);
+      }
+      e.location = line_no.empty() ? std::string(prefix)
+                                   : fs::path(file).filename().string() + ":" + std::string(line_no);
+    }
+    // A reference to an object that does not exist is most often the echo of a keyword refused further
+    // down (a /PART naming the unsupported /MAT): the refusal is the first other error, when there is one.
+    const bool dangling_reference = e.message.rfind("RX402:", 0) == 0;
+    if (!dangling_reference) return e;
+    if (first.message.empty()) first = e;
+  }
+  return first;
+}
+
+std::string refusal_group(std::string_view message) {
+  const std::size_t colon = message.find(':');
+  const std::string_view head = message.substr(0, colon);
+  if (head.size() > 2 && head.substr(0, 2) == "RX" && all_digits(head.substr(2)) &&
+      colon != std::string_view::npos) {
+    std::string_view rest = message.substr(colon + 1);
+    rest.remove_prefix(std::min(rest.find_first_not_of(' '), rest.size()));
+    if (!rest.empty() && rest[0] == '[') {
+      const std::size_t stop = rest.find_first_of(" ]");
+      return std::string(head) + " " +
+             std::string(rest.substr(1, stop == std::string_view::npos ? 0 : stop - 1));
+    }
+    return std::string(head);
+  }
+  return shorten(head, 60);
+}
+
+std::string shorten(std::string_view text, std::size_t max_chars) {
+  if (text.size() <= max_chars) return std::string(text);
+  std::size_t cut = max_chars > 3 ? max_chars - 3 : 0;
+  const std::size_t space = text.rfind(' ', cut);
+  if (space != std::string_view::npos && space > cut / 2) {
+    cut = space;
+  } else {
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // not inside UTF-8
+  }
+  std::string s(text.substr(0, cut));
+  while (!s.empty() && (s.back() == ' ' || s.back() == ',' || s.back() == ';' || s.back() == ':'))
+    s.pop_back();
+  return s + "...";
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Status.
+
+std::string_view status_name(RegressStatus s) {
+  switch (s) {
+    case RegressStatus::ReadError: return "read-error";
+    case RegressStatus::RunError: return "run-error";
+    case RegressStatus::RefError: return "ref-error";
+    case RegressStatus::Ran: return "ran";
+    case RegressStatus::Compared: return "compared";
+    case RegressStatus::Deviates: return "deviates";
+  }
+  return "?";
+}
+
+bool is_failure(RegressStatus s) {
+  return s != RegressStatus::Ran && s != RegressStatus::Compared;
+}
+
+RegressResult evaluate_deck(const RegressDeck& deck, const ChildOutcome& child, const RegressRunFiles& files,
+                            double tolerance) {
+  RegressResult r;
+  r.deck = deck;
+  r.seconds = child.seconds;
+  r.refusal = first_error(files.output);
+  if (!child.start_error.empty()) {
+    r.status = RegressStatus::RunError;
+    r.detail = child.start_error;
+    return r;
+  }
+  // The detail says what the status and the first error line do not: a time limit, a signal, the message of
+  // an error termination, a failure that printed no error line.
+  const std::string stage = files.model_written ? "engine" : "starter";
+  const bool failed = child.timed_out || child.signal != 0 || child.exit_code != 0;
+  std::vector<std::string> details;
+  if (child.timed_out)
+    details.push_back("the " + stage + " ran out of time (" + seconds_text(child.seconds) + ")");
+  else if (child.signal != 0)
+    details.push_back("the " + stage + " was ended by " + signal_text(child.signal));
+  if (files.model_written && files.summary && files.summary->status == io::RunStatus::Error)
+    details.push_back("error termination: " + files.summary->message);
+  if (details.empty() && failed && r.refusal.message.empty())
+    details.push_back("the " + stage + " failed (exit code " + std::to_string(child.exit_code) +
+                      ") without an error line; see its run.log");
+  if (details.empty() && !failed && !files.model_written)
+    details.push_back("the starter wrote no model file");
+  if (details.empty() && !failed && files.model_written && !files.summary)
+    details.push_back(files.summary_error);
+  for (const auto& d : details) r.detail += (r.detail.empty() ? "" : "; ") + d;
+  if (!files.model_written) {
+    r.status = RegressStatus::ReadError;
+    return r;
+  }
+  if (failed || !files.summary || files.summary->status != io::RunStatus::Normal) {
+    r.status = RegressStatus::RunError;
+    return r;
+  }
+  const io::RunSummary& s = *files.summary;
+  io::RunFigures fig;
+  fig.cycles = s.cycles;
+  fig.time = s.time;
+  fig.energy[static_cast<std::size_t>(io::ExtractEnergy::Internal)] = s.energy.internal;
+  fig.energy[static_cast<std::size_t>(io::ExtractEnergy::KineticTranslational)] = s.energy.kinetic_t;
+  fig.energy[static_cast<std::size_t>(io::ExtractEnergy::KineticRotational)] = s.energy.kinetic_r;
+  fig.energy[static_cast<std::size_t>(io::ExtractEnergy::ExternalWork)] = s.energy.external_work;
+  r.radx = fig;
+  if (deck.reference.empty()) {
+    r.status = RegressStatus::Ran;
+    return r;
+  }
+  io::RegressionExtract ref;
+  std::string error;
+  if (!io::read_regression_extract(deck.reference.string(), ref, error)) {
+    r.status = RegressStatus::RefError;
+    r.detail = error;
+    return r;
+  }
+  r.reference = ref;
+  r.comparison = io::compare_to_extract(fig, ref);
+  r.status = r.comparison->within(tolerance) ? RegressStatus::Compared : RegressStatus::Deviates;
+  return r;
+}
+
+RegressResult run_regress_deck(const RegressDeck& deck, const RegressSettings& settings) {
+  const fs::path dir = settings.work_dir / deck.work_subdir;
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+  fs::create_directories(dir, ec);
+  const std::string deck_path = deck.starter_deck.string();
+  const std::vector<std::string> argv{
+      settings.executable.string(),     "run",      deck_path, "--out", dir.string(), "--threads",
+      std::to_string(settings.threads), "--no-plot"};
+  const ChildOutcome child =
+      run_child(argv, dir / kRunLog, std::chrono::duration<double>(settings.timeout_seconds));
+  RegressRunFiles files;
+  files.model_written = fs::exists(dir / (starter_output_root(deck_path) + ".hdf"), ec);
+  const fs::path summary = dir / (run_output_root(deck_path) + "_summary.json");
+  io::RunSummary s;
+  if (!fs::exists(summary, ec))
+    files.summary_error = "no " + summary.filename().string() + " written";
+  else if (io::read_summary_json(summary.string(), s, files.summary_error))
+    files.summary = s;
+  files.output = read_text(dir / kRunLog);
+  return evaluate_deck(deck, child, files, settings.tolerance);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// The report.
+
+namespace {
+
+std::string refusal_text(const RegressResult& r, std::size_t max_chars, bool with_location) {
+  if (r.refusal.message.empty()) return shorten(r.detail, max_chars);
+  std::string t = with_location && !r.refusal.location.empty() ? r.refusal.location + ": " : "";
+  return shorten(t + r.refusal.message, max_chars);
+}
+
+std::string cycles_text(const RegressResult& r) {
+  if (!r.radx) return "-";
+  return std::to_string(r.radx->cycles) + "/" + (r.reference ? std::to_string(r.reference->cycles) : "-");
+}
+
+std::string energy_text(const RegressResult& r, io::ExtractEnergy e) {
+  return r.comparison ? percent(r.comparison->energy[static_cast<std::size_t>(e)]) : "-";
+}
+
+}  // namespace
+
+std::string format_regress_line(const RegressResult& r) {
+  std::string s = r.deck.label + "  " + std::string(status_name(r.status));
+  if (r.comparison) {
+    const auto& c = *r.comparison;
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.2f", c.cycle_ratio);
+    s += "  cycles " + cycles_text(r) + " (x" + ratio + ")  TIME " + percent(c.time) + " %";
+    for (const auto e : io::kExtractEnergies)
+      s += "  " + std::string(io::extract_label(e)) + " " + energy_text(r, e) + " %";
+  } else if (r.radx) {
+    char t[32];
+    std::snprintf(t, sizeof t, "%.5g", r.radx->time);
+    s += "  cycles " + std::to_string(r.radx->cycles) + "  time " + t;
+  }
+  if (r.status == RegressStatus::ReadError || r.status == RegressStatus::RunError ||
+      r.status == RegressStatus::RefError) {
+    s += "  " + refusal_text(r, kLineRefusalChars, true);
+    if (!r.refusal.message.empty() && !r.detail.empty()) s += " (" + r.detail + ")";
+  }
+  if (!r.deck.note.empty()) s += "  [" + r.deck.note + "]";
+  s += "  (" + seconds_text(r.seconds) + ")";
+  return s;
+}
+
+void write_regress_table(std::ostream& os, const std::vector<RegressResult>& results, double tolerance) {
+  const std::vector<std::string> titles{"deck",     "status",    "cycles radx/ref", "IE dev %",
+                                        "KE dev %", "KER dev %", "EXT dev %",       "first refusal"};
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& r : results) {
+    std::vector<std::string> row{r.deck.label, std::string(status_name(r.status)), cycles_text(r)};
+    for (const auto e : io::kExtractEnergies) row.push_back(energy_text(r, e));
+    const bool refused = r.status == RegressStatus::ReadError || r.status == RegressStatus::RunError ||
+                         r.status == RegressStatus::RefError;
+    row.push_back(refused ? refusal_text(r, kTableRefusalChars, false) : "");
+    rows.push_back(std::move(row));
+  }
+  std::vector<std::size_t> width(titles.size());
+  for (std::size_t c = 0; c < titles.size(); ++c) {
+    width[c] = titles[c].size();
+    for (const auto& row : rows) width[c] = std::max(width[c], row[c].size());
+  }
+  const auto put_row = [&](const std::vector<std::string>& row) {
+    std::string line;
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      const bool number = c >= 2 && c <= 6;  // right-aligned
+      const std::string pad(width[c] - std::min(width[c], row[c].size()), ' ');
+      if (c > 0) line += "  ";
+      line += number ? pad + row[c] : (c + 1 == row.size() ? row[c] : row[c] + pad);
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    os << line << '\n';
+  };
+  put_row(titles);
+  std::size_t total = 0;
+  for (const auto w : width) total += w + 2;
+  os << std::string(std::min<std::size_t>(total, 160), '-') << '\n';
+  for (const auto& row : rows) put_row(row);
+
+  std::map<RegressStatus, std::size_t> count;
+  std::size_t with_reference = 0;
+  std::map<std::string, std::size_t> groups;
+  for (const auto& r : results) {
+    ++count[r.status];
+    if (!r.deck.reference.empty()) ++with_reference;
+    if (!r.refusal.message.empty() &&
+        (r.status == RegressStatus::ReadError || r.status == RegressStatus::RunError))
+      ++groups[std::string(status_name(r.status)) + "  " + refusal_group(r.refusal.message)];
+  }
+  const std::size_t read = results.size() - count[RegressStatus::ReadError];
+  const std::size_t ran = read - count[RegressStatus::RunError];
+  os << "\ndecks found " << results.size() << ", read " << read << ", ran " << ran << ", compared within "
+     << tolerance_text(tolerance) << " % " << count[RegressStatus::Compared] << " of " << with_reference
+     << " with a ref.extract\n"
+     << "  read-error " << count[RegressStatus::ReadError] << ", run-error " << count[RegressStatus::RunError]
+     << ", ref-error " << count[RegressStatus::RefError] << ", ran (no reference) "
+     << count[RegressStatus::Ran] << ", compared " << count[RegressStatus::Compared] << ", deviates "
+     << count[RegressStatus::Deviates] << '\n';
+  if (!groups.empty()) {
+    std::vector<std::pair<std::string, std::size_t>> sorted(groups.begin(), groups.end());
+    std::stable_sort(sorted.begin(), sorted.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+    os << "\nmost frequent first refusals:\n";
+    for (std::size_t k = 0; k < std::min(sorted.size(), kMostFrequentShown); ++k) {
+      char n[16];
+      std::snprintf(n, sizeof n, "%5zu", sorted[k].second);
+      os << n << "  " << sorted[k].first << '\n';
+    }
+  }
+}
+
+std::string regress_summary_json(const std::vector<RegressResult>& results, const RegressSettings& settings,
+                                 bool work_dir_kept) {
+  using io::json_number;
+  using io::json_string;
+  std::map<RegressStatus, std::size_t> count;
+  std::size_t with_reference = 0;
+  for (const auto& r : results) {
+    ++count[r.status];
+    if (!r.deck.reference.empty()) ++with_reference;
+  }
+  const std::size_t read = results.size() - count[RegressStatus::ReadError];
+  std::string j = "{\n";
+  j += "  \"tolerance_percent\": " + json_number(100 * settings.tolerance) + ",\n";
+  j += "  \"timeout_seconds\": " + json_number(settings.timeout_seconds) + ",\n";
+  j += "  \"threads\": " + std::to_string(settings.threads) + ",\n";
+  j += "  \"work_dir\": " + json_string(settings.work_dir.string()) + ",\n";
+  j += "  \"work_dir_kept\": " + std::string(work_dir_kept ? "true" : "false") + ",\n";
+  j += "  \"totals\": {\"found\": " + std::to_string(results.size()) + ", \"read\": " + std::to_string(read) +
+       ", \"ran\": " + std::to_string(read - count[RegressStatus::RunError]) +
+       ", \"with_reference\": " + std::to_string(with_reference) +
+       ", \"compared\": " + std::to_string(count[RegressStatus::Compared]);
+  for (const auto s : {RegressStatus::ReadError, RegressStatus::RunError, RegressStatus::RefError,
+                       RegressStatus::Ran, RegressStatus::Deviates}) {
+    std::string key(status_name(s));
+    std::replace(key.begin(), key.end(), '-', '_');
+    if (s == RegressStatus::Ran) key = "ran_without_reference";
+    j += ", \"" + key + "\": " + std::to_string(count[s]);
+  }
+  j += "},\n  \"decks\": [";
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const RegressResult& r = results[k];
+    j += k ? ",\n    {" : "\n    {";
+    j += "\"deck\": " + json_string(r.deck.label);
+    j += ", \"status\": " + json_string(status_name(r.status));
+    j += ", \"starter_deck\": " + json_string(r.deck.starter_deck.string());
+    j += ", \"reference\": " + (r.deck.reference.empty() ? "null" : json_string(r.deck.reference.string()));
+    j += ", \"work_dir\": " + json_string((settings.work_dir / r.deck.work_subdir).string());
+    j += ", \"seconds\": " + json_number(r.seconds);
+    j += ", \"first_refusal\": " + (r.refusal.message.empty()
+                                        ? "null"
+                                        : "{\"location\": " + json_string(r.refusal.location) +
+                                              ", \"message\": " + json_string(r.refusal.message) + "}");
+    j += ", \"detail\": " + json_string(r.detail);
+    j += ", \"note\": " + json_string(r.deck.note);
+    if (r.radx) {
+      j += ",\n     \"radx\": {\"cycles\": " + std::to_string(r.radx->cycles) +
+           ", \"TIME\": " + json_number(r.radx->time);
+      for (const auto e : io::kExtractEnergies)
+        j += ", \"" + std::string(io::extract_key(e)) +
+             "\": " + json_number(r.radx->energy[static_cast<std::size_t>(e)]);
+      j += "}";
+    } else {
+      j += ", \"radx\": null";
+    }
+    if (r.reference) {
+      j += ",\n     \"ref\": {\"cycles\": " + std::to_string(r.reference->cycles) +
+           ", \"TIME\": " + json_number(r.reference->time);
+      for (const auto e : io::kExtractEnergies) {
+        const auto& v = (*r.reference)[e];
+        j += ", \"" + std::string(io::extract_key(e)) + "\": {\"value\": " + json_number(v.value) +
+             ", \"magnitude\": " + json_number(v.magnitude) + "}";
+      }
+      j += "}";
+    } else {
+      j += ", \"ref\": null";
+    }
+    if (r.comparison) {
+      const auto& c = *r.comparison;
+      j += ",\n     \"cycle_ratio\": " + json_number(c.cycle_ratio) +
+           ", \"deviation_percent\": {\"TIME\": " + json_number(100 * c.time);
+      for (const auto e : io::kExtractEnergies)
+        j += ", \"" + std::string(io::extract_key(e)) +
+             "\": " + json_number(100 * c.energy[static_cast<std::size_t>(e)]);
+      j += "}";
+    } else {
+      j += ", \"cycle_ratio\": null, \"deviation_percent\": null";
+    }
+    j += "}";
+  }
+  j += results.empty() ? "]\n}\n" : "\n  ]\n}\n";
+  return j;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// The command.
+
+namespace {
+
+bool positive_number(const std::string& s, double& v) {
+  try {
+    std::size_t used = 0;
+    v = std::stod(s, &used);
+    return used == s.size() && std::isfinite(v) && v > 0;
+  } catch (...) {
+    return false;
+  }
+}
+
+}  // namespace
+
+int regress_command(const std::vector<std::string>& args, const fs::path& executable, std::ostream& out,
+                    std::ostream& err) {
+  RegressSettings settings;
+  settings.executable = executable;
+  std::vector<fs::path> dirs;
+  std::string work, summary_file;
+  bool keep = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    const bool takes_value =
+        a == "--tol" || a == "--work" || a == "--timeout" || a == "--threads" || a == "--summary";
+    if (takes_value && i + 1 >= args.size()) {
+      err << "radx regress: " << a << " needs a value\n";
+      return kExitUsage;
+    }
+    double v = 0;
+    if (a == "--tol") {
+      if (!positive_number(args[++i], v)) {
+        err << "radx regress: --tol needs a positive percentage\n";
+        return kExitUsage;
+      }
+      settings.tolerance = v / 100;
+    } else if (a == "--timeout") {
+      if (!positive_number(args[++i], v)) {
+        err << "radx regress: --timeout needs a positive number of seconds\n";
+        return kExitUsage;
+      }
+      settings.timeout_seconds = v;
+    } else if (a == "--threads") {
+      if (!positive_number(args[++i], v) || v != std::floor(v) || v > 1024) {
+        err << "radx regress: --threads needs a positive integer\n";
+        return kExitUsage;
+      }
+      settings.threads = static_cast<int>(v);
+    } else if (a == "--work") {
+      work = args[++i];
+    } else if (a == "--summary") {
+      summary_file = args[++i];
+    } else if (a == "--keep") {
+      keep = true;
+    } else if (!a.empty() && a[0] == '-') {
+      err << "radx regress: unknown option " << a << '\n';
+      return kExitUsage;
+    } else {
+      dirs.emplace_back(a);
+    }
+  }
+  if (dirs.empty()) {
+    err << "radx regress: give one or more folders to search for decks (radx regress DIR...)\n";
+    return kExitUsage;
+  }
+  std::error_code ec;
+  for (const auto& d : dirs)
+    if (!fs::is_directory(d, ec)) {
+      err << "radx regress: " << d.string() << ": no such folder\n";
+      return kExitUsage;
+    }
+
+  // The work folder: ours when we create it or it carries our marker; anything else that is not empty is
+  // refused, since each deck's folder in it is cleared before its run.
+  if (work.empty()) {
+    std::string tmpl = (fs::temp_directory_path(ec) / "radx-regress-XXXXXX").string();
+    if (!mkdtemp(tmpl.data())) {
+      err << "radx regress: cannot create a work folder " << tmpl << ": " << std::strerror(errno) << '\n';
+      return kExitInputError;
+    }
+    settings.work_dir = tmpl;
+  } else {
+    settings.work_dir = fs::absolute(work, ec);
+    if (fs::exists(settings.work_dir, ec) &&
+        (!fs::is_directory(settings.work_dir, ec) ||
+         (!fs::is_empty(settings.work_dir, ec) && !fs::exists(settings.work_dir / kWorkMarker, ec)))) {
+      err << "radx regress: --work " << work
+          << ": exists and is not a radx regress work folder; give a new or empty folder\n";
+      return kExitUsage;
+    }
+    keep = true;  // a folder the user named is theirs to remove
+  }
+  fs::create_directories(settings.work_dir, ec);
+  std::ofstream(settings.work_dir / kWorkMarker) << "radx regress work folder: deck folders in it are "
+                                                    "cleared and rewritten by each run\n";
+  if (!fs::is_directory(settings.work_dir, ec)) {
+    err << "radx regress: cannot create the work folder " << settings.work_dir.string() << '\n';
+    return kExitInputError;
+  }
+
+  const std::vector<RegressDeck> decks = find_regress_decks(dirs, settings.work_dir);
+  if (decks.empty()) {
+    err << "radx regress: no deck (NAME_0000.rad or a one-file deck) under the folders given\n";
+    if (!keep) fs::remove_all(settings.work_dir, ec);
+    return kExitInputError;
+  }
+  out << "radx regress: " << decks.size() << " deck(s), time limit " << settings.timeout_seconds
+      << " s each, " << settings.threads << " thread(s), tolerance " << tolerance_text(settings.tolerance)
+      << " %, work folder " << settings.work_dir.string() << "\n\n";
+  std::vector<RegressResult> results;
+  const int digits = static_cast<int>(std::to_string(decks.size()).size());
+  for (std::size_t k = 0; k < decks.size(); ++k) {
+    results.push_back(run_regress_deck(decks[k], settings));
+    char counter[48];
+    std::snprintf(counter, sizeof counter, "[%*zu/%zu] ", digits, k + 1, decks.size());
+    out << counter << format_regress_line(results.back()) << std::endl;
+  }
+  out << '\n';
+  write_regress_table(out, results, settings.tolerance);
+
+  int code = kExitOk;
+  for (const auto& r : results)
+    if (is_failure(r.status)) code = kExitInputError;
+  if (!keep) fs::remove_all(settings.work_dir, ec);
+  out << "\nwork folder " << settings.work_dir.string()
+      << (keep ? " (outputs and each deck's run.log)" : " removed (--keep keeps it)") << '\n';
+  if (!summary_file.empty()) {
+    std::ofstream f(summary_file, std::ios::trunc);
+    f << regress_summary_json(results, settings, keep);
+    f.close();
+    if (!f) {
+      err << "radx regress: cannot write " << summary_file << '\n';
+      return kExitInputError;
+    }
+    out << "summary " << summary_file << '\n';
+  }
+  return code;
+}
+
+}  // namespace radx::app
