@@ -249,7 +249,7 @@ RADX_SCHEMA(ImposedVelocity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(funct
             RADX_FIELD(ascale_x), RADX_FIELD(fscale_y), RADX_FIELD(t_start), RADX_FIELD(t_stop),
             RADX_FIELD(displacement));
 RADX_SCHEMA(InitialVelocity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(v), RADX_FIELD(group),
-            RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(t_start));
+            RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(t_start), RADX_FIELD(rotational));
 RADX_SCHEMA(ConcentratedLoad, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(function), RADX_FIELD(dir),
             RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(group), RADX_FIELD(itypfun),
             RADX_FIELD(ascale_x), RADX_FIELD(fscale_y));

@@ -227,17 +227,23 @@ void build_imposed_velocities(ModelBuilder& b) {
   }
 }
 
+// /INIVEL/TRA (and /INIVEL/T+G, its alias) and /INIVEL/ROT: one model object each.
 void build_initial_velocities(ModelBuilder& b) {
-  IdIndex ids;
-  build_each(b, "/INIVEL/TRA", "initial velocity", b.m_.initial_velocities, ids, [&](const KeywordRecord& r) {
-    model::InitialVelocity v;
-    v.v = reals3(r, "Vx", "Vy", "Vz");
-    v.group = group_ref(b, r, "grnod_ID", false);
-    v.skew = skew_ref(b, r);
-    v.sensor = sensor_ref(b, r);
-    v.t_start = r.get_real("Tstart");
-    return v;
-  });
+  for (const bool rotational : {false, true}) {
+    IdIndex ids;
+    build_each(b, rotational ? "/INIVEL/ROT" : "/INIVEL/TRA",
+               rotational ? "initial angular velocity" : "initial velocity", b.m_.initial_velocities, ids,
+               [&](const KeywordRecord& r) {
+                 model::InitialVelocity v;
+                 v.rotational = rotational;
+                 v.v = reals3(r, "Vx", "Vy", "Vz");
+                 v.group = group_ref(b, r, "grnod_ID", false);
+                 v.skew = skew_ref(b, r);
+                 v.sensor = sensor_ref(b, r);
+                 v.t_start = r.get_real("Tstart");
+                 return v;
+               });
+  }
 }
 
 void build_concentrated_loads(ModelBuilder& b) {

@@ -618,10 +618,29 @@ void add_loads(std::vector<KeywordDecl>& t) {
   {
     KeywordDecl k = kw("/INIVEL/TRA", "initial translational velocity of a node group", Header::IdUnit, true,
                        "inivel_ID");
+    // /INIVEL/T+G sets the velocity of the structure and of the ALE grid: radx has no ALE grid, so it is the
+    // translation of the nodes, as /INIVEL/TRA.
+    k.aliases = {"/INIVEL/T+G"};
     k.cards = {
         card("card 1", {R("Vx", 1, 20, "initial X velocity").dims(dim::velocity),
                         R("Vy", 21, 40, "initial Y velocity").dims(dim::velocity),
                         R("Vz", 41, 60, "initial Z velocity").dims(dim::velocity),
+                        I("grnod_ID", 61, 70, "nodes concerned"),
+                        I("skew_ID", 71, 80, "skew of the velocity components; 0 = global axes")}),
+        card_v("card 2", 2025, kLastVersion,
+               {R("Tstart", 1, 20, "time the velocity is imposed; 0 = at the start").dims(dim::time),
+                I("sensor_ID", 21, 30, "sensor that triggers the velocity; 0 = none")}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/INIVEL/ROT",
+                       "initial angular velocity of a node group (the nodes' rotational degrees of freedom)",
+                       Header::IdUnit, true, "inivel_ID");
+    k.cards = {
+        card("card 1", {R("Vx", 1, 20, "initial angular velocity about X").dims(dim::rate),
+                        R("Vy", 21, 40, "initial angular velocity about Y").dims(dim::rate),
+                        R("Vz", 41, 60, "initial angular velocity about Z").dims(dim::rate),
                         I("grnod_ID", 61, 70, "nodes concerned"),
                         I("skew_ID", 71, 80, "skew of the velocity components; 0 = global axes")}),
         card_v("card 2", 2025, kLastVersion,
@@ -959,10 +978,10 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/FRICTION", "/DEFAULT", "/INTTHICK",
         // constraints, kinematics, loads, initial state
         "/SKEW", "/FRAME", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT", "/MPC", "/GJOINT",
-        "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPDISP/FGEO", "/IMPACC", "/IMPTEMP", "/INIVEL/ROT", "/INIVEL/T+G",
-        "/INIVEL/GRID", "/INIVEL/AXIS", "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD",
-        "/RWALL/CYL", "/RWALL/SPHER", "/RWALL/PARAL", "/RWALL/LAGMUL", "/RWALL/THERM", "/INISHE", "/INIBRI",
-        "/INISH3", "/INITEMP", "/INISTA",
+        "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPDISP/FGEO", "/IMPACC", "/IMPTEMP", "/INIVEL/GRID", "/INIVEL/AXIS",
+        "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD", "/RWALL/CYL", "/RWALL/SPHER",
+        "/RWALL/PARAL", "/RWALL/LAGMUL", "/RWALL/THERM", "/INISHE", "/INIBRI", "/INISH3", "/INITEMP",
+        "/INISTA",
         // physics and model structure
         "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
         "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS", "/DAMP", "/IMPLICIT", "/TABLE", "/MOVE_FUNCT",

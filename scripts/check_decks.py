@@ -267,6 +267,8 @@ STARTER = {
     "/IMPVEL": ("id", True, impvel, None, None),
     "/IMPDISP": ("id", True, impvel, None, None),
     "/INIVEL/TRA": ("id", True, inivel, None, None),
+    "/INIVEL/T+G": ("id", True, inivel, None, None),
+    "/INIVEL/ROT": ("id", True, inivel, None, None),
     "/GRAV": ("id", True, grav, None, None),
     "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
     "/RBODY": ("id", True, rbody, None, None),
@@ -806,7 +808,7 @@ def semantic(ck, m):
 
     for o in m.of("/BCS"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
-    for o in m.of("/INIVEL/TRA"):
+    for o in m.of("/INIVEL/TRA", "/INIVEL/T+G", "/INIVEL/ROT"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
     for o in m.of("/IMPVEL", "/IMPDISP"):
         need(o, "funct_IDT", functs, "function", zero_ok=False)

@@ -147,7 +147,9 @@ InitialVelocities::InitialVelocities(const model::Model& m) {
     Entry e;
     e.v = iv.v;
     e.t_start = iv.t_start;
-    e.nodes = group_of(m, iv.group, "/INIVEL/TRA/" + std::to_string(iv.id));
+    e.rotational = iv.rotational;
+    e.nodes =
+        group_of(m, iv.group, (iv.rotational ? "/INIVEL/ROT/" : "/INIVEL/TRA/") + std::to_string(iv.id));
     entries_.push_back(std::move(e));
   }
   remaining_ = entries_.size();
@@ -160,14 +162,18 @@ double InitialVelocities::apply(NodeState& s, double t) {
     if (e.applied || t < e.t_start) continue;
     e.applied = true;
     --remaining_;
+    auto& vx = e.rotational ? s.wx : s.vx;
+    auto& vy = e.rotational ? s.wy : s.vy;
+    auto& vz = e.rotational ? s.wz : s.vz;
+    const auto& m = e.rotational ? s.inertia : s.mass;
     for (const auto n32 : e.nodes) {
       const auto n = static_cast<std::size_t>(n32);
-      const double old2 = s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n];
-      s.vx[n] = e.v[0];
-      s.vy[n] = e.v[1];
-      s.vz[n] = e.v[2];
-      const double new2 = s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n];
-      dke += 0.5 * s.mass[n] * (new2 - old2);
+      const double old2 = vx[n] * vx[n] + vy[n] * vy[n] + vz[n] * vz[n];
+      vx[n] = e.v[0];
+      vy[n] = e.v[1];
+      vz[n] = e.v[2];
+      const double new2 = vx[n] * vx[n] + vy[n] * vy[n] + vz[n] * vz[n];
+      dke += 0.5 * m[n] * (new2 - old2);
     }
   }
   return dke;

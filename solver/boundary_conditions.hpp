@@ -19,6 +19,8 @@
 //             from the initial position X0 at the end of the step (translations only):
 //                 v_imp = (u(t_n + dt2) - (x^n - X0)) / dt2,   so x^{n+1} = X0 + u(t_{n+1}) exactly;
 //             the reaction and work as /IMPVEL.
+//   /INIVEL/ROT  omega = (Vx, Vy, Vz) on the group's nodes (their rotational dofs; a rigid body takes its
+//             main node's), as /INIVEL/TRA otherwise.
 //   /INIVEL/TRA  v = (Vx, Vy, Vz) on the group's nodes, at t = 0 (Tstart = 0) or at the first cycle
 //             with t_n >= Tstart.
 // Skews, sensors and frames are 0 in a valid model (the starter rejects them). No allocation in the
@@ -97,6 +99,7 @@ class InitialVelocities {
   struct Entry {
     std::array<double, 3> v{};
     double t_start = 0;
+    bool rotational = false;  // /INIVEL/ROT: sets the angular velocity
     bool applied = false;
     std::vector<std::int32_t> nodes;
   };

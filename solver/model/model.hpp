@@ -162,6 +162,7 @@ struct InitialVelocity {
   std::int32_t group = kNone;
   std::int64_t skew = 0, sensor = 0;
   double t_start = 0;
+  bool rotational = false;  // /INIVEL/ROT: v is the angular velocity of the nodes' rotational dofs
 };
 
 struct ConcentratedLoad {
