@@ -228,6 +228,24 @@ void build_imposed_velocities(ModelBuilder& b) {
 }
 
 // /INIVEL/TRA (and /INIVEL/T+G, its alias) and /INIVEL/ROT: one model object each.
+// /ADMAS/0 and /ADMAS/1: the masses join the nodes in compute_lumped_masses; a node with added mass and no
+// element is a point mass of the run, not an unused node.
+void build_added_masses(ModelBuilder& b) {
+  for (const int type : {0, 1}) {
+    IdIndex ids;
+    const std::string path = "/ADMAS/" + std::to_string(type);
+    build_each(b, path, "added mass", b.m_.added_masses, ids, [&](const KeywordRecord& r) {
+      model::AddedMass a;
+      a.type = type;
+      a.mass = r.get_real("MASS");
+      a.group = group_ref(b, r, "grnod_ID", false);
+      if (a.group != kNone)
+        for (const auto n : nodes_of(b, a.group)) b.node_used_[static_cast<std::size_t>(n)] = 1;
+      return a;
+    });
+  }
+}
+
 void build_initial_velocities(ModelBuilder& b) {
   for (const bool rotational : {false, true}) {
     IdIndex ids;
@@ -568,6 +586,7 @@ std::vector<std::int32_t> th_objects(ModelBuilder& b, const KeywordRecord& r, co
 }  // namespace
 
 void ModelBuilder::build_loads() {
+  build_added_masses(*this);
   build_bcs(*this);
   build_imposed_velocities(*this);
   build_initial_velocities(*this);

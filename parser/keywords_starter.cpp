@@ -8,6 +8,8 @@
 // * zero_is() only for constant defaults; defaults that depend on other fields or on /DEF_SHELL and
 //   /DEF_SOLID are resolved by the model builder from the raw value.
 // * unused(): read and echoed, but radx does not act on it; a non-default value warns.
+#include <tuple>
+
 #include "parser/keyword_schema.hpp"
 
 namespace radx::schema {
@@ -649,6 +651,16 @@ void add_loads(std::vector<KeywordDecl>& t) {
     };
     t.push_back(std::move(k));
   }
+  for (const auto& [path, meaning, mass_meaning] :
+       {std::tuple{"/ADMAS/0", "mass added to each node of a group (a point mass on each)",
+                   "mass added to each node"},
+        std::tuple{"/ADMAS/1", "mass added to a group, shared equally by its nodes",
+                   "total mass shared by the nodes"}}) {
+    KeywordDecl k = kw(path, meaning, Header::IdUnit, true, "admas_ID");
+    k.cards = {card("card 1", {R("MASS", 1, 20, mass_meaning).dims(dim::mass).ge(0.0),
+                               I("grnod_ID", 21, 30, "nodes concerned").must()})};
+    t.push_back(std::move(k));
+  }
   {
     KeywordDecl k = kw("/CLOAD", "concentrated force or moment on a node group, following a function",
                        Header::IdUnit, true, "cload_ID");
@@ -984,8 +996,9 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/INISTA",
         // physics and model structure
         "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
-        "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS", "/DAMP", "/IMPLICIT", "/TABLE", "/MOVE_FUNCT",
-        "/SECT", "/ACCEL", "/GAUGE", "/PRELOAD",
+        "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS/2", "/ADMAS/3", "/ADMAS/4", "/ADMAS/5", "/ADMAS/6",
+        "/ADMAS/7", "/ADMAS/10", "/DAMP", "/IMPLICIT", "/TABLE", "/MOVE_FUNCT", "/SECT", "/ACCEL", "/GAUGE",
+        "/PRELOAD",
         // time history that radx does not write
         "/TH/BRIC", "/TH/SH3N", "/TH/SPRING", "/TH/BEAM", "/TH/TRUSS", "/TH/RBODY", "/TH/SECTIO", "/TH/ACCEL",
         "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME", "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH",

@@ -189,6 +189,10 @@ def impvel(v):
             card(reals("Ascale_x", "Fscale_y", "Tstart", "Tstop"))]
 
 
+def admas(v):
+    return [card([F("MASS", "R", 1, 20), F("grnod_ID", "I", 21, 30)])]
+
+
 def inivel(v):
     cards = [card(reals("Vx", "Vy", "Vz") + [F("grnod_ID", "I", 61, 70), F("skew_ID", "I", 71, 80)])]
     if v >= 2025:
@@ -269,6 +273,8 @@ STARTER = {
     "/INIVEL/TRA": ("id", True, inivel, None, None),
     "/INIVEL/T+G": ("id", True, inivel, None, None),
     "/INIVEL/ROT": ("id", True, inivel, None, None),
+    "/ADMAS/0": ("id", True, admas, None, None),
+    "/ADMAS/1": ("id", True, admas, None, None),
     "/GRAV": ("id", True, grav, None, None),
     "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
     "/RBODY": ("id", True, rbody, None, None),
@@ -807,6 +813,8 @@ def semantic(ck, m):
             I("RX402", p[0], p[1], "%s %d: %s %d does not exist" % (o["path"], o["id"], what, x))
 
     for o in m.of("/BCS"):
+        need(o, "grnod_ID", grnods, "node group", zero_ok=False)
+    for o in m.of("/ADMAS/0", "/ADMAS/1"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
     for o in m.of("/INIVEL/TRA", "/INIVEL/T+G", "/INIVEL/ROT"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)

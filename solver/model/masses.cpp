@@ -70,6 +70,15 @@ void compute_lumped_masses(Model& m) {
   });
   m.total_mass = 0;
   for (const auto& p : m.parts) m.total_mass += p.mass;
+  // /ADMAS: on the nodes, in the total, in no part.
+  for (const auto& a : m.added_masses) {
+    if (a.group < 0 || static_cast<std::size_t>(a.group) >= m.node_groups.size()) continue;
+    const auto& nodes = m.node_groups[static_cast<std::size_t>(a.group)].nodes;
+    if (nodes.empty()) continue;
+    const double each = a.type == 1 ? a.mass / static_cast<double>(nodes.size()) : a.mass;
+    for (const auto n : nodes) m.node_mass[static_cast<std::size_t>(n)] += each;
+    m.total_mass += each * static_cast<double>(nodes.size());
+  }
 }
 
 }  // namespace radx::model

@@ -155,6 +155,15 @@ struct ImposedVelocity {
   bool displacement = false;
 };
 
+// /ADMAS/0 (Mass added to each node of the group) and /ADMAS/1 (Mass shared equally by its nodes).
+struct AddedMass {
+  std::int64_t id = 0;
+  std::string title;
+  int type = 0;  // 0 per node, 1 total shared by the nodes
+  double mass = 0;
+  std::int32_t group = kNone;
+};
+
 struct InitialVelocity {
   std::int64_t id = 0;
   std::string title;
@@ -299,6 +308,7 @@ struct Model {
   std::vector<Gravity> gravities;
   std::vector<RigidWall> rigid_walls;
   std::vector<RigidBody> rigid_bodies;
+  std::vector<AddedMass> added_masses;
   std::vector<TimeHistoryGroup> time_histories;
   std::vector<Interface> interfaces;
   std::vector<std::string> ignored_keywords;  // control cards accepted as ignored, as written
