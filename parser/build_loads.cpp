@@ -91,8 +91,23 @@ std::int64_t unreadable_ref(ModelBuilder& b, const KeywordRecord& r, std::string
     b.error_at(r, field, Diag::MissingReference, unreadable_ref_text(field, id, target, zero_means));
   return id;
 }
+// A /SKEW/FIX of the deck (its user id, 0 for the global axes).
 std::int64_t skew_ref(ModelBuilder& b, const KeywordRecord& r) {
-  return unreadable_ref(b, r, "skew_ID", "/SKEW", "global axes");
+  const std::int64_t id = r.get_int("skew_ID");
+  if (id != 0 && b.skew_ids_.find(id) == b.skew_ids_.end())
+    b.error_at(r, "skew_ID", Diag::MissingReference,
+               "skew_ID = " + std::to_string(id) + ": there is no /SKEW/FIX/" + std::to_string(id) +
+                   " in the deck (radx reads /SKEW/FIX; /SKEW/MOV is not supported); 0 = global axes");
+  return id;
+}
+// Where radx has no use for a skew yet (the rigid-body inertia frame): only 0 is accepted.
+std::int64_t unsupported_skew_ref(ModelBuilder& b, const KeywordRecord& r, std::string_view what) {
+  const std::int64_t id = r.get_int("skew_ID");
+  if (id != 0)
+    b.error_at(r, "skew_ID", Diag::UnimplementedOption,
+               "skew_ID = " + std::to_string(id) + ": " + std::string(what) +
+                   " in a skew frame is not supported; leave it 0 (global axes)");
+  return id;
 }
 std::int64_t sensor_ref(ModelBuilder& b, const KeywordRecord& r, std::string_view field = "sensor_ID") {
   return unreadable_ref(b, r, field, "/SENSOR", "active from the start");
@@ -419,7 +434,7 @@ model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
     if (rb.main_node != kNone) b.node_used_[rb.main_node] = 1;
   }
   rb.sensor = sensor_ref(b, r, "sens_ID");
-  rb.skew = skew_ref(b, r);
+  rb.skew = unsupported_skew_ref(b, r, "added inertia");
   rb.ispher = int_or(r, "Ispher", 2);
   rb.mass = mass_field(b, r, "added to the main node");
   rb.group = group_ref(b, r, "grnd_ID", false);

@@ -662,6 +662,20 @@ void add_loads(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    KeywordDecl k = kw("/SKEW/FIX", "fixed frame: origin, Y' and Z' directions (x' = Y' x Z', y' = z' x x')",
+                       Header::IdUnit, true, "skew_ID");
+    k.cards = {card("card 1", {R("Ox", 1, 20, "origin X").dims(dim::length),
+                               R("Oy", 21, 40, "origin Y").dims(dim::length),
+                               R("Oz", 41, 60, "origin Z").dims(dim::length)}),
+               card("card 2", {R("X1", 1, 20, "Y' direction, X component"),
+                               R("Y1", 21, 40, "Y' direction, Y component"),
+                               R("Z1", 41, 60, "Y' direction, Z component")}),
+               card("card 3", {R("X2", 1, 20, "Z' direction, X component"),
+                               R("Y2", 21, 40, "Z' direction, Y component"),
+                               R("Z2", 41, 60, "Z' direction, Z component")})};
+    t.push_back(std::move(k));
+  }
+  {
     KeywordDecl k = kw("/CLOAD", "concentrated force or moment on a node group, following a function",
                        Header::IdUnit, true, "cload_ID");
     k.cards = {
@@ -989,11 +1003,11 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/INTER/TYPE20", "/INTER/TYPE21", "/INTER/TYPE23", "/INTER/TYPE24", "/INTER/TYPE25", "/INTER/SUB",
         "/FRICTION", "/DEFAULT", "/INTTHICK",
         // constraints, kinematics, loads, initial state
-        "/SKEW", "/FRAME", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT", "/MPC", "/GJOINT",
-        "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPDISP/FGEO", "/IMPACC", "/IMPTEMP", "/INIVEL/GRID", "/INIVEL/AXIS",
-        "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD", "/RWALL/CYL", "/RWALL/SPHER",
-        "/RWALL/PARAL", "/RWALL/LAGMUL", "/RWALL/THERM", "/INISHE", "/INIBRI", "/INISH3", "/INITEMP",
-        "/INISTA",
+        "/SKEW/MOV", "/SKEW/MOV2", "/FRAME", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT", "/MPC",
+        "/GJOINT", "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPDISP/FGEO", "/IMPACC", "/IMPTEMP", "/INIVEL/GRID",
+        "/INIVEL/AXIS", "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD", "/RWALL/CYL",
+        "/RWALL/SPHER", "/RWALL/PARAL", "/RWALL/LAGMUL", "/RWALL/THERM", "/INISHE", "/INIBRI", "/INISH3",
+        "/INITEMP", "/INISTA",
         // physics and model structure
         "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
         "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS/2", "/ADMAS/3", "/ADMAS/4", "/ADMAS/5", "/ADMAS/6",

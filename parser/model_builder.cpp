@@ -576,6 +576,7 @@ model::Model ModelBuilder::build() {
   build_functions();
   build_surfaces();  // before the groups: /GRNOD/SURF takes the nodes of surfaces
   build_groups();
+  build_skews();
   build_loads();
   build_rigid_walls();
   build_rigid_bodies();

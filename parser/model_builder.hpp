@@ -50,6 +50,7 @@ class ModelBuilder {
   void build_boxes();
   void build_functions();
   void build_groups();
+  void build_skews();  // build_skews.cpp
   void build_surfaces();
   void build_loads();
   void build_rigid_walls();
@@ -70,7 +71,7 @@ class ModelBuilder {
   model::Model m_;
 
   IdIndex mat_ids_, prop_ids_, part_ids_, subset_ids_, box_ids_, funct_ids_, grnod_ids_, surf_ids_,
-      inter_ids_, rwall_ids_, rbody_ids_;
+      inter_ids_, rwall_ids_, rbody_ids_, skew_ids_;
   std::vector<const KeywordRecord*> grnod_records_;
   std::vector<std::uint8_t> grnod_state_;  // 0 not built, 1 building, 2 built
   std::vector<std::uint8_t> node_used_;    // by an element or as a rigid-body / wall node

@@ -189,6 +189,10 @@ def impvel(v):
             card(reals("Ascale_x", "Fscale_y", "Tstart", "Tstop"))]
 
 
+def skew_fix(v):
+    return [card(reals("Ox", "Oy", "Oz")), card(reals("X1", "Y1", "Z1")), card(reals("X2", "Y2", "Z2"))]
+
+
 def admas(v):
     return [card([F("MASS", "R", 1, 20), F("grnod_ID", "I", 21, 30)])]
 
@@ -276,6 +280,7 @@ STARTER = {
     "/ADMAS/0": ("id", True, admas, None, None),
     "/ADMAS/1": ("id", True, admas, None, None),
     "/GRAV": ("id", True, grav, None, None),
+    "/SKEW/FIX": ("id", True, skew_fix, None, None),
     "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
     "/RBODY": ("id", True, rbody, None, None),
     "/FUNCT": ("id", True, lambda v: [], "records", FUNCT_REC),
@@ -828,6 +833,23 @@ def semantic(ck, m):
     for o in m.of("/GRAV"):
         need(o, "funct_IDT", functs, "function")
         need(o, "grnod_ID", grnods, "node group")
+    # skews: a frame needs two independent directions; the loads and conditions may name one
+    skews = by_id(("/SKEW/FIX",), "skew")
+    for o in skews.values():
+        y = [val(o, k, 0.0) for k in ("X1", "Y1", "Z1")]
+        z = [val(o, k, 0.0) for k in ("X2", "Y2", "Z2")]
+        if y[0] == 0 and y[2] == 0:
+            y[1] = -1.0 if y[1] < 0 else 1.0
+        if z[0] == 0 and z[1] == 0:
+            z[2] = -1.0 if z[2] < 0 else 1.0
+        if norm(cross(y, z)) <= 1e-12 * norm(y) * norm(z):
+            p = pos(o, "X2")
+            I("RX507", p[0], p[1], "/SKEW/FIX %d: Y' and Z' are parallel" % o["id"])
+    for o in m.of("/BCS", "/IMPVEL", "/IMPDISP", "/INIVEL/TRA", "/INIVEL/T+G", "/INIVEL/ROT", "/CLOAD", "/GRAV"):
+        sk = val(o, "skew_ID", 0)
+        if sk and sk not in skews:
+            p = pos(o, "skew_ID")
+            I("RX402", p[0], p[1], "%s %d: skew %d does not exist" % (o["path"], o["id"], sk))
     for o in m.of("/RWALL/PLANE"):
         need(o, "grnd_ID1", grnods, "node group")
         need(o, "grnd_ID2", grnods, "node group")

@@ -693,6 +693,24 @@ def _():
         "the physics", [("RX510", "PSO_C2")]
 
 
+@fault("bcs_missing_skew")
+def _():
+    d = base()
+    d.set("BCS_C1", line(bcs_code("111", "111"), I(5), I(1)))
+    return d, "/BCS/1 names skew 5, and the deck has no /SKEW/FIX/5", [("RX402", "BCS_C1")]
+
+
+@fault("skew_parallel_axes")
+def _():
+    d = base()
+    d.insert_before("BCS_KW", [("/SKEW/FIX/5", "SKW_KW"), "Degenerate frame",
+                               names(("Ox", 20), ("Oy", 20), ("Oz", 20)), line(R(0.0), R(0.0), R(0.0)),
+                               names(("X1", 20), ("Y1", 20), ("Z1", 20)), line(R(0.0), R(0.0), R(2.0)),
+                               names(("X2", 20), ("Y2", 20), ("Z2", 20)), (line(R(0.0), R(0.0), R(1.0)), "SKW_C3")])
+    d.set("BCS_C1", line(bcs_code("111", "111"), I(5), I(1)))
+    return d, "/SKEW/FIX/5 with Y' = (0, 0, 2) parallel to Z' = (0, 0, 1): no frame", [("RX507", "SKW_C3")]
+
+
 @fault("several_errors")
 def _():
     d = base()

@@ -29,6 +29,19 @@ BoundaryConditions::BoundaryConditions(const model::Model& m) {
     for (std::size_t k = 0; k < 6; ++k)
       if (c.fixed[k]) b = static_cast<std::uint8_t>(b | (1u << k));
     if (b == 0) continue;
+    if (c.skew != 0) {
+      Skewed sk;
+      sk.mask = b;
+      for (int k = 0; k < 3; ++k) {
+        const auto e = m.skew_axis(c.skew, k);
+        for (std::size_t d = 0; d < 3; ++d) sk.axes[3 * static_cast<std::size_t>(k) + d] = e[d];
+      }
+      for (const auto n : group_of(m, c.group, "/BCS/" + std::to_string(c.id))) {
+        sk.node = n;
+        skewed_.push_back(sk);
+      }
+      continue;
+    }
     for (const auto n : group_of(m, c.group, "/BCS/" + std::to_string(c.id)))
       bits[static_cast<std::size_t>(n)] = static_cast<std::uint8_t>(bits[static_cast<std::size_t>(n)] | b);
   }
@@ -58,6 +71,27 @@ void BoundaryConditions::apply(NodeState& s) const {
     if (b & 16u) s.wy[n] = s.awy[n] = 0;
     if (b & 32u) s.wz[n] = s.awz[n] = 0;
   }
+  // Skewed: remove the components along the fixed axes, v -= (v.e) e and a -= (a.e) e.
+  for (const auto& k : skewed_) {
+    const auto n = static_cast<std::size_t>(k.node);
+    auto project_out = [&](double& x, double& y, double& z, const double* e) {
+      const double c = x * e[0] + y * e[1] + z * e[2];
+      x -= c * e[0];
+      y -= c * e[1];
+      z -= c * e[2];
+    };
+    for (int axis = 0; axis < 3; ++axis) {
+      const double* e = &k.axes[3 * static_cast<std::size_t>(axis)];
+      if (k.mask & (1u << axis)) {
+        project_out(s.vx[n], s.vy[n], s.vz[n], e);
+        project_out(s.ax[n], s.ay[n], s.az[n], e);
+      }
+      if (k.mask & (8u << axis)) {
+        project_out(s.wx[n], s.wy[n], s.wz[n], e);
+        project_out(s.awx[n], s.awy[n], s.awz[n], e);
+      }
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -76,6 +110,8 @@ ImposedVelocities::ImposedVelocities(const model::Model& m) {
     e.f = m.functions[static_cast<std::size_t>(iv.function)];
     e.dir = iv.dir;
     e.displacement = iv.displacement;
+    e.skewed = iv.skew != 0;
+    if (e.skewed) e.axis = m.skew_axis(iv.skew, iv.dir % 3);
     e.ascale = iv.ascale_x;
     e.fscale = iv.fscale_y;
     e.t_start = iv.t_start;
@@ -127,11 +163,32 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) 
       pend = 0;
       if (!active) continue;
       const auto n = static_cast<std::size_t>(e.nodes[k]);
-      const double v_imp = e.displacement ? (f_val - (x[n] - x0[n])) / dt2 : f_val;
-      const double a_free = a[n];
-      const double a_imp = (v_imp - v[n]) / dt12;
-      a[n] = a_imp;
-      const double dw = 0.25 * mass[n] * (a_imp * dt12 + 2.0 * v[n]) * (a_imp - a_free);
+      // Components along the imposed direction: a global axis, or a skew axis u (projections).
+      double v_along, a_free, disp;
+      if (!e.skewed) {
+        v_along = v[n];
+        a_free = a[n];
+        disp = x[n] - x0[n];
+      } else {
+        const auto& u = e.axis;
+        v_along = rot ? s.wx[n] * u[0] + s.wy[n] * u[1] + s.wz[n] * u[2]
+                      : s.vx[n] * u[0] + s.vy[n] * u[1] + s.vz[n] * u[2];
+        a_free = rot ? s.awx[n] * u[0] + s.awy[n] * u[1] + s.awz[n] * u[2]
+                     : s.ax[n] * u[0] + s.ay[n] * u[1] + s.az[n] * u[2];
+        disp = (s.x[n] - s.x0[n]) * u[0] + (s.y[n] - s.y0[n]) * u[1] + (s.z[n] - s.z0[n]) * u[2];
+      }
+      const double v_imp = e.displacement ? (f_val - disp) / dt2 : f_val;
+      const double a_imp = (v_imp - v_along) / dt12;
+      if (!e.skewed) {
+        a[n] = a_imp;
+      } else {
+        const double da = a_imp - a_free;
+        const auto& u = e.axis;
+        (rot ? s.awx : s.ax)[n] += da * u[0];
+        (rot ? s.awy : s.ay)[n] += da * u[1];
+        (rot ? s.awz : s.az)[n] += da * u[2];
+      }
+      const double dw = 0.25 * mass[n] * (a_imp * dt12 + 2.0 * v_along) * (a_imp - a_free);
       work += dt1 * dw;
       pend = dt2 * dw;
     }
@@ -146,6 +203,13 @@ InitialVelocities::InitialVelocities(const model::Model& m) {
   for (const auto& iv : m.initial_velocities) {
     Entry e;
     e.v = iv.v;
+    if (iv.skew != 0) {  // components along the skew axes: v = sum_k V_k e_k
+      e.v = {0, 0, 0};
+      for (int k = 0; k < 3; ++k) {
+        const auto u = m.skew_axis(iv.skew, k);
+        for (std::size_t d = 0; d < 3; ++d) e.v[d] += iv.v[static_cast<std::size_t>(k)] * u[d];
+      }
+    }
     e.t_start = iv.t_start;
     e.rotational = iv.rotational;
     e.nodes =

@@ -44,10 +44,21 @@ class BoundaryConditions {
   // Zero v and a of the fixed components (called twice per cycle, around the imposed velocities and
   // rigid walls).
   void apply(NodeState& s) const;
+  // Sets flags[n] = 1 for every node held in a skew frame (its fixed directions are not global bits).
+  void mark_skewed(std::vector<std::uint8_t>& flags) const {
+    for (const auto& k : skewed_) flags[static_cast<std::size_t>(k.node)] = 1;
+  }
 
  private:
   std::vector<std::int32_t> node_;  // nodes with at least one fixed dof, sorted
   std::vector<std::uint8_t> mask_;  // their OR-ed bits
+  // /BCS with a skew: the components of v and a along the fixed skew axes are zeroed.
+  struct Skewed {
+    std::int32_t node = 0;
+    std::uint8_t mask = 0;         // bit k: axis k (0..2 translation, 3..5 rotation) fixed
+    std::array<double, 9> axes{};  // x', y', z' (rows)
+  };
+  std::vector<Skewed> skewed_;
 };
 
 class ImposedVelocities {
@@ -62,7 +73,7 @@ class ImposedVelocities {
   // ORs into mask[n] the translation bits (1 x, 2 y, 4 z) of every imposed translational velocity.
   void mark_translations(std::vector<std::uint8_t>& mask) const {
     for (const auto& e : entries_)
-      if (e.dir < 3)
+      if (e.dir < 3 && !e.skewed)
         for (const auto n : e.nodes)
           mask[static_cast<std::size_t>(n)] |= static_cast<std::uint8_t>(1u << e.dir);
   }
@@ -77,6 +88,8 @@ class ImposedVelocities {
     model::Function f;
     int dir = 0;                // 0..2 translation, 3..5 rotation
     bool displacement = false;  // /IMPDISP: f gives the displacement from the initial position
+    bool skewed = false;        // the direction is axis dir % 3 of a skew: `axis` (global components)
+    std::array<double, 3> axis{};
     double ascale = 1, fscale = 1, t_start = 0, t_stop = model::kNever;
     std::vector<std::int32_t> nodes;
     std::size_t first = 0;  // offset of its nodes in pending_

@@ -50,6 +50,8 @@ ExternalLoads::ExternalLoads(const model::Model& m, std::span<const std::uint8_t
     out.g.fscale = g.fscale_y;
     out.dir = g.dir;
     if (g.dir < 0 || g.dir > 2) throw std::runtime_error(what + ": DIR must be X, Y or Z");
+    out.skewed = g.skew != 0;
+    if (out.skewed) out.axis = m.skew_axis(g.skew, g.dir);
     if (g.group == model::kNone) {
       for (std::size_t n = 0; n < nn; ++n)
         if (!skipped(static_cast<std::int32_t>(n))) out.nodes.push_back(static_cast<std::int32_t>(n));
@@ -72,6 +74,8 @@ ExternalLoads::ExternalLoads(const model::Model& m, std::span<const std::uint8_t
     out.f.ascale = c.ascale_x;
     out.f.fscale = c.fscale_y;
     out.dir = c.dir;
+    out.skewed = c.skew != 0;
+    if (out.skewed) out.axis = m.skew_axis(c.skew, c.dir % 3);
     out.nodes = group_of(m, c.group, what);
     cloads_.push_back(std::move(out));
   }
@@ -130,6 +134,21 @@ double ExternalLoads::apply(NodeState& s, double t, double dt1) {
   for (const auto& g : gravity_) {
     const double g_new = g.g.at(t);
     const double g_old = g.g.at(t - dt1);
+    if (g.skewed) {  // m g u on each node, work 1/2 (g_old + g_new) m (v.u) dt1
+      const auto& u = g.axis;
+      double mv = 0;
+      for (const auto n32 : g.nodes) {
+        const auto n = static_cast<std::size_t>(n32);
+        const double force = s.mass[n] * g_new;
+        for (std::size_t d = 0; d < 3; ++d) {
+          (*f[d])[n] += force * u[d];
+          (*fext[d])[n] += force * u[d];
+        }
+        mv += s.mass[n] * (s.vx[n] * u[0] + s.vy[n] * u[1] + s.vz[n] * u[2]);
+      }
+      work += 0.5 * (g_old + g_new) * mv * dt1;
+      continue;
+    }
     const auto d = static_cast<std::size_t>(g.dir);
     auto& fd = *f[d];
     auto& fe = *fext[d];
@@ -151,6 +170,25 @@ double ExternalLoads::apply(NodeState& s, double t, double dt1) {
     const double f_new = c.f.at(t);
     const double f_old = c.f.at(t - dt1);
     const bool moment = c.dir >= 3;
+    if (c.skewed) {  // F u on each node (a moment about u for XX YY ZZ), power 1/2 (F_old + F_new) (v.u)
+      const auto& u = c.axis;
+      double vsum = 0;
+      for (const auto n32 : c.nodes) {
+        const auto n = static_cast<std::size_t>(n32);
+        for (std::size_t d = 0; d < 3; ++d) {
+          if (moment) {
+            (*mom[d])[n] += f_new * u[d];
+          } else {
+            (*f[d])[n] += f_new * u[d];
+            (*fext[d])[n] += f_new * u[d];
+          }
+        }
+        vsum += moment ? s.wx[n] * u[0] + s.wy[n] * u[1] + s.wz[n] * u[2]
+                       : s.vx[n] * u[0] + s.vy[n] * u[1] + s.vz[n] * u[2];
+      }
+      cload_power_ += 0.5 * (f_old + f_new) * vsum;
+      continue;
+    }
     const auto d = static_cast<std::size_t>(moment ? c.dir - 3 : c.dir);
     const auto& vd = moment ? *w[d] : *v[d];
     double vsum = 0;

@@ -63,11 +63,15 @@ class ExternalLoads {
   struct Gravity {
     Curve g;
     int dir = 0;
+    bool skewed = false;  // along axis `dir` of a skew: `axis` (global components)
+    std::array<double, 3> axis{};
     std::vector<std::int32_t> nodes;
   };
   struct Concentrated {
     Curve f;
-    int dir = 0;  // 0..2 force, 3..5 moment
+    int dir = 0;          // 0..2 force, 3..5 moment
+    bool skewed = false;  // along axis dir % 3 of a skew: `axis` (global components)
+    std::array<double, 3> axis{};
     std::vector<std::int32_t> nodes;
   };
   struct Pressure {

@@ -103,6 +103,7 @@ std::vector<std::uint8_t> KinematicsDriver::held_nodes() const {
   std::vector<std::uint8_t> held(nodes_.n, 0);
   parts_->impvel.mark_nodes(held);
   parts_->walls.mark_nodes(held);
+  parts_->bcs.mark_skewed(held);
   for (const auto& b : parts_->bodies.bodies()) {
     if (b.main != model::kNone) held[static_cast<std::size_t>(b.main)] = 1;
     for (const auto n : b.secondary) held[static_cast<std::size_t>(n)] = 1;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,15 @@ struct Function {
   std::int64_t id = 0;
   std::string title;
   std::vector<double> x, y;
+};
+
+// /SKEW/FIX: a fixed frame. axes holds the unit vectors x', y', z' (rows, global components): z' is the
+// deck's Z' direction, x' = Y' x Z', y' = z' x x' (Radioss's order), each normalised.
+struct Skew {
+  std::int64_t id = 0;
+  std::string title;
+  std::array<double, 3> origin{};
+  std::array<double, 9> axes{1, 0, 0, 0, 1, 0, 0, 0, 1};
 };
 
 struct BoundaryCondition {
@@ -309,6 +319,7 @@ struct Model {
   std::vector<RigidWall> rigid_walls;
   std::vector<RigidBody> rigid_bodies;
   std::vector<AddedMass> added_masses;
+  std::vector<Skew> skews;
   std::vector<TimeHistoryGroup> time_histories;
   std::vector<Interface> interfaces;
   std::vector<std::string> ignored_keywords;  // control cards accepted as ignored, as written
@@ -320,6 +331,22 @@ struct Model {
   double total_mass = 0;
 
   [[nodiscard]] std::size_t element_count() const { return shells.size() + shells3.size() + bricks.size(); }
+
+  // Unit vector (global components) of axis k (0 x', 1 y', 2 z') of the skew with user id `skew`; skew 0 is
+  // the global frame. Throws std::out_of_range for an id the model lacks (the starter refuses those).
+  [[nodiscard]] std::array<double, 3> skew_axis(std::int64_t skew, int k) const {
+    std::array<double, 3> e{};
+    if (skew == 0) {
+      e[static_cast<std::size_t>(k)] = 1.0;
+      return e;
+    }
+    for (const auto& s : skews)
+      if (s.id == skew) {
+        for (std::size_t d = 0; d < 3; ++d) e[d] = s.axes[3 * static_cast<std::size_t>(k) + d];
+        return e;
+      }
+    throw std::out_of_range("no /SKEW/FIX/" + std::to_string(skew) + " in the model");
+  }
 };
 
 }  // namespace radx::model
