@@ -129,6 +129,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   h.length_unit = model.units.length_name;
   h.time_unit = model.units.time_name;
   h.controls = &controls;
+  for (const auto& d : diags.items()) h.deck_messages.push_back(Diagnostics::format(d));
   listing.header(h);
 
   const auto wall0 = std::chrono::steady_clock::now();

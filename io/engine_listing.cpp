@@ -199,6 +199,10 @@ void write_engine_header(std::ostream& os, const EngineListingHeader& h) {
       row(os, "rigid bodies switched off", join(off));
     }
   }
+  if (!h.deck_messages.empty()) {
+    heading(os, "ENGINE DECK MESSAGES");
+    for (const auto& m : h.deck_messages) os << "  " << m << '\n';
+  }
   os << '\n';
 }
 

@@ -66,6 +66,8 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::EngineMissingRun, "the engine deck has no /RUN"},
       {Diag::EngineBadLine, "an engine deck data line with too few or unreadable values"},
       {Diag::EngineRunNameMismatch, "the /RUN name or number differs from the file name"},
+      {Diag::EngineNoEnd,
+       "the engine deck has no /END line: it is read to the end of the file, as Radioss does"},
   };
   return table;
 }

@@ -74,6 +74,7 @@ enum class Diag : std::uint16_t {
   EngineMissingRun = 801,
   EngineBadLine = 802,
   EngineRunNameMismatch = 803,
+  EngineNoEnd = 804,
 };
 
 // "RX" + number, e.g. RX402. Never changes once released.

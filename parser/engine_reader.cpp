@@ -2,8 +2,8 @@
 // blanks or commas, one data line per declared line. Keyword fields are compared on their first five
 // non-blank characters, as the Radioss engine does (`/PARITH/ON` is `/PARIT/ON`), except `/ANIM`
 // keywords, which are compared at full length. Reading stops at the first `/END` line (so the engine
-// part of a one-file deck ends at `/END/ENGINE`). Unlike Radioss, an unknown engine keyword is an
-// error, never skipped.
+// part of a one-file deck ends at `/END/ENGINE`), or at the end of the file when there is none, as in
+// Radioss. Unlike Radioss, an unknown engine keyword is an error, never skipped.
 #include <algorithm>
 
 #include "parser/deck.hpp"
@@ -198,9 +198,11 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
     i = j;
   }
   if (!ended) {
+    // Radioss reads an engine deck to /END or to the end of the file, whichever comes first, and real
+    // engine decks often stop without /END: say so, as a note, at the last line read.
     const SourcePos p = lines.empty() ? SourcePos{0, 1} : lines.back().pos;
-    diags.error(Diag::MissingEnd, text.where(p, 1), About{"/END"},
-                "the engine deck has no /END line: the file looks truncated; an engine deck ends with /END");
+    diags.note(Diag::EngineNoEnd, text.where(p, 1), About{"/END"},
+               "the engine deck has no /END line: it was read to the end of the file, as Radioss reads it");
   }
   if (deck.of("/RUN").empty()) {
     diags.error(
