@@ -12,8 +12,9 @@
 // * /DT/INTER/CST -> AddMass, /DEL -> Delete, /LAG -> Lagrange; Tscale 0 -> 0.9. /DEL has precedence
 //   over the others (a warning says the others are ignored); /CST with /LAG is an error.
 // * /STOP Emax Mmax Nmax [NTH NANIM [NERR_POSIT]]: 0 -> 1e30; negatives are errors; flags 0 or 1.
-// * /ANIM/ELEM|VECT|TENS|NODA/name: the name must be in anim_field_names(); stored in its canonical
-//   spelling, each once, in deck order.
+// * /ANIM/ELEM|VECT|TENS|NODA/name: a name of anim_field_names() is stored in its canonical spelling, each
+//   once, in deck order; any other name, or further fields after the name, is an output radx does not
+//   write: a warning (RX311), and the run goes on.
 // * Every singleton keyword given twice is an error at the second one.
 #include "parser/build_run_controls.hpp"
 
@@ -57,9 +58,17 @@ class Builder {
     diags_.warning(code, deck_.where(r.pos, 1), About{r.decl->path}, std::move(msg));
   }
 
+  // The records of the keyword radx reads at `path`. A keyword it does not read may share the path (the
+  // refused /DT/... beside /DT): the reader reported it, and it is not built.
+  std::vector<const EngineRecord*> read_of(std::string_view path) const {
+    auto recs = deck_.of(path);
+    std::erase_if(recs, [](const EngineRecord* r) { return r->decl->support != schema::Support::Read; });
+    return recs;
+  }
+
   // The one record of a singleton keyword; a second one is an error that points at the first.
   const EngineRecord* single(std::string_view path) {
-    const auto recs = deck_.of(path);
+    const auto recs = read_of(path);
     if (recs.empty()) return nullptr;
     for (std::size_t k = 1; k < recs.size(); ++k) {
       const Where first = deck_.where(recs[0]->pos);
@@ -286,21 +295,24 @@ void Builder::anim_names(model::RunControls& rc) {
                              {"/ANIM/TENS", &rc.anim_tens, "an element tensor field"},
                              {"/ANIM/NODA", &rc.anim_noda, "a nodal scalar field"}};
   for (const auto& f : families) {
-    for (const EngineRecord* r : deck_.of(f.path)) {
+    for (const EngineRecord* r : read_of(f.path)) {
       if (r->header.empty()) continue;  // the reader reports the missing name (RX306)
+      // An output radx does not write changes no result: a warning, and the run goes on without it.
       const AnimFieldName* a = find_anim_field(f.path, r->header[0]);
       if (!a) {
-        error(*r, Diag::UnsupportedKeyword,
-              std::string(f.path) + "/" + r->header[0] + ": '" + r->header[0] + "' is not " + f.what +
-                  " radx writes; accepted names: " + accepted_anim_names(f.path));
+        warning(*r, Diag::OutputNotWritten,
+                std::string(f.path) + "/" + r->header[0] + ": '" + r->header[0] + "' is not " + f.what +
+                    " radx writes; the run goes on without it; radx writes: " + accepted_anim_names(f.path) +
+                    " (docs/results.md)");
         continue;
       }
       if (r->header.size() > 1) {
         std::string extra;
         for (std::size_t k = 1; k < r->header.size(); ++k) extra += "/" + r->header[k];
-        error(*r, Diag::BadHeader,
-              std::string(f.path) + "/" + r->header[0] + extra + ": radx reads " + std::string(f.path) + "/" +
-                  std::string(a->name) + " without further fields ('" + extra.substr(1) + "' is not read)");
+        warning(*r, Diag::OutputNotWritten,
+                std::string(f.path) + "/" + r->header[0] + extra + ": radx writes " + std::string(f.path) +
+                    "/" + std::string(a->name) + " only, without further fields ('" + extra.substr(1) +
+                    "' is not written); the run goes on without it (docs/results.md)");
         continue;
       }
       if (std::find(f.out->begin(), f.out->end(), a->name) == f.out->end()) f.out->emplace_back(a->name);
@@ -410,7 +422,7 @@ void Builder::rbodies(model::RunControls& rc) {
   std::map<std::int64_t, const EngineRecord*> on;
   for (const auto* path : {"/RBODY/ON", "/RBODY/OFF"}) {
     const bool is_on = std::string_view(path) == "/RBODY/ON";
-    for (const EngineRecord* r : deck_.of(path)) {
+    for (const EngineRecord* r : read_of(path)) {
       if (r->ids.empty())
         warning(*r, Diag::EmptyRecordList, std::string(path) + " lists no rigid-body id: it does nothing");
       for (const auto id : r->ids) {
@@ -462,35 +474,45 @@ model::RunControls Builder::build() {
 }  // namespace
 
 const std::vector<AnimFieldName>& anim_field_names() {
+  // Significant letters and exclusions as the Radioss animation reader compares them.
   static const std::vector<AnimFieldName> table = {
-      {"/ANIM/ELEM", "VONM", {}, "von_mises", "von Mises stress"},
-      {"/ANIM/ELEM", "EPSP", {}, "plastic_strain", "equivalent plastic strain"},
-      {"/ANIM/ELEM", "THIC", {}, "thickness", "current shell thickness (0 for solids)"},
-      {"/ANIM/ELEM", "ENER", {}, "internal_energy_density", "internal energy per unit volume"},
-      {"/ANIM/ELEM", "P", {}, "pressure", "pressure -trace(stress)/3"},
-      {"/ANIM/ELEM", "DENS", {}, "density", "current density"},
-      {"/ANIM/ELEM", "HOUR", {}, "hourglass_energy_density", "hourglass energy per unit volume"},
-      {"/ANIM/VECT", "VEL", {}, "velocity", "nodal velocity"},
-      {"/ANIM/VECT", "DISP", {"DIS"}, "displacement", "nodal displacement"},
-      {"/ANIM/VECT", "ACC", {}, "acceleration", "nodal acceleration"},
-      {"/ANIM/VECT", "CONT", {}, "contact_force", "penalty and Lagrange contact forces"},
-      {"/ANIM/VECT", "FINT", {}, "internal_force", "nodal internal forces"},
-      {"/ANIM/VECT", "FEXT", {}, "external_force", "nodal external forces"},
-      {"/ANIM/VECT", "FREAC", {}, "reaction_force", "reaction forces of kinematic conditions"},
-      {"/ANIM/TENS", "STRESS", {}, "stress", "stress tensor XX YY ZZ XY YZ XZ"},
-      {"/ANIM/NODA", "DMAS", {}, "added_mass", "mass added by /DT/NODA/CST and /DT/INTER/CST"},
-      {"/ANIM/NODA", "DT", {}, "nodal_time_step", "nodal time step"},
+      {"/ANIM/ELEM", "VONM", {}, "von_mises", "von Mises stress", 4, {}},
+      {"/ANIM/ELEM", "EPSP", {}, "plastic_strain", "equivalent plastic strain", 4, {}},
+      {"/ANIM/ELEM", "THIC", {}, "thickness", "current shell thickness (0 for solids)", 4, {}},
+      {"/ANIM/ELEM", "ENER", {}, "internal_energy_density", "internal energy per unit volume", 4, {}},
+      {"/ANIM/ELEM", "P", {}, "pressure", "pressure -trace(stress)/3", 1, {"PLA51"}},
+      {"/ANIM/ELEM", "DENS", {}, "density", "current density", 4, {"DENS3"}},
+      {"/ANIM/ELEM", "HOUR", {}, "hourglass_energy_density", "hourglass energy per unit volume", 4, {}},
+      {"/ANIM/VECT", "VEL", {}, "velocity", "nodal velocity", 3, {}},
+      {"/ANIM/VECT", "DISP", {"DIS"}, "displacement", "nodal displacement", 3, {}},
+      {"/ANIM/VECT", "ACC", {}, "acceleration", "nodal acceleration", 3, {}},
+      {"/ANIM/VECT", "CONT", {}, "contact_force", "penalty and Lagrange contact forces", 4, {"CONT2"}},
+      {"/ANIM/VECT", "FINT", {}, "internal_force", "nodal internal forces", 4, {}},
+      {"/ANIM/VECT", "FEXT", {}, "external_force", "nodal external forces", 4, {}},
+      {"/ANIM/VECT", "FREAC", {}, "reaction_force", "reaction forces of kinematic conditions", 5, {}},
+      {"/ANIM/TENS", "STRESS", {}, "stress", "stress tensor XX YY ZZ XY YZ XZ", 6, {}},
+      {"/ANIM/NODA", "DMAS", {}, "added_mass", "mass added by /DT/NODA/CST and /DT/INTER/CST", 4, {}},
+      {"/ANIM/NODA", "DT", {}, "nodal_time_step", "nodal time step", 2, {}},
   };
   return table;
 }
 
 const AnimFieldName* find_anim_field(std::string_view family, std::string_view written) {
   const std::string w = upper(written);
+  auto starts_with = [&w](std::string_view p) {
+    return w.size() >= p.size() && w.compare(0, p.size(), p) == 0;
+  };
   for (const auto& a : anim_field_names()) {
     if (a.family != family) continue;
     if (a.name == w) return &a;
     for (auto alias : a.aliases)
       if (alias == w) return &a;
+  }
+  for (const auto& a : anim_field_names()) {
+    if (a.family != family || a.significant == 0) continue;
+    if (!starts_with(a.name.substr(0, a.significant))) continue;
+    if (std::any_of(a.excluded.begin(), a.excluded.end(), starts_with)) continue;
+    return &a;
   }
   return nullptr;
 }

@@ -22,13 +22,17 @@ struct AnimFieldName {
   std::vector<std::string_view> aliases;  // other accepted spellings (e.g. DIS for DISP)
   std::string_view array;                 // the results array it fills
   std::string_view meaning;
+  // Radioss reads a name on its first `significant` letters (0: the whole name), so HOURG is HOUR and PRES
+  // is P; names starting with one of `excluded` are other Radioss fields (DENS3 is not DENS).
+  std::size_t significant = 0;
+  std::vector<std::string_view> excluded;
 };
 
 // The data table of every /ANIM name radx maps.
 const std::vector<AnimFieldName>& anim_field_names();
 
-// The entry for `written` (upper case, as the reader stores it) in `family`; nullptr when radx does not
-// map that name.
+// The entry for `written` (upper case, as the reader stores it) in `family`, matched as Radioss matches it
+// (its name, an alias, or its significant letters); nullptr when radx does not map that name.
 const AnimFieldName* find_anim_field(std::string_view family, std::string_view written);
 
 // The accepted names of a family, blank separated, aliases in parentheses: "VEL DISP (DIS) ACC ...".

@@ -43,6 +43,7 @@ enum class Diag : std::uint16_t {
   DuplicateSingleton = 308,
   MissingTitle = 309,
   ExtraData = 310,
+  OutputNotWritten = 311,
   // ids and references
   DuplicateId = 401,
   MissingReference = 402,
