@@ -15,6 +15,9 @@
 // * /ANIM/ELEM|VECT|TENS|NODA/name: a name of anim_field_names() is stored in its canonical spelling, each
 //   once, in deck order; any other name, or further fields after the name, is an output radx does not
 //   write: a warning (RX311), and the run goes on.
+// * /RBODY/ON|OFF ids: 0 switches nothing (a note), a negative id names no body (a warning), as Radioss
+//   passes over both; an id both switched on and off is an error. check_rigid_body_switches then drops, with
+//   a warning, the ids the model lacks.
 // * Every singleton keyword given twice is an error at the second one.
 #include "parser/build_run_controls.hpp"
 
@@ -425,9 +428,22 @@ void Builder::rbodies(model::RunControls& rc) {
     for (const EngineRecord* r : read_of(path)) {
       if (r->ids.empty())
         warning(*r, Diag::EmptyRecordList, std::string(path) + " lists no rigid-body id: it does nothing");
-      for (const auto id : r->ids) {
-        if (id <= 0) {
-          error(*r, Diag::ValueOutOfRange, "rigid-body id " + std::to_string(id) + " must be > 0");
+      for (std::size_t k = 0; k < r->ids.size(); ++k) {
+        const std::int64_t id = r->ids[k];
+        // Radioss passes over an id 0 (decks write /RBODY/ON then 0 to switch nothing) and over any id that
+        // names no rigid body; ids the model lacks are checked against it by check_rigid_body_switches.
+        const Where at = deck_.where(k < r->id_pos.size() ? r->id_pos[k] : r->pos, 1);
+        if (id == 0) {
+          diags_.note(Diag::ValueOutOfRange, at, About{path},
+                      std::string(path) + " lists rigid-body id 0, which switches nothing (as in Radioss)");
+          continue;
+        }
+        if (id < 0) {
+          diags_.warning(
+              Diag::ValueOutOfRange, at, About{path},
+              std::string(path) + " lists rigid-body id " + std::to_string(id) +
+                  ", which names no rigid body (ids are > 0): it switches nothing, and the run goes "
+                  "on (as in Radioss)");
           continue;
         }
         if (is_on) {
@@ -576,12 +592,39 @@ void check_run_name(const EngineDeck& deck, const model::RunControls& controls,
   }
 }
 
-model::RunControls read_run_controls(const std::string& engine_deck_path, Diagnostics& diags) {
-  const EngineDeck deck = read_engine_deck(engine_deck_path, diags);
-  if (deck.records.empty()) return {};
-  model::RunControls rc = build_run_controls(deck, diags);
-  check_run_name(deck, rc, engine_deck_path, diags);
+model::RunControls read_run_controls(const std::string& engine_deck_path, Diagnostics& diags,
+                                     EngineDeck* deck) {
+  EngineDeck read = read_engine_deck(engine_deck_path, diags);
+  model::RunControls rc;
+  if (!read.records.empty()) {
+    rc = build_run_controls(read, diags);
+    check_run_name(read, rc, engine_deck_path, diags);
+  }
+  if (deck) *deck = std::move(read);
   return rc;
+}
+
+void check_rigid_body_switches(const EngineDeck& deck, std::span<const std::int64_t> model_rigid_body_ids,
+                               model::RunControls& controls, Diagnostics& diags) {
+  auto known = [&](std::int64_t id) {
+    return std::find(model_rigid_body_ids.begin(), model_rigid_body_ids.end(), id) !=
+           model_rigid_body_ids.end();
+  };
+  for (const auto* path : {"/RBODY/ON", "/RBODY/OFF"}) {
+    for (const EngineRecord* r : deck.of(path)) {
+      for (std::size_t k = 0; k < r->ids.size(); ++k) {
+        const std::int64_t id = r->ids[k];
+        if (id <= 0 || known(id)) continue;  // ids <= 0 were reported by build_run_controls
+        const SourcePos at = k < r->id_pos.size() ? r->id_pos[k] : r->pos;
+        diags.warning(Diag::MissingReference, deck.where(at, 1), About{path},
+                      std::string(path) + " names rigid body " + std::to_string(id) +
+                          ", which the model does not have: it switches nothing, and the run goes on (as in "
+                          "Radioss)");
+      }
+    }
+  }
+  for (auto* list : {&controls.rbody_on, &controls.rbody_off})
+    std::erase_if(*list, [&](auto id) { return !known(id); });
 }
 
 }  // namespace radx

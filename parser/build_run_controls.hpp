@@ -5,6 +5,7 @@
 // engine decks are in the starter's work units.
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -53,7 +54,15 @@ std::string run_output_root(const std::string& engine_deck_path);
 void check_run_name(const EngineDeck& deck, const model::RunControls& controls,
                     const std::string& engine_deck_path, Diagnostics& diags);
 
-// read_engine_deck + build_run_controls + check_run_name: what the engine calls.
-model::RunControls read_run_controls(const std::string& engine_deck_path, Diagnostics& diags);
+// read_engine_deck + build_run_controls + check_run_name: what the engine calls. `deck`, when given,
+// receives the deck read, for the checks against the model below.
+model::RunControls read_run_controls(const std::string& engine_deck_path, Diagnostics& diags,
+                                     EngineDeck* deck = nullptr);
+
+// /RBODY/ON and /RBODY/OFF against the model: every id that names none of `model_rigid_body_ids` is a
+// warning (RX402) at the line that holds it and is dropped from `controls`, so it switches nothing. Radioss
+// passes over such ids and goes on; radx goes on too, but says so.
+void check_rigid_body_switches(const EngineDeck& deck, std::span<const std::int64_t> model_rigid_body_ids,
+                               model::RunControls& controls, Diagnostics& diags);
 
 }  // namespace radx

@@ -245,6 +245,7 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
             continue;
           }
           rec.ids.push_back(v);
+          rec.id_pos.push_back(lines[cur].pos);
         }
       }
     }

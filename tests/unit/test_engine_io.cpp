@@ -286,7 +286,6 @@ TEST_CASE("engine deck errors are located at their keyword line", "[engine-io]")
       {"nodal group", "/DT/NODA/CST/1\n0.9 1e-7\n12\n", "/DT/NODA/CST", Diag::UnimplementedOption,
        "grnod_ID = 12"},
       {"restart letter", "", "/RUN", Diag::UnimplementedOption, "restart letter"},
-      {"rbody id 0", "/RBODY/ON\n0\n", "/RBODY/ON", Diag::ValueOutOfRange, "rigid-body id 0"},
   };
   for (const auto& c : cases) {
     DYNAMIC_SECTION(c.what) {
@@ -377,6 +376,46 @@ TEST_CASE("an /ANIM name radx does not write is a warning that lists the names i
     REQUIRE(dis);
     CHECK(dis->name == "DISP");
     CHECK(radx::find_anim_field("/ANIM/ELEM", "DISP") == nullptr);  // a name belongs to one family
+  }
+}
+
+TEST_CASE("/RBODY/ON and /RBODY/OFF pass over ids that name no rigid body, as Radioss does", "[engine-io]") {
+  radx::test::TempDir dir;
+  const std::string text = "/RUN/A/1\n1\n/RBODY/ON\n0\n/RBODY/OFF\n4 -2\n/END\n";
+  radx::EngineDeck deck;
+  Diagnostics diags;
+  auto rc = radx::read_run_controls(dir.write("A_0001.rad", text), diags, &deck);
+  INFO(all_diags(diags));
+  CHECK_FALSE(diags.has_errors());
+  REQUIRE(diags.items().size() == 2);
+  // Id 0 (real decks write it to switch nothing): a note at its line.
+  CHECK(diags.items()[0].severity == radx::Severity::Note);
+  CHECK(diags.items()[0].line == 4);
+  CHECK(diags.items()[0].message.find("id 0") != std::string::npos);
+  // A negative id names no rigid body: a warning at its line.
+  CHECK(diags.items()[1].severity == radx::Severity::Warning);
+  CHECK(diags.items()[1].line == 6);
+  CHECK(diags.items()[1].message.find("id -2") != std::string::npos);
+  CHECK(rc.rbody_on.empty());
+  CHECK(rc.rbody_off == std::vector<std::int64_t>{4});
+  SECTION("against the model: an id it lacks is a warning at its line and is dropped") {
+    Diagnostics model_diags;
+    const std::vector<std::int64_t> bodies = {3, 5};
+    radx::check_rigid_body_switches(deck, bodies, rc, model_diags);
+    REQUIRE(model_diags.items().size() == 1);
+    const auto& d = model_diags.items()[0];
+    CHECK(d.severity == radx::Severity::Warning);
+    CHECK(d.code == Diag::MissingReference);
+    CHECK(d.line == 6);
+    CHECK(d.message.find("rigid body 4") != std::string::npos);
+    CHECK(rc.rbody_off.empty());
+  }
+  SECTION("an id the model has stays") {
+    Diagnostics model_diags;
+    const std::vector<std::int64_t> bodies = {4};
+    radx::check_rigid_body_switches(deck, bodies, rc, model_diags);
+    CHECK(model_diags.items().empty());
+    CHECK(rc.rbody_off == std::vector<std::int64_t>{4});
   }
 }
 

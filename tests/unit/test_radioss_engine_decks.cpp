@@ -289,3 +289,40 @@ TEST_CASE(
   CHECK(rbody->code == Diag::UnsupportedKeyword);
   CHECK(rbody->message.find("radx reads /RBODY/ON, /RBODY/OFF") != std::string::npos);
 }
+
+TEST_CASE("/RBODY/OFF of a rigid body the model lacks is a warning and the run goes on unchanged",
+          "[engine-deck]") {
+  radx::test::TempDir dir;
+  const std::string text = std::string(kEngineBody) +
+                           "/RBODY/OFF\n"  // line 10
+                           "7\n"           // line 11: the model (decks/block_on_plate) has no rigid body
+                           "/END\n";
+  const std::string warning =
+      "BLOCK_ON_PLATE_0001.rad:11:1: warning: RX402: [/RBODY/OFF] /RBODY/OFF names rigid "
+      "body 7, which the model does not have: it switches nothing";
+  SECTION("radx-engine") {
+    const std::string model = block_on_plate_model(dir);
+    const EngineRun plain = run_engine(dir, model, "plain", std::string(kEngineBody) + "/END\n");
+    const EngineRun off = run_engine(dir, model, "off", text);
+    INFO(off.err);
+    REQUIRE(plain.exit_code == 0);
+    REQUIRE(off.exit_code == 0);
+    CHECK(off.err.find(warning) != std::string::npos);
+    CHECK(off.listing.find(warning) != std::string::npos);
+    REQUIRE_FALSE(energy_block(plain.summary).empty());
+    CHECK(energy_block(off.summary) == energy_block(plain.summary));
+  }
+  SECTION("radx check on the starter deck with the engine deck beside it") {
+    dir.write("check/BLOCK_ON_PLATE_0000.rad",
+              slurp(fs::path(RADX_SOURCE_DIR) / "decks/block_on_plate/BLOCK_ON_PLATE_0000.rad"));
+    dir.write("check/BLOCK_ON_PLATE_0001.rad", text);
+    const std::string cmd = std::string(RADX_DRIVER_EXE) + " check " +
+                            dir.file("check/BLOCK_ON_PLATE_0000.rad") + " > " + dir.file("check.out") +
+                            " 2> " + dir.file("check.err");
+    const int status = std::system(cmd.c_str());
+    const std::string err = slurp(dir.file("check.err"));
+    INFO(err);
+    CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+    CHECK(err.find(warning) != std::string::npos);
+  }
+}
