@@ -1,7 +1,9 @@
 // Engine deck -> RunControls. Rules (shared/spec/deck-format.md section 3, type7-lagdt.md section 6):
-// * /RUN/name/irun: Tstop > 0 required; irun >= 1; a restart letter is refused (radx writes no restarts).
+// * /RUN/name[/irun]: Tstop > 0 required; irun >= 1, from the file name (NAME_0003.rad: 3; else 1) when
+//   absent, as the Radioss engine takes it; a restart letter is refused (radx writes no restarts).
 // * /PRINT/n/nh: default -100; n != 0, |n| the line interval, n < 0 also to standard output; nh >= 0.
-// * /TFILE: dt_his > 0; without /TFILE, 1e30 (no time history beyond the first and last states).
+// * /TFILE: dt_his >= 0, 0 meaning every cycle (Radioss then keeps the starter's interval, 0: a row every
+//   cycle); without /TFILE, 1e30 (no time history beyond the first and last states).
 // * /ANIM/DT Tstart dT [Tstop Nframes fct_ID]: Tstop 0 -> 1e20, negative Tstop or Tstart an error; dT <= 0 is
 //   an error unless Nframes > 0 gives it as (end - Tstart) / Nframes; a function id is not implemented.
 // * /DT: Tscale 0 -> 0.9, Tmin 0 -> 0; action Stop (the run stops when the element step reaches Tmin).
@@ -215,9 +217,10 @@ void Builder::tfile(model::RunControls& rc) {
         "/TFILE/ityp = " + std::to_string(ityp) + ": the format must be 0 to 4 (radx writes its own format)");
   if (!r->lines.empty() && !r->lines[0].empty()) {
     const double dt = r->lines[0][0];
-    if (dt <= 0)
+    if (dt < 0)
       error(*r, Diag::ValueOutOfRange,
-            "dt_his = " + num(dt) + ": the time-history interval must be > 0 (remove /TFILE for none)");
+            "dt_his = " + num(dt) +
+                ": the time-history interval must be >= 0 (0: every cycle; remove /TFILE for none)");
     else
       rc.th_dt = dt;
   }
@@ -598,6 +601,11 @@ model::RunControls read_run_controls(const std::string& engine_deck_path, Diagno
   model::RunControls rc;
   if (!read.records.empty()) {
     rc = build_run_controls(read, diags);
+    // /RUN/name without irun: the Radioss engine takes the run number from the file name.
+    const auto runs = read.of("/RUN");
+    int file_number = -1;
+    split_run_suffix(engine_deck_path, file_number);
+    if (!runs.empty() && runs.front()->header.size() < 2 && file_number > 0) rc.run_number = file_number;
     check_run_name(read, rc, engine_deck_path, diags);
   }
   if (deck) *deck = std::move(read);

@@ -76,9 +76,10 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
   static const std::vector<EngineKeywordDecl> table = [] {
     std::vector<EngineKeywordDecl> t;
     {
-      auto k = ekw("/RUN", "run name and number, and the end time of the run");
+      auto k =
+          ekw("/RUN", "run name and number (from the file name when absent), and the end time of the run");
       k.header_fields = {"name", "irun", "letter"};
-      k.header_required = 2;
+      k.header_required = 1;
       k.lines = {line({"Tstop"}, 1, {dim::time})};
       t.push_back(std::move(k));
     }
@@ -89,7 +90,7 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
       t.push_back(std::move(k));
     }
     {
-      auto k = ekw("/TFILE", "time-history file format and output interval");
+      auto k = ekw("/TFILE", "time-history file format and output interval (0: every cycle)");
       k.header_fields = {"ityp"};
       k.lines = {line({"dt_his"}, 1, {dim::time})};
       t.push_back(std::move(k));

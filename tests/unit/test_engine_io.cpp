@@ -279,7 +279,7 @@ TEST_CASE("engine deck errors are located at their keyword line", "[engine-io]")
       {"print nh negative", "/PRINT/-10/-2\n", "/PRINT", Diag::ValueOutOfRange, "nh = -2"},
       {"stop negative", "/STOP\n-1 0 0\n", "/STOP", Diag::ValueOutOfRange, "Emax = -1"},
       {"stop flag 2", "/STOP\n0 0 0 2\n", "/STOP", Diag::ValueOutOfRange, "NTH = 2"},
-      {"tfile 0", "/TFILE\n0\n", "/TFILE", Diag::ValueOutOfRange, "dt_his = 0"},
+      {"tfile negative", "/TFILE\n-1e-3\n", "/TFILE", Diag::ValueOutOfRange, "dt_his = -0.001"},
       {"cst and lag", "/DT/INTER/CST\n0.9 1e-7\n/DT/INTER/LAG\n0.9 1e-7\n", "/DT/INTER/LAG",
        Diag::InconsistentValues, "both given"},
       {"duplicate /DT", "/DT\n0.9 0\n/DT\n0.8 0\n", "/DT\n0.8", Diag::DuplicateSingleton, "given again"},
@@ -376,6 +376,22 @@ TEST_CASE("an /ANIM name radx does not write is a warning that lists the names i
     REQUIRE(dis);
     CHECK(dis->name == "DISP");
     CHECK(radx::find_anim_field("/ANIM/ELEM", "DISP") == nullptr);  // a name belongs to one family
+  }
+}
+
+TEST_CASE(
+    "/RUN without a run number takes it from the file name; /TFILE 0 asks for every cycle, as in Radioss",
+    "[engine-io]") {
+  radx::test::TempDir dir;
+  for (const char* name : {"CASE_0003.rad", "CASE.rad"}) {
+    DYNAMIC_SECTION(name) {
+      const Built b = build(dir, name, "/RUN/CASE\n1.5\n/TFILE/4\n0.0\n/END\n");
+      INFO(all_diags(b.diags));
+      CHECK(b.diags.items().empty());
+      CHECK(b.rc.run_name == "CASE");
+      CHECK(b.rc.run_number == (std::string(name) == "CASE.rad" ? 1 : 3));
+      CHECK(b.rc.th_dt == 0.0);
+    }
   }
 }
 

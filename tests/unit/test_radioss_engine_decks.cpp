@@ -326,3 +326,22 @@ TEST_CASE("/RBODY/OFF of a rigid body the model lacks is a warning and the run g
     CHECK(err.find(warning) != std::string::npos);
   }
 }
+
+TEST_CASE("/TFILE with dt_his 0 writes a time-history row every cycle, as Radioss does", "[engine-deck]") {
+  radx::test::TempDir dir;
+  const std::string model = block_on_plate_model(dir);
+  const EngineRun r = run_engine(dir, model, "th", std::string(kEngineBody) + "/TFILE/4\n0.0\n/END\n");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.listing.find("time history every                cycle") != std::string::npos);
+  // Rows: cycle 0 and every cycle after it.
+  const auto at = r.summary.find("\"cycles\": ");
+  REQUIRE(at != std::string::npos);
+  const long cycles = std::stol(r.summary.substr(at + 10));
+  const std::string cmd = std::string(RADX_DRIVER_EXE) + " th " +
+                          (dir.path() / "th/BLOCK_ON_PLATE_th.h5").string() + " > " + dir.file("th.txt");
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string listing = slurp(dir.file("th.txt"));
+  CHECK(listing.find("rows:      " + std::to_string(cycles + 1) + ",") != std::string::npos);
+  CHECK(cycles > 10);
+}
