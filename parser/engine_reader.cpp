@@ -78,22 +78,22 @@ std::string paths_of_root(const std::vector<std::string>& tokens, bool is_anim) 
 // The one diagnostic of a keyword radx does not read, by its class.
 void report_not_read(const EngineKeywordDecl& decl, const std::string& written, Where where, About about,
                      Diagnostics& diags) {
-  const std::string what = written + " (" + std::string(decl.meaning) + ")";
+  const std::string what = written + ": " + std::string(decl.meaning) + ". ";
   switch (decl.support) {
     case schema::Support::Read: break;
     case schema::Support::Ignored:
       diags.note(Diag::IgnoredControlCard, where, about,
-                 what + " is accepted and ignored: " + std::string(decl.reason));
+                 what + "Accepted and ignored: " + std::string(decl.reason) + ".");
       break;
     case schema::Support::NotWritten:
       diags.warning(Diag::OutputNotWritten, where, about,
-                    what + " is not written by radx; the run goes on without it: " +
-                        std::string(decl.reason) + " (docs/results.md)");
+                    what + "Not written by radx; the run goes on without it: " + std::string(decl.reason) +
+                        " (docs/results.md).");
       break;
     case schema::Support::Unsupported:
       diags.error(Diag::UnsupportedKeyword, where, about,
-                  what + " changes the results and radx cannot run it: " + std::string(decl.reason) +
-                      "; without it the run would not be the one Radioss makes");
+                  what + "It changes the results and radx cannot run it: " + std::string(decl.reason) +
+                      "; without it the run would not be the one Radioss makes.");
       break;
   }
 }

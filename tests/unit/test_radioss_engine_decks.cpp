@@ -179,8 +179,8 @@ TEST_CASE(
       REQUIRE(d);
       CHECK(d->severity == Severity::Note);
       CHECK(d->code == Diag::IgnoredControlCard);
-      CHECK(d->message.find(written + " (") == 0);  // names the keyword as written, then what it is
-      CHECK(d->message.find("accepted and ignored: ") != std::string::npos);
+      CHECK(d->message.find(written + ": ") == 0);  // names the keyword as written, then what it is
+      CHECK(d->message.find(". Accepted and ignored: ") != std::string::npos);
     }
     for (const auto& [written, l] : warnings) {
       INFO(written << " at line " << l);
@@ -231,8 +231,9 @@ TEST_CASE(
       REQUIRE(d);
       CHECK(d->severity == Severity::Error);
       CHECK(d->code == Diag::UnsupportedKeyword);
-      CHECK(d->message.find(written + " (") == 0);
-      CHECK(d->message.find("radx cannot run it: radx would need") != std::string::npos);
+      CHECK(d->message.find(written + ": ") == 0);
+      CHECK(d->message.find(". It changes the results and radx cannot run it: radx would need") !=
+            std::string::npos);
     }
   }
   SECTION("keywords of real decks through radx-engine: exit 1, errors on stderr, no file written") {
@@ -251,8 +252,8 @@ TEST_CASE(
     CHECK(r.exit_code == 1);
     const std::string file = "BLOCK_ON_PLATE_0001.rad:";
     CHECK(r.err.find(file +
-                     "10:1: error: RX302: [/DEL] /DEL/SHELL/1 (elements, parts or interfaces deleted at "
-                     "the start of the run) changes the results and radx cannot run it: radx would "
+                     "10:1: error: RX302: [/DEL] /DEL/SHELL/1: elements, parts or interfaces deleted at "
+                     "the start of the run. It changes the results and radx cannot run it: radx would "
                      "need element and interface deletion") != std::string::npos);
     CHECK(r.err.find(file + "12:1: error: RX302: [/VEL] /VEL/TRA/Z") != std::string::npos);
     CHECK(r.err.find(file + "14:1: error: RX302: [/DTIX] /DTIX") != std::string::npos);
