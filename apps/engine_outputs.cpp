@@ -255,7 +255,9 @@ void EngineOutputs::on_report(const solver::CycleReport& r) {
   if (s.th && r.time >= s.next_th) {
     s.write_th_row(r, s.th->rows() == 0);  // the file exists from the first row on
     double next = kNever;
-    if (c.th_dt < kNoInterval) {
+    if (c.th_dt == 0.0) {
+      next = std::nextafter(r.time, kNever);  // /TFILE dt_his 0: every cycle
+    } else if (c.th_dt < kNoInterval) {
       next = c.th_dt * std::floor(r.time / c.th_dt);
       while (next <= r.time) next += c.th_dt;
     }

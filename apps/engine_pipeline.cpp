@@ -12,6 +12,7 @@
 #include "io/model_file.hpp"
 #include "io/summary_json.hpp"
 #include "parser/build_run_controls.hpp"
+#include "parser/deck.hpp"
 #include "parser/diagnostics.hpp"
 #include "solver/explicit_engine.hpp"
 
@@ -52,7 +53,8 @@ io::EnergyBalance to_io(const solver::EnergyBalance& e) {
 
 int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   Diagnostics diags;
-  const model::RunControls controls = read_run_controls(opt.engine_deck, diags);
+  EngineDeck deck;
+  model::RunControls controls = read_run_controls(opt.engine_deck, diags, &deck);
   diags.sort();
   diags.print(err);
   if (diags.has_errors()) {
@@ -71,19 +73,14 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return 1;
   }
   // /RBODY/ON and /RBODY/OFF name rigid bodies of the model. Every body is active at the start of a run
-  // (radx has no sensors), so ON keeps it and OFF leaves it out of this run.
-  bool unknown_body = false;
-  for (const auto* list : {&controls.rbody_on, &controls.rbody_off})
-    for (const auto id : *list) {
-      const bool found = std::any_of(model.rigid_bodies.begin(), model.rigid_bodies.end(),
-                                     [&](const model::RigidBody& b) { return b.id == id; });
-      if (!found) {
-        err << opt.engine_deck << ": error: RX402: /RBODY/" << (list == &controls.rbody_on ? "ON" : "OFF")
-            << " names rigid body " << id << ", which the model does not have\n";
-        unknown_body = true;
-      }
-    }
-  if (unknown_body) return 1;
+  // (radx has no sensors), so ON keeps it and OFF leaves it out of this run; an id the model lacks switches
+  // nothing (a warning, as Radioss goes on too).
+  std::vector<std::int64_t> body_ids;
+  for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
+  Diagnostics model_diags;
+  check_rigid_body_switches(deck, body_ids, controls, model_diags);
+  model_diags.sort();
+  model_diags.print(err);
   std::error_code ec;
   fs::create_directories(opt.out_dir, ec);
   const std::string listing_path = (fs::path(opt.out_dir) / (root + "_0001.out")).string();
@@ -129,6 +126,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   h.length_unit = model.units.length_name;
   h.time_unit = model.units.time_name;
   h.controls = &controls;
+  for (const auto* list : {&diags, &model_diags})
+    for (const auto& d : list->items()) h.deck_messages.push_back(Diagnostics::format(d));
   listing.header(h);
 
   const auto wall0 = std::chrono::steady_clock::now();

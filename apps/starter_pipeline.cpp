@@ -108,7 +108,15 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
   }
   if (opt.check_engine_deck) {
     std::string engine = is_one_file_deck(opt.deck) ? opt.deck : engine_deck_beside(opt.deck);
-    if (!engine.empty()) read_run_controls(engine, diags);
+    if (!engine.empty()) {
+      EngineDeck engine_deck;
+      model::RunControls controls = read_run_controls(engine, diags, &engine_deck);
+      if (readable) {
+        std::vector<std::int64_t> body_ids;
+        for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
+        check_rigid_body_switches(engine_deck, body_ids, controls, diags);
+      }
+    }
   }
   diags.sort();
   res.errors = diags.error_count();

@@ -162,7 +162,7 @@ void write_engine_header(std::ostream& os, const EngineListingHeader& h) {
         std::to_string(c.print_every) + " cycles" + (c.print_stdout ? " (also on standard output)" : "") +
             (c.print_header_every > 0 ? ", titles every " + std::to_string(c.print_header_every) + " lines"
                                       : ""));
-    row(os, "time history every", never_or(c.th_dt, 1e30, tu));
+    row(os, "time history every", c.th_dt == 0.0 ? std::string("cycle") : never_or(c.th_dt, 1e30, tu));
     row(os, "animation states",
         c.anim_dt > 0 ? "from " + gnum(c.anim_start) + tu + " every " + gnum(c.anim_dt) + tu + " until " +
                             never_or(c.anim_stop, 1e20, tu)
@@ -198,6 +198,10 @@ void write_engine_header(std::ostream& os, const EngineListingHeader& h) {
       row(os, "rigid bodies switched on", join(on));
       row(os, "rigid bodies switched off", join(off));
     }
+  }
+  if (!h.deck_messages.empty()) {
+    heading(os, "ENGINE DECK MESSAGES");
+    for (const auto& m : h.deck_messages) os << "  " << m << '\n';
   }
   os << '\n';
 }

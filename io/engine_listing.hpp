@@ -149,6 +149,9 @@ struct EngineListingHeader {
   double total_mass = 0;
   std::string mass_unit = "kg", length_unit = "m", time_unit = "s";
   const model::RunControls* controls = nullptr;  // echoed when set
+  // The notes and warnings of the engine deck and of its checks against the model, formatted, one per
+  // line (a run with errors never starts); echoed under ENGINE DECK MESSAGES when there are any.
+  std::vector<std::string> deck_messages;
 };
 
 void write_engine_header(std::ostream& os, const EngineListingHeader& h);

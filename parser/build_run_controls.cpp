@@ -1,7 +1,9 @@
 // Engine deck -> RunControls. Rules (shared/spec/deck-format.md section 3, type7-lagdt.md section 6):
-// * /RUN/name/irun: Tstop > 0 required; irun >= 1; a restart letter is refused (radx writes no restarts).
+// * /RUN/name[/irun]: Tstop > 0 required; irun >= 1, from the file name (NAME_0003.rad: 3; else 1) when
+//   absent, as the Radioss engine takes it; a restart letter is refused (radx writes no restarts).
 // * /PRINT/n/nh: default -100; n != 0, |n| the line interval, n < 0 also to standard output; nh >= 0.
-// * /TFILE: dt_his > 0; without /TFILE, 1e30 (no time history beyond the first and last states).
+// * /TFILE: dt_his >= 0, 0 meaning every cycle (Radioss then keeps the starter's interval, 0: a row every
+//   cycle); without /TFILE, 1e30 (no time history beyond the first and last states).
 // * /ANIM/DT Tstart dT [Tstop Nframes fct_ID]: Tstop 0 -> 1e20, negative Tstop or Tstart an error; dT <= 0 is
 //   an error unless Nframes > 0 gives it as (end - Tstart) / Nframes; a function id is not implemented.
 // * /DT: Tscale 0 -> 0.9, Tmin 0 -> 0; action Stop (the run stops when the element step reaches Tmin).
@@ -12,8 +14,12 @@
 // * /DT/INTER/CST -> AddMass, /DEL -> Delete, /LAG -> Lagrange; Tscale 0 -> 0.9. /DEL has precedence
 //   over the others (a warning says the others are ignored); /CST with /LAG is an error.
 // * /STOP Emax Mmax Nmax [NTH NANIM [NERR_POSIT]]: 0 -> 1e30; negatives are errors; flags 0 or 1.
-// * /ANIM/ELEM|VECT|TENS|NODA/name: the name must be in anim_field_names(); stored in its canonical
-//   spelling, each once, in deck order.
+// * /ANIM/ELEM|VECT|TENS|NODA/name: a name of anim_field_names() is stored in its canonical spelling, each
+//   once, in deck order; any other name, or further fields after the name, is an output radx does not
+//   write: a warning (RX311), and the run goes on.
+// * /RBODY/ON|OFF ids: 0 switches nothing (a note), a negative id names no body (a warning), as Radioss
+//   passes over both; an id both switched on and off is an error. check_rigid_body_switches then drops, with
+//   a warning, the ids the model lacks.
 // * Every singleton keyword given twice is an error at the second one.
 #include "parser/build_run_controls.hpp"
 
@@ -57,9 +63,17 @@ class Builder {
     diags_.warning(code, deck_.where(r.pos, 1), About{r.decl->path}, std::move(msg));
   }
 
+  // The records of the keyword radx reads at `path`. A keyword it does not read may share the path (the
+  // refused /DT/... beside /DT): the reader reported it, and it is not built.
+  std::vector<const EngineRecord*> read_of(std::string_view path) const {
+    auto recs = deck_.of(path);
+    std::erase_if(recs, [](const EngineRecord* r) { return r->decl->support != schema::Support::Read; });
+    return recs;
+  }
+
   // The one record of a singleton keyword; a second one is an error that points at the first.
   const EngineRecord* single(std::string_view path) {
-    const auto recs = deck_.of(path);
+    const auto recs = read_of(path);
     if (recs.empty()) return nullptr;
     for (std::size_t k = 1; k < recs.size(); ++k) {
       const Where first = deck_.where(recs[0]->pos);
@@ -203,9 +217,10 @@ void Builder::tfile(model::RunControls& rc) {
         "/TFILE/ityp = " + std::to_string(ityp) + ": the format must be 0 to 4 (radx writes its own format)");
   if (!r->lines.empty() && !r->lines[0].empty()) {
     const double dt = r->lines[0][0];
-    if (dt <= 0)
+    if (dt < 0)
       error(*r, Diag::ValueOutOfRange,
-            "dt_his = " + num(dt) + ": the time-history interval must be > 0 (remove /TFILE for none)");
+            "dt_his = " + num(dt) +
+                ": the time-history interval must be >= 0 (0: every cycle; remove /TFILE for none)");
     else
       rc.th_dt = dt;
   }
@@ -286,21 +301,24 @@ void Builder::anim_names(model::RunControls& rc) {
                              {"/ANIM/TENS", &rc.anim_tens, "an element tensor field"},
                              {"/ANIM/NODA", &rc.anim_noda, "a nodal scalar field"}};
   for (const auto& f : families) {
-    for (const EngineRecord* r : deck_.of(f.path)) {
+    for (const EngineRecord* r : read_of(f.path)) {
       if (r->header.empty()) continue;  // the reader reports the missing name (RX306)
+      // An output radx does not write changes no result: a warning, and the run goes on without it.
       const AnimFieldName* a = find_anim_field(f.path, r->header[0]);
       if (!a) {
-        error(*r, Diag::UnsupportedKeyword,
-              std::string(f.path) + "/" + r->header[0] + ": '" + r->header[0] + "' is not " + f.what +
-                  " radx writes; accepted names: " + accepted_anim_names(f.path));
+        warning(*r, Diag::OutputNotWritten,
+                std::string(f.path) + "/" + r->header[0] + ": '" + r->header[0] + "' is not " + f.what +
+                    " radx writes; the run goes on without it; radx writes: " + accepted_anim_names(f.path) +
+                    " (docs/results.md)");
         continue;
       }
       if (r->header.size() > 1) {
         std::string extra;
         for (std::size_t k = 1; k < r->header.size(); ++k) extra += "/" + r->header[k];
-        error(*r, Diag::BadHeader,
-              std::string(f.path) + "/" + r->header[0] + extra + ": radx reads " + std::string(f.path) + "/" +
-                  std::string(a->name) + " without further fields ('" + extra.substr(1) + "' is not read)");
+        warning(*r, Diag::OutputNotWritten,
+                std::string(f.path) + "/" + r->header[0] + extra + ": radx writes " + std::string(f.path) +
+                    "/" + std::string(a->name) + " only, without further fields ('" + extra.substr(1) +
+                    "' is not written); the run goes on without it (docs/results.md)");
         continue;
       }
       if (std::find(f.out->begin(), f.out->end(), a->name) == f.out->end()) f.out->emplace_back(a->name);
@@ -410,12 +428,25 @@ void Builder::rbodies(model::RunControls& rc) {
   std::map<std::int64_t, const EngineRecord*> on;
   for (const auto* path : {"/RBODY/ON", "/RBODY/OFF"}) {
     const bool is_on = std::string_view(path) == "/RBODY/ON";
-    for (const EngineRecord* r : deck_.of(path)) {
+    for (const EngineRecord* r : read_of(path)) {
       if (r->ids.empty())
         warning(*r, Diag::EmptyRecordList, std::string(path) + " lists no rigid-body id: it does nothing");
-      for (const auto id : r->ids) {
-        if (id <= 0) {
-          error(*r, Diag::ValueOutOfRange, "rigid-body id " + std::to_string(id) + " must be > 0");
+      for (std::size_t k = 0; k < r->ids.size(); ++k) {
+        const std::int64_t id = r->ids[k];
+        // Radioss passes over an id 0 (decks write /RBODY/ON then 0 to switch nothing) and over any id that
+        // names no rigid body; ids the model lacks are checked against it by check_rigid_body_switches.
+        const Where at = deck_.where(k < r->id_pos.size() ? r->id_pos[k] : r->pos, 1);
+        if (id == 0) {
+          diags_.note(Diag::ValueOutOfRange, at, About{path},
+                      std::string(path) + " lists rigid-body id 0, which switches nothing (as in Radioss)");
+          continue;
+        }
+        if (id < 0) {
+          diags_.warning(
+              Diag::ValueOutOfRange, at, About{path},
+              std::string(path) + " lists rigid-body id " + std::to_string(id) +
+                  ", which names no rigid body (ids are > 0): it switches nothing, and the run goes "
+                  "on (as in Radioss)");
           continue;
         }
         if (is_on) {
@@ -462,35 +493,45 @@ model::RunControls Builder::build() {
 }  // namespace
 
 const std::vector<AnimFieldName>& anim_field_names() {
+  // Significant letters and exclusions as the Radioss animation reader compares them.
   static const std::vector<AnimFieldName> table = {
-      {"/ANIM/ELEM", "VONM", {}, "von_mises", "von Mises stress"},
-      {"/ANIM/ELEM", "EPSP", {}, "plastic_strain", "equivalent plastic strain"},
-      {"/ANIM/ELEM", "THIC", {}, "thickness", "current shell thickness (0 for solids)"},
-      {"/ANIM/ELEM", "ENER", {}, "internal_energy_density", "internal energy per unit volume"},
-      {"/ANIM/ELEM", "P", {}, "pressure", "pressure -trace(stress)/3"},
-      {"/ANIM/ELEM", "DENS", {}, "density", "current density"},
-      {"/ANIM/ELEM", "HOUR", {}, "hourglass_energy_density", "hourglass energy per unit volume"},
-      {"/ANIM/VECT", "VEL", {}, "velocity", "nodal velocity"},
-      {"/ANIM/VECT", "DISP", {"DIS"}, "displacement", "nodal displacement"},
-      {"/ANIM/VECT", "ACC", {}, "acceleration", "nodal acceleration"},
-      {"/ANIM/VECT", "CONT", {}, "contact_force", "penalty and Lagrange contact forces"},
-      {"/ANIM/VECT", "FINT", {}, "internal_force", "nodal internal forces"},
-      {"/ANIM/VECT", "FEXT", {}, "external_force", "nodal external forces"},
-      {"/ANIM/VECT", "FREAC", {}, "reaction_force", "reaction forces of kinematic conditions"},
-      {"/ANIM/TENS", "STRESS", {}, "stress", "stress tensor XX YY ZZ XY YZ XZ"},
-      {"/ANIM/NODA", "DMAS", {}, "added_mass", "mass added by /DT/NODA/CST and /DT/INTER/CST"},
-      {"/ANIM/NODA", "DT", {}, "nodal_time_step", "nodal time step"},
+      {"/ANIM/ELEM", "VONM", {}, "von_mises", "von Mises stress", 4, {}},
+      {"/ANIM/ELEM", "EPSP", {}, "plastic_strain", "equivalent plastic strain", 4, {}},
+      {"/ANIM/ELEM", "THIC", {}, "thickness", "current shell thickness (0 for solids)", 4, {}},
+      {"/ANIM/ELEM", "ENER", {}, "internal_energy_density", "internal energy per unit volume", 4, {}},
+      {"/ANIM/ELEM", "P", {}, "pressure", "pressure -trace(stress)/3", 1, {"PLA51"}},
+      {"/ANIM/ELEM", "DENS", {}, "density", "current density", 4, {"DENS3"}},
+      {"/ANIM/ELEM", "HOUR", {}, "hourglass_energy_density", "hourglass energy per unit volume", 4, {}},
+      {"/ANIM/VECT", "VEL", {}, "velocity", "nodal velocity", 3, {}},
+      {"/ANIM/VECT", "DISP", {"DIS"}, "displacement", "nodal displacement", 3, {}},
+      {"/ANIM/VECT", "ACC", {}, "acceleration", "nodal acceleration", 3, {}},
+      {"/ANIM/VECT", "CONT", {}, "contact_force", "penalty and Lagrange contact forces", 4, {"CONT2"}},
+      {"/ANIM/VECT", "FINT", {}, "internal_force", "nodal internal forces", 4, {}},
+      {"/ANIM/VECT", "FEXT", {}, "external_force", "nodal external forces", 4, {}},
+      {"/ANIM/VECT", "FREAC", {}, "reaction_force", "reaction forces of kinematic conditions", 5, {}},
+      {"/ANIM/TENS", "STRESS", {}, "stress", "stress tensor XX YY ZZ XY YZ XZ", 6, {}},
+      {"/ANIM/NODA", "DMAS", {}, "added_mass", "mass added by /DT/NODA/CST and /DT/INTER/CST", 4, {}},
+      {"/ANIM/NODA", "DT", {}, "nodal_time_step", "nodal time step", 2, {}},
   };
   return table;
 }
 
 const AnimFieldName* find_anim_field(std::string_view family, std::string_view written) {
   const std::string w = upper(written);
+  auto starts_with = [&w](std::string_view p) {
+    return w.size() >= p.size() && w.compare(0, p.size(), p) == 0;
+  };
   for (const auto& a : anim_field_names()) {
     if (a.family != family) continue;
     if (a.name == w) return &a;
     for (auto alias : a.aliases)
       if (alias == w) return &a;
+  }
+  for (const auto& a : anim_field_names()) {
+    if (a.family != family || a.significant == 0) continue;
+    if (!starts_with(a.name.substr(0, a.significant))) continue;
+    if (std::any_of(a.excluded.begin(), a.excluded.end(), starts_with)) continue;
+    return &a;
   }
   return nullptr;
 }
@@ -554,12 +595,44 @@ void check_run_name(const EngineDeck& deck, const model::RunControls& controls,
   }
 }
 
-model::RunControls read_run_controls(const std::string& engine_deck_path, Diagnostics& diags) {
-  const EngineDeck deck = read_engine_deck(engine_deck_path, diags);
-  if (deck.records.empty()) return {};
-  model::RunControls rc = build_run_controls(deck, diags);
-  check_run_name(deck, rc, engine_deck_path, diags);
+model::RunControls read_run_controls(const std::string& engine_deck_path, Diagnostics& diags,
+                                     EngineDeck* deck) {
+  EngineDeck read = read_engine_deck(engine_deck_path, diags);
+  model::RunControls rc;
+  if (!read.records.empty()) {
+    rc = build_run_controls(read, diags);
+    // /RUN/name without irun: the Radioss engine takes the run number from the file name.
+    const auto runs = read.of("/RUN");
+    int file_number = -1;
+    split_run_suffix(engine_deck_path, file_number);
+    if (!runs.empty() && runs.front()->header.size() < 2 && file_number > 0) rc.run_number = file_number;
+    check_run_name(read, rc, engine_deck_path, diags);
+  }
+  if (deck) *deck = std::move(read);
   return rc;
+}
+
+void check_rigid_body_switches(const EngineDeck& deck, std::span<const std::int64_t> model_rigid_body_ids,
+                               model::RunControls& controls, Diagnostics& diags) {
+  auto known = [&](std::int64_t id) {
+    return std::find(model_rigid_body_ids.begin(), model_rigid_body_ids.end(), id) !=
+           model_rigid_body_ids.end();
+  };
+  for (const auto* path : {"/RBODY/ON", "/RBODY/OFF"}) {
+    for (const EngineRecord* r : deck.of(path)) {
+      for (std::size_t k = 0; k < r->ids.size(); ++k) {
+        const std::int64_t id = r->ids[k];
+        if (id <= 0 || known(id)) continue;  // ids <= 0 were reported by build_run_controls
+        const SourcePos at = k < r->id_pos.size() ? r->id_pos[k] : r->pos;
+        diags.warning(Diag::MissingReference, deck.where(at, 1), About{path},
+                      std::string(path) + " names rigid body " + std::to_string(id) +
+                          ", which the model does not have: it switches nothing, and the run goes on (as in "
+                          "Radioss)");
+      }
+    }
+  }
+  for (auto* list : {&controls.rbody_on, &controls.rbody_off})
+    std::erase_if(*list, [&](auto id) { return !known(id); });
 }
 
 }  // namespace radx

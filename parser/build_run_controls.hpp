@@ -5,6 +5,7 @@
 // engine decks are in the starter's work units.
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,13 +23,17 @@ struct AnimFieldName {
   std::vector<std::string_view> aliases;  // other accepted spellings (e.g. DIS for DISP)
   std::string_view array;                 // the results array it fills
   std::string_view meaning;
+  // Radioss reads a name on its first `significant` letters (0: the whole name), so HOURG is HOUR and PRES
+  // is P; names starting with one of `excluded` are other Radioss fields (DENS3 is not DENS).
+  std::size_t significant = 0;
+  std::vector<std::string_view> excluded;
 };
 
 // The data table of every /ANIM name radx maps.
 const std::vector<AnimFieldName>& anim_field_names();
 
-// The entry for `written` (upper case, as the reader stores it) in `family`; nullptr when radx does not
-// map that name.
+// The entry for `written` (upper case, as the reader stores it) in `family`, matched as Radioss matches it
+// (its name, an alias, or its significant letters); nullptr when radx does not map that name.
 const AnimFieldName* find_anim_field(std::string_view family, std::string_view written);
 
 // The accepted names of a family, blank separated, aliases in parentheses: "VEL DISP (DIS) ACC ...".
@@ -49,7 +54,15 @@ std::string run_output_root(const std::string& engine_deck_path);
 void check_run_name(const EngineDeck& deck, const model::RunControls& controls,
                     const std::string& engine_deck_path, Diagnostics& diags);
 
-// read_engine_deck + build_run_controls + check_run_name: what the engine calls.
-model::RunControls read_run_controls(const std::string& engine_deck_path, Diagnostics& diags);
+// read_engine_deck + build_run_controls + check_run_name: what the engine calls. `deck`, when given,
+// receives the deck read, for the checks against the model below.
+model::RunControls read_run_controls(const std::string& engine_deck_path, Diagnostics& diags,
+                                     EngineDeck* deck = nullptr);
+
+// /RBODY/ON and /RBODY/OFF against the model: every id that names none of `model_rigid_body_ids` is a
+// warning (RX402) at the line that holds it and is dropped from `controls`, so it switches nothing. Radioss
+// passes over such ids and goes on; radx goes on too, but says so.
+void check_rigid_body_switches(const EngineDeck& deck, std::span<const std::int64_t> model_rigid_body_ids,
+                               model::RunControls& controls, Diagnostics& diags);
 
 }  // namespace radx

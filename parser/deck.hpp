@@ -103,6 +103,7 @@ struct EngineRecord {
   std::vector<std::string> header;         // header field values as written
   std::vector<std::vector<double>> lines;  // numbers per data line
   std::vector<std::int64_t> ids;           // id_lines keywords
+  std::vector<SourcePos> id_pos;           // the line of each id
   [[nodiscard]] double value(std::size_t line, std::size_t k, double dflt = 0.0) const;
 };
 

@@ -153,8 +153,16 @@ void write_keyword_reference(std::ostream& os) {
         break;
     }
   }
-  os << "## Engine keywords\n\nFree format: values separated by blanks or commas, one declared line each.\n\n"
-     << "| keyword | header fields | data lines | meaning |\n|---|---|---|---|\n";
+  os << "## Engine keywords\n\nFree format: values separated by blanks or commas, one declared line each. "
+        "Every keyword of the Radioss engine deck is listed; the radx column says what radx does with it: "
+        "**read**; **ignored** (it changes no result: a note, RX303); **not written** (an output radx does "
+        "not "
+        "write: a warning, RX311, and the run goes on); **refused** (it changes the results and radx cannot "
+        "run "
+        "it: an error, RX302). A keyword radx does not read also takes any further fields after its path, "
+        "and "
+        "its data lines are passed over. A keyword whose first field is none of these is unknown (RX301).\n\n"
+     << "| keyword | header fields | data lines | radx | meaning |\n|---|---|---|---|---|\n";
   for (const auto& k : schema::engine_keywords()) {
     os << "| " << k.path;
     for (auto a : k.aliases) os << " (" << a << ")";
@@ -167,8 +175,14 @@ void write_keyword_reference(std::ostream& os) {
       os << "] (" << l.required << " required) ";
     }
     if (k.id_lines) os << "ids, any number of lines";
-    os << " | " << k.meaning << (k.support == schema::Support::Ignored ? " (accepted and ignored)" : "")
-       << " |\n";
+    os << " | ";
+    switch (k.support) {
+      case schema::Support::Read: os << "read"; break;
+      case schema::Support::Ignored: os << "ignored: " << k.reason; break;
+      case schema::Support::NotWritten: os << "not written: " << k.reason; break;
+      case schema::Support::Unsupported: os << "refused: " << k.reason; break;
+    }
+    os << " | " << k.meaning << " |\n";
   }
   os << "\n## Diagnostic codes\n\n| code | meaning |\n|---|---|\n";
   for (auto d : all_diag_codes()) os << "| " << diag_code(d) << " | " << diag_summary(d) << " |\n";

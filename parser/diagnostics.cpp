@@ -39,6 +39,8 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::DuplicateSingleton, "a keyword that may appear once appears again"},
       {Diag::MissingTitle, "the keyword needs a title line"},
       {Diag::ExtraData, "data lines after the last card of a keyword"},
+      {Diag::OutputNotWritten,
+       "an output request for a file or field radx does not write (the run goes on without it)"},
       {Diag::DuplicateId, "two objects of one kind share an id"},
       {Diag::MissingReference, "a reference to an object that does not exist"},
       {Diag::EmptyGroup, "a group or surface that holds nothing"},
@@ -71,6 +73,8 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::EngineMissingRun, "the engine deck has no /RUN"},
       {Diag::EngineBadLine, "an engine deck data line with too few or unreadable values"},
       {Diag::EngineRunNameMismatch, "the /RUN name or number differs from the file name"},
+      {Diag::EngineNoEnd,
+       "the engine deck has no /END line: it is read to the end of the file, as Radioss does"},
   };
   return table;
 }

@@ -43,6 +43,7 @@ enum class Diag : std::uint16_t {
   DuplicateSingleton = 308,
   MissingTitle = 309,
   ExtraData = 310,
+  OutputNotWritten = 311,
   // ids and references
   DuplicateId = 401,
   MissingReference = 402,
@@ -76,6 +77,7 @@ enum class Diag : std::uint16_t {
   EngineMissingRun = 801,
   EngineBadLine = 802,
   EngineRunNameMismatch = 803,
+  EngineNoEnd = 804,
 };
 
 // "RX" + number, e.g. RX402. Never changes once released.

@@ -1,9 +1,16 @@
 // The engine-deck reader. Engine decks are free format (Fortran list-directed): numbers separated by
 // blanks or commas, one data line per declared line. Keyword fields are compared on their first five
 // non-blank characters, as the Radioss engine does (`/PARITH/ON` is `/PARIT/ON`), except `/ANIM`
-// keywords, which are compared at full length. Reading stops at the first `/END` line (so the engine
-// part of a one-file deck ends at `/END/ENGINE`). Unlike Radioss, an unknown engine keyword is an
-// error, never skipped.
+// keywords, whose second field is compared on its first four characters as the Radioss animation reader
+// does (`/ANIM/ELEMENT/VONM` is `/ANIM/ELEM/VONM`; `/ANIM/DT` is DT alone). Reading stops at the first
+// `/END` line (so the engine part of a one-file deck ends at `/END/ENGINE`), or at the end of the file when
+// there is none, as in Radioss.
+//
+// What follows a keyword depends on its class (keywords_engine.cpp): a keyword radx reads has its data
+// lines read and checked; one it ignores gets a note, an output it does not write a warning, and one that
+// changes the results and that radx cannot run an error; their data lines are passed over unchecked. A
+// keyword whose first field Radioss does not know is an unknown keyword (RX301), as in Radioss; a known
+// first field with a form radx does not declare is not supported (RX302).
 #include <algorithm>
 
 #include "parser/deck.hpp"
@@ -31,17 +38,64 @@ std::vector<std::string> path_tokens(std::string_view path) {
   return engine_tokens(path, dummy);
 }
 
+// Whether the /ANIM field `written` is the declared `want`: the Radioss animation reader compares its
+// first four characters (MAT three), except DT, which must be DT alone.
+bool anim_field_matches(const std::string& want, const std::string& written) {
+  if (want == "DT") return written == "DT";
+  const std::size_t n = std::min<std::size_t>(4, want.size());
+  return written.size() >= n && written.compare(0, n, want, 0, n) == 0;
+}
+
 // Number of leading tokens of `tokens` that match `decl` (0: no match).
 std::size_t match(const EngineKeywordDecl& decl, std::string_view path,
                   const std::vector<std::string>& tokens, bool is_anim) {
   const auto want = path_tokens(path);
   if (want.size() > tokens.size()) return 0;
   for (std::size_t k = 0; k < want.size(); ++k) {
-    const bool ok = is_anim ? want[k] == tokens[k] : five(want[k]) == five(tokens[k]);
+    const bool ok = !is_anim ? five(want[k]) == five(tokens[k])
+                    : k == 0 ? want[k] == tokens[k]
+                             : anim_field_matches(want[k], tokens[k]);
     if (!ok) return 0;
   }
   if (!decl.prefix_match && tokens.size() - want.size() > decl.header_fields.size()) return 0;
   return want.size();
+}
+
+// The declared paths whose first field is that of `tokens` (empty: Radioss does not know the keyword).
+std::string paths_of_root(const std::vector<std::string>& tokens, bool is_anim) {
+  std::string out;
+  for (const auto& d : schema::engine_keywords()) {
+    const auto want = path_tokens(d.path);
+    const bool same = !want.empty() && !tokens.empty() &&
+                      (is_anim ? want[0] == tokens[0] : five(want[0]) == five(tokens[0]));
+    if (!same) continue;
+    out += (out.empty() ? "" : ", ") + std::string(d.path);
+    if (d.prefix_match) out += "/...";
+  }
+  return out;
+}
+
+// The one diagnostic of a keyword radx does not read, by its class.
+void report_not_read(const EngineKeywordDecl& decl, const std::string& written, Where where, About about,
+                     Diagnostics& diags) {
+  const std::string what = written + ": " + std::string(decl.meaning) + ". ";
+  switch (decl.support) {
+    case schema::Support::Read: break;
+    case schema::Support::Ignored:
+      diags.note(Diag::IgnoredControlCard, where, about,
+                 what + "Accepted and ignored: " + std::string(decl.reason) + ".");
+      break;
+    case schema::Support::NotWritten:
+      diags.warning(Diag::OutputNotWritten, where, about,
+                    what + "Not written by radx; the run goes on without it: " + std::string(decl.reason) +
+                        " (docs/results.md).");
+      break;
+    case schema::Support::Unsupported:
+      diags.error(Diag::UnsupportedKeyword, where, about,
+                  what + "It changes the results and radx cannot run it: " + std::string(decl.reason) +
+                      "; without it the run would not be the one Radioss makes.");
+      break;
+  }
 }
 
 std::vector<std::string_view> split_values(std::string_view line) {
@@ -120,10 +174,16 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
     }
     std::string written(trim(head.text));
     if (!decl) {
-      diags.error(Diag::UnsupportedKeyword, text.where(head.pos, 1), About{written},
-                  "engine keyword " + written +
-                      " is not supported by radx (Radioss would skip it silently); remove it or see "
-                      "docs/keywords.md for the engine keywords radx reads");
+      const std::string forms = paths_of_root(tokens, is_anim);
+      if (forms.empty())
+        diags.error(Diag::UnknownKeyword, text.where(head.pos, 1), About{written},
+                    "engine keyword " + written +
+                        " is not a keyword of the Radioss engine deck (Radioss stops on it too); see "
+                        "docs/keywords.md for the engine keywords");
+      else
+        diags.error(Diag::UnsupportedKeyword, text.where(head.pos, 1), About{written},
+                    "engine keyword " + written + " is not a form radx reads; radx reads " + forms +
+                        " (docs/keywords.md)");
       i = j;
       continue;
     }
@@ -133,14 +193,13 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
     rec.pos = head.pos;
     for (std::size_t k = used; k < tokens.size(); ++k) rec.header.push_back(tokens[k]);
     const About about{decl->path};
-    if (rec.header.size() < decl->header_required) {
+    // Keywords radx does not read are reported once; their data lines are read but never checked.
+    const bool checked = decl->support == schema::Support::Read;
+    report_not_read(*decl, written, text.where(head.pos, 1), about, diags);
+    if (checked && rec.header.size() < decl->header_required) {
       diags.error(Diag::BadHeader, text.where(head.pos, 1), about,
                   std::string(decl->path) + " needs " + std::to_string(decl->header_required) +
                       " field(s) after the keyword in the keyword line");
-    }
-    if (decl->support == schema::Support::Ignored) {
-      diags.note(Diag::IgnoredControlCard, text.where(head.pos, 1), about,
-                 written + " is accepted and ignored: it changes no physics in radx");
     }
     std::size_t cur = i + 1;
     // Skip blank lines between data lines: list-directed reads pass over them.
@@ -156,7 +215,7 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
         for (std::size_t k = 0; k < parts.size(); ++k) {
           double v = 0;
           const auto st = parse_real(parts[k], v);
-          if (st != NumberStatus::Ok) {
+          if (st != NumberStatus::Ok && checked) {
             const std::string name =
                 k < ld.names.size() ? std::string(ld.names[k]) : "value " + std::to_string(k + 1);
             diags.error(st == NumberStatus::Overflow ? Diag::RealOverflow : Diag::BadReal,
@@ -167,7 +226,7 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
         }
         ++cur;
       }
-      if (values.size() < ld.required) {
+      if (checked && values.size() < ld.required) {
         std::string names;
         for (std::size_t k = 0; k < ld.names.size(); ++k) names += (k ? " " : "") + std::string(ld.names[k]);
         diags.error(Diag::EngineBadLine, text.where(line ? line->pos : head.pos, 1), about,
@@ -176,7 +235,7 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
       }
       rec.lines.push_back(std::move(values));
     }
-    if (decl->id_lines) {
+    if (checked && decl->id_lines) {
       for (; cur < j; ++cur) {
         for (auto part : split_values(lines[cur].text)) {
           std::int64_t v = 0;
@@ -186,10 +245,11 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
             continue;
           }
           rec.ids.push_back(v);
+          rec.id_pos.push_back(lines[cur].pos);
         }
       }
     }
-    if (next_data()) {
+    if (checked && next_data()) {
       diags.warning(Diag::ExtraData, text.where(lines[cur].pos, 1), about,
                     "data line after the last line of " + std::string(decl->path) + " is ignored: '" +
                         std::string(trim(lines[cur].text)) + "'");
@@ -198,9 +258,11 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
     i = j;
   }
   if (!ended) {
+    // Radioss reads an engine deck to /END or to the end of the file, whichever comes first, and real
+    // engine decks often stop without /END: say so, as a note, at the last line read.
     const SourcePos p = lines.empty() ? SourcePos{0, 1} : lines.back().pos;
-    diags.error(Diag::MissingEnd, text.where(p, 1), About{"/END"},
-                "the engine deck has no /END line: the file looks truncated; an engine deck ends with /END");
+    diags.note(Diag::EngineNoEnd, text.where(p, 1), About{"/END"},
+               "the engine deck has no /END line: it was read to the end of the file, as Radioss reads it");
   }
   if (deck.of("/RUN").empty()) {
     diags.error(

@@ -209,7 +209,10 @@ enum class Header : std::uint8_t {
 
 enum class Support : std::uint8_t {
   Read,     // read and used
-  Ignored,  // accepted control card that changes no physics: echoed as ignored
+  Ignored,  // accepted control card that changes no result: echoed as ignored (a note)
+  // Engine deck only:
+  NotWritten,   // an output request for a file or field radx does not write: accepted with a warning
+  Unsupported,  // a Radioss keyword that changes the results in a way radx cannot run: an error
 };
 
 // A real field whose dimension depends on another field of the same keyword: Stfac is a stiffness
@@ -262,7 +265,10 @@ struct EngineKeywordDecl {
   std::vector<EngineLineDecl> lines;
   bool id_lines = false;  // any number of lines of integer ids (/RBODY/ON)
   Support support = Support::Read;
-  bool prefix_match = false;  // path matches the start of the keyword (/ANIM/ELEM/xxx)
+  bool prefix_match = false;  // path matches the start of the keyword (/ANIM/ELEM/xxx, /DEL/...)
+  // Why radx does not read it, by `support`: Ignored, why it changes no result; NotWritten, what radx writes
+  // instead; Unsupported, what radx would need to run it. Empty for Read.
+  std::string_view reason;
 };
 
 const std::vector<EngineKeywordDecl>& engine_keywords();

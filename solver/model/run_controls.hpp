@@ -26,7 +26,7 @@ struct RunControls {
   // Outputs.
   double anim_start = 0, anim_dt = 0, anim_stop = 1e20;  // /ANIM/DT (anim_dt 0: no states but first/last)
   std::vector<std::string> anim_elem, anim_vect, anim_tens, anim_noda;  // names as written, upper case
-  double th_dt = 1e30;                                                  // /TFILE
+  double th_dt = 1e30;                                                  // /TFILE (0: every cycle)
   int print_every = 100;                                                // |n| of /PRINT/n
   bool print_stdout = true;                                             // negative n also prints to stdout
   int print_header_every = 0;
