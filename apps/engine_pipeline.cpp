@@ -29,6 +29,7 @@ io::StepSource source_of(solver::StepControl::Kind k) {
     case solver::StepControl::Kind::Brick: return io::StepSource::Brick;
     case solver::StepControl::Kind::Node: return io::StepSource::Node;
     case solver::StepControl::Kind::Interface: return io::StepSource::Interface;
+    case solver::StepControl::Kind::Imposed: return io::StepSource::Imposed;
     case solver::StepControl::Kind::None: break;
   }
   return io::StepSource::None;

@@ -92,6 +92,7 @@ std::string_view step_source_label(StepSource s) {
     case StepSource::Shell3: return "SH3N";
     case StepSource::Node: return "NODE";
     case StepSource::Interface: return "INTER";
+    case StepSource::Imposed: return "DTIX";
   }
   return "-";
 }
@@ -111,7 +112,9 @@ std::string listing_column_titles(bool lagrange_column) {
 }
 
 std::string format_listing_line(const ListingLine& l) {
-  std::string id = l.source == StepSource::None ? std::string("-") : std::to_string(l.source_id);
+  std::string id = l.source == StepSource::None || l.source == StepSource::Imposed
+                       ? std::string("-")
+                       : std::to_string(l.source_id);
   if (l.source == StepSource::Interface && l.source_node != 0) id += ":" + std::to_string(l.source_node);
   const std::string kind(step_source_label(l.source));
   // "+ 0.0" turns -0.0 into 0.0, so a zero never prints as "-0.0%".
@@ -182,6 +185,10 @@ void write_engine_header(std::ostream& os, const EngineListingHeader& h) {
     dt_row(os, "time step, interfaces", c.inter, tu);
     if (c.inter.action == model::DtAction::AddMass && c.inter.t_min > 0)
       row(os, "", "(/INTER/LAGDT/TYPE7: pairs below the minimum switch to Lagrange multipliers)");
+    if (c.dt_initial > 0 || c.dt_max < 1e30)
+      row(os, "time step bounds (/DTIX)",
+          "first step at most " + (c.dt_initial > 0 ? gnum(c.dt_initial) + tu : std::string("-")) +
+              ", every step at most " + (c.dt_max < 1e30 ? gnum(c.dt_max) + tu : std::string("(no bound)")));
     os << '\n';
     row(os, "stop: energy error above",
         c.stop_energy_error_pct >= 1e30

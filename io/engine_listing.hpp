@@ -28,8 +28,8 @@ namespace radx::io {
 double energy_error_percent(double e_total, double e_total0, double w_ext);
 
 // What controls the time step printed on a listing line.
-enum class StepSource : std::uint8_t { None, Brick, Shell, Shell3, Node, Interface };
-// "BRICK", "SHELL", "SH3N", "NODE", "INTER", or "-" for None.
+enum class StepSource : std::uint8_t { None, Brick, Shell, Shell3, Node, Interface, Imposed };
+// "BRICK", "SHELL", "SH3N", "NODE", "INTER", "DTIX" (/DTIX set the step), or "-" for None.
 std::string_view step_source_label(StepSource s);
 
 // One listing line.

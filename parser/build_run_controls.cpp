@@ -331,6 +331,20 @@ void Builder::time_steps(model::RunControls& rc) {
   rc.global = model::DtControl{};
   rc.global.action = DtAction::Stop;
   if (const EngineRecord* r = single("/DT")) read_dt(*r, rc.global, kDefaultScale, 0.0, DtAction::Stop);
+  if (const EngineRecord* r = single("/DTIX")) {
+    const double ini = r->value(0, 0), mx = r->value(0, 1);
+    if (ini < 0)
+      error(*r, Diag::ValueOutOfRange, "DT_ini = " + num(ini) + " is negative; accepted: >= 0 (0: no bound)");
+    if (mx < 0)
+      error(*r, Diag::ValueOutOfRange,
+            "DT_max = " + num(mx) + " is negative; accepted: > 0, or 0 for no bound");
+    if (mx > 0 && ini > mx)
+      error(*r, Diag::InconsistentValues,
+            "DT_ini = " + num(ini) + " is above DT_max = " + num(mx) +
+                ": the first step cannot exceed the largest");
+    rc.dt_initial = std::max(0.0, ini);
+    rc.dt_max = mx > 0 ? mx : 1e30;
+  }
 
   struct Fam {
     std::string_view path;

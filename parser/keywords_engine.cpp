@@ -298,8 +298,11 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
                     "/DT/SH_3N/CST"));
     t.push_back(unsupported("/DT1", "the older per-family time-step options",
                             "radx would need them; write /DT/BRICK/CST or /DT/SHELL/CST instead"));
-    t.push_back(unsupported("/DTIX", "initial time step and largest time step (DT_ini, DT_max)",
-                            "radx would need a prescribed first step and an upper bound on the time step"));
+    {
+      auto k = ekw("/DTIX", "first time step (at most DT_ini) and largest time step DT_max (0: no bound)");
+      k.lines = {line({"DT_ini", "DT_max"}, 1, {dim::time, dim::time})};
+      t.push_back(std::move(k));
+    }
     t.push_back(unsupported("/DTSDE", "time step of degenerated bricks from their actual shape",
                             "radx would need the degenerated-brick time-step formula"));
     t.push_back(

@@ -534,9 +534,17 @@ bool ExplicitEngine::choose_time_step(LoopState& L, RunResult& res) {
   }
   if (L.first) {
     L.dt2 = dt_elem;
+    if (controls_.dt_initial > 0 && controls_.dt_initial < L.dt2) {  // /DTIX DT_ini
+      L.dt2 = controls_.dt_initial;
+      ctl = StepControl{StepControl::Kind::Imposed, 0, 0};
+    }
   } else {
     L.dt2 = std::min(dt_elem, 1.1 * L.dt1);
     if (L.dt2 != dt_elem) ctl = L.control;
+  }
+  if (L.dt2 > controls_.dt_max) {  // /DTIX DT_max
+    L.dt2 = controls_.dt_max;
+    ctl = StepControl{StepControl::Kind::Imposed, 0, 0};
   }
   if (!std::isfinite(L.dt2)) {
     res.status = RunStatus::Error;

@@ -45,7 +45,8 @@ struct EnergyBalance {
 
 // What controls the time step this cycle.
 struct StepControl {
-  enum class Kind : std::uint8_t { None, Shell, Shell3, Brick, Node, Interface } kind = Kind::None;
+  // Imposed: /DTIX (the first step DT_ini or the bound DT_max).
+  enum class Kind : std::uint8_t { None, Shell, Shell3, Brick, Node, Interface, Imposed } kind = Kind::None;
   std::int64_t user_id = 0;
   std::int64_t node_id = 0;  // Interface: the secondary node of the controlling pair
 };

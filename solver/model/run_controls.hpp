@@ -37,6 +37,8 @@ struct RunControls {
   double nodal_max_added_mass_pct = 0;  // /DT/NODA/CST third value: stop beyond it (0: no limit)
   DtControl brick, shell, shell3;       // /DT/BRICK|SHELL|SH_3N/CST: small-strain switch at Tmin
   DtControl inter;                      // /DT/INTER/CST, /DEL, /LAG
+  double dt_initial = 0;                // /DTIX DT_ini: the first step is at most this (0: no bound)
+  double dt_max = 1e30;                 // /DTIX DT_max: no step above it
 
   // /STOP.
   double stop_energy_error_pct = 1e30, stop_mass_error = 1e30, stop_nodal_mass_error = 1e30;

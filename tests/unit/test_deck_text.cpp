@@ -96,7 +96,7 @@ TEST_CASE("a comma line is read as free format, field by field in declaration or
   CHECK(t.reals[t.column("Z")][0] == -2.0);
 }
 
-TEST_CASE("a tab in a fixed-column line is rejected with its column; in a comma line it is a blank",
+TEST_CASE("a tab in a fixed-column line is rejected with its column, in a comma line it is a blank",
           "[lexer]") {
   TempDir dir;
   const auto path = dir.write("tab_0000.rad",

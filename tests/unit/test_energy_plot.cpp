@@ -123,7 +123,7 @@ TEST_CASE("energy CSV: header with units, values read back exactly", "[plot]") {
   CHECK(row == r.samples.size());
 }
 
-TEST_CASE("energy CSV: units with commas cannot break the header; empty units are left out", "[plot]") {
+TEST_CASE("energy CSV: units with commas cannot break the header, empty units are left out", "[plot]") {
   radx::test::TempDir tmp;
   EnergyPlotRequest r = request_in(tmp.path());
   r.time_unit = "";

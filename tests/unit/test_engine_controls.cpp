@@ -120,7 +120,7 @@ TEST_CASE("/DT/NODA/CST adds the mass that keeps the nodal step at Tmin", "[engi
   CHECK(res.dt <= rc.nodal.t_min * (1 + 1e-12));
 }
 
-TEST_CASE("the /DT minimum stops the run with a message; the step grows by at most 10 % a cycle",
+TEST_CASE("the /DT minimum stops the run with a message, the step grows by at most 10 % a cycle",
           "[engine]") {
   auto m = cube(10.0);
   radx::model::RunControls rc;
@@ -216,7 +216,7 @@ TEST_CASE("every sample deck runs to its end time with the energy balance closed
   }
 }
 
-TEST_CASE("/RBODY/OFF leaves the body out of the run; its nodes move freely", "[engine]") {
+TEST_CASE("/RBODY/OFF leaves the body out of the run, its nodes move freely", "[engine]") {
   // A brick whose 8 nodes are the secondary nodes of a rigid body with a separate main node at rest; the
   // brick's nodes start at v0. Active, the body takes its motion from the main node (at rest: the nodes
   // are stopped and the brick's momentum goes to 0); switched off, the brick keeps m v0 exactly.
@@ -472,7 +472,7 @@ TEST_CASE("/INIVEL/ROT on a rigid body's main node gives the rigid rotation's ki
   CHECK(std::abs(ke_end - ke) <= 1e-3 * ke);
 }
 
-TEST_CASE("/ADMAS/0 adds its mass to each node, /ADMAS/1 shares it; the engine runs with it", "[engine]") {
+TEST_CASE("/ADMAS/0 adds its mass to each node, /ADMAS/1 shares it, the engine runs with it", "[engine]") {
   // A 10 mm steel cube (M = 7.85e-6 Mg, M/8 per node); /ADMAS/0 puts m0 on each of the 4 upper nodes,
   // /ADMAS/1 shares m1 over the same 4; all nodes start at vz = -1000 mm/s: the momentum is the total mass
   // times the velocity, with the added masses in it.
@@ -504,4 +504,30 @@ TEST_CASE("/ADMAS/0 adds its mass to each node, /ADMAS/1 shares it; the engine r
   });
   CHECK(std::abs(mass0 - (M + 4 * m0 + m1)) <= 1e-12 * M);
   CHECK(std::abs(pz - (M + 4 * m0 + m1) * vz) <= 1e-9 * std::abs(M * vz));  // free flight, no force
+}
+
+TEST_CASE("/DTIX: the first step is DT_ini, it grows by 1.1 per cycle, never above DT_max", "[engine]") {
+  // A 10 mm steel cube at rest: its own step dt_e (elements.md 4.4) is far above both bounds here.
+  const auto m = cube(10.0);
+  radx::model::RunControls rc;
+  rc.t_stop = 2e-5;
+  const double dt_e = first_step(m, rc);
+  REQUIRE(dt_e > 0);
+  rc.dt_initial = dt_e / 20;
+  rc.dt_max = dt_e / 4;
+  std::vector<double> steps;
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  const auto res = engine.run([&](const radx::solver::CycleReport& r) {
+    steps.push_back(r.dt);
+    return true;
+  });
+  REQUIRE(res.status == radx::solver::RunStatus::Normal);
+  REQUIRE(steps.size() > 30);
+  CHECK(steps[0] == rc.dt_initial);
+  double expect = rc.dt_initial;
+  for (std::size_t k = 1; k + 2 < steps.size(); ++k) {  // the last steps: cut at Tstop, then the end
+    expect = std::min(1.1 * expect, rc.dt_max);
+    CHECK(std::abs(steps[k] - expect) <= 1e-12 * expect);
+  }
+  CHECK(*std::max_element(steps.begin(), steps.end()) <= rc.dt_max);
 }

@@ -380,7 +380,7 @@ TEST_CASE("an /ANIM name radx does not write is a warning that lists the names i
 }
 
 TEST_CASE(
-    "/RUN without a run number takes it from the file name; /TFILE 0 asks for every cycle, as in Radioss",
+    "/RUN without a run number takes it from the file name, /TFILE 0 asks for every cycle, as in Radioss",
     "[engine-io]") {
   radx::test::TempDir dir;
   for (const char* name : {"CASE_0003.rad", "CASE.rad"}) {
@@ -807,4 +807,28 @@ TEST_CASE("NAME_summary.json reads back through read_summary_json", "[engine-io]
   CHECK(r.time == 0.25);
   CHECK(r.energy.internal == -1e-3);
   CHECK_FALSE(radx::io::read_summary_json((dir.path() / "none.json").string(), r, error));
+}
+
+TEST_CASE("/DTIX: DT_ini and DT_max reach the run controls, bad values are located errors", "[engine-io]") {
+  radx::test::TempDir dir;
+  {
+    const Built b = build(dir, "A_0001.rad", "/RUN/A/1\n1.5\n/DTIX\n1e-7 4e-7\n/END\n");
+    INFO(all_diags(b.diags));
+    CHECK_FALSE(b.diags.has_errors());
+    CHECK(b.rc.dt_initial == 1e-7);
+    CHECK(b.rc.dt_max == 4e-7);
+  }
+  {
+    const Built b = build(dir, "A_0001.rad", "/RUN/A/1\n1.5\n/DTIX\n2e-7 0\n/END\n");  // 0: no bound
+    CHECK_FALSE(b.diags.has_errors());
+    CHECK(b.rc.dt_max >= 1e30);
+  }
+  {
+    const std::string text = "/RUN/A/1\n1.5\n/DTIX\n5e-7 4e-7\n/END\n";
+    const Built b = build(dir, "A_0001.rad", text);
+    const auto* d = find(b.diags, Diag::InconsistentValues);
+    REQUIRE(d != nullptr);
+    CHECK(d->line == line_of(text, "/DTIX"));
+    CHECK(d->message.find("DT_ini") != std::string::npos);
+  }
 }

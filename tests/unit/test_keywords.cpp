@@ -1346,7 +1346,7 @@ TEST_CASE("every engine keyword read with its values, including the 5-character 
   CHECK(deck.of("/DT").at(0)->value(0, 2, -1.0) == -1.0);
 }
 
-TEST_CASE("engine keyword fields are cut to 5 characters; /ANIM fields are compared as Radioss does",
+TEST_CASE("engine keyword fields are cut to 5 characters, /ANIM fields are compared as Radioss does",
           "[keywords]") {
   TempDir dir;
   const std::string text =

@@ -777,7 +777,7 @@ V3 angular_momentum(const sv::RigidBodyInfo& b, const sv::NodeState& s, double d
 
 }  // namespace
 
-TEST_CASE("rigid body set-up: ICoG 1 moves the main node to the centre of mass; mass and inertia",
+TEST_CASE("rigid body set-up: ICoG 1 moves the main node to the centre of mass, mass and inertia",
           "[loads]") {
   const std::vector<V3> sec = {{1, 0, 0}, {0, 2, 0}, {0, 0, 3}, {-1, -1, 1}};
   const std::vector<double> ms = {1.0, 2.0, 3.0, 4.0};
@@ -862,7 +862,7 @@ TEST_CASE("rigid body Ispher: 2 lifts a vanishing principal inertia, 1 makes it 
   }
 }
 
-TEST_CASE("rigid body: a force on a secondary node gives F/M and (r x F)/I; gravity counted once",
+TEST_CASE("rigid body: a force on a secondary node gives F/M and (r x F)/I, gravity counted once",
           "[loads]") {
   // Square of four unit masses, side 1, centred at the origin; main node at the centre (no mass).
   const std::vector<V3> sec = {{0.5, 0.5, 0}, {-0.5, 0.5, 0}, {-0.5, -0.5, 0}, {0.5, -0.5, 0}};

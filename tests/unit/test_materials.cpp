@@ -803,7 +803,7 @@ PathResult stretch_path(const MaterialParams& p, int steps, double rate) {
 
 }  // namespace
 
-TEST_CASE("solid monotonic stretch follows the Johnson-Cook curve; plastic work = area under it",
+TEST_CASE("solid monotonic stretch follows the Johnson-Cook curve, plastic work = area under it",
           "[material]") {
   // verification.md case 14 at one point. The stretch path is deviatoric (lateral strains -1/2), so svm = 3G
   // e until yield. Tolerances: per step round-off (see stretch_path); for the work the computed bound sum

@@ -213,7 +213,7 @@ TEST_CASE(
 
 TEST_CASE(
     "a keyword that changes the results and that radx cannot run is refused: one error each, named, "
-    "located, saying what radx would need; nothing is run",
+    "located, saying what radx would need, nothing is run",
     "[engine-deck]") {
   radx::test::TempDir dir;
   SECTION("every refused keyword, at the reader") {
@@ -243,7 +243,7 @@ TEST_CASE(
                              "12 13\n"
                              "/VEL/TRA/Z\n"  // line 12
                              "2 0 1 0 0 0\n"
-                             "/DTIX\n"  // line 14
+                             "/DAMP\n"  // line 14
                              "0.001 0.001\n"
                              "/KEREL\n"  // line 16
                              "/END\n";
@@ -256,8 +256,8 @@ TEST_CASE(
                      "the start of the run. It changes the results and radx cannot run it: radx would "
                      "need element and interface deletion") != std::string::npos);
     CHECK(r.err.find(file + "12:1: error: RX302: [/VEL] /VEL/TRA/Z") != std::string::npos);
-    CHECK(r.err.find(file + "14:1: error: RX302: [/DTIX] /DTIX") != std::string::npos);
-    CHECK(r.err.find("upper bound on the time step") != std::string::npos);
+    CHECK(r.err.find(file + "14:1: error: RX302: [/DAMP] /DAMP") != std::string::npos);
+    CHECK(r.err.find("Rayleigh (mass and stiffness) damping") != std::string::npos);
     CHECK(r.err.find(file + "16:1: error: RX302: [/KEREL] /KEREL") != std::string::npos);
     CHECK(r.err.find("4 error(s)") != std::string::npos);
     // Nothing half-written: the engine deck is the only file of its folder.
@@ -270,7 +270,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "an engine keyword Radioss does not know is unknown; a known one in a form radx does not read is "
+    "an engine keyword Radioss does not know is unknown, a known one in a form radx does not read is "
     "not supported",
     "[engine-deck]") {
   radx::test::TempDir dir;

@@ -325,7 +325,7 @@ TEST_CASE("time history: a flush before any row writes empty datasets", "[th]") 
   CHECK(groups[1].columns == 5);
 }
 
-TEST_CASE("time history: a /TH group with no objects has no columns; a repeated object repeats its columns",
+TEST_CASE("time history: a /TH group with no objects has no columns, a repeated object repeats its columns",
           "[th]") {
   TempDir dir;
   const std::string path = dir.file("P_th.h5");
@@ -529,7 +529,7 @@ TEST_CASE("time history: CSV export refuses groups whose times differ", "[th]") 
   CHECK_THAT(error, Catch::Contains("3 and 2 rows"));
 }
 
-TEST_CASE("radx th lists and exports a time history; bad input exits 1, bad usage 2", "[th][app]") {
+TEST_CASE("radx th lists and exports a time history, bad input exits 1, bad usage 2", "[th][app]") {
   TempDir dir;
   const std::string path = write_file(dir, 5);
   const std::string radx = std::string(RADX_DRIVER_EXE) + " th ";
