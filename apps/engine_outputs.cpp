@@ -38,6 +38,9 @@ std::string kind_path(model::ThKind k) {
     case model::ThKind::Rwall: return "rwall";
     case model::ThKind::Shell: return "shell";
     case model::ThKind::Subset: return "subset";
+    case model::ThKind::Brick: return "brick";
+    case model::ThKind::Shell3: return "sh3n";
+    case model::ThKind::Rbody: return "rbody";
   }
   return "other";
 }
@@ -50,6 +53,9 @@ std::string kind_name(model::ThKind k) {
     case model::ThKind::Rwall: return "rigid wall";
     case model::ThKind::Shell: return "shell";
     case model::ThKind::Subset: return "subset";
+    case model::ThKind::Brick: return "brick";
+    case model::ThKind::Shell3: return "3-node shell";
+    case model::ThKind::Rbody: return "rigid body";
   }
   return "";
 }
@@ -63,6 +69,9 @@ std::int64_t user_id(const model::Model& m, model::ThKind k, std::int32_t i) {
     case model::ThKind::Rwall: return m.rigid_walls[n].id;
     case model::ThKind::Shell: return m.shells.id[n];
     case model::ThKind::Subset: return m.subsets[n].id;
+    case model::ThKind::Brick: return m.bricks.id[n];
+    case model::ThKind::Shell3: return m.shells3.id[n];
+    case model::ThKind::Rbody: return m.rigid_bodies[n].id;
   }
   return 0;
 }

@@ -1,12 +1,14 @@
 // Deck -> Model: kinematic conditions and loads (/BCS, /IMPVEL, /INIVEL/TRA, /CLOAD, /PLOAD, /GRAV), rigid
 // walls (/RWALL/PLANE), rigid bodies (/RBODY) and time-history requests (/TH/NODE, /TH/PART, /TH/INTER,
-// /TH/RWALL, /TH/SHEL, /TH/SUBS); deck-format.md section 2 and 5.5, elements.md section 7.
+// /TH/RWALL, /TH/SHEL, /TH/SH3N, /TH/BRIC, /TH/RBODY, /TH/SUBS); deck-format.md section 2 and 5.5,
+// elements.md section 7.
 // * Loads: value = Fscale_y f(t / Ascale_x), both scales 0 -> 1; the function is required except for
 //   /GRAV (0 = constant); /GRAV grnod_ID 0 = all nodes.
 // * /RWALL/PLANE: normal n = (M1 - M)/|M1 - M|; secondary nodes = grnd_ID1 + every node with
 //   0 <= (X - M).n <= d at t = 0 (when d > 0) - grnd_ID2 (elements.md 7.1).
 // * /RBODY: the main node is removed from the secondary group; Ispher 0 -> 2, ICoG 0 -> 1 (elements.md 7.2).
-// * /TH/*: group names (DEF, D, V, ...) are expanded to variables; objects resolve to dense indices.
+// * /TH/*: group names (DEF, D, V, ...) are expanded to variables; objects resolve to dense indices; the
+//   variables radx accepts but writes as 0 are named in a warning.
 // /SKEW, /SENSOR and /FRAME are not read by radx, so a non-zero reference to one of them cannot be resolved
 // and is reported as a missing reference.
 #include <algorithm>
@@ -470,6 +472,12 @@ struct ThGroup {
   std::string_view name;
   std::vector<std::string_view> variables;
 };
+// A variable radx accepts but does not compute: written as 0 (solver/time_history_values.hpp), and the
+// starter warns naming it and why.
+struct ThZero {
+  std::string_view name;
+  std::string_view why;
+};
 struct ThKindDef {
   std::string_view path;
   model::ThKind kind;
@@ -477,8 +485,10 @@ struct ThKindDef {
   std::string_view target;              // the keyword defining those objects
   std::vector<ThGroup> groups;          // DEF first
   std::vector<std::string_view> names;  // single variables
+  std::vector<ThZero> zero;             // of `names`, those written as 0
 };
 
+// Names and DEF sets as OpenRadioss defines them (its starter's /TH variable tables; deck-format.md /TH).
 const std::vector<ThKindDef>& th_kinds() {
   using K = model::ThKind;
   static const std::vector<std::string_view> kForces = {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"};
@@ -486,6 +496,21 @@ const std::vector<ThKindDef>& th_kinds() {
                                                       "MASS", "HE", "ERODED", "HEAT"};
   static const std::vector<std::string_view> kShell = {"F1",  "F2",  "F12", "M1",   "M2",  "M12",
                                                        "IEM", "IEB", "OFF", "EMIN", "EMAX"};
+  static const std::vector<ThZero> kShellZero = {{"IEB", "the bending share of the shell energy"},
+                                                 {"EMIN", "strains are not kept"},
+                                                 {"EMAX", "strains are not kept"}};
+  static const std::vector<std::string_view> kStress = {"SX", "SY", "SZ", "SXY", "SYZ", "SXZ"};
+  static const std::vector<std::string_view> kBrickDef = {"OFF", "SX", "SY",   "SZ",   "SXY", "SYZ",
+                                                          "SXZ", "IE", "DENS", "PLAS", "TEMP"};
+  static const std::vector<std::string_view> kBrick = {"OFF",  "SX",   "SY",   "SZ",   "SXY", "SYZ",
+                                                       "SXZ",  "IE",   "DENS", "BULK", "VOL", "PLAS",
+                                                       "TEMP", "PLSR", "VX",   "VY",   "VZ"};
+  static const std::vector<std::string_view> kRbody = {
+      "FX",  "FY",  "FZ",  "MX",  "MY",  "MZ",   "RX",  "RY",  "RZ",  "FXI", "FYI", "FZI", "MXI",   "MYI",
+      "MZI", "X",   "Y",   "Z",   "DX",  "DY",   "DZ",  "VX",  "VY",  "VZ",  "AX",  "AY",  "AZ",    "VRX",
+      "VRY", "VRZ", "ARX", "ARY", "ARZ", "MASS", "IXX", "IYY", "IZZ", "IXY", "IYZ", "IZX", "STATUS"};
+  static const std::string_view kNoType14 =
+      "forces of TYPE14 and TYPE15 interfaces, which radx does not have";
   static const std::vector<ThKindDef> kinds = {
       {"/TH/NODE",
        K::Node,
@@ -500,19 +525,72 @@ const std::vector<ThKindDef>& th_kinds() {
         {"XYZ", {"X", "Y", "Z"}}},
        {"DX",  "DY",  "DZ",  "VX",    "VY",    "VZ",    "AX",     "AY",     "AZ",
         "VRX", "VRY", "VRZ", "ARX",   "ARY",   "ARZ",   "DRX",    "DRY",    "DRZ",
-        "X",   "Y",   "Z",   "REACX", "REACY", "REACZ", "REACXX", "REACYY", "REACZZ"}},
-      {"/TH/PART", K::Part, "part", "/PART", {{"DEF", kPart}}, kPart},
-      {"/TH/SUBS", K::Subset, "subset", "/SUBSET", {{"DEF", kPart}}, kPart},
+        "X",   "Y",   "Z",   "REACX", "REACY", "REACZ", "REACXX", "REACYY", "REACZZ"},
+       {{"DRX", "rotation angles are not integrated"},
+        {"DRY", "rotation angles are not integrated"},
+        {"DRZ", "rotation angles are not integrated"}}},
+      {"/TH/PART", K::Part, "part", "/PART", {{"DEF", kPart}}, kPart, {}},
+      {"/TH/SUBS", K::Subset, "subset", "/SUBSET", {{"DEF", kPart}}, kPart, {}},
       {"/TH/INTER",
        K::Inter,
        "interface",
        "/INTER",
        {{"DEF", kForces}, {"FN", {"FNX", "FNY", "FNZ"}}, {"FT", {"FTX", "FTY", "FTZ"}}},
-       {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "CE_ELAST", "CE_FRIC", "CE_DAMP"}},
-      {"/TH/RWALL", K::Rwall, "rigid wall", "/RWALL", {{"DEF", kForces}}, kForces},
-      {"/TH/SHEL", K::Shell, "4-node shell", "/SHELL", {{"DEF", kShell}}, kShell},
+       {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "CE_ELAST", "CE_FRIC", "CE_DAMP"},
+       {}},
+      {"/TH/RWALL", K::Rwall, "rigid wall", "/RWALL", {{"DEF", kForces}}, kForces, {}},
+      {"/TH/SHEL", K::Shell, "4-node shell", "/SHELL", {{"DEF", kShell}}, kShell, kShellZero},
+      {"/TH/SH3N", K::Shell3, "3-node shell", "/SH3N", {{"DEF", kShell}}, kShell, kShellZero},
+      {"/TH/BRIC",
+       K::Brick,
+       "brick",
+       "/BRICK",
+       {{"DEF", kBrickDef}, {"STRESS", kStress}},
+       kBrick,
+       {{"TEMP", "radx has no thermal analysis"}}},
+      {"/TH/RBODY",
+       K::Rbody,
+       "rigid body",
+       "/RBODY",
+       {{"DEF", {"FX", "FY", "FZ", "MX", "MY", "MZ", "RX", "RY", "RZ"}},
+        {"F", {"FX", "FY", "FZ"}},
+        {"M", {"MX", "MY", "MZ"}},
+        {"R", {"RX", "RY", "RZ"}},
+        {"FI", {"FXI", "FYI", "FZI"}},
+        {"MI", {"MXI", "MYI", "MZI"}},
+        {"D", {"DX", "DY", "DZ"}},
+        {"V", {"VX", "VY", "VZ", "VRX", "VRY", "VRZ"}},
+        {"A", {"AX", "AY", "AZ", "ARX", "ARY", "ARZ"}},
+        {"XYZ", {"X", "Y", "Z"}}},
+       kRbody,
+       {{"FXI", kNoType14},
+        {"FYI", kNoType14},
+        {"FZI", kNoType14},
+        {"MXI", kNoType14},
+        {"MYI", kNoType14},
+        {"MZI", kNoType14}}},
   };
   return kinds;
+}
+
+// "IEB (the bending share of the shell energy), EMIN EMAX (strains are not kept)": the requested
+// variables radx writes as 0, grouped by reason in the order of the request.
+std::string zero_variables_text(const ThKindDef& k, const std::vector<std::string>& variables) {
+  std::vector<std::pair<std::string_view, std::string>> by_reason;
+  for (const auto& v : variables) {
+    const auto z = std::find_if(k.zero.begin(), k.zero.end(), [&](const ThZero& x) { return x.name == v; });
+    if (z == k.zero.end()) continue;
+    const auto r =
+        std::find_if(by_reason.begin(), by_reason.end(), [&](const auto& p) { return p.first == z->why; });
+    if (r == by_reason.end())
+      by_reason.emplace_back(z->why, v);
+    else
+      r->second += " " + v;
+  }
+  std::string out;
+  for (const auto& [why, names] : by_reason)
+    out += (out.empty() ? "" : ", ") + names + " (" + std::string(why) + ")";
+  return out;
 }
 
 std::string accepted_th_names(const ThKindDef& k) {
@@ -561,6 +639,9 @@ std::int32_t th_object(const ModelBuilder& b, model::ThKind kind, std::int64_t i
     case model::ThKind::Rwall: return in(b.rwall_ids_);
     case model::ThKind::Shell: return b.m_.shells.index.find(id);
     case model::ThKind::Subset: return in(b.subset_ids_);
+    case model::ThKind::Brick: return b.m_.bricks.index.find(id);
+    case model::ThKind::Shell3: return b.m_.shells3.index.find(id);
+    case model::ThKind::Rbody: return in(b.rbody_ids_);
   }
   return kNone;
 }
@@ -634,17 +715,9 @@ void ModelBuilder::build_time_histories() {
     g.title = r.title;
     g.kind = k->kind;
     g.variables = th_variables(*this, r, *k);
-    // Variables radx lists but does not compute are written as 0 (solver/time_history_values.hpp): say so.
-    static const std::vector<std::string_view> kNotComputed = {"DRX", "DRY", "DRZ", "IEB", "EMIN", "EMAX"};
-    std::string zero;
-    for (const auto& v : g.variables)
-      if (std::find(kNotComputed.begin(), kNotComputed.end(), v) != kNotComputed.end())
-        zero += (zero.empty() ? "" : " ") + v;
-    if (!zero.empty())
+    if (const auto zero = zero_variables_text(*k, g.variables); !zero.empty())
       diags_.warning(Diag::UnimplementedOption, at(r.pos, 1), about(r),
-                     "radx does not compute " + zero +
-                         " (rotation angles, the bending share of the shell energy, strains): they are "
-                         "written as 0 in the time history");
+                     "radx does not compute " + zero + ": written as 0 in the time history");
     g.objects = th_objects(*this, r, *k);
     const auto i = static_cast<std::size_t>(k - kinds.begin());
     const std::string what = std::string(k->path) + " group";

@@ -825,25 +825,32 @@ void add_rigid(std::vector<KeywordDecl>& t) {
 // ---------------------------------------------------------------------------------------------------------
 // Time history
 void add_time_history(std::vector<KeywordDecl>& t) {
-  auto th_record = [] {
-    return card("object",
-                {I("id", 1, 10, "object id"), I("skew_ID", 11, 20, "skew of the output; 0 = global"),
-                 S("name", 21, 100, "label of the object in the output")});
-  };
-  auto th = [&t, &th_record](std::string_view path, std::vector<std::string_view> aliases,
-                             std::string_view meaning, bool records) {
+  // What follows the variable lines: ids 10 per line, or one object per line with or without a skew
+  // (the reference reader decodes a skew on /TH/NODE, /TH/SHEL and /TH/SH3N lines only).
+  enum class Objects { Ids, RecordsWithSkew, Records };
+  auto th = [&t](std::string_view path, std::vector<std::string_view> aliases, std::string_view meaning,
+                 Objects objects) {
     KeywordDecl k = kw(path, meaning, Header::Id, true, "th_ID");
     k.aliases = std::move(aliases);
-    k.tail = records ? Tail::ThVarsThenRecords : Tail::ThVarsThenIds;
-    if (records) k.record = th_record();
+    k.tail = objects == Objects::Ids ? Tail::ThVarsThenIds : Tail::ThVarsThenRecords;
+    if (objects == Objects::RecordsWithSkew)
+      k.record =
+          card("object", {I("id", 1, 10, "object id"), I("skew_ID", 11, 20, "skew of the output; 0 = global"),
+                          S("name", 21, 100, "label of the object in the output")});
+    else if (objects == Objects::Records)
+      k.record = card("object",
+                      {I("id", 1, 10, "object id"), S("name", 21, 100, "label of the object in the output")});
     t.push_back(std::move(k));
   };
-  th("/TH/NODE", {}, "time history of nodal variables", true);
-  th("/TH/PART", {}, "time history of part energies and momenta", false);
-  th("/TH/INTER", {}, "time history of interface forces and energies", false);
-  th("/TH/RWALL", {}, "time history of rigid wall forces", false);
-  th("/TH/SHEL", {"/TH/SHELL"}, "time history of shell element results", true);
-  th("/TH/SUBS", {}, "time history of subset energies and momenta", false);
+  th("/TH/NODE", {}, "time history of nodal variables", Objects::RecordsWithSkew);
+  th("/TH/PART", {}, "time history of part energies and momenta", Objects::Ids);
+  th("/TH/INTER", {}, "time history of interface forces and energies", Objects::Ids);
+  th("/TH/RWALL", {}, "time history of rigid wall forces", Objects::Ids);
+  th("/TH/SHEL", {"/TH/SHELL"}, "time history of shell element results", Objects::RecordsWithSkew);
+  th("/TH/SUBS", {}, "time history of subset energies and momenta", Objects::Ids);
+  th("/TH/BRIC", {"/TH/BRICK"}, "time history of brick element results", Objects::Records);
+  th("/TH/SH3N", {}, "time history of 3-node shell element results", Objects::RecordsWithSkew);
+  th("/TH/RBODY", {}, "time history of rigid body forces and motion", Objects::Ids);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -1014,9 +1021,9 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/ADMAS/7", "/ADMAS/10", "/DAMP", "/IMPLICIT", "/TABLE", "/MOVE_FUNCT", "/SECT", "/ACCEL", "/GAUGE",
         "/PRELOAD",
         // time history that radx does not write
-        "/TH/BRIC", "/TH/SH3N", "/TH/SPRING", "/TH/BEAM", "/TH/TRUSS", "/TH/RBODY", "/TH/SECTIO", "/TH/ACCEL",
-        "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME", "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH",
-        "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
+        "/TH/SPRING", "/TH/BEAM", "/TH/TRUSS", "/TH/SECTIO", "/TH/ACCEL", "/TH/MONV", "/TH/SENSOR",
+        "/TH/GAUGE", "/TH/FRAME", "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH", "/ETH", "/FTH", "/GTH",
+        "/HTH", "/ITH",
         // engine keywords
         "/DT/BRICK/DEL", "/DT/BRICK/STOP", "/DT/SHELL/DEL", "/DT/SHELL/STOP", "/DT/SH_3N/DEL", "/DT/SH3N/DEL",
         "/DT/NODA/STOP", "/DT/NODA/KILL", "/DT/NODA/SET", "/DT/INTER/STOP", "/DT/AMS", "/ATFILE", "/H3D",

@@ -224,6 +224,14 @@ def rwall_plane(v):
             card(reals("XM1", "YM1", "ZM1"))]
 
 
+def cload(v):
+    f = [F("funct_IDT", "I", 1, 10), F("Dir", "S", 11, 20), F("skew_ID", "I", 21, 30), F("sensor_ID", "I", 31, 40),
+         F("grnod_ID", "I", 41, 50)]
+    if v >= 2023:
+        f.append(F("Itypfun", "I", 51, 60))
+    return [card(f + [F("Ascale_x", "R", 61, 80), F("Fscale_y", "R", 81, 100)])]
+
+
 def rbody(v):
     """/RBODY (deck-format.md): cards 1-4; Ifail on card 4 from 2021, and card 5 when it is set."""
     c4 = [F("Ioptoff", "I", 1, 10), F("Iexpams", "I", 11, 20)]
@@ -242,8 +250,12 @@ NODE_REC = [F("node_ID", "I", 1, 10), F("X", "R", 11, 30), F("Y", "R", 31, 50), 
 SHELL_REC = [F("shell_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)] + \
     [F("PHI", "R", 61, 80), F("Thick", "R", 81, 100)]
 BRICK_REC = [F("brick_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(8)]
+# /SH3N as OpenRadioss cuts the card (deck-format.md): PHI 71-90, Thick 91-100.
+SH3N_REC = [F("tria_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(3)] + \
+    [F("PHI", "R", 71, 90), F("Thick", "R", 91, 100)]
 FUNCT_REC = reals("X", "Y")
 THNODE_REC = [F("node_ID", "I", 1, 10), F("skew_ID", "I", 11, 20), F("name", "S", 21, 100)]
+THELEM_REC = [F("elem_ID", "I", 1, 10), F("name", "S", 21, 100)]  # /TH/BRIC: no skew column
 ID_REC = [F("id%d" % (k + 1), "I", 1 + 10 * k, 10 + 10 * k) for k in range(10)]
 
 # path -> (header, has_title, cards(v), tail, record)
@@ -254,6 +266,7 @@ STARTER = {
     "/NODE": ("unit", False, lambda v: [], "records", NODE_REC),
     "/SHELL": ("part", False, lambda v: [], "records", SHELL_REC),
     "/BRICK": ("part", False, lambda v: [], "records", BRICK_REC),
+    "/SH3N": ("part", False, lambda v: [], "records", SH3N_REC),
     "/PART": ("id", True, part, None, None),
     "/PROP/SHELL": ("id", True, prop_shell, None, None),
     "/PROP/TYPE1": ("id", True, prop_shell, None, None),
@@ -281,12 +294,37 @@ STARTER = {
     "/ADMAS/1": ("id", True, admas, None, None),
     "/GRAV": ("id", True, grav, None, None),
     "/SKEW/FIX": ("id", True, skew_fix, None, None),
+    "/CLOAD": ("id", True, cload, None, None),
     "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
     "/RBODY": ("id", True, rbody, None, None),
     "/FUNCT": ("id", True, lambda v: [], "records", FUNCT_REC),
     "/TH/NODE": ("id", True, lambda v: [], "threcords", THNODE_REC),
     "/TH/PART": ("id", True, lambda v: [], "thids", ID_REC),
     "/TH/INTER": ("id", True, lambda v: [], "thids", ID_REC),
+    "/TH/BRIC": ("id", True, lambda v: [], "threcords", THELEM_REC),
+    "/TH/BRICK": ("id", True, lambda v: [], "threcords", THELEM_REC),
+    "/TH/SH3N": ("id", True, lambda v: [], "threcords", THNODE_REC),
+    "/TH/RBODY": ("id", True, lambda v: [], "thids", ID_REC),
+}
+
+# /TH variable names per keyword, as OpenRadioss names them: (groups, single names). A name outside both is an
+# error (RX501), as is a block without variable names (RX502); both at the keyword line.
+TH_SHELL = ["F1", "F2", "F12", "M1", "M2", "M12", "IEM", "IEB", "OFF", "EMIN", "EMAX"]
+TH_BRICK = ["OFF", "SX", "SY", "SZ", "SXY", "SYZ", "SXZ", "IE", "DENS", "BULK", "VOL", "PLAS", "TEMP", "PLSR",
+            "VX", "VY", "VZ"]
+TH_VARIABLES = {
+    "/TH/NODE": (["DEF", "D", "V", "A", "VR", "AR", "XYZ"],
+                 [a + x for a in ("D", "V", "A", "VR", "AR", "DR", "REAC") for x in "XYZ"] + ["X", "Y", "Z", "REACXX",
+                                                                                              "REACYY", "REACZZ"]),
+    "/TH/PART": (["DEF"], ["IE", "KE", "XMOM", "YMOM", "ZMOM", "MASS", "HE", "ERODED", "HEAT"]),
+    "/TH/INTER": (["DEF", "FN", "FT"], ["FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "CE_ELAST", "CE_FRIC", "CE_DAMP"]),
+    "/TH/SH3N": (["DEF"], TH_SHELL),
+    "/TH/BRIC": (["DEF", "STRESS"], TH_BRICK),
+    "/TH/BRICK": (["DEF", "STRESS"], TH_BRICK),
+    "/TH/RBODY": (["DEF", "F", "M", "R", "FI", "MI", "D", "V", "A", "XYZ"],
+                  [a + x for a in ("F", "M", "R") for x in "XYZ"] + [a + x + "I" for a in "FM" for x in "XYZ"] +
+                  ["X", "Y", "Z"] + [a + x for a in ("D", "V", "A", "VR", "AR") for x in "XYZ"] +
+                  ["MASS", "IXX", "IYY", "IZZ", "IXY", "IYZ", "IZX", "STATUS"]),
 }
 
 
@@ -645,16 +683,16 @@ def semantic(ck, m):
     inters = by_id(("/INTER/TYPE7", "/INTER/LAGDT/TYPE7"), "interface")
 
     # elements
-    elem_ids = {"/SHELL": set(), "/BRICK": set()}
+    elem_ids = {"/SHELL": set(), "/SH3N": set(), "/BRICK": set()}
     part_kind = {}
-    for o in m.of("/SHELL", "/BRICK"):
+    for o in m.of("/SHELL", "/SH3N", "/BRICK"):
         kind = o["path"]
         if o["id"] not in parts:
             I("RX402", o["pos"][0], o["pos"][1], "%s: part %d does not exist" % (kind, o["id"]))
         part_kind.setdefault(o["id"], set()).add(kind)
-        nn = 4 if kind == "/SHELL" else 8
+        nn = {"/SHELL": 4, "/SH3N": 3, "/BRICK": 8}[kind]
         for r, p in o["recs"]:
-            eid = r.get(kind == "/SHELL" and "shell_ID" or "brick_ID")
+            eid = r.get({"/SHELL": "shell_ID", "/SH3N": "tria_ID", "/BRICK": "brick_ID"}[kind])
             if eid in elem_ids[kind]:
                 I("RX401", p[0], p[1], "element %d defined twice" % eid)
                 continue
@@ -664,10 +702,13 @@ def semantic(ck, m):
                 I("RX406", p[0], p[1], "element %s uses a node that does not exist" % eid)
                 continue
             pts = [nodes[x] for x in ns]
-            if kind == "/SHELL":
-                a = cross(sub(pts[2], pts[0]), sub(pts[3], pts[1]))
+            if kind in ("/SHELL", "/SH3N"):
+                if kind == "/SH3N":
+                    a = cross(sub(pts[1], pts[0]), sub(pts[2], pts[0]))
+                else:
+                    a = cross(sub(pts[2], pts[0]), sub(pts[3], pts[1]))
                 if 0.5 * norm(a) <= 1e-12:
-                    I("RX602", p[0], p[1], "shell %d has zero area" % eid)
+                    I("RX602", p[0], p[1], "%s %d has zero area" % (kind[1:].lower(), eid))
                 # thickness
                 t_el = r.get("Thick") or 0.0
                 po = parts.get(o["id"])
@@ -726,6 +767,8 @@ def semantic(ck, m):
         if o["path"] in ("/PROP/SHELL", "/PROP/TYPE1"):
             if "/SHELL" in kinds and resolved(o, "Ishell", "/DEF_SHELL", 1) != 1:
                 bad.append("Ishell")
+            if "/SH3N" in kinds and resolved(o, "Ish3n", "/DEF_SHELL", 2) not in (1, 2):
+                bad.append("Ish3n")
             if resolved(o, "Ismstr", "/DEF_SHELL", 2) != 2:
                 bad.append("Ismstr")
         elif "/BRICK" in kinds:
@@ -850,6 +893,9 @@ def semantic(ck, m):
         if sk and sk not in skews:
             p = pos(o, "skew_ID")
             I("RX402", p[0], p[1], "%s %d: skew %d does not exist" % (o["path"], o["id"], sk))
+    for o in m.of("/CLOAD"):
+        need(o, "funct_IDT", functs, "function", zero_ok=False)
+        need(o, "grnod_ID", grnods, "node group", zero_ok=False)
     for o in m.of("/RWALL/PLANE"):
         need(o, "grnd_ID1", grnods, "node group")
         need(o, "grnd_ID2", grnods, "node group")
@@ -890,6 +936,26 @@ def semantic(ck, m):
         for x, p in o["ids"]:
             if x not in inters:
                 I("RX402", p[0], p[1], "TH interface %d does not exist" % x)
+    rbodies = by_id(("/RBODY",), "rigid body")
+    for o in m.of("/TH/BRIC", "/TH/BRICK", "/TH/SH3N"):
+        kind = "/BRICK" if o["path"] != "/TH/SH3N" else "/SH3N"
+        for r, p in o["recs"]:
+            if r.get("elem_ID", r.get("node_ID")) not in elem_ids[kind]:
+                I("RX402", p[0], p[1], "TH %s element %s does not exist" % (kind, r.get("elem_ID", r.get("node_ID"))))
+    for o in m.of("/TH/RBODY"):
+        for x, p in o["ids"]:
+            if x not in rbodies:
+                I("RX402", p[0], p[1], "TH rigid body %d does not exist" % x)
+    for o in m.objs:
+        if o["path"] not in TH_VARIABLES:
+            continue
+        groups, single = TH_VARIABLES[o["path"]]
+        words = [w.upper() for line_ in o.get("vars", []) for w in line_]
+        if not words:
+            I("RX502", o["pos"][0], o["pos"][1], "%s %d: no variable names" % (o["path"], o["id"]))
+        for w in words:
+            if w not in groups and w not in single:
+                I("RX501", o["pos"][0], o["pos"][1], "%s %d: unknown variable %s" % (o["path"], o["id"], w))
     return nodes, parts
 
 

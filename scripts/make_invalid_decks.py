@@ -709,6 +709,61 @@ def _():
                                names(("X2", 20), ("Y2", 20), ("Z2", 20)), (line(R(0.0), R(0.0), R(1.0)), "SKW_C3")])
     d.set("BCS_C1", line(bcs_code("111", "111"), I(5), I(1)))
     return d, "/SKEW/FIX/5 with Y' = (0, 0, 2) parallel to Z' = (0, 0, 1): no frame", [("RX507", "SKW_C3")]
+def th_rows(path, title, variables, objects=(), records=None, obj_tag="TH_OBJ"):
+    """A /TH group with id 1: title, variable names left-justified in 10-column cells, then the objects, one
+    per line (records: "id" for /TH/BRIC, "id+skew" for /TH/SH3N) or ids 10 per line; the last object line is
+    tagged obj_tag."""
+    rows = [(path + "/1", "TH_KW"), title]
+    if variables:
+        rows += [names(*[("var_ID%d" % (k + 1), 10) for k in range(len(variables))]),
+                 "".join(v.ljust(10) for v in variables).rstrip()]
+    if records == "id":
+        rows.append(names(("elem_ID", 10)))
+        rows += [line(I(x)) for x in objects]
+    elif records == "id+skew":
+        rows.append(names(("elem_ID", 10), ("skew_ID", 10)))
+        rows += [line(I(x), I(0)) for x in objects]
+    elif objects:
+        rows += [names(*[("obj_ID%d" % (k + 1), 10) for k in range(len(objects))]), line(*[I(x) for x in objects])]
+    if objects:
+        rows[-1] = (rows[-1], obj_tag)
+    return rows
+
+
+@fault("th_bric_missing_brick")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", th_rows("/TH/BRIC", "Brick stresses", ["SX", "SY", "SZ"], [11, 99], "id"))
+    return d, "/TH/BRIC/1 lists brick 11 and brick 99, which does not exist", [("RX402", "TH_OBJ")]
+
+
+@fault("th_sh3n_missing_element")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", th_rows("/TH/SH3N", "Triangles", ["DEF"], [1], "id+skew"))
+    return d, "/TH/SH3N/1 lists element 1, a 4-node /SHELL: no /SH3N defines it", [("RX402", "TH_OBJ")]
+
+
+@fault("th_rbody_missing_rbody")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", th_rows("/TH/RBODY", "Rigid bodies", ["DEF"], [5]))
+    return d, "/TH/RBODY/1 lists rigid body 5, which does not exist (the deck has no /RBODY)", [("RX402", "TH_OBJ")]
+
+
+@fault("th_bric_unknown_variable")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", th_rows("/TH/BRIC", "Brick with a shell variable", ["SZ", "F1"], [11], "id"))
+    return d, "/TH/BRIC/1 asks for F1, a shell variable, not a brick one (error at the keyword line)", \
+        [("RX501", "TH_KW")]
+
+
+@fault("th_rbody_no_variables")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", th_rows("/TH/RBODY", "Rigid bodies without variables", []))
+    return d, "/TH/RBODY/1 ends after its title: no variable line (and no object)", [("RX502", "TH_KW")]
 
 
 @fault("several_errors")

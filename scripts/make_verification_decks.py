@@ -17,6 +17,7 @@ Cases (units):
   taylor_bar        copper Taylor bar at 227 m/s on a rigid frictionless wall, quarter model (Mg, mm, s)
   jc_single_brick   one Johnson-Cook brick stretched at constant speed (Mg, mm, s)
   two_bars          two equal elastic bars exchanging velocities through TYPE7 contact (consistent units)
+  th_outputs        /TH/BRIC, /TH/SH3N and /TH/RBODY against closed forms (three runs, Mg, mm, s)
 
 Plain python3, standard library only.
 """
@@ -28,7 +29,7 @@ import sys
 from radx_deck_format import I, R, S, RULER, bcs_code, blank, ibc_code, line, names, write  # fixed-column cells
 
 VERSION = 2026
-CASES = ("bar_rwall", "cantilever_strip", "taylor_bar", "jc_single_brick", "free_fall", "two_bars")
+CASES = ("bar_rwall", "cantilever_strip", "taylor_bar", "jc_single_brick", "free_fall", "two_bars", "th_outputs")
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -641,7 +642,9 @@ not conservative enough for those flattened, skewed bricks, and the run complete
 JC = dict(H=10.0, RHO=7.85e-9, E=210000.0, NU=0.3, A=300.0, B=450.0, N=0.4, V=10.0, T_STOP=0.1)
 
 
-def jc_single_brick():
+def jc_single_brick(run="JC_SINGLE_BRICK", th=(), th_dt=None):
+    """The case, or (th_outputs) the same deck under another run name with the lines `th` before /END and
+    /TFILE every th_dt in the engine deck."""
     p = JC
     h = p["H"]
     nodes = []
@@ -656,7 +659,6 @@ def jc_single_brick():
     y0 = [n for n in sorted(xyz) if xyz[n][1] == 0.0]
     z0 = [n for n in sorted(xyz) if xyz[n][2] == 0.0]
     top = [n for n in sorted(xyz) if xyz[n][2] == h]
-    run = "JC_SINGLE_BRICK"
     D = header(run, "One Johnson-Cook brick stretched at constant speed (uniaxial stress)", ("Mg", "mm", "s"),
                ["Verification case B.14: uniaxial Johnson-Cook stress-strain at one element. Units Mg, mm, s (MPa).",
                 "A %g mm cube with symmetry /BCS on the faces x = 0, y = 0 and z = 0; the face z = %g moves along"
@@ -698,9 +700,14 @@ def jc_single_brick():
     for x, y in ((0.0, 1.0), (1.0, 1.0)):
         D.append(line(R(x), R(y)))
     D.append(RULER)
+    if th:
+        D += list(th) + [RULER]
     D.append("/END")
     E = engine_deck(run, p["T_STOP"], 0.005, 10000, ["Stretch to %g %% engineering strain." %
                                                      (100 * p["V"] * p["T_STOP"] / h)])
+    if th_dt is not None:
+        k = E.index("/ANIM/DT")
+        E[k:k] = ["/TFILE", names(("dt_his", 20)), line(R(th_dt))]
     eps_end = math.log(1 + p["V"] * p["T_STOP"] / h)
     rate = p["V"] / h
     c = math.sqrt(p["E"] * (1 - p["NU"]) / ((1 + p["NU"]) * (1 - 2 * p["NU"])) / p["RHO"])
@@ -985,6 +992,220 @@ vibration left in the discrete bars.
 
 
 # ---------------------------------------------------------------------------------------------------
+# g. Element and rigid-body time histories (/TH/BRIC, /TH/SH3N, /TH/RBODY) against closed forms, Mg mm s
+
+TH_DT = dict(BRICK=0.0005, SH3N=1e-4, RBODY=5e-4)
+TRI = dict(L=10.0, T=1.0, RHO=7.85e-9, E=210000.0, NU=0.3, V=10.0, T_STOP=0.002)
+RB = dict(H=10.0, RHO=7.85e-9, E=210000.0, NU=0.3, F=1e-3, G=9810.0, T_STOP=0.01)
+
+
+def th_group(path, tid, title, variables, objects, records=None):
+    """A /TH group: variable names left-justified in 10-column cells, 10 per line; then the objects, one per
+    line (records: "id" for /TH/BRIC, "id+skew" for /TH/NODE and /TH/SH3N) or ids 10 per line."""
+    L = ["%s/%d" % (path, tid), title, names(*[("var_ID%d" % (k + 1), 10) for k in range(min(10, len(variables)))])]
+    for k in range(0, len(variables), 10):
+        L.append("".join(v.ljust(10) for v in variables[k:k + 10]).rstrip())
+    if records == "id":
+        L.append(names(("elem_ID", 10)))
+        L += [line(I(x)) for x in objects]
+    elif records == "id+skew":
+        L.append(names(("obj_ID", 10), ("skew_ID", 10)))
+        L += [line(I(x), I(0)) for x in objects]
+    else:
+        L.append(names(*[("obj_ID%d" % (k + 1), 10) for k in range(min(10, len(objects)))]))
+        for k in range(0, len(objects), 10):
+            L.append(line(*[I(x) for x in objects[k:k + 10]]))
+    return L
+
+
+def th_brick():
+    """jc_single_brick with /TH/BRIC (every variable radx computes), /TH/BRICK (DEF) and the corner node."""
+    th = th_group("/TH/BRIC", 1, "Brick: every computed variable",
+                  ["OFF", "SX", "SY", "SZ", "SXY", "SYZ", "SXZ", "IE", "DENS", "BULK", "VOL", "PLAS", "PLSR", "VX",
+                   "VY", "VZ"], [1], "id")
+    th += th_group("/TH/BRICK", 2, "Brick: DEF through the long spelling", ["DEF"], [1], "id")
+    th += th_group("/TH/NODE", 3, "Free corner", ["DEF", "A"], [8], "id+skew")
+    run, D, E, _ = jc_single_brick("TH_BRICK", th, TH_DT["BRICK"])
+    return run, D, E
+
+
+def th_sh3n():
+    """Two square membranes of two 3-node shells each, stretched along X in uniaxial plane stress; plate 1
+    with N = 0 (resultants), plate 2 with N = 5 points through the thickness."""
+    p = TRI
+    L, V, nu = p["L"], p["V"], p["NU"]
+    base = {1: 0.0, 2: 2 * L}  # plate -> y of its lower edge
+    nodes, tris = [], {1: [], 2: []}
+    for plate, y0 in base.items():
+        o = 10 * (plate - 1)
+        nodes += [(o + 1, 0.0, y0, 0.0), (o + 2, L, y0, 0.0), (o + 3, L, y0 + L, 0.0), (o + 4, 0.0, y0 + L, 0.0)]
+        # first triangle: its x axis (n1 -> n2) along X; second: along the diagonal (45 degrees)
+        tris[plate] = [(o + 1, o + 1, o + 2, o + 3), (o + 2, o + 1, o + 3, o + 4)]
+    xyz = {n[0]: n[1:] for n in nodes}
+    run = "TH_SH3N"
+    D = header(run, "Two 3-node shell membranes stretched along X (uniaxial plane stress)", ("Mg", "mm", "s"),
+               ["Time-history check of /TH/SH3N. Units Mg, mm, s (MPa, N, mJ).",
+                "Two %g mm squares of two triangles each, thickness %g, elastic steel; the edge x = 0 holds X,"
+                % (L, p["T"]),
+                "the lower edge holds Y, every node holds Z and its rotations; the edge x = %g moves along +X"
+                % L,
+                "at %g mm/s from t = 0 (/IMPVEL); /INIVEL starts the uniaxial field, so the stress is uniform."
+                % V])
+    D += node_block(nodes, "Plate 1 nodes 1..4 (y = 0..%g), plate 2 nodes 11..14 (y = %g..%g)" % (L, 2 * L, 3 * L))
+    D.append(RULER)
+    for plate in (1, 2):
+        D += ["#  Plate %d: triangle %d along X, triangle %d along the diagonal" % (plate, tris[plate][0][0],
+                                                                                     tris[plate][1][0]),
+              "/SH3N/%d" % plate, names(("tria_ID", 10), ("node_ID1", 10), ("node_ID2", 10), ("node_ID3", 10))]
+        D += [line(*[I(v) for v in t]) for t in tris[plate]]
+    D.append(RULER)
+    D += part_card(1, "Plate 1 (N = 0)", 1, 1)
+    D += part_card(2, "Plate 2 (N = 5)", 2, 1)
+    D += prop_shell(1, "Membrane with resultant elasticity", p["T"], 0, ithick=0)
+    D += prop_shell(2, "Membrane with 5 points", p["T"], 5, ithick=0)
+    D += mat_law1(1, "Steel (elastic)", p["RHO"], p["E"], nu)
+    D.append(RULER)
+    ids = sorted(xyz)
+    D += grnod_node(1, "Every node", ids)
+    D += grnod_node(2, "Nodes on x = 0", [n for n in ids if xyz[n][0] == 0.0])
+    D += grnod_node(3, "Lower edges", [n for n in ids if xyz[n][1] in base.values()])
+    D += grnod_node(4, "Nodes on x = %g (pulled)" % L, [n for n in ids if xyz[n][0] == L])
+    D += bcs(1, "Membrane: Z and rotations held", "001", "111", 1)
+    D += bcs(2, "Symmetry x = 0", "100", "000", 2)
+    D += bcs(3, "Symmetry of each plate's lower edge", "010", "000", 3)
+    D += ["#  Initial velocities: the uniaxial field v = (V x/L, -nu V (y - y0)/L), one group per node"]
+    for n in ids:
+        x, y, _ = xyz[n]
+        y0 = base[1] if y < 2 * L else base[2]
+        v = (V * x / L, -nu * V * (y - y0) / L, 0.0)
+        if v == (0.0, 0.0, 0.0):
+            continue
+        D += grnod_node(100 + n, "Node %d" % n, [n])
+        D += inivel(100 + n, "Uniaxial velocity field at node %d" % n, v, 100 + n)
+    D += ["/IMPVEL/1", "Pull the edges x = %g along +X at constant speed" % L,
+          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+                ("frame_ID", 10), ("Icoor", 10)),
+          line(I(1), S("X", 10), I(0), I(0), I(4), I(0), I(0)),
+          names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
+          line(R(0.0), R(V), R(0.0), R(0.0))]
+    D += ["/FUNCT/1", "Constant 1", names(("X", 20), ("Y", 20)), line(R(0.0), R(1.0)), line(R(1.0), R(1.0))]
+    D.append(RULER)
+    D += th_group("/TH/SH3N", 1, "Every triangle", ["DEF"], [1, 2, 11, 12], "id+skew")
+    D += th_group("/TH/NODE", 2, "Pulled corners", ["DX", "DY"], [3, 13], "id+skew")
+    D.append(RULER)
+    D.append("/END")
+    E = engine_deck(run, p["T_STOP"], p["T_STOP"] / 4, 1000, ["Stretch to %g %% strain." %
+                                                             (100 * V * p["T_STOP"] / L)])
+    k = E.index("/ANIM/DT")
+    E[k:k] = ["/TFILE", names(("dt_his", 20)), line(R(TH_DT["SH3N"]))]
+    return run, D, E
+
+
+def th_rbody():
+    """One brick cube as a rigid body: /CLOAD along X on a corner and /GRAV along -Z."""
+    p = RB
+    h = p["H"]
+    nodes = []
+    for k in range(2):
+        for j in range(2):
+            for i in range(2):
+                nodes.append((1 + i + 2 * j + 4 * k, i * h, j * h, k * h))
+    nodes.append((9, h / 2, h / 2, h / 2))
+    bricks = [(1, 1, 2, 4, 3, 5, 6, 8, 7)]
+    check_bricks(nodes[:8], bricks)
+    run = "TH_RBODY"
+    D = header(run, "A brick cube as a rigid body pulled at a corner and falling", ("Mg", "mm", "s"),
+               ["Time-history check of /TH/RBODY. Units Mg, mm, s (N, N.mm).",
+                "A %g mm steel cube (one brick) is a /RBODY of its eight nodes, main node 9 (moved to the centre"
+                % h,
+                "of mass, ICoG 1). /CLOAD pulls corner node 8 along +X with %g N; /GRAV g = %g mm/s2 along -Z."
+                % (p["F"], p["G"])])
+    D += node_block(nodes, "Cube nodes 1..8, main node 9 at the centre")
+    D.append(RULER)
+    D += brick_block(1, bricks, "One brick")
+    D.append(RULER)
+    D += part_card(1, "Cube", 1, 1)
+    D += prop_solid(1, "Cube solid")
+    D += mat_law1(1, "Steel (elastic)", p["RHO"], p["E"], p["NU"])
+    D.append(RULER)
+    D += grnod_node(1, "Cube nodes", list(range(1, 9)))
+    D += grnod_node(2, "Corner node 8", [8])
+    D += ["/RBODY/1", "Cube",
+          names(("node_ID", 10), ("sens_ID", 10), ("skew_ID", 10), ("Ispher", 10), ("Mass", 20), ("grnd_ID", 10),
+                ("Ikrem", 10), ("ICoG", 10), ("surf_ID", 10)),
+          line(I(9), I(0), I(0), I(0), R(0.0), I(1), I(0), I(0), I(0)),
+          names(("Jxx", 20), ("Jyy", 20), ("Jzz", 20)), line(R(0.0), R(0.0), R(0.0)),
+          names(("Jxy", 20), ("Jyz", 20), ("Jxz", 20)), line(R(0.0), R(0.0), R(0.0)),
+          names(("Ioptoff", 10), ("Iexpams", 10), ("Ifail", 10)), line(I(0), I(0), I(0))]
+    D += ["/CLOAD/1", "Pull on corner node 8 along +X",
+          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+                ("Itypfun", 10), ("Ascale_x", 20), ("Fscale_y", 20)),
+          line(I(1), S("X", 10), I(0), I(0), I(2), I(0), R(0.0), R(p["F"]))]
+    D += ["/GRAV/1", "Gravity along -Z on every node",
+          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10), ("", 10),
+                ("Ascale_x", 20), ("Fscale_y", 20)),
+          line(I(0), S("Z", 10), I(0), I(0), I(0), S("", 10), R(0.0), R(-p["G"]))]
+    D += ["/FUNCT/1", "Constant 1", names(("X", 20), ("Y", 20)), line(R(0.0), R(1.0)), line(R(1.0), R(1.0))]
+    D.append(RULER)
+    D += th_group("/TH/RBODY", 1, "Cube", ["DEF", "FI", "MI", "D", "V", "A", "XYZ", "MASS", "IXX", "IYY", "IZZ",
+                                           "IXY", "IYZ", "IZX", "STATUS"], [1])
+    D += th_group("/TH/NODE", 2, "Loaded corner", ["XYZ"], [8], "id+skew")
+    D.append(RULER)
+    D.append("/END")
+    E = engine_deck(run, p["T_STOP"], p["T_STOP"] / 4, 1000, ["Run for %g s." % p["T_STOP"]])
+    k = E.index("/ANIM/DT")
+    E[k:k] = ["/TFILE", names(("dt_his", 20)), line(R(TH_DT["RBODY"]))]
+    return run, D, E
+
+
+def th_outputs():
+    runs = [th_brick(), th_sh3n(), th_rbody()]
+    t, r = TRI, RB
+    M = r["RHO"] * r["H"] ** 3
+    readme = f"""# th_outputs: element and rigid-body time histories against closed forms
+
+Three runs, generated by `scripts/make_verification_decks.py` (edit the script and regenerate); units **Mg, mm,
+s** (MPa, N, N.mm, mJ). `tests/scripts/check_th_outputs.py` runs each and reads `NAME_th.h5` with h5py.
+
+## TH_BRICK: /TH/BRIC on the Johnson-Cook brick
+
+The model of `jc_single_brick` (one {JC['H']} mm cube stretched along Z at {JC['V']} mm/s, uniaxial stress),
+with `/TFILE` every {TH_DT['BRICK']} s, `/TH/BRIC/1` (OFF SX SY SZ SXY SYZ SXZ IE DENS BULK VOL PLAS PLSR VX VY
+VZ), `/TH/BRICK/2` (DEF, the long spelling: the starter warns that TEMP is written as 0) and `/TH/NODE/3` (DEF
+and A) of the free corner node 8. With u, v the corner's displacements along X and Z, at every row:
+SZ = E ln(1 + v/h) before yield and a + b PLAS^n after it; SX, SY, SXY, SYZ, SXZ ~ 0; PLAS = ln(1 + v/h) - SZ/E;
+VOL = (h + u)^2 (h + v); DENS VOL = rho h^3; IE = SZ^2 / (2E) + a PLAS + b PLAS^(n+1) / (n + 1) per unit initial
+volume, and IE h^3 = the global IE (the only element); VZ = V/2 and VX = VY = (the corner's VX)/2. With the
+rates of the cycle, Dzz = V / (h + v) and Dxx = Dyy = w / (h + u), w the corner's X velocity at the half step
+before the row (the lateral contraction rings after yield, so the half step matters): PLSR = sqrt(Dzz^2 +
+2 Dxx^2) and BULK = rho e l (qa^2 l e + qb c), e = max(0, -(Dzz + 2 Dxx)), l = VOL^(1/3), c the dilatational
+wave speed (non-zero only on the rows where the ringing shrinks the volume).
+
+## TH_SH3N: /TH/SH3N on stretched triangles
+
+Two {t['L']} mm squares of two 3-node shells (thickness {t['T']}, elastic E {t['E']:g}, nu {t['NU']}): plate 1
+(triangles 1, 2) with N = 0, plate 2 (triangles 11, 12) with N = 5. Z and rotations held, x = 0 held in X, each
+lower edge held in Y; the edge x = {t['L']} pulled along +X at {t['V']} mm/s from t = 0, with the uniaxial velocity
+field as initial condition; Ithick 0; Tstop {t['T_STOP']} s, `/TFILE` every {TH_DT['SH3N']} s. The membrane stress is
+uniform uniaxial, sigma = E ln(1 + u/L) (u the pulled edge's displacement). Triangles 1 and 11 have their x axis
+(n1 -> n2) along X: F1 = t sigma, F2 = F12 = 0; triangles 2 and 12 along the diagonal: F1 = F2 = t sigma / 2,
+F12 = -t sigma / 2. M1 = M2 = M12 = 0; OFF = 1; IEM = A t sigma^2 / (2E), A = L^2/2; IEB, EMIN, EMAX are written
+as 0 (the starter warns).
+
+## TH_RBODY: /TH/RBODY on a rigid cube
+
+A {r['H']} mm steel cube (one brick, mass M = rho h^3 = {g(M)} Mg in its eight corner nodes) is `/RBODY/1` with
+main node 9 (ICoG 1: at the centre). `/CLOAD/1` pulls corner node 8 along +X with F = {r['F']:g} N, `/GRAV/1` acts
+along -Z with g = {r['G']:g} mm/s2; Tstop {r['T_STOP']} s, `/TFILE` every {TH_DT['RBODY']} s. At every row t:
+FX = F, FY = FZ = 0 (the weight acts at the main node and is not among the secondary-node forces), (MX, MY, MZ) =
+(x8 - x9) x (F, 0, 0); AX = F/M, AZ = -g, DX = F t^2/(2M), DZ = -g t^2/2, VX = F t/M, VZ = -g t; MASS = M;
+IXX = IYY = IZZ = M h^2/2 (eight corner masses), IXY = IYZ = IZX = 0; ARX.. = (MX..)/IXX; RX RY RZ = the small
+rotation that carries node 8 about the main node, and ~ alpha t^2 / 2; STATUS = 1; FXI.. MZI = 0.
+"""
+    return runs, readme
+
+
+# ---------------------------------------------------------------------------------------------------
 
 
 def write_case(out, case, runs, readme):
@@ -1021,6 +1242,8 @@ def main(argv):
               "jc_single_brick": jc_single_brick, "free_fall": free_fall, "two_bars": two_bars}
 
     def make(case):
+        if case == "th_outputs":
+            return th_outputs()
         run, starter, engine, readme = makers[case]()
         return [(run, starter, engine)], readme
 

@@ -115,4 +115,8 @@ const std::vector<RigidWallOutput>& KinematicsDriver::wall_outputs() const {
   return parts_->walls.outputs();
 }
 
+const RigidBodies& KinematicsDriver::rigid_bodies() const {
+  return parts_->bodies;
+}
+
 }  // namespace radx::solver

@@ -15,6 +15,8 @@
 
 namespace radx::solver {
 
+class RigidBodies;
+
 class KinematicsDriver {
  public:
   KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes);
@@ -41,6 +43,8 @@ class KinematicsDriver {
   [[nodiscard]] std::vector<std::uint8_t> held_nodes() const;
   // Rigid-wall forces of the last cycle and impulses since the start, one per /RWALL in model order.
   [[nodiscard]] const std::vector<RigidWallOutput>& wall_outputs() const;
+  // The rigid bodies formed in this run (not those switched off by /RBODY/OFF), read-only for outputs.
+  [[nodiscard]] const RigidBodies& rigid_bodies() const;
 
  private:
   struct Parts;

@@ -182,14 +182,19 @@ void RigidBodies::gather_and_accelerate(NodeState& s, double dt1) {
     Vec3 f(s.fx[mn], s.fy[mn], s.fz[mn]);
     Vec3 mom(s.mx[mn], s.my[mn], s.mz[mn]);
     double k_main = s.stiffness[mn];
+    Vec3 f_sec = Vec3::Zero(), mom_sec = Vec3::Zero();
     for (const auto n : b.secondary) {
       const auto k = static_cast<std::size_t>(n);
       const Vec3 fs(s.fx[k], s.fy[k], s.fz[k]);
-      f += fs;
-      mom += Vec3(s.mx[k], s.my[k], s.mz[k]) + (position(s, k) - xm).cross(fs);
+      f_sec += fs;
+      mom_sec += Vec3(s.mx[k], s.my[k], s.mz[k]) + (position(s, k) - xm).cross(fs);
       k_main += s.stiffness[k];
       s.stiffness[k] = 1e-20;
     }
+    f += f_sec;
+    mom += mom_sec;
+    b.secondary_force = {f_sec(0), f_sec(1), f_sec(2)};
+    b.secondary_moment = {mom_sec(0), mom_sec(1), mom_sec(2)};
     s.stiffness[mn] = k_main;
     s.fx[mn] = f(0);
     s.fy[mn] = f(1);
@@ -211,6 +216,7 @@ void RigidBodies::gather_and_accelerate(NodeState& s, double dt1) {
     // Rotation: advance the principal frame to t_n, then Euler's equations.
     Eigen::Map<RowMat3> r(b.axes.data());
     const Vec3 w = spin(s, mn);
+    for (int d = 0; d < 3; ++d) b.rotation[static_cast<std::size_t>(d)] += w(d) * dt1;
     if (dt1 > 0 && w.squaredNorm() > 0) {
       RowMat3 rn = r * rotation(w * dt1).transpose();
       orthonormalize(rn);
@@ -299,6 +305,13 @@ KineticCorrection RigidBodies::kinetic_correction(const NodeState& s, double dt1
     }
   }
   return c;
+}
+
+std::array<double, 6> current_inertia(const RigidBodyInfo& b) {
+  const Eigen::Map<const RowMat3> r(b.axes.data());
+  const Vec3 ip(b.principal[0], b.principal[1], b.principal[2]);
+  const Mat3 ig = r.transpose() * ip.asDiagonal() * r;
+  return {ig(0, 0), ig(1, 1), ig(2, 2), ig(0, 1), ig(1, 2), ig(0, 2)};
 }
 
 double RigidBodies::kinetic_energy(std::size_t bi, const NodeState& s, double dt1) const {

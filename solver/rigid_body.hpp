@@ -16,7 +16,8 @@
 //   min(I_i); the secondaries keep theirs and get v_s = v_N + w_N x r_s, w_s = w_N.
 // Each cycle:
 //   gather_and_accelerate (after a = f/m):  F = f_N + sum f_s,  Mom = m_N + sum (m_s + r_s x f_s)
-//     (written to f_N and m_N for output), secondary stiffness moved to the main node;
+//     (written to f_N and m_N for output; the sums over s alone are kept for /TH/RBODY), secondary
+//     stiffness moved to the main node; rotation += omega^{n-1/2} dt1;
 //     a_N = F / M;  the principal frame is advanced by the rotation omega^{n-1/2} dt1 (exact rotation);
 //     Euler in the principal frame:  alpha_i = (Mom_i + (I_j - I_k) w_j w_k) / I_i   (i j k cyclic),
 //     w = omega^{n-1/2}. With fixed rotations on the main node (/BCS) the global system
@@ -58,7 +59,16 @@ struct RigidBodyInfo {
   std::array<double, 3> principal{};        // I1 I2 I3 in use (after Ispher)
   std::array<double, 9> axes{};             // row i = principal axis i in global components (R: w_p = R w)
   std::array<double, 3> force{}, moment{};  // gathered in the last cycle (global, about x_N)
+  // The secondary nodes' share of force and moment (about x_N) in the last cycle: what the body receives
+  // through them (elements, contact, loads on them), without what acts on the main node itself (its own
+  // loads, the body's weight). OpenRadioss's /TH/RBODY FX.. MZ (rgbodfp.F).
+  std::array<double, 3> secondary_force{}, secondary_moment{};
+  std::array<double, 3> rotation{};  // sum of omega^{n-1/2} dt1 since t = 0, global axes (/TH/RBODY RX..)
 };
+
+// Inertia tensor of body b in use at its current orientation, global axes, about x_N: R^T diag(I_i) R
+// (the principal values after Ispher). Ixx Iyy Izz Ixy Iyz Ixz.
+std::array<double, 6> current_inertia(const RigidBodyInfo& b);
 
 // Amounts to ADD to the sums over all nodes (translational and rotational KE, mass, momentum) so that
 // each rigid body is counted once (elements.md 7.2 point 5).

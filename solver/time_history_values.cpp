@@ -7,6 +7,7 @@
 
 #include "solver/kinematics_driver.hpp"
 #include "solver/model/masses.hpp"
+#include "solver/rigid_body.hpp"
 #include "solver/shell_section.hpp"
 
 namespace radx::solver {
@@ -16,7 +17,8 @@ namespace {
 constexpr Dim kEnergy{1, 2, -2}, kMomentum{1, 1, -1}, kMass{1, 0, 0}, kTime{0, 0, 1}, kLength{0, 1, 0},
     kVelocity{0, 1, -1}, kAcceleration{0, 1, -2}, kForce{1, 1, -2}, kMoment{1, 2, -2}, kNone{0, 0, 0},
     kAngularVelocity{0, 0, -1}, kAngularAcceleration{0, 0, -2}, kForcePerLength{1, 0, -2},
-    kMomentPerLength{1, 1, -2};
+    kMomentPerLength{1, 1, -2}, kStress{1, -1, -2}, kDensity{1, -3, 0}, kVolume{0, 3, 0}, kRate{0, 0, -1},
+    kInertia{1, 2, 0};
 
 std::size_t index_of(const std::vector<std::string>& names, const std::string& v) {
   return static_cast<std::size_t>(std::find(names.begin(), names.end(), v) - names.begin());
@@ -57,10 +59,29 @@ Dim th_variable_dim(model::ThKind kind, const std::string& n) {
       return kForce;
     case K::Rwall: return kForce;
     case K::Shell:
+    case K::Shell3:
       if (n == "F1" || n == "F2" || n == "F12") return kForcePerLength;
       if (n == "M1" || n == "M2" || n == "M12") return kMomentPerLength;
       if (n == "IEM" || n == "IEB") return kEnergy;
       return kNone;
+    case K::Brick:
+      if (n[0] == 'S' || n == "IE" || n == "BULK") return kStress;
+      if (n == "DENS") return kDensity;
+      if (n == "VOL") return kVolume;
+      if (n == "PLSR") return kRate;
+      if (n[0] == 'V') return kVelocity;
+      return kNone;  // OFF, PLAS, TEMP
+    case K::Rbody:
+      if (n[0] == 'F') return kForce;  // FX.., FXI..
+      if (n[0] == 'M' && n != "MASS") return kMoment;
+      if (n == "MASS") return kMass;
+      if (n[0] == 'I') return kInertia;
+      if (n[0] == 'D' || n == "X" || n == "Y" || n == "Z") return kLength;
+      if (n.rfind("VR", 0) == 0) return kAngularVelocity;
+      if (n.rfind("AR", 0) == 0) return kAngularAcceleration;
+      if (n[0] == 'V') return kVelocity;
+      if (n[0] == 'A') return kAcceleration;
+      return kNone;  // RX.. (radians), STATUS
   }
   return kNone;
 }
@@ -93,7 +114,43 @@ void global_th_values(const ExplicitEngine& e, const CycleReport& r, std::span<d
 ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistoryGroup& g)
     : kind_(g.kind), objects_(g.objects), variables_(g.variables) {
   const auto& m = e.model();
-  if (kind_ != model::ThKind::Part && kind_ != model::ThKind::Subset) return;
+  using K = model::ThKind;
+  if (kind_ == K::Shell || kind_ == K::Shell3 || kind_ == K::Brick) {
+    // Where each object sits in the element groups, found once: the groups do not change during a run.
+    slots_.assign(objects_.size(), {-1, -1});
+    std::vector<std::pair<int, int>> where;
+    auto index = [&](const auto& groups, auto in_kind) {
+      for (std::size_t gi = 0; gi < groups.size(); ++gi) {
+        const auto& grp = groups[gi];
+        if (!in_kind(grp)) continue;
+        for (int i = 0; i < grp.count; ++i) {
+          const auto el = static_cast<std::size_t>(grp.element[static_cast<std::size_t>(i)]);
+          if (where.size() <= el) where.resize(el + 1, {-1, -1});
+          where[el] = {static_cast<int>(gi), i};
+        }
+      }
+    };
+    if (kind_ == K::Brick)
+      index(e.brick_groups(), [](const BrickGroup&) { return true; });
+    else
+      index(e.shell_groups(), [&](const ShellGroup& grp) { return grp.triangle == (kind_ == K::Shell3); });
+    for (std::size_t o = 0; o < objects_.size(); ++o) {
+      const auto el = static_cast<std::size_t>(objects_[o]);
+      if (el < where.size()) slots_[o] = where[el];
+    }
+    return;
+  }
+  if (kind_ == K::Rbody) {
+    const auto& formed = e.kinematics().rigid_bodies().bodies();
+    for (const auto o : objects_) {
+      const auto id = m.rigid_bodies[static_cast<std::size_t>(o)].id;
+      const auto b =
+          std::find_if(formed.begin(), formed.end(), [id](const RigidBodyInfo& x) { return x.id == id; });
+      bodies_.push_back(b == formed.end() ? -1 : static_cast<int>(b - formed.begin()));
+    }
+    return;
+  }
+  if (kind_ != K::Part && kind_ != K::Subset) return;
   // Node shares of each part: the part's lumped-mass contribution over the node's total mass.
   std::vector<std::map<std::int32_t, double>> shares(m.parts.size());
   model::for_each_nodal_mass(m, [&](std::int32_t node, std::int32_t part, std::size_t, double mass) {
@@ -244,42 +301,100 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
       }
       break;
     }
-    case K::Shell: {
-      // Object -> (group, slot) lookup, built per sample: TH shell lists are short.
-      for (const auto& g : e.shell_groups()) {
-        if (g.triangle) continue;
+    case K::Shell:
+    case K::Shell3:
+      for (std::size_t o = 0; o < objects_.size(); ++o) {
+        const auto [gi, i] = slots_[o];
+        if (gi < 0) continue;
+        const auto& g = e.shell_groups()[static_cast<std::size_t>(gi)];
+        const auto k = static_cast<std::size_t>(i);
         const int np = g.props.n_points;
-        const auto rule = shell_detail::thickness_rule(np > 0 ? np : 0);
-        for (int i = 0; i < g.count; ++i) {
-          const auto k = static_cast<std::size_t>(i);
-          for (std::size_t o = 0; o < objects_.size(); ++o) {
-            if (objects_[o] != g.element[k]) continue;
-            const double t = g.thick[k] > 0 ? g.thick[k] : g.t0[k];
-            double f[3] = {0, 0, 0}, mm[3] = {0, 0, 0};
-            if (np <= 0) {
-              for (std::size_t q = 0; q < 3; ++q) {
-                f[q] = g.sig[q * kGroupSize + k];
-                mm[q] = g.sig[(5 + q) * kGroupSize + k];
-              }
-            } else {
-              for (int p = 0; p < np; ++p) {
-                const int comp[3] = {0, 1, 2};
-                for (int q = 0; q < 3; ++q) {
-                  const double sg = g.sig[shell_detail::sig_index(p, comp[q], i)];
-                  f[q] += rule.w[p] * sg;
-                  mm[q] += rule.m[p] * sg;
-                }
-              }
-            }
-            put(o, "F1", f[0] * t);
-            put(o, "F2", f[1] * t);
-            put(o, "F12", f[2] * t);
-            put(o, "M1", mm[0] * t * t);
-            put(o, "M2", mm[1] * t * t);
-            put(o, "M12", mm[2] * t * t);
-            put(o, "IEM", g.e_int[k]);
-            put(o, "OFF", g.off[k]);
+        const double t = g.thick[k] > 0 ? g.thick[k] : g.t0[k];
+        double f[3] = {0, 0, 0}, mm[3] = {0, 0, 0};
+        if (np <= 0) {
+          for (std::size_t q = 0; q < 3; ++q) {
+            f[q] = g.sig[q * kGroupSize + k];
+            mm[q] = g.sig[(5 + q) * kGroupSize + k];
           }
+        } else {
+          const auto rule = shell_detail::thickness_rule(np);
+          for (int p = 0; p < np; ++p)
+            for (int q = 0; q < 3; ++q) {
+              const double sg = g.sig[shell_detail::sig_index(p, q, i)];
+              f[q] += rule.w[p] * sg;
+              mm[q] += rule.m[p] * sg;
+            }
+        }
+        put(o, "F1", f[0] * t);
+        put(o, "F2", f[1] * t);
+        put(o, "F12", f[2] * t);
+        put(o, "M1", mm[0] * t * t);
+        put(o, "M2", mm[1] * t * t);
+        put(o, "M12", mm[2] * t * t);
+        put(o, "IEM", g.e_int[k]);
+        put(o, "OFF", g.off[k]);
+      }
+      break;
+    case K::Brick:
+      for (std::size_t o = 0; o < objects_.size(); ++o) {
+        const auto [gi, i] = slots_[o];
+        if (gi < 0) continue;
+        const auto& g = e.brick_groups()[static_cast<std::size_t>(gi)];
+        const auto k = static_cast<std::size_t>(i);
+        const char* names[6] = {"SX", "SY", "SZ", "SXY", "SYZ", "SXZ"};
+        for (std::size_t c = 0; c < 6; ++c) put(o, names[c], g.sig[c * kGroupSize + k]);
+        double v[3] = {0, 0, 0};
+        for (std::size_t c = 0; c < 8; ++c) {
+          const auto n = static_cast<std::size_t>(g.conn[c * kGroupSize + k]);
+          v[0] += (s.vx[n] + h * s.ax[n]) / 8;
+          v[1] += (s.vy[n] + h * s.ay[n]) / 8;
+          v[2] += (s.vz[n] + h * s.az[n]) / 8;
+        }
+        put(o, "OFF", g.off[k]);
+        put(o, "IE", g.vol0[k] > 0 ? g.e_int[k] / g.vol0[k] : 0.0);
+        put(o, "DENS", g.rho[k]);
+        put(o, "BULK", g.q[k]);
+        put(o, "VOL", g.vol[k]);
+        put(o, "PLAS", g.eps_p[k]);
+        put(o, "PLSR", g.rate[k]);
+        put(o, "VX", v[0]);
+        put(o, "VY", v[1]);
+        put(o, "VZ", v[2]);
+      }
+      break;
+    case K::Rbody: {
+      const auto& formed = e.kinematics().rigid_bodies().bodies();
+      for (std::size_t o = 0; o < objects_.size(); ++o) {
+        const RigidBodyInfo* b = bodies_[o] < 0 ? nullptr : &formed[static_cast<std::size_t>(bodies_[o])];
+        const auto main = b ? b->main : m.rigid_bodies[static_cast<std::size_t>(objects_[o])].main_node;
+        if (main == model::kNone) continue;
+        const auto n = static_cast<std::size_t>(main);
+        const char* axes[3] = {"X", "Y", "Z"};
+        const double x[3] = {s.x[n], s.y[n], s.z[n]}, x0[3] = {s.x0[n], s.y0[n], s.z0[n]};
+        const double v[3] = {s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]};
+        const double a[3] = {s.ax[n], s.ay[n], s.az[n]};
+        const double w[3] = {s.wx[n] + h * s.awx[n], s.wy[n] + h * s.awy[n], s.wz[n] + h * s.awz[n]};
+        const double aw[3] = {s.awx[n], s.awy[n], s.awz[n]};
+        for (std::size_t d = 0; d < 3; ++d) {
+          const std::string ax = axes[d];
+          put(o, ax, x[d]);
+          put(o, "D" + ax, x[d] - x0[d]);
+          put(o, "V" + ax, v[d]);
+          put(o, "A" + ax, a[d]);
+          put(o, "VR" + ax, w[d]);
+          put(o, "AR" + ax, aw[d]);
+          if (b) {
+            put(o, "F" + ax, b->secondary_force[d]);
+            put(o, "M" + ax, b->secondary_moment[d]);
+            put(o, "R" + ax, b->rotation[d]);
+          }
+        }
+        put(o, "MASS", s.mass[n]);
+        put(o, "STATUS", b ? 1.0 : 0.0);
+        if (b) {
+          const auto inertia = current_inertia(*b);
+          const char* names[6] = {"IXX", "IYY", "IZZ", "IXY", "IYZ", "IZX"};
+          for (std::size_t c = 0; c < 6; ++c) put(o, names[c], inertia[c]);
         }
       }
       break;

@@ -16,10 +16,24 @@
 // Per rigid wall: FN, FT the normal and tangential force of the last cycle.
 // Per interface: FN, FT the sums over the secondary nodes of the normal (with damping) and friction forces
 // of the last cycle; CE_ELAST, CE_FRIC, CE_DAMP the booked contact energies.
-// Per 4-node shell: F1 F2 F12 = t x mean stress (membrane forces per unit length, element frame),
-// M1 M2 M12 = t^2 sum m_i sigma_i (moments per unit length), IEM = the element's internal energy (radx
-// does not split membrane and bending energy), IEB = 0, OFF the kill factor, EMIN EMAX = 0 (strains are
-// not kept). The starter lists these limits (deck check warning) where a deck asks for them.
+// Per 4-node shell (/TH/SHEL) and per 3-node shell (/TH/SH3N): F1 F2 F12 = t x mean stress (membrane forces
+// per unit length, element frame: the triangle's x axis along n1 -> n2), M1 M2 M12 = t^2 sum m_i sigma_i
+// (moments per unit length), IEM = the element's internal energy (radx does not split membrane and bending
+// energy), IEB = 0, OFF the kill factor, EMIN EMAX = 0 (strains are not kept).
+// Per brick (/TH/BRIC), the one integration point: OFF the kill factor; SX SY SZ SXY SYZ SXZ the Cauchy
+// stress, global axes, without the bulk viscosity; IE = internal energy / initial volume (energy density, as
+// OpenRadioss's EINT); DENS = rho0 V0 / V; BULK = q, the bulk-viscosity pressure (> 0 in compression);
+// VOL = V; PLAS the plastic strain; PLSR the strain-rate measure of hex8_fb.cpp; VX VY VZ the mean of the
+// eight nodes' velocities at the full step; TEMP = 0 (no thermal analysis).
+// Per rigid body (/TH/RBODY): FX FY FZ, MX MY MZ the force and the moment about the main node that the body
+// receives at its secondary nodes in the last cycle (elements, contact, loads on them; what acts on the
+// main node itself, its loads and the body's weight, is not in them: OpenRadioss rgbodfp.F); RX RY RZ = sum
+// of omega dt since t = 0 (global components of the rotation, exact for a rotation about a fixed axis); FXI..
+// MZI = 0 (TYPE14 and TYPE15 interfaces do not exist in radx); X Y Z, DX DY DZ, VX.., AX.., VRX.., ARX.. the
+// main node's, as for /TH/NODE; MASS the body's mass; IXX IYY IZZ IXY IYZ IZX the inertia tensor in use,
+// global axes, about the main node, at the current orientation; STATUS 1 for a body formed in this run, 0 for
+// one switched off by /RBODY/OFF (its forces, rotation and inertia are then 0 and its main node is a free
+// node). The starter lists the variables written as 0 (deck check warning) where a deck asks for them.
 #pragma once
 
 #include <cstdint>
@@ -61,6 +75,10 @@ class ThGroupSampler {
   // Parts and subsets: for each part, (node, mass share) of its nodes; for each object, its parts.
   std::vector<std::vector<std::pair<std::int32_t, double>>> part_nodes_;
   std::vector<std::vector<std::int32_t>> object_parts_;
+  // Elements: for each object, its (group, slot) in the engine's element groups ({-1, -1}: in none).
+  // Rigid bodies: for each object, its index in the bodies formed in this run (-1: switched off).
+  std::vector<std::pair<int, int>> slots_;
+  std::vector<int> bodies_;
 };
 
 }  // namespace radx::solver

@@ -240,7 +240,8 @@ struct RigidBody {
   std::vector<std::int32_t> secondary;  // main node removed
 };
 
-enum class ThKind : std::uint8_t { Node, Part, Inter, Rwall, Shell, Subset };
+// Stored as its integer in the model file (docs/model-file.md): new kinds go at the end.
+enum class ThKind : std::uint8_t { Node, Part, Inter, Rwall, Shell, Subset, Brick, Shell3, Rbody };
 struct TimeHistoryGroup {
   std::int64_t id = 0;
   std::string title;

@@ -534,6 +534,30 @@ DeckSpec full_deck(int v) {
     k.th_vars = {"IE", "KE"};
     k.id_lines = {{601}};
   }
+  {
+    Kw& k = d.titled("/TH/BRIC/1008", "/TH/BRIC", 1008, "bricks");
+    k.var_lines = {{"DEF", "VOL"}};
+    k.th_vars = {"DEF", "VOL"};
+    k.records = {CardSpec{x.I("id", 1, 10), Sl("name", 21, 100, "brick a")}};
+  }
+  {
+    Kw& k = d.titled("/TH/BRICK/1009", "/TH/BRIC", 1009, "bricks, long spelling");
+    k.var_lines = {{"STRESS"}};
+    k.th_vars = {"STRESS"};
+    k.records = {CardSpec{x.I("id", 1, 10), Sl("name", 21, 100, "brick b")}};
+  }
+  {
+    Kw& k = d.titled("/TH/SH3N/1010", "/TH/SH3N", 1010, "triangles");
+    k.var_lines = {{"F1", "IEM"}};
+    k.th_vars = {"F1", "IEM"};
+    k.records = {th_record("triangle a"), th_record("triangle b")};
+  }
+  {
+    Kw& k = d.titled("/TH/RBODY/1011", "/TH/RBODY", 1011, "rigid bodies");
+    k.var_lines = {{"DEF", "MASS"}};
+    k.th_vars = {"DEF", "MASS"};
+    k.id_lines = {{701, 702}};
+  }
   d.add("/DEF_SHELL", "/DEF_SHELL").cards = {
       {x.I("Ishell", 1, 10), x.I("Ismstr", 11, 20), x.I("Ithick", 21, 30), x.I("Iplas", 31, 40),
        x.I("Istrain", 41, 50), x.I("Ioffset", 51, 60).ver(2024), x.I("Ish3n", 71, 80), x.I("Idrill", 81, 90),
@@ -685,6 +709,7 @@ void check_full_deck(int version) {
   CHECK(deck.of("/MAT/LAW1").size() == 3u);
   CHECK(deck.of("/MAT/LAW2").size() == 3u);
   CHECK(deck.of("/TH/SHEL").size() == 2u);
+  CHECK(deck.of("/TH/BRIC").size() == 2u);
 }
 
 }  // namespace
