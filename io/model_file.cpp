@@ -265,7 +265,7 @@ RADX_SCHEMA(Gravity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(function), RA
 RADX_SCHEMA(RigidWall, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(node), RADX_FIELD(slide),
             RADX_FIELD(iform), RADX_FIELD(ifq), RADX_FIELD(group1), RADX_FIELD(group2), RADX_FIELD(distance),
             RADX_FIELD(friction), RADX_FIELD(diameter), RADX_FIELD(ffac), RADX_FIELD(mass), RADX_FIELD(m),
-            RADX_FIELD(m1), RADX_FIELD(v0), RADX_FIELD(normal), RADX_FIELD(secondary));
+            RADX_FIELD(m1), RADX_FIELD(v0), RADX_FIELD(normal), RADX_FIELD(secondary), RADX_FIELD(shape));
 RADX_SCHEMA(RigidBody, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(main_node), RADX_FIELD(sensor),
             RADX_FIELD(skew), RADX_FIELD(ispher), RADX_FIELD(ikrem), RADX_FIELD(icog), RADX_FIELD(ioptoff),
             RADX_FIELD(iexpams), RADX_FIELD(ifail), RADX_FIELD(mass), RADX_FIELD(inertia), RADX_FIELD(fn),

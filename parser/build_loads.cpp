@@ -5,7 +5,8 @@
 // * Loads: value = Fscale_y f(t / Ascale_x), both scales 0 -> 1; the function is required except for
 //   /GRAV (0 = constant); /GRAV grnod_ID 0 = all nodes.
 // * /RWALL/PLANE: normal n = (M1 - M)/|M1 - M|; secondary nodes = grnd_ID1 + every node with
-//   0 <= (X - M).n <= d at t = 0 (when d > 0) - grnd_ID2 (elements.md 7.1).
+//   0 <= (X - M).n <= d at t = 0 (when d > 0) - grnd_ID2 (elements.md 7.1). /RWALL/CYL: the same with the
+//   axis (M1 - M)/|M1 - M| and the height above the cylinder surface; /RWALL/SPHER: centre M, no M1.
 // * /RBODY: the main node is removed from the secondary group; Ispher 0 -> 2, ICoG 0 -> 1 (elements.md 7.2).
 // * /TH/*: group names (DEF, D, V, ...) are expanded to variables; objects resolve to dense indices; the
 //   variables radx accepts but writes as 0 are named in a warning.
@@ -344,12 +345,21 @@ model::Vec3 node_point(const model::Nodes& n, std::int32_t k) {
 }
 
 // grnd_ID1 + nodes within d on the positive side - grnd_ID2, without the wall's own node; sorted, unique.
+// The height of a point above the wall: along the normal (plane), from the surface of the cylinder (radial
+// distance to the axis minus the radius) or of the sphere.
+double wall_height(const model::RigidWall& w, const model::Vec3& x) {
+  const model::Vec3 d = model::sub(x, w.m);
+  if (w.shape == 0) return model::dot(d, w.normal);
+  const double along = w.shape == 1 ? model::dot(d, w.normal) : 0.0;
+  return model::norm(model::sub(d, model::scale(w.normal, along))) - 0.5 * w.diameter;
+}
+
 NodeList wall_secondary(ModelBuilder& b, const model::RigidWall& w, bool normal_ok) {
   NodeList s = nodes_of(b, w.group1);
   if (normal_ok && w.distance > 0) {
     for (std::size_t n = 0; n < b.m_.nodes.size(); ++n) {
       const auto k = static_cast<std::int32_t>(n);
-      const double h = model::dot(model::sub(node_point(b.m_.nodes, k), w.m), w.normal);
+      const double h = wall_height(w, node_point(b.m_.nodes, k));
       if (h >= 0 && h <= w.distance) s.push_back(k);
     }
   }
@@ -379,8 +389,9 @@ bool wall_normal(ModelBuilder& b, const KeywordRecord& r, model::RigidWall& w, d
   return false;
 }
 
-model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double size) {
+model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double size, int shape) {
   model::RigidWall w;
+  w.shape = shape;
   bool placed = true;  // M is known
   if (const std::int64_t node = r.get_int("node_ID"); node != 0) {
     w.node = b.node_ref(node, r, field_pos(r, "node_ID"), "node_ID (node carrying the moving wall)");
@@ -410,7 +421,8 @@ model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double
   w.diameter = r.get_real("Diameter");
   w.ffac = r.get_real("ffac");
   w.m1 = reals3(r, "XM1", "YM1", "ZM1");
-  const bool defined = placed && wall_normal(b, r, w, size);
+  // A sphere has no axis: its normal is radial at each node (the engine computes it).
+  const bool defined = placed && (shape == 2 || wall_normal(b, r, w, size)) && (shape == 0 || w.diameter > 0);
   w.secondary = wall_secondary(b, w, defined);
   if (defined && w.secondary.empty())
     b.warning_at(
@@ -693,8 +705,10 @@ void ModelBuilder::build_loads() {
 
 void ModelBuilder::build_rigid_walls() {
   const double size = model_size(m_.nodes);
-  build_each(*this, "/RWALL/PLANE", "rigid wall", m_.rigid_walls, rwall_ids_,
-             [&](const KeywordRecord& r) { return make_rigid_wall(*this, r, size); });
+  // One id space for the three wall shapes.
+  for (const auto& [path, shape] : {std::pair{"/RWALL/PLANE", 0}, {"/RWALL/CYL", 1}, {"/RWALL/SPHER", 2}})
+    build_each(*this, path, "rigid wall", m_.rigid_walls, rwall_ids_,
+               [&](const KeywordRecord& r) { return make_rigid_wall(*this, r, size, shape); });
 }
 
 void ModelBuilder::build_rigid_bodies() {

@@ -787,6 +787,79 @@ void add_rigid(std::vector<KeywordDecl>& t) {
   }
   {
     KeywordDecl k =
+        kw("/RWALL/CYL", "infinite rigid cylinder (axis through M and M1) keeping secondary nodes outside",
+           Header::IdUnit, true, "rwall_ID");
+    k.cards = {
+        card("card 1",
+             {I("node_ID", 1, 10, "node carrying a moving wall; 0 = fixed wall"),
+              I("Slide", 11, 20, "0 frictionless sliding, 1 tied, 2 Coulomb friction").allow({0, 1, 2}),
+              I("grnd_ID1", 21, 30, "secondary nodes"),
+              I("grnd_ID2", 31, 40, "nodes removed from the secondary set"),
+              I("Iform", 41, 50, "0 kinematic, 1 penalty").versions(2026).allow({0, 1})}),
+        card_if("card 2 (Slide = 2)", when_eq("Slide", 2),
+                {R("d", 1, 20, "search distance: nodes outside the wall within it become secondary")
+                     .dims(dim::length),
+                 R("fric", 21, 40, "Coulomb friction coefficient").ge(0.0),
+                 R("Diameter", 41, 60, "diameter").dims(dim::length).must().gt(0.0),
+                 R("ffac", 61, 80, "friction filtering factor"),
+                 I("ifq", 81, 90, "friction filtering: 0 none, 1 user factor, 2 period, 3 cut-off frequency")
+                     .allow({0, 1, 2, 3})}),
+        card_if("card 2 (Slide != 2)", when_ne("Slide", 2),
+                {R("d", 1, 20, "search distance: nodes outside the wall within it become secondary")
+                     .dims(dim::length),
+                 R("Diameter", 41, 60, "diameter").dims(dim::length).must().gt(0.0)}),
+        card_if("card 3 (fixed wall)", when_eq("node_ID", 0),
+                {R("XM", 1, 20, "point M on the axis, X").dims(dim::length),
+                 R("YM", 21, 40, "point M on the axis, Y").dims(dim::length),
+                 R("ZM", 41, 60, "point M on the axis, Z").dims(dim::length)}),
+        card_if("card 3 (moving wall)", when_gt("node_ID", 0),
+                {R("Mass", 1, 20, "mass added to the wall node").dims(dim::mass),
+                 R("VX0", 21, 40, "initial X velocity of the wall node").dims(dim::velocity),
+                 R("VY0", 41, 60, "initial Y velocity of the wall node").dims(dim::velocity),
+                 R("VZ0", 61, 80, "initial Z velocity of the wall node").dims(dim::velocity)}),
+        card("card 4",
+             {R("XM1", 1, 20, "second point M1 on the axis, X; the axis runs from M to M1").dims(dim::length),
+              R("YM1", 21, 40, "second point M1, Y").dims(dim::length),
+              R("ZM1", 41, 60, "second point M1, Z").dims(dim::length)}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/RWALL/SPHER", "rigid sphere (centre M) keeping secondary nodes outside",
+                       Header::IdUnit, true, "rwall_ID");
+    k.cards = {
+        card("card 1",
+             {I("node_ID", 1, 10, "node carrying a moving wall; 0 = fixed wall"),
+              I("Slide", 11, 20, "0 frictionless sliding, 1 tied, 2 Coulomb friction").allow({0, 1, 2}),
+              I("grnd_ID1", 21, 30, "secondary nodes"),
+              I("grnd_ID2", 31, 40, "nodes removed from the secondary set"),
+              I("Iform", 41, 50, "0 kinematic, 1 penalty").versions(2026).allow({0, 1})}),
+        card_if("card 2 (Slide = 2)", when_eq("Slide", 2),
+                {R("d", 1, 20, "search distance: nodes outside the wall within it become secondary")
+                     .dims(dim::length),
+                 R("fric", 21, 40, "Coulomb friction coefficient").ge(0.0),
+                 R("Diameter", 41, 60, "diameter").dims(dim::length).must().gt(0.0),
+                 R("ffac", 61, 80, "friction filtering factor"),
+                 I("ifq", 81, 90, "friction filtering: 0 none, 1 user factor, 2 period, 3 cut-off frequency")
+                     .allow({0, 1, 2, 3})}),
+        card_if("card 2 (Slide != 2)", when_ne("Slide", 2),
+                {R("d", 1, 20, "search distance: nodes outside the wall within it become secondary")
+                     .dims(dim::length),
+                 R("Diameter", 41, 60, "diameter").dims(dim::length).must().gt(0.0)}),
+        card_if("card 3 (fixed wall)", when_eq("node_ID", 0),
+                {R("XM", 1, 20, "centre M, X").dims(dim::length),
+                 R("YM", 21, 40, "centre M, Y").dims(dim::length),
+                 R("ZM", 41, 60, "centre M, Z").dims(dim::length)}),
+        card_if("card 3 (moving wall)", when_gt("node_ID", 0),
+                {R("Mass", 1, 20, "mass added to the wall node").dims(dim::mass),
+                 R("VX0", 21, 40, "initial X velocity of the wall node").dims(dim::velocity),
+                 R("VY0", 41, 60, "initial Y velocity of the wall node").dims(dim::velocity),
+                 R("VZ0", 61, 80, "initial Z velocity of the wall node").dims(dim::velocity)}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
         kw("/RBODY", "rigid body: a main node driving a node group", Header::IdUnit, true, "rbody_ID");
     k.cards = {
         card("card 1",
@@ -1012,9 +1085,8 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         // constraints, kinematics, loads, initial state
         "/SKEW/MOV", "/SKEW/MOV2", "/FRAME", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT", "/MPC",
         "/GJOINT", "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPDISP/FGEO", "/IMPACC", "/IMPTEMP", "/INIVEL/GRID",
-        "/INIVEL/AXIS", "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD", "/RWALL/CYL",
-        "/RWALL/SPHER", "/RWALL/PARAL", "/RWALL/LAGMUL", "/RWALL/THERM", "/INISHE", "/INIBRI", "/INISH3",
-        "/INITEMP", "/INISTA",
+        "/INIVEL/AXIS", "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD", "/RWALL/PARAL",
+        "/RWALL/LAGMUL", "/RWALL/THERM", "/INISHE", "/INIBRI", "/INISH3", "/INITEMP", "/INISTA",
         // physics and model structure
         "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
         "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS/2", "/ADMAS/3", "/ADMAS/4", "/ADMAS/5", "/ADMAS/6",

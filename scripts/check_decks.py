@@ -224,6 +224,14 @@ def rwall_plane(v):
             card(reals("XM1", "YM1", "ZM1"))]
 
 
+def rwall_curved(v, with_m1):
+    """/RWALL/CYL (with M1, the axis) and /RWALL/SPHER (without): as /RWALL/PLANE, the diameter on card 2
+    whatever Slide is."""
+    cards = rwall_plane(v)
+    cards[2] = card([F("d", "R", 1, 20), F("Diameter", "R", 41, 60)], cond=lambda x: x.get("Slide", 0) != 2)
+    return cards if with_m1 else cards[:-1]
+
+
 def cload(v):
     f = [F("funct_IDT", "I", 1, 10), F("Dir", "S", 11, 20), F("skew_ID", "I", 21, 30), F("sensor_ID", "I", 31, 40),
          F("grnod_ID", "I", 41, 50)]
@@ -296,6 +304,8 @@ STARTER = {
     "/SKEW/FIX": ("id", True, skew_fix, None, None),
     "/CLOAD": ("id", True, cload, None, None),
     "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
+    "/RWALL/CYL": ("id", True, lambda v: rwall_curved(v, True), None, None),
+    "/RWALL/SPHER": ("id", True, lambda v: rwall_curved(v, False), None, None),
     "/RBODY": ("id", True, rbody, None, None),
     "/FUNCT": ("id", True, lambda v: [], "records", FUNCT_REC),
     "/TH/NODE": ("id", True, lambda v: [], "threcords", THNODE_REC),
@@ -896,7 +906,12 @@ def semantic(ck, m):
     for o in m.of("/CLOAD"):
         need(o, "funct_IDT", functs, "function", zero_ok=False)
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
-    for o in m.of("/RWALL/PLANE"):
+    for o in m.of("/RWALL/CYL", "/RWALL/SPHER"):
+        if val(o, "Diameter", 0.0) <= 0:
+            p = pos(o, "Diameter")
+            I("RX502" if val(o, "Diameter", 0.0) == 0 else "RX501", p[0], p[1],
+              "%s %d: Diameter must be > 0" % (o["path"], o["id"]))
+    for o in m.of("/RWALL/PLANE", "/RWALL/CYL", "/RWALL/SPHER"):
         need(o, "grnd_ID1", grnods, "node group")
         need(o, "grnd_ID2", grnods, "node group")
 

@@ -766,6 +766,19 @@ def _():
     return d, "/TH/RBODY/1 ends after its title: no variable line (and no object)", [("RX502", "TH_KW")]
 
 
+@fault("rwall_sphere_no_diameter")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", [("/RWALL/SPHER/1", "RWS_KW"), "Sphere without a diameter",
+                                   names(("node_ID", 10), ("Slide", 10), ("grnd_ID1", 10), ("grnd_ID2", 10),
+                                         ("Iform", 10)),
+                                   line(I(0), I(0), I(1), I(0), I(0)),
+                                   names(("d", 20), ("", 20), ("Diameter", 20)),
+                                   (line(R(0.0), blank(20), R(0.0)), "RWS_C2"),
+                                   names(("XM", 20), ("YM", 20), ("ZM", 20)), line(R(0.0), R(0.0), R(-50.0))])
+    return d, "/RWALL/SPHER/1 with Diameter = 0: a sphere wall needs a diameter", [("RX502", "RWS_C2")]
+
+
 @fault("several_errors")
 def _():
     d = base()

@@ -8,7 +8,10 @@ namespace radx::solver {
 
 RigidWalls::RigidWalls(const model::Model& m) {
   for (const auto& w : m.rigid_walls) {
-    const std::string what = "/RWALL/PLANE/" + std::to_string(w.id);
+    const std::string what = std::string(w.shape == 1   ? "/RWALL/CYL/"
+                                         : w.shape == 2 ? "/RWALL/SPHER/"
+                                                        : "/RWALL/PLANE/") +
+                             std::to_string(w.id);
     if (w.iform != 0)
       throw std::runtime_error(what + ": Iform = " + std::to_string(w.iform) +
                                " (penalty formulation) is not supported by the radx engine; use Iform = 0 "
@@ -18,10 +21,13 @@ RigidWalls::RigidWalls(const model::Model& m) {
     if (w.slide == 2 && w.ifq != 0)
       throw std::runtime_error(what + ": friction filtering ifq = " + std::to_string(w.ifq) +
                                " is not supported by the radx engine; use ifq = 0 (no filter)");
-    const double nn =
-        std::sqrt(w.normal[0] * w.normal[0] + w.normal[1] * w.normal[1] + w.normal[2] * w.normal[2]);
+    double nn = std::sqrt(w.normal[0] * w.normal[0] + w.normal[1] * w.normal[1] + w.normal[2] * w.normal[2]);
+    if (w.shape == 2) nn = 1.0;  // a sphere has no axis
     if (!(nn > 0)) throw std::runtime_error(what + ": the wall normal is undefined (M1 = M)");
     Wall out;
+    out.shape = w.shape;
+    out.radius = 0.5 * w.diameter;
+    if (w.shape != 0 && !(out.radius > 0)) throw std::runtime_error(what + ": the diameter must be > 0");
     out.node = w.node;
     out.slide = w.slide;
     out.friction = w.slide == 2 ? w.friction : 0.0;
@@ -69,6 +75,34 @@ void RigidWalls::apply_wall_node_forces(NodeState& s) const {
   }
 }
 
+// Cylinder (axis a through the wall point) and sphere (centre at the wall point): in contact when the
+// predicted position x* is inside, |x* - x_w|_perp <= R (cylinder) or |x* - x_w| <= R (sphere), with no test
+// on the approach speed (Radioss rgwalc.F, rgwals.F); the normal is the outward radial direction at the
+// node's current position. A node on the axis or at the centre has no normal and is left free.
+bool RigidWalls::curved_contact(const Wall& w, const NodeState& s, std::size_t n, double vsx, double vsy,
+                                double vsz, double dt2, double xwx, double xwy, double xwz, double xw0x,
+                                double xw0y, double xw0z, double& nx, double& ny, double& nz) {
+  const bool cyl = w.shape == 1;
+  auto radial = [&](double dx, double dy, double dz, double& rx, double& ry, double& rz) {
+    const double along = cyl ? dx * w.normal[0] + dy * w.normal[1] + dz * w.normal[2] : 0.0;
+    rx = dx - along * w.normal[0];
+    ry = dy - along * w.normal[1];
+    rz = dz - along * w.normal[2];
+    return rx * rx + ry * ry + rz * rz;
+  };
+  double rx, ry, rz;
+  const double r2_pred =
+      radial(s.x[n] + vsx * dt2 - xwx, s.y[n] + vsy * dt2 - xwy, s.z[n] + vsz * dt2 - xwz, rx, ry, rz);
+  if (r2_pred > w.radius * w.radius) return false;
+  const double r2 = radial(s.x[n] - xw0x, s.y[n] - xw0y, s.z[n] - xw0z, rx, ry, rz);
+  if (!(r2 > 0)) return false;
+  const double inv = 1.0 / std::sqrt(r2);
+  nx = rx * inv;
+  ny = ry * inv;
+  nz = rz * inv;
+  return true;
+}
+
 double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
   const double dt12 = 0.5 * (dt1 + dt2);
   const double fact = dt12 != 0 ? 1.0 / dt12 : 0.0;
@@ -76,10 +110,14 @@ double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
   for (std::size_t k = 0; k < walls_.size(); ++k) {
     auto& w = walls_[k];
     auto& o = out_[k];
-    const double nx = w.normal[0], ny = w.normal[1], nz = w.normal[2];
+    const double ax_ = w.normal[0], ay_ = w.normal[1], az_ = w.normal[2];  // plane normal or cylinder axis
     double vwx = 0, vwy = 0, vwz = 0;
     double xwx = w.point[0], xwy = w.point[1], xwz = w.point[2];
+    double xw0x = xwx, xw0y = xwy, xw0z = xwz;  // the wall point now (the normal of a curved wall)
     if (w.node != model::kNone) {
+      xw0x = s.x[static_cast<std::size_t>(w.node)];
+      xw0y = s.y[static_cast<std::size_t>(w.node)];
+      xw0z = s.z[static_cast<std::size_t>(w.node)];
       const auto m = static_cast<std::size_t>(w.node);
       vwx = s.vx[m] + s.ax[m] * dt12;
       vwy = s.vy[m] + s.ay[m] * dt12;
@@ -97,10 +135,15 @@ double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
       // Prediction.
       const double vsx = s.vx[n] + s.ax[n] * dt12, vsy = s.vy[n] + s.ay[n] * dt12,
                    vsz = s.vz[n] + s.az[n] * dt12;
-      const double gap =
-          (s.x[n] + vsx * dt2 - xwx) * nx + (s.y[n] + vsy * dt2 - xwy) * ny + (s.z[n] + vsz * dt2 - xwz) * nz;
-      if (gap > 0) continue;
-      if ((vsx - vwx) * nx + (vsy - vwy) * ny + (vsz - vwz) * nz > 0) continue;
+      double nx = ax_, ny = ay_, nz = az_;
+      if (w.shape == 0) {
+        const double gap = (s.x[n] + vsx * dt2 - xwx) * nx + (s.y[n] + vsy * dt2 - xwy) * ny +
+                           (s.z[n] + vsz * dt2 - xwz) * nz;
+        if (gap > 0) continue;
+        if ((vsx - vwx) * nx + (vsy - vwy) * ny + (vsz - vwz) * nz > 0) continue;
+      } else if (!curved_contact(w, s, n, vsx, vsy, vsz, dt2, xwx, xwy, xwz, xw0x, xw0y, xw0z, nx, ny, nz)) {
+        continue;
+      }
       ++contacts;
       const double m = s.mass[n];
       // Normal impulse and work.

@@ -72,6 +72,8 @@ class RigidWalls {
  private:
   struct Wall {
     std::int32_t node = model::kNone;  // moving wall node
+    int shape = 0;                     // 0 plane (normal), 1 cylinder (axis `normal`), 2 sphere
+    double radius = 0;                 // cylinder and sphere
     int slide = 0;
     double friction = 0, added_mass = 0;
     std::array<double, 3> point{}, normal{}, v0{};
@@ -79,6 +81,9 @@ class RigidWalls {
     std::array<double, 3> force_prev{};  // sum(Fn + Ft)/dt12 of the last cycle, on the wall
     double contact_mass_prev = 0;
   };
+  static bool curved_contact(const Wall& w, const NodeState& s, std::size_t n, double vsx, double vsy,
+                             double vsz, double dt2, double xwx, double xwy, double xwz, double xw0x,
+                             double xw0y, double xw0z, double& nx, double& ny, double& nz);
   std::vector<Wall> walls_;
   std::vector<RigidWallOutput> out_;
 };

@@ -224,6 +224,8 @@ struct RigidWall {
   double distance = 0, friction = 0, diameter = 0, ffac = 0, mass = 0;
   std::array<double, 3> m{}, m1{}, v0{}, normal{};
   std::vector<std::int32_t> secondary;  // resolved secondary nodes (group1 + distance - group2)
+  int shape =
+      0;  // 0 /RWALL/PLANE (normal), 1 /RWALL/CYL (axis M -> M1 in `normal`), 2 /RWALL/SPHER (centre M)
 };
 
 struct RigidBody {

@@ -674,6 +674,51 @@ TEST_CASE("moving rigid wall: the node takes the wall's velocity, the wall slows
   CHECK(close(s.vz[1], 1.0, 1e-12));
 }
 
+TEST_CASE("sphere and cylinder walls: the radial velocity is removed on contact, the tangential one kept",
+          "[loads]") {
+  // A free node (mass 1) heading for a fixed cylinder (axis Z through the origin, diameter 2) at velocity
+  // (-1, 0, 0.5), or for a fixed sphere (centre 0, diameter 2) at (-1, 0, 0), from x = 1.1: it reaches r = 1
+  // after 0.1 s and stops radially there (perfectly plastic), keeping vz (along the cylinder's axis), never
+  // inside; the normal work is -1/2 m u^2 with u = 1 the radial approach speed (elements.md 7.1, the law of
+  // the plane).
+  for (const int shape : {1, 2}) {
+    DYNAMIC_SECTION((shape == 1 ? "cylinder" : "sphere")) {
+      auto md = nodes_model({{1.1, 0, 0}});
+      m::RigidWall w;
+      w.id = 1;
+      w.shape = shape;
+      w.diameter = 2.0;
+      w.m = {0, 0, 0};
+      w.m1 = {0, 0, 1};
+      w.normal = {0, 0, 1};
+      w.secondary = {0};
+      md.rigid_walls.push_back(w);
+      auto s = state_of(md, {1.0});
+      const double vz0 = shape == 1 ? 0.5 : 0.0;
+      s.vx[0] = -1.0;
+      s.vz[0] = vz0;
+      sv::RigidWalls walls(md);
+      walls.initialize(s);
+      const double dt = 1e-3;
+      double dt1 = 0, work = 0, rmin = 10;
+      for (int k = 0; k < 300; ++k) {
+        zero_forces(s);
+        accelerations(s);
+        work += walls.apply(s, dt1, dt);
+        update(s, dt1, dt);
+        dt1 = dt;
+        const double r = shape == 1 ? std::hypot(s.x[0], s.y[0]) : std::hypot(s.x[0], s.y[0], s.z[0]);
+        rmin = std::min(rmin, r);
+      }
+      CHECK(std::abs(s.vx[0]) <= 1e-12);  // stopped radially
+      CHECK(s.vy[0] == 0.0);
+      CHECK(s.vz[0] == vz0);       // along the axis: tangential, kept
+      CHECK(rmin >= 1.0 - 1e-12);  // never inside
+      CHECK(close(work, -0.5, 1e-9));
+    }
+  }
+}
+
 TEST_CASE("moving rigid wall without mass: refused unless its motion is imposed in X, Y and Z, then followed",
           "[loads]") {
   // Node 0 carries the wall (normal +z, no mass, no wall Mass); node 1 (mass 1) at rest 0.0105 above it.
