@@ -1,11 +1,31 @@
-// Deck -> Model: boxes, functions, node groups and surfaces (deck-format.md: /BOX/RECTA, /FUNCT,
-// /GRNOD/*, /SURF/PART, /SURF/PART/EXT, /SURF/SEG, and section 5.5). Negative ids subtract in
+// Deck -> Model: boxes, functions, element groups, node groups and surfaces (deck-format.md: /BOX/RECTA,
+// /FUNCT, /GRNOD/*, /SURF/PART, /SURF/PART/EXT, /SURF/SEG, and section 5.5). Negative ids subtract in
 // /GRNOD/PART and /GRNOD/GRNOD, and flip the segment normal in /SURF/PART (they never remove there).
 // /SURF/PART/EXT keeps the brick faces that no other brick of the listed parts shares, oriented
 // outward, plus the shell segments of the listed parts.
+//
+// Element groups (/GRSHEL, /GRSH3N, /GRBRIC) and what is built from them follow the OpenRadioss starter
+// (starter/source/groups: hm_lecgre.F, hm_tagpart.F, hm_grogro.F, hm_elngr.F, hm_read_surf.F, hm_surfgr2.F,
+// surftage.F, ssurftag.F; model/box/bigbox.F), read for behaviour only:
+// * PART, SUBSET, MAT, PROP, GRSHEL/GRSH3N/GRBRIC: Radioss reads the positive ids, then the negative ones,
+//   and a negative id's tag overrides, so a negative id removes (a set difference, whatever the order).
+// * BOX selects the elements whose nodes all lie in the box (boundary included), BOX2 those with at least
+//   one node in it. Radioss takes the first box id of the list only; the others are ignored (a warning).
+// * /SURF/GRSHEL, /SURF/GRSH3N: one segment per element, as the element is numbered; an element reached
+//   only through a negative id is flipped (positive ids are tagged first and the first tag stays).
+// * /SURF/GRBRIC/EXT: the faces of the groups' bricks that no other brick of the groups shares; /FREE:
+//   that no other brick of the model shares; plain /SURF/GRBRIC is refused, as Radioss refuses it.
+// * /SURF/PART/ALL: every face of every brick of the listed parts, inner faces included (once from each
+//   side, each pointing out of its brick), plus the shell segments. In /SURF/PART/EXT and /ALL a brick
+//   face that a shell of a listed part covers is left out: the shell gives that segment.
+// * /GRNOD/GRSHEL, /GRSH3N, /GRBRIC: the nodes of the groups' elements; Radioss ignores negative ids there.
+// Where Radioss only warns about an id that does not exist, radx stops (RX402), as it does for /GRNOD.
 #include <algorithm>
+#include <array>
 #include <map>
+#include <set>
 #include <sstream>
+#include <string_view>
 
 #include "parser/field_parse.hpp"
 #include "parser/model_builder.hpp"
@@ -33,7 +53,243 @@ void sort_unique(std::vector<std::int32_t>& v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
+// Inside the box or on its boundary.
+bool inside(const model::Box& b, double x, double y, double z) {
+  return x >= b.lo[0] && x <= b.hi[0] && y >= b.lo[1] && y <= b.hi[1] && z >= b.lo[2] && z <= b.hi[2];
+}
+
+// The three element group families: the keyword root, the subtype that lists element ids, the words
+// messages use. Indexed by model::ElementType.
+struct ElementGroupFamily {
+  std::string_view root;             // "/GRSHEL"
+  std::string_view list_kind;        // "SHEL": the subtype that lists element ids
+  std::string_view element;          // "4-node shell"
+  std::string_view element_keyword;  // "/SHELL"
+};
+constexpr std::array<ElementGroupFamily, 3> kFamilies = {{
+    {"/GRSHEL", "SHEL", "4-node shell", "/SHELL"},
+    {"/GRSH3N", "SH3N", "3-node shell", "/SH3N"},
+    {"/GRBRIC", "BRIC", "brick", "/BRICK"},
+}};
+static_assert(static_cast<int>(model::ElementType::Shell4) == 0 &&
+              static_cast<int>(model::ElementType::Shell3) == 1 &&
+              static_cast<int>(model::ElementType::Brick8) == 2);
+const ElementGroupFamily& family(model::ElementType t) {
+  return kFamilies[static_cast<std::size_t>(t)];
+}
+
+// Keeps the distinct nodes of a face in their order and returns how many there are: a degenerate brick
+// repeats nodes, and its face is then a triangle (written n1 n2 n3 n3, as every triangle segment) or,
+// below 3 nodes, no face at all.
+int keep_distinct(std::array<std::int32_t, 4>& f) {
+  int n = 0;
+  for (int k = 0; k < 4; ++k) {
+    bool seen = false;
+    for (int j = 0; j < n; ++j) seen = seen || f[j] == f[k];
+    if (!seen) f[n++] = f[k];
+  }
+  if (n == 3) f[3] = f[2];
+  return n;
+}
+
+// The sorted distinct nodes of a face (-1 fills a triangle's fourth slot): two faces with the same key
+// are one face seen from its two sides.
+FaceKey distinct_key(const std::array<std::int32_t, 4>& f, int n) {
+  FaceKey k{-1, -1, -1, -1};
+  for (int j = 0; j < n; ++j) k[j] = f[j];
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
 }  // namespace
+
+const model::ElementBlock& ModelBuilder::block(model::ElementType type) const {
+  switch (type) {
+    case model::ElementType::Shell4: return m_.shells;
+    case model::ElementType::Shell3: return m_.shells3;
+    case model::ElementType::Brick8: return m_.bricks;
+  }
+  return m_.shells;
+}
+
+void ModelBuilder::subset_parts(std::int32_t s, std::vector<std::int32_t>& out) const {
+  std::vector<std::int32_t> stack{s};
+  std::vector<std::uint8_t> seen(m_.subsets.size(), 0);
+  while (!stack.empty()) {
+    const auto t = stack.back();
+    stack.pop_back();
+    if (seen[t]) continue;
+    seen[t] = 1;
+    out.insert(out.end(), m_.subsets[t].parts.begin(), m_.subsets[t].parts.end());
+    for (auto c : m_.subsets[t].children) stack.push_back(c);
+  }
+}
+
+const ModelBuilder::ElementGroup* ModelBuilder::element_group(model::ElementType type,
+                                                              std::int64_t id) const {
+  const auto& ids = element_group_ids_[static_cast<std::size_t>(type)];
+  const auto it = ids.find(id);
+  return it == ids.end() ? nullptr : &element_groups_[it->second];
+}
+
+void ModelBuilder::build_element_groups() {
+  std::unordered_map<std::int64_t, SourcePos> first[3];
+  for (const auto& r : deck_.records) {
+    const auto path = r.decl->path;
+    for (std::size_t f = 0; f < kFamilies.size(); ++f) {
+      const auto root = kFamilies[f].root;
+      if (path.size() <= root.size() || path.compare(0, root.size(), root) != 0 || path[root.size()] != '/')
+        continue;
+      ElementGroup g;
+      g.record = &r;
+      g.type = static_cast<model::ElementType>(f);
+      if (register_id(element_group_ids_[f], r.id, static_cast<std::int32_t>(element_groups_.size()), r,
+                      std::string(kFamilies[f].element) + " group", first[f]))
+        element_groups_.push_back(std::move(g));
+    }
+  }
+  for (std::size_t g = 0; g < element_groups_.size(); ++g) group_elements(static_cast<std::int32_t>(g));
+}
+
+const std::vector<std::int32_t>* ModelBuilder::group_elements(std::int32_t g) {
+  auto& group = element_groups_[static_cast<std::size_t>(g)];
+  if (group.state == 2) return &group.elements;
+  const KeywordRecord& r = *group.record;
+  const auto& fam = family(group.type);
+  const std::string gname = std::string(fam.element) + " group " + std::to_string(r.id);
+  const std::string self_kind(fam.root.substr(1));  // GRSHEL, GRSH3N, GRBRIC
+  if (group.state == 1) {
+    diags_.error(
+        Diag::InconsistentValues, at(r.pos, 1), about(r),
+        gname + " includes itself through " + std::string(fam.root) + "/" + self_kind + "; remove the loop");
+    return nullptr;
+  }
+  group.state = 1;
+  const std::size_t errors_before = diags_.error_count();
+  const auto& elems = block(group.type);
+  const auto npe = static_cast<std::size_t>(elems.npe());
+  const std::string_view kind = r.decl->path.substr(fam.root.size() + 1);
+  std::vector<std::int32_t> add, remove;
+  auto missing = [&](std::size_t k, const std::string& what) {
+    diags_.error(Diag::MissingReference, at(r.id_pos[k], 1), about(r),
+                 what + " does not exist (listed in " + gname + ")");
+  };
+  if (kind == fam.list_kind) {
+    for (std::size_t k = 0; k < r.ids.size(); ++k) {
+      const std::int64_t id = r.ids[k];
+      const auto e = id > 0 ? elems.index.find(id) : -1;
+      if (id <= 0)
+        diags_.error(Diag::MissingReference, at(r.id_pos[k], 1), about(r),
+                     "there is no " + std::string(fam.element) + " " + std::to_string(id) + ": " +
+                         std::string(r.decl->path) + " lists element ids, which are positive (to leave " +
+                         "elements out, subtract a group with " + std::string(fam.root) + "/" + self_kind +
+                         ")");
+      else if (e < 0)
+        diags_.error(Diag::MissingReference, at(r.id_pos[k], 1), about(r),
+                     std::string(fam.element) + " " + std::to_string(id) + " does not exist: no " +
+                         std::string(fam.element_keyword) + " line defines it (listed in " + gname + ")");
+      else
+        add.push_back(e);
+    }
+  } else if (kind == "PART" || kind == "SUBSET" || kind == "MAT" || kind == "PROP") {
+    // +1 for a part brought in, -1 for a part taken out; -1 wins whatever the order of the ids.
+    std::vector<std::int8_t> tag(m_.parts.size(), 0);
+    for (std::size_t k = 0; k < r.ids.size(); ++k) {
+      const bool negative = r.ids[k] < 0;
+      const std::int64_t id = negative ? -r.ids[k] : r.ids[k];
+      std::vector<std::int32_t> parts;
+      if (kind == "PART") {
+        const auto it = part_ids_.find(id);
+        if (it == part_ids_.end()) {
+          missing(k, "part " + std::to_string(id));
+          continue;
+        }
+        parts.push_back(it->second);
+      } else if (kind == "SUBSET") {
+        const auto it = subset_ids_.find(id);
+        if (it == subset_ids_.end()) {
+          missing(k, "subset " + std::to_string(id));
+          continue;
+        }
+        subset_parts(it->second, parts);
+      } else {
+        const bool mat = kind == "MAT";
+        const auto& index = mat ? mat_ids_ : prop_ids_;
+        const auto it = index.find(id);
+        if (it == index.end()) {
+          missing(k, (mat ? "material " : "property ") + std::to_string(id));
+          continue;
+        }
+        for (std::size_t p = 0; p < m_.parts.size(); ++p)
+          if ((mat ? m_.parts[p].material : m_.parts[p].property) == it->second)
+            parts.push_back(static_cast<std::int32_t>(p));
+      }
+      for (const auto p : parts) tag[p] = negative ? -1 : (tag[p] == 0 ? 1 : tag[p]);
+    }
+    for (std::size_t e = 0; e < elems.size(); ++e)
+      if (elems.part[e] != kNone && tag[elems.part[e]] == 1) add.push_back(static_cast<std::int32_t>(e));
+  } else if (kind == self_kind) {
+    for (std::size_t k = 0; k < r.ids.size(); ++k) {
+      const bool negative = r.ids[k] < 0;
+      const std::int64_t id = negative ? -r.ids[k] : r.ids[k];
+      const auto& ids = element_group_ids_[static_cast<std::size_t>(group.type)];
+      const auto it = ids.find(id);
+      if (it == ids.end()) {
+        missing(k, std::string(fam.element) + " group " + std::to_string(id));
+        continue;
+      }
+      if (const auto* sub = group_elements(it->second)) {
+        auto& dst = negative ? remove : add;
+        dst.insert(dst.end(), sub->begin(), sub->end());
+      }
+    }
+  } else if (kind == "BOX" || kind == "BOX2") {
+    // Radioss reads one box: the first positive id. Boxes are combined with /BOX/BOX, not by listing.
+    std::size_t box_k = r.ids.size();
+    for (std::size_t k = 0; k < r.ids.size(); ++k) {
+      if (box_k == r.ids.size() && r.ids[k] > 0) {
+        box_k = k;
+        continue;
+      }
+      diags_.warning(Diag::ExtraData, at(r.id_pos[k], 1), about(r),
+                     "box id " + std::to_string(r.ids[k]) + " is ignored: " + std::string(r.decl->path) +
+                         " takes one box, the first positive id of its list, as Radioss does");
+    }
+    if (box_k < r.ids.size()) {
+      const auto it = box_ids_.find(r.ids[box_k]);
+      if (it == box_ids_.end()) {
+        diags_.error(Diag::MissingReference, at(r.id_pos[box_k], 1), about(r),
+                     "box " + std::to_string(r.ids[box_k]) + " does not exist: there is no /BOX/RECTA/" +
+                         std::to_string(r.ids[box_k]) + ", the one kind of box radx reads (listed in " +
+                         gname + ")");
+      } else {
+        const auto& b = m_.boxes[it->second];
+        // BOX: every node of the element inside; BOX2: one node inside is enough.
+        const bool every_node = kind == "BOX";
+        for (std::size_t e = 0; e < elems.size(); ++e) {
+          std::size_t in = 0;
+          for (std::size_t k = 0; k < npe; ++k) {
+            const auto n = elems.conn[e * npe + k];
+            if (n >= 0 && inside(b, m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n])) ++in;
+          }
+          if (every_node ? in == npe : in > 0) add.push_back(static_cast<std::int32_t>(e));
+        }
+      }
+    }
+  }
+  sort_unique(add);
+  sort_unique(remove);
+  group.elements.clear();
+  std::set_difference(add.begin(), add.end(), remove.begin(), remove.end(),
+                      std::back_inserter(group.elements));
+  if (group.elements.empty() && diags_.error_count() == errors_before) {
+    diags_.error(Diag::EmptyGroup, at(r.pos, 1), about(r),
+                 gname + " holds no " + std::string(fam.element) +
+                     ": check its list (the surfaces and node groups built from it would hold nothing)");
+  }
+  group.state = 2;
+  return &group.elements;
+}
 
 void ModelBuilder::build_boxes() {
   std::unordered_map<std::int64_t, SourcePos> first;
@@ -180,8 +436,7 @@ const std::vector<std::int32_t>* ModelBuilder::group_nodes(std::int32_t g) {
       }
       const auto& b = m_.boxes[it->second];
       for (std::size_t n = 0; n < m_.nodes.size(); ++n) {
-        const double x = m_.nodes.x[n], y = m_.nodes.y[n], z = m_.nodes.z[n];
-        if (x >= b.lo[0] && x <= b.hi[0] && y >= b.lo[1] && y <= b.hi[1] && z >= b.lo[2] && z <= b.hi[2])
+        if (inside(b, m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n]))
           add.push_back(static_cast<std::int32_t>(n));
       }
     }
@@ -240,16 +495,33 @@ const std::vector<std::int32_t>* ModelBuilder::group_nodes(std::int32_t g) {
         missing(k, "subset", r.ids[k]);
         continue;
       }
-      std::vector<std::int32_t> stack{it->second};
-      std::vector<std::uint8_t> seen(m_.subsets.size(), 0);
-      while (!stack.empty()) {
-        const auto s = stack.back();
-        stack.pop_back();
-        if (seen[s]) continue;
-        seen[s] = 1;
-        for (auto p : m_.subsets[s].parts) part_nodes(p, add);
-        for (auto c : m_.subsets[s].children) stack.push_back(c);
+      std::vector<std::int32_t> parts;
+      subset_parts(it->second, parts);
+      for (auto p : parts) part_nodes(p, add);
+    }
+  } else if (kind == "GRSHEL" || kind == "GRSH3N" || kind == "GRBRIC") {
+    const auto type = kind == "GRSHEL"   ? model::ElementType::Shell4
+                      : kind == "GRSH3N" ? model::ElementType::Shell3
+                                         : model::ElementType::Brick8;
+    const auto& fam = family(type);
+    const auto& elems = block(type);
+    const auto npe = static_cast<std::size_t>(elems.npe());
+    for (std::size_t k = 0; k < r.ids.size(); ++k) {
+      if (r.ids[k] < 0) {
+        diags_.warning(Diag::ValueOutOfRange, at(r.id_pos[k], 1), about(r),
+                       "id " + std::to_string(r.ids[k]) +
+                           " is ignored: a negative id removes nothing in /GRNOD/" + kind +
+                           ", as in Radioss; subtract node groups with /GRNOD/GRNOD");
+        continue;
       }
+      const auto* eg = element_group(type, r.ids[k]);
+      if (!eg) {
+        missing(k, std::string(fam.element) + " group", r.ids[k]);
+        continue;
+      }
+      for (const auto e : eg->elements)
+        for (std::size_t j = 0; j < npe; ++j)
+          if (elems.conn[e * npe + j] >= 0) add.push_back(elems.conn[e * npe + j]);
     }
   }
   sort_unique(add);
@@ -291,7 +563,7 @@ void ModelBuilder::build_surfaces() {
   };
   for (const auto& r : deck_.records) {
     const auto path = r.decl->path;
-    if (path != "/SURF/PART" && path != "/SURF/PART/EXT" && path != "/SURF/SEG") continue;
+    if (path.rfind("/SURF/", 0) != 0) continue;
     const std::size_t errors_before = diags_.error_count();
     model::Surface s;
     s.id = r.id;
@@ -301,6 +573,56 @@ void ModelBuilder::build_surfaces() {
       s.segments.push_back(seg);
       s.owner_type.push_back(type);
       s.owner.push_back(owner);
+    };
+    // A shell as a segment, as the element is numbered, or flipped.
+    auto push_shell = [&](std::int32_t e, bool flip) {
+      const auto* c = &m_.shells.conn[4 * static_cast<std::size_t>(e)];
+      if (!flip)
+        push({c[0], c[1], c[2], c[3]}, model::SegmentOwner::Shell4, e);
+      else if (c[2] == c[3])
+        push({c[0], c[2], c[1], c[1]}, model::SegmentOwner::Shell4, e);
+      else
+        push({c[0], c[3], c[2], c[1]}, model::SegmentOwner::Shell4, e);
+    };
+    auto push_shell3 = [&](std::int32_t e, bool flip) {
+      const auto* c = &m_.shells3.conn[3 * static_cast<std::size_t>(e)];
+      if (flip)
+        push({c[0], c[2], c[1], c[1]}, model::SegmentOwner::Shell3, e);
+      else
+        push({c[0], c[1], c[2], c[2]}, model::SegmentOwner::Shell3, e);
+    };
+    // The faces of `bricks`, in that order, each pointing out of its brick. With `neighbours`, a face that
+    // another brick marked there also has is an inner face and is left out; a face whose key is in
+    // `covered` is left out too (a shell already gives that segment).
+    auto push_brick_faces = [&](const std::vector<std::int32_t>& bricks,
+                                const std::vector<std::uint8_t>* neighbours,
+                                const std::set<FaceKey>& covered) {
+      std::map<FaceKey, int> sharing;  // how many marked bricks have the face (each brick counted once)
+      if (neighbours) {
+        for (std::size_t e = 0; e < m_.bricks.size(); ++e) {
+          if (!(*neighbours)[e]) continue;
+          const auto* c = &m_.bricks.conn[8 * e];
+          std::set<FaceKey> own;
+          for (const auto& f : model::kBrickFaces) {
+            std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
+            const int n = keep_distinct(seg);
+            if (n >= 3) own.insert(distinct_key(seg, n));
+          }
+          for (const auto& k : own) ++sharing[k];
+        }
+      }
+      for (const auto e : bricks) {
+        const auto* c = &m_.bricks.conn[8 * static_cast<std::size_t>(e)];
+        for (const auto& f : model::kBrickFaces) {
+          std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
+          const int n = keep_distinct(seg);
+          if (n < 3) continue;
+          const auto key = distinct_key(seg, n);
+          if (neighbours && sharing[key] > 1) continue;
+          if (covered.count(key)) continue;
+          push(seg, model::SegmentOwner::Brick8, e);
+        }
+      }
     };
     if (path == "/SURF/SEG") {
       const auto& t = r.records;
@@ -325,87 +647,137 @@ void ModelBuilder::build_surfaces() {
         push(seg, it == faces.end() ? model::SegmentOwner::None : it->second.first,
              it == faces.end() ? kNone : it->second.second);
       }
-    } else {
+    } else if (path == "/SURF/PART" || path == "/SURF/PART/EXT" || path == "/SURF/PART/ALL") {
       const bool ext = path == "/SURF/PART/EXT";
-      std::vector<std::uint8_t> listed(m_.parts.size(), 0);
-      for (std::size_t k = 0; k < r.ids.size(); ++k) {
-        const bool flip = r.ids[k] < 0;
-        const std::int64_t id = flip ? -r.ids[k] : r.ids[k];
-        const auto it = part_ids_.find(id);
-        if (it == part_ids_.end()) {
-          diags_.error(
-              Diag::MissingReference, at(r.id_pos[k], 1), about(r),
-              "part " + std::to_string(id) + " does not exist (no /PART/" + std::to_string(id) + ")");
-          continue;
-        }
-        const auto part = it->second;
-        listed[part] = 1;
-        bool has_solid = false;
-        for (std::size_t e = 0; e < m_.bricks.size() && !has_solid; ++e)
-          has_solid = m_.bricks.part[e] == part;
-        if (has_solid && !ext) {
-          diags_.error(
-              Diag::PartWrongKind, at(r.id_pos[k], 1), about(r),
-              "part " + std::to_string(id) +
-                  " is a solid part: /SURF/PART takes shell parts only; use /SURF/PART/EXT for the outer "
-                  "faces of solid parts");
-        }
-        for (std::size_t e = 0; e < m_.shells.size(); ++e) {
-          if (m_.shells.part[e] != part) continue;
-          const auto* c = &m_.shells.conn[4 * e];
-          if (flip)
-            push({c[0], c[3], c[2], c[1]}, model::SegmentOwner::Shell4, static_cast<std::int32_t>(e));
-          else
-            push({c[0], c[1], c[2], c[3]}, model::SegmentOwner::Shell4, static_cast<std::int32_t>(e));
-          if (c[2] == c[3] && flip) s.segments.back() = {c[0], c[2], c[1], c[1]};
-        }
-        for (std::size_t e = 0; e < m_.shells3.size(); ++e) {
-          if (m_.shells3.part[e] != part) continue;
-          const auto* c = &m_.shells3.conn[3 * e];
-          if (flip)
-            push({c[0], c[2], c[1], c[1]}, model::SegmentOwner::Shell3, static_cast<std::int32_t>(e));
-          else
-            push({c[0], c[1], c[2], c[2]}, model::SegmentOwner::Shell3, static_cast<std::int32_t>(e));
-        }
-      }
-      if (ext) {
-        // Outer faces: count each face over the bricks of the listed parts; keep those seen once.
-        std::map<FaceKey, int> count;
-        for (std::size_t e = 0; e < m_.bricks.size(); ++e) {
-          if (m_.bricks.part[e] == kNone || !listed[m_.bricks.part[e]]) continue;
-          const auto* c = &m_.bricks.conn[8 * e];
-          for (const auto& f : model::kBrickFaces) ++count[face_key({c[f[0]], c[f[1]], c[f[2]], c[f[3]]})];
-        }
-        for (std::size_t e = 0; e < m_.bricks.size(); ++e) {
-          if (m_.bricks.part[e] == kNone || !listed[m_.bricks.part[e]]) continue;
-          const auto* c = &m_.bricks.conn[8 * e];
-          for (const auto& f : model::kBrickFaces) {
-            std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
-            if (count[face_key(seg)] != 1) continue;
-            // A face of a degenerate brick may collapse to an edge or a point: not a segment.
-            auto key = face_key(seg);
-            const int distinct = 1 + (key[1] != key[0]) + (key[2] != key[1]) + (key[3] != key[2]);
-            if (distinct < 3) continue;
-            // Triangle faces of degenerate bricks keep the repeated node last (n4 = n3).
-            for (int j = 0; j < 4 && seg[2] != seg[3]; ++j) {
-              if (seg[j] == seg[(j + 1) % 4]) {
-                std::array<std::int32_t, 4> tri{};
-                int m = 0;
-                for (int q = 0; q < 4; ++q)
-                  if (q != j) tri[m++] = seg[q];
-                tri[3] = tri[2];
-                seg = tri;
-                break;
-              }
-            }
-            push(seg, model::SegmentOwner::Brick8, static_cast<std::int32_t>(e));
+      const bool all = path == "/SURF/PART/ALL";
+      // Each part once: the positive ids are tagged first, then the negative ones, and the first tag stays,
+      // so a part listed both ways keeps its elements' orientation.
+      std::vector<std::int8_t> tag(m_.parts.size(), 0);
+      std::vector<std::int32_t> order;  // tagged parts in tagging order
+      for (const bool negatives : {false, true}) {
+        for (std::size_t k = 0; k < r.ids.size(); ++k) {
+          const bool flip = r.ids[k] < 0;
+          if (flip != negatives) continue;
+          const std::int64_t id = flip ? -r.ids[k] : r.ids[k];
+          const auto it = part_ids_.find(id);
+          if (it == part_ids_.end()) {
+            diags_.error(
+                Diag::MissingReference, at(r.id_pos[k], 1), about(r),
+                "part " + std::to_string(id) + " does not exist (no /PART/" + std::to_string(id) + ")");
+            continue;
+          }
+          const auto part = it->second;
+          if (!ext && !all) {
+            bool has_solid = false;
+            for (std::size_t e = 0; e < m_.bricks.size() && !has_solid; ++e)
+              has_solid = m_.bricks.part[e] == part;
+            if (has_solid)
+              diags_.error(
+                  Diag::PartWrongKind, at(r.id_pos[k], 1), about(r),
+                  "part " + std::to_string(id) +
+                      " is a solid part: /SURF/PART takes shell parts only; use /SURF/PART/EXT for the "
+                      "outer faces of solid parts, or /SURF/PART/ALL for all their faces");
+          }
+          if (tag[part] == 0) {
+            tag[part] = flip ? -1 : 1;
+            order.push_back(part);
           }
         }
       }
+      for (const auto part : order) {
+        for (std::size_t e = 0; e < m_.shells.size(); ++e)
+          if (m_.shells.part[e] == part) push_shell(static_cast<std::int32_t>(e), tag[part] < 0);
+        for (std::size_t e = 0; e < m_.shells3.size(); ++e)
+          if (m_.shells3.part[e] == part) push_shell3(static_cast<std::int32_t>(e), tag[part] < 0);
+      }
+      if (ext || all) {
+        auto listed = [&](std::int32_t part) { return part != kNone && tag[part] != 0; };
+        std::set<FaceKey> covered;
+        for (std::size_t e = 0; e < m_.shells.size(); ++e) {
+          if (!listed(m_.shells.part[e])) continue;
+          const auto* c = &m_.shells.conn[4 * e];
+          std::array<std::int32_t, 4> f{c[0], c[1], c[2], c[3]};
+          // A degenerate 4-node shell covers no triangle face: Radioss looks for 3-node shells there.
+          if (keep_distinct(f) == 4) covered.insert(distinct_key(f, 4));
+        }
+        for (std::size_t e = 0; e < m_.shells3.size(); ++e) {
+          if (!listed(m_.shells3.part[e])) continue;
+          const auto* c = &m_.shells3.conn[3 * e];
+          std::array<std::int32_t, 4> f{c[0], c[1], c[2], c[2]};
+          if (keep_distinct(f) == 3) covered.insert(distinct_key(f, 3));
+        }
+        std::vector<std::uint8_t> chosen(m_.bricks.size(), 0);
+        std::vector<std::int32_t> bricks;
+        for (std::size_t e = 0; e < m_.bricks.size(); ++e) {
+          if (!listed(m_.bricks.part[e])) continue;
+          chosen[e] = 1;
+          bricks.push_back(static_cast<std::int32_t>(e));
+        }
+        push_brick_faces(bricks, ext ? &chosen : nullptr, covered);
+      }
+    } else if (path == "/SURF/GRSHEL" || path == "/SURF/GRSH3N") {
+      const auto type = path == "/SURF/GRSHEL" ? model::ElementType::Shell4 : model::ElementType::Shell3;
+      const auto& fam = family(type);
+      // As for parts: positive ids tagged first, the first tag stays, a negative tag flips the segment.
+      std::vector<std::int8_t> tag(block(type).size(), 0);
+      std::vector<std::int32_t> order;
+      for (const bool negatives : {false, true}) {
+        for (std::size_t k = 0; k < r.ids.size(); ++k) {
+          const bool flip = r.ids[k] < 0;
+          if (flip != negatives) continue;
+          const std::int64_t id = flip ? -r.ids[k] : r.ids[k];
+          const auto* g = element_group(type, id);
+          if (!g) {
+            diags_.error(Diag::MissingReference, at(r.id_pos[k], 1), about(r),
+                         std::string(fam.element) + " group " + std::to_string(id) + " does not exist (no " +
+                             std::string(fam.root) + "/.../" + std::to_string(id) + ")");
+            continue;
+          }
+          for (const auto e : g->elements) {
+            if (tag[e] != 0) continue;
+            tag[e] = flip ? -1 : 1;
+            order.push_back(e);
+          }
+        }
+      }
+      for (const auto e : order) {
+        if (type == model::ElementType::Shell4)
+          push_shell(e, tag[e] < 0);
+        else
+          push_shell3(e, tag[e] < 0);
+      }
+    } else if (path == "/SURF/GRBRIC/EXT" || path == "/SURF/GRBRIC/FREE") {
+      // Brick faces keep their outward orientation: a negative group id counts as a positive one.
+      std::vector<std::uint8_t> chosen(m_.bricks.size(), 0);
+      std::vector<std::int32_t> bricks;
+      for (std::size_t k = 0; k < r.ids.size(); ++k) {
+        const std::int64_t id = r.ids[k] < 0 ? -r.ids[k] : r.ids[k];
+        const auto* g = element_group(model::ElementType::Brick8, id);
+        if (!g) {
+          diags_.error(Diag::MissingReference, at(r.id_pos[k], 1), about(r),
+                       "brick group " + std::to_string(id) + " does not exist (no /GRBRIC/.../" +
+                           std::to_string(id) + ")");
+          continue;
+        }
+        for (const auto e : g->elements) {
+          if (chosen[e]) continue;
+          chosen[e] = 1;
+          bricks.push_back(e);
+        }
+      }
+      // EXT: a face is inner when another brick of the groups has it; FREE: when any brick of the model has
+      // it.
+      const std::vector<std::uint8_t> every(path == "/SURF/GRBRIC/FREE" ? m_.bricks.size() : 0, 1);
+      push_brick_faces(bricks, path == "/SURF/GRBRIC/EXT" ? &chosen : &every, {});
+    } else if (path == "/SURF/GRBRIC") {
+      diags_.error(Diag::PartWrongKind, at(r.pos, 1), about(r),
+                   "a brick group makes a surface only as /SURF/GRBRIC/EXT (the faces no other brick of the "
+                   "groups shares) or /SURF/GRBRIC/FREE (the faces no other brick of the model shares); "
+                   "Radioss refuses /SURF/GRBRIC alone too");
     }
     if (s.segments.empty() && diags_.error_count() == errors_before) {
       diags_.error(Diag::EmptyGroup, at(r.pos, 1), about(r),
-                   "surface " + std::to_string(s.id) + " holds no segment: check its part list");
+                   "surface " + std::to_string(s.id) + " holds no segment: check its list");
     }
     if (register_id(surf_ids_, s.id, static_cast<std::int32_t>(m_.surfaces.size()), r, "surface", first))
       m_.surfaces.push_back(std::move(s));

@@ -383,8 +383,114 @@ void add_groups(std::vector<KeywordDecl>& t) {
     k.tail = Tail::IdList;
     t.push_back(std::move(k));
   }
+  // Element groups. Each family has its own ids; the keyword line may carry a unit id, as Radioss reads one
+  // (it only matters to Radioss for boxes, and radx's boxes are already in work units).
+  auto element_group = [&t](std::string_view path, std::string_view meaning, std::string_view id_name) {
+    KeywordDecl k = kw(path, meaning, Header::IdUnit, true, id_name);
+    k.tail = Tail::IdList;
+    t.push_back(std::move(k));
+  };
+  element_group("/GRSHEL/SHEL", "4-node shell group: the listed /SHELL element ids", "grshel_ID");
+  element_group("/GRSHEL/PART", "4-node shell group: the shells of the listed parts; a negative id removes",
+                "grshel_ID");
+  element_group("/GRSHEL/GRSHEL", "4-node shell group: union of /GRSHEL groups; a negative id removes",
+                "grshel_ID");
+  element_group("/GRSHEL/SUBSET",
+                "4-node shell group: the shells of the parts of the listed subsets (and their children); a "
+                "negative id removes",
+                "grshel_ID");
+  element_group(
+      "/GRSHEL/MAT",
+      "4-node shell group: the shells of the parts with the listed materials; a negative id removes",
+      "grshel_ID");
+  element_group(
+      "/GRSHEL/PROP",
+      "4-node shell group: the shells of the parts with the listed properties; a negative id removes",
+      "grshel_ID");
+  element_group(
+      "/GRSHEL/BOX",
+      "4-node shell group: the shells whose nodes all lie in the box (only the first box id counts)",
+      "grshel_ID");
+  element_group(
+      "/GRSHEL/BOX2",
+      "4-node shell group: the shells with at least one node in the box (only the first box id counts)",
+      "grshel_ID");
+  element_group("/GRSH3N/SH3N", "3-node shell group: the listed /SH3N element ids", "grsh3n_ID");
+  element_group("/GRSH3N/PART",
+                "3-node shell group: the 3-node shells of the listed parts; a negative id removes",
+                "grsh3n_ID");
+  element_group("/GRSH3N/GRSH3N", "3-node shell group: union of /GRSH3N groups; a negative id removes",
+                "grsh3n_ID");
+  element_group(
+      "/GRSH3N/SUBSET",
+      "3-node shell group: the 3-node shells of the parts of the listed subsets (and their children); "
+      "a negative id removes",
+      "grsh3n_ID");
+  element_group("/GRSH3N/MAT",
+                "3-node shell group: the 3-node shells of the parts with the listed materials; a negative id "
+                "removes",
+                "grsh3n_ID");
+  element_group(
+      "/GRSH3N/PROP",
+      "3-node shell group: the 3-node shells of the parts with the listed properties; a negative id "
+      "removes",
+      "grsh3n_ID");
+  element_group("/GRSH3N/BOX",
+                "3-node shell group: the 3-node shells whose nodes all lie in the box (only the first box id "
+                "counts)",
+                "grsh3n_ID");
+  element_group(
+      "/GRSH3N/BOX2",
+      "3-node shell group: the 3-node shells with at least one node in the box (only the first box id "
+      "counts)",
+      "grsh3n_ID");
+  element_group("/GRBRIC/BRIC", "brick group: the listed /BRICK element ids", "grbric_ID");
+  element_group("/GRBRIC/PART", "brick group: the bricks of the listed parts; a negative id removes",
+                "grbric_ID");
+  element_group("/GRBRIC/GRBRIC", "brick group: union of /GRBRIC groups; a negative id removes", "grbric_ID");
+  element_group(
+      "/GRBRIC/SUBSET",
+      "brick group: the bricks of the parts of the listed subsets (and their children); a negative id "
+      "removes",
+      "grbric_ID");
+  element_group("/GRBRIC/MAT",
+                "brick group: the bricks of the parts with the listed materials; a negative id removes",
+                "grbric_ID");
+  element_group("/GRBRIC/PROP",
+                "brick group: the bricks of the parts with the listed properties; a negative id removes",
+                "grbric_ID");
+  element_group("/GRBRIC/BOX",
+                "brick group: the bricks whose 8 nodes all lie in the box (only the first box id counts)",
+                "grbric_ID");
+  element_group("/GRBRIC/BOX2",
+                "brick group: the bricks with at least one node in the box (only the first box id counts)",
+                "grbric_ID");
+  id_group("/GRNOD/GRSHEL", "node group: the nodes of the shells of the listed /GRSHEL groups", "grnod_ID");
+  id_group("/GRNOD/GRSH3N", "node group: the nodes of the 3-node shells of the listed /GRSH3N groups",
+           "grnod_ID");
+  id_group("/GRNOD/GRBRIC", "node group: the nodes of the bricks of the listed /GRBRIC groups", "grnod_ID");
   id_group("/SURF/PART", "surface: the shell and 3-node shell segments of the listed parts", "surf_ID");
   id_group("/SURF/PART/EXT", "surface: shell segments and outer solid faces of the listed parts", "surf_ID");
+  id_group("/SURF/PART/ALL",
+           "surface: shell segments and every face of the solids of the listed parts, inner faces included "
+           "(once from each side)",
+           "surf_ID");
+  id_group("/SURF/GRSHEL",
+           "surface: the shells of the listed /GRSHEL groups, oriented as the elements; a negative id flips",
+           "surf_ID");
+  id_group("/SURF/GRSH3N",
+           "surface: the 3-node shells of the listed /GRSH3N groups, oriented as the elements; a negative id "
+           "flips",
+           "surf_ID");
+  id_group("/SURF/GRBRIC/EXT",
+           "surface: the faces of the groups' bricks that no other brick of the groups shares, pointing out",
+           "surf_ID");
+  id_group("/SURF/GRBRIC/FREE",
+           "surface: the faces of the groups' bricks that no other brick of the model shares, pointing out",
+           "surf_ID");
+  id_group("/SURF/GRBRIC",
+           "refused, as Radioss refuses it: a brick group makes a surface only as /SURF/GRBRIC/EXT or /FREE",
+           "surf_ID");
   {
     KeywordDecl k = kw("/SURF/SEG", "surface: explicit segments, one per line", Header::Id, true, "surf_ID");
     k.tail = Tail::Records;
@@ -1073,9 +1179,8 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/SPRING", "/BEAM", "/TRUSS", "/TETRA4", "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD",
         "/TRIA", "/SPHCEL",
         // groups, surfaces, boxes
-        "/GRNOD/LINE", "/GRNOD/GRSHEL", "/GRNOD/GRSH3N", "/GRNOD/GRBRIC", "/GRSHEL", "/GRSH3N", "/GRBRIC",
-        "/GRBEAM", "/GRTRUS", "/GRSPRI", "/GRPART", "/GRQUAD", "/SURF/PART/ALL", "/SURF/SURF", "/SURF/GRSHEL",
-        "/SURF/GRSH3N", "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE",
+        "/GRNOD/LINE", "/GRSHEL", "/GRSH3N", "/GRBRIC", "/GRBEAM", "/GRTRUS", "/GRSPRI", "/GRPART", "/GRQUAD",
+        "/SURF/SURF", "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE",
         "/SURF/ELLIPS", "/LINE", "/SET", "/BOX/CYLIN", "/BOX/SPHER",
         // interfaces
         "/INTER/TYPE1", "/INTER/TYPE2", "/INTER/TYPE3", "/INTER/TYPE5", "/INTER/TYPE8", "/INTER/TYPE10",

@@ -574,7 +574,8 @@ model::Model ModelBuilder::build() {
   check_formulations();
   build_boxes();
   build_functions();
-  build_surfaces();  // before the groups: /GRNOD/SURF takes the nodes of surfaces
+  build_element_groups();  // before surfaces and node groups, which are built from element groups
+  build_surfaces();        // before the groups: /GRNOD/SURF takes the nodes of surfaces
   build_groups();
   build_skews();
   build_loads();

@@ -49,6 +49,7 @@ class ModelBuilder {
   void build_elements();
   void build_boxes();
   void build_functions();
+  void build_element_groups();
   void build_groups();
   void build_skews();  // build_skews.cpp
   void build_surfaces();
@@ -64,6 +65,23 @@ class ModelBuilder {
 
   // Group resolution (recursive /GRNOD/GRNOD with loop detection).
   const std::vector<std::int32_t>* group_nodes(std::int32_t g);
+
+  // Element groups (/GRSHEL, /GRSH3N, /GRBRIC) stay in the starter: they are resolved into the surfaces
+  // and node groups built from them, and nothing downstream needs them. Each element type has its own
+  // group ids, as in Radioss.
+  struct ElementGroup {
+    const KeywordRecord* record = nullptr;
+    model::ElementType type = model::ElementType::Shell4;
+    std::vector<std::int32_t> elements;  // sorted, unique indices into the block of `type`
+    std::uint8_t state = 0;              // 0 not built, 1 building, 2 built
+  };
+  // The group of `type` with user id `id`, or nullptr when there is none.
+  const ElementGroup* element_group(model::ElementType type, std::int64_t id) const;
+  // Resolves group g (recursive /GRSHEL/GRSHEL and the like, with loop detection); nullptr on a loop.
+  const std::vector<std::int32_t>* group_elements(std::int32_t g);
+  const model::ElementBlock& block(model::ElementType type) const;
+  // All parts of subset s and of its descendants.
+  void subset_parts(std::int32_t s, std::vector<std::int32_t>& out) const;
   std::int32_t node_ref(std::int64_t user_id, const KeywordRecord& r, SourcePos pos, std::string_view what);
 
   const Deck& deck_;
@@ -72,6 +90,8 @@ class ModelBuilder {
 
   IdIndex mat_ids_, prop_ids_, part_ids_, subset_ids_, box_ids_, funct_ids_, grnod_ids_, surf_ids_,
       inter_ids_, rwall_ids_, rbody_ids_, skew_ids_;
+  std::vector<ElementGroup> element_groups_;
+  IdIndex element_group_ids_[3];  // by model::ElementType
   std::vector<const KeywordRecord*> grnod_records_;
   std::vector<std::uint8_t> grnod_state_;  // 0 not built, 1 building, 2 built
   std::vector<std::uint8_t> node_used_;    // by an element or as a rigid-body / wall node

@@ -338,6 +338,27 @@ TH_VARIABLES = {
 }
 
 
+def box_recta(v):
+    return [card([F("N1", "I", 1, 10), F("N2", "I", 11, 20), F("Iskew", "I", 21, 30)]),
+            card(reals("Xp1", "Yp1", "Zp1")), card(reals("Xp2", "Yp2", "Zp2"))]
+
+
+# Element groups: root -> (element keyword, subtype listing element ids, element name). Every subtype reads a
+# title and a list of ids; a unit id may follow the group id on the keyword line.
+GROUP_FAMILIES = {"/GRSHEL": ("/SHELL", "SHEL", "4-node shell"), "/GRSH3N": ("/SH3N", "SH3N", "3-node shell"),
+                  "/GRBRIC": ("/BRICK", "BRIC", "brick")}
+GROUP_SUBTYPES = ("PART", "SUBSET", "MAT", "PROP", "BOX", "BOX2")
+for _root, (_ekw, _list, _name) in GROUP_FAMILIES.items():
+    for _sub in (_list, _root[1:]) + GROUP_SUBTYPES:
+        STARTER[_root + "/" + _sub] = ("id", True, lambda v: [], "ids", ID_REC)
+NODES_OF_GROUPS = ("/GRNOD/GRSHEL", "/GRNOD/GRSH3N", "/GRNOD/GRBRIC")
+SURFS_OF_GROUPS = ("/SURF/GRSHEL", "/SURF/GRSH3N", "/SURF/GRBRIC/EXT", "/SURF/GRBRIC/FREE", "/SURF/GRBRIC")
+for _path in NODES_OF_GROUPS + SURFS_OF_GROUPS + ("/SURF/PART/ALL", "/SUBSET"):
+    STARTER[_path] = ("id", True, lambda v: [], "ids", ID_REC)
+STARTER["/SH3N"] = ("part", False, lambda v: [], "records", SH3N_REC)
+STARTER["/BOX/RECTA"] = ("id", True, box_recta, None, None)
+
+
 def match_keyword(parts):
     """parts: keyword fields without blanks, upper case. Returns (path, rest) or (None, None)."""
     for n in range(min(len(parts), 4), 0, -1):
@@ -687,13 +708,14 @@ def semantic(ck, m):
     parts = by_id(("/PART",), "part")
     props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14"), "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02"), "material")
-    grnods = by_id(("/GRNOD/NODE", "/GRNOD/PART"), "node group")
-    surfs = by_id(("/SURF/PART", "/SURF/PART/EXT"), "surface")
+    grnods = by_id(("/GRNOD/NODE", "/GRNOD/PART") + NODES_OF_GROUPS, "node group")
+    surfs = by_id(("/SURF/PART", "/SURF/PART/EXT", "/SURF/PART/ALL") + SURFS_OF_GROUPS, "surface")
     functs = by_id(("/FUNCT",), "function")
     inters = by_id(("/INTER/TYPE7", "/INTER/LAGDT/TYPE7"), "interface")
 
     # elements
     elem_ids = {"/SHELL": set(), "/SH3N": set(), "/BRICK": set()}
+    elements = {"/SHELL": {}, "/SH3N": {}, "/BRICK": {}}  # element id -> (part id, node ids)
     part_kind = {}
     for o in m.of("/SHELL", "/SH3N", "/BRICK"):
         kind = o["path"]
@@ -711,6 +733,7 @@ def semantic(ck, m):
             if any(x is None or x not in nodes for x in ns):
                 I("RX406", p[0], p[1], "element %s uses a node that does not exist" % eid)
                 continue
+            elements[kind][eid] = (o["id"], ns)
             pts = [nodes[x] for x in ns]
             if kind in ("/SHELL", "/SH3N"):
                 if kind == "/SH3N":
@@ -827,8 +850,11 @@ def semantic(ck, m):
                 I("RX502", p[0], p[1], "JC a must be > 0")
 
     # groups
+    element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, surfs)
     group_nodes = {}
     for gid, o in grnods.items():
+        if o["path"] in NODES_OF_GROUPS:
+            continue  # element_group_checks
         s = set()
         if not o["ids"]:
             I("RX403", o["pos"][0], o["pos"][1], "group %d is empty" % gid)
@@ -843,6 +869,8 @@ def semantic(ck, m):
                 s.add(("part", x))
         group_nodes[gid] = s
     for sid, o in surfs.items():
+        if o["path"] not in ("/SURF/PART", "/SURF/PART/EXT"):
+            continue  # element_group_checks
         if not o["ids"]:
             I("RX403", o["pos"][0], o["pos"][1], "surface %d is empty" % sid)
         for x, p in o["ids"]:
@@ -972,6 +1000,209 @@ def semantic(ck, m):
             if w not in groups and w not in single:
                 I("RX501", o["pos"][0], o["pos"][1], "%s %d: unknown variable %s" % (o["path"], o["id"], w))
     return nodes, parts
+
+
+# ---------------------------------------------------------------------------------------------------
+# Element groups (/GRSHEL, /GRSH3N, /GRBRIC) and the node groups and surfaces built from them, as Radioss
+# defines them:
+#   * SHEL/SH3N/BRIC list element ids (a negative or unknown id is an error);
+#   * PART, SUBSET (with its child subsets), MAT, PROP, and the family's own group subtype: a negative id
+#     removes, whatever its place in the list;
+#   * BOX: elements with all their nodes in the box (faces included), BOX2: with one node in it; only the
+#     first positive box id is read;
+#   * /GRNOD/GR...: nodes of the groups' elements, negative ids ignored;
+#   * /SURF/GRSHEL, /SURF/GRSH3N: one segment per element; /SURF/GRBRIC/EXT: brick faces no other brick of the
+#     groups has; /FREE: no other brick at all; bare /SURF/GRBRIC is refused; /SURF/PART/ALL: every brick face
+#     of the parts (a shell of the listed parts on a face replaces it) plus their shells.
+# Errors: RX402 at the id's line, RX507 for a group that reaches itself (at the keyword line of the group found
+# again), RX403 at the keyword line when the result is empty and nothing else went wrong while building it
+# (node groups: whenever empty), RX407 for a bare /SURF/GRBRIC.
+
+HEX_FACES = ((1, 4, 3, 2), (5, 6, 7, 8), (1, 2, 6, 5), (2, 3, 7, 6), (3, 4, 8, 7), (4, 1, 5, 8))  # 1-based, outward
+
+
+def distinct(ns):
+    out = []
+    for n in ns:
+        if n not in out:
+            out.append(n)
+    return out
+
+
+def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, surfs):
+    I = ck.issue
+    subsets = {o["id"]: [x for x, _ in o["ids"]] for o in m.of("/SUBSET")}
+
+    def parts_of_subset(sid):
+        out, seen, todo = set(), set(), [sid]
+        while todo:
+            x = todo.pop()
+            if x in seen or x not in subsets:
+                continue
+            seen.add(x)
+            out |= {pid for pid, po in parts.items() if val(po, "subset_ID", 0) == x}
+            todo += subsets[x]
+        return out
+
+    boxes = {}
+    for o in m.of("/BOX/RECTA"):
+        a = [val(o, k, 0.0) for k in ("Xp1", "Yp1", "Zp1")]
+        b = [val(o, k, 0.0) for k in ("Xp2", "Yp2", "Zp2")]
+        if val(o, "N1", 0) in nodes:
+            a = list(nodes[val(o, "N1")])
+        if val(o, "N2", 0) in nodes:
+            b = list(nodes[val(o, "N2")])
+        boxes[o["id"]] = ([min(a[i], b[i]) for i in range(3)], [max(a[i], b[i]) for i in range(3)])
+
+    groups = {}
+    for root in GROUP_FAMILIES:
+        for o in m.of(*[p for p in STARTER if p.startswith(root + "/")]):
+            key = (root, o["id"])
+            if key in groups:
+                I("RX401", o["pos"][0], o["pos"][1], "%s group %d defined twice" % key)
+                continue
+            groups[key] = o
+    state, members = {}, {}
+
+    def resolve(key):
+        o = groups[key]
+        if state.get(key) == 2:
+            return members[key]
+        if state.get(key) == 1:
+            I("RX507", o["pos"][0], o["pos"][1], "%s group %d reaches itself" % key)
+            return None
+        state[key] = 1
+        before = len(ck.issues)
+        root = key[0]
+        ekw, list_kind, name = GROUP_FAMILIES[root]
+        els = elements[ekw]
+        kind = o["path"][len(root) + 1:]
+        add, rem = set(), set()
+
+        def missing(p, what):
+            I("RX402", p[0], p[1], "%s %d: %s does not exist" % (o["path"], o["id"], what))
+
+        if kind == list_kind:
+            for x, p in o["ids"]:
+                if x <= 0 or x not in els:
+                    missing(p, "%s %d" % (name, x))
+                else:
+                    add.add(x)
+        elif kind in ("PART", "SUBSET", "MAT", "PROP"):
+            plus, minus = set(), set()
+            for x, p in o["ids"]:
+                a = abs(x)
+                if kind == "PART":
+                    sel = {a} if a in parts else None
+                elif kind == "SUBSET":
+                    sel = parts_of_subset(a) if a in subsets else None
+                else:
+                    table, field = (mats, "mat_ID") if kind == "MAT" else (props, "prop_ID")
+                    sel = {pid for pid, po in parts.items() if val(po, field) == a} if a in table else None
+                if sel is None:
+                    missing(p, "%s %d" % (kind.lower(), a))
+                    continue
+                (minus if x < 0 else plus).update(sel)
+            add = {e for e, (pid, _) in els.items() if pid in plus - minus}
+        elif kind == root[1:]:
+            for x, p in o["ids"]:
+                k2 = (root, abs(x))
+                if k2 not in groups:
+                    missing(p, "group %d" % abs(x))
+                    continue
+                got = resolve(k2)
+                if got is not None:
+                    (rem if x < 0 else add).update(got)
+        elif kind in ("BOX", "BOX2"):
+            first = next(((x, p) for x, p in o["ids"] if x > 0), None)
+            if first is not None and first[0] not in boxes:
+                missing(first[1], "box %d" % first[0])
+            elif first is not None:
+                lo, hi = boxes[first[0]]
+                for e, (pid, ns) in els.items():
+                    ins = [all(lo[i] <= nodes[n][i] <= hi[i] for i in range(3)) for n in ns]
+                    if all(ins) if kind == "BOX" else any(ins):
+                        add.add(e)
+        res = add - rem
+        if not res and len(ck.issues) == before:
+            I("RX403", o["pos"][0], o["pos"][1], "%s group %d holds no element" % key)
+        state[key], members[key] = 2, res
+        return res
+
+    for key in groups:
+        resolve(key)
+
+    def root_of(path):
+        return "/" + path.split("/")[2]
+
+    for o in grnods.values():
+        if o["path"] not in NODES_OF_GROUPS:
+            continue
+        root = root_of(o["path"])
+        found = set()
+        for x, p in o["ids"]:
+            if x < 0:
+                continue  # ignored (a warning)
+            if (root, x) not in groups:
+                I("RX402", p[0], p[1], "%s %d: group %d does not exist" % (o["path"], o["id"], x))
+                continue
+            for e in members[(root, x)]:
+                found.update(elements[GROUP_FAMILIES[root][0]][e][1])
+        if not found:
+            I("RX403", o["pos"][0], o["pos"][1], "%s %d holds no node" % (o["path"], o["id"]))
+
+    def faces_of(ns):
+        """Faces of a brick (node ids) with 3 or 4 distinct nodes, as sets."""
+        out = []
+        for f in HEX_FACES:
+            d = distinct([ns[k - 1] for k in f])
+            if len(d) >= 3:
+                out.append(frozenset(d))
+        return out
+
+    for o in surfs.values():
+        path = o["path"]
+        if path not in SURFS_OF_GROUPS + ("/SURF/PART/ALL",):
+            continue
+        before = len(ck.issues)
+        if path == "/SURF/GRBRIC":
+            I("RX407", o["pos"][0], o["pos"][1], "/SURF/GRBRIC %d needs /EXT or /FREE" % o["id"])
+            continue
+        count = 0
+        if path == "/SURF/PART/ALL":
+            listed = set()
+            for x, p in o["ids"]:
+                if abs(x) not in parts:
+                    I("RX402", p[0], p[1], "/SURF/PART/ALL %d: part %d does not exist" % (o["id"], abs(x)))
+                else:
+                    listed.add(abs(x))
+            count = sum(1 for kw in ("/SHELL", "/SH3N") for pid, _ in elements[kw].values() if pid in listed)
+            # a brick face that a shell of the listed parts covers (4-node shell on a quad face, 3-node shell on
+            # a triangle face) is that shell's segment, not a second one
+            covers = [set(ns) for kw, n in (("/SHELL", 4), ("/SH3N", 3)) for pid, ns in elements[kw].values()
+                      if pid in listed and len(set(ns)) == n]
+            for pid, ns in elements["/BRICK"].values():
+                if pid in listed:
+                    count += sum(1 for f in faces_of(ns) if set(f) not in covers)
+        else:
+            root = "/GR" + path.split("/")[2][2:]
+            chosen = set()
+            for x, p in o["ids"]:
+                if (root, abs(x)) not in groups:
+                    I("RX402", p[0], p[1], "%s %d: group %d does not exist" % (path, o["id"], abs(x)))
+                    continue
+                chosen |= members[(root, abs(x))]
+            if root != "/GRBRIC":
+                count = len(chosen)
+            else:
+                around = chosen if path.endswith("/EXT") else set(elements["/BRICK"])
+                seen = {}
+                for e in around:
+                    for f in set(faces_of(elements["/BRICK"][e][1])):
+                        seen[f] = seen.get(f, 0) + 1
+                count = sum(1 for e in chosen for f in faces_of(elements["/BRICK"][e][1]) if seen[f] == 1)
+        if count == 0 and len(ck.issues) == before:
+            I("RX403", o["pos"][0], o["pos"][1], "%s %d holds no segment" % (path, o["id"]))
 
 
 def sub(a, b):

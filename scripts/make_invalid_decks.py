@@ -779,6 +779,188 @@ def _():
     return d, "/RWALL/SPHER/1 with Diameter = 0: a sphere wall needs a diameter", [("RX502", "RWS_C2")]
 
 
+# Element groups and the surfaces and node groups built from them. The base model has shells 1 and 2
+# (part 1), brick 11 (part 2) and no 3-node shell.
+
+
+def id_list(head, tag, title, label, ids):
+    """A keyword with a title and one line of ids; the ids line carries the tag TAG_L1."""
+    return [(head, tag + "_KW"), title, names(*[("%s%d" % (label, k + 1), 10) for k in range(len(ids))]),
+            (line(*[I(x) for x in ids]), tag + "_L1")]
+
+
+def box_rows(bid, p1, p2, tag="BOX"):
+    return [("/BOX/RECTA/%d" % bid, tag + "_KW"), "Box",
+            names(("N1", 10), ("N2", 10), ("Iskew", 10)), line(I(0), I(0), I(0)),
+            names(("Xp1", 20), ("Yp1", 20), ("Zp1", 20)), line(*[R(x) for x in p1]),
+            names(("Xp2", 20), ("Yp2", 20), ("Zp2", 20)), line(*[R(x) for x in p2])]
+
+
+def with_rows(*groups):
+    d = base()
+    for rows in groups:
+        d.insert_before("BEFORE_END", rows)
+    return d
+
+
+@fault("grshel_shel_missing_element")
+def _():
+    d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", "shell_ID", [1, 2, 99]))
+    return d, "/GRSHEL/SHEL/1 lists shell 99, which does not exist", [("RX402", "G1_L1")]
+
+
+@fault("grshel_shel_negative_id")
+def _():
+    d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", "shell_ID", [1, -2]))
+    return d, "/GRSHEL/SHEL/1 lists element -2: element ids are positive (Radioss finds no element -2 either)", \
+        [("RX402", "G1_L1")]
+
+
+@fault("grsh3n_sh3n_missing_element")
+def _():
+    d = with_rows(id_list("/GRSH3N/SH3N/1", "G1", "Triangles", "tria_ID", [7]))
+    return d, "/GRSH3N/SH3N/1 lists 3-node shell 7; the deck has no /SH3N", [("RX402", "G1_L1")]
+
+
+@fault("grbric_bric_missing_element")
+def _():
+    d = with_rows(id_list("/GRBRIC/BRIC/1", "G1", "Bricks", "brick_ID", [11, 12]))
+    return d, "/GRBRIC/BRIC/1 lists brick 12, which does not exist", [("RX402", "G1_L1")]
+
+
+@fault("grshel_part_missing_part")
+def _():
+    d = with_rows(id_list("/GRSHEL/PART/1", "G1", "Shells of parts", "part_ID", [1, 9]))
+    return d, "/GRSHEL/PART/1 lists part 9, which does not exist", [("RX402", "G1_L1")]
+
+
+@fault("grbric_subset_missing_subset")
+def _():
+    d = with_rows(id_list("/GRBRIC/SUBSET/1", "G1", "Bricks of a subset", "subs_ID", [4]))
+    return d, "/GRBRIC/SUBSET/1 lists subset 4; the deck has no /SUBSET", [("RX402", "G1_L1")]
+
+
+@fault("grshel_mat_missing_material")
+def _():
+    d = with_rows(id_list("/GRSHEL/MAT/1", "G1", "Shells of a material", "mat_ID", [1, 7]))
+    return d, "/GRSHEL/MAT/1 lists material 7, which does not exist", [("RX402", "G1_L1")]
+
+
+@fault("grbric_prop_missing_property")
+def _():
+    d = with_rows(id_list("/GRBRIC/PROP/1", "G1", "Bricks of a property", "prop_ID", [2, 7]))
+    return d, "/GRBRIC/PROP/1 lists property 7, which does not exist", [("RX402", "G1_L1")]
+
+
+@fault("grshel_box_missing_box")
+def _():
+    d = with_rows(id_list("/GRSHEL/BOX/1", "G1", "Shells in a box", "box_ID", [3]))
+    return d, "/GRSHEL/BOX/1 names box 3; the deck has no /BOX", [("RX402", "G1_L1")]
+
+
+@fault("grbric_grbric_missing_group")
+def _():
+    d = with_rows(id_list("/GRBRIC/BRIC/1", "G1", "Bricks", "brick_ID", [11]),
+                  id_list("/GRBRIC/GRBRIC/2", "G2", "Union", "grbr_ID", [1, 5]))
+    return d, "/GRBRIC/GRBRIC/2 lists brick group 5, which does not exist", [("RX402", "G2_L1")]
+
+
+@fault("grshel_grshel_loop")
+def _():
+    d = with_rows(id_list("/GRSHEL/GRSHEL/1", "G1", "First", "grsh_ID", [2]),
+                  id_list("/GRSHEL/GRSHEL/2", "G2", "Second", "grsh_ID", [1]))
+    return d, "/GRSHEL/GRSHEL/1 lists group 2, which lists group 1: a loop (reported at the group met again)", \
+        [("RX507", "G1_KW")]
+
+
+@fault("grshel_duplicate_group_id")
+def _():
+    d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", "shell_ID", [1]),
+                  id_list("/GRSHEL/PART/1", "G2", "Shells of part 1", "part_ID", [1]))
+    return d, "/GRSHEL/SHEL/1 and /GRSHEL/PART/1: two 4-node shell groups with id 1", [("RX401", "G2_KW")]
+
+
+@fault("grbric_box_partly_inside")
+def _():
+    d = with_rows(box_rows(1, (0.0, 0.0, 0.0), (20.0, 10.0, 6.5)),
+                  id_list("/GRBRIC/BOX/1", "G1", "Bricks wholly in the box", "box_ID", [1]),
+                  id_list("/GRBRIC/BOX2/2", "G2", "Bricks with a node in the box", "box_ID", [1]))
+    return d, "box 1 holds the lower four nodes of brick 11 only: /GRBRIC/BOX/1 (all nodes inside) is empty, " \
+        "/GRBRIC/BOX2/2 (one node inside) holds the brick", [("RX403", "G1_KW")]
+
+
+@fault("grsh3n_part_empty")
+def _():
+    d = with_rows(id_list("/GRSH3N/PART/1", "G1", "Triangles of the plate", "part_ID", [1]))
+    return d, "/GRSH3N/PART/1 lists part 1, which has 4-node shells only: no 3-node shell", [("RX403", "G1_KW")]
+
+
+@fault("grshel_grshel_removes_all")
+def _():
+    d = with_rows(id_list("/GRSHEL/PART/1", "G1", "Plate", "part_ID", [1]),
+                  id_list("/GRSHEL/GRSHEL/2", "G2", "Plate minus plate", "grsh_ID", [1, -1]))
+    return d, "/GRSHEL/GRSHEL/2 adds group 1 and removes it again: empty", [("RX403", "G2_KW")]
+
+
+@fault("surf_grshel_missing_group")
+def _():
+    d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", "shell_ID", [1, 2]),
+                  id_list("/SURF/GRSHEL/1", "S1", "Surface of shell groups", "grsh_ID", [1, 3]))
+    return d, "/SURF/GRSHEL/1 lists shell group 3, which does not exist", [("RX402", "S1_L1")]
+
+
+@fault("surf_grsh3n_missing_group")
+def _():
+    d = with_rows(id_list("/SURF/GRSH3N/1", "S1", "Surface of 3-node shell groups", "grsh_ID", [4]))
+    return d, "/SURF/GRSH3N/1 lists 3-node shell group 4; the deck has none", [("RX402", "S1_L1")]
+
+
+@fault("surf_grbric_ext_missing_group")
+def _():
+    d = with_rows(id_list("/GRBRIC/PART/1", "G1", "Block", "part_ID", [2]),
+                  id_list("/SURF/GRBRIC/EXT/1", "S1", "Outer faces", "grbr_ID", [1, 2]))
+    return d, "/SURF/GRBRIC/EXT/1 lists brick group 2, which does not exist", [("RX402", "S1_L1")]
+
+
+@fault("surf_grbric_without_ext")
+def _():
+    d = with_rows(id_list("/GRBRIC/PART/1", "G1", "Block", "part_ID", [2]),
+                  id_list("/SURF/GRBRIC/1", "S1", "Faces of a brick group", "grbr_ID", [1]))
+    return d, "/SURF/GRBRIC/1 without /EXT or /FREE: Radioss builds no surface from it either", \
+        [("RX407", "S1_KW")]
+
+
+@fault("surf_part_all_missing_part")
+def _():
+    d = with_rows(id_list("/SURF/PART/ALL/1", "S1", "All faces", "part_ID", [2, 5]))
+    return d, "/SURF/PART/ALL/1 lists part 5, which does not exist", [("RX402", "S1_L1")]
+
+
+@fault("surf_part_all_empty")
+def _():
+    d = base()
+    d.insert_before("AFTER_PARTS", [("/PART/3", "PART3_KW"), "Part without elements",
+                                    names(("prop_ID", 10), ("mat_ID", 10), ("subset_ID", 10), ("Thick", 20)),
+                                    (part_line(1, 1), "PART3")])
+    d.insert_before("BEFORE_END", id_list("/SURF/PART/ALL/1", "S1", "All faces of part 3", "part_ID", [3]))
+    return d, "/SURF/PART/ALL/1 lists part 3, which has no element: no segment", [("RX403", "S1_KW")]
+
+
+@fault("grnod_grshel_missing_group")
+def _():
+    d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", "shell_ID", [1]),
+                  id_list("/GRNOD/GRSHEL/3", "N3", "Nodes of shell groups", "grsh_ID", [1, 2]))
+    return d, "/GRNOD/GRSHEL/3 lists shell group 2, which does not exist", [("RX402", "N3_L1")]
+
+
+@fault("grnod_grbric_negative_only")
+def _():
+    d = with_rows(id_list("/GRBRIC/PART/1", "G1", "Block", "part_ID", [2]),
+                  id_list("/GRNOD/GRBRIC/3", "N3", "Nodes of brick groups", "grbr_ID", [-1]))
+    return d, "/GRNOD/GRBRIC/3 lists only -1: a negative id is ignored there (a warning), as in Radioss, so the " \
+        "group holds no node", [("RX403", "N3_KW")]
+
+
 @fault("several_errors")
 def _():
     d = base()

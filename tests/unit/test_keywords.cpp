@@ -419,6 +419,15 @@ DeckSpec full_deck(int v) {
   d.titled("/SURF/SEG/703", "/SURF/SEG", 703, "two segments").records = {
       {x.I("seg_ID", 1, 10), x.I("n1", 11, 20), x.I("n2", 21, 30), x.I("n3", 31, 40), x.I("n4", 41, 50)},
       {x.I("seg_ID", 1, 10), x.I("n1", 11, 20), x.I("n2", 21, 30), x.I("n3", 31, 40), x.I("n4", 41, 50)}};
+  // Element groups and what is built from them: id lists; an element group may name a unit system.
+  d.titled("/GRSHEL/PART/421", "/GRSHEL/PART", 421, "shells of a part, minus another").id_lines = {
+      {101, -103}};
+  d.titled("/GRBRIC/BOX2/422/7", "/GRBRIC/BOX2", 422, "bricks touching the box", 7).id_lines = {{501}};
+  d.titled("/GRNOD/GRSHEL/406", "/GRNOD/GRSHEL", 406, "nodes of a shell group").id_lines = {{421}};
+  d.titled("/SURF/PART/ALL/704", "/SURF/PART/ALL", 704, "every brick face").id_lines = {{103}};
+  d.titled("/SURF/GRBRIC/EXT/705", "/SURF/GRBRIC/EXT", 705, "outer faces of a brick group").id_lines = {
+      {422}};
+  d.titled("/SURF/GRSH3N/706", "/SURF/GRSH3N", 706, "3-node shells, flipped").id_lines = {{-423}};
   add_type7(d, 801);
   add_lagdt(d, 802);
   {
