@@ -6,8 +6,9 @@
 //
 // What radx implements (shared/spec/elements.md):
 //   4-node shells:  Ishell 1 (Belytschko-Tsay, viscous + elastic hourglass), Ismstr 2 (large strain, small
-//                   strain only after /DT/SHELL/CST), Ithick 1/2, Iplas 1/2
-//   3-node shells:  Ish3n 2 (C0) and 1 (C0 without the in-plane large-rotation terms), Ismstr 2
+//                   strain only after /DT/SHELL/CST) and 1 (small strain from the start), Ithick 1/2,
+//                   Iplas 1/2
+//   3-node shells:  Ish3n 2 (C0) and 1 (C0 without the in-plane large-rotation terms), Ismstr 2 and 1
 //   8-node bricks:  Isolid 1 (one point, Flanagan-Belytschko viscous hourglass) and 2 (plain h vectors),
 //                   Ismstr 4 (large strain) and 2 (large strain, small strain after a /DT/BRICK/CST switch:
 //                   without /DT/BRICK/CST the same as 4), Iframe 1 (Jaumann rate, not co-rotational), no
@@ -135,7 +136,8 @@ void ModelBuilder::check_formulations() {
       if (used & kTri)
         flag("Ish3n", s.ish3n, s.ish3n == 1 || s.ish3n == 2, 2, ish3n_name(s.ish3n), ish3n_name(2),
              "3-node shells");
-      flag("Ismstr", s.ismstr, s.ismstr == 2, 2, ismstr_name(s.ismstr), ismstr_name(2), "shells");
+      flag("Ismstr", s.ismstr, s.ismstr == 1 || s.ismstr == 2, 2, ismstr_name(s.ismstr), ismstr_name(2),
+           "shells");
     } else {
       if (!(used & kBrick)) continue;
       auto& s = prop.solid;

@@ -802,7 +802,7 @@ def semantic(ck, m):
                 bad.append("Ishell")
             if "/SH3N" in kinds and resolved(o, "Ish3n", "/DEF_SHELL", 2) not in (1, 2):
                 bad.append("Ish3n")
-            if resolved(o, "Ismstr", "/DEF_SHELL", 2) != 2:
+            if resolved(o, "Ismstr", "/DEF_SHELL", 2) not in (1, 2):
                 bad.append("Ismstr")
         elif "/BRICK" in kinds:
             isolid = resolved(o, "Isolid", "/DEF_SOLID", 1)

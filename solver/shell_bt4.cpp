@@ -36,6 +36,8 @@
 //   sides (and the diagonals, n3 != n4), hourglass guard L^2 <= (Lmin^2 + L^2)/(2 max(Hm, Hf));
 //   dt = L phi / c, c = sqrt(E/rho), phi = sqrt(1 + Dm^2) - Dm.
 // Nodal stiffness [4.5]: k_nodal = 0.81 * 1/2 A t E / L^2 for each of the 4 nodes.
+// Ismstr 1 (small strain from the start): the small-strain state below from the first cycle, and the plain
+// h = (1, -1, 1, -1) as the hourglass gamma [1.7].
 // Small strain (after a /DT/SHELL/CST switch, g.dt_fixed > 0): the local coordinates x_k, y_k are frozen at
 // the first cycle after the switch and replace the current ones from then on; the frame and the velocities
 // stay current, so PX, PY, A, L and the step stay those of the frozen geometry (the step is constant).
@@ -96,6 +98,7 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
   using namespace shell_detail;
   constexpr std::size_t G = kGroupSize;
   const ShellProps& pr = g.props;
+  const bool plain_h = pr.ismstr == 1;  // [1.7]: Ismstr 1 takes the plain h = (1, -1, 1, -1) as gamma
   const double dt1 = cyc.dt1;
   const ThicknessRule rule = thickness_rule(std::max(pr.n_points, 0));
   ensure_resultant_storage(g);
@@ -159,7 +162,8 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
   double capture[kGroupSize];
   for (int i = 0; i < g.count; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    capture[ii] = (g.dt_fixed[ii] > 0.0 && small[ii] == 0.0) ? 1.0 : 0.0;
+    // Ismstr 1 is small strain from the start: the same frozen geometry, captured at the first cycle.
+    capture[ii] = ((g.dt_fixed[ii] > 0.0 || pr.ismstr == 1) && small[ii] == 0.0) ? 1.0 : 0.0;
     if (capture[ii] != 0.0) small[ii] = 1.0;
   }
 
@@ -404,7 +408,7 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
       const double lx1 = bk.lx[1][j], lx2 = bk.lx[2][j], lx3 = bk.lx[3][j];
       const double ly1 = bk.ly[1][j], ly2 = bk.ly[2][j], ly3 = bk.ly[3][j];
       const double hx = (-lx1 + lx2 - lx3) * ainv, hy = (-ly1 + ly2 - ly3) * ainv;
-      const double c1 = PX1 * hx + PY1 * hy, c2 = PX2 * hx + PY2 * hy;
+      const double c1 = plain_h ? 0.0 : PX1 * hx + PY1 * hy, c2 = plain_h ? 0.0 : PX2 * hx + PY2 * hy;
       const double gam[4] = {off * (1.0 - c1), off * (-1.0 - c2), off * (1.0 + c1), off * (-1.0 + c2)};
       double qx = 0, qy = 0, qz = 0;
       for (int k = 0; k < 4; ++k) {

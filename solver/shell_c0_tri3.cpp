@@ -134,9 +134,10 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
       double x2 = x2_now;
       double x3 = e1x * d31x + e1y * d31y + e1z * d31z;
       double y3 = e2x * d31x + e2y * d31y + e2z * d31z;
-      // Small strain after a /DT/SH_3N/CST switch: the local coordinates are frozen at the first cycle after
-      // it and used from then on (the frame and velocities stay current), so the step stays constant.
-      if (g.dt_fixed[ii] > 0.0) {
+      // Small strain after a /DT/SH_3N/CST switch, or from the start with Ismstr 1: the local coordinates are
+      // frozen at the first cycle after it and used from then on (the frame and velocities stay current), so
+      // the step stays constant.
+      if (g.dt_fixed[ii] > 0.0 || g.props.ismstr == 1) {
         if (g.small[ii] == 0.0) {
           g.ref_local[0 * G + ii] = x2, g.ref_local[1 * G + ii] = x3, g.ref_local[2 * G + ii] = y3;
           g.small[ii] = 1.0;

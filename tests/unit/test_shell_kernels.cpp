@@ -839,3 +839,59 @@ TEST_CASE("Shell cycle 0: dt1 = 0 gives zero increments", "[shell]") {
   CHECK(close(g.nodal_force[0], -cm * std::abs(qx) * qx, 1e-12));
   for (std::size_t d = 1; d < 6; ++d) CHECK(g.nodal_force[d * G] == 0.0);
 }
+
+TEST_CASE(
+    "Ismstr 1 is small strain from the start: a stretch gives E (lambda - 1), Ismstr 2 gives E ln lambda",
+    "[shell]") {
+  // One square shell (nu = 0, so sigma_xx = E eps_xx in plane stress) stretched along X with the nodes'
+  // velocity vx = r X0 (X0 their initial x): the length grows as L0 lambda, lambda = 1 + r t. Small strain
+  // sums r dt over the initial length: eps = lambda - 1 exactly. Large strain sums the rate on the geometry
+  // at the start of each step, r dt / lambda_n: eps = sum_n r dt / (1 + r n dt) exactly (round-off), which is
+  // ln lambda to within r dt / 2 (1 - 1 / lambda).
+  const double young = 1e5, t = 0.1, r = 0.25, dt = 1e-3;
+  const int steps = 2000;
+  const MaterialParams mat = elastic(young, 0.0, 1000.0);
+  const double lambda = 1.0 + r * steps * dt;
+  for (const int ismstr : {1, 2}) {
+    DYNAMIC_SECTION("Ismstr " << ismstr) {
+      NodeState s = make_nodes({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+      ShellGroup g = make_group({{0, 1, 2, 3}}, t, 1);
+      g.props.ismstr = ismstr;
+      for (int n = 0; n < steps; ++n) {
+        for (std::size_t k = 0; k < 4; ++k) s.vx[k] = r * s.x0[k];
+        run(g, s, mat, dt);
+        for (std::size_t k = 0; k < 4; ++k) s.x[k] += dt * s.vx[k];
+      }
+      REQUIRE(std::abs(s.x[1] - lambda) <= 1e-12);
+      double large = 0;
+      for (int n = 0; n < steps; ++n) large += r * dt / (1.0 + r * n * dt);
+      const double expect = ismstr == 1 ? young * (lambda - 1.0) : young * large;
+      INFO("sigma_xx " << sig(g, 0, 0, 0) << " expected " << expect);
+      CHECK(close(sig(g, 0, 0, 0), expect, 1e-9));
+      if (ismstr == 2)
+        CHECK(close(large, std::log(lambda), 0.5 * r * dt * (1.0 - 1.0 / lambda) / std::log(lambda) * 1.01));
+      CHECK(std::abs(sig(g, 0, 1, 0)) <= 1e-9 * expect);  // nu = 0: no transverse stress
+    }
+  }
+}
+
+TEST_CASE("BT4 hourglass vector: gamma is blind to linear fields, the plain h of Ismstr 1 is not",
+          "[shell]") {
+  // A trapezoid (not a parallelogram) with the linear velocity vx = x: the gamma vector of [1.7] is
+  // orthogonal to every linear field, so Ismstr 2 books no hourglass energy; Ismstr 1 takes the plain
+  // h = (1, -1, 1, -1), and sum h_k vx_k = 0 - 2 + 1.5 - 0.5 = -1: hourglass energy > 0.
+  const MaterialParams mat = elastic(1e5, 0.3, 1000.0);
+  for (const int ismstr : {1, 2}) {
+    DYNAMIC_SECTION("Ismstr " << ismstr) {
+      NodeState s = make_nodes({{0, 0, 0}, {2, 0, 0}, {1.5, 1, 0}, {0.5, 1, 0}});
+      for (std::size_t k = 0; k < 4; ++k) s.vx[k] = s.x[k];
+      ShellGroup g = make_group({{0, 1, 2, 3}}, 0.1, 1);
+      g.props.ismstr = ismstr;
+      run(g, s, mat, 1e-4);
+      if (ismstr == 2)
+        CHECK(std::abs(g.e_hg[0]) <= 1e-12 * g.e_int[0]);
+      else
+        CHECK(g.e_hg[0] > 1e-3 * g.e_int[0]);
+    }
+  }
+}
