@@ -349,6 +349,34 @@ bool is_failure(RegressStatus s) {
   return s != RegressStatus::Ran && s != RegressStatus::Compared;
 }
 
+std::vector<ListingPoint> listing_points(const std::string& listing_text) {
+  // CYCLE TIME TIME-STEP KIND ID ERROR% I-ENERGY K-ENERGY-T K-ENERGY-R EXT-WORK ... (io/engine_listing.cpp)
+  std::vector<ListingPoint> out;
+  std::istringstream in(listing_text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::vector<std::string> f;
+    for (std::string w; ls >> w;) f.push_back(w);
+    if (f.size() < 10 || f[0].find_first_not_of("0123456789") != std::string::npos) continue;
+    std::size_t pct = 0;
+    while (pct < f.size() && (f[pct].empty() || f[pct].back() != '%')) ++pct;
+    if (pct + 4 >= f.size()) continue;
+    try {
+      ListingPoint p;
+      p.cycle = std::stoll(f[0]);
+      p.time = std::stod(f[1]);
+      p.energy[static_cast<std::size_t>(io::ExtractEnergy::Internal)] = std::stod(f[pct + 1]);
+      p.energy[static_cast<std::size_t>(io::ExtractEnergy::KineticTranslational)] = std::stod(f[pct + 2]);
+      p.energy[static_cast<std::size_t>(io::ExtractEnergy::KineticRotational)] = std::stod(f[pct + 3]);
+      p.energy[static_cast<std::size_t>(io::ExtractEnergy::ExternalWork)] = std::stod(f[pct + 4]);
+      if (out.empty() || p.time >= out.back().time) out.push_back(p);
+    } catch (const std::exception&) {
+    }
+  }
+  return out;
+}
+
 RegressResult evaluate_deck(const RegressDeck& deck, const ChildOutcome& child, const RegressRunFiles& files,
                             double tolerance) {
   RegressResult r;
@@ -408,6 +436,22 @@ RegressResult evaluate_deck(const RegressDeck& deck, const ChildOutcome& child, 
     return r;
   }
   r.reference = ref;
+  // A Radioss ref.extract holds the last printed listing line, which may come before the end time (the
+  // line of the last multiple of the /PRINT interval): compare radx at that time, interpolated between its
+  // own listing lines, when the reference stops earlier than the run.
+  if (ref.time < fig.time * (1 - 1e-9) && files.listing.size() >= 2) {
+    const auto& L = files.listing;
+    std::size_t k = 1;
+    while (k + 1 < L.size() && L[k].time < ref.time) ++k;
+    const double t0 = L[k - 1].time, t1 = L[k].time;
+    const double w = t1 > t0 ? std::clamp((ref.time - t0) / (t1 - t0), 0.0, 1.0) : 1.0;
+    for (std::size_t e = 0; e < fig.energy.size(); ++e)
+      fig.energy[e] = (1 - w) * L[k - 1].energy[e] + w * L[k].energy[e];
+    fig.time = (1 - w) * t0 + w * t1;
+    fig.cycles = w < 0.5 ? L[k - 1].cycle : L[k].cycle;
+    r.radx = fig;
+    r.at_reference_time = true;
+  }
   r.comparison = io::compare_to_extract(fig, ref);
   r.status = r.comparison->within(tolerance) ? RegressStatus::Compared : RegressStatus::Deviates;
   return r;
@@ -433,6 +477,7 @@ RegressResult run_regress_deck(const RegressDeck& deck, const RegressSettings& s
   else if (io::read_summary_json(summary.string(), s, files.summary_error))
     files.summary = s;
   files.output = read_text(dir / kRunLog);
+  files.listing = listing_points(read_text(dir / (run_output_root(deck_path) + "_0001.out")));
   return evaluate_deck(deck, child, files, settings.tolerance);
 }
 
@@ -464,7 +509,8 @@ std::string format_regress_line(const RegressResult& r) {
     const auto& c = *r.comparison;
     char ratio[32];
     std::snprintf(ratio, sizeof ratio, "%.2f", c.cycle_ratio);
-    s += "  cycles " + cycles_text(r) + " (x" + ratio + ")  TIME " + percent(c.time) + " %";
+    s += "  cycles " + cycles_text(r) + " (x" + ratio + ")  TIME " + percent(c.time) + " %" +
+         (r.at_reference_time ? " (at the reference's last line)" : "");
     for (const auto e : io::kExtractEnergies)
       s += "  " + std::string(io::extract_label(e)) + " " + energy_text(r, e) + " %";
   } else if (r.radx) {

@@ -92,7 +92,19 @@ struct RegressResult {
   std::optional<io::RunFigures> radx;              // when the engine ran to the end
   std::optional<io::RegressionExtract> reference;  // when ref.extract was read
   std::optional<io::ExtractComparison> comparison;
+  // The reference stops before the run's end: radx was compared at the reference time, interpolated
+  // between its listing lines (radx holds those figures then, not the run's end).
+  bool at_reference_time = false;
 };
+
+// One cycle line of the engine listing NAME_0001.out: what a Radioss ref.extract records.
+struct ListingPoint {
+  std::int64_t cycle = 0;
+  double time = 0;
+  std::array<double, 4> energy{};  // indexed by io::ExtractEnergy
+};
+// The cycle lines of an engine listing's text (lines that do not parse are skipped).
+std::vector<ListingPoint> listing_points(const std::string& listing_text);
 
 // What the child run left behind, as evaluate_deck needs it.
 struct RegressRunFiles {
@@ -100,6 +112,7 @@ struct RegressRunFiles {
   std::optional<io::RunSummary> summary;  // NAME_summary.json, when it could be read
   std::string summary_error;              // why it could not
   std::string output;                     // the child's standard output and error
+  std::vector<ListingPoint> listing;      // the engine listing's cycle lines
 };
 
 // The status of a deck from its child run, the files it left and its reference (read here from

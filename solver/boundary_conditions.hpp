@@ -70,13 +70,6 @@ class ImposedVelocities {
   // Work of the last cycle not booked yet (its dt2 part); the next apply() books it.
   [[nodiscard]] double pending_work() const;
   [[nodiscard]] bool empty() const { return entries_.empty(); }
-  // ORs into mask[n] the translation bits (1 x, 2 y, 4 z) of every imposed translational velocity.
-  void mark_translations(std::vector<std::uint8_t>& mask) const {
-    for (const auto& e : entries_)
-      if (e.dir < 3 && !e.skewed)
-        for (const auto n : e.nodes)
-          mask[static_cast<std::size_t>(n)] |= static_cast<std::uint8_t>(1u << e.dir);
-  }
   // Sets flags[n] = 1 for every node with an imposed velocity.
   void mark_nodes(std::vector<std::uint8_t>& flags) const {
     for (const auto& e : entries_)

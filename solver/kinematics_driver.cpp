@@ -26,11 +26,7 @@ void KinematicsDriver::initial_conditions() {
   auto& p = *parts_;
   p.bcs.set_fixed_bits(nodes_);
   p.inivel.apply(nodes_, 0.0);  // initial kinetic energy, not work
-  // Translations whose motion is imposed: a moving wall's node may then be massless.
-  std::vector<std::uint8_t> driven(nodes_.fixed.begin(), nodes_.fixed.end());
-  for (auto& d : driven) d &= 7u;
-  p.impvel.mark_translations(driven);
-  p.walls.initialize(nodes_, driven);
+  p.walls.initialize(nodes_);
   p.bodies.initialize(nodes_);
   p.loads = std::make_unique<ExternalLoads>(
       model_, p.bodies.size() > 0 ? std::span<const std::uint8_t>(p.bodies.secondary_flags())

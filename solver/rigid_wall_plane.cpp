@@ -43,19 +43,15 @@ RigidWalls::RigidWalls(const model::Model& m) {
   }
 }
 
-void RigidWalls::initialize(NodeState& s, const std::vector<std::uint8_t>& driven) const {
+void RigidWalls::initialize(NodeState& s) const {
   for (std::size_t k = 0; k < walls_.size(); ++k) {
     const auto& w = walls_[k];
     if (w.node == model::kNone) continue;
     const auto n = static_cast<std::size_t>(w.node);
     s.mass[n] += w.added_mass;
-    const bool imposed = n < driven.size() && (driven[n] & 7u) == 7u;
-    if (!(s.mass[n] > 0) && !imposed)
-      throw std::runtime_error(
-          "/RWALL/PLANE/" + std::to_string(out_[k].id) +
-          ": the moving wall's node has no mass (its own mass plus the wall Mass is " +
-          std::to_string(s.mass[n]) +
-          "); give a Mass > 0, or impose the node's motion in X, Y and Z (/IMPVEL, /BCS)");
+    // A massless wall node runs as in Radioss: in the directions /IMPVEL or /BCS impose, it follows them;
+    // in the free ones it takes the lagged contact force over the contact mass alone
+    // (apply_wall_node_forces), and keeps its velocity while nothing touches it.
     s.vx[n] = w.v0[0];
     s.vy[n] = w.v0[1];
     s.vz[n] = w.v0[2];

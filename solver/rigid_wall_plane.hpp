@@ -48,11 +48,10 @@ class RigidWalls {
   explicit RigidWalls(const model::Model& m);
 
   // Once, before cycle 0 (after /INIVEL): a moving wall's node gets the wall Mass added to its mass and
-  // the velocity (VX0, VY0, VZ0). Throws when a moving wall's node has no mass and a free motion.
-  // `driven[n]`: translation bits (1 x, 2 y, 4 z) whose motion /BCS or /IMPVEL imposes on node n (empty:
-  // none). A moving wall's node needs a mass unless all three are imposed: the wall then follows the
-  // imposed motion, as Radioss runs it, and no force can change it.
-  void initialize(NodeState& s, const std::vector<std::uint8_t>& driven = {}) const;
+  // the velocity (VX0, VY0, VZ0).
+  // A moving wall's node may have no mass, as in Radioss: it follows the directions /IMPVEL or /BCS impose
+  // and, in the free ones, the lagged contact force over the contact mass.
+  void initialize(NodeState& s) const;
   // Cycle step 5, right after a = f/m: moving walls receive the previous cycle's wall force.
   void apply_wall_node_forces(NodeState& s) const;
   // Cycle step 5, after the imposed velocities: the kinematic contact above. Returns the external work

@@ -448,3 +448,66 @@ need("ran out of time" in decks["endless"]["detail"] and 3.5 < decks["endless"][
                   " > /dev/null 2>&1") == 2);
   CHECK(fs::exists(decks / "ok" / "FREE_FALL_0000.rad"));
 }
+
+TEST_CASE("regress: a reference that stops before the run's end is compared at its time, from the listing",
+          "[regress]") {
+  // The listing lines as the engine writes them (io::format_listing_line), read back by listing_points.
+  std::string listing = "  some header line\n";
+  for (int k = 0; k <= 4; ++k) {
+    radx::io::ListingLine l;
+    l.cycle = 10 * k;
+    l.time = 0.01 * k;
+    l.dt = 1e-3;
+    l.source = radx::io::StepSource::Brick;
+    l.source_id = 7;
+    l.internal_energy = 1.0 + k;  // linear in time: the interpolation is exact
+    l.kinetic_t = 10.0 - k;
+    l.kinetic_r = 0.5 * k;
+    l.external_work = 2.0 * k;
+    listing += radx::io::format_listing_line(l) + "\n";
+  }
+  const auto points = radx::app::listing_points(listing);
+  REQUIRE(points.size() == 5);
+  CHECK(points[3].cycle == 30);
+  CHECK(points[3].time == Approx(0.03));
+  CHECK(points[3].energy[0] == Approx(4.0));
+  CHECK(points[3].energy[2] == Approx(1.5));
+
+  // The run ended at 0.04; the reference's last line is at t = 0.025 with the values the line above gives
+  // there: IE 3.5, KE 7.5, KER 1.25, EXT 5 (magnitude 10).
+  radx::test::TempDir dir;
+  radx::app::RegressDeck deck;
+  deck.reference =
+      dir.write("ref.extract",
+                "    1 Start                    0\n    2 CYCLE\t        25\n    3 TIME\t 2.5000e-02\n"
+                "    4 TSTEP\t 1.0000e-03\n    5 ELEMENT\t0\n    6 ELTID\t        7\n"
+                "    7 ERROR\t  0.0\n    8 IENERGY\t 3.5000e+00 1.0000e+01\n"
+                "    9 KENERGYT\t 7.5000e+00 1.0000e+01\n   10 KENERGYR\t 1.2500e+00 1.0000e+01\n"
+                "   11 EXTWORK\t 5.0000e+00 1.0000e+01\n   12 MASERR\t0.000\n"
+                "   13 Stop                    0\n");
+  radx::app::ChildOutcome exited;
+  exited.exit_code = 0;
+  radx::app::RegressRunFiles files;
+  files.model_written = true;
+  radx::io::RunSummary s;
+  s.cycles = 40;
+  s.time = 0.04;
+  s.energy.internal = 5.0;
+  s.energy.kinetic_t = 6.0;
+  s.energy.kinetic_r = 2.0;
+  s.energy.external_work = 8.0;
+  files.summary = s;
+  files.listing = points;
+  const auto r = radx::app::evaluate_deck(deck, exited, files, 0.01);
+  INFO(r.detail);
+  REQUIRE(r.comparison);
+  CHECK(r.at_reference_time);
+  CHECK(r.status == radx::app::RegressStatus::Compared);
+  for (const double d : r.comparison->energy) CHECK(d <= 1e-12);
+  CHECK(r.radx->time == Approx(0.025));
+  // Without the listing the run's end is compared: the deviation shows.
+  files.listing.clear();
+  const auto end = radx::app::evaluate_deck(deck, exited, files, 0.01);
+  CHECK_FALSE(end.at_reference_time);
+  CHECK(end.status == radx::app::RegressStatus::Deviates);
+}
