@@ -66,6 +66,7 @@ struct BrickGroup {
   std::int32_t part = -1;
   std::int32_t material = -1;
   int isolid = 1;
+  int ismstr = 4;  // /DT/BRICK/CST switches a brick to small strain only with Ismstr 2 (deck-format.md)
   double qa = 1.1, qb = 0.05, h = 0.1;
   std::vector<std::int32_t> conn;  // [8][G]
   std::vector<double> vol0;        // [G] initial (one-point) volume

@@ -171,6 +171,7 @@ void ExplicitEngine::build_groups() {
     g.part = part;
     g.material = m.parts[part].material;
     g.isolid = prop.isolid;
+    g.ismstr = prop.ismstr;
     g.qa = prop.qa;
     g.qb = prop.qb;
     g.h = prop.h;
@@ -276,10 +277,12 @@ double ExplicitEngine::element_time_step(StepControl& control) {
   // /DT/<family>/CST: an element whose scaled step reaches Tmin is switched to a constant step (the
   // small-strain switch of Radioss); radx freezes the step at Tmin and keeps the element's large-strain
   // kinematics (a documented difference). Without /DT/<family>/CST the step is the element's.
+  // Radioss switches only the elements whose Ismstr allows it (2; 12 for bricks): the others keep their own
+  // step under /DT/<family>/CST.
   auto visit = [&](double scale, const model::DtControl& fam, double raw, double& frozen,
-                   StepControl::Kind kind, std::int64_t id) {
+                   StepControl::Kind kind, std::int64_t id, bool switchable) {
     double dt = scale * raw;
-    if (fam.action == model::DtAction::Constant && fam.t_min > 0) {
+    if (switchable && fam.action == model::DtAction::Constant && fam.t_min > 0) {
       if (frozen > 0) {
         // Without the small-strain kinematics the element's own stable step keeps falling; below half the
         // frozen step the run would go unstable, so it stops and says which element.
@@ -309,7 +312,7 @@ double ExplicitEngine::element_time_step(StepControl& control) {
       const auto e = static_cast<std::size_t>(g.element[k]);
       visit(scale, fam, g.dt[k], g.dt_fixed[k],
             g.triangle ? StepControl::Kind::Shell3 : StepControl::Kind::Shell,
-            g.triangle ? model_.shells3.id[e] : model_.shells.id[e]);
+            g.triangle ? model_.shells3.id[e] : model_.shells.id[e], g.props.ismstr == 2);
     }
   }
   const double scale = controls_.brick.given ? controls_.brick.scale : controls_.global.scale;
@@ -317,7 +320,7 @@ double ExplicitEngine::element_time_step(StepControl& control) {
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
       visit(scale, controls_.brick, g.dt[k], g.dt_fixed[k], StepControl::Kind::Brick,
-            model_.bricks.id[static_cast<std::size_t>(g.element[k])]);
+            model_.bricks.id[static_cast<std::size_t>(g.element[k])], g.ismstr == 2);
     }
   }
   return best;

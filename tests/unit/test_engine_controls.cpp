@@ -18,8 +18,9 @@ using radx::test::Line;
 
 namespace {
 
-// The deck text (no /END) of one steel cube of side a (LAW1): nodes 1-4 on z = 0, 5-8 on z = a.
-std::string cube_text(double a) {
+// The deck text (no /END) of one steel cube of side a (LAW1): nodes 1-4 on z = 0, 5-8 on z = a. Ismstr of
+// its /PROP/SOLID (0: the default 4; /DT/BRICK/CST switches only Ismstr 2 to small strain).
+std::string cube_text(double a, int ismstr = 0) {
   std::string s = radx::test::begin_block(2026, "Mg mm s") + "/NODE\n";
   for (int k = 0; k < 8; ++k) {
     const double x = (k == 1 || k == 2 || k == 5 || k == 6) ? a : 0.0;
@@ -31,14 +32,15 @@ std::string cube_text(double a) {
   b.put(1, 1, 10);
   for (int k = 0; k < 8; ++k) b.put(k + 1, 11 + 10 * k, 20 + 10 * k);
   s += "/BRICK/1\n" + b.str() + "\n/PART/1\ncube\n" + Line().put(1, 1, 10).put(1, 11, 20).str() + "\n";
-  s += "/PROP/SOLID/1\nsolid\n\n\n/MAT/LAW1/1\nsteel\n" + Line().put(7.85e-9, 1, 20).str() + "\n" +
+  s += "/PROP/SOLID/1\nsolid\n" + Line().put(0, 1, 10).put(ismstr, 11, 20).str() +
+       "\n\n/MAT/LAW1/1\nsteel\n" + Line().put(7.85e-9, 1, 20).str() + "\n" +
        Line().put(210000.0, 1, 20).put(0.3, 21, 40).str() + "\n";
   return s;
 }
 
 // One steel cube of side a (LAW1), at rest, nothing else.
-radx::model::Model cube(double a, double vz = 0.0) {
-  std::string s = cube_text(a);
+radx::model::Model cube(double a, double vz = 0.0, int ismstr = 0) {
+  std::string s = cube_text(a, ismstr);
   if (vz != 0.0)
     s += "/GRNOD/PART/1\nall\n" + Line().put(1, 1, 10).str() + "\n/INIVEL/TRA/1\nv\n" +
          Line().put(0.0, 1, 20).put(0.0, 21, 40).put(vz, 41, 60).put(1, 61, 70).str() + "\n";
@@ -268,7 +270,7 @@ TEST_CASE("/RBODY/OFF leaves the body out of the run, its nodes move freely", "[
 TEST_CASE("/DT/BRICK/CST holds a brick's step at Tmin and stops if the brick's own step falls too far",
           "[engine]") {
   const double a = 10.0;
-  auto m = cube(a);
+  auto m = cube(a, 0.0, 2);  // Ismstr 2: the brick may switch
   const double E = 210000, nu = 0.3, rho = 7.85e-9;
   const double K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
   const double c = std::sqrt((K + 4 * G / 3) / rho);
@@ -296,6 +298,11 @@ TEST_CASE("/DT/BRICK/CST holds a brick's step at Tmin and stops if the brick's o
   const auto stopped = run_with(3.0 * dt_own);
   CHECK(stopped.status == radx::solver::RunStatus::Error);
   CHECK(stopped.message.find("element 1") != std::string::npos);
+  // The default Ismstr 4 never switches (deck-format.md: only Ismstr 2): the brick keeps its own step.
+  m = cube(a);
+  const auto own = run_with(1.2 * dt_own);
+  CHECK(own.status == radx::solver::RunStatus::Normal);
+  CHECK(second_dt == Approx(dt_own).epsilon(1e-9));
 }
 
 TEST_CASE("/DT/BRICK/CST switches the brick to small strain: its step stays constant while it is crushed",
@@ -305,7 +312,7 @@ TEST_CASE("/DT/BRICK/CST switches the brick to small strain: its step stays cons
   // height (dt ~ V / A_max); after the switch at Tmin the geometry of the switch is kept, so the element's
   // own step (before the scale) and the run's step stay constant: elements.md's "step stays constant".
   const double a = 10.0, V = 2.0e5;  // mm/s: 40 % of a in 2e-5 s, some tens of brick steps
-  std::string s = cube_text(a);
+  std::string s = cube_text(a, 2);
   auto group = [&](int id, std::vector<int> nodes) {
     Line l;
     for (std::size_t k = 0; k < nodes.size(); ++k)
