@@ -937,7 +937,9 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
-    KeywordDecl k = kw("/RANDOM", "random perturbation of all node coordinates", Header::None, false);
+    // The reference reads `/RANDOM/x/...` as /RANDOM whenever x is not GRNOD: old decks write /RANDOM/0.
+    KeywordDecl k = kw("/RANDOM", "random perturbation of all node coordinates; a trailing /0 is ignored",
+                       Header::OptionalId, false, "ignored_ID");
     k.support = Support::Ignored;
     k.cards = {
         card("card 1",
@@ -961,7 +963,7 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
     k.support = Support::Ignored;
     k.singleton = true;
     k.cards = {card("card 1", {I("MEMORY", 1, 10, "words of memory to reserve"),
-                               I("REAL", 31, 40, "share of the memory for reals, %")})};
+                               R("REAL", 21, 40, "share of the memory for reals")})};
     t.push_back(std::move(k));
   }
   {

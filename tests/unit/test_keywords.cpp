@@ -597,6 +597,8 @@ DeckSpec full_deck(int v) {
                                         x.I("IOUTP", 31, 40), x.I("IOUTYY", 41, 50).ver(100),
                                         x.I("IROOTYY", 51, 60).ver(100), x.I("Irot", 61, 70).ver(100)}};
   d.add("/RANDOM", "/RANDOM").cards = {{x.R("XALEA", 1, 20), x.R("SEED", 21, 40)}};
+  d.add("/RANDOM/0", "/RANDOM").cards = {{x.R("XALEA", 1, 20), x.R("SEED", 21, 40)}};
+  d.add("/MEMORY", "/MEMORY").cards = {{x.I("MEMORY", 1, 10), Rx("REAL", 21, 40, ".66", 0.66)}};
   d.add("/RANDOM/GRNOD/401", "/RANDOM/GRNOD", 401).cards = {{x.R("XALEA", 1, 20), x.R("SEED", 21, 40)}};
   d.add("/SPMD", "/SPMD").cards = {
       {x.I("Domdec", 1, 10), x.I("Nspmd", 11, 20), x.I("Dkword", 31, 40), x.I("Nthread", 51, 60).ver(110)}};
