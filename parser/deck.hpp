@@ -52,6 +52,7 @@ struct KeywordRecord {
   std::int64_t id = 0;  // header object id (or part id for element blocks)
   std::int64_t unit_id = 0;
   std::string title;
+  std::string header_word;         // Header::Word: the text field as written (case kept), e.g. "mm"
   SourcePos pos;                   // the keyword line
   std::vector<FieldValue> fields;  // all fixed-card fields, in card order
   RecordTable records;             // Tail::Records and ThVarsThenRecords

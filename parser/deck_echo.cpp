@@ -1,7 +1,9 @@
 #include "parser/deck_echo.hpp"
 
+#include <algorithm>
 #include <iomanip>
 #include <ostream>
+#include <set>
 #include <sstream>
 
 namespace radx {
@@ -67,6 +69,7 @@ std::string rule_text(const FieldDecl& f) {
   }
   if (f.min) os << (f.min_exclusive ? "> " : ">= ") << *f.min << "; ";
   if (f.max) os << (f.max_exclusive ? "< " : "<= ") << *f.max << "; ";
+  if (f.gate_first > 0) os << "read only if columns " << f.gate_first << "-" << f.gate_last << " hold text; ";
   if (f.ignored) os << "read, not used; ";
   std::string s = os.str();
   if (s.size() >= 2) s.resize(s.size() - 2);
@@ -81,6 +84,70 @@ void field_rows(std::ostream& os, const std::vector<FieldDecl>& fields) {
        << versions_text(f.since, f.until) << " | " << dim_text(f.dimension) << " | " << rule_text(f) << " | "
        << f.meaning << " |\n";
   }
+}
+
+// The deck versions at which a keyword's layout changes: where a band of one of its fields or cards starts
+// or ends, mapped to the first version radx reads at or after that point.
+std::vector<int> layout_changes(const schema::KeywordDecl& k) {
+  std::set<int> at;
+  auto add = [&at](int since, int until) {
+    for (int v : {since, until + 1}) {
+      if (v <= schema::kAnyVersion || v > schema::kDeckVersions.back()) continue;
+      const auto first = std::find_if(schema::kDeckVersions.begin(), schema::kDeckVersions.end(),
+                                      [v](int d) { return d >= v; });
+      if (first != schema::kDeckVersions.end() && *first > schema::kDeckVersions.front()) at.insert(*first);
+    }
+  };
+  auto fields = [&add](const std::vector<FieldDecl>& fs) {
+    for (const auto& f : fs) add(f.since, f.until);
+  };
+  for (const auto& c : k.cards) {
+    add(c.since, c.until);
+    fields(c.fields);
+  }
+  fields(k.record.fields);
+  return {at.begin(), at.end()};
+}
+
+void deck_versions_section(std::ostream& os) {
+  os << "## Deck versions\n\n"
+     << "radx reads the starter decks of the Radioss formats (`/BEGIN` INVERS)";
+  for (std::size_t i = 0; i < schema::kDeckVersions.size(); ++i)
+    os << (i == 0 ? " " : (i + 1 == schema::kDeckVersions.size() ? " and " : ", "))
+       << schema::kDeckVersions[i];
+  os << "; older formats (41 to 51) and other numbers are refused (RX307), a newer one is read in the "
+     << schema::kDeckVersions.back() << " layouts with a warning.\n\n"
+     << "Each keyword is read in the layout OpenRadioss reads it in: its reader file is the newest of the "
+        "reference's versioned CFG directories that has the keyword, and in that file the "
+        "`FORMAT(radiossNNN)` "
+        "block with the highest NNN at or below the deck's version (or, when there is none, the lowest one "
+        "above it: the element lines, `/BOX/RECTA` and `/RANDOM` have only a 110 block, which Radioss also "
+        "applies to 90 and 100 decks). The field and card tables above give each band in their `versions` "
+        "column. Semantics that change with the version:\n\n"
+     << "- Version 90 decks have no unit cards in `/BEGIN`: `/UNIT/MASS/u`, `/UNIT/LENGTH/u` and "
+        "`/UNIT/TIME/u` name the work units, and the input units are the work units. In newer decks these "
+        "three keywords are ignored (warning), as Radioss ignores them.\n"
+     << "- `/MAT/LAW2` up to 130 reads RHO_ref (columns 21-40) only when columns 11-20 hold text: a "
+        "left-justified RHO_I leaves them blank and RHO_ref is then not read (warning when text is there). "
+        "Its "
+        "card 2 has no Iflag, so card 3 is always a, b, n.\n"
+     << "- `/INTER/TYPE7` up to 100 reads the adaptive-meshing card (Iadm = 2) after the thermal card, from "
+        "110 "
+        "before; the 90 layout reads its thermal card for Ithe > 1.\n"
+     << "- A keyword refused in old decks (its layout there is not established) is refused by name with "
+        "RX307.\n\n"
+     << "Versions at which each starter keyword's layout changes (a keyword not listed reads the same in "
+        "every version):\n\n"
+     << "| keyword | layout changes at | read from |\n|---|---|---|\n";
+  for (const auto& k : schema::starter_keywords()) {
+    const auto changes = layout_changes(k);
+    if (changes.empty() && k.since <= schema::kAnyVersion) continue;
+    os << "| " << k.path << " | ";
+    for (std::size_t i = 0; i < changes.size(); ++i) os << (i ? ", " : "") << changes[i];
+    if (changes.empty()) os << "-";
+    os << " | " << (k.since > schema::kAnyVersion ? std::to_string(k.since) : std::string("all")) << " |\n";
+  }
+  os << "\n";
 }
 
 }  // namespace
@@ -118,6 +185,10 @@ void write_keyword_reference(std::ostream& os) {
     os << k.meaning << (k.support == schema::Support::Ignored ? " **Accepted and ignored by radx.**" : "")
        << "\n\n";
     os << "Title line: " << (k.has_title ? "yes" : "no") << ".\n\n";
+    if (k.header == schema::Header::Word)
+      os << "Keyword line: `" << k.path << "/" << k.id_name << "` (one text field, case kept).\n\n";
+    if (k.since > schema::kAnyVersion)
+      os << "Read in decks of version " << k.since << " and newer; refused in older decks (RX307).\n\n";
     for (const auto& c : k.cards) {
       os << "**" << c.name << "**";
       const auto cond = condition_text(c.condition);
@@ -153,6 +224,7 @@ void write_keyword_reference(std::ostream& os) {
         break;
     }
   }
+  deck_versions_section(os);
   os << "## Engine keywords\n\nFree format: values separated by blanks or commas, one declared line each. "
         "Every keyword of the Radioss engine deck is listed; the radx column says what radx does with it: "
         "**read**; **ignored** (it changes no result: a note, RX303); **not written** (an output radx does "

@@ -26,8 +26,17 @@ using schema::KeywordDecl;
 
 namespace {
 
-constexpr int kOldestVersion = 2017;
-constexpr int kNewestVersion = 2026;
+constexpr int kNewestVersion = schema::kDeckVersions.back();
+
+// "90, 100, 110, 120, 130, 140 and 2017 to 2026": the versions radx reads, for messages.
+std::string deck_versions_text() {
+  std::string s;
+  for (int v : schema::kDeckVersions) {
+    if (v > 2017) break;
+    s += std::to_string(v) + (v == 2017 ? "" : ", ");
+  }
+  return s + " to " + std::to_string(kNewestVersion);
+}
 
 std::string upper(std::string_view s) {
   std::string r(s);
@@ -182,17 +191,17 @@ class StarterReader {
           parse_int(comma == std::string_view::npos ? cell(card, 1, 10) : card.substr(0, comma), v);
       if (st == NumberStatus::Ok && v > 0) {
         version = static_cast<int>(v);
-        if (v < kOldestVersion) {
-          diags_.error(Diag::UnsupportedVersion, at(lines[begin + 2].pos, 1), About{"/BEGIN"},
-                       "deck version " + std::to_string(v) +
-                           " is not read by radx: it reads the layouts of versions " +
-                           std::to_string(kOldestVersion) + " to " + std::to_string(kNewestVersion) +
-                           "; convert the deck to a 2017 or newer format");
-        } else if (v > kNewestVersion) {
+        if (v > kNewestVersion) {
           diags_.warning(Diag::UnsupportedVersion, at(lines[begin + 2].pos, 1), About{"/BEGIN"},
                          "deck version " + std::to_string(v) + " is newer than radx knows; the " +
                              std::to_string(kNewestVersion) + " layouts are used");
           version = kNewestVersion;
+        } else if (!schema::is_deck_version(version)) {
+          // Formats 41 to 51 and numbers Radioss never used: no layout of theirs is established.
+          diags_.error(Diag::UnsupportedVersion, at(lines[begin + 2].pos, 1), About{"/BEGIN"},
+                       "deck version " + std::to_string(v) +
+                           " is not read by radx: it reads the deck formats " + deck_versions_text() +
+                           "; convert the deck to one of them");
         }
       }
     }
@@ -359,6 +368,19 @@ class StarterReader {
         raw = k < values.size() ? values[k] : std::string_view{};
       } else {
         raw = cell(text, f.first_col, std::min(f.last_col, 100));
+        // Radioss pre-reads the line and skips the field when the gate columns are blank: text written
+        // there anyway is not read (a free-format line has no columns to test, so it is always read).
+        if (f.gate_first > 0 && trim(cell(text, f.gate_first, f.gate_last)).empty()) {
+          if (!trim(raw).empty()) {
+            diags_.warning(Diag::ExtraData, at(pos, f.first_col), about,
+                           "field " + std::string(f.name) + " ('" + std::string(trim(raw)) +
+                               "') is not read in a version-" + std::to_string(deck_.version) +
+                               " deck because columns " + std::to_string(f.gate_first) + "-" +
+                               std::to_string(f.gate_last) +
+                               " are blank: that layout reads it only when they hold text");
+          }
+          raw = {};
+        }
       }
       rec.fields.push_back(parse_field(f, raw, pos, line ? f.first_col : 0, about));
     }
@@ -452,7 +474,9 @@ class StarterReader {
            !(std::isdigit(static_cast<unsigned char>(tokens[words].empty() ? 'x' : tokens[words][0])) ||
              tokens[words][0] == '-'))
       ++words;
-    if (decl && used < words) decl = nullptr;
+    // A Header::Word keyword takes one text field after its path (`/UNIT/LENGTH/mm`).
+    const bool word_header = decl && decl->header == schema::Header::Word;
+    if (decl && used + (word_header ? 1 : 0) < words) decl = nullptr;
     if (!decl) {
       // Strip trailing numeric header fields for the message.
       std::size_t n = tokens.size();
@@ -472,10 +496,31 @@ class StarterReader {
       }
       return;
     }
+    if (deck_.version < decl->since) {
+      diags_.error(Diag::UnsupportedVersion, at(head.pos, 1), About{decl->path},
+                   std::string(decl->path) + " is not read by radx in a deck of version " +
+                       std::to_string(deck_.version) +
+                       ": its layout in that format is not established; radx "
+                       "reads it in decks of version " +
+                       std::to_string(decl->since) + " and newer");
+      return;
+    }
     KeywordRecord rec;
     rec.decl = decl;
     rec.written = written;
     rec.pos = head.pos;
+    if (word_header) {
+      if (tokens.size() != used + 1) {
+        diags_.error(Diag::BadHeader, at(head.pos, 1), About{decl->path},
+                     std::string(decl->path) + " takes " + header_help(*decl));
+        return;
+      }
+      // The keyword fields are upper-cased; a unit name keeps its case (Mg is not mg).
+      std::string word(trim(head.text.substr(head.text.rfind('/') + 1)));
+      std::erase_if(word, [](char c) { return c == ' ' || c == '\t'; });
+      rec.header_word = word;
+      used = tokens.size();
+    }
     // Header fields.
     std::vector<std::int64_t> header;
     bool header_ok = true;
@@ -617,6 +662,7 @@ class StarterReader {
       case Header::UnitOnly: return p + "[/unit_ID]";
       case Header::PartId: return p + "/part_ID";
       case Header::OptionalId: return p + "[/" + std::string(d.id_name) + "]";
+      case Header::Word: return p + "/" + std::string(d.id_name);
     }
     return p;
   }
@@ -667,6 +713,44 @@ class StarterReader {
     return f.decl->dimension;
   }
 
+  // Decks of version 90 and older have no unit cards in /BEGIN: `/UNIT/MASS/Mg`, `/UNIT/LENGTH/mm` and
+  // `/UNIT/TIME/s` name the work units, and the input units are the work units (nothing is converted).
+  // Radioss reads these three keywords only in such decks; in newer decks they are ignored.
+  void global_units_of_old_decks() {
+    for (const auto& r : deck_.records) {
+      const char kind = r.decl->path == "/UNIT/MASS"     ? 'M'
+                        : r.decl->path == "/UNIT/LENGTH" ? 'L'
+                        : r.decl->path == "/UNIT/TIME"   ? 'T'
+                                                         : 0;
+      if (kind == 0) continue;
+      const About about{r.decl->path};
+      if (deck_.version > 90) {
+        diags_.warning(Diag::IgnoredControlCard, at(r.pos, 1), about,
+                       std::string(r.decl->path) + " is ignored in a deck of version " +
+                           std::to_string(deck_.version) +
+                           ": it names the units only in decks of version 90 and older; give them in /BEGIN "
+                           "cards 3 and 4");
+        continue;
+      }
+      const auto f = unit_factor(r.header_word, kind);
+      if (!f) {
+        diags_.error(Diag::BadUnit, at(r.pos, 1), about,
+                     "unknown unit '" + r.header_word + "'; accepted: " +
+                         (kind == 'M'   ? "kg, g, mg, Mg (or t), lb"
+                          : kind == 'L' ? "m, cm, mm, um (or mum), km, in, ft"
+                                        : "s, ms, us (or mus), ns, min, h") +
+                         ", or a numeric factor to SI");
+        continue;
+      }
+      for (UnitSystem* u : {&deck_.input_units, &deck_.work_units}) {
+        double& factor = kind == 'M' ? u->mass : kind == 'L' ? u->length : u->time;
+        std::string& name = kind == 'M' ? u->mass_name : kind == 'L' ? u->length_name : u->time_name;
+        factor = *f;
+        name = r.header_word;
+      }
+    }
+  }
+
   void convert_units() {
     std::map<std::int64_t, UnitSystem> systems;
     for (const auto& r : deck_.records) {
@@ -678,6 +762,7 @@ class StarterReader {
         if (auto u = units_from(r, "MUNIT", "LUNIT", "TUNIT")) systems[r.id] = *u;
       }
     }
+    global_units_of_old_decks();
     const UnitSystem& w = deck_.work_units;
     for (auto& r : deck_.records) {
       const UnitSystem* u = &deck_.input_units;

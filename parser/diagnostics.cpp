@@ -35,7 +35,9 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::MissingCard, "a card the keyword needs is missing"},
       {Diag::EmptyRecordList, "a keyword that lists records or ids has none"},
       {Diag::BadHeader, "the keyword line's id or unit id is not a positive integer"},
-      {Diag::UnsupportedVersion, "the /BEGIN deck version is outside the versions radx reads"},
+      {Diag::UnsupportedVersion,
+       "the /BEGIN deck version is outside the versions radx reads, or a keyword is not read in that "
+       "version"},
       {Diag::DuplicateSingleton, "a keyword that may appear once appears again"},
       {Diag::MissingTitle, "the keyword needs a title line"},
       {Diag::ExtraData, "data lines after the last card of a keyword"},

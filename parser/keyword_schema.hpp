@@ -4,6 +4,7 @@
 // and the generated keyword reference (docs/keywords.md) are all driven by these declarations.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
@@ -49,6 +50,17 @@ inline constexpr Dim heat_capacity_per_volume{1, -1, -2};  // rho*cp per kelvin
 inline constexpr int kAnyVersion = 0;
 inline constexpr int kLastVersion = 9999;
 
+// The deck format versions (/BEGIN INVERS) radx reads, oldest first. Radioss numbered its formats 90, 100,
+// ..., 140, then 2017, 2018, ...; a keyword's layout is the one of the highest band at or below the deck's
+// version, so the bands below are plain integer ranges. Formats older than 90 (41 to 51) are not read.
+inline constexpr std::array<int, 16> kDeckVersions = {90,   100,  110,  120,  130,  140,  2017, 2018,
+                                                      2019, 2020, 2021, 2022, 2023, 2024, 2025, 2026};
+[[nodiscard]] constexpr bool is_deck_version(int v) {
+  for (int k : kDeckVersions)
+    if (k == v) return true;
+  return false;
+}
+
 // One field of a card. Built with the small fluent helpers below, e.g.
 //   I("Istf", 21, 30, "stiffness definition").allow({0, 1, 2, 3, 4, 5})
 //   R("Fscalegap", 1, 20, "gap scale factor (Igap = 2)").zero_is(1.0).gt(0.0)
@@ -72,6 +84,10 @@ struct FieldDecl {
   // With `ignored`: a non-default value changes the physics, so it is an error unless substitutions are
   // allowed (then the run goes on without it, listed as a substitution).
   bool changes_physics = false;
+  // Radioss pre-reads some cards and reads a field only when given columns of the line hold text (the
+  // 100-130 /MAT/LAW2 reads RHO_ref at 21-40 only when 11-20 are not blank). 0: always read.
+  int gate_first = 0;
+  int gate_last = 0;
 
   FieldDecl& versions(int from, int to = kLastVersion) {
     since = from;
@@ -122,6 +138,12 @@ struct FieldDecl {
   FieldDecl& not_implemented() {
     ignored = true;
     changes_physics = true;
+    return *this;
+  }
+  // Read only when columns [first, last] of the card line hold text; otherwise the field is blank.
+  FieldDecl& read_if_text(int first, int last) {
+    gate_first = first;
+    gate_last = last;
     return *this;
   }
   [[nodiscard]] bool in_version(int v) const { return v >= since && v <= until; }
@@ -205,6 +227,7 @@ enum class Header : std::uint8_t {
   UnitOnly,    // `/NODE/unit_ID`
   PartId,      // `/SHELL/part_ID`: the elements' part
   OptionalId,  // `/RANDOM[/GRNOD/id]`-style or `/SUBSET`: id if present
+  Word,        // `/UNIT/LENGTH/mm`: one text field (a unit name or a factor), kept as written
 };
 
 enum class Support : std::uint8_t {
@@ -238,6 +261,9 @@ struct KeywordDecl {
   bool singleton = false;           // may appear once (/BEGIN, /TITLE, /DEF_SHELL counts only its first)
   std::string_view id_name = "id";  // name of the header id in messages and listings
   std::vector<DimOverride> dim_overrides;
+  // First deck version radx reads this keyword in: in an older deck it is refused (RX307) because its
+  // layout there is not established.
+  int since = kAnyVersion;
 };
 
 // The starter deck's keywords, in the order of deck-format.md.

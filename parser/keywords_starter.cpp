@@ -3,8 +3,12 @@
 // order of deck-format.md, plus the list of real Radioss keywords radx knows but does not support.
 //
 // Conventions used throughout:
-// * The earliest band of a versioned field starts at kAnyVersion, so decks older than 2017 (INVERS 41..140)
-//   get the oldest layout described here.
+// * Version bands follow the FORMAT(radiossNNN) blocks OpenRadioss reads a deck with: for each keyword, the
+//   block with the highest NNN at or below the deck's version (INVERS) in the keyword's newest reader file,
+//   or the lowest block above it when there is none (SHELL, SH3N, BRICK, BOX/RECTA and RANDOM have only a
+//   110 block, which Radioss also applies to 90 and 100 decks). A band's first version is the first deck
+//   version radx reads (schema::kDeckVersions) that has the layout; the earliest band starts at kAnyVersion.
+//   Old bands are given as versions(kAnyVersion, 130) and so on: 130 is the last format before 140.
 // * zero_is() only for constant defaults; defaults that depend on other fields or on /DEF_SHELL and
 //   /DEF_SOLID are resolved by the model builder from the raw value.
 // * unused(): read and echoed, but radx does not act on it; a non-default value warns.
@@ -36,6 +40,19 @@ CardDecl card_v(std::string_view name, int since, int until, std::vector<FieldDe
   return c;
 }
 
+// A card of some versions only, read when its condition holds.
+CardDecl card_v_if(std::string_view name, int since, int until, Condition cond,
+                   std::vector<FieldDecl> fields) {
+  CardDecl c = card_v(name, since, until, std::move(fields));
+  c.condition = cond;
+  return c;
+}
+
+// Multimp, the memory-sizing field of the old TYPE7 layouts (Radioss reads it only for TYPE19).
+FieldDecl multimp() {
+  return I("Multimp", 51, 60, "impacted segments per node, memory sizing of old layouts").unused();
+}
+
 KeywordDecl kw(std::string_view path, std::string_view meaning, Header header, bool has_title,
                std::string_view id_name = "id") {
   KeywordDecl k;
@@ -64,13 +81,15 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
                         I("IRUN", 11, 20, "run number of old layouts, read and not used")
                             .versions(kAnyVersion, 2020)
                             .unused()}),
-        card("card 3 (input units)",
-             {S("input_mass", 1, 20, "mass unit the deck is written in (name or factor to kg)"),
-              S("input_length", 21, 40, "length unit the deck is written in (name or factor to m)"),
-              S("input_time", 41, 60, "time unit the deck is written in (name or factor to s)")}),
-        card("card 4 (work units)", {S("work_mass", 1, 20, "mass unit the solver computes in"),
-                                     S("work_length", 21, 40, "length unit the solver computes in"),
-                                     S("work_time", 41, 60, "time unit the solver computes in")}),
+        // Decks of version 90 have no unit cards: /UNIT/MASS, /UNIT/LENGTH and /UNIT/TIME name the units.
+        card_v("card 3 (input units)", 100, kLastVersion,
+               {S("input_mass", 1, 20, "mass unit the deck is written in (name or factor to kg)"),
+                S("input_length", 21, 40, "length unit the deck is written in (name or factor to m)"),
+                S("input_time", 41, 60, "time unit the deck is written in (name or factor to s)")}),
+        card_v("card 4 (work units)", 100, kLastVersion,
+               {S("work_mass", 1, 20, "mass unit the solver computes in"),
+                S("work_length", 21, 40, "length unit the solver computes in"),
+                S("work_time", 41, 60, "time unit the solver computes in")}),
     };
     t.push_back(std::move(k));
   }
@@ -86,6 +105,19 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
     k.cards = {card("card 1", {S("MUNIT", 1, 20, "mass unit: a unit name or a factor relative to kg"),
                                S("LUNIT", 21, 40, "length unit: a unit name or a factor relative to m"),
                                S("TUNIT", 41, 60, "time unit: a unit name or a factor relative to s")})};
+    t.push_back(std::move(k));
+  }
+  // The global units of decks of version 90 and older, one keyword per quantity; Radioss ignores them in
+  // newer decks (so does radx, with a warning).
+  struct GlobalUnit {
+    std::string_view path;
+    std::string_view meaning;
+  };
+  for (const GlobalUnit& u :
+       {GlobalUnit{"/UNIT/MASS", "the deck's mass unit (version 90 and older), e.g. /UNIT/MASS/Mg"},
+        GlobalUnit{"/UNIT/LENGTH", "the deck's length unit (version 90 and older), e.g. /UNIT/LENGTH/mm"},
+        GlobalUnit{"/UNIT/TIME", "the deck's time unit (version 90 and older), e.g. /UNIT/TIME/s"}}) {
+    KeywordDecl k = kw(u.path, u.meaning, Header::Word, false, "unit");
     t.push_back(std::move(k));
   }
   {
@@ -166,6 +198,7 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                         I("Ish3n", 21, 30, "3-node shell formulation; 0 takes /DEF_SHELL, then 2")
                             .allow({0, 1, 2, 30, 31}),
                         I("Idrill", 31, 40, "drilling stiffness: 1 on, 2 off; 0 takes /DEF_SHELL, then off")
+                            .versions(110)
                             .allow({0, 1, 2}),
                         I("Ipinch", 41, 50, "pinching degree of freedom (QBAT only)")
                             .versions(2020)
@@ -221,22 +254,24 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                  .unused(),
              I("Inpts", 51, 60, "integration points coded 100r + 10s + t; 0 = formulation default"),
              I("Itetra4", 61, 70, "4-node tetra formulation; 0 takes /DEF_SOLID")
+                 .versions(100)
                  .allow({0, 1, 3, 1000})
                  .unused(),
              I("Iframe", 71, 80, "1 non-co-rotational, 2 co-rotational; 0 takes /DEF_SOLID").allow({0, 1, 2}),
              R("dn", 81, 100, "numerical damping of HEPH (Isolid 24); 0 takes the formulation default")}),
-        card("card 2",
-             {R("qa", 1, 20, "quadratic bulk viscosity coefficient").zero_is(1.1),
-              R("qb", 21, 40, "linear bulk viscosity coefficient").zero_is(0.05),
-              R("h", 41, 60, "hourglass coefficient of Isolid 1 and 2").zero_is(0.1),
-              R("Lambda", 61, 80, "numerical (Navier-Stokes) viscosity lambda; 0 = off").not_implemented(),
-              R("Mu", 81, 100, "numerical (Navier-Stokes) viscosity mu; 0 = off").not_implemented()}),
+        card("card 2", {R("qa", 1, 20, "quadratic bulk viscosity coefficient").zero_is(1.1),
+                        R("qb", 21, 40, "linear bulk viscosity coefficient").zero_is(0.05),
+                        R("h", 41, 60, "hourglass coefficient of Isolid 1 and 2").zero_is(0.1),
+                        R("Lambda", 61, 80, "numerical (Navier-Stokes) viscosity lambda; 0 = off")
+                            .versions(120)
+                            .not_implemented(),
+                        R("Mu", 81, 100, "numerical (Navier-Stokes) viscosity mu; 0 = off")
+                            .versions(120)
+                            .not_implemented()}),
         card("card 3",
              {R("deltaT_min", 1, 20, "minimum element time step").dims(dim::time).not_implemented(),
-              I("Istrain", 21, 30, "strain output flag").versions(kAnyVersion, 2022).unused(),
-              I("Ihkt", 31, 40, "hourglass formulation option of old layouts")
-                  .versions(kAnyVersion, 2022)
-                  .unused(),
+              I("Istrain", 21, 30, "strain output flag").versions(100, 2022).unused(),
+              I("Ihkt", 31, 40, "hourglass formulation option of old layouts").versions(120, 2022).unused(),
               R("vdef_min", 21, 40, "distortion control: lower volumetric deformation limit; 0 = off")
                   .versions(2023)
                   .unused(),
@@ -249,13 +284,13 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
               R("COL_min", 81, 100, "distortion control: smallest collapse ratio; 0 = off")
                   .versions(2023)
                   .unused()}),
-        card("card 4",
-             {I("Ndir", 1, 10, "solid-to-SPH conversion: particles per direction").not_implemented(),
-              I("sphpart_ID", 11, 20, "solid-to-SPH conversion: SPH part").not_implemented(),
-              I("Icontrol", 21, 30, "distortion control: 1 on, 2 or 0 off")
-                  .versions(2025)
-                  .allow({0, 1, 2})
-                  .unused()}),
+        card_v("card 4", 140, kLastVersion,
+               {I("Ndir", 1, 10, "solid-to-SPH conversion: particles per direction").not_implemented(),
+                I("sphpart_ID", 11, 20, "solid-to-SPH conversion: SPH part").not_implemented(),
+                I("Icontrol", 21, 30, "distortion control: 1 on, 2 or 0 off")
+                    .versions(2025)
+                    .allow({0, 1, 2})
+                    .unused()}),
     };
     t.push_back(std::move(k));
   }
@@ -274,12 +309,20 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
     KeywordDecl k = kw("/MAT/LAW2", "Johnson-Cook elasto-plastic material", Header::IdUnit, true, "mat_ID");
     k.aliases = {"/MAT/PLAS_JOHNS", "/MAT/LAW02"};
     k.cards = {
-        card("card 1", {R("RHO_I", 1, 20, "initial density").must().gt(0.0).dims(dim::density),
-                        R("RHO_ref", 21, 40, "reference density; 0 takes RHO_I").dims(dim::density)}),
+        // Up to 130 the reference reader pre-reads columns 11-20, not 21-40, to decide whether the card
+        // carries RHO_ref: a left-justified RHO_I leaves them blank and RHO_ref is then not read.
+        card("card 1",
+             {R("RHO_I", 1, 20, "initial density").must().gt(0.0).dims(dim::density),
+              R("RHO_ref", 21, 40, "reference density; 0 takes RHO_I")
+                  .versions(kAnyVersion, 130)
+                  .read_if_text(11, 20)
+                  .dims(dim::density),
+              R("RHO_ref", 21, 40, "reference density; 0 takes RHO_I").versions(140).dims(dim::density)}),
         card("card 2",
              {R("E", 1, 20, "Young's modulus").must().gt(0.0).dims(dim::pressure),
               R("nu", 21, 40, "Poisson's ratio; exactly 0.5 is taken as 0.499"),
               I("Iflag", 41, 50, "card 3 input: 0 gives a, b, n; 1 gives yield, UTS and strain at UTS")
+                  .versions(140)
                   .allow({0, 1}),
               I("flagVP", 51, 60, "strain rate used: 1 plastic, 2 total, 3 deviatoric")
                   .versions(2023)
@@ -313,6 +356,7 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                  .unused(),
              R("F_cut", 61, 80, "cut-off frequency of the strain-rate filter; 0 = no filter").dims(dim::rate),
              R("Chard", 81, 100, "hardening mix: 0 isotropic to 1 kinematic")
+                 .versions(100)
                  .ge(0.0)
                  .le(1.0)
                  .not_implemented()}),
@@ -351,10 +395,11 @@ void add_groups(std::vector<KeywordDecl>& t) {
   id_group("/GRNOD/SURF", "node group: the nodes of the listed surfaces' segments", "grnod_ID");
   id_group("/GRNOD/GENE", "node group: existing node ids in ranges given as pairs (first, last)", "grnod_ID");
   {
-    // Declared for every version: the 2017/2018 layouts lack it, and a deck of those versions that uses it
-    // reads the same way.
+    // Declared from 2017: the 2017/2018 layouts lack it, and a deck of those versions that uses it reads the
+    // same way. How the older readers (which do not know it) would take its lines is not established.
     KeywordDecl k = kw("/GRNOD/GEN_INCR", "node group: arithmetic node id ranges, one per line", Header::Id,
                        true, "grnod_ID");
+    k.since = 2017;
     k.tail = Tail::Records;
     k.record = card("range", {I("first", 1, 10, "first node id of the range"),
                               I("last", 11, 20, "last node id of the range"),
@@ -510,6 +555,12 @@ std::vector<FieldDecl> type7_friction_c1_c5() {
           R("C5", 81, 100, "friction law coefficient 5")};
 }
 
+std::vector<FieldDecl> type7_adaptive_meshing() {
+  return {I("NRadm", 1, 10, "elements through a 90 degree radius").unused(),
+          R("Padm", 11, 30, "penetration percentage criterion").unused(),
+          R("Angladm", 31, 50, "angle criterion (degrees)").unused()};
+}
+
 FieldDecl ibc(std::string_view name, int col, std::string_view meaning) {
   return I(name, col, col, meaning).allow({0, 1});
 }
@@ -525,6 +576,7 @@ void add_contact(std::vector<KeywordDecl>& t) {
                         I("Ithe", 31, 40, "heat transfer through the contact").allow({0, 1}).unused(),
                         I("Igap", 41, 50, "gap option: 0 constant, 1 variable, 2 variable with scale and cap")
                             .allow({0, 1, 2}),
+                        multimp().versions(kAnyVersion, 110),
                         I("Ibag", 61, 70, "airbag vent-hole closure on contact").allow({0, 1}).unused(),
                         I("Idel", 71, 80, "removal of deleted segments and free secondary nodes")
                             .allow({-2, -1, 0, 1, 2}),
@@ -534,22 +586,28 @@ void add_contact(std::vector<KeywordDecl>& t) {
              {R("Fscalegap", 1, 20, "gap scale factor (Igap = 2)").zero_is(1.0).gt(0.0),
               R("Gapmax", 21, 40, "largest gap (Igap = 2); 0 = no cap").ge(0.0).dims(dim::length),
               R("Fpenmax", 41, 60, "initial penetrations above this fraction of the gap are deactivated")
+                  .versions(120)
                   .ge(0.0),
               I("Itied", 81, 90, "tie nodes once in contact").versions(2020).not_implemented(),
               I("Ists", 91, 100, "surface-to-surface option").versions(2026).not_implemented()}),
-        card("card 3",
-             {R("Stmin", 1, 20, "smallest pair stiffness (Istf 2..5)").ge(0.0).dims(dim::stiffness),
-              R("Stmax", 21, 40, "largest pair stiffness (Istf 2..5)")
-                  .zero_is(1e30)
-                  .ge(0.0)
-                  .dims(dim::stiffness),
-              R("mesh_size", 41, 60, "percentage of mesh size for the self-contact gap").not_implemented(),
-              R("dtmin", 61, 80, "interface minimum time step: a node below it is removed")
-                  .ge(0.0)
-                  .dims(dim::time),
-              I("Irem_gap", 81, 90, "deactivate secondary nodes when element size is below the gap")
-                  .not_implemented(),
-              I("Irem_i2", 91, 100, "deactivate secondary nodes also tied by a TYPE2 interface").unused()}),
+        card("card 3", {R("Stmin", 1, 20, "smallest pair stiffness (Istf 2..5)").ge(0.0).dims(dim::stiffness),
+                        R("Stmax", 21, 40, "largest pair stiffness (Istf 2..5)")
+                            .zero_is(1e30)
+                            .ge(0.0)
+                            .dims(dim::stiffness),
+                        R("mesh_size", 41, 60, "percentage of mesh size for the self-contact gap")
+                            .versions(110)
+                            .not_implemented(),
+                        R("dtmin", 61, 80, "interface minimum time step: a node below it is removed")
+                            .versions(120)
+                            .ge(0.0)
+                            .dims(dim::time),
+                        I("Irem_gap", 81, 90, "deactivate secondary nodes when element size is below the gap")
+                            .versions(120)
+                            .not_implemented(),
+                        I("Irem_i2", 91, 100, "deactivate secondary nodes also tied by a TYPE2 interface")
+                            .versions(130)
+                            .unused()}),
         card_if("card 4 (Icurv = 1 or 2)", when_in("Icurv", 1, 2),
                 {I("node_ID1", 1, 10, "first node defining the curvature").not_implemented(),
                  I("node_ID2", 11, 20, "second node defining the curvature").not_implemented()}),
@@ -569,36 +627,49 @@ void add_contact(std::vector<KeywordDecl>& t) {
               R("VISs", 41, 60, "critical damping ratio on the normal stiffness").zero_is(0.05).ge(0.0),
               R("VISF", 61, 80, "critical damping ratio on friction").zero_is(1.0).ge(0.0),
               R("Bumult", 81, 100, "sorting margin factor; 0 = default by model size").ge(0.0)}),
-        card("card 7",
-             {I("Ifric", 1, 10, "friction law: 0 Coulomb, 1 viscous, 2 Darmstad, 3 Renard")
-                  .allow({0, 1, 2, 3}),
-              I("Ifiltr", 11, 20, "friction force filter").allow({0, 1, 2, 3}),
-              R("Xfreq", 21, 40, "filter coefficient (a frequency for Ifiltr = 3)").ge(0.0),
-              I("Iform", 41, 50, "friction penalty: 1 viscous (total), 2 stiffness (incremental)")
-                  .zero_is(1)
-                  .allow({0, 1, 2}),
-              I("sens_ID", 51, 60, "sensor that switches the interface on or off").not_implemented(),
-              I("fct_IDF", 61, 70, "function scaling friction with temperature").not_implemented(),
-              R("AscaleF", 71, 90, "abscissa scale of fct_IDF").unused(),
-              I("fric_ID", 91, 100, "/FRICTION definition").versions(2018).not_implemented()}),
+        card("card 7", {I("Ifric", 1, 10, "friction law: 0 Coulomb, 1 viscous, 2 Darmstad, 3 Renard")
+                            .allow({0, 1, 2, 3}),
+                        I("Ifiltr", 11, 20, "friction force filter").allow({0, 1, 2, 3}),
+                        R("Xfreq", 21, 40, "filter coefficient (a frequency for Ifiltr = 3)").ge(0.0),
+                        I("Iform", 41, 50, "friction penalty: 1 viscous (total), 2 stiffness (incremental)")
+                            .zero_is(1)
+                            .allow({0, 1, 2}),
+                        I("sens_ID", 51, 60, "sensor that switches the interface on or off")
+                            .versions(120)
+                            .not_implemented(),
+                        I("fct_IDF", 61, 70, "function scaling friction with temperature")
+                            .versions(140)
+                            .not_implemented(),
+                        R("AscaleF", 71, 90, "abscissa scale of fct_IDF").versions(140).unused(),
+                        I("fric_ID", 91, 100, "/FRICTION definition").versions(2018).not_implemented()}),
         card_if("friction C1..C5 (Ifric > 0)", when_gt("Ifric", 0), type7_friction_c1_c5()),
         card_if("friction C6 (Ifric > 1)", when_gt("Ifric", 1),
                 {R("C6", 1, 20, "friction law coefficient 6")}),
-        card_if("adaptive meshing (Iadm = 2)", when_eq("Iadm", 2),
-                {I("NRadm", 1, 10, "elements through a 90 degree radius").unused(),
-                 R("Padm", 11, 30, "penetration percentage criterion").unused(),
-                 R("Angladm", 31, 50, "angle criterion (degrees)").unused()}),
-        card_if("thermal 1 (Ithe = 1)", when_eq("Ithe", 1),
-                {R("Kthe", 1, 20, "heat exchange coefficient").dims(kHeatTransfer).unused(),
-                 I("fct_IDK", 21, 30, "function of the heat exchange coefficient versus pressure").unused(),
-                 R("Tint", 41, 60, "interface temperature (kelvin)").unused(),
-                 I("Ithe_form", 61, 70, "heat contact formulation").unused(),
-                 R("AscaleK", 71, 90, "abscissa (pressure) scale of fct_IDK").dims(dim::pressure).unused()}),
-        card_if("thermal 2 (Ithe = 1)", when_eq("Ithe", 1),
-                {R("Frad", 1, 20, "radiation factor").dims(kHeatTransfer).unused(),
-                 R("Drad", 21, 40, "largest distance for radiation").dims(dim::length).unused(),
-                 R("Fheats", 41, 60, "share of frictional heat given to the secondary side").unused(),
-                 R("Fheatm", 61, 80, "share of frictional heat given to the main side").unused()}),
+        // From 110 the adaptive-meshing card comes before the thermal cards; up to 100 after them.
+        card_v_if("adaptive meshing (Iadm = 2)", 110, kLastVersion, when_eq("Iadm", 2),
+                  type7_adaptive_meshing()),
+        card_v_if("thermal 1 (Ithe = 1)", 100, kLastVersion, when_eq("Ithe", 1),
+                  {R("Kthe", 1, 20, "heat exchange coefficient").dims(kHeatTransfer).unused(),
+                   I("fct_IDK", 21, 30, "function of the heat exchange coefficient versus pressure")
+                       .versions(140)
+                       .unused(),
+                   R("Tint", 41, 60, "interface temperature (kelvin)").unused(),
+                   I("Ithe_form", 61, 70, "heat contact formulation").unused(),
+                   R("AscaleK", 71, 90, "abscissa (pressure) scale of fct_IDK")
+                       .versions(140)
+                       .dims(dim::pressure)
+                       .unused()}),
+        card_v_if("thermal 2 (Ithe = 1)", 140, kLastVersion, when_eq("Ithe", 1),
+                  {R("Frad", 1, 20, "radiation factor").dims(kHeatTransfer).unused(),
+                   R("Drad", 21, 40, "largest distance for radiation").dims(dim::length).unused(),
+                   R("Fheats", 41, 60, "share of frictional heat given to the secondary side").unused(),
+                   R("Fheatm", 61, 80, "share of frictional heat given to the main side").unused()}),
+        // The 90 layout reads its thermal card for Ithe > 1 (a value radx does not accept).
+        card_v_if("thermal (Ithe > 1)", kAnyVersion, 90, when_gt("Ithe", 1),
+                  {R("Kthe", 1, 20, "heat exchange coefficient").dims(kHeatTransfer).unused(),
+                   R("Tint", 41, 60, "interface temperature (kelvin)").unused()}),
+        card_v_if("adaptive meshing (Iadm = 2)", kAnyVersion, 100, when_eq("Iadm", 2),
+                  type7_adaptive_meshing()),
     };
     k.dim_overrides = {{"Stfac", "Istf", {"1"}, dim::stiffness}, {"Xfreq", "Ifiltr", {"3"}, dim::rate}};
     t.push_back(std::move(k));
@@ -613,6 +684,7 @@ void add_contact(std::vector<KeywordDecl>& t) {
                         I("Istf", 21, 30, "stiffness definition").allow({0, 1, 2, 3, 4, 5}),
                         I("Igap", 41, 50, "gap option: 0 constant, 1 variable, 2 variable with scale and cap")
                             .allow({0, 1, 2}),
+                        multimp().versions(kAnyVersion, 130),
                         I("Ibag", 61, 70, "airbag vent-hole closure on contact").allow({0, 1}).unused(),
                         I("Idel", 71, 80, "removal of deleted segments and free secondary nodes")
                             .allow({-2, -1, 0, 1, 2})}),
@@ -690,7 +762,7 @@ void add_loads(std::vector<KeywordDecl>& t) {
               I("sensor_ID", 31, 40, "sensor that starts the velocity; 0 = none"),
               I("grnod_ID", 41, 50, "nodes concerned"),
               I("frame_ID", 51, 60, "moving frame of the direction (exclusive with skew); 0 = none"),
-              I("Icoor", 61, 70, "0 Cartesian, 1 cylindrical (with a frame)").allow({0, 1})}),
+              I("Icoor", 61, 70, "0 Cartesian, 1 cylindrical (with a frame)").versions(120).allow({0, 1})}),
         card("card 2",
              {R("Ascale_x", 1, 20, "abscissa (time) scale of the function").zero_is(1.0).dims(dim::time),
               R("Fscale_y", 21, 40, "ordinate scale of the function").zero_is(1.0).dims(dim::velocity),
@@ -712,8 +784,9 @@ void add_loads(std::vector<KeywordDecl>& t) {
               I("skew_ID", 21, 30, "skew of the direction; 0 = global axes"),
               I("sensor_ID", 31, 40, "sensor that starts the displacement; 0 = none"),
               I("grnod_ID", 41, 50, "nodes concerned"),
-              I("frame_ID", 51, 60, "moving frame of the direction (exclusive with skew); 0 = none"),
-              I("Icoor", 61, 70, "0 Cartesian, 1 cylindrical (with a frame)").allow({0, 1})}),
+              I("frame_ID", 51, 60, "moving frame of the direction (exclusive with skew); 0 = none")
+                  .versions(110),
+              I("Icoor", 61, 70, "0 Cartesian, 1 cylindrical (with a frame)").versions(120).allow({0, 1})}),
         card("card 2",
              {R("Ascale_x", 1, 20, "abscissa (time) scale of the function").zero_is(1.0).dims(dim::time),
               R("Fscale_y", 21, 40, "ordinate scale of the function").zero_is(1.0).dims(dim::length),
@@ -986,10 +1059,10 @@ void add_rigid(std::vector<KeywordDecl>& t) {
         card("card 3", {R("Jxy", 1, 20, "added inertia xy").dims(dim::inertia),
                         R("Jyz", 21, 40, "added inertia yz").dims(dim::inertia),
                         R("Jxz", 41, 60, "added inertia xz").dims(dim::inertia)}),
-        card("card 4",
-             {I("Ioptoff", 1, 10, "1 = elements entirely inside the body are not computed").allow({0, 1}),
-              I("Iexpams", 11, 20, "AMS expansion flag").unused(),
-              I("Ifail", 21, 30, "failure criterion; >0 reads card 5").versions(2021).not_implemented()}),
+        card_v("card 4", 110, kLastVersion,
+               {I("Ioptoff", 1, 10, "1 = elements entirely inside the body are not computed").allow({0, 1}),
+                I("Iexpams", 11, 20, "AMS expansion flag").versions(2017).unused(),
+                I("Ifail", 21, 30, "failure criterion; >0 reads card 5").versions(2021).not_implemented()}),
         card_v("card 5 (Ifail > 0)", 2021, kLastVersion,
                {R("FN", 1, 20, "normal failure force").zero_is(1e20).dims(dim::force).unused(),
                 R("FT", 21, 40, "tangential failure force").zero_is(1e20).dims(dim::force).unused(),
@@ -1005,17 +1078,18 @@ void add_rigid(std::vector<KeywordDecl>& t) {
 // Time history
 void add_time_history(std::vector<KeywordDecl>& t) {
   // What follows the variable lines: ids 10 per line, or one object per line with or without a skew
-  // (the reference reader decodes a skew on /TH/NODE, /TH/SHEL and /TH/SH3N lines only).
+  // (the reference reader decodes a skew on /TH/NODE, /TH/SHEL and /TH/SH3N lines only). The element lines of
+  // /TH/SHEL have no skew_ID before the 140 layout (columns 11-20 blank).
   enum class Objects { Ids, RecordsWithSkew, Records };
   auto th = [&t](std::string_view path, std::vector<std::string_view> aliases, std::string_view meaning,
-                 Objects objects) {
+                 Objects objects, int skew_since = kAnyVersion) {
     KeywordDecl k = kw(path, meaning, Header::Id, true, "th_ID");
     k.aliases = std::move(aliases);
     k.tail = objects == Objects::Ids ? Tail::ThVarsThenIds : Tail::ThVarsThenRecords;
     if (objects == Objects::RecordsWithSkew)
-      k.record =
-          card("object", {I("id", 1, 10, "object id"), I("skew_ID", 11, 20, "skew of the output; 0 = global"),
-                          S("name", 21, 100, "label of the object in the output")});
+      k.record = card("object", {I("id", 1, 10, "object id"),
+                                 I("skew_ID", 11, 20, "skew of the output; 0 = global").versions(skew_since),
+                                 S("name", 21, 100, "label of the object in the output")});
     else if (objects == Objects::Records)
       k.record = card("object",
                       {I("id", 1, 10, "object id"), S("name", 21, 100, "label of the object in the output")});
@@ -1025,7 +1099,7 @@ void add_time_history(std::vector<KeywordDecl>& t) {
   th("/TH/PART", {}, "time history of part energies and momenta", Objects::Ids);
   th("/TH/INTER", {}, "time history of interface forces and energies", Objects::Ids);
   th("/TH/RWALL", {}, "time history of rigid wall forces", Objects::Ids);
-  th("/TH/SHEL", {"/TH/SHELL"}, "time history of shell element results", Objects::RecordsWithSkew);
+  th("/TH/SHEL", {"/TH/SHELL"}, "time history of shell element results", Objects::RecordsWithSkew, 140);
   th("/TH/SUBS", {}, "time history of subset energies and momenta", Objects::Ids);
   th("/TH/BRIC", {"/TH/BRICK"}, "time history of brick element results", Objects::Records);
   th("/TH/SH3N", {}, "time history of 3-node shell element results", Objects::RecordsWithSkew);
@@ -1047,7 +1121,7 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
                    I("Istrain", 41, 50, "strain output flag, ignored by the reference starter").unused(),
                    I("Ioffset", 51, 60, "1 = shell offset used in contact").versions(2024).not_implemented(),
                    I("Ish3n", 71, 80, "default 3-node shell formulation"),
-                   I("Idrill", 81, 90, "default drilling stiffness flag"),
+                   I("Idrill", 81, 90, "default drilling stiffness flag").versions(110),
                    I("Ithin_drape", 91, 100, "drape thinning option").versions(2026).zero_is(1).unused()})};
     t.push_back(std::move(k));
   }
@@ -1055,16 +1129,17 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
     KeywordDecl k =
         kw("/DEF_SOLID", "global defaults for solid property flags left at 0", Header::None, false);
     k.singleton = true;
-    k.cards = {card("card 1",
-                    {I("Isolid", 1, 10, "default 8-node solid formulation"),
-                     I("Ismstr", 11, 20, "default solid strain formulation"),
-                     I("Icpre", 21, 30, "default constant-pressure option").versions(2021),
-                     I("Istrain", 31, 40, "strain output flag, ignored").versions(kAnyVersion, 2020).unused(),
-                     I("Itetra4", 41, 50, "default 4-node tetra formulation").versions(2019).unused(),
-                     I("Itetra10", 51, 60, "default 10-node tetra formulation").versions(2019).unused(),
-                     I("Imas", 61, 70, "nodal mass distribution: 1 by angle, 2 uniform").not_implemented(),
-                     I("Iframe", 71, 80, "default element frame"),
-                     I("Icontrol", 81, 90, "default distortion control").versions(2025).unused()})};
+    k.cards = {card(
+        "card 1",
+        {I("Isolid", 1, 10, "default 8-node solid formulation"),
+         I("Ismstr", 11, 20, "default solid strain formulation"),
+         I("Icpre", 21, 30, "default constant-pressure option").versions(2021),
+         I("Istrain", 31, 40, "strain output flag, ignored").versions(100, 2020).unused(),
+         I("Itetra4", 41, 50, "default 4-node tetra formulation").versions(2019).unused(),
+         I("Itetra10", 51, 60, "default 10-node tetra formulation").versions(2019).unused(),
+         I("Imas", 61, 70, "nodal mass distribution: 1 by angle, 2 uniform").versions(120).not_implemented(),
+         I("Iframe", 71, 80, "default element frame"),
+         I("Icontrol", 81, 90, "default distortion control").versions(2025).unused()})};
     t.push_back(std::move(k));
   }
   {
@@ -1083,15 +1158,19 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
     KeywordDecl k = kw("/IOFLAG", "listing and output format options", Header::None, false);
     k.support = Support::Ignored;
     k.singleton = true;
-    k.cards = {card("card 1", {I("IPRI", 1, 10, "listing detail level"),
-                               I("IOUTP", 31, 40, "starter geometry output in animation format"),
-                               I("IOUTYY", 41, 50, "output format option"),
-                               I("IROOTYY", 51, 60, "root-name format option"),
-                               I("Irot", 61, 70, "1 = always compute rotational degrees of freedom")})};
+    k.cards = {card("card 1",
+                    {I("IPRI", 1, 10, "listing detail level"),
+                     I("IGTYP", 21, 30, "geometry output type of old layouts").versions(kAnyVersion, 140),
+                     I("IOUTP", 31, 40, "starter geometry output in animation format"),
+                     I("IOUTYY", 41, 50, "output format option").versions(100),
+                     I("IROOTYY", 51, 60, "root-name format option").versions(100),
+                     I("Irot", 61, 70, "1 = always compute rotational degrees of freedom").versions(100)})};
     t.push_back(std::move(k));
   }
   {
-    KeywordDecl k = kw("/RANDOM", "random perturbation of all node coordinates", Header::None, false);
+    // The reference reads `/RANDOM/x/...` as /RANDOM whenever x is not GRNOD: old decks write /RANDOM/0.
+    KeywordDecl k = kw("/RANDOM", "random perturbation of all node coordinates; a trailing /0 is ignored",
+                       Header::OptionalId, false, "ignored_ID");
     k.support = Support::Ignored;
     k.cards = {
         card("card 1",
@@ -1115,16 +1194,17 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
     k.support = Support::Ignored;
     k.singleton = true;
     k.cards = {card("card 1", {I("MEMORY", 1, 10, "words of memory to reserve"),
-                               I("REAL", 31, 40, "share of the memory for reals, %")})};
+                               R("REAL", 21, 40, "share of the memory for reals")})};
     t.push_back(std::move(k));
   }
   {
     KeywordDecl k = kw("/SPMD", "domain decomposition and thread settings", Header::None, false);
     k.support = Support::Ignored;
     k.singleton = true;
-    k.cards = {card(
-        "card 1", {I("Domdec", 1, 10, "decomposition method"), I("Nspmd", 11, 20, "number of domains"),
-                   I("Dkword", 31, 40, "decomposition option"), I("Nthread", 51, 60, "threads per domain")})};
+    k.cards = {
+        card("card 1", {I("Domdec", 1, 10, "decomposition method"), I("Nspmd", 11, 20, "number of domains"),
+                        I("Dkword", 31, 40, "decomposition option"),
+                        I("Nthread", 51, 60, "threads per domain").versions(110)})};
     t.push_back(std::move(k));
   }
   {

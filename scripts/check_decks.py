@@ -10,6 +10,10 @@ the hand-made and generated decks:
   * the field-name comment line in front of a card has each name ending at a field's last column;
   * cross references, duplicate ids, empty groups, element geometry and a few value checks.
 
+Deck versions: the formats 90, 100, 110, 120, 130, 140 and 2017 to 2026. The layouts of 2017 and newer come
+from deck-format.md; those of 90 to 140 from the FORMAT(radiossNNN) blocks OpenRadioss reads each keyword with
+(the block of the highest version at or below the deck's), restated here as facts about the file format.
+
 Problems are reported with the RX codes of parser/diagnostics.hpp. For decks that carry `# expect:` lines
 (decks/invalid/), the set of problems found must equal the set expected; for the other decks it must be
 empty. Exit status 0 when every deck checks out.
@@ -48,8 +52,13 @@ def reals(*specs):
     return [F(n, "R", 1 + 20 * k, 20 + 20 * k) for k, n in enumerate(specs) if n]
 
 
-def card(fields, cond=None, optional=False):
-    return {"fields": fields, "cond": cond, "optional": optional}
+def card(fields, cond=None, optional=False, gate=None):
+    """gate: {field: (a, b)}: the field is read only when columns a-b of the line hold text."""
+    return {"fields": fields, "cond": cond, "optional": optional, "gate": gate or {}}
+
+
+# The deck formats the reader reads; 90..140 are the old numbering (140 comes before 2017).
+VERSIONS = (90, 100, 110, 120, 130, 140) + tuple(range(2017, 2027))
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -61,7 +70,9 @@ def def_shell(v):
          F("Istrain", "I", 41, 50)]
     if v >= 2024:
         f.append(F("Ioffset", "I", 51, 60))
-    f += [F("Ish3n", "I", 71, 80), F("Idrill", "I", 81, 90)]
+    f.append(F("Ish3n", "I", 71, 80))
+    if v >= 110:
+        f.append(F("Idrill", "I", 81, 90))
     if v >= 2026:
         f.append(F("Ithin_drape", "I", 91, 100))
     return [card(f)]
@@ -71,11 +82,13 @@ def def_solid(v):
     f = [F("Isolid", "I", 1, 10), F("Ismstr", "I", 11, 20)]
     if v >= 2021:
         f.append(F("Icpre", "I", 21, 30))
-    else:
+    elif v >= 100:
         f.append(F("Istrain", "I", 31, 40))
     if v >= 2019:
         f += [F("Itetra4", "I", 41, 50), F("Itetra10", "I", 51, 60)]
-    f += [F("Imas", "I", 61, 70), F("Iframe", "I", 71, 80)]
+    if v >= 120:
+        f.append(F("Imas", "I", 61, 70))
+    f.append(F("Iframe", "I", 71, 80))
     if v >= 2025:
         f.append(F("Icontrol", "I", 81, 90))
     return [card(f)]
@@ -87,7 +100,9 @@ def part(v):
 
 
 def prop_shell(v):
-    c1 = [F("Ishell", "I", 1, 10), F("Ismstr", "I", 11, 20), F("Ish3n", "I", 21, 30), F("Idrill", "I", 31, 40)]
+    c1 = [F("Ishell", "I", 1, 10), F("Ismstr", "I", 11, 20), F("Ish3n", "I", 21, 30)]
+    if v >= 110:
+        c1.append(F("Idrill", "I", 31, 40))
     if v >= 2020:
         c1.append(F("Ipinch", "I", 41, 50))
     if v >= 2018:
@@ -109,12 +124,21 @@ def prop_solid(v):
     c1.append(F("Icpre", "I", 31, 40))
     if v >= 2019:
         c1.append(F("Itetra10", "I", 41, 50))
-    c1 += [F("Inpts", "I", 51, 60), F("Itetra4", "I", 61, 70), F("Iframe", "I", 71, 80), F("dn", "R", 81, 100)]
-    c2 = reals("qa", "qb", "h", "Lambda", "Mu")
+    c1.append(F("Inpts", "I", 51, 60))
+    if v >= 100:
+        c1.append(F("Itetra4", "I", 61, 70))
+    c1 += [F("Iframe", "I", 71, 80), F("dn", "R", 81, 100)]
+    c2 = reals("qa", "qb", "h", "Lambda" if v >= 120 else None, "Mu" if v >= 120 else None)
     if v >= 2023:
         c3 = reals("deltaT_min", "vdef_min", "vdef_max", "ASP_max", "COL_min")
     else:
-        c3 = [F("deltaT_min", "R", 1, 20), F("Istrain", "I", 21, 30), F("Ihkt", "I", 31, 40)]
+        c3 = [F("deltaT_min", "R", 1, 20)]
+        if v >= 100:
+            c3.append(F("Istrain", "I", 21, 30))
+        if v >= 120:
+            c3.append(F("Ihkt", "I", 31, 40))
+    if v < 140:  # no solid-to-SPH card before the 140 layout
+        return [card(c1), card(c2), card(c3)]
     c4 = [F("Ndir", "I", 1, 10), F("sphpart_ID", "I", 11, 20)]
     if v >= 2025:
         c4.append(F("Icontrol", "I", 21, 30))
@@ -126,16 +150,21 @@ def mat_law1(v):
 
 
 def mat_law2(v):
-    c2 = [F("E", "R", 1, 20), F("nu", "R", 21, 40), F("Iflag", "I", 41, 50)]
+    """Up to 130: RHO_ref only when columns 11-20 hold text (the old pre-read), no Iflag, no Chard in 90."""
+    c2 = [F("E", "R", 1, 20), F("nu", "R", 21, 40)]
+    if v >= 140:
+        c2.append(F("Iflag", "I", 41, 50))
     if v >= 2023:
         c2.append(F("flagVP", "I", 51, 60))
     if v >= 2025:
         c2.append(F("Pmin", "R", 61, 80))
     c4 = [F("c", "R", 1, 20), F("EPS_DOT_0", "R", 21, 40), F("ICC", "I", 41, 50), F("Fsmooth", "I", 51, 60),
-          F("F_cut", "R", 61, 80), F("Chard", "R", 81, 100)]
+          F("F_cut", "R", 61, 80)]
+    if v >= 100:
+        c4.append(F("Chard", "R", 81, 100))
     c5 = reals("m", "T_melt", "rhoC_p", "T_r", "T_max" if v >= 2025 else None)
-    return [card(reals("RHO_I", "RHO_ref")), card(c2), card(reals("a", "b", "n", "EPS_p_max", "SIG_max0")),
-            card(c4), card(c5)]
+    c1 = card(reals("RHO_I", "RHO_ref"), gate={"RHO_ref": (11, 20)} if v <= 130 else None)
+    return [c1, card(c2), card(reals("a", "b", "n", "EPS_p_max", "SIG_max0")), card(c4), card(c5)]
 
 
 def ibc_fields():
@@ -143,31 +172,57 @@ def ibc_fields():
 
 
 def inter_type7(v):
+    """TYPE7 by version: Multimp 51-60 up to 110; Fpenmax, dtmin, Irem_gap, sens_ID from 120; %mesh_size from
+    110; Irem_i2 from 130; fct_IDF, AscaleF and the second thermal card from 140; up to 100 the Iadm card
+    follows the thermal card (which the 90 layout reads for Ithe > 1, without Ithe_form)."""
     c1 = [F("grnd_IDs", "I", 1, 10), F("surf_IDm", "I", 11, 20), F("Istf", "I", 21, 30), F("Ithe", "I", 31, 40),
-          F("Igap", "I", 41, 50), F("Ibag", "I", 61, 70), F("Idel", "I", 71, 80), F("Icurv", "I", 81, 90),
-          F("Iadm", "I", 91, 100)]
-    c2 = reals("Fscalegap", "Gap_max", "Fpenmax")
+          F("Igap", "I", 41, 50)]
+    if v <= 110:
+        c1.append(F("Multimp", "I", 51, 60))
+    c1 += [F("Ibag", "I", 61, 70), F("Idel", "I", 71, 80), F("Icurv", "I", 81, 90), F("Iadm", "I", 91, 100)]
+    c2 = reals("Fscalegap", "Gap_max", "Fpenmax" if v >= 120 else None)
     if v >= 2020:
         c2.append(F("Itied", "I", 81, 90))
     if v >= 2026:
         c2.append(F("Ists", "I", 91, 100))
-    c3 = reals("Stmin", "Stmax", "%mesh_size", "dtmin") + [F("Irem_gap", "I", 81, 90), F("Irem_i2", "I", 91, 100)]
+    c3 = reals("Stmin", "Stmax", "%mesh_size" if v >= 110 else None, "dtmin" if v >= 120 else None)
+    if v >= 120:
+        c3.append(F("Irem_gap", "I", 81, 90))
+    if v >= 130:
+        c3.append(F("Irem_i2", "I", 91, 100))
     c4 = [F("node_ID1", "I", 1, 10), F("node_ID2", "I", 11, 20)]
     c5 = reals("Stfac", "Fric", "Gapmin", "Tstart", "Tstop")
     c6 = ibc_fields() + [F("Inacti", "I", 31, 40), F("VISs", "R", 41, 60), F("VISf", "R", 61, 80),
                          F("Bumult", "R", 81, 100)]
-    c7 = [F("Ifric", "I", 1, 10), F("Ifiltr", "I", 11, 20), F("Xfreq", "R", 21, 40), F("Iform", "I", 41, 50),
-          F("sens_ID", "I", 51, 60), F("fct_IDF", "I", 61, 70), F("AscaleF", "R", 71, 90)]
+    c7 = [F("Ifric", "I", 1, 10), F("Ifiltr", "I", 11, 20), F("Xfreq", "R", 21, 40), F("Iform", "I", 41, 50)]
+    if v >= 120:
+        c7.append(F("sens_ID", "I", 51, 60))
+    if v >= 140:
+        c7 += [F("fct_IDF", "I", 61, 70), F("AscaleF", "R", 71, 90)]
     if v >= 2018:
         c7.append(F("fric_ID", "I", 91, 100))
+    adm = card([F("NRadm", "I", 1, 10), F("Padm", "R", 11, 30), F("Angladm", "R", 31, 50)],
+               cond=lambda x: x.get("Iadm", 0) == 2)
+    if v >= 140:
+        thermal = [card([F("Kthe", "R", 1, 20), F("fct_IDK", "I", 21, 30), F("Tint", "R", 41, 60),
+                         F("Ithe_form", "I", 61, 70), F("AscaleK", "R", 71, 90)], cond=lambda x: x.get("Ithe", 0) == 1),
+                   card(reals("Frad", "Drad", "Fheats", "Fheatm"), cond=lambda x: x.get("Ithe", 0) == 1)]
+    elif v >= 100:
+        thermal = [card([F("Kthe", "R", 1, 20), F("Tint", "R", 41, 60), F("Ithe_form", "I", 61, 70)],
+                        cond=lambda x: x.get("Ithe", 0) == 1)]
+    else:
+        thermal = [card([F("Kthe", "R", 1, 20), F("Tint", "R", 41, 60)], cond=lambda x: (x.get("Ithe") or 0) > 1)]
+    tail = [adm] + thermal if v >= 110 else thermal + [adm]
     return [card(c1), card(c2), card(c3), card(c4, cond=lambda x: x.get("Icurv", 0) in (1, 2)), card(c5), card(c6),
             card(c7), card(reals("C1", "C2", "C3", "C4", "C5"), cond=lambda x: x.get("Ifric", 0) > 0),
-            card(reals("C6"), cond=lambda x: x.get("Ifric", 0) > 1)]
+            card(reals("C6"), cond=lambda x: x.get("Ifric", 0) > 1)] + tail
 
 
 def inter_lagdt(v):
-    c1 = [F("grnd_IDs", "I", 1, 10), F("surf_IDm", "I", 11, 20), F("Istf", "I", 21, 30), F("Igap", "I", 41, 50),
-          F("Ibag", "I", 61, 70), F("Idel", "I", 71, 80)]
+    c1 = [F("grnd_IDs", "I", 1, 10), F("surf_IDm", "I", 11, 20), F("Istf", "I", 21, 30), F("Igap", "I", 41, 50)]
+    if v <= 130:  # the 90 block, used up to 130, has Multimp
+        c1.append(F("Multimp", "I", 51, 60))
+    c1 += [F("Ibag", "I", 61, 70), F("Idel", "I", 71, 80)]
     c5 = ibc_fields() + [F("Inacti", "I", 31, 40), F("VISs", "R", 41, 60), F("VISf", "R", 61, 80),
                          F("Bumult", "R", 81, 100)]
     c6 = [F("Ifric", "I", 1, 10), F("Ifiltr", "I", 11, 20), F("Xfreq", "R", 21, 40), F("Iform", "I", 41, 50)]
@@ -182,11 +237,19 @@ def bcs(v):
                   F("Ry", "I", 9, 9), F("Rz", "I", 10, 10), F("skew_ID", "I", 11, 20), F("grnod_ID", "I", 21, 30)])]
 
 
-def impvel(v):
-    return [card([F("funct_IDT", "I", 1, 10), F("Dir", "S", 11, 20), F("skew_ID", "I", 21, 30),
-                  F("sensor_ID", "I", 31, 40), F("grnod_ID", "I", 41, 50), F("frame_ID", "I", 51, 60),
-                  F("Icoor", "I", 61, 70)]),
-            card(reals("Ascale_x", "Fscale_y", "Tstart", "Tstop"))]
+def impvel(v, frame_from=90):
+    """/IMPVEL: Icoor from 120. /IMPDISP (frame_from 110): frame_ID from 110, Icoor from 120."""
+    c1 = [F("funct_IDT", "I", 1, 10), F("Dir", "S", 11, 20), F("skew_ID", "I", 21, 30), F("sensor_ID", "I", 31, 40),
+          F("grnod_ID", "I", 41, 50)]
+    if v >= frame_from:
+        c1.append(F("frame_ID", "I", 51, 60))
+    if v >= 120:
+        c1.append(F("Icoor", "I", 61, 70))
+    return [card(c1), card(reals("Ascale_x", "Fscale_y", "Tstart", "Tstop"))]
+
+
+def impdisp(v):
+    return impvel(v, frame_from=110)
 
 
 def skew_fix(v):
@@ -241,17 +304,21 @@ def cload(v):
 
 
 def rbody(v):
-    """/RBODY (deck-format.md): cards 1-4; Ifail on card 4 from 2021, and card 5 when it is set."""
-    c4 = [F("Ioptoff", "I", 1, 10), F("Iexpams", "I", 11, 20)]
-    if v >= 2021:
-        c4.append(F("Ifail", "I", 21, 30))
-    return [card([F("node_ID", "I", 1, 10), F("sens_ID", "I", 11, 20), F("skew_ID", "I", 21, 30),
-                  F("Ispher", "I", 31, 40), F("Mass", "R", 41, 60), F("grnd_ID", "I", 61, 70),
-                  F("Ikrem", "I", 71, 80), F("ICoG", "I", 81, 90), F("surf_ID", "I", 91, 100)]),
-            card(reals("Jxx", "Jyy", "Jzz")),
-            card(reals("Jxy", "Jyz", "Jxz")),
-            card(c4),
-            card(reals("FN", "FT", "expN", "expT"), cond=lambda x: x.get("Ifail", 0) != 0)]
+    """/RBODY (deck-format.md): cards 1-4; Ifail on card 4 from 2021, and card 5 when it is set. Card 4 starts in
+    the 110 layout with Ioptoff alone; Iexpams from 2017."""
+    cards = [card([F("node_ID", "I", 1, 10), F("sens_ID", "I", 11, 20), F("skew_ID", "I", 21, 30),
+                   F("Ispher", "I", 31, 40), F("Mass", "R", 41, 60), F("grnd_ID", "I", 61, 70),
+                   F("Ikrem", "I", 71, 80), F("ICoG", "I", 81, 90), F("surf_ID", "I", 91, 100)]),
+             card(reals("Jxx", "Jyy", "Jzz")),
+             card(reals("Jxy", "Jyz", "Jxz"))]
+    if v >= 110:
+        c4 = [F("Ioptoff", "I", 1, 10)]
+        if v >= 2017:
+            c4.append(F("Iexpams", "I", 11, 20))
+        if v >= 2021:
+            c4.append(F("Ifail", "I", 21, 30))
+        cards.append(card(c4))
+    return cards + [card(reals("FN", "FT", "expN", "expT"), cond=lambda x: x.get("Ifail", 0) != 0)]
 
 
 NODE_REC = [F("node_ID", "I", 1, 10), F("X", "R", 11, 30), F("Y", "R", 31, 50), F("Z", "R", 51, 70)]
@@ -264,10 +331,40 @@ SH3N_REC = [F("tria_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20
 FUNCT_REC = reals("X", "Y")
 THNODE_REC = [F("node_ID", "I", 1, 10), F("skew_ID", "I", 11, 20), F("name", "S", 21, 100)]
 THELEM_REC = [F("elem_ID", "I", 1, 10), F("name", "S", 21, 100)]  # /TH/BRIC: no skew column
+
+
+def thshel_rec(v):
+    """/TH/SHEL element lines: no skew_ID (columns 11-20 blank) before the 140 layout."""
+    return [F("elem_ID", "I", 1, 10)] + ([F("skew_ID", "I", 11, 20)] if v >= 140 else []) + [F("name", "S", 21, 100)]
+
+
+def ioflag(v):
+    """/IOFLAG: Igtyp 21-30 up to 140; Outyy, Irootyy, Irot from 100."""
+    f = [F("Ipri", "I", 1, 10)]
+    if v <= 140:
+        f.append(F("Igtyp", "I", 21, 30))
+    f.append(F("Ioutp", "I", 31, 40))
+    if v >= 100:
+        f += [F("Outyy", "I", 41, 50), F("Irootyy", "I", 51, 60), F("Irot", "I", 61, 70)]
+    return [card(f)]
+
+
+def spmd(v):
+    """/SPMD: Nthread 51-60 from 110."""
+    f = [F("Domdec", "I", 1, 10), F("Nspmd", "I", 11, 20), F("Dkword", "I", 31, 40)]
+    if v >= 110:
+        f.append(F("Nthread", "I", 51, 60))
+    return [card(f)]
 ID_REC = [F("id%d" % (k + 1), "I", 1 + 10 * k, 10 + 10 * k) for k in range(10)]
 
-# path -> (header, has_title, cards(v), tail, record)
+# path -> (header, has_title, cards(v), tail, record: a field list, or a function of the version)
 STARTER = {
+    "/UNIT/MASS": ("word", False, lambda v: [], None, None),
+    "/UNIT/LENGTH": ("word", False, lambda v: [], None, None),
+    "/UNIT/TIME": ("word", False, lambda v: [], None, None),
+    "/IOFLAG": ("none", False, ioflag, None, None),
+    "/SPMD": ("none", False, spmd, None, None),
+    "/TH/SHEL": ("id", True, lambda v: [], "threcords", thshel_rec),
     "/TITLE": ("none", False, lambda v: [card([F("title", "S", 1, 100)])], None, None),
     "/DEF_SHELL": ("none", False, def_shell, None, None),
     "/DEF_SOLID": ("none", False, def_solid, None, None),
@@ -294,7 +391,7 @@ STARTER = {
     "/INTER/TYPE7": ("id", True, inter_type7, None, None),
     "/BCS": ("id", True, bcs, None, None),
     "/IMPVEL": ("id", True, impvel, None, None),
-    "/IMPDISP": ("id", True, impvel, None, None),
+    "/IMPDISP": ("id", True, impdisp, None, None),
     "/INIVEL/TRA": ("id", True, inivel, None, None),
     "/INIVEL/T+G": ("id", True, inivel, None, None),
     "/INIVEL/ROT": ("id", True, inivel, None, None),
@@ -501,27 +598,39 @@ class Checker:
                 return None
             i += 1
             cards = []
-            while i < n and len(cards) < 4:
-                r = recs[i]
-                if r[2].startswith("/"):
-                    break
-                if not is_comment(r[2]):
-                    cards.append(r)
-                i += 1
-            if len(cards) < 4:
-                self.issue("RX502", mainfile, recs[i - 1][1], "/BEGIN has fewer than 4 cards")
+
+            def take(count):
+                nonlocal i
+                while i < n and len(cards) < count:
+                    r = recs[i]
+                    if r[2].startswith("/"):
+                        break
+                    if not is_comment(r[2]):
+                        cards.append(r)
+                    i += 1
+
+            take(2)
+            if len(cards) < 2:
+                self.issue("RX502", mainfile, recs[i - 1][1], "/BEGIN has no version card")
                 return None
             vv = self.parse_fields([F("INVERS", "I", 1, 10), F("IRUN", "I", 11, 20)], cards[1], "/BEGIN")
             version = vv.get("INVERS") or 0
-            if version not in (2017, 2018, 2019, 2020, 2021, 2022, 2023, 2024, 2025, 2026):
+            if version not in VERSIONS:
                 self.issue("RX307", cards[1][0], cards[1][1], "unsupported version %r" % version)
-            for c, kinds in ((cards[2], "input"), (cards[3], "work")):
-                uv = self.parse_fields([F("M", "S", 1, 20), F("L", "S", 21, 40), F("T", "S", 41, 60)], c, "/BEGIN")
-                bad = [x for x, ok in ((uv.get("M"), MASS_UNITS), (uv.get("L"), LENGTH_UNITS),
-                                       (uv.get("T"), TIME_UNITS)) if x is not None and x not in ok and not
-                       REAL_RE.match(x)]
-                if bad:
-                    self.issue("RX506", c[0], c[1], "unknown %s unit(s) %s" % (kinds, ", ".join(bad)))
+            # Version 90 has no unit cards (/UNIT/MASS, /LENGTH, /TIME name the units); 100 and newer have two.
+            if version >= 100:
+                take(4)
+                if len(cards) < 4:
+                    self.issue("RX502", mainfile, recs[i - 1][1], "/BEGIN has fewer than 4 cards")
+                    return None
+                for c, kinds in ((cards[2], "input"), (cards[3], "work")):
+                    uv = self.parse_fields([F("M", "S", 1, 20), F("L", "S", 21, 40), F("T", "S", 41, 60)], c,
+                                           "/BEGIN")
+                    bad = [x for x, ok in ((uv.get("M"), MASS_UNITS), (uv.get("L"), LENGTH_UNITS),
+                                           (uv.get("T"), TIME_UNITS)) if x is not None and x not in ok and not
+                           REAL_RE.match(x)]
+                    if bad:
+                        self.issue("RX506", c[0], c[1], "unknown %s unit(s) %s" % (kinds, ", ".join(bad)))
         model = Model(version)
         end_seen = False
         prev_comment = None
@@ -562,8 +671,21 @@ class Checker:
 
     def keyword(self, model, path, rest, kwrec, block, v):
         header, has_title, cards_fn, tail, recfields = STARTER[path]
+        if callable(recfields):
+            recfields = recfields(v)
         file, lineno, text = kwrec
         oid = 0
+        word = None
+        if header == "word":
+            # /UNIT/LENGTH/mm: the unit as written (case matters: Mg is not mg)
+            word = text.rstrip().split("/")[-1].replace(" ", "")
+            kinds = {"/UNIT/MASS": MASS_UNITS, "/UNIT/LENGTH": LENGTH_UNITS, "/UNIT/TIME": TIME_UNITS}[path]
+            if len(rest) != 1:
+                self.issue("RX306", file, lineno, "%s takes one unit name" % path)
+            elif word not in kinds and not REAL_RE.match(word):
+                self.issue("RX506", file, lineno, "unknown unit %r" % word)
+            if v > 90:
+                self.warn(file, lineno, "%s is ignored in a deck of version %d (units are /BEGIN cards)" % (path, v))
         if header in ("id", "part"):
             if not rest or not INT_RE.match(rest[0]):
                 self.issue("RX306", file, lineno, "%s needs an id" % path)
@@ -585,7 +707,7 @@ class Checker:
                 title = data[k][1][2]
                 k += 1
         obj = {"path": path, "id": oid, "pos": (file, lineno), "title": title, "cards": [], "vals": {},
-               "recs": [], "ids": []}
+               "recs": [], "ids": [], "word": word}
         vals = {}
         card_list = cards_fn(v)
         for c in card_list:
@@ -599,6 +721,13 @@ class Checker:
             k += 1
             self.check_names_line(cm, c["fields"], path)
             cv = self.parse_fields(c["fields"], r, path)
+            for key, (ga, gb) in c["gate"].items():
+                # the old pre-read: the field is not read when the gate columns are blank
+                if "," not in r[2] and not r[2][ga - 1:gb].strip():
+                    if cv.get(key) is not None:
+                        self.warn(r[0], r[1], "%s: %s is not read in this layout (columns %d-%d blank)" %
+                                  (path, key, ga, gb))
+                    cv[key] = None
             for key, val in cv.items():
                 vals[key] = val
                 obj["vals"][key] = (val, (r[0], r[1]))

@@ -2,7 +2,8 @@
 // layout band, values checked field by field through the Deck API.
 //
 // The decks are written by the test from an independent statement of the layouts (taken from
-// shared/spec/deck-format.md, not from the reader's declarations): each field is placed right-justified
+// shared/spec/deck-format.md for 2017 and newer, and for the formats 90 to 140 from the FORMAT blocks of
+// the reference's reader files, not from the reader's declarations): each field is placed right-justified
 // at the columns of its band by a helper, so no column is counted by hand. Every field gets a distinct
 // non-default value (11, 12, 13, ... for integers, 14.5, 15.5, ... for reals), so a field read from the
 // wrong columns, or a card read in the wrong order, gives a wrong value. Fields that a band does not have
@@ -160,6 +161,7 @@ struct Kw {
   std::vector<std::string> text_lines;              // text tail as written
   std::string text;                                 // expected text
   std::vector<std::string> absent;                  // field names the record must not have
+  std::string word;                                 // Header::Word keywords: the text field
   // Filled by the writer: physical line numbers.
   std::uint32_t line = 0;
   std::vector<std::uint32_t> card_lines, record_lines, id_line_numbers;
@@ -243,8 +245,9 @@ std::string write_deck(DeckSpec& d, const std::string& eol = "\n") {
 // --- the keywords
 
 CardSpec prop_shell_card1(Values& x) {
-  return {Ix("Ishell", 1, 10, 12), Ix("Ismstr", 11, 20, 10),          Ix("Ish3n", 21, 30, 31),
-          Ix("Idrill", 31, 40, 2), Ix("Ipinch", 41, 50, 1).ver(2020), x.R("P_Thick_Fail", 61, 80).ver(2018)};
+  return {Ix("Ishell", 1, 10, 12),           Ix("Ismstr", 11, 20, 10),
+          Ix("Ish3n", 21, 30, 31),           Ix("Idrill", 31, 40, 2).ver(110),
+          Ix("Ipinch", 41, 50, 1).ver(2020), x.R("P_Thick_Fail", 61, 80).ver(2018)};
 }
 
 void add_prop_shell(DeckSpec& d, const std::string& header, std::int64_t id) {
@@ -260,15 +263,20 @@ void add_prop_shell(DeckSpec& d, const std::string& header, std::int64_t id) {
 void add_prop_solid(DeckSpec& d, const std::string& header, std::int64_t id) {
   auto& x = d.x;
   Kw& k = d.titled(header, "/PROP/SOLID", id, "solid property " + std::to_string(id));
+  // 90: no Itetra4, card 3 only deltaT_min; 100-110: no Lambda, Mu, Ihkt; up to 130: no card 4.
   k.cards = {
       {Ix("Isolid", 1, 10, 14), Ix("Ismstr", 11, 20, 12), Ix("Iale", 21, 30, 1).ver(2022),
        Ix("Icpre", 31, 40, 3), Ix("Itetra10", 41, 50, 2).ver(2019), x.I("Inpts", 51, 60),
-       Ix("Itetra4", 61, 70, 1000), Ix("Iframe", 71, 80, 2), x.R("dn", 81, 100)},
-      {x.R("qa", 1, 20), x.R("qb", 21, 40), x.R("h", 41, 60), x.R("Lambda", 61, 80), x.R("Mu", 81, 100)},
-      {x.R("deltaT_min", 1, 20), x.I("Istrain", 21, 30).ver(0, 2022), x.I("Ihkt", 31, 40).ver(0, 2022),
+       Ix("Itetra4", 61, 70, 1000).ver(100), Ix("Iframe", 71, 80, 2), x.R("dn", 81, 100)},
+      {x.R("qa", 1, 20), x.R("qb", 21, 40), x.R("h", 41, 60), x.R("Lambda", 61, 80).ver(120),
+       x.R("Mu", 81, 100).ver(120)},
+      {x.R("deltaT_min", 1, 20), x.I("Istrain", 21, 30).ver(100, 2022), x.I("Ihkt", 31, 40).ver(120, 2022),
        x.R("vdef_min", 21, 40).ver(2023), x.R("vdef_max", 41, 60).ver(2023), x.R("ASP_max", 61, 80).ver(2023),
-       x.R("COL_min", 81, 100).ver(2023)},
-      {x.I("Ndir", 1, 10), x.I("sphpart_ID", 11, 20), Ix("Icontrol", 21, 30, 1).ver(2025)}};
+       x.R("COL_min", 81, 100).ver(2023)}};
+  if (d.v >= 140)
+    k.cards.push_back({x.I("Ndir", 1, 10), x.I("sphpart_ID", 11, 20), Ix("Icontrol", 21, 30, 1).ver(2025)});
+  else
+    k.absent = {"Ndir", "sphpart_ID", "Icontrol"};
 }
 
 void add_law1(DeckSpec& d, const std::string& header, std::int64_t id, std::int64_t unit) {
@@ -281,9 +289,12 @@ void add_law1(DeckSpec& d, const std::string& header, std::int64_t id, std::int6
 void add_law2(DeckSpec& d, const std::string& header, std::int64_t id, int iflag) {
   auto& x = d.x;
   Kw& k = d.titled(header, "/MAT/LAW2", id, "Johnson-Cook " + std::to_string(id));
+  // RHO_I is right-justified, so columns 11-20 hold text and the 90-130 layouts read RHO_ref too.
   k.cards.push_back({x.R("RHO_I", 1, 20), x.R("RHO_ref", 21, 40)});
-  k.cards.push_back({x.R("E", 1, 20), Rx("nu", 21, 40, "0.3", 0.3), Ix("Iflag", 41, 50, iflag),
+  k.cards.push_back({x.R("E", 1, 20), Rx("nu", 21, 40, "0.3", 0.3), Ix("Iflag", 41, 50, iflag).ver(140),
                      Ix("flagVP", 51, 60, 3).ver(2023), x.R("Pmin", 61, 80).ver(2025)});
+  // Before 140 card 2 has no Iflag: card 3 is always a, b, n.
+  if (d.v < 140) iflag = 0;
   if (iflag == 0) {
     k.cards.push_back({x.R("a", 1, 20), x.R("b", 21, 40), Rx("n", 41, 60, "0.45", 0.45),
                        x.R("EPS_p_max", 61, 80), x.R("SIG_max0", 81, 100)});
@@ -294,37 +305,53 @@ void add_law2(DeckSpec& d, const std::string& header, std::int64_t id, int iflag
     k.absent = {"a", "b", "n"};
   }
   k.cards.push_back({x.R("c", 1, 20), x.R("EPS_DOT_0", 21, 40), Ix("ICC", 41, 50, 2),
-                     Ix("Fsmooth", 51, 60, 1), x.R("F_cut", 61, 80), Rx("Chard", 81, 100, "0.25", 0.25)});
+                     Ix("Fsmooth", 51, 60, 1), x.R("F_cut", 61, 80),
+                     Rx("Chard", 81, 100, "0.25", 0.25).ver(100)});
   k.cards.push_back({x.R("m", 1, 20), x.R("T_melt", 21, 40), x.R("rhoC_p", 41, 60), x.R("T_r", 61, 80),
                      x.R("T_max", 81, 100).ver(2025)});
 }
 
 void add_type7(DeckSpec& d, std::int64_t id) {
   auto& x = d.x;
+  const int v = d.v;
   Kw& k = d.titled("/INTER/TYPE7/" + std::to_string(id), "/INTER/TYPE7", id, "type7 every card");
   k.cards = {
       {x.I("grnd_IDs", 1, 10), x.I("surf_IDm", 11, 20), Ix("Istf", 21, 30, 4), Ix("Ithe", 31, 40, 1),
-       Ix("Igap", 41, 50, 2), Ix("Ibag", 61, 70, 1), Ix("Idel", 71, 80, -1), Ix("Icurv", 81, 90, 1),
-       Ix("Iadm", 91, 100, 2)},
-      {x.R("Fscalegap", 1, 20), x.R("Gapmax", 21, 40), x.R("Fpenmax", 41, 60), x.I("Itied", 81, 90).ver(2020),
-       x.I("Ists", 91, 100).ver(2026)},
-      {x.R("Stmin", 1, 20), x.R("Stmax", 21, 40), x.R("mesh_size", 41, 60), x.R("dtmin", 61, 80),
-       x.I("Irem_gap", 81, 90), x.I("Irem_i2", 91, 100)},
+       Ix("Igap", 41, 50, 2), x.I("Multimp", 51, 60).ver(0, 110), Ix("Ibag", 61, 70, 1),
+       Ix("Idel", 71, 80, -1), Ix("Icurv", 81, 90, 1), Ix("Iadm", 91, 100, 2)},
+      {x.R("Fscalegap", 1, 20), x.R("Gapmax", 21, 40), x.R("Fpenmax", 41, 60).ver(120),
+       x.I("Itied", 81, 90).ver(2020), x.I("Ists", 91, 100).ver(2026)},
+      {x.R("Stmin", 1, 20), x.R("Stmax", 21, 40), x.R("mesh_size", 41, 60).ver(110),
+       x.R("dtmin", 61, 80).ver(120), x.I("Irem_gap", 81, 90).ver(120), x.I("Irem_i2", 91, 100).ver(130)},
       {x.I("node_ID1", 1, 10), x.I("node_ID2", 11, 20)},  // Icurv = 1
       {x.R("Stfac", 1, 20), x.R("Fric", 21, 40), x.R("Gapmin", 41, 60), x.R("Tstart", 61, 80),
        x.R("Tstop", 81, 100)},
       {Ix("IBCX", 8, 8, 1), Ix("IBCY", 9, 9, 0), Ix("IBCZ", 10, 10, 1), Ix("Inacti", 31, 40, 6),
        x.R("VISs", 41, 60), x.R("VISF", 61, 80), x.R("Bumult", 81, 100)},
       {Ix("Ifric", 1, 10, 2), Ix("Ifiltr", 11, 20, 3), x.R("Xfreq", 21, 40), Ix("Iform", 41, 50, 2),
-       x.I("sens_ID", 51, 60), x.I("fct_IDF", 61, 70), x.R("AscaleF", 71, 90),
+       x.I("sens_ID", 51, 60).ver(120), x.I("fct_IDF", 61, 70).ver(140), x.R("AscaleF", 71, 90).ver(140),
        x.I("fric_ID", 91, 100).ver(2018)},
       {x.R("C1", 1, 20), x.R("C2", 21, 40), x.R("C3", 41, 60), x.R("C4", 61, 80), x.R("C5", 81, 100)},
       {x.R("C6", 1, 20)},
-      {x.I("NRadm", 1, 10), x.R("Padm", 11, 30), x.R("Angladm", 31, 50)},  // Iadm = 2
-      {x.R("Kthe", 1, 20), x.I("fct_IDK", 21, 30), x.R("Tint", 41, 60), x.I("Ithe_form", 61, 70),
-       x.R("AscaleK", 71, 90)},  // Ithe = 1
-      {x.R("Frad", 1, 20), x.R("Drad", 21, 40), x.R("Fheats", 41, 60), x.R("Fheatm", 61, 80)},
   };
+  const CardSpec adaptive = {x.I("NRadm", 1, 10), x.R("Padm", 11, 30), x.R("Angladm", 31, 50)};  // Iadm = 2
+  // Ithe = 1: from 140 two thermal cards; 100 to 130 one shorter card; the 90 layout reads its thermal card
+  // only for Ithe > 1, so none here.
+  std::vector<CardSpec> thermal;
+  if (v >= 140) {
+    thermal = {{x.R("Kthe", 1, 20), x.I("fct_IDK", 21, 30), x.R("Tint", 41, 60), x.I("Ithe_form", 61, 70),
+                x.R("AscaleK", 71, 90)},
+               {x.R("Frad", 1, 20), x.R("Drad", 21, 40), x.R("Fheats", 41, 60), x.R("Fheatm", 61, 80)}};
+  } else if (v >= 100) {
+    thermal = {{x.R("Kthe", 1, 20), x.R("Tint", 41, 60), x.I("Ithe_form", 61, 70)}};
+    k.absent = {"fct_IDK", "AscaleK", "Frad", "Fheatm"};
+  } else {
+    k.absent = {"Kthe", "Tint", "Ithe_form", "Frad"};
+  }
+  // From 110 the adaptive-meshing card comes before the thermal cards; up to 100 after them.
+  if (v >= 110) k.cards.push_back(adaptive);
+  for (auto& c : thermal) k.cards.push_back(c);
+  if (v < 110) k.cards.push_back(adaptive);
 }
 
 void add_lagdt(DeckSpec& d, std::int64_t id) {
@@ -332,7 +359,7 @@ void add_lagdt(DeckSpec& d, std::int64_t id) {
   Kw& k = d.titled("/INTER/LAGDT/TYPE7/" + std::to_string(id), "/INTER/LAGDT/TYPE7", id, "lagdt every card");
   k.cards = {
       {x.I("grnd_IDs", 1, 10), x.I("surf_IDm", 11, 20), Ix("Istf", 21, 30, 5), Ix("Igap", 41, 50, 1),
-       Ix("Ibag", 61, 70, 1), Ix("Idel", 71, 80, 2)},
+       x.I("Multimp", 51, 60).ver(0, 130), Ix("Ibag", 61, 70, 1), Ix("Idel", 71, 80, 2)},
       {x.R("Fscalegap", 1, 20), x.R("Gapmax", 21, 40)},
       {x.R("Stmin", 1, 20), x.R("Stmax", 21, 40)},
       {x.R("Stfac", 1, 20), x.R("Fric", 21, 40), x.R("Gapmin", 41, 60), x.R("Tstart", 61, 80),
@@ -355,11 +382,20 @@ DeckSpec full_deck(int v) {
   {
     Kw& k = d.add("/BEGIN", "/BEGIN");
     // Input units written as SI factors, work units as names: the same systems, so nothing is converted.
-    k.cards = {
-        {Sx("RUNNAME", 1, 100, "KEYWORDS_" + std::to_string(v))},
-        {Ix("INVERS", 1, 10, v), x.I("IRUN", 11, 20).ver(0, 2020)},
-        {Sx("input_mass", 1, 20, "1000"), Sx("input_length", 21, 40, "0.001"), Sx("input_time", 41, 60, "1")},
-        {Sx("work_mass", 1, 20, "Mg"), Sx("work_length", 21, 40, "mm"), Sx("work_time", 41, 60, "s")}};
+    k.cards = {{Sx("RUNNAME", 1, 100, "KEYWORDS_" + std::to_string(v))},
+               {Ix("INVERS", 1, 10, v), x.I("IRUN", 11, 20).ver(0, 2020)}};
+    if (v >= 100) {
+      k.cards.push_back({Sx("input_mass", 1, 20, "1000"), Sx("input_length", 21, 40, "0.001"),
+                         Sx("input_time", 41, 60, "1")});
+      k.cards.push_back(
+          {Sx("work_mass", 1, 20, "Mg"), Sx("work_length", 21, 40, "mm"), Sx("work_time", 41, 60, "s")});
+    } else {
+      // Version 90: no unit cards; the global units are keywords of their own, input = work.
+      k.absent = {"input_mass", "work_mass"};
+      d.add("/UNIT/MASS/Mg", "/UNIT/MASS").word = "Mg";
+      d.add("/UNIT/LENGTH/ mm", "/UNIT/LENGTH").word = "mm";
+      d.add("/UNIT/TIME/s", "/UNIT/TIME").word = "s";
+    }
   }
   d.add("/TITLE", "/TITLE").cards = {
       {Sx("TITLE", 1, 100, "Every keyword of the subset in layout " + std::to_string(v))}};
@@ -441,7 +477,11 @@ DeckSpec full_deck(int v) {
        Ix("Rz", 10, 10, 0), x.I("skew_ID", 11, 20), x.I("grnod_ID", 21, 30)}};
   d.titled("/IMPVEL/902", "/IMPVEL", 902, "imposed velocity").cards = {
       {x.I("funct_IDT", 1, 10), Sx("Dir", 11, 20, "Y"), x.I("skew_ID", 21, 30), x.I("sensor_ID", 31, 40),
-       x.I("grnod_ID", 41, 50), x.I("frame_ID", 51, 60), Ix("Icoor", 61, 70, 1)},
+       x.I("grnod_ID", 41, 50), x.I("frame_ID", 51, 60), Ix("Icoor", 61, 70, 1).ver(120)},
+      {x.R("Ascale_x", 1, 20), x.R("Fscale_y", 21, 40), x.R("Tstart", 41, 60), x.R("Tstop", 61, 80)}};
+  d.titled("/IMPDISP/912", "/IMPDISP", 912, "imposed displacement").cards = {
+      {x.I("funct_IDT", 1, 10), Sx("Dir", 11, 20, "Z"), x.I("skew_ID", 21, 30), x.I("sensor_ID", 31, 40),
+       x.I("grnod_ID", 41, 50), x.I("frame_ID", 51, 60).ver(110), Ix("Icoor", 61, 70, 1).ver(120)},
       {x.R("Ascale_x", 1, 20), x.R("Fscale_y", 21, 40), x.R("Tstart", 41, 60), x.R("Tstop", 61, 80)}};
   {
     Kw& k = d.titled("/INIVEL/TRA/903", "/INIVEL/TRA", 903, "initial velocity");
@@ -491,15 +531,23 @@ DeckSpec full_deck(int v) {
                 Ix("Ispher", 31, 40, 1), x.R("Mass", 41, 60), x.I("grnd_ID", 61, 70), x.I("Ikrem", 71, 80),
                 Ix("ICoG", 81, 90, 3), x.I("surf_ID", 91, 100)},
                {x.R("Jxx", 1, 20), x.R("Jyy", 21, 40), x.R("Jzz", 41, 60)},
-               {x.R("Jxy", 1, 20), x.R("Jyz", 21, 40), x.R("Jxz", 41, 60)},
-               {Ix("Ioptoff", 1, 10, 1), x.I("Iexpams", 11, 20), x.I("Ifail", 21, 30).ver(2021)}};
+               {x.R("Jxy", 1, 20), x.R("Jyz", 21, 40), x.R("Jxz", 41, 60)}};
+    // Card 4 from 110 (Iexpams from 2017, Ifail from 2021).
+    if (v >= 110)
+      k.cards.push_back(
+          {Ix("Ioptoff", 1, 10, 1), x.I("Iexpams", 11, 20).ver(2017), x.I("Ifail", 21, 30).ver(2021)});
     if (v >= 2021)
       k.cards.push_back({x.R("FN", 1, 20), x.R("FT", 21, 40), x.R("expN", 41, 60), x.R("expT", 61, 80)});
     else
-      k.absent = {"FN", "expT"};
+      k.absent = {"FN", "expT", "Ifail"};
+    if (v < 110) k.absent.push_back("Ioptoff");
   }
   auto th_record = [&x](const std::string& name) {
     return CardSpec{x.I("id", 1, 10), x.I("skew_ID", 11, 20), Sl("name", 21, 100, name)};
+  };
+  // /TH/SHEL element lines: no skew_ID before 140.
+  auto th_shel_record = [&x, v, &th_record](const std::string& name) {
+    return v >= 140 ? th_record(name) : CardSpec{x.I("id", 1, 10), Sl("name", 21, 100, name)};
   };
   {
     Kw& k = d.titled("/TH/NODE/1001", "/TH/NODE", 1001, "nodes");
@@ -529,13 +577,13 @@ DeckSpec full_deck(int v) {
     Kw& k = d.titled("/TH/SHEL/1005", "/TH/SHEL", 1005, "shells");
     k.var_lines = {{"F1", "F2", "M12"}};
     k.th_vars = {"F1", "F2", "M12"};
-    k.records = {th_record("shell a")};
+    k.records = {th_shel_record("shell a")};
   }
   {
     Kw& k = d.titled("/TH/SHELL/1006", "/TH/SHEL", 1006, "shells, long spelling");
     k.var_lines = {{"DEF"}};
     k.th_vars = {"DEF"};
-    k.records = {th_record("shell b")};
+    k.records = {th_shel_record("shell b")};
   }
   {
     Kw& k = d.titled("/TH/SUBS/1007", "/TH/SUBS", 1007, "subsets");
@@ -569,21 +617,24 @@ DeckSpec full_deck(int v) {
   }
   d.add("/DEF_SHELL", "/DEF_SHELL").cards = {
       {x.I("Ishell", 1, 10), x.I("Ismstr", 11, 20), x.I("Ithick", 21, 30), x.I("Iplas", 31, 40),
-       x.I("Istrain", 41, 50), x.I("Ioffset", 51, 60).ver(2024), x.I("Ish3n", 71, 80), x.I("Idrill", 81, 90),
-       x.I("Ithin_drape", 91, 100).ver(2026)}};
+       x.I("Istrain", 41, 50), x.I("Ioffset", 51, 60).ver(2024), x.I("Ish3n", 71, 80),
+       x.I("Idrill", 81, 90).ver(110), x.I("Ithin_drape", 91, 100).ver(2026)}};
   d.add("/DEF_SOLID", "/DEF_SOLID").cards = {
       {x.I("Isolid", 1, 10), x.I("Ismstr", 11, 20), x.I("Icpre", 21, 30).ver(2021),
-       x.I("Istrain", 31, 40).ver(0, 2020), x.I("Itetra4", 41, 50).ver(2019),
-       x.I("Itetra10", 51, 60).ver(2019), x.I("Imas", 61, 70), x.I("Iframe", 71, 80),
+       x.I("Istrain", 31, 40).ver(100, 2020), x.I("Itetra4", 41, 50).ver(2019),
+       x.I("Itetra10", 51, 60).ver(2019), x.I("Imas", 61, 70).ver(120), x.I("Iframe", 71, 80),
        x.I("Icontrol", 81, 90).ver(2025)}};
   d.add("/ANALY", "/ANALY").cards = {{Ix("N2D3D", 1, 10, 1), x.I("ITEMP", 11, 20).ver(2026),
                                       Ix("IPARITH", 21, 30, 2), x.I("ISUBCYC", 31, 40).ver(0, 2022)}};
-  d.add("/IOFLAG", "/IOFLAG").cards = {{x.I("IPRI", 1, 10), x.I("IOUTP", 31, 40), x.I("IOUTYY", 41, 50),
-                                        x.I("IROOTYY", 51, 60), x.I("Irot", 61, 70)}};
+  d.add("/IOFLAG", "/IOFLAG").cards = {{x.I("IPRI", 1, 10), x.I("IGTYP", 21, 30).ver(0, 140),
+                                        x.I("IOUTP", 31, 40), x.I("IOUTYY", 41, 50).ver(100),
+                                        x.I("IROOTYY", 51, 60).ver(100), x.I("Irot", 61, 70).ver(100)}};
   d.add("/RANDOM", "/RANDOM").cards = {{x.R("XALEA", 1, 20), x.R("SEED", 21, 40)}};
+  d.add("/RANDOM/0", "/RANDOM").cards = {{x.R("XALEA", 1, 20), x.R("SEED", 21, 40)}};
+  d.add("/MEMORY", "/MEMORY").cards = {{x.I("MEMORY", 1, 10), Rx("REAL", 21, 40, ".66", 0.66)}};
   d.add("/RANDOM/GRNOD/401", "/RANDOM/GRNOD", 401).cards = {{x.R("XALEA", 1, 20), x.R("SEED", 21, 40)}};
   d.add("/SPMD", "/SPMD").cards = {
-      {x.I("Domdec", 1, 10), x.I("Nspmd", 11, 20), x.I("Dkword", 31, 40), x.I("Nthread", 51, 60)}};
+      {x.I("Domdec", 1, 10), x.I("Nspmd", 11, 20), x.I("Dkword", 31, 40), x.I("Nthread", 51, 60).ver(110)}};
   d.add("/SHFRA/V4", "/SHFRA/V4");
   return d;
 }
@@ -614,6 +665,7 @@ void check_keyword(const radx::KeywordRecord& rec, const Kw& k, int v) {
   CHECK(rec.id == k.id);
   CHECK(rec.unit_id == k.unit);
   CHECK(rec.title == (k.has_title ? k.title : std::string()));
+  CHECK(rec.header_word == k.word);
   // Fixed cards, field by field.
   std::size_t expected_fields = 0;
   for (std::size_t c = 0; c < k.cards.size(); ++c) {
@@ -725,6 +777,22 @@ void check_full_deck(int version) {
 
 // ---------------------------------------------------------------------------------------------------
 
+TEST_CASE("every starter keyword read field by field in the 90 layout (units as /UNIT/MASS ...)",
+          "[keywords]") {
+  check_full_deck(90);
+}
+
+TEST_CASE("every starter keyword read field by field in the 100 and 110 layouts", "[keywords]") {
+  check_full_deck(100);
+  check_full_deck(110);
+}
+
+TEST_CASE("every starter keyword read field by field in the 120, 130 and 140 layouts", "[keywords]") {
+  check_full_deck(120);
+  check_full_deck(130);
+  check_full_deck(140);
+}
+
 TEST_CASE("every starter keyword read field by field in the 2017 layout", "[keywords]") {
   check_full_deck(2017);
 }
@@ -769,6 +837,159 @@ TEST_CASE("a 2026 /BEGIN accepts the trailing IRUN 0 of old decks and has no IRU
   REQUIRE(deck.records.size() == 1u);
   CHECK(deck.records[0].find("IRUN") == nullptr);
   CHECK(deck.records[0].get_int("INVERS") == 2026);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Old deck formats.
+
+namespace {
+
+std::string begin_lines(int version, bool unit_cards = true) {
+  std::string s = "/BEGIN\nOLD\n" + Card().at(1, 10, version).at(11, 20, 0).str() + "\n";
+  if (unit_cards)
+    s += Card().at(1, 20, "kg").at(21, 40, "m").at(41, 60, "s").str() + "\n" +
+         Card().at(1, 20, "kg").at(21, 40, "m").at(41, 60, "s").str() + "\n";
+  return s;
+}
+
+bool has_diag(const Diagnostics& diags, Diag code, radx::Severity sev, const std::string& text) {
+  for (const auto& d : diags.items())
+    if (d.code == code && d.severity == sev && Diagnostics::format(d).find(text) != std::string::npos)
+      return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("the deck formats 90 to 140 are read, 51, 95 and 2016 are refused by version", "[keywords]") {
+  for (int v : {90, 100, 110, 120, 130, 140}) {
+    INFO("version " << v);
+    TempDir dir;
+    const auto path = dir.write("V_0000.rad", begin_lines(v, v >= 100) + "/END\n");
+    Diagnostics diags;
+    const auto deck = radx::read_starter_deck(path, diags);
+    INFO(all_diags(diags));
+    CHECK_FALSE(diags.has_errors());
+    CHECK(deck.version == v);
+  }
+  for (int v : {41, 51, 95, 2016}) {
+    INFO("version " << v);
+    TempDir dir;
+    const auto path = dir.write("V_0000.rad", begin_lines(v) + "/END\n");
+    Diagnostics diags;
+    (void)radx::read_starter_deck(path, diags);
+    INFO(all_diags(diags));
+    CHECK(has_diag(diags, Diag::UnsupportedVersion, radx::Severity::Error,
+                   "deck version " + std::to_string(v) +
+                       " is not read by radx: it reads the deck formats 90, "
+                       "100, 110, 120, 130, 140, 2017 to 2026"));
+  }
+}
+
+TEST_CASE("a keyword whose old layout is not established is refused by name in old decks", "[keywords]") {
+  const std::string body =
+      "/GRNOD/GEN_INCR/3\nranges\n" + Card().at(1, 10, 1).at(11, 20, 9).at(21, 30, 2).str() + "\n/END\n";
+  {
+    TempDir dir;
+    const auto path = dir.write("GEN_0000.rad", begin_lines(130) + body);
+    Diagnostics diags;
+    const auto deck = radx::read_starter_deck(path, diags);
+    INFO(all_diags(diags));
+    CHECK(diags.error_count() == 1u);
+    CHECK(has_diag(
+        diags, Diag::UnsupportedVersion, radx::Severity::Error,
+        "[/GRNOD/GEN_INCR] /GRNOD/GEN_INCR is not read by radx in a deck of version 130: its layout in "
+        "that format is not established; radx reads it in decks of version 2017 and newer"));
+    CHECK(deck.of("/GRNOD/GEN_INCR").empty());
+  }
+  {
+    TempDir dir;
+    const auto path = dir.write("GEN_0000.rad", begin_lines(2017) + body);
+    Diagnostics diags;
+    const auto deck = radx::read_starter_deck(path, diags);
+    INFO(all_diags(diags));
+    CHECK_FALSE(diags.has_errors());
+    REQUIRE(deck.of("/GRNOD/GEN_INCR").size() == 1u);
+  }
+}
+
+TEST_CASE("/MAT/LAW2 up to 130 reads RHO_ref only when columns 11-20 hold text, from 140 always",
+          "[keywords]") {
+  // RHO_I left-justified (columns 1-6): 11-20 blank.
+  const std::string mat = "/MAT/LAW2/1\nsteel\n" + Card().left(1, "7.8E-9").at(21, 40, "7.5E-9").str() +
+                          "\n" + Card().at(1, 20, "210000.").at(21, 40, "0.3").str() + "\n" +
+                          Card().at(1, 20, "250.").str() + "\n\n\n";
+  // RHO_I right-justified in 1-20: 11-20 hold text.
+  const std::string mat2 = "/MAT/LAW2/2\nsteel 2\n" + Card().at(1, 20, "7.8E-9").at(21, 40, "7.5E-9").str() +
+                           "\n" + Card().at(1, 20, "210000.").at(21, 40, "0.3").str() + "\n" +
+                           Card().at(1, 20, "250.").str() + "\n\n\n";
+  for (int v : {100, 130, 140}) {
+    INFO("version " << v);
+    TempDir dir;
+    const auto path = dir.write("RHO_0000.rad", begin_lines(v) + mat + mat2 + "/END\n");
+    Diagnostics diags;
+    const auto deck = radx::read_starter_deck(path, diags);
+    INFO(all_diags(diags));
+    CHECK_FALSE(diags.has_errors());
+    const auto mats = deck.of("/MAT/LAW2");
+    REQUIRE(mats.size() == 2u);
+    CHECK(mats[0]->get_real("RHO_I") == Approx(7.8e-9).epsilon(kEps));
+    CHECK(mats[1]->get_real("RHO_ref") == Approx(7.5e-9).epsilon(kEps));
+    if (v < 140) {
+      CHECK(mats[0]->get_real("RHO_ref") == 0.0);
+      CHECK(mats[0]->find("RHO_ref")->blank);
+      CHECK(has_diag(diags, Diag::ExtraData, radx::Severity::Warning,
+                     "field RHO_ref ('7.5E-9') is not read in a version-" + std::to_string(v) +
+                         " deck because columns 11-20 are blank"));
+      CHECK(mats[0]->find("Iflag") == nullptr);  // no Iflag before 140: card 3 is a, b, n
+    } else {
+      CHECK(mats[0]->get_real("RHO_ref") == Approx(7.5e-9).epsilon(kEps));
+      CHECK(diags.warning_count() == 0u);
+    }
+    CHECK(mats[0]->get_real("a") == Approx(250.0).epsilon(kEps));
+  }
+}
+
+TEST_CASE("version 90: /UNIT/MASS, /LENGTH, /TIME name the work units, which are also the input units",
+          "[keywords]") {
+  std::string s = begin_lines(90, false) + "/UNIT/MASS/Mg\n/UNIT/LENGTH/mm\n/UNIT/TIME/ms\n";
+  // A local unit system in kg m s: converted into the work units Mg mm ms.
+  s += "/UNIT/2\nSI\n" + Card().at(1, 20, "kg").at(21, 40, "m").at(41, 60, "s").str() + "\n";
+  s += "/NODE\n" + Card().at(1, 10, 1).at(11, 30, "1.5").str() + "\n";
+  s += "/MAT/LAW1/5/2\nSI steel\n" + Card().at(1, 20, "7800.").str() + "\n" +
+       Card().at(1, 20, "2.1E11").at(21, 40, "0.3").str() + "\n/END\n";
+  TempDir dir;
+  const auto path = dir.write("U90_0000.rad", s);
+  Diagnostics diags;
+  const auto deck = radx::read_starter_deck(path, diags);
+  INFO(all_diags(diags));
+  CHECK_FALSE(diags.has_errors());
+  CHECK(deck.version == 90);
+  CHECK(deck.work_units.mass == 1e3);
+  CHECK(deck.work_units.length == 1e-3);
+  CHECK(deck.work_units.time == 1e-3);
+  CHECK(deck.work_units.time_name == "ms");
+  CHECK(deck.input_units.mass == 1e3);
+  CHECK(deck.input_units.length == 1e-3);
+  CHECK(deck.input_units.time == 1e-3);
+  const auto& n = deck.of("/NODE").at(0)->records;
+  CHECK(n.reals[static_cast<std::size_t>(n.column("X"))][0] == 1.5);  // input = work: not converted
+  const auto& m = *deck.of("/MAT/LAW1").at(0);
+  CHECK(m.get_real("RHO_I") == Approx(7800.0 * 1e-3 / 1e9).epsilon(kEps));    // kg/m3 -> Mg/mm3
+  CHECK(m.get_real("E") == Approx(2.1e11 * 1e-3 / 1e3 / 1e6).epsilon(kEps));  // Pa -> Mg/(mm ms^2)
+}
+
+TEST_CASE("/UNIT/LENGTH and the like are ignored with a warning in decks newer than 90", "[keywords]") {
+  TempDir dir;
+  const auto path = dir.write("U100_0000.rad", begin_lines(100) + "/UNIT/LENGTH/mm\n/END\n");
+  Diagnostics diags;
+  const auto deck = radx::read_starter_deck(path, diags);
+  INFO(all_diags(diags));
+  CHECK_FALSE(diags.has_errors());
+  CHECK(has_diag(diags, Diag::IgnoredControlCard, radx::Severity::Warning,
+                 "/UNIT/LENGTH is ignored in a deck of version 100"));
+  CHECK(deck.work_units.length == 1.0);
+  CHECK(deck.input_units.length == 1.0);
 }
 
 // ---------------------------------------------------------------------------------------------------
