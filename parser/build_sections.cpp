@@ -123,7 +123,7 @@ void ModelBuilder::build_sections() {
                  "node group " + std::to_string(r.get_int("grnod_ID")) +
                      " is empty: the section has no node to sum the element forces at");
     }
-    bool any_group = false;
+    bool any_group = false, group_missing = false;
     auto elements = [&](std::string_view field, model::ElementType type, std::string_view keyword,
                         std::vector<std::int32_t>& out) {
       const auto id = r.get_int(field);
@@ -131,6 +131,7 @@ void ModelBuilder::build_sections() {
       any_group = true;
       const auto* g = element_group(type, id);
       if (g == nullptr) {
+        group_missing = true;
         error_at(r, field, Diag::MissingReference,
                  std::string(field) + " = " + std::to_string(id) + ": there is no " + std::string(keyword) +
                      "/.../" + std::to_string(id) + " in the deck");
@@ -145,7 +146,7 @@ void ModelBuilder::build_sections() {
       error_at(r, "grshel_ID", Diag::RequiredIdMissing,
                "no element group: give grbric_ID, grshel_ID or grtria_ID, the elements whose forces on the "
                "section's nodes are summed");
-    else if (!s.nodes.empty() && s.bricks.empty() && s.shells.empty() && s.shells3.empty())
+    else if (!group_missing && !s.nodes.empty() && s.bricks.empty() && s.shells.empty() && s.shells3.empty())
       error_at(
           r, "grshel_ID", Diag::EmptyGroup,
           "no element of the groups has a node in grnod_ID " + std::to_string(r.get_int("grnod_ID")) +
