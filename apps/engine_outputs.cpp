@@ -41,6 +41,7 @@ std::string kind_path(model::ThKind k) {
     case model::ThKind::Brick: return "brick";
     case model::ThKind::Shell3: return "sh3n";
     case model::ThKind::Rbody: return "rbody";
+    case model::ThKind::Section: return "section";
   }
   return "other";
 }
@@ -56,6 +57,7 @@ std::string kind_name(model::ThKind k) {
     case model::ThKind::Brick: return "brick";
     case model::ThKind::Shell3: return "3-node shell";
     case model::ThKind::Rbody: return "rigid body";
+    case model::ThKind::Section: return "section";
   }
   return "";
 }
@@ -72,6 +74,7 @@ std::int64_t user_id(const model::Model& m, model::ThKind k, std::int32_t i) {
     case model::ThKind::Brick: return m.bricks.id[n];
     case model::ThKind::Shell3: return m.shells3.id[n];
     case model::ThKind::Rbody: return m.rigid_bodies[n].id;
+    case model::ThKind::Section: return m.sections[n].id;
   }
   return 0;
 }

@@ -17,7 +17,7 @@ struct ThGroupLayout {
   std::string path;                    // dataset path in the file, e.g. "global", "node/1", "part/2"
   std::string title;                   // the deck's title of the /TH group ("" for global)
   std::string object_kind;             // "node", "part", "interface", "rigid wall", "shell", "subset",
-                                       // "brick", "3-node shell", "rigid body"; "" for global
+                                       // "brick", "3-node shell", "rigid body", "section"; "" for global
   std::vector<std::int64_t> objects;   // user ids, in column order (empty for global)
   std::vector<std::string> variables;  // names per object, e.g. DX DY DZ (the same for every object)
   std::vector<std::string> units;      // unit of each variable, same length as `variables`

@@ -581,6 +581,22 @@ const std::vector<ThKindDef>& th_kinds() {
         {"MXI", kNoType14},
         {"MYI", kNoType14},
         {"MZI", kNoType14}}},
+      // OpenRadioss's DEF set and groups (hm_read_thgrou.F); of its 39 names radx computes the forces,
+      // moments and centre, not the work, kinetic energies and cut-file errors.
+      {"/TH/SECTIO",
+       K::Section,
+       "section",
+       "/SECT",
+       {{"DEF", {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "M1", "M2", "M3"}},
+        {"FN", {"FNX", "FNY", "FNZ"}},
+        {"FT", {"FTX", "FTY", "FTZ"}},
+        {"M", {"M1", "M2", "M3"}},
+        {"CENTER", {"CX", "CY", "CZ"}},
+        {"GLOBAL", {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "MX", "MY", "MZ"}},
+        {"LOCAL", {"M1", "M2", "M3", "F1", "F2", "F3"}}},
+       {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "M1", "M2", "M3", "MX", "MY", "MZ", "F1", "F2", "F3", "CX",
+        "CY", "CZ"},
+       {}},
   };
   return kinds;
 }
@@ -654,6 +670,7 @@ std::int32_t th_object(const ModelBuilder& b, model::ThKind kind, std::int64_t i
     case model::ThKind::Brick: return b.m_.bricks.index.find(id);
     case model::ThKind::Shell3: return b.m_.shells3.index.find(id);
     case model::ThKind::Rbody: return in(b.rbody_ids_);
+    case model::ThKind::Section: return in(b.sect_ids_);
   }
   return kNone;
 }

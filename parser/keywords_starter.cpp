@@ -1075,6 +1075,48 @@ void add_rigid(std::vector<KeywordDecl>& t) {
 }
 
 // ---------------------------------------------------------------------------------------------------------
+// Sections (OpenRadioss hm_read_sect.F; the reading of the card is radx's own)
+void add_sections(std::vector<KeywordDecl>& t) {
+  KeywordDecl k =
+      kw("/SECT", "section cut: the force and moment that the listed elements apply to a set of nodes",
+         Header::IdUnit, true, "sect_ID");
+  k.cards = {
+      card("card 1", {I("node_ID1", 1, 10,
+                        "N1: origin of the section frame; 0 = global frame, normal Z (Iframe >= 10)"),
+                      I("node_ID2", 11, 20, "N2: axis 1 of the frame points from N1 to N2"),
+                      I("node_ID3", 21, 30, "N3: with N1 and N2 spans the section plane"),
+                      I("grnod_ID", 31, 40, "nodes of the cut, where the element forces are summed").must(),
+                      I("I_SAVE", 41, 50,
+                        "cut file: 0 none, 1 or 2 write displacements (and forces), 100, 101 or 200 read "
+                        "them as input")
+                          .allow({0, 1, 2, 100, 101, 200}),
+                      I("Frame_ID", 51, 60, "moving frame defining the section; 0 = the nodes N1 N2 N3"),
+                      R("Dt", 61, 80, "time step of the cut file").dims(dim::time).unused(),
+                      R("alpha", 81, 100, "filtering coefficient of the cut file (< 1)").unused()}),
+      card("card 2", {S("file_name", 1, 100, "root name of the cut file (I_SAVE > 0)")}),
+      card("card 3",
+           {I("grbric_ID", 1, 10, "bricks whose forces are summed (/GRBRIC)"),
+            I("grshel_ID", 21, 30, "4-node shells whose forces and moments are summed (/GRSHEL)"),
+            I("grtrus_ID", 31, 40, "trusses (/GRTRUS)"), I("grbeam_ID", 41, 50, "beams (/GRBEAM)"),
+            I("grsprg_ID", 51, 60, "springs (/GRSPRI)"),
+            I("grtria_ID", 61, 70, "3-node shells whose forces and moments are summed (/GRSH3N)"),
+            I("Ninter", 71, 80, "number of interfaces whose contact forces are added (at most 10)"),
+            I("Iframe", 91, 100,
+              "frame and moment centre: 0..3 local frame of N1 N2 N3, 10..13 global axes; the last digit "
+              "puts the centre at 0 the projection of N3 on N1N2, 1 the nodes' mean, 2 their mass centre, 3 "
+              "the origin")
+                .allow({0, 1, 2, 3, 10, 11, 12, 13})}),
+      card_if("card 4 (Ninter > 0)", when_gt("Ninter", 0),
+              {I("inter_ID1", 1, 10, "interface 1"), I("inter_ID2", 11, 20, "interface 2"),
+               I("inter_ID3", 21, 30, "interface 3"), I("inter_ID4", 31, 40, "interface 4"),
+               I("inter_ID5", 41, 50, "interface 5"), I("inter_ID6", 51, 60, "interface 6"),
+               I("inter_ID7", 61, 70, "interface 7"), I("inter_ID8", 71, 80, "interface 8"),
+               I("inter_ID9", 81, 90, "interface 9"), I("inter_ID10", 91, 100, "interface 10")}),
+  };
+  t.push_back(std::move(k));
+}
+
+// ---------------------------------------------------------------------------------------------------------
 // Time history
 void add_time_history(std::vector<KeywordDecl>& t) {
   // What follows the variable lines: ids 10 per line, or one object per line with or without a skew
@@ -1104,6 +1146,7 @@ void add_time_history(std::vector<KeywordDecl>& t) {
   th("/TH/BRIC", {"/TH/BRICK"}, "time history of brick element results", Objects::Records);
   th("/TH/SH3N", {}, "time history of 3-node shell element results", Objects::RecordsWithSkew);
   th("/TH/RBODY", {}, "time history of rigid body forces and motion", Objects::Ids);
+  th("/TH/SECTIO", {}, "time history of section forces and moments", Objects::Ids);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -1232,6 +1275,7 @@ const std::vector<KeywordDecl>& starter_keywords() {
     add_contact(t);
     add_loads(t);
     add_rigid(t);
+    add_sections(t);
     add_time_history(t);
     add_defaults_and_controls(t);
     return t;
@@ -1275,12 +1319,11 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         // physics and model structure
         "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
         "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS/2", "/ADMAS/3", "/ADMAS/4", "/ADMAS/5", "/ADMAS/6",
-        "/ADMAS/7", "/ADMAS/10", "/DAMP", "/IMPLICIT", "/TABLE", "/MOVE_FUNCT", "/SECT", "/ACCEL", "/GAUGE",
-        "/PRELOAD",
+        "/ADMAS/7", "/ADMAS/10", "/DAMP", "/IMPLICIT", "/TABLE", "/MOVE_FUNCT", "/SECT/PARAL", "/SECT/CIRCLE",
+        "/ACCEL", "/GAUGE", "/PRELOAD",
         // time history that radx does not write
-        "/TH/SPRING", "/TH/BEAM", "/TH/TRUSS", "/TH/SECTIO", "/TH/ACCEL", "/TH/MONV", "/TH/SENSOR",
-        "/TH/GAUGE", "/TH/FRAME", "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH", "/ETH", "/FTH", "/GTH",
-        "/HTH", "/ITH",
+        "/TH/SPRING", "/TH/BEAM", "/TH/TRUSS", "/TH/ACCEL", "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE",
+        "/TH/FRAME", "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH", "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
         // engine keywords
         "/DT/BRICK/DEL", "/DT/BRICK/STOP", "/DT/SHELL/DEL", "/DT/SHELL/STOP", "/DT/SH_3N/DEL", "/DT/SH3N/DEL",
         "/DT/NODA/STOP", "/DT/NODA/KILL", "/DT/NODA/SET", "/DT/INTER/STOP", "/DT/AMS", "/ATFILE", "/H3D",

@@ -583,6 +583,7 @@ model::Model ModelBuilder::build() {
   build_rigid_bodies();
   build_interfaces();
   build_contact_laws();
+  build_sections();
   build_time_histories();
   compute_masses();
   check_unused_nodes();

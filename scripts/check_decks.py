@@ -39,7 +39,7 @@ TIME_UNITS = {"s", "ms", "mus", "us", "ns", "min", "h"}
 # Radioss keyword roots radx does not read: "not supported" (RX302) rather than unknown (RX301).
 UNSUPPORTED_ROOTS = ("/MAT/", "/PROP/", "/INTER/", "/SPRING", "/BEAM", "/TRUSS", "/RBE2", "/RBE3", "/MONVOL",
                      "/SENSOR", "/SKEW", "/FRAME", "/ADMAS", "/TETRA4", "/TETRA10", "/FAIL", "/EOS", "/TABLE",
-                     "/SECT", "/ACCEL", "/GAUGE", "/SPHCEL", "/PARAMETER", "/INISHE", "/INIBRI", "/GRSHEL",
+                     "/SECT/PARAL", "/SECT/CIRCLE", "/ACCEL", "/GAUGE", "/SPHCEL", "/PARAMETER", "/INISHE", "/INIBRI", "/GRSHEL",
                      "/GRBRIC", "/LINE", "/MERGE", "/CYL_JOINT", "/IMPDISP", "/IMPACC", "/FXBODY", "/DAMP")
 
 
@@ -321,6 +321,20 @@ def rbody(v):
     return cards + [card(reals("FN", "FT", "expN", "expT"), cond=lambda x: x.get("Ifail", 0) != 0)]
 
 
+def sect(v):
+    """/SECT (OpenRadioss card layout): frame nodes and cut, the cut-file name, the element groups, and the
+    interface ids when Ninter > 0."""
+    return [card([F("node_ID1", "I", 1, 10), F("node_ID2", "I", 11, 20), F("node_ID3", "I", 21, 30),
+                  F("grnod_ID", "I", 31, 40), F("I_SAVE", "I", 41, 50), F("Frame_ID", "I", 51, 60),
+                  F("Dt", "R", 61, 80), F("alpha", "R", 81, 100)]),
+            card([F("file_name", "S", 1, 100)]),
+            card([F("grbric_ID", "I", 1, 10), F("grshel_ID", "I", 21, 30), F("grtrus_ID", "I", 31, 40),
+                  F("grbeam_ID", "I", 41, 50), F("grsprg_ID", "I", 51, 60), F("grtria_ID", "I", 61, 70),
+                  F("Ninter", "I", 71, 80), F("Iframe", "I", 91, 100)]),
+            card([F("inter%d" % (k + 1), "I", 1 + 10 * k, 10 + 10 * k) for k in range(10)],
+                 cond=lambda x: x.get("Ninter", 0) > 0)]
+
+
 NODE_REC = [F("node_ID", "I", 1, 10), F("X", "R", 11, 30), F("Y", "R", 31, 50), F("Z", "R", 51, 70)]
 SHELL_REC = [F("shell_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)] + \
     [F("PHI", "R", 61, 80), F("Thick", "R", 81, 100)]
@@ -412,6 +426,8 @@ STARTER = {
     "/TH/BRICK": ("id", True, lambda v: [], "threcords", THELEM_REC),
     "/TH/SH3N": ("id", True, lambda v: [], "threcords", THNODE_REC),
     "/TH/RBODY": ("id", True, lambda v: [], "thids", ID_REC),
+    "/SECT": ("id", True, sect, None, None),
+    "/TH/SECTIO": ("id", True, lambda v: [], "thids", ID_REC),
 }
 
 # /TH variable names per keyword, as OpenRadioss names them: (groups, single names). A name outside both is an
@@ -428,6 +444,8 @@ TH_VARIABLES = {
     "/TH/SH3N": (["DEF"], TH_SHELL),
     "/TH/BRIC": (["DEF", "STRESS"], TH_BRICK),
     "/TH/BRICK": (["DEF", "STRESS"], TH_BRICK),
+    "/TH/SECTIO": (["DEF", "FN", "FT", "M", "CENTER", "GLOBAL", "LOCAL"],
+                   [a + x for a in ("FN", "FT", "M", "C") for x in "XYZ"] + [a + k for a in "FM" for k in "123"]),
     "/TH/RBODY": (["DEF", "F", "M", "R", "FI", "MI", "D", "V", "A", "XYZ"],
                   [a + x for a in ("F", "M", "R") for x in "XYZ"] + [a + x + "I" for a in "FM" for x in "XYZ"] +
                   ["X", "Y", "Z"] + [a + x for a in ("D", "V", "A", "VR", "AR") for x in "XYZ"] +
@@ -979,7 +997,7 @@ def semantic(ck, m):
                 I("RX502", p[0], p[1], "JC a must be > 0")
 
     # groups
-    element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, surfs)
+    egroups, emembers = element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, surfs)
     group_nodes = {}
     for gid, o in grnods.items():
         if o["path"] in NODES_OF_GROUPS:
@@ -1094,6 +1112,40 @@ def semantic(ck, m):
             if c[4] == 0 or not (c[4] < c[5]) or not (c[3] <= c[0] <= c[2]) or not (c[3] <= c[1] <= c[2]):
                 p = pos(o, "C5")
                 I("RX703", p[0], p[1], "interface %d: Renard coefficients inconsistent" % iid)
+
+    # sections: frame nodes, the cut's node group and the element groups must exist; radx refuses a moving
+    # frame, interface forces, reading cut files and truss, beam or spring groups (RX510, RX402)
+    sects = by_id(("/SECT",), "section")
+    for o in sects.values():
+        for f in ("node_ID1", "node_ID2", "node_ID3"):
+            if val(o, f, 0) != 0 and val(o, f) not in nodes:
+                p = pos(o, f)
+                I("RX402", p[0], p[1], "/SECT %d: node %d does not exist" % (o["id"], val(o, f)))
+        need(o, "grnod_ID", grnods, "node group", zero_ok=False)
+        for f in ("Frame_ID", "Ninter"):
+            if val(o, f, 0) != 0:
+                p = pos(o, f)
+                I("RX510", p[0], p[1], "/SECT %d: %s is not implemented" % (o["id"], f))
+        if val(o, "I_SAVE", 0) >= 100:
+            p = pos(o, "I_SAVE")
+            I("RX510", p[0], p[1], "/SECT %d: reading cut files is not implemented" % o["id"])
+        for f in ("grtrus_ID", "grbeam_ID", "grsprg_ID"):
+            if val(o, f, 0) != 0:
+                p = pos(o, f)
+                I("RX402", p[0], p[1], "/SECT %d: radx has no %s elements" % (o["id"], f))
+        listed = [(f, root) for f, root in (("grbric_ID", "/GRBRIC"), ("grshel_ID", "/GRSHEL"),
+                                            ("grtria_ID", "/GRSH3N")) if val(o, f, 0) != 0]
+        if not listed:
+            p = pos(o, "grshel_ID")
+            I("RX404", p[0], p[1], "/SECT %d: no element group" % o["id"])
+        for f, root in listed:
+            if (root, val(o, f)) not in egroups:
+                p = pos(o, f)
+                I("RX402", p[0], p[1], "/SECT %d: %s group %d does not exist" % (o["id"], root, val(o, f)))
+    for o in m.of("/TH/SECTIO"):
+        for x, p in o["ids"]:
+            if x not in sects:
+                I("RX402", p[0], p[1], "TH section %d does not exist" % x)
 
     # time history
     for o in m.of("/TH/NODE"):
@@ -1332,6 +1384,7 @@ def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, sur
                 count = sum(1 for e in chosen for f in faces_of(elements["/BRICK"][e][1]) if seen[f] == 1)
         if count == 0 and len(ck.issues) == before:
             I("RX403", o["pos"][0], o["pos"][1], "%s %d holds no segment" % (path, o["id"]))
+    return groups, members
 
 
 def sub(a, b):

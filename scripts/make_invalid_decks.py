@@ -803,6 +803,40 @@ def with_rows(*groups):
     return d
 
 
+# Sections: a cut at the plate's nodes (node group 1), frame nodes 1, 2, 4.
+
+
+def sect_rows(grshel, frame=0, tag="SECT"):
+    """/SECT/1 summing shell group `grshel` on node group 1; card 1 carries TAG_C1, card 3 TAG_C3."""
+    return [("/SECT/1", tag + "_KW"), "Cut",
+            names(("node_ID1", 10), ("node_ID2", 10), ("node_ID3", 10), ("grnod_ID", 10), ("I_SAVE", 10),
+                  ("Frame_ID", 10), ("Dt", 20), ("alpha", 20)),
+            (line(I(1), I(2), I(4), I(1), I(0), I(frame), R(0.0), R(0.0)), tag + "_C1"),
+            "# File name", "",
+            names(("grbric_ID", 10), ("", 10), ("grshel_ID", 10), ("grtrus_ID", 10), ("grbeam_ID", 10),
+                  ("grsprg_ID", 10), ("grtria_ID", 10), ("Ninter", 10), ("", 10), ("Iframe", 10)),
+            (line(I(0), blank(10), I(grshel), I(0), I(0), I(0), I(0), I(0), blank(10), I(0)), tag + "_C3")]
+
+
+@fault("sect_missing_shell_group")
+def _():
+    d = with_rows(sect_rows(5))
+    return d, "/SECT/1 sums /GRSHEL group 5, which does not exist", [("RX402", "SECT_C3")]
+
+
+@fault("sect_moving_frame")
+def _():
+    d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", "shell_ID", [1, 2]), sect_rows(1, frame=3))
+    return d, "/SECT/1 asks for a moving frame (Frame_ID 3), which radx does not implement", \
+        [("RX510", "SECT_C1")]
+
+
+@fault("th_sectio_missing_section")
+def _():
+    d = with_rows(th_rows("/TH/SECTIO", "Cuts", ["DEF"], [7]))
+    return d, "/TH/SECTIO/1 lists section 7; the deck has no /SECT", [("RX402", "TH_OBJ")]
+
+
 @fault("grshel_shel_missing_element")
 def _():
     d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", "shell_ID", [1, 2, 99]))

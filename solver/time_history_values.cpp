@@ -82,6 +82,10 @@ Dim th_variable_dim(model::ThKind kind, const std::string& n) {
       if (n[0] == 'V') return kVelocity;
       if (n[0] == 'A') return kAcceleration;
       return kNone;  // RX.. (radians), STATUS
+    case K::Section:
+      if (n[0] == 'C') return kLength;
+      if (n[0] == 'M') return kMoment;
+      return kForce;
   }
   return kNone;
 }
@@ -138,6 +142,11 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
       const auto el = static_cast<std::size_t>(objects_[o]);
       if (el < where.size()) slots_[o] = where[el];
     }
+    return;
+  }
+  if (kind_ == K::Section) {
+    for (const auto o : objects_)
+      sections_.emplace_back(m.sections[static_cast<std::size_t>(o)], e.shell_groups(), e.brick_groups());
     return;
   }
   if (kind_ == K::Rbody) {
@@ -399,6 +408,21 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
       }
       break;
     }
+    case K::Section:
+      for (std::size_t o = 0; o < objects_.size(); ++o) {
+        const SectionCut c = sections_[o].evaluate(s, e.shell_groups(), e.brick_groups());
+        const char* axes[3] = {"X", "Y", "Z"};
+        for (std::size_t d = 0; d < 3; ++d) {
+          const std::string ax = axes[d], k = std::to_string(d + 1);
+          put(o, "FN" + ax, c.normal_force[d]);
+          put(o, "FT" + ax, c.tangential_force[d]);
+          put(o, "M" + ax, c.moment[d]);
+          put(o, "C" + ax, c.centre[d]);
+          put(o, "F" + k, c.local_force[d]);
+          put(o, "M" + k, c.local_moment[d]);
+        }
+      }
+      break;
   }
 }
 

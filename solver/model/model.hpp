@@ -242,8 +242,26 @@ struct RigidBody {
   std::vector<std::int32_t> secondary;  // main node removed
 };
 
+// /SECT: a cut through the model (OpenRadioss hm_read_sect.F, section.F). The engine sums the forces (and
+// shell moments) that the listed elements apply to the section's nodes: the force one side of the cut
+// exerts on the other. Frame from the current positions of N1 N2 N3: Iframe < 10 local axes e1 = N1->N2,
+// e3 = e1 x (N3 - N1) (the section normal), e2 = e3 x e1; Iframe >= 10 global axes, normal along
+// (N2 - N1) x (N3 - N1), or Z when N1 is 0. Moment reference point by Iframe % 10: 0 the projection of N3 on
+// the line N1 N2, 1 the mean of the section nodes, 2 their mass centre, 3 the origin.
+struct Section {
+  std::int64_t id = 0;
+  std::string title;
+  std::int32_t n1 = kNone, n2 = kNone, n3 = kNone;  // dense node indices (kNone only with Iframe >= 10)
+  std::int32_t node_group = kNone;
+  int iframe = 0;
+  std::vector<std::int32_t> nodes;    // sorted dense indices: where the forces are summed
+  std::vector<std::int32_t> shells;   // 4-node shells of grshel_ID with a node in `nodes`
+  std::vector<std::int32_t> shells3;  // 3-node shells of grtria_ID with a node in `nodes`
+  std::vector<std::int32_t> bricks;   // bricks of grbric_ID with a node in `nodes`
+};
+
 // Stored as its integer in the model file (docs/model-file.md): new kinds go at the end.
-enum class ThKind : std::uint8_t { Node, Part, Inter, Rwall, Shell, Subset, Brick, Shell3, Rbody };
+enum class ThKind : std::uint8_t { Node, Part, Inter, Rwall, Shell, Subset, Brick, Shell3, Rbody, Section };
 struct TimeHistoryGroup {
   std::int64_t id = 0;
   std::string title;
@@ -323,6 +341,7 @@ struct Model {
   std::vector<RigidBody> rigid_bodies;
   std::vector<AddedMass> added_masses;
   std::vector<Skew> skews;
+  std::vector<Section> sections;
   std::vector<TimeHistoryGroup> time_histories;
   std::vector<Interface> interfaces;
   std::vector<std::string> ignored_keywords;  // control cards accepted as ignored, as written
