@@ -42,6 +42,7 @@ std::string kind_path(model::ThKind k) {
     case model::ThKind::Shell3: return "sh3n";
     case model::ThKind::Rbody: return "rbody";
     case model::ThKind::Section: return "section";
+    case model::ThKind::Accel: return "accel";
   }
   return "other";
 }
@@ -58,6 +59,7 @@ std::string kind_name(model::ThKind k) {
     case model::ThKind::Shell3: return "3-node shell";
     case model::ThKind::Rbody: return "rigid body";
     case model::ThKind::Section: return "section";
+    case model::ThKind::Accel: return "accelerometer";
   }
   return "";
 }
@@ -75,6 +77,7 @@ std::int64_t user_id(const model::Model& m, model::ThKind k, std::int32_t i) {
     case model::ThKind::Shell3: return m.shells3.id[n];
     case model::ThKind::Rbody: return m.rigid_bodies[n].id;
     case model::ThKind::Section: return m.sections[n].id;
+    case model::ThKind::Accel: return m.accelerometers[n].id;
   }
   return 0;
 }

@@ -264,6 +264,18 @@ void build_added_masses(ModelBuilder& b) {
   }
 }
 
+// /ACCEL: the node and the skew must exist; the node is used (a sensor on a free node still moves).
+void build_accelerometers(ModelBuilder& b) {
+  build_each(b, "/ACCEL", "accelerometer", b.m_.accelerometers, b.accel_ids_, [&](const KeywordRecord& r) {
+    model::Accelerometer a;
+    a.node =
+        b.node_ref(r.get_int("node_ID"), r, field_pos(r, "node_ID"), "node_ID (the accelerometer's node)");
+    a.skew = skew_ref(b, r);
+    a.fcut = r.get_real("Fcut");
+    return a;
+  });
+}
+
 void build_initial_velocities(ModelBuilder& b) {
   for (const bool rotational : {false, true}) {
     IdIndex ids;
@@ -597,6 +609,15 @@ const std::vector<ThKindDef>& th_kinds() {
        {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "M1", "M2", "M3", "MX", "MY", "MZ", "F1", "F2", "F3", "CX",
         "CY", "CZ"},
        {}},
+      // AX AY AZ: the filtered acceleration on the skew axes; WX WY WZ: the velocity integrated from the
+      // unfiltered acceleration on the same axes (OpenRadioss's names).
+      {"/TH/ACCEL",
+       K::Accel,
+       "accelerometer",
+       "/ACCEL",
+       {{"DEF", {"AX", "AY", "AZ", "WX", "WY", "WZ"}}, {"W", {"WX", "WY", "WZ"}}},
+       {"AX", "AY", "AZ", "WX", "WY", "WZ"},
+       {}},
   };
   return kinds;
 }
@@ -671,6 +692,7 @@ std::int32_t th_object(const ModelBuilder& b, model::ThKind kind, std::int64_t i
     case model::ThKind::Shell3: return b.m_.shells3.index.find(id);
     case model::ThKind::Rbody: return in(b.rbody_ids_);
     case model::ThKind::Section: return in(b.sect_ids_);
+    case model::ThKind::Accel: return in(b.accel_ids_);
   }
   return kNone;
 }
@@ -712,6 +734,7 @@ std::vector<std::int32_t> th_objects(ModelBuilder& b, const KeywordRecord& r, co
 
 void ModelBuilder::build_loads() {
   build_added_masses(*this);
+  build_accelerometers(*this);
   build_bcs(*this);
   build_imposed_velocities(*this);
   build_initial_velocities(*this);

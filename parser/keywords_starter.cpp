@@ -855,6 +855,17 @@ void add_loads(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    KeywordDecl k = kw("/ACCEL", "accelerometer: a node's acceleration in a skew frame, low-pass filtered",
+                       Header::IdUnit, true, "accel_ID");
+    k.cards = {
+        card("card 1", {I("node_ID", 1, 10, "node the accelerometer sits on").must(),
+                        I("skew_ID", 11, 20, "skew of the measured axes; 0 = global axes"),
+                        R("Fcut", 31, 50, "cut-off frequency of the 4-pole Butterworth filter; 0 = none")
+                            .dims(dim::rate)
+                            .ge(0.0)})};
+    t.push_back(std::move(k));
+  }
+  {
     KeywordDecl k = kw("/CLOAD", "concentrated force or moment on a node group, following a function",
                        Header::IdUnit, true, "cload_ID");
     k.cards = {
@@ -1147,6 +1158,7 @@ void add_time_history(std::vector<KeywordDecl>& t) {
   th("/TH/SH3N", {}, "time history of 3-node shell element results", Objects::RecordsWithSkew);
   th("/TH/RBODY", {}, "time history of rigid body forces and motion", Objects::Ids);
   th("/TH/SECTIO", {}, "time history of section forces and moments", Objects::Ids);
+  th("/TH/ACCEL", {}, "time history of accelerometers", Objects::Ids);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -1320,10 +1332,10 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
         "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS/2", "/ADMAS/3", "/ADMAS/4", "/ADMAS/5", "/ADMAS/6",
         "/ADMAS/7", "/ADMAS/10", "/DAMP", "/IMPLICIT", "/TABLE", "/MOVE_FUNCT", "/SECT/PARAL", "/SECT/CIRCLE",
-        "/ACCEL", "/GAUGE", "/PRELOAD",
+        "/GAUGE", "/PRELOAD",
         // time history that radx does not write
-        "/TH/SPRING", "/TH/BEAM", "/TH/TRUSS", "/TH/ACCEL", "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE",
-        "/TH/FRAME", "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH", "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
+        "/TH/SPRING", "/TH/BEAM", "/TH/TRUSS", "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME",
+        "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH", "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
         // engine keywords
         "/DT/BRICK/DEL", "/DT/BRICK/STOP", "/DT/SHELL/DEL", "/DT/SHELL/STOP", "/DT/SH_3N/DEL", "/DT/SH3N/DEL",
         "/DT/NODA/STOP", "/DT/NODA/KILL", "/DT/NODA/SET", "/DT/INTER/STOP", "/DT/AMS", "/ATFILE", "/H3D",

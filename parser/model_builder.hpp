@@ -90,7 +90,7 @@ class ModelBuilder {
   model::Model m_;
 
   IdIndex mat_ids_, prop_ids_, part_ids_, subset_ids_, box_ids_, funct_ids_, grnod_ids_, surf_ids_,
-      inter_ids_, rwall_ids_, rbody_ids_, skew_ids_, sect_ids_;
+      inter_ids_, rwall_ids_, rbody_ids_, skew_ids_, sect_ids_, accel_ids_;
   std::vector<ElementGroup> element_groups_;
   IdIndex element_group_ids_[3];  // by model::ElementType
   std::vector<const KeywordRecord*> grnod_records_;

@@ -39,7 +39,7 @@ TIME_UNITS = {"s", "ms", "mus", "us", "ns", "min", "h"}
 # Radioss keyword roots radx does not read: "not supported" (RX302) rather than unknown (RX301).
 UNSUPPORTED_ROOTS = ("/MAT/", "/PROP/", "/INTER/", "/SPRING", "/BEAM", "/TRUSS", "/RBE2", "/RBE3", "/MONVOL",
                      "/SENSOR", "/SKEW", "/FRAME", "/ADMAS", "/TETRA4", "/TETRA10", "/FAIL", "/EOS", "/TABLE",
-                     "/SECT/PARAL", "/SECT/CIRCLE", "/ACCEL", "/GAUGE", "/SPHCEL", "/PARAMETER", "/INISHE", "/INIBRI", "/GRSHEL",
+                     "/SECT/PARAL", "/SECT/CIRCLE", "/GAUGE", "/SPHCEL", "/PARAMETER", "/INISHE", "/INIBRI", "/GRSHEL",
                      "/GRBRIC", "/LINE", "/MERGE", "/CYL_JOINT", "/IMPDISP", "/IMPACC", "/FXBODY", "/DAMP")
 
 
@@ -256,6 +256,10 @@ def skew_fix(v):
     return [card(reals("Ox", "Oy", "Oz")), card(reals("X1", "Y1", "Z1")), card(reals("X2", "Y2", "Z2"))]
 
 
+def accel(v):
+    return [card([F("node_ID", "I", 1, 10), F("skew_ID", "I", 11, 20), F("Fcut", "R", 31, 50)])]
+
+
 def admas(v):
     return [card([F("MASS", "R", 1, 20), F("grnod_ID", "I", 21, 30)])]
 
@@ -428,6 +432,8 @@ STARTER = {
     "/TH/RBODY": ("id", True, lambda v: [], "thids", ID_REC),
     "/SECT": ("id", True, sect, None, None),
     "/TH/SECTIO": ("id", True, lambda v: [], "thids", ID_REC),
+    "/ACCEL": ("id", True, accel, None, None),
+    "/TH/ACCEL": ("id", True, lambda v: [], "thids", ID_REC),
 }
 
 # /TH variable names per keyword, as OpenRadioss names them: (groups, single names). A name outside both is an
@@ -446,6 +452,7 @@ TH_VARIABLES = {
     "/TH/BRICK": (["DEF", "STRESS"], TH_BRICK),
     "/TH/SECTIO": (["DEF", "FN", "FT", "M", "CENTER", "GLOBAL", "LOCAL"],
                    [a + x for a in ("FN", "FT", "M", "C") for x in "XYZ"] + [a + k for a in "FM" for k in "123"]),
+    "/TH/ACCEL": (["DEF", "W"], ["AX", "AY", "AZ", "WX", "WY", "WZ"]),
     "/TH/RBODY": (["DEF", "F", "M", "R", "FI", "MI", "D", "V", "A", "XYZ"],
                   [a + x for a in ("F", "M", "R") for x in "XYZ"] + [a + x + "I" for a in "FM" for x in "XYZ"] +
                   ["X", "Y", "Z"] + [a + x for a in ("D", "V", "A", "VR", "AR") for x in "XYZ"] +
@@ -1078,6 +1085,18 @@ def semantic(ck, m):
         if sk and sk not in skews:
             p = pos(o, "skew_ID")
             I("RX402", p[0], p[1], "%s %d: skew %d does not exist" % (o["path"], o["id"], sk))
+    # accelerometers: on an existing node, in an existing skew, with a cut-off frequency >= 0
+    accels = by_id(("/ACCEL",), "accelerometer")
+    for o in accels.values():
+        need(o, "node_ID", nodes, "node", zero_ok=False)
+        need(o, "skew_ID", skews, "skew")
+        if val(o, "Fcut", 0.0) < 0:
+            p = pos(o, "Fcut")
+            I("RX501", p[0], p[1], "/ACCEL %d: Fcut must be >= 0" % o["id"])
+    for o in m.of("/TH/ACCEL"):
+        for x, p in o["ids"]:
+            if x not in accels:
+                I("RX402", p[0], p[1], "TH accelerometer %d does not exist" % x)
     for o in m.of("/CLOAD"):
         need(o, "funct_IDT", functs, "function", zero_ok=False)
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)

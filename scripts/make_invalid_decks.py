@@ -831,6 +831,40 @@ def _():
         [("RX510", "SECT_C1")]
 
 
+# Accelerometers: /ACCEL/1 on a node, in a skew, with a cut-off frequency.
+
+
+def accel_rows(node, skew=0, fcut=0.0):
+    """/ACCEL/1 on `node`; its card carries ACCEL_C1."""
+    return [("/ACCEL/1", "ACCEL_KW"), "Accelerometer",
+            names(("node_ID", 10), ("skew_ID", 10), ("", 10), ("Fcut", 20)),
+            (line(I(node), I(skew), blank(10), R(fcut)), "ACCEL_C1")]
+
+
+@fault("accel_missing_node")
+def _():
+    d = with_rows(accel_rows(99))
+    return d, "/ACCEL/1 sits on node 99, which does not exist", [("RX402", "ACCEL_C1")]
+
+
+@fault("accel_negative_fcut")
+def _():
+    d = with_rows(accel_rows(1, fcut=-100.0))
+    return d, "/ACCEL/1 has a negative cut-off frequency", [("RX501", "ACCEL_C1")]
+
+
+@fault("accel_missing_skew")
+def _():
+    d = with_rows(accel_rows(1, skew=3))
+    return d, "/ACCEL/1 measures in skew 3, which does not exist", [("RX402", "ACCEL_C1")]
+
+
+@fault("th_accel_missing_accelerometer")
+def _():
+    d = with_rows(accel_rows(1), th_rows("/TH/ACCEL", "Sensors", ["DEF"], [2]))
+    return d, "/TH/ACCEL/1 lists accelerometer 2; the deck has only /ACCEL/1", [("RX402", "TH_OBJ")]
+
+
 @fault("th_sectio_missing_section")
 def _():
     d = with_rows(th_rows("/TH/SECTIO", "Cuts", ["DEF"], [7]))

@@ -34,6 +34,7 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
   build_groups();
   build_assembly();
   kinematics_ = std::make_unique<KinematicsDriver>(model_, controls_, nodes_);
+  accelerometers_ = std::make_unique<Accelerometers>(model_);
   if (!model_.interfaces.empty()) {
     contact::ContactControls cc;
     const auto& inter = controls_.inter;
@@ -433,6 +434,8 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     accelerations();
     if (!lagrange_correction(L, res)) break;
     kinematics_->kinematic_conditions(L.time, L.dt1, L.dt2);
+    if (!accelerometers_->empty())
+      accelerometers_->update(nodes_, L.first ? 0.5 * L.dt2 : 0.5 * (L.dt1 + L.dt2), L.dt2);
     const bool last = L.time >= controls_.t_stop || L.dt2 <= 0;
     if (!outputs(L, last, on_cycle, res)) break;
     if (last) break;

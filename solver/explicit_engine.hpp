@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "contact/type7_engine.hpp"
+#include "solver/accelerometer.hpp"
 #include "solver/element_groups.hpp"
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
@@ -108,6 +109,8 @@ class ExplicitEngine {
   [[nodiscard]] const model::Model& model() const { return model_; }
   [[nodiscard]] const std::vector<MaterialParams>& materials() const { return materials_; }
   [[nodiscard]] const KinematicsDriver& kinematics() const { return *kinematics_; }
+  // /ACCEL readings of the last cycle.
+  [[nodiscard]] const Accelerometers& accelerometers() const { return *accelerometers_; }
   // TYPE7 contact (nullptr when the model has no interface).
   [[nodiscard]] const contact::Type7Contact* contact() const { return contact_.get(); }
   // Contact warnings since the last call (a node deactivated or removed), each naming node and interface.
@@ -142,7 +145,8 @@ class ExplicitEngine {
   };
   std::vector<std::size_t> slot_offsets_;
   std::vector<Slot> slots_;
-  std::unique_ptr<KinematicsDriver> kinematics_;  // loads and kinematic conditions
+  std::unique_ptr<KinematicsDriver> kinematics_;    // loads and kinematic conditions
+  std::unique_ptr<Accelerometers> accelerometers_;  // /ACCEL, read every cycle after the conditions
   std::unique_ptr<contact::Type7Contact> contact_;
   std::int64_t deleted_elements_ = 0;  // elements with off == 0, to tell contact (Idel) when it changes
   // The time loop's state between stages (run() lists the stages).

@@ -86,6 +86,7 @@ Dim th_variable_dim(model::ThKind kind, const std::string& n) {
       if (n[0] == 'C') return kLength;
       if (n[0] == 'M') return kMoment;
       return kForce;
+    case K::Accel: return n[0] == 'A' ? kAcceleration : kVelocity;
   }
   return kNone;
 }
@@ -420,6 +421,16 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
           put(o, "C" + ax, c.centre[d]);
           put(o, "F" + k, c.local_force[d]);
           put(o, "M" + k, c.local_moment[d]);
+        }
+      }
+      break;
+    case K::Accel:
+      for (std::size_t o = 0; o < objects_.size(); ++o) {
+        const auto& a = e.accelerometers().readings()[static_cast<std::size_t>(objects_[o])];
+        const char* axes[3] = {"X", "Y", "Z"};
+        for (std::size_t d = 0; d < 3; ++d) {
+          put(o, std::string("A") + axes[d], a.acceleration[d]);
+          put(o, std::string("W") + axes[d], a.velocity[d]);
         }
       }
       break;

@@ -260,8 +260,30 @@ struct Section {
   std::vector<std::int32_t> bricks;   // bricks of grbric_ID with a node in `nodes`
 };
 
+// /ACCEL: an accelerometer on a node, its axes a skew's (0: global), its signal filtered by a 4-pole
+// Butterworth low-pass of cut-off Fcut (0: none).
+struct Accelerometer {
+  std::int64_t id = 0;
+  std::string title;
+  std::int32_t node = kNone;
+  std::int64_t skew = 0;
+  double fcut = 0;
+};
+
 // Stored as its integer in the model file (docs/model-file.md): new kinds go at the end.
-enum class ThKind : std::uint8_t { Node, Part, Inter, Rwall, Shell, Subset, Brick, Shell3, Rbody, Section };
+enum class ThKind : std::uint8_t {
+  Node,
+  Part,
+  Inter,
+  Rwall,
+  Shell,
+  Subset,
+  Brick,
+  Shell3,
+  Rbody,
+  Section,
+  Accel
+};
 struct TimeHistoryGroup {
   std::int64_t id = 0;
   std::string title;
@@ -342,6 +364,7 @@ struct Model {
   std::vector<AddedMass> added_masses;
   std::vector<Skew> skews;
   std::vector<Section> sections;
+  std::vector<Accelerometer> accelerometers;
   std::vector<TimeHistoryGroup> time_histories;
   std::vector<Interface> interfaces;
   std::vector<std::string> ignored_keywords;  // control cards accepted as ignored, as written
