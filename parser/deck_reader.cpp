@@ -48,6 +48,15 @@ std::vector<std::string> split_keyword(std::string_view line) {
   return keyword_fields(line);
 }
 
+// `/BEGIN`, and `/BEGIN/0` or `/BEGIN/` as older generators write it: Radioss finds /BEGIN by its prefix.
+bool is_begin(const std::vector<std::string>& tokens) {
+  return !tokens.empty() && tokens[0] == "BEGIN" &&
+         (tokens.size() == 1 ||
+          (tokens.size() == 2 && std::all_of(tokens[1].begin(), tokens[1].end(), [](char c) {
+             return std::isdigit(static_cast<unsigned char>(c));
+           })));
+}
+
 std::string join_path(const std::vector<std::string>& tokens, std::size_t n) {
   std::string p;
   for (std::size_t i = 0; i < n; ++i) p += "/" + tokens[i];
@@ -134,7 +143,7 @@ class StarterReader {
     // Find /BEGIN and /END: the starter reads between them.
     std::size_t begin = lines.size();
     for (std::size_t i = first_line; i < lines.size(); ++i) {
-      if (is_keyword(lines[i]) && split_keyword(lines[i].text) == std::vector<std::string>{"BEGIN"}) {
+      if (is_keyword(lines[i]) && is_begin(split_keyword(lines[i].text))) {
         begin = i;
         break;
       }
@@ -519,6 +528,11 @@ class StarterReader {
       std::string word(trim(head.text.substr(head.text.rfind('/') + 1)));
       std::erase_if(word, [](char c) { return c == ' ' || c == '\t'; });
       rec.header_word = word;
+      used = tokens.size();
+    }
+    if (decl->path == "/BEGIN" && tokens.size() > used) {
+      diags_.note(Diag::IgnoredControlCard, at(head.pos, 1), About{decl->path},
+                  written + ": the field after /BEGIN is ignored, as Radioss ignores it");
       used = tokens.size();
     }
     // Header fields.

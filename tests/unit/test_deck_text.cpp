@@ -158,3 +158,28 @@ TEST_CASE("a one-file deck splits at /END/ENGINE for both readers", "[lexer]") {
   CHECK(e.of("/RUN")[0]->value(0, 0) == 0.01);
   CHECK(e.of("/PRINT").size() == 1);
 }
+
+TEST_CASE("/BEGIN/0 and /BEGIN/ are read as /BEGIN with a note, /BEGIN/X is not /BEGIN", "[lexer]") {
+  // Older generators write a field after /BEGIN; Radioss finds /BEGIN by its prefix and reads the deck.
+  for (const std::string head : {"/BEGIN/0", "/BEGIN/"}) {
+    INFO(head);
+    TempDir dir;
+    std::string deck = radx::test::begin_block(2026);
+    deck.replace(0, 6, head);
+    deck += "/NODE\n" + node_line(1, 1.5, 2.5, 3.5) + "\n/END\n";
+    radx::Diagnostics diags;
+    const auto d = radx::read_starter_deck(dir.write("b_0000.rad", deck), diags);
+    INFO(codes(diags));
+    REQUIRE_FALSE(diags.has_errors());
+    CHECK(d.version == 2026);
+    REQUIRE(d.of("/NODE").size() == 1u);
+    if (head == "/BEGIN/0")
+      CHECK(codes(diags).find("the field after /BEGIN is ignored") != std::string::npos);
+  }
+  TempDir dir;
+  std::string deck = radx::test::begin_block(2026);
+  deck.replace(0, 6, "/BEGIN/X");
+  radx::Diagnostics diags;
+  (void)radx::read_starter_deck(dir.write("x_0000.rad", deck + "/END\n"), diags);
+  CHECK(codes(diags).find("RX105") != std::string::npos);  // no /BEGIN: a word after it is another keyword
+}
