@@ -326,12 +326,14 @@ class StarterReader {
     return out;
   }
 
-  // A tab in a fixed-column line is an error. The line is then read as an editor shows it (tab stops
-  // every 8 columns) only so that later checks do not cascade from it; no model is written anyway.
+  // A tab before a value in a fixed-column line is an error. The line is then read as an editor shows it (tab
+  // stops every 8 columns) only so that later checks do not cascade from it; no model is written anyway.
   std::string_view check_tabs(const TextLine& line, const About& about) {
     const auto tab = line.text.find('\t');
     if (tab == std::string_view::npos) return line.text;
     if (line.text.find(',') != std::string_view::npos) return line.text;  // free format: tabs are blanks
+    // Tabs among the trailing blanks move no value: the line ends before them (as Radioss reads it).
+    if (line.text.find_first_not_of(" \t\r", tab) == std::string_view::npos) return line.text.substr(0, tab);
     diags_.error(
         Diag::TabInFixedField, at(line.pos, static_cast<int>(tab) + 1), about,
         "tab character in a fixed-column line: tabs are rejected in fixed columns because their width "

@@ -118,6 +118,20 @@ TEST_CASE("a tab in a fixed-column line is rejected with its column, in a comma 
   CHECK(t.reals[t.column("X")][1] == 3.0);
 }
 
+TEST_CASE("tabs among the trailing blanks of a fixed-column line move no value and are accepted", "[lexer]") {
+  TempDir dir;
+  // Node 1's line ends with blanks and a tab after its last value; an otherwise blank card holds a tab.
+  const auto path = dir.write("tab_0000.rad", radx::test::begin_block(2026) + "/NODE\n" +
+                                                  node_line(1, 1.5, 2.5, 3.5) + "   \t  \n/END\n");
+  radx::Diagnostics diags;
+  const auto d = radx::read_starter_deck(path, diags);
+  INFO(codes(diags));
+  REQUIRE_FALSE(diags.has_errors());
+  const auto& t = d.of("/NODE")[0]->records;
+  REQUIRE(t.size() == 1);
+  CHECK(t.reals[t.column("Z")][0] == 3.5);
+}
+
 TEST_CASE("letters in a number, an overflowing real and text past column 100 are reported", "[lexer]") {
   TempDir dir;
   std::string bad = node_line(1, 0, 0, 0);
