@@ -5,6 +5,7 @@
 // sets, and are converted from input units to work units. Nothing here knows a keyword by name except
 // /BEGIN (its version selects every layout), /UNIT and /END.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <filesystem>
@@ -92,6 +93,45 @@ bool is_known_unsupported(const std::string& path) {
       return true;
   }
   return false;
+}
+
+// The families of Radioss keywords whose members are many (materials, properties, failure models, ...):
+// a name radx does not declare there is a Radioss keyword radx lacks far more often than a typing error.
+std::string radioss_family(const std::string& path) {
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 12> kFamilies = {{
+      {"/MAT/", "material law"},
+      {"/PROP/", "property type"},
+      {"/FAIL/", "failure model"},
+      {"/EOS/", "equation of state"},
+      {"/INTER/", "contact interface type"},
+      {"/TH/", "time-history group"},
+      {"/SENSOR/", "sensor type"},
+      {"/ALE/", "ALE option"},
+      {"/EBCS/", "elementary boundary condition"},
+      {"/MONVOL/", "monitored volume"},
+      {"/VISC/", "viscosity model"},
+      {"/ANIM/", "animation request"},
+  }};
+  for (const auto& [root, name] : kFamilies)
+    if (path.starts_with(root)) return std::string(name);
+  return {};
+}
+
+// "radx reads /MAT/LAW1, /MAT/LAW2, ..." for the keywords radx declares under the path's first word.
+std::string readable_alternatives(const std::string& path) {
+  const auto second = path.find('/', 1);
+  const std::string root = second == std::string::npos ? path : path.substr(0, second + 1);
+  std::vector<std::string> names;
+  for (const auto& k : schema::starter_keywords())
+    if (k.support != schema::Support::Ignored) {
+      if (std::string_view(k.path).starts_with(root)) names.emplace_back(k.path);
+      for (auto a : k.aliases)
+        if (a.starts_with(root)) names.emplace_back(a);
+    }
+  if (names.empty() || second == std::string::npos) return "see docs/keywords.md for the keywords radx reads";
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  return "radx reads " + list + " (docs/keywords.md)";
 }
 
 std::string_view cell(std::string_view line, int first, int last) {
@@ -495,10 +535,15 @@ class StarterReader {
         --n;
       const std::string path = join_path(tokens, n);
       if (is_known_unsupported(path)) {
+        diags_.error(
+            Diag::UnsupportedKeyword, at(head.pos, 1), About{path},
+            "the Radioss keyword " + path + " is not supported by radx; " + readable_alternatives(path));
+      } else if (const auto family = radioss_family(path); !family.empty()) {
         diags_.error(Diag::UnsupportedKeyword, at(head.pos, 1), About{path},
-                     "the Radioss keyword " + path +
-                         " is not supported by radx; see docs/keywords.md for the "
-                         "keywords radx reads");
+                     path + " is not a " + family +
+                         " radx reads (a Radioss keyword radx does not implement, or "
+                         "a misspelling); " +
+                         readable_alternatives(path));
       } else {
         diags_.error(Diag::UnknownKeyword, at(head.pos, 1), About{path},
                      "unknown keyword " + path +

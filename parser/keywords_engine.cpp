@@ -313,9 +313,11 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
     t.push_back(unsupported("/DELINT", "deleted shells removed from TYPE7 interfaces (ON or OFF)",
                             "radx would need that switch; TYPE7's Idel of the starter deck does this"));
     t.push_back(
-        unsupported("/VEL", "velocities imposed from the engine deck",
-                    "radx would need engine-deck imposed velocities; /IMPVEL in the starter deck does "
-                    "this"));
+        unsupported("/VEL",
+                    "an engine rigid link: the listed nodes share one velocity in the given directions "
+                    "(/VEL/TRA|ROT), or an ALE grid-velocity link (/VEL/ALE)",
+                    "radx would need engine-deck rigid links; /RBODY in the starter deck ties nodes "
+                    "rigidly"));
     t.push_back(
         unsupported("/INIV", "velocities set again at the start of the run",
                     "radx would need engine-deck initial velocities; /INIVEL in the starter deck does "

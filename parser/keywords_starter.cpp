@@ -240,7 +240,7 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
         card(
             "card 1",
             {I("Isolid", 1, 10, "8-node solid formulation; 0 takes /DEF_SOLID, then 1")
-                 .allow({0, 1, 2, 14, 15, 16, 17, 18, 24}),
+                 .allow({0, 1, 2, 12, 14, 15, 16, 17, 18, 24}),
              I("Ismstr", 11, 20, "solid strain formulation; 0 takes /DEF_SOLID, then 4")
                  .allow({0, 1, 2, 3, 4, 10, 11, 12}),
              I("Iale", 21, 30, "0 Lagrange, 1 ALE, 2 Euler")
@@ -253,10 +253,9 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                  .allow({0, 2, 1000})
                  .unused(),
              I("Inpts", 51, 60, "integration points coded 100r + 10s + t; 0 = formulation default"),
-             I("Itetra4", 61, 70, "4-node tetra formulation; 0 takes /DEF_SOLID")
-                 .versions(100)
-                 .allow({0, 1, 3, 1000})
-                 .unused(),
+             // Any value is read as Radioss reads it (negative: the integration flag of older decks;
+             // unexpected values fall back to /DEF_SOLID's): radx has no tetras for it to change.
+             I("Itetra4", 61, 70, "4-node tetra formulation; 0 takes /DEF_SOLID").versions(100).unused(),
              I("Iframe", 71, 80, "1 non-co-rotational, 2 co-rotational; 0 takes /DEF_SOLID").allow({0, 1, 2}),
              R("dn", 81, 100, "numerical damping of HEPH (Isolid 24); 0 takes the formulation default")}),
         card("card 2", {R("qa", 1, 20, "quadratic bulk viscosity coefficient").zero_is(1.1),
@@ -1241,6 +1240,13 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
         card("card 1",
              {R("XALEA", 1, 20, "largest random perturbation; 0 = none").dims(dim::length).not_implemented(),
               R("SEED", 21, 40, "random seed")})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/ANIM/VERS", "animation file format version (output only)", Header::None, false);
+    k.support = Support::Ignored;
+    k.singleton = true;
+    k.cards = {card("card 1", {I("ANIM_VERS", 1, 10, "format version of the animation files")})};
     t.push_back(std::move(k));
   }
   {

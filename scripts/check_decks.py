@@ -40,7 +40,8 @@ TIME_UNITS = {"s", "ms", "mus", "us", "ns", "min", "h"}
 UNSUPPORTED_ROOTS = ("/MAT/", "/PROP/", "/INTER/", "/SPRING", "/BEAM", "/TRUSS", "/RBE2", "/RBE3", "/MONVOL",
                      "/SENSOR", "/SKEW", "/FRAME", "/ADMAS", "/TETRA4", "/TETRA10", "/FAIL", "/EOS", "/TABLE",
                      "/SECT/PARAL", "/SECT/CIRCLE", "/GAUGE", "/SPHCEL", "/PARAMETER", "/INISHE", "/INIBRI", "/GRSHEL",
-                     "/GRBRIC", "/LINE", "/MERGE", "/CYL_JOINT", "/IMPDISP", "/IMPACC", "/FXBODY", "/DAMP")
+                     "/GRBRIC", "/LINE", "/MERGE", "/CYL_JOINT", "/IMPDISP", "/IMPACC", "/FXBODY", "/DAMP",
+                     "/TH/", "/ALE/", "/EBCS/", "/VISC/", "/ANIM/")
 
 
 def F(name, typ, a, b):

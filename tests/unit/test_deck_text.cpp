@@ -197,3 +197,25 @@ TEST_CASE("/BEGIN/0 and /BEGIN/ are read as /BEGIN with a note, /BEGIN/X is not 
   (void)radx::read_starter_deck(dir.write("x_0000.rad", deck + "/END\n"), diags);
   CHECK(codes(diags).find("RX105") != std::string::npos);  // no /BEGIN: a word after it is another keyword
 }
+
+TEST_CASE(
+    "a material, property or time history radx lacks is a Radioss keyword not supported, with the ones radx "
+    "reads",
+    "[lexer]") {
+  TempDir dir;
+  const auto path =
+      dir.write("fam_0000.rad", radx::test::begin_block(2026) +
+                                    "/MAT/LAW51/3\nmultimaterial\n/TH/QUAD/1\nquads\n/FOOBAR/1\n/END\n");
+  radx::Diagnostics diags;
+  (void)radx::read_starter_deck(path, diags);
+  const std::string all = codes(diags);
+  INFO(all);
+  // Line 6 and 8: RX302 (not "unknown, check the spelling"), naming what radx reads in that family.
+  CHECK(all.find("6:1: error: RX302: [/MAT/LAW51] /MAT/LAW51 is not a material law radx reads") !=
+        std::string::npos);
+  CHECK(all.find("radx reads /MAT/LAW1, /MAT/ELAST") != std::string::npos);
+  CHECK(all.find("8:1: error: RX302: [/TH/QUAD]") != std::string::npos);
+  CHECK(all.find("/TH/NODE") != std::string::npos);
+  // A word outside every Radioss family stays unknown.
+  CHECK(all.find("10:1: error: RX301: [/FOOBAR]") != std::string::npos);
+}
