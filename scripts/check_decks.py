@@ -1057,6 +1057,9 @@ def semantic(ck, m):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
     for o in m.of("/ADMAS/0", "/ADMAS/1"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
+        if val(o, "MASS", 0.0) < 0:
+            p = pos(o, "MASS")
+            I("RX501", p[0], p[1], "%s %d: MASS must be >= 0" % (o["path"], o["id"]))
     for o in m.of("/INIVEL/TRA", "/INIVEL/T+G", "/INIVEL/ROT"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
     for o in m.of("/IMPVEL", "/IMPDISP"):

@@ -1029,6 +1029,60 @@ def _():
         "group holds no node", [("RX403", "N3_KW")]
 
 
+# Added masses, initial velocities, gravity and concentrated loads: their references and values.
+
+
+def admas_rows(mass, grnod, path="/ADMAS/0"):
+    return [(path + "/1", "ADM_KW"), "Added mass", names(("MASS", 20), ("grnod_ID", 10)),
+            (line(R(mass), I(grnod)), "ADM_C1")]
+
+
+@fault("admas_missing_group")
+def _():
+    d = with_rows(admas_rows(1e-6, 99))
+    return d, "/ADMAS/0/1 adds mass to node group 99, which does not exist", [("RX402", "ADM_C1")]
+
+
+@fault("admas_negative_mass")
+def _():
+    d = with_rows(admas_rows(-1e-6, 1, "/ADMAS/1"))
+    return d, "/ADMAS/1/1 adds a negative mass", [("RX501", "ADM_C1")]
+
+
+@fault("inivel_rot_missing_group")
+def _():
+    d = with_rows([("/INIVEL/ROT/1", "IV_KW"), "Spin",
+                   names(("Vx", 20), ("Vy", 20), ("Vz", 20), ("grnod_ID", 10), ("skew_ID", 10)),
+                   (line(R(0.0), R(0.0), R(100.0), I(42), I(0)), "IV_C1")])
+    return d, "/INIVEL/ROT/1 spins node group 42, which does not exist", [("RX402", "IV_C1")]
+
+
+@fault("grav_missing_function")
+def _():
+    d = with_rows([("/GRAV/1", "GR_KW"), "Gravity",
+                   names(("funct_IDT", 10), ("DIR", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+                         ("", 10), ("Ascale_x", 20), ("Fscale_y", 20)),
+                   (line(I(8), S("Z", 10), I(0), I(0), I(1), blank(10), R(0.0), R(-9810.0)), "GR_C1")])
+    return d, "/GRAV/1 follows function 8, which does not exist", [("RX402", "GR_C1")]
+
+
+@fault("cload_missing_group")
+def _():
+    d = with_rows([("/CLOAD/1", "CL_KW"), "Force",
+                   names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+                         ("Itypfun", 10), ("Ascale_x", 20), ("Fscale_y", 20)),
+                   (line(I(5), S("X", 10), I(0), I(0), I(77), I(0), R(0.0), R(1.0)), "CL_C1")]
+                  + funct_rows(5, [(0.0, 1.0), (1.0, 1.0)], "Constant"))
+    return d, "/CLOAD/1 pushes node group 77, which does not exist", [("RX402", "CL_C1")]
+
+
+@fault("mat_law_not_in_radx")
+def _():
+    d = with_rows([("/MAT/LAW51/9", "ML_KW"), "Multi-material ALE law", line(R(1e-9))])
+    return d, "/MAT/LAW51: a Radioss material law radx does not implement (not an unknown keyword)", \
+        [("RX302", "ML_KW")]
+
+
 @fault("several_errors")
 def _():
     d = base()
