@@ -69,6 +69,7 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::NonPositiveArea, "a shell element with zero area"},
       {Diag::DegenerateElement, "a degenerate element (repeated nodes) used as a lower-order shape"},
       {Diag::RepeatedNodeInElement, "an element lists the same node where that is not allowed"},
+      {Diag::CoordinatesPerturbed, "node coordinates moved by a random perturbation (/RANDOM)"},
       {Diag::InitialPenetration, "secondary nodes closer to the main surface than the gap at t = 0"},
       {Diag::InterfaceFieldIgnored, "an interface field radx reads but does not use is set"},
       {Diag::BadFrictionLaw, "friction law coefficients that are inconsistent"},

@@ -69,6 +69,7 @@ enum class Diag : std::uint16_t {
   NonPositiveArea = 602,
   DegenerateElement = 603,
   RepeatedNodeInElement = 604,
+  CoordinatesPerturbed = 605,
   // contact
   InitialPenetration = 701,
   InterfaceFieldIgnored = 702,

@@ -1225,21 +1225,21 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
     // The reference reads `/RANDOM/x/...` as /RANDOM whenever x is not GRNOD: old decks write /RANDOM/0.
     KeywordDecl k = kw("/RANDOM", "random perturbation of all node coordinates; a trailing /0 is ignored",
                        Header::OptionalId, false, "ignored_ID");
-    k.support = Support::Ignored;
     k.cards = {
-        card("card 1",
-             {R("XALEA", 1, 20, "largest random perturbation; 0 = none").dims(dim::length).not_implemented(),
-              R("SEED", 21, 40, "random seed")})};
+        card("card 1", {R("XALEA", 1, 20, "largest random perturbation of each coordinate; 0 = none")
+                            .dims(dim::length)
+                            .ge(0.0),
+                        R("SEED", 21, 40, "seed of Radioss's random sequence; 0 = the default sequence")})};
     t.push_back(std::move(k));
   }
   {
     KeywordDecl k = kw("/RANDOM/GRNOD", "random perturbation of a node group's coordinates", Header::Id,
                        false, "grnod_ID");
-    k.support = Support::Ignored;
     k.cards = {
-        card("card 1",
-             {R("XALEA", 1, 20, "largest random perturbation; 0 = none").dims(dim::length).not_implemented(),
-              R("SEED", 21, 40, "random seed")})};
+        card("card 1", {R("XALEA", 1, 20, "largest random perturbation of each coordinate; 0 = none")
+                            .dims(dim::length)
+                            .ge(0.0),
+                        R("SEED", 21, 40, "seed of Radioss's random sequence; 0 = the default sequence")})};
     t.push_back(std::move(k));
   }
   {
@@ -1338,7 +1338,8 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
         "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS/2", "/ADMAS/3", "/ADMAS/4", "/ADMAS/5", "/ADMAS/6",
         "/ADMAS/7", "/ADMAS/10", "/DAMP", "/IMPLICIT", "/TABLE", "/MOVE_FUNCT", "/SECT/PARAL", "/SECT/CIRCLE",
-        "/GAUGE", "/PRELOAD",
+        "/GAUGE", "/PRELOAD", "/AMS", "/CAA", "/XREF", "/REFSTA", "/FUNCT_PYTHON", "/ACTIV", "/LEAK", "/DFS",
+        "/EBCS", "/INIGRAV", "/INIMAP1D", "/INIMAP2D", "/PERTURB", "/STATE",
         // time history that radx does not write
         "/TH/SPRING", "/TH/BEAM", "/TH/TRUSS", "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME",
         "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH", "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",

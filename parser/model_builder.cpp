@@ -577,6 +577,7 @@ model::Model ModelBuilder::build() {
   build_element_groups();  // before surfaces and node groups, which are built from element groups
   build_surfaces();        // before the groups: /GRNOD/SURF takes the nodes of surfaces
   build_groups();
+  apply_random_perturbation();  // after the groups it perturbs, before anything reads positions
   build_skews();
   build_loads();
   build_rigid_walls();

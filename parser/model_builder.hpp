@@ -51,7 +51,8 @@ class ModelBuilder {
   void build_functions();
   void build_element_groups();
   void build_groups();
-  void build_skews();  // build_skews.cpp
+  void build_skews();                // build_skews.cpp
+  void apply_random_perturbation();  // build_random.cpp
   void build_surfaces();
   void build_loads();
   void build_rigid_walls();

@@ -41,7 +41,9 @@ UNSUPPORTED_ROOTS = ("/MAT/", "/PROP/", "/INTER/", "/SPRING", "/BEAM", "/TRUSS",
                      "/SENSOR", "/SKEW", "/FRAME", "/ADMAS", "/TETRA4", "/TETRA10", "/FAIL", "/EOS", "/TABLE",
                      "/SECT/PARAL", "/SECT/CIRCLE", "/GAUGE", "/SPHCEL", "/PARAMETER", "/INISHE", "/INIBRI", "/GRSHEL",
                      "/GRBRIC", "/LINE", "/MERGE", "/CYL_JOINT", "/IMPDISP", "/IMPACC", "/FXBODY", "/DAMP",
-                     "/TH/", "/ALE/", "/EBCS/", "/VISC/", "/ANIM/")
+                     "/TH/", "/ALE/", "/EBCS", "/VISC/", "/ANIM/", "/AMS", "/CAA", "/XREF", "/REFSTA",
+                     "/FUNCT_PYTHON", "/ACTIV", "/LEAK", "/DFS", "/INIGRAV", "/INIMAP1D", "/INIMAP2D", "/PERTURB",
+                     "/STATE")
 
 
 def F(name, typ, a, b):
@@ -261,6 +263,10 @@ def accel(v):
     return [card([F("node_ID", "I", 1, 10), F("skew_ID", "I", 11, 20), F("Fcut", "R", 31, 50)])]
 
 
+def random_card(v):
+    return [card([F("XALEA", "R", 1, 20), F("SEED", "R", 21, 40)])]
+
+
 def admas(v):
     return [card([F("MASS", "R", 1, 20), F("grnod_ID", "I", 21, 30)])]
 
@@ -434,6 +440,8 @@ STARTER = {
     "/SECT": ("id", True, sect, None, None),
     "/TH/SECTIO": ("id", True, lambda v: [], "thids", ID_REC),
     "/ACCEL": ("id", True, accel, None, None),
+    "/RANDOM": ("none", False, random_card, None, None),
+    "/RANDOM/GRNOD": ("id", False, random_card, None, None),
     "/TH/ACCEL": ("id", True, lambda v: [], "thids", ID_REC),
 }
 
@@ -1089,6 +1097,19 @@ def semantic(ck, m):
         if sk and sk not in skews:
             p = pos(o, "skew_ID")
             I("RX402", p[0], p[1], "%s %d: skew %d does not exist" % (o["path"], o["id"], sk))
+    # random perturbation: XALEA >= 0; a group that exists; all nodes or groups, not both (Radioss: neither)
+    for o in m.of("/RANDOM", "/RANDOM/GRNOD"):
+        if val(o, "XALEA", 0.0) < 0:
+            p = pos(o, "XALEA")
+            I("RX501", p[0], p[1], "%s: XALEA must be >= 0" % o["path"])
+    for o in m.of("/RANDOM/GRNOD"):
+        if val(o, "XALEA", 0.0) > 0 and o["id"] not in grnods:
+            I("RX402", o["pos"][0], o["pos"][1], "/RANDOM/GRNOD/%d: node group does not exist" % o["id"])
+    rall = [o for o in m.of("/RANDOM") if val(o, "XALEA", 0.0) > 0]
+    rgrp = [o for o in m.of("/RANDOM/GRNOD") if val(o, "XALEA", 0.0) > 0]
+    if rall and rgrp:
+        p = pos(rgrp[0], "XALEA")
+        I("RX507", p[0], p[1], "/RANDOM and /RANDOM/GRNOD both given")
     # accelerometers: on an existing node, in an existing skew, with a cut-off frequency >= 0
     accels = by_id(("/ACCEL",), "accelerometer")
     for o in accels.values():

@@ -1083,6 +1083,32 @@ def _():
         [("RX302", "ML_KW")]
 
 
+# Random perturbation of the coordinates.
+
+
+def random_rows(path, xalea, tag):
+    return [(path, tag + "_KW"), names(("XALEA", 20), ("SEED", 20)), (line(R(xalea), R(0.0)), tag + "_C1")]
+
+
+@fault("random_negative_xalea")
+def _():
+    d = with_rows(random_rows("/RANDOM", -0.01, "RA"))
+    return d, "/RANDOM with a negative largest perturbation XALEA", [("RX501", "RA_C1")]
+
+
+@fault("random_grnod_missing_group")
+def _():
+    d = with_rows(random_rows("/RANDOM/GRNOD/9", 0.01, "RG"))
+    return d, "/RANDOM/GRNOD/9 perturbs node group 9, which does not exist", [("RX402", "RG_KW")]
+
+
+@fault("random_both_kinds")
+def _():
+    d = with_rows(random_rows("/RANDOM", 0.01, "RA") + random_rows("/RANDOM/GRNOD/1", 0.01, "RG"))
+    return d, "/RANDOM (all nodes) and /RANDOM/GRNOD together: Radioss then perturbs nothing", \
+        [("RX507", "RG_C1")]
+
+
 @fault("several_errors")
 def _():
     d = base()
