@@ -270,6 +270,7 @@ void build_accelerometers(ModelBuilder& b) {
     model::Accelerometer a;
     a.node =
         b.node_ref(r.get_int("node_ID"), r, field_pos(r, "node_ID"), "node_ID (the accelerometer's node)");
+    if (a.node != kNone) b.node_used_[static_cast<std::size_t>(a.node)] = 1;
     a.skew = skew_ref(b, r);
     a.fcut = r.get_real("Fcut");
     return a;
@@ -610,12 +611,12 @@ const std::vector<ThKindDef>& th_kinds() {
         "CY", "CZ"},
        {}},
       // AX AY AZ: the filtered acceleration on the skew axes; WX WY WZ: the velocity integrated from the
-      // unfiltered acceleration on the same axes (OpenRadioss's names).
+      // unfiltered acceleration on the same axes (OpenRadioss's names and sets: DEF is the accelerations).
       {"/TH/ACCEL",
        K::Accel,
        "accelerometer",
        "/ACCEL",
-       {{"DEF", {"AX", "AY", "AZ", "WX", "WY", "WZ"}}, {"W", {"WX", "WY", "WZ"}}},
+       {{"DEF", {"AX", "AY", "AZ"}}, {"W", {"WX", "WY", "WZ"}}},
        {"AX", "AY", "AZ", "WX", "WY", "WZ"},
        {}},
   };

@@ -534,12 +534,15 @@ class StarterReader {
       while (n > 1 && !tokens[n - 1].empty() && std::isdigit(static_cast<unsigned char>(tokens[n - 1][0])))
         --n;
       const std::string path = join_path(tokens, n);
+      // The id written after the path names the object in the message (/MAT/LAW51/9: material 9).
+      std::int64_t written_id = 0;
+      if (n < tokens.size() && parse_int(tokens[n], written_id) != NumberStatus::Ok) written_id = 0;
       if (is_known_unsupported(path)) {
         diags_.error(
-            Diag::UnsupportedKeyword, at(head.pos, 1), About{path},
+            Diag::UnsupportedKeyword, at(head.pos, 1), About{path, written_id},
             "the Radioss keyword " + path + " is not supported by radx; " + readable_alternatives(path));
       } else if (const auto family = radioss_family(path); !family.empty()) {
-        diags_.error(Diag::UnsupportedKeyword, at(head.pos, 1), About{path},
+        diags_.error(Diag::UnsupportedKeyword, at(head.pos, 1), About{path, written_id},
                      path + " is not a " + family +
                          " radx reads (a Radioss keyword radx does not implement, or "
                          "a misspelling); " +

@@ -524,6 +524,28 @@ void ModelBuilder::build_elements() {
 
 void ModelBuilder::compute_masses() {
   model::compute_lumped_masses(m_);
+  warn_massless_accelerometers();
+}
+
+// An accelerometer on a node that no element, added mass or rigid body gives mass to reads 0 for the
+// whole run (the engine leaves a massless node's acceleration at 0): say so rather than write zeros.
+void ModelBuilder::warn_massless_accelerometers() {
+  std::vector<std::uint8_t> in_body(m_.nodes.id.size(), 0);
+  for (const auto& rb : m_.rigid_bodies) {
+    if (rb.main_node != kNone) in_body[static_cast<std::size_t>(rb.main_node)] = 1;
+    for (const auto n : rb.secondary) in_body[static_cast<std::size_t>(n)] = 1;
+  }
+  for (const auto* r : deck_.of("/ACCEL")) {
+    const auto it = accel_ids_.find(r->id);
+    if (it == accel_ids_.end()) continue;
+    const auto n = m_.accelerometers[static_cast<std::size_t>(it->second)].node;
+    if (n == kNone || in_body[static_cast<std::size_t>(n)] || m_.node_mass[static_cast<std::size_t>(n)] > 0)
+      continue;
+    warning_at(*r, "node_ID", Diag::UnusedNode,
+               "node " + std::to_string(m_.nodes.id[static_cast<std::size_t>(n)]) +
+                   " carries no mass (no element, /ADMAS or rigid body): the accelerometer will read 0 for "
+                   "the whole run");
+  }
 }
 
 void ModelBuilder::check_unused_nodes() {

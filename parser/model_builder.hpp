@@ -62,6 +62,7 @@ class ModelBuilder {
   void build_interfaces();
   void build_contact_laws();
   void compute_masses();
+  void warn_massless_accelerometers();
   void check_unused_nodes();
   void check_formulations();  // check_formulations.cpp
 

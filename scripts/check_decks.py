@@ -624,7 +624,7 @@ class Checker:
         n = len(recs)
         version = version_hint or 2026
         if not fragment:
-            while i < n and not recs[i][2].upper().startswith("/BEGIN"):
+            while i < n and not is_begin_line(recs[i][2]):
                 i += 1
             if i == n:
                 first_kw = next((r for r in recs if r[2].startswith("/")), recs[0] if recs else (mainfile, 1, ""))
@@ -812,6 +812,13 @@ class Checker:
             for tok in text.replace(",", " ").split():
                 if not REAL_RE.match(tok):
                     self.warn(file, lineno, "engine data %r is not a number" % tok)
+
+
+def is_begin_line(text):
+    """/BEGIN, /BEGIN/ or /BEGIN/<digits>: Radioss finds /BEGIN by its prefix, older generators add a field."""
+    parts = text.strip().upper().split("/")
+    return len(parts) >= 2 and parts[0] == "" and parts[1] == "BEGIN" and (
+        len(parts) == 2 or (len(parts) == 3 and (parts[2] == "" or parts[2].isdigit())))
 
 
 def is_comment(text):
@@ -1480,7 +1487,8 @@ def check_file(path, root, verbose=False):
     for f, k, t in recs:
         if len(t) > 100:
             ck.warn(f, k, "line longer than 100 columns")
-        if "\t" in t and not is_comment(t):
+        # a tab before a value moves the columns; tabs among the trailing blanks move nothing
+        if "\t" in t and not is_comment(t) and "," not in t and t[:t.index("\t")].strip() != t.strip():
             ck.issue("RX104", f, k, "tab in a fixed-column line")
         if "," in t and not is_comment(t):
             ck.warn(f, k, "comma in a non-comment line (would switch the line to free format)")
@@ -1489,7 +1497,7 @@ def check_file(path, root, verbose=False):
         nlines = sum(1 for _ in fh)
     own = [r for r in recs]
     split = next((n for n, r in enumerate(own) if r[2].upper().startswith("/END/ENGINE")), None)
-    has_begin = any(r[2].upper().startswith("/BEGIN") for r in own)
+    has_begin = any(is_begin_line(r[2]) for r in own)
     if split is not None:
         ck.engine(own[:split + 1])
         model = ck.starter(own[split + 1:], display, nlines)

@@ -3,11 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace radx::solver {
 
 Accelerometers::Accelerometers(const model::Model& m) {
   for (const auto& a : m.accelerometers) {
+    if (a.node < 0 || static_cast<std::size_t>(a.node) >= m.nodes.id.size())
+      throw std::runtime_error("accelerometer " + std::to_string(a.id) + ": node index " +
+                               std::to_string(a.node) + " is outside the model (a corrupt model file)");
     Sensor s;
     s.node = static_cast<std::size_t>(a.node);
     for (int k = 0; k < 3; ++k) {
@@ -50,19 +55,19 @@ std::array<double, 3> on_axes(const std::array<double, 9>& r, const std::array<d
 
 }  // namespace
 
-void Accelerometers::update(const NodeState& st, double dt12, double dt2) {
+void Accelerometers::update(const NodeState& st, double dt12, double dt_filter) {
   for (std::size_t k = 0; k < sensors_.size(); ++k) {
     auto& s = sensors_[k];
     auto& out = readings_[k];
     const std::array<double, 3> a = {st.ax[s.node], st.ay[s.node], st.az[s.node]};
     const auto as = on_axes(s.axes, a);
     for (std::size_t d = 0; d < 3; ++d) out.velocity[d] += as[d] * dt12;
-    if (!(s.fcut > 0) || !(dt2 > 0)) {
+    if (!(s.fcut > 0) || !(dt_filter > 0)) {
       out.acceleration = as;
       continue;
     }
-    const double f = std::min(s.fcut, 0.4 / dt2);
-    const double dfac = std::tan(std::numbers::pi * f * dt2);
+    const double f = std::min(s.fcut, 0.4 / dt_filter);
+    const double dfac = std::tan(std::numbers::pi * f * dt_filter);
     const Biquad first(dfac, std::numbers::pi / 8), second(dfac, 3 * std::numbers::pi / 8);
     std::array<double, 3> filtered{};
     for (std::size_t d = 0; d < 3; ++d) {

@@ -4,8 +4,9 @@
 //   a_s = R a                    (R: rows x', y', z' of the skew)
 //   w_s += dt12 a_s              (WX WY WZ: the velocity change integrated from the unfiltered a_s)
 //   AX AY AZ = R y, y = the global acceleration through a 4-pole Butterworth low-pass of cut-off
-//   f = min(Fcut, 0.4 / dt2) (Fcut 0: no filter, AX AY AZ = a_s). The filter is two cascaded biquads from
-//   the bilinear transform with pre-warping, d = tan(pi f dt2), for the pole angles theta = pi/8 and 3 pi/8:
+//   f = min(Fcut, 0.4 / dt2) (dt1 on the last cycle, where dt2 = 0; Fcut 0: no filter, AX AY AZ = a_s). The
+//   filter is two cascaded biquads from the bilinear transform with pre-warping, d = tan(pi f dt2), for the
+//   pole angles theta = pi/8 and 3 pi/8:
 //       g = 1 / (1 + 2 sin(theta) d + d^2),   b0 = d^2 g, b1 = 2 b0, b2 = b0,
 //       a1 = 2 (1 - d^2) g,   a2 = -(1 - 2 sin(theta) d + d^2) g,
 //       y_n = b0 x_n + b1 x_{n-1} + b2 x_{n-2} + a1 y_{n-1} + a2 y_{n-2}
@@ -24,7 +25,9 @@ namespace radx::solver {
 class Accelerometers {
  public:
   explicit Accelerometers(const model::Model& m);
-  void update(const NodeState& s, double dt12, double dt2);
+  // dt12: the step centred on this cycle (W); dt_filter: the step the filter samples at, dt2, or dt1 on
+  // the last cycle where dt2 = 0 (the filter must not fall back to the raw signal there).
+  void update(const NodeState& s, double dt12, double dt_filter);
   struct Reading {
     std::array<double, 3> acceleration{};  // AX AY AZ on the skew axes (filtered when Fcut > 0)
     std::array<double, 3> velocity{};      // WX WY WZ

@@ -434,8 +434,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     accelerations();
     if (!lagrange_correction(L, res)) break;
     kinematics_->kinematic_conditions(L.time, L.dt1, L.dt2);
-    if (!accelerometers_->empty())
-      accelerometers_->update(nodes_, L.first ? 0.5 * L.dt2 : 0.5 * (L.dt1 + L.dt2), L.dt2);
+    if (!accelerometers_->empty()) accelerometers_->update(nodes_, L.dt12(), L.dt2 > 0 ? L.dt2 : L.dt1);
     const bool last = L.time >= controls_.t_stop || L.dt2 <= 0;
     if (!outputs(L, last, on_cycle, res)) break;
     if (last) break;
@@ -675,7 +674,7 @@ void ExplicitEngine::sum_energies(const LoopState& L) {
 // 8. v^{n+1/2} = v^{n-1/2} + dt12 a^n, x^{n+1} = x^n + dt2 v^{n+1/2}; a non-finite coordinate stops the run.
 bool ExplicitEngine::integrate(LoopState& L, RunResult& res) {
   auto& s = nodes_;
-  const double dt12 = L.first ? 0.5 * L.dt2 : 0.5 * (L.dt1 + L.dt2);
+  const double dt12 = L.dt12();
   const double dt2 = L.dt2;
   const auto nn = static_cast<std::int64_t>(s.n);
   bool finite = true;

@@ -129,8 +129,9 @@ class ExplicitEngine {
   [[nodiscard]] std::string bad_element(double time, std::int64_t cycle) const;
   CycleReport report(std::int64_t cycle, double time, double dt, const StepControl& control) const;
 
-  const model::Model& model_;
-  const model::RunControls& controls_;
+  const model::Model& model_;  // the caller keeps the model alive for the engine's lifetime
+  // A copy: controls are small, and a temporary passed to the constructor must not dangle.
+  const model::RunControls controls_;
   EngineOptions options_;
   NodeState nodes_;
   std::vector<MaterialParams> materials_;
@@ -158,6 +159,8 @@ class ExplicitEngine {
     double dt_contact = 0;        // this cycle's contact vote
     StepControl contact_control;  // and its pair
     double element_seconds = 0, contact_seconds = 0;
+    // The step centred on t^n that takes v^{n-1/2} to v^{n+1/2} (half a step on the first cycle).
+    [[nodiscard]] double dt12() const { return first ? 0.5 * dt2 : 0.5 * (dt1 + dt2); }
   };
   void external_loads(LoopState& L);
   void element_forces(LoopState& L);

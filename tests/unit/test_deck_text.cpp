@@ -211,10 +211,10 @@ TEST_CASE(
   const std::string all = codes(diags);
   INFO(all);
   // Line 6 and 8: RX302 (not "unknown, check the spelling"), naming what radx reads in that family.
-  CHECK(all.find("6:1: error: RX302: [/MAT/LAW51] /MAT/LAW51 is not a material law radx reads") !=
+  CHECK(all.find("6:1: error: RX302: [/MAT/LAW51 id 3] /MAT/LAW51 is not a material law radx reads") !=
         std::string::npos);
   CHECK(all.find("radx reads /MAT/LAW1, /MAT/ELAST") != std::string::npos);
-  CHECK(all.find("8:1: error: RX302: [/TH/QUAD]") != std::string::npos);
+  CHECK(all.find("8:1: error: RX302: [/TH/QUAD id 1]") != std::string::npos);
   CHECK(all.find("/TH/NODE") != std::string::npos);
   // A word outside every Radioss family stays unknown.
   CHECK(all.find("10:1: error: RX301: [/FOOBAR]") != std::string::npos);

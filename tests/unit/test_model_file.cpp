@@ -245,6 +245,16 @@ Model make_model() {
   wall.secondary = {0, 1, 2, 4};
   m.rigid_walls = {wall};
 
+  radx::model::Accelerometer acc;
+  acc.id = v.big();
+  acc.title = "accelerometer";
+  acc.node = 3;
+  acc.skew = v.big();
+  acc.fcut = v.real();
+  m.accelerometers = {acc, acc};
+  m.accelerometers[1].id = v.big();
+  m.accelerometers[1].node = 1;
+
   RigidBody rb;
   rb.id = v.big();
   rb.title = "rbody";
@@ -578,6 +588,15 @@ void check_same(const Model& a, const Model& b) {
     CHECK(x.group == y.group);
     CHECK(x.ascale_x == y.ascale_x);
     CHECK(x.fscale_y == y.fscale_y);
+  }
+
+  REQUIRE(a.accelerometers.size() == b.accelerometers.size());
+  for (std::size_t i = 0; i < a.accelerometers.size(); ++i) {
+    CHECK(a.accelerometers[i].id == b.accelerometers[i].id);
+    CHECK(a.accelerometers[i].title == b.accelerometers[i].title);
+    CHECK(a.accelerometers[i].node == b.accelerometers[i].node);
+    CHECK(a.accelerometers[i].skew == b.accelerometers[i].skew);
+    CHECK(a.accelerometers[i].fcut == b.accelerometers[i].fcut);
   }
 
   REQUIRE(a.rigid_walls.size() == b.rigid_walls.size());

@@ -380,7 +380,7 @@ TEST_CASE("radx regress end to end: statuses, table, exit code and JSON summary"
   const std::string out = slurp(log);
   INFO(out);
   CHECK(out.find("broken  read-error  FREE_FALL_0000.rad:") != std::string::npos);
-  CHECK(out.find("[/MAT/LAW14]") != std::string::npos);
+  CHECK(out.find("[/MAT/LAW14 id 1]") != std::string::npos);
   CHECK(out.find("endless  run-error") != std::string::npos);
   CHECK(out.find("the engine ran out of time") != std::string::npos);
   CHECK(out.find("noref  ran  cycles") != std::string::npos);

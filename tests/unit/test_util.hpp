@@ -11,6 +11,7 @@
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -49,19 +50,28 @@ class Line {
   Line& put(const std::string& v, int first, int last) {
     if (static_cast<int>(s_.size()) < last) s_.resize(static_cast<std::size_t>(last), ' ');
     const int width = last - first + 1;
-    const std::string t =
-        v.size() > static_cast<std::size_t>(width) ? v.substr(0, static_cast<std::size_t>(width)) : v;
+    // A test deck with a value cut to its columns would test something else than it says.
+    if (v.size() > static_cast<std::size_t>(width))
+      throw std::logic_error("test deck: '" + v + "' does not fit columns " + std::to_string(first) + "-" +
+                             std::to_string(last));
+    const std::string& t = v;
     s_.replace(static_cast<std::size_t>(last) - t.size(), t.size(), t);
     return *this;
   }
   Line& put(long long v, int first, int last) { return put(std::to_string(v), first, last); }
   Line& put(int v, int first, int last) { return put(std::to_string(v), first, last); }
+  // The most digits (up to 15) that fit the field: a value written wider than its columns would be cut.
   Line& put(double v, int first, int last) {
-    std::ostringstream os;
-    os.precision(15);
-    os << v;
-    std::string t = os.str();
-    if (t.find_first_of(".eE") == std::string::npos) t += ".";
+    const auto width = static_cast<std::size_t>(last - first + 1);
+    std::string t;
+    for (int digits = 15; digits >= 1; --digits) {
+      std::ostringstream os;
+      os.precision(digits);
+      os << v;
+      t = os.str();
+      if (t.find_first_of(".eE") == std::string::npos) t += ".";
+      if (t.size() <= width) break;
+    }
     return put(t, first, last);
   }
   Line& left(const std::string& v, int first) {
