@@ -202,6 +202,36 @@ def inivel(iid, title, v, group):
             names(("Tstart", 20), ("sensor_ID", 10)), line(R(0.0), I(0))]
 
 
+def impvel(iid, title, direction, group, v, skew=0):
+    """/IMPVEL: velocity v along `direction` (of `skew`) on the group, constant in time (function 1)."""
+    return ["/IMPVEL/%d" % iid, title,
+            names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+                  ("frame_ID", 10), ("Icoor", 10)),
+            line(I(1), S(direction, 10), I(skew), I(0), I(group), I(0), I(0)),
+            names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
+            line(R(0.0), R(v), R(0.0), R(0.0))]
+
+
+def cload(cid, title, direction, group, force, skew=0):
+    """/CLOAD: `force` along `direction` (of `skew`) on each node of the group, times function 1."""
+    return ["/CLOAD/%d" % cid, title,
+            names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+                  ("Itypfun", 10), ("Ascale_x", 20), ("Fscale_y", 20)),
+            line(I(1), S(direction, 10), I(skew), I(0), I(group), I(0), R(0.0), R(force))]
+
+
+def rbody(rid, title, main, group):
+    """/RBODY with main node `main` and secondary group, every option at its default (ICoG 1: the main node moves
+    to the centre of mass)."""
+    return ["/RBODY/%d" % rid, title,
+            names(("node_ID", 10), ("sens_ID", 10), ("skew_ID", 10), ("Ispher", 10), ("Mass", 20), ("grnd_ID", 10),
+                  ("Ikrem", 10), ("ICoG", 10), ("surf_ID", 10)),
+            line(I(main), I(0), I(0), I(0), R(0.0), I(group), I(0), I(0), I(0)),
+            names(("Jxx", 20), ("Jyy", 20), ("Jzz", 20)), line(R(0.0), R(0.0), R(0.0)),
+            names(("Jxy", 20), ("Jyz", 20), ("Jxz", 20)), line(R(0.0), R(0.0), R(0.0)),
+            names(("Ioptoff", 10), ("Iexpams", 10), ("Ifail", 10)), line(I(0), I(0), I(0))]
+
+
 def rwall_fixed(wid, title, group, point, head):
     """Fixed /RWALL/PLANE (node_ID 0), Slide 0, Iform 0, secondary nodes = group, d = 0."""
     return ["/RWALL/PLANE/%d" % wid, title,
@@ -694,12 +724,7 @@ def jc_single_brick(run="JC_SINGLE_BRICK", th=(), th_dt=None):
             continue
         D += grnod_node(10 + nid_, "Node %d" % nid_, [nid_])
         D += inivel(10 + nid_, "Uniaxial elastic velocity field at node %d" % nid_, v, 10 + nid_)
-    D += ["/IMPVEL/1", "Pull the face z = %g along +Z at constant speed" % h,
-          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                ("frame_ID", 10), ("Icoor", 10)),
-          line(I(1), S("Z", 10), I(0), I(0), I(4), I(0), I(0)),
-          names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
-          line(R(0.0), R(p["V"]), R(0.0), R(0.0))]
+    D += impvel(1, "Pull the face z = %g along +Z at constant speed" % h, "Z", 4, p["V"])
     D += ["/FUNCT/1", "Constant 1", names(("X", 20), ("Y", 20))]
     for x, y in ((0.0, 1.0), (1.0, 1.0)):
         D.append(line(R(x), R(y)))
@@ -1086,12 +1111,7 @@ def th_sh3n():
             continue
         D += grnod_node(100 + n, "Node %d" % n, [n])
         D += inivel(100 + n, "Uniaxial velocity field at node %d" % n, v, 100 + n)
-    D += ["/IMPVEL/1", "Pull the edges x = %g along +X at constant speed" % L,
-          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                ("frame_ID", 10), ("Icoor", 10)),
-          line(I(1), S("X", 10), I(0), I(0), I(4), I(0), I(0)),
-          names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
-          line(R(0.0), R(V), R(0.0), R(0.0))]
+    D += impvel(1, "Pull the edges x = %g along +X at constant speed" % L, "X", 4, V)
     D += ["/FUNCT/1", "Constant 1", names(("X", 20), ("Y", 20)), line(R(0.0), R(1.0)), line(R(1.0), R(1.0))]
     D.append(RULER)
     D += th_group("/TH/SH3N", 1, "Every triangle", ["DEF"], [1, 2, 11, 12], "id+skew")
@@ -1134,17 +1154,8 @@ def th_rbody():
     D.append(RULER)
     D += grnod_node(1, "Cube nodes", list(range(1, 9)))
     D += grnod_node(2, "Corner node 8", [8])
-    D += ["/RBODY/1", "Cube",
-          names(("node_ID", 10), ("sens_ID", 10), ("skew_ID", 10), ("Ispher", 10), ("Mass", 20), ("grnd_ID", 10),
-                ("Ikrem", 10), ("ICoG", 10), ("surf_ID", 10)),
-          line(I(9), I(0), I(0), I(0), R(0.0), I(1), I(0), I(0), I(0)),
-          names(("Jxx", 20), ("Jyy", 20), ("Jzz", 20)), line(R(0.0), R(0.0), R(0.0)),
-          names(("Jxy", 20), ("Jyz", 20), ("Jxz", 20)), line(R(0.0), R(0.0), R(0.0)),
-          names(("Ioptoff", 10), ("Iexpams", 10), ("Ifail", 10)), line(I(0), I(0), I(0))]
-    D += ["/CLOAD/1", "Pull on corner node 8 along +X",
-          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                ("Itypfun", 10), ("Ascale_x", 20), ("Fscale_y", 20)),
-          line(I(1), S("X", 10), I(0), I(0), I(2), I(0), R(0.0), R(p["F"]))]
+    D += rbody(1, "Cube", 9, 1)
+    D += cload(1, "Pull on corner node 8 along +X", "X", 2, p["F"])
     D += ["/GRAV/1", "Gravity along -Z on every node",
           names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10), ("", 10),
                 ("Ascale_x", 20), ("Fscale_y", 20)),
@@ -1251,10 +1262,7 @@ def sect_bar():
     D += ["/GRBRIC/BRIC/2", "Pulled side (x > cut)", names(("brick_ID1", 10)),
           line(*[I(e) for e in range(cut + 1, nx + 1)])]
     D += bcs(1, "Clamped end", "111", "000", 1)
-    D += ["/CLOAD/1", "Pull along +X with P/4 on each end node",
-          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                ("Itypfun", 10), ("Ascale_x", 20), ("Fscale_y", 20)),
-          line(I(1), S("X", 10), I(0), I(0), I(2), I(0), R(0.0), R(p["P"] / 4))]
+    D += cload(1, "Pull along +X with P/4 on each end node", "X", 2, p["P"] / 4)
     D += ["/FUNCT/1", "Ramp", names(("X", 20), ("Y", 20)), line(R(0.0), R(0.0)), line(R(p["T_RAMP"]), R(1.0)),
           line(R(1.0), R(1.0))]
     D.append(RULER)
@@ -1344,13 +1352,7 @@ def skew_mov_case():
     D += ["/ADMAS/0/1", "Corner masses", names(("MASS", 20), ("grnod_ID", 10)), line(R(p["MC"]), I(1))]
     for n in range(20, 25):
         D += ["/ADMAS/0/%d" % n, "Point mass %d" % n, names(("MASS", 20), ("grnod_ID", 10)), line(R(p["M"]), I(n))]
-    D += ["/RBODY/1", "Cube",
-          names(("node_ID", 10), ("sens_ID", 10), ("skew_ID", 10), ("Ispher", 10), ("Mass", 20), ("grnd_ID", 10),
-                ("Ikrem", 10), ("ICoG", 10), ("surf_ID", 10)),
-          line(I(9), I(0), I(0), I(0), R(0.0), I(1), I(0), I(0), I(0)),
-          names(("Jxx", 20), ("Jyy", 20), ("Jzz", 20)), line(R(0.0), R(0.0), R(0.0)),
-          names(("Jxy", 20), ("Jyz", 20), ("Jxz", 20)), line(R(0.0), R(0.0), R(0.0)),
-          names(("Ioptoff", 10), ("Iexpams", 10), ("Ifail", 10)), line(I(0), I(0), I(0))]
+    D += rbody(1, "Cube", 9, 1)
     D += ["/INIVEL/ROT/1", "Spin about Z",
           names(("Vx", 20), ("Vy", 20), ("Vz", 20), ("grnod_ID", 10), ("skew_ID", 10)),
           line(R(0.0), R(0.0), R(w, sig=15), I(2), I(0)),
@@ -1363,22 +1365,14 @@ def skew_mov_case():
         D += ["/SKEW/MOV/%d" % sid, title, names(("N1", 10), ("N2", 10), ("N3", 10), ("Dir", 10)),
               line(I(n1), I(n2), I(n3), S(d, 10))]
     D.append(RULER)
-    D += ["/CLOAD/1", "Point 21 pulled along x' of skew 1",
-          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                ("Itypfun", 10), ("Ascale_x", 20), ("Fscale_y", 20)),
-          line(I(1), S("X", 10), I(1), I(0), I(21), I(0), R(0.0), R(p["F"]))]
+    D += cload(1, "Point 21 pulled along x' of skew 1", "X", 21, p["F"], skew=1)
     D += ["/INIVEL/TRA/2", "Point 22 launched along y' of skew 2 (= X at t = 0)",
           names(("Vx", 20), ("Vy", 20), ("Vz", 20), ("grnod_ID", 10), ("skew_ID", 10)),
           line(R(0.0), R(p["V0"]), R(0.0), I(22), I(2)),
           names(("Tstart", 20), ("sensor_ID", 10)), line(R(0.0), I(0))]
     D += ["/BCS/1", "Point 22 held along y' and z' of skew 1",
           names(("Tra rot", 10), ("skew_ID", 10), ("grnod_ID", 10)), line(bcs_code("011", "000"), I(1), I(22))]
-    D += ["/IMPVEL/1", "Point 23 driven along x' of skew 3",
-          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                ("frame_ID", 10), ("Icoor", 10)),
-          line(I(1), S("X", 10), I(3), I(0), I(23), I(0), I(0)),
-          names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
-          line(R(0.0), R(p["V"]), R(0.0), R(0.0))]
+    D += impvel(1, "Point 23 driven along x' of skew 3", "X", 23, p["V"], skew=3)
     D += ["/BCS/2", "Point 23 held along y' and z' of skew 3",
           names(("Tra rot", 10), ("skew_ID", 10), ("grnod_ID", 10)), line(bcs_code("011", "000"), I(3), I(23))]
     D += ["/GRAV/1", "Point 24 under gravity along y' of skew 2",
