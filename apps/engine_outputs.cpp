@@ -1,5 +1,6 @@
 #include "apps/engine_outputs.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -180,6 +181,8 @@ struct EngineOutputs::Impl {
       l.title = g.title;
       l.object_kind = kind_name(g.kind);
       for (const auto o : g.objects) l.objects.push_back(user_id(model, g.kind, o));
+      if (std::any_of(g.skews.begin(), g.skews.end(), [](std::int64_t s) { return s != 0; }))
+        l.skews = g.skews;
       l.variables = g.variables;
       for (const auto& v : g.variables) l.units.push_back(unit(solver::th_variable_dim(g.kind, v)));
       samplers.emplace_back(engine, g);

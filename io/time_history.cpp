@@ -10,8 +10,9 @@
 // - dataset attributes: columns (string array, one name per column: "time", then "<object id>:<variable>"
 //   object-major, or "<variable>" for the global group), units (string array, one per column), variables
 //   (string array), variable_units (string array, one per variable: the units of a group without objects
-//   are kept too), objects (int64 array of user ids; absent when there is none), object_kind (string, ""
-//   for the global group, which has one value per variable), title (string).
+//   are kept too), objects (int64 array of user ids; absent when there is none), skews (int64 array, one
+//   skew user id per object, 0 for the global axes; only on a group with an object in a skew), object_kind
+//   (string, "" for the global group, which has one value per variable), title (string).
 //
 // Why rewrite the whole file at each flush instead of extending datasets in place: an HDF5 file being
 // modified is not readable (and can be left corrupt) if the process dies mid-write, while a file written
@@ -82,6 +83,9 @@ void validate(const std::string& file, const std::vector<ThGroupLayout>& groups)
       bad("group path '" + p + "' is not a relative path of names without ':'");
     }
     if (g.variables.empty()) bad("group " + p + " has no variables");
+    if (!g.skews.empty() && g.skews.size() != g.objects.size())
+      bad("group " + p + " has " + std::to_string(g.skews.size()) + " skews for " +
+          std::to_string(g.objects.size()) + " objects");
     if (g.units.size() != g.variables.size()) {
       bad("group " + p + " has " + std::to_string(g.variables.size()) + " variables but " +
           std::to_string(g.units.size()) + " units");
@@ -194,6 +198,9 @@ void TimeHistoryWriter::flush() {
         if (!g.objects.empty()) {
           h5::write_attr(ds, "objects", g.objects.data(), static_cast<hsize_t>(g.objects.size()));
         }
+        if (!g.skews.empty()) {
+          h5::write_attr(ds, "skews", g.skews.data(), static_cast<hsize_t>(g.skews.size()));
+        }
         h5::write_string_attr(ds, "object_kind", g.object_kind);
         h5::write_string_attr(ds, "title", g.title);
       }
@@ -238,13 +245,15 @@ bool read_time_history(const std::string& path, std::vector<ThGroupData>& groups
       d.layout.object_kind = h5::read_string_attr(ds, "object_kind");
       d.layout.variables = h5::read_string_array_attr(ds, "variables");
       if (h5::has_attr(ds, "objects")) d.layout.objects = h5::read_attr_array<std::int64_t>(ds, "objects");
+      if (h5::has_attr(ds, "skews")) d.layout.skews = h5::read_attr_array<std::int64_t>(ds, "skews");
       d.layout.units = h5::read_string_array_attr(ds, "variable_units");
       const auto units = h5::read_string_array_attr(ds, "units");
       const auto columns = h5::read_string_array_attr(ds, "columns");
       const auto dims = h5::dataset_dims(file, p);
       const std::size_t cols = 1 + value_count(d.layout);
       if (d.layout.variables.empty() || d.layout.units.size() != d.layout.variables.size() ||
-          dims.size() != 2 || dims[1] != cols) {
+          dims.size() != 2 || dims[1] != cols ||
+          (!d.layout.skews.empty() && d.layout.skews.size() != d.layout.objects.size())) {
         throw h5::Failure(where + ": its shape, variables, variable units and objects do not agree");
       }
       // The column names and units follow from the variables and objects; attributes that say otherwise

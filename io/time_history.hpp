@@ -21,6 +21,9 @@ struct ThGroupLayout {
   std::vector<std::int64_t> objects;   // user ids, in column order (empty for global)
   std::vector<std::string> variables;  // names per object, e.g. DX DY DZ (the same for every object)
   std::vector<std::string> units;      // unit of each variable, same length as `variables`
+  // Nodes: the skew (user id, 0 global axes) each object's vectors are written in, one per object; empty
+  // when every object is on the global axes.
+  std::vector<std::int64_t> skews;
 };
 
 class TimeHistoryWriter {

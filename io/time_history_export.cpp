@@ -137,7 +137,11 @@ void list_time_history(const std::string& file, const std::vector<ThGroupData>& 
     } else {
       // All ids: the listing is where one looks them up.
       std::vector<std::string> ids;
-      for (const auto id : l.objects) ids.push_back(std::to_string(id));
+      for (std::size_t k = 0; k < l.objects.size(); ++k) {
+        const std::int64_t skew = k < l.skews.size() ? l.skews[k] : 0;
+        ids.push_back(std::to_string(l.objects[k]) +
+                      (skew != 0 ? " (skew " + std::to_string(skew) + ")" : ""));
+      }
       write_wrapped(os,
                     "  objects:   " + std::to_string(l.objects.size()) + ' ' +
                         (l.object_kind.empty() ? "object" : l.object_kind) +

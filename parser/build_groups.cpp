@@ -309,7 +309,8 @@ void ModelBuilder::build_boxes() {
     }
     if (r->get_int("Iskew") != 0)
       error_at(*r, "Iskew", Diag::UnimplementedOption,
-               "boxes aligned with a skew frame are not supported (radx has no /SKEW); use Iskew = 0");
+               "boxes aligned with a skew frame are not supported (radx builds boxes on the global axes); "
+               "use Iskew = 0");
     for (int k = 0; k < 3; ++k) {
       b.lo[k] = std::min(p1[k], p2[k]);
       b.hi[k] = std::max(p1[k], p2[k]);

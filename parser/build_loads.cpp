@@ -10,8 +10,8 @@
 // * /RBODY: the main node is removed from the secondary group; Ispher 0 -> 2, ICoG 0 -> 1 (elements.md 7.2).
 // * /TH/*: group names (DEF, D, V, ...) are expanded to variables; objects resolve to dense indices; the
 //   variables radx accepts but writes as 0 are named in a warning.
-// /SKEW, /SENSOR and /FRAME are not read by radx, so a non-zero reference to one of them cannot be resolved
-// and is reported as a missing reference.
+// /SENSOR and /FRAME are not read by radx, so a non-zero reference to one of them cannot be resolved and is
+// reported as a missing reference. Skews are /SKEW/FIX and /SKEW/MOV (build_skews.cpp).
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -80,7 +80,7 @@ const NodeList& nodes_of(ModelBuilder& b, std::int32_t group) {
   return nodes ? *nodes : kEmpty;
 }
 
-// A reference to a kind of object radx does not read (/SKEW, /SENSOR, /FRAME): only 0 is accepted.
+// A reference to a kind of object radx does not read (/SENSOR, /FRAME): only 0 is accepted.
 std::string unreadable_ref_text(std::string_view field, std::int64_t id, std::string_view target,
                                 std::string_view zero_means) {
   return std::string(field) + " = " + std::to_string(id) + ": there is no " + std::string(target) + "/" +
@@ -94,13 +94,19 @@ std::int64_t unreadable_ref(ModelBuilder& b, const KeywordRecord& r, std::string
     b.error_at(r, field, Diag::MissingReference, unreadable_ref_text(field, id, target, zero_means));
   return id;
 }
-// A /SKEW/FIX of the deck (its user id, 0 for the global axes).
+// "there is no /SKEW/FIX/7 or /SKEW/MOV/7 in the deck; 0 = global axes" when skew `id` is not in the deck,
+// empty when it is (or id is 0).
+std::string missing_skew_text(const ModelBuilder& b, std::string_view field, std::int64_t id) {
+  if (id == 0 || b.skew_ids_.find(id) != b.skew_ids_.end()) return {};
+  const std::string s = std::to_string(id);
+  return std::string(field) + " = " + s + ": there is no /SKEW/FIX/" + s + " or /SKEW/MOV/" + s +
+         " in the deck; 0 = global axes";
+}
+// A /SKEW/FIX or /SKEW/MOV of the deck (its user id, 0 for the global axes).
 std::int64_t skew_ref(ModelBuilder& b, const KeywordRecord& r) {
   const std::int64_t id = r.get_int("skew_ID");
-  if (id != 0 && b.skew_ids_.find(id) == b.skew_ids_.end())
-    b.error_at(r, "skew_ID", Diag::MissingReference,
-               "skew_ID = " + std::to_string(id) + ": there is no /SKEW/FIX/" + std::to_string(id) +
-                   " in the deck (radx reads /SKEW/FIX; /SKEW/MOV is not supported); 0 = global axes");
+  if (auto text = missing_skew_text(b, "skew_ID", id); !text.empty())
+    b.error_at(r, "skew_ID", Diag::MissingReference, std::move(text));
   return id;
 }
 // Where radx has no use for a skew yet (the rigid-body inertia frame): only 0 is accepted.
@@ -698,8 +704,10 @@ std::int32_t th_object(const ModelBuilder& b, model::ThKind kind, std::int64_t i
   return kNone;
 }
 
-std::vector<std::int32_t> th_objects(ModelBuilder& b, const KeywordRecord& r, const ThKindDef& k) {
-  std::vector<std::int32_t> out;
+// The objects of a /TH group, and for /TH/NODE the skew of each (g.skews). /TH/SHEL and /TH/SH3N accept
+// only the global axes (radx does not turn shell results into a skew).
+void th_objects(ModelBuilder& b, const KeywordRecord& r, const ThKindDef& k, model::TimeHistoryGroup& g) {
+  std::vector<std::int32_t>& out = g.objects;
   bool missing = false;
   auto take = [&](std::int64_t id, SourcePos pos) {
     const auto o = th_object(b, k.kind, id);
@@ -716,10 +724,16 @@ std::vector<std::int32_t> th_objects(ModelBuilder& b, const KeywordRecord& r, co
     const auto& t = r.records;
     const int cid = t.column("id"), cskew = t.column("skew_ID");
     for (std::size_t i = 0; cid >= 0 && i < t.size(); ++i) {
+      const std::size_t before = out.size();
       take(t.ints[cid][i], t.pos[i]);
-      if (cskew >= 0 && t.ints[cskew][i] != 0)
-        b.diags_.error(Diag::MissingReference, b.at(t.pos[i], 11), ModelBuilder::about(r),
-                       unreadable_ref_text("skew_ID", t.ints[cskew][i], "/SKEW", "global axes"));
+      const std::int64_t skew = cskew >= 0 ? t.ints[cskew][i] : 0;
+      if (k.kind == model::ThKind::Node && out.size() > before) g.skews.push_back(skew);
+      if (auto text = missing_skew_text(b, "skew_ID", skew); !text.empty())
+        b.diags_.error(Diag::MissingReference, b.at(t.pos[i], 11), ModelBuilder::about(r), std::move(text));
+      else if (skew != 0 && k.kind != model::ThKind::Node)
+        b.diags_.error(Diag::UnimplementedOption, b.at(t.pos[i], 11), ModelBuilder::about(r),
+                       "skew_ID = " + std::to_string(skew) + ": radx writes " + std::string(k.object) +
+                           " results in the element frame only, not in a skew; leave skew_ID blank or 0");
     }
   } else {
     for (std::size_t i = 0; i < r.ids.size(); ++i) take(r.ids[i], r.id_pos[i]);
@@ -728,7 +742,6 @@ std::vector<std::int32_t> th_objects(ModelBuilder& b, const KeywordRecord& r, co
     b.diags_.warning(Diag::EmptyGroup, b.at(r.pos, 1), ModelBuilder::about(r),
                      std::string(k.path) + " lists no " + std::string(k.object) +
                          ": nothing will be written for it; give the ids after the variable lines");
-  return out;
 }
 
 }  // namespace
@@ -773,7 +786,7 @@ void ModelBuilder::build_time_histories() {
     if (const auto zero = zero_variables_text(*k, g.variables); !zero.empty())
       diags_.warning(Diag::UnimplementedOption, at(r.pos, 1), about(r),
                      "radx does not compute " + zero + ": written as 0 in the time history");
-    g.objects = th_objects(*this, r, *k);
+    th_objects(*this, r, *k, g);
     const auto i = static_cast<std::size_t>(k - kinds.begin());
     const std::string what = std::string(k->path) + " group";
     if (register_id(ids[i], g.id, static_cast<std::int32_t>(m_.time_histories.size()), r, what, first[i]))

@@ -854,6 +854,19 @@ void add_loads(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    KeywordDecl k =
+        kw("/SKEW/MOV",
+           "moving frame carried by three nodes: origin N1, the Dir axis along N1 -> N2, N3 in the "
+           "plane of the Dir axis and the next one; rebuilt from the nodes every cycle",
+           Header::IdUnit, true, "skew_ID");
+    k.cards = {card(
+        "card 1",
+        {I("N1", 1, 10, "origin node").must(), I("N2", 11, 20, "node giving the Dir axis from N1").must(),
+         I("N3", 21, 30, "node in the plane of the Dir axis and the next one (X'Y' for X)").must(),
+         S("Dir", 31, 40, "axis along N1 -> N2: X, Y or Z; blank = X").versions(2019)})};
+    t.push_back(std::move(k));
+  }
+  {
     KeywordDecl k = kw("/ACCEL", "accelerometer: a node's acceleration in a skew frame, low-pass filtered",
                        Header::IdUnit, true, "accel_ID");
     k.cards = {
@@ -1330,10 +1343,10 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/INTER/TYPE20", "/INTER/TYPE21", "/INTER/TYPE23", "/INTER/TYPE24", "/INTER/TYPE25", "/INTER/SUB",
         "/FRICTION", "/DEFAULT", "/INTTHICK",
         // constraints, kinematics, loads, initial state
-        "/SKEW/MOV", "/SKEW/MOV2", "/FRAME", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT", "/MPC",
-        "/GJOINT", "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPDISP/FGEO", "/IMPACC", "/IMPTEMP", "/INIVEL/GRID",
-        "/INIVEL/AXIS", "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD", "/RWALL/PARAL",
-        "/RWALL/LAGMUL", "/RWALL/THERM", "/INISHE", "/INIBRI", "/INISH3", "/INITEMP", "/INISTA",
+        "/SKEW/MOV2", "/FRAME", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT", "/MPC", "/GJOINT",
+        "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPDISP/FGEO", "/IMPACC", "/IMPTEMP", "/INIVEL/GRID", "/INIVEL/AXIS",
+        "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD", "/RWALL/PARAL", "/RWALL/LAGMUL",
+        "/RWALL/THERM", "/INISHE", "/INIBRI", "/INISH3", "/INITEMP", "/INISTA",
         // physics and model structure
         "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
         "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS/2", "/ADMAS/3", "/ADMAS/4", "/ADMAS/5", "/ADMAS/6",

@@ -259,6 +259,14 @@ def skew_fix(v):
     return [card(reals("Ox", "Oy", "Oz")), card(reals("X1", "Y1", "Z1")), card(reals("X2", "Y2", "Z2"))]
 
 
+def skew_mov(v):
+    """/SKEW/MOV: N1 N2 N3; Dir (the axis N1 -> N2 gives, blank = X) from the 2019 layout."""
+    f = [F("N1", "I", 1, 10), F("N2", "I", 11, 20), F("N3", "I", 21, 30)]
+    if v >= 2019:
+        f.append(F("Dir", "S", 31, 40))
+    return [card(f)]
+
+
 def accel(v):
     return [card([F("node_ID", "I", 1, 10), F("skew_ID", "I", 11, 20), F("Fcut", "R", 31, 50)])]
 
@@ -424,6 +432,7 @@ STARTER = {
     "/ADMAS/1": ("id", True, admas, None, None),
     "/GRAV": ("id", True, grav, None, None),
     "/SKEW/FIX": ("id", True, skew_fix, None, None),
+    "/SKEW/MOV": ("id", True, skew_mov, None, None),
     "/CLOAD": ("id", True, cload, None, None),
     "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
     "/RWALL/CYL": ("id", True, lambda v: rwall_curved(v, True), None, None),
@@ -1087,9 +1096,42 @@ def semantic(ck, m):
     for o in m.of("/GRAV"):
         need(o, "funct_IDT", functs, "function")
         need(o, "grnod_ID", grnods, "node group")
-    # skews: a frame needs two independent directions; the loads and conditions may name one
-    skews = by_id(("/SKEW/FIX",), "skew")
+    # skews (one id space for /SKEW/FIX and /SKEW/MOV): a fixed frame needs two independent directions, a moving
+    # one three distinct existing nodes, N2 off N1 and N3 off the line N1 N2 (sine of the angle > 1e-5), Dir X, Y,
+    # Z or blank; the loads and conditions may name one
+    skews = by_id(("/SKEW/FIX", "/SKEW/MOV"), "skew")
     for o in skews.values():
+        if o["path"] != "/SKEW/MOV":
+            continue
+        ids = [val(o, k, 0) for k in ("N1", "N2", "N3")]
+        d = str(val(o, "Dir", "")).strip().upper()
+        if d not in ("", "X", "Y", "Z"):
+            p = pos(o, "Dir")
+            I("RX501", p[0], p[1], "/SKEW/MOV %d: Dir = %r is not X, Y or Z" % (o["id"], d))
+        bad = False
+        for k, x in zip(("N1", "N2", "N3"), ids):
+            p = pos(o, k)
+            if x == 0:
+                I("RX502", p[0], p[1], "/SKEW/MOV %d: %s is required" % (o["id"], k))
+                bad = True
+            elif x not in nodes:
+                I("RX402", p[0], p[1], "/SKEW/MOV %d: node %d does not exist" % (o["id"], x))
+                bad = True
+        if bad:
+            continue
+        p = pos(o, "N1")
+        if len(set(ids)) < 3:
+            I("RX507", p[0], p[1], "/SKEW/MOV %d: the nodes %s are not distinct" % (o["id"], ids))
+            continue
+        e = sub(nodes[ids[1]], nodes[ids[0]])
+        t = sub(nodes[ids[2]], nodes[ids[0]])
+        if norm(e) == 0:
+            I("RX507", p[0], p[1], "/SKEW/MOV %d: N2 sits on N1" % o["id"])
+        elif norm(cross(e, t)) <= 1e-5 * norm(e) * norm(t):
+            I("RX507", p[0], p[1], "/SKEW/MOV %d: N3 lies on the line N1 N2" % o["id"])
+    for o in skews.values():
+        if o["path"] != "/SKEW/FIX":
+            continue
         y = [val(o, k, 0.0) for k in ("X1", "Y1", "Z1")]
         z = [val(o, k, 0.0) for k in ("X2", "Y2", "Z2")]
         if y[0] == 0 and y[2] == 0:
@@ -1198,11 +1240,18 @@ def semantic(ck, m):
             if x not in sects:
                 I("RX402", p[0], p[1], "TH section %d does not exist" % x)
 
-    # time history
+    # time history; node values may be written in a skew, shell results only in the element frame
     for o in m.of("/TH/NODE"):
         for r, p in o["recs"]:
             if r.get("node_ID") not in nodes:
                 I("RX402", p[0], p[1], "TH node %s does not exist" % r.get("node_ID"))
+    for o in m.of("/TH/NODE", "/TH/SHEL", "/TH/SH3N"):
+        for r, p in o["recs"]:
+            sk = r.get("skew_ID") or 0
+            if sk and sk not in skews:
+                I("RX402", p[0], p[1], "%s %d: skew %d does not exist" % (o["path"], o["id"], sk))
+            elif sk and o["path"] != "/TH/NODE":
+                I("RX509", p[0], p[1], "%s %d: shell results in skew %d" % (o["path"], o["id"], sk))
     for o in m.of("/TH/PART"):
         for x, p in o["ids"]:
             if x not in parts:

@@ -709,6 +709,63 @@ def _():
                                names(("X2", 20), ("Y2", 20), ("Z2", 20)), (line(R(0.0), R(0.0), R(1.0)), "SKW_C3")])
     d.set("BCS_C1", line(bcs_code("111", "111"), I(5), I(1)))
     return d, "/SKEW/FIX/5 with Y' = (0, 0, 2) parallel to Z' = (0, 0, 1): no frame", [("RX507", "SKW_C3")]
+
+
+def skew_mov_rows(n1, n2, n3, direction="", sid=5, title="Frame on plate nodes"):
+    """/SKEW/MOV/<sid> (2019 layout and newer: N1 N2 N3 Dir); the card line is tagged SKM_C1."""
+    return [("/SKEW/MOV/%d" % sid, "SKM_KW"), title,
+            names(("N1", 10), ("N2", 10), ("N3", 10), ("Dir", 10)),
+            (line(I(n1), I(n2), I(n3), S(direction, 10)), "SKM_C1")]
+
+
+def with_moving_skew(n1, n2, n3, direction=""):
+    """The base model with /SKEW/MOV/5 before /BCS/1, which holds the plate in it."""
+    d = base()
+    d.insert_before("BCS_KW", skew_mov_rows(n1, n2, n3, direction))
+    d.set("BCS_C1", line(bcs_code("111", "111"), I(5), I(1)))
+    return d
+
+
+@fault("skew_mov_missing_node")
+def _():
+    return with_moving_skew(1, 2, 99), "/SKEW/MOV/5 names N3 = 99, which does not exist", [("RX402", "SKM_C1")]
+
+
+@fault("skew_mov_repeated_node")
+def _():
+    return with_moving_skew(1, 2, 1), "/SKEW/MOV/5 with N3 = N1 = 1: three distinct nodes are needed", \
+        [("RX507", "SKM_C1")]
+
+
+@fault("skew_mov_coincident_nodes")
+def _():
+    d = with_moving_skew(1, 19, 4)
+    d.insert_after("NODE_18", [node_line(19, 0.0, 0.0, 0.0)])
+    return d, "/SKEW/MOV/5: N2 = 19 sits on N1 = 1 at (0, 0, 0), so N1 -> N2 has no direction", \
+        [("RX507", "SKM_C1")]
+
+
+@fault("skew_mov_collinear_nodes")
+def _():
+    return with_moving_skew(1, 2, 3), "/SKEW/MOV/5 on nodes 1, 2, 3, which lie on the line y = 0: no plane", \
+        [("RX507", "SKM_C1")]
+
+
+@fault("skew_mov_bad_dir")
+def _():
+    return with_moving_skew(1, 2, 4, "W"), "/SKEW/MOV/5 Dir = W (X, Y or Z, blank = X)", [("RX501", "SKM_C1")]
+
+
+@fault("skew_duplicate_id")
+def _():
+    d = base()
+    d.insert_before("BCS_KW", [("/SKEW/FIX/5", "SKW_KW"), "Fixed frame",
+                               names(("Ox", 20), ("Oy", 20), ("Oz", 20)), line(R(0.0), R(0.0), R(0.0)),
+                               names(("X1", 20), ("Y1", 20), ("Z1", 20)), line(R(0.0), R(1.0), R(0.0)),
+                               names(("X2", 20), ("Y2", 20), ("Z2", 20)), line(R(0.0), R(0.0), R(1.0))]
+                    + skew_mov_rows(1, 2, 4))
+    d.set("BCS_C1", line(bcs_code("111", "111"), I(5), I(1)))
+    return d, "/SKEW/FIX/5 and /SKEW/MOV/5: skews share one id space", [("RX401", "SKM_KW")]
 def th_rows(path, title, variables, objects=(), records=None, obj_tag="TH_OBJ"):
     """A /TH group with id 1: title, variable names left-justified in 10-column cells, then the objects, one
     per line (records: "id" for /TH/BRIC, "id+skew" for /TH/SH3N) or ids 10 per line; the last object line is
@@ -742,6 +799,24 @@ def _():
     d = base()
     d.insert_before("BEFORE_END", th_rows("/TH/SH3N", "Triangles", ["DEF"], [1], "id+skew"))
     return d, "/TH/SH3N/1 lists element 1, a 4-node /SHELL: no /SH3N defines it", [("RX402", "TH_OBJ")]
+
+
+@fault("th_node_missing_skew")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", th_rows("/TH/NODE", "Plate corner in a skew", ["DEF"]) +
+                    [names(("node_ID", 10), ("skew_ID", 10)), (line(I(1), I(7)), "TH_OBJ")])
+    return d, "/TH/NODE/1 lists node 1 in skew 7, and the deck has no /SKEW/FIX/7 or /SKEW/MOV/7", \
+        [("RX402", "TH_OBJ")]
+
+
+@fault("th_shel_in_skew")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", skew_mov_rows(1, 2, 4) + th_rows("/TH/SHEL", "Shell in a skew", ["DEF"]) +
+                    [names(("elem_ID", 10), ("skew_ID", 10)), (line(I(1), I(5)), "TH_OBJ")])
+    return d, "/TH/SHEL/1 lists shell 1 in skew 5: radx writes shell results in the element frame only", \
+        [("RX509", "TH_OBJ")]
 
 
 @fault("th_rbody_missing_rbody")

@@ -19,6 +19,8 @@ Cases (units):
   two_bars          two equal elastic bars exchanging velocities through TYPE7 contact (consistent units)
   th_outputs        /TH/BRIC, /TH/SH3N and /TH/RBODY against closed forms (three runs, Mg, mm, s)
   sections          /SECT and /TH/SECTIO on a clamped brick bar pulled by a slow ramp (Mg, mm, s)
+  skew_mov          /SKEW/MOV on a spinning rigid cube, used by /CLOAD, /BCS, /IMPVEL, /GRAV, /INIVEL, /ACCEL
+                    and /TH/NODE (kg, m, s)
 
 Plain python3, standard library only.
 """
@@ -31,7 +33,7 @@ from radx_deck_format import I, R, S, RULER, bcs_code, blank, ibc_code, line, na
 
 VERSION = 2026
 CASES = ("bar_rwall", "cantilever_strip", "taylor_bar", "jc_single_brick", "free_fall", "two_bars", "th_outputs",
-         "sections")
+         "sections", "skew_mov")
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -198,6 +200,36 @@ def inivel(iid, title, v, group):
             names(("Vx", 20), ("Vy", 20), ("Vz", 20), ("grnod_ID", 10), ("skew_ID", 10)),
             line(R(v[0], sig=12), R(v[1], sig=12), R(v[2], sig=12), I(group), I(0)),
             names(("Tstart", 20), ("sensor_ID", 10)), line(R(0.0), I(0))]
+
+
+def impvel(iid, title, direction, group, v, skew=0):
+    """/IMPVEL: velocity v along `direction` (of `skew`) on the group, constant in time (function 1)."""
+    return ["/IMPVEL/%d" % iid, title,
+            names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+                  ("frame_ID", 10), ("Icoor", 10)),
+            line(I(1), S(direction, 10), I(skew), I(0), I(group), I(0), I(0)),
+            names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
+            line(R(0.0), R(v), R(0.0), R(0.0))]
+
+
+def cload(cid, title, direction, group, force, skew=0):
+    """/CLOAD: `force` along `direction` (of `skew`) on each node of the group, times function 1."""
+    return ["/CLOAD/%d" % cid, title,
+            names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+                  ("Itypfun", 10), ("Ascale_x", 20), ("Fscale_y", 20)),
+            line(I(1), S(direction, 10), I(skew), I(0), I(group), I(0), R(0.0), R(force))]
+
+
+def rbody(rid, title, main, group):
+    """/RBODY with main node `main` and secondary group, every option at its default (ICoG 1: the main node moves
+    to the centre of mass)."""
+    return ["/RBODY/%d" % rid, title,
+            names(("node_ID", 10), ("sens_ID", 10), ("skew_ID", 10), ("Ispher", 10), ("Mass", 20), ("grnd_ID", 10),
+                  ("Ikrem", 10), ("ICoG", 10), ("surf_ID", 10)),
+            line(I(main), I(0), I(0), I(0), R(0.0), I(group), I(0), I(0), I(0)),
+            names(("Jxx", 20), ("Jyy", 20), ("Jzz", 20)), line(R(0.0), R(0.0), R(0.0)),
+            names(("Jxy", 20), ("Jyz", 20), ("Jxz", 20)), line(R(0.0), R(0.0), R(0.0)),
+            names(("Ioptoff", 10), ("Iexpams", 10), ("Ifail", 10)), line(I(0), I(0), I(0))]
 
 
 def rwall_fixed(wid, title, group, point, head):
@@ -692,12 +724,7 @@ def jc_single_brick(run="JC_SINGLE_BRICK", th=(), th_dt=None):
             continue
         D += grnod_node(10 + nid_, "Node %d" % nid_, [nid_])
         D += inivel(10 + nid_, "Uniaxial elastic velocity field at node %d" % nid_, v, 10 + nid_)
-    D += ["/IMPVEL/1", "Pull the face z = %g along +Z at constant speed" % h,
-          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                ("frame_ID", 10), ("Icoor", 10)),
-          line(I(1), S("Z", 10), I(0), I(0), I(4), I(0), I(0)),
-          names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
-          line(R(0.0), R(p["V"]), R(0.0), R(0.0))]
+    D += impvel(1, "Pull the face z = %g along +Z at constant speed" % h, "Z", 4, p["V"])
     D += ["/FUNCT/1", "Constant 1", names(("X", 20), ("Y", 20))]
     for x, y in ((0.0, 1.0), (1.0, 1.0)):
         D.append(line(R(x), R(y)))
@@ -1084,12 +1111,7 @@ def th_sh3n():
             continue
         D += grnod_node(100 + n, "Node %d" % n, [n])
         D += inivel(100 + n, "Uniaxial velocity field at node %d" % n, v, 100 + n)
-    D += ["/IMPVEL/1", "Pull the edges x = %g along +X at constant speed" % L,
-          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                ("frame_ID", 10), ("Icoor", 10)),
-          line(I(1), S("X", 10), I(0), I(0), I(4), I(0), I(0)),
-          names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
-          line(R(0.0), R(V), R(0.0), R(0.0))]
+    D += impvel(1, "Pull the edges x = %g along +X at constant speed" % L, "X", 4, V)
     D += ["/FUNCT/1", "Constant 1", names(("X", 20), ("Y", 20)), line(R(0.0), R(1.0)), line(R(1.0), R(1.0))]
     D.append(RULER)
     D += th_group("/TH/SH3N", 1, "Every triangle", ["DEF"], [1, 2, 11, 12], "id+skew")
@@ -1132,17 +1154,8 @@ def th_rbody():
     D.append(RULER)
     D += grnod_node(1, "Cube nodes", list(range(1, 9)))
     D += grnod_node(2, "Corner node 8", [8])
-    D += ["/RBODY/1", "Cube",
-          names(("node_ID", 10), ("sens_ID", 10), ("skew_ID", 10), ("Ispher", 10), ("Mass", 20), ("grnd_ID", 10),
-                ("Ikrem", 10), ("ICoG", 10), ("surf_ID", 10)),
-          line(I(9), I(0), I(0), I(0), R(0.0), I(1), I(0), I(0), I(0)),
-          names(("Jxx", 20), ("Jyy", 20), ("Jzz", 20)), line(R(0.0), R(0.0), R(0.0)),
-          names(("Jxy", 20), ("Jyz", 20), ("Jxz", 20)), line(R(0.0), R(0.0), R(0.0)),
-          names(("Ioptoff", 10), ("Iexpams", 10), ("Ifail", 10)), line(I(0), I(0), I(0))]
-    D += ["/CLOAD/1", "Pull on corner node 8 along +X",
-          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                ("Itypfun", 10), ("Ascale_x", 20), ("Fscale_y", 20)),
-          line(I(1), S("X", 10), I(0), I(0), I(2), I(0), R(0.0), R(p["F"]))]
+    D += rbody(1, "Cube", 9, 1)
+    D += cload(1, "Pull on corner node 8 along +X", "X", 2, p["F"])
     D += ["/GRAV/1", "Gravity along -Z on every node",
           names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10), ("", 10),
                 ("Ascale_x", 20), ("Fscale_y", 20)),
@@ -1249,10 +1262,7 @@ def sect_bar():
     D += ["/GRBRIC/BRIC/2", "Pulled side (x > cut)", names(("brick_ID1", 10)),
           line(*[I(e) for e in range(cut + 1, nx + 1)])]
     D += bcs(1, "Clamped end", "111", "000", 1)
-    D += ["/CLOAD/1", "Pull along +X with P/4 on each end node",
-          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
-                ("Itypfun", 10), ("Ascale_x", 20), ("Fscale_y", 20)),
-          line(I(1), S("X", 10), I(0), I(0), I(2), I(0), R(0.0), R(p["P"] / 4))]
+    D += cload(1, "Pull along +X with P/4 on each end node", "X", 2, p["P"] / 4)
     D += ["/FUNCT/1", "Ramp", names(("X", 20), ("Y", 20)), line(R(0.0), R(0.0)), line(R(p["T_RAMP"]), R(1.0)),
           line(R(1.0), R(1.0))]
     D.append(RULER)
@@ -1309,6 +1319,131 @@ force follows the load up to the first-mode oscillation a ramp excites, P / (ome
 
 
 # ---------------------------------------------------------------------------------------------------
+# Moving skews: /SKEW/MOV on a spinning rigid cube, used by every kind of condition and load (kg, m, s)
+
+SKM = dict(H=1.0, MC=1.0, W=2 * math.pi, M=2.0, F=1.0, V0=1.0, V=1.0, G=2.0, R=3.0, T_STOP=1.0, DT=1e-4,
+           TH_DT=0.01)
+
+
+def skew_mov_case():
+    p = SKM
+    h, w = p["H"], p["W"]
+    corner = lambda i, j, k: 1 + i + 2 * j + 4 * k  # noqa: E731
+    nodes = [(corner(i, j, k), (i - 0.5) * h, (j - 0.5) * h, (k - 0.5) * h)
+             for k in range(2) for j in range(2) for i in range(2)]
+    nodes.sort()
+    nodes.append((9, 0.0, 0.0, 0.0))
+    r = p["R"]
+    points = {20: (r, 0.0, 0.0), 21: (0.0, r, 0.0), 22: (0.0, -r, 0.0), 23: (-r, 0.0, 0.0), 24: (0.0, 0.0, r)}
+    nodes += [(n, *xyz) for n, xyz in points.items()]
+    run = "SKEW_MOV"
+    D = header(run, "Moving skews on a spinning rigid cube used by loads and conditions and outputs", ("kg", "m", "s"),
+               ["Check of /SKEW/MOV (decks/verification/skew_mov/README.md). Units kg, m, s.",
+                "A rigid cube of eight %g kg corner masses (side %g m) spins about Z at %.4f rad/s; three /SKEW/MOV"
+                % (p["MC"], h, w), "ride on its corners and turn with it. Five point masses of %g kg use them."
+                % p["M"], "No element: the engine deck sets the step with /DTIX."])
+    D += node_block(nodes, "Cube corners 1..8 about the centre, main node 9, point masses 20..24")
+    D.append(RULER)
+    D += grnod_node(1, "Cube corners", list(range(1, 9)))
+    D += grnod_node(2, "Main node", [9])
+    for n, what in ((20, "at rest"), (21, "pulled by /CLOAD"), (22, "held by /BCS"), (23, "driven by /IMPVEL"),
+                    (24, "under /GRAV")):
+        D += grnod_node(n, "Point mass %d %s" % (n, what), [n])
+    D += ["/ADMAS/0/1", "Corner masses", names(("MASS", 20), ("grnod_ID", 10)), line(R(p["MC"]), I(1))]
+    for n in range(20, 25):
+        D += ["/ADMAS/0/%d" % n, "Point mass %d" % n, names(("MASS", 20), ("grnod_ID", 10)), line(R(p["M"]), I(n))]
+    D += rbody(1, "Cube", 9, 1)
+    D += ["/INIVEL/ROT/1", "Spin about Z",
+          names(("Vx", 20), ("Vy", 20), ("Vz", 20), ("grnod_ID", 10), ("skew_ID", 10)),
+          line(R(0.0), R(0.0), R(w, sig=15), I(2), I(0)),
+          names(("Tstart", 20), ("sensor_ID", 10)), line(R(0.0), I(0))]
+    D.append(RULER)
+    # At t = 0 corners 1, 2, 3, 5 sit at (-h/2)(1, 1, 1) + h (0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1).
+    for sid, (n1, n2, n3), d, title in ((1, (1, 2, 3), "", "Dir blank (X): x' = N1N2 = X at t = 0"),
+                                        (2, (1, 2, 5), "Y", "Dir Y: y' = N1N2 = X and x' = -Y at t = 0"),
+                                        (3, (1, 5, 2), "Z", "Dir Z: z' = N1N2 = Z and x' = X at t = 0")):
+        D += ["/SKEW/MOV/%d" % sid, title, names(("N1", 10), ("N2", 10), ("N3", 10), ("Dir", 10)),
+              line(I(n1), I(n2), I(n3), S(d, 10))]
+    D.append(RULER)
+    D += cload(1, "Point 21 pulled along x' of skew 1", "X", 21, p["F"], skew=1)
+    D += ["/INIVEL/TRA/2", "Point 22 launched along y' of skew 2 (= X at t = 0)",
+          names(("Vx", 20), ("Vy", 20), ("Vz", 20), ("grnod_ID", 10), ("skew_ID", 10)),
+          line(R(0.0), R(p["V0"]), R(0.0), I(22), I(2)),
+          names(("Tstart", 20), ("sensor_ID", 10)), line(R(0.0), I(0))]
+    D += ["/BCS/1", "Point 22 held along y' and z' of skew 1",
+          names(("Tra rot", 10), ("skew_ID", 10), ("grnod_ID", 10)), line(bcs_code("011", "000"), I(1), I(22))]
+    D += impvel(1, "Point 23 driven along x' of skew 3", "X", 23, p["V"], skew=3)
+    D += ["/BCS/2", "Point 23 held along y' and z' of skew 3",
+          names(("Tra rot", 10), ("skew_ID", 10), ("grnod_ID", 10)), line(bcs_code("011", "000"), I(3), I(23))]
+    D += ["/GRAV/1", "Point 24 under gravity along y' of skew 2",
+          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10), ("", 10),
+                ("Ascale_x", 20), ("Fscale_y", 20)),
+          line(I(0), S("Y", 10), I(2), I(0), I(24), blank(10), R(0.0), R(p["G"]))]
+    D += ["/FUNCT/1", "Constant 1", names(("X", 20), ("Y", 20)), line(R(0.0), R(1.0)), line(R(10.0), R(1.0))]
+    D += ["/ACCEL/1", "Point 21 in skew 1 without filter", names(("node_ID", 10), ("skew_ID", 10), ("", 10), ("Fcut", 20)),
+          line(I(21), I(1), blank(10), R(0.0))]
+    D.append(RULER)
+
+    def th_node(tid, title, variables, rows):
+        L = ["/TH/NODE/%d" % tid, title, names(*[("var_ID%d" % (k + 1), 10) for k in range(len(variables))]),
+             "".join(v.ljust(10) for v in variables).rstrip(), names(("node_ID", 10), ("skew_ID", 10))]
+        return L + [line(I(n), I(sk)) for n, sk in rows]
+
+    D += th_node(1, "Point 20 at rest in skews 1 2 3 and the global axes", ["XYZ"],
+                 [(20, 1), (20, 2), (20, 3), (20, 0)])
+    D += th_node(2, "Loaded points in the global axes", ["DEF", "XYZ"], [(21, 0), (22, 0), (23, 0), (24, 0)])
+    D += th_node(3, "Point 21 and corner 2 in skew 1", ["XYZ", "V", "A"], [(21, 1), (2, 1)])
+    D += th_group("/TH/ACCEL", 4, "Accelerometer on point 21", ["DEF", "W"], [1])
+    D.append(RULER)
+    D.append("/END")
+    E = engine_deck(run, p["T_STOP"], p["T_STOP"] / 4, 1000,
+                    ["One turn of the cube, at a constant step of %g s (/DTIX: the model has no element)." % p["DT"]])
+    k = E.index("/ANIM/DT")
+    E[k:k] = ["/TFILE", names(("dt_his", 20)), line(R(p["TH_DT"])), "/DTIX", names(("DT_ini", 20), ("DT_max", 20)),
+              line(R(p["DT"]), R(p["DT"]))]
+    m = p["M"]
+    readme = f"""# skew_mov: moving skews on a spinning rigid cube
+
+Generated by `scripts/make_verification_decks.py` (edit the script and regenerate); units **kg, m, s**.
+`tests/scripts/check_skew_mov.py` runs the deck and reads `SKEW_MOV_th.h5` with h5py.
+
+A cube of eight {p['MC']:g} kg corner masses (`/ADMAS/0`, corners 1..8 at (+-{h / 2:g}, +-{h / 2:g}, +-{h / 2:g}) m) is
+`/RBODY/1` about its centre (main node 9), spinning about Z at w = 2 pi rad/s (`/INIVEL/ROT` on the main node) for
+one turn, Tstop {p['T_STOP']:g} s, at the constant step dt = {p['DT']:g} s of `/DTIX` (the model has no element);
+`/TFILE` every {p['TH_DT']:g} s. Three `/SKEW/MOV` ride on its corners, with theta = w t:
+
+| skew | N1 N2 N3 | Dir | x' | y' | z' |
+|---|---|---|---|---|---|
+| 1 | 1 2 3 | blank (X) | (cos, sin, 0) | (-sin, cos, 0) | Z |
+| 2 | 1 2 5 | Y | (sin, -cos, 0) | (cos, sin, 0) | Z |
+| 3 | 1 5 2 | Z | (cos, sin, 0) | (-sin, cos, 0) | Z |
+
+The rigid body turns its corners by the exact rotation each cycle, so these hold to round-off. Five point masses
+of m = {m:g} kg (`/ADMAS/0`), away from the cube and not connected to it, use the skews:
+
+- node 20 (at rest at ({r:g}, 0, 0)): `/TH/NODE/1` writes its position on the axes of skews 1, 2, 3 and the
+  global axes: ({r:g} cos, -{r:g} sin, 0), ({r:g} sin, {r:g} cos, 0), as skew 1, and ({r:g}, 0, 0).
+- node 21 (`/CLOAD` F = {p['F']:g} N along x' of skew 1, a force turning at w): from rest at (0, {r:g}, 0),
+  v = F/(m w) (sin wt, 1 - cos wt, 0), x = x0 + F/(m w^2) (1 - cos wt, wt - sin wt, 0). On the axes of skew 1
+  (`/TH/NODE/3`): A = (F/m, 0, 0), V = F/(m w) (sin wt, cos wt - 1, 0); `/ACCEL/1` in skew 1 reads AX = F/m,
+  AY = AZ = 0, and WX = F t / m.
+- node 22 (`/INIVEL/TRA` V0 = {p['V0']:g} m/s along y' of skew 2, that is X at t = 0; `/BCS` holding y' and z' of
+  skew 1): the velocity may only lie along the turning x' (a skate): the constraint force is normal to the
+  velocity, the speed stays V0 and the point runs on the circle x = x0 + (V0/w) (sin wt, 1 - cos wt, 0). The
+  explicit projection loses cos(w dt) of the speed each cycle: V0 exp(-w^2 dt t / 2), 0.2 % after the turn.
+- node 23 (`/IMPVEL` V = {p['V']:g} m/s along x' of skew 3, `/BCS` holding y' and z' of skew 3): v = V x', the
+  circle x = x0 + (V/w) (sin wt, 1 - cos wt, 0) at constant speed.
+- node 24 (`/GRAV` g = {p['G']:g} m/s2 along y' of skew 2 = (cos, sin, 0)): v = (g/w) (sin wt, 1 - cos wt, 0).
+- corner 2 on the axes of skew 1 (`/TH/NODE/3`): position (h/2, -h/2, -h/2) and velocity (w h/2, w h/2, 0), the
+  body's own rotation seen from the body.
+
+After one turn the points 21, 22, 23 and 24 are back on their starting line (1 - cos wt = 0) having moved
+{g(p['F'] / (m * w))} m (21: F/(m w^2) 2 pi) along y.
+"""
+    return run, D, E, readme
+
+
+# ---------------------------------------------------------------------------------------------------
 
 
 def write_case(out, case, runs, readme):
@@ -1342,7 +1477,8 @@ def write_cases(argv, doc, cases, make):
 
 def main(argv):
     makers = {"bar_rwall": bar_rwall, "cantilever_strip": cantilever_strip, "taylor_bar": taylor_bar,
-              "jc_single_brick": jc_single_brick, "free_fall": free_fall, "two_bars": two_bars, "sections": sect_bar}
+              "jc_single_brick": jc_single_brick, "free_fall": free_fall, "two_bars": two_bars, "sections": sect_bar,
+              "skew_mov": skew_mov_case}
 
     def make(case):
         if case == "th_outputs":

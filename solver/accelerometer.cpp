@@ -8,17 +8,14 @@
 
 namespace radx::solver {
 
-Accelerometers::Accelerometers(const model::Model& m) {
+Accelerometers::Accelerometers(const model::Model& m, const SkewFrames& skews) : skews_(&skews) {
   for (const auto& a : m.accelerometers) {
     if (a.node < 0 || static_cast<std::size_t>(a.node) >= m.nodes.id.size())
       throw std::runtime_error("accelerometer " + std::to_string(a.id) + ": node index " +
                                std::to_string(a.node) + " is outside the model (a corrupt model file)");
     Sensor s;
     s.node = static_cast<std::size_t>(a.node);
-    for (int k = 0; k < 3; ++k) {
-      const auto e = m.skew_axis(a.skew, k);
-      for (std::size_t d = 0; d < 3; ++d) s.axes[3 * static_cast<std::size_t>(k) + d] = e[d];
-    }
+    s.skew = skews.index(a.skew);
     s.fcut = a.fcut;
     sensors_.push_back(s);
   }
@@ -48,11 +45,6 @@ struct Biquad {
   }
 };
 
-std::array<double, 3> on_axes(const std::array<double, 9>& r, const std::array<double, 3>& v) {
-  return {r[0] * v[0] + r[1] * v[1] + r[2] * v[2], r[3] * v[0] + r[4] * v[1] + r[5] * v[2],
-          r[6] * v[0] + r[7] * v[1] + r[8] * v[2]};
-}
-
 }  // namespace
 
 void Accelerometers::update(const NodeState& st, double dt12, double dt_filter) {
@@ -60,7 +52,7 @@ void Accelerometers::update(const NodeState& st, double dt12, double dt_filter) 
     auto& s = sensors_[k];
     auto& out = readings_[k];
     const std::array<double, 3> a = {st.ax[s.node], st.ay[s.node], st.az[s.node]};
-    const auto as = on_axes(s.axes, a);
+    const auto as = skews_->on_axes(s.skew, a);
     for (std::size_t d = 0; d < 3; ++d) out.velocity[d] += as[d] * dt12;
     if (!(s.fcut > 0) || !(dt_filter > 0)) {
       out.acceleration = as;
@@ -76,7 +68,7 @@ void Accelerometers::update(const NodeState& st, double dt12, double dt_filter) 
       const double y = first.step(a[d], s.x[d], s.y[d]);
       filtered[d] = second.step(y, y_as_input, s.z[d]);
     }
-    out.acceleration = on_axes(s.axes, filtered);
+    out.acceleration = skews_->on_axes(s.skew, filtered);
   }
 }
 

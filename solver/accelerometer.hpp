@@ -11,7 +11,9 @@
 //       a1 = 2 (1 - d^2) g,   a2 = -(1 - 2 sin(theta) d + d^2) g,
 //       y_n = b0 x_n + b1 x_{n-1} + b2 x_{n-2} + a1 y_{n-1} + a2 y_{n-2}
 //   (unit gain at zero frequency: a constant acceleration is read exactly once the start transient is gone).
-// Its state starts at zero, as OpenRadioss's (accel1.F).
+// Its state starts at zero, as OpenRadioss's (accel1.F). R is the skew's frame of the cycle (SkewFrames: a
+// /SKEW/MOV turns with its nodes); the filter runs on the global components, so turning axes do not disturb
+// it.
 #pragma once
 
 #include <array>
@@ -19,12 +21,14 @@
 
 #include "solver/model/model.hpp"
 #include "solver/node_state.hpp"
+#include "solver/skew_frames.hpp"
 
 namespace radx::solver {
 
 class Accelerometers {
  public:
-  explicit Accelerometers(const model::Model& m);
+  // `skews` must outlive this object.
+  Accelerometers(const model::Model& m, const SkewFrames& skews);
   // dt12: the step centred on this cycle (W); dt_filter: the step the filter samples at, dt2, or dt1 on
   // the last cycle where dt2 = 0 (the filter must not fall back to the raw signal there).
   void update(const NodeState& s, double dt12, double dt_filter);
@@ -38,11 +42,12 @@ class Accelerometers {
  private:
   struct Sensor {
     std::size_t node = 0;
-    std::array<double, 9> axes{};
+    std::int32_t skew = model::kNone;  // dense skew index
     double fcut = 0;
     // Per global component: input x, first-stage output y, second-stage output z, each at n-1 and n-2.
     std::array<std::array<double, 2>, 3> x{}, y{}, z{};
   };
+  const SkewFrames* skews_;
   std::vector<Sensor> sensors_;
   std::vector<Reading> readings_;
 };

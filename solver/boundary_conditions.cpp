@@ -22,7 +22,7 @@ const std::vector<std::int32_t>& group_of(const model::Model& m, std::int32_t in
 // ---------------------------------------------------------------------------------------------------------
 // /BCS
 
-BoundaryConditions::BoundaryConditions(const model::Model& m) {
+BoundaryConditions::BoundaryConditions(const model::Model& m, const SkewFrames& skews) : skews_(&skews) {
   std::vector<std::uint8_t> bits(m.nodes.size(), 0);
   for (const auto& c : m.bcs) {
     std::uint8_t b = 0;
@@ -32,10 +32,7 @@ BoundaryConditions::BoundaryConditions(const model::Model& m) {
     if (c.skew != 0) {
       Skewed sk;
       sk.mask = b;
-      for (int k = 0; k < 3; ++k) {
-        const auto e = m.skew_axis(c.skew, k);
-        for (std::size_t d = 0; d < 3; ++d) sk.axes[3 * static_cast<std::size_t>(k) + d] = e[d];
-      }
+      sk.skew = skews.index(c.skew);
       for (const auto n : group_of(m, c.group, "/BCS/" + std::to_string(c.id))) {
         sk.node = n;
         skewed_.push_back(sk);
@@ -71,9 +68,10 @@ void BoundaryConditions::apply(NodeState& s) const {
     if (b & 16u) s.wy[n] = s.awy[n] = 0;
     if (b & 32u) s.wz[n] = s.awz[n] = 0;
   }
-  // Skewed: remove the components along the fixed axes, v -= (v.e) e and a -= (a.e) e.
+  // Skewed: remove the components along the fixed axes of the cycle, v -= (v.e) e and a -= (a.e) e.
   for (const auto& k : skewed_) {
     const auto n = static_cast<std::size_t>(k.node);
+    const auto& axes = skews_->axes(k.skew);
     auto project_out = [&](double& x, double& y, double& z, const double* e) {
       const double c = x * e[0] + y * e[1] + z * e[2];
       x -= c * e[0];
@@ -81,7 +79,7 @@ void BoundaryConditions::apply(NodeState& s) const {
       z -= c * e[2];
     };
     for (int axis = 0; axis < 3; ++axis) {
-      const double* e = &k.axes[3 * static_cast<std::size_t>(axis)];
+      const double* e = &axes[3 * static_cast<std::size_t>(axis)];
       if (k.mask & (1u << axis)) {
         project_out(s.vx[n], s.vy[n], s.vz[n], e);
         project_out(s.ax[n], s.ay[n], s.az[n], e);
@@ -97,7 +95,7 @@ void BoundaryConditions::apply(NodeState& s) const {
 // ---------------------------------------------------------------------------------------------------------
 // /IMPVEL
 
-ImposedVelocities::ImposedVelocities(const model::Model& m) {
+ImposedVelocities::ImposedVelocities(const model::Model& m, const SkewFrames& skews) : skews_(&skews) {
   std::size_t total = 0;
   for (const auto& iv : m.imposed_velocities) {
     const std::string what = (iv.displacement ? "/IMPDISP/" : "/IMPVEL/") + std::to_string(iv.id);
@@ -110,8 +108,7 @@ ImposedVelocities::ImposedVelocities(const model::Model& m) {
     e.f = m.functions[static_cast<std::size_t>(iv.function)];
     e.dir = iv.dir;
     e.displacement = iv.displacement;
-    e.skewed = iv.skew != 0;
-    if (e.skewed) e.axis = m.skew_axis(iv.skew, iv.dir % 3);
+    e.skew = skews.index(iv.skew);
     e.ascale = iv.ascale_x;
     e.fscale = iv.fscale_y;
     e.t_start = iv.t_start;
@@ -157,6 +154,8 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) 
                                     : d == 1 ? s.ay
                                              : s.az);
     const std::vector<double>& mass = rot ? s.inertia : s.mass;
+    const bool skewed = e.skew != model::kNone;
+    const auto u = skews_->axis(e.skew, d);  // the skew's axis of this cycle
     for (std::size_t k = 0; k < e.nodes.size(); ++k) {
       double& pend = pending_[e.first + k];
       work += pend;
@@ -165,12 +164,11 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) 
       const auto n = static_cast<std::size_t>(e.nodes[k]);
       // Components along the imposed direction: a global axis, or a skew axis u (projections).
       double v_along, a_free, disp;
-      if (!e.skewed) {
+      if (!skewed) {
         v_along = v[n];
         a_free = a[n];
         disp = x[n] - x0[n];
       } else {
-        const auto& u = e.axis;
         v_along = rot ? s.wx[n] * u[0] + s.wy[n] * u[1] + s.wz[n] * u[2]
                       : s.vx[n] * u[0] + s.vy[n] * u[1] + s.vz[n] * u[2];
         a_free = rot ? s.awx[n] * u[0] + s.awy[n] * u[1] + s.awz[n] * u[2]
@@ -179,11 +177,10 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) 
       }
       const double v_imp = e.displacement ? (f_val - disp) / dt2 : f_val;
       const double a_imp = (v_imp - v_along) / dt12;
-      if (!e.skewed) {
+      if (!skewed) {
         a[n] = a_imp;
       } else {
         const double da = a_imp - a_free;
-        const auto& u = e.axis;
         (rot ? s.awx : s.ax)[n] += da * u[0];
         (rot ? s.awy : s.ay)[n] += da * u[1];
         (rot ? s.awz : s.az)[n] += da * u[2];
@@ -199,17 +196,11 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) 
 // ---------------------------------------------------------------------------------------------------------
 // /INIVEL/TRA
 
-InitialVelocities::InitialVelocities(const model::Model& m) {
+InitialVelocities::InitialVelocities(const model::Model& m, const SkewFrames& skews) : skews_(&skews) {
   for (const auto& iv : m.initial_velocities) {
     Entry e;
     e.v = iv.v;
-    if (iv.skew != 0) {  // components along the skew axes: v = sum_k V_k e_k
-      e.v = {0, 0, 0};
-      for (int k = 0; k < 3; ++k) {
-        const auto u = m.skew_axis(iv.skew, k);
-        for (std::size_t d = 0; d < 3; ++d) e.v[d] += iv.v[static_cast<std::size_t>(k)] * u[d];
-      }
-    }
+    e.skew = skews.index(iv.skew);
     e.t_start = iv.t_start;
     e.rotational = iv.rotational;
     e.nodes =
@@ -230,12 +221,18 @@ double InitialVelocities::apply(NodeState& s, double t) {
     auto& vy = e.rotational ? s.wy : s.vy;
     auto& vz = e.rotational ? s.wz : s.vz;
     const auto& m = e.rotational ? s.inertia : s.mass;
+    // Components along the skew axes of now: v = sum_k V_k e_k (the global axes for no skew).
+    std::array<double, 3> v{};
+    for (int k = 0; k < 3; ++k) {
+      const auto u = skews_->axis(e.skew, k);
+      for (std::size_t d = 0; d < 3; ++d) v[d] += e.v[static_cast<std::size_t>(k)] * u[d];
+    }
     for (const auto n32 : e.nodes) {
       const auto n = static_cast<std::size_t>(n32);
       const double old2 = vx[n] * vx[n] + vy[n] * vy[n] + vz[n] * vz[n];
-      vx[n] = e.v[0];
-      vy[n] = e.v[1];
-      vz[n] = e.v[2];
+      vx[n] = v[0];
+      vy[n] = v[1];
+      vz[n] = v[2];
       const double new2 = vx[n] * vx[n] + vy[n] * vy[n] + vz[n] * vz[n];
       dke += 0.5 * m[n] * (new2 - old2);
     }

@@ -23,8 +23,11 @@
 //             main node's), as /INIVEL/TRA otherwise.
 //   /INIVEL/TRA  v = (Vx, Vy, Vz) on the group's nodes, at t = 0 (Tstart = 0) or at the first cycle
 //             with t_n >= Tstart.
-// Skews, sensors and frames are 0 in a valid model (the starter rejects them). No allocation in the
-// per-cycle calls.
+// Skews: every direction named in a skew is read from SkewFrames when the condition acts, so a /SKEW/MOV
+// gives the frame of the cycle's x^n (a /BCS holds the directions of the current axes, an /IMPVEL or
+// /IMPDISP acts along the current axis, an /INIVEL takes the axes of the time it applies: t = 0 unless
+// Tstart says otherwise). Sensors and frames are 0 in a valid model (the starter rejects them). No
+// allocation in the per-cycle calls.
 #pragma once
 
 #include <array>
@@ -33,12 +36,14 @@
 
 #include "solver/model/model.hpp"
 #include "solver/node_state.hpp"
+#include "solver/skew_frames.hpp"
 
 namespace radx::solver {
 
 class BoundaryConditions {
  public:
-  explicit BoundaryConditions(const model::Model& m);
+  // `skews` must outlive this object (as for the classes below).
+  BoundaryConditions(const model::Model& m, const SkewFrames& skews);
   // Once, before cycle 0: state.fixed |= the /BCS bits.
   void set_fixed_bits(NodeState& s) const;
   // Zero v and a of the fixed components (called twice per cycle, around the imposed velocities and
@@ -55,15 +60,16 @@ class BoundaryConditions {
   // /BCS with a skew: the components of v and a along the fixed skew axes are zeroed.
   struct Skewed {
     std::int32_t node = 0;
-    std::uint8_t mask = 0;         // bit k: axis k (0..2 translation, 3..5 rotation) fixed
-    std::array<double, 9> axes{};  // x', y', z' (rows)
+    std::uint8_t mask = 0;  // bit k: axis k (0..2 translation, 3..5 rotation) fixed
+    std::int32_t skew = 0;  // dense skew index
   };
+  const SkewFrames* skews_;
   std::vector<Skewed> skewed_;
 };
 
 class ImposedVelocities {
  public:
-  explicit ImposedVelocities(const model::Model& m);
+  ImposedVelocities(const model::Model& m, const SkewFrames& skews);
   // Cycle step 5, after the first BoundaryConditions::apply. t = t_n. Returns the work booked now
   // (this cycle's dt1 part plus the previous cycle's dt2 part). Precondition: dt1 + dt2 > 0.
   double apply(NodeState& s, double t, double dt1, double dt2);
@@ -79,21 +85,21 @@ class ImposedVelocities {
  private:
   struct Entry {
     model::Function f;
-    int dir = 0;                // 0..2 translation, 3..5 rotation
-    bool displacement = false;  // /IMPDISP: f gives the displacement from the initial position
-    bool skewed = false;        // the direction is axis dir % 3 of a skew: `axis` (global components)
-    std::array<double, 3> axis{};
+    int dir = 0;                       // 0..2 translation, 3..5 rotation
+    bool displacement = false;         // /IMPDISP: f gives the displacement from the initial position
+    std::int32_t skew = model::kNone;  // dense index: the direction is axis dir % 3 of this skew
     double ascale = 1, fscale = 1, t_start = 0, t_stop = model::kNever;
     std::vector<std::int32_t> nodes;
     std::size_t first = 0;  // offset of its nodes in pending_
   };
+  const SkewFrames* skews_;
   std::vector<Entry> entries_;
   std::vector<double> pending_;  // dt2 DW per (entry, node)
 };
 
 class InitialVelocities {
  public:
-  explicit InitialVelocities(const model::Model& m);
+  InitialVelocities(const model::Model& m, const SkewFrames& skews);
   // Sets the velocity of every /INIVEL/TRA not applied yet whose Tstart <= t: call once with t = 0
   // before cycle 0, then at the start of each cycle with t = t_n (cheap when nothing is pending).
   // Returns the kinetic-energy change 1/2 m (|v_new|^2 - |v_old|^2) it caused: initial energy at t = 0,
@@ -103,12 +109,14 @@ class InitialVelocities {
 
  private:
   struct Entry {
-    std::array<double, 3> v{};
+    std::array<double, 3> v{};         // components on the axes of `skew`
+    std::int32_t skew = model::kNone;  // dense skew index (kNone: global axes)
     double t_start = 0;
     bool rotational = false;  // /INIVEL/ROT: sets the angular velocity
     bool applied = false;
     std::vector<std::int32_t> nodes;
   };
+  const SkewFrames* skews_;
   std::vector<Entry> entries_;
   std::size_t remaining_ = 0;
 };

@@ -27,14 +27,14 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunControls& controls,
                                EngineOptions options)
-    : model_(model), controls_(controls), options_(options) {
+    : model_(model), controls_(controls), options_(options), skews_(model) {
   materials_.reserve(model_.materials.size());
   for (const auto& m : model_.materials) materials_.push_back(make_material_params(m));
   build_nodes();
   build_groups();
   build_assembly();
-  kinematics_ = std::make_unique<KinematicsDriver>(model_, controls_, nodes_);
-  accelerometers_ = std::make_unique<Accelerometers>(model_);
+  kinematics_ = std::make_unique<KinematicsDriver>(model_, controls_, nodes_, skews_);
+  accelerometers_ = std::make_unique<Accelerometers>(model_, skews_);
   if (!model_.interfaces.empty()) {
     contact::ContactControls cc;
     const auto& inter = controls_.inter;
@@ -407,6 +407,7 @@ CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
 }
 
 // The time loop. Each cycle is the list of its stages, in the order of explicit_engine.hpp:
+//   0. skews_.update (moving skews of x^n)
 //   1. external_loads        2. contact_forces (penalty, votes, LAGDT switches)
 //   3-4. element_forces (groups, then the deterministic assembly with the contact forces)
 //   9. choose_time_step (early: the step of this cycle comes from the votes just computed)
@@ -427,6 +428,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
 
   LoopState L;
   while (true) {
+    skews_.update(nodes_);  // 0.
     external_loads(L);
     element_forces(L);
     contact_forces(L);

@@ -1,6 +1,7 @@
 // The explicit engine: central differences with lumped mass over the model's element groups.
 //
 // One cycle (architecture.md section 4; elements.md section 0), cycle n at time t_n:
+//   0. the moving skews (/SKEW/MOV) rebuilt from x^n (SkewFrames): every later use in the cycle sees them;
 //   1. external loads at t_n (gravity, concentrated loads, pressures);
 //   2. contact (TYPE7 penalty, contact/type7_engine.hpp): forces at t_n into the contact buffer, time-step
 //   vote;
@@ -28,6 +29,7 @@
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
 #include "solver/node_state.hpp"
+#include "solver/skew_frames.hpp"
 
 namespace radx::solver {
 
@@ -109,6 +111,8 @@ class ExplicitEngine {
   [[nodiscard]] const model::Model& model() const { return model_; }
   [[nodiscard]] const std::vector<MaterialParams>& materials() const { return materials_; }
   [[nodiscard]] const KinematicsDriver& kinematics() const { return *kinematics_; }
+  // The skews' axes of the current cycle (a /SKEW/MOV follows its nodes).
+  [[nodiscard]] const SkewFrames& skews() const { return skews_; }
   // /ACCEL readings of the last cycle.
   [[nodiscard]] const Accelerometers& accelerometers() const { return *accelerometers_; }
   // TYPE7 contact (nullptr when the model has no interface).
@@ -146,6 +150,7 @@ class ExplicitEngine {
   };
   std::vector<std::size_t> slot_offsets_;
   std::vector<Slot> slots_;
+  SkewFrames skews_;                                // read by the loads, conditions and outputs below
   std::unique_ptr<KinematicsDriver> kinematics_;    // loads and kinematic conditions
   std::unique_ptr<Accelerometers> accelerometers_;  // /ACCEL, read every cycle after the conditions
   std::unique_ptr<contact::Type7Contact> contact_;

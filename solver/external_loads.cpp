@@ -33,7 +33,9 @@ double ExternalLoads::Curve::at(double t) const {
   return constant ? fscale : scaled_function_value(f, t, ascale, fscale);
 }
 
-ExternalLoads::ExternalLoads(const model::Model& m, std::span<const std::uint8_t> rigid_secondary) {
+ExternalLoads::ExternalLoads(const model::Model& m, const SkewFrames& skews,
+                             std::span<const std::uint8_t> rigid_secondary)
+    : skews_(&skews) {
   const std::size_t nn = m.nodes.size();
   if (!rigid_secondary.empty() && rigid_secondary.size() != nn)
     throw std::runtime_error("ExternalLoads: the rigid-secondary flags must have one entry per node");
@@ -50,8 +52,7 @@ ExternalLoads::ExternalLoads(const model::Model& m, std::span<const std::uint8_t
     out.g.fscale = g.fscale_y;
     out.dir = g.dir;
     if (g.dir < 0 || g.dir > 2) throw std::runtime_error(what + ": DIR must be X, Y or Z");
-    out.skewed = g.skew != 0;
-    if (out.skewed) out.axis = m.skew_axis(g.skew, g.dir);
+    out.skew = skews.index(g.skew);
     if (g.group == model::kNone) {
       for (std::size_t n = 0; n < nn; ++n)
         if (!skipped(static_cast<std::int32_t>(n))) out.nodes.push_back(static_cast<std::int32_t>(n));
@@ -74,8 +75,7 @@ ExternalLoads::ExternalLoads(const model::Model& m, std::span<const std::uint8_t
     out.f.ascale = c.ascale_x;
     out.f.fscale = c.fscale_y;
     out.dir = c.dir;
-    out.skewed = c.skew != 0;
-    if (out.skewed) out.axis = m.skew_axis(c.skew, c.dir % 3);
+    out.skew = skews.index(c.skew);
     out.nodes = group_of(m, c.group, what);
     cloads_.push_back(std::move(out));
   }
@@ -134,8 +134,8 @@ double ExternalLoads::apply(NodeState& s, double t, double dt1) {
   for (const auto& g : gravity_) {
     const double g_new = g.g.at(t);
     const double g_old = g.g.at(t - dt1);
-    if (g.skewed) {  // m g u on each node, work 1/2 (g_old + g_new) m (v.u) dt1
-      const auto& u = g.axis;
+    if (g.skew != model::kNone) {  // m g u on each node, work 1/2 (g_old + g_new) m (v.u) dt1
+      const auto u = skews_->axis(g.skew, g.dir);
       double mv = 0;
       for (const auto n32 : g.nodes) {
         const auto n = static_cast<std::size_t>(n32);
@@ -170,8 +170,9 @@ double ExternalLoads::apply(NodeState& s, double t, double dt1) {
     const double f_new = c.f.at(t);
     const double f_old = c.f.at(t - dt1);
     const bool moment = c.dir >= 3;
-    if (c.skewed) {  // F u on each node (a moment about u for XX YY ZZ), power 1/2 (F_old + F_new) (v.u)
-      const auto& u = c.axis;
+    if (c.skew != model::kNone) {  // F u on each node (a moment about u for XX YY ZZ), power
+                                   // 1/2 (F_old + F_new) (v.u)
+      const auto u = skews_->axis(c.skew, c.dir % 3);
       double vsum = 0;
       for (const auto n32 : c.nodes) {
         const auto n = static_cast<std::size_t>(n32);

@@ -15,8 +15,9 @@
 //            A positive pressure pushes along n. Work (as force.F90): W += dt1 sum_nodes F_node . v.
 //            Idel = 1: the load of a segment stops when its owner element is deleted (remove_element).
 // Not supported (construction throws std::runtime_error naming the load): Itypfun 2 or 3 (function of
-// displacement or velocity), /PLOAD Ipinch != 0. Skews and sensors are 0 in a valid model (the starter
-// rejects them).
+// displacement or velocity), /PLOAD Ipinch != 0. Sensors are 0 in a valid model (the starter rejects
+// them). A direction in a skew is read from SkewFrames at every apply(): a /SKEW/MOV turns the load with
+// the frame of x^n.
 //
 // Forces are ADDED to fx_ext.. and to fx.. (moments to mx..): the engine zeroes fx_ext.. and mx.. before
 // apply() and builds fx = fx_ext + element forces (or zeroes fx too and adds the element forces).
@@ -30,14 +31,16 @@
 
 #include "solver/model/model.hpp"
 #include "solver/node_state.hpp"
+#include "solver/skew_frames.hpp"
 
 namespace radx::solver {
 
 class ExternalLoads {
  public:
   // `rigid_secondary`: one flag per node, 1 for the secondary nodes of an active rigid body
-  // (RigidBodies::secondary_flags()); empty when there is no rigid body.
-  explicit ExternalLoads(const model::Model& m, std::span<const std::uint8_t> rigid_secondary = {});
+  // (RigidBodies::secondary_flags()); empty when there is no rigid body. `skews` must outlive this object.
+  ExternalLoads(const model::Model& m, const SkewFrames& skews,
+                std::span<const std::uint8_t> rigid_secondary = {});
 
   // Cycle step 1, time t = t_n, dt1 = t_n - t_{n-1} (0 at cycle 0). Adds the loads to the state and
   // returns the external work booked now (gravity and pressure). Remembers the /CLOAD power for
@@ -63,15 +66,13 @@ class ExternalLoads {
   struct Gravity {
     Curve g;
     int dir = 0;
-    bool skewed = false;  // along axis `dir` of a skew: `axis` (global components)
-    std::array<double, 3> axis{};
+    std::int32_t skew = model::kNone;  // dense index: along axis `dir` of this skew
     std::vector<std::int32_t> nodes;
   };
   struct Concentrated {
     Curve f;
-    int dir = 0;          // 0..2 force, 3..5 moment
-    bool skewed = false;  // along axis dir % 3 of a skew: `axis` (global components)
-    std::array<double, 3> axis{};
+    int dir = 0;                       // 0..2 force, 3..5 moment
+    std::int32_t skew = model::kNone;  // dense index: along axis dir % 3 of this skew
     std::vector<std::int32_t> nodes;
   };
   struct Pressure {
@@ -85,6 +86,7 @@ class ExternalLoads {
     std::uint32_t load, segment;
   };
 
+  const SkewFrames* skews_;
   std::vector<Gravity> gravity_;
   std::vector<Concentrated> cloads_;
   std::vector<Pressure> ploads_;

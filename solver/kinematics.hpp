@@ -5,16 +5,18 @@
 // dt12 = (dt1 + dt2)/2. Every call returning a double returns external work to ADD to W_ext.
 //
 // SET-UP, once, after the engine has filled NodeState (x = x0 = model coordinates, mass = model node_mass,
-// inertia = element inertias, v = w = 0):
-//   BoundaryConditions bcs(model);          bcs.set_fixed_bits(s);
-//   InitialVelocities  inivel(model);       inivel.apply(s, 0.0);  // returns the initial KE it gave (not
-//   work) RigidWalls         walls(model);        walls.initialize(s);   // moving walls: + Mass, v = V0
+// inertia = element inertias, v = w = 0), with the skew frames `skews` (SkewFrames, the axes of t = 0):
+//   BoundaryConditions bcs(model, skews);   bcs.set_fixed_bits(s);
+//   InitialVelocities  inivel(model, skews); inivel.apply(s, 0.0); // returns the initial KE it gave (not
+//                                                                  // work)
+//   RigidWalls         walls(model);        walls.initialize(s);   // moving walls: + Mass, v = V0
 //   RigidBodies        bodies(model);       bodies.initialize(s);  // ICoG, M, inertia, principal frame
-//   ExternalLoads      loads(model, bodies.secondary_flags());
-//   ImposedVelocities  impvel(model);
+//   ExternalLoads      loads(model, skews, bodies.secondary_flags());
+//   ImposedVelocities  impvel(model, skews);
 //   bcs.apply(s);                                                  // fixed dofs start at rest
 //
-// CYCLE n (t, dt1; dt2 once the element step is known):
+// CYCLE n (t, dt1; dt2 once the element step is known), after the engine's skews.update(s) (the moving
+// skews of x^n, read by every condition and load below):
 //   0. if (inivel.pending()) W += inivel.apply(s, t);              // /INIVEL with Tstart > 0
 //   1. zero fx_ext.. and mx.. (and fx.. unless the assembly overwrites fx = fx_ext + f_elements);
 //      W += loads.apply(s, t, dt1);                                // gravity m g, /CLOAD, /PLOAD at t_n

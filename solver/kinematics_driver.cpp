@@ -13,12 +13,13 @@ struct KinematicsDriver::Parts {
   ImposedVelocities impvel;
   std::unique_ptr<ExternalLoads> loads;
   double external_work = 0;
-  Parts(const model::Model& m, const model::RunControls& c)
-      : bcs(m), inivel(m), walls(m), bodies(m, c.rbody_off), impvel(m) {}
+  Parts(const model::Model& m, const model::RunControls& c, const SkewFrames& skews)
+      : bcs(m, skews), inivel(m, skews), walls(m), bodies(m, c.rbody_off), impvel(m, skews) {}
 };
 
-KinematicsDriver::KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes)
-    : model_(m), controls_(c), nodes_(nodes), parts_(std::make_unique<Parts>(m, c)) {}
+KinematicsDriver::KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes,
+                                   const SkewFrames& skews)
+    : model_(m), controls_(c), nodes_(nodes), skews_(skews), parts_(std::make_unique<Parts>(m, c, skews)) {}
 
 KinematicsDriver::~KinematicsDriver() = default;
 
@@ -28,9 +29,10 @@ void KinematicsDriver::initial_conditions() {
   p.inivel.apply(nodes_, 0.0);  // initial kinetic energy, not work
   p.walls.initialize(nodes_);
   p.bodies.initialize(nodes_);
-  p.loads = std::make_unique<ExternalLoads>(
-      model_, p.bodies.size() > 0 ? std::span<const std::uint8_t>(p.bodies.secondary_flags())
-                                  : std::span<const std::uint8_t>());
+  p.loads = std::make_unique<ExternalLoads>(model_, skews_,
+                                            p.bodies.size() > 0
+                                                ? std::span<const std::uint8_t>(p.bodies.secondary_flags())
+                                                : std::span<const std::uint8_t>());
   p.bcs.apply(nodes_);
 }
 

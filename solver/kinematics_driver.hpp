@@ -12,6 +12,7 @@
 #include "solver/model/run_controls.hpp"
 #include "solver/node_state.hpp"
 #include "solver/rigid_wall_plane.hpp"
+#include "solver/skew_frames.hpp"
 
 namespace radx::solver {
 
@@ -19,7 +20,10 @@ class RigidBodies;
 
 class KinematicsDriver {
  public:
-  KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes);
+  // `skews`: the engine's current skew frames (updated by the engine at the start of each cycle); it must
+  // outlive the driver.
+  KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes,
+                   const SkewFrames& skews);
   ~KinematicsDriver();
   KinematicsDriver(const KinematicsDriver&) = delete;
   KinematicsDriver& operator=(const KinematicsDriver&) = delete;
@@ -51,6 +55,7 @@ class KinematicsDriver {
   const model::Model& model_;
   const model::RunControls& controls_;
   NodeState& nodes_;
+  const SkewFrames& skews_;
   std::unique_ptr<Parts> parts_;
 };
 

@@ -150,6 +150,11 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
       sections_.emplace_back(m.sections[static_cast<std::size_t>(o)], e.shell_groups(), e.brick_groups());
     return;
   }
+  if (kind_ == K::Node) {
+    for (std::size_t o = 0; o < objects_.size(); ++o)
+      skews_.push_back(o < g.skews.size() ? e.skews().index(g.skews[o]) : model::kNone);
+    return;
+  }
   if (kind_ == K::Rbody) {
     const auto& formed = e.kinematics().rigid_bodies().bodies();
     for (const auto o : objects_) {
@@ -209,21 +214,26 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
     case K::Node:
       for (std::size_t o = 0; o < objects_.size(); ++o) {
         const auto n = static_cast<std::size_t>(objects_[o]);
-        const double v[3] = {s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]};
-        const double reac[3] = {s.mass[n] * s.ax[n] - s.fx[n], s.mass[n] * s.ay[n] - s.fy[n],
-                                s.mass[n] * s.az[n] - s.fz[n]};
-        const double mreac[3] = {s.inertia[n] * s.awx[n] - s.mx[n], s.inertia[n] * s.awy[n] - s.my[n],
-                                 s.inertia[n] * s.awz[n] - s.mz[n]};
+        // Every vector on the axes of the object's skew of this cycle (the global axes for none); X Y Z are
+        // the position's components on those axes, not measured from the skew's origin (OpenRadioss thnod.F).
+        const auto on = [&, sk = skews_[o]](std::array<double, 3> u) { return e.skews().on_axes(sk, u); };
+        const auto v = on({s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]});
+        const auto reac =
+            on({s.mass[n] * s.ax[n] - s.fx[n], s.mass[n] * s.ay[n] - s.fy[n], s.mass[n] * s.az[n] - s.fz[n]});
+        const auto mreac = on({s.inertia[n] * s.awx[n] - s.mx[n], s.inertia[n] * s.awy[n] - s.my[n],
+                               s.inertia[n] * s.awz[n] - s.mz[n]});
+        const auto x = on({s.x[n], s.y[n], s.z[n]});
+        const auto disp = on({s.x[n] - s.x0[n], s.y[n] - s.y0[n], s.z[n] - s.z0[n]});
+        const auto a = on({s.ax[n], s.ay[n], s.az[n]});
+        const auto vr = on({s.wx[n] + h * s.awx[n], s.wy[n] + h * s.awy[n], s.wz[n] + h * s.awz[n]});
+        const auto aw = on({s.awx[n], s.awy[n], s.awz[n]});
         const char* axes[3] = {"X", "Y", "Z"};
-        const double x[3] = {s.x[n], s.y[n], s.z[n]}, x0[3] = {s.x0[n], s.y0[n], s.z0[n]};
-        const double a[3] = {s.ax[n], s.ay[n], s.az[n]}, w[3] = {s.wx[n], s.wy[n], s.wz[n]};
-        const double aw[3] = {s.awx[n], s.awy[n], s.awz[n]};
-        for (int d = 0; d < 3; ++d) {
+        for (std::size_t d = 0; d < 3; ++d) {
           const std::string ax = axes[d];
-          put(o, "D" + ax, x[d] - x0[d]);
+          put(o, "D" + ax, disp[d]);
           put(o, "V" + ax, v[d]);
           put(o, "A" + ax, a[d]);
-          put(o, "VR" + ax, w[d] + h * aw[d]);
+          put(o, "VR" + ax, vr[d]);
           put(o, "AR" + ax, aw[d]);
           put(o, ax, x[d]);
           put(o, "REAC" + ax, reac[d]);

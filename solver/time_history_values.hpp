@@ -12,7 +12,9 @@
 // initial mass of the part's deleted elements; HEAT is 0 (radx has no thermal analysis).
 // Per node: D = x - x0, V at the full step v^{n-1/2} + dt1/2 a^n, A = a^n, VR, AR the angular velocity
 // and acceleration, DR = 0 (rotations are not integrated as angles), X Y Z current, REAC = m a - f and
-// REACXX.. = I aw - M (what kinematic conditions add).
+// REACXX.. = I aw - M (what kinematic conditions add); for a node listed with a skew, each of these vectors
+// on the skew's axes of the sampled cycle (X Y Z the position's components on them, as OpenRadioss thnod.F:
+// not measured from the skew's origin).
 // Per rigid wall: FN, FT the normal and tangential force of the last cycle.
 // Per interface: FN, FT the sums over the secondary nodes of the normal (with damping) and friction forces
 // of the last cycle; CE_ELAST, CE_FRIC, CE_DAMP the booked contact energies.
@@ -85,6 +87,7 @@ class ThGroupSampler {
   // Rigid bodies: for each object, its index in the bodies formed in this run (-1: switched off).
   std::vector<std::pair<int, int>> slots_;
   std::vector<int> bodies_;
+  std::vector<std::int32_t> skews_;   // nodes: the dense skew index of each object (kNone: global axes)
   std::vector<SectionSum> sections_;  // sections: one per object
 };
 

@@ -56,6 +56,44 @@ inline double brick_volume(const std::array<Vec3, 8>& x) {
   return dot(j1, cross(j2, j3)) / 64.0;
 }
 
+// The frame of a /SKEW/MOV from the positions of its nodes N1 N2 N3 (OpenRadioss starter hm_read_skw.F,
+// engine newskw.F). Axis a = dir (0 x', 1 y', 2 z') runs along N1 -> N2; with b = a + 1 and c = a + 2
+// (mod 3):
+//   e_a = N2 - N1,   e_c = e_a x (N3 - N1),   e_b = e_c x e_a,   each normalised,
+// so N3 lies in the (e_a, e_b) plane, on the positive side of e_b (Dir X: x' = N1N2, z' = x' x N1N3).
+// Positions the starter refuses (N1 = N2, N3 on the line N1 N2) can still arise during a run; they get
+// newskw.F's fallbacks: e_a = 0 becomes the global axis a, and N3 - N1 parallel to e_a is replaced by e_a
+// with its X component set to |e_a| when that component is 0, else its Y component set to |e_a_y| + |e_a|.
+// Returns the rows x', y', z' (global components), as Skew::axes.
+inline std::array<double, 9> node_skew_axes(const Vec3& n1, const Vec3& n2, const Vec3& n3, int dir) {
+  const auto a = static_cast<std::size_t>(dir), b = (a + 1) % 3, c = (a + 2) % 3;
+  std::array<Vec3, 3> e{};
+  e[a] = sub(n2, n1);
+  double la = norm(e[a]);
+  if (la == 0) {
+    e[a] = {0, 0, 0};
+    e[a][a] = 1;
+    la = 1;
+  }
+  Vec3 t = sub(n3, n1);
+  e[c] = cross(e[a], t);
+  if (norm(e[c]) == 0) {
+    t = e[a];
+    if (t[0] == 0)
+      t[0] = la;
+    else
+      t[1] = std::abs(t[1]) + la;
+    e[c] = cross(e[a], t);
+  }
+  e[b] = cross(e[c], e[a]);
+  std::array<double, 9> axes{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double l = norm(e[k]);
+    for (std::size_t d = 0; d < 3; ++d) axes[3 * k + d] = e[k][d] / l;
+  }
+  return axes;
+}
+
 // The six faces of a brick, node positions 0..7, ordered so that the right-hand normal points out of
 // a positively oriented brick (nodes 1-4 bottom counter-clockwise seen from outside below... i.e. the
 // normal of 1-2-3-4 by the right-hand rule points to 5-8 for a positive volume, so the bottom face is

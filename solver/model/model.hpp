@@ -134,13 +134,21 @@ struct Function {
   std::vector<double> x, y;
 };
 
-// /SKEW/FIX: a fixed frame. axes holds the unit vectors x', y', z' (rows, global components): z' is the
-// deck's Z' direction, x' = Y' x Z', y' = z' x x' (Radioss's order), each normalised.
+// A skew: a frame that loads, conditions and outputs may be given in. axes holds the unit vectors x', y',
+// z' (rows, global components).
+// /SKEW/FIX: fixed; z' is the deck's Z' direction, x' = Y' x Z', y' = z' x x' (Radioss's order), each
+// normalised.
+// /SKEW/MOV: carried by the nodes n1 n2 n3 (dense indices), origin n1, axis `dir` (0 x', 1 y', 2 z')
+// along n1 -> n2, n3 in the plane of that axis and the next one (node_skew_axes, geometry.hpp). origin
+// and axes hold the frame at t = 0; the engine rebuilds it from the current positions every cycle.
 struct Skew {
   std::int64_t id = 0;
   std::string title;
   std::array<double, 3> origin{};
   std::array<double, 9> axes{1, 0, 0, 0, 1, 0, 0, 0, 1};
+  std::int32_t n1 = kNone, n2 = kNone, n3 = kNone;  // /SKEW/MOV nodes; kNone for /SKEW/FIX
+  int dir = 0;                                      // /SKEW/MOV Dir: 0 X, 1 Y, 2 Z
+  [[nodiscard]] bool moving() const { return n1 != kNone; }
 };
 
 struct BoundaryCondition {
@@ -290,6 +298,9 @@ struct TimeHistoryGroup {
   ThKind kind = ThKind::Node;
   std::vector<std::string> variables;  // expanded (DEF replaced)
   std::vector<std::int32_t> objects;   // dense indices of the objects of `kind`
+  // /TH/NODE: the skew (user id, 0 global axes) each object's vectors are written in, one per object;
+  // empty for the other kinds.
+  std::vector<std::int64_t> skews;
 };
 
 // /INTER/TYPE7 and /INTER/LAGDT/TYPE7 as one definition (type7-lagdt.md section 3), plus what the
@@ -377,20 +388,13 @@ struct Model {
 
   [[nodiscard]] std::size_t element_count() const { return shells.size() + shells3.size() + bricks.size(); }
 
-  // Unit vector (global components) of axis k (0 x', 1 y', 2 z') of the skew with user id `skew`; skew 0 is
-  // the global frame. Throws std::out_of_range for an id the model lacks (the starter refuses those).
-  [[nodiscard]] std::array<double, 3> skew_axis(std::int64_t skew, int k) const {
-    std::array<double, 3> e{};
-    if (skew == 0) {
-      e[static_cast<std::size_t>(k)] = 1.0;
-      return e;
-    }
-    for (const auto& s : skews)
-      if (s.id == skew) {
-        for (std::size_t d = 0; d < 3; ++d) e[d] = s.axes[3 * static_cast<std::size_t>(k) + d];
-        return e;
-      }
-    throw std::out_of_range("no /SKEW/FIX/" + std::to_string(skew) + " in the model");
+  // Dense index of the skew with user id `skew`; kNone for 0 (the global frame). Throws std::out_of_range
+  // for an id the model lacks (the starter refuses those).
+  [[nodiscard]] std::int32_t skew_index(std::int64_t skew) const {
+    if (skew == 0) return kNone;
+    for (std::size_t k = 0; k < skews.size(); ++k)
+      if (skews[k].id == skew) return static_cast<std::int32_t>(k);
+    throw std::out_of_range("no /SKEW/FIX or /SKEW/MOV " + std::to_string(skew) + " in the model");
   }
 };
 

@@ -27,7 +27,8 @@ double filtered_amplitude(double fcut, double f, double dt) {
   md.accelerometers.push_back(a);
   sv::NodeState s;
   s.resize(1);
-  sv::Accelerometers acc(md);
+  const sv::SkewFrames frames(md);
+  sv::Accelerometers acc(md, frames);
   // The slowest pole decays as exp(-sin(pi/8) 2 pi fcut t): after 20 / fcut the start transient is down
   // by exp(-48); the peak is read over the last 5 periods.
   const int n = static_cast<int>(std::max(40.0 / f, 20.0 / fcut) / dt);

@@ -149,7 +149,8 @@ TEST_CASE("gravity on a free node: exact parabola and work equal to the kinetic 
   s.vx[0] = v0[0];
   s.vy[0] = v0[1];
   s.vz[0] = v0[2];
-  sv::ExternalLoads loads(md);
+  const sv::SkewFrames frames(md);
+  sv::ExternalLoads loads(md, frames);
   const double ke0 = kinetic_energy(s, 0.0);
 
   double t = 0, dt1 = 0, work = 0;
@@ -191,7 +192,8 @@ TEST_CASE("gravity skips rigid-body secondary nodes and scales with a function",
   auto s = state_of(md, {1.0, 3.0, 5.0});
   s.vx = {2.0, 7.0, 7.0};
   const std::vector<std::uint8_t> rigid_secondary = {0, 1, 0};
-  sv::ExternalLoads loads(md, rigid_secondary);
+  const sv::SkewFrames frames(md);
+  sv::ExternalLoads loads(md, frames, rigid_secondary);
   zero_forces(s);
   const double w = loads.apply(s, 1.0, 0.5);  // g(1) = 4 f(1/2) = 2, g(1 - 0.5) = 4 f(1/4) = 1
   CHECK(s.fx[0] == 2.0);
@@ -217,7 +219,8 @@ TEST_CASE("concentrated load: full value on each node, moments, work with dt2", 
   auto s = state_of(md, {1.0, 1.0});
   s.vy = {2.0, 3.0};
   s.wz = {0.5, 0.0};
-  sv::ExternalLoads loads(md);
+  const sv::SkewFrames frames(md);
+  sv::ExternalLoads loads(md, frames);
   zero_forces(s);
   const double w = loads.apply(s, 0.5, 0.1);  // F(0.5) = 5, F(0.4) = 4
   CHECK(w == 0.0);                            // no gravity or pressure
@@ -247,7 +250,8 @@ TEST_CASE("pressure load: p A n split over the segment's nodes, right-hand norma
   md.pressure_loads.push_back(p);
   auto s = state_of(md, {1, 1, 1, 1, 1});
   s.vz = {1, 1, 1, 1, 1};
-  sv::ExternalLoads loads(md);
+  const sv::SkewFrames frames(md);
+  sv::ExternalLoads loads(md, frames);
   zero_forces(s);
   const double w = loads.apply(s, 0.0, 0.5);
   // Quad: p A / 4 = 3 * 2 / 4 = 1.5 per node; triangle: p A / 3 = 3 * 0.5 / 3 = 0.5 per node.
@@ -288,8 +292,9 @@ TEST_CASE("BCS keeps the fixed translations and rotations at zero velocity", "[l
   s.vz[0] = 1.0;
   s.wy[0] = 4.0;
   s.wz[0] = 2.0;
-  sv::BoundaryConditions bcs(md);
-  sv::ExternalLoads loads(md);
+  const sv::SkewFrames frames(md);
+  sv::BoundaryConditions bcs(md, frames);
+  sv::ExternalLoads loads(md, frames);
   bcs.set_fixed_bits(s);
   CHECK(s.fixed[0] == (1u | 16u));
   bcs.apply(s);
@@ -345,8 +350,9 @@ TEST_CASE("IMPVEL ramp: velocity follows the function at the half steps, work = 
       s.vx[0] = 0.7;  // free direction
       s.vy[0] = 0.3;  // not the imposed value: the first cycle corrects it
       const double vy0 = s.vy[0];
-      sv::ImposedVelocities impvel(mdl);
-      sv::ExternalLoads loads(mdl);
+      const sv::SkewFrames frames(mdl);
+      sv::ImposedVelocities impvel(mdl, frames);
+      sv::ExternalLoads loads(mdl, frames);
       double t = 0, dt1 = 0, w_imp = 0, reaction_term = 0;
       const int n_steps = 150;
       for (int k = 0; k < n_steps; ++k) {
@@ -407,8 +413,9 @@ TEST_CASE("IMPDISP: the node is at X0 + u(t) at every step end, under a force an
   };
   auto s = state_of(md, {2.0});
   s.y[0] += 0.01;
-  sv::ImposedVelocities impvel(md);
-  sv::ExternalLoads loads(md);
+  const sv::SkewFrames frames(md);
+  sv::ImposedVelocities impvel(md, frames);
+  sv::ExternalLoads loads(md, frames);
   double t = 0, dt1 = 0;
   for (int k = 0; k < 150; ++k) {
     zero_forces(s);
@@ -437,7 +444,8 @@ TEST_CASE("IMPVEL only acts between Tstart and Tstop", "[loads]") {
   iv.group = add_group(md, {0});
   md.imposed_velocities.push_back(iv);
   auto s = state_of(md, {1.0});
-  sv::ImposedVelocities impvel(md);
+  const sv::SkewFrames frames(md);
+  sv::ImposedVelocities impvel(md, frames);
   double t = 0, dt1 = 0;
   const double dt = 1e-3;
   for (int k = 0; k < 40; ++k) {
@@ -465,7 +473,8 @@ TEST_CASE("INIVEL/TRA: at t = 0, and at Tstart", "[loads]") {
   b.group = add_group(md, {1});
   md.initial_velocities = {a, b};
   auto s = state_of(md, {2.0, 1.0});
-  sv::InitialVelocities iv(md);
+  const sv::SkewFrames frames(md);
+  sv::InitialVelocities iv(md, frames);
   CHECK(iv.apply(s, 0.0) == 0.5 * 2.0 * 14.0);
   CHECK(s.vz[0] == 3.0);
   CHECK(s.vz[1] == 0.0);
@@ -545,7 +554,8 @@ TEST_CASE("fixed rigid wall, slide 2: Coulomb deceleration mu g of a node presse
   auto s = state_of(md, {mass});
   s.vx[0] = v0;
   sv::RigidWalls walls(md);
-  sv::ExternalLoads loads(md);
+  const sv::SkewFrames frames(md);
+  sv::ExternalLoads loads(md, frames);
   const double ke0 = kinetic_energy(s, 0.0);
   double t = 0, dt1 = 0, work = 0, sum_dt2 = 0;
   const int n_steps = 300;
@@ -602,7 +612,8 @@ TEST_CASE("fixed rigid wall, slide 0: a node resting under gravity stays on the 
   auto s = state_of(md, {mass});
   s.vx[0] = 1.0;
   sv::RigidWalls walls(md);
-  sv::ExternalLoads loads(md);
+  const sv::SkewFrames frames(md);
+  sv::ExternalLoads loads(md, frames);
   double t = 0, dt1 = 0, work = 0;
   for (int k = 0; k < 100; ++k) {
     zero_forces(s);
@@ -766,7 +777,8 @@ TEST_CASE(
     }
     auto s = state_of(md, {0.0, 1.0});
     sv::RigidWalls walls(md);
-    sv::ImposedVelocities impvel(md);
+    const sv::SkewFrames frames(md);
+    sv::ImposedVelocities impvel(md, frames);
     walls.initialize(s);
     const double dt = 1e-3;
     double t = 0, dt1 = 0;
@@ -1009,7 +1021,8 @@ TEST_CASE("rigid body under gravity: the weight is counted once", "[loads]") {
   sv::RigidBodies rb(md);
   rb.initialize(s);
   // The secondaries are skipped and the main node carries M g, so a_N = g (round-off).
-  sv::ExternalLoads loads(md, rb.secondary_flags());
+  const sv::SkewFrames frames(md);
+  sv::ExternalLoads loads(md, frames, rb.secondary_flags());
   zero_forces(s);
   (void)loads.apply(s, 0.0, 0.0);
   CHECK(s.fz[1] == 0.0);

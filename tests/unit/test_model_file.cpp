@@ -270,12 +270,26 @@ Model make_model() {
   rb.secondary = {8, 9, 10};
   m.rigid_bodies = {rb};
 
+  Skew fixed_skew;  // /SKEW/FIX: no nodes
+  fixed_skew.id = v.big();
+  fixed_skew.title = "fixed skew";
+  fixed_skew.origin = {v.real(), v.real(), v.real()};
+  fixed_skew.axes = {v.real(), v.real(), v.real(), v.real(), v.real(),
+                     v.real(), v.real(), v.real(), v.real()};
+  Skew moving_skew = fixed_skew;  // /SKEW/MOV: its nodes and Dir
+  moving_skew.id = v.big();
+  moving_skew.title = "moving skew";
+  moving_skew.n1 = 3, moving_skew.n2 = 4, moving_skew.n3 = 7;
+  moving_skew.dir = 2;
+  m.skews = {fixed_skew, moving_skew};
+
   TimeHistoryGroup th;
   th.id = v.big();
   th.title = "th nodes";
   th.kind = ThKind::Subset;
   th.variables = {"DX", "VX", "AZ"};
   th.objects = {1, 0};
+  th.skews = {v.big(), 0};
   TimeHistoryGroup th_empty;  // no variables, no objects
   th_empty.id = v.big();
   th_empty.kind = ThKind::Rwall;
@@ -656,6 +670,22 @@ void check_same(const Model& a, const Model& b) {
     CHECK(a.time_histories[i].kind == b.time_histories[i].kind);
     CHECK(a.time_histories[i].variables == b.time_histories[i].variables);
     CHECK(a.time_histories[i].objects == b.time_histories[i].objects);
+    CHECK(a.time_histories[i].skews == b.time_histories[i].skews);
+  }
+
+  REQUIRE(a.skews.size() == b.skews.size());
+  for (std::size_t i = 0; i < a.skews.size(); ++i) {
+    const Skew& x = a.skews[i];
+    const Skew& y = b.skews[i];
+    CHECK(x.id == y.id);
+    CHECK(x.title == y.title);
+    CHECK(x.origin == y.origin);
+    CHECK(x.axes == y.axes);
+    CHECK(x.n1 == y.n1);
+    CHECK(x.n2 == y.n2);
+    CHECK(x.n3 == y.n3);
+    CHECK(x.dir == y.dir);
+    CHECK(x.moving() == y.moving());
   }
 
   REQUIRE(a.interfaces.size() == b.interfaces.size());

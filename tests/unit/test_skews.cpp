@@ -90,9 +90,13 @@ TEST_CASE("/SKEW/FIX: x' = Y' x Z', y' = Z' x x', z' = Z', normalised", "[skew]"
   const auto want = diagonal_skew().axes;
   for (std::size_t k = 0; k < 9; ++k) CHECK(close(md.skews[0].axes[k], want[k], 1e-15));
   CHECK(md.skews[0].origin == std::array<double, 3>{1.0, 2.0, 3.0});
-  CHECK(md.skew_axis(5, 0)[1] == md.skews[0].axes[1]);
-  CHECK(md.skew_axis(0, 2) == std::array<double, 3>{0.0, 0.0, 1.0});
-  CHECK_THROWS(md.skew_axis(7, 0));
+  CHECK(!md.skews[0].moving());
+  CHECK(md.skew_index(5) == 0);
+  CHECK(md.skew_index(0) == m::kNone);
+  CHECK_THROWS(md.skew_index(7));
+  const sv::SkewFrames frames(md);
+  CHECK(frames.axis(0, 0)[1] == md.skews[0].axes[1]);
+  CHECK(frames.axis(m::kNone, 2) == std::array<double, 3>{0.0, 0.0, 1.0});
 }
 
 TEST_CASE("a /BCS in a skew holds along its fixed skew axes and frees the rest", "[skew]") {
@@ -110,8 +114,9 @@ TEST_CASE("a /BCS in a skew holds along its fixed skew axes and frees the rest",
   gr.fscale_y = 9.81;
   md.gravities.push_back(gr);
   auto s = state(md);
-  sv::BoundaryConditions bcs(md);
-  sv::ExternalLoads loads(md);
+  const sv::SkewFrames frames(md);
+  sv::BoundaryConditions bcs(md, frames);
+  sv::ExternalLoads loads(md, frames);
   bcs.set_fixed_bits(s);
   CHECK(s.fixed[0] == 0);  // no global bit: the skew carries it
   std::vector<std::uint8_t> held(1, 0);
@@ -148,7 +153,8 @@ TEST_CASE("/IMPVEL, /INIVEL and /CLOAD along skew axes", "[skew]") {
     md.imposed_velocities.push_back(iv);
     auto s = state(md);
     s.vz[0] = 0.25;  // free, along z'
-    sv::ImposedVelocities impvel(md);
+    const sv::SkewFrames frames(md);
+    sv::ImposedVelocities impvel(md, frames);
     double t = 0;
     for (int k = 0; k < 10; ++k) {
       zero_forces(s);
@@ -170,7 +176,8 @@ TEST_CASE("/IMPVEL, /INIVEL and /CLOAD along skew axes", "[skew]") {
     iv.group = 0;
     md.initial_velocities.push_back(iv);
     auto s = state(md);
-    sv::InitialVelocities inivel(md);
+    const sv::SkewFrames frames(md);
+    sv::InitialVelocities inivel(md, frames);
     (void)inivel.apply(s, 0.0);
     CHECK(close(s.vx[0], r * 1.0 + r * 2.0, 1e-15));
     CHECK(close(s.vy[0], -r * 1.0 + r * 2.0, 1e-15));
@@ -188,7 +195,8 @@ TEST_CASE("/IMPVEL, /INIVEL and /CLOAD along skew axes", "[skew]") {
     md.concentrated_loads.push_back(c);
     auto s = state(md);
     s.vx[0] = 1.0;  // v.x' = 1/sqrt2
-    sv::ExternalLoads loads(md);
+    const sv::SkewFrames frames(md);
+    sv::ExternalLoads loads(md, frames);
     zero_forces(s);
     (void)loads.apply(s, 0.0, dt);
     CHECK(close(s.fx[0], 4.0 * r, 1e-15));

@@ -53,8 +53,8 @@ double energy_ie(double t) {
 }
 
 std::vector<ThGroupLayout> layouts() {
-  ThGroupLayout global{"global", "", "", {}, {"IE", "KE"}, {"J", "J"}};
-  ThGroupLayout nodes{"node/1", "falling nodes, two", "node", {12, kBigId}, {"DX", "VX"}, {"m", "m/s"}};
+  ThGroupLayout global{"global", "", "", {}, {"IE", "KE"}, {"J", "J"}, {}};
+  ThGroupLayout nodes{"node/1", "falling nodes, two", "node", {12, kBigId}, {"DX", "VX"}, {"m", "m/s"}, {}};
   return {global, nodes};
 }
 
@@ -329,9 +329,9 @@ TEST_CASE("time history: a /TH group with no objects has no columns, a repeated 
           "[th]") {
   TempDir dir;
   const std::string path = dir.file("P_th.h5");
-  std::vector<ThGroupLayout> l = {{"global", "", "", {}, {"KE"}, {"J"}},
-                                  {"node/5", "listed none", "node", {}, {"DX"}, {"m"}},
-                                  {"part/3", "twice", "part", {3, 3}, {"IE"}, {"J"}}};
+  std::vector<ThGroupLayout> l = {{"global", "", "", {}, {"KE"}, {"J"}, {}},
+                                  {"node/5", "listed none", "node", {}, {"DX"}, {"m"}, {}},
+                                  {"part/3", "twice", "part", {3, 3}, {"IE"}, {"J"}, {}}};
   TimeHistoryWriter w(path, l, "ms");
   const std::vector<double> ke{1.5}, none{}, ie{2.5, 2.5};
   w.append(0.25, {ke, none, ie});
@@ -444,7 +444,7 @@ TEST_CASE("time history: the listing names groups, objects, variables, units, ro
 
 TEST_CASE("time history: a long object list is listed whole, wrapped to short lines", "[th]") {
   ThGroupData g;
-  g.layout = {"node/2", "many", "node", {}, {"DX"}, {"m"}};
+  g.layout = {"node/2", "many", "node", {}, {"DX"}, {"m"}, {}};
   for (std::int64_t id = 1'000'001; id <= 1'000'040; ++id) g.layout.objects.push_back(id);
   g.columns = 1 + 40;
   std::ostringstream os;
