@@ -63,7 +63,8 @@ bool inside(const model::Box& b, double x, double y, double z) {
       return x >= b.p1[0] && x <= b.p2[0] && y >= b.p1[1] && y <= b.p2[1] && z >= b.p1[2] && z <= b.p2[2];
     case model::BoxShape::Cylinder: {
       const model::Vec3 axis = model::sub(b.p2, b.p1);
-      const double length = model::norm(axis);  // > 0 in a built box
+      const double length = model::norm(axis);
+      if (!(length > 0)) return false;  // no axis (an error already): nothing inside, as in Radioss
       const model::Vec3 u = model::scale(axis, 1.0 / length);
       const double along = model::dot(d, u);
       return along >= 0 && along <= length &&
