@@ -29,7 +29,8 @@ RigidWalls::RigidWalls(const model::Model& m) {
     Wall out;
     out.shape = w.shape;
     out.radius = 0.5 * w.diameter;
-    if ((w.shape == 1 || w.shape == 2) && !(out.radius > 0)) throw std::runtime_error(what + ": the diameter must be > 0");
+    if ((w.shape == 1 || w.shape == 2) && !(out.radius > 0))
+      throw std::runtime_error(what + ": the diameter must be > 0");
     out.node = w.node;
     out.slide = w.slide;
     out.friction = w.slide == 2 ? w.friction : 0.0;
