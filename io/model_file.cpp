@@ -238,7 +238,8 @@ RADX_SCHEMA(Part, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(property), RADX_
             RADX_FIELD(subset), RADX_FIELD(contact_thickness), RADX_FIELD(mass), RADX_FIELD(element_count));
 RADX_SCHEMA(Subset, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(children), RADX_FIELD(parts));
 RADX_SCHEMA(NodeGroup, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(nodes));
-RADX_SCHEMA(Box, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lo), RADX_FIELD(hi));
+RADX_SCHEMA(Box, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(shape), RADX_FIELD(p1), RADX_FIELD(p2),
+            RADX_FIELD(diameter));
 RADX_SCHEMA(Surface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(segments),
             RADX_FIELD(owner_type), RADX_FIELD(owner));
 RADX_SCHEMA(Function, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(x), RADX_FIELD(y));
@@ -248,6 +249,9 @@ RADX_SCHEMA(ImposedVelocity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(funct
             RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(frame), RADX_FIELD(icoor), RADX_FIELD(group),
             RADX_FIELD(ascale_x), RADX_FIELD(fscale_y), RADX_FIELD(t_start), RADX_FIELD(t_stop),
             RADX_FIELD(displacement));
+RADX_SCHEMA(ImposedFinalGeometry, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(function), RADX_FIELD(sensor),
+            RADX_FIELD(ascale_x), RADX_FIELD(t_start), RADX_FIELD(t_stop), RADX_FIELD(nodes),
+            RADX_FIELD(targets));
 RADX_SCHEMA(Skew, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(origin), RADX_FIELD(axes), RADX_FIELD(n1),
             RADX_FIELD(n2), RADX_FIELD(n3), RADX_FIELD(dir));
 RADX_SCHEMA(AddedMass, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(type), RADX_FIELD(mass),
@@ -266,7 +270,8 @@ RADX_SCHEMA(Gravity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(function), RA
 RADX_SCHEMA(RigidWall, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(node), RADX_FIELD(slide),
             RADX_FIELD(iform), RADX_FIELD(ifq), RADX_FIELD(group1), RADX_FIELD(group2), RADX_FIELD(distance),
             RADX_FIELD(friction), RADX_FIELD(diameter), RADX_FIELD(ffac), RADX_FIELD(mass), RADX_FIELD(m),
-            RADX_FIELD(m1), RADX_FIELD(v0), RADX_FIELD(normal), RADX_FIELD(secondary), RADX_FIELD(shape));
+            RADX_FIELD(m1), RADX_FIELD(v0), RADX_FIELD(normal), RADX_FIELD(secondary), RADX_FIELD(shape),
+            RADX_FIELD(m2));
 RADX_SCHEMA(RigidBody, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(main_node), RADX_FIELD(sensor),
             RADX_FIELD(skew), RADX_FIELD(ispher), RADX_FIELD(ikrem), RADX_FIELD(icog), RADX_FIELD(ioptoff),
             RADX_FIELD(iexpams), RADX_FIELD(ifail), RADX_FIELD(mass), RADX_FIELD(inertia), RADX_FIELD(fn),
@@ -301,7 +306,7 @@ RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RAD
 
 // Written member by member below (write_radx, read_file, write_block, read_block): a new member of these
 // structs must be added there.
-static_assert(member_count<Model>() == 34, "model::Model changed: update write_radx and read_file");
+static_assert(member_count<Model>() == 35, "model::Model changed: update write_radx and read_file");
 static_assert(member_count<model::Nodes>() == 5, "model::Nodes changed: update write_radx and read_file");
 static_assert(member_count<model::ElementBlock>() == 7, "model::ElementBlock changed: update write_block");
 
@@ -318,6 +323,7 @@ void for_each_table(ModelT& m, Fn&& fn) {
   fn("functions", m.functions);
   fn("bcs", m.bcs);
   fn("imposed_velocities", m.imposed_velocities);
+  fn("imposed_final_geometries", m.imposed_final_geometries);
   fn("initial_velocities", m.initial_velocities);
   fn("concentrated_loads", m.concentrated_loads);
   fn("pressure_loads", m.pressure_loads);

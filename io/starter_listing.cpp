@@ -97,6 +97,8 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
   count("functions", m.functions.size());
   count("boundary conditions", m.bcs.size());
   count("imposed velocities", m.imposed_velocities.size());
+  if (!m.imposed_final_geometries.empty())
+    count("imposed final geometries", m.imposed_final_geometries.size());
   count("initial velocities", m.initial_velocities.size());
   count("concentrated loads", m.concentrated_loads.size());
   count("pressure loads", m.pressure_loads.size());

@@ -53,9 +53,26 @@ void sort_unique(std::vector<std::int32_t>& v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
-// Inside the box or on its boundary.
+// Inside the box or on its boundary (OpenRadioss rdbox.F: INSIDE_CYLINDER, INSIDE_SPHERE). Cylinder: the
+// projection on the axis p1 -> p2 lies between the end faces and the distance to the axis is at most D/2;
+// sphere: |x - p1| <= D/2.
 bool inside(const model::Box& b, double x, double y, double z) {
-  return x >= b.lo[0] && x <= b.hi[0] && y >= b.lo[1] && y <= b.hi[1] && z >= b.lo[2] && z <= b.hi[2];
+  const model::Vec3 d = model::sub({x, y, z}, b.p1);
+  switch (b.shape) {
+    case model::BoxShape::Recta:
+      return x >= b.p1[0] && x <= b.p2[0] && y >= b.p1[1] && y <= b.p2[1] && z >= b.p1[2] && z <= b.p2[2];
+    case model::BoxShape::Cylinder: {
+      const model::Vec3 axis = model::sub(b.p2, b.p1);
+      const double length = model::norm(axis);
+      if (!(length > 0)) return false;  // no axis (an error already): nothing inside, as in Radioss
+      const model::Vec3 u = model::scale(axis, 1.0 / length);
+      const double along = model::dot(d, u);
+      return along >= 0 && along <= length &&
+             model::norm(model::sub(d, model::scale(u, along))) <= 0.5 * b.diameter;
+    }
+    case model::BoxShape::Sphere: return 4.0 * model::dot(d, d) <= b.diameter * b.diameter;
+  }
+  return false;
 }
 
 // The three element group families: the keyword root, the subtype that lists element ids, the words
@@ -259,9 +276,9 @@ const std::vector<std::int32_t>* ModelBuilder::group_elements(std::int32_t g) {
       const auto it = box_ids_.find(r.ids[box_k]);
       if (it == box_ids_.end()) {
         diags_.error(Diag::MissingReference, at(r.id_pos[box_k], 1), about(r),
-                     "box " + std::to_string(r.ids[box_k]) + " does not exist: there is no /BOX/RECTA/" +
-                         std::to_string(r.ids[box_k]) + ", the one kind of box radx reads (listed in " +
-                         gname + ")");
+                     "box " + std::to_string(r.ids[box_k]) +
+                         " does not exist: there is no /BOX/RECTA, /BOX/CYLIN or /BOX/SPHER with id " +
+                         std::to_string(r.ids[box_k]) + " (listed in " + gname + ")");
       } else {
         const auto& b = m_.boxes[it->second];
         // BOX: every node of the element inside; BOX2: one node inside is enough.
@@ -291,32 +308,65 @@ const std::vector<std::int32_t>* ModelBuilder::group_elements(std::int32_t g) {
   return &group.elements;
 }
 
+// /BOX/RECTA, /BOX/CYLIN and /BOX/SPHER, one id space (hm_read_box.F). The points come from the nodes N1 and
+// N2 when both are given (the sphere: N1), as Radioss reads them (read_box_rect.F, read_box_cyl.F,
+// read_box_spher.F); with one node only, Radioss reads the coordinates.
 void ModelBuilder::build_boxes() {
   std::unordered_map<std::int64_t, SourcePos> first;
-  for (const auto* r : deck_.of("/BOX/RECTA")) {
-    model::Box b;
-    b.id = r->id;
-    b.title = r->title;
-    model::Vec3 p1{r->get_real("Xp1"), r->get_real("Yp1"), r->get_real("Zp1")};
-    model::Vec3 p2{r->get_real("Xp2"), r->get_real("Yp2"), r->get_real("Zp2")};
-    if (r->get_int("N1") != 0) {
-      const auto n = node_ref(r->get_int("N1"), *r, r->find("N1") ? r->find("N1")->pos : r->pos, "N1");
-      if (n >= 0) p1 = {m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n]};
+  // The point of node `field` (when `use`), else the coordinates `xyz`.
+  auto point = [&](const KeywordRecord& r, std::string_view field, bool use,
+                   std::array<std::string_view, 3> xyz) -> model::Vec3 {
+    if (use) {
+      const auto n = node_ref(r.get_int(field), r, r.find(field) ? r.find(field)->pos : r.pos, field);
+      if (n >= 0) return {m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n]};
     }
-    if (r->get_int("N2") != 0) {
-      const auto n = node_ref(r->get_int("N2"), *r, r->find("N2") ? r->find("N2")->pos : r->pos, "N2");
-      if (n >= 0) p2 = {m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n]};
+    return {r.get_real(xyz[0]), r.get_real(xyz[1]), r.get_real(xyz[2])};
+  };
+  // Both N1 and N2, or the coordinates; a lone node is ignored, as Radioss ignores it.
+  auto two_nodes = [&](const KeywordRecord& r) {
+    const bool n1 = r.get_int("N1") != 0, n2 = r.get_int("N2") != 0;
+    if (n1 != n2)
+      warning_at(r, n1 ? "N1" : "N2", Diag::InconsistentValues,
+                 std::string(n1 ? "N1" : "N2") +
+                     " is ignored: the points come from the nodes only when both N1 and N2 are given (as in "
+                     "Radioss); the coordinates Xp1 ... Zp2 are used");
+    return n1 && n2;
+  };
+  const std::array<std::string_view, 3> xyz1{"Xp1", "Yp1", "Zp1"}, xyz2{"Xp2", "Yp2", "Zp2"};
+  for (const auto& [path, shape] : {std::pair{"/BOX/RECTA", model::BoxShape::Recta},
+                                    {"/BOX/CYLIN", model::BoxShape::Cylinder},
+                                    {"/BOX/SPHER", model::BoxShape::Sphere}}) {
+    for (const auto* r : deck_.of(path)) {
+      model::Box b;
+      b.id = r->id;
+      b.title = r->title;
+      b.shape = shape;
+      const bool nodes = shape == model::BoxShape::Sphere ? r->get_int("N1") != 0 : two_nodes(*r);
+      b.p1 = point(*r, "N1", nodes, xyz1);
+      if (shape != model::BoxShape::Sphere) b.p2 = point(*r, "N2", nodes, xyz2);
+      if (shape == model::BoxShape::Recta) {
+        if (r->get_int("Iskew") != 0)
+          error_at(
+              *r, "Iskew", Diag::UnimplementedOption,
+              "boxes aligned with a skew frame are not supported (radx builds boxes on the global axes); "
+              "use Iskew = 0");
+        for (std::size_t k = 0; k < 3; ++k) {
+          const double lo = std::min(b.p1[k], b.p2[k]), hi = std::max(b.p1[k], b.p2[k]);
+          b.p1[k] = lo;
+          b.p2[k] = hi;
+        }
+      } else {
+        b.diameter = r->get_real("Diameter");  // > 0: the reader checks it
+      }
+      if (shape == model::BoxShape::Cylinder && b.p1 == b.p2)
+        error_at(
+            *r, nodes ? "N2" : "Xp2", Diag::InconsistentValues,
+            "P1 and P2 coincide at " + point_text(b.p1) +
+                ": the cylinder has no axis (Radioss finds nothing inside it); give two distinct centres "
+                "of its end faces");
+      if (register_id(box_ids_, b.id, static_cast<std::int32_t>(m_.boxes.size()), *r, "box", first))
+        m_.boxes.push_back(std::move(b));
     }
-    if (r->get_int("Iskew") != 0)
-      error_at(*r, "Iskew", Diag::UnimplementedOption,
-               "boxes aligned with a skew frame are not supported (radx builds boxes on the global axes); "
-               "use Iskew = 0");
-    for (int k = 0; k < 3; ++k) {
-      b.lo[k] = std::min(p1[k], p2[k]);
-      b.hi[k] = std::max(p1[k], p2[k]);
-    }
-    if (register_id(box_ids_, b.id, static_cast<std::int32_t>(m_.boxes.size()), *r, "box", first))
-      m_.boxes.push_back(std::move(b));
   }
 }
 

@@ -1,12 +1,15 @@
-// Deck -> Model: kinematic conditions and loads (/BCS, /IMPVEL, /INIVEL/TRA, /CLOAD, /PLOAD, /GRAV), rigid
-// walls (/RWALL/PLANE), rigid bodies (/RBODY) and time-history requests (/TH/NODE, /TH/PART, /TH/INTER,
-// /TH/RWALL, /TH/SHEL, /TH/SH3N, /TH/BRIC, /TH/RBODY, /TH/SUBS); deck-format.md section 2 and 5.5,
-// elements.md section 7.
+// Deck -> Model: kinematic conditions and loads (/BCS, /IMPVEL, /IMPDISP, /IMPDISP/FGEO, /INIVEL/TRA,
+// /CLOAD, /PLOAD, /GRAV), rigid walls (/RWALL/PLANE, CYL, SPHER, PARAL), rigid bodies (/RBODY) and
+// time-history requests (/TH/NODE, /TH/PART, /TH/INTER, /TH/RWALL, /TH/SHEL, /TH/SH3N, /TH/BRIC, /TH/RBODY,
+// /TH/SUBS); deck-format.md section 2 and 5.5, elements.md section 7.
 // * Loads: value = Fscale_y f(t / Ascale_x), both scales 0 -> 1; the function is required except for
 //   /GRAV (0 = constant); /GRAV grnod_ID 0 = all nodes.
 // * /RWALL/PLANE: normal n = (M1 - M)/|M1 - M|; secondary nodes = grnd_ID1 + every node with
 //   0 <= (X - M).n <= d at t = 0 (when d > 0) - grnd_ID2 (elements.md 7.1). /RWALL/CYL: the same with the
 //   axis (M1 - M)/|M1 - M| and the height above the cylinder surface; /RWALL/SPHER: centre M, no M1.
+//   /RWALL/PARAL: n = (M1 - M) x (M2 - M) normalised, the search along n as the infinite plane's
+//   (hm_read_rwall_paral.F); for a moving wall M is the wall node.
+// * /IMPDISP/FGEO: one object per keyword, its nodes and their final positions as listed.
 // * /RBODY: the main node is removed from the secondary group; Ispher 0 -> 2, ICoG 0 -> 1 (elements.md 7.2).
 // * /TH/*: group names (DEF, D, V, ...) are expanded to variables; objects resolve to dense indices; the
 //   variables radx accepts but writes as 0 are named in a warning.
@@ -36,10 +39,6 @@ using NodeList = std::vector<std::int32_t>;
 
 std::string num(double v) {
   return number_text(v);
-}
-
-std::string point(const model::Vec3& p) {
-  return "(" + num(p[0]) + ", " + num(p[1]) + ", " + num(p[2]) + ")";
 }
 
 int geti(const KeywordRecord& r, std::string_view field) {
@@ -251,6 +250,54 @@ void build_imposed_velocities(ModelBuilder& b) {
   }
 }
 
+// /IMPDISP/FGEO: the listed nodes and their final positions (read_impdisp_fgeo.F). Each listed node is used
+// (it moves even without an element). The spring-part form needs /SPRING elements, which radx does not read.
+void build_imposed_final_geometries(ModelBuilder& b) {
+  IdIndex ids;
+  build_each(
+      b, "/IMPDISP/FGEO", "imposed final geometry", b.m_.imposed_final_geometries, ids,
+      [&](const KeywordRecord& r) {
+        model::ImposedFinalGeometry g;
+        g.function = lookup(b, b.funct_ids_, r, "fct_ID", "function", "/FUNCT", false);
+        if (r.get_int("part_ID") != 0)
+          b.error_at(
+              r, "part_ID", Diag::UnimplementedOption,
+              "part_ID = " + std::to_string(r.get_int("part_ID")) +
+                  ": the spring-part form (each spring's first node moves to its second node) needs "
+                  "/SPRING elements, which radx does not read; leave part_ID 0 and list the nodes with "
+                  "their final positions");
+        g.sensor = sensor_ref(b, r, "sens_ID");
+        g.ascale_x = real_or(r, "Ascale", 1.0);
+        if (g.ascale_x != 1.0)
+          b.warning_at(
+              r, "Ascale", Diag::InconsistentValues,
+              "Ascale = " + num(g.ascale_x) +
+                  ": the function is evaluated at t * Ascale, as Radioss does for /IMPDISP/FGEO (where "
+                  "/IMPDISP evaluates it at t / Ascale_x)");
+        g.t_start = r.get_real("Tstart");
+        g.t_stop = real_or(r, "Tstop", model::kNever);
+        if (r.get_real("Tstop") != 0 && g.t_stop <= g.t_start)
+          b.error_at(r, "Tstop", Diag::InconsistentValues,
+                     "Tstop = " + num(g.t_stop) + " is not after Tstart = " + num(g.t_start) +
+                         ": the motion would never be imposed; need Tstop > Tstart (0 = never stop)");
+        const auto& t = r.records;
+        const int cn = t.column("node_IDN"), cx = t.column("Xn"), cy = t.column("Yn"), cz = t.column("Zn");
+        for (std::size_t k = 0; cn >= 0 && k < t.size(); ++k) {
+          if (t.bad[k]) continue;
+          const auto n = b.node_ref(t.ints[cn][k], r, t.pos[k], "node_IDN (a node to move)");
+          if (n == kNone) continue;
+          b.node_used_[static_cast<std::size_t>(n)] = 1;
+          g.nodes.push_back(n);
+          g.targets.push_back({t.reals[cx][k], t.reals[cy][k], t.reals[cz][k]});
+        }
+        if (g.nodes.empty() && r.get_int("part_ID") == 0)
+          b.diags_.error(Diag::EmptyRecordList, b.at(r.pos, 1), ModelBuilder::about(r),
+                         "no node is listed: each line after card 2 gives a node and its final position "
+                         "(node_IDN, Xn, Yn, Zn)");
+        return g;
+      });
+}
+
 // /INIVEL/TRA (and /INIVEL/T+G, its alias) and /INIVEL/ROT: one model object each.
 // /ADMAS/0 and /ADMAS/1: the masses join the nodes in compute_lumped_masses; a node with added mass and no
 // element is a point mass of the run, not an unused node.
@@ -366,9 +413,10 @@ model::Vec3 node_point(const model::Nodes& n, std::int32_t k) {
 // grnd_ID1 + nodes within d on the positive side - grnd_ID2, without the wall's own node; sorted, unique.
 // The height of a point above the wall: along the normal (plane), from the surface of the cylinder (radial
 // distance to the axis minus the radius) or of the sphere.
+// The parallelogram searches as its infinite plane (hm_read_rwall_paral.F).
 double wall_height(const model::RigidWall& w, const model::Vec3& x) {
   const model::Vec3 d = model::sub(x, w.m);
-  if (w.shape == 0) return model::dot(d, w.normal);
+  if (w.shape == 0 || w.shape == 3) return model::dot(d, w.normal);
   const double along = w.shape == 1 ? model::dot(d, w.normal) : 0.0;
   return model::norm(model::sub(d, model::scale(w.normal, along))) - 0.5 * w.diameter;
 }
@@ -401,10 +449,27 @@ bool wall_normal(ModelBuilder& b, const KeywordRecord& r, model::RigidWall& w, d
   }
   b.error_at(
       r, "XM1", Diag::InconsistentValues,
-      "M1 = " + point(w.m1) + " and M = " + point(w.m) + (w.node != kNone ? " (the wall node)" : "") +
-          " coincide (|M1 - M| = " + num(len) +
+      "M1 = " + point_text(w.m1) + " and M = " + point_text(w.m) +
+          (w.node != kNone ? " (the wall node)" : "") + " coincide (|M1 - M| = " + num(len) +
           "): the wall normal (M1 - M)/|M1 - M| is undefined; M1 must be a distinct point on the side the "
           "wall acts on");
+  return false;
+}
+
+// /RWALL/PARAL: n = (M1 - M) x (M2 - M) / |...|; false (and an error) when the corners are aligned at the
+// scale of the model.
+bool parallelogram_normal(ModelBuilder& b, const KeywordRecord& r, model::RigidWall& w, double size) {
+  const model::Vec3 n = model::cross(model::sub(w.m1, w.m), model::sub(w.m2, w.m));
+  const double area = model::norm(n);
+  if (area > 1e-12 * size * size && area > 0) {
+    w.normal = model::scale(n, 1.0 / area);
+    return true;
+  }
+  b.error_at(r, "XM2", Diag::InconsistentValues,
+             "M = " + point_text(w.m) + (w.node != kNone ? " (the wall node)" : "") +
+                 ", M1 = " + point_text(w.m1) + " and M2 = " + point_text(w.m2) +
+                 " are aligned (|(M1 - M) x (M2 - M)| = " + num(area) +
+                 "): the parallelogram has no area and no normal; M1 and M2 must be the corners next to M");
   return false;
 }
 
@@ -440,8 +505,12 @@ model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double
   w.diameter = r.get_real("Diameter");
   w.ffac = r.get_real("ffac");
   w.m1 = reals3(r, "XM1", "YM1", "ZM1");
+  if (shape == 3) w.m2 = reals3(r, "XM2", "YM2", "ZM2");
   // A sphere has no axis: its normal is radial at each node (the engine computes it).
-  const bool defined = placed && (shape == 2 || wall_normal(b, r, w, size)) && (shape == 0 || w.diameter > 0);
+  const bool oriented = shape == 2   ? true
+                        : shape == 3 ? parallelogram_normal(b, r, w, size)
+                                     : wall_normal(b, r, w, size);
+  const bool defined = placed && oriented && (shape == 0 || shape == 3 || w.diameter > 0);
   w.secondary = wall_secondary(b, w, defined);
   if (defined && w.secondary.empty())
     b.warning_at(
@@ -751,6 +820,7 @@ void ModelBuilder::build_loads() {
   build_accelerometers(*this);
   build_bcs(*this);
   build_imposed_velocities(*this);
+  build_imposed_final_geometries(*this);
   build_initial_velocities(*this);
   build_concentrated_loads(*this);
   build_pressure_loads(*this);
@@ -759,8 +829,9 @@ void ModelBuilder::build_loads() {
 
 void ModelBuilder::build_rigid_walls() {
   const double size = model_size(m_.nodes);
-  // One id space for the three wall shapes.
-  for (const auto& [path, shape] : {std::pair{"/RWALL/PLANE", 0}, {"/RWALL/CYL", 1}, {"/RWALL/SPHER", 2}})
+  // One id space for the wall shapes.
+  for (const auto& [path, shape] :
+       {std::pair{"/RWALL/PLANE", 0}, {"/RWALL/CYL", 1}, {"/RWALL/SPHER", 2}, {"/RWALL/PARAL", 3}})
     build_each(*this, path, "rigid wall", m_.rigid_walls, rwall_ids_,
                [&](const KeywordRecord& r) { return make_rigid_wall(*this, r, size, shape); });
 }

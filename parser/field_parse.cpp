@@ -123,4 +123,8 @@ std::string number_text(double v) {
   return os.str();
 }
 
+std::string point_text(const std::array<double, 3>& p) {
+  return "(" + number_text(p[0]) + ", " + number_text(p[1]) + ", " + number_text(p[2]) + ")";
+}
+
 }  // namespace radx

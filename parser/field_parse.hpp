@@ -3,6 +3,7 @@
 // (1.5-3 = 1.5e-3) that fixed-format Fortran accepts.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -22,5 +23,7 @@ std::vector<std::string> keyword_fields(std::string_view line);
 
 // A number for a message: 6 significant digits ("0.0025", "2.1e+11").
 std::string number_text(double v);
+// A point for a message: "(x, y, z)", each as number_text.
+std::string point_text(const std::array<double, 3>& p);
 
 }  // namespace radx

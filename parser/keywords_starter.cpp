@@ -12,6 +12,7 @@
 // * zero_is() only for constant defaults; defaults that depend on other fields or on /DEF_SHELL and
 //   /DEF_SOLID are resolved by the model builder from the raw value.
 // * unused(): read and echoed, but radx does not act on it; a non-default value warns.
+#include <array>
 #include <tuple>
 
 #include "parser/keyword_schema.hpp"
@@ -409,15 +410,45 @@ void add_groups(std::vector<KeywordDecl>& t) {
     KeywordDecl k =
         kw("/BOX/RECTA", "axis-aligned box given by two opposite corners", Header::IdUnit, true, "box_ID");
     k.cards = {
-        card("card 1", {I("N1", 1, 10, "node giving the first corner (replaces Xp1 Yp1 Zp1)"),
-                        I("N2", 11, 20, "node giving the second corner (replaces Xp2 Yp2 Zp2)"),
-                        I("Iskew", 21, 30, "skew the box is aligned with; 0 = global axes")}),
+        card("card 1",
+             {I("N1", 1, 10, "node giving the first corner (with N2: both nodes replace Xp1 ... Zp2)"),
+              I("N2", 11, 20, "node giving the second corner (with N1)"),
+              I("Iskew", 21, 30, "skew the box is aligned with; 0 = global axes")}),
         card("card 2", {R("Xp1", 1, 20, "first corner X").dims(dim::length),
                         R("Yp1", 21, 40, "first corner Y").dims(dim::length),
                         R("Zp1", 41, 60, "first corner Z").dims(dim::length)}),
         card("card 3", {R("Xp2", 1, 20, "second corner X").dims(dim::length),
                         R("Yp2", 21, 40, "second corner Y").dims(dim::length),
                         R("Zp2", 41, 60, "second corner Z").dims(dim::length)}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/BOX/CYLIN",
+           "finite cylinder box: the axis from P1 to P2 (the centres of its end faces) and a diameter",
+           Header::IdUnit, true, "box_ID");
+    k.cards = {
+        card("card 1", {I("N1", 1, 10, "node giving P1 (with N2: both nodes replace Xp1 ... Zp2)"),
+                        I("N2", 11, 20, "node giving P2 (with N1)"),
+                        R("Diameter", 31, 50, "diameter of the cylinder").dims(dim::length).must().gt(0.0)}),
+        card("card 2", {R("Xp1", 1, 20, "centre P1 of the first end face, X").dims(dim::length),
+                        R("Yp1", 21, 40, "centre P1, Y").dims(dim::length),
+                        R("Zp1", 41, 60, "centre P1, Z").dims(dim::length)}),
+        card("card 3", {R("Xp2", 1, 20, "centre P2 of the second end face, X").dims(dim::length),
+                        R("Yp2", 21, 40, "centre P2, Y").dims(dim::length),
+                        R("Zp2", 41, 60, "centre P2, Z").dims(dim::length)}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("/BOX/SPHER", "sphere box: a centre and a diameter", Header::IdUnit, true, "box_ID");
+    k.cards = {
+        card("card 1", {I("N1", 1, 10, "node giving the centre (replaces Xp1 Yp1 Zp1)"),
+                        R("Diameter", 31, 50, "diameter of the sphere").dims(dim::length).must().gt(0.0)}),
+        card("card 2",
+             {R("Xp1", 1, 20, "centre X").dims(dim::length), R("Yp1", 21, 40, "centre Y").dims(dim::length),
+              R("Zp1", 41, 60, "centre Z").dims(dim::length)}),
     };
     t.push_back(std::move(k));
   }
@@ -796,6 +827,37 @@ void add_loads(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    // OpenRadioss read_impdisp_fgeo.F and fixfingeo.F (format 140, the only layout).
+    KeywordDecl k =
+        kw("/IMPDISP/FGEO",
+           "prescribed final geometry: each listed node moves along the straight line from its "
+           "initial position to its final position XN, the fraction of the way following a function "
+           "of time",
+           Header::Id, true, "impdisp_ID");
+    k.cards = {
+        card("card 1",
+             {I("fct_ID", 1, 10, "function of time: the fraction of the way (0 at the start, 1 at the end)")
+                  .must(),
+              I("part_ID", 11, 20,
+                "spring part whose springs give the nodes (each first node goes to its second "
+                "node's initial position); 0 = the listed nodes"),
+              I("sens_ID", 31, 40, "sensor that starts the motion; 0 = none")}),
+        card("card 2",
+             {R("Ascale", 1, 20,
+                "time scale of the function: Radioss evaluates it at t * Ascale (not t / Ascale as /IMPDISP)")
+                  .zero_is(1.0)
+                  .dims(dim::time),
+              R("Tstart", 41, 60, "time the motion starts being imposed").dims(dim::time),
+              R("Tstop", 61, 80, "time it stops being imposed; 0 = never").dims(dim::time)}),
+    };
+    k.tail = Tail::Records;
+    k.record = card(
+        "node", {I("node_IDN", 1, 10, "node moved"), R("Xn", 11, 30, "final position X").dims(dim::length),
+                 R("Yn", 31, 50, "final position Y").dims(dim::length),
+                 R("Zn", 51, 70, "final position Z").dims(dim::length)});
+    t.push_back(std::move(k));
+  }
+  {
     KeywordDecl k = kw("/INIVEL/TRA", "initial translational velocity of a node group", Header::IdUnit, true,
                        "inivel_ID");
     // /INIVEL/T+G sets the velocity of the structure and of the ALE grid: radx has no ALE grid, so it is the
@@ -947,119 +1009,102 @@ void add_loads(std::vector<KeywordDecl>& t) {
 
 // ---------------------------------------------------------------------------------------------------------
 // Rigid wall, rigid body
-void add_rigid(std::vector<KeywordDecl>& t) {
-  {
-    KeywordDecl k = kw("/RWALL/PLANE", "infinite rigid plane wall acting on secondary nodes", Header::IdUnit,
-                       true, "rwall_ID");
-    k.cards = {
-        card("card 1",
-             {I("node_ID", 1, 10, "node carrying a moving wall; 0 = fixed wall"),
-              I("Slide", 11, 20, "0 frictionless sliding, 1 tied, 2 Coulomb friction").allow({0, 1, 2}),
-              I("grnd_ID1", 21, 30, "secondary nodes"),
-              I("grnd_ID2", 31, 40, "nodes removed from the secondary set"),
-              I("Iform", 41, 50, "0 kinematic, 1 penalty").versions(2026).allow({0, 1})}),
-        card_if("card 2 (Slide = 2)", when_eq("Slide", 2),
-                {R("d", 1, 20, "search distance: nodes on the positive side within it become secondary")
-                     .dims(dim::length),
-                 R("fric", 21, 40, "Coulomb friction coefficient").ge(0.0),
-                 R("Diameter", 41, 60, "cylinder or sphere diameter, unused for a plane")
-                     .dims(dim::length)
-                     .unused(),
-                 R("ffac", 61, 80, "friction filtering factor"),
-                 I("ifq", 81, 90, "friction filtering: 0 none, 1 user factor, 2 period, 3 cut-off frequency")
-                     .allow({0, 1, 2, 3})}),
-        card_if("card 2 (Slide != 2)", when_ne("Slide", 2),
-                {R("d", 1, 20, "search distance: nodes on the positive side within it become secondary")
-                     .dims(dim::length)}),
-        card_if("card 3 (fixed wall)", when_eq("node_ID", 0),
-                {R("XM", 1, 20, "point M on the wall, X").dims(dim::length),
-                 R("YM", 21, 40, "point M on the wall, Y").dims(dim::length),
-                 R("ZM", 41, 60, "point M on the wall, Z").dims(dim::length)}),
-        card_if("card 3 (moving wall)", when_gt("node_ID", 0),
-                {R("Mass", 1, 20, "mass added to the wall node").dims(dim::mass),
-                 R("VX0", 21, 40, "initial X velocity of the wall node").dims(dim::velocity),
-                 R("VY0", 41, 60, "initial Y velocity of the wall node").dims(dim::velocity),
-                 R("VZ0", 61, 80, "initial Z velocity of the wall node").dims(dim::velocity)}),
-        card("card 4",
-             {R("XM1", 1, 20, "second point M1, X; the normal points from M to M1").dims(dim::length),
-              R("YM1", 21, 40, "second point M1, Y").dims(dim::length),
-              R("ZM1", 41, 60, "second point M1, Z").dims(dim::length)}),
-    };
-    t.push_back(std::move(k));
+// The /RWALL family: the cards of /RWALL/PLANE, with the diameter on card 2 for the curved walls, no M1 for
+// the sphere and a corner M2 for the parallelogram (OpenRadioss hm_read_rwall_*.F, one layout per shape).
+enum class WallShape { Plane, Cylinder, Sphere, Parallelogram };
+
+KeywordDecl rigid_wall(std::string_view path, std::string_view meaning, WallShape shape) {
+  const bool curved = shape == WallShape::Cylinder || shape == WallShape::Sphere;
+  const bool paral = shape == WallShape::Parallelogram;
+  const std::string_view d_meaning =
+      curved ? "search distance: nodes outside the wall within it become secondary"
+             : "search distance: nodes on the positive side within it become secondary";
+  auto diameter = [&] {
+    return curved ? R("Diameter", 41, 60, "diameter").dims(dim::length).must().gt(0.0)
+                  : R("Diameter", 41, 60, "cylinder or sphere diameter, unused for a plane")
+                        .dims(dim::length)
+                        .unused();
+  };
+  // Radioss's parallelogram wall never filters the friction (rgwalp.F): ffac and ifq are read, unused.
+  auto ffac = R("ffac", 61, 80, "friction filtering factor");
+  auto ifq = I("ifq", 81, 90, "friction filtering: 0 none, 1 user factor, 2 period, 3 cut-off frequency")
+                 .allow({0, 1, 2, 3});
+  if (paral) {
+    ffac.unused();
+    ifq.unused();
   }
-  {
-    KeywordDecl k =
-        kw("/RWALL/CYL", "infinite rigid cylinder (axis through M and M1) keeping secondary nodes outside",
-           Header::IdUnit, true, "rwall_ID");
-    k.cards = {
-        card("card 1",
-             {I("node_ID", 1, 10, "node carrying a moving wall; 0 = fixed wall"),
-              I("Slide", 11, 20, "0 frictionless sliding, 1 tied, 2 Coulomb friction").allow({0, 1, 2}),
-              I("grnd_ID1", 21, 30, "secondary nodes"),
-              I("grnd_ID2", 31, 40, "nodes removed from the secondary set"),
-              I("Iform", 41, 50, "0 kinematic, 1 penalty").versions(2026).allow({0, 1})}),
-        card_if("card 2 (Slide = 2)", when_eq("Slide", 2),
-                {R("d", 1, 20, "search distance: nodes outside the wall within it become secondary")
-                     .dims(dim::length),
-                 R("fric", 21, 40, "Coulomb friction coefficient").ge(0.0),
-                 R("Diameter", 41, 60, "diameter").dims(dim::length).must().gt(0.0),
-                 R("ffac", 61, 80, "friction filtering factor"),
-                 I("ifq", 81, 90, "friction filtering: 0 none, 1 user factor, 2 period, 3 cut-off frequency")
-                     .allow({0, 1, 2, 3})}),
-        card_if("card 2 (Slide != 2)", when_ne("Slide", 2),
-                {R("d", 1, 20, "search distance: nodes outside the wall within it become secondary")
-                     .dims(dim::length),
-                 R("Diameter", 41, 60, "diameter").dims(dim::length).must().gt(0.0)}),
-        card_if("card 3 (fixed wall)", when_eq("node_ID", 0),
-                {R("XM", 1, 20, "point M on the axis, X").dims(dim::length),
-                 R("YM", 21, 40, "point M on the axis, Y").dims(dim::length),
-                 R("ZM", 41, 60, "point M on the axis, Z").dims(dim::length)}),
-        card_if("card 3 (moving wall)", when_gt("node_ID", 0),
-                {R("Mass", 1, 20, "mass added to the wall node").dims(dim::mass),
-                 R("VX0", 21, 40, "initial X velocity of the wall node").dims(dim::velocity),
-                 R("VY0", 41, 60, "initial Y velocity of the wall node").dims(dim::velocity),
-                 R("VZ0", 61, 80, "initial Z velocity of the wall node").dims(dim::velocity)}),
+  std::vector<FieldDecl> card2_other = {R("d", 1, 20, d_meaning).dims(dim::length)};
+  if (curved) card2_other.push_back(diameter());
+  // Texts of the point M (string literals: the declarations keep views of them).
+  using Texts = std::array<std::string_view, 3>;
+  const Texts m_what =
+      shape == WallShape::Plane
+          ? Texts{"point M on the wall, X", "point M on the wall, Y", "point M on the wall, Z"}
+      : shape == WallShape::Cylinder
+          ? Texts{"point M on the axis, X", "point M on the axis, Y", "point M on the axis, Z"}
+      : shape == WallShape::Sphere ? Texts{"centre M, X", "centre M, Y", "centre M, Z"}
+                                   : Texts{"corner M of the parallelogram, X", "corner M, Y", "corner M, Z"};
+  KeywordDecl k = kw(path, meaning, Header::IdUnit, true, "rwall_ID");
+  k.cards = {
+      card("card 1",
+           {I("node_ID", 1, 10, "node carrying a moving wall; 0 = fixed wall"),
+            I("Slide", 11, 20, "0 frictionless sliding, 1 tied, 2 Coulomb friction").allow({0, 1, 2}),
+            I("grnd_ID1", 21, 30, "secondary nodes"),
+            I("grnd_ID2", 31, 40, "nodes removed from the secondary set"),
+            I("Iform", 41, 50, "0 kinematic, 1 penalty").versions(2026).allow({0, 1})}),
+      card_if("card 2 (Slide = 2)", when_eq("Slide", 2),
+              {R("d", 1, 20, d_meaning).dims(dim::length),
+               R("fric", 21, 40, "Coulomb friction coefficient").ge(0.0), diameter(), std::move(ffac),
+               std::move(ifq)}),
+      card_if("card 2 (Slide != 2)", when_ne("Slide", 2), std::move(card2_other)),
+      card_if("card 3 (fixed wall)", when_eq("node_ID", 0),
+              {R("XM", 1, 20, m_what[0]).dims(dim::length), R("YM", 21, 40, m_what[1]).dims(dim::length),
+               R("ZM", 41, 60, m_what[2]).dims(dim::length)}),
+      card_if("card 3 (moving wall)", when_gt("node_ID", 0),
+              {R("Mass", 1, 20, "mass added to the wall node").dims(dim::mass),
+               R("VX0", 21, 40, "initial X velocity of the wall node").dims(dim::velocity),
+               R("VY0", 41, 60, "initial Y velocity of the wall node").dims(dim::velocity),
+               R("VZ0", 61, 80, "initial Z velocity of the wall node").dims(dim::velocity)}),
+  };
+  if (shape == WallShape::Plane)
+    k.cards.push_back(card(
+        "card 4", {R("XM1", 1, 20, "second point M1, X; the normal points from M to M1").dims(dim::length),
+                   R("YM1", 21, 40, "second point M1, Y").dims(dim::length),
+                   R("ZM1", 41, 60, "second point M1, Z").dims(dim::length)}));
+  if (shape == WallShape::Cylinder)
+    k.cards.push_back(
         card("card 4",
              {R("XM1", 1, 20, "second point M1 on the axis, X; the axis runs from M to M1").dims(dim::length),
               R("YM1", 21, 40, "second point M1, Y").dims(dim::length),
-              R("ZM1", 41, 60, "second point M1, Z").dims(dim::length)}),
-    };
-    t.push_back(std::move(k));
+              R("ZM1", 41, 60, "second point M1, Z").dims(dim::length)}));
+  if (paral) {
+    k.cards.push_back(
+        card("card 4", {R("XM1", 1, 20, "corner M1, X: the first edge runs from M to M1").dims(dim::length),
+                        R("YM1", 21, 40, "corner M1, Y").dims(dim::length),
+                        R("ZM1", 41, 60, "corner M1, Z").dims(dim::length)}));
+    k.cards.push_back(card("card 5", {R("XM2", 1, 20,
+                                        "corner M2, X: the second edge runs from M to M2; the wall acts on "
+                                        "the side of (M1 - M) x (M2 - M)")
+                                          .dims(dim::length),
+                                      R("YM2", 21, 40, "corner M2, Y").dims(dim::length),
+                                      R("ZM2", 41, 60, "corner M2, Z").dims(dim::length)}));
   }
-  {
-    KeywordDecl k = kw("/RWALL/SPHER", "rigid sphere (centre M) keeping secondary nodes outside",
-                       Header::IdUnit, true, "rwall_ID");
-    k.cards = {
-        card("card 1",
-             {I("node_ID", 1, 10, "node carrying a moving wall; 0 = fixed wall"),
-              I("Slide", 11, 20, "0 frictionless sliding, 1 tied, 2 Coulomb friction").allow({0, 1, 2}),
-              I("grnd_ID1", 21, 30, "secondary nodes"),
-              I("grnd_ID2", 31, 40, "nodes removed from the secondary set"),
-              I("Iform", 41, 50, "0 kinematic, 1 penalty").versions(2026).allow({0, 1})}),
-        card_if("card 2 (Slide = 2)", when_eq("Slide", 2),
-                {R("d", 1, 20, "search distance: nodes outside the wall within it become secondary")
-                     .dims(dim::length),
-                 R("fric", 21, 40, "Coulomb friction coefficient").ge(0.0),
-                 R("Diameter", 41, 60, "diameter").dims(dim::length).must().gt(0.0),
-                 R("ffac", 61, 80, "friction filtering factor"),
-                 I("ifq", 81, 90, "friction filtering: 0 none, 1 user factor, 2 period, 3 cut-off frequency")
-                     .allow({0, 1, 2, 3})}),
-        card_if("card 2 (Slide != 2)", when_ne("Slide", 2),
-                {R("d", 1, 20, "search distance: nodes outside the wall within it become secondary")
-                     .dims(dim::length),
-                 R("Diameter", 41, 60, "diameter").dims(dim::length).must().gt(0.0)}),
-        card_if("card 3 (fixed wall)", when_eq("node_ID", 0),
-                {R("XM", 1, 20, "centre M, X").dims(dim::length),
-                 R("YM", 21, 40, "centre M, Y").dims(dim::length),
-                 R("ZM", 41, 60, "centre M, Z").dims(dim::length)}),
-        card_if("card 3 (moving wall)", when_gt("node_ID", 0),
-                {R("Mass", 1, 20, "mass added to the wall node").dims(dim::mass),
-                 R("VX0", 21, 40, "initial X velocity of the wall node").dims(dim::velocity),
-                 R("VY0", 41, 60, "initial Y velocity of the wall node").dims(dim::velocity),
-                 R("VZ0", 61, 80, "initial Z velocity of the wall node").dims(dim::velocity)}),
-    };
-    t.push_back(std::move(k));
-  }
+  return k;
+}
+
+void add_rigid(std::vector<KeywordDecl>& t) {
+  t.push_back(
+      rigid_wall("/RWALL/PLANE", "infinite rigid plane wall acting on secondary nodes", WallShape::Plane));
+  t.push_back(rigid_wall("/RWALL/CYL",
+                         "infinite rigid cylinder (axis through M and M1) keeping secondary nodes outside",
+                         WallShape::Cylinder));
+  t.push_back(rigid_wall("/RWALL/SPHER", "rigid sphere (centre M) keeping secondary nodes outside",
+                         WallShape::Sphere));
+  t.push_back(
+      rigid_wall("/RWALL/PARAL",
+                 "finite rigid plane wall, the parallelogram of corner M and edges M M1 and M M2, stopping "
+                 "the secondary nodes whose path crosses it",
+                 WallShape::Parallelogram));
   {
     KeywordDecl k =
         kw("/RBODY", "rigid body: a main node driving a node group", Header::IdUnit, true, "rbody_ID");
@@ -1336,7 +1381,7 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         // groups, surfaces, boxes
         "/GRNOD/LINE", "/GRSHEL", "/GRSH3N", "/GRBRIC", "/GRBEAM", "/GRTRUS", "/GRSPRI", "/GRPART", "/GRQUAD",
         "/SURF/SURF", "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE",
-        "/SURF/ELLIPS", "/LINE", "/SET", "/BOX/CYLIN", "/BOX/SPHER",
+        "/SURF/ELLIPS", "/LINE", "/SET",
         // interfaces
         "/INTER/TYPE1", "/INTER/TYPE2", "/INTER/TYPE3", "/INTER/TYPE5", "/INTER/TYPE8", "/INTER/TYPE10",
         "/INTER/TYPE11", "/INTER/TYPE14", "/INTER/TYPE15", "/INTER/TYPE17", "/INTER/TYPE18", "/INTER/TYPE19",
@@ -1344,9 +1389,9 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/FRICTION", "/DEFAULT", "/INTTHICK",
         // constraints, kinematics, loads, initial state
         "/SKEW/MOV2", "/FRAME", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT", "/MPC", "/GJOINT",
-        "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPDISP/FGEO", "/IMPACC", "/IMPTEMP", "/INIVEL/GRID", "/INIVEL/AXIS",
-        "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD", "/RWALL/PARAL", "/RWALL/LAGMUL",
-        "/RWALL/THERM", "/INISHE", "/INIBRI", "/INISH3", "/INITEMP", "/INISTA",
+        "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPACC", "/IMPTEMP", "/INIVEL/GRID", "/INIVEL/AXIS", "/INIVEL/NODE",
+        "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD", "/RWALL/LAGMUL", "/RWALL/THERM", "/INISHE", "/INIBRI",
+        "/INISH3", "/INITEMP", "/INISTA",
         // physics and model structure
         "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
         "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS/2", "/ADMAS/3", "/ADMAS/4", "/ADMAS/5", "/ADMAS/6",

@@ -314,6 +314,21 @@ def rwall_curved(v, with_m1):
     return cards if with_m1 else cards[:-1]
 
 
+def rwall_paral(v):
+    """/RWALL/PARAL: the cards of /RWALL/PLANE and a fifth, the corner M2."""
+    return rwall_plane(v) + [card(reals("XM2", "YM2", "ZM2"))]
+
+
+def impdisp_fgeo(v):
+    """/IMPDISP/FGEO (the 140 layout, for every version): function, spring part, sensor; the time cards; then one
+    line per node with its final position."""
+    return [card([F("fct_ID", "I", 1, 10), F("part_ID", "I", 11, 20), F("sens_ID", "I", 31, 40)]),
+            card([F("Ascale", "R", 1, 20), F("Tstart", "R", 41, 60), F("Tstop", "R", 61, 80)])]
+
+
+FGEO_REC = [F("node_IDN", "I", 1, 10), F("Xn", "R", 11, 30), F("Yn", "R", 31, 50), F("Zn", "R", 51, 70)]
+
+
 def cload(v):
     f = [F("funct_IDT", "I", 1, 10), F("Dir", "S", 11, 20), F("skew_ID", "I", 21, 30), F("sensor_ID", "I", 31, 40),
          F("grnod_ID", "I", 41, 50)]
@@ -437,6 +452,8 @@ STARTER = {
     "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
     "/RWALL/CYL": ("id", True, lambda v: rwall_curved(v, True), None, None),
     "/RWALL/SPHER": ("id", True, lambda v: rwall_curved(v, False), None, None),
+    "/RWALL/PARAL": ("id", True, rwall_paral, None, None),
+    "/IMPDISP/FGEO": ("id", True, impdisp_fgeo, "records", FGEO_REC),
     "/RBODY": ("id", True, rbody, None, None),
     "/FUNCT": ("id", True, lambda v: [], "records", FUNCT_REC),
     "/TH/NODE": ("id", True, lambda v: [], "threcords", THNODE_REC),
@@ -483,6 +500,15 @@ def box_recta(v):
             card(reals("Xp1", "Yp1", "Zp1")), card(reals("Xp2", "Yp2", "Zp2"))]
 
 
+def box_cylin(v):
+    return [card([F("N1", "I", 1, 10), F("N2", "I", 11, 20), F("Diameter", "R", 31, 50)]),
+            card(reals("Xp1", "Yp1", "Zp1")), card(reals("Xp2", "Yp2", "Zp2"))]
+
+
+def box_spher(v):
+    return [card([F("N1", "I", 1, 10), F("Diameter", "R", 31, 50)]), card(reals("Xp1", "Yp1", "Zp1"))]
+
+
 # Element groups: root -> (element keyword, subtype listing element ids, element name). Every subtype reads a
 # title and a list of ids; a unit id may follow the group id on the keyword line.
 GROUP_FAMILIES = {"/GRSHEL": ("/SHELL", "SHEL", "4-node shell"), "/GRSH3N": ("/SH3N", "SH3N", "3-node shell"),
@@ -497,6 +523,8 @@ for _path in NODES_OF_GROUPS + SURFS_OF_GROUPS + ("/SURF/PART/ALL", "/SUBSET"):
     STARTER[_path] = ("id", True, lambda v: [], "ids", ID_REC)
 STARTER["/SH3N"] = ("part", False, lambda v: [], "records", SH3N_REC)
 STARTER["/BOX/RECTA"] = ("id", True, box_recta, None, None)
+STARTER["/BOX/CYLIN"] = ("id", True, box_cylin, None, None)
+STARTER["/BOX/SPHER"] = ("id", True, box_spher, None, None)
 
 
 def match_keyword(parts):
@@ -1179,9 +1207,28 @@ def semantic(ck, m):
             p = pos(o, "Diameter")
             I("RX502" if val(o, "Diameter", 0.0) == 0 else "RX501", p[0], p[1],
               "%s %d: Diameter must be > 0" % (o["path"], o["id"]))
-    for o in m.of("/RWALL/PLANE", "/RWALL/CYL", "/RWALL/SPHER"):
+    for o in m.of("/RWALL/PLANE", "/RWALL/CYL", "/RWALL/SPHER", "/RWALL/PARAL"):
         need(o, "grnd_ID1", grnods, "node group")
         need(o, "grnd_ID2", grnods, "node group")
+    for o in m.of("/RWALL/PARAL"):
+        corner = [val(o, k, 0.0) for k in ("XM", "YM", "ZM")]
+        if val(o, "node_ID", 0) in nodes:
+            corner = list(nodes[val(o, "node_ID")])
+        e1 = sub([val(o, k, 0.0) for k in ("XM1", "YM1", "ZM1")], corner)
+        e2 = sub([val(o, k, 0.0) for k in ("XM2", "YM2", "ZM2")], corner)
+        if norm(cross(e1, e2)) == 0:
+            p = pos(o, "XM2")
+            I("RX507", p[0], p[1], "/RWALL/PARAL %d: M, M1 and M2 are aligned" % o["id"])
+    for o in m.of("/IMPDISP/FGEO"):
+        need(o, "fct_ID", functs, "function", zero_ok=False)
+        if val(o, "part_ID", 0) != 0:
+            p = pos(o, "part_ID")
+            I("RX509", p[0], p[1], "/IMPDISP/FGEO %d: the spring-part form is not supported" % o["id"])
+        for r, p in o["recs"]:
+            if r.get("node_IDN") not in nodes:
+                I("RX402", p[0], p[1], "/IMPDISP/FGEO %d: node %s does not exist" % (o["id"], r.get("node_IDN")))
+        if not o["recs"] and val(o, "part_ID", 0) == 0:
+            I("RX305", o["pos"][0], o["pos"][1], "/IMPDISP/FGEO %d lists no node" % o["id"])
 
     # interfaces
     for iid, o in inters.items():
@@ -1325,15 +1372,48 @@ def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, sur
             todo += subsets[x]
         return out
 
+    # Boxes, one id space: a test "is this point inside (boundary included)" per box. The points come from the
+    # nodes N1 and N2 when both are given (the sphere: N1).
     boxes = {}
-    for o in m.of("/BOX/RECTA"):
+    for o in m.of("/BOX/RECTA", "/BOX/CYLIN", "/BOX/SPHER"):
+        if o["id"] in boxes:
+            I("RX401", o["pos"][0], o["pos"][1], "box %d defined twice" % o["id"])
+            continue
         a = [val(o, k, 0.0) for k in ("Xp1", "Yp1", "Zp1")]
         b = [val(o, k, 0.0) for k in ("Xp2", "Yp2", "Zp2")]
-        if val(o, "N1", 0) in nodes:
-            a = list(nodes[val(o, "N1")])
-        if val(o, "N2", 0) in nodes:
-            b = list(nodes[val(o, "N2")])
-        boxes[o["id"]] = ([min(a[i], b[i]) for i in range(3)], [max(a[i], b[i]) for i in range(3)])
+        sphere = o["path"] == "/BOX/SPHER"
+        n1, n2 = val(o, "N1", 0), val(o, "N2", 0)
+        if (n1 and sphere) or (n1 and n2):
+            for k in (("N1",) if sphere else ("N1", "N2")):
+                if val(o, k, 0) not in nodes:
+                    p = pos(o, k)
+                    I("RX402", p[0], p[1], "box %d: node %d does not exist" % (o["id"], val(o, k, 0)))
+            a = list(nodes.get(n1, a))
+            b = list(nodes.get(n2, b))
+        if o["path"] == "/BOX/RECTA":
+            lo, hi = [min(a[i], b[i]) for i in range(3)], [max(a[i], b[i]) for i in range(3)]
+            boxes[o["id"]] = lambda x, lo=lo, hi=hi: all(lo[i] <= x[i] <= hi[i] for i in range(3))
+            continue
+        dia = val(o, "Diameter", 0.0)
+        if dia <= 0:
+            p = pos(o, "Diameter")
+            I("RX502" if dia == 0 else "RX501", p[0], p[1], "box %d: Diameter must be > 0" % o["id"])
+        if sphere:
+            boxes[o["id"]] = lambda x, c=a, r=0.5 * dia: norm(sub(x, c)) <= r
+            continue
+        length = norm(sub(b, a))
+        if length == 0:
+            p = pos(o, "N2" if n1 and n2 else "Xp2")
+            I("RX507", p[0], p[1], "box %d: the cylinder's end centres coincide" % o["id"])
+            boxes[o["id"]] = lambda x: False
+            continue
+        axis = [c / length for c in sub(b, a)]
+
+        def in_cylinder(x, p1=a, u=axis, h=length, r=0.5 * dia):
+            d = sub(x, p1)
+            t = sum(d[i] * u[i] for i in range(3))
+            return 0 <= t <= h and norm([d[i] - t * u[i] for i in range(3)]) <= r
+        boxes[o["id"]] = in_cylinder
 
     groups = {}
     for root in GROUP_FAMILIES:
@@ -1399,9 +1479,9 @@ def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, sur
             if first is not None and first[0] not in boxes:
                 missing(first[1], "box %d" % first[0])
             elif first is not None:
-                lo, hi = boxes[first[0]]
+                inside = boxes[first[0]]
                 for e, (pid, ns) in els.items():
-                    ins = [all(lo[i] <= nodes[n][i] <= hi[i] for i in range(3)) for n in ns]
+                    ins = [inside(nodes[n]) for n in ns]
                     if all(ins) if kind == "BOX" else any(ins):
                         add.add(e)
         res = add - rem

@@ -854,6 +854,53 @@ def _():
     return d, "/RWALL/SPHER/1 with Diameter = 0: a sphere wall needs a diameter", [("RX502", "RWS_C2")]
 
 
+def rwall_paral_rows(m2):
+    """A fixed /RWALL/PARAL of corner M = (0, 0, -50) and edges to M1 = (100, 0, -50) and M2, on node group 1."""
+    return [("/RWALL/PARAL/1", "RWP_KW"), "Parallelogram wall",
+            names(("node_ID", 10), ("Slide", 10), ("grnd_ID1", 10), ("grnd_ID2", 10), ("Iform", 10)),
+            line(I(0), I(0), I(1), I(0), I(0)),
+            names(("d", 20)), line(R(0.0)),
+            names(("XM", 20), ("YM", 20), ("ZM", 20)), line(R(0.0), R(0.0), R(-50.0)),
+            names(("XM1", 20), ("YM1", 20), ("ZM1", 20)), line(R(100.0), R(0.0), R(-50.0)),
+            names(("XM2", 20), ("YM2", 20), ("ZM2", 20)), (line(*[R(x) for x in m2]), "RWP_C5")]
+
+
+@fault("rwall_paral_aligned_corners")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", rwall_paral_rows((50.0, 0.0, -50.0)))
+    return d, "/RWALL/PARAL/1: M2 on the line M M1, so the parallelogram has no area and no normal", \
+        [("RX507", "RWP_C5")]
+
+
+def fgeo_rows(part=0, node=2):
+    """/IMPDISP/FGEO/1 through /FUNCT/1: the plate's node `node` to (12, 0, 0) and node 3 to (20, 0, 5)."""
+    return funct_rows(1, [(0.0, 0.0), (0.01, 1.0)]) + [
+        ("/IMPDISP/FGEO/1", "FG_KW"), "Final geometry",
+        names(("fct_ID", 10), ("part_ID", 10), ("", 10), ("sens_ID", 10)),
+        (line(I(1), I(part), blank(10), I(0)), "FG_C1"),
+        names(("Ascale", 20), ("", 20), ("Tstart", 20), ("Tstop", 20)),
+        line(R(1.0), blank(20), R(0.0), R(0.0)),
+        names(("node_IDN", 10), ("Xn", 20), ("Yn", 20), ("Zn", 20)),
+        (line(I(node), R(12.0), R(0.0), R(0.0)), "FG_N1"),
+        (line(I(3), R(20.0), R(0.0), R(5.0)), "FG_N2")]
+
+
+@fault("impdisp_fgeo_missing_node")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", fgeo_rows(node=99))
+    return d, "/IMPDISP/FGEO/1 moves node 99, which does not exist", [("RX402", "FG_N1")]
+
+
+@fault("impdisp_fgeo_spring_part")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", fgeo_rows(part=2))
+    return d, "/IMPDISP/FGEO/1 with part_ID = 2: the spring-part form needs /SPRING, which radx does not read", \
+        [("RX509", "FG_C1")]
+
+
 # Element groups and the surfaces and node groups built from them. The base model has shells 1 and 2
 # (part 1), brick 11 (part 2) and no 3-node shell.
 
@@ -869,6 +916,20 @@ def box_rows(bid, p1, p2, tag="BOX"):
             names(("N1", 10), ("N2", 10), ("Iskew", 10)), line(I(0), I(0), I(0)),
             names(("Xp1", 20), ("Yp1", 20), ("Zp1", 20)), line(*[R(x) for x in p1]),
             names(("Xp2", 20), ("Yp2", 20), ("Zp2", 20)), line(*[R(x) for x in p2])]
+
+
+def cylinder_rows(bid, p1, p2, diameter, tag="CYL"):
+    return [("/BOX/CYLIN/%d" % bid, tag + "_KW"), "Cylinder box",
+            names(("N1", 10), ("N2", 10), ("", 10), ("Diameter", 20)),
+            (line(I(0), I(0), blank(10), R(diameter)), tag + "_C1"),
+            names(("Xp1", 20), ("Yp1", 20), ("Zp1", 20)), line(*[R(x) for x in p1]),
+            names(("Xp2", 20), ("Yp2", 20), ("Zp2", 20)), (line(*[R(x) for x in p2]), tag + "_C3")]
+
+
+def sphere_rows(bid, centre, diameter, tag="SPH"):
+    return [("/BOX/SPHER/%d" % bid, tag + "_KW"), "Sphere box",
+            names(("N1", 10), ("", 20), ("Diameter", 20)), (line(I(0), blank(20), R(diameter)), tag + "_C1"),
+            names(("Xp1", 20), ("Yp1", 20), ("Zp1", 20)), line(*[R(x) for x in centre])]
 
 
 def with_rows(*groups):
@@ -999,6 +1060,35 @@ def _():
 def _():
     d = with_rows(id_list("/GRSHEL/BOX/1", "G1", "Shells in a box", "box_ID", [3]))
     return d, "/GRSHEL/BOX/1 names box 3; the deck has no /BOX", [("RX402", "G1_L1")]
+
+
+@fault("box_cylinder_no_axis")
+def _():
+    d = with_rows(cylinder_rows(1, (5.0, 5.0, 0.0), (5.0, 5.0, 0.0), 4.0))
+    return d, "/BOX/CYLIN/1 with P1 = P2: the cylinder has no axis", [("RX507", "CYL_C3")]
+
+
+@fault("box_sphere_no_diameter")
+def _():
+    d = with_rows(sphere_rows(1, (10.0, 5.0, 0.0), 0.0))
+    return d, "/BOX/SPHER/1 with Diameter = 0: a sphere box needs a diameter", [("RX502", "SPH_C1")]
+
+
+@fault("grshel_box_sphere_empty")
+def _():
+    # The sphere of centre (10, 5, 0) and diameter 12 holds the plate's middle nodes 2 and 5, no whole shell.
+    d = with_rows(sphere_rows(2, (10.0, 5.0, 0.0), 12.0),
+                  id_list("/GRSHEL/BOX/1", "G1", "Shells in the sphere", "box_ID", [2]))
+    return d, "/GRSHEL/BOX/1: box 2 (a sphere) holds no whole shell", [("RX403", "G1_KW")]
+
+
+@fault("grbric_box_duplicate_box_id")
+def _():
+    # /BOX/RECTA/1 and /BOX/CYLIN/1: one id space for every box shape.
+    d = with_rows(box_rows(1, (0.0, 0.0, 0.0), (20.0, 10.0, 20.0)),
+                  cylinder_rows(1, (10.0, 5.0, 0.0), (10.0, 5.0, 20.0), 30.0),
+                  id_list("/GRBRIC/BOX/1", "G1", "Bricks in the box", "box_ID", [1]))
+    return d, "/BOX/RECTA/1 and /BOX/CYLIN/1: two boxes with one id", [("RX401", "CYL_KW")]
 
 
 @fault("grbric_grbric_missing_group")

@@ -1,6 +1,7 @@
 #include "solver/boundary_conditions.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -118,6 +119,31 @@ ImposedVelocities::ImposedVelocities(const model::Model& m, const SkewFrames& sk
     total += e.nodes.size();
     entries_.push_back(std::move(e));
   }
+  for (const auto& g : m.imposed_final_geometries) {
+    const std::string what = "/IMPDISP/FGEO/" + std::to_string(g.id);
+    if (g.function < 0 || static_cast<std::size_t>(g.function) >= m.functions.size())
+      throw std::runtime_error(what + ": no function (fct_ID is required)");
+    if (g.nodes.size() != g.targets.size()) throw std::runtime_error(what + ": one final position per node");
+    Entry e;
+    e.f = m.functions[static_cast<std::size_t>(g.function)];
+    e.displacement = true;
+    e.ascale = 1.0 / g.ascale_x;  // f(t * Ascale)
+    e.t_start = g.t_start;
+    e.t_stop = g.t_stop;
+    e.nodes = g.nodes;
+    for (std::size_t k = 0; k < g.nodes.size(); ++k) {
+      const auto n = static_cast<std::size_t>(g.nodes[k]);
+      const std::array<double, 3> d = {g.targets[k][0] - m.nodes.x[n], g.targets[k][1] - m.nodes.y[n],
+                                       g.targets[k][2] - m.nodes.z[n]};
+      const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      e.node_scale.push_back(len);
+      e.node_axis.push_back(len > 0 ? std::array<double, 3>{d[0] / len, d[1] / len, d[2] / len}
+                                    : std::array<double, 3>{});
+    }
+    e.first = total;
+    total += e.nodes.size();
+    entries_.push_back(std::move(e));
+  }
   pending_.assign(total, 0.0);
 }
 
@@ -154,14 +180,16 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) 
                                     : d == 1 ? s.ay
                                              : s.az);
     const std::vector<double>& mass = rot ? s.inertia : s.mass;
-    const bool skewed = e.skew != model::kNone;
-    const auto u = skews_->axis(e.skew, d);  // the skew's axis of this cycle
+    const bool line = !e.node_axis.empty();  // /IMPDISP/FGEO: each node along its own line
+    const bool skewed = line || e.skew != model::kNone;
+    const auto skew_axis = skews_->axis(e.skew, d);  // the skew's axis of this cycle
     for (std::size_t k = 0; k < e.nodes.size(); ++k) {
       double& pend = pending_[e.first + k];
       work += pend;
       pend = 0;
       if (!active) continue;
       const auto n = static_cast<std::size_t>(e.nodes[k]);
+      const auto& u = line ? e.node_axis[k] : skew_axis;
       // Components along the imposed direction: a global axis, or a skew axis u (projections).
       double v_along, a_free, disp;
       if (!skewed) {
@@ -175,10 +203,15 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) 
                      : s.ax[n] * u[0] + s.ay[n] * u[1] + s.az[n] * u[2];
         disp = (s.x[n] - s.x0[n]) * u[0] + (s.y[n] - s.y0[n]) * u[1] + (s.z[n] - s.z0[n]) * u[2];
       }
-      const double v_imp = e.displacement ? (f_val - disp) / dt2 : f_val;
+      const double target = line ? f_val * e.node_scale[k] : f_val;
+      const double v_imp = e.displacement ? (target - disp) / dt2 : target;
       const double a_imp = (v_imp - v_along) / dt12;
       if (!skewed) {
         a[n] = a_imp;
+      } else if (line) {
+        s.ax[n] = a_imp * u[0];
+        s.ay[n] = a_imp * u[1];
+        s.az[n] = a_imp * u[2];
       } else {
         const double da = a_imp - a_free;
         (rot ? s.awx : s.ax)[n] += da * u[0];

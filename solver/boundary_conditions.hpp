@@ -1,6 +1,7 @@
-// Nodal kinematic conditions: /BCS, /IMPVEL, /IMPDISP, /INIVEL/TRA (deck-format.md; elements.md sections 0
-// and 8; OpenRadioss constraints/general/impvel/fixvel.F, loads/general/inivel/inivel_start.F90). v is the
-// state's v^{n-1/2}, a the accelerations of the cycle, dt12 = (dt1 + dt2) / 2.
+// Nodal kinematic conditions: /BCS, /IMPVEL, /IMPDISP, /IMPDISP/FGEO, /INIVEL/TRA (deck-format.md;
+// elements.md sections 0 and 8; OpenRadioss constraints/general/impvel/fixvel.F, fixfingeo.F,
+// loads/general/inivel/inivel_start.F90). v is the state's v^{n-1/2}, a the accelerations of the cycle, dt12
+// = (dt1 + dt2) / 2.
 //
 //   /BCS      the fixed bits (bit 0..2 Tx Ty Tz, 3..5 Rx Ry Rz) are OR-ed into state.fixed once; each call
 //             of apply() zeroes both v and a of the fixed components (translations and rotations).
@@ -19,6 +20,12 @@
 //             from the initial position X0 at the end of the step (translations only):
 //                 v_imp = (u(t_n + dt2) - (x^n - X0)) / dt2,   so x^{n+1} = X0 + u(t_{n+1}) exactly;
 //             the reaction and work as /IMPVEL.
+//   /IMPDISP/FGEO  (fixfingeo.F) the same along a direction u_k and with a scale D_k per node: the
+//             straight line from X0 to the final position XF, u = (XF - X0)/D, D = |XF - X0|; the
+//             displacement along u is u(t) = D f(t Ascale) (Radioss's time scale, the inverse of /IMPDISP's),
+//             and the node's whole acceleration is replaced by a_imp u (the components across the line are
+//             removed, so a node starting at rest stays on it). A node already at its final position
+//             (D = 0) keeps its velocity: its acceleration is zeroed.
 //   /INIVEL/ROT  omega = (Vx, Vy, Vz) on the group's nodes (their rotational dofs; a rigid body takes its
 //             main node's), as /INIVEL/TRA otherwise.
 //   /INIVEL/TRA  v = (Vx, Vy, Vz) on the group's nodes, at t = 0 (Tstart = 0) or at the first cycle
@@ -91,6 +98,10 @@ class ImposedVelocities {
     double ascale = 1, fscale = 1, t_start = 0, t_stop = model::kNever;
     std::vector<std::int32_t> nodes;
     std::size_t first = 0;  // offset of its nodes in pending_
+    // /IMPDISP/FGEO: per node, the unit direction of its line (zero when it does not move) and the length
+    // of the way, which scales f; the whole acceleration is then along the direction.
+    std::vector<std::array<double, 3>> node_axis;
+    std::vector<double> node_scale;
   };
   const SkewFrames* skews_;
   std::vector<Entry> entries_;

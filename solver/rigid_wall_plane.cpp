@@ -1,5 +1,6 @@
 #include "solver/rigid_wall_plane.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -10,6 +11,7 @@ RigidWalls::RigidWalls(const model::Model& m) {
   for (const auto& w : m.rigid_walls) {
     const std::string what = std::string(w.shape == 1   ? "/RWALL/CYL/"
                                          : w.shape == 2 ? "/RWALL/SPHER/"
+                                         : w.shape == 3 ? "/RWALL/PARAL/"
                                                         : "/RWALL/PLANE/") +
                              std::to_string(w.id);
     if (w.iform != 0)
@@ -18,7 +20,7 @@ RigidWalls::RigidWalls(const model::Model& m) {
                                "(kinematic)");
     if (w.slide < 0 || w.slide > 2)
       throw std::runtime_error(what + ": Slide = " + std::to_string(w.slide) + " is not 0, 1 or 2");
-    if (w.slide == 2 && w.ifq != 0)
+    if (w.slide == 2 && w.ifq != 0 && w.shape != 3)
       throw std::runtime_error(what + ": friction filtering ifq = " + std::to_string(w.ifq) +
                                " is not supported by the radx engine; use ifq = 0 (no filter)");
     double nn = std::sqrt(w.normal[0] * w.normal[0] + w.normal[1] * w.normal[1] + w.normal[2] * w.normal[2]);
@@ -27,7 +29,8 @@ RigidWalls::RigidWalls(const model::Model& m) {
     Wall out;
     out.shape = w.shape;
     out.radius = 0.5 * w.diameter;
-    if (w.shape != 0 && !(out.radius > 0)) throw std::runtime_error(what + ": the diameter must be > 0");
+    if ((w.shape == 1 || w.shape == 2) && !(out.radius > 0))
+      throw std::runtime_error(what + ": the diameter must be > 0");
     out.node = w.node;
     out.slide = w.slide;
     out.friction = w.slide == 2 ? w.friction : 0.0;
@@ -35,6 +38,21 @@ RigidWalls::RigidWalls(const model::Model& m) {
     out.point = w.m;
     out.normal = {w.normal[0] / nn, w.normal[1] / nn, w.normal[2] / nn};
     out.v0 = w.v0;
+    if (w.shape == 3) {
+      for (std::size_t d = 0; d < 3; ++d) {
+        out.edge1[d] = w.m1[d] - w.m[d];
+        out.edge2[d] = w.m2[d] - w.m[d];
+      }
+      const auto& a = out.edge1;
+      const auto& b = out.edge2;
+      out.edge12 = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      out.edge12_sq =
+          out.edge12[0] * out.edge12[0] + out.edge12[1] * out.edge12[1] + out.edge12[2] * out.edge12[2];
+      if (!(out.edge12_sq > 0)) throw std::runtime_error(what + ": the parallelogram has no area");
+      out.vn_prev = w.node != model::kNone
+                        ? w.v0[0] * out.normal[0] + w.v0[1] * out.normal[1] + w.v0[2] * out.normal[2]
+                        : 0.0;
+    }
     out.secondary = w.secondary;
     walls_.push_back(std::move(out));
     RigidWallOutput o;
@@ -99,6 +117,32 @@ bool RigidWalls::curved_contact(const Wall& w, const NodeState& s, std::size_t n
   return true;
 }
 
+bool RigidWalls::parallelogram_contact(const Wall& w, const NodeState& s, std::size_t n, double vsx,
+                                       double vsy, double vsz, double dt1, double dt2, double xw0x,
+                                       double xw0y, double xw0z, double vwx, double vwy, double vwz,
+                                       double tol_wall, double& v_push) {
+  const auto& e1 = w.edge1;
+  const auto& e2 = w.edge2;
+  const auto& s12 = w.edge12;
+  const double nx = w.normal[0], ny = w.normal[1], nz = w.normal[2];
+  const double dx0 = s.x[n] - xw0x, dy0 = s.y[n] - xw0y, dz0 = s.z[n] - xw0z;
+  const double rvx = vsx - vwx, rvy = vsy - vwy, rvz = vsz - vwz;
+  const double rvn = rvx * nx + rvy * ny + rvz * nz;
+  const double dp0 = dx0 * nx + dy0 * ny + dz0 * nz;
+  const double dp = dp0 + rvn * dt2;
+  const double tol = 2.0 * dt1 * std::max(std::abs(rvn), tol_wall);
+  if (dp > 0 || dp0 <= -tol) return false;
+  // The predicted point projected on the plane, c = a e1 + b e2: e1 x c = b s12 and c x e2 = a s12.
+  const double cx = dx0 + rvx * dt2 - dp * nx, cy = dy0 + rvy * dt2 - dp * ny, cz = dz0 + rvz * dt2 - dp * nz;
+  const double b1 = e1[1] * cz - e1[2] * cy, b2 = e1[2] * cx - e1[0] * cz, b3 = e1[0] * cy - e1[1] * cx;
+  if (s12[0] * b1 + s12[1] * b2 + s12[2] * b3 < 0 || b1 * b1 + b2 * b2 + b3 * b3 > w.edge12_sq) return false;
+  const double a1 = cy * e2[2] - cz * e2[1], a2 = cz * e2[0] - cx * e2[2], a3 = cx * e2[1] - cy * e2[0];
+  if (s12[0] * a1 + s12[1] * a2 + s12[2] * a3 < 0 || a1 * a1 + a2 * a2 + a3 * a3 > w.edge12_sq) return false;
+  if (rvn > 0 && dp0 > 0) return false;  // separating, above the wall
+  v_push = dt2 > 0 ? -std::min(dp0, 0.0) / dt2 : 0.0;
+  return true;
+}
+
 double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
   const double dt12 = 0.5 * (dt1 + dt2);
   const double fact = dt12 != 0 ? 1.0 / dt12 : 0.0;
@@ -122,6 +166,10 @@ double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
       xwy = s.y[m] + vwy * dt2;
       xwz = s.z[m] + vwz * dt2;
     }
+    // Parallelogram: the change of the wall's normal velocity since the last cycle widens the tolerance.
+    const double vn = vwx * ax_ + vwy * ay_ + vwz * az_;
+    const double tol_wall = std::abs(vn - w.vn_prev);
+    if (w.shape == 3) w.vn_prev = vn;
     const double mu2 = w.friction * w.friction;
     double fnx = 0, fny = 0, fnz = 0, ftx = 0, fty = 0, ftz = 0;
     double contact_mass = 0, w_normal = 0, w_tangential = 0;
@@ -132,7 +180,12 @@ double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
       const double vsx = s.vx[n] + s.ax[n] * dt12, vsy = s.vy[n] + s.ay[n] * dt12,
                    vsz = s.vz[n] + s.az[n] * dt12;
       double nx = ax_, ny = ay_, nz = az_;
-      if (w.shape == 0) {
+      double vp = 0;  // normal velocity relative to the wall after the contact (parallelogram push-back)
+      if (w.shape == 3) {
+        if (!parallelogram_contact(w, s, n, vsx, vsy, vsz, dt1, dt2, xw0x, xw0y, xw0z, vwx, vwy, vwz,
+                                   tol_wall, vp))
+          continue;
+      } else if (w.shape == 0) {
         const double gap = (s.x[n] + vsx * dt2 - xwx) * nx + (s.y[n] + vsy * dt2 - xwy) * ny +
                            (s.z[n] + vsz * dt2 - xwz) * nz;
         if (gap > 0) continue;
@@ -146,34 +199,35 @@ double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
       const double rvx = s.vx[n] - vwx, rvy = s.vy[n] - vwy, rvz = s.vz[n] - vwz;
       const double u = rvx * nx + rvy * ny + rvz * nz;
       const double p = s.ax[n] * nx + s.ay[n] * ny + s.az[n] * nz;
-      const double fn = m * (u + p * dt12);
+      const double fn = m * (u + p * dt12 - vp);
       const double fx = fn * nx, fy = fn * ny, fz = fn * nz;
       w_normal -= fact * u * fn;
       fnx += fx;
       fny += fy;
       fnz += fz;
       contact_mass += m;
+      const double du = u - vp;  // normal velocity removed
       if (w.slide == 0) {
         s.ax[n] -= p * nx;
         s.ay[n] -= p * ny;
         s.az[n] -= p * nz;
-        s.vx[n] -= u * nx;
-        s.vy[n] -= u * ny;
-        s.vz[n] -= u * nz;
+        s.vx[n] -= du * nx;
+        s.vy[n] -= du * ny;
+        s.vz[n] -= du * nz;
         continue;
       }
       // Tangential impulse that would stop the node relative to the wall.
-      double tx = (rvx + s.ax[n] * dt12) * m - fx;
-      double ty = (rvy + s.ay[n] * dt12) * m - fy;
-      double tz = (rvz + s.az[n] * dt12) * m - fz;
+      double tx = (rvx + s.ax[n] * dt12 - vp * nx) * m - fx;
+      double ty = (rvy + s.ay[n] * dt12 - vp * ny) * m - fy;
+      double tz = (rvz + s.az[n] * dt12 - vp * nz) * m - fz;
       const double ft2 = tx * tx + ty * ty + tz * tz;
       const double fn2 = fx * fx + fy * fy + fz * fz;
       if (w.slide == 1 || ft2 <= mu2 * fn2 || !(m > 0)) {
         // Tied, or sticking.
         s.ax[n] = s.ay[n] = s.az[n] = 0;
-        s.vx[n] = vwx;
-        s.vy[n] = vwy;
-        s.vz[n] = vwz;
+        s.vx[n] = vwx + vp * nx;
+        s.vy[n] = vwy + vp * ny;
+        s.vz[n] = vwz + vp * nz;
       } else {
         // Slip: the tangential impulse is limited to mu |Fn|.
         const double c = w.friction * std::sqrt(fn2 / ft2);
@@ -184,9 +238,9 @@ double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
         s.ax[n] -= p * nx + tx * inv;
         s.ay[n] -= p * ny + ty * inv;
         s.az[n] -= p * nz + tz * inv;
-        s.vx[n] -= u * nx;
-        s.vy[n] -= u * ny;
-        s.vz[n] -= u * nz;
+        s.vx[n] -= du * nx;
+        s.vy[n] -= du * ny;
+        s.vz[n] -= du * nz;
         w_tangential -= (s.vx[n] - vwx) * tx + (s.vy[n] - vwy) * ty + (s.vz[n] - vwz) * tz;
       }
       ftx += tx;

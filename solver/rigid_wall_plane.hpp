@@ -18,13 +18,24 @@
 //                        tangential work W += -(v - v_w).Ft  (v after the normal correction).
 // Wall force of the cycle (output, force of the nodes ON the wall): F = sum(Fn + Ft) / dt12; the
 // normal and tangential parts are kept separately, and their impulses are accumulated for time history.
+// /RWALL/PARAL (rgwalp.F): the plane law above on the parallelogram of corner x_w and edges e1 = M1 - M,
+// e2 = M2 - M (carried along by a moving wall, never rotated), normal n = e1 x e2 / |e1 x e2|:
+//     d0 = (x - x_w0).n (x_w0 the wall point now), v_r = v* - v_w, d* = d0 + (v_r.n) dt2,
+//     tol = 2 dt1 max(|v_r.n|, |v_w.n - v_w.n of the last cycle|);
+//   free if d* > 0 or d0 <= -tol (a node well behind the wall passes it), or if the point
+//   c = x - x_w0 + v_r dt2 - d* n projected on the plane is outside the parallelogram: c = a e1 + b e2 with
+//   a or b outside [0, 1] (Radioss's cross-product tests); free as well when separating (v_r.n > 0) above
+//   the wall (d0 > 0). A node found behind the wall (d0 < 0) is also brought back onto it within the step:
+//   the normal velocity it takes is v_p = -min(d0, 0)/dt2 relative to the wall instead of 0, so
+//   Fn = m (u + p dt12 - v_p) n,  v <- v - (u - v_p) n,  tied or stuck: v <- v_w + v_p n, and the tangential
+//   impulse is m ((v - v_w) + a dt12 - v_p n) - Fn. Radioss does not filter its friction (ifq is ignored).
 // Moving wall dynamics (RGWALF): the force of the previous cycle acts on the wall node with the masses
 // of the nodes that were in contact added to its inertia,
 //     a_N <- (m_N a_N + F_prev) / (m_N + sum m_contact,prev)          (apply_wall_node_forces).
 // This lagged coupling is Radioss's; it does not conserve momentum exactly when contact nodes separate
 // at once (error m^2 V / (m_N + m) for one node of mass m hit at speed V).
 // Not supported (construction throws std::runtime_error naming the wall): Iform 1 (penalty), friction
-// filtering (ifq != 0), a slide value other than 0, 1, 2.
+// filtering (ifq != 0, except on a parallelogram, which ignores it), a slide value other than 0, 1, 2.
 #pragma once
 
 #include <array>
@@ -71,8 +82,11 @@ class RigidWalls {
  private:
   struct Wall {
     std::int32_t node = model::kNone;  // moving wall node
-    int shape = 0;                     // 0 plane (normal), 1 cylinder (axis `normal`), 2 sphere
-    double radius = 0;                 // cylinder and sphere
+    int shape = 0;      // 0 plane (normal), 1 cylinder (axis `normal`), 2 sphere, 3 parallelogram
+    double radius = 0;  // cylinder and sphere
+    std::array<double, 3> edge1{}, edge2{}, edge12{};  // parallelogram: M1 - M, M2 - M, edge1 x edge2
+    double edge12_sq = 0;                              // |edge1 x edge2|^2
+    double vn_prev = 0;                                // parallelogram: v_w.n of the last cycle
     int slide = 0;
     double friction = 0, added_mass = 0;
     std::array<double, 3> point{}, normal{}, v0{};
@@ -83,6 +97,10 @@ class RigidWalls {
   static bool curved_contact(const Wall& w, const NodeState& s, std::size_t n, double vsx, double vsy,
                              double vsz, double dt2, double xwx, double xwy, double xwz, double xw0x,
                              double xw0y, double xw0z, double& nx, double& ny, double& nz);
+  // Parallelogram: whether the node meets the wall this cycle (and its push-back velocity v_p).
+  static bool parallelogram_contact(const Wall& w, const NodeState& s, std::size_t n, double vsx, double vsy,
+                                    double vsz, double dt1, double dt2, double xw0x, double xw0y, double xw0z,
+                                    double vwx, double vwy, double vwz, double tol_wall, double& v_push);
   std::vector<Wall> walls_;
   std::vector<RigidWallOutput> out_;
 };

@@ -111,10 +111,17 @@ struct NodeGroup {
   std::vector<std::int32_t> nodes;  // sorted, unique dense node indices
 };
 
+// /BOX/RECTA (axis-aligned), /BOX/CYLIN (finite cylinder) and /BOX/SPHER: one id space. A point on the
+// boundary is inside (OpenRadioss starter model/box/rdbox.F).
+enum class BoxShape : std::uint8_t { Recta = 0, Cylinder = 1, Sphere = 2 };
 struct Box {
   std::int64_t id = 0;
   std::string title;
-  std::array<double, 3> lo{}, hi{};
+  BoxShape shape = BoxShape::Recta;
+  // Recta: the lowest and highest corners. Cylinder: the centres of its two end faces (the axis runs from p1
+  // to p2). Sphere: p1 is the centre.
+  std::array<double, 3> p1{}, p2{};
+  double diameter = 0;  // cylinder and sphere
 };
 
 // A main-surface segment. Triangles repeat their third node (n4 == n3).
@@ -171,6 +178,20 @@ struct ImposedVelocity {
   double ascale_x = 1, fscale_y = 1, t_start = 0, t_stop = kNever;
   // /IMPDISP: the function gives the displacement from the initial position, not the velocity.
   bool displacement = false;
+};
+
+// /IMPDISP/FGEO, "prescribed final geometry" (OpenRadioss read_impdisp_fgeo.F, fixfingeo.F): each node
+// moves along the straight line from its initial position X0 to its target XF; the displacement along
+// u = (XF - X0)/|XF - X0| is |XF - X0| f(t * ascale_x) (Radioss multiplies the time by Ascale here, where
+// /IMPDISP divides by it), and the whole acceleration of the node is replaced by the one along u.
+struct ImposedFinalGeometry {
+  std::int64_t id = 0;
+  std::string title;
+  std::int32_t function = kNone;
+  std::int64_t sensor = 0;
+  double ascale_x = 1, t_start = 0, t_stop = kNever;
+  std::vector<std::int32_t> nodes;             // dense node indices, in the deck's order
+  std::vector<std::array<double, 3>> targets;  // XF of each node
 };
 
 // /ADMAS/0 (Mass added to each node of the group) and /ADMAS/1 (Mass shared equally by its nodes).
@@ -232,8 +253,11 @@ struct RigidWall {
   double distance = 0, friction = 0, diameter = 0, ffac = 0, mass = 0;
   std::array<double, 3> m{}, m1{}, v0{}, normal{};
   std::vector<std::int32_t> secondary;  // resolved secondary nodes (group1 + distance - group2)
-  int shape =
-      0;  // 0 /RWALL/PLANE (normal), 1 /RWALL/CYL (axis M -> M1 in `normal`), 2 /RWALL/SPHER (centre M)
+  // 0 /RWALL/PLANE (normal), 1 /RWALL/CYL (axis M -> M1 in `normal`), 2 /RWALL/SPHER (centre M),
+  // 3 /RWALL/PARAL (the parallelogram of corner M and edges M1 - M, M2 - M; `normal` (M1 - M) x (M2 - M),
+  // unit). For a moving wall M is the wall node's initial position.
+  int shape = 0;
+  std::array<double, 3> m2{};  // /RWALL/PARAL: the third corner
 };
 
 struct RigidBody {
@@ -366,6 +390,7 @@ struct Model {
   std::vector<Function> functions;
   std::vector<BoundaryCondition> bcs;
   std::vector<ImposedVelocity> imposed_velocities;
+  std::vector<ImposedFinalGeometry> imposed_final_geometries;
   std::vector<InitialVelocity> initial_velocities;
   std::vector<ConcentratedLoad> concentrated_loads;
   std::vector<PressureLoad> pressure_loads;

@@ -92,6 +92,22 @@ std::string box(int id, Vec3 a, Vec3 b) {
          Line().put(b[0], 1, 20).put(b[1], 21, 40).put(b[2], 41, 60).str() + "\n";
 }
 
+// A /BOX/CYLIN (axis from a to b, diameter d; with nodes n1 and n2 when given) and a /BOX/SPHER.
+std::string cylinder(int id, Vec3 a, Vec3 b, double d, long long n1 = 0, long long n2 = 0) {
+  Line l;
+  if (n1) l.put(n1, 1, 10);
+  if (n2) l.put(n2, 11, 20);
+  return "/BOX/CYLIN/" + std::to_string(id) + "\ncylinder\n" + l.put(d, 31, 50).str() + "\n" +
+         Line().put(a[0], 1, 20).put(a[1], 21, 40).put(a[2], 41, 60).str() + "\n" +
+         Line().put(b[0], 1, 20).put(b[1], 21, 40).put(b[2], 41, 60).str() + "\n";
+}
+std::string sphere(int id, Vec3 c, double d, long long n1 = 0) {
+  Line l;
+  if (n1) l.put(n1, 1, 10);
+  return "/BOX/SPHER/" + std::to_string(id) + "\nsphere\n" + l.put(d, 31, 50).str() + "\n" +
+         Line().put(c[0], 1, 20).put(c[1], 21, 40).put(c[2], 41, 60).str() + "\n";
+}
+
 std::string kw(const std::string& head, std::initializer_list<long long> ids) {
   return head + "\ntitle\n" + ids_line(ids) + "\n";
 }
@@ -268,6 +284,59 @@ TEST_CASE("BOX takes the elements with every node in the box, BOX2 those with on
   for (const auto& d : b->diags.items())
     ignored += d.code == radx::Diag::ExtraData && d.severity == radx::Severity::Warning;
   CHECK(ignored == 3);  // 4 in /GRSH3N/BOX/2; -3 and 3 in /GRSHEL/BOX/5
+}
+
+TEST_CASE("cylinder and sphere boxes select nodes and elements as the rectangular box does",
+          "[element_groups]") {
+  // Hand counts on the deck's grid: plate nodes 1 + i + 4 j at (i, j, 0), shell 1 + i + 3 j the unit square
+  // of corner (i, j); brick nodes at (i, j, 1 + k), brick 31 + i + 2 j + 4 k the unit cube of corner
+  // (i, j, 1 + k); triangle nodes 201.. at (i, j, -1). Boundaries are inside.
+  // Sphere 1: centre (1, 1, 0), D = 2: the plate nodes at distance <= 1 (2, 5, 6, 7, 10), the brick node
+  // (1, 1, 1) = 105 and the triangle node (1, 1, -1) = 205. Sphere 2: the same centre from node 6. Sphere 3:
+  // D = 2.83 (radius just above sqrt(2)): shells 1, 2, 4, 5 lie in it. Sphere 4: centre (1, 0.5, -1), D
+  // = 2.4, holds the six triangle nodes. Cylinder 5: the vertical axis (1, 1), z from 1 to 2, D = 2.83: the
+  // 18 brick nodes of the lower layer, so the lower bricks 31..34 wholly, every brick with a node. Cylinder
+  // 6: the plate's diagonal from (0, 0) to (4, 4), D = 0.2: the diagonal nodes 1, 6, 11, 16. Cylinder 7: from
+  // node 6 to node 16, the same diagonal cut at (1, 1): 6, 11, 16 (its base node on the end face is inside).
+  // Cylinder 8: N1 only, so its coordinates (those of cylinder 6) are read, with a warning.
+  const double r2 = 2.83;
+  const auto b = build(
+      sphere(1, {1, 1, 0}, 2.0) + sphere(2, {9, 9, 9}, 2.0, 6) + sphere(3, {1, 1, 0}, r2) +
+      sphere(4, {1, 0.5, -1}, 2.4) + cylinder(5, {1, 1, 1}, {1, 1, 2}, r2) +
+      cylinder(6, {0, 0, 0}, {4, 4, 0}, 0.2) + cylinder(7, {9, 9, 9}, {8, 8, 8}, 0.2, 6, 16) +
+      cylinder(8, {0, 0, 0}, {4, 4, 0}, 0.2, 6) + kw("/GRNOD/BOX/1", {1}) + kw("/GRNOD/BOX/2", {2}) +
+      kw("/GRNOD/BOX/5", {5}) + kw("/GRNOD/BOX/6", {6}) + kw("/GRNOD/BOX/7", {7}) + kw("/GRNOD/BOX/8", {8}) +
+      kw("/GRNOD/BOX/9", {1, 6}) + kw("/GRSHEL/BOX/1", {3}) + kw("/GRSHEL/BOX2/2", {1}) +
+      kw("/GRSH3N/BOX/1", {4}) + kw("/GRBRIC/BOX/1", {5}) + kw("/GRBRIC/BOX2/2", {5}));
+  INFO(b->report());
+  std::size_t errors = 0, lone = 0;
+  for (const auto& d : b->diags.items()) {
+    errors += d.severity == radx::Severity::Error;
+    lone += d.code == radx::Diag::InconsistentValues && d.severity == radx::Severity::Warning;
+  }
+  CHECK(errors == 0);
+  CHECK(lone == 1);
+  CHECK(b->nodes(1) == std::set<long long>{2, 5, 6, 7, 10, 105, 205});
+  CHECK(b->nodes(2) == b->nodes(1));
+  CHECK(b->nodes(5) == range(101, 118));
+  CHECK(b->nodes(6) == std::set<long long>{1, 6, 11, 16});
+  CHECK(b->nodes(7) == std::set<long long>{6, 11, 16});
+  CHECK(b->nodes(8) == b->nodes(6));
+  CHECK(b->nodes(9) == std::set<long long>{1, 2, 5, 6, 7, 10, 11, 16, 105, 205});  // union of two shapes
+  CHECK(b->elements(ElementType::Shell4, 1) == std::set<long long>{1, 2, 4, 5});
+  CHECK(b->elements(ElementType::Shell4, 2) == range(1, 8));  // every shell with a node of sphere 1
+  CHECK(b->elements(ElementType::Shell3, 1) == range(21, 24));
+  CHECK(b->elements(ElementType::Brick8, 1) == range(31, 34));
+  CHECK(b->elements(ElementType::Brick8, 2) == range(31, 38));
+}
+
+TEST_CASE("boxes share one id space, a cylinder needs an axis and a diameter", "[element_groups]") {
+  const auto b = build(box(1, {0, 0, 0}, {1, 1, 1}) + sphere(1, {0, 0, 0}, 1.0) +
+                       cylinder(2, {1, 1, 1}, {1, 1, 1}, 1.0) + cylinder(3, {0, 0, 0}, {0, 0, 1}, 0.0));
+  INFO(b->report());
+  CHECK(has(b->diags, radx::Diag::DuplicateId));
+  CHECK(has(b->diags, radx::Diag::InconsistentValues));    // cylinder 2: P1 = P2
+  CHECK(has(b->diags, radx::Diag::RequiredValueMissing));  // cylinder 3: no diameter
 }
 
 TEST_CASE("a loop of element groups, missing ids and negative element ids are errors at their lines",

@@ -433,6 +433,54 @@ TEST_CASE("IMPDISP: the node is at X0 + u(t) at every step end, under a force an
   }
 }
 
+TEST_CASE(
+    "IMPDISP/FGEO: each node runs the straight line to its final position, at X0 + (XF - X0) f(t Ascale)",
+    "[loads]") {
+  // Node 0 from (1, 2, 3) to (4, 6, 3): D = 5 along u = (0.6, 0.8, 0); f the ramp 0 -> 1 over x in [0, 1]
+  // with Ascale = 2, so it arrives at t = 0.5 (Radioss evaluates f at t * Ascale) and stays. Node 1's final
+  // position is its own: it is held. Gravity pulls both along -Z, across the lines: the acceleration across
+  // the line is removed, so neither leaves it. Varying step.
+  auto md = nodes_model({{1.0, 2.0, 3.0}, {0.5, 0.5, 0.5}});
+  m::ImposedFinalGeometry g;
+  g.id = 10;
+  g.function = add_function(md, {0.0, 1.0, 10.0}, {0.0, 1.0, 1.0});
+  g.ascale_x = 2.0;
+  g.nodes = {0, 1};
+  g.targets = {{4.0, 6.0, 3.0}, {0.5, 0.5, 0.5}};
+  md.imposed_final_geometries.push_back(g);
+  m::Gravity gr;
+  gr.id = 1;
+  gr.dir = 2;
+  gr.fscale_y = -9.81;
+  md.gravities.push_back(gr);
+  auto s = state_of(md, {2.0, 1.0});
+  const sv::SkewFrames frames(md);
+  sv::ImposedVelocities impvel(md, frames);
+  sv::ExternalLoads loads(md, frames);
+  double t = 0, dt1 = 0;
+  for (int k = 0; k < 700; ++k) {
+    zero_forces(s);
+    (void)loads.apply(s, t, dt1);
+    accelerations(s);
+    const double dt2 = step(k);
+    (void)impvel.apply(s, t, dt1, dt2);
+    update(s, dt1, dt2);
+    t += dt2;
+    dt1 = dt2;
+    const double f = std::min(2.0 * t, 1.0);
+    // Exact up to round-off of the coordinates (a few units).
+    CHECK(close(s.x[0], 1.0 + 3.0 * f, 1e-12, 6.0));
+    CHECK(close(s.y[0], 2.0 + 4.0 * f, 1e-12, 6.0));
+    CHECK(s.z[0] == 3.0);
+    CHECK(s.x[1] == 0.5);
+    CHECK(s.y[1] == 0.5);
+    CHECK(s.z[1] == 0.5);
+  }
+  CHECK(t > 0.6);  // past the arrival: the node rests at its final position
+  CHECK(close(s.x[0], 4.0, 1e-12, 6.0));
+  CHECK(close(s.y[0], 6.0, 1e-12, 6.0));
+}
+
 TEST_CASE("IMPVEL only acts between Tstart and Tstop", "[loads]") {
   auto md = nodes_model({{0, 0, 0}});
   m::ImposedVelocity iv;
@@ -726,6 +774,78 @@ TEST_CASE("sphere and cylinder walls: the radial velocity is removed on contact,
       CHECK(s.vz[0] == vz0);       // along the axis: tangential, kept
       CHECK(rmin >= 1.0 - 1e-12);  // never inside
       CHECK(close(work, -0.5, 1e-9));
+    }
+  }
+}
+
+TEST_CASE(
+    "parallelogram wall: a node hitting inside stops, nodes beside it fly on, a node behind is put back",
+    "[loads]") {
+  // The fixed parallelogram of corner M = 0 and edges e1 = (2, 0, 0), e2 = (1, 1, 0) (the corners (0, 0),
+  // (2, 0), (3, 1), (1, 1) of the plane z = 0; normal e1 x e2 along +Z). Node 0 comes down at (1.5, 0.5), the
+  // point 0.5 e1 + 0.5 e2: inside, it hits at cycle 10 (its predicted position crosses z = 0 then, as for the
+  // plane wall). Nodes 1 and 2 come down at (0.2, 0.5) and (3.2, 0.5): inside the parallelogram's bounding
+  // box but outside it (a = -0.15 and 1.35 on e1), they fly on freely, z = z0 - v0 t. Node 3 starts 0.0004
+  // behind the wall going down; at cycle 1 (dt1 > 0) it is within the tolerance 2 dt1 |v.n| and comes back
+  // onto the plane in one step: it leaves with the normal velocity 0.0014 / dt.
+  const double z0 = 0.01 + 1e-9, v0 = 1.0, vt = 0.3, dt = 1e-3;
+  for (const int slide : {0, 1}) {
+    DYNAMIC_SECTION("slide " << slide) {
+      auto md = nodes_model({{1.5, 0.5, z0}, {0.2, 0.5, z0}, {3.2, 0.5, z0}, {1.5, 0.5, -0.0004}});
+      m::RigidWall w;
+      w.id = 1;
+      w.shape = 3;
+      w.slide = slide;
+      w.m = {0, 0, 0};
+      w.m1 = {2, 0, 0};
+      w.m2 = {1, 1, 0};
+      w.normal = {0, 0, 1};
+      w.secondary = {0, 1, 2, 3};
+      md.rigid_walls.push_back(w);
+      const double mass = 2.0;
+      auto s = state_of(md, {mass, 1.0, 1.0, 1.0});
+      for (std::size_t n = 0; n < 3; ++n) {
+        s.vx[n] = vt;
+        s.vz[n] = -v0;
+      }
+      s.vz[3] = -v0;
+      sv::RigidWalls walls(md);
+      walls.initialize(s);
+      double dt1 = 0, work = 0;
+      int impact_cycle = -1;
+      for (int k = 0; k < 30; ++k) {
+        zero_forces(s);
+        accelerations(s);
+        const double vz_before = s.vz[0];
+        work += walls.apply(s, dt1, dt);
+        if (vz_before != s.vz[0]) {
+          CHECK(impact_cycle == -1);  // one impact
+          impact_cycle = k;
+          // Force of the node on the wall: m u / dt12 along n, u = -v0.
+          CHECK(close(walls.outputs()[0].normal_force[2], -mass * v0 / dt, 1e-12));
+        }
+        update(s, dt1, dt);
+        dt1 = dt;
+        if (k == 1) {
+          // Node 3 put back on the plane (round-off of 0.0014) and leaving at 0.0014 / dt.
+          CHECK(std::abs(s.z[3]) <= 1e-15);
+          CHECK(close(s.vz[3], 0.0014 / dt, 1e-12));
+        }
+        for (const std::size_t n : {1, 2}) {  // free flight (round-off of the coordinate)
+          CHECK(close(s.z[n], z0 - v0 * dt * (k + 1), 1e-12, 1.0));
+          CHECK(close(s.x[n], md.nodes.x[n] + vt * dt * (k + 1), 1e-12, 4.0));
+        }
+      }
+      CHECK(impact_cycle == 10);
+      CHECK(s.vz[0] == 0.0);                      // perfectly plastic: the normal velocity is the wall's
+      CHECK(s.vx[0] == (slide == 0 ? vt : 0.0));  // sliding keeps the tangential velocity, tied stops it
+      CHECK(s.z[0] > 0.0);                        // stopped above the plane
+      CHECK(s.z[1] < -0.01);                      // the others went through the plane z = 0
+      CHECK(s.z[2] < -0.01);
+      // Normal work -1/2 dt1/dt12 m u (u - v_p) of each contact (dt1 = dt2): node 0, u = -v0, v_p = 0;
+      // node 3 at cycle 1, u = -v0, v_p = 1.4 v0. The tie books no tangential work (only a slip does).
+      const double w3 = -0.5 * 1.0 * v0 * (v0 + 1.4 * v0);
+      CHECK(close(work, -0.5 * mass * v0 * v0 + w3, 1e-9));
     }
   }
 }

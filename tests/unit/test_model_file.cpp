@@ -144,9 +144,16 @@ Model make_model() {
   Box box;
   box.id = v.big();
   box.title = "box";
-  box.lo = {v.real(), v.real(), v.real()};
-  box.hi = {v.real(), v.real(), v.real()};
-  m.boxes = {box};
+  box.p1 = {v.real(), v.real(), v.real()};
+  box.p2 = {v.real(), v.real(), v.real()};
+  Box cylinder;
+  cylinder.id = v.big();
+  cylinder.title = "cylinder";
+  cylinder.shape = BoxShape::Cylinder;
+  cylinder.p1 = {v.real(), v.real(), v.real()};
+  cylinder.p2 = {v.real(), v.real(), v.real()};
+  cylinder.diameter = v.real();
+  m.boxes = {box, cylinder};
 
   Surface surf;
   surf.id = v.big();
@@ -189,6 +196,16 @@ Model make_model() {
   iv.group = 1;
   iv.ascale_x = v.real(), iv.fscale_y = v.real(), iv.t_start = v.real(), iv.t_stop = v.real();
   m.imposed_velocities = {iv};
+
+  ImposedFinalGeometry fgeo;
+  fgeo.id = v.big();
+  fgeo.title = "final geometry";
+  fgeo.function = 0;
+  fgeo.sensor = v.big();
+  fgeo.ascale_x = v.real(), fgeo.t_start = v.real(), fgeo.t_stop = v.real();
+  fgeo.nodes = {2, 0};
+  fgeo.targets = {{v.real(), v.real(), v.real()}, {v.real(), v.real(), v.real()}};
+  m.imposed_final_geometries = {fgeo};
 
   InitialVelocity init;
   init.id = v.big();
@@ -243,6 +260,8 @@ Model make_model() {
   wall.v0 = {v.real(), v.real(), v.real()};
   wall.normal = {v.real(), v.real(), v.real()};
   wall.secondary = {0, 1, 2, 4};
+  wall.shape = 3;
+  wall.m2 = {v.real(), v.real(), v.real()};
   m.rigid_walls = {wall};
 
   radx::model::Accelerometer acc;
@@ -494,8 +513,10 @@ void check_same(const Model& a, const Model& b) {
   for (std::size_t i = 0; i < a.boxes.size(); ++i) {
     CHECK(a.boxes[i].id == b.boxes[i].id);
     CHECK(a.boxes[i].title == b.boxes[i].title);
-    CHECK(a.boxes[i].lo == b.boxes[i].lo);
-    CHECK(a.boxes[i].hi == b.boxes[i].hi);
+    CHECK(a.boxes[i].shape == b.boxes[i].shape);
+    CHECK(a.boxes[i].p1 == b.boxes[i].p1);
+    CHECK(a.boxes[i].p2 == b.boxes[i].p2);
+    CHECK(a.boxes[i].diameter == b.boxes[i].diameter);
   }
 
   REQUIRE(a.surfaces.size() == b.surfaces.size());
@@ -523,6 +544,21 @@ void check_same(const Model& a, const Model& b) {
     CHECK(a.bcs[i].fixed == b.bcs[i].fixed);
     CHECK(a.bcs[i].skew == b.bcs[i].skew);
     CHECK(a.bcs[i].group == b.bcs[i].group);
+  }
+
+  REQUIRE(a.imposed_final_geometries.size() == b.imposed_final_geometries.size());
+  for (std::size_t i = 0; i < a.imposed_final_geometries.size(); ++i) {
+    const ImposedFinalGeometry& x = a.imposed_final_geometries[i];
+    const ImposedFinalGeometry& y = b.imposed_final_geometries[i];
+    CHECK(x.id == y.id);
+    CHECK(x.title == y.title);
+    CHECK(x.function == y.function);
+    CHECK(x.sensor == y.sensor);
+    CHECK(x.ascale_x == y.ascale_x);
+    CHECK(x.t_start == y.t_start);
+    CHECK(x.t_stop == y.t_stop);
+    CHECK(x.nodes == y.nodes);
+    CHECK(x.targets == y.targets);
   }
 
   REQUIRE(a.imposed_velocities.size() == b.imposed_velocities.size());
@@ -635,6 +671,8 @@ void check_same(const Model& a, const Model& b) {
     CHECK(x.v0 == y.v0);
     CHECK(x.normal == y.normal);
     CHECK(x.secondary == y.secondary);
+    CHECK(x.shape == y.shape);
+    CHECK(x.m2 == y.m2);
   }
 
   REQUIRE(a.rigid_bodies.size() == b.rigid_bodies.size());

@@ -6,6 +6,7 @@
 // tests/scripts/check_th_outputs.py.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "parser/deck.hpp"
 #include "parser/model_builder.hpp"
 #include "solver/explicit_engine.hpp"
+#include "solver/kinematics_driver.hpp"
 #include "solver/time_history_values.hpp"
 #include "test_util.hpp"
 
@@ -220,4 +222,70 @@ TEST_CASE("/TH/RBODY of a body switched off by /RBODY/OFF: STATUS 0, no force, t
       CHECK(at("DX") > 0.0);
     }
   }
+}
+
+TEST_CASE("/TH/RWALL of a parallelogram wall: the impact force of the node hitting inside it, none beside it",
+          "[th]") {
+  // Point masses (m = 0.001 Mg each) 31 at (0.9, 0.5, -1) and 32 at (0.2, 0.5, -1) fall at v0 = 25 m/s onto
+  // the fixed parallelogram of corner (0, 0, -1.5) and edges (2, 0, 0), (1, 1, 0): node 31 lies over it
+  // (0.2 e1 + 0.5 e2), node 32 beside it (-0.15 e1 + 0.5 e2). The wall stops node 31 in one cycle (impulse
+  // -m v0 along Z, elements.md 7.1) and lets node 32 fall on: z = -1 - v0 t. The /TH/RWALL row of the impact
+  // cycle holds the force of the nodes on the wall, FN = impulse / dt12 (the wall's own output); every other
+  // row 0.
+  const double m0 = 0.001, v0 = 25000.0;
+  const std::string extra = "/NODE\n" + node(31, 0.9, 0.5, -1.0) + node(32, 0.2, 0.5, -1.0) +
+                            "/GRNOD/NODE/2\nfalling\n" + ints({31, 32}) + "/ADMAS/0/1\npoint masses\n" +
+                            Line().put(m0, 1, 20).put(2, 21, 30).str() + "\n" + "/INIVEL/TRA/1\nfall\n" +
+                            Line().put(-v0, 41, 60).put(2, 61, 70).str() + "\n" + "/RWALL/PARAL/7\nfloor\n" +
+                            ints({0, 0, 2, 0}) + "\n" +
+                            Line().put(0.0, 1, 20).put(0.0, 21, 40).put(-1.5, 41, 60).str() + "\n" +
+                            Line().put(2.0, 1, 20).put(0.0, 21, 40).put(-1.5, 41, 60).str() + "\n" +
+                            Line().put(1.0, 1, 20).put(1.0, 21, 40).put(-1.5, 41, 60).str() + "\n" +
+                            "/TH/RWALL/3\nwall\n" + vars({"DEF"}) + ints({7});
+  radx::test::TempDir dir;
+  radx::Diagnostics d;
+  const auto deck = radx::read_starter_deck(dir.write("th_0000.rad", deck_text(extra)), d);
+  const md::Model m = radx::build_model(deck, d);
+  const md::RunControls c =
+      radx::read_run_controls(dir.write("th_0001.rad", "/RUN/th/1\n0.00004\n/END\n"), d);
+  INFO(all_diags(d));
+  REQUIRE_FALSE(d.has_errors());
+  REQUIRE(m.rigid_walls.size() == 1u);
+  REQUIRE(m.rigid_walls[0].shape == 3);
+  const md::TimeHistoryGroup& g = group(m, 3);
+  REQUIRE(g.kind == md::ThKind::Rwall);
+  sv::ExplicitEngine eng(m, c, sv::EngineOptions(1));
+  const sv::ThGroupSampler sampler(eng, g);
+  std::vector<double> v(sampler.size());
+  auto at = [&](const std::string& name) {
+    const auto k = std::find(g.variables.begin(), g.variables.end(), name) - g.variables.begin();
+    REQUIRE(static_cast<std::size_t>(k) < g.variables.size());
+    return v[static_cast<std::size_t>(k)];
+  };
+  int impacts = 0;
+  const auto res = eng.run([&](const sv::CycleReport& r) {
+    sampler.sample(eng, r, v);
+    const auto& w = eng.kinematics().wall_outputs()[0];
+    if (at("FNZ") != 0.0) {
+      ++impacts;
+      CHECK(at("FNZ") == w.normal_force[2]);
+      CHECK(at("FNZ") < 0.0);  // the node pushes the wall down
+    }
+    CHECK(at("FNX") == 0.0);
+    CHECK(at("FNY") == 0.0);
+    CHECK(at("FTX") == 0.0);
+    CHECK(at("FTZ") == 0.0);
+    return true;
+  });
+  REQUIRE(res.time > 0.00003);  // past the impact at t = 0.5 mm / v0 = 2e-5 s
+  CHECK(impacts == 1);
+  // The impulse is m v0, to the round-off of the velocity.
+  CHECK(std::abs(eng.kinematics().wall_outputs()[0].normal_impulse[2] + m0 * v0) <= 1e-12 * m0 * v0);
+  const auto& s = eng.nodes();
+  const auto n31 = static_cast<std::size_t>(m.nodes.index.find(31));
+  const auto n32 = static_cast<std::size_t>(m.nodes.index.find(32));
+  CHECK(s.vz[n31] == 0.0);
+  CHECK(s.z[n31] > -1.5);
+  CHECK(s.vz[n32] == -v0);
+  CHECK(std::abs(s.z[n32] - (-1.0 - v0 * res.time)) <= 1e-12 * v0 * res.time);  // free flight, round-off
 }
