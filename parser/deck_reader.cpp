@@ -85,6 +85,20 @@ bool is_known_unsupported(const std::string& path) {
   return false;
 }
 
+// " (of /SENSOR radx reads /SENSOR/TIME)": the declared keywords of the family `root` (first path token),
+// when there are a few; empty otherwise.
+std::string family_hint(const std::string& root) {
+  const std::string prefix = "/" + root + "/";
+  std::vector<std::string_view> members;
+  for (const auto& k : schema::starter_keywords())
+    if (k.path.substr(0, prefix.size()) == prefix) members.push_back(k.path);
+  if (members.empty() || members.size() > 6) return {};
+  std::string list;
+  for (std::size_t i = 0; i < members.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == members.size() ? " and " : ", ") + std::string(members[i]);
+  return " (of /" + root + " radx reads " + list + ")";
+}
+
 std::string_view cell(std::string_view line, int first, int last) {
   const auto f = static_cast<std::size_t>(first - 1);
   if (line.size() <= f) return {};
@@ -485,9 +499,8 @@ class StarterReader {
       const std::string path = join_path(tokens, n);
       if (is_known_unsupported(path)) {
         diags_.error(Diag::UnsupportedKeyword, at(head.pos, 1), About{path},
-                     "the Radioss keyword " + path +
-                         " is not supported by radx; see docs/keywords.md for the "
-                         "keywords radx reads");
+                     "the Radioss keyword " + path + " is not supported by radx" + family_hint(tokens[0]) +
+                         "; see docs/keywords.md for the keywords radx reads");
       } else {
         diags_.error(Diag::UnknownKeyword, at(head.pos, 1), About{path},
                      "unknown keyword " + path +

@@ -578,6 +578,7 @@ model::Model ModelBuilder::build() {
   build_surfaces();        // before the groups: /GRNOD/SURF takes the nodes of surfaces
   build_groups();
   build_skews();
+  build_sensors();
   build_loads();
   build_rigid_walls();
   build_rigid_bodies();

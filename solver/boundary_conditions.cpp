@@ -5,6 +5,7 @@
 #include <string>
 
 #include "solver/functions.hpp"
+#include "solver/sensors.hpp"
 
 namespace radx::solver {
 
@@ -108,6 +109,7 @@ ImposedVelocities::ImposedVelocities(const model::Model& m) {
     if (iv.dir < 0 || iv.dir > 5) throw std::runtime_error(what + ": Dir must be X, Y, Z, XX, YY or ZZ");
     Entry e;
     e.f = m.functions[static_cast<std::size_t>(iv.function)];
+    e.sensor = m.sensor_index(iv.sensor);
     e.dir = iv.dir;
     e.displacement = iv.displacement;
     e.skewed = iv.skew != 0;
@@ -130,16 +132,22 @@ double ImposedVelocities::pending_work() const {
   return w;
 }
 
-double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) {
+double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2,
+                                std::span<const double> sensor_starts) {
   const double dt12 = 0.5 * (dt1 + dt2);
   double work = 0;
   for (const auto& e : entries_) {
-    const bool active = t >= e.t_start && t <= e.t_stop && dt12 > 0 && (!e.displacement || dt2 > 0);
+    const double tau = t - time_origin(e.sensor, sensor_starts);
+    const bool active =
+        t >= e.t_start && t <= e.t_stop && tau >= 0 && dt12 > 0 && (!e.displacement || dt2 > 0);
     // /IMPVEL: the velocity of the mid-step. /IMPDISP: the velocity that brings the node to its initial
-    // position plus the imposed displacement at the end of the step, u(t + dt2), whatever it lags now.
+    // position plus the imposed displacement at the end of the step, u(tau + dt2), whatever it lags now;
+    // under a sensor, after its first instant, the function's increment over the step.
     const double f_val = !active          ? 0.0
-                         : e.displacement ? scaled_function_value(e.f, t + dt2, e.ascale, e.fscale)
-                                          : scaled_function_value(e.f, t + 0.5 * dt2, e.ascale, e.fscale);
+                         : e.displacement ? scaled_function_value(e.f, tau + dt2, e.ascale, e.fscale)
+                                          : scaled_function_value(e.f, tau + 0.5 * dt2, e.ascale, e.fscale);
+    const bool increment = active && e.displacement && e.sensor != model::kNone && tau > 0;
+    const double f_now = increment ? scaled_function_value(e.f, tau, e.ascale, e.fscale) : 0.0;
     const bool rot = e.dir >= 3;
     const int d = rot ? e.dir - 3 : e.dir;
     const std::vector<double>& x = d == 0 ? s.x : d == 1 ? s.y : s.z;
@@ -177,7 +185,7 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) 
                      : s.ax[n] * u[0] + s.ay[n] * u[1] + s.az[n] * u[2];
         disp = (s.x[n] - s.x0[n]) * u[0] + (s.y[n] - s.y0[n]) * u[1] + (s.z[n] - s.z0[n]) * u[2];
       }
-      const double v_imp = e.displacement ? (f_val - disp) / dt2 : f_val;
+      const double v_imp = increment ? (f_val - f_now) / dt2 : e.displacement ? (f_val - disp) / dt2 : f_val;
       const double a_imp = (v_imp - v_along) / dt12;
       if (!e.skewed) {
         a[n] = a_imp;
@@ -211,6 +219,7 @@ InitialVelocities::InitialVelocities(const model::Model& m) {
       }
     }
     e.t_start = iv.t_start;
+    e.sensor = m.sensor_index(iv.sensor);
     e.rotational = iv.rotational;
     e.nodes =
         group_of(m, iv.group, (iv.rotational ? "/INIVEL/ROT/" : "/INIVEL/TRA/") + std::to_string(iv.id));
@@ -219,11 +228,17 @@ InitialVelocities::InitialVelocities(const model::Model& m) {
   remaining_ = entries_.size();
 }
 
-double InitialVelocities::apply(NodeState& s, double t) {
+double InitialVelocities::apply(NodeState& s, double t, std::span<const double> sensor_starts) {
   if (remaining_ == 0) return 0.0;
   double dke = 0;
   for (auto& e : entries_) {
-    if (e.applied || t < e.t_start) continue;
+    if (e.applied) continue;
+    // inivel_start.F90: the sensor's time alone when Tstart is 0, else the earlier of the two.
+    const double sensor_on = time_origin(e.sensor, sensor_starts);
+    const double at = e.sensor == model::kNone ? e.t_start
+                      : e.t_start == 0         ? sensor_on
+                                               : std::min(e.t_start, sensor_on);
+    if (t < at) continue;
     e.applied = true;
     --remaining_;
     auto& vx = e.rotational ? s.wx : s.vx;

@@ -23,12 +23,20 @@
 //             main node's), as /INIVEL/TRA otherwise.
 //   /INIVEL/TRA  v = (Vx, Vy, Vz) on the group's nodes, at t = 0 (Tstart = 0) or at the first cycle
 //             with t_n >= Tstart.
-// Skews, sensors and frames are 0 in a valid model (the starter rejects them). No allocation in the
-// per-cycle calls.
+// Sensors (solver/sensors.hpp; OpenRadioss fixvel.F, inivel_start.F90), T the sensor's activation time
+// (model::kNever while it is off), tau = t - T:
+//   /IMPVEL   also needs tau >= 0 (Tstart and Tstop still bound t itself); v_imp = Fscale_y f((tau + dt2/2) /
+//             Ascale_x): the function's time origin is the activation.
+//   /IMPDISP  also needs tau >= 0. At tau = 0 as without a sensor, v_imp = (u(tau + dt2) - (x^n - X0)) / dt2;
+//             for tau > 0 the displacement follows the function's increments from where the node was,
+//             v_imp = (u(tau + dt2) - u(tau)) / dt2 (fixvel.F's YC - YC0).
+//   /INIVEL   applied at the first cycle with t_n >= T (Tstart = 0), or >= min(Tstart, T).
+// Frames are 0 in a valid model (the starter rejects them). No allocation in the per-cycle calls.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "solver/model/model.hpp"
@@ -66,7 +74,8 @@ class ImposedVelocities {
   explicit ImposedVelocities(const model::Model& m);
   // Cycle step 5, after the first BoundaryConditions::apply. t = t_n. Returns the work booked now
   // (this cycle's dt1 part plus the previous cycle's dt2 part). Precondition: dt1 + dt2 > 0.
-  double apply(NodeState& s, double t, double dt1, double dt2);
+  // `sensor_starts`: Sensors::starts() (may be empty when no entry has a sensor).
+  double apply(NodeState& s, double t, double dt1, double dt2, std::span<const double> sensor_starts = {});
   // Work of the last cycle not booked yet (its dt2 part); the next apply() books it.
   [[nodiscard]] double pending_work() const;
   [[nodiscard]] bool empty() const { return entries_.empty(); }
@@ -79,9 +88,10 @@ class ImposedVelocities {
  private:
   struct Entry {
     model::Function f;
-    int dir = 0;                // 0..2 translation, 3..5 rotation
-    bool displacement = false;  // /IMPDISP: f gives the displacement from the initial position
-    bool skewed = false;        // the direction is axis dir % 3 of a skew: `axis` (global components)
+    std::int32_t sensor = model::kNone;  // dense index into model.sensors
+    int dir = 0;                         // 0..2 translation, 3..5 rotation
+    bool displacement = false;           // /IMPDISP: f gives the displacement from the initial position
+    bool skewed = false;  // the direction is axis dir % 3 of a skew: `axis` (global components)
     std::array<double, 3> axis{};
     double ascale = 1, fscale = 1, t_start = 0, t_stop = model::kNever;
     std::vector<std::int32_t> nodes;
@@ -94,17 +104,19 @@ class ImposedVelocities {
 class InitialVelocities {
  public:
   explicit InitialVelocities(const model::Model& m);
-  // Sets the velocity of every /INIVEL/TRA not applied yet whose Tstart <= t: call once with t = 0
-  // before cycle 0, then at the start of each cycle with t = t_n (cheap when nothing is pending).
-  // Returns the kinetic-energy change 1/2 m (|v_new|^2 - |v_old|^2) it caused: initial energy at t = 0,
-  // to be booked as external work when a later Tstart applies it.
-  double apply(NodeState& s, double t);
+  // Sets the velocity of every /INIVEL/TRA not applied yet whose time has come (Tstart, or its sensor's, see
+  // above): call once with t = 0 before cycle 0, then at the start of each cycle with t = t_n (cheap when
+  // nothing is pending). Returns the kinetic-energy change 1/2 m (|v_new|^2 - |v_old|^2) it caused: initial
+  // energy at t = 0, to be booked as external work when a later time applies it. `sensor_starts`:
+  // Sensors::starts() (may be empty when no entry has a sensor).
+  double apply(NodeState& s, double t, std::span<const double> sensor_starts = {});
   [[nodiscard]] bool pending() const { return remaining_ > 0; }
 
  private:
   struct Entry {
     std::array<double, 3> v{};
     double t_start = 0;
+    std::int32_t sensor = model::kNone;
     bool rotational = false;  // /INIVEL/ROT: sets the angular velocity
     bool applied = false;
     std::vector<std::int32_t> nodes;

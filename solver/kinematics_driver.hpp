@@ -7,6 +7,8 @@
 #include <array>
 #include <memory>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
@@ -19,7 +21,10 @@ class RigidBodies;
 
 class KinematicsDriver {
  public:
-  KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes);
+  // `sensor_starts`: Sensors::starts() of the run, read at every call (may be empty when the model has no
+  // sensor); it must outlive the driver.
+  KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes,
+                   std::span<const double> sensor_starts = {});
   ~KinematicsDriver();
   KinematicsDriver(const KinematicsDriver&) = delete;
   KinematicsDriver& operator=(const KinematicsDriver&) = delete;
@@ -45,12 +50,15 @@ class KinematicsDriver {
   [[nodiscard]] const std::vector<RigidWallOutput>& wall_outputs() const;
   // The rigid bodies formed in this run (not those switched off by /RBODY/OFF), read-only for outputs.
   [[nodiscard]] const RigidBodies& rigid_bodies() const;
+  // Rigid bodies released by their sensor since the last call, one line each; taken by the call.
+  std::vector<std::string> take_messages();
 
  private:
   struct Parts;
   const model::Model& model_;
   const model::RunControls& controls_;
   NodeState& nodes_;
+  std::span<const double> sensor_starts_;
   std::unique_ptr<Parts> parts_;
 };
 
