@@ -3,6 +3,7 @@
 #include "apps/engine_outputs.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -73,9 +74,9 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
         << "\n  run the starter first (radx-starter " << root << "_0000.rad), or give it with --model FILE\n";
     return 1;
   }
-  // /RBODY/ON and /RBODY/OFF name rigid bodies of the model. Every body is active at the start of a run
-  // (radx has no sensors), so ON keeps it and OFF leaves it out of this run; an id the model lacks switches
-  // nothing (a warning, as Radioss goes on too).
+  // /RBODY/ON and /RBODY/OFF name rigid bodies of the model. Every body is active at the start of a run (one
+  // with a sensor until the sensor releases it), so ON keeps it and OFF leaves it out of this run; an id the
+  // model lacks switches nothing (a warning, as Radioss goes on too).
   std::vector<std::int64_t> body_ids;
   for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
   Diagnostics model_diags;
@@ -160,6 +161,11 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
       for (const auto& m : engine.take_messages()) {
         listing_file << "  WARNING (cycle " << r.cycle << "): " << m << '\n';
         err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
+      }
+      for (const auto& m : engine.take_events()) {
+        char at[64];
+        std::snprintf(at, sizeof at, " (cycle %lld, t = %.5E)", static_cast<long long>(r.cycle), r.time);
+        listing.message(" " + m + at);
       }
       listing.progress(r.cycle, r.time, controls.t_stop, wall);
       if (!r.full) return true;

@@ -1,6 +1,7 @@
 // TYPE7 penalty contact, one cycle per call (type7-lagdt.md sections 4 and 5).
 //
-// For each interface active at t (Tstart <= t < Tstop), after a new candidate sort when due (4.8):
+// For each interface active at t (Tstart <= t < Tstop, and t >= the activation time of its sensor while the
+// sensor is on: OpenRadioss inttri.F, intfop2.F), after a new candidate sort when due (4.8):
 //   for each secondary node s (in order), over its candidate segments m (not containing s, not removed,
 //   not made inactive by Inacti 2): the closest point c of m (four triangles around the centroid for a
 //   quadrangle), d = |x_s - c|, weights h_1..h_4 of c; the pair is the candidate of smallest d.
@@ -35,15 +36,15 @@
 //   A node whose remaining gap (g - p)/g falls below 1e-6 cannot be held by the penalty: it is deactivated
 //   with a warning naming the node and the interface. IBC: at the node's first impact, its fixed X/Y/Z
 //   translations selected by IBCX/Y/Z are released.
-// Initial penetrations at Tstart > 0 (4.6): on the interface's first active cycle the nodes closer than the
-// gap get the Inacti treatment from the current coordinates (1: the node, 2: the segment leave; 3: the node
-// is moved out to the gap; 5, 6: reduced gap), reported once; at t = 0 the starter did it.
-// Energies: the work of each force kind over each step, W += 1/2 (F^{n-1} + F^n) . v_r^{n-1/2} dt1 (the
-// trapezoidal rule the engine uses for element and load work, consistent with its full-step kinetic
-// energy): elastic = -W_elastic (stored, returned as the pair opens), damping and friction = -W
-// (dissipated). So the energy balance of the engine closes with contact.
-// Forces are scattered node by node in a fixed order (secondary nodes in order, then their segments'
-// nodes), so the result does not depend on the thread count.
+// Initial penetrations at Tstart > 0, or under a sensor (4.6): on the interface's first active cycle the
+// nodes closer than the gap get the Inacti treatment from the current coordinates (1: the node, 2: the
+// segment leave; 3: the node is moved out to the gap; 5, 6: reduced gap), reported once; otherwise the
+// starter did it at t = 0. Energies: the work of each force kind over each step, W += 1/2 (F^{n-1} + F^n) .
+// v_r^{n-1/2} dt1 (the trapezoidal rule the engine uses for element and load work, consistent with its
+// full-step kinetic energy): elastic = -W_elastic (stored, returned as the pair opens), damping and friction
+// = -W (dissipated). So the energy balance of the engine closes with contact. Forces are scattered node by
+// node in a fixed order (secondary nodes in order, then their segments' nodes), so the result does not depend
+// on the thread count.
 #include "contact/type7_engine.hpp"
 
 #include <algorithm>
@@ -87,7 +88,9 @@ struct InterfaceState {
   std::vector<PairRecord> pairs;
   InterfaceResult result;
   double w_elastic = 0, w_damping = 0, w_friction = 0, w_lagrange = 0;
-  bool started = false;      // the first cycle inside [Tstart, Tstop) has been seen
+  bool started = false;    // the first cycle inside [Tstart, Tstop) has been seen
+  bool from_start = true;  // the starter's initial-penetration treatment holds (Tstart 0, no sensor)
+  std::int32_t sensor = model::kNone;  // dense index into model.sensors
   bool warned_held = false;  // a LAGDT pair kept on the penalty path by a kinematic condition was reported
   std::int32_t index = 0;    // position among the engine's interfaces (the friction law of its rows)
 };
@@ -377,8 +380,11 @@ struct Type7Contact::Impl {
       st.f_t.assign(ns, Vec3{});
       st.hit.assign(ns, 0);
       // The starter's initial-penetration treatment holds for an interface active from t = 0; with Tstart > 0
-      // the engine treats the penetrations it finds at Tstart instead (start_penetrations).
-      const bool from_start = !(in.t_start > 0);
+      // or a sensor the engine treats the penetrations it finds when the interface starts
+      // (start_penetrations).
+      st.sensor = m.sensor_index(in.sens_id);
+      const bool from_start = !(in.t_start > 0) && st.sensor == model::kNone;
+      st.from_start = from_start;
       for (const auto s : in.inactive_segments)
         if (from_start) st.segment_off[static_cast<std::size_t>(s)] = 1;
       for (const auto node : from_start ? in.inactive_nodes : std::vector<std::int32_t>{}) {
@@ -514,9 +520,10 @@ struct Type7Contact::Impl {
     return best;
   }
 
-  // type7-lagdt.md 4.6 at Tstart > 0 (the starter treated t = 0): nodes already closer than the gap when
-  // the interface starts get the Inacti treatment then, from the current coordinates.
-  void start_penetrations(InterfaceState& st, const ContactNodes& nodes) {
+  // type7-lagdt.md 4.6 at Tstart > 0 or under a sensor (the starter treated t = 0 otherwise): nodes already
+  // closer than the gap when the interface starts get the Inacti treatment then, from the current
+  // coordinates.
+  void start_penetrations(InterfaceState& st, const ContactNodes& nodes, double t) {
     const auto& in = *st.in;
     st.search->update(Coordinates{nodes.x, nodes.y, nodes.z}, true);
     const auto& cand = st.search->candidates();
@@ -563,26 +570,32 @@ struct Type7Contact::Impl {
     for (std::size_t k = 0; k < st.node_off.size(); ++k)
       if (st.node_off[k]) st.search->remove_node(static_cast<std::int32_t>(k));
     if (count > 0)
-      messages.push_back("interface " + std::to_string(in.id) + " starts (Tstart " +
-                         std::to_string(in.t_start) + ") with " + std::to_string(count) +
-                         " secondary node(s) closer than the gap, largest " + "penetration " +
-                         std::to_string(worst) + ": Inacti " + std::to_string(in.inacti) +
+      messages.push_back("interface " + std::to_string(in.id) + " starts at t = " + std::to_string(t) +
+                         (st.sensor == model::kNone ? " (Tstart)" : " (its sensor)") + " with " +
+                         std::to_string(count) + " secondary node(s) closer than the gap, largest " +
+                         "penetration " + std::to_string(worst) + ": Inacti " + std::to_string(in.inacti) +
                          (in.inacti == 0 ? " (no action: the penalty pushes them out)" : " applied"));
   }
 
   // One interface's pairs of the cycle: switched pairs into `switched`, penalty pairs into `pending` (applied
   // after settle_switches), pairs about to close add their stiffness.
-  void interface_cycle(InterfaceState& st, double t, double dt1, const ContactNodes& nodes) {
+  void interface_cycle(InterfaceState& st, double t, double dt1, const ContactNodes& nodes,
+                       std::span<const double> sensor_starts) {
     const auto& in = *st.in;
     st.pairs.clear();
     st.result.active_pairs = 0;
     st.result.normal_force = {0, 0, 0};
     st.result.tangential_force = {0, 0, 0};
     st.result.switched_pairs = 0;
+    if (st.sensor != model::kNone) {
+      if (static_cast<std::size_t>(st.sensor) >= sensor_starts.size())
+        throw std::logic_error("interface " + std::to_string(in.id) + ": no sensor state given");
+      if (t < sensor_starts[static_cast<std::size_t>(st.sensor)]) return;  // kNever while the sensor is off
+    }
     if (t < in.t_start || t >= in.t_stop) return;
     if (!st.started) {
       st.started = true;
-      if (in.t_start > 0) start_penetrations(st, nodes);
+      if (!st.from_start) start_penetrations(st, nodes, t);
     }
     st.search->update(Coordinates{nodes.x, nodes.y, nodes.z});
     const auto& cand = st.search->candidates();
@@ -780,7 +793,8 @@ bool Type7Contact::empty() const {
   return impl_->interfaces.empty();
 }
 
-ContactStep Type7Contact::compute(double t, double dt1, const ContactNodes& nodes) {
+ContactStep Type7Contact::compute(double t, double dt1, const ContactNodes& nodes,
+                                  std::span<const double> sensor_starts) {
   auto& s = *impl_;
   for (const auto n : s.touched) {
     const auto k = static_cast<std::size_t>(n);
@@ -795,7 +809,7 @@ ContactStep Type7Contact::compute(double t, double dt1, const ContactNodes& node
   s.switched_p.clear();
   for (auto& st : s.interfaces) {
     s.book_work(st, nodes, dt1);
-    s.interface_cycle(st, t, dt1, nodes);
+    s.interface_cycle(st, t, dt1, nodes, sensor_starts);
   }
   s.settle_switches(nodes);
   ContactStep vote;

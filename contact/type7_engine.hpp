@@ -91,8 +91,11 @@ class Type7Contact {
   // Cycle step 2 at time t (dt1 = t^n - t^{n-1}): books the work of the previous cycle's forces over the
   // step just taken, sorts when due, computes the penalty, damping and friction forces of every active
   // pair into force() and returns the contact time-step vote. Messages (a node deactivated, removed)
-  // accumulate in messages().
-  ContactStep compute(double t, double dt1, const ContactNodes& nodes);
+  // accumulate in messages(). `sensor_starts`: per model sensor, the time it switched on (model::kNever
+  // while it is off; the engine's Sensors::starts()): an interface with a sensor acts only from then on. May
+  // be empty when no interface has a sensor.
+  ContactStep compute(double t, double dt1, const ContactNodes& nodes,
+                      std::span<const double> sensor_starts = {});
 
   // Cycle step 6 (dt1 = t^n - t^{n-1}, dt2 = t^{n+1} - t^n): the switched pairs of this cycle get their
   // Lagrange multipliers; the accelerations are corrected in place, the multipliers' forces join force()

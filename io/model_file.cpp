@@ -279,6 +279,8 @@ RADX_SCHEMA(RigidBody, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(main_node),
             RADX_FIELD(secondary));
 RADX_SCHEMA(Accelerometer, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(node), RADX_FIELD(skew),
             RADX_FIELD(fcut));
+RADX_SCHEMA(Sensor, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(type), RADX_FIELD(t_delay),
+            RADX_FIELD(t_stop));
 RADX_SCHEMA(Section, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(n1), RADX_FIELD(n2), RADX_FIELD(n3),
             RADX_FIELD(node_group), RADX_FIELD(iframe), RADX_FIELD(nodes), RADX_FIELD(shells),
             RADX_FIELD(shells3), RADX_FIELD(bricks));
@@ -306,7 +308,7 @@ RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RAD
 
 // Written member by member below (write_radx, read_file, write_block, read_block): a new member of these
 // structs must be added there.
-static_assert(member_count<Model>() == 35, "model::Model changed: update write_radx and read_file");
+static_assert(member_count<Model>() == 36, "model::Model changed: update write_radx and read_file");
 static_assert(member_count<model::Nodes>() == 5, "model::Nodes changed: update write_radx and read_file");
 static_assert(member_count<model::ElementBlock>() == 7, "model::ElementBlock changed: update write_block");
 
@@ -334,6 +336,7 @@ void for_each_table(ModelT& m, Fn&& fn) {
   fn("skews", m.skews);
   fn("sections", m.sections);
   fn("accelerometers", m.accelerometers);
+  fn("sensors", m.sensors);
   fn("time_histories", m.time_histories);
 }
 

@@ -105,6 +105,7 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
   count("gravity loads", m.gravities.size());
   count("rigid walls", m.rigid_walls.size());
   count("rigid bodies", m.rigid_bodies.size());
+  count("sensors", m.sensors.size());
   count("time-history groups", m.time_histories.size());
   count("contact interfaces", m.interfaces.size());
 
@@ -159,6 +160,18 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
        << '\n';
   }
   os << "  total mass " << m.total_mass << " " << u.mass_name << '\n';
+
+  if (!m.sensors.empty()) {
+    heading(os, "SENSORS");
+    for (const auto& sn : m.sensors) {
+      os << "  sensor " << sn.id << " \"" << sn.title << "\"  /SENSOR/TIME: on at Tdelay " << sn.t_delay
+         << ", off at Tstop ";
+      if (sn.t_stop >= model::kNever)
+        os << "never\n";
+      else
+        os << sn.t_stop << '\n';
+    }
+  }
 
   heading(os, "CONTACT INTERFACES");
   for (std::size_t k = 0; k < m.interfaces.size(); ++k) {

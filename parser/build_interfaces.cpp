@@ -75,7 +75,7 @@ void ModelBuilder::build_interfaces() {
     in.iform = geti("Iform");
     if (in.iform == 0) in.iform = 1;
     for (int k = 0; k < 6; ++k) in.c[k] = r.get_real("C" + std::to_string(k + 1));
-    in.sens_id = r.get_int("sens_ID");
+    in.sens_id = sensor_ref(r, "sens_ID");
     in.fct_id_f = r.get_int("fct_IDF");
     in.ascale_f = r.get_real("AscaleF");
     in.fric_id = r.get_int("fric_ID");

@@ -1,7 +1,9 @@
-// Deck -> Model: kinematic conditions and loads (/BCS, /IMPVEL, /IMPDISP, /IMPDISP/FGEO, /INIVEL/TRA,
-// /CLOAD, /PLOAD, /GRAV), rigid walls (/RWALL/PLANE, CYL, SPHER, PARAL), rigid bodies (/RBODY) and
-// time-history requests (/TH/NODE, /TH/PART, /TH/INTER, /TH/RWALL, /TH/SHEL, /TH/SH3N, /TH/BRIC, /TH/RBODY,
-// /TH/SUBS); deck-format.md section 2 and 5.5, elements.md section 7.
+// Deck -> Model: sensors (/SENSOR/TIME), kinematic conditions and loads (/BCS, /IMPVEL, /IMPDISP,
+// /IMPDISP/FGEO, /INIVEL/TRA, /CLOAD, /PLOAD, /GRAV), rigid walls (/RWALL/PLANE, CYL, SPHER, PARAL), rigid
+// bodies (/RBODY) and time-history requests (/TH/NODE, /TH/PART, /TH/INTER, /TH/RWALL, /TH/SHEL, /TH/SH3N,
+// /TH/BRIC, /TH/RBODY, /TH/SUBS); deck-format.md section 2 and 5.5, elements.md section 7.
+// * /SENSOR/TIME: Tstop 0 -> never; a Tstop at or before Tdelay is refused (Radioss would switch the
+//   sensor off one cycle after it switches on). A sensor_ID (sens_ID) names one; the model keeps the user id.
 // * Loads: value = Fscale_y f(t / Ascale_x), both scales 0 -> 1; the function is required except for
 //   /GRAV (0 = constant); /GRAV grnod_ID 0 = all nodes.
 // * /RWALL/PLANE: normal n = (M1 - M)/|M1 - M|; secondary nodes = grnd_ID1 + every node with
@@ -13,8 +15,8 @@
 // * /RBODY: the main node is removed from the secondary group; Ispher 0 -> 2, ICoG 0 -> 1 (elements.md 7.2).
 // * /TH/*: group names (DEF, D, V, ...) are expanded to variables; objects resolve to dense indices; the
 //   variables radx accepts but writes as 0 are named in a warning.
-// /SENSOR and /FRAME are not read by radx, so a non-zero reference to one of them cannot be resolved and is
-// reported as a missing reference. Skews are /SKEW/FIX and /SKEW/MOV (build_skews.cpp).
+// /FRAME is not read by radx, so a non-zero reference to one cannot be resolved and is reported as a missing
+// reference. Skews are /SKEW/FIX and /SKEW/MOV (build_skews.cpp).
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -79,7 +81,7 @@ const NodeList& nodes_of(ModelBuilder& b, std::int32_t group) {
   return nodes ? *nodes : kEmpty;
 }
 
-// A reference to a kind of object radx does not read (/SENSOR, /FRAME): only 0 is accepted.
+// A reference to a kind of object radx does not read (/FRAME, a /TH skew): only 0 is accepted.
 std::string unreadable_ref_text(std::string_view field, std::int64_t id, std::string_view target,
                                 std::string_view zero_means) {
   return std::string(field) + " = " + std::to_string(id) + ": there is no " + std::string(target) + "/" +
@@ -116,9 +118,6 @@ std::int64_t unsupported_skew_ref(ModelBuilder& b, const KeywordRecord& r, std::
                "skew_ID = " + std::to_string(id) + ": " + std::string(what) +
                    " in a skew frame is not supported; leave it 0 (global axes)");
   return id;
-}
-std::int64_t sensor_ref(ModelBuilder& b, const KeywordRecord& r, std::string_view field = "sensor_ID") {
-  return unreadable_ref(b, r, field, "/SENSOR", "active from the start");
 }
 
 // Direction codes 0..5 = X Y Z XX YY ZZ; `count` 3 accepts the translations only.
@@ -228,7 +227,7 @@ void build_imposed_velocities(ModelBuilder& b) {
                 ": an imposed rotation angle is not implemented by radx (nodes carry no rotation angle); "
                 "accepted: X, Y, Z, or /IMPVEL with the rotational velocity");
       v.skew = skew_ref(b, r);
-      v.sensor = sensor_ref(b, r);
+      v.sensor = b.sensor_ref(r);
       v.frame = unreadable_ref(b, r, "frame_ID", "/FRAME", "no moving frame");
       v.icoor = geti(r, "Icoor");
       v.group = group_ref(b, r, "grnod_ID", false);
@@ -266,7 +265,7 @@ void build_imposed_final_geometries(ModelBuilder& b) {
                   ": the spring-part form (each spring's first node moves to its second node) needs "
                   "/SPRING elements, which radx does not read; leave part_ID 0 and list the nodes with "
                   "their final positions");
-        g.sensor = sensor_ref(b, r, "sens_ID");
+        g.sensor = b.sensor_ref(r, "sens_ID");
         g.ascale_x = real_or(r, "Ascale", 1.0);
         if (g.ascale_x != 1.0)
           b.warning_at(
@@ -341,7 +340,7 @@ void build_initial_velocities(ModelBuilder& b) {
                  v.v = reals3(r, "Vx", "Vy", "Vz");
                  v.group = group_ref(b, r, "grnod_ID", false);
                  v.skew = skew_ref(b, r);
-                 v.sensor = sensor_ref(b, r);
+                 v.sensor = b.sensor_ref(r);
                  v.t_start = r.get_real("Tstart");
                  return v;
                });
@@ -355,7 +354,7 @@ void build_concentrated_loads(ModelBuilder& b) {
     c.function = function_ref(b, r, false);
     c.dir = direction(b, r, 6, kLoadDirections);
     c.skew = skew_ref(b, r);
-    c.sensor = sensor_ref(b, r);
+    c.sensor = b.sensor_ref(r);
     c.group = group_ref(b, r, "grnod_ID", false);
     c.itypfun = int_or(r, "Itypfun", 1);
     c.ascale_x = real_or(r, "Ascale_x", 1.0);
@@ -370,7 +369,7 @@ void build_pressure_loads(ModelBuilder& b) {
     model::PressureLoad p;
     p.surface = lookup(b, b.surf_ids_, r, "surf_ID", "surface", "/SURF", false);
     p.function = function_ref(b, r, false);
-    p.sensor = sensor_ref(b, r);
+    p.sensor = b.sensor_ref(r);
     p.ipinch = geti(r, "Ipinch");
     p.idel = int_or(r, "Idel", 1);
     p.itypfun = int_or(r, "Itypfun", 1);
@@ -387,7 +386,7 @@ void build_gravities(ModelBuilder& b) {
     g.function = function_ref(b, r, true);  // 0: constant
     g.dir = direction(b, r, 3, "X, Y or Z (the sign of Fscale_y gives the sense)");
     g.skew = skew_ref(b, r);
-    g.sensor = sensor_ref(b, r);
+    g.sensor = b.sensor_ref(r);
     g.group = group_ref(b, r, "grnod_ID", true);  // 0: all nodes
     g.ascale_x = real_or(r, "Ascale_x", 1.0);
     g.fscale_y = real_or(r, "Fscale_y", 1.0);
@@ -524,6 +523,36 @@ model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double
 // ---------------------------------------------------------------------------------------------------------
 // Rigid bodies
 
+// A body with a sensor (OpenRadioss hm_read_rbody.F, inirby.F INIRBYS, rbyonf.F RBYSENS): rigid from the
+// start, formed from its secondary nodes alone (main node at their centre of mass; the main node's own mass,
+// Mass, Jxx..Jxz, skew_ID and ICoG are not used), released 2 cycles after the sensor switches on. When the
+// sensor switches off again (its Tstop) Radioss forms the body again from the current positions and
+// velocities: radx does not, and refuses that use.
+void check_sensor_body(ModelBuilder& b, const KeywordRecord& r, const model::RigidBody& rb) {
+  const auto it = b.sensor_ids_.find(rb.sensor);
+  if (it == b.sensor_ids_.end()) return;  // reported by sensor_ref
+  const model::Sensor& sensor = b.m_.sensors[static_cast<std::size_t>(it->second)];
+  if (sensor.t_stop < model::kNever)
+    b.error_at(r, "sens_ID", Diag::PhysicsNotImplemented,
+               "sens_ID = " + std::to_string(rb.sensor) + ": /SENSOR/TIME/" + std::to_string(rb.sensor) +
+                   " switches off again at Tstop = " + num(sensor.t_stop) +
+                   ", when Radioss forms the released rigid body again from the current positions and "
+                   "velocities; radx does not re-form a rigid body: use a sensor without Tstop (the body is "
+                   "then released once, for the rest of the run)");
+  std::string unused;
+  auto add = [&](const std::string& what) { unused += (unused.empty() ? "" : ", ") + what; };
+  if (rb.mass != 0) add("Mass = " + num(rb.mass));
+  if (std::any_of(rb.inertia.begin(), rb.inertia.end(), [](double j) { return j != 0; })) add("Jxx..Jxz");
+  if (rb.skew != 0) add("skew_ID = " + std::to_string(rb.skew));
+  if (rb.icog == 3 || rb.icog == 4) add("ICoG = " + std::to_string(rb.icog));
+  if (!unused.empty())
+    b.warning_at(
+        r, "sens_ID", Diag::UnimplementedOption,
+        unused +
+            " not used: a rigid body with a sensor is formed from its secondary nodes alone, its main "
+            "node at their centre of mass (as Radioss does)");
+}
+
 model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
   model::RigidBody rb;
   if (const std::int64_t node = r.get_int("node_ID"); node == 0) {
@@ -535,8 +564,9 @@ model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
     rb.main_node = b.node_ref(node, r, field_pos(r, "node_ID"), "node_ID (main node of the rigid body)");
     if (rb.main_node != kNone) b.node_used_[rb.main_node] = 1;
   }
-  rb.sensor = sensor_ref(b, r, "sens_ID");
-  rb.skew = unsupported_skew_ref(b, r, "added inertia");
+  rb.sensor = b.sensor_ref(r, "sens_ID");
+  // With a sensor the added inertia is not used, so neither is its frame.
+  rb.skew = rb.sensor != 0 ? r.get_int("skew_ID") : unsupported_skew_ref(b, r, "added inertia");
   rb.ispher = int_or(r, "Ispher", 2);
   rb.mass = mass_field(b, r, "added to the main node");
   rb.group = group_ref(b, r, "grnd_ID", false);
@@ -545,6 +575,7 @@ model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
   rb.surface = lookup(b, b.surf_ids_, r, "surf_ID", "surface", "/SURF", true);
   static constexpr std::array<std::string_view, 6> kInertia = {"Jxx", "Jyy", "Jzz", "Jxy", "Jyz", "Jxz"};
   for (std::size_t k = 0; k < kInertia.size(); ++k) rb.inertia[k] = r.get_real(kInertia[k]);
+  if (rb.sensor != 0) check_sensor_body(b, r, rb);
   rb.ioptoff = geti(r, "Ioptoff");
   rb.iexpams = geti(r, "Iexpams");
   rb.ifail = geti(r, "Ifail");
@@ -814,6 +845,27 @@ void th_objects(ModelBuilder& b, const KeywordRecord& r, const ThKindDef& k, mod
 }
 
 }  // namespace
+
+void ModelBuilder::build_sensors() {
+  build_each(*this, "/SENSOR/TIME", "sensor", m_.sensors, sensor_ids_, [&](const KeywordRecord& r) {
+    model::Sensor s;
+    s.type = model::SensorType::Time;
+    s.t_delay = r.get_real("Tdelay");
+    if (const double t_stop = r.get_real("Tstop"); t_stop != 0) {
+      s.t_stop = t_stop;
+      if (t_stop <= s.t_delay)
+        error_at(r, "Tstop", Diag::InconsistentValues,
+                 "Tstop = " + num(t_stop) + " is not after Tdelay = " + num(s.t_delay) +
+                     ": the sensor would switch off as it switches on; need Tstop > Tdelay (0 = never)");
+    }
+    return s;
+  });
+}
+
+std::int64_t ModelBuilder::sensor_ref(const KeywordRecord& r, std::string_view field) {
+  ref(sensor_ids_, r, field, "sensor", "/SENSOR", true);
+  return r.get_int(field);
+}
 
 void ModelBuilder::build_loads() {
   build_added_masses(*this);

@@ -344,9 +344,10 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
                             "radx would need those actions; it stops on an inverted element"));
     t.push_back(unsupported("/KILL", "stop without writing results on energy or mass error",
                             "radx would need that stop; /STOP gives the same criteria with results written"));
-    t.push_back(unsupported("/STOP/LSENSOR", "stop when sensors switch", "radx would need sensors"));
+    t.push_back(unsupported("/STOP/LSENSOR", "stop when sensors switch",
+                            "radx would need to stop a run when a sensor switches"));
     t.push_back(unsupported("/SENS", "sensors reset at the start of the run (/SENS/RESET)",
-                            "radx would need sensors"));
+                            "radx would need runs that restart from earlier ones (its sensors start off)"));
     t.push_back(unsupported("/MASS", "mass added in earlier runs reset (/MASS/RESET)",
                             "radx would need runs that restart from earlier ones"));
     t.push_back(unsupported("/RERUN", "run that goes on from another run's restart file",

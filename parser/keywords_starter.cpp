@@ -657,21 +657,22 @@ void add_contact(std::vector<KeywordDecl>& t) {
               R("VISs", 41, 60, "critical damping ratio on the normal stiffness").zero_is(0.05).ge(0.0),
               R("VISF", 61, 80, "critical damping ratio on friction").zero_is(1.0).ge(0.0),
               R("Bumult", 81, 100, "sorting margin factor; 0 = default by model size").ge(0.0)}),
-        card("card 7", {I("Ifric", 1, 10, "friction law: 0 Coulomb, 1 viscous, 2 Darmstad, 3 Renard")
-                            .allow({0, 1, 2, 3}),
-                        I("Ifiltr", 11, 20, "friction force filter").allow({0, 1, 2, 3}),
-                        R("Xfreq", 21, 40, "filter coefficient (a frequency for Ifiltr = 3)").ge(0.0),
-                        I("Iform", 41, 50, "friction penalty: 1 viscous (total), 2 stiffness (incremental)")
-                            .zero_is(1)
-                            .allow({0, 1, 2}),
-                        I("sens_ID", 51, 60, "sensor that switches the interface on or off")
-                            .versions(120)
-                            .not_implemented(),
-                        I("fct_IDF", 61, 70, "function scaling friction with temperature")
-                            .versions(140)
-                            .not_implemented(),
-                        R("AscaleF", 71, 90, "abscissa scale of fct_IDF").versions(140).unused(),
-                        I("fric_ID", 91, 100, "/FRICTION definition").versions(2018).not_implemented()}),
+        card("card 7",
+             {I("Ifric", 1, 10, "friction law: 0 Coulomb, 1 viscous, 2 Darmstad, 3 Renard")
+                  .allow({0, 1, 2, 3}),
+              I("Ifiltr", 11, 20, "friction force filter").allow({0, 1, 2, 3}),
+              R("Xfreq", 21, 40, "filter coefficient (a frequency for Ifiltr = 3)").ge(0.0),
+              I("Iform", 41, 50, "friction penalty: 1 viscous (total), 2 stiffness (incremental)")
+                  .zero_is(1)
+                  .allow({0, 1, 2}),
+              I("sens_ID", 51, 60,
+                "sensor that switches the interface on (and off again at the sensor's Tstop); 0 = none")
+                  .versions(120),
+              I("fct_IDF", 61, 70, "function scaling friction with temperature")
+                  .versions(140)
+                  .not_implemented(),
+              R("AscaleF", 71, 90, "abscissa scale of fct_IDF").versions(140).unused(),
+              I("fric_ID", 91, 100, "/FRICTION definition").versions(2018).not_implemented()}),
         card_if("friction C1..C5 (Ifric > 0)", when_gt("Ifric", 0), type7_friction_c1_c5()),
         card_if("friction C6 (Ifric > 1)", when_gt("Ifric", 1),
                 {R("C6", 1, 20, "friction law coefficient 6")}),
@@ -1008,6 +1009,21 @@ void add_loads(std::vector<KeywordDecl>& t) {
 }
 
 // ---------------------------------------------------------------------------------------------------------
+// Sensors (OpenRadioss read_sensor_time.F; sensor_time.cfg: Tstop from the 2023 format). The other sensor
+// types are Radioss keywords radx does not read (RX302 naming the type).
+void add_sensors(std::vector<KeywordDecl>& t) {
+  KeywordDecl k = kw("/SENSOR/TIME", "sensor that switches on at a given time (and off again at Tstop)",
+                     Header::IdUnit, true, "sens_ID");
+  k.aliases = {"/SENSOR/TYPE0"};
+  k.cards = {
+      card("card 1", {R("Tdelay", 1, 20, "time the sensor switches on").dims(dim::time)}),
+      card_v("card 2", 2023, kLastVersion,
+             {R("Tstop", 1, 20, "time the sensor switches off again; 0 = never").dims(dim::time)}),
+  };
+  t.push_back(std::move(k));
+}
+
+// ---------------------------------------------------------------------------------------------------------
 // Rigid wall, rigid body
 // The /RWALL family: the cards of /RWALL/PLANE, with the diameter on card 2 for the curved walls, no M1 for
 // the sphere and a corner M2 for the parallelogram (OpenRadioss hm_read_rwall_*.F, one layout per shape).
@@ -1111,7 +1127,8 @@ void add_rigid(std::vector<KeywordDecl>& t) {
     k.cards = {
         card("card 1",
              {I("node_ID", 1, 10, "main node; 0 creates one"),
-              I("sens_ID", 11, 20, "sensor that activates the body; 0 = active from the start"),
+              I("sens_ID", 11, 20,
+                "sensor that releases the body (2 cycles after it switches on); 0 = rigid throughout"),
               I("skew_ID", 21, 30, "frame of the added inertia; 0 = global axes"),
               I("Ispher", 31, 40, "1 spherical inertia, 2 full inertia tensor").zero_is(2).allow({0, 1, 2}),
               R("Mass", 41, 60, "mass added to the main node").dims(dim::mass),
@@ -1350,6 +1367,7 @@ const std::vector<KeywordDecl>& starter_keywords() {
     add_groups(t);
     add_contact(t);
     add_loads(t);
+    add_sensors(t);
     add_rigid(t);
     add_sections(t);
     add_time_history(t);

@@ -601,6 +601,7 @@ model::Model ModelBuilder::build() {
   build_groups();
   apply_random_perturbation();  // after the groups it perturbs, before anything reads positions
   build_skews();
+  build_sensors();
   build_loads();
   build_rigid_walls();
   build_rigid_bodies();

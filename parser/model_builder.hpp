@@ -54,6 +54,7 @@ class ModelBuilder {
   void build_skews();                // build_skews.cpp
   void apply_random_perturbation();  // build_random.cpp
   void build_surfaces();
+  void build_sensors();  // build_loads.cpp, before everything that names a sensor
   void build_loads();
   void build_rigid_walls();
   void build_rigid_bodies();
@@ -86,13 +87,15 @@ class ModelBuilder {
   // All parts of subset s and of its descendants.
   void subset_parts(std::int32_t s, std::vector<std::int32_t>& out) const;
   std::int32_t node_ref(std::int64_t user_id, const KeywordRecord& r, SourcePos pos, std::string_view what);
+  // The user id held by `field` (sensor_ID, sens_ID); RX402 when no sensor has it. 0 = none.
+  std::int64_t sensor_ref(const KeywordRecord& r, std::string_view field = "sensor_ID");
 
   const Deck& deck_;
   Diagnostics& diags_;
   model::Model m_;
 
   IdIndex mat_ids_, prop_ids_, part_ids_, subset_ids_, box_ids_, funct_ids_, grnod_ids_, surf_ids_,
-      inter_ids_, rwall_ids_, rbody_ids_, skew_ids_, sect_ids_, accel_ids_;
+      inter_ids_, rwall_ids_, rbody_ids_, skew_ids_, sect_ids_, accel_ids_, sensor_ids_;
   std::vector<ElementGroup> element_groups_;
   IdIndex element_group_ids_[3];  // by model::ElementType
   std::vector<const KeywordRecord*> grnod_records_;

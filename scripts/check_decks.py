@@ -337,6 +337,15 @@ def cload(v):
     return [card(f + [F("Ascale_x", "R", 61, 80), F("Fscale_y", "R", 81, 100)])]
 
 
+def sensor_time(v):
+    """/SENSOR/TIME (OpenRadioss sensor_time.cfg): Tdelay; from 2023 a second card with Tstop (0 = never), which
+    may be left out."""
+    cards = [card([F("Tdelay", "R", 1, 20)])]
+    if v >= 2023:
+        cards.append(card([F("Tstop", "R", 1, 20)], optional=True))
+    return cards
+
+
 def rbody(v):
     """/RBODY (deck-format.md): cards 1-4; Ifail on card 4 from 2021, and card 5 when it is set. Card 4 starts in
     the 110 layout with Ioptoff alone; Iexpams from 2017."""
@@ -455,6 +464,8 @@ STARTER = {
     "/RWALL/PARAL": ("id", True, rwall_paral, None, None),
     "/IMPDISP/FGEO": ("id", True, impdisp_fgeo, "records", FGEO_REC),
     "/RBODY": ("id", True, rbody, None, None),
+    "/SENSOR/TIME": ("id", True, sensor_time, None, None),
+    "/SENSOR/TYPE0": ("id", True, sensor_time, None, None),
     "/FUNCT": ("id", True, lambda v: [], "records", FUNCT_REC),
     "/TH/NODE": ("id", True, lambda v: [], "threcords", THNODE_REC),
     "/TH/PART": ("id", True, lambda v: [], "thids", ID_REC),
@@ -1202,6 +1213,23 @@ def semantic(ck, m):
     for o in m.of("/CLOAD"):
         need(o, "funct_IDT", functs, "function", zero_ok=False)
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
+    # sensors: Tstop (0 = never) after Tdelay; every sensor_ID / sens_ID names one; a rigid body's sensor must not
+    # switch off again (radx does not form a released body again: RX510)
+    sensors = by_id(("/SENSOR/TIME", "/SENSOR/TYPE0"), "sensor")
+    for o in sensors.values():
+        t_stop = val(o, "Tstop", 0.0)
+        if t_stop != 0 and t_stop <= val(o, "Tdelay", 0.0):
+            p = pos(o, "Tstop")
+            I("RX507", p[0], p[1], "/SENSOR/TIME %d: Tstop <= Tdelay" % o["id"])
+    for o in m.of("/IMPVEL", "/IMPDISP", "/INIVEL/TRA", "/INIVEL/T+G", "/INIVEL/ROT", "/CLOAD", "/GRAV"):
+        need(o, "sensor_ID", sensors, "sensor")
+    for o in m.of("/INTER/TYPE7", "/RBODY"):
+        need(o, "sens_ID", sensors, "sensor")
+    for o in m.of("/RBODY"):
+        sensor = sensors.get(val(o, "sens_ID", 0))
+        if sensor is not None and val(sensor, "Tstop", 0.0) != 0:
+            p = pos(o, "sens_ID")
+            I("RX510", p[0], p[1], "/RBODY %d: its sensor switches off again (Tstop)" % o["id"])
     for o in m.of("/RWALL/CYL", "/RWALL/SPHER"):
         if val(o, "Diameter", 0.0) <= 0:
             p = pos(o, "Diameter")

@@ -569,12 +569,12 @@ def _():
     return d, "/FUNCT/1: the third X (0.0005) is below the second (0.001)", [("RX505", "F_P3")]
 
 
-def impvel_rows(funct, keyword="/IMPVEL", direction="Z"):
+def impvel_rows(funct, keyword="/IMPVEL", direction="Z", sensor=0):
     return block_group() + [
         ("%s/1" % keyword, "IMP_KW"), "Block pushed down",
         names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
               ("frame_ID", 10), ("Icoor", 10)),
-        (line(I(funct), S(direction, 10), I(0), I(0), I(2), I(0), I(0)), "IMP_C1"),
+        (line(I(funct), S(direction, 10), I(0), I(sensor), I(2), I(0), I(0)), "IMP_C1"),
         names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
         (line(R(0.0), R(-1000.0), R(0.0), R(0.0)), "IMP_C2")]
 
@@ -607,6 +607,50 @@ def _():
                     + funct_rows(7, [(0.0, 0.0), (0.002, 0.1)], "Rotation angle"))
     return d, "/IMPDISP/1 Dir = ZZ: an imposed rotation angle (radx imposes translations only)", \
         [("RX510", "IMP_C1")]
+
+
+def sensor_rows(sid, t_delay, t_stop=None, tag="SENS"):
+    """/SENSOR/TIME/sid; card 1 carries TAG_C1, the Tstop card (when given) TAG_C2."""
+    rows = [("/SENSOR/TIME/%d" % sid, tag + "_KW"), "Timer", names(("Tdelay", 20)), (line(R(t_delay)), tag + "_C1")]
+    if t_stop is not None:
+        rows += [names(("Tstop", 20)), (line(R(t_stop)), tag + "_C2")]
+    return rows
+
+
+@fault("sensor_missing")
+def _():
+    d = with_rows(impvel_rows(7, sensor=9), funct_rows(7, [(0.0, 0.0), (0.002, 1.0)], "Speed"))
+    return d, "/IMPVEL/1 is started by sensor 9; the deck has no /SENSOR/9", [("RX402", "IMP_C1")]
+
+
+@fault("sensor_unsupported_type")
+def _():
+    rows = [("/SENSOR/DIST/5", "SD_KW"), "Distance sensor", names(("Tdelay", 20)), line(R(0.0)),
+            names(("node_ID1", 10), ("node_ID2", 10), ("Dmin", 20), ("Dmax", 20)), line(I(1), I(2), R(0.0), R(5.0))]
+    return with_rows(rows), "/SENSOR/DIST/5: of the sensors radx reads /SENSOR/TIME only", [("RX302", "SD_KW")]
+
+
+@fault("sensor_tstop_before_tdelay")
+def _():
+    d = with_rows(sensor_rows(3, 0.002, 0.001))
+    return d, "/SENSOR/TIME/3 switches off (Tstop 0.001) before it switches on (Tdelay 0.002)", \
+        [("RX507", "SENS_C2")]
+
+
+@fault("rbody_sensor_tstop")
+def _():
+    rows = sensor_rows(4, 0.001, 0.002) + block_group() + [
+        "/NODE", names(("node_ID", 10), ("Xc", 20), ("Yc", 20), ("Zc", 20)), node_line(99, 5.0, 5.0, 10.0),
+        ("/RBODY/1", "RB_KW"), "Block released by sensor 4",
+        names(("node_ID", 10), ("sens_ID", 10), ("skew_ID", 10), ("Ispher", 10), ("Mass", 20), ("grnd_ID", 10),
+              ("Ikrem", 10), ("ICoG", 10), ("surf_ID", 10)),
+        (line(I(99), I(4), I(0), I(0), R(0.0), I(2), I(0), I(0), I(0)), "RB_C1"),
+        names(("Jxx", 20), ("Jyy", 20), ("Jzz", 20)), line(R(0.0), R(0.0), R(0.0)),
+        names(("Jxy", 20), ("Jyz", 20), ("Jxz", 20)), line(R(0.0), R(0.0), R(0.0)),
+        names(("Ioptoff", 10), ("Iexpams", 10), ("Ifail", 10)), line(I(0), I(0), I(0))]
+    return with_rows(rows), \
+        "/RBODY/1 is released by /SENSOR/TIME/4, which switches off again (Tstop): radx does not form the body again", \
+        [("RX510", "RB_C1")]
 
 
 @fault("inter_missing_surface")

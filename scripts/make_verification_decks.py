@@ -21,6 +21,7 @@ Cases (units):
   sections          /SECT and /TH/SECTIO on a clamped brick bar pulled by a slow ramp (Mg, mm, s)
   skew_mov          /SKEW/MOV on a spinning rigid cube, used by /CLOAD, /BCS, /IMPVEL, /GRAV, /INIVEL, /ACCEL
                     and /TH/NODE (kg, m, s)
+  sensor_loads      /CLOAD, /GRAV and /IMPVEL started (and stopped) by /SENSOR/TIME on a free brick (kg, m, s)
 
 Plain python3, standard library only.
 """
@@ -33,7 +34,7 @@ from radx_deck_format import I, R, S, RULER, bcs_code, blank, ibc_code, line, na
 
 VERSION = 2026
 CASES = ("bar_rwall", "cantilever_strip", "taylor_bar", "jc_single_brick", "free_fall", "two_bars", "th_outputs",
-         "sections", "skew_mov")
+         "sections", "skew_mov", "sensor_loads")
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -243,10 +244,11 @@ def rwall_fixed(wid, title, group, point, head):
 
 
 def type7(iid, title, grnod, surf, stiffness, gapmin, inacti, viss, fric=0.0, iform=1, visf=1.0, istf=1, idel=0,
-          tstart=0.0, tstop=0.0, ibc=(0, 0, 0)):
+          tstart=0.0, tstop=0.0, ibc=(0, 0, 0), sens=0):
     """/INTER/TYPE7, 2026 layout (deck-format.md): Igap 0 (constant gap = Gapmin), Ifric 0, no filter.
     istf 1: `stiffness` is the pair stiffness K (Stfac); otherwise it is the scale factor Stfac. idel: Idel;
-    tstart, tstop: the interface acts for Tstart <= t < Tstop (Tstop 0: never stops); ibc: (IBCX, IBCY, IBCZ)."""
+    tstart, tstop: the interface acts for Tstart <= t < Tstop (Tstop 0: never stops); ibc: (IBCX, IBCY, IBCZ);
+    sens: the sensor that switches it on (and off at the sensor's Tstop), 0 none."""
     return [
         "/INTER/TYPE7/%d" % iid, title,
         names(("grnd_IDs", 10), ("surf_IDm", 10), ("Istf", 10), ("Ithe", 10), ("Igap", 10), ("", 10),
@@ -263,7 +265,7 @@ def type7(iid, title, grnod, surf, stiffness, gapmin, inacti, viss, fric=0.0, if
         line(ibc_code(*ibc), blank(20), I(inacti), R(viss), R(visf), R(0.0)),
         names(("Ifric", 10), ("Ifiltr", 10), ("Xfreq", 20), ("Iform", 10), ("sens_ID", 10), ("fct_IDF", 10),
               ("AscaleF", 20), ("fric_ID", 10)),
-        line(I(0), I(0), R(0.0), I(iform), I(0), I(0), R(0.0), I(0))]
+        line(I(0), I(0), R(0.0), I(iform), I(sens), I(0), R(0.0), I(0))]
 
 
 def type7_lagdt(iid, title, grnod, surf, stiffness, gapmin, inacti, viss, fric=0.0, iform=1, visf=1.0, istf=1):
@@ -1444,6 +1446,109 @@ After one turn the points 21, 22, 23 and 24 are back on their starting line (1 -
 
 
 # ---------------------------------------------------------------------------------------------------
+# i. Loads and conditions under /SENSOR/TIME on one free brick (kg, m, s)
+
+SENS = dict(H=0.1, RHO=2700.0, E=7e10, NU=0.3, F0=100.0, T_RAMP=1e-3, G=9.81, V1=0.5,
+            T1=1e-3, T1_STOP=3e-3, T2=2e-3, T3=1.5e-3, T_STOP=4e-3)
+
+
+def sensor_time(sid, title, t_delay, t_stop=0.0):
+    """/SENSOR/TIME, 2023 and newer layout: Tdelay, then Tstop (0 = never)."""
+    return ["/SENSOR/TIME/%d" % sid, title, names(("Tdelay", 20)), line(R(t_delay)), names(("Tstop", 20)),
+            line(R(t_stop))]
+
+
+def sensor_loads():
+    p = SENS
+    h = p["H"]
+    nodes = [(1 + i + 2 * j + 4 * k, i * h, j * h, k * h) for k in range(2) for j in range(2) for i in range(2)]
+    bricks = [(1, 1, 2, 4, 3, 5, 6, 8, 7)]
+    check_bricks(nodes, bricks)
+    run = "SENSOR_LOADS"
+    D = header(run, "Loads and an imposed velocity started by /SENSOR/TIME on a free brick", ("kg", "m", "s"),
+               ["A free %g m aluminium cube (one brick, 8 equal nodal masses); every load acts on its 8 nodes"
+                % h,
+                "alike, so the brick only translates: each momentum component follows its load's closed form.",
+                "/CLOAD Z (ramp to %g N per node in %g s) under /SENSOR/TIME/1: on at %g s, off at %g s;"
+                % (p["F0"], p["T_RAMP"], p["T1"], p["T1_STOP"]),
+                "/GRAV X (g = %g m/s2) under /SENSOR/TIME/2 (on at %g s);" % (-p["G"], p["T2"]),
+                "/IMPVEL Y (ramp to %g m/s in %g s) under /SENSOR/TIME/3 (on at %g s)." % (p["V1"], p["T_RAMP"],
+                                                                                      p["T3"])])
+    D += node_block(nodes, "Cube nodes 1..8")
+    D.append(RULER)
+    D += brick_block(1, bricks, "One brick")
+    D.append(RULER)
+    D += part_card(1, "Cube", 1, 1)
+    D += prop_solid(1, "Cube solid")
+    D += mat_law1(1, "Aluminium (elastic)", p["RHO"], p["E"], p["NU"])
+    D.append(RULER)
+    D += grnod_node(1, "All nodes", [n[0] for n in nodes])
+    D += sensor_time(1, "Starts the push and stops it", p["T1"], p["T1_STOP"])
+    D += sensor_time(2, "Starts gravity", p["T2"])
+    D += sensor_time(3, "Starts the imposed velocity", p["T3"])
+    D += ["/FUNCT/1", "Force ramp: 0 to 1 in %g s then 1" % p["T_RAMP"], names(("X", 20), ("Y", 20)),
+          line(R(0.0), R(0.0)), line(R(p["T_RAMP"]), R(1.0)), line(R(1.0), R(1.0))]
+    D += ["/FUNCT/2", "Velocity ramp: 0 to %g m/s in %g s then %g" % (p["V1"], p["T_RAMP"], p["V1"]),
+          names(("X", 20), ("Y", 20)), line(R(0.0), R(0.0)), line(R(p["T_RAMP"]), R(p["V1"])),
+          line(R(1.0), R(p["V1"]))]
+    D += ["/CLOAD/1", "Push along +Z on every node (sensor 1)",
+          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+                ("Itypfun", 10), ("Ascale_x", 20), ("Fscale_y", 20)),
+          line(I(1), S("Z", 10), I(0), I(1), I(1), I(0), R(0.0), R(p["F0"]))]
+    D += ["/GRAV/2", "Gravity along -X on every node (sensor 2)",
+          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10), ("", 10),
+                ("Ascale_x", 20), ("Fscale_y", 20)),
+          line(I(0), S("X", 10), I(0), I(2), I(0), blank(10), R(0.0), R(-p["G"]))]
+    D += ["/IMPVEL/3", "Velocity along +Y on every node (sensor 3)",
+          names(("funct_IDT", 10), ("Dir", 10), ("skew_ID", 10), ("sensor_ID", 10), ("grnod_ID", 10),
+                ("frame_ID", 10), ("Icoor", 10)),
+          line(I(2), S("Y", 10), I(0), I(3), I(1), I(0), I(0)),
+          names(("Ascale_x", 20), ("Fscale_y", 20), ("Tstart", 20), ("Tstop", 20)),
+          line(R(0.0), R(1.0), R(0.0), R(0.0))]
+    D.append(RULER)
+    D.append("/END")
+    E = engine_deck(run, p["T_STOP"], p["T_STOP"] / 4, 20,
+                    ["Run %g s: past every sensor time. Tscale 0.5: a single free one-point brick's breathing" % p["T_STOP"],
+                     "mode needs a step below h / (c sqrt(3)), under 0.6 of the element step radx computes."])
+    k = E.index(line(R(0.9), R(0.0)))
+    E[k] = line(R(0.5), R(0.0))
+    mass = p["RHO"] * h ** 3
+    impulse = 8 * p["F0"] * (p["T1_STOP"] - p["T1"] - 0.5 * p["T_RAMP"])
+    readme = f"""# sensor_loads: loads and an imposed velocity started by /SENSOR/TIME
+
+`SENSOR_LOADS_0000.rad` (starter, format {VERSION}) and `SENSOR_LOADS_0001.rad` (engine), generated by
+`scripts/make_verification_decks.py` (edit the script and regenerate). Units: **kg, m, s**.
+
+## Model
+
+| item | value |
+|---|---|
+| brick | a free {h} m cube, one brick, `/MAT/LAW1` rho {p['RHO']}, E {p['E']:g}, nu {p['NU']}: M = {g(mass)} kg, 8 equal nodal masses |
+| `/SENSOR/TIME/1` | on at T1 = {p['T1']} s, off at Tstop = {p['T1_STOP']} s |
+| `/SENSOR/TIME/2` | on at T2 = {p['T2']} s |
+| `/SENSOR/TIME/3` | on at T3 = {p['T3']} s |
+| `/CLOAD/1` | +Z on each of the 8 nodes, F(tau) = {p['F0']} N f(tau), f a ramp from 0 to 1 over {p['T_RAMP']} s then 1; sensor 1 |
+| `/GRAV/2` | g = {-p['G']} m/s2 along X on every node, constant; sensor 2 |
+| `/IMPVEL/3` | +Y on every node, v(tau) = {p['V1']} f(tau) m/s; sensor 3 |
+| engine | Tstop {p['T_STOP']} s, `/DT` Tscale 0.5 (one free one-point brick: its breathing mode is unstable above about 0.6) |
+
+Every node carries the same load per unit mass, so the brick translates without deforming and each
+momentum component is its load's closed form, with the function's time origin at the sensor's activation
+(tau = t - T, OpenRadioss force.F90, gravit.F, fixvel.F):
+
+- ZMOM = 8 F0 I(min(t, Tstop) - T1) for t >= T1, 0 before; I(tau) = tau^2 / (2 T_ramp) up to T_ramp, then
+  tau - T_ramp / 2. After Tstop it stays at {g(impulse)} N s.
+- XMOM = -M g (t - T2) for t >= T2, 0 before.
+- VY = 0 before T3; then the imposed v(tau) at each half step, exactly.
+
+Discrete tolerance: a sensor's load starts at the first cycle at or after its time (and stops likewise), so
+a momentum may differ from the closed form by at most one step's impulse (load times the largest step).
+`tests/unit/test_verification.cpp` checks these, the listing's sensor messages and the energy balance.
+"""
+    return run, D, E, readme
+
+
+# ---------------------------------------------------------------------------------------------------
 
 
 def write_case(out, case, runs, readme):
@@ -1478,7 +1583,7 @@ def write_cases(argv, doc, cases, make):
 def main(argv):
     makers = {"bar_rwall": bar_rwall, "cantilever_strip": cantilever_strip, "taylor_bar": taylor_bar,
               "jc_single_brick": jc_single_brick, "free_fall": free_fall, "two_bars": two_bars, "sections": sect_bar,
-              "skew_mov": skew_mov_case}
+              "skew_mov": skew_mov_case, "sensor_loads": sensor_loads}
 
     def make(case):
         if case == "th_outputs":

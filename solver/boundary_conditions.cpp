@@ -6,6 +6,7 @@
 #include <string>
 
 #include "solver/functions.hpp"
+#include "solver/sensors.hpp"
 
 namespace radx::solver {
 
@@ -107,6 +108,7 @@ ImposedVelocities::ImposedVelocities(const model::Model& m, const SkewFrames& sk
     if (iv.dir < 0 || iv.dir > 5) throw std::runtime_error(what + ": Dir must be X, Y, Z, XX, YY or ZZ");
     Entry e;
     e.f = m.functions[static_cast<std::size_t>(iv.function)];
+    e.sensor = m.sensor_index(iv.sensor);
     e.dir = iv.dir;
     e.displacement = iv.displacement;
     e.skew = skews.index(iv.skew);
@@ -126,6 +128,7 @@ ImposedVelocities::ImposedVelocities(const model::Model& m, const SkewFrames& sk
     if (g.nodes.size() != g.targets.size()) throw std::runtime_error(what + ": one final position per node");
     Entry e;
     e.f = m.functions[static_cast<std::size_t>(g.function)];
+    e.sensor = m.sensor_index(g.sensor);
     e.displacement = true;
     e.ascale = 1.0 / g.ascale_x;  // f(t * Ascale)
     e.t_start = g.t_start;
@@ -153,16 +156,22 @@ double ImposedVelocities::pending_work() const {
   return w;
 }
 
-double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) {
+double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2,
+                                std::span<const double> sensor_starts) {
   const double dt12 = 0.5 * (dt1 + dt2);
   double work = 0;
   for (const auto& e : entries_) {
-    const bool active = t >= e.t_start && t <= e.t_stop && dt12 > 0 && (!e.displacement || dt2 > 0);
+    const double tau = t - time_origin(e.sensor, sensor_starts);
+    const bool active =
+        t >= e.t_start && t <= e.t_stop && tau >= 0 && dt12 > 0 && (!e.displacement || dt2 > 0);
     // /IMPVEL: the velocity of the mid-step. /IMPDISP: the velocity that brings the node to its initial
-    // position plus the imposed displacement at the end of the step, u(t + dt2), whatever it lags now.
+    // position plus the imposed displacement at the end of the step, u(tau + dt2), whatever it lags now;
+    // under a sensor, after its first instant, the function's increment over the step.
     const double f_val = !active          ? 0.0
-                         : e.displacement ? scaled_function_value(e.f, t + dt2, e.ascale, e.fscale)
-                                          : scaled_function_value(e.f, t + 0.5 * dt2, e.ascale, e.fscale);
+                         : e.displacement ? scaled_function_value(e.f, tau + dt2, e.ascale, e.fscale)
+                                          : scaled_function_value(e.f, tau + 0.5 * dt2, e.ascale, e.fscale);
+    const bool increment = active && e.displacement && e.sensor != model::kNone && tau > 0;
+    const double f_now = increment ? scaled_function_value(e.f, tau, e.ascale, e.fscale) : 0.0;
     const bool rot = e.dir >= 3;
     const int d = rot ? e.dir - 3 : e.dir;
     const std::vector<double>& x = d == 0 ? s.x : d == 1 ? s.y : s.z;
@@ -203,8 +212,10 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2) 
                      : s.ax[n] * u[0] + s.ay[n] * u[1] + s.az[n] * u[2];
         disp = (s.x[n] - s.x0[n]) * u[0] + (s.y[n] - s.y0[n]) * u[1] + (s.z[n] - s.z0[n]) * u[2];
       }
-      const double target = line ? f_val * e.node_scale[k] : f_val;
-      const double v_imp = e.displacement ? (target - disp) / dt2 : target;
+      const double scale = line ? e.node_scale[k] : 1.0;  // /IMPDISP/FGEO: f is the share of the way
+      const double v_imp = increment        ? scale * (f_val - f_now) / dt2
+                           : e.displacement ? (scale * f_val - disp) / dt2
+                                            : f_val;
       const double a_imp = (v_imp - v_along) / dt12;
       if (!skewed) {
         a[n] = a_imp;
@@ -235,6 +246,7 @@ InitialVelocities::InitialVelocities(const model::Model& m, const SkewFrames& sk
     e.v = iv.v;
     e.skew = skews.index(iv.skew);
     e.t_start = iv.t_start;
+    e.sensor = m.sensor_index(iv.sensor);
     e.rotational = iv.rotational;
     e.nodes =
         group_of(m, iv.group, (iv.rotational ? "/INIVEL/ROT/" : "/INIVEL/TRA/") + std::to_string(iv.id));
@@ -243,11 +255,17 @@ InitialVelocities::InitialVelocities(const model::Model& m, const SkewFrames& sk
   remaining_ = entries_.size();
 }
 
-double InitialVelocities::apply(NodeState& s, double t) {
+double InitialVelocities::apply(NodeState& s, double t, std::span<const double> sensor_starts) {
   if (remaining_ == 0) return 0.0;
   double dke = 0;
   for (auto& e : entries_) {
-    if (e.applied || t < e.t_start) continue;
+    if (e.applied) continue;
+    // inivel_start.F90: the sensor's time alone when Tstart is 0, else the earlier of the two.
+    const double sensor_on = time_origin(e.sensor, sensor_starts);
+    const double at = e.sensor == model::kNone ? e.t_start
+                      : e.t_start == 0         ? sensor_on
+                                               : std::min(e.t_start, sensor_on);
+    if (t < at) continue;
     e.applied = true;
     --remaining_;
     auto& vx = e.rotational ? s.wx : s.vx;

@@ -33,12 +33,21 @@
 // Skews: every direction named in a skew is read from SkewFrames when the condition acts, so a /SKEW/MOV
 // gives the frame of the cycle's x^n (a /BCS holds the directions of the current axes, an /IMPVEL or
 // /IMPDISP acts along the current axis, an /INIVEL takes the axes of the time it applies: t = 0 unless
-// Tstart says otherwise). Sensors and frames are 0 in a valid model (the starter rejects them). No
-// allocation in the per-cycle calls.
+// Tstart or a sensor says otherwise).
+// Sensors (solver/sensors.hpp; OpenRadioss fixvel.F, inivel_start.F90), T the sensor's activation time
+// (model::kNever while it is off), tau = t - T:
+//   /IMPVEL   also needs tau >= 0 (Tstart and Tstop still bound t itself); v_imp = Fscale_y f((tau + dt2/2) /
+//             Ascale_x): the function's time origin is the activation.
+//   /IMPDISP  also needs tau >= 0. At tau = 0 as without a sensor, v_imp = (u(tau + dt2) - (x^n - X0)) / dt2;
+//             for tau > 0 the displacement follows the function's increments from where the node was,
+//             v_imp = (u(tau + dt2) - u(tau)) / dt2 (fixvel.F's YC - YC0).
+//   /INIVEL   applied at the first cycle with t_n >= T (Tstart = 0), or >= min(Tstart, T).
+// Frames are 0 in a valid model (the starter rejects them). No allocation in the per-cycle calls.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "solver/model/model.hpp"
@@ -79,7 +88,8 @@ class ImposedVelocities {
   ImposedVelocities(const model::Model& m, const SkewFrames& skews);
   // Cycle step 5, after the first BoundaryConditions::apply. t = t_n. Returns the work booked now
   // (this cycle's dt1 part plus the previous cycle's dt2 part). Precondition: dt1 + dt2 > 0.
-  double apply(NodeState& s, double t, double dt1, double dt2);
+  // `sensor_starts`: Sensors::starts() (may be empty when no entry has a sensor).
+  double apply(NodeState& s, double t, double dt1, double dt2, std::span<const double> sensor_starts = {});
   // Work of the last cycle not booked yet (its dt2 part); the next apply() books it.
   [[nodiscard]] double pending_work() const;
   [[nodiscard]] bool empty() const { return entries_.empty(); }
@@ -92,9 +102,10 @@ class ImposedVelocities {
  private:
   struct Entry {
     model::Function f;
-    int dir = 0;                       // 0..2 translation, 3..5 rotation
-    bool displacement = false;         // /IMPDISP: f gives the displacement from the initial position
-    std::int32_t skew = model::kNone;  // dense index: the direction is axis dir % 3 of this skew
+    std::int32_t sensor = model::kNone;  // dense index into model.sensors
+    int dir = 0;                         // 0..2 translation, 3..5 rotation
+    bool displacement = false;           // /IMPDISP: f gives the displacement from the initial position
+    std::int32_t skew = model::kNone;    // dense index: the direction is axis dir % 3 of this skew
     double ascale = 1, fscale = 1, t_start = 0, t_stop = model::kNever;
     std::vector<std::int32_t> nodes;
     std::size_t first = 0;  // offset of its nodes in pending_
@@ -111,11 +122,12 @@ class ImposedVelocities {
 class InitialVelocities {
  public:
   InitialVelocities(const model::Model& m, const SkewFrames& skews);
-  // Sets the velocity of every /INIVEL/TRA not applied yet whose Tstart <= t: call once with t = 0
-  // before cycle 0, then at the start of each cycle with t = t_n (cheap when nothing is pending).
-  // Returns the kinetic-energy change 1/2 m (|v_new|^2 - |v_old|^2) it caused: initial energy at t = 0,
-  // to be booked as external work when a later Tstart applies it.
-  double apply(NodeState& s, double t);
+  // Sets the velocity of every /INIVEL/TRA not applied yet whose time has come (Tstart, or its sensor's, see
+  // above): call once with t = 0 before cycle 0, then at the start of each cycle with t = t_n (cheap when
+  // nothing is pending). Returns the kinetic-energy change 1/2 m (|v_new|^2 - |v_old|^2) it caused: initial
+  // energy at t = 0, to be booked as external work when a later time applies it. `sensor_starts`:
+  // Sensors::starts() (may be empty when no entry has a sensor).
+  double apply(NodeState& s, double t, std::span<const double> sensor_starts = {});
   [[nodiscard]] bool pending() const { return remaining_ > 0; }
 
  private:
@@ -123,6 +135,7 @@ class InitialVelocities {
     std::array<double, 3> v{};         // components on the axes of `skew`
     std::int32_t skew = model::kNone;  // dense skew index (kNone: global axes)
     double t_start = 0;
+    std::int32_t sensor = model::kNone;
     bool rotational = false;  // /INIVEL/ROT: sets the angular velocity
     bool applied = false;
     std::vector<std::int32_t> nodes;

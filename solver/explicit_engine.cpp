@@ -27,13 +27,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunControls& controls,
                                EngineOptions options)
-    : model_(model), controls_(controls), options_(options), skews_(model) {
+    : model_(model), controls_(controls), options_(options), sensors_(model), skews_(model) {
   materials_.reserve(model_.materials.size());
   for (const auto& m : model_.materials) materials_.push_back(make_material_params(m));
   build_nodes();
   build_groups();
   build_assembly();
-  kinematics_ = std::make_unique<KinematicsDriver>(model_, controls_, nodes_, skews_);
+  kinematics_ = std::make_unique<KinematicsDriver>(model_, controls_, nodes_, skews_, sensors_.starts());
   accelerometers_ = std::make_unique<Accelerometers>(model_, skews_);
   if (!model_.interfaces.empty()) {
     contact::ContactControls cc;
@@ -59,6 +59,12 @@ std::int64_t ExplicitEngine::count_deleted() const {
 }
 
 ExplicitEngine::~ExplicitEngine() = default;
+
+std::vector<std::string> ExplicitEngine::take_events() {
+  auto out = sensors_.take_messages();
+  for (auto& m : kinematics_->take_messages()) out.push_back(std::move(m));
+  return out;
+}
 
 void ExplicitEngine::build_nodes() {
   const auto& m = model_;
@@ -410,7 +416,7 @@ CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
 //   0. skews_.update (moving skews of x^n)
 //   1. external_loads        2. contact_forces (penalty, votes, LAGDT switches)
 //   3-4. element_forces (groups, then the deterministic assembly with the contact forces)
-//   9. choose_time_step (early: the step of this cycle comes from the votes just computed)
+//   9. choose_time_step (early: the step of this cycle comes from the votes just computed), then the sensors
 //   5. accelerations         6. lagrange_correction (switched LAGDT pairs)
 //   7. kinematic_conditions  10. outputs (energies on report cycles, the caller's on_cycle)
 //   8. integrate             11. advance
@@ -420,6 +426,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
   RunResult res;
   res.threads = omp_get_max_threads();
   const auto t_wall0 = std::chrono::steady_clock::now();
+  sensors_.update(0.0, 0.0);  // a sensor due at t = 0 is on from the start
   kinematics_->initial_conditions();
   if (contact_) held_ = kinematics_->held_nodes();
   // Reference mass after the set-up (rigid bodies and moving walls may add mass).
@@ -433,6 +440,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     element_forces(L);
     contact_forces(L);
     if (!choose_time_step(L, res)) break;
+    sensors_.update(L.time, L.dt2);
     accelerations();
     if (!lagrange_correction(L, res)) break;
     kinematics_->kinematic_conditions(L.time, L.dt1, L.dt2);
@@ -480,7 +488,7 @@ void ExplicitEngine::contact_forces(LoopState& L) {
   tell_contact_deleted_elements();
   auto& s = nodes_;
   contact::ContactNodes v{s.x, s.y, s.z, s.vx, s.vy, s.vz, s.mass, s.added_mass, s.fixed, held_};
-  const contact::ContactStep step = contact_->compute(L.time, L.dt1, v);
+  const contact::ContactStep step = contact_->compute(L.time, L.dt1, v, sensors_.starts());
   const auto& f = contact_->force();
   for (const auto n : contact_->touched()) {
     const auto k = static_cast<std::size_t>(n);

@@ -11,7 +11,8 @@
 //   6. Lagrange-multiplier correction of the switched LAGDT pairs (contact/lagrange_contact.hpp);
 //   7. kinematic conditions: rigid bodies, boundary conditions, imposed velocities, rigid walls;
 //   8. v^{n+1/2} = v^{n-1/2} + dt12 a^n,  x^{n+1} = x^n + dt2 v^{n+1/2},  dt12 = (dt1 + dt2) / 2;
-//   9. next time step dt = min(scale * element steps, 1.1 dt_previous);
+//   9. next time step dt = min(scale * element steps, 1.1 dt_previous), then the sensors' check with it
+//      (solver/sensors.hpp: a sensor switches on when t + dt reaches its Tdelay);
 //  10. outputs when due (listing, states); 11. t += dt.
 // Energies follow elements.md section 8: internal (element work), hourglass, kinetic (at the full
 // step, v^{n-1/2} + dt1/2 a^n), external work; error % = 100 (E / (E0 + W) - 1).
@@ -29,6 +30,7 @@
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
 #include "solver/node_state.hpp"
+#include "solver/sensors.hpp"
 #include "solver/skew_frames.hpp"
 
 namespace radx::solver {
@@ -121,6 +123,11 @@ class ExplicitEngine {
   std::vector<std::string> take_messages() {
     return contact_ ? contact_->take_messages() : std::vector<std::string>{};
   }
+  // Events since the last call, in Radioss's words: sensors switching on or off, rigid bodies released by
+  // their sensor. One line each; taken (emptied) by the call.
+  std::vector<std::string> take_events();
+  // The sensors' state (activation times).
+  [[nodiscard]] const Sensors& sensors() const { return sensors_; }
 
  private:
   void build_nodes();
@@ -137,6 +144,7 @@ class ExplicitEngine {
   // A copy: controls are small, and a temporary passed to the constructor must not dangle.
   const model::RunControls controls_;
   EngineOptions options_;
+  Sensors sensors_;
   NodeState nodes_;
   std::vector<MaterialParams> materials_;
   std::vector<ShellGroup> shells_;

@@ -1,10 +1,13 @@
 #include "solver/external_loads.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "solver/functions.hpp"
+#include "solver/sensors.hpp"
 
 namespace radx::solver {
 
@@ -33,19 +36,31 @@ double ExternalLoads::Curve::at(double t) const {
   return constant ? fscale : scaled_function_value(f, t, ascale, fscale);
 }
 
+std::optional<std::pair<double, double>> ExternalLoads::Switch::ends(const Curve& c, std::int32_t sensor,
+                                                                     double t, double dt1,
+                                                                     std::span<const double> sensor_starts) {
+  if (sensor == model::kNone) return std::pair{c.at(t - dt1), c.at(t)};
+  const double tau = t - time_origin(sensor, sensor_starts);
+  const bool on_now = tau >= 0;
+  if (!on_now && !on) return std::nullopt;
+  const double now = on_now ? c.at(tau) : 0.0;
+  const double before = on ? last : dt1 > 0 ? 0.0 : now;
+  on = on_now;
+  last = now;
+  return std::pair{before, now};
+}
+
 ExternalLoads::ExternalLoads(const model::Model& m, const SkewFrames& skews,
                              std::span<const std::uint8_t> rigid_secondary)
-    : skews_(&skews) {
+    : skews_(&skews), rigid_secondary_(rigid_secondary) {
   const std::size_t nn = m.nodes.size();
   if (!rigid_secondary.empty() && rigid_secondary.size() != nn)
     throw std::runtime_error("ExternalLoads: the rigid-secondary flags must have one entry per node");
-  auto skipped = [&](std::int32_t n) {
-    return !rigid_secondary.empty() && rigid_secondary[static_cast<std::size_t>(n)] != 0;
-  };
 
   for (const auto& g : m.gravities) {
     const std::string what = "/GRAV/" + std::to_string(g.id);
     Gravity out;
+    out.sensor = m.sensor_index(g.sensor);
     out.g.constant = g.function == model::kNone;
     if (!out.g.constant) out.g.f = function_of(m, g.function, what);
     out.g.ascale = g.ascale_x;
@@ -54,11 +69,9 @@ ExternalLoads::ExternalLoads(const model::Model& m, const SkewFrames& skews,
     if (g.dir < 0 || g.dir > 2) throw std::runtime_error(what + ": DIR must be X, Y or Z");
     out.skew = skews.index(g.skew);
     if (g.group == model::kNone) {
-      for (std::size_t n = 0; n < nn; ++n)
-        if (!skipped(static_cast<std::int32_t>(n))) out.nodes.push_back(static_cast<std::int32_t>(n));
+      for (std::size_t n = 0; n < nn; ++n) out.nodes.push_back(static_cast<std::int32_t>(n));
     } else {
-      for (const auto n : group_of(m, g.group, what))
-        if (!skipped(n)) out.nodes.push_back(n);
+      out.nodes = group_of(m, g.group, what);
     }
     gravity_.push_back(std::move(out));
   }
@@ -71,6 +84,7 @@ ExternalLoads::ExternalLoads(const model::Model& m, const SkewFrames& skews,
                                "engine; use Itypfun = 1 (function of time)");
     if (c.dir < 0 || c.dir > 5) throw std::runtime_error(what + ": Dir must be X, Y, Z, XX, YY or ZZ");
     Concentrated out;
+    out.sensor = m.sensor_index(c.sensor);
     out.f.f = function_of(m, c.function, what);
     out.f.ascale = c.ascale_x;
     out.f.fscale = c.fscale_y;
@@ -93,6 +107,7 @@ ExternalLoads::ExternalLoads(const model::Model& m, const SkewFrames& skews,
       throw std::runtime_error(what + ": no surface");
     const auto& surf = m.surfaces[static_cast<std::size_t>(p.surface)];
     Pressure out;
+    out.sensor = m.sensor_index(p.sensor);
     out.p.f = function_of(m, p.function, what);
     out.p.ascale = p.ascale_x;
     out.p.fscale = p.fscale_y;
@@ -122,23 +137,26 @@ void ExternalLoads::remove_element(model::SegmentOwner type, std::int32_t elemen
     ploads_[it->load].active[it->segment] = 0;
 }
 
-double ExternalLoads::apply(NodeState& s, double t, double dt1) {
+double ExternalLoads::apply(NodeState& s, double t, double dt1, std::span<const double> sensor_starts) {
   double work = 0;
+  const auto& rigid = rigid_secondary_;
   std::array<std::vector<double>*, 3> f = {&s.fx, &s.fy, &s.fz};
   std::array<std::vector<double>*, 3> fext = {&s.fx_ext, &s.fy_ext, &s.fz_ext};
   std::array<std::vector<double>*, 3> mom = {&s.mx, &s.my, &s.mz};
   std::array<const std::vector<double>*, 3> v = {&s.vx, &s.vy, &s.vz};
   std::array<const std::vector<double>*, 3> w = {&s.wx, &s.wy, &s.wz};
 
-  // Gravity: force m g, work 1/2 (g_old + g_new) m v dt1.
-  for (const auto& g : gravity_) {
-    const double g_new = g.g.at(t);
-    const double g_old = g.g.at(t - dt1);
+  // Gravity: force m g, work 1/2 (g_old + g_new) m v dt1; a rigid body's secondary nodes are skipped.
+  for (auto& g : gravity_) {
+    const auto ends = g.sw.ends(g.g, g.sensor, t, dt1, sensor_starts);
+    if (!ends) continue;
+    const auto [g_old, g_new] = *ends;
     if (g.skew != model::kNone) {  // m g u on each node, work 1/2 (g_old + g_new) m (v.u) dt1
       const auto u = skews_->axis(g.skew, g.dir);
       double mv = 0;
       for (const auto n32 : g.nodes) {
         const auto n = static_cast<std::size_t>(n32);
+        if (!rigid.empty() && rigid[n]) continue;
         const double force = s.mass[n] * g_new;
         for (std::size_t d = 0; d < 3; ++d) {
           (*f[d])[n] += force * u[d];
@@ -156,6 +174,7 @@ double ExternalLoads::apply(NodeState& s, double t, double dt1) {
     double mv = 0;
     for (const auto n32 : g.nodes) {
       const auto n = static_cast<std::size_t>(n32);
+      if (!rigid.empty() && rigid[n]) continue;
       const double force = s.mass[n] * g_new;
       fd[n] += force;
       fe[n] += force;
@@ -166,9 +185,10 @@ double ExternalLoads::apply(NodeState& s, double t, double dt1) {
 
   // Concentrated loads: the full value on every node; power 1/2 (F_old + F_new) v, booked with dt2.
   cload_power_ = 0;
-  for (const auto& c : cloads_) {
-    const double f_new = c.f.at(t);
-    const double f_old = c.f.at(t - dt1);
+  for (auto& c : cloads_) {
+    const auto ends = c.sw.ends(c.f, c.sensor, t, dt1, sensor_starts);
+    if (!ends) continue;
+    const auto [f_old, f_new] = *ends;
     const bool moment = c.dir >= 3;
     if (c.skew != model::kNone) {  // F u on each node (a moment about u for XX YY ZZ), power
                                    // 1/2 (F_old + F_new) (v.u)
@@ -208,7 +228,9 @@ double ExternalLoads::apply(NodeState& s, double t, double dt1) {
 
   // Pressure: p A n split equally over the nodes of each segment, current geometry.
   for (const auto& p : ploads_) {
-    const double pr = p.p.at(t);
+    const double tau = t - time_origin(p.sensor, sensor_starts);
+    if (tau < 0) continue;
+    const double pr = p.p.at(tau);
     if (pr == 0) continue;
     for (std::size_t k = 0; k < p.segments.size(); ++k) {
       if (!p.active[k]) continue;

@@ -14,10 +14,14 @@
 //                             triangle (n4 == n3)  F_node = p (x2 - x1) x (x3 - x1) / 6 = p A n / 3.
 //            A positive pressure pushes along n. Work (as force.F90): W += dt1 sum_nodes F_node . v.
 //            Idel = 1: the load of a segment stops when its owner element is deleted (remove_element).
+// A load with a sensor (solver/sensors.hpp) acts only from the sensor's activation time T on, while the
+// sensor is on, and reads its function at tau = t - T instead of t. Its work takes for g_old, F_old the value
+// it applied at the previous cycle (0 where it did not act), and books the cycle after it stops with g_new,
+// F_new = 0: the trapezoid of the force that acted, so that switching a load on or off keeps the energy
+// balance (OpenRadioss books nothing then).
 // Not supported (construction throws std::runtime_error naming the load): Itypfun 2 or 3 (function of
-// displacement or velocity), /PLOAD Ipinch != 0. Sensors are 0 in a valid model (the starter rejects
-// them). A direction in a skew is read from SkewFrames at every apply(): a /SKEW/MOV turns the load with
-// the frame of x^n.
+// displacement or velocity), /PLOAD Ipinch != 0. A direction in a skew is read from SkewFrames at every
+// apply(): a /SKEW/MOV turns the load with the frame of x^n.
 //
 // Forces are ADDED to fx_ext.. and to fx.. (moments to mx..): the engine zeroes fx_ext.. and mx.. before
 // apply() and builds fx = fx_ext + element forces (or zeroes fx too and adds the element forces).
@@ -26,7 +30,9 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "solver/model/model.hpp"
@@ -38,14 +44,15 @@ namespace radx::solver {
 class ExternalLoads {
  public:
   // `rigid_secondary`: one flag per node, 1 for the secondary nodes of an active rigid body
-  // (RigidBodies::secondary_flags()); empty when there is no rigid body. `skews` must outlive this object.
+  // (RigidBodies::secondary_flags(), a view read at every apply(): a released body's nodes get their weight
+  // again); empty when there is no rigid body. `skews` must outlive this object.
   ExternalLoads(const model::Model& m, const SkewFrames& skews,
                 std::span<const std::uint8_t> rigid_secondary = {});
 
   // Cycle step 1, time t = t_n, dt1 = t_n - t_{n-1} (0 at cycle 0). Adds the loads to the state and
   // returns the external work booked now (gravity and pressure). Remembers the /CLOAD power for
-  // concentrated_load_work().
-  double apply(NodeState& s, double t, double dt1);
+  // concentrated_load_work(). `sensor_starts`: Sensors::starts() (may be empty when no load has a sensor).
+  double apply(NodeState& s, double t, double dt1, std::span<const double> sensor_starts = {});
 
   // /CLOAD work of the last apply(): 1/2 (F(t - dt1) + F(t)) v^{n-1/2} dt2, summed over loads and nodes.
   // Call once per cycle, when dt2 is known (with the kinematic conditions).
@@ -63,20 +70,34 @@ class ExternalLoads {
     double ascale = 1, fscale = 1;
     [[nodiscard]] double at(double t) const;
   };
+  // The on/off history of a load with a sensor, for its work.
+  struct Switch {
+    bool on = false;  // the load acted at the last call
+    double last = 0;  // the value it applied then
+    // The values at t_{n-1} and t_n for the work, {f(t - dt1), f(t)} without a sensor; nullopt when the load
+    // neither acts now nor did at the last call.
+    std::optional<std::pair<double, double>> ends(const Curve& c, std::int32_t sensor, double t, double dt1,
+                                                  std::span<const double> sensor_starts);
+  };
   struct Gravity {
     Curve g;
+    Switch sw;
+    std::int32_t sensor = model::kNone;  // dense index into model.sensors
     int dir = 0;
     std::int32_t skew = model::kNone;  // dense index: along axis `dir` of this skew
     std::vector<std::int32_t> nodes;
   };
   struct Concentrated {
     Curve f;
+    Switch sw;
+    std::int32_t sensor = model::kNone;
     int dir = 0;                       // 0..2 force, 3..5 moment
     std::int32_t skew = model::kNone;  // dense index: along axis dir % 3 of this skew
     std::vector<std::int32_t> nodes;
   };
   struct Pressure {
     Curve p;
+    std::int32_t sensor = model::kNone;
     std::vector<std::array<std::int32_t, 4>> segments;  // triangles: n4 == n3
     std::vector<std::uint8_t> active;
   };
@@ -91,6 +112,7 @@ class ExternalLoads {
   std::vector<Concentrated> cloads_;
   std::vector<Pressure> ploads_;
   std::vector<Owner> owners_;  // sorted by (type, element)
+  std::span<const std::uint8_t> rigid_secondary_;
   double cload_power_ = 0;
 };
 

@@ -7,25 +7,27 @@
 // SET-UP, once, after the engine has filled NodeState (x = x0 = model coordinates, mass = model node_mass,
 // inertia = element inertias, v = w = 0), with the skew frames `skews` (SkewFrames, the axes of t = 0):
 //   BoundaryConditions bcs(model, skews);   bcs.set_fixed_bits(s);
-//   InitialVelocities  inivel(model, skews); inivel.apply(s, 0.0); // returns the initial KE it gave (not
-//                                                                  // work)
+//   Sensors            sensors(model);      sensors.update(0.0, 0.0);  // S = sensors.starts()
+//   InitialVelocities  inivel(model, skews); inivel.apply(s, 0.0, S);  // returns the initial KE it gave
+//                                                                      // (not work)
 //   RigidWalls         walls(model);        walls.initialize(s);   // moving walls: + Mass, v = V0
-//   RigidBodies        bodies(model);       bodies.initialize(s);  // ICoG, M, inertia, principal frame
+//   RigidBodies        bodies(model);       bodies.initialize(s, S);  // ICoG, M, inertia, principal frame
 //   ExternalLoads      loads(model, skews, bodies.secondary_flags());
 //   ImposedVelocities  impvel(model, skews);
 //   bcs.apply(s);                                                  // fixed dofs start at rest
 //
 // CYCLE n (t, dt1; dt2 once the element step is known), after the engine's skews.update(s) (the moving
 // skews of x^n, read by every condition and load below):
-//   0. if (inivel.pending()) W += inivel.apply(s, t);              // /INIVEL with Tstart > 0
+//   0. if (inivel.pending()) W += inivel.apply(s, t, S);           // /INIVEL with Tstart > 0 or a sensor
 //   1. zero fx_ext.. and mx.. (and fx.. unless the assembly overwrites fx = fx_ext + f_elements);
-//      W += loads.apply(s, t, dt1);                                // gravity m g, /CLOAD, /PLOAD at t_n
-//   2-4. contact, elements, assembly; choose dt2.
+//      W += loads.apply(s, t, dt1, S);                             // gravity m g, /CLOAD, /PLOAD at t_n
+//   2-4. contact, elements, assembly; choose dt2; sensors.update(t, dt2).
+//   (S: the sensors' activation times; a load or condition with a sensor reads its function at t - S[k].)
 //   5. a = f/m, aw = m/I (engine), then in this order:
 //      walls.apply_wall_node_forces(s);                            // moving walls: previous wall force
-//      bodies.gather_and_accelerate(s, dt1);                       // a_N = F/M, Euler step (dt1: frame)
+//      bodies.gather_and_accelerate(s, t, dt1, S);                 // a_N = F/M, Euler step (dt1: frame)
 //      bcs.apply(s);
-//      W += impvel.apply(s, t, dt1, dt2);                          // a = (v_imp(t + dt2/2) - v)/dt12
+//      W += impvel.apply(s, t, dt1, dt2, S);                       // a = (v_imp(t + dt2/2) - v)/dt12
 //      W += walls.apply(s, dt1, dt2);                              // kinematic contact, slide 0/1/2
 //      bcs.apply(s);
 //      bodies.secondary_kinematics(s, dt1, dt2);                   // secondaries follow rigidly
@@ -41,3 +43,4 @@
 #include "solver/functions.hpp"
 #include "solver/rigid_body.hpp"
 #include "solver/rigid_wall_plane.hpp"
+#include "solver/sensors.hpp"

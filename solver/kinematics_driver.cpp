@@ -18,17 +18,22 @@ struct KinematicsDriver::Parts {
 };
 
 KinematicsDriver::KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes,
-                                   const SkewFrames& skews)
-    : model_(m), controls_(c), nodes_(nodes), skews_(skews), parts_(std::make_unique<Parts>(m, c, skews)) {}
+                                   const SkewFrames& skews, std::span<const double> sensor_starts)
+    : model_(m),
+      controls_(c),
+      nodes_(nodes),
+      skews_(skews),
+      sensor_starts_(sensor_starts),
+      parts_(std::make_unique<Parts>(m, c, skews)) {}
 
 KinematicsDriver::~KinematicsDriver() = default;
 
 void KinematicsDriver::initial_conditions() {
   auto& p = *parts_;
   p.bcs.set_fixed_bits(nodes_);
-  p.inivel.apply(nodes_, 0.0);  // initial kinetic energy, not work
+  p.inivel.apply(nodes_, 0.0, sensor_starts_);  // initial kinetic energy, not work
   p.walls.initialize(nodes_);
-  p.bodies.initialize(nodes_);
+  p.bodies.initialize(nodes_, sensor_starts_);
   p.loads = std::make_unique<ExternalLoads>(model_, skews_,
                                             p.bodies.size() > 0
                                                 ? std::span<const std::uint8_t>(p.bodies.secondary_flags())
@@ -38,16 +43,16 @@ void KinematicsDriver::initial_conditions() {
 
 void KinematicsDriver::external_loads(double t, double dt1, double) {
   auto& p = *parts_;
-  if (p.inivel.pending()) p.external_work += p.inivel.apply(nodes_, t);
-  if (!p.loads->empty()) p.external_work += p.loads->apply(nodes_, t, dt1);
+  if (p.inivel.pending()) p.external_work += p.inivel.apply(nodes_, t, sensor_starts_);
+  if (!p.loads->empty()) p.external_work += p.loads->apply(nodes_, t, dt1, sensor_starts_);
 }
 
 void KinematicsDriver::kinematic_conditions(double t, double dt1, double dt2) {
   auto& p = *parts_;
   p.walls.apply_wall_node_forces(nodes_);
-  if (p.bodies.size() > 0) p.bodies.gather_and_accelerate(nodes_, dt1);
+  if (p.bodies.size() > 0) p.bodies.gather_and_accelerate(nodes_, t, dt1, sensor_starts_);
   p.bcs.apply(nodes_);
-  p.external_work += p.impvel.apply(nodes_, t, dt1, dt2);
+  p.external_work += p.impvel.apply(nodes_, t, dt1, dt2, sensor_starts_);
   p.external_work += p.walls.apply(nodes_, dt1, dt2);
   p.bcs.apply(nodes_);
   if (p.bodies.size() > 0 && dt1 + dt2 > 0) p.bodies.secondary_kinematics(nodes_, dt1, dt2);
@@ -115,6 +120,10 @@ const std::vector<RigidWallOutput>& KinematicsDriver::wall_outputs() const {
 
 const RigidBodies& KinematicsDriver::rigid_bodies() const {
   return parts_->bodies;
+}
+
+std::vector<std::string> KinematicsDriver::take_messages() {
+  return parts_->bodies.take_messages();
 }
 
 }  // namespace radx::solver

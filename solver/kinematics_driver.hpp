@@ -7,6 +7,8 @@
 #include <array>
 #include <memory>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
@@ -20,10 +22,11 @@ class RigidBodies;
 
 class KinematicsDriver {
  public:
-  // `skews`: the engine's current skew frames (updated by the engine at the start of each cycle); it must
-  // outlive the driver.
+  // `skews`: the engine's current skew frames (updated by the engine at the start of each cycle);
+  // `sensor_starts`: Sensors::starts() of the run, read at every call (may be empty when the model has no
+  // sensor); both must outlive the driver.
   KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes,
-                   const SkewFrames& skews);
+                   const SkewFrames& skews, std::span<const double> sensor_starts = {});
   ~KinematicsDriver();
   KinematicsDriver(const KinematicsDriver&) = delete;
   KinematicsDriver& operator=(const KinematicsDriver&) = delete;
@@ -49,6 +52,8 @@ class KinematicsDriver {
   [[nodiscard]] const std::vector<RigidWallOutput>& wall_outputs() const;
   // The rigid bodies formed in this run (not those switched off by /RBODY/OFF), read-only for outputs.
   [[nodiscard]] const RigidBodies& rigid_bodies() const;
+  // Rigid bodies released by their sensor since the last call, one line each; taken by the call.
+  std::vector<std::string> take_messages();
 
  private:
   struct Parts;
@@ -56,6 +61,7 @@ class KinematicsDriver {
   const model::RunControls& controls_;
   NodeState& nodes_;
   const SkewFrames& skews_;
+  std::span<const double> sensor_starts_;
   std::unique_ptr<Parts> parts_;
 };
 

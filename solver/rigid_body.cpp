@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "solver/sensors.hpp"
+
 namespace radx::solver {
 
 namespace {
@@ -77,20 +79,48 @@ RigidBodies::RigidBodies(const model::Model& m, std::span<const std::int64_t> in
     b.id = rb.id;
     b.main = rb.main_node;
     b.secondary = rb.secondary;
+    b.sensor = m.sensor_index(rb.sensor);
+    const bool sensor = b.sensor != model::kNone;
     b.ispher = rb.ispher == 1 ? 1 : 2;
-    b.icog = rb.icog;
+    b.icog = sensor ? 2 : rb.icog;  // with a sensor: formed from the secondaries alone
     for (const auto n : b.secondary) secondary_flag_[static_cast<std::size_t>(n)] = 1;
     bodies_.push_back(std::move(b));
-    deck_mass_.push_back(rb.mass);
-    deck_inertia_.push_back(rb.inertia);
+    deck_mass_.push_back(sensor ? 0.0 : rb.mass);
+    deck_inertia_.push_back(sensor ? std::array<double, 6>{} : rb.inertia);
   }
 }
 
-void RigidBodies::initialize(NodeState& s) {
+std::vector<std::string> RigidBodies::take_messages() {
+  std::vector<std::string> out;
+  out.swap(messages_);
+  return out;
+}
+
+void RigidBodies::release(RigidBodyInfo& b, NodeState& s) {
+  b.active = false;
+  b.release_in = 0;
+  const auto mn = static_cast<std::size_t>(b.main);
+  s.mass[mn] = 0;  // the main node of a body with a sensor has no mass of its own (INIRBYS)
+  s.inertia[mn] = 0;
+  for (const auto n : b.secondary) secondary_flag_[static_cast<std::size_t>(n)] = 0;
+  b.force = b.moment = b.secondary_force = b.secondary_moment = {};
+  messages_.push_back("RIGID BODY " + std::to_string(b.id) + " SET OFF");
+}
+
+void RigidBodies::initialize(NodeState& s, std::span<const double> sensor_starts) {
   for (std::size_t bi = 0; bi < bodies_.size(); ++bi) {
     auto& b = bodies_[bi];
     const std::string what = "/RBODY/" + std::to_string(b.id);
     const auto mn = static_cast<std::size_t>(b.main);
+    const bool sensor = b.sensor != model::kNone;
+    if (sensor) {
+      s.mass[mn] = 0;
+      s.inertia[mn] = 0;
+      if (time_origin(b.sensor, sensor_starts) <= 0) {  // the sensor is on at t = 0: never formed
+        release(b, s);
+        continue;
+      }
+    }
     double m0 = s.mass[mn] + deck_mass_[bi];
     if (m0 == 0) m0 = 1e-20;
     const auto& j = deck_inertia_[bi];  // Jxx Jyy Jzz Jxy Jyz Jxz
@@ -161,7 +191,23 @@ void RigidBodies::initialize(NodeState& s) {
     s.z[mn] = s.z0[mn] = x_new(2);
     s.mass[mn] = mass;
     s.inertia[mn] = lam.minCoeff();
-    const Vec3 vm = velocity(s, mn), wm = spin(s, mn);
+    Vec3 vm = velocity(s, mn), wm = spin(s, mn);
+    if (sensor) {  // the velocities that keep the secondaries' momentum and angular momentum (rbypid.F)
+      Vec3 p = Vec3::Zero(), l = Vec3::Zero();
+      for (const auto n : b.secondary) {
+        const auto k = static_cast<std::size_t>(n);
+        p += s.mass[k] * velocity(s, k);
+        l += (position(s, k) - x_new).cross(s.mass[k] * velocity(s, k)) + s.inertia[k] * spin(s, k);
+      }
+      vm = p / mass;
+      wm = r.transpose() * ((r * l).array() / lam.array()).matrix();
+      s.vx[mn] = vm(0);
+      s.vy[mn] = vm(1);
+      s.vz[mn] = vm(2);
+      s.wx[mn] = wm(0);
+      s.wy[mn] = wm(1);
+      s.wz[mn] = wm(2);
+    }
     for (const auto n : b.secondary) {
       const auto k = static_cast<std::size_t>(n);
       const Vec3 vs = vm + wm.cross(position(s, k) - x_new);
@@ -175,8 +221,20 @@ void RigidBodies::initialize(NodeState& s) {
   }
 }
 
-void RigidBodies::gather_and_accelerate(NodeState& s, double dt1) {
+void RigidBodies::gather_and_accelerate(NodeState& s, double t, double dt1,
+                                        std::span<const double> sensor_starts) {
   for (auto& b : bodies_) {
+    if (!b.active) continue;
+    if (b.sensor != model::kNone) {  // rbyonf.F RBYSENS: released 2 cycles after the sensor is seen on
+      if (b.release_in > 0 && --b.release_in == 0) {
+        release(b, s);
+        continue;
+      }
+      if (b.release_in == 0 && t > time_origin(b.sensor, sensor_starts)) {
+        b.release_in = 2;
+        messages_.push_back("RIGID BODY " + std::to_string(b.id) + " WILL BE SET OFF WITHIN 2 CYCLES");
+      }
+    }
     const auto mn = static_cast<std::size_t>(b.main);
     const Vec3 xm = position(s, mn);
     Vec3 f(s.fx[mn], s.fy[mn], s.fz[mn]);
@@ -262,6 +320,7 @@ void RigidBodies::secondary_kinematics(NodeState& s, double dt1, double dt2) con
   const double dt12 = 0.5 * (dt1 + dt2);
   const double inv = 1.0 / dt12;
   for (const auto& b : bodies_) {
+    if (!b.active) continue;
     const auto mn = static_cast<std::size_t>(b.main);
     const Vec3 xm = position(s, mn);
     const Vec3 w = spin(s, mn) + dt12 * spin_rate(s, mn);          // omega^{n+1/2}
@@ -287,6 +346,7 @@ KineticCorrection RigidBodies::kinetic_correction(const NodeState& s, double dt1
   KineticCorrection c;
   const double h = 0.5 * dt1;
   for (const auto& b : bodies_) {
+    if (!b.active) continue;
     const auto mn = static_cast<std::size_t>(b.main);
     const Eigen::Map<const RowMat3> r(b.axes.data());
     const Vec3 w = spin(s, mn) + h * spin_rate(s, mn);

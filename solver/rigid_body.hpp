@@ -34,14 +34,27 @@
 //   kinetic_correction (energy balance, print time, v + dt1/2 a): subtract the secondaries' KE (both
 //     parts), their mass and momentum, and replace the main node's isotropic rotational KE
 //     1/2 I_N |w|^2 by 1/2 sum I_i w_i^2 in the principal frame (rgbcor.F).
-// Not supported (construction throws std::runtime_error): a body without main node. Sensors, skews,
-// /RBODY/ON|OFF and rigid-body hierarchies are not handled (the starter rejects sensors and skews).
-// No allocation in the per-cycle calls.
+// A body with a sensor (OpenRadioss hm_read_rbody.F, inirby.F INIRBYS, rbyonf.F RBYSENS, rbypid.F):
+//   - it is formed from its secondary nodes alone: the main node's own mass and inertia become 0, the deck's
+//     Mass and J are not used, and the set-up is ICoG 2's (main node at the secondaries' centre of mass); its
+//     velocity and angular velocity are those that keep the secondaries' momentum and angular momentum
+//     (v_N = sum m_s v_s / M, omega = I^-1 sum (r_s x m_s v_s + I_s w_s));
+//   - when its sensor is already on at t = 0 it is never formed (the nodes move freely, the main node has no
+//     mass);
+//   - at the first cycle with t_n > T (the sensor's activation time) it is marked for release, and 2 cycles
+//     later it is released: no more gathering nor secondary kinematics, the main node keeps no mass nor
+//     inertia, the secondaries go on from the rigid velocities they had (and get their weight again).
+//   Radioss forms the body again if the sensor switches off; the starter refuses that use (a sensor with
+//   Tstop), so a released body stays released.
+// Not supported (construction throws std::runtime_error): a body without main node. Skews, /RBODY/ON and
+// rigid-body hierarchies are not handled (the starter rejects skews).
+// No allocation in the per-cycle calls, except the messages when a body is released.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "solver/model/model.hpp"
@@ -53,6 +66,9 @@ struct RigidBodyInfo {
   std::int64_t id = 0;
   std::int32_t main = model::kNone;
   std::vector<std::int32_t> secondary;
+  std::int32_t sensor = model::kNone;  // dense index into model.sensors: the sensor that releases the body
+  bool active = true;                  // false once released by its sensor (or never formed)
+  int release_in = 0;                  // cycles left before the release (0: none pending)
   int ispher = 2, icog = 1;
   double mass = 0;                          // M, the main node's mass after set-up
   std::array<double, 6> tensor{};           // global inertia tensor at set-up: Ixx Iyy Izz Ixy Iyz Ixz
@@ -83,12 +99,15 @@ class RigidBodies {
   explicit RigidBodies(const model::Model& m, std::span<const std::int64_t> inactive = {});
 
   // Once before cycle 0, after the nodal masses and inertias, /INIVEL and rigid walls are in the state.
-  void initialize(NodeState& s);
-  // Per node: 1 for a secondary node of a rigid body (for ExternalLoads).
+  // `sensor_starts`: Sensors::starts() after the check at t = 0 (may be empty when no body has a sensor).
+  void initialize(NodeState& s, std::span<const double> sensor_starts = {});
+  // Per node: 1 for a secondary node of an active rigid body (for ExternalLoads; a released body's nodes
+  // are cleared).
   [[nodiscard]] const std::vector<std::uint8_t>& secondary_flags() const { return secondary_flag_; }
 
-  // Cycle step 5, after a = f/m (before the boundary conditions). dt1 = t_n - t_{n-1}.
-  void gather_and_accelerate(NodeState& s, double dt1);
+  // Cycle step 5, after a = f/m (before the boundary conditions). t = t_n, dt1 = t_n - t_{n-1}. Releases the
+  // bodies whose sensor asks for it first (see above).
+  void gather_and_accelerate(NodeState& s, double t, double dt1, std::span<const double> sensor_starts = {});
   // Cycle step 5, last kinematic condition before v += dt12 a. Precondition: dt1 + dt2 > 0.
   void secondary_kinematics(NodeState& s, double dt1, double dt2) const;
   // Energy balance at print time (velocities v + dt1/2 a).
@@ -98,8 +117,12 @@ class RigidBodies {
 
   [[nodiscard]] const std::vector<RigidBodyInfo>& bodies() const { return bodies_; }
   [[nodiscard]] std::size_t size() const { return bodies_.size(); }
+  // One line per body marked for release or released since the last call; taken (emptied) by the call.
+  std::vector<std::string> take_messages();
 
  private:
+  void release(RigidBodyInfo& b, NodeState& s);
+  std::vector<std::string> messages_;
   std::vector<RigidBodyInfo> bodies_;
   std::vector<double> deck_mass_;
   std::vector<std::array<double, 6>> deck_inertia_;

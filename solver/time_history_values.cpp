@@ -386,6 +386,7 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
       const auto& formed = e.kinematics().rigid_bodies().bodies();
       for (std::size_t o = 0; o < objects_.size(); ++o) {
         const RigidBodyInfo* b = bodies_[o] < 0 ? nullptr : &formed[static_cast<std::size_t>(bodies_[o])];
+        if (b && !b->active) b = nullptr;  // released by its sensor: a free main node, STATUS 0
         const auto main = b ? b->main : m.rigid_bodies[static_cast<std::size_t>(objects_[o])].main_node;
         if (main == model::kNone) continue;
         const auto n = static_cast<std::size_t>(main);

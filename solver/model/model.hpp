@@ -302,6 +302,19 @@ struct Accelerometer {
   double fcut = 0;
 };
 
+// /SENSOR/TIME (OpenRadioss read_sensor_time.F, sensor_time.F): on from Tdelay, off again from Tstop. The
+// loads, conditions and interfaces that name a sensor keep its user id (their `sensor` or `sens_id`); the
+// engine keeps each sensor's state (solver/sensors.hpp). Stored as its integer in the model file: new types
+// go at the end.
+enum class SensorType : std::uint8_t { Time = 0 };
+struct Sensor {
+  std::int64_t id = 0;
+  std::string title;
+  SensorType type = SensorType::Time;
+  double t_delay = 0;      // Tdelay: the sensor switches on when the run reaches it
+  double t_stop = kNever;  // Tstop (deck format 2023 and newer): it switches off; kNever = never
+};
+
 // Stored as its integer in the model file (docs/model-file.md): new kinds go at the end.
 enum class ThKind : std::uint8_t {
   Node,
@@ -401,6 +414,7 @@ struct Model {
   std::vector<Skew> skews;
   std::vector<Section> sections;
   std::vector<Accelerometer> accelerometers;
+  std::vector<Sensor> sensors;
   std::vector<TimeHistoryGroup> time_histories;
   std::vector<Interface> interfaces;
   std::vector<std::string> ignored_keywords;  // control cards accepted as ignored, as written
@@ -420,6 +434,15 @@ struct Model {
     for (std::size_t k = 0; k < skews.size(); ++k)
       if (skews[k].id == skew) return static_cast<std::int32_t>(k);
     throw std::out_of_range("no /SKEW/FIX or /SKEW/MOV " + std::to_string(skew) + " in the model");
+  }
+
+  // Dense index in `sensors` of the sensor with user id `sensor`; kNone for 0 (no sensor). Throws
+  // std::out_of_range for an id the model lacks (the starter refuses those).
+  [[nodiscard]] std::int32_t sensor_index(std::int64_t sensor) const {
+    if (sensor == 0) return kNone;
+    for (std::size_t k = 0; k < sensors.size(); ++k)
+      if (sensors[k].id == sensor) return static_cast<std::int32_t>(k);
+    throw std::out_of_range("no /SENSOR/" + std::to_string(sensor) + " in the model");
   }
 };
 

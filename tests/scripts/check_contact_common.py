@@ -105,7 +105,19 @@ class Model:
                      for _, data in d.of("/GRAV")]
         self.interfaces = {iid: type7_fields(data) for iid, data in d.of("/INTER/TYPE7")}
         self.interfaces.update({iid: type7_fields(data, lagdt=True) for iid, data in d.of("/INTER/LAGDT/TYPE7")})
+        # /SENSOR/TIME: (Tdelay, Tstop); Tstop (the 2023+ second card) 0 or absent = never.
+        self.sensors = {sid: (real(data[1], 1, 20), (real(data[2], 1, 20) if len(data) > 2 else 0.0) or 1e30)
+                        for sid, data in d.of("/SENSOR/TIME")}
         self.masses = self.lumped_masses()
+
+    def window(self, iid):
+        """[on, off) of interface iid: its Tstart and Tstop, narrowed to its sensor's [Tdelay, Tstop)."""
+        it = self.interfaces[iid]
+        on, off = it["Tstart"], it["Tstop"]
+        if it["sens"]:
+            t_delay, t_stop = self.sensors[it["sens"]]
+            on, off = max(on, t_delay), min(off, t_stop)
+        return on, off
 
     def lumped_masses(self):
         """Lumped nodal masses of regular meshes: a brick gives rho V / 8 to each node (V exact for a
@@ -161,7 +173,8 @@ def type7_fields(data, lagdt=False):
              Tstart=real(c[k], 61, 80), Tstop=real(c[k], 81, 100))
     f.update(IBC=tuple(integer(c[k + 1], col, col) for col in (8, 9, 10)))
     f.update(Inacti=integer(c[k + 1], 31, 40), VISs=real(c[k + 1], 41, 60), VISf=real(c[k + 1], 61, 80))
-    f.update(Ifric=integer(c[k + 2], 1, 10), Iform=integer(c[k + 2], 41, 50))
+    f.update(Ifric=integer(c[k + 2], 1, 10), Iform=integer(c[k + 2], 41, 50),
+             sens=0 if lagdt else integer(c[k + 2], 51, 60))
     # Two-stage defaults (type7-lagdt.md 3): 0 means the default.
     f["VISs"] = f["VISs"] or 0.05
     f["VISf"] = f["VISf"] or 1.0

@@ -73,7 +73,7 @@ def main():
         z1, v_1 = tile_a(late, root)
         check(abs(z1 - z0) <= 1e-3 * gap, "Inacti %d: lowest DZ %.9g with Tstart > 0, %.9g from t = 0" % (inacti, z1, z0))
         check(abs(v_1 - v_0) <= 1e-3 * v0, "Inacti %d: final VZ %.9g with Tstart > 0, %.9g from t = 0" % (inacti, v_1, v_0))
-        check(re.search(r"starts \(Tstart [^)]*\) with \d+ secondary node\(s\) closer than the gap.*Inacti %d applied"
+        check(re.search(r"starts at t = \S+ \(Tstart\) with \d+ secondary node\(s\) closer than the gap.*Inacti %d applied"
                         % inacti, log) is not None, "Inacti %d: no message about the penetrations at Tstart" % inacti)
     finish("Inacti 1, 2, 5 at Tstart > 0 match the treatment from t = 0")
 

@@ -3,7 +3,12 @@
 usage: /usr/bin/python3 check_contact_tstart_tstop.py --radx RADX
            --decks decks/verification/tstart_tstop/TSTART_AFTER_IMPACT_0000.rad
                    decks/verification/tstart_tstop/TSTOP_BEFORE_IMPACT_0000.rad
-                   decks/verification/tstart_tstop/TSTOP_DURING_CONTACT_0000.rad --out DIR
+                   decks/verification/tstart_tstop/TSTOP_DURING_CONTACT_0000.rad
+                   decks/verification/tstart_tstop/SENSOR_ON_AFTER_IMPACT_0000.rad
+                   decks/verification/tstart_tstop/SENSOR_OFF_DURING_CONTACT_0000.rad --out DIR
+
+A deck may instead name a /SENSOR/TIME in the interface's sens_ID: the window is then the sensor's [Tdelay, Tstop)
+(within the interface's own), and the same expectations hold.
 
 Each deck is node_on_segment's model: a stiff cube (mass M) moving at v0 along -Z, its N lower-face nodes the
 secondary nodes of one fixed, flat main segment; its lower face starts outside the gap g and would enter it at
@@ -44,9 +49,10 @@ import check_contact_common as cc
 
 def one_deck(radx, deck, out, checks):
     m = cc.Model(deck)
-    (it,) = m.interfaces.values()
+    ((iid, it),) = m.interfaces.items()
     assert it["Istf"] == 1 and it["Igap"] == 0 and it["Inacti"] == 0
-    K, g, vis_s, t_start, t_stop = it["Stfac"], it["Gapmin"], it["VISs"], it["Tstart"], it["Tstop"]
+    K, g, vis_s = it["Stfac"], it["Gapmin"], it["VISs"]
+    t_start, t_stop = m.window(iid)  # Tstart and Tstop, or the window of the interface's sensor
     secondary = m.groups[it["grnd"]]
     _, M, vel = m.moving_body()
     masses = [m.masses[n] for n in secondary]

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "solver/kinematics.hpp"
@@ -938,7 +939,7 @@ m::Model rigid_model(const std::vector<V3>& secondary, V3 main_at, int icog = 1)
 // One cycle of the loop with the rigid-body calls in the engine's order; no other condition.
 void rigid_cycle(sv::NodeState& s, sv::RigidBodies& rb, double dt1, double dt2) {
   accelerations(s);
-  rb.gather_and_accelerate(s, dt1);
+  rb.gather_and_accelerate(s, 0.0, dt1);
   rb.secondary_kinematics(s, dt1, dt2);
 }
 
@@ -1062,7 +1063,7 @@ TEST_CASE("rigid body: a force on a secondary node gives F/M and (r x F)/I, grav
   zero_forces(s);
   s.fz[1] = 3.0;
   accelerations(s);
-  rb.gather_and_accelerate(s, 0.0);
+  rb.gather_and_accelerate(s, 0.0, 0.0);
   // Round-off (the main node's 1e-20 mass is in M).
   CHECK(close(s.az[0], 3.0 / 4.0, 1e-14));
   CHECK(std::abs(s.ax[0]) < 1e-15);
@@ -1122,7 +1123,7 @@ TEST_CASE("rigid body: angular acceleration with the full tensor and with fixed 
     s.my[0] = 2.0;
     s.mz[0] = 3.0;
     accelerations(s);
-    rb.gather_and_accelerate(s, 0.0);
+    rb.gather_and_accelerate(s, 0.0, 0.0);
     CHECK(close(s.awx[0], expected[0], 1e-13, 1.0));
     CHECK(close(s.awy[0], expected[1], 1e-13, 1.0));
     CHECK(close(s.awz[0], expected[2], 1e-13, 1.0));
@@ -1147,7 +1148,7 @@ TEST_CASE("rigid body under gravity: the weight is counted once", "[loads]") {
   (void)loads.apply(s, 0.0, 0.0);
   CHECK(s.fz[1] == 0.0);
   accelerations(s);
-  rb.gather_and_accelerate(s, 0.0);
+  rb.gather_and_accelerate(s, 0.0, 0.0);
   CHECK(close(s.az[0], -9.81, 1e-14));
   rb.secondary_kinematics(s, 0.0, 1e-3);
   for (std::size_t n = 1; n <= 4; ++n) CHECK(close(s.az[n], -9.81, 1e-14));  // at rest: a_s = a_N
@@ -1269,4 +1270,299 @@ TEST_CASE("rigid body tumbling: Euler's equations keep the global angular moment
   CHECK(a.energy / b.energy == Approx(2.0).epsilon(0.2));
   // Rigid all along: round-off.
   CHECK(a.distance < 1e-12);
+}
+
+// (f) ------------------------------------------------------------------------------------------------------
+// Sensors (solver/sensors.hpp): /SENSOR/TIME and what it drives. The loop below is the engine's order: loads
+// at t_n with the sensor state of the previous check, the step, the sensors' check with it, the conditions,
+// the update. With a constant step and activation times half a step before a cycle time, the central
+// difference sums are the exact integrals (midpoint rule on linear functions): round-off tolerances.
+namespace {
+
+m::Sensor timer(std::int64_t id, double t_delay, double t_stop = m::kNever) {
+  m::Sensor s;
+  s.id = id;
+  s.t_delay = t_delay;
+  s.t_stop = t_stop;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("sensor: on when t + dt reaches Tdelay (from Tdelay itself), off for good at Tstop", "[loads]") {
+  m::Model md;
+  md.sensors = {timer(7, 0.0), timer(8, 0.25, 0.5), timer(9, -1.0)};
+  sv::Sensors sensors(md);
+  const auto starts = sensors.starts();
+  REQUIRE(starts.size() == 3);
+  CHECK(starts[1] == m::kNever);
+  sensors.update(0.0, 0.0);  // before cycle 0: Tdelay <= 0 is on from the start
+  CHECK(starts[0] == 0.0);
+  CHECK(starts[1] == m::kNever);
+  CHECK(starts[2] == -1.0);
+  CHECK(sensors.take_messages().size() == 2);
+  sensors.update(0.1, 0.1);
+  CHECK(starts[1] == m::kNever);
+  sensors.update(0.2, 0.1);  // 0.2 + 0.1 >= 0.25: on, from 0.25 (not from the cycle's time)
+  CHECK(starts[1] == 0.25);
+  const auto on = sensors.take_messages();
+  REQUIRE(on.size() == 1);
+  CHECK(on[0] == "SENSOR (TIME) 8 ACTIVATED AT TIME 2.5000E-01");
+  sensors.update(0.3, 0.1);
+  CHECK(starts[1] == 0.25);
+  sensors.update(0.4, 0.1);  // 0.5 >= Tstop: off
+  CHECK(starts[1] == m::kNever);
+  CHECK(sensors.take_messages() ==
+        std::vector<std::string>{"SENSOR (TIME) 8 DEACTIVATED AT TIME 5.0000E-01"});
+  sensors.update(10.0, 0.1);  // never on again
+  CHECK(starts[1] == m::kNever);
+  CHECK(sensors.take_messages().empty());
+  CHECK(md.sensor_index(9) == 2);
+  CHECK(md.sensor_index(0) == m::kNone);
+  CHECK_THROWS_AS(md.sensor_index(10), std::out_of_range);
+}
+
+TEST_CASE("sensor: a /CLOAD and a /GRAV on free masses act from the activation, F read at t - Tdelay",
+          "[loads]") {
+  // Node 0: /CLOAD along Z, F(tau) = 6 tau (ramp), sensor 1 on from T1 = 0.0205 to Tstop = 0.0405.
+  // Node 1: /GRAV along X, g = -9.81 constant, sensor 2 on from T2 = 0.0305 (never off).
+  const double dt = 1e-3, T1 = 0.0205, T1_stop = 0.0405, T2 = 0.0305, g = -9.81, m0 = 2.0, m1 = 0.5;
+  auto md = nodes_model({{0, 0, 0}, {1, 0, 0}});
+  md.sensors = {timer(11, T1, T1_stop), timer(12, T2)};
+  m::ConcentratedLoad c;
+  c.id = 1;
+  c.function = add_function(md, {0.0, 1.0}, {0.0, 1.0});
+  c.dir = 2;
+  c.fscale_y = 6.0;
+  c.sensor = 11;
+  c.group = add_group(md, {0});
+  md.concentrated_loads.push_back(c);
+  m::Gravity gr;
+  gr.id = 1;
+  gr.dir = 0;
+  gr.fscale_y = g;
+  gr.sensor = 12;
+  gr.group = add_group(md, {1});
+  md.gravities.push_back(gr);
+  auto s = state_of(md, {m0, m1});
+  sv::Sensors sensors(md);
+  const sv::SkewFrames frames(md);
+  sv::ExternalLoads loads(md, frames);
+  sensors.update(0.0, 0.0);
+  double t = 0, dt1 = 0;
+  for (int k = 0; k < 60; ++k) {
+    zero_forces(s);
+    (void)loads.apply(s, t, dt1, sensors.starts());
+    if (t < T1) CHECK(s.fz[0] == 0.0);  // nothing before the sensor
+    if (t < T2) CHECK(s.fx[1] == 0.0);
+    accelerations(s);
+    sensors.update(t, dt);
+    update(s, dt1, dt);
+    const double mid = t + 0.5 * dt;  // v = v^{n+1/2}: the impulse up to t_n + dt/2
+    // Momentum m v = integral of F(t' - T1) dt' from T1 to min(mid, Tstop) = 3 tau^2; 0 before.
+    const double tau1 = std::clamp(mid, T1, T1_stop) - T1;
+    // Round-off of the momentum scale (m g t ~ 0.2, 3 tau^2 ~ 1e-3): 1e-13 absolute.
+    CHECK(close(m0 * s.vz[0], 3.0 * tau1 * tau1, 1e-13, 1.0));
+    CHECK(close(m1 * s.vx[1], m1 * g * (std::max(mid, T2) - T2), 1e-13, 1.0));
+    t += dt;
+    dt1 = dt;
+  }
+  CHECK(s.vz[0] > 0);  // the load did act, and stopped: 3 (Tstop - T1)^2 / m0
+  CHECK(close(s.vz[0], 3.0 * (T1_stop - T1) * (T1_stop - T1) / m0, 1e-12));
+}
+
+TEST_CASE("sensor: a /PLOAD acts while its sensor is on, its function read from the activation", "[loads]") {
+  // One triangle (area 1/2, normal +z): p(tau) = 4 tau, sensor on from 0.25 to 0.5: it acts at the cycles
+  // 0.25 <= t < 0.5 (at 0.25 with p(0) = 0).
+  auto md = nodes_model({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  m::Surface surf;
+  surf.id = 1;
+  surf.segments = {{0, 1, 2, 2}};
+  md.surfaces.push_back(surf);
+  md.sensors = {timer(6, 0.25, 0.5)};
+  m::PressureLoad p;
+  p.id = 1;
+  p.surface = 0;
+  p.function = add_function(md, {0.0, 1.0}, {0.0, 4.0});
+  p.sensor = 6;
+  md.pressure_loads.push_back(p);
+  auto s = state_of(md, {1, 1, 1});
+  sv::Sensors sensors(md);
+  const sv::SkewFrames frames(md);
+  sv::ExternalLoads loads(md, frames);
+  sensors.update(0.0, 0.0);
+  for (const auto& [t, expected] : std::vector<std::pair<double, double>>{
+           {0.125, 0.0}, {0.25, 0.0}, {0.375, 4.0 * 0.125 * 0.5 / 3}, {0.5, 0.0}, {0.625, 0.0}}) {
+    zero_forces(s);
+    (void)loads.apply(s, t, 0.125, sensors.starts());
+    INFO("t = " << t);
+    CHECK(s.fz[0] == Approx(expected).epsilon(1e-14));  // p A / 3 on each node
+    sensors.update(t, 0.125);
+  }
+}
+
+TEST_CASE("sensor: /IMPVEL and /IMPDISP start at the activation, their functions from there", "[loads]") {
+  // Node 0: /IMPVEL Y, v_imp(tau) = 3 tau, sensor on from T1; free before (it keeps 0.2).
+  // Node 1: /IMPDISP Z, u(tau) = 2 tau, sensor on from T2; free at 0.5 before, then the function's
+  //         increments from where it is: z = z(t_k0) + 2 (t - t_k0), k0 the first cycle with t >= T2.
+  const double dt = 1e-3, T1 = 0.0105, T2 = 0.0155;
+  auto md = nodes_model({{0, 0, 0}, {1, 0, 0}});
+  md.sensors = {timer(1, T1), timer(2, T2)};
+  const auto ramp = add_function(md, {0.0, 1.0}, {0.0, 1.0});
+  m::ImposedVelocity iv;
+  iv.id = 1;
+  iv.function = ramp;
+  iv.dir = 1;
+  iv.fscale_y = 3.0;
+  iv.sensor = 1;
+  iv.group = add_group(md, {0});
+  m::ImposedVelocity id = iv;
+  id.id = 2;
+  id.displacement = true;
+  id.dir = 2;
+  id.fscale_y = 2.0;
+  id.sensor = 2;
+  id.group = add_group(md, {1});
+  md.imposed_velocities = {iv, id};
+  auto s = state_of(md, {1.0, 1.0});
+  s.vy[0] = 0.2;
+  s.vz[1] = 0.5;
+  sv::Sensors sensors(md);
+  const sv::SkewFrames frames(md);
+  sv::ImposedVelocities impvel(md, frames);
+  sensors.update(0.0, 0.0);
+  double t = 0, dt1 = 0, t_k0 = -1, z_k0 = 0;
+  for (int k = 0; k < 40; ++k) {
+    zero_forces(s);
+    accelerations(s);
+    sensors.update(t, dt);
+    if (t >= T2 && t_k0 < 0) {
+      t_k0 = t;
+      z_k0 = s.z[1];
+    }
+    (void)impvel.apply(s, t, dt1, dt, sensors.starts());
+    update(s, dt1, dt);
+    if (t < T1)
+      CHECK(s.vy[0] == 0.2);
+    else
+      CHECK(close(s.vy[0], 3.0 * (t + 0.5 * dt - T1), 1e-12, 1e-3));
+    if (t < T2)
+      CHECK(close(s.z[1], 0.5 * (t + dt), 1e-12, 1e-3));
+    else
+      CHECK(close(s.z[1], z_k0 + 2.0 * (t + dt - t_k0), 1e-12, 1e-3));
+    t += dt;
+    dt1 = dt;
+  }
+  CHECK(t_k0 > 0);
+}
+
+TEST_CASE("sensor: /INIVEL at the activation (Tstart 0), or at the earlier of Tstart and the activation",
+          "[loads]") {
+  auto md = nodes_model({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}});
+  md.sensors = {timer(3, 0.3)};
+  m::InitialVelocity a;
+  a.id = 1;
+  a.v = {0.0, 0.0, -4.0};
+  a.sensor = 3;
+  a.group = add_group(md, {0});
+  m::InitialVelocity b = a;
+  b.id = 2;
+  b.t_start = 0.2;  // before the sensor: Tstart wins
+  b.group = add_group(md, {1});
+  m::InitialVelocity c = a;
+  c.id = 3;
+  c.t_start = 0.9;  // after it: the sensor wins
+  c.group = add_group(md, {2});
+  md.initial_velocities = {a, b, c};
+  auto s = state_of(md, {1.0, 1.0, 1.0});
+  sv::Sensors sensors(md);
+  const sv::SkewFrames frames(md);
+  sv::InitialVelocities inivel(md, frames);
+  sensors.update(0.0, 0.0);
+  CHECK(inivel.apply(s, 0.0, sensors.starts()) == 0.0);
+  sensors.update(0.1, 0.1);
+  CHECK(inivel.apply(s, 0.2, sensors.starts()) == 8.0);  // b
+  CHECK(s.vz[1] == -4.0);
+  CHECK(s.vz[0] == 0.0);
+  sensors.update(0.2, 0.1);  // on from 0.3
+  CHECK(inivel.apply(s, 0.29, sensors.starts()) == 0.0);
+  CHECK(inivel.apply(s, 0.3, sensors.starts()) == 16.0);  // a and c
+  CHECK(s.vz[0] == -4.0);
+  CHECK(s.vz[2] == -4.0);
+  CHECK(!inivel.pending());
+}
+
+TEST_CASE("sensor: a rigid body is formed from its secondaries and released 2 cycles after the sensor",
+          "[loads]") {
+  // Secondaries of masses 1, 1, 2 at (1,0,0), (-1,0,0), (0,1,0): centre (0, 0.5, 0), M = 4, I = diag(1, 2, 3)
+  // about it. Nodes 1 and 2 move at +-1 along Y: momentum 0, angular momentum (0, 0, 2), so w = 2/3 about Z.
+  auto md = rigid_model({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}}, {5.0, 5.0, 5.0}, 3);
+  md.sensors = {timer(4, 0.0105)};
+  auto& rb_model = md.rigid_bodies[0];
+  rb_model.sensor = 4;
+  rb_model.mass = 100.0;                  // not used with a sensor, as the main node's own mass
+  rb_model.inertia = {9, 9, 9, 0, 0, 0};  // nor the added inertia
+  auto s = state_of(md, {7.0, 1.0, 1.0, 2.0});
+  s.vy[1] = 1.0;
+  s.vy[2] = -1.0;
+  sv::Sensors sensors(md);
+  sv::RigidBodies rb(md);
+  sensors.update(0.0, 0.0);
+  rb.initialize(s, sensors.starts());
+  const auto& b = rb.bodies()[0];
+  REQUIRE(b.active);
+  CHECK(s.mass[0] == Approx(4.0).epsilon(1e-14));
+  CHECK(s.x[0] == 0.0);
+  CHECK(s.y[0] == Approx(0.5).epsilon(1e-14));
+  CHECK(s.z[0] == 0.0);
+  CHECK(s.wz[0] == Approx(2.0 / 3.0).epsilon(1e-14));
+  CHECK(std::abs(s.vx[0]) + std::abs(s.vy[0]) + std::abs(s.vz[0]) < 1e-15);
+  CHECK(s.vx[1] == Approx(1.0 / 3.0).epsilon(1e-14));  // w x r, r = (1, -0.5, 0)
+  CHECK(s.vy[1] == Approx(2.0 / 3.0).epsilon(1e-14));
+
+  const double dt = 1e-3;
+  double t = 0, dt1 = 0;
+  std::vector<std::string> messages;
+  int released_at = -1;
+  for (int k = 0; k < 20; ++k) {
+    accelerations(s);
+    sensors.update(t, dt);
+    rb.gather_and_accelerate(s, t, dt1, sensors.starts());
+    rb.secondary_kinematics(s, dt1, dt);
+    for (auto& msg : rb.take_messages()) messages.push_back(std::to_string(k) + ": " + msg);
+    if (!b.active && released_at < 0) released_at = k;
+    update(s, dt1, dt);
+    t += dt;
+    dt1 = dt;
+  }
+  // Seen on at cycle 11 (the first t_n > 0.0105), released 2 cycles later.
+  CHECK(messages == std::vector<std::string>{"11: RIGID BODY 1 WILL BE SET OFF WITHIN 2 CYCLES",
+                                             "13: RIGID BODY 1 SET OFF"});
+  CHECK(released_at == 13);
+  CHECK(s.mass[0] == 0.0);
+  CHECK(rb.secondary_flags() == std::vector<std::uint8_t>{0, 0, 0, 0});
+  // Released: the secondaries fly on with the rigid velocities they had (no force acts), apart.
+  const double v1x = s.vx[1];
+  accelerations(s);
+  rb.gather_and_accelerate(s, t, dt1, sensors.starts());
+  rb.secondary_kinematics(s, dt1, dt);
+  update(s, dt1, dt);
+  CHECK(s.vx[1] == v1x);
+}
+
+TEST_CASE("sensor: a rigid body whose sensor is on at t = 0 is never formed", "[loads]") {
+  auto md = rigid_model({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}}, {5.0, 5.0, 5.0});
+  md.sensors = {timer(4, 0.0)};
+  md.rigid_bodies[0].sensor = 4;
+  auto s = state_of(md, {7.0, 1.0, 1.0, 2.0});
+  sv::Sensors sensors(md);
+  sv::RigidBodies rb(md);
+  sensors.update(0.0, 0.0);
+  rb.initialize(s, sensors.starts());
+  CHECK(!rb.bodies()[0].active);
+  CHECK(s.mass[0] == 0.0);  // the main node of a body with a sensor has no mass of its own
+  CHECK(s.mass[1] == 1.0);
+  CHECK(s.x[0] == 5.0);
+  CHECK(rb.secondary_flags() == std::vector<std::uint8_t>{0, 0, 0, 0});
+  CHECK(rb.take_messages() == std::vector<std::string>{"RIGID BODY 1 SET OFF"});
 }

@@ -301,6 +301,14 @@ Model make_model() {
   moving_skew.n1 = 3, moving_skew.n2 = 4, moving_skew.n3 = 7;
   moving_skew.dir = 2;
   m.skews = {fixed_skew, moving_skew};
+  Sensor sensor;
+  sensor.id = v.big();
+  sensor.title = "timer";
+  sensor.type = SensorType::Time;
+  sensor.t_delay = v.real(), sensor.t_stop = v.real();
+  Sensor sensor_never;  // Tstop never
+  sensor_never.id = v.big();
+  m.sensors = {sensor, sensor_never};
 
   TimeHistoryGroup th;
   th.id = v.big();
@@ -699,6 +707,15 @@ void check_same(const Model& a, const Model& b) {
     CHECK(x.group == y.group);
     CHECK(x.surface == y.surface);
     CHECK(x.secondary == y.secondary);
+  }
+
+  REQUIRE(a.sensors.size() == b.sensors.size());
+  for (std::size_t i = 0; i < a.sensors.size(); ++i) {
+    CHECK(a.sensors[i].id == b.sensors[i].id);
+    CHECK(a.sensors[i].title == b.sensors[i].title);
+    CHECK(a.sensors[i].type == b.sensors[i].type);
+    CHECK(a.sensors[i].t_delay == b.sensors[i].t_delay);
+    CHECK(a.sensors[i].t_stop == b.sensors[i].t_stop);
   }
 
   REQUIRE(a.time_histories.size() == b.time_histories.size());

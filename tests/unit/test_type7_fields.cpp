@@ -264,6 +264,9 @@ DeckOut make_deck(const Kind& kind, const Vals& v, const std::string& after = ""
   add("/SURF/PART/31");
   add("plate surface");
   add(Card().at(1, 10, "1").str());
+  add("/SENSOR/TIME/17");  // the interface's sens_ID
+  add("sensor");
+  add(Card().at(1, 20, "0.001").str());
   add("#---1----|----2----|----3----|----4----|----5----|----6----|----7----|----8----|----9----|---10----|");
 
   DeckOut out;
