@@ -297,8 +297,9 @@ void ModelBuilder::build_boxes() {
     model::Box b;
     b.id = r->id;
     b.title = r->title;
-    model::Vec3 p1{r->get_real("Xp1"), r->get_real("Yp1"), r->get_real("Zp1")};
-    model::Vec3 p2{r->get_real("Xp2"), r->get_real("Yp2"), r->get_real("Zp2")};
+    // Corners written inside a submodel are moved with it (the box stays aligned with the global axes).
+    model::Vec3 p1 = submodel_point(*r, {r->get_real("Xp1"), r->get_real("Yp1"), r->get_real("Zp1")});
+    model::Vec3 p2 = submodel_point(*r, {r->get_real("Xp2"), r->get_real("Yp2"), r->get_real("Zp2")});
     if (r->get_int("N1") != 0) {
       const auto n = node_ref(r->get_int("N1"), *r, r->find("N1") ? r->find("N1")->pos : r->pos, "N1");
       if (n >= 0) p1 = {m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n]};

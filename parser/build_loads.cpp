@@ -287,6 +287,8 @@ void build_initial_velocities(ModelBuilder& b) {
                  v.v = reals3(r, "Vx", "Vy", "Vz");
                  v.group = group_ref(b, r, "grnod_ID", false);
                  v.skew = skew_ref(b, r);
+                 // Written inside a submodel without a skew: in the submodel's frame, as Radioss reads it.
+                 if (r.get_int("skew_ID") == 0) v.v = b.submodel_vector(r, v.v);
                  v.sensor = sensor_ref(b, r);
                  v.t_start = r.get_real("Tstart");
                  return v;
@@ -413,9 +415,9 @@ model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double
       w.m = node_point(b.m_.nodes, w.node);
     }
     w.mass = mass_field(b, r, "added to the wall node");
-    w.v0 = reals3(r, "VX0", "VY0", "VZ0");
+    w.v0 = b.submodel_vector(r, reals3(r, "VX0", "VY0", "VZ0"));
   } else {
-    w.m = reals3(r, "XM", "YM", "ZM");
+    w.m = b.submodel_point(r, reals3(r, "XM", "YM", "ZM"));
   }
   w.slide = geti(r, "Slide");
   w.iform = geti(r, "Iform");
@@ -432,7 +434,7 @@ model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double
   w.friction = r.get_real("fric");
   w.diameter = r.get_real("Diameter");
   w.ffac = r.get_real("ffac");
-  w.m1 = reals3(r, "XM1", "YM1", "ZM1");
+  w.m1 = b.submodel_point(r, reals3(r, "XM1", "YM1", "ZM1"));
   // A sphere has no axis: its normal is radial at each node (the engine computes it).
   const bool defined = placed && (shape == 2 || wall_normal(b, r, w, size)) && (shape == 0 || w.diameter > 0);
   w.secondary = wall_secondary(b, w, defined);

@@ -31,7 +31,7 @@ void ModelBuilder::build_skews() {
     model::Skew s;
     s.id = r->id;
     s.title = r->title;
-    s.origin = {r->get_real("Ox"), r->get_real("Oy"), r->get_real("Oz")};
+    s.origin = submodel_point(*r, {r->get_real("Ox"), r->get_real("Oy"), r->get_real("Oz")});
     // Registered before the frame is checked: a degenerate frame is one error, not one more per use.
     if (!register_id(skew_ids_, s.id, static_cast<std::int32_t>(m_.skews.size()), *r, "skew", first))
       continue;
@@ -39,6 +39,9 @@ void ModelBuilder::build_skews() {
     V3 z = {r->get_real("X2"), r->get_real("Y2"), r->get_real("Z2")};
     if (y[0] == 0 && y[2] == 0) y[1] = y[1] < 0 ? -1.0 : 1.0;
     if (z[0] == 0 && z[1] == 0) z[2] = z[2] < 0 ? -1.0 : 1.0;
+    // Directions written inside a submodel turn with it.
+    y = submodel_vector(*r, y);
+    z = submodel_vector(*r, z);
     const V3 x = cross(y, z);
     const double lx = norm(x), lz = norm(z);
     if (!(lx > 1e-12 * norm(y) * lz) || !(lz > 0)) {
