@@ -7,6 +7,7 @@
 //   function   g(x) = Fscaley f((x - Ashiftx) / Ascalex) + Fshifty.
 // The included part ("part.inc") is a unit brick of part 1 (nodes 1..8, brick 1, material 1, property 1)
 // with a node group 1 of its nodes and a function 1.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -401,4 +402,25 @@ TEST_CASE("every integer field that names an object declares the kind of id it h
     INFO(k.path);
     CHECK((!lists || k.list_kind != IdKind::None));
   }
+}
+
+TEST_CASE("points written inside a moved submodel move with it: a box selects the copy's nodes",
+          "[submodel][transform]") {
+  // Inside submodel 2 (offset 1000): box 2 -> 1002 around the bottom face of the part (z = 0), and node group
+  // 2 -> 1002 of the nodes in it. Submodel 2 is translated by (10, 0, 0): the box's corners follow, so the
+  // group holds the copy's bottom nodes 1001..1004, not the original's 1..4 left at the written place.
+  const std::string box =
+      "/BOX/RECTA/2\nbottom\n\n" + reals_line({-0.1, -0.1, -0.1}) + reals_line({1.1, 1.1, 0.1});
+  const std::string group = "/GRNOD/BOX/2\nin the box\n" + ids_line({2});
+  const auto m = build(submodel(1, {0}, "#include part.inc\n") +
+                       submodel(2, {1000}, "#include part.inc\n" + box + group) +
+                       transform("TRA", 1, 0, {10, 0, 0}, 0, 0, 2));
+  const radx::model::NodeGroup* g = nullptr;
+  for (const auto& x : m.node_groups)
+    if (x.id == 1002) g = &x;
+  REQUIRE(g != nullptr);
+  std::vector<long long> ids;
+  for (const auto k : g->nodes) ids.push_back(m.nodes.id[static_cast<std::size_t>(k)]);
+  std::sort(ids.begin(), ids.end());
+  REQUIRE(ids == std::vector<long long>{1001, 1002, 1003, 1004});
 }
