@@ -320,7 +320,8 @@ void ModelBuilder::build_boxes() {
       const auto n = node_ref(r.get_int(field), r, r.find(field) ? r.find(field)->pos : r.pos, field);
       if (n >= 0) return {m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n]};
     }
-    return {r.get_real(xyz[0]), r.get_real(xyz[1]), r.get_real(xyz[2])};
+    // Coordinates written inside a submodel move with it (a box stays aligned with the global axes).
+    return submodel_point(r, {r.get_real(xyz[0]), r.get_real(xyz[1]), r.get_real(xyz[2])});
   };
   // Both N1 and N2, or the coordinates; a lone node is ignored, as Radioss ignores it.
   auto two_nodes = [&](const KeywordRecord& r) {

@@ -287,7 +287,8 @@ void build_imposed_final_geometries(ModelBuilder& b) {
           if (n == kNone) continue;
           b.node_used_[static_cast<std::size_t>(n)] = 1;
           g.nodes.push_back(n);
-          g.targets.push_back({t.reals[cx][k], t.reals[cy][k], t.reals[cz][k]});
+          // A final position written inside a moved submodel moves with it, as the node did.
+          g.targets.push_back(b.submodel_point(r, {t.reals[cx][k], t.reals[cy][k], t.reals[cz][k]}));
         }
         if (g.nodes.empty() && r.get_int("part_ID") == 0)
           b.diags_.error(Diag::EmptyRecordList, b.at(r.pos, 1), ModelBuilder::about(r),
@@ -340,6 +341,8 @@ void build_initial_velocities(ModelBuilder& b) {
                  v.v = reals3(r, "Vx", "Vy", "Vz");
                  v.group = group_ref(b, r, "grnod_ID", false);
                  v.skew = skew_ref(b, r);
+                 // Written inside a submodel without a skew: in the submodel's frame, as Radioss reads it.
+                 if (r.get_int("skew_ID") == 0) v.v = b.submodel_vector(r, v.v);
                  v.sensor = b.sensor_ref(r);
                  v.t_start = r.get_real("Tstart");
                  return v;
@@ -484,9 +487,9 @@ model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double
       w.m = node_point(b.m_.nodes, w.node);
     }
     w.mass = mass_field(b, r, "added to the wall node");
-    w.v0 = reals3(r, "VX0", "VY0", "VZ0");
+    w.v0 = b.submodel_vector(r, reals3(r, "VX0", "VY0", "VZ0"));
   } else {
-    w.m = reals3(r, "XM", "YM", "ZM");
+    w.m = b.submodel_point(r, reals3(r, "XM", "YM", "ZM"));
   }
   w.slide = geti(r, "Slide");
   w.iform = geti(r, "Iform");
@@ -503,8 +506,8 @@ model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double
   w.friction = r.get_real("fric");
   w.diameter = r.get_real("Diameter");
   w.ffac = r.get_real("ffac");
-  w.m1 = reals3(r, "XM1", "YM1", "ZM1");
-  if (shape == 3) w.m2 = reals3(r, "XM2", "YM2", "ZM2");
+  w.m1 = b.submodel_point(r, reals3(r, "XM1", "YM1", "ZM1"));
+  if (shape == 3) w.m2 = b.submodel_point(r, reals3(r, "XM2", "YM2", "ZM2"));
   // A sphere has no axis: its normal is radial at each node (the engine computes it).
   const bool oriented = shape == 2   ? true
                         : shape == 3 ? parallelogram_normal(b, r, w, size)

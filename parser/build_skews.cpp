@@ -37,11 +37,14 @@ V3 position(const model::Nodes& n, std::int32_t k) {
 }
 
 bool fixed_skew(ModelBuilder& b, const KeywordRecord& r, model::Skew& s) {
-  s.origin = {r.get_real("Ox"), r.get_real("Oy"), r.get_real("Oz")};
+  s.origin = b.submodel_point(r, {r.get_real("Ox"), r.get_real("Oy"), r.get_real("Oz")});
   V3 y = {r.get_real("X1"), r.get_real("Y1"), r.get_real("Z1")};
   V3 z = {r.get_real("X2"), r.get_real("Y2"), r.get_real("Z2")};
   if (y[0] == 0 && y[2] == 0) y[1] = y[1] < 0 ? -1.0 : 1.0;
   if (z[0] == 0 && z[1] == 0) z[2] = z[2] < 0 ? -1.0 : 1.0;
+  // Directions written inside a submodel turn with it.
+  y = b.submodel_vector(r, y);
+  z = b.submodel_vector(r, z);
   const V3 x = cross(y, z);
   const double lx = norm(x), lz = norm(z);
   if (!(lx > 1e-12 * norm(y) * lz) || !(lz > 0)) {

@@ -3,6 +3,7 @@
 // units) and the file:line of every card, so later checks can point at the right place.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -60,6 +61,9 @@ struct KeywordRecord {
   std::vector<SourcePos> id_pos;   // where each id was written
   std::vector<std::string> th_variables;
   std::string text;  // Tail::Text
+  // The innermost //SUBMODEL the keyword sits in (index into Deck::submodels), -1 at the top level. Its ids
+  // are already shifted by that submodel's offsets.
+  std::int32_t submodel = -1;
 
   [[nodiscard]] std::string_view keyword() const;
   [[nodiscard]] const FieldValue* find(std::string_view name) const;
@@ -83,6 +87,19 @@ struct UnitSystem {
 // or a numeric factor; returns the SI factor or nullopt.
 std::optional<double> unit_factor(std::string_view name, char kind /* 'M', 'L', 'T' */);
 
+// A //SUBMODEL ... //ENDSUB block. Offsets are cumulative: a nested submodel's ids are shifted by its own
+// offsets plus those of every enclosing submodel (the specific offset, or off_def when it is 0), as
+// OpenRadioss's reader sums them up the chain.
+struct Submodel {
+  std::int64_t id = 0;  // after the enclosing submodels' offsets
+  std::string title;
+  std::int32_t parent = -1;  // index into Deck::submodels; -1 at the top level
+  std::int64_t unit_id = 0;  // its own unit system, else the enclosing one's; 0 = the deck's input units
+  std::array<std::int64_t, 8> offsets{};  // by schema::IdKind
+  SourcePos pos;                          // the //SUBMODEL line
+  [[nodiscard]] std::int64_t offset(schema::IdKind k) const { return offsets[static_cast<std::size_t>(k)]; }
+};
+
 struct Deck {
   std::vector<std::string> files;  // display paths, index = SourcePos::file
   int version = 0;                 // INVERS from /BEGIN
@@ -90,6 +107,7 @@ struct Deck {
   UnitSystem input_units;
   UnitSystem work_units;
   std::vector<KeywordRecord> records;  // starter keywords in deck order
+  std::vector<Submodel> submodels;     // in deck order; a parent comes before its children
   bool allow_substitutions = false;    // ReadOptions::allow_substitutions
   // What runs instead of what the deck asks (only with allow_substitutions), one sentence each.
   std::vector<std::string> substitutions;

@@ -150,6 +150,43 @@ void deck_versions_section(std::ostream& os) {
   os << "\n";
 }
 
+// How //SUBMODEL, /TRANSFORM and /MOVE_FUNCT act (parser/deck_reader.cpp, parser/build_transforms.cpp).
+void assembly_section(std::ostream& os) {
+  os << "## Submodels and transforms\n\n"
+     << "- `//SUBMODEL/submodel_ID[/unit_ID]` opens a submodel and `//ENDSUB` closes the innermost open one "
+        "(an unbalanced pair is RX312). Submodels nest; an `#include` inside one belongs to it, so one file "
+        "included in two submodels with different offsets is built twice.\n"
+     << "- Inside a submodel every id is shifted by the submodel's offset for the kind of object it names: "
+        "nodes off_nod, elements off_ele, parts off_part (an element block's part too), materials off_mat, "
+        "properties off_type, submodels off_sub, everything else (groups, surfaces, functions, skews, boxes, "
+        "units, interfaces, ...) off_def; a specific offset of 0 takes off_def. The object's own id and "
+        "every "
+        "id it refers to are shifted, also references to objects outside the submodel; ids of 0 or less are "
+        "not. Offsets add up through nested submodels. Diagnostics give the ids as shifted and the file and "
+        "line as written.\n"
+     << "- A keyword with no unit id of its own inside a submodel is read in the submodel's unit system (or "
+        "the one of the submodel around it).\n"
+     << "- `/TRANSFORM/TRA`, `/ROT`, `/SCA` and `/SYM` move a node group (grnod_ID) or every node written "
+        "inside a submodel and the submodels nested in it (sub_ID), never both. Submodel transforms are "
+        "applied first, right after the nodes are read, each submodel's own in deck order and then those of "
+        "the submodels around it; points and directions written inside a moved submodel (box corners, skew "
+        "frames, rigid-wall points and velocities, initial velocities without a skew) move with it. "
+        "Node-group transforms follow once the groups are built (a `/GRNOD/BOX` selects with the coordinates "
+        "before them), in deck order, each on the coordinates the previous ones left. Two nodes "
+        "(node_ID1, node_ID2) replace the two points or the vector, taken where the transform sees them.\n"
+     << "- TRA: x + t. ROT: right-handed rotation by Angle degrees about the axis from point 1 to point 2. "
+        "SCA: c + s (x - c) per axis about node_IDc (else the origin); a scale factor of 0 means 1. SYM: "
+        "mirror in the plane through point 1 normal to point 1 -> 2. A rotation axis or a mirror normal of "
+        "zero length is RX605.\n"
+     << "- A mirror (SYM, or a negative scale factor) turns bricks inside out: their faces n1-n4 and n5-n8 "
+        "are swapped so that their volume stays positive, as Radioss does (a note says how many); shells "
+        "keep their connectivity and their normal flips. Element geometry is checked as written, before "
+        "any transform.\n"
+     << "- `/MOVE_FUNCT/fct_ID` scales then shifts the points of `/FUNCT/fct_ID`: X Ascalex + Ashiftx, "
+        "Y Fscaley + Fshifty (0 scales mean 1); a negative Ascalex also reverses the points so that the "
+        "abscissas stay increasing. Several apply in deck order; one naming no function is RX402.\n\n";
+}
+
 }  // namespace
 
 std::vector<std::string> echo_keyword(const KeywordRecord& r) {
@@ -225,6 +262,7 @@ void write_keyword_reference(std::ostream& os) {
     }
   }
   deck_versions_section(os);
+  assembly_section(os);
   os << "## Engine keywords\n\nFree format: values separated by blanks or commas, one declared line each. "
         "Every keyword of the Radioss engine deck is listed; the radx column says what radx does with it: "
         "**read**; **ignored** (it changes no result: a note, RX303); **not written** (an output radx does "

@@ -3,7 +3,8 @@
 // of the deck's version (conditional cards by their condition), then the tail (records, id lists,
 // text). Values get their declared defaults, are checked against their declared bounds and allowed
 // sets, and are converted from input units to work units. Nothing here knows a keyword by name except
-// /BEGIN (its version selects every layout), /UNIT and /END.
+// /BEGIN (its version selects every layout), /UNIT, /END, and //SUBMODEL and //ENDSUB, which bracket the
+// keywords whose ids get a submodel's offsets (each id by the kind its declaration gives it).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -220,6 +221,13 @@ class StarterReader {
       while (j < end && !is_keyword(lines[j])) ++j;
       read_block(i, j);
       i = j;
+    }
+    for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
+      const Submodel& sm = deck_.submodels[static_cast<std::size_t>(*it)];
+      diags_.error(Diag::UnbalancedSubmodel, at(sm.pos, 1), About{"//SUBMODEL", sm.id, sm.title},
+                   "//SUBMODEL/" + std::to_string(sm.id) +
+                       " is not closed: every //SUBMODEL needs its //ENDSUB before /END (nested ones close "
+                       "innermost first)");
     }
     convert_units();
   }
@@ -499,7 +507,7 @@ class StarterReader {
   void read_block(std::size_t first, std::size_t last) {
     const auto& lines = text_.lines;
     const TextLine& head = lines[first];
-    const auto tokens = split_keyword(head.text);
+    auto tokens = split_keyword(head.text);
     if (tokens.empty()) {
       diags_.error(Diag::UnknownKeyword, at(head.pos, 1), About{"/"}, "a lone '/' is not a keyword");
       return;
@@ -584,6 +592,18 @@ class StarterReader {
       diags_.note(Diag::IgnoredControlCard, at(head.pos, 1), About{decl->path},
                   written + ": the field after /BEGIN is ignored, as Radioss ignores it");
       used = tokens.size();
+    }
+    // //SUBMODEL/id/unit/Vnnnn: the optional version of the submodel's text.
+    if (decl->path == "//SUBMODEL" && tokens.size() > used && tokens.back().size() > 1 &&
+        tokens.back()[0] == 'V') {
+      std::int64_t v = 0;
+      if (parse_int(std::string_view(tokens.back()).substr(1), v) != NumberStatus::Ok || v != deck_.version) {
+        diags_.error(Diag::UnsupportedVersion, at(head.pos, 1), About{decl->path},
+                     "the submodel's version " + tokens.back() + " differs from the deck's (" +
+                         std::to_string(deck_.version) +
+                         "): radx reads a submodel only in the format of the deck around it");
+      }
+      tokens.pop_back();
     }
     // Header fields.
     std::vector<std::int64_t> header;
@@ -703,6 +723,7 @@ class StarterReader {
         break;
       }
     }
+    if (!place_in_submodel(rec, about)) return;
     if (decl->singleton) {
       for (const auto& r : deck_.records) {
         if (r.decl == decl) {
@@ -714,6 +735,80 @@ class StarterReader {
       }
     }
     deck_.records.push_back(std::move(rec));
+  }
+
+  // //SUBMODEL opens a submodel, //ENDSUB closes the innermost one; every other keyword is tagged with the
+  // innermost open submodel and its ids are shifted by that submodel's offsets, by the kind each id names
+  // (the keyword declarations say which), as OpenRadioss's reader does. Ids of 0 or less are not shifted.
+  // Returns false when the record is not kept.
+  bool place_in_submodel(KeywordRecord& rec, const About& about) {
+    using schema::IdKind;
+    if (rec.decl->path == "//ENDSUB") {
+      if (open_.empty()) {
+        diags_.error(Diag::UnbalancedSubmodel, at(rec.pos, 1), about,
+                     "//ENDSUB with no open //SUBMODEL: each //ENDSUB closes one //SUBMODEL above it");
+      } else {
+        open_.pop_back();
+      }
+      return false;
+    }
+    rec.submodel = open_.empty() ? -1 : open_.back();
+    if (rec.submodel >= 0) {
+      if (rec.decl->path == "/BEGIN") {
+        diags_.error(Diag::UnsupportedKeyword, at(rec.pos, 1), about,
+                     "/BEGIN inside a //SUBMODEL (its own version and units) is not read by radx: give the "
+                     "submodel's unit system on its keyword line, //SUBMODEL/submodel_ID/unit_ID");
+        return false;
+      }
+      const Submodel& sm = deck_.submodels[static_cast<std::size_t>(rec.submodel)];
+      const auto shift = [&](std::int64_t& v, IdKind k) {
+        if (v > 0 && k != IdKind::None) v += sm.offset(k);
+      };
+      using schema::Header;
+      if (rec.decl->header != Header::None && rec.decl->header != Header::UnitOnly &&
+          rec.decl->header != Header::Word)
+        shift(rec.id, rec.decl->id_kind);
+      shift(rec.unit_id, IdKind::Other);
+      for (auto& f : rec.fields) {
+        if (f.decl->type != FieldType::Int || f.decl->ref == IdKind::None) continue;
+        shift(f.i, f.decl->ref);
+        f.r = static_cast<double>(f.i);
+      }
+      for (std::size_t k = 0; k < rec.records.fields.size(); ++k) {
+        const auto& f = *rec.records.fields[k];
+        if (f.type != FieldType::Int) continue;
+        for (auto& v : rec.records.ints[k]) shift(v, f.ref);
+      }
+      for (auto& v : rec.ids) shift(v, rec.decl->list_kind);
+    }
+    if (rec.decl->path == "//SUBMODEL") {
+      Submodel sm;
+      sm.id = rec.id;
+      sm.title = rec.title;
+      sm.pos = rec.pos;
+      sm.parent = rec.submodel;
+      const Submodel* parent =
+          sm.parent >= 0 ? &deck_.submodels[static_cast<std::size_t>(sm.parent)] : nullptr;
+      sm.unit_id = rec.unit_id != 0 ? rec.unit_id : (parent ? parent->unit_id : 0);
+      // off_def stands for every kind whose own offset is 0; the enclosing offsets add up.
+      const std::int64_t def = rec.get_int("off_def");
+      const auto own = [&](std::string_view field) {
+        const std::int64_t v = rec.get_int(field);
+        return v != 0 ? v : def;
+      };
+      std::array<std::int64_t, 8> o{};
+      o[static_cast<std::size_t>(IdKind::Node)] = own("off_nod");
+      o[static_cast<std::size_t>(IdKind::Element)] = own("off_ele");
+      o[static_cast<std::size_t>(IdKind::Part)] = own("off_part");
+      o[static_cast<std::size_t>(IdKind::Material)] = own("off_mat");
+      o[static_cast<std::size_t>(IdKind::Property)] = own("off_type");
+      o[static_cast<std::size_t>(IdKind::Submodel)] = own("off_sub");
+      o[static_cast<std::size_t>(IdKind::Other)] = def;
+      for (std::size_t k = 0; k < o.size(); ++k) sm.offsets[k] = o[k] + (parent ? parent->offsets[k] : 0);
+      open_.push_back(static_cast<std::int32_t>(deck_.submodels.size()));
+      deck_.submodels.push_back(std::move(sm));
+    }
+    return true;
   }
 
   static std::string header_help(const KeywordDecl& d) {
@@ -830,12 +925,17 @@ class StarterReader {
     const UnitSystem& w = deck_.work_units;
     for (auto& r : deck_.records) {
       const UnitSystem* u = &deck_.input_units;
-      if (r.unit_id != 0) {
-        const auto it = systems.find(r.unit_id);
+      // A keyword without a unit of its own in a submodel takes the submodel's (reported there if missing).
+      const std::int64_t unit_id = r.unit_id != 0 || r.submodel < 0
+                                       ? r.unit_id
+                                       : deck_.submodels[static_cast<std::size_t>(r.submodel)].unit_id;
+      if (unit_id != 0) {
+        const auto it = systems.find(unit_id);
         if (it == systems.end()) {
-          diags_.error(Diag::MissingReference, at(r.pos, 1), About{r.decl->path, r.id, r.title},
-                       "unit system " + std::to_string(r.unit_id) +
-                           " named in the keyword line has no /UNIT/" + std::to_string(r.unit_id));
+          if (r.unit_id != 0)
+            diags_.error(Diag::MissingReference, at(r.pos, 1), About{r.decl->path, r.id, r.title},
+                         "unit system " + std::to_string(r.unit_id) +
+                             " named in the keyword line has no /UNIT/" + std::to_string(r.unit_id));
           continue;
         }
         u = &it->second;
@@ -864,6 +964,7 @@ class StarterReader {
   DeckText& text_;
   Diagnostics& diags_;
   Deck& deck_;
+  std::vector<std::int32_t> open_;    // the open //SUBMODELs, innermost last (indices into deck_.submodels)
   std::deque<std::string> expanded_;  // tab-expanded copies of rejected lines (stable addresses)
 };
 

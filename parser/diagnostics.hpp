@@ -44,6 +44,7 @@ enum class Diag : std::uint16_t {
   MissingTitle = 309,
   ExtraData = 310,
   OutputNotWritten = 311,
+  UnbalancedSubmodel = 312,
   // ids and references
   DuplicateId = 401,
   MissingReference = 402,
@@ -69,7 +70,8 @@ enum class Diag : std::uint16_t {
   NonPositiveArea = 602,
   DegenerateElement = 603,
   RepeatedNodeInElement = 604,
-  CoordinatesPerturbed = 605,
+  DegenerateTransform = 605,
+  CoordinatesPerturbed = 606,
   // contact
   InitialPenetration = 701,
   InterfaceFieldIgnored = 702,

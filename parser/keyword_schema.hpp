@@ -47,6 +47,20 @@ inline constexpr Dim energy{1, 2, -2};
 inline constexpr Dim heat_capacity_per_volume{1, -1, -2};  // rho*cp per kelvin
 }  // namespace dim
 
+// What an integer field refers to, for the id offsets of //SUBMODEL: inside a submodel every id (an
+// object's own id and every reference) is shifted by the submodel's offset of that kind (off_nod,
+// off_ele, off_part, off_mat, off_type, off_sub; every other kind takes off_def), as Radioss does.
+enum class IdKind : std::uint8_t {
+  None,      // not an id (a flag, a count)
+  Node,      // off_nod
+  Element,   // off_ele
+  Part,      // off_part
+  Material,  // off_mat
+  Property,  // off_type
+  Submodel,  // off_sub
+  Other,     // off_def: groups, surfaces, functions, skews, boxes, units, interfaces, sensors, ...
+};
+
 inline constexpr int kAnyVersion = 0;
 inline constexpr int kLastVersion = 9999;
 
@@ -88,6 +102,7 @@ struct FieldDecl {
   // 100-130 /MAT/LAW2 reads RHO_ref at 21-40 only when 11-20 are not blank). 0: always read.
   int gate_first = 0;
   int gate_last = 0;
+  IdKind ref = IdKind::None;  // integers: the kind of object the id names (submodel offsets)
 
   FieldDecl& versions(int from, int to = kLastVersion) {
     since = from;
@@ -144,6 +159,11 @@ struct FieldDecl {
   FieldDecl& read_if_text(int first, int last) {
     gate_first = first;
     gate_last = last;
+    return *this;
+  }
+  // The field holds the id of an object of kind `k` (shifted by a submodel's offset of that kind).
+  FieldDecl& refs(IdKind k) {
+    ref = k;
     return *this;
   }
   [[nodiscard]] bool in_version(int v) const { return v >= since && v <= until; }
@@ -264,6 +284,10 @@ struct KeywordDecl {
   // First deck version radx reads this keyword in: in an older deck it is refused (RX307) because its
   // layout there is not established.
   int since = kAnyVersion;
+  // Submodel offsets: the kind of the keyword line's id (an element block's id names its part) and of the
+  // ids of an IdList or time-history tail.
+  IdKind id_kind = IdKind::Other;
+  IdKind list_kind = IdKind::None;
 };
 
 // The starter deck's keywords, in the order of deck-format.md.

@@ -62,6 +62,12 @@ KeywordDecl kw(std::string_view path, std::string_view meaning, Header header, b
   k.header = header;
   k.has_title = has_title;
   k.id_name = id_name;
+  // The keyword line's id: a material, a property, a part (an element block names its part), else an
+  // object of the default offset.
+  const auto starts = [&](std::string_view p) { return path.substr(0, p.size()) == p; };
+  if (starts("/MAT/")) k.id_kind = IdKind::Material;
+  if (starts("/PROP/")) k.id_kind = IdKind::Property;
+  if (path == "/PART" || header == Header::PartId) k.id_kind = IdKind::Part;
   return k;
 }
 
@@ -124,10 +130,11 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
   {
     KeywordDecl k = kw("/NODE", "node coordinates, one node per line", Header::UnitOnly, false, "unit_ID");
     k.tail = Tail::Records;
-    k.record = card("node", {I("node_ID", 1, 10, "user node id, positive and unique").must().gt(0),
-                             R("X", 11, 30, "X coordinate").dims(dim::length),
-                             R("Y", 31, 50, "Y coordinate").dims(dim::length),
-                             R("Z", 51, 70, "Z coordinate").dims(dim::length)});
+    k.record = card(
+        "node",
+        {I("node_ID", 1, 10, "user node id, positive and unique").refs(IdKind::Node).must().gt(0),
+         R("X", 11, 30, "X coordinate").dims(dim::length), R("Y", 31, 50, "Y coordinate").dims(dim::length),
+         R("Z", 51, 70, "Z coordinate").dims(dim::length)});
     t.push_back(std::move(k));
   }
   {
@@ -136,10 +143,13 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
     k.tail = Tail::Records;
     k.record =
         card("shell",
-             {I("shell_ID", 1, 10, "element id").must().gt(0),
-              I("n1", 11, 20, "first node; the normal follows n1, n2, n3 by the right-hand rule").must(),
-              I("n2", 21, 30, "second node").must(), I("n3", 31, 40, "third node").must(),
-              I("n4", 41, 50, "fourth node; 0 or equal to n3 makes a degenerate triangle"),
+             {I("shell_ID", 1, 10, "element id").refs(IdKind::Element).must().gt(0),
+              I("n1", 11, 20, "first node; the normal follows n1, n2, n3 by the right-hand rule")
+                  .refs(IdKind::Node)
+                  .must(),
+              I("n2", 21, 30, "second node").refs(IdKind::Node).must(),
+              I("n3", 31, 40, "third node").refs(IdKind::Node).must(),
+              I("n4", 41, 50, "fourth node; 0 or equal to n3 makes a degenerate triangle").refs(IdKind::Node),
               R("PHI", 61, 80, "material direction angle in degrees"),
               R("Thick", 81, 100, "element thickness; 0 takes the property thickness").dims(dim::length)});
     t.push_back(std::move(k));
@@ -151,9 +161,12 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
                        false, "part_ID");
     k.tail = Tail::Records;
     k.record = card(
-        "sh3n", {I("tria_ID", 1, 10, "element id").must().gt(0),
-                 I("n1", 11, 20, "first node; the normal follows n1, n2, n3 by the right-hand rule").must(),
-                 I("n2", 21, 30, "second node").must(), I("n3", 31, 40, "third node").must(),
+        "sh3n", {I("tria_ID", 1, 10, "element id").refs(IdKind::Element).must().gt(0),
+                 I("n1", 11, 20, "first node; the normal follows n1, n2, n3 by the right-hand rule")
+                     .refs(IdKind::Node)
+                     .must(),
+                 I("n2", 21, 30, "second node").refs(IdKind::Node).must(),
+                 I("n3", 31, 40, "third node").refs(IdKind::Node).must(),
                  R("PHI", 71, 90, "material direction angle in degrees"),
                  R("Thick", 91, 100, "element thickness; 0 takes the property thickness").dims(dim::length)});
     t.push_back(std::move(k));
@@ -163,12 +176,16 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
                        false, "part_ID");
     k.tail = Tail::Records;
     k.record = card(
-        "brick", {I("brick_ID", 1, 10, "element id").must().gt(0),
-                  I("n1", 11, 20, "node 1 (n1..n4 form one face)").must(), I("n2", 21, 30, "node 2").must(),
-                  I("n3", 31, 40, "node 3").must(), I("n4", 41, 50, "node 4").must(),
-                  I("n5", 51, 60, "node 5, joined to n1 (repeated nodes give degenerate shapes)"),
-                  I("n6", 61, 70, "node 6, joined to n2"), I("n7", 71, 80, "node 7, joined to n3"),
-                  I("n8", 81, 90, "node 8, joined to n4")});
+        "brick",
+        {I("brick_ID", 1, 10, "element id").refs(IdKind::Element).must().gt(0),
+         I("n1", 11, 20, "node 1 (n1..n4 form one face)").refs(IdKind::Node).must(),
+         I("n2", 21, 30, "node 2").refs(IdKind::Node).must(),
+         I("n3", 31, 40, "node 3").refs(IdKind::Node).must(),
+         I("n4", 41, 50, "node 4").refs(IdKind::Node).must(),
+         I("n5", 51, 60, "node 5, joined to n1 (repeated nodes give degenerate shapes)").refs(IdKind::Node),
+         I("n6", 61, 70, "node 6, joined to n2").refs(IdKind::Node),
+         I("n7", 71, 80, "node 7, joined to n3").refs(IdKind::Node),
+         I("n8", 81, 90, "node 8, joined to n4").refs(IdKind::Node)});
     t.push_back(std::move(k));
   }
   {
@@ -176,9 +193,9 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
                        true, "part_ID");
     k.cards = {card(
         "card 1",
-        {I("prop_ID", 1, 10, "property (/PROP) of the part's elements").must(),
-         I("mat_ID", 11, 20, "material (/MAT) of the part's elements").must(),
-         I("subset_ID", 21, 30, "subset the part belongs to; 0 = top level"),
+        {I("prop_ID", 1, 10, "property (/PROP) of the part's elements").refs(IdKind::Property).must(),
+         I("mat_ID", 11, 20, "material (/MAT) of the part's elements").refs(IdKind::Material).must(),
+         I("subset_ID", 21, 30, "subset the part belongs to; 0 = top level").refs(IdKind::Other),
          R("Thick", 31, 50, "virtual thickness used only for contact gaps; 0 = none").dims(dim::length)})};
     t.push_back(std::move(k));
   }
@@ -286,7 +303,9 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                   .unused()}),
         card_v("card 4", 140, kLastVersion,
                {I("Ndir", 1, 10, "solid-to-SPH conversion: particles per direction").not_implemented(),
-                I("sphpart_ID", 11, 20, "solid-to-SPH conversion: SPH part").not_implemented(),
+                I("sphpart_ID", 11, 20, "solid-to-SPH conversion: SPH part")
+                    .refs(IdKind::Part)
+                    .not_implemented(),
                 I("Icontrol", 21, 30, "distortion control: 1 on, 2 or 0 off")
                     .versions(2025)
                     .allow({0, 1, 2})
@@ -376,9 +395,21 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
 // ---------------------------------------------------------------------------------------------------------
 // Groups and surfaces
 void add_groups(std::vector<KeywordDecl>& t) {
-  auto id_group = [&t](std::string_view path, std::string_view meaning, std::string_view id_name) {
+  // The kind of the listed ids follows the keyword's last word: nodes, elements, parts, materials,
+  // properties; groups, boxes, subsets and surfaces take the default offset.
+  auto listed = [](std::string_view path) {
+    const auto word = path.substr(path.find('/', 1) + 1);
+    if (word == "NODE" || word == "GENE") return IdKind::Node;
+    if (word == "SHEL" || word == "SH3N" || word == "BRIC") return IdKind::Element;
+    if (word.substr(0, 4) == "PART") return IdKind::Part;
+    if (word == "MAT") return IdKind::Material;
+    if (word == "PROP") return IdKind::Property;
+    return IdKind::Other;
+  };
+  auto id_group = [&t, &listed](std::string_view path, std::string_view meaning, std::string_view id_name) {
     KeywordDecl k = kw(path, meaning, Header::Id, true, id_name);
     k.tail = Tail::IdList;
+    k.list_kind = listed(path);
     t.push_back(std::move(k));
   };
   id_group("/GRNOD/NODE", "node group: the listed node ids", "grnod_ID");
@@ -401,8 +432,8 @@ void add_groups(std::vector<KeywordDecl>& t) {
                        true, "grnod_ID");
     k.since = 2017;
     k.tail = Tail::Records;
-    k.record = card("range", {I("first", 1, 10, "first node id of the range"),
-                              I("last", 11, 20, "last node id of the range"),
+    k.record = card("range", {I("first", 1, 10, "first node id of the range").refs(IdKind::Node),
+                              I("last", 11, 20, "last node id of the range").refs(IdKind::Node),
                               I("incr", 21, 30, "step between node ids")});
     t.push_back(std::move(k));
   }
@@ -411,9 +442,10 @@ void add_groups(std::vector<KeywordDecl>& t) {
         kw("/BOX/RECTA", "axis-aligned box given by two opposite corners", Header::IdUnit, true, "box_ID");
     k.cards = {
         card("card 1",
-             {I("N1", 1, 10, "node giving the first corner (with N2: both nodes replace Xp1 ... Zp2)"),
-              I("N2", 11, 20, "node giving the second corner (with N1)"),
-              I("Iskew", 21, 30, "skew the box is aligned with; 0 = global axes")}),
+             {I("N1", 1, 10, "node giving the first corner (with N2: both nodes replace Xp1 ... Zp2)")
+                  .refs(IdKind::Node),
+              I("N2", 11, 20, "node giving the second corner (with N1)").refs(IdKind::Node),
+              I("Iskew", 21, 30, "skew the box is aligned with; 0 = global axes").refs(IdKind::Other)}),
         card("card 2", {R("Xp1", 1, 20, "first corner X").dims(dim::length),
                         R("Yp1", 21, 40, "first corner Y").dims(dim::length),
                         R("Zp1", 41, 60, "first corner Z").dims(dim::length)}),
@@ -429,9 +461,10 @@ void add_groups(std::vector<KeywordDecl>& t) {
            "finite cylinder box: the axis from P1 to P2 (the centres of its end faces) and a diameter",
            Header::IdUnit, true, "box_ID");
     k.cards = {
-        card("card 1", {I("N1", 1, 10, "node giving P1 (with N2: both nodes replace Xp1 ... Zp2)"),
-                        I("N2", 11, 20, "node giving P2 (with N1)"),
-                        R("Diameter", 31, 50, "diameter of the cylinder").dims(dim::length).must().gt(0.0)}),
+        card("card 1",
+             {I("N1", 1, 10, "node giving P1 (with N2: both nodes replace Xp1 ... Zp2)").refs(IdKind::Node),
+              I("N2", 11, 20, "node giving P2 (with N1)").refs(IdKind::Node),
+              R("Diameter", 31, 50, "diameter of the cylinder").dims(dim::length).must().gt(0.0)}),
         card("card 2", {R("Xp1", 1, 20, "centre P1 of the first end face, X").dims(dim::length),
                         R("Yp1", 21, 40, "centre P1, Y").dims(dim::length),
                         R("Zp1", 41, 60, "centre P1, Z").dims(dim::length)}),
@@ -444,7 +477,7 @@ void add_groups(std::vector<KeywordDecl>& t) {
   {
     KeywordDecl k = kw("/BOX/SPHER", "sphere box: a centre and a diameter", Header::IdUnit, true, "box_ID");
     k.cards = {
-        card("card 1", {I("N1", 1, 10, "node giving the centre (replaces Xp1 Yp1 Zp1)"),
+        card("card 1", {I("N1", 1, 10, "node giving the centre (replaces Xp1 Yp1 Zp1)").refs(IdKind::Node),
                         R("Diameter", 31, 50, "diameter of the sphere").dims(dim::length).must().gt(0.0)}),
         card("card 2",
              {R("Xp1", 1, 20, "centre X").dims(dim::length), R("Yp1", 21, 40, "centre Y").dims(dim::length),
@@ -456,13 +489,16 @@ void add_groups(std::vector<KeywordDecl>& t) {
     KeywordDecl k =
         kw("/SUBSET", "subset of parts: lists its child subsets", Header::OptionalId, true, "subset_ID");
     k.tail = Tail::IdList;
+    k.list_kind = IdKind::Other;
     t.push_back(std::move(k));
   }
   // Element groups. Each family has its own ids; the keyword line may carry a unit id, as Radioss reads one
   // (it only matters to Radioss for boxes, and radx's boxes are already in work units).
-  auto element_group = [&t](std::string_view path, std::string_view meaning, std::string_view id_name) {
+  auto element_group = [&t, &listed](std::string_view path, std::string_view meaning,
+                                     std::string_view id_name) {
     KeywordDecl k = kw(path, meaning, Header::IdUnit, true, id_name);
     k.tail = Tail::IdList;
+    k.list_kind = listed(path);
     t.push_back(std::move(k));
   };
   element_group("/GRSHEL/SHEL", "4-node shell group: the listed /SHELL element ids", "grshel_ID");
@@ -569,10 +605,12 @@ void add_groups(std::vector<KeywordDecl>& t) {
   {
     KeywordDecl k = kw("/SURF/SEG", "surface: explicit segments, one per line", Header::Id, true, "surf_ID");
     k.tail = Tail::Records;
-    k.record = card("segment", {I("seg_ID", 1, 10, "segment id"),
-                                I("n1", 11, 20, "first node; the normal follows n1, n2, n3").must(),
-                                I("n2", 21, 30, "second node").must(), I("n3", 31, 40, "third node").must(),
-                                I("n4", 41, 50, "fourth node; 0 makes a triangle")});
+    k.record = card("segment",
+                    {I("seg_ID", 1, 10, "segment id"),
+                     I("n1", 11, 20, "first node; the normal follows n1, n2, n3").refs(IdKind::Node).must(),
+                     I("n2", 21, 30, "second node").refs(IdKind::Node).must(),
+                     I("n3", 31, 40, "third node").refs(IdKind::Node).must(),
+                     I("n4", 41, 50, "fourth node; 0 makes a triangle").refs(IdKind::Node)});
     t.push_back(std::move(k));
   }
 }
@@ -600,8 +638,8 @@ void add_contact(std::vector<KeywordDecl>& t) {
     KeywordDecl k =
         kw("/INTER/TYPE7", "node-to-surface penalty contact with a gap", Header::IdUnit, true, "inter_ID");
     k.cards = {
-        card("card 1", {I("grnd_IDs", 1, 10, "secondary node group").must(),
-                        I("surf_IDm", 11, 20, "main surface").must(),
+        card("card 1", {I("grnd_IDs", 1, 10, "secondary node group").refs(IdKind::Other).must(),
+                        I("surf_IDm", 11, 20, "main surface").refs(IdKind::Other).must(),
                         I("Istf", 21, 30, "stiffness definition").allow({0, 1, 2, 3, 4, 5}),
                         I("Ithe", 31, 40, "heat transfer through the contact").allow({0, 1}).unused(),
                         I("Igap", 41, 50, "gap option: 0 constant, 1 variable, 2 variable with scale and cap")
@@ -638,9 +676,12 @@ void add_contact(std::vector<KeywordDecl>& t) {
                         I("Irem_i2", 91, 100, "deactivate secondary nodes also tied by a TYPE2 interface")
                             .versions(130)
                             .unused()}),
-        card_if("card 4 (Icurv = 1 or 2)", when_in("Icurv", 1, 2),
-                {I("node_ID1", 1, 10, "first node defining the curvature").not_implemented(),
-                 I("node_ID2", 11, 20, "second node defining the curvature").not_implemented()}),
+        card_if(
+            "card 4 (Icurv = 1 or 2)", when_in("Icurv", 1, 2),
+            {I("node_ID1", 1, 10, "first node defining the curvature").refs(IdKind::Node).not_implemented(),
+             I("node_ID2", 11, 20, "second node defining the curvature")
+                 .refs(IdKind::Node)
+                 .not_implemented()}),
         card("card 5",
              {R("Stfac", 1, 20, "stiffness scale factor, or the stiffness itself when Istf = 1")
                   .zero_is(1.0)
@@ -667,12 +708,17 @@ void add_contact(std::vector<KeywordDecl>& t) {
                   .allow({0, 1, 2}),
               I("sens_ID", 51, 60,
                 "sensor that switches the interface on (and off again at the sensor's Tstop); 0 = none")
+                  .refs(IdKind::Other)
                   .versions(120),
               I("fct_IDF", 61, 70, "function scaling friction with temperature")
+                  .refs(IdKind::Other)
                   .versions(140)
                   .not_implemented(),
               R("AscaleF", 71, 90, "abscissa scale of fct_IDF").versions(140).unused(),
-              I("fric_ID", 91, 100, "/FRICTION definition").versions(2018).not_implemented()}),
+              I("fric_ID", 91, 100, "/FRICTION definition")
+                  .refs(IdKind::Other)
+                  .versions(2018)
+                  .not_implemented()}),
         card_if("friction C1..C5 (Ifric > 0)", when_gt("Ifric", 0), type7_friction_c1_c5()),
         card_if("friction C6 (Ifric > 1)", when_gt("Ifric", 1),
                 {R("C6", 1, 20, "friction law coefficient 6")}),
@@ -682,6 +728,7 @@ void add_contact(std::vector<KeywordDecl>& t) {
         card_v_if("thermal 1 (Ithe = 1)", 100, kLastVersion, when_eq("Ithe", 1),
                   {R("Kthe", 1, 20, "heat exchange coefficient").dims(kHeatTransfer).unused(),
                    I("fct_IDK", 21, 30, "function of the heat exchange coefficient versus pressure")
+                       .refs(IdKind::Other)
                        .versions(140)
                        .unused(),
                    R("Tint", 41, 60, "interface temperature (kelvin)").unused(),
@@ -710,8 +757,8 @@ void add_contact(std::vector<KeywordDecl>& t) {
                        "TYPE7 contact whose pairs switch to Lagrange multipliers below the minimum time step",
                        Header::IdUnit, true, "inter_ID");
     k.cards = {
-        card("card 1", {I("grnd_IDs", 1, 10, "secondary node group").must(),
-                        I("surf_IDm", 11, 20, "main surface").must(),
+        card("card 1", {I("grnd_IDs", 1, 10, "secondary node group").refs(IdKind::Other).must(),
+                        I("surf_IDm", 11, 20, "main surface").refs(IdKind::Other).must(),
                         I("Istf", 21, 30, "stiffness definition").allow({0, 1, 2, 3, 4, 5}),
                         I("Igap", 41, 50, "gap option: 0 constant, 1 variable, 2 variable with scale and cap")
                             .allow({0, 1, 2}),
@@ -759,8 +806,9 @@ void add_contact(std::vector<KeywordDecl>& t) {
   {
     KeywordDecl k = kw("/CTCLAW", "contact and friction law (URN string) attached to one interface",
                        Header::Id, true, "law_ID");
-    k.cards = {
-        card("card 1", {I("inter_ID", 1, 10, "interface (TYPE7 or LAGDT/TYPE7) that uses the law").must()})};
+    k.cards = {card("card 1", {I("inter_ID", 1, 10, "interface (TYPE7 or LAGDT/TYPE7) that uses the law")
+                                   .refs(IdKind::Other)
+                                   .must()})};
     k.tail = Tail::Text;
     t.push_back(std::move(k));
   }
@@ -772,14 +820,15 @@ void add_loads(std::vector<KeywordDecl>& t) {
   {
     KeywordDecl k =
         kw("/BCS", "fixed translations and rotations of a node group", Header::Id, true, "bcs_ID");
-    k.cards = {card("card 1", {I("Tx", 4, 4, "1 = X translation fixed").allow({0, 1}),
-                               I("Ty", 5, 5, "1 = Y translation fixed").allow({0, 1}),
-                               I("Tz", 6, 6, "1 = Z translation fixed").allow({0, 1}),
-                               I("Rx", 8, 8, "1 = X rotation fixed").allow({0, 1}),
-                               I("Ry", 9, 9, "1 = Y rotation fixed").allow({0, 1}),
-                               I("Rz", 10, 10, "1 = Z rotation fixed").allow({0, 1}),
-                               I("skew_ID", 11, 20, "skew of the fixed directions; 0 = global axes"),
-                               I("grnod_ID", 21, 30, "nodes concerned")})};
+    k.cards = {card(
+        "card 1", {I("Tx", 4, 4, "1 = X translation fixed").allow({0, 1}),
+                   I("Ty", 5, 5, "1 = Y translation fixed").allow({0, 1}),
+                   I("Tz", 6, 6, "1 = Z translation fixed").allow({0, 1}),
+                   I("Rx", 8, 8, "1 = X rotation fixed").allow({0, 1}),
+                   I("Ry", 9, 9, "1 = Y rotation fixed").allow({0, 1}),
+                   I("Rz", 10, 10, "1 = Z rotation fixed").allow({0, 1}),
+                   I("skew_ID", 11, 20, "skew of the fixed directions; 0 = global axes").refs(IdKind::Other),
+                   I("grnod_ID", 21, 30, "nodes concerned").refs(IdKind::Other)})};
     t.push_back(std::move(k));
   }
   {
@@ -787,12 +836,13 @@ void add_loads(std::vector<KeywordDecl>& t) {
                        Header::IdUnit, true, "impvel_ID");
     k.cards = {
         card("card 1",
-             {I("funct_IDT", 1, 10, "velocity versus time function").must(),
+             {I("funct_IDT", 1, 10, "velocity versus time function").refs(IdKind::Other).must(),
               S("Dir", 11, 20, "direction: X, Y, Z (translation) or XX, YY, ZZ (rotation)"),
-              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes"),
-              I("sensor_ID", 31, 40, "sensor that starts the velocity; 0 = none"),
-              I("grnod_ID", 41, 50, "nodes concerned"),
-              I("frame_ID", 51, 60, "moving frame of the direction (exclusive with skew); 0 = none"),
+              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes").refs(IdKind::Other),
+              I("sensor_ID", 31, 40, "sensor that starts the velocity; 0 = none").refs(IdKind::Other),
+              I("grnod_ID", 41, 50, "nodes concerned").refs(IdKind::Other),
+              I("frame_ID", 51, 60, "moving frame of the direction (exclusive with skew); 0 = none")
+                  .refs(IdKind::Other),
               I("Icoor", 61, 70, "0 Cartesian, 1 cylindrical (with a frame)").versions(120).allow({0, 1})}),
         card("card 2",
              {R("Ascale_x", 1, 20, "abscissa (time) scale of the function").zero_is(1.0).dims(dim::time),
@@ -810,12 +860,13 @@ void add_loads(std::vector<KeywordDecl>& t) {
            Header::IdUnit, true, "impdisp_ID");
     k.cards = {
         card("card 1",
-             {I("funct_IDT", 1, 10, "displacement versus time function").must(),
+             {I("funct_IDT", 1, 10, "displacement versus time function").refs(IdKind::Other).must(),
               S("Dir", 11, 20, "direction: X, Y, Z (translation) or XX, YY, ZZ (rotation)"),
-              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes"),
-              I("sensor_ID", 31, 40, "sensor that starts the displacement; 0 = none"),
-              I("grnod_ID", 41, 50, "nodes concerned"),
+              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes").refs(IdKind::Other),
+              I("sensor_ID", 31, 40, "sensor that starts the displacement; 0 = none").refs(IdKind::Other),
+              I("grnod_ID", 41, 50, "nodes concerned").refs(IdKind::Other),
               I("frame_ID", 51, 60, "moving frame of the direction (exclusive with skew); 0 = none")
+                  .refs(IdKind::Other)
                   .versions(110),
               I("Icoor", 61, 70, "0 Cartesian, 1 cylindrical (with a frame)").versions(120).allow({0, 1})}),
         card("card 2",
@@ -838,11 +889,13 @@ void add_loads(std::vector<KeywordDecl>& t) {
     k.cards = {
         card("card 1",
              {I("fct_ID", 1, 10, "function of time: the fraction of the way (0 at the start, 1 at the end)")
+                  .refs(IdKind::Other)
                   .must(),
               I("part_ID", 11, 20,
                 "spring part whose springs give the nodes (each first node goes to its second "
-                "node's initial position); 0 = the listed nodes"),
-              I("sens_ID", 31, 40, "sensor that starts the motion; 0 = none")}),
+                "node's initial position); 0 = the listed nodes")
+                  .refs(IdKind::Part),
+              I("sens_ID", 31, 40, "sensor that starts the motion; 0 = none").refs(IdKind::Other)}),
         card("card 2",
              {R("Ascale", 1, 20,
                 "time scale of the function: Radioss evaluates it at t * Ascale (not t / Ascale as /IMPDISP)")
@@ -852,10 +905,10 @@ void add_loads(std::vector<KeywordDecl>& t) {
               R("Tstop", 61, 80, "time it stops being imposed; 0 = never").dims(dim::time)}),
     };
     k.tail = Tail::Records;
-    k.record = card(
-        "node", {I("node_IDN", 1, 10, "node moved"), R("Xn", 11, 30, "final position X").dims(dim::length),
-                 R("Yn", 31, 50, "final position Y").dims(dim::length),
-                 R("Zn", 51, 70, "final position Z").dims(dim::length)});
+    k.record = card("node", {I("node_IDN", 1, 10, "node moved").refs(IdKind::Node),
+                             R("Xn", 11, 30, "final position X").dims(dim::length),
+                             R("Yn", 31, 50, "final position Y").dims(dim::length),
+                             R("Zn", 51, 70, "final position Z").dims(dim::length)});
     t.push_back(std::move(k));
   }
   {
@@ -865,14 +918,15 @@ void add_loads(std::vector<KeywordDecl>& t) {
     // translation of the nodes, as /INIVEL/TRA.
     k.aliases = {"/INIVEL/T+G"};
     k.cards = {
-        card("card 1", {R("Vx", 1, 20, "initial X velocity").dims(dim::velocity),
-                        R("Vy", 21, 40, "initial Y velocity").dims(dim::velocity),
-                        R("Vz", 41, 60, "initial Z velocity").dims(dim::velocity),
-                        I("grnod_ID", 61, 70, "nodes concerned"),
-                        I("skew_ID", 71, 80, "skew of the velocity components; 0 = global axes")}),
+        card("card 1",
+             {R("Vx", 1, 20, "initial X velocity").dims(dim::velocity),
+              R("Vy", 21, 40, "initial Y velocity").dims(dim::velocity),
+              R("Vz", 41, 60, "initial Z velocity").dims(dim::velocity),
+              I("grnod_ID", 61, 70, "nodes concerned").refs(IdKind::Other),
+              I("skew_ID", 71, 80, "skew of the velocity components; 0 = global axes").refs(IdKind::Other)}),
         card_v("card 2", 2025, kLastVersion,
                {R("Tstart", 1, 20, "time the velocity is imposed; 0 = at the start").dims(dim::time),
-                I("sensor_ID", 21, 30, "sensor that triggers the velocity; 0 = none")}),
+                I("sensor_ID", 21, 30, "sensor that triggers the velocity; 0 = none").refs(IdKind::Other)}),
     };
     t.push_back(std::move(k));
   }
@@ -881,14 +935,15 @@ void add_loads(std::vector<KeywordDecl>& t) {
                        "initial angular velocity of a node group (the nodes' rotational degrees of freedom)",
                        Header::IdUnit, true, "inivel_ID");
     k.cards = {
-        card("card 1", {R("Vx", 1, 20, "initial angular velocity about X").dims(dim::rate),
-                        R("Vy", 21, 40, "initial angular velocity about Y").dims(dim::rate),
-                        R("Vz", 41, 60, "initial angular velocity about Z").dims(dim::rate),
-                        I("grnod_ID", 61, 70, "nodes concerned"),
-                        I("skew_ID", 71, 80, "skew of the velocity components; 0 = global axes")}),
+        card("card 1",
+             {R("Vx", 1, 20, "initial angular velocity about X").dims(dim::rate),
+              R("Vy", 21, 40, "initial angular velocity about Y").dims(dim::rate),
+              R("Vz", 41, 60, "initial angular velocity about Z").dims(dim::rate),
+              I("grnod_ID", 61, 70, "nodes concerned").refs(IdKind::Other),
+              I("skew_ID", 71, 80, "skew of the velocity components; 0 = global axes").refs(IdKind::Other)}),
         card_v("card 2", 2025, kLastVersion,
                {R("Tstart", 1, 20, "time the velocity is imposed; 0 = at the start").dims(dim::time),
-                I("sensor_ID", 21, 30, "sensor that triggers the velocity; 0 = none")}),
+                I("sensor_ID", 21, 30, "sensor that triggers the velocity; 0 = none").refs(IdKind::Other)}),
     };
     t.push_back(std::move(k));
   }
@@ -899,7 +954,7 @@ void add_loads(std::vector<KeywordDecl>& t) {
                    "total mass shared by the nodes"}}) {
     KeywordDecl k = kw(path, meaning, Header::IdUnit, true, "admas_ID");
     k.cards = {card("card 1", {R("MASS", 1, 20, mass_meaning).dims(dim::mass).ge(0.0),
-                               I("grnod_ID", 21, 30, "nodes concerned").must()})};
+                               I("grnod_ID", 21, 30, "nodes concerned").refs(IdKind::Other).must()})};
     t.push_back(std::move(k));
   }
   {
@@ -922,22 +977,24 @@ void add_loads(std::vector<KeywordDecl>& t) {
            "moving frame carried by three nodes: origin N1, the Dir axis along N1 -> N2, N3 in the "
            "plane of the Dir axis and the next one; rebuilt from the nodes every cycle",
            Header::IdUnit, true, "skew_ID");
-    k.cards = {card(
-        "card 1",
-        {I("N1", 1, 10, "origin node").must(), I("N2", 11, 20, "node giving the Dir axis from N1").must(),
-         I("N3", 21, 30, "node in the plane of the Dir axis and the next one (X'Y' for X)").must(),
-         S("Dir", 31, 40, "axis along N1 -> N2: X, Y or Z; blank = X").versions(2019)})};
+    k.cards = {
+        card("card 1", {I("N1", 1, 10, "origin node").refs(IdKind::Node).must(),
+                        I("N2", 11, 20, "node giving the Dir axis from N1").refs(IdKind::Node).must(),
+                        I("N3", 21, 30, "node in the plane of the Dir axis and the next one (X'Y' for X)")
+                            .refs(IdKind::Node)
+                            .must(),
+                        S("Dir", 31, 40, "axis along N1 -> N2: X, Y or Z; blank = X").versions(2019)})};
     t.push_back(std::move(k));
   }
   {
     KeywordDecl k = kw("/ACCEL", "accelerometer: a node's acceleration in a skew frame, low-pass filtered",
                        Header::IdUnit, true, "accel_ID");
-    k.cards = {
-        card("card 1", {I("node_ID", 1, 10, "node the accelerometer sits on").must(),
-                        I("skew_ID", 11, 20, "skew of the measured axes; 0 = global axes"),
-                        R("Fcut", 31, 50, "cut-off frequency of the 4-pole Butterworth filter; 0 = none")
-                            .dims(dim::rate)
-                            .ge(0.0)})};
+    k.cards = {card("card 1",
+                    {I("node_ID", 1, 10, "node the accelerometer sits on").refs(IdKind::Node).must(),
+                     I("skew_ID", 11, 20, "skew of the measured axes; 0 = global axes").refs(IdKind::Other),
+                     R("Fcut", 31, 50, "cut-off frequency of the 4-pole Butterworth filter; 0 = none")
+                         .dims(dim::rate)
+                         .ge(0.0)})};
     t.push_back(std::move(k));
   }
   {
@@ -945,11 +1002,11 @@ void add_loads(std::vector<KeywordDecl>& t) {
                        Header::IdUnit, true, "cload_ID");
     k.cards = {
         card("card 1",
-             {I("funct_IDT", 1, 10, "force versus time function").must(),
+             {I("funct_IDT", 1, 10, "force versus time function").refs(IdKind::Other).must(),
               S("Dir", 11, 20, "direction: X, Y, Z (force) or XX, YY, ZZ (moment)"),
-              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes"),
-              I("sensor_ID", 31, 40, "sensor that starts the load; 0 = none"),
-              I("grnod_ID", 41, 50, "loaded nodes; each receives the full value"),
+              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes").refs(IdKind::Other),
+              I("sensor_ID", 31, 40, "sensor that starts the load; 0 = none").refs(IdKind::Other),
+              I("grnod_ID", 41, 50, "loaded nodes; each receives the full value").refs(IdKind::Other),
               I("Itypfun", 51, 60, "abscissa of the function: 1 time, 2 nodal displacement, 3 nodal velocity")
                   .versions(2023)
                   .zero_is(1)
@@ -966,9 +1023,9 @@ void add_loads(std::vector<KeywordDecl>& t) {
         kw("/PLOAD", "pressure on a surface, following a function", Header::IdUnit, true, "pload_ID");
     k.cards = {
         card("card 1",
-             {I("surf_ID", 1, 10, "loaded surface"),
-              I("funct_IDT", 11, 20, "pressure versus time function").must(),
-              I("sensor_ID", 21, 30, "sensor that starts the load; 0 = none"),
+             {I("surf_ID", 1, 10, "loaded surface").refs(IdKind::Other),
+              I("funct_IDT", 11, 20, "pressure versus time function").refs(IdKind::Other).must(),
+              I("sensor_ID", 21, 30, "sensor that starts the load; 0 = none").refs(IdKind::Other),
               I("Ipinch", 31, 40, "apply the load to pinching degrees of freedom").versions(2020).unused(),
               I("Idel", 41, 50, "1 remove the load from deleted elements, 2 keep it")
                   .versions(2021)
@@ -988,11 +1045,11 @@ void add_loads(std::vector<KeywordDecl>& t) {
     KeywordDecl k = kw("/GRAV", "gravity acceleration on a node group", Header::IdUnit, true, "grav_ID");
     k.cards = {
         card("card 1",
-             {I("funct_IDT", 1, 10, "acceleration versus time function; 0 = constant"),
+             {I("funct_IDT", 1, 10, "acceleration versus time function; 0 = constant").refs(IdKind::Other),
               S("Dir", 11, 20, "direction: X, Y or Z (the sign comes from Fscale_y)"),
-              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes"),
-              I("sensor_ID", 31, 40, "sensor that starts the load; 0 = none"),
-              I("grnod_ID", 41, 50, "nodes concerned; 0 = all nodes"),
+              I("skew_ID", 21, 30, "skew of the direction; 0 = global axes").refs(IdKind::Other),
+              I("sensor_ID", 31, 40, "sensor that starts the load; 0 = none").refs(IdKind::Other),
+              I("grnod_ID", 41, 50, "nodes concerned; 0 = all nodes").refs(IdKind::Other),
               R("Ascale_x", 61, 80, "abscissa (time) scale of the function").zero_is(1.0).dims(dim::time),
               R("Fscale_y", 81, 100, "acceleration, or ordinate scale of the function")
                   .zero_is(1.0)
@@ -1004,6 +1061,115 @@ void add_loads(std::vector<KeywordDecl>& t) {
         kw("/FUNCT", "piecewise-linear function y(x), one point per line", Header::Id, true, "funct_ID");
     k.tail = Tail::Records;
     k.record = card("point", {R("X", 1, 20, "abscissa; strictly increasing"), R("Y", 21, 40, "ordinate")});
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/MOVE_FUNCT",
+           "scales then shifts an existing /FUNCT: X = X Ascalex + Ashiftx, Y = Y Fscaley + Fshifty",
+           Header::Id, true, "funct_ID");
+    k.cards = {card("card 1",
+                    {R("Ascalex", 1, 20, "abscissa scale; 0 = 1; negative reverses the points").zero_is(1.0),
+                     R("Fscaley", 21, 40, "ordinate scale; 0 = 1").zero_is(1.0),
+                     R("Ashiftx", 41, 60, "abscissa shift, added after scaling"),
+                     R("Fshifty", 61, 80, "ordinate shift, added after scaling")})};
+    t.push_back(std::move(k));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Model assembly: submodels and node transformations (OpenRadioss hm_read_submodel.F, lectrans.F,
+// lectranssub.F and the CFG files SUBMODEL/submodel.cfg, TRANSFORM/{tra,rot,sca,sym}.cfg)
+void add_assembly(std::vector<KeywordDecl>& t) {
+  {
+    KeywordDecl k =
+        kw("//SUBMODEL",
+           "start of a submodel: the keywords up to its //ENDSUB get its id offsets and unit system, "
+           "and the /TRANSFORM cards naming it move its nodes",
+           Header::IdUnit, true, "submodel_ID");
+    k.id_kind = IdKind::Submodel;
+    k.cards = {card("card 1", {I("off_def", 1, 10, "id offset of every object without an offset of its own"),
+                               I("off_nod", 11, 20, "node id offset; 0 takes off_def"),
+                               I("off_ele", 21, 30, "element id offset; 0 takes off_def"),
+                               I("off_part", 31, 40, "part id offset; 0 takes off_def"),
+                               I("off_mat", 41, 50, "material id offset; 0 takes off_def"),
+                               I("off_type", 51, 60, "property id offset; 0 takes off_def"),
+                               I("off_sub", 61, 70, "submodel id offset; 0 takes off_def")})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k = kw("//ENDSUB", "end of the innermost open //SUBMODEL", Header::None, false);
+    t.push_back(std::move(k));
+  }
+  // The first card of /TRANSFORM/TRA, /ROT and /SYM: the moved nodes (a node group or a submodel), then
+  // either coordinates or two nodes. sub_ID is read from the 100 layout on (TRA, ROT) or from 2026 (SYM).
+  // x, y, z: the names of the three reals; what: the meaning of the first, then those of the other two.
+  auto first_card = [](std::string_view x, std::string_view y, std::string_view z, std::string_view what,
+                       std::string_view what_y, std::string_view what_z, int sub_since, Dim d) {
+    return card(
+        "card 1",
+        {I("grnod_ID", 1, 10, "the nodes moved (exclusive with sub_ID)").refs(IdKind::Other),
+         R(x, 11, 30, what).dims(d), R(y, 31, 50, what_y).dims(d), R(z, 51, 70, what_z).dims(d),
+         I("node_ID1", 71, 80, "first node (with node_ID2, replaces the coordinates)").refs(IdKind::Node),
+         I("node_ID2", 81, 90, "second node").refs(IdKind::Node),
+         I("sub_ID", 91, 100, "the submodel moved: all its nodes (exclusive with grnod_ID)")
+             .refs(IdKind::Submodel)
+             .versions(sub_since)});
+  };
+  {
+    KeywordDecl k = kw("/TRANSFORM/TRA", "translation of a node group or of a submodel's nodes",
+                       Header::IdUnit, true, "transform_ID");
+    k.cards = {first_card("X_translation", "Y_translation", "Z_translation",
+                          "translation X component (node_ID1 to node_ID2 when they are given)",
+                          "translation Y component", "translation Z component", 100, dim::length),
+               card_v("card 2", 2026, kLastVersion,
+                      {I("skew_ID", 1, 10, "skew the translation components are given in; 0 = global axes")
+                           .refs(IdKind::Other)
+                           .not_implemented()})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/TRANSFORM/ROT",
+           "rotation of a node group or of a submodel's nodes about the axis from point 1 to point 2",
+           Header::IdUnit, true, "transform_ID");
+    k.cards = {
+        first_card("X_point_1", "Y_point_1", "Z_point_1", "axis point 1 X (the centre; node_ID1 replaces it)",
+                   "axis point 1 Y", "axis point 1 Z", 100, dim::length),
+        card("card 2", {R("X_point_2", 11, 30, "axis point 2 X (node_ID2 replaces it)").dims(dim::length),
+                        R("Y_point_2", 31, 50, "axis point 2 Y").dims(dim::length),
+                        R("Z_point_2", 51, 70, "axis point 2 Z").dims(dim::length),
+                        R("Angle", 71, 90, "rotation angle in degrees, right-handed about point 1 -> 2")})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/TRANSFORM/SCA", "scaling of a node group's (or a submodel's) coordinates about a centre node",
+           Header::IdUnit, true, "transform_ID");
+    k.cards = {
+        card("card 1", {I("grnod_ID", 1, 10, "the nodes moved (exclusive with sub_ID)").refs(IdKind::Other),
+                        R("Fscale_X", 11, 30, "X scale factor; 0 = 1").zero_is(1.0),
+                        R("Fscale_Y", 31, 50, "Y scale factor; 0 = 1").zero_is(1.0),
+                        R("Fscale_Z", 51, 70, "Z scale factor; 0 = 1").zero_is(1.0),
+                        I("node_IDc", 71, 80, "centre node; 0 = the origin").refs(IdKind::Node),
+                        I("sub_ID", 91, 100, "the submodel moved: all its nodes (exclusive with grnod_ID)")
+                            .refs(IdKind::Submodel)
+                            .versions(2026)})};
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/TRANSFORM/SYM",
+           "mirror of a node group or of a submodel's nodes in the plane through point 1 normal to "
+           "point 1 -> 2",
+           Header::IdUnit, true, "transform_ID");
+    k.cards = {
+        first_card("X_point_1", "Y_point_1", "Z_point_1", "point 1 X, on the plane (node_ID1 replaces it)",
+                   "point 1 Y", "point 1 Z", 2026, dim::length),
+        card("card 2",
+             {R("X_point_2", 11, 30, "point 2 X: point 1 -> 2 is the plane normal").dims(dim::length),
+              R("Y_point_2", 31, 50, "point 2 Y").dims(dim::length),
+              R("Z_point_2", 51, 70, "point 2 Z").dims(dim::length)})};
     t.push_back(std::move(k));
   }
 }
@@ -1063,10 +1229,10 @@ KeywordDecl rigid_wall(std::string_view path, std::string_view meaning, WallShap
   KeywordDecl k = kw(path, meaning, Header::IdUnit, true, "rwall_ID");
   k.cards = {
       card("card 1",
-           {I("node_ID", 1, 10, "node carrying a moving wall; 0 = fixed wall"),
+           {I("node_ID", 1, 10, "node carrying a moving wall; 0 = fixed wall").refs(IdKind::Node),
             I("Slide", 11, 20, "0 frictionless sliding, 1 tied, 2 Coulomb friction").allow({0, 1, 2}),
-            I("grnd_ID1", 21, 30, "secondary nodes"),
-            I("grnd_ID2", 31, 40, "nodes removed from the secondary set"),
+            I("grnd_ID1", 21, 30, "secondary nodes").refs(IdKind::Other),
+            I("grnd_ID2", 31, 40, "nodes removed from the secondary set").refs(IdKind::Other),
             I("Iform", 41, 50, "0 kinematic, 1 penalty").versions(2026).allow({0, 1})}),
       card_if("card 2 (Slide = 2)", when_eq("Slide", 2),
               {R("d", 1, 20, d_meaning).dims(dim::length),
@@ -1126,18 +1292,19 @@ void add_rigid(std::vector<KeywordDecl>& t) {
         kw("/RBODY", "rigid body: a main node driving a node group", Header::IdUnit, true, "rbody_ID");
     k.cards = {
         card("card 1",
-             {I("node_ID", 1, 10, "main node; 0 creates one"),
+             {I("node_ID", 1, 10, "main node; 0 creates one").refs(IdKind::Node),
               I("sens_ID", 11, 20,
-                "sensor that releases the body (2 cycles after it switches on); 0 = rigid throughout"),
-              I("skew_ID", 21, 30, "frame of the added inertia; 0 = global axes"),
+                "sensor that releases the body (2 cycles after it switches on); 0 = rigid throughout")
+                  .refs(IdKind::Other),
+              I("skew_ID", 21, 30, "frame of the added inertia; 0 = global axes").refs(IdKind::Other),
               I("Ispher", 31, 40, "1 spherical inertia, 2 full inertia tensor").zero_is(2).allow({0, 1, 2}),
               R("Mass", 41, 60, "mass added to the main node").dims(dim::mass),
-              I("grnd_ID", 61, 70, "secondary nodes"),
+              I("grnd_ID", 61, 70, "secondary nodes").refs(IdKind::Other),
               I("Ikrem", 71, 80, "handling of secondary nodes also on a rigid wall").unused(),
               I("ICoG", 81, 90, "centre of gravity and main node position option")
                   .zero_is(1)
                   .allow({0, 1, 2, 3, 4}),
-              I("surf_ID", 91, 100, "surface linked to the body").unused()}),
+              I("surf_ID", 91, 100, "surface linked to the body").refs(IdKind::Other).unused()}),
         card("card 2", {R("Jxx", 1, 20, "added inertia xx").dims(dim::inertia),
                         R("Jyy", 21, 40, "added inertia yy").dims(dim::inertia),
                         R("Jzz", 41, 60, "added inertia zz").dims(dim::inertia)}),
@@ -1166,25 +1333,32 @@ void add_sections(std::vector<KeywordDecl>& t) {
       kw("/SECT", "section cut: the force and moment that the listed elements apply to a set of nodes",
          Header::IdUnit, true, "sect_ID");
   k.cards = {
-      card("card 1", {I("node_ID1", 1, 10,
-                        "N1: origin of the section frame; 0 = global frame, normal Z (Iframe >= 10)"),
-                      I("node_ID2", 11, 20, "N2: axis 1 of the frame points from N1 to N2"),
-                      I("node_ID3", 21, 30, "N3: with N1 and N2 spans the section plane"),
-                      I("grnod_ID", 31, 40, "nodes of the cut, where the element forces are summed").must(),
-                      I("I_SAVE", 41, 50,
-                        "cut file: 0 none, 1 or 2 write displacements (and forces), 100, 101 or 200 read "
-                        "them as input")
-                          .allow({0, 1, 2, 100, 101, 200}),
-                      I("Frame_ID", 51, 60, "moving frame defining the section; 0 = the nodes N1 N2 N3"),
-                      R("Dt", 61, 80, "time step of the cut file").dims(dim::time).unused(),
-                      R("alpha", 81, 100, "filtering coefficient of the cut file (< 1)").unused()}),
+      card("card 1",
+           {I("node_ID1", 1, 10, "N1: origin of the section frame; 0 = global frame, normal Z (Iframe >= 10)")
+                .refs(IdKind::Node),
+            I("node_ID2", 11, 20, "N2: axis 1 of the frame points from N1 to N2").refs(IdKind::Node),
+            I("node_ID3", 21, 30, "N3: with N1 and N2 spans the section plane").refs(IdKind::Node),
+            I("grnod_ID", 31, 40, "nodes of the cut, where the element forces are summed")
+                .refs(IdKind::Other)
+                .must(),
+            I("I_SAVE", 41, 50,
+              "cut file: 0 none, 1 or 2 write displacements (and forces), 100, 101 or 200 read "
+              "them as input")
+                .allow({0, 1, 2, 100, 101, 200}),
+            I("Frame_ID", 51, 60, "moving frame defining the section; 0 = the nodes N1 N2 N3")
+                .refs(IdKind::Other),
+            R("Dt", 61, 80, "time step of the cut file").dims(dim::time).unused(),
+            R("alpha", 81, 100, "filtering coefficient of the cut file (< 1)").unused()}),
       card("card 2", {S("file_name", 1, 100, "root name of the cut file (I_SAVE > 0)")}),
       card("card 3",
-           {I("grbric_ID", 1, 10, "bricks whose forces are summed (/GRBRIC)"),
-            I("grshel_ID", 21, 30, "4-node shells whose forces and moments are summed (/GRSHEL)"),
-            I("grtrus_ID", 31, 40, "trusses (/GRTRUS)"), I("grbeam_ID", 41, 50, "beams (/GRBEAM)"),
-            I("grsprg_ID", 51, 60, "springs (/GRSPRI)"),
-            I("grtria_ID", 61, 70, "3-node shells whose forces and moments are summed (/GRSH3N)"),
+           {I("grbric_ID", 1, 10, "bricks whose forces are summed (/GRBRIC)").refs(IdKind::Other),
+            I("grshel_ID", 21, 30, "4-node shells whose forces and moments are summed (/GRSHEL)")
+                .refs(IdKind::Other),
+            I("grtrus_ID", 31, 40, "trusses (/GRTRUS)").refs(IdKind::Other),
+            I("grbeam_ID", 41, 50, "beams (/GRBEAM)").refs(IdKind::Other),
+            I("grsprg_ID", 51, 60, "springs (/GRSPRI)").refs(IdKind::Other),
+            I("grtria_ID", 61, 70, "3-node shells whose forces and moments are summed (/GRSH3N)")
+                .refs(IdKind::Other),
             I("Ninter", 71, 80, "number of interfaces whose contact forces are added (at most 10)"),
             I("Iframe", 91, 100,
               "frame and moment centre: 0..3 local frame of N1 N2 N3, 10..13 global axes; the last digit "
@@ -1192,11 +1366,16 @@ void add_sections(std::vector<KeywordDecl>& t) {
               "the origin")
                 .allow({0, 1, 2, 3, 10, 11, 12, 13})}),
       card_if("card 4 (Ninter > 0)", when_gt("Ninter", 0),
-              {I("inter_ID1", 1, 10, "interface 1"), I("inter_ID2", 11, 20, "interface 2"),
-               I("inter_ID3", 21, 30, "interface 3"), I("inter_ID4", 31, 40, "interface 4"),
-               I("inter_ID5", 41, 50, "interface 5"), I("inter_ID6", 51, 60, "interface 6"),
-               I("inter_ID7", 61, 70, "interface 7"), I("inter_ID8", 71, 80, "interface 8"),
-               I("inter_ID9", 81, 90, "interface 9"), I("inter_ID10", 91, 100, "interface 10")}),
+              {I("inter_ID1", 1, 10, "interface 1").refs(IdKind::Other),
+               I("inter_ID2", 11, 20, "interface 2").refs(IdKind::Other),
+               I("inter_ID3", 21, 30, "interface 3").refs(IdKind::Other),
+               I("inter_ID4", 31, 40, "interface 4").refs(IdKind::Other),
+               I("inter_ID5", 41, 50, "interface 5").refs(IdKind::Other),
+               I("inter_ID6", 51, 60, "interface 6").refs(IdKind::Other),
+               I("inter_ID7", 61, 70, "interface 7").refs(IdKind::Other),
+               I("inter_ID8", 71, 80, "interface 8").refs(IdKind::Other),
+               I("inter_ID9", 81, 90, "interface 9").refs(IdKind::Other),
+               I("inter_ID10", 91, 100, "interface 10").refs(IdKind::Other)}),
   };
   t.push_back(std::move(k));
 }
@@ -1213,13 +1392,20 @@ void add_time_history(std::vector<KeywordDecl>& t) {
     KeywordDecl k = kw(path, meaning, Header::Id, true, "th_ID");
     k.aliases = std::move(aliases);
     k.tail = objects == Objects::Ids ? Tail::ThVarsThenIds : Tail::ThVarsThenRecords;
+    const auto word = path.substr(4);
+    k.list_kind = word == "NODE"                                       ? IdKind::Node
+                  : word == "SHEL" || word == "SH3N" || word == "BRIC" ? IdKind::Element
+                  : word == "PART"                                     ? IdKind::Part
+                                                                       : IdKind::Other;
     if (objects == Objects::RecordsWithSkew)
-      k.record = card("object", {I("id", 1, 10, "object id"),
-                                 I("skew_ID", 11, 20, "skew of the output; 0 = global").versions(skew_since),
-                                 S("name", 21, 100, "label of the object in the output")});
+      k.record = card(
+          "object",
+          {I("id", 1, 10, "object id").refs(k.list_kind),
+           I("skew_ID", 11, 20, "skew of the output; 0 = global").refs(IdKind::Other).versions(skew_since),
+           S("name", 21, 100, "label of the object in the output")});
     else if (objects == Objects::Records)
-      k.record = card("object",
-                      {I("id", 1, 10, "object id"), S("name", 21, 100, "label of the object in the output")});
+      k.record = card("object", {I("id", 1, 10, "object id").refs(k.list_kind),
+                                 S("name", 21, 100, "label of the object in the output")});
     t.push_back(std::move(k));
   };
   th("/TH/NODE", {}, "time history of nodal variables", Objects::RecordsWithSkew);
@@ -1363,6 +1549,7 @@ const std::vector<KeywordDecl>& starter_keywords() {
   static const std::vector<KeywordDecl> table = [] {
     std::vector<KeywordDecl> t;
     add_control_and_mesh(t);
+    add_assembly(t);
     add_properties_and_materials(t);
     add_groups(t);
     add_contact(t);
@@ -1412,10 +1599,11 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/INISH3", "/INITEMP", "/INISTA",
         // physics and model structure
         "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
-        "/TRANSFORM", "/SUBMODEL", "/INCLUDE", "/ADMAS/2", "/ADMAS/3", "/ADMAS/4", "/ADMAS/5", "/ADMAS/6",
-        "/ADMAS/7", "/ADMAS/10", "/DAMP", "/IMPLICIT", "/TABLE", "/MOVE_FUNCT", "/SECT/PARAL", "/SECT/CIRCLE",
-        "/GAUGE", "/PRELOAD", "/AMS", "/CAA", "/XREF", "/REFSTA", "/FUNCT_PYTHON", "/ACTIV", "/LEAK", "/DFS",
-        "/EBCS", "/INIGRAV", "/INIMAP1D", "/INIMAP2D", "/PERTURB", "/STATE",
+        "/TRANSFORM/MATRIX", "/TRANSFORM/POSITION", "/TRANSFORM/AUTOPOSITION", "/INCLUDE", "/ADMAS/2",
+        "/ADMAS/3", "/ADMAS/4", "/ADMAS/5", "/ADMAS/6", "/ADMAS/7", "/ADMAS/10", "/DAMP", "/IMPLICIT",
+        "/TABLE", "/SECT/PARAL", "/SECT/CIRCLE", "/GAUGE", "/PRELOAD", "/AMS", "/CAA", "/XREF", "/REFSTA",
+        "/FUNCT_PYTHON", "/ACTIV", "/LEAK", "/DFS", "/EBCS", "/INIGRAV", "/INIMAP1D", "/INIMAP2D", "/PERTURB",
+        "/STATE",
         // time history that radx does not write
         "/TH/SPRING", "/TH/BEAM", "/TH/TRUSS", "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME",
         "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH", "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",

@@ -97,6 +97,7 @@ void ModelBuilder::build_nodes() {
     n.y.insert(n.y.end(), t.reals[cy].begin(), t.reals[cy].end());
     n.z.insert(n.z.end(), t.reals[cz].begin(), t.reals[cz].end());
     node_pos_.insert(node_pos_.end(), t.pos.begin(), t.pos.end());
+    node_submodel_.insert(node_submodel_.end(), t.size(), r->submodel);
     node_bad_.insert(node_bad_.end(), t.bad.begin(), t.bad.end());
   }
   std::int64_t dup = 0;
@@ -504,6 +505,7 @@ void ModelBuilder::build_elements() {
         }
       }
     }
+    if (b.type == ElementType::Brick8) brick_pos_ = pos;
     // Element ids unique within the type.
     std::int64_t dup = 0;
     if (!b.index.build(b.id, dup)) {
@@ -592,15 +594,18 @@ model::Model ModelBuilder::build() {
   build_materials();
   build_properties();
   build_subsets_and_parts();
-  build_elements();
+  build_elements();  // element geometry is checked as written, before any transform
   check_formulations();
+  transform_submodels();  // /TRANSFORM with sub_ID: before anything that reads coordinates
   build_boxes();
   build_functions();
+  move_functions();
   build_element_groups();  // before surfaces and node groups, which are built from element groups
   build_surfaces();        // before the groups: /GRNOD/SURF takes the nodes of surfaces
   build_groups();
-  apply_random_perturbation();  // after the groups it perturbs, before anything reads positions
-  build_skews();
+  transform_node_groups();      // /TRANSFORM with grnod_ID: on the groups just built, in deck order
+  apply_random_perturbation();  // on the placed nodes, before anything reads positions
+  build_skews();                // after every move: a /SKEW/MOV takes its frame from its nodes
   build_sensors();
   build_loads();
   build_rigid_walls();

@@ -4,13 +4,16 @@
 // problem is reported through Diagnostics with the file:line of the field at fault.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
 
 #include "parser/deck.hpp"
+#include "solver/model/geometry.hpp"
 #include "solver/model/model.hpp"
 
 namespace radx {
@@ -66,6 +69,27 @@ class ModelBuilder {
   void warn_massless_accelerometers();
   void check_unused_nodes();
   void check_formulations();  // check_formulations.cpp
+  // The transform stage (build_transforms.cpp): submodel transforms right after the elements, node-group
+  // transforms after the groups, /MOVE_FUNCT after the functions.
+  void transform_submodels();
+  void transform_node_groups();
+  void reorient_inverted_bricks();
+  void move_functions();
+
+  // An affine map x -> A x + b (A row-major).
+  struct Affine {
+    std::array<double, 9> a{1, 0, 0, 0, 1, 0, 0, 0, 1};
+    model::Vec3 b{};
+    [[nodiscard]] model::Vec3 apply(const model::Vec3& x) const;
+    [[nodiscard]] model::Vec3 linear(const model::Vec3& v) const;
+    [[nodiscard]] double det() const;
+  };
+  bool transform_of(const KeywordRecord& r, const std::function<model::Vec3(std::int32_t)>& where,
+                    bool in_submodel, Affine& out);
+  // A point or a direction written inside a submodel, in global coordinates (the submodel's transforms, then
+  // those of the submodels around it); unchanged at the top level.
+  [[nodiscard]] model::Vec3 submodel_point(const KeywordRecord& r, model::Vec3 p) const;
+  [[nodiscard]] model::Vec3 submodel_vector(const KeywordRecord& r, model::Vec3 v) const;
 
   // Group resolution (recursive /GRNOD/GRNOD with loop detection).
   const std::vector<std::int32_t>* group_nodes(std::int32_t g);
@@ -99,10 +123,15 @@ class ModelBuilder {
   std::vector<ElementGroup> element_groups_;
   IdIndex element_group_ids_[3];  // by model::ElementType
   std::vector<const KeywordRecord*> grnod_records_;
-  std::vector<std::uint8_t> grnod_state_;  // 0 not built, 1 building, 2 built
-  std::vector<std::uint8_t> node_used_;    // by an element or as a rigid-body / wall node
-  std::vector<SourcePos> node_pos_;        // where each node was defined
-  std::vector<std::uint8_t> node_bad_;     // 1 when the node's line could not be read
+  std::vector<std::uint8_t> grnod_state_;    // 0 not built, 1 building, 2 built
+  std::vector<std::uint8_t> node_used_;      // by an element or as a rigid-body / wall node
+  std::vector<SourcePos> node_pos_;          // where each node was defined
+  std::vector<std::int32_t> node_submodel_;  // the submodel each node was written in (-1: top level)
+  std::vector<SourcePos> brick_pos_;         // where each brick was defined
+  IdIndex submodel_ids_;                     // submodel id -> index into deck_.submodels
+  std::vector<std::vector<Affine>> submodel_transforms_;  // by submodel, in deck order
+  bool mirrored_ = false;               // a transform applied since the last brick check reverses orientation
+  std::vector<std::uint8_t> node_bad_;  // 1 when the node's line could not be read
 };
 
 }  // namespace detail

@@ -538,6 +538,104 @@ STARTER["/BOX/CYLIN"] = ("id", True, box_cylin, None, None)
 STARTER["/BOX/SPHER"] = ("id", True, box_spher, None, None)
 
 
+# Model assembly (Radioss reference: //SUBMODEL, /TRANSFORM/TRA, /ROT, /SCA, /SYM and /MOVE_FUNCT). sub_ID is in
+# column 91-100 of TRA and ROT from the 100 layout on, of SCA and SYM only from 2026.
+def submodel_card(v):
+    return [card([F(n, "I", 1 + 10 * k, 10 + 10 * k) for k, n in
+                  enumerate(("off_def", "off_nod", "off_ele", "off_part", "off_mat", "off_type", "off_sub"))])]
+
+
+def transform_cards(kind):
+    def cards(v):
+        sub = [F("sub_ID", "I", 91, 100)] if v >= (2026 if kind in ("SCA", "SYM") else 100) else []
+        if kind == "SCA":
+            return [card([F("grnod_ID", "I", 1, 10)] + [F("s" + x, "R", 11 + 20 * k, 30 + 20 * k)
+                                                         for k, x in enumerate("XYZ")] +
+                         [F("node_IDc", "I", 71, 80)] + sub)]
+        c1 = card([F("grnod_ID", "I", 1, 10)] + [F(x + "1", "R", 11 + 20 * k, 30 + 20 * k) for k, x in enumerate("XYZ")] +
+                  [F("node_ID1", "I", 71, 80), F("node_ID2", "I", 81, 90)] + sub)
+        if kind == "TRA":
+            return [c1] + ([card([F("skew_ID", "I", 1, 10)])] if v >= 2026 else [])
+        c2 = [F(x + "2", "R", 11 + 20 * k, 30 + 20 * k) for k, x in enumerate("XYZ")]
+        if kind == "ROT":
+            c2.append(F("Angle", "R", 71, 90))
+        return [c1, card(c2)]
+    return cards
+
+
+STARTER["//SUBMODEL"] = ("id", True, submodel_card, None, None)
+STARTER["//ENDSUB"] = ("none", False, lambda v: [], None, None)
+for _kind in ("TRA", "ROT", "SCA", "SYM"):
+    STARTER["/TRANSFORM/" + _kind] = ("id", True, transform_cards(_kind), None, None)
+STARTER["/MOVE_FUNCT"] = ("id", True, lambda v: [card(reals("Ascalex", "Fscaley", "Ashiftx", "Fshifty"))], None,
+                          None)
+
+# Inside a //SUBMODEL every id is shifted by the submodel's offset for the kind of object it names (nodes
+# off_nod, elements off_ele, parts off_part, materials off_mat, properties off_type, submodels off_sub, all else
+# off_def; a specific offset of 0 takes off_def), summed over the enclosing submodels. Ids of 0 or less stay.
+NODE_FIELDS = {"node_ID", "node_ID1", "node_ID2", "node_ID3", "node_IDc", "N1", "N2", "n1", "n2", "n3", "n4", "n5",
+               "n6", "n7", "n8"}
+ELEM_FIELDS = {"elem_ID"}
+OTHER_FIELDS = {"grnod_ID", "grnd_ID1", "grnd_ID2", "grnd_IDs", "grnd_ID", "surf_IDm", "surf_ID", "skew_ID",
+                "funct_IDT", "sensor_ID", "sens_ID", "subset_ID", "inter_ID", "Iskew", "frame_ID", "Frame_ID",
+                "grbric_ID", "grshel_ID", "grtria_ID"}
+
+
+def id_kind_of_keyword(path):
+    if path.startswith("/MAT/"):
+        return "mat"
+    if path.startswith("/PROP/"):
+        return "prop"
+    if path in ("/PART", "/SHELL", "/SH3N", "/BRICK"):
+        return "part"
+    if path == "//SUBMODEL":
+        return "sub"
+    return "def"
+
+
+def id_kind_of_list(path):
+    last = path.split("/")[2] if path.count("/") >= 2 else ""
+    if path.startswith("/TH/"):
+        return {"NODE": "nod", "PART": "part", "BRIC": "ele", "BRICK": "ele", "SH3N": "ele", "SHEL": "ele"}.get(
+            last, "def")
+    return {"NODE": "nod", "GENE": "nod", "SHEL": "ele", "SH3N": "ele", "BRIC": "ele", "PART": "part",
+            "MAT": "mat", "PROP": "prop"}.get(last, "def")
+
+
+def field_kind(name):
+    if name in NODE_FIELDS:
+        return "nod"
+    if name in ELEM_FIELDS or name in ("shell_ID", "tria_ID", "brick_ID"):
+        return "ele"
+    if name == "prop_ID":
+        return "prop"
+    if name == "mat_ID":
+        return "mat"
+    if name == "sub_ID":
+        return "sub"
+    if name in OTHER_FIELDS or name.startswith("inter_ID"):
+        return "def"
+    return None
+
+
+def shift_ids(obj, offsets):
+    def sh(x, kind):
+        return x + offsets[kind] if isinstance(x, int) and x > 0 and kind else x
+    if obj["path"] not in ("/NODE",):
+        obj["id"] = sh(obj["id"], id_kind_of_keyword(obj["path"]))
+    for k, (x, p) in list(obj["vals"].items()):
+        obj["vals"][k] = (sh(x, field_kind(k)), p)
+    elem = obj["path"] in ("/SHELL", "/SH3N", "/BRICK")
+    for r, _ in obj["recs"]:
+        for k in list(r):
+            kind = "ele" if elem and k == "id" else ("nod" if obj["path"] == "/NODE" and k == "node_ID" else
+                                                     field_kind(k))
+            if obj["path"].startswith("/TH/") and k in ("node_ID", "elem_ID"):
+                kind = id_kind_of_list(obj["path"])
+            r[k] = sh(r[k], kind)
+    obj["ids"] = [(sh(x, id_kind_of_list(obj["path"])), p) for x, p in obj["ids"]]
+
+
 def match_keyword(parts):
     """parts: keyword fields without blanks, upper case. Returns (path, rest) or (None, None)."""
     for n in range(min(len(parts), 4), 0, -1):
@@ -714,6 +812,7 @@ class Checker:
                     if bad:
                         self.issue("RX506", c[0], c[1], "unknown %s unit(s) %s" % (kinds, ", ".join(bad)))
         model = Model(version)
+        self.open_subs = []  # the open //SUBMODEL objects, innermost last
         end_seen = False
         prev_comment = None
         while i < n:
@@ -749,6 +848,8 @@ class Checker:
             i = j
         if not end_seen and not fragment:
             self.issue("RX106", mainfile, last_line, "no /END")
+        for o in self.open_subs:
+            self.issue("RX312", o["pos"][0], o["pos"][1], "//SUBMODEL %d has no //ENDSUB" % o["id"])
         return model
 
     def keyword(self, model, path, rest, kwrec, block, v):
@@ -844,6 +945,23 @@ class Checker:
         if self.verbose:
             print("  %s/%s %r cards=%d recs=%d ids=%d" % (path, oid, title, len(obj["cards"]), len(obj["recs"]),
                                                           len(obj["ids"])))
+        if path == "//ENDSUB":
+            if not self.open_subs:
+                self.issue("RX312", file, lineno, "//ENDSUB with no open //SUBMODEL")
+            else:
+                self.open_subs.pop()
+            return
+        parent = self.open_subs[-1] if self.open_subs else None
+        if parent is not None:
+            shift_ids(obj, parent["offsets"])
+        if path == "//SUBMODEL":
+            def given(name):
+                return (obj["vals"].get(name) or (None,))[0] or 0
+            off = {k: given("off_" + k) or given("off_def") for k in ("nod", "ele", "part", "mat", "type", "sub")}
+            off["prop"] = off.pop("type")
+            off["def"] = given("off_def")
+            obj["offsets"] = {k: x + (parent["offsets"][k] if parent else 0) for k, x in off.items()}
+            self.open_subs.append(obj)
         model.add(obj)
 
     # ---- engine
@@ -1310,6 +1428,46 @@ def semantic(ck, m):
             if (root, val(o, f)) not in egroups:
                 p = pos(o, f)
                 I("RX402", p[0], p[1], "/SECT %d: %s group %d does not exist" % (o["id"], root, val(o, f)))
+    # model assembly: a transform moves a node group or a submodel (one of them), its node pairs are complete,
+    # its rotation axis or mirror normal is not of zero length; /MOVE_FUNCT names an existing function.
+    subs = by_id(("//SUBMODEL",), "submodel")
+    for o in m.of("/TRANSFORM/TRA", "/TRANSFORM/ROT", "/TRANSFORM/SCA", "/TRANSFORM/SYM"):
+        kind = o["path"].split("/")[2]
+        g, sb = val(o, "grnod_ID", 0), val(o, "sub_ID", 0)
+        if g and sb:
+            p = pos(o, "sub_ID")
+            I("RX507", p[0], p[1], "%s %d: grnod_ID and sub_ID both given" % (o["path"], o["id"]))
+            continue
+        if not g and not sb:
+            p = pos(o, "grnod_ID")
+            I("RX404", p[0], p[1], "%s %d: neither grnod_ID nor sub_ID" % (o["path"], o["id"]))
+            continue
+        if g:
+            need(o, "grnod_ID", grnods, "node group")
+        else:
+            need(o, "sub_ID", subs, "submodel")
+        if kind == "SCA":
+            need(o, "node_IDc", nodes, "node")
+            continue
+        a, b = val(o, "node_ID1", 0), val(o, "node_ID2", 0)
+        if bool(a) != bool(b):
+            p = pos(o, "node_ID1" if not a else "node_ID2")
+            I("RX404", p[0], p[1], "%s %d: one node of the pair is missing" % (o["path"], o["id"]))
+            continue
+        need(o, "node_ID1", nodes, "node")
+        need(o, "node_ID2", nodes, "node")
+        if kind == "TRA" or (kind == "ROT" and val(o, "Angle", 0.0) == 0.0):
+            continue
+        if a:
+            if a in nodes and b in nodes and nodes[a] == nodes[b]:
+                p = pos(o, "node_ID2")
+                I("RX605", p[0], p[1], "%s %d: both nodes at one place" % (o["path"], o["id"]))
+        elif all(val(o, x + "1", 0.0) == val(o, x + "2", 0.0) for x in "XYZ"):
+            p = pos(o, "X2")
+            I("RX605", p[0], p[1], "%s %d: point 1 = point 2" % (o["path"], o["id"]))
+    for o in m.of("/MOVE_FUNCT"):
+        if o["id"] not in functs:
+            I("RX402", o["pos"][0], o["pos"][1], "/MOVE_FUNCT %d: no such function" % o["id"])
     for o in m.of("/TH/SECTIO"):
         for x, p in o["ids"]:
             if x not in sects:

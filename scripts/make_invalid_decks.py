@@ -1318,6 +1318,110 @@ def _():
         [("RX507", "RG_C1")]
 
 
+# Model assembly: //SUBMODEL, /TRANSFORM, /MOVE_FUNCT
+def submodel_head(sid=5, offsets=(0,), tag="SUB"):
+    return [("//SUBMODEL/%d" % sid, tag + "_KW"), "Block as a submodel",
+            names(("off_def", 10), ("off_nod", 10), ("off_ele", 10), ("off_part", 10), ("off_mat", 10),
+                  ("off_type", 10), ("off_sub", 10)),
+            (line(*[I(x) for x in offsets]), tag + "_C1")]
+
+
+def transform_rows(kind, grnod=1, v=(0.0, 0.0, 0.0), n1=0, n2=0, sub=0, card2=None, tag="TR"):
+    rows = [("/TRANSFORM/%s/1" % kind, tag + "_KW"), "Move",
+            names(("grnod_ID", 10), ("X", 20), ("Y", 20), ("Z", 20), ("node_ID1", 10), ("node_ID2", 10),
+                  ("sub_ID", 10)),
+            (line(I(grnod), R(v[0]), R(v[1]), R(v[2]), I(n1) if n1 else blank(10), I(n2) if n2 else blank(10),
+                  I(sub) if sub else blank(10)), tag + "_C1")]
+    if card2 is not None:
+        rows += [names(("", 10), ("X_point_2", 20), ("Y_point_2", 20), ("Z_point_2", 20), ("Angle", 20)),
+                 (line(blank(10), *[R(x) for x in card2]), tag + "_C2")]
+    return rows
+
+
+def with_brick_submodel(d, offsets=(0,), close=True):
+    """The brick block (/BRICK/2) inside //SUBMODEL/5."""
+    d.insert_before("BRICK_KW", submodel_head(offsets=offsets))
+    if close:
+        d.insert_after("BRICK_11", [("//ENDSUB", "ENDSUB")])
+    return d
+
+
+@fault("transform_missing_group")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", transform_rows("TRA", grnod=99, v=(0.0, 0.0, 5.0)))
+    return d, "/TRANSFORM/TRA/1 moves node group 99, which does not exist", [("RX402", "TR_C1")]
+
+
+@fault("transform_missing_submodel")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", transform_rows("TRA", grnod=0, v=(0.0, 0.0, 5.0), sub=9))
+    return d, "/TRANSFORM/TRA/1 moves submodel 9, which does not exist", [("RX402", "TR_C1")]
+
+
+@fault("transform_group_and_submodel")
+def _():
+    d = with_brick_submodel(base())
+    d.insert_before("BEFORE_END", transform_rows("TRA", grnod=1, v=(0.0, 0.0, 5.0), sub=5))
+    return d, "/TRANSFORM/TRA/1 names both node group 1 and submodel 5: a transform moves one of them", \
+        [("RX507", "TR_C1")]
+
+
+@fault("transform_one_node")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", transform_rows("TRA", grnod=1, n1=1))
+    return d, "/TRANSFORM/TRA/1 gives node_ID1 without node_ID2 (both or neither)", [("RX404", "TR_C1")]
+
+
+@fault("transform_degenerate_axis")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", transform_rows("ROT", grnod=1, v=(5.0, 5.0, 0.0), card2=(5.0, 5.0, 0.0, 90.0)))
+    return d, "/TRANSFORM/ROT/1 turns 90 degrees about an axis from (5, 5, 0) to the same point", \
+        [("RX605", "TR_C2")]
+
+
+@fault("move_funct_missing_function")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", [("/MOVE_FUNCT/9", "MF_KW"), "Moved",
+                                   names(("Ascalex", 20), ("Fscaley", 20), ("Ashiftx", 20), ("Fshifty", 20)),
+                                   (line(R(2.0), R(1.0), R(0.0), R(0.0)), "MF_C1")])
+    return d, "/MOVE_FUNCT/9: there is no /FUNCT/9 to move", [("RX402", "MF_KW")]
+
+
+@fault("endsub_without_submodel")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", [("//ENDSUB", "ENDSUB")])
+    return d, "//ENDSUB with no //SUBMODEL open", [("RX312", "ENDSUB")]
+
+
+@fault("submodel_not_closed")
+def _():
+    return with_brick_submodel(base(), close=False), "//SUBMODEL/5 is never closed by an //ENDSUB", \
+        [("RX312", "SUB_KW")]
+
+
+@fault("submodel_include_missing_node")
+def _():
+    d = base()
+    k = d.index("BRICK_KW")
+    inc = Deck()
+    inc.add("# Included by submodel_include_missing_node.rad inside //SUBMODEL/5, whose node offset is 100:")
+    inc.add("# the brick's nodes 11..18 are read as 111..118, which do not exist.")
+    for text, tag in d.rows[k:d.index("BRICK_11") + 1]:
+        inc.add(text, tag)
+    d.delete("BRICK_KW", "BRICK_11")
+    d.insert_before("RULER_AFTER_ELEMENTS" if d.has("RULER_AFTER_ELEMENTS") else "PART1_KW",
+                    submodel_head(offsets=(0, 100)) + [("#include inc/submodel_brick.rad", "INC"),
+                                                       ("//ENDSUB", "ENDSUB")])
+    return d, "inside //SUBMODEL/5 (node offset 100) the included brick names nodes 11..18, read as 111..118", \
+        [("RX406", "BRICK_11", "inc/submodel_brick.rad")], {"inc/submodel_brick.rad": inc}
+
+
 @fault("several_errors")
 def _():
     d = base()

@@ -506,6 +506,31 @@ DeckSpec full_deck(int v) {
   d.titled("/FUNCT/907", "/FUNCT", 907, "three points").records = {{x.R("X", 1, 20), x.R("Y", 21, 40)},
                                                                    {x.R("X", 1, 20), x.R("Y", 21, 40)},
                                                                    {x.R("X", 1, 20), x.R("Y", 21, 40)}};
+  // /MOVE_FUNCT (one layout) and the node transformations: sub_ID at 91-100 of TRA and ROT from the 100
+  // layout, of SCA and SYM from 2026; the 2026 TRA has a second card with skew_ID.
+  d.titled("/MOVE_FUNCT/907", "/MOVE_FUNCT", 907, "moved").cards = {
+      {x.R("Ascalex", 1, 20), x.R("Fscaley", 21, 40), x.R("Ashiftx", 41, 60), x.R("Fshifty", 61, 80)}};
+  {
+    Kw& k = d.titled("/TRANSFORM/TRA/921/7", "/TRANSFORM/TRA", 921, "translation", 7);
+    k.cards = {{x.I("grnod_ID", 1, 10), x.R("X_translation", 11, 30), x.R("Y_translation", 31, 50),
+                x.R("Z_translation", 51, 70), x.I("node_ID1", 71, 80), x.I("node_ID2", 81, 90),
+                x.I("sub_ID", 91, 100).ver(100)}};
+    if (v >= 2026)
+      k.cards.push_back({x.I("skew_ID", 1, 10)});
+    else
+      k.absent = {"skew_ID"};
+  }
+  d.titled("/TRANSFORM/ROT/922", "/TRANSFORM/ROT", 922, "rotation").cards = {
+      {x.I("grnod_ID", 1, 10), x.R("X_point_1", 11, 30), x.R("Y_point_1", 31, 50), x.R("Z_point_1", 51, 70),
+       x.I("node_ID1", 71, 80), x.I("node_ID2", 81, 90), x.I("sub_ID", 91, 100).ver(100)},
+      {x.R("X_point_2", 11, 30), x.R("Y_point_2", 31, 50), x.R("Z_point_2", 51, 70), x.R("Angle", 71, 90)}};
+  d.titled("/TRANSFORM/SCA/923", "/TRANSFORM/SCA", 923, "scaling").cards = {
+      {x.I("grnod_ID", 1, 10), x.R("Fscale_X", 11, 30), x.R("Fscale_Y", 31, 50), x.R("Fscale_Z", 51, 70),
+       x.I("node_IDc", 71, 80), x.I("sub_ID", 91, 100).ver(2026)}};
+  d.titled("/TRANSFORM/SYM/924", "/TRANSFORM/SYM", 924, "mirror").cards = {
+      {x.I("grnod_ID", 1, 10), x.R("X_point_1", 11, 30), x.R("Y_point_1", 31, 50), x.R("Z_point_1", 51, 70),
+       x.I("node_ID1", 71, 80), x.I("node_ID2", 81, 90), x.I("sub_ID", 91, 100).ver(2026)},
+      {x.R("X_point_2", 11, 30), x.R("Y_point_2", 31, 50), x.R("Z_point_2", 51, 70)}};
   {
     Kw& k = d.titled("/RWALL/PLANE/908", "/RWALL/PLANE", 908, "moving wall with friction");
     k.cards = {{x.I("node_ID", 1, 10), Ix("Slide", 11, 20, 2), x.I("grnd_ID1", 21, 30),
