@@ -298,7 +298,7 @@ void EngineOutputs::finish(const solver::RunResult& result, bool plot, std::ostr
     s.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   s.seconds = in_run;
-  if (!plot || s.energy.empty()) return;
+  if (s.energy.empty()) return;
   io::EnergyPlotRequest req;
   req.csv_path = (std::filesystem::path(s.out_dir) / (s.root + "_energy.csv")).string();
   req.png_path = (std::filesystem::path(s.out_dir) / (s.root + "_energy.png")).string();
@@ -307,6 +307,12 @@ void EngineOutputs::finish(const solver::RunResult& result, bool plot, std::ostr
   req.energy_unit = io::unit_label(s.model.units, 1, 2, -2);
   req.samples = s.energy;
   std::string warning;
+  if (!plot) {
+    // --no-plot skips only the chart (and its Python start-up); the CSV is the data and is always written.
+    if (!io::write_energy_csv(req, warning))
+      warn << "radx-engine: warning: energy balance not written: " << warning << '\n';
+    return;
+  }
   if (!io::write_energy_plot(req, warning)) warn << "radx-engine: warning: " << warning << '\n';
 }
 

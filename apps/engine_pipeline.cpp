@@ -51,6 +51,29 @@ io::EnergyBalance to_io(const solver::EnergyBalance& e) {
   return b;
 }
 
+// What to do about a model file that cannot be read. The starter leaves its listing NAME_0000.out beside
+// the model file even when deck errors kept it from writing one: then the starter did run, and telling the
+// user to run it "first" would send them in a circle.
+std::string starter_hint(const std::string& model_path, const std::string& root) {
+  std::error_code ec;
+  const fs::path listing = fs::path(model_path).replace_extension(".out");
+  if (fs::exists(model_path, ec) || !fs::is_regular_file(listing, ec)) {
+    return "  run the starter first (radx-starter " + root + "_0000.rad), or give it with --model FILE\n";
+  }
+  std::ifstream in(listing);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.find("no model file written") != std::string::npos) {
+      return "  the starter ran but found errors in the deck, so it wrote no model file: fix the errors its "
+             "listing " +
+             listing.string() + " names (the starter also printed them), then run the starter again\n";
+    }
+  }
+  return "  the starter's listing " + listing.string() +
+         " is there but its model file is missing: run the starter again (radx-starter " + root +
+         "_0000.rad), or give the model file with --model FILE\n";
+}
+
 }  // namespace
 
 int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
@@ -70,8 +93,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   model::Model model;
   std::string error;
   if (!io::read_model_file(model_path, model, error)) {
-    err << model_path << ": error: cannot read the model file: " << error
-        << "\n  run the starter first (radx-starter " << root << "_0000.rad), or give it with --model FILE\n";
+    err << model_path << ": error: cannot read the model file: " << error << '\n';
+    err << starter_hint(model_path, root);
     return 1;
   }
   // /RBODY/ON and /RBODY/OFF name rigid bodies of the model. Every body is active at the start of a run (one

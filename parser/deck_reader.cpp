@@ -30,6 +30,13 @@ namespace {
 
 constexpr int kNewestVersion = schema::kDeckVersions.back();
 
+// The integer view of a real default, 0 when it has none: defaults such as Pmin = -1e30 lie beyond
+// int64, and converting them would be undefined behaviour. Only integer fields read the integer view.
+std::int64_t int_if_representable(double d) {
+  constexpr double kLimit = 9.2233720368547758e18;  // 2^63, exact in a double
+  return (d > -kLimit && d < kLimit) ? static_cast<std::int64_t>(d) : 0;
+}
+
 // "90, 100, 110, 120, 130, 140 and 2017 to 2026": the versions radx reads, for messages.
 std::string deck_versions_text() {
   std::string s;
@@ -274,6 +281,9 @@ class StarterReader {
     v.column = static_cast<std::uint16_t>(column);
     raw = trim(raw);
     v.blank = raw.empty();
+    // A value already reported as unreadable is read as blank; it is not reported again as missing or out
+    // of range.
+    bool unreadable = false;
     const std::string what = "field " + std::string(f.name) + " (" + std::string(f.meaning) + ")";
     switch (f.type) {
       case FieldType::String: v.s = std::string(raw); break;
@@ -288,12 +298,12 @@ class StarterReader {
           } else {
             diags_.error(Diag::BadInteger, at(pos, column), about,
                          what + ": '" + std::string(raw) + "' is not an integer; write digits only, e.g. 12");
-            v.blank = true;
+            v.blank = unreadable = true;
           }
         } else if (st == NumberStatus::Overflow) {
           diags_.error(Diag::IntegerOverflow, at(pos, column), about,
                        what + ": '" + std::string(raw) + "' is out of the integer range");
-          v.blank = true;
+          v.blank = unreadable = true;
         }
         v.r = static_cast<double>(v.i);
         break;
@@ -305,12 +315,12 @@ class StarterReader {
               Diag::BadReal, at(pos, column), about,
               what + ": '" + std::string(raw) +
                   "' is not a number; accepted forms: 1.5, .5, 5., 1E-3, 1.D3, 1.5d-3, 210000003000");
-          v.blank = true;
+          v.blank = unreadable = true;
         } else if (st == NumberStatus::Overflow) {
           diags_.error(
               Diag::RealOverflow, at(pos, column), about,
               what + ": '" + std::string(raw) + "' is beyond the double-precision range (about 1.8E308)");
-          v.blank = true;
+          v.blank = unreadable = true;
         }
         v.i = 0;
         break;
@@ -318,18 +328,18 @@ class StarterReader {
     }
     if (f.type != FieldType::String) {
       const bool zero = (f.type == FieldType::Int) ? v.i == 0 : v.r == 0.0;
-      if (zero && f.required) {
+      if (zero && f.required && !unreadable) {
         diags_.error(Diag::RequiredValueMissing, at(pos, column), about,
                      what + " is " + (v.blank ? "blank" : "0") + ": a value is required");
       }
       if (zero && f.zero_default) {
         v.r = *f.zero_default;
-        v.i = static_cast<std::int64_t>(*f.zero_default);
+        v.i = int_if_representable(*f.zero_default);
         v.defaulted = true;
       }
       const double value = f.type == FieldType::Int ? static_cast<double>(v.i) : v.r;
-      if (zero && f.required) {
-        // Already reported as missing; a range message on top would repeat it.
+      if (unreadable || (zero && f.required)) {
+        // Already reported as unreadable or missing; a range message on top would repeat it.
       } else if (!f.allowed.empty() && f.type == FieldType::Int &&
                  std::find(f.allowed.begin(), f.allowed.end(), v.i) == f.allowed.end()) {
         diags_.error(
@@ -1006,6 +1016,10 @@ std::optional<double> unit_factor(std::string_view name, char kind) {
 }
 
 bool is_one_file_deck(const std::string& path) {
+  // Only a regular file can be one: opening a FIFO would block, /dev/zero would never end (the reader
+  // reports such a path as an error).
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
   std::ifstream in(path);
   std::string line;
   while (std::getline(in, line)) {

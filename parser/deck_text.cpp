@@ -1,5 +1,6 @@
 #include "parser/deck_text.hpp"
 
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -12,13 +13,36 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// What keeps `p` from being read as a deck, empty when it is a regular file. Only regular files are read:
+// a directory makes tellg() fail (and the size wrap), a FIFO blocks the open until a writer comes, and
+// /dev/zero never ends.
+std::string not_a_deck_file(const fs::path& p) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(p, ec);
+  if (ec || !fs::exists(st)) return {};  // the open fails and says so
+  switch (st.type()) {
+    case fs::file_type::regular: return {};
+    case fs::file_type::directory: return "it is a directory";
+    case fs::file_type::fifo: return "it is a FIFO (named pipe)";
+    case fs::file_type::socket: return "it is a socket";
+    case fs::file_type::character:
+    case fs::file_type::block: return "it is a device";
+    default: return "it is not a regular file";
+  }
+}
+
 bool read_whole_file(const fs::path& p, std::string& out) {
   std::ifstream in(p, std::ios::binary);
   if (!in) return false;
   in.seekg(0, std::ios::end);
   const auto size = in.tellg();
   if (size < 0) return false;
-  out.resize(static_cast<std::size_t>(size));
+  // A file too large for memory is an input problem like any other, not a crash.
+  try {
+    out.resize(static_cast<std::size_t>(size));
+  } catch (const std::exception&) {
+    return false;
+  }
   in.seekg(0, std::ios::beg);
   in.read(out.data(), size);
   return static_cast<bool>(in) || in.eof();
@@ -39,6 +63,18 @@ class Loader {
                          "a file may be included only once along a chain");
         return false;
       }
+    }
+    if (const std::string why = not_a_deck_file(path); !why.empty()) {
+      const std::string accepted = "; a deck and the files it includes are regular text files";
+      if (top) {
+        diags_.error(Diag::FileNotFound, Where{display, 0, 0}, About{},
+                     "cannot read the deck file '" + display + "': " + why + accepted);
+      } else {
+        diags_.error(Diag::IncludeNotFound, out_.where(included_from, 1), About{"#include"},
+                     "cannot read the included file '" + display + "': " + why + accepted +
+                         " (include paths are relative to the including file)");
+      }
+      return false;
     }
     std::string content;
     if (!read_whole_file(path, content)) {

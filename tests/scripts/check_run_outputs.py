@@ -10,7 +10,7 @@ usage: /usr/bin/python3 check_run_outputs.py --radx RADX --decks DECKS_DIR --out
 2. decks/verification/jc_single_brick with /STOP Emax = 1e-9 % added: the run stops with an error at its first
    listing cycle after the start (the energy error exceeds 1e-9 %); it still writes its last state: the
    series' last state is at the summary's final time, and the states before it are the /ANIM/DT ones due
-   before the stop.
+   before the stop. That run has --no-plot: NAME_energy.csv is written and NAME_energy.png is not.
 """
 import argparse
 import csv
@@ -58,7 +58,7 @@ def main():
     check(not glob.glob(os.path.join(out, "*.part*")) and not glob.glob(os.path.join(out, "*.tmp")),
           "temporary files left")
 
-    # 2. Error stop still writes its last state.
+    # 2. Error stop still writes its last state; with --no-plot the energy CSV is written and the chart is not.
     out = os.path.join(a.out, "stop")
     os.makedirs(out)
     src = os.path.join(a.decks, "verification/jc_single_brick")
@@ -70,6 +70,9 @@ def main():
     r = subprocess.run([a.radx, "run", os.path.join(out, "JC_SINGLE_BRICK_0000.rad"), "--out", out, "--no-plot"],
                        capture_output=True, text=True)
     check(r.returncode == 1, "the /STOP run exited with %d, expected 1" % r.returncode)
+    # --no-plot leaves out the chart only: the CSV is the data, as radx-engine --help says.
+    check(os.path.exists(os.path.join(out, "JC_SINGLE_BRICK_energy.csv")), "--no-plot dropped the energy CSV")
+    check(not os.path.exists(os.path.join(out, "JC_SINGLE_BRICK_energy.png")), "--no-plot drew the chart")
     s = read_summary(out, "JC_SINGLE_BRICK")
     check(s["status"] == "error" and "/STOP" in s["message"], "summary %s: %s" % (s["status"], s["message"]))
     series = listed_states(out, "JC_SINGLE_BRICK")
