@@ -336,7 +336,7 @@ ResultsWriter::ResultsWriter(const model::Model& model, std::string dir, std::st
     if (a.on_points) w.indexed.push_back({a.name, true, a.components, "Float", 4, false});
   }
   w.indexed.push_back({"element_status", false, 1, "UChar", 1, false});
-  w.indexed.push_back({"part_id", false, 1, "Int", 4, true});
+  w.indexed.push_back({"part_id", false, 1, "Int", 8, true});
   w.indexed.push_back({"element_id", false, 1, "Int", 8, true});
   for (const ResultArray& a : w.arrays) {
     if (!a.on_points) w.indexed.push_back({a.name, false, a.components, "Float", 4, false});

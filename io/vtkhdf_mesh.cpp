@@ -75,7 +75,7 @@ VtkhdfMeshSizes write_vtkhdf_mesh(hid_t file, const Model& m) {
 
   std::vector<std::int64_t> connectivity, offsets, element_id, mixed;
   std::vector<std::uint8_t> types;
-  std::vector<std::int32_t> part_id;
+  std::vector<std::int64_t> part_id;  // user ids are 64-bit everywhere, as node_id and element_id
   connectivity.reserve(max_conn);
   mixed.reserve(max_conn + nc);
   offsets.reserve(nc + 1);
@@ -105,7 +105,7 @@ VtkhdfMeshSizes write_vtkhdf_mesh(hid_t file, const Model& m) {
       }
       offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
       types.push_back(vtk);
-      part_id.push_back(static_cast<std::int32_t>(m.parts[static_cast<std::size_t>(b.part[e])].id));
+      part_id.push_back(m.parts[static_cast<std::size_t>(b.part[e])].id);
       element_id.push_back(b.id[e]);
     }
   });

@@ -237,10 +237,10 @@ def check(path, nodes, cells, type_counts):
             c.expect(np.unique(node_id).size == np_, "/VTKHDF/PointData/node_id has repeated ids")
             print(f"  PointData/node_id       int64[{np_}], ids {node_id.min()} .. {node_id.max()}")
         if c.expect("CellData" in vtk, "/VTKHDF/CellData is missing"):
-            part_id = dataset(c, vtk["CellData"], "part_id", np.int32, shape=(nc,))
+            part_id = dataset(c, vtk["CellData"], "part_id", np.int64, shape=(nc,))
             element_id = dataset(c, vtk["CellData"], "element_id", np.int64, shape=(nc,))
             if part_id is not None and nc > 0:
-                print(f"  CellData/part_id        int32[{nc}], parts {sorted(set(part_id.tolist()))[:20]}")
+                print(f"  CellData/part_id        int64[{nc}], parts {sorted(set(part_id.tolist()))[:20]}")
             if element_id is not None and nc > 0:
                 print(f"  CellData/element_id     int64[{nc}], ids {element_id.min()} .. {element_id.max()}")
 

@@ -108,8 +108,8 @@ Model make_model() {
 
   for (int i = 0; i < 3; ++i) {
     Part p;
-    p.id = 7 + i;
-    p.title = "part " + std::to_string(7 + i);
+    p.id = i == 2 ? 3'000'000'000LL : 7 + i;  // beyond 32 bits: the mesh must keep it
+    p.title = "part " + std::to_string(p.id);
     p.property = i == 2 ? 1 : 0;
     p.material = i == 0 ? 0 : 1;
     p.subset = 0;
@@ -954,8 +954,8 @@ TEST_CASE("model file: VTKHDF layout of results-format.md section 2", "[io][mode
   CHECK(points[3 * 7 + 1] == m.nodes.y[7]);
   CHECK(points[3 * 15 + 2] == m.nodes.z[15]);
   CHECK(read_raw<std::int64_t>(file, "/VTKHDF/PointData/node_id", H5T_NATIVE_INT64) == m.nodes.id);
-  CHECK(read_raw<std::int32_t>(file, "/VTKHDF/CellData/part_id", H5T_NATIVE_INT32) ==
-        std::vector<std::int32_t>{7, 8, 8, 9, 9});
+  CHECK(read_raw<std::int64_t>(file, "/VTKHDF/CellData/part_id", H5T_NATIVE_INT64) ==
+        std::vector<std::int64_t>{7, 8, 8, 3'000'000'000LL, 3'000'000'000LL});
   CHECK(read_raw<std::int64_t>(file, "/VTKHDF/CellData/element_id", H5T_NATIVE_INT64) ==
         std::vector<std::int64_t>{101, 102, 201, 301, 5'000'000'000LL});
   CHECK(read_raw<std::int64_t>(file, "/XDMF/MixedTopology", H5T_NATIVE_INT64) ==

@@ -237,8 +237,8 @@ TEST_CASE("results: mesh file, three states, external links, values and indexes"
           std::vector<std::uint8_t>{9, 9, 5, 5, 12});
     CHECK(read_all<std::int64_t>(mesh, "/VTKHDF/Offsets", H5T_NATIVE_INT64) ==
           std::vector<std::int64_t>{0, 4, 8, 11, 14, 22});
-    CHECK(read_all<std::int32_t>(mesh, "/VTKHDF/CellData/part_id", H5T_NATIVE_INT32) ==
-          std::vector<std::int32_t>{21, 21, 22, 22, 22});
+    CHECK(read_all<std::int64_t>(mesh, "/VTKHDF/CellData/part_id", H5T_NATIVE_INT64) ==
+          std::vector<std::int64_t>{21, 21, 22, 22, 22});
     const auto points = read_all<double>(mesh, "/VTKHDF/Points", H5T_NATIVE_DOUBLE);
     REQUIRE(points.size() == 3 * kNodes);
     for (std::size_t i = 0; i < kNodes; ++i) CHECK(points[3 * i + 1] == model.nodes.y[i]);
