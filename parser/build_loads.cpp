@@ -887,8 +887,10 @@ void ModelBuilder::build_rigid_walls() {
   // One id space for the wall shapes.
   for (const auto& [path, shape] :
        {std::pair{"/RWALL/PLANE", 0}, {"/RWALL/CYL", 1}, {"/RWALL/SPHER", 2}, {"/RWALL/PARAL", 3}})
-    build_each(*this, path, "rigid wall", m_.rigid_walls, rwall_ids_,
-               [&](const KeywordRecord& r) { return make_rigid_wall(*this, r, size, shape); });
+    build_each(
+        *this, path, "rigid wall", m_.rigid_walls, rwall_ids_,
+        // A copy: clang before 16 cannot capture a structured binding (scripts/fuzz.sh builds with it).
+        [&, shape = shape](const KeywordRecord& r) { return make_rigid_wall(*this, r, size, shape); });
 }
 
 void ModelBuilder::build_rigid_bodies() {

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of tests/fuzz (clang, with AddressSanitizer and UndefinedBehaviorSanitizer)
+# in build-fuzz/ and runs each deck reader for a bounded time on a corpus seeded from decks/.
+# Usage: scripts/fuzz.sh [SECONDS per reader, default 60]
+# Without clang++ it prints a note and succeeds: fuzzing is an extra check, not a build requirement.
+# A crash, sanitizer report, leak or hang fails the script; libFuzzer saves the input under
+# build-fuzz/artifacts/ (reproduce: build-fuzz/tests/fuzz/radx_fuzz_starter FILE).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"
+if ! command -v clang++ >/dev/null 2>&1; then
+  echo "radx fuzz: clang++ not found, the fuzzing run is skipped (Debian: apt-get install clang libclang-rt-dev)"
+  exit 0
+fi
+cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
+  -DCMAKE_CXX_COMPILER=clang++ -DRADX_FUZZ=ON -DRADX_BUILD_TESTS=OFF >/dev/null
+cmake --build build-fuzz --target radx_fuzz_starter radx_fuzz_engine
+
+# Seeds: every sample deck; engine decks (NAME_0001.rad) for the engine reader, the others (starter and
+# one-file decks) for the starter reader. libFuzzer adds what it finds to the same folders, so later runs
+# start from there.
+mkdir -p build-fuzz/corpus/starter build-fuzz/corpus/engine build-fuzz/artifacts
+while IFS= read -r -d '' deck; do
+  name=$(echo "${deck#decks/}" | tr '/' '_')
+  case "$deck" in
+    *_0001.rad) cp -n "$deck" "build-fuzz/corpus/engine/$name" ;;
+    *) cp -n "$deck" "build-fuzz/corpus/starter/$name" ;;
+  esac
+done < <(find decks -name '*.rad' -size -64k -print0)
+cp -n decks/one_file/*.rad build-fuzz/corpus/engine/ 2>/dev/null || true
+
+status=0
+for reader in starter engine; do
+  echo "radx fuzz: the $reader reader for ${seconds} s"
+  if ! build-fuzz/tests/fuzz/radx_fuzz_$reader build-fuzz/corpus/$reader -max_total_time="$seconds" \
+      -max_len=65536 -timeout=20 -rss_limit_mb=2048 -print_final_stats=1 \
+      -artifact_prefix=build-fuzz/artifacts/$reader- >build-fuzz/fuzz_$reader.log 2>&1; then
+    status=1
+    echo "radx fuzz: the $reader reader failed; its input is in build-fuzz/artifacts/, the log:" >&2
+    tail -n 60 build-fuzz/fuzz_$reader.log >&2
+  fi
+  grep -E '^#[0-9]+ *(DONE|INITED)|stat::number_of_executed_units|stat::peak_rss_mb' \
+    build-fuzz/fuzz_$reader.log || true
+done
+exit $status

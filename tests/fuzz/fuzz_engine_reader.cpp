@@ -1,0 +1,20 @@
+// libFuzzer target: the engine deck reader and the run controls built from it, on any bytes. A crash, a
+// sanitizer report, a hang or an exception escaping is a bug: the reader promises located diagnostics.
+#include <cstddef>
+#include <cstdint>
+
+#include "fuzz_input_file.hpp"
+#include "parser/build_run_controls.hpp"
+#include "parser/deck.hpp"
+#include "parser/diagnostics.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string path = radx::fuzz::input_file(data, size, "ENGINE_0001.rad");
+  radx::Diagnostics diags;
+  radx::EngineDeck deck;
+  const radx::model::RunControls controls = radx::read_run_controls(path, diags, &deck);
+  (void)controls;
+  diags.sort();
+  for (const auto& d : diags.items()) (void)radx::Diagnostics::format(d);
+  return 0;
+}
