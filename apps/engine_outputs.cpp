@@ -85,6 +85,16 @@ std::int64_t user_id(const model::Model& m, model::ThKind k, std::int32_t i) {
 
 }  // namespace
 
+void remove_earlier_outputs(const std::string& out_dir, const std::string& root) {
+  for (const char* suffix : {"_summary.json", "_summary.json.part", "_energy.csv", "_energy.csv.part",
+                             "_energy.png", "_energy.png.part.png", "_th.h5", "_th.h5.part"}) {
+    const std::filesystem::path p = std::filesystem::path(out_dir) / (root + suffix);
+    std::error_code ec;
+    std::filesystem::remove(p, ec);
+    if (ec) throw std::runtime_error("cannot remove " + p.string() + " of an earlier run: " + ec.message());
+  }
+}
+
 struct EngineOutputs::Impl {
   const model::Model& model;
   const model::RunControls& controls;
