@@ -52,7 +52,8 @@ class TimeHistoryWriter {
   // Appends a row at `time` to every group: values[g] holds objects.size() * variables.size() values of
   // group g (object-major: object 0's variables, then object 1's), or variables.size() for global.
   // Throws std::invalid_argument, storing nothing, when a value count is wrong or `time` is not finite
-  // or earlier than the last row's (equal times are kept). Flushes when the policy says so.
+  // or earlier than the last row's (equal times are kept). Flushes when the policy says so, and throws
+  // what flush throws, the row kept.
   void append(double time, const std::vector<std::span<const double>>& values);
   // Writes the rows held: the first flush creates the file (even with no rows), later ones extend its
   // datasets. Throws std::runtime_error naming the file; the rows stay held, and the next flush writes

@@ -9,6 +9,8 @@ Checks:
   * memory: the maximum resident set size (/usr/bin/time) of a 60,000-cycle run exceeds the 1,000-cycle
     run's by less than 6 MB (at most about 2 MiB of rows and 1 MiB of energy samples are held; rows held
     whole cost some 20 MB more: 40 doubles a row);
+  * the energy CSV of the 60,000-cycle run holds at most 16,384 samples and the last, times increasing from 0
+    to the run's end;
   * SIGKILL, three times at different moments: P_th.h5 opens with h5py, every group has the same number of
     rows, times never go back, every value is finite, no row read from the file during the run is lost
     (read before the kill: the file is closed between flushes, so it can be read while the engine runs), and
@@ -100,6 +102,21 @@ def main():
             rows = h["global"].shape[0]
         check(abs(rows - cycles) <= cycles // 100 + 2, "%d cycles wrote %d rows" % (cycles, rows))
     print("max RSS: %d kB for 1,000 cycles, %d kB for 60,000" % (rss[1000], rss[60000]))
+
+    # The energy chart's samples are thinned: the 60,000 cycles (a sample each) give at most 16,384 and the
+    # last, from t = 0 to the end. Run again with the chart (its CSV is written only then), apart from the
+    # memory measurement, which would count the plotting Python.
+    out = os.path.join(a.out, "cycles_60000")
+    r = subprocess.run([a.radx_engine, os.path.join(out, os.path.basename(src)), "--out", out],
+                       capture_output=True, text=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
+    check(r.returncode == 0, "the 60,000-cycle run with the chart failed: " + r.stderr[-2000:])
+    with h5py.File(os.path.join(out, base + "_th.h5"), "r") as h:
+        t_end = float(h["global"][-1, 0])
+    times = [float(l.split(",")[0]) for l in open(os.path.join(out, base + "_energy.csv")).read().splitlines()[1:]]
+    check(2000 < len(times) <= 16385 and times[0] == 0.0 and times[-1] == t_end and
+          all(times[i] < times[i + 1] for i in range(len(times) - 1)),
+          "the energy CSV has %d samples from %s to %s (the run ends at %r)"
+          % (len(times), times[:1], times[-1:], t_end))
     check(rss[60000] - rss[1000] < 6144, "60,000 cycles take %d kB more memory than 1,000" % (rss[60000] - rss[1000]))
 
     out = os.path.join(a.out, "killed")
