@@ -10,7 +10,8 @@ usage: /usr/bin/python3 check_run_outputs.py --radx RADX --decks DECKS_DIR --out
 2. decks/verification/jc_single_brick with /STOP Emax = 1e-9 % added: the run stops with an error at its first
    listing cycle after the start (the energy error exceeds 1e-9 %); it still writes its last state: the
    series' last state is at the summary's final time, and the states before it are the /ANIM/DT ones due
-   before the stop. That run has --no-plot: NAME_energy.csv is written and NAME_energy.png is not.
+   before the stop; the reason is on standard error too. That run has --no-plot: NAME_energy.csv is written
+   and NAME_energy.png is not.
 """
 import argparse
 import csv
@@ -75,6 +76,9 @@ def main():
     check(not os.path.exists(os.path.join(out, "JC_SINGLE_BRICK_energy.png")), "--no-plot drew the chart")
     s = read_summary(out, "JC_SINGLE_BRICK")
     check(s["status"] == "error" and "/STOP" in s["message"], "summary %s: %s" % (s["status"], s["message"]))
+    # The reason also on standard error, not only in the listing and on standard output.
+    check("radx-engine: error termination: " + s["message"] in r.stderr,
+          "the reason of the error termination is not on stderr: " + r.stderr[-2000:])
     series = listed_states(out, "JC_SINGLE_BRICK")
     times = [t for _, t in series]
     check(times[-1] == s["time"], "last state at %.17g, the run stopped at %.17g" % (times[-1], s["time"]))
