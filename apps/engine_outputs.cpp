@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "io/energy_plot.hpp"
@@ -332,7 +333,7 @@ void EngineOutputs::finish(const solver::RunResult& result, bool plot, std::ostr
   req.title = s.root + ": energy balance";
   req.time_unit = s.model.units.time_name;
   req.energy_unit = io::unit_label(s.model.units, 1, 2, -2);
-  req.samples = s.energy;
+  req.samples = std::move(s.energy);  // the last use: a copy would double the samples at the very end
   std::string warning;
   if (!plot) {
     // --no-plot skips only the chart (and its Python start-up); the CSV is the data and is always written.

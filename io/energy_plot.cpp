@@ -174,22 +174,6 @@ std::vector<std::string> plot_environment() {
 }  // namespace
 
 bool write_energy_csv(const EnergyPlotRequest& r, std::string& error) {
-  std::string text = header_field("time", r.time_unit);
-  for (const char* name : {"kinetic", "internal", "hourglass", "contact", "external_work", "total"}) {
-    text += ',';
-    text += header_field(name, r.energy_unit);
-  }
-  text += '\n';
-  for (const EnergySample& s : r.samples) {
-    bool first = true;
-    for (const double v : {s.time, s.kinetic, s.internal, s.hourglass, s.contact, s.external_work, s.total}) {
-      if (!first) text += ',';
-      first = false;
-      append_number(text, v);
-    }
-    text += '\n';
-  }
-
   // Through a temporary name: a reader never sees half a table, and the previous one stays until then.
   const std::string part = r.csv_path + ".part";
   std::FILE* f = std::fopen(part.c_str(), "wb");
@@ -197,7 +181,27 @@ bool write_energy_csv(const EnergyPlotRequest& r, std::string& error) {
     error = "cannot write " + r.csv_path + ": " + std::strerror(errno);
     return false;
   }
-  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  // Line by line: the table of a long run (16,384 samples, some 3 MB of text) is never held whole, so the
+  // end of a run costs no more memory than its middle.
+  std::string text = header_field("time", r.time_unit);
+  for (const char* name : {"kinetic", "internal", "hourglass", "contact", "external_work", "total"}) {
+    text += ',';
+    text += header_field(name, r.energy_unit);
+  }
+  text += '\n';
+  bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  for (std::size_t k = 0; written && k < r.samples.size(); ++k) {
+    const EnergySample& s = r.samples[k];
+    text.clear();
+    bool first = true;
+    for (const double v : {s.time, s.kinetic, s.internal, s.hourglass, s.contact, s.external_work, s.total}) {
+      if (!first) text += ',';
+      first = false;
+      append_number(text, v);
+    }
+    text += '\n';
+    written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  }
   const bool closed = std::fclose(f) == 0;
   std::error_code ec;
   if (!written || !closed) {
