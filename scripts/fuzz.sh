@@ -23,9 +23,11 @@ mkdir -p build-fuzz/corpus/starter build-fuzz/corpus/engine build-fuzz/artifacts
 while IFS= read -r -d '' deck; do
   name=$(echo "${deck#decks/}" | tr '/' '_')
   case "$deck" in
-    *_0001.rad) cp -n "$deck" "build-fuzz/corpus/engine/$name" ;;
-    *) cp -n "$deck" "build-fuzz/corpus/starter/$name" ;;
+    *_0001.rad) dest="build-fuzz/corpus/engine/$name" ;;
+    *) dest="build-fuzz/corpus/starter/$name" ;;
   esac
+  # Tested first: cp -n's exit status on an existing file differs between coreutils versions.
+  [ -e "$dest" ] || cp "$deck" "$dest"
 done < <(find decks -name '*.rad' -size -64k -print0)
 cp -n decks/one_file/*.rad build-fuzz/corpus/engine/ 2>/dev/null || true
 
