@@ -41,7 +41,7 @@ for reader in starter engine; do
     echo "radx fuzz: the $reader reader failed; its input is in build-fuzz/artifacts/, the log:" >&2
     tail -n 60 build-fuzz/fuzz_$reader.log >&2
   fi
-  grep -E '^#[0-9]+ *(DONE|INITED)|stat::number_of_executed_units|stat::peak_rss_mb' \
+  grep -E '^#[0-9]+[[:space:]]+(DONE|INITED)|stat::number_of_executed_units|stat::peak_rss_mb' \
     build-fuzz/fuzz_$reader.log || true
 done
 exit $status
