@@ -15,7 +15,9 @@
 #include "parser/build_run_controls.hpp"
 #include "parser/deck.hpp"
 #include "parser/diagnostics.hpp"
+#include "parser/plausibility.hpp"
 #include "solver/explicit_engine.hpp"
+#include "solver/model/stable_step.hpp"
 
 namespace radx::app {
 
@@ -81,6 +83,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
   Diagnostics model_diags;
   check_rigid_body_switches(deck, body_ids, controls, model_diags);
+  // The starter warns too, but only when it found this engine deck beside its own.
+  check_cycle_count(deck, controls, model, model::estimate_stable_step(model), model_diags);
   model_diags.sort();
   model_diags.print(err);
   std::error_code ec;
@@ -154,6 +158,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return l;
   };
   std::string stop_message;
+  io::EnergyErrorWarnings energy_warnings;
   solver::RunResult result;
   try {
     result = engine.run([&](const solver::CycleReport& r) {
@@ -169,6 +174,10 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
       }
       listing.progress(r.cycle, r.time, controls.t_stop, wall);
       if (!r.full) return true;
+      for (const auto& m : energy_warnings.check(r.energy.error_percent)) {
+        listing_file << "  WARNING (cycle " << r.cycle << "): " << m << '\n';
+        err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
+      }
       try {
         outputs->on_report(r);
       } catch (const std::exception& e) {

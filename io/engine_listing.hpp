@@ -27,6 +27,19 @@ namespace radx::io {
 // cycle 0; W_ext the external work so far. NaN inputs give NaN (shown, never hidden).
 double energy_error_percent(double e_total, double e_total0, double w_ext);
 
+// The energy error levels worth a warning during a run, 10 % and 50 % in absolute value, each said once:
+// a run that ends quietly with most of its energy made up or lost is worse than one that stops. The run
+// goes on (only /STOP Emax stops it).
+class EnergyErrorWarnings {
+ public:
+  static constexpr std::array<double, 2> kLevels = {10.0, 50.0};
+  // The warnings due at this error: one per level passed for the first time (none for NaN).
+  std::vector<std::string> check(double error_percent);
+
+ private:
+  std::array<bool, kLevels.size()> said_{};
+};
+
 // What controls the time step printed on a listing line.
 enum class StepSource : std::uint8_t { None, Brick, Shell, Shell3, Node, Interface, Imposed };
 // "BRICK", "SHELL", "SH3N", "NODE", "INTER", "DTIX" (/DTIX set the step), or "-" for None.

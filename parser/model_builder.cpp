@@ -157,6 +157,23 @@ void ModelBuilder::build_materials() {
                    "turns "
                    "exactly 0.5 into 0.499 silently; radx asks for the value you mean, e.g. 0.499)");
     }
+    if (mat.rho > 0 && mat.young > 0) {
+      // Values typed in other units than the deck's (a modulus in Pa in an mm-Mg-s deck) give wave
+      // speeds no material has, and with them steps or run times that are absurd; warn, as the run can
+      // still be meant (a scaled model).
+      const double c = std::sqrt(mat.young / mat.rho);
+      const double c_si = c * deck_.work_units.length / deck_.work_units.time;
+      constexpr double kLight = 299792458.0;
+      if (c_si > kLight || c_si < 1.0) {
+        warning_at(
+            r, "E", Diag::ImplausibleMaterial,
+            "the wave speed sqrt(E/RHO_I) = " + num(c_si) + " m/s (E = " + num(mat.young) +
+                ", RHO_I = " + num(mat.rho) + " in the deck's units) is " +
+                (c_si > kLight ? "above the speed of light (3.0e8 m/s)" : "below 1 m/s") +
+                "; solids have 20 (soft foams, rubbers) to 18000 m/s (diamond), metals about 5000 m/s: "
+                "check the units of E and RHO_I");
+      }
+    }
     mat.shear = mat.young / (2.0 * (1.0 + mat.poisson));
     mat.bulk = mat.poisson < 0.5 ? mat.young / (3.0 * (1.0 - 2.0 * mat.poisson)) : 0.0;
     if (law2) {
@@ -460,6 +477,17 @@ void ModelBuilder::build_elements() {
                     (v < 0 ? "its nodes n1-n4 and n5-n8 are numbered so that the element is inverted; "
                              "n1-n4 must turn counter-clockwise seen from the n5-n8 face"
                            : "its nodes are flat or collapsed"));
+          } else if (const auto corner = model::most_negative_brick_corner(x); corner.ratio < -1e-6) {
+            // The one-point volume averages the corners, so a tangled brick passes it and then runs
+            // with a stiffness and a step that belong to no real shape.
+            diags_.warning(
+                Diag::TangledBrick, at(t.pos[e], 1), ab,
+                "brick " + std::to_string(eid) + " is tangled: its corner at node " +
+                    std::to_string(m_.nodes.id[b.conn[base + static_cast<std::size_t>(corner.node)]]) +
+                    " (n" + std::to_string(corner.node + 1) +
+                    ") is turned inside out, so its faces intersect, though its volume (" + num(v) +
+                    ") is positive; in a valid brick every corner's three edges turn the same "
+                    "way as n1-n2, n1-n4, n1-n5");
           }
         } else {
           double area = 0;
