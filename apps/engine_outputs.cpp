@@ -22,6 +22,9 @@ namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 constexpr double kNoInterval = 1e29;  // /TFILE absent: dt_his = 1e30
+// Energy samples kept for the chart: beyond this, every other one is dropped, so memory stays bounded
+// however long the run (a chart cannot show more points than this anyway).
+constexpr std::size_t kMaxEnergySamples = 16384;
 
 // One extra array of the states: a cell or a node field and its buffer.
 struct StateArray {
@@ -85,6 +88,16 @@ std::int64_t user_id(const model::Model& m, model::ThKind k, std::int32_t i) {
 
 }  // namespace
 
+void remove_earlier_outputs(const std::string& out_dir, const std::string& root) {
+  for (const char* suffix : {"_summary.json", "_summary.json.part", "_energy.csv", "_energy.csv.part",
+                             "_energy.png", "_energy.png.part.png", "_th.h5", "_th.h5.part"}) {
+    const std::filesystem::path p = std::filesystem::path(out_dir) / (root + suffix);
+    std::error_code ec;
+    std::filesystem::remove(p, ec);
+    if (ec) throw std::runtime_error("cannot remove " + p.string() + " of an earlier run: " + ec.message());
+  }
+}
+
 struct EngineOutputs::Impl {
   const model::Model& model;
   const model::RunControls& controls;
@@ -106,9 +119,10 @@ struct EngineOutputs::Impl {
   std::vector<std::vector<double>> th_values;  // [1 + groups]
   double next_th = kNever;
   double last_th_time = -kNever;
-  std::chrono::steady_clock::time_point last_flush;
 
-  std::vector<io::EnergySample> energy;
+  std::vector<io::EnergySample> energy;  // every energy_stride-th sample seen
+  std::size_t energy_seen = 0, energy_stride = 1;
+  io::EnergySample last_energy{};
   double seconds = 0;
 
   Impl(const model::Model& m, const model::RunControls& c, const solver::ExplicitEngine& e, std::string dir,
@@ -194,7 +208,6 @@ struct EngineOutputs::Impl {
     std::filesystem::remove(path + ".part", ec);  // a stray file of a killed run
     th = std::make_unique<io::TimeHistoryWriter>(path, std::move(layouts), model.units.time_name);
     next_th = 0.0;
-    last_flush = std::chrono::steady_clock::now();
   }
 
   void write_state(double time, double dt1) {
@@ -225,13 +238,10 @@ struct EngineOutputs::Impl {
     solver::global_th_values(engine, r, th_values[0]);
     for (std::size_t g = 0; g < samplers.size(); ++g) samplers[g].sample(engine, r, th_values[g + 1]);
     std::vector<std::span<const double>> spans(th_values.begin(), th_values.end());
+    // The writer flushes by itself every few thousand rows or every second of wall time.
     th->append(r.time, spans);
     last_th_time = r.time;
-    // The file is rewritten whole at a flush: at most every few seconds, so its cost stays small.
-    if (force_flush || t0 - last_flush > std::chrono::seconds(5)) {
-      th->flush();
-      last_flush = std::chrono::steady_clock::now();
-    }
+    if (force_flush) th->flush();
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 };
@@ -254,10 +264,25 @@ void EngineOutputs::on_report(const solver::CycleReport& r) {
   auto& s = *impl_;
   const auto& c = s.controls;
   const auto& e = r.energy;
-  s.energy.push_back(
-      io::EnergySample{r.time, e.kinetic_t + e.kinetic_r, e.internal, e.hourglass,
+  s.last_energy =
+      io::EnergySample{r.time,
+                       e.kinetic_t + e.kinetic_r,
+                       e.internal,
+                       e.hourglass,
                        e.contact_elastic + e.contact_damping + e.contact_friction + e.contact_lagrange,
-                       e.external_work, e.total()});
+                       e.external_work,
+                       e.total()};
+  if (s.energy_seen++ % s.energy_stride == 0) {
+    if (s.energy.size() == kMaxEnergySamples) {
+      // Samples kept are seen numbers 0, stride, 2 stride...: keeping the even ones keeps multiples of
+      // twice the stride.
+      std::size_t kept = 0;
+      for (std::size_t i = 0; i < s.energy.size(); i += 2) s.energy[kept++] = s.energy[i];
+      s.energy.resize(kept);
+      s.energy_stride *= 2;
+    }
+    if ((s.energy_seen - 1) % s.energy_stride == 0) s.energy.push_back(s.last_energy);
+  }
   if (r.time >= s.next_state) {
     s.write_state(r.time, r.dt1);
     // Next /ANIM/DT time strictly after this one (several intervals may pass in one cycle).
@@ -298,6 +323,8 @@ void EngineOutputs::finish(const solver::RunResult& result, bool plot, std::ostr
     s.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   s.seconds = in_run;
+  if (s.energy_seen > 0 && (s.energy.empty() || s.energy.back().time != s.last_energy.time))
+    s.energy.push_back(s.last_energy);  // the run's last sample, even when thinning skipped it
   if (!plot || s.energy.empty()) return;
   io::EnergyPlotRequest req;
   req.csv_path = (std::filesystem::path(s.out_dir) / (s.root + "_energy.csv")).string();

@@ -19,6 +19,12 @@
 
 namespace radx::app {
 
+// Removes what an earlier run of prefix `root` left in `out_dir` besides its states and listing (which
+// EngineOutputs and the listing replace): the summary, the energy CSV and chart, the time history and their
+// stray .part files. A run calls it before it writes anything, so no file beside its outputs is older than
+// the run. Throws std::runtime_error naming a file it cannot remove.
+void remove_earlier_outputs(const std::string& out_dir, const std::string& root);
+
 class EngineOutputs {
  public:
   // Removes what an earlier run of the same name left (states, indexes, stray .part files) and writes

@@ -2,12 +2,18 @@
 
 #include "apps/engine_outputs.hpp"
 
+#include <signal.h>
+
 #include <algorithm>
+#include <array>
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <ostream>
+#include <string>
 
 #include "io/engine_listing.hpp"
 #include "io/model_file.hpp"
@@ -36,6 +42,54 @@ io::StepSource source_of(solver::StepControl::Kind k) {
     case solver::StepControl::Kind::None: break;
   }
   return io::StepSource::None;
+}
+
+// SIGTERM (what batch schedulers send at the wall-time limit) and SIGINT (Ctrl-C) ask the run to stop after
+// the cycle under way, with its last state, summary and termination lines. A handler may only set a lock-free
+// atomic, and it is given nothing but the signal number, so this flag is a global: the one the project
+// allows, because the handler cannot reach anything else.
+std::atomic<int> g_stop_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "a signal handler may only touch lock-free atomics");
+
+void on_stop_signal(int signo) {
+  g_stop_signal.store(signo, std::memory_order_relaxed);
+}
+
+// The handlers for the time of one run; the previous ones come back after it. SA_RESETHAND: a second signal
+// meets the default action and ends the engine at once, for a user who will not wait for the last state.
+// SA_RESTART: a write to the output files carries on through the signal. A signal the engine was started
+// with ignored (nohup, a background job) stays ignored.
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop_signal.store(0);
+    struct sigaction sa {};
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESETHAND | SA_RESTART;
+    for (std::size_t k = 0; k < kSignals.size(); ++k) {
+      sigaction(kSignals[k], &sa, &previous_[k]);
+      if (previous_[k].sa_handler == SIG_IGN) sigaction(kSignals[k], &previous_[k], nullptr);
+    }
+  }
+  ~StopSignals() {
+    for (std::size_t k = 0; k < kSignals.size(); ++k) sigaction(kSignals[k], &previous_[k], nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+  // The signal received since the run began, 0 when none.
+  [[nodiscard]] static int received() { return g_stop_signal.load(std::memory_order_relaxed); }
+
+ private:
+  static constexpr std::array<int, 2> kSignals{SIGTERM, SIGINT};
+  std::array<struct sigaction, 2> previous_{};
+};
+
+std::string signal_name(int signo) {
+  if (signo == SIGTERM) return "SIGTERM";
+  if (signo == SIGINT) return "SIGINT";
+  return "signal " + std::to_string(signo);
 }
 
 io::EnergyBalance to_io(const solver::EnergyBalance& e) {
@@ -87,21 +141,19 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   check_cycle_count(deck, controls, model, model::estimate_stable_step(model), model_diags);
   model_diags.sort();
   model_diags.print(err);
-  std::error_code ec;
-  fs::create_directories(opt.out_dir, ec);
-  const std::string listing_path = (fs::path(opt.out_dir) / (root + "_0001.out")).string();
-  std::ofstream listing_file(listing_path, std::ios::trunc);
-  if (!listing_file) {
-    err << "radx-engine: cannot write " << listing_path << '\n';
-    return 1;
-  }
+  // Installed before the engine is set up: a signal that comes during it stops the run after its first cycle.
+  const StopSignals stop_signals;
 
   // Kinematic conditions check what the starter could not (a moving wall without mass, a rigid body
   // without inertia) and throw with a message; report it as an input error.
   std::unique_ptr<solver::ExplicitEngine> engine_ptr;
   std::unique_ptr<EngineOutputs> outputs;
   solver::EngineOptions engine_options(opt.threads, std::max(1, controls.print_every));
-  engine_options.output_due = [&outputs](double t) { return outputs && outputs->due(t); };
+  // A stop signal makes the next cycle a full report (energies summed), so the run ends on a cycle whose
+  // state, time-history row and summary agree.
+  engine_options.output_due = [&outputs](double t) {
+    return StopSignals::received() != 0 || (outputs && outputs->due(t));
+  };
   try {
     engine_ptr = std::make_unique<solver::ExplicitEngine>(model, controls, engine_options);
   } catch (const std::exception& e) {
@@ -109,12 +161,48 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return 1;
   }
   auto& engine = *engine_ptr;
+
+  // The run starts: nothing of an earlier run of this name may stay beside its outputs, where a script would
+  // take it for this run's. The summary goes first, and a "running" one replaces it once the states are gone,
+  // so a run killed outright leaves either no summary or one that says it did not finish.
+  const std::string summary_path = io::summary_json_path(opt.out_dir, root);
+  io::RunSummary s;
+  s.run_name = controls.run_name;
+  s.run_number = controls.run_number;
+  s.nodes = model.nodes.size();
+  s.elements = engine.element_count();
+  std::error_code ec;
+  fs::create_directories(opt.out_dir, ec);
+  try {
+    remove_earlier_outputs(opt.out_dir, root);
+  } catch (const std::exception& e) {
+    err << "radx-engine: error: " << e.what() << '\n';
+    return 1;
+  }
+  const std::string listing_path = (fs::path(opt.out_dir) / (root + "_0001.out")).string();
+  std::ofstream listing_file(listing_path, std::ios::trunc);
+  if (!listing_file) {
+    err << "radx-engine: error: cannot write " << listing_path << '\n';
+    return 1;
+  }
+  // An error before the first cycle still leaves a summary that says so.
+  auto early_error = [&](const std::string& message) {
+    err << "radx-engine: error: " << message << '\n';
+    listing_file << message << '\n';
+    s.status = io::RunStatus::Error;
+    s.message = message;
+    std::string ignored;
+    io::write_summary_json(summary_path, s, ignored);
+    return 1;
+  };
   try {
     outputs = std::make_unique<EngineOutputs>(model, controls, engine, opt.out_dir, root);
   } catch (const std::exception& e) {
-    err << "radx-engine: error: cannot write the results: " << e.what() << '\n';
-    return 1;
+    return early_error(std::string("cannot write the results: ") + e.what());
   }
+  s.status = io::RunStatus::Running;
+  s.message = "the run has started; this summary is replaced when it ends";
+  if (!io::write_summary_json(summary_path, s, error)) return early_error(error);
   io::EngineListing listing(io::ListingSinks{&listing_file, &out, controls.print_stdout,
                                              io::stdout_is_terminal(), controls.print_header_every});
   io::EngineListingHeader h;
@@ -159,6 +247,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   };
   std::string stop_message;
   io::EnergyErrorWarnings energy_warnings;
+  int stopped_by = 0;
   solver::RunResult result;
   try {
     result = engine.run([&](const solver::CycleReport& r) {
@@ -184,7 +273,11 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
         stop_message = std::string("cannot write the results: ") + e.what();
         return false;
       }
-      if (r.cycle % std::max(1, controls.print_every) != 0 && r.time < controls.t_stop) return true;
+      // Read once per cycle, on full reports only: a signal that lands after a partial report stops the next
+      // cycle, which output_due makes full. On the last cycle the run ends normally anyway.
+      const int signo = r.time < controls.t_stop ? StopSignals::received() : 0;
+      if (signo == 0 && r.cycle % std::max(1, controls.print_every) != 0 && r.time < controls.t_stop)
+        return true;
       listing.line(to_line(r));
       const double err_pct = r.energy.error_percent;
       const bool err_hit = controls.stop_positive_error_only
@@ -199,10 +292,22 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
         stop_message = "/STOP: mass error beyond " + std::to_string(controls.stop_mass_error);
         return false;
       }
+      if (signo != 0) {
+        stopped_by = signo;
+        char at[96];
+        std::snprintf(at, sizeof at, " at cycle %lld, time %.5E", static_cast<long long>(r.cycle), r.time);
+        stop_message = "interrupted by " + signal_name(signo) + at;
+        return false;
+      }
       return true;
     });
   } catch (const std::exception& e) {
     err << opt.engine_deck << ": error: " << e.what() << '\n';
+    s.status = io::RunStatus::Error;
+    s.message = e.what();
+    listing.summary(s);
+    std::string ignored;
+    io::write_summary_json(summary_path, s, ignored);
     return 1;
   }
 
@@ -211,22 +316,21 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     outputs->finish(result, opt.plot, err);
   } catch (const std::exception& e) {
     err << "radx-engine: error: cannot write the results: " << e.what() << '\n';
-    if (stop_message.empty()) stop_message = std::string("cannot write the results: ") + e.what();
+    if (stop_message.empty() || stopped_by != 0)
+      stop_message = std::string("cannot write the results: ") + e.what();
+    stopped_by = 0;  // an error termination now, not an interruption
     result.status = solver::RunStatus::Error;
   }
 
-  io::RunSummary s;
-  s.status = result.status == solver::RunStatus::Normal ? io::RunStatus::Normal : io::RunStatus::Error;
+  s.status = result.status == solver::RunStatus::Normal ? io::RunStatus::Normal
+             : stopped_by != 0                          ? io::RunStatus::Interrupted
+                                                        : io::RunStatus::Error;
   s.message = !stop_message.empty()    ? stop_message
               : result.message.empty() ? std::string("end time reached")
                                        : result.message;
-  s.run_name = controls.run_name;
-  s.run_number = controls.run_number;
   s.cycles = result.cycles;
   s.time = result.time;
   s.dt = result.dt;
-  s.nodes = model.nodes.size();
-  s.elements = engine.element_count();
   s.threads = result.threads;
   s.wall_seconds = result.wall_seconds;
   s.contact_seconds = result.contact_seconds;
@@ -269,10 +373,15 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     s.time_history = (fs::path(opt.out_dir) / (root + "_th.h5")).string();
   s.output_seconds = outputs->seconds_writing();
   listing.summary(s);
-  if (!io::write_summary_json(io::summary_json_path(opt.out_dir, root), s, error)) {
+  // The reason also on standard error, where a batch system or a script looks for it.
+  if (s.status == io::RunStatus::Error) err << "radx-engine: error termination: " << s.message << '\n';
+  if (!io::write_summary_json(summary_path, s, error)) {
     err << "radx-engine: " << error << '\n';
     return 1;
   }
+  if (s.status == io::RunStatus::Interrupted)
+    err << "radx-engine: " << s.message << "; the last state, the summary and the listing are written\n";
+  if (s.status == io::RunStatus::Interrupted) return 128 + stopped_by;  // as a shell reports the signal
   return s.status == io::RunStatus::Normal ? 0 : 1;
 }
 

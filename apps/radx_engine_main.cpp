@@ -25,7 +25,12 @@ void usage(std::ostream& os) {
         "  --no-plot      do not draw NAME_energy.png (the CSV is still written)\n"
         "  --help, --version\n"
         "\n"
-        "Exit code: 0 normal termination, 1 input error or error termination, 2 usage errors.\n";
+        "SIGTERM or SIGINT stops the run after the cycle under way, with a last state, the summary (status\n"
+        "\"interrupted\") and the listing's termination lines; a second one ends it at once.\n"
+        "\n"
+        "Exit code: 0 normal termination, 1 input error or error termination, 2 usage errors, 128 + the "
+        "signal\n"
+        "(143 SIGTERM, 130 SIGINT) when a signal stopped the run.\n";
 }
 
 }  // namespace

@@ -59,7 +59,8 @@ void usage(std::ostream& os) {
         "\n"
         "  --help, --version\n"
         "\n"
-        "Exit code: 0 success, 1 input errors, 2 usage errors.\n";
+        "Exit code: 0 success, 1 input errors or an error termination, 2 usage errors, 143 or 130 when\n"
+        "SIGTERM or SIGINT stopped the engine (after a cycle, with a last state and the summary).\n";
 }
 
 int check(const std::vector<std::string>& args) {

@@ -399,6 +399,11 @@ RegressResult evaluate_deck(const RegressDeck& deck, const ChildOutcome& child, 
     details.push_back("the " + stage + " was ended by " + signal_text(child.signal));
   if (files.model_written && files.summary && files.summary->status == io::RunStatus::Error)
     details.push_back("error termination: " + files.summary->message);
+  // Neither is a finished run, whatever the exit code says: the summary's figures are not the deck's.
+  if (files.model_written && files.summary && files.summary->status == io::RunStatus::Interrupted)
+    details.push_back("the engine was " + files.summary->message);
+  if (files.model_written && files.summary && files.summary->status == io::RunStatus::Running)
+    details.push_back("the engine did not finish (its summary still says \"running\")");
   if (details.empty() && failed && r.refusal.message.empty())
     details.push_back("the " + stage + " failed (exit code " + std::to_string(child.exit_code) +
                       ") without an error line; see its run.log");

@@ -99,6 +99,16 @@ std::vector<std::string> EnergyErrorWarnings::check(double error_percent) {
   return due;
 }
 
+std::string_view termination_label(RunStatus s) {
+  switch (s) {
+    case RunStatus::Normal: return "NORMAL TERMINATION";
+    case RunStatus::Error: return "ERROR TERMINATION";
+    case RunStatus::Interrupted: return "INTERRUPTED TERMINATION";
+    case RunStatus::Running: return "RUNNING";
+  }
+  return "";
+}
+
 std::string_view step_source_label(StepSource s) {
   switch (s) {
     case StepSource::None: return "-";
@@ -230,7 +240,7 @@ void write_engine_header(std::ostream& os, const EngineListingHeader& h) {
 
 void write_run_summary(std::ostream& os, const RunSummary& s) {
   const EnergyBalance& e = s.energy;
-  heading(os, s.status == RunStatus::Normal ? "NORMAL TERMINATION" : "ERROR TERMINATION");
+  heading(os, termination_label(s.status).data());
   if (!s.message.empty()) os << "  " << s.message << '\n';
 
   heading(os, "ENERGY BALANCE");
@@ -325,7 +335,7 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
     row(os, "writing time", format_duration(s.output_seconds) + buf);
   }
   os << rule;
-  os << "  " << (s.status == RunStatus::Normal ? "NORMAL TERMINATION" : "ERROR TERMINATION") << '\n';
+  os << "  " << termination_label(s.status) << '\n';
 }
 
 std::string format_duration(double seconds) {

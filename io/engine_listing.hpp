@@ -104,12 +104,17 @@ struct InterfaceSummary {
   std::int64_t removed_nodes = 0;         // deactivated (surface reached), Idel or /DT/INTER/DEL
 };
 
-enum class RunStatus : std::uint8_t { Normal, Error };
+// Interrupted: SIGTERM or SIGINT stopped the run after a cycle, its last state written. Running: the summary
+// a run writes when it starts, replaced at its end (a killed run leaves it behind).
+enum class RunStatus : std::uint8_t { Normal, Error, Interrupted, Running };
+// "NORMAL TERMINATION", "ERROR TERMINATION", "INTERRUPTED TERMINATION", "RUNNING".
+std::string_view termination_label(RunStatus s);
 
 // What the engine knows at the end of a run.
 struct RunSummary {
   RunStatus status = RunStatus::Normal;
-  std::string message;  // why the run ended ("end time reached", "/STOP: energy error ...")
+  std::string message;  // why the run ended ("end time reached", "/STOP: energy error ...", "interrupted by
+                        // SIGTERM ...")
   std::string run_name;
   int run_number = 1;
   std::int64_t cycles = 0;

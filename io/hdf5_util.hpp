@@ -180,6 +180,15 @@ inline Handle open_file_read_only(const std::string& path) {
   return Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open file " + path);
 }
 
+// Without HDF5's file lock: a reader holding the file open (h5py, `radx th` during a run) would make the
+// writer's open fail, and with it the run. Readers of a file being extended see the rows of a flush.
+inline Handle open_file_read_write(const std::string& path) {
+  const Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a file access list");
+  check(H5Pset_fclose_degree(fapl, H5F_CLOSE_SEMI), "cannot set the file close degree");
+  check(H5Pset_file_locking(fapl, false, true), "cannot set the file locking");
+  return Handle(H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl), H5Fclose, "cannot open file " + path);
+}
+
 // Flushes a closed file's data to disk. Called before renaming `name.part` to `name`, so a system crash
 // cannot leave a renamed but empty file.
 inline void sync_file(const std::string& path) {
@@ -489,6 +498,23 @@ Handle write_extendible_dataset(hid_t loc, const std::string& name, std::span<co
             what);
   if (!v.empty()) check(H5Dwrite(ds, Hdf5Type<T>::mem(), H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), what);
   return ds;
+}
+
+// Sets the first dimension of the extendible 2-D dataset `loc/name` to `at` + v.size() / cols rows and
+// writes v's rows from row `at` on. Rows beyond `at` already there are overwritten.
+template <class T>
+void append_rows(hid_t loc, const std::string& name, std::span<const T> v, hsize_t cols, hsize_t at) {
+  const std::string what = "cannot append to dataset " + path_of(loc, name);
+  const Handle ds(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose, what);
+  const std::array<hsize_t, 2> count{cols > 0 ? v.size() / cols : 0, cols};
+  const std::array<hsize_t, 2> dims{at + count[0], cols};
+  check(H5Dset_extent(ds, dims.data()), what);
+  if (count[0] == 0 || cols == 0) return;
+  const Handle file_space(H5Dget_space(ds), H5Sclose, what);
+  const std::array<hsize_t, 2> start{at, 0};
+  check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr), what);
+  const Handle mem_space(H5Screate_simple(2, count.data(), nullptr), H5Sclose, what);
+  check(H5Dwrite(ds, Hdf5Type<T>::mem(), mem_space, file_space, H5P_DEFAULT, v.data()), what);
 }
 
 }  // namespace radx::io::h5

@@ -1,11 +1,19 @@
 // Animation states for ParaView (results-format.md sections 1 to 5): P.mesh.hdf once, then per state
 // P_%06d.hdf (topology and time-invariant arrays as external links into the mesh file) and the two
-// indexes P.hdf.series and P.xmf, rewritten whole after every state.
+// indexes P.hdf.series and P.xmf, extended after every state.
 //
 // Crash safety, in the order of the spec's section 5: a state is written to `name.part`, closed, flushed
-// to disk and renamed; then each index is written to `index.tmp`, flushed and renamed over the index. So at
-// any moment every index lists only complete state files, and no HDF5 file is open between two calls
-// (a killed process cannot leave a file that HDF5 refuses to open, and ParaView can read a running job).
+// to disk and renamed; then each index gets the state's entry. So at any moment every index lists only
+// complete state files, and no HDF5 file is open between two calls (a killed process cannot leave a file
+// that HDF5 refuses to open, and ParaView can read a running job).
+//
+// Why the indexes are extended in place rather than rewritten: rewriting them whole costs a time growing
+// with the states already written, so a long run's states would cost more and more. Each index is a fixed
+// head, one entry per state and a fixed tail (the closing brackets or tags); the first state writes the
+// whole index to `index.tmp`, flushed and renamed over the index, and each later state writes its entry
+// and the tail again over the old tail, in one write, then flushes the file. The index is valid before and
+// after that write; a reader that opens it during the write, or a kill inside the write, can see it cut
+// (a later state, or the next run, writes it whole again).
 //
 // Speed: the state's big arrays are written straight from the caller's spans, contiguous, without fill
 // value and without type conversion, one H5Dwrite per dataset (no chunking or compression: deflate would
@@ -21,9 +29,11 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <system_error>
 #include <utility>
 
@@ -139,6 +149,26 @@ void replace_indexes(const std::array<std::pair<std::string, std::string>, 2>& p
   h5::sync_folder_of(path_and_text[0].first);
 }
 
+// Writes `text` at byte `offset` of the existing file `path` in one call and flushes the file to disk.
+void write_at_synced(const std::string& path, std::uint64_t offset, const std::string& text) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) throw h5::Failure("cannot open " + path + ": " + std::generic_category().message(errno));
+  std::size_t done = 0;
+  bool ok = true;
+  while (ok && done < text.size()) {
+    const ssize_t n = ::pwrite(fd, text.data() + done, text.size() - done, static_cast<off_t>(offset + done));
+    if (n < 0 && errno == EINTR) continue;
+    ok = n > 0;
+    if (ok) done += static_cast<std::size_t>(n);
+  }
+  const int error = ok ? 0 : errno;
+  ok = ok && ::fdatasync(fd) == 0;
+  ok = (::close(fd) == 0) && ok;
+  if (!ok)
+    throw h5::Failure("cannot write " + path + ": " +
+                      std::generic_category().message(error != 0 ? error : errno));
+}
+
 // The XDMF AttributeType of an array of k components. Not Tensor6 for a 6-component array: ParaView
 // 5.11's XDMF 2 reader expands it to 9 components in another order (XX XY XZ YY YZ ZZ), which would
 // scramble stress (XX YY ZZ XY YZ XZ); "Matrix" keeps the k stored components in both XDMF readers.
@@ -169,6 +199,8 @@ struct ResultsWriter::Impl {
   VtkhdfMeshSizes mesh;
   std::vector<IndexedArray> indexed;                   // every array of a state, in the order of the indexes
   std::vector<std::pair<std::string, double>> states;  // file name, time
+  // Where the tail of the .xmf and of the series starts; empty when the indexes must be written whole.
+  std::vector<std::uint64_t> index_end;
   double seconds = 0;
 
   [[nodiscard]] std::string path(const std::string& name) const { return (fs::path(dir) / name).string(); }
@@ -177,8 +209,12 @@ struct ResultsWriter::Impl {
   void remove_earlier_run() const;
   void write_mesh(const model::Model& model);
   void write_state_file(const std::string& part, const ResultState& state, int index) const;
+  [[nodiscard]] std::string series_entry(std::size_t i) const;
   [[nodiscard]] std::string series_text() const;
+  [[nodiscard]] std::string xmf_head() const;
+  [[nodiscard]] std::string xmf_entry(std::size_t i) const;
   [[nodiscard]] std::string xmf_text() const;
+  void index_last_state();
 };
 
 // Removes what an earlier run of the same prefix left in the folder, so the new indexes never sit next to
@@ -256,19 +292,34 @@ void ResultsWriter::Impl::write_state_file(const std::string& part, const Result
   h5::sync_file(part);
 }
 
+constexpr const char* kSeriesHead = "{\n  \"file-series-version\": \"1.0\",\n  \"files\": [\n";
+constexpr const char* kSeriesTail = "\n  ]\n}\n";
+constexpr const char* kXmfTail = "    </Grid>\n  </Domain>\n</Xdmf>\n";
+
+// Entry `i` of the series: the entries are separated by ",\n", the tail starts the line after the last.
+std::string ResultsWriter::Impl::series_entry(std::size_t i) const {
+  return std::string(i > 0 ? ",\n" : "") + "    { \"name\": \"" + json_escape(states[i].first) +
+         "\", \"time\": " + exact_number(states[i].second) + " }";
+}
+
 std::string ResultsWriter::Impl::series_text() const {
-  std::string s = "{\n  \"file-series-version\": \"1.0\",\n  \"files\": [\n";
-  for (std::size_t i = 0; i < states.size(); ++i) {
-    s += "    { \"name\": \"" + json_escape(states[i].first) +
-         "\", \"time\": " + exact_number(states[i].second) + " }" + (i + 1 < states.size() ? ",\n" : "\n");
-  }
-  s += "  ]\n}\n";
-  return s;
+  std::string s = kSeriesHead;
+  for (std::size_t i = 0; i < states.size(); ++i) s += series_entry(i);
+  return s + kSeriesTail;
 }
 
 // XDMF 3.0 temporal collection. Every DataItem names a whole dataset (no HyperSlab: ParaView 5.11's Xdmf3
 // reader returns empty data for those); the topology and time-invariant arrays come from the mesh file.
-std::string ResultsWriter::Impl::xmf_text() const {
+std::string ResultsWriter::Impl::xmf_head() const {
+  return "<?xml version=\"1.0\" ?>\n"
+         "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
+         "  <Domain>\n"
+         "    <Grid Name=\"" +
+         xml_escape(prefix) + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+}
+
+std::string ResultsWriter::Impl::xmf_entry(std::size_t i) const {
+  const auto& [name, time] = states[i];
   const std::string np = std::to_string(mesh.points);
   const std::string nc = std::to_string(mesh.cells);
   const std::string mesh_file = xml_escape(mesh_name());
@@ -277,37 +328,59 @@ std::string ResultsWriter::Impl::xmf_text() const {
     return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + number_type + "\" Precision=\"" +
            std::to_string(precision) + "\" Format=\"HDF\">" + file + ":" + object + "</DataItem>";
   };
+  const std::string state_file = xml_escape(name);
   std::string s =
-      "<?xml version=\"1.0\" ?>\n"
-      "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
-      "  <Domain>\n"
-      "    <Grid Name=\"" +
-      xml_escape(prefix) + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (const auto& [name, time] : states) {
-    const std::string state_file = xml_escape(name);
-    s += "      <Grid Name=\"" + xml_escape(name.substr(0, name.size() - 4)) + "\" GridType=\"Uniform\">\n";
-    s += "        <Time Value=\"" + exact_number(time) + "\"/>\n";
-    s += "        <Topology TopologyType=\"Mixed\" NumberOfElements=\"" + nc + "\">\n          " +
-         data_item(std::to_string(mesh.mixed_topology), "Int", 8, mesh_file, "/XDMF/MixedTopology") +
-         "\n        </Topology>\n";
-    s += "        <Geometry GeometryType=\"XYZ\">\n          " +
-         data_item(np + " 3", "Float", 8, state_file, "/VTKHDF/Points") + "\n        </Geometry>\n";
-    for (const IndexedArray& a : indexed) {
-      const std::string& n = a.on_points ? np : nc;
-      const std::string dims = a.components > 1 ? n + " " + std::to_string(a.components) : n;
-      const std::string object =
-          std::string("/VTKHDF/") + (a.on_points ? "PointData/" : "CellData/") + a.name;
-      s += "        <Attribute Name=\"" + xml_escape(a.name) + "\" AttributeType=\"" +
-           xdmf_attribute_type(a.components) + "\" Center=\"" + (a.on_points ? "Node" : "Cell") +
-           "\">\n          " +
-           data_item(dims, a.number_type, a.precision, a.in_mesh ? mesh_file : state_file,
-                     xml_escape(object)) +
-           "\n        </Attribute>\n";
-    }
-    s += "      </Grid>\n";
+      "      <Grid Name=\"" + xml_escape(name.substr(0, name.size() - 4)) + "\" GridType=\"Uniform\">\n";
+  s += "        <Time Value=\"" + exact_number(time) + "\"/>\n";
+  s += "        <Topology TopologyType=\"Mixed\" NumberOfElements=\"" + nc + "\">\n          " +
+       data_item(std::to_string(mesh.mixed_topology), "Int", 8, mesh_file, "/XDMF/MixedTopology") +
+       "\n        </Topology>\n";
+  s += "        <Geometry GeometryType=\"XYZ\">\n          " +
+       data_item(np + " 3", "Float", 8, state_file, "/VTKHDF/Points") + "\n        </Geometry>\n";
+  for (const IndexedArray& a : indexed) {
+    const std::string& n = a.on_points ? np : nc;
+    const std::string dims = a.components > 1 ? n + " " + std::to_string(a.components) : n;
+    const std::string object = std::string("/VTKHDF/") + (a.on_points ? "PointData/" : "CellData/") + a.name;
+    s += "        <Attribute Name=\"" + xml_escape(a.name) + "\" AttributeType=\"" +
+         xdmf_attribute_type(a.components) + "\" Center=\"" + (a.on_points ? "Node" : "Cell") +
+         "\">\n          " +
+         data_item(dims, a.number_type, a.precision, a.in_mesh ? mesh_file : state_file, xml_escape(object)) +
+         "\n        </Attribute>\n";
   }
-  s += "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  s += "      </Grid>\n";
   return s;
+}
+
+std::string ResultsWriter::Impl::xmf_text() const {
+  std::string s = xmf_head();
+  for (std::size_t i = 0; i < states.size(); ++i) s += xmf_entry(i);
+  return s + kXmfTail;
+}
+
+// Adds the last state to both indexes (the .xmf first: the series is what users and a watcher open, so
+// when it lists a state the .xmf does too). After a failure both are written whole at the next state.
+void ResultsWriter::Impl::index_last_state() {
+  const std::size_t last = states.size() - 1;
+  if (index_end.empty()) {
+    const std::string xmf = xmf_text();
+    const std::string series = series_text();
+    replace_indexes({{{path(prefix + ".xmf"), xmf}, {path(prefix + ".hdf.series"), series}}});
+    index_end = {xmf.size() - std::char_traits<char>::length(kXmfTail),
+                 series.size() - std::char_traits<char>::length(kSeriesTail)};
+    return;
+  }
+  try {
+    const std::array<std::pair<std::string, std::string>, 2> add{
+        {{prefix + ".xmf", xmf_entry(last)}, {prefix + ".hdf.series", series_entry(last)}}};
+    const std::array<const char*, 2> tails{kXmfTail, kSeriesTail};
+    for (std::size_t k = 0; k < 2; ++k) {
+      write_at_synced(path(add[k].first), index_end[k], add[k].second + tails[k]);
+      index_end[k] += add[k].second.size();
+    }
+  } catch (...) {
+    index_end.clear();
+    throw;
+  }
 }
 
 ResultsWriter::ResultsWriter(const model::Model& model, std::string dir, std::string prefix,
@@ -399,8 +472,7 @@ bool ResultsWriter::write_state(const ResultState& state) {
   // The state file is complete and kept even if an index cannot be written: the next state's indexes
   // list it.
   try {
-    // The series last: it is what users (and a watcher) open, so when it lists a state the .xmf does too.
-    replace_indexes({{{xmf_path(), w.xmf_text()}, {series_path(), w.series_text()}}});
+    w.index_last_state();
   } catch (const std::exception& e) {
     throw std::runtime_error(std::string("cannot write a result index: ") + e.what());
   }

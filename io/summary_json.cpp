@@ -137,11 +137,21 @@ std::string json_number(double v) {
   return std::string(buf, r.ptr);
 }
 
+std::string_view status_name(RunStatus s) {
+  switch (s) {
+    case RunStatus::Normal: return "normal";
+    case RunStatus::Error: return "error";
+    case RunStatus::Interrupted: return "interrupted";
+    case RunStatus::Running: return "running";
+  }
+  return "";
+}
+
 std::string summary_json(const RunSummary& s) {
   const EnergyBalance& e = s.energy;
   Writer w;
   w.open('{');
-  w.field("status", json_string(s.status == RunStatus::Normal ? "normal" : "error"));
+  w.field("status", json_string(status_name(s.status)));
   w.field("message", json_string(s.message));
   w.field("run_name", json_string(s.run_name));
   w.field_int("run_number", s.run_number);
@@ -477,10 +487,16 @@ bool read_summary_json(const std::string& path, RunSummary& s, std::string& erro
     for (const char* key : {"status", "cycles", "time", "energy"})
       if (!member(d, key)) throw std::runtime_error(std::string("no \"") + key + "\" key");
     const std::string status = string_member(d, "status");
-    if (status != "normal" && status != "error")
-      throw std::runtime_error("status \"" + status + "\" is neither \"normal\" nor \"error\"");
     RunSummary r;
-    r.status = status == "normal" ? RunStatus::Normal : RunStatus::Error;
+    bool known = false;
+    for (const auto k : {RunStatus::Normal, RunStatus::Error, RunStatus::Interrupted, RunStatus::Running})
+      if (status == status_name(k)) {
+        r.status = k;
+        known = true;
+      }
+    if (!known)
+      throw std::runtime_error("status \"" + status +
+                               "\" is none of \"normal\", \"error\", \"interrupted\", \"running\"");
     r.message = string_member(d, "message");
     r.run_name = string_member(d, "run_name");
     r.run_number = static_cast<int>(number_member(d, "run_number", 1));

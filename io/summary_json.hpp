@@ -3,8 +3,9 @@
 // 17 significant digits (they read back to the same double), non-finite values as null. Written crash-safe:
 // NAME_summary.json.part first, flushed to disk, then renamed over the real name.
 //
-// Keys: status ("normal" or "error"), message, run_name, run_number, cycles, time, dt, nodes, elements,
-// threads, wall_seconds, us_per_element_cycle, initial_mass, mass, added_mass, momentum [x, y, z],
+// Keys: status ("normal", "error", "interrupted" by SIGTERM or SIGINT, or "running": written when the run
+// starts, so a run killed outright leaves it), message, run_name, run_number, cycles, time, dt, nodes,
+// elements, threads, wall_seconds, us_per_element_cycle, initial_mass, mass, added_mass, momentum [x, y, z],
 // energy {kinetic, kinetic_translational, kinetic_rotational, internal, hourglass, external_work,
 // contact_elastic, contact_damping, contact_friction, contact_lagrange, initial_total, total, error_percent},
 // interfaces [{id, active_pairs, max_penetration, switched_pairs_max, switched_pairs_total, added_mass,
@@ -25,6 +26,9 @@ namespace radx::io {
 std::string json_string(std::string_view s);
 // `v` with 17 significant digits (shortest exact form is not required), or null when not finite.
 std::string json_number(double v);
+
+// "normal", "error", "interrupted", "running".
+std::string_view status_name(RunStatus s);
 
 // The summary document (pretty-printed, ends with a line end).
 std::string summary_json(const RunSummary& s);

@@ -5,8 +5,8 @@
 //   dataset path of every group, in the order they were written, which is the order of the columns of
 //   `radx th --csv`).
 // - one float64 dataset [rows, 1 + columns] per group at the group's path ("global", "node/1"; the
-//   groups on the way are created), column 0 the time; chunked with an unlimited first dimension, so
-//   other tools can extend it, although radx itself rewrites the file whole.
+//   groups on the way are created), column 0 the time; chunked (about 16 KiB per chunk) with an
+//   unlimited first dimension, extended at each flush.
 // - dataset attributes: columns (string array, one name per column: "time", then "<object id>:<variable>"
 //   object-major, or "<variable>" for the global group), units (string array, one per column), variables
 //   (string array), variable_units (string array, one per variable: the units of a group without objects
@@ -14,13 +14,18 @@
 //   skew user id per object, 0 for the global axes; only on a group with an object in a skew), object_kind
 //   (string, "" for the global group, which has one value per variable), title (string).
 //
-// Why rewrite the whole file at each flush instead of extending datasets in place: an HDF5 file being
-// modified is not readable (and can be left corrupt) if the process dies mid-write, while a file written
-// to `.part` and renamed is always the previous or the new complete file. Time histories are small (tens
-// of columns, thousands of rows), so rewriting costs little; the rows stay in memory for that.
+// Why append in place: a long run (an end time of 1e30, a row every cycle) would otherwise hold every row
+// in memory and rewrite a file growing without bound. The first flush still goes through `.part` and a
+// rename (a new file, or an earlier run's replaced whole); each later flush opens the file, extends every
+// dataset, writes the rows held, closes and syncs it. No HDF5 handle stays open between flushes, so other
+// programs can read the file during the run, and a process killed between two flushes leaves the file as
+// the last flush closed it. A kill inside a flush (milliseconds, once a second at most) can leave that
+// flush's rows partly written; the earlier rows are not rewritten. The default (earliest) file format has
+// no "open for writing" mark that would make HDF5 refuse the file after such a kill.
 #include "io/time_history.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -108,11 +113,10 @@ void validate(const std::string& file, const std::vector<ThGroupLayout>& groups)
   }
 }
 
-// Rows per chunk: the rows held (at least 1), up to about 64 KiB per chunk. A short history stays a small
-// file, a long one is not cut into tiny chunks.
-hsize_t chunk_rows(std::size_t rows, std::size_t cols) {
-  const std::size_t cap = std::max<std::size_t>(1, 8192 / cols);
-  return static_cast<hsize_t>(std::clamp<std::size_t>(rows, 1, cap));
+// Rows per chunk, fixed when the file is created: about 16 KiB per chunk (at least one row). A short
+// history wastes at most one partly filled chunk per group; a long one is not cut into tiny chunks.
+hsize_t chunk_rows(std::size_t cols) {
+  return static_cast<hsize_t>(std::max<std::size_t>(1, 2048 / cols));
 }
 
 }  // namespace
@@ -131,17 +135,87 @@ struct TimeHistoryWriter::Impl {
   std::string path;
   std::vector<ThGroupLayout> groups;
   std::string time_unit;
-  std::vector<std::vector<double>> data;  // per group, [rows][1 + value_count], time first
-  std::size_t rows = 0;
+  ThFlushPolicy policy;
+  std::size_t max_buffered = 1;           // rows held before append flushes them
+  std::vector<std::vector<double>> data;  // per group, the rows not yet in the file: [rows][1 + values]
+  std::size_t rows = 0;                   // appended in all
+  std::size_t on_disk = 0;                // rows in the file
+  bool created = false;
+  double last_time = 0;
+  std::chrono::steady_clock::time_point last_flush = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_append = last_flush;
+
+  [[nodiscard]] std::size_t buffered() const { return rows - on_disk; }
+  void create_file() const;
+  void extend_file() const;
 };
 
+// The first flush writes a new file through `.part` and a rename, so an earlier run's file is replaced
+// whole and never mixed with this run's rows.
+void TimeHistoryWriter::Impl::create_file() const {
+  const std::string part = path + ".part";
+  try {
+    {
+      h5::Handle file = h5::create_file(part);
+      h5::write_attr(file, "radx_th_format_version", &kFormatVersion);
+      h5::write_string_attr(file, "time_unit", time_unit);
+      std::vector<std::string> paths;
+      for (const auto& g : groups) paths.push_back(g.path);
+      h5::write_string_array_attr(file, "groups", paths);
+      for (std::size_t i = 0; i < groups.size(); ++i) {
+        const ThGroupLayout& g = groups[i];
+        const std::size_t cols = 1 + value_count(g);
+        const h5::Handle ds =
+            h5::write_extendible_dataset<double>(file, g.path, data[i], cols, chunk_rows(cols));
+        h5::write_string_array_attr(ds, "columns", local_column_names(g));
+        h5::write_string_array_attr(ds, "units", column_units(g, time_unit));
+        h5::write_string_array_attr(ds, "variables", g.variables);
+        h5::write_string_array_attr(ds, "variable_units", g.units);
+        if (!g.objects.empty()) {
+          h5::write_attr(ds, "objects", g.objects.data(), static_cast<hsize_t>(g.objects.size()));
+        }
+        if (!g.skews.empty()) {
+          h5::write_attr(ds, "skews", g.skews.data(), static_cast<hsize_t>(g.skews.size()));
+        }
+        h5::write_string_attr(ds, "object_kind", g.object_kind);
+        h5::write_string_attr(ds, "title", g.title);
+      }
+      file.close("cannot close file " + part);
+    }
+    h5::sync_file(part);
+    h5::replace_file(part, path);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(part, ignored);
+    throw;
+  }
+}
+
+// Later flushes extend every dataset in place to the same absolute row count and write the new rows at
+// the same absolute offset, so a failed flush retried later writes the same rows to the same places.
+void TimeHistoryWriter::Impl::extend_file() const {
+  {
+    h5::Handle file = h5::open_file_read_write(path);
+    for (std::size_t i = 0; i < groups.size(); ++i) {
+      const std::size_t cols = 1 + value_count(groups[i]);
+      h5::append_rows<double>(file, groups[i].path, data[i], cols, static_cast<hsize_t>(on_disk));
+    }
+    file.close("cannot close file " + path);
+  }
+  h5::sync_file(path);
+}
+
 TimeHistoryWriter::TimeHistoryWriter(std::string path, std::vector<ThGroupLayout> groups,
-                                     std::string time_unit)
+                                     std::string time_unit, ThFlushPolicy policy)
     : impl_(std::make_unique<Impl>()) {
   validate(path, groups);
   impl_->path = std::move(path);
   impl_->groups = std::move(groups);
   impl_->time_unit = std::move(time_unit);
+  impl_->policy = policy;
+  std::size_t row_values = 0;
+  for (const auto& g : impl_->groups) row_values += 1 + value_count(g);
+  impl_->max_buffered = std::max<std::size_t>(1, std::min(policy.max_rows, policy.max_values / row_values));
   impl_->data.resize(impl_->groups.size());
 }
 
@@ -157,7 +231,7 @@ void TimeHistoryWriter::append(double time, const std::vector<std::span<const do
   }
   if (!std::isfinite(time)) throw std::invalid_argument(where + "append got a time that is not finite");
   // Times must not go back: the CSV export and plots read each column as a function of time.
-  if (m.rows > 0 && time < m.data.front()[(m.rows - 1) * (1 + value_count(m.groups.front()))]) {
+  if (m.rows > 0 && time < m.last_time) {
     throw std::invalid_argument(where + "append got a time earlier than the last row's");
   }
   for (std::size_t g = 0; g < m.groups.size(); ++g) {
@@ -172,47 +246,44 @@ void TimeHistoryWriter::append(double time, const std::vector<std::span<const do
     m.data[g].insert(m.data[g].end(), values[g].begin(), values[g].end());
   }
   ++m.rows;
+  m.last_time = time;
+  // A row that comes max_seconds or more after the previous one is written at once: rows that rare are
+  // likely followed by a long wait, during which a held row would be lost to a kill.
+  const auto now = std::chrono::steady_clock::now();
+  const auto seconds_since = [&](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(now - t).count();
+  };
+  const bool due = m.buffered() >= m.max_buffered || seconds_since(m.last_flush) >= m.policy.max_seconds ||
+                   seconds_since(m.last_append) >= m.policy.max_seconds;
+  m.last_append = now;
+  if (due) flush();
 }
 
 void TimeHistoryWriter::flush() {
-  const Impl& m = *impl_;
-  const std::string part = m.path + ".part";
+  Impl& m = *impl_;
+  m.last_flush = std::chrono::steady_clock::now();
+  if (m.created && m.buffered() == 0) return;
   const h5::QuietHdf5 quiet;
   try {
-    {
-      h5::Handle file = h5::create_file(part);
-      h5::write_attr(file, "radx_th_format_version", &kFormatVersion);
-      h5::write_string_attr(file, "time_unit", m.time_unit);
-      std::vector<std::string> paths;
-      for (const auto& g : m.groups) paths.push_back(g.path);
-      h5::write_string_array_attr(file, "groups", paths);
-      for (std::size_t i = 0; i < m.groups.size(); ++i) {
-        const ThGroupLayout& g = m.groups[i];
-        const std::size_t cols = 1 + value_count(g);
-        const h5::Handle ds =
-            h5::write_extendible_dataset<double>(file, g.path, m.data[i], cols, chunk_rows(m.rows, cols));
-        h5::write_string_array_attr(ds, "columns", local_column_names(g));
-        h5::write_string_array_attr(ds, "units", column_units(g, m.time_unit));
-        h5::write_string_array_attr(ds, "variables", g.variables);
-        h5::write_string_array_attr(ds, "variable_units", g.units);
-        if (!g.objects.empty()) {
-          h5::write_attr(ds, "objects", g.objects.data(), static_cast<hsize_t>(g.objects.size()));
-        }
-        if (!g.skews.empty()) {
-          h5::write_attr(ds, "skews", g.skews.data(), static_cast<hsize_t>(g.skews.size()));
-        }
-        h5::write_string_attr(ds, "object_kind", g.object_kind);
-        h5::write_string_attr(ds, "title", g.title);
-      }
-      file.close("cannot close file " + part);
-    }
-    h5::sync_file(part);
-    h5::replace_file(part, m.path);
+    if (m.created)
+      m.extend_file();
+    else
+      m.create_file();
   } catch (const std::exception& e) {
-    std::error_code ignored;
-    std::filesystem::remove(part, ignored);
     throw std::runtime_error("cannot write the time history " + m.path + ": " + e.what());
   }
+  m.created = true;
+  m.on_disk = m.rows;
+  // clear() keeps the capacity: the buffer's memory stays at its bound instead of being allocated again.
+  for (auto& d : m.data) d.clear();
+}
+
+std::size_t TimeHistoryWriter::buffered_rows() const {
+  return impl_->buffered();
+}
+
+std::size_t TimeHistoryWriter::max_buffered_rows() const {
+  return impl_->max_buffered;
 }
 
 std::size_t TimeHistoryWriter::rows() const {

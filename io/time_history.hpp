@@ -1,7 +1,8 @@
 // Time history P_th.h5 (results-format.md section 7): one dataset per group of variables, rows in time,
-// time as the first column, the variable names, object ids and units as attributes. Rows are kept in
-// memory and the file is rewritten through `P_th.h5.part` and an atomic rename at each flush, so the
-// file on disk is always complete (a killed run keeps what the last flush wrote).
+// time as the first column, the variable names, object ids and units as attributes. The first flush
+// creates the file through `P_th.h5.part` and an atomic rename; later flushes append the rows held since
+// in place, so memory and the cost of a flush do not grow with the run. A killed run keeps what the last
+// flush wrote.
 #pragma once
 
 #include <cstdint>
@@ -26,13 +27,24 @@ struct ThGroupLayout {
   std::vector<std::int64_t> skews;
 };
 
+// When append flushes by itself: once it holds max_rows rows or max_values values (time columns
+// included; at least one row), or max_seconds of wall time after the last flush or the last row,
+// whichever comes first.
+// The defaults bound the rows held to about 2 MiB and what a killed run loses to one second.
+struct ThFlushPolicy {
+  std::size_t max_rows = 4096;
+  std::size_t max_values = std::size_t{1} << 18;
+  double max_seconds = 1.0;
+};
+
 class TimeHistoryWriter {
  public:
   // `path` is the file to write; nothing is written before the first flush. `time_unit` labels column 0.
   // Throws std::invalid_argument for layouts the file cannot hold: a path that is empty, absolute, holds
   // ':' or lies inside another group's path; no variables; units not one per variable; a repeated
   // variable. A group with an object_kind has values per object, even with no objects (no columns).
-  TimeHistoryWriter(std::string path, std::vector<ThGroupLayout> groups, std::string time_unit);
+  TimeHistoryWriter(std::string path, std::vector<ThGroupLayout> groups, std::string time_unit,
+                    ThFlushPolicy policy = {});
   ~TimeHistoryWriter();
   TimeHistoryWriter(const TimeHistoryWriter&) = delete;
   TimeHistoryWriter& operator=(const TimeHistoryWriter&) = delete;
@@ -40,11 +52,16 @@ class TimeHistoryWriter {
   // Appends a row at `time` to every group: values[g] holds objects.size() * variables.size() values of
   // group g (object-major: object 0's variables, then object 1's), or variables.size() for global.
   // Throws std::invalid_argument, storing nothing, when a value count is wrong or `time` is not finite
-  // or earlier than the last row's (equal times are kept).
+  // or earlier than the last row's (equal times are kept). Flushes when the policy says so, and throws
+  // what flush throws, the row kept.
   void append(double time, const std::vector<std::span<const double>>& values);
-  // Writes the whole file (P_th.h5.part, then rename). Throws std::runtime_error naming the file.
+  // Writes the rows held: the first flush creates the file (even with no rows), later ones extend its
+  // datasets. Throws std::runtime_error naming the file; the rows stay held, and the next flush writes
+  // them again at the same place.
   void flush();
-  [[nodiscard]] std::size_t rows() const;
+  [[nodiscard]] std::size_t rows() const;           // appended in all
+  [[nodiscard]] std::size_t buffered_rows() const;  // held in memory, not yet in the file
+  [[nodiscard]] std::size_t max_buffered_rows() const;
 
  private:
   struct Impl;

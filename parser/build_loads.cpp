@@ -287,8 +287,9 @@ void build_imposed_final_geometries(ModelBuilder& b) {
           if (n == kNone) continue;
           b.node_used_[static_cast<std::size_t>(n)] = 1;
           g.nodes.push_back(n);
-          // A final position written inside a moved submodel moves with it, as the node did.
-          g.targets.push_back(b.submodel_point(r, {t.reals[cx][k], t.reals[cy][k], t.reals[cz][k]}));
+          // As written, also inside a moved submodel: Radioss does not transform these targets
+          // (read_impdisp_fgeo.F), whatever the transforms do to the node.
+          g.targets.push_back({t.reals[cx][k], t.reals[cy][k], t.reals[cz][k]});
         }
         if (g.nodes.empty() && r.get_int("part_ID") == 0)
           b.diags_.error(Diag::EmptyRecordList, b.at(r.pos, 1), ModelBuilder::about(r),

@@ -573,12 +573,12 @@ STARTER["/MOVE_FUNCT"] = ("id", True, lambda v: [card(reals("Ascalex", "Fscaley"
 # Inside a //SUBMODEL every id is shifted by the submodel's offset for the kind of object it names (nodes
 # off_nod, elements off_ele, parts off_part, materials off_mat, properties off_type, submodels off_sub, all else
 # off_def; a specific offset of 0 takes off_def), summed over the enclosing submodels. Ids of 0 or less stay.
-NODE_FIELDS = {"node_ID", "node_ID1", "node_ID2", "node_ID3", "node_IDc", "N1", "N2", "n1", "n2", "n3", "n4", "n5",
-               "n6", "n7", "n8"}
+NODE_FIELDS = {"node_ID", "node_ID1", "node_ID2", "node_ID3", "node_IDc", "node_IDN", "N1", "N2", "N3", "n1", "n2",
+               "n3", "n4", "n5", "n6", "n7", "n8"}
 ELEM_FIELDS = {"elem_ID"}
 OTHER_FIELDS = {"grnod_ID", "grnd_ID1", "grnd_ID2", "grnd_IDs", "grnd_ID", "surf_IDm", "surf_ID", "skew_ID",
                 "funct_IDT", "sensor_ID", "sens_ID", "subset_ID", "inter_ID", "Iskew", "frame_ID", "Frame_ID",
-                "grbric_ID", "grshel_ID", "grtria_ID"}
+                "grbric_ID", "grshel_ID", "grtria_ID", "fct_ID", "fct_IDF", "fric_ID"}
 
 
 def id_kind_of_keyword(path):
@@ -611,6 +611,8 @@ def field_kind(name):
         return "prop"
     if name == "mat_ID":
         return "mat"
+    if name == "part_ID":
+        return "part"
     if name == "sub_ID":
         return "sub"
     if name in OTHER_FIELDS or name.startswith("inter_ID"):

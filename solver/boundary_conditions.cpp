@@ -170,7 +170,10 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2,
     const double f_val = !active          ? 0.0
                          : e.displacement ? scaled_function_value(e.f, tau + dt2, e.ascale, e.fscale)
                                           : scaled_function_value(e.f, tau + 0.5 * dt2, e.ascale, e.fscale);
-    const bool increment = active && e.displacement && e.sensor != model::kNone && tau > 0;
+    // /IMPDISP/FGEO always drives the node to its absolute place on the line (OpenRadioss fixfingeo.F), with
+    // or without a sensor; only the plain /IMPDISP follows the increments after its sensor starts.
+    const bool increment =
+        active && e.displacement && e.sensor != model::kNone && tau > 0 && e.node_axis.empty();
     const double f_now = increment ? scaled_function_value(e.f, tau, e.ascale, e.fscale) : 0.0;
     const bool rot = e.dir >= 3;
     const int d = rot ? e.dir - 3 : e.dir;

@@ -41,6 +41,8 @@
 //   /IMPDISP  also needs tau >= 0. At tau = 0 as without a sensor, v_imp = (u(tau + dt2) - (x^n - X0)) / dt2;
 //             for tau > 0 the displacement follows the function's increments from where the node was,
 //             v_imp = (u(tau + dt2) - u(tau)) / dt2 (fixvel.F's YC - YC0).
+//   /IMPDISP/FGEO  also needs tau >= 0, and always drives the node to its absolute place on its line,
+//             v_imp = (D f(tau + dt2) - (x^n - X0).u) / dt2 (OpenRadioss fixfingeo.F: no increments).
 //   /INIVEL   applied at the first cycle with t_n >= T (Tstart = 0), or >= min(Tstart, T).
 // Frames are 0 in a valid model (the starter rejects them). No allocation in the per-cycle calls.
 #pragma once

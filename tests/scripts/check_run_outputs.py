@@ -10,7 +10,7 @@ usage: /usr/bin/python3 check_run_outputs.py --radx RADX --decks DECKS_DIR --out
 2. decks/verification/jc_single_brick with /STOP Emax = 1e-9 % added: the run stops with an error at its first
    listing cycle after the start (the energy error exceeds 1e-9 %); it still writes its last state: the
    series' last state is at the summary's final time, and the states before it are the /ANIM/DT ones due
-   before the stop.
+   before the stop; the reason is on standard error too.
 """
 import argparse
 import csv
@@ -72,6 +72,9 @@ def main():
     check(r.returncode == 1, "the /STOP run exited with %d, expected 1" % r.returncode)
     s = read_summary(out, "JC_SINGLE_BRICK")
     check(s["status"] == "error" and "/STOP" in s["message"], "summary %s: %s" % (s["status"], s["message"]))
+    # The reason also on standard error, not only in the listing and on standard output.
+    check("radx-engine: error termination: " + s["message"] in r.stderr,
+          "the reason of the error termination is not on stderr: " + r.stderr[-2000:])
     series = listed_states(out, "JC_SINGLE_BRICK")
     times = [t for _, t in series]
     check(times[-1] == s["time"], "last state at %.17g, the run stopped at %.17g" % (times[-1], s["time"]))

@@ -20,6 +20,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "io/engine_listing.hpp"
@@ -807,6 +808,40 @@ TEST_CASE("NAME_summary.json reads back through read_summary_json", "[engine-io]
   CHECK(r.time == 0.25);
   CHECK(r.energy.internal == -1e-3);
   CHECK_FALSE(radx::io::read_summary_json((dir.path() / "none.json").string(), r, error));
+}
+
+TEST_CASE("A summary of a run stopped by a signal or still running reads back as neither normal nor error",
+          "[engine-io]") {
+  radx::test::TempDir dir;
+  std::string error;
+  using radx::io::RunStatus;
+  // SIGTERM stopped the run after a cycle (interrupted); the summary a run writes when it starts (running),
+  // which a run killed outright leaves behind.
+  for (const auto& [status, name, label] :
+       {std::tuple{RunStatus::Interrupted, "interrupted", "INTERRUPTED TERMINATION"},
+        std::tuple{RunStatus::Running, "running", "RUNNING"}}) {
+    INFO(name);
+    auto s = sample_summary();
+    s.status = status;
+    const std::string text = radx::io::summary_json(s);
+    CHECK(text.find(std::string("\"status\": \"") + name + "\"") != std::string::npos);
+    const std::string path = radx::io::summary_json_path(dir.path().string(), name);
+    REQUIRE(radx::io::write_summary_json(path, s, error));
+    radx::io::RunSummary r;
+    REQUIRE(radx::io::read_summary_json(path, r, error));
+    CHECK(r.status == status);
+    CHECK(radx::io::termination_label(status) == label);
+  }
+  std::ostringstream listing;
+  auto s = sample_summary();
+  s.status = RunStatus::Interrupted;
+  s.message = "interrupted by SIGTERM at cycle 12, time 1.00000E-03";
+  radx::io::write_run_summary(listing, s);
+  // The heading with its reason, and the last line a script checks.
+  const auto heading = listing.str().find("  INTERRUPTED TERMINATION\n");
+  REQUIRE(heading != std::string::npos);
+  CHECK(listing.str().find("  interrupted by SIGTERM at cycle 12") > heading);
+  CHECK(listing.str().ends_with("  INTERRUPTED TERMINATION\n"));
 }
 
 TEST_CASE("/DTIX: DT_ini and DT_max reach the run controls, bad values are located errors", "[engine-io]") {

@@ -1566,3 +1566,41 @@ TEST_CASE("sensor: a rigid body whose sensor is on at t = 0 is never formed", "[
   CHECK(rb.secondary_flags() == std::vector<std::uint8_t>{0, 0, 0, 0});
   CHECK(rb.take_messages() == std::vector<std::string>{"RIGID BODY 1 SET OFF"});
 }
+
+TEST_CASE("sensor: /IMPDISP/FGEO under a sensor drives the node to its absolute place on the line",
+          "[kinematics][sensor]") {
+  // f = 1 from the start: the node must be at its final position one step after the sensor switches on
+  // (Tdelay 10.5 ms, between cycles), as Radioss's fixfingeo.F imposes the place, not the increments of f
+  // (which are 0 here and would leave the node where it is).
+  auto md = nodes_model({{0.0, 0.0, 0.0}});
+  md.sensors = {m::Sensor{}};
+  md.sensors[0].id = 5;
+  md.sensors[0].t_delay = 0.0105;
+  m::ImposedFinalGeometry g;
+  g.id = 10;
+  g.function = add_function(md, {0.0, 10.0}, {1.0, 1.0});
+  g.sensor = 5;
+  g.nodes = {0};
+  g.targets = {{1.0, 0.0, 0.0}};
+  md.imposed_final_geometries.push_back(g);
+  auto s = state_of(md, {1.0});
+  sv::Sensors sensors(md);
+  const sv::SkewFrames frames(md);
+  sv::ImposedVelocities impvel(md, frames);
+  sensors.update(0.0, 0.0);
+  double t = 0, dt1 = 0;
+  const double dt = 1e-3;
+  for (int k = 0; k < 40; ++k) {
+    zero_forces(s);
+    accelerations(s);
+    sensors.update(t, dt);
+    (void)impvel.apply(s, t, dt1, dt, sensors.starts());
+    update(s, dt1, dt);
+    t += dt;
+    dt1 = dt;
+    if (t < 0.0105) CHECK(s.x[0] == 0.0);  // nothing before the sensor
+  }
+  // The place is imposed through the velocity of one step: exact to round-off.
+  CHECK(s.x[0] == Approx(1.0).margin(1e-12));
+  CHECK(s.y[0] == 0.0);
+}

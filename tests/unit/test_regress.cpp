@@ -306,6 +306,20 @@ TEST_CASE("regress: a deck's status follows from its run", "[regress]") {
   CHECK(r.status == RegressStatus::RunError);
   CHECK(r.detail == "error termination: /STOP: energy error above 10 %");
 
+  // Stopped by SIGTERM (the engine exits 143), or killed outright so the summary written at the start is
+  // left: a run error even with exit code 0, since the figures are not those of the finished run.
+  s.status = radx::io::RunStatus::Interrupted;
+  s.message = "interrupted by SIGTERM at cycle 12, time 1.00000E-03";
+  files.summary = s;
+  r = radx::app::evaluate_deck(deck, exited, files, 0.05);
+  CHECK(r.status == RegressStatus::RunError);
+  CHECK(r.detail == "the engine was interrupted by SIGTERM at cycle 12, time 1.00000E-03");
+  s.status = radx::io::RunStatus::Running;
+  files.summary = s;
+  r = radx::app::evaluate_deck(deck, exited, files, 0.05);
+  CHECK(r.status == RegressStatus::RunError);
+  CHECK(r.detail == "the engine did not finish (its summary still says \"running\")");
+
   // A normal run: ran without a reference, compared or deviates with one, ref-error with a broken one.
   s.status = radx::io::RunStatus::Normal;
   s.cycles = 40;

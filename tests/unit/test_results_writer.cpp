@@ -6,6 +6,7 @@
 // without conversion, and the index times are printed with 17 significant digits, which give back the
 // same double.
 #include <hdf5.h>
+#include <sys/stat.h>
 
 #include <catch2/catch.hpp>
 
@@ -361,6 +362,46 @@ TEST_CASE("results: a state whose time does not increase is not written", "[io][
   CHECK(writer.write_state(later.state()));
   CHECK(writer.states_written() == 2);
   CHECK(fs::exists(dir.file("P_000001.hdf")));
+}
+
+// Long runs: a state must cost the same whatever the states before it, so the indexes are extended in
+// place (same file, earlier bytes kept) and not rewritten; each must still be complete after every state.
+TEST_CASE("results: each state extends both indexes in place and leaves them complete", "[io][results]") {
+  TempDir dir;
+  const radx::model::Model model = make_model();
+  ResultsWriter writer(model, dir.path().string(), "P", kArrays);
+  const std::string xmf_tail = "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  const std::string series_tail = "\n  ]\n}\n";
+  const auto inode = [](const std::string& path) {
+    struct stat st {};
+    REQUIRE(::stat(path.c_str(), &st) == 0);
+    return st.st_ino;
+  };
+  std::string xmf_before, series_before;
+  ino_t xmf_inode = 0, series_inode = 0;
+  for (int s = 0; s < 4; ++s) {
+    INFO("state " << s);
+    const StateData d(model, s, 0.5 * s);
+    REQUIRE(writer.write_state(d.state()));
+    const std::string xmf = slurp(writer.xmf_path());
+    const std::string series = slurp(writer.series_path());
+    CHECK(xmf.ends_with(xmf_tail));
+    CHECK(all_matches(xmf, R"re(<Grid Name="([^"]+)" GridType="Uniform")re").size() ==
+          static_cast<std::size_t>(s + 1));
+    CHECK(xmf.find("</Xdmf>") == xmf.size() - std::string("</Xdmf>\n").size());  // closed once, at the end
+    CHECK(series.ends_with(series_tail));
+    CHECK(parse_series(series).size() == static_cast<std::size_t>(s + 1));
+    if (s > 0) {
+      CHECK(inode(writer.xmf_path()) == xmf_inode);  // the same file, not a new one renamed over it
+      CHECK(inode(writer.series_path()) == series_inode);
+      CHECK(xmf.starts_with(xmf_before.substr(0, xmf_before.size() - xmf_tail.size())));
+      CHECK(series.starts_with(series_before.substr(0, series_before.size() - series_tail.size())));
+    }
+    xmf_inode = inode(writer.xmf_path());
+    series_inode = inode(writer.series_path());
+    xmf_before = xmf;
+    series_before = series;
+  }
 }
 
 TEST_CASE("results: the constructor removes an earlier run's files of its prefix only", "[io][results]") {

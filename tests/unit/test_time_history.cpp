@@ -7,6 +7,7 @@
 // and the CSV writes 17 significant digits, which read back to the same double, so any difference is a
 // bug, not rounding.
 #include <hdf5.h>
+#include <sys/stat.h>
 
 #include <catch2/catch.hpp>
 
@@ -350,6 +351,87 @@ TEST_CASE("time history: a /TH group with no objects has no columns, a repeated 
   CHECK_THAT(os.str(), Catch::Contains("node/5") && Catch::Contains("none (no node listed: no columns)"));
   CHECK(parse_csv(export_csv(groups, {})).header ==
         std::vector<std::string>{"time [ms]", "global:KE [J]", "part/3:3:IE [J]", "part/3:3:IE [J]"});
+}
+
+namespace {
+
+// Rows in the file, read independently of io/ (0 when there is no file yet).
+std::size_t rows_in_file(const std::string& path) {
+  if (!fs::exists(path)) return 0;
+  const H5Id file{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+  REQUIRE(file.id >= 0);
+  const H5Id ds{H5Dopen2(file.id, "node/1", H5P_DEFAULT), H5Dclose};
+  const H5Id space{H5Dget_space(ds.id), H5Sclose};
+  hsize_t dims[2] = {0, 0};
+  H5Sget_simple_extent_dims(space.id, dims, nullptr);
+  return static_cast<std::size_t>(dims[0]);
+}
+
+ino_t inode_of(const std::string& path) {
+  struct stat st {};
+  REQUIRE(::stat(path.c_str(), &st) == 0);
+  return st.st_ino;
+}
+
+}  // namespace
+
+// Memory independent of the run length: append flushes by itself once it holds the bound, so no more
+// rows than that are ever held, and every other row is already in the file.
+TEST_CASE("time history: append never holds more rows than the bound, the others are in the file", "[th]") {
+  TempDir dir;
+  const std::string path = dir.file("P_th.h5");
+  // 8 values per row (global 1 + 2, node/1 1 + 4): 40 values hold 5 rows, fewer than max_rows.
+  TimeHistoryWriter w(path, layouts(), "s", {.max_rows = 100, .max_values = 40, .max_seconds = 1e9});
+  REQUIRE(w.max_buffered_rows() == 5);
+  for (int r = 0; r < 23; ++r) {
+    INFO("row " << r);
+    append_row(w, r);
+    CHECK(w.buffered_rows() < 5);
+    CHECK(rows_in_file(path) == w.rows() - w.buffered_rows());
+  }
+  CHECK(w.buffered_rows() == 3);  // 23 = 4 * 5 + 3
+  w.flush();
+  const auto groups = read_ok(path);
+  CHECK(groups[0].rows == global_rows(23));
+  CHECK(groups[1].rows == node_rows(23));
+
+  TimeHistoryWriter few(dir.file("Q_th.h5"), layouts(), "s", {.max_rows = 3, .max_values = 1000});
+  CHECK(few.max_buffered_rows() == 3);
+  // A row wider than max_values is still held alone, then written.
+  TimeHistoryWriter wide(dir.file("R_th.h5"), layouts(), "s", {.max_values = 2});
+  CHECK(wide.max_buffered_rows() == 1);
+}
+
+TEST_CASE("time history: with no wall time between flushes every row is written as it comes", "[th]") {
+  TempDir dir;
+  const std::string path = dir.file("P_th.h5");
+  TimeHistoryWriter w(path, layouts(), "s", {.max_seconds = 0});
+  for (int r = 0; r < 4; ++r) {
+    append_row(w, r);
+    CHECK(w.buffered_rows() == 0);
+    CHECK(rows_in_file(path) == static_cast<std::size_t>(r + 1));
+  }
+}
+
+// A flush costs the same whatever the rows before it: after the first, the file is extended in place,
+// not written again and renamed.
+TEST_CASE("time history: flushes after the first extend the same file", "[th]") {
+  TempDir dir;
+  const std::string path = dir.file("P_th.h5");
+  TimeHistoryWriter w(path, layouts(), "s", {.max_seconds = 1e9});
+  append_row(w, 0);
+  w.flush();
+  const ino_t first = inode_of(path);
+  for (int r = 1; r < 7; ++r) {
+    append_row(w, r);
+    w.flush();
+    CHECK(inode_of(path) == first);
+    CHECK_FALSE(fs::exists(path + ".part"));
+  }
+  w.flush();  // nothing held: nothing written
+  const auto groups = read_ok(path);
+  CHECK(groups[0].rows == global_rows(7));
+  CHECK(groups[1].rows == node_rows(7));
 }
 
 TEST_CASE("time history: a failed flush throws naming the file and keeps the previous file", "[th]") {
