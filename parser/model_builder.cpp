@@ -160,18 +160,31 @@ void ModelBuilder::build_materials() {
     if (mat.rho > 0 && mat.young > 0) {
       // Values typed in other units than the deck's (a modulus in Pa in an mm-Mg-s deck) give wave
       // speeds no material has, and with them steps or run times that are absurd; warn, as the run can
-      // still be meant (a scaled model).
+      // still be meant (a scaled model). c = sqrt(E/rho) is in the work units' length over time; with
+      // units the deck names that is a speed in m/s. A deck that names none reads as SI but may be in any
+      // consistent system, whose velocity unit is 1e-3 (mm/s) to 1e4 (cm/us) m/s: warn only when every
+      // such reading is implausible.
       const double c = std::sqrt(mat.young / mat.rho);
-      const double c_si = c * deck_.work_units.length / deck_.work_units.time;
+      const auto& w = deck_.work_units;
       constexpr double kLight = 299792458.0;
-      if (c_si > kLight || c_si < 1.0) {
-        warning_at(
-            r, "E", Diag::ImplausibleMaterial,
-            "the wave speed sqrt(E/RHO_I) = " + num(c_si) + " m/s (E = " + num(mat.young) +
-                ", RHO_I = " + num(mat.rho) + " in the deck's units) is " +
-                (c_si > kLight ? "above the speed of light (3.0e8 m/s)" : "below 1 m/s") +
-                "; solids have 20 (soft foams, rubbers) to 18000 m/s (diamond), metals about 5000 m/s: "
-                "check the units of E and RHO_I");
+      const double fastest = deck_.units_named ? w.length / w.time : 1e4;
+      const double slowest = deck_.units_named ? w.length / w.time : 1e-3;
+      const bool slow = c * fastest<1.0, fast = c * slowest> kLight;
+      if (slow || fast) {
+        const std::string speed =
+            deck_.units_named
+                ? num(c * fastest) + " m/s (E = " + num(mat.young) + ", RHO_I = " + num(mat.rho) +
+                      " in the deck's work units " + w.mass_name + " " + w.length_name + " " + w.time_name +
+                      ")"
+                : num(c) + " length per time unit (E = " + num(mat.young) + ", RHO_I = " + num(mat.rho) +
+                      "; the deck names no units, so radx takes the most plausible of the usual systems: " +
+                      (slow ? num(c * fastest) + " m/s if in cm/us" : num(c * slowest) + " m/s if in mm/s") +
+                      ")";
+        warning_at(r, "E", Diag::ImplausibleMaterial,
+                   "the wave speed sqrt(E/RHO_I) = " + speed + " is " +
+                       (fast ? "above the speed of light (3.0e8 m/s)" : "below 1 m/s") +
+                       "; solids have 20 (soft foams, rubbers) to 18000 m/s (diamond), metals about 5000 "
+                       "m/s: check the units of E and RHO_I");
       }
     }
     mat.shear = mat.young / (2.0 * (1.0 + mat.poisson));

@@ -1,6 +1,8 @@
 // Plausibility of a valid model's run (RX513): the estimated initial step in seconds (step times the
 // deck's time unit) against 1e-12 s, and the cycles to the end time, t_stop / min(scale * dt, dt_max),
 // against 1e9. Warnings only: a scaled or academic model can mean it, a unit slip usually does not.
+// A deck that names no units reads as seconds: of the usual time units (s, ms, us) the most lenient for a
+// step that is too small, and the cycle count does not depend on the unit.
 #include "parser/plausibility.hpp"
 
 #include <algorithm>

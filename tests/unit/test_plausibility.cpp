@@ -130,6 +130,42 @@ TEST_CASE("the wave speed sqrt(E/rho) is checked in m/s with the deck's units", 
   CHECK(fast_m.err.find("above the speed of light") != std::string::npos);
 }
 
+TEST_CASE("a density of 1e-30 warns of the material and of the step it gives", "[plausibility]") {
+  radx::test::TempDir dir;
+  // Steel's E in Mg mm s with rho = 1e-30: c = sqrt(210000 / 1e-30) = 4.58e17 mm/s = 4.58e14 m/s, above
+  // light; the step of the 10 mm cube is 10 / 4.58e17 = 2.18e-17 s (nu = 0: the solid speed is the same).
+  const auto r = starter(dir, cube_deck(10.0, 1e-30, 210000.0) + "/END\n");
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(r.err.find(
+            "warning: RX512: [/MAT/LAW1 id 1 \"mat\"] the wave speed sqrt(E/RHO_I) = 4.58258e+14 m/s (E = "
+            "210000, RHO_I = 1e-30 in the deck's work units Mg mm s) is above the speed of light") !=
+        std::string::npos);
+  CHECK(r.err.find("warning: RX513: [/BRICK id 1] the initial stable time step is about 2.18e-17 s") !=
+        std::string::npos);
+}
+
+TEST_CASE("a deck that names no units is judged by the most plausible usual system", "[plausibility]") {
+  radx::test::TempDir dir;
+  // Aluminium in g cm us (E = 0.7173 Mbar, rho = 2.7 g/cm3): c = 0.515 cm/us = 5150 m/s. Read as SI it
+  // would be 0.5 m/s; with no units named it is plausible in cm/us, so no warning.
+  const auto al = starter(dir, cube_deck(1.0, 2.7, 0.7173, "") + "/END\n");
+  INFO(al.err);
+  CHECK(al.exit_code == 0);
+  CHECK(al.err.find("RX512") == std::string::npos);
+  // The same values with the units named kg m s: 0.515 m/s, a warning.
+  const auto si = starter(dir, cube_deck(1.0, 2.7, 0.7173, "kg m s") + "/END\n");
+  CHECK(si.err.find("the wave speed sqrt(E/RHO_I) = 0.515429 m/s") != std::string::npos);
+  // A dummy modulus of 1e-31: c = sqrt(1e-31 / 8.48e-7) = 3.43e-13 units, 3.43e-9 m/s even in cm/us.
+  const auto dummy = starter(dir, cube_deck(1.0, 8.48e-7, 1e-31, "") + "/END\n");
+  CHECK(dummy.err.find("the wave speed sqrt(E/RHO_I) = 3.43401e-13 length per time unit (E = 1e-31, RHO_I = "
+                       "8.48e-07; the deck names no units, so radx takes the most plausible of the usual "
+                       "systems: 3.43401e-09 m/s if in cm/us) is below 1 m/s") != std::string::npos);
+  // E = 1e30 with steel's density: c = 1.13e19 units, 1.13e16 m/s even in mm/s.
+  const auto stiff = starter(dir, cube_deck(10.0, 7.85e-9, 1e30, "") + "/END\n");
+  CHECK(stiff.err.find("1.12867e+16 m/s if in mm/s) is above the speed of light") != std::string::npos);
+}
+
 TEST_CASE("the initial step estimate is the element size over the wave speed", "[plausibility]") {
   // A cube of side 10 mm, nu = 0: L = V / largest face = 10, c = sqrt(E/rho) = sqrt(210000/7.85e-9).
   const auto m = radx::test::model_of_deck(cube_deck(10.0, 7.85e-9, 210000.0) + "/END\n");
