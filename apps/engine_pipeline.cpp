@@ -171,6 +171,9 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   s.run_number = controls.run_number;
   s.nodes = model.nodes.size();
   s.elements = engine.element_count();
+  for (const auto* list : {&diags, &model_diags})
+    for (const auto& d : list->items())
+      if (d.severity == Severity::Warning) s.add_warning(Diagnostics::format(d));
   std::error_code ec;
   fs::create_directories(opt.out_dir, ec);
   try {
@@ -255,6 +258,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
       for (const auto& m : engine.take_messages()) {
         listing_file << "  WARNING (cycle " << r.cycle << "): " << m << '\n';
         err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
+        s.add_warning("cycle " + std::to_string(r.cycle) + ": " + m);
       }
       for (const auto& m : engine.take_events()) {
         char at[64];
@@ -263,9 +267,11 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
       }
       listing.progress(r.cycle, r.time, controls.t_stop, wall);
       if (!r.full) return true;
+      // To the listing and standard output (the run's own record), and to standard error as other warnings.
       for (const auto& m : energy_warnings.check(r.energy.error_percent)) {
-        listing_file << "  WARNING (cycle " << r.cycle << "): " << m << '\n';
+        listing.message("  WARNING (cycle " + std::to_string(r.cycle) + "): " + m);
         err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
+        s.add_warning("cycle " + std::to_string(r.cycle) + ": " + m);
       }
       try {
         outputs->on_report(r);

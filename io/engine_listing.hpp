@@ -16,6 +16,7 @@
 #include <iosfwd>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "solver/model/run_controls.hpp"
@@ -133,6 +134,17 @@ struct RunSummary {
   std::vector<InterfaceSummary> interfaces;
   // --allow-substitutions: what ran instead of what the deck asks (from the model file).
   std::vector<std::string> substitutions;
+  // The run's warnings, in the order said: those of the engine deck and its checks against the model, then
+  // those during the run ("cycle N: ..."), at most kMaxSummaryWarnings (the listing has them all).
+  std::vector<std::string> warnings;
+  std::size_t warnings_left_out = 0;
+  static constexpr std::size_t kMaxSummaryWarnings = 100;
+  void add_warning(std::string text) {
+    if (warnings.size() < kMaxSummaryWarnings)
+      warnings.push_back(std::move(text));
+    else
+      ++warnings_left_out;
+  }
   // The Lagrange-multiplier solver of switched LAGDT pairs (present: a LAGDT interface could switch).
   struct Lagrange {
     bool present = false;

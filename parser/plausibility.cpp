@@ -77,7 +77,7 @@ void check_cycle_count(const EngineDeck& engine, const model::RunControls& contr
                 "the end time " + num(controls.t_stop) + " " + m.units.time_name + " needs about " +
                     num(cycles) + " cycles of the initial step " + num(dt) + " " + m.units.time_name +
                     " (set by " + element_name(step) +
-                    "), more than 1e9: the run would not end in a lifetime; crash runs take 1e4 to 1e7 "
+                    "), more than 1e9, more than a run can take: crash runs take 1e4 to 1e7 "
                     "cycles: check the end time and its unit (" +
                     m.units.time_name + ")");
 }

@@ -219,6 +219,9 @@ TEST_CASE("a run whose end time is absurd warns RX513 at /RUN in the starter and
   INFO(err);
   CHECK(err.find("warning: RX513: [/RUN] the end time 1e+30 s needs about") != std::string::npos);
   CHECK(slurp(dir.file("CUBE_0001.out")).find("RX513") != std::string::npos);
+  CHECK(
+      slurp(dir.file("CUBE_summary.json")).find("warning: RX513: [/RUN] the end time 1e+30 s needs about") !=
+      std::string::npos);
 }
 
 TEST_CASE("energy error warnings: at 10 % and at 50 %, each once, in either sign", "[plausibility]") {
@@ -256,9 +259,10 @@ TEST_CASE("the engine warns once when the energy error passes 10 % and runs to i
   REQUIRE(std::system((std::string(RADX_STARTER_EXE) + " " + dir.file("CUBE_0000.rad") + " --out " + root +
                        " >/dev/null 2>&1")
                           .c_str()) == 0);
-  const int rc = std::system((std::string(RADX_ENGINE_EXE) + " " + dir.file("CUBE_0001.rad") + " --out " +
-                              root + " --threads 1 --no-plot >/dev/null 2> " + dir.file("err.txt"))
-                                 .c_str());
+  const int rc =
+      std::system((std::string(RADX_ENGINE_EXE) + " " + dir.file("CUBE_0001.rad") + " --out " + root +
+                   " --threads 1 --no-plot > " + dir.file("out.txt") + " 2> " + dir.file("err.txt"))
+                      .c_str());
   const std::string err = slurp(dir.file("err.txt"));
   const std::string listing = slurp(dir.file("CUBE_0001.out"));
   INFO(err);
@@ -268,5 +272,10 @@ TEST_CASE("the engine warns once when the energy error passes 10 % and runs to i
   CHECK(count(err, "past 10 %") == 1);
   CHECK(count(err, "past 50 %") == 0);
   CHECK(count(listing, "  WARNING (cycle 1): the energy error is 30.2 %, past 10 %") == 1);
+  CHECK(count(slurp(dir.file("out.txt")), "  WARNING (cycle 1): the energy error is 30.2 %, past 10 %") == 1);
+  const std::string summary = slurp(dir.file("CUBE_summary.json"));
+  INFO(summary);
+  CHECK(count(summary, "\"cycle 1: the energy error is 30.2 %, past 10 %") == 1);
+  CHECK(count(summary, "past 50 %") == 0);
   CHECK(listing.find("NORMAL TERMINATION") != std::string::npos);
 }
