@@ -12,6 +12,7 @@
 #include "apps/starter_pipeline.hpp"
 #include "io/engine_listing.hpp"
 #include "parser/diagnostics.hpp"
+#include "parser/plausibility.hpp"
 #include "solver/model/geometry.hpp"
 #include "solver/model/stable_step.hpp"
 #include "test_util.hpp"
@@ -222,6 +223,26 @@ TEST_CASE("a run whose end time is absurd warns RX513 at /RUN in the starter and
   CHECK(
       slurp(dir.file("CUBE_summary.json")).find("warning: RX513: [/RUN] the end time 1e+30 s needs about") !=
       std::string::npos);
+}
+
+TEST_CASE("nodal mass scaling counts cycles at its Tmin", "[plausibility]") {
+  // Steel cube of 10 mm: 0.9 x 1.93e-6 s = 1.74e-6 s a cycle; 1e4 s takes 5.75e9 cycles, past 1e9, but
+  // /DT/NODA/CST holding the step at 1e-4 s takes 1e8.
+  const auto m = radx::test::model_of_deck(cube_deck(10.0, 7.85e-9, 210000.0) + "/END\n");
+  const auto step = radx::model::estimate_stable_step(m);
+  radx::EngineDeck engine;
+  radx::model::RunControls rc;
+  rc.t_stop = 1e4;
+  radx::Diagnostics plain;
+  radx::check_cycle_count(engine, rc, m, step, plain);
+  REQUIRE(plain.items().size() == 1);
+  CHECK(plain.items()[0].message.find("needs about 5.75e+09 cycles") != std::string::npos);
+  rc.nodal.given = true;
+  rc.nodal.action = radx::model::DtAction::AddMass;
+  rc.nodal.t_min = 1e-4;
+  radx::Diagnostics scaled;
+  radx::check_cycle_count(engine, rc, m, step, scaled);
+  CHECK(scaled.items().empty());
 }
 
 TEST_CASE("energy error warnings: at 10 % and at 50 %, each once, in either sign", "[plausibility]") {
