@@ -37,6 +37,15 @@ void ModelBuilder::warning_at(const KeywordRecord& r, std::string_view field, Di
   diags_.warning(code, at_field(r, field), about(r), std::move(msg));
 }
 
+namespace {
+// "box" -> "boxes", "part" -> "parts": the kinds named in duplicate-id messages.
+std::string plural(std::string_view noun) {
+  const bool sibilant =
+      noun.ends_with('x') || noun.ends_with('s') || noun.ends_with("sh") || noun.ends_with("ch");
+  return std::string(noun) + (sibilant ? "es" : "s");
+}
+}  // namespace
+
 bool ModelBuilder::register_id(IdIndex& index, std::int64_t id, std::int32_t dense, const KeywordRecord& r,
                                std::string_view what,
                                std::unordered_map<std::int64_t, SourcePos>& first_pos) {
@@ -46,7 +55,7 @@ bool ModelBuilder::register_id(IdIndex& index, std::int64_t id, std::int32_t den
     diags_.error(Diag::DuplicateId, at(r.pos, 1), about(r),
                  std::string(what) + " id " + std::to_string(id) + " is already used at " +
                      deck_.files[p.file] + ":" + std::to_string(p.line) + "; ids must be unique among " +
-                     std::string(what) + "s");
+                     plural(what));
     return false;
   }
   first_pos[id] = r.pos;
