@@ -21,7 +21,9 @@
 #include "parser/build_run_controls.hpp"
 #include "parser/deck.hpp"
 #include "parser/diagnostics.hpp"
+#include "parser/plausibility.hpp"
 #include "solver/explicit_engine.hpp"
+#include "solver/model/stable_step.hpp"
 
 namespace radx::app {
 
@@ -158,6 +160,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
   Diagnostics model_diags;
   check_rigid_body_switches(deck, body_ids, controls, model_diags);
+  // The starter warns too, but only when it found this engine deck beside its own.
+  check_cycle_count(deck, controls, model, model::estimate_stable_step(model), model_diags);
   model_diags.sort();
   model_diags.print(err);
   // Installed before the engine is set up: a signal that comes during it stops the run after its first cycle.
@@ -190,6 +194,9 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   s.run_number = controls.run_number;
   s.nodes = model.nodes.size();
   s.elements = engine.element_count();
+  for (const auto* list : {&diags, &model_diags})
+    for (const auto& d : list->items())
+      if (d.severity == Severity::Warning) s.add_warning(Diagnostics::format(d));
   std::error_code ec;
   fs::create_directories(opt.out_dir, ec);
   try {
@@ -265,6 +272,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return l;
   };
   std::string stop_message;
+  io::EnergyErrorWarnings energy_warnings;
   int stopped_by = 0;
   solver::RunResult result;
   try {
@@ -273,6 +281,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
       for (const auto& m : engine.take_messages()) {
         listing_file << "  WARNING (cycle " << r.cycle << "): " << m << '\n';
         err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
+        s.add_warning("cycle " + std::to_string(r.cycle) + ": " + m);
       }
       for (const auto& m : engine.take_events()) {
         char at[64];
@@ -281,6 +290,12 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
       }
       listing.progress(r.cycle, r.time, controls.t_stop, wall);
       if (!r.full) return true;
+      // To the listing and standard output (the run's own record), and to standard error as other warnings.
+      for (const auto& m : energy_warnings.check(r.energy.error_percent)) {
+        listing.message("  WARNING (cycle " + std::to_string(r.cycle) + "): " + m);
+        err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
+        s.add_warning("cycle " + std::to_string(r.cycle) + ": " + m);
+      }
       try {
         outputs->on_report(r);
       } catch (const std::exception& e) {

@@ -14,7 +14,9 @@
 #include "parser/deck.hpp"
 #include "parser/deck_echo.hpp"
 #include "parser/model_builder.hpp"
+#include "parser/plausibility.hpp"
 #include "solver/model/masses.hpp"
+#include "solver/model/stable_step.hpp"
 
 namespace radx::app {
 
@@ -106,17 +108,25 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
       if (moved) model::compute_lumped_masses(model);
     }
   }
-  if (opt.check_engine_deck) {
-    std::string engine = is_one_file_deck(opt.deck) ? opt.deck : engine_deck_beside(opt.deck);
-    if (!engine.empty()) {
-      EngineDeck engine_deck;
-      model::RunControls controls = read_run_controls(engine, diags, &engine_deck);
-      if (readable) {
-        std::vector<std::int64_t> body_ids;
-        for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
-        check_rigid_body_switches(engine_deck, body_ids, controls, diags);
-      }
+  model::StepEstimate step;
+  if (readable && !diags.has_errors()) {
+    step = model::estimate_stable_step(model);
+    check_initial_step(deck, model, step, diags);
+  }
+  // The end time lives in the engine deck: read it when it is there, also when only the starter runs, so
+  // that an absurd one is caught before the run starts; its own problems are reported only on request.
+  const std::string engine = is_one_file_deck(opt.deck) ? opt.deck : engine_deck_beside(opt.deck);
+  if (!engine.empty()) {
+    Diagnostics unreported;
+    Diagnostics& engine_diags = opt.check_engine_deck ? diags : unreported;
+    EngineDeck engine_deck;
+    model::RunControls controls = read_run_controls(engine, engine_diags, &engine_deck);
+    if (readable && opt.check_engine_deck) {
+      std::vector<std::int64_t> body_ids;
+      for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
+      check_rigid_body_switches(engine_deck, body_ids, controls, diags);
     }
+    check_cycle_count(engine_deck, controls, model, step, diags);
   }
   diags.sort();
   res.errors = diags.error_count();

@@ -84,6 +84,21 @@ double energy_error_percent(double e_total, double e_total0, double w_ext) {
   return std::clamp(e, -99.9, 99.9);
 }
 
+std::vector<std::string> EnergyErrorWarnings::check(double error_percent) {
+  std::vector<std::string> due;
+  for (std::size_t k = 0; k < kLevels.size(); ++k) {
+    if (said_[k] || !(std::abs(error_percent) >= kLevels[k])) continue;
+    said_[k] = true;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "the energy error is %.3g %%, past %g %%: the run %s energy it cannot account for (a sound "
+                  "run stays within a few per cent); it goes on (/STOP Emax stops it)",
+                  error_percent, kLevels[k], error_percent < 0 ? "loses" : "creates");
+    due.emplace_back(text);
+  }
+  return due;
+}
+
 std::string_view termination_label(RunStatus s) {
   switch (s) {
     case RunStatus::Normal: return "NORMAL TERMINATION";

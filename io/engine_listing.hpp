@@ -16,6 +16,7 @@
 #include <iosfwd>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "solver/model/run_controls.hpp"
@@ -26,6 +27,19 @@ namespace radx::io {
 // |E_tot0 + W_ext| <= 1e-20. E_tot = KE_T + KE_R + IE; E_tot0 = E_tot at cycle 0 minus the work booked at
 // cycle 0; W_ext the external work so far. NaN inputs give NaN (shown, never hidden).
 double energy_error_percent(double e_total, double e_total0, double w_ext);
+
+// The energy error levels worth a warning during a run, 10 % and 50 % in absolute value, each said once:
+// a run that ends quietly with most of its energy made up or lost is worse than one that stops. The run
+// goes on (only /STOP Emax stops it).
+class EnergyErrorWarnings {
+ public:
+  static constexpr std::array<double, 2> kLevels = {10.0, 50.0};
+  // The warnings due at this error: one per level passed for the first time (none for NaN).
+  std::vector<std::string> check(double error_percent);
+
+ private:
+  std::array<bool, kLevels.size()> said_{};
+};
 
 // What controls the time step printed on a listing line.
 enum class StepSource : std::uint8_t { None, Brick, Shell, Shell3, Node, Interface, Imposed };
@@ -120,6 +134,17 @@ struct RunSummary {
   std::vector<InterfaceSummary> interfaces;
   // --allow-substitutions: what ran instead of what the deck asks (from the model file).
   std::vector<std::string> substitutions;
+  // The run's warnings, in the order said: those of the engine deck and its checks against the model, then
+  // those during the run ("cycle N: ..."), at most kMaxSummaryWarnings (the listing has them all).
+  std::vector<std::string> warnings;
+  std::size_t warnings_left_out = 0;
+  static constexpr std::size_t kMaxSummaryWarnings = 100;
+  void add_warning(std::string text) {
+    if (warnings.size() < kMaxSummaryWarnings)
+      warnings.push_back(std::move(text));
+    else
+      ++warnings_left_out;
+  }
   // The Lagrange-multiplier solver of switched LAGDT pairs (present: a LAGDT interface could switch).
   struct Lagrange {
     bool present = false;

@@ -202,6 +202,17 @@ std::string summary_json(const RunSummary& s) {
     w.raw(json_string(text));
   }
   w.close(']');
+  w.key("warnings");
+  w.open('[');
+  for (const auto& text : s.warnings) {
+    w.item();
+    w.raw(json_string(text));
+  }
+  if (s.warnings_left_out > 0) {
+    w.item();
+    w.raw(json_string("... and " + std::to_string(s.warnings_left_out) + " more (see the listing)"));
+  }
+  w.close(']');
   if (s.lagrange.present) {
     const auto& L = s.lagrange;
     w.key("lagrange_solver");

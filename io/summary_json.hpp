@@ -9,7 +9,9 @@
 // energy {kinetic, kinetic_translational, kinetic_rotational, internal, hourglass, external_work,
 // contact_elastic, contact_damping, contact_friction, contact_lagrange, initial_total, total, error_percent},
 // interfaces [{id, active_pairs, max_penetration, switched_pairs_max, switched_pairs_total, added_mass,
-// removed_nodes}], and lagrange_solver {...} when a LAGDT interface could switch.
+// removed_nodes}], substitutions [text], warnings [text: the engine deck's warnings as the listing gives
+// them, then "cycle N: ..." for those during the run, such as an energy error past 10 % and 50 %; at most
+// 100, then one "... and N more"], and lagrange_solver {...} when a LAGDT interface could switch.
 //
 // read_summary_json reads a document back (for `radx regress`, which runs each deck in a child process and
 // reads its figures from this file): a small strict JSON reader, no library.

@@ -106,6 +106,10 @@ struct Deck {
   std::string run_name;            // RUNNAME from /BEGIN
   UnitSystem input_units;
   UnitSystem work_units;
+  // The deck says which units it is in: /BEGIN names input or work units, an old deck has /UNIT/LENGTH and
+  // the like, or an object is given in a /UNIT system of its own (converted to the work units). When none
+  // does, blank units read as SI but the deck may be written in any consistent system (mm Mg s, mm kg ms).
+  bool units_named = false;
   std::vector<KeywordRecord> records;  // starter keywords in deck order
   std::vector<Submodel> submodels;     // in deck order; a parent comes before its children
   bool allow_substitutions = false;    // ReadOptions::allow_substitutions

@@ -911,6 +911,7 @@ class StarterReader {
                          ", or a numeric factor to SI");
         continue;
       }
+      deck_.units_named = true;
       for (UnitSystem* u : {&deck_.input_units, &deck_.work_units}) {
         double& factor = kind == 'M' ? u->mass : kind == 'L' ? u->length : u->time;
         std::string& name = kind == 'M' ? u->mass_name : kind == 'L' ? u->length_name : u->time_name;
@@ -925,6 +926,11 @@ class StarterReader {
     for (const auto& r : deck_.records) {
       if (r.decl->path == "/BEGIN") {
         deck_.run_name = r.get_string("RUNNAME");
+        for (const char* name :
+             {"input_mass", "input_length", "input_time", "work_mass", "work_length", "work_time"}) {
+          const FieldValue* f = r.find(name);
+          if (f != nullptr && !trim(f->s).empty()) deck_.units_named = true;
+        }
         if (auto u = units_from(r, "input_mass", "input_length", "input_time")) deck_.input_units = *u;
         if (auto u = units_from(r, "work_mass", "work_length", "work_time")) deck_.work_units = *u;
       } else if (r.decl->path == "/UNIT") {
@@ -949,6 +955,7 @@ class StarterReader {
           continue;
         }
         u = &it->second;
+        deck_.units_named = true;
       }
       const double fm = u->mass / w.mass;
       const double fl = u->length / w.length;

@@ -65,6 +65,8 @@ enum class Diag : std::uint16_t {
   UnimplementedOption = 509,
   PhysicsNotImplemented = 510,
   Substitution = 511,
+  ImplausibleMaterial = 512,
+  ImplausibleTimeStep = 513,
   // geometry
   NonPositiveVolume = 601,
   NonPositiveArea = 602,
@@ -72,6 +74,7 @@ enum class Diag : std::uint16_t {
   RepeatedNodeInElement = 604,
   DegenerateTransform = 605,
   CoordinatesPerturbed = 606,
+  TangledBrick = 607,
   // contact
   InitialPenetration = 701,
   InterfaceFieldIgnored = 702,

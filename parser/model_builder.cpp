@@ -37,6 +37,15 @@ void ModelBuilder::warning_at(const KeywordRecord& r, std::string_view field, Di
   diags_.warning(code, at_field(r, field), about(r), std::move(msg));
 }
 
+namespace {
+// "box" -> "boxes", "part" -> "parts": the kinds named in duplicate-id messages.
+std::string plural(std::string_view noun) {
+  const bool sibilant =
+      noun.ends_with('x') || noun.ends_with('s') || noun.ends_with("sh") || noun.ends_with("ch");
+  return std::string(noun) + (sibilant ? "es" : "s");
+}
+}  // namespace
+
 bool ModelBuilder::register_id(IdIndex& index, std::int64_t id, std::int32_t dense, const KeywordRecord& r,
                                std::string_view what,
                                std::unordered_map<std::int64_t, SourcePos>& first_pos) {
@@ -46,7 +55,7 @@ bool ModelBuilder::register_id(IdIndex& index, std::int64_t id, std::int32_t den
     diags_.error(Diag::DuplicateId, at(r.pos, 1), about(r),
                  std::string(what) + " id " + std::to_string(id) + " is already used at " +
                      deck_.files[p.file] + ":" + std::to_string(p.line) + "; ids must be unique among " +
-                     std::string(what) + "s");
+                     plural(what));
     return false;
   }
   first_pos[id] = r.pos;
@@ -156,6 +165,36 @@ void ModelBuilder::build_materials() {
                    " is outside [0, 0.5): the bulk modulus E/3(1-2nu) would be infinite or negative (Radioss "
                    "turns "
                    "exactly 0.5 into 0.499 silently; radx asks for the value you mean, e.g. 0.499)");
+    }
+    if (mat.rho > 0 && mat.young > 0) {
+      // Values typed in other units than the deck's (a modulus in Pa in an mm-Mg-s deck) give wave
+      // speeds no material has, and with them steps or run times that are absurd; warn, as the run can
+      // still be meant (a scaled model). c = sqrt(E/rho) is in the work units' length over time; with
+      // units the deck names that is a speed in m/s. A deck that names none reads as SI but may be in any
+      // consistent system, whose velocity unit is 1e-3 (mm/s) to 1e4 (cm/us) m/s: warn only when every
+      // such reading is implausible.
+      const double c = std::sqrt(mat.young / mat.rho);
+      const auto& w = deck_.work_units;
+      constexpr double kLight = 299792458.0;
+      const double fastest = deck_.units_named ? w.length / w.time : 1e4;
+      const double slowest = deck_.units_named ? w.length / w.time : 1e-3;
+      const bool slow = c * fastest<1.0, fast = c * slowest> kLight;
+      if (slow || fast) {
+        const std::string speed =
+            deck_.units_named
+                ? num(c * fastest) + " m/s (E = " + num(mat.young) + ", RHO_I = " + num(mat.rho) +
+                      " in the deck's work units " + w.mass_name + " " + w.length_name + " " + w.time_name +
+                      ")"
+                : num(c) + " length per time unit (E = " + num(mat.young) + ", RHO_I = " + num(mat.rho) +
+                      "; the deck names no units, so radx takes the most plausible of the usual systems: " +
+                      (slow ? num(c * fastest) + " m/s if in cm/us" : num(c * slowest) + " m/s if in mm/s") +
+                      ")";
+        warning_at(r, "E", Diag::ImplausibleMaterial,
+                   "the wave speed sqrt(E/RHO_I) = " + speed + " is " +
+                       (fast ? "above the speed of light (3.0e8 m/s)" : "below 1 m/s") +
+                       "; solids have 20 (soft foams, rubbers) to 18000 m/s (diamond), metals about 5000 "
+                       "m/s: check the units of E and RHO_I");
+      }
     }
     mat.shear = mat.young / (2.0 * (1.0 + mat.poisson));
     mat.bulk = mat.poisson < 0.5 ? mat.young / (3.0 * (1.0 - 2.0 * mat.poisson)) : 0.0;
@@ -460,6 +499,17 @@ void ModelBuilder::build_elements() {
                     (v < 0 ? "its nodes n1-n4 and n5-n8 are numbered so that the element is inverted; "
                              "n1-n4 must turn counter-clockwise seen from the n5-n8 face"
                            : "its nodes are flat or collapsed"));
+          } else if (const auto corner = model::most_negative_brick_corner(x); corner.ratio < -1e-6) {
+            // The one-point volume averages the corners, so a tangled brick passes it and then runs
+            // with a stiffness and a step that belong to no real shape.
+            diags_.warning(
+                Diag::TangledBrick, at(t.pos[e], 1), ab,
+                "brick " + std::to_string(eid) + " is tangled: its corner at node " +
+                    std::to_string(m_.nodes.id[b.conn[base + static_cast<std::size_t>(corner.node)]]) +
+                    " (n" + std::to_string(corner.node + 1) +
+                    ") is turned inside out, so its faces intersect, though its volume (" + num(v) +
+                    ") is positive; in a valid brick every corner's three edges turn the same "
+                    "way as n1-n2, n1-n4, n1-n5");
           }
         } else {
           double area = 0;

@@ -792,6 +792,7 @@ class Checker:
                     i += 1
 
             take(2)
+            begin_units = {}
             if len(cards) < 2:
                 self.issue("RX502", mainfile, recs[i - 1][1], "/BEGIN has no version card")
                 return None
@@ -808,12 +809,15 @@ class Checker:
                 for c, kinds in ((cards[2], "input"), (cards[3], "work")):
                     uv = self.parse_fields([F("M", "S", 1, 20), F("L", "S", 21, 40), F("T", "S", 41, 60)], c,
                                            "/BEGIN")
+                    begin_units[kinds] = tuple(uv.get(x) for x in ("M", "L", "T"))
                     bad = [x for x, ok in ((uv.get("M"), MASS_UNITS), (uv.get("L"), LENGTH_UNITS),
                                            (uv.get("T"), TIME_UNITS)) if x is not None and x not in ok and not
                            REAL_RE.match(x)]
                     if bad:
                         self.issue("RX506", c[0], c[1], "unknown %s unit(s) %s" % (kinds, ", ".join(bad)))
         model = Model(version)
+        if not fragment:
+            model.units = begin_units
         self.open_subs = []  # the open //SUBMODEL objects, innermost last
         end_seen = False
         prev_comment = None
@@ -892,7 +896,8 @@ class Checker:
                 title = data[k][1][2]
                 k += 1
         obj = {"path": path, "id": oid, "pos": (file, lineno), "title": title, "cards": [], "vals": {},
-               "recs": [], "ids": [], "word": word}
+               "recs": [], "ids": [], "word": word,
+               "own_units": len(rest) > 1 and rest[1] not in ("", "0"), "in_sub": bool(self.open_subs)}
         vals = {}
         card_list = cards_fn(v)
         for c in card_list:
@@ -1001,6 +1006,7 @@ class Model:
     def __init__(self, version):
         self.version = version
         self.objs = []
+        self.units = {}  # "input" and "work": (mass, length, time) names as written in /BEGIN, None if blank
 
     def add(self, obj):
         self.objs.append(obj)
@@ -1095,6 +1101,8 @@ def semantic(ck, m):
                 vol = hex_volume(pts)
                 if vol <= 1e-12:
                     I("RX601", p[0], p[1], "brick %d has volume %g" % (eid, vol))
+                elif hex_tangled(pts):
+                    I("RX607", p[0], p[1], "brick %d has a corner turned inside out" % eid)
 
     # parts
     for pid, o in parts.items():
@@ -1165,10 +1173,20 @@ def semantic(ck, m):
                                                                                 val(o, name)))
 
     # materials
+    velocity_si = work_velocity_si(m)
     for o in mats.values():
         if o.get("missing"):
             I("RX502", o["pos"][0], o["pos"][1], "%s %d ends before its required cards" % (o["path"], o["id"]))
             continue
+        rho, young = val(o, "RHO_I", 0.0) or 0.0, val(o, "E", 0.0) or 0.0
+        if velocity_si is not None and rho > 0 and young > 0 and not o["own_units"] and not o["in_sub"]:
+            # sqrt(E/rho) in m/s must lie between 1 m/s and the speed of light, in every usual system
+            # (1e-3 to 1e4 m/s per unit of velocity) when the deck names no units
+            fastest, slowest = velocity_si
+            c = math.sqrt(young / rho)
+            if c * fastest < 1.0 or c * slowest > 299792458.0:
+                p = pos(o, "E")
+                I("RX512", p[0], p[1], "%s %d: wave speed %g units is implausible" % (o["path"], o["id"], c))
         nu = val(o, "nu", 0.0)
         if nu >= 0.5 or nu <= -1.0:
             p = pos(o, "nu")
@@ -1769,6 +1787,45 @@ def dot(a, b):
 
 def norm(a):
     return math.sqrt(dot(a, a))
+
+
+LENGTH_SI = {"m": 1.0, "cm": 1e-2, "mm": 1e-3, "um": 1e-6, "mum": 1e-6, "km": 1e3, "in": 0.0254, "ft": 0.3048}
+TIME_SI = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "mus": 1e-6, "ns": 1e-9, "min": 60.0, "h": 3600.0}
+
+
+def work_velocity_si(m):
+    """(fastest, slowest) m/s worth of one work velocity unit: equal when /BEGIN names units, 1e4 and 1e-3
+    (cm/us and mm/s) when it names none; None when units are converted (input != work, old /UNIT/ cards)."""
+    if m.of("/UNIT/MASS", "/UNIT/LENGTH", "/UNIT/TIME"):
+        return None
+    given = m.units.get("input", (None,) * 3) + m.units.get("work", (None,) * 3)
+    if all(x is None for x in given):
+        return 1e4, 1e-3
+    if m.units.get("input") != m.units.get("work"):
+        return None
+
+    def si(name, table):
+        if name is None:
+            return 1.0
+        if name in table:
+            return table[name]
+        return float(name.replace("D", "E").replace("d", "e")) if REAL_RE.match(name) else None
+
+    length, time = si(m.units["work"][1], LENGTH_SI), si(m.units["work"][2], TIME_SI)
+    if length is None or time is None:
+        return None
+    return length / time, length / time
+
+
+def hex_tangled(p):
+    """A corner whose three edges (in the order of n1: n2, n4, n5) turn the wrong way: det / lengths < -1e-6."""
+    neighbours = ((1, 3, 4), (2, 0, 5), (3, 1, 6), (0, 2, 7), (7, 5, 0), (4, 6, 1), (5, 7, 2), (6, 4, 3))
+    for k, nb in enumerate(neighbours):
+        e = [sub(p[j], p[k]) for j in nb]
+        lengths = norm(e[0]) * norm(e[1]) * norm(e[2])
+        if lengths > 0 and dot(e[0], cross(e[1], e[2])) / lengths < -1e-6:
+            return True
+    return False
 
 
 def hex_volume(p):

@@ -497,6 +497,24 @@ def _():
     return d, "brick 11 lists its top face first: negative volume", [("RX601", "BRICK_11")]
 
 
+@fault("tangled_brick_positive_volume")
+def _():
+    d = base()
+    # node 15 (n5) pushed through the bottom face n1-n4 (z = 1.5) to its middle, 2 mm below: the one-point
+    # volume stays positive (about 0.45 of the box), but the corner at n5 is turned inside out
+    d.set("NODE_15", node_line(15, 10.0, 5.0, -0.5))
+    return d, "brick 11: node 15 (n5) pushed through the opposite face; positive volume, faces intersect " \
+              "(a warning)", [("RX607", "BRICK_11")]
+
+
+@fault("implausible_wave_speed")
+def _():
+    d = base()
+    d.set("EL_C1", line(R(2700.0)))
+    return d, "/MAT/LAW1/2 RHO_I = 2700 (kg/m3) in a Mg mm s deck: sqrt(E/RHO_I) = 0.005 m/s (a warning)", \
+        [("RX512", "EL_C2")]
+
+
 @fault("zero_area_shell")
 def _():
     d = base()

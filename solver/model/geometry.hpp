@@ -56,6 +56,41 @@ inline double brick_volume(const std::array<Vec3, 8>& x) {
   return dot(j1, cross(j2, j3)) / 64.0;
 }
 
+// The corner of a brick whose tetrahedron (the node and its three edge neighbours, taken in the
+// right-hand order of a positive brick) has the most negative signed volume relative to its edge
+// lengths, and that ratio: det(e1, e2, e3) / (|e1| |e2| |e3|), -1 for a right corner turned inside out.
+// A valid brick has every corner >= 0 (0 where a degenerate brick repeats a node); a brick whose node
+// was pushed through the opposite face keeps a positive one-point volume but has a negative corner,
+// the standard sign of a tangled hexahedron.
+struct BrickCorner {
+  int node = -1;  // position 0..7, -1 when no corner is negative
+  double ratio = 0;
+};
+inline BrickCorner most_negative_brick_corner(const std::array<Vec3, 8>& x) {
+  static constexpr std::array<std::array<int, 3>, 8> kNeighbours = {{
+      {1, 3, 4},
+      {2, 0, 5},
+      {3, 1, 6},
+      {0, 2, 7},
+      {7, 5, 0},
+      {4, 6, 1},
+      {5, 7, 2},
+      {6, 4, 3},
+  }};
+  BrickCorner worst;
+  for (int k = 0; k < 8; ++k) {
+    const auto& nb = kNeighbours[static_cast<std::size_t>(k)];
+    const Vec3 e1 = sub(x[static_cast<std::size_t>(nb[0])], x[static_cast<std::size_t>(k)]);
+    const Vec3 e2 = sub(x[static_cast<std::size_t>(nb[1])], x[static_cast<std::size_t>(k)]);
+    const Vec3 e3 = sub(x[static_cast<std::size_t>(nb[2])], x[static_cast<std::size_t>(k)]);
+    const double lengths = norm(e1) * norm(e2) * norm(e3);
+    if (!(lengths > 0)) continue;  // a repeated node: a degenerate brick, not a tangled one
+    const double r = dot(e1, cross(e2, e3)) / lengths;
+    if (r < worst.ratio) worst = {k, r};
+  }
+  return worst;
+}
+
 // The frame of a /SKEW/MOV from the positions of its nodes N1 N2 N3 (OpenRadioss starter hm_read_skw.F,
 // engine newskw.F). Axis a = dir (0 x', 1 y', 2 z') runs along N1 -> N2; with b = a + 1 and c = a + 2
 // (mod 3):

@@ -335,6 +335,7 @@ TEST_CASE("boxes share one id space, a cylinder needs an axis and a diameter", "
                        cylinder(2, {1, 1, 1}, {1, 1, 1}, 1.0) + cylinder(3, {0, 0, 0}, {0, 0, 1}, 0.0));
   INFO(b->report());
   CHECK(has(b->diags, radx::Diag::DuplicateId));
+  CHECK(b->report().find("unique among boxes") != std::string::npos);
   CHECK(has(b->diags, radx::Diag::InconsistentValues));    // cylinder 2: P1 = P2
   CHECK(has(b->diags, radx::Diag::RequiredValueMissing));  // cylinder 3: no diameter
 }

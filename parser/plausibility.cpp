@@ -1,0 +1,92 @@
+// Plausibility of a valid model's run (RX513): the estimated initial step in seconds (step times the
+// deck's time unit) against 1e-12 s, and the cycles to the end time, t_stop / min(scale * dt, dt_max),
+// against 1e9. Warnings only: a scaled or academic model can mean it, a unit slip usually does not.
+// A deck that names no units reads as seconds: of the usual time units (s, ms, us) the most lenient for a
+// step that is too small, and the cycle count does not depend on the unit.
+#include "parser/plausibility.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+namespace radx {
+
+namespace {
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+const char* keyword_of(model::ElementType t) {
+  return t == model::ElementType::Brick8 ? "/BRICK" : (t == model::ElementType::Shell3 ? "/SH3N" : "/SHELL");
+}
+
+// The line of an element's card; the deck's first file when it cannot be found.
+Where element_where(const Deck& deck, model::ElementType t, std::int64_t id) {
+  const char* id_field = t == model::ElementType::Brick8
+                             ? "brick_ID"
+                             : (t == model::ElementType::Shell3 ? "tria_ID" : "shell_ID");
+  for (const auto* r : deck.of(keyword_of(t))) {
+    const int c = r->records.column(id_field);
+    if (c < 0) continue;
+    const auto& ids = r->records.ints[static_cast<std::size_t>(c)];
+    for (std::size_t e = 0; e < ids.size(); ++e)
+      if (ids[e] == id) return deck.where(r->records.pos[e], 1);
+  }
+  return deck.files.empty() ? Where{} : Where{deck.files.front()};
+}
+
+std::string element_name(const model::StepEstimate& step) {
+  return std::string(step.type == model::ElementType::Brick8   ? "brick "
+                     : step.type == model::ElementType::Shell3 ? "3-node shell "
+                                                               : "shell ") +
+         std::to_string(step.element_id);
+}
+
+}  // namespace
+
+void check_initial_step(const Deck& deck, const model::Model& m, const model::StepEstimate& step,
+                        Diagnostics& diags) {
+  if (!(step.dt > 0)) return;
+  const double seconds = step.dt * m.units.time;
+  if (seconds >= kImplausibleStepSeconds) return;
+  diags.warning(Diag::ImplausibleTimeStep, element_where(deck, step.type, step.element_id),
+                About{keyword_of(step.type), step.element_id},
+                "the initial stable time step is about " + num(seconds) + " s (" +
+                    (m.units.time == 1.0 ? std::string() : num(step.dt) + " " + m.units.time_name + ", ") +
+                    "element size over wave speed of " + element_name(step) +
+                    "), below 1e-12 s: a millisecond would take more than 1e9 cycles; crash models step at "
+                    "1e-8 to 1e-5 s: check the element size and the units of the material's E and RHO_I");
+}
+
+void check_cycle_count(const EngineDeck& engine, const model::RunControls& controls, const model::Model& m,
+                       const model::StepEstimate& step, Diagnostics& diags) {
+  if (!(step.dt > 0) || !(controls.t_stop > 0)) return;
+  // /DT/NODA/CST replaces the element step by the nodal one, with its own scale, and adds mass so that
+  // it stays at Tmin at least: a mass-scaled run is not warned of for the step it would have without.
+  const auto& noda = controls.nodal;
+  const bool nodal = noda.given && noda.action == model::DtAction::AddMass;
+  const auto& dt_control = nodal ? noda : controls.global;
+  const double scale = dt_control.scale > 0 ? dt_control.scale : 0.9;
+  double dt = scale * step.dt;
+  if (nodal && noda.t_min > 0) dt = std::max(dt, noda.t_min);
+  dt = std::min(dt, controls.dt_max);
+  if (!(dt > 0)) return;
+  const double cycles = controls.t_stop / dt;
+  if (cycles <= kImplausibleCycles) return;
+  const auto runs = engine.of("/RUN");
+  const Where where = !runs.empty()           ? engine.where(runs.front()->pos, 1)
+                      : !engine.files.empty() ? Where{engine.files.front()}
+                                              : Where{};
+  diags.warning(Diag::ImplausibleTimeStep, where, About{"/RUN"},
+                "the end time " + num(controls.t_stop) + " " + m.units.time_name + " needs about " +
+                    num(cycles) + " cycles of the initial step " + num(dt) + " " + m.units.time_name +
+                    " (set by " + element_name(step) +
+                    "), more than 1e9, more than a run can take: crash runs take 1e4 to 1e7 "
+                    "cycles: check the end time and its unit (" +
+                    m.units.time_name + ")");
+}
+
+}  // namespace radx

@@ -1,0 +1,26 @@
+// Plausibility warnings on a model that is valid but whose run would be absurd: an initial step too
+// small to be physical, or an end time that needs more cycles than any run can take. Both are warnings
+// (RX513): the run proceeds, and the message says what is typical so that a unit slip shows.
+#pragma once
+
+#include "parser/deck.hpp"
+#include "parser/diagnostics.hpp"
+#include "solver/model/model.hpp"
+#include "solver/model/run_controls.hpp"
+#include "solver/model/stable_step.hpp"
+
+namespace radx {
+
+inline constexpr double kImplausibleStepSeconds = 1e-12;
+inline constexpr double kImplausibleCycles = 1e9;
+
+// Warning at the element that sets the step when the estimated initial step is below 1e-12 s.
+void check_initial_step(const Deck& deck, const model::Model& m, const model::StepEstimate& step,
+                        Diagnostics& diags);
+
+// Warning at the /RUN line when the end time needs more than 1e9 cycles of the estimated step (after
+// the /DT scale and the /DTIX bound).
+void check_cycle_count(const EngineDeck& engine, const model::RunControls& controls, const model::Model& m,
+                       const model::StepEstimate& step, Diagnostics& diags);
+
+}  // namespace radx

@@ -1,0 +1,22 @@
+// A cheap estimate of the initial stable time step, for plausibility checks before a run: per element
+// L / c with the element's step length and its material's sound speed (shared/spec/elements.md 3.3,
+// 4.1, 4.2), without the bulk viscosity and the /DT scale. It is within a few per cent of the step the
+// engine takes at cycle 0 and costs one pass over the elements.
+#pragma once
+
+#include <cstdint>
+
+#include "solver/model/model.hpp"
+
+namespace radx::model {
+
+struct StepEstimate {
+  double dt = 0;  // work time units; 0 when no element has a material with a step
+  ElementType type = ElementType::Brick8;
+  std::int64_t element_id = 0;
+  std::int32_t element = kNone;  // dense index in its block
+};
+
+[[nodiscard]] StepEstimate estimate_stable_step(const Model& m);
+
+}  // namespace radx::model
