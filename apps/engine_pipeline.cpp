@@ -112,6 +112,12 @@ io::EnergyBalance to_io(const solver::EnergyBalance& e) {
 // user to run it "first" would send them in a circle.
 std::string starter_hint(const std::string& model_path, const std::string& root) {
   std::error_code ec;
+  if (fs::exists(model_path, ec) && !fs::is_regular_file(model_path, ec)) {
+    // Most often --model given a folder: running the starter again would not help.
+    return "  " + model_path + " is " +
+           (fs::is_directory(model_path, ec) ? "a directory" : "not a regular file") +
+           ": give the starter's model file itself, e.g. --model " + root + "_0000.hdf\n";
+  }
   const fs::path listing = fs::path(model_path).replace_extension(".out");
   if (fs::exists(model_path, ec) || !fs::is_regular_file(listing, ec)) {
     return "  run the starter first (radx-starter " + root + "_0000.rad), or give it with --model FILE\n";

@@ -127,6 +127,17 @@ TEST_CASE("the starter, the engine, radx check and radx run exit 1 with a messag
     CHECK(r.err.find("RX101") != std::string::npos);
     CHECK(r.err.find("is a directory") != std::string::npos);
   }
+  // A folder given as the model file: the advice is to name the file, not to run the starter again.
+  {
+    const std::string engine_deck = dir.write(
+        "JC_SINGLE_BRICK_0001.rad",
+        slurp(std::string(RADX_SOURCE_DIR) + "/decks/verification/jc_single_brick/JC_SINGLE_BRICK_0001.rad"));
+    const Run r = run(std::string(RADX_ENGINE_EXE) + " " + engine_deck + " --model " + folder + out, dir);
+    INFO(r.err);
+    CHECK(r.code == 1);
+    CHECK(r.err.find(folder + " is a directory: give the starter's model file itself") != std::string::npos);
+    CHECK(r.err.find("run the starter first") == std::string::npos);
+  }
   // An #include of "/" in a deck the starter runs.
   const std::string deck = dir.write("INC_0000.rad", radx::test::begin_block(2026) + "#include /\n/END\n");
   const Run r = run(std::string(RADX_STARTER_EXE) + " " + deck + out, dir);
