@@ -49,14 +49,20 @@ io::StepSource source_of(solver::StepControl::Kind k) {
 std::atomic<int> g_stop_signal{0};
 static_assert(std::atomic<int>::is_always_lock_free, "a signal handler may only touch lock-free atomics");
 
+// The first signal asks for the stop; a second one, of either kind, ends the engine at once (for a user who
+// will not wait for the last state): its default action is restored and the signal raised again, delivered
+// as the handler returns. (SA_RESETHAND would reset only the signal caught, so SIGTERM then SIGINT would
+// still wait.) signal() and raise() are async-signal-safe.
 void on_stop_signal(int signo) {
-  g_stop_signal.store(signo, std::memory_order_relaxed);
+  int none = 0;
+  if (g_stop_signal.compare_exchange_strong(none, signo, std::memory_order_relaxed)) return;
+  ::signal(signo, SIG_DFL);
+  ::raise(signo);
 }
 
-// The handlers for the time of one run; the previous ones come back after it. SA_RESETHAND: a second signal
-// meets the default action and ends the engine at once, for a user who will not wait for the last state.
-// SA_RESTART: a write to the output files carries on through the signal. A signal the engine was started
-// with ignored (nohup, a background job) stays ignored.
+// The handlers for the time of one run; the previous ones come back after it. SA_RESTART: a write to the
+// output files carries on through the signal. A signal the engine was started with ignored (nohup, a
+// background job) stays ignored.
 class StopSignals {
  public:
   StopSignals() {
@@ -64,7 +70,7 @@ class StopSignals {
     struct sigaction sa {};
     sa.sa_handler = on_stop_signal;
     sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESETHAND | SA_RESTART;
+    sa.sa_flags = SA_RESTART;
     for (std::size_t k = 0; k < kSignals.size(); ++k) {
       sigaction(kSignals[k], &sa, &previous_[k]);
       if (previous_[k].sa_handler == SIG_IGN) sigaction(kSignals[k], &previous_[k], nullptr);
