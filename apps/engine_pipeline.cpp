@@ -2,21 +2,30 @@
 
 #include "apps/engine_outputs.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <ostream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "io/engine_listing.hpp"
 #include "io/model_file.hpp"
+#include "io/results_writer.hpp"
 #include "io/summary_json.hpp"
 #include "parser/build_run_controls.hpp"
 #include "parser/deck.hpp"
@@ -113,7 +122,79 @@ io::EnergyBalance to_io(const solver::EnergyBalance& e) {
 
 }  // namespace
 
+RunLock::RunLock(const std::string& out_dir, const std::string& root) {
+  const std::string path = (fs::path(out_dir) / (root + ".lock")).string();
+  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw std::runtime_error("cannot open the lock file " + path + ": " + std::strerror(errno));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int e = errno;
+    std::string holder;
+    char buf[32] = {};
+    if (::pread(fd_, buf, sizeof buf - 1, 0) > 0) holder = std::to_string(std::atoll(buf));
+    ::close(fd_);
+    fd_ = -1;
+    if (e != EWOULDBLOCK) throw std::runtime_error("cannot lock " + path + ": " + std::strerror(e));
+    throw std::runtime_error("another radx process" +
+                             (holder.empty() || holder == "0" ? "" : " (pid " + holder + ")") +
+                             " is running " + root + " in " + out_dir + " (it holds " + path +
+                             "); wait for it to end, stop it, or give this run another output folder");
+  }
+  // The pid, for the message of a second run; written after the lock, so a reader sees the holder's.
+  const std::string pid = std::to_string(::getpid()) + '\n';
+  if (::ftruncate(fd_, 0) != 0 ||
+      ::pwrite(fd_, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size())) {
+    // The lock holds without the pid; a second run's message then names no process.
+  }
+}
+
+RunLock::RunLock(RunLock&& o) noexcept : fd_(std::exchange(o.fd_, -1)) {}
+
+RunLock& RunLock::operator=(RunLock&& o) noexcept {
+  if (this != &o) {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = std::exchange(o.fd_, -1);
+  }
+  return *this;
+}
+
+RunLock::~RunLock() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void remove_earlier_engine_outputs(const std::string& out_dir, const std::string& root) {
+  remove_earlier_outputs(out_dir, root);
+  io::remove_result_set(out_dir, root);
+}
+
 int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
+  // Before anything that takes time (reading the deck and the model, setting up): a signal during it stops
+  // the run before its first cycle, and the default action (an end without a summary) never meets it.
+  const StopSignals stop_signals;
+  const std::string root = run_output_root(opt.engine_deck);
+  // The run starts: nothing of an earlier run of this name may stay beside its outputs, where a script would
+  // take it for this run's, even if this run is refused or killed before its first cycle.
+  std::error_code ec;
+  fs::create_directories(opt.out_dir, ec);
+  RunLock lock;
+  try {
+    lock = RunLock(opt.out_dir, root);
+    remove_earlier_engine_outputs(opt.out_dir, root);
+  } catch (const std::exception& e) {
+    err << "radx-engine: error: " << e.what() << '\n';
+    return 1;
+  }
+  const std::string summary_path = io::summary_json_path(opt.out_dir, root);
+  io::RunSummary s;
+  // A stop signal before the engine runs: the summary says so, and the exit code is the signal's.
+  auto interrupted_early = [&]() {
+    const int signo = StopSignals::received();
+    s.status = io::RunStatus::Interrupted;
+    s.message = "interrupted by " + signal_name(signo) + " before the first cycle";
+    std::string ignored;
+    io::write_summary_json(summary_path, s, ignored);
+    err << "radx-engine: " << s.message << '\n';
+    return 128 + signo;
+  };
   Diagnostics diags;
   EngineDeck deck;
   model::RunControls controls = read_run_controls(opt.engine_deck, diags, &deck);
@@ -124,7 +205,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
         << "; nothing was run\n";
     return 1;
   }
-  const std::string root = run_output_root(opt.engine_deck);
+  s.run_name = controls.run_name;
+  s.run_number = controls.run_number;
   const std::string model_path =
       opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;
   model::Model model;
@@ -134,6 +216,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
         << "\n  run the starter first (radx-starter " << root << "_0000.rad), or give it with --model FILE\n";
     return 1;
   }
+  if (StopSignals::received() != 0) return interrupted_early();
   // /RBODY/ON and /RBODY/OFF name rigid bodies of the model. Every body is active at the start of a run (one
   // with a sensor until the sensor releases it), so ON keeps it and OFF leaves it out of this run; an id the
   // model lacks switches nothing (a warning, as Radioss goes on too).
@@ -143,9 +226,6 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   check_rigid_body_switches(deck, body_ids, controls, model_diags);
   model_diags.sort();
   model_diags.print(err);
-  // Installed before the engine is set up: a signal that comes during it stops the run after its first cycle.
-  const StopSignals stop_signals;
-
   // Kinematic conditions check what the starter could not (a moving wall without mass, a rigid body
   // without inertia) and throw with a message; report it as an input error.
   std::unique_ptr<solver::ExplicitEngine> engine_ptr;
@@ -164,23 +244,10 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   }
   auto& engine = *engine_ptr;
 
-  // The run starts: nothing of an earlier run of this name may stay beside its outputs, where a script would
-  // take it for this run's. The summary goes first, and a "running" one replaces it once the states are gone,
-  // so a run killed outright leaves either no summary or one that says it did not finish.
-  const std::string summary_path = io::summary_json_path(opt.out_dir, root);
-  io::RunSummary s;
-  s.run_name = controls.run_name;
-  s.run_number = controls.run_number;
+  // A "running" summary replaces none (the earlier run's went first), so a run killed outright leaves either
+  // no summary or one that says it did not finish.
   s.nodes = model.nodes.size();
   s.elements = engine.element_count();
-  std::error_code ec;
-  fs::create_directories(opt.out_dir, ec);
-  try {
-    remove_earlier_outputs(opt.out_dir, root);
-  } catch (const std::exception& e) {
-    err << "radx-engine: error: " << e.what() << '\n';
-    return 1;
-  }
   const std::string listing_path = (fs::path(opt.out_dir) / (root + "_0001.out")).string();
   std::ofstream listing_file(listing_path, std::ios::trunc);
   if (!listing_file) {
