@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -122,23 +123,36 @@ io::EnergyBalance to_io(const solver::EnergyBalance& e) {
 
 }  // namespace
 
-RunLock::RunLock(const std::string& out_dir, const std::string& root) {
-  const std::string path = (fs::path(out_dir) / (root + ".lock")).string();
-  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw std::runtime_error("cannot open the lock file " + path + ": " + std::strerror(errno));
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    const int e = errno;
-    std::string holder;
-    char buf[32] = {};
-    if (::pread(fd_, buf, sizeof buf - 1, 0) > 0) holder = std::to_string(std::atoll(buf));
+// The file is removed as the lock is released, so a folder keeps no lock file after a run that ended. A
+// process that opened the file just before that holds a lock on a removed file: it checks, after locking,
+// that the path still names the file it locked, and starts again if not.
+RunLock::RunLock(const std::string& out_dir, const std::string& root)
+    : path_((fs::path(out_dir) / (root + ".lock")).string()) {
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw std::runtime_error("cannot open the lock file " + path_ + ": " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      const int e = errno;
+      std::string holder;
+      char buf[32] = {};
+      if (::pread(fd_, buf, sizeof buf - 1, 0) > 0) holder = std::to_string(std::atoll(buf));
+      ::close(fd_);
+      fd_ = -1;
+      if (e != EWOULDBLOCK) throw std::runtime_error("cannot lock " + path_ + ": " + std::strerror(e));
+      throw std::runtime_error("another radx process" +
+                               (holder.empty() || holder == "0" ? "" : " (pid " + holder + ")") +
+                               " is running " + root + " in " + out_dir + " (it holds " + path_ +
+                               "); wait for it to end, stop it, or give this run another output folder");
+    }
+    struct stat locked {};
+    struct stat named {};
+    if (::fstat(fd_, &locked) == 0 && ::stat(path_.c_str(), &named) == 0 && locked.st_ino == named.st_ino &&
+        locked.st_dev == named.st_dev)
+      break;
     ::close(fd_);
     fd_ = -1;
-    if (e != EWOULDBLOCK) throw std::runtime_error("cannot lock " + path + ": " + std::strerror(e));
-    throw std::runtime_error("another radx process" +
-                             (holder.empty() || holder == "0" ? "" : " (pid " + holder + ")") +
-                             " is running " + root + " in " + out_dir + " (it holds " + path +
-                             "); wait for it to end, stop it, or give this run another output folder");
   }
+  if (fd_ < 0) throw std::runtime_error("cannot lock " + path_ + ": it keeps being replaced");
   // The pid, for the message of a second run; written after the lock, so a reader sees the holder's.
   const std::string pid = std::to_string(::getpid()) + '\n';
   if (::ftruncate(fd_, 0) != 0 ||
@@ -147,18 +161,26 @@ RunLock::RunLock(const std::string& out_dir, const std::string& root) {
   }
 }
 
-RunLock::RunLock(RunLock&& o) noexcept : fd_(std::exchange(o.fd_, -1)) {}
+void RunLock::release() {
+  if (fd_ < 0) return;
+  ::unlink(path_.c_str());
+  ::close(fd_);
+  fd_ = -1;
+}
+
+RunLock::RunLock(RunLock&& o) noexcept : fd_(std::exchange(o.fd_, -1)), path_(std::move(o.path_)) {}
 
 RunLock& RunLock::operator=(RunLock&& o) noexcept {
   if (this != &o) {
-    if (fd_ >= 0) ::close(fd_);
+    release();
     fd_ = std::exchange(o.fd_, -1);
+    path_ = std::move(o.path_);
   }
   return *this;
 }
 
 RunLock::~RunLock() {
-  if (fd_ >= 0) ::close(fd_);
+  release();
 }
 
 void remove_earlier_engine_outputs(const std::string& out_dir, const std::string& root) {

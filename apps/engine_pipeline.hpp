@@ -26,8 +26,9 @@ void remove_earlier_engine_outputs(const std::string& out_dir, const std::string
 
 // An advisory lock (flock) on OUT_DIR/ROOT.lock for one run of that name in that folder, so two engines (or
 // an engine and a starter) of the same name never write into each other's outputs. The kernel releases it
-// when the process ends, however it ends; the file stays and holds the pid of the last holder. Throws
-// std::runtime_error naming the other process when the lock is held.
+// when the process ends, however it ends. The file holds the holder's pid and is removed when the lock is
+// released (a killed process leaves it, unlocked, for the next run to take). Throws std::runtime_error
+// naming the other process when the lock is held.
 class RunLock {
  public:
   RunLock() = default;
@@ -39,7 +40,9 @@ class RunLock {
   ~RunLock();
 
  private:
+  void release();
   int fd_ = -1;
+  std::string path_;
 };
 
 }  // namespace radx::app

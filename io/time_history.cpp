@@ -14,7 +14,7 @@
 //   skew user id per object, 0 for the global axes; only on a group with an object in a skew), object_kind
 //   (string, "" for the global group, which has one value per variable), title (string).
 //
-// - root dataset radx_rows (int64 [1]): the rows of every group written by the flushes that completed.
+// - root attribute radx_rows (int64): the rows of every group written by the flushes that completed.
 //
 // Why append in place: a long run (an end time of 1e30, a row every cycle) would otherwise hold every row
 // in memory and rewrite a file growing without bound. The first flush goes through `.part` and a rename (a
@@ -31,8 +31,8 @@
 // h5clear), but `h5clear -s` then shows the torn flush (groups of 1 and 4,097 rows). So each flush opens
 // the file as a SWMR writer (the 1.10 format): HDF5 then orders its metadata writes so that a SWMR reader
 // sees consistent metadata whenever the writer dies, though an extent may run ahead of the rows written
-// (those read as zeros). The rows go in and are flushed first, then radx_rows is raised (one 8-byte
-// write), then the file is closed, which clears the mark. Readers:
+// (those read as zeros). The rows go in and are flushed first, then radx_rows is raised (in the root's
+// object header, written whole), then the file is closed, which clears the mark. Readers:
 // - plain HDF5 readers (h5py) read a file closed by its last flush: every row of the completed flushes,
 //   radx_rows equal to the datasets' rows; a file killed inside a flush (some milliseconds a flush, a few
 //   flushes a second at most) they refuse with HDF5's "file is already open for write";
@@ -57,8 +57,8 @@ namespace radx::io {
 namespace {
 
 constexpr std::int64_t kFormatVersion = 1;
-// Root dataset int64 [1]: the rows of every group written by completed flushes.
-constexpr const char* kRowsDataset = "radx_rows";
+// Root attribute (int64): the rows of every group written by completed flushes.
+constexpr const char* kRowsAttr = "radx_rows";
 
 // A group of objects (a /TH group: it has an object kind) has variables per object, possibly no object
 // at all (a deck may list none, with a warning); a group without a kind (the global variables) has one
@@ -184,8 +184,8 @@ void TimeHistoryWriter::Impl::create_file() const {
       std::vector<std::string> paths;
       for (const auto& g : groups) paths.push_back(g.path);
       h5::write_string_array_attr(file, "groups", paths);
-      const std::vector<std::int64_t> complete{static_cast<std::int64_t>(buffered())};
-      h5::write_dataset(file, kRowsDataset, complete);
+      const auto complete = static_cast<std::int64_t>(buffered());
+      h5::write_attr(file, kRowsAttr, &complete);
       for (std::size_t i = 0; i < groups.size(); ++i) {
         const ThGroupLayout& g = groups[i];
         const std::size_t cols = 1 + value_count(g);
@@ -229,9 +229,9 @@ void TimeHistoryWriter::Impl::extend_file() const {
     h5::check(H5Fflush(file, H5F_SCOPE_LOCAL), "cannot flush file " + path);
     {
       const std::int64_t complete = static_cast<std::int64_t>(rows);
-      const std::string what = std::string("cannot write /") + kRowsDataset;
-      const h5::Handle ds(H5Dopen2(file, kRowsDataset, H5P_DEFAULT), H5Dclose, what);
-      h5::check(H5Dwrite(ds, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, &complete), what);
+      const std::string what = std::string("cannot write attribute ") + kRowsAttr + " of " + path;
+      const h5::Handle attr(H5Aopen(file, kRowsAttr, H5P_DEFAULT), H5Aclose, what);
+      h5::check(H5Awrite(attr, H5T_NATIVE_INT64, &complete), what);
     }
     file.close("cannot close file " + path);
   }
@@ -385,11 +385,9 @@ bool read_time_history(const std::string& path, std::vector<ThGroupData>& groups
     const std::string time_unit = h5::read_string_attr(file, "time_unit");
     // Files written before the count was kept have none: their rows are those of the datasets.
     std::int64_t complete = -1;
-    if (H5Lexists(file, kRowsDataset, H5P_DEFAULT) > 0) {
-      const auto v = h5::read_dataset<std::int64_t>(file, kRowsDataset);
-      if (v.size() != 1 || v[0] < 0)
-        throw h5::Failure(std::string("dataset /") + kRowsDataset + " is not one count");
-      complete = v[0];
+    if (h5::has_attr(file, kRowsAttr)) {
+      complete = h5::read_attr<std::int64_t>(file, kRowsAttr);
+      if (complete < 0) throw h5::Failure(std::string("root attribute ") + kRowsAttr + " is negative");
     }
     for (const auto& p : h5::read_string_array_attr(file, "groups")) {
       ThGroupData d;
@@ -424,7 +422,7 @@ bool read_time_history(const std::string& path, std::vector<ThGroupData>& groups
         const auto want = static_cast<std::size_t>(complete) * cols;
         if (d.rows.size() < want) {
           throw h5::Failure(where + " has " + std::to_string(d.rows.size() / cols) +
-                            " rows, fewer than the " + std::to_string(complete) + " of /" + kRowsDataset);
+                            " rows, fewer than the " + std::to_string(complete) + " of " + kRowsAttr);
         }
         d.rows.resize(want);
       }

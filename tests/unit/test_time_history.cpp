@@ -441,11 +441,11 @@ TEST_CASE("time history: rows past the count of complete rows are left out", "[t
   {
     const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
     REQUIRE(f >= 0);
-    const hid_t ds = H5Dopen2(f, "radx_rows", H5P_DEFAULT);
-    REQUIRE(ds >= 0);
+    const hid_t attr = H5Aopen(f, "radx_rows", H5P_DEFAULT);
+    REQUIRE(attr >= 0);
     const std::int64_t four = 4;
-    CHECK(H5Dwrite(ds, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, &four) >= 0);
-    H5Dclose(ds);
+    CHECK(H5Awrite(attr, H5T_NATIVE_INT64, &four) >= 0);
+    H5Aclose(attr);
     H5Fclose(f);
   }
   const auto groups = read_ok(path);
