@@ -200,7 +200,9 @@ inline Handle open_file_swmr_read(const std::string& path) {
 }
 
 // Without HDF5's file lock: a reader holding the file open (h5py, `radx th` during a run) would make the
-// writer's open fail, and with it the run. Readers of a file being extended see the rows of a flush.
+// writer's open fail, and with it the run. What keeps readers from a file being written is the 1.10
+// format's "open for writing" flag in the superblock, which HDF5 sets at this open and clears at the close
+// (files of the earliest format have none: a reader can then open the file while it is written).
 // `swmr`: as the single writer of SWMR (a 1.10-format file only): HDF5 then orders its metadata writes so
 // that a SWMR reader sees a consistent file at every moment, also after the writer is killed.
 inline Handle open_file_read_write(const std::string& path, bool swmr = false) {

@@ -1,8 +1,9 @@
 // Time history P_th.h5 (results-format.md section 7): one dataset per group of variables, rows in time,
 // time as the first column, the variable names, object ids and units as attributes. The first flush
 // creates the file through `P_th.h5.part` and an atomic rename; later flushes append the rows held since
-// in place, so memory and the cost of a flush do not grow with the run. A killed run keeps what the last
-// flush wrote.
+// in place, so memory and the cost of a flush do not grow with the run. A run killed between flushes keeps
+// what the last flush wrote; one killed inside a flush leaves a file HDF5 readers refuse, which
+// read_time_history reads (the rows of the completed flushes) and rewrite_time_history makes whole again.
 #pragma once
 
 #include <cstdint>
