@@ -2,21 +2,32 @@
 
 #include "apps/engine_outputs.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <ostream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "io/engine_listing.hpp"
 #include "io/model_file.hpp"
+#include "io/results_writer.hpp"
 #include "io/summary_json.hpp"
 #include "parser/build_run_controls.hpp"
 #include "parser/deck.hpp"
@@ -51,14 +62,41 @@ io::StepSource source_of(solver::StepControl::Kind k) {
 std::atomic<int> g_stop_signal{0};
 static_assert(std::atomic<int>::is_always_lock_free, "a signal handler may only touch lock-free atomics");
 
-void on_stop_signal(int signo) {
-  g_stop_signal.store(signo, std::memory_order_relaxed);
+// The first signal asks for the stop; a second one of the other kind, or of the same kind at least half a
+// second later, ends the engine at once (for a user who will not wait for the last state): its default action
+// is restored and the signal raised again, delivered as the handler returns. The same signal again sooner is
+// the same request sent twice: `timeout` signals the engine and then its process group, and a script may
+// signal both the process and its group, microseconds apart; ending at once then would lose the last state
+// the first one asked for.
+// (SA_RESETHAND would reset only the signal caught, so SIGTERM then SIGINT would still wait.) signal(),
+// raise() and clock_gettime() are async-signal-safe.
+std::atomic<std::int64_t> g_first_signal_ns{0};
+static_assert(std::atomic<std::int64_t>::is_always_lock_free,
+              "a signal handler may only touch lock-free atomics");
+constexpr std::int64_t kRepeatedSignalNs = 500'000'000;
+
+std::int64_t monotonic_ns() {
+  timespec t{};
+  ::clock_gettime(CLOCK_MONOTONIC, &t);
+  return static_cast<std::int64_t>(t.tv_sec) * 1'000'000'000 + t.tv_nsec;
 }
 
-// The handlers for the time of one run; the previous ones come back after it. SA_RESETHAND: a second signal
-// meets the default action and ends the engine at once, for a user who will not wait for the last state.
-// SA_RESTART: a write to the output files carries on through the signal. A signal the engine was started
-// with ignored (nohup, a background job) stays ignored.
+void on_stop_signal(int signo) {
+  int none = 0;
+  if (g_stop_signal.compare_exchange_strong(none, signo, std::memory_order_relaxed)) {
+    g_first_signal_ns.store(monotonic_ns(), std::memory_order_relaxed);
+    return;
+  }
+  if (signo == g_stop_signal.load(std::memory_order_relaxed) &&
+      monotonic_ns() - g_first_signal_ns.load(std::memory_order_relaxed) < kRepeatedSignalNs)
+    return;
+  ::signal(signo, SIG_DFL);
+  ::raise(signo);
+}
+
+// The handlers for the time of one run; the previous ones come back after it. SA_RESTART: a write to the
+// output files carries on through the signal. A signal the engine was started with ignored (nohup, a
+// background job) stays ignored.
 class StopSignals {
  public:
   StopSignals() {
@@ -66,7 +104,7 @@ class StopSignals {
     struct sigaction sa {};
     sa.sa_handler = on_stop_signal;
     sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESETHAND | SA_RESTART;
+    sa.sa_flags = SA_RESTART;
     for (std::size_t k = 0; k < kSignals.size(); ++k) {
       sigaction(kSignals[k], &sa, &previous_[k]);
       if (previous_[k].sa_handler == SIG_IGN) sigaction(kSignals[k], &previous_[k], nullptr);
@@ -138,7 +176,100 @@ std::string starter_hint(const std::string& model_path, const std::string& root)
 
 }  // namespace
 
+// The file is removed as the lock is released, so a folder keeps no lock file after a run that ended. A
+// process that opened the file just before that holds a lock on a removed file: it checks, after locking,
+// that the path still names the file it locked, and starts again if not.
+RunLock::RunLock(const std::string& out_dir, const std::string& root)
+    : path_((fs::path(out_dir) / (root + ".lock")).string()) {
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw std::runtime_error("cannot open the lock file " + path_ + ": " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      const int e = errno;
+      std::string holder;
+      char buf[32] = {};
+      if (::pread(fd_, buf, sizeof buf - 1, 0) > 0) holder = std::to_string(std::atoll(buf));
+      ::close(fd_);
+      fd_ = -1;
+      if (e != EWOULDBLOCK) throw std::runtime_error("cannot lock " + path_ + ": " + std::strerror(e));
+      throw std::runtime_error("another radx process" +
+                               (holder.empty() || holder == "0" ? "" : " (pid " + holder + ")") +
+                               " is running " + root + " in " + out_dir + " (it holds " + path_ +
+                               "); wait for it to end, stop it, or give this run another output folder");
+    }
+    struct stat locked {};
+    struct stat named {};
+    if (::fstat(fd_, &locked) == 0 && ::stat(path_.c_str(), &named) == 0 && locked.st_ino == named.st_ino &&
+        locked.st_dev == named.st_dev)
+      break;
+    ::close(fd_);
+    fd_ = -1;
+  }
+  if (fd_ < 0) throw std::runtime_error("cannot lock " + path_ + ": it keeps being replaced");
+  // The pid, for the message of a second run; written after the lock, so a reader sees the holder's.
+  const std::string pid = std::to_string(::getpid()) + '\n';
+  if (::ftruncate(fd_, 0) != 0 ||
+      ::pwrite(fd_, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size())) {
+    // The lock holds without the pid; a second run's message then names no process.
+  }
+}
+
+void RunLock::release() {
+  if (fd_ < 0) return;
+  ::unlink(path_.c_str());
+  ::close(fd_);
+  fd_ = -1;
+}
+
+RunLock::RunLock(RunLock&& o) noexcept : fd_(std::exchange(o.fd_, -1)), path_(std::move(o.path_)) {}
+
+RunLock& RunLock::operator=(RunLock&& o) noexcept {
+  if (this != &o) {
+    release();
+    fd_ = std::exchange(o.fd_, -1);
+    path_ = std::move(o.path_);
+  }
+  return *this;
+}
+
+RunLock::~RunLock() {
+  release();
+}
+
+void remove_earlier_engine_outputs(const std::string& out_dir, const std::string& root) {
+  remove_earlier_outputs(out_dir, root);
+  io::remove_result_set(out_dir, root);
+}
+
 int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
+  // Before anything that takes time (reading the deck and the model, setting up): a signal during it stops
+  // the run before its first cycle, and the default action (an end without a summary) never meets it.
+  const StopSignals stop_signals;
+  const std::string root = run_output_root(opt.engine_deck);
+  // The run starts: nothing of an earlier run of this name may stay beside its outputs, where a script would
+  // take it for this run's, even if this run is refused or killed before its first cycle.
+  std::error_code ec;
+  fs::create_directories(opt.out_dir, ec);
+  RunLock lock;
+  try {
+    lock = RunLock(opt.out_dir, root);
+    remove_earlier_engine_outputs(opt.out_dir, root);
+  } catch (const std::exception& e) {
+    err << "radx-engine: error: " << e.what() << '\n';
+    return 1;
+  }
+  const std::string summary_path = io::summary_json_path(opt.out_dir, root);
+  io::RunSummary s;
+  // A stop signal before the engine runs: the summary says so, and the exit code is the signal's.
+  auto interrupted_early = [&]() {
+    const int signo = StopSignals::received();
+    s.status = io::RunStatus::Interrupted;
+    s.message = "interrupted by " + signal_name(signo) + " before the first cycle";
+    std::string ignored;
+    io::write_summary_json(summary_path, s, ignored);
+    err << "radx-engine: " << s.message << '\n';
+    return 128 + signo;
+  };
   Diagnostics diags;
   EngineDeck deck;
   model::RunControls controls = read_run_controls(opt.engine_deck, diags, &deck);
@@ -149,7 +280,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
         << "; nothing was run\n";
     return 1;
   }
-  const std::string root = run_output_root(opt.engine_deck);
+  s.run_name = controls.run_name;
+  s.run_number = controls.run_number;
   const std::string model_path =
       opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;
   model::Model model;
@@ -159,6 +291,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     err << starter_hint(model_path, root);
     return 1;
   }
+  if (StopSignals::received() != 0) return interrupted_early();
   // /RBODY/ON and /RBODY/OFF name rigid bodies of the model. Every body is active at the start of a run (one
   // with a sensor until the sensor releases it), so ON keeps it and OFF leaves it out of this run; an id the
   // model lacks switches nothing (a warning, as Radioss goes on too).
@@ -170,9 +303,6 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   check_cycle_count(deck, controls, model, model::estimate_stable_step(model), model_diags);
   model_diags.sort();
   model_diags.print(err);
-  // Installed before the engine is set up: a signal that comes during it stops the run after its first cycle.
-  const StopSignals stop_signals;
-
   // Kinematic conditions check what the starter could not (a moving wall without mass, a rigid body
   // without inertia) and throw with a message; report it as an input error.
   std::unique_ptr<solver::ExplicitEngine> engine_ptr;
@@ -191,26 +321,13 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   }
   auto& engine = *engine_ptr;
 
-  // The run starts: nothing of an earlier run of this name may stay beside its outputs, where a script would
-  // take it for this run's. The summary goes first, and a "running" one replaces it once the states are gone,
-  // so a run killed outright leaves either no summary or one that says it did not finish.
-  const std::string summary_path = io::summary_json_path(opt.out_dir, root);
-  io::RunSummary s;
-  s.run_name = controls.run_name;
-  s.run_number = controls.run_number;
+  // A "running" summary replaces none (the earlier run's went first), so a run killed outright leaves either
+  // no summary or one that says it did not finish.
   s.nodes = model.nodes.size();
   s.elements = engine.element_count();
   for (const auto* list : {&diags, &model_diags})
     for (const auto& d : list->items())
       if (d.severity == Severity::Warning) s.add_warning(Diagnostics::format(d));
-  std::error_code ec;
-  fs::create_directories(opt.out_dir, ec);
-  try {
-    remove_earlier_outputs(opt.out_dir, root);
-  } catch (const std::exception& e) {
-    err << "radx-engine: error: " << e.what() << '\n';
-    return 1;
-  }
   const std::string listing_path = (fs::path(opt.out_dir) / (root + "_0001.out")).string();
   std::ofstream listing_file(listing_path, std::ios::trunc);
   if (!listing_file) {

@@ -19,4 +19,30 @@ struct EngineOptions {
 // 0 normal termination, 1 input error or error termination.
 int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err);
 
+// Removes what an earlier engine run of `root` left in `out_dir` (summary, energy files, time history,
+// states and their indexes), so no file beside a new run's outputs is older than the run. The starter calls
+// it too: a new model makes the earlier results another model's. Throws naming a file it cannot remove.
+void remove_earlier_engine_outputs(const std::string& out_dir, const std::string& root);
+
+// An advisory lock (flock) on OUT_DIR/ROOT.lock for one run of that name in that folder, so two engines (or
+// an engine and a starter) of the same name never write into each other's outputs. The kernel releases it
+// when the process ends, however it ends. The file holds the holder's pid and is removed when the lock is
+// released (a killed process leaves it, unlocked, for the next run to take). Throws std::runtime_error
+// naming the other process when the lock is held.
+class RunLock {
+ public:
+  RunLock() = default;
+  RunLock(const std::string& out_dir, const std::string& root);
+  RunLock(RunLock&& o) noexcept;
+  RunLock& operator=(RunLock&& o) noexcept;
+  RunLock(const RunLock&) = delete;
+  RunLock& operator=(const RunLock&) = delete;
+  ~RunLock();
+
+ private:
+  void release();
+  int fd_ = -1;
+  std::string path_;
+};
+
 }  // namespace radx::app

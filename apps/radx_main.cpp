@@ -37,12 +37,14 @@ void usage(std::ostream& os) {
         "                              --allow-substitutions: run the nearest formulation radx implements\n"
         "                              where the deck asks for one it lacks (each is listed) instead of\n"
         "                              refusing the deck\n"
-        "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]...]\n"
+        "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]...] | th FILE --recover\n"
         "                              a time history P_th.h5: without --csv, list its groups (objects,\n"
         "                              variables, units, rows, time range); with --csv, write the chosen\n"
         "                              columns (all by default) as CSV to OUT.csv or standard output.\n"
         "                              SELECTOR: a group (node/1), a column (global:IE, node/1:12:DX) or an\n"
-        "                              object's columns (node/1:12); '*' and '?' are wildcards; repeatable\n"
+        "                              object's columns (node/1:12); '*' and '?' are wildcards; repeatable.\n"
+        "                              --recover: rewrite a file whose run was killed inside a flush (HDF5\n"
+        "                              readers refuse it) with the rows of the flushes that completed\n"
         "  regress DIR... [--tol PCT] [--timeout SECONDS] [--threads N] [--work DIR] [--keep]\n"
         "          [--summary FILE]\n"
         "                              run every deck under the folders (NAME_0000.rad, or a one-file "
@@ -160,7 +162,7 @@ int keywords(const std::vector<std::string>& args) {
 // Parsing only: reading, selecting and writing are io's (io/time_history_export.hpp).
 int th(const std::vector<std::string>& args) {
   std::string file, output;
-  bool csv = false, have_output = false;
+  bool csv = false, have_output = false, recover = false;
   std::vector<std::string> selectors;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -170,6 +172,8 @@ int th(const std::vector<std::string>& args) {
     }
     if (a == "--csv") {
       csv = true;
+    } else if (a == "--recover") {
+      recover = true;
     } else if (a == "-o" || a == "--output") {
       output = args[++i];
       have_output = true;
@@ -195,9 +199,33 @@ int th(const std::vector<std::string>& args) {
   }
   std::vector<radx::io::ThGroupData> groups;
   std::string error;
-  if (!radx::io::read_time_history(file, groups, error)) {
+  bool interrupted = false;
+  if (!radx::io::read_time_history(file, groups, error, &interrupted)) {
     std::cerr << "radx th: " << error << '\n';
     return radx::app::kExitInputError;
+  }
+  if (recover) {
+    if (!interrupted) {
+      std::cerr << "radx th: " << file << " is complete: nothing to recover\n";
+      return radx::app::kExitOk;
+    }
+    if (!radx::io::rewrite_time_history(file, groups, error)) {
+      std::cerr << "radx th: cannot recover " << error << '\n';
+      return radx::app::kExitInputError;
+    }
+    std::cerr << "radx th: " << file << " rewritten with the rows of the flushes that completed\n";
+    return radx::app::kExitOk;
+  }
+  // Other HDF5 readers refuse such a file ("already open for write"); h5clear alone would let them read
+  // the unfinished flush's rows.
+  if (interrupted) {
+    std::cerr
+        << "radx th: warning: " << file
+        << " was being written when its run was killed (or a flush is under way now); read: the rows of "
+           "the flushes that completed. Other HDF5 readers refuse the file: `radx th "
+        << file
+        << " --recover` rewrites it with these rows (do not use h5clear -s, which would let "
+           "them read the unfinished flush's rows)\n";
   }
   if (!csv) {
     radx::io::list_time_history(file, groups, std::cout);

@@ -1,5 +1,7 @@
 #include "apps/starter_pipeline.hpp"
 
+#include "apps/engine_pipeline.hpp"
+
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -72,6 +74,22 @@ bool write_text_atomically(const std::string& path, const std::string& text, std
 StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ostream& err) {
   const auto t0 = std::chrono::steady_clock::now();
   StarterResult res;
+  // A new model makes the engine results of this name another model's: removed first, also when the deck
+  // is refused, so none is left beside the new listing. Under the run's lock: not under a running engine.
+  RunLock lock;
+  if (opt.write_outputs) {
+    try {
+      std::error_code ec;
+      fs::create_directories(opt.out_dir, ec);
+      lock = RunLock(opt.out_dir, run_output_root(opt.deck));
+      remove_earlier_engine_outputs(opt.out_dir, run_output_root(opt.deck));
+    } catch (const std::exception& e) {
+      err << "radx-starter: error: " << e.what() << '\n';
+      res.errors = 1;
+      res.exit_code = 1;
+      return res;
+    }
+  }
   Diagnostics diags;
   ReadOptions read_opt;
   read_opt.allow_substitutions = opt.allow_substitutions;

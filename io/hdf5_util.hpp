@@ -169,9 +169,14 @@ inline Handle simple_space(const std::vector<hsize_t>& dims, const std::string& 
 
 // Creates (truncates) `path` for writing. The close degree SEMI makes closing the file fail, instead of
 // being silently deferred, if an object of it were still open: a successful close() means all written.
-inline Handle create_file(const std::string& path) {
+// `marked` writes the 1.10 file format (superblock version 3, checksummed metadata), whose superblock
+// holds a "file open for writing" flag: set as the file is opened for writing, cleared as it is closed,
+// so a reader refuses a file whose writer was killed before closing it.
+inline Handle create_file(const std::string& path, bool marked = false) {
   const Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a file access list");
   check(H5Pset_fclose_degree(fapl, H5F_CLOSE_SEMI), "cannot set the file close degree");
+  if (marked)
+    check(H5Pset_libver_bounds(fapl, H5F_LIBVER_V110, H5F_LIBVER_V110), "cannot set the file format");
   return Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose,
                 "cannot create file " + path);
 }
@@ -180,13 +185,33 @@ inline Handle open_file_read_only(const std::string& path) {
   return Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open file " + path);
 }
 
+// HDF5's message when a file's "open for writing" flag is set (a writer has it open, or was killed).
+inline bool open_for_write_refusal(const std::string& message) {
+  return message.find("already open for") != std::string::npos;
+}
+
+// As a single-writer/multi-reader (SWMR) reader: opens a 1.10-format file whose SWMR writer has it open or
+// was killed with it open, as HDF5 ordered its writes so that such a reader sees consistent metadata.
+inline Handle open_file_swmr_read(const std::string& path) {
+  const Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a file access list");
+  check(H5Pset_file_locking(fapl, false, true), "cannot set the file locking");
+  return Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, fapl), H5Fclose,
+                "cannot open file " + path);
+}
+
 // Without HDF5's file lock: a reader holding the file open (h5py, `radx th` during a run) would make the
-// writer's open fail, and with it the run. Readers of a file being extended see the rows of a flush.
-inline Handle open_file_read_write(const std::string& path) {
+// writer's open fail, and with it the run. What keeps readers from a file being written is the 1.10
+// format's "open for writing" flag in the superblock, which HDF5 sets at this open and clears at the close
+// (files of the earliest format have none: a reader can then open the file while it is written).
+// `swmr`: as the single writer of SWMR (a 1.10-format file only): HDF5 then orders its metadata writes so
+// that a SWMR reader sees a consistent file at every moment, also after the writer is killed.
+inline Handle open_file_read_write(const std::string& path, bool swmr = false) {
   const Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a file access list");
   check(H5Pset_fclose_degree(fapl, H5F_CLOSE_SEMI), "cannot set the file close degree");
   check(H5Pset_file_locking(fapl, false, true), "cannot set the file locking");
-  return Handle(H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl), H5Fclose, "cannot open file " + path);
+  if (swmr) check(H5Pset_libver_bounds(fapl, H5F_LIBVER_V110, H5F_LIBVER_V110), "cannot set the file format");
+  return Handle(H5Fopen(path.c_str(), H5F_ACC_RDWR | (swmr ? H5F_ACC_SWMR_WRITE : 0u), fapl), H5Fclose,
+                "cannot open file " + path);
 }
 
 // Flushes a closed file's data to disk. Called before renaming `name.part` to `name`, so a system crash

@@ -217,13 +217,11 @@ struct ResultsWriter::Impl {
   void index_last_state();
 };
 
-// Removes what an earlier run of the same prefix left in the folder, so the new indexes never sit next to
-// states of another run (a longer earlier run would leave P_000042.hdf that no index lists but a user
-// opening the folder as a file group would load).
-void ResultsWriter::Impl::remove_earlier_run() const {
+void remove_result_set(const std::string& dir, const std::string& prefix) {
+  const std::string mesh = prefix + ".mesh.hdf";
   const std::array<std::string, 6> fixed{
-      prefix + ".hdf.series", prefix + ".hdf.series.tmp", prefix + ".xmf", prefix + ".xmf.tmp", mesh_name(),
-      mesh_name() + ".part"};
+      prefix + ".hdf.series", prefix + ".hdf.series.tmp", prefix + ".xmf", prefix + ".xmf.tmp", mesh,
+      mesh + ".part"};
   std::error_code ec;
   for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
     const std::string name = e.path().filename().string();
@@ -235,7 +233,16 @@ void ResultsWriter::Impl::remove_earlier_run() const {
     if (removed)
       throw h5::Failure("cannot remove " + e.path().string() + " of an earlier run: " + removed.message());
   }
-  if (ec) throw h5::Failure("cannot list folder " + dir + ": " + ec.message());
+  // A folder that does not exist holds nothing to remove.
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    throw h5::Failure("cannot list folder " + dir + ": " + ec.message());
+}
+
+// Removes what an earlier run of the same prefix left in the folder, so the new indexes never sit next to
+// states of another run (a longer earlier run would leave P_000042.hdf that no index lists but a user
+// opening the folder as a file group would load).
+void ResultsWriter::Impl::remove_earlier_run() const {
+  remove_result_set(dir, prefix);
 }
 
 void ResultsWriter::Impl::write_mesh(const model::Model& model) {

@@ -35,6 +35,11 @@ struct ResultState {
   std::vector<std::span<const float>> arrays;    // one per ResultArray of the set, [N * components]
 };
 
+// Removes the result set of prefix `prefix` in `dir` (state files, the mesh, both indexes and their stray
+// .part/.tmp files); nothing when `dir` does not exist. Throws std::runtime_error naming a file it cannot
+// remove.
+void remove_result_set(const std::string& dir, const std::string& prefix);
+
 class ResultsWriter {
  public:
   // Starts the result set of prefix `prefix` in `dir` (created if needed): removes what an earlier run

@@ -14,14 +14,33 @@
 //   skew user id per object, 0 for the global axes; only on a group with an object in a skew), object_kind
 //   (string, "" for the global group, which has one value per variable), title (string).
 //
+// - root attribute radx_rows (int64): the rows of every group written by the flushes that completed.
+//
 // Why append in place: a long run (an end time of 1e30, a row every cycle) would otherwise hold every row
-// in memory and rewrite a file growing without bound. The first flush still goes through `.part` and a
-// rename (a new file, or an earlier run's replaced whole); each later flush opens the file, extends every
-// dataset, writes the rows held, closes and syncs it. No HDF5 handle stays open between flushes, so other
-// programs can read the file during the run, and a process killed between two flushes leaves the file as
-// the last flush closed it. A kill inside a flush (milliseconds, once a second at most) can leave that
-// flush's rows partly written; the earlier rows are not rewritten. The default (earliest) file format has
-// no "open for writing" mark that would make HDF5 refuse the file after such a kill.
+// in memory and rewrite a file growing without bound. The first flush goes through `.part` and a rename (a
+// new file, or an earlier run's replaced whole); each later flush opens the file, extends every dataset,
+// writes the rows held, closes and syncs it. No HDF5 handle stays open between flushes, so other programs
+// can read the file during the run, and a run killed between two flushes leaves the file as the last flush
+// closed it.
+//
+// A kill inside a flush. HDF5 writes dataset extents, chunk indexes and the end of file as it closes, in no
+// order of its own: killed in the earliest file format, a reader saw one group with 4,097 rows (3,990 of
+// them zeros) and the others with 1, or "addr overflow". Measured alternatives (a SIGKILL at every pwrite
+// of two flushes, tests/scripts/check_th_kill_sweep.py): the 1.10 format alone marks the file "open for
+// writing" while a flush runs, so HDF5 readers refuse a file killed inside one (HDF5's own message, naming
+// h5clear), but `h5clear -s` then shows the torn flush (groups of 1 and 4,097 rows). So each flush opens
+// the file as a SWMR writer (the 1.10 format): HDF5 then orders its metadata writes so that a SWMR reader
+// sees consistent metadata whenever the writer dies, though an extent may run ahead of the rows written
+// (those read as zeros). The rows go in and are flushed first, then radx_rows is raised (in the root's
+// object header, written whole), then the file is closed, which clears the mark. Readers:
+// - plain HDF5 readers (h5py) read a file closed by its last flush: every row of the completed flushes,
+//   radx_rows equal to the datasets' rows; a file killed inside a flush (some milliseconds a flush, a few
+//   flushes a second at most) they refuse with HDF5's "file is already open for write";
+// - read_time_history (`radx th`) reads such a file too, as a SWMR reader, keeping radx_rows rows, and
+//   says the run was killed inside a flush; `radx th FILE --recover` rewrites the file with those rows, for
+//   every reader. h5clear would expose the torn flush instead.
+// - a read during a flush is refused like a killed file (plain readers) or reads the completed flushes.
+// Cost: per flush, an open, the extends, one extra metadata flush and an fsync; nothing grows with the run.
 #include "io/time_history.hpp"
 
 #include <algorithm>
@@ -38,6 +57,8 @@ namespace radx::io {
 namespace {
 
 constexpr std::int64_t kFormatVersion = 1;
+// Root attribute (int64): the rows of every group written by completed flushes.
+constexpr const char* kRowsAttr = "radx_rows";
 
 // A group of objects (a /TH group: it has an object kind) has variables per object, possibly no object
 // at all (a deck may list none, with a warning); a group without a kind (the global variables) has one
@@ -137,6 +158,7 @@ struct TimeHistoryWriter::Impl {
   std::string time_unit;
   ThFlushPolicy policy;
   std::size_t max_buffered = 1;           // rows held before append flushes them
+  std::size_t row_values = 1;             // values a row, time columns included
   std::vector<std::vector<double>> data;  // per group, the rows not yet in the file: [rows][1 + values]
   std::size_t rows = 0;                   // appended in all
   std::size_t on_disk = 0;                // rows in the file
@@ -156,12 +178,14 @@ void TimeHistoryWriter::Impl::create_file() const {
   const std::string part = path + ".part";
   try {
     {
-      h5::Handle file = h5::create_file(part);
+      h5::Handle file = h5::create_file(part, true);
       h5::write_attr(file, "radx_th_format_version", &kFormatVersion);
       h5::write_string_attr(file, "time_unit", time_unit);
       std::vector<std::string> paths;
       for (const auto& g : groups) paths.push_back(g.path);
       h5::write_string_array_attr(file, "groups", paths);
+      const auto complete = static_cast<std::int64_t>(buffered());
+      h5::write_attr(file, kRowsAttr, &complete);
       for (std::size_t i = 0; i < groups.size(); ++i) {
         const ThGroupLayout& g = groups[i];
         const std::size_t cols = 1 + value_count(g);
@@ -193,16 +217,41 @@ void TimeHistoryWriter::Impl::create_file() const {
 
 // Later flushes extend every dataset in place to the same absolute row count and write the new rows at
 // the same absolute offset, so a failed flush retried later writes the same rows to the same places.
+// The rows go in first and are flushed (SWMR orders those writes); only then is the count of complete rows
+// raised, one 8-byte write, so a reader that honours the count never reads a row of an unfinished flush.
 void TimeHistoryWriter::Impl::extend_file() const {
   {
-    h5::Handle file = h5::open_file_read_write(path);
+    h5::Handle file = h5::open_file_read_write(path, true);
     for (std::size_t i = 0; i < groups.size(); ++i) {
       const std::size_t cols = 1 + value_count(groups[i]);
       h5::append_rows<double>(file, groups[i].path, data[i], cols, static_cast<hsize_t>(on_disk));
     }
+    h5::check(H5Fflush(file, H5F_SCOPE_LOCAL), "cannot flush file " + path);
+    {
+      const std::int64_t complete = static_cast<std::int64_t>(rows);
+      const std::string what = std::string("cannot write attribute ") + kRowsAttr + " of " + path;
+      const h5::Handle attr(H5Aopen(file, kRowsAttr, H5P_DEFAULT), H5Aclose, what);
+      h5::check(H5Awrite(attr, H5T_NATIVE_INT64, &complete), what);
+    }
     file.close("cannot close file " + path);
   }
   h5::sync_file(path);
+}
+
+// Rows enough for a flush are written only min_seconds after the last flush (it costs an open, an extend
+// and a sync, whatever the rows), unless they reach the memory cap; a long pause flushes what is held.
+bool th_flush_due(const ThFlushPolicy& policy, std::size_t rows, std::size_t row_values, double since_flush,
+                  double since_append) {
+  if (rows == 0) return false;
+  if (since_flush >= policy.max_seconds || since_append >= policy.max_seconds) return true;
+  row_values = std::max<std::size_t>(1, row_values);
+  // The memory cap: max_values for rows narrower than that (flushed as before, whatever the time: a fast
+  // run's rows must not pile up), cap_values for wider ones.
+  const std::size_t cap = row_values < policy.max_values ? policy.max_values : policy.cap_values;
+  if (rows >= std::max<std::size_t>(1, cap / row_values)) return true;
+  const std::size_t enough =
+      std::max<std::size_t>(1, std::min(policy.max_rows, policy.max_values / row_values));
+  return rows >= enough && since_flush >= policy.min_seconds;
 }
 
 TimeHistoryWriter::TimeHistoryWriter(std::string path, std::vector<ThGroupLayout> groups,
@@ -215,6 +264,7 @@ TimeHistoryWriter::TimeHistoryWriter(std::string path, std::vector<ThGroupLayout
   impl_->policy = policy;
   std::size_t row_values = 0;
   for (const auto& g : impl_->groups) row_values += 1 + value_count(g);
+  impl_->row_values = row_values;
   impl_->max_buffered = std::max<std::size_t>(1, std::min(policy.max_rows, policy.max_values / row_values));
   impl_->data.resize(impl_->groups.size());
 }
@@ -253,8 +303,8 @@ void TimeHistoryWriter::append(double time, const std::vector<std::span<const do
   const auto seconds_since = [&](std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(now - t).count();
   };
-  const bool due = m.buffered() >= m.max_buffered || seconds_since(m.last_flush) >= m.policy.max_seconds ||
-                   seconds_since(m.last_append) >= m.policy.max_seconds;
+  const bool due = th_flush_due(m.policy, m.buffered(), m.row_values, seconds_since(m.last_flush),
+                                seconds_since(m.last_append));
   m.last_append = now;
   if (due) flush();
 }
@@ -290,13 +340,40 @@ std::size_t TimeHistoryWriter::rows() const {
   return impl_->rows;
 }
 
-bool read_time_history(const std::string& path, std::vector<ThGroupData>& groups, std::string& error) {
+namespace {
+
+// A file whose "open for writing" flag is set (its run was killed inside a flush, or a flush is under way) is
+// opened as a SWMR reader, which HDF5 allows because the writer was a SWMR writer.
+h5::Handle open_for_reading(const std::string& path, bool& interrupted) {
+  interrupted = false;
+  try {
+    return h5::open_file_read_only(path);
+  } catch (const h5::Failure& e) {
+    if (!h5::open_for_write_refusal(e.what())) throw;
+  }
+  interrupted = true;
+  try {
+    return h5::open_file_swmr_read(path);
+  } catch (const h5::Failure& e) {
+    throw h5::Failure(std::string("the file was being written when its run was killed (or a flush is under "
+                                  "way: retry in a moment), and cannot be read even so: ") +
+                      e.what() + "; run the engine again to write it anew");
+  }
+}
+
+}  // namespace
+
+bool read_time_history(const std::string& path, std::vector<ThGroupData>& groups, std::string& error,
+                       bool* interrupted) {
   groups.clear();
+  if (interrupted != nullptr) *interrupted = false;
   const h5::QuietHdf5 quiet;
   try {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw h5::Failure("no such file");
-    const h5::Handle file = h5::open_file_read_only(path);
+    bool killed = false;
+    const h5::Handle file = open_for_reading(path, killed);
+    if (interrupted != nullptr) *interrupted = killed;
     if (!h5::has_attr(file, "radx_th_format_version")) {
       throw h5::Failure("not a radx time-history file (no root attribute radx_th_format_version)");
     }
@@ -306,6 +383,12 @@ bool read_time_history(const std::string& path, std::vector<ThGroupData>& groups
                         ", this radx reads version " + std::to_string(kFormatVersion));
     }
     const std::string time_unit = h5::read_string_attr(file, "time_unit");
+    // Files written before the count was kept have none: their rows are those of the datasets.
+    std::int64_t complete = -1;
+    if (h5::has_attr(file, kRowsAttr)) {
+      complete = h5::read_attr<std::int64_t>(file, kRowsAttr);
+      if (complete < 0) throw h5::Failure(std::string("root attribute ") + kRowsAttr + " is negative");
+    }
     for (const auto& p : h5::read_string_array_attr(file, "groups")) {
       ThGroupData d;
       d.time_unit = time_unit;
@@ -334,10 +417,53 @@ bool read_time_history(const std::string& path, std::vector<ThGroupData>& groups
       }
       d.columns = cols;
       d.rows = h5::read_dataset<double>(file, p, cols);
+      // Rows past the count belong to a flush that did not complete (a killed run): left out.
+      if (complete >= 0) {
+        const auto want = static_cast<std::size_t>(complete) * cols;
+        if (d.rows.size() < want) {
+          throw h5::Failure(where + " has " + std::to_string(d.rows.size() / cols) +
+                            " rows, fewer than the " + std::to_string(complete) + " of " + kRowsAttr);
+        }
+        d.rows.resize(want);
+      }
       groups.push_back(std::move(d));
     }
   } catch (const std::exception& e) {
     groups.clear();
+    error = path + ": " + e.what();
+    return false;
+  }
+  return true;
+}
+
+bool rewrite_time_history(const std::string& path, const std::vector<ThGroupData>& groups,
+                          std::string& error) {
+  if (groups.empty()) {
+    error = path + ": no group to write";
+    return false;
+  }
+  try {
+    std::vector<ThGroupLayout> layouts;
+    for (const auto& g : groups) layouts.push_back(g.layout);
+    // One flush at the end: the file is replaced whole, through `.part` and a rename, or not at all.
+    const ThFlushPolicy once{.max_rows = SIZE_MAX,
+                             .max_values = SIZE_MAX,
+                             .max_seconds = 1e300,
+                             .min_seconds = 0,
+                             .cap_values = SIZE_MAX};
+    TimeHistoryWriter w(path, layouts, groups.front().time_unit, once);
+    const std::size_t n =
+        groups.front().columns == 0 ? 0 : groups.front().rows.size() / groups.front().columns;
+    std::vector<std::span<const double>> row(groups.size());
+    for (std::size_t r = 0; r < n; ++r) {
+      for (std::size_t g = 0; g < groups.size(); ++g) {
+        const std::size_t c = groups[g].columns;
+        row[g] = std::span<const double>(groups[g].rows).subspan(r * c + 1, c - 1);
+      }
+      w.append(groups.front().rows[r * groups.front().columns], row);
+    }
+    w.flush();
+  } catch (const std::exception& e) {
     error = path + ": " + e.what();
     return false;
   }

@@ -1,8 +1,9 @@
 // Time history P_th.h5 (results-format.md section 7): one dataset per group of variables, rows in time,
 // time as the first column, the variable names, object ids and units as attributes. The first flush
 // creates the file through `P_th.h5.part` and an atomic rename; later flushes append the rows held since
-// in place, so memory and the cost of a flush do not grow with the run. A killed run keeps what the last
-// flush wrote.
+// in place, so memory and the cost of a flush do not grow with the run. A run killed between flushes keeps
+// what the last flush wrote; one killed inside a flush leaves a file HDF5 readers refuse, which
+// read_time_history reads (the rows of the completed flushes) and rewrite_time_history makes whole again.
 #pragma once
 
 #include <cstdint>
@@ -30,12 +31,23 @@ struct ThGroupLayout {
 // When append flushes by itself: once it holds max_rows rows or max_values values (time columns
 // included; at least one row), or max_seconds of wall time after the last flush or the last row,
 // whichever comes first.
-// The defaults bound the rows held to about 2 MiB and what a killed run loses to one second.
+// The defaults bound the rows held to about 2 MiB (narrow rows) and what a killed run loses to one second.
+// Rows enough for a flush wait until min_seconds have passed since the last flush, up to a memory cap: at
+// most max_values values (2 MiB) for rows narrower than that, cap_values (32 MiB; at least one row) for
+// wider ones (a /TH of 40,000 nodes, which would otherwise flush every row). So the file is opened,
+// extended and synced a few times a second at most unless the cap is reached.
 struct ThFlushPolicy {
   std::size_t max_rows = 4096;
   std::size_t max_values = std::size_t{1} << 18;
   double max_seconds = 1.0;
+  double min_seconds = 0.2;
+  std::size_t cap_values = std::size_t{1} << 22;
 };
+
+// Whether append flushes now, holding `rows` rows of `row_values` values (time columns included), the last
+// flush `since_flush` seconds ago and the row before the last `since_append` seconds before it.
+bool th_flush_due(const ThFlushPolicy& policy, std::size_t rows, std::size_t row_values, double since_flush,
+                  double since_append);
 
 class TimeHistoryWriter {
  public:
@@ -81,7 +93,16 @@ struct ThGroupData {
 };
 // Reads every group of the file, in the order they were written. Returns false with `error` naming the
 // file (and the HDF5 object) when the file cannot be read or is not a radx time history of version 1.
-bool read_time_history(const std::string& path, std::vector<ThGroupData>& groups, std::string& error);
+// Reads only the rows of completed flushes. A file whose run was killed inside a flush (HDF5 readers other
+// than radx refuse it: its "open for writing" flag is set) is read too, and `*interrupted` is set then.
+bool read_time_history(const std::string& path, std::vector<ThGroupData>& groups, std::string& error,
+                       bool* interrupted = nullptr);
+
+// Writes `groups` (as read_time_history gives them) as a new time history at `path`, replacing the file
+// whole: how `radx th FILE --recover` makes the file of a run killed inside a flush readable again by every
+// HDF5 reader, with the rows of the flushes that completed. Returns false with `error` naming the file.
+bool rewrite_time_history(const std::string& path, const std::vector<ThGroupData>& groups,
+                          std::string& error);
 
 // The columns of a group, time first, named as ThColumn says (the `columns` attribute of the file holds
 // the same names without the "<group path>:" prefix).

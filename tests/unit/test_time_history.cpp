@@ -381,7 +381,8 @@ TEST_CASE("time history: append never holds more rows than the bound, the others
   TempDir dir;
   const std::string path = dir.file("P_th.h5");
   // 8 values per row (global 1 + 2, node/1 1 + 4): 40 values hold 5 rows, fewer than max_rows.
-  TimeHistoryWriter w(path, layouts(), "s", {.max_rows = 100, .max_values = 40, .max_seconds = 1e9});
+  TimeHistoryWriter w(path, layouts(), "s",
+                      {.max_rows = 100, .max_values = 40, .max_seconds = 1e9, .min_seconds = 0});
   REQUIRE(w.max_buffered_rows() == 5);
   for (int r = 0; r < 23; ++r) {
     INFO("row " << r);
@@ -400,6 +401,56 @@ TEST_CASE("time history: append never holds more rows than the bound, the others
   // A row wider than max_values is still held alone, then written.
   TimeHistoryWriter wide(dir.file("R_th.h5"), layouts(), "s", {.max_values = 2});
   CHECK(wide.max_buffered_rows() == 1);
+}
+
+// The flush policy alone, with the wall times given: rows = rows held, row_values = values a row.
+TEST_CASE("time history: flushes are due by rows held, memory cap and wall time", "[th]") {
+  using radx::io::th_flush_due;
+  const radx::io::ThFlushPolicy p{
+      .max_rows = 10, .max_values = 100, .max_seconds = 1.0, .min_seconds = 0.2, .cap_values = 1000};
+  // Narrow rows (8 values): 10 rows are enough, once 0.2 s have passed since the last flush.
+  CHECK_FALSE(th_flush_due(p, 0, 8, 5.0, 5.0));  // nothing held
+  CHECK_FALSE(th_flush_due(p, 9, 8, 0.5, 0.0));
+  CHECK(th_flush_due(p, 10, 8, 0.2, 0.0));
+  CHECK_FALSE(th_flush_due(p, 10, 8, 0.1, 0.0));
+  // The narrow rows' cap is max_values: 12 rows (96 values) are the most it holds, flushed whatever the time.
+  CHECK_FALSE(th_flush_due(p, 11, 8, 0.1, 0.0));
+  CHECK(th_flush_due(p, 12, 8, 0.1, 0.0));
+  // Wide rows (250 values, more than max_values): one row is enough, but held for 0.2 s unless the cap
+  // cap_values (4 rows) is reached: at most five flushes a second.
+  CHECK_FALSE(th_flush_due(p, 1, 250, 0.0, 0.0));
+  CHECK_FALSE(th_flush_due(p, 3, 250, 0.19, 0.0));
+  CHECK(th_flush_due(p, 4, 250, 0.0, 0.0));
+  CHECK(th_flush_due(p, 2, 250, 0.2, 0.0));
+  // A row wider than the cap is held alone and written.
+  CHECK(th_flush_due(p, 1, 5000, 0.0, 0.0));
+  // One second since the last flush, or a row after a pause of a second: written at once.
+  CHECK(th_flush_due(p, 1, 8, 1.0, 0.0));
+  CHECK(th_flush_due(p, 1, 8, 0.0, 1.0));
+}
+
+// A run killed inside a flush leaves rows past radx_rows (the flush not completed): they are not read.
+TEST_CASE("time history: rows past the count of complete rows are left out", "[th]") {
+  TempDir dir;
+  const std::string path = dir.file("P_th.h5");
+  {
+    TimeHistoryWriter w(path, layouts(), "s");
+    for (int r = 0; r < 6; ++r) append_row(w, r);
+    w.flush();
+  }
+  {
+    const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    REQUIRE(f >= 0);
+    const hid_t attr = H5Aopen(f, "radx_rows", H5P_DEFAULT);
+    REQUIRE(attr >= 0);
+    const std::int64_t four = 4;
+    CHECK(H5Awrite(attr, H5T_NATIVE_INT64, &four) >= 0);
+    H5Aclose(attr);
+    H5Fclose(f);
+  }
+  const auto groups = read_ok(path);
+  CHECK(groups[0].rows == global_rows(4));
+  CHECK(groups[1].rows == node_rows(4));
 }
 
 TEST_CASE("time history: with no wall time between flushes every row is written as it comes", "[th]") {

@@ -1,0 +1,141 @@
+"""What guards a run's outputs (issue 11, item 4): a refused or failed start leaves nothing of an earlier run, two
+engines of one name never share a folder, a second stop signal of either kind ends the engine at once.
+
+usage: /usr/bin/python3 check_run_guards.py --radx R --radx-starter S --radx-engine E --deck NAME_0000.rad --out DIR
+
+Checks, each after a normal `radx run` of the deck in DIR (its summary says "normal", its states, energy CSV and
+time history are there):
+  * a `radx run` whose starter refuses the deck (`abc` in a /NODE field: exit 1, RX202) leaves no summary,
+    state, index, time history or energy file (the starter removes the engine outputs of the name first);
+  * an engine whose model file cannot be read (exit 1) leaves none either (the engine removes them before it
+    reads anything, so a kill while it reads a big model leaves none);
+  * a second engine of the same name in the same folder, while the first runs, exits 1 at once with an error
+    naming the first one's pid, and writes nothing (the first run's summary still says "running");
+  * SIGTERM then, a few milliseconds later, SIGINT: the engine ends at once by SIGINT (the default action),
+    and SIGINT then SIGTERM ends it by SIGTERM;
+  * SIGTERM twice a millisecond apart (what `timeout` sends: to the engine, then to its process group) is one
+    request: the engine stops cleanly with exit 143, an "interrupted" summary and a last state.
+"""
+import argparse
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+from results_common import check, finish, listed_states
+
+
+def data_line(lines, keyword):
+    k = next(i for i, l in enumerate(lines) if l.startswith(keyword))
+    return next(i for i in range(k + 1, len(lines)) if not lines[i].startswith("#"))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--radx", required=True)
+    ap.add_argument("--radx-starter", required=True)
+    ap.add_argument("--radx-engine", required=True)
+    ap.add_argument("--deck", required=True)
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args()
+    shutil.rmtree(a.out, ignore_errors=True)
+    os.makedirs(a.out)
+    out = os.path.abspath(a.out)
+    base = os.path.basename(a.deck).replace("_0000.rad", "")
+    env = dict(os.environ, OMP_NUM_THREADS="1")
+    engine_outputs = lambda: sorted(f for f in os.listdir(out) if f.startswith(base) and (  # noqa: E731
+        f.endswith(("_summary.json", "_th.h5", "_energy.csv", "_energy.png", ".xmf", ".hdf.series", ".mesh.hdf"))
+        or f[len(base) + 1:-4].isdigit() and len(f) == len(base) + 11))
+
+    def normal_run():
+        r = subprocess.run([a.radx, "run", a.deck, "--out", out], capture_output=True, text=True, env=env)
+        if r.returncode != 0 or json.load(open(os.path.join(out, base + "_summary.json")))["status"] != "normal":
+            sys.exit("the normal run failed:\n" + r.stdout[-2000:] + r.stderr[-2000:])
+        if not os.path.exists(os.path.join(out, base + "_energy.csv")) or not listed_states(out, base):
+            sys.exit("the normal run left no energy CSV or no state")
+
+    # A refused starter deck, in a folder of its own beside the decks (the engine deck is found beside it).
+    bad_dir = os.path.join(out, "bad_deck")
+    os.makedirs(bad_dir)
+    lines = open(a.deck).read().splitlines()
+    k = data_line(lines, "/NODE")
+    lines[k] = lines[k][:10] + "%20s" % "abc" + lines[k][30:]
+    bad = os.path.join(bad_dir, os.path.basename(a.deck))
+    open(bad, "w").write("\n".join(lines) + "\n")
+    shutil.copy(a.deck.replace("_0000.rad", "_0001.rad"), bad_dir)
+    normal_run()
+    r = subprocess.run([a.radx, "run", bad, "--out", out], capture_output=True, text=True, env=env)
+    check(r.returncode == 1 and "RX202" in r.stdout + r.stderr, "the refused deck: exit %d, %s" % (
+        r.returncode, (r.stdout + r.stderr)[-1000:]))
+    left = engine_outputs()
+    check(not left, "a run refused by its starter leaves the earlier run's %s" % left)
+
+    # An engine that cannot read its model file.
+    normal_run()
+    engine_deck = os.path.join(out, base + "_0001.rad")
+    shutil.copy(a.deck.replace("_0000.rad", "_0001.rad"), engine_deck)
+    r = subprocess.run([a.radx_engine, engine_deck, "--out", out, "--model", os.path.join(out, "missing.hdf")],
+                       capture_output=True, text=True, env=env)
+    check(r.returncode == 1, "an engine without its model file: exit %d" % r.returncode)
+    left = engine_outputs()
+    check(not left, "an engine that cannot read its model leaves the earlier run's %s" % left)
+
+    # A long run for the lock and the signals: 50 times the end time, on one thread.
+    normal_run()
+    src_lines = open(a.deck.replace("_0000.rad", "_0001.rad")).read().splitlines()
+    k = data_line(src_lines, "/RUN/")
+    src_lines[k] = "%20.6g" % (50 * float(src_lines[k].split()[0]))
+    open(engine_deck, "w").write("\n".join(src_lines) + "\n")
+    summary = os.path.join(out, base + "_summary.json")
+
+    def start_long():
+        start = time.time()
+        p = subprocess.Popen([a.radx_engine, engine_deck, "--out", out, "--no-plot"], stdout=subprocess.DEVNULL,
+                             stderr=subprocess.DEVNULL, env=env)
+        deadline = time.time() + 60
+        while p.poll() is None and time.time() < deadline:
+            try:
+                # This run's summary (a killed run before it leaves one saying "running" too).
+                if (os.stat(summary).st_mtime >= start - 0.01 and json.load(open(summary))["status"] == "running"
+                        and len(listed_states(out, base)) >= 2):
+                    break
+            except (OSError, ValueError):
+                pass
+            time.sleep(0.01)
+        if p.poll() is not None:
+            sys.exit("the long run ended (exit %s) before it could be used" % p.returncode)
+        return p
+
+    first = start_long()
+    second = subprocess.run([a.radx_engine, engine_deck, "--out", out, "--no-plot"], capture_output=True,
+                            text=True, env=env, timeout=60)
+    check(second.returncode == 1 and ("pid %d" % first.pid) in second.stderr,
+          "a second engine of the same name: exit %d, %r" % (second.returncode, second.stderr[-500:]))
+    check(first.poll() is None and json.load(open(summary))["status"] == "running",
+          "the second engine disturbed the first one's summary")
+
+    for one, two in ((signal.SIGTERM, signal.SIGINT), (signal.SIGINT, signal.SIGTERM)):
+        p = first if one == signal.SIGTERM else start_long()
+        p.send_signal(one)
+        time.sleep(0.002)
+        p.send_signal(two)
+        p.wait(timeout=60)
+        check(p.returncode == -two, "%s then %s: the engine exits with %s, not killed by the second"
+              % (one.name, two.name, p.returncode))
+    p = start_long()
+    p.send_signal(signal.SIGTERM)
+    time.sleep(0.001)
+    p.send_signal(signal.SIGTERM)
+    p.wait(timeout=60)
+    status = json.load(open(summary))["status"]
+    check(p.returncode == 128 + signal.SIGTERM and status == "interrupted",
+          "SIGTERM twice within a millisecond: exit %s and status %r, not one clean stop (143, interrupted)"
+          % (p.returncode, status))
+    finish("a refused or failed start leaves no earlier output; one engine a name; a second signal ends the run")
+
+
+if __name__ == "__main__":
+    main()
