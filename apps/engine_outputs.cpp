@@ -90,8 +90,11 @@ std::int64_t user_id(const model::Model& m, model::ThKind k, std::int32_t i) {
 }  // namespace
 
 void remove_earlier_outputs(const std::string& out_dir, const std::string& root) {
-  for (const char* suffix : {"_summary.json", "_summary.json.part", "_energy.csv", "_energy.csv.part",
-                             "_energy.png", "_energy.png.part.png", "_th.h5", "_th.h5.part"}) {
+  // The engine listing too: an earlier run's "NORMAL TERMINATION" beside a refused run would read as this
+  // one's.
+  for (const char* suffix :
+       {"_0001.out", "_summary.json", "_summary.json.part", "_energy.csv", "_energy.csv.part", "_energy.png",
+        "_energy.png.part.png", "_th.h5", "_th.h5.part"}) {
     const std::filesystem::path p = std::filesystem::path(out_dir) / (root + suffix);
     std::error_code ec;
     std::filesystem::remove(p, ec);

@@ -11,8 +11,8 @@ time history are there):
     reads anything, so a kill while it reads a big model leaves none);
   * a second engine of the same name in the same folder, while the first runs, exits 1 at once with an error
     naming the first one's pid, and writes nothing (the first run's summary still says "running");
-  * SIGTERM then, a few milliseconds later, SIGINT: the engine ends at once by SIGINT (the default action),
-    and SIGINT then SIGTERM ends it by SIGTERM;
+  * SIGTERM then SIGINT, and SIGINT then SIGTERM: the engine ends at once, killed by a signal (the default
+    action), not by the clean exit a single signal gives;
   * SIGTERM twice a millisecond apart (what `timeout` sends: to the engine, then to its process group) is one
     request: the engine stops cleanly with exit 143, an "interrupted" summary and a last state.
 """
@@ -47,7 +47,8 @@ def main():
     base = os.path.basename(a.deck).replace("_0000.rad", "")
     env = dict(os.environ, OMP_NUM_THREADS="1")
     engine_outputs = lambda: sorted(f for f in os.listdir(out) if f.startswith(base) and (  # noqa: E731
-        f.endswith(("_summary.json", "_th.h5", "_energy.csv", "_energy.png", ".xmf", ".hdf.series", ".mesh.hdf"))
+        f.endswith(("_0001.out", "_summary.json", "_th.h5", "_energy.csv", "_energy.png", ".xmf", ".hdf.series",
+                    ".mesh.hdf"))
         or f[len(base) + 1:-4].isdigit() and len(f) == len(base) + 11))
 
     def normal_run():
@@ -119,11 +120,14 @@ def main():
 
     for one, two in ((signal.SIGTERM, signal.SIGINT), (signal.SIGINT, signal.SIGTERM)):
         p = first if one == signal.SIGTERM else start_long()
+        # Back to back: a clean stop of this small run takes only milliseconds, and a pause could let it
+        # finish before the second signal. Both may then be pending when the engine next runs, and the kernel
+        # delivers the lower-numbered first (SIGINT), so the one that kills may be either: the check is that
+        # a signal killed the engine, not the clean 143/130 exit of a first signal alone.
         p.send_signal(one)
-        time.sleep(0.002)
         p.send_signal(two)
         p.wait(timeout=60)
-        check(p.returncode == -two, "%s then %s: the engine exits with %s, not killed by the second"
+        check(p.returncode in (-one, -two), "%s then %s: the engine exits with %s, not killed by the second"
               % (one.name, two.name, p.returncode))
     p = start_long()
     p.send_signal(signal.SIGTERM)
