@@ -56,7 +56,10 @@ class Builder {
  public:
   Builder(const EngineDeck& deck, Diagnostics& diags) : deck_(deck), diags_(diags) {}
 
+  // A record with a value that is not a number was reported by the reader (RX202), and its unreadable value
+  // reads as 0: a range error about that 0 would be a second, wrong report of the same fault.
   void error(const EngineRecord& r, Diag code, std::string msg) {
+    if (r.has_unreadable) return;
     diags_.error(code, deck_.where(r.pos, 1), About{r.decl->path}, std::move(msg));
   }
   void warning(const EngineRecord& r, Diag code, std::string msg) {

@@ -124,7 +124,8 @@ struct EngineRecord {
   std::string written;
   SourcePos pos;
   std::vector<std::string> header;         // header field values as written
-  std::vector<std::vector<double>> lines;  // numbers per data line
+  std::vector<std::vector<double>> lines;  // numbers per data line (0 where a value is not a number)
+  bool has_unreadable = false;             // a value was not a number: reported by the reader
   std::vector<std::int64_t> ids;           // id_lines keywords
   std::vector<SourcePos> id_pos;           // the line of each id
   [[nodiscard]] double value(std::size_t line, std::size_t k, double dflt = 0.0) const;

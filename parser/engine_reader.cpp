@@ -215,6 +215,7 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
         for (std::size_t k = 0; k < parts.size(); ++k) {
           double v = 0;
           const auto st = parse_real(parts[k], v);
+          if (st != NumberStatus::Ok) rec.has_unreadable = true;
           if (st != NumberStatus::Ok && checked) {
             const std::string name =
                 k < ld.names.size() ? std::string(ld.names[k]) : "value " + std::to_string(k + 1);

@@ -212,3 +212,21 @@ TEST_CASE("the engine after a failed starter says the starter failed and where i
         std::string::npos);
   CHECK(r.err.find((dir.path() / "out" / "JC_SINGLE_BRICK_0000.out").string()) != std::string::npos);
 }
+
+TEST_CASE("an engine value that is not a number is reported once, not again as out of range",
+          "[engine][robust]") {
+  TempDir dir;
+  const std::string src = std::string(RADX_SOURCE_DIR) + "/decks/verification/jc_single_brick/";
+  std::string text = slurp(src + "JC_SINGLE_BRICK_0001.rad");
+  // Tstop on the line after /RUN: an unreadable Tstop reads as 0, which is also below the accepted range.
+  const std::string tstop = "                 0.1\n";
+  REQUIRE(text.find(tstop) != std::string::npos);
+  text.replace(text.find(tstop), tstop.size(), "                 abc\n");
+  const std::string engine = dir.write("JC_SINGLE_BRICK_0001.rad", text);
+  radx::Diagnostics diags;
+  radx::read_run_controls(engine, diags);
+  INFO(all(diags));
+  REQUIRE(diags.contains(Diag::BadReal));
+  CHECK(diags.error_count() == 1);
+  CHECK_FALSE(diags.contains(Diag::ValueOutOfRange));
+}
