@@ -9,7 +9,8 @@
 #include "parser/diagnostics.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string path = radx::fuzz::input_file(data, size, "ENGINE_0001.rad");
+  const radx::fuzz::InputFile input(data, size, "ENGINE_0001.rad");
+  const std::string& path = input.path();
   radx::Diagnostics diags;
   radx::EngineDeck deck;
   const radx::model::RunControls controls = radx::read_run_controls(path, diags, &deck);

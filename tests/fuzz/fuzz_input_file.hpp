@@ -13,15 +13,28 @@
 
 namespace radx::fuzz {
 
-inline std::string input_file(const std::uint8_t* data, std::size_t size, const char* name) {
-  std::error_code ec;
-  const std::filesystem::path dir =
-      std::filesystem::is_directory("/dev/shm", ec) ? "/dev/shm" : std::filesystem::temp_directory_path();
-  // One file per process: parallel fuzzing jobs must not read each other's inputs.
-  const std::string path = (dir / ("radx_fuzz_" + std::to_string(getpid()) + "_" + name)).string();
-  std::ofstream(path, std::ios::binary | std::ios::trunc)
-      .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-  return path;
-}
+// The input as a file for the time of one call; removed after it, so a fuzzing run leaves nothing behind.
+class InputFile {
+ public:
+  InputFile(const std::uint8_t* data, std::size_t size, const char* name) {
+    std::error_code ec;
+    const std::filesystem::path dir =
+        std::filesystem::is_directory("/dev/shm", ec) ? "/dev/shm" : std::filesystem::temp_directory_path();
+    // One file per process: parallel fuzzing jobs must not read each other's inputs.
+    path_ = (dir / ("radx_fuzz_" + std::to_string(getpid()) + "_" + name)).string();
+    std::ofstream(path_, std::ios::binary | std::ios::trunc)
+        .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  }
+  ~InputFile() {
+    std::error_code ec;
+    std::filesystem::remove(path_, ec);
+  }
+  InputFile(const InputFile&) = delete;
+  InputFile& operator=(const InputFile&) = delete;
+  [[nodiscard]] const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
 
 }  // namespace radx::fuzz

@@ -10,7 +10,8 @@
 #include "parser/model_builder.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string path = radx::fuzz::input_file(data, size, "STARTER_0000.rad");
+  const radx::fuzz::InputFile input(data, size, "STARTER_0000.rad");
+  const std::string& path = input.path();
   radx::Diagnostics diags;
   radx::ReadOptions opt;
   opt.allow_one_file = true;  // a one-file deck's starter part starts after /END/ENGINE
