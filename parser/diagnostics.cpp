@@ -78,7 +78,8 @@ const std::vector<CodeInfo>& code_table() {
        "a /TRANSFORM whose axis or plane normal has zero length (two points or nodes at one place)"},
       {Diag::CoordinatesPerturbed, "node coordinates moved by a random perturbation (/RANDOM)"},
       {Diag::TangledBrick,
-       "a brick with positive volume whose faces intersect (a corner with a negative Jacobian)"},
+       "a brick with positive volume but a corner turned inside out (a negative corner Jacobian: faces that "
+       "intersect, or a re-entrant corner)"},
       {Diag::InitialPenetration, "secondary nodes closer to the main surface than the gap at t = 0"},
       {Diag::InterfaceFieldIgnored, "an interface field radx reads but does not use is set"},
       {Diag::BadFrictionLaw, "friction law coefficients that are inconsistent"},

@@ -507,7 +507,9 @@ void ModelBuilder::build_elements() {
                 "brick " + std::to_string(eid) + " is tangled: its corner at node " +
                     std::to_string(m_.nodes.id[b.conn[base + static_cast<std::size_t>(corner.node)]]) +
                     " (n" + std::to_string(corner.node + 1) +
-                    ") is turned inside out, so its faces intersect, though its volume (" + num(v) +
+                    ") is turned inside out (its edges there span a negative volume: the faces meeting there "
+                    "fold through each other or the brick is re-entrant), though its volume (" +
+                    num(v) +
                     ") is positive; in a valid brick every corner's three edges turn the same "
                     "way as n1-n2, n1-n4, n1-n5");
           }
