@@ -197,6 +197,24 @@ int th(const std::vector<std::string>& args) {
     std::cerr << "radx th: -o and --var go with --csv\n";
     return radx::app::kExitUsage;
   }
+  // --recover rewrites the file: never under a run that is still writing it (its next flush would append at
+  // the old offsets). The run holds NAME.lock beside NAME_th.h5; holding it here keeps a run from starting
+  // until the rewrite is done.
+  radx::app::RunLock lock;
+  if (recover) {
+    const std::filesystem::path p(file);
+    const std::string name = p.filename().string();
+    const std::string suffix = "_th.h5";
+    if (name.size() > suffix.size() && name.ends_with(suffix)) {
+      try {
+        const std::string dir = p.has_parent_path() ? p.parent_path().string() : std::string(".");
+        lock = radx::app::RunLock(dir, name.substr(0, name.size() - suffix.size()));
+      } catch (const std::exception& e) {
+        std::cerr << "radx th: cannot recover " << file << " now: " << e.what() << '\n';
+        return radx::app::kExitInputError;
+      }
+    }
+  }
   std::vector<radx::io::ThGroupData> groups;
   std::string error;
   bool interrupted = false;

@@ -11,6 +11,8 @@ time history are there):
     reads anything, so a kill while it reads a big model leaves none);
   * a second engine of the same name in the same folder, while the first runs, exits 1 at once with an error
     naming the first one's pid, and writes nothing (the first run's summary still says "running");
+  * `radx th NAME_th.h5 --recover` while that engine runs exits 1 naming it (a rewrite under a writer would
+    lose rows);
   * SIGTERM then SIGINT, and SIGINT then SIGTERM: the engine ends at once, killed by a signal (the default
     action), not by the clean exit a single signal gives;
   * SIGTERM twice a millisecond apart (what `timeout` sends: to the engine, then to its process group) is one
@@ -117,6 +119,10 @@ def main():
           "a second engine of the same name: exit %d, %r" % (second.returncode, second.stderr[-500:]))
     check(first.poll() is None and json.load(open(summary))["status"] == "running",
           "the second engine disturbed the first one's summary")
+    recover = subprocess.run([a.radx, "th", os.path.join(out, base + "_th.h5"), "--recover"], capture_output=True,
+                             text=True, env=env, timeout=60)
+    check(recover.returncode == 1 and ("pid %d" % first.pid) in recover.stderr,
+          "radx th --recover under a running engine: exit %d, %r" % (recover.returncode, recover.stderr[-500:]))
 
     for one, two in ((signal.SIGTERM, signal.SIGINT), (signal.SIGINT, signal.SIGTERM)):
         p = first if one == signal.SIGTERM else start_long()
