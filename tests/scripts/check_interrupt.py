@@ -33,23 +33,10 @@ import time
 
 import h5py
 
-from results_common import check, finish, listed_states
+from results_common import check, end_time, finish, listed_states, write_engine_deck
 
 # Written by the starter or by this script: older than the reruns by design.
 INPUT_SUFFIXES = ("_0000.hdf", "_0000.out", "_0001.rad")
-
-
-def data_line(lines, keyword):
-    """Index of the first data line (not a comment) after the first line that starts with keyword."""
-    k = next(i for i, l in enumerate(lines) if l.startswith(keyword))
-    return next(i for i in range(k + 1, len(lines)) if not lines[i].startswith("#"))
-
-
-def engine_deck(source, path, t_stop, anim_dt):
-    lines = open(source).read().splitlines()
-    lines[data_line(lines, "/RUN/")] = "%20.6g" % t_stop
-    lines[data_line(lines, "/ANIM/DT")] = "%20.6g%20.6g" % (0.0, anim_dt)
-    open(path, "w").write("\n".join(lines) + "\n")
 
 
 def ls_l(out):
@@ -77,8 +64,7 @@ def main():
     if s.returncode != 0:
         sys.exit("starter failed:\n" + s.stdout[-2000:] + s.stderr[-2000:])
     source = a.deck.replace("_0000.rad", "_0001.rad")
-    source_lines = open(source).read().splitlines()
-    t_stop = float(source_lines[data_line(source_lines, "/RUN/")].split()[0])
+    t_stop = end_time(source)
     deck = os.path.join(a.out, base + "_0001.rad")
     env = dict(os.environ, OMP_NUM_THREADS="1")
     summary_path = os.path.join(a.out, base + "_summary.json")
@@ -87,7 +73,7 @@ def main():
 
     for mode in modes:
         # The earlier run: a normal one, with the energy chart.
-        engine_deck(source, deck, t_stop / 4, t_stop / 20)
+        write_engine_deck(source, deck, t_stop=t_stop / 4, anim_dt=t_stop / 20)
         r = subprocess.run([a.radx_engine, deck, "--out", a.out], capture_output=True, text=True, env=env)
         if r.returncode != 0:
             sys.exit("the normal run failed:\n" + r.stdout[-2000:] + r.stderr[-2000:])
@@ -95,7 +81,7 @@ def main():
             sys.exit("the normal run left no normal summary or no energy CSV")
         time.sleep(1.1)  # every file of the normal run is then more than a second older than the rerun
 
-        engine_deck(source, deck, 20 * t_stop, t_stop / 10)
+        write_engine_deck(source, deck, t_stop=20 * t_stop, anim_dt=t_stop / 10)
         start = time.time()
         # Standard error to a file: a pipe read only at the end could fill and stall the engine.
         err_file = tempfile.TemporaryFile(mode="w+")

@@ -27,12 +27,7 @@ import subprocess
 import sys
 import time
 
-from results_common import check, finish, listed_states
-
-
-def data_line(lines, keyword):
-    k = next(i for i, l in enumerate(lines) if l.startswith(keyword))
-    return next(i for i in range(k + 1, len(lines)) if not lines[i].startswith("#"))
+from results_common import check, data_line, end_time, finish, listed_states, write_engine_deck
 
 
 def main():
@@ -88,10 +83,8 @@ def main():
 
     # A long run for the lock and the signals: 50 times the end time, on one thread.
     normal_run()
-    src_lines = open(a.deck.replace("_0000.rad", "_0001.rad")).read().splitlines()
-    k = data_line(src_lines, "/RUN/")
-    src_lines[k] = "%20.6g" % (50 * float(src_lines[k].split()[0]))
-    open(engine_deck, "w").write("\n".join(src_lines) + "\n")
+    source = a.deck.replace("_0000.rad", "_0001.rad")
+    write_engine_deck(source, engine_deck, t_stop=50 * end_time(source))
     summary = os.path.join(out, base + "_summary.json")
 
     def start_long():

@@ -26,13 +26,7 @@ import time
 
 import h5py
 
-from results_common import check, finish, listed_states, paraview_check
-
-
-def data_line(lines, keyword):
-    """Index of the first data line (not a comment) after the first line that starts with keyword."""
-    k = next(i for i, l in enumerate(lines) if l.startswith(keyword))
-    return next(i for i in range(k + 1, len(lines)) if not lines[i].startswith("#"))
+from results_common import check, end_time, finish, listed_states, paraview_check, write_engine_deck
 
 
 def main():
@@ -50,15 +44,10 @@ def main():
     if s.returncode != 0:
         sys.exit("starter failed:\n" + s.stdout[-2000:] + s.stderr[-2000:])
     # The engine deck with 20 times the end time and a state every 1/200 of it.
-    text = open(a.deck.replace("_0000.rad", "_0001.rad")).read()
-    lines = text.splitlines()
-    j = data_line(lines, "/RUN/")
-    t_stop = 20 * float(lines[j].split()[0])
-    lines[j] = "%20.6g" % t_stop
-    j = data_line(lines, "/ANIM/DT")
-    lines[j] = "%20.6g%20.6g" % (0.0, t_stop / 200)
-    engine_deck = os.path.join(a.out, base + "_0001.rad")
-    open(engine_deck, "w").write("\n".join(lines) + "\n")
+    source = a.deck.replace("_0000.rad", "_0001.rad")
+    t_stop = 20 * end_time(source)
+    engine_deck = write_engine_deck(source, os.path.join(a.out, base + "_0001.rad"), t_stop=t_stop,
+                                    anim_dt=t_stop / 200)
 
     env = dict(os.environ, OMP_NUM_THREADS="1")
     p = subprocess.Popen([a.radx_engine, engine_deck, "--out", a.out, "--no-plot"], stdout=subprocess.DEVNULL,
@@ -109,10 +98,7 @@ def main():
     open(stray, "w").write("half a state")
     far = os.path.join(a.out, base + "_%06d.hdf" % 999)
     shutil.copy(os.path.join(a.out, listed[0][0]), far)
-    lines = open(engine_deck).read().splitlines()
-    j = data_line(lines, "/RUN/")
-    lines[j] = "%20.6g" % (t_stop / 40)  # 6 states: t = 0 .. t_stop/40 every t_stop/200
-    open(engine_deck, "w").write("\n".join(lines) + "\n")
+    write_engine_deck(engine_deck, engine_deck, t_stop=t_stop / 40)  # 6 states: t = 0 .. t_stop/40 every t_stop/200
     r = subprocess.run([a.radx_engine, engine_deck, "--out", a.out, "--no-plot"], capture_output=True, text=True)
     check(r.returncode == 0, "the next run failed: " + r.stderr[-2000:])
     check(not glob.glob(os.path.join(a.out, "*.part")), "a .part file survived the next run")

@@ -30,29 +30,9 @@ import sys
 
 import h5py
 
-from results_common import check, finish
+from results_common import check, finish, write_engine_deck
 
 DT = 0.01 / 1381  # the free fall's stable time step, constant (rigid motion)
-
-
-def engine_deck(src, out):
-    lines = open(src).read().splitlines()
-    out_lines, skip = [], None
-    for line in lines:
-        if skip is not None and not line.startswith("#"):
-            out_lines.append(skip)
-            skip = None
-            continue
-        out_lines.append(line)
-        if line.startswith("/RUN/"):
-            skip = "%20.6g" % 1e30
-        elif line.startswith("/TFILE"):
-            skip = "%20.6g" % 0.0
-        elif line.startswith("/ANIM/DT"):
-            skip = "%20.6g%20.6g" % (0.0, 1e30)
-    path = os.path.join(out, os.path.basename(src))
-    open(path, "w").write("\n".join(out_lines) + "\n")
-    return path
 
 
 def h5py_rows(path):
@@ -96,7 +76,9 @@ def main():
         s = subprocess.run([a.radx_starter, a.deck, "--out", out], capture_output=True, text=True)
         if s.returncode != 0:
             sys.exit("starter failed:\n" + s.stdout[-2000:] + s.stderr[-2000:])
-        return out, engine_deck(a.deck.replace("_0000.rad", "_0001.rad"), out)
+        src = a.deck.replace("_0000.rad", "_0001.rad")
+        return out, write_engine_deck(src, os.path.join(out, os.path.basename(src)), t_stop=1e30, th_dt=0.0,
+                                      anim_dt=1e30)
 
     def engine(out, deck, inject):
         th = os.path.join(out, base + "_th.h5")

@@ -31,30 +31,9 @@ import xml.etree.ElementTree as ET
 
 import h5py
 
-from results_common import check, finish
+from results_common import check, finish, write_engine_deck
 
 DT = 0.01 / 1381  # the free fall's stable time step, constant (rigid motion)
-
-
-def engine_deck(src, out, t_stop, anim_dt):
-    """The deck's engine file with end time t_stop, a row every cycle and a state every anim_dt."""
-    lines = open(src).read().splitlines()
-    out_lines, skip = [], None
-    for line in lines:
-        if skip is not None and not line.startswith("#"):
-            out_lines.append(skip)
-            skip = None
-            continue
-        out_lines.append(line)
-        if line.startswith("/RUN/"):
-            skip = "%20.6g" % t_stop
-        elif line.startswith("/TFILE"):
-            skip = "%20.6g" % 0.0
-        elif line.startswith("/ANIM/DT"):
-            skip = "%20.6g%20.6g" % (0.0, anim_dt)
-    path = os.path.join(out, os.path.basename(src))
-    open(path, "w").write("\n".join(out_lines) + "\n")
-    return path
 
 
 def run_rss_kb(engine, deck, out):
@@ -107,7 +86,8 @@ def main():
         s = subprocess.run([a.radx_starter, a.deck, "--out", out], capture_output=True, text=True)
         if s.returncode != 0:
             sys.exit("starter failed:\n" + s.stdout[-2000:] + s.stderr[-2000:])
-        deck = engine_deck(src, out, (cycles - 0.5) * DT, 1e30)
+        deck = write_engine_deck(src, os.path.join(out, os.path.basename(src)), t_stop=(cycles - 0.5) * DT,
+                                 th_dt=0.0, anim_dt=1e30)
         rss[cycles] = run_rss_kb(a.radx_engine, deck, out)
         with h5py.File(os.path.join(out, base + "_th.h5"), "r") as h:
             rows = h["global"].shape[0]
@@ -135,7 +115,8 @@ def main():
     s = subprocess.run([a.radx_starter, a.deck, "--out", out], capture_output=True, text=True)
     if s.returncode != 0:
         sys.exit("starter failed:\n" + s.stdout[-2000:] + s.stderr[-2000:])
-    deck = engine_deck(src, out, 1e30, 300 * DT)
+    deck = write_engine_deck(src, os.path.join(out, os.path.basename(src)), t_stop=1e30, th_dt=0.0,
+                             anim_dt=300 * DT)
     th = os.path.join(out, base + "_th.h5")
     for delay in (0.3, 1.7, 3.1):
         env = dict(os.environ, OMP_NUM_THREADS="1")
