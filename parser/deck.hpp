@@ -61,6 +61,12 @@ struct KeywordRecord {
   std::vector<SourcePos> id_pos;   // where each id was written
   std::vector<std::string> th_variables;
   std::string text;  // Tail::Text
+  // Where each character of `text` was written (Tail::Text): its line and 1-based column.
+  std::vector<SourcePos> text_pos;
+  std::vector<std::uint32_t> text_column;
+  // The factors from the record's input units to the work units (mass, length, time) that its real fields
+  // were converted with; what the record's own text (a /CTCLAW law) needs converting with.
+  std::array<double, 3> unit_factors{1.0, 1.0, 1.0};
   // The innermost //SUBMODEL the keyword sits in (index into Deck::submodels), -1 at the top level. Its ids
   // are already shifted by that submodel's offsets.
   std::int32_t submodel = -1;

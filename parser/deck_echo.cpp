@@ -250,7 +250,10 @@ void write_keyword_reference(std::ostream& os) {
         os << "\n";
         break;
       case Tail::IdList: os << "Then ids, 10 per line in 10-column cells.\n\n"; break;
-      case Tail::Text: os << "Then text lines, joined with blanks removed.\n\n"; break;
+      case Tail::Text:
+        os << "Then text lines, joined with blanks removed.\n\n";
+        if (!k.text_meaning.empty()) os << k.text_meaning << "\n\n";
+        break;
       case Tail::ThVarsThenIds:
         os << "Then variable-name lines (10-column cells), then object ids.\n\n";
         break;

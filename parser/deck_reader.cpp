@@ -702,9 +702,15 @@ class StarterReader {
         for (; cur < last; ++cur) read_ids(rec, lines[cur], about);
         break;
       case Tail::Text:
-        for (; cur < last; ++cur)
-          for (char c : lines[cur].text)
-            if (c != ' ' && c != '\t') rec.text += c;
+        for (; cur < last; ++cur) {
+          const auto& l = lines[cur];
+          for (std::size_t c = 0; c < l.text.size(); ++c) {
+            if (l.text[c] == ' ' || l.text[c] == '\t') continue;
+            rec.text += l.text[c];
+            rec.text_pos.push_back(l.pos);
+            rec.text_column.push_back(static_cast<std::uint32_t>(c + 1));
+          }
+        }
         break;
       case Tail::ThVarsThenIds:
       case Tail::ThVarsThenRecords: {
@@ -960,6 +966,7 @@ class StarterReader {
       const double fm = u->mass / w.mass;
       const double fl = u->length / w.length;
       const double ft = u->time / w.time;
+      r.unit_factors = {fm, fl, ft};
       if (fm == 1.0 && fl == 1.0 && ft == 1.0) continue;
       auto factor = [&](schema::Dim d) { return std::pow(fm, d.m) * std::pow(fl, d.l) * std::pow(ft, d.t); };
       for (auto& f : r.fields) {

@@ -83,6 +83,9 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::InitialPenetration, "secondary nodes closer to the main surface than the gap at t = 0"},
       {Diag::InterfaceFieldIgnored, "an interface field radx reads but does not use is set"},
       {Diag::BadFrictionLaw, "friction law coefficients that are inconsistent"},
+      {Diag::BadContactLaw,
+       "a /CTCLAW law string that cannot be read, or a law parameter that is unknown, missing, repeated, out "
+       "of range or inconsistent (the curve of a tabulated law included)"},
       {Diag::EngineMissingRun, "the engine deck has no /RUN"},
       {Diag::EngineBadLine, "an engine deck data line with too few or unreadable values"},
       {Diag::EngineRunNameMismatch, "the /RUN name or number differs from the file name"},

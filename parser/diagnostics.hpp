@@ -79,6 +79,7 @@ enum class Diag : std::uint16_t {
   InitialPenetration = 701,
   InterfaceFieldIgnored = 702,
   BadFrictionLaw = 703,
+  BadContactLaw = 704,
   // engine deck
   EngineMissingRun = 801,
   EngineBadLine = 802,

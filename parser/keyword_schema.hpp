@@ -277,6 +277,8 @@ struct KeywordDecl {
   std::vector<CardDecl> cards;
   Tail tail = Tail::None;
   CardDecl record;  // for Records and ThVarsThenRecords
+  // For Tail::Text: what the text says (the reference prints it after the generic sentence).
+  std::string_view text_meaning;
   Support support = Support::Read;
   bool singleton = false;           // may appear once (/BEGIN, /TITLE, /DEF_SHELL counts only its first)
   std::string_view id_name = "id";  // name of the header id in messages and listings

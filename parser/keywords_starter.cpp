@@ -810,6 +810,37 @@ void add_contact(std::vector<KeywordDecl>& t) {
                                    .refs(IdKind::Other)
                                    .must()})};
     k.tail = Tail::Text;
+    k.text_meaning =
+        "The law string (`shared/spec/contact-laws.md`): "
+        "`n<normal>s<friction>{Name1Value1,Name2Value2,...}`, "
+        "e.g. `n2s13{pz1e5,lambda2e3,KcMax1e15,Mu0.3,CtLin10}`. Names are case-insensitive; a value follows "
+        "its "
+        "name directly (`Mu.1`) or after `=`; numbers in C or Fortran form (`1e5`, `1.D5`, `.5`, `-1`); "
+        "values "
+        "in the deck's input units.\n\n"
+        "- Normal law (leave `n` out to keep the interface's own penalty): `n1` bilinear P = Kc u, `Kc` > 0 "
+        "or "
+        "-1 (automatic: K / A_s, K the pair stiffness, A_s the tributary area of the secondary node); `n2` "
+        "exponential P = pz exp(lambda u), `pz` > 0 and one of `lambda` > 0 or `pe` > 0 (the expected "
+        "working "
+        "pressure: lambda = (K / A_s) / pe), `KcMax` > 0 optional (the stiffness bound, beyond which the law "
+        "goes on linearly; not below the initial stiffness lambda pz); `n3` tabulated, `CurveID` the "
+        "`/FUNCT` "
+        "of gap to pressure (at least 2 points, pressures >= 0 that do not rise with the gap), `Cubic` 0 "
+        "(linear, default) or 1 (monotone cubic); `n4` power P = sum of kp_m u^m, one or more "
+        "`kp<m>=<value>` "
+        "(m >= 1, each once; values >= 0, one > 0).\n"
+        "- Friction law (leave `s` out for no friction): `s1` exact Coulomb, `s2` linear min(ct s, mu p), "
+        "`s3` "
+        "arctangent mu p (2/pi) atan(ct s), `s4` scaled linear p min(ct s, mu), sliding along the segment's "
+        "first tangent; `s11` to `s14` the same in the whole tangent plane. `Mu` >= 0 for all, `CtLin` > 0 "
+        "for s2 to s4 and s12 to s14 (not s1, s11), `kappa` > 0 optional (the sticking stiffness per unit "
+        "area; "
+        "default K / A_s).\n"
+        "- An unknown law or parameter, a parameter the law does not take, a repeated, missing, non-numeric "
+        "or "
+        "out-of-range one, lambda with pe, KcMax below the initial stiffness (with pe: over the secondary "
+        "nodes), a missing or rising curve, unbalanced braces: RX704, at the law string's line.";
     t.push_back(std::move(k));
   }
 }
