@@ -29,7 +29,10 @@
 // by the interface's Ifric law at pressure lambda / area, applied row by row in order (a deterministic
 // Gauss-Seidel sweep): the force that stops the tangential relative velocity at the end of the step,
 //     F_stick,d = -v_t,d / (dt12 w_d),  w_d = w_s,d + sum_j h_j^2 w_j,d  (w the inverse masses),
-// projected on the tangent plane and scaled down to mu lambda when longer (sliding).
+// projected on the tangent plane and scaled down to mu lambda when longer (sliding). A /CTCLAW friction law
+// bounds it instead by its own force at the slip speed v_t and the pressure lambda / A_s (contact-laws.md
+// section 5): exact Coulomb mu lambda, the regularised laws their smaller force at low slip; the
+// one-directional laws keep only the component along the segment's first tangent.
 #include "contact/lagrange_contact.hpp"
 
 #include <algorithm>
@@ -257,7 +260,10 @@ struct LagrangeSolver::Impl {
       const auto& r = rows[ri];
       const auto& p = pairs[static_cast<std::size_t>(r.pair)];
       const auto& law = laws[static_cast<std::size_t>(p.law)];
-      if (!(law.fric > 0 || law.ifric > 0)) continue;
+      const auto kind = law.ctclaw.friction;
+      if (kind == model::FrictionLaw::Interface ? !(law.fric > 0 || law.ifric > 0)
+                                                : kind == model::FrictionLaw::None)
+        continue;
       Vec3 vr{}, w{};
       for (std::size_t k = 0; k < static_cast<std::size_t>(r.count); ++k) {
         const auto n = static_cast<std::size_t>(r.node[k]);
@@ -273,11 +279,17 @@ struct LagrangeSolver::Impl {
       Vec3 f{};
       for (std::size_t d = 0; d < 3; ++d) f[d] = w[d] > 0 ? -vt[d] / (dt12 * w[d]) : 0.0;
       f = model::sub(f, model::scale(r.n, model::dot(f, r.n)));
+      // One-directional /CTCLAW friction acts along the first tangent only.
+      if (kind != model::FrictionLaw::Interface && !law.ctclaw.bidirectional)
+        f = model::scale(p.t1, model::dot(f, p.t1));
       const double len = model::norm(f);
       if (!(len > 0)) continue;
-      const double mu =
-          friction_coefficient(law.ifric, law.fric, law.c, p.area > 0 ? lam / p.area : 0.0, model::norm(vt));
-      const double cap = std::max(0.0, mu) * lam;
+      const double pressure = p.area > 0 ? lam / p.area : 0.0;
+      const double cap =
+          kind == model::FrictionLaw::Interface
+              ? std::max(0.0, friction_coefficient(law.ifric, law.fric, law.c, pressure, model::norm(vt))) *
+                    lam
+              : friction_traction(law.ctclaw, model::norm(vt), pressure) * p.area;
       if (len > cap) f = model::scale(f, cap / len);
       for (std::size_t k = 0; k < static_cast<std::size_t>(r.count); ++k) {
         const auto n = static_cast<std::size_t>(r.node[k]);

@@ -9,6 +9,7 @@
 #include <memory>
 #include <span>
 
+#include "contact/ctclaw_laws.hpp"
 #include "solver/model/geometry.hpp"
 
 namespace radx::contact {
@@ -21,15 +22,20 @@ struct SwitchedPair {
   model::Vec3 n{};                    // unit normal from the contact point to the node
   double distance = 0;                // d = |x_s - sum h_j x_j|
   double gap = 0;                     // g: the pair may still close down to min(d, g)
-  double area = 0;                    // main segment area (friction pressure lambda / area)
+  double area = 0;                    // friction pressure lambda / area: the main segment's area, or the
+                                      // secondary node's tributary area A_s under a /CTCLAW law
   std::int32_t law = 0;               // index into the friction laws (the interface)
+  model::Vec3 t1{};                   // the segment's first tangent (one-directional /CTCLAW friction)
 };
 
-// Coulomb friction of a switched pair, |F_t| <= mu lambda, mu by the interface's Ifric law (4.5).
+// Friction of a switched pair: Coulomb, |F_t| <= mu lambda, mu by the interface's Ifric law (4.5); or, when
+// the interface has a /CTCLAW friction law (ctclaw.friction other than Interface), that law with lambda as
+// the normal force: |F_t| <= friction_traction(|v_t|, lambda / area) area.
 struct FrictionLaw {
   int ifric = 0;
   double fric = 0;
   std::array<double, 6> c{};
+  PairLaw ctclaw{};
 };
 
 struct LagrangeNodes {

@@ -52,6 +52,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "contact/ctclaw_laws.hpp"
 #include "contact/type7_laws.hpp"
 #include "contact/type7_prepare.hpp"
 #include "contact/type7_search.hpp"
@@ -150,6 +151,30 @@ double segment_area(const std::array<Vec3, 4>& x, bool triangle) {
 double reach_factor(double tau0, double g, double w) {
   const double f = 1.0 + tau0 * std::max(w, 0.0) / g;
   return f * f;
+}
+
+// The same for a /CTCLAW normal law, whose stiffness has no pole: the larger of Kc A_s at the overclosure u
+// and at the overclosure two steps of the last length ahead at the approach speed w (the laws stiffen as u
+// grows, the exponential one without bound until its KcMax knee).
+double law_reach_stiffness(const PairLaw& law, double area, double u, double w, double dt) {
+  const double ahead = u + 2.0 * std::max(w, 0.0) * dt;
+  return area * std::max(normal_pressure(law, u).kc, normal_pressure(law, ahead).kc);
+}
+
+// The segment's first tangent x2 - x1 in the tangent plane of n, unit (one-directional /CTCLAW friction).
+Vec3 first_tangent(const std::array<Vec3, 4>& x, const Vec3& n) {
+  Vec3 t = model::sub(x[1], x[0]);
+  t = model::sub(t, model::scale(n, model::dot(t, n)));
+  const double len = model::norm(t);
+  return len > 0 ? model::scale(t, 1.0 / len) : Vec3{};
+}
+
+// The previous tangential force rotated into the current tangent plane of n, its length kept.
+Vec3 rotated_into_plane(const Vec3& f_old, const Vec3& n) {
+  const double len_old = model::norm(f_old);
+  const Vec3 in_plane = model::sub(f_old, model::scale(n, model::dot(f_old, n)));
+  const double len_new = model::norm(in_plane);
+  return len_new > 0 ? model::scale(in_plane, len_old / len_new) : in_plane;
 }
 
 }  // namespace
@@ -363,11 +388,6 @@ struct Type7Contact::Impl {
 
   Impl(const model::Model& m, ContactControls c) : model(m), controls(c) {
     for (const auto& in : m.interfaces) {
-      if (in.contact_law_id != 0)
-        throw std::runtime_error("/INTER " + std::to_string(in.id) + " uses /CTCLAW/" +
-                                 std::to_string(in.contact_law_id) + " (" + in.contact_law +
-                                 "): the contact-law family of /CTCLAW is not supported by the engine yet; "
-                                 "remove the /CTCLAW to run with the interface's own penalty and friction");
       if (in.main_surface == model::kNone || in.secondary_nodes.empty()) continue;
       InterfaceState st;
       st.in = &in;
@@ -426,7 +446,14 @@ struct Type7Contact::Impl {
       st.search = std::make_unique<Type7Search>(in.secondary_nodes, st.segments, gap_max, in.bumult);
       st.result.id = in.id;
       st.index = static_cast<std::int32_t>(interfaces.size());
-      laws.push_back(FrictionLaw{std::max(0, in.ifric), in.fric, in.c});
+      FrictionLaw law{std::max(0, in.ifric), in.fric, in.c, {}};
+      if (in.contact_law_id != 0) {
+        law.ctclaw.friction = in.law.friction;
+        law.ctclaw.bidirectional = in.law.bidirectional;
+        law.ctclaw.mu = in.law.mu;
+        law.ctclaw.ct = in.law.ct;
+      }
+      laws.push_back(law);
       interfaces.push_back(std::move(st));
     }
     force.assign(3 * m.nodes.size(), 0.0);
@@ -496,6 +523,13 @@ struct Type7Contact::Impl {
     messages.push_back("interface " + std::to_string(st.in->id) + ": secondary node " +
                        std::to_string(model.nodes.id[static_cast<std::size_t>(st.in->secondary_nodes[k])]) +
                        " " + why);
+  }
+
+  // A_s of secondary node ks (its tributary area from the starter), or the area of segment sb it hits when it
+  // has none (a free node).
+  double law_area(const InterfaceState& st, std::size_t ks, std::size_t sb) const {
+    const auto& a = st.in->tributary_area;
+    return ks < a.size() && a[ks] > 0 ? a[ks] : st.segment_area0[sb];
   }
 
   struct Closest {
@@ -655,20 +689,31 @@ struct Type7Contact::Impl {
       const double ms = nodes.mass[static_cast<std::size_t>(node)];
       const Vec3 vr = relative_velocity(velocity(nodes), node, st.segments[sb], best_h);
       const double vn = model::dot(vr, n);
-      if (!(p > 0)) {
+      // A /CTCLAW law (contact-laws.md section 5) replaces the normal law, the friction law or both, with
+      // its forces on the tributary area A_s of the node (the hit segment's area for a node without one).
+      const bool has_law = in.contact_law_id != 0;
+      const double area_s = has_law ? law_area(st, ks, sb) : 0.0;
+      const PairLaw law = has_law ? resolve_pair_law(in.law, model, K, area_s) : PairLaw{};
+      const bool law_normal = has_law && law.normal != model::NormalLaw::Interface;
+      const Pressure pr = law_normal ? normal_pressure(law, p) : Pressure{};
+      const double onset = law_normal ? contact_onset(law) : 0.0;  // the exponential law acts at open gaps
+      const Vec3 t1 = has_law ? first_tangent(best_x, n) : Vec3{};
+      const double row_area = has_law ? area_s : st.segment_area0[sb];
+      if (law_normal ? !(pr.p > 0) : !(p > 0)) {
         st.f_t[ks] = Vec3{};
         // A pair about to close (within two steps at its approach speed) already votes with its stiffness at
         // p = 0: the step must be small before the force appears, because the velocity update of the first
         // contact cycle uses (dt1 + dt2)/2, half of it from the step before.
         // Not under /DT/INTER/DEL when the pair's step at p = 0 is already below Tmin: it will leave the
         // interface as soon as it closes (k_eff >= K), so it must not pull the step below Tmin before.
+        const double k_close = law_normal ? law_reach_stiffness(law, area_s, onset, -vn, dt1) : K;
         const bool leaves = controls.action == ContactControls::Action::Delete && controls.t_min > 0 &&
-                            ms > 0 && scale * std::sqrt(2.0 * ms / K) < controls.t_min;
+                            ms > 0 && k_close > 0 && scale * std::sqrt(2.0 * ms / k_close) < controls.t_min;
         // A LAGDT node resting on the gap's edge (a row of the last cycle stopped it there, p = 0 to
         // round-off) keeps its row: without it the forces behind it would push it one step into the gap
         // before it switches again. The row costs nothing when it does not bind: the active set releases it.
         const bool on_edge = in.lagdt && lagrange_on() && -p <= kEdgeBand * g;
-        const bool approaching = vn < 0 && -p < -2.0 * vn * dt1;
+        const bool approaching = vn < 0 && onset - p < -2.0 * vn * dt1;
         if ((approaching || on_edge) && !leaves) {
           // LAGDT: a pair whose step at p = 0 is already below Tmin does not drag the step down before it
           // closes: it becomes a row that lets it close down to the gap within the step, no further.
@@ -676,13 +721,14 @@ struct Type7Contact::Impl {
           // the hyperbola is extended to p < 0), never less than K.
           const double tau0 = ms > 0 && !mass_scaled_interface ? scale * std::sqrt(2.0 * ms / K) : 0.0;
           const double ratio = g / (g - p);
-          const double k_reach = std::max(K, K * ratio * ratio * reach_factor(tau0, g, -vn));
-          const SwitchedPair row{node, st.segments[sb], best_h, n, best_d, g, st.segment_area0[sb], st.index};
+          const double k_reach = law_normal ? law_reach_stiffness(law, area_s, p, -vn, dt1)
+                                            : std::max(K, K * ratio * ratio * reach_factor(tau0, g, -vn));
+          const SwitchedPair row{node, st.segments[sb], best_h, n, best_d, g, row_area, st.index, t1};
           if (lagrange_on() && in.lagdt &&
               pair_spring_step(node, st.segments[sb], best_h, k_reach, nodes) < controls.t_min &&
               may_switch(st, row, nodes))
             switch_pair(st, row, ks, 0.0);
-          else if (approaching)
+          else if (approaching && k_reach > 0)
             add_pair_stiffness(node, st.segments[sb], best_h, k_reach, nodes, st);
         }
         continue;
@@ -691,23 +737,32 @@ struct Type7Contact::Impl {
         deactivate(st, ks, "reached the main surface (remaining gap below 1e-6 of the gap): deactivated");
         continue;
       }
-      const double fn = penalty_force(K, g, p);
-      const double cdamp = damping_coefficient(in.vis_s, K, g, p, ms, vn);
+      // Normal force, its tangent stiffness and the VISs damping: the law's P A_s and Kc A_s with the
+      // plain critical-damping fraction (the hyperbola's 1/sqrt(r) and quadratic terms belong to its pole),
+      // or the interface's penalty.
+      const double fn = law_normal ? pr.p * area_s : penalty_force(K, g, p);
+      const double kt = law_normal ? pr.kc * area_s : penalty_tangent_stiffness(K, g, p);
+      const double cdamp =
+          law_normal ? in.vis_s * std::sqrt(2.0 * kt * ms) : damping_coefficient(in.vis_s, K, g, p, ms, vn);
       const Vec3 f_el = model::scale(n, fn);
       const Vec3 f_dp = model::scale(n, -cdamp * vn);
-      // Friction.
+      // Friction, and its viscous slope (a dashpot for the step).
       Vec3 f_fr{};
+      double c_friction = 0;
       const double area = st.segment_area0[sb];
       Vec3 vt = model::sub(vr, model::scale(n, vn));
-      if (in.fric > 0 || in.ifric > 0) {
+      if (has_law && law.friction != model::FrictionLaw::Interface) {
+        if (law.friction != model::FrictionLaw::None) {
+          const double pressure = law_normal ? pr.p : (area_s > 0 ? fn / area_s : 0.0);
+          const LawFrictionInput li{vt, n, t1, rotated_into_plane(st.f_t[ks], n), pressure, area_s, dt1};
+          f_fr = law_friction_force(law, li);
+          c_friction = friction_slope(law, pressure) * area_s;
+        }
+      } else if (in.fric > 0 || in.ifric > 0) {
         const double speed = model::norm(vt);
         const double mu = friction_coefficient(in.ifric, in.fric, in.c, area > 0 ? fn / area : 0.0, speed);
-        // The previous force, rotated into the current tangent plane with its length kept.
-        Vec3 old = st.f_t[ks];
-        const double len_old = model::norm(old);
-        old = model::sub(old, model::scale(n, model::dot(old, n)));
-        const double len_new = model::norm(old);
-        if (len_new > 0) old = model::scale(old, len_old / len_new);
+        const Vec3 old = rotated_into_plane(st.f_t[ks], n);
+        c_friction = in.iform == 2 ? 0.0 : in.vis_f * std::sqrt(2.0 * K * ms);
         FrictionInput fi;
         fi.iform = in.iform == 2 ? 2 : 1;
         fi.mu = mu;
@@ -725,23 +780,28 @@ struct Type7Contact::Impl {
       st.f_t[ks] = f_fr;
       // Time step of the pair (4.4), before anything is applied: under /DT/INTER/DEL a pair below Tmin leaves
       // the interface without acting in this cycle (no force, no IBC release, no stiffness).
-      const double kt = penalty_tangent_stiffness(K, g, p);
-      const double xi = ms > 0 ? cdamp / (2.0 * std::sqrt(kt * ms)) : 0.0;
+      const double xi = ms > 0 && kt > 0 ? cdamp / (2.0 * std::sqrt(kt * ms)) : 0.0;
       const double shrink = std::sqrt(1.0 + xi * xi) - xi;
       // Voted with the stiffness the pair can reach within the step (reach_factor): tau0 = the step at p = 0.
       // Not under /DT/INTER/CST on a plain TYPE7: there the step is held at Tmin by added mass, computed from
       // k_eff as type7-lagdt.md section 6 writes it.
+      // A /CTCLAW law votes with law_reach_stiffness, and exact Coulomb's sticking spring kappa A_s when
+      // stiffer (a spring across the normal one: their directions are orthogonal, so the larger one sets the
+      // step).
       const double reach =
           ms > 0 && !mass_scaled_interface ? reach_factor(scale * std::sqrt(2.0 * ms / K), g, -vn) : 1.0;
-      const double keff = kt / (shrink * shrink) * reach;
+      double k_vote = law_normal ? law_reach_stiffness(law, area_s, p, -vn, dt1) : kt * reach;
+      if (has_law && law.friction == model::FrictionLaw::Coulomb)
+        k_vote = std::max(k_vote, law.kappa * area_s);
+      const double keff = k_vote / (shrink * shrink);
       const double dt_spring = ms > 0 ? scale * std::sqrt(2.0 * ms / keff) : kInf;
       double dt_pair = 0.5 * (g - p) / std::max(-vn, kTiny);  // kinematic
       // Dashpots computed with v^{n-1/2} overshoot when c dt / m > 1 (the velocity they damp changes sign
-      // every cycle): the normal damping c and the viscous friction C = VISF sqrt(2 K m) keep dt <= m / c.
-      const double c_visc = cdamp + (in.iform == 2 ? 0.0 : in.vis_f * std::sqrt(2.0 * K * ms));
-      if (c_visc > 0 && (in.fric > 0 || in.ifric > 0 || cdamp > 0)) {
-        const double c_total = cdamp + ((in.fric > 0 || in.ifric > 0) ? c_visc - cdamp : 0.0);
-        double dt_dash = c_total > 0 ? scale * ms / c_total : kInf;
+      // every cycle): the normal damping c and the viscous friction (C = VISF sqrt(2 K m) for Iform 1, the
+      // regularised /CTCLAW laws' slope at zero slip) keep dt <= m / c.
+      const double c_total = cdamp + c_friction;
+      if (c_total > 0) {
+        double dt_dash = scale * ms / c_total;
         // Under /DT/INTER/CST (plain TYPE7) the step must stay at Tmin: this limit keeps a margin of more
         // than two to the dashpot's stability bound 2 m / c, so it is not allowed below Tmin there.
         if (controls.t_min > 0 && controls.action == ContactControls::Action::AddMass && !in.lagdt)
@@ -758,7 +818,7 @@ struct Type7Contact::Impl {
       PendingPair q;
       q.st = &st;
       q.ks = ks;
-      q.row = SwitchedPair{node, st.segments[sb], best_h, n, best_d, g, area, st.index};
+      q.row = SwitchedPair{node, st.segments[sb], best_h, n, best_d, g, row_area, st.index, t1};
       q.f_el = f_el;
       q.f_dp = f_dp;
       q.f_fr = f_fr;

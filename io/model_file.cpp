@@ -286,6 +286,10 @@ RADX_SCHEMA(Section, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(n1), RADX_FIE
             RADX_FIELD(shells3), RADX_FIELD(bricks));
 RADX_SCHEMA(TimeHistoryGroup, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(variables),
             RADX_FIELD(objects), RADX_FIELD(skews));
+RADX_SCHEMA(ContactLaw, RADX_FIELD(normal), RADX_FIELD(friction), RADX_FIELD(bidirectional), RADX_FIELD(kc),
+            RADX_FIELD(pz), RADX_FIELD(lambda), RADX_FIELD(pe), RADX_FIELD(kc_max), RADX_FIELD(curve),
+            RADX_FIELD(cubic), RADX_FIELD(power_m), RADX_FIELD(power_k), RADX_FIELD(mu), RADX_FIELD(ct),
+            RADX_FIELD(kappa));
 RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RADX_FIELD(secondary_group),
             RADX_FIELD(main_surface), RADX_FIELD(istf), RADX_FIELD(igap), RADX_FIELD(ibag), RADX_FIELD(idel),
             RADX_FIELD(ithe), RADX_FIELD(icurv), RADX_FIELD(iadm), RADX_FIELD(itied), RADX_FIELD(ists),
@@ -295,13 +299,13 @@ RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RAD
             RADX_FIELD(t_start), RADX_FIELD(t_stop), RADX_FIELD(ibc), RADX_FIELD(inacti), RADX_FIELD(vis_s),
             RADX_FIELD(vis_f), RADX_FIELD(bumult), RADX_FIELD(ifric), RADX_FIELD(ifiltr), RADX_FIELD(iform),
             RADX_FIELD(xfreq), RADX_FIELD(c), RADX_FIELD(sens_id), RADX_FIELD(fct_id_f), RADX_FIELD(fric_id),
-            RADX_FIELD(ascale_f), RADX_FIELD(contact_law_id), RADX_FIELD(contact_law),
+            RADX_FIELD(ascale_f), RADX_FIELD(contact_law_id), RADX_FIELD(contact_law), RADX_FIELD(law),
             RADX_FIELD(secondary_nodes), RADX_FIELD(gapmin), RADX_FIELD(gapmin_automatic),
             RADX_FIELD(gap_node), RADX_FIELD(gap_segment), RADX_FIELD(stiff_node), RADX_FIELD(stiff_segment),
             RADX_FIELD(gap_lo), RADX_FIELD(gap_hi), RADX_FIELD(stiff_lo), RADX_FIELD(stiff_hi),
             RADX_FIELD(initial_penetrations), RADX_FIELD(max_initial_penetration),
             RADX_FIELD(max_penetration_node), RADX_FIELD(inactive_nodes), RADX_FIELD(inactive_segments),
-            RADX_FIELD(penetrating_nodes), RADX_FIELD(initial_gap_reduction));
+            RADX_FIELD(penetrating_nodes), RADX_FIELD(initial_gap_reduction), RADX_FIELD(tributary_area));
 
 #undef RADX_SCHEMA
 #undef RADX_FIELD

@@ -340,6 +340,43 @@ struct TimeHistoryGroup {
   std::vector<std::int64_t> skews;
 };
 
+// /CTCLAW (contact-laws.md): the normal and friction law of the SDT family that replaces an interface's own,
+// as the starter read the law string. The kinds are stored as their integers in the model file: new kinds go
+// at the end.
+enum class NormalLaw : std::uint8_t {
+  Interface = 0,    // no n part: the interface's own TYPE7 penalty stays the normal law
+  Linear = 1,       // P = Kc u
+  Exponential = 2,  // P = pz exp(lambda u), linear beyond the KcMax knee
+  Tabulated = 3,    // P(gap) from a /FUNCT curve
+  Power = 4         // P = sum kp_m u^m
+};
+enum class FrictionLaw : std::uint8_t {
+  Interface = 0,     // no s part and no n part: the interface's own friction
+  None = 1,          // no s part after an n part: frictionless
+  Coulomb = 2,       // s1 / s11: exact Coulomb with a sticking stiffness
+  Linear = 3,        // s2 / s12: min(ct s, mu p)
+  Arctangent = 4,    // s3 / s13: mu p (2/pi) atan(ct s)
+  ScaledLinear = 5,  // s4 / s14: p min(ct s, mu)
+};
+struct ContactLaw {
+  NormalLaw normal = NormalLaw::Interface;
+  FrictionLaw friction = FrictionLaw::Interface;
+  bool bidirectional = false;  // s11..s14: the whole tangent plane; s1..s4: the segment's first tangent only
+  // Linear: Kc (Pa/m), or -1: automatic, K / A_s with K the pair's penalty stiffness.
+  double kc = 0;
+  // Exponential: pz (Pa); lambda (1/m), or 0 with pe > 0: lambda = (K / A_s) / pe per pair; KcMax (Pa/m), 0:
+  // unbounded.
+  double pz = 0, lambda = 0, pe = 0, kc_max = 0;
+  // Tabulated: dense index into Model::functions of the gap -> pressure curve; monotone cubic interpolation.
+  std::int32_t curve = kNone;
+  bool cubic = false;
+  // Power: P = sum over k of power_k[k] u^power_m[k].
+  std::vector<double> power_m, power_k;
+  // Friction: Mu; CtLin (Pa s/m for s2, s3; s/m for s4); kappa (Pa/m), the sticking stiffness per unit area
+  // (0: K / A_s, the interface's penalty stiffness).
+  double mu = 0, ct = 0, kappa = 0;
+};
+
 // /INTER/TYPE7 and /INTER/LAGDT/TYPE7 as one definition (type7-lagdt.md section 3), plus what the
 // starter computes for it (sections 4.1, 4.2, 4.6).
 struct Interface {
@@ -363,6 +400,7 @@ struct Interface {
   double ascale_f = 0;
   std::int64_t contact_law_id = 0;  // /CTCLAW that replaces the normal and friction laws (0: none)
   std::string contact_law;          // its law string, e.g. n2s13{pz1e5,lambda2e3,Mu0.3,CtLin10}
+  ContactLaw law;                   // that string as understood (contact_law_id != 0)
 
   // Computed by the starter.
   std::vector<std::int32_t> secondary_nodes;  // sorted dense node indices
@@ -382,6 +420,10 @@ struct Interface {
   std::vector<std::int32_t> inactive_segments;  // Inacti 2: segments without stiffness
   std::vector<std::int32_t> penetrating_nodes;  // Inacti 5, 6: nodes with a reduced initial gap
   std::vector<double> initial_gap_reduction;    // P0 (+5 % margin for 6) per penetrating node
+  // Tributary area A_s per secondary node (a /CTCLAW law's F_n = P A_s): a quarter of each 4-node shell or
+  // open brick face around the node, a third of each 3-node shell; 0 for a node without any (it takes the
+  // area of the segment it hits).
+  std::vector<double> tributary_area;
 };
 
 struct Model {
