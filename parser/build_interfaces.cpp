@@ -2,8 +2,11 @@
 // defaults and checks of type7-lagdt.md section 3, and /CTCLAW law strings attached to their
 // interface (contact-laws.md section 5). The gap, stiffness and initial-penetration computations of
 // sections 4.1, 4.2 and 4.6 are physics and live in contact/type7_prepare.cpp.
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
+#include "parser/ctclaw_urn.hpp"
 #include "parser/field_parse.hpp"
 #include "parser/model_builder.hpp"
 
@@ -144,12 +147,86 @@ void ModelBuilder::build_contact_laws() {
                    "/CTCLAW needs a law string after the interface card, e.g. n1s13{Kc1e12,Mu0.1,CtLin1e3}");
       continue;
     }
-    const char c0 = static_cast<char>(std::tolower(static_cast<unsigned char>(r->text[0])));
-    if (c0 != 'n' && c0 != 's') {
-      diags_.error(Diag::ValueOutOfRange, at(r->pos, 1), about(*r),
-                   "law string '" + r->text + "' must start with n<normal law> or s<friction law>");
-      continue;
+    const std::string law_id = "/CTCLAW/" + std::to_string(r->id);
+    // Where character `offset` of the law string was written.
+    auto where = [&](std::size_t offset) {
+      if (r->text_pos.empty()) return at(r->pos, 1);
+      const auto i = std::min(offset, r->text_pos.size() - 1);
+      return at(r->text_pos[i], static_cast<int>(r->text_column[i]));
+    };
+    auto bad = [&](std::size_t offset, const std::string& parameter, const std::string& message) {
+      diags_.error(Diag::BadContactLaw, where(offset), about(*r),
+                   law_id + (parameter == "law string" ? " law string '" + r->text + "'" : " " + parameter) +
+                       ": " + message);
+    };
+    UrnResult urn = parse_ctclaw_urn(r->text);
+    for (const auto& p : urn.problems) bad(p.offset, p.parameter, p.message);
+    model::ContactLaw& law = urn.law;
+
+    // The values are in the record's input units: to work units.
+    const auto [fm, fl, ft] = r->unit_factors;
+    const bool converted = fm != 1.0 || fl != 1.0 || ft != 1.0;
+    if (converted) {
+      const double fp = fm / (fl * ft * ft);  // pressure
+      if (law.kc > 0) law.kc *= fp / fl;
+      law.pz *= fp;
+      law.pe *= fp;
+      law.lambda /= fl;
+      law.kc_max *= fp / fl;
+      for (std::size_t j = 0; j < law.power_k.size(); ++j)
+        law.power_k[j] *= fp / std::pow(fl, law.power_m[j]);
+      law.ct *= law.friction == model::FrictionLaw::ScaledLinear ? ft / fl : fp * ft / fl;
+      law.kappa *= fp / fl;
     }
+
+    // The curve of a tabulated law.
+    if (urn.curve_id != 0) {
+      const std::int64_t id =
+          urn.curve_id +
+          (r->submodel >= 0
+               ? deck_.submodels[static_cast<std::size_t>(r->submodel)].offset(schema::IdKind::Other)
+               : 0);
+      const auto it = funct_ids_.find(id);
+      if (it == funct_ids_.end()) {
+        bad(urn.curve_offset, "CurveID",
+            "CurveID = " + std::to_string(id) +
+                " names no /FUNCT: give the id of the /FUNCT of gap to pressure");
+      } else {
+        const auto& f = m_.functions[static_cast<std::size_t>(it->second)];
+        const std::string fn = "/FUNCT/" + std::to_string(f.id);
+        bool curve_ok = true;
+        auto curve_error = [&](const std::string& msg) {
+          bad(urn.curve_offset, "CurveID", "CurveID = " + std::to_string(id) + ": " + msg);
+          curve_ok = false;
+        };
+        if (f.x.size() < 2)
+          curve_error(fn + " has " + std::to_string(f.x.size()) +
+                      " point(s); a tabulated law needs at least 2 points (gap, pressure)");
+        for (std::size_t j = 0; j < f.y.size(); ++j)
+          if (f.y[j] < 0) {
+            curve_error(fn + " point " + std::to_string(j + 1) + " (gap " + num(f.x[j]) +
+                        ") has the pressure " + num(f.y[j]) + " < 0: contact pressures are >= 0");
+            break;
+          }
+        for (std::size_t j = 1; j < f.y.size(); ++j)
+          if (f.y[j] > f.y[j - 1]) {
+            curve_error(
+                fn + ": the pressure rises from " + num(f.y[j - 1]) + " at gap " + num(f.x[j - 1]) + " to " +
+                num(f.y[j]) + " at gap " + num(f.x[j]) +
+                "; the pressure must not increase as the gap grows (the stiffness would be negative)");
+            break;
+          }
+        if (curve_ok && converted) {
+          diags_.error(Diag::PhysicsNotImplemented, where(urn.curve_offset), about(*r),
+                       law_id + " CurveID: the tabulated law takes the gaps and pressures of " + fn +
+                           " as written, in the work units, but this /CTCLAW is in other input units; write "
+                           "the deck in its work units to use a tabulated law");
+          curve_ok = false;
+        }
+        if (curve_ok) law.curve = it->second;
+      }
+    }
+
     if (k == kNone) continue;
     auto& in = m_.interfaces[k];
     if (in.contact_law_id != 0) {
@@ -160,6 +237,7 @@ void ModelBuilder::build_contact_laws() {
     }
     in.contact_law_id = r->id;
     in.contact_law = r->text;
+    in.law = std::move(law);  // as understood, also with errors: the listing shows it
   }
 }
 

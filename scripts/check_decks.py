@@ -480,6 +480,8 @@ STARTER = {
     "/RANDOM": ("none", False, random_card, None, None),
     "/RANDOM/GRNOD": ("id", False, random_card, None, None),
     "/TH/ACCEL": ("id", True, lambda v: [], "thids", ID_REC),
+    # contact-laws.md section 5: the interface, then the law string on the lines up to the next keyword
+    "/CTCLAW": ("id", True, lambda v: [card([F("inter_ID", "I", 1, 10)])], "text", None),
 }
 
 # /TH variable names per keyword, as OpenRadioss names them: (groups, single names). A name outside both is an
@@ -934,6 +936,10 @@ class Checker:
                     first = False
                     continue
                 break
+        if tail == "text":
+            # every character but blanks, each with the line it was written on
+            obj["text"] = [(ch, (r[0], r[1])) for _, r in data[k:] for ch in r[2] if ch not in " \t"]
+            k = len(data)
         if tail in ("records", "threcords"):
             for cm, r in data[k:]:
                 self.check_names_line(cm, recfields, path)
@@ -1419,6 +1425,12 @@ def semantic(ck, m):
                 p = pos(o, "C5")
                 I("RX703", p[0], p[1], "interface %d: Renard coefficients inconsistent" % iid)
 
+    # contact laws (/CTCLAW, contact-laws.md sections 4 and 5): the interface exists, the law string reads
+    for o in m.of("/CTCLAW"):
+        need(o, "inter_ID", inters, "interface", zero_ok=False)
+        for at, msg in law_string_problems(o.get("text", []), functs):
+            I("RX704", at[0], at[1], "/CTCLAW %d: %s" % (o["id"], msg))
+
     # sections: frame nodes, the cut's node group and the element groups must exist; radx refuses a moving
     # frame, interface forces, reading cut files and truss, beam or spring groups (RX510, RX402)
     sects = by_id(("/SECT",), "section")
@@ -1553,6 +1565,148 @@ def semantic(ck, m):
 # (node groups: whenever empty), RX407 for a bare /SURF/GRBRIC.
 
 HEX_FACES = ((1, 4, 3, 2), (5, 6, 7, 8), (1, 2, 6, 5), (2, 3, 7, 6), (3, 4, 8, 7), (4, 1, 5, 8))  # 1-based, outward
+
+
+# The law string of /CTCLAW, read from contact-laws.md section 4 as a table of laws and their parameters:
+# "req" required, "opt" optional, "multi" the power terms kp<m>=<value>. Values: a rule on the number.
+LAW_NORMAL = {1: {"kc": "req"}, 2: {"pz": "req", "lambda": "opt", "pe": "opt", "kcmax": "opt"},
+              3: {"curveid": "req", "cubic": "opt"}, 4: {"kp": "multi"}}
+LAW_FRICTION = {f: ({"mu": "req", "kappa": "opt"} if f in (1, 11) else {"mu": "req", "ctlin": "req", "kappa": "opt"})
+                for f in (1, 2, 3, 4, 11, 12, 13, 14)}
+LAW_RULES = {"kc": lambda x: x > 0 or x == -1, "pz": lambda x: x > 0, "lambda": lambda x: x > 0,
+             "pe": lambda x: x > 0, "kcmax": lambda x: x > 0, "curveid": lambda x: x >= 1 and x == int(x),
+             "cubic": lambda x: x in (0, 1), "mu": lambda x: x >= 0, "ctlin": lambda x: x > 0,
+             "kappa": lambda x: x > 0}
+LAW_HEAD_RE = re.compile(r"^(?:([nN])(\d*))?(?:([sS])(\d*))?")
+LAW_PARAM_RE = re.compile(r"^([A-Za-z_]+)(.*)$")
+
+
+def law_number(text):
+    """A real in any Fortran form (1.D5, .5, 1.5-3), or None."""
+    if not REAL_RE.match(text):
+        return None
+    x = float(re.sub(r"(\d)([+-]\d+)$", r"\1E\2", text.replace("D", "E").replace("d", "e")))
+    return None if math.isinf(x) else x
+
+
+def law_string_problems(chars, functs):
+    """chars: [(character, (file, line))] of the law string without blanks. Returns [((file, line), msg)]."""
+    if not chars:
+        return []
+    text = "".join(c for c, _ in chars)
+    where = [p for _, p in chars]
+    out = []
+
+    def bad(i, msg):
+        out.append((where[min(i, len(where) - 1)], msg))
+
+    head = LAW_HEAD_RE.match(text)
+    laws = {}
+    for letter, digits, table, kind in ((head.group(1), head.group(2), LAW_NORMAL, "n"),
+                                        (head.group(3), head.group(4), LAW_FRICTION, "s")):
+        if letter is None:
+            laws[kind] = 0
+        elif digits and int(digits) in table:
+            laws[kind] = int(digits)
+        else:
+            laws[kind] = -1
+            bad(head.start(1 if kind == "n" else 3), "unknown %s law %s%s" % (kind, letter, digits))
+    if not head.group(1) and not head.group(3):
+        bad(0, "neither an n nor an s part")
+        laws = {"n": -1, "s": -1}
+    rest = head.end()
+    body, body_at = "", rest
+    if rest < len(text):
+        if text[rest] != "{":
+            brace = text.find("{", rest)
+            bad(rest, "unexpected text")
+            rest = len(text) if brace < 0 else brace
+        if rest < len(text):
+            close = text.find("}", rest)
+            if close < 0:
+                bad(rest, "unclosed brace")
+                close = len(text)
+            elif close + 1 < len(text):
+                bad(close + 1, "text after the closing brace")
+            body, body_at = text[rest + 1:close], rest + 1
+    takes = {}
+    for kind, table in (("n", LAW_NORMAL), ("s", LAW_FRICTION)):
+        if laws[kind] > 0:
+            takes.update(table[laws[kind]])
+        elif laws[kind] < 0:  # an unknown law: its parameters are not judged
+            for t in table.values():
+                for name in t:
+                    takes.setdefault(name, "any")
+    given, powers = {}, []
+    offset = body_at
+    for item in (body.split(",") if body else []):
+        at, offset = offset, offset + len(item) + 1
+        m = LAW_PARAM_RE.match(item)
+        if not item or "{" in item or m is None:
+            bad(at, "malformed parameter %r" % item)
+            continue
+        name, value = m.group(1).lower(), m.group(2)
+        if name not in LAW_RULES and name != "kp":
+            bad(at, "unknown parameter %s" % m.group(1))
+            continue
+        if name not in takes:
+            bad(at, "%s is not a parameter of this law" % m.group(1))
+            continue
+        # the syntax of a value is always judged, its range only under a known law
+        judged = takes[name] != "any"
+        if name == "kp":
+            mx, eq, kx = value.partition("=")
+            expo, coef = law_number(mx), law_number(kx)
+            if not eq:
+                bad(at, "power term not kp<m>=<value>")
+            elif expo is None or coef is None:
+                # located at the number at fault
+                if expo is None:
+                    bad(at + 2, "power exponent %r is not a number" % mx)
+                if coef is None:
+                    bad(at + 3 + len(mx), "power coefficient %r is not a number" % kx)
+            elif judged and (expo < 1 or coef < 0 or any(e == expo for e, _, _ in powers)):
+                bad(at, "power term exponent or value out of range, or repeated")
+            powers.append((expo, coef, at))
+            continue
+        if name in given:
+            bad(at, "%s given twice" % name)
+            continue
+        x = law_number(value[1:] if value.startswith("=") else value)
+        given[name] = (x, at)
+        if x is None:
+            bad(at + len(m.group(1)), "%s is not a number" % name)  # where the value starts
+        elif judged and not LAW_RULES[name](x):
+            bad(at, "%s = %g out of range" % (name, x))
+    for name, need_it in takes.items():
+        if need_it == "req" and name not in given:
+            bad(0, "%s missing" % name)
+    if laws["n"] == 2:
+        if "lambda" in given and "pe" in given:
+            bad(max(given["lambda"][1], given["pe"][1]), "lambda and pe together")
+        elif "lambda" not in given and "pe" not in given:
+            bad(0, "lambda or pe missing")
+        x = {k: v[0] for k, v in given.items()}
+        if "pe" not in x and all(isinstance(x.get(k), float) and LAW_RULES[k](x[k]) for k in ("pz", "lambda", "kcmax")):
+            if x["kcmax"] < x["lambda"] * x["pz"]:
+                bad(given["kcmax"][1], "KcMax below lambda pz")
+    if laws["n"] == 4:
+        if not powers:
+            bad(0, "no power term")
+        elif all(e is not None and c is not None and e >= 1 and c >= 0 for e, c, _ in powers) and \
+                len({e for e, _, _ in powers}) == len(powers) and all(c == 0 for _, c, _ in powers):
+            bad(powers[0][2], "every kp is 0")
+    if laws["n"] == 3 and "curveid" in given:
+        cid, at = given["curveid"]
+        if cid is not None and LAW_RULES["curveid"](cid):
+            f = functs.get(int(cid))
+            if f is None:
+                bad(at, "CurveID %d names no /FUNCT" % cid)
+            else:
+                ys = [r.get("Y") or 0.0 for r, _ in f["recs"]]
+                if len(ys) < 2 or any(y < 0 for y in ys) or any(b > a for a, b in zip(ys, ys[1:])):
+                    bad(at, "the curve of CurveID %d is not a pressure that falls with the gap" % cid)
+    return out
 
 
 def distinct(ns):
@@ -1858,13 +2012,16 @@ def check_file(path, root, verbose=False):
     ck.load(path, display, [os.path.abspath(path)], recs)
     # raw line checks on the files actually read
     seen = set()
+    keyword = ""
     for f, k, t in recs:
+        if t.startswith("/"):
+            keyword = t.upper().replace(" ", "")
         if len(t) > 100:
             ck.warn(f, k, "line longer than 100 columns")
         # a tab before a value moves the columns; tabs among the trailing blanks move nothing
         if "\t" in t and not is_comment(t) and "," not in t and t[:t.index("\t")].strip() != t.strip():
             ck.issue("RX104", f, k, "tab in a fixed-column line")
-        if "," in t and not is_comment(t):
+        if "," in t and not is_comment(t) and not keyword.startswith("/CTCLAW/"):
             ck.warn(f, k, "comma in a non-comment line (would switch the line to free format)")
         seen.add(f)
     with open(path, encoding="utf-8", errors="replace") as fh:

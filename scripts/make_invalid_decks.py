@@ -729,6 +729,62 @@ def _():
         "/INTER/TYPE7/1 Renard friction (Ifric 3) with C5 = V_cr1 = 0", [("RX703", "INT_C8")]
 
 
+def ctclaw_rows(law_lines, lid=3, inter=1):
+    """A /CTCLAW/lid on interface `inter`; its law-string lines carry the tags CTC_L1, CTC_L2, ..."""
+    rows = [("/CTCLAW/%d" % lid, "CTC_KW"), "Contact law", names(("inter_ID", 10)), (line(I(inter)), "CTC_C1")]
+    rows += [(t, "CTC_L%d" % k) for k, t in enumerate(law_lines, 1)]
+    return rows
+
+
+def with_law(law_lines, extra=()):
+    d = with_inter(base())
+    d.insert_before("BEFORE_END", ctclaw_rows(law_lines) + list(extra))
+    return d
+
+
+@fault("ctclaw_unknown_parameter")
+def _():
+    return with_law(["n1s13{Kc1e3,Mu0.1,", "CtLin1e3,Foo3}"]), \
+        "/CTCLAW/3 on /INTER/TYPE7/1: unknown parameter Foo on the second line of the law string", \
+        [("RX704", "CTC_L2")]
+
+
+@fault("ctclaw_missing_parameter")
+def _():
+    return with_law(["n1s2{Kc1e3,Mu0.2}"]), \
+        "/CTCLAW/3: friction law s2 (linear regularised Coulomb) without its slope CtLin", [("RX704", "CTC_L1")]
+
+
+@fault("ctclaw_lambda_and_pe")
+def _():
+    return with_law(["n2{pz1e5,lambda2e3,pe1e6}"]), \
+        "/CTCLAW/3: exponential law n2 with both lambda and pe (exclusive)", [("RX704", "CTC_L1")]
+
+
+@fault("ctclaw_negative_value")
+def _():
+    return with_law(["n1s1{Kc1e3,Mu-0.2}"]), "/CTCLAW/3: friction coefficient Mu = -0.2", \
+        [("RX704", "CTC_L1")]
+
+
+@fault("ctclaw_kcmax_below_initial")
+def _():
+    return with_law(["n2{pz1e5,lambda2e3,KcMax1e6}"]), \
+        "/CTCLAW/3: KcMax = 1e6 below the initial stiffness lambda pz = 2e8", [("RX704", "CTC_L1")]
+
+
+@fault("ctclaw_unknown_law")
+def _():
+    return with_law(["n7s13{Kc1,Mu0.1,CtLin1}"]), "/CTCLAW/3: normal law n7 (n1..n4 exist)", \
+        [("RX704", "CTC_L1")]
+
+
+@fault("ctclaw_missing_curve")
+def _():
+    return with_law(["n3s1{CurveID12,Mu0.1}"], funct_rows(11, [(-0.1, 100.0), (0.0, 0.0)], "Gap to pressure")), \
+        "/CTCLAW/3: tabulated law n3 names /FUNCT/12; only /FUNCT/11 exists", [("RX704", "CTC_L1")]
+
+
 @fault("ishell_24_qeph")
 def _():
     d = base()
