@@ -2,6 +2,7 @@
 
 #include "apps/engine_pipeline.hpp"
 
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -69,6 +70,39 @@ bool write_text_atomically(const std::string& path, const std::string& text, std
   return true;
 }
 
+// An exponential /CTCLAW law given by pe gets lambda = (K / A_s) / pe per pair: its KcMax must not be below
+// the largest initial stiffness lambda pz, which the starter knows only now, with K and A_s.
+void check_pe_laws(const Deck& deck, const model::Model& model, Diagnostics& diags) {
+  for (const auto& in : model.interfaces) {
+    const auto& law = in.law;
+    if (!(law.kc_max > 0)) continue;
+    const auto s = contact::pe_law_initial_stiffness_max(in);
+    if (!(law.kc_max < s.stiffness)) continue;
+    const KeywordRecord* r = nullptr;
+    for (const auto& rec : deck.records)
+      if (rec.decl->path == "/CTCLAW" && rec.id == in.contact_law_id) r = &rec;
+    Where where{};
+    if (r != nullptr) {
+      where = deck.where(r->pos, 1);
+      std::string lower;
+      for (char c : r->text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      const auto at = lower.find("kcmax");
+      if (at != std::string::npos && at < r->text_pos.size())
+        where = deck.where(r->text_pos[at], static_cast<int>(r->text_column[at]));
+    }
+    std::ostringstream msg;
+    msg << "/CTCLAW/" << in.contact_law_id << " KcMax: KcMax = " << law.kc_max
+        << " is below the largest initial stiffness of the law on interface " << in.id
+        << ", lambda pz = pz (K / A_s) / pe = " << law.pz << " * (" << s.k << " / " << s.area << ") / "
+        << law.pe << " = " << s.stiffness
+        << " (K the largest pair stiffness, A_s the smallest tributary area of its secondary nodes); need "
+           "KcMax >= "
+        << s.stiffness << ", or a larger pe";
+    diags.error(Diag::BadContactLaw, where,
+                About{"/CTCLAW", in.contact_law_id, r ? std::string_view(r->title) : ""}, msg.str());
+  }
+}
+
 }  // namespace
 
 StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ostream& err) {
@@ -124,6 +158,7 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
                       About{in.lagdt ? "/INTER/LAGDT/TYPE7" : "/INTER/TYPE7", in.id, in.title}, msg.str());
       }
       if (moved) model::compute_lumped_masses(model);
+      check_pe_laws(deck, model, diags);
     }
   }
   model::StepEstimate step;

@@ -420,11 +420,92 @@ void initial_penetrations(model::Model& m, model::Interface& in) {
     if (segment_off[s]) in.inactive_segments.push_back(static_cast<std::int32_t>(s));
 }
 
+// Compacts the first `count` nodes of a face or an element to its distinct ones (a degenerate element repeats
+// a node), in order, the rest set to -1; returns their count.
+int distinct_nodes(std::array<std::int32_t, 4>& n, int count) {
+  int d = 0;
+  for (int k = 0; k < count; ++k) {
+    if (n[k] < 0) continue;
+    bool seen = false;
+    for (int j = 0; j < d; ++j) seen = seen || n[j] == n[k];
+    if (!seen) n[d++] = n[k];
+  }
+  for (int k = d; k < 4; ++k) n[k] = -1;
+  return d;
+}
+
+// Area of a polygon of 3 or 4 distinct nodes.
+double polygon_area(const model::Model& m, const std::array<std::int32_t, 4>& n, int count) {
+  if (count == 3) return model::triangle_area(node_x(m, n[0]), node_x(m, n[1]), node_x(m, n[2]));
+  if (count == 4) return model::quad_area(node_x(m, n[0]), node_x(m, n[1]), node_x(m, n[2]), node_x(m, n[3]));
+  return 0.0;
+}
+
 }  // namespace
+
+std::vector<double> node_tributary_areas(const model::Model& m) {
+  std::vector<double> area(m.nodes.size(), 0.0);
+  auto share = [&](std::array<std::int32_t, 4> n, int count) {
+    const int d = distinct_nodes(n, count);
+    const double a = polygon_area(m, n, d);
+    for (int k = 0; k < d; ++k) area[static_cast<std::size_t>(n[k])] += a / d;
+  };
+  for (const auto* b : {&m.shells, &m.shells3}) {
+    const int npe = b->npe();
+    for (std::size_t e = 0; e < b->size(); ++e) {
+      std::array<std::int32_t, 4> n{-1, -1, -1, -1};
+      for (int k = 0; k < npe; ++k) n[k] = b->conn[e * static_cast<std::size_t>(npe) + k];
+      share(n, npe);
+    }
+  }
+  // Outer brick faces: a face (its sorted distinct nodes) that only one brick has.
+  std::vector<std::pair<std::array<std::int32_t, 4>, std::array<std::int32_t, 4>>> faces;  // key, nodes
+  faces.reserve(6 * m.bricks.size());
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+    const auto* c = &m.bricks.conn[8 * e];
+    std::vector<std::array<std::int32_t, 4>> own;
+    for (const auto& f : model::kBrickFaces) {
+      std::array<std::int32_t, 4> n{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
+      const int d = distinct_nodes(n, 4);
+      if (d < 3) continue;
+      std::array<std::int32_t, 4> key{-1, -1, -1, -1};
+      std::copy(n.begin(), n.begin() + d, key.begin());
+      for (int a = 1; a < d; ++a)  // insertion sort of 3 or 4 ids
+        for (int b = a; b > 0 && key[b - 1] > key[b]; --b) std::swap(key[b - 1], key[b]);
+      if (std::find(own.begin(), own.end(), key) != own.end()) continue;  // a brick counts a face once
+      own.push_back(key);
+      faces.push_back({key, n});
+    }
+  }
+  std::sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].first == faces[i].first) ++j;
+    if (j == i + 1) share(faces[i].second, 4);
+    i = j;
+  }
+  return area;
+}
+
+PeLawStiffness pe_law_initial_stiffness_max(const model::Interface& in) {
+  const auto& law = in.law;
+  if (in.contact_law_id == 0 || law.normal != model::NormalLaw::Exponential || !(law.pe > 0)) return {};
+  double a_min = 0;
+  for (double a : in.tributary_area)
+    if (a > 0 && (a_min == 0 || a < a_min)) a_min = a;
+  if (a_min == 0) return {};
+  return {law.pz * (in.stiff_hi / a_min) / law.pe, in.stiff_hi, a_min};
+}
 
 void prepare_type7_interfaces(model::Model& m) {
   if (m.interfaces.empty()) return;
   const NodeSupport support = node_support(m);
+  const std::vector<double> area = node_tributary_areas(m);
+  for (auto& in : m.interfaces) {
+    in.tributary_area.resize(in.secondary_nodes.size());
+    for (std::size_t k = 0; k < in.secondary_nodes.size(); ++k)
+      in.tributary_area[k] = area[static_cast<std::size_t>(in.secondary_nodes[k])];
+  }
   for (auto& in : m.interfaces) {
     if (in.main_surface == kNone) continue;
     gap_and_stiffness(m, in, support);

@@ -33,9 +33,24 @@ double pair_stiffness(const model::Interface& in, double k_main, double k_second
 // Pair gap from the node and segment half-thicknesses for Igap 0..2 (4.1).
 double pair_gap(const model::Interface& in, double g_secondary, double g_main);
 
-// Fills gapmin, gap_node, gap_segment, stiff_node, stiff_segment, the gap and stiffness ranges, and
-// the initial-penetration fields of every interface. Inacti = 3 moves the penetrating nodes in
-// `m.nodes` (the engine then starts from the corrected coordinates).
+// Tributary area of every node of the model (initial coordinates): a quarter of each 4-node shell around
+// the node, a third of each 3-node shell, a quarter of each outer brick face (a face no other brick has);
+// a degenerate element or face shares its area among its distinct nodes. 0 for a node without any.
+std::vector<double> node_tributary_areas(const model::Model& m);
+
+// The largest initial stiffness density lambda pz (Pa/m) of an exponential /CTCLAW law given by pe over the
+// interface's secondary nodes, lambda = (K / A_s) / pe: K = stiff_hi and A_s the smallest nonzero
+// tributary area. All 0 when the interface has no such law or no node with an area.
+struct PeLawStiffness {
+  double stiffness = 0;  // lambda pz
+  double k = 0;          // K (N/m)
+  double area = 0;       // A_s (m^2)
+};
+PeLawStiffness pe_law_initial_stiffness_max(const model::Interface& in);
+
+// Fills gapmin, gap_node, gap_segment, stiff_node, stiff_segment, the gap and stiffness ranges, the
+// initial-penetration fields and the tributary areas (before any node moves) of every interface. Inacti = 3
+// moves the penetrating nodes in `m.nodes` (the engine then starts from the corrected coordinates).
 void prepare_type7_interfaces(model::Model& m);
 
 }  // namespace radx::contact

@@ -1,7 +1,13 @@
 #include "io/starter_listing.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <ostream>
+#include <sstream>
+#include <utility>
+
+#include "io/unit_labels.hpp"
 
 namespace radx::io {
 
@@ -28,6 +34,139 @@ std::string inacti_text(int inacti) {
     case 6: return "gap reduced to (g - P0) - 5 %, growing back to g as the pair opens";
     default: return "?";
   }
+}
+
+// The range "a" or "a to b" of a value that varies over an interface's pairs.
+std::string range_text(double lo, double hi) {
+  std::ostringstream os;
+  os << std::setprecision(6) << lo;
+  if (hi != lo) os << " to " << hi;
+  return os.str();
+}
+
+// The range of the automatic stiffness density K / A_s over the interface's pairs: K from stiff_lo to
+// stiff_hi, A_s over the secondary nodes that have an area. {0, 0} when no node has one.
+std::pair<double, double> automatic_stiffness_range(const model::Interface& c) {
+  double a_lo = 0, a_hi = 0;
+  for (double a : c.tributary_area) {
+    if (!(a > 0)) continue;
+    a_lo = a_lo == 0 ? a : std::min(a_lo, a);
+    a_hi = std::max(a_hi, a);
+  }
+  if (a_lo == 0) return {0.0, 0.0};
+  return {c.stiff_lo / a_hi, c.stiff_hi / a_lo};
+}
+
+// A /CTCLAW law as the starter understood it (contact-laws.md sections 2 and 3), in the work units.
+void write_contact_law(std::ostream& os, const model::Model& m, const model::Interface& c) {
+  const auto& law = c.law;
+  const auto& u = m.units;
+  const std::string pa = unit_label(u, 1, -1, -2);
+  const std::string pa_per_l = pa + "/" + u.length_name;
+  const std::string per_l = "1/" + u.length_name;
+  const std::string len = u.length_name;
+  const auto [kc_lo, kc_hi] = automatic_stiffness_range(c);
+  const std::string kc_auto = kc_lo > 0
+                                  ? range_text(kc_lo, kc_hi) + " " + pa_per_l
+                                  : std::string("(no secondary node has an area: that of the segment hit)");
+  const char* in = "        ";
+  switch (law.normal) {
+    case model::NormalLaw::Interface:
+      os << in << "normal law     the interface's own penalty (no n part)\n";
+      break;
+    case model::NormalLaw::Linear:
+      os << in << "normal law     n1 bilinear: P = Kc u for u > 0\n";
+      if (law.kc == -1)
+        os << in << "               Kc automatic, K/A_s from " << kc_auto << '\n';
+      else
+        os << in << "               Kc " << law.kc << ' ' << pa_per_l << '\n';
+      break;
+    case model::NormalLaw::Exponential: {
+      os << in << "normal law     n2 exponential: P = pz exp(lambda u)\n"
+         << in << "               pz " << law.pz << ' ' << pa << '\n';
+      double l_lo = law.lambda, l_hi = law.lambda;
+      if (law.pe > 0) {
+        l_lo = kc_lo / law.pe;
+        l_hi = kc_hi / law.pe;
+        os << in << "               pe " << law.pe << ' ' << pa << ": lambda = Kc_auto/pe ";
+        if (kc_lo > 0)
+          os << "from " << range_text(l_lo, l_hi) << ' ' << per_l << " (Kc_auto = K/A_s from " << kc_auto
+             << ")\n";
+        else
+          os << kc_auto << '\n';
+      } else {
+        os << in << "               lambda " << law.lambda << ' ' << per_l << '\n';
+      }
+      if (law.kc_max > 0) {
+        os << in << "               KcMax " << law.kc_max << ' ' << pa_per_l;
+        if (l_lo > 0) {
+          // u_max = ln(KcMax / (pz lambda)) / lambda decreases with lambda above KcMax / (pz e): evaluate
+          // both ends.
+          auto knee = [&](double l) { return std::log(law.kc_max / (law.pz * l)) / l; };
+          const double k1 = knee(l_lo), k2 = knee(l_hi);
+          os << ": linear beyond the overclosure u_max = ln(KcMax/(pz lambda))/lambda = "
+             << range_text(std::min(k1, k2), std::max(k1, k2)) << ' ' << len;
+        }
+        os << '\n';
+      } else {
+        os << in << "               KcMax none (the stiffness is not bounded)\n";
+      }
+      break;
+    }
+    case model::NormalLaw::Tabulated: {
+      os << in << "normal law     n3 tabulated: P(gap) from ";
+      if (law.curve >= 0 && static_cast<std::size_t>(law.curve) < m.functions.size()) {
+        const auto& f = m.functions[static_cast<std::size_t>(law.curve)];
+        os << "/FUNCT/" << f.id << " \"" << f.title << "\" (" << f.x.size() << " points, gap "
+           << range_text(f.x.empty() ? 0 : f.x.front(), f.x.empty() ? 0 : f.x.back()) << ' ' << len << ")";
+      } else {
+        os << "?";
+      }
+      os << ", " << (law.cubic ? "monotone cubic" : "linear") << " interpolation\n";
+      break;
+    }
+    case model::NormalLaw::Power:
+      os << in << "normal law     n4 power: P = sum of kp_m u^m for u > 0\n";
+      for (std::size_t j = 0; j < law.power_m.size() && j < law.power_k.size(); ++j) {
+        const double mm = law.power_m[j];
+        os << in << "               kp" << mm << ' ' << law.power_k[j];
+        if (mm == std::floor(mm) && mm < 100) os << ' ' << pa << '/' << len << static_cast<int>(mm);
+        os << '\n';
+      }
+      break;
+  }
+  const char* dirs = law.bidirectional ? "two directions (the tangent plane)"
+                                       : "one direction (the segment's first tangent)";
+  switch (law.friction) {
+    case model::FrictionLaw::Interface:
+      os << in << "friction law   the interface's own (no s part)\n";
+      return;
+    case model::FrictionLaw::None: os << in << "friction law   none: frictionless (no s part)\n"; return;
+    case model::FrictionLaw::Coulomb:
+      os << in << "friction law   s" << (law.bidirectional ? 11 : 1) << " exact Coulomb, " << dirs << '\n';
+      break;
+    case model::FrictionLaw::Linear:
+      os << in << "friction law   s" << (law.bidirectional ? 12 : 2)
+         << " regularised Coulomb, linear: min(ct s, mu p), " << dirs << '\n';
+      break;
+    case model::FrictionLaw::Arctangent:
+      os << in << "friction law   s" << (law.bidirectional ? 13 : 3)
+         << " regularised Coulomb, arctangent: mu p (2/pi) atan(ct s), " << dirs << '\n';
+      break;
+    case model::FrictionLaw::ScaledLinear:
+      os << in << "friction law   s" << (law.bidirectional ? 14 : 4)
+         << " regularised Coulomb, scaled linear: p min(ct s, mu), " << dirs << '\n';
+      break;
+  }
+  os << in << "               Mu " << law.mu << '\n';
+  if (law.friction == model::FrictionLaw::Linear || law.friction == model::FrictionLaw::Arctangent)
+    os << in << "               CtLin " << law.ct << ' ' << pa << '.' << u.time_name << '/' << len << '\n';
+  else if (law.friction == model::FrictionLaw::ScaledLinear)
+    os << in << "               CtLin " << law.ct << ' ' << u.time_name << '/' << len << '\n';
+  if (law.kappa > 0)
+    os << in << "               kappa " << law.kappa << ' ' << pa_per_l << '\n';
+  else
+    os << in << "               kappa K/A_s (default): " << kc_auto << '\n';
 }
 
 }  // namespace
@@ -194,8 +333,10 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
        << "      Bumult                 " << c.bumult << '\n'
        << "      Tstart, Tstop          " << c.t_start << ", "
        << (c.t_stop >= model::kNever ? std::string("never") : std::to_string(c.t_stop)) << '\n';
-    if (!c.contact_law.empty())
+    if (!c.contact_law.empty()) {
       os << "      contact law /CTCLAW/" << c.contact_law_id << "  " << c.contact_law << '\n';
+      write_contact_law(os, m, c);
+    }
     os << "      initial penetrations   " << c.initial_penetrations;
     if (c.initial_penetrations > 0)
       os << " (largest " << c.max_initial_penetration << " at node " << c.max_penetration_node << "; Inacti "

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "apps/starter_pipeline.hpp"
 #include "parser/ctclaw_urn.hpp"
 #include "parser/deck.hpp"
 #include "parser/field_parse.hpp"
@@ -357,4 +358,40 @@ TEST_CASE("law values in input units other than the work units are converted", "
       build(law_deck({"n4{kp2=1e15}"}, "", "                  kg                   m                   s"));
   REQUIRE_FALSE(p.diags.has_errors());
   CHECK(p.model.interfaces[0].law.power_k[0] == Approx(1e15 * 1e-6 * 1e-6));  // Pa/m^2 -> MPa/mm^2
+}
+
+TEST_CASE("an exponential law by pe: KcMax below the largest initial stiffness is refused by the starter",
+          "[ctclaw]") {
+  radx::test::TempDir dir;
+  auto run = [&](const std::string& law) {
+    const auto path = dir.write("PE_0000.rad", law_deck({law}));
+    radx::app::StarterOptions opt;
+    opt.deck = path;
+    opt.out_dir = dir.path().string();
+    std::ostringstream so, se;
+    const auto res = radx::app::run_starter(opt, so, se);
+    return std::pair{res.exit_code, se.str()};
+  };
+  // K / A_s here is of order 1e4 to 1e5 N/mm^3 (MPa/mm): with pz = 1 and pe = 1 the initial stiffness is
+  // that.
+  const auto [code_ok, err_ok] = run("n2{pz1,pe1,KcMax1e12}");
+  INFO(err_ok);
+  CHECK(code_ok == 0);
+  const auto [code, err] = run("n2{pz1,pe1,KcMax1}");
+  INFO(err);
+  CHECK(code == 1);
+  CHECK(err.find("RX704") != std::string::npos);
+  CHECK(err.find("/CTCLAW/5 KcMax") != std::string::npos);
+  CHECK(err.find(":" + std::to_string(kLawLine) + ":") != std::string::npos);
+  // The listing prints the law as understood, lambda as a range over the secondary nodes.
+  run("n2s11{pz1,pe1,KcMax1e12,Mu0.2}");
+  std::ifstream listing(dir.file("PE_0000.out"));
+  std::stringstream text;
+  text << listing.rdbuf();
+  INFO(text.str());
+  CHECK(text.str().find("n2 exponential") != std::string::npos);
+  CHECK(text.str().find("lambda = Kc_auto/pe from") != std::string::npos);
+  CHECK(text.str().find("u_max") != std::string::npos);
+  CHECK(text.str().find("s11 exact Coulomb, two directions") != std::string::npos);
+  CHECK(text.str().find("kappa K/A_s (default)") != std::string::npos);
 }

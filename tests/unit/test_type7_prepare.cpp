@@ -247,3 +247,89 @@ TEST_CASE("a node never pairs with a segment that contains it (self-contact)", "
   radx::contact::prepare_type7_interfaces(mod);
   CHECK(mod.interfaces[0].initial_penetrations == 0);
 }
+
+TEST_CASE("tributary areas: a quarter of each shell and open brick face around a node, a third of a triangle",
+          "[type7]") {
+  // A plate of 2 x 2 shells of side h (A = h^2) and a cube of side a made of one brick, apart.
+  const double h = 10.0, a = 4.0;
+  Model mod = plate_and_brick(2, h, 1.0, a, 20.0);
+  const double area = h * h;
+  const auto nodal = radx::contact::node_tributary_areas(mod);
+  REQUIRE(nodal.size() == mod.nodes.size());
+  // Plate nodes 0..8, row by row: corners A/4, edge middles A/2, centre A.
+  for (int k : {0, 2, 6, 8}) CHECK(nodal[k] == Approx(area / 4).epsilon(1e-12));
+  for (int k : {1, 3, 5, 7}) CHECK(nodal[k] == Approx(area / 2).epsilon(1e-12));
+  CHECK(nodal[4] == Approx(area).epsilon(1e-12));
+  // Each brick corner is on 3 faces of a^2: 3 a^2 / 4.
+  for (int k = 9; k < 17; ++k) CHECK(nodal[k] == Approx(3 * a * a / 4).epsilon(1e-12));
+
+  // Every interface gets the areas of its secondary nodes (a node without element: 0).
+  mod.nodes.id.push_back(99);
+  mod.nodes.x.push_back(0);
+  mod.nodes.y.push_back(0);
+  mod.nodes.z.push_back(50);
+  auto in = block_on_plate(mod);  // the last 8 nodes: 7 brick corners and the free node
+  mod.interfaces.push_back(in);
+  radx::contact::prepare_type7_interfaces(mod);
+  const auto& r = mod.interfaces[0];
+  REQUIRE(r.tributary_area.size() == 8);
+  for (std::size_t k = 0; k < 7; ++k) CHECK(r.tributary_area[k] == Approx(3 * a * a / 4).epsilon(1e-12));
+  CHECK(r.tributary_area[7] == 0.0);
+}
+
+TEST_CASE("tributary areas: a face shared by two bricks is inner, a 3-node shell gives a third", "[type7]") {
+  Model mod;
+  auto add_node = [&](double x, double y, double z) {
+    mod.nodes.id.push_back(static_cast<std::int64_t>(mod.nodes.id.size() + 1));
+    mod.nodes.x.push_back(x);
+    mod.nodes.y.push_back(y);
+    mod.nodes.z.push_back(z);
+  };
+  // Two unit cubes side by side along x: nodes (i, j, k) for i = 0..2, j, k = 0..1.
+  auto node = [](int i, int j, int k) { return static_cast<std::int32_t>(i + 3 * j + 6 * k); };
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) add_node(i, j, k);
+  for (int i = 0; i < 2; ++i) {
+    mod.bricks.id.push_back(i + 1);
+    mod.bricks.part.push_back(0);
+    for (auto n : {node(i, 0, 0), node(i + 1, 0, 0), node(i + 1, 1, 0), node(i, 1, 0), node(i, 0, 1),
+                   node(i + 1, 0, 1), node(i + 1, 1, 1), node(i, 1, 1)})
+      mod.bricks.conn.push_back(n);
+  }
+  // A right triangle of legs 3 and 4 (area 6) on three new nodes.
+  add_node(10, 0, 0);
+  add_node(13, 0, 0);
+  add_node(10, 4, 0);
+  mod.shells3.id.push_back(1);
+  mod.shells3.part.push_back(0);
+  for (std::int32_t n : {12, 13, 14}) mod.shells3.conn.push_back(n);
+  const auto nodal = radx::contact::node_tributary_areas(mod);
+  // An end corner (i = 0 or 2) is on 3 outer faces of area 1; a middle node (i = 1) on 4 (two faces of each
+  // brick, the shared face left out).
+  for (int j = 0; j < 2; ++j)
+    for (int k = 0; k < 2; ++k) {
+      CHECK(nodal[node(0, j, k)] == Approx(0.75).epsilon(1e-12));
+      CHECK(nodal[node(2, j, k)] == Approx(0.75).epsilon(1e-12));
+      CHECK(nodal[node(1, j, k)] == Approx(1.0).epsilon(1e-12));
+    }
+  for (int n : {12, 13, 14}) CHECK(nodal[n] == Approx(2.0).epsilon(1e-12));
+}
+
+TEST_CASE("an exponential law given by pe: the largest initial stiffness pz (K / A_s) / pe", "[type7]") {
+  m::Interface in;
+  in.contact_law_id = 3;
+  in.law.normal = m::NormalLaw::Exponential;
+  in.law.pz = 2.0;
+  in.law.pe = 5.0;
+  in.stiff_lo = 100.0;
+  in.stiff_hi = 400.0;
+  in.tributary_area = {0.0, 8.0, 2.0, 4.0};
+  const auto s = radx::contact::pe_law_initial_stiffness_max(in);
+  CHECK(s.k == 400.0);
+  CHECK(s.area == 2.0);
+  CHECK(s.stiffness == Approx(2.0 * (400.0 / 2.0) / 5.0));
+  in.law.pe = 0;
+  in.law.lambda = 3;
+  CHECK(radx::contact::pe_law_initial_stiffness_max(in).stiffness == 0.0);
+}
