@@ -47,7 +47,7 @@ bool mentions(const std::vector<radx::UrnProblem>& ps, const std::string& what) 
 
 }  // namespace
 
-TEST_CASE("n1: Kc > 0 or -1 (automatic); friction s13 with Mu and CtLin", "[ctclaw]") {
+TEST_CASE("n1: Kc > 0 or -1 (automatic), with friction s13, Mu and CtLin", "[ctclaw]") {
   auto r = ok("n1s13{Kc1e12,Mu0.1,CtLin1e3}");
   CHECK(r.law.normal == m::NormalLaw::Linear);
   CHECK(r.law.kc == 1e12);
@@ -130,7 +130,7 @@ TEST_CASE("n4: power terms kp<m>=<value> in the order given", "[ctclaw]") {
   refused("n4{kp1=x}", "kp1");
 }
 
-TEST_CASE("the friction laws: s1..s4 one direction, s11..s14 two; Mu, CtLin, kappa", "[ctclaw]") {
+TEST_CASE("the friction laws: s1..s4 one direction, s11..s14 two, with Mu, CtLin, kappa", "[ctclaw]") {
   struct Case {
     const char* text;
     m::FrictionLaw law;
