@@ -3,10 +3,11 @@
 Not a test by itself. On top of check_contact_common (the deck reader, running radx, the time history), it
 holds what the law checks need, each computed from the deck the check runs:
   * the /CTCLAW cards and /FUNCT curves of a deck, and a reader of the law string (contact-laws.md section 4);
-  * the tributary area A_s of each node by the starter's rule (contact/type7_prepare.hpp,
-    node_tributary_areas): a quarter of each 4-node shell around the node, a third of each 3-node shell and a
-    quarter of each OUTER brick face (a face no other brick has) -- so the lower-face corner of a brick gets the
-    quarters of the two side faces it also lies on, not only the quarter of its face in contact;
+  * the tributary area A_s of each secondary node by the starter's rule (contact/type7_prepare.hpp,
+    tributary_areas): the surface patches are the shells and the outer brick faces (a face no other brick has);
+    a node takes a quarter of each 4-node patch and a third of each 3-node patch around it whose nodes are all
+    secondary nodes of the interface (the contact surface: a block's lower-face corner takes its share of the
+    lower face, not of the block's sides), or, when it has no such patch, of every patch around it;
   * the normal laws P(u) of contact-laws.md section 2, written again here from the specification (the monotone
     cubic with the tangents that contact/ctclaw_laws.cpp states), their energy integral and the largest
     overclosure that absorbs a given energy;
@@ -91,20 +92,10 @@ def _distinct(ns):
     return out
 
 
-def tributary_areas(model):
-    """{node id: A_s} of a check_contact_common.Model by the starter's rule (see the module docstring)."""
-    area = {n: 0.0 for n in model.nodes}
-
-    def share(ns):
-        d = _distinct(ns)
-        if len(d) < 3:
-            return
-        a = _polygon_area([model.nodes[n] for n in d])
-        for n in d:
-            area[n] += a / len(d)
-
-    for _, ns, _ in model.shells.values():
-        share(ns)
+def tributary_areas(model, nodes):
+    """{node id: A_s} of the secondary nodes `nodes` of a check_contact_common.Model by the starter's rule (see
+    the module docstring)."""
+    patches = [_distinct(ns) for _, ns, _ in model.shells.values()]
     faces = {}
     for _, ns in model.bricks.values():
         own = set()
@@ -117,10 +108,21 @@ def tributary_areas(model):
                 continue
             own.add(key)
             faces.setdefault(key, []).append(d)
-    for key, found in faces.items():
-        if len(found) == 1:
-            share(found[0])
-    return area
+    patches += [found[0] for found in faces.values() if len(found) == 1]
+    secondary = set(nodes)
+    on_surface = {n: 0.0 for n in nodes}
+    around = {n: 0.0 for n in nodes}
+    for d in patches:
+        if len(d) < 3:
+            continue
+        share = _polygon_area([model.nodes[n] for n in d]) / len(d)
+        inside = all(n in secondary for n in d)
+        for n in d:
+            if n in secondary:
+                around[n] += share
+                if inside:
+                    on_surface[n] += share
+    return {n: on_surface[n] if on_surface[n] > 0 else around[n] for n in nodes}
 
 
 def listing_automatic_stiffness(listing_text):

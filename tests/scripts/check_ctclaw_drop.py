@@ -6,8 +6,8 @@ usage: /usr/bin/python3 check_ctclaw_drop.py --radx RADX --decks decks/verificat
 Each deck: a stiff cube (mass M) moving at v0 along -Z towards one fixed, flat main segment of a TYPE7 whose
 normal law is a /CTCLAW; its N lower-face nodes are the secondary nodes and reach the gap together, so the cube
 is one degree of freedom on N pairs, each pushing with P(u) A_s (u the overclosure into the gap, A_s the node's
-tributary area by the starter's rule: check_ctclaw_common.tributary_areas, a quarter of every outer brick face
-around the node -- for a lower-face corner of this cube the lower face and two side faces). Everything (M, the
+tributary area by the starter's rule, check_ctclaw_common.tributary_areas: a quarter of each patch of the
+contact surface around the node, here the cube's lower face). Everything (M, the
 nodal masses, K, the gap, VISs, v0, the law string and its /FUNCT, the geometry for A_s) is read from the deck.
 The runs use one thread (the checks are about the laws; thread determinism is contact.threads').
 
@@ -59,8 +59,8 @@ def one_deck(radx, deck, out, checks):
     law_id, urn = ctc.ctclaws(m.deck)[iid]
     law = ctc.parse_urn(urn)
     curves = ctc.functs(m.deck)
-    areas = ctc.tributary_areas(m)
     secondary = m.groups[it["grnd"]]
+    areas = ctc.tributary_areas(m, secondary)
     _, M, vel = m.moving_body()
     v0 = -vel[2]
     z_plate = m.flat_z([n for pid, ns, _ in m.shells.values() for n in ns], "the main plate")

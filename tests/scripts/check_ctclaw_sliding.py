@@ -138,8 +138,8 @@ def one_deck(radx, deck, out, checks):
     law = ctc.parse_urn(urn)
     assert law["friction"] in (1, 2, 3, 4, 11, 12, 13, 14), "a friction law is needed: %s" % urn
     gap = it["Gapmin"]
-    areas = ctc.tributary_areas(m)
     secondary = m.groups[it["grnd"]]
+    areas = ctc.tributary_areas(m, secondary)
     body, M, vel = m.moving_body()
     v0 = math.sqrt(sum(c * c for c in vel))
     e = [c / v0 for c in vel]
@@ -188,9 +188,9 @@ def one_deck(radx, deck, out, checks):
             v_star = (mu * weights[0] / a_s[0] / prm["ctlin"] if kind == 2 else mu / prm["ctlin"] if kind == 4
                       else 0.0)
             sliding = (v <= 0.9 * v0) & (v >= max(0.1 * v0, 2 * v_star))
-            checks.check(sliding.sum() >= 10, "%d time-history rows in the sliding phase" % sliding.sum())
-            slope = np.polyfit(t[sliding], v[sliding], 1)[0]
-            checks.close(-slope, mu * g_acc, 0.03, "deceleration while sliding (m/s2)")
+            if checks.check(sliding.sum() >= 10, "%d time-history rows in the sliding phase" % sliding.sum()):
+                slope = np.polyfit(t[sliding], v[sliding], 1)[0]
+                checks.close(-slope, mu * g_acc, 0.03, "deceleration while sliding (m/s2)")
         for level in (0.9, 0.5, 0.1):
             t_run, k = first_below(t, v, level * v0)
             t_ode, _ = first_below(te, ve, level * v0)
