@@ -39,7 +39,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "tests", "scripts"))
 import check_ctclaw_common as ctc  # noqa: E402  (the laws, areas and closed forms of the checks)
 import make_contact_decks as mc  # noqa: E402  (the cube models and the contact cards)
 import make_verification_decks as v  # noqa: E402  (shared deck pieces)
-from radx_deck_format import I, R, RULER, line, names  # noqa: E402
+from radx_deck_format import I, RULER, line, names  # noqa: E402
 
 VERSION = v.VERSION
 CASES = ("ctclaw_drop", "ctclaw_sliding", "ctclaw_line_table", "ctclaw_lagdt")
@@ -85,9 +85,9 @@ DROP = dict(mc.NOS, K=2.25e6, GAP=1e-3, CLEAR=2.5e-3, V0=1.0, T_STOP=0.0075, TH_
             VISS_SMALL=1e-10)
 # The laws: (run suffix, law string, interface stiffness K (N/m), VISs, /FUNCT points or None, what).
 # The parameters put each law's largest overclosure near 0.4 to 0.5 of the gap with the cube's 4.5 J.
-# The table's slopes jump (1.6e8, 1.2e10, 1.8e10 Pa/m), so that its cubic depends on the tangents at the points: with the
-# arithmetic mean of the secants instead of the monotone (weighted harmonic) one u_max moves by 1.1 %, with the
-# linear interpolation by 4 %.
+# The table's slopes jump (1.6e8, 1.2e10, 1.8e10 Pa/m), so that its cubic depends on the tangents at the points:
+# with the arithmetic mean of the secants instead of the monotone (weighted harmonic) one, u_max moves by 1.1 %
+# (and the cubic is no longer monotone), with the linear interpolation by 4 %.
 TABLE = [(-1e-3, 1.2e7), (-5e-4, 3e6), (-2.5e-4, 4e4), (0.0, 0.0)]
 DROP_LAWS = (
     ("N1", "n1{Kc5.625e9}", 2.25e6, 1e-10, None, "bilinear, Kc given"),
@@ -347,7 +347,8 @@ M = {g(info['M'])} kg, resting under gravity g = {p['G']} m/s2 on one fixed shel
 {p['VISS']}, Fric 0) and `/CTCLAW/1`. Its normal part is the bilinear law with Kc = -1 (P A_s = K u), so each
 lower-face pair carries f = M g / 4 = {g(info['f'])} N at the static overclosure p0 = f / K = {g(p0_law)} m,
 where the cube starts (`_S11_PENALTY` has no normal part: the interface's own penalty K p g / (g - p) holds f
-at p0 = f g / (K g + f) = {g(p0_pen)} m); `/INIVEL/TRA` gives it v0 = {p['V0']} m/s along +X (+Y for `_S1_Y`, on a plate long in Y).
+at p0 = f g / (K g + f) = {g(p0_pen)} m); `/INIVEL/TRA` gives it v0 = {p['V0']} m/s along +X (+Y for `_S1_Y`,
+on a plate long in Y).
 The tributary area (starter's rule) is A_s = {g(a_s)} m^2, so the contact pressure is p = f / A_s = {g(pres)} Pa.
 
 ## Closed form
@@ -371,8 +372,9 @@ ODE includes that share (about 1 % on s12's `_LOW_CT` time to 0.1 v0).
 
 `tests/scripts/check_ctclaw_sliding.py` runs every deck and checks (tolerances in its header): the deceleration
 while sliding (least squares, 0.9 v0 down to 0.1 v0 or twice the threshold speed) against mu g within 3 % for
-s11, s1, s12, s14; the speed history against the ODE of the law (s13 and the `_LOW_CT` decks above all); the stop time; the `_S1_Y` cube keeping v0; the friction
-energy against the kinetic energy lost (2 % of the initial kinetic energy); the energy error (1 %).
+s11, s1, s12, s14; the speed history against the ODE of the law (s13 and the `_LOW_CT` decks above all); the
+stop time; the `_S1_Y` cube keeping v0; the friction energy against the kinetic energy lost (2 % of the initial
+kinetic energy); the energy error (1 %).
 """
     return runs, readme
 
