@@ -80,6 +80,7 @@ struct InterfaceState {
   const model::Interface* in = nullptr;
   std::vector<std::array<std::int32_t, 4>> segments;
   std::vector<double> segment_area0;
+  std::vector<double> tributary_area;  // A_s per secondary index (the starter's; updated as elements die)
   std::unique_ptr<Type7Search> search;
   std::vector<std::uint8_t> node_off, segment_off;  // per secondary index / segment index
   std::vector<double> reduction;                    // Inacti 5, 6: r per secondary index
@@ -419,6 +420,7 @@ struct Type7Contact::Impl {
           st.reduction[static_cast<std::size_t>(it - in.secondary_nodes.begin())] =
               in.initial_gap_reduction[k];
       }
+      st.tributary_area = in.tributary_area;
       st.segment_area0.resize(nm);
       for (std::size_t s = 0; s < nm; ++s) {
         std::array<Vec3, 4> x{};
@@ -528,7 +530,7 @@ struct Type7Contact::Impl {
   // A_s of secondary node ks (its tributary area from the starter), or the area of segment sb it hits when it
   // has none (a free node).
   double law_area(const InterfaceState& st, std::size_t ks, std::size_t sb) const {
-    const auto& a = st.in->tributary_area;
+    const auto& a = st.tributary_area;
     return ks < a.size() && a[ks] > 0 ? a[ks] : st.segment_area0[sb];
   }
 
@@ -1006,6 +1008,8 @@ void Type7Contact::elements_deleted(std::span<const std::uint8_t> alive) {
         for (std::size_t k = 0; k < npe; ++k) ++alive_around[static_cast<std::size_t>(b->conn[e * npe + k])];
   }
   for (auto& st : s.interfaces) {
+    // A /CTCLAW law's areas follow the faces that are left (type7_prepare.hpp, tributary_areas).
+    if (st.in->contact_law_id != 0) st.tributary_area = tributary_areas(m, st.in->secondary_nodes, alive);
     const int idel = st.in->idel;
     if (idel == 0) continue;
     for (std::size_t g = 0; g < st.segments.size(); ++g) {

@@ -443,25 +443,34 @@ double polygon_area(const model::Model& m, const std::array<std::int32_t, 4>& n,
 
 }  // namespace
 
-std::vector<double> node_tributary_areas(const model::Model& m) {
-  std::vector<double> area(m.nodes.size(), 0.0);
-  auto share = [&](std::array<std::int32_t, 4> n, int count) {
-    const int d = distinct_nodes(n, count);
-    const double a = polygon_area(m, n, d);
-    for (int k = 0; k < d; ++k) area[static_cast<std::size_t>(n[k])] += a / d;
+std::vector<double> tributary_areas(const model::Model& m, std::span<const std::int32_t> nodes,
+                                    std::span<const std::uint8_t> alive) {
+  // The surface patches: each live shell, and each face that exactly one live brick has.
+  struct Patch {
+    std::array<std::int32_t, 4> n;
+    int count;
+    double area;
   };
+  std::vector<Patch> patches;
+  auto is_alive = [&](std::size_t cell) { return alive.empty() || alive[cell] != 0; };
+  auto add_patch = [&](std::array<std::int32_t, 4> n, int count) {
+    const int d = distinct_nodes(n, count);
+    if (d >= 3) patches.push_back({n, d, polygon_area(m, n, d)});
+  };
+  std::size_t cell = 0;
   for (const auto* b : {&m.shells, &m.shells3}) {
     const int npe = b->npe();
-    for (std::size_t e = 0; e < b->size(); ++e) {
+    for (std::size_t e = 0; e < b->size(); ++e, ++cell) {
+      if (!is_alive(cell)) continue;
       std::array<std::int32_t, 4> n{-1, -1, -1, -1};
       for (int k = 0; k < npe; ++k) n[k] = b->conn[e * static_cast<std::size_t>(npe) + k];
-      share(n, npe);
+      add_patch(n, npe);
     }
   }
-  // Outer brick faces: a face (its sorted distinct nodes) that only one brick has.
   std::vector<std::pair<std::array<std::int32_t, 4>, std::array<std::int32_t, 4>>> faces;  // key, nodes
   faces.reserve(6 * m.bricks.size());
-  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+  for (std::size_t e = 0; e < m.bricks.size(); ++e, ++cell) {
+    if (!is_alive(cell)) continue;
     const auto* c = &m.bricks.conn[8 * e];
     std::vector<std::array<std::int32_t, 4>> own;
     for (const auto& f : model::kBrickFaces) {
@@ -481,10 +490,28 @@ std::vector<double> node_tributary_areas(const model::Model& m) {
   for (std::size_t i = 0; i < faces.size();) {
     std::size_t j = i + 1;
     while (j < faces.size() && faces[j].first == faces[i].first) ++j;
-    if (j == i + 1) share(faces[i].second, 4);
+    if (j == i + 1) add_patch(faces[i].second, 4);
     i = j;
   }
-  return area;
+  // A patch belongs to the contact surface when all its nodes are among `nodes`; a node that has no such
+  // patch takes every patch around it.
+  std::vector<std::int32_t> slot(m.nodes.size(), -1);
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    slot[static_cast<std::size_t>(nodes[k])] = static_cast<std::int32_t>(k);
+  std::vector<double> on_surface(nodes.size(), 0.0), around(nodes.size(), 0.0);
+  for (const auto& p : patches) {
+    bool inside = true;
+    for (int k = 0; k < p.count; ++k) inside = inside && slot[static_cast<std::size_t>(p.n[k])] >= 0;
+    for (int k = 0; k < p.count; ++k) {
+      const auto s = slot[static_cast<std::size_t>(p.n[k])];
+      if (s < 0) continue;
+      around[static_cast<std::size_t>(s)] += p.area / p.count;
+      if (inside) on_surface[static_cast<std::size_t>(s)] += p.area / p.count;
+    }
+  }
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    if (!(on_surface[k] > 0)) on_surface[k] = around[k];
+  return on_surface;
 }
 
 PeLawStiffness pe_law_initial_stiffness_max(const model::Interface& in) {
@@ -500,12 +527,7 @@ PeLawStiffness pe_law_initial_stiffness_max(const model::Interface& in) {
 void prepare_type7_interfaces(model::Model& m) {
   if (m.interfaces.empty()) return;
   const NodeSupport support = node_support(m);
-  const std::vector<double> area = node_tributary_areas(m);
-  for (auto& in : m.interfaces) {
-    in.tributary_area.resize(in.secondary_nodes.size());
-    for (std::size_t k = 0; k < in.secondary_nodes.size(); ++k)
-      in.tributary_area[k] = area[static_cast<std::size_t>(in.secondary_nodes[k])];
-  }
+  for (auto& in : m.interfaces) in.tributary_area = tributary_areas(m, in.secondary_nodes);
   for (auto& in : m.interfaces) {
     if (in.main_surface == kNone) continue;
     gap_and_stiffness(m, in, support);

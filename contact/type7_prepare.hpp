@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "solver/model/model.hpp"
@@ -33,10 +34,15 @@ double pair_stiffness(const model::Interface& in, double k_main, double k_second
 // Pair gap from the node and segment half-thicknesses for Igap 0..2 (4.1).
 double pair_gap(const model::Interface& in, double g_secondary, double g_main);
 
-// Tributary area of every node of the model (initial coordinates): a quarter of each 4-node shell around
-// the node, a third of each 3-node shell, a quarter of each outer brick face (a face no other brick has);
-// a degenerate element or face shares its area among its distinct nodes. 0 for a node without any.
-std::vector<double> node_tributary_areas(const model::Model& m);
+// Tributary area A_s of each of `nodes` (sorted dense indices: an interface's secondary nodes), in their
+// order, from the initial coordinates. The patches around a node: a quarter of each 4-node shell, a third of
+// each 3-node shell, a quarter of each outer brick face (a face no other brick has); a degenerate element or
+// face shares its area among its distinct nodes. Only the patches whose nodes are all among `nodes` count
+// (the contact surface: a brick corner of a block's contacting face takes that face, not the block's sides);
+// a node with no such patch takes every patch around it, and a node with none has 0. `alive`: per model cell
+// (4-node shells, 3-node shells, bricks), 1 alive; empty: all alive.
+std::vector<double> tributary_areas(const model::Model& m, std::span<const std::int32_t> nodes,
+                                    std::span<const std::uint8_t> alive = {});
 
 // The largest initial stiffness density lambda pz (Pa/m) of an exponential /CTCLAW law given by pe over the
 // interface's secondary nodes, lambda = (K / A_s) / pe: K = stiff_hi and A_s the smallest nonzero

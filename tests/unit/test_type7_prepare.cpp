@@ -1,5 +1,7 @@
 // TYPE7 starter computations against type7-lagdt.md sections 4.1 (gap), 4.2 (stiffness), 4.3
 // (projection weights) and 4.6 (initial penetrations), on small models built in the test.
+#include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -254,7 +256,9 @@ TEST_CASE("tributary areas: a quarter of each shell and open brick face around a
   const double h = 10.0, a = 4.0;
   Model mod = plate_and_brick(2, h, 1.0, a, 20.0);
   const double area = h * h;
-  const auto nodal = radx::contact::node_tributary_areas(mod);
+  std::vector<std::int32_t> all(mod.nodes.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<std::int32_t>(k);
+  const auto nodal = radx::contact::tributary_areas(mod, all);
   REQUIRE(nodal.size() == mod.nodes.size());
   // Plate nodes 0..8, row by row: corners A/4, edge middles A/2, centre A.
   for (int k : {0, 2, 6, 8}) CHECK(nodal[k] == Approx(area / 4).epsilon(1e-12));
@@ -263,17 +267,22 @@ TEST_CASE("tributary areas: a quarter of each shell and open brick face around a
   // Each brick corner is on 3 faces of a^2: 3 a^2 / 4.
   for (int k = 9; k < 17; ++k) CHECK(nodal[k] == Approx(3 * a * a / 4).epsilon(1e-12));
 
-  // Every interface gets the areas of its secondary nodes (a node without element: 0).
+  // Every interface gets the areas of its secondary nodes (a node without element: 0), counting only the
+  // faces whose corners are all secondary nodes.
   mod.nodes.id.push_back(99);
   mod.nodes.x.push_back(0);
   mod.nodes.y.push_back(0);
   mod.nodes.z.push_back(50);
-  auto in = block_on_plate(mod);  // the last 8 nodes: 7 brick corners and the free node
+  auto in = block_on_plate(mod);  // the last 8 nodes: brick corners 1..7 (not corner 0) and the free node
   mod.interfaces.push_back(in);
   radx::contact::prepare_type7_interfaces(mod);
   const auto& r = mod.interfaces[0];
   REQUIRE(r.tributary_area.size() == 8);
-  for (std::size_t k = 0; k < 7; ++k) CHECK(r.tributary_area[k] == Approx(3 * a * a / 4).epsilon(1e-12));
+  // Without corner 0 the brick keeps the 3 faces around corner 6: corner 6 is on all 3, the face diagonals of
+  // corner 0 (2, 5, 7) on 2, its neighbours (1, 3, 4) on 1.
+  const double q = a * a / 4;
+  const std::array<double, 7> expected = {q, 2 * q, q, q, 2 * q, 3 * q, 2 * q};
+  for (std::size_t k = 0; k < 7; ++k) CHECK(r.tributary_area[k] == Approx(expected[k]).epsilon(1e-12));
   CHECK(r.tributary_area[7] == 0.0);
 }
 
@@ -304,7 +313,9 @@ TEST_CASE("tributary areas: a face shared by two bricks is inner, a 3-node shell
   mod.shells3.id.push_back(1);
   mod.shells3.part.push_back(0);
   for (std::int32_t n : {12, 13, 14}) mod.shells3.conn.push_back(n);
-  const auto nodal = radx::contact::node_tributary_areas(mod);
+  std::vector<std::int32_t> all(mod.nodes.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<std::int32_t>(k);
+  const auto nodal = radx::contact::tributary_areas(mod, all);
   // An end corner (i = 0 or 2) is on 3 outer faces of area 1; a middle node (i = 1) on 4 (two faces of each
   // brick, the shared face left out).
   for (int j = 0; j < 2; ++j)
@@ -314,6 +325,24 @@ TEST_CASE("tributary areas: a face shared by two bricks is inner, a 3-node shell
       CHECK(nodal[node(1, j, k)] == Approx(1.0).epsilon(1e-12));
     }
   for (int n : {12, 13, 14}) CHECK(nodal[n] == Approx(2.0).epsilon(1e-12));
+
+  // The lower face of both bricks as the contact surface: only the two lower faces count; a lone node of it
+  // takes every face around it; a deleted brick leaves its neighbour's shared face outer.
+  std::vector<std::int32_t> lower;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i) lower.push_back(node(i, j, 0));
+  std::sort(lower.begin(), lower.end());
+  const auto on_lower = radx::contact::tributary_areas(mod, lower);
+  for (std::size_t k = 0; k < lower.size(); ++k) {
+    const bool middle = lower[k] % 3 == 1;
+    CHECK(on_lower[k] == Approx(middle ? 0.5 : 0.25).epsilon(1e-12));
+  }
+  const std::vector<std::int32_t> lone = {node(1, 0, 0)};
+  CHECK(radx::contact::tributary_areas(mod, lone)[0] == Approx(1.0).epsilon(1e-12));
+  std::vector<std::uint8_t> alive(1 + 2, 1);  // cells: the 3-node shell, then the two bricks
+  alive[2] = 0;                               // the second brick (i = 1) deleted
+  const auto after = radx::contact::tributary_areas(mod, lone, alive);
+  CHECK(after[0] == Approx(0.75).epsilon(1e-12));  // its 3 faces of the first brick, the shared one now outer
 }
 
 TEST_CASE("an exponential law given by pe: the largest initial stiffness pz (K / A_s) / pe", "[type7]") {
