@@ -159,9 +159,9 @@ void write_contact_law(std::ostream& os, const model::Model& m, const model::Int
       break;
   }
   os << in << "               Mu " << law.mu << '\n';
-  if (law.friction == model::FrictionLaw::Linear || law.friction == model::FrictionLaw::Arctangent)
+  if (law.friction == model::FrictionLaw::Linear)
     os << in << "               CtLin " << law.ct << ' ' << pa << '.' << u.time_name << '/' << len << '\n';
-  else if (law.friction == model::FrictionLaw::ScaledLinear)
+  else if (law.friction == model::FrictionLaw::Arctangent || law.friction == model::FrictionLaw::ScaledLinear)
     os << in << "               CtLin " << law.ct << ' ' << u.time_name << '/' << len << '\n';
   if (law.kappa > 0)
     os << in << "               kappa " << law.kappa << ' ' << pa_per_l << '\n';

@@ -175,7 +175,8 @@ void ModelBuilder::build_contact_laws() {
       law.kc_max *= fp / fl;
       for (std::size_t j = 0; j < law.power_k.size(); ++j)
         law.power_k[j] *= fp / std::pow(fl, law.power_m[j]);
-      law.ct *= law.friction == model::FrictionLaw::ScaledLinear ? ft / fl : fp * ft / fl;
+      law.ct *=
+          law.friction == model::FrictionLaw::Linear ? fp * ft / fl : ft / fl;  // s2: Pa s/m; s3, s4: s/m
       law.kappa *= fp / fl;
     }
 

@@ -372,8 +372,8 @@ struct ContactLaw {
   bool cubic = false;
   // Power: P = sum over k of power_k[k] u^power_m[k].
   std::vector<double> power_m, power_k;
-  // Friction: Mu; CtLin (Pa s/m for s2, s3; s/m for s4); kappa (Pa/m), the sticking stiffness per unit area
-  // (0: K / A_s, the interface's penalty stiffness).
+  // Friction: Mu; CtLin (Pa s/m for s2; s/m for s3, whose atan takes ct s, and s4); kappa (Pa/m), the
+  // sticking stiffness per unit area (0: K / A_s, the interface's penalty stiffness).
   double mu = 0, ct = 0, kappa = 0;
 };
 

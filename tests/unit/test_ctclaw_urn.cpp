@@ -358,6 +358,14 @@ TEST_CASE("law values in input units other than the work units are converted", "
       build(law_deck({"n4{kp2=1e15}"}, "", "                  kg                   m                   s"));
   REQUIRE_FALSE(p.diags.has_errors());
   CHECK(p.model.interfaces[0].law.power_k[0] == Approx(1e15 * 1e-6 * 1e-6));  // Pa/m^2 -> MPa/mm^2
+  // The arctangent and scaled-linear slopes multiply a slip speed into a pure number (atan(ct s), ct s < mu):
+  // s/m -> s/mm.
+  for (const char* urn : {"n1s13{Kc1e9,Mu0.3,CtLin10}", "n1s14{Kc1e9,Mu0.3,CtLin10}"}) {
+    INFO(urn);
+    auto a = build(law_deck({urn}, "", "                  kg                   m                   s"));
+    REQUIRE_FALSE(a.diags.has_errors());
+    CHECK(a.model.interfaces[0].law.ct == Approx(10 * 1e-3));
+  }
 }
 
 TEST_CASE("an exponential law by pe: KcMax below the largest initial stiffness is refused by the starter",
