@@ -368,6 +368,63 @@ TEST_CASE("law values in input units other than the work units are converted", "
   }
 }
 
+TEST_CASE("law values in input units with another time unit too are converted", "[ctclaw]") {
+  // Input g, cm, ms; work Mg, mm, s (the helper's deck): mass fm = 1e-6 (1 g = 1e-6 Mg), length fl = 10 (1 cm =
+  // 10 mm), time ft = 1e-3 (1 ms = 1e-3 s): three different factors, so a wrong exponent on any of them shows.
+  //   pressure  g/(cm ms^2)          = 1e-6 Mg / (10 mm * 1e-6 s^2)      = 0.1 MPa           : x 0.1
+  //   Kc, KcMax, kappa  g/(cm^2 ms^2) = 0.1 MPa / 10 mm                    = 0.01 MPa/mm       : x 1e-2
+  //   lambda    1/cm                 = 1 / (10 mm)                          = 0.1 /mm           : x 0.1
+  //   kp_m      g/(cm ms^2) / cm^m   = 0.1 MPa / (10 mm)^m:  m = 2: 1e-3 MPa/mm^2, m = 3: 1e-4 MPa/mm^3
+  //   CtLin s2  g/(cm ms^2) ms/cm    = 0.1 MPa * 1e-3 s / 10 mm              = 1e-5 MPa s/mm     : x 1e-5
+  //   CtLin s13, s14  ms/cm          = 1e-3 s / 10 mm                         = 1e-4 s/mm         : x 1e-4
+  // (Approx's default relative margin, ~1e-5 of the value, is round-off here: every wrong factor is off by
+  // at least a factor 10.)
+  const std::string units = "                   g                  cm                  ms";
+  {
+    auto b = build(law_deck({"n1s2{Kc3e4,Mu0.3,CtLin7}"}, "", units));
+    INFO(all_of(b.diags));
+    REQUIRE_FALSE(b.diags.has_errors());
+    const auto& law = b.model.interfaces[0].law;
+    CHECK(law.kc == Approx(3e4 * 1e-2));
+    CHECK(law.mu == Approx(0.3));
+    CHECK(law.ct == Approx(7 * 1e-5));  // Pa s/m
+  }
+  {
+    auto b = build(law_deck({"n2s11{pz2e3,lambda40,KcMax9e7,Mu0.2,kappa6e5}"}, "", units));
+    INFO(all_of(b.diags));
+    REQUIRE_FALSE(b.diags.has_errors());
+    const auto& law = b.model.interfaces[0].law;
+    CHECK(law.pz == Approx(2e3 * 0.1));
+    CHECK(law.lambda == Approx(40 * 0.1));
+    CHECK(law.kc_max == Approx(9e7 * 1e-2));
+    CHECK(law.kappa == Approx(6e5 * 1e-2));
+  }
+  {
+    // pe instead of lambda: a pressure.
+    auto b = build(law_deck({"n2{pz2e3,pe8e3}"}, "", units));
+    INFO(all_of(b.diags));
+    REQUIRE_FALSE(b.diags.has_errors());
+    CHECK(b.model.interfaces[0].law.pz == Approx(2e3 * 0.1));
+    CHECK(b.model.interfaces[0].law.pe == Approx(8e3 * 0.1));
+  }
+  {
+    auto b = build(law_deck({"n4{kp2=4e9,kp3=5e11}"}, "", units));
+    INFO(all_of(b.diags));
+    REQUIRE_FALSE(b.diags.has_errors());
+    const auto& law = b.model.interfaces[0].law;
+    REQUIRE(law.power_k.size() == 2);
+    CHECK(law.power_k[0] == Approx(4e9 * 1e-3));   // Pa/m^2
+    CHECK(law.power_k[1] == Approx(5e11 * 1e-4));  // Pa/m^3
+  }
+  for (const char* urn : {"n1s13{Kc1e4,Mu0.3,CtLin20}", "n1s14{Kc1e4,Mu0.3,CtLin20}"}) {
+    INFO(urn);
+    auto a = build(law_deck({urn}, "", units));
+    INFO(all_of(a.diags));
+    REQUIRE_FALSE(a.diags.has_errors());
+    CHECK(a.model.interfaces[0].law.ct == Approx(20 * 1e-4));  // s/m
+  }
+}
+
 TEST_CASE("an exponential law by pe: KcMax below the largest initial stiffness is refused by the starter",
           "[ctclaw]") {
   radx::test::TempDir dir;
