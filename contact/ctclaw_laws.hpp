@@ -1,10 +1,11 @@
 // The /CTCLAW contact and friction law family (shared/spec/contact-laws.md) as pure functions: a normal law
 // gives the contact pressure and its tangent stiffness density at an overclosure, a friction law the
 // tangential force of one pair. No state, no allocation: the penalty kernel and the Lagrange-multiplier
-// friction call them per pair, with the law resolved once per interface (ResolvedLaw).
+// friction call them per pair, with the law resolved for the pair's stiffness and area (PairLaw).
 #pragma once
 
 #include <array>
+#include <limits>
 #include <span>
 
 #include "solver/model/model.hpp"
@@ -23,9 +24,10 @@ struct PairLaw {
   model::NormalLaw normal = model::NormalLaw::Interface;
   model::FrictionLaw friction = model::FrictionLaw::Interface;
   bool bidirectional = false;
-  double kc = 0;                  // Linear
-  double pz = 0, lambda = 0;      // Exponential
-  double kc_max = 0, u_knee = 0;  // Exponential: KcMax and its overclosure (u_knee = +inf without KcMax)
+  double kc = 0;                                            // Linear
+  double pz = 0, lambda = 0;                                // Exponential
+  double kc_max = 0;                                        // Exponential: KcMax (0: none)
+  double u_knee = std::numeric_limits<double>::infinity();  // and its overclosure (+inf without KcMax)
   std::span<const double> gap, pressure;  // Tabulated: the curve's abscissas (gap = -u) and pressures
   bool cubic = false;
   std::span<const double> power_m, power_k;  // Power

@@ -279,17 +279,18 @@ struct LagrangeSolver::Impl {
       Vec3 f{};
       for (std::size_t d = 0; d < 3; ++d) f[d] = w[d] > 0 ? -vt[d] / (dt12 * w[d]) : 0.0;
       f = model::sub(f, model::scale(r.n, model::dot(f, r.n)));
-      // One-directional /CTCLAW friction acts along the first tangent only.
-      if (kind != model::FrictionLaw::Interface && !law.ctclaw.bidirectional)
-        f = model::scale(p.t1, model::dot(f, p.t1));
+      // One-directional /CTCLAW friction acts along the first tangent only, and is judged at that slip speed.
+      const bool along_t1 = kind != model::FrictionLaw::Interface && !law.ctclaw.bidirectional;
+      if (along_t1) f = model::scale(p.t1, model::dot(f, p.t1));
       const double len = model::norm(f);
       if (!(len > 0)) continue;
       const double pressure = p.area > 0 ? lam / p.area : 0.0;
+      const double slip = along_t1 ? std::abs(model::dot(vt, p.t1)) : model::norm(vt);
       const double cap =
           kind == model::FrictionLaw::Interface
               ? std::max(0.0, friction_coefficient(law.ifric, law.fric, law.c, pressure, model::norm(vt))) *
                     lam
-              : friction_traction(law.ctclaw, model::norm(vt), pressure) * p.area;
+              : friction_traction(law.ctclaw, slip, pressure) * p.area;
       if (len > cap) f = model::scale(f, cap / len);
       for (std::size_t k = 0; k < static_cast<std::size_t>(r.count); ++k) {
         const auto n = static_cast<std::size_t>(r.node[k]);

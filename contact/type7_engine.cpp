@@ -444,7 +444,18 @@ struct Type7Contact::Impl {
         }
         st.owner_cell[s] = static_cast<std::int32_t>(base + static_cast<std::size_t>(o));
       }
-      const double gap_max = in.igap == 0 ? in.gapmin : std::max(in.gap_hi, in.gapmin);
+      // A /CTCLAW law that acts at open gaps (exponential, a table still pushing at gap 0) reaches beyond the
+      // gap by its onset: the search looks that much further so that the law ends where it says, not where
+      // the last sort happened to stop (the smallest lambda: stiff_lo over the largest area).
+      double law_reach = 0;
+      if (in.contact_law_id != 0) {
+        double area_hi = 0;
+        for (const double a : in.tributary_area) area_hi = std::max(area_hi, a);
+        for (const double a : st.segment_area0) area_hi = std::max(area_hi, a);
+        if (area_hi > 0)
+          law_reach = std::max(0.0, -contact_onset(resolve_pair_law(in.law, m, in.stiff_lo, area_hi)));
+      }
+      const double gap_max = (in.igap == 0 ? in.gapmin : std::max(in.gap_hi, in.gapmin)) + law_reach;
       st.search = std::make_unique<Type7Search>(in.secondary_nodes, st.segments, gap_max, in.bumult);
       st.result.id = in.id;
       st.index = static_cast<std::int32_t>(interfaces.size());
@@ -701,6 +712,10 @@ struct Type7Contact::Impl {
       const double onset = law_normal ? contact_onset(law) : 0.0;  // the exponential law acts at open gaps
       const Vec3 t1 = has_law ? first_tangent(best_x, n) : Vec3{};
       const double row_area = has_law ? area_s : st.segment_area0[sb];
+      // A law pair's row lets it close down to where its law starts (the gap, or beyond it for the exponential
+      // law), no further: one that switches where its law already pushes is held where it is, rather than
+      // losing the law's force and falling onto the gap.
+      const double row_gap = law_normal && std::isfinite(onset) ? std::min(g - onset, best_d) : g;
       if (law_normal ? !(pr.p > 0) : !(p > 0)) {
         st.f_t[ks] = Vec3{};
         // A pair about to close (within two steps at its approach speed) already votes with its stiffness at
@@ -723,9 +738,12 @@ struct Type7Contact::Impl {
           // the hyperbola is extended to p < 0), never less than K.
           const double tau0 = ms > 0 && !mass_scaled_interface ? scale * std::sqrt(2.0 * ms / K) : 0.0;
           const double ratio = g / (g - p);
-          const double k_reach = law_normal ? law_reach_stiffness(law, area_s, p, -vn, dt1)
-                                            : std::max(K, K * ratio * ratio * reach_factor(tau0, g, -vn));
-          const SwitchedPair row{node, st.segments[sb], best_h, n, best_d, g, row_area, st.index, t1};
+          // A law node resting on the edge (not approaching) is judged by its law just inside contact.
+          const double k_reach =
+              law_normal
+                  ? law_reach_stiffness(law, area_s, on_edge ? std::max(p, kEdgeBand * g) : p, -vn, dt1)
+                  : std::max(K, K * ratio * ratio * reach_factor(tau0, g, -vn));
+          const SwitchedPair row{node, st.segments[sb], best_h, n, best_d, row_gap, row_area, st.index, t1};
           if (lagrange_on() && in.lagdt &&
               pair_spring_step(node, st.segments[sb], best_h, k_reach, nodes) < controls.t_min &&
               may_switch(st, row, nodes))
@@ -747,7 +765,10 @@ struct Type7Contact::Impl {
       const double cdamp =
           law_normal ? in.vis_s * std::sqrt(2.0 * kt * ms) : damping_coefficient(in.vis_s, K, g, p, ms, vn);
       const Vec3 f_el = model::scale(n, fn);
-      const Vec3 f_dp = model::scale(n, -cdamp * vn);
+      // A law's damping never pulls: on the exponential tail P is tiny while c = VISs sqrt(2 Kc A_s m) is
+      // not, and a separating node would be held back by a force its law does not have.
+      const double f_damp = law_normal ? std::max(-cdamp * vn, -fn) : -cdamp * vn;
+      const Vec3 f_dp = model::scale(n, f_damp);
       // Friction, and its viscous slope (a dashpot for the step).
       Vec3 f_fr{};
       double c_friction = 0;
@@ -820,7 +841,7 @@ struct Type7Contact::Impl {
       PendingPair q;
       q.st = &st;
       q.ks = ks;
-      q.row = SwitchedPair{node, st.segments[sb], best_h, n, best_d, g, row_area, st.index, t1};
+      q.row = SwitchedPair{node, st.segments[sb], best_h, n, best_d, row_gap, row_area, st.index, t1};
       q.f_el = f_el;
       q.f_dp = f_dp;
       q.f_fr = f_fr;
