@@ -163,7 +163,10 @@ void write_contact_law(std::ostream& os, const model::Model& m, const model::Int
     os << in << "               CtLin " << law.ct << ' ' << pa << '.' << u.time_name << '/' << len << '\n';
   else if (law.friction == model::FrictionLaw::Arctangent || law.friction == model::FrictionLaw::ScaledLinear)
     os << in << "               CtLin " << law.ct << ' ' << u.time_name << '/' << len << '\n';
-  if (law.kappa > 0)
+  // Only exact Coulomb has a sticking spring; the regularised laws stick by their slope (a dashpot).
+  if (law.friction != model::FrictionLaw::Coulomb)
+    os << in << "               kappa not used: the regularised laws have no sticking spring\n";
+  else if (law.kappa > 0)
     os << in << "               kappa " << law.kappa << ' ' << pa_per_l << '\n';
   else
     os << in << "               kappa K/A_s (default): " << kc_auto << '\n';

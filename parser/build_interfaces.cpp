@@ -180,6 +180,12 @@ void ModelBuilder::build_contact_laws() {
       law.kappa *= fp / fl;
     }
 
+    if (law.kappa > 0 && law.friction != model::FrictionLaw::Coulomb)
+      diags_.warning(Diag::InterfaceFieldIgnored, where(0), about(*r),
+                     law_id +
+                         " kappa: the sticking stiffness belongs to exact Coulomb (s1, s11); the regularised "
+                         "laws (s2..s4, s12..s14) stick through their slope CtLin, so kappa has no effect");
+
     // The curve of a tabulated law.
     if (urn.curve_id != 0) {
       const std::int64_t id =
@@ -217,6 +223,16 @@ void ModelBuilder::build_contact_laws() {
                 "; the pressure must not increase as the gap grows (the stiffness would be negative)");
             break;
           }
+        // The pressure must end somewhere: a table still pushing at its largest gap, and not falling there,
+        // would press every node the search finds at any distance.
+        const std::size_t n = f.y.size();
+        if (curve_ok && n >= 2 && f.y[n - 1] > 0 && !(f.y[n - 1] < f.y[n - 2]))
+          curve_error(
+              fn + " ends at gap " + num(f.x[n - 1]) + " with the pressure " + num(f.y[n - 1]) +
+              " > 0 and a last segment that does not fall: the pressure must reach 0 at some gap (end the "
+              "table with a 0, or let its last segment fall)");
+        if (curve_ok && n >= 2 && std::all_of(f.y.begin(), f.y.end(), [](double y) { return !(y > 0); }))
+          curve_error(fn + " has no positive pressure: the law would never push");
         if (curve_ok && converted) {
           diags_.error(Diag::PhysicsNotImplemented, where(urn.curve_offset), about(*r),
                        law_id + " CurveID: the tabulated law takes the gaps and pressures of " + fn +
@@ -239,6 +255,12 @@ void ModelBuilder::build_contact_laws() {
     in.contact_law_id = r->id;
     in.contact_law = r->text;
     in.law = std::move(law);  // as understood, also with errors: the listing shows it
+    // contact-laws.md 4: a law with no s part is frictionless; the interface's own friction is replaced too.
+    if (in.law.friction == model::FrictionLaw::None && (in.fric > 0 || in.ifric > 0))
+      diags_.warning(Diag::InterfaceFieldIgnored, where(0), about(*r),
+                     law_id + " has no friction part (s...): the interface " + std::to_string(in.id) +
+                         "'s Fric = " + num(in.fric) + ", Ifric = " + std::to_string(in.ifric) +
+                         " is replaced and the contact is frictionless; add an s part to keep friction");
   }
 }
 

@@ -339,6 +339,36 @@ TEST_CASE("a tabulated law's curve: found, at least 2 points, pressures >= 0 not
                   "< 0") != nullptr);
   CHECK(law_error(build(law_deck({"n3{CurveID12}"}, funct({{-0.1, 1.0}, {0.0, 10.0}, {0.2, 0.0}}))).diags,
                   "rises") != nullptr);
+  // A pressure that never ends (flat and positive at the largest gap), or never starts.
+  CHECK(law_error(build(law_deck({"n3{CurveID12}"}, funct({{-0.1, 100.0}, {0.0, 10.0}, {0.2, 10.0}}))).diags,
+                  "must reach 0") != nullptr);
+  CHECK(law_error(build(law_deck({"n3{CurveID12}"}, funct({{-0.1, 0.0}, {0.0, 0.0}}))).diags,
+                  "no positive pressure") != nullptr);
+  // Falling at its last point, the table ends where its last segment reaches 0: accepted.
+  CHECK_FALSE(build(law_deck({"n3{CurveID12}"}, funct({{-0.1, 100.0}, {0.0, 10.0}}))).diags.has_errors());
+}
+
+// The first warning of `code` whose message holds `what` (nullptr when none).
+const radx::Diagnostic* warning_of(const radx::Diagnostics& d, radx::Diag code, const std::string& what) {
+  for (const auto& x : d.items())
+    if (x.code == code && x.message.find(what) != std::string::npos) return &x;
+  return nullptr;
+}
+
+TEST_CASE("what a law replaces without using is said: the interface's friction, kappa of a regularised law",
+          "[ctclaw]") {
+  // Interface 1 of the sample deck has Fric 0.1: a law without an s part makes it frictionless.
+  auto b = build(law_deck({"n1{Kc1e3}"}));
+  INFO(all_of(b.diags));
+  REQUIRE_FALSE(b.diags.has_errors());
+  CHECK(warning_of(b.diags, radx::Diag::InterfaceFieldIgnored, "Fric = 0.1") != nullptr);
+  CHECK(warning_of(build(law_deck({"n1s11{Kc1e3,Mu0.1}"})).diags, radx::Diag::InterfaceFieldIgnored,
+                   "Fric") == nullptr);
+  // kappa is the exact Coulomb law's sticking spring only.
+  CHECK(warning_of(build(law_deck({"n1s12{Kc1e3,Mu0.1,CtLin1,kappa1e3}"})).diags,
+                   radx::Diag::InterfaceFieldIgnored, "kappa") != nullptr);
+  CHECK(warning_of(build(law_deck({"n1s11{Kc1e3,Mu0.1,kappa1e3}"})).diags, radx::Diag::InterfaceFieldIgnored,
+                   "kappa") == nullptr);
 }
 
 TEST_CASE("law values in input units other than the work units are converted", "[ctclaw]") {
@@ -369,8 +399,9 @@ TEST_CASE("law values in input units other than the work units are converted", "
 }
 
 TEST_CASE("law values in input units with another time unit too are converted", "[ctclaw]") {
-  // Input g, cm, ms; work Mg, mm, s (the helper's deck): mass fm = 1e-6 (1 g = 1e-6 Mg), length fl = 10 (1 cm =
-  // 10 mm), time ft = 1e-3 (1 ms = 1e-3 s): three different factors, so a wrong exponent on any of them shows.
+  // Input g, cm, ms; work Mg, mm, s (the helper's deck): mass fm = 1e-6 (1 g = 1e-6 Mg), length fl = 10 (1 cm
+  // = 10 mm), time ft = 1e-3 (1 ms = 1e-3 s): three different factors, so a wrong exponent on any of them
+  // shows.
   //   pressure  g/(cm ms^2)          = 1e-6 Mg / (10 mm * 1e-6 s^2)      = 0.1 MPa           : x 0.1
   //   Kc, KcMax, kappa  g/(cm^2 ms^2) = 0.1 MPa / 10 mm                    = 0.01 MPa/mm       : x 1e-2
   //   lambda    1/cm                 = 1 / (10 mm)                          = 0.1 /mm           : x 0.1
