@@ -100,8 +100,8 @@ void write_contact_law(std::ostream& os, const model::Model& m, const model::Int
       if (law.kc_max > 0) {
         os << in << "               KcMax " << law.kc_max << ' ' << pa_per_l;
         if (l_lo > 0) {
-          // u_max = ln(KcMax / (pz lambda)) / lambda decreases with lambda above KcMax / (pz e): evaluate
-          // both ends.
+          // u_max = ln(KcMax / (pz lambda)) / lambda: du/dlambda = -(1 + ln(KcMax / (pz lambda))) / lambda^2
+          // < 0 wherever KcMax >= pz lambda (the starter's check), so the ends of the lambda range bound it.
           auto knee = [&](double l) { return std::log(law.kc_max / (law.pz * l)) / l; };
           const double k1 = knee(l_lo), k2 = knee(l_hi);
           os << ": linear beyond the overclosure u_max = ln(KcMax/(pz lambda))/lambda = "
@@ -130,7 +130,10 @@ void write_contact_law(std::ostream& os, const model::Model& m, const model::Int
       for (std::size_t j = 0; j < law.power_m.size() && j < law.power_k.size(); ++j) {
         const double mm = law.power_m[j];
         os << in << "               kp" << mm << ' ' << law.power_k[j];
-        if (mm == std::floor(mm) && mm < 100) os << ' ' << pa << '/' << len << static_cast<int>(mm);
+        if (mm == 1)
+          os << ' ' << pa << '/' << len;
+        else if (mm == std::floor(mm) && mm < 100)
+          os << ' ' << pa << '/' << len << '^' << static_cast<int>(mm);
         os << '\n';
       }
       break;
