@@ -16,7 +16,8 @@ Cases (units kg, m, s):
                      n1 (Kc given, Kc = -1, and with VISs damping), n2 (lambda, lambda with KcMax, pe),
                      n3 (linear and cubic table), n4 (power)
   ctclaw_sliding     block_sliding's cube sliding under gravity, one deck per friction law: s11, s1 (along the
-                     segment's first tangent, and along the second where it gives no friction), s12, s13, s14
+                     segment's first tangent, and along the second where it gives no friction), s12, s13, s14,
+                     s2, s3, s4 (along the first tangent), s4 at 45 degrees (it brakes the first tangent's part)
   ctclaw_line_table  the drop with a tabulated law that is the bilinear law's straight line, and with n1 itself
   ctclaw_lagdt       the sliding cube on an /INTER/LAGDT/TYPE7 with every pair switched: s11 and s12 act with the
                      multiplier as the normal force
@@ -246,6 +247,14 @@ SLIDE_LAWS = (
     ("S14_LOW_CT", "n1s14{Kc-1,Mu0.3,CtLin2}", "X", "scaled slope, threshold speed mu / ct = 0.3 v0"),
     # No normal part: the interface's own TYPE7 penalty stays the normal law (pressure = its force / A_s).
     ("S11_PENALTY", "s11{Mu0.3}", "X", "exact Coulomb on the interface's own penalty normal law"),
+    # The one-directional regularised laws along their first tangent: the same laws and results as s12..s14.
+    ("S2", "n1s2{Kc-1,Mu0.3,CtLin1e6}", "X", "linear slope along the first tangent +X (as S12)"),
+    ("S3", "n1s3{Kc-1,Mu0.3,CtLin20}", "X", "arctangent along the first tangent +X (as S13)"),
+    ("S4", "n1s4{Kc-1,Mu0.3,CtLin1e3}", "X", "scaled slope along the first tangent +X (as S14)"),
+    # At 45 degrees: only the +X part v1 of the slip counts (s = |v1|): v1 decelerates at mu g down to the
+    # threshold mu / ct = 0.1 m/s (0.28 of v1(0) = v0 / sqrt 2), then as exp(-ct g t); the +Y part stays v0 / sqrt 2.
+    # A law taking the whole slip's speed |v| >= v0 / sqrt 2 > mu / ct would stay Coulomb and stop v1 earlier.
+    ("S4_45", "n1s4{Kc-1,Mu0.3,CtLin3}", "XY", "scaled slope along +X, sliding at 45 degrees: brakes the +X part"),
 )
 LAGDT_LAWS = (
     ("S11", "n1s11{Kc-1,Mu0.3}", "X", "exact Coulomb, every pair switched to a multiplier row"),
@@ -255,7 +264,8 @@ LAGDT_LAWS = (
 
 def sliding_deck(run, urn, direction, what, lagdt=False, p=SLIDE):
     """block_sliding's cube resting under gravity on one fixed segment (Kc = -1: each pair carries M g / 4 at the
-    static overclosure p0 = (M g / 4) / K) and sliding at V0 along `direction` (X or Y) on a TYPE7 (or LAGDT/TYPE7,
+    static overclosure p0 = (M g / 4) / K) and sliding at V0 along `direction` (X, Y, or XY: 45 degrees between
+    them, on a plate long in both) on a TYPE7 (or LAGDT/TYPE7,
     with /DT/INTER/CST Tmin far above every pair's step) whose law is the /CTCLAW urn."""
     a, n = p["A"], p["N"]
     nb = (n[0] + 1) * (n[1] + 1)
@@ -268,13 +278,16 @@ def sliding_deck(run, urn, direction, what, lagdt=False, p=SLIDE):
     cn, cb, cid = mc.cube(101, 101, a, n, (-a / 2, -a / 2, z0))
     v.check_bricks(cn, cb)
     travel = p["V0"] * p["T_STOP"] + 0.05
-    px = (-0.1, max(0.2, a / 2 + travel)) if direction == "X" else (-0.1, 0.1)
+    px = (-0.1, max(0.2, a / 2 + travel)) if "X" in direction else (-0.1, 0.1)
     py = (-0.1, 0.1) if direction == "X" else (-0.1, max(0.2, a / 2 + travel))
     pn, ps, _ = mc.grid(1, 1, px[0], px[1], 1, py[0], py[1], 1, 0.0)
     v.check_shells(pn, ps)
     bottom = [cid(i, j, 0) for j in range(n[1] + 1) for i in range(n[0] + 1)]
-    vel = (p["V0"], 0.0, 0.0) if direction == "X" else (0.0, p["V0"], 0.0)
-    D = mc.header(run, "Stiff cube sliding along %s on a fixed plate: /CTCLAW %s" % (direction, urn.split("{")[0]),
+    vel = {"X": (p["V0"], 0.0, 0.0), "Y": (0.0, p["V0"], 0.0),
+           "XY": (p["V0"] * math.sqrt(0.5), p["V0"] * math.sqrt(0.5), 0.0)}[direction]
+    along = {"X": "+X", "Y": "+Y", "XY": "+X+Y (45 degrees)"}[direction]
+    D = mc.header(run, "Stiff cube sliding along %s on a fixed plate: /CTCLAW %s" % (along.lstrip("+"),
+                                                                                      urn.split("{")[0]),
                   ("kg", "m", "s"),
                   ["/CTCLAW friction law on a %s (contact-laws.md 3 and 5). Units kg, m, s (N, J, Pa)."
                    % ("LAGDT/TYPE7 with every pair switched" if lagdt else "TYPE7"),
@@ -284,13 +297,13 @@ def sliding_deck(run, urn, direction, what, lagdt=False, p=SLIDE):
                    ("p0 = %s m of the interface's own penalty K p g / (g - p) = M g / %d;" % (g(p0), nb)
                     if penalty else "p0 = (M g / %d) / K = %s m of the bilinear law Kc = -1 (P A_s = K u);"
                     % (nb, g(p0))),
-                   "it starts sliding along +%s at %g m/s; friction law: %s." % (direction, p["V0"], what)])
+                   "it starts sliding along %s at %g m/s; friction law: %s." % (along, p["V0"], what)])
     D = ours(D)
     D += v.node_block(pn, "Main plate nodes 1..4 (z = 0), all fixed")
     D += v.node_block(cn, "Cube nodes %d..%d, lower face at z = gap - p0 = %s" % (cn[0][0], cn[-1][0], g(z0, 12)))
     D += mc.plate_and_cube_cards(ps, cb, bottom, p, "Main plate: one shell, x from %g to %g m, y from %g to %g m"
                                  % (px + py), "Stiff cube (mass %g kg)" % M)
-    D += v.inivel(1, "Cube sliding along +%s" % direction, vel, 2)
+    D += v.inivel(1, "Cube sliding along %s" % along, vel, 2)
     D += mc.grav(1, "Gravity along -Z on every node", -p["G"])
     D.append(RULER)
     D += ["#  Istf 1: Stfac is the pair stiffness K (N/m)%s; Igap 0: the gap is" % (
@@ -319,7 +332,8 @@ def sliding_runs(laws, prefix, lagdt):
         run = prefix + suffix
         D, E, info = sliding_deck(run, urn, direction, what, lagdt)
         runs.append((run, D, E))
-        rows.append("| `%s` | `%s` | +%s | %s |" % (run, urn, direction, what))
+        rows.append("| `%s` | `%s` | %s | %s |" % (run, urn, {"XY": "+X+Y (45 deg)"}.get(direction, "+" + direction),
+                                                    what))
     return runs, rows, info, a_s
 
 
@@ -330,6 +344,8 @@ def sliding():
     pres = info["f"] / a_s
     p0_law = info["f"] / p["K"]
     p0_pen = info["f"] * p["GAP"] / (p["K"] * p["GAP"] + info["f"])
+    ct45 = ctc.parse_urn(dict((r[0], r[1]) for r in SLIDE_LAWS)["S4_45"])["params"]["ctlin"]
+    v1_0 = p["V0"] * math.sqrt(0.5)
     readme = f"""# ctclaw_sliding: a block sliding under gravity with each /CTCLAW friction law (contact-laws.md 3, 6)
 
 {len(runs)} decks, generated by `scripts/make_ctclaw_decks.py` (edit the script and regenerate), format {VERSION}.
@@ -348,7 +364,7 @@ M = {g(info['M'])} kg, resting under gravity g = {p['G']} m/s2 on one fixed shel
 lower-face pair carries f = M g / 4 = {g(info['f'])} N at the static overclosure p0 = f / K = {g(p0_law)} m,
 where the cube starts (`_S11_PENALTY` has no normal part: the interface's own penalty K p g / (g - p) holds f
 at p0 = f g / (K g + f) = {g(p0_pen)} m); `/INIVEL/TRA` gives it v0 = {p['V0']} m/s along +X (+Y for `_S1_Y`,
-on a plate long in Y).
+on a plate long in Y; at 45 degrees between +X and +Y for `_S4_45`, on a plate long in both).
 The tributary area (starter's rule) is A_s = {g(a_s)} m^2, so the contact pressure is p = f / A_s = {g(pres)} Pa.
 
 ## Closed form
@@ -362,6 +378,14 @@ Every pair slides at the cube's speed v; the friction forces add up to M g times
   ({g(100 * p['MU'] * pres / 1e6 / p['V0'], 3)} % of v0), then viscous;
 - s14: p min(ct v, mu): Coulomb above v* = mu / ct = {g(p['MU'] / 1e3)} m/s, then viscous;
 - s13: a = mu g (2/pi) atan(ct v) at every speed (no threshold), the ODE dv/dt = -a(v) integrated by the check;
+- s2, s3, s4 sliding along +X (the first tangent): the one-directional law keeps the whole slip, so each gives
+  the same force and speed history as its two-directional twin s12, s13, s14 (the same CtLin);
+- `_S4_45`, s4 with CtLin {g(ct45)} sliding at 45 degrees: the law keeps only the slip's part along the first
+  tangent, v1 = v.X (v1(0) = v0 / sqrt 2 = {g(v1_0)} m/s), with s = |v1|: v1 decelerates at mu g down to the
+  threshold mu / ct = {g(p['MU'] / ct45)} m/s, then decays as exp(-ct g t); the part across it,
+  v2 = v.Y = {g(v1_0)} m/s, keeps its value (no friction along Y). A law that took the whole slip's speed
+  |v| >= v2 > mu / ct would stay Coulomb and stop v1 at {g(v1_0 / a_)} s; one acting in the whole plane would
+  brake v2 too;
 - `_LOW_CT`: s12 and s14 with slopes low enough that their threshold speed is 0.3 v0: Coulomb above it, then
   viscous, the speed decaying as exp(-(ct 4 A_s / M) t) (s12) or exp(-ct g t) (s14).
 
@@ -372,9 +396,10 @@ ODE includes that share (about 1 % on s12's `_LOW_CT` time to 0.1 v0).
 
 `tests/scripts/check_ctclaw_sliding.py` runs every deck and checks (tolerances in its header): the deceleration
 while sliding (least squares, 0.9 v0 down to 0.1 v0 or twice the threshold speed) against mu g within 3 % for
-s11, s1, s12, s14; the speed history against the ODE of the law (s13 and the `_LOW_CT` decks above all); the
-stop time; the `_S1_Y` cube keeping v0; the friction energy against the kinetic energy lost (2 % of the initial
-kinetic energy); the energy error (1 %).
+s11, s1, s12, s14, s2, s4; the speed history against the ODE of the law (s13, s3 and the `_LOW_CT` decks above
+all); the stop time; the `_S1_Y` cube keeping v0; for `_S4_45` the same on v1 (from v1(0)) and v2 keeping its
+value; the friction energy against the kinetic energy lost (2 % of the initial kinetic energy); the energy
+error (1 %).
 """
     return runs, readme
 
