@@ -81,6 +81,8 @@ struct InterfaceState {
   std::vector<std::array<std::int32_t, 4>> segments;
   std::vector<double> segment_area0;
   std::vector<double> tributary_area;  // A_s per secondary index (the starter's; updated as elements die)
+  // LAGDT: 1 where the secondary node's row pushed (lambda > 0) in the last cycle: it keeps its row (hold).
+  std::vector<std::uint8_t> row_pushed;
   std::unique_ptr<Type7Search> search;
   std::vector<std::uint8_t> node_off, segment_off;  // per secondary index / segment index
   std::vector<double> reduction;                    // Inacti 5, 6: r per secondary index
@@ -196,9 +198,12 @@ struct Type7Contact::Impl {
   std::vector<std::uint8_t> k_mass_scaling;  // a plain TYPE7 pair touched it (/DT/INTER/CST adds mass)
   // LAGDT.
   std::vector<PendingPair> pending;
-  std::vector<SwitchedPair> switched;  // this cycle's rows, in interface then node order
-  std::vector<double> switched_p;      // their penetrations (results)
-  std::vector<FrictionLaw> laws;       // per interface
+  std::vector<SwitchedPair> switched;     // this cycle's rows, in interface then node order
+  std::vector<double> switched_p;         // their penetrations (results)
+  std::vector<std::int32_t> switched_ks;  // their secondary indices
+  std::vector<std::pair<std::int32_t, std::int32_t>>
+      pushed;                     // (interface, secondary index) with row_pushed set
+  std::vector<FrictionLaw> laws;  // per interface
   std::vector<PairForce> lagrange_out;
   std::vector<LagrangeRecord> lagrange_records;
   std::vector<NodeForce> lagrange_forces;
@@ -256,6 +261,7 @@ struct Type7Contact::Impl {
   void switch_pair(InterfaceState& st, const SwitchedPair& row, std::size_t ks, double p) {
     switched.push_back(row);
     switched_p.push_back(p);
+    switched_ks.push_back(static_cast<std::int32_t>(ks));
     st.f_t[ks] = Vec3{};
     ++st.result.switched_pairs;
   }
@@ -421,6 +427,7 @@ struct Type7Contact::Impl {
               in.initial_gap_reduction[k];
       }
       st.tributary_area = in.tributary_area;
+      st.row_pushed.assign(ns, 0);
       st.segment_area0.resize(nm);
       for (std::size_t s = 0; s < nm; ++s) {
         std::array<Vec3, 4> x{};
@@ -712,10 +719,14 @@ struct Type7Contact::Impl {
       const double onset = law_normal ? contact_onset(law) : 0.0;  // the exponential law acts at open gaps
       const Vec3 t1 = has_law ? first_tangent(best_x, n) : Vec3{};
       const double row_area = has_law ? area_s : st.segment_area0[sb];
-      // A law pair's row lets it close down to where its law starts (the gap, or beyond it for the exponential
-      // law), no further: one that switches where its law already pushes is held where it is, rather than
-      // losing the law's force and falling onto the gap.
+      // A law pair's row lets it close down to where its law starts (the gap, or beyond it for the
+      // exponential law), no further: one that switches where its law already pushes is held where it is,
+      // rather than losing the law's force and falling onto the gap.
       const double row_gap = law_normal && std::isfinite(onset) ? std::min(g - onset, best_d) : g;
+      // A row that pushed in the last cycle stopped its node: the node keeps it while it needs it (the active
+      // set releases a row that would pull). Judged again by its step it could fall back to the penalty path
+      // for a cycle once stopped (no approach speed left to vote with) and be driven past where it stopped.
+      const bool held = in.lagdt && lagrange_on() && st.row_pushed[ks] != 0;
       if (law_normal ? !(pr.p > 0) : !(p > 0)) {
         st.f_t[ks] = Vec3{};
         // A pair about to close (within two steps at its approach speed) already votes with its stiffness at
@@ -729,9 +740,11 @@ struct Type7Contact::Impl {
         // A LAGDT node resting on the gap's edge (a row of the last cycle stopped it there, p = 0 to
         // round-off) keeps its row: without it the forces behind it would push it one step into the gap
         // before it switches again. The row costs nothing when it does not bind: the active set releases it.
-        const bool on_edge = in.lagdt && lagrange_on() && -p <= kEdgeBand * g;
+        // (From the law's onset for a law that acts beyond the gap.)
+        const double edge = std::isfinite(onset) ? onset : 0.0;
+        const bool on_edge = in.lagdt && lagrange_on() && edge - p <= kEdgeBand * g;
         const bool approaching = vn < 0 && onset - p < -2.0 * vn * dt1;
-        if ((approaching || on_edge) && !leaves) {
+        if ((approaching || on_edge || held) && !leaves) {
           // LAGDT: a pair whose step at p = 0 is already below Tmin does not drag the step down before it
           // closes: it becomes a row that lets it close down to the gap within the step, no further.
           // It votes with the stiffness it can reach within the step (reach_factor, from the gap's edge where
@@ -745,7 +758,7 @@ struct Type7Contact::Impl {
                   : std::max(K, K * ratio * ratio * reach_factor(tau0, g, -vn));
           const SwitchedPair row{node, st.segments[sb], best_h, n, best_d, row_gap, row_area, st.index, t1};
           if (lagrange_on() && in.lagdt &&
-              pair_spring_step(node, st.segments[sb], best_h, k_reach, nodes) < controls.t_min &&
+              (held || pair_spring_step(node, st.segments[sb], best_h, k_reach, nodes) < controls.t_min) &&
               may_switch(st, row, nodes))
             switch_pair(st, row, ks, 0.0);
           else if (approaching && k_reach > 0)
@@ -855,8 +868,8 @@ struct Type7Contact::Impl {
       q.dt_vote = dt_pair;
       // LAGDT: below Tmin the pair leaves the penalty path for this cycle and becomes a row (section 6).
       if (lagrange_on() && in.lagdt) {
-        const bool wants =
-            std::min(dt_pair, pair_spring_step(node, st.segments[sb], best_h, keff, nodes)) < controls.t_min;
+        const bool wants = held || std::min(dt_pair, pair_spring_step(node, st.segments[sb], best_h, keff,
+                                                                      nodes)) < controls.t_min;
         q.switchable = !wants || may_switch(st, q.row, nodes);
         if (wants && q.switchable) {
           switch_pair(st, q.row, ks, p);
@@ -890,10 +903,14 @@ ContactStep Type7Contact::compute(double t, double dt1, const ContactNodes& node
   s.pending.clear();
   s.switched.clear();
   s.switched_p.clear();
+  s.switched_ks.clear();
   for (auto& st : s.interfaces) {
     s.book_work(st, nodes, dt1);
     s.interface_cycle(st, t, dt1, nodes, sensor_starts);
   }
+  for (const auto& [iface, ks] : s.pushed)  // read by interface_cycle; this cycle's rows set them again
+    s.interfaces[static_cast<std::size_t>(iface)].row_pushed[static_cast<std::size_t>(ks)] = 0;
+  s.pushed.clear();
   s.settle_switches(nodes);
   ContactStep vote;
   for (const auto& q : s.pending)
@@ -953,6 +970,10 @@ const std::vector<NodeForce>& Type7Contact::lagrange_correction(const LagrangeNo
     const auto& out = s.lagrange_out[k];
     if (out.lambda == 0 && model::norm(out.friction) == 0) continue;
     auto& st = s.interfaces[static_cast<std::size_t>(row.law)];
+    if (out.lambda > 0) {
+      st.row_pushed[static_cast<std::size_t>(s.switched_ks[k])] = 1;
+      s.pushed.emplace_back(row.law, s.switched_ks[k]);
+    }
     const Vec3 fn = model::scale(row.n, out.lambda);
     const Vec3 f = model::add(fn, out.friction);
     const bool triangle = row.seg[3] == row.seg[2];
