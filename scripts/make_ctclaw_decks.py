@@ -518,7 +518,7 @@ def switch_deck(run, urn, vx, what, d, p=SWITCH):
     a, n = p["A"], p["N"]
     nb = (n[0] + 1) * (n[1] + 1)
     D, masses, bottom, M, top = mc.falling_cube_on_plate(
-        run, "Cube dropped on a plate: /CTCLAW %s on LAGDT, switching to multipliers" % urn.split("{")[0],
+        run, "Cube dropped on a plate: /CTCLAW %s on LAGDT switching to multipliers" % urn.split("{")[0],
         ["/CTCLAW law on an /INTER/LAGDT/TYPE7 whose pairs switch to Lagrange multipliers during the impact",
          "(contact-laws.md 5, type7-lagdt.md 6). Units kg, m, s (N, J, Pa).",
          "A %g m steel-like cube of %dx%dx%d bricks moves at %g m/s along -Z%s; its %d lower-face nodes" % (
@@ -532,7 +532,7 @@ def switch_deck(run, urn, vx, what, d, p=SWITCH):
     D = ours(D)
     if vx:
         k = D.index("/INIVEL/TRA/1")
-        D[k:k + 5] = v.inivel(1, "Cube moving towards the plate and sliding along +X", (vx, 0.0, -p["V0"]), 2)
+        D[k:k + 6] = v.inivel(1, "Cube moving towards the plate and sliding along +X", (vx, 0.0, -p["V0"]), 2)
     D += ["#  Istf 1: Stfac is the pair stiffness K (N/m), not used by this law; Igap 0: the gap is Gapmin;",
           "#  Fric 0; Inacti 0. The /CTCLAW below replaces the normal law%s." % (
               " and the friction law" if "s" in urn.split("{")[0] else "")]
