@@ -82,11 +82,7 @@ def one_deck(radx, deck, out, checks):
     if it["lagdt"]:
         # /INTER/LAGDT/TYPE7 with Tmin far above the pair steps: every lower-face pair is a multiplier row at
         # every cycle (cycle 0 included), so the friction checked above is the multipliers' Coulomb bound.
-        si = s["interfaces"][0]
-        rows = len(secondary) * (s["cycles"] + 1)
-        checks.check(si["switched_pairs_total"] == rows and si["switched_pairs_max"] == len(secondary),
-                     "every pair switched at every cycle: %d pair-cycles (expected %d), at most %d in a cycle"
-                     % (si["switched_pairs_total"], rows, si["switched_pairs_max"]))
+        cc.check_all_pairs_switched(checks, s, len(secondary))
     cc.check_energy_error(checks, s)
 
 

@@ -449,6 +449,16 @@ def check_energy_error(checks, summary, detail=""):
     return checks.check(abs(err) <= 1.0, "energy error %.3g %% (allowed 1 %%%s)" % (err, detail))
 
 
+def check_all_pairs_switched(checks, summary, n_pairs):
+    """An /INTER/LAGDT/TYPE7 with Tmin far above the pair steps: each of its n_pairs pairs is a multiplier row at
+    every cycle, cycle 0 included (the summary's first interface)."""
+    si = summary["interfaces"][0]
+    rows = n_pairs * (summary["cycles"] + 1)
+    return checks.check(si["switched_pairs_total"] == rows and si["switched_pairs_max"] == n_pairs,
+                        "every pair switched at every cycle: %d pair-cycles (expected %d), at most %d in a cycle"
+                        % (si["switched_pairs_total"], rows, si["switched_pairs_max"]))
+
+
 def finish(all_checks):
     bad = [f for c in all_checks for f in c.failures]
     if bad:

@@ -229,11 +229,7 @@ def one_deck(radx, deck, out, checks):
         checks.check(np.all(d > 0) and np.all(d < gap), "node %d stays in contact: distance to the plate from %.4g"
                      " to %.4g m (gap %g)" % (n, d.min(), d.max(), gap))
     if it["lagdt"]:
-        si = s["interfaces"][0]
-        rows = len(secondary) * (s["cycles"] + 1)
-        checks.check(si["switched_pairs_total"] == rows and si["switched_pairs_max"] == len(secondary),
-                     "every pair switched at every cycle: %d pair-cycles (expected %d), at most %d in a cycle"
-                     % (si["switched_pairs_total"], rows, si["switched_pairs_max"]))
+        cc.check_all_pairs_switched(checks, s, len(secondary))
     cc.check_energy_error(checks, s)
 
 
