@@ -456,8 +456,7 @@ struct Type7Contact::Impl {
       // the last sort happened to stop (the smallest lambda: stiff_lo over the largest area).
       double law_reach = 0;
       if (in.contact_law_id != 0) {
-        double area_hi = 0;
-        for (const double a : in.tributary_area) area_hi = std::max(area_hi, a);
+        double area_hi = in.tributary_area_range().second;
         for (const double a : st.segment_area0) area_hi = std::max(area_hi, a);
         if (area_hi > 0)
           law_reach = std::max(0.0, -contact_onset(resolve_pair_law(in.law, m, in.stiff_lo, area_hi)));

@@ -517,9 +517,7 @@ std::vector<double> tributary_areas(const model::Model& m, std::span<const std::
 PeLawStiffness pe_law_initial_stiffness_max(const model::Interface& in) {
   const auto& law = in.law;
   if (in.contact_law_id == 0 || law.normal != model::NormalLaw::Exponential || !(law.pe > 0)) return {};
-  double a_min = 0;
-  for (double a : in.tributary_area)
-    if (a > 0 && (a_min == 0 || a < a_min)) a_min = a;
+  const double a_min = in.tributary_area_range().first;
   if (a_min == 0) return {};
   return {law.pz * (in.stiff_hi / a_min) / law.pe, in.stiff_hi, a_min};
 }

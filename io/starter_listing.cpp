@@ -47,12 +47,7 @@ std::string range_text(double lo, double hi) {
 // The range of the automatic stiffness density K / A_s over the interface's pairs: K from stiff_lo to
 // stiff_hi, A_s over the secondary nodes that have an area. {0, 0} when no node has one.
 std::pair<double, double> automatic_stiffness_range(const model::Interface& c) {
-  double a_lo = 0, a_hi = 0;
-  for (double a : c.tributary_area) {
-    if (!(a > 0)) continue;
-    a_lo = a_lo == 0 ? a : std::min(a_lo, a);
-    a_hi = std::max(a_hi, a);
-  }
+  const auto [a_lo, a_hi] = c.tributary_area_range();
   if (a_lo == 0) return {0.0, 0.0};
   return {c.stiff_lo / a_hi, c.stiff_hi / a_lo};
 }

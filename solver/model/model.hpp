@@ -3,10 +3,12 @@
 // objects by dense 0-based index. All values are in work units. Depends on nothing of ours.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/model/id_map.hpp"
@@ -424,6 +426,18 @@ struct Interface {
   // open brick face around the node, a third of each 3-node shell; 0 for a node without any (it takes the
   // area of the segment it hits).
   std::vector<double> tributary_area;
+
+  // The smallest and largest nonzero tributary area ({0, 0} when no secondary node has one): with stiff_lo
+  // and stiff_hi they bound the automatic stiffness density K / A_s of a /CTCLAW law.
+  [[nodiscard]] std::pair<double, double> tributary_area_range() const {
+    double lo = 0, hi = 0;
+    for (const double a : tributary_area) {
+      if (!(a > 0)) continue;
+      lo = lo == 0 ? a : std::min(lo, a);
+      hi = std::max(hi, a);
+    }
+    return {lo, hi};
+  }
 };
 
 struct Model {
