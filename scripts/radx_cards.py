@@ -447,11 +447,12 @@ def keyword_line(keyword, ident=None):
 
 
 def card(keyword, ident=None, title=None, *, rows=None, ids=None, variables=None, sig=None, names=True,
-         version=VERSION, engine=False, **values):
+         fill=None, version=VERSION, engine=False, **values):
     """The lines of one keyword: keyword line (with /ident), title line, then for each card of the layout that
     the version has and the values call for, its field-name comment line (unless names=False) and its data
     line; then the variable list, the id list or the rows. sig: reals too long for their field are written
-    with sig significant digits."""
+    with sig significant digits. fill=0: the card fields not given are written as 0 (integers) and 0.0
+    (reals), text fields stay blank; a value given as None is blank either way."""
     layout = (ENGINE_LAYOUTS if engine else LAYOUTS).get(keyword)
     if layout is None:
         raise ValueError("no card layout for %s" % keyword)
@@ -469,7 +470,15 @@ def card(keyword, ident=None, title=None, *, rows=None, ids=None, variables=None
         fields = _fields(c, version)
         row = []
         for _, f in fields:
-            row.append(values.get(f.key) if f.kind != "-" else None)
+            if f.kind == "-":
+                row.append(None)
+                continue
+            if f.key in values:
+                row.append(values[f.key])
+            elif fill is None or f.kind in "SL":
+                row.append(None)
+            else:
+                row.append(int(fill) if f.kind == "I" else float(fill))
             used.add(f.key)
         if names and c.names:
             out.append(name_line(fields))
@@ -520,10 +529,10 @@ def begin(run, units, work_units=None, version=VERSION):
 
 class Deck:
     """The lines of one deck file. Starter decks take LAYOUTS in their version; Deck(engine=True) takes
-    ENGINE_LAYOUTS. Every method returns the deck, so calls can chain."""
+    ENGINE_LAYOUTS; fill is card()'s default fill. Every method returns the deck, so calls can chain."""
 
-    def __init__(self, version=VERSION, engine=False):
-        self.version, self.engine, self.lines = version, engine, []
+    def __init__(self, version=VERSION, engine=False, fill=None):
+        self.version, self.engine, self.fill, self.lines = version, engine, fill, []
 
     def raw(self, *lines):
         """Lines as they are (a keyword without cards, a deliberately odd line)."""
@@ -545,6 +554,7 @@ class Deck:
 
     def card(self, keyword, ident=None, title=None, **kw):
         kw.setdefault("version", self.version)
+        kw.setdefault("fill", self.fill)
         self.lines += card(keyword, ident, title, engine=self.engine, **kw)
         return self
 
