@@ -396,6 +396,13 @@ def _cell(kind, value, width, sig):
 
 def _place(cells):
     """One line from (first column, text) cells, trailing blanks dropped."""
+    end = 1
+    for col, text in cells:
+        if col != end:
+            break
+        end += len(text)
+    else:  # side by side from column 1 (most lines): no need to place them
+        return "".join(text for _, text in cells).rstrip()
     out = [" "] * MAX_COLUMNS
     for col, text in cells:
         out[col - 1:col - 1 + len(text)] = list(text)
