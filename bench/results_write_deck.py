@@ -41,15 +41,14 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
+import radx_cards as rc  # noqa: E402  (the engine card layouts)
+
 E_STEEL, RHO_STEEL = 210000.0, 7.85e-9   # as in bench/gen_shell_plate.py
 
 
 def is_comment(s):
     return s.startswith("#") or s.strip() == ""
-
-
-def fmt(x):
-    return repr(float(x)).rjust(20)
 
 
 def find_card(lines, key):
@@ -64,14 +63,6 @@ def next_data(lines, i):
     while j < len(lines) and is_comment(lines[j]):
         j += 1
     return j
-
-
-def fields(s, widths):
-    out, p = [], 0
-    for w in widths:
-        out.append(s[p:p + w].strip())
-        p += w
-    return out
 
 
 def deck(argv):
@@ -97,19 +88,20 @@ def deck(argv):
         tstop = float("%.6g" % (a.cycles * dt))
     elif a.tstop is not None:
         tstop = a.tstop
-    lines[i_t] = fmt(tstop)
+    lines[i_t] = rc.data("/RUN", engine=True, Tstop=tstop)
     i_tf = next_data(lines, find_card(lines, "/TFILE"))
     tfile = a.tfile_dt if a.tfile_dt is not None else float("%.6g" % (tstop / 100))
-    lines[i_tf] = fmt(tfile)
+    lines[i_tf] = rc.data("/TFILE", engine=True, dt_his=tfile)
     i_an = next_data(lines, find_card(lines, "/ANIM/DT"))
-    t0, dT = fields(lines[i_an], (20, 20))
+    anim = rc.read("/ANIM/DT", lines[i_an], engine=True)
+    t0, dT = anim["Tstart"], anim["dT"]
     if a.anim_dt is not None:
         dT = a.anim_dt
     elif a.anim_states is not None:
         dT = float("%.6g" % (tstop / a.anim_states))
     else:
         dT = float(dT)
-    lines[i_an] = fmt(float(t0 or 0.0)) + fmt(dT)
+    lines[i_an] = rc.data("/ANIM/DT", engine=True, Tstart=float(t0 or 0.0), dT=dT)
     present = {s.strip() for s in lines if s.startswith("/ANIM/")}
     i_after = max(i for i, s in enumerate(lines) if s.startswith("/ANIM/"))
     extra = [c for c in dict.fromkeys(a.anim) if c not in present]
@@ -123,8 +115,8 @@ def split_states(series, deck_path):
     """(states, in_run, after_run) of a run, see the module documentation."""
     times = [float(f["time"]) for f in json.load(open(series))["files"]]
     lines = open(deck_path).read().splitlines()
-    t0, dT = fields(lines[next_data(lines, find_card(lines, "/ANIM/DT"))], (20, 20))
-    start, dT = float(t0 or 0.0), float(dT or 0.0)
+    anim = rc.read("/ANIM/DT", lines[next_data(lines, find_card(lines, "/ANIM/DT"))], engine=True)
+    start, dT = float(anim["Tstart"] or 0.0), float(anim["dT"] or 0.0)
     in_run = 1 if times else 0
     for k in range(1, len(times)):
         prev = times[k - 1]

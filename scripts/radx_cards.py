@@ -520,6 +520,28 @@ def card(keyword, ident=None, title=None, *, rows=None, ids=None, variables=None
     return out
 
 
+def _layout_card(keyword, card_index, engine, version):
+    layout = (ENGINE_LAYOUTS if engine else LAYOUTS).get(keyword)
+    if layout is None:
+        raise ValueError("no card layout for %s" % keyword)
+    return _fields(layout.cards[card_index], version)
+
+
+def data(keyword, card_index=0, engine=False, version=VERSION, sig=None, **values):
+    """The data line alone of one card of a keyword (to replace a card's values in a deck read back)."""
+    fields = _layout_card(keyword, card_index, engine, version)
+    unknown = set(values) - {f.key for _, f in fields}
+    if unknown:
+        raise ValueError("%s card %d has no field %s" % (keyword, card_index + 1, ", ".join(sorted(unknown))))
+    return data_line(fields, [values.get(f.key) for _, f in fields], sig)
+
+
+def read(keyword, text, card_index=0, engine=False, version=VERSION):
+    """The fields of one data line of a keyword's card, by key: stripped text, '' for a blank field."""
+    return {f.key: text[col - 1:col - 1 + f.width].strip()
+            for col, f in _layout_card(keyword, card_index, engine, version) if f.kind != "-"}
+
+
 def rows(keyword, rows_, ident=None, title=None, **kw):
     """card() of a row-list keyword: rows_ is a list of tuples in field order (shorter tuples leave the last
     fields blank)."""
