@@ -337,6 +337,19 @@ def cload(v):
     return [card(f + [F("Ascale_x", "R", 61, 80), F("Fscale_y", "R", 81, 100)])]
 
 
+def pload(v):
+    """/PLOAD (OpenRadioss pload.cfg): surface, function, sensor; Ipinch from 2020, Idel from 2021, Itypfun from
+    2023; then the two scales."""
+    f = [F("surf_ID", "I", 1, 10), F("funct_IDT", "I", 11, 20), F("sensor_ID", "I", 21, 30)]
+    if v >= 2020:
+        f.append(F("Ipinch", "I", 31, 40))
+    if v >= 2021:
+        f.append(F("Idel", "I", 41, 50))
+    if v >= 2023:
+        f.append(F("Itypfun", "I", 51, 60))
+    return [card(f + [F("Ascale_x", "R", 61, 80), F("Fscale_y", "R", 81, 100)])]
+
+
 def sensor_time(v):
     """/SENSOR/TIME (OpenRadioss sensor_time.cfg): Tdelay; from 2023 a second card with Tstop (0 = never), which
     may be left out."""
@@ -458,6 +471,7 @@ STARTER = {
     "/SKEW/FIX": ("id", True, skew_fix, None, None),
     "/SKEW/MOV": ("id", True, skew_mov, None, None),
     "/CLOAD": ("id", True, cload, None, None),
+    "/PLOAD": ("id", True, pload, None, None),
     "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
     "/RWALL/CYL": ("id", True, lambda v: rwall_curved(v, True), None, None),
     "/RWALL/SPHER": ("id", True, lambda v: rwall_curved(v, False), None, None),
@@ -470,6 +484,7 @@ STARTER = {
     "/TH/NODE": ("id", True, lambda v: [], "threcords", THNODE_REC),
     "/TH/PART": ("id", True, lambda v: [], "thids", ID_REC),
     "/TH/INTER": ("id", True, lambda v: [], "thids", ID_REC),
+    "/TH/RWALL": ("id", True, lambda v: [], "thids", ID_REC),
     "/TH/BRIC": ("id", True, lambda v: [], "threcords", THELEM_REC),
     "/TH/BRICK": ("id", True, lambda v: [], "threcords", THELEM_REC),
     "/TH/SH3N": ("id", True, lambda v: [], "threcords", THNODE_REC),
@@ -495,6 +510,7 @@ TH_VARIABLES = {
                                                                                               "REACYY", "REACZZ"]),
     "/TH/PART": (["DEF"], ["IE", "KE", "XMOM", "YMOM", "ZMOM", "MASS", "HE", "ERODED", "HEAT"]),
     "/TH/INTER": (["DEF", "FN", "FT"], ["FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "CE_ELAST", "CE_FRIC", "CE_DAMP"]),
+    "/TH/RWALL": (["DEF", "FN", "FT"], ["FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"]),
     "/TH/SH3N": (["DEF"], TH_SHELL),
     "/TH/BRIC": (["DEF", "STRESS"], TH_BRICK),
     "/TH/BRICK": (["DEF", "STRESS"], TH_BRICK),
