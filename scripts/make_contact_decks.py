@@ -45,7 +45,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "tests", "scripts"))
 import check_contact_common as cc  # noqa: E402  (one-DOF impact model and the energy equation)
 import make_verification_decks as v  # noqa: E402  (shared deck pieces)
 import radx_cards as rc  # noqa: E402  (the card layouts and their writer)
-from radx_deck_format import I, R, S, RULER, blank, line, names  # noqa: E402
+from radx_deck_format import I, R, RULER, line, names  # noqa: E402
 
 VERSION = v.VERSION
 CASES = ("node_on_segment", "block_sliding", "tube_crush", "initial_penetration", "tstart_tstop", "ibc", "idel",
