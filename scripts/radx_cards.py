@@ -178,6 +178,15 @@ LAYOUTS = {
         Card(i("grnod_ID"), r("X_point_1"), r("Y_point_1"), r("Z_point_1"), i("node_ID1"), i("node_ID2"),
              i("sub_ID", since=100)),
         Card(gap(10), r("X_point_2"), r("Y_point_2"), r("Z_point_2"), r("Angle"))),
+    "/TRANSFORM/SCA": Layout(
+        Card(i("grnod_ID"), r("Fscale_X"), r("Fscale_Y"), r("Fscale_Z"), i("node_IDc"), gap(10),
+             i("sub_ID", since=2026))),
+    "/TRANSFORM/SYM": Layout(
+        Card(i("grnod_ID"), r("X_point_1"), r("Y_point_1"), r("Z_point_1"), i("node_ID1"), i("node_ID2"),
+             i("sub_ID", since=2026)),
+        Card(gap(10), r("X_point_2"), r("Y_point_2"), r("Z_point_2"))),
+    "//SUBMODEL": Layout(Card(i("off_def"), i("off_nod"), i("off_ele"), i("off_part"), i("off_mat"), i("off_type"),
+                              i("off_sub"))),
     # --- properties and materials
     "/PROP/SHELL": Layout(
         Card(i("Ishell"), i("Ismstr"), i("Ish3n"), i("Idrill", since=110), i("Ipinch", since=2020), gap(10),
