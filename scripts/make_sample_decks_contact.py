@@ -372,6 +372,277 @@ the mean friction gives the exact mu g deceleration above. After the stop FN = M
 
 
 # ---------------------------------------------------------------------------------------------------
+# 2. ctclaw_laws: one block per /CTCLAW friction law, the normal laws cycled
+
+CT = dict(A=20.0, V0=300.0, MU=0.3, K=1000.0, GAP=0.5, PITCH=100.0, T_STOP=0.12, TH_DT=5e-4, ANIM_DT=5e-3)
+A_S = CT["A"] ** 2 / 4  # tributary area of each lower-face corner (a quarter of the face: the contact-surface rule)
+TABLE_N3 = [(-0.1, 0.01), (-0.05, 0.003), (0.0, 0.0)]  # gap (negative: overclosure) -> pressure, MPa
+NORMAL_LAWS = (
+    ("n1", "Kc-1", "bilinear, Kc = -1: K / A_s = 10 MPa/mm"),
+    ("n2", "pz1e-4,lambda20", "exponential P = pz exp(lambda u), pz 1e-4 MPa, lambda 20 /mm"),
+    ("n3", "CurveID1", "tabulated: /FUNCT 1, linear between its points"),
+    ("n4", "kp1=0.01,kp3=10", "power P = 0.01 u + 10 u^3"),
+)
+# friction laws: (law, parameters, threshold or slope note); CtLin in MPa.s/mm (s2, s12) or s/mm (s3, s4, ...)
+FRICTION_LAWS = (
+    ("s1", "Mu0.3", "exact Coulomb along t1"),
+    ("s2", "Mu0.3,CtLin5.1e-6", "linear min(ct s, mu p) along t1"),
+    ("s3", "Mu0.3,CtLin0.01", "arctangent mu p (2/pi) atan(ct s) along t1"),
+    ("s4", "Mu0.3,CtLin6.667e-3", "scaled linear p min(ct s, mu) along t1"),
+    ("s11", "Mu0.3", "exact Coulomb in the plane"),
+    ("s12", "Mu0.3,CtLin5.1e-6", "linear min(ct s, mu p) in the plane"),
+    ("s13", "Mu0.3,CtLin0.01", "arctangent in the plane"),
+    ("s14", "Mu0.3,CtLin6.667e-3", "scaled linear in the plane"),
+)
+
+
+def pressure(law, u):
+    """The normal laws' P(u) (contact-laws.md 2), u the overclosure in mm, MPa."""
+    if law == "n1":
+        return CT["K"] / A_S * u
+    if law == "n2":
+        return 1e-4 * math.exp(20.0 * u)
+    if law == "n3":
+        g = -u
+        if g >= TABLE_N3[-1][0]:
+            return 0.0
+        for (g0, p0), (g1, p1) in zip(TABLE_N3, TABLE_N3[1:]):
+            if g <= g1:  # within the segment, or before the first point: along the first segment
+                return p0 + (p1 - p0) * (g - g0) / (g1 - g0)
+        return 0.0
+    return 0.01 * u + 10.0 * u ** 3
+
+
+def static_overclosure(law, p_static):
+    """The overclosure where the law carries p_static (bisection: every law rises with u)."""
+    lo, hi = -0.4, 0.4
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if pressure(law, mid) < p_static:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def deceleration(law, params, v, p_static):
+    """The block's deceleration from its friction law at slip speed v (all four pairs at p_static):
+    sum of the pairs' forces / M = (g / p) F_t / A_s."""
+    ct = float(params.split("CtLin")[1]) if "CtLin" in params else None
+    mu = CT["MU"]
+    kind = law[1:] if len(law) == 2 else law[2:]
+    if v <= 0:
+        return 0.0
+    if kind == "1":
+        return mu * G
+    if kind == "2":
+        return G * min(ct * v, mu * p_static) / p_static
+    if kind == "3":
+        return mu * G * (2 / math.pi) * math.atan(ct * v)
+    return G * min(ct * v, mu)
+
+
+def speed_history(law, params, v0, p_static, times):
+    """Integrate dv/dt = -a(v) (RK4, 1e-5 s steps) and return v at the given times."""
+    out, v, t, h = [], v0, 0.0, 1e-5
+    for target in times:
+        while t < target - 1e-12:
+            step = min(h, target - t)
+            f = lambda x: -deceleration(law, params, max(x, 0.0), p_static)  # noqa: E731
+            k1 = f(v)
+            k2 = f(v + step * k1 / 2)
+            k3 = f(v + step * k2 / 2)
+            k4 = f(v + step * k3)
+            v = max(0.0, v + step * (k1 + 2 * k2 + 2 * k3 + k4) / 6)
+            t += step
+        out.append(v)
+    return out
+
+
+def ctclaw_laws(out, argv):
+    p = CT
+    run = "CTCLAW_LAWS"
+    a = p["A"]
+    M = STEEL["rho"] * a ** 3
+    p_static = M * G / 4 / A_S
+    d = starter(run, "CTCLAW laws: eight steel blocks sliding on tiles, one /CTCLAW friction law each",
+                ["Sample deck: eight 20 mm steel cubes (1 x 1 x 2 bricks) slide at 300 mm/s under gravity,",
+                 "each on its own fixed tile through its own TYPE7 and /CTCLAW law: friction laws s1..s4",
+                 "(blocks 1-4, sliding at 45 degrees to the tiles' first tangent +X) and s11..s14 (blocks",
+                 "5-8, along +X); normal laws n1..n4 cycled. Units Mg, mm, s (MPa, N, mJ)."])
+    blocks, rows_nodes, rows_tiles, tile_nodes = [], [], [], []
+    for k in range(8):
+        nlaw, nparams, _ = NORMAL_LAWS[k % 4]
+        flaw, fparams, _ = FRICTION_LAWS[k]
+        y0 = p["PITCH"] * k
+        u_s = static_overclosure(nlaw, p_static)
+        z0 = p["GAP"] - u_s
+        bn, bb, bid = box(1001 + 100 * k, 1001 + 100 * k, (-a / 2, y0 - a / 2, z0), (a, a, a), (1, 1, 2))
+        t0 = 1 + 4 * k
+        tile = [(t0, -30.0, y0 - 30.0, 0.0), (t0 + 1, 70.0, y0 - 30.0, 0.0), (t0 + 2, 70.0, y0 + 60.0, 0.0),
+                (t0 + 3, -30.0, y0 + 60.0, 0.0)]
+        tile_nodes += tile
+        rows_tiles.append((1 + k, t0, t0 + 1, t0 + 2, t0 + 3))
+        diag = k < 4
+        v = (p["V0"] / math.sqrt(2), p["V0"] / math.sqrt(2)) if diag else (p["V0"], 0.0)
+        blocks.append(dict(k=k, nlaw=nlaw, nparams=nparams, flaw=flaw, fparams=fparams, u_s=u_s, z0=z0, nodes=bn,
+                           bricks=bb, bottom=[bid(i, j, 0) for j in range(2) for i in range(2)], v=v,
+                           urn="%s%s{%s,%s}" % (nlaw, flaw, nparams, fparams)))
+    d.comment("Tile nodes 1..32 (four per tile, z = 0), every one fixed")
+    d.rows("/NODE", tile_nodes)
+    for b in blocks:
+        d.comment("Block %d nodes (%s%s), lower face at z = gap - u_s = %s (u_s the law's static overclosure)"
+                  % (b["k"] + 1, b["nlaw"], b["flaw"], repr(b["z0"])))
+        d.rows("/NODE", b["nodes"])
+    d.ruler()
+    d.comment("Tiles: one shell each, first edge (node 1 to node 2) along +X: the first tangent t1 of s1..s4")
+    d.rows("/SHELL", rows_tiles, ident=1)
+    for b in blocks:
+        d.rows("/BRICK", b["bricks"], ident=11 + b["k"])
+    d.ruler()
+    d.card("/PART", 1, "Tiles (fixed)", prop_ID=1, mat_ID=1)
+    for b in blocks:
+        d.card("/PART", 11 + b["k"], "Block %d: %s" % (b["k"] + 1, b["urn"]), prop_ID=2, mat_ID=1)
+    shell_prop(d, 1, "Tile shell 1 mm", 1.0, n_ip=2)
+    solid_prop(d, 2, "Block solid")
+    steel_law1(d, 1, "Steel (elastic)")
+    d.ruler()
+    d.card("/GRNOD/PART", 1, "Tile nodes", ids=[1])
+    d.card("/BCS", 1, "Tiles fixed", Tra_rot=rc.bcs_code("111", "111"), grnod_ID=1)
+    d.card("/GRAV", 1, "Gravity along -Z on every node", funct_IDT=0, DIR="Z", skew_ID=0, sensor_ID=0, grnod_ID=0,
+           Ascale_x=0.0, Fscale_y=-G)
+    d.card("/FUNCT", 1, "n3 table: gap (negative = overclosure, mm) to pressure (MPa)", rows=TABLE_N3)
+    for b in blocks:
+        k = b["k"]
+        d.ruler()
+        d.card("/GRNOD/PART", 10 + k, "Block %d nodes" % (k + 1), ids=[11 + k])
+        d.card("/GRNOD/NODE", 20 + k, "Block %d lower-face nodes (secondary nodes)" % (k + 1), ids=b["bottom"])
+        d.rows("/SURF/SEG", [(1, 1 + 4 * k, 2 + 4 * k, 3 + 4 * k, 4 + 4 * k)], ident=1 + k,
+               title="Tile %d (normal +Z)" % (k + 1))
+        d.card("/INIVEL/TRA", 1 + k, "Block %d launched" % (k + 1), Vx=b["v"][0], Vy=b["v"][1], Vz=0.0,
+               grnod_ID=10 + k, skew_ID=0, Tstart=0.0, sensor_ID=0)
+        type7(d, 1 + k, "Block %d on tile %d" % (k + 1, k + 1), 20 + k, 1 + k, istf=1, stfac=p["K"], fric=0.0,
+              gapmin=p["GAP"])
+        d.card("/CTCLAW", 1 + k, "Block %d law" % (k + 1), inter_ID=1 + k, law=b["urn"])
+    d.ruler()
+    d.card("/TH/PART", 1, "Blocks", variables=["DEF"], ids=[11 + k for k in range(8)])
+    d.card("/TH/INTER", 2, "Interfaces", variables=["DEF"], ids=list(range(1, 9)))
+    d.ruler()
+    d.raw("/END")
+    e = engine(run, p["T_STOP"], p["TH_DT"], p["ANIM_DT"], ["VONM"], ["VEL", "DISP", "CONT"],
+               ["Engine deck of CTCLAW_LAWS_0000.rad: each block brakes by its own friction law."],
+               print_every=10000)
+
+    times = (0.05, p["T_STOP"])
+    table, refs = [], []
+    ke0 = 8 * 0.5 * M * p["V0"] ** 2
+    ke_end = 0.0
+    for b in blocks:
+        vx0 = b["v"][0]
+        vx = speed_history(b["flaw"], b["fparams"], vx0, p_static, times)
+        vy = b["v"][1]
+        ke_end += 0.5 * M * (vx[-1] ** 2 + vy ** 2)
+        b["vx"] = vx
+        table.append("| %d | `%s` | %s; %s | %s | %s, %s | %s |" % (
+            b["k"] + 1, b["urn"], dict((n[0], n[2]) for n in NORMAL_LAWS)[b["nlaw"]],
+            dict((f[0], f[2]) for f in FRICTION_LAWS)[b["flaw"]], fmt(b["u_s"], 4), fmt(vx[0], 4), fmt(vx[1], 4),
+            fmt(vy, 4) if vy else "0"))
+    readme = README_CT.format(M=fmt(M * 1e6), f=fmt(M * G / 4), p=fmt(p_static), table="\n".join(table),
+                              ke0=fmt(ke0), fric=fmt(ke0 - ke_end), ke_end=fmt(ke_end))
+    ref_lines = [
+        ("cycles", 0.02, 0, "the bricks set the step: 2 % is a change of the time-step rule"),
+        ("energy.contact_friction", 0.02, 0.5, "the friction work %s mJ of the laws' ODEs, 2 %%" % fmt(ke0 - ke_end)),
+        ("energy.error_percent", 0.0, 1.0, "the balance within 1 %% of the initial %s mJ" % fmt(ke0)),
+    ]
+    for k in (0, 2, 5, 6):
+        b = blocks[k]
+        ref_lines.append(("th:part/1:%d:XMOM@0.05" % (11 + k), 0.0, 0.03 * M * b["v"][0],
+                          "block %d (%s): M vx = %s Mg.mm/s at 0.05 s from its law's ODE, 3 %% of its M vx(0)"
+                          % (k + 1, b["flaw"], fmt(M * b["vx"][0]))))
+    ref = reference(run, "eight blocks braked by the /CTCLAW friction laws", ref_lines)
+    write_folder(out, "ctclaw_laws", run, d, e, readme, ref)
+
+
+README_CT = """# CTCLAW laws: one block per contact and friction law
+
+`CTCLAW_LAWS_0000.rad` (starter, format 2026) and `CTCLAW_LAWS_0001.rad` (engine): eight steel cubes slide under
+gravity, each on its own fixed tile through its own `/INTER/TYPE7` and `/CTCLAW` law, so the eight friction laws
+of the family (`shared/spec/contact-laws.md`; engine notes in `docs/engine.md`, "/CTCLAW") can be compared side
+by side; the four normal laws are cycled over them. Units: Mg, mm, s (MPa, N, mJ). Generated by
+`scripts/make_sample_decks_contact.py` (edit the script and regenerate); the reference `CTCLAW_LAWS.ref` is
+checked by `radx regress decks/ctclaw_laws`. `decks/verification/ctclaw_*` are the test versions.
+
+## Model
+
+| item | value |
+|---|---|
+| blocks | eight 20 mm steel cubes, 1 x 1 x 2 bricks (parts 11..18), mass M = {M} g each, 100 mm apart along Y |
+| tiles | one fixed 1 mm shell per block (100 x 90 mm), first edge along +X: the first tangent t1 of the one-directional laws |
+| contact | `/INTER/TYPE7/k`: block k's four lower-face nodes (`/GRNOD/NODE`, so each has the tributary area A_s = 100 mm^2 of the contact-surface rule) on tile k (`/SURF/SEG`); Istf 1 with K = 1000 N/mm, Igap 0, Gapmin 0.5 mm, Fric 0 (the law's), VISs 0.05 |
+| laws | `/CTCLAW/k` on interface k, table below; `/FUNCT/1` the n3 table (gap -0.1, -0.05, 0 mm to 0.01, 0.003, 0 MPa) |
+| start | each block's lower face at its law's static overclosure u_s (P(u_s) A_s = M g / 4 = {f} N, pressure p = {p} MPa), so it starts in vertical equilibrium; `/INIVEL/TRA` 300 mm/s along +X (blocks 5-8) or at 45 degrees between +X and +Y (blocks 1-4) |
+| engine | Tstop 0.12 s, time history every 5e-4 s, states every 5e-3 s |
+
+## Expected physics
+
+Each block's four pairs carry p A_s with the same p, so the block's deceleration is (g / p) times its law's
+friction stress F_t / A_s at the slip speed s (contact-laws.md 3):
+- s1, s11 exact Coulomb: mu g = 2943 mm/s^2 until the stop, then sticking;
+- s2, s12 `min(ct s, mu p)`, ct = 5.1e-6 MPa.s/mm: Coulomb above s* = mu p / ct = 90.6 mm/s, then viscous
+  (exponential decay at g ct / p = 32.5 /s);
+- s3, s13 `mu p (2/pi) atan(ct s)`, ct = 0.01 s/mm: no threshold, the speed never quite stops;
+- s4, s14 `p min(ct s, mu)`, ct = 6.667e-3 s/mm: Coulomb above s* = mu / ct = 45 mm/s, then exponential at g ct.
+- The one-directional laws s1..s4 keep only the slip along t1 = +X: blocks 1-4, launched at 45 degrees, are
+  braked along X only (vx = 212.1 mm/s at the start follows the law), and keep vy = 212.1 mm/s: their paths
+  curve towards +Y and they end sliding along Y forever. Blocks 5-8 (s11..s14) are braked along their whole
+  slip, +X.
+
+The normal laws only set where each block rides (u_s) and how stiffly: the friction depends on the pressure, which
+is the weight's in every case. The speeds below come from integrating dv/dt = -a(v) (RK4, in the generator):
+
+| block | law | normal; friction | u_s (mm) | vx at 0.05 s, 0.12 s (mm/s) | vy (mm/s) |
+|---|---|---|---|---|---|
+{table}
+
+Energy: the friction work is the kinetic energy lost, {fric} mJ of the {ke0} mJ (the blocks keep {ke_end} mJ).
+
+## What to look at
+
+- ParaView (`CTCLAW_LAWS.hdf.series`): the eight blocks side by side; blocks 1-4 drift towards +Y once their X
+  motion is braked; block 5 (Coulomb) stops first, blocks 3 and 7 (arctangent) creep on; `CONT` shows the
+  friction forces (along -X only for blocks 1-4).
+- Time history: `part/1` XMOM and YMOM of each block (divide by its MASS for its speed), `interface/2` FT and
+  FN of each interface (FT / FN = the law's mu or less).
+- The starter listing prints each law as understood (its parameters, K / A_s, the tributary areas), and warns
+  (RX701) that each interface's four nodes start inside the gap: on purpose, at the law's static overclosure.
+
+## Measured (radx, one thread: 84115 cycles, about 3 s)
+
+vx of each block (XMOM / MASS of its part) against the ODE above; vy of blocks 1-4 stays 212.13 mm/s, of blocks
+5-8 0:
+
+| block | law | vx at 0.05 s: ODE, radx | vx at 0.12 s: ODE, radx |
+|---|---|---|---|
+| 1 | n1s1 | 64.98, 64.98 | 0, 0.00 |
+| 2 | n2s2 | 68.28, 72.61 | 7.03, 7.43 |
+| 3 | n3s3 | 117.5, 117.45 | 37.77, 37.78 |
+| 4 | n4s4 | 64.98, 65.01 | 0.72, 0.69 |
+| 5 | n1s11 | 152.9, 152.85 | 0, -0.01 |
+| 6 | n2s12 | 152.9, 153.70 | 18.54, 19.61 |
+| 7 | n3s13 | 189.8, 189.82 | 74.05, 74.06 |
+| 8 | n4s14 | 152.9, 152.88 | 5.08, 4.99 |
+
+Friction energy 16.716 mJ against the 16.73 mJ of the ODEs; energy error -7e-7 %; hourglass 0.002 mJ.
+
+The linear law s2 / s12 (`min(ct s, mu p)`) is the only one off the ODE, by 6 % of the speed: its threshold
+mu p / ct depends on each pair's pressure, and the friction's moment about the centre of mass (10 mm above the
+lower face) loads the front pairs more than the rear ones, so the rear pairs fall to their viscous branch first
+and the block brakes less than the equal-pressure ODE says (`decks/verification/ctclaw_sliding` makes the same
+point). The laws linear in the pressure (s1, s3, s4 and their plane twins) do not notice the tilt.
+"""
+
+
+# ---------------------------------------------------------------------------------------------------
 # 3. tube_crush: a square tube crushed by a falling mass against a rigid wall
 
 TUBE = dict(W=40.0, T=1.0, L=100.0, NS=8, NZ=20, MASS=0.005, V0=20000.0, CLEAR=0.05, IMPERF=0.1, GAP=0.5,
