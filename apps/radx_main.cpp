@@ -30,13 +30,14 @@ void usage(std::ostream& os) {
         "  keywords [--markdown] [--output FILE]\n"
         "                              the keyword reference (every keyword, card, field and diagnostic "
         "code)\n"
-        "  run [DECK] [--out DIR] [--threads N] [--no-plot] [--allow-substitutions]\n"
+        "  run [DECK] [--out DIR] [--threads N] [--no-plot] [--allow-substitutions] [--starter-only]\n"
         "                              the starter then the engine: DECK is NAME_0000.rad (NAME_0001.rad "
         "beside\n"
         "                              it) or a one-file deck; without DECK, the embedded default deck.\n"
         "                              --allow-substitutions: run the nearest formulation radx implements\n"
         "                              where the deck asks for one it lacks (each is listed) instead of\n"
-        "                              refusing the deck\n"
+        "                              refusing the deck. --starter-only: stop after the starter (a\n"
+        "                              starter deck with no engine deck)\n"
         "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]...] | th FILE --recover\n"
         "                              a time history P_th.h5: without --csv, list its groups (objects,\n"
         "                              variables, units, rows, time range); with --csv, write the chosen\n"
@@ -45,19 +46,21 @@ void usage(std::ostream& os) {
         "                              object's columns (node/1:12); '*' and '?' are wildcards; repeatable.\n"
         "                              --recover: rewrite a file whose run was killed inside a flush (HDF5\n"
         "                              readers refuse it) with the rows of the flushes that completed\n"
-        "  regress DIR... [--tol PCT] [--timeout SECONDS] [--threads N] [--work DIR] [--keep]\n"
-        "          [--summary FILE]\n"
-        "                              run every deck under the folders (NAME_0000.rad, or a one-file "
-        "deck),\n"
-        "                              each as its own `radx run` (--threads, default 1) with a time limit\n"
-        "                              (--timeout, default 600 s), and compare its energies with the "
-        "folder's\n"
-        "                              OpenRadioss ref.extract (--tol, default 5 %); one line per deck, "
-        "then\n"
-        "                              a table; --summary writes it as JSON; --work keeps outputs and logs\n"
-        "                              there (default a temporary folder, removed unless --keep). Exit code "
-        "1\n"
-        "                              when a deck fails (read-error, run-error, ref-error, deviates)\n"
+        "  regress [DIR...] [-j N] [--filter PATTERN]... [--update] [--keep] [--junit FILE]\n"
+        "          [--summary FILE] [--tol PCT] [--timeout SECONDS] [--threads N] [--work DIR]\n"
+        "                              run every deck under the folders (default ./decks: NAME_0000.rad, a\n"
+        "                              one-file deck, or a deck whose # expect: lines say it must be\n"
+        "                              refused), N at a time (default: the cores), each as its own `radx\n"
+        "                              run` (--threads, default 1) with a time limit (--timeout, default\n"
+        "                              600 s), and compare it with its reference: its NAME.ref, or the\n"
+        "                              folder's OpenRadioss ref.extract (energies within --tol, default\n"
+        "                              5 %); one line per deck as it finishes, then a table. --filter keeps\n"
+        "                              the decks whose name matches (glob, or substring); --update rewrites\n"
+        "                              (or writes) each NAME.ref from the run, saying what changed; --junit\n"
+        "                              writes a JUnit XML report, --summary a JSON one. Runs happen in a\n"
+        "                              scratch folder; a passing deck's is removed unless --keep (--work\n"
+        "                              DIR keeps them there). Exit code 1 when a deck fails\n"
+        "                              (docs/regress.md)\n"
         "\n"
         "  --help, --version\n"
         "\n"
@@ -80,6 +83,7 @@ int check(const std::vector<std::string>& args) {
 int run(const std::vector<std::string>& args) {
   radx::app::StarterOptions sopt;
   radx::app::EngineOptions eopt;
+  bool starter_only = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if ((a == "--out" || a == "--threads") && i + 1 >= args.size()) {
@@ -102,6 +106,8 @@ int run(const std::vector<std::string>& args) {
       eopt.plot = false;
     } else if (a == "--allow-substitutions") {
       sopt.allow_substitutions = true;
+    } else if (a == "--starter-only") {
+      starter_only = true;
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << "radx run: unknown option " << a << '\n';
       return radx::app::kExitUsage;
@@ -130,7 +136,7 @@ int run(const std::vector<std::string>& args) {
     }
   }
   const auto s = radx::app::run_starter(sopt, std::cout, std::cerr);
-  if (s.exit_code != 0) return s.exit_code;
+  if (s.exit_code != 0 || starter_only) return s.exit_code;
   eopt.model_file = s.model_path;
   return radx::app::run_engine(eopt, std::cout, std::cerr);
 }

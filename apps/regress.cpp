@@ -2,6 +2,7 @@
 #include "apps/regress.hpp"
 
 #include <fcntl.h>
+#include <fnmatch.h>
 #include <signal.h>
 #include <spawn.h>
 #include <stdlib.h>
@@ -9,12 +10,15 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
+#include <mutex>
 #include <ostream>
 #include <set>
 #include <sstream>
@@ -107,6 +111,51 @@ std::string signal_text(int sig) {
 // ---------------------------------------------------------------------------------------------------
 // Finding the decks.
 
+std::string ExpectedError::text() const {
+  std::string t = code;
+  if (line > 0) t += " line " + std::to_string(line);
+  if (!file.empty()) t += " in " + file.filename().string();
+  return t;
+}
+
+std::vector<ExpectedError> read_expected_errors(const fs::path& deck, std::vector<std::string>& problems) {
+  std::vector<ExpectedError> out;
+  std::ifstream f(deck, std::ios::binary);
+  std::string line;
+  for (std::size_t no = 1; std::getline(f, line); ++no) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] != '#') break;  // the opening comment block only
+    const std::string_view tag = "# expect:";
+    if (line.compare(0, tag.size(), tag) != 0) continue;
+    std::istringstream in(line.substr(tag.size()));
+    std::vector<std::string> w;
+    for (std::string t; in >> t;) w.push_back(t);
+    ExpectedError e;
+    bool ok = !w.empty() && w[0].size() > 2 && w[0].compare(0, 2, "RX") == 0 &&
+              all_digits(std::string_view(w[0]).substr(2));
+    if (ok) e.code = w[0];
+    for (std::size_t k = 1; ok && k < w.size(); k += 2) {
+      if (k + 1 >= w.size()) {
+        ok = false;
+      } else if (w[k] == "line" && all_digits(w[k + 1])) {
+        e.line = std::stoll(w[k + 1]);
+      } else if (w[k] == "file") {
+        e.file = (deck.parent_path() / w[k + 1]).lexically_normal();
+      } else {
+        ok = false;
+      }
+    }
+    if (!ok) {
+      problems.push_back(deck.string() + ":" + std::to_string(no) +
+                         ": an expectation is \"# expect: RXnnn [line L] [file PATH]\"");
+      continue;
+    }
+    if (e.file.empty()) e.file = deck.lexically_normal();
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
 std::vector<RegressDeck> find_regress_decks(const std::vector<fs::path>& dirs, const fs::path& skip) {
   std::vector<RegressDeck> out;
   std::set<fs::path> seen;  // the same deck reached through overlapping DIRs runs once
@@ -146,9 +195,14 @@ std::vector<RegressDeck> find_regress_decks(const std::vector<fs::path>& dirs, c
       std::vector<std::string> decks;
       for (const auto& n : names)
         if (run_number_of(n) == 0) decks.push_back(n);
+      // Without a NAME_0000.rad: one-file decks, and starter decks that declare their diagnostics.
       if (decks.empty())
-        for (const auto& n : names)
-          if (run_number_of(n) < 0 && is_one_file_deck((folder / n).string())) decks.push_back(n);
+        for (const auto& n : names) {
+          std::vector<std::string> ignored;
+          if (run_number_of(n) < 0 &&
+              (is_one_file_deck((folder / n).string()) || !read_expected_errors(folder / n, ignored).empty()))
+            decks.push_back(n);
+        }
       fs::path rel = folder.lexically_relative(dir);
       if (rel.empty() || rel == ".") rel = dir_name;
       const bool has_reference = fs::is_regular_file(folder / "ref.extract", ec);
@@ -166,9 +220,18 @@ std::vector<RegressDeck> find_regress_decks(const std::vector<fs::path>& dirs, c
           d.label += "/" + deck;
           d.work_subdir /= fs::path(deck).stem();
         }
+        d.expected = read_expected_errors(starter, d.expect_problems);
+        const std::string root = run_output_root(starter.string());
+        d.own_reference = starter.parent_path() / (root + ".ref");
+        d.has_own_reference = fs::is_regular_file(d.own_reference, ec);
+        d.starter_only =
+            !fs::exists(folder / (root + "_0001.rad"), ec) && !is_one_file_deck(starter.string());
         std::vector<std::string> notes;
         if (has_reference) {
-          if (decks.size() == 1)
+          if (d.has_own_reference)
+            notes.push_back("ref.extract not used: the deck has its own " +
+                            d.own_reference.filename().string());
+          else if (decks.size() == 1)
             d.reference = folder / "ref.extract";
           else
             notes.push_back("ref.extract not used: the folder holds " + std::to_string(decks.size()) +
@@ -341,13 +404,138 @@ std::string_view status_name(RegressStatus s) {
     case RegressStatus::Ran: return "ran";
     case RegressStatus::Compared: return "compared";
     case RegressStatus::Deviates: return "deviates";
+    case RegressStatus::Read: return "read";
+    case RegressStatus::Diagnosed: return "diagnosed";
+    case RegressStatus::Unexpected: return "unexpected";
+    case RegressStatus::Updated: return "updated";
   }
   return "?";
 }
 
 bool is_failure(RegressStatus s) {
-  return s != RegressStatus::Ran && s != RegressStatus::Compared;
+  return s == RegressStatus::ReadError || s == RegressStatus::RunError || s == RegressStatus::RefError ||
+         s == RegressStatus::Deviates || s == RegressStatus::Unexpected;
 }
+
+const io::QuantityCheck* worst_check(const RegressResult& r) {
+  const io::QuantityCheck* worst = nullptr;
+  for (const auto& c : r.checks)
+    if (!worst || c.score > worst->score) worst = &c;
+  return worst;
+}
+
+std::size_t failed_checks(const RegressResult& r) {
+  return static_cast<std::size_t>(std::count_if(r.checks.begin(), r.checks.end(),
+                                                [](const io::QuantityCheck& c) { return !c.passed(); }));
+}
+
+namespace {
+
+// A diagnostic the run reported: "PATH:LINE:COL: error: RXnnn: ..." (or PATH:LINE, or a warning).
+struct ReportedError {
+  fs::path file;
+  std::int64_t line = 0;
+  std::string code;
+  bool error = true;  // false: a warning
+  auto operator<=>(const ReportedError&) const = default;
+};
+
+// Each diagnostic once: two checks that find the same fault at the same place are one expectation.
+std::vector<ReportedError> reported_errors(std::string_view output) {
+  std::vector<ReportedError> out;
+  std::size_t pos = 0;
+  while (pos < output.size()) {
+    const std::size_t end = std::min(output.find('\n', pos), output.size());
+    const std::string_view line = output.substr(pos, end - pos);
+    pos = end + 1;
+    std::size_t at = line.find(": error: RX");
+    const bool error = at != std::string_view::npos;
+    if (!error) at = line.find(": warning: RX");
+    if (at == std::string_view::npos) continue;
+    ReportedError e;
+    e.error = error;
+    const std::string_view tail = line.substr(at + (error ? 9 : 11));
+    e.code = std::string(tail.substr(0, std::min(tail.find(':'), tail.size())));
+    std::string_view where = line.substr(0, at);
+    std::vector<std::string_view> numbers;
+    for (int part = 0; part < 2; ++part) {
+      const std::size_t colon = where.rfind(':');
+      if (colon == std::string_view::npos || !all_digits(where.substr(colon + 1))) break;
+      numbers.push_back(where.substr(colon + 1));
+      where = where.substr(0, colon);
+    }
+    if (!numbers.empty()) e.line = std::stoll(std::string(numbers.back()));
+    e.file = fs::path(where).lexically_normal();
+    if (std::find(out.begin(), out.end(), e) == out.end()) out.push_back(std::move(e));
+  }
+  return out;
+}
+
+bool same_file(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec);
+}
+
+// A deck that declares its diagnostics: every one reported (an error or a warning), and no other error.
+void evaluate_expected_refusal(RegressResult& r, const ChildOutcome& child, const RegressRunFiles& files) {
+  const RegressDeck& deck = r.deck;
+  if (!deck.expect_problems.empty()) {
+    r.status = RegressStatus::RefError;
+    r.detail = deck.expect_problems.front();
+    return;
+  }
+  if (child.timed_out || child.signal != 0) {
+    r.status = RegressStatus::Unexpected;
+    r.detail = child.timed_out ? "ran out of time instead of being diagnosed"
+                               : "ended by " + signal_text(child.signal) + " instead of being diagnosed";
+    return;
+  }
+  std::vector<ReportedError> got = reported_errors(files.output);
+  std::vector<std::string> missing;
+  for (const auto& e : deck.expected) {
+    const auto it = std::find_if(got.begin(), got.end(), [&](const ReportedError& g) {
+      return g.code == e.code && (e.line == 0 || g.line == e.line) && same_file(g.file, e.file);
+    });
+    if (it == got.end())
+      missing.push_back(e.text());
+    else
+      got.erase(it);
+  }
+  std::vector<std::string> extra;  // other errors (other warnings are no fault of the deck's expectation)
+  for (const auto& g : got)
+    if (g.error)
+      extra.push_back(g.code + " line " + std::to_string(g.line) + " in " + g.file.filename().string());
+  if (missing.empty() && extra.empty()) {
+    r.status = RegressStatus::Diagnosed;
+    r.detail = std::to_string(deck.expected.size()) + " expected diagnostic(s)" +
+               (child.exit_code != 0 ? ", refused" : ", read");
+    return;
+  }
+  r.status = RegressStatus::Unexpected;
+  const auto join = [](const std::vector<std::string>& v) {
+    std::string t;
+    for (const auto& x : v) t += (t.empty() ? "" : ", ") + x;
+    return t;
+  };
+  if (!missing.empty()) r.detail += (r.detail.empty() ? "" : "; ") + ("missing " + join(missing));
+  if (!extra.empty()) r.detail += (r.detail.empty() ? "" : "; ") + ("not expected " + join(extra));
+}
+
+// Compares a finished run with the deck's own reference.
+void evaluate_own_reference(RegressResult& r, const RegressRunFiles& files) {
+  io::RegressReference ref;
+  std::vector<std::string> errors;
+  if (!io::read_regress_reference(r.deck.own_reference.string(), ref, errors)) {
+    r.status = RegressStatus::RefError;
+    for (const auto& e : errors) r.detail += (r.detail.empty() ? "" : "; ") + e;
+    return;
+  }
+  const std::vector<io::ThGroupData>* th = files.th ? &*files.th : nullptr;
+  r.checks = io::check_reference(ref, *files.summary, th);
+  r.status = failed_checks(r) == 0 ? RegressStatus::Compared : RegressStatus::Deviates;
+}
+
+}  // namespace
 
 std::vector<ListingPoint> listing_points(const std::string& listing_text) {
   // CYCLE TIME TIME-STEP KIND ID ERROR% I-ENERGY K-ENERGY-T K-ENERGY-R EXT-WORK ... (io/engine_listing.cpp)
@@ -388,6 +576,10 @@ RegressResult evaluate_deck(const RegressDeck& deck, const ChildOutcome& child, 
     r.detail = child.start_error;
     return r;
   }
+  if (!deck.expected.empty() || !deck.expect_problems.empty()) {
+    evaluate_expected_refusal(r, child, files);
+    return r;
+  }
   // The detail says what the status and the first error line do not: a time limit, a signal, the message of
   // an error termination, a failure that printed no error line.
   const std::string stage = files.model_written ? "engine" : "starter";
@@ -416,6 +608,11 @@ RegressResult evaluate_deck(const RegressDeck& deck, const ChildOutcome& child, 
     r.status = RegressStatus::ReadError;
     return r;
   }
+  if (deck.starter_only) {
+    r.status = failed ? RegressStatus::ReadError : RegressStatus::Read;
+    if (!failed) r.detail.clear();
+    return r;
+  }
   if (failed || !files.summary || files.summary->status != io::RunStatus::Normal) {
     r.status = RegressStatus::RunError;
     return r;
@@ -429,6 +626,10 @@ RegressResult evaluate_deck(const RegressDeck& deck, const ChildOutcome& child, 
   fig.energy[static_cast<std::size_t>(io::ExtractEnergy::KineticRotational)] = s.energy.kinetic_r;
   fig.energy[static_cast<std::size_t>(io::ExtractEnergy::ExternalWork)] = s.energy.external_work;
   r.radx = fig;
+  if (deck.has_own_reference) {
+    evaluate_own_reference(r, files);
+    return r;
+  }
   if (deck.reference.empty()) {
     r.status = RegressStatus::Ran;
     return r;
@@ -468,22 +669,107 @@ RegressResult run_regress_deck(const RegressDeck& deck, const RegressSettings& s
   fs::remove_all(dir, ec);
   fs::create_directories(dir, ec);
   const std::string deck_path = deck.starter_deck.string();
-  const std::vector<std::string> argv{
+  std::vector<std::string> argv{
       settings.executable.string(),     "run",      deck_path, "--out", dir.string(), "--threads",
       std::to_string(settings.threads), "--no-plot"};
+  if (deck.starter_only) argv.emplace_back("--starter-only");
   const ChildOutcome child =
       run_child(argv, dir / kRunLog, std::chrono::duration<double>(settings.timeout_seconds));
   RegressRunFiles files;
   files.model_written = fs::exists(dir / (starter_output_root(deck_path) + ".hdf"), ec);
-  const fs::path summary = dir / (run_output_root(deck_path) + "_summary.json");
+  const std::string root = run_output_root(deck_path);
+  const fs::path summary = dir / (root + "_summary.json");
   io::RunSummary s;
   if (!fs::exists(summary, ec))
     files.summary_error = "no " + summary.filename().string() + " written";
   else if (io::read_summary_json(summary.string(), s, files.summary_error))
     files.summary = s;
   files.output = read_text(dir / kRunLog);
-  files.listing = listing_points(read_text(dir / (run_output_root(deck_path) + "_0001.out")));
-  return evaluate_deck(deck, child, files, settings.tolerance);
+  files.listing = listing_points(read_text(dir / (root + "_0001.out")));
+  const fs::path th = dir / (root + "_th.h5");
+  if (fs::exists(th, ec)) {
+    std::vector<io::ThGroupData> groups;
+    if (io::read_time_history(th.string(), groups, files.th_error)) files.th = std::move(groups);
+  }
+  RegressResult r = evaluate_deck(deck, child, files, settings.tolerance);
+  if (settings.update) update_reference(r, files);
+  if (!settings.keep && !is_failure(r.status)) fs::remove_all(dir, ec);
+  return r;
+}
+
+void update_reference(RegressResult& r, const RegressRunFiles& files) {
+  const bool finished = r.status == RegressStatus::Ran || r.status == RegressStatus::Compared ||
+                        r.status == RegressStatus::Deviates;
+  if (!finished || !files.summary) return;
+  // An OpenRadioss ref.extract is the reference solver's result, not radx's to rewrite.
+  if (!r.deck.has_own_reference && !r.deck.reference.empty()) return;
+  const fs::path path = r.deck.own_reference;
+  std::string text;
+  if (!r.deck.has_own_reference) {
+    text = io::new_reference_text(r.deck.starter_deck.filename().string(), *files.summary);
+    r.update_report = "  new reference " + path.filename().string() + "\n";
+  } else {
+    io::RegressReference ref;
+    std::vector<std::string> errors;
+    if (!io::read_regress_reference(path.string(), ref, errors)) {
+      r.status = RegressStatus::RefError;
+      r.detail.clear();
+      for (const auto& e : errors) r.detail += (r.detail.empty() ? "" : "; ") + e;
+      return;
+    }
+    const std::vector<io::ThGroupData>* th = files.th ? &*files.th : nullptr;
+    std::vector<double> values;
+    std::vector<std::string> lacking;
+    for (const auto& q : ref.quantities) {
+      std::string why;
+      const auto v = io::run_quantity(q.name, *files.summary, th, why);
+      if (!v) lacking.push_back(q.name + ": " + why);
+      values.push_back(v.value_or(std::numeric_limits<double>::quiet_NaN()));
+      if (!v) continue;
+      const std::string was = q.value ? io::reference_number(*q.value) : std::string("-");
+      const std::string now = io::reference_number(*v);
+      if (was == now) continue;
+      std::string change;
+      if (q.value && *q.value != 0) {
+        char buf[48];
+        std::snprintf(buf, sizeof buf, " (%+.3g %%)", 100 * (*v - *q.value) / std::abs(*q.value));
+        change = buf;
+      }
+      r.update_report += "  " + q.name + ": " + was + " -> " + now + change + "\n";
+    }
+    if (!lacking.empty()) {
+      r.status = RegressStatus::RefError;
+      r.detail = "not updated: the run has no value for ";
+      for (std::size_t k = 0; k < lacking.size(); ++k) r.detail += (k ? "; " : "") + lacking[k];
+      r.update_report.clear();
+      return;
+    }
+    if (r.update_report.empty()) r.update_report = "  " + path.filename().string() + " unchanged\n";
+    text = io::updated_reference_text(ref, values);
+  }
+  // Through a temporary file and a rename: an interrupted update leaves the old reference whole.
+  const fs::path part = path.string() + ".part";
+  {
+    std::ofstream f(part, std::ios::binary | std::ios::trunc);
+    f << text;
+    f.close();
+    std::error_code ec;
+    bool written = static_cast<bool>(f);
+    if (written) {
+      fs::rename(part, path, ec);
+      written = !ec;
+    }
+    if (!written) {
+      fs::remove(part, ec);
+      r.status = RegressStatus::RefError;
+      r.detail = "cannot write " + path.string();
+      r.update_report.clear();
+      return;
+    }
+  }
+  r.status = RegressStatus::Updated;
+  r.detail.clear();
+  r.checks.clear();  // they judged the old values; the report says what changed
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -506,6 +792,33 @@ std::string energy_text(const RegressResult& r, io::ExtractEnergy e) {
   return r.comparison ? percent(r.comparison->energy[static_cast<std::size_t>(e)]) : "-";
 }
 
+std::string number_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// The worst quantity of an own-reference comparison: "energy.internal x1.53 (radx 510, ref 494.9, +3.1 %)".
+std::string worst_text(const RegressResult& r, bool with_values) {
+  const io::QuantityCheck* w = worst_check(r);
+  if (!w) return "";
+  char score[32];
+  if (std::isinf(w->score))
+    std::snprintf(score, sizeof score, "over");
+  else
+    std::snprintf(score, sizeof score, "x%.2f", w->score);
+  std::string t = w->name + " " + score;
+  if (!with_values) return t;
+  if (!w->reference || !w->radx) return t + " (" + w->why + ")";
+  t += " (radx " + number_text(*w->radx) + ", ref " + number_text(*w->reference);
+  if (*w->reference != 0) {
+    char rel[32];
+    std::snprintf(rel, sizeof rel, ", %+.3g %%", 100 * (*w->radx - *w->reference) / std::abs(*w->reference));
+    t += rel;
+  }
+  return t + ", allowed " + number_text(w->allowed) + ")";
+}
+
 }  // namespace
 
 std::string format_regress_line(const RegressResult& r) {
@@ -523,26 +836,80 @@ std::string format_regress_line(const RegressResult& r) {
     std::snprintf(t, sizeof t, "%.5g", r.radx->time);
     s += "  cycles " + std::to_string(r.radx->cycles) + "  time " + t;
   }
+  if (!r.checks.empty()) {
+    const std::size_t failed = failed_checks(r);
+    s += "  worst " + worst_text(r, true);
+    s += failed
+             ? "  " + std::to_string(failed) + " of " + std::to_string(r.checks.size()) + " beyond tolerance"
+             : "  " + std::to_string(r.checks.size()) + " quantities within tolerance";
+  }
   if (r.status == RegressStatus::ReadError || r.status == RegressStatus::RunError ||
       r.status == RegressStatus::RefError) {
     s += "  " + refusal_text(r, kLineRefusalChars, true);
     if (!r.refusal.message.empty() && !r.detail.empty()) s += " (" + r.detail + ")";
   }
+  if (r.status == RegressStatus::Diagnosed || r.status == RegressStatus::Unexpected) s += "  " + r.detail;
   if (!r.deck.note.empty()) s += "  [" + r.deck.note + "]";
   s += "  (" + seconds_text(r.seconds) + ")";
+  // Every quantity beyond its tolerance, and what --update changed, on the lines below.
+  for (const auto& c : r.checks)
+    if (!c.passed()) {
+      RegressResult one;
+      one.checks = {c};
+      s += "\n      " + worst_text(one, true);
+    }
+  if (!r.update_report.empty()) {
+    s += "\n" + r.update_report;
+    while (!s.empty() && s.back() == '\n') s.pop_back();
+  }
   return s;
 }
 
+namespace {
+
+// Counts of a batch for the totals line and the JSON summary.
+struct RegressTotals {
+  std::map<RegressStatus, std::size_t> count;
+  std::size_t found = 0, must_fail = 0, read = 0, ran = 0, with_reference = 0, compared = 0;
+};
+
+RegressTotals regress_totals(const std::vector<RegressResult>& results) {
+  RegressTotals t;
+  t.found = results.size();
+  for (const auto& r : results) {
+    ++t.count[r.status];
+    if (!r.deck.expected.empty()) {
+      ++t.must_fail;
+      continue;
+    }
+    if (r.status != RegressStatus::ReadError) ++t.read;
+    if (r.radx) ++t.ran;
+    if (!r.deck.reference.empty() || r.deck.has_own_reference) ++t.with_reference;
+    if (r.status == RegressStatus::Compared) ++t.compared;
+  }
+  return t;
+}
+
+}  // namespace
+
 void write_regress_table(std::ostream& os, const std::vector<RegressResult>& results, double tolerance) {
-  const std::vector<std::string> titles{"deck",     "status",    "cycles radx/ref", "IE dev %",
-                                        "KE dev %", "KER dev %", "EXT dev %",       "first refusal"};
+  const std::vector<std::string> titles{
+      "deck",     "status",    "cycles radx/ref", "IE dev %",
+      "KE dev %", "KER dev %", "EXT dev %",       "worst quantity, or first refusal"};
   std::vector<std::vector<std::string>> rows;
   for (const auto& r : results) {
     std::vector<std::string> row{r.deck.label, std::string(status_name(r.status)), cycles_text(r)};
     for (const auto e : io::kExtractEnergies) row.push_back(energy_text(r, e));
     const bool refused = r.status == RegressStatus::ReadError || r.status == RegressStatus::RunError ||
                          r.status == RegressStatus::RefError;
-    row.push_back(refused ? refusal_text(r, kTableRefusalChars, false) : "");
+    if (refused)
+      row.push_back(refusal_text(r, kTableRefusalChars, false));
+    else if (!r.checks.empty())
+      row.push_back(worst_text(r, false));
+    else if (r.status == RegressStatus::Unexpected)
+      row.push_back(shorten(r.detail, kTableRefusalChars));
+    else
+      row.push_back("");
     rows.push_back(std::move(row));
   }
   std::vector<std::size_t> width(titles.size());
@@ -567,25 +934,25 @@ void write_regress_table(std::ostream& os, const std::vector<RegressResult>& res
   os << std::string(std::min<std::size_t>(total, 160), '-') << '\n';
   for (const auto& row : rows) put_row(row);
 
-  std::map<RegressStatus, std::size_t> count;
-  std::size_t with_reference = 0;
   std::map<std::string, std::size_t> groups;
-  for (const auto& r : results) {
-    ++count[r.status];
-    if (!r.deck.reference.empty()) ++with_reference;
-    if (!r.refusal.message.empty() &&
+  for (const auto& r : results)
+    if (!r.refusal.message.empty() && r.deck.expected.empty() &&
         (r.status == RegressStatus::ReadError || r.status == RegressStatus::RunError))
       ++groups[std::string(status_name(r.status)) + "  " + refusal_group(r.refusal.message)];
-  }
-  const std::size_t read = results.size() - count[RegressStatus::ReadError];
-  const std::size_t ran = read - count[RegressStatus::RunError];
-  os << "\ndecks found " << results.size() << ", read " << read << ", ran " << ran << ", compared within "
-     << tolerance_text(tolerance) << " % " << count[RegressStatus::Compared] << " of " << with_reference
-     << " with a ref.extract\n"
-     << "  read-error " << count[RegressStatus::ReadError] << ", run-error " << count[RegressStatus::RunError]
-     << ", ref-error " << count[RegressStatus::RefError] << ", ran (no reference) "
-     << count[RegressStatus::Ran] << ", compared " << count[RegressStatus::Compared] << ", deviates "
-     << count[RegressStatus::Deviates] << '\n';
+  RegressTotals t = regress_totals(results);
+  os << "\ndecks found " << t.found << ", read " << t.read << ", ran " << t.ran << ", compared " << t.compared
+     << " of " << t.with_reference << " with a reference (NAME.ref; ref.extract within "
+     << tolerance_text(tolerance) << " %)";
+  if (t.must_fail)
+    os << ", diagnosed as expected " << t.count[RegressStatus::Diagnosed] << " of " << t.must_fail;
+  os << "\n";
+  os << "  read-error " << t.count[RegressStatus::ReadError] << ", run-error "
+     << t.count[RegressStatus::RunError] << ", ref-error " << t.count[RegressStatus::RefError]
+     << ", deviates " << t.count[RegressStatus::Deviates] << ", unexpected "
+     << t.count[RegressStatus::Unexpected] << "; ran (no reference) " << t.count[RegressStatus::Ran]
+     << ", compared " << t.count[RegressStatus::Compared] << ", read (starter only) "
+     << t.count[RegressStatus::Read] << ", diagnosed " << t.count[RegressStatus::Diagnosed] << ", updated "
+     << t.count[RegressStatus::Updated] << '\n';
   if (!groups.empty()) {
     std::vector<std::pair<std::string, std::size_t>> sorted(groups.begin(), groups.end());
     std::stable_sort(sorted.begin(), sorted.end(),
@@ -603,29 +970,25 @@ std::string regress_summary_json(const std::vector<RegressResult>& results, cons
                                  bool work_dir_kept) {
   using io::json_number;
   using io::json_string;
-  std::map<RegressStatus, std::size_t> count;
-  std::size_t with_reference = 0;
-  for (const auto& r : results) {
-    ++count[r.status];
-    if (!r.deck.reference.empty()) ++with_reference;
-  }
-  const std::size_t read = results.size() - count[RegressStatus::ReadError];
+  RegressTotals t = regress_totals(results);
   std::string j = "{\n";
   j += "  \"tolerance_percent\": " + json_number(100 * settings.tolerance) + ",\n";
   j += "  \"timeout_seconds\": " + json_number(settings.timeout_seconds) + ",\n";
   j += "  \"threads\": " + std::to_string(settings.threads) + ",\n";
   j += "  \"work_dir\": " + json_string(settings.work_dir.string()) + ",\n";
   j += "  \"work_dir_kept\": " + std::string(work_dir_kept ? "true" : "false") + ",\n";
-  j += "  \"totals\": {\"found\": " + std::to_string(results.size()) + ", \"read\": " + std::to_string(read) +
-       ", \"ran\": " + std::to_string(read - count[RegressStatus::RunError]) +
-       ", \"with_reference\": " + std::to_string(with_reference) +
-       ", \"compared\": " + std::to_string(count[RegressStatus::Compared]);
+  j += "  \"totals\": {\"found\": " + std::to_string(t.found) + ", \"read\": " + std::to_string(t.read) +
+       ", \"ran\": " + std::to_string(t.ran) + ", \"with_reference\": " + std::to_string(t.with_reference) +
+       ", \"compared\": " + std::to_string(t.compared) +
+       ", \"with_expected_diagnostics\": " + std::to_string(t.must_fail);
   for (const auto s : {RegressStatus::ReadError, RegressStatus::RunError, RegressStatus::RefError,
-                       RegressStatus::Ran, RegressStatus::Deviates}) {
+                       RegressStatus::Ran, RegressStatus::Deviates, RegressStatus::Read,
+                       RegressStatus::Diagnosed, RegressStatus::Unexpected, RegressStatus::Updated}) {
     std::string key(status_name(s));
     std::replace(key.begin(), key.end(), '-', '_');
     if (s == RegressStatus::Ran) key = "ran_without_reference";
-    j += ", \"" + key + "\": " + std::to_string(count[s]);
+    if (s == RegressStatus::Read) key = "read_starter_only";
+    j += ", \"" + key + "\": " + std::to_string(t.count[s]);
   }
   j += "},\n  \"decks\": [";
   for (std::size_t k = 0; k < results.size(); ++k) {
@@ -676,10 +1039,87 @@ std::string regress_summary_json(const std::vector<RegressResult>& results, cons
     } else {
       j += ", \"cycle_ratio\": null, \"deviation_percent\": null";
     }
-    j += "}";
+    j += ",\n     \"own_reference\": " +
+         (r.deck.has_own_reference ? json_string(r.deck.own_reference.string()) : std::string("null"));
+    j += ", \"checks\": [";
+    for (std::size_t c = 0; c < r.checks.size(); ++c) {
+      const auto& q = r.checks[c];
+      const auto opt = [](const std::optional<double>& v) {
+        return v ? json_number(*v) : std::string("null");
+      };
+      j += (c ? ", " : "") + std::string("{\"quantity\": ") + json_string(q.name) +
+           ", \"radx\": " + opt(q.radx) + ", \"ref\": " + opt(q.reference) +
+           ", \"allowed\": " + json_number(q.allowed) + ", \"score\": " + json_number(q.score) +
+           ", \"passed\": " + (q.passed() ? "true" : "false") + "}";
+    }
+    j += "]}";
   }
   j += results.empty() ? "]\n}\n" : "\n  ]\n}\n";
   return j;
+}
+
+namespace {
+
+std::string xml_escape(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default:
+        // XML 1.0 has no other control characters than tab, line feed and carriage return.
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r')
+          out += ' ';
+        else
+          out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string regress_junit_xml(const std::vector<RegressResult>& results, double total_seconds) {
+  std::size_t failures = 0, errors = 0;
+  for (const auto& r : results) {
+    if (r.status == RegressStatus::Deviates || r.status == RegressStatus::Unexpected) ++failures;
+    if (r.status == RegressStatus::ReadError || r.status == RegressStatus::RunError ||
+        r.status == RegressStatus::RefError)
+      ++errors;
+  }
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.3f", total_seconds);
+  std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  const std::string counts = " tests=\"" + std::to_string(results.size()) + "\" failures=\"" +
+                             std::to_string(failures) + "\" errors=\"" + std::to_string(errors) +
+                             "\" skipped=\"0\" time=\"" + seconds + "\"";
+  x += "<testsuites name=\"radx regress\"" + counts + ">\n";
+  x += "  <testsuite name=\"radx regress\"" + counts + ">\n";
+  for (const auto& r : results) {
+    std::snprintf(seconds, sizeof seconds, "%.3f", r.seconds);
+    x += "    <testcase classname=\"radx.regress\" name=\"" + xml_escape(r.deck.label) + "\" time=\"" +
+         seconds + "\">\n";
+    const std::string line = format_regress_line(r);
+    const std::string first_line = line.substr(0, line.find('\n'));
+    if (is_failure(r.status)) {
+      const bool failure = r.status == RegressStatus::Deviates || r.status == RegressStatus::Unexpected;
+      const std::string tag = failure ? "failure" : "error";
+      x += "      <" + tag + " type=\"" + std::string(status_name(r.status)) + "\" message=\"" +
+           xml_escape(shorten(first_line, 300)) + "\">" + xml_escape(line) + "</" + tag + ">\n";
+    }
+    x += "      <system-out>" + xml_escape(line) + "</system-out>\n";
+    x += "    </testcase>\n";
+  }
+  x += "  </testsuite>\n</testsuites>\n";
+  return x;
+}
+
+bool label_matches(const std::string& label, const std::string& pattern) {
+  if (pattern.find_first_of("*?[") == std::string::npos) return label.find(pattern) != std::string::npos;
+  return fnmatch(pattern.c_str(), label.c_str(), 0) == 0;
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -703,13 +1143,15 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
                     std::ostream& err) {
   RegressSettings settings;
   settings.executable = executable;
+  settings.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<fs::path> dirs;
-  std::string work, summary_file;
-  bool keep = false;
+  std::vector<std::string> filters;
+  std::string work, summary_file, junit_file;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    const bool takes_value =
-        a == "--tol" || a == "--work" || a == "--timeout" || a == "--threads" || a == "--summary";
+    const bool takes_value = a == "--tol" || a == "--work" || a == "--timeout" || a == "--threads" ||
+                             a == "--summary" || a == "--junit" || a == "--filter" || a == "-j" ||
+                             a == "--jobs";
     if (takes_value && i + 1 >= args.size()) {
       err << "radx regress: " << a << " needs a value\n";
       return kExitUsage;
@@ -727,18 +1169,24 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
         return kExitUsage;
       }
       settings.timeout_seconds = v;
-    } else if (a == "--threads") {
+    } else if (a == "--threads" || a == "-j" || a == "--jobs") {
       if (!positive_number(args[++i], v) || v != std::floor(v) || v > 1024) {
-        err << "radx regress: --threads needs a positive integer\n";
+        err << "radx regress: " << a << " needs a positive integer\n";
         return kExitUsage;
       }
-      settings.threads = static_cast<int>(v);
+      (a == "--threads" ? settings.threads : settings.jobs) = static_cast<int>(v);
     } else if (a == "--work") {
       work = args[++i];
     } else if (a == "--summary") {
       summary_file = args[++i];
+    } else if (a == "--junit") {
+      junit_file = args[++i];
+    } else if (a == "--filter") {
+      filters.push_back(args[++i]);
     } else if (a == "--keep") {
-      keep = true;
+      settings.keep = true;
+    } else if (a == "--update") {
+      settings.update = true;
     } else if (!a.empty() && a[0] == '-') {
       err << "radx regress: unknown option " << a << '\n';
       return kExitUsage;
@@ -746,11 +1194,15 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
       dirs.emplace_back(a);
     }
   }
-  if (dirs.empty()) {
-    err << "radx regress: give one or more folders to search for decks (radx regress DIR...)\n";
-    return kExitUsage;
-  }
   std::error_code ec;
+  if (dirs.empty()) {
+    if (!fs::is_directory("decks", ec)) {
+      err << "radx regress: give one or more folders to search for decks (radx regress DIR...); without one, "
+             "radx regress runs ./decks, and there is no decks folder here\n";
+      return kExitUsage;
+    }
+    dirs.emplace_back("decks");
+  }
   for (const auto& d : dirs)
     if (!fs::is_directory(d, ec)) {
       err << "radx regress: " << d.string() << ": no such folder\n";
@@ -759,7 +1211,8 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
 
   // The work folder: ours when we create it or it carries our marker; anything else that is not empty is
   // refused, since each deck's folder in it is cleared before its run.
-  if (work.empty()) {
+  bool work_given = !work.empty();
+  if (!work_given) {
     std::string tmpl = (fs::temp_directory_path(ec) / "radx-regress-XXXXXX").string();
     if (!mkdtemp(tmpl.data())) {
       err << "radx regress: cannot create a work folder " << tmpl << ": " << std::strerror(errno) << '\n';
@@ -775,7 +1228,7 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
           << ": exists and is not a radx regress work folder; give a new or empty folder\n";
       return kExitUsage;
     }
-    keep = true;  // a folder the user named is theirs to remove
+    settings.keep = true;  // a folder the user named is theirs to remove
   }
   fs::create_directories(settings.work_dir, ec);
   std::ofstream(settings.work_dir / kWorkMarker) << "radx regress work folder: deck folders in it are "
@@ -785,42 +1238,85 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
     return kExitInputError;
   }
 
-  const std::vector<RegressDeck> decks = find_regress_decks(dirs, settings.work_dir);
+  std::vector<RegressDeck> decks = find_regress_decks(dirs, settings.work_dir);
+  if (!filters.empty())
+    std::erase_if(decks, [&](const RegressDeck& d) {
+      return std::none_of(filters.begin(), filters.end(),
+                          [&](const std::string& p) { return label_matches(d.label, p); });
+    });
   if (decks.empty()) {
-    err << "radx regress: no deck (NAME_0000.rad or a one-file deck) under the folders given\n";
-    if (!keep) fs::remove_all(settings.work_dir, ec);
+    err << "radx regress: no deck (NAME_0000.rad, a one-file deck, or a deck with # expect: lines) under the "
+           "folders given"
+        << (filters.empty() ? "" : " that matches --filter") << '\n';
+    if (!work_given) fs::remove_all(settings.work_dir, ec);
     return kExitInputError;
   }
-  out << "radx regress: " << decks.size() << " deck(s), time limit " << settings.timeout_seconds
-      << " s each, " << settings.threads << " thread(s), tolerance " << tolerance_text(settings.tolerance)
-      << " %, work folder " << settings.work_dir.string() << "\n\n";
-  std::vector<RegressResult> results;
+  settings.jobs = std::min<int>(settings.jobs, static_cast<int>(decks.size()));
+  out << "radx regress: " << decks.size() << " deck(s), " << settings.jobs << " at a time, "
+      << settings.threads << " engine thread(s) each, time limit " << settings.timeout_seconds
+      << " s each, ref.extract tolerance " << tolerance_text(settings.tolerance) << " %, work folder "
+      << settings.work_dir.string() << (settings.update ? ", updating references" : "") << "\n\n";
+
+  // Decks run `jobs` at a time, each in its own child process; a line is printed as each finishes, in the
+  // order they finish, and the table after lists them in deck order whatever the order of finishing.
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<RegressResult> results(decks.size());
+  std::atomic<std::size_t> next{0};
+  std::size_t finished = 0;
+  std::mutex print;
   const int digits = static_cast<int>(std::to_string(decks.size()).size());
-  for (std::size_t k = 0; k < decks.size(); ++k) {
-    results.push_back(run_regress_deck(decks[k], settings));
-    char counter[48];
-    std::snprintf(counter, sizeof counter, "[%*zu/%zu] ", digits, k + 1, decks.size());
-    out << counter << format_regress_line(results.back()) << std::endl;
-  }
+  const auto worker = [&] {
+    for (std::size_t k = next++; k < decks.size(); k = next++) {
+      RegressResult r = run_regress_deck(decks[k], settings);
+      const std::string line = format_regress_line(r);
+      std::lock_guard<std::mutex> lock(print);
+      char counter[48];
+      std::snprintf(counter, sizeof counter, "[%*zu/%zu] ", digits, ++finished, decks.size());
+      out << counter << line << std::endl;
+      results[k] = std::move(r);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < settings.jobs; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  const double total_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out << '\n';
   write_regress_table(out, results, settings.tolerance);
 
   int code = kExitOk;
+  std::size_t failing = 0;
   for (const auto& r : results)
-    if (is_failure(r.status)) code = kExitInputError;
-  if (!keep) fs::remove_all(settings.work_dir, ec);
-  out << "\nwork folder " << settings.work_dir.string()
-      << (keep ? " (outputs and each deck's run.log)" : " removed (--keep keeps it)") << '\n';
-  if (!summary_file.empty()) {
-    std::ofstream f(summary_file, std::ios::trunc);
-    f << regress_summary_json(results, settings, keep);
+    if (is_failure(r.status)) {
+      code = kExitInputError;
+      ++failing;
+    }
+  // The run folders of passing decks are already gone (unless kept): what is left is the failures'.
+  if (!settings.keep && failing == 0) fs::remove_all(settings.work_dir, ec);
+  out << "\nwall time " << seconds_text(total_seconds) << "; work folder " << settings.work_dir.string();
+  if (settings.keep)
+    out << " (outputs and each deck's run.log)\n";
+  else if (failing == 0)
+    out << " removed (--keep keeps it)\n";
+  else
+    out << " keeps the " << failing << " failing deck(s)' outputs and run.log\n";
+  const auto write_file = [&](const std::string& path, const std::string& text, const char* what) {
+    if (const fs::path parent = fs::path(path).parent_path(); !parent.empty())
+      fs::create_directories(parent, ec);
+    std::ofstream f(path, std::ios::trunc);
+    f << text;
     f.close();
     if (!f) {
-      err << "radx regress: cannot write " << summary_file << '\n';
-      return kExitInputError;
+      err << "radx regress: cannot write " << path << '\n';
+      code = kExitInputError;
+      return;
     }
-    out << "summary " << summary_file << '\n';
-  }
+    out << what << ' ' << path << '\n';
+  };
+  if (!summary_file.empty())
+    write_file(summary_file, regress_summary_json(results, settings, settings.keep), "summary");
+  if (!junit_file.empty()) write_file(junit_file, regress_junit_xml(results, total_seconds), "JUnit report");
   return code;
 }
 

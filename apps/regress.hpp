@@ -18,16 +18,40 @@
 #include <vector>
 
 #include "io/engine_listing.hpp"
+#include "io/regress_reference.hpp"
 #include "io/regression_extract.hpp"
+#include "io/time_history.hpp"
 
 namespace radx::app {
+
+// A diagnostic a deck must get (an error it must be refused with, or a warning): a
+// "# expect: RXnnn line L [file F]" line at the top of its starter deck (decks/invalid/README.md).
+struct ExpectedError {
+  std::string code;                        // "RX402"
+  std::int64_t line = 0;                   // 0: any line
+  std::filesystem::path file;              // absolute; the deck itself when the line names no file
+  [[nodiscard]] std::string text() const;  // "RX402 line 97 [in inc/x.rad]"
+};
+
+// The "# expect:" lines of the comment block that opens `deck` (paths relative to its folder). Lines that
+// do not parse are returned in `problems` ("FILE:LINE: ...").
+std::vector<ExpectedError> read_expected_errors(const std::filesystem::path& deck,
+                                                std::vector<std::string>& problems);
 
 // One deck found under a DIR.
 struct RegressDeck {
   std::string label;                   // the folder relative to DIR (see find_regress_decks)
   std::filesystem::path starter_deck;  // NAME_0000.rad, or a one-file deck
   std::filesystem::path reference;     // ref.extract beside it; empty when none (or not this deck's)
-  std::filesystem::path work_subdir;   // where its outputs go, relative to the work folder
+  // NAME.ref beside the starter deck (io/regress_reference.hpp): where the deck's own reference is, or
+  // where --update writes it. It takes precedence over ref.extract when it exists.
+  std::filesystem::path own_reference;
+  bool has_own_reference = false;
+  bool starter_only = false;  // no engine deck beside it (NAME_0001.rad) and not a one-file deck: only the
+                              // starter runs
+  std::vector<ExpectedError> expected;  // not empty: the deck must get these diagnostics and no other error
+  std::vector<std::string> expect_problems;  // "# expect:" lines that do not parse
+  std::filesystem::path work_subdir;         // where its outputs go, relative to the work folder
   std::string note;  // what the run leaves out (a restart deck), or why ref.extract is not used
 };
 
@@ -73,15 +97,22 @@ std::string refusal_group(std::string_view message);
 std::string shorten(std::string_view text, std::size_t max_chars);
 
 enum class RegressStatus : std::uint8_t {
-  ReadError,  // the starter refused the deck (or failed)
-  RunError,   // the engine refused, stopped on an error, crashed or ran out of time
-  RefError,   // the engine ran, but ref.extract cannot be read
-  Ran,        // the engine ran; no reference
-  Compared,   // within the tolerance on every energy
-  Deviates,   // an energy beyond the tolerance
+  ReadError,   // the starter refused the deck (or failed)
+  RunError,    // the engine refused, stopped on an error, crashed or ran out of time
+  RefError,    // the engine ran, but its reference (NAME.ref or ref.extract) cannot be read or used
+  Ran,         // the engine ran; no reference
+  Compared,    // within the tolerance on every quantity of its reference
+  Deviates,    // a quantity beyond its tolerance
+  Read,        // a starter deck with no engine deck: the starter read it
+  Diagnosed,   // a deck that declares its diagnostics ("# expect:") got exactly those: every one of them
+               // (an error or a warning), and no other error
+  Unexpected,  // such a deck lacked one of them, or got another error
+  Updated,     // --update: the engine ran and its reference was written
 };
-std::string_view status_name(RegressStatus s);  // "read-error", "run-error", "ref-error", "ran", ...
-bool is_failure(RegressStatus s);               // read-error, run-error, ref-error, deviates
+// "read-error", "run-error", "ref-error", "ran", "compared", "deviates", "read", "diagnosed", "unexpected",
+// "updated".
+std::string_view status_name(RegressStatus s);
+bool is_failure(RegressStatus s);  // read-error, run-error, ref-error, deviates, unexpected
 
 struct RegressResult {
   RegressDeck deck;
@@ -95,7 +126,14 @@ struct RegressResult {
   // The reference stops before the run's end: radx was compared at the reference time, interpolated
   // between its listing lines (radx holds those figures then, not the run's end).
   bool at_reference_time = false;
+  std::vector<io::QuantityCheck> checks;  // against the deck's own reference (NAME.ref)
+  std::string update_report;              // --update: what changed, one line each
 };
+
+// The check with the largest score (the worst deviation), or null when there is none.
+const io::QuantityCheck* worst_check(const RegressResult& r);
+// How many checks fail.
+std::size_t failed_checks(const RegressResult& r);
 
 // One cycle line of the engine listing NAME_0001.out: what a Radioss ref.extract records.
 struct ListingPoint {
@@ -108,11 +146,13 @@ std::vector<ListingPoint> listing_points(const std::string& listing_text);
 
 // What the child run left behind, as evaluate_deck needs it.
 struct RegressRunFiles {
-  bool model_written = false;             // the starter's NAME_0000.hdf exists: the starter passed
-  std::optional<io::RunSummary> summary;  // NAME_summary.json, when it could be read
-  std::string summary_error;              // why it could not
-  std::string output;                     // the child's standard output and error
-  std::vector<ListingPoint> listing;      // the engine listing's cycle lines
+  bool model_written = false;                      // the starter's NAME_0000.hdf exists: the starter passed
+  std::optional<io::RunSummary> summary;           // NAME_summary.json, when it could be read
+  std::string summary_error;                       // why it could not
+  std::string output;                              // the child's standard output and error
+  std::vector<ListingPoint> listing;               // the engine listing's cycle lines
+  std::optional<std::vector<io::ThGroupData>> th;  // NAME_th.h5, when it could be read
+  std::string th_error;                            // why it could not (or "" when there is none)
 };
 
 // The status of a deck from its child run, the files it left and its reference (read here from
@@ -123,14 +163,33 @@ RegressResult evaluate_deck(const RegressDeck& deck, const ChildOutcome& child, 
 struct RegressSettings {
   std::filesystem::path executable;  // the radx driver the decks run with (`radx run`)
   std::filesystem::path work_dir;
-  double tolerance = 0.05;  // fraction
+  double tolerance = 0.05;  // fraction, for ref.extract energies
   double timeout_seconds = 600;
-  int threads = 1;
+  int threads = 1;      // engine threads of each deck
+  int jobs = 1;         // decks run at the same time
+  bool update = false;  // rewrite (or write) each deck's NAME.ref from its run
+  bool keep = false;    // keep the run folders of the decks that pass too
 };
 
 // Runs one deck: clears and fills settings.work_dir / deck.work_subdir (run.log holds the child's output)
-// and evaluates it.
+// and evaluates it; with settings.update, writes its reference (see update_reference). The run folder is
+// removed when the deck passes, unless settings.keep.
 RegressResult run_regress_deck(const RegressDeck& deck, const RegressSettings& settings);
+
+// --update for a deck whose run `r` finished (status ran, compared, deviates): rewrites NAME.ref with the
+// run's values (tolerances, comments and order kept), or writes a new one when the deck has neither NAME.ref
+// nor ref.extract (an OpenRadioss ref.extract is never rewritten). Says what changed in r.update_report
+// and sets r.status to Updated; a reference that cannot be read or a quantity the run lacks leaves the
+// file as it is and sets RefError.
+void update_reference(RegressResult& r, const RegressRunFiles& files);
+
+// The JUnit XML report: one testsuite, one testcase per deck (a failure for deviates and unexpected, an
+// error for read-error, run-error and ref-error).
+std::string regress_junit_xml(const std::vector<RegressResult>& results, double total_seconds);
+
+// Whether a deck's label matches a --filter pattern: a glob ('*', '?', '[...]') against the whole label, or
+// a substring when the pattern has no wildcard.
+bool label_matches(const std::string& label, const std::string& pattern);
 
 // The line printed when a deck finishes (no line end): status, first refusal or deviations, seconds.
 std::string format_regress_line(const RegressResult& r);

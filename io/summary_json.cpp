@@ -540,6 +540,21 @@ bool read_summary_json(const std::string& path, RunSummary& s, std::string& erro
     r.energy.contact_friction = number_member(e, "contact_friction");
     r.energy.contact_lagrange = number_member(e, "contact_lagrange");
     r.energy.initial_total = number_member(e, "initial_total");
+    if (const JsonValue* list = member(d, "interfaces"); list && list->kind == JsonValue::Kind::Array) {
+      for (const JsonValue& i : list->array) {
+        if (i.kind != JsonValue::Kind::Object)
+          throw std::runtime_error("an \"interfaces\" entry is not an object");
+        InterfaceSummary is;
+        is.id = static_cast<std::int64_t>(number_member(i, "id"));
+        is.active_pairs = static_cast<std::int64_t>(number_member(i, "active_pairs"));
+        is.max_penetration = number_member(i, "max_penetration");
+        is.switched_pairs_max = static_cast<std::int64_t>(number_member(i, "switched_pairs_max"));
+        is.switched_pairs_total = static_cast<std::int64_t>(number_member(i, "switched_pairs_total"));
+        is.added_mass = number_member(i, "added_mass");
+        is.removed_nodes = static_cast<std::int64_t>(number_member(i, "removed_nodes"));
+        r.interfaces.push_back(is);
+      }
+    }
     s = std::move(r);
     return true;
   } catch (const std::exception& ex) {

@@ -43,10 +43,10 @@ std::string summary_json_path(const std::string& dir, const std::string& output_
 bool write_summary_json(const std::string& path, const RunSummary& s, std::string& error);
 
 // Reads `path` into `s`: status, message, run_name, run_number, cycles, time, dt, nodes, elements, threads,
-// wall_seconds, initial_mass, mass, added_mass, momentum and the energies by kind (the derived kinetic, total
-// and error_percent are not stored; interfaces and lagrange_solver are not read). A null number reads as NaN.
-// False with `error` set ("PATH: what is wrong") when the file cannot be read, is not JSON, or lacks status,
-// cycles, time or energy.
+// wall_seconds, initial_mass, mass, added_mass, momentum, the energies by kind (the derived kinetic, total
+// and error_percent are not stored) and the interfaces (lagrange_solver is not read). A null number reads as
+// NaN. False with `error` set ("PATH: what is wrong") when the file cannot be read, is not JSON, or lacks
+// status, cycles, time or energy.
 bool read_summary_json(const std::string& path, RunSummary& s, std::string& error);
 
 }  // namespace radx::io

@@ -400,12 +400,10 @@ TEST_CASE("radx regress end to end: statuses, table, exit code and JSON summary"
   CHECK(out.find("noref  ran  cycles") != std::string::npos);
   CHECK(out.find("ok  compared  cycles") != std::string::npos);
   CHECK(out.find("off  deviates  cycles") != std::string::npos);
-  CHECK(
-      out.find(
-          "deck     status      cycles radx/ref  IE dev %  KE dev %  KER dev %  EXT dev %  first refusal") !=
-      std::string::npos);
-  CHECK(out.find("decks found 5, read 4, ran 3, compared within 5 % 1 of 3 with a ref.extract") !=
-        std::string::npos);
+  CHECK(out.find("deck     status      cycles radx/ref  IE dev %  KE dev %  KER dev %  EXT dev %  worst "
+                 "quantity, or first refusal") != std::string::npos);
+  CHECK(out.find("decks found 5, read 4, ran 3, compared 1 of 3 with a reference (NAME.ref; ref.extract "
+                 "within 5 %)") != std::string::npos);
   CHECK(fs::exists(work / "ok" / "run.log"));  // --work is kept
   CHECK(fs::exists(work / "ok" / "FREE_FALL_summary.json"));
 
@@ -447,7 +445,8 @@ need("ran out of time" in decks["endless"]["detail"] and 3.5 < decks["endless"][
   // Only passing decks: exit code 0 (two DIRs; the same --work again, which carries the marker).
   CHECK(exit_code(exe + " regress " + (decks / "ok").string() + " " + (decks / "noref").string() +
                   " --work " + work.string() + " > " + log.string() + " 2>&1") == 0);
-  CHECK(slurp(log).find("decks found 2, read 2, ran 2, compared within 5 % 1 of 1") != std::string::npos);
+  CHECK(slurp(log).find("decks found 2, read 2, ran 2, compared 1 of 1 with a reference") !=
+        std::string::npos);
   // --tol widens the tolerance: the 30.6 % deck compares at 31 %.
   CHECK(exit_code(exe + " regress " + (decks / "off").string() + " --tol 31 > /dev/null 2>&1") == 0);
   CHECK(exit_code(exe + " regress " + (decks / "off").string() + " --tol 30 > /dev/null 2>&1") == 1);
