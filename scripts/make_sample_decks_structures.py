@@ -453,6 +453,9 @@ def mixed_idel():
     mat_jc(d, 1, "Mild steel with failure", p["RHO"], p["E"], p["NU"], p["A"], p["B"], p["N"], eps_max=p["EPS_MAX"])
     d.card("/MAT/LAW1", 2, "Hardened steel projectile (elastic)", RHO_I=p["RHO"], RHO_ref=0.0, E=p["E"], nu=p["NU"])
     d.ruler()
+    d.comment("/RANDOM moves every node by up to 1e-6 mm: it breaks the exact symmetry of the meshes, so that the",
+              "failure does not depend on round-off ties between symmetric shells")
+    d.card("/RANDOM", XALEA=1e-6, SEED=1.0)
     d.card("/GRNOD/NODE", 1, "Plate edge nodes (clamped)", ids=edge)
     d.card("/GRNOD/PART", 2, "Projectile nodes", ids=[2])
     d.card("/GRNOD/PART", 3, "Plate nodes", ids=[1])
@@ -475,12 +478,257 @@ def mixed_idel():
     d.ruler()
     d.raw("/END")
     e = engine(run, p["T_STOP"], 1e-6, 1e-5, ["EPSP", "VONM"], ["VEL", "CONT"],
-               ["Run to %g s: the projectile is through the plate after about 4e-5 s." % p["T_STOP"]],
-               print_every=-200)
+               ["Run to %g s: the projectile is through the plate after about 4e-5 s." % p["T_STOP"],
+                "/DT/INTER/DEL: a secondary node whose contact step falls below 1e-9 s would leave its interface",
+                "(a guard against a node trapped in a torn petal; it does not act in this run)."],
+               print_every=-200,
+               extra=("/DT/INTER/DEL", "#             Tscale                Tmin",
+                      "                 0.9               1e-09"))
     return run, d, e, dict(mp=mp, ke0=0.5 * mp * p["V0"] ** 2, shell_mass=p["RHO"] * h * h * p["T"],
                            proj_top=proj_top, plate_centre=plate_centre)
 
 
+
+
+# ---------------------------------------------------------------------------------------------------
+# 5. A deck in the 2019 layout with the keywords the other samples do not use
+
+OLD = dict(VERSION=2019, V0=5000.0, G=9810.0, PRESS=0.05, GAP_Z=2.0, ADMAS1=5e-6, ADMAS0=1e-7, T_STOP=2e-3,
+           MARKER_DZ=-5.0, T_MARKER=1e-3)
+
+
+def old_layout_2019():
+    p = OLD
+    v = p["VERSION"]
+    run = "OLD_LAYOUT_2019"
+    plate = grid_nodes(1, (-30.0, -30.0, 0.0), (10.0, 0, 0), (0, 10.0, 0), 6, 6)
+    plate_shells = grid_shells(1, 1, 6, 6)
+    # the block, in the submodel's SI units (m): local node 1 + i + 3 j + 9 k, x, y in {-0.01, 0, 0.01},
+    # z in {0, 0.005, 0.01}; bricks 1..8; the lid's triangles 11..18 on the top face
+    blk_nodes, blk_bricks, lid = box_mesh(1, 1, (-0.01, -0.01, 0.0), (0.02, 0.02, 0.01), (2, 2, 2))
+    tri = []
+    for j in range(2):
+        for i in range(2):
+            a, b, c, d_ = lid(i, j, 2), lid(i + 1, j, 2), lid(i + 1, j + 1, 2), lid(i, j + 1, 2)
+            tri += [(11 + 2 * (i + 2 * j), a, b, c), (12 + 2 * (i + 2 * j), a, c, d_)]
+    off = 1000
+    # the marker brick, written as a 5 mm cube, then scaled by 2 about node 2001 and mirrored in its mid-plane
+    mk = [(2001 + q, 40.0 + 5.0 * (q & 1), -2.5 + 5.0 * ((q >> 1) & 1), 10.0 + 5.0 * (q >> 2)) for q in range(8)]
+    mk_bricks = [(2001, 2001, 2002, 2004, 2003, 2005, 2006, 2008, 2007)]
+
+    def moved(n):  # where the transforms put a marker node: scale 2 about node 2001, then mirror in y = 2.5
+        x, y, z = 40.0 + 2 * (n[1] - 40.0), -2.5 + 2 * (n[2] + 2.5), 10.0 + 2 * (n[3] - 10.0)
+        return (x, 5.0 - y, z)
+
+    d = starter(run, "Old layout 2019: an assembly dropped on a plate with groups; boxes; transforms; a submodel", [
+        "Sample deck in the 2019 starter layout (/BEGIN INVERS 2019). Units Mg, mm, s; the block",
+        "submodel is written in kg, m, s (its /UNIT). An aluminium block with a triangulated lid",
+        "(//SUBMODEL 1, moved by /TRANSFORM) falls at 5 m/s under gravity and a pressure on its lid",
+        "onto a clamped steel plate; a marker brick is driven by /IMPDISP/FGEO. Groups, surfaces and",
+        "boxes of every kind select what each condition acts on; README.md explains each keyword."], version=v)
+    d.comment("Control cards Radioss reads and radx accepts (listing, memory, parallel and shell-frame options)")
+    d.card("/ANALY", N2D3D=0, IPARITH=1, ISUBCYC=0)
+    d.card("/IOFLAG", IPRI=0, IOUTP=0, IOUTYY=0, IROOTYY=0, Irot=0)
+    d.card("/MEMORY", MEMORY=0, REAL=0.0)
+    d.card("/SPMD", Domdec=0, Nspmd=1, Dkword=0, Nthread=1)
+    d.raw("/SHFRA/V4")
+    d.card("/ANIM/VERS", ANIM_VERS=44)
+    d.comment("A named unit system: the submodel below refers to it by its id (2) and is read in kg, m, s")
+    d.card("/UNIT", 2, "SI units of the block submodel", MUNIT="kg", LUNIT="m", TUNIT="s")
+    d.ruler()
+    d.card("/DEF_SHELL", fill=0)
+    d.card("/DEF_SOLID", fill=0)
+    d.comment("Plate nodes 1..49: 7 x 7 grid of 10 mm at z = 0")
+    d.rows("/NODE", plate)
+    d.rows("/SHELL", plate_shells, ident=1)
+    d.comment("Marker brick nodes 2001..2008 (a 5 mm cube; /TRANSFORM/SCA makes it 10 mm)")
+    d.rows("/NODE", mk)
+    d.rows("/BRICK", mk_bricks, ident=4)
+    d.ruler()
+    d.comment("The block and its lid: every node and element id shifted by 1000 (off_nod, off_ele); parts,",
+              "properties and materials keep their ids (off_def 0). Values inside are in kg, m, s (unit 2).")
+    d.card("//SUBMODEL", "1/2", "Block with a triangulated lid (SI units)", off_def=0, off_nod=off, off_ele=off,
+           off_part=0, off_mat=0, off_type=0, off_sub=0)
+    d.rows("/NODE", blk_nodes, sig=12)
+    d.rows("/BRICK", blk_bricks, ident=3)
+    d.rows("/SH3N", tri, ident=2)
+    d.card("/PART", 2, "Lid", prop_ID=2, mat_ID=3, subset_ID=1, Thick=0.0)
+    d.card("/PART", 3, "Block", prop_ID=3, mat_ID=2, subset_ID=1, Thick=0.0)
+    d.card("/PROP/SHELL", 2, "Lid shell 1 mm", fill=0, N=0, Thick=0.001)
+    d.card("/PROP/SOLID", 3, "Block solid", fill=0)
+    d.card("/MAT/LAW1", 2, "Aluminium block (SI)", RHO_I=2700.0, RHO_ref=0.0, E=7e10, nu=0.33)
+    d.card("/MAT/LAW1", 3, "Aluminium lid (SI)", RHO_I=2700.0, RHO_ref=0.0, E=7e10, nu=0.33)
+    d.raw("//ENDSUB")
+    d.ruler()
+    d.card("/PART", 1, "Plate", prop_ID=1, mat_ID=1, subset_ID=2, Thick=0.0)
+    d.card("/PART", 4, "Marker", prop_ID=3, mat_ID=2, subset_ID=2, Thick=0.0)
+    d.card("/PROP/SHELL", 1, "Plate shell 1 mm", fill=0, N=5, Thick=1.0, Ithick=1, Iplas=1)
+    mat_jc(d, 1, "Steel plate", 7.85e-9, 210000.0, 0.3, 250.0, 450.0, 0.3)
+    d.comment("Subset 1: the assembly (parts 2 and 3 name it);",
+              "subset 2: the rest (parts 1 and 4), with subset 1 as child")
+    d.card("/SUBSET", 1, "Assembly", ids=[0])
+    d.card("/SUBSET", 2, "Whole model", ids=[1])
+    d.ruler()
+    d.comment("Transforms: the submodel is turned 90 degrees about Z (the block is symmetric: same shape) and",
+              "lifted 2 mm; the marker is scaled by 2 about node 2001 and mirrored in its own mid-plane y = 2.5")
+    d.card("/TRANSFORM/ROT", 1, "Turn the submodel about Z", fill=0, X_point_1=0.0, Y_point_1=0.0, Z_point_1=0.0,
+           sub_ID=1, X_point_2=0.0, Y_point_2=0.0, Z_point_2=1.0, Angle=90.0)
+    d.card("/TRANSFORM/TRA", 2, "Lift the submodel to 2 mm above the plate", fill=0, Z_translation=p["GAP_Z"],
+           sub_ID=1)
+    d.card("/GRNOD/GEN_INCR", 20, "Marker nodes", rows=[(2001, 2008, 1)])
+    d.card("/TRANSFORM/SCA", 3, "Scale the marker by 2", fill=0, grnod_ID=20, Fscale_X=2.0, Fscale_Y=2.0,
+           Fscale_Z=2.0, node_IDc=2001)
+    d.card("/TRANSFORM/SYM", 4, "Mirror the marker in y = 2.5", fill=0, grnod_ID=20, Y_point_1=2.5,
+           X_point_2=0.0, Y_point_2=3.5, Z_point_2=0.0)
+    d.ruler()
+    d.comment("Boxes (mm): 1 the plate's central 40 x 40 mm; 2 a vertical cylinder of diameter 32",
+              "about the centre; 3 a sphere of diameter 30 at the centre; 4 a box around the block")
+    d.card("/BOX/RECTA", 1, "Central plate region", N1=0, N2=0, Iskew=0, Xp1=-21.0, Yp1=-21.0, Zp1=-1.0,
+           Xp2=21.0, Yp2=21.0, Zp2=1.0)
+    d.card("/BOX/CYLIN", 2, "Plate nodes under the block", N1=0, N2=0, Diameter=32.0, Xp1=0.0, Yp1=0.0, Zp1=-1.0,
+           Xp2=0.0, Yp2=0.0, Zp2=1.0)
+    d.card("/BOX/SPHER", 3, "Sphere at the plate centre", N1=0, Diameter=30.0, Xp1=0.0, Yp1=0.0, Zp1=0.0)
+    d.card("/BOX/RECTA", 4, "Around the block", N1=0, N2=0, Iskew=0, Xp1=-11.0, Yp1=-11.0, Zp1=1.0,
+           Xp2=11.0, Yp2=11.0, Zp2=13.0)
+    d.ruler()
+    d.comment("Node groups")
+    d.card("/GRNOD/GEN_INCR", 1, "Plate edges y = -30 and y = 30", rows=[(1, 7, 1), (43, 49, 1)])
+    d.card("/GRNOD/GENE", 2, "Plate edges x = -30 and x = 30 (id ranges)", ids=[8, 8, 14, 15, 21, 22, 28, 29, 35, 36, 42, 42])
+    d.card("/GRNOD/GRNOD", 3, "Plate edge (union of 1 and 2)", ids=[1, 2])
+    d.card("/GRNOD/SUBSET", 10, "Assembly nodes", ids=[1])
+    d.card("/GRNOD/NODE", 14, "Main node of the rigid lid", ids=[3001])
+    d.comment("The initial velocity of a rigid body is its main node's: group 4 holds it with the assembly")
+    d.card("/GRNOD/GRNOD", 4, "Assembly nodes and the lid's main node", ids=[10, 14])
+    d.card("/GRNOD/MAT", 5, "Nodes of the block material", ids=[2])
+    d.card("/GRNOD/PROP", 6, "Nodes of the lid property", ids=[2])
+    d.card("/GRNOD/BOX", 8, "Plate nodes inside the cylinder box", ids=[2])
+    d.card("/GRNOD/GEN_INCR", 13, "Plate nodes on the line x = 0 (the section cut)", rows=[(4, 46, 7)])
+    d.comment("Element groups")
+    d.card("/GRBRIC/PART", 1, "Block bricks", ids=[3])
+    d.card("/GRBRIC/BRIC", 2, "Block lower layer", ids=[1001, 1002, 1003, 1004])
+    d.card("/GRBRIC/GRBRIC", 3, "Block bricks again (union)", ids=[1])
+    d.card("/GRBRIC/MAT", 4, "Bricks of the block material (block and marker)", ids=[2])
+    d.card("/GRBRIC/PROP", 5, "Bricks of the solid property (block and marker)", ids=[3])
+    d.card("/GRBRIC/SUBSET", 6, "Bricks of the assembly", ids=[1])
+    d.card("/GRBRIC/BOX", 7, "Bricks wholly inside box 4", ids=[4])
+    d.card("/GRBRIC/BOX2", 8, "Bricks with a node in box 4", ids=[4])
+    d.card("/GRSHEL/BOX", 1, "Plate shells wholly in the central region", ids=[1])
+    d.card("/GRSHEL/BOX2", 2, "Plate shells with a node in the sphere", ids=[3])
+    d.card("/GRSHEL/SHEL", 3, "First row of plate shells", ids=list(range(1, 7)))
+    d.card("/GRSHEL/PART", 4, "Plate shells", ids=[1])
+    d.card("/GRSHEL/GRSHEL", 5, "Plate shells without the first row", ids=[4, -3])
+    d.card("/GRSHEL/MAT", 6, "Shells of the steel", ids=[1])
+    d.card("/GRSHEL/PROP", 7, "Shells of the plate property", ids=[1])
+    d.card("/GRSHEL/SUBSET", 8, "Shells of the whole-model subset", ids=[2])
+    d.card("/GRSH3N/SH3N", 1, "Lid triangles 1011..1014", ids=[1011, 1012, 1013, 1014])
+    d.card("/GRSH3N/PART", 2, "Lid triangles", ids=[2])
+    d.card("/GRSH3N/GRSH3N", 3, "Lid triangles (union)", ids=[1, 2])
+    d.card("/GRSH3N/MAT", 4, "Triangles of the lid material", ids=[3])
+    d.card("/GRSH3N/PROP", 5, "Triangles of the lid property", ids=[2])
+    d.card("/GRSH3N/SUBSET", 6, "Triangles of the assembly", ids=[1])
+    d.card("/GRSH3N/BOX", 7, "Triangles wholly inside box 4", ids=[4])
+    d.card("/GRSH3N/BOX2", 8, "Triangles with a node in box 4", ids=[4])
+    d.card("/GRNOD/GRBRIC", 7, "Block nodes (secondary of interface 1)", ids=[1])
+    d.card("/GRNOD/GRSHEL", 9, "Plate nodes (wall guard; plate shells of groups 5 6 7 8 and row 3)", ids=[3, 5, 6, 7, 8])
+    d.card("/GRNOD/GRSH3N", 11, "Lid nodes", ids=[3, 4, 5, 6, 7, 8])
+    d.card("/GRNOD/GRNOD", 15, "Block and lid nodes (rigid body 1)", ids=[7, 11])
+    d.comment("Surfaces")
+    d.card("/SURF/GRSHEL", 1, "Central plate region (main of interface 1)", ids=[1])
+    d.card("/SURF/GRBRIC/EXT", 2, "Block outer faces (main of interface 2)", ids=[3])
+    d.comment("A negative group id flips the triangles: normal -Z, so a positive pressure pushes the lid down")
+    d.card("/SURF/GRSH3N", 3, "Lid flipped", ids=[-2])
+    d.card("/SURF/GRBRIC/FREE", 4, "Free faces of the assembly's bricks", ids=[6, 7, 8, 2])
+    d.card("/SURF/SEG", 5, "Block bottom face as explicit segments",
+           rows=[(1, 1001, 1004, 1005, 1002), (2, 1002, 1005, 1006, 1003), (3, 1004, 1007, 1008, 1005),
+                 (4, 1005, 1008, 1009, 1006)])
+    d.card("/SURF/PART/ALL", 6, "Every face of the block's bricks", ids=[3])
+    d.card("/GRNOD/SURF", 12, "Block nodes (from surfaces 4 5 6)", ids=[4, 5, 6])
+    d.ruler()
+    d.comment("A perturbation of 1e-6 mm of the plate nodes under the block: far below anything that matters;",
+              "it breaks the exact symmetry of the mesh (the all-node /RANDOM is in decks/mixed_idel)")
+    d.card("/RANDOM/GRNOD", 8, XALEA=1e-6, SEED=2.0)
+    d.ruler()
+    d.card("/BCS", 1, "Plate edge clamped", Tra_rot=rc.bcs_code("111", "111"), skew_ID=0, grnod_ID=3)
+    d.card("/INIVEL/TRA", 1, "Assembly at 5 m/s downwards", Vx=0.0, Vy=0.0, Vz=-p["V0"], grnod_ID=4, skew_ID=0)
+    d.card("/GRAV", 1, "Gravity on every node", funct_IDT=0, DIR="Z", skew_ID=0, sensor_ID=0, grnod_ID=0,
+           Ascale_x=0.0, Fscale_y=-p["G"])
+    d.card("/ADMAS/1", 1, "Ballast shared by the block nodes", MASS=p["ADMAS1"], grnod_ID=5)
+    d.card("/ADMAS/0", 2, "Point mass on each lid node", MASS=p["ADMAS0"], grnod_ID=6)
+    d.rows("/FUNCT", [(0.0, 0.0), (1.0, 1.0), (2.0, 1.0)], ident=1, title="Unit ramp over 1")
+    d.rows("/FUNCT", [(0.0, 1.0), (1.0, 1.0)], ident=2, title="Constant 1")
+    d.comment("/MOVE_FUNCT rescales function 1's abscissa to seconds: the ramp now ends at %g s" % p["T_MARKER"])
+    d.card("/MOVE_FUNCT", 1, "Ramp over %g s" % p["T_MARKER"], Ascalex=p["T_MARKER"], Fscaley=1.0, Ashiftx=0.0,
+           Fshifty=0.0)
+    d.card("/PLOAD", 1, "Pressure on the lid", surf_ID=3, funct_IDT=2, sensor_ID=0,
+           Ascale_x=0.0, Fscale_y=p["PRESS"])
+    d.card("/IMPDISP/FGEO", 1, "Marker moved %g mm down along a straight line" % -p["MARKER_DZ"], fct_ID=1,
+           part_ID=0, sens_ID=0, Ascale=0.0, Tstart=0.0, Tstop=0.0,
+           rows=[(n[0], *(lambda q: (q[0], q[1], q[2] + p["MARKER_DZ"]))(moved(n))) for n in mk])
+    d.comment("Rigid body 1 makes the assembly rigid (a stiff impactor: its one-point bricks would otherwise take",
+              "40 % of the energy as hourglass); rigid body 2, an insert under the block, is switched off by the",
+              "engine deck's /RBODY/OFF, so the plate stays deformable")
+    d.comment("Main nodes 3001 and 3002 of the rigid bodies (ICoG 1 moves each to its body's centre of mass);",
+              "node 3003 only gives the section's plane")
+    d.rows("/NODE", [(3001, 0.0, 0.0, 7.0), (3002, 0.0, 0.0, -2.0), (3003, 0.0, -30.0, 10.0)])
+    d.card("/RBODY", 1, "Rigid assembly (block and lid)", fill=0, node_ID=3001, grnd_ID=15, ICoG=1)
+    d.card("/RBODY", 2, "Rigid insert in the plate (off in this run)", fill=0, node_ID=3002, grnd_ID=8, ICoG=1)
+    d.ruler()
+    for iid, title, grn, surf in ((1, "Block nodes on the plate centre", 7, 1), (2, "Plate nodes on the block", 8, 2)):
+        d.card("/INTER/TYPE7", iid, title, fill=0, grnd_IDs=grn, surf_IDm=surf, Istf=4, Stmax=1e30, Stfac=1.0,
+               IBC=rc.ibc_code(0, 0, 0), Inacti=6, VISs=0.05, VISf=1.0, Iform=1)
+    d.comment("Rigid-wall guards the drop does not reach: a floor 8 mm under the plate, a cylinder and a sphere",
+              "away from the block; their forces stay 0 (TH/RWALL)")
+    d.card("/RWALL/PARAL", 1, "Floor under the plate", fill=0, grnd_ID1=9, XM=-30.0, YM=-30.0, ZM=-8.0,
+           XM1=30.0, YM1=-30.0, ZM1=-8.0, XM2=-30.0, YM2=30.0, ZM2=-8.0)
+    d.card("/RWALL/CYL", 2, "Post beside the block", fill=0, grnd_ID1=12, Diameter=10.0, XM=0.0, YM=40.0, ZM=0.0,
+           XM1=0.0, YM1=40.0, ZM1=1.0)
+    d.card("/RWALL/SPHER", 3, "Ball above the block", fill=0, grnd_ID1=12, Diameter=20.0, XM=0.0, YM=0.0, ZM=60.0)
+    d.ruler()
+    d.card("/SKEW/MOV", 1, "Frame on the block's bottom corners", N1=1001, N2=1003, N3=1007, Dir="X")
+    d.card("/ACCEL", 1, "Accelerometer at the block centre", node_ID=1014, skew_ID=0, Fcut=5000.0)
+    d.card("/BOX/RECTA", 5, "Plate half x >= 0", N1=0, N2=0, Iskew=0, Xp1=-1.0, Yp1=-31.0, Zp1=-1.0,
+           Xp2=31.0, Yp2=31.0, Zp2=1.0)
+    d.card("/GRSHEL/BOX", 9, "Plate shells of the half x >= 0", ids=[5])
+    d.comment("Section across the plate at x = 0: the pull of the half x >= 0 on the cut's nodes; by symmetry its",
+              "Z force is half the load the block puts on the plate")
+    d.card("/SECT", 1, "Plate cut at x = 0", fill=0, node_ID1=4, node_ID2=46, node_ID3=3003,
+           grnod_ID=13, file_name=None, grshel_ID=9, Iframe=10)
+    d.card("/TH/SUBS", 1, "Assembly momentum", variables=["DEF"], ids=[1])
+    d.card("/TH/SECTIO", 2, "Mid-height cut", variables=["DEF"], ids=[1])
+    d.card("/TH/ACCEL", 3, "Accelerometer", variables=["DEF", "W"], ids=[1])
+    d.card("/TH/SH3N", 4, "A lid triangle", variables=["F1", "F2", "F12", "IEM", "OFF"], rows=[(1011, 0)])
+    d.card("/TH/NODE", 5, "Marker corner; plate centre; block corner on the moving skew", variables=["DEF"],
+           rows=[(2001, 0, "marker node 2001"), (25, 0, "plate centre"), (1027, 1, "block top corner in skew 1")])
+    d.card("/TH/RWALL", 6, "Guards", variables=["DEF"], ids=[1, 2, 3])
+    d.card("/TH/RBODY", 7, "Rigid assembly", variables=["DEF", "MASS", "VZ", "AZ"], ids=[1])
+    d.ruler()
+    d.raw("/END")
+    e = rc.Deck(engine=True)
+    e.raw("#RADIOSS ENGINE")
+    e.comment("Engine deck of %s_0000.rad with the engine keywords no other sample uses." % run,
+              "Generated by %s." % GENERATOR)
+    e.ruler()
+    e.card("/RUN", "%s/1" % run, Tstop=p["T_STOP"])
+    e.raw("/VERS/2019")
+    e.card("/TFILE", "4", dt_his=1e-5)
+    e.card("/ANIM/DT", Tstart=0.0, dT=1e-4)
+    e.raw("/ANIM/VERS/44", "/ANIM/ELEM/VONM", "/ANIM/ELEM/EPSP", "/ANIM/VECT/VEL", "/ANIM/VECT/CONT",
+          "/ANIM/TENS/STRESS", "/ANIM/NODA/DMAS")
+    e.ruler()
+    e.comment("Time-step controls, each with a Tmin far below the model's steps: they never act here")
+    e.card("/DT", Tscale=0.9, Tmin=0.0)
+    e.raw("/DTIX", "#             DT_ini              DT_max", "               1e-07                 0.0")
+    e.raw("/DT/BRICK/CST/0", "#             Tscale                Tmin", "                 0.9               1e-12")
+    e.raw("/DT/SHELL/CST", "#             Tscale                Tmin", "                 0.9               1e-12")
+    e.raw("/DT/SH_3N/CST", "#             Tscale                Tmin", "                 0.9               1e-12")
+    e.raw("/DT/NODA/CST/0", "#             Tscale                Tmin", "                 0.9               1e-12")
+    e.raw("/DT/INTER/LAG", "#             Tscale                Tmin", "                 0.9               1e-12")
+    e.ruler()
+    e.raw("/RBODY/ON", "1", "/RBODY/OFF", "2")
+    e.raw("/PRINT/-500")
+    e.ruler()
+    e.raw("/END")
+    return run, d, e
 
 # ---------------------------------------------------------------------------------------------------
 # READMEs and references. The "measured" figures are those of the run made when the deck was written
@@ -737,6 +985,101 @@ Recht-Ipson need the ballistic limit, itself measured); the checks are balances:
     ])
     return run, d, e, readme, ref
 
+
+def old_layout_2019_deck():
+    run, d, e = old_layout_2019()
+    p = OLD
+    readme = f"""# Old layout 2019: groups, surfaces, boxes, subsets, transforms, a submodel, in the 2019 format
+
+`{run}_0000.rad` (starter, **format 2019**: `/BEGIN` INVERS 2019, every card in its 2019 layout, e.g.
+`/INTER/TYPE7` without Ists, `/RWALL` without Iform, `/SENSOR`-less `/PLOAD` without Ipinch, Idel and Itypfun)
+and `{run}_0001.rad` (engine), generated by `{GENERATOR}` (edit the script and regenerate). Units: **Mg, mm,
+s** (MPa, N, mJ); the block submodel is written in **kg, m, s**. This deck gathers the keywords the other
+sample decks do not use (`tests/scripts/check_sample_keywords.py` checks that every keyword radx reads appears
+in some sample deck) in one small model.
+
+## The model
+
+A 20 x 20 x 10 mm aluminium block with a triangulated 1 mm lid falls at 5 m/s, under gravity and a 0.05 MPa
+pressure on its lid, onto a 60 x 60 x 1 mm clamped steel plate (Johnson-Cook shells); a separate marker brick
+is carried 5 mm down along a straight line. The block and lid are one rigid body (a stiff impactor); the plate
+dishes under it and throws it back up.
+
+## Each keyword and what it does here
+
+| keyword | here |
+|---|---|
+| `/ANALY`, `/IOFLAG`, `/MEMORY`, `/SPMD`, `/SHFRA/V4`, `/ANIM/VERS` (starter) | control cards of Radioss decks: accepted and ignored (a note each, RX303): they change nothing in radx |
+| `/UNIT/2` | a named unit system, kg m s; `//SUBMODEL/1/2` reads the submodel in it |
+| `//SUBMODEL/1` ... `//ENDSUB` | the block and lid, written once with local ids 1..27 (nodes), 1..8 (bricks), 11..18 (triangles) in metres; off_nod = off_ele = 1000 shift them to 1001..; parts, properties and materials keep their ids (off_def 0) |
+| `/SH3N/2` | the lid: 8 three-node shells on the block's top face |
+| `/SUBSET/1`, `/SUBSET/2` | the assembly (parts 2 and 3 name subset 1 on their `/PART` card) and the whole model (parts 1 and 4, with subset 1 as child) |
+| `/TRANSFORM/ROT/1`, `/TRANSFORM/TRA/2` | turn the submodel 90 degrees about Z (the block is symmetric: same shape), then lift it so that its lower face is at z = {p['GAP_Z']} mm |
+| `/TRANSFORM/SCA/3`, `/TRANSFORM/SYM/4` | scale the marker (a 5 mm cube as written) by 2 about node 2001, then mirror it in its mid-plane y = 2.5 (the starter swaps its faces: note RX508) |
+| `/BOX/RECTA/1,4,5`, `/BOX/CYLIN/2`, `/BOX/SPHER/3` | the central 40 x 40 mm of the plate, a vertical cylinder of diameter 32 under the block, a sphere of diameter 30 at the plate centre, a box around the block, the half plate x >= 0 |
+| `/GRNOD/GEN_INCR/1`, `/GRNOD/GENE/2`, `/GRNOD/GRNOD/3` | the plate's edges as id ranges, joined: the clamped nodes of `/BCS/1` |
+| `/GRNOD/SUBSET/10`, `/GRNOD/NODE/14`, `/GRNOD/GRNOD/4` | the assembly's nodes and the rigid body's main node: the `/INIVEL` group (a rigid body takes its main node's velocity) |
+| `/GRNOD/MAT/5`, `/GRNOD/PROP/6` | nodes of the block material (the block **and the marker**, which uses the same material) for `/ADMAS/1`; nodes of the lid property for `/ADMAS/0` |
+| `/GRNOD/BOX/8`, `/GRNOD/GRBRIC/7` | plate nodes in the cylinder (secondary of interface 2, and of rigid body 2); block nodes (secondary of interface 1) |
+| `/GRBRIC/*` (BRIC, PART, GRBRIC, MAT, PROP, SUBSET, BOX, BOX2) | brick groups by id, part, union, material, property, subset, box (all nodes in) and box (one node in); they build the surfaces below |
+| `/GRSHEL/*` (SHEL, PART, GRSHEL with a removal, MAT, PROP, SUBSET, BOX, BOX2) | shell groups of the plate: the central region (contact surface), the half plate (section), the rest feed `/GRNOD/GRSHEL/9` (the floor guard's nodes) |
+| `/GRSH3N/*` (SH3N, PART, GRSH3N, MAT, PROP, SUBSET, BOX, BOX2) | triangle groups of the lid: `/GRNOD/GRSH3N/11` (lid nodes, with the block's in rigid body 1) and the pressure surface |
+| `/SURF/GRSHEL/1`, `/SURF/GRBRIC/EXT/2` | main surfaces of the two TYPE7 interfaces |
+| `/SURF/GRSH3N/3` | the lid, **flipped** by the negative group id (normal -Z): the positive pressure of `/PLOAD/1` pushes it down |
+| `/SURF/GRBRIC/FREE/4`, `/SURF/SEG/5`, `/SURF/PART/ALL/6`, `/GRNOD/SURF/12` | surfaces of the block from groups, explicit segments and a part; their nodes are the secondary nodes of the cylinder and sphere walls |
+| `/RANDOM/GRNOD/8` | moves the 9 plate nodes under the block by up to 1e-6 mm (note RX606): breaks the mesh's exact symmetry (the all-node `/RANDOM` is in `decks/mixed_idel`) |
+| `/ADMAS/1/1`, `/ADMAS/0/2` | {g(p['ADMAS1'])} Mg shared by the 35 nodes of group 5 (27 of them on the block), {g(p['ADMAS0'])} Mg on each of the 9 lid nodes |
+| `/FUNCT/1`, `/MOVE_FUNCT/1` | a unit ramp over 1, rescaled in place to end at {g(p['T_MARKER'])} s |
+| `/IMPDISP/FGEO/1` | the marker's 8 nodes go 5 mm down along straight lines, the fraction of the way following function 1 |
+| `/RBODY/1`, `/RBODY/2` | the assembly made rigid (main node 3001); an insert of the 9 plate nodes under the block (main node 3002), switched off by `/RBODY/OFF` in the engine deck |
+| `/RWALL/PARAL/1`, `/RWALL/CYL/2`, `/RWALL/SPHER/3` | guards the drop never reaches: a floor 8 mm under the plate, a post and a ball away from the block (their forces stay 0) |
+| `/SKEW/MOV/1` | a frame carried by the block's bottom corners 1001, 1003, 1007; `/TH/NODE/5` writes node 1027 on its axes |
+| `/ACCEL/1` | an accelerometer at node 1014 (in the rigid block), 5 kHz filter |
+| `/SECT/1` | the plate cut along x = 0 (nodes 4..46), the pull of the shells of the half x >= 0; global axes (Iframe 10) |
+| `/TH/SUBS`, `/TH/SECTIO`, `/TH/ACCEL`, `/TH/SH3N`, `/TH/RBODY` | time histories of the subset, the section, the accelerometer, a lid triangle, the rigid body |
+| engine: `/VERS`, `/ANIM/VERS`, `/ANIM/TENS/STRESS`, `/ANIM/NODA/DMAS` | the engine version, animation version (ignored), stress tensors and added mass in the states |
+| engine: `/DTIX`, `/DT/BRICK/CST`, `/DT/SHELL/CST`, `/DT/SH_3N/CST`, `/DT/NODA/CST`, `/DT/INTER/LAG` | a first step of 1e-7 s, then time-step controls whose Tmin (1e-12 s) is far below the model's steps: they never act (no added mass, no switch) |
+| engine: `/RBODY/ON 1`, `/RBODY/OFF 2` | keep rigid body 1, leave rigid body 2 out of the run |
+
+## What to look at in ParaView
+
+Open `{run}.hdf.series`: the block falls 1 mm into contact at about 2e-4 s, the plate dishes (colour by
+`plastic_strain` or `von_mises`) and throws the block back up by 0.5 ms; the marker slides down 5 mm. The
+`stress` tensor and `added_mass` (all 0) arrays are there because of `/ANIM/TENS` and `/ANIM/NODA`.
+
+## Expected physics and measured figures
+
+* **Mass of the rigid assembly** = rho V of block and lid (1.188e-5 Mg) + 27/35 of {g(p['ADMAS1'])} + 9 x
+  {g(p['ADMAS0'])} = 1.66371e-5 Mg. **Measured (`/TH/RBODY` MASS): 1.66371e-5 Mg.** (`/GRNOD/MAT` picks the
+  marker too, so the block gets only 27/35 of the ballast: a lesson in what material groups select.)
+* **Free flight before contact**: a = -(g + p A / M) with p A = 0.05 x 400 = 20 N: -1.21194e6 mm/s^2;
+  v(t) = -5000 + a t. **Measured at 1.9e-4 s: -5230.27 mm/s against -5230.27** (the rigid body's VZ).
+* **Marker**: DZ = -5 f(t / 1e-3): -2.5 mm at 5e-4 s, -5 mm from 1e-3 s. **Measured: -2.5 and -5.0 exactly.**
+* **Rebound**: no closed form (a plate dished plastically); the block leaves upwards at about 3.3 m/s by
+  5e-4 s. The section's Z force (FTZ: the cut's normal is X) peaks at about 1.5 kN.
+* Walls: 0 force. Energy error **+0.6 %**; hourglass 1 mJ of 208 mJ (the rigid body removes the block's).
+* 2766 cycles, well under a second.
+
+### Worth knowing (found while writing this deck)
+
+`/TH/RBODY` AZ stays at the free-flight value (-1.21194e6) during the impact, while VZ jumps from -5230 to
++3291 mm/s and the accelerometer at node 1014 reads +3.9e7 mm/s^2: the rigid body's AZ column seems to leave
+out the contact forces on its secondary nodes.
+"""
+    ref = ref_text(run, [
+        ("cycles", "0.02", "0", "2 % of the cycles"),
+        ("mass", "1e-9", "0", "the model's mass with both /ADMAS, exact"),
+        ("energy.error_percent", "0", "0.5", "balance within 0.5 % of the drop's energy"),
+        ("energy.kinetic_translational", "0.05", "0", "5 % of the rebound kinetic energy"),
+        ("energy.internal", "0.05", "0", "5 % of the plate's plastic work"),
+        ("max_penetration", "0.2", "0.01", "contact overclosure within 0.01 mm (1 % of the gap)"),
+        ("th:rbody/7:1:VZ@1.9e-4", "0", "0.5", "free-flight velocity within 0.5 mm/s of -5000 + a t"),
+        ("th:rbody/7:1:MASS@0", "1e-9", "0", "rigid assembly mass with the shared ballast, exact"),
+        ("th:node/5:2001:DZ@5e-4", "0", "1e-9", "the marker halfway along its straight line, exact"),
+        ("th:rbody/7:1:VZ@1e-3", "0.05", "0", "rebound velocity within 5 %"),
+    ])
+    return run, d, e, readme, ref
+
 # ---------------------------------------------------------------------------------------------------
 
 def write_deck(out, folder, run, d, e, readme=None, ref=None):
@@ -762,7 +1105,7 @@ def main(argv):
 
 
 DECKS = {"taylor_bar": taylor_bar_deck, "bar_rwall": bar_rwall_deck, "imposed_loads": imposed_loads_deck,
-         "mixed_idel": mixed_idel_deck}
+         "mixed_idel": mixed_idel_deck, "old_layout_2019": old_layout_2019_deck}
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv[1:]))
