@@ -226,7 +226,7 @@ def lagdt_sled(out, argv):
                       / STEEL["rho"]) * 1.05125
     dt_brick = 0.9 * 20.0 / c_eff
 
-    d = starter(run, "LAGDT sled: a steel block sliding at 0.5 m/s to rest on a steel track, Coulomb mu 0.3",
+    d = starter(run, "LAGDT sled: a steel block sliding at 0.5 m/s to rest on a steel track with Coulomb mu 0.3",
                 ["Sample deck: a steel sled (2 x 2 x 1 bricks) given 500 mm/s along +X slides on a fixed steel",
                  "track (6 x 4 shells) under gravity; /INTER/LAGDT/TYPE7 with Fric 0.3 and a stiff contact",
                  "(Stfac 1000): with /DT/INTER/CST Tmin 2e-6 s in the engine deck its pairs switch to Lagrange",
@@ -465,7 +465,7 @@ def ctclaw_laws(out, argv):
     a = p["A"]
     M = STEEL["rho"] * a ** 3
     p_static = M * G / 4 / A_S
-    d = starter(run, "CTCLAW laws: eight steel blocks sliding on tiles, one /CTCLAW friction law each",
+    d = starter(run, "CTCLAW laws: eight steel blocks sliding on tiles with one /CTCLAW friction law each",
                 ["Sample deck: eight 20 mm steel cubes (1 x 1 x 2 bricks) slide at 300 mm/s under gravity,",
                  "each on its own fixed tile through its own TYPE7 and /CTCLAW law: friction laws s1..s4",
                  "(blocks 1-4, sliding at 45 degrees to the tiles' first tangent +X) and s11..s14 (blocks",
@@ -491,34 +491,35 @@ def ctclaw_laws(out, argv):
     d.comment("Tile nodes 1..32 (four per tile, z = 0), every one fixed")
     d.rows("/NODE", tile_nodes)
     for b in blocks:
-        d.comment("Block %d nodes (%s%s), lower face at z = gap - u_s = %s (u_s the law's static overclosure)"
-                  % (b["k"] + 1, b["nlaw"], b["flaw"], repr(b["z0"])))
+        d.comment("Block %d nodes (%s%s): lower face at z = gap - u_s, u_s = %.6g mm (static overclosure)"
+                  % (b["k"] + 1, b["nlaw"], b["flaw"], b["u_s"]))
         d.rows("/NODE", b["nodes"])
     d.ruler()
-    d.comment("Tiles: one shell each, first edge (node 1 to node 2) along +X: the first tangent t1 of s1..s4")
-    d.rows("/SHELL", rows_tiles, ident=1)
+    d.comment("Tiles: one shell each (parts 1..8), first edge along +X: the first tangent t1 of s1..s4")
+    for k, tile_shell in enumerate(rows_tiles):
+        d.rows("/SHELL", [tile_shell], ident=1 + k)
     for b in blocks:
         d.rows("/BRICK", b["bricks"], ident=11 + b["k"])
     d.ruler()
-    d.card("/PART", 1, "Tiles (fixed)", prop_ID=1, mat_ID=1)
+    for k in range(8):
+        d.card("/PART", 1 + k, "Tile %d (fixed)" % (k + 1), prop_ID=1, mat_ID=1)
     for b in blocks:
-        d.card("/PART", 11 + b["k"], "Block %d: %s" % (b["k"] + 1, b["urn"]), prop_ID=2, mat_ID=1)
+        d.card("/PART", 11 + b["k"], "Block %d: law %s%s" % (b["k"] + 1, b["nlaw"], b["flaw"]), prop_ID=2, mat_ID=1)
     shell_prop(d, 1, "Tile shell 1 mm", 1.0, n_ip=2)
     solid_prop(d, 2, "Block solid")
     steel_law1(d, 1, "Steel (elastic)")
     d.ruler()
-    d.card("/GRNOD/PART", 1, "Tile nodes", ids=[1])
+    d.card("/GRNOD/PART", 1, "Tile nodes", ids=list(range(1, 9)))
     d.card("/BCS", 1, "Tiles fixed", Tra_rot=rc.bcs_code("111", "111"), grnod_ID=1)
     d.card("/GRAV", 1, "Gravity along -Z on every node", funct_IDT=0, DIR="Z", skew_ID=0, sensor_ID=0, grnod_ID=0,
            Ascale_x=0.0, Fscale_y=-G)
-    d.card("/FUNCT", 1, "n3 table: gap (negative = overclosure, mm) to pressure (MPa)", rows=TABLE_N3)
+    d.card("/FUNCT", 1, "n3 table: gap in mm (negative: overclosure) to pressure in MPa", rows=TABLE_N3)
     for b in blocks:
         k = b["k"]
         d.ruler()
         d.card("/GRNOD/PART", 10 + k, "Block %d nodes" % (k + 1), ids=[11 + k])
         d.card("/GRNOD/NODE", 20 + k, "Block %d lower-face nodes (secondary nodes)" % (k + 1), ids=b["bottom"])
-        d.rows("/SURF/SEG", [(1, 1 + 4 * k, 2 + 4 * k, 3 + 4 * k, 4 + 4 * k)], ident=1 + k,
-               title="Tile %d (normal +Z)" % (k + 1))
+        d.card("/SURF/PART", 1 + k, "Tile %d (normal +Z)" % (k + 1), ids=[1 + k])
         d.card("/INIVEL/TRA", 1 + k, "Block %d launched" % (k + 1), Vx=b["v"][0], Vy=b["v"][1], Vz=0.0,
                grnod_ID=10 + k, skew_ID=0, Tstart=0.0, sensor_ID=0)
         type7(d, 1 + k, "Block %d on tile %d" % (k + 1, k + 1), 20 + k, 1 + k, istf=1, stfac=p["K"], fric=0.0,
@@ -578,7 +579,7 @@ checked by `radx regress decks/ctclaw_laws`. `decks/verification/ctclaw_*` are t
 |---|---|
 | blocks | eight 20 mm steel cubes, 1 x 1 x 2 bricks (parts 11..18), mass M = {M} g each, 100 mm apart along Y |
 | tiles | one fixed 1 mm shell per block (100 x 90 mm), first edge along +X: the first tangent t1 of the one-directional laws |
-| contact | `/INTER/TYPE7/k`: block k's four lower-face nodes (`/GRNOD/NODE`, so each has the tributary area A_s = 100 mm^2 of the contact-surface rule) on tile k (`/SURF/SEG`); Istf 1 with K = 1000 N/mm, Igap 0, Gapmin 0.5 mm, Fric 0 (the law's), VISs 0.05 |
+| contact | `/INTER/TYPE7/k`: block k's four lower-face nodes (`/GRNOD/NODE`, so each has the tributary area A_s = 100 mm^2 of the contact-surface rule) on tile k (`/SURF/PART` of tile part k); Istf 1 with K = 1000 N/mm, Igap 0, Gapmin 0.5 mm, Fric 0 (the law's), VISs 0.05 |
 | laws | `/CTCLAW/k` on interface k, table below; `/FUNCT/1` the n3 table (gap -0.1, -0.05, 0 mm to 0.01, 0.003, 0 MPa) |
 | start | each block's lower face at its law's static overclosure u_s (P(u_s) A_s = M g / 4 = {f} N, pressure p = {p} MPa), so it starts in vertical equilibrium; `/INIVEL/TRA` 300 mm/s along +X (blocks 5-8) or at 45 degrees between +X and +Y (blocks 1-4) |
 | engine | Tstop 0.12 s, time history every 5e-4 s, states every 5e-3 s |
@@ -711,7 +712,7 @@ def tube_crush(out, argv):
     d.ruler()
     d.card("/PART", 1, "Tube", prop_ID=1, mat_ID=1)
     shell_prop(d, 1, "Tube shell 1 mm", p["T"])
-    steel_jc(d, 1, "Mild steel (Johnson-Cook, no rate effect)")
+    steel_jc(d, 1, "Mild steel (Johnson-Cook without rate effect)")
     d.ruler()
     d.card("/GRNOD/PART", 1, "All tube nodes (self-contact secondary nodes)", ids=[1])
     d.card("/GRNOD/NODE", 2, "Lower end ring (rigid wall secondary nodes)", ids=bottom)
@@ -1081,7 +1082,7 @@ def rigid_body(out, argv):
     corner_dx = p["VX"] * t_free + rc_free[0] - rel[corner][0]
     corner_dz = p["VZ"] * t_free + rc_free[2] - rel[corner][2]
 
-    d = starter(run, "Rigid body: a spinning steel block (/RBODY, /INIVEL/ROT) flying onto a clamped steel plate",
+    d = starter(run, "Rigid body: a spinning steel block (/RBODY with /INIVEL/ROT) flying onto a clamped steel plate",
                 ["Sample deck: a 60 x 20 x 20 mm steel block of 24 bricks is one /RBODY; its main node",
                  "gets /INIVEL/TRA (500, 0, -4000) mm/s and",
                  "/INIVEL/ROT 150 rad/s about Y, so it flies and tumbles freely (constant momentum and spin)",
@@ -1100,7 +1101,7 @@ def rigid_body(out, argv):
     d.card("/PART", 2, "Rigid block", prop_ID=2, mat_ID=2)
     shell_prop(d, 1, "Plate shell 1 mm", p["PLATE_T"])
     solid_prop(d, 2, "Block solid")
-    steel_jc(d, 1, "Plate steel (Johnson-Cook, no rate effect)")
+    steel_jc(d, 1, "Plate steel (Johnson-Cook without rate effect)")
     steel_law1(d, 2, "Block steel (elastic; its bricks only give their mass)")
     d.ruler()
     d.card("/GRNOD/NODE", 1, "Plate edge nodes (clamped)", ids=edge)
@@ -1122,7 +1123,7 @@ def rigid_body(out, argv):
     d.comment("Block nodes on the plate: Istf 4 (K = 0.5 E t), Igap 0 with Gapmin 0.5 mm, Fric 0.2, Iform 2")
     type7(d, 1, "Block on plate", 2, 1, istf=4, stfac=1.0, fric=0.2, gapmin=p["GAP"], iform=2)
     d.ruler()
-    th_node(d, 1, "Main node, a block corner and the plate centre",
+    th_node(d, 1, "Main node with a block corner and the plate centre",
             [(p["MAIN"], "main node (centre of mass)"), (corner, "block corner at (+30 +10 -10) from the centre"),
              (pid(8, 4), "plate centre")])
     d.card("/TH/RBODY", 2, "Rigid block", variables=["DEF"], ids=[1])
