@@ -798,25 +798,31 @@ std::string number_text(double v) {
   return buf;
 }
 
-// The worst quantity of an own-reference comparison: "energy.internal x1.53 (radx 510, ref 494.9, +3.1 %)".
-std::string worst_text(const RegressResult& r, bool with_values) {
-  const io::QuantityCheck* w = worst_check(r);
-  if (!w) return "";
+// One quantity's check: "energy.internal x1.53 (radx 510, ref 494.9, +3.1 %, allowed 9.9)", the score being
+// the deviation over its allowance ("missing" when there is no value to compare).
+std::string check_text(const io::QuantityCheck& c, bool with_values) {
   char score[32];
-  if (std::isinf(w->score))
-    std::snprintf(score, sizeof score, "over");
+  if (!c.reference || !c.radx)
+    std::snprintf(score, sizeof score, "missing");
+  else if (std::isinf(c.score))
+    std::snprintf(score, sizeof score, "xinf");  // a difference where the tolerance is zero
   else
-    std::snprintf(score, sizeof score, "x%.2f", w->score);
-  std::string t = w->name + " " + score;
+    std::snprintf(score, sizeof score, "x%.2f", c.score);
+  std::string t = c.name + " " + score;
   if (!with_values) return t;
-  if (!w->reference || !w->radx) return t + " (" + w->why + ")";
-  t += " (radx " + number_text(*w->radx) + ", ref " + number_text(*w->reference);
-  if (*w->reference != 0) {
+  if (!c.reference || !c.radx) return t + " (" + c.why + ")";
+  t += " (radx " + number_text(*c.radx) + ", ref " + number_text(*c.reference);
+  if (*c.reference != 0) {
     char rel[32];
-    std::snprintf(rel, sizeof rel, ", %+.3g %%", 100 * (*w->radx - *w->reference) / std::abs(*w->reference));
+    std::snprintf(rel, sizeof rel, ", %+.3g %%", 100 * (*c.radx - *c.reference) / std::abs(*c.reference));
     t += rel;
   }
-  return t + ", allowed " + number_text(w->allowed) + ")";
+  return t + ", allowed " + number_text(c.allowed) + ")";
+}
+
+std::string worst_text(const RegressResult& r, bool with_values) {
+  const io::QuantityCheck* w = worst_check(r);
+  return w ? check_text(*w, with_values) : std::string();
 }
 
 }  // namespace
@@ -853,11 +859,7 @@ std::string format_regress_line(const RegressResult& r) {
   s += "  (" + seconds_text(r.seconds) + ")";
   // Every quantity beyond its tolerance, and what --update changed, on the lines below.
   for (const auto& c : r.checks)
-    if (!c.passed()) {
-      RegressResult one;
-      one.checks = {c};
-      s += "\n      " + worst_text(one, true);
-    }
+    if (!c.passed()) s += "\n      " + check_text(c, true);
   if (!r.update_report.empty()) {
     s += "\n" + r.update_report;
     while (!s.empty() && s.back() == '\n') s.pop_back();
