@@ -16,7 +16,7 @@ Decks (units Mg, mm, s: MPa, N, mJ):
 
 Every card is written by scripts/radx_cards.py. The README of each deck states the closed form and the
 figures measured with radx when the deck was written; rerun the deck after changing this script and update
-them. The .ref files hold '-' values that `radx regress --update` fills.
+them. A new .ref holds '-' values that `radx regress --update` fills; an existing one is kept.
 Plain python3, standard library only.
 """
 import argparse
@@ -1087,6 +1087,10 @@ def write_deck(out, folder, run, d, e, readme=None, ref=None):
     d.write(os.path.join(path, run + "_0000.rad"), report=True)
     e.write(os.path.join(path, run + "_0001.rad"), report=True)
     for name, text in (("README.md", readme), (run + ".ref", ref)):
+        if name.endswith(".ref") and os.path.exists(os.path.join(path, name)):
+            print("kept %s (radx regress --update filled its values; delete it to write it anew)"
+                  % os.path.join(path, name))
+            continue
         if text is not None:
             with open(os.path.join(path, name), "w", newline="\n") as f:
                 f.write(text)
