@@ -194,7 +194,7 @@ def reference(run, what, quantities):
          "# Values '-' are filled by `radx regress --update`; written by scripts/make_sample_decks_contact.py."]
     width = max(len(q[0]) for q in quantities)
     for name, rel, floor, why in quantities:
-        L.append("%s  -  %s  %s   # %s" % (name.ljust(width), rel, floor, why))
+        L.append("%s  -  %s  %s   # %s" % (name.ljust(width), rel, fmt(floor, 3), why))
     return L
 
 
@@ -1152,7 +1152,7 @@ def rigid_body(out, argv):
         ("th:node/1:%d:DZ@%g" % (corner, t_free), 0.0, 0.01, "the corner's rigid motion, %s mm within 0.01 mm"
          % fmt(corner_dz)),
         ("th:node/1:%d:VX@%g" % (p["MAIN"], p["T_STOP"]), 0.0, 50.0, "the body's speed along X after the impact, "
-         "50 mm/s (1 %% of the impact speed)"),
+         "50 mm/s (1 % of the impact speed)"),
     ])
     write_folder(out, "rigid_body", run, d, e, readme, ref)
 
