@@ -42,7 +42,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "tests", "scripts"))
 import check_ctclaw_common as ctc  # noqa: E402  (the laws, areas and closed forms of the checks)
 import make_contact_decks as mc  # noqa: E402  (the cube models and the contact cards)
 import make_verification_decks as v  # noqa: E402  (shared deck pieces)
-from radx_deck_format import I, RULER, line, names  # noqa: E402
+import radx_cards as rc  # noqa: E402  (the card layouts and their writer)
 
 VERSION = v.VERSION
 CASES = ("ctclaw_drop", "ctclaw_sliding", "ctclaw_line_table", "ctclaw_lagdt", "ctclaw_lagdt_switch")
@@ -58,13 +58,7 @@ def ours(lines):
 def ctclaw(law_id, title, inter_id, urn):
     """/CTCLAW/law_ID: title, the interface (columns 1-10), then the law string (split into lines of at most
     100 columns at its commas when longer; the reader joins them and drops the blanks)."""
-    L = ["/CTCLAW/%d" % law_id, title, names(("inter_ID", 10)), line(I(inter_id))]
-    rest = urn
-    while len(rest) > 100:
-        k = rest.rindex(",", 0, 100) + 1
-        L.append(rest[:k])
-        rest = rest[k:]
-    return L + [rest]
+    return rc.card("/CTCLAW", law_id, title, inter_ID=inter_id, law=urn)
 
 
 def cube_areas(a, n, z0=0.0):
@@ -307,7 +301,7 @@ def sliding_deck(run, urn, direction, what, lagdt=False, p=SLIDE):
                                  % (px + py), "Stiff cube (mass %g kg)" % M)
     D += v.inivel(1, "Cube sliding along %s" % along, vel, 2)
     D += mc.grav(1, "Gravity along -Z on every node", -p["G"])
-    D.append(RULER)
+    D.append(rc.RULER)
     D += ["#  Istf 1: Stfac is the pair stiffness K (N/m)%s; Igap 0: the gap is" % (
               " of the penalty normal law" if penalty else " = Kc A_s of the law's Kc = -1"),
           "#  Gapmin; Fric 0 (the /CTCLAW below brings the friction); Inacti 0: the initial overclosure p0",

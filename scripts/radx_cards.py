@@ -59,13 +59,15 @@ MAX_COLUMNS = 100
 
 class Field:
     """One field of a card: name (the comment-line text), kind (I, R, S, L or -), width, first column
-    (None: right after the previous field), the deck versions that have it, its value key, and whether its
-    name is left-justified in the comment line."""
-    __slots__ = ("name", "kind", "width", "col", "since", "until", "key", "name_left")
+    (None: right after the previous field), the deck versions that have it, its value key, whether its
+    name is left-justified in the comment line, and wrap: for a text field alone on its card, the characters
+    after which a text longer than the field goes on to the next line (a list of texts is written one to a
+    line as it is)."""
+    __slots__ = ("name", "kind", "width", "col", "since", "until", "key", "name_left", "wrap")
 
-    def __init__(self, name, kind, width, col=None, since=ANY, until=LAST, key=None, name_left=False):
+    def __init__(self, name, kind, width, col=None, since=ANY, until=LAST, key=None, name_left=False, wrap=None):
         self.name, self.kind, self.width, self.col = name, kind, width, col
-        self.since, self.until, self.name_left = since, until, name_left
+        self.since, self.until, self.name_left, self.wrap = since, until, name_left, wrap
         self.key = key if key is not None else re.sub(r"[^0-9A-Za-z_]+", "_", name).strip("_")
 
     def in_version(self, version):
@@ -289,7 +291,7 @@ LAYOUTS = {
         Card(r("C1"), r("C2"), r("C3"), r("C4"), r("C5"), when=lambda v: _int(v.get("Ifric")) > 0),
         Card(r("C6"), when=lambda v: _int(v.get("Ifric")) > 1)),
     # the law: a free text line after the interface id (contact-laws.md)
-    "/CTCLAW": Layout(Card(i("inter_ID")), Card(left("law", 100), names=False)),
+    "/CTCLAW": Layout(Card(i("inter_ID")), Card(left("law", 100, wrap=","), names=False)),
     # --- boundary conditions and loads
     "/BCS": Layout(Card(s("Tra rot"), i("skew_ID"), i("grnod_ID"))),
     "/IMPVEL": Layout(
@@ -447,37 +449,62 @@ def _fields(card, version):
 
 def _list_lines(spec, values, sig=None):
     """An id list (or /TH variable list): the comment line names as many as the first line holds, then the
-    values spec.per_line to a line."""
+    values spec.per_line to a line. (text, mark) pairs, as marked() gives them."""
     if not values:
         raise ValueError("empty %s list" % spec.name)
     n = min(spec.per_line, len(values))
     fields = [(1 + k * spec.width, Field("%s%d" % (spec.name, k + 1), spec.kind, spec.width)) for k in range(n)]
-    out = [name_line(fields)]
+    out = [(name_line(fields), None)]
     for k in range(0, len(values), spec.per_line):
         chunk = values[k:k + spec.per_line]
-        out.append(data_line(fields[:len(chunk)], chunk, sig))
+        out.append((data_line(fields[:len(chunk)], chunk, sig), (spec.key,)))
     return out
+
+
+def _wrapped(f, value):
+    """The lines of a text field that may go on over several lines (Field.wrap)."""
+    if isinstance(value, (list, tuple)):
+        parts = list(value)
+    else:
+        parts, rest = [], str(value)
+        while len(rest) > f.width:
+            k = max(rest.rfind(c, 0, f.width) for c in f.wrap) + 1
+            if k == 0:
+                raise ValueError("text %r has no %r to break it at within %d columns" % (rest, f.wrap, f.width))
+            parts.append(rest[:k])
+            rest = rest[k:]
+        parts.append(rest)
+    return parts
 
 
 def keyword_line(keyword, ident=None):
     return keyword if ident is None else "%s/%s" % (keyword, ident)
 
 
-def card(keyword, ident=None, title=None, *, rows=None, ids=None, variables=None, sig=None, names=True,
-         fill=None, version=VERSION, engine=False, **values):
+def card(keyword, ident=None, title=None, **kw):
     """The lines of one keyword: keyword line (with /ident), title line, then for each card of the layout that
     the version has and the values call for, its field-name comment line (unless names=False) and its data
     line; then the variable list, the id list or the rows. sig: reals too long for their field are written
     with sig significant digits. fill=0: the card fields not given are written as 0 (integers) and 0.0
-    (reals), text fields stay blank; a value given as None is blank either way."""
+    (reals), text fields stay blank; a value given as None is blank either way. The keyword arguments are
+    marked()'s."""
+    return [text for text, _ in marked(keyword, ident, title, **kw)]
+
+
+def marked(keyword, ident=None, title=None, *, rows=None, ids=None, variables=None, sig=None, names=True,
+           fill=None, version=VERSION, engine=False, **values):
+    """card()'s lines, each as (text, mark), the mark saying what the line holds, so that a generator can
+    find the line of a given field (an expected diagnostic's line): 'keyword', 'title', None for a
+    field-name comment line, the tuple of the field keys of a card's data line (every line of a wrapped text
+    field), ('ids',) or ('variables',) for each line of an id or variable list, ('rows',) for each row."""
     layout = (ENGINE_LAYOUTS if engine else LAYOUTS).get(keyword)
     if layout is None:
         raise ValueError("no card layout for %s" % keyword)
-    out = [keyword_line(keyword, ident)]
+    out = [(keyword_line(keyword, ident), "keyword")]
     if layout.title:
         if title is None:
             raise ValueError("%s needs a title" % keyword)
-        out.append(title)
+        out.append((title, "title"))
     elif title is not None:
         raise ValueError("%s has no title line" % keyword)
     used = set()
@@ -498,8 +525,12 @@ def card(keyword, ident=None, title=None, *, rows=None, ids=None, variables=None
                 row.append(int(fill) if f.kind == "I" else float(fill))
             used.add(f.key)
         if names and c.names:
-            out.append(name_line(fields))
-        out.append(data_line(fields, row, sig))
+            out.append((name_line(fields), None))
+        keys = tuple(f.key for _, f in fields if f.kind != "-")
+        if len(fields) == 1 and fields[0][1].wrap and row[0] is not None:
+            out += [(data_line(fields, [part], sig), keys) for part in _wrapped(fields[0][1], row[0])]
+        else:
+            out.append((data_line(fields, row, sig), keys))
     unknown = set(values) - used
     if unknown:
         raise ValueError("%s (version %d) has no field %s" % (keyword, version, ", ".join(sorted(unknown))))
@@ -518,16 +549,24 @@ def card(keyword, ident=None, title=None, *, rows=None, ids=None, variables=None
     if layout.rows is not None:
         if rows is None:
             raise ValueError("%s needs its rows" % keyword)
-        fields = [(col, f) for col, f in _fields(layout.rows, version) if f.kind != "-"]
         if names:
-            out.append(name_line(_fields(layout.rows, version)))
-        for row in rows:
-            if len(row) > len(fields):
-                raise ValueError("%s row %r has more than %d fields" % (keyword, row, len(fields)))
-            out.append(data_line(fields[:len(row)], row, sig))
+            out.append((name_line(_fields(layout.rows, version)), None))
+        out += [(row_line(keyword, row, version, sig), ("rows",)) for row in rows]
     elif rows is not None:
         raise ValueError("%s takes no rows" % keyword)
     return out
+
+
+def row_line(keyword, row, version=VERSION, sig=None):
+    """The data line of one row of a row-list keyword (a tuple in field order; a shorter one leaves the last
+    fields blank)."""
+    layout = LAYOUTS.get(keyword)
+    if layout is None or layout.rows is None:
+        raise ValueError("%s is not a row-list keyword" % keyword)
+    fields = [(col, f) for col, f in _fields(layout.rows, version) if f.kind != "-"]
+    if len(row) > len(fields):
+        raise ValueError("%s row %r has more than %d fields" % (keyword, row, len(fields)))
+    return data_line(fields[:len(row)], row, sig)
 
 
 def _layout_card(keyword, card_index, engine, version):
