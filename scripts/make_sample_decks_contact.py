@@ -183,7 +183,10 @@ def write_folder(out, name, run, starter_deck, engine_deck, readme, ref):
     starter_deck.write(os.path.join(folder, "%s_0000.rad" % run), report=True)
     engine_deck.write(os.path.join(folder, "%s_0001.rad" % run), report=True)
     rc.write(os.path.join(folder, "README.md"), readme.rstrip("\n").split("\n"), report=True)
-    rc.write(os.path.join(folder, "%s.ref" % run), ref, report=True)
+    # An existing reference holds recorded values (radx regress --update): keep it; a new one holds '-'.
+    ref_path = os.path.join(folder, "%s.ref" % run)
+    if not os.path.exists(ref_path):
+        rc.write(ref_path, ref, report=True)
 
 
 def reference(run, what, quantities):
