@@ -45,7 +45,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "tests", "scripts"))
 import check_contact_common as cc  # noqa: E402  (one-DOF impact model and the energy equation)
 import make_verification_decks as v  # noqa: E402  (shared deck pieces)
 import radx_cards as rc  # noqa: E402  (the card layouts and their writer)
-from radx_deck_format import I, R, RULER, line, names  # noqa: E402
+from radx_deck_format import RULER  # noqa: E402
 
 VERSION = v.VERSION
 CASES = ("node_on_segment", "block_sliding", "tube_crush", "initial_penetration", "tstart_tstop", "ibc", "idel",
@@ -693,17 +693,14 @@ both would mean that the margin is not applied.
 def mat_jc_fail(mid, title, rho, e, nu, a, b, n, eps_p_max):
     """/MAT/PLAS_JOHNS (Iflag 0) without rate or temperature, with the EPS_p_max failure of shells
     (elements.md 6.4: the element is deleted about 11 cycles after a point reaches EPS_p_max)."""
-    L = v.mat_jc(mid, title, rho, e, nu, a, b, n)
-    k = L.index(line(R(a), R(b), R(n), R(0.0), R(0.0)))
-    L[k] = line(R(a), R(b), R(n), R(eps_p_max), R(0.0))
-    return L
+    return rc.card("/MAT/PLAS_JOHNS", mid, title, RHO_I=rho, RHO_ref=None, E=e, nu=nu, a=a, b=b, n=n,
+                   EPS_p_max=eps_p_max, fill=0)
 
 
 def with_dt_inter(E, keyword, tscale, tmin, comments):
     """The engine deck E with a /DT/INTER/<keyword> card after /DT (before /PRINT)."""
     k = next(i for i, l in enumerate(E) if l.startswith("/PRINT"))
-    E[k:k] = ["#  " + c for c in comments] + ["/DT/INTER/%s" % keyword, names(("Tscale", 20), ("Tmin", 20)),
-                                              line(R(tscale), R(tmin))]
+    E[k:k] = ["#  " + c for c in comments] + rc.card("/DT/INTER/" + keyword, Tscale=tscale, Tmin=tmin, engine=True)
     return E
 
 
@@ -860,8 +857,7 @@ def ibc_deck(ibcz):
     D.append(RULER)
     D += v.grnod_part(1, "Tile nodes (secondary nodes)", [1])
     D += v.grnod_part(2, "Cube nodes", [2])
-    D += ["/SURF/PART/EXT/1", "Cube outer faces (main surface; the tile meets the lower face)",
-          names(("part_ID1", 10)), line(I(2))]
+    D += rc.card("/SURF/PART/EXT", 1, "Cube outer faces (main surface; the tile meets the lower face)", ids=[2])
     D += v.bcs(1, "Tile held in Z (IBCZ releases this at the first impact)", "001", "000", 1)
     D += v.inivel(1, "Cube moving towards the tile", (0.0, 0.0, -p["V0"]), 2)
     D += grav(1, "Gravity on the tile only: the /BCS holds it until the impact", -p["GRAV"], 1)
@@ -1297,13 +1293,7 @@ REDUNDANT = dict(NOS, V0=1.0, LAGDT_TMIN=1.0, T_STOP=2e-3, TH_DT=1e-6, ANIM_DT=2
 def rbody(rid, title, main_node, group):
     """/RBODY (2026 layout, deck-format.md): main node given, ICoG 1 (the main node moves to the centre of
     mass), no added mass or inertia."""
-    return ["/RBODY/%d" % rid, title,
-            names(("node_ID", 10), ("sens_ID", 10), ("skew_ID", 10), ("Ispher", 10), ("Mass", 20),
-                  ("grnd_ID", 10), ("Ikrem", 10), ("ICoG", 10), ("surf_ID", 10)),
-            line(I(main_node), I(0), I(0), I(0), R(0.0), I(group), I(0), I(1), I(0)),
-            names(("Jxx", 20), ("Jyy", 20), ("Jzz", 20)), line(R(0.0), R(0.0), R(0.0)),
-            names(("Jxy", 20), ("Jyz", 20), ("Jxz", 20)), line(R(0.0), R(0.0), R(0.0)),
-            names(("Ioptoff", 10), ("Iexpams", 10), ("Ifail", 10)), line(I(0), I(0), I(0))]
+    return rc.card("/RBODY", rid, title, node_ID=main_node, grnd_ID=group, ICoG=1, fill=0)
 
 
 def lagdt_redundant_deck(rigid):

@@ -380,6 +380,7 @@ ENGINE_LAYOUTS = {
     "/DT": Layout(Card(r("Tscale"), r("Tmin")), title=False),
     "/DT/NODA/CST": Layout(Card(r("Tscale"), r("Tmin")), title=False),
     "/DT/INTER/CST": Layout(Card(r("Tscale"), r("Tmin")), title=False),
+    "/DT/INTER/DEL": Layout(Card(r("Tscale"), r("Tmin")), title=False),
     "/DT/INTER/LAG": Layout(Card(r("Tscale"), r("Tmin")), title=False),
     "/STOP": Layout(Card(r("Emax"), r("Mmax"), r("Nmax"), i("NTH"), i("NANIM")), title=False),
 }
