@@ -376,6 +376,7 @@ LAYOUTS["/RWALL/PARAL"] = Layout(*LAYOUTS["/RWALL/PLANE"].cards, Card(r("XM2"), 
 ENGINE_LAYOUTS = {
     "/RUN": Layout(Card(r("Tstop")), title=False),
     "/TFILE": Layout(Card(r("dt_his")), title=False),
+    "/DTIX": Layout(Card(r("DT_ini"), r("DT_max")), title=False),
     "/ANIM/DT": Layout(Card(r("Tstart"), r("dT")), title=False),
     "/DT": Layout(Card(r("Tscale"), r("Tmin")), title=False),
     "/DT/NODA/CST": Layout(Card(r("Tscale"), r("Tmin")), title=False),
