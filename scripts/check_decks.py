@@ -8,7 +8,8 @@ the hand-made and generated decks:
   * every data token lies inside one field of its card (so nothing straddles two fields or sits in unused
     columns) and parses as that field's type; integers are right-justified;
   * the field-name comment line in front of a card has each name ending at a field's last column;
-  * cross references, duplicate ids, empty groups, element geometry and a few value checks.
+  * cross references, duplicate ids, empty groups, element geometry and a few value checks; boxes select nodes
+    where the starter sees them: in work units and moved by the transforms of their submodel.
 
 Deck versions: the formats 90, 100, 110, 120, 130, 140 and 2017 to 2026. The layouts of 2017 and newer come
 from deck-format.md; those of 90 to 140 from the FORMAT(radiossNNN) blocks OpenRadioss reads each keyword with
@@ -425,13 +426,43 @@ def spmd(v):
     if v >= 110:
         f.append(F("Nthread", "I", 51, 60))
     return [card(f)]
+
+
+def analy(v):
+    """/ANALY: ISUBCYC 31-40 up to 2022; ITEMP 11-20 from 2026."""
+    f = [F("N2D3D", "I", 1, 10)]
+    if v >= 2026:
+        f.append(F("ITEMP", "I", 11, 20))
+    f.append(F("IPARITH", "I", 21, 30))
+    if v <= 2022:
+        f.append(F("ISUBCYC", "I", 31, 40))
+    return [card(f)]
+
+
+def unit_card(v):
+    """/UNIT/unit_ID (same layout in every version): the mass, length and time units, names or factors to SI."""
+    return [card([F("MUNIT", "S", 1, 20), F("LUNIT", "S", 21, 40), F("TUNIT", "S", 41, 60)])]
+
+
 ID_REC = [F("id%d" % (k + 1), "I", 1 + 10 * k, 10 + 10 * k) for k in range(10)]
+# /GRNOD/GEN_INCR: one arithmetic range a line (read from the 2017 layout on)
+GEN_INCR_REC = [F("first", "I", 1, 10), F("last", "I", 11, 20), F("incr", "I", 21, 30)]
+# /SURF/SEG: one segment a line; n4 = 0 makes a triangle
+SEG_REC = [F("seg_ID", "I", 1, 10), F("n1", "I", 11, 20), F("n2", "I", 21, 30), F("n3", "I", 31, 40),
+           F("n4", "I", 41, 50)]
 
 # path -> (header, has_title, cards(v), tail, record: a field list, or a function of the version)
 STARTER = {
     "/UNIT/MASS": ("word", False, lambda v: [], None, None),
     "/UNIT/LENGTH": ("word", False, lambda v: [], None, None),
     "/UNIT/TIME": ("word", False, lambda v: [], None, None),
+    "/UNIT": ("id", True, unit_card, None, None),
+    # control cards radx accepts and ignores (layouts of deck-format.md 2; /SHFRA/V4 has no data)
+    "/ANALY": ("none", False, analy, None, None),
+    "/MEMORY": ("none", False, lambda v: [card([F("MEMORY", "I", 1, 10), F("REAL", "R", 21, 40)])], None, None),
+    "/ANIM/VERS": ("none", False, lambda v: [card([F("ANIM_VERS", "I", 1, 10)])], None, None),
+    "/SHFRA/V4": ("none", False, lambda v: [], None, None),
+    "/SHFRA": ("none", False, lambda v: [], None, None),
     "/IOFLAG": ("none", False, ioflag, None, None),
     "/SPMD": ("none", False, spmd, None, None),
     "/TH/SHEL": ("id", True, lambda v: [], "threcords", thshel_rec),
@@ -455,6 +486,15 @@ STARTER = {
     "/MAT/LAW02": ("id", True, mat_law2, None, None),
     "/GRNOD/NODE": ("id", True, lambda v: [], "ids", ID_REC),
     "/GRNOD/PART": ("id", True, lambda v: [], "ids", ID_REC),
+    "/GRNOD/GRNOD": ("id", True, lambda v: [], "ids", ID_REC),
+    "/GRNOD/BOX": ("id", True, lambda v: [], "ids", ID_REC),
+    "/GRNOD/SUBSET": ("id", True, lambda v: [], "ids", ID_REC),
+    "/GRNOD/MAT": ("id", True, lambda v: [], "ids", ID_REC),
+    "/GRNOD/PROP": ("id", True, lambda v: [], "ids", ID_REC),
+    "/GRNOD/SURF": ("id", True, lambda v: [], "ids", ID_REC),
+    "/GRNOD/GENE": ("id", True, lambda v: [], "ids", ID_REC),
+    "/GRNOD/GEN_INCR": ("id", True, lambda v: [], "records", GEN_INCR_REC),
+    "/SURF/SEG": ("id", True, lambda v: [], "records", SEG_REC),
     "/SURF/PART/EXT": ("id", True, lambda v: [], "ids", ID_REC),
     "/SURF/PART": ("id", True, lambda v: [], "ids", ID_REC),
     "/INTER/LAGDT/TYPE7": ("id", True, inter_lagdt, None, None),
@@ -489,6 +529,7 @@ STARTER = {
     "/TH/BRICK": ("id", True, lambda v: [], "threcords", THELEM_REC),
     "/TH/SH3N": ("id", True, lambda v: [], "threcords", THNODE_REC),
     "/TH/RBODY": ("id", True, lambda v: [], "thids", ID_REC),
+    "/TH/SUBS": ("id", True, lambda v: [], "thids", ID_REC),
     "/SECT": ("id", True, sect, None, None),
     "/TH/SECTIO": ("id", True, lambda v: [], "thids", ID_REC),
     "/ACCEL": ("id", True, accel, None, None),
@@ -509,6 +550,7 @@ TH_VARIABLES = {
                  [a + x for a in ("D", "V", "A", "VR", "AR", "DR", "REAC") for x in "XYZ"] + ["X", "Y", "Z", "REACXX",
                                                                                               "REACYY", "REACZZ"]),
     "/TH/PART": (["DEF"], ["IE", "KE", "XMOM", "YMOM", "ZMOM", "MASS", "HE", "ERODED", "HEAT"]),
+    "/TH/SUBS": (["DEF"], ["IE", "KE", "XMOM", "YMOM", "ZMOM", "MASS", "HE", "ERODED", "HEAT"]),
     "/TH/INTER": (["DEF", "FN", "FT"], ["FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "CE_ELAST", "CE_FRIC", "CE_DAMP"]),
     "/TH/RWALL": (["DEF", "FN", "FT"], ["FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"]),
     "/TH/SH3N": (["DEF"], TH_SHELL),
@@ -643,6 +685,7 @@ def shift_ids(obj, offsets):
         return x + offsets[kind] if isinstance(x, int) and x > 0 and kind else x
     if obj["path"] not in ("/NODE",):
         obj["id"] = sh(obj["id"], id_kind_of_keyword(obj["path"]))
+    obj["unit_id"] = sh(obj["unit_id"], "def")  # a unit system is one of the "everything else" ids
     for k, (x, p) in list(obj["vals"].items()):
         obj["vals"][k] = (sh(x, field_kind(k)), p)
     elem = obj["path"] in ("/SHELL", "/SH3N", "/BRICK")
@@ -652,6 +695,8 @@ def shift_ids(obj, offsets):
                                                      field_kind(k))
             if obj["path"].startswith("/TH/") and k in ("node_ID", "elem_ID"):
                 kind = id_kind_of_list(obj["path"])
+            if obj["path"] == "/GRNOD/GEN_INCR" and k in ("first", "last"):
+                kind = "nod"
             r[k] = sh(r[k], kind)
     obj["ids"] = [(sh(x, id_kind_of_list(obj["path"])), p) for x, p in obj["ids"]]
 
@@ -913,9 +958,13 @@ class Checker:
             if k < len(data):
                 title = data[k][1][2]
                 k += 1
+        # the unit id of the keyword line: after the object id (/NODE and element blocks: /NODE/unit_ID)
+        ucell = rest[0] if header == "unit" and rest else (rest[1] if header in ("id", "part") and len(rest) > 1
+                                                           else "")
         obj = {"path": path, "id": oid, "pos": (file, lineno), "title": title, "cards": [], "vals": {},
                "recs": [], "ids": [], "word": word,
-               "own_units": len(rest) > 1 and rest[1] not in ("", "0"), "in_sub": bool(self.open_subs)}
+               "own_units": len(rest) > 1 and rest[1] not in ("", "0"), "in_sub": bool(self.open_subs),
+               "unit_id": int(ucell) if INT_RE.match(ucell) else 0}
         vals = {}
         card_list = cards_fn(v)
         for c in card_list:
@@ -980,9 +1029,16 @@ class Checker:
             else:
                 self.open_subs.pop()
             return
+        if path == "/GRNOD/GEN_INCR" and v < 2017:
+            self.issue("RX307", file, lineno, "/GRNOD/GEN_INCR is read from the 2017 layout on, not in %d" % v)
+            return
         parent = self.open_subs[-1] if self.open_subs else None
         if parent is not None:
             shift_ids(obj, parent["offsets"])
+        # the submodels around the object (shifted ids, innermost last) and the unit system its values are in:
+        # its own, else the one of the submodel around it (0: the /BEGIN input units)
+        obj["subs"] = [o["id"] for o in self.open_subs]
+        obj["unit"] = obj["unit_id"] or (parent["unit"] if parent else 0)
         if path == "//SUBMODEL":
             def given(name):
                 return (obj["vals"].get(name) or (None,))[0] or 0
@@ -1051,7 +1107,8 @@ def pos(o, name):
 
 def semantic(ck, m):
     I = ck.issue
-    nodes = {}
+    nodes = {}  # as written (the element geometry is checked on these)
+    node_block = {}  # node id -> its /NODE object (unit system, submodels)
     for o in m.of("/NODE"):
         for r, p in o["recs"]:
             nid = r.get("node_ID")
@@ -1061,6 +1118,7 @@ def semantic(ck, m):
                 I("RX401", p[0], p[1], "node %d defined twice" % nid)
                 continue
             nodes[nid] = (r.get("X") or 0.0, r.get("Y") or 0.0, r.get("Z") or 0.0)
+            node_block[nid] = o
 
     def by_id(paths, what):
         table = {}
@@ -1074,8 +1132,62 @@ def semantic(ck, m):
     parts = by_id(("/PART",), "part")
     props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14"), "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02"), "material")
-    grnods = by_id(("/GRNOD/NODE", "/GRNOD/PART") + NODES_OF_GROUPS, "node group")
-    surfs = by_id(("/SURF/PART", "/SURF/PART/EXT", "/SURF/PART/ALL") + SURFS_OF_GROUPS, "surface")
+    grnods = by_id(tuple(k for k in STARTER if k.startswith("/GRNOD/")), "node group")
+    surfs = by_id(tuple(k for k in STARTER if k.startswith("/SURF/")), "surface")
+
+    # unit systems: names as in /BEGIN; a unit id on a keyword line (or a //SUBMODEL's) must name one, and one
+    # with an unknown unit name is no unit system
+    units = by_id(("/UNIT",), "unit system")
+    for o in list(units.values()):
+        for name, table in (("MUNIT", MASS_UNITS), ("LUNIT", LENGTH_UNITS), ("TUNIT", TIME_UNITS)):
+            x = val(o, name, None)
+            if x is not None and x not in table and not REAL_RE.match(x):
+                p = pos(o, name)
+                I("RX506", p[0], p[1], "/UNIT %d: unknown unit %r" % (o["id"], x))
+                units.pop(o["id"], None)
+    for o in m.objs:
+        if o.get("unit_id", 0) > 0 and o["unit_id"] not in units:
+            I("RX402", o["pos"][0], o["pos"][1], "%s %d: unit system %d does not exist" % (o["path"], o["id"],
+                                                                                          o["unit_id"]))
+
+    def length_factor(o):
+        """Work length units per length unit the object is written in (1 when a name is not understood)."""
+        begin = m.units.get("input", (None,) * 3)[1], m.units.get("work", (None,) * 3)[1]
+        work = begin[1] or begin[0] or next((x["word"] for x in m.of("/UNIT/LENGTH")), None)
+        written = val(units[o["unit"]], "LUNIT", None) if o.get("unit") in units else (begin[0] or work)
+        a, b = unit_si(written or work, LENGTH_SI), unit_si(work, LENGTH_SI)
+        return a / b if a and b else 1.0
+
+    # Node positions the boxes see (keywords.md, Submodels and transforms): the nodes in work units, then moved
+    # by the transforms of the submodels they are written in (sub_ID), the innermost submodel's first, each
+    # submodel's in deck order. Node-group transforms come after the groups are built, so boxes never see them.
+    placed = {}
+    for nid, c in nodes.items():
+        f = length_factor(node_block[nid])
+        placed[nid] = tuple(x * f for x in c)
+    depth = {o["id"]: len(o["subs"]) for o in m.of("//SUBMODEL")}
+    moving = [o for o in m.of("/TRANSFORM/TRA", "/TRANSFORM/ROT", "/TRANSFORM/SCA", "/TRANSFORM/SYM")
+              if val(o, "sub_ID", 0) in depth and not val(o, "grnod_ID", 0)]
+    moves = []  # (submodel id, point -> point), in the order they apply
+    for o in sorted(moving, key=lambda o: -depth[val(o, "sub_ID")]):
+        fn = transform_function(o, placed, length_factor(o))
+        if fn is None:
+            continue  # degenerate: reported below (RX605)
+        sid = val(o, "sub_ID")
+        moves.append((sid, fn))
+        for nid in placed:
+            if sid in node_block[nid]["subs"]:
+                placed[nid] = fn(placed[nid])
+
+    def place(o, point):
+        """A point written in object o (a box corner) where the boxes see it: in work units, moved with the
+        submodels o is written in."""
+        f = length_factor(o)
+        q = tuple(x * f for x in point)
+        for sid, fn in moves:
+            if sid in o["subs"]:
+                q = fn(q)
+        return q
     functs = by_id(("/FUNCT",), "function")
     inters = by_id(("/INTER/TYPE7", "/INTER/LAGDT/TYPE7"), "interface")
 
@@ -1228,24 +1340,11 @@ def semantic(ck, m):
                 I("RX502", p[0], p[1], "JC a must be > 0")
 
     # groups
-    egroups, emembers = element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, surfs)
-    group_nodes = {}
-    for gid, o in grnods.items():
-        if o["path"] in NODES_OF_GROUPS:
-            continue  # element_group_checks
-        s = set()
-        if not o["ids"]:
-            I("RX403", o["pos"][0], o["pos"][1], "group %d is empty" % gid)
-        for x, p in o["ids"]:
-            if o["path"] == "/GRNOD/NODE":
-                if x not in nodes:
-                    I("RX402", p[0], p[1], "group %d: node %d does not exist" % (gid, x))
-                s.add(x)
-            else:
-                if abs(x) not in parts:
-                    I("RX402", p[0], p[1], "group %d: part %d does not exist" % (gid, x))
-                s.add(("part", x))
-        group_nodes[gid] = s
+    subsets = by_id(("/SUBSET",), "subset")
+    egroups, emembers, surf_nodes, boxes = element_group_checks(ck, m, nodes, placed, place, parts, props, mats,
+                                                                subsets, elements, surfs)
+    node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, elements, egroups, emembers,
+                      surfs, surf_nodes, grnods)
     for sid, o in surfs.items():
         if o["path"] not in ("/SURF/PART", "/SURF/PART/EXT"):
             continue  # element_group_checks
@@ -1537,6 +1636,10 @@ def semantic(ck, m):
         for x, p in o["ids"]:
             if x not in parts:
                 I("RX402", p[0], p[1], "TH part %d does not exist" % x)
+    for o in m.of("/TH/SUBS"):
+        for x, p in o["ids"]:
+            if x not in subsets:
+                I("RX402", p[0], p[1], "TH subset %d does not exist" % x)
     for o in m.of("/TH/INTER"):
         for x, p in o["ids"]:
             if x not in inters:
@@ -1733,30 +1836,34 @@ def distinct(ns):
     return out
 
 
-def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, surfs):
-    I = ck.issue
-    subsets = {o["id"]: [x for x, _ in o["ids"]] for o in m.of("/SUBSET")}
+def parts_of_subset(parts, subsets, sid):
+    """The parts of a subset and of its child subsets."""
+    out, seen, todo = set(), set(), [sid]
+    while todo:
+        x = todo.pop()
+        if x in seen or x not in subsets:
+            continue
+        seen.add(x)
+        out |= {pid for pid, po in parts.items() if val(po, "subset_ID", 0) == x}
+        todo += [c for c, _ in subsets[x]["ids"]]
+    return out
 
-    def parts_of_subset(sid):
-        out, seen, todo = set(), set(), [sid]
-        while todo:
-            x = todo.pop()
-            if x in seen or x not in subsets:
-                continue
-            seen.add(x)
-            out |= {pid for pid, po in parts.items() if val(po, "subset_ID", 0) == x}
-            todo += subsets[x]
-        return out
+
+def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subsets, elements, surfs):
+    """Boxes, element groups and surfaces. nodes: as written (ids); placed: where the boxes see them; place(o, p):
+    a point written in o where the boxes see it. Returns (groups, members, surface nodes, boxes)."""
+    I = ck.issue
 
     # Boxes, one id space: a test "is this point inside (boundary included)" per box. The points come from the
-    # nodes N1 and N2 when both are given (the sphere: N1).
+    # nodes N1 and N2 when both are given (the sphere: N1), else from the coordinates, which move with the
+    # submodel they are written in.
     boxes = {}
     for o in m.of("/BOX/RECTA", "/BOX/CYLIN", "/BOX/SPHER"):
         if o["id"] in boxes:
             I("RX401", o["pos"][0], o["pos"][1], "box %d defined twice" % o["id"])
             continue
-        a = [val(o, k, 0.0) for k in ("Xp1", "Yp1", "Zp1")]
-        b = [val(o, k, 0.0) for k in ("Xp2", "Yp2", "Zp2")]
+        a = list(place(o, [val(o, k, 0.0) for k in ("Xp1", "Yp1", "Zp1")]))
+        b = list(place(o, [val(o, k, 0.0) for k in ("Xp2", "Yp2", "Zp2")]))
         sphere = o["path"] == "/BOX/SPHER"
         n1, n2 = val(o, "N1", 0), val(o, "N2", 0)
         if (n1 and sphere) or (n1 and n2):
@@ -1764,8 +1871,8 @@ def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, sur
                 if val(o, k, 0) not in nodes:
                     p = pos(o, k)
                     I("RX402", p[0], p[1], "box %d: node %d does not exist" % (o["id"], val(o, k, 0)))
-            a = list(nodes.get(n1, a))
-            b = list(nodes.get(n2, b))
+            a = list(placed.get(n1, a))
+            b = list(placed.get(n2, b))
         if o["path"] == "/BOX/RECTA":
             lo, hi = [min(a[i], b[i]) for i in range(3)], [max(a[i], b[i]) for i in range(3)]
             boxes[o["id"]] = lambda x, lo=lo, hi=hi: all(lo[i] <= x[i] <= hi[i] for i in range(3))
@@ -1832,7 +1939,7 @@ def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, sur
                 if kind == "PART":
                     sel = {a} if a in parts else None
                 elif kind == "SUBSET":
-                    sel = parts_of_subset(a) if a in subsets else None
+                    sel = parts_of_subset(parts, subsets, a) if a in subsets else None
                 else:
                     table, field = (mats, "mat_ID") if kind == "MAT" else (props, "prop_ID")
                     sel = {pid for pid, po in parts.items() if val(po, field) == a} if a in table else None
@@ -1857,7 +1964,7 @@ def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, sur
             elif first is not None:
                 inside = boxes[first[0]]
                 for e, (pid, ns) in els.items():
-                    ins = [inside(nodes[n]) for n in ns]
+                    ins = [inside(placed[n]) for n in ns]
                     if all(ins) if kind == "BOX" else any(ins):
                         add.add(e)
         res = add - rem
@@ -1869,25 +1976,6 @@ def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, sur
     for key in groups:
         resolve(key)
 
-    def root_of(path):
-        return "/" + path.split("/")[2]
-
-    for o in grnods.values():
-        if o["path"] not in NODES_OF_GROUPS:
-            continue
-        root = root_of(o["path"])
-        found = set()
-        for x, p in o["ids"]:
-            if x < 0:
-                continue  # ignored (a warning)
-            if (root, x) not in groups:
-                I("RX402", p[0], p[1], "%s %d: group %d does not exist" % (o["path"], o["id"], x))
-                continue
-            for e in members[(root, x)]:
-                found.update(elements[GROUP_FAMILIES[root][0]][e][1])
-        if not found:
-            I("RX403", o["pos"][0], o["pos"][1], "%s %d holds no node" % (o["path"], o["id"]))
-
     def faces_of(ns):
         """Faces of a brick (node ids) with 3 or 4 distinct nodes, as sets."""
         out = []
@@ -1897,15 +1985,50 @@ def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, sur
                 out.append(frozenset(d))
         return out
 
+    def shell_nodes(listed):
+        return {n for kw in ("/SHELL", "/SH3N") for pid, ns in elements[kw].values() if pid in listed for n in ns}
+
+    # the nodes of each surface's segments (for /GRNOD/SURF); /SURF/PART and /SURF/PART/EXT are checked in
+    # semantic()
+    surf_nodes = {}
     for o in surfs.values():
         path = o["path"]
-        if path not in SURFS_OF_GROUPS + ("/SURF/PART/ALL",):
+        if path in ("/SURF/PART", "/SURF/PART/EXT"):
+            listed = {abs(x) for x, _ in o["ids"]}
+            got = shell_nodes(listed)
+            if path.endswith("/EXT"):
+                # brick faces no other brick of the listed parts shares
+                seen = {}
+                for pid, ns in elements["/BRICK"].values():
+                    if pid in listed:
+                        for f in set(faces_of(ns)):
+                            seen[f] = seen.get(f, 0) + 1
+                got |= {n for f, k in seen.items() if k == 1 for n in f}
+            surf_nodes[o["id"]] = got
             continue
         before = len(ck.issues)
+        if path == "/SURF/SEG":
+            # n4 = 0 makes a triangle (n4 := n3); each of n1 n2 n3 (and a non-zero n4) must exist
+            got, count = set(), 0
+            for r, p in o["recs"]:
+                ns = [r.get(k) or 0 for k in ("n1", "n2", "n3")] + [r.get("n4") or r.get("n3") or 0]
+                bad = [x for x in ns if x not in nodes]
+                for x in distinct(bad):
+                    I("RX402", p[0], p[1], "/SURF/SEG %d: segment node %d does not exist" % (o["id"], x))
+                if not bad:
+                    got.update(ns)
+                    count += 1
+            surf_nodes[o["id"]] = got
+            if count == 0 and len(ck.issues) == before:
+                I("RX403", o["pos"][0], o["pos"][1], "/SURF/SEG %d holds no segment" % o["id"])
+            continue
+        if path not in SURFS_OF_GROUPS + ("/SURF/PART/ALL",):
+            continue
         if path == "/SURF/GRBRIC":
             I("RX407", o["pos"][0], o["pos"][1], "/SURF/GRBRIC %d needs /EXT or /FREE" % o["id"])
             continue
         count = 0
+        got = set()
         if path == "/SURF/PART/ALL":
             listed = set()
             for x, p in o["ids"]:
@@ -1914,13 +2037,16 @@ def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, sur
                 else:
                     listed.add(abs(x))
             count = sum(1 for kw in ("/SHELL", "/SH3N") for pid, _ in elements[kw].values() if pid in listed)
+            got = shell_nodes(listed)
             # a brick face that a shell of the listed parts covers (4-node shell on a quad face, 3-node shell on
             # a triangle face) is that shell's segment, not a second one
             covers = [set(ns) for kw, n in (("/SHELL", 4), ("/SH3N", 3)) for pid, ns in elements[kw].values()
                       if pid in listed and len(set(ns)) == n]
             for pid, ns in elements["/BRICK"].values():
                 if pid in listed:
-                    count += sum(1 for f in faces_of(ns) if set(f) not in covers)
+                    faces = [f for f in faces_of(ns) if set(f) not in covers]
+                    count += len(faces)
+                    got.update(n for f in faces for n in f)
         else:
             root = "/GR" + path.split("/")[2][2:]
             chosen = set()
@@ -1931,16 +2057,182 @@ def element_group_checks(ck, m, nodes, parts, props, mats, elements, grnods, sur
                 chosen |= members[(root, abs(x))]
             if root != "/GRBRIC":
                 count = len(chosen)
+                got = {n for e in chosen for n in elements[GROUP_FAMILIES[root][0]][e][1]}
             else:
                 around = chosen if path.endswith("/EXT") else set(elements["/BRICK"])
                 seen = {}
                 for e in around:
                     for f in set(faces_of(elements["/BRICK"][e][1])):
                         seen[f] = seen.get(f, 0) + 1
-                count = sum(1 for e in chosen for f in faces_of(elements["/BRICK"][e][1]) if seen[f] == 1)
+                faces = [f for e in chosen for f in faces_of(elements["/BRICK"][e][1]) if seen[f] == 1]
+                count = len(faces)
+                got = {n for f in faces for n in f}
+        surf_nodes[o["id"]] = got
         if count == 0 and len(ck.issues) == before:
             I("RX403", o["pos"][0], o["pos"][1], "%s %d holds no segment" % (path, o["id"]))
-    return groups, members
+    return groups, members, surf_nodes, boxes
+
+
+# Node groups (/GRNOD/..., deck-format.md section 2 and keywords.md), resolved to node ids:
+#   * NODE: the listed nodes; PART: the nodes of the parts' elements, a negative id removes;
+#   * GRNOD: union of node groups, a negative id removes (RX507 for a group that reaches itself, at the keyword
+#     line of the group found again);
+#   * BOX: the nodes (any node, used or not) inside each listed box, where the boxes see them (after the submodel
+#     transforms, before the node-group ones);
+#   * GENE: every existing node id in each pair `first last` (an odd count is RX507 at the last id's line);
+#     GEN_INCR: first, first + incr, ... up to last (incr 0 or less: 1); a range far wider than the model is
+#     RX501 at the keyword line;
+#   * SUBSET (with child subsets), MAT, PROP: the nodes of the parts' elements; SURF: the surfaces' segment nodes;
+#   * GRSHEL, GRSH3N, GRBRIC: the nodes of the groups' elements, negative ids ignored.
+# An id that names nothing is RX402 at its line; a group left empty is RX403 at the keyword line, whatever else
+# went wrong.
+def node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, elements, egroups, emembers,
+                      surfs, surf_nodes, grnods):
+    I = ck.issue
+
+    def part_nodes(pids):
+        return {n for kw in elements for pid, ns in elements[kw].values() if pid in pids for n in ns}
+
+    state, members = {}, {}
+
+    def resolve(gid):
+        o = grnods[gid]
+        if state.get(gid) == 2:
+            return members[gid]
+        if state.get(gid) == 1:
+            I("RX507", o["pos"][0], o["pos"][1], "node group %d reaches itself" % gid)
+            return None
+        state[gid] = 1
+        kind = o["path"][len("/GRNOD/"):]
+        add, rem = set(), set()
+
+        def missing(p, what):
+            I("RX402", p[0], p[1], "%s %d: %s does not exist" % (o["path"], gid, what))
+
+        for x, p in o["ids"]:
+            a = abs(x)
+            if kind == "NODE":
+                if x in nodes:
+                    add.add(x)
+                else:
+                    missing(p, "node %d" % x)
+            elif kind == "PART":
+                if a in parts:
+                    (rem if x < 0 else add).update(part_nodes({a}))
+                else:
+                    missing(p, "part %d" % a)
+            elif kind == "GRNOD":
+                if a not in grnods:
+                    missing(p, "node group %d" % a)
+                    continue
+                got = resolve(a)
+                if got is not None:
+                    (rem if x < 0 else add).update(got)
+            elif kind == "BOX":
+                if x in boxes:
+                    add.update(n for n, c in placed.items() if boxes[x](c))
+                else:
+                    missing(p, "box %d" % x)
+            elif kind in ("MAT", "PROP"):
+                table, field = (mats, "mat_ID") if kind == "MAT" else (props, "prop_ID")
+                if x in table:
+                    add.update(part_nodes({pid for pid, po in parts.items() if val(po, field) == x}))
+                else:
+                    missing(p, "%s %d" % ("material" if kind == "MAT" else "property", x))
+            elif kind == "SUBSET":
+                if x in subsets:
+                    add.update(part_nodes(parts_of_subset(parts, subsets, x)))
+                else:
+                    missing(p, "subset %d" % x)
+            elif kind == "SURF":
+                if x in surfs:
+                    add.update(surf_nodes.get(x, ()))
+                else:
+                    missing(p, "surface %d" % x)
+            elif kind in ("GRSHEL", "GRSH3N", "GRBRIC"):
+                root = "/" + kind
+                if x < 0:
+                    continue  # ignored (a warning)
+                if (root, x) not in egroups:
+                    missing(p, "%s group %d" % (root, x))
+                    continue
+                for e in emembers[(root, x)]:
+                    add.update(elements[GROUP_FAMILIES[root][0]][e][1])
+        ranges = []
+        if kind == "GENE":
+            ids = [x for x, _ in o["ids"]]
+            if len(ids) % 2:
+                p = o["ids"][-1][1]
+                I("RX507", p[0], p[1], "/GRNOD/GENE %d: the last pair 'first last' is incomplete" % gid)
+            ranges = [(ids[k], ids[k + 1], 1) for k in range(0, len(ids) - 1, 2)]
+        elif kind == "GEN_INCR":
+            ranges = [(r.get("first") or 0, r.get("last") or 0, max(r.get("incr") or 1, 1)) for r, _ in o["recs"]]
+        for lo, hi, step in ranges:
+            if hi - lo > 100 * len(nodes) + 1000000:
+                I("RX501", o["pos"][0], o["pos"][1], "%s %d: range %d to %d is far wider than the model" %
+                  (o["path"], gid, lo, hi))
+                continue
+            add.update(n for n in nodes if lo <= n <= hi and (n - lo) % step == 0)
+        res = add - rem
+        if not res:
+            I("RX403", o["pos"][0], o["pos"][1], "%s %d holds no node" % (o["path"], gid))
+        state[gid], members[gid] = 2, res
+        return res
+
+    for gid in grnods:
+        resolve(gid)
+    return members
+
+
+def transform_function(o, at, f):
+    """The move of a /TRANSFORM as a function point -> point (None when its axis or normal has no length). at:
+    node id -> where the transform sees that node (node_ID1, node_ID2, node_IDc); f: work lengths per length
+    unit the transform is written in. TRA: x + t; ROT: right-handed turn by Angle degrees about the axis
+    point 1 -> point 2; SCA: c + s (x - c) per axis about node_IDc (else the origin), a factor 0 means 1; SYM:
+    mirror in the plane through point 1 normal to point 1 -> point 2. Two nodes replace the two points."""
+    kind = o["path"].split("/")[2]
+    n1, n2 = val(o, "node_ID1", 0), val(o, "node_ID2", 0)
+    pair = n1 in at and n2 in at
+    p1 = [val(o, x + "1", 0.0) * f for x in "XYZ"]
+    if kind == "TRA":
+        t = sub(at[n2], at[n1]) if pair else p1
+        return lambda x: (x[0] + t[0], x[1] + t[1], x[2] + t[2])
+    if kind == "SCA":
+        c = at.get(val(o, "node_IDc", 0), (0.0, 0.0, 0.0))
+        s = [val(o, "s" + x, 0.0) or 1.0 for x in "XYZ"]
+        return lambda x: tuple(c[i] + s[i] * (x[i] - c[i]) for i in range(3))
+    a, b = (at[n1], at[n2]) if pair else (p1, [val(o, x + "2", 0.0) * f for x in "XYZ"])
+    d = sub(b, a)
+    length = norm(d)
+    if length == 0:
+        return None
+    u = [c / length for c in d]
+    if kind == "SYM":
+        def mirror(x):
+            h = dot(sub(x, a), u)
+            return tuple(x[i] - 2 * h * u[i] for i in range(3))
+        return mirror
+    ang = math.radians(val(o, "Angle", 0.0))
+    cs, sn = math.cos(ang), math.sin(ang)
+
+    def turn(x):  # Rodrigues
+        v = sub(x, a)
+        w = cross(u, v)
+        k = dot(u, v) * (1 - cs)
+        return tuple(a[i] + v[i] * cs + w[i] * sn + u[i] * k for i in range(3))
+    return turn
+
+
+def unit_si(name, table):
+    """SI value of a unit name or of a factor written as a number; None when neither."""
+    if name is None:
+        return None
+    if name in table:
+        return table[name]
+    if REAL_RE.match(name):
+        x = float(re.sub(r"(\d)([+-]\d+)$", r"\1E\2", name.replace("D", "E").replace("d", "e")))
+        return x if x > 0 and not math.isinf(x) else None
+    return None
 
 
 def sub(a, b):
