@@ -266,6 +266,7 @@ LAYOUTS = {
                          Card(r("Xp2"), r("Yp2"), r("Zp2"))),
     "/BOX/SPHER": Layout(Card(i("N1"), gap(20), r("Diameter")), Card(r("Xp1"), r("Yp1"), r("Zp1"))),
     # --- contact
+    # The friction cards C1..C5 (Ifric 1, 2, 3) and C6 (Ifric 2, 3): an Ifric outside 0..3 has none.
     "/INTER/TYPE7": Layout(
         Card(i("grnd_IDs"), i("surf_IDm"), i("Istf"), i("Ithe"), i("Igap"), i("Multimp", until=110), i("Ibag"),
              i("Idel"), i("Icurv"), i("Iadm")),
@@ -278,8 +279,8 @@ LAYOUTS = {
         Card(s("IBC"), gap(20), i("Inacti"), r("VISs"), r("VISf"), r("Bumult")),
         Card(i("Ifric"), i("Ifiltr"), r("Xfreq"), i("Iform"), i("sens_ID", since=120), i("fct_IDF", since=140),
              r("AscaleF", since=140), i("fric_ID", since=2018)),
-        Card(r("C1"), r("C2"), r("C3"), r("C4"), r("C5"), when=lambda v: _int(v.get("Ifric")) > 0),
-        Card(r("C6"), when=lambda v: _int(v.get("Ifric")) > 1)),
+        Card(r("C1"), r("C2"), r("C3"), r("C4"), r("C5"), when=lambda v: _int(v.get("Ifric")) in (1, 2, 3)),
+        Card(r("C6"), when=lambda v: _int(v.get("Ifric")) in (2, 3))),
     "/INTER/LAGDT/TYPE7": Layout(
         Card(i("grnd_IDs"), i("surf_IDm"), i("Istf"), gap(10), i("Igap"), i("Multimp", until=130), i("Ibag"),
              i("Idel")),
@@ -288,8 +289,8 @@ LAYOUTS = {
         Card(r("Stfac"), r("Fric"), r("Gapmin"), r("Tstart"), r("Tstop")),
         Card(s("IBC"), gap(20), i("Inacti"), r("VISs"), r("VISf"), r("Bumult")),
         Card(i("Ifric"), i("Ifiltr"), r("Xfreq"), i("Iform")),
-        Card(r("C1"), r("C2"), r("C3"), r("C4"), r("C5"), when=lambda v: _int(v.get("Ifric")) > 0),
-        Card(r("C6"), when=lambda v: _int(v.get("Ifric")) > 1)),
+        Card(r("C1"), r("C2"), r("C3"), r("C4"), r("C5"), when=lambda v: _int(v.get("Ifric")) in (1, 2, 3)),
+        Card(r("C6"), when=lambda v: _int(v.get("Ifric")) in (2, 3))),
     # the law: a free text line after the interface id (contact-laws.md)
     "/CTCLAW": Layout(Card(i("inter_ID")), Card(left("law", 100, wrap=","), names=False)),
     # --- boundary conditions and loads
