@@ -22,6 +22,10 @@ tuples in field order; id-list keywords (/GRNOD/NODE, /GRNOD/PART, /SURF/PART, /
 written ten to a line; /TH keywords take `variables` too. Cards that only some values call for (the TYPE7
 friction cards when Ifric > 0) are written when their condition holds.
 
+marked() gives card()'s lines each with what it holds (the keyword line, the title, the field keys of a data
+line, an id-list line or a row), so that a generator can name the line of a field, as make_invalid_decks.py
+does for its expected diagnostics; row_line() writes one row of a row-list keyword.
+
 Deck collects the lines of one file: its begin() writes /BEGIN with the deck version and units, ruler(),
 comment(), card(), rows(), raw() add lines, write() writes the file. Deck(engine=True) takes the engine
 keywords (/RUN, /TFILE, /ANIM/..., /DT, /DT/INTER/CST, /PRINT, /STOP, /END); engine data lines are free

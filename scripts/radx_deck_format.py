@@ -1,9 +1,10 @@
 """Fixed-column cells of the Radioss block format (deck-format.md), shared by the deck generators.
 
-Used by scripts/make_block_on_plate.py, scripts/make_one_file_deck.py, scripts/make_invalid_decks.py and
-bench/gen_shell_plate.py. A data line is a row of cells, each right-justified in its field (10 columns for
-an integer, 20 for a real, as the card says); a field-name comment line puts each name over its field, with
-'#' in column 1. Every helper raises ValueError rather than write a value that does not fit its field.
+The cells under scripts/radx_cards.py (the one card writer of the generators), the ruler, the /BCS and IBC
+code cells and the file writer; scripts/make_version_decks.py restates the old layouts with fmt_real on
+purpose. A data line is a row of cells, each right-justified in its field (10 columns for an integer, 20 for
+a real, as the card says). Every helper raises ValueError rather than write a value that does not fit its
+field.
 
 Plain python3, standard library only.
 """
@@ -11,7 +12,6 @@ import os
 
 RULER = ("#---1----|----2----|----3----|----4----|----5----|----6----|"
          "----7----|----8----|----9----|---10----|")
-MAX_COLUMNS = 100
 
 
 def fmt_real(v, w=20, sig=None):
@@ -48,29 +48,6 @@ def S(v, w):
     if len(s) > w:
         raise ValueError(f"string {s!r} does not fit in {w} columns")
     return s.rjust(w)
-
-
-def blank(w):
-    return " " * w
-
-
-def line(*cells):
-    """A data line: the cells side by side, trailing blanks dropped."""
-    text = "".join(cells).rstrip()
-    if len(text) > MAX_COLUMNS:
-        raise ValueError(f"line longer than {MAX_COLUMNS} columns: {text!r}")
-    return text
-
-
-def names(*cells):
-    """Field-name comment line: each (name, width) right-justified in its cell, '#' in column 1."""
-    text = "".join(str(n).rjust(w) for n, w in cells)
-    if text[0] != " ":
-        raise ValueError(f"first field name fills column 1: {text!r}")
-    text = ("#" + text[1:]).rstrip()
-    if len(text) > MAX_COLUMNS:
-        raise ValueError(f"name line longer than {MAX_COLUMNS} columns: {text!r}")
-    return text
 
 
 def bcs_code(t, r):
