@@ -1489,6 +1489,10 @@ def semantic(ck, m):
         if sensor is not None and val(sensor, "Tstop", 0.0) != 0:
             p = pos(o, "sens_ID")
             I("RX510", p[0], p[1], "/RBODY %d: its sensor switches off again (Tstop)" % o["id"])
+        # Ioptoff = 1 (elements inside the body not computed) changes the step and the energies: refused
+        if val(o, "Ioptoff", 0) == 1:
+            p = pos(o, "Ioptoff")
+            I("RX510", p[0], p[1], "/RBODY %d: Ioptoff = 1 is not implemented" % o["id"])
     for o in m.of("/RWALL/CYL", "/RWALL/SPHER"):
         if val(o, "Diameter", 0.0) <= 0:
             p = pos(o, "Diameter")

@@ -594,6 +594,16 @@ def _():
         [("RX510", "RB.sens_ID")]
 
 
+@fault("rbody_ioptoff")
+def _():
+    rows = block_group() + block("N99", "/NODE", rows=[(99, 5.0, 5.0, 10.0)])
+    rows += block("RB", "/RBODY", 1, "Block whose elements would be switched off", node_ID=99, grnd_ID=2,
+                  Ioptoff=1, fill=0)
+    return with_rows(rows), \
+        "/RBODY/1 asks Ioptoff = 1 (its elements not computed), which radx does not implement", \
+        [("RX510", "RB.Ioptoff")]
+
+
 @fault("inter_missing_surface")
 def _():
     return with_inter(base(), surf=99), "/INTER/TYPE7/1 names surface 99, which does not exist", \
