@@ -27,6 +27,7 @@
 #include "apps/cli_common.hpp"
 #include "apps/starter_pipeline.hpp"
 #include "io/summary_json.hpp"
+#include "io/xml_text.hpp"
 #include "parser/build_run_controls.hpp"
 #include "parser/deck.hpp"
 
@@ -1060,30 +1061,6 @@ std::string regress_summary_json(const std::vector<RegressResult>& results, cons
   return j;
 }
 
-namespace {
-
-std::string xml_escape(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default:
-        // XML 1.0 has no other control characters than tab, line feed and carriage return.
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r')
-          out += ' ';
-        else
-          out += c;
-    }
-  }
-  return out;
-}
-
-}  // namespace
-
 std::string regress_junit_xml(const std::vector<RegressResult>& results, double total_seconds) {
   std::size_t failures = 0, errors = 0;
   for (const auto& r : results) {
@@ -1102,7 +1079,7 @@ std::string regress_junit_xml(const std::vector<RegressResult>& results, double 
   x += "  <testsuite name=\"radx regress\"" + counts + ">\n";
   for (const auto& r : results) {
     std::snprintf(seconds, sizeof seconds, "%.3f", r.seconds);
-    x += "    <testcase classname=\"radx.regress\" name=\"" + xml_escape(r.deck.label) + "\" time=\"" +
+    x += "    <testcase classname=\"radx.regress\" name=\"" + io::xml_escape(r.deck.label) + "\" time=\"" +
          seconds + "\">\n";
     const std::string line = format_regress_line(r);
     const std::string first_line = line.substr(0, line.find('\n'));
@@ -1110,9 +1087,9 @@ std::string regress_junit_xml(const std::vector<RegressResult>& results, double 
       const bool failure = r.status == RegressStatus::Deviates || r.status == RegressStatus::Unexpected;
       const std::string tag = failure ? "failure" : "error";
       x += "      <" + tag + " type=\"" + std::string(status_name(r.status)) + "\" message=\"" +
-           xml_escape(shorten(first_line, 300)) + "\">" + xml_escape(line) + "</" + tag + ">\n";
+           io::xml_escape(shorten(first_line, 300)) + "\">" + io::xml_escape(line) + "</" + tag + ">\n";
     }
-    x += "      <system-out>" + xml_escape(line) + "</system-out>\n";
+    x += "      <system-out>" + io::xml_escape(line) + "</system-out>\n";
     x += "    </testcase>\n";
   }
   x += "  </testsuite>\n</testsuites>\n";

@@ -39,6 +39,7 @@
 
 #include "io/hdf5_util.hpp"
 #include "io/vtkhdf_mesh.hpp"
+#include "io/xml_text.hpp"
 
 namespace radx::io {
 
@@ -91,21 +92,6 @@ std::string json_escape(const std::string& s) {
       out += u.data();
     } else {
       out += c;
-    }
-  }
-  return out;
-}
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
     }
   }
   return out;

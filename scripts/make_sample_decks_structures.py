@@ -25,6 +25,7 @@ import os
 import sys
 
 import radx_cards as rc
+from make_verification_decks import o_grid_quarter  # the Taylor bar's cross-section, shared
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 GENERATOR = "scripts/make_sample_decks_structures.py"
@@ -145,44 +146,6 @@ TAYLOR = dict(L=32.4, R=3.2, NSQ=3, NRAD=3, NZ=36, SQ=0.5, RHO=8.93e-9, E=117000
               N=1.0, V0=227000.0, T_STOP=80e-6)
 # Measured with radx when the deck was written (README).
 TAYLOR_MEASURED = dict(length=None, foot=None, ke_end=None, ie_end=None, eps_face=None, cycles=None, err=None)
-
-
-def o_grid_quarter(n, m, radius, square):
-    """Quarter O-grid of a disc: an n x n square [0, a]^2 (a = square * radius) and m rings out to the arc.
-    Returns (points, cells, on_x0, on_y0): cells counter-clockwise seen from +Z."""
-    a = square * radius
-    pts, index = [], {}
-
-    def add(key, xy):
-        index[key] = len(pts)
-        pts.append(xy)
-
-    for j in range(n + 1):
-        for i in range(n + 1):
-            add(("s", i, j), (a * i / n, a * j / n))
-
-    def edge(k):  # k = 0..2n along (a, 0) -> (a, a) -> (0, a)
-        return ("s", n, k) if k <= n else ("s", 2 * n - k, n)
-
-    for ring in range(1, m + 1):
-        for k in range(2 * n + 1):
-            th = 0.5 * math.pi * k / (2 * n)
-            cx, cy = (radius, 0.0) if k == 0 else ((0.0, radius) if k == 2 * n else
-                                                   (radius * math.cos(th), radius * math.sin(th)))
-            qx, qy = pts[index[edge(k)]]
-            f = ring / m
-            add(("r", k, ring), (0.0 if k == 2 * n else qx + (cx - qx) * f, 0.0 if k == 0 else qy + (cy - qy) * f))
-
-    def at(k, ring):
-        return index[edge(k)] if ring == 0 else index[("r", k, ring)]
-
-    cells = [(index[("s", i, j)], index[("s", i + 1, j)], index[("s", i + 1, j + 1)], index[("s", i, j + 1)])
-             for j in range(n) for i in range(n)]
-    cells += [(at(k, ring), at(k, ring + 1), at(k + 1, ring + 1), at(k + 1, ring))
-              for ring in range(m) for k in range(2 * n)]
-    on_x0 = [q for q, xy in enumerate(pts) if xy[0] == 0.0]
-    on_y0 = [q for q, xy in enumerate(pts) if xy[1] == 0.0]
-    return pts, cells, on_x0, on_y0
 
 
 def taylor_bar():

@@ -442,13 +442,11 @@ TAYLOR = dict(L=32.4, R=3.2, NSQ=4, NRAD=4, NZ=54, SQ=0.5, RHO=8.93e-9, E=117000
               N=1.0, V0=227000.0, T_STOP=80e-6)
 
 
-def taylor_section():
-    """Quarter O-grid of the disc: an NSQ x NSQ square [0, a]^2 and NRAD rings out to the arc (a = SQ R).
+def o_grid_quarter(n, m, radius, square):
+    """Quarter O-grid of a disc: an n x n square [0, a]^2 (a = square * radius) and m rings out to the arc.
     Returns (points, cells, on_x0, on_y0): points[local] = (x, y); cells as 4 local indices counter-clockwise
     seen from +Z; the locals on the planes x = 0 and y = 0."""
-    p = TAYLOR
-    n, m, Rr = p["NSQ"], p["NRAD"], p["R"]
-    a = p["SQ"] * Rr
+    a = square * radius
     pts, index = [], {}
 
     def add(key, xy):
@@ -465,7 +463,8 @@ def taylor_section():
     for r in range(1, m + 1):
         for k in range(2 * n + 1):
             th = 0.5 * math.pi * k / (2 * n)
-            cx, cy = (Rr, 0.0) if k == 0 else ((0.0, Rr) if k == 2 * n else (Rr * math.cos(th), Rr * math.sin(th)))
+            cx, cy = (radius, 0.0) if k == 0 else ((0.0, radius) if k == 2 * n else
+                                                   (radius * math.cos(th), radius * math.sin(th)))
             qx, qy = pts[index[square_boundary(k)]]
             f = r / m
             x = 0.0 if k == 2 * n else qx + (cx - qx) * f
@@ -486,6 +485,12 @@ def taylor_section():
     on_x0 = [q for q, xy in enumerate(pts) if xy[0] == 0.0]
     on_y0 = [q for q, xy in enumerate(pts) if xy[1] == 0.0]
     return pts, cells, on_x0, on_y0
+
+
+def taylor_section():
+    """The Taylor bar's cross-section: the quarter O-grid of TAYLOR's radius."""
+    p = TAYLOR
+    return o_grid_quarter(p["NSQ"], p["NRAD"], p["R"], p["SQ"])
 
 
 def taylor_bar():
