@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -48,20 +49,22 @@ constexpr std::size_t kLineRefusalChars = 160;
 constexpr std::size_t kTableRefusalChars = 72;
 constexpr std::size_t kMostFrequentShown = 10;
 
-bool ends_with(std::string_view s, std::string_view tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 bool all_digits(std::string_view s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 // NAME_NNNN.rad: the run number NNNN (four digits), or -1.
 int run_number_of(std::string_view file_name) {
-  if (!ends_with(file_name, ".rad") || file_name.size() < 10) return -1;
+  if (!file_name.ends_with(".rad") || file_name.size() < 10) return -1;
   const std::string_view digits = file_name.substr(file_name.size() - 8, 4);
   if (file_name[file_name.size() - 9] != '_' || !all_digits(digits)) return -1;
   return std::stoi(std::string(digits));
+}
+
+// A line number: digits that fit, else false (a number too long for any deck is no line of it).
+bool parse_line_number(std::string_view digits, std::int64_t& out) {
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), out);
+  return ec == std::errc() && end == digits.data() + digits.size() && all_digits(digits);
 }
 
 std::string read_text(const fs::path& path) {
@@ -116,7 +119,7 @@ std::string ExpectedError::text() const {
   std::string t = code;
   if (line > 0) t += " line " + std::to_string(line);
   if (!file.empty()) t += " in " + file.filename().string();
-  return t;
+  return warning ? t + " (warning)" : t;
 }
 
 std::vector<ExpectedError> read_expected_errors(const fs::path& deck, std::vector<std::string>& problems) {
@@ -135,20 +138,24 @@ std::vector<ExpectedError> read_expected_errors(const fs::path& deck, std::vecto
     bool ok = !w.empty() && w[0].size() > 2 && w[0].compare(0, 2, "RX") == 0 &&
               all_digits(std::string_view(w[0]).substr(2));
     if (ok) e.code = w[0];
+    if (ok && w.back() == "warning") {
+      e.warning = true;
+      w.pop_back();
+    }
     for (std::size_t k = 1; ok && k < w.size(); k += 2) {
-      if (k + 1 >= w.size()) {
+      if (k + 1 >= w.size())
         ok = false;
-      } else if (w[k] == "line" && all_digits(w[k + 1])) {
-        e.line = std::stoll(w[k + 1]);
-      } else if (w[k] == "file") {
+      else if (w[k] == "line")
+        ok = parse_line_number(w[k + 1], e.line) && e.line > 0;
+      else if (w[k] == "file")
         e.file = (deck.parent_path() / w[k + 1]).lexically_normal();
-      } else {
+      else
         ok = false;
-      }
     }
     if (!ok) {
       problems.push_back(deck.string() + ":" + std::to_string(no) +
-                         ": an expectation is \"# expect: RXnnn [line L] [file PATH]\"");
+                         ": an expectation is \"# expect: RXnnn [line L] [file PATH] [warning]\", L a line "
+                         "number from 1");
       continue;
     }
     if (e.file.empty()) e.file = deck.lexically_normal();
@@ -173,7 +180,7 @@ std::vector<RegressDeck> find_regress_decks(const std::vector<fs::path>& dirs, c
            fs::directory_iterator(folder, fs::directory_options::skip_permission_denied, e1)) {
         std::error_code e2;
         const std::string name = e.path().filename().string();
-        if (ends_with(name, ".rad") && e.is_regular_file(e2)) rad_files[folder].push_back(name);
+        if (name.ends_with(".rad") && e.is_regular_file(e2)) rad_files[folder].push_back(name);
       }
     };
     add_folder_files(dir);
@@ -252,6 +259,16 @@ std::vector<RegressDeck> find_regress_decks(const std::vector<fs::path>& dirs, c
         out.push_back(std::move(d));
       }
     }
+  }
+  // One flat folder per deck: a deck's run folder must never hold another's, since each is cleared before
+  // its run and removed when it passes (deck A/ and deck A/B/ would otherwise share WORK/A).
+  std::set<std::string> used;
+  for (auto& d : out) {
+    std::string flat = d.work_subdir.generic_string();
+    std::replace(flat.begin(), flat.end(), '/', '~');
+    std::string name = flat;
+    for (int k = 2; !used.insert(name).second; ++k) name = flat + "_" + std::to_string(k);
+    d.work_subdir = name;
   }
   return out;
 }
@@ -336,7 +353,7 @@ FirstError first_error(std::string_view output) {
     if (at == std::string_view::npos) continue;
     std::string_view prefix = line.substr(0, at);
     const bool at_start = prefix.find_first_not_of(" \t") == std::string_view::npos;
-    if (!at_start && !ends_with(prefix, ": ")) continue;
+    if (!at_start && !prefix.ends_with(": ")) continue;
     FirstError e;
     e.message = std::string(line.substr(at + 7));
     while (!e.message.empty() && (e.message.back() == '\r' || e.message.back() == ' ')) e.message.pop_back();
@@ -465,7 +482,7 @@ std::vector<ReportedError> reported_errors(std::string_view output) {
       numbers.push_back(where.substr(colon + 1));
       where = where.substr(0, colon);
     }
-    if (!numbers.empty()) e.line = std::stoll(std::string(numbers.back()));
+    if (!numbers.empty() && !parse_line_number(numbers.back(), e.line)) e.line = 0;
     e.file = fs::path(where).lexically_normal();
     if (std::find(out.begin(), out.end(), e) == out.end()) out.push_back(std::move(e));
   }
@@ -492,13 +509,20 @@ void evaluate_expected_refusal(RegressResult& r, const ChildOutcome& child, cons
     return;
   }
   std::vector<ReportedError> got = reported_errors(files.output);
+  // Expectations at a given line take their diagnostic first, so that one at any line cannot use it up.
+  std::vector<const ExpectedError*> order;
+  for (const auto& e : deck.expected) order.push_back(&e);
+  std::stable_partition(order.begin(), order.end(), [](const ExpectedError* e) { return e->line > 0; });
   std::vector<std::string> missing;
-  for (const auto& e : deck.expected) {
+  bool error_expected = false;
+  for (const ExpectedError* e : order) {
+    error_expected = error_expected || !e->warning;
     const auto it = std::find_if(got.begin(), got.end(), [&](const ReportedError& g) {
-      return g.code == e.code && (e.line == 0 || g.line == e.line) && same_file(g.file, e.file);
+      return g.code == e->code && g.error == !e->warning && (e->line == 0 || g.line == e->line) &&
+             same_file(g.file, e->file);
     });
     if (it == got.end())
-      missing.push_back(e.text());
+      missing.push_back(e->text());
     else
       got.erase(it);
   }
@@ -506,10 +530,11 @@ void evaluate_expected_refusal(RegressResult& r, const ChildOutcome& child, cons
   for (const auto& g : got)
     if (g.error)
       extra.push_back(g.code + " line " + std::to_string(g.line) + " in " + g.file.filename().string());
-  if (missing.empty() && extra.empty()) {
+  const bool refused = child.exit_code != 0;
+  if (missing.empty() && extra.empty() && refused == error_expected) {
     r.status = RegressStatus::Diagnosed;
-    r.detail = std::to_string(deck.expected.size()) + " expected diagnostic(s)" +
-               (child.exit_code != 0 ? ", refused" : ", read");
+    r.detail =
+        std::to_string(deck.expected.size()) + " expected diagnostic(s)" + (refused ? ", refused" : ", read");
     return;
   }
   r.status = RegressStatus::Unexpected;
@@ -518,6 +543,8 @@ void evaluate_expected_refusal(RegressResult& r, const ChildOutcome& child, cons
     for (const auto& x : v) t += (t.empty() ? "" : ", ") + x;
     return t;
   };
+  if (error_expected && !refused) r.detail = "the deck must be refused but was read";
+  if (!error_expected && refused) r.detail = "the deck was refused, though it expects warnings only";
   if (!missing.empty()) r.detail += (r.detail.empty() ? "" : "; ") + ("missing " + join(missing));
   if (!extra.empty()) r.detail += (r.detail.empty() ? "" : "; ") + ("not expected " + join(extra));
 }
@@ -749,24 +776,12 @@ void update_reference(RegressResult& r, const RegressRunFiles& files) {
     text = io::updated_reference_text(ref, values);
   }
   // Through a temporary file and a rename: an interrupted update leaves the old reference whole.
-  const fs::path part = path.string() + ".part";
-  {
-    std::ofstream f(part, std::ios::binary | std::ios::trunc);
-    f << text;
-    f.close();
-    std::error_code ec;
-    bool written = static_cast<bool>(f);
-    if (written) {
-      fs::rename(part, path, ec);
-      written = !ec;
-    }
-    if (!written) {
-      fs::remove(part, ec);
-      r.status = RegressStatus::RefError;
-      r.detail = "cannot write " + path.string();
-      r.update_report.clear();
-      return;
-    }
+  std::string error;
+  if (!write_text_atomically(path.string(), text, error)) {
+    r.status = RegressStatus::RefError;
+    r.detail = error;
+    r.update_report.clear();
+    return;
   }
   r.status = RegressStatus::Updated;
   r.detail.clear();
@@ -1246,7 +1261,14 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
   const int digits = static_cast<int>(std::to_string(decks.size()).size());
   const auto worker = [&] {
     for (std::size_t k = next++; k < decks.size(); k = next++) {
-      RegressResult r = run_regress_deck(decks[k], settings);
+      RegressResult r;
+      try {
+        r = run_regress_deck(decks[k], settings);
+      } catch (const std::exception& e) {  // one deck's trouble (a full disk, memory) ends its run only
+        r.deck = decks[k];
+        r.status = RegressStatus::RunError;
+        r.detail = std::string("radx regress could not run it: ") + e.what();
+      }
       const std::string line = format_regress_line(r);
       std::lock_guard<std::mutex> lock(print);
       char counter[48];

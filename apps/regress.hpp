@@ -24,13 +24,14 @@
 
 namespace radx::app {
 
-// A diagnostic a deck must get (an error it must be refused with, or a warning): a
-// "# expect: RXnnn line L [file F]" line at the top of its starter deck (decks/invalid/README.md).
+// A diagnostic a deck must get: a "# expect: RXnnn [line L] [file F] [warning]" line at the top of its
+// starter deck (decks/invalid/README.md). Without "warning" it is an error, and the deck must be refused.
 struct ExpectedError {
   std::string code;                        // "RX402"
   std::int64_t line = 0;                   // 0: any line
   std::filesystem::path file;              // absolute; the deck itself when the line names no file
-  [[nodiscard]] std::string text() const;  // "RX402 line 97 [in inc/x.rad]"
+  bool warning = false;                    // "... warning": a warning, not an error that refuses the deck
+  [[nodiscard]] std::string text() const;  // "RX402 line 97 in x.rad", "RX512 line 84 in x.rad (warning)"
 };
 
 // The "# expect:" lines of the comment block that opens `deck` (paths relative to its folder). Lines that
@@ -104,9 +105,9 @@ enum class RegressStatus : std::uint8_t {
   Compared,    // within the tolerance on every quantity of its reference
   Deviates,    // a quantity beyond its tolerance
   Read,        // a starter deck with no engine deck: the starter read it
-  Diagnosed,   // a deck that declares its diagnostics ("# expect:") got exactly those: every one of them
-               // (an error or a warning), and no other error
-  Unexpected,  // such a deck lacked one of them, or got another error
+  Diagnosed,   // a deck that declares its diagnostics ("# expect:") got exactly those: each at its place and
+               // with its severity, no other error, and it was refused when one of them is an error
+  Unexpected,  // such a deck lacked one of them, got another error, or ran when it must be refused
   Updated,     // --update: the engine ran and its reference was written
 };
 // "read-error", "run-error", "ref-error", "ran", "compared", "deviates", "read", "diagnosed", "unexpected",

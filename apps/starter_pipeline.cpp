@@ -43,33 +43,6 @@ std::string engine_deck_beside(const std::string& deck) {
   return {};
 }
 
-bool write_text_atomically(const std::string& path, const std::string& text, std::string& error) {
-  const std::string part = path + ".part";
-  {
-    std::ofstream f(part, std::ios::binary | std::ios::trunc);
-    if (!f) {
-      error = "cannot create " + part;
-      return false;
-    }
-    f << text;
-    f.flush();
-    if (!f) {
-      error = "cannot write " + part;
-      std::error_code ec;
-      fs::remove(part, ec);
-      return false;
-    }
-  }
-  std::error_code ec;
-  fs::rename(part, path, ec);
-  if (ec) {
-    error = "cannot rename " + part + " to " + path + ": " + ec.message();
-    fs::remove(part, ec);
-    return false;
-  }
-  return true;
-}
-
 // An exponential /CTCLAW law given by pe gets lambda = (K / A_s) / pe per pair: its KcMax must not be below
 // the largest initial stiffness lambda pz, which the starter knows only now, with K and A_s.
 void check_pe_laws(const Deck& deck, const model::Model& model, Diagnostics& diags) {
@@ -104,6 +77,33 @@ void check_pe_laws(const Deck& deck, const model::Model& model, Diagnostics& dia
 }
 
 }  // namespace
+
+bool write_text_atomically(const std::string& path, const std::string& text, std::string& error) {
+  const std::string part = path + ".part";
+  {
+    std::ofstream f(part, std::ios::binary | std::ios::trunc);
+    if (!f) {
+      error = "cannot create " + part;
+      return false;
+    }
+    f << text;
+    f.flush();
+    if (!f) {
+      error = "cannot write " + part;
+      std::error_code ec;
+      fs::remove(part, ec);
+      return false;
+    }
+  }
+  std::error_code ec;
+  fs::rename(part, path, ec);
+  if (ec) {
+    error = "cannot rename " + part + " to " + path + ": " + ec.message();
+    fs::remove(part, ec);
+    return false;
+  }
+  return true;
+}
 
 StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ostream& err) {
   const auto t0 = std::chrono::steady_clock::now();

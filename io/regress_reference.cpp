@@ -169,6 +169,11 @@ bool parse_regress_reference(std::string_view text, const std::string& file, Reg
     }
     ref.quantities.push_back(std::move(q));
   }
+  if (errors.size() == errors_before && ref.quantities.empty())
+    errors.push_back(file +
+                     ": holds no quantity, so it would pass whatever the run gives; a quantity line is "
+                     "QUANTITY VALUE REL_TOL ABS_FLOOR (`radx regress --update` writes a default set when "
+                     "the file is absent)");
   if (errors.size() != errors_before) return false;
   out = std::move(ref);
   return true;
@@ -185,8 +190,11 @@ bool read_regress_reference(const std::string& path, RegressReference& out,
   return parse_regress_reference(text, path, out, errors);
 }
 
-std::optional<double> run_quantity(std::string_view name, const RunSummary& s,
-                                   const std::vector<ThGroupData>* th, std::string& why) {
+namespace {
+
+// The run's figure for a quantity, as it is (NaN included).
+std::optional<double> run_figure(std::string_view name, const RunSummary& s,
+                                 const std::vector<ThGroupData>* th, std::string& why) {
   const EnergyBalance& e = s.energy;
   const auto over_interfaces = [&](auto pick, bool sum) -> std::optional<double> {
     if (s.interfaces.empty()) {
@@ -236,6 +244,18 @@ std::optional<double> run_quantity(std::string_view name, const RunSummary& s,
   }
   why = "unknown quantity";
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<double> run_quantity(std::string_view name, const RunSummary& s,
+                                   const std::vector<ThGroupData>* th, std::string& why) {
+  std::optional<double> v = run_figure(name, s, th, why);
+  if (v && !std::isfinite(*v)) {
+    why = "the run's value is not a finite number";
+    return std::nullopt;
+  }
+  return v;
 }
 
 std::vector<QuantityCheck> check_reference(const RegressReference& ref, const RunSummary& s,
@@ -323,8 +343,9 @@ std::string new_reference_text(const std::string& deck_name, const RunSummary& s
                                                           {"energy.contact_damping", e.contact_damping},
                                                           {"energy.contact_friction", e.contact_friction},
                                                           {"energy.contact_lagrange", e.contact_lagrange}};
+  // An energy at round-off level (1e-21 mJ of hourglass in a free fall) is left out: its value is noise.
   for (const auto& [name, v] : energies)
-    if (v != 0 || name == "energy.internal" || name == "energy.kinetic_translational")
+    if (std::abs(v) > 1e-9 * scale || name == "energy.internal" || name == "energy.kinetic_translational")
       put(name, v, 0.02, 0.005 * scale, energy_why);
   put("energy.error_percent", e.error_percent(), 0, 0.5, "half a percentage point of the energy balance");
   if (!s.interfaces.empty()) {

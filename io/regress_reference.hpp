@@ -79,7 +79,7 @@ bool read_regress_reference(const std::string& path, RegressReference& out, std:
 
 // The run's value of a quantity, from its summary and its time history (null: the run wrote none).
 // Empty with `why` when the run has no such value: an unknown quantity, no interface for max_penetration,
-// no time history, no such column, a time outside the rows.
+// no time history, no such column, a time outside the rows, a value that is not finite.
 std::optional<double> run_quantity(std::string_view name, const RunSummary& s,
                                    const std::vector<ThGroupData>* th, std::string& why);
 

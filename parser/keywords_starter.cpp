@@ -1343,7 +1343,9 @@ void add_rigid(std::vector<KeywordDecl>& t) {
                         R("Jyz", 21, 40, "added inertia yz").dims(dim::inertia),
                         R("Jxz", 41, 60, "added inertia xz").dims(dim::inertia)}),
         card_v("card 4", 110, kLastVersion,
-               {I("Ioptoff", 1, 10, "1 = elements entirely inside the body are not computed").allow({0, 1}).not_implemented(),
+               {I("Ioptoff", 1, 10, "1 = elements entirely inside the body are not computed")
+                    .allow({0, 1})
+                    .not_implemented(),
                 I("Iexpams", 11, 20, "AMS expansion flag").versions(2017).unused(),
                 I("Ifail", 21, 30, "failure criterion; >0 reads card 5").versions(2021).not_implemented()}),
         card_v("card 5 (Ifail > 0)", 2021, kLastVersion,

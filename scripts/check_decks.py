@@ -31,7 +31,7 @@ import sys
 RULER_RE = re.compile(r"^#-+1-+\|")
 REAL_RE = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([EeDd][+-]?\d+|[+-]\d+)?$")
 INT_RE = re.compile(r"^[+-]?\d+$")
-EXPECT_RE = re.compile(r"^#\s*expect:\s*(RX\d{3})\s+line\s+(\d+)(?:\s+file\s+(\S+))?\s*$")
+EXPECT_RE = re.compile(r"^#\s*expect:\s*(RX\d{3})\s+line\s+(\d+)(?:\s+file\s+(\S+))?(?:\s+warning)?\s*$")
 
 MASS_UNITS = {"kg", "g", "mg", "Mg", "t", "lb"}
 LENGTH_UNITS = {"m", "mm", "cm", "km", "um", "mum", "in", "ft"}

@@ -444,7 +444,7 @@ def _():
     # volume stays positive (about 0.45 of the box), but the corner at n5 is turned inside out
     d.set("NODE_15", node_line(15, 10.0, 5.0, -0.5))
     return d, "brick 11: node 15 (n5) pushed through the opposite face; positive volume, faces intersect " \
-              "(a warning)", [("RX607", "BRICK_11")]
+              "(a warning)", [("RX607 warning", "BRICK_11")]
 
 
 @fault("implausible_wave_speed")
@@ -452,7 +452,7 @@ def _():
     d = base()
     d.update("EL", RHO_I=2700.0)
     return d, "/MAT/LAW1/2 RHO_I = 2700 (kg/m3) in a Mg mm s deck: sqrt(E/RHO_I) = 0.005 m/s (a warning)", \
-        [("RX512", "EL.nu")]
+        [("RX512 warning", "EL.nu")]
 
 
 @fault("zero_area_shell")
@@ -1423,7 +1423,10 @@ def render(name, d, what, expects, extras):
     resolved.sort(key=lambda r: (r[2] or "", r[1], r[0]))
     head = []
     for code, ln, f in resolved:
-        head.append("# expect: %s line %d%s" % (code, ln, (" file " + f) if f else ""))
+        # "RX512 warning": a warning the deck must get (it is read, not refused)
+        number, _, severity = code.partition(" ")
+        head.append("# expect: %s line %d%s%s" % (number, ln, (" file " + f) if f else "",
+                                                 (" " + severity) if severity else ""))
     lines = head + fault_lines + d.texts()
     for code, ln, f in resolved:
         if f is None:
@@ -1458,27 +1461,32 @@ def main(argv):
 def readme(table):
     L = ["# Invalid starter decks",
          "",
-         "Each `.rad` file here is a small starter deck (format 2026, units Mg mm s) that must be REJECTED. It is",
-         "the same tiny valid model every time (two 4-node shells of part 1 with Johnson-Cook steel, one brick",
+         "Each `.rad` file here is a small starter deck (format 2026, units Mg mm s) that must be REJECTED (two,",
+         "marked `warning`, must be read with a warning instead). It is the same tiny valid model every time (two 4-node shells of part 1 with Johnson-Cook steel, one brick",
          "of part 2 with elastic aluminium, plate nodes clamped by `/BCS`) with one fault put in, so that it",
          "should produce only the diagnostics listed (`several_errors.rad` has four independent faults, and",
          "all four must be reported).",
          "",
-         "The first lines of each deck state what the reader must report, one line per error:",
+         "The first lines of each deck state what the reader must report, one line per diagnostic:",
          "",
          "```",
          "# expect: RX402 line 37",
          "# expect: RX102 line 5 file inc/include_loop_b.rad",
+         "# expect: RX512 line 84 warning",
          "# fault: free text describing the fault",
          "```",
          "",
          "* the code is a `Diag` of `parser/diagnostics.hpp`; the line is 1-based, in the deck itself unless",
          "  `file` names another file (relative to this folder);",
+         "* without `warning` the diagnostic is an error and the deck must be refused; with it, a warning, and",
+         "  a deck whose expectations are all warnings must be read;",
          "* the line is the data line that holds the bad value or the bad reference; the keyword line for",
          "  keyword-level faults (unknown or unsupported keyword, empty group, a block that ends before a",
          "  required card, an id given on the keyword line); the last line of the file for a missing `/END`;",
          "  the `#include` line that closes the loop, or that names a missing file;",
-         "* only errors are listed. Warnings and notes are not part of the expectation.",
+         "* no other error may be reported; other warnings and notes are not part of the expectation.",
+         "",
+         "`radx regress decks/invalid` runs them all and checks each (docs/regress.md).",
          "",
          "Files that are only included sit in `inc/`: they are not decks and must not be run on their own.",
          "`#include` paths are relative to the folder of the file that holds the `#include` line.",
@@ -1490,7 +1498,8 @@ def readme(table):
          "| file | fault | expected |",
          "|---|---|---|"]
     for name, what, resolved, extras in table:
-        exp = "<br>".join("%s line %d%s" % (c, ln, (" of " + f) if f else "") for c, ln, f in resolved)
+        exp = "<br>".join("%s line %d%s%s" % (c.split()[0], ln, (" of " + f) if f else "",
+                                               " (warning)" if " " in c else "") for c, ln, f in resolved)
         files = "`%s.rad`" % name + "".join(" + `%s`" % x for x in extras)
         L.append("| %s | %s | %s |" % (files, what.replace("|", "\\|"), exp))
     L += ["", "%d decks." % len(table), ""]

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/regress_reference.hpp"
+#include "io/xml_text.hpp"
 
 using radx::io::RegressReference;
 
@@ -68,7 +69,7 @@ std::vector<radx::io::ThGroupData> history() {
 
 }  // namespace
 
-TEST_CASE("NAME.ref: quantities, values, tolerances; comments and blank lines skipped", "[regress]") {
+TEST_CASE("NAME.ref: quantities, values and tolerances, comments and blank lines skipped", "[regress]") {
   const auto r = parse_ok(
       "# a comment\n"
       "\n"
@@ -193,4 +194,32 @@ TEST_CASE("NAME.ref: a new reference holds the run's values and reads back as pa
   drift.energy.internal = 51.2;
   drift.energy.initial_total = 151.2;
   CHECK_FALSE(radx::io::check_reference(r, drift, nullptr)[4].passed());
+}
+
+TEST_CASE("NAME.ref: a reference with no quantity is an error, not a pass", "[regress]") {
+  const auto e = parse_errors("# only comments\n\n");
+  REQUIRE(e.size() == 1);
+  CHECK(e[0].rfind("A.ref: holds no quantity, so it would pass whatever the run gives", 0) == 0);
+  // Numbers beyond a double, and NaN, are not numbers a reference can hold.
+  const auto big = parse_errors("time 1e400 0 0\ndt nan 0 0\n");
+  CHECK(big.size() == 2);
+}
+
+TEST_CASE("NAME.ref: a run value that is not finite cannot be recorded", "[regress]") {
+  auto s = summary();
+  s.dt = std::numeric_limits<double>::quiet_NaN();
+  std::string why;
+  CHECK_FALSE(radx::io::run_quantity("dt", s, nullptr, why));
+  CHECK(why == "the run's value is not a finite number");
+}
+
+TEST_CASE("XML text: special characters, control characters and bytes that are not UTF-8", "[regress]") {
+  using radx::io::xml_escape;
+  CHECK(xml_escape("a<b & \"c\" 'd'>") == "a&lt;b &amp; &quot;c&quot; &apos;d&apos;&gt;");
+  CHECK(xml_escape("tab\there\x01") == "tab\there ");
+  CHECK(xml_escape("caf\xC3\xA9") == "caf\xC3\xA9");            // UTF-8 kept
+  CHECK(xml_escape("caf\xE9 x") == "caf? x");                   // Latin-1 byte
+  CHECK(xml_escape("\xE2\x82") == "??");                        // a sequence cut short
+  CHECK(xml_escape("\xED\xA0\x80") == "???");                   // a surrogate
+  CHECK(xml_escape("\xF0\x9F\x98\x80") == "\xF0\x9F\x98\x80");  // four bytes
 }
