@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <fnmatch.h>
+#include <sched.h>
 #include <signal.h>
 #include <spawn.h>
 #include <stdlib.h>
@@ -59,6 +60,22 @@ int run_number_of(std::string_view file_name) {
   const std::string_view digits = file_name.substr(file_name.size() - 8, 4);
   if (file_name[file_name.size() - 9] != '_' || !all_digits(digits)) return -1;
   return std::stoi(std::string(digits));
+}
+
+// A diagnostic's place "FILE:LINE:COL" or "FILE:LINE": FILE and LINE (LINE empty when the text ends in no
+// number, e.g. a program name "radx-engine").
+struct Place {
+  std::string_view file, line;
+};
+Place split_place(std::string_view where) {
+  Place p{where, {}};
+  for (int part = 0; part < 2; ++part) {
+    const std::size_t colon = p.file.rfind(':');
+    if (colon == std::string_view::npos || !all_digits(p.file.substr(colon + 1))) break;
+    p.line = p.file.substr(colon + 1);
+    p.file = p.file.substr(0, colon);
+  }
+  return p;
 }
 
 // A line number: digits that fit, else false (a number too long for any deck is no line of it).
@@ -360,15 +377,9 @@ FirstError first_error(std::string_view output) {
     if (!at_start) {
       prefix.remove_suffix(2);
       // FILE:LINE:COL or FILE:LINE -> FILE_NAME:LINE; a program name stays as it is.
-      std::string_view file = prefix, line_no;
-      for (int part = 0; part < 2; ++part) {
-        const std::size_t colon = file.rfind(':');
-        if (colon == std::string_view::npos || !all_digits(file.substr(colon + 1))) break;
-        line_no = file.substr(colon + 1);
-        file = file.substr(0, colon);
-      }
-      e.location = line_no.empty() ? std::string(prefix)
-                                   : fs::path(file).filename().string() + ":" + std::string(line_no);
+      const Place p = split_place(prefix);
+      e.location = p.line.empty() ? std::string(prefix)
+                                  : fs::path(p.file).filename().string() + ":" + std::string(p.line);
     }
     // A reference to an object that does not exist is most often the echo of a keyword refused further
     // down (a /PART naming the unsupported /MAT): the refusal is the first other error, when there is one.
@@ -474,16 +485,9 @@ std::vector<ReportedError> reported_errors(std::string_view output) {
     e.error = error;
     const std::string_view tail = line.substr(at + (error ? 9 : 11));
     e.code = std::string(tail.substr(0, std::min(tail.find(':'), tail.size())));
-    std::string_view where = line.substr(0, at);
-    std::vector<std::string_view> numbers;
-    for (int part = 0; part < 2; ++part) {
-      const std::size_t colon = where.rfind(':');
-      if (colon == std::string_view::npos || !all_digits(where.substr(colon + 1))) break;
-      numbers.push_back(where.substr(colon + 1));
-      where = where.substr(0, colon);
-    }
-    if (!numbers.empty() && !parse_line_number(numbers.back(), e.line)) e.line = 0;
-    e.file = fs::path(where).lexically_normal();
+    const Place p = split_place(line.substr(0, at));
+    if (!p.line.empty() && !parse_line_number(p.line, e.line)) e.line = 0;
+    e.file = fs::path(p.file).lexically_normal();
     if (std::find(out.begin(), out.end(), e) == out.end()) out.push_back(std::move(e));
   }
   return out;
@@ -1121,6 +1125,15 @@ bool label_matches(const std::string& label, const std::string& pattern) {
 
 namespace {
 
+// The cores this process may run on (its CPU affinity: a batch started under taskset or in a container
+// limited to 2 cores of 64 runs 2 decks at a time), at least 1.
+int usable_cores() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) return CPU_COUNT(&set);
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 bool positive_number(const std::string& s, double& v) {
   try {
     std::size_t used = 0;
@@ -1137,7 +1150,7 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
                     std::ostream& err) {
   RegressSettings settings;
   settings.executable = executable;
-  settings.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  settings.jobs = usable_cores();
   std::vector<fs::path> dirs;
   std::vector<std::string> filters;
   std::string work, summary_file, junit_file;
@@ -1212,7 +1225,7 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
       err << "radx regress: cannot create a work folder " << tmpl << ": " << std::strerror(errno) << '\n';
       return kExitInputError;
     }
-    settings.work_dir = tmpl;
+    settings.work_dir = fs::absolute(tmpl, ec);  // TMPDIR may be relative; the children run elsewhere
   } else {
     settings.work_dir = fs::absolute(work, ec);
     if (fs::exists(settings.work_dir, ec) &&
