@@ -233,12 +233,10 @@ void ModelBuilder::build_materials() {
       } else {
         mat.a = r.get_real("a");
         mat.b = r.get_real("b");
-        mat.n = r.get_real("n");
+        mat.n = r.get_real("n");  // <= 1: the field's rule (keywords_starter.cpp)
         if (mat.n == 0) mat.n = 1.0;
         if (mat.a <= 0)
           error_at(r, "a", Diag::ValueOutOfRange, "yield stress a = " + num(mat.a) + " must be > 0");
-        if (mat.n > 1.0)
-          error_at(r, "n", Diag::ValueOutOfRange, "hardening exponent n = " + num(mat.n) + " must be <= 1");
       }
       mat.c = r.get_real("c");
       mat.eps_dot_0 = r.get_real("EPS_DOT_0");
@@ -314,11 +312,7 @@ void ModelBuilder::build_properties() {
       s.dm = r.get_real("Dm");
       s.dn = r.get_real("Dn");
       if (s.dn == 0 && s.ishell == 24) s.dn = 0.015;
-      s.n_ip = static_cast<int>(r.get_int("N"));
-      if (s.n_ip < 0 || s.n_ip > 10)
-        error_at(
-            r, "N", Diag::ValueOutOfRange,
-            "N = " + std::to_string(s.n_ip) + " integration points through the thickness; accepted: 0 to 10");
+      s.n_ip = static_cast<int>(r.get_int("N"));  // 0 to 10: the field's rule (keywords_starter.cpp)
       s.thickness = r.get_real("Thick");
       if (s.thickness < 0)
         error_at(r, "Thick", Diag::NonPositiveThickness,
