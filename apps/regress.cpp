@@ -1144,16 +1144,18 @@ bool positive_number(const std::string& s, double& v) {
   }
 }
 
-}  // namespace
-
-int regress_command(const std::vector<std::string>& args, const fs::path& executable, std::ostream& out,
-                    std::ostream& err) {
+// The command line of `radx regress`, parsed.
+struct RegressOptions {
   RegressSettings settings;
-  settings.executable = executable;
-  settings.jobs = usable_cores();
   std::vector<fs::path> dirs;
   std::vector<std::string> filters;
   std::string work, summary_file, junit_file;
+};
+
+// Parses `args` into `o`; the exit code of a usage error (its message on `err`), or nothing.
+std::optional<int> parse_regress_options(const std::vector<std::string>& args, RegressOptions& o,
+                                         std::ostream& err) {
+  RegressSettings& settings = o.settings;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     const bool takes_value = a == "--tol" || a == "--work" || a == "--timeout" || a == "--threads" ||
@@ -1183,13 +1185,13 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
       }
       (a == "--threads" ? settings.threads : settings.jobs) = static_cast<int>(v);
     } else if (a == "--work") {
-      work = args[++i];
+      o.work = args[++i];
     } else if (a == "--summary") {
-      summary_file = args[++i];
+      o.summary_file = args[++i];
     } else if (a == "--junit") {
-      junit_file = args[++i];
+      o.junit_file = args[++i];
     } else if (a == "--filter") {
-      filters.push_back(args[++i]);
+      o.filters.push_back(args[++i]);
     } else if (a == "--keep") {
       settings.keep = true;
     } else if (a == "--update") {
@@ -1198,28 +1200,33 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
       err << "radx regress: unknown option " << a << '\n';
       return kExitUsage;
     } else {
-      dirs.emplace_back(a);
+      o.dirs.emplace_back(a);
     }
   }
   std::error_code ec;
-  if (dirs.empty()) {
+  if (o.dirs.empty()) {
     if (!fs::is_directory("decks", ec)) {
       err << "radx regress: give one or more folders to search for decks (radx regress DIR...); without one, "
              "radx regress runs ./decks, and there is no decks folder here\n";
       return kExitUsage;
     }
-    dirs.emplace_back("decks");
+    o.dirs.emplace_back("decks");
   }
-  for (const auto& d : dirs)
+  for (const auto& d : o.dirs)
     if (!fs::is_directory(d, ec)) {
       err << "radx regress: " << d.string() << ": no such folder\n";
       return kExitUsage;
     }
+  return std::nullopt;
+}
 
-  // The work folder: ours when we create it or it carries our marker; anything else that is not empty is
-  // refused, since each deck's folder in it is cleared before its run.
-  bool work_given = !work.empty();
-  if (!work_given) {
+// Sets o.settings.work_dir: a new temporary folder, or --work. The folder is ours when we create it or it
+// carries our marker; anything else that is not empty is refused, since each deck's folder in it is cleared
+// before its run. The exit code of a failure (its message on `err`), or nothing.
+std::optional<int> open_work_folder(RegressOptions& o, std::ostream& err) {
+  RegressSettings& settings = o.settings;
+  std::error_code ec;
+  if (o.work.empty()) {
     std::string tmpl = (fs::temp_directory_path(ec) / "radx-regress-XXXXXX").string();
     if (!mkdtemp(tmpl.data())) {
       err << "radx regress: cannot create a work folder " << tmpl << ": " << std::strerror(errno) << '\n';
@@ -1227,11 +1234,11 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
     }
     settings.work_dir = fs::absolute(tmpl, ec);  // TMPDIR may be relative; the children run elsewhere
   } else {
-    settings.work_dir = fs::absolute(work, ec);
+    settings.work_dir = fs::absolute(o.work, ec);
     if (fs::exists(settings.work_dir, ec) &&
         (!fs::is_directory(settings.work_dir, ec) ||
          (!fs::is_empty(settings.work_dir, ec) && !fs::exists(settings.work_dir / kWorkMarker, ec)))) {
-      err << "radx regress: --work " << work
+      err << "radx regress: --work " << o.work
           << ": exists and is not a radx regress work folder; give a new or empty folder\n";
       return kExitUsage;
     }
@@ -1244,29 +1251,13 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
     err << "radx regress: cannot create the work folder " << settings.work_dir.string() << '\n';
     return kExitInputError;
   }
+  return std::nullopt;
+}
 
-  std::vector<RegressDeck> decks = find_regress_decks(dirs, settings.work_dir);
-  if (!filters.empty())
-    std::erase_if(decks, [&](const RegressDeck& d) {
-      return std::none_of(filters.begin(), filters.end(),
-                          [&](const std::string& p) { return label_matches(d.label, p); });
-    });
-  if (decks.empty()) {
-    err << "radx regress: no deck (NAME_0000.rad, a one-file deck, or a deck with # expect: lines) under the "
-           "folders given"
-        << (filters.empty() ? "" : " that matches --filter") << '\n';
-    if (!work_given) fs::remove_all(settings.work_dir, ec);
-    return kExitInputError;
-  }
-  settings.jobs = std::min<int>(settings.jobs, static_cast<int>(decks.size()));
-  out << "radx regress: " << decks.size() << " deck(s), " << settings.jobs << " at a time, "
-      << settings.threads << " engine thread(s) each, time limit " << settings.timeout_seconds
-      << " s each, ref.extract tolerance " << tolerance_text(settings.tolerance) << " %, work folder "
-      << settings.work_dir.string() << (settings.update ? ", updating references" : "") << "\n\n";
-
-  // Decks run `jobs` at a time, each in its own child process; a line is printed as each finishes, in the
-  // order they finish, and the table after lists them in deck order whatever the order of finishing.
-  const auto start = std::chrono::steady_clock::now();
+// Runs the decks `settings.jobs` at a time, each in its own child process. A line is printed as each
+// finishes, in the order they finish; the results are in deck order whatever the order of finishing.
+std::vector<RegressResult> run_decks(const std::vector<RegressDeck>& decks, const RegressSettings& settings,
+                                     std::ostream& out) {
   std::vector<RegressResult> results(decks.size());
   std::atomic<std::size_t> next{0};
   std::size_t finished = 0;
@@ -1294,18 +1285,50 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
   for (int t = 1; t < settings.jobs; ++t) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
+  return results;
+}
+
+}  // namespace
+
+int regress_command(const std::vector<std::string>& args, const fs::path& executable, std::ostream& out,
+                    std::ostream& err) {
+  RegressOptions o;
+  o.settings.executable = executable;
+  o.settings.jobs = usable_cores();
+  if (const auto code = parse_regress_options(args, o, err)) return *code;
+  if (const auto code = open_work_folder(o, err)) return *code;
+  RegressSettings& settings = o.settings;
+  std::error_code ec;
+
+  std::vector<RegressDeck> decks = find_regress_decks(o.dirs, settings.work_dir);
+  if (!o.filters.empty())
+    std::erase_if(decks, [&](const RegressDeck& d) {
+      return std::none_of(o.filters.begin(), o.filters.end(),
+                          [&](const std::string& p) { return label_matches(d.label, p); });
+    });
+  if (decks.empty()) {
+    err << "radx regress: no deck (NAME_0000.rad, a one-file deck, or a deck with # expect: lines) under the "
+           "folders given"
+        << (o.filters.empty() ? "" : " that matches --filter") << '\n';
+    if (o.work.empty()) fs::remove_all(settings.work_dir, ec);
+    return kExitInputError;
+  }
+  settings.jobs = std::min<int>(settings.jobs, static_cast<int>(decks.size()));
+  out << "radx regress: " << decks.size() << " deck(s), " << settings.jobs << " at a time, "
+      << settings.threads << " engine thread(s) each, time limit " << settings.timeout_seconds
+      << " s each, ref.extract tolerance " << tolerance_text(settings.tolerance) << " %, work folder "
+      << settings.work_dir.string() << (settings.update ? ", updating references" : "") << "\n\n";
+
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<RegressResult> results = run_decks(decks, settings, out);
   const double total_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out << '\n';
   write_regress_table(out, results, settings.tolerance);
 
-  int code = kExitOk;
-  std::size_t failing = 0;
-  for (const auto& r : results)
-    if (is_failure(r.status)) {
-      code = kExitInputError;
-      ++failing;
-    }
+  const auto failing = static_cast<std::size_t>(std::count_if(
+      results.begin(), results.end(), [](const RegressResult& r) { return is_failure(r.status); }));
+  int code = failing ? kExitInputError : kExitOk;
   // The run folders of passing decks are already gone (unless kept): what is left is the failures'.
   if (!settings.keep && failing == 0) fs::remove_all(settings.work_dir, ec);
   out << "\nwall time " << seconds_text(total_seconds) << "; work folder " << settings.work_dir.string();
@@ -1315,22 +1338,21 @@ int regress_command(const std::vector<std::string>& args, const fs::path& execut
     out << " removed (--keep keeps it)\n";
   else
     out << " keeps the " << failing << " failing deck(s)' outputs and run.log\n";
-  const auto write_file = [&](const std::string& path, const std::string& text, const char* what) {
+  const auto write_report = [&](const std::string& path, const std::string& text, const char* what) {
     if (const fs::path parent = fs::path(path).parent_path(); !parent.empty())
       fs::create_directories(parent, ec);
-    std::ofstream f(path, std::ios::trunc);
-    f << text;
-    f.close();
-    if (!f) {
-      err << "radx regress: cannot write " << path << '\n';
+    std::string error;
+    if (!write_text_atomically(path, text, error)) {
+      err << "radx regress: " << error << '\n';
       code = kExitInputError;
       return;
     }
     out << what << ' ' << path << '\n';
   };
-  if (!summary_file.empty())
-    write_file(summary_file, regress_summary_json(results, settings, settings.keep), "summary");
-  if (!junit_file.empty()) write_file(junit_file, regress_junit_xml(results, total_seconds), "JUnit report");
+  if (!o.summary_file.empty())
+    write_report(o.summary_file, regress_summary_json(results, settings, settings.keep), "summary");
+  if (!o.junit_file.empty())
+    write_report(o.junit_file, regress_junit_xml(results, total_seconds), "JUnit report");
   return code;
 }
 
