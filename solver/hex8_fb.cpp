@@ -62,6 +62,7 @@
 #include <limits>
 #include <numbers>
 
+#include "solver/element_gather.hpp"
 #include "solver/element_groups.hpp"
 
 namespace radx::solver {
@@ -107,9 +108,7 @@ void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& ma
 
   const std::int32_t* conn = g.conn.data();
   double* force = g.nodal_force.data();
-  auto clear_force = [&](std::size_t i) {
-    for (std::size_t r = 0; r < 24; ++r) force[r * G + i] = 0.0;
-  };
+  auto clear_force = [&](std::size_t i) { clear_nodal_forces<8, 3>(force, G, i); };
 
   // One element at a time through local arrays. The short fixed-count loops carry "GCC unroll": GCC does
   // not unroll them completely at -O2, and unrolled the kernel runs about 35 % fewer instructions.
@@ -125,16 +124,7 @@ void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& ma
 
     // Gather.
     double x[8][3], v[8][3];
-#pragma GCC unroll 8
-    for (std::size_t k = 0; k < 8; ++k) {
-      const auto nd = static_cast<std::size_t>(conn[k * G + i]);
-      x[k][0] = nodes.x[nd];
-      x[k][1] = nodes.y[nd];
-      x[k][2] = nodes.z[nd];
-      v[k][0] = nodes.vx[nd];
-      v[k][1] = nodes.vy[nd];
-      v[k][2] = nodes.vz[nd];
-    }
+    gather_element<8>(conn, G, i, nodes, x, v);
 
     // /DT/BRICK/CST switched this element: freeze its coordinates once, then take the geometry (gradients,
     // volume, density, step) from them; the velocities stay current (small strain).
@@ -326,10 +316,7 @@ void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& ma
     }
 
     // Store.
-#pragma GCC unroll 8
-    for (std::size_t k = 0; k < 8; ++k)
-#pragma GCC unroll 8
-      for (std::size_t d = 0; d < 3; ++d) force[(k * 3 + d) * G + i] = off * f[k][d];
+    store_nodal_forces<8, 3>(force, G, i, off, f);
 #pragma GCC unroll 8
     for (int m = 0; m < 6; ++m) g.sig[static_cast<std::size_t>(m) * G + i] = sn[m];
     g.eps_p[i] = eps_p;
