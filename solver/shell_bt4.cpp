@@ -62,7 +62,9 @@
 #include <cstddef>
 #include <limits>
 
+#include "solver/element_gather.hpp"
 #include "solver/element_groups.hpp"
+#include "solver/shell_frame.hpp"
 #include "solver/shell_section.hpp"
 
 namespace radx::solver {
@@ -77,11 +79,10 @@ inline double signed_floor(double v, double eps) {
 
 // Scratch of one block, [quantity][slot].
 struct Bt4Block {
-  double x[4][kBlock], y[4][kBlock], z[4][kBlock];     // node coordinates
-  double vx[4][kBlock], vy[4][kBlock], vz[4][kBlock];  // node velocities, global then local
-  double rx[4][kBlock], ry[4][kBlock], rz[4][kBlock];  // node rotational velocities, global
+  NodeBlock<4, kBlock> nb;                             // gathered positions and velocities, global axes
+  shell_detail::FrameBlock<kBlock> fr;                 // frame e1 e2 e3
+  double vx[4][kBlock], vy[4][kBlock], vz[4][kBlock];  // node velocities, local
   double rxh[kBlock], ryh[kBlock];                     // local hourglass rotation rates
-  double e1[3][kBlock], e2[3][kBlock], e3[3][kBlock];  // frame
   double lx[4][kBlock], ly[4][kBlock];                 // local coordinates (node 1 at 0)
   double px1[kBlock], py1[kBlock], px2[kBlock], py2[kBlock];
   double area[kBlock], ainv[kBlock], l2[kBlock], nondeg[kBlock], off[kBlock], rate[kBlock];
@@ -134,15 +135,6 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const double fail_limit = failure_limit(mat);  // EPS_p_max (6.4)
 
-  const double* X = nodes.x.data();
-  const double* Y = nodes.y.data();
-  const double* Z = nodes.z.data();
-  const double* VX = nodes.vx.data();
-  const double* VY = nodes.vy.data();
-  const double* VZ = nodes.vz.data();
-  const double* WX = nodes.wx.data();
-  const double* WY = nodes.wy.data();
-  const double* WZ = nodes.wz.data();
   const std::int32_t* conn = g.conn.data();
   double* thick = g.thick.data();
   const double* t0 = g.t0.data();
@@ -172,25 +164,11 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
   for (int i0 = 0; i0 < g.count; i0 += kBlock) {
     const int len = std::min(kBlock, g.count - i0);
 
-    // Gather.
-    for (int j = 0; j < len; ++j) {
-      const std::size_t ii = static_cast<std::size_t>(i0 + j);
-      std::int32_t n[4];
-      for (int k = 0; k < 4; ++k) {
-        n[k] = conn[k * G + ii];
-        bk.x[k][j] = X[n[k]];
-        bk.y[k][j] = Y[n[k]];
-        bk.z[k][j] = Z[n[k]];
-        bk.vx[k][j] = VX[n[k]];
-        bk.vy[k][j] = VY[n[k]];
-        bk.vz[k][j] = VZ[n[k]];
-        bk.rx[k][j] = WX[n[k]];
-        bk.ry[k][j] = WY[n[k]];
-        bk.rz[k][j] = WZ[n[k]];
-      }
-      bk.nondeg[j] = n[2] != n[3] ? 1.0 : 0.0;
-    }
-    // Thickness (thick = 0 is taken as t0 on first use) and the frame vectors g1, g2, g1 x g2 [1.2].
+    // Gather [architecture.md 4.3] and frame [1.2].
+    gather_block<true>(conn, G, static_cast<std::size_t>(i0), static_cast<std::size_t>(len), nodes, bk.nb);
+    for (int j = 0; j < len; ++j) bk.nondeg[j] = bk.nb.node[2][j] != bk.nb.node[3][j] ? 1.0 : 0.0;
+    quad_frame_block(bk.nb, len, bk.fr);
+    // Thickness (thick = 0 is taken as t0 on first use).
     RADX_IVDEP
     for (int j = 0; j < len; ++j) {
       const std::size_t ii = static_cast<std::size_t>(i0 + j);
@@ -199,47 +177,13 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
       const double th = (off0 > 0.0 && th0 <= 0.0) ? t0i : th0;
       thick[ii] = th;
       sec.t[j] = update_thick ? th : t0i;
-      const double g1x = (bk.x[1][j] - bk.x[0][j]) + (bk.x[2][j] - bk.x[3][j]),
-                   g1y = (bk.y[1][j] - bk.y[0][j]) + (bk.y[2][j] - bk.y[3][j]),
-                   g1z = (bk.z[1][j] - bk.z[0][j]) + (bk.z[2][j] - bk.z[3][j]);
-      const double g2x = (bk.x[2][j] - bk.x[1][j]) + (bk.x[3][j] - bk.x[0][j]),
-                   g2y = (bk.y[2][j] - bk.y[1][j]) + (bk.y[3][j] - bk.y[0][j]),
-                   g2z = (bk.z[2][j] - bk.z[1][j]) + (bk.z[3][j] - bk.z[0][j]);
-      const double e3x = g1y * g2z - g1z * g2y, e3y = g1z * g2x - g1x * g2z, e3z = g1x * g2y - g1y * g2x;
-      bk.e1[0][j] = g1x, bk.e1[1][j] = g1y, bk.e1[2][j] = g1z;  // g1, g2 for the next stage
-      bk.e2[0][j] = g2x, bk.e2[1][j] = g2y, bk.e2[2][j] = g2z;
-      bk.e3[0][j] = e3x, bk.e3[1][j] = e3y, bk.e3[2][j] = e3z;
-      bk.root[0][j] = e3x * e3x + e3y * e3y + e3z * e3z;
-      bk.root[1][j] = g1x * g1x + g1y * g1y + g1z * g1z;
-      bk.root[2][j] = g2x * g2x + g2y * g2y + g2z * g2z;
     }
-    sqrt_in_place(bk.root[0], 3 * kBlock);
-    // e3 = g1 x g2 / |g1 x g2|, e1 before its normalisation.
+    // Local geometry, local velocities and the increments [1.3].
     RADX_IVDEP
     for (int j = 0; j < len; ++j) {
-      const double n3 = bk.root[0][j], ng1 = bk.root[1][j], ng2 = bk.root[2][j];
-      const double inv = 1.0 / std::max(n3, tiny30);
-      const double e3x = bk.e3[0][j] * inv, e3y = bk.e3[1][j] * inv, e3z = bk.e3[2][j] * inv;
-      bk.e3[0][j] = e3x, bk.e3[1][j] = e3y, bk.e3[2][j] = e3z;
-      const double f12 = ng1 / std::max(ng2, tiny30);
-      const double g2x = bk.e2[0][j], g2y = bk.e2[1][j], g2z = bk.e2[2][j];
-      const double e1x = bk.e1[0][j] + f12 * (g2y * e3z - g2z * e3y),
-                   e1y = bk.e1[1][j] + f12 * (g2z * e3x - g2x * e3z),
-                   e1z = bk.e1[2][j] + f12 * (g2x * e3y - g2y * e3x);
-      bk.e1[0][j] = e1x, bk.e1[1][j] = e1y, bk.e1[2][j] = e1z;
-      bk.root[0][j] = e1x * e1x + e1y * e1y + e1z * e1z;
-    }
-    sqrt_in_place(bk.root[0], kBlock);
-    // e1, e2, local geometry, local velocities and the increments [1.3].
-    RADX_IVDEP
-    for (int j = 0; j < len; ++j) {
-      const double n1 = bk.root[0][j];
-      const double inv = 1.0 / std::max(n1, tiny30);
-      const double e1x = bk.e1[0][j] * inv, e1y = bk.e1[1][j] * inv, e1z = bk.e1[2][j] * inv;
-      const double e3x = bk.e3[0][j], e3y = bk.e3[1][j], e3z = bk.e3[2][j];
-      const double e2x = e3y * e1z - e3z * e1y, e2y = e3z * e1x - e3x * e1z, e2z = e3x * e1y - e3y * e1x;
-      bk.e1[0][j] = e1x, bk.e1[1][j] = e1y, bk.e1[2][j] = e1z;
-      bk.e2[0][j] = e2x, bk.e2[1][j] = e2y, bk.e2[2][j] = e2z;
+      const double e1x = bk.fr.e1[0][j], e1y = bk.fr.e1[1][j], e1z = bk.fr.e1[2][j];
+      const double e2x = bk.fr.e2[0][j], e2y = bk.fr.e2[1][j], e2z = bk.fr.e2[2][j];
+      const double e3x = bk.fr.e3[0][j], e3y = bk.fr.e3[1][j], e3z = bk.fr.e3[2][j];
       double lx[4], ly[4];
       lx[0] = ly[0] = 0.0;
       // Small strain after a /DT/SHELL/CST switch: the local coordinates are frozen at the first cycle after
@@ -248,7 +192,8 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
       const std::size_t ii = static_cast<std::size_t>(i0 + j);
       const double sm = small[ii], cap = capture[ii];
       for (int k = 1; k < 4; ++k) {
-        const double dx = bk.x[k][j] - bk.x[0][j], dy = bk.y[k][j] - bk.y[0][j], dz = bk.z[k][j] - bk.z[0][j];
+        const double dx = bk.nb.x[k][j] - bk.nb.x[0][j], dy = bk.nb.y[k][j] - bk.nb.y[0][j],
+                     dz = bk.nb.z[k][j] - bk.nb.z[0][j];
         const double cx = e1x * dx + e1y * dy + e1z * dz, cy = e2x * dx + e2y * dy + e2z * dz;
         double& rx0 = ref[static_cast<std::size_t>(k - 1) * G + ii];
         double& ry0 = ref[static_cast<std::size_t>(k + 2) * G + ii];
@@ -269,13 +214,11 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
 
       double vx[4], vy[4], vz[4], rx[4], ry[4];
       for (int k = 0; k < 4; ++k) {
-        const double ux = bk.vx[k][j], uy = bk.vy[k][j], uz = bk.vz[k][j];
-        const double wx = bk.rx[k][j], wy = bk.ry[k][j], wz = bk.rz[k][j];
-        vx[k] = e1x * ux + e1y * uy + e1z * uz;
-        vy[k] = e2x * ux + e2y * uy + e2z * uz;
-        vz[k] = e3x * ux + e3y * uy + e3z * uz;
-        rx[k] = e1x * wx + e1y * wy + e1z * wz;
-        ry[k] = e2x * wx + e2y * wy + e2z * wz;
+        double rz_unused = 0;
+        to_local(e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y, e3z, bk.nb.vx[k][j], bk.nb.vy[k][j], bk.nb.vz[k][j],
+                 vx[k], vy[k], vz[k]);
+        to_local(e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y, e3z, bk.nb.rx[k][j], bk.nb.ry[k][j], bk.nb.rz[k][j],
+                 rx[k], ry[k], rz_unused);
         bk.vx[k][j] = vx[k], bk.vy[k][j] = vy[k], bk.vz[k][j] = vz[k];
       }
       bk.rxh[j] = rx[0] - rx[1] + rx[2] - rx[3];  // hourglass rotation rates [1.7]
@@ -453,20 +396,13 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
     RADX_IVDEP
     for (int j = 0; j < len; ++j) {
       const std::size_t ii = static_cast<std::size_t>(i0 + j);
-      const double e1x = bk.e1[0][j], e1y = bk.e1[1][j], e1z = bk.e1[2][j];
-      const double e2x = bk.e2[0][j], e2y = bk.e2[1][j], e2z = bk.e2[2][j];
-      const double e3x = bk.e3[0][j], e3y = bk.e3[1][j], e3z = bk.e3[2][j];
-      for (int k = 0; k < 4; ++k) {
-        const double fx = bk.fl[0][k][j], fy = bk.fl[1][k][j], fz = bk.fl[2][k][j];
-        const double mx = bk.fl[3][k][j], my = bk.fl[4][k][j];
-        double* o = nf + static_cast<std::size_t>(k) * 6 * G + ii;
-        o[0] = -(fx * e1x + fy * e2x + fz * e3x);
-        o[G] = -(fx * e1y + fy * e2y + fz * e3y);
-        o[2 * G] = -(fx * e1z + fy * e2z + fz * e3z);
-        o[3 * G] = -(mx * e1x + my * e2x);
-        o[4 * G] = -(mx * e1y + my * e2y);
-        o[5 * G] = -(mx * e1z + my * e2z);
-      }
+      const double e1x = bk.fr.e1[0][j], e1y = bk.fr.e1[1][j], e1z = bk.fr.e1[2][j];
+      const double e2x = bk.fr.e2[0][j], e2y = bk.fr.e2[1][j], e2z = bk.fr.e2[2][j];
+      const double e3x = bk.fr.e3[0][j], e3y = bk.fr.e3[1][j], e3z = bk.fr.e3[2][j];
+      for (int k = 0; k < 4; ++k)
+        store_local_forces(nf, G, static_cast<std::size_t>(k), ii, e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y,
+                           e3z, bk.fl[0][k][j], bk.fl[1][k][j], bk.fl[2][k][j], bk.fl[3][k][j],
+                           bk.fl[4][k][j]);
       const double area = bk.area[j], t = sec.t[j], l2 = bk.l2[j], l = bk.root[1][j];
       dts[ii] = l * phi / c;
       k_nodal[ii] = 0.81 * 0.5 * area * t * young / l2;

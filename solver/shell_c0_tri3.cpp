@@ -34,7 +34,9 @@
 #include <cstddef>
 #include <limits>
 
+#include "solver/element_gather.hpp"
 #include "solver/element_groups.hpp"
+#include "solver/shell_frame.hpp"
 #include "solver/shell_section.hpp"
 
 namespace radx::solver {
@@ -49,6 +51,7 @@ inline double signed_floor3(double v, double eps) {
 
 // What the force stage needs from the geometry stage, [quantity][slot].
 struct Tri3Block {
+  NodeBlock<3, kBlock> nb;  // gathered positions and velocities, global axes
   double e1[3][kBlock], e2[3][kBlock], e3[3][kBlock];
   double px1[kBlock], py1[kBlock], py2[kBlock], x2[kBlock], x3[kBlock], y3[kBlock];
   shell_detail::SectionBlock<kBlock> sec;
@@ -80,15 +83,6 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
   const double fail_limit = failure_limit(mat);  // EPS_p_max (6.4)
   constexpr double kThird = 1.0 / 3.0;
 
-  const double* X = nodes.x.data();
-  const double* Y = nodes.y.data();
-  const double* Z = nodes.z.data();
-  const double* VX = nodes.vx.data();
-  const double* VY = nodes.vy.data();
-  const double* VZ = nodes.vz.data();
-  const double* WX = nodes.wx.data();
-  const double* WY = nodes.wy.data();
-  const double* WZ = nodes.wz.data();
   double* nf = g.nodal_force.data();
 
   Tri3Block bk;
@@ -96,7 +90,9 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
   for (int i0 = 0; i0 < g.count; i0 += kBlock) {
     const int len = std::min(kBlock, g.count - i0);
 
-    // Geometry, rates and increments.
+    // Gather [architecture.md 4.3], geometry, rates and increments.
+    gather_block<true>(g.conn.data(), G, static_cast<std::size_t>(i0), static_cast<std::size_t>(len), nodes,
+                       bk.nb);
     for (int j = 0; j < len; ++j) {
       const std::size_t ii = static_cast<std::size_t>(i0 + j);
       const double off_start = g.off[ii];
@@ -108,29 +104,18 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
         sec.rfac[j] = 1.0;
         continue;
       }
-      std::int32_t n[3];
-      double px[3], py[3], pz[3];
-      for (int k = 0; k < 3; ++k) {
-        n[k] = g.conn[k * G + ii];
-        px[k] = X[n[k]];
-        py[k] = Y[n[k]];
-        pz[k] = Z[n[k]];
-      }
+      const double px[3] = {bk.nb.x[0][j], bk.nb.x[1][j], bk.nb.x[2][j]};
+      const double py[3] = {bk.nb.y[0][j], bk.nb.y[1][j], bk.nb.y[2][j]};
+      const double pz[3] = {bk.nb.z[0][j], bk.nb.z[1][j], bk.nb.z[2][j]};
       if (g.thick[ii] <= 0.0) g.thick[ii] = g.t0[ii];
       const double t = pr.ithick == 1 ? g.thick[ii] : g.t0[ii];
 
       // Frame [2].
-      const double d21x = px[1] - px[0], d21y = py[1] - py[0], d21z = pz[1] - pz[0];
+      double e1[3], e2[3], e3[3];
+      const double x2_now = tri_frame(px, py, pz, e1, e2, e3);
+      const double e1x = e1[0], e1y = e1[1], e1z = e1[2], e2x = e2[0], e2y = e2[1], e2z = e2[2];
+      const double e3x = e3[0], e3y = e3[1], e3z = e3[2];
       const double d31x = px[2] - px[0], d31y = py[2] - py[0], d31z = pz[2] - pz[0];
-      const double d32x = px[2] - px[1], d32y = py[2] - py[1], d32z = pz[2] - pz[1];
-      const double x2_now = std::sqrt(d21x * d21x + d21y * d21y + d21z * d21z);
-      double inv = 1.0 / std::max(x2_now, 1e-30);
-      const double e1x = d21x * inv, e1y = d21y * inv, e1z = d21z * inv;
-      double e3x = d31y * d32z - d31z * d32y, e3y = d31z * d32x - d31x * d32z,
-             e3z = d31x * d32y - d31y * d32x;
-      inv = 1.0 / std::max(std::sqrt(e3x * e3x + e3y * e3y + e3z * e3z), 1e-30);
-      e3x *= inv, e3y *= inv, e3z *= inv;
-      const double e2x = e3y * e1z - e3z * e1y, e2y = e3z * e1x - e3x * e1z, e2z = e3x * e1y - e3y * e1x;
       double x2 = x2_now;
       double x3 = e1x * d31x + e1y * d31y + e1z * d31z;
       double y3 = e2x * d31x + e2y * d31y + e2z * d31z;
@@ -150,13 +135,11 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
 
       double vx[3], vy[3], vz[3], rx[3], ry[3];
       for (int k = 0; k < 3; ++k) {
-        const double ux = VX[n[k]], uy = VY[n[k]], uz = VZ[n[k]];
-        const double wx = WX[n[k]], wy = WY[n[k]], wz = WZ[n[k]];
-        vx[k] = e1x * ux + e1y * uy + e1z * uz;
-        vy[k] = e2x * ux + e2y * uy + e2z * uz;
-        vz[k] = e3x * ux + e3y * uy + e3z * uz;
-        rx[k] = e1x * wx + e1y * wy + e1z * wz;
-        ry[k] = e2x * wx + e2y * wy + e2z * wz;
+        double rz_unused = 0;
+        to_local(e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y, e3z, bk.nb.vx[k][j], bk.nb.vy[k][j], bk.nb.vz[k][j],
+                 vx[k], vy[k], vz[k]);
+        to_local(e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y, e3z, bk.nb.rx[k][j], bk.nb.ry[k][j], bk.nb.rz[k][j],
+                 rx[k], ry[k], rz_unused);
       }
 
       // Large-rotation correction (T11, T22 only for Ish3n 2).
@@ -284,15 +267,9 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
       const double e1x = bk.e1[0][j], e1y = bk.e1[1][j], e1z = bk.e1[2][j];
       const double e2x = bk.e2[0][j], e2y = bk.e2[1][j], e2z = bk.e2[2][j];
       const double e3x = bk.e3[0][j], e3y = bk.e3[1][j], e3z = bk.e3[2][j];
-      for (int k = 0; k < 3; ++k) {
-        double* o = nf + static_cast<std::size_t>(k) * 6 * G + ii;
-        o[0] = -(fx[k] * e1x + fy[k] * e2x + fz[k] * e3x);
-        o[G] = -(fx[k] * e1y + fy[k] * e2y + fz[k] * e3y);
-        o[2 * G] = -(fx[k] * e1z + fy[k] * e2z + fz[k] * e3z);
-        o[3 * G] = -(mx[k] * e1x + my[k] * e2x);
-        o[4 * G] = -(mx[k] * e1y + my[k] * e2y);
-        o[5 * G] = -(mx[k] * e1z + my[k] * e2z);
-      }
+      for (int k = 0; k < 3; ++k)
+        store_local_forces(nf, G, static_cast<std::size_t>(k), ii, e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y,
+                           e3z, fx[k], fy[k], fz[k], mx[k], my[k]);
 
       // Element step [4.2] and nodal stiffness [4.5].
       const double x2 = bk.x2[j], x3 = bk.x3[j], y3 = bk.y3[j];
