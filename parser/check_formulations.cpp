@@ -5,9 +5,10 @@
 // on quadrangles, Icpre on one-point bricks) is not checked either.
 //
 // What radx implements (shared/spec/elements.md):
-//   4-node shells:  Ishell 1 (Belytschko-Tsay, viscous + elastic hourglass), Ismstr 2 (large strain, small
-//                   strain only after /DT/SHELL/CST) and 1 (small strain from the start), Ithick 1/2,
-//                   Iplas 1/2
+//   4-node shells:  Ishell 1 (Belytschko-Tsay, viscous + elastic hourglass), 12 (QBAT: four Gauss points,
+//                   assumed transverse shear) and 24 (QEPH: one point with physical hourglass stabilisation),
+//                   Ismstr 2 (large strain, small strain only after /DT/SHELL/CST) and 1 (small strain from
+//                   the start, Ishell 1 only), Ithick 1/2, Iplas 1/2; every other Ishell is refused by name
 //   3-node shells:  Ish3n 2 (C0) and 1 (C0 without the in-plane large-rotation terms), Ismstr 2 and 1
 //   8-node bricks:  Isolid 1 (one point, Flanagan-Belytschko viscous hourglass) and 2 (plain h vectors),
 //                   Ismstr 4 (large strain) and 2 (large strain, small strain after a /DT/BRICK/CST switch:
@@ -132,7 +133,8 @@ void ModelBuilder::check_formulations() {
     if (path == "/PROP/SHELL") {
       auto& s = prop.shell;
       if (used & kQuad)
-        flag("Ishell", s.ishell, s.ishell == 1, 1, ishell_name(s.ishell), ishell_name(1), "4-node shells");
+        flag("Ishell", s.ishell, s.ishell == 1 || s.ishell == 12 || s.ishell == 24, 1, ishell_name(s.ishell),
+             ishell_name(1), "4-node shells");
       if (used & kTri)
         flag("Ish3n", s.ish3n, s.ish3n == 1 || s.ish3n == 2, 2, ish3n_name(s.ish3n), ish3n_name(2),
              "3-node shells");

@@ -312,7 +312,8 @@ void ModelBuilder::build_properties() {
       s.dm = r.get_real("Dm");
       s.dn = r.get_real("Dn");
       if (s.dn == 0 && s.ishell == 24) s.dn = 0.015;
-      s.n_ip = static_cast<int>(r.get_int("N"));  // 0 to 10: the field's rule (keywords_starter.cpp)
+      if (s.dm == 0 && s.ishell == 24) s.dm = 0.015;  // QEPH's membrane damping default (elements.md 1.10)
+      s.n_ip = static_cast<int>(r.get_int("N"));      // 0 to 10: the field's rule (keywords_starter.cpp)
       s.thickness = r.get_real("Thick");
       if (s.thickness < 0)
         error_at(r, "Thick", Diag::NonPositiveThickness,

@@ -716,12 +716,13 @@ def _():
         "/CTCLAW/3: tabulated law n3 names /FUNCT/12; only /FUNCT/11 exists", [("RX704", "CTC.law")]
 
 
-@fault("ishell_24_qeph")
+@fault("ishell_4_warped")
 def _():
     d = base()
-    d.update("PSH", Ishell=24)
-    return d, "/PROP/SHELL/1 Ishell = 24 (QEPH) on the plate's 4-node shells: radx implements Ishell 1 only " \
-        "(--allow-substitutions would run Ishell 1 and list it)", [("RX510", "PSH.Ishell")]
+    d.update("PSH", Ishell=4)
+    return d, "/PROP/SHELL/1 Ishell = 4 (improved Belytschko-Tsay with warping) on the plate's 4-node shells: " \
+        "radx implements Ishell 1, 12 and 24 only (--allow-substitutions would run Ishell 1 and list it)", \
+        [("RX510", "PSH.Ishell")]
 
 
 @fault("isolid_14_from_def_solid")

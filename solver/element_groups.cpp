@@ -2,9 +2,11 @@
 
 namespace radx::solver {
 
-void ShellGroup::allocate(int n, int points) {
+void ShellGroup::allocate(int n, int points, int gauss_points, int hg_rows) {
   count = n;
   props.n_points = points;
+  gauss = gauss_points;
+  const auto ng = static_cast<std::size_t>(gauss_points);
   const auto G = static_cast<std::size_t>(kGroupSize);
   const auto np = static_cast<std::size_t>(points > 0 ? points : 1);
   conn.assign(4 * G, 0);
@@ -15,9 +17,9 @@ void ShellGroup::allocate(int n, int points) {
   small.assign(G, 0.0);
   ref_local.assign(6 * G, 0.0);
   // N = 0 (resultant elasticity) keeps 5 force and 3 moment resultants.
-  sig.assign((points > 0 ? np * 5 : 8) * G, 0.0);
-  eps_p.assign(np * G, 0.0);
-  hg.assign(3 * G, 0.0);
+  sig.assign(ng * (points > 0 ? np * 5 : 8) * G, 0.0);
+  eps_p.assign(ng * np * G, 0.0);
+  hg.assign(static_cast<std::size_t>(hg_rows) * G, 0.0);
   nodal_force.assign(4 * 6 * G, 0.0);
 }
 

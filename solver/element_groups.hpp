@@ -27,11 +27,22 @@ struct ShellProps {
   int ish3n = 2;     // 3-node shells: 2 with the in-plane large-rotation terms T11, T22; 1 without
   int n_points = 3;  // through-thickness points, >= 1; 0 = resultant elasticity (LAW1 only)
   double hm = 0.01, hf = 0.01, hr = 0.01, dm = 0, ashear = 5.0 / 6.0;
+  double dn = 0;  // QEPH numerical damping of the stabilisation (elements.md 1.10; 0.015 by default)
+};
+
+// The shell kernel a group runs: one enum value per formulation, one switch in the engine.
+enum class ShellKernel : std::uint8_t {
+  Bt4,   // Ishell 1 (shell_bt4.cpp)
+  Tri3,  // 3-node C0 (shell_c0_tri3.cpp)
+  Qeph,  // Ishell 24 (shell_qeph.cpp)
+  Qbat,  // Ishell 12 (shell_qbat.cpp)
 };
 
 struct ShellGroup {
-  int count = 0;                      // elements in this group
-  bool triangle = false;              // 3-node C0 shells (conn rows 0..2)
+  int count = 0;          // elements in this group
+  bool triangle = false;  // 3-node C0 shells (conn rows 0..2)
+  ShellKernel kernel = ShellKernel::Bt4;
+  int gauss = 1;                      // in-plane integration points: 4 for QBAT (each with n_points)
   std::vector<std::int32_t> element;  // [G] index of each slot's element in its model block
   std::int32_t part = -1;             // dense part index (all elements of a group share it)
   std::int32_t material = -1;         // index into the engine's MaterialParams
@@ -41,9 +52,11 @@ struct ShellGroup {
   std::vector<double> thick;       // [G] current thickness (output; mechanics when ithick = 1)
   std::vector<double> area0;       // [G] initial area
   std::vector<double> off;         // [G] 1 alive, decaying by 0.8 after failure, 0 deleted
-  std::vector<double> sig;         // [n_points][5][G]  sxx syy sxy syz szx, local frame
-  std::vector<double> eps_p;       // [n_points][G]
-  std::vector<double> hg;          // [3][G] elastic hourglass resultants Sx Sy Sz (Ishell 1)
+  std::vector<double> sig;         // [gauss][n_points][5][G]  sxx syy sxy syz szx, local frame
+  std::vector<double> eps_p;       // [gauss][n_points][G]
+  std::vector<double> hg;          // [3][G] elastic hourglass resultants Sx Sy Sz (Ishell 1);
+                                   // QEPH: [4][6][G] stabilisation resultants at the 4 Gauss points
+                                   // (shell_qeph.cpp)
   std::vector<double> e_int;       // [G] accumulated internal energy (membrane + bending)
   std::vector<double> e_hg;        // [G] accumulated hourglass energy
   std::vector<double> w_plastic;   // [G] accumulated plastic work
@@ -57,7 +70,9 @@ struct ShellGroup {
   std::vector<double> k_nodal;      // [G] nodal stiffness contribution of each node (for nodal steps)
   std::vector<double> nodal_force;  // [4][6][G] force (fx fy fz) and moment (mx my mz) ADDED to each node,
                                     // global axes (internal forces enter with their minus sign)
-  void allocate(int n, int points);
+  // n elements, `points` through the thickness (0: resultants), `gauss_points` in the plane, `hg_rows` rows
+  // of hourglass state.
+  void allocate(int n, int points, int gauss_points = 1, int hg_rows = 3);
 };
 
 struct BrickGroup {
@@ -98,6 +113,10 @@ struct BrickGroup {
 void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
                           const CycleInfo& cyc);
+void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                       const CycleInfo& cyc);
+void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                       const CycleInfo& cyc);
 void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 
 }  // namespace radx::solver

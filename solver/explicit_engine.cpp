@@ -84,7 +84,12 @@ void ExplicitEngine::build_nodes() {
     const double t0 = model::shell_thickness(m, m.shells, e);
     const double a0 = model::quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[3]));
     const double me = rho_of(m.shells.part[e]) * t0 * a0;
-    const double inertia = 0.25 * me * (a0 / 9.0 + t0 * t0 / 12.0);
+    // Divisor of the in-plane term: 9, or 12 for QBAT and QEPH (elements.md 5, cinmas.F: internal IHBE >=
+    // 11).
+    const auto part = m.shells.part[e];
+    const int ishell = m.properties[m.parts[part].property].shell.ishell;
+    const double in_plane = (ishell == 12 || ishell == 24) ? 12.0 : 9.0;
+    const double inertia = 0.25 * me * (a0 / in_plane + t0 * t0 / 12.0);
     for (int k = 0; k < 4; ++k) nodes_.inertia[c[k]] += inertia;
   }
   for (std::size_t e = 0; e < m.shells3.size(); ++e) {
@@ -128,7 +133,15 @@ void ExplicitEngine::build_groups() {
       while (end < order.size() && b.part[order[end]] == part &&
              end - k < static_cast<std::size_t>(kGroupSize))
         ++end;
-      g.allocate(static_cast<int>(end - k), points);
+      // The kernel of the property's formulation (check_formulations.cpp accepts only these).
+      const ShellKernel kernel = triangle            ? ShellKernel::Tri3
+                                 : prop.ishell == 24 ? ShellKernel::Qeph
+                                 : prop.ishell == 12 ? ShellKernel::Qbat
+                                                     : ShellKernel::Bt4;
+      const int gauss = kernel == ShellKernel::Qbat ? 4 : 1;
+      const int hg_rows = kernel == ShellKernel::Qeph ? 24 : 3;
+      g.allocate(static_cast<int>(end - k), points, gauss, hg_rows);
+      g.kernel = kernel;
       g.triangle = triangle;
       g.part = part;
       g.material = mat;
@@ -141,6 +154,7 @@ void ExplicitEngine::build_groups() {
       g.props.hf = prop.hf;
       g.props.hr = prop.hr;
       g.props.dm = prop.dm;
+      g.props.dn = prop.dn;
       g.props.ashear = points == 1 ? 0.0 : prop.ashear;
       for (int i = 0; i < g.count; ++i) {
         const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
@@ -243,10 +257,12 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
     for (std::int64_t k = 0; k < ns; ++k) {
       auto& g = shells_[static_cast<std::size_t>(k)];
       const auto& mat = materials_[static_cast<std::size_t>(g.material)];
-      if (g.triangle)
-        shell_c0_tri3_forces(g, nodes_, mat, cyc);
-      else
-        shell_bt4_forces(g, nodes_, mat, cyc);
+      switch (g.kernel) {
+        case ShellKernel::Bt4: shell_bt4_forces(g, nodes_, mat, cyc); break;
+        case ShellKernel::Tri3: shell_c0_tri3_forces(g, nodes_, mat, cyc); break;
+        case ShellKernel::Qeph: shell_qeph_forces(g, nodes_, mat, cyc); break;
+        case ShellKernel::Qbat: shell_qbat_forces(g, nodes_, mat, cyc); break;
+      }
     }
 #pragma omp for schedule(dynamic, 1)
     for (std::int64_t k = 0; k < nb; ++k) {

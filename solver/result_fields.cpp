@@ -125,12 +125,22 @@ void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
       const auto k = static_cast<std::size_t>(i);
       CellValues c;
       double loc[5] = {0, 0, 0, 0, 0};
-      if (np <= 0) {  // resultant elasticity: the first 5 rows are the mean stresses
-        for (int q = 0; q < 5; ++q) loc[q] = g.sig[static_cast<std::size_t>(q) * kGroupSize + k];
-      } else {
-        for (int p = 0; p < np; ++p) {
-          for (int q = 0; q < 5; ++q) loc[q] += rule.w[p] * g.sig[shell_detail::sig_index(p, q, i)];
-          c.eps_p = std::max(c.eps_p, g.eps_p[static_cast<std::size_t>(p) * kGroupSize + k]);
+      // QBAT keeps one state per in-plane Gauss point ([gauss][...]): the element's value is their mean (the
+      // Gauss points have nearly equal weights), and its eps_p the largest.
+      const std::size_t rows = static_cast<std::size_t>(np <= 0 ? 8 : 5 * np) * kGroupSize;
+      const std::size_t eps_rows = static_cast<std::size_t>(np <= 0 ? 1 : np) * kGroupSize;
+      const double per_point = 1.0 / g.gauss;
+      for (int gp = 0; gp < g.gauss; ++gp) {
+        const double* sig = g.sig.data() + static_cast<std::size_t>(gp) * rows;
+        const double* eps = g.eps_p.data() + static_cast<std::size_t>(gp) * eps_rows;
+        if (np <= 0) {  // resultant elasticity: the first 5 rows are the mean stresses
+          for (int q = 0; q < 5; ++q) loc[q] += per_point * sig[static_cast<std::size_t>(q) * kGroupSize + k];
+        } else {
+          for (int p = 0; p < np; ++p) {
+            for (int q = 0; q < 5; ++q)
+              loc[q] += per_point * rule.w[p] * sig[shell_detail::sig_index(p, q, i)];
+            c.eps_p = std::max(c.eps_p, eps[static_cast<std::size_t>(p) * kGroupSize + k]);
+          }
         }
       }
       Vec3 e1, e2, e3;

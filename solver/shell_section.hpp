@@ -1,6 +1,6 @@
-// Shared by the shell kernels (shell_bt4.cpp, shell_c0_tri3.cpp): the through-thickness integration of a
-// block of elements' sections, the element equivalent strain rate and the progressive failure factor.
-// Internal to the solver; not a public API.
+// Shared by the shell kernels (shell_bt4.cpp, shell_c0_tri3.cpp, shell_qeph.cpp, shell_qbat.cpp): the
+// through-thickness integration of a block of elements' sections, the element equivalent strain rate and the
+// progressive failure factor. Internal to the solver; not a public API.
 //
 // The section runs point by point (two points per pass) over the block's elements, vectorised: every point
 // gets its elastic trial and the sums, and the points that may yield (shell_stays_elastic false, see
@@ -226,13 +226,20 @@ std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParam
 
 // Section update of the block: N = 0 resultant elasticity, or the N points (1.4) with the material update
 // (6.3), thickness strain (1.8), plastic work (6.5) and the largest eps_p (6.4).
+//
+// sig_rows, eps_rows: the first rows of the state this section updates, laid out as ShellGroup::sig and
+// ::eps_p ([points][5][G] or [8][G], [points][G]); the group's own rows by default. QBAT keeps one such
+// state per in-plane Gauss point and passes each in turn.
 template <int B>
 void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& mat,
-                          const ThicknessRule& rule, double gs, SectionBlock<B>& s) {
+                          const ThicknessRule& rule, double gs, SectionBlock<B>& s,
+                          double* sig_rows = nullptr, double* eps_rows = nullptr) {
   constexpr std::size_t G = kGroupSize;
+  double* const sig_base = sig_rows != nullptr ? sig_rows : g.sig.data();
+  double* const eps_base = eps_rows != nullptr ? eps_rows : g.eps_p.data();
   if (rule.n == 0) {
     // Resultant elasticity (LAW1, N = 0).
-    double* r = g.sig.data() + i0;
+    double* r = sig_base + i0;
     const double a11 = mat.a11, a12 = mat.a12, gm = mat.shear;
     const double fz = -mat.nu / (1.0 - mat.nu);
     RADX_IVDEP
@@ -267,8 +274,8 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
   }
   const int iplas = g.props.iplas;
   const ShellYieldBound yb = shell_yield_bound(mat);
-  double* sig = g.sig.data() + i0;
-  double* eps_p = g.eps_p.data() + i0;
+  double* sig = sig_base + i0;
+  double* eps_p = eps_base + i0;
   bool any_redo = false;
   for (int p0 = 0; p0 < rule.n; p0 += 2) {
     const int pts = std::min(2, rule.n - p0);  // two points per pass: the sums are loaded and stored once
@@ -282,8 +289,8 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
       const int p = p0 + q;
       const double zeta = rule.zeta[p];
       double* sp[5];
-      for (int c = 0; c < 5; ++c) sp[c] = g.sig.data() + sig_index(p, c, i0);
-      double* ep = g.eps_p.data() + static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0);
+      for (int c = 0; c < 5; ++c) sp[c] = sig_base + sig_index(p, c, i0);
+      double* ep = eps_base + static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0);
       for (int j = 0; j < len; ++j) {
         if (s.exact[q][j] == 0) continue;
         if (s.off[j] <= 0) {
@@ -313,8 +320,8 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
       double fn[5] = {0, 0, 0, 0, 0}, mn[3] = {0, 0, 0}, dthk = 0, wpl = 0, epmax = 0;
       for (int p = 0; p < rule.n; ++p) {
         const double w = rule.w[p], m = rule.m[p];
-        for (int c = 0; c < 5; ++c) fn[c] += w * g.sig[sig_index(p, c, i0 + j)];
-        for (int c = 0; c < 3; ++c) mn[c] += m * g.sig[sig_index(p, c, i0 + j)];
+        for (int c = 0; c < 5; ++c) fn[c] += w * sig_base[sig_index(p, c, i0 + j)];
+        for (int c = 0; c < 3; ++c) mn[c] += m * sig_base[sig_index(p, c, i0 + j)];
         double dezz = 0, wp = 0;
         if (s.point_exact[p][j] != 0) {
           s.point_exact[p][j] = 0;
@@ -326,7 +333,7 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
         }
         wpl += wp * w * t * s.area[j];  // wp = 0 unless d_eps_p > 0
         dthk += dezz * w;
-        epmax = std::max(epmax, g.eps_p[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)]);
+        epmax = std::max(epmax, eps_base[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)]);
       }
       for (int c = 0; c < 5; ++c) s.for_new[c][j] = fn[c];
       for (int c = 0; c < 3; ++c) s.mom_new[c][j] = mn[c];

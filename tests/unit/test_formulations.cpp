@@ -62,17 +62,17 @@ std::string energy_block(const std::string& summary) {
 TEST_CASE("a shell formulation radx lacks is refused by name, or substituted and listed when allowed",
           "[starter][engine]") {
   radx::test::TempDir dir;
-  const auto deck24 = block_on_plate_with_ishell(dir.path() / "qeph", 24);
+  const auto deck4 = block_on_plate_with_ishell(dir.path() / "warped", 4);
   const auto deck1 = block_on_plate_with_ishell(dir.path() / "bt", 1);
-  REQUIRE(slurp(deck24).find("        24") != std::string::npos);
+  REQUIRE(slurp(deck4).find("         4") != std::string::npos);
 
   // Refused: exit code 1, the code, property, field, value and what radx implements; nothing written.
   const auto refused = dir.path() / "refused";
-  CHECK(run(deck24, refused, "", dir.path() / "refused.log") != 0);
+  CHECK(run(deck4, refused, "", dir.path() / "refused.log") != 0);
   const std::string log = slurp(dir.path() / "refused.log");
   CHECK(log.find("RX510") != std::string::npos);
   CHECK(log.find("/PROP/SHELL id 1") != std::string::npos);
-  CHECK(log.find("Ishell = 24 (QEPH") != std::string::npos);
+  CHECK(log.find("Ishell = 4 (improved Belytschko-Tsay") != std::string::npos);
   CHECK(log.find("radx implements Ishell = 1") != std::string::npos);
   CHECK(log.find("--allow-substitutions") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(refused / "BLOCK_ON_PLATE_0000.hdf"));
@@ -80,14 +80,15 @@ TEST_CASE("a shell formulation radx lacks is refused by name, or substituted and
 
   // Allowed: runs, and says so in the starter listing, the engine listing and the summary.
   const auto allowed = dir.path() / "allowed";
-  REQUIRE(run(deck24, allowed, "--allow-substitutions", dir.path() / "allowed.log") == 0);
+  REQUIRE(run(deck4, allowed, "--allow-substitutions", dir.path() / "allowed.log") == 0);
   const std::string starter = slurp(allowed / "BLOCK_ON_PLATE_0000.out");
   const std::string engine = slurp(allowed / "BLOCK_ON_PLATE_0001.out");
   const std::string summary = slurp(allowed / "BLOCK_ON_PLATE_summary.json");
   CHECK(starter.find("SUBSTITUTIONS") != std::string::npos);
   CHECK(starter.find("RX511") != std::string::npos);
   CHECK(engine.find("SUBSTITUTIONS") != std::string::npos);
-  CHECK(engine.find("Ishell = 24 (QEPH, physical hourglass) runs as Ishell = 1") != std::string::npos);
+  CHECK(engine.find("Ishell = 4 (improved Belytschko-Tsay with warping) runs as Ishell = 1") !=
+        std::string::npos);
   const auto key = summary.find("\"substitutions\"");
   REQUIRE(key != std::string::npos);
   const std::string list = summary.substr(key, summary.find(']', key) - key);

@@ -1,0 +1,254 @@
+// Four-node shell QBAT (Ishell 12): four integration points in the plane (2 x 2 Gauss), each with the N
+// through-thickness points of the section, and an assumed transverse shear field. Sources:
+// shared/spec/elements.md 1.1 (flags), 1.10 (the step, shared with QEPH), 4.5 and 5, read from OpenRadioss
+// cbaforc3.F (call sequence: four Gauss points, a material call at each, CNDT3 for the step as QEPH),
+// cbacoor.F (frame), cbadef.F (rates at the Gauss points, transverse shear from values tied at the edge
+// midpoints), cbafori.F (forces), cinmas.F (inertia). Written from the formulas, in our own words and
+// structure; what is our interpretation is marked [inferred].
+//
+// Frame and local coordinates: shell_frame.hpp (1.2), rebuilt every cycle; stresses stay in that frame.
+// Warping terms are not taken (flat element) [inferred].
+// At each Gauss point g (xi, eta = +-1/sqrt(3), weight det J(g); shell_quad_mindlin.hpp):
+//   de(g) = rows(g) v dt1 (membrane exx eyy gxy, curvature kxx kyy kxy, transverse shear gyz gzx from the
+//   assumed field tied at the edge midpoints [inferred to be the Bathe-Dvorkin/Batoz Q4gamma field]);
+//   the section (shell_section.hpp: 1.4, 1.8, 6.3, 6.5) updates FOR(g), MOM(g) at its N points;
+//   f_k = sum_g det J(g) rows(g)^T (N(g), M(g), Q(g)) times OFF, N = FOR t, M = MOM t^2, Q = FOR_shear t;
+//   E_int += sum_g 1/2 det J(g) t [(OFF_old FOR_old + OFF FOR_new).de_m + t (OFF_old MOM_old + OFF
+//   MOM_new).dkappa] (1.5 summed over the points).
+// Full 2 x 2 integration of the bilinear field has no zero-energy mode besides the drilling rotation (no
+// stiffness, as Ishell 1): there is no hourglass control and no hourglass energy. Hm, Hf, Hr are not used.
+// Element rate (1.3) and failure (6.4) are one value per element: the rate from the centre increments, OFF
+// from the largest eps_p over all points of all Gauss points.
+// Membrane damping (Dm > 0 only, 1.4) at each Gauss point, its work in the internal energy.
+// Step (1.10; stored before the /DT scale): dt = L (sqrt(1 + Dn^2) - Dn)/c, c = sqrt(E/rho), L of
+//   qeph_step_length; Dn stays 0 by default for QBAT (hm_read_prop01.F sets 0.015 for Ishell 24 only).
+//   Nodal stiffness (4.5, cndt3.F): k = 1/2 A t A11 / L^2.
+// Inertia (5): I = m/4 (A0/12 + t0^2/12), set by the engine.
+// Outputs: the element's stress is the mean over the Gauss points of the through-thickness mean
+//   (result_fields.cpp).
+//
+// Layout: as shell_qeph.cpp; the section runs four times per block, once per Gauss point, on that point's
+// own rows of ShellGroup::sig and ::eps_p ([gauss][n_points]...).
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "solver/element_gather.hpp"
+#include "solver/element_groups.hpp"
+#include "solver/shell_frame.hpp"
+#include "solver/shell_quad_mindlin.hpp"
+#include "solver/shell_section.hpp"
+
+namespace radx::solver {
+
+namespace {
+
+constexpr int kBlock = 64;  // elements per block (see shell_bt4.cpp)
+
+struct QbatBlock {
+  NodeBlock<4, kBlock> nb;
+  shell_detail::FrameBlock<kBlock> fr;
+  double vx[4][kBlock], vy[4][kBlock], vz[4][kBlock], rx[4][kBlock], ry[4][kBlock];  // local
+  double lx[4][kBlock], ly[4][kBlock];                                               // local coordinates
+  double t[kBlock], area[kBlock], rfac[kBlock], off[kBlock];
+  // Per Gauss point: increments and the section's resultants before and after the update.
+  double dem[4][5][kBlock], dk[4][3][kBlock];
+  double for_old[4][5][kBlock], for_new[4][5][kBlock], mom_old[4][3][kBlock], mom_new[4][3][kBlock];
+  double detj[4][kBlock];
+  double dthick[kBlock], w_plastic[kBlock], eps_p_max[kBlock];
+  shell_detail::SectionBlock<kBlock> sec;
+};
+
+}  // namespace
+
+void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                       const CycleInfo& cyc) {
+  using namespace shell_detail;
+  constexpr std::size_t G = kGroupSize;
+  const ShellProps& pr = g.props;
+  const double dt1 = cyc.dt1;
+  const ThicknessRule rule = thickness_rule(std::max(pr.n_points, 0));
+  // Rows of one Gauss point's state: [n][5] stresses, or 8 resultants for N = 0 (allocate() made 4 of them).
+  const std::size_t sig_rows = static_cast<std::size_t>(pr.n_points > 0 ? 5 * pr.n_points : 8);
+  const std::size_t eps_rows = static_cast<std::size_t>(std::max(pr.n_points, 1));
+
+  const double young = mat.young, nu = mat.nu, rho = mat.rho0;
+  const double c = mat.c_shell > 0 ? mat.c_shell : std::sqrt(young / rho);
+  const double a11 = mat.a11 > 0 ? mat.a11 : young / (1.0 - nu * nu);
+  const double shf = pr.n_points == 1 ? 0.0 : pr.ashear;
+  const double gs = shf * mat.shear;
+  const double dn = pr.dn;
+  const double phi = std::sqrt(1.0 + dn * dn) - dn;
+  const double visc0 = (pr.dm > 0 && dt1 > 0) ? 1.414 * pr.dm * rho * c / dt1 : 0.0;
+  const double alpha = rate_filter_alpha(mat, dt1);
+  const double fail_limit = failure_limit(mat);
+  const bool update_thick = pr.ithick == 1;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+
+  double* nf = g.nodal_force.data();
+
+  QbatBlock bk;
+  SectionBlock<kBlock>& sec = bk.sec;
+  for (int i0 = 0; i0 < g.count; i0 += kBlock) {
+    const int len = std::min(kBlock, g.count - i0);
+    gather_block<true>(g.conn.data(), G, static_cast<std::size_t>(i0), static_cast<std::size_t>(len), nodes,
+                       bk.nb);
+    quad_frame_block(bk.nb, len, bk.fr);
+
+    // Local geometry and velocities, the increments at the Gauss points and the element rate.
+    for (int j = 0; j < len; ++j) {
+      const std::size_t ii = static_cast<std::size_t>(i0 + j);
+      bk.off[j] = g.off[ii];
+      if (g.thick[ii] <= 0.0) g.thick[ii] = g.t0[ii];
+      bk.t[j] = update_thick ? g.thick[ii] : g.t0[ii];
+      const double e1[3] = {bk.fr.e1[0][j], bk.fr.e1[1][j], bk.fr.e1[2][j]};
+      const double e2[3] = {bk.fr.e2[0][j], bk.fr.e2[1][j], bk.fr.e2[2][j]};
+      const double e3[3] = {bk.fr.e3[0][j], bk.fr.e3[1][j], bk.fr.e3[2][j]};
+      double lx[4] = {0, 0, 0, 0}, ly[4] = {0, 0, 0, 0};
+      for (int k = 1; k < 4; ++k) {
+        double lz = 0;
+        to_local(e1[0], e1[1], e1[2], e2[0], e2[1], e2[2], e3[0], e3[1], e3[2], bk.nb.x[k][j] - bk.nb.x[0][j],
+                 bk.nb.y[k][j] - bk.nb.y[0][j], bk.nb.z[k][j] - bk.nb.z[0][j], lx[k], ly[k], lz);
+      }
+      if (g.dt_fixed[ii] > 0.0 || pr.ismstr == 1) {  // small strain: the first cycle's local coordinates
+        if (g.small[ii] == 0.0) {
+          for (int k = 1; k < 4; ++k) {
+            g.ref_local[static_cast<std::size_t>(k - 1) * G + ii] = lx[k];
+            g.ref_local[static_cast<std::size_t>(k + 2) * G + ii] = ly[k];
+          }
+          g.small[ii] = 1.0;
+        }
+        for (int k = 1; k < 4; ++k) {
+          lx[k] = g.ref_local[static_cast<std::size_t>(k - 1) * G + ii];
+          ly[k] = g.ref_local[static_cast<std::size_t>(k + 2) * G + ii];
+        }
+      }
+      double vx[4], vy[4], vz[4], rx[4], ry[4];
+      for (int k = 0; k < 4; ++k) {
+        double rz_unused = 0;
+        to_local(e1[0], e1[1], e1[2], e2[0], e2[1], e2[2], e3[0], e3[1], e3[2], bk.nb.vx[k][j],
+                 bk.nb.vy[k][j], bk.nb.vz[k][j], vx[k], vy[k], vz[k]);
+        to_local(e1[0], e1[1], e1[2], e2[0], e2[1], e2[2], e3[0], e3[1], e3[2], bk.nb.rx[k][j],
+                 bk.nb.ry[k][j], bk.nb.rz[k][j], rx[k], ry[k], rz_unused);
+        bk.vx[k][j] = vx[k], bk.vy[k][j] = vy[k], bk.vz[k][j] = vz[k], bk.rx[k][j] = rx[k],
+        bk.ry[k][j] = ry[k];
+        bk.lx[k][j] = lx[k], bk.ly[k][j] = ly[k];
+      }
+      double e[5], kap[3];
+      const QuadRows r0 = quad_rows(lx, ly, 0.0, 0.0);
+      bk.area[j] = 4.0 * r0.detj;
+      quad_rates(r0, vx, vy, vz, rx, ry, e, kap);
+      const double eq = dt1 > 0
+                            ? std::sqrt(equivalent_rate_arg(e[0] * dt1, e[1] * dt1, e[2] * dt1, kap[0] * dt1,
+                                                            kap[1] * dt1, kap[2] * dt1, g.thick[ii])) /
+                                  dt1
+                            : 0.0;
+      const double rate = alpha * eq + (1.0 - alpha) * g.rate[ii];
+      if (bk.off[j] > 0.0) g.rate[ii] = rate;
+      bk.rfac[j] = jc_rate_factor(mat, rate);
+      for (int gp = 0; gp < 4; ++gp) {
+        const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
+        bk.detj[gp][j] = r.detj;
+        quad_rates(r, vx, vy, vz, rx, ry, e, kap);
+        for (int q = 0; q < 5; ++q) bk.dem[gp][q][j] = e[q] * dt1;
+        for (int q = 0; q < 3; ++q) bk.dk[gp][q][j] = kap[q] * dt1;
+      }
+      bk.dthick[j] = bk.w_plastic[j] = bk.eps_p_max[j] = 0.0;
+    }
+
+    // The section at each Gauss point, on its own rows of the state.
+    for (int gp = 0; gp < 4; ++gp) {
+      for (int j = 0; j < len; ++j) {
+        for (int q = 0; q < 5; ++q) sec.dem[q][j] = bk.dem[gp][q][j];
+        for (int q = 0; q < 3; ++q) sec.dk[q][j] = bk.dk[gp][q][j];
+        sec.t[j] = bk.t[j];
+        sec.area[j] = bk.detj[gp][j];
+        sec.rfac[j] = bk.rfac[j];
+        sec.off[j] = bk.off[j];
+      }
+      const auto gpz = static_cast<std::size_t>(gp);
+      section_update_block(g, i0, len, mat, rule, gs, sec, g.sig.data() + gpz * sig_rows * G,
+                           g.eps_p.data() + gpz * eps_rows * G);
+      for (int j = 0; j < len; ++j) {
+        for (int q = 0; q < 5; ++q)
+          bk.for_old[gp][q][j] = sec.for_old[q][j], bk.for_new[gp][q][j] = sec.for_new[q][j];
+        for (int q = 0; q < 3; ++q)
+          bk.mom_old[gp][q][j] = sec.mom_old[q][j], bk.mom_new[gp][q][j] = sec.mom_new[q][j];
+        // Thickness change: the area-weighted mean of the points' (1.8).
+        bk.dthick[j] += sec.dthick[j] * bk.detj[gp][j] / bk.area[j];
+        bk.w_plastic[j] += sec.w_plastic[j];
+        bk.eps_p_max[j] = std::max(bk.eps_p_max[j], sec.eps_p_max[j]);
+      }
+    }
+
+    // Failure, energy, forces, step.
+    for (int j = 0; j < len; ++j) {
+      const std::size_t ii = static_cast<std::size_t>(i0 + j);
+      const double off_start = bk.off[j];
+      if (off_start <= 0.0) {
+        for (int r = 0; r < 24; ++r) nf[r * G + ii] = 0.0;
+        g.dt[ii] = kInf;
+        g.k_nodal[ii] = 0.0;
+        continue;
+      }
+      const double t = bk.t[j], area = bk.area[j];
+      const double off = next_off(fail_limit, off_start, bk.eps_p_max[j]);
+      g.off[ii] = off;
+      g.w_plastic[ii] += bk.w_plastic[j];
+      g.thick[ii] += bk.dthick[j] * off;
+
+      double lx[4], ly[4];
+      for (int k = 0; k < 4; ++k) lx[k] = bk.lx[k][j], ly[k] = bk.ly[k][j];
+      double fx[4] = {}, fy[4] = {}, fz[4] = {}, mx[4] = {}, my[4] = {};
+      double de_int = 0;
+      const double ot = off * t, ot2 = off * t * t;
+      for (int gp = 0; gp < 4; ++gp) {
+        const double w = bk.detj[gp][j];
+        double dem[5], dk[3];
+        for (int q = 0; q < 5; ++q) dem[q] = bk.dem[gp][q][j];
+        for (int q = 0; q < 3; ++q) dk[q] = bk.dk[gp][q][j];
+        double fv[3] = {0.0, 0.0, 0.0};
+        if (visc0 > 0) {
+          const double visc = visc0 * std::sqrt(area);
+          fv[0] = visc * (dem[0] + 0.5 * dem[1]);
+          fv[1] = visc * (dem[1] + 0.5 * dem[0]);
+          fv[2] = visc * dem[2] / 3.0;
+        }
+        double de_mem = 0, de_bend = 0;
+        for (int q = 0; q < 5; ++q)
+          de_mem += (off_start * bk.for_old[gp][q][j] + off * bk.for_new[gp][q][j]) * dem[q];
+        for (int q = 0; q < 3; ++q)
+          de_bend += (off_start * bk.mom_old[gp][q][j] + off * bk.mom_new[gp][q][j]) * dk[q];
+        de_int += 0.5 * w * t * (de_mem + t * de_bend) +
+                  w * t * off * (fv[0] * dem[0] + fv[1] * dem[1] + fv[2] * dem[2]);
+        if (off <= 0.0) continue;
+        const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
+        const double n[5] = {ot * (bk.for_new[gp][0][j] + fv[0]), ot * (bk.for_new[gp][1][j] + fv[1]),
+                             ot * (bk.for_new[gp][2][j] + fv[2]), ot * bk.for_new[gp][3][j],
+                             ot * bk.for_new[gp][4][j]};
+        const double m[3] = {ot2 * bk.mom_new[gp][0][j], ot2 * bk.mom_new[gp][1][j],
+                             ot2 * bk.mom_new[gp][2][j]};
+        quad_add_forces(r, w, n, m, fx, fy, fz, mx, my);
+      }
+      g.e_int[ii] += de_int;
+      if (off <= 0.0) {
+        for (int r = 0; r < 24; ++r) nf[r * G + ii] = 0.0;
+        g.dt[ii] = kInf;
+        g.k_nodal[ii] = 0.0;
+        continue;
+      }
+      const double e1x = bk.fr.e1[0][j], e1y = bk.fr.e1[1][j], e1z = bk.fr.e1[2][j];
+      const double e2x = bk.fr.e2[0][j], e2y = bk.fr.e2[1][j], e2z = bk.fr.e2[2][j];
+      const double e3x = bk.fr.e3[0][j], e3y = bk.fr.e3[1][j], e3z = bk.fr.e3[2][j];
+      for (int k = 0; k < 4; ++k)
+        store_local_forces(nf, G, static_cast<std::size_t>(k), ii, e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y,
+                           e3z, fx[k], fy[k], fz[k], mx[k], my[k]);
+      const double l = qeph_step_length(lx, ly, area);
+      g.dt[ii] = l * phi / c;
+      g.k_nodal[ii] = 0.5 * area * t * a11 / (l * l);
+    }
+  }
+}
+
+}  // namespace radx::solver
