@@ -4,14 +4,23 @@
 # about 1,500 cycles. Prints the cost in microseconds per element per cycle on 1 and 2 threads, the
 # speed-up and the peak memory per element. Targets (issue 3): <= 0.2 us/element/cycle on one thread,
 # >= 1.8x on 2 threads, <= 2 KB per element.
-# Usage: bench/engine_plate.sh [N]   (needs a built tree: scripts/build.sh)
+# Usage: bench/engine_plate.sh [N] [ISHELL]   (needs a built tree: scripts/build.sh)
+#   ISHELL: the plate's shell formulation, 1 (default, Belytschko-Tsay), 24 (QEPH) or 12 (QBAT), so that the
+#   formulations can be compared on the same plate in the same session.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 n=${1:-200}
+ishell=${2:-1}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-python3 bench/gen_shell_plate.py --n "$n" --out "$work" >/dev/null
-root="$work/PLATE$n"
+python3 bench/gen_shell_plate.py --n "$n" --ishell "$ishell" --out "$work" >/dev/null
+case "$ishell" in
+  24) suffix=_QEPH ;;
+  12) suffix=_QBAT ;;
+  *) suffix= ;;
+esac
+echo "plate $n x $n, Ishell $ishell"
+root="$work/PLATE$n$suffix"
 ./build/apps/radx-starter "${root}_0000.rad" --out "$work" >/dev/null
 for threads in 1 2; do
   /usr/bin/time -f "peak %M KiB" -o "$work/time.$threads" \

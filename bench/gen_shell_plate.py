@@ -6,9 +6,12 @@
     python3 bench/gen_shell_plate.py --impact           # adds a 10 x 10 x 4 brick block and two TYPE7
     python3 bench/gen_shell_plate.py --n 200 --impact --contact lagdt     # the LAGDT variant (PLATE200I_LAGDT)
     python3 bench/gen_shell_plate.py --n 200 --impact --contact addmass   # TYPE7 + /DT/INTER/CST added mass
+    python3 bench/gen_shell_plate.py --n 200 --ishell 24                  # the plate in QEPH (PLATE200_QEPH)
 
 Writes PLATE<N>_0000.rad (starter) and PLATE<N>_0001.rad (engine) into --out (default: the current folder).
 With --impact the root name is PLATE<N>I (PLATE<N>I_0000.rad ...), so both variants can sit side by side.
+--ishell 12 or 24 writes the plate's /PROP/SHELL with that formulation (QBAT, QEPH) and appends _QBAT or
+_QEPH to the root name; the default 1 is the Belytschko-Tsay shell.
 
 Model (units Mg, mm, s): a 1000 x 1000 mm steel plate, 1 mm thick, meshed with N x N four-node shells
 (Johnson-Cook, 5 integration points), clamped on its four edges.
@@ -61,7 +64,7 @@ def first_power_of_ten_above(n):
     return p
 
 
-def starter(n, impact, root, lagdt=False):
+def starter(n, impact, root, lagdt=False, ishell=1):
     nn = n + 1
     d = rc.Deck(fill=0)
     d.raw("#RADIOSS STARTER")
@@ -110,7 +113,7 @@ def starter(n, impact, root, lagdt=False):
     if impact:
         d.card("/PART", 2, "Block", prop_ID=2, mat_ID=2)
     d.ruler()
-    d.card("/PROP/SHELL", 1, "Plate shell %g mm with 5 integration points" % THICK, Ishell=1, Ismstr=2, Ish3n=2,
+    d.card("/PROP/SHELL", 1, "Plate shell %g mm with 5 integration points" % THICK, Ishell=ishell, Ismstr=2, Ish3n=2,
            N=5, Thick=THICK, Ithick=1, Iplas=1)
     if impact:
         d.card("/PROP/SOLID", 2, "Block solid", Isolid=1, Ismstr=4, Iframe=1)
@@ -185,6 +188,8 @@ def main(argv):
     p.add_argument("--tmin", type=float, default=8e-7,
                    help="Tmin of /DT/INTER/CST for --contact lagdt and addmass (default 8e-7 s: just below the "
                         "shell step of --n 200)")
+    p.add_argument("--ishell", type=int, choices=(1, 12, 24), default=1,
+                   help="formulation of the plate's shells: 1 (default), 12 (QBAT) or 24 (QEPH)")
     args = p.parse_args(argv)
     if args.n < 2:
         p.error("--n must be at least 2")
@@ -193,11 +198,13 @@ def main(argv):
     root = "PLATE%d%s" % (args.n, "I" if args.impact else "")
     if args.contact != "type7":
         root += "_" + args.contact.upper()
+    if args.ishell != 1:
+        root += {12: "_QBAT", 24: "_QEPH"}[args.ishell]
     os.makedirs(args.out, exist_ok=True)
     t0 = time.time()
     s_path = os.path.join(args.out, root + "_0000.rad")
     e_path = os.path.join(args.out, root + "_0001.rad")
-    rc.write(s_path, starter(args.n, args.impact, root, lagdt=args.contact == "lagdt"))
+    rc.write(s_path, starter(args.n, args.impact, root, lagdt=args.contact == "lagdt", ishell=args.ishell))
     lines, tstop = engine(args.n, root, args.tmin if args.contact != "type7" else 0.0)
     rc.write(e_path, lines)
     print("wrote %s and %s: %d shells, %d plate nodes%s, Tstop %g s (%.1f s)" %
