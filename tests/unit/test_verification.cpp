@@ -548,6 +548,19 @@ TEST_CASE("verification: cantilever strip first frequency", "[verification]") {
   REQUIRE(!tip.empty());
 
   sv::ExplicitEngine eng(m, c.controls, sv::EngineOptions{1});
+  // Rotational inertia of the tip corner node (one element, elements.md 5): (m_e/4) (A0/d + t^2/12), d = 9
+  // for Ishell 1, 12 for QEPH and QBAT; to round-off of its value.
+  {
+    const double h = L / 40.0, a0 = h * h;  // the strip's 0.025 m square elements
+    const double me = mat.rho * thick * a0;
+    const double d = variant.ishell == 1 ? 9.0 : 12.0;
+    std::size_t corner = m.nodes.size();
+    for (const auto n : tip)
+      if (m.nodes.y[n] == min_of(m.nodes.y)) corner = n;
+    REQUIRE(corner < m.nodes.size());
+    CHECK(std::abs(eng.nodes().inertia[corner] - 0.25 * me * (a0 / d + thick * thick / 12.0)) <=
+          1e-12 * eng.nodes().inertia[corner]);
+  }
   std::vector<double> t, w;
   EnergyWatch energy;
   double internal_max = 0, hourglass_max = 0;  // over the run
