@@ -78,9 +78,9 @@ inline void cross(const double a[3], const double b[3], double c[3]) {
 }
 
 // N = H T of the opening comment; T and N indexed [direction][mode].
-inline void hg_generalised(const double T[3][4], const double J[3], double nu1, double nu2, double nu3,
-                           double N[3][4]) {
-  const double h11 = J[1] * J[2] / J[0], h22 = J[0] * J[2] / J[1], h33 = J[0] * J[1] / J[2];
+inline void hg_generalised(const double T[3][4], const double J[3], const double Ji[3], double nu1,
+                           double nu2, double nu3, double N[3][4]) {
+  const double h11 = J[1] * J[2] * Ji[0], h22 = J[0] * J[2] * Ji[1], h33 = J[0] * J[1] * Ji[2];
   const double h12 = J[2], h13 = J[1], h23 = J[0];
   N[0][0] = (h22 + h33) * T[0][0] + h12 * T[1][1] + h13 * T[2][2];
   N[1][1] = (h11 + h33) * T[1][1] + h23 * T[2][2] + h12 * T[0][0];
@@ -97,16 +97,15 @@ inline void hg_generalised(const double T[3][4], const double J[3], double nu1, 
 }
 
 // Equivalent stresses sm1 >= sm2 of the element stress (von Mises squared svm0_2) with the hourglass
-// stresses S (szsvm.F, opening comment).
-inline void hg_equivalent(const double S[3][4], const double J[3], double nu4, double svm0_2, double& sm1,
-                          double& sm2) {
-  const double n1 = 1.0 / (1.0 - nu4), n2 = nu4 * n1;
+// stresses S (szsvm.F, opening comment); Ji = 1 / J, n1 = 1 / (1 - nu4), n2 = nu4 n1.
+inline void hg_equivalent(const double S[3][4], const double J[3], const double Ji[3], double n1, double n2,
+                          double svm0_2, double& sm1, double& sm2) {
   const double r[4] = {n1 * S[0][2] + n2 * S[2][0], n1 * S[2][0] + n2 * S[0][2], S[0][2] - S[2][0],
-                       J[2] / J[0] * S[2][2] + J[0] / J[2] * S[0][0]};
+                       J[2] * Ji[0] * S[2][2] + J[0] * Ji[2] * S[0][0]};
   const double s[4] = {S[0][1] - S[1][0], n1 * S[1][0] + n2 * S[0][1], n1 * S[0][1] + n2 * S[1][0],
-                       J[1] / J[0] * S[1][1] + J[0] / J[1] * S[0][0]};
+                       J[1] * Ji[0] * S[1][1] + J[0] * Ji[1] * S[0][0]};
   const double t[4] = {n1 * S[1][2] + n2 * S[2][1], S[1][2] - S[2][1], n1 * S[2][1] + n2 * S[1][2],
-                       J[1] / J[2] * S[1][1] + J[2] / J[1] * S[2][2]};
+                       J[1] * Ji[2] * S[1][1] + J[2] * Ji[1] * S[2][2]};
   auto sq = [](const double a[4]) {
     return 2.0 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) + 3.0 * a[3] * a[3];
   };
@@ -145,6 +144,7 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     nu3 = 0.444;
     nu4 = 0.0;
   }
+  const double sv_n1 = 1.0 / (1.0 - nu4), sv_n2 = nu4 * sv_n1;
 
   const std::int32_t* conn = g.conn.data();
   double* force = g.nodal_force.data();
@@ -173,8 +173,10 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     // Element frame; nodes and velocities into it.
     double R[3][3];
     brick_corotational_frame(x, true, R);
+#pragma GCC unroll 8
     for (int k = 0; k < 8; ++k) {
       double xl[3], vl[3];
+#pragma GCC unroll 3
       for (int a = 0; a < 3; ++a) {
         xl[a] = R[0][a] * x[k][0] + R[1][a] * x[k][1] + R[2][a] * x[k][2];
         vl[a] = R[0][a] * v[k][0] + R[1][a] * v[k][1] + R[2][a] * v[k][2];
@@ -208,6 +210,7 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
       continue;
     }
     const double inv = 1.0 / (64.0 * vol);
+    const double Ji[3] = {1.0 / J[0], 1.0 / J[1], 1.0 / J[2]};
     double b[8][3];
     for (int d = 0; d < 3; ++d) {
       b[0][d] = -(c12[d] + c23[d] + c31[d]) * inv;
@@ -281,9 +284,12 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
 
     // Hourglass: mode sums of the local coordinates and the rates q(d, j).
     double hx[4][3], q[3][4];
+#pragma GCC unroll 4
     for (int j = 0; j < 4; ++j)
+#pragma GCC unroll 3
       for (int d = 0; d < 3; ++d) {
         double sx = 0.0, sv = 0.0;
+#pragma GCC unroll 8
         for (int k = 0; k < 8; ++k) {
           sx += kMode[j][k] * x[k][d];
           sv += kMode[j][k] * v[k][d];
@@ -302,22 +308,22 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     // Work rate of the stored hourglass stresses (energy trapezoid, first half).
     for (int d = 0; d < 3; ++d)
       for (int j = 0; j < 4; ++j) T[d][j] = S[d][j] * J[d] + cv * q[d][j];
-    hg_generalised(T, J, nu1, nu2, nu3, N);
+    hg_generalised(T, J, Ji, nu1, nu2, nu3, N);
     double p_old = 0.0;
     for (int d = 0; d < 3; ++d)
       for (int j = 0; j < 4; ++j) p_old += N[d][j] * q[d][j];
     const bool yields = sig_y < 0.9e30;
     double smo1 = 0.0, smo2 = 0.0;
-    if (yields) hg_equivalent(S, J, nu4, svm2, smo1, smo2);
+    if (yields) hg_equivalent(S, J, Ji, sv_n1, sv_n2, svm2, smo1, smo2);
     const double g3dt = off * g_hg * dt1 / 3.0;
     for (int d = 0; d < 3; ++d)
       for (int j = 0; j < 4; ++j) {
-        dS[d][j] = g3dt / J[d] * q[d][j];
+        dS[d][j] = g3dt * Ji[d] * q[d][j];
         S[d][j] += dS[d][j];
       }
     if (yields) {
       double sm1 = 0.0, sm2 = 0.0;
-      hg_equivalent(S, J, nu4, svm2, sm1, sm2);
+      hg_equivalent(S, J, Ji, sv_n1, sv_n2, svm2, sm1, sm2);
       if (sm1 > sig_y && p_old > 0.0) {
         double fac = sig_y / sm1;
         const double smo = 0.9 * smo1 + 0.1 * smo2;
@@ -328,27 +334,30 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     }
     for (int d = 0; d < 3; ++d)
       for (int j = 0; j < 4; ++j) T[d][j] = S[d][j] * J[d] + cv * q[d][j];
-    hg_generalised(T, J, nu1, nu2, nu3, N);
+    hg_generalised(T, J, Ji, nu1, nu2, nu3, N);
     double p_new = 0.0;
     for (int d = 0; d < 3; ++d)
       for (int j = 0; j < 4; ++j) p_new += N[d][j] * q[d][j];
     const double de_hg = 0.5 * dt1 * (p_old + p_new);
 
-    // Nodal forces in the frame: stress part -V (sigma - q I) b_k, hourglass part -sum_j gamma_jk N(d, j).
+    // Nodal forces in the frame: stress part -V (sigma - q I) b_k, hourglass part -sum_j gamma_jk N(d, j),
+    // gamma_jk = (m_jk - b_k . hx_j) / 8 formed once per element.
     const double sg[3][3] = {
         {sn[0] - q_new, sn[3], sn[5]}, {sn[3], sn[1] - q_new, sn[4]}, {sn[5], sn[4], sn[2] - q_new}};
     double f[8][3];
-    for (int k = 0; k < 8; ++k)
-      for (int a = 0; a < 3; ++a) {
-        double fk = -vol * (sg[a][0] * b[k][0] + sg[a][1] * b[k][1] + sg[a][2] * b[k][2]);
-        for (int j = 0; j < 4; ++j) {
-          const double gamma =
-              (kMode[j][k] - (b[k][0] * hx[j][0] + b[k][1] * hx[j][1] + b[k][2] * hx[j][2])) / 8.0;
-          fk -= gamma * N[a][j];
-        }
-        f[k][a] = fk;
-      }
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) {
+      double gam[4];
+#pragma GCC unroll 4
+      for (int j = 0; j < 4; ++j)
+        gam[j] = (kMode[j][k] - (b[k][0] * hx[j][0] + b[k][1] * hx[j][1] + b[k][2] * hx[j][2])) * 0.125;
+#pragma GCC unroll 3
+      for (int a = 0; a < 3; ++a)
+        f[k][a] = -vol * (sg[a][0] * b[k][0] + sg[a][1] * b[k][1] + sg[a][2] * b[k][2]) -
+                  (gam[0] * N[a][0] + gam[1] * N[a][1] + gam[2] * N[a][2] + gam[3] * N[a][3]);
+    }
     // Back to global axes.
+#pragma GCC unroll 8
     for (int k = 0; k < 8; ++k) {
       const double a0 = f[k][0], a1 = f[k][1], a2 = f[k][2];
       for (int r = 0; r < 3; ++r) f[k][r] = R[r][0] * a0 + R[r][1] * a1 + R[r][2] * a2;
