@@ -12,9 +12,9 @@
 //   8-node bricks:  Isolid 1 (one point, Flanagan-Belytschko viscous hourglass) and 2 (plain h vectors),
 //                   each with Iframe 1 (Jaumann rate) or 2 (co-rotational element frame); Isolid 24 (HEPH:
 //                   one point, physical elasto-plastic hourglass, always co-rotational) with Icpre 0 or 1
-//                   (3 = off, as 0; Icpre 2 refused); Ismstr 4 (large strain) and 2 (large strain, small
-//                   strain after a /DT/BRICK/CST switch: without /DT/BRICK/CST the same as 4); no distortion
-//                   control (Icontrol 1)
+//                   (3 = off, as 0; Icpre 2 and Ihkt 2+ refused); Ismstr 4 (large strain) and 2 (large
+//                   strain, small strain after a /DT/BRICK/CST switch: without /DT/BRICK/CST the same as 4);
+//                   no distortion control (Icontrol 1)
 #include <algorithm>
 #include <string>
 
@@ -155,10 +155,15 @@ void ModelBuilder::check_formulations() {
       }
       flag("Isolid", s.isolid, s.isolid == 1 || s.isolid == 2 || s.isolid == 24, 1, isolid_name(s.isolid),
            isolid_name(1), "bricks");
-      if (s.isolid == 24)
+      if (s.isolid == 24) {
         flag("Icpre", s.icpre, s.icpre == 0 || s.icpre == 1 || s.icpre == 3, 0,  // 3: off, as 0
              s.icpre == 2 ? "pressure from the plastic state" : "pressure option",
              "compressible hourglass modes", "HEPH bricks (Isolid 24)");
+        // Ihkt (old layouts) 2 and above change HEPH's hourglass (szhour3.F, szsvm.F).
+        int ihkt = rec.find("Ihkt") ? static_cast<int>(rec.get_int("Ihkt")) : 0;
+        flag("Ihkt", ihkt, ihkt <= 1, 1, "hourglass option", "hourglass from the shear modulus",
+             "HEPH bricks (Isolid 24)");
+      }
       flag("Ismstr", s.ismstr, s.ismstr == 2 || s.ismstr == 4, 4, ismstr_name(s.ismstr), ismstr_name(4),
            "bricks");
       flag("Iframe", s.iframe, s.iframe == 1 || s.iframe == 2, 1, "frame option",

@@ -424,3 +424,53 @@ TEST_CASE("HEPH Icpre 1: incompressible hourglass coefficients", "[heph]") {
   }
   CHECK(rel(f1 / f0, 0.444 / (2.0 / 3.0 * 1.3)) < 1e-12);
 }
+
+TEST_CASE("HEPH hourglass with a law that yields: the hourglass stiffness drops past the yield stress",
+          "[heph]") {
+  // The warping mode of the cube above driven step after step. LAW1 stores dS every step (a straight line
+  // in the mode amplitude); Johnson-Cook with a flow stress far above the hourglass stresses must give the
+  // same; with a low flow stress (10, no hardening) the increments are cut once the equivalent stress of
+  // the hourglass stresses (szsvm.F) passes it, so the force grows much less than the elastic one.
+  const double young = 1e6, nu = 0.3;
+  auto jc = [&](double a_y) {
+    MaterialParams m = elastic(young, nu, 1.0);
+    m.law = radx::model::MaterialLaw::JohnsonCook;
+    m.a = a_y;
+    m.b = 0.0;
+    m.n = 1.0;
+    m.c = 0.0;
+    return m;
+  };
+  constexpr double m1[8] = {1, 1, -1, -1, -1, -1, 1, 1};
+  const double u0 = 2.6e-6, dt1 = 1e-4;  // 50 steps: an elastic shear of about 10 times the low flow stress
+  auto drive = [&](const MaterialParams& mat, std::vector<double>& fx) {
+    NodeState ns = make_nodes(cube(1.0));
+    BrickGroup g = make_group({kCubeConn}, ns, mat.rho0, 24, 2);
+    g.dn = 0.0;  // no viscous part: the force is the stored hourglass stress only
+    CycleInfo cyc;
+    cyc.dt1 = dt1;
+    for (int step = 0; step < 50; ++step) {
+      for (std::size_t k = 0; k < 8; ++k) {
+        ns.vx[k] = u0 / dt1 * m1[k];
+        if (step > 0) ns.x[k] += u0 * m1[k];
+      }
+      hex8_heph_forces(g, ns, mat, cyc);
+      fx.push_back(-force(g, 0, 0, 0));  // node 1: m1 = +1, the force opposes the mode
+    }
+  };
+  std::vector<double> f_el, f_high, f_low;
+  drive(elastic(young, nu, 1.0), f_el);
+  drive(jc(1e12), f_high);
+  drive(jc(10.0), f_low);
+  // Far below the flow stress the law that yields is elastic: the same forces to round-off.
+  for (std::size_t s = 0; s < f_el.size(); ++s) CHECK(rel(f_high[s], f_el[s]) < 1e-12);
+  // Past it, the hourglass force still grows (loading) but at a fraction of the elastic rate: after 50 steps
+  // it is less than half the elastic force, and it never exceeds it.
+  for (std::size_t s = 1; s < f_low.size(); ++s) {
+    CHECK(f_low[s] >= f_low[s - 1]);
+    CHECK(f_low[s] <= f_el[s] * (1.0 + 1e-12));
+  }
+  CHECK(f_low.back() < 0.5 * f_el.back());
+  // The first step is below the flow stress: elastic (the increment is cut only past it).
+  CHECK(rel(f_low[0], f_el[0]) < 1e-12);
+}
