@@ -5,14 +5,17 @@
 # microseconds per element per cycle and the share of the wall time spent in contact (search and forces), as
 # the engine's listing reports them. Targets: contact <= 15 % of the cycle; the whole run <= 0.2125 us per
 # element per cycle (half of the mature Fortran code's 0.425 on this machine).
-# Usage: bench/engine_impact.sh [N]   (needs a built tree: scripts/build.sh)
+# ISOLID 24 runs the block in HEPH bricks (Isolid 24) instead of Isolid 1.
+# Usage: bench/engine_impact.sh [N] [ISOLID]   (needs a built tree: scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 n=${1:-200}
+isolid=${2:-1}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-/usr/bin/python3 bench/gen_shell_plate.py --n "$n" --impact --out "$work" >/dev/null
+/usr/bin/python3 bench/gen_shell_plate.py --n "$n" --impact --isolid "$isolid" --out "$work" >/dev/null
 root="$work/PLATE${n}I"
+[[ "$isolid" == 24 ]] && root="${root}_HEPH"
 ./build/apps/radx-starter "${root}_0000.rad" --out "$work" >/dev/null
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), load $(cut -d' ' -f1-3 /proc/loadavg)"
 for threads in 1 2; do

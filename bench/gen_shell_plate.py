@@ -7,6 +7,7 @@
     python3 bench/gen_shell_plate.py --n 200 --impact --contact lagdt     # the LAGDT variant (PLATE200I_LAGDT)
     python3 bench/gen_shell_plate.py --n 200 --impact --contact addmass   # TYPE7 + /DT/INTER/CST added mass
     python3 bench/gen_shell_plate.py --n 200 --ishell 24                  # the plate in QEPH (PLATE200_QEPH)
+    python3 bench/gen_shell_plate.py --n 200 --impact --isolid 24         # the block in HEPH bricks (PLATE200I_HEPH)
 
 Writes PLATE<N>_0000.rad (starter) and PLATE<N>_0001.rad (engine) into --out (default: the current folder).
 With --impact the root name is PLATE<N>I (PLATE<N>I_0000.rad ...), so both variants can sit side by side.
@@ -64,7 +65,7 @@ def first_power_of_ten_above(n):
     return p
 
 
-def starter(n, impact, root, lagdt=False, ishell=1):
+def starter(n, impact, root, lagdt=False, ishell=1, isolid=1):
     nn = n + 1
     d = rc.Deck(fill=0)
     d.raw("#RADIOSS STARTER")
@@ -116,7 +117,7 @@ def starter(n, impact, root, lagdt=False, ishell=1):
     d.card("/PROP/SHELL", 1, "Plate shell %g mm with 5 integration points" % THICK, Ishell=ishell, Ismstr=2, Ish3n=2,
            N=5, Thick=THICK, Ithick=1, Iplas=1)
     if impact:
-        d.card("/PROP/SOLID", 2, "Block solid", Isolid=1, Ismstr=4, Iframe=1)
+        d.card("/PROP/SOLID", 2, "Block solid", Isolid=isolid, Ismstr=4, Iframe=2 if isolid == 24 else 1)
     d.ruler()
     d.card("/MAT/PLAS_JOHNS", 1, "Steel (Johnson-Cook)", RHO_I=RHO_STEEL, RHO_ref=None, E=E_STEEL, nu=NU_STEEL,
            a=250.0, b=450.0, n=0.3, c=0.014, EPS_DOT_0=1.0)
@@ -190,6 +191,8 @@ def main(argv):
                         "shell step of --n 200)")
     p.add_argument("--ishell", type=int, choices=(1, 12, 24), default=1,
                    help="formulation of the plate's shells: 1 (default), 12 (QBAT) or 24 (QEPH)")
+    p.add_argument("--isolid", type=int, choices=(1, 24), default=1,
+                   help="with --impact: the block's brick formulation, 1 (default) or 24 (HEPH; root name _HEPH)")
     args = p.parse_args(argv)
     if args.n < 2:
         p.error("--n must be at least 2")
@@ -200,11 +203,14 @@ def main(argv):
         root += "_" + args.contact.upper()
     if args.ishell != 1:
         root += {12: "_QBAT", 24: "_QEPH"}[args.ishell]
+    if args.impact and args.isolid == 24:
+        root += "_HEPH"
     os.makedirs(args.out, exist_ok=True)
     t0 = time.time()
     s_path = os.path.join(args.out, root + "_0000.rad")
     e_path = os.path.join(args.out, root + "_0001.rad")
-    rc.write(s_path, starter(args.n, args.impact, root, lagdt=args.contact == "lagdt", ishell=args.ishell))
+    rc.write(s_path, starter(args.n, args.impact, root, lagdt=args.contact == "lagdt", ishell=args.ishell,
+                             isolid=args.isolid))
     lines, tstop = engine(args.n, root, args.tmin if args.contact != "type7" else 0.0)
     rc.write(e_path, lines)
     print("wrote %s and %s: %d shells, %d plate nodes%s, Tstop %g s (%.1f s)" %

@@ -2,7 +2,7 @@
 // Otherwise the deck is refused by name (RX510), or, with --allow-substitutions, runs the nearest formulation
 // radx implements and lists the substitution (RX511, the listing and NAME_summary.json). A property used by
 // no element changes nothing and is not checked; a flag that only matters for another element shape (Ish3n
-// on quadrangles, Icpre on one-point bricks) is not checked either.
+// on quadrangles, Icpre on Isolid 1 and 2) is not checked either.
 //
 // What radx implements (shared/spec/elements.md):
 //   4-node shells:  Ishell 1 (Belytschko-Tsay, viscous + elastic hourglass), 12 (QBAT: four Gauss points,
@@ -11,9 +11,11 @@
 //                   the start, Ishell 1 only), Ithick 1/2, Iplas 1/2; every other Ishell is refused by name
 //   3-node shells:  Ish3n 2 (C0) and 1 (C0 without the in-plane large-rotation terms), Ismstr 2 and 1
 //   8-node bricks:  Isolid 1 (one point, Flanagan-Belytschko viscous hourglass) and 2 (plain h vectors),
-//                   Ismstr 4 (large strain) and 2 (large strain, small strain after a /DT/BRICK/CST switch:
-//                   without /DT/BRICK/CST the same as 4), Iframe 1 (Jaumann rate, not co-rotational), no
-//                   distortion control (Icontrol 1)
+//                   each with Iframe 1 (Jaumann rate) or 2 (co-rotational element frame); Isolid 24 (HEPH:
+//                   one point, physical elasto-plastic hourglass, always co-rotational) with Icpre 0 or 1
+//                   (3 = off, as 0; Icpre 2 and Ihkt 2+ refused); Ismstr 4 (large strain) and 2 (large
+//                   strain, small strain after a /DT/BRICK/CST switch: without /DT/BRICK/CST the same as 4);
+//                   no distortion control (Icontrol 1)
 #include <algorithm>
 #include <string>
 
@@ -145,18 +147,28 @@ void ModelBuilder::check_formulations() {
       auto& s = prop.solid;
       // Isolid 14, 15, 18 and 24 impose the co-rotational frame (model_builder.cpp): that is not the deck's
       // choice, which is the property's Iframe, else /DEF_SOLID's, else 1.
-      if (s.isolid == 14 || s.isolid == 15 || s.isolid == 18 || s.isolid == 24) {
+      // Isolid 24 is implemented with its forced frame, so it keeps iframe 2.
+      if (s.isolid == 14 || s.isolid == 15 || s.isolid == 18) {
         auto asked = rec.get_int("Iframe");
         const auto defs = deck_.of("/DEF_SOLID");
         if (asked == 0 && !defs.empty() && defs.front()->find("Iframe"))
           asked = defs.front()->get_int("Iframe");
         s.iframe = asked > 0 ? static_cast<int>(asked) : 1;
       }
-      flag("Isolid", s.isolid, s.isolid == 1 || s.isolid == 2, 1, isolid_name(s.isolid), isolid_name(1),
-           "bricks");
+      flag("Isolid", s.isolid, s.isolid == 1 || s.isolid == 2 || s.isolid == 24, 1, isolid_name(s.isolid),
+           isolid_name(1), "bricks");
+      if (s.isolid == 24) {
+        flag("Icpre", s.icpre, s.icpre == 0 || s.icpre == 1 || s.icpre == 3, 0,  // 3: off, as 0
+             s.icpre == 2 ? "pressure from the plastic state" : "pressure option",
+             "compressible hourglass modes", "HEPH bricks (Isolid 24)");
+        // Ihkt (old layouts) 2 and above change HEPH's hourglass (szhour3.F, szsvm.F).
+        int ihkt = rec.find("Ihkt") ? static_cast<int>(rec.get_int("Ihkt")) : 0;
+        flag("Ihkt", ihkt, ihkt <= 1, 1, "hourglass option", "hourglass from the shear modulus",
+             "HEPH bricks (Isolid 24)");
+      }
       flag("Ismstr", s.ismstr, s.ismstr == 2 || s.ismstr == 4, 4, ismstr_name(s.ismstr), ismstr_name(4),
            "bricks");
-      flag("Iframe", s.iframe, s.iframe == 1, 1, s.iframe == 2 ? "co-rotational" : "frame option",
+      flag("Iframe", s.iframe, s.iframe == 1 || s.iframe == 2, 1, "frame option",
            "Jaumann rate, not co-rotational", "bricks");
       int icontrol = static_cast<int>(rec.get_int("Icontrol"));
       flag("Icontrol", icontrol, icontrol != 1, 2, "distortion control on", "distortion control off",

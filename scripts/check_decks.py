@@ -1287,11 +1287,16 @@ def semantic(ck, m):
                 bad.append("Ismstr")
         elif "/BRICK" in kinds:
             isolid = resolved(o, "Isolid", "/DEF_SOLID", 1)
-            if isolid not in (1, 2):
+            if isolid not in (1, 2, 24):
                 bad.append("Isolid")
+            if isolid == 24 and resolved(o, "Icpre", "/DEF_SOLID", 0) not in (0, 1, 3):
+                bad.append("Icpre")
+            if isolid == 24 and val(o, "Ihkt", 0) > 1:
+                bad.append("Ihkt")
             if resolved(o, "Ismstr", "/DEF_SOLID", 4) not in (2, 4):
                 bad.append("Ismstr")
-            if resolved(o, "Iframe", "/DEF_SOLID", 1) != 1:
+            # Isolid 24 forces the co-rotational frame; 1 and 2 take Iframe 1 (Jaumann) or 2 (co-rotational)
+            if isolid != 24 and resolved(o, "Iframe", "/DEF_SOLID", 1) not in (1, 2):
                 bad.append("Iframe")
             if val(o, "Icontrol", 0) == 1:
                 bad.append("Icontrol")

@@ -734,6 +734,14 @@ def _():
         "formulation radx lacks", [("RX510", "PSO.Isolid")]
 
 
+@fault("heph_icpre_2")
+def _():
+    d = base()
+    d.update("PSO", Isolid=24, Icpre=2)
+    return d, "/PROP/SOLID/2 Isolid 24 (HEPH) with Icpre = 2 (pressure from the plastic state): radx implements " \
+        "HEPH with Icpre 0, 1 and 3 only", [("RX510", "PSO.Icpre")]
+
+
 @fault("solid_numerical_viscosity")
 def _():
     d = base()

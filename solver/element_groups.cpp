@@ -36,6 +36,11 @@ void BrickGroup::allocate(int n) {
   nodal_force.assign(8 * 3 * G, 0.0);
   small.assign(G, 0);
   x_ref.assign(8 * 3 * G, 0.0);
+  frame.assign(9 * G, 0.0);
+  for (std::size_t d = 0; d < 3; ++d)
+    for (std::size_t i = 0; i < G; ++i) frame[(4 * d) * G + i] = 1.0;
+  hg_stress.assign(12 * G, 0.0);
+  w_hg.assign(G, 0.0);
 }
 
 }  // namespace radx::solver

@@ -82,7 +82,10 @@ struct BrickGroup {
   std::int32_t material = -1;
   int isolid = 1;
   int ismstr = 4;  // /DT/BRICK/CST switches a brick to small strain only with Ismstr 2 (deck-format.md)
+  int iframe = 1;  // 1 Jaumann rate, global stress; 2 co-rotational element frame, stress in that frame
+  int icpre = 0;   // Isolid 24: 0 compressible hourglass modes, 1 incompressible (pressure treatment)
   double qa = 1.1, qb = 0.05, h = 0.1;
+  double dn = 0.1;                 // Isolid 24: viscous part of the physical hourglass
   std::vector<std::int32_t> conn;  // [8][G]
   std::vector<double> vol0;        // [G] initial (one-point) volume
   std::vector<double> vol;         // [G] current volume
@@ -104,8 +107,46 @@ struct BrickGroup {
   std::vector<double> x_ref;        // [8][3][G]
   std::vector<double> k_nodal;      // [G] nodal stiffness contribution (1/4 rho V / dt_e^2)
   std::vector<double> nodal_force;  // [8][3][G] force ADDED to each node, global axes
+  // Co-rotational frame (Iframe 2, Isolid 24): columns e_x e_y e_z of the element frame of the last cycle,
+  // [3 * column + row][G]; `sig` is then in that frame (global = R sig R^T). Identity until the first cycle.
+  std::vector<double> frame;      // [9][G]
+  std::vector<double> hg_stress;  // [3][4][G] Isolid 24: hourglass stresses per direction and mode (local)
+  std::vector<double> w_hg;       // [G] Isolid 24: hourglass work, a part of e_int (diagnostic only)
   void allocate(int n);
 };
+
+// True when the group's stress lives in the co-rotational element frame (Iframe 2; Isolid 24 forces it).
+inline bool brick_corotational(const BrickGroup& g) {
+  return g.iframe == 2 || g.isolid == 24;
+}
+
+// Element i's stress in global axes (xx yy zz xy yz zx): `sig` itself, or R sig R^T for a co-rotational
+// group.
+inline void brick_global_stress(const BrickGroup& g, std::size_t i, double out[6]) {
+  constexpr std::size_t G = kGroupSize;
+  const double s[6] = {g.sig[0 * G + i], g.sig[1 * G + i], g.sig[2 * G + i],
+                       g.sig[3 * G + i], g.sig[4 * G + i], g.sig[5 * G + i]};
+  if (!brick_corotational(g)) {
+    for (int m = 0; m < 6; ++m) out[m] = s[m];
+    return;
+  }
+  const double S[3][3] = {{s[0], s[3], s[5]}, {s[3], s[1], s[4]}, {s[5], s[4], s[2]}};
+  double R[3][3];
+  for (std::size_t c = 0; c < 3; ++c)
+    for (std::size_t r = 0; r < 3; ++r) R[r][c] = g.frame[(3 * c + r) * G + i];
+  auto at = [&](int a, int b) {
+    double v = 0.0;
+    for (int p = 0; p < 3; ++p)
+      for (int q = 0; q < 3; ++q) v += R[a][p] * S[p][q] * R[b][q];
+    return v;
+  };
+  out[0] = at(0, 0);
+  out[1] = at(1, 1);
+  out[2] = at(2, 2);
+  out[3] = at(0, 1);
+  out[4] = at(1, 2);
+  out[5] = at(2, 0);
+}
 
 // Kernels (one file each). Each reads node coordinates and velocities from `nodes`, updates the
 // group's state, energies and element steps, and fills `nodal_force`. Elements with off == 0 give no
@@ -118,5 +159,12 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
 void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
                        const CycleInfo& cyc);
 void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
+void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
+
+// Co-rotational frame of a one-point brick from its node coordinates x[8][3] (elements.md 3.6): the three
+// centre directions r (eta), s (zeta), t (xi), made orthonormal symmetrically. `heph_order`: the frame's
+// x axis along t, y along r, z along s (Isolid 24); otherwise x along r, y along s, z along t (Isolid 1, 2).
+// R[row][column], columns the unit axes in global coordinates.
+void brick_corotational_frame(const double x[8][3], bool heph_order, double R[3][3]);
 
 }  // namespace radx::solver

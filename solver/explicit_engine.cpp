@@ -193,6 +193,9 @@ void ExplicitEngine::build_groups() {
     g.material = m.parts[part].material;
     g.isolid = prop.isolid;
     g.ismstr = prop.ismstr;
+    g.iframe = prop.iframe;
+    g.icpre = prop.icpre;
+    g.dn = prop.dn > 0 ? prop.dn : 0.1;  // Isolid 24: dn 0 means the default 0.1 (hm_read_prop14.F)
     g.qa = prop.qa;
     g.qb = prop.qb;
     g.h = prop.h;
@@ -267,7 +270,11 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
 #pragma omp for schedule(dynamic, 1)
     for (std::int64_t k = 0; k < nb; ++k) {
       auto& g = bricks_[static_cast<std::size_t>(k)];
-      hex8_forces(g, nodes_, materials_[static_cast<std::size_t>(g.material)], cyc);
+      const auto& mat = materials_[static_cast<std::size_t>(g.material)];
+      switch (g.isolid) {
+        case 24: hex8_heph_forces(g, nodes_, mat, cyc); break;
+        default: hex8_forces(g, nodes_, mat, cyc); break;  // Isolid 1 and 2 (the starter refuses the others)
+      }
     }
   }
 }

@@ -50,6 +50,18 @@
 //     qt = qb c + qa^2 l ec,  c_eff = qt + sqrt(qt^2 + c^2),  dt = dx / c_eff
 //   nodal stiffness (4.5): k = rho V / (4 dt^2) for each of the 8 nodes
 //
+// Co-rotational frame (Iframe 2; elements.md 3.6, read from OpenRadioss srcoor3.F, srepiso3.F, sortho3.F,
+// sdefo3.F, srrota3.F): every cycle the element frame R = [e_x e_y e_z] is built from the current nodes
+// (brick_corotational_frame below), the nodes and velocities are taken into it (x' = R^T x, v' = R^T v), all
+// of the above runs in that frame with the stored stress expressed in it and with no Jaumann rotation (the
+// frame carries the rotation), and the nodal forces go back to global axes (f = R f'). The strain rate gets
+// the second-order term of the co-rotational update (sdefo3.F, explicit): with L' the velocity gradient in
+// the frame, D_aa = L'_aa - dt1/2 (L'^T L')_aa and D_ab = L'_ab + L'_ba - dt1 (L'^T L')_ab (engineering
+// shear), i.e. the Almansi strain increment of the step. Frame construction: r = j1, s = j2, t = j3 (centre
+// directions eta, zeta, xi), normalised to u, v, w; three times u <- unit(v x w + u), v <- unit(w x u + v),
+// w <- unit(u x v + w) (all three from the previous values); then e1 = u, e3 = unit(e1 x v), e2 = e3 x e1.
+// Isolid 1/2 take (e_x, e_y, e_z) = (e1, e2, e3); Isolid 24 takes (e3, e1, e2), so its x axis follows xi.
+//
 // Small strain (after a /DT/BRICK/CST switch, g.dt_fixed > 0): the node coordinates are frozen in g.x_ref at
 // the first cycle after the switch and replace x^n in every formula above, so b_k, V, rho and the step stay
 // those of that geometry (the step constant, as Radioss's small-strain switch); velocities stay v^{n-1/2}.
@@ -92,9 +104,71 @@ inline void cross(const double a[3], const double b[3], double c[3]) {
   c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+// a / |a|, left as is when |a| = 0 (a degenerate direction then gives a zero axis, as the reference does).
+inline void normalise(double a[3]) {
+  const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  if (n != 0.0) {
+    const double r = 1.0 / n;
+    a[0] *= r;
+    a[1] *= r;
+    a[2] *= r;
+  }
+}
+
 }  // namespace
 
-void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
+void brick_corotational_frame(const double x[8][3], bool heph_order, double R[3][3]) {
+  double u[3], v[3], w[3];
+  for (int d = 0; d < 3; ++d) {
+    const double d17 = x[6][d] - x[0][d], d28 = x[7][d] - x[1][d];
+    const double d35 = x[4][d] - x[2][d], d46 = x[5][d] - x[3][d];
+    u[d] = d17 + d28 - d35 - d46;  // r: eta
+    v[d] = d17 + d28 + d35 + d46;  // s: zeta
+    w[d] = d17 - d28 - d35 + d46;  // t: xi
+  }
+  normalise(u);
+  normalise(v);
+  normalise(w);
+  // Symmetric orthogonalisation: each axis moves toward the cross product of the other two, so none of the
+  // three directions is privileged (three passes, as the reference).
+  for (int it = 0; it < 3; ++it) {
+    double a[3], b[3], c[3];
+    cross(v, w, a);
+    cross(w, u, b);
+    cross(u, v, c);
+    for (int d = 0; d < 3; ++d) {
+      a[d] += u[d];
+      b[d] += v[d];
+      c[d] += w[d];
+    }
+    normalise(a);
+    normalise(b);
+    normalise(c);
+    for (int d = 0; d < 3; ++d) {
+      u[d] = a[d];
+      v[d] = b[d];
+      w[d] = c[d];
+    }
+  }
+  double e3[3], e2[3];
+  cross(u, v, e3);
+  normalise(e3);
+  cross(e3, u, e2);
+  const double* cols[3] = {u, e2, e3};
+  if (heph_order) {
+    cols[0] = e3;
+    cols[1] = u;
+    cols[2] = e2;
+  }
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) R[r][c] = cols[c][r];
+}
+
+namespace {
+
+template <bool kCorot>
+void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                      const CycleInfo& cyc) {
   constexpr std::size_t G = kGroupSize;
   const double dt1 = cyc.dt1;
   const double c = mat.c_solid;
@@ -136,6 +210,23 @@ void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& ma
     if (g.small[i]) {
       for (std::size_t k = 0; k < 8; ++k)
         for (std::size_t d = 0; d < 3; ++d) x[k][d] = g.x_ref[(k * 3 + d) * G + i];
+    }
+
+    // Co-rotational: into the element frame (x' = R^T x, v' = R^T v).
+    [[maybe_unused]] double R[3][3];
+    if constexpr (kCorot) {
+      brick_corotational_frame(x, false, R);
+      for (int k = 0; k < 8; ++k) {
+        double xl[3], vl[3];
+        for (int c = 0; c < 3; ++c) {
+          xl[c] = R[0][c] * x[k][0] + R[1][c] * x[k][1] + R[2][c] * x[k][2];
+          vl[c] = R[0][c] * v[k][0] + R[1][c] * v[k][1] + R[2][c] * v[k][2];
+        }
+        for (int c = 0; c < 3; ++c) {
+          x[k][c] = xl[c];
+          v[k][c] = vl[c];
+        }
+      }
     }
 
     // Centre Jacobian, volume, gradients.
@@ -189,22 +280,35 @@ void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& ma
         L[a][2] += dv * b[k][2];
       }
     }
-    const double D[6] = {L[0][0], L[1][1], L[2][2], L[0][1] + L[1][0], L[1][2] + L[2][1], L[2][0] + L[0][2]};
-    const double wz = 0.5 * dt1 * (L[1][0] - L[0][1]);
-    const double wy = 0.5 * dt1 * (L[0][2] - L[2][0]);
-    const double wx = 0.5 * dt1 * (L[2][1] - L[1][2]);
-
-    // Jaumann rotation of the stored stress (old values on the right-hand side).
-    double s[6];
-#pragma GCC unroll 8
-    for (int m = 0; m < 6; ++m) s[m] = g.sig[static_cast<std::size_t>(m) * G + i];
+    double D[6] = {L[0][0], L[1][1], L[2][2], L[0][1] + L[1][0], L[1][2] + L[2][1], L[2][0] + L[0][2]};
     double so[6];
-    so[0] = s[0] - 2.0 * s[3] * wz + 2.0 * s[5] * wy;
-    so[1] = s[1] + 2.0 * s[3] * wz - 2.0 * s[4] * wx;
-    so[2] = s[2] - 2.0 * s[5] * wy + 2.0 * s[4] * wx;
-    so[3] = s[3] + wz * (s[0] - s[1]) + wy * s[4] - wx * s[5];
-    so[4] = s[4] + wx * (s[1] - s[2]) + wz * s[5] - wy * s[3];
-    so[5] = s[5] + wy * (s[2] - s[0]) + wx * s[3] - wz * s[4];
+    if constexpr (kCorot) {
+      // Second-order term of the co-rotational strain increment; no spin (the frame turns with the element).
+      auto ltl = [&](int a, int b) { return L[0][a] * L[0][b] + L[1][a] * L[1][b] + L[2][a] * L[2][b]; };
+      const double h = 0.5 * dt1;
+      D[0] -= h * ltl(0, 0);
+      D[1] -= h * ltl(1, 1);
+      D[2] -= h * ltl(2, 2);
+      D[3] -= dt1 * ltl(0, 1);
+      D[4] -= dt1 * ltl(1, 2);
+      D[5] -= dt1 * ltl(2, 0);
+      for (int m = 0; m < 6; ++m) so[m] = g.sig[static_cast<std::size_t>(m) * G + i];
+    } else {
+      const double wz = 0.5 * dt1 * (L[1][0] - L[0][1]);
+      const double wy = 0.5 * dt1 * (L[0][2] - L[2][0]);
+      const double wx = 0.5 * dt1 * (L[2][1] - L[1][2]);
+
+      // Jaumann rotation of the stored stress (old values on the right-hand side).
+      double s[6];
+#pragma GCC unroll 8
+      for (int m = 0; m < 6; ++m) s[m] = g.sig[static_cast<std::size_t>(m) * G + i];
+      so[0] = s[0] - 2.0 * s[3] * wz + 2.0 * s[5] * wy;
+      so[1] = s[1] + 2.0 * s[3] * wz - 2.0 * s[4] * wx;
+      so[2] = s[2] - 2.0 * s[5] * wy + 2.0 * s[4] * wx;
+      so[3] = s[3] + wz * (s[0] - s[1]) + wy * s[4] - wx * s[5];
+      so[4] = s[4] + wx * (s[1] - s[2]) + wz * s[5] - wy * s[3];
+      so[5] = s[5] + wy * (s[2] - s[0]) + wx * s[3] - wz * s[4];
+    }
 
     // Density, strain rate, material.
     const double rho = rho0 * g.vol0[i] / vol;
@@ -315,6 +419,16 @@ void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& ma
       f[7][a] -= -h1 + h2 - h3 + h4;
     }
 
+    // Co-rotational: forces back to global axes (f = R f'), and the frame kept for the stress output.
+    if constexpr (kCorot) {
+      for (int k = 0; k < 8; ++k) {
+        const double a = f[k][0], b2 = f[k][1], c3 = f[k][2];
+        for (int r = 0; r < 3; ++r) f[k][r] = R[r][0] * a + R[r][1] * b2 + R[r][2] * c3;
+      }
+      for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) g.frame[static_cast<std::size_t>(3 * c + r) * G + i] = R[r][c];
+    }
+
     // Store.
     store_nodal_forces<8, 3>(force, G, i, off, f);
 #pragma GCC unroll 8
@@ -330,6 +444,15 @@ void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& ma
     g.dt[i] = dt_e;
     g.k_nodal[i] = 0.25 * rho * vol / (dt_e * dt_e);
   }
+}
+
+}  // namespace
+
+void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
+  if (g.iframe == 2)
+    hex8_forces_impl<true>(g, nodes, mat, cyc);
+  else
+    hex8_forces_impl<false>(g, nodes, mat, cyc);
 }
 
 }  // namespace radx::solver

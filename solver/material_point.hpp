@@ -142,4 +142,9 @@ inline bool shell_stays_elastic(const ShellYieldBound& b, double rfac, double of
 double solid_point_update(const MaterialParams& p, double rate, const double de[6], double mu, double sig[6],
                           double& eps_p);
 
+// Current yield stress of a solid point at plastic strain eps_p and strain rate `rate` (after
+// solid_point_update), for elements that limit other stresses by it (the physical hourglass of Isolid 24).
+// A law that never yields returns 1e30 or more (LAW1).
+double solid_yield_stress(const MaterialParams& p, double eps_p, double rate);
+
 }  // namespace radx::solver

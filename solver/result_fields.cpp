@@ -163,8 +163,7 @@ void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
       CellValues c;
-      for (int q = 0; q < 6; ++q)
-        c.sig[static_cast<std::size_t>(q)] = g.sig[static_cast<std::size_t>(q) * kGroupSize + k];
+      brick_global_stress(g, k, c.sig.data());
       c.eps_p = g.eps_p[k];
       c.volume0 = g.vol0[k];
       c.e_int = g.e_int[k];

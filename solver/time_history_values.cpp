@@ -362,7 +362,9 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
         const auto& g = e.brick_groups()[static_cast<std::size_t>(gi)];
         const auto k = static_cast<std::size_t>(i);
         const char* names[6] = {"SX", "SY", "SZ", "SXY", "SYZ", "SXZ"};
-        for (std::size_t c = 0; c < 6; ++c) put(o, names[c], g.sig[c * kGroupSize + k]);
+        double sg[6];
+        brick_global_stress(g, k, sg);  // global axes also for co-rotational bricks
+        for (std::size_t c = 0; c < 6; ++c) put(o, names[c], sg[c]);
         double v[3] = {0, 0, 0};
         for (std::size_t c = 0; c < 8; ++c) {
           const auto n = static_cast<std::size_t>(g.conn[c * kGroupSize + k]);
