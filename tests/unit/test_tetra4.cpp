@@ -6,12 +6,16 @@
 // The linear tetrahedron reproduces a linear velocity field exactly on any shape (sum_k x_k (x) b_k = I
 // holds for every tetrahedron) and, unlike the one-point brick, integrates its gradients exactly, so every
 // interior node of a distorted tetra mesh is in equilibrium under a constant stress.
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
+#include "contact/type7_engine.hpp"
+#include "contact/type7_prepare.hpp"
 #include "parser/model_builder.hpp"
 #include "solver/element_groups.hpp"
 #include "solver/model/geometry.hpp"
@@ -360,4 +364,45 @@ TEST_CASE("tetra starter: a solid tetra part refused by /SURF/PART and a shell p
   bool wrong_kind = false;
   for (const auto& d : b.diags.items()) wrong_kind = wrong_kind || d.code == radx::Diag::PartWrongKind;
   CHECK(wrong_kind);
+}
+
+TEST_CASE("tetra faces leave TYPE7 with Idel when their tetrahedra are deleted", "[tetra][type7]") {
+  // decks/verification/tetra_drop: the plate's nodes against the outer tetra faces of a block. The plate's
+  // centre node is put inside the gap under the block's bottom face; the face pushes it while its tetrahedra
+  // live, and with Idel 1 no more once they are deleted (the plate's shells stay, so the node stays).
+  const std::string dir = std::string(RADX_SOURCE_DIR) + "/decks/verification/tetra_drop/";
+  radx::Diagnostics d;
+  const auto deck = radx::read_starter_deck(dir + "TETRA_DROP_0000.rad", d);
+  auto m = radx::build_model(deck, d);
+  REQUIRE_FALSE(d.has_errors());
+  REQUIRE(m.interfaces.size() == 1);
+  m.interfaces[0].idel = 1;
+  double z_bottom = 1e300;
+  for (const auto n : m.tetras.conn) z_bottom = std::min(z_bottom, m.nodes.z[static_cast<std::size_t>(n)]);
+  const auto centre = static_cast<std::size_t>(m.nodes.index.find(1041));  // plate node at (0, 0, 0)
+  REQUIRE(m.nodes.x[centre] == 0.0);
+  REQUIRE(m.nodes.y[centre] == 0.0);
+  radx::contact::prepare_type7_interfaces(m);
+  const double gap = m.interfaces[0].gapmin;
+  m.nodes.z[centre] = z_bottom - 0.5 * gap;  // half the gap left: penetration g / 2
+  radx::contact::Type7Contact contact(m, radx::contact::ContactControls{});
+  const std::size_t nn = m.nodes.size();
+  std::vector<double> x = m.nodes.x, y = m.nodes.y, z = m.nodes.z, v(nn, 0.0), mass = m.node_mass,
+                      added(nn, 0.0);
+  std::vector<std::uint8_t> fixed(nn, 0);
+  const radx::contact::ContactNodes nodes{x, y, z, v, v, v, mass, added, fixed, {}};
+  auto centre_force = [&] {
+    for (const auto n : contact.touched())
+      if (static_cast<std::size_t>(n) == centre) return contact.force()[3 * centre + 2];
+    return 0.0;
+  };
+  contact.compute(0.0, 1e-7, nodes);
+  CHECK(centre_force() < 0);  // the face pushes the plate node down, away from the block
+  std::vector<std::uint8_t> alive(m.element_count(), 1);
+  const std::size_t tetra0 = m.shells.size() + m.shells3.size() + m.bricks.size();
+  for (std::size_t e = 0; e < m.tetras.size(); ++e) alive[tetra0 + e] = 0;
+  contact.elements_deleted(alive);
+  contact.compute(1e-7, 1e-7, nodes);
+  CHECK(centre_force() == 0.0);
+  CHECK(contact.take_messages().empty());  // the plate node keeps its shells: not removed
 }
