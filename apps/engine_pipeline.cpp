@@ -47,6 +47,8 @@ io::StepSource source_of(solver::StepControl::Kind k) {
     case solver::StepControl::Kind::Shell: return io::StepSource::Shell;
     case solver::StepControl::Kind::Shell3: return io::StepSource::Shell3;
     case solver::StepControl::Kind::Brick: return io::StepSource::Brick;
+    // Radioss lists a tetrahedron's step as a solid's, BRICK with the element id.
+    case solver::StepControl::Kind::Tetra: return io::StepSource::Brick;
     case solver::StepControl::Kind::Node: return io::StepSource::Node;
     case solver::StepControl::Kind::Interface: return io::StepSource::Interface;
     case solver::StepControl::Kind::Imposed: return io::StepSource::Imposed;
@@ -363,6 +365,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   h.shells = model.shells.size();
   h.shells3 = model.shells3.size();
   h.bricks = model.bricks.size();
+  h.tetras = model.tetras.size();
   h.interfaces = model.interfaces.size();
   h.total_mass = model.total_mass;
   h.mass_unit = model.units.mass_name;

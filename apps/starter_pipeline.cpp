@@ -193,8 +193,9 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
   out << "radx starter: " << opt.deck << '\n';
   if (readable) {
     out << "  nodes " << model.nodes.size() << ", shells " << model.shells.size() << ", 3-node shells "
-        << model.shells3.size() << ", bricks " << model.bricks.size() << ", parts " << model.parts.size()
-        << ", interfaces " << model.interfaces.size() << '\n';
+        << model.shells3.size() << ", bricks " << model.bricks.size()
+        << (model.tetras.size() == 0 ? std::string() : ", tetrahedra " + std::to_string(model.tetras.size()))
+        << ", parts " << model.parts.size() << ", interfaces " << model.interfaces.size() << '\n';
     out << "  total mass " << std::setprecision(6) << model.total_mass << ' ' << model.units.mass_name
         << '\n';
     for (const auto& in : model.interfaces) {

@@ -437,7 +437,7 @@ struct Type7Contact::Impl {
         }
         st.segment_area0[s] = segment_area(x, st.segments[s][2] == st.segments[s][3]);
       }
-      // Model cell of each segment's owner element (cells: 4-node shells, 3-node shells, bricks).
+      // Model cell of each segment's owner element (cells: 4-node shells, 3-node shells, bricks, tetrahedra).
       st.owner_cell.assign(nm, -1);
       for (std::size_t s = 0; s < nm && s < surf.owner.size(); ++s) {
         const auto o = surf.owner[s];
@@ -447,6 +447,9 @@ struct Type7Contact::Impl {
           case model::SegmentOwner::Shell4: base = 0; break;
           case model::SegmentOwner::Shell3: base = m.shells.size(); break;
           case model::SegmentOwner::Brick8: base = m.shells.size() + m.shells3.size(); break;
+          case model::SegmentOwner::Tetra4:
+            base = m.shells.size() + m.shells3.size() + m.bricks.size();
+            break;
           default: continue;
         }
         st.owner_cell[s] = static_cast<std::int32_t>(base + static_cast<std::size_t>(o));
@@ -478,7 +481,7 @@ struct Type7Contact::Impl {
     force.assign(3 * m.nodes.size(), 0.0);
     is_touched.assign(m.nodes.size(), 0);
     elements_around0.assign(m.nodes.size(), 0);
-    for (const auto* b : {&m.shells, &m.shells3, &m.bricks}) {
+    for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras}) {
       const auto npe = static_cast<std::size_t>(b->npe());
       for (std::size_t e = 0; e < b->size(); ++e)
         for (std::size_t k = 0; k < npe; ++k)
@@ -1042,7 +1045,7 @@ void Type7Contact::elements_deleted(std::span<const std::uint8_t> alive) {
   // Alive elements around each node, for the removal of secondary nodes left without any (Idel > 0).
   std::vector<std::int32_t> alive_around(m.nodes.size(), 0);
   std::size_t cell = 0;
-  for (const auto* b : {&m.shells, &m.shells3, &m.bricks}) {
+  for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras}) {
     const auto npe = static_cast<std::size_t>(b->npe());
     for (std::size_t e = 0; e < b->size(); ++e, ++cell)
       if (alive[cell])

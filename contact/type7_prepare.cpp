@@ -8,6 +8,10 @@
 //   thickest shell at the secondary node (0 for bricks only or no element).
 // Stiffness, 4.2. Main segment on a shell: Km = Stfac 0.5 E t; on a brick: Km = Stfac B S^2 / V.
 //   Secondary node on a shell: Ks = Stfac 0.5 E t; on a brick: Ks = Stfac B V^(1/3).
+//   A tetrahedron counts as a solid as a brick does (Radioss keeps it as a degenerate brick): its face gives
+//   Km = Stfac B S^2 / V with its own volume, its nodes Ks = Stfac B V^(1/3), and its 6 edges join the mean
+//   side l of the main solids.
+//   [inferred: the formulas are the brick's applied to the tetrahedron's volume and face]
 //   Istf 0: K = Km; 1: K = Stfac; 2..5: K = clamp(Kn, Stmin, Stmax) with Kn = (Km + Ks)/2,
 //   max(Km, Ks), min(Km, Ks), Km Ks / (Km + Ks).
 // Initial penetrations, 4.6: a secondary node closer than g to a main segment (p = g - d > 0) is
@@ -161,6 +165,20 @@ double brick_mean_side(const std::array<Vec3, 8>& x) {
   return s / 12.0;
 }
 
+std::array<Vec3, 4> tetra_x(const model::Model& m, std::int32_t e) {
+  std::array<Vec3, 4> x{};
+  for (int k = 0; k < 4; ++k) x[k] = node_x(m, m.tetras.conn[4 * static_cast<std::size_t>(e) + k]);
+  return x;
+}
+
+// Mean edge length of a tetrahedron (6 edges).
+double tetra_mean_side(const std::array<Vec3, 4>& x) {
+  double s = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) s += model::norm(model::sub(x[b], x[a]));
+  return s / 6.0;
+}
+
 // Per-node properties of the elements around each node: thickest shell (contact thickness), and the
 // largest shell and brick stiffness terms.
 struct NodeSupport {
@@ -196,6 +214,15 @@ NodeSupport node_support(const model::Model& m) {
     const double k = material_of(m, m.bricks.part[e]).bulk * std::cbrt(v);
     for (int j = 0; j < 8; ++j) {
       const auto node = m.bricks.conn[8 * e + j];
+      if (node >= 0) s.k_brick[node] = std::max(s.k_brick[node], k);
+    }
+  }
+  for (std::size_t e = 0; e < m.tetras.size(); ++e) {
+    const auto x = tetra_x(m, static_cast<std::int32_t>(e));
+    const double v = std::max(0.0, model::tetra_volume(x[0], x[1], x[2], x[3]));
+    const double k = material_of(m, m.tetras.part[e]).bulk * std::cbrt(v);
+    for (int j = 0; j < 4; ++j) {
+      const auto node = m.tetras.conn[4 * e + j];
       if (node >= 0) s.k_brick[node] = std::max(s.k_brick[node], k);
     }
   }
@@ -243,6 +270,15 @@ void gap_and_stiffness(model::Model& m, model::Interface& in, const NodeSupport&
         const double v = model::brick_volume(bx);
         in.stiff_segment[s] =
             v > 0 ? in.stfac * material_of(m, m.bricks.part[owner]).bulk * area * area / v : 0.0;
+        break;
+      }
+      case model::SegmentOwner::Tetra4: {
+        const auto tx = tetra_x(m, owner);
+        l_sum += tetra_mean_side(tx);
+        ++l_count;
+        const double v = model::tetra_volume(tx[0], tx[1], tx[2], tx[3]);
+        in.stiff_segment[s] =
+            v > 0 ? in.stfac * material_of(m, m.tetras.part[owner]).bulk * area * area / v : 0.0;
         break;
       }
       case model::SegmentOwner::None: break;
@@ -483,6 +519,17 @@ std::vector<double> tributary_areas(const model::Model& m, std::span<const std::
         for (int b = a; b > 0 && key[b - 1] > key[b]; --b) std::swap(key[b - 1], key[b]);
       if (std::find(own.begin(), own.end(), key) != own.end()) continue;  // a brick counts a face once
       own.push_back(key);
+      faces.push_back({key, n});
+    }
+  }
+  // Tetrahedron faces join the same pool: a face shared by two solids (brick or tetrahedron) is inner.
+  for (std::size_t e = 0; e < m.tetras.size(); ++e, ++cell) {
+    if (!is_alive(cell)) continue;
+    const auto* c = &m.tetras.conn[4 * e];
+    for (const auto& f : model::kTetraFaces) {
+      std::array<std::int32_t, 4> n{c[f[0]], c[f[1]], c[f[2]], -1};
+      std::array<std::int32_t, 4> key{n[0], n[1], n[2], -1};
+      std::sort(key.begin(), key.begin() + 3);
       faces.push_back({key, n});
     }
   }

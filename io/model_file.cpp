@@ -312,7 +312,7 @@ RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RAD
 
 // Written member by member below (write_radx, read_file, write_block, read_block): a new member of these
 // structs must be added there.
-static_assert(member_count<Model>() == 36, "model::Model changed: update write_radx and read_file");
+static_assert(member_count<Model>() == 37, "model::Model changed: update write_radx and read_file");
 static_assert(member_count<model::Nodes>() == 5, "model::Nodes changed: update write_radx and read_file");
 static_assert(member_count<model::ElementBlock>() == 7, "model::ElementBlock changed: update write_block");
 
@@ -350,6 +350,7 @@ void for_each_block(ModelT& m, Fn&& fn) {
   fn("shell4", m.shells);
   fn("shell3", m.shells3);
   fn("brick8", m.bricks);
+  fn("tetra4", m.tetras);
 }
 
 // ---------------------------------------------------------------------------------------------------

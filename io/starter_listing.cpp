@@ -228,6 +228,7 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
   count("4-node shells", m.shells.size());
   count("3-node shells", m.shells3.size());
   count("8-node bricks", m.bricks.size());
+  if (m.tetras.size() > 0) count("4-node tetrahedra", m.tetras.size());
   count("parts", m.parts.size());
   count("properties", m.properties.size());
   count("materials", m.materials.size());
@@ -286,6 +287,9 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
       os << "/PROP/SOLID\n    Isolid " << s.isolid << ": " << solid_formulation(s.isolid) << "\n    qa "
          << s.qa << "  qb " << s.qb << "  h " << s.h << "  Ismstr " << s.ismstr << "  Iframe " << s.iframe
          << '\n';
+      if (m.tetras.size() > 0)
+        os << "    Itetra4 " << s.itetra4
+           << ": 4-node tetrahedron, one point, constant strain, no hourglass (for its tetrahedra)\n";
     }
   }
 

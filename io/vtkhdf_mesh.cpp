@@ -15,13 +15,14 @@ namespace {
 using model::Model;
 
 // XDMF "Mixed" topology type codes.
-constexpr std::int64_t kXdmfTriangle = 4, kXdmfQuad = 5, kXdmfHexahedron = 9;
+constexpr std::int64_t kXdmfTriangle = 4, kXdmfQuad = 5, kXdmfTetrahedron = 6, kXdmfHexahedron = 9;
 
 const char* block_name(model::ElementType t) {
   switch (t) {
     case model::ElementType::Shell4: return "shell";
     case model::ElementType::Shell3: return "3-node shell";
     case model::ElementType::Brick8: return "brick";
+    case model::ElementType::Tetra4: return "tetrahedron";
   }
   return "element";
 }
@@ -32,6 +33,7 @@ void for_each_block(const Model& m, Fn&& fn) {
   fn(m.shells);
   fn(m.shells3);
   fn(m.bricks);
+  fn(m.tetras);
 }
 
 }  // namespace
@@ -71,7 +73,8 @@ void check_vtkhdf_mesh(const Model& m) {
 VtkhdfMeshSizes write_vtkhdf_mesh(hid_t file, const Model& m) {
   const std::size_t nn = m.nodes.size();
   const std::size_t nc = m.element_count();
-  const std::size_t max_conn = 4 * m.shells.size() + 3 * m.shells3.size() + 8 * m.bricks.size();
+  const std::size_t max_conn =
+      4 * m.shells.size() + 3 * m.shells3.size() + 8 * m.bricks.size() + 4 * m.tetras.size();
 
   std::vector<std::int64_t> connectivity, offsets, element_id, mixed;
   std::vector<std::uint8_t> types;
@@ -90,7 +93,10 @@ VtkhdfMeshSizes write_vtkhdf_mesh(hid_t file, const Model& m) {
       std::size_t used = npe;
       std::uint8_t vtk = kVtkHexahedron;
       std::int64_t xdmf = kXdmfHexahedron;
-      if (b.type == model::ElementType::Shell4 && nodes[2] != nodes[3]) {
+      if (b.type == model::ElementType::Tetra4) {
+        vtk = kVtkTetra;
+        xdmf = kXdmfTetrahedron;
+      } else if (b.type == model::ElementType::Shell4 && nodes[2] != nodes[3]) {
         vtk = kVtkQuad;
         xdmf = kXdmfQuad;
       } else if (b.type != model::ElementType::Brick8) {  // 3-node shell, or a quad with n3 == n4

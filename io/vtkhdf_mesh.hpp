@@ -14,6 +14,7 @@ namespace radx::io {
 // Cell types of the VTKHDF Types dataset (VTK's numbering).
 inline constexpr std::uint8_t kVtkTriangle = 5;
 inline constexpr std::uint8_t kVtkQuad = 9;
+inline constexpr std::uint8_t kVtkTetra = 10;
 inline constexpr std::uint8_t kVtkHexahedron = 12;
 
 // Sizes of the grid written, for the indexes that describe it (XDMF needs the MixedTopology length).

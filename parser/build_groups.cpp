@@ -1,8 +1,9 @@
 // Deck -> Model: boxes, functions, element groups, node groups and surfaces (deck-format.md: /BOX/RECTA,
 // /FUNCT, /GRNOD/*, /SURF/PART, /SURF/PART/EXT, /SURF/SEG, and section 5.5). Negative ids subtract in
 // /GRNOD/PART and /GRNOD/GRNOD, and flip the segment normal in /SURF/PART (they never remove there).
-// /SURF/PART/EXT keeps the brick faces that no other brick of the listed parts shares, oriented
-// outward, plus the shell segments of the listed parts.
+// /SURF/PART/EXT keeps the brick and tetrahedron faces that no other solid of the listed parts shares,
+// oriented outward (a tetrahedron face is a triangle segment, n4 = n3), plus the shell segments of the
+// listed parts; /SURF/PART/ALL takes every face of both.
 //
 // Element groups (/GRSHEL, /GRSH3N, /GRBRIC) and what is built from them follow the OpenRadioss starter
 // (starter/source/groups: hm_lecgre.F, hm_tagpart.F, hm_grogro.F, hm_elngr.F, hm_read_surf.F, hm_surfgr2.F,
@@ -125,6 +126,7 @@ const model::ElementBlock& ModelBuilder::block(model::ElementType type) const {
     case model::ElementType::Shell4: return m_.shells;
     case model::ElementType::Shell3: return m_.shells3;
     case model::ElementType::Brick8: return m_.bricks;
+    case model::ElementType::Tetra4: return m_.tetras;
   }
   return m_.shells;
 }
@@ -434,7 +436,7 @@ const std::vector<std::int32_t>* ModelBuilder::group_nodes(std::int32_t g) {
   grnod_state_[g] = 1;
   std::vector<std::int32_t> add, remove;
   auto part_nodes = [&](std::int32_t part, std::vector<std::int32_t>& out) {
-    for (const auto* b : {&m_.shells, &m_.shells3, &m_.bricks}) {
+    for (const auto* b : {&m_.shells, &m_.shells3, &m_.bricks, &m_.tetras}) {
       const auto npe = static_cast<std::size_t>(b->npe());
       for (std::size_t e = 0; e < b->size(); ++e) {
         if (b->part[e] != part) continue;
@@ -611,6 +613,12 @@ void ModelBuilder::build_surfaces() {
         faces.emplace(face_key({c[f[0]], c[f[1]], c[f[2]], c[f[3]]}),
                       std::pair{model::SegmentOwner::Brick8, static_cast<std::int32_t>(e)});
     }
+    for (std::size_t e = 0; e < m_.tetras.size(); ++e) {
+      const auto* c = &m_.tetras.conn[4 * e];
+      for (const auto& f : model::kTetraFaces)
+        faces.emplace(face_key({c[f[0]], c[f[1]], c[f[2]], c[f[2]]}),
+                      std::pair{model::SegmentOwner::Tetra4, static_cast<std::int32_t>(e)});
+    }
     faces_built = true;
   };
   for (const auto& r : deck_.records) {
@@ -643,39 +651,64 @@ void ModelBuilder::build_surfaces() {
       else
         push({c[0], c[1], c[2], c[2]}, model::SegmentOwner::Shell3, e);
     };
-    // The faces of `bricks`, in that order, each pointing out of its brick. With `neighbours`, a face that
-    // another brick marked there also has is an inner face and is left out; a face whose key is in
-    // `covered` is left out too (a shell already gives that segment).
-    auto push_brick_faces = [&](const std::vector<std::int32_t>& bricks,
-                                const std::vector<std::uint8_t>* neighbours,
-                                const std::set<FaceKey>& covered) {
-      std::map<FaceKey, int> sharing;  // how many marked bricks have the face (each brick counted once)
-      if (neighbours) {
-        for (std::size_t e = 0; e < m_.bricks.size(); ++e) {
-          if (!(*neighbours)[e]) continue;
-          const auto* c = &m_.bricks.conn[8 * e];
-          std::set<FaceKey> own;
-          for (const auto& f : model::kBrickFaces) {
-            std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
-            const int n = keep_distinct(seg);
-            if (n >= 3) own.insert(distinct_key(seg, n));
+    // The faces of `bricks`, then of `tetras`, in that order, each pointing out of its element (a tetrahedron
+    // face is a triangle, n4 = n3). With `neighbours` (bricks) and `tetra_neighbours`, a face that another
+    // marked solid also has is an inner face and is left out; a face whose key is in `covered` is left out
+    // too (a shell already gives that segment).
+    auto push_solid_faces =
+        [&](const std::vector<std::int32_t>& bricks, const std::vector<std::int32_t>& tetras,
+            const std::vector<std::uint8_t>* neighbours, const std::vector<std::uint8_t>* tetra_neighbours,
+            const std::set<FaceKey>& covered) {
+          std::map<FaceKey, int> sharing;  // how many marked solids have the face (each solid counted once)
+          if (tetra_neighbours) {
+            for (std::size_t e = 0; e < m_.tetras.size(); ++e) {
+              if (!(*tetra_neighbours)[e]) continue;
+              const auto* c = &m_.tetras.conn[4 * e];
+              for (const auto& f : model::kTetraFaces) {
+                std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[2]]};
+                const int n = keep_distinct(seg);
+                if (n >= 3) ++sharing[distinct_key(seg, n)];
+              }
+            }
           }
-          for (const auto& k : own) ++sharing[k];
-        }
-      }
-      for (const auto e : bricks) {
-        const auto* c = &m_.bricks.conn[8 * static_cast<std::size_t>(e)];
-        for (const auto& f : model::kBrickFaces) {
-          std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
-          const int n = keep_distinct(seg);
-          if (n < 3) continue;
-          const auto key = distinct_key(seg, n);
-          if (neighbours && sharing[key] > 1) continue;
-          if (covered.count(key)) continue;
-          push(seg, model::SegmentOwner::Brick8, e);
-        }
-      }
-    };
+          if (neighbours) {
+            for (std::size_t e = 0; e < m_.bricks.size(); ++e) {
+              if (!(*neighbours)[e]) continue;
+              const auto* c = &m_.bricks.conn[8 * e];
+              std::set<FaceKey> own;
+              for (const auto& f : model::kBrickFaces) {
+                std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
+                const int n = keep_distinct(seg);
+                if (n >= 3) own.insert(distinct_key(seg, n));
+              }
+              for (const auto& k : own) ++sharing[k];
+            }
+          }
+          for (const auto e : bricks) {
+            const auto* c = &m_.bricks.conn[8 * static_cast<std::size_t>(e)];
+            for (const auto& f : model::kBrickFaces) {
+              std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
+              const int n = keep_distinct(seg);
+              if (n < 3) continue;
+              const auto key = distinct_key(seg, n);
+              if (neighbours && sharing[key] > 1) continue;
+              if (covered.count(key)) continue;
+              push(seg, model::SegmentOwner::Brick8, e);
+            }
+          }
+          for (const auto e : tetras) {
+            const auto* c = &m_.tetras.conn[4 * static_cast<std::size_t>(e)];
+            for (const auto& f : model::kTetraFaces) {
+              std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[2]]};
+              const int n = keep_distinct(seg);
+              if (n < 3) continue;
+              const auto key = distinct_key(seg, n);
+              if (tetra_neighbours && sharing[key] > 1) continue;
+              if (covered.count(key)) continue;
+              push(seg, model::SegmentOwner::Tetra4, e);
+            }
+          }
+        };
     if (path == "/SURF/SEG") {
       const auto& t = r.records;
       const int c[4] = {t.column("n1"), t.column("n2"), t.column("n3"), t.column("n4")};
@@ -723,6 +756,8 @@ void ModelBuilder::build_surfaces() {
             bool has_solid = false;
             for (std::size_t e = 0; e < m_.bricks.size() && !has_solid; ++e)
               has_solid = m_.bricks.part[e] == part;
+            for (std::size_t e = 0; e < m_.tetras.size() && !has_solid; ++e)
+              has_solid = m_.tetras.part[e] == part;
             if (has_solid)
               diags_.error(
                   Diag::PartWrongKind, at(r.id_pos[k], 1), about(r),
@@ -765,7 +800,14 @@ void ModelBuilder::build_surfaces() {
           chosen[e] = 1;
           bricks.push_back(static_cast<std::int32_t>(e));
         }
-        push_brick_faces(bricks, ext ? &chosen : nullptr, covered);
+        std::vector<std::uint8_t> chosen_tetras(m_.tetras.size(), 0);
+        std::vector<std::int32_t> tetras;
+        for (std::size_t e = 0; e < m_.tetras.size(); ++e) {
+          if (!listed(m_.tetras.part[e])) continue;
+          chosen_tetras[e] = 1;
+          tetras.push_back(static_cast<std::int32_t>(e));
+        }
+        push_solid_faces(bricks, tetras, ext ? &chosen : nullptr, ext ? &chosen_tetras : nullptr, covered);
       }
     } else if (path == "/SURF/GRSHEL" || path == "/SURF/GRSH3N") {
       const auto type = path == "/SURF/GRSHEL" ? model::ElementType::Shell4 : model::ElementType::Shell3;
@@ -820,7 +862,7 @@ void ModelBuilder::build_surfaces() {
       // EXT: a face is inner when another brick of the groups has it; FREE: when any brick of the model has
       // it.
       const std::vector<std::uint8_t> every(path == "/SURF/GRBRIC/FREE" ? m_.bricks.size() : 0, 1);
-      push_brick_faces(bricks, path == "/SURF/GRBRIC/EXT" ? &chosen : &every, {});
+      push_solid_faces(bricks, {}, path == "/SURF/GRBRIC/EXT" ? &chosen : &every, nullptr, {});
     } else if (path == "/SURF/GRBRIC") {
       diags_.error(Diag::PartWrongKind, at(r.pos, 1), about(r),
                    "a brick group makes a surface only as /SURF/GRBRIC/EXT (the faces no other brick of the "

@@ -281,6 +281,16 @@ void ModelBuilder::reorient_inverted_bricks() {
             "faces n1-n4 and n5-n8 swapped so that their volume stays positive, as Radioss does (brick " +
             std::to_string(b.id[first]) + " is the first)");
   }
+  // Tetrahedra turned inside out the same way get n2 and n4 swapped, as the starter does for one given
+  // inverted (model_builder.cpp check_tetra).
+  auto& t = m_.tetras;
+  for (std::size_t e = 0; e < t.size(); ++e) {
+    const auto* c = &t.conn[4 * e];
+    if (c[0] < 0 || c[1] < 0 || c[2] < 0 || c[3] < 0) continue;
+    auto X = [&](std::int32_t i) { return Vec3{n.x[i], n.y[i], n.z[i]}; };
+    if (model::tetra_volume(X(c[0]), X(c[1]), X(c[2]), X(c[3])) < 0)
+      std::swap(t.conn[4 * e + 1], t.conn[4 * e + 3]);
+  }
   mirrored_ = false;
 }
 

@@ -16,6 +16,9 @@
 //                   (3 = off, as 0; Icpre 2 and Ihkt 2+ refused); Ismstr 4 (large strain) and 2 (large
 //                   strain, small strain after a /DT/BRICK/CST switch: without /DT/BRICK/CST the same as 4);
 //                   no distortion control (Icontrol 1)
+//   4-node tetras:  Itetra4 1000 (constant strain, one point; OpenRadioss hm_read_prop14.F also reads 0 as
+//                   /DEF_SOLID's value, 2 and unexpected values as 1000), Ismstr 2 or 4, Iframe 1; Itetra4 1
+//                   and 3 (nodal pressure) and 10 (converted to a 10-node tetra) are refused
 #include <algorithm>
 #include <string>
 
@@ -75,12 +78,21 @@ std::string ismstr_name(int v) {
   }
 }
 
+std::string itetra4_name(int v) {
+  switch (v) {
+    case 1: return "nodal pressure averaging";
+    case 3: return "nodal pressure, smoothed";
+    case 10: return "converted to a 10-node tetrahedron";
+    default: return "constant strain, one point";
+  }
+}
+
 }  // namespace
 
 void ModelBuilder::check_formulations() {
   // Which element shapes use each property.
   std::vector<std::uint8_t> use(m_.properties.size(), 0);
-  constexpr std::uint8_t kQuad = 1, kTri = 2, kBrick = 4;
+  constexpr std::uint8_t kQuad = 1, kTri = 2, kBrick = 4, kTetra = 8;
   auto mark = [&](const model::ElementBlock& b, std::uint8_t bit) {
     std::vector<std::uint8_t> part_seen(m_.parts.size(), 0);
     for (const auto p : b.part)
@@ -93,6 +105,7 @@ void ModelBuilder::check_formulations() {
   mark(m_.shells, kQuad);
   mark(m_.shells3, kTri);
   mark(m_.bricks, kBrick);
+  mark(m_.tetras, kTetra);
 
   for (const auto& rec : deck_.records) {
     const auto path = rec.decl->path;
@@ -143,7 +156,6 @@ void ModelBuilder::check_formulations() {
       flag("Ismstr", s.ismstr, s.ismstr == 1 || s.ismstr == 2, 2, ismstr_name(s.ismstr), ismstr_name(2),
            "shells");
     } else {
-      if (!(used & kBrick)) continue;
       auto& s = prop.solid;
       // Isolid 14, 15, 18 and 24 impose the co-rotational frame (model_builder.cpp): that is not the deck's
       // choice, which is the property's Iframe, else /DEF_SOLID's, else 1.
@@ -155,6 +167,17 @@ void ModelBuilder::check_formulations() {
           asked = defs.front()->get_int("Iframe");
         s.iframe = asked > 0 ? static_cast<int>(asked) : 1;
       }
+      if (used & kTetra) {
+        flag("Itetra4", s.itetra4, s.itetra4 != 1 && s.itetra4 != 3 && s.itetra4 != 10, 1000,
+             itetra4_name(s.itetra4), itetra4_name(1000), "4-node tetrahedra");
+        if (!(used & kBrick)) {
+          flag("Ismstr", s.ismstr, s.ismstr == 2 || s.ismstr == 4, 4, ismstr_name(s.ismstr), ismstr_name(4),
+               "4-node tetrahedra");
+          flag("Iframe", s.iframe, s.iframe == 1, 1, s.iframe == 2 ? "co-rotational" : "frame option",
+               "Jaumann rate, not co-rotational", "4-node tetrahedra");
+        }
+      }
+      if (!(used & kBrick)) continue;
       flag("Isolid", s.isolid, s.isolid == 1 || s.isolid == 2 || s.isolid == 24, 1, isolid_name(s.isolid),
            isolid_name(1), "bricks");
       if (s.isolid == 24) {

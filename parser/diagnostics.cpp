@@ -80,6 +80,8 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::TangledBrick,
        "a brick with positive volume but a corner turned inside out (a negative corner Jacobian: faces that "
        "intersect, or a re-entrant corner)"},
+      {Diag::RenumberedTetra,
+       "a tetrahedron given with negative volume; the starter swaps n2 and n4, as Radioss does"},
       {Diag::InitialPenetration, "secondary nodes closer to the main surface than the gap at t = 0"},
       {Diag::InterfaceFieldIgnored, "an interface field radx reads but does not use is set"},
       {Diag::BadFrictionLaw, "friction law coefficients that are inconsistent"},

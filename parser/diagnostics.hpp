@@ -75,6 +75,7 @@ enum class Diag : std::uint16_t {
   DegenerateTransform = 605,
   CoordinatesPerturbed = 606,
   TangledBrick = 607,
+  RenumberedTetra = 608,
   // contact
   InitialPenetration = 701,
   InterfaceFieldIgnored = 702,

@@ -189,6 +189,24 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    // Columns as OpenRadioss's reader cuts the card (hm_read_solid.F: id, then the nodes 10 wide).
+    KeywordDecl k = kw("/TETRA4", "4-node tetrahedra of one part (a /PROP/SOLID part), one element per line",
+                       Header::PartId, false, "part_ID");
+    k.tail = Tail::Records;
+    k.record = card(
+        "tetra4",
+        {I("tetra_ID", 1, 10, "element id, unique among all elements").refs(IdKind::Element).must().gt(0),
+         I("n1", 11, 20, "node 1").refs(IdKind::Node).must(),
+         I("n2", 21, 30, "node 2").refs(IdKind::Node).must(),
+         I("n3", 31, 40,
+           "node 3; the right-hand normal of n1 n2 n3 points away from n4 (otherwise the "
+           "starter swaps n2 and n4, as Radioss does)")
+             .refs(IdKind::Node)
+             .must(),
+         I("n4", 41, 50, "node 4").refs(IdKind::Node).must()});
+    t.push_back(std::move(k));
+  }
+  {
     KeywordDecl k = kw("/PART", "a part: the property and material of a set of elements", Header::IdUnit,
                        true, "part_ID");
     k.cards = {card(
@@ -271,9 +289,12 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                  .allow({0, 2, 1000})
                  .unused(),
              I("Inpts", 51, 60, "integration points coded 100r + 10s + t; 0 = formulation default"),
-             // Any value is read as Radioss reads it (negative: the integration flag of older decks;
-             // unexpected values fall back to /DEF_SOLID's): radx has no tetras for it to change.
-             I("Itetra4", 61, 70, "4-node tetra formulation; 0 takes /DEF_SOLID").versions(100).unused(),
+             // Any value is read as Radioss reads it (negative: the integration flag of older decks; 2 and
+             // unexpected values mean 1000); check_formulations.cpp refuses 1, 3 and 10 when a tetra uses it.
+             I("Itetra4", 61, 70,
+               "4-node tetra formulation: 1000 (default) constant strain; 1 and 3 (nodal pressure) and 10 "
+               "(as a tetra10) are refused; 0 takes /DEF_SOLID")
+                 .versions(100),
              I("Iframe", 71, 80, "1 non-co-rotational, 2 co-rotational; 0 takes /DEF_SOLID").allow({0, 1, 2}),
              R("dn", 81, 100, "numerical damping of HEPH (Isolid 24); 0 takes the formulation default")}),
         card("card 2", {R("qa", 1, 20, "quadratic bulk viscosity coefficient").zero_is(1.1),
@@ -1483,7 +1504,7 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
          I("Ismstr", 11, 20, "default solid strain formulation"),
          I("Icpre", 21, 30, "default constant-pressure option").versions(2021),
          I("Istrain", 31, 40, "strain output flag, ignored").versions(100, 2020).unused(),
-         I("Itetra4", 41, 50, "default 4-node tetra formulation").versions(2019).unused(),
+         I("Itetra4", 41, 50, "default 4-node tetra formulation (see /PROP/SOLID Itetra4)").versions(2019),
          I("Itetra10", 51, 60, "default 10-node tetra formulation").versions(2019).unused(),
          I("Imas", 61, 70, "nodal mass distribution: 1 by angle, 2 uniform").versions(120).not_implemented(),
          I("Iframe", 71, 80, "default element frame"),
@@ -1614,8 +1635,8 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/PROP/TYPE18", "/PROP/INT_BEAM", "/PROP/TYPE20", "/PROP/TSHELL", "/PROP/TYPE22", "/PROP/TYPE23",
         "/PROP/TYPE51", "/PROP/TYPE52", "/PROP/USER",
         // elements
-        "/SPRING", "/BEAM", "/TRUSS", "/TETRA4", "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD",
-        "/TRIA", "/SPHCEL",
+        "/SPRING", "/BEAM", "/TRUSS", "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD", "/TRIA",
+        "/SPHCEL",
         // groups, surfaces, boxes
         "/GRNOD/LINE", "/GRSHEL", "/GRSH3N", "/GRBRIC", "/GRBEAM", "/GRTRUS", "/GRSPRI", "/GRPART", "/GRQUAD",
         "/SURF/SURF", "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE",

@@ -404,7 +404,8 @@ void ModelBuilder::build_elements() {
   };
   const Kind kinds[] = {{"/SHELL", "shell_ID", &m_.shells, model::PropertyKind::Shell},
                         {"/SH3N", "tria_ID", &m_.shells3, model::PropertyKind::Shell},
-                        {"/BRICK", "brick_ID", &m_.bricks, model::PropertyKind::Solid}};
+                        {"/BRICK", "brick_ID", &m_.bricks, model::PropertyKind::Solid},
+                        {"/TETRA4", "tetra_ID", &m_.tetras, model::PropertyKind::Solid}};
   const char* node_names[8] = {"n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"};
   for (const auto& kind : kinds) {
     auto& b = *kind.block;
@@ -482,7 +483,9 @@ void ModelBuilder::build_elements() {
           return model::Vec3{m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n]};
         };
         const About ab{kind.keyword, eid};
-        if (b.type == ElementType::Brick8) {
+        if (b.type == ElementType::Tetra4) {
+          check_tetra(b, base, t.pos[e], eid);
+        } else if (b.type == ElementType::Brick8) {
           std::array<model::Vec3, 8> x{};
           for (int k = 0; k < 8; ++k) x[k] = X(k);
           const double v = model::brick_volume(x);
@@ -553,7 +556,20 @@ void ModelBuilder::build_elements() {
       }
     }
     if (b.type == ElementType::Brick8) brick_pos_ = pos;
-    // Element ids unique within the type.
+    // Element ids unique within the type; tetrahedra also share the bricks' id space (Radioss keeps both in
+    // one solid element table).
+    if (b.type == ElementType::Tetra4) {
+      for (std::size_t i = 0; i < b.id.size(); ++i) {
+        const auto other = m_.bricks.index.find(b.id[i]);
+        if (other < 0) continue;
+        const SourcePos p = brick_pos_[static_cast<std::size_t>(other)];
+        diags_.error(Diag::DuplicateId, at(pos[i], 1), About{kind.keyword, b.id[i]},
+                     "element id " + std::to_string(b.id[i]) + " is already used by /BRICK at " +
+                         deck_.files[p.file] + ":" + std::to_string(p.line) +
+                         "; tetrahedra and bricks share one id space (solid elements), element ids must "
+                         "be unique");
+      }
+    }
     std::int64_t dup = 0;
     if (!b.index.build(b.id, dup)) {
       std::unordered_map<std::int64_t, std::size_t> first;
@@ -568,6 +584,48 @@ void ModelBuilder::build_elements() {
         }
       }
     }
+  }
+}
+
+// A tetrahedron's nodes and volume, at the record of element `eid` whose nodes start at b.conn[base]:
+// repeated nodes and a zero volume are errors; a negative volume (n1 n2 n3 turning the other way round)
+// is renumbered by swapping n2 and n4, as OpenRadioss's reader does (hm_read_solid.F), with a warning so
+// that the deck's author knows the model file's order is not the deck's.
+void ModelBuilder::check_tetra(model::ElementBlock& b, std::size_t base, const SourcePos& pos,
+                               std::int64_t eid) {
+  const About ab{"/TETRA4", eid};
+  auto X = [&](std::size_t k) {
+    const auto n = static_cast<std::size_t>(b.conn[base + k]);
+    return model::Vec3{m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n]};
+  };
+  for (std::size_t k = 1; k < 4; ++k)
+    for (std::size_t l = 0; l < k; ++l)
+      if (b.conn[base + k] == b.conn[base + l]) {
+        diags_.error(Diag::RepeatedNodeInElement, at(pos, 11 + 10 * static_cast<int>(k)), ab,
+                     "tetrahedron " + std::to_string(eid) + " lists node " +
+                         std::to_string(m_.nodes.id[static_cast<std::size_t>(b.conn[base + k])]) +
+                         " twice (n" + std::to_string(l + 1) + " and n" + std::to_string(k + 1) +
+                         "); a /TETRA4 needs 4 distinct nodes");
+        return;
+      }
+  const double v = model::tetra_volume(X(0), X(1), X(2), X(3));
+  // Flat relative to its size: the volume against the cube of the longest edge (a regular tetrahedron has
+  // 0.118); below 1e-10 the gradients are rounding noise.
+  double l_max = 0;
+  for (std::size_t k = 1; k < 4; ++k)
+    for (std::size_t l = 0; l < k; ++l) l_max = std::max(l_max, model::norm(model::sub(X(k), X(l))));
+  if (!(std::abs(v) > 1e-10 * l_max * l_max * l_max)) {
+    diags_.error(Diag::NonPositiveVolume, at(pos, 1), ab,
+                 "tetrahedron " + std::to_string(eid) + " has zero volume (" + num(v) +
+                     "): its 4 nodes lie in one plane; a /TETRA4 needs a positive volume");
+    return;
+  }
+  if (v < 0) {
+    std::swap(b.conn[base + 1], b.conn[base + 3]);
+    diags_.warning(Diag::RenumberedTetra, at(pos, 1), ab,
+                   "tetrahedron " + std::to_string(eid) + " has negative volume (" + num(v) +
+                       ") in the order n1 n2 n3 n4: the right-hand normal of n1 n2 n3 points towards n4; "
+                       "its nodes n2 and n4 are swapped, as Radioss does");
   }
 }
 

@@ -50,6 +50,7 @@ class ModelBuilder {
   void build_properties();
   void build_subsets_and_parts();
   void build_elements();
+  void check_tetra(model::ElementBlock& b, std::size_t base, const SourcePos& pos, std::int64_t eid);
   void build_boxes();
   void build_functions();
   void build_element_groups();

@@ -20,14 +20,21 @@ std::string num(double v) {
 }
 
 const char* keyword_of(model::ElementType t) {
-  return t == model::ElementType::Brick8 ? "/BRICK" : (t == model::ElementType::Shell3 ? "/SH3N" : "/SHELL");
+  switch (t) {
+    case model::ElementType::Shell4: return "/SHELL";
+    case model::ElementType::Shell3: return "/SH3N";
+    case model::ElementType::Brick8: return "/BRICK";
+    case model::ElementType::Tetra4: return "/TETRA4";
+  }
+  return "/SHELL";
 }
 
 // The line of an element's card; the deck's first file when it cannot be found.
 Where element_where(const Deck& deck, model::ElementType t, std::int64_t id) {
-  const char* id_field = t == model::ElementType::Brick8
-                             ? "brick_ID"
-                             : (t == model::ElementType::Shell3 ? "tria_ID" : "shell_ID");
+  const char* id_field = t == model::ElementType::Brick8   ? "brick_ID"
+                         : t == model::ElementType::Tetra4 ? "tetra_ID"
+                         : t == model::ElementType::Shell3 ? "tria_ID"
+                                                           : "shell_ID";
   for (const auto* r : deck.of(keyword_of(t))) {
     const int c = r->records.column(id_field);
     if (c < 0) continue;
@@ -40,6 +47,7 @@ Where element_where(const Deck& deck, model::ElementType t, std::int64_t id) {
 
 std::string element_name(const model::StepEstimate& step) {
   return std::string(step.type == model::ElementType::Brick8   ? "brick "
+                     : step.type == model::ElementType::Tetra4 ? "tetrahedron "
                      : step.type == model::ElementType::Shell3 ? "3-node shell "
                                                                : "shell ") +
          std::to_string(step.element_id);

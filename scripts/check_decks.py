@@ -396,6 +396,7 @@ NODE_REC = [F("node_ID", "I", 1, 10), F("X", "R", 11, 30), F("Y", "R", 31, 50), 
 SHELL_REC = [F("shell_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)] + \
     [F("PHI", "R", 61, 80), F("Thick", "R", 81, 100)]
 BRICK_REC = [F("brick_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(8)]
+TETRA_REC = [F("tetra_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)]
 # /SH3N as OpenRadioss cuts the card (deck-format.md): PHI 71-90, Thick 91-100.
 SH3N_REC = [F("tria_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(3)] + \
     [F("PHI", "R", 71, 90), F("Thick", "R", 91, 100)]
@@ -472,6 +473,7 @@ STARTER = {
     "/NODE": ("unit", False, lambda v: [], "records", NODE_REC),
     "/SHELL": ("part", False, lambda v: [], "records", SHELL_REC),
     "/BRICK": ("part", False, lambda v: [], "records", BRICK_REC),
+    "/TETRA4": ("part", False, lambda v: [], "records", TETRA_REC),
     "/SH3N": ("part", False, lambda v: [], "records", SH3N_REC),
     "/PART": ("id", True, part, None, None),
     "/PROP/SHELL": ("id", True, prop_shell, None, None),
@@ -646,7 +648,7 @@ def id_kind_of_keyword(path):
         return "mat"
     if path.startswith("/PROP/"):
         return "prop"
-    if path in ("/PART", "/SHELL", "/SH3N", "/BRICK"):
+    if path in ("/PART", "/SHELL", "/SH3N", "/BRICK", "/TETRA4"):
         return "part"
     if path == "//SUBMODEL":
         return "sub"
@@ -665,7 +667,7 @@ def id_kind_of_list(path):
 def field_kind(name):
     if name in NODE_FIELDS:
         return "nod"
-    if name in ELEM_FIELDS or name in ("shell_ID", "tria_ID", "brick_ID"):
+    if name in ELEM_FIELDS or name in ("shell_ID", "tria_ID", "brick_ID", "tetra_ID"):
         return "ele"
     if name == "prop_ID":
         return "prop"
@@ -688,7 +690,7 @@ def shift_ids(obj, offsets):
     obj["unit_id"] = sh(obj["unit_id"], "def")  # a unit system is one of the "everything else" ids
     for k, (x, p) in list(obj["vals"].items()):
         obj["vals"][k] = (sh(x, field_kind(k)), p)
-    elem = obj["path"] in ("/SHELL", "/SH3N", "/BRICK")
+    elem = obj["path"] in ("/SHELL", "/SH3N", "/BRICK", "/TETRA4")
     for r, _ in obj["recs"]:
         for k in list(r):
             kind = "ele" if elem and k == "id" else ("nod" if obj["path"] == "/NODE" and k == "node_ID" else
@@ -1192,18 +1194,25 @@ def semantic(ck, m):
     inters = by_id(("/INTER/TYPE7", "/INTER/LAGDT/TYPE7"), "interface")
 
     # elements
-    elem_ids = {"/SHELL": set(), "/SH3N": set(), "/BRICK": set()}
-    elements = {"/SHELL": {}, "/SH3N": {}, "/BRICK": {}}  # element id -> (part id, node ids)
+    elem_ids = {"/SHELL": set(), "/SH3N": set(), "/BRICK": set(), "/TETRA4": set()}
+    elements = {"/SHELL": {}, "/SH3N": {}, "/BRICK": {}, "/TETRA4": {}}  # element id -> (part id, node ids)
     part_kind = {}
-    for o in m.of("/SHELL", "/SH3N", "/BRICK"):
+    for o in m.of("/SHELL", "/SH3N", "/BRICK", "/TETRA4"):
         kind = o["path"]
         if o["id"] not in parts:
             I("RX402", o["pos"][0], o["pos"][1], "%s: part %d does not exist" % (kind, o["id"]))
         part_kind.setdefault(o["id"], set()).add(kind)
-        nn = {"/SHELL": 4, "/SH3N": 3, "/BRICK": 8}[kind]
+        # an element keyword in a part whose property is of the other kind (model_builder.cpp)
+        po = parts.get(o["id"])
+        if po is not None and val(po, "prop_ID") in props:
+            solid_prop = props[val(po, "prop_ID")]["path"] in ("/PROP/SOLID", "/PROP/TYPE14")
+            if solid_prop != (kind in ("/BRICK", "/TETRA4")):
+                I("RX407", o["pos"][0], o["pos"][1], "%s/%d: part of the wrong property kind" % (kind, o["id"]))
+        nn = {"/SHELL": 4, "/SH3N": 3, "/BRICK": 8, "/TETRA4": 4}[kind]
         for r, p in o["recs"]:
-            eid = r.get({"/SHELL": "shell_ID", "/SH3N": "tria_ID", "/BRICK": "brick_ID"}[kind])
-            if eid in elem_ids[kind]:
+            eid = r.get({"/SHELL": "shell_ID", "/SH3N": "tria_ID", "/BRICK": "brick_ID", "/TETRA4": "tetra_ID"}[kind])
+            # tetrahedra share the bricks' id space (solid elements)
+            if eid in elem_ids[kind] or (kind == "/TETRA4" and eid in elem_ids["/BRICK"]):
                 I("RX401", p[0], p[1], "element %d defined twice" % eid)
                 continue
             elem_ids[kind].add(eid)
@@ -1231,6 +1240,17 @@ def semantic(ck, m):
                 t = t_el if t_el != 0.0 else t_pr
                 if t == 0.0:
                     I("RX504", p[0], p[1], "shell %d has no thickness (element and property are 0)" % eid)
+            elif kind == "/TETRA4":
+                if len(set(ns)) < 4:
+                    I("RX604", p[0], p[1], "tetrahedron %d repeats a node" % eid)
+                    continue
+                # Radioss's sign: (x1 - x4) . ((x2 - x4) x (x3 - x4)) / 6
+                vol = dot(sub(pts[0], pts[3]), cross(sub(pts[1], pts[3]), sub(pts[2], pts[3]))) / 6.0
+                lmax = max(norm(sub(pts[a], pts[b])) for a in range(4) for b in range(a))
+                if abs(vol) <= 1e-10 * lmax ** 3:
+                    I("RX601", p[0], p[1], "tetrahedron %d has zero volume" % eid)
+                elif vol < 0:
+                    I("RX608", p[0], p[1], "tetrahedron %d has negative volume (renumbered)" % eid)
             else:
                 vol = hex_volume(pts)
                 if vol <= 1e-12:
@@ -1285,7 +1305,16 @@ def semantic(ck, m):
                 bad.append("Ish3n")
             if resolved(o, "Ismstr", "/DEF_SHELL", 2) not in (1, 2):
                 bad.append("Ismstr")
+        elif "/TETRA4" in kinds and "/BRICK" not in kinds:
+            if resolved(o, "Itetra4", "/DEF_SOLID", 1000) in (1, 3, 10):
+                bad.append("Itetra4")
+            if resolved(o, "Ismstr", "/DEF_SOLID", 4) not in (2, 4):
+                bad.append("Ismstr")
+            if resolved(o, "Iframe", "/DEF_SOLID", 1) != 1:
+                bad.append("Iframe")
         elif "/BRICK" in kinds:
+            if "/TETRA4" in kinds and resolved(o, "Itetra4", "/DEF_SOLID", 1000) in (1, 3, 10):
+                bad.append("Itetra4")
             isolid = resolved(o, "Isolid", "/DEF_SOLID", 1)
             if isolid not in (1, 2, 24):
                 bad.append("Isolid")
@@ -1359,7 +1388,7 @@ def semantic(ck, m):
         for x, p in o["ids"]:
             if abs(x) not in parts:
                 I("RX402", p[0], p[1], "surface %d: part %d does not exist" % (sid, x))
-            elif o["path"] == "/SURF/PART" and "/BRICK" in part_kind.get(abs(x), set()):
+            elif o["path"] == "/SURF/PART" and part_kind.get(abs(x), set()) & {"/BRICK", "/TETRA4"}:
                 I("RX407", p[0], p[1], "surface %d: /SURF/PART on solid part %d" % (sid, x))
 
     # functions

@@ -447,6 +447,63 @@ def _():
               "(a warning)", [("RX607 warning", "BRICK_11")]
 
 
+def with_tetra(d, row=(21, 11, 14, 12, 15), part_prop=2, itetra4=None):
+    """d with /TETRA4/3 (one tetrahedron on four of the brick's nodes, positive as written: the right-hand
+    normal of n1 n2 n3 points away from n4, tag TETRA_21) in part 3 of property part_prop (a /PROP/SOLID/3
+    with Itetra4 = itetra4 when given)."""
+    d.insert_before("AFTER_PARTS", block("TETRA", "/TETRA4", 3, rows=[row], row_tags=["TETRA_21"]) +
+                    part(3, "Tetra", 3 if itetra4 is not None else part_prop, 2))
+    if itetra4 is not None:
+        d.insert_before("AFTER_MATS", block("PSO3", "/PROP/SOLID", 3, "Tetra solid", **dict(PSO, Itetra4=itetra4)))
+    return d
+
+
+@fault("tetra_zero_volume")
+def _():
+    d = with_tetra(base(), row=(21, 11, 12, 13, 14))
+    return d, "tetrahedron 21 on nodes 11 12 13 14, which all lie in the plane z = 1.5: zero volume", \
+        [("RX601", "TETRA_21")]
+
+
+@fault("tetra_repeated_node")
+def _():
+    d = with_tetra(base(), row=(21, 11, 14, 11, 15))
+    return d, "tetrahedron 21 lists node 11 twice (n1 and n3)", [("RX604", "TETRA_21")]
+
+
+@fault("tetra_negative_volume_renumbered")
+def _():
+    d = with_tetra(base(), row=(21, 11, 12, 14, 15))
+    return d, "tetrahedron 21 turns n1 n2 n3 towards n4 (negative volume): n2 and n4 swapped as Radioss does " \
+              "(a warning)", [("RX608 warning", "TETRA_21")]
+
+
+@fault("tetra_id_of_a_brick")
+def _():
+    d = with_tetra(base(), row=(11, 11, 14, 12, 15))
+    return d, "tetrahedron 11 takes the id of brick 11: solid elements share one id space", \
+        [("RX401", "TETRA_21")]
+
+
+@fault("tetra_missing_node")
+def _():
+    d = with_tetra(base(), row=(21, 11, 14, 12, 99))
+    return d, "tetrahedron 21 uses node 99, which does not exist", [("RX406", "TETRA_21")]
+
+
+@fault("tetra_in_shell_part")
+def _():
+    d = with_tetra(base(), part_prop=1)
+    return d, "/TETRA4/3 is in part 3, whose property /PROP/SHELL/1 is a shell property", [("RX407", "TETRA_KW")]
+
+
+@fault("tetra_itetra4_nodal_pressure")
+def _():
+    d = with_tetra(base(), itetra4=1)
+    return d, "/PROP/SOLID/3 Itetra4 = 1 (nodal pressure) for tetrahedron 21: refused by name", \
+        [("RX510", "PSO3.Itetra4")]
+
+
 @fault("implausible_wave_speed")
 def _():
     d = base()

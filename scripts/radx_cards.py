@@ -175,6 +175,7 @@ LAYOUTS = {
     "/SH3N": Layout(title=False, rows=Card(i("tria_ID"), i("node_ID1"), i("node_ID2"), i("node_ID3"), gap(30),
                                            r("PHI"), r("Thick", 10))),
     "/BRICK": Layout(title=False, rows=Card(i("brick_ID"), *[i("node_ID%d" % k) for k in range(1, 9)])),
+    "/TETRA4": Layout(title=False, rows=Card(i("tetra_ID"), *[i("node_ID%d" % k) for k in range(1, 5)])),
     "/PART": Layout(Card(i("prop_ID"), i("mat_ID"), i("subset_ID"), r("Thick"))),
     "/TRANSFORM/TRA": Layout(
         Card(i("grnod_ID"), r("X_translation"), r("Y_translation"), r("Z_translation"), i("node_ID1"),

@@ -43,4 +43,16 @@ void BrickGroup::allocate(int n) {
   w_hg.assign(G, 0.0);
 }
 
+void TetraGroup::allocate(int n) {
+  count = n;
+  const auto G = static_cast<std::size_t>(kGroupSize);
+  conn.assign(4 * G, 0);
+  element.assign(G, -1);
+  for (auto* v : {&vol0, &vol, &rho, &eps_p, &q, &e_int, &e_hg, &w_plastic, &rate, &dt, &k_nodal})
+    v->assign(G, 0.0);
+  off.assign(G, 1.0);
+  sig.assign(6 * G, 0.0);
+  nodal_force.assign(4 * 3 * G, 0.0);
+}
+
 }  // namespace radx::solver

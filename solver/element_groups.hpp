@@ -148,6 +148,32 @@ inline void brick_global_stress(const BrickGroup& g, std::size_t i, double out[6
   out[5] = at(2, 0);
 }
 
+// 4-node tetrahedra (/TETRA4, Itetra4 1000): one point, constant strain, no hourglass. The same state as a
+// brick less what only hourglass control and the small-strain switch need.
+struct TetraGroup {
+  int count = 0;
+  std::vector<std::int32_t> element;  // [G] index of each slot's element in the model's tetra block
+  std::int32_t part = -1;
+  std::int32_t material = -1;
+  double qa = 1.1, qb = 0.05;
+  std::vector<std::int32_t> conn;   // [4][G]
+  std::vector<double> vol0;         // [G] initial volume
+  std::vector<double> vol;          // [G] current volume
+  std::vector<double> rho;          // [G] current density rho0 V0 / V
+  std::vector<double> off;          // [G] 1 alive, 0 deleted
+  std::vector<double> sig;          // [6][G] xx yy zz xy yz zx, global axes
+  std::vector<double> eps_p;        // [G]
+  std::vector<double> q;            // [G] bulk viscosity pressure of the last cycle
+  std::vector<double> e_int;        // [G] accumulated internal energy (includes bulk viscosity work)
+  std::vector<double> e_hg;         // [G] always 0 (no hourglass); summed with the other groups'
+  std::vector<double> w_plastic;    // [G]
+  std::vector<double> rate;         // [G] strain rate measure (Johnson-Cook)
+  std::vector<double> dt;           // [G] stable step, before the /DT scale
+  std::vector<double> k_nodal;      // [G] nodal stiffness contribution (1/2 rho V / dt_e^2)
+  std::vector<double> nodal_force;  // [4][3][G] force ADDED to each node, global axes
+  void allocate(int n);
+};
+
 // Kernels (one file each). Each reads node coordinates and velocities from `nodes`, updates the
 // group's state, energies and element steps, and fills `nodal_force`. Elements with off == 0 give no
 // force and a step of +infinity.
@@ -166,5 +192,6 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
 // x axis along t, y along r, z along s (Isolid 24); otherwise x along r, y along s, z along t (Isolid 1, 2).
 // R[row][column], columns the unit axes in global coordinates.
 void brick_corotational_frame(const double x[8][3], bool heph_order, double R[3][3]);
+void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 
 }  // namespace radx::solver

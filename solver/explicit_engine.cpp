@@ -1,7 +1,7 @@
 // The explicit time loop; see explicit_engine.hpp for the cycle order and the energy definitions.
 // Masses and rotational inertias (elements.md section 5): shells m_e = rho t0 A0, m_e/4 per slot,
 // I = (m_e/4)(A0/9 + t0^2/12); 3-node shells m_e alpha_k/pi with I_e = m_e (A0/4.5 + t0^2/12);
-// bricks m_e/8 per node and no inertia.
+// bricks m_e/8 per node, tetrahedra m_e/4 per node, no inertia for either.
 #include "solver/explicit_engine.hpp"
 
 #include <omp.h>
@@ -54,6 +54,8 @@ std::int64_t ExplicitEngine::count_deleted() const {
   for (const auto& g : shells_)
     for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
   for (const auto& g : bricks_)
+    for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
+  for (const auto& g : tetras_)
     for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
   return n;
 }
@@ -216,7 +218,40 @@ void ExplicitEngine::build_groups() {
     bricks_.push_back(std::move(g));
     k = end;
   }
-  element_count_ = m.shells.size() + m.shells3.size() + m.bricks.size();
+  // Tetrahedra: the same cut by part; the property gives the bulk viscosity only (no hourglass).
+  const auto t_order = order_by_part(m.tetras);
+  k = 0;
+  while (k < t_order.size()) {
+    const auto part = m.tetras.part[t_order[k]];
+    const auto& prop = m.properties[m.parts[part].property].solid;
+    TetraGroup g;
+    std::size_t end = k;
+    while (end < t_order.size() && m.tetras.part[t_order[end]] == part &&
+           end - k < static_cast<std::size_t>(kGroupSize))
+      ++end;
+    g.allocate(static_cast<int>(end - k));
+    g.part = part;
+    g.material = m.parts[part].material;
+    g.qa = prop.qa;
+    g.qb = prop.qb;
+    const double rho0 = materials_[static_cast<std::size_t>(g.material)].rho0;
+    for (int i = 0; i < g.count; ++i) {
+      const auto e = static_cast<std::size_t>(t_order[k + static_cast<std::size_t>(i)]);
+      g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
+      model::Vec3 x[4];
+      for (int q = 0; q < 4; ++q) {
+        const auto n = m.tetras.conn[4 * e + static_cast<std::size_t>(q)];
+        g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = n;
+        x[q] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
+      }
+      const double v0 = model::tetra_volume(x[0], x[1], x[2], x[3]);
+      g.vol0[static_cast<std::size_t>(i)] = g.vol[static_cast<std::size_t>(i)] = v0;
+      g.rho[static_cast<std::size_t>(i)] = rho0;
+    }
+    tetras_.push_back(std::move(g));
+    k = end;
+  }
+  element_count_ = m.element_count();
 }
 
 void ExplicitEngine::build_assembly() {
@@ -240,6 +275,12 @@ void ExplicitEngine::build_assembly() {
           const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
           f(node, &g.nodal_force[static_cast<std::size_t>(q * 3 * kGroupSize + i)], false);
         }
+    for (auto& g : tetras_)
+      for (int i = 0; i < g.count; ++i)
+        for (int q = 0; q < 4; ++q) {
+          const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
+          f(node, &g.nodal_force[static_cast<std::size_t>(q * 3 * kGroupSize + i)], false);
+        }
   };
   each_entry([&](std::int32_t node, const double*, bool) { ++count[static_cast<std::size_t>(node) + 1]; });
   for (std::size_t k = 0; k < n; ++k) count[k + 1] += count[k];
@@ -254,6 +295,7 @@ void ExplicitEngine::build_assembly() {
 void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
   const auto ns = static_cast<std::int64_t>(shells_.size());
   const auto nb = static_cast<std::int64_t>(bricks_.size());
+  const auto nt = static_cast<std::int64_t>(tetras_.size());
 #pragma omp parallel
   {
 #pragma omp for schedule(dynamic, 1) nowait
@@ -267,7 +309,7 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
         case ShellKernel::Qbat: shell_qbat_forces(g, nodes_, mat, cyc); break;
       }
     }
-#pragma omp for schedule(dynamic, 1)
+#pragma omp for schedule(dynamic, 1) nowait
     for (std::int64_t k = 0; k < nb; ++k) {
       auto& g = bricks_[static_cast<std::size_t>(k)];
       const auto& mat = materials_[static_cast<std::size_t>(g.material)];
@@ -275,6 +317,11 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
         case 24: hex8_heph_forces(g, nodes_, mat, cyc); break;
         default: hex8_forces(g, nodes_, mat, cyc); break;  // Isolid 1 and 2 (the starter refuses the others)
       }
+    }
+#pragma omp for schedule(dynamic, 1)
+    for (std::int64_t k = 0; k < nt; ++k) {
+      auto& g = tetras_[static_cast<std::size_t>(k)];
+      tetra4_forces(g, nodes_, materials_[static_cast<std::size_t>(g.material)], cyc);
     }
   }
 }
@@ -353,6 +400,16 @@ double ExplicitEngine::element_time_step(StepControl& control) {
             model_.bricks.id[static_cast<std::size_t>(g.element[k])], g.ismstr == 2);
     }
   }
+  // Tetrahedra vote with the brick family's /DT/BRICK scale (Radioss counts them as solids); they are not
+  // switched by /DT/BRICK/CST (no small-strain form here), so their frozen step stays unused.
+  for (auto& g : tetras_) {
+    for (int i = 0; i < g.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      double unused_frozen = 0.0;
+      visit(scale, controls_.brick, g.dt[k], unused_frozen, StepControl::Kind::Tetra,
+            model_.tetras.id[static_cast<std::size_t>(g.element[k])], false);
+    }
+  }
   return best;
 }
 
@@ -371,6 +428,11 @@ double ExplicitEngine::nodal_time_step(StepControl& control) {
   for (const auto& g : bricks_)
     for (int i = 0; i < g.count; ++i)
       for (int q = 0; q < 8; ++q)
+        s.stiffness[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
+            g.k_nodal[static_cast<std::size_t>(i)];
+  for (const auto& g : tetras_)
+    for (int i = 0; i < g.count; ++i)
+      for (int q = 0; q < 4; ++q)
         s.stiffness[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
             g.k_nodal[static_cast<std::size_t>(i)];
   const auto& noda = controls_.nodal;
@@ -401,6 +463,15 @@ std::string ExplicitEngine::bad_element(double time, std::int64_t cycle) const {
         return "brick " +
                std::to_string(
                    model_.bricks.id[static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])]) +
+               " has a zero or negative volume (" + std::to_string(g.vol[static_cast<std::size_t>(i)]) +
+               ") at cycle " + std::to_string(cycle) + ", time " + std::to_string(time) +
+               ": the mesh is inverted; the run stops";
+  for (const auto& g : tetras_)
+    for (int i = 0; i < g.count; ++i)
+      if (!(g.dt[static_cast<std::size_t>(i)] > 0))
+        return "tetrahedron " +
+               std::to_string(
+                   model_.tetras.id[static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])]) +
                " has a zero or negative volume (" + std::to_string(g.vol[static_cast<std::size_t>(i)]) +
                ") at cycle " + std::to_string(cycle) + ", time " + std::to_string(time) +
                ": the mesh is inverted; the run stops";
@@ -534,6 +605,7 @@ void ExplicitEngine::tell_contact_deleted_elements() {
   deleted_elements_ = deleted;
   std::vector<std::uint8_t> alive(model_.element_count(), 1);
   const std::size_t tri0 = model_.shells.size(), brick0 = tri0 + model_.shells3.size();
+  const std::size_t tetra0 = brick0 + model_.bricks.size();
   for (const auto& g : shells_)
     for (int i = 0; i < g.count; ++i)
       if (g.off[static_cast<std::size_t>(i)] <= 0)
@@ -542,6 +614,10 @@ void ExplicitEngine::tell_contact_deleted_elements() {
     for (int i = 0; i < g.count; ++i)
       if (g.off[static_cast<std::size_t>(i)] <= 0)
         alive[brick0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+  for (const auto& g : tetras_)
+    for (int i = 0; i < g.count; ++i)
+      if (g.off[static_cast<std::size_t>(i)] <= 0)
+        alive[tetra0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
   contact_->elements_deleted(alive);
 }
 
@@ -689,6 +765,7 @@ void ExplicitEngine::sum_energies(const LoopState& L) {
   };
   add_groups(shells_);
   add_groups(bricks_);
+  add_groups(tetras_);
   if (contact_) {
     energy_.contact_elastic = contact_->energy_elastic();
     energy_.contact_damping = contact_->energy_damping();

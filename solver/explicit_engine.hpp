@@ -51,7 +51,16 @@ struct EnergyBalance {
 // What controls the time step this cycle.
 struct StepControl {
   // Imposed: /DTIX (the first step DT_ini or the bound DT_max).
-  enum class Kind : std::uint8_t { None, Shell, Shell3, Brick, Node, Interface, Imposed } kind = Kind::None;
+  enum class Kind : std::uint8_t {
+    None,
+    Shell,
+    Shell3,
+    Brick,
+    Node,
+    Interface,
+    Imposed,
+    Tetra
+  } kind = Kind::None;
   std::int64_t user_id = 0;
   std::int64_t node_id = 0;  // Interface: the secondary node of the controlling pair
 };
@@ -109,6 +118,7 @@ class ExplicitEngine {
   [[nodiscard]] const NodeState& nodes() const { return nodes_; }
   [[nodiscard]] const std::vector<ShellGroup>& shell_groups() const { return shells_; }
   [[nodiscard]] const std::vector<BrickGroup>& brick_groups() const { return bricks_; }
+  [[nodiscard]] const std::vector<TetraGroup>& tetra_groups() const { return tetras_; }
   [[nodiscard]] std::size_t element_count() const { return element_count_; }
   [[nodiscard]] const model::Model& model() const { return model_; }
   [[nodiscard]] const std::vector<MaterialParams>& materials() const { return materials_; }
@@ -149,6 +159,7 @@ class ExplicitEngine {
   std::vector<MaterialParams> materials_;
   std::vector<ShellGroup> shells_;
   std::vector<BrickGroup> bricks_;
+  std::vector<TetraGroup> tetras_;
   std::size_t element_count_ = 0;
   // Assembly: for node n, slots_[offsets_[n] .. offsets_[n+1]) point at its entries in the groups'
   // nodal_force buffers, in a fixed order; `rot` says whether the entry carries moments.

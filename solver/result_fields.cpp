@@ -172,6 +172,26 @@ void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
       fn(brick0 + static_cast<std::size_t>(g.element[k]), c);
     }
   }
+  // Tetrahedra: the same fields as bricks (e_hg stays 0).
+  const std::size_t tetra0 = brick0 + m.bricks.size();
+  const auto& tetras = e.tetra_groups();
+  const auto n_tetra_groups = static_cast<std::int64_t>(tetras.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::int64_t gi = 0; gi < n_tetra_groups; ++gi) {
+    const auto& g = tetras[static_cast<std::size_t>(gi)];
+    for (int i = 0; i < g.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      CellValues c;
+      for (int q = 0; q < 6; ++q)
+        c.sig[static_cast<std::size_t>(q)] = g.sig[static_cast<std::size_t>(q) * kGroupSize + k];
+      c.eps_p = g.eps_p[k];
+      c.volume0 = g.vol0[k];
+      c.e_int = g.e_int[k];
+      c.e_hg = g.e_hg[k];
+      c.density = g.rho[k];
+      fn(tetra0 + static_cast<std::size_t>(g.element[k]), c);
+    }
+  }
 }
 
 }  // namespace
@@ -250,6 +270,11 @@ void gather_node_field(const ExplicitEngine& e, NodeField f, double dt1, std::sp
         for (int q = 0; q < 8; ++q)
           k[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
               g.k_nodal[static_cast<std::size_t>(i)];
+    for (const auto& g : e.tetra_groups())
+      for (int i = 0; i < g.count; ++i)
+        for (int q = 0; q < 4; ++q)
+          k[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
+              g.k_nodal[static_cast<std::size_t>(i)];
     for (std::size_t n = 0; n < s.n; ++n)
       out[n] = k[n] > 0 ? static_cast<float>(std::sqrt(2.0 * s.mass[n] / k[n])) : 0.0f;
     return;
@@ -302,6 +327,11 @@ void gather_element_status(const ExplicitEngine& e, std::span<std::uint8_t> out)
     for (int i = 0; i < g.count; ++i)
       if (g.off[static_cast<std::size_t>(i)] <= 0)
         out[brick0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+  const std::size_t tetra0 = brick0 + m.bricks.size();
+  for (const auto& g : e.tetra_groups())
+    for (int i = 0; i < g.count; ++i)
+      if (g.off[static_cast<std::size_t>(i)] <= 0)
+        out[tetra0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
 }
 
 void gather_points(const ExplicitEngine& e, std::span<double> out) {

@@ -1,6 +1,7 @@
 // Result fields of the running model, gathered from the element groups and the node state into flat
 // arrays in model order, for animation states and time histories (results-format.md sections 3 and 7).
-// Cells are numbered as the model file numbers them: 4-node shells, then 3-node shells, then bricks,
+// Cells are numbered as the model file numbers them: 4-node shells, then 3-node shells, then bricks, then
+// tetrahedra (the same fields as bricks),
 // each block in its model order. Nothing here changes the engine's state.
 //
 // Definitions (work units):

@@ -263,6 +263,14 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
           he[p] += g.e_hg[k];
           if (g.off[k] <= 0) eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.vol0[k];
         }
+      for (const auto& g : e.tetra_groups())
+        for (int i = 0; i < g.count; ++i) {
+          const auto k = static_cast<std::size_t>(i);
+          const auto p = static_cast<std::size_t>(g.part);
+          ie[p] += g.e_int[k];
+          he[p] += g.e_hg[k];
+          if (g.off[k] <= 0) eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.vol0[k];
+        }
       for (std::size_t o = 0; o < objects_.size(); ++o) {
         double v_ie = 0, v_he = 0, v_er = 0, ke = 0, mass = 0, mom[3] = {0, 0, 0};
         for (const auto p : object_parts_[o]) {

@@ -4,10 +4,13 @@
 //   triangle area  A = 1/2 |d12 x d13|
 //   brick volume   V = j1 . (j2 x j3) / 64 = 8 det J(0)        with d17 = x7 - x1, d28 = x8 - x2,
 //                  j1 = d17 + d28 - d35 - d46, j2 = d17 + d46 + d28 + d35, j3 = d17 + d46 - d28 - d35
+//   tetra volume   V = (x1 - x4) . ((x2 - x4) x (x3 - x4)) / 6    (OpenRadioss's sign: positive when the
+//                  right-hand normal of n1 n2 n3 points away from n4; starter checksvolume.F, s4deri3.F)
 // The one-point brick volume is not the exact trilinear volume of a distorted brick; it is the volume
 // the element uses, so the mass and the density agree with the element.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -141,5 +144,31 @@ inline constexpr std::array<std::array<int, 4>, 6> kBrickFaces = {{
     {2, 3, 7, 6},
     {3, 0, 4, 7},
 }};
+
+// Signed volume of a 4-node tetrahedron in Radioss's orientation (see the head of this file): a tetra the
+// starter accepts has V > 0.
+inline double tetra_volume(const Vec3& x1, const Vec3& x2, const Vec3& x3, const Vec3& x4) {
+  return dot(sub(x1, x4), cross(sub(x2, x4), sub(x3, x4))) / 6.0;
+}
+
+// The four faces of a positive tetrahedron (node positions 0..3), each with its right-hand normal pointing
+// out of the element; face f is the one opposite node kTetraOpposite[f].
+inline constexpr std::array<std::array<int, 3>, 4> kTetraFaces = {{
+    {0, 1, 2},
+    {0, 3, 1},
+    {0, 2, 3},
+    {1, 3, 2},
+}};
+inline constexpr std::array<int, 4> kTetraOpposite = {3, 2, 1, 0};
+
+// Characteristic length of the tetrahedron for its time step: the smallest of its four heights,
+// 3 V / (largest face area), i.e. 1 / max_k |grad N_k| (OpenRadioss s4deri3.F with its default Idt1sol 0).
+// 0 for a flat or inverted tetrahedron.
+inline double tetra_length(const Vec3& x1, const Vec3& x2, const Vec3& x3, const Vec3& x4) {
+  const double v = tetra_volume(x1, x2, x3, x4);
+  const double a = std::max(std::max(triangle_area(x1, x2, x3), triangle_area(x1, x2, x4)),
+                            std::max(triangle_area(x1, x3, x4), triangle_area(x2, x3, x4)));
+  return v > 0 && a > 0 ? 3.0 * v / a : 0.0;
+}
 
 }  // namespace radx::model

@@ -59,6 +59,14 @@ void for_each_nodal_mass(const Model& m,
     const double me = rho_of(m.bricks.part[e]) * std::max(0.0, brick_volume(x));
     for (int k = 0; k < 8; ++k) fn(c[k], m.bricks.part[e], cell, 0.125 * me);
   }
+  // Tetrahedra: m_e = rho V0, a quarter to each node (OpenRadioss starter s4mass3.F).
+  for (std::size_t e = 0; e < m.tetras.size(); ++e, ++cell) {
+    if (!valid(m.tetras, e)) continue;
+    const auto* c = &m.tetras.conn[4 * e];
+    const double me =
+        rho_of(m.tetras.part[e]) * std::max(0.0, tetra_volume(X(c[0]), X(c[1]), X(c[2]), X(c[3])));
+    for (int k = 0; k < 4; ++k) fn(c[k], m.tetras.part[e], cell, 0.25 * me);
+  }
 }
 
 void compute_lumped_masses(Model& m) {

@@ -31,9 +31,16 @@ struct Nodes {
   [[nodiscard]] std::size_t size() const { return id.size(); }
 };
 
-enum class ElementType : std::uint8_t { Shell4 = 0, Shell3 = 1, Brick8 = 2 };
+// Stored as its integer in the model file: new types go at the end.
+enum class ElementType : std::uint8_t { Shell4 = 0, Shell3 = 1, Brick8 = 2, Tetra4 = 3 };
 [[nodiscard]] constexpr int nodes_per_element(ElementType t) {
-  return t == ElementType::Shell4 ? 4 : (t == ElementType::Shell3 ? 3 : 8);
+  switch (t) {
+    case ElementType::Shell4: return 4;
+    case ElementType::Shell3: return 3;
+    case ElementType::Brick8: return 8;
+    case ElementType::Tetra4: return 4;
+  }
+  return 0;
 }
 
 // All elements of one type, element-major connectivity (conn[e * npe + k], dense node indices).
@@ -126,8 +133,8 @@ struct Box {
   double diameter = 0;  // cylinder and sphere
 };
 
-// A main-surface segment. Triangles repeat their third node (n4 == n3).
-enum class SegmentOwner : std::uint8_t { None = 0, Shell4 = 1, Shell3 = 2, Brick8 = 3 };
+// A main-surface segment. Triangles repeat their third node (n4 == n3): 3-node shells and tetrahedron faces.
+enum class SegmentOwner : std::uint8_t { None = 0, Shell4 = 1, Shell3 = 2, Brick8 = 3, Tetra4 = 4 };
 struct Surface {
   std::int64_t id = 0;
   std::string title;
@@ -449,6 +456,9 @@ struct Model {
   ElementBlock shells{ElementType::Shell4, {}, {}, {}, {}, {}, {}};
   ElementBlock shells3{ElementType::Shell3, {}, {}, {}, {}, {}, {}};
   ElementBlock bricks{ElementType::Brick8, {}, {}, {}, {}, {}, {}};
+  // 4-node tetrahedra (/TETRA4), nodes as the deck gives them unless the starter renumbered an inverted one
+  // (n2 and n4 swapped, as Radioss does) so that tetra_volume (geometry.hpp) is positive.
+  ElementBlock tetras{ElementType::Tetra4, {}, {}, {}, {}, {}, {}};
   std::vector<Material> materials;
   std::vector<Property> properties;
   std::vector<Part> parts;
@@ -481,7 +491,10 @@ struct Model {
   std::vector<double> node_mass;
   double total_mass = 0;
 
-  [[nodiscard]] std::size_t element_count() const { return shells.size() + shells3.size() + bricks.size(); }
+  // Cells are numbered 4-node shells, 3-node shells, bricks, tetrahedra (model file, results, contact).
+  [[nodiscard]] std::size_t element_count() const {
+    return shells.size() + shells3.size() + bricks.size() + tetras.size();
+  }
 
   // Dense index of the skew with user id `skew`; kNone for 0 (the global frame). Throws std::out_of_range
   // for an id the model lacks (the starter refuses those).

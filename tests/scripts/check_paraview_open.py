@@ -33,7 +33,7 @@ def node_bounds(deck):
 
 def main():
     deck, model = sys.argv[1:3]
-    nodes, quads, tris, bricks = count(deck)
+    nodes, quads, tris, bricks, tetras = count(deck)
     reader = OpenDataFile(model)
     reader.UpdatePipeline()
     info = reader.GetDataInformation()
@@ -43,8 +43,8 @@ def main():
         failures.append(f"ParaView picked {kind}, expected its VTKHDF reader")
     if info.GetNumberOfPoints() != nodes:
         failures.append(f"points {info.GetNumberOfPoints()} != deck nodes {nodes}")
-    if info.GetNumberOfCells() != quads + tris + bricks:
-        failures.append(f"cells {info.GetNumberOfCells()} != deck elements {quads + tris + bricks}")
+    if info.GetNumberOfCells() != quads + tris + bricks + tetras:
+        failures.append(f"cells {info.GetNumberOfCells()} != deck elements {quads + tris + bricks + tetras}")
     for name in ("node_id",):
         if name not in reader.PointData.keys():
             failures.append(f"point array {name} missing")

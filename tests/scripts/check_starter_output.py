@@ -3,10 +3,10 @@
 
 usage: /usr/bin/python3 check_starter_output.py DECK.rad MODEL.hdf
 
-The counts come from a plain reading of the deck text (records between /NODE, /SHELL, /SH3N, /BRICK
-and the next keyword, comment lines skipped), not from radx, so a reader bug cannot hide itself. A
+The counts come from a plain reading of the deck text (records between /NODE, /SHELL, /SH3N, /BRICK,
+/TETRA4 and the next keyword, comment lines skipped), not from radx, so a reader bug cannot hide itself. A
 shell written with n4 = n3 (or n4 = 0) is a VTK triangle (5), other shells quads (9), bricks
-hexahedra (12).
+hexahedra (12), tetrahedra tetras (10).
 """
 import os
 import subprocess
@@ -14,7 +14,7 @@ import sys
 
 
 def count(deck):
-    nodes = quads = tris = bricks = 0
+    nodes = quads = tris = bricks = tetras = 0
     block = None
     for line in open(deck, encoding="ascii", errors="replace"):
         line = line.rstrip("\r\n")
@@ -22,7 +22,7 @@ def count(deck):
             continue
         if line.startswith("/"):
             key = line.split("/")[1].strip().upper()
-            block = key if key in ("NODE", "SHELL", "SH3N", "BRICK") else None
+            block = key if key in ("NODE", "SHELL", "SH3N", "BRICK", "TETRA4") else None
             continue
         if block is None or not line.strip():
             continue
@@ -38,7 +38,9 @@ def count(deck):
             tris += 1
         elif block == "BRICK":
             bricks += 1
-    return nodes, quads, tris, bricks
+        elif block == "TETRA4":
+            tetras += 1
+    return nodes, quads, tris, bricks, tetras
 
 
 def main():
@@ -46,13 +48,13 @@ def main():
         print(__doc__)
         return 2
     deck, model = sys.argv[1:]
-    nodes, quads, tris, bricks = count(deck)
-    types = ",".join(f"{t}:{n}" for t, n in ((9, quads), (5, tris), (12, bricks)) if n)
+    nodes, quads, tris, bricks, tetras = count(deck)
+    types = ",".join(f"{t}:{n}" for t, n in ((9, quads), (5, tris), (12, bricks), (10, tetras)) if n)
     checker = os.path.join(os.path.dirname(os.path.abspath(__file__)), "check_model_file.py")
-    cmd = [sys.executable, checker, model, "--nodes", str(nodes), "--cells", str(quads + tris + bricks)]
+    cmd = [sys.executable, checker, model, "--nodes", str(nodes), "--cells", str(quads + tris + bricks + tetras)]
     if types:
         cmd += ["--types", types]
-    print("deck counts: nodes", nodes, "quads", quads, "triangles", tris, "bricks", bricks)
+    print("deck counts: nodes", nodes, "quads", quads, "triangles", tris, "bricks", bricks, "tetrahedra", tetras)
     return subprocess.call(cmd)
 
 

@@ -991,3 +991,72 @@ TEST_CASE("verification: loads and an imposed velocity started and stopped by /S
         "worst |E - W| %.3e of final E %.3e\n",
         err_z, f_total * dt_max, err_x, mass * std::abs(gr.fscale_y) * dt_max, err_y, err_energy, e_end);
 }
+
+// ---------------------------------------------------------------------------------------------------------
+// A block of 4-node tetrahedra dropped on a clamped shell plate; TYPE7 main surface = the block's outer tetra
+// faces (triangle segments), secondary = the plate nodes. No closed form for the impact itself: the checks
+// are the global ones of verification.md C (energy balance) and that the contact on tetra faces works (the
+// block is stopped, no plate node crosses the block's bottom face).
+TEST_CASE("verification: tetrahedron block dropped on a plate through TYPE7", "[verification][tetra]") {
+  Case c = load_case("tetra_drop", "TETRA_DROP");
+  const md::Model& m = c.model;
+  REQUIRE(m.tetras.size() == 48);
+  REQUIRE(m.interfaces.size() == 1);
+  const md::Surface& skin = m.surfaces[static_cast<std::size_t>(m.interfaces[0].main_surface)];
+  // 2 x 2 cells on each of 6 sides, 2 triangles per cell face: 48 outer faces, all tetra faces.
+  REQUIRE(skin.segments.size() == 48);
+  for (const auto t : skin.owner_type) REQUIRE(t == md::SegmentOwner::Tetra4);
+  REQUIRE(m.initial_velocities.size() == 1);
+  const double v0 = -m.initial_velocities[0].v[2];
+  REQUIRE(v0 > 0);
+  const double mass_block = m.parts[0].mass;
+  REQUIRE(mass_block > 0);
+  std::vector<std::uint8_t> in_block(m.nodes.size(), 0);
+  for (const auto n : m.tetras.conn) in_block[static_cast<std::size_t>(n)] = 1;
+  const double gap = m.interfaces[0].gapmin;
+
+  sv::ExplicitEngine eng(m, c.controls, sv::EngineOptions{1});
+  REQUIRE(eng.contact() != nullptr);
+  EnergyWatch energy;
+  double pz_min = 0, pz_last = 0, e_contact_max = 0;
+  double worst_crossing = -std::numeric_limits<double>::infinity();
+  // Half the block's width, less a tenth of a cell, for the plate nodes under its bottom face.
+  double half = 0;
+  for (std::size_t n = 0; n < m.nodes.size(); ++n)
+    if (in_block[n]) half = std::max(half, std::abs(m.nodes.x[n]));
+  const double inside = 0.95 * half;
+  const auto res = eng.run([&](const sv::CycleReport& r) {
+    energy(r);
+    e_contact_max = std::max(e_contact_max, r.energy.contact_elastic);
+    const auto& s = eng.nodes();
+    double pz = 0, z_bottom = std::numeric_limits<double>::infinity();
+    for (std::size_t n = 0; n < s.n; ++n)
+      if (in_block[n]) {
+        pz += s.mass[n] * s.vz[n];
+        z_bottom = std::min(z_bottom, s.z[n]);
+      }
+    pz_min = std::min(pz_min, pz);
+    // A plate node under the block's bottom face (|x|, |y| inside the block) must stay below it: how far
+    // it passes above is the penetration through the face.
+    for (std::size_t n = 0; n < s.n; ++n)
+      if (!in_block[n] && std::abs(s.x[n]) < inside && std::abs(s.y[n]) < inside)
+        worst_crossing = std::max(worst_crossing, s.z[n] - z_bottom);
+    pz_last = pz;
+    return true;
+  });
+  REQUIRE(res.status == sv::RunStatus::Normal);
+  const double p0 = mass_block * v0;
+  if (verbose())
+    std::printf(
+        "tetra_drop: pz_min / p0 %.4f, final pz / p0 %.4f, worst crossing / gap %.3f, contact energy max "
+        "%.4g J of %.4g\n",
+        pz_min / p0, pz_last / p0, worst_crossing / gap, e_contact_max, 0.5 * mass_block * v0 * v0);
+  // The block starts with p = -m v0 (1e-9 relative: the initial velocity is exact).
+  CHECK(pz_min == Approx(-p0).epsilon(1e-9));
+  // The contact acts on the tetra faces: it stores energy and removes more than half the downward momentum.
+  CHECK(e_contact_max > 0);
+  CHECK(pz_last > -0.5 * p0);
+  // No plate node goes through the block's bottom face (it stays on the plate side of the face).
+  CHECK(worst_crossing < 0);
+  check_energy(energy, "tetra_drop");
+}

@@ -1,0 +1,207 @@
+// Four-node tetrahedron, Itetra4 1000 (OpenRadioss's default): linear shape functions, so one point and a
+// constant strain over the element; no hourglass modes exist, so there is no hourglass control.
+//
+// Sources, read for the behaviour (OpenRadioss engine/source/elements/solid/solide4/): s4forc3.F (order of
+// the work), s4deri3.F (gradients, volume, characteristic length), s4defo3.F (strain rates), s4fint3.F
+// (internal forces), s4cumu3.F (nodal stiffness); srota3.F, srho3.F, mqviscb.F shared with the brick;
+// starter s4mass3.F (mass), hm_read_solid.F (node order). The stress update, bulk viscosity and energies are
+// the one-point brick's (hex8_fb.cpp, shared/spec/elements.md 3.2, 3.3), which OpenRadioss runs through the
+// same routines (mmain, mqviscb) for both.
+//
+// Nodes x_1..x_4 (current geometry x^n), velocities v^{n-1/2}; dt1 = t^n - t^{n-1}.
+//   V = (x1 - x4) . ((x2 - x4) x (x3 - x4)) / 6      (Radioss's sign: > 0 when the right-hand normal of
+//                                                      n1 n2 n3 points away from n4; the starter ensures it)
+//   b_k = grad N_k = -(a_f)/(3 V) with a_f the outward area vector of the face opposite node k:
+//         faces (outward) 1-2-3 opposite 4, 1-4-2 opposite 3, 1-3-4 opposite 2, 2-4-3 opposite 1, and
+//         a_f = (xb - xa) x (xc - xa) / 2, so b_k = -((xb - xa) x (xc - xa)) / (6 V);
+//         sum_k b_k = 0 and sum_k x_k (x) b_k = I (the linear field is reproduced exactly)
+//   L  = sum_k v_k (x) b_k,  D = sym L (engineering shears D4 = Lxy + Lyx, ...), spin W as the brick (3.2)
+//   Jaumann rotation of the stored stress, density rho = rho0 V0 / V, mu = rho / rho0 - 1,
+//   material: solid_point_update(de = D dt1, mu) (LAW1, LAW2 and every law behind it),
+//   strain-rate measure, bulk viscosity q = rho ec l (qa^2 l ec + qb c) with l = V^(1/3), ec = max(0, -tr D),
+//   internal energy dE = dt1/2 Vavg (sigma_old + sigma_new) : D - dV/2 (q_old + q_new), plastic work
+//   svm d_eps_p V: all exactly as the brick (hex8_fb.cpp)
+//   internal forces (added to the nodes): f_k = -V (sigma - q I) b_k
+//   characteristic length (s4deri3.F, default Idt1sol 0): dx = 1 / max_k |b_k| = the smallest height
+//     = 3 V / largest face area
+//   element step (before the /DT scale; mqviscb.F as the brick): qt = qb c + qa^2 l ec,
+//     c_eff = qt + sqrt(qt^2 + c^2), dt = dx / c_eff
+//   nodal stiffness (mqviscb.F gives rho V / dt^2, s4cumu3.F halves it for each of the 4 nodes):
+//     k = rho V / (2 dt^2), so that a lone tetrahedron's nodal step sqrt(2 (rho V / 4) / k) equals dt
+//
+// An element with V <= 0 (or not a number) gets zero force, dt = 0 and k = 0, keeps its stress and energies
+// and stores the bad volume in `vol`: the engine reports it and stops (Radioss's small-volume treatments,
+// schkjabt3.F, are not reproduced). Elements with off == 0 give no force and dt = +inf; forces and energy
+// increments are scaled by off. No tetrahedron switches to small strain under /DT/BRICK/CST.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "solver/element_gather.hpp"
+#include "solver/element_groups.hpp"
+
+namespace radx::solver {
+
+namespace {
+
+inline void cross(const double a[3], const double b[3], double c[3]) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// Outward faces of a positive tetrahedron (node positions 0..3), face f opposite node kOpposite[f];
+// the same table as model::kTetraFaces.
+constexpr int kFaces[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+constexpr int kOpposite[4] = {3, 2, 1, 0};
+
+}  // namespace
+
+void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
+  constexpr std::size_t G = kGroupSize;
+  const double dt1 = cyc.dt1;
+  const double c = mat.c_solid;
+  const double rho0 = mat.rho0;
+  const double qa2 = g.qa * g.qa;
+  const double qb = g.qb;
+  const double alpha = mat.f_cut > 0 ? std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1) : 1.0;
+  const double inf = std::numeric_limits<double>::infinity();
+
+  const std::int32_t* conn = g.conn.data();
+  double* force = g.nodal_force.data();
+
+  const auto n = static_cast<std::size_t>(g.count);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double off = g.off[i];
+    if (off == 0.0) {
+      clear_nodal_forces<4, 3>(force, G, i);
+      g.dt[i] = inf;
+      g.k_nodal[i] = 0.0;
+      continue;
+    }
+
+    double x[4][3], v[4][3];
+    gather_element<4>(conn, G, i, nodes, x, v);
+
+    // Face area vectors (twice the area, outward), volume, gradients.
+    double af[4][3];
+    double area2_max = 0.0;
+#pragma GCC unroll 4
+    for (int f = 0; f < 4; ++f) {
+      double e1[3], e2[3];
+#pragma GCC unroll 3
+      for (int d = 0; d < 3; ++d) {
+        e1[d] = x[kFaces[f][1]][d] - x[kFaces[f][0]][d];
+        e2[d] = x[kFaces[f][2]][d] - x[kFaces[f][0]][d];
+      }
+      cross(e1, e2, af[f]);
+      area2_max = std::max(area2_max, af[f][0] * af[f][0] + af[f][1] * af[f][1] + af[f][2] * af[f][2]);
+    }
+    double d14[3], d24[3], d34[3], c23[3];
+#pragma GCC unroll 3
+    for (int d = 0; d < 3; ++d) {
+      d14[d] = x[0][d] - x[3][d];
+      d24[d] = x[1][d] - x[3][d];
+      d34[d] = x[2][d] - x[3][d];
+    }
+    cross(d24, d34, c23);
+    const double vol = (d14[0] * c23[0] + d14[1] * c23[1] + d14[2] * c23[2]) / 6.0;
+    if (!(vol > 0.0)) {  // inverted, flat or not a number: reported and stopped by the engine
+      clear_nodal_forces<4, 3>(force, G, i);
+      g.vol[i] = vol;
+      g.dt[i] = 0.0;
+      g.k_nodal[i] = 0.0;
+      continue;
+    }
+    const double inv6v = -1.0 / (6.0 * vol);
+    double b[4][3];
+#pragma GCC unroll 4
+    for (int f = 0; f < 4; ++f)
+#pragma GCC unroll 3
+      for (int d = 0; d < 3; ++d) b[kOpposite[f]][d] = af[f][d] * inv6v;
+
+    // Velocity gradient L[a][c] = d v_a / d x_c.
+    double L[3][3] = {};
+#pragma GCC unroll 4
+    for (int k = 0; k < 4; ++k)
+#pragma GCC unroll 3
+      for (int a = 0; a < 3; ++a) {
+        L[a][0] += v[k][a] * b[k][0];
+        L[a][1] += v[k][a] * b[k][1];
+        L[a][2] += v[k][a] * b[k][2];
+      }
+    const double D[6] = {L[0][0], L[1][1], L[2][2], L[0][1] + L[1][0], L[1][2] + L[2][1], L[2][0] + L[0][2]};
+    const double wz = 0.5 * dt1 * (L[1][0] - L[0][1]);
+    const double wy = 0.5 * dt1 * (L[0][2] - L[2][0]);
+    const double wx = 0.5 * dt1 * (L[2][1] - L[1][2]);
+
+    // Jaumann rotation of the stored stress (old values on the right-hand side).
+    double s[6];
+#pragma GCC unroll 6
+    for (int m = 0; m < 6; ++m) s[m] = g.sig[static_cast<std::size_t>(m) * G + i];
+    double so[6];
+    so[0] = s[0] - 2.0 * s[3] * wz + 2.0 * s[5] * wy;
+    so[1] = s[1] + 2.0 * s[3] * wz - 2.0 * s[4] * wx;
+    so[2] = s[2] - 2.0 * s[5] * wy + 2.0 * s[4] * wx;
+    so[3] = s[3] + wz * (s[0] - s[1]) + wy * s[4] - wx * s[5];
+    so[4] = s[4] + wx * (s[1] - s[2]) + wz * s[5] - wy * s[3];
+    so[5] = s[5] + wy * (s[2] - s[0]) + wx * s[3] - wz * s[4];
+
+    // Density, strain rate, material.
+    const double rho = rho0 * g.vol0[i] / vol;
+    const double mu = rho / rho0 - 1.0;
+    const double e_rate =
+        std::sqrt(D[0] * D[0] + D[1] * D[1] + D[2] * D[2] + 0.5 * (D[3] * D[3] + D[4] * D[4] + D[5] * D[5]));
+    const double rate = alpha * e_rate + (1.0 - alpha) * g.rate[i];
+    const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
+    double sn[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
+    double eps_p = g.eps_p[i];
+    const double deps_p = solid_point_update(mat, rate, de, mu, sn, eps_p);
+
+    // Bulk viscosity and element step.
+    const double l = std::cbrt(vol);
+    const double ec = std::max(0.0, -(D[0] + D[1] + D[2]));
+    const double q_new = rho * ec * l * (qa2 * l * ec + qb * c);
+    const double dx = 6.0 * vol / std::sqrt(area2_max);  // 3 V / (largest face area)
+    const double qt = qb * c + qa2 * l * ec;
+    const double dt_e = dx / (qt + std::sqrt(qt * qt + c * c));
+
+    // Energies.
+    const double dvol = vol - g.vol[i];
+    const double vavg = vol - 0.5 * dvol;
+    double work = 0.0;
+#pragma GCC unroll 6
+    for (int m = 0; m < 6; ++m) work += (so[m] + sn[m]) * D[m];
+    const double de_int = 0.5 * dt1 * vavg * work - 0.5 * dvol * (g.q[i] + q_new);
+    const double sm = (sn[0] + sn[1] + sn[2]) / 3.0;
+    const double svm = std::sqrt(
+        1.5 * ((sn[0] - sm) * (sn[0] - sm) + (sn[1] - sm) * (sn[1] - sm) + (sn[2] - sm) * (sn[2] - sm)) +
+        3.0 * (sn[3] * sn[3] + sn[4] * sn[4] + sn[5] * sn[5]));
+
+    // Nodal forces f_k = -V (sigma - q I) b_k.
+    const double T[3][3] = {{vol * (sn[0] - q_new), vol * sn[3], vol * sn[5]},
+                            {vol * sn[3], vol * (sn[1] - q_new), vol * sn[4]},
+                            {vol * sn[5], vol * sn[4], vol * (sn[2] - q_new)}};
+    double f[4][3];
+#pragma GCC unroll 4
+    for (int k = 0; k < 4; ++k)
+#pragma GCC unroll 3
+      for (int a = 0; a < 3; ++a) f[k][a] = -(T[a][0] * b[k][0] + T[a][1] * b[k][1] + T[a][2] * b[k][2]);
+
+    store_nodal_forces<4, 3>(force, G, i, off, f);
+#pragma GCC unroll 6
+    for (int m = 0; m < 6; ++m) g.sig[static_cast<std::size_t>(m) * G + i] = sn[m];
+    g.eps_p[i] = eps_p;
+    g.vol[i] = vol;
+    g.rho[i] = rho;
+    g.q[i] = q_new;
+    g.rate[i] = rate;
+    g.e_int[i] += off * de_int;
+    g.w_plastic[i] += off * svm * deps_p * vol;
+    g.dt[i] = dt_e;
+    g.k_nodal[i] = 0.5 * rho * vol / (dt_e * dt_e);
+  }
+}
+
+}  // namespace radx::solver
