@@ -9,7 +9,8 @@
 // Frame and local coordinates: shell_frame.hpp (1.2), rebuilt every cycle; stresses stay in that frame.
 // Warping terms are not taken (flat element) [inferred].
 // At each Gauss point g (xi, eta = +-1/sqrt(3), weight det J(g); shell_quad_mindlin.hpp):
-//   de(g) = rows(g) v dt1 (membrane exx eyy gxy, curvature kxx kyy kxy, transverse shear gyz gzx from the
+//   de(g) = rows(g) v dt1 with the second-order membrane correction of 1.3 at the point's slopes
+//   (quad_second_order) (membrane exx eyy gxy, curvature kxx kyy kxy, transverse shear gyz gzx from the
 //   assumed field tied at the edge midpoints [inferred to be the Bathe-Dvorkin/Batoz Q4gamma field]);
 //   the section (shell_section.hpp: 1.4, 1.8, 6.3, 6.5) updates FOR(g), MOM(g) at its N points;
 //   f_k = sum_g det J(g) rows(g)^T (N(g), M(g), Q(g)) times OFF, N = FOR t, M = MOM t^2, Q = FOR_shear t;
@@ -151,6 +152,7 @@ void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
         const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
         bk.detj[gp][j] = r.detj;
         quad_rates(r, vx, vy, vz, rx, ry, e, kap);
+        quad_second_order(r, vz, dt1, e);
         for (int q = 0; q < 5; ++q) bk.dem[gp][q][j] = e[q] * dt1;
         for (int q = 0; q < 3; ++q) bk.dk[gp][q][j] = kap[q] * dt1;
       }

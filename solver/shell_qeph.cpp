@@ -12,7 +12,8 @@
 // them with the warp z1, which Ishell 1 also drops].
 // Rows: shell_quad_mindlin.hpp (bilinear membrane and curvature, assumed transverse shear tied at the edge
 // midpoints). The centre point (xi = eta = 0) gives the constant part:
-//   de = rows(0) v dt1, dkappa likewise; the section (shell_section.hpp: 1.4, 1.8, 6.3, 6.4, 6.5) updates
+//   de = rows(0) v dt1 with the second-order membrane correction of 1.3 (exx -= dt1 w,x^2, eyy -= dt1 w,y^2,
+//   quad_second_order), dkappa likewise; the section (shell_section.hpp: 1.4, 1.8, 6.3, 6.4, 6.5) updates
 //   FOR, MOM at the N points; f_k = A rows(0)^T (N, M, Q), A = 4 det J(0) (the area of Ishell 1), N = FOR t,
 //   M = MOM t^2, Q = FOR_shear t, all times OFF. Energy as Ishell 1 (1.5).
 // Membrane damping (1.4, Dm default 0.015 for QEPH): visc = 1.414 Dm rho c sqrt(A)/dt1 on the centre
@@ -155,6 +156,7 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
       sec.area[j] = 4.0 * r0.detj;
       double e[5], kap[3];
       quad_rates(r0, vx, vy, vz, rx, ry, e, kap);
+      quad_second_order(r0, vz, dt1, e);
       for (int q = 0; q < 5; ++q) sec.dem[q][j] = e[q] * dt1;
       for (int q = 0; q < 3; ++q) sec.dk[q][j] = kap[q] * dt1;
       const double eq =

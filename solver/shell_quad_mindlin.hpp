@@ -119,6 +119,17 @@ inline void quad_rates(const QuadRows& r, const double vx[4], const double vy[4]
   }
 }
 
+// Second-order (large-rotation) correction of the membrane rates at a point, elements.md 1.3 generalised to
+// the point's own slopes: exx -= dt1 (w,x)^2, eyy -= dt1 (w,y)^2 (what Ishell 1's correction amounts to on a
+// rectangle). The rates use B(X^n) with v^{n-1/2}; without it an element turning out of its plane would be
+// stretched by the update x + dt v and book that stretch as strain energy [inferred for QEPH and QBAT].
+inline void quad_second_order(const QuadRows& r, const double vz[4], double dt1, double e[5]) {
+  double gx = 0, gy = 0;
+  for (int k = 0; k < 4; ++k) gx += r.nx[k] * vz[k], gy += r.ny[k] * vz[k];
+  e[0] -= dt1 * gx * gx;
+  e[1] -= dt1 * gy * gy;
+}
+
 // Adds the nodal forces of the resultants at a point, times its weight w (transpose of quad_rates):
 // n = Nxx Nyy Nxy Qy Qx (force per length), m = Mxx Myy Mxy (moment per length).
 inline void quad_add_forces(const QuadRows& r, double w, const double n[5], const double m[3], double fx[4],
