@@ -12,7 +12,10 @@
 //   8-node bricks:  Isolid 1 (one point, Flanagan-Belytschko viscous hourglass) and 2 (plain h vectors),
 //                   Ismstr 4 (large strain) and 2 (large strain, small strain after a /DT/BRICK/CST switch:
 //                   without /DT/BRICK/CST the same as 4), Iframe 1 (Jaumann rate, not co-rotational), no
-//                   distortion control (Icontrol 1)
+//                   distortion control (Icontrol 1);
+//                   fully integrated (2 x 2 x 2 points, hex8_full.cpp): Isolid 14 (HA8, co-rotational, Icpre
+//                   0 to 3, Inpts 222 only), 17 (H8C, Icpre default 1), 18 (H8D, run as 17 with Icpre chosen
+//                   by the law) and 12 (S8), each with Iframe 1 or 2 (14 and 18 impose 2)
 #include <algorithm>
 #include <string>
 
@@ -150,12 +153,16 @@ void ModelBuilder::check_formulations() {
           asked = defs.front()->get_int("Iframe");
         s.iframe = asked > 0 ? static_cast<int>(asked) : 1;
       }
-      flag("Isolid", s.isolid, s.isolid == 1 || s.isolid == 2, 1, isolid_name(s.isolid), isolid_name(1),
-           "bricks");
+      const bool full = s.isolid == 12 || s.isolid == 14 || s.isolid == 17 || s.isolid == 18;
+      flag("Isolid", s.isolid, s.isolid == 1 || s.isolid == 2 || full, 1, isolid_name(s.isolid),
+           isolid_name(1), "bricks");
+      if (s.isolid == 14)  // HA8 reads Inpts; radx implements its default 2 x 2 x 2 (222)
+        flag("Inpts", s.inpts, s.inpts == 0 || s.inpts == 222, 222,
+             "integration points " + std::to_string(s.inpts), "2 x 2 x 2 Gauss points", "bricks");
       flag("Ismstr", s.ismstr, s.ismstr == 2 || s.ismstr == 4, 4, ismstr_name(s.ismstr), ismstr_name(4),
            "bricks");
-      flag("Iframe", s.iframe, s.iframe == 1, 1, s.iframe == 2 ? "co-rotational" : "frame option",
-           "Jaumann rate, not co-rotational", "bricks");
+      flag("Iframe", s.iframe, s.iframe == 1 || (full && s.iframe == 2), 1,
+           s.iframe == 2 ? "co-rotational" : "frame option", "Jaumann rate, not co-rotational", "bricks");
       int icontrol = static_cast<int>(rec.get_int("Icontrol"));
       flag("Icontrol", icontrol, icontrol != 1, 2, "distortion control on", "distortion control off",
            "bricks");

@@ -36,4 +36,11 @@ void BrickGroup::allocate(int n) {
   x_ref.assign(8 * 3 * G, 0.0);
 }
 
+void BrickGroup::allocate_points() {
+  const auto G = static_cast<std::size_t>(kGroupSize);
+  sig_p.assign(8 * 6 * G, 0.0);
+  eps_p_p.assign(8 * G, 0.0);
+  vol0_p.assign(8 * G, 0.0);
+}
+
 }  // namespace radx::solver

@@ -68,6 +68,14 @@ struct BrickGroup {
   int isolid = 1;
   int ismstr = 4;  // /DT/BRICK/CST switches a brick to small strain only with Ismstr 2 (deck-format.md)
   double qa = 1.1, qb = 0.05, h = 0.1;
+  // Fully integrated bricks (Isolid 12, 14, 17, 18: hex8_full.cpp), set by the engine from the property.
+  int n_points = 1;                // 1: one-point kernel (hex8_fb.cpp); 8: 2x2x2 Gauss points (hex8_full.cpp)
+  int icpre = 0;                   // 0: pressure per point; 1, 2: constant pressure over the element
+  bool corot = false;              // co-rotational frame (stress kept in it) instead of the Jaumann rate
+  bool shear_avg = false;          // assumed shear strain (Isolid 14)
+  std::vector<double> sig_p;       // [8][6][G] point stresses (co-rotational frame when corot), 8 points only
+  std::vector<double> eps_p_p;     // [8][G] point plastic strains
+  std::vector<double> vol0_p;      // [8][G] initial point volumes det J_p
   std::vector<std::int32_t> conn;  // [8][G]
   std::vector<double> vol0;        // [G] initial (one-point) volume
   std::vector<double> vol;         // [G] current volume
@@ -90,6 +98,7 @@ struct BrickGroup {
   std::vector<double> k_nodal;      // [G] nodal stiffness contribution (1/4 rho V / dt_e^2)
   std::vector<double> nodal_force;  // [8][3][G] force ADDED to each node, global axes
   void allocate(int n);
+  void allocate_points();  // the point arrays of a fully integrated group (n_points = 8)
 };
 
 // Kernels (one file each). Each reads node coordinates and velocities from `nodes`, updates the
@@ -99,5 +108,19 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
 void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
                           const CycleInfo& cyc);
 void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
+void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
+// The flags of a brick group from its property and material (OpenRadioss's defaults per Isolid, see
+// hex8_full.cpp): n_points, icpre, corot, shear_avg. One-point formulations keep n_points = 1.
+void resolve_full_brick(const model::SolidProperty& prop, const MaterialParams& mat, BrickGroup& g);
+
+// Which kernel runs a brick group: one switch in the engine, no virtual call.
+enum class BrickKernel : std::uint8_t { OnePoint, FullyIntegrated };
+inline BrickKernel brick_kernel(const BrickGroup& g) {
+  return g.n_points == 8 ? BrickKernel::FullyIntegrated : BrickKernel::OnePoint;
+}
+
+// Point volumes det J_p of the 2x2x2 Gauss points of the fully integrated brick at coordinates x (values <= 0
+// for an inverted point).
+void hex8_full_point_volumes(const double x[8][3], double vp[8]);
 
 }  // namespace radx::solver
