@@ -69,13 +69,18 @@ struct BrickGroup {
   int ismstr = 4;  // /DT/BRICK/CST switches a brick to small strain only with Ismstr 2 (deck-format.md)
   double qa = 1.1, qb = 0.05, h = 0.1;
   // Fully integrated bricks (Isolid 12, 14, 17, 18: hex8_full.cpp), set by the engine from the property.
-  int n_points = 1;                // 1: one-point kernel (hex8_fb.cpp); 8: 2x2x2 Gauss points (hex8_full.cpp)
-  int icpre = 0;                   // 0: pressure per point; 1, 2: constant pressure over the element
-  bool corot = false;              // co-rotational frame (stress kept in it) instead of the Jaumann rate
-  bool shear_avg = false;          // assumed shear strain (Isolid 14)
-  std::vector<double> sig_p;       // [8][6][G] point stresses (co-rotational frame when corot), 8 points only
-  std::vector<double> eps_p_p;     // [8][G] point plastic strains
-  std::vector<double> vol0_p;      // [8][G] initial point volumes det J_p
+  int n_points = 1;    // 1: one-point kernel (hex8_fb.cpp); 8: 2x2x2 Gauss points (hex8_full.cpp)
+  int icpre = 0;       // 0: pressure per point; 1, 2: constant pressure over the element
+  bool corot = false;  // co-rotational frame (stress kept in it) instead of the Jaumann rate
+  // Strain operator of the points (hex8_full.cpp): Plain, the assumed-strain element of Isolid 14 (Asqbi), or
+  // the averaged shear and Poisson terms of Isolid 18 (SelectShear); `coupled` adds the normal-strain terms.
+  enum class FullStrain : std::uint8_t { Plain, Asqbi, SelectShear };
+  FullStrain strain = FullStrain::Plain;
+  bool coupled = false;
+  bool dt_points = false;       // element length min_p 8 V_p / A_mid (S8Z, S8E) instead of V / max face area
+  std::vector<double> sig_p;    // [8][6][G] point stresses (co-rotational frame when corot), 8 points only
+  std::vector<double> eps_p_p;  // [8][G] point plastic strains
+  std::vector<double> vol0_p;   // [8][G] initial point volumes det J_p
   std::vector<std::int32_t> conn;  // [8][G]
   std::vector<double> vol0;        // [G] initial (one-point) volume
   std::vector<double> vol;         // [G] current volume
@@ -110,7 +115,8 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
 void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 // The flags of a brick group from its property and material (OpenRadioss's defaults per Isolid, see
-// hex8_full.cpp): n_points, icpre, corot, shear_avg. One-point formulations keep n_points = 1.
+// hex8_full.cpp): n_points, icpre, corot, strain, coupled, dt_points. One-point formulations keep n_points
+// = 1.
 void resolve_full_brick(const model::SolidProperty& prop, const MaterialParams& mat, BrickGroup& g);
 
 // Which kernel runs a brick group: one switch in the engine, no virtual call.
