@@ -16,6 +16,9 @@
 //                   (3 = off, as 0; Icpre 2 and Ihkt 2+ refused); Ismstr 4 (large strain) and 2 (large
 //                   strain, small strain after a /DT/BRICK/CST switch: without /DT/BRICK/CST the same as 4);
 //                   no distortion control (Icontrol 1)
+//                   fully integrated (2 x 2 x 2 points, hex8_full.cpp): Isolid 14 (HA8, co-rotational, Icpre
+//                   0 to 3, Inpts 222 only), 17 (H8C, Icpre default 1), 18 (H8D, run as 17 with Icpre chosen
+//                   by the law) and 12 (S8), each with Iframe 1 or 2 (14 and 18 impose 2)
 //   4-node tetras:  Itetra4 1000 (constant strain, one point; OpenRadioss hm_read_prop14.F also reads 0 as
 //                   /DEF_SOLID's value, 2 and unexpected values as 1000), Ismstr 2 or 4, Iframe 1; Itetra4 1
 //                   and 3 (nodal pressure) and 10 (converted to a 10-node tetra) are refused
@@ -178,8 +181,12 @@ void ModelBuilder::check_formulations() {
         }
       }
       if (!(used & kBrick)) continue;
-      flag("Isolid", s.isolid, s.isolid == 1 || s.isolid == 2 || s.isolid == 24, 1, isolid_name(s.isolid),
-           isolid_name(1), "bricks");
+      const bool full = s.isolid == 12 || s.isolid == 14 || s.isolid == 17 || s.isolid == 18;
+      flag("Isolid", s.isolid, s.isolid == 1 || s.isolid == 2 || s.isolid == 24 || full, 1,
+           isolid_name(s.isolid), isolid_name(1), "bricks");
+      if (s.isolid == 14)  // HA8 reads Inpts; radx implements its default 2 x 2 x 2 (222)
+        flag("Inpts", s.inpts, s.inpts == 0 || s.inpts == 222, 222,
+             "integration points " + std::to_string(s.inpts), "2 x 2 x 2 Gauss points", "bricks");
       if (s.isolid == 24) {
         flag("Icpre", s.icpre, s.icpre == 0 || s.icpre == 1 || s.icpre == 3, 0,  // 3: off, as 0
              s.icpre == 2 ? "pressure from the plastic state" : "pressure option",

@@ -324,7 +324,8 @@ void ModelBuilder::build_properties() {
       p.kind = model::PropertyKind::Solid;
       auto& s = p.solid;
       s.isolid = pick(r.get_int("Isolid"), dsolid("Isolid"), 1);
-      s.ismstr = pick(r.get_int("Ismstr"), dsolid("Ismstr"), 4);
+      // Isolid 18 defaults to Ismstr 2 (OpenRadioss sgrtails.F), the others to 4.
+      s.ismstr = pick(r.get_int("Ismstr"), dsolid("Ismstr"), s.isolid == 18 ? 2 : 4);
       s.icpre = pick(r.get_int("Icpre"), dsolid("Icpre"), 0);
       s.iframe = pick(r.get_int("Iframe"), dsolid("Iframe"), 1);
       if (s.isolid == 14 || s.isolid == 15 || s.isolid == 18 || s.isolid == 24) s.iframe = 2;

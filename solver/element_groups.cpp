@@ -55,4 +55,11 @@ void TetraGroup::allocate(int n) {
   nodal_force.assign(4 * 3 * G, 0.0);
 }
 
+void BrickGroup::allocate_points() {
+  const auto G = static_cast<std::size_t>(kGroupSize);
+  sig_p.assign(8 * 6 * G, 0.0);
+  eps_p_p.assign(8 * G, 0.0);
+  vol0_p.assign(8 * G, 0.0);
+}
+
 }  // namespace radx::solver

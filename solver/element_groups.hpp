@@ -83,9 +83,23 @@ struct BrickGroup {
   int isolid = 1;
   int ismstr = 4;  // /DT/BRICK/CST switches a brick to small strain only with Ismstr 2 (deck-format.md)
   int iframe = 1;  // 1 Jaumann rate, global stress; 2 co-rotational element frame, stress in that frame
-  int icpre = 0;   // Isolid 24: 0 compressible hourglass modes, 1 incompressible (pressure treatment)
+  // Icpre: Isolid 24: 0 compressible hourglass modes, 1 incompressible; fully integrated bricks (resolved by
+  // resolve_full_brick): 0 pressure per point, 1 and 2 constant pressure over the element.
+  int icpre = 0;
   double qa = 1.1, qb = 0.05, h = 0.1;
-  double dn = 0.1;                 // Isolid 24: viscous part of the physical hourglass
+  double dn = 0.1;  // Isolid 24: viscous part of the physical hourglass
+  // Fully integrated bricks (Isolid 12, 14, 17, 18: hex8_full.cpp), set by the engine from the property.
+  int n_points = 1;    // 1: one-point kernel (hex8_fb.cpp); 8: 2x2x2 Gauss points (hex8_full.cpp)
+  bool corot = false;  // co-rotational frame (stress kept in it) instead of the Jaumann rate
+  // Strain operator of the points (hex8_full.cpp): Plain, the assumed-strain element of Isolid 14 (Asqbi), or
+  // the averaged shear and Poisson terms of Isolid 18 (SelectShear); `coupled` adds the normal-strain terms.
+  enum class FullStrain : std::uint8_t { Plain, Asqbi, SelectShear };
+  FullStrain strain = FullStrain::Plain;
+  bool coupled = false;
+  bool dt_points = false;       // element length min_p 8 V_p / A_mid (S8Z, S8E) instead of V / max face area
+  std::vector<double> sig_p;    // [8][6][G] point stresses (co-rotational frame when corot), 8 points only
+  std::vector<double> eps_p_p;  // [8][G] point plastic strains
+  std::vector<double> vol0_p;   // [8][G] initial point volumes det J_p
   std::vector<std::int32_t> conn;  // [8][G]
   std::vector<double> vol0;        // [G] initial (one-point) volume
   std::vector<double> vol;         // [G] current volume
@@ -113,11 +127,13 @@ struct BrickGroup {
   std::vector<double> hg_stress;  // [3][4][G] Isolid 24: hourglass stresses per direction and mode (local)
   std::vector<double> w_hg;       // [G] Isolid 24: hourglass work, a part of e_int (diagnostic only)
   void allocate(int n);
+  void allocate_points();  // the point arrays of a fully integrated group (n_points = 8)
 };
 
 // True when the group's stress lives in the co-rotational element frame (Iframe 2; Isolid 24 forces it).
+// Fully integrated groups keep their own frames per point and store the mean stress in global axes.
 inline bool brick_corotational(const BrickGroup& g) {
-  return g.iframe == 2 || g.isolid == 24;
+  return g.n_points == 1 && (g.iframe == 2 || g.isolid == 24);
 }
 
 // Element i's stress in global axes (xx yy zz xy yz zx): `sig` itself, or R sig R^T for a co-rotational
@@ -193,5 +209,21 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
 // R[row][column], columns the unit axes in global coordinates.
 void brick_corotational_frame(const double x[8][3], bool heph_order, double R[3][3]);
 void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
+void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
+// The flags of a brick group from its property and material (OpenRadioss's defaults per Isolid, see
+// hex8_full.cpp): n_points, icpre, corot, strain, coupled, dt_points. One-point formulations keep n_points
+// = 1.
+void resolve_full_brick(const model::SolidProperty& prop, const MaterialParams& mat, BrickGroup& g);
+
+// Which kernel runs a brick group: one switch in the engine, no virtual call.
+enum class BrickKernel : std::uint8_t { OnePoint, Heph, FullyIntegrated };
+inline BrickKernel brick_kernel(const BrickGroup& g) {
+  if (g.n_points == 8) return BrickKernel::FullyIntegrated;
+  return g.isolid == 24 ? BrickKernel::Heph : BrickKernel::OnePoint;
+}
+
+// Point volumes det J_p of the 2x2x2 Gauss points of the fully integrated brick at coordinates x (values <= 0
+// for an inverted point).
+void hex8_full_point_volumes(const double x[8][3], double vp[8]);
 
 }  // namespace radx::solver

@@ -201,6 +201,7 @@ void ExplicitEngine::build_groups() {
     g.qa = prop.qa;
     g.qb = prop.qb;
     g.h = prop.h;
+    resolve_full_brick(prop, materials_[static_cast<std::size_t>(g.material)], g);
     const double rho0 = materials_[static_cast<std::size_t>(g.material)].rho0;
     for (int i = 0; i < g.count; ++i) {
       const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
@@ -213,6 +214,18 @@ void ExplicitEngine::build_groups() {
       }
       const double v0 = model::brick_volume(x);
       g.vol0[static_cast<std::size_t>(i)] = g.vol[static_cast<std::size_t>(i)] = v0;
+      if (g.n_points == 8) {  // point volumes, and the current volume as the kernel measures it (their sum)
+        double xa[8][3], vp[8];
+        for (std::size_t q = 0; q < 8; ++q)
+          for (std::size_t d = 0; d < 3; ++d) xa[q][d] = x[q][d];
+        hex8_full_point_volumes(xa, vp);
+        double sum = 0;
+        for (std::size_t q = 0; q < 8; ++q) {
+          g.vol0_p[q * kGroupSize + static_cast<std::size_t>(i)] = vp[q];
+          sum += vp[q];
+        }
+        g.vol[static_cast<std::size_t>(i)] = sum;
+      }
       g.rho[static_cast<std::size_t>(i)] = rho0;
     }
     bricks_.push_back(std::move(g));
@@ -313,9 +326,10 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
     for (std::int64_t k = 0; k < nb; ++k) {
       auto& g = bricks_[static_cast<std::size_t>(k)];
       const auto& mat = materials_[static_cast<std::size_t>(g.material)];
-      switch (g.isolid) {
-        case 24: hex8_heph_forces(g, nodes_, mat, cyc); break;
-        default: hex8_forces(g, nodes_, mat, cyc); break;  // Isolid 1 and 2 (the starter refuses the others)
+      switch (brick_kernel(g)) {
+        case BrickKernel::OnePoint: hex8_forces(g, nodes_, mat, cyc); break;  // Isolid 1 and 2
+        case BrickKernel::Heph: hex8_heph_forces(g, nodes_, mat, cyc); break;
+        case BrickKernel::FullyIntegrated: hex8_full_forces(g, nodes_, mat, cyc); break;
       }
     }
 #pragma omp for schedule(dynamic, 1)

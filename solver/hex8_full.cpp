@@ -1,0 +1,602 @@
+// Eight-node fully integrated bricks: Isolid 14 (HA8), 17 (H8C), 18 (H8D, run as 17 with automatic flags) and
+// 12 (the older S8). One kernel: the four differ only in the flags the engine gives the group (frame,
+// pressure treatment, strain operator, time-step length), see BrickGroup and resolve_full_brick in
+// explicit_engine.cpp.
+//
+// Sources, OpenRadioss (read, not copied): engine/source/elements/forint.F (Isolid 14 -> S8ZFORC3, 17 and
+// 18 -> S8EFORC3 in explicit, 12 -> S8FORC3 when the group has 8 points), solide8/s8deri3.F, s8defo3.F,
+// s8fint3.F, basisf.F (Gauss points +-1/sqrt(3), per-point derivatives from the inverse Jacobian, per-point
+// forces weighted by the point volume), solide8/s8lagr3.F (density per element), solide8z/s8zdefo3.F
+// (constant-pressure option, spin set to zero in the co-rotational frame), solide/srepiso3.F and sortho3.F
+// (the co-rotational frame from the three centre directions, orthonormalised), starter hm_read_prop14.F and
+// sgrtails.F (defaults). Section numbers refer to shared/spec/elements.md.
+//
+// Nodes and natural coordinates as hex8_fb.cpp: (xi, eta, zeta)_k = (-1,-1,-1), (1,-1,-1), (1,1,-1),
+// (-1,1,-1), then the same with zeta = +1. Points p = 0..7 at (xi, eta, zeta)_p = a (xi, eta, zeta)_k,
+// a = 1/sqrt(3), weight 1 each. All on x^n with v^{n-1/2}.
+//
+//   frame (corot): g_xi = dx/dxi(0), g_eta, g_zeta at the centre; Q = [g/|g|] made orthogonal by the
+//     iteration Q <- (Q + Q^-T)/2 (the rotation of its polar decomposition, symmetric in the three
+//     directions), then e1 = q1, e3 = e1 x q2 / |.|, e2 = e3 x e1; R = rows e1 e2 e3. x_loc = R x, v_loc = R
+//     v. Without corot (Iframe 1 for 12 and 17) R = I and the stress gets the Jaumann rotation of 3.2 per
+//     point.
+//   per point: J_p = sum_k x_k (x) dN_k/dxi(p), V_p = det J_p, b_pk = J_p^-T dN_k/dxi(p),
+//     L_p = sum_k v_k (x) b_pk, D_p = sym L_p (engineering shears), V = sum_p V_p (exact trilinear volume)
+//   strain operator per formulation (in the local frame; see asqbi_operator and select_operator below):
+//     12, 17 and 18 with Icpre 1: plain, D_p = sym L_p.
+//     14 (S8Z: solide8z/s8zderic3.F, s8zderipr3.F, s8zderim3.F, s8zdefo3.F, s8zfint3.F): the gradient split
+//       b_pk = bc_k + sum_m gamma_mk grad h_m(p) (exact for the trilinear brick); shear drops the bending
+//       mode of its plane and the warping mode; with Icpre != 1 the normal strains get -nu/(1-nu) and -nu
+//       terms of the other components' hourglass parts (ASQBI, Belytschko and Bindeman 1993).
+//     18 with Icpre 0 or 2 (S8E: solide8e/s8eselecsh.F, s8ederish2.F, s8ederi_bij.F, s8edefo3.F): shear
+//       gradients averaged over the four points sharing xi (xy), zeta (xz) or eta (yz), Poisson terms from
+//       the hourglass parts the shear keeps and drops.
+//     Forces are the transpose (work-conjugate): f = -sum_p V_p B~_p^T (sigma_p - q I). The coupling terms'
+//     trace updates the point's reference volume V0_p <- V0_p (1 - dt tr) so that mu sees it.
+//   volumetric strain for the material (LAW1/LAW2 take the pressure from mu only, the deviator from de):
+//     per-point pressure (icpre 0): mu_p = V0_p / V_p - 1;
+//     constant pressure (icpre 1, 2 and Isolid 12's per-element density): mu = V0 / V - 1 with V0 = sum V0_p,
+//     the same at every point, so the volumetric part is under-integrated and does not lock at nu -> 1/2.
+//   material: solid_point_update(de_p = D_p dt1, mu_p) per point, rate from the element-mean D (6.2)
+//   bulk viscosity (3.3) per element from the mean tr D: q = rho ec l (qa^2 l ec + qb c), l = V^(1/3)
+//   internal energy: dE = sum_p dt1/2 V_p,avg (sigma_old + sigma_new)_p : D_p - dV/2 (q_old + q_new),
+//     V_p,avg = V_p (V - dV/2) / V; no hourglass energy (none is needed)
+//   forces: f_k = -R^T sum_p V_p B~_p^T (sigma_p - q I), B~_p the operator above
+//   element step: 14, 17, 18 (S8Z s8zderim3.F, S8E s8ederi_2.F, /DTSDE off): dx = min_p 8 V_p / A_mid with
+//     A_mid = max 4 |g_a x g_b| of the centre directions; 12 (inferred): dx = V / max face area; dt = dx /
+//     c_eff, c_eff = qt + sqrt(qt^2 + c^2), qt = qb c + qa^2 l ec; nodal stiffness k = rho V / (4 dt^2) (4.5)
+//   output: g.sig = the volume-weighted point mean in global axes, g.eps_p = the point mean, g.rho = rho0
+//   V0/V
+//
+// An element with a point volume V_p <= 0 (inverted, or not a number) gets zero force, dt = 0, k = 0, keeps
+// its state and stores the bad volume in `vol`: the engine reports it and stops. Degenerate bricks (repeated
+// nodes: the collapsed-edge pentahedra of /BRICK) keep V_p > 0 at the interior Gauss points.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "solver/element_gather.hpp"
+#include "solver/element_groups.hpp"
+
+namespace radx::solver {
+
+namespace {
+
+constexpr int kNat[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                            {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+
+constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                              {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+// Points sharing a natural coordinate, for the assumed shear: kSet[c][p] = 0 or 1 is the side of point p
+// along natural direction c (0 xi, 1 eta, 2 zeta).
+constexpr int side(int p, int c) {
+  return kNat[p][c] > 0 ? 1 : 0;
+}
+
+// dN_k/dxi_c at point p (a = 1/sqrt(3)).
+struct ShapeDerivs {
+  double d[8][8][3];
+};
+
+ShapeDerivs make_derivs() {
+  ShapeDerivs s{};
+  const double a = 1.0 / std::sqrt(3.0);
+  for (int p = 0; p < 8; ++p) {
+    const double xi = a * kNat[p][0], eta = a * kNat[p][1], zeta = a * kNat[p][2];
+    for (int k = 0; k < 8; ++k) {
+      const double xk = kNat[k][0], ek = kNat[k][1], zk = kNat[k][2];
+      s.d[p][k][0] = 0.125 * xk * (1 + ek * eta) * (1 + zk * zeta);
+      s.d[p][k][1] = 0.125 * ek * (1 + xk * xi) * (1 + zk * zeta);
+      s.d[p][k][2] = 0.125 * zk * (1 + xk * xi) * (1 + ek * eta);
+    }
+  }
+  return s;
+}
+
+const ShapeDerivs& derivs() {
+  static const ShapeDerivs s = make_derivs();  // constant table, built once
+  return s;
+}
+
+inline void cross(const double a[3], const double b[3], double c[3]) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+inline double dot3(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// Inverse of a 3x3 matrix m with determinant det (not zero).
+inline void inverse3(const double m[3][3], double det, double inv[3][3]) {
+  const double id = 1.0 / det;
+  inv[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) * id;
+  inv[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * id;
+  inv[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * id;
+  inv[1][0] = (m[1][2] * m[2][0] - m[1][0] * m[2][2]) * id;
+  inv[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * id;
+  inv[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * id;
+  inv[2][0] = (m[1][0] * m[2][1] - m[1][1] * m[2][0]) * id;
+  inv[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * id;
+  inv[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * id;
+}
+
+inline double det3(const double m[3][3]) {
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+         m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+// Co-rotational frame R (rows e1 e2 e3) from the centre directions of the element.
+void corot_frame(const double x[8][3], double R[3][3]) {
+  double q[3][3];  // columns: unit centre directions along xi, eta, zeta
+  for (int c = 0; c < 3; ++c) {
+    double g[3] = {0, 0, 0};
+    for (int k = 0; k < 8; ++k)
+      for (int d = 0; d < 3; ++d) g[d] += 0.125 * kNat[k][c] * x[k][d];
+    const double n = std::sqrt(dot3(g, g));
+    for (int d = 0; d < 3; ++d) q[d][c] = n > 0 ? g[d] / n : (d == c ? 1.0 : 0.0);
+  }
+  // Polar rotation by the averaging iteration: converges quadratically from a nearly orthogonal start.
+  for (int it = 0; it < 4; ++it) {
+    const double det = det3(q);
+    if (!(std::abs(det) > 1e-12)) break;
+    double inv[3][3];
+    inverse3(q, det, inv);
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) q[a][b] = 0.5 * (q[a][b] + inv[b][a]);
+  }
+  double e1[3] = {q[0][0], q[1][0], q[2][0]}, q2[3] = {q[0][1], q[1][1], q[2][1]}, e2[3], e3[3];
+  double n = std::sqrt(dot3(e1, e1));
+  for (double& v : e1) v /= n;
+  cross(e1, q2, e3);
+  n = std::sqrt(dot3(e3, e3));
+  for (double& v : e3) v /= n;
+  cross(e3, e1, e2);
+  for (int d = 0; d < 3; ++d) {
+    R[0][d] = e1[d];
+    R[1][d] = e2[d];
+    R[2][d] = e3[d];
+  }
+}
+
+// Point volumes V_p = det J_p, gradients b_pk and inverse Jacobians ji_p[c][a] = dxi_c / dx_a of the geometry
+// x. Returns false when a V_p <= 0 (or NaN); vp then holds the point volumes computed so far.
+bool point_gradients(const double x[8][3], double vp[8], double b[8][8][3], double ji[8][3][3]) {
+  const auto& s = derivs();
+  for (int p = 0; p < 8; ++p) {
+    double J[3][3] = {};  // J[a][c] = dx_a / dxi_c
+    for (int k = 0; k < 8; ++k)
+      for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 3; ++c) J[a][c] += x[k][a] * s.d[p][k][c];
+    const double det = det3(J);
+    vp[p] = det;
+    if (!(det > 0.0)) return false;
+    inverse3(J, det, ji[p]);
+    for (int k = 0; k < 8; ++k)
+      for (int a = 0; a < 3; ++a)
+        b[p][k][a] = s.d[p][k][0] * ji[p][0][a] + s.d[p][k][1] * ji[p][1][a] + s.d[p][k][2] * ji[p][2][a];
+  }
+  return true;
+}
+
+// The points' strain operator: normal strain eps_aa = sum_k b_pk,a v_k,a + sum_{s != a} sum_k cp[p][s][a][k]
+// v_k,s, shear dv_a/dx_c (a != c) = sum_k bs[p][a][c][k] v_k,a. Plain: bs = b, cp = 0.
+struct PointOperator {
+  double bs[8][3][3][8];
+  double cp[8][3][3][8];
+};
+
+// Hourglass decomposition (Flanagan-Belytschko, exact for the trilinear brick): N_k = 1/8 + b_k.(x - x_c) +
+// sum_a gamma_ak h_a, h = (eta zeta, zeta xi, xi eta, xi eta zeta), b_k = J_c^-T s_k / 8 (J_c the centre
+// Jacobian, s_k the node's natural coordinates), gamma_ak = (h_ak - b_k.H_a) / 8, H_a = sum_k h_ak x_k.
+// hg[p][m][k][a] = gamma_mk dh_m/dx_a at point p (grad h_m through the point's inverse Jacobian), and bc the
+// centre gradients; b_pk = bc_k + sum_m hg[p][m][k].
+void hourglass_parts(const double x[8][3], const double ji[8][3][3], double bc[8][3], double hg[8][4][8][3]) {
+  double Jc[3][3] = {};
+  for (int k = 0; k < 8; ++k)
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c) Jc[a][c] += 0.125 * x[k][a] * kNat[k][c];
+  double ic[3][3];
+  inverse3(Jc, det3(Jc), ic);
+  double hk[4][8];
+  for (int k = 0; k < 8; ++k) {
+    const double xi = kNat[k][0], et = kNat[k][1], ze = kNat[k][2];
+    hk[0][k] = et * ze;
+    hk[1][k] = ze * xi;
+    hk[2][k] = xi * et;
+    hk[3][k] = xi * et * ze;
+    for (int a = 0; a < 3; ++a)
+      bc[k][a] = 0.125 * (ic[0][a] * kNat[k][0] + ic[1][a] * kNat[k][1] + ic[2][a] * kNat[k][2]);
+  }
+  double gam[4][8];
+  for (int m = 0; m < 4; ++m) {
+    double H[3] = {0, 0, 0};
+    for (int k = 0; k < 8; ++k)
+      for (int a = 0; a < 3; ++a) H[a] += hk[m][k] * x[k][a];
+    for (int k = 0; k < 8; ++k) gam[m][k] = 0.125 * (hk[m][k] - dot3(bc[k], H));
+  }
+  const double q = 1.0 / std::sqrt(3.0);
+  for (int p = 0; p < 8; ++p) {
+    const double xi = q * kNat[p][0], et = q * kNat[p][1], ze = q * kNat[p][2];
+    const double dh[4][3] = {{0, ze, et}, {ze, 0, xi}, {et, xi, 0}, {et * ze, xi * ze, xi * et}};
+    for (int m = 0; m < 4; ++m) {
+      double g[3];
+      for (int a = 0; a < 3; ++a)
+        g[a] = ji[p][0][a] * dh[m][0] + ji[p][1][a] * dh[m][1] + ji[p][2][a] * dh[m][2];
+      for (int k = 0; k < 8; ++k)
+        for (int a = 0; a < 3; ++a) hg[p][m][k][a] = gam[m][k] * g[a];
+    }
+  }
+}
+
+// Isolid 14 (S8Z, assumed strain after Belytschko and Bindeman's ASQBI), in the co-rotational frame:
+//   shear dv_a/dx_c keeps, of the four hourglass modes, only those whose gradient along c does not vary in
+//   the a-c plane of a bent element: {h1, h2} for xy, {h1, h3} for xz, {h2, h3} for yz (bending modes h3, h2,
+//   h1 and the warping h4 give no parasitic shear); normal strains (coupled, Icpre != 1): eps_bb += -nub
+//   gamma_m.v_a dh_m/dx_a - nu sum_{n in {a, 4}} gamma_n.v_a dh_n/dx_a for a != b, m the bending mode of the
+//   a-b plane (h3 xy, h2 xz, h1 yz), n = the mode free of a's natural coordinate (h1 for x, h2 for y, h3 for
+//   z) and h4, nub = nu / (1 - nu): a bending mode then carries the plane-strain Poisson contraction instead
+//   of locking.
+void asqbi_operator(const double b[8][8][3], const double hg[8][4][8][3], const double bc[8][3], double nu,
+                    bool coupled, PointOperator& op) {
+  constexpr int kPlaneMode[3][3] = {{-1, 2, 1}, {2, -1, 0}, {1, 0, -1}};  // bending mode of plane (a, c)
+  const double nub = nu / (1.0 - nu);
+  for (int p = 0; p < 8; ++p)
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c) {
+        if (a == c) continue;
+        const int drop = kPlaneMode[a][c];  // the two kept modes are the other two of h1..h3
+        for (int k = 0; k < 8; ++k) {
+          double g = bc[k][c];
+          for (int m = 0; m < 3; ++m)
+            if (m != drop) g += hg[p][m][k][c];
+          op.bs[p][a][c][k] = g;
+          // coupling: source component a (velocity), target normal strain c
+          op.cp[p][a][c][k] =
+              coupled ? -nub * hg[p][drop][k][a] - nu * (hg[p][a][k][a] + hg[p][3][k][a]) : 0.0;
+        }
+      }
+  (void)b;
+}
+
+// Isolid 18 (S8E with its shear selection, Icpre 0 or 2), in the co-rotational frame:
+//   shear dv_a/dx_c at point p = the plain mean of the full gradient over the four points sharing p's natural
+//   coordinate xi for the pair xy, zeta for xz, eta for yz;
+//   normal strains: with S_ac,k = that mean minus the centre gradient bc_k,a (the hourglass part kept by the
+//   pair (a, c)) and R_a,k = b_pk,a - bc_k,a - sum_{c != a} S_ac,k (the rest), eps_bb += sum_k (-nub S_at,k -
+//   nu R_a,k) v_k,a for a != b, t the third axis.
+constexpr int kPairDir[3][3] = {{-1, 0, 2}, {0, -1, 1}, {2, 1, -1}};  // natural direction of the pair's sets
+void select_operator(const double b[8][8][3], const double bc[8][3], double nu, PointOperator& op) {
+  const double nub = nu / (1.0 - nu);
+  for (int p = 0; p < 8; ++p)
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c) {
+        if (a == c) continue;
+        const int dir = kPairDir[a][c];
+        for (int k = 0; k < 8; ++k) {
+          double g = 0;
+          for (int q = 0; q < 8; ++q)
+            if (side(q, dir) == side(p, dir)) g += 0.25 * b[q][k][c];
+          op.bs[p][a][c][k] = g;
+        }
+      }
+  for (int p = 0; p < 8; ++p)
+    for (int a = 0; a < 3; ++a)
+      for (int k = 0; k < 8; ++k) {
+        // S_ac for the two c != a is bs[p][c][a] (the x-gradient of the pair is the same for v_c)
+        const int c1 = (a + 1) % 3, c2 = (a + 2) % 3;
+        const double s1 = op.bs[p][c1][a][k] - bc[k][a], s2 = op.bs[p][c2][a][k] - bc[k][a];
+        const double rest = nu * (b[p][k][a] - bc[k][a] - s1 - s2);
+        op.cp[p][a][c1][k] = -nub * s2 - rest;  // target c1: third axis c2
+        op.cp[p][a][c2][k] = -nub * s1 - rest;
+        op.cp[p][a][a][k] = 0.0;
+      }
+}
+
+void plain_operator(const double b[8][8][3], PointOperator& op) {
+  for (int p = 0; p < 8; ++p)
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 8; ++k) {
+          op.bs[p][a][c][k] = b[p][k][c];
+          op.cp[p][a][c][k] = 0.0;
+        }
+}
+
+}  // namespace
+
+void resolve_full_brick(const model::SolidProperty& prop, const MaterialParams& mat, BrickGroup& g) {
+  const int isolid = prop.isolid;
+  if (isolid != 12 && isolid != 14 && isolid != 17 && isolid != 18) return;
+  g.n_points = 8;
+  g.allocate_points();
+  const int asked = prop.icpre == 3 ? -3 : prop.icpre;  // 3: explicitly off
+  switch (isolid) {
+    case 14:  // HA8 (S8Z): co-rotational imposed, Icpre as given (default 0), assumed strain; Poisson
+              // coupling unless Icpre = 1; S8Z's time step
+      g.corot = true;
+      g.icpre = asked > 0 ? asked : 0;
+      g.strain = BrickGroup::FullStrain::Asqbi;
+      g.coupled = g.icpre != 1;
+      g.dt_points = true;
+      break;
+    case 17:  // H8C (S8E): the deck's frame, Icpre 0 -> 1 (constant pressure), 3 -> 0; plain strain
+      g.corot = prop.iframe == 2;
+      g.icpre = asked == 0 ? 1 : (asked > 0 ? asked : 0);
+      g.dt_points = true;
+      break;
+    case 18:  // H8D: runs as 17 (S8E), co-rotational, Icpre chosen by the law unless given; with Icpre 0 or 2
+              // the shear selection and Poisson coupling of S8E (its two integration layers flag), else plain
+      g.corot = true;
+      if (asked != 0) {
+        g.icpre = asked > 0 ? asked : 0;
+      } else if (mat.law == model::MaterialLaw::Elastic) {
+        g.icpre = mat.nu >= 0.49 ? 1 : 0;
+      } else {
+        g.icpre = 2;
+      }
+      if (g.icpre != 1) {
+        g.strain = BrickGroup::FullStrain::SelectShear;
+        g.coupled = true;
+      }
+      g.dt_points = true;
+      break;
+    default:  // 12: the deck's frame; density per element, so the pressure is constant over the element
+      g.corot = prop.iframe == 2;
+      g.icpre = 1;
+      break;
+  }
+}
+
+void hex8_full_point_volumes(const double x[8][3], double vp[8]) {
+  double b[8][8][3], ji[8][3][3];
+  point_gradients(x, vp, b, ji);
+}
+
+void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                      const CycleInfo& cyc) {
+  constexpr std::size_t G = kGroupSize;
+  constexpr std::size_t NP = 8;
+  const double dt1 = cyc.dt1;
+  const double c = mat.c_solid;
+  const double rho0 = mat.rho0;
+  const double qa2 = g.qa * g.qa;
+  const double qb = g.qb;
+  const bool const_p = g.icpre != 0;
+  const double alpha = mat.f_cut > 0 ? std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1) : 1.0;
+  const double inf = std::numeric_limits<double>::infinity();
+
+  const std::int32_t* conn = g.conn.data();
+  double* force = g.nodal_force.data();
+  auto sp = [&](std::size_t p, std::size_t m, std::size_t i) -> double& {
+    return g.sig_p[(p * 6 + m) * G + i];
+  };
+
+  const double nu = std::min(0.5, mat.nu);  // the material's Poisson ratio in the coupling terms, as S8Z/S8E
+  PointOperator op;                         // per element scratch, on the stack (no allocation in the loop)
+  double bc[8][3], hg[8][4][8][3];
+
+  const auto n = static_cast<std::size_t>(g.count);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double off = g.off[i];
+    if (off == 0.0) {
+      clear_nodal_forces<8, 3>(force, G, i);
+      g.dt[i] = inf;
+      g.k_nodal[i] = 0.0;
+      continue;
+    }
+    double xg[8][3], vg[8][3];
+    gather_element<8>(conn, G, i, nodes, xg, vg);
+    if (g.dt_fixed[i] > 0.0 && !g.small[i]) {  // /DT/BRICK/CST: freeze the geometry once (as hex8_fb.cpp)
+      for (std::size_t k = 0; k < 8; ++k)
+        for (std::size_t d = 0; d < 3; ++d) g.x_ref[(k * 3 + d) * G + i] = xg[k][d];
+      g.small[i] = 1;
+    }
+    if (g.small[i]) {
+      for (std::size_t k = 0; k < 8; ++k)
+        for (std::size_t d = 0; d < 3; ++d) xg[k][d] = g.x_ref[(k * 3 + d) * G + i];
+    }
+
+    // Frame and local coordinates.
+    double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    if (g.corot) corot_frame(xg, R);
+    double x[8][3], v[8][3];
+    for (int k = 0; k < 8; ++k)
+      for (int a = 0; a < 3; ++a) {
+        x[k][a] = R[a][0] * xg[k][0] + R[a][1] * xg[k][1] + R[a][2] * xg[k][2];
+        v[k][a] = R[a][0] * vg[k][0] + R[a][1] * vg[k][1] + R[a][2] * vg[k][2];
+      }
+
+    double vp[NP], b[NP][8][3], ji[NP][3][3];
+    if (!point_gradients(x, vp, b, ji)) {
+      clear_nodal_forces<8, 3>(force, G, i);
+      double bad = 0;
+      for (std::size_t p = 0; p < NP; ++p) bad = std::min(bad, vp[p]);
+      g.vol[i] = std::isnan(bad) ? bad : std::min(bad, 0.0);
+      g.dt[i] = 0.0;
+      g.k_nodal[i] = 0.0;
+      continue;
+    }
+    double vol = 0;
+    for (std::size_t p = 0; p < NP; ++p) vol += vp[p];
+
+    // The points' strain operator (the formulation's assumed strain), then the strain rates.
+    switch (g.strain) {
+      case BrickGroup::FullStrain::Plain: plain_operator(b, op); break;
+      case BrickGroup::FullStrain::Asqbi:
+        hourglass_parts(x, ji, bc, hg);
+        asqbi_operator(b, hg, bc, nu, g.coupled, op);
+        break;
+      case BrickGroup::FullStrain::SelectShear:
+        hourglass_parts(x, ji, bc, hg);
+        select_operator(b, bc, nu, op);
+        break;
+    }
+    double D[NP][6], W[NP][3], Dm[6] = {0, 0, 0, 0, 0, 0};
+    for (std::size_t p = 0; p < NP; ++p) {
+      double L[3][3] = {};  // plain velocity gradient, for the normal strains and the spin
+      for (int k = 0; k < 8; ++k)
+        for (int a = 0; a < 3; ++a)
+          for (int e = 0; e < 3; ++e) L[a][e] += v[k][a] * b[p][k][e];
+      double sh[3][3] = {};  // assumed dv_a/dx_c (a != c) and the coupling's normal strains (a == c)
+      for (int k = 0; k < 8; ++k)
+        for (int a = 0; a < 3; ++a)
+          for (int c = 0; c < 3; ++c) {
+            if (a == c) continue;
+            sh[a][c] += op.bs[p][a][c][k] * v[k][a];
+            if (g.coupled) sh[c][c] += op.cp[p][a][c][k] * v[k][a];
+          }
+      D[p][0] = L[0][0] + sh[0][0];
+      D[p][1] = L[1][1] + sh[1][1];
+      D[p][2] = L[2][2] + sh[2][2];
+      D[p][3] = sh[0][1] + sh[1][0];
+      D[p][4] = sh[1][2] + sh[2][1];
+      D[p][5] = sh[2][0] + sh[0][2];
+      W[p][0] = 0.5 * dt1 * (L[2][1] - L[1][2]);  // wx
+      W[p][1] = 0.5 * dt1 * (L[0][2] - L[2][0]);  // wy
+      W[p][2] = 0.5 * dt1 * (L[1][0] - L[0][1]);  // wz
+      // The coupling terms change the volume the strain sees, not the geometric one: the point's reference
+      // volume takes that part of the volumetric strain (V0_p <- V0_p (1 - dt1 tr), as S8Z and S8E do), so
+      // the pressure from mu = V0_p / V_p - 1 stays consistent with the strain.
+      if (g.coupled) g.vol0_p[p * G + i] *= 1.0 - dt1 * (sh[0][0] + sh[1][1] + sh[2][2]);
+    }
+    double vol0 = 0;
+    for (std::size_t p = 0; p < NP; ++p) vol0 += g.vol0_p[p * G + i];
+    for (std::size_t p = 0; p < NP; ++p)
+      for (int m = 0; m < 6; ++m) Dm[m] += vp[p] * D[p][m] / vol;
+
+    // Material per point.
+    const double rho = rho0 * vol0 / vol;
+    const double mu_el = vol0 / vol - 1.0;
+    const double e_rate = std::sqrt(Dm[0] * Dm[0] + Dm[1] * Dm[1] + Dm[2] * Dm[2] +
+                                    0.5 * (Dm[3] * Dm[3] + Dm[4] * Dm[4] + Dm[5] * Dm[5]));
+    const double rate = alpha * e_rate + (1.0 - alpha) * g.rate[i];
+    const double dvol = vol - g.vol[i];
+    const double vavg_ratio = (vol - 0.5 * dvol) / vol;
+    double sn[NP][6];
+    double work = 0, w_pl = 0, eps_mean = 0;
+    for (std::size_t p = 0; p < NP; ++p) {
+      double so[6];
+      for (std::size_t m = 0; m < 6; ++m) so[m] = sp(p, m, i);
+      if (!g.corot) {  // Jaumann rotation of the point's stress (3.2), old values on the right
+        const double wx = W[p][0], wy = W[p][1], wz = W[p][2];
+        const double s0[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
+        so[0] = s0[0] - 2.0 * s0[3] * wz + 2.0 * s0[5] * wy;
+        so[1] = s0[1] + 2.0 * s0[3] * wz - 2.0 * s0[4] * wx;
+        so[2] = s0[2] - 2.0 * s0[5] * wy + 2.0 * s0[4] * wx;
+        so[3] = s0[3] + wz * (s0[0] - s0[1]) + wy * s0[4] - wx * s0[5];
+        so[4] = s0[4] + wx * (s0[1] - s0[2]) + wz * s0[5] - wy * s0[3];
+        so[5] = s0[5] + wy * (s0[2] - s0[0]) + wx * s0[3] - wz * s0[4];
+      }
+      const double mu = const_p ? mu_el : g.vol0_p[p * G + i] / vp[p] - 1.0;
+      const double de[6] = {D[p][0] * dt1, D[p][1] * dt1, D[p][2] * dt1,
+                            D[p][3] * dt1, D[p][4] * dt1, D[p][5] * dt1};
+      for (std::size_t m = 0; m < 6; ++m) sn[p][m] = so[m];
+      double& ep = g.eps_p_p[p * G + i];
+      const double deps_p = solid_point_update(mat, rate, de, mu, sn[p], ep);
+      eps_mean += ep / 8.0;
+      double wp = 0;
+      for (std::size_t m = 0; m < 6; ++m) wp += (so[m] + sn[p][m]) * D[p][m];
+      work += 0.5 * dt1 * vp[p] * vavg_ratio * wp;
+      const double sm = (sn[p][0] + sn[p][1] + sn[p][2]) / 3.0;
+      const double svm =
+          std::sqrt(1.5 * ((sn[p][0] - sm) * (sn[p][0] - sm) + (sn[p][1] - sm) * (sn[p][1] - sm) +
+                           (sn[p][2] - sm) * (sn[p][2] - sm)) +
+                    3.0 * (sn[p][3] * sn[p][3] + sn[p][4] * sn[p][4] + sn[p][5] * sn[p][5]));
+      w_pl += svm * deps_p * vp[p];
+    }
+
+    // Bulk viscosity and step.
+    const double l = std::cbrt(vol);
+    const double ec = std::max(0.0, -(Dm[0] + Dm[1] + Dm[2]));
+    const double q_new = rho * ec * l * (qa2 * l * ec + qb * c);
+    // Characteristic length. S8Z and S8E: min over the points of 8 V_p / A_mid, A_mid the largest of the
+    // three mid-sections of the centre Jacobian (4 |g_a x g_b|); equal to V / max face area on a box, and
+    // shorter on a degenerate brick where a point's V_p shrinks. Otherwise the one-point V / max face area.
+    double len;
+    if (g.dt_points) {
+      double gc[3][3] = {};  // gc[c] = dx/dxi_c at the centre
+      for (int k = 0; k < 8; ++k)
+        for (int c = 0; c < 3; ++c)
+          for (int d = 0; d < 3; ++d) gc[c][d] += 0.125 * kNat[k][c] * x[k][d];
+      double amid = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        double n[3];
+        cross(gc[(c + 1) % 3], gc[(c + 2) % 3], n);
+        amid = std::max(amid, 4.0 * std::sqrt(dot3(n, n)));
+      }
+      double vmin = vp[0];
+      for (std::size_t p = 1; p < NP; ++p) vmin = std::min(vmin, vp[p]);
+      len = 8.0 * vmin / amid;
+    } else {
+      double area_max = 0.0;
+      for (const auto& f : kFaces) {
+        double d13[3], d24[3], nf[3];
+        for (int d = 0; d < 3; ++d) {
+          d13[d] = x[f[2]][d] - x[f[0]][d];
+          d24[d] = x[f[3]][d] - x[f[1]][d];
+        }
+        cross(d13, d24, nf);
+        area_max = std::max(area_max, dot3(nf, nf));
+      }
+      len = vol / (0.5 * std::sqrt(area_max));
+    }
+    const double qt = qb * c + qa2 * l * ec;
+    const double dt_e = len / (qt + std::sqrt(qt * qt + c * c));
+    const double de_int = work - 0.5 * dvol * (g.q[i] + q_new);
+
+    // Forces: the transpose of the strain operator, f_k,a = -sum_p V_p [(s_aa - q) b_pk,a
+    //   + sum_{c != a} ((s_cc - q) cp[p][a][c][k] + s_ac bs[p][a][c][k])].
+    double fl[8][3] = {};
+    double smean[6] = {0, 0, 0, 0, 0, 0};
+    for (std::size_t p = 0; p < NP; ++p) {
+      const double s[3][3] = {{sn[p][0] - q_new, sn[p][3], sn[p][5]},
+                              {sn[p][3], sn[p][1] - q_new, sn[p][4]},
+                              {sn[p][5], sn[p][4], sn[p][2] - q_new}};
+      for (int k = 0; k < 8; ++k)
+        for (int a = 0; a < 3; ++a) {
+          double t = s[a][a] * b[p][k][a];
+          for (int c = 0; c < 3; ++c) {
+            if (c == a) continue;
+            t += s[a][c] * op.bs[p][a][c][k];
+            if (g.coupled) t += s[c][c] * op.cp[p][a][c][k];
+          }
+          fl[k][a] -= vp[p] * t;
+        }
+      for (int m = 0; m < 6; ++m) smean[m] += vp[p] * sn[p][m] / vol;
+    }
+    double f[8][3];
+    for (int k = 0; k < 8; ++k)
+      for (int a = 0; a < 3; ++a) f[k][a] = R[0][a] * fl[k][0] + R[1][a] * fl[k][1] + R[2][a] * fl[k][2];
+    store_nodal_forces<8, 3>(force, G, i, off, f);
+
+    // Element output: the mean stress in global axes, sigma_g = R^T sigma_loc R.
+    const double S[3][3] = {
+        {smean[0], smean[3], smean[5]}, {smean[3], smean[1], smean[4]}, {smean[5], smean[4], smean[2]}};
+    double T[3][3] = {};
+    for (int a = 0; a < 3; ++a)
+      for (int e = 0; e < 3; ++e)
+        for (int r = 0; r < 3; ++r)
+          for (int t = 0; t < 3; ++t) T[a][e] += R[r][a] * S[r][t] * R[t][e];
+    const double out[6] = {T[0][0], T[1][1], T[2][2], T[0][1], T[1][2], T[2][0]};
+    for (std::size_t p = 0; p < NP; ++p)
+      for (std::size_t m = 0; m < 6; ++m) sp(p, m, i) = sn[p][m];
+    for (std::size_t m = 0; m < 6; ++m) g.sig[m * G + i] = out[m];
+    g.eps_p[i] = eps_mean;
+    g.vol[i] = vol;
+    g.rho[i] = rho;
+    g.q[i] = q_new;
+    g.rate[i] = rate;
+    g.e_int[i] += off * de_int;
+    g.w_plastic[i] += off * w_pl;
+    g.dt[i] = dt_e;
+    g.k_nodal[i] = 0.25 * rho * vol / (dt_e * dt_e);
+  }
+}
+
+}  // namespace radx::solver
