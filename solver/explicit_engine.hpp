@@ -147,6 +147,7 @@ class ExplicitEngine {
   Sensors sensors_;
   NodeState nodes_;
   std::vector<MaterialParams> materials_;
+  std::vector<std::vector<TabCurve>> material_curves_;  // law 36: what materials_[i].curves points to
   std::vector<ShellGroup> shells_;
   std::vector<BrickGroup> bricks_;
   std::size_t element_count_ = 0;
