@@ -310,7 +310,7 @@ TEST_CASE(
   CHECK(close(dp36, g3 * d / (g3 + 2.0 * h), 1e-9));
 }
 
-TEST_CASE("law 36 reader: curves, rates, defaults of Fcut and Fsmooth; FAIL/JOHNSON attached",
+TEST_CASE("law 36 reader: curves, rates, defaults of Fcut and Fsmooth, and FAIL/JOHNSON attached",
           "[law36][parser]") {
   using radx::test::begin_block;
   using radx::test::Line;
