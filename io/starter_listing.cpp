@@ -21,7 +21,12 @@ void heading(std::ostream& os, const char* title) {
 }
 
 std::string law_name(model::MaterialLaw l) {
-  return l == model::MaterialLaw::Elastic ? "LAW1 elastic" : "LAW2 Johnson-Cook";
+  switch (l) {
+    case model::MaterialLaw::Elastic: return "LAW1 elastic";
+    case model::MaterialLaw::JohnsonCook: return "LAW2 Johnson-Cook";
+    case model::MaterialLaw::PlasTab: return "LAW36 tabulated plasticity";
+  }
+  return "unknown law";
 }
 
 std::string inacti_text(int inacti) {
@@ -270,6 +275,24 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
         os << "    rhoCp " << mat.rho_cp
            << " given: adiabatic heating is not implemented in radx; the temperature "
            << "term stays 1\n";
+    }
+    if (mat.law == model::MaterialLaw::PlasTab) {
+      const auto& tab = mat.tab;
+      os << "    yield curves sigma_y(eps_p) per strain rate: " << tab.function_id.size() << "  EPS_p_max "
+         << mat.eps_p_max << "  Fsmooth " << tab.fsmooth << " ("
+         << (tab.fsmooth == 2 ? "logarithmic" : "linear") << " in the rate)  Fcut " << mat.f_cut << '\n';
+      for (std::size_t i = 0; i < tab.function_id.size(); ++i)
+        os << "      curve " << i + 1 << ": function " << tab.function_id[i] << "  scale " << tab.scale[i]
+           << "  strain rate " << tab.rate[i] << '\n';
+      if (tab.function_id.size() > 1 && tab.rate.front() != 0)
+        os << "      (below the first rate the first curve holds: it is repeated at rate 0)\n";
+    }
+    if (mat.fail_jc.on) {
+      const auto& f = mat.fail_jc;
+      os << "    /FAIL/JOHNSON: eps_f = (D1 + D2 exp(D3 sigma*))(1 + D4 ln(rate/rate0))(1 + D5 T*): D1 "
+         << f.d1 << "  D2 " << f.d2 << "  D3 " << f.d3 << "  D4 " << f.d4 << "  D5 " << f.d5 << "  rate0 "
+         << f.eps_dot_0 << "  EPSF_MIN " << f.eps_f_min << "  Ifail_sh " << f.ifail_sh << "  Ifail_so "
+         << f.ifail_so << '\n';
     }
   }
 

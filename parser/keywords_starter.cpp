@@ -13,7 +13,9 @@
 //   /DEF_SOLID are resolved by the model builder from the raw value.
 // * unused(): read and echoed, but radx does not act on it; a non-default value warns.
 #include <array>
+#include <string>
 #include <tuple>
+#include <vector>
 
 #include "parser/keyword_schema.hpp"
 
@@ -408,6 +410,144 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                  .dims(dim::heat_capacity_per_volume),
              R("T_r", 61, 80, "reference (initial) temperature (kelvin); 0 or less means 300").zero_is(300.0),
              R("T_max", 81, 100, "largest temperature (kelvin)").versions(2025).zero_is(1e20)}),
+    };
+    t.push_back(std::move(k));
+  }
+}
+
+// Names of the entries of /MAT/PLAS_TAB's curve lists: "fct_ID1" .. "fct_ID100", "Fscale1" .., "Eps_dot1" ..
+// The declarations hold string_views, so the names live as long as the keyword table (built once).
+constexpr int kPlasTabMaxCurves = 100;  // OpenRadioss hm_read_mat36.F refuses more
+std::string_view plas_tab_name(int list, int k) {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const char* base : {"fct_ID", "Fscale", "Eps_dot"})
+      for (int i = 1; i <= kPlasTabMaxCurves; ++i) v.push_back(base + std::to_string(i));
+    return v;
+  }();
+  return names[static_cast<std::size_t>(list * kPlasTabMaxCurves + k)];
+}
+
+// /MAT/PLAS_TAB's three lists (functions in 10-column cells, then scale factors and strain rates in
+// 20-column cells), 5 entries a line, as many lines as N_funct needs: line j is read when N_funct > 5 j.
+void add_plas_tab_lists(KeywordDecl& k) {
+  static const std::vector<std::string> card_names = [] {
+    std::vector<std::string> v;
+    for (const char* what : {"functions", "scale factors", "strain rates"})
+      for (int j = 0; j < kPlasTabMaxCurves / 5; ++j)
+        v.push_back(std::string(what) + " " + std::to_string(5 * j + 1) + "-" + std::to_string(5 * j + 5));
+    return v;
+  }();
+  for (int list = 0; list < 3; ++list) {
+    for (int j = 0; j < kPlasTabMaxCurves / 5; ++j) {
+      std::vector<FieldDecl> f;
+      for (int c = 0; c < 5; ++c) {
+        const int i = 5 * j + c;
+        if (list == 0) {
+          f.push_back(
+              I(plas_tab_name(0, i), 10 * c + 1, 10 * c + 10, "yield curve sigma_y(eps_p) of this rate")
+                  .refs(IdKind::Other));
+        } else if (list == 1) {
+          f.push_back(
+              R(plas_tab_name(1, i), 20 * c + 1, 20 * c + 20, "scale factor of that curve's ordinates")
+                  .zero_is(1.0)
+                  .dims(dim::pressure));
+        } else {
+          f.push_back(R(plas_tab_name(2, i), 20 * c + 1, 20 * c + 20, "strain rate of that curve")
+                          .ge(0.0)
+                          .dims(dim::rate));
+        }
+      }
+      k.cards.push_back(card_if(card_names[static_cast<std::size_t>(list * (kPlasTabMaxCurves / 5) + j)],
+                                when_gt("N_funct", 5 * j), std::move(f)));
+    }
+  }
+}
+
+void add_plas_tab_and_failure(std::vector<KeywordDecl>& t) {
+  {
+    KeywordDecl k = kw("/MAT/LAW36", "tabulated elasto-plastic material: yield curves per strain rate",
+                       Header::IdUnit, true, "mat_ID");
+    k.aliases = {"/MAT/PLAS_TAB"};
+    k.cards = {
+        card("card 1", {R("RHO_I", 1, 20, "initial density").must().gt(0.0).dims(dim::density),
+                        R("RHO_ref", 21, 40, "reference density; 0 takes RHO_I").dims(dim::density)}),
+        card("card 2",
+             {R("E", 1, 20, "Young's modulus").must().gt(0.0).dims(dim::pressure),
+              R("nu", 21, 40, "Poisson's ratio; exactly 0.5 is taken as 0.499"),
+              R("Eps_p_max", 41, 60, "plastic strain at which the element fails; 0 = never")
+                  .zero_is(1e20)
+                  .ge(0.0),
+              R("Eps_t", 61, 80, "tension failure: principal strain where the damage starts; 0 = none")
+                  .not_implemented(),
+              R("Eps_m", 81, 100, "tension failure: principal strain where the stress is zero; 0 = none")
+                  .not_implemented()}),
+        card(
+            "card 3",
+            {I("N_funct", 1, 10, "number of yield curves (strain rates), 1 to 100").must().ge(1).le(100),
+             I("Fsmooth", 11, 20, "strain-rate interpolation: 0 or 1 linear, 2 logarithmic").allow({0, 1, 2}),
+             R("Chard", 21, 40, "hardening mix: 0 isotropic to 1 kinematic")
+                 .ge(0.0)
+                 .le(1.0)
+                 .not_implemented(),
+             R("Fcut", 41, 60, "cut-off frequency of the strain-rate filter; 0 = 10 kHz with several curves")
+                 .ge(0.0)
+                 .dims(dim::rate),
+             R("Eps_f", 61, 80, "tension failure: principal strain where the element fails; 0 = none")
+                 .not_implemented(),
+             I("VP", 91, 100, "strain rate of the curves: 0 total, 1 plastic")
+                 .versions(2017)
+                 .allow({0, 1})
+                 .not_implemented()}),
+        card("card 4", {I("fct_IDp", 1, 10, "yield factor as a function of pressure; 0 = none")
+                            .refs(IdKind::Other)
+                            .not_implemented(),
+                        R("Fscale", 11, 30, "pressure scale of fct_IDp").dims(dim::pressure).unused(),
+                        I("Fct_IDE", 31, 40, "Young's modulus factor as a function of eps_p; 0 = none")
+                            .versions(120)
+                            .refs(IdKind::Other)
+                            .not_implemented(),
+                        R("EInf", 41, 60, "Young's modulus at large eps_p (with CE)")
+                            .versions(120)
+                            .dims(dim::pressure)
+                            .unused(),
+                        R("CE", 61, 80, "rate of the Young's modulus change with eps_p; 0 = constant E")
+                            .versions(120)
+                            .not_implemented()}),
+    };
+    add_plas_tab_lists(k);
+    t.push_back(std::move(k));
+  }
+  {
+    // The keyword line names the material the model is attached to: /FAIL/JOHNSON/mat_ID[/unit_ID].
+    KeywordDecl k = kw("/FAIL/JOHNSON", "Johnson-Cook failure model of a material (damage by plastic strain)",
+                       Header::IdUnit, false, "mat_ID");
+    k.id_kind = IdKind::Material;
+    k.cards = {
+        card("card 1", {R("D1", 1, 20, "failure strain: constant term"),
+                        R("D2", 21, 40, "failure strain: factor of the exponential"),
+                        R("D3", 41, 60, "failure strain: factor of the triaxiality in the exponential"),
+                        R("D4", 61, 80, "failure strain: factor of ln(rate / rate0)"),
+                        R("D5", 81, 100, "failure strain: factor of the temperature term")}),
+        card("card 2",
+             {R("Epsilon_Dot_0", 1, 20, "reference strain rate; 0 = 1e-20").ge(0.0).dims(dim::rate),
+              I("Ifail_sh", 21, 30, "shells: 1 deleted when one point fails, 2 when all fail")
+                  .zero_is(1)
+                  .allow({0, 1, 2}),
+              I("Ifail_so", 31, 40,
+                "solids: 1 deleted, 2 deviator zero, 3 deviator zero and no tension, 4 stress zero")
+                  .zero_is(1)
+                  .allow({0, 1, 2, 3, 4}),
+              R("EPSF_MIN", 41, 60, "lower bound of the failure strain").versions(2024).ge(0.0),
+              R("Dadv", 61, 80, "damage at which a crack advances (XFEM only)").versions(130).unused(),
+              I("Ixfem", 91, 100, "XFEM crack: 0 off, 1 multilayer, 2 monolayer")
+                  .versions(120)
+                  .allow({0, 1, 2})
+                  .not_implemented()}),
+        card_v("card 3", 2025, kLastVersion,
+               {I("FAILIP", 1, 10, "failed integration points that delete a shell; 0 = 1 (larger: refused)")
+                    .ge(0)}),
+        card("failure id", {I("fail_ID", 1, 10, "failure model id (optional)").refs(IdKind::Other)}),
     };
     t.push_back(std::move(k));
   }
@@ -1605,6 +1745,7 @@ const std::vector<KeywordDecl>& starter_keywords() {
     add_control_and_mesh(t);
     add_assembly(t);
     add_properties_and_materials(t);
+    add_plas_tab_and_failure(t);
     add_groups(t);
     add_contact(t);
     add_loads(t);
@@ -1624,10 +1765,10 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         // materials
         "/MAT/LAW0", "/MAT/VOID", "/MAT/LAW3", "/MAT/HYDPLA", "/MAT/LAW4", "/MAT/HYD_JCOOK", "/MAT/LAW6",
         "/MAT/HYDRO", "/MAT/LAW10", "/MAT/LAW19", "/MAT/FABRI", "/MAT/LAW25", "/MAT/COMPSH", "/MAT/LAW27",
-        "/MAT/PLAS_BRIT", "/MAT/LAW32", "/MAT/HILL", "/MAT/LAW34", "/MAT/BOLTZMAN", "/MAT/LAW36",
-        "/MAT/PLAS_TAB", "/MAT/LAW42", "/MAT/OGDEN", "/MAT/LAW44", "/MAT/COWPER", "/MAT/LAW57",
-        "/MAT/BARLAT3", "/MAT/LAW58", "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW70",
-        "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90", "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO", "/MAT/USER",
+        "/MAT/PLAS_BRIT", "/MAT/LAW32", "/MAT/HILL", "/MAT/LAW34", "/MAT/BOLTZMAN", "/MAT/LAW42",
+        "/MAT/OGDEN", "/MAT/LAW44", "/MAT/COWPER", "/MAT/LAW57", "/MAT/BARLAT3", "/MAT/LAW58", "/MAT/LAW62",
+        "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW70", "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90",
+        "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO", "/MAT/USER",
         // properties
         "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE2", "/PROP/TRUSS", "/PROP/TYPE3", "/PROP/BEAM", "/PROP/TYPE4",
         "/PROP/SPRING", "/PROP/TYPE8", "/PROP/TYPE9", "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP",

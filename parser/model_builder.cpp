@@ -144,12 +144,14 @@ void ModelBuilder::build_materials() {
     const auto path = r.decl->path;
     const bool law1 = path == "/MAT/LAW1";
     const bool law2 = path == "/MAT/LAW2";
-    if (!law1 && !law2) continue;
+    const bool law36 = path == "/MAT/LAW36";
+    if (!law1 && !law2 && !law36) continue;
     model::Material mat;
     mat.id = r.id;
     mat.title = r.title;
     mat.keyword = r.written.substr(0, r.written.find_last_of('/'));
-    mat.law = law1 ? model::MaterialLaw::Elastic : model::MaterialLaw::JohnsonCook;
+    mat.law = law1 ? model::MaterialLaw::Elastic
+                   : (law2 ? model::MaterialLaw::JohnsonCook : model::MaterialLaw::PlasTab);
     mat.rho = r.get_real("RHO_I");
     mat.rho_ref = r.get_real("RHO_ref");
     if (mat.rho_ref == 0) mat.rho_ref = mat.rho;
@@ -261,8 +263,121 @@ void ModelBuilder::build_materials() {
       mat.t_max = r.get_real("T_max");
       if (mat.t_max == 0) mat.t_max = 1e20;
     }
+    if (law36) read_plas_tab(r, mat);
     if (register_id(mat_ids_, mat.id, static_cast<std::int32_t>(m_.materials.size()), r, "material", first))
       m_.materials.push_back(std::move(mat));
+  }
+  build_failure_models();
+}
+
+// /MAT/PLAS_TAB (law 36), read as OpenRadioss hm_read_mat36.F does: one curve keeps no rate effect (Fsmooth,
+// Fcut and VP are set to 0); several curves need strictly increasing rates, and Fcut 0 means 10 kHz. The
+// function ids are resolved once the functions are built (resolve_plas_tab_functions).
+void ModelBuilder::read_plas_tab(const KeywordRecord& r, model::Material& mat) {
+  mat.eps_p_max = r.get_real("Eps_p_max");  // 0 -> 1e20 by the field's rule
+  mat.f_cut = r.get_real("Fcut");
+  auto& tab = mat.tab;
+  tab.fsmooth = static_cast<int>(r.get_int("Fsmooth"));
+  tab.vp = static_cast<int>(r.get_int("VP"));
+  const auto n = static_cast<int>(std::clamp<std::int64_t>(r.get_int("N_funct"), 0, 100));
+  for (int i = 0; i < n; ++i) {
+    const std::string k = std::to_string(i + 1);
+    const std::string fid = "fct_ID" + k, fs = "Fscale" + k, rate = "Eps_dot" + k;
+    tab.function_id.push_back(r.get_int(fid));
+    tab.function.push_back(model::kNone);
+    tab.scale.push_back(r.get_real(fs));  // 0 -> 1 by the field's rule
+    tab.rate.push_back(r.get_real(rate));
+    if (tab.function_id.back() <= 0)
+      error_at(r, fid, Diag::RequiredIdMissing,
+               "yield curve " + k + " of " + std::to_string(n) + " (N_funct): " + fid + " = " +
+                   std::to_string(tab.function_id.back()) + "; each curve needs the id of a /FUNCT");
+    if (tab.scale.back() < 0)
+      error_at(r, fs, Diag::ValueOutOfRange,
+               fs + " = " + num(tab.scale.back()) + " is negative: a yield curve's scale factor must be > 0");
+    if (i > 0 && !(tab.rate[static_cast<std::size_t>(i)] > tab.rate[static_cast<std::size_t>(i - 1)]))
+      error_at(r, rate, Diag::InconsistentValues,
+               "strain rates must be strictly increasing: Eps_dot" + std::to_string(i) + " = " +
+                   num(tab.rate[static_cast<std::size_t>(i - 1)]) + ", " + rate + " = " +
+                   num(tab.rate[static_cast<std::size_t>(i)]));
+  }
+  if (n == 1) {
+    // A single (static) curve: no rate effect, no filter (OpenRadioss sets them so).
+    tab.fsmooth = 0;
+    tab.vp = 0;
+    mat.f_cut = 0;
+  } else if (mat.f_cut == 0) {
+    mat.f_cut = 1e4 * deck_.work_units.time;  // 10 kHz in work units (one work time unit is `time` s)
+  }
+}
+
+void ModelBuilder::resolve_plas_tab_functions() {
+  for (const auto& r : deck_.records) {
+    if (r.decl->path != "/MAT/LAW36") continue;
+    const auto it = mat_ids_.find(r.id);
+    if (it == mat_ids_.end()) continue;
+    auto& mat = m_.materials[static_cast<std::size_t>(it->second)];
+    if (mat.law != model::MaterialLaw::PlasTab || mat.title != r.title) continue;  // a duplicate id
+    for (std::size_t i = 0; i < mat.tab.function_id.size(); ++i) {
+      if (mat.tab.function_id[i] <= 0) continue;  // reported by read_plas_tab
+      mat.tab.function[i] =
+          ref(funct_ids_, r, "fct_ID" + std::to_string(i + 1), "yield curve", "/FUNCT", false);
+    }
+  }
+}
+
+// /FAIL/JOHNSON/mat_ID: attached to its material (law 2 or 36), at most one per material. Defaults of
+// OpenRadioss hm_read_fail_johnson.F: Epsilon_Dot_0 0 -> 1e-20, Ifail_sh and Ifail_so 0 -> 1.
+void ModelBuilder::build_failure_models() {
+  for (const auto* rp : deck_.of("/FAIL/JOHNSON")) {
+    const auto& r = *rp;
+    const auto it = mat_ids_.find(r.id);
+    if (it == mat_ids_.end()) {
+      diags_.error(Diag::MissingReference, at(r.pos), about(r),
+                   "/FAIL/JOHNSON names material " + std::to_string(r.id) +
+                       ", which does not exist; the id on the keyword line is the material's");
+      continue;
+    }
+    auto& mat = m_.materials[static_cast<std::size_t>(it->second)];
+    if (mat.law != model::MaterialLaw::JohnsonCook && mat.law != model::MaterialLaw::PlasTab) {
+      diags_.error(Diag::PhysicsNotImplemented, at(r.pos), about(r),
+                   "/FAIL/JOHNSON on material " + std::to_string(r.id) + " (" + mat.keyword +
+                       "): radx implements it on /MAT/PLAS_JOHNS (law 2) and /MAT/PLAS_TAB (law 36) only");
+      continue;
+    }
+    if (mat.fail_jc.on) {
+      diags_.error(Diag::DuplicateId, at(r.pos), about(r),
+                   "material " + std::to_string(r.id) +
+                       " already has a /FAIL/JOHNSON; radx takes one failure model per material");
+      continue;
+    }
+    if (r.get_int("FAILIP") > 1)
+      error_at(r, "FAILIP", Diag::PhysicsNotImplemented,
+               "FAILIP = " + std::to_string(r.get_int("FAILIP")) +
+                   " is not implemented: radx deletes a shell by Ifail_sh (FAILIP 0 or 1)");
+    auto& f = mat.fail_jc;
+    f.on = true;
+    f.fail_id = r.get_int("fail_ID");
+    f.d1 = r.get_real("D1");
+    f.d2 = r.get_real("D2");
+    f.d3 = r.get_real("D3");
+    f.d4 = r.get_real("D4");
+    f.d5 = r.get_real("D5");
+    f.eps_dot_0 = r.get_real("Epsilon_Dot_0");
+    if (f.eps_dot_0 == 0) f.eps_dot_0 = 1e-20;
+    f.eps_f_min = r.get_real("EPSF_MIN");
+    f.dadv = r.get_real("Dadv");
+    if (f.dadv == 0 || f.dadv > 1) f.dadv = 1;
+    f.ifail_sh = static_cast<int>(r.get_int("Ifail_sh"));
+    f.ifail_so = static_cast<int>(r.get_int("Ifail_so"));
+    if (f.d5 != 0)
+      warning_at(
+          r, "D5", Diag::DefaultApplied,
+          "D5 = " + num(f.d5) + " multiplies the temperature term T*, which is 0 in radx (no heating)");
+    // eps_f at triaxiality 1 (OpenRadioss checks this too): a criterion that is never positive fails at once.
+    if (f.d1 + f.d2 * std::exp(f.d3) <= 0 && f.eps_f_min <= 0)
+      warning_at(r, "D1", Diag::ImplausibleMaterial,
+                 "the failure strain D1 + D2 exp(D3 sigma*) is <= 0 at triaxiality 1: points in tension do "
+                 "not accumulate damage there (radx adds d_eps_p / eps_f only for eps_f > 0)");
   }
 }
 
@@ -706,6 +821,7 @@ model::Model ModelBuilder::build() {
   build_boxes();
   build_functions();
   move_functions();
+  resolve_plas_tab_functions();
   build_element_groups();  // before surfaces and node groups, which are built from element groups
   build_surfaces();        // before the groups: /GRNOD/SURF takes the nodes of surfaces
   build_groups();

@@ -47,6 +47,9 @@ class ModelBuilder {
   // -- steps
   void build_nodes();
   void build_materials();
+  void read_plas_tab(const KeywordRecord& r, model::Material& mat);  // /MAT/PLAS_TAB's cards
+  void build_failure_models();                                       // /FAIL/JOHNSON, after the materials
+  void resolve_plas_tab_functions();                                 // after the functions
   void build_properties();
   void build_subsets_and_parts();
   void build_elements();

@@ -171,6 +171,42 @@ def mat_law2(v):
     return [c1, card(c2), card(reals("a", "b", "n", "EPS_p_max", "SIG_max0")), card(c4), card(c5)]
 
 
+def mat_law36(v):
+    """/MAT/PLAS_TAB: VP at 91-100 from 2017, Fct_IDE, EInf, CE from 120; then the N_funct function ids (10
+    columns), scale factors and strain rates (20 columns), 5 a line, as many lines as N_funct needs."""
+    c3 = [F("N_funct", "I", 1, 10), F("Fsmooth", "I", 11, 20)] + [
+        F(n, "R", a, b) for n, a, b in (("Chard", 21, 40), ("Fcut", 41, 60), ("Eps_f", 61, 80))]
+    if v >= 2017:
+        c3.append(F("VP", "I", 91, 100))
+    c4 = [F("fct_IDp", "I", 1, 10), F("Fscale", "R", 11, 30)]
+    if v >= 120:
+        c4 += [F("Fct_IDE", "I", 31, 40), F("EInf", "R", 41, 60), F("CE", "R", 61, 80)]
+    cards = [card(reals("RHO_I", "RHO_ref")), card(reals("E", "nu", "Eps_p_max", "Eps_t", "Eps_m")), card(c3),
+             card(c4)]
+    for base, kind, width in (("fct_ID", "I", 10), ("Fscale", "R", 20), ("Eps_dot", "R", 20)):
+        for j in range(20):
+            fields = [F("%s%d" % (base, 5 * j + c + 1), kind, width * c + 1, width * (c + 1)) for c in range(5)]
+            cards.append(card(fields, cond=lambda x, j=j: x.get("N_funct", 0) > 5 * j))
+    return cards
+
+
+def fail_johnson(v):
+    """/FAIL/JOHNSON/mat_ID (no title): EPSF_MIN from 2024, Dadv from 130, Ixfem from 120, FAILIP from 2025, then
+    the optional fail_ID card."""
+    c2 = [F("Epsilon_Dot_0", "R", 1, 20), F("Ifail_sh", "I", 21, 30), F("Ifail_so", "I", 31, 40)]
+    if v >= 2024:
+        c2.append(F("EPSF_MIN", "R", 41, 60))
+    if v >= 130:
+        c2.append(F("Dadv", "R", 61, 80))
+    if v >= 120:
+        c2.append(F("Ixfem", "I", 91, 100))
+    cards = [card(reals("D1", "D2", "D3", "D4", "D5")), card(c2)]
+    if v >= 2025:
+        cards.append(card([F("FAILIP", "I", 1, 10)], optional=True))
+    cards.append(card([F("fail_ID", "I", 1, 10)], optional=True))
+    return cards
+
+
 def ibc_fields():
     return [F("IBCX", "I", 8, 8), F("IBCY", "I", 9, 9), F("IBCZ", "I", 10, 10)]
 
@@ -486,6 +522,9 @@ STARTER = {
     "/MAT/LAW2": ("id", True, mat_law2, None, None),
     "/MAT/PLAS_JOHNS": ("id", True, mat_law2, None, None),
     "/MAT/LAW02": ("id", True, mat_law2, None, None),
+    "/MAT/LAW36": ("id", True, mat_law36, None, None),
+    "/MAT/PLAS_TAB": ("id", True, mat_law36, None, None),
+    "/FAIL/JOHNSON": ("id", False, fail_johnson, None, None),
     "/GRNOD/NODE": ("id", True, lambda v: [], "ids", ID_REC),
     "/GRNOD/PART": ("id", True, lambda v: [], "ids", ID_REC),
     "/GRNOD/GRNOD": ("id", True, lambda v: [], "ids", ID_REC),
@@ -1133,7 +1172,8 @@ def semantic(ck, m):
 
     parts = by_id(("/PART",), "part")
     props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14"), "property")
-    mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02"), "material")
+    mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02",
+                  "/MAT/LAW36", "/MAT/PLAS_TAB"), "material")
     grnods = by_id(tuple(k for k in STARTER if k.startswith("/GRNOD/")), "node group")
     surfs = by_id(tuple(k for k in STARTER if k.startswith("/SURF/")), "surface")
 
@@ -1409,6 +1449,39 @@ def semantic(ck, m):
             return
         if x not in table:
             I("RX402", p[0], p[1], "%s %d: %s %d does not exist" % (o["path"], o["id"], what, x))
+
+    # /MAT/PLAS_TAB: each curve names a function, rates strictly increase, scales >= 0; the options radx does not
+    # implement are refused (keywords_starter.cpp, model_builder.cpp read_plas_tab)
+    for o in mats.values():
+        if o["path"] not in ("/MAT/LAW36", "/MAT/PLAS_TAB"):
+            continue
+        n = val(o, "N_funct", 0)
+        for k in range(1, min(n, 100) + 1):
+            need(o, "fct_ID%d" % k, functs, "function", zero_ok=False)
+            if val(o, "Fscale%d" % k, 0.0) < 0:
+                p = pos(o, "Fscale%d" % k)
+                I("RX501", p[0], p[1], "%s %d: Fscale%d < 0" % (o["path"], o["id"], k))
+            if k > 1 and not val(o, "Eps_dot%d" % k, 0.0) > val(o, "Eps_dot%d" % (k - 1), 0.0):
+                p = pos(o, "Eps_dot%d" % k)
+                I("RX507", p[0], p[1], "%s %d: strain rates not increasing" % (o["path"], o["id"]))
+        for name in ("Eps_t", "Eps_m", "Chard", "Eps_f", "VP", "fct_IDp", "Fct_IDE", "CE"):
+            if val(o, name, 0) not in (0, 0.0):
+                p = pos(o, name)
+                I("RX510", p[0], p[1], "%s %d: %s not implemented by radx" % (o["path"], o["id"], name))
+    # /FAIL/JOHNSON/mat_ID: on an existing LAW2 or LAW36 material, one per material
+    failed_mats = set()
+    for o in m.of("/FAIL/JOHNSON"):
+        mat = mats.get(o["id"])
+        if mat is None:
+            I("RX402", o["pos"][0], o["pos"][1], "/FAIL/JOHNSON: material %d does not exist" % o["id"])
+        elif mat["path"] not in ("/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02", "/MAT/LAW36", "/MAT/PLAS_TAB"):
+            I("RX510", o["pos"][0], o["pos"][1], "/FAIL/JOHNSON on %s %d" % (mat["path"], o["id"]))
+        elif o["id"] in failed_mats:
+            I("RX401", o["pos"][0], o["pos"][1], "/FAIL/JOHNSON: material %d has one already" % o["id"])
+        failed_mats.add(o["id"])
+        if val(o, "Ixfem", 0) != 0:
+            p = pos(o, "Ixfem")
+            I("RX510", p[0], p[1], "/FAIL/JOHNSON %d: Ixfem not implemented by radx" % o["id"])
 
     for o in m.of("/BCS"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)

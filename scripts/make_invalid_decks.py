@@ -287,23 +287,16 @@ def _():
     return d, "/FOOBAR/1 is not a keyword (its block is skipped)", [("RX301", "BAD_KW")]
 
 
-@fault("unsupported_keyword_law36")
+@fault("unsupported_keyword_law44")
 def _():
     d = base()
-    rows = [("/MAT/LAW36/3", "L36_KW"), "Tabulated steel (not supported by radx)"] + foreign(
+    rows = [("/MAT/LAW44/3", "L44_KW"), "Cowper-Symonds steel (not supported by radx)"] + foreign(
         (rc.Card(rc.r("RHO_I"), rc.r("RHO_ref")), [7.85e-9]),
-        (rc.Card(rc.r("E"), rc.r("nu"), rc.r("Eps_p_max"), rc.r("Eps_t"), rc.r("Eps_m")),
-         [210000.0, 0.3, 0.0, 0.0, 0.0]),
-        (rc.Card(rc.i("N_funct"), rc.i("F_smooth"), rc.r("C_hard"), rc.r("F_cut"), rc.r("Eps_f"), rc.gap(10),
-                 rc.i("VP")), [1, 0, 0.0, 0.0, 0.0, None, 0]),
-        (rc.Card(rc.i("fct_IDp"), rc.r("Fscale"), rc.i("Fct_IDE"), rc.r("EInf"), rc.r("CE")), [0, 0.0, 0, 0.0, 0.0]),
-        (rc.Card(rc.i("fct_ID1")), [1]),
-        (rc.Card(rc.r("Fscale1")), [1.0]),
-        (rc.Card(rc.r("Eps_dot1")), [0.0]))
-    rows += funct_rows(1, [(0.0, 250.0), (0.1, 350.0), (1.0, 600.0)], "Yield stress vs plastic strain")
+        (rc.Card(rc.r("E"), rc.r("nu")), [210000.0, 0.3]),
+        (rc.Card(rc.r("a"), rc.r("b"), rc.r("n"), rc.r("EPS_p_max"), rc.r("SIG_max0")), [250.0, 450.0, 0.3, 0.0, 0.0]),
+        (rc.Card(rc.r("c"), rc.r("p"), rc.i("ICC"), rc.i("Fsmooth"), rc.r("F_cut")), [40.0, 5.0, 0, 0, 0.0]))
     d.insert_before("AFTER_MATS", rows)
-    return d, "/MAT/LAW36/3 (with the /FUNCT/1 it names) is a real Radioss keyword radx does not read", \
-        [("RX302", "L36_KW")]
+    return d, "/MAT/LAW44/3 is a real Radioss keyword radx does not read", [("RX302", "L44_KW")]
 
 
 @fault("include_loop_a")
@@ -570,6 +563,52 @@ def _():
     d = base()
     d.update("JC", n=1.5)
     return d, "/MAT/PLAS_JOHNS/1 hardening exponent n = 1.5 (must be <= 1)", [("RX501", "JC.n")]
+
+
+def plas_tab(n=1, fids=(7,), scales=(1.0,), rates=(0.0,), **kw):
+    """/MAT/PLAS_TAB/3 (tag TAB, curves on /FUNCT/7) and its function, before AFTER_MATS; no part uses it."""
+    values = dict(RHO_I=7.85e-9, E=210000.0, nu=0.3, N_funct=n, **kw)
+    for k in range(n):
+        values["fct_ID%d" % (k + 1)] = fids[k]
+        values["Fscale%d" % (k + 1)] = scales[k]
+        values["Eps_dot%d" % (k + 1)] = rates[k]
+    return (block("TAB", "/MAT/PLAS_TAB", 3, "Steel (tabulated)", **values) +
+            funct_rows(7, [(0.0, 250.0), (1.0, 700.0)], "Yield curve", tag="F7"))
+
+
+@fault("plas_tab_missing_function")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", plas_tab(fids=(99,)))
+    return d, "/MAT/PLAS_TAB/3 fct_ID1 = 99 names no /FUNCT", [("RX402", "TAB.fct_ID1")]
+
+
+@fault("plas_tab_rates_decreasing")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", plas_tab(n=2, fids=(7, 7), scales=(1.0, 1.2), rates=(100.0, 50.0)))
+    return d, "/MAT/PLAS_TAB/3 strain rates 100 then 50 (must increase)", [("RX507", "TAB.Eps_dot2")]
+
+
+@fault("plas_tab_plastic_rate")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", plas_tab(VP=1))
+    return d, "/MAT/PLAS_TAB/3 VP = 1 (plastic strain rate, not implemented)", [("RX510", "TAB.VP")]
+
+
+@fault("fail_johnson_on_elastic")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", block("FJ", "/FAIL/JOHNSON", 2, D1=0.1, D2=0.2, D3=-1.5))
+    return d, "/FAIL/JOHNSON/2 on the elastic /MAT/LAW1/2 (radx: laws 2 and 36 only)", [("RX510", "FJ_KW")]
+
+
+@fault("fail_johnson_twice")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", block("FJA", "/FAIL/JOHNSON", 1, D1=0.1) + block("FJB", "/FAIL/JOHNSON", 1, D1=0.2))
+    return d, "two /FAIL/JOHNSON on /MAT/PLAS_JOHNS/1", [("RX401", "FJB_KW")]
 
 
 @fault("funct_not_increasing")

@@ -217,6 +217,20 @@ LAYOUTS = {
              when=lambda v: _int(v.get("Iflag")) == 1),
         Card(r("c"), r("EPS_DOT_0"), i("ICC"), i("Fsmooth"), r("F_cut"), r("Chard", since=100)),
         Card(r("m"), r("T_melt"), r("rhoC_p"), r("T_r"), r("T_max", since=2025))),
+    "/MAT/PLAS_TAB": Layout(
+        Card(r("RHO_I"), r("RHO_ref")),
+        Card(r("E"), r("nu"), r("Eps_p_max"), r("Eps_t"), r("Eps_m")),
+        Card(i("N_funct"), i("Fsmooth"), r("Chard"), r("Fcut"), r("Eps_f"), i("VP", col=91, since=2017)),
+        Card(i("fct_IDp"), r("Fscale"), i("Fct_IDE", since=120), r("EInf", since=120), r("CE", since=120)),
+        *[Card(*[(i if base == "fct_ID" else r)("%s%d" % (base, 5 * j + c + 1)) for c in range(5)],
+               when=lambda v, j=j: _int(v.get("N_funct")) > 5 * j)
+          for base in ("fct_ID", "Fscale", "Eps_dot") for j in range(4)]),
+    "/FAIL/JOHNSON": Layout(
+        Card(r("D1"), r("D2"), r("D3"), r("D4"), r("D5")),
+        Card(r("Epsilon_Dot_0"), i("Ifail_sh"), i("Ifail_so"), r("EPSF_MIN", since=2024), r("Dadv", col=61, since=130),
+             i("Ixfem", col=91, since=120)),
+        Card(i("FAILIP"), since=2025),
+        title=False),
     # --- groups and surfaces (id lists)
     "/GRNOD/NODE": Layout(ids=ID10("node_ID")),
     "/GRNOD/PART": Layout(ids=ID10("part_ID")),

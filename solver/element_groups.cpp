@@ -19,6 +19,7 @@ void ShellGroup::allocate(int n, int points, int gauss_points, int hg_rows) {
   // N = 0 (resultant elasticity) keeps 5 force and 3 moment resultants.
   sig.assign(ng * (points > 0 ? np * 5 : 8) * G, 0.0);
   eps_p.assign(ng * np * G, 0.0);
+  dmg.assign(ng * np * G, 0.0);
   hg.assign(static_cast<std::size_t>(hg_rows) * G, 0.0);
   nodal_force.assign(4 * 6 * G, 0.0);
 }
@@ -28,7 +29,8 @@ void BrickGroup::allocate(int n) {
   const auto G = static_cast<std::size_t>(kGroupSize);
   conn.assign(8 * G, 0);
   element.assign(G, -1);
-  for (auto* v : {&vol0, &vol, &rho, &eps_p, &q, &e_int, &e_hg, &w_plastic, &rate, &dt, &dt_fixed, &k_nodal})
+  for (auto* v :
+       {&vol0, &vol, &rho, &eps_p, &dmg, &q, &e_int, &e_hg, &w_plastic, &rate, &dt, &dt_fixed, &k_nodal})
     v->assign(G, 0.0);
   off.assign(G, 1.0);
   sig.assign(6 * G, 0.0);

@@ -28,6 +28,7 @@ struct ShellProps {
   int n_points = 3;  // through-thickness points, >= 1; 0 = resultant elasticity (LAW1 only)
   double hm = 0.01, hf = 0.01, hr = 0.01, dm = 0, ashear = 5.0 / 6.0;
   double dn = 0;  // QEPH numerical damping of the stabilisation (elements.md 1.10; 0.015 by default)
+  double p_thick_fail = 0.999999;  // /FAIL Ifail_sh 2: failed thickness fraction that deletes the element
 };
 
 // The shell kernel a group runs: one enum value per formulation, one switch in the engine.
@@ -54,6 +55,7 @@ struct ShellGroup {
   std::vector<double> off;         // [G] 1 alive, decaying by 0.8 after failure, 0 deleted
   std::vector<double> sig;         // [gauss][n_points][5][G]  sxx syy sxy syz szx, local frame
   std::vector<double> eps_p;       // [gauss][n_points][G]
+  std::vector<double> dmg;         // [gauss][n_points][G] /FAIL/JOHNSON damage (0 .. 1; 1: the point failed)
   std::vector<double> hg;          // [3][G] elastic hourglass resultants Sx Sy Sz (Ishell 1);
                                    // QEPH: [4][6][G] stabilisation resultants at the 4 Gauss points
                                    // (shell_qeph.cpp)
@@ -107,6 +109,7 @@ struct BrickGroup {
   std::vector<double> off;         // [G]
   std::vector<double> sig;         // [6][G] xx yy zz xy yz zx, global axes
   std::vector<double> eps_p;       // [G]
+  std::vector<double> dmg;         // [G] /FAIL/JOHNSON damage (0 .. 1)
   std::vector<double> q;           // [G] bulk viscosity pressure of the last cycle
   std::vector<double> e_int;       // [G] accumulated internal energy (includes bulk viscosity work)
   std::vector<double> e_hg;        // [G]

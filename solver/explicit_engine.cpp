@@ -29,7 +29,10 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
                                EngineOptions options)
     : model_(model), controls_(controls), options_(options), sensors_(model), skews_(model) {
   materials_.reserve(model_.materials.size());
-  for (const auto& m : model_.materials) materials_.push_back(make_material_params(m));
+  // Law 36's curves: one list per material, filled before any pointer to it is taken (never resized after).
+  material_curves_.resize(model_.materials.size());
+  for (std::size_t i = 0; i < model_.materials.size(); ++i)
+    materials_.push_back(make_material_params(model_.materials[i], model_.functions, material_curves_[i]));
   build_nodes();
   build_groups();
   build_assembly();
@@ -158,6 +161,7 @@ void ExplicitEngine::build_groups() {
       g.props.dm = prop.dm;
       g.props.dn = prop.dn;
       g.props.ashear = points == 1 ? 0.0 : prop.ashear;
+      g.props.p_thick_fail = prop.p_thick_fail;
       for (int i = 0; i < g.count; ++i) {
         const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
         g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);

@@ -157,6 +157,7 @@ class ExplicitEngine {
   Sensors sensors_;
   NodeState nodes_;
   std::vector<MaterialParams> materials_;
+  std::vector<std::vector<TabCurve>> material_curves_;  // law 36: what materials_[i].curves points to
   std::vector<ShellGroup> shells_;
   std::vector<BrickGroup> bricks_;
   std::vector<TetraGroup> tetras_;

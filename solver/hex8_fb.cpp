@@ -319,7 +319,12 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
     const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
     double sn[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
     double eps_p = g.eps_p[i];
-    const double deps_p = solid_point_update(mat, rate, de, mu, sn, eps_p);
+    double dmg = g.dmg[i];
+    const SolidPointResult pr = solid_point_update(mat, rate, de, mu, sn, eps_p, dmg, off);
+    const double deps_p = pr.deps_p;
+    // Law 36 Eps_p_max and /FAIL/JOHNSON Ifail_so 1: 0.8 when the brick fails, then 0.8 per cycle, 0 below
+    // 0.1; the forces and energies of this cycle take the new factor (as the shells do, elements.md 6.4).
+    const double off_new = brick_next_off(off, pr.element_fails);
 
     // Bulk viscosity and element step.
     const double l = std::cbrt(vol);
@@ -430,17 +435,19 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
     }
 
     // Store.
-    store_nodal_forces<8, 3>(force, G, i, off, f);
+    store_nodal_forces<8, 3>(force, G, i, off_new, f);
 #pragma GCC unroll 8
     for (int m = 0; m < 6; ++m) g.sig[static_cast<std::size_t>(m) * G + i] = sn[m];
     g.eps_p[i] = eps_p;
+    g.dmg[i] = dmg;
+    g.off[i] = off_new;
     g.vol[i] = vol;
     g.rho[i] = rho;
     g.q[i] = q_new;
     g.rate[i] = rate;
-    g.e_int[i] += off * de_int;
-    g.e_hg[i] += off * dt1 * de_hg;
-    g.w_plastic[i] += off * svm * deps_p * vol;
+    g.e_int[i] += off_new * de_int;
+    g.e_hg[i] += off_new * dt1 * de_hg;
+    g.w_plastic[i] += off_new * svm * deps_p * vol;
     g.dt[i] = dt_e;
     g.k_nodal[i] = 0.25 * rho * vol / (dt_e * dt_e);
   }

@@ -1,5 +1,7 @@
 // LAW1 (elastic) and LAW2 (Johnson-Cook) at one integration point: the functions of material_point.hpp.
-// LAW1 is the elastic part of the same updates and never yields.
+// LAW1 is the elastic part of the same updates and never yields. LAW36 (law36_plas_tab.cpp) and
+// /FAIL/JOHNSON (fail_johnson.cpp) are dispatched from here: one switch on the law per point, no virtual
+// call.
 //
 // Sources: shared/spec/elements.md 1.4 (shell elasticity), 1.8 (thickness strain), 3.3 (solid pressure),
 // 6.1-6.3 (LAW2), read from OpenRadioss sigeps02c.F / m2cplr.F (shell) and m2law.F (solid).
@@ -39,6 +41,7 @@
 //   pressure p = K mu (total; mu = rho/rho0 - 1 > 0 in compression),  sig = s - p I
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "solver/material_point.hpp"
 
@@ -195,6 +198,30 @@ MaterialParams make_material_params(const model::Material& m) {
     p.flag_vp = m.flag_vp == 0 ? 2 : m.flag_vp;
     p.f_cut = m.f_cut;
   }
+  if (m.law == model::MaterialLaw::PlasTab) {
+    p.eps_p_max = m.eps_p_max == 0 ? 1e20 : m.eps_p_max;
+    p.f_cut = m.f_cut;
+  }
+  if (m.fail_jc.on) {
+    const auto& f = m.fail_jc;
+    p.fail.on = true;
+    p.fail.d1 = f.d1;
+    p.fail.d2 = f.d2;
+    p.fail.d3 = f.d3;
+    p.fail.d4 = f.d4;
+    p.fail.d5 = f.d5;
+    p.fail.eps_dot0 = f.eps_dot_0 > 0 ? f.eps_dot_0 : 1e-20;
+    p.fail.eps_f_min = f.eps_f_min;
+    p.fail.ifail_sh = f.ifail_sh == 0 ? 1 : f.ifail_sh;
+    p.fail.ifail_so = f.ifail_so == 0 ? 1 : f.ifail_so;
+  }
+  return p;
+}
+
+MaterialParams make_material_params(const model::Material& m, const std::vector<model::Function>& functions,
+                                    std::vector<TabCurve>& curves) {
+  MaterialParams p = make_material_params(m);
+  if (m.law == model::MaterialLaw::PlasTab) tab_curves_params(m, functions, curves, p);
   return p;
 }
 
@@ -203,7 +230,22 @@ double jc_flow_stress(const MaterialParams& p, double eps_p, double rate, double
 }
 
 double jc_rate_factor(const MaterialParams& p, double rate) {
-  return p.law == model::MaterialLaw::JohnsonCook ? rate_factor(p, rate) : 1.0;
+  switch (p.law) {
+    case model::MaterialLaw::JohnsonCook: return rate_factor(p, rate);
+    case model::MaterialLaw::PlasTab: return p.n_curves > 1 ? rate : 1.0;
+    case model::MaterialLaw::Elastic: break;
+  }
+  return 1.0;
+}
+
+double shell_rate_threshold(const MaterialParams& p) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  switch (p.law) {
+    case model::MaterialLaw::JohnsonCook: return p.c != 0 ? p.eps_dot0 : kInf;
+    case model::MaterialLaw::PlasTab: return p.n_curves > 1 ? -kInf : kInf;
+    case model::MaterialLaw::Elastic: break;
+  }
+  return kInf;
 }
 
 ShellPointResult shell_point_update(const MaterialParams& p, int iplas, double rate, double off,
@@ -213,6 +255,8 @@ ShellPointResult shell_point_update(const MaterialParams& p, int iplas, double r
 
 ShellPointResult shell_point_update_r(const MaterialParams& p, int iplas, double rfac, double off,
                                       const double de[5], double gs, double sig[5], double& eps_p) {
+  if (p.law == model::MaterialLaw::PlasTab)
+    return detail::law36_shell_point(p, iplas, rfac, off, de, gs, sig, eps_p);
   return shell_point_core(p, iplas, jc_rate_of_factor(p, rfac), off, de, gs, sig, eps_p);
 }
 
@@ -241,6 +285,8 @@ double solid_point_update(const MaterialParams& p, double rate, const double de[
       for (double& v : s) v *= scale;
       eps_p += deps_p;
     }
+  } else if (p.law == model::MaterialLaw::PlasTab) {
+    deps_p = detail::law36_solid_deviator(p, rate, s, eps_p);
   }
   const double pressure = p.bulk * mu;
   sig[0] = s[0] - pressure;

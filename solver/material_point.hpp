@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <vector>
 
 #include "solver/model/model.hpp"
 
@@ -28,6 +29,24 @@ inline double opaque(double v) {
   return v;
 }
 
+// One yield curve of law 36: a non-owning view of a /FUNCT's points (the engine's model owns them), its
+// ordinate scale and its strain rate. sigma_y(eps_p) = scale f(eps_p), f linear between the points and
+// extrapolated with the end segments (as every /FUNCT, functions.hpp).
+struct TabCurve {
+  const double* x = nullptr;
+  const double* y = nullptr;
+  int n = 0;
+  double scale = 1;
+  double rate = 0;
+};
+
+// /FAIL/JOHNSON as the points use it (fail_johnson.cpp).
+struct FailJcParams {
+  bool on = false;
+  double d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0, eps_dot0 = 1e-20, eps_f_min = 0;
+  int ifail_sh = 1, ifail_so = 1;
+};
+
 // Parameters as the kernels use them (work units), derived once per material.
 struct MaterialParams {
   model::MaterialLaw law = model::MaterialLaw::Elastic;
@@ -40,10 +59,32 @@ struct MaterialParams {
   // Johnson-Cook (law 2); unused for law 1.
   double a = 0, b = 0, n = 1, c = 0, eps_dot0 = 1, sig_max0 = 1e20, eps_p_max = 1e20;
   int icc = 1, flag_vp = 2;
-  double f_cut = 0;
+  double f_cut = 0;  // strain-rate filter (laws 2 and 36)
+  // Tabulated plasticity (law 36, law36_plas_tab.cpp): curves[0 .. n_curves) by increasing rate, the rate-0
+  // curve first when there are several (non-owning: see make_material_params). eps_p_max above is its
+  // Eps_p_max.
+  const TabCurve* curves = nullptr;
+  int n_curves = 0;
+  bool tab_log = false;  // Fsmooth 2: interpolation in ln(rate) between two curves, else linear in rate
+  double tab_lower = 0;  // lower bound of sigma_y over eps_p >= 0 and rates <= tab_rate_max (fast path)
+  double tab_rate_max = 0;
+  bool tab_bound = false;  // tab_lower is a valid bound (every curve's last segment rises or is flat)
+  FailJcParams fail;
 };
 
+// Parameters of laws 1 and 2 (and of a /FAIL/JOHNSON on them). A law-36 material needs the overload below.
 MaterialParams make_material_params(const model::Material& m);
+
+// Any law: law 36 gets its curves from `functions` (the model's) through `curves`, which receives them and
+// must outlive the parameters and not be resized afterwards (the parameters point into it). The curves'
+// points stay in `functions`, which must outlive them too.
+MaterialParams make_material_params(const model::Material& m, const std::vector<model::Function>& functions,
+                                    std::vector<TabCurve>& curves);
+
+// Law 36 flow stress (law36_plas_tab.cpp) at plastic strain eps_p and strain rate `rate`:
+// sigma_y = max(Y1 + f (Y2 - Y1), 1e-20), Y_k = scale_k f_k(eps_p) of the two curves around the rate,
+// f = (rate - r1)/(r2 - r1) (or the same in ln(rate)). `slope` receives H = d sigma_y / d eps_p.
+double tab_flow_stress(const MaterialParams& p, double eps_p, double rate, double* slope = nullptr);
 
 // Johnson-Cook flow stress (6.2) at plastic strain eps_p and strain rate `rate`:
 // sigma_y = min((a + b eps_p^n) R, SIG_max0 (R if ICC = 1 else 1)), R = 1 + c ln(max(rate, rate0)/rate0).
@@ -63,12 +104,17 @@ struct ShellPointResult {
 ShellPointResult shell_point_update(const MaterialParams& p, int iplas, double rate, double off,
                                     const double de[5], double gs, double sig[5], double& eps_p);
 
-// Johnson-Cook strain-rate factor R = 1 + c ln(max(rate, rate0)/rate0) of 6.2: 1 for law 1, and exactly 1
-// without a logarithm when c = 0 or rate <= rate0. A shell's rate is one value per element (1.3), so the
-// shell kernels take R once per element and update the points with shell_point_update_r.
+// The strain-rate term of a shell element, taken once per element since a shell's rate is one value per
+// element (1.3), with which the kernels update the points through shell_point_update_r: for law 2 the
+// Johnson-Cook factor R = 1 + c ln(max(rate, rate0)/rate0) of 6.2 (exactly 1 without a logarithm when c = 0
+// or rate <= rate0); for law 36 the rate itself (the curves are chosen per point); 1 for law 1.
 double jc_rate_factor(const MaterialParams& p, double rate);
 
-// shell_point_update with the strain-rate factor R = jc_rate_factor(p, rate) given instead of the rate:
+// Rate at or below which jc_rate_factor is 1 (+infinity: always 1); the kernels call jc_rate_factor only
+// above it. -infinity for law 36 with several curves (the term is the rate).
+double shell_rate_threshold(const MaterialParams& p);
+
+// shell_point_update with the rate term jc_rate_factor(p, rate) given instead of the rate:
 // shell_point_update(p, iplas, rate, ...) is shell_point_update_r(p, iplas, jc_rate_factor(p, rate), ...).
 ShellPointResult shell_point_update_r(const MaterialParams& p, int iplas, double rfac, double off,
                                       const double de[5], double gs, double sig[5], double& eps_p);
@@ -105,17 +151,33 @@ inline double shell_vm2_newton(double sxx, double syy, double sxy) {
   return 0.25 * s1 * s1 + (0.75 * s2 * s2 + 3.0 * sxy * sxy);
 }
 
-// Lower bound of the flow stress: sigma_y(eps_p, R) >= min(a R, SIG_max0) for every eps_p >= 0 when b >= 0,
-// SIG_max0 >= 0 and R >= 1 (c >= 0), since the hardening term and the cap only grow with eps_p and R.
+// Lower bound of the flow stress.
+// Law 2: sigma_y(eps_p, R) >= min(a R, SIG_max0) for every eps_p >= 0 when b >= 0, SIG_max0 >= 0 and R >= 1
+// (c >= 0), since the hardening term and the cap only grow with eps_p and R.
+// Law 36: sigma_y >= tab_lower, the smallest scaled ordinate of the curves over eps_p >= 0, while the rate is
+// at most the highest curve rate (then the rate weight is in [0, 1], so sigma_y lies between two curves'
+// values); the rate term rfac is the rate, hence a = tab_lower, r_scale = 0 and r_max = tab_rate_max. With a
+// /FAIL/JOHNSON no bound is used: every point takes the exact update, which also handles the damage.
 struct ShellYieldBound {
-  bool jc = false;      // law 2 (law 1 never yields)
+  bool jc = false;      // the law may yield (laws 2 and 36; law 1 never yields)
   bool usable = false;  // the bound holds for this material
   double a = 0, sig_max0 = 0;
+  double r_scale = 1;  // 1: the bound scales with the rate term (law 2); 0: it does not (law 36)
+  double r_max = 1e300;
 };
 inline ShellYieldBound shell_yield_bound(const MaterialParams& p) {
   ShellYieldBound b;
+  if (p.law == model::MaterialLaw::PlasTab) {
+    b.jc = true;
+    b.usable = p.tab_bound && !p.fail.on;
+    b.a = p.tab_lower;
+    b.sig_max0 = 1e300;
+    b.r_scale = 0;
+    b.r_max = p.tab_rate_max;
+    return b;
+  }
   b.jc = p.law == model::MaterialLaw::JohnsonCook;
-  b.usable = b.jc && p.b >= 0 && p.c >= 0 && p.sig_max0 >= 0;
+  b.usable = b.jc && p.b >= 0 && p.c >= 0 && p.sig_max0 >= 0 && !p.fail.on;
   b.a = p.a;
   b.sig_max0 = p.sig_max0;
   return b;
@@ -128,9 +190,9 @@ inline ShellYieldBound shell_yield_bound(const MaterialParams& p) {
 template <bool kNewton>
 inline bool shell_stays_elastic(const ShellYieldBound& b, double rfac, double off, double eps_p, double sxx,
                                 double syy, double sxy) {
-  const double lb = std::min(b.a * rfac, b.sig_max0);
+  const double lb = std::min(b.a * (b.r_scale * rfac + (1.0 - b.r_scale)), b.sig_max0);
   const double q = kNewton ? shell_vm2_newton(sxx, syy, sxy) : shell_vm2_radial(sxx, syy, sxy);
-  const bool below = b.usable & (lb >= 0) & (eps_p >= 0) & (q * (1.0 + 1e-12) <= lb * lb);
+  const bool below = b.usable & (lb >= 0) & (eps_p >= 0) & (rfac <= b.r_max) & (q * (1.0 + 1e-12) <= lb * lb);
   return !b.jc | below | (kNewton & (off != 1.0));
 }
 
@@ -146,5 +208,54 @@ double solid_point_update(const MaterialParams& p, double rate, const double de[
 // solid_point_update), for elements that limit other stresses by it (the physical hourglass of Isolid 24).
 // A law that never yields returns 1e30 or more (LAW1).
 double solid_yield_stress(const MaterialParams& p, double eps_p, double rate);
+
+// The solid point with its failure state: law 36 Eps_p_max and /FAIL/JOHNSON (Ifail_so) on top of the update
+// above. dmg: the point's Johnson-Cook damage (0 .. 1), updated. off: the element factor at the start of the
+// cycle (the damage accumulates only while it is 1). element_fails: the element starts its deletion this
+// cycle (law 36 eps_p > Eps_p_max, or Ifail_so 1 with D reaching 1); the caller sets its factor to 0.8 and
+// lets it decay as for shells (brick_next_off).
+struct SolidPointResult {
+  double deps_p = 0;
+  bool element_fails = false;
+};
+SolidPointResult solid_point_update(const MaterialParams& p, double rate, const double de[6], double mu,
+                                    double sig[6], double& eps_p, double& dmg, double off);
+
+// Element factor of a brick after its update (OpenRadioss sigeps36.F, fail_johnson.F): a factor below 1
+// decays by 0.8 per cycle and becomes 0 (deleted) once below 0.1; a live brick that fails this cycle takes
+// 0.8.
+inline double brick_next_off(double off_start, bool fails) {
+  if (off_start < 1.0) return off_start < 0.1 ? 0.0 : 0.8 * off_start;
+  return fails ? 0.8 : off_start;
+}
+
+// /FAIL/JOHNSON at one point (fail_johnson.cpp): failure strain and damage increment.
+// eps_f = max(EPSF_MIN, (D1 + D2 exp(D3 sigma_m / svm)) (1 + D4 ln(max(1, rate / rate0))) (1 + D5 T*)), T* =
+// 0.
+double fail_jc_strain(const FailJcParams& f, double sigma_m, double svm, double rate);
+// D += d_eps_p / eps_f when eps_f > 0, capped at 1. Returns true when D reaches 1 in this call.
+bool fail_jc_accumulate(const FailJcParams& f, double sigma_m, double svm, double rate, double deps_p,
+                        double& dmg);
+
+// The shell point with /FAIL/JOHNSON: shell_point_update_r, then, while the element is intact (off = 1) and
+// the point alive (dmg < 1), D += d_eps_p / eps_f with the plane-stress sigma_m = (sxx + syy)/3 and svm of
+// the updated stress; a failed point (dmg >= 1) carries no stress any more (all five components zero).
+// rate: the element's strain rate (the D4 term).
+ShellPointResult shell_point_update_fail(const MaterialParams& p, int iplas, double rfac, double rate,
+                                         double off, const double de[5], double gs, double sig[5],
+                                         double& eps_p, double& dmg);
+
+// Internal pieces of the law files, for law_point_updates.cpp's dispatch (not for the kernels).
+namespace detail {
+// Law 36 shell point (law36_plas_tab.cpp); rate = the element's filtered strain rate.
+ShellPointResult law36_shell_point(const MaterialParams& p, int iplas, double rate, double off,
+                                   const double de[5], double gs, double sig[5], double& eps_p);
+// Law 36 radial return of a solid's trial deviator s (in place); returns d_eps_p and updates eps_p.
+double law36_solid_deviator(const MaterialParams& p, double rate, double s[6], double& eps_p);
+}  // namespace detail
+
+// Fills p's law-36 curves from the material (law36_plas_tab.cpp); see make_material_params.
+void tab_curves_params(const model::Material& m, const std::vector<model::Function>& functions,
+                       std::vector<TabCurve>& curves, MaterialParams& p);
 
 }  // namespace radx::solver

@@ -123,10 +123,8 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
   const double km0 = young * pr.hm / 8.0 * dt1;
   const double kf0 = young * pr.hf * shf / (24.0 * (1.0 + nu)) * dt1;
   const bool update_thick = pr.ithick == 1;
-  // Strain rate above which the Johnson-Cook factor R differs from 1 (jc_rate_factor).
-  const double rate_one = (mat.law == model::MaterialLaw::JohnsonCook && mat.c != 0)
-                              ? mat.eps_dot0
-                              : std::numeric_limits<double>::infinity();
+  // Strain rate above which the element's rate term differs from 1 (jc_rate_factor).
+  const double rate_one = shell_rate_threshold(mat);
   const double tiny20 = opaque(1e-20), tiny30 = opaque(1e-30);  // floors of divisors
   // Masks. State updates of the last stage are written x + m * dx (m = 1, or 0 for an element deleted at
   // entry or in this cycle, whose increments are finite) rather than selected: a select of a computed value
@@ -275,6 +273,7 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
       const double rate = alpha * eq + (1.0 - alpha) * old;
       rates[ii] = sec.off[j] > 0.0 ? rate : old;
       bk.rate[j] = rate;
+      sec.rate[j] = rate;
       sec.rfac[j] = 1.0;
       const std::int64_t r = rate <= rate_one ? 0 : 1;  // R = 1 at or below rate0 (and for c = 0)
       bk.flag[j] = r;
@@ -287,7 +286,8 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
     // Section [1.4, 1.8, 6] and the element factor after it [6.4] (a loop of its own: its branches would
     // keep the next one from being vectorised).
     section_update_block(g, i0, len, mat, rule, gs, sec);
-    for (int j = 0; j < len; ++j) bk.off[j] = next_off(fail_limit, sec.off[j], sec.eps_p_max[j]);
+    for (int j = 0; j < len; ++j)
+      bk.off[j] = next_off(fail_limit, sec.off[j], sec.eps_p_max[j], sec.fail_now[j]);
 
     // Failure, thickness, energy [1.5], forces [1.6], hourglass [1.7], step [4.1] and nodal stiffness [4.5].
     std::int64_t any_gone = 0;

@@ -102,6 +102,7 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
         for (int k = 0; k < 3; ++k) sec.dk[k][j] = 0.0;
         sec.t[j] = sec.area[j] = 0.0;
         sec.rfac[j] = 1.0;
+        sec.rate[j] = 0.0;
         continue;
       }
       const double px[3] = {bk.nb.x[0][j], bk.nb.x[1][j], bk.nb.x[2][j]};
@@ -186,6 +187,7 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
       sec.t[j] = t;
       sec.area[j] = area;
       sec.rfac[j] = jc_rate_factor(mat, rate);
+      sec.rate[j] = rate;
       bk.e1[0][j] = e1x, bk.e1[1][j] = e1y, bk.e1[2][j] = e1z;
       bk.e2[0][j] = e2x, bk.e2[1][j] = e2y, bk.e2[2][j] = e2z;
       bk.e3[0][j] = e3x, bk.e3[1][j] = e3y, bk.e3[2][j] = e3z;
@@ -210,7 +212,7 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
       const double t = sec.t[j], area = sec.area[j];
       const double dem[5] = {sec.dem[0][j], sec.dem[1][j], sec.dem[2][j], sec.dem[3][j], sec.dem[4][j]};
       const double dk[3] = {sec.dk[0][j], sec.dk[1][j], sec.dk[2][j]};
-      const double off = next_off(fail_limit, off_start, sec.eps_p_max[j]);
+      const double off = next_off(fail_limit, off_start, sec.eps_p_max[j], sec.fail_now[j]);
       g.off[ii] = off;
       g.w_plastic[ii] += sec.w_plastic[j];
       g.thick[ii] += sec.dthick[j] * off;

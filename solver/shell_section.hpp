@@ -20,7 +20,12 @@
 //        rate <- alpha rate + (1 - alpha) rate_old, alpha = min(1, 2 pi Fcut dt1), Fcut = 0 -> alpha = 1.
 //   1.8  thickness: t_cur += sum_i dezz_i w_i t OFF.
 //   6.4  OFF: 1 -> 0.8 the cycle a point reaches EPS_p_max; then OFF <- 0.8 OFF each cycle; deleted (0) in
-//        the cycle whose starting OFF is below 0.1.
+//        the cycle whose starting OFF is below 0.1. Law 36: a point above Eps_p_max deletes the element at
+//        once (OFF 0 in that cycle: sigeps36c.F sets 0.8 without the progressive flag LAW2 sets, and
+//        mulawc.F90 turns such a 0.8 into 0).
+//   /FAIL/JOHNSON (fail_johnson.cpp): every point of such a material takes the exact update with its damage;
+//        a failed point carries no stress; the element is deleted at once (OFF 0) when the weight sum of its
+//        failed points reaches 1e-6 (Ifail_sh 1) or min(P_thickfail, 1 - 1e-6) (Ifail_sh 2).
 //   6.5  plastic work: dW = 1/2 (svm_old + svm_new) deps_p w_i t A.
 #pragma once
 
@@ -121,7 +126,8 @@ struct SectionBlock {
   double dk[3][B];   // curvature increments xx yy xy
   double t[B];       // mechanics thickness
   double area[B];    // current area
-  double rfac[B];    // Johnson-Cook strain-rate factor R of the element rate (jc_rate_factor)
+  double rfac[B];    // strain-rate term of the element rate (jc_rate_factor: R for law 2, the rate for 36)
+  double rate[B];    // the element's filtered strain rate (the /FAIL/JOHNSON D4 term)
   double off[B];     // element factor at the start of the cycle; <= 0: deleted, its state is left alone
   // Results.
   double for_old[5][B], for_new[5][B];
@@ -129,6 +135,7 @@ struct SectionBlock {
   double dthick[B];     // thickness increment before the OFF factor (1.8)
   double w_plastic[B];  // plastic work increment (6.5)
   double eps_p_max[B];  // largest plastic strain over the points after the update
+  double fail_now[B];   // 1: /FAIL/JOHNSON deletes the element in this cycle (next_off)
   // Scratch of the points that take the exact update (shell_point_update_r).
   double old[2][5][B];                                // their stress before the update (points of the pass)
   std::int64_t exact[2][B];                           // 1: that point of element j takes it
@@ -227,16 +234,19 @@ std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParam
 // Section update of the block: N = 0 resultant elasticity, or the N points (1.4) with the material update
 // (6.3), thickness strain (1.8), plastic work (6.5) and the largest eps_p (6.4).
 //
-// sig_rows, eps_rows: the first rows of the state this section updates, laid out as ShellGroup::sig and
-// ::eps_p ([points][5][G] or [8][G], [points][G]); the group's own rows by default. QBAT keeps one such
-// state per in-plane Gauss point and passes each in turn.
+// sig_rows, eps_rows, dmg_rows: the first rows of the state this section updates, laid out as
+// ShellGroup::sig,
+// ::eps_p and ::dmg ([points][5][G] or [8][G], [points][G], [points][G]); the group's own rows by default.
+// QBAT keeps one such state per in-plane Gauss point and passes each in turn.
 template <int B>
 void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& mat,
                           const ThicknessRule& rule, double gs, SectionBlock<B>& s,
-                          double* sig_rows = nullptr, double* eps_rows = nullptr) {
+                          double* sig_rows = nullptr, double* eps_rows = nullptr,
+                          double* dmg_rows = nullptr) {
   constexpr std::size_t G = kGroupSize;
   double* const sig_base = sig_rows != nullptr ? sig_rows : g.sig.data();
   double* const eps_base = eps_rows != nullptr ? eps_rows : g.eps_p.data();
+  double* const dmg_base = dmg_rows != nullptr ? dmg_rows : g.dmg.data();
   if (rule.n == 0) {
     // Resultant elasticity (LAW1, N = 0).
     double* r = sig_base + i0;
@@ -269,11 +279,13 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
       s.dthick[j] = fz * (s.dem[0][j] + s.dem[1][j]) * s.t[j];
       s.w_plastic[j] = 0;
       s.eps_p_max[j] = 0;
+      s.fail_now[j] = 0;
     }
     return;
   }
   const int iplas = g.props.iplas;
   const ShellYieldBound yb = shell_yield_bound(mat);
+  const bool fail = mat.fail.on;
   double* sig = sig_base + i0;
   double* eps_p = eps_base + i0;
   bool any_redo = false;
@@ -302,7 +314,11 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
         const double de[5] = {s.dem[0][j] + z * s.dk[0][j], s.dem[1][j] + z * s.dk[1][j],
                               s.dem[2][j] + z * s.dk[2][j], s.dem[3][j], s.dem[4][j]};
         double sg[5] = {s.old[q][0][j], s.old[q][1][j], s.old[q][2][j], s.old[q][3][j], s.old[q][4][j]};
-        const ShellPointResult r = shell_point_update_r(mat, iplas, s.rfac[j], s.off[j], de, gs, sg, ep[j]);
+        const ShellPointResult r =
+            fail ? shell_point_update_fail(
+                       mat, iplas, s.rfac[j], s.rate[j], s.off[j], de, gs, sg, ep[j],
+                       dmg_base[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)])
+                 : shell_point_update_r(mat, iplas, s.rfac[j], s.off[j], de, gs, sg, ep[j]);
         for (int c = 0; c < 5; ++c) sp[c][j] = sg[c];
         s.point_exact[p][j] = 1;
         s.dezz_x[p][j] = r.dezz;
@@ -344,6 +360,27 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
   }
   RADX_IVDEP
   for (int j = 0; j < len; ++j) s.dthick[j] *= s.t[j];
+  // Deletion at once (next_off): law 36 with a point above Eps_p_max; /FAIL/JOHNSON with the thickness
+  // fraction of failed points (their weights) at Ifail_sh's threshold (fail_setoff_c.F: 1e-6, or P_thickfail
+  // kept within [1e-6, 1 - 1e-6]).
+  for (int j = 0; j < len; ++j) s.fail_now[j] = 0;
+  const bool tab_limit = mat.law == model::MaterialLaw::PlasTab && mat.eps_p_max < 1e20;
+  if (fail || tab_limit) {
+    const double pt = std::clamp(std::abs(g.props.p_thick_fail), 1e-6, 1.0 - 1e-6);
+    const double limit = mat.fail.ifail_sh == 2 ? pt : 1e-6;
+    for (int j = 0; j < len; ++j) {
+      if (s.off[j] != 1.0) continue;
+      bool gone = tab_limit && s.eps_p_max[j] > mat.eps_p_max;
+      if (fail) {
+        double frac = 0;
+        for (int p = 0; p < rule.n; ++p)
+          if (dmg_base[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)] >= 1.0)
+            frac += rule.w[p];
+        gone = gone || frac >= limit;
+      }
+      s.fail_now[j] = gone ? 1.0 : 0.0;
+    }
+  }
 }
 
 // limit = EPS_p_max of a Johnson-Cook material, +infinity for a law that does not fail (failure_limit).
@@ -352,6 +389,12 @@ inline double next_off(double limit, double off_start, double eps_p_max) {
   return eps_p_max >= limit ? 0.8 : off_start;
 }
 
+// With the section's verdict of deletion at once (fail_now 1: OFF 0; /FAIL/JOHNSON, law 36 Eps_p_max).
+inline double next_off(double limit, double off_start, double eps_p_max, double fail_now) {
+  return fail_now != 0 ? 0.0 : next_off(limit, off_start, eps_p_max);
+}
+
+// The progressive failure limit: law 2's EPS_p_max (law 36 deletes at once through fail_now instead).
 inline double failure_limit(const MaterialParams& mat) {
   return mat.law == model::MaterialLaw::JohnsonCook ? mat.eps_p_max : std::numeric_limits<double>::infinity();
 }

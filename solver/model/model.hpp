@@ -56,7 +56,31 @@ struct ElementBlock {
   [[nodiscard]] int npe() const { return nodes_per_element(type); }
 };
 
-enum class MaterialLaw : std::uint8_t { Elastic = 1, JohnsonCook = 2 };
+enum class MaterialLaw : std::uint8_t { Elastic = 1, JohnsonCook = 2, PlasTab = 36 };
+
+// /MAT/PLAS_TAB (law 36): yield curves sigma_y(eps_p) per strain rate, as given in the deck (the engine adds
+// the rate-0 curve OpenRadioss inserts when the first rate is not 0). Parallel vectors, one entry a curve.
+struct PlasTab {
+  std::vector<std::int64_t> function_id;  // user ids (listing)
+  std::vector<std::int32_t> function;     // dense indices into Model::functions
+  std::vector<double> scale;              // Fscale_i (0 -> 1 done by the starter)
+  std::vector<double> rate;               // Eps_dot_i, strictly increasing
+  int fsmooth = 0;                        // rate interpolation: 0 or 1 linear, 2 logarithmic
+  int vp = 0;                             // 0: total strain rate (1, plastic rate, is refused)
+};
+
+// /FAIL/JOHNSON on a material: damage D += d_eps_p / eps_f at each point,
+// eps_f = max(EPSF_MIN, (D1 + D2 exp(D3 sigma_m / svm)) (1 + D4 ln(max(1, rate / rate0))) (1 + D5 T*)).
+struct FailJohnson {
+  bool on = false;
+  std::int64_t fail_id = 0;
+  double d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0;
+  double eps_dot_0 = 1e-20;  // 0 -> 1e-20
+  double eps_f_min = 0;
+  double dadv = 1;
+  int ifail_sh = 1;  // 1: one failed point deletes the shell; 2: every point must fail
+  int ifail_so = 1;  // 1: brick deleted; 2: deviator zero; 3: deviator zero, no tension; 4: stress zero
+};
 
 struct Material {
   std::int64_t id = 0;
@@ -71,6 +95,9 @@ struct Material {
   double sig_y_input = 0, uts = 0, e_uts = 0;  // Iflag = 1 input, kept for the listing
   double c = 0, eps_dot_0 = 0, f_cut = 0, chard = 0, p_min = -1e20;
   double m_temp = 1, t_melt = 1e20, rho_cp = 0, t_ref = 300, t_max = 1e20;
+  // Tabulated plasticity (law 36); eps_p_max and f_cut above are shared with law 2.
+  PlasTab tab;
+  FailJohnson fail_jc;
 };
 
 enum class PropertyKind : std::uint8_t { Shell = 1, Solid = 14 };

@@ -89,7 +89,7 @@ class Model:
         self.parts = {pid: (integer(data[1], 1, 10), integer(data[1], 11, 20)) for pid, data in d.of("/PART")}
         self.shell_thickness = {pid: real(data[3], 21, 40) for pid, data in d.of("/PROP/SHELL")}
         self.rho = {}
-        for prefix in ("/MAT/LAW1", "/MAT/PLAS_JOHNS"):
+        for prefix in ("/MAT/LAW1", "/MAT/PLAS_JOHNS", "/MAT/PLAS_TAB"):
             for mid, data in d.of(prefix):
                 self.rho[mid] = real(data[1], 1, 20)
         self.groups = {}
