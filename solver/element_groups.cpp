@@ -50,7 +50,7 @@ void TetraGroup::allocate(int n) {
   const auto G = static_cast<std::size_t>(kGroupSize);
   conn.assign(4 * G, 0);
   element.assign(G, -1);
-  for (auto* v : {&vol0, &vol, &rho, &eps_p, &q, &e_int, &e_hg, &w_plastic, &rate, &dt, &k_nodal})
+  for (auto* v : {&vol0, &vol, &rho, &eps_p, &dmg, &q, &e_int, &e_hg, &w_plastic, &rate, &dt, &k_nodal})
     v->assign(G, 0.0);
   off.assign(G, 1.0);
   sig.assign(6 * G, 0.0);
@@ -61,6 +61,7 @@ void BrickGroup::allocate_points() {
   const auto G = static_cast<std::size_t>(kGroupSize);
   sig_p.assign(8 * 6 * G, 0.0);
   eps_p_p.assign(8 * G, 0.0);
+  dmg_p.assign(8 * G, 0.0);
   vol0_p.assign(8 * G, 0.0);
 }
 

@@ -101,6 +101,7 @@ struct BrickGroup {
   bool dt_points = false;       // element length min_p 8 V_p / A_mid (S8Z, S8E) instead of V / max face area
   std::vector<double> sig_p;    // [8][6][G] point stresses (co-rotational frame when corot), 8 points only
   std::vector<double> eps_p_p;  // [8][G] point plastic strains
+  std::vector<double> dmg_p;    // [8][G] point /FAIL/JOHNSON damage
   std::vector<double> vol0_p;   // [8][G] initial point volumes det J_p
   std::vector<std::int32_t> conn;  // [8][G]
   std::vector<double> vol0;        // [G] initial (one-point) volume
@@ -182,6 +183,7 @@ struct TetraGroup {
   std::vector<double> off;          // [G] 1 alive, 0 deleted
   std::vector<double> sig;          // [6][G] xx yy zz xy yz zx, global axes
   std::vector<double> eps_p;        // [G]
+  std::vector<double> dmg;          // [G] /FAIL/JOHNSON damage (0 .. 1)
   std::vector<double> q;            // [G] bulk viscosity pressure of the last cycle
   std::vector<double> e_int;        // [G] accumulated internal energy (includes bulk viscosity work)
   std::vector<double> e_hg;         // [G] always 0 (no hourglass); summed with the other groups'

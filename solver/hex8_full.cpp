@@ -479,7 +479,8 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     const double dvol = vol - g.vol[i];
     const double vavg_ratio = (vol - 0.5 * dvol) / vol;
     double sn[NP][6];
-    double work = 0, w_pl = 0, eps_mean = 0;
+    double work = 0, w_pl = 0, eps_mean = 0, dmg_max = 0;
+    bool fails = false;  // a point starts the brick's deletion (law 36 Eps_p_max, /FAIL/JOHNSON Ifail_so 1)
     for (std::size_t p = 0; p < NP; ++p) {
       double so[6];
       for (std::size_t m = 0; m < 6; ++m) so[m] = sp(p, m, i);
@@ -498,7 +499,10 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
                             D[p][3] * dt1, D[p][4] * dt1, D[p][5] * dt1};
       for (std::size_t m = 0; m < 6; ++m) sn[p][m] = so[m];
       double& ep = g.eps_p_p[p * G + i];
-      const double deps_p = solid_point_update(mat, rate, de, mu, sn[p], ep);
+      const SolidPointResult pr = solid_point_update(mat, rate, de, mu, sn[p], ep, g.dmg_p[p * G + i], off);
+      const double deps_p = pr.deps_p;
+      fails = fails || pr.element_fails;
+      dmg_max = std::max(dmg_max, g.dmg_p[p * G + i]);
       eps_mean += ep / 8.0;
       double wp = 0;
       for (std::size_t m = 0; m < 6; ++m) wp += (so[m] + sn[p][m]) * D[p][m];
@@ -588,6 +592,10 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
       for (std::size_t m = 0; m < 6; ++m) sp(p, m, i) = sn[p][m];
     for (std::size_t m = 0; m < 6; ++m) g.sig[m * G + i] = out[m];
     g.eps_p[i] = eps_mean;
+    g.dmg[i] = dmg_max;
+    // Deletion as the one-point brick (brick_next_off) once any point fails; this cycle keeps the factor at
+    // entry. Which share of failed points OpenRadioss needs for a fully integrated brick is not read: one.
+    g.off[i] = brick_next_off(off, fails);
     g.vol[i] = vol;
     g.rho[i] = rho;
     g.q[i] = q_new;

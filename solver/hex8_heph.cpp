@@ -250,8 +250,14 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
     double sn[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
     double eps_p = g.eps_p[i];
-    const double deps_p = solid_point_update(mat, rate, de, mu, sn, eps_p);
+    double dmg = g.dmg[i];
+    const SolidPointResult pr = solid_point_update(mat, rate, de, mu, sn, eps_p, dmg, off);
+    const double deps_p = pr.deps_p;
     const double sig_y = solid_yield_stress(mat, eps_p, rate);
+    // Law 36 Eps_p_max and /FAIL/JOHNSON Ifail_so 1 start the brick's deletion (brick_next_off, as the
+    // one-point brick); this cycle's forces and energies keep the factor at entry.
+    g.dmg[i] = dmg;
+    g.off[i] = brick_next_off(off, pr.element_fails);
 
     // Bulk viscosity, element step.
     const double l = std::cbrt(vol);

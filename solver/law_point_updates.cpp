@@ -299,9 +299,13 @@ double solid_point_update(const MaterialParams& p, double rate, const double de[
 }
 
 double solid_yield_stress(const MaterialParams& p, double eps_p, double rate) {
-  if (p.law != model::MaterialLaw::JohnsonCook) return 1e30;  // LAW1: elastic
-  // A failed point (eps_p beyond EPS_p_max) has no deviatoric strength left (solid_point_update).
-  return eps_p > p.eps_p_max ? 0.0 : jc_flow_stress(p, eps_p, rate);
+  switch (p.law) {
+    case model::MaterialLaw::JohnsonCook:
+      // A failed point (eps_p beyond EPS_p_max) has no deviatoric strength left (solid_point_update).
+      return eps_p > p.eps_p_max ? 0.0 : jc_flow_stress(p, eps_p, rate);
+    case model::MaterialLaw::PlasTab: return tab_flow_stress(p, eps_p, rate);
+    default: return 1e30;  // LAW1: elastic
+  }
 }
 
 }  // namespace radx::solver

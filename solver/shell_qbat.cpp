@@ -52,12 +52,12 @@ struct QbatBlock {
   shell_detail::FrameBlock<kBlock> fr;
   double vx[4][kBlock], vy[4][kBlock], vz[4][kBlock], rx[4][kBlock], ry[4][kBlock];  // local
   double lx[4][kBlock], ly[4][kBlock];                                               // local coordinates
-  double t[kBlock], area[kBlock], rfac[kBlock], off[kBlock];
+  double t[kBlock], area[kBlock], rfac[kBlock], rate[kBlock], off[kBlock];
   // Per Gauss point: increments and the section's resultants before and after the update.
   double dem[4][5][kBlock], dk[4][3][kBlock];
   double for_old[4][5][kBlock], for_new[4][5][kBlock], mom_old[4][3][kBlock], mom_new[4][3][kBlock];
   double detj[4][kBlock];
-  double dthick[kBlock], w_plastic[kBlock], eps_p_max[kBlock];
+  double dthick[kBlock], w_plastic[kBlock], eps_p_max[kBlock], fail_now[kBlock];
   shell_detail::SectionBlock<kBlock> sec;
 };
 
@@ -148,6 +148,7 @@ void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
       const double rate = alpha * eq + (1.0 - alpha) * g.rate[ii];
       if (bk.off[j] > 0.0) g.rate[ii] = rate;
       bk.rfac[j] = jc_rate_factor(mat, rate);
+      bk.rate[j] = rate;
       for (int gp = 0; gp < 4; ++gp) {
         const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
         bk.detj[gp][j] = r.detj;
@@ -156,7 +157,7 @@ void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
         for (int q = 0; q < 5; ++q) bk.dem[gp][q][j] = e[q] * dt1;
         for (int q = 0; q < 3; ++q) bk.dk[gp][q][j] = kap[q] * dt1;
       }
-      bk.dthick[j] = bk.w_plastic[j] = bk.eps_p_max[j] = 0.0;
+      bk.dthick[j] = bk.w_plastic[j] = bk.eps_p_max[j] = bk.fail_now[j] = 0.0;
     }
 
     // The section at each Gauss point, on its own rows of the state.
@@ -167,6 +168,7 @@ void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
         sec.t[j] = bk.t[j];
         sec.area[j] = bk.detj[gp][j];
         sec.rfac[j] = bk.rfac[j];
+        sec.rate[j] = bk.rate[j];  // the /FAIL/JOHNSON D4 term
         sec.off[j] = bk.off[j];
       }
       const auto gpz = static_cast<std::size_t>(gp);
@@ -181,6 +183,8 @@ void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
         bk.dthick[j] += sec.dthick[j] * bk.detj[gp][j] / bk.area[j];
         bk.w_plastic[j] += sec.w_plastic[j];
         bk.eps_p_max[j] = std::max(bk.eps_p_max[j], sec.eps_p_max[j]);
+        // Deletion at once when any Gauss point's section reaches its failure threshold.
+        bk.fail_now[j] = std::max(bk.fail_now[j], sec.fail_now[j]);
       }
     }
 
@@ -195,7 +199,7 @@ void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
         continue;
       }
       const double t = bk.t[j], area = bk.area[j];
-      const double off = next_off(fail_limit, off_start, bk.eps_p_max[j]);
+      const double off = next_off(fail_limit, off_start, bk.eps_p_max[j], bk.fail_now[j]);
       g.off[ii] = off;
       g.w_plastic[ii] += bk.w_plastic[j];
       g.thick[ii] += bk.dthick[j] * off;

@@ -167,6 +167,7 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
       const double rate = alpha * eq + (1.0 - alpha) * g.rate[ii];
       if (off_start > 0.0) g.rate[ii] = rate;
       sec.rfac[j] = jc_rate_factor(mat, rate);
+      sec.rate[j] = rate;  // the /FAIL/JOHNSON D4 term
     }
 
     // The points' in-plane stress and plastic strain before the update (for the tangent factor).
@@ -190,7 +191,7 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
       const double t = sec.t[j], area = sec.area[j];
       const double dem[5] = {sec.dem[0][j], sec.dem[1][j], sec.dem[2][j], sec.dem[3][j], sec.dem[4][j]};
       const double dk[3] = {sec.dk[0][j], sec.dk[1][j], sec.dk[2][j]};
-      const double off = next_off(fail_limit, off_start, sec.eps_p_max[j]);
+      const double off = next_off(fail_limit, off_start, sec.eps_p_max[j], sec.fail_now[j]);
       g.off[ii] = off;
       g.w_plastic[ii] += sec.w_plastic[j];
       g.thick[ii] += sec.dthick[j] * off;
