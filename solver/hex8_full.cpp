@@ -577,7 +577,12 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     double f[8][3];
     for (int k = 0; k < 8; ++k)
       for (int a = 0; a < 3; ++a) f[k][a] = R[0][a] * fl[k][0] + R[1][a] * fl[k][1] + R[2][a] * fl[k][2];
-    store_nodal_forces<8, 3>(force, G, i, off, f);
+    // Deletion as the one-point brick (brick_next_off) once any point fails. As in hex8_fb.cpp, this cycle's
+    // forces and energies take the new factor: 0.8 in the failure cycle, none in the cycle that deletes the
+    // brick (with the factor at entry a brick reported deleted still pushed on its nodes for one cycle).
+    // Which share of failed points OpenRadioss needs for a fully integrated brick is not read: one.
+    const double off_new = brick_next_off(off, fails);
+    store_nodal_forces<8, 3>(force, G, i, off_new, f);
 
     // Element output: the mean stress in global axes, sigma_g = R^T sigma_loc R.
     const double S[3][3] = {
@@ -593,15 +598,13 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     for (std::size_t m = 0; m < 6; ++m) g.sig[m * G + i] = out[m];
     g.eps_p[i] = eps_mean;
     g.dmg[i] = dmg_max;
-    // Deletion as the one-point brick (brick_next_off) once any point fails; this cycle keeps the factor at
-    // entry. Which share of failed points OpenRadioss needs for a fully integrated brick is not read: one.
-    g.off[i] = brick_next_off(off, fails);
+    g.off[i] = off_new;
     g.vol[i] = vol;
     g.rho[i] = rho;
     g.q[i] = q_new;
     g.rate[i] = rate;
-    g.e_int[i] += off * de_int;
-    g.w_plastic[i] += off * w_pl;
+    g.e_int[i] += off_new * de_int;
+    g.w_plastic[i] += off_new * w_pl;
     g.dt[i] = dt_e;
     g.k_nodal[i] = 0.25 * rho * vol / (dt_e * dt_e);
   }

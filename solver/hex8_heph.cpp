@@ -255,9 +255,12 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     const double deps_p = pr.deps_p;
     const double sig_y = solid_yield_stress(mat, eps_p, rate);
     // Law 36 Eps_p_max and /FAIL/JOHNSON Ifail_so 1 start the brick's deletion (brick_next_off, as the
-    // one-point brick); this cycle's forces and energies keep the factor at entry.
+    // one-point brick). As in hex8_fb.cpp, this cycle's nodal forces and energies take the new factor: 0.8 in
+    // the failure cycle, none in the cycle that deletes the brick (with the factor at entry a brick reported
+    // deleted still pushed on its nodes for one cycle). The hourglass state keeps its own factor at entry.
     g.dmg[i] = dmg;
-    g.off[i] = brick_next_off(off, pr.element_fails);
+    const double off_new = brick_next_off(off, pr.element_fails);
+    g.off[i] = off_new;
 
     // Bulk viscosity, element step.
     const double l = std::cbrt(vol);
@@ -369,7 +372,7 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
       for (int r = 0; r < 3; ++r) f[k][r] = R[r][0] * a0 + R[r][1] * a1 + R[r][2] * a2;
     }
 
-    store_nodal_forces<8, 3>(force, G, i, off, f);
+    store_nodal_forces<8, 3>(force, G, i, off_new, f);
     for (int m = 0; m < 6; ++m) g.sig[static_cast<std::size_t>(m) * G + i] = sn[m];
     for (int d = 0; d < 3; ++d)
       for (int j = 0; j < 4; ++j) g.hg_stress[static_cast<std::size_t>(4 * d + j) * G + i] = S[d][j];
@@ -381,9 +384,9 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     g.rho[i] = rho;
     g.q[i] = q_new;
     g.rate[i] = rate;
-    g.e_int[i] += off * de_int;
-    g.w_hg[i] += off * de_hg;
-    g.w_plastic[i] += off * std::sqrt(svm2) * deps_p * vol;
+    g.e_int[i] += off_new * de_int;
+    g.w_hg[i] += off_new * de_hg;
+    g.w_plastic[i] += off_new * std::sqrt(svm2) * deps_p * vol;
     g.dt[i] = dt_e;
     g.k_nodal[i] = 0.25 * rho * vol / (dt_e * dt_e);
   }

@@ -161,9 +161,12 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
     const SolidPointResult pr = solid_point_update(mat, rate, de, mu, sn, eps_p, dmg, off);
     const double deps_p = pr.deps_p;
     // Law 36 Eps_p_max and /FAIL/JOHNSON Ifail_so 1 start the deletion as for the one-point brick
-    // (brick_next_off); this cycle keeps the factor at entry.
+    // (brick_next_off). As in hex8_fb.cpp, this cycle's forces and energies take the new factor: 0.8 in the
+    // failure cycle, none in the cycle that deletes it (with the factor at entry a tetrahedron reported
+    // deleted still pushed on its nodes for one cycle).
     g.dmg[i] = dmg;
-    g.off[i] = brick_next_off(off, pr.element_fails);
+    const double off_new = brick_next_off(off, pr.element_fails);
+    g.off[i] = off_new;
 
     // Bulk viscosity and element step.
     const double l = std::cbrt(vol);
@@ -195,7 +198,7 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
 #pragma GCC unroll 3
       for (int a = 0; a < 3; ++a) f[k][a] = -(T[a][0] * b[k][0] + T[a][1] * b[k][1] + T[a][2] * b[k][2]);
 
-    store_nodal_forces<4, 3>(force, G, i, off, f);
+    store_nodal_forces<4, 3>(force, G, i, off_new, f);
 #pragma GCC unroll 6
     for (int m = 0; m < 6; ++m) g.sig[static_cast<std::size_t>(m) * G + i] = sn[m];
     g.eps_p[i] = eps_p;
@@ -203,8 +206,8 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
     g.rho[i] = rho;
     g.q[i] = q_new;
     g.rate[i] = rate;
-    g.e_int[i] += off * de_int;
-    g.w_plastic[i] += off * svm * deps_p * vol;
+    g.e_int[i] += off_new * de_int;
+    g.w_plastic[i] += off_new * svm * deps_p * vol;
     g.dt[i] = dt_e;
     g.k_nodal[i] = 0.5 * rho * vol / (dt_e * dt_e);
   }

@@ -148,9 +148,10 @@ double max_abs(const std::vector<double>& v) {
 
 // ---- solids -------------------------------------------------------------------------------------------
 
-enum class Solid { Heph, Full14, Tetra };
+enum class Solid { OnePoint, Heph, Full14, Tetra };
 const char* name(Solid k) {
   switch (k) {
+    case Solid::OnePoint: return "one-point brick (Isolid 1)";
     case Solid::Heph: return "HEPH (Isolid 24)";
     case Solid::Full14: return "fully integrated (Isolid 14)";
     case Solid::Tetra: return "tetra4";
@@ -162,6 +163,7 @@ const char* name(Solid k) {
 // relative gap |D - eps_p / D1| / max(D, 1e-300) over the points.
 struct SolidRec {
   double off = 1, eps_p = 0, dmg = 0, dmg_gap = 0, dmg_elem = 0;
+  double f_max = 0;  // largest nodal force component of the cycle
 };
 
 // Isochoric stretch v = (10 x, -5 y, -5 z) on fixed nodes, dt1 1e-5: a strain increment of 1e-4 along x per
@@ -188,6 +190,11 @@ std::vector<SolidRec> drive_solid(Solid kind, const MaterialParams& mat, int cyc
     return ns;
   };
   auto gap = [](double d, double e) { return std::abs(d - e / kD1) / std::max(d, 1e-300); };
+  auto f_max = [](const std::vector<double>& f) {
+    double m = 0;
+    for (std::size_t r = 0; r < f.size() / G; ++r) m = std::max(m, std::abs(f[r * G]));
+    return m;
+  };
   std::vector<SolidRec> out;
   if (kind == Solid::Tetra) {
     const NodeState ns = nodes({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
@@ -201,7 +208,8 @@ std::vector<SolidRec> drive_solid(Solid kind, const MaterialParams& mat, int cyc
     g.rho[0] = mat.rho0;
     for (int n = 0; n < cycles && g.off[0] > 0; ++n) {
       tetra4_forces(g, ns, mat, cyc);
-      out.push_back({g.off[0], g.eps_p[0], g.dmg[0], gap(g.dmg[0], g.eps_p[0]), g.dmg[0]});
+      out.push_back(
+          {g.off[0], g.eps_p[0], g.dmg[0], gap(g.dmg[0], g.eps_p[0]), g.dmg[0], f_max(g.nodal_force)});
     }
     return out;
   }
@@ -211,9 +219,11 @@ std::vector<SolidRec> drive_solid(Solid kind, const MaterialParams& mat, int cyc
   BrickGroup g;
   g.allocate(1);
   for (std::size_t k = 0; k < 8; ++k) g.conn[k * G] = static_cast<std::int32_t>(k);
-  if (kind == Solid::Heph) {
-    g.isolid = 24;
-    g.iframe = 2;
+  if (kind == Solid::Heph || kind == Solid::OnePoint) {
+    if (kind == Solid::Heph) {
+      g.isolid = 24;
+      g.iframe = 2;
+    }
     std::array<radx::model::Vec3, 8> xe;
     for (std::size_t k = 0; k < 8; ++k) xe[k] = {pts[k][0], pts[k][1], pts[k][2]};
     g.vol0[0] = g.vol[0] = radx::model::brick_volume(xe);
@@ -237,9 +247,12 @@ std::vector<SolidRec> drive_solid(Solid kind, const MaterialParams& mat, int cyc
   g.rho[0] = mat.rho0;
   for (int n = 0; n < cycles && g.off[0] > 0; ++n) {
     SolidRec r;
-    if (kind == Solid::Heph) {
-      hex8_heph_forces(g, ns, mat, cyc);
-      r = {g.off[0], g.eps_p[0], g.dmg[0], gap(g.dmg[0], g.eps_p[0]), g.dmg[0]};
+    if (kind == Solid::Heph || kind == Solid::OnePoint) {
+      if (kind == Solid::Heph)
+        hex8_heph_forces(g, ns, mat, cyc);
+      else
+        hex8_forces(g, ns, mat, cyc);
+      r = {g.off[0], g.eps_p[0], g.dmg[0], gap(g.dmg[0], g.eps_p[0]), g.dmg[0], 0.0};
     } else {
       hex8_full_forces(g, ns, mat, cyc);
       r.off = g.off[0];
@@ -251,6 +264,7 @@ std::vector<SolidRec> drive_solid(Solid kind, const MaterialParams& mat, int cyc
         r.dmg_gap = std::max(r.dmg_gap, gap(d, e));
       }
     }
+    r.f_max = f_max(g.nodal_force);
     out.push_back(r);
   }
   return out;
@@ -510,4 +524,26 @@ TEST_CASE("failwire: HEPH limits its hourglass stresses by law 36's tabulated fl
   }
   INFO("after 50 steps: LAW1 " << f_el.back() << ", law 36 " << f_36.back());
   CHECK(f_36.back() < 0.5 * f_el.back());
+}
+
+TEST_CASE("failwire: a failing solid's forces take the new factor in the same cycle, as the one-point brick",
+          "[failwire][brick][tetra]") {
+  // The one-point brick (hex8_fb.cpp) scales the forces and energies of a cycle by the factor that cycle
+  // sets: 0.8 in the failure cycle, 0.8^(k+1) k cycles later, and no force at all in the cycle that deletes
+  // it (the element reported deleted pushes on no node). The new kernels must do the same. The stress of
+  // consecutive cycles differs by one cycle's hardening (H d_eps_p ~ 0.1 MPa on ~220 MPa, 5e-4 relative), so
+  // the force ratio of two cycles is the ratio of their factors within 2e-3.
+  const MaterialParams mat = law2_johnson();
+  for (Solid kind : {Solid::OnePoint, Solid::Heph, Solid::Full14, Solid::Tetra}) DYNAMIC_SECTION(name(kind)) {
+      const auto rec = drive_solid(kind, mat, 600);
+      const std::size_t t = first_below_one(rec);
+      REQUIRE(t > 0);
+      REQUIRE(rec.size() == t + 12);
+      REQUIRE(rec[t - 1].f_max > 0);
+      INFO("forces: before " << rec[t - 1].f_max << ", trigger " << rec[t].f_max << ", next "
+                             << rec[t + 1].f_max << ", deletion cycle " << rec[t + 11].f_max);
+      CHECK(std::abs(rec[t].f_max / rec[t - 1].f_max - 0.8) <= 2e-3);
+      CHECK(std::abs(rec[t + 1].f_max / rec[t].f_max - 0.8) <= 2e-3);
+      CHECK(rec[t + 11].f_max == 0.0);
+    }
 }
