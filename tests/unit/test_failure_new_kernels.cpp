@@ -309,7 +309,9 @@ TEST_CASE("failwire: QEPH and QBAT with law 36 Eps_p_max are deleted in the cycl
       // The trigger is the cycle in which the largest point eps_p passes 0.01 (strictly above, sigeps36.F).
       CHECK(ep_before <= kEpsMax);
       CHECK(shell_max_eps_p(c.g) > kEpsMax);
-      // Deleted: the next cycle gives no force and an infinite step.
+      // Deleted in that very cycle: it gives no force (off 0 scales the forces), nor in the next one, whose
+      // step is infinite.
+      CHECK(max_abs(c.g.nodal_force) == 0.0);
       run_shell(c, mat);
       CHECK(max_abs(c.g.nodal_force) == 0.0);
       CHECK(std::isinf(c.g.dt[0]));
@@ -358,7 +360,8 @@ TEST_CASE("failwire: QEPH and QBAT with LAW2 + FAIL/JOHNSON: D = eps_p / D1, del
       CHECK(c.g.off[0] == 0.0);
       double dmax = 0;
       for (std::size_t r = 0; r < rows; ++r) dmax = std::max(dmax, c.g.dmg[r * G]);
-      CHECK(dmax == 1.0);  // capped at 1 exactly
+      CHECK(dmax == 1.0);                      // capped at 1 exactly
+      CHECK(max_abs(c.g.nodal_force) == 0.0);  // deleted in this cycle: no force
       CHECK(ep_before < kD1 * (1 + kCross));
       CHECK(shell_max_eps_p(c.g) >= kD1 * (1 - kCross));
     }
