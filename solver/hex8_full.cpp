@@ -17,9 +17,12 @@
 //
 //   frame (corot): g_xi = dx/dxi(0), g_eta, g_zeta at the centre; Q = [g/|g|] made orthogonal by the
 //     iteration Q <- (Q + Q^-T)/2 (the rotation of its polar decomposition, symmetric in the three
-//     directions), then e1 = q1, e3 = e1 x q2 / |.|, e2 = e3 x e1; R = rows e1 e2 e3. x_loc = R x, v_loc = R
-//     v. Without corot (Iframe 1 for 12 and 17) R = I and the stress gets the Jaumann rotation of 3.2 per
-//     point.
+//     directions), then e1 = q1, e3 = e1 x q2 / |.|, e2 = e3 x e1; R = rows e1 e2 e3. S8E (17, 18) as its
+//     sortho3.F: three passes of q_c <- unit(q_c+1 x q_c+2 + q_c), then Gram-Schmidt led by eta: e_eta = q2,
+//     e_xi = e_eta x q3 / |.|, e_zeta = e_xi x e_eta (S8E's local x, y, z are the eta, zeta, xi directions;
+//     R keeps the rows in xi, eta, zeta order, which changes no result of an isotropic law). x_loc = R x,
+//     v_loc = R v. Without corot (Iframe 1 for 12 and 17) R = I and the stress gets the Jaumann rotation
+//     of 3.2 per point.
 //   per point: J_p = sum_k x_k (x) dN_k/dxi(p), V_p = det J_p, b_pk = J_p^-T dN_k/dxi(p),
 //     L_p = sum_k v_k (x) b_pk, D_p = sym L_p (engineering shears), V = sum_p V_p (exact trilinear volume)
 //   strain operator per formulation (in the local frame; see asqbi_operator and select_operator below):
@@ -28,9 +31,11 @@
 //       b_pk = bc_k + sum_m gamma_mk grad h_m(p) (exact for the trilinear brick); shear drops the bending
 //       mode of its plane and the warping mode; with Icpre != 1 the normal strains get -nu/(1-nu) and -nu
 //       terms of the other components' hourglass parts (ASQBI, Belytschko and Bindeman 1993).
-//     18 with Icpre 0 or 2 (S8E: solide8e/s8eselecsh.F, s8ederish2.F, s8ederi_bij.F, s8edefo3.F): shear
-//       gradients averaged over the four points sharing xi (xy), zeta (xz) or eta (yz), Poisson terms from
-//       the hourglass parts the shear keeps and drops.
+//     18 with Icpre 0 or 2 (S8E: solide8e/s8eselecsh.F, s8ederish2.F, s8ederi_bij.F, s8edefo3.F,
+//       solide/srepiso3.F, sortho3.F): the shear of each plane averaged over the four points sharing the
+//       natural coordinate normal to that plane (S8E's sets IR, IT, IS for its local xy, xz, yz, whose axes
+//       are eta, zeta, xi), so no bending mode locks; Poisson terms from the hourglass parts the shear keeps
+//       and drops.
 //     Forces are the transpose (work-conjugate): f = -sum_p V_p B~_p^T (sigma_p - q I). The coupling terms'
 //     trace updates the point's reference volume V0_p <- V0_p (1 - dt tr) so that mu sees it.
 //   volumetric strain for the material (LAW1/LAW2 take the pressure from mu only, the deviator from de):
@@ -132,7 +137,7 @@ inline double det3(const double m[3][3]) {
 }
 
 // Co-rotational frame R (rows e1 e2 e3) from the centre directions of the element.
-void corot_frame(const double x[8][3], double R[3][3]) {
+void corot_frame(const double x[8][3], double R[3][3], bool s8e) {
   double q[3][3];  // columns: unit centre directions along xi, eta, zeta
   for (int c = 0; c < 3; ++c) {
     double g[3] = {0, 0, 0};
@@ -140,6 +145,35 @@ void corot_frame(const double x[8][3], double R[3][3]) {
       for (int d = 0; d < 3; ++d) g[d] += 0.125 * kNat[k][c] * x[k][d];
     const double n = std::sqrt(dot3(g, g));
     for (int d = 0; d < 3; ++d) q[d][c] = n > 0 ? g[d] / n : (d == c ? 1.0 : 0.0);
+  }
+  if (s8e) {
+    // S8E (sortho3.F): three passes of e_c <- unit(e_c+1 x e_c+2 + e_c), cyclic, then Gram-Schmidt led by eta
+    // (then zeta): e_eta, e_xi = unit(e_eta x e_zeta), e_zeta = e_xi x e_eta.
+    for (int it = 0; it < 3; ++it) {
+      double nq[3][3];
+      for (int c = 0; c < 3; ++c) {
+        const double a[3] = {q[0][(c + 1) % 3], q[1][(c + 1) % 3], q[2][(c + 1) % 3]};
+        const double b[3] = {q[0][(c + 2) % 3], q[1][(c + 2) % 3], q[2][(c + 2) % 3]};
+        double e[3];
+        cross(a, b, e);
+        for (int d = 0; d < 3; ++d) e[d] += q[d][c];
+        const double n = std::sqrt(dot3(e, e));
+        for (int d = 0; d < 3; ++d) nq[d][c] = n > 0 ? e[d] / n : q[d][c];
+      }
+      for (int d = 0; d < 3; ++d)
+        for (int c = 0; c < 3; ++c) q[d][c] = nq[d][c];
+    }
+    double ee[3] = {q[0][1], q[1][1], q[2][1]}, qz[3] = {q[0][2], q[1][2], q[2][2]}, ex[3], ez[3];
+    cross(ee, qz, ex);
+    const double n = std::sqrt(dot3(ex, ex));
+    for (double& v : ex) v /= n;
+    cross(ex, ee, ez);
+    for (int d = 0; d < 3; ++d) {
+      R[0][d] = ex[d];
+      R[1][d] = ee[d];
+      R[2][d] = ez[d];
+    }
+    return;
   }
   // Polar rotation by the averaging iteration: converges quadratically from a nearly orthogonal start.
   for (int it = 0; it < 4; ++it) {
@@ -266,11 +300,13 @@ void asqbi_operator(const double b[8][8][3], const double hg[8][4][8][3], const 
 
 // Isolid 18 (S8E with its shear selection, Icpre 0 or 2), in the co-rotational frame:
 //   shear dv_a/dx_c at point p = the plain mean of the full gradient over the four points sharing p's natural
-//   coordinate xi for the pair xy, zeta for xz, eta for yz;
+//   coordinate normal to the plane (a, c): zeta for xy, eta for xz, xi for yz in this frame (x along xi). The
+//   shear is then constant over its own plane and both bending modes of the plane are free of it. (S8E's
+//   local axes are eta, zeta, xi and it averages xy over xi, xz over zeta, yz over eta: the same rule.)
 //   normal strains: with S_ac,k = that mean minus the centre gradient bc_k,a (the hourglass part kept by the
 //   pair (a, c)) and R_a,k = b_pk,a - bc_k,a - sum_{c != a} S_ac,k (the rest), eps_bb += sum_k (-nub S_at,k -
 //   nu R_a,k) v_k,a for a != b, t the third axis.
-constexpr int kPairDir[3][3] = {{-1, 0, 2}, {0, -1, 1}, {2, 1, -1}};  // natural direction of the pair's sets
+constexpr int kPairDir[3][3] = {{-1, 2, 1}, {2, -1, 0}, {1, 0, -1}};  // natural direction normal to the pair
 void select_operator(const double b[8][8][3], const double bc[8][3], double nu, PointOperator& op) {
   const double nub = nu / (1.0 - nu);
   for (int p = 0; p < 8; ++p)
@@ -404,7 +440,7 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
 
     // Frame and local coordinates.
     double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    if (g.corot) corot_frame(xg, R);
+    if (g.corot) corot_frame(xg, R, g.dt_points && g.strain != BrickGroup::FullStrain::Asqbi);
     double x[8][3], v[8][3];
     for (int k = 0; k < 8; ++k)
       for (int a = 0; a < 3; ++a) {
