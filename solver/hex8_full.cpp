@@ -45,7 +45,8 @@
 //   material: solid_point_update(de_p = D_p dt1, mu_p) per point, rate from the element-mean D (6.2)
 //   bulk viscosity (3.3) per element from the mean tr D: q = rho ec l (qa^2 l ec + qb c), l = V^(1/3)
 //   internal energy: dE = sum_p dt1/2 V_p,avg (sigma_old + sigma_new)_p : D_p - dV/2 (q_old + q_new),
-//     V_p,avg = V_p (V - dV/2) / V; no hourglass energy (none is needed)
+//     V_p,avg = V_p (V - dV/2) / V. Isolid 18 with LAW1 adds S8E's viscous hourglass force (s8eforc3.F ->
+//     s8evis3.F, see s8e_hourglass_viscosity): its dissipated work goes to e_hg, not to the internal energy
 //   forces: f_k = -R^T sum_p V_p B~_p^T (sigma_p - q I), B~_p the operator above
 //   element step: 14, 17, 18 (S8Z s8zderim3.F, S8E s8ederi_2.F, /DTSDE off): dx = min_p 8 V_p / A_mid with
 //     A_mid = max 4 |g_a x g_b| of the centre directions; 12 (inferred): dx = V / max face area; dt = dx /
@@ -334,6 +335,72 @@ void select_operator(const double b[8][8][3], const double bc[8][3], double nu, 
       }
 }
 
+// Isolid 18 with LAW1 (S8E, s8evis3.F): a viscous force on the hourglass rates, with the structure of
+// HEPH's hourglass (hex8_heph.cpp, szhour3.F) and no stiffness. In the frame x along xi:
+//   gamma_jk = (m_jk - bc_k . (m_j . x)) / 8, q(d, j) = sum_k gamma_jk v_k[d] (modes m1 eta-zeta, m2 zeta-xi,
+//   m3 xi-eta, m4 xi-eta-zeta), J_d = 8 |g_d|_d (4 x the edge), T = cv q with cv = 0.0025 rho c V^(1/3),
+//   N = H T (HEPH's H with nu1 = 2/(1-nu), nu2 = nu nu1, nu3 = 2/3 (1+nu)), f_k[d] -= sum_j gamma_jk N(d, j).
+// Returns the dissipated power sum N q. OpenRadioss books it nowhere (the QA deck HSEPH shows the loss as
+// an 18 % energy error); radx books it as hourglass energy, outside the internal energy.
+constexpr int kHgMode[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
+                               {1, -1, -1, 1, -1, 1, 1, -1},
+                               {1, -1, 1, -1, 1, -1, 1, -1},
+                               {-1, 1, -1, 1, 1, -1, 1, -1}};
+double s8e_hourglass_viscosity(const double x[8][3], const double v[8][3], double vol, double cv, double nu,
+                               double fl[8][3]) {
+  double Jc[3][3] = {};
+  for (int k = 0; k < 8; ++k)
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c) Jc[a][c] += 0.125 * x[k][a] * kNat[k][c];
+  const double det = det3(Jc);
+  if (!(det > 0.0)) return 0.0;
+  double ic[3][3];
+  inverse3(Jc, det, ic);
+  double bc[8][3];
+  for (int k = 0; k < 8; ++k)
+    for (int a = 0; a < 3; ++a)
+      bc[k][a] = 0.125 * (ic[0][a] * kNat[k][0] + ic[1][a] * kNat[k][1] + ic[2][a] * kNat[k][2]);
+  const double J[3] = {8.0 * Jc[0][0], 8.0 * Jc[1][1], 8.0 * Jc[2][2]};
+  if (!(J[0] > 0.0) || !(J[1] > 0.0) || !(J[2] > 0.0)) return 0.0;
+  double gam[4][8], q[3][4] = {};
+  for (int j = 0; j < 4; ++j) {
+    double hx[3] = {0, 0, 0};
+    for (int k = 0; k < 8; ++k)
+      for (int d = 0; d < 3; ++d) hx[d] += kHgMode[j][k] * x[k][d];
+    for (int k = 0; k < 8; ++k) {
+      gam[j][k] = 0.125 * (kHgMode[j][k] - dot3(bc[k], hx));
+      for (int d = 0; d < 3; ++d) q[d][j] += gam[j][k] * v[k][d];
+    }
+  }
+  double T[3][4];
+  for (int d = 0; d < 3; ++d)
+    for (int j = 0; j < 4; ++j) T[d][j] = cv * q[d][j];
+  const double h11 = J[1] * J[2] / J[0], h22 = J[0] * J[2] / J[1], h33 = J[0] * J[1] / J[2];
+  const double h12 = J[2], h13 = J[1], h23 = J[0];
+  const double nu1 = 2.0 / (1.0 - nu), nu2 = nu * nu1, nu3 = 2.0 / 3.0 * (1.0 + nu);
+  double N[3][4];
+  N[0][0] = (h22 + h33) * T[0][0] + h12 * T[1][1] + h13 * T[2][2];
+  N[1][1] = (h11 + h33) * T[1][1] + h23 * T[2][2] + h12 * T[0][0];
+  N[2][2] = (h11 + h22) * T[2][2] + h13 * T[0][0] + h23 * T[1][1];
+  N[0][1] = nu1 * h11 * T[0][1] + nu2 * h12 * T[1][0];
+  N[0][2] = nu1 * h11 * T[0][2] + nu2 * h13 * T[2][0];
+  N[1][0] = nu1 * h22 * T[1][0] + nu2 * h12 * T[0][1];
+  N[2][0] = nu1 * h33 * T[2][0] + nu2 * h13 * T[0][2];
+  N[1][2] = nu1 * h22 * T[1][2] + nu2 * h23 * T[2][1];
+  N[2][1] = nu1 * h33 * T[2][1] + nu2 * h23 * T[1][2];
+  N[0][3] = nu3 * h11 * T[0][3];
+  N[1][3] = nu3 * h22 * T[1][3];
+  N[2][3] = nu3 * h33 * T[2][3];
+  double power = 0;
+  for (int d = 0; d < 3; ++d)
+    for (int j = 0; j < 4; ++j) {
+      power += N[d][j] * q[d][j];
+      for (int k = 0; k < 8; ++k) fl[k][d] -= gam[j][k] * N[d][j];
+    }
+  (void)vol;
+  return power;
+}
+
 void plain_operator(const double b[8][8][3], PointOperator& op) {
   for (int p = 0; p < 8; ++p)
     for (int a = 0; a < 3; ++a)
@@ -380,6 +447,7 @@ void resolve_full_brick(const model::SolidProperty& prop, const MaterialParams& 
         g.strain = BrickGroup::FullStrain::SelectShear;
         g.coupled = true;
       }
+      g.s8e_visc = mat.law == model::MaterialLaw::Elastic;  // s8eforc3.F: two point layers and LAW1
       g.dt_points = true;
       break;
     default:  // 12: the deck's frame; density per element, so the pressure is constant over the element
@@ -606,6 +674,9 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
         }
       for (int m = 0; m < 6; ++m) smean[m] += vp[p] * sn[p][m] / vol;
     }
+    double w_visc = 0;
+    if (g.s8e_visc)
+      w_visc = s8e_hourglass_viscosity(x, v, vol, rho * c * 0.0025 * std::cbrt(vol), mat.nu, fl);
     double f[8][3];
     for (int k = 0; k < 8; ++k)
       for (int a = 0; a < 3; ++a) f[k][a] = R[0][a] * fl[k][0] + R[1][a] * fl[k][1] + R[2][a] * fl[k][2];
@@ -629,6 +700,7 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     g.q[i] = q_new;
     g.rate[i] = rate;
     g.e_int[i] += off * de_int;
+    g.e_hg[i] += off * dt1 * w_visc;
     g.w_plastic[i] += off * w_pl;
     g.dt[i] = dt_e;
     g.k_nodal[i] = 0.25 * rho * vol / (dt_e * dt_e);

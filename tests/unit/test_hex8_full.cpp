@@ -383,3 +383,31 @@ TEST_CASE("fully integrated brick: time step of a degenerate brick (S8Z length)"
     CHECK(std::abs(g.dt[0] / (len / (c * (0.05 + std::sqrt(1.0 + 0.05 * 0.05)))) - 1.0) < 1e-12);
   }
 }
+
+TEST_CASE("Isolid 18 with LAW1: S8E's hourglass viscosity in closed form", "[brick][full]") {
+  // A centred cube of side 2 (J_d = 8, so every H term is 8; gamma_jk = m_jk / 8) with the velocity v_z =
+  // s m3_k (the xi-eta hourglass mode): q(z, m3) = s, T = cv s, N(z, m3) = (h11 + h22) T = 16 cv s, power
+  // 16 cv s^2 with cv = 0.0025 rho c V^(1/3) = 0.005 rho c. Booked as hourglass energy over the cycle:
+  // e_hg = dt1 16 cv s^2. A linear velocity field (no hourglass part) dissipates nothing.
+  // Tolerance 1e-9 relative: the only geometry change is dt1 s (1e-9) of the side.
+  const MaterialParams mat = elastic(2e5, 0.25, 1e-8);
+  constexpr int m3[8] = {1, -1, 1, -1, 1, -1, 1, -1};
+  const double s = 1.0, dt1 = 1e-9;
+  for (const bool hourglass : {true, false}) {
+    auto pts = cube(2.0);
+    for (auto& p : pts)
+      for (double& c : p) c -= 1.0;
+    NodeState ns = make_nodes(pts);
+    for (std::size_t k = 0; k < 8; ++k) ns.vz[k] = hourglass ? s * m3[k] : s * pts[k][0];
+    BrickGroup g = make_group(kCube, ns, mat, 18);
+    REQUIRE(g.s8e_visc);
+    CycleInfo cyc;
+    cyc.dt1 = dt1;
+    hex8_full_forces(g, ns, mat, cyc);
+    const double cv = 0.0025 * mat.rho0 * mat.c_solid * 2.0;
+    if (hourglass)
+      CHECK(std::abs(g.e_hg[0] / (dt1 * 16.0 * cv * s * s) - 1.0) < 1e-9);
+    else
+      CHECK(std::abs(g.e_hg[0]) < 1e-12 * dt1 * 16.0 * cv * s * s);
+  }
+}
