@@ -1356,8 +1356,11 @@ def semantic(ck, m):
             if "/TETRA4" in kinds and resolved(o, "Itetra4", "/DEF_SOLID", 1000) in (1, 3, 10):
                 bad.append("Itetra4")
             isolid = resolved(o, "Isolid", "/DEF_SOLID", 1)
-            if isolid not in (1, 2, 24):
+            # one point (1, 2), HEPH (24) and the fully integrated 12, 14, 17, 18 (2 x 2 x 2 points)
+            if isolid not in (1, 2, 24, 12, 14, 17, 18):
                 bad.append("Isolid")
+            if isolid == 14 and val(o, "Inpts", 0) not in (0, 222):
+                bad.append("Inpts")
             if isolid == 24 and resolved(o, "Icpre", "/DEF_SOLID", 0) not in (0, 1, 3):
                 bad.append("Icpre")
             if isolid == 24 and val(o, "Ihkt", 0) > 1:

@@ -98,11 +98,12 @@ struct BrickGroup {
   enum class FullStrain : std::uint8_t { Plain, Asqbi, SelectShear };
   FullStrain strain = FullStrain::Plain;
   bool coupled = false;
-  bool dt_points = false;       // element length min_p 8 V_p / A_mid (S8Z, S8E) instead of V / max face area
-  std::vector<double> sig_p;    // [8][6][G] point stresses (co-rotational frame when corot), 8 points only
-  std::vector<double> eps_p_p;  // [8][G] point plastic strains
-  std::vector<double> dmg_p;    // [8][G] point /FAIL/JOHNSON damage
-  std::vector<double> vol0_p;   // [8][G] initial point volumes det J_p
+  bool dt_points = false;  // element length min_p 8 V_p / A_mid (S8Z, S8E) instead of V / max face area
+  bool s8e_visc = false;   // Isolid 18 with LAW1: S8E's viscous hourglass damping (s8evis3.F), work in e_hg
+  std::vector<double> sig_p;       // [8][6][G] point stresses (co-rotational frame when corot), 8 points only
+  std::vector<double> eps_p_p;     // [8][G] point plastic strains
+  std::vector<double> dmg_p;       // [8][G] point /FAIL/JOHNSON damage
+  std::vector<double> vol0_p;      // [8][G] initial point volumes det J_p
   std::vector<std::int32_t> conn;  // [8][G]
   std::vector<double> vol0;        // [G] initial (one-point) volume
   std::vector<double> vol;         // [G] current volume

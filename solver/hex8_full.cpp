@@ -17,9 +17,12 @@
 //
 //   frame (corot): g_xi = dx/dxi(0), g_eta, g_zeta at the centre; Q = [g/|g|] made orthogonal by the
 //     iteration Q <- (Q + Q^-T)/2 (the rotation of its polar decomposition, symmetric in the three
-//     directions), then e1 = q1, e3 = e1 x q2 / |.|, e2 = e3 x e1; R = rows e1 e2 e3. x_loc = R x, v_loc = R
-//     v. Without corot (Iframe 1 for 12 and 17) R = I and the stress gets the Jaumann rotation of 3.2 per
-//     point.
+//     directions), then e1 = q1, e3 = e1 x q2 / |.|, e2 = e3 x e1; R = rows e1 e2 e3. S8E (17, 18) as its
+//     sortho3.F: three passes of q_c <- unit(q_c+1 x q_c+2 + q_c), then Gram-Schmidt led by eta: e_eta = q2,
+//     e_xi = e_eta x q3 / |.|, e_zeta = e_xi x e_eta (S8E's local x, y, z are the eta, zeta, xi directions;
+//     R keeps the rows in xi, eta, zeta order, which changes no result of an isotropic law). x_loc = R x,
+//     v_loc = R v. Without corot (Iframe 1 for 12 and 17) R = I and the stress gets the Jaumann rotation
+//     of 3.2 per point.
 //   per point: J_p = sum_k x_k (x) dN_k/dxi(p), V_p = det J_p, b_pk = J_p^-T dN_k/dxi(p),
 //     L_p = sum_k v_k (x) b_pk, D_p = sym L_p (engineering shears), V = sum_p V_p (exact trilinear volume)
 //   strain operator per formulation (in the local frame; see asqbi_operator and select_operator below):
@@ -28,9 +31,11 @@
 //       b_pk = bc_k + sum_m gamma_mk grad h_m(p) (exact for the trilinear brick); shear drops the bending
 //       mode of its plane and the warping mode; with Icpre != 1 the normal strains get -nu/(1-nu) and -nu
 //       terms of the other components' hourglass parts (ASQBI, Belytschko and Bindeman 1993).
-//     18 with Icpre 0 or 2 (S8E: solide8e/s8eselecsh.F, s8ederish2.F, s8ederi_bij.F, s8edefo3.F): shear
-//       gradients averaged over the four points sharing xi (xy), zeta (xz) or eta (yz), Poisson terms from
-//       the hourglass parts the shear keeps and drops.
+//     18 with Icpre 0 or 2 (S8E: solide8e/s8eselecsh.F, s8ederish2.F, s8ederi_bij.F, s8edefo3.F,
+//       solide/srepiso3.F, sortho3.F): the shear of each plane averaged over the four points sharing the
+//       natural coordinate normal to that plane (S8E's sets IR, IT, IS for its local xy, xz, yz, whose axes
+//       are eta, zeta, xi), so no bending mode locks; Poisson terms from the hourglass parts the shear keeps
+//       and drops.
 //     Forces are the transpose (work-conjugate): f = -sum_p V_p B~_p^T (sigma_p - q I). The coupling terms'
 //     trace updates the point's reference volume V0_p <- V0_p (1 - dt tr) so that mu sees it.
 //   volumetric strain for the material (LAW1/LAW2 take the pressure from mu only, the deviator from de):
@@ -40,7 +45,8 @@
 //   material: solid_point_update(de_p = D_p dt1, mu_p) per point, rate from the element-mean D (6.2)
 //   bulk viscosity (3.3) per element from the mean tr D: q = rho ec l (qa^2 l ec + qb c), l = V^(1/3)
 //   internal energy: dE = sum_p dt1/2 V_p,avg (sigma_old + sigma_new)_p : D_p - dV/2 (q_old + q_new),
-//     V_p,avg = V_p (V - dV/2) / V; no hourglass energy (none is needed)
+//     V_p,avg = V_p (V - dV/2) / V. Isolid 18 with LAW1 adds S8E's viscous hourglass force (s8eforc3.F ->
+//     s8evis3.F, see s8e_hourglass_viscosity): its dissipated work goes to e_hg, not to the internal energy
 //   forces: f_k = -R^T sum_p V_p B~_p^T (sigma_p - q I), B~_p the operator above
 //   element step: 14, 17, 18 (S8Z s8zderim3.F, S8E s8ederi_2.F, /DTSDE off): dx = min_p 8 V_p / A_mid with
 //     A_mid = max 4 |g_a x g_b| of the centre directions; 12 (inferred): dx = V / max face area; dt = dx /
@@ -132,7 +138,7 @@ inline double det3(const double m[3][3]) {
 }
 
 // Co-rotational frame R (rows e1 e2 e3) from the centre directions of the element.
-void corot_frame(const double x[8][3], double R[3][3]) {
+void corot_frame(const double x[8][3], double R[3][3], bool s8e) {
   double q[3][3];  // columns: unit centre directions along xi, eta, zeta
   for (int c = 0; c < 3; ++c) {
     double g[3] = {0, 0, 0};
@@ -140,6 +146,35 @@ void corot_frame(const double x[8][3], double R[3][3]) {
       for (int d = 0; d < 3; ++d) g[d] += 0.125 * kNat[k][c] * x[k][d];
     const double n = std::sqrt(dot3(g, g));
     for (int d = 0; d < 3; ++d) q[d][c] = n > 0 ? g[d] / n : (d == c ? 1.0 : 0.0);
+  }
+  if (s8e) {
+    // S8E (sortho3.F): three passes of e_c <- unit(e_c+1 x e_c+2 + e_c), cyclic, then Gram-Schmidt led by eta
+    // (then zeta): e_eta, e_xi = unit(e_eta x e_zeta), e_zeta = e_xi x e_eta.
+    for (int it = 0; it < 3; ++it) {
+      double nq[3][3];
+      for (int c = 0; c < 3; ++c) {
+        const double a[3] = {q[0][(c + 1) % 3], q[1][(c + 1) % 3], q[2][(c + 1) % 3]};
+        const double b[3] = {q[0][(c + 2) % 3], q[1][(c + 2) % 3], q[2][(c + 2) % 3]};
+        double e[3];
+        cross(a, b, e);
+        for (int d = 0; d < 3; ++d) e[d] += q[d][c];
+        const double n = std::sqrt(dot3(e, e));
+        for (int d = 0; d < 3; ++d) nq[d][c] = n > 0 ? e[d] / n : q[d][c];
+      }
+      for (int d = 0; d < 3; ++d)
+        for (int c = 0; c < 3; ++c) q[d][c] = nq[d][c];
+    }
+    double ee[3] = {q[0][1], q[1][1], q[2][1]}, qz[3] = {q[0][2], q[1][2], q[2][2]}, ex[3], ez[3];
+    cross(ee, qz, ex);
+    const double n = std::sqrt(dot3(ex, ex));
+    for (double& v : ex) v /= n;
+    cross(ex, ee, ez);
+    for (int d = 0; d < 3; ++d) {
+      R[0][d] = ex[d];
+      R[1][d] = ee[d];
+      R[2][d] = ez[d];
+    }
+    return;
   }
   // Polar rotation by the averaging iteration: converges quadratically from a nearly orthogonal start.
   for (int it = 0; it < 4; ++it) {
@@ -266,11 +301,13 @@ void asqbi_operator(const double b[8][8][3], const double hg[8][4][8][3], const 
 
 // Isolid 18 (S8E with its shear selection, Icpre 0 or 2), in the co-rotational frame:
 //   shear dv_a/dx_c at point p = the plain mean of the full gradient over the four points sharing p's natural
-//   coordinate xi for the pair xy, zeta for xz, eta for yz;
+//   coordinate normal to the plane (a, c): zeta for xy, eta for xz, xi for yz in this frame (x along xi). The
+//   shear is then constant over its own plane and both bending modes of the plane are free of it. (S8E's
+//   local axes are eta, zeta, xi and it averages xy over xi, xz over zeta, yz over eta: the same rule.)
 //   normal strains: with S_ac,k = that mean minus the centre gradient bc_k,a (the hourglass part kept by the
 //   pair (a, c)) and R_a,k = b_pk,a - bc_k,a - sum_{c != a} S_ac,k (the rest), eps_bb += sum_k (-nub S_at,k -
 //   nu R_a,k) v_k,a for a != b, t the third axis.
-constexpr int kPairDir[3][3] = {{-1, 0, 2}, {0, -1, 1}, {2, 1, -1}};  // natural direction of the pair's sets
+constexpr int kPairDir[3][3] = {{-1, 2, 1}, {2, -1, 0}, {1, 0, -1}};  // natural direction normal to the pair
 void select_operator(const double b[8][8][3], const double bc[8][3], double nu, PointOperator& op) {
   const double nub = nu / (1.0 - nu);
   for (int p = 0; p < 8; ++p)
@@ -296,6 +333,72 @@ void select_operator(const double b[8][8][3], const double bc[8][3], double nu, 
         op.cp[p][a][c2][k] = -nub * s1 - rest;
         op.cp[p][a][a][k] = 0.0;
       }
+}
+
+// Isolid 18 with LAW1 (S8E, s8evis3.F): a viscous force on the hourglass rates, with the structure of
+// HEPH's hourglass (hex8_heph.cpp, szhour3.F) and no stiffness. In the frame x along xi:
+//   gamma_jk = (m_jk - bc_k . (m_j . x)) / 8, q(d, j) = sum_k gamma_jk v_k[d] (modes m1 eta-zeta, m2 zeta-xi,
+//   m3 xi-eta, m4 xi-eta-zeta), J_d = 8 |g_d|_d (4 x the edge), T = cv q with cv = 0.0025 rho c V^(1/3),
+//   N = H T (HEPH's H with nu1 = 2/(1-nu), nu2 = nu nu1, nu3 = 2/3 (1+nu)), f_k[d] -= sum_j gamma_jk N(d, j).
+// Returns the dissipated power sum N q. OpenRadioss books it nowhere (the QA deck HSEPH shows the loss as
+// an 18 % energy error); radx books it as hourglass energy, outside the internal energy.
+constexpr int kHgMode[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
+                               {1, -1, -1, 1, -1, 1, 1, -1},
+                               {1, -1, 1, -1, 1, -1, 1, -1},
+                               {-1, 1, -1, 1, 1, -1, 1, -1}};
+double s8e_hourglass_viscosity(const double x[8][3], const double v[8][3], double vol, double cv, double nu,
+                               double fl[8][3]) {
+  double Jc[3][3] = {};
+  for (int k = 0; k < 8; ++k)
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c) Jc[a][c] += 0.125 * x[k][a] * kNat[k][c];
+  const double det = det3(Jc);
+  if (!(det > 0.0)) return 0.0;
+  double ic[3][3];
+  inverse3(Jc, det, ic);
+  double bc[8][3];
+  for (int k = 0; k < 8; ++k)
+    for (int a = 0; a < 3; ++a)
+      bc[k][a] = 0.125 * (ic[0][a] * kNat[k][0] + ic[1][a] * kNat[k][1] + ic[2][a] * kNat[k][2]);
+  const double J[3] = {8.0 * Jc[0][0], 8.0 * Jc[1][1], 8.0 * Jc[2][2]};
+  if (!(J[0] > 0.0) || !(J[1] > 0.0) || !(J[2] > 0.0)) return 0.0;
+  double gam[4][8], q[3][4] = {};
+  for (int j = 0; j < 4; ++j) {
+    double hx[3] = {0, 0, 0};
+    for (int k = 0; k < 8; ++k)
+      for (int d = 0; d < 3; ++d) hx[d] += kHgMode[j][k] * x[k][d];
+    for (int k = 0; k < 8; ++k) {
+      gam[j][k] = 0.125 * (kHgMode[j][k] - dot3(bc[k], hx));
+      for (int d = 0; d < 3; ++d) q[d][j] += gam[j][k] * v[k][d];
+    }
+  }
+  double T[3][4];
+  for (int d = 0; d < 3; ++d)
+    for (int j = 0; j < 4; ++j) T[d][j] = cv * q[d][j];
+  const double h11 = J[1] * J[2] / J[0], h22 = J[0] * J[2] / J[1], h33 = J[0] * J[1] / J[2];
+  const double h12 = J[2], h13 = J[1], h23 = J[0];
+  const double nu1 = 2.0 / (1.0 - nu), nu2 = nu * nu1, nu3 = 2.0 / 3.0 * (1.0 + nu);
+  double N[3][4];
+  N[0][0] = (h22 + h33) * T[0][0] + h12 * T[1][1] + h13 * T[2][2];
+  N[1][1] = (h11 + h33) * T[1][1] + h23 * T[2][2] + h12 * T[0][0];
+  N[2][2] = (h11 + h22) * T[2][2] + h13 * T[0][0] + h23 * T[1][1];
+  N[0][1] = nu1 * h11 * T[0][1] + nu2 * h12 * T[1][0];
+  N[0][2] = nu1 * h11 * T[0][2] + nu2 * h13 * T[2][0];
+  N[1][0] = nu1 * h22 * T[1][0] + nu2 * h12 * T[0][1];
+  N[2][0] = nu1 * h33 * T[2][0] + nu2 * h13 * T[0][2];
+  N[1][2] = nu1 * h22 * T[1][2] + nu2 * h23 * T[2][1];
+  N[2][1] = nu1 * h33 * T[2][1] + nu2 * h23 * T[1][2];
+  N[0][3] = nu3 * h11 * T[0][3];
+  N[1][3] = nu3 * h22 * T[1][3];
+  N[2][3] = nu3 * h33 * T[2][3];
+  double power = 0;
+  for (int d = 0; d < 3; ++d)
+    for (int j = 0; j < 4; ++j) {
+      power += N[d][j] * q[d][j];
+      for (int k = 0; k < 8; ++k) fl[k][d] -= gam[j][k] * N[d][j];
+    }
+  (void)vol;
+  return power;
 }
 
 void plain_operator(const double b[8][8][3], PointOperator& op) {
@@ -344,6 +447,7 @@ void resolve_full_brick(const model::SolidProperty& prop, const MaterialParams& 
         g.strain = BrickGroup::FullStrain::SelectShear;
         g.coupled = true;
       }
+      g.s8e_visc = mat.law == model::MaterialLaw::Elastic;  // s8eforc3.F: two point layers and LAW1
       g.dt_points = true;
       break;
     default:  // 12: the deck's frame; density per element, so the pressure is constant over the element
@@ -404,7 +508,7 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
 
     // Frame and local coordinates.
     double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    if (g.corot) corot_frame(xg, R);
+    if (g.corot) corot_frame(xg, R, g.dt_points && g.strain != BrickGroup::FullStrain::Asqbi);
     double x[8][3], v[8][3];
     for (int k = 0; k < 8; ++k)
       for (int a = 0; a < 3; ++a) {
@@ -574,6 +678,9 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
         }
       for (int m = 0; m < 6; ++m) smean[m] += vp[p] * sn[p][m] / vol;
     }
+    double w_visc = 0;
+    if (g.s8e_visc)
+      w_visc = s8e_hourglass_viscosity(x, v, vol, rho * c * 0.0025 * std::cbrt(vol), mat.nu, fl);
     double f[8][3];
     for (int k = 0; k < 8; ++k)
       for (int a = 0; a < 3; ++a) f[k][a] = R[0][a] * fl[k][0] + R[1][a] * fl[k][1] + R[2][a] * fl[k][2];
@@ -604,6 +711,7 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     g.q[i] = q_new;
     g.rate[i] = rate;
     g.e_int[i] += off_new * de_int;
+    g.e_hg[i] += off_new * dt1 * w_visc;
     g.w_plastic[i] += off_new * w_pl;
     g.dt[i] = dt_e;
     g.k_nodal[i] = 0.25 * rho * vol / (dt_e * dt_e);

@@ -317,12 +317,14 @@ TEST_CASE("fully integrated brick: degenerate pentahedron and inverted element",
 
 TEST_CASE("assumed-strain bricks: closed-form bending stiffness of one element", "[brick][full]") {
   // A cube of side 2 (natural = physical coordinates, centred) bent in one cycle: u_a = s x_a x_b (s = 1e-6),
-  // x^n = X + u, v = u / dt1. The bending mode is the hourglass mode xi eta (14, plane x-y) or xi zeta (18,
-  // plane x-z, the plane its shear selection frees for an x-beam). Both formulations then drop the parasitic
-  // shear and add the Poisson term -nu/(1-nu) eps_xx to the in-plane transverse strain, so every point is in
-  // plane strain with sigma_bb = 0: sigma_xx = E' eps_xx, E' = E / (1 - nu^2), eps_xx = s x_b. The energy of
-  // the cycle 1/2 sum_p V_p sigma : eps (V_p = 1, x_b^2 = 1/3) is E' s^2 (8/6) = 4 E' s^2 / 3, the bending
-  // stiffness E' I of a plane-strain beam. The plain 2x2x2 element (17, Icpre 3) adds the shear s^2 x^2 G.
+  // x^n = X + u, v = u / dt1, for each of the six ordered pairs (a, b): the bending of a beam along a in the
+  // plane a-b, whose in-element part is the hourglass mode of that plane. Isolid 14 drops the mode from the
+  // shear of the plane; Isolid 18 averages the shear of the plane over the four points sharing the natural
+  // coordinate normal to it (the plane's own mean). Both then add the Poisson term -nu/(1-nu) eps_aa to the
+  // in-plane transverse strain, so every point is in plane strain with sigma_bb = 0: sigma_aa = E' eps_aa,
+  // E' = E / (1 - nu^2), eps_aa = s x_b. The energy of the cycle 1/2 sum_p V_p sigma : eps (V_p = 1, x_b^2 =
+  // 1/3) is E' s^2 (8/6) = 4 E' s^2 / 3, the bending stiffness E' I of a plane-strain beam, in all six
+  // modes. The plain 2x2x2 element (17, Icpre 3) adds the shear s^2 x_a^2 G.
   // Tolerance 1e-4 relative: the geometric nonlinearity of a strain of 1e-6 (O(s)) and the volume update.
   const double s = 1e-6;
   auto pts = cube(2.0);
@@ -332,28 +334,31 @@ TEST_CASE("assumed-strain bricks: closed-form bending stiffness of one element",
     const MaterialParams mat = elastic(1000.0, nu, 1.0);
     const double e_bend = 4.0 * mat.young / (1.0 - nu * nu) * s * s / 3.0;
     struct Case {
-      int isolid, icpre, b;
+      int isolid, icpre;
       double expect;
     };
     const double e_plain =
         e_bend * (1.0 - nu * nu) * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)) +
         8.0 * mat.shear * s * s / 6.0;  // eps = (s y, 0, 0) (uniaxial strain) + gamma = s x
-    for (const Case cs : {Case{14, 0, 1, e_bend}, Case{18, 0, 2, e_bend}, Case{17, 3, 1, e_plain}}) {
-      INFO("nu " << nu << " Isolid " << cs.isolid);
-      NodeState ns = make_nodes(pts);
-      for (std::size_t k = 0; k < 8; ++k) {
-        const double u = s * pts[k][0] * pts[k][static_cast<std::size_t>(cs.b)];
-        ns.x[k] += u;
-        ns.vx[k] = u;  // dt1 = 1
-      }
-      CycleInfo cyc;
-      cyc.dt1 = 1.0;
-      BrickGroup g = make_group(kCube, ns, mat, cs.isolid, cs.icpre);
-      g.corot = false;
-      g.qa = g.qb = 0;  // no bulk viscosity (its damping work is not part of the closed form)
-      hex8_full_forces(g, ns, mat, cyc);
-      CHECK(std::abs(g.e_int[0] / cs.expect - 1.0) < 1e-4);
-    }
+    for (const Case cs : {Case{14, 0, e_bend}, Case{18, 0, e_bend}, Case{17, 3, e_plain}})
+      for (std::size_t a = 0; a < 3; ++a)
+        for (std::size_t b = 0; b < 3; ++b) {
+          if (a == b) continue;
+          INFO("nu " << nu << " Isolid " << cs.isolid << " u_" << a << " = s x_" << a << " x_" << b);
+          NodeState ns = make_nodes(pts);
+          for (std::size_t k = 0; k < 8; ++k) {
+            const double u = s * pts[k][a] * pts[k][b];
+            (a == 0 ? ns.x : a == 1 ? ns.y : ns.z)[k] += u;
+            (a == 0 ? ns.vx : a == 1 ? ns.vy : ns.vz)[k] = u;  // dt1 = 1
+          }
+          CycleInfo cyc;
+          cyc.dt1 = 1.0;
+          BrickGroup g = make_group(kCube, ns, mat, cs.isolid, cs.icpre);
+          g.corot = false;
+          g.qa = g.qb = 0;  // no bulk viscosity (its damping work is not part of the closed form)
+          hex8_full_forces(g, ns, mat, cyc);
+          CHECK(std::abs(g.e_int[0] / cs.expect - 1.0) < 1e-4);
+        }
   }
 }
 
@@ -376,5 +381,33 @@ TEST_CASE("fully integrated brick: time step of a degenerate brick (S8Z length)"
     hex8_full_forces(g, ns, mat, cyc);
     // Round-off only: the formula is evaluated in closed form.
     CHECK(std::abs(g.dt[0] / (len / (c * (0.05 + std::sqrt(1.0 + 0.05 * 0.05)))) - 1.0) < 1e-12);
+  }
+}
+
+TEST_CASE("Isolid 18 with LAW1: S8E's hourglass viscosity in closed form", "[brick][full]") {
+  // A centred cube of side 2 (J_d = 8, so every H term is 8; gamma_jk = m_jk / 8) with the velocity v_z =
+  // s m3_k (the xi-eta hourglass mode): q(z, m3) = s, T = cv s, N(z, m3) = (h11 + h22) T = 16 cv s, power
+  // 16 cv s^2 with cv = 0.0025 rho c V^(1/3) = 0.005 rho c. Booked as hourglass energy over the cycle:
+  // e_hg = dt1 16 cv s^2. A linear velocity field (no hourglass part) dissipates nothing.
+  // Tolerance 1e-9 relative: the only geometry change is dt1 s (1e-9) of the side.
+  const MaterialParams mat = elastic(2e5, 0.25, 1e-8);
+  constexpr int m3[8] = {1, -1, 1, -1, 1, -1, 1, -1};
+  const double s = 1.0, dt1 = 1e-9;
+  for (const bool hourglass : {true, false}) {
+    auto pts = cube(2.0);
+    for (auto& p : pts)
+      for (double& c : p) c -= 1.0;
+    NodeState ns = make_nodes(pts);
+    for (std::size_t k = 0; k < 8; ++k) ns.vz[k] = hourglass ? s * m3[k] : s * pts[k][0];
+    BrickGroup g = make_group(kCube, ns, mat, 18);
+    REQUIRE(g.s8e_visc);
+    CycleInfo cyc;
+    cyc.dt1 = dt1;
+    hex8_full_forces(g, ns, mat, cyc);
+    const double cv = 0.0025 * mat.rho0 * mat.c_solid * 2.0;
+    if (hourglass)
+      CHECK(std::abs(g.e_hg[0] / (dt1 * 16.0 * cv * s * s) - 1.0) < 1e-9);
+    else
+      CHECK(std::abs(g.e_hg[0]) < 1e-12 * dt1 * 16.0 * cv * s * s);
   }
 }
