@@ -76,14 +76,11 @@
 
 #include "solver/element_gather.hpp"
 #include "solver/element_groups.hpp"
+#include "solver/solid_stages.hpp"
 
 namespace radx::solver {
 
 namespace {
-
-// Faces (node positions 0..7) for the characteristic length; orientation does not matter here.
-constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                              {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
 
 // Mode sums r[j][d] = sum_k h_jk a_k for the four mode vectors (pairwise, as the mode table):
 // with p = a1 - a4 - a6 + a7, m = a2 - a3 - a5 + a8, s = a1 - a2 - a5 + a6, t = a3 - a4 - a7 + a8:
@@ -177,7 +174,7 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
   const double qb = g.qb;
   const double a_hg = 0.25 * g.h;
   const bool plain_h = g.isolid == 2;
-  const double alpha = mat.f_cut > 0 ? std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1) : 1.0;
+  const double alpha = rate_filter_alpha(mat, dt1);
   const double inf = std::numeric_limits<double>::infinity();
 
   const std::int32_t* conn = g.conn.data();
@@ -202,50 +199,18 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
 
     // /DT/BRICK/CST switched this element: freeze its coordinates once, then take the geometry (gradients,
     // volume, density, step) from them; the velocities stay current (small strain).
-    if (g.dt_fixed[i] > 0.0 && !g.small[i]) {
-      for (std::size_t k = 0; k < 8; ++k)
-        for (std::size_t d = 0; d < 3; ++d) g.x_ref[(k * 3 + d) * G + i] = x[k][d];
-      g.small[i] = 1;
-    }
-    if (g.small[i]) {
-      for (std::size_t k = 0; k < 8; ++k)
-        for (std::size_t d = 0; d < 3; ++d) x[k][d] = g.x_ref[(k * 3 + d) * G + i];
-    }
+    brick_small_strain_geometry(g, i, x);
 
     // Co-rotational: into the element frame (x' = R^T x, v' = R^T v).
     [[maybe_unused]] double R[3][3];
     if constexpr (kCorot) {
       brick_corotational_frame(x, false, R);
-      for (int k = 0; k < 8; ++k) {
-        double xl[3], vl[3];
-        for (int c = 0; c < 3; ++c) {
-          xl[c] = R[0][c] * x[k][0] + R[1][c] * x[k][1] + R[2][c] * x[k][2];
-          vl[c] = R[0][c] * v[k][0] + R[1][c] * v[k][1] + R[2][c] * v[k][2];
-        }
-        for (int c = 0; c < 3; ++c) {
-          x[k][c] = xl[c];
-          v[k][c] = vl[c];
-        }
-      }
+      brick_into_frame(R, x, v);
     }
 
     // Centre Jacobian, volume, gradients.
-    double j1[3], j2[3], j3[3];
-#pragma GCC unroll 8
-    for (int d = 0; d < 3; ++d) {
-      const double d17 = x[6][d] - x[0][d];
-      const double d28 = x[7][d] - x[1][d];
-      const double d35 = x[4][d] - x[2][d];
-      const double d46 = x[5][d] - x[3][d];
-      j1[d] = d17 + d28 - d35 - d46;
-      j2[d] = d17 + d28 + d35 + d46;
-      j3[d] = d17 - d28 - d35 + d46;
-    }
-    double c12[3], c23[3], c31[3];
-    cross(j1, j2, c12);
-    cross(j2, j3, c23);
-    cross(j3, j1, c31);
-    const double vol = (j1[0] * c23[0] + j1[1] * c23[1] + j1[2] * c23[2]) / 64.0;
+    double j1[3], j2[3], j3[3], c12[3], c23[3], c31[3];
+    const double vol = brick_centre_jacobian(x, j1, j2, j3, c12, c23, c31);
     if (!(vol > 0.0)) {  // inverted, flat or not a number: reported and stopped by the engine
       clear_force(i);
       g.vol[i] = vol;
@@ -253,69 +218,31 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
       g.k_nodal[i] = 0.0;
       continue;
     }
-    const double inv = 1.0 / (64.0 * vol);
     double b[8][3];
-#pragma GCC unroll 8
-    for (int d = 0; d < 3; ++d) {
-      b[0][d] = -(c12[d] + c23[d] + c31[d]) * inv;
-      b[1][d] = (c12[d] - c23[d] - c31[d]) * inv;
-      b[2][d] = (c12[d] + c23[d] - c31[d]) * inv;
-      b[3][d] = (-c12[d] + c23[d] - c31[d]) * inv;
-      b[4][d] = -b[2][d];
-      b[5][d] = -b[3][d];
-      b[6][d] = -b[0][d];
-      b[7][d] = -b[1][d];
-    }
+    brick_centre_gradients(c12, c23, c31, vol, b);
 
     // Velocity gradient L[a][c] = d v_a / d x_c, from the opposite-node differences.
-    double L[3][3] = {};
+    double L[3][3];
+    brick_velocity_gradient(v, b, L);
+    double D[6], so[6], s[6];
 #pragma GCC unroll 8
-    for (int k = 0; k < 4; ++k) {
-      const int o = (k < 2) ? k + 6 : k + 2;  // opposite nodes: 1-7, 2-8, 3-5, 4-6
-#pragma GCC unroll 8
-      for (int a = 0; a < 3; ++a) {
-        const double dv = v[k][a] - v[o][a];
-        L[a][0] += dv * b[k][0];
-        L[a][1] += dv * b[k][1];
-        L[a][2] += dv * b[k][2];
-      }
-    }
-    double D[6] = {L[0][0], L[1][1], L[2][2], L[0][1] + L[1][0], L[1][2] + L[2][1], L[2][0] + L[0][2]};
-    double so[6];
+    for (int m = 0; m < 6; ++m) s[m] = g.sig[static_cast<std::size_t>(m) * G + i];
     if constexpr (kCorot) {
       // Second-order term of the co-rotational strain increment; no spin (the frame turns with the element).
-      auto ltl = [&](int a, int b) { return L[0][a] * L[0][b] + L[1][a] * L[1][b] + L[2][a] * L[2][b]; };
-      const double h = 0.5 * dt1;
-      D[0] -= h * ltl(0, 0);
-      D[1] -= h * ltl(1, 1);
-      D[2] -= h * ltl(2, 2);
-      D[3] -= dt1 * ltl(0, 1);
-      D[4] -= dt1 * ltl(1, 2);
-      D[5] -= dt1 * ltl(2, 0);
-      for (int m = 0; m < 6; ++m) so[m] = g.sig[static_cast<std::size_t>(m) * G + i];
+      corotational_strain_rate(L, dt1, D);
+      for (int m = 0; m < 6; ++m) so[m] = s[m];
     } else {
-      const double wz = 0.5 * dt1 * (L[1][0] - L[0][1]);
-      const double wy = 0.5 * dt1 * (L[0][2] - L[2][0]);
-      const double wx = 0.5 * dt1 * (L[2][1] - L[1][2]);
-
-      // Jaumann rotation of the stored stress (old values on the right-hand side).
-      double s[6];
-#pragma GCC unroll 8
-      for (int m = 0; m < 6; ++m) s[m] = g.sig[static_cast<std::size_t>(m) * G + i];
-      so[0] = s[0] - 2.0 * s[3] * wz + 2.0 * s[5] * wy;
-      so[1] = s[1] + 2.0 * s[3] * wz - 2.0 * s[4] * wx;
-      so[2] = s[2] - 2.0 * s[5] * wy + 2.0 * s[4] * wx;
-      so[3] = s[3] + wz * (s[0] - s[1]) + wy * s[4] - wx * s[5];
-      so[4] = s[4] + wx * (s[1] - s[2]) + wz * s[5] - wy * s[3];
-      so[5] = s[5] + wy * (s[2] - s[0]) + wx * s[3] - wz * s[4];
+      D[0] = L[0][0], D[1] = L[1][1], D[2] = L[2][2];
+      D[3] = L[0][1] + L[1][0], D[4] = L[1][2] + L[2][1], D[5] = L[2][0] + L[0][2];
+      double wx, wy, wz;
+      half_step_spin(L, dt1, wx, wy, wz);
+      jaumann_rotate(s, wx, wy, wz, so);  // the stored stress, old values on the right-hand side
     }
 
     // Density, strain rate, material.
-    const double rho = rho0 * g.vol0[i] / vol;
-    const double mu = rho / rho0 - 1.0;
-    const double e_rate =
-        std::sqrt(D[0] * D[0] + D[1] * D[1] + D[2] * D[2] + 0.5 * (D[3] * D[3] + D[4] * D[4] + D[5] * D[5]));
-    const double rate = alpha * e_rate + (1.0 - alpha) * g.rate[i];
+    const double rho = solid_density(rho0, g.vol0[i], vol);
+    const double mu = solid_mu(rho, rho0);
+    const double rate = filtered_rate(alpha, strain_rate_measure(D), g.rate[i]);
     const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
     double sn[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
     double eps_p = g.eps_p[i];
@@ -328,35 +255,14 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
 
     // Bulk viscosity and element step.
     const double l = std::cbrt(vol);
-    const double ec = std::max(0.0, -(D[0] + D[1] + D[2]));
-    const double q_new = rho * ec * l * (qa2 * l * ec + qb * c);
-    double area_max = 0.0;
-#pragma GCC unroll 8
-    for (const auto& f : kFaces) {
-      double d13[3], d24[3], nf[3];
-#pragma GCC unroll 8
-      for (int d = 0; d < 3; ++d) {
-        d13[d] = x[f[2]][d] - x[f[0]][d];
-        d24[d] = x[f[3]][d] - x[f[1]][d];
-      }
-      cross(d13, d24, nf);
-      area_max = std::max(area_max, nf[0] * nf[0] + nf[1] * nf[1] + nf[2] * nf[2]);
-    }
-    area_max = 0.5 * std::sqrt(area_max);
-    const double qt = qb * c + qa2 * l * ec;
-    const double dt_e = (vol / area_max) / (qt + std::sqrt(qt * qt + c * c));
+    const double ec = compression_rate(D);
+    const double q_new = bulk_viscosity(rho, ec, l, qa2, qb, c);
+    const double dt_e = solid_step(brick_face_length(x, vol), c, qa2, qb, l, ec);
 
     // Energies.
-    const double dvol = vol - g.vol[i];
-    const double vavg = vol - 0.5 * dvol;
-    double work = 0.0;
-#pragma GCC unroll 8
-    for (int m = 0; m < 6; ++m) work += (so[m] + sn[m]) * D[m];
-    const double de_int = 0.5 * dt1 * vavg * work - 0.5 * dvol * (g.q[i] + q_new);
-    const double sm = (sn[0] + sn[1] + sn[2]) / 3.0;
-    const double svm = std::sqrt(
-        1.5 * ((sn[0] - sm) * (sn[0] - sm) + (sn[1] - sm) * (sn[1] - sm) + (sn[2] - sm) * (sn[2] - sm)) +
-        3.0 * (sn[3] * sn[3] + sn[4] * sn[4] + sn[5] * sn[5]));
+    const double de_int =
+        solid_energy_increment(dt1, vol, g.vol[i], stress_power_sum(so, sn, D), g.q[i], q_new);
+    const double svm = std::sqrt(von_mises2(sn));
 
     // Hourglass rates. With hx_j = sum_k h_jk x_k and hv_j = sum_k h_jk v_k (3-vectors):
     //   q_j = sum_k (h_jk - hx_j . b_k) v_k = hv_j - L hx_j   (hx_j taken as 0 for the plain modes).
@@ -449,7 +355,7 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
     g.e_hg[i] += off_new * dt1 * de_hg;
     g.w_plastic[i] += off_new * svm * deps_p * vol;
     g.dt[i] = dt_e;
-    g.k_nodal[i] = 0.25 * rho * vol / (dt_e * dt_e);
+    g.k_nodal[i] = solid_nodal_stiffness(0.25, rho, vol, dt_e);
   }
 }
 

@@ -65,6 +65,7 @@
 
 #include "solver/element_gather.hpp"
 #include "solver/element_groups.hpp"
+#include "solver/solid_stages.hpp"
 
 namespace radx::solver {
 
@@ -72,9 +73,6 @@ namespace {
 
 constexpr int kNat[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                             {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-
-constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                              {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
 
 // Points sharing a natural coordinate, for the assumed shear: kSet[c][p] = 0 or 1 is the side of point p
 // along natural direction c (0 xi, 1 eta, 2 zeta).
@@ -496,15 +494,7 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     }
     double xg[8][3], vg[8][3];
     gather_element<8>(conn, G, i, nodes, xg, vg);
-    if (g.dt_fixed[i] > 0.0 && !g.small[i]) {  // /DT/BRICK/CST: freeze the geometry once (as hex8_fb.cpp)
-      for (std::size_t k = 0; k < 8; ++k)
-        for (std::size_t d = 0; d < 3; ++d) g.x_ref[(k * 3 + d) * G + i] = xg[k][d];
-      g.small[i] = 1;
-    }
-    if (g.small[i]) {
-      for (std::size_t k = 0; k < 8; ++k)
-        for (std::size_t d = 0; d < 3; ++d) xg[k][d] = g.x_ref[(k * 3 + d) * G + i];
-    }
+    brick_small_strain_geometry(g, i, xg);  // /DT/BRICK/CST: freeze the geometry once (as hex8_fb.cpp)
 
     // Frame and local coordinates.
     double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -577,9 +567,7 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     // Material per point.
     const double rho = rho0 * vol0 / vol;
     const double mu_el = vol0 / vol - 1.0;
-    const double e_rate = std::sqrt(Dm[0] * Dm[0] + Dm[1] * Dm[1] + Dm[2] * Dm[2] +
-                                    0.5 * (Dm[3] * Dm[3] + Dm[4] * Dm[4] + Dm[5] * Dm[5]));
-    const double rate = alpha * e_rate + (1.0 - alpha) * g.rate[i];
+    const double rate = filtered_rate(alpha, strain_rate_measure(Dm), g.rate[i]);
     const double dvol = vol - g.vol[i];
     const double vavg_ratio = (vol - 0.5 * dvol) / vol;
     double sn[NP][6];
@@ -591,12 +579,7 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
       if (!g.corot) {  // Jaumann rotation of the point's stress (3.2), old values on the right
         const double wx = W[p][0], wy = W[p][1], wz = W[p][2];
         const double s0[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
-        so[0] = s0[0] - 2.0 * s0[3] * wz + 2.0 * s0[5] * wy;
-        so[1] = s0[1] + 2.0 * s0[3] * wz - 2.0 * s0[4] * wx;
-        so[2] = s0[2] - 2.0 * s0[5] * wy + 2.0 * s0[4] * wx;
-        so[3] = s0[3] + wz * (s0[0] - s0[1]) + wy * s0[4] - wx * s0[5];
-        so[4] = s0[4] + wx * (s0[1] - s0[2]) + wz * s0[5] - wy * s0[3];
-        so[5] = s0[5] + wy * (s0[2] - s0[0]) + wx * s0[3] - wz * s0[4];
+        jaumann_rotate(s0, wx, wy, wz, so);
       }
       const double mu = const_p ? mu_el : g.vol0_p[p * G + i] / vp[p] - 1.0;
       const double de[6] = {D[p][0] * dt1, D[p][1] * dt1, D[p][2] * dt1,
@@ -611,18 +594,14 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
       double wp = 0;
       for (std::size_t m = 0; m < 6; ++m) wp += (so[m] + sn[p][m]) * D[p][m];
       work += 0.5 * dt1 * vp[p] * vavg_ratio * wp;
-      const double sm = (sn[p][0] + sn[p][1] + sn[p][2]) / 3.0;
-      const double svm =
-          std::sqrt(1.5 * ((sn[p][0] - sm) * (sn[p][0] - sm) + (sn[p][1] - sm) * (sn[p][1] - sm) +
-                           (sn[p][2] - sm) * (sn[p][2] - sm)) +
-                    3.0 * (sn[p][3] * sn[p][3] + sn[p][4] * sn[p][4] + sn[p][5] * sn[p][5]));
+      const double svm = std::sqrt(von_mises2(sn[p]));
       w_pl += svm * deps_p * vp[p];
     }
 
     // Bulk viscosity and step.
     const double l = std::cbrt(vol);
-    const double ec = std::max(0.0, -(Dm[0] + Dm[1] + Dm[2]));
-    const double q_new = rho * ec * l * (qa2 * l * ec + qb * c);
+    const double ec = compression_rate(Dm);
+    const double q_new = bulk_viscosity(rho, ec, l, qa2, qb, c);
     // Characteristic length. S8Z and S8E: min over the points of 8 V_p / A_mid, A_mid the largest of the
     // three mid-sections of the centre Jacobian (4 |g_a x g_b|); equal to V / max face area on a box, and
     // shorter on a degenerate brick where a point's V_p shrinks. Otherwise the one-point V / max face area.
@@ -642,20 +621,9 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
       for (std::size_t p = 1; p < NP; ++p) vmin = std::min(vmin, vp[p]);
       len = 8.0 * vmin / amid;
     } else {
-      double area_max = 0.0;
-      for (const auto& f : kFaces) {
-        double d13[3], d24[3], nf[3];
-        for (int d = 0; d < 3; ++d) {
-          d13[d] = x[f[2]][d] - x[f[0]][d];
-          d24[d] = x[f[3]][d] - x[f[1]][d];
-        }
-        cross(d13, d24, nf);
-        area_max = std::max(area_max, dot3(nf, nf));
-      }
-      len = vol / (0.5 * std::sqrt(area_max));
+      len = brick_face_length(x, vol);
     }
-    const double qt = qb * c + qa2 * l * ec;
-    const double dt_e = len / (qt + std::sqrt(qt * qt + c * c));
+    const double dt_e = solid_step(len, c, qa2, qb, l, ec);
     const double de_int = work - 0.5 * dvol * (g.q[i] + q_new);
 
     // Forces: the transpose of the strain operator, f_k,a = -sum_p V_p [(s_aa - q) b_pk,a
@@ -714,7 +682,7 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     g.e_hg[i] += off_new * dt1 * w_visc;
     g.w_plastic[i] += off_new * w_pl;
     g.dt[i] = dt_e;
-    g.k_nodal[i] = 0.25 * rho * vol / (dt_e * dt_e);
+    g.k_nodal[i] = solid_nodal_stiffness(0.25, rho, vol, dt_e);
   }
 }
 

@@ -55,13 +55,11 @@
 
 #include "solver/element_gather.hpp"
 #include "solver/element_groups.hpp"
+#include "solver/solid_stages.hpp"
 
 namespace radx::solver {
 
 namespace {
-
-constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                              {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
 
 // The four hourglass modes in the reference's order (see the opening comment).
 constexpr double kMode[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
@@ -70,12 +68,6 @@ constexpr double kMode[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
                                 {-1, 1, -1, 1, 1, -1, 1, -1}};
 
 constexpr double kSvmCoef = 324.0;  // (3 x 8 x 0.75)^2 (szsvm.F)
-
-inline void cross(const double a[3], const double b[3], double c[3]) {
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 // N = H T of the opening comment; T and N indexed [direction][mode].
 inline void hg_generalised(const double T[3][4], const double J[3], const double Ji[3], double nu1,
@@ -132,7 +124,7 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
   const double nu = mat.nu;
   const double qa2 = g.qa * g.qa;
   const double qb = g.qb;
-  const double alpha = mat.f_cut > 0 ? std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1) : 1.0;
+  const double alpha = rate_filter_alpha(mat, dt1);
   const double inf = std::numeric_limits<double>::infinity();
   // Hourglass modulus rho0 c^2 (1 - 2 nu) / (2 (1 - nu)): G for the isotropic laws.
   const double g_hg = 0.5 * rho0 * c * c * (1.0 - 2.0 * nu) / (1.0 - nu);
@@ -160,47 +152,16 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     }
     double x[8][3], v[8][3];
     gather_element<8>(conn, G, i, nodes, x, v);
-    if (g.dt_fixed[i] > 0.0 && !g.small[i]) {
-      for (std::size_t k = 0; k < 8; ++k)
-        for (std::size_t d = 0; d < 3; ++d) g.x_ref[(k * 3 + d) * G + i] = x[k][d];
-      g.small[i] = 1;
-    }
-    if (g.small[i]) {
-      for (std::size_t k = 0; k < 8; ++k)
-        for (std::size_t d = 0; d < 3; ++d) x[k][d] = g.x_ref[(k * 3 + d) * G + i];
-    }
+    brick_small_strain_geometry(g, i, x);
 
     // Element frame; nodes and velocities into it.
     double R[3][3];
     brick_corotational_frame(x, true, R);
-#pragma GCC unroll 8
-    for (int k = 0; k < 8; ++k) {
-      double xl[3], vl[3];
-#pragma GCC unroll 3
-      for (int a = 0; a < 3; ++a) {
-        xl[a] = R[0][a] * x[k][0] + R[1][a] * x[k][1] + R[2][a] * x[k][2];
-        vl[a] = R[0][a] * v[k][0] + R[1][a] * v[k][1] + R[2][a] * v[k][2];
-      }
-      for (int a = 0; a < 3; ++a) {
-        x[k][a] = xl[a];
-        v[k][a] = vl[a];
-      }
-    }
+    brick_into_frame(R, x, v);
 
     // Centre Jacobian (j1: eta, j2: zeta, j3: xi), volume, gradients.
-    double j1[3], j2[3], j3[3];
-    for (int d = 0; d < 3; ++d) {
-      const double d17 = x[6][d] - x[0][d], d28 = x[7][d] - x[1][d];
-      const double d35 = x[4][d] - x[2][d], d46 = x[5][d] - x[3][d];
-      j1[d] = d17 + d28 - d35 - d46;
-      j2[d] = d17 + d28 + d35 + d46;
-      j3[d] = d17 - d28 - d35 + d46;
-    }
-    double c12[3], c23[3], c31[3];
-    cross(j1, j2, c12);
-    cross(j2, j3, c23);
-    cross(j3, j1, c31);
-    const double vol = (j1[0] * c23[0] + j1[1] * c23[1] + j1[2] * c23[2]) / 64.0;
+    double j1[3], j2[3], j3[3], c12[3], c23[3], c31[3];
+    const double vol = brick_centre_jacobian(x, j1, j2, j3, c12, c23, c31);
     const double J[3] = {j3[0], j1[1], j2[2]};
     if (!(vol > 0.0) || !(J[0] > 0.0) || !(J[1] > 0.0) || !(J[2] > 0.0)) {
       clear_nodal_forces<8, 3>(force, G, i);
@@ -209,44 +170,21 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
       g.k_nodal[i] = 0.0;
       continue;
     }
-    const double inv = 1.0 / (64.0 * vol);
     const double Ji[3] = {1.0 / J[0], 1.0 / J[1], 1.0 / J[2]};
     double b[8][3];
-    for (int d = 0; d < 3; ++d) {
-      b[0][d] = -(c12[d] + c23[d] + c31[d]) * inv;
-      b[1][d] = (c12[d] - c23[d] - c31[d]) * inv;
-      b[2][d] = (c12[d] + c23[d] - c31[d]) * inv;
-      b[3][d] = (-c12[d] + c23[d] - c31[d]) * inv;
-      b[4][d] = -b[2][d];
-      b[5][d] = -b[3][d];
-      b[6][d] = -b[0][d];
-      b[7][d] = -b[1][d];
-    }
+    brick_centre_gradients(c12, c23, c31, vol, b);
 
     // Velocity gradient and the co-rotational strain rate.
-    double L[3][3] = {};
-    for (int k = 0; k < 4; ++k) {
-      const int o = (k < 2) ? k + 6 : k + 2;
-      for (int a = 0; a < 3; ++a) {
-        const double dv = v[k][a] - v[o][a];
-        L[a][0] += dv * b[k][0];
-        L[a][1] += dv * b[k][1];
-        L[a][2] += dv * b[k][2];
-      }
-    }
-    auto ltl = [&](int a, int e) { return L[0][a] * L[0][e] + L[1][a] * L[1][e] + L[2][a] * L[2][e]; };
-    const double D[6] = {L[0][0] - 0.5 * dt1 * ltl(0, 0),     L[1][1] - 0.5 * dt1 * ltl(1, 1),
-                         L[2][2] - 0.5 * dt1 * ltl(2, 2),     L[0][1] + L[1][0] - dt1 * ltl(0, 1),
-                         L[1][2] + L[2][1] - dt1 * ltl(1, 2), L[2][0] + L[0][2] - dt1 * ltl(2, 0)};
+    double L[3][3], D[6];
+    brick_velocity_gradient(v, b, L);
+    corotational_strain_rate(L, dt1, D);
 
     // Material in the frame.
     double so[6];
     for (int m = 0; m < 6; ++m) so[m] = g.sig[static_cast<std::size_t>(m) * G + i];
-    const double rho = rho0 * g.vol0[i] / vol;
-    const double mu = rho / rho0 - 1.0;
-    const double e_rate =
-        std::sqrt(D[0] * D[0] + D[1] * D[1] + D[2] * D[2] + 0.5 * (D[3] * D[3] + D[4] * D[4] + D[5] * D[5]));
-    const double rate = alpha * e_rate + (1.0 - alpha) * g.rate[i];
+    const double rho = solid_density(rho0, g.vol0[i], vol);
+    const double mu = solid_mu(rho, rho0);
+    const double rate = filtered_rate(alpha, strain_rate_measure(D), g.rate[i]);
     const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
     double sn[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
     double eps_p = g.eps_p[i];
@@ -264,32 +202,13 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
 
     // Bulk viscosity, element step.
     const double l = std::cbrt(vol);
-    const double ec = std::max(0.0, -(D[0] + D[1] + D[2]));
-    const double q_new = rho * ec * l * (qa2 * l * ec + qb * c);
-    double area_max = 0.0;
-    for (const auto& f : kFaces) {
-      double d13[3], d24[3], nf[3];
-      for (int d = 0; d < 3; ++d) {
-        d13[d] = x[f[2]][d] - x[f[0]][d];
-        d24[d] = x[f[3]][d] - x[f[1]][d];
-      }
-      cross(d13, d24, nf);
-      area_max = std::max(area_max, nf[0] * nf[0] + nf[1] * nf[1] + nf[2] * nf[2]);
-    }
-    area_max = 0.5 * std::sqrt(area_max);
-    const double qt = qb * c + qa2 * l * ec;
-    const double dt_e = (vol / area_max) / (qt + std::sqrt(qt * qt + c * c));
+    const double ec = compression_rate(D);
+    const double q_new = bulk_viscosity(rho, ec, l, qa2, qb, c);
+    const double dt_e = solid_step(brick_face_length(x, vol), c, qa2, qb, l, ec);
 
     // Stress energy (as the one-point brick).
-    const double dvol = vol - g.vol[i];
-    const double vavg = vol - 0.5 * dvol;
-    double work = 0.0;
-    for (int m = 0; m < 6; ++m) work += (so[m] + sn[m]) * D[m];
-    double de_int = 0.5 * dt1 * vavg * work - 0.5 * dvol * (g.q[i] + q_new);
-    const double sm = (sn[0] + sn[1] + sn[2]) / 3.0;
-    const double svm2 =
-        1.5 * ((sn[0] - sm) * (sn[0] - sm) + (sn[1] - sm) * (sn[1] - sm) + (sn[2] - sm) * (sn[2] - sm)) +
-        3.0 * (sn[3] * sn[3] + sn[4] * sn[4] + sn[5] * sn[5]);
+    double de_int = solid_energy_increment(dt1, vol, g.vol[i], stress_power_sum(so, sn, D), g.q[i], q_new);
+    const double svm2 = von_mises2(sn);
 
     // Hourglass: mode sums of the local coordinates and the rates q(d, j).
     double hx[4][3], q[3][4];
@@ -388,7 +307,7 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     g.w_hg[i] += off_new * de_hg;
     g.w_plastic[i] += off_new * std::sqrt(svm2) * deps_p * vol;
     g.dt[i] = dt_e;
-    g.k_nodal[i] = 0.25 * rho * vol / (dt_e * dt_e);
+    g.k_nodal[i] = solid_nodal_stiffness(0.25, rho, vol, dt_e);
   }
 }
 

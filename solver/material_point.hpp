@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <numbers>
 #include <vector>
 
 #include "solver/model/model.hpp"
@@ -71,6 +72,13 @@ struct MaterialParams {
   bool tab_bound = false;  // tab_lower is a valid bound (every curve's last segment rises or is flat)
   FailJcParams fail;
 };
+
+// Factor of the strain-rate filter (elements.md 6.1 shells, 6.2 solids): rate <- alpha e + (1 - alpha) rate,
+// alpha = min(1, 2 pi Fcut dt1), 1 when Fcut = 0 (no filter). Shared by the shell and solid kernels.
+inline double rate_filter_alpha(const MaterialParams& mat, double dt1) {
+  if (mat.f_cut <= 0) return 1.0;
+  return std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1);
+}
 
 // Parameters of laws 1 and 2 (and of a /FAIL/JOHNSON on them). A law-36 material needs the overload below.
 MaterialParams make_material_params(const model::Material& m);

@@ -79,7 +79,6 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
   const double a11 = mat.a11 > 0 ? mat.a11 : young / (1.0 - mat.nu * mat.nu);
   const double tau = 0.25 * dt1;
   const bool in_plane_terms = g.props.ish3n == 2;
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   const double fail_limit = failure_limit(mat);  // EPS_p_max (6.4)
   constexpr double kThird = 1.0 / 3.0;
 
@@ -204,9 +203,7 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
       for (int r = 18; r < 24; ++r) nf[r * G + ii] = 0.0;  // row 3 is unused by triangles
       const double off_start = sec.off[j];
       if (off_start <= 0.0) {
-        for (int r = 0; r < 18; ++r) nf[r * G + ii] = 0.0;
-        g.dt[ii] = kInf;
-        g.k_nodal[ii] = 0.0;
+        clear_shell_element(g, nf, ii, 18);
         continue;
       }
       const double t = sec.t[j], area = sec.area[j];
@@ -217,25 +214,13 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
       g.w_plastic[ii] += sec.w_plastic[j];
       g.thick[ii] += sec.dthick[j] * off;
 
-      double fv[3] = {0.0, 0.0, 0.0};
-      if (visc0 > 0) {
-        const double visc = visc0 * std::sqrt(area);
-        fv[0] = visc * (dem[0] + 0.5 * dem[1]);
-        fv[1] = visc * (dem[1] + 0.5 * dem[0]);
-        fv[2] = visc * dem[2] / 3.0;
-      }
-      double de_mem = 0, de_bend = 0;
-      for (int k = 0; k < 5; ++k)
-        de_mem += (off_start * sec.for_old[k][j] + off * sec.for_new[k][j]) * dem[k];
-      for (int k = 0; k < 3; ++k)
-        de_bend += (off_start * sec.mom_old[k][j] + off * sec.mom_new[k][j]) * dk[k];
-      g.e_int[ii] += 0.5 * area * t * (de_mem + t * de_bend) +
-                     area * t * off * (fv[0] * dem[0] + fv[1] * dem[1] + fv[2] * dem[2]);
+      double fv[3];
+      membrane_damping(visc0, area, dem, fv);
+      g.e_int[ii] += shell_energy_increment(area, t, off_start, off, sec.for_old, sec.for_new, sec.mom_old,
+                                            sec.mom_new, j, dem, dk, fv);
 
       if (off <= 0.0) {
-        for (int r = 0; r < 18; ++r) nf[r * G + ii] = 0.0;
-        g.dt[ii] = kInf;
-        g.k_nodal[ii] = 0.0;
+        clear_shell_element(g, nf, ii, 18);
         continue;
       }
 

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "solver/element_gather.hpp"
 #include "solver/material_point.hpp"
@@ -124,6 +125,86 @@ inline void store_local_forces(double* nf, std::size_t stride, std::size_t k, st
   o[3 * stride] = -(mx * e1x + my * e2x);
   o[4 * stride] = -(mx * e1y + my * e2y);
   o[5 * stride] = -(mx * e1z + my * e2z);
+}
+
+// Local geometry and velocities of element j of a four-node block (QEPH and QBAT front stage, elements.md
+// 1.2): the node coordinates relative to node 1 in the frame (lx, ly), under small strain (frozen:
+// /DT/SHELL/CST switch or Ismstr 1) the first cycle's ones, kept in g.ref_local (x2 x3 x4 y2 y3 y4); the
+// nodal velocities (vx vy vz) and rotation rates (rx ry) on the frame's axes. The values are also stored in
+// the block's local rows (bk.vx ... bk.ly) for the back stage.
+template <class Block>
+inline void quad_local_state(Block& bk, int j, ShellGroup& g, std::size_t ii, bool frozen, double lx[4],
+                             double ly[4], double vx[4], double vy[4], double vz[4], double rx[4],
+                             double ry[4]) {
+  constexpr std::size_t G = kGroupSize;
+  const double e1[3] = {bk.fr.e1[0][j], bk.fr.e1[1][j], bk.fr.e1[2][j]};
+  const double e2[3] = {bk.fr.e2[0][j], bk.fr.e2[1][j], bk.fr.e2[2][j]};
+  const double e3[3] = {bk.fr.e3[0][j], bk.fr.e3[1][j], bk.fr.e3[2][j]};
+  lx[0] = ly[0] = 0.0;
+  for (int k = 1; k < 4; ++k) {
+    double lz = 0;
+    to_local(e1[0], e1[1], e1[2], e2[0], e2[1], e2[2], e3[0], e3[1], e3[2], bk.nb.x[k][j] - bk.nb.x[0][j],
+             bk.nb.y[k][j] - bk.nb.y[0][j], bk.nb.z[k][j] - bk.nb.z[0][j], lx[k], ly[k], lz);
+  }
+  if (frozen) {  // small strain: the local coordinates of the first cycle
+    if (g.small[ii] == 0.0) {
+      for (int k = 1; k < 4; ++k) {
+        g.ref_local[static_cast<std::size_t>(k - 1) * G + ii] = lx[k];
+        g.ref_local[static_cast<std::size_t>(k + 2) * G + ii] = ly[k];
+      }
+      g.small[ii] = 1.0;
+    }
+    for (int k = 1; k < 4; ++k) {
+      lx[k] = g.ref_local[static_cast<std::size_t>(k - 1) * G + ii];
+      ly[k] = g.ref_local[static_cast<std::size_t>(k + 2) * G + ii];
+    }
+  }
+  for (int k = 0; k < 4; ++k) {
+    double rz_unused = 0;
+    to_local(e1[0], e1[1], e1[2], e2[0], e2[1], e2[2], e3[0], e3[1], e3[2], bk.nb.vx[k][j], bk.nb.vy[k][j],
+             bk.nb.vz[k][j], vx[k], vy[k], vz[k]);
+    to_local(e1[0], e1[1], e1[2], e2[0], e2[1], e2[2], e3[0], e3[1], e3[2], bk.nb.rx[k][j], bk.nb.ry[k][j],
+             bk.nb.rz[k][j], rx[k], ry[k], rz_unused);
+    bk.vx[k][j] = vx[k], bk.vy[k][j] = vy[k], bk.vz[k][j] = vz[k], bk.rx[k][j] = rx[k], bk.ry[k][j] = ry[k];
+    bk.lx[k][j] = lx[k], bk.ly[k][j] = ly[k];
+  }
+}
+
+// A deleted (or deleting) shell: no nodal force on rows 0 .. rows - 1 of element ii, dt = +inf, k = 0.
+inline void clear_shell_element(ShellGroup& g, double* nf, std::size_t ii, int rows) {
+  constexpr std::size_t G = kGroupSize;
+  for (int r = 0; r < rows; ++r) nf[r * G + ii] = 0.0;
+  g.dt[ii] = std::numeric_limits<double>::infinity();
+  g.k_nodal[ii] = 0.0;
+}
+
+// Membrane damping stresses (elements.md 1.4) of a point of area A from the membrane increments dem
+// (xx yy xy): visc = visc0 sqrt(A), fv = visc (dexx + deyy/2, deyy + dexx/2, dgxy/3); 0 when visc0 = 0.
+inline void membrane_damping(double visc0, double area, const double dem[5], double fv[3]) {
+  fv[0] = fv[1] = fv[2] = 0.0;
+  if (visc0 > 0) {
+    const double visc = visc0 * std::sqrt(area);
+    fv[0] = visc * (dem[0] + 0.5 * dem[1]);
+    fv[1] = visc * (dem[1] + 0.5 * dem[0]);
+    fv[2] = visc * dem[2] / 3.0;
+  }
+}
+
+// Internal energy increment of a point of weight w (area) and thickness t, elements.md 1.5: the trapezoid of
+// the resultants before (times off_start) and after (times off) the section update, plus the damping work,
+//   dE = w t / 2 (sum_q (off0 F_old + off F_new)_q dem_q + t sum_q (off0 M_old + off M_new)_q dk_q)
+//        + w t off fv . dem,
+// with F, M the averaged stresses N/t and M/t^2 of element j of the section rows (SectionBlock layout).
+template <int B>
+inline double shell_energy_increment(double w, double t, double off_start, double off,
+                                     const double (&for_old)[5][B], const double (&for_new)[5][B],
+                                     const double (&mom_old)[3][B], const double (&mom_new)[3][B], int j,
+                                     const double dem[5], const double dk[3], const double fv[3]) {
+  double de_mem = 0, de_bend = 0;
+  for (int q = 0; q < 5; ++q) de_mem += (off_start * for_old[q][j] + off * for_new[q][j]) * dem[q];
+  for (int q = 0; q < 3; ++q) de_bend += (off_start * mom_old[q][j] + off * mom_new[q][j]) * dk[q];
+  return 0.5 * w * t * (de_mem + t * de_bend) +
+         w * t * off * (fv[0] * dem[0] + fv[1] * dem[1] + fv[2] * dem[2]);
 }
 
 }  // namespace radx::solver::shell_detail

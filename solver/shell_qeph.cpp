@@ -95,7 +95,6 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
   const double alpha = rate_filter_alpha(mat, dt1);
   const double fail_limit = failure_limit(mat);
   const bool update_thick = pr.ithick == 1;
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   // Bending weights of the tangent factor: sum w_p zeta_p^2 (0 for N <= 1).
   double bend_weight_sum = 0;
   for (int p = 0; p < rule.n; ++p) bend_weight_sum += rule.w[p] * rule.zeta[p] * rule.zeta[p];
@@ -118,40 +117,9 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
       sec.off[j] = off_start;
       if (g.thick[ii] <= 0.0) g.thick[ii] = g.t0[ii];
       sec.t[j] = update_thick ? g.thick[ii] : g.t0[ii];
-      const double e1[3] = {bk.fr.e1[0][j], bk.fr.e1[1][j], bk.fr.e1[2][j]};
-      const double e2[3] = {bk.fr.e2[0][j], bk.fr.e2[1][j], bk.fr.e2[2][j]};
-      const double e3[3] = {bk.fr.e3[0][j], bk.fr.e3[1][j], bk.fr.e3[2][j]};
-      double lx[4] = {0, 0, 0, 0}, ly[4] = {0, 0, 0, 0};
-      const bool frozen = g.dt_fixed[ii] > 0.0 || pr.ismstr == 1;
-      for (int k = 1; k < 4; ++k) {
-        double lz = 0;
-        to_local(e1[0], e1[1], e1[2], e2[0], e2[1], e2[2], e3[0], e3[1], e3[2], bk.nb.x[k][j] - bk.nb.x[0][j],
-                 bk.nb.y[k][j] - bk.nb.y[0][j], bk.nb.z[k][j] - bk.nb.z[0][j], lx[k], ly[k], lz);
-      }
-      if (frozen) {  // small strain: the local coordinates of the first cycle (x2 x3 x4 y2 y3 y4)
-        if (g.small[ii] == 0.0) {
-          for (int k = 1; k < 4; ++k) {
-            g.ref_local[static_cast<std::size_t>(k - 1) * G + ii] = lx[k];
-            g.ref_local[static_cast<std::size_t>(k + 2) * G + ii] = ly[k];
-          }
-          g.small[ii] = 1.0;
-        }
-        for (int k = 1; k < 4; ++k) {
-          lx[k] = g.ref_local[static_cast<std::size_t>(k - 1) * G + ii];
-          ly[k] = g.ref_local[static_cast<std::size_t>(k + 2) * G + ii];
-        }
-      }
-      double vx[4], vy[4], vz[4], rx[4], ry[4];
-      for (int k = 0; k < 4; ++k) {
-        double rz_unused = 0;
-        to_local(e1[0], e1[1], e1[2], e2[0], e2[1], e2[2], e3[0], e3[1], e3[2], bk.nb.vx[k][j],
-                 bk.nb.vy[k][j], bk.nb.vz[k][j], vx[k], vy[k], vz[k]);
-        to_local(e1[0], e1[1], e1[2], e2[0], e2[1], e2[2], e3[0], e3[1], e3[2], bk.nb.rx[k][j],
-                 bk.nb.ry[k][j], bk.nb.rz[k][j], rx[k], ry[k], rz_unused);
-        bk.vx[k][j] = vx[k], bk.vy[k][j] = vy[k], bk.vz[k][j] = vz[k], bk.rx[k][j] = rx[k],
-        bk.ry[k][j] = ry[k];
-        bk.lx[k][j] = lx[k], bk.ly[k][j] = ly[k];
-      }
+      // Local geometry (small strain: the first cycle's), velocities and rotation rates (shell_frame.hpp).
+      double lx[4], ly[4], vx[4], vy[4], vz[4], rx[4], ry[4];
+      quad_local_state(bk, j, g, ii, g.dt_fixed[ii] > 0.0 || pr.ismstr == 1, lx, ly, vx, vy, vz, rx, ry);
       const QuadRows r0 = quad_rows(lx, ly, 0.0, 0.0);
       sec.area[j] = 4.0 * r0.detj;
       double e[5], kap[3];
@@ -183,9 +151,7 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
       const std::size_t ii = static_cast<std::size_t>(i0 + j);
       const double off_start = sec.off[j];
       if (off_start <= 0.0) {
-        for (int r = 0; r < 24; ++r) nf[r * G + ii] = 0.0;
-        g.dt[ii] = kInf;
-        g.k_nodal[ii] = 0.0;
+        clear_shell_element(g, nf, ii, 24);
         continue;
       }
       const double t = sec.t[j], area = sec.area[j];
@@ -197,25 +163,13 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
       g.thick[ii] += sec.dthick[j] * off;
 
       // Membrane damping (1.4).
-      double fv[3] = {0.0, 0.0, 0.0};
-      if (visc0 > 0) {
-        const double visc = visc0 * std::sqrt(area);
-        fv[0] = visc * (dem[0] + 0.5 * dem[1]);
-        fv[1] = visc * (dem[1] + 0.5 * dem[0]);
-        fv[2] = visc * dem[2] / 3.0;
-      }
+      double fv[3];
+      membrane_damping(visc0, area, dem, fv);
       // Internal energy (1.5).
-      double de_mem = 0, de_bend = 0;
-      for (int q = 0; q < 5; ++q)
-        de_mem += (off_start * sec.for_old[q][j] + off * sec.for_new[q][j]) * dem[q];
-      for (int q = 0; q < 3; ++q)
-        de_bend += (off_start * sec.mom_old[q][j] + off * sec.mom_new[q][j]) * dk[q];
-      g.e_int[ii] += 0.5 * area * t * (de_mem + t * de_bend) +
-                     area * t * off * (fv[0] * dem[0] + fv[1] * dem[1] + fv[2] * dem[2]);
+      g.e_int[ii] += shell_energy_increment(area, t, off_start, off, sec.for_old, sec.for_new, sec.mom_old,
+                                            sec.mom_new, j, dem, dk, fv);
       if (off <= 0.0) {
-        for (int r = 0; r < 24; ++r) nf[r * G + ii] = 0.0;
-        g.dt[ii] = kInf;
-        g.k_nodal[ii] = 0.0;
+        clear_shell_element(g, nf, ii, 24);
         continue;
       }
 

@@ -110,12 +110,6 @@ inline double equivalent_rate_arg(double dexx, double deyy, double dgxy, double 
   return (4.0 / 3.0) * m + (t * t / 9.0) * b;
 }
 
-// Filter factor of 6.1.
-inline double rate_filter_alpha(const MaterialParams& mat, double dt1) {
-  if (mat.f_cut <= 0) return 1.0;
-  return std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1);
-}
-
 // Section update of a block of B elements (slots j = 0 .. len of the group's elements i0 + j), structure of
 // arrays. The kernel fills the inputs; FOR, MOM are the raw (not yet multiplied by OFF) averaged stress N/t
 // and M/t^2 before and after the update, in the order xx yy xy yz zx / xx yy xy.

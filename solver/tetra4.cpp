@@ -40,16 +40,11 @@
 
 #include "solver/element_gather.hpp"
 #include "solver/element_groups.hpp"
+#include "solver/solid_stages.hpp"
 
 namespace radx::solver {
 
 namespace {
-
-inline void cross(const double a[3], const double b[3], double c[3]) {
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 // Outward faces of a positive tetrahedron (node positions 0..3), face f opposite node kOpposite[f];
 // the same table as model::kTetraFaces.
@@ -65,7 +60,7 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
   const double rho0 = mat.rho0;
   const double qa2 = g.qa * g.qa;
   const double qb = g.qb;
-  const double alpha = mat.f_cut > 0 ? std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1) : 1.0;
+  const double alpha = rate_filter_alpha(mat, dt1);
   const double inf = std::numeric_limits<double>::infinity();
 
   const std::int32_t* conn = g.conn.data();
@@ -95,7 +90,7 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
         e1[d] = x[kFaces[f][1]][d] - x[kFaces[f][0]][d];
         e2[d] = x[kFaces[f][2]][d] - x[kFaces[f][0]][d];
       }
-      cross(e1, e2, af[f]);
+      cross3(e1, e2, af[f]);
       area2_max = std::max(area2_max, af[f][0] * af[f][0] + af[f][1] * af[f][1] + af[f][2] * af[f][2]);
     }
     double d14[3], d24[3], d34[3], c23[3];
@@ -105,7 +100,7 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
       d24[d] = x[1][d] - x[3][d];
       d34[d] = x[2][d] - x[3][d];
     }
-    cross(d24, d34, c23);
+    cross3(d24, d34, c23);
     const double vol = (d14[0] * c23[0] + d14[1] * c23[1] + d14[2] * c23[2]) / 6.0;
     if (!(vol > 0.0)) {  // inverted, flat or not a number: reported and stopped by the engine
       clear_nodal_forces<4, 3>(force, G, i);
@@ -132,28 +127,20 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
         L[a][2] += v[k][a] * b[k][2];
       }
     const double D[6] = {L[0][0], L[1][1], L[2][2], L[0][1] + L[1][0], L[1][2] + L[2][1], L[2][0] + L[0][2]};
-    const double wz = 0.5 * dt1 * (L[1][0] - L[0][1]);
-    const double wy = 0.5 * dt1 * (L[0][2] - L[2][0]);
-    const double wx = 0.5 * dt1 * (L[2][1] - L[1][2]);
+    double wx, wy, wz;
+    half_step_spin(L, dt1, wx, wy, wz);
 
     // Jaumann rotation of the stored stress (old values on the right-hand side).
     double s[6];
 #pragma GCC unroll 6
     for (int m = 0; m < 6; ++m) s[m] = g.sig[static_cast<std::size_t>(m) * G + i];
     double so[6];
-    so[0] = s[0] - 2.0 * s[3] * wz + 2.0 * s[5] * wy;
-    so[1] = s[1] + 2.0 * s[3] * wz - 2.0 * s[4] * wx;
-    so[2] = s[2] - 2.0 * s[5] * wy + 2.0 * s[4] * wx;
-    so[3] = s[3] + wz * (s[0] - s[1]) + wy * s[4] - wx * s[5];
-    so[4] = s[4] + wx * (s[1] - s[2]) + wz * s[5] - wy * s[3];
-    so[5] = s[5] + wy * (s[2] - s[0]) + wx * s[3] - wz * s[4];
+    jaumann_rotate(s, wx, wy, wz, so);
 
     // Density, strain rate, material.
-    const double rho = rho0 * g.vol0[i] / vol;
-    const double mu = rho / rho0 - 1.0;
-    const double e_rate =
-        std::sqrt(D[0] * D[0] + D[1] * D[1] + D[2] * D[2] + 0.5 * (D[3] * D[3] + D[4] * D[4] + D[5] * D[5]));
-    const double rate = alpha * e_rate + (1.0 - alpha) * g.rate[i];
+    const double rho = solid_density(rho0, g.vol0[i], vol);
+    const double mu = solid_mu(rho, rho0);
+    const double rate = filtered_rate(alpha, strain_rate_measure(D), g.rate[i]);
     const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
     double sn[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
     double eps_p = g.eps_p[i];
@@ -170,23 +157,15 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
 
     // Bulk viscosity and element step.
     const double l = std::cbrt(vol);
-    const double ec = std::max(0.0, -(D[0] + D[1] + D[2]));
-    const double q_new = rho * ec * l * (qa2 * l * ec + qb * c);
+    const double ec = compression_rate(D);
+    const double q_new = bulk_viscosity(rho, ec, l, qa2, qb, c);
     const double dx = 6.0 * vol / std::sqrt(area2_max);  // 3 V / (largest face area)
-    const double qt = qb * c + qa2 * l * ec;
-    const double dt_e = dx / (qt + std::sqrt(qt * qt + c * c));
+    const double dt_e = solid_step(dx, c, qa2, qb, l, ec);
 
     // Energies.
-    const double dvol = vol - g.vol[i];
-    const double vavg = vol - 0.5 * dvol;
-    double work = 0.0;
-#pragma GCC unroll 6
-    for (int m = 0; m < 6; ++m) work += (so[m] + sn[m]) * D[m];
-    const double de_int = 0.5 * dt1 * vavg * work - 0.5 * dvol * (g.q[i] + q_new);
-    const double sm = (sn[0] + sn[1] + sn[2]) / 3.0;
-    const double svm = std::sqrt(
-        1.5 * ((sn[0] - sm) * (sn[0] - sm) + (sn[1] - sm) * (sn[1] - sm) + (sn[2] - sm) * (sn[2] - sm)) +
-        3.0 * (sn[3] * sn[3] + sn[4] * sn[4] + sn[5] * sn[5]));
+    const double de_int =
+        solid_energy_increment(dt1, vol, g.vol[i], stress_power_sum(so, sn, D), g.q[i], q_new);
+    const double svm = std::sqrt(von_mises2(sn));
 
     // Nodal forces f_k = -V (sigma - q I) b_k.
     const double T[3][3] = {{vol * (sn[0] - q_new), vol * sn[3], vol * sn[5]},
@@ -209,7 +188,7 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
     g.e_int[i] += off_new * de_int;
     g.w_plastic[i] += off_new * svm * deps_p * vol;
     g.dt[i] = dt_e;
-    g.k_nodal[i] = 0.5 * rho * vol / (dt_e * dt_e);
+    g.k_nodal[i] = solid_nodal_stiffness(0.5, rho, vol, dt_e);
   }
 }
 

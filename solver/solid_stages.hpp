@@ -1,0 +1,246 @@
+// Stages every solid kernel runs the same way, written once: the one-point brick (hex8_fb.cpp), HEPH
+// (hex8_heph.cpp), the fully integrated brick (hex8_full.cpp) and the tetrahedron (tetra4.cpp) call these.
+// Internal to the solver; not a public API.
+//
+// Small inline functions, one per quantity, each with its formula and the section of shared/spec/elements.md
+// it comes from. The arithmetic is written in the order the kernels had it (left to right, no reassociation),
+// so the kernels' results do not change to the bit; keep that order when editing. No allocation, no virtual
+// call: the compiler inlines them into the element loops.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "solver/element_groups.hpp"
+
+namespace radx::solver {
+
+// Faces of the eight-node brick (node positions 0..7) for the characteristic length; orientation does not
+// matter there.
+inline constexpr int kBrickFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                          {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+// c = a x b.
+inline void cross3(const double a[3], const double b[3], double c[3]) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// One-point brick geometry (elements.md 3.1, sderi3.F), nodes 1-4 one face, 5-8 above them:
+//   d17 = x7 - x1, d28 = x8 - x2, d35 = x5 - x3, d46 = x6 - x4,
+//   j1 = d17 + d28 - d35 - d46 (8 dx/deta), j2 = d17 + d28 + d35 + d46 (8 dx/dzeta),
+//   j3 = d17 - d28 - d35 + d46 (8 dx/dxi); c12 = j1 x j2, c23 = j2 x j3, c31 = j3 x j1;
+//   returns V = j1 . c23 / 64 (8 det J(0), not the trilinear volume).
+inline double brick_centre_jacobian(const double x[8][3], double j1[3], double j2[3], double j3[3],
+                                    double c12[3], double c23[3], double c31[3]) {
+#pragma GCC unroll 8
+  for (int d = 0; d < 3; ++d) {
+    const double d17 = x[6][d] - x[0][d];
+    const double d28 = x[7][d] - x[1][d];
+    const double d35 = x[4][d] - x[2][d];
+    const double d46 = x[5][d] - x[3][d];
+    j1[d] = d17 + d28 - d35 - d46;
+    j2[d] = d17 + d28 + d35 + d46;
+    j3[d] = d17 - d28 - d35 + d46;
+  }
+  cross3(j1, j2, c12);
+  cross3(j2, j3, c23);
+  cross3(j3, j1, c31);
+  return (j1[0] * c23[0] + j1[1] * c23[1] + j1[2] * c23[2]) / 64.0;
+}
+
+// Centre gradients b_k = dN_k/dx(0) = [xi_k c12 + eta_k c23 + zeta_k c31] / (64 V) (elements.md 3.1), so
+// b5 = -b3, b6 = -b4, b7 = -b1, b8 = -b2.
+inline void brick_centre_gradients(const double c12[3], const double c23[3], const double c31[3], double vol,
+                                   double b[8][3]) {
+  const double inv = 1.0 / (64.0 * vol);
+#pragma GCC unroll 8
+  for (int d = 0; d < 3; ++d) {
+    b[0][d] = -(c12[d] + c23[d] + c31[d]) * inv;
+    b[1][d] = (c12[d] - c23[d] - c31[d]) * inv;
+    b[2][d] = (c12[d] + c23[d] - c31[d]) * inv;
+    b[3][d] = (-c12[d] + c23[d] - c31[d]) * inv;
+    b[4][d] = -b[2][d];
+    b[5][d] = -b[3][d];
+    b[6][d] = -b[0][d];
+    b[7][d] = -b[1][d];
+  }
+}
+
+// Velocity gradient of the one-point brick, L[a][c] = dv_a/dx_c = sum_k v_k,a b_k,c, from the opposite-node
+// differences (elements.md 3.1): (v1 - v7) b1 + (v2 - v8) b2 + (v3 - v5) b3 + (v4 - v6) b4.
+inline void brick_velocity_gradient(const double v[8][3], const double b[8][3], double L[3][3]) {
+  for (int a = 0; a < 3; ++a) L[a][0] = L[a][1] = L[a][2] = 0.0;
+#pragma GCC unroll 8
+  for (int k = 0; k < 4; ++k) {
+    const int o = (k < 2) ? k + 6 : k + 2;  // opposite nodes: 1-7, 2-8, 3-5, 4-6
+#pragma GCC unroll 8
+    for (int a = 0; a < 3; ++a) {
+      const double dv = v[k][a] - v[o][a];
+      L[a][0] += dv * b[k][0];
+      L[a][1] += dv * b[k][1];
+      L[a][2] += dv * b[k][2];
+    }
+  }
+}
+
+// /DT/BRICK/CST small strain (elements.md 3.1, hex8_fb.cpp): freeze the brick's node coordinates in x_ref the
+// first cycle after the switch (dt_fixed > 0), then take x from them every cycle (velocities stay current).
+inline void brick_small_strain_geometry(BrickGroup& g, std::size_t i, double x[8][3]) {
+  constexpr std::size_t G = kGroupSize;
+  if (g.dt_fixed[i] > 0.0 && !g.small[i]) {
+    for (std::size_t k = 0; k < 8; ++k)
+      for (std::size_t d = 0; d < 3; ++d) g.x_ref[(k * 3 + d) * G + i] = x[k][d];
+    g.small[i] = 1;
+  }
+  if (g.small[i]) {
+    for (std::size_t k = 0; k < 8; ++k)
+      for (std::size_t d = 0; d < 3; ++d) x[k][d] = g.x_ref[(k * 3 + d) * G + i];
+  }
+}
+
+// Nodes and velocities of a brick into the element frame R = [e_x e_y e_z] (elements.md 3.6):
+// x' = R^T x, v' = R^T v, i.e. x'_c = sum_r R[r][c] x_r.
+inline void brick_into_frame(const double R[3][3], double x[8][3], double v[8][3]) {
+#pragma GCC unroll 8
+  for (int k = 0; k < 8; ++k) {
+    double xl[3], vl[3];
+#pragma GCC unroll 3
+    for (int c = 0; c < 3; ++c) {
+      xl[c] = R[0][c] * x[k][0] + R[1][c] * x[k][1] + R[2][c] * x[k][2];
+      vl[c] = R[0][c] * v[k][0] + R[1][c] * v[k][1] + R[2][c] * v[k][2];
+    }
+    for (int c = 0; c < 3; ++c) {
+      x[k][c] = xl[c];
+      v[k][c] = vl[c];
+    }
+  }
+}
+
+// Co-rotational strain rate (elements.md 3.6, sdefo3.F): D_aa = L_aa - dt1/2 (L^T L)_aa,
+// D_ab = L_ab + L_ba - dt1 (L^T L)_ab (engineering shears), from the velocity gradient L in the frame.
+inline void corotational_strain_rate(const double L[3][3], double dt1, double D[6]) {
+  auto ltl = [&](int a, int e) { return L[0][a] * L[0][e] + L[1][a] * L[1][e] + L[2][a] * L[2][e]; };
+  const double h = 0.5 * dt1;
+  D[0] = L[0][0] - h * ltl(0, 0);
+  D[1] = L[1][1] - h * ltl(1, 1);
+  D[2] = L[2][2] - h * ltl(2, 2);
+  D[3] = L[0][1] + L[1][0] - dt1 * ltl(0, 1);
+  D[4] = L[1][2] + L[2][1] - dt1 * ltl(1, 2);
+  D[5] = L[2][0] + L[0][2] - dt1 * ltl(2, 0);
+}
+
+// Half-step spin of the velocity gradient L[a][c] = dv_a/dx_c (elements.md 3.2):
+// wx = dt1/2 (dvz/dy - dvy/dz), wy = dt1/2 (dvx/dz - dvz/dx), wz = dt1/2 (dvy/dx - dvx/dy).
+inline void half_step_spin(const double L[3][3], double dt1, double& wx, double& wy, double& wz) {
+  wz = 0.5 * dt1 * (L[1][0] - L[0][1]);
+  wy = 0.5 * dt1 * (L[0][2] - L[2][0]);
+  wx = 0.5 * dt1 * (L[2][1] - L[1][2]);
+}
+
+// First-order Jaumann rotation of the stored stress s (xx yy zz xy yz zx) into so, old values on the right
+// (elements.md 3.2, srota3.F):
+//   sxx += -2 sxy wz + 2 szx wy,  syy += 2 sxy wz - 2 syz wx,  szz += -2 szx wy + 2 syz wx,
+//   sxy += wz (sxx - syy) + wy syz - wx szx,  syz += wx (syy - szz) + wz szx - wy sxy,
+//   szx += wy (szz - sxx) + wx sxy - wz syz.
+inline void jaumann_rotate(const double s[6], double wx, double wy, double wz, double so[6]) {
+  so[0] = s[0] - 2.0 * s[3] * wz + 2.0 * s[5] * wy;
+  so[1] = s[1] + 2.0 * s[3] * wz - 2.0 * s[4] * wx;
+  so[2] = s[2] - 2.0 * s[5] * wy + 2.0 * s[4] * wx;
+  so[3] = s[3] + wz * (s[0] - s[1]) + wy * s[4] - wx * s[5];
+  so[4] = s[4] + wx * (s[1] - s[2]) + wz * s[5] - wy * s[3];
+  so[5] = s[5] + wy * (s[2] - s[0]) + wx * s[3] - wz * s[4];
+}
+
+// Strain-rate measure of the Johnson-Cook rate term (elements.md 6.2), D with engineering shears:
+//   e = sqrt(Dxx^2 + Dyy^2 + Dzz^2 + (D4^2 + D5^2 + D6^2) / 2).
+inline double strain_rate_measure(const double D[6]) {
+  return std::sqrt(D[0] * D[0] + D[1] * D[1] + D[2] * D[2] + 0.5 * (D[3] * D[3] + D[4] * D[4] + D[5] * D[5]));
+}
+
+// Its filter (elements.md 6.2): rate <- alpha e + (1 - alpha) rate, alpha = rate_filter_alpha(mat, dt1).
+inline double filtered_rate(double alpha, double e_rate, double rate_old) {
+  return alpha * e_rate + (1.0 - alpha) * rate_old;
+}
+
+// Density and volumetric strain of a solid (elements.md 3.2, srho3.F): rho = rho0 V0 / V, mu = rho/rho0 - 1.
+inline double solid_density(double rho0, double vol0, double vol) {
+  return rho0 * vol0 / vol;
+}
+inline double solid_mu(double rho, double rho0) {
+  return rho / rho0 - 1.0;
+}
+
+// Compression rate of the bulk viscosity (elements.md 3.3): ec = max(0, -tr D).
+inline double compression_rate(const double D[6]) {
+  return std::max(0.0, -(D[0] + D[1] + D[2]));
+}
+
+// Bulk viscosity (elements.md 3.3, mqviscb.F), l = V^(1/3): q = rho ec l (qa^2 l ec + qb c).
+inline double bulk_viscosity(double rho, double ec, double l, double qa2, double qb, double c) {
+  return rho * ec * l * (qa2 * l * ec + qb * c);
+}
+
+// Brick characteristic length (elements.md 4.4, sdlen3.F): V / largest face area, a face's area
+// |d13 x d24| / 2 (node positions from kBrickFaces).
+inline double brick_face_length(const double x[8][3], double vol) {
+  double area2_max = 0.0;
+#pragma GCC unroll 8
+  for (const auto& f : kBrickFaces) {
+    double d13[3], d24[3];
+#pragma GCC unroll 8
+    for (int d = 0; d < 3; ++d) {
+      d13[d] = x[f[2]][d] - x[f[0]][d];
+      d24[d] = x[f[3]][d] - x[f[1]][d];
+    }
+    const double n0 = d13[1] * d24[2] - d13[2] * d24[1];
+    const double n1 = d13[2] * d24[0] - d13[0] * d24[2];
+    const double n2 = d13[0] * d24[1] - d13[1] * d24[0];
+    area2_max = std::max(area2_max, n0 * n0 + n1 * n1 + n2 * n2);
+  }
+  return vol / (0.5 * std::sqrt(area2_max));
+}
+
+// Element step of a solid before the /DT scale (elements.md 4.4, mqviscb.F): with qt = qb c + qa^2 l ec,
+// c_eff = qt + sqrt(qt^2 + c^2) and dt = length / c_eff.
+inline double solid_step(double length, double c, double qa2, double qb, double l, double ec) {
+  const double qt = qb * c + qa2 * l * ec;
+  return length / (qt + std::sqrt(qt * qt + c * c));
+}
+
+// Stress power sum of the energy trapezoid (elements.md 3.3): sum_m (sigma_old + sigma_new)_m D_m,
+// engineering shears in D.
+inline double stress_power_sum(const double so[6], const double sn[6], const double D[6]) {
+  double work = 0.0;
+#pragma GCC unroll 6
+  for (int m = 0; m < 6; ++m) work += (so[m] + sn[m]) * D[m];
+  return work;
+}
+
+// Internal energy increment of a one-point solid, total (elements.md 3.3, meint.F), with the bulk-viscosity
+// work: dE = dt1/2 Vavg work - dV/2 (q_old + q_new), dV = V - V_old, Vavg = V - dV/2,
+// work = stress_power_sum(...).
+inline double solid_energy_increment(double dt1, double vol, double vol_old, double work, double q_old,
+                                     double q_new) {
+  const double dvol = vol - vol_old;
+  const double vavg = vol - 0.5 * dvol;
+  return 0.5 * dt1 * vavg * work - 0.5 * dvol * (q_old + q_new);
+}
+
+// Square of the von Mises stress (elements.md 6.5): 3/2 s_dev : s_dev with sm = tr(sigma)/3,
+//   svm^2 = 1.5 ((sxx - sm)^2 + (syy - sm)^2 + (szz - sm)^2) + 3 (sxy^2 + syz^2 + szx^2).
+inline double von_mises2(const double s[6]) {
+  const double sm = (s[0] + s[1] + s[2]) / 3.0;
+  return 1.5 * ((s[0] - sm) * (s[0] - sm) + (s[1] - sm) * (s[1] - sm) + (s[2] - sm) * (s[2] - sm)) +
+         3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+}
+
+// Nodal stiffness of a solid (elements.md 4.5): k = share rho V / dt^2 for each node, share = 1/4 for the
+// bricks, 1/2 for the tetrahedron (s4cumu3.F).
+inline double solid_nodal_stiffness(double share, double rho, double vol, double dt) {
+  return share * rho * vol / (dt * dt);
+}
+
+}  // namespace radx::solver
