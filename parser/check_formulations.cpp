@@ -173,12 +173,20 @@ void ModelBuilder::check_formulations() {
       if (used & kTetra) {
         flag("Itetra4", s.itetra4, s.itetra4 != 1 && s.itetra4 != 3 && s.itetra4 != 10, 1000,
              itetra4_name(s.itetra4), itetra4_name(1000), "4-node tetrahedra");
-        if (!(used & kBrick)) {
+        if (!(used & kBrick))
           flag("Ismstr", s.ismstr, s.ismstr == 2 || s.ismstr == 4, 4, ismstr_name(s.ismstr), ismstr_name(4),
                "4-node tetrahedra");
-          flag("Iframe", s.iframe, s.iframe == 1, 1, s.iframe == 2 ? "co-rotational" : "frame option",
-               "Jaumann rate, not co-rotational", "4-node tetrahedra");
-        }
+        // The deck's frame (the property's Iframe, else /DEF_SOLID's, else 1), also when bricks share the
+        // property: OpenRadioss's tetrahedron runs co-rotational with 2 (s4forc3.F, JCVT), radx's only with
+        // the Jaumann rate. Checked on a copy, so that under --allow-substitutions a brick sharing the
+        // property keeps its frame while the tetrahedra run the Jaumann rate.
+        auto tet_frame = static_cast<int>(rec.get_int("Iframe"));
+        const auto def_solid = deck_.of("/DEF_SOLID");
+        if (tet_frame == 0 && !def_solid.empty() && def_solid.front()->find("Iframe"))
+          tet_frame = static_cast<int>(def_solid.front()->get_int("Iframe"));
+        if (tet_frame <= 0) tet_frame = 1;
+        flag("Iframe", tet_frame, tet_frame == 1, 1, tet_frame == 2 ? "co-rotational" : "frame option",
+             "Jaumann rate, not co-rotational", "4-node tetrahedra");
       }
       if (!(used & kBrick)) continue;
       const bool full = s.isolid == 12 || s.isolid == 14 || s.isolid == 17 || s.isolid == 18;

@@ -1355,6 +1355,9 @@ def semantic(ck, m):
         elif "/BRICK" in kinds:
             if "/TETRA4" in kinds and resolved(o, "Itetra4", "/DEF_SOLID", 1000) in (1, 3, 10):
                 bad.append("Itetra4")
+            # tetrahedra sharing the property run the Jaumann rate only (OpenRadioss: co-rotational with 2)
+            if "/TETRA4" in kinds and resolved(o, "Iframe", "/DEF_SOLID", 1) != 1:
+                bad.append("Iframe")
             isolid = resolved(o, "Isolid", "/DEF_SOLID", 1)
             # one point (1, 2), HEPH (24) and the fully integrated 12, 14, 17, 18 (2 x 2 x 2 points)
             if isolid not in (1, 2, 24, 12, 14, 17, 18):
@@ -1368,7 +1371,7 @@ def semantic(ck, m):
             if resolved(o, "Ismstr", "/DEF_SOLID", 4) not in (2, 4):
                 bad.append("Ismstr")
             # Isolid 24 forces the co-rotational frame; 1 and 2 take Iframe 1 (Jaumann) or 2 (co-rotational)
-            if isolid != 24 and resolved(o, "Iframe", "/DEF_SOLID", 1) not in (1, 2):
+            if isolid != 24 and resolved(o, "Iframe", "/DEF_SOLID", 1) not in (1, 2) and "Iframe" not in bad:
                 bad.append("Iframe")
             if val(o, "Icontrol", 0) == 1:
                 bad.append("Icontrol")

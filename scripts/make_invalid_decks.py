@@ -497,6 +497,15 @@ def _():
         [("RX510", "PSO3.Itetra4")]
 
 
+@fault("tetra_corotational_shared_property")
+def _():
+    d = with_tetra(base())
+    d.update("PSO", Iframe=2)
+    return d, "/PROP/SOLID/2 Iframe = 2 (co-rotational) is shared by brick 11 and tetrahedron 21: radx's " \
+              "tetrahedron runs the Jaumann rate only (OpenRadioss's runs co-rotational): refused by name", \
+        [("RX510", "PSO.Iframe")]
+
+
 @fault("implausible_wave_speed")
 def _():
     d = base()
@@ -821,13 +830,13 @@ def _():
         [("RX510", "PSH.Ishell")]
 
 
-@fault("isolid_14_from_def_solid")
+@fault("isolid_16_from_def_solid")
 def _():
     d = base()
-    d.insert_before("PSO_KW", block("DEFS", "/DEF_SOLID", Isolid=14, Ismstr=0, Icpre=0))
+    d.insert_before("PSO_KW", block("DEFS", "/DEF_SOLID", Isolid=16, Ismstr=0, Icpre=0))
     d.update("PSO", Isolid=0)
-    return d, "/PROP/SOLID/2 leaves Isolid 0 and /DEF_SOLID sets 14 (HA8): the block's brick would run a " \
-        "formulation radx lacks", [("RX510", "PSO.Isolid")]
+    return d, "/PROP/SOLID/2 leaves Isolid 0 and /DEF_SOLID sets 16 (20-node quadratic): the block's brick " \
+        "would run a formulation radx lacks", [("RX510", "PSO.Isolid")]
 
 
 @fault("heph_icpre_2")

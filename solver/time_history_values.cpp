@@ -339,19 +339,26 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
         const int np = g.props.n_points;
         const double t = g.thick[k] > 0 ? g.thick[k] : g.t0[k];
         double f[3] = {0, 0, 0}, mm[3] = {0, 0, 0};
-        if (np <= 0) {
-          for (std::size_t q = 0; q < 3; ++q) {
-            f[q] = g.sig[q * kGroupSize + k];
-            mm[q] = g.sig[(5 + q) * kGroupSize + k];
-          }
-        } else {
-          const auto rule = shell_detail::thickness_rule(np);
-          for (int p = 0; p < np; ++p)
-            for (int q = 0; q < 3; ++q) {
-              const double sg = g.sig[shell_detail::sig_index(p, q, i)];
-              f[q] += rule.w[p] * sg;
-              mm[q] += rule.m[p] * sg;
+        // QBAT keeps one state per in-plane Gauss point ([gauss][...]): its resultants are their mean, as the
+        // result fields take it (result_fields.cpp).
+        const std::size_t rows = static_cast<std::size_t>(np <= 0 ? 8 : 5 * np) * kGroupSize;
+        const double per_point = 1.0 / g.gauss;
+        for (int gp = 0; gp < g.gauss; ++gp) {
+          const double* sig = g.sig.data() + static_cast<std::size_t>(gp) * rows;
+          if (np <= 0) {
+            for (std::size_t q = 0; q < 3; ++q) {
+              f[q] += per_point * sig[q * kGroupSize + k];
+              mm[q] += per_point * sig[(5 + q) * kGroupSize + k];
             }
+          } else {
+            const auto rule = shell_detail::thickness_rule(np);
+            for (int p = 0; p < np; ++p)
+              for (int q = 0; q < 3; ++q) {
+                const double sg = sig[shell_detail::sig_index(p, q, i)];
+                f[q] += per_point * rule.w[p] * sg;
+                mm[q] += per_point * rule.m[p] * sg;
+              }
+          }
         }
         put(o, "F1", f[0] * t);
         put(o, "F2", f[1] * t);
