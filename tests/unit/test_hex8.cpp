@@ -20,6 +20,7 @@
 #include <numbers>
 #include <vector>
 
+#include "kernel_test_util.hpp"
 #include "solver/element_groups.hpp"
 #include "solver/model/geometry.hpp"
 
@@ -27,39 +28,12 @@ using namespace radx::solver;
 
 namespace {
 
+using radx::test::elastic;
+using radx::test::make_nodes;
+using radx::test::rel;
+
 constexpr std::size_t G = kGroupSize;
 using P3 = std::array<double, 3>;
-
-double rel(double a, double b) {
-  return std::abs(a - b) / std::max(std::abs(b), std::numeric_limits<double>::min());
-}
-
-MaterialParams elastic(double young, double nu, double rho) {
-  MaterialParams m;
-  m.law = radx::model::MaterialLaw::Elastic;
-  m.rho0 = rho;
-  m.young = young;
-  m.nu = nu;
-  m.shear = young / (2.0 * (1.0 + nu));
-  m.bulk = young / (3.0 * (1.0 - 2.0 * nu));
-  m.a11 = young / (1.0 - nu * nu);
-  m.a12 = nu * m.a11;
-  m.c_shell = std::sqrt(young / rho);
-  m.c_solid = std::sqrt((m.bulk + 4.0 * m.shear / 3.0) / rho);
-  return m;
-}
-
-// Nodes at `pts` (current = initial), zero velocity.
-NodeState make_nodes(const std::vector<P3>& pts) {
-  NodeState ns;
-  ns.resize(pts.size());
-  for (std::size_t k = 0; k < pts.size(); ++k) {
-    ns.x[k] = ns.x0[k] = pts[k][0];
-    ns.y[k] = ns.y0[k] = pts[k][1];
-    ns.z[k] = ns.z0[k] = pts[k][2];
-  }
-  return ns;
-}
 
 // A group of elements over `ns` with the initial one-point volumes from the model geometry.
 BrickGroup make_group(const std::vector<std::array<int, 8>>& elems, const NodeState& ns, double rho0) {

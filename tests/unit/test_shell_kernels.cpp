@@ -10,6 +10,7 @@
 #include <numbers>
 #include <vector>
 
+#include "kernel_test_util.hpp"
 #include "solver/element_groups.hpp"
 #include "solver/material_point.hpp"
 #include "solver/node_state.hpp"
@@ -25,28 +26,11 @@ using radx::solver::ShellGroup;
 
 namespace {
 
+using radx::test::elastic;
+using radx::test::make_nodes;
+
 constexpr std::size_t G = kGroupSize;
 using Vec3 = std::array<double, 3>;
-
-MaterialParams elastic(double young, double nu, double rho) {
-  Material m;
-  m.law = MaterialLaw::Elastic;
-  m.rho = rho;
-  m.young = young;
-  m.poisson = nu;
-  return make_material_params(m);
-}
-
-NodeState make_nodes(const std::vector<Vec3>& xyz) {
-  NodeState s;
-  s.resize(xyz.size());
-  for (std::size_t k = 0; k < xyz.size(); ++k) {
-    s.x[k] = s.x0[k] = xyz[k][0];
-    s.y[k] = s.y0[k] = xyz[k][1];
-    s.z[k] = s.z0[k] = xyz[k][2];
-  }
-  return s;
-}
 
 // Elements given by 0-based node indices; triangles use the first three.
 ShellGroup make_group(const std::vector<std::array<int, 4>>& conn, double t, int points,

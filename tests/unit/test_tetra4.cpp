@@ -16,6 +16,7 @@
 
 #include "contact/type7_engine.hpp"
 #include "contact/type7_prepare.hpp"
+#include "kernel_test_util.hpp"
 #include "parser/model_builder.hpp"
 #include "solver/element_groups.hpp"
 #include "solver/model/geometry.hpp"
@@ -28,34 +29,11 @@ using radx::test::Line;
 
 namespace {
 
+using radx::test::elastic;
+using radx::test::make_nodes;
+
 constexpr std::size_t G = kGroupSize;
 using P3 = std::array<double, 3>;
-
-MaterialParams elastic(double young, double nu, double rho) {
-  MaterialParams m;
-  m.law = radx::model::MaterialLaw::Elastic;
-  m.rho0 = rho;
-  m.young = young;
-  m.nu = nu;
-  m.shear = young / (2.0 * (1.0 + nu));
-  m.bulk = young / (3.0 * (1.0 - 2.0 * nu));
-  m.a11 = young / (1.0 - nu * nu);
-  m.a12 = nu * m.a11;
-  m.c_shell = std::sqrt(young / rho);
-  m.c_solid = std::sqrt((m.bulk + 4.0 * m.shear / 3.0) / rho);
-  return m;
-}
-
-NodeState make_nodes(const std::vector<P3>& pts) {
-  NodeState ns;
-  ns.resize(pts.size());
-  for (std::size_t k = 0; k < pts.size(); ++k) {
-    ns.x[k] = ns.x0[k] = pts[k][0];
-    ns.y[k] = ns.y0[k] = pts[k][1];
-    ns.z[k] = ns.z0[k] = pts[k][2];
-  }
-  return ns;
-}
 
 radx::model::Vec3 at0(const NodeState& ns, int n) {
   const auto k = static_cast<std::size_t>(n);
