@@ -335,11 +335,18 @@ void select_operator(const double b[8][8][3], const double bc[8][3], double nu, 
 
 // Isolid 18 with LAW1 (S8E, s8evis3.F): a viscous force on the hourglass rates, with the structure of
 // HEPH's hourglass (hex8_heph.cpp, szhour3.F) and no stiffness. In the frame x along xi:
-//   gamma_jk = (m_jk - bc_k . (m_j . x)) / 8, q(d, j) = sum_k gamma_jk v_k[d] (modes m1 eta-zeta, m2 zeta-xi,
+//   gamma_jk = m_jk / 8 - bc_k . (m_j . x), q(d, j) = sum_k gamma_jk v_k[d] (modes m1 eta-zeta, m2 zeta-xi,
 //   m3 xi-eta, m4 xi-eta-zeta), J_d = 8 |g_d|_d (4 x the edge), T = cv q with cv = 0.0025 rho c V^(1/3),
 //   N = H T (HEPH's H with nu1 = 2/(1-nu), nu2 = nu nu1, nu3 = 2/3 (1+nu)), f_k[d] -= sum_j gamma_jk N(d, j).
-// Returns the dissipated power sum N q. OpenRadioss books it nowhere (the QA deck HSEPH shows the loss as
-// an 18 % energy error); radx books it as hourglass energy, outside the internal energy.
+// The projection term has no 1/8, unlike Flanagan-Belytschko's gamma = (m - bc . (m . x)) / 8 that HEPH uses:
+// OpenRadioss's S8E builds m . x without the 1/8 (s8ederic3.F) where HEPH's szderi3.F has it. So on a brick
+// that is not a parallelepiped (m . x != 0) a linear velocity field L x gets the rate q = -7/8 L (m . x) and
+// is damped, which is what the QA beam HSEPH measures (its trapezoidal two-brick beam; radx with the 1/8 was
+// 34 % off its internal energy, 0.3 % with OpenRadioss's form). radx reproduces it on purpose, so that decks
+// run as in Radioss; on parallelepipeds both forms agree (m . x = 0).
+// Returns the dissipated power sum N q. OpenRadioss books it nowhere (HSEPH's listing shows the loss as a
+// -1.2 % to -2.3 % energy error through the run, -18 % at its last line where the external work is small);
+// radx books it as hourglass energy, outside the internal energy, so its balance closes.
 constexpr int kHgMode[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
                                {1, -1, -1, 1, -1, 1, 1, -1},
                                {1, -1, 1, -1, 1, -1, 1, -1},
@@ -366,7 +373,7 @@ double s8e_hourglass_viscosity(const double x[8][3], const double v[8][3], doubl
     for (int k = 0; k < 8; ++k)
       for (int d = 0; d < 3; ++d) hx[d] += kHgMode[j][k] * x[k][d];
     for (int k = 0; k < 8; ++k) {
-      gam[j][k] = 0.125 * (kHgMode[j][k] - dot3(bc[k], hx));
+      gam[j][k] = 0.125 * kHgMode[j][k] - dot3(bc[k], hx);
       for (int d = 0; d < 3; ++d) q[d][j] += gam[j][k] * v[k][d];
     }
   }

@@ -392,3 +392,30 @@ TEST_CASE("Isolid 18 with LAW1: S8E's hourglass viscosity in closed form", "[bri
       CHECK(std::abs(g.e_hg[0]) < 1e-12 * dt1 * 16.0 * cv * s * s);
   }
 }
+
+TEST_CASE("Isolid 18 with LAW1: S8E's viscosity damps a uniform strain rate on a warped brick",
+          "[brick][full]") {
+  // OpenRadioss's S8E projects its hourglass rates with gamma_jk = m_jk / 8 - bc_k . (m_j . x) (no 1/8 on the
+  // projection, hex8_full.cpp), so a linear velocity field is damped on a brick that is not a parallelepiped.
+  // The centred cube of side 2 with z_k += eps m3_k keeps bc, J and V (m3 is orthogonal to xi, eta, zeta) and
+  // gets m3 . x = (0, 0, 8 eps). With v_z = s z (a uniform strain rate): q(z, m3) = s eps - 8 eps s = -7 eps
+  // s, N(z, m3) = (h11 + h22) cv q = 16 cv q, e_hg = dt1 16 cv 49 eps^2 s^2. Flanagan-Belytschko's gamma
+  // would give 0. Tolerance 1e-6 relative: the geometry moves by dt1 s (1e-9) of the side in the cycle.
+  const MaterialParams mat = elastic(2e5, 0.25, 1e-8);
+  constexpr int m3[8] = {1, -1, 1, -1, 1, -1, 1, -1};
+  const double s = 1.0, dt1 = 1e-9, eps = 0.1;
+  auto pts = cube(2.0);
+  for (auto& p : pts)
+    for (double& c : p) c -= 1.0;
+  for (std::size_t k = 0; k < 8; ++k) pts[k][2] += eps * m3[k];
+  NodeState ns = make_nodes(pts);
+  for (std::size_t k = 0; k < 8; ++k) ns.vz[k] = s * pts[k][2];
+  BrickGroup g = make_group(kCube, ns, mat, 18);
+  REQUIRE(g.s8e_visc);
+  CycleInfo cyc;
+  cyc.dt1 = dt1;
+  hex8_full_forces(g, ns, mat, cyc);
+  const double cv = 0.0025 * mat.rho0 * mat.c_solid * 2.0;
+  const double expected = dt1 * 16.0 * cv * 49.0 * eps * eps * s * s;
+  CHECK(std::abs(g.e_hg[0] / expected - 1.0) < 1e-6);
+}
