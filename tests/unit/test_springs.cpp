@@ -221,7 +221,7 @@ TEST_CASE("spring kernel: H = 7 follows the loading curve, unloads with K, then 
   CHECK(rel(g.e_int[0], w) < 1e-9);
 }
 
-TEST_CASE("spring kernel: Ileng 1 makes M, K and the elongation per unit length; delta_max breaks it",
+TEST_CASE("spring kernel: Ileng 1 makes M, K and the elongation per unit length, and delta_max breaks it",
           "[spring]") {
   auto ns = radx::test::make_nodes({{0, 0, 0}, {0, 0, 20}});  // L0 = 20
   radx::model::SpringProperty p;
