@@ -48,6 +48,7 @@ std::string kind_path(model::ThKind k) {
     case model::ThKind::Rbody: return "rbody";
     case model::ThKind::Section: return "section";
     case model::ThKind::Accel: return "accel";
+    case model::ThKind::Spring: return "spring";
   }
   return "other";
 }
@@ -65,6 +66,7 @@ std::string kind_name(model::ThKind k) {
     case model::ThKind::Rbody: return "rigid body";
     case model::ThKind::Section: return "section";
     case model::ThKind::Accel: return "accelerometer";
+    case model::ThKind::Spring: return "spring";
   }
   return "";
 }
@@ -83,6 +85,7 @@ std::int64_t user_id(const model::Model& m, model::ThKind k, std::int32_t i) {
     case model::ThKind::Rbody: return m.rigid_bodies[n].id;
     case model::ThKind::Section: return m.sections[n].id;
     case model::ThKind::Accel: return m.accelerometers[n].id;
+    case model::ThKind::Spring: return m.springs.id[n];
   }
   return 0;
 }
@@ -162,7 +165,7 @@ struct EngineOutputs::Impl {
           sa.cell_field = *f;
           spec.components = solver::components(*f);
           spec.on_points = false;
-          sa.values.resize(model.element_count() * static_cast<std::size_t>(spec.components));
+          sa.values.resize(model.cell_count() * static_cast<std::size_t>(spec.components));
         } else if (const auto g = solver::node_field_named(array)) {
           sa.node_field = *g;
           spec.components = solver::components(*g);
@@ -177,7 +180,7 @@ struct EngineOutputs::Impl {
     points.resize(3 * model.nodes.size());
     displacement.resize(3 * model.nodes.size());
     velocity.resize(3 * model.nodes.size());
-    status.resize(model.element_count());
+    status.resize(model.cell_count());
     next_state = 0.0;  // the first cycle
   }
 

@@ -52,6 +52,7 @@ io::StepSource source_of(solver::StepControl::Kind k) {
     case solver::StepControl::Kind::Node: return io::StepSource::Node;
     case solver::StepControl::Kind::Interface: return io::StepSource::Interface;
     case solver::StepControl::Kind::Imposed: return io::StepSource::Imposed;
+    case solver::StepControl::Kind::Spring: return io::StepSource::Spring;
     case solver::StepControl::Kind::None: break;
   }
   return io::StepSource::None;
@@ -137,6 +138,7 @@ io::EnergyBalance to_io(const solver::EnergyBalance& e) {
   b.kinetic_t = e.kinetic_t;
   b.kinetic_r = e.kinetic_r;
   b.internal = e.internal;
+  b.spring = e.spring;
   b.hourglass = e.hourglass;
   b.contact_elastic = e.contact_elastic;
   b.contact_damping = e.contact_damping;

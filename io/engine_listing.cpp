@@ -118,6 +118,7 @@ std::string_view step_source_label(StepSource s) {
     case StepSource::Node: return "NODE";
     case StepSource::Interface: return "INTER";
     case StepSource::Imposed: return "DTIX";
+    case StepSource::Spring: return "SPRING";
   }
   return "-";
 }
@@ -249,6 +250,7 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
   erow("kinetic, translational", e.kinetic_t);
   erow("kinetic, rotational", e.kinetic_r);
   erow("internal", e.internal);
+  if (e.spring != 0) erow("  of which springs", e.spring);
   erow("hourglass", e.hourglass);
   erow("contact, elastic", e.contact_elastic);
   erow("contact, damping", e.contact_damping);

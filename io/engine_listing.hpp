@@ -42,7 +42,7 @@ class EnergyErrorWarnings {
 };
 
 // What controls the time step printed on a listing line.
-enum class StepSource : std::uint8_t { None, Brick, Shell, Shell3, Node, Interface, Imposed };
+enum class StepSource : std::uint8_t { None, Brick, Shell, Shell3, Node, Interface, Imposed, Spring };
 // "BRICK", "SHELL", "SH3N", "NODE", "INTER", "DTIX" (/DTIX set the step), or "-" for None.
 std::string_view step_source_label(StepSource s);
 
@@ -76,6 +76,7 @@ struct EnergyBalance {
   double kinetic_t = 0;
   double kinetic_r = 0;
   double internal = 0;
+  double spring = 0;  // the springs' part of `internal` (listed apart, as OpenRadioss books it)
   double hourglass = 0;
   double contact_elastic = 0;
   double contact_damping = 0;

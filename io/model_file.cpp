@@ -237,8 +237,13 @@ RADX_SCHEMA(SolidProperty, RADX_FIELD(isolid), RADX_FIELD(ismstr), RADX_FIELD(ic
             RADX_FIELD(inpts), RADX_FIELD(itetra4), RADX_FIELD(itetra10), RADX_FIELD(iale), RADX_FIELD(qa),
             RADX_FIELD(qb), RADX_FIELD(h), RADX_FIELD(lambda_v), RADX_FIELD(mu_v), RADX_FIELD(dn),
             RADX_FIELD(dt_min));
+RADX_SCHEMA(SpringProperty, RADX_FIELD(mass), RADX_FIELD(stiffness), RADX_FIELD(damping), RADX_FIELD(a),
+            RADX_FIELD(b), RADX_FIELD(d), RADX_FIELD(e), RADX_FIELD(hardening), RADX_FIELD(f_load),
+            RADX_FIELD(f_damp), RADX_FIELD(f_unload), RADX_FIELD(f_damp4), RADX_FIELD(fscale),
+            RADX_FIELD(ascale), RADX_FIELD(hscale), RADX_FIELD(delta_min), RADX_FIELD(delta_max),
+            RADX_FIELD(ileng), RADX_FIELD(sensor));
 RADX_SCHEMA(Property, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(shell),
-            RADX_FIELD(solid));
+            RADX_FIELD(solid), RADX_FIELD(spring));
 RADX_SCHEMA(Part, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(property), RADX_FIELD(material),
             RADX_FIELD(subset), RADX_FIELD(contact_thickness), RADX_FIELD(mass), RADX_FIELD(element_count));
 RADX_SCHEMA(Subset, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(children), RADX_FIELD(parts));
@@ -317,7 +322,7 @@ RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RAD
 
 // Written member by member below (write_radx, read_file, write_block, read_block): a new member of these
 // structs must be added there.
-static_assert(member_count<Model>() == 37, "model::Model changed: update write_radx and read_file");
+static_assert(member_count<Model>() == 38, "model::Model changed: update write_radx and read_file");
 static_assert(member_count<model::Nodes>() == 5, "model::Nodes changed: update write_radx and read_file");
 static_assert(member_count<model::ElementBlock>() == 7, "model::ElementBlock changed: update write_block");
 
@@ -356,6 +361,7 @@ void for_each_block(ModelT& m, Fn&& fn) {
   fn("shell3", m.shells3);
   fn("brick8", m.bricks);
   fn("tetra4", m.tetras);
+  fn("spring2", m.springs);
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -627,7 +633,10 @@ void read_block(hid_t elements, const std::string& name, model::ElementBlock& b,
   if (b.part.size() != b.size() || b.conn.size() != b.size() * static_cast<std::size_t>(b.npe())) {
     throw Failure("datasets part and conn of " + path_of(g, "") + " do not match its id count");
   }
-  for (const std::int32_t node : b.conn) {
+  for (std::size_t k = 0; k < b.conn.size(); ++k) {
+    const std::int32_t node = b.conn[k];
+    // A spring's third node (orientation) is optional.
+    if (b.type == model::ElementType::Spring2 && k % 3 == 2 && node == model::kNone) continue;
     if (node < 0 || static_cast<std::size_t>(node) >= node_count) {
       throw Failure("dataset " + path_of(g, "conn") + " has node index " + std::to_string(node) +
                     " out of range");

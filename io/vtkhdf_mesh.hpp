@@ -12,6 +12,7 @@
 namespace radx::io {
 
 // Cell types of the VTKHDF Types dataset (VTK's numbering).
+inline constexpr std::uint8_t kVtkLine = 3;
 inline constexpr std::uint8_t kVtkTriangle = 5;
 inline constexpr std::uint8_t kVtkQuad = 9;
 inline constexpr std::uint8_t kVtkTetra = 10;

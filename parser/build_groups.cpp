@@ -127,6 +127,7 @@ const model::ElementBlock& ModelBuilder::block(model::ElementType type) const {
     case model::ElementType::Shell3: return m_.shells3;
     case model::ElementType::Brick8: return m_.bricks;
     case model::ElementType::Tetra4: return m_.tetras;
+    case model::ElementType::Spring2: return m_.springs;
   }
   return m_.shells;
 }

@@ -644,6 +644,7 @@ const std::vector<ThKindDef>& th_kinds() {
       "FX",  "FY",  "FZ",  "MX",  "MY",  "MZ",   "RX",  "RY",  "RZ",  "FXI", "FYI", "FZI", "MXI",   "MYI",
       "MZI", "X",   "Y",   "Z",   "DX",  "DY",   "DZ",  "VX",  "VY",  "VZ",  "AX",  "AY",  "AZ",    "VRX",
       "VRY", "VRZ", "ARX", "ARY", "ARZ", "MASS", "IXX", "IYY", "IZZ", "IXY", "IYZ", "IZX", "STATUS"};
+  static const std::string_view kAxialSpring = "a TYPE4 spring is axial: FX and LX only";
   static const std::string_view kNoType14 =
       "forces of TYPE14 and TYPE15 interfaces, which radx does not have";
   static const std::vector<ThKindDef> kinds = {
@@ -729,6 +730,28 @@ const std::vector<ThKindDef>& th_kinds() {
        {{"DEF", {"AX", "AY", "AZ"}}, {"W", {"WX", "WY", "WZ"}}},
        {"AX", "AY", "AZ", "WX", "WY", "WZ"},
        {}},
+      // OpenRadioss's spring names (th_spring.cfg): on a TYPE4 spring FX is the axial force (> 0 in tension)
+      // and LX the elongation; the other directions and the moments are those of 6-dof springs.
+      {"/TH/SPRING",
+       K::Spring,
+       "spring",
+       "/SPRING",
+       {{"DEF", {"OFF", "FX", "LX", "IE"}},
+        {"F", {"FX", "FY", "FZ"}},
+        {"M", {"MX", "MY", "MZ"}},
+        {"L", {"LX", "LY", "LZ"}},
+        {"R", {"RX", "RY", "RZ"}}},
+       {"OFF", "FX", "FY", "FZ", "MX", "MY", "MZ", "LX", "LY", "LZ", "RX", "RY", "RZ", "IE"},
+       {{"FY", kAxialSpring},
+        {"FZ", kAxialSpring},
+        {"MX", kAxialSpring},
+        {"MY", kAxialSpring},
+        {"MZ", kAxialSpring},
+        {"LY", kAxialSpring},
+        {"LZ", kAxialSpring},
+        {"RX", kAxialSpring},
+        {"RY", kAxialSpring},
+        {"RZ", kAxialSpring}}},
   };
   return kinds;
 }
@@ -804,6 +827,7 @@ std::int32_t th_object(const ModelBuilder& b, model::ThKind kind, std::int64_t i
     case model::ThKind::Rbody: return in(b.rbody_ids_);
     case model::ThKind::Section: return in(b.sect_ids_);
     case model::ThKind::Accel: return in(b.accel_ids_);
+    case model::ThKind::Spring: return b.m_.springs.index.find(id);
   }
   return kNone;
 }

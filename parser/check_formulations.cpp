@@ -19,6 +19,10 @@
 //                   fully integrated (2 x 2 x 2 points, hex8_full.cpp): Isolid 14 (HA8, co-rotational, Icpre
 //                   0 to 3, Inpts 222 only), 17 (H8C, Icpre default 1), 18 (H8D, run as 17 with Icpre chosen
 //                   by the law) and 12 (S8), each with Iframe 1 or 2 (14 and 18 impose 2)
+//   springs:        /PROP/SPRING (TYPE4) with H 0 (elastic: linear K, or the curve fct_ID1) and 7 (elastic
+//                   hysteresis between fct_ID1 and fct_ID3), with the damping C, the amplification A, B, D, E
+//                   fct_ID2 and the force fct_ID4; H 1, 2, 4, 5, 6, 8 are refused by name; /PROP/SPR_GENE
+//                   (TYPE8) and /PROP/SPR_BEAM (TYPE13) are refused as unsupported keywords
 //   4-node tetras:  Itetra4 1000 (constant strain, one point; OpenRadioss hm_read_prop14.F also reads 0 as
 //                   /DEF_SOLID's value, 2 and unexpected values as 1000), Ismstr 2 or 4, Iframe 1; Itetra4 1
 //                   and 3 (nodal pressure) and 10 (converted to a 10-node tetra) are refused
@@ -90,12 +94,27 @@ std::string itetra4_name(int v) {
   }
 }
 
+// /PROP/SPRING's hardening flag H (OpenRadioss hm_read_prop04.F's listing).
+std::string spring_h_name(int v) {
+  switch (v) {
+    case 0: return "elastic, linear or nonlinear by fct_ID1";
+    case 1: return "elasto-plastic, isotropic hardening";
+    case 2: return "elasto-plastic, uncoupled hardening";
+    case 4: return "elasto-plastic, kinematic hardening";
+    case 5: return "nonlinear elastic-plastic with uncoupled loading and unloading";
+    case 6: return "elasto-plastic with hardening of the yield curve";
+    case 7: return "elastic hysteresis";
+    case 8: return "elastic, force of the total length";
+    default: return "hardening flag " + std::to_string(v);
+  }
+}
+
 }  // namespace
 
 void ModelBuilder::check_formulations() {
   // Which element shapes use each property.
   std::vector<std::uint8_t> use(m_.properties.size(), 0);
-  constexpr std::uint8_t kQuad = 1, kTri = 2, kBrick = 4, kTetra = 8;
+  constexpr std::uint8_t kQuad = 1, kTri = 2, kBrick = 4, kTetra = 8, kSpring = 16;
   auto mark = [&](const model::ElementBlock& b, std::uint8_t bit) {
     std::vector<std::uint8_t> part_seen(m_.parts.size(), 0);
     for (const auto p : b.part)
@@ -109,10 +128,11 @@ void ModelBuilder::check_formulations() {
   mark(m_.shells3, kTri);
   mark(m_.bricks, kBrick);
   mark(m_.tetras, kTetra);
+  mark(m_.springs, kSpring);
 
   for (const auto& rec : deck_.records) {
     const auto path = rec.decl->path;
-    if (path != "/PROP/SHELL" && path != "/PROP/SOLID") continue;
+    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING") continue;
     const auto it = prop_ids_.find(rec.id);
     if (it == prop_ids_.end()) continue;
     auto& prop = m_.properties[static_cast<std::size_t>(it->second)];
@@ -148,6 +168,12 @@ void ModelBuilder::check_formulations() {
                      "); set it, or run with --allow-substitutions to run that instead");
       }
     };
+    if (path == "/PROP/SPRING") {
+      auto& s = prop.spring;
+      flag("H", s.hardening, s.hardening == 0 || s.hardening == 7, 0, spring_h_name(s.hardening),
+           spring_h_name(0), "springs (TYPE4)");
+      continue;
+    }
     if (path == "/PROP/SHELL") {
       auto& s = prop.shell;
       if (used & kQuad)

@@ -209,12 +209,26 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    // Columns as OpenRadioss's reader cuts the card (hm_read_spring.F): id, then the nodes 10 wide.
+    KeywordDecl k = kw("/SPRING", "2-node spring elements of one part (a /PROP/SPRING part), one per line",
+                       Header::PartId, false, "part_ID");
+    k.tail = Tail::Records;
+    k.record = card(
+        "spring",
+        {I("spring_ID", 1, 10, "element id").refs(IdKind::Element).must().gt(0),
+         I("n1", 11, 20, "first node").refs(IdKind::Node).must(),
+         I("n2", 21, 30, "second node").refs(IdKind::Node).must(),
+         I("n3", 31, 40, "orientation node (used by TYPE8 and TYPE13 springs only)").refs(IdKind::Node)});
+    t.push_back(std::move(k));
+  }
+  {
     KeywordDecl k = kw("/PART", "a part: the property and material of a set of elements", Header::IdUnit,
                        true, "part_ID");
     k.cards = {card(
         "card 1",
         {I("prop_ID", 1, 10, "property (/PROP) of the part's elements").refs(IdKind::Property).must(),
-         I("mat_ID", 11, 20, "material (/MAT) of the part's elements").refs(IdKind::Material).must(),
+         I("mat_ID", 11, 20, "material (/MAT) of the part's elements; 0 only for spring parts")
+             .refs(IdKind::Material),
          I("subset_ID", 21, 30, "subset the part belongs to; 0 = top level").refs(IdKind::Other),
          R("Thick", 31, 50, "virtual thickness used only for contact gaps; 0 = none").dims(dim::length)})};
     t.push_back(std::move(k));
@@ -224,6 +238,55 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
 // ---------------------------------------------------------------------------------------------------------
 // Properties and materials
 void add_properties_and_materials(std::vector<KeywordDecl>& t) {
+  {
+    // OpenRadioss hm_read_prop04.F; the layouts of prop_p4_spring.cfg (fct_ID4 and Hscale from 120 on).
+    KeywordDecl k = kw("/PROP/SPRING", "spring property (TYPE4): mass, stiffness or force curve, damping",
+                       Header::IdUnit, true, "prop_ID");
+    k.aliases = {"/PROP/TYPE4"};
+    k.cards = {
+        card("card 1",
+             {R("M", 1, 20, "spring mass, half to each node (per unit length with Ileng 1); must be > 0")
+                  .dims(dim::mass),
+              I("sens_ID", 51, 60, "sensor that activates or deactivates the spring; 0 = none")
+                  .refs(IdKind::Other)
+                  .not_implemented(),
+              I("Isflag", 61, 70, "sensor flag").allow({0, 1, 2}).unused(),
+              I("Ileng", 71, 80, "1: mass, stiffness, damping and curves per unit length").allow({0, 1})}),
+        card("card 2",
+             {R("K", 1, 20,
+                "linear stiffness; with fct_ID1 the stiffness of the time step (at least the curve's slope)")
+                  .dims(dim::stiffness),
+              R("C", 21, 40, "linear damping coefficient (force per velocity)").dims(Dim{1, 0, -1}),
+              R("A", 41, 60, "amplification of the curve's force; 0 = 1 (1 without fct_ID1)").dims(dim::none),
+              R("B", 61, 80, "logarithmic rate amplification of the curve's force (0 without fct_ID1)"),
+              R("D", 81, 100, "velocity of the logarithmic amplification; 0 = 1").dims(dim::velocity)}),
+        card_v(
+            "card 3", kAnyVersion, 110,
+            {I("fct_ID1", 1, 10, "force of the elongation f(dx); 0 = linear K").refs(IdKind::Other),
+             I("H", 11, 20, "hardening flag: 0 elastic, 7 elastic hysteresis (1, 2, 4, 5, 6, 8 are refused)")
+                 .allow({0, 1, 2, 4, 5, 6, 7, 8}),
+             I("fct_ID2", 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
+             I("fct_ID3", 31, 40, "unloading curve of H 4, 5, 7").refs(IdKind::Other),
+             R("delta_min", 61, 80, "failure elongation in compression (< 0); 0 = none").dims(dim::length),
+             R("delta_max", 81, 100, "failure elongation in tension (> 0); 0 = none").dims(dim::length)}),
+        card_v(
+            "card 3", 120, kLastVersion,
+            {I("fct_ID1", 1, 10, "force of the elongation f(dx); 0 = linear K").refs(IdKind::Other),
+             I("H", 11, 20, "hardening flag: 0 elastic, 7 elastic hysteresis (1, 2, 4, 5, 6, 8 are refused)")
+                 .allow({0, 1, 2, 4, 5, 6, 7, 8}),
+             I("fct_ID2", 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
+             I("fct_ID3", 31, 40, "unloading curve of H 4, 5, 7").refs(IdKind::Other),
+             I("fct_ID4", 41, 50, "additional force of the velocity, Hscale g4(v/F)").refs(IdKind::Other),
+             R("delta_min", 61, 80, "failure elongation in compression (< 0); 0 = none").dims(dim::length),
+             R("delta_max", 81, 100, "failure elongation in tension (> 0); 0 = none").dims(dim::length)}),
+        card("card 4",
+             {R("F", 1, 20, "velocity scale of fct_ID2 and fct_ID4; 0 = 1").dims(dim::velocity),
+              R("E", 21, 40, "scale of g(v) in the amplification (0 without fct_ID1)"),
+              R("Ascale", 41, 60, "abscissa (elongation) scale of fct_ID1; 0 = 1").dims(dim::length),
+              R("Hscale", 61, 80, "ordinate scale of fct_ID4; 0 = 1").dims(dim::force).versions(120)}),
+    };
+    t.push_back(std::move(k));
+  }
   {
     KeywordDecl k = kw("/PROP/SHELL", "shell property: formulation flags, hourglass, thickness",
                        Header::IdUnit, true, "prop_ID");
@@ -1587,10 +1650,10 @@ void add_time_history(std::vector<KeywordDecl>& t) {
     k.aliases = std::move(aliases);
     k.tail = objects == Objects::Ids ? Tail::ThVarsThenIds : Tail::ThVarsThenRecords;
     const auto word = path.substr(4);
-    k.list_kind = word == "NODE"                                       ? IdKind::Node
-                  : word == "SHEL" || word == "SH3N" || word == "BRIC" ? IdKind::Element
-                  : word == "PART"                                     ? IdKind::Part
-                                                                       : IdKind::Other;
+    k.list_kind = word == "NODE"                                                           ? IdKind::Node
+                  : word == "SHEL" || word == "SH3N" || word == "BRIC" || word == "SPRING" ? IdKind::Element
+                  : word == "PART"                                                         ? IdKind::Part
+                                                                                           : IdKind::Other;
     if (objects == Objects::RecordsWithSkew)
       k.record = card(
           "object",
@@ -1613,6 +1676,7 @@ void add_time_history(std::vector<KeywordDecl>& t) {
   th("/TH/RBODY", {}, "time history of rigid body forces and motion", Objects::Ids);
   th("/TH/SECTIO", {}, "time history of section forces and moments", Objects::Ids);
   th("/TH/ACCEL", {}, "time history of accelerometers", Objects::Ids);
+  th("/TH/SPRING", {}, "time history of spring forces, elongations and energies", Objects::Records);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -1770,14 +1834,13 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW70", "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90",
         "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO", "/MAT/USER",
         // properties
-        "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE2", "/PROP/TRUSS", "/PROP/TYPE3", "/PROP/BEAM", "/PROP/TYPE4",
-        "/PROP/SPRING", "/PROP/TYPE8", "/PROP/TYPE9", "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP",
+        "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE2", "/PROP/TRUSS", "/PROP/TYPE3", "/PROP/BEAM", "/PROP/TYPE8",
+        "/PROP/SPR_GENE", "/PROP/SPR_BEAM", "/PROP/TYPE9", "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP",
         "/PROP/TYPE11", "/PROP/SH_SANDW", "/PROP/TYPE13", "/PROP/TYPE16", "/PROP/SH_FABR", "/PROP/TYPE17",
         "/PROP/TYPE18", "/PROP/INT_BEAM", "/PROP/TYPE20", "/PROP/TSHELL", "/PROP/TYPE22", "/PROP/TYPE23",
         "/PROP/TYPE51", "/PROP/TYPE52", "/PROP/USER",
         // elements
-        "/SPRING", "/BEAM", "/TRUSS", "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD", "/TRIA",
-        "/SPHCEL",
+        "/BEAM", "/TRUSS", "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD", "/TRIA", "/SPHCEL",
         // groups, surfaces, boxes
         "/GRNOD/LINE", "/GRSHEL", "/GRSH3N", "/GRBRIC", "/GRBEAM", "/GRTRUS", "/GRSPRI", "/GRPART", "/GRQUAD",
         "/SURF/SURF", "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE",
@@ -1800,8 +1863,8 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/FUNCT_PYTHON", "/ACTIV", "/LEAK", "/DFS", "/EBCS", "/INIGRAV", "/INIMAP1D", "/INIMAP2D", "/PERTURB",
         "/STATE",
         // time history that radx does not write
-        "/TH/SPRING", "/TH/BEAM", "/TH/TRUSS", "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME",
-        "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH", "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
+        "/TH/BEAM", "/TH/TRUSS", "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME", "/TH/CLUSTER", "/ATH",
+        "/BTH", "/CTH", "/DTH", "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
         // engine keywords
         "/DT/BRICK/DEL", "/DT/BRICK/STOP", "/DT/SHELL/DEL", "/DT/SHELL/STOP", "/DT/SH_3N/DEL", "/DT/SH3N/DEL",
         "/DT/NODA/STOP", "/DT/NODA/KILL", "/DT/NODA/SET", "/DT/INTER/STOP", "/DT/AMS", "/ATFILE", "/H3D",

@@ -401,11 +401,13 @@ void ModelBuilder::build_properties() {
   std::unordered_map<std::int64_t, SourcePos> first;
   for (const auto& r : deck_.records) {
     const auto path = r.decl->path;
-    if (path != "/PROP/SHELL" && path != "/PROP/SOLID") continue;
+    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING") continue;
     model::Property p;
     p.id = r.id;
     p.title = r.title;
-    if (path == "/PROP/SHELL") {
+    if (path == "/PROP/SPRING") {
+      read_spring_property(r, p);
+    } else if (path == "/PROP/SHELL") {
       p.kind = model::PropertyKind::Shell;
       auto& s = p.shell;
       s.ishell = pick(r.get_int("Ishell"), dshell("Ishell"), 1);
@@ -495,7 +497,12 @@ void ModelBuilder::build_subsets_and_parts() {
     p.id = r->id;
     p.title = r->title;
     p.property = ref(prop_ids_, *r, "prop_ID", "property", "/PROP", false);
-    p.material = ref(mat_ids_, *r, "mat_ID", "material", "/MAT", false);
+    // Springs take their mechanics from the property alone: a spring part needs no material.
+    // A property that is missing (or of a keyword radx refuses, e.g. /PROP/SPR_GENE) is reported already; its
+    // part's mat_ID 0 would only repeat it.
+    const bool spring = p.property == kNone || m_.properties[static_cast<std::size_t>(p.property)].kind ==
+                                                   model::PropertyKind::Spring;
+    p.material = ref(mat_ids_, *r, "mat_ID", "material", "/MAT", spring);
     p.subset = ref(subset_ids_, *r, "subset_ID", "subset", "/SUBSET", true);
     p.contact_thickness = r->get_real("Thick");
     if (p.contact_thickness < 0)
@@ -542,7 +549,9 @@ void ModelBuilder::build_elements() {
         if (p.property != kNone && m_.properties[p.property].kind != kind.prop_kind) {
           diags_.error(Diag::PartWrongKind, at(r->pos, 1), about(*r),
                        "part " + std::to_string(r->id) + " has a " +
-                           (kind.prop_kind == model::PropertyKind::Shell ? "solid" : "shell") +
+                           (m_.properties[p.property].kind == model::PropertyKind::Spring ? "spring"
+                            : kind.prop_kind == model::PropertyKind::Shell                ? "solid"
+                                                                                          : "shell") +
                            " property (/PROP/" + std::to_string(m_.properties[p.property].id) + "); " +
                            std::string(kind.keyword) + " elements need a " +
                            (kind.prop_kind == model::PropertyKind::Shell ? "/PROP/SHELL" : "/PROP/SOLID"));
@@ -816,12 +825,14 @@ model::Model ModelBuilder::build() {
   build_properties();
   build_subsets_and_parts();
   build_elements();  // element geometry is checked as written, before any transform
+  build_springs();
   check_formulations();
   transform_submodels();  // /TRANSFORM with sub_ID: before anything that reads coordinates
   build_boxes();
   build_functions();
   move_functions();
   resolve_plas_tab_functions();
+  resolve_spring_functions();
   build_element_groups();  // before surfaces and node groups, which are built from element groups
   build_surfaces();        // before the groups: /GRNOD/SURF takes the nodes of surfaces
   build_groups();

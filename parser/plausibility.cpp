@@ -25,6 +25,7 @@ const char* keyword_of(model::ElementType t) {
     case model::ElementType::Shell3: return "/SH3N";
     case model::ElementType::Brick8: return "/BRICK";
     case model::ElementType::Tetra4: return "/TETRA4";
+    case model::ElementType::Spring2: return "/SPRING";
   }
   return "/SHELL";
 }

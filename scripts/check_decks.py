@@ -38,7 +38,7 @@ LENGTH_UNITS = {"m", "mm", "cm", "km", "um", "mum", "in", "ft"}
 TIME_UNITS = {"s", "ms", "mus", "us", "ns", "min", "h"}
 
 # Radioss keyword roots radx does not read: "not supported" (RX302) rather than unknown (RX301).
-UNSUPPORTED_ROOTS = ("/MAT/", "/PROP/", "/INTER/", "/SPRING", "/BEAM", "/TRUSS", "/RBE2", "/RBE3", "/MONVOL",
+UNSUPPORTED_ROOTS = ("/MAT/", "/PROP/", "/INTER/", "/BEAM", "/TRUSS", "/RBE2", "/RBE3", "/MONVOL",
                      "/SENSOR", "/SKEW", "/FRAME", "/ADMAS", "/TETRA4", "/TETRA10", "/FAIL", "/EOS", "/TABLE",
                      "/SECT/PARAL", "/SECT/CIRCLE", "/GAUGE", "/SPHCEL", "/PARAMETER", "/INISHE", "/INIBRI", "/GRSHEL",
                      "/GRBRIC", "/LINE", "/MERGE", "/CYL_JOINT", "/IMPDISP", "/IMPACC", "/FXBODY", "/DAMP",
@@ -119,6 +119,18 @@ def prop_shell(v):
     if v >= 2024:
         c3.append(F("Ipos", "I", 91, 100))
     return [card(c1), card(c2), card(c3)]
+
+
+def prop_spring(v):
+    """/PROP/SPRING (TYPE4): fct_ID4 and Hscale from the 120 layout on (prop_p4_spring.cfg)."""
+    c1 = [F("M", "R", 1, 20), F("sens_ID", "I", 51, 60), F("Isflag", "I", 61, 70), F("Ileng", "I", 71, 80)]
+    c2 = reals("K", "C", "A", "B", "D")
+    c3 = [F("fct_ID1", "I", 1, 10), F("H", "I", 11, 20), F("fct_ID2", "I", 21, 30), F("fct_ID3", "I", 31, 40)]
+    if v >= 120:
+        c3.append(F("fct_ID4", "I", 41, 50))
+    c3 += [F("delta_min", "R", 61, 80), F("delta_max", "R", 81, 100)]
+    c4 = reals("F", "E", "Ascale", "Hscale" if v >= 120 else None)
+    return [card(c1), card(c2), card(c3), card(c4)]
 
 
 def prop_solid(v):
@@ -432,6 +444,7 @@ NODE_REC = [F("node_ID", "I", 1, 10), F("X", "R", 11, 30), F("Y", "R", 31, 50), 
 SHELL_REC = [F("shell_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)] + \
     [F("PHI", "R", 61, 80), F("Thick", "R", 81, 100)]
 BRICK_REC = [F("brick_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(8)]
+SPRING_REC = [F("spring_ID", "I", 1, 10), F("n1", "I", 11, 20), F("n2", "I", 21, 30), F("n3", "I", 31, 40)]
 TETRA_REC = [F("tetra_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)]
 # /SH3N as OpenRadioss cuts the card (deck-format.md): PHI 71-90, Thick 91-100.
 SH3N_REC = [F("tria_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(3)] + \
@@ -510,6 +523,9 @@ STARTER = {
     "/SHELL": ("part", False, lambda v: [], "records", SHELL_REC),
     "/BRICK": ("part", False, lambda v: [], "records", BRICK_REC),
     "/TETRA4": ("part", False, lambda v: [], "records", TETRA_REC),
+    "/SPRING": ("part", False, lambda v: [], "records", SPRING_REC),
+    "/PROP/SPRING": ("id", True, prop_spring, None, None),
+    "/PROP/TYPE4": ("id", True, prop_spring, None, None),
     "/SH3N": ("part", False, lambda v: [], "records", SH3N_REC),
     "/PART": ("id", True, part, None, None),
     "/PROP/SHELL": ("id", True, prop_shell, None, None),
@@ -569,6 +585,7 @@ STARTER = {
     "/TH/BRIC": ("id", True, lambda v: [], "threcords", THELEM_REC),
     "/TH/BRICK": ("id", True, lambda v: [], "threcords", THELEM_REC),
     "/TH/SH3N": ("id", True, lambda v: [], "threcords", THNODE_REC),
+    "/TH/SPRING": ("id", True, lambda v: [], "threcords", THELEM_REC),
     "/TH/RBODY": ("id", True, lambda v: [], "thids", ID_REC),
     "/TH/SUBS": ("id", True, lambda v: [], "thids", ID_REC),
     "/SECT": ("id", True, sect, None, None),
@@ -1171,7 +1188,8 @@ def semantic(ck, m):
         return table
 
     parts = by_id(("/PART",), "part")
-    props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14"), "property")
+    props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14", "/PROP/SPRING", "/PROP/TYPE4"),
+                  "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02",
                   "/MAT/LAW36", "/MAT/PLAS_TAB"), "material")
     grnods = by_id(tuple(k for k in STARTER if k.startswith("/GRNOD/")), "node group")
@@ -1246,7 +1264,8 @@ def semantic(ck, m):
         po = parts.get(o["id"])
         if po is not None and val(po, "prop_ID") in props:
             solid_prop = props[val(po, "prop_ID")]["path"] in ("/PROP/SOLID", "/PROP/TYPE14")
-            if solid_prop != (kind in ("/BRICK", "/TETRA4")):
+            spring_prop = props[val(po, "prop_ID")]["path"] in ("/PROP/SPRING", "/PROP/TYPE4")
+            if spring_prop or solid_prop != (kind in ("/BRICK", "/TETRA4")):
                 I("RX407", o["pos"][0], o["pos"][1], "%s/%d: part of the wrong property kind" % (kind, o["id"]))
         nn = {"/SHELL": 4, "/SH3N": 3, "/BRICK": 8, "/TETRA4": 4}[kind]
         for r, p in o["recs"]:
@@ -1298,12 +1317,43 @@ def semantic(ck, m):
                 elif hex_tangled(pts):
                     I("RX607", p[0], p[1], "brick %d has a corner turned inside out" % eid)
 
+    # springs: the part has a spring property, n1 and n2 exist and differ, n3 exists when given, ids unique
+    spring_ids = set()
+    for o in m.of("/SPRING"):
+        if o["id"] not in parts:
+            I("RX402", o["pos"][0], o["pos"][1], "/SPRING: part %d does not exist" % o["id"])
+        part_kind.setdefault(o["id"], set()).add("/SPRING")
+        po = parts.get(o["id"])
+        if po is not None and val(po, "prop_ID") in props and \
+                props[val(po, "prop_ID")]["path"] not in ("/PROP/SPRING", "/PROP/TYPE4"):
+            I("RX407", o["pos"][0], o["pos"][1], "/SPRING/%d: part of the wrong property kind" % o["id"])
+        for r, p in o["recs"]:
+            eid = r.get("spring_ID")
+            if eid in spring_ids:
+                I("RX401", p[0], p[1], "spring %d defined twice" % eid)
+                continue
+            spring_ids.add(eid)
+            ns = [r.get("n1"), r.get("n2")]
+            bad = [x for x in ns if x is None or x not in nodes]
+            if r.get("n3") not in (None, 0) and r.get("n3") not in nodes:
+                bad.append(r.get("n3"))
+            for _ in bad:
+                I("RX406", p[0], p[1], "spring %s uses a node that does not exist" % eid)
+            if not bad and ns[0] == ns[1]:
+                I("RX604", p[0], p[1], "spring %s joins a node to itself" % eid)
+
     # parts
     for pid, o in parts.items():
         if val(o, "prop_ID") not in props:
             p = pos(o, "prop_ID")
             I("RX402", p[0], p[1], "part %d: property %d does not exist" % (pid, val(o, "prop_ID")))
-        if val(o, "mat_ID") not in mats:
+        # a spring part has no material; a part whose property is missing is reported for that alone
+        spring_part = val(o, "prop_ID") not in props or \
+            props[val(o, "prop_ID")]["path"] in ("/PROP/SPRING", "/PROP/TYPE4")
+        if val(o, "mat_ID", 0) == 0 and not spring_part:
+            p = pos(o, "mat_ID")
+            I("RX404", p[0], p[1], "part %d: mat_ID is blank or 0" % pid)
+        elif val(o, "mat_ID", 0) != 0 and val(o, "mat_ID") not in mats:
             p = pos(o, "mat_ID")
             I("RX402", p[0], p[1], "part %d: material %d does not exist" % (pid, val(o, "mat_ID")))
 
@@ -1317,6 +1367,33 @@ def semantic(ck, m):
             if nn < 0 or nn > 10:
                 p = pos(o, "N")
                 I("RX501", p[0], p[1], "N = %d outside 0..10" % nn)
+
+    # springs (build_springs.cpp): mass > 0, K >= 0 (> 0 without damping or with a curve), C >= 0, the curves
+    # exist, failure elongations of the right sign
+    for o in props.values():
+        if o["path"] not in ("/PROP/SPRING", "/PROP/TYPE4"):
+            continue
+        if not val(o, "M", 0.0) > 1e-15:
+            p = pos(o, "M")
+            I("RX501", p[0], p[1], "spring mass %g is not positive" % val(o, "M", 0.0))
+        k, c = val(o, "K", 0.0), val(o, "C", 0.0)
+        if k < 0 or (k == 0 and c <= 0 and val(o, "fct_ID4", 0) == 0) or (k == 0 and val(o, "fct_ID1", 0) != 0):
+            p = pos(o, "K")
+            I("RX501", p[0], p[1], "spring stiffness %g" % k)
+        if c < 0:
+            p = pos(o, "C")
+            I("RX501", p[0], p[1], "negative spring damping")
+        if val(o, "delta_min", 0.0) > 0:
+            p = pos(o, "delta_min")
+            I("RX501", p[0], p[1], "positive delta_min")
+        if val(o, "delta_max", 0.0) < 0:
+            p = pos(o, "delta_max")
+            I("RX501", p[0], p[1], "negative delta_max")
+        for name in ("fct_ID1", "fct_ID2", "fct_ID3", "fct_ID4"):
+            f = val(o, name, 0)
+            if f != 0 and f not in functs:
+                p = pos(o, name)
+                I("RX402", p[0], p[1], "spring property %d: function %d does not exist" % (o["id"], f))
 
     # formulations (check_formulations.cpp): a flag of a property used by elements must be one radx implements,
     # resolved as property value, else the /DEF_SHELL or /DEF_SOLID value, else the hard default
@@ -1337,7 +1414,13 @@ def semantic(ck, m):
     for prop_id, kinds in used.items():
         o = props[prop_id]
         bad = []
-        if o["path"] in ("/PROP/SHELL", "/PROP/TYPE1"):
+        if o["path"] in ("/PROP/SPRING", "/PROP/TYPE4"):
+            # the elastic spring and the elastic hysteresis run (H 7 without fct_ID3 is H 2); without fct_ID1 H
+            # does not act (linear)
+            h = val(o, "H", 0)
+            if val(o, "fct_ID1", 0) != 0 and (h not in (0, 7) or (h == 7 and val(o, "fct_ID3", 0) == 0)):
+                bad.append("H")
+        elif o["path"] in ("/PROP/SHELL", "/PROP/TYPE1"):
             # Ishell 1, 12 (QBAT) and 24 (QEPH; 22 and 23 run as 24, elements.md 1.1)
             if "/SHELL" in kinds and resolved(o, "Ishell", "/DEF_SHELL", 1) not in (1, 12, 22, 23, 24):
                 bad.append("Ishell")

@@ -451,6 +451,52 @@ def with_tetra(d, row=(21, 11, 14, 12, 15), part_prop=2, itetra4=None):
     return d
 
 
+SPR = dict(M=1e-6, sens_ID=0, Isflag=0, Ileng=0, K=1000.0, C=0.0, A=0.0, B=0.0, D=0.0, fct_ID1=0, H=0, fct_ID2=0,
+           fct_ID3=0, fct_ID4=0, delta_min=0.0, delta_max=0.0, F=0.0, E=0.0, Ascale=0.0, Hscale=0.0)
+
+
+def with_spring(d, row=(31, 3, 6, 0), **prop):
+    """d with /SPRING/4 (spring 31 between the plate's nodes 3 and 6, tag SPRING_31) in part 4 (no material) of
+    /PROP/SPRING/4 (tag PSPR: M 1e-6, K 1000, the given values on top)."""
+    d.insert_before("AFTER_PARTS", block("SPRING", "/SPRING", 4, rows=[row], row_tags=["SPRING_31"]) +
+                    part(4, "Spring", 4, 0))
+    d.insert_before("AFTER_MATS", block("PSPR", "/PROP/SPRING", 4, "Spring", **dict(SPR, **prop)))
+    return d
+
+
+@fault("spring_zero_mass")
+def _():
+    d = with_spring(base(), M=0.0)
+    return d, "/PROP/SPRING/4 has M = 0: a spring needs a mass > 0 (its step is sqrt(M/K))", [("RX501", "PSPR.M")]
+
+
+@fault("spring_negative_stiffness")
+def _():
+    d = with_spring(base(), K=-5.0)
+    return d, "/PROP/SPRING/4 has K = -5", [("RX501", "PSPR.K")]
+
+
+@fault("spring_missing_function")
+def _():
+    d = with_spring(base(), fct_ID1=99)
+    return d, "/PROP/SPRING/4 names the force curve fct_ID1 = 99, which no /FUNCT defines", \
+        [("RX402", "PSPR.fct_ID1")]
+
+
+@fault("spring_missing_node")
+def _():
+    d = with_spring(base(), row=(31, 3, 999, 0))
+    return d, "spring 31 joins node 3 to node 999, which does not exist", [("RX406", "SPRING_31")]
+
+
+@fault("spring_hardening_refused")
+def _():
+    d = with_spring(base(), fct_ID1=7, H=4, fct_ID3=7)
+    d.insert_before("AFTER_MATS", funct_rows(7, [(-1.0, -1000.0), (0.0, 0.0), (1.0, 1000.0)], "Spring force", "F7"))
+    return d, "/PROP/SPRING/4 asks for H = 4 (kinematic hardening), which radx does not implement: refused by name", \
+        [("RX510", "PSPR.H")]
+
+
 @fault("tetra_zero_volume")
 def _():
     d = with_tetra(base(), row=(21, 11, 12, 13, 14))

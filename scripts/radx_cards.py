@@ -176,6 +176,7 @@ LAYOUTS = {
                                            r("PHI"), r("Thick", 10))),
     "/BRICK": Layout(title=False, rows=Card(i("brick_ID"), *[i("node_ID%d" % k) for k in range(1, 9)])),
     "/TETRA4": Layout(title=False, rows=Card(i("tetra_ID"), *[i("node_ID%d" % k) for k in range(1, 5)])),
+    "/SPRING": Layout(title=False, rows=Card(i("spring_ID"), i("node_ID1"), i("node_ID2"), i("node_ID3"))),
     "/PART": Layout(Card(i("prop_ID"), i("mat_ID"), i("subset_ID"), r("Thick"))),
     "/TRANSFORM/TRA": Layout(
         Card(i("grnod_ID"), r("X_translation"), r("Y_translation"), r("Z_translation"), i("node_ID1"),
@@ -208,6 +209,12 @@ LAYOUTS = {
         Card(r("dtmin"), i("Istrain", since=100, until=2022), i("Ihkt", since=120, until=2022),
              r("vdef_min", col=21, since=2023), r("vdef_max", since=2023), r("ASP_max", since=2023),
              r("COL_min", since=2023))),
+    "/PROP/SPRING": Layout(
+        Card(r("M"), gap(30), i("sens_ID"), i("Isflag"), i("Ileng")),
+        Card(r("K"), r("C"), r("A"), r("B"), r("D")),
+        Card(i("fct_ID1"), i("H"), i("fct_ID2"), i("fct_ID3"), i("fct_ID4", since=120), gap(10), r("delta_min"),
+             r("delta_max")),
+        Card(r("F"), r("E"), r("Ascale"), r("Hscale", since=120))),
     "/MAT/LAW1": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
     "/MAT/PLAS_JOHNS": Layout(
         Card(r("RHO_I"), r("RHO_ref")),

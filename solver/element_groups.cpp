@@ -57,6 +57,16 @@ void TetraGroup::allocate(int n) {
   nodal_force.assign(4 * 3 * G, 0.0);
 }
 
+void SpringGroup::allocate(int n) {
+  count = n;
+  const auto G = static_cast<std::size_t>(kGroupSize);
+  conn.assign(2 * G, 0);
+  element.assign(G, -1);
+  for (auto* v : {&l0, &dx, &force, &f_static, &e_int, &dt, &k_nodal}) v->assign(G, 0.0);
+  off.assign(G, 1.0);
+  nodal_force.assign(2 * 3 * G, 0.0);
+}
+
 void BrickGroup::allocate_points() {
   const auto G = static_cast<std::size_t>(kGroupSize);
   sig_p.assign(8 * 6 * G, 0.0);

@@ -196,6 +196,30 @@ struct TetraGroup {
   void allocate(int n);
 };
 
+// TYPE4 springs (/SPRING with /PROP/SPRING, spring_type4.cpp): one part, so one property, per group. The
+// curves point into the model's functions (the engine keeps the model alive).
+struct SpringGroup {
+  int count = 0;
+  std::vector<std::int32_t> element;  // [G] index of each slot's spring in the model's spring block
+  std::int32_t part = -1;
+  model::SpringProperty props;
+  const model::Function* f_load = nullptr;    // fct_ID1
+  const model::Function* f_damp = nullptr;    // fct_ID2
+  const model::Function* f_damp4 = nullptr;   // fct_ID4
+  const model::Function* f_unload = nullptr;  // fct_ID3 (H = 7)
+  std::vector<std::int32_t> conn;             // [2][G] n1 n2
+  std::vector<double> l0;                     // [G] initial length
+  std::vector<double> dx;                     // [G] elongation L - L0 of the last cycle (> 0 in tension)
+  std::vector<double> force;                  // [G] axial force of the last cycle (> 0 in tension)
+  std::vector<double> f_static;     // [G] H = 7: the force on the hysteresis loop, before amplification
+  std::vector<double> e_int;        // [G] accumulated work of the spring force (elastic and damping)
+  std::vector<double> off;          // [G] 1 alive, 0 broken (delta_min, delta_max)
+  std::vector<double> dt;           // [G] stable step, before the /DT scale
+  std::vector<double> k_nodal;      // [G] nodal stiffness contribution M / dt^2 (for nodal steps)
+  std::vector<double> nodal_force;  // [2][3][G] force ADDED to n1 and n2, global axes
+  void allocate(int n);
+};
+
 // Kernels (one file each). Each reads node coordinates and velocities from `nodes`, updates the
 // group's state, energies and element steps, and fills `nodal_force`. Elements with off == 0 give no
 // force and a step of +infinity.
@@ -206,6 +230,7 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
                        const CycleInfo& cyc);
 void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
                        const CycleInfo& cyc);
+void spring_type4_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc);
 void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 

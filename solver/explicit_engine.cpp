@@ -60,7 +60,7 @@ std::int64_t ExplicitEngine::count_deleted() const {
     for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
   for (const auto& g : tetras_)
     for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
-  return n;
+  return n;  // springs are not contact faces: their failure does not concern contact
 }
 
 ExplicitEngine::~ExplicitEngine() = default;
@@ -268,7 +268,41 @@ void ExplicitEngine::build_groups() {
     tetras_.push_back(std::move(g));
     k = end;
   }
-  element_count_ = m.element_count();
+  // Springs: the same cut by part; each group holds its property and the curves it names.
+  const auto s_order = order_by_part(m.springs);
+  k = 0;
+  while (k < s_order.size()) {
+    const auto part = m.springs.part[s_order[k]];
+    const auto& prop = m.properties[static_cast<std::size_t>(m.parts[part].property)].spring;
+    SpringGroup g;
+    std::size_t end = k;
+    while (end < s_order.size() && m.springs.part[s_order[end]] == part &&
+           end - k < static_cast<std::size_t>(kGroupSize))
+      ++end;
+    g.allocate(static_cast<int>(end - k));
+    g.part = part;
+    g.props = prop;
+    auto curve = [&](std::int32_t f) {
+      return f == model::kNone ? nullptr : &m.functions[static_cast<std::size_t>(f)];
+    };
+    g.f_load = curve(prop.f_load);
+    g.f_damp = curve(prop.f_damp);
+    g.f_damp4 = curve(prop.f_damp4);
+    g.f_unload = curve(prop.f_unload);
+    for (int i = 0; i < g.count; ++i) {
+      const auto e = static_cast<std::size_t>(s_order[k + static_cast<std::size_t>(i)]);
+      g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
+      const auto n1 = m.springs.conn[3 * e], n2 = m.springs.conn[3 * e + 1];
+      g.conn[static_cast<std::size_t>(i)] = n1;
+      g.conn[static_cast<std::size_t>(kGroupSize + i)] = n2;
+      g.l0[static_cast<std::size_t>(i)] =
+          model::norm(model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
+                                 model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]}));
+    }
+    springs_.push_back(std::move(g));
+    k = end;
+  }
+  element_count_ = m.element_count() + m.springs.size();
 }
 
 void ExplicitEngine::build_assembly() {
@@ -298,6 +332,12 @@ void ExplicitEngine::build_assembly() {
           const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
           f(node, &g.nodal_force[static_cast<std::size_t>(q * 3 * kGroupSize + i)], false);
         }
+    for (auto& g : springs_)
+      for (int i = 0; i < g.count; ++i)
+        for (int q = 0; q < 2; ++q) {
+          const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
+          f(node, &g.nodal_force[static_cast<std::size_t>(q * 3 * kGroupSize + i)], false);
+        }
   };
   each_entry([&](std::int32_t node, const double*, bool) { ++count[static_cast<std::size_t>(node) + 1]; });
   for (std::size_t k = 0; k < n; ++k) count[k + 1] += count[k];
@@ -313,6 +353,7 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
   const auto ns = static_cast<std::int64_t>(shells_.size());
   const auto nb = static_cast<std::int64_t>(bricks_.size());
   const auto nt = static_cast<std::int64_t>(tetras_.size());
+  const auto nsp = static_cast<std::int64_t>(springs_.size());
 #pragma omp parallel
   {
 #pragma omp for schedule(dynamic, 1) nowait
@@ -336,11 +377,14 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
         case BrickKernel::FullyIntegrated: hex8_full_forces(g, nodes_, mat, cyc); break;
       }
     }
-#pragma omp for schedule(dynamic, 1)
+#pragma omp for schedule(dynamic, 1) nowait
     for (std::int64_t k = 0; k < nt; ++k) {
       auto& g = tetras_[static_cast<std::size_t>(k)];
       tetra4_forces(g, nodes_, materials_[static_cast<std::size_t>(g.material)], cyc);
     }
+#pragma omp for schedule(dynamic, 1)
+    for (std::int64_t k = 0; k < nsp; ++k)
+      spring_type4_forces(springs_[static_cast<std::size_t>(k)], nodes_, cyc);
   }
 }
 
@@ -428,6 +472,15 @@ double ExplicitEngine::element_time_step(StepControl& control) {
             model_.tetras.id[static_cast<std::size_t>(g.element[k])], false);
     }
   }
+  // Springs vote with the global /DT scale (Radioss's DTFAC1(6)); no /DT/<family>/CST switch applies.
+  for (auto& g : springs_) {
+    for (int i = 0; i < g.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      double unused_frozen = 0.0;
+      visit(controls_.global.scale, controls_.global, g.dt[k], unused_frozen, StepControl::Kind::Spring,
+            model_.springs.id[static_cast<std::size_t>(g.element[k])], false);
+    }
+  }
   return best;
 }
 
@@ -451,6 +504,11 @@ double ExplicitEngine::nodal_time_step(StepControl& control) {
   for (const auto& g : tetras_)
     for (int i = 0; i < g.count; ++i)
       for (int q = 0; q < 4; ++q)
+        s.stiffness[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
+            g.k_nodal[static_cast<std::size_t>(i)];
+  for (const auto& g : springs_)
+    for (int i = 0; i < g.count; ++i)
+      for (int q = 0; q < 2; ++q)
         s.stiffness[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
             g.k_nodal[static_cast<std::size_t>(i)];
   const auto& noda = controls_.nodal;
@@ -784,6 +842,10 @@ void ExplicitEngine::sum_energies(const LoopState& L) {
   add_groups(shells_);
   add_groups(bricks_);
   add_groups(tetras_);
+  energy_.spring = 0;
+  for (const auto& g : springs_)
+    for (int i = 0; i < g.count; ++i) energy_.spring += g.e_int[static_cast<std::size_t>(i)];
+  energy_.internal += energy_.spring;
   if (contact_) {
     energy_.contact_elastic = contact_->energy_elastic();
     energy_.contact_damping = contact_->energy_damping();

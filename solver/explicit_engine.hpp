@@ -38,7 +38,9 @@ namespace radx::solver {
 class KinematicsDriver;
 
 struct EnergyBalance {
+  // `internal` includes the springs' work, as OpenRadioss's balance does; `spring` is that part alone.
   double kinetic_t = 0, kinetic_r = 0, internal = 0, hourglass = 0, external_work = 0, plastic_work = 0;
+  double spring = 0;
   double contact_elastic = 0, contact_damping = 0, contact_friction = 0, contact_lagrange = 0;
   double initial_total = 0;  // E_tot at cycle 0
   double error_percent = 0;
@@ -59,7 +61,8 @@ struct StepControl {
     Node,
     Interface,
     Imposed,
-    Tetra
+    Tetra,
+    Spring
   } kind = Kind::None;
   std::int64_t user_id = 0;
   std::int64_t node_id = 0;  // Interface: the secondary node of the controlling pair
@@ -119,6 +122,7 @@ class ExplicitEngine {
   [[nodiscard]] const std::vector<ShellGroup>& shell_groups() const { return shells_; }
   [[nodiscard]] const std::vector<BrickGroup>& brick_groups() const { return bricks_; }
   [[nodiscard]] const std::vector<TetraGroup>& tetra_groups() const { return tetras_; }
+  [[nodiscard]] const std::vector<SpringGroup>& spring_groups() const { return springs_; }
   [[nodiscard]] std::size_t element_count() const { return element_count_; }
   [[nodiscard]] const model::Model& model() const { return model_; }
   [[nodiscard]] const std::vector<MaterialParams>& materials() const { return materials_; }
@@ -161,6 +165,7 @@ class ExplicitEngine {
   std::vector<ShellGroup> shells_;
   std::vector<BrickGroup> bricks_;
   std::vector<TetraGroup> tetras_;
+  std::vector<SpringGroup> springs_;
   std::size_t element_count_ = 0;
   // Assembly: for node n, slots_[offsets_[n] .. offsets_[n+1]) point at its entries in the groups'
   // nodal_force buffers, in a fixed order; `rot` says whether the entry carries moments.

@@ -332,6 +332,11 @@ void gather_element_status(const ExplicitEngine& e, std::span<std::uint8_t> out)
     for (int i = 0; i < g.count; ++i)
       if (g.off[static_cast<std::size_t>(i)] <= 0)
         out[tetra0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+  const std::size_t spring0 = tetra0 + m.tetras.size();
+  for (const auto& g : e.spring_groups())
+    for (int i = 0; i < g.count; ++i)
+      if (g.off[static_cast<std::size_t>(i)] <= 0)
+        out[spring0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
 }
 
 void gather_points(const ExplicitEngine& e, std::span<double> out) {

@@ -87,6 +87,12 @@ Dim th_variable_dim(model::ThKind kind, const std::string& n) {
       if (n[0] == 'M') return kMoment;
       return kForce;
     case K::Accel: return n[0] == 'A' ? kAcceleration : kVelocity;
+    case K::Spring:
+      if (n[0] == 'F') return kForce;
+      if (n[0] == 'M') return kMoment;
+      if (n[0] == 'L') return kLength;
+      if (n == "IE") return kEnergy;
+      return kNone;  // OFF, RX RY RZ (radians)
   }
   return kNone;
 }
@@ -120,7 +126,7 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
     : kind_(g.kind), objects_(g.objects), variables_(g.variables) {
   const auto& m = e.model();
   using K = model::ThKind;
-  if (kind_ == K::Shell || kind_ == K::Shell3 || kind_ == K::Brick) {
+  if (kind_ == K::Shell || kind_ == K::Shell3 || kind_ == K::Brick || kind_ == K::Spring) {
     // Where each object sits in the element groups, found once: the groups do not change during a run.
     slots_.assign(objects_.size(), {-1, -1});
     std::vector<std::pair<int, int>> where;
@@ -137,6 +143,8 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
     };
     if (kind_ == K::Brick)
       index(e.brick_groups(), [](const BrickGroup&) { return true; });
+    else if (kind_ == K::Spring)
+      index(e.spring_groups(), [](const SpringGroup&) { return true; });
     else
       index(e.shell_groups(), [&](const ShellGroup& grp) { return grp.triangle == (kind_ == K::Shell3); });
     for (std::size_t o = 0; o < objects_.size(); ++o) {
@@ -450,6 +458,18 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
           put(o, "F" + k, c.local_force[d]);
           put(o, "M" + k, c.local_moment[d]);
         }
+      }
+      break;
+    case K::Spring:
+      for (std::size_t o = 0; o < objects_.size(); ++o) {
+        const auto [gi, i] = slots_[o];
+        if (gi < 0) continue;
+        const auto& g = e.spring_groups()[static_cast<std::size_t>(gi)];
+        const auto k = static_cast<std::size_t>(i);
+        put(o, "OFF", g.off[k]);
+        put(o, "FX", g.force[k]);
+        put(o, "LX", g.dx[k]);
+        put(o, "IE", g.e_int[k]);
       }
       break;
     case K::Accel:

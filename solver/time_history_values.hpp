@@ -27,6 +27,8 @@
 // OpenRadioss's EINT); DENS = rho0 V0 / V; BULK = q, the bulk-viscosity pressure (> 0 in compression);
 // VOL = V; PLAS the plastic strain; PLSR the strain-rate measure of hex8_fb.cpp; VX VY VZ the mean of the
 // eight nodes' velocities at the full step; TEMP = 0 (no thermal analysis).
+// Per spring (/TH/SPRING): OFF 1 alive, 0 broken; FX the axial force (> 0 in tension), LX the elongation
+// L - L0, IE the work of the spring force; the other names are 0 for TYPE4 springs.
 // Per rigid body (/TH/RBODY): FX FY FZ, MX MY MZ the force and the moment about the main node that the body
 // receives at its secondary nodes in the last cycle (elements, contact, loads on them; what acts on the
 // main node itself, its loads and the body's weight, is not in them: OpenRadioss rgbodfp.F); RX RY RZ = sum

@@ -67,6 +67,18 @@ void for_each_nodal_mass(const Model& m,
         rho_of(m.tetras.part[e]) * std::max(0.0, tetra_volume(X(c[0]), X(c[1]), X(c[2]), X(c[3])));
     for (int k = 0; k < 4; ++k) fn(c[k], m.tetras.part[e], cell, 0.25 * me);
   }
+  // Springs: their property's M (M L0 with Ileng 1), half on each of n1 and n2 (OpenRadioss starter
+  // rmass.F); numbered after the mesh cells.
+  for (std::size_t e = 0; e < m.springs.size(); ++e, ++cell) {
+    const auto* c = &m.springs.conn[3 * e];
+    const auto part = m.springs.part[e];
+    if (c[0] < 0 || c[1] < 0 || part == kNone) continue;
+    const auto prop = m.parts[static_cast<std::size_t>(part)].property;
+    if (prop == kNone || m.properties[static_cast<std::size_t>(prop)].kind != PropertyKind::Spring) continue;
+    const auto& sp = m.properties[static_cast<std::size_t>(prop)].spring;
+    const double l0 = sp.ileng == 1 ? norm(sub(X(c[1]), X(c[0]))) : 1.0;
+    for (int k = 0; k < 2; ++k) fn(c[k], part, cell, 0.5 * sp.mass * l0);
+  }
 }
 
 void compute_lumped_masses(Model& m) {

@@ -32,13 +32,14 @@ struct Nodes {
 };
 
 // Stored as its integer in the model file: new types go at the end.
-enum class ElementType : std::uint8_t { Shell4 = 0, Shell3 = 1, Brick8 = 2, Tetra4 = 3 };
+enum class ElementType : std::uint8_t { Shell4 = 0, Shell3 = 1, Brick8 = 2, Tetra4 = 3, Spring2 = 4 };
 [[nodiscard]] constexpr int nodes_per_element(ElementType t) {
   switch (t) {
     case ElementType::Shell4: return 4;
     case ElementType::Shell3: return 3;
     case ElementType::Brick8: return 8;
     case ElementType::Tetra4: return 4;
+    case ElementType::Spring2: return 3;  // n1 n2 and the optional orientation node
   }
   return 0;
 }
@@ -100,7 +101,7 @@ struct Material {
   FailJohnson fail_jc;
 };
 
-enum class PropertyKind : std::uint8_t { Shell = 1, Solid = 14 };
+enum class PropertyKind : std::uint8_t { Shell = 1, Solid = 14, Spring = 4 };
 
 struct ShellProperty {
   int ishell = 1, ismstr = 2, ish3n = 2, idrill = 0, ipinch = 0, n_ip = 0, ithick = 2, iplas = 2, ipos = 0;
@@ -113,12 +114,35 @@ struct SolidProperty {
   double qa = 1.1, qb = 0.05, h = 0.1, lambda_v = 0, mu_v = 0, dn = 0, dt_min = 0;
 };
 
+// /PROP/SPRING (/PROP/TYPE4), as OpenRadioss's starter reads it (hm_read_prop04.F), defaults resolved.
+// Force along the spring, with x the elongation (divided by the initial length when Ileng = 1) and
+// v = dx/dt:  F = (A + B ln(max(1, |v| / D)) + E g2(v / F)) f(x) + C v + Hscale g4(v / F),
+// with f(x) = K x without fct_ID1 (A = 1, B = E = 0 then), f1(x / Ascale) with it.
+struct SpringProperty {
+  double mass = 0;       // M (per unit length when Ileng = 1)
+  double stiffness = 0;  // K: the linear stiffness, and the stiffness of the time step
+  double damping = 0;    // C
+  double a = 1, b = 0, d = 1, e = 0;
+  int hardening = 0;  // H: 0 elastic, 7 elastic hysteresis (check_formulations.cpp refuses the others)
+  std::int32_t f_load = kNone;    // fct_ID1: force of the elongation (dense index into Model::functions)
+  std::int32_t f_damp = kNone;    // fct_ID2: the amplification g2 of the velocity
+  std::int32_t f_unload = kNone;  // fct_ID3: unloading curve of H 7 (also of H 4, 5, refused)
+  std::int32_t f_damp4 = kNone;   // fct_ID4: the additional force g4 of the velocity
+  double fscale = 1;              // F: velocity scale of g2 and g4
+  double ascale = 1;              // Ascale: abscissa scale of fct_ID1
+  double hscale = 1;              // Hscale4: ordinate scale of g4
+  double delta_min = -1e30, delta_max = 1e30;  // failure elongations (0 in the deck: none)
+  int ileng = 0;                               // 1: M, K, C and the curves per unit length
+  std::int64_t sensor = 0;                     // sens_ID (refused when not 0)
+};
+
 struct Property {
   std::int64_t id = 0;
   std::string title;
   PropertyKind kind = PropertyKind::Shell;
   ShellProperty shell;
   SolidProperty solid;
+  SpringProperty spring;
 };
 
 struct Part {
@@ -363,7 +387,8 @@ enum class ThKind : std::uint8_t {
   Shell3,
   Rbody,
   Section,
-  Accel
+  Accel,
+  Spring
 };
 struct TimeHistoryGroup {
   std::int64_t id = 0;
@@ -486,6 +511,9 @@ struct Model {
   // 4-node tetrahedra (/TETRA4), nodes as the deck gives them unless the starter renumbered an inverted one
   // (n2 and n4 swapped, as Radioss does) so that tetra_volume (geometry.hpp) is positive.
   ElementBlock tetras{ElementType::Tetra4, {}, {}, {}, {}, {}, {}};
+  // /SPRING: 2-node springs (their parts have a /PROP/SPRING); conn[3 e + 2] is the optional third node
+  // (orientation, kNone when blank). Not cells of the solid and shell mesh: element_count() leaves them out.
+  ElementBlock springs{ElementType::Spring2, {}, {}, {}, {}, {}, {}};
   std::vector<Material> materials;
   std::vector<Property> properties;
   std::vector<Part> parts;
@@ -522,6 +550,9 @@ struct Model {
   [[nodiscard]] std::size_t element_count() const {
     return shells.size() + shells3.size() + bricks.size() + tetras.size();
   }
+
+  // Cells of the results files: the mesh cells above, then the springs (VTK lines n1 n2).
+  [[nodiscard]] std::size_t cell_count() const { return element_count() + springs.size(); }
 
   // Dense index of the skew with user id `skew`; kNone for 0 (the global frame). Throws std::out_of_range
   // for an id the model lacks (the starter refuses those).

@@ -1,0 +1,199 @@
+// /PROP/SPRING (TYPE4) and /SPRING: the property's defaults as OpenRadioss's starter resolves them
+// (hm_read_prop04.F), the elements, and the checks that refuse what would not run.
+//   A, D, F, Ascale, Hscale: 0 -> 1. Without fct_ID1 the force is linear, K dx: A = 1, B = E = 0 whatever
+//   the card says (a non-default A then warns, as Radioss's message 663 does). delta_min, delta_max:
+//   0 -> no failure. Ileng 1: dx, M, K, C per unit initial length (handled by the engine).
+// The spring's mass is M (M L0 with Ileng 1), half on each node (OpenRadioss starter rmass.F).
+#include <cmath>
+#include <string>
+
+#include "parser/field_parse.hpp"
+#include "parser/model_builder.hpp"
+
+namespace radx::detail {
+
+using model::kNone;
+
+namespace {
+std::string num(double v) {
+  return number_text(v);
+}
+}  // namespace
+
+void ModelBuilder::read_spring_property(const KeywordRecord& r, model::Property& p) {
+  p.kind = model::PropertyKind::Spring;
+  auto& s = p.spring;
+  s.mass = r.get_real("M");
+  s.stiffness = r.get_real("K");
+  s.damping = r.get_real("C");
+  s.hardening = static_cast<int>(r.get_int("H"));
+  s.ileng = static_cast<int>(r.get_int("Ileng"));
+  s.sensor = r.get_int("sens_ID");
+  const bool curve = r.get_int("fct_ID1") != 0;
+  const double a = r.get_real("A");
+  s.a = curve ? (a == 0 ? 1.0 : a) : 1.0;
+  s.b = curve ? r.get_real("B") : 0.0;
+  s.e = curve ? r.get_real("E") : 0.0;
+  if (!curve && a != 0 && a != 1)
+    warning_at(r, "A", Diag::InconsistentValues,
+               "A = " + num(a) +
+                   " amplifies the force of fct_ID1, which the property does not give: the linear "
+                   "force K dx is not amplified (A is taken as 1, as Radioss does)");
+  auto one_if_zero = [&](std::string_view field) {
+    const double v = r.find(field) ? r.get_real(field) : 0.0;
+    return v == 0 ? 1.0 : v;
+  };
+  s.d = one_if_zero("D");
+  s.fscale = one_if_zero("F");
+  s.ascale = one_if_zero("Ascale");
+  s.hscale = one_if_zero("Hscale");
+  const double dmin = r.get_real("delta_min"), dmax = r.get_real("delta_max");
+  s.delta_min = dmin == 0 ? -1e30 : dmin;
+  s.delta_max = dmax == 0 ? 1e30 : dmax;
+
+  // Without fct_ID1 Radioss runs the linear force K dx whatever H says (redef3.F90 tests the curve first).
+  if (!curve && s.hardening != 0) {
+    warning_at(r, "H", Diag::InconsistentValues,
+               "H = " + std::to_string(s.hardening) +
+                   " acts on the curve fct_ID1, which the property does not give: the spring is linear, K dx "
+                   "(as Radioss runs it)");
+    s.hardening = 0;
+  }
+  // H 7 needs both curves (Radioss: error 1058 without fct_ID1; without fct_ID3 it warns and runs H 2).
+  if (s.hardening == 7 && curve && r.get_int("fct_ID3") == 0) {
+    warning_at(
+        r, "fct_ID3", Diag::DefaultApplied,
+        "H = 7 without the unloading curve fct_ID3 is H = 2 (uncoupled hardening), as Radioss reads it");
+    s.hardening = 2;
+  }
+  // A spring without mass has no step and moves its nodes without inertia (Radioss error 229 below 1e-15).
+  if (!(s.mass > 1e-15))
+    error_at(r, "M", Diag::ValueOutOfRange,
+             "spring mass M = " + num(s.mass) +
+                 " is not positive; a spring needs a mass M > 0 (half goes to "
+                 "each node; it sets the spring's time step sqrt(M/K))");
+  if (s.stiffness < 0)
+    error_at(r, "K", Diag::ValueOutOfRange,
+             "stiffness K = " + num(s.stiffness) +
+                 " is negative; K must be > 0 (the linear stiffness, or "
+                 "with fct_ID1 the stiffness of the time step)");
+  else if (s.stiffness == 0 && s.damping <= 0 && r.get_int("fct_ID4") == 0)
+    error_at(r, "K", Diag::ValueOutOfRange,
+             "stiffness K is 0 and the spring has no damping: it would carry no force; give K > 0 (with "
+             "fct_ID1, K >= the curve's largest slope sets the time step)");
+  else if (s.stiffness == 0 && curve)
+    error_at(r, "K", Diag::ValueOutOfRange,
+             "stiffness K is 0 with the force curve fct_ID1 = " + std::to_string(r.get_int("fct_ID1")) +
+                 ": the time step of a spring by function comes from K; give K > 0, at least the curve's "
+                 "largest slope A df/dx");
+  if (s.damping < 0)
+    error_at(r, "C", Diag::ValueOutOfRange, "damping C = " + num(s.damping) + " is negative; C must be >= 0");
+  if (s.delta_min > 0)
+    error_at(r, "delta_min", Diag::ValueOutOfRange,
+             "delta_min = " + num(dmin) +
+                 " is positive; the failure elongation in compression must be < 0 "
+                 "(0 = none)");
+  if (s.delta_max < 0)
+    error_at(r, "delta_max", Diag::ValueOutOfRange,
+             "delta_max = " + num(dmax) +
+                 " is negative; the failure elongation in tension must be > 0 "
+                 "(0 = none)");
+}
+
+void ModelBuilder::resolve_spring_functions() {
+  for (const auto& r : deck_.records) {
+    if (r.decl->path != "/PROP/SPRING") continue;
+    const auto it = prop_ids_.find(r.id);
+    if (it == prop_ids_.end()) continue;
+    auto& p = m_.properties[static_cast<std::size_t>(it->second)];
+    if (p.kind != model::PropertyKind::Spring || p.title != r.title) continue;  // a duplicate id
+    auto& s = p.spring;
+    s.f_load = ref(funct_ids_, r, "fct_ID1", "force curve", "/FUNCT", true);
+    s.f_damp = ref(funct_ids_, r, "fct_ID2", "amplification curve", "/FUNCT", true);
+    s.f_unload = ref(funct_ids_, r, "fct_ID3", "unloading curve", "/FUNCT", true);
+    if (r.find("fct_ID4")) s.f_damp4 = ref(funct_ids_, r, "fct_ID4", "velocity force curve", "/FUNCT", true);
+  }
+}
+
+void ModelBuilder::build_springs() {
+  auto& b = m_.springs;
+  std::vector<SourcePos> pos;
+  const char* names[3] = {"n1", "n2", "n3"};
+  for (const auto* r : deck_.of("/SPRING")) {
+    const auto& t = r->records;
+    std::int32_t part = kNone;
+    const auto pit = part_ids_.find(r->id);
+    if (pit == part_ids_.end()) {
+      diags_.error(Diag::MissingReference, at(r->pos, 1), about(*r),
+                   "/SPRING/" + std::to_string(r->id) + ": part " + std::to_string(r->id) +
+                       " does not exist (no /PART/" + std::to_string(r->id) +
+                       "); the keyword line names the part");
+    } else {
+      part = pit->second;
+      const auto& pp = m_.parts[static_cast<std::size_t>(part)];
+      if (pp.property != kNone &&
+          m_.properties[static_cast<std::size_t>(pp.property)].kind != model::PropertyKind::Spring) {
+        diags_.error(Diag::PartWrongKind, at(r->pos, 1), about(*r),
+                     "part " + std::to_string(r->id) + " has /PROP/" +
+                         std::to_string(m_.properties[static_cast<std::size_t>(pp.property)].id) +
+                         ", not a spring property; /SPRING elements need a /PROP/SPRING (TYPE4) part");
+      }
+    }
+    const int cid = t.column("spring_ID");
+    if (cid < 0) continue;
+    int cn[3];
+    for (int k = 0; k < 3; ++k) cn[k] = t.column(names[k]);
+    for (std::size_t e = 0; e < t.size(); ++e) {
+      const std::int64_t eid = t.ints[static_cast<std::size_t>(cid)][e];
+      const About ab{"/SPRING", eid};
+      b.id.push_back(eid);
+      b.part.push_back(part);
+      b.thickness.push_back(0.0);
+      b.phi.push_back(0.0);
+      pos.push_back(t.pos[e]);
+      for (int k = 0; k < 3; ++k) {
+        const std::int64_t user = cn[k] >= 0 ? t.ints[static_cast<std::size_t>(cn[k])][e] : 0;
+        std::int32_t n = kNone;
+        if (user == 0) {
+          if (k < 2)
+            diags_.error(Diag::ElementNodeMissing, at(t.pos[e], 11 + 10 * k), ab,
+                         std::string(names[k]) + " is blank or 0: spring " + std::to_string(eid) +
+                             " needs 2 nodes (n3, the orientation node, is optional)");
+        } else {
+          n = m_.nodes.index.find(user);
+          if (n < 0) {
+            diags_.error(Diag::ElementNodeMissing, at(t.pos[e], 11 + 10 * k), ab,
+                         "spring " + std::to_string(eid) + " uses node " + std::to_string(user) + " (" +
+                             names[k] + "), which does not exist");
+            n = kNone;
+          } else {
+            node_used_[static_cast<std::size_t>(n)] = 1;
+          }
+        }
+        b.conn.push_back(n);
+      }
+      if (part != kNone) ++m_.parts[static_cast<std::size_t>(part)].element_count;
+      const auto n1 = b.conn[b.conn.size() - 3], n2 = b.conn[b.conn.size() - 2];
+      if (n1 != kNone && n1 == n2)
+        diags_.error(Diag::RepeatedNodeInElement, at(t.pos[e], 21), ab,
+                     "spring " + std::to_string(eid) + " joins node " +
+                         std::to_string(m_.nodes.id[static_cast<std::size_t>(n1)]) +
+                         " to itself; a TYPE4 spring needs two distinct nodes n1 and n2");
+    }
+  }
+  std::int64_t dup = 0;
+  if (!b.index.build(b.id, dup)) {
+    std::unordered_map<std::int64_t, std::size_t> first;
+    for (std::size_t i = 0; i < b.id.size(); ++i) {
+      const auto [it, ok] = first.emplace(b.id[i], i);
+      if (!ok) {
+        const SourcePos p = pos[it->second];
+        diags_.error(Diag::DuplicateId, at(pos[i], 1), About{"/SPRING", b.id[i]},
+                     "spring id " + std::to_string(b.id[i]) + " is already used at " + deck_.files[p.file] +
+                         ":" + std::to_string(p.line) + "; spring ids must be unique");
+      }
+    }
+  }
+}
+
+}  // namespace radx::detail

@@ -1,0 +1,107 @@
+// TYPE4 spring (/SPRING with /PROP/SPRING, H = 0 and 7): a 2-node axial spring, elastic (linear or by curve)
+// or with elastic hysteresis, and damping. The force acts along the current line n1 -> n2; the third node
+// plays no part.
+//
+// Sources, read for the behaviour (OpenRadioss): engine/source/elements/spring/r1def3.F (length, elongation,
+// Ileng, failure), redef3.F90 (the force law and the energy), r1len3.F (time step), r1cum3.F (nodal forces);
+// starter hm_read_prop04.F (defaults), rmass.F (mass).
+//
+// Nodes x1, x2 at x^n; dt1 = t^n - t^{n-1}. l = |x2 - x1|, e = (x2 - x1) / l, L0 the initial length.
+//   s = L0 with Ileng 1 (a spring per unit length), 1 otherwise
+//   x = (l - L0) / s                          elongation (strain with Ileng 1), total form
+//   v = (x - x_old) / dt1                     (0 on the first cycle)
+//   f(x) = K x                                without fct_ID1
+//        = f1(x / Ascale)                     with it, H = 0
+//   H = 7 (elastic hysteresis between the loading curve f1 and the unloading curve f3): the trial
+//        f = f_old + (K / A) (x - x_old) is bounded by the curve of the way the spring moves: while |x| grows
+//        (x >= x_old >= ... in tension, x < x_old in compression) f is at most f1(x / Ascale) in tension and
+//        at least f1 in compression; while |x| shrinks, f is at least f3(x / Ascale) in tension and at most
+//        f3 in compression. f_old is this static force of the last cycle (before the amplification).
+//   a(v) = A + B ln(max(1, |v| / D)) + E g2(v / F)      (1 without fct_ID1: the starter sets A 1, B E 0)
+//   N = a(v) f(x) + C v + Hscale g4(v / F)    (K, C per unit length with Ileng 1)
+//   work: E += (x - x_old) (N + N_old) / 2 * s   (trapezoid; elastic and damping work together, as Radioss)
+//   nodal forces: n1 += N e, n2 -= N e        (tension pulls the nodes together)
+//   failure: the spring breaks (N = 0 from then on) when s x leaves [delta_min Ascale, delta_max Ascale]
+//     (hm_read_prop04.F scales both limits by Ascale)
+// Time step (r1len3.F), with the spring's own mass m = M s, stiffness k = K / s, damping c = C / s:
+//   dt = min( m / (sqrt(c^2 + m k) + c),  m / (2 c) )
+//   which is sqrt(m / k) without damping: the period 2 pi sqrt((m/2) / (2 k)) of the spring's two half
+//   masses divided by pi. The nodal stiffness for /DT/NODA is m / dt^2 on each node.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "solver/element_groups.hpp"
+#include "solver/functions.hpp"
+
+namespace radx::solver {
+
+void spring_type4_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc) {
+  constexpr std::size_t G = kGroupSize;
+  const auto& p = g.props;
+  const double inv_dt = cyc.dt1 > 0 ? 1.0 / cyc.dt1 : 0.0;
+  for (int ii = 0; ii < g.count; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
+    for (int d = 0; d < 6; ++d) g.nodal_force[static_cast<std::size_t>(d) * G + i] = 0.0;
+    const auto n1 = static_cast<std::size_t>(g.conn[i]);
+    const auto n2 = static_cast<std::size_t>(g.conn[G + i]);
+    const double l0 = g.l0[i];
+    const double s = p.ileng == 1 ? l0 : 1.0;
+    // Step from the property: the same every cycle (r1len3.F has no geometric term for TYPE4).
+    const double m = p.mass * s, k = p.stiffness / s, c = p.damping / s;
+    double dt = m / std::max(1e-15, std::sqrt(c * c + m * k) + c);
+    dt = std::min(dt, 0.5 * m / std::max(1e-15, c));
+    if (g.off[i] <= 0) {
+      g.force[i] = 0.0;
+      g.dt[i] = std::numeric_limits<double>::infinity();
+      g.k_nodal[i] = 0.0;
+      continue;
+    }
+    g.dt[i] = dt;
+    g.k_nodal[i] = m / (dt * dt);
+    const double ex = nodes.x[n2] - nodes.x[n1], ey = nodes.y[n2] - nodes.y[n1],
+                 ez = nodes.z[n2] - nodes.z[n1];
+    const double l = std::sqrt(ex * ex + ey * ey + ez * ez);
+    const double inv_l = 1.0 / std::max(l, 1e-15);
+    const double x = (l - l0) / s;
+    const double x_old = g.dx[i] / s;
+    const double v = (x - x_old) * inv_dt;
+    double f = p.stiffness * x;
+    double amp = 1.0;
+    if (g.f_load) {
+      const double load = function_value(*g.f_load, x / p.ascale);
+      f = load;
+      if (p.hardening == 7) {
+        const double unload = function_value(*g.f_unload, x / p.ascale);
+        f = g.f_static[i] + p.stiffness / p.a * (x - x_old);
+        const bool growing = x >= x_old;
+        if (x >= 0)
+          f = growing ? std::min(f, load) : std::max(f, unload);
+        else
+          f = growing ? std::min(f, unload) : std::max(f, load);
+      }
+      g.f_static[i] = f;
+      amp = p.a + p.b * std::log(std::max(1.0, std::abs(v / p.d)));
+      if (g.f_damp) amp += p.e * function_value(*g.f_damp, v / p.fscale);
+    }
+    double n = amp * f + p.damping * v;
+    if (g.f_damp4) n += p.hscale * function_value(*g.f_damp4, v / p.fscale);
+    const double elong = x * s;
+    if (elong > p.delta_max * p.ascale || elong < p.delta_min * p.ascale) {
+      g.off[i] = 0.0;
+      n = 0.0;
+    }
+    g.e_int[i] += (x - x_old) * (n + g.force[i]) * 0.5 * s;
+    g.force[i] = n;
+    g.dx[i] = elong;
+    const double fx = n * ex * inv_l, fy = n * ey * inv_l, fz = n * ez * inv_l;
+    g.nodal_force[0 * G + i] = fx;
+    g.nodal_force[1 * G + i] = fy;
+    g.nodal_force[2 * G + i] = fz;
+    g.nodal_force[3 * G + i] = -fx;
+    g.nodal_force[4 * G + i] = -fy;
+    g.nodal_force[5 * G + i] = -fz;
+  }
+}
+
+}  // namespace radx::solver
