@@ -14,6 +14,7 @@
 // on a tied node is a warning, as in OpenRadioss: the tie moves the node and the /BCS has no effect.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -80,7 +81,12 @@ void ModelBuilder::build_tied_interfaces() {
     if (in.idel2 == 1000) in.idel2 = 0;
     in.dsearch = r.get_real("Dsearch");
     bool ok = true;
-    if (in.spotflag != 0) {
+    // A value outside OpenRadioss's list is RX501 from the declaration already.
+    static constexpr int kKnown[] = {1, 2, 3, 4, 10, 11, 12, 20, 21, 22, 25, 26, 27, 28, 30};
+    if (in.spotflag != 0 &&
+        std::find(std::begin(kKnown), std::end(kKnown), in.spotflag) == std::end(kKnown)) {
+      ok = false;
+    } else if (in.spotflag != 0) {
       error_at(r, "Spotflag", Diag::PhysicsNotImplemented,
                "Spotflag = " + std::to_string(in.spotflag) + " (" + std::string(spotflag_name(in.spotflag)) +
                    ") is not implemented in radx; radx runs Spotflag 0 or 5, the standard kinematic tie");
