@@ -300,6 +300,11 @@ RADX_SCHEMA(ContactLaw, RADX_FIELD(normal), RADX_FIELD(friction), RADX_FIELD(bid
             RADX_FIELD(pz), RADX_FIELD(lambda), RADX_FIELD(pe), RADX_FIELD(kc_max), RADX_FIELD(curve),
             RADX_FIELD(cubic), RADX_FIELD(power_m), RADX_FIELD(power_k), RADX_FIELD(mu), RADX_FIELD(ct),
             RADX_FIELD(kappa));
+RADX_SCHEMA(TiedInterface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(secondary_group),
+            RADX_FIELD(main_surface), RADX_FIELD(ignore), RADX_FIELD(spotflag), RADX_FIELD(level),
+            RADX_FIELD(isearch), RADX_FIELD(idel2), RADX_FIELD(dsearch), RADX_FIELD(search_distance),
+            RADX_FIELD(tie_node), RADX_FIELD(tie_segment), RADX_FIELD(tie_r), RADX_FIELD(tie_s),
+            RADX_FIELD(tie_offset), RADX_FIELD(not_found));
 RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RADX_FIELD(secondary_group),
             RADX_FIELD(main_surface), RADX_FIELD(istf), RADX_FIELD(igap), RADX_FIELD(ibag), RADX_FIELD(idel),
             RADX_FIELD(ithe), RADX_FIELD(icurv), RADX_FIELD(iadm), RADX_FIELD(itied), RADX_FIELD(ists),
@@ -322,7 +327,7 @@ RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RAD
 
 // Written member by member below (write_radx, read_file, write_block, read_block): a new member of these
 // structs must be added there.
-static_assert(member_count<Model>() == 38, "model::Model changed: update write_radx and read_file");
+static_assert(member_count<Model>() == 39, "model::Model changed: update write_radx and read_file");
 static_assert(member_count<model::Nodes>() == 5, "model::Nodes changed: update write_radx and read_file");
 static_assert(member_count<model::ElementBlock>() == 7, "model::ElementBlock changed: update write_block");
 
@@ -352,6 +357,7 @@ void for_each_table(ModelT& m, Fn&& fn) {
   fn("accelerometers", m.accelerometers);
   fn("sensors", m.sensors);
   fn("time_histories", m.time_histories);
+  fn("tied_interfaces", m.tied_interfaces);
 }
 
 // ... and the element blocks under /radx/elements.

@@ -254,6 +254,7 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
   count("sensors", m.sensors.size());
   count("time-history groups", m.time_histories.size());
   count("contact interfaces", m.interfaces.size());
+  if (!m.tied_interfaces.empty()) count("tied interfaces (TYPE2)", m.tied_interfaces.size());
 
   os << std::setprecision(6);
   heading(os, "MATERIALS");
@@ -370,6 +371,26 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
       os << " (largest " << c.max_initial_penetration << " at node " << c.max_penetration_node << "; Inacti "
          << c.inacti << ": " << inacti_text(c.inacti) << ")";
     os << '\n';
+  }
+
+  if (!m.tied_interfaces.empty()) {
+    heading(os, "TIED INTERFACES");
+    for (const auto& t : m.tied_interfaces) {
+      os << "  interface " << t.id << " \"" << t.title << "\"  /INTER/TYPE2  Spotflag " << t.spotflag
+         << " (kinematic, offset carried along the segment normal)\n"
+         << "      search distance        " << t.search_distance
+         << (t.dsearch > 0 ? "  (Dsearch)" : "  (automatic: r.m.s. main segment edge)") << '\n'
+         << "      tied secondary nodes   " << t.tie_node.size() << '\n'
+         << "      largest normal offset  ";
+      double dmax = 0;
+      for (const double d : t.tie_offset) dmax = std::max(dmax, std::abs(d));
+      os << dmax << '\n' << "      nodes not found        " << t.not_found.size();
+      if (!t.not_found.empty()) {
+        os << " (" << (t.ignore == 0 ? "error, Ignore = 0" : "left untied, Ignore >= 1") << "):";
+        for (const auto id : t.not_found) os << ' ' << id;
+      }
+      os << '\n';
+    }
   }
 
   if (!m.ignored_keywords.empty()) {

@@ -88,6 +88,11 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::BadContactLaw,
        "a /CTCLAW law string that cannot be read, or a law parameter that is unknown, missing, repeated, out "
        "of range or inconsistent (the curve of a tabulated law included)"},
+      {Diag::TiedNodeWithoutSegment,
+       "/INTER/TYPE2 secondary nodes that find no main segment within the search distance"},
+      {Diag::KinematicConflict,
+       "a node under two kinematic conditions that cannot both hold (a tied node also tied elsewhere, in a "
+       "rigid body or under /BCS)"},
       {Diag::EngineMissingRun, "the engine deck has no /RUN"},
       {Diag::EngineBadLine, "an engine deck data line with too few or unreadable values"},
       {Diag::EngineRunNameMismatch, "the /RUN name or number differs from the file name"},

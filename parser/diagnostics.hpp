@@ -81,6 +81,8 @@ enum class Diag : std::uint16_t {
   InterfaceFieldIgnored = 702,
   BadFrictionLaw = 703,
   BadContactLaw = 704,
+  TiedNodeWithoutSegment = 705,
+  KinematicConflict = 706,
   // engine deck
   EngineMissingRun = 801,
   EngineBadLine = 802,

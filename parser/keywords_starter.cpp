@@ -977,6 +977,47 @@ void add_contact(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    // The Spotflag values OpenRadioss reads (hm_read_inter_type02.F); radx runs 0 and 5 and refuses the
+    // others by name (parser/build_tied.cpp).
+    KeywordDecl k =
+        kw("/INTER/TYPE2", "tied interface: secondary nodes move with the main segments they sit on",
+           Header::IdUnit, true, "inter_ID");
+    k.cards = {
+        card("card 1",
+             {I("grnd_IDs", 1, 10, "secondary node group").refs(IdKind::Other).must(),
+              I("surf_IDm", 11, 20, "main surface").refs(IdKind::Other).must(),
+              I("Ignore", 21, 30,
+                "secondary nodes without a main segment: 0 error, 1 (2, 3 with Dsearch > 0) removed with a "
+                "warning")
+                  .versions(110)
+                  .allow({0, 1, 2, 3, 1000}),
+              I("Spotflag", 31, 40, "formulation: 0 or 5 standard kinematic tie (others refused by name)")
+                  .allow({0, 1, 2, 3, 4, 5, 10, 11, 12, 20, 21, 22, 25, 26, 27, 28, 30}),
+              I("Level", 41, 50, "hierarchy level of the kinematic condition").unused(),
+              I("Isearch", 51, 60, "search algorithm").allow({0, 1, 2}).unused(),
+              I("Idel2", 61, 70, "release the tie when the main elements are deleted").allow({0, 1, 2, 1000}),
+              R("Dsearch", 81, 100, "search distance; 0 = the mean main segment edge length")
+                  .ge(0.0)
+                  .dims(dim::length)}),
+        card_if("rupture 1 (Spotflag 20..22)", when_in("Spotflag", 20, 22),
+                {I("Rupt", 1, 10, "rupture model").unused(), I("Ifiltr", 11, 20, "filter").unused(),
+                 I("fct_IDsr", 21, 30, "stress factor versus stress rate").refs(IdKind::Other).unused(),
+                 I("fct_IDsn", 31, 40, "normal stress versus displacement").refs(IdKind::Other).unused(),
+                 I("fct_IDst", 41, 50, "tangential stress versus displacement").refs(IdKind::Other).unused(),
+                 I("Isym", 51, 60, "symmetry").unused(), R("Max_N_Dist", 61, 80, "").unused(),
+                 R("Max_T_Dist", 81, 100, "").unused()}),
+        card_if("rupture 2 (Spotflag 20..22)", when_in("Spotflag", 20, 22),
+                {R("Fscalestress", 1, 20, "").unused(), R("Fscalestr_rate", 21, 40, "").unused(),
+                 R("Fscaledist", 41, 60, "").unused(), R("Alpha", 61, 80, "").unused(),
+                 R("Area", 81, 100, "").versions(140).unused()}),
+        card_if("penalty (Spotflag 25, 26)", when_in("Spotflag", 25, 26),
+                {R("Stfac", 1, 20, "penalty stiffness factor").unused(),
+                 R("Visc", 21, 40, "critical damping factor").unused(),
+                 I("Istf", 61, 70, "penalty stiffness definition").versions(140).unused()}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
     KeywordDecl k = kw("/INTER/LAGDT/TYPE7",
                        "TYPE7 contact whose pairs switch to Lagrange multipliers below the minimum time step",
                        Header::IdUnit, true, "inter_ID");
@@ -1846,10 +1887,10 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/SURF/SURF", "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE",
         "/SURF/ELLIPS", "/LINE", "/SET",
         // interfaces
-        "/INTER/TYPE1", "/INTER/TYPE2", "/INTER/TYPE3", "/INTER/TYPE5", "/INTER/TYPE8", "/INTER/TYPE10",
-        "/INTER/TYPE11", "/INTER/TYPE14", "/INTER/TYPE15", "/INTER/TYPE17", "/INTER/TYPE18", "/INTER/TYPE19",
-        "/INTER/TYPE20", "/INTER/TYPE21", "/INTER/TYPE23", "/INTER/TYPE24", "/INTER/TYPE25", "/INTER/SUB",
-        "/FRICTION", "/DEFAULT", "/INTTHICK",
+        "/INTER/TYPE1", "/INTER/TYPE3", "/INTER/TYPE5", "/INTER/TYPE8", "/INTER/TYPE10", "/INTER/TYPE11",
+        "/INTER/TYPE14", "/INTER/TYPE15", "/INTER/TYPE17", "/INTER/TYPE18", "/INTER/TYPE19", "/INTER/TYPE20",
+        "/INTER/TYPE21", "/INTER/TYPE23", "/INTER/TYPE24", "/INTER/TYPE25", "/INTER/SUB", "/FRICTION",
+        "/DEFAULT", "/INTTHICK",
         // constraints, kinematics, loads, initial state
         "/SKEW/MOV2", "/FRAME", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT", "/MPC", "/GJOINT",
         "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPACC", "/IMPTEMP", "/INIVEL/GRID", "/INIVEL/AXIS", "/INIVEL/NODE",

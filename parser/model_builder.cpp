@@ -844,6 +844,7 @@ model::Model ModelBuilder::build() {
   build_rigid_walls();
   build_rigid_bodies();
   build_interfaces();
+  build_tied_interfaces();
   build_contact_laws();
   build_sections();
   build_time_histories();

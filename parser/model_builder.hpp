@@ -71,6 +71,7 @@ class ModelBuilder {
   void build_sections();  // build_sections.cpp
   void build_time_histories();
   void build_interfaces();
+  void build_tied_interfaces();  // /INTER/TYPE2, after the rigid bodies and /BCS
   void build_contact_laws();
   void compute_masses();
   void warn_massless_accelerometers();

@@ -223,6 +223,23 @@ def ibc_fields():
     return [F("IBCX", "I", 8, 8), F("IBCY", "I", 9, 9), F("IBCZ", "I", 10, 10)]
 
 
+def inter_type2(v):
+    """TYPE2 (deck-format of hm_read_inter_type02.F): Ignore 21-30 from 110; the rupture cards for Spotflag 20..22,
+    the penalty card for 25, 26."""
+    c1 = [F("grnd_IDs", "I", 1, 10), F("surf_IDm", "I", 11, 20)]
+    if v >= 110:
+        c1.append(F("Ignore", "I", 21, 30))
+    c1 += [F("Spotflag", "I", 31, 40), F("Level", "I", 41, 50), F("Isearch", "I", 51, 60), F("Idel2", "I", 61, 70),
+           F("Dsearch", "R", 81, 100)]
+    rupt = lambda x: x.get("Spotflag", 0) in (20, 21, 22)
+    return [card(c1),
+            card([F("Rupt", "I", 1, 10), F("Ifiltr", "I", 11, 20), F("fct_IDsr", "I", 21, 30),
+                  F("fct_IDsn", "I", 31, 40), F("fct_IDst", "I", 41, 50), F("Isym", "I", 51, 60),
+                  F("Max_N_Dist", "R", 61, 80), F("Max_T_Dist", "R", 81, 100)], cond=rupt),
+            card(reals("Fscalestress", "Fscalestr_rate", "Fscaledist", "Alpha"), cond=rupt),
+            card(reals("Stfac", "Visc"), cond=lambda x: x.get("Spotflag", 0) in (25, 26))]
+
+
 def inter_type7(v):
     """TYPE7 by version: Multimp 51-60 up to 110; Fpenmax, dtmin, Irem_gap, sens_ID from 120; %mesh_size from
     110; Irem_i2 from 130; fct_IDF, AscaleF and the second thermal card from 140; up to 100 the Iadm card
@@ -556,6 +573,7 @@ STARTER = {
     "/SURF/PART": ("id", True, lambda v: [], "ids", ID_REC),
     "/INTER/LAGDT/TYPE7": ("id", True, inter_lagdt, None, None),
     "/INTER/TYPE7": ("id", True, inter_type7, None, None),
+    "/INTER/TYPE2": ("id", True, inter_type2, None, None),
     "/BCS": ("id", True, bcs, None, None),
     "/IMPVEL": ("id", True, impvel, None, None),
     "/IMPDISP": ("id", True, impdisp, None, None),
@@ -1740,6 +1758,31 @@ def semantic(ck, m):
             if c[4] == 0 or not (c[4] < c[5]) or not (c[3] <= c[0] <= c[2]) or not (c[3] <= c[1] <= c[2]):
                 p = pos(o, "C5")
                 I("RX703", p[0], p[1], "interface %d: Renard coefficients inconsistent" % iid)
+
+    # tied interfaces (build_tied.cpp): references, Spotflag values, the formulations radx refuses (RX510), a
+    # node tied by two TYPE2 (RX706, on the second; the nodes of the groups, which all find a segment here)
+    tied_nodes = {}
+    for o in m.of("/INTER/TYPE2"):
+        need(o, "grnd_IDs", grnods, "node group", zero_ok=False)
+        need(o, "surf_IDm", surfs, "surface", zero_ok=False)
+        flag = val(o, "Spotflag", 0)
+        p = pos(o, "Spotflag")
+        if flag not in (0, 1, 2, 3, 4, 5, 10, 11, 12, 20, 21, 22, 25, 26, 27, 28, 30):
+            I("RX501", p[0], p[1], "/INTER/TYPE2 %d: Spotflag = %d" % (o["id"], flag))
+        elif flag not in (0, 5):
+            I("RX510", p[0], p[1], "/INTER/TYPE2 %d: Spotflag %d not implemented" % (o["id"], flag))
+        if val(o, "Idel2", 0) not in (0, 1000):
+            p = pos(o, "Idel2")
+            I("RX510", p[0], p[1], "/INTER/TYPE2 %d: Idel2 not implemented" % o["id"])
+        g = grnods.get(val(o, "grnd_IDs", 0))
+        if g is not None and flag in (0, 5) and g["path"] == "/GRNOD/NODE":
+            ids = [x for x, _ in g.get("ids", []) if isinstance(x, int) and x > 0]
+            twice = [x for x in ids if x in tied_nodes]
+            if twice:
+                p = pos(o, "grnd_IDs")
+                I("RX706", p[0], p[1], "/INTER/TYPE2 %d: nodes tied twice" % o["id"])
+            for x in ids:
+                tied_nodes.setdefault(x, o["id"])
 
     # contact laws (/CTCLAW, contact-laws.md sections 4 and 5): the interface exists, the law string reads
     for o in m.of("/CTCLAW"):

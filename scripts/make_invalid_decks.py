@@ -767,6 +767,54 @@ def _():
         [("RX402", "INT.grnd_IDs")]
 
 
+def type2(grnod=3, surf=1, spotflag=0, tag="T2", iid=1, group=True):
+    """A /INTER/TYPE2 (tag T2) tying the block's bottom nodes (/GRNOD/NODE/3: 11 12 13 14, 1.5 mm above the
+    plate) to the plate surface (/SURF/PART/1), with those two in front (group=False: not again)."""
+    rows = []
+    if group:
+        rows += block("GRN3", "/GRNOD/NODE", 3, "Block bottom nodes", ids=[11, 12, 13, 14])
+        rows += block("SURF1", "/SURF/PART", 1, "Plate surface", ids=[1])
+    return rows + block(tag, "/INTER/TYPE2", iid, "Block bottom tied to plate", grnd_IDs=grnod, surf_IDm=surf,
+                        Ignore=0, Spotflag=spotflag, Level=0, Isearch=0, Idel2=0, Dsearch=0.0)
+
+
+def with_type2(d, **kw):
+    d.insert_before("BEFORE_END", type2(**kw))
+    return d
+
+
+@fault("type2_missing_group")
+def _():
+    return with_type2(base(), grnod=99), "/INTER/TYPE2/1 names node group 99, which does not exist", \
+        [("RX402", "T2.grnd_IDs")]
+
+
+@fault("type2_missing_surface")
+def _():
+    return with_type2(base(), surf=99), "/INTER/TYPE2/1 names surface 99, which does not exist", \
+        [("RX402", "T2.surf_IDm")]
+
+
+@fault("type2_spotflag_7")
+def _():
+    return with_type2(base(), spotflag=7), "/INTER/TYPE2/1 Spotflag = 7 (not a TYPE2 formulation)", \
+        [("RX501", "T2.Spotflag")]
+
+
+@fault("type2_spotflag_1")
+def _():
+    return with_type2(base(), spotflag=1), \
+        "/INTER/TYPE2/1 Spotflag = 1 (a formulation radx does not implement, refused by name)", \
+        [("RX510", "T2.Spotflag")]
+
+
+@fault("type2_node_tied_twice")
+def _():
+    d = with_type2(base())
+    d.insert_before("BEFORE_END", type2(tag="T2B", iid=2, group=False))
+    return d, "/INTER/TYPE2/1 and /INTER/TYPE2/2 tie the same nodes 11 12 13 14", [("RX706", "T2B.grnd_IDs")]
+
+
 @fault("istf_7")
 def _():
     return with_inter(base(), istf=7), "/INTER/TYPE7/1 Istf = 7 (0..5 allowed)", [("RX501", "INT.Istf")]

@@ -39,7 +39,7 @@ from radx_deck_format import RULER, bcs_code, ibc_code, write  # the ruler, code
 
 VERSION = 2026
 CASES = ("bar_rwall", "cantilever_strip", "cantilever_bricks", "taylor_bar", "jc_single_brick", "free_fall", "two_bars", "th_outputs",
-         "sections", "skew_mov", "sensor_loads", "tetra_drop")
+         "sections", "skew_mov", "sensor_loads", "tetra_drop", "tied_beam")
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -1666,6 +1666,122 @@ height over that speed (times 0.9 and the bulk-viscosity factor), see docs/engin
     return run, D, E, readme
 
 
+# ---------------------------------------------------------------------------------------------------
+# Cantilever of bricks cut in two meshes at mid-length and tied by /INTER/TYPE2 (kg, m, s)
+
+TIEDB = dict(L=0.24, W=0.002, H=0.024, NX=48, NZ=12, NZ_RIGHT=8, E=210e9, RHO=7850.0, V_TIP=0.05,
+             T_STOP=0.0015)
+
+
+def tied_beam_run(run, tied):
+    """The beam of cantilever_bricks (Isolid 24, nu = 0) in its first mode. tied = False: one mesh of
+    NX x 1 x NZ bricks. tied = True: the root half as before, the tip half a second mesh with NZ_RIGHT bricks
+    through the height (its end nodes are not those of the root half), its nodes at x = L/2 tied to the root
+    half's end faces."""
+    p = TIEDB
+    L, W, H, nx, nz = p["L"], p["W"], p["H"], p["NX"], p["NZ"]
+    half = nx // 2
+    meshes = [(0, nx if not tied else half, nz, 0.0)]
+    if tied:
+        meshes.append((100000, half, p["NZ_RIGHT"], L / 2))
+    nodes, bricks, station = [], [], {}
+
+    def nid(base, nzm, i, j, k):
+        return base + 1 + k + (nzm + 1) * (j + 2 * i)
+
+    e = 0
+    for base, mx, nzm, x0 in meshes:
+        for i in range(mx + 1):
+            for j in range(2):
+                for k in range(nzm + 1):
+                    x = x0 + i * L / nx
+                    nodes.append((nid(base, nzm, i, j, k), x, j * W, k * H / nzm - H / 2))
+                    station.setdefault(round(x / (L / nx)), []).append(nid(base, nzm, i, j, k))
+        for i in range(mx):
+            for k in range(nzm):
+                e += 1
+                n = lambda a, b, c: nid(base, nzm, a, b, c)
+                bricks.append((e, n(i, 0, k), n(i + 1, 0, k), n(i + 1, 1, k), n(i, 1, k),
+                               n(i, 0, k + 1), n(i + 1, 0, k + 1), n(i + 1, 1, k + 1), n(i, 1, k + 1)))
+    check_bricks(nodes, bricks)
+    tip = mode1(L, L)
+    what = ("two meshes tied by /INTER/TYPE2 at x = %g (%d, %d bricks through the height)" % (L / 2, nz, p["NZ_RIGHT"])
+            if tied else "one mesh")
+    D = header(run, "Cantilever beam of bricks: " + ("two meshes tied by TYPE2" if tied else "one mesh"),
+               ("kg", "m", "s"),
+               ["Cantilever beam of Isolid 24 bricks in free vibration in its first mode:",
+                "%s." % what,
+                "Beam %g x %g x %g m (length X, width Y, height Z), clamped at x = 0; units kg, m, s." % (L, W, H),
+                "Initial velocity along Z proportional to the first mode shape, %g m/s at the tip." % p["V_TIP"]])
+    D += node_block(nodes, "Beam nodes")
+    D.append(RULER)
+    D += brick_block(1, bricks, "Beam: %d bricks" % len(bricks))
+    D.append(RULER)
+    D += part_card(1, "Beam", 1, 1)
+    D += rc.card("/PROP/SOLID", 1, "Beam brick", Isolid=24, fill=0)
+    D += mat_law1(1, "Steel with nu = 0", p["RHO"], p["E"], 0.0)
+    D.append(RULER)
+    root = [nid(0, nz, 0, j, k) for j in range(2) for k in range(nz + 1)]
+    D += grnod_node(1, "Root nodes (clamped)", root)
+    D += bcs(1, "Clamped root", "111", "000", 1)
+    if tied:
+        nzr = p["NZ_RIGHT"]
+        sec = [nid(100000, nzr, 0, j, k) for j in range(2) for k in range(nzr + 1)]
+        D += grnod_node(2, "Tip mesh nodes at x = L/2 (tied)", sec)
+        segs = [(k + 1, nid(0, nz, half, 0, k), nid(0, nz, half, 1, k), nid(0, nz, half, 1, k + 1),
+                 nid(0, nz, half, 0, k + 1)) for k in range(nz)]
+        D.append("#  The root mesh's end faces at x = L/2")
+        D += rc.card("/SURF/SEG", 3, "Root mesh end faces", rows=segs)
+        D.append("#  Spotflag 0: the standard kinematic tie; Dsearch 0: automatic (r.m.s. segment edge)")
+        D += rc.card("/INTER/TYPE2", 1, "Tip mesh tied to root mesh", grnd_IDs=2, surf_IDm=3, Ignore=0, Spotflag=0,
+                     Level=0, Isearch=0, Idel2=0, Dsearch=0.0)
+    D.append("#  One node group and one initial velocity per station: Vz(x) = V_tip * phi1(x) / phi1(L)")
+    for i in sorted(station):
+        if i == 0:
+            continue
+        x = i * L / nx
+        D += grnod_node(100 + i, "Station %d at x = %g" % (i, x), sorted(station[i]))
+        D += inivel(100 + i, "Mode-1 velocity at station %d" % i, (0.0, 0.0, p["V_TIP"] * mode1(x, L) / tip),
+                    100 + i)
+    D.append(RULER)
+    D.append("/END")
+    E = engine_deck(run, p["T_STOP"], 0.0005, 5000, ["Free vibration up to past the first peak of the tip."])
+    return D, E
+
+
+def tied_beam():
+    p = TIEDB
+    runs = []
+    for run, tied in (("TIED_BEAM_SINGLE", False), ("TIED_BEAM", True)):
+        D, E = tied_beam_run(run, tied)
+        runs.append((run, D, E))
+    readme = f"""# tied_beam: a cantilever of bricks cut in two meshes tied by /INTER/TYPE2
+
+`TIED_BEAM_SINGLE_0000.rad` (one mesh) and `TIED_BEAM_0000.rad` (two meshes), each with its `_0001.rad`
+engine deck, generated by `scripts/make_verification_decks.py` (edit the script and regenerate). Units:
+**kg, m, s**.
+
+## Model
+
+| item | value |
+|---|---|
+| beam | L = {p['L']} m along X, width {p['W']} m, height H = {p['H']} m; Isolid 24 bricks, LAW1 rho = {p['RHO']}, E = {p['E']:g}, nu = 0 |
+| single | {p['NX']} x 1 x {p['NZ']} bricks |
+| tied | root half {p['NX'] // 2} x 1 x {p['NZ']} bricks; tip half {p['NX'] // 2} x 1 x {p['NZ_RIGHT']} bricks, its own nodes at x = L/2 (not those of the root half: the meshes do not match) |
+| tie | `/INTER/TYPE2/1`, Spotflag 0: the tip half's nodes at x = L/2 (`/GRNOD/NODE/2`) on the root half's end faces (`/SURF/SEG/3`) |
+| support | `/BCS/1` 111 at x = 0 |
+| initial velocity | Vz = {p['V_TIP']} phi1(x) / phi1(L) per station (first cantilever mode) |
+| engine | Tstop {p['T_STOP']} s: past the first peak of the tip (about a quarter period, 0.72 ms) |
+
+## Check
+
+`tests/unit/test_verification.cpp`: the largest tip deflection of the tied beam is within 2 % of the single
+mesh's (the tie must carry the bending moment and shear across the cut as the continuous mesh does), and
+the energy balance holds.
+"""
+    return runs, readme
+
+
 def main(argv):
     makers = {"bar_rwall": bar_rwall, "cantilever_strip": cantilever_strip, "taylor_bar": taylor_bar,
               "jc_single_brick": jc_single_brick, "free_fall": free_fall, "two_bars": two_bars, "sections": sect_bar,
@@ -1678,6 +1794,8 @@ def main(argv):
             return cantilever_strip_runs()
         if case == "cantilever_bricks":
             return cantilever_bricks()
+        if case == "tied_beam":
+            return tied_beam()
         run, starter, engine, readme = makers[case]()
         return [(run, starter, engine)], readme
 
@@ -1692,6 +1810,14 @@ def main(argv):
             text = [line.replace("TETRA_DROP", "TETRA_BLOCK") for line in lines]
             text.insert(1, "# decks/verification/tetra_drop " + note)
             write(os.path.join(root, "tetra_block", "TETRA_BLOCK_%s.rad" % suffix), text)
+    # The sample deck decks/tied_beam is the tied run of the tied_beam case (the keyword's sample deck).
+    if not status and "--out" not in argv and ("--case" not in argv or "tied_beam" in argv):
+        root = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "decks")
+        starter, engine = tied_beam_run("TIED_BEAM", True)
+        for suffix, lines in (("0000", starter), ("0001", engine)):
+            text = list(lines)
+            text.insert(1, "# decks/verification/tied_beam, its tied run (the sample deck of /INTER/TYPE2).")
+            write(os.path.join(root, "tied_beam", "TIED_BEAM_%s.rad" % suffix), text)
     return status
 
 

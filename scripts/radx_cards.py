@@ -307,6 +307,10 @@ LAYOUTS = {
              r("AscaleF", since=140), i("fric_ID", since=2018)),
         Card(r("C1"), r("C2"), r("C3"), r("C4"), r("C5"), when=lambda v: _int(v.get("Ifric")) in (1, 2, 3)),
         Card(r("C6"), when=lambda v: _int(v.get("Ifric")) in (2, 3))),
+    # Only the standard card: the rupture (Spotflag 20..22) and penalty (25, 26) cards radx refuses.
+    "/INTER/TYPE2": Layout(
+        Card(i("grnd_IDs"), i("surf_IDm"), i("Ignore", since=110), i("Spotflag"), i("Level"), i("Isearch"),
+             i("Idel2"), gap(10), r("Dsearch"))),
     "/INTER/LAGDT/TYPE7": Layout(
         Card(i("grnd_IDs"), i("surf_IDm"), i("Istf"), gap(10), i("Igap"), i("Multimp", until=130), i("Ibag"),
              i("Idel")),

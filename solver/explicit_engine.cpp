@@ -511,6 +511,7 @@ double ExplicitEngine::nodal_time_step(StepControl& control) {
       for (int q = 0; q < 2; ++q)
         s.stiffness[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
             g.k_nodal[static_cast<std::size_t>(i)];
+  kinematics_->transfer_tied_stiffness();
   const auto& noda = controls_.nodal;
   double best = kInf;
   for (std::size_t n = 0; n < s.n; ++n) {
@@ -587,6 +588,7 @@ CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
 //   1. external_loads        2. contact_forces (penalty, votes, LAGDT switches)
 //   3-4. element_forces (groups, then the deterministic assembly with the contact forces)
 //   9. choose_time_step (early: the step of this cycle comes from the votes just computed), then the sensors
+//   4b. transfer_tied_forces (/INTER/TYPE2 secondary forces and moments onto the main segments)
 //   5. accelerations         6. lagrange_correction (switched LAGDT pairs)
 //   7. kinematic_conditions  10. outputs (energies on report cycles, the caller's on_cycle)
 //   8. integrate             11. advance
@@ -611,6 +613,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     contact_forces(L);
     if (!choose_time_step(L, res)) break;
     sensors_.update(L.time, L.dt2);
+    kinematics_->transfer_tied_forces();  // 4b. TYPE2: before the accelerations, as in OpenRadioss
     accelerations();
     if (!lagrange_correction(L, res)) break;
     kinematics_->kinematic_conditions(L.time, L.dt1, L.dt2);

@@ -7,9 +7,12 @@
 //   vote;
 //   3. element groups: gather, strain rate, material update, internal forces, element time step;
 //   4. deterministic assembly of element and contact forces, node by node in a fixed order;
+//   4b. /INTER/TYPE2 ties: the secondary nodes' forces and moments onto their main segments
+//   (solver/tied_type2.hpp; their masses were moved there at t = 0);
 //   5. accelerations a = f / m (rotations: moment / scalar inertia);
 //   6. Lagrange-multiplier correction of the switched LAGDT pairs (contact/lagrange_contact.hpp);
-//   7. kinematic conditions: rigid bodies, boundary conditions, imposed velocities, rigid walls;
+//   7. kinematic conditions: rigid bodies, boundary conditions, imposed velocities, rigid walls, and last
+//   the tied nodes put on their segments;
 //   8. v^{n+1/2} = v^{n-1/2} + dt12 a^n,  x^{n+1} = x^n + dt2 v^{n+1/2},  dt12 = (dt1 + dt2) / 2;
 //   9. next time step dt = min(scale * element steps, 1.1 dt_previous), then the sensors' check with it
 //      (solver/sensors.hpp: a sensor switches on when t + dt reaches its Tdelay);

@@ -11,6 +11,7 @@
 //   InitialVelocities  inivel(model, skews); inivel.apply(s, 0.0, S);  // returns the initial KE it gave
 //                                                                      // (not work)
 //   RigidWalls         walls(model);        walls.initialize(s);   // moving walls: + Mass, v = V0
+//   TiedInterfaces     ties(model);         ties.initialize(s);    // TYPE2: secondary mass to the segments
 //   RigidBodies        bodies(model);       bodies.initialize(s, S);  // ICoG, M, inertia, principal frame
 //   ExternalLoads      loads(model, skews, bodies.secondary_flags());
 //   ImposedVelocities  impvel(model, skews);
@@ -23,6 +24,7 @@
 //      W += loads.apply(s, t, dt1, S);                             // gravity m g, /CLOAD, /PLOAD at t_n
 //   2-4. contact, elements, assembly; choose dt2; sensors.update(t, dt2).
 //   (S: the sensors' activation times; a load or condition with a sensor reads its function at t - S[k].)
+//   4b. ties.transfer_forces(s);                                  // TYPE2: f_s, m_s, K_s to the segments
 //   5. a = f/m, aw = m/I (engine), then in this order:
 //      walls.apply_wall_node_forces(s);                            // moving walls: previous wall force
 //      bodies.gather_and_accelerate(s, t, dt1, S);                 // a_N = F/M, Euler step (dt1: frame)
@@ -31,6 +33,7 @@
 //      W += walls.apply(s, dt1, dt2);                              // kinematic contact, slide 0/1/2
 //      bcs.apply(s);
 //      bodies.secondary_kinematics(s, dt1, dt2);                   // secondaries follow rigidly
+//      ties.secondary_kinematics(s, dt1, dt2);                     // TYPE2 nodes onto their segments
 //      W += loads.concentrated_load_work(dt2);                     // /CLOAD: 1/2 (F_old+F_new) v dt2
 //   6. outputs: KE = sums over all nodes of 1/2 m |v + dt1/2 a|^2 (and rotations) plus
 //      bodies.kinetic_correction(s, dt1); wall forces: walls.outputs().

@@ -1,6 +1,7 @@
 #include "solver/kinematics_driver.hpp"
 
 #include "solver/kinematics.hpp"
+#include "solver/tied_type2.hpp"
 
 namespace radx::solver {
 
@@ -10,11 +11,12 @@ struct KinematicsDriver::Parts {
   InitialVelocities inivel;
   RigidWalls walls;
   RigidBodies bodies;
+  TiedInterfaces ties;
   ImposedVelocities impvel;
   std::unique_ptr<ExternalLoads> loads;
   double external_work = 0;
   Parts(const model::Model& m, const model::RunControls& c, const SkewFrames& skews)
-      : bcs(m, skews), inivel(m, skews), walls(m), bodies(m, c.rbody_off), impvel(m, skews) {}
+      : bcs(m, skews), inivel(m, skews), walls(m), bodies(m, c.rbody_off), ties(m), impvel(m, skews) {}
 };
 
 KinematicsDriver::KinematicsDriver(const model::Model& m, const model::RunControls& c, NodeState& nodes,
@@ -33,6 +35,7 @@ void KinematicsDriver::initial_conditions() {
   p.bcs.set_fixed_bits(nodes_);
   p.inivel.apply(nodes_, 0.0, sensor_starts_);  // initial kinetic energy, not work
   p.walls.initialize(nodes_);
+  if (!p.ties.empty()) p.ties.initialize(nodes_);  // before the bodies: they weigh the tied mass
   p.bodies.initialize(nodes_, sensor_starts_);
   p.loads = std::make_unique<ExternalLoads>(model_, skews_,
                                             p.bodies.size() > 0
@@ -47,6 +50,14 @@ void KinematicsDriver::external_loads(double t, double dt1, double) {
   if (!p.loads->empty()) p.external_work += p.loads->apply(nodes_, t, dt1, sensor_starts_);
 }
 
+void KinematicsDriver::transfer_tied_forces() {
+  if (!parts_->ties.empty()) parts_->ties.transfer_forces(nodes_);
+}
+
+void KinematicsDriver::transfer_tied_stiffness() {
+  if (!parts_->ties.empty()) parts_->ties.transfer_stiffness(nodes_);
+}
+
 void KinematicsDriver::kinematic_conditions(double t, double dt1, double dt2) {
   auto& p = *parts_;
   p.walls.apply_wall_node_forces(nodes_);
@@ -56,6 +67,8 @@ void KinematicsDriver::kinematic_conditions(double t, double dt1, double dt2) {
   p.external_work += p.walls.apply(nodes_, dt1, dt2);
   p.bcs.apply(nodes_);
   if (p.bodies.size() > 0 && dt1 + dt2 > 0) p.bodies.secondary_kinematics(nodes_, dt1, dt2);
+  // Last: a tie's main nodes may be moved by every condition above.
+  if (!p.ties.empty() && dt1 + dt2 > 0) p.ties.secondary_kinematics(nodes_, dt1, dt2);
   if (!p.loads->empty()) p.external_work += p.loads->concentrated_load_work(dt2);
 }
 
@@ -107,6 +120,7 @@ std::vector<std::uint8_t> KinematicsDriver::held_nodes() const {
   parts_->impvel.mark_nodes(held);
   parts_->walls.mark_nodes(held);
   parts_->bcs.mark_skewed(held);
+  parts_->ties.mark_nodes(held);
   for (const auto& b : parts_->bodies.bodies()) {
     if (b.main != model::kNone) held[static_cast<std::size_t>(b.main)] = 1;
     for (const auto n : b.secondary) held[static_cast<std::size_t>(n)] = 1;

@@ -1,6 +1,6 @@
 // The engine's single entry point to loads and kinematic conditions: it owns the objects of
-// /GRAV, /CLOAD, /PLOAD, /BCS, /IMPVEL, /INIVEL, /RWALL and /RBODY and calls them in the order of the
-// cycle (explicit_engine.hpp). It also computes the kinetic energy and momentum with the rigid-body
+// /GRAV, /CLOAD, /PLOAD, /BCS, /IMPVEL, /INIVEL, /RWALL, /RBODY and /INTER/TYPE2 and calls them in the order
+// of the cycle (explicit_engine.hpp). It also computes the kinetic energy and momentum with the rigid-body
 // corrections, so the time loop never needs to know which conditions exist.
 #pragma once
 
@@ -35,6 +35,10 @@ class KinematicsDriver {
   void initial_conditions();
   // Step 1 of the cycle: external forces at time t into f*_ext (and moments into m*).
   void external_loads(double t, double dt1, double dt2);
+  // Before a = f/m (after the contact forces): /INTER/TYPE2 secondary forces and moments to the main nodes.
+  void transfer_tied_forces();
+  // /DT/NODA, after the elements' nodal stiffness: the tied nodes' stiffness to their main nodes.
+  void transfer_tied_stiffness();
   // Step 7: after a = f/m, before v += dt12 a.
   void kinematic_conditions(double t, double dt1, double dt2);
   // After x += dt2 v (moving frames of rigid bodies).

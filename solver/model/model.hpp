@@ -499,6 +499,28 @@ struct Interface {
   }
 };
 
+// /INTER/TYPE2, kinematic tied interface (solver/tied_type2.hpp holds the equations). Each secondary node
+// that found a main segment within the search distance is a tie k, stored as columns: the node, the
+// segment's nodes (n4 == n3 for a triangle), its coordinates on the segment and its signed distance along
+// the segment's unit normal at t = 0 (the offset the engine carries in the segment's rotating frame).
+struct TiedInterface {
+  std::int64_t id = 0;
+  std::string title;
+  std::int32_t secondary_group = kNone;
+  std::int32_t main_surface = kNone;
+  int ignore = 0;    // 0: a node without a segment is an error; 1..3: it leaves the interface (warning)
+  int spotflag = 0;  // 0 or 5: the standard kinematic formulation (the only one radx runs)
+  int level = 0, isearch = 2, idel2 = 0;
+  double dsearch = 0;  // as given; 0 = automatic
+  // Computed by the starter.
+  double search_distance = 0;                            // the distance in use
+  std::vector<std::int32_t> tie_node;                    // dense index of each tied secondary node, ascending
+  std::vector<std::array<std::int32_t, 4>> tie_segment;  // dense indices of its main segment's nodes
+  std::vector<double> tie_r, tie_s;  // quad: natural coordinates (r, s); triangle: area coordinates of n2, n3
+  std::vector<double> tie_offset;    // signed normal distance at t = 0
+  std::vector<std::int64_t> not_found;  // user ids of the secondary nodes left untied
+};
+
 struct Model {
   std::string title;
   std::string run_name;
@@ -538,7 +560,8 @@ struct Model {
   std::vector<Sensor> sensors;
   std::vector<TimeHistoryGroup> time_histories;
   std::vector<Interface> interfaces;
-  std::vector<std::string> ignored_keywords;  // control cards accepted as ignored, as written
+  std::vector<TiedInterface> tied_interfaces;  // /INTER/TYPE2
+  std::vector<std::string> ignored_keywords;   // control cards accepted as ignored, as written
   // --allow-substitutions: what runs instead of what the deck asks, one sentence each (empty otherwise).
   std::vector<std::string> substitutions;
 

@@ -1,0 +1,345 @@
+// /INTER/TYPE2 kinematic tie (solver/tied_type2.hpp, parser/build_tied.cpp): the starter's projection and
+// its diagnostics, the force transfer's balance and virtual work, and a tied pair of bricks turned 90
+// degrees through the whole engine. The tied cantilever (bending as one beam) is in test_verification.cpp.
+#include <array>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "parser/deck.hpp"
+#include "parser/model_builder.hpp"
+#include "solver/explicit_engine.hpp"
+#include "solver/model/tied_map.hpp"
+#include "solver/tied_type2.hpp"
+#include "test_util.hpp"
+
+namespace md = radx::model;
+namespace sv = radx::solver;
+using radx::test::Line;
+
+namespace {
+
+// Brick A on [0,1]^3 (nodes 1-8), brick B on [0.2,0.8] x [0.3,0.7] x [1+gap, 1.5+gap] (nodes 11-18); B's
+// bottom nodes tied to A's top face (5 6 7 8, normal +z). kg, m, s; steel, nu = 0.3. The TYPE2's Ignore,
+// Spotflag and Dsearch are fields here; `extra`: more keywords before /END.
+struct TiedPair {
+  double gap = 0.05;
+  int ignore = 0, spotflag = 0;
+  double dsearch = 0;
+  std::string extra;
+  std::string deck() const {
+    std::ostringstream os;
+    const double a[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                            {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    const double b[8][3] = {{0.2, 0.3, 0},   {0.8, 0.3, 0},   {0.8, 0.7, 0},   {0.2, 0.7, 0},
+                            {0.2, 0.3, 0.5}, {0.8, 0.3, 0.5}, {0.8, 0.7, 0.5}, {0.2, 0.7, 0.5}};
+    Line e1, e2;
+    e1.put(1, 1, 10);
+    e2.put(2, 1, 10);
+    for (int k = 0; k < 8; ++k) {
+      e1.put(k + 1, 11 + 10 * k, 20 + 10 * k);
+      e2.put(k + 11, 11 + 10 * k, 20 + 10 * k);
+    }
+    os << radx::test::begin_block(2026, "kg m s") << "/NODE\n";
+    for (int k = 0; k < 8; ++k)
+      os << Line().put(k + 1, 1, 10).put(a[k][0], 11, 30).put(a[k][1], 31, 50).put(a[k][2], 51, 70).str()
+         << '\n';
+    for (int k = 0; k < 8; ++k)
+      os << Line()
+                .put(k + 11, 1, 10)
+                .put(b[k][0], 11, 30)
+                .put(b[k][1], 31, 50)
+                .put(1.0 + gap + b[k][2], 51, 70)
+                .str()
+         << '\n';
+    os << "/BRICK/1\n" << e1.str() << '\n' << "/BRICK/2\n" << e2.str() << '\n';
+    os << "/PART/1\nA\n" << Line().put(1, 1, 10).put(1, 11, 20).str() << '\n';
+    os << "/PART/2\nB\n" << Line().put(1, 1, 10).put(1, 11, 20).str() << '\n';
+    os << "/PROP/SOLID/1\nbrick\n" << Line().put(24, 1, 10).str() << "\n\n";
+    os << "/MAT/LAW1/1\nsteel\n"
+       << Line().put(7850.0, 1, 20).str() << '\n'
+       << Line().put(2.1e11, 1, 20).put(0.3, 21, 40).str() << '\n';
+    os << "/GRNOD/NODE/1\ntied\n"
+       << Line().put(11, 1, 10).put(12, 11, 20).put(13, 21, 30).put(14, 31, 40).str() << '\n';
+    os << "/SURF/SEG/2\ntop of A\n"
+       << Line().put(1, 1, 10).put(5, 11, 20).put(6, 21, 30).put(7, 31, 40).put(8, 41, 50).str() << '\n';
+    os << "/INTER/TYPE2/7\nB on A\n"
+       << Line()
+              .put(1, 1, 10)
+              .put(2, 11, 20)
+              .put(ignore, 21, 30)
+              .put(spotflag, 31, 40)
+              .put(dsearch, 81, 100)
+              .str()
+       << '\n';
+    os << extra << "/END\n";
+    return os.str();
+  }
+};
+
+radx::model::Model build(const std::string& text, radx::Diagnostics& diags) {
+  radx::test::TempDir dir;
+  const auto deck = radx::read_starter_deck(dir.write("t_0000.rad", text), diags);
+  return radx::build_model(deck, diags);
+}
+
+std::string all_diags(const radx::Diagnostics& d) {
+  std::string s;
+  for (const auto& x : d.items()) s += radx::Diagnostics::format(x) + "\n";
+  return s;
+}
+
+md::Vec3 pos(const sv::NodeState& s, std::size_t n) {
+  return {s.x[n], s.y[n], s.z[n]};
+}
+
+}  // namespace
+
+TEST_CASE("TYPE2 starter: each node projected once on its segment, with its normal offset", "[tied]") {
+  TiedPair p;
+  radx::Diagnostics d;
+  const auto m = build(p.deck(), d);
+  INFO(all_diags(d));
+  REQUIRE_FALSE(d.has_errors());
+  REQUIRE(m.tied_interfaces.size() == 1);
+  const auto& t = m.tied_interfaces[0];
+  CHECK(t.id == 7);
+  // Automatic distance: the r.m.s. edge of the unit square segment.
+  CHECK(t.search_distance == Approx(1.0).epsilon(1e-14));
+  REQUIRE(t.tie_node.size() == 4);
+  CHECK(t.not_found.empty());
+  // Node 11 at (0.2, 0.3): r = 2x - 1 = -0.6, s = 2y - 1 = -0.4; offset +gap along the +z normal.
+  CHECK(m.nodes.id[static_cast<std::size_t>(t.tie_node[0])] == 11);
+  CHECK(t.tie_r[0] == Approx(-0.6).margin(1e-12));
+  CHECK(t.tie_s[0] == Approx(-0.4).margin(1e-12));
+  for (const double off : t.tie_offset) CHECK(off == Approx(p.gap).margin(1e-12));
+}
+
+TEST_CASE("TYPE2 starter: nodes beyond the search distance are listed, error or warning by Ignore",
+          "[tied]") {
+  TiedPair p;
+  p.dsearch = 0.01;  // below the 0.05 gap
+  SECTION("Ignore = 0: an error naming the nodes (OpenRadioss message 1078)") {
+    radx::Diagnostics d;
+    build(p.deck(), d);
+    const std::string all = all_diags(d);
+    INFO(all);
+    CHECK(d.has_errors());
+    CHECK(all.find("RX705") != std::string::npos);
+    CHECK(all.find("11 12 13 14") != std::string::npos);
+    CHECK(all.find("/INTER/TYPE2") != std::string::npos);
+  }
+  SECTION("Ignore = 1: a warning naming the nodes, which stay untied (message 1157)") {
+    p.ignore = 1;
+    radx::Diagnostics d;
+    const auto m = build(p.deck(), d);
+    const std::string all = all_diags(d);
+    INFO(all);
+    CHECK_FALSE(d.has_errors());
+    CHECK(all.find("RX705") != std::string::npos);
+    REQUIRE(m.tied_interfaces.size() == 1);
+    CHECK(m.tied_interfaces[0].tie_node.empty());
+    CHECK(m.tied_interfaces[0].not_found == std::vector<std::int64_t>{11, 12, 13, 14});
+  }
+}
+
+TEST_CASE("TYPE2 starter: a refused Spotflag and a /BCS on a tied node", "[tied]") {
+  SECTION("Spotflag 27 is refused by name") {
+    TiedPair p;
+    p.spotflag = 27;
+    radx::Diagnostics d;
+    build(p.deck(), d);
+    const std::string all = all_diags(d);
+    INFO(all);
+    CHECK(d.has_errors());
+    CHECK(all.find("RX510") != std::string::npos);
+    CHECK(all.find("Spotflag = 27") != std::string::npos);
+    CHECK(all.find("switches to penalty") != std::string::npos);
+  }
+  SECTION("a /BCS on a tied node: the OpenRadioss warning of incompatible kinematic conditions") {
+    TiedPair p;
+    p.extra = "/GRNOD/NODE/9\nfixed\n" + Line().put(11, 1, 10).str() + "\n/BCS/1\nfix\n" +
+              Line().put("111 000", 1, 10).put(9, 21, 30).str() + "\n";
+    radx::Diagnostics d;
+    build(p.deck(), d);
+    const std::string all = all_diags(d);
+    INFO(all);
+    CHECK_FALSE(d.has_errors());
+    CHECK(all.find("RX706") != std::string::npos);
+    CHECK(all.find("/BCS/1") != std::string::npos);
+  }
+}
+
+// The force transfer is the transpose of the map's derivative: for any segment motion delta x_j, the work
+// of the transferred forces equals the work of f_s on the secondary's motion delta x_s (the tie does no
+// work), and the forces and their moment are those of f_s at x_s (momentum and angular momentum kept).
+TEST_CASE("TYPE2 force transfer: balance of forces and moments, no work (virtual work)", "[tied]") {
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const bool triangle : {false, true}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      md::Model m;
+      // A warped segment (nodes off the plane by up to 0.1) and a secondary node off it by up to 0.3.
+      std::array<md::Vec3, 4> x{md::Vec3{0, 0, 0}, md::Vec3{1, 0, 0}, md::Vec3{1, 1, 0}, md::Vec3{0, 1, 0}};
+      for (auto& p : x)
+        for (auto& c : p) c += 0.1 * u(rng);
+      if (triangle) x[3] = x[2];
+      const double r = 0.8 * u(rng), s = triangle ? 0.3 + 0.2 * u(rng) : 0.8 * u(rng);
+      const double rr = triangle ? 0.3 + 0.2 * u(rng) : r;
+      const double d = 0.3 * u(rng);
+      const auto h = md::tie_shape(rr, s, triangle);
+      auto place = [&](const std::array<md::Vec3, 4>& y) {
+        const auto nn = md::tie_normal(y, triangle);
+        md::Vec3 q = md::scale(nn, d / md::norm(nn));
+        for (std::size_t j = 0; j < 4; ++j) q = md::add(q, md::scale(y[j], h[j]));
+        return q;
+      };
+      const md::Vec3 xs = place(x);
+      for (std::size_t k = 0; k < 5; ++k) {
+        const md::Vec3 q = k < 4 ? x[k] : xs;
+        m.nodes.id.push_back(static_cast<std::int64_t>(k + 1));
+        m.nodes.x.push_back(q[0]);
+        m.nodes.y.push_back(q[1]);
+        m.nodes.z.push_back(q[2]);
+      }
+      md::TiedInterface t;
+      t.tie_node = {4};
+      t.tie_segment = {triangle ? std::array<std::int32_t, 4>{0, 1, 2, 2}
+                                : std::array<std::int32_t, 4>{0, 1, 2, 3}};
+      t.tie_r = {rr};
+      t.tie_s = {s};
+      t.tie_offset = {d};
+      m.tied_interfaces.push_back(t);
+      sv::TiedInterfaces ties(m);
+      sv::NodeState st;
+      st.resize(5);
+      for (std::size_t n = 0; n < 5; ++n) {
+        st.x[n] = m.nodes.x[n];
+        st.y[n] = m.nodes.y[n];
+        st.z[n] = m.nodes.z[n];
+      }
+      const md::Vec3 f{u(rng), u(rng), u(rng)};
+      st.fx[4] = f[0];
+      st.fy[4] = f[1];
+      st.fz[4] = f[2];
+      ties.transfer_forces(st);
+      md::Vec3 fsum{}, msum{};
+      for (std::size_t n = 0; n < 4; ++n) {
+        const md::Vec3 fj{st.fx[n], st.fy[n], st.fz[n]};
+        fsum = md::add(fsum, fj);
+        msum = md::add(msum, md::cross(pos(st, n), fj));
+      }
+      CHECK(st.fx[4] == 0.0);
+      // Round-off of a few products of unit-size numbers.
+      const md::Vec3 mref = md::cross(xs, f);
+      for (std::size_t c = 0; c < 3; ++c) {
+        CHECK(fsum[c] == Approx(f[c]).margin(1e-13));
+        CHECK(msum[c] == Approx(mref[c]).margin(1e-12));
+      }
+      // Virtual work: central difference of the map along a random motion, step 1e-6 (error ~1e-12).
+      std::array<md::Vec3, 4> dx{}, xp = x, xm = x;
+      for (std::size_t j = 0; j < 4; ++j) {
+        dx[j] = {u(rng), u(rng), u(rng)};
+        if (triangle && j == 3) dx[3] = dx[2];
+      }
+      const double eps = 1e-6;
+      for (std::size_t j = 0; j < 4; ++j) {
+        xp[j] = md::add(x[j], md::scale(dx[j], eps));
+        xm[j] = md::sub(x[j], md::scale(dx[j], eps));
+      }
+      const md::Vec3 dxs = md::scale(md::sub(place(xp), place(xm)), 0.5 / eps);
+      double w_main = 0;
+      for (std::size_t j = 0; j < (triangle ? 3u : 4u); ++j)
+        w_main += st.fx[j] * dx[j][0] + st.fy[j] * dx[j][1] + st.fz[j] * dx[j][2];
+      CHECK(w_main == Approx(md::dot(f, dxs)).margin(1e-8));
+    }
+  }
+}
+
+// Two bricks tied with an offset spin freely about Y through 90 degrees (a rigid rotation given as the
+// initial velocity of every node): at the end the tied nodes are where the rotation puts them, their normal
+// offset from A's top face is unchanged, momentum is kept and the energy balance holds (the tie does no
+// work).
+TEST_CASE("TYPE2 in the engine: tied nodes keep their offsets through a 90 degree rigid rotation", "[tied]") {
+  TiedPair p;
+  p.gap = 0.05;
+  const double omega = 20.0;  // rad/s about Y through the centre of mass c
+  // About the centre of mass (one density: A's unit volume at z = 0.5, B's 0.12 at z = 1.3), which then stays
+  // at rest: the motion is the rotation alone.
+  const md::Vec3 c{0.5, 0.5, (0.5 + 0.12 * 1.3) / 1.12};
+  const double t_stop = 0.5 * std::numbers::pi / omega;
+  // One group and one /INIVEL/TRA per node: v = omega e_y x (x - c).
+  const double nodes[16][4] = {
+      {1, 0, 0, 0},         {2, 1, 0, 0},         {3, 1, 1, 0},         {4, 0, 1, 0},
+      {5, 0, 0, 1},         {6, 1, 0, 1},         {7, 1, 1, 1},         {8, 0, 1, 1},
+      {11, 0.2, 0.3, 1.05}, {12, 0.8, 0.3, 1.05}, {13, 0.8, 0.7, 1.05}, {14, 0.2, 0.7, 1.05},
+      {15, 0.2, 0.3, 1.55}, {16, 0.8, 0.3, 1.55}, {17, 0.8, 0.7, 1.55}, {18, 0.2, 0.7, 1.55}};
+  for (const auto& n : nodes) {
+    const int id = static_cast<int>(n[0]);
+    const double vx = omega * (n[3] - c[2]), vz = -omega * (n[1] - c[0]);
+    p.extra += "/GRNOD/NODE/" + std::to_string(100 + id) + "\nn\n" + Line().put(id, 1, 10).str() + "\n";
+    p.extra += "/INIVEL/TRA/" + std::to_string(100 + id) + "\nv\n" +
+               Line().put(vx, 1, 20).put(0.0, 21, 40).put(vz, 41, 60).put(100 + id, 61, 70).str() + "\n\n";
+  }
+  radx::Diagnostics d;
+  const auto m = build(p.deck(), d);
+  INFO(all_diags(d));
+  REQUIRE_FALSE(d.has_errors());
+  md::RunControls rc;
+  rc.t_stop = t_stop;
+  rc.global.scale = 0.9;
+  sv::ExplicitEngine eng(m, rc, sv::EngineOptions{1});
+  const auto& t = m.tied_interfaces.at(0);
+  double worst_error = 0, mass = 0;
+  std::array<double, 3> p0{}, pmax{};
+  bool first = true;
+  const auto res = eng.run([&](const sv::CycleReport& r) {
+    if (!r.full) return true;
+    worst_error = std::max(worst_error, std::abs(r.energy.error_percent));
+    if (first) p0 = r.momentum;
+    first = false;
+    for (std::size_t k = 0; k < 3; ++k) pmax[k] = std::max(pmax[k], std::abs(r.momentum[k] - p0[k]));
+    mass = r.mass;
+    return true;
+  });
+  REQUIRE(res.status == sv::RunStatus::Normal);
+  CHECK(res.time == Approx(t_stop));
+  const auto& s = eng.nodes();
+  // R(90 deg about Y): (x, y, z) - c -> (z, y, -x).
+  for (std::size_t k = 0; k < t.tie_node.size(); ++k) {
+    const auto n = static_cast<std::size_t>(t.tie_node[k]);
+    const md::Vec3 r0 = md::sub(md::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]}, c);
+    const md::Vec3 expect = md::add(c, md::Vec3{r0[2], r0[1], -r0[0]});
+    // Where the rotation puts the node, to 1 cm on the 1 m block: the tie's mass lumping moves the tied
+    // nodes' mass (a quarter of B's) from the offset onto A's face at t = 0, which changes the assembly's
+    // moment of inertia and momentum by a few 0.1 % and so the angle turned (measured: 0.35 %, 3 mm).
+    for (std::size_t c3 = 0; c3 < 3; ++c3) CHECK(pos(s, n)[c3] == Approx(expect[c3]).margin(1e-2));
+    // The offset is carried exactly: the node is at its place on the map of the current segment to
+    // round-off (1e-12 m), and its distance from the face along the face's normal is still the gap.
+    std::array<md::Vec3, 4> xs{};
+    for (std::size_t j = 0; j < 4; ++j) xs[j] = pos(s, static_cast<std::size_t>(t.tie_segment[k][j]));
+    const auto nn = md::tie_normal(xs, false);
+    const auto h = md::tie_shape(t.tie_r[k], t.tie_s[k], false);
+    md::Vec3 base{};
+    for (std::size_t j = 0; j < 4; ++j) base = md::add(base, md::scale(xs[j], h[j]));
+    const double dn = md::dot(md::sub(pos(s, n), base), md::scale(nn, 1.0 / md::norm(nn)));
+    CHECK(dn == Approx(p.gap).margin(1e-12));
+    CHECK(md::norm(md::sub(pos(s, n), md::add(base, md::scale(nn, p.gap / md::norm(nn))))) < 1e-12);
+  }
+  // A's top face has turned 90 degrees about Y: its normal, +z at the start, is now along +x (the angle to
+  // within 0.01 rad, the lumping above).
+  {
+    std::array<md::Vec3, 4> xa{};
+    for (std::size_t j = 0; j < 4; ++j) xa[j] = pos(s, static_cast<std::size_t>(t.tie_segment[0][j]));
+    const auto nn = md::tie_normal(xa, false);
+    CHECK(nn[0] / md::norm(nn) > std::cos(0.01));
+  }
+  // Momentum: no external force; the tie moves momentum between nodes only. Round-off of m v ~ 1e4 kg m/s.
+  for (std::size_t k = 0; k < 3; ++k) CHECK(pmax[k] < 1e-7 * mass * omega);
+  // Energy balance: the tie does no work; the remaining error is the central difference's on a rotation.
+  CHECK(worst_error < 0.1);
+}
