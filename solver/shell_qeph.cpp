@@ -47,13 +47,16 @@
 // bilinear map has x,xi = x_xi + eta x_h, x,eta = x_eta + xi x_h (y alike), u,xi = u_xi + eta u_h,
 // u,eta = u_eta + xi u_h, and
 //   rows(g) u = ((y,eta u,xi - y,xi u,eta), (x,xi u,eta - x,eta u,xi)) / det J(g)
-// are the x and y derivatives; the assumed shear is J(g)^-1 of the four tied edge values. The hourglass
-// rates dh(g) = rows(g) v - rows(0) v then cost a few products per field and point. The forces are the
+// are the x and y derivatives; the assumed shear is J(g)^-1 of the four tied edge values. det J(g) and the
+// numerators are linear in xi and eta (the shear's with a xi eta term), so the hourglass rates
+// dh(g) = rows(g) v - rows(0) v cost a few products per field and point. The forces are the
 // transpose: det J(g) rows(g)^T is the adjugate (no division), whose node values are
 //   f_k = (xi_k S_xi + eta_k S_eta + h_k S_h) / 4,
 //   S_xi = F_x y,eta - F_y x,eta,  S_eta = F_y x,xi - F_x y,xi,  S_h = eta S_xi + xi S_eta,
 // summed over the points, F the flux of the field ((Nxx, Nxy) for fx, (Nxy, Nyy) for fy, (Mxx, Mxy) for my,
-// -(Mxy, Myy) for mx); the shear forces are those of the four edge values. The centre takes
+// -(Mxy, Myy) for mx), the sums over the four points taken through the moments of the point values (their
+// sum and xi-, eta-, xi eta-weighted sums); the shear forces are those of the four edge values. The
+// centre takes
 //   R = 4 n0 - sum_g det J(g) / det J(0) s(g),   s(g) = OFF (S(g) + S_v(g)),
 // which is A rows(0)^T n0 - sum_g det J(g) rows(0)^T s(g) with rows(0) = adj(0) / det J(0), A = 4 det J(0).
 // The sums are those of the point-by-point form, in another order: the results agree to round-off.
@@ -227,65 +230,83 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
                  rx[k], ry[k], rz_unused);
       }
 
-      // Projections (xi, eta, h) of the coordinates and of the velocity fields; det J(0), A = 4 det J(0).
+      // Projections (xi, eta, h) of node values: of the coordinates here, of the velocity fields below.
       const auto pxi = [](const double u[4]) { return 0.25 * (((-u[0] + u[1]) + u[2]) - u[3]); };
       const auto peta = [](const double u[4]) { return 0.25 * (((-u[0] - u[1]) + u[2]) + u[3]); };
       const auto ph = [](const double u[4]) { return 0.25 * (((u[0] - u[1]) + u[2]) - u[3]); };
       const double xa = pxi(lx), xb = peta(lx), xh = ph(lx), ya = pxi(ly), yb = peta(ly), yh = ph(ly);
       bk.xa[j] = xa, bk.xb[j] = xb, bk.xh[j] = xh, bk.ya[j] = ya, bk.yb[j] = yb, bk.yh[j] = yh;
-      const double det0 = std::max(xa * yb - ya * xb, tiny30);
+      // det J(g) = j0 + xi j1 + eta j2; A = 4 det J(0).
+      const double j0 = xa * yb - ya * xb, j1 = xa * yh - ya * xh, j2 = xh * yb - yh * xb;
+      const double det0 = std::max(j0, tiny30);
       const double inv0 = 1.0 / det0;
       bk.inv0[j] = inv0;
       const double area = 4.0 * det0;
       sec.area[j] = area;
-      const double vx_a = pxi(vx), vx_b = peta(vx), vx_h = ph(vx);
-      const double vy_a = pxi(vy), vy_b = peta(vy), vy_h = ph(vy);
-      const double rx_a = pxi(rx), rx_b = peta(rx), rx_h = ph(rx);
-      const double ry_a = pxi(ry), ry_b = peta(ry), ry_h = ph(ry);
-      const double vz_a = pxi(vz), vz_b = peta(vz);
+      // Numerators of the x and y derivatives of a field, rows(g) u det J(g) = p0 + xi p1 + eta p2
+      // (+ xi eta p3 for the shear; its xi eta terms of the derivatives cancel): p0 / det J(0) is the
+      // centre's rate.
+      struct Lin {
+        double p0, p1, p2, p3;
+      };
+      const auto d_x = [&](const double u[4]) {
+        const double ua = pxi(u), ub = peta(u), uh = ph(u);
+        return Lin{yb * ua - ya * ub, yh * ua - ya * uh, yb * uh - yh * ub, 0.0};
+      };
+      const auto d_y = [&](const double u[4]) {
+        const double ua = pxi(u), ub = peta(u), uh = ph(u);
+        return Lin{xa * ub - xb * ua, xa * uh - xh * ua, xh * ub - xb * uh, 0.0};
+      };
+      const Lin vx_x = d_x(vx), vy_y = d_y(vy), vx_y = d_y(vx), vy_x = d_x(vy);
+      const Lin ry_x = d_x(ry), rx_y = d_y(rx), ry_y = d_y(ry), rx_x = d_x(rx);
+      const Lin vz_x = d_x(vz), vz_y = d_y(vz);
       // Covariant shear at the edge midpoints A (1 -> 2), C (4 -> 3), B (1 -> 4), D (2 -> 3), beta = (ry,
-      // -rx).
+      // -rx); g_xi = gxi0 + eta dgx, g_eta = geta0 + xi dge.
       const auto edge = [&](int a, int b) {
         const double dx = 0.25 * (lx[b] - lx[a]), dy = 0.25 * (ly[b] - ly[a]);
         return 0.5 * (vz[b] - vz[a]) + dx * (ry[a] + ry[b]) - dy * (rx[a] + rx[b]);
       };
       const double ga = edge(0, 1), gc = edge(3, 2), gb = edge(0, 3), gd = edge(1, 2);
-
-      // Centre rates (x and y derivatives through J(0)^-1).
-      const double vx_x = (yb * vx_a - ya * vx_b) * inv0, vx_y = (xa * vx_b - xb * vx_a) * inv0;
-      const double vy_x = (yb * vy_a - ya * vy_b) * inv0, vy_y = (xa * vy_b - xb * vy_a) * inv0;
-      const double rx_x = (yb * rx_a - ya * rx_b) * inv0, rx_y = (xa * rx_b - xb * rx_a) * inv0;
-      const double ry_x = (yb * ry_a - ya * ry_b) * inv0, ry_y = (xa * ry_b - xb * ry_a) * inv0;
-      const double vz_x = (yb * vz_a - ya * vz_b) * inv0, vz_y = (xa * vz_b - xb * vz_a) * inv0;
       const double gxi0 = 0.5 * ga + 0.5 * gc, geta0 = 0.5 * gb + 0.5 * gd;
-      const double gzx0 = (yb * gxi0 - ya * geta0) * inv0, gyz0 = (xa * geta0 - xb * gxi0) * inv0;
-      const double kyy0 = -rx_y;
-      // Increments, with the second-order membrane correction of 1.3 (quad_second_order).
-      const double dem0 = (vx_x - dt1 * vz_x * vz_x) * dt1, dem1 = (vy_y - dt1 * vz_y * vz_y) * dt1;
-      const double dem2 = (vx_y + vy_x) * dt1;
+      const double dgx = 0.5 * (gc - ga), dge = 0.5 * (gd - gb);
+      const Lin gzx{yb * gxi0 - ya * geta0, yh * gxi0 - ya * dge, yb * dgx - yh * geta0, yh * (dgx - dge)};
+      const Lin gyz{xa * geta0 - xb * gxi0, xa * dge - xh * gxi0, xh * geta0 - xb * dgx, xh * (dge - dgx)};
+
+      // Centre rates and increments, with the second-order membrane correction of 1.3 (quad_second_order).
+      const double exx0 = vx_x.p0 * inv0, eyy0 = vy_y.p0 * inv0, kxx0 = ry_x.p0 * inv0,
+                   kyy0 = -(rx_y.p0 * inv0);
+      const double gyz0 = gyz.p0 * inv0, gzx0 = gzx.p0 * inv0;
+      const double wx = vz_x.p0 * inv0, wy = vz_y.p0 * inv0;
+      const double dem0 = (exx0 - dt1 * wx * wx) * dt1, dem1 = (eyy0 - dt1 * wy * wy) * dt1;
+      const double dem2 = (vx_y.p0 * inv0 + vy_x.p0 * inv0) * dt1;
       sec.dem[0][j] = dem0, sec.dem[1][j] = dem1, sec.dem[2][j] = dem2;
       sec.dem[3][j] = gyz0 * dt1, sec.dem[4][j] = gzx0 * dt1;
-      const double dk0 = ry_x * dt1, dk1 = kyy0 * dt1, dk2 = (ry_y - rx_x) * dt1;
+      const double dk0 = kxx0 * dt1, dk1 = kyy0 * dt1, dk2 = (ry_y.p0 * inv0 - rx_x.p0 * inv0) * dt1;
       sec.dk[0][j] = dk0, sec.dk[1][j] = dk1, sec.dk[2][j] = dk2;
 
-// Hourglass rates at the Gauss points: the point's rates minus the centre's (without the second-order
-// term), for exx eyy kxx kyy gyz gzx.
+      // Hourglass rates at the Gauss points: the point's rates minus the centre's (without the second-order
+      // term), for exx eyy kxx kyy gyz gzx.
+      double inv[4];
 #pragma GCC unroll 4
       for (int gp = 0; gp < 4; ++gp) {
-        const double xi = kXiGauss[gp], eta = kEtaGauss[gp];
-        const double xx = xa + eta * xh, yx = ya + eta * yh, xe = xb + xi * xh, ye = yb + xi * yh;
-        const double det = std::max(xx * ye - yx * xe, tiny30);
-        const double inv = 1.0 / det;
+        const double det = std::max(j0 + kXiGauss[gp] * j1 + kEtaGauss[gp] * j2, tiny30);
         bk.detg[gp][j] = det;
-        const double gxi = 0.5 * (1.0 - eta) * ga + 0.5 * (1.0 + eta) * gc;
-        const double geta = 0.5 * (1.0 - xi) * gb + 0.5 * (1.0 + xi) * gd;
-        bk.dh[gp][0][j] = (ye * (vx_a + eta * vx_h) - yx * (vx_b + xi * vx_h)) * inv - vx_x;
-        bk.dh[gp][1][j] = (xx * (vy_b + xi * vy_h) - xe * (vy_a + eta * vy_h)) * inv - vy_y;
-        bk.dh[gp][2][j] = (ye * (ry_a + eta * ry_h) - yx * (ry_b + xi * ry_h)) * inv - ry_x;
-        bk.dh[gp][3][j] = -((xx * (rx_b + xi * rx_h) - xe * (rx_a + eta * rx_h)) * inv) - kyy0;
-        bk.dh[gp][4][j] = (xx * geta - xe * gxi) * inv - gyz0;
-        bk.dh[gp][5][j] = (ye * gxi - yx * geta) * inv - gzx0;
+        inv[gp] = 1.0 / det;
       }
+      const auto hourglass = [&](int q, const Lin& n, double sign, double centre) {
+        // The points (xi, eta) = (-g, -g), (g, -g), (g, g), (-g, g), xi eta = g^2 (-1)^gp.
+        const double gp1 = kGauss * n.p1, gp2 = kGauss * n.p2, h3 = (kGauss * kGauss) * n.p3;
+        const double a = n.p0 - gp2, b = n.p0 + gp2;
+        const double v[4] = {(a - gp1) + h3, (a + gp1) - h3, (b + gp1) + h3, (b - gp1) - h3};
+#pragma GCC unroll 4
+        for (int gp = 0; gp < 4; ++gp) bk.dh[gp][q][j] = sign * (v[gp] * inv[gp]) - centre;
+      };
+      hourglass(0, vx_x, 1.0, exx0);
+      hourglass(1, vy_y, 1.0, eyy0);
+      hourglass(2, ry_x, 1.0, kxx0);
+      hourglass(3, rx_y, -1.0, kyy0);
+      hourglass(4, gyz, 1.0, gyz0);
+      hourglass(5, gzx, 1.0, gzx0);
 
       // Square-root arguments: equivalent strain rate (1.3, with the current thickness), the step's |g1|,
       // |g2| (qeph_step_axes_sq), sqrt(A) of the membrane damping.
@@ -410,67 +431,85 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
       any_gone |= gone;
       const double malive = alive ? one : zero;
 
-      // Stabilisation resultants at the four Gauss points.
+      // Stabilisation resultants at the four Gauss points, component by component, with what the forces need
+      // of them: their moments over the points (sum, xi-, eta- and xi eta-weighted sums) and the centre's
+      // share sum_g det J(g) / det J(0) s(g).
       const double fm = bk.fm[j], fb = bk.fb[j];
       const double ch[kHgRows] = {
           a11 * t * fm, a11 * t * fm, a11 * bend * t * t * t * fb, a11 * bend * t * t * t * fb,
           gs * t * fm,  gs * t * fm};
       const double l = area / bk.step_root[j];
       const double damp = dn * l / c;  // Dn times the element's time scale L/c
-      double s[4][kHgRows];
-      double de_hg = 0;
+      const double inv0 = bk.inv0[j];
+      double w[4], wr[4];
 #pragma GCC unroll 4
-      for (int gp = 0; gp < 4; ++gp) {
-        const double w = bk.detg[gp][j];
+      for (int gp = 0; gp < 4; ++gp) w[gp] = bk.detg[gp][j], wr[gp] = w[gp] * inv0;
+      // Per component q: inc = C_h dh dt1, S_v = Dn (L/c) C_h dh, the energy term (S_old + inc/2 + S_v) dh,
+      // the point's resultant OFF (S_old + inc + S_v), with the factors of dh taken once per element.
+      double k_half[kHgRows], k_full[kHgRows], k_store[kHgRows];
 #pragma GCC unroll 6
-        for (int q = 0; q < kHgRows; ++q) {
+      for (int q = 0; q < kHgRows; ++q) {
+        const double cd = ch[q] * dt1, cv = damp * ch[q];
+        k_half[q] = 0.5 * cd + cv, k_full[q] = cd + cv, k_store[q] = malive * cd;
+      }
+      double mo[kHgRows][4], share[kHgRows];
+      double e_point[4] = {0.0, 0.0, 0.0, 0.0};
+#pragma GCC unroll 6
+      for (int q = 0; q < kHgRows; ++q) {
+        double sq[4];
+#pragma GCC unroll 4
+        for (int gp = 0; gp < 4; ++gp) {
           double& stored = hg[static_cast<std::size_t>(gp * kHgRows + q) * G + ii];
           const double h = bk.dh[gp][q][j];
           const double s0 = stored;
-          const double inc = ch[q] * h * dt1;
-          const double sv = damp * ch[q] * h;
-          de_hg += w * off * (s0 + 0.5 * inc + sv) * h * dt1;
-          stored = s0 + malive * inc;
-          s[gp][q] = off * ((s0 + inc) + sv);
+          e_point[gp] += (s0 + k_half[q] * h) * h;
+          stored = s0 + k_store[q] * h;
+          sq[gp] = off * (s0 + k_full[q] * h);
         }
+        mo[q][0] = (sq[0] + sq[1]) + (sq[2] + sq[3]);
+        mo[q][1] = kGauss * ((sq[1] - sq[0]) + (sq[2] - sq[3]));
+        mo[q][2] = kGauss * ((sq[2] - sq[1]) + (sq[3] - sq[0]));
+        mo[q][3] = (kGauss * kGauss) * ((sq[0] - sq[1]) + (sq[2] - sq[3]));
+        share[q] = (wr[0] * sq[0] + wr[1] * sq[1]) + (wr[2] * sq[2] + wr[3] * sq[3]);
       }
+      const double de_hg =
+          off * dt1 * ((w[0] * e_point[0] + w[1] * e_point[1]) + (w[2] * e_point[2] + w[3] * e_point[3]));
       const double eh = e_hg[ii];
       e_hg[ii] = eh + malive * de_hg;
 
-      // Forces: the centre rows with R (the centre resultants less the points' share), then the points'
-      // adjugate rows; S_xi, S_eta, S_h of fx, fy, mx, my and the four edge values of the shear.
+      // Forces: S_xi, S_eta, S_h of fx, fy, mx, my and the four edge values of the shear, from the points
+      // (their sums over the points through the moments: x,xi = xa + eta xh ...), then from the centre with
+      // R = 4 n0 - share.
       const double xa = bk.xa[j], xb = bk.xb[j], xh = bk.xh[j], ya = bk.ya[j], yb = bk.yb[j], yh = bk.yh[j];
-      const double inv0 = bk.inv0[j];
-      const double ot = off * t, ot2 = off * t * t;
-      double rnxx = 4.0 * (ot * (sec.for_new[0][j] + fv[0])), rnyy = 4.0 * (ot * (sec.for_new[1][j] + fv[1]));
-      const double rnxy = 4.0 * (ot * (sec.for_new[2][j] + fv[2]));
-      double rqy = 4.0 * (ot * sec.for_new[3][j]), rqx = 4.0 * (ot * sec.for_new[4][j]);
-      double rmxx = 4.0 * (ot2 * sec.mom_new[0][j]), rmyy = 4.0 * (ot2 * sec.mom_new[1][j]);
-      const double rmxy = 4.0 * (ot2 * sec.mom_new[2][j]);
-      double sfx[3] = {}, sfy[3] = {}, smx[3] = {}, smy[3] = {};  // xi, eta, h
-      double ea = 0, eb = 0, ec = 0, ed = 0;
-#pragma GCC unroll 4
-      for (int gp = 0; gp < 4; ++gp) {
-        const double xi = kXiGauss[gp], eta = kEtaGauss[gp];
-        const double xx = xa + eta * xh, yx = ya + eta * yh, xe = xb + xi * xh, ye = yb + xi * yh;
-        const double wr = bk.detg[gp][j] * inv0;
-        const double* sg = s[gp];
-        rnxx -= wr * sg[0], rnyy -= wr * sg[1], rmxx -= wr * sg[2], rmyy -= wr * sg[3];
-        rqy -= wr * sg[4], rqx -= wr * sg[5];
-        // Fluxes (Nxx, 0), (0, Nyy), (Mxx, 0), -(0, Myy) and the shear (Qx, Qy).
-        const double fxa = sg[0] * ye, fxb = -(sg[0] * yx);
-        const double fya = -(sg[1] * xe), fyb = sg[1] * xx;
-        const double mya = sg[2] * ye, myb = -(sg[2] * yx);
-        const double mxa = sg[3] * xe, mxb = -(sg[3] * xx);
-        sfx[0] += fxa, sfx[1] += fxb, sfx[2] += eta * fxa + xi * fxb;
-        sfy[0] += fya, sfy[1] += fyb, sfy[2] += eta * fya + xi * fyb;
-        smy[0] += mya, smy[1] += myb, smy[2] += eta * mya + xi * myb;
-        smx[0] += mxa, smx[1] += mxb, smx[2] += eta * mxa + xi * mxb;
-        const double txi = sg[5] * ye - sg[4] * xe, teta = sg[4] * xx - sg[5] * yx;
-        ea += 0.5 * (1.0 - eta) * txi, ec += 0.5 * (1.0 + eta) * txi;
-        eb += 0.5 * (1.0 - xi) * teta, ed += 0.5 * (1.0 + xi) * teta;
-      }
+      const auto flux_x = [&](const double m[4], double sv[3]) {  // flux (s, 0)
+        sv[0] = yb * m[0] + yh * m[1], sv[1] = -(ya * m[0] + yh * m[2]), sv[2] = yb * m[2] - ya * m[1];
+      };
+      const auto flux_y = [&](const double m[4], double sv[3]) {  // flux (0, s)
+        sv[0] = -(xb * m[0] + xh * m[1]), sv[1] = xa * m[0] + xh * m[2], sv[2] = xa * m[1] - xb * m[2];
+      };
+      double sfx[3], sfy[3], smx[3], smy[3];  // xi, eta, h
+      flux_x(mo[0], sfx);
+      flux_y(mo[1], sfy);
+      flux_x(mo[2], smy);
+      flux_y(mo[3], smx);
+      for (double& v : smx) v = -v;  // flux (0, -Myy)
+      const double* mqy = mo[4];
+      const double* mqx = mo[5];
+      const double txs = (yb * mqx[0] + yh * mqx[1]) - (xb * mqy[0] + xh * mqy[1]);  // sum_g T_xi
+      const double txe = (yb * mqx[2] + yh * mqx[3]) - (xb * mqy[2] + xh * mqy[3]);  // sum_g eta T_xi
+      const double tes = (xa * mqy[0] + xh * mqy[2]) - (ya * mqx[0] + yh * mqx[2]);  // sum_g T_eta
+      const double tex = (xa * mqy[1] + xh * mqy[3]) - (ya * mqx[1] + yh * mqx[3]);  // sum_g xi T_eta
+      double ea = 0.5 * (txs - txe), ec = 0.5 * (txs + txe), eb = 0.5 * (tes - tex), ed = 0.5 * (tes + tex);
       // The centre (xi = eta = 0: no h part).
+      const double ot = off * t, ot2 = off * t * t;
+      const double rnxx = 4.0 * (ot * (sec.for_new[0][j] + fv[0])) - share[0];
+      const double rnyy = 4.0 * (ot * (sec.for_new[1][j] + fv[1])) - share[1];
+      const double rnxy = 4.0 * (ot * (sec.for_new[2][j] + fv[2]));
+      const double rqy = 4.0 * (ot * sec.for_new[3][j]) - share[4],
+                   rqx = 4.0 * (ot * sec.for_new[4][j]) - share[5];
+      const double rmxx = 4.0 * (ot2 * sec.mom_new[0][j]) - share[2];
+      const double rmyy = 4.0 * (ot2 * sec.mom_new[1][j]) - share[3];
+      const double rmxy = 4.0 * (ot2 * sec.mom_new[2][j]);
       sfx[0] += rnxx * yb - rnxy * xb, sfx[1] += rnxy * xa - rnxx * ya;
       sfy[0] += rnxy * yb - rnyy * xb, sfy[1] += rnyy * xa - rnxy * ya;
       smy[0] += rmxx * yb - rmxy * xb, smy[1] += rmxy * xa - rmxx * ya;
