@@ -127,11 +127,11 @@ inline void store_local_forces(double* nf, std::size_t stride, std::size_t k, st
   o[5 * stride] = -(mx * e1z + my * e2z);
 }
 
-// Local geometry and velocities of element j of a four-node block (QEPH and QBAT front stage, elements.md
-// 1.2): the node coordinates relative to node 1 in the frame (lx, ly), under small strain (frozen:
-// /DT/SHELL/CST switch or Ismstr 1) the first cycle's ones, kept in g.ref_local (x2 x3 x4 y2 y3 y4); the
-// nodal velocities (vx vy vz) and rotation rates (rx ry) on the frame's axes. The values are also stored in
-// the block's local rows (bk.vx ... bk.ly) for the back stage.
+// Local geometry and velocities of element j of a four-node block (QBAT's front stage, elements.md 1.2; QEPH
+// takes the same steps in its vectorised loop): the node coordinates relative to node 1 in the frame (lx,
+// ly), under small strain (frozen: /DT/SHELL/CST switch or Ismstr 1) the first cycle's ones, kept in
+// g.ref_local (x2 x3 x4 y2 y3 y4); the nodal velocities (vx vy vz) and rotation rates (rx ry) on the frame's
+// axes. The values are also stored in the block's local rows (bk.vx ... bk.ly) for the back stage.
 template <class Block>
 inline void quad_local_state(Block& bk, int j, ShellGroup& g, std::size_t ii, bool frozen, double lx[4],
                              double ly[4], double vx[4], double vy[4], double vz[4], double rx[4],

@@ -40,12 +40,37 @@
 // Small strain (Ismstr 1 or after /DT/SHELL/CST): the local coordinates are frozen at the first cycle and
 //   used from then on, as Ishell 1 does.
 //
+// Evaluation [our own algebra of the same rows; the equations above are unchanged]. Per-node rows at five
+// points per element cost more than the rest of the kernel, so the rows are never formed. With the
+// projections of the node values u_k of a field, u_xi = sum xi_k u_k / 4, u_eta = sum eta_k u_k / 4,
+// u_h = sum h_k u_k / 4 (h_k = xi_k eta_k), and the same of the node coordinates (x_xi ... y_h), the
+// bilinear map has x,xi = x_xi + eta x_h, x,eta = x_eta + xi x_h (y alike), u,xi = u_xi + eta u_h,
+// u,eta = u_eta + xi u_h, and
+//   rows(g) u = ((y,eta u,xi - y,xi u,eta), (x,xi u,eta - x,eta u,xi)) / det J(g)
+// are the x and y derivatives; the assumed shear is J(g)^-1 of the four tied edge values. det J(g) and the
+// numerators are linear in xi and eta (the shear's with a xi eta term), so the hourglass rates
+// dh(g) = rows(g) v - rows(0) v cost a few products per field and point. The forces are the
+// transpose: det J(g) rows(g)^T is the adjugate (no division), whose node values are
+//   f_k = (xi_k S_xi + eta_k S_eta + h_k S_h) / 4,
+//   S_xi = F_x y,eta - F_y x,eta,  S_eta = F_y x,xi - F_x y,xi,  S_h = eta S_xi + xi S_eta,
+// summed over the points, F the flux of the field ((Nxx, Nxy) for fx, (Nxy, Nyy) for fy, (Mxx, Mxy) for my,
+// -(Mxy, Myy) for mx), the sums over the four points taken through the moments of the point values (their
+// sum and xi-, eta-, xi eta-weighted sums); the shear forces are those of the four edge values. The
+// centre takes
+//   R = 4 n0 - sum_g det J(g) / det J(0) s(g),   s(g) = OFF (S(g) + S_v(g)),
+// which is A rows(0)^T n0 - sum_g det J(g) rows(0)^T s(g) with rows(0) = adj(0) / det J(0), A = 4 det J(0).
+// The sums are those of the point-by-point form, in another order: the results agree to round-off.
+//
 // Layout: the group runs in blocks of kBlock elements; the gather and frame are the shared block passes
-// (element_gather.hpp, shell_frame.hpp), the section is the shared vectorised through-thickness update, the
-// rows, stabilisation and forces run element by element on the block's scratch (no allocation).
+// (element_gather.hpp, shell_frame.hpp), the section is the shared vectorised through-thickness update; the
+// local state, rates and hourglass rates, and then the energy, stabilisation and forces are two loops over
+// the block's elements in structure-of-arrays form, which GCC vectorises (the square roots in passes of
+// their own, sqrt_in_place; state updates written x + m dx with a mask m, as in shell_bt4.cpp). Only the
+// tangent factor of the points that yielded in this cycle runs element by element.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 
 #include "solver/element_gather.hpp"
@@ -64,10 +89,20 @@ constexpr int kHgRows = 6;  // stabilisation resultants per Gauss point: nxx nyy
 struct QephBlock {
   NodeBlock<4, kBlock> nb;
   shell_detail::FrameBlock<kBlock> fr;
-  double vx[4][kBlock], vy[4][kBlock], vz[4][kBlock], rx[4][kBlock], ry[4][kBlock];  // local
-  double lx[4][kBlock], ly[4][kBlock];                                               // local coordinates
+  double lx[4][kBlock], ly[4][kBlock];  // local coordinates (node 1 at the origin)
+  double frozen[kBlock], capture[kBlock];
+  // The bilinear map: x,xi = xa + eta xh, x,eta = xb + xi xh, y,xi = ya + eta yh, y,eta = yb + xi yh.
+  double xa[kBlock], xb[kBlock], xh[kBlock], ya[kBlock], yb[kBlock], yh[kBlock];
+  double inv0[kBlock];            // 1 / det J(0)
+  double detg[4][kBlock];         // det J at the Gauss points: their weights
+  double dh[4][kHgRows][kBlock];  // hourglass rates rows(g) v - rows(0) v
+  double root[4][kBlock];         // square roots: equivalent rate, |g1|, |g2|, sqrt(A)
+  double step_root[kBlock];       // the step's last root: L = A / step_root
+  double rate[kBlock], off[kBlock], fm[kBlock], fb[kBlock];
+  std::int64_t flag[kBlock];
   double sig_before[shell_detail::kMaxPoints][3][kBlock];  // in-plane stress of the points before the update
   double eps_before[shell_detail::kMaxPoints][kBlock];
+  double fl[5][4][kBlock];  // local nodal forces fx fy fz and moments mx my
   shell_detail::SectionBlock<kBlock> sec;
 };
 
@@ -95,12 +130,42 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
   const double alpha = rate_filter_alpha(mat, dt1);
   const double fail_limit = failure_limit(mat);
   const bool update_thick = pr.ithick == 1;
-  // Bending weights of the tangent factor: sum w_p zeta_p^2 (0 for N <= 1).
-  double bend_weight_sum = 0;
-  for (int p = 0; p < rule.n; ++p) bend_weight_sum += rule.w[p] * rule.zeta[p] * rule.zeta[p];
+  // Strain rate above which the element's rate term differs from 1 (jc_rate_factor).
+  const double rate_one = shell_rate_threshold(mat);
+  // Tangent factors of an element none of whose points yielded in this cycle: the sums of the loop below
+  // with f_p = 1 at every point, in its order (the same values to the bit); and the bending weights
+  // sum w_p zeta_p^2 (0 for N <= 1).
+  double fm_elastic = 1.0, fb_elastic = 1.0, bend_weight_sum = 0;
+  if (rule.n > 0) {
+    double sum_m = 0, sum_b = 0;
+    for (int p = 0; p < rule.n; ++p) {
+      sum_m += rule.w[p] * 1.0;
+      sum_b += rule.w[p] * rule.zeta[p] * rule.zeta[p] * 1.0;
+      bend_weight_sum += rule.w[p] * rule.zeta[p] * rule.zeta[p];
+    }
+    fm_elastic = sum_m;
+    fb_elastic = bend_weight_sum > 0 ? sum_b / bend_weight_sum : fm_elastic;
+  }
+  // Floors of divisors, and the masks of the state updates (see shell_bt4.cpp: a select of a computed value
+  // would be moved into a branch and keep the loop scalar).
+  const double tiny30 = opaque(1e-30);
+  const StepConstants step_k{tiny30, opaque(1e-60), opaque(0.5), opaque(0.0)};
+  const double one = opaque(1.0), zero = opaque(0.0);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
 
-  double* nf = g.nodal_force.data();
+  double* thick = g.thick.data();
+  const double* t0 = g.t0.data();
+  double* offs = g.off.data();
+  double* rates = g.rate.data();
+  double* w_plastic = g.w_plastic.data();
+  double* e_int = g.e_int.data();
+  double* e_hg = g.e_hg.data();
   double* hg = g.hg.data();
+  double* dts = g.dt.data();
+  double* k_nodal = g.k_nodal.data();
+  double* small = g.small.data();
+  double* ref = g.ref_local.data();
+  double* nf = g.nodal_force.data();
 
   QephBlock bk;
   SectionBlock<kBlock>& sec = bk.sec;
@@ -110,78 +175,215 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
                        bk.nb);
     quad_frame_block(bk.nb, len, bk.fr);
 
-    // Local geometry and velocities, centre rows, increments and the element rate.
+    // Small strain (Ismstr 1 or after /DT/SHELL/CST): the local coordinates are frozen at the first cycle;
+    // the elements that have none yet capture them now.
     for (int j = 0; j < len; ++j) {
       const std::size_t ii = static_cast<std::size_t>(i0 + j);
-      const double off_start = g.off[ii];
-      sec.off[j] = off_start;
-      if (g.thick[ii] <= 0.0) g.thick[ii] = g.t0[ii];
-      sec.t[j] = update_thick ? g.thick[ii] : g.t0[ii];
-      // Local geometry (small strain: the first cycle's), velocities and rotation rates (shell_frame.hpp).
-      double lx[4], ly[4], vx[4], vy[4], vz[4], rx[4], ry[4];
-      quad_local_state(bk, j, g, ii, g.dt_fixed[ii] > 0.0 || pr.ismstr == 1, lx, ly, vx, vy, vz, rx, ry);
-      const QuadRows r0 = quad_rows(lx, ly, 0.0, 0.0);
-      sec.area[j] = 4.0 * r0.detj;
-      double e[5], kap[3];
-      quad_rates(r0, vx, vy, vz, rx, ry, e, kap);
-      quad_second_order(r0, vz, dt1, e);
-      for (int q = 0; q < 5; ++q) sec.dem[q][j] = e[q] * dt1;
-      for (int q = 0; q < 3; ++q) sec.dk[q][j] = kap[q] * dt1;
-      const double eq =
-          dt1 > 0 ? std::sqrt(equivalent_rate_arg(sec.dem[0][j], sec.dem[1][j], sec.dem[2][j], sec.dk[0][j],
-                                                  sec.dk[1][j], sec.dk[2][j], g.thick[ii])) /
-                        dt1
-                  : 0.0;
-      const double rate = alpha * eq + (1.0 - alpha) * g.rate[ii];
-      if (off_start > 0.0) g.rate[ii] = rate;
-      sec.rfac[j] = jc_rate_factor(mat, rate);
-      sec.rate[j] = rate;  // the /FAIL/JOHNSON D4 term
+      const bool frozen = g.dt_fixed[ii] > 0.0 || pr.ismstr == 1;
+      const bool cap = frozen && small[ii] == 0.0;
+      if (cap) small[ii] = 1.0;
+      bk.frozen[j] = frozen ? 1.0 : 0.0;
+      bk.capture[j] = cap ? 1.0 : 0.0;
     }
 
-    // The points' in-plane stress and plastic strain before the update (for the tangent factor).
-    for (int p = 0; p < rule.n; ++p)
-      for (int j = 0; j < len; ++j) {
-        for (int q = 0; q < 3; ++q) bk.sig_before[p][q][j] = g.sig[sig_index(p, q, i0 + j)];
-        bk.eps_before[p][j] = g.eps_p[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)];
-      }
-    section_update_block(g, i0, len, mat, rule, gs, sec);
-
-    // Failure, energy, centre forces, stabilisation, step.
+    // Local geometry and velocities (shell_frame.hpp), centre increments, hourglass rates and the square
+    // roots' arguments.
+    RADX_IVDEP
     for (int j = 0; j < len; ++j) {
       const std::size_t ii = static_cast<std::size_t>(i0 + j);
-      const double off_start = sec.off[j];
-      if (off_start <= 0.0) {
-        clear_shell_element(g, nf, ii, 24);
-        continue;
-      }
-      const double t = sec.t[j], area = sec.area[j];
-      const double dem[5] = {sec.dem[0][j], sec.dem[1][j], sec.dem[2][j], sec.dem[3][j], sec.dem[4][j]};
-      const double dk[3] = {sec.dk[0][j], sec.dk[1][j], sec.dk[2][j]};
-      const double off = next_off(fail_limit, off_start, sec.eps_p_max[j], sec.fail_now[j]);
-      g.off[ii] = off;
-      g.w_plastic[ii] += sec.w_plastic[j];
-      g.thick[ii] += sec.dthick[j] * off;
+      sec.off[j] = offs[ii];
+      const double th0 = thick[ii], t0i = t0[ii];
+      const double th = th0 <= 0.0 ? t0i : th0;
+      thick[ii] = th;
+      sec.t[j] = update_thick ? th : t0i;
 
-      // Membrane damping (1.4).
-      double fv[3];
-      membrane_damping(visc0, area, dem, fv);
-      // Internal energy (1.5).
-      g.e_int[ii] += shell_energy_increment(area, t, off_start, off, sec.for_old, sec.for_new, sec.mom_old,
-                                            sec.mom_new, j, dem, dk, fv);
-      if (off <= 0.0) {
-        clear_shell_element(g, nf, ii, 24);
-        continue;
+      const double e1x = bk.fr.e1[0][j], e1y = bk.fr.e1[1][j], e1z = bk.fr.e1[2][j];
+      const double e2x = bk.fr.e2[0][j], e2y = bk.fr.e2[1][j], e2z = bk.fr.e2[2][j];
+      const double e3x = bk.fr.e3[0][j], e3y = bk.fr.e3[1][j], e3z = bk.fr.e3[2][j];
+      // The steps of quad_local_state (shell_frame.hpp) in a form that vectorises: its selects are arithmetic
+      // (frozen, capture are 0 or 1; with 0 they return the other value exactly).
+      const double fz = bk.frozen[j], cap = bk.capture[j];
+      double lx[4], ly[4];
+      lx[0] = ly[0] = 0.0;
+      bk.lx[0][j] = bk.ly[0][j] = 0.0;
+#pragma GCC unroll 4
+      for (int k = 1; k < 4; ++k) {
+        double cx = 0, cy = 0, lz_unused = 0;
+        to_local(e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y, e3z, bk.nb.x[k][j] - bk.nb.x[0][j],
+                 bk.nb.y[k][j] - bk.nb.y[0][j], bk.nb.z[k][j] - bk.nb.z[0][j], cx, cy, lz_unused);
+        double& rx0 = ref[static_cast<std::size_t>(k - 1) * G + ii];
+        double& ry0 = ref[static_cast<std::size_t>(k + 2) * G + ii];
+        rx0 = cap * cx + (1.0 - cap) * rx0;
+        ry0 = cap * cy + (1.0 - cap) * ry0;
+        lx[k] = fz * rx0 + (1.0 - fz) * cx;
+        ly[k] = fz * ry0 + (1.0 - fz) * cy;
+        bk.lx[k][j] = lx[k];
+        bk.ly[k][j] = ly[k];
+      }
+      double vx[4], vy[4], vz[4], rx[4], ry[4];
+#pragma GCC unroll 4
+      for (int k = 0; k < 4; ++k) {
+        double rz_unused = 0;
+        to_local(e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y, e3z, bk.nb.vx[k][j], bk.nb.vy[k][j], bk.nb.vz[k][j],
+                 vx[k], vy[k], vz[k]);
+        to_local(e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y, e3z, bk.nb.rx[k][j], bk.nb.ry[k][j], bk.nb.rz[k][j],
+                 rx[k], ry[k], rz_unused);
       }
 
-      // Tangent factors of the membrane and bending stabilisation (ZCFAC) [inferred measure, see above].
-      double fm = 1.0, fb = 1.0;
-      if (rule.n > 0) {
+      // Projections (xi, eta, h) of node values: of the coordinates here, of the velocity fields below.
+      const auto pxi = [](const double u[4]) { return 0.25 * (((-u[0] + u[1]) + u[2]) - u[3]); };
+      const auto peta = [](const double u[4]) { return 0.25 * (((-u[0] - u[1]) + u[2]) + u[3]); };
+      const auto ph = [](const double u[4]) { return 0.25 * (((u[0] - u[1]) + u[2]) - u[3]); };
+      const double xa = pxi(lx), xb = peta(lx), xh = ph(lx), ya = pxi(ly), yb = peta(ly), yh = ph(ly);
+      bk.xa[j] = xa, bk.xb[j] = xb, bk.xh[j] = xh, bk.ya[j] = ya, bk.yb[j] = yb, bk.yh[j] = yh;
+      // det J(g) = j0 + xi j1 + eta j2; A = 4 det J(0).
+      const double j0 = xa * yb - ya * xb, j1 = xa * yh - ya * xh, j2 = xh * yb - yh * xb;
+      const double det0 = std::max(j0, tiny30);
+      const double inv0 = 1.0 / det0;
+      bk.inv0[j] = inv0;
+      const double area = 4.0 * det0;
+      sec.area[j] = area;
+      // Numerators of the x and y derivatives of a field, rows(g) u det J(g) = p0 + xi p1 + eta p2
+      // (+ xi eta p3 for the shear; its xi eta terms of the derivatives cancel): p0 / det J(0) is the
+      // centre's rate.
+      struct Lin {
+        double p0, p1, p2, p3;
+      };
+      const auto d_x = [&](const double u[4]) {
+        const double ua = pxi(u), ub = peta(u), uh = ph(u);
+        return Lin{yb * ua - ya * ub, yh * ua - ya * uh, yb * uh - yh * ub, 0.0};
+      };
+      const auto d_y = [&](const double u[4]) {
+        const double ua = pxi(u), ub = peta(u), uh = ph(u);
+        return Lin{xa * ub - xb * ua, xa * uh - xh * ua, xh * ub - xb * uh, 0.0};
+      };
+      const Lin vx_x = d_x(vx), vy_y = d_y(vy), vx_y = d_y(vx), vy_x = d_x(vy);
+      const Lin ry_x = d_x(ry), rx_y = d_y(rx), ry_y = d_y(ry), rx_x = d_x(rx);
+      const Lin vz_x = d_x(vz), vz_y = d_y(vz);
+      // Covariant shear at the edge midpoints A (1 -> 2), C (4 -> 3), B (1 -> 4), D (2 -> 3), beta = (ry,
+      // -rx); g_xi = gxi0 + eta dgx, g_eta = geta0 + xi dge.
+      const auto edge = [&](int a, int b) {
+        const double dx = 0.25 * (lx[b] - lx[a]), dy = 0.25 * (ly[b] - ly[a]);
+        return 0.5 * (vz[b] - vz[a]) + dx * (ry[a] + ry[b]) - dy * (rx[a] + rx[b]);
+      };
+      const double ga = edge(0, 1), gc = edge(3, 2), gb = edge(0, 3), gd = edge(1, 2);
+      const double gxi0 = 0.5 * ga + 0.5 * gc, geta0 = 0.5 * gb + 0.5 * gd;
+      const double dgx = 0.5 * (gc - ga), dge = 0.5 * (gd - gb);
+      const Lin gzx{yb * gxi0 - ya * geta0, yh * gxi0 - ya * dge, yb * dgx - yh * geta0, yh * (dgx - dge)};
+      const Lin gyz{xa * geta0 - xb * gxi0, xa * dge - xh * gxi0, xh * geta0 - xb * dgx, xh * (dge - dgx)};
+
+      // Centre rates and increments, with the second-order membrane correction of 1.3 (quad_second_order).
+      const double exx0 = vx_x.p0 * inv0, eyy0 = vy_y.p0 * inv0, kxx0 = ry_x.p0 * inv0,
+                   kyy0 = -(rx_y.p0 * inv0);
+      const double gyz0 = gyz.p0 * inv0, gzx0 = gzx.p0 * inv0;
+      const double wx = vz_x.p0 * inv0, wy = vz_y.p0 * inv0;
+      const double dem0 = (exx0 - dt1 * wx * wx) * dt1, dem1 = (eyy0 - dt1 * wy * wy) * dt1;
+      const double dem2 = (vx_y.p0 * inv0 + vy_x.p0 * inv0) * dt1;
+      sec.dem[0][j] = dem0, sec.dem[1][j] = dem1, sec.dem[2][j] = dem2;
+      sec.dem[3][j] = gyz0 * dt1, sec.dem[4][j] = gzx0 * dt1;
+      const double dk0 = kxx0 * dt1, dk1 = kyy0 * dt1, dk2 = (ry_y.p0 * inv0 - rx_x.p0 * inv0) * dt1;
+      sec.dk[0][j] = dk0, sec.dk[1][j] = dk1, sec.dk[2][j] = dk2;
+
+      // Hourglass rates at the Gauss points: the point's rates minus the centre's (without the second-order
+      // term), for exx eyy kxx kyy gyz gzx.
+      double inv[4];
+#pragma GCC unroll 4
+      for (int gp = 0; gp < 4; ++gp) {
+        const double det = std::max(j0 + kXiGauss[gp] * j1 + kEtaGauss[gp] * j2, tiny30);
+        bk.detg[gp][j] = det;
+        inv[gp] = 1.0 / det;
+      }
+      const auto hourglass = [&](int q, const Lin& n, double sign, double centre) {
+        // The points (xi, eta) = (-g, -g), (g, -g), (g, g), (-g, g), xi eta = g^2 (-1)^gp.
+        const double gp1 = kGauss * n.p1, gp2 = kGauss * n.p2, h3 = (kGauss * kGauss) * n.p3;
+        const double a = n.p0 - gp2, b = n.p0 + gp2;
+        const double v[4] = {(a - gp1) + h3, (a + gp1) - h3, (b + gp1) + h3, (b - gp1) - h3};
+#pragma GCC unroll 4
+        for (int gp = 0; gp < 4; ++gp) bk.dh[gp][q][j] = sign * (v[gp] * inv[gp]) - centre;
+      };
+      hourglass(0, vx_x, 1.0, exx0);
+      hourglass(1, vy_y, 1.0, eyy0);
+      hourglass(2, ry_x, 1.0, kxx0);
+      hourglass(3, rx_y, -1.0, kyy0);
+      hourglass(4, gyz, 1.0, gyz0);
+      hourglass(5, gzx, 1.0, gzx0);
+
+      // Square-root arguments: equivalent strain rate (1.3, with the current thickness), the step's |g1|,
+      // |g2| (qeph_step_axes_sq), sqrt(A) of the membrane damping.
+      bk.root[0][j] = equivalent_rate_arg(dem0, dem1, dem2, dk0, dk1, dk2, th);
+      qeph_step_axes_sq(lx, ly, bk.root[1][j], bk.root[2][j]);
+      bk.root[3][j] = area;
+    }
+    sqrt_in_place(bk.root[0], 4 * kBlock);
+
+    // Filtered strain rate (6.1); the step's last root argument.
+    std::int64_t any_rate = 0;
+    RADX_IVDEP
+    for (int j = 0; j < len; ++j) {
+      const std::size_t ii = static_cast<std::size_t>(i0 + j);
+      const double old = rates[ii];
+      const double eq = dt1 > 0 ? bk.root[0][j] / dt1 : 0.0;
+      const double rate = alpha * eq + (1.0 - alpha) * old;
+      rates[ii] = sec.off[j] > 0.0 ? rate : old;
+      bk.rate[j] = rate;
+      sec.rate[j] = rate;  // the /FAIL/JOHNSON D4 term
+      sec.rfac[j] = 1.0;
+      const std::int64_t r = rate <= rate_one ? 0 : 1;  // R = 1 at or below rate0 (and for c = 0)
+      bk.flag[j] = r;
+      any_rate |= r;
+    }
+    RADX_IVDEP
+    for (int j = 0; j < len; ++j) {
+      const double lx[4] = {bk.lx[0][j], bk.lx[1][j], bk.lx[2][j], bk.lx[3][j]};
+      const double ly[4] = {bk.ly[0][j], bk.ly[1][j], bk.ly[2][j], bk.ly[3][j]};
+      bk.step_root[j] = qeph_step_arg(lx, ly, sec.area[j], bk.root[1][j], bk.root[2][j], step_k);
+    }
+    sqrt_in_place(bk.step_root, kBlock);
+    if (any_rate != 0)
+      for (int j = 0; j < len; ++j)
+        if (bk.flag[j] != 0) sec.rfac[j] = jc_rate_factor(mat, bk.rate[j]);
+
+    // The points' in-plane stress and plastic strain before the update (for the tangent factor).
+    for (int p = 0; p < rule.n; ++p) {
+      for (int q = 0; q < 3; ++q) {
+        const double* sp = g.sig.data() + sig_index(p, q, i0);
+        for (int j = 0; j < len; ++j) bk.sig_before[p][q][j] = sp[j];
+      }
+      const double* ep = g.eps_p.data() + static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0);
+      for (int j = 0; j < len; ++j) bk.eps_before[p][j] = ep[j];
+    }
+    section_update_block(g, i0, len, mat, rule, gs, sec);
+    for (int j = 0; j < len; ++j)
+      bk.off[j] = next_off(fail_limit, sec.off[j], sec.eps_p_max[j], sec.fail_now[j]);
+
+    // Tangent factors of the membrane and bending stabilisation (ZCFAC) [inferred measure, see above]: the
+    // elastic ones, unless a point of the element yielded in this cycle.
+    std::int64_t any_yield = 0;
+    for (int j = 0; j < len; ++j) {
+      bk.fm[j] = fm_elastic, bk.fb[j] = fb_elastic;
+      bk.flag[j] = 0;
+    }
+    for (int p = 0; p < rule.n; ++p) {
+      const double* ep = g.eps_p.data() + static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0);
+      RADX_IVDEP
+      for (int j = 0; j < len; ++j) {
+        const std::int64_t y = ep[j] - bk.eps_before[p][j] > 0 ? 1 : 0;
+        bk.flag[j] |= y;
+        any_yield |= y;
+      }
+    }
+    if (any_yield != 0)
+      for (int j = 0; j < len; ++j) {
+        if (bk.flag[j] == 0 || sec.off[j] <= 0.0) continue;
+        const double t = sec.t[j];
         double sum_m = 0, sum_b = 0;
         for (int p = 0; p < rule.n; ++p) {
           const double z = rule.zeta[p] * t;
-          const double d0 = dem[0] + z * dk[0], d1 = dem[1] + z * dk[1], d2 = dem[2] + z * dk[2];
+          const double d0 = sec.dem[0][j] + z * sec.dk[0][j], d1 = sec.dem[1][j] + z * sec.dk[1][j],
+                       d2 = sec.dem[2][j] + z * sec.dk[2][j];
           double fp = 1.0;
-          const double deps = g.eps_p[static_cast<std::size_t>(p) * G + ii] - bk.eps_before[p][j];
+          const double deps = g.eps_p[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)] -
+                              bk.eps_before[p][j];
           if (deps > 0) {
             const double ds0 = g.sig[sig_index(p, 0, i0 + j)] - bk.sig_before[p][0][j];
             const double ds1 = g.sig[sig_index(p, 1, i0 + j)] - bk.sig_before[p][1][j];
@@ -192,70 +394,180 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
           sum_m += rule.w[p] * fp;
           sum_b += rule.w[p] * rule.zeta[p] * rule.zeta[p] * fp;
         }
-        fm = sum_m;
-        fb = bend_weight_sum > 0 ? sum_b / bend_weight_sum : fm;
+        bk.fm[j] = sum_m;
+        bk.fb[j] = bend_weight_sum > 0 ? sum_b / bend_weight_sum : sum_m;
       }
 
-      double lx[4], ly[4], vx[4], vy[4], vz[4], rx[4], ry[4];
-      for (int k = 0; k < 4; ++k) {
-        lx[k] = bk.lx[k][j], ly[k] = bk.ly[k][j];
-        vx[k] = bk.vx[k][j], vy[k] = bk.vy[k][j], vz[k] = bk.vz[k][j], rx[k] = bk.rx[k][j],
-        ry[k] = bk.ry[k][j];
-      }
-      const QuadRows r0 = quad_rows(lx, ly, 0.0, 0.0);
-      const double l = qeph_step_length(lx, ly, area);
+    // Failure, thickness, energy (1.5), centre forces (1.6), stabilisation: the local nodal forces.
+    std::int64_t any_gone = 0;
+    RADX_IVDEP
+    for (int j = 0; j < len; ++j) {
+      const std::size_t ii = static_cast<std::size_t>(i0 + j);
+      const double off_start = sec.off[j];
+      const bool live = off_start > 0.0;
+      const double off = bk.off[j];
+      const double t = sec.t[j], area = sec.area[j];
+      const double dem[5] = {sec.dem[0][j], sec.dem[1][j], sec.dem[2][j], sec.dem[3][j], sec.dem[4][j]};
+      const double dk[3] = {sec.dk[0][j], sec.dk[1][j], sec.dk[2][j]};
+      offs[ii] = live ? off : off_start;
+      const double mlive = live ? one : zero;
+      const double wp0 = w_plastic[ii], th0 = thick[ii];
+      w_plastic[ii] = wp0 + mlive * sec.w_plastic[j];
+      thick[ii] = th0 + mlive * (sec.dthick[j] * off);
 
-      // Centre forces (1.6 with the rows of shell_quad_mindlin.hpp).
-      double fx[4] = {}, fy[4] = {}, fz[4] = {}, mx[4] = {}, my[4] = {};
-      const double ot = off * t, ot2 = off * t * t;
-      const double n0[5] = {ot * (sec.for_new[0][j] + fv[0]), ot * (sec.for_new[1][j] + fv[1]),
-                            ot * (sec.for_new[2][j] + fv[2]), ot * sec.for_new[3][j], ot * sec.for_new[4][j]};
-      const double m0[3] = {ot2 * sec.mom_new[0][j], ot2 * sec.mom_new[1][j], ot2 * sec.mom_new[2][j]};
-      quad_add_forces(r0, area, n0, m0, fx, fy, fz, mx, my);
+      // Membrane damping (1.4; membrane_damping with its sqrt(A) taken above; fv = 0 when visc0 = 0).
+      const double visc = visc0 * bk.root[3][j];
+      const double fv[3] = {visc * (dem[0] + 0.5 * dem[1]), visc * (dem[1] + 0.5 * dem[0]),
+                            visc * dem[2] / 3.0};
+      // Internal energy (1.5).
+      const double de_int = shell_energy_increment(area, t, off_start, off, sec.for_old, sec.for_new,
+                                                   sec.mom_old, sec.mom_new, j, dem, dk, fv);
+      const double ei = e_int[ii];
+      e_int[ii] = ei + mlive * de_int;
 
-      // Stabilisation at the four Gauss points.
+      const bool alive = live & (off > 0.0);  // not deleted at entry nor in this cycle
+      const std::int64_t gone = alive ? 0 : 1;
+      bk.flag[j] = gone;
+      any_gone |= gone;
+      const double malive = alive ? one : zero;
+
+      // Stabilisation resultants at the four Gauss points, component by component, with what the forces need
+      // of them: their moments over the points (sum, xi-, eta- and xi eta-weighted sums) and the centre's
+      // share sum_g det J(g) / det J(0) s(g).
+      const double fm = bk.fm[j], fb = bk.fb[j];
       const double ch[kHgRows] = {
           a11 * t * fm, a11 * t * fm, a11 * bend * t * t * t * fb, a11 * bend * t * t * t * fb,
           gs * t * fm,  gs * t * fm};
+      const double l = area / bk.step_root[j];
       const double damp = dn * l / c;  // Dn times the element's time scale L/c
-      double de_hg = 0;
-      for (int gp = 0; gp < 4; ++gp) {
-        QuadRows d = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
-        const double w = d.detj;
-        for (int k = 0; k < 4; ++k) {
-          d.nx[k] -= r0.nx[k], d.ny[k] -= r0.ny[k];
-          d.sxw[k] -= r0.sxw[k], d.sxr[k] -= r0.sxr[k], d.sxs[k] -= r0.sxs[k];
-          d.syw[k] -= r0.syw[k], d.syr[k] -= r0.syr[k], d.sys[k] -= r0.sys[k];
-        }
-        double eh[5], kh[3];
-        quad_rates(d, vx, vy, vz, rx, ry, eh, kh);
-        const double hrate[kHgRows] = {eh[0], eh[1], kh[0], kh[1], eh[3], eh[4]};
-        double s[kHgRows];
-        for (int q = 0; q < kHgRows; ++q) {
-          double& stored = hg[static_cast<std::size_t>(gp * kHgRows + q) * G + ii];
-          const double inc = ch[q] * hrate[q] * dt1;
-          const double sv = damp * ch[q] * hrate[q];
-          de_hg += w * off * (stored + 0.5 * inc + sv) * hrate[q] * dt1;
-          stored += inc;
-          s[q] = off * (stored + sv);
-        }
-        const double nh[5] = {s[0], s[1], 0.0, s[4], s[5]};
-        const double mh[3] = {s[2], s[3], 0.0};
-        quad_add_forces(d, w, nh, mh, fx, fy, fz, mx, my);
+      const double inv0 = bk.inv0[j];
+      double w[4], wr[4];
+#pragma GCC unroll 4
+      for (int gp = 0; gp < 4; ++gp) w[gp] = bk.detg[gp][j], wr[gp] = w[gp] * inv0;
+      // Per component q: inc = C_h dh dt1, S_v = Dn (L/c) C_h dh, the energy term (S_old + inc/2 + S_v) dh,
+      // the point's resultant OFF (S_old + inc + S_v), with the factors of dh taken once per element.
+      double k_half[kHgRows], k_full[kHgRows], k_store[kHgRows];
+#pragma GCC unroll 6
+      for (int q = 0; q < kHgRows; ++q) {
+        const double cd = ch[q] * dt1, cv = damp * ch[q];
+        k_half[q] = 0.5 * cd + cv, k_full[q] = cd + cv, k_store[q] = malive * cd;
       }
-      g.e_hg[ii] += de_hg;
+      double mo[kHgRows][4], share[kHgRows];
+      double e_point[4] = {0.0, 0.0, 0.0, 0.0};
+#pragma GCC unroll 6
+      for (int q = 0; q < kHgRows; ++q) {
+        double sq[4];
+#pragma GCC unroll 4
+        for (int gp = 0; gp < 4; ++gp) {
+          double& stored = hg[static_cast<std::size_t>(gp * kHgRows + q) * G + ii];
+          const double h = bk.dh[gp][q][j];
+          const double s0 = stored;
+          e_point[gp] += (s0 + k_half[q] * h) * h;
+          stored = s0 + k_store[q] * h;
+          sq[gp] = off * (s0 + k_full[q] * h);
+        }
+        mo[q][0] = (sq[0] + sq[1]) + (sq[2] + sq[3]);
+        mo[q][1] = kGauss * ((sq[1] - sq[0]) + (sq[2] - sq[3]));
+        mo[q][2] = kGauss * ((sq[2] - sq[1]) + (sq[3] - sq[0]));
+        mo[q][3] = (kGauss * kGauss) * ((sq[0] - sq[1]) + (sq[2] - sq[3]));
+        share[q] = (wr[0] * sq[0] + wr[1] * sq[1]) + (wr[2] * sq[2] + wr[3] * sq[3]);
+      }
+      const double de_hg =
+          off * dt1 * ((w[0] * e_point[0] + w[1] * e_point[1]) + (w[2] * e_point[2] + w[3] * e_point[3]));
+      const double eh = e_hg[ii];
+      e_hg[ii] = eh + malive * de_hg;
 
+      // Forces: S_xi, S_eta, S_h of fx, fy, mx, my and the four edge values of the shear, from the points
+      // (their sums over the points through the moments: x,xi = xa + eta xh ...), then from the centre with
+      // R = 4 n0 - share.
+      const double xa = bk.xa[j], xb = bk.xb[j], xh = bk.xh[j], ya = bk.ya[j], yb = bk.yb[j], yh = bk.yh[j];
+      const auto flux_x = [&](const double m[4], double sv[3]) {  // flux (s, 0)
+        sv[0] = yb * m[0] + yh * m[1], sv[1] = -(ya * m[0] + yh * m[2]), sv[2] = yb * m[2] - ya * m[1];
+      };
+      const auto flux_y = [&](const double m[4], double sv[3]) {  // flux (0, s)
+        sv[0] = -(xb * m[0] + xh * m[1]), sv[1] = xa * m[0] + xh * m[2], sv[2] = xa * m[1] - xb * m[2];
+      };
+      double sfx[3], sfy[3], smx[3], smy[3];  // xi, eta, h
+      flux_x(mo[0], sfx);
+      flux_y(mo[1], sfy);
+      flux_x(mo[2], smy);
+      flux_y(mo[3], smx);
+      for (double& v : smx) v = -v;  // flux (0, -Myy)
+      const double* mqy = mo[4];
+      const double* mqx = mo[5];
+      const double txs = (yb * mqx[0] + yh * mqx[1]) - (xb * mqy[0] + xh * mqy[1]);  // sum_g T_xi
+      const double txe = (yb * mqx[2] + yh * mqx[3]) - (xb * mqy[2] + xh * mqy[3]);  // sum_g eta T_xi
+      const double tes = (xa * mqy[0] + xh * mqy[2]) - (ya * mqx[0] + yh * mqx[2]);  // sum_g T_eta
+      const double tex = (xa * mqy[1] + xh * mqy[3]) - (ya * mqx[1] + yh * mqx[3]);  // sum_g xi T_eta
+      double ea = 0.5 * (txs - txe), ec = 0.5 * (txs + txe), eb = 0.5 * (tes - tex), ed = 0.5 * (tes + tex);
+      // The centre (xi = eta = 0: no h part).
+      const double ot = off * t, ot2 = off * t * t;
+      const double rnxx = 4.0 * (ot * (sec.for_new[0][j] + fv[0])) - share[0];
+      const double rnyy = 4.0 * (ot * (sec.for_new[1][j] + fv[1])) - share[1];
+      const double rnxy = 4.0 * (ot * (sec.for_new[2][j] + fv[2]));
+      const double rqy = 4.0 * (ot * sec.for_new[3][j]) - share[4],
+                   rqx = 4.0 * (ot * sec.for_new[4][j]) - share[5];
+      const double rmxx = 4.0 * (ot2 * sec.mom_new[0][j]) - share[2];
+      const double rmyy = 4.0 * (ot2 * sec.mom_new[1][j]) - share[3];
+      const double rmxy = 4.0 * (ot2 * sec.mom_new[2][j]);
+      sfx[0] += rnxx * yb - rnxy * xb, sfx[1] += rnxy * xa - rnxx * ya;
+      sfy[0] += rnxy * yb - rnyy * xb, sfy[1] += rnyy * xa - rnxy * ya;
+      smy[0] += rmxx * yb - rmxy * xb, smy[1] += rmxy * xa - rmxx * ya;
+      smx[0] += rmyy * xb - rmxy * yb, smx[1] += rmxy * ya - rmyy * xa;
+      const double txi0 = rqx * yb - rqy * xb, teta0 = rqy * xa - rqx * ya;
+      ea += 0.5 * txi0, ec += 0.5 * txi0, eb += 0.5 * teta0, ed += 0.5 * teta0;
+
+      const auto node = [](const double sv[3], double xi_k, double eta_k, double h_k) {
+        return 0.25 * (xi_k * sv[0] + eta_k * sv[1] + h_k * sv[2]);
+      };
+      const auto edx = [&](int a, int b) { return 0.25 * (bk.lx[b][j] - bk.lx[a][j]); };
+      const auto edy = [&](int a, int b) { return 0.25 * (bk.ly[b][j] - bk.ly[a][j]); };
+      const double dxa = edx(0, 1), dya = edy(0, 1), dxc = edx(3, 2), dyc = edy(3, 2);
+      const double dxb = edx(0, 3), dyb = edy(0, 3), dxd = edx(1, 2), dyd = edy(1, 2);
+      // Each edge (a -> b) gives -e/2 and e/2 to w_a, w_b, and (dx, dy) e to beta_a and beta_b.
+      const double fz[4] = {-0.5 * ea - 0.5 * eb, 0.5 * ea - 0.5 * ed, 0.5 * ec + 0.5 * ed,
+                            0.5 * eb - 0.5 * ec};
+      const double bx[4] = {dxa * ea + dxb * eb, dxa * ea + dxd * ed, dxc * ec + dxd * ed,
+                            dxc * ec + dxb * eb};
+      const double by[4] = {dya * ea + dyb * eb, dya * ea + dyd * ed, dyc * ec + dyd * ed,
+                            dyc * ec + dyb * eb};
+#pragma GCC unroll 4
+      for (int k = 0; k < 4; ++k) {
+        const double hk = kXiNode[k] * kEtaNode[k];
+        bk.fl[0][k][j] = node(sfx, kXiNode[k], kEtaNode[k], hk);
+        bk.fl[1][k][j] = node(sfy, kXiNode[k], kEtaNode[k], hk);
+        bk.fl[2][k][j] = fz[k];
+        bk.fl[3][k][j] = node(smx, kXiNode[k], kEtaNode[k], hk) - by[k];  // beta_y = -rx
+        bk.fl[4][k][j] = node(smy, kXiNode[k], kEtaNode[k], hk) + bx[k];  // beta_x = ry
+      }
+    }
+
+    // Rotate to global axes and store minus the internal force; step (1.10) and nodal stiffness (4.5).
+    RADX_IVDEP
+    for (int j = 0; j < len; ++j) {
+      const std::size_t ii = static_cast<std::size_t>(i0 + j);
       const double e1x = bk.fr.e1[0][j], e1y = bk.fr.e1[1][j], e1z = bk.fr.e1[2][j];
       const double e2x = bk.fr.e2[0][j], e2y = bk.fr.e2[1][j], e2z = bk.fr.e2[2][j];
       const double e3x = bk.fr.e3[0][j], e3y = bk.fr.e3[1][j], e3z = bk.fr.e3[2][j];
+#pragma GCC unroll 4
       for (int k = 0; k < 4; ++k)
         store_local_forces(nf, G, static_cast<std::size_t>(k), ii, e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y,
-                           e3z, fx[k], fy[k], fz[k], mx[k], my[k]);
-
-      // Step (1.10) and nodal stiffness (4.5).
-      g.dt[ii] = l * phi / c;
-      g.k_nodal[ii] = 0.5 * area * t * a11 / (l * l);
+                           e3z, bk.fl[0][k][j], bk.fl[1][k][j], bk.fl[2][k][j], bk.fl[3][k][j],
+                           bk.fl[4][k][j]);
+      const double area = sec.area[j], t = sec.t[j];
+      const double l = area / bk.step_root[j];
+      dts[ii] = l * phi / c;
+      k_nodal[ii] = 0.5 * area * t * a11 / (l * l);
     }
+    // Elements deleted at entry or in this cycle: no force, no stiffness, no step.
+    if (any_gone != 0)
+      for (int j = 0; j < len; ++j) {
+        if (bk.flag[j] == 0) continue;
+        const std::size_t ii = static_cast<std::size_t>(i0 + j);
+        for (int r = 0; r < 24; ++r) nf[r * G + ii] = 0.0;
+        dts[ii] = kInf;
+        k_nodal[ii] = 0.0;
+      }
   }
 }
 

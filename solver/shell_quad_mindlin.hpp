@@ -1,7 +1,8 @@
-// The bilinear four-node Mindlin plate in the element plane, shared by the QEPH (Ishell 24,
-// shell_qeph.cpp) and QBAT (Ishell 12, shell_qbat.cpp) kernels: the strain rows at one in-plane point
-// (xi, eta), their transpose (the nodal forces of the resultants), and the element step length of
-// OpenRadioss's cndt3.F/cncoef3.F. Internal to the solver; not a public API.
+// The bilinear four-node Mindlin plate in the element plane of the QBAT (Ishell 12, shell_qbat.cpp) and QEPH
+// (Ishell 24, shell_qeph.cpp) kernels: the strain rows at one in-plane point (xi, eta), their transpose (the
+// nodal forces of the resultants), and the element step length of OpenRadioss's cndt3.F/cncoef3.F. QBAT
+// takes the rows point by point; QEPH evaluates the same rows in a projected form of its own (see there) for
+// speed, and shares the Gauss points and the step length. Internal to the solver; not a public API.
 //
 // Equations (local frame of shell_frame.hpp, node k at (x_k, y_k), natural coordinates xi_k = (-1, 1, 1, -1),
 // eta_k = (-1, -1, 1, 1); our own derivation of the standard isoparametric quadrilateral):
@@ -143,24 +144,45 @@ inline void quad_add_forces(const QuadRows& r, double w, const double n[5], cons
   }
 }
 
-// Element step length of QEPH and QBAT (1.10) from the local node coordinates and the element's area.
-inline double qeph_step_length(const double lx[4], const double ly[4], double area) {
+// Element step length of QEPH and QBAT (1.10), in the pieces a vectorised kernel needs around its square
+// roots (shell_section.hpp, sqrt_in_place): the squares of r1 = |g1| and r2 = |g2|, then the argument of the
+// last root from r1 and r2, L = A / sqrt(arg).
+// The constants of the argument: a vectorised kernel passes them through opaque() (material_point.hpp),
+// since GCC would turn min/max against a literal into a branch and keep the loop scalar.
+struct StepConstants {
+  double tiny30 = 1e-30, tiny60 = 1e-60;  // floors of the divisors and of arg
+  double half = 0.5, zero = 0.0;
+};
+
+inline void qeph_step_axes_sq(const double lx[4], const double ly[4], double& r1_sq, double& r2_sq) {
   const double g1x = (lx[1] - lx[0]) + (lx[2] - lx[3]), g1y = (ly[1] - ly[0]) + (ly[2] - ly[3]);
   const double g2x = (lx[2] - lx[1]) + (lx[3] - lx[0]), g2y = (ly[2] - ly[1]) + (ly[3] - ly[0]);
-  const double r1 = std::sqrt(g1x * g1x + g1y * g1y), r2 = std::sqrt(g2x * g2x + g2y * g2y);
-  const double rmin = std::max(std::min(r1, r2), 1e-30), rmax = std::max(r1, r2);
-  const double f1 = 1.0 + std::min(0.5, 0.25 * (rmax / rmin - 1.0));
-  const double s = 3.413 * std::max(0.0, 4.0 * area / std::max(r1 * r2, 1e-30) - 0.7071);
+  r1_sq = g1x * g1x + g1y * g1y;
+  r2_sq = g2x * g2x + g2y * g2y;
+}
+
+inline double qeph_step_arg(const double lx[4], const double ly[4], double area, double r1, double r2,
+                            const StepConstants& k = {}) {
+  const double rmin = std::max(std::min(r1, r2), k.tiny30), rmax = std::max(r1, r2);
+  const double f1 = 1.0 + std::min(k.half, 0.25 * (rmax / rmin - 1.0));
+  const double s = 3.413 * std::max(k.zero, 4.0 * area / std::max(r1 * r2, k.tiny30) - 0.7071);
   const double f2 = 0.78 + 0.22 * s * s * s;
   const double cx = 0.25 * (lx[0] + lx[1] + lx[2] + lx[3]), cy = 0.25 * (ly[0] + ly[1] + ly[2] + ly[3]);
   double px[4], py[4];
-  for (int k = 0; k < 4; ++k) px[k] = lx[k] - cx, py[k] = ly[k] - cy;
+  for (int n = 0; n < 4; ++n) px[n] = lx[n] - cx, py[n] = ly[n] - cy;
   const double c1 = px[0] * py[2] - py[0] * px[2], c2 = px[1] * py[3] - py[1] * px[3];
   const double hs = std::max(std::abs(c1), std::abs(c2)) / area;
   const double d13 = (lx[2] - lx[0]) * (lx[2] - lx[0]) + (ly[2] - ly[0]) * (ly[2] - ly[0]);
   const double d24 = (lx[3] - lx[1]) * (lx[3] - lx[1]) + (ly[3] - ly[1]) * (ly[3] - ly[1]);
   const double dd = 0.25 * std::max(d13, d24);  // D^2
-  return area / std::sqrt(std::max(2.0 * f1 * f2 * (1.25 + hs) * dd, 1e-60));
+  return std::max(2.0 * f1 * f2 * (1.25 + hs) * dd, k.tiny60);
+}
+
+// The step length L of one element from its local node coordinates and area.
+inline double qeph_step_length(const double lx[4], const double ly[4], double area) {
+  double r1_sq = 0, r2_sq = 0;
+  qeph_step_axes_sq(lx, ly, r1_sq, r2_sq);
+  return area / std::sqrt(qeph_step_arg(lx, ly, area, std::sqrt(r1_sq), std::sqrt(r2_sq)));
 }
 
 }  // namespace radx::solver::shell_detail
