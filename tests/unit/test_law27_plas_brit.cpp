@@ -110,9 +110,9 @@ TEST_CASE(
 
 TEST_CASE("law 27 yield consistency (Iplas 1 biaxial) and elastic unloading", "[material][law27]") {
   // Iplas 1: three Newton steps of LAW2's projection, with the hardening slope of the step's start, put the
-  // stress on sigma_y(eps_p new) = a + b eps_p^n (no cap). At first yield the slope n b eps_p^(n-1) of n = 0.63
-  // is unbounded and the first two plastic steps miss by up to 0.6 %; once eps_p > 3e-4 the slope changes
-  // little over a step and the residual is below 1e-5 of sigma_y (measured 4e-6 falling to 8e-8).
+  // stress on sigma_y(eps_p new) = a + b eps_p^n (no cap). At first yield the slope n b eps_p^(n-1) of n =
+  // 0.63 is unbounded and the first two plastic steps miss by up to 0.6 %; once eps_p > 3e-4 the slope
+  // changes little over a step and the residual is below 1e-5 of sigma_y (measured 4e-6 falling to 8e-8).
   Material m = brit();
   m.sig_max0 = 0;  // no cap
   const MaterialParams p = make_material_params(m);
@@ -140,9 +140,9 @@ TEST_CASE("law 27 yield consistency (Iplas 1 biaxial) and elastic unloading", "[
 
 TEST_CASE("law 27 crack in uniaxial tension: opening damage, damaged stiffness and deletion by the formulas",
           "[material][law27]") {
-  // Elastic-brittle (a = 0 -> 1e20, no cap). EPS_t1 0.01, EPS_m1 0.02, d_max1 0.9, EPS_f1 0.0301 (not a multiple of
-  // the step, so that the summed strain is not compared with it at round-off). Uniaxial stress in x
-  // (de = (d, -nu d)) until the crack opens: at the first step with eps_xx >= 0.01 the crack takes
+  // Elastic-brittle (a = 0 -> 1e20, no cap). EPS_t1 0.01, EPS_m1 0.02, d_max1 0.9, EPS_f1 0.0301 (not a
+  // multiple of the step, so that the summed strain is not compared with it at round-off). Uniaxial stress in
+  // x (de = (d, -nu d)) until the crack opens: at the first step with eps_xx >= 0.01 the crack takes
   // direction (1, 0) (no shear: the principal direction is x) and d0 = (eps - 0.01)/0.01; its stiffness acts
   // from the next step on. From then de = (d, 0): with the crack open there is no Poisson coupling, sigma_yy
   // stays 0, and the elastic strain e = sigma/((1 - d) E) grows by d each step:
