@@ -25,6 +25,7 @@ std::string law_name(model::MaterialLaw l) {
     case model::MaterialLaw::Elastic: return "LAW1 elastic";
     case model::MaterialLaw::JohnsonCook: return "LAW2 Johnson-Cook";
     case model::MaterialLaw::PlasTab: return "LAW36 tabulated plasticity";
+    case model::MaterialLaw::PlasBrit: return "LAW27 brittle elasto-plastic (shells)";
   }
   return "unknown law";
 }
@@ -287,6 +288,17 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
            << "  strain rate " << tab.rate[i] << '\n';
       if (tab.function_id.size() > 1 && tab.rate.front() != 0)
         os << "      (below the first rate the first curve holds: it is repeated at rate 0)\n";
+    }
+    if (mat.law == model::MaterialLaw::PlasBrit) {
+      const auto& b = mat.brit;
+      os << "    yield min((a + b eps_p^n) R, SIG_max0 (R if ICC 1)), R = 1 + c ln(rate/rate0): a " << mat.a
+         << "  b " << mat.b << "  n " << mat.n << "  SIG_max0 " << mat.sig_max0 << "  c " << mat.c
+         << "  rate0 " << mat.eps_dot_0 << "  ICC " << mat.icc << "  Fsmooth " << mat.fsmooth << "  Fcut "
+         << mat.f_cut << '\n'
+         << "    crack (direction 1): opens at EPS_t1 " << b.eps_t1
+         << ", damage (eps_1 - EPS_t1)/(EPS_m1 - EPS_t1)"
+         << " with EPS_m1 " << b.eps_m1 << ", at most d_max1 " << b.d_max1
+         << "; element deleted above EPS_f1 " << b.eps_f1 << '\n';
     }
     if (mat.fail_jc.on) {
       const auto& f = mat.fail_jc;

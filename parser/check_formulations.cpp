@@ -239,6 +239,43 @@ void ModelBuilder::check_formulations() {
            "bricks");
     }
   }
+  check_shell_only_laws();
+}
+
+// /MAT/PLAS_BRIT (law 27) is a shell law with integration points (OpenRadioss: SHELL_ISOTROPIC only, and
+// cm27in3.F refuses N = 0): refused on bricks and tetrahedra, and with a shell property of N = 0 (radx would
+// run LAW2's three points; nothing to substitute, so there is no --allow-substitutions way out).
+void ModelBuilder::check_shell_only_laws() {
+  std::vector<std::uint8_t> solid_part(m_.parts.size(), 0), shell_part(m_.parts.size(), 0);
+  for (const auto* b : {&m_.bricks, &m_.tetras})
+    for (const auto p : b->part)
+      if (p >= 0 && static_cast<std::size_t>(p) < solid_part.size())
+        solid_part[static_cast<std::size_t>(p)] = 1;
+  for (const auto* b : {&m_.shells, &m_.shells3})
+    for (const auto p : b->part)
+      if (p >= 0 && static_cast<std::size_t>(p) < shell_part.size())
+        shell_part[static_cast<std::size_t>(p)] = 1;
+  for (std::size_t p = 0; p < m_.parts.size(); ++p) {
+    const auto& part = m_.parts[p];
+    if (part.material < 0 || part.property < 0) continue;
+    const auto& mat = m_.materials[static_cast<std::size_t>(part.material)];
+    if (mat.law != model::MaterialLaw::PlasBrit) continue;
+    const auto& prop = m_.properties[static_cast<std::size_t>(part.property)];
+    for (const auto& rec : deck_.records) {
+      const auto path = rec.decl->path;
+      if (solid_part[p] && path == "/MAT/LAW27" && rec.id == mat.id)
+        diags_.error(
+            Diag::PhysicsNotImplemented, at(rec.pos), about(rec),
+            mat.keyword + " " + std::to_string(mat.id) + " is used by part " + std::to_string(part.id) +
+                ", whose elements are bricks or tetrahedra: law 27 is a shell law (its crack lives in "
+                "the shell plane); use it on 3- and 4-node shells only");
+      if (shell_part[p] && path == "/PROP/SHELL" && rec.id == prop.id && prop.shell.n_ip == 0)
+        error_at(rec, "N", Diag::PhysicsNotImplemented,
+                 "N = 0 (global plasticity) with " + mat.keyword + " " + std::to_string(mat.id) +
+                     " in part " + std::to_string(part.id) +
+                     ": law 27 cracks each integration point through the thickness and needs N = 1 to 10");
+    }
+  }
 }
 
 }  // namespace radx::detail

@@ -616,6 +616,59 @@ void add_plas_tab_and_failure(std::vector<KeywordDecl>& t) {
   }
 }
 
+// /MAT/PLAS_BRIT (law 27): Johnson-Cook plasticity of shells with a tension crack (OpenRadioss
+// hm_read_mat27.F; layouts of the radioss100 and radioss2019 cfg files).
+void add_plas_brit(std::vector<KeywordDecl>& t) {
+  KeywordDecl k =
+      kw("/MAT/LAW27", "brittle elasto-plastic material for shells: Johnson-Cook with a tension crack",
+         Header::IdUnit, true, "mat_ID");
+  k.aliases = {"/MAT/PLAS_BRIT"};
+  k.cards = {
+      card("card 1", {R("RHO_I", 1, 20, "initial density").must().gt(0.0).dims(dim::density),
+                      R("RHO_ref", 21, 40, "reference density; 0 takes RHO_I").dims(dim::density)}),
+      card("card 2", {R("E", 1, 20, "Young's modulus").must().gt(0.0).dims(dim::pressure),
+                      R("nu", 21, 40, "Poisson's ratio")}),
+      card("card 3", {R("a", 1, 20, "initial yield stress; 0 = 1e20 (no yield)")
+                          .zero_is(1e20)
+                          .gt(0.0)
+                          .dims(dim::pressure),
+                      R("b", 21, 40, "hardening modulus").dims(dim::pressure),
+                      R("n", 41, 60, "hardening exponent").zero_is(1.0).gt(0.0).le(1.0),
+                      R("SIG_max0", 81, 100, "cap on the flow stress").zero_is(1e20).dims(dim::pressure)}),
+      card(
+          "card 4",
+          {R("c", 1, 20, "strain-rate coefficient; 0 = no rate effect"),
+           R("EPS_DOT_0", 21, 40, "reference strain rate (needed when c is not 0)").dims(dim::rate),
+           I("ICC", 41, 50, "1: the rate term also scales SIG_max0; 2: it does not")
+               .zero_is(1)
+               .allow({0, 1, 2}),
+           I("Fsmooth", 51, 60, "strain rate: 0 the point's strain increment, 1 the element's rate, filtered")
+               .versions(2019)
+               .allow({0, 1}),
+           R("Fcut", 61, 80, "cut-off frequency of the strain-rate filter; not 0 sets Fsmooth 1")
+               .versions(2019)
+               .ge(0.0)
+               .dims(dim::rate)}),
+      card("card 5",
+           {R("EPS_t1", 1, 20, "principal tensile strain at which the crack opens; 0 = never")
+                .zero_is(1e20)
+                .gt(0.0),
+            R("EPS_m1", 21, 40, "tensile strain at which the damage reaches 1 (slope of the damage)")
+                .zero_is(1.1e20)
+                .gt(0.0),
+            R("d_max1", 41, 60, "largest damage, below 1; 0 = 0.999").zero_is(0.999).ge(0.0).lt(1.0),
+            R("EPS_f1", 61, 80, "principal tensile strain at which the element is deleted; 0 = never")
+                .zero_is(1.2e22)
+                .gt(0.0)}),
+      card("card 6",
+           {R("EPS_t2", 1, 20, "direction 2: read, never used (OpenRadioss opens only direction 1)").unused(),
+            R("EPS_m2", 21, 40, "direction 2: read, never used").unused(),
+            R("d_max2", 41, 60, "direction 2: read, never used").unused(),
+            R("EPS_f2", 61, 80, "direction 2: read, never used").unused()}),
+  };
+  t.push_back(std::move(k));
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // Groups and surfaces
 void add_groups(std::vector<KeywordDecl>& t) {
@@ -1851,6 +1904,7 @@ const std::vector<KeywordDecl>& starter_keywords() {
     add_assembly(t);
     add_properties_and_materials(t);
     add_plas_tab_and_failure(t);
+    add_plas_brit(t);
     add_groups(t);
     add_contact(t);
     add_loads(t);
@@ -1869,11 +1923,11 @@ const std::vector<std::string_view>& known_unsupported_roots() {
     return std::vector<std::string_view>{
         // materials
         "/MAT/LAW0", "/MAT/VOID", "/MAT/LAW3", "/MAT/HYDPLA", "/MAT/LAW4", "/MAT/HYD_JCOOK", "/MAT/LAW6",
-        "/MAT/HYDRO", "/MAT/LAW10", "/MAT/LAW19", "/MAT/FABRI", "/MAT/LAW25", "/MAT/COMPSH", "/MAT/LAW27",
-        "/MAT/PLAS_BRIT", "/MAT/LAW32", "/MAT/HILL", "/MAT/LAW34", "/MAT/BOLTZMAN", "/MAT/LAW42",
-        "/MAT/OGDEN", "/MAT/LAW44", "/MAT/COWPER", "/MAT/LAW57", "/MAT/BARLAT3", "/MAT/LAW58", "/MAT/LAW62",
-        "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW70", "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90",
-        "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO", "/MAT/USER",
+        "/MAT/HYDRO", "/MAT/LAW10", "/MAT/LAW19", "/MAT/FABRI", "/MAT/LAW25", "/MAT/COMPSH", "/MAT/LAW32",
+        "/MAT/HILL", "/MAT/LAW34", "/MAT/BOLTZMAN", "/MAT/LAW42", "/MAT/OGDEN", "/MAT/LAW44", "/MAT/COWPER",
+        "/MAT/LAW57", "/MAT/BARLAT3", "/MAT/LAW58", "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69",
+        "/MAT/LAW70", "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90", "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO",
+        "/MAT/USER",
         // properties
         "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE2", "/PROP/TRUSS", "/PROP/TYPE3", "/PROP/BEAM", "/PROP/TYPE8",
         "/PROP/SPR_GENE", "/PROP/SPR_BEAM", "/PROP/TYPE9", "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP",

@@ -145,13 +145,16 @@ void ModelBuilder::build_materials() {
     const bool law1 = path == "/MAT/LAW1";
     const bool law2 = path == "/MAT/LAW2";
     const bool law36 = path == "/MAT/LAW36";
-    if (!law1 && !law2 && !law36) continue;
+    const bool law27 = path == "/MAT/LAW27";
+    if (!law1 && !law2 && !law36 && !law27) continue;
     model::Material mat;
     mat.id = r.id;
     mat.title = r.title;
     mat.keyword = r.written.substr(0, r.written.find_last_of('/'));
-    mat.law = law1 ? model::MaterialLaw::Elastic
-                   : (law2 ? model::MaterialLaw::JohnsonCook : model::MaterialLaw::PlasTab);
+    mat.law = law1    ? model::MaterialLaw::Elastic
+              : law2  ? model::MaterialLaw::JohnsonCook
+              : law27 ? model::MaterialLaw::PlasBrit
+                      : model::MaterialLaw::PlasTab;
     mat.rho = r.get_real("RHO_I");
     mat.rho_ref = r.get_real("RHO_ref");
     if (mat.rho_ref == 0) mat.rho_ref = mat.rho;
@@ -264,6 +267,7 @@ void ModelBuilder::build_materials() {
       if (mat.t_max == 0) mat.t_max = 1e20;
     }
     if (law36) read_plas_tab(r, mat);
+    if (law27) read_plas_brit(r, mat);
     if (register_id(mat_ids_, mat.id, static_cast<std::int32_t>(m_.materials.size()), r, "material", first))
       m_.materials.push_back(std::move(mat));
   }
@@ -308,6 +312,42 @@ void ModelBuilder::read_plas_tab(const KeywordRecord& r, model::Material& mat) {
   } else if (mat.f_cut == 0) {
     mat.f_cut = 1e4 * deck_.work_units.time;  // 10 kHz in work units (one work time unit is `time` s)
   }
+}
+
+// /MAT/PLAS_BRIT (law 27), read as OpenRadioss hm_read_mat27.F does: a 0 = 1e20 (no yield), n 0 = 1, SIG_max0
+// 0 = 1e20, c 0 sets EPS_DOT_0 to 1, ICC 0 = 1, Fcut not 0 turns Fsmooth 0 into 1; the crack fields' zero
+// defaults are the fields' rules (keywords_starter.cpp). Direction 2 is read and kept, never used (m27crak.F
+// opens only direction 1).
+void ModelBuilder::read_plas_brit(const KeywordRecord& r, model::Material& mat) {
+  mat.a = r.get_real("a");
+  mat.b = r.get_real("b");
+  mat.n = r.get_real("n");
+  mat.sig_max0 = r.get_real("SIG_max0");
+  mat.c = r.get_real("c");
+  mat.eps_dot_0 = r.get_real("EPS_DOT_0");
+  if (mat.c != 0 && mat.eps_dot_0 <= 0)
+    error_at(r, "EPS_DOT_0", Diag::RequiredValueMissing,
+             "strain-rate coefficient c = " + num(mat.c) +
+                 " needs a reference strain rate EPS_DOT_0 > 0 (it is " + num(mat.eps_dot_0) + ")");
+  if (mat.c == 0) mat.eps_dot_0 = 1.0;
+  mat.icc = static_cast<int>(r.get_int("ICC"));
+  mat.fsmooth = static_cast<int>(r.get_int("Fsmooth"));
+  mat.f_cut = r.get_real("Fcut");
+  if (mat.fsmooth == 0 && mat.f_cut != 0) mat.fsmooth = 1;
+  auto& b = mat.brit;
+  b.eps_t1 = r.get_real("EPS_t1");
+  b.eps_m1 = r.get_real("EPS_m1");
+  b.d_max1 = r.get_real("d_max1");
+  b.eps_f1 = r.get_real("EPS_f1");
+  b.eps_t2 = r.get_real("EPS_t2");
+  b.eps_m2 = r.get_real("EPS_m2");
+  b.d_max2 = r.get_real("d_max2");
+  b.eps_f2 = r.get_real("EPS_f2");
+  // The damage is (eps_1 - EPS_t1) / (EPS_m1 - EPS_t1): it needs EPS_m1 above EPS_t1 (hm_read_mat27.F, 208).
+  if (!(b.eps_m1 > b.eps_t1))
+    error_at(r, "EPS_m1", Diag::InconsistentValues,
+             "EPS_m1 = " + num(b.eps_m1) + " must be above EPS_t1 = " + num(b.eps_t1) +
+                 ": the damage grows from 0 at EPS_t1 to 1 at EPS_m1 (0 in both leaves the crack off)");
 }
 
 void ModelBuilder::resolve_plas_tab_functions() {

@@ -47,9 +47,10 @@ class ModelBuilder {
   // -- steps
   void build_nodes();
   void build_materials();
-  void read_plas_tab(const KeywordRecord& r, model::Material& mat);  // /MAT/PLAS_TAB's cards
-  void build_failure_models();                                       // /FAIL/JOHNSON, after the materials
-  void resolve_plas_tab_functions();                                 // after the functions
+  void read_plas_tab(const KeywordRecord& r, model::Material& mat);   // /MAT/PLAS_TAB's cards
+  void read_plas_brit(const KeywordRecord& r, model::Material& mat);  // /MAT/PLAS_BRIT's cards
+  void build_failure_models();                                        // /FAIL/JOHNSON, after the materials
+  void resolve_plas_tab_functions();                                  // after the functions
   void build_properties();
   void build_subsets_and_parts();
   void build_elements();
@@ -76,7 +77,8 @@ class ModelBuilder {
   void compute_masses();
   void warn_massless_accelerometers();
   void check_unused_nodes();
-  void check_formulations();  // check_formulations.cpp
+  void check_formulations();     // check_formulations.cpp
+  void check_shell_only_laws();  // check_formulations.cpp: law 27 on shells with points only
   // The transform stage (build_transforms.cpp): submodel transforms right after the elements, node-group
   // transforms after the groups, /MOVE_FUNCT after the functions.
   void transform_submodels();

@@ -183,6 +183,17 @@ def mat_law2(v):
     return [c1, card(c2), card(reals("a", "b", "n", "EPS_p_max", "SIG_max0")), card(c4), card(c5)]
 
 
+def mat_law27(v):
+    """/MAT/PLAS_BRIT: Fsmooth and Fcut from the 2019 layout; columns 61-80 of the yield card are blank."""
+    c4 = [F("c", "R", 1, 20), F("EPS_DOT_0", "R", 21, 40), F("ICC", "I", 41, 50)]
+    if v >= 2019:
+        c4 += [F("Fsmooth", "I", 51, 60), F("Fcut", "R", 61, 80)]
+    return [card(reals("RHO_I", "RHO_ref")), card(reals("E", "nu")),
+            card([F("a", "R", 1, 20), F("b", "R", 21, 40), F("n", "R", 41, 60), F("SIG_max0", "R", 81, 100)]),
+            card(c4), card(reals("EPS_t1", "EPS_m1", "d_max1", "EPS_f1")),
+            card(reals("EPS_t2", "EPS_m2", "d_max2", "EPS_f2"))]
+
+
 def mat_law36(v):
     """/MAT/PLAS_TAB: VP at 91-100 from 2017, Fct_IDE, EInf, CE from 120; then the N_funct function ids (10
     columns), scale factors and strain rates (20 columns), 5 a line, as many lines as N_funct needs."""
@@ -557,6 +568,8 @@ STARTER = {
     "/MAT/LAW02": ("id", True, mat_law2, None, None),
     "/MAT/LAW36": ("id", True, mat_law36, None, None),
     "/MAT/PLAS_TAB": ("id", True, mat_law36, None, None),
+    "/MAT/LAW27": ("id", True, mat_law27, None, None),
+    "/MAT/PLAS_BRIT": ("id", True, mat_law27, None, None),
     "/FAIL/JOHNSON": ("id", False, fail_johnson, None, None),
     "/GRNOD/NODE": ("id", True, lambda v: [], "ids", ID_REC),
     "/GRNOD/PART": ("id", True, lambda v: [], "ids", ID_REC),
@@ -1209,7 +1222,7 @@ def semantic(ck, m):
     props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14", "/PROP/SPRING", "/PROP/TYPE4"),
                   "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02",
-                  "/MAT/LAW36", "/MAT/PLAS_TAB"), "material")
+                  "/MAT/LAW36", "/MAT/PLAS_TAB", "/MAT/LAW27", "/MAT/PLAS_BRIT"), "material")
     grnods = by_id(tuple(k for k in STARTER if k.startswith("/GRNOD/")), "node group")
     surfs = by_id(tuple(k for k in STARTER if k.startswith("/SURF/")), "surface")
 
@@ -1479,6 +1492,22 @@ def semantic(ck, m):
         for name in bad:
             p = pos(o, name)
             I("RX510", p[0], p[1], "%s %d: %s not implemented by radx" % (o["path"], o["id"], name))
+
+    # law 27 is a shell law with integration points (check_formulations.cpp check_shell_only_laws): refused on
+    # bricks and tetrahedra (at the material's keyword line) and with a shell property of N = 0
+    for pid, kinds in part_kind.items():
+        if pid not in parts:
+            continue
+        mat = mats.get(val(parts[pid], "mat_ID"))
+        prop = props.get(val(parts[pid], "prop_ID"))
+        if mat is None or prop is None or mat["path"] not in ("/MAT/LAW27", "/MAT/PLAS_BRIT"):
+            continue
+        if "/BRICK" in kinds or "/TETRA4" in kinds:
+            I("RX510", mat["pos"][0], mat["pos"][1], "law 27 on solids (part %d)" % pid)
+        if ("/SHELL" in kinds or "/SH3N" in kinds) and prop["path"] in ("/PROP/SHELL", "/PROP/TYPE1") \
+                and val(prop, "N", 0) == 0:
+            p = pos(prop, "N")
+            I("RX510", p[0], p[1], "law 27 with N = 0 (part %d)" % pid)
     # fields read but not implemented whose non-zero value changes the physics (keywords_starter.cpp)
     for o in props.values():
         if o["path"] in ("/PROP/SOLID", "/PROP/TYPE14"):
@@ -1520,6 +1549,25 @@ def semantic(ck, m):
             if val(o, "a", 0.0) <= 0:
                 p = pos(o, "a")
                 I("RX502", p[0], p[1], "JC a must be > 0")
+        if o["path"] in ("/MAT/LAW27", "/MAT/PLAS_BRIT"):
+            # the fields' rules (0 takes the default first), then model_builder.cpp read_plas_brit
+            for name, lo, hi, hi_open in (("n", 0.0, 1.0, False), ("d_max1", 0.0, 1.0, True)):
+                x = val(o, name, 0.0)
+                if x != 0 and (x < lo or x > hi or (hi_open and x == hi) or (name == "n" and x <= 0)):
+                    p = pos(o, name)
+                    I("RX501", p[0], p[1], "%s %d: %s = %g out of range" % (o["path"], o["id"], name, x))
+            for name in ("a", "EPS_t1", "EPS_m1", "EPS_f1"):
+                if val(o, name, 0.0) < 0:
+                    p = pos(o, name)
+                    I("RX501", p[0], p[1], "%s %d: %s must be > 0" % (o["path"], o["id"], name))
+            if val(o, "c", 0.0) != 0 and val(o, "EPS_DOT_0", 0.0) <= 0:
+                p = pos(o, "EPS_DOT_0")
+                I("RX502", p[0], p[1], "c needs EPS_DOT_0")
+            eps_t = val(o, "EPS_t1", 0.0) or 1e20
+            eps_m = val(o, "EPS_m1", 0.0) or 1.1e20
+            if not eps_m > eps_t:
+                p = pos(o, "EPS_m1")
+                I("RX507", p[0], p[1], "%s %d: EPS_m1 <= EPS_t1" % (o["path"], o["id"]))
 
     # groups
     subsets = by_id(("/SUBSET",), "subset")

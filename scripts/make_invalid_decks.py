@@ -652,6 +652,46 @@ def _():
     return d, "/MAT/PLAS_TAB/3 VP = 1 (plastic strain rate, not implemented)", [("RX510", "TAB.VP")]
 
 
+def plas_brit(mid=3, **kw):
+    """/MAT/PLAS_BRIT (tag PB; the LOI27 QA aluminium with a crack at 14 %); no part uses it unless a fault says."""
+    values = dict(RHO_I=2.8e-9, E=71000.0, nu=0.33, a=290.0, b=562.3, n=0.63, SIG_max0=425.0, EPS_t1=0.14,
+                  EPS_m1=0.15, d_max1=0.999, EPS_f1=0.151, fill=0)
+    values.update(kw)
+    return block("PB", "/MAT/PLAS_BRIT", mid, "Aluminium (brittle)", **values)
+
+
+@fault("plas_brit_no_damage_slope")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", plas_brit(EPS_t1=0.15, EPS_m1=0.14))
+    return d, "/MAT/PLAS_BRIT/3 EPS_m1 = 0.14 below EPS_t1 = 0.15 (the damage needs EPS_m1 > EPS_t1)", \
+        [("RX507", "PB.EPS_m1")]
+
+
+@fault("plas_brit_damage_one")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", plas_brit(d_max1=1.0))
+    return d, "/MAT/PLAS_BRIT/3 d_max1 = 1 (the largest damage must be below 1)", [("RX501", "PB.d_max1")]
+
+
+@fault("plas_brit_on_brick")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", plas_brit())
+    d.update("PART2", mat_ID=3)
+    return d, "/MAT/PLAS_BRIT/3 on the brick part 2 (law 27 is a shell law)", [("RX510", "PB_KW")]
+
+
+@fault("plas_brit_global_plasticity")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", plas_brit())
+    d.update("PART1", mat_ID=3)
+    d.update("PSH", N=0)
+    return d, "/MAT/PLAS_BRIT/3 on shells of N = 0 (law 27 needs integration points)", [("RX510", "PSH.N")]
+
+
 @fault("fail_johnson_on_elastic")
 def _():
     d = base()

@@ -232,6 +232,13 @@ LAYOUTS = {
         *[Card(*[(i if base == "fct_ID" else r)("%s%d" % (base, 5 * j + c + 1)) for c in range(5)],
                when=lambda v, j=j: _int(v.get("N_funct")) > 5 * j)
           for base in ("fct_ID", "Fscale", "Eps_dot") for j in range(4)]),
+    "/MAT/PLAS_BRIT": Layout(
+        Card(r("RHO_I"), r("RHO_ref")),
+        Card(r("E"), r("nu")),
+        Card(r("a"), r("b"), r("n"), gap(20), r("SIG_max0")),
+        Card(r("c"), r("EPS_DOT_0"), i("ICC"), i("Fsmooth", since=2019), r("Fcut", since=2019)),
+        Card(r("EPS_t1"), r("EPS_m1"), r("d_max1"), r("EPS_f1")),
+        Card(r("EPS_t2"), r("EPS_m2"), r("d_max2"), r("EPS_f2"))),
     "/FAIL/JOHNSON": Layout(
         Card(r("D1"), r("D2"), r("D3"), r("D4"), r("D5")),
         Card(r("Epsilon_Dot_0"), i("Ifail_sh"), i("Ifail_so"), r("EPSF_MIN", since=2024), r("Dadv", col=61, since=130),

@@ -1,5 +1,7 @@
 #include "solver/element_groups.hpp"
 
+#include <algorithm>
+
 namespace radx::solver {
 
 void ShellGroup::allocate(int n, int points, int gauss_points, int hg_rows) {
@@ -22,6 +24,14 @@ void ShellGroup::allocate(int n, int points, int gauss_points, int hg_rows) {
   dmg.assign(ng * np * G, 0.0);
   hg.assign(static_cast<std::size_t>(hg_rows) * G, 0.0);
   nodal_force.assign(4 * 6 * G, 0.0);
+}
+
+void ShellGroup::allocate_brit() {
+  const auto G = static_cast<std::size_t>(kGroupSize);
+  const auto rows = static_cast<std::size_t>(gauss) * static_cast<std::size_t>(std::max(props.n_points, 1));
+  brit.assign(rows * kBritVars * G, 0.0);
+  for (std::size_t r = 0; r < rows; ++r)
+    std::fill_n(brit.begin() + static_cast<std::ptrdiff_t>((r * kBritVars + kBritCos) * G), G, 1.0);
 }
 
 void BrickGroup::allocate(int n) {

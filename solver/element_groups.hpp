@@ -56,6 +56,7 @@ struct ShellGroup {
   std::vector<double> sig;         // [gauss][n_points][5][G]  sxx syy sxy syz szx, local frame
   std::vector<double> eps_p;       // [gauss][n_points][G]
   std::vector<double> dmg;         // [gauss][n_points][G] /FAIL/JOHNSON damage (0 .. 1; 1: the point failed)
+  std::vector<double> brit;        // law 27 only: [gauss][n_points][kBritVars][G] crack state (allocate_brit)
   std::vector<double> hg;          // [3][G] elastic hourglass resultants Sx Sy Sz (Ishell 1);
                                    // QEPH: [4][6][G] stabilisation resultants at the 4 Gauss points
                                    // (shell_qeph.cpp)
@@ -75,6 +76,7 @@ struct ShellGroup {
   // n elements, `points` through the thickness (0: resultants), `gauss_points` in the plane, `hg_rows` rows
   // of hourglass state.
   void allocate(int n, int points, int gauss_points = 1, int hg_rows = 3);
+  void allocate_brit();  // law 27's crack state, after allocate: no strain, crack frame (1, 0), no damage
 };
 
 struct BrickGroup {

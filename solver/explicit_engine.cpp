@@ -146,6 +146,7 @@ void ExplicitEngine::build_groups() {
       const int gauss = kernel == ShellKernel::Qbat ? 4 : 1;
       const int hg_rows = kernel == ShellKernel::Qeph ? 24 : 3;
       g.allocate(static_cast<int>(end - k), points, gauss, hg_rows);
+      if (m.materials[mat].law == model::MaterialLaw::PlasBrit) g.allocate_brit();
       g.kernel = kernel;
       g.triangle = triangle;
       g.part = part;

@@ -106,6 +106,60 @@ inline double vm_work(double sxx, double syy, double sxy) {
   return std::sqrt(sxx * sxx + syy * syy - sxx * syy + 3.0 * sxy * sxy);
 }
 
+// LAW2's plastic correction (6.3) of a plane-stress trial for a known strain-rate factor: the one
+// implementation behind the shells of law 2 and law 27. Returns d_eps_p; eps_p is updated.
+double jc_return_core(const MaterialParams& p, int iplas, const JcRate& jr, double off, double& sxx,
+                      double& syy, double& sxy, double& eps_p, double& dezz_p) {
+  double deps_p = 0;
+  dezz_p = 0;
+  const double sy = jc_flow_stress_at(p, eps_p, jr, nullptr);
+  if (iplas != 1) {
+    const double svm = plane_stress_vm(sxx, syy, sxy);
+    if (svm > sy) {
+      const double scale = sy / svm;
+      sxx *= scale;
+      syy *= scale;
+      sxy *= scale;
+      deps_p = off * (svm - sy) / p.young;
+      dezz_p = deps_p * 0.5 * (sxx + syy) / std::max(sy, kTiny);
+    }
+  } else if (off == 1.0) {
+    const double s1 = sxx + syy;
+    const double s2 = sxx - syy;
+    const double a = 0.25 * s1 * s1;
+    const double b = 0.75 * s2 * s2 + 3.0 * sxy * sxy;
+    const double svm = std::sqrt(a + b);
+    if (svm > sy) {
+      const double h = sy >= jr.cap ? 0.0 : p.n * p.b * jr.r * std::pow(eps_p + kShellSlopeEps, p.n - 1.0);
+      const double nu1 = 1.0 / (1.0 - p.nu);
+      const double nu2 = 1.0 / (1.0 + p.nu);
+      double next = (svm - sy) / (3.0 * p.shear + h);
+      double dp = 0, r = 0, pp = 1, qq = 1;
+      for (int it = 0; it < 3; ++it) {
+        dp = next;
+        const double sy_i = std::max(jc_flow_stress_at(p, eps_p + dp, jr, nullptr), kTiny);
+        r = 0.5 * p.young * dp / sy_i;
+        pp = 1.0 / (1.0 + r * nu1);
+        qq = 1.0 / (1.0 + 3.0 * r * nu2);
+        const double f = a * pp * pp + b * qq * qq - sy_i * sy_i;
+        const double df =
+            -(a * nu1 * pp * pp * pp + 3.0 * b * nu2 * qq * qq * qq) * (p.young - 2.0 * r * h) / sy_i -
+            2.0 * h * sy_i;
+        next = dp > 0 ? std::max(0.0, dp - f / df) : 0.0;
+      }
+      const double t1 = pp * s1;
+      const double t2 = qq * s2;
+      sxx = 0.5 * (t1 + t2);
+      syy = 0.5 * (t1 - t2);
+      sxy *= qq;
+      deps_p = dp;
+      dezz_p = r * t1 / p.young;
+    }
+  }
+  eps_p += deps_p;
+  return deps_p;
+}
+
 // The shell point update (1.4, 1.8, 6.3) for a known strain-rate factor: the one implementation behind
 // shell_point_update, shell_point_update_r and (for the points that may yield) the shell kernels.
 ShellPointResult shell_point_core(const MaterialParams& p, int iplas, const JcRate& jr, double off,
@@ -116,51 +170,7 @@ ShellPointResult shell_point_core(const MaterialParams& p, int iplas, const JcRa
   ShellPointResult out;
   double dezz_p = 0;  // plastic in-plane trace term of 1.8
   if (p.law == model::MaterialLaw::JohnsonCook) {
-    const double sy = jc_flow_stress_at(p, eps_p, jr, nullptr);
-    if (iplas != 1) {
-      const double svm = plane_stress_vm(sxx, syy, sxy);
-      if (svm > sy) {
-        const double scale = sy / svm;
-        sxx *= scale;
-        syy *= scale;
-        sxy *= scale;
-        out.deps_p = off * (svm - sy) / p.young;
-        dezz_p = out.deps_p * 0.5 * (sxx + syy) / std::max(sy, kTiny);
-      }
-    } else if (off == 1.0) {
-      const double s1 = sxx + syy;
-      const double s2 = sxx - syy;
-      const double a = 0.25 * s1 * s1;
-      const double b = 0.75 * s2 * s2 + 3.0 * sxy * sxy;
-      const double svm = std::sqrt(a + b);
-      if (svm > sy) {
-        const double h = sy >= jr.cap ? 0.0 : p.n * p.b * jr.r * std::pow(eps_p + kShellSlopeEps, p.n - 1.0);
-        const double nu1 = 1.0 / (1.0 - p.nu);
-        const double nu2 = 1.0 / (1.0 + p.nu);
-        double next = (svm - sy) / (3.0 * p.shear + h);
-        double dp = 0, r = 0, pp = 1, qq = 1;
-        for (int it = 0; it < 3; ++it) {
-          dp = next;
-          const double sy_i = std::max(jc_flow_stress_at(p, eps_p + dp, jr, nullptr), kTiny);
-          r = 0.5 * p.young * dp / sy_i;
-          pp = 1.0 / (1.0 + r * nu1);
-          qq = 1.0 / (1.0 + 3.0 * r * nu2);
-          const double f = a * pp * pp + b * qq * qq - sy_i * sy_i;
-          const double df =
-              -(a * nu1 * pp * pp * pp + 3.0 * b * nu2 * qq * qq * qq) * (p.young - 2.0 * r * h) / sy_i -
-              2.0 * h * sy_i;
-          next = dp > 0 ? std::max(0.0, dp - f / df) : 0.0;
-        }
-        const double t1 = pp * s1;
-        const double t2 = qq * s2;
-        sxx = 0.5 * (t1 + t2);
-        syy = 0.5 * (t1 - t2);
-        sxy *= qq;
-        out.deps_p = dp;
-        dezz_p = r * t1 / p.young;
-      }
-    }
-    eps_p += out.deps_p;
+    out.deps_p = jc_return_core(p, iplas, jr, off, sxx, syy, sxy, eps_p, dezz_p);
     if (out.deps_p > 0)
       out.w_plastic = 0.5 * (vm_work(sig[0], sig[1], sig[2]) + vm_work(sxx, syy, sxy)) * out.deps_p;
   }
@@ -202,6 +212,23 @@ MaterialParams make_material_params(const model::Material& m) {
     p.eps_p_max = m.eps_p_max == 0 ? 1e20 : m.eps_p_max;
     p.f_cut = m.f_cut;
   }
+  if (m.law == model::MaterialLaw::PlasBrit) {
+    // hm_read_mat27.F's defaults, applied again for a Material built by hand.
+    p.a = m.a == 0 ? 1e20 : m.a;
+    p.b = m.b;
+    p.n = m.n == 0 ? 1.0 : m.n;
+    p.c = m.c;
+    p.eps_dot0 = (m.c == 0 || m.eps_dot_0 <= 0) ? 1.0 : m.eps_dot_0;
+    p.sig_max0 = m.sig_max0 == 0 ? 1e20 : m.sig_max0;
+    p.icc = m.icc == 0 ? 1 : m.icc;
+    p.f_cut = m.f_cut;
+    const auto& b = m.brit;
+    p.brit.eps_t = b.eps_t1 == 0 ? 1e20 : b.eps_t1;
+    p.brit.eps_m = b.eps_m1 == 0 ? 1.1e20 : b.eps_m1;
+    p.brit.d_max = b.d_max1 == 0 ? 0.999 : b.d_max1;
+    p.brit.eps_f = b.eps_f1 == 0 ? 1.2e22 : b.eps_f1;
+    p.brit.point_rate = m.fsmooth == 0 && m.f_cut == 0;
+  }
   if (m.fail_jc.on) {
     const auto& f = m.fail_jc;
     p.fail.on = true;
@@ -218,6 +245,13 @@ MaterialParams make_material_params(const model::Material& m) {
   return p;
 }
 
+namespace detail {
+double jc_shell_return(const MaterialParams& p, int iplas, double rfac, double off, double& sxx, double& syy,
+                       double& sxy, double& eps_p, double& dezz_p) {
+  return jc_return_core(p, iplas, jc_rate_of_factor(p, rfac), off, sxx, syy, sxy, eps_p, dezz_p);
+}
+}  // namespace detail
+
 MaterialParams make_material_params(const model::Material& m, const std::vector<model::Function>& functions,
                                     std::vector<TabCurve>& curves) {
   MaterialParams p = make_material_params(m);
@@ -233,7 +267,8 @@ double jc_rate_factor(const MaterialParams& p, double rate) {
   switch (p.law) {
     case model::MaterialLaw::JohnsonCook: return rate_factor(p, rate);
     case model::MaterialLaw::PlasTab: return p.n_curves > 1 ? rate : 1.0;
-    case model::MaterialLaw::Elastic: break;
+    case model::MaterialLaw::Elastic:
+    case model::MaterialLaw::PlasBrit: break;  // law 27 takes its rate term per point (law27_plas_brit.cpp)
   }
   return 1.0;
 }
@@ -243,7 +278,8 @@ double shell_rate_threshold(const MaterialParams& p) {
   switch (p.law) {
     case model::MaterialLaw::JohnsonCook: return p.c != 0 ? p.eps_dot0 : kInf;
     case model::MaterialLaw::PlasTab: return p.n_curves > 1 ? -kInf : kInf;
-    case model::MaterialLaw::Elastic: break;
+    case model::MaterialLaw::Elastic:
+    case model::MaterialLaw::PlasBrit: break;
   }
   return kInf;
 }

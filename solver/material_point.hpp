@@ -48,6 +48,19 @@ struct FailJcParams {
   int ifail_sh = 1, ifail_so = 1;
 };
 
+// /MAT/PLAS_BRIT's crack (law27_plas_brit.cpp): direction 1 only (OpenRadioss m27crak.F opens no other).
+struct BritParams {
+  double eps_t = 1e20, eps_m = 1.1e20, d_max = 0.999, eps_f = 1.2e22;
+  bool point_rate = true;  // Fsmooth 0: the rate term takes the point's largest strain increment, else the
+                           // element's filtered rate
+};
+
+// Law 27's state at one shell point, kBritVars rows of the group's `brit` buffer: the total in-plane strain
+// exx eyy gxy (element frame, engineering shear), the crack frame's direction 1 (cos, sin in the element
+// frame; (1, 0) until the crack opens), the damage of direction 1 and its crack strain.
+inline constexpr int kBritVars = 7;
+enum BritVar : int { kBritExx = 0, kBritEyy, kBritGxy, kBritCos, kBritSin, kBritDamage, kBritCrack };
+
 // Parameters as the kernels use them (work units), derived once per material.
 struct MaterialParams {
   model::MaterialLaw law = model::MaterialLaw::Elastic;
@@ -71,6 +84,7 @@ struct MaterialParams {
   double tab_rate_max = 0;
   bool tab_bound = false;  // tab_lower is a valid bound (every curve's last segment rises or is flat)
   FailJcParams fail;
+  BritParams brit;  // law 27; its flow stress is law 2's (a, b, n, c, eps_dot0, sig_max0, icc above)
 };
 
 // Factor of the strain-rate filter (elements.md 6.1 shells, 6.2 solids): rate <- alpha e + (1 - alpha) rate,
@@ -108,6 +122,7 @@ struct ShellPointResult {
   double deps_p = 0;     // plastic strain increment
   double dezz = 0;       // thickness strain increment (for the thickness output)
   double w_plastic = 0;  // plastic work per unit volume 1/2 (svm_old + svm_new) deps_p (elements.md 6.5)
+  bool fails = false;    // law 27: the point's principal strain passed EPS_f1, the element is deleted
 };
 ShellPointResult shell_point_update(const MaterialParams& p, int iplas, double rate, double off,
                                     const double de[5], double gs, double sig[5], double& eps_p);
@@ -175,6 +190,10 @@ struct ShellYieldBound {
 };
 inline ShellYieldBound shell_yield_bound(const MaterialParams& p) {
   ShellYieldBound b;
+  if (p.law == model::MaterialLaw::PlasBrit) {  // damaged stiffness: every point takes the exact update
+    b.jc = true;
+    return b;
+  }
   if (p.law == model::MaterialLaw::PlasTab) {
     b.jc = true;
     b.usable = p.tab_bound && !p.fail.on;
@@ -255,6 +274,16 @@ ShellPointResult shell_point_update_fail(const MaterialParams& p, int iplas, dou
 
 // Internal pieces of the law files, for law_point_updates.cpp's dispatch (not for the kernels).
 namespace detail {
+// LAW2's plastic correction of a plane-stress trial (sxx, syy, sxy) in place, for the rate factor rfac
+// (law_point_updates.cpp): radial return (Iplas 0) or the Newton projection (Iplas 1, off = 1 only).
+// eps_p is updated; returns d_eps_p, and dezz_p receives the plastic trace term of 1.8.
+double jc_shell_return(const MaterialParams& p, int iplas, double rfac, double off, double& sxx, double& syy,
+                       double& sxy, double& eps_p, double& dezz_p);
+// Law 27 shell point (law27_plas_brit.cpp). rate: the element's filtered strain rate; dt1: the step of the
+// increments; st: the point's state, row k at st[k * stride] (BritVar).
+ShellPointResult law27_shell_point(const MaterialParams& p, int iplas, double rate, double dt1, double off,
+                                   const double de[5], double gs, double sig[5], double& eps_p, double* st,
+                                   std::size_t stride);
 // Law 36 shell point (law36_plas_tab.cpp); rate = the element's filtered strain rate.
 ShellPointResult law36_shell_point(const MaterialParams& p, int iplas, double rate, double off,
                                    const double de[5], double gs, double sig[5], double& eps_p);

@@ -86,6 +86,7 @@ void shell_c0_tri3_forces(ShellGroup& g, const NodeState& nodes, const MaterialP
 
   Tri3Block bk;
   SectionBlock<kBlock>& sec = bk.sec;
+  sec.dt1 = dt1;  // law 27's rate term
   for (int i0 = 0; i0 < g.count; i0 += kBlock) {
     const int len = std::min(kBlock, g.count - i0);
 

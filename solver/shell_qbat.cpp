@@ -90,6 +90,7 @@ void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
 
   QbatBlock bk;
   SectionBlock<kBlock>& sec = bk.sec;
+  sec.dt1 = dt1;  // law 27's rate term
   for (int i0 = 0; i0 < g.count; i0 += kBlock) {
     const int len = std::min(kBlock, g.count - i0);
     gather_block<true>(g.conn.data(), G, static_cast<std::size_t>(i0), static_cast<std::size_t>(len), nodes,
@@ -142,7 +143,8 @@ void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
       }
       const auto gpz = static_cast<std::size_t>(gp);
       section_update_block(g, i0, len, mat, rule, gs, sec, g.sig.data() + gpz * sig_rows * G,
-                           g.eps_p.data() + gpz * eps_rows * G, g.dmg.data() + gpz * eps_rows * G);
+                           g.eps_p.data() + gpz * eps_rows * G, g.dmg.data() + gpz * eps_rows * G,
+                           g.brit.empty() ? nullptr : g.brit.data() + gpz * eps_rows * kBritVars * G);
       for (int j = 0; j < len; ++j) {
         for (int q = 0; q < 5; ++q)
           bk.for_old[gp][q][j] = sec.for_old[q][j], bk.for_new[gp][q][j] = sec.for_new[q][j];

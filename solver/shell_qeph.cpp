@@ -169,6 +169,7 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
 
   QephBlock bk;
   SectionBlock<kBlock>& sec = bk.sec;
+  sec.dt1 = dt1;  // law 27's rate term
   for (int i0 = 0; i0 < g.count; i0 += kBlock) {
     const int len = std::min(kBlock, g.count - i0);
     gather_block<true>(g.conn.data(), G, static_cast<std::size_t>(i0), static_cast<std::size_t>(len), nodes,

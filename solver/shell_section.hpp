@@ -27,6 +27,8 @@
 //        a failed point carries no stress; the element is deleted at once (OFF 0) when the weight sum of its
 //        failed points reaches 1e-6 (Ifail_sh 1) or min(P_thickfail, 1 - 1e-6) (Ifail_sh 2).
 //   6.5  plastic work: dW = 1/2 (svm_old + svm_new) deps_p w_i t A.
+//   Law 27 (law27_plas_brit.cpp): every point takes the exact update with its crack state; the element is
+//        deleted at once (OFF 0) when one of its points' largest principal strain passes EPS_f1.
 #pragma once
 
 #include <algorithm>
@@ -121,15 +123,17 @@ struct SectionBlock {
   double t[B];       // mechanics thickness
   double area[B];    // current area
   double rfac[B];    // strain-rate term of the element rate (jc_rate_factor: R for law 2, the rate for 36)
-  double rate[B];    // the element's filtered strain rate (the /FAIL/JOHNSON D4 term)
+  double rate[B];    // the element's filtered strain rate (the /FAIL/JOHNSON D4 term, law 27's rate term)
+  double dt1 = 0;    // the step of the increments (law 27's rate term)
   double off[B];     // element factor at the start of the cycle; <= 0: deleted, its state is left alone
   // Results.
   double for_old[5][B], for_new[5][B];
   double mom_old[3][B], mom_new[3][B];
-  double dthick[B];     // thickness increment before the OFF factor (1.8)
-  double w_plastic[B];  // plastic work increment (6.5)
-  double eps_p_max[B];  // largest plastic strain over the points after the update
-  double fail_now[B];   // 1: /FAIL/JOHNSON deletes the element in this cycle (next_off)
+  double dthick[B];      // thickness increment before the OFF factor (1.8)
+  double w_plastic[B];   // plastic work increment (6.5)
+  double eps_p_max[B];   // largest plastic strain over the points after the update
+  double fail_now[B];    // 1: /FAIL/JOHNSON deletes the element in this cycle (next_off)
+  double crack_fail[B];  // 1: a law-27 point passed EPS_f1 in this cycle
   // Scratch of the points that take the exact update (shell_point_update_r).
   double old[2][5][B];                                // their stress before the update (points of the pass)
   std::int64_t exact[2][B];                           // 1: that point of element j takes it
@@ -228,19 +232,20 @@ std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParam
 // Section update of the block: N = 0 resultant elasticity, or the N points (1.4) with the material update
 // (6.3), thickness strain (1.8), plastic work (6.5) and the largest eps_p (6.4).
 //
-// sig_rows, eps_rows, dmg_rows: the first rows of the state this section updates, laid out as
-// ShellGroup::sig,
-// ::eps_p and ::dmg ([points][5][G] or [8][G], [points][G], [points][G]); the group's own rows by default.
-// QBAT keeps one such state per in-plane Gauss point and passes each in turn.
+// sig_rows, eps_rows, dmg_rows, brit_rows: the first rows of the state this section updates, laid out as
+// ShellGroup::sig, ::eps_p, ::dmg and ::brit ([points][5][G] or [8][G], [points][G], [points][G],
+// [points][kBritVars][G]); the group's own rows by default. QBAT keeps one such state per in-plane Gauss
+// point and passes each in turn.
 template <int B>
 void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& mat,
                           const ThicknessRule& rule, double gs, SectionBlock<B>& s,
-                          double* sig_rows = nullptr, double* eps_rows = nullptr,
-                          double* dmg_rows = nullptr) {
+                          double* sig_rows = nullptr, double* eps_rows = nullptr, double* dmg_rows = nullptr,
+                          double* brit_rows = nullptr) {
   constexpr std::size_t G = kGroupSize;
   double* const sig_base = sig_rows != nullptr ? sig_rows : g.sig.data();
   double* const eps_base = eps_rows != nullptr ? eps_rows : g.eps_p.data();
   double* const dmg_base = dmg_rows != nullptr ? dmg_rows : g.dmg.data();
+  double* const brit_base = brit_rows != nullptr ? brit_rows : g.brit.data();
   if (rule.n == 0) {
     // Resultant elasticity (LAW1, N = 0).
     double* r = sig_base + i0;
@@ -280,6 +285,9 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
   const int iplas = g.props.iplas;
   const ShellYieldBound yb = shell_yield_bound(mat);
   const bool fail = mat.fail.on;
+  const bool brit = mat.law == model::MaterialLaw::PlasBrit;
+  if (brit)
+    for (int j = 0; j < len; ++j) s.crack_fail[j] = 0;
   double* sig = sig_base + i0;
   double* eps_p = eps_base + i0;
   bool any_redo = false;
@@ -308,11 +316,16 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
         const double de[5] = {s.dem[0][j] + z * s.dk[0][j], s.dem[1][j] + z * s.dk[1][j],
                               s.dem[2][j] + z * s.dk[2][j], s.dem[3][j], s.dem[4][j]};
         double sg[5] = {s.old[q][0][j], s.old[q][1][j], s.old[q][2][j], s.old[q][3][j], s.old[q][4][j]};
+        const std::size_t pj = static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j);
         const ShellPointResult r =
-            fail ? shell_point_update_fail(
-                       mat, iplas, s.rfac[j], s.rate[j], s.off[j], de, gs, sg, ep[j],
-                       dmg_base[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)])
-                 : shell_point_update_r(mat, iplas, s.rfac[j], s.off[j], de, gs, sg, ep[j]);
+            brit   ? detail::law27_shell_point(mat, iplas, s.rate[j], s.dt1, s.off[j], de, gs, sg, ep[j],
+                                               brit_base + static_cast<std::size_t>(p) * kBritVars * G +
+                                                   static_cast<std::size_t>(i0 + j),
+                                               G)
+            : fail ? shell_point_update_fail(mat, iplas, s.rfac[j], s.rate[j], s.off[j], de, gs, sg, ep[j],
+                                             dmg_base[pj])
+                   : shell_point_update_r(mat, iplas, s.rfac[j], s.off[j], de, gs, sg, ep[j]);
+        if (r.fails) s.crack_fail[j] = 1;
         for (int c = 0; c < 5; ++c) sp[c][j] = sg[c];
         s.point_exact[p][j] = 1;
         s.dezz_x[p][j] = r.dezz;
@@ -359,6 +372,8 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
   // kept within [1e-6, 1 - 1e-6]).
   for (int j = 0; j < len; ++j) s.fail_now[j] = 0;
   const bool tab_limit = mat.law == model::MaterialLaw::PlasTab && mat.eps_p_max < 1e20;
+  if (brit)
+    for (int j = 0; j < len; ++j) s.fail_now[j] = s.off[j] == 1.0 ? s.crack_fail[j] : 0.0;
   if (fail || tab_limit) {
     const double pt = std::clamp(std::abs(g.props.p_thick_fail), 1e-6, 1.0 - 1e-6);
     const double limit = mat.fail.ifail_sh == 2 ? pt : 1e-6;

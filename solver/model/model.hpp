@@ -57,7 +57,12 @@ struct ElementBlock {
   [[nodiscard]] int npe() const { return nodes_per_element(type); }
 };
 
-enum class MaterialLaw : std::uint8_t { Elastic = 1, JohnsonCook = 2, PlasTab = 36 };
+enum class MaterialLaw : std::uint8_t {
+  Elastic = 1,
+  JohnsonCook = 2,
+  PlasTab = 36,
+  PlasBrit = 27,  // /MAT/PLAS_BRIT (shells only)
+};
 
 // /MAT/PLAS_TAB (law 36): yield curves sigma_y(eps_p) per strain rate, as given in the deck (the engine adds
 // the rate-0 curve OpenRadioss inserts when the first rate is not 0). Parallel vectors, one entry a curve.
@@ -83,6 +88,14 @@ struct FailJohnson {
   int ifail_so = 1;  // 1: brick deleted; 2: deviator zero; 3: deviator zero, no tension; 4: stress zero
 };
 
+// /MAT/PLAS_BRIT (law 27): the tension crack of each shell point, by direction 1 and 2 of the crack frame.
+// Defaults as OpenRadioss hm_read_mat27.F sets them for a blank or 0 field. The Johnson-Cook part (a, b, n,
+// sig_max0, c, eps_dot_0, icc, fsmooth, f_cut) is kept in Material's law-2 fields.
+struct PlasBrit {
+  double eps_t1 = 1e20, eps_m1 = 1.1e20, d_max1 = 0.999, eps_f1 = 1.2e22;  // crack starts, full, cap, delete
+  double eps_t2 = 1e20, eps_m2 = 1.1e20, d_max2 = 0.999, eps_f2 = 1.2e22;
+};
+
 struct Material {
   std::int64_t id = 0;
   std::string title;
@@ -99,6 +112,7 @@ struct Material {
   // Tabulated plasticity (law 36); eps_p_max and f_cut above are shared with law 2.
   PlasTab tab;
   FailJohnson fail_jc;
+  PlasBrit brit;  // law 27's crack model
 };
 
 enum class PropertyKind : std::uint8_t { Shell = 1, Solid = 14, Spring = 4 };
