@@ -138,6 +138,13 @@ void ModelBuilder::build_tied_interfaces() {
                             : "the secondary node group is empty or could not be built");
       continue;
     }
+    // A segment naming a node that does not exist has already been reported where the surface was read; the
+    // starter goes on to collect further errors, so this interface is not projected.
+    const auto n_nodes = static_cast<std::int64_t>(X.x.size());
+    const bool nodes_known = std::all_of(segs.begin(), segs.end(), [&](const auto& sg) {
+      return std::all_of(sg.begin(), sg.end(), [&](std::int32_t n) { return n >= 0 && n < n_nodes; });
+    });
+    if (!nodes_known) continue;
     // Automatic distance: sqrt of the mean squared edge length (i2buc1.F, Ignore < 2).
     double sum2 = 0;
     std::vector<std::array<double, 6>> box(segs.size());
