@@ -95,70 +95,20 @@ inline void mode_sums(double a1, double a2, double a3, double a4, double a5, dou
   r[3][d] = s + t;
 }
 
-inline void cross(const double a[3], const double b[3], double c[3]) {
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-// a / |a|, left as is when |a| = 0 (a degenerate direction then gives a zero axis, as the reference does).
-inline void normalise(double a[3]) {
-  const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  if (n != 0.0) {
-    const double r = 1.0 / n;
-    a[0] *= r;
-    a[1] *= r;
-    a[2] *= r;
-  }
-}
-
 }  // namespace
 
 void brick_corotational_frame(const double x[8][3], bool heph_order, double R[3][3]) {
-  double u[3], v[3], w[3];
-  for (int d = 0; d < 3; ++d) {
-    const double d17 = x[6][d] - x[0][d], d28 = x[7][d] - x[1][d];
-    const double d35 = x[4][d] - x[2][d], d46 = x[5][d] - x[3][d];
-    u[d] = d17 + d28 - d35 - d46;  // r: eta
-    v[d] = d17 + d28 + d35 + d46;  // s: zeta
-    w[d] = d17 - d28 - d35 + d46;  // t: xi
+  // A block of one: the formulas are written once, in solid_stages.hpp, for HEPH's blocks.
+  double px[8][1], py[8][1], pz[8][1];
+  for (int k = 0; k < 8; ++k) {
+    px[k][0] = x[k][0];
+    py[k][0] = x[k][1];
+    pz[k][0] = x[k][2];
   }
-  normalise(u);
-  normalise(v);
-  normalise(w);
-  // Symmetric orthogonalisation: each axis moves toward the cross product of the other two, so none of the
-  // three directions is privileged (three passes, as the reference).
-  for (int it = 0; it < 3; ++it) {
-    double a[3], b[3], c[3];
-    cross(v, w, a);
-    cross(w, u, b);
-    cross(u, v, c);
-    for (int d = 0; d < 3; ++d) {
-      a[d] += u[d];
-      b[d] += v[d];
-      c[d] += w[d];
-    }
-    normalise(a);
-    normalise(b);
-    normalise(c);
-    for (int d = 0; d < 3; ++d) {
-      u[d] = a[d];
-      v[d] = b[d];
-      w[d] = c[d];
-    }
-  }
-  double e3[3], e2[3];
-  cross(u, v, e3);
-  normalise(e3);
-  cross(e3, u, e2);
-  const double* cols[3] = {u, e2, e3};
-  if (heph_order) {
-    cols[0] = e3;
-    cols[1] = u;
-    cols[2] = e2;
-  }
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) R[r][c] = cols[c][r];
+  BrickFrameBlock<1> f;
+  brick_corotational_frame_block<1>(px, py, pz, 1, heph_order, f);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) R[r][c] = f.R[r][c][0];
 }
 
 namespace {
