@@ -57,8 +57,8 @@
 // element (the law is a call); bulk viscosity, energy, step; hourglass stresses; forces; state updates.
 // Square roots are taken in passes of their own (sqrt_in_place: std::sqrt may set errno, which keeps GCC
 // from vectorising a loop). Elements deleted at entry or with a bad volume go through the arithmetic with
-// every state update masked (pick) and get their zero forces at the end. The arithmetic is that of the
-// element-by-element version, operation for operation, so the results are the same to the bit.
+// every state update masked (pick) and get their zero forces at the end. The mode sums and the nodal forces
+// are the one-point brick's (brick_mode_sums, brick_nodal_forces: the same quantities, fewer operations).
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -76,11 +76,10 @@ namespace {
 
 constexpr int kBlock = 32;  // elements per block: the scratch (about 50 KB) stays in the core's caches
 
-// The four hourglass modes in the reference's order (see the opening comment).
-constexpr double kMode[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
-                                {1, -1, -1, 1, -1, 1, 1, -1},
-                                {1, -1, 1, -1, 1, -1, 1, -1},
-                                {-1, 1, -1, 1, 1, -1, 1, -1}};
+// The four hourglass modes in the reference's order (opening comment) are the one-point brick's vectors
+// (brick_mode_sums) h2, h3, h1 and -h4: mode m is kFbSign[m] h_{kFbMode[m]}.
+constexpr int kFbMode[4] = {1, 2, 0, 3};
+constexpr double kFbSign[4] = {1.0, 1.0, 1.0, -1.0};
 
 constexpr double kSvmCoef = 324.0;  // (3 x 8 x 0.75)^2 (szsvm.F)
 
@@ -143,7 +142,7 @@ struct HephBlock {
   NodeBlock<8, kBlock> nb;     // gathered positions and velocities, global axes
   BrickFrameBlock<kBlock> fr;  // frame R
   double b[4][3][kBlock];      // gradients b1 .. b4 (b5 .. b8 = -b3, -b4, -b1, -b2)
-  double hx[4][3][kBlock];     // mode sums of the local coordinates
+  double hx[4][3][kBlock];     // mode sums of the local coordinates on h1 .. h4 (brick_mode_sums)
   double q[3][4][kBlock];      // hourglass rates q(d, j)
   double D[6][kBlock];         // co-rotational strain rate
   double J[3][kBlock];         // J1 J2 J3
@@ -254,26 +253,22 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
       brick_velocity_gradient(v, b, L);
       corotational_strain_rate(L, dt1, D);
 
-      // Hourglass: mode sums of the local coordinates and the rates q(d, j).
-      double hx[4][3], q[3][4];
-#pragma GCC unroll 4
-      for (int m = 0; m < 4; ++m)
+      // Hourglass: mode sums of the local coordinates and velocities on the vectors h_j, and the rates
+      // q(d, m) = (m_m . v'_d - L'_d . (m_m . x')) / 8 of the reference's modes.
+      double hx[4][3], hv[4][3], q[3][4];
 #pragma GCC unroll 3
-        for (int d = 0; d < 3; ++d) {
-          double sx = 0.0, sv = 0.0;
-#pragma GCC unroll 8
-          for (int k = 0; k < 8; ++k) {
-            sx += kMode[m][k] * x[k][d];
-            sv += kMode[m][k] * v[k][d];
-          }
-          hx[m][d] = sx;
-          q[d][m] = sv;  // completed below
-        }
+      for (int d = 0; d < 3; ++d) {
+        brick_mode_sums(x[0][d], x[1][d], x[2][d], x[3][d], x[4][d], x[5][d], x[6][d], x[7][d], hx, d);
+        brick_mode_sums(v[0][d], v[1][d], v[2][d], v[3][d], v[4][d], v[5][d], v[6][d], v[7][d], hv, d);
+      }
 #pragma GCC unroll 3
       for (int d = 0; d < 3; ++d)
 #pragma GCC unroll 4
-        for (int m = 0; m < 4; ++m)
-          q[d][m] = (q[d][m] - (L[d][0] * hx[m][0] + L[d][1] * hx[m][1] + L[d][2] * hx[m][2])) / 8.0;
+        for (int m = 0; m < 4; ++m) {
+          const int h = kFbMode[m];
+          q[d][m] =
+              kFbSign[m] * (hv[h][d] - (L[d][0] * hx[h][0] + L[d][1] * hx[h][1] + L[d][2] * hx[h][2])) / 8.0;
+        }
 
       const double rho = solid_density(rho0, vol0[i], vol);
       bk.vol[j] = vol;
@@ -461,55 +456,37 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
       bk.de_hg[j] = 0.5 * dt1 * (bk.p_old[j] + p_new);
     }
 
-    // Nodal forces in the frame: stress part -V (sigma - q I) b_k, hourglass part -sum_j gamma_jk N(d, j),
-    // gamma_jk = (m_jk - b_k . hx_j) / 8; back to global axes, times the factor (zero for the others, below).
-    // b_{5,6,7,8} = -b_{3,4,1,2} exactly, so the products with b are formed for nodes 1-4 and negated for
-    // their opposites: the same values as node by node, half the work.
+    // Nodal forces: stress part -V (sigma - q I) b_k, hourglass part -sum_m gamma_mk N(:, m) with
+    // gamma_mk = (m_mk - b_k . (m_m . x')) / 8 = kFbSign[m] G_jk / 8 (j = kFbMode[m]), i.e. the one-point
+    // brick's forces with H_j = kFbSign[m] N(:, m) / 8; in the frame, then back to global axes, times the
+    // factor (zero for the others, below).
     RADX_IVDEP
     for (int j = 0; j < len; ++j) {
       const std::size_t i = ib + static_cast<std::size_t>(j);
-      const double vol = bk.vol[j], q_new = bk.q_new[j];
-      const double sg[3][3] = {{bk.sn[0][j] - q_new, bk.sn[3][j], bk.sn[5][j]},
-                               {bk.sn[3][j], bk.sn[1][j] - q_new, bk.sn[4][j]},
-                               {bk.sn[5][j], bk.sn[4][j], bk.sn[2][j] - q_new}};
-      double b[4][3], hx[4][3], N[3][4], R[3][3];
+      double sn[6], b[8][3], hx[4][3], hg[4][3], R[3][3], f[8][3];
+#pragma GCC unroll 6
+      for (int m = 0; m < 6; ++m) sn[m] = bk.sn[m][j];
 #pragma GCC unroll 3
       for (int d = 0; d < 3; ++d) {
 #pragma GCC unroll 4
         for (int k = 0; k < 4; ++k) b[k][d] = bk.b[k][d][j];
+        b[4][d] = -b[2][d], b[5][d] = -b[3][d], b[6][d] = -b[0][d], b[7][d] = -b[1][d];
 #pragma GCC unroll 4
-        for (int m = 0; m < 4; ++m) hx[m][d] = bk.hx[m][d][j], N[d][m] = bk.N[d][m][j];
+        for (int m = 0; m < 4; ++m) {
+          hx[m][d] = bk.hx[m][d][j];
+          hg[kFbMode[m]][d] = kFbSign[m] * bk.N[d][m][j] * 0.125;
+        }
 #pragma GCC unroll 3
         for (int a = 0; a < 3; ++a) R[d][a] = bk.fr.R[d][a][j];
       }
+      brick_nodal_forces(sn, bk.q_new[j], bk.vol[j], hg, hx, b, f);
+      brick_from_frame(R, f);
       const double scale = bk.off_new[j];
-      constexpr int kOpposite[4] = {6, 7, 4, 5};  // b7 = -b1, b8 = -b2, b5 = -b3, b6 = -b4
-#pragma GCC unroll 4
-      for (int k = 0; k < 4; ++k) {
-        double bh[4], sb[3];
-#pragma GCC unroll 4
-        for (int m = 0; m < 4; ++m) bh[m] = b[k][0] * hx[m][0] + b[k][1] * hx[m][1] + b[k][2] * hx[m][2];
+#pragma GCC unroll 8
+      for (int k = 0; k < 8; ++k)
 #pragma GCC unroll 3
-        for (int a = 0; a < 3; ++a)
-          sb[a] = -vol * (sg[a][0] * b[k][0] + sg[a][1] * b[k][1] + sg[a][2] * b[k][2]);
-#pragma GCC unroll 2
-        for (int side = 0; side < 2; ++side) {
-          const int node = side == 0 ? k : kOpposite[k];
-          double gam[4], f[3];
-#pragma GCC unroll 4
-          for (int m = 0; m < 4; ++m)
-            gam[m] = (side == 0 ? kMode[m][node] - bh[m] : kMode[m][node] + bh[m]) * 0.125;
-#pragma GCC unroll 3
-          for (int a = 0; a < 3; ++a)
-            f[a] = (side == 0 ? sb[a] : -sb[a]) -
-                   (gam[0] * N[a][0] + gam[1] * N[a][1] + gam[2] * N[a][2] + gam[3] * N[a][3]);
-#pragma GCC unroll 3
-          for (int r = 0; r < 3; ++r) {
-            const double fr = R[r][0] * f[0] + R[r][1] * f[1] + R[r][2] * f[2];
-            force[(static_cast<std::size_t>(node) * 3 + static_cast<std::size_t>(r)) * G + i] = scale * fr;
-          }
-        }
-      }
+        for (int r = 0; r < 3; ++r)
+          force[(static_cast<std::size_t>(k) * 3 + static_cast<std::size_t>(r)) * G + i] = scale * f[k][r];
     }
 
     // Hourglass stresses, frame, energies, step and nodal stiffness of the live elements; no force from the

@@ -86,6 +86,60 @@ inline void brick_velocity_gradient(const double v[8][3], const double b[8][3], 
   }
 }
 
+// Mode sums r[j][d] = sum_k h_jk a_k of the one-point brick's hourglass vectors (elements.md 3.4), h1 =
+// (1,-1,1,-1,1,-1,1,-1), h2 = (1,1,-1,-1,-1,-1,1,1), h3 = (1,-1,-1,1,-1,1,1,-1), h4 = (1,-1,1,-1,-1,1,-1,1),
+// pairwise: with p = a1 - a4 - a6 + a7, m = a2 - a3 - a5 + a8, s = a1 - a2 - a5 + a6, t = a3 - a4 - a7 + a8:
+// h1 = p - m, h2 = p + m, h3 = s - t, h4 = s + t.
+inline void brick_mode_sums(double a1, double a2, double a3, double a4, double a5, double a6, double a7,
+                            double a8, double r[4][3], int d) {
+  const double p = a1 - a4 - a6 + a7, m = a2 - a3 - a5 + a8;
+  const double s = a1 - a2 - a5 + a6, t = a3 - a4 - a7 + a8;
+  r[0][d] = p - m;
+  r[1][d] = p + m;
+  r[2][d] = s - t;
+  r[3][d] = s + t;
+}
+
+// Nodal forces f[k] (ADDED to node k) of a one-point brick with stress sn (xx yy zz xy yz zx), bulk
+// viscosity q and hourglass forces H_j = hg[j] on the vectors h_j of brick_mode_sums, with
+// G_jk = h_jk - hx_j . b_k (elements.md 3.1, 3.4): stress part -V (sigma - q I) b_k, hourglass part
+//   -sum_j G_jk H_j = -sum_j h_jk H_j + M b_k with M = sum_j H_j (x) hx_j,
+// so f_k = -T b_k - sum_j h_jk H_j with T = V (sigma - q I) - M, and b_{5..8} = -b_{3,4,1,2}: the same
+// quantities as node by node, fewer operations. hx_j = 0 gives the plain vector h_j.
+inline void brick_nodal_forces(const double sn[6], double q, double vol, const double hg[4][3],
+                               const double hx[4][3], const double b[8][3], double f[8][3]) {
+  double T[3][3];
+  const double sg[3][3] = {{sn[0] - q, sn[3], sn[5]}, {sn[3], sn[1] - q, sn[4]}, {sn[5], sn[4], sn[2] - q}};
+#pragma GCC unroll 8
+  for (int a = 0; a < 3; ++a)
+#pragma GCC unroll 8
+    for (int e = 0; e < 3; ++e)
+      T[a][e] = vol * sg[a][e] -
+                (hg[0][a] * hx[0][e] + hg[1][a] * hx[1][e] + hg[2][a] * hx[2][e] + hg[3][a] * hx[3][e]);
+#pragma GCC unroll 8
+  for (int k = 0; k < 4; ++k) {
+    const int o = (k < 2) ? k + 6 : k + 2;
+#pragma GCC unroll 8
+    for (int a = 0; a < 3; ++a) {
+      const double tb = T[a][0] * b[k][0] + T[a][1] * b[k][1] + T[a][2] * b[k][2];
+      f[k][a] = -tb;
+      f[o][a] = tb;
+    }
+  }
+#pragma GCC unroll 8
+  for (int a = 0; a < 3; ++a) {
+    const double h1 = hg[0][a], h2 = hg[1][a], h3 = hg[2][a], h4 = hg[3][a];
+    f[0][a] -= h1 + h2 + h3 + h4;
+    f[1][a] -= -h1 + h2 - h3 - h4;
+    f[2][a] -= h1 - h2 - h3 + h4;
+    f[3][a] -= -h1 - h2 + h3 - h4;
+    f[4][a] -= h1 - h2 - h3 - h4;
+    f[5][a] -= -h1 - h2 + h3 + h4;
+    f[6][a] -= h1 + h2 + h3 - h4;
+    f[7][a] -= -h1 + h2 - h3 + h4;
+  }
+}
+
 // /DT/BRICK/CST small strain (elements.md 3.1, hex8_fb.cpp): freeze the brick's node coordinates in x_ref the
 // first cycle after the switch (dt_fixed > 0), then take x from them every cycle (velocities stay current).
 inline void brick_small_strain_geometry(BrickGroup& g, std::size_t i, double x[8][3]) {
@@ -116,6 +170,16 @@ inline void brick_into_frame(const double R[3][3], double x[8][3], double v[8][3
       x[k][c] = xl[c];
       v[k][c] = vl[c];
     }
+  }
+}
+
+// Nodal forces of a brick from its element frame back to global axes (elements.md 3.6): f = R f'.
+inline void brick_from_frame(const double R[3][3], double f[8][3]) {
+#pragma GCC unroll 8
+  for (int k = 0; k < 8; ++k) {
+    const double a = f[k][0], b = f[k][1], c = f[k][2];
+#pragma GCC unroll 3
+    for (int r = 0; r < 3; ++r) f[k][r] = R[r][0] * a + R[r][1] * b + R[r][2] * c;
   }
 }
 
