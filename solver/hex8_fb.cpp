@@ -80,85 +80,18 @@
 
 namespace radx::solver {
 
-namespace {
-
-// Mode sums r[j][d] = sum_k h_jk a_k for the four mode vectors (pairwise, as the mode table):
-// with p = a1 - a4 - a6 + a7, m = a2 - a3 - a5 + a8, s = a1 - a2 - a5 + a6, t = a3 - a4 - a7 + a8:
-// h1 = p - m, h2 = p + m, h3 = s - t, h4 = s + t.
-inline void mode_sums(double a1, double a2, double a3, double a4, double a5, double a6, double a7, double a8,
-                      double r[4][3], int d) {
-  const double p = a1 - a4 - a6 + a7, m = a2 - a3 - a5 + a8;
-  const double s = a1 - a2 - a5 + a6, t = a3 - a4 - a7 + a8;
-  r[0][d] = p - m;
-  r[1][d] = p + m;
-  r[2][d] = s - t;
-  r[3][d] = s + t;
-}
-
-inline void cross(const double a[3], const double b[3], double c[3]) {
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-// a / |a|, left as is when |a| = 0 (a degenerate direction then gives a zero axis, as the reference does).
-inline void normalise(double a[3]) {
-  const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  if (n != 0.0) {
-    const double r = 1.0 / n;
-    a[0] *= r;
-    a[1] *= r;
-    a[2] *= r;
-  }
-}
-
-}  // namespace
-
 void brick_corotational_frame(const double x[8][3], bool heph_order, double R[3][3]) {
-  double u[3], v[3], w[3];
-  for (int d = 0; d < 3; ++d) {
-    const double d17 = x[6][d] - x[0][d], d28 = x[7][d] - x[1][d];
-    const double d35 = x[4][d] - x[2][d], d46 = x[5][d] - x[3][d];
-    u[d] = d17 + d28 - d35 - d46;  // r: eta
-    v[d] = d17 + d28 + d35 + d46;  // s: zeta
-    w[d] = d17 - d28 - d35 + d46;  // t: xi
+  // A block of one: the formulas are written once, in solid_stages.hpp, for HEPH's blocks.
+  double px[8][1], py[8][1], pz[8][1];
+  for (int k = 0; k < 8; ++k) {
+    px[k][0] = x[k][0];
+    py[k][0] = x[k][1];
+    pz[k][0] = x[k][2];
   }
-  normalise(u);
-  normalise(v);
-  normalise(w);
-  // Symmetric orthogonalisation: each axis moves toward the cross product of the other two, so none of the
-  // three directions is privileged (three passes, as the reference).
-  for (int it = 0; it < 3; ++it) {
-    double a[3], b[3], c[3];
-    cross(v, w, a);
-    cross(w, u, b);
-    cross(u, v, c);
-    for (int d = 0; d < 3; ++d) {
-      a[d] += u[d];
-      b[d] += v[d];
-      c[d] += w[d];
-    }
-    normalise(a);
-    normalise(b);
-    normalise(c);
-    for (int d = 0; d < 3; ++d) {
-      u[d] = a[d];
-      v[d] = b[d];
-      w[d] = c[d];
-    }
-  }
-  double e3[3], e2[3];
-  cross(u, v, e3);
-  normalise(e3);
-  cross(e3, u, e2);
-  const double* cols[3] = {u, e2, e3};
-  if (heph_order) {
-    cols[0] = e3;
-    cols[1] = u;
-    cols[2] = e2;
-  }
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) R[r][c] = cols[c][r];
+  BrickFrameBlock<1> f;
+  brick_corotational_frame_block<1>(px, py, pz, 1, heph_order, f);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) R[r][c] = f.R[r][c][0];
 }
 
 namespace {
@@ -269,8 +202,8 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
     double hx[4][3], hv[4][3];
 #pragma GCC unroll 8
     for (int d = 0; d < 3; ++d) {
-      mode_sums(x[0][d], x[1][d], x[2][d], x[3][d], x[4][d], x[5][d], x[6][d], x[7][d], hx, d);
-      mode_sums(v[0][d], v[1][d], v[2][d], v[3][d], v[4][d], v[5][d], v[6][d], v[7][d], hv, d);
+      brick_mode_sums(x[0][d], x[1][d], x[2][d], x[3][d], x[4][d], x[5][d], x[6][d], x[7][d], hx, d);
+      brick_mode_sums(v[0][d], v[1][d], v[2][d], v[3][d], v[4][d], v[5][d], v[6][d], v[7][d], hv, d);
     }
 #pragma GCC unroll 8
     for (int d = 0; d < 3; ++d) {
@@ -292,50 +225,13 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
         h_old = hg[j][d];
       }
 
-    // Nodal forces. Stress part f_k = -V (sigma - q I) b_k; hourglass part
-    //   -sum_j G_jk H_j = -sum_j h_jk H_j + M b_k with M = sum_j H_j (x) hx_j,
-    // so f_k = -T b_k - sum_j h_jk H_j with T = V (sigma - q I) - M, and b_{5..8} = -b_{3,4,1,2}.
-    double T[3][3];
-    {
-      const double sg[3][3] = {
-          {sn[0] - q_new, sn[3], sn[5]}, {sn[3], sn[1] - q_new, sn[4]}, {sn[5], sn[4], sn[2] - q_new}};
-#pragma GCC unroll 8
-      for (int a = 0; a < 3; ++a)
-#pragma GCC unroll 8
-        for (int e = 0; e < 3; ++e)
-          T[a][e] = vol * sg[a][e] -
-                    (hg[0][a] * hx[0][e] + hg[1][a] * hx[1][e] + hg[2][a] * hx[2][e] + hg[3][a] * hx[3][e]);
-    }
+    // Nodal forces: stress part -V (sigma - q I) b_k, hourglass part -sum_j G_jk H_j.
     double f[8][3];
-#pragma GCC unroll 8
-    for (int k = 0; k < 4; ++k) {
-      const int o = (k < 2) ? k + 6 : k + 2;
-#pragma GCC unroll 8
-      for (int a = 0; a < 3; ++a) {
-        const double tb = T[a][0] * b[k][0] + T[a][1] * b[k][1] + T[a][2] * b[k][2];
-        f[k][a] = -tb;
-        f[o][a] = tb;
-      }
-    }
-#pragma GCC unroll 8
-    for (int a = 0; a < 3; ++a) {
-      const double h1 = hg[0][a], h2 = hg[1][a], h3 = hg[2][a], h4 = hg[3][a];
-      f[0][a] -= h1 + h2 + h3 + h4;
-      f[1][a] -= -h1 + h2 - h3 - h4;
-      f[2][a] -= h1 - h2 - h3 + h4;
-      f[3][a] -= -h1 - h2 + h3 - h4;
-      f[4][a] -= h1 - h2 - h3 - h4;
-      f[5][a] -= -h1 - h2 + h3 + h4;
-      f[6][a] -= h1 + h2 + h3 - h4;
-      f[7][a] -= -h1 + h2 - h3 + h4;
-    }
+    brick_nodal_forces(sn, q_new, vol, hg, hx, b, f);
 
     // Co-rotational: forces back to global axes (f = R f'), and the frame kept for the stress output.
     if constexpr (kCorot) {
-      for (int k = 0; k < 8; ++k) {
-        const double a = f[k][0], b2 = f[k][1], c3 = f[k][2];
-        for (int r = 0; r < 3; ++r) f[k][r] = R[r][0] * a + R[r][1] * b2 + R[r][2] * c3;
-      }
+      brick_from_frame(R, f);
       for (int c = 0; c < 3; ++c)
         for (int r = 0; r < 3; ++r) g.frame[static_cast<std::size_t>(3 * c + r) * G + i] = R[r][c];
     }

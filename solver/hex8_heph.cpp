@@ -48,8 +48,21 @@
 //   sm1 = sqrt|A + 324 sum max|, sm2 = min(sqrt(max(0, A + 324 sum min)), svm0)
 //   (svm0: von Mises of the new element stress).
 // Defaults (hm_read_prop14.F): Ismstr 4, Icpre 0 (from /DEF_SOLID otherwise), dn 0.1, h ignored, IHKT 1.
+//
+// Layout (as the shells, shell_bt4.cpp): the group runs in blocks of kBlock elements; each stage is a loop
+// over the block's elements, element index innermost, on structure-of-arrays scratch (HephBlock), without
+// branches so that GCC vectorises it, and so that the long dependent chains of one element (the frame's
+// thirteen square roots and divisions) overlap with those of the others: gather; frame
+// (brick_corotational_frame_block); local geometry, strain rate and hourglass rates; the material, element by
+// element (the law is a call); bulk viscosity, energy, step; hourglass stresses; forces; state updates.
+// Square roots are taken in passes of their own (sqrt_in_place: std::sqrt may set errno, which keeps GCC
+// from vectorising a loop). Elements deleted at entry or with a bad volume go through the arithmetic with
+// every state update masked (pick) and get their zero forces at the end. The mode sums and the nodal forces
+// are the one-point brick's (brick_mode_sums, brick_nodal_forces: the same quantities, fewer operations).
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 
@@ -61,11 +74,12 @@ namespace radx::solver {
 
 namespace {
 
-// The four hourglass modes in the reference's order (see the opening comment).
-constexpr double kMode[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
-                                {1, -1, -1, 1, -1, 1, 1, -1},
-                                {1, -1, 1, -1, 1, -1, 1, -1},
-                                {-1, 1, -1, 1, 1, -1, 1, -1}};
+constexpr int kBlock = 32;  // elements per block: the scratch (about 50 KB) stays in the core's caches
+
+// The four hourglass modes in the reference's order (opening comment) are the one-point brick's vectors
+// (brick_mode_sums) h2, h3, h1 and -h4: mode m is kFbSign[m] h_{kFbMode[m]}.
+constexpr int kFbMode[4] = {1, 2, 0, 3};
+constexpr double kFbSign[4] = {1.0, 1.0, 1.0, -1.0};
 
 constexpr double kSvmCoef = 324.0;  // (3 x 8 x 0.75)^2 (szsvm.F)
 
@@ -88,10 +102,11 @@ inline void hg_generalised(const double T[3][4], const double J[3], const double
   N[2][3] = nu3 * h33 * T[2][3];
 }
 
-// Equivalent stresses sm1 >= sm2 of the element stress (von Mises squared svm0_2) with the hourglass
-// stresses S (szsvm.F, opening comment); Ji = 1 / J, n1 = 1 / (1 - nu4), n2 = nu4 n1.
-inline void hg_equivalent(const double S[3][4], const double J[3], const double Ji[3], double n1, double n2,
-                          double svm0_2, double& sm1, double& sm2) {
+// Equivalent stresses of the element stress (von Mises squared svm0_2) with the hourglass stresses S
+// (szsvm.F, opening comment), as the arguments of their square roots, taken in a pass of their own:
+// sm1 = sqrt(a1), sm2 = min(sqrt(a2), sqrt(svm0_2)). Ji = 1 / J, n1 = 1 / (1 - nu4), n2 = nu4 n1.
+inline void hg_equivalent_args(const double S[3][4], const double J[3], const double Ji[3], double n1,
+                               double n2, double svm0_2, double& a1, double& a2) {
   const double r[4] = {n1 * S[0][2] + n2 * S[2][0], n1 * S[2][0] + n2 * S[0][2], S[0][2] - S[2][0],
                        J[2] * Ji[0] * S[2][2] + J[0] * Ji[2] * S[0][0]};
   const double s[4] = {S[0][1] - S[1][0], n1 * S[1][0] + n2 * S[0][1], n1 * S[0][1] + n2 * S[1][0],
@@ -102,16 +117,51 @@ inline void hg_equivalent(const double S[3][4], const double J[3], const double 
     return 2.0 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) + 3.0 * a[3] * a[3];
   };
   double mx = 0.0, mn = 0.0;
+#pragma GCC unroll 3
   for (int i = 0; i < 3; ++i) {
     const double p = r[i] * s[i], q = r[i] * t[i], u = s[i] * t[i];
-    const double c[4] = {p + q + u, p - q - u, -p + q - u, -p - q + u};
-    mx += std::max({c[0], c[1], c[2], c[3]});
-    mn += std::min({c[0], c[1], c[2], c[3]});
+    const double c0 = p + q + u, c1 = p - q - u, c2 = -p + q - u, c3 = -p - q + u;
+    // (nested std::max/min: the first extremum, as the initializer-list forms, and they vectorise)
+    mx += std::max(std::max(std::max(c0, c1), c2), c3);
+    mn += std::min(std::min(std::min(c0, c1), c2), c3);
   }
   const double a = svm0_2 + kSvmCoef * (sq(r) + sq(s) + sq(t));
-  sm1 = std::sqrt(std::abs(a + kSvmCoef * mx));
-  sm2 = std::min(std::sqrt(std::max(a + kSvmCoef * mn, 0.0)), std::sqrt(svm0_2));
+  a1 = std::abs(a + kSvmCoef * mx);
+  a2 = std::max(a + kSvmCoef * mn, 0.0);
 }
+
+// `old` where the mask is all ones, `fresh` where it is zero: a select GCC vectorises where it keeps `c ? a
+// : b` of several stored values as a branch (conditional stores, which SSE cannot mask).
+inline double pick(std::uint64_t keep, double old, double fresh) {
+  return std::bit_cast<double>((std::bit_cast<std::uint64_t>(old) & keep) |
+                               (std::bit_cast<std::uint64_t>(fresh) & ~keep));
+}
+
+// Scratch of one block, [quantity][slot]; all but the gathered nodes in the element frame.
+struct HephBlock {
+  NodeBlock<8, kBlock> nb;     // gathered positions and velocities, global axes
+  BrickFrameBlock<kBlock> fr;  // frame R
+  double b[4][3][kBlock];      // gradients b1 .. b4 (b5 .. b8 = -b3, -b4, -b1, -b2)
+  double hx[4][3][kBlock];     // mode sums of the local coordinates on h1 .. h4 (brick_mode_sums)
+  double q[3][4][kBlock];      // hourglass rates q(d, j)
+  double D[6][kBlock];         // co-rotational strain rate
+  double J[3][kBlock];         // J1 J2 J3
+  double vol[kBlock], rho[kBlock], mu[kBlock], off[kBlock];
+  std::int64_t good[kBlock];  // 1: off > 0 at entry and a valid geometry
+  // Square-root arguments, then roots: largest face cross product, strain-rate measure, step, von Mises.
+  double root[4][kBlock];
+  // Material and after: new stress, plastic strain and its increment, rate, V^(1/3), factor after, bulk
+  // viscosity, qt of the step, svm^2, stress energy increment.
+  double sn[6][kBlock];
+  double eps_p[kBlock], deps_p[kBlock], rate[kBlock], l[kBlock], off_new[kBlock];
+  double q_new[kBlock], qt[kBlock], svm2[kBlock], de_int[kBlock];
+  // Hourglass: stresses after the elastic increment, the increment, the old work rate, the square-root
+  // arguments of the equivalent stresses (smo1, smo2, sm1), the generalised forces, the hourglass work.
+  double S[3][4][kBlock], dS[3][4][kBlock];
+  double p_old[kBlock], hg_root[3][kBlock];
+  double N[3][4][kBlock];
+  double de_hg[kBlock];
+};
 
 }  // namespace
 
@@ -139,175 +189,340 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
   const double sv_n1 = 1.0 / (1.0 - nu4), sv_n2 = nu4 * sv_n1;
 
   const std::int32_t* conn = g.conn.data();
+  const double* vol0 = g.vol0.data();
   double* force = g.nodal_force.data();
+  double* hg_stress = g.hg_stress.data();
+  double* sig = g.sig.data();
+  double* vols = g.vol.data();
+  double* rhos = g.rho.data();
+  double* qs = g.q.data();
+  double* frame = g.frame.data();
+  double* e_int = g.e_int.data();
+  double* w_hg = g.w_hg.data();
+  double* w_plastic = g.w_plastic.data();
+  double* dts = g.dt.data();
+  double* k_nodal = g.k_nodal.data();
 
-  const auto n = static_cast<std::size_t>(g.count);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double off = g.off[i];
-    if (off == 0.0) {
-      clear_nodal_forces<8, 3>(force, G, i);
-      g.dt[i] = inf;
-      g.k_nodal[i] = 0.0;
-      continue;
+  HephBlock bk;
+  for (int i0 = 0; i0 < g.count; i0 += kBlock) {
+    const int len = std::min(kBlock, g.count - i0);
+    const auto ib = static_cast<std::size_t>(i0);
+
+    // Gather; /DT/BRICK/CST small strain (rare: element by element) for the live elements.
+    gather_block<false>(conn, G, ib, static_cast<std::size_t>(len), nodes, bk.nb);
+    for (int j = 0; j < len; ++j) {
+      const std::size_t i = ib + static_cast<std::size_t>(j);
+      bk.off[j] = g.off[i];
+      if (bk.off[j] == 0.0 || (g.dt_fixed[i] <= 0.0 && !g.small[i])) continue;
+      double x[8][3];
+      for (int k = 0; k < 8; ++k) x[k][0] = bk.nb.x[k][j], x[k][1] = bk.nb.y[k][j], x[k][2] = bk.nb.z[k][j];
+      brick_small_strain_geometry(g, i, x);
+      for (int k = 0; k < 8; ++k) bk.nb.x[k][j] = x[k][0], bk.nb.y[k][j] = x[k][1], bk.nb.z[k][j] = x[k][2];
     }
-    double x[8][3], v[8][3];
-    gather_element<8>(conn, G, i, nodes, x, v);
-    brick_small_strain_geometry(g, i, x);
 
-    // Element frame; nodes and velocities into it.
-    double R[3][3];
-    brick_corotational_frame(x, true, R);
-    brick_into_frame(R, x, v);
+    // Element frame.
+    brick_corotational_frame_block<kBlock>(bk.nb.x, bk.nb.y, bk.nb.z, len, true, bk.fr);
 
-    // Centre Jacobian (j1: eta, j2: zeta, j3: xi), volume, gradients.
-    double j1[3], j2[3], j3[3], c12[3], c23[3], c31[3];
-    const double vol = brick_centre_jacobian(x, j1, j2, j3, c12, c23, c31);
-    const double J[3] = {j3[0], j1[1], j2[2]};
-    if (!(vol > 0.0) || !(J[0] > 0.0) || !(J[1] > 0.0) || !(J[2] > 0.0)) {
-      clear_nodal_forces<8, 3>(force, G, i);
-      g.vol[i] = vol > 0.0 ? -vol : vol;  // reported and stopped by the engine
-      g.dt[i] = 0.0;
-      g.k_nodal[i] = 0.0;
-      continue;
-    }
-    const double Ji[3] = {1.0 / J[0], 1.0 / J[1], 1.0 / J[2]};
-    double b[8][3];
-    brick_centre_gradients(c12, c23, c31, vol, b);
+    // Nodes and velocities into the frame; centre Jacobian, volume, gradients, strain rate, density, the
+    // mode sums of the local coordinates and the hourglass rates.
+    RADX_IVDEP
+    for (int j = 0; j < len; ++j) {
+      const std::size_t i = ib + static_cast<std::size_t>(j);
+      double R[3][3], x[8][3], v[8][3];
+#pragma GCC unroll 3
+      for (int r = 0; r < 3; ++r)
+#pragma GCC unroll 3
+        for (int a = 0; a < 3; ++a) R[r][a] = bk.fr.R[r][a][j];
+#pragma GCC unroll 8
+      for (int k = 0; k < 8; ++k) {
+        x[k][0] = bk.nb.x[k][j], x[k][1] = bk.nb.y[k][j], x[k][2] = bk.nb.z[k][j];
+        v[k][0] = bk.nb.vx[k][j], v[k][1] = bk.nb.vy[k][j], v[k][2] = bk.nb.vz[k][j];
+      }
+      brick_into_frame(R, x, v);
 
-    // Velocity gradient and the co-rotational strain rate.
-    double L[3][3], D[6];
-    brick_velocity_gradient(v, b, L);
-    corotational_strain_rate(L, dt1, D);
+      // Centre Jacobian (j1: eta, j2: zeta, j3: xi), volume, gradients.
+      double j1[3], j2[3], j3[3], c12[3], c23[3], c31[3];
+      const double vol = brick_centre_jacobian(x, j1, j2, j3, c12, c23, c31);
+      const double J[3] = {j3[0], j1[1], j2[2]};
+      bk.good[j] = (bk.off[j] != 0.0) & (vol > 0.0) & (J[0] > 0.0) & (J[1] > 0.0) & (J[2] > 0.0);
+      double b[8][3];
+      brick_centre_gradients(c12, c23, c31, vol, b);
 
-    // Material in the frame.
-    double so[6];
-    for (int m = 0; m < 6; ++m) so[m] = g.sig[static_cast<std::size_t>(m) * G + i];
-    const double rho = solid_density(rho0, g.vol0[i], vol);
-    const double mu = solid_mu(rho, rho0);
-    const double rate = filtered_rate(alpha, strain_rate_measure(D), g.rate[i]);
-    const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
-    double sn[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
-    double eps_p = g.eps_p[i];
-    double dmg = g.dmg[i];
-    const SolidPointResult pr = solid_point_update(mat, rate, de, mu, sn, eps_p, dmg, off);
-    const double deps_p = pr.deps_p;
-    const double sig_y = solid_yield_stress(mat, eps_p, rate);
-    // Law 36 Eps_p_max and /FAIL/JOHNSON Ifail_so 1 start the brick's deletion (brick_next_off, as the
-    // one-point brick). As in hex8_fb.cpp, this cycle's nodal forces and energies take the new factor: 0.8 in
-    // the failure cycle, none in the cycle that deletes the brick (with the factor at entry a brick reported
-    // deleted still pushed on its nodes for one cycle). The hourglass state keeps its own factor at entry.
-    g.dmg[i] = dmg;
-    const double off_new = brick_next_off(off, pr.element_fails);
-    g.off[i] = off_new;
+      // Velocity gradient and the co-rotational strain rate.
+      double L[3][3], D[6];
+      brick_velocity_gradient(v, b, L);
+      corotational_strain_rate(L, dt1, D);
 
-    // Bulk viscosity, element step.
-    const double l = std::cbrt(vol);
-    const double ec = compression_rate(D);
-    const double q_new = bulk_viscosity(rho, ec, l, qa2, qb, c);
-    const double dt_e = solid_step(brick_face_length(x, vol), c, qa2, qb, l, ec);
-
-    // Stress energy (as the one-point brick).
-    double de_int = solid_energy_increment(dt1, vol, g.vol[i], stress_power_sum(so, sn, D), g.q[i], q_new);
-    const double svm2 = von_mises2(sn);
-
-    // Hourglass: mode sums of the local coordinates and the rates q(d, j).
-    double hx[4][3], q[3][4];
-#pragma GCC unroll 4
-    for (int j = 0; j < 4; ++j)
+      // Hourglass: mode sums of the local coordinates and velocities on the vectors h_j, and the rates
+      // q(d, m) = (m_m . v'_d - L'_d . (m_m . x')) / 8 of the reference's modes.
+      double hx[4][3], hv[4][3], q[3][4];
 #pragma GCC unroll 3
       for (int d = 0; d < 3; ++d) {
-        double sx = 0.0, sv = 0.0;
-#pragma GCC unroll 8
-        for (int k = 0; k < 8; ++k) {
-          sx += kMode[j][k] * x[k][d];
-          sv += kMode[j][k] * v[k][d];
+        brick_mode_sums(x[0][d], x[1][d], x[2][d], x[3][d], x[4][d], x[5][d], x[6][d], x[7][d], hx, d);
+        brick_mode_sums(v[0][d], v[1][d], v[2][d], v[3][d], v[4][d], v[5][d], v[6][d], v[7][d], hv, d);
+      }
+#pragma GCC unroll 3
+      for (int d = 0; d < 3; ++d)
+#pragma GCC unroll 4
+        for (int m = 0; m < 4; ++m) {
+          const int h = kFbMode[m];
+          q[d][m] =
+              kFbSign[m] * (hv[h][d] - (L[d][0] * hx[h][0] + L[d][1] * hx[h][1] + L[d][2] * hx[h][2])) / 8.0;
         }
-        hx[j][d] = sx;
-        q[d][j] = sv;  // completed below
-      }
-    for (int d = 0; d < 3; ++d)
-      for (int j = 0; j < 4; ++j)
-        q[d][j] = (q[d][j] - (L[d][0] * hx[j][0] + L[d][1] * hx[j][1] + L[d][2] * hx[j][2])) / 8.0;
 
-    const double cv = off * cv_coef * rho * l * c;
-    double S[3][4], dS[3][4], T[3][4], N[3][4];
-    for (int d = 0; d < 3; ++d)
-      for (int j = 0; j < 4; ++j) S[d][j] = off * g.hg_stress[static_cast<std::size_t>(4 * d + j) * G + i];
-    // Work rate of the stored hourglass stresses (energy trapezoid, first half).
-    for (int d = 0; d < 3; ++d)
-      for (int j = 0; j < 4; ++j) T[d][j] = S[d][j] * J[d] + cv * q[d][j];
-    hg_generalised(T, J, Ji, nu1, nu2, nu3, N);
-    double p_old = 0.0;
-    for (int d = 0; d < 3; ++d)
-      for (int j = 0; j < 4; ++j) p_old += N[d][j] * q[d][j];
-    const bool yields = sig_y < 0.9e30;
-    double smo1 = 0.0, smo2 = 0.0;
-    if (yields) hg_equivalent(S, J, Ji, sv_n1, sv_n2, svm2, smo1, smo2);
-    const double g3dt = off * g_hg * dt1 / 3.0;
-    for (int d = 0; d < 3; ++d)
-      for (int j = 0; j < 4; ++j) {
-        dS[d][j] = g3dt * Ji[d] * q[d][j];
-        S[d][j] += dS[d][j];
+      const double rho = solid_density(rho0, vol0[i], vol);
+      bk.vol[j] = vol;
+      bk.rho[j] = rho;
+      bk.mu[j] = solid_mu(rho, rho0);
+      bk.root[0][j] = brick_face_cross2_max(x);
+      bk.root[1][j] = strain_rate_measure2(D);
+#pragma GCC unroll 3
+      for (int d = 0; d < 3; ++d) {
+        bk.J[d][j] = J[d];
+#pragma GCC unroll 4
+        for (int k = 0; k < 4; ++k) bk.b[k][d][j] = b[k][d];
+#pragma GCC unroll 4
+        for (int m = 0; m < 4; ++m) {
+          bk.hx[m][d][j] = hx[m][d];
+          bk.q[d][m][j] = q[d][m];
+        }
       }
-    if (yields) {
-      double sm1 = 0.0, sm2 = 0.0;
-      hg_equivalent(S, J, Ji, sv_n1, sv_n2, svm2, sm1, sm2);
-      if (sm1 > sig_y && p_old > 0.0) {
+#pragma GCC unroll 6
+      for (int m = 0; m < 6; ++m) bk.D[m][j] = D[m];
+    }
+    for (int r = 0; r < 2; ++r) sqrt_in_place(bk.root[r], len);
+
+    // Material in the frame, element by element (the law is a call), and the factor after it.
+    for (int j = 0; j < len; ++j) {
+      if (!bk.good[j]) continue;
+      const std::size_t i = ib + static_cast<std::size_t>(j);
+      const double off = bk.off[j];
+      const double D[6] = {bk.D[0][j], bk.D[1][j], bk.D[2][j], bk.D[3][j], bk.D[4][j], bk.D[5][j]};
+      const double rate = filtered_rate(alpha, bk.root[1][j], g.rate[i]);
+      const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
+      double sn[6];
+      for (int m = 0; m < 6; ++m) sn[m] = sig[static_cast<std::size_t>(m) * G + i];
+      double eps_p = g.eps_p[i];
+      double dmg = g.dmg[i];
+      const SolidPointResult pr = solid_point_update(mat, rate, de, bk.mu[j], sn, eps_p, dmg, off);
+      // Law 36 Eps_p_max and /FAIL/JOHNSON Ifail_so 1 start the brick's deletion (brick_next_off, as the
+      // one-point brick). As in hex8_fb.cpp, this cycle's nodal forces and energies take the new factor: 0.8
+      // in the failure cycle, none in the cycle that deletes the brick (with the factor at entry a brick
+      // reported deleted still pushed on its nodes for one cycle). The hourglass state keeps its own factor
+      // at entry.
+      const double off_new = brick_next_off(off, pr.element_fails);
+      for (int m = 0; m < 6; ++m) bk.sn[m][j] = sn[m];
+      bk.eps_p[j] = eps_p;
+      bk.deps_p[j] = pr.deps_p;
+      bk.rate[j] = rate;
+      bk.l[j] = std::cbrt(bk.vol[j]);
+      bk.off_new[j] = off_new;
+      g.eps_p[i] = eps_p;
+      g.dmg[i] = dmg;
+      g.off[i] = off_new;
+      g.rate[i] = rate;
+    }
+    // The others give no force (cleared at the end) and keep their state: dt = +inf when deleted; an
+    // inverted, flat or not-a-number volume is stored negative with dt = 0 (reported and stopped by the
+    // engine). Their slots go through the passes below with every state update masked.
+    for (int j = 0; j < len; ++j) {
+      if (bk.good[j]) continue;
+      const std::size_t i = ib + static_cast<std::size_t>(j);
+      if (bk.off[j] == 0.0) {
+        dts[i] = inf;
+      } else {
+        const double vol = bk.vol[j];
+        vols[i] = vol > 0.0 ? -vol : vol;
+        dts[i] = 0.0;
+      }
+      k_nodal[i] = 0.0;
+      for (int m = 0; m < 6; ++m) bk.sn[m][j] = 0.0;
+      bk.eps_p[j] = bk.deps_p[j] = bk.rate[j] = bk.l[j] = bk.off_new[j] = 0.0;
+    }
+
+    // Bulk viscosity, the step's qt, stress energy and von Mises (as the one-point brick); the stress,
+    // volume, density and bulk viscosity of the live elements.
+    RADX_IVDEP
+    for (int j = 0; j < len; ++j) {
+      const std::size_t i = ib + static_cast<std::size_t>(j);
+      const std::uint64_t keep = static_cast<std::uint64_t>(bk.good[j]) - 1;  // all ones for the others
+      const double vol = bk.vol[j], rho = bk.rho[j], l = bk.l[j];
+      const double D[6] = {bk.D[0][j], bk.D[1][j], bk.D[2][j], bk.D[3][j], bk.D[4][j], bk.D[5][j]};
+      double so[6], sn[6];
+#pragma GCC unroll 6
+      for (int m = 0; m < 6; ++m) so[m] = sig[static_cast<std::size_t>(m) * G + i], sn[m] = bk.sn[m][j];
+      const double ec = compression_rate(D);
+      const double q_new = bulk_viscosity(rho, ec, l, qa2, qb, c);
+      const double qt = solid_step_qt(c, qa2, qb, l, ec);
+      const double svm2 = von_mises2(sn);
+      bk.de_int[j] = solid_energy_increment(dt1, vol, vols[i], stress_power_sum(so, sn, D), qs[i], q_new);
+      bk.q_new[j] = q_new;
+      bk.qt[j] = qt;
+      bk.svm2[j] = svm2;
+      bk.root[2][j] = qt * qt + c * c;
+      bk.root[3][j] = svm2;
+#pragma GCC unroll 6
+      for (int m = 0; m < 6; ++m) sig[static_cast<std::size_t>(m) * G + i] = pick(keep, so[m], sn[m]);
+      vols[i] = pick(keep, vols[i], vol);
+      rhos[i] = pick(keep, rhos[i], rho);
+      qs[i] = pick(keep, qs[i], q_new);
+    }
+    for (int r = 2; r < 4; ++r) sqrt_in_place(bk.root[r], len);
+
+    // Hourglass, first part: the work rate of the stored stresses (energy trapezoid, first half), the
+    // elastic increment, and the square-root arguments of the equivalent stresses before and after it.
+    auto hourglass_first = [&]<bool kYield>() {
+      RADX_IVDEP
+      for (int j = 0; j < len; ++j) {
+        const std::size_t i = ib + static_cast<std::size_t>(j);
+        const double off = bk.off[j];
+        const double J[3] = {bk.J[0][j], bk.J[1][j], bk.J[2][j]};
+        const double Ji[3] = {1.0 / J[0], 1.0 / J[1], 1.0 / J[2]};
+        const double cv = off * cv_coef * bk.rho[j] * bk.l[j] * c;
+        double q[3][4], S[3][4], T[3][4], N[3][4];
+#pragma GCC unroll 3
+        for (int d = 0; d < 3; ++d)
+#pragma GCC unroll 4
+          for (int m = 0; m < 4; ++m) {
+            q[d][m] = bk.q[d][m][j];
+            S[d][m] = off * hg_stress[static_cast<std::size_t>(4 * d + m) * G + i];
+            T[d][m] = S[d][m] * J[d] + cv * q[d][m];
+          }
+        hg_generalised(T, J, Ji, nu1, nu2, nu3, N);
+        double p_old = 0.0;
+#pragma GCC unroll 3
+        for (int d = 0; d < 3; ++d)
+#pragma GCC unroll 4
+          for (int m = 0; m < 4; ++m) p_old += N[d][m] * q[d][m];
+        bk.p_old[j] = p_old;
+        if constexpr (kYield)
+          hg_equivalent_args(S, J, Ji, sv_n1, sv_n2, bk.svm2[j], bk.hg_root[0][j], bk.hg_root[1][j]);
+        const double g3dt = off * g_hg * dt1 / 3.0;
+#pragma GCC unroll 3
+        for (int d = 0; d < 3; ++d)
+#pragma GCC unroll 4
+          for (int m = 0; m < 4; ++m) {
+            const double ds = g3dt * Ji[d] * q[d][m];
+            S[d][m] += ds;
+            bk.dS[d][m][j] = ds;
+            bk.S[d][m][j] = S[d][m];
+          }
+        if constexpr (kYield) {
+          double unused;
+          hg_equivalent_args(S, J, Ji, sv_n1, sv_n2, bk.svm2[j], bk.hg_root[2][j], unused);
+        }
+      }
+    };
+    if (solid_law_yields(mat)) {
+      hourglass_first.template operator()<true>();
+      for (int r = 0; r < 3; ++r) sqrt_in_place(bk.hg_root[r], len);
+      // Plastic reduction where sm1 > sigma_y with positive work so far (opening comment): element by
+      // element, as it takes few of them; the yield stress (pow and log for Johnson-Cook) only where the
+      // work is positive.
+      for (int j = 0; j < len; ++j) {
+        if (!bk.good[j] || !(bk.p_old[j] > 0.0)) continue;
+        const double sig_y = solid_yield_stress(mat, bk.eps_p[j], bk.rate[j]), sm1 = bk.hg_root[2][j];
+        if (!(sig_y < 0.9e30 && sm1 > sig_y)) continue;
         double fac = sig_y / sm1;
-        const double smo = 0.9 * smo1 + 0.1 * smo2;
+        const double smo = 0.9 * bk.hg_root[0][j] + 0.1 * std::min(bk.hg_root[1][j], bk.root[3][j]);
         if (smo > sig_y && sm1 > smo) fac *= std::min(1.0, (smo - sig_y) / (sm1 - smo));
         for (int d = 0; d < 3; ++d)
-          for (int j = 0; j < 4; ++j) S[d][j] -= (1.0 - fac) * dS[d][j];
+          for (int m = 0; m < 4; ++m) bk.S[d][m][j] -= (1.0 - fac) * bk.dS[d][m][j];
       }
+    } else {
+      hourglass_first.template operator()<false>();
     }
-    for (int d = 0; d < 3; ++d)
-      for (int j = 0; j < 4; ++j) T[d][j] = S[d][j] * J[d] + cv * q[d][j];
-    hg_generalised(T, J, Ji, nu1, nu2, nu3, N);
-    double p_new = 0.0;
-    for (int d = 0; d < 3; ++d)
-      for (int j = 0; j < 4; ++j) p_new += N[d][j] * q[d][j];
-    const double de_hg = 0.5 * dt1 * (p_old + p_new);
-
-    // Nodal forces in the frame: stress part -V (sigma - q I) b_k, hourglass part -sum_j gamma_jk N(d, j),
-    // gamma_jk = (m_jk - b_k . hx_j) / 8 formed once per element.
-    const double sg[3][3] = {
-        {sn[0] - q_new, sn[3], sn[5]}, {sn[3], sn[1] - q_new, sn[4]}, {sn[5], sn[4], sn[2] - q_new}};
-    double f[8][3];
-#pragma GCC unroll 8
-    for (int k = 0; k < 8; ++k) {
-      double gam[4];
+    // Second part: the generalised forces and the hourglass work.
+    RADX_IVDEP
+    for (int j = 0; j < len; ++j) {
+      const double off = bk.off[j];
+      const double J[3] = {bk.J[0][j], bk.J[1][j], bk.J[2][j]};
+      const double Ji[3] = {1.0 / J[0], 1.0 / J[1], 1.0 / J[2]};
+      const double cv = off * cv_coef * bk.rho[j] * bk.l[j] * c;
+      double T[3][4], N[3][4];
+#pragma GCC unroll 3
+      for (int d = 0; d < 3; ++d)
 #pragma GCC unroll 4
-      for (int j = 0; j < 4; ++j)
-        gam[j] = (kMode[j][k] - (b[k][0] * hx[j][0] + b[k][1] * hx[j][1] + b[k][2] * hx[j][2])) * 0.125;
+        for (int m = 0; m < 4; ++m) T[d][m] = bk.S[d][m][j] * J[d] + cv * bk.q[d][m][j];
+      hg_generalised(T, J, Ji, nu1, nu2, nu3, N);
+      double p_new = 0.0;
+#pragma GCC unroll 3
+      for (int d = 0; d < 3; ++d)
+#pragma GCC unroll 4
+        for (int m = 0; m < 4; ++m) {
+          p_new += N[d][m] * bk.q[d][m][j];
+          bk.N[d][m][j] = N[d][m];
+        }
+      bk.de_hg[j] = 0.5 * dt1 * (bk.p_old[j] + p_new);
+    }
+
+    // Nodal forces: stress part -V (sigma - q I) b_k, hourglass part -sum_m gamma_mk N(:, m) with
+    // gamma_mk = (m_mk - b_k . (m_m . x')) / 8 = kFbSign[m] G_jk / 8 (j = kFbMode[m]), i.e. the one-point
+    // brick's forces with H_j = kFbSign[m] N(:, m) / 8; in the frame, then back to global axes, times the
+    // factor (zero for the others, below).
+    RADX_IVDEP
+    for (int j = 0; j < len; ++j) {
+      const std::size_t i = ib + static_cast<std::size_t>(j);
+      double sn[6], b[8][3], hx[4][3], hg[4][3], R[3][3], f[8][3];
+#pragma GCC unroll 6
+      for (int m = 0; m < 6; ++m) sn[m] = bk.sn[m][j];
+#pragma GCC unroll 3
+      for (int d = 0; d < 3; ++d) {
+#pragma GCC unroll 4
+        for (int k = 0; k < 4; ++k) b[k][d] = bk.b[k][d][j];
+        b[4][d] = -b[2][d], b[5][d] = -b[3][d], b[6][d] = -b[0][d], b[7][d] = -b[1][d];
+#pragma GCC unroll 4
+        for (int m = 0; m < 4; ++m) {
+          hx[m][d] = bk.hx[m][d][j];
+          hg[kFbMode[m]][d] = kFbSign[m] * bk.N[d][m][j] * 0.125;
+        }
+#pragma GCC unroll 3
+        for (int a = 0; a < 3; ++a) R[d][a] = bk.fr.R[d][a][j];
+      }
+      brick_nodal_forces(sn, bk.q_new[j], bk.vol[j], hg, hx, b, f);
+      brick_from_frame(R, f);
+      const double scale = bk.off_new[j];
+#pragma GCC unroll 8
+      for (int k = 0; k < 8; ++k)
+#pragma GCC unroll 3
+        for (int r = 0; r < 3; ++r)
+          force[(static_cast<std::size_t>(k) * 3 + static_cast<std::size_t>(r)) * G + i] = scale * f[k][r];
+    }
+
+    // Hourglass stresses, frame, energies, step and nodal stiffness of the live elements; no force from the
+    // others.
+    std::int64_t all_good = 1;
+    RADX_IVDEP
+    for (int j = 0; j < len; ++j) {
+      const std::size_t i = ib + static_cast<std::size_t>(j);
+      const std::uint64_t keep = static_cast<std::uint64_t>(bk.good[j]) - 1;  // all ones for the others
+      all_good &= bk.good[j];
+#pragma GCC unroll 3
+      for (int d = 0; d < 3; ++d)
+#pragma GCC unroll 4
+        for (int m = 0; m < 4; ++m) {
+          const std::size_t at = static_cast<std::size_t>(4 * d + m) * G + i;
+          hg_stress[at] = pick(keep, hg_stress[at], bk.S[d][m][j]);
+        }
 #pragma GCC unroll 3
       for (int a = 0; a < 3; ++a)
-        f[k][a] = -vol * (sg[a][0] * b[k][0] + sg[a][1] * b[k][1] + sg[a][2] * b[k][2]) -
-                  (gam[0] * N[a][0] + gam[1] * N[a][1] + gam[2] * N[a][2] + gam[3] * N[a][3]);
+#pragma GCC unroll 3
+        for (int r = 0; r < 3; ++r) {
+          const std::size_t at = static_cast<std::size_t>(3 * a + r) * G + i;
+          frame[at] = pick(keep, frame[at], bk.fr.R[r][a][j]);
+        }
+      const double vol = bk.vol[j], off_new = bk.off_new[j], de_hg = bk.de_hg[j];
+      const double dt_e =
+          solid_step_of_root(brick_face_length_of_root(vol, bk.root[0][j]), bk.qt[j], bk.root[2][j]);
+      e_int[i] = pick(keep, e_int[i], e_int[i] + off_new * (bk.de_int[j] + de_hg));
+      w_hg[i] = pick(keep, w_hg[i], w_hg[i] + off_new * de_hg);
+      w_plastic[i] = pick(keep, w_plastic[i], w_plastic[i] + off_new * bk.root[3][j] * bk.deps_p[j] * vol);
+      dts[i] = pick(keep, dts[i], dt_e);
+      k_nodal[i] = pick(keep, k_nodal[i], solid_nodal_stiffness(0.25, bk.rho[j], vol, dt_e));
     }
-    // Back to global axes.
-#pragma GCC unroll 8
-    for (int k = 0; k < 8; ++k) {
-      const double a0 = f[k][0], a1 = f[k][1], a2 = f[k][2];
-      for (int r = 0; r < 3; ++r) f[k][r] = R[r][0] * a0 + R[r][1] * a1 + R[r][2] * a2;
-    }
-
-    store_nodal_forces<8, 3>(force, G, i, off_new, f);
-    for (int m = 0; m < 6; ++m) g.sig[static_cast<std::size_t>(m) * G + i] = sn[m];
-    for (int d = 0; d < 3; ++d)
-      for (int j = 0; j < 4; ++j) g.hg_stress[static_cast<std::size_t>(4 * d + j) * G + i] = S[d][j];
-    for (int a = 0; a < 3; ++a)
-      for (int r = 0; r < 3; ++r) g.frame[static_cast<std::size_t>(3 * a + r) * G + i] = R[r][a];
-    de_int += de_hg;
-    g.eps_p[i] = eps_p;
-    g.vol[i] = vol;
-    g.rho[i] = rho;
-    g.q[i] = q_new;
-    g.rate[i] = rate;
-    g.e_int[i] += off_new * de_int;
-    g.w_hg[i] += off_new * de_hg;
-    g.w_plastic[i] += off_new * std::sqrt(svm2) * deps_p * vol;
-    g.dt[i] = dt_e;
-    g.k_nodal[i] = solid_nodal_stiffness(0.25, rho, vol, dt_e);
+    if (!all_good)
+      for (int j = 0; j < len; ++j)
+        if (!bk.good[j]) clear_nodal_forces<8, 3>(force, G, ib + static_cast<std::size_t>(j));
   }
 }
 

@@ -4,8 +4,13 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "solver/model/model.hpp"
 
@@ -28,6 +33,16 @@ inline double opaque(double v) {
   __asm__("" : "+g"(v));
 #endif
   return v;
+}
+
+// Square roots of v[0 .. n). std::sqrt may set errno, which keeps GCC from vectorising a loop that calls
+// it; the kernels put the arguments in an array and take the roots here (sqrtpd rounds exactly as sqrtsd).
+inline void sqrt_in_place(double* v, int n) {
+  int i = 0;
+#if defined(__SSE2__)
+  for (; i + 2 <= n; i += 2) _mm_storeu_pd(v + i, _mm_sqrt_pd(_mm_loadu_pd(v + i)));
+#endif
+  for (; i < n; ++i) v[i] = std::sqrt(v[i]);
 }
 
 // One yield curve of law 36: a non-owning view of a /FUNCT's points (the engine's model owns them), its
@@ -235,6 +250,11 @@ double solid_point_update(const MaterialParams& p, double rate, const double de[
 // solid_point_update), for elements that limit other stresses by it (the physical hourglass of Isolid 24).
 // A law that never yields returns 1e30 or more (LAW1).
 double solid_yield_stress(const MaterialParams& p, double eps_p, double rate);
+// False for a law whose solid_yield_stress is 1e30 whatever the state (LAW1): a kernel then skips the work
+// only a finite yield stress needs.
+inline bool solid_law_yields(const MaterialParams& p) {
+  return p.law != model::MaterialLaw::Elastic;
+}
 
 // The solid point with its failure state: law 36 Eps_p_max and /FAIL/JOHNSON (Ifail_so) on top of the update
 // above. dmg: the point's Johnson-Cook damage (0 .. 1), updated. off: the element factor at the start of the

@@ -12,7 +12,7 @@
 //        and stored with a minus sign: the buffer holds the force ADDED to each node.
 //
 // The four-node frame runs over a block of elements in three vectorised passes, with the square roots taken
-// in passes of their own (sqrt_in_place, see shell_section.hpp): the same operations, in the same order, as
+// in passes of their own (sqrt_in_place, see material_point.hpp): the same operations, in the same order, as
 // the element-by-element version, so the results are the same to the bit.
 #pragma once
 

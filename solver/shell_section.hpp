@@ -40,10 +40,6 @@
 #include <numbers>
 #include <type_traits>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include "solver/element_groups.hpp"
 #include "solver/material_point.hpp"
 
@@ -92,16 +88,6 @@ inline std::size_t sig_index(int p, int c, int i) {
 inline void ensure_resultant_storage(ShellGroup& g) {
   const std::size_t need = 8 * static_cast<std::size_t>(kGroupSize);
   if (g.props.n_points <= 0 && g.sig.size() < need) g.sig.resize(need, 0.0);
-}
-
-// Square roots of v[0 .. n). std::sqrt may set errno, which keeps GCC from vectorising a loop that calls
-// it; the kernels put the arguments in an array and take the roots here (sqrtpd rounds exactly as sqrtsd).
-inline void sqrt_in_place(double* v, int n) {
-  int i = 0;
-#if defined(__SSE2__)
-  for (; i + 2 <= n; i += 2) _mm_storeu_pd(v + i, _mm_sqrt_pd(_mm_loadu_pd(v + i)));
-#endif
-  for (; i < n; ++i) v[i] = std::sqrt(v[i]);
 }
 
 // Argument of the square root of the element equivalent strain rate (1.3): rate = sqrt(arg) / dt1.

@@ -86,6 +86,60 @@ inline void brick_velocity_gradient(const double v[8][3], const double b[8][3], 
   }
 }
 
+// Mode sums r[j][d] = sum_k h_jk a_k of the one-point brick's hourglass vectors (elements.md 3.4), h1 =
+// (1,-1,1,-1,1,-1,1,-1), h2 = (1,1,-1,-1,-1,-1,1,1), h3 = (1,-1,-1,1,-1,1,1,-1), h4 = (1,-1,1,-1,-1,1,-1,1),
+// pairwise: with p = a1 - a4 - a6 + a7, m = a2 - a3 - a5 + a8, s = a1 - a2 - a5 + a6, t = a3 - a4 - a7 + a8:
+// h1 = p - m, h2 = p + m, h3 = s - t, h4 = s + t.
+inline void brick_mode_sums(double a1, double a2, double a3, double a4, double a5, double a6, double a7,
+                            double a8, double r[4][3], int d) {
+  const double p = a1 - a4 - a6 + a7, m = a2 - a3 - a5 + a8;
+  const double s = a1 - a2 - a5 + a6, t = a3 - a4 - a7 + a8;
+  r[0][d] = p - m;
+  r[1][d] = p + m;
+  r[2][d] = s - t;
+  r[3][d] = s + t;
+}
+
+// Nodal forces f[k] (ADDED to node k) of a one-point brick with stress sn (xx yy zz xy yz zx), bulk
+// viscosity q and hourglass forces H_j = hg[j] on the vectors h_j of brick_mode_sums, with
+// G_jk = h_jk - hx_j . b_k (elements.md 3.1, 3.4): stress part -V (sigma - q I) b_k, hourglass part
+//   -sum_j G_jk H_j = -sum_j h_jk H_j + M b_k with M = sum_j H_j (x) hx_j,
+// so f_k = -T b_k - sum_j h_jk H_j with T = V (sigma - q I) - M, and b_{5..8} = -b_{3,4,1,2}: the same
+// quantities as node by node, fewer operations. hx_j = 0 gives the plain vector h_j.
+inline void brick_nodal_forces(const double sn[6], double q, double vol, const double hg[4][3],
+                               const double hx[4][3], const double b[8][3], double f[8][3]) {
+  double T[3][3];
+  const double sg[3][3] = {{sn[0] - q, sn[3], sn[5]}, {sn[3], sn[1] - q, sn[4]}, {sn[5], sn[4], sn[2] - q}};
+#pragma GCC unroll 8
+  for (int a = 0; a < 3; ++a)
+#pragma GCC unroll 8
+    for (int e = 0; e < 3; ++e)
+      T[a][e] = vol * sg[a][e] -
+                (hg[0][a] * hx[0][e] + hg[1][a] * hx[1][e] + hg[2][a] * hx[2][e] + hg[3][a] * hx[3][e]);
+#pragma GCC unroll 8
+  for (int k = 0; k < 4; ++k) {
+    const int o = (k < 2) ? k + 6 : k + 2;
+#pragma GCC unroll 8
+    for (int a = 0; a < 3; ++a) {
+      const double tb = T[a][0] * b[k][0] + T[a][1] * b[k][1] + T[a][2] * b[k][2];
+      f[k][a] = -tb;
+      f[o][a] = tb;
+    }
+  }
+#pragma GCC unroll 8
+  for (int a = 0; a < 3; ++a) {
+    const double h1 = hg[0][a], h2 = hg[1][a], h3 = hg[2][a], h4 = hg[3][a];
+    f[0][a] -= h1 + h2 + h3 + h4;
+    f[1][a] -= -h1 + h2 - h3 - h4;
+    f[2][a] -= h1 - h2 - h3 + h4;
+    f[3][a] -= -h1 - h2 + h3 - h4;
+    f[4][a] -= h1 - h2 - h3 - h4;
+    f[5][a] -= -h1 - h2 + h3 + h4;
+    f[6][a] -= h1 + h2 + h3 - h4;
+    f[7][a] -= -h1 + h2 - h3 + h4;
+  }
+}
+
 // /DT/BRICK/CST small strain (elements.md 3.1, hex8_fb.cpp): freeze the brick's node coordinates in x_ref the
 // first cycle after the switch (dt_fixed > 0), then take x from them every cycle (velocities stay current).
 inline void brick_small_strain_geometry(BrickGroup& g, std::size_t i, double x[8][3]) {
@@ -115,6 +169,114 @@ inline void brick_into_frame(const double R[3][3], double x[8][3], double v[8][3
     for (int c = 0; c < 3; ++c) {
       x[k][c] = xl[c];
       v[k][c] = vl[c];
+    }
+  }
+}
+
+// Nodal forces of a brick from its element frame back to global axes (elements.md 3.6): f = R f'.
+inline void brick_from_frame(const double R[3][3], double f[8][3]) {
+#pragma GCC unroll 8
+  for (int k = 0; k < 8; ++k) {
+    const double a = f[k][0], b = f[k][1], c = f[k][2];
+#pragma GCC unroll 3
+    for (int r = 0; r < 3; ++r) f[k][r] = R[r][0] * a + R[r][1] * b + R[r][2] * c;
+  }
+}
+
+// Co-rotational frame of a block of one-point bricks (elements.md 3.6; srepiso3.F, sortho3.F), the
+// formulas of brick_corotational_frame (hex8_fb.cpp, which runs this with B = 1): r = j1, s = j2, t = j3
+// (eta, zeta, xi) normalised to u, v, w; three times u <- unit(v x w + u), v <- unit(w x u + v),
+// w <- unit(u x v + w); e1 = u, e3 = unit(e1 x v), e2 = e3 x e1. A zero vector stays zero under unit().
+// Columns (e_x e_y e_z) = (e1 e2 e3), or (e3 e1 e2) with heph_order (Isolid 24).
+// Structure of arrays over the slots j < len (positions x, y, z [node][slot]), one vectorised pass between
+// two rounds of square roots, so that the thirteen dependent square roots and divisions of an element overlap
+// with those of the others; the same operations in the same order as element by element, so the same bits.
+template <std::size_t B>
+struct BrickFrameBlock {
+  double R[3][3][B];  // R[row][column][slot]
+  double u[3][B], v[3][B], w[3][B];
+  double root[3][B];  // squared lengths, then lengths
+};
+
+template <std::size_t B>
+inline void brick_corotational_frame_block(const double x[8][B], const double y[8][B], const double z[8][B],
+                                           int len, bool heph_order, BrickFrameBlock<B>& f) {
+  const double one = opaque(1.0);  // divisor of a zero length: the vector stays as it is
+  auto roots = [&](int rows) {
+    for (int r = 0; r < rows; ++r) sqrt_in_place(f.root[r], len);
+  };
+  const double(*p[3])[B] = {x, y, z};
+  RADX_IVDEP
+  for (int j = 0; j < len; ++j) {
+#pragma GCC unroll 3
+    for (int d = 0; d < 3; ++d) {
+      const double d17 = p[d][6][j] - p[d][0][j], d28 = p[d][7][j] - p[d][1][j];
+      const double d35 = p[d][4][j] - p[d][2][j], d46 = p[d][5][j] - p[d][3][j];
+      f.u[d][j] = d17 + d28 - d35 - d46;
+      f.v[d][j] = d17 + d28 + d35 + d46;
+      f.w[d][j] = d17 - d28 - d35 + d46;
+    }
+    f.root[0][j] = f.u[0][j] * f.u[0][j] + f.u[1][j] * f.u[1][j] + f.u[2][j] * f.u[2][j];
+    f.root[1][j] = f.v[0][j] * f.v[0][j] + f.v[1][j] * f.v[1][j] + f.v[2][j] * f.v[2][j];
+    f.root[2][j] = f.w[0][j] * f.w[0][j] + f.w[1][j] * f.w[1][j] + f.w[2][j] * f.w[2][j];
+  }
+  roots(3);
+  // Normalise with the roots just taken, then one symmetric step (all three from the previous values).
+  for (int it = 0; it < 3; ++it) {
+    RADX_IVDEP
+    for (int j = 0; j < len; ++j) {
+      const double ru = 1.0 / (f.root[0][j] != 0.0 ? f.root[0][j] : one);
+      const double rv = 1.0 / (f.root[1][j] != 0.0 ? f.root[1][j] : one);
+      const double rw = 1.0 / (f.root[2][j] != 0.0 ? f.root[2][j] : one);
+      const double u[3] = {f.u[0][j] * ru, f.u[1][j] * ru, f.u[2][j] * ru};
+      const double v[3] = {f.v[0][j] * rv, f.v[1][j] * rv, f.v[2][j] * rv};
+      const double w[3] = {f.w[0][j] * rw, f.w[1][j] * rw, f.w[2][j] * rw};
+      double a[3], b[3], c[3];
+      cross3(v, w, a);
+      cross3(w, u, b);
+      cross3(u, v, c);
+#pragma GCC unroll 3
+      for (int d = 0; d < 3; ++d) {
+        f.u[d][j] = a[d] + u[d];
+        f.v[d][j] = b[d] + v[d];
+        f.w[d][j] = c[d] + w[d];
+      }
+      f.root[0][j] = f.u[0][j] * f.u[0][j] + f.u[1][j] * f.u[1][j] + f.u[2][j] * f.u[2][j];
+      f.root[1][j] = f.v[0][j] * f.v[0][j] + f.v[1][j] * f.v[1][j] + f.v[2][j] * f.v[2][j];
+      f.root[2][j] = f.w[0][j] * f.w[0][j] + f.w[1][j] * f.w[1][j] + f.w[2][j] * f.w[2][j];
+    }
+    roots(3);
+  }
+  // e1 = u (normalised), e3 = e1 x v before its normalisation (kept in w).
+  RADX_IVDEP
+  for (int j = 0; j < len; ++j) {
+    const double ru = 1.0 / (f.root[0][j] != 0.0 ? f.root[0][j] : one);
+    const double rv = 1.0 / (f.root[1][j] != 0.0 ? f.root[1][j] : one);
+    const double u[3] = {f.u[0][j] * ru, f.u[1][j] * ru, f.u[2][j] * ru};
+    const double v[3] = {f.v[0][j] * rv, f.v[1][j] * rv, f.v[2][j] * rv};
+    double e3[3];
+    cross3(u, v, e3);
+#pragma GCC unroll 3
+    for (int d = 0; d < 3; ++d) {
+      f.u[d][j] = u[d];
+      f.w[d][j] = e3[d];
+    }
+    f.root[0][j] = e3[0] * e3[0] + e3[1] * e3[1] + e3[2] * e3[2];
+  }
+  roots(1);
+  const int cu = heph_order ? 1 : 0, c2 = heph_order ? 2 : 1, c3 = heph_order ? 0 : 2;
+  RADX_IVDEP
+  for (int j = 0; j < len; ++j) {
+    const double r3 = 1.0 / (f.root[0][j] != 0.0 ? f.root[0][j] : one);
+    const double u[3] = {f.u[0][j], f.u[1][j], f.u[2][j]};
+    const double e3[3] = {f.w[0][j] * r3, f.w[1][j] * r3, f.w[2][j] * r3};
+    double e2[3];
+    cross3(e3, u, e2);
+#pragma GCC unroll 3
+    for (int r = 0; r < 3; ++r) {
+      f.R[r][cu][j] = u[r];
+      f.R[r][c2][j] = e2[r];
+      f.R[r][c3][j] = e3[r];
     }
   }
 }
@@ -155,9 +317,13 @@ inline void jaumann_rotate(const double s[6], double wx, double wy, double wz, d
 }
 
 // Strain-rate measure of the Johnson-Cook rate term (elements.md 6.2), D with engineering shears:
-//   e = sqrt(Dxx^2 + Dyy^2 + Dzz^2 + (D4^2 + D5^2 + D6^2) / 2).
+//   e = sqrt(Dxx^2 + Dyy^2 + Dzz^2 + (D4^2 + D5^2 + D6^2) / 2); its square on its own for a block kernel
+// that takes the roots in a pass of their own.
+inline double strain_rate_measure2(const double D[6]) {
+  return D[0] * D[0] + D[1] * D[1] + D[2] * D[2] + 0.5 * (D[3] * D[3] + D[4] * D[4] + D[5] * D[5]);
+}
 inline double strain_rate_measure(const double D[6]) {
-  return std::sqrt(D[0] * D[0] + D[1] * D[1] + D[2] * D[2] + 0.5 * (D[3] * D[3] + D[4] * D[4] + D[5] * D[5]));
+  return std::sqrt(strain_rate_measure2(D));
 }
 
 // Its filter (elements.md 6.2): rate <- alpha e + (1 - alpha) rate, alpha = rate_filter_alpha(mat, dt1).
@@ -184,8 +350,9 @@ inline double bulk_viscosity(double rho, double ec, double l, double qa2, double
 }
 
 // Brick characteristic length (elements.md 4.4, sdlen3.F): V / largest face area, a face's area
-// |d13 x d24| / 2 (node positions from kBrickFaces).
-inline double brick_face_length(const double x[8][3], double vol) {
+// |d13 x d24| / 2 (node positions from kBrickFaces). In two parts so that a block kernel can take the square
+// root in a pass of its own: the largest |d13 x d24|^2, then the length from its root.
+inline double brick_face_cross2_max(const double x[8][3]) {
   double area2_max = 0.0;
 #pragma GCC unroll 8
   for (const auto& f : kBrickFaces) {
@@ -200,14 +367,27 @@ inline double brick_face_length(const double x[8][3], double vol) {
     const double n2 = d13[0] * d24[1] - d13[1] * d24[0];
     area2_max = std::max(area2_max, n0 * n0 + n1 * n1 + n2 * n2);
   }
-  return vol / (0.5 * std::sqrt(area2_max));
+  return area2_max;
+}
+inline double brick_face_length_of_root(double vol, double cross_max) {
+  return vol / (0.5 * cross_max);
+}
+inline double brick_face_length(const double x[8][3], double vol) {
+  return brick_face_length_of_root(vol, std::sqrt(brick_face_cross2_max(x)));
 }
 
 // Element step of a solid before the /DT scale (elements.md 4.4, mqviscb.F): with qt = qb c + qa^2 l ec,
-// c_eff = qt + sqrt(qt^2 + c^2) and dt = length / c_eff.
+// c_eff = qt + sqrt(qt^2 + c^2) and dt = length / c_eff. In parts for a block kernel: qt, then the step from
+// the root sqrt(qt^2 + c^2).
+inline double solid_step_qt(double c, double qa2, double qb, double l, double ec) {
+  return qb * c + qa2 * l * ec;
+}
+inline double solid_step_of_root(double length, double qt, double root) {
+  return length / (qt + root);
+}
 inline double solid_step(double length, double c, double qa2, double qb, double l, double ec) {
-  const double qt = qb * c + qa2 * l * ec;
-  return length / (qt + std::sqrt(qt * qt + c * c));
+  const double qt = solid_step_qt(c, qa2, qb, l, ec);
+  return solid_step_of_root(length, qt, std::sqrt(qt * qt + c * c));
 }
 
 // Stress power sum of the energy trapezoid (elements.md 3.3): sum_m (sigma_old + sigma_new)_m D_m,
