@@ -48,8 +48,10 @@ class ModelBuilder {
   void build_nodes();
   void build_materials();
   void read_plas_tab(const KeywordRecord& r, model::Material& mat);  // /MAT/PLAS_TAB's cards
-  void build_failure_models();                                       // /FAIL/JOHNSON, after the materials
-  void resolve_plas_tab_functions();                                 // after the functions
+  void read_void(const KeywordRecord& r, model::Material& mat);      // /MAT/VOID's optional card
+  void build_rigid_material_bodies();  // build_rigid_materials.cpp: one body per connected /MAT/RIGID set
+  void build_failure_models();         // /FAIL/JOHNSON, after the materials
+  void resolve_plas_tab_functions();   // after the functions
   void build_properties();
   void build_subsets_and_parts();
   void build_elements();

@@ -209,6 +209,8 @@ LAYOUTS = {
              r("vdef_min", col=21, since=2023), r("vdef_max", since=2023), r("ASP_max", since=2023),
              r("COL_min", since=2023))),
     "/MAT/LAW1": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
+    "/MAT/VOID": Layout(Card(r("RHO_I"), r("E"), r("nu"))),
+    "/MAT/RIGID": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
     "/MAT/PLAS_JOHNS": Layout(
         Card(r("RHO_I"), r("RHO_ref")),
         Card(r("E"), r("nu"), i("Iflag", since=140), i("flagVP", since=2023), r("Pmin", since=2025)),

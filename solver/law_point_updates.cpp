@@ -233,7 +233,9 @@ double jc_rate_factor(const MaterialParams& p, double rate) {
   switch (p.law) {
     case model::MaterialLaw::JohnsonCook: return rate_factor(p, rate);
     case model::MaterialLaw::PlasTab: return p.n_curves > 1 ? rate : 1.0;
-    case model::MaterialLaw::Elastic: break;
+    case model::MaterialLaw::Elastic:
+    case model::MaterialLaw::Void:
+    case model::MaterialLaw::Rigid: break;
   }
   return 1.0;
 }
@@ -243,7 +245,9 @@ double shell_rate_threshold(const MaterialParams& p) {
   switch (p.law) {
     case model::MaterialLaw::JohnsonCook: return p.c != 0 ? p.eps_dot0 : kInf;
     case model::MaterialLaw::PlasTab: return p.n_curves > 1 ? -kInf : kInf;
-    case model::MaterialLaw::Elastic: break;
+    case model::MaterialLaw::Elastic:
+    case model::MaterialLaw::Void:
+    case model::MaterialLaw::Rigid: break;
   }
   return kInf;
 }
