@@ -274,3 +274,25 @@ TEST_CASE("rigid material: a node also in a /RBODY is refused by name", "[rigid]
   }
   CHECK(found);
 }
+
+TEST_CASE("rigid material: a /BCS on one of its nodes is refused by name", "[rigid]") {
+  // OpenRadioss constrains the body through a held node; radx's body would overwrite the node's motion.
+  std::string s =
+      radx::test::begin_block(2026, "Mg mm s") + "/NODE\n" + cube_nodes(1, 0) + cube_nodes(11, 50);
+  s += brick(1, 1, {1, 2, 3, 4, 5, 6, 7, 8}) + brick(2, 2, {11, 12, 13, 14, 15, 16, 17, 18});
+  s += part(1, 1) + part(2, 2) + materials("");
+  s += "/GRNOD/NODE/9\nheld\n" + Line().put(13, 1, 10).str() + "\n";
+  s += "/BCS/4\nheld\n" + Line().put("111 000", 1, 10).put(0, 11, 20).put(9, 21, 30).str() + "\n/END\n";
+  radx::test::TempDir dir;
+  radx::Diagnostics diags;
+  const auto deck = radx::read_starter_deck(dir.write("m_0000.rad", s), diags);
+  (void)radx::build_model(deck, diags);
+  bool found = false;
+  for (const auto& d : diags.items()) {
+    const std::string text = radx::Diagnostics::format(d);
+    INFO(text);
+    if (text.find("RX510") != std::string::npos && text.find("/BCS on node 13") != std::string::npos)
+      found = true;
+  }
+  CHECK(found);
+}
