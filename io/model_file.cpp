@@ -289,7 +289,7 @@ RADX_SCHEMA(RigidBody, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(main_node),
             RADX_FIELD(skew), RADX_FIELD(ispher), RADX_FIELD(ikrem), RADX_FIELD(icog), RADX_FIELD(ioptoff),
             RADX_FIELD(iexpams), RADX_FIELD(ifail), RADX_FIELD(mass), RADX_FIELD(inertia), RADX_FIELD(fn),
             RADX_FIELD(ft), RADX_FIELD(exp_n), RADX_FIELD(exp_t), RADX_FIELD(group), RADX_FIELD(surface),
-            RADX_FIELD(secondary));
+            RADX_FIELD(secondary), RADX_FIELD(rigid_material));
 RADX_SCHEMA(Accelerometer, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(node), RADX_FIELD(skew),
             RADX_FIELD(fcut));
 RADX_SCHEMA(Sensor, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(type), RADX_FIELD(t_delay),

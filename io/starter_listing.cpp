@@ -26,6 +26,8 @@ std::string law_name(model::MaterialLaw l) {
     case model::MaterialLaw::JohnsonCook: return "LAW2 Johnson-Cook";
     case model::MaterialLaw::PlasTab: return "LAW36 tabulated plasticity";
     case model::MaterialLaw::PlasBrit: return "LAW27 brittle elasto-plastic (shells)";
+    case model::MaterialLaw::Void: return "LAW0 void";
+    case model::MaterialLaw::Rigid: return "LAW13 rigid";
   }
   return "unknown law";
 }
@@ -299,6 +301,15 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
          << ", damage (eps_1 - EPS_t1)/(EPS_m1 - EPS_t1)"
          << " with EPS_m1 " << b.eps_m1 << ", at most d_max1 " << b.d_max1
          << "; element deleted above EPS_f1 " << b.eps_f1 << '\n';
+    }
+    if (mat.law == model::MaterialLaw::Void)
+      os << "    no force; mass rho V, E and nu for the contact stiffness only\n";
+    if (mat.law == model::MaterialLaw::Rigid) {
+      // The bodies its connected elements form (a body is listed under the first law-13 material it met).
+      for (const auto& b : m.rigid_bodies)
+        if (b.rigid_material == mat.id)
+          os << "    rigid body of " << b.secondary.size() << " nodes on the added main node "
+             << m.nodes.id[static_cast<std::size_t>(b.main_node)] << '\n';
     }
     if (mat.fail_jc.on) {
       const auto& f = mat.fail_jc;

@@ -1895,6 +1895,49 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
   }
 }
 
+// Issue 15's materials. /MAT/VOID and /MAT/RIGID compute no internal force (OpenRadioss hm_read_mat00.F,
+// hm_read_mat13.F): their E and nu give the contact stiffness and, for the rigid law, a stable step only.
+void add_void_and_rigid(std::vector<KeywordDecl>& t) {
+  {
+    KeywordDecl k = kw("/MAT/LAW0", "void material: no stiffness, for contact surfaces and mass-less parts",
+                       Header::IdUnit, true, "mat_ID");
+    k.aliases = {"/MAT/VOID", "/MAT/LAW00"};
+    // The card is optional (a free card in OpenRadioss's layout): a blank or missing one is a void without
+    // mass or contact stiffness.
+    k.cards = {
+        card("card 1 (optional)",
+             {R("RHO_I", 1, 20, "density of the element mass; 0 or blank = no mass")
+                  .ge(0.0)
+                  .dims(dim::density),
+              R("E", 21, 40, "Young's modulus, used only for the contact stiffness")
+                  .ge(0.0)
+                  .dims(dim::pressure),
+              R("nu", 41, 60, "Poisson's ratio, used only for the contact stiffness (bulk modulus)")}),
+    };
+    t.push_back(std::move(k));
+  }
+  {
+    KeywordDecl k =
+        kw("/MAT/LAW13", "rigid material: each connected set of its elements moves as one rigid body",
+           Header::IdUnit, true, "mat_ID");
+    k.aliases = {"/MAT/RIGID"};
+    k.cards = {
+        card("card 1", {R("RHO_I", 1, 20, "density: the rigid body's mass is rho_I V of its elements")
+                            .must()
+                            .gt(0.0)
+                            .dims(dim::density),
+                        R("RHO_ref", 21, 40, "reference density; 0 takes RHO_I").dims(dim::density)}),
+        card("card 2", {R("E", 1, 20, "Young's modulus, used only for the contact stiffness")
+                            .must()
+                            .gt(0.0)
+                            .dims(dim::pressure),
+                        R("nu", 21, 40,
+                          "Poisson's ratio, used only for the contact stiffness; 0.5 is taken as 0.499")}),
+    };
+    t.push_back(std::move(k));
+  }
+}
+
 }  // namespace
 
 const std::vector<KeywordDecl>& starter_keywords() {
@@ -1905,6 +1948,7 @@ const std::vector<KeywordDecl>& starter_keywords() {
     add_properties_and_materials(t);
     add_plas_tab_and_failure(t);
     add_plas_brit(t);
+    add_void_and_rigid(t);
     add_groups(t);
     add_contact(t);
     add_loads(t);
@@ -1922,12 +1966,12 @@ const std::vector<std::string_view>& known_unsupported_roots() {
   static const std::vector<std::string_view> roots = [] {
     return std::vector<std::string_view>{
         // materials
-        "/MAT/LAW0", "/MAT/VOID", "/MAT/LAW3", "/MAT/HYDPLA", "/MAT/LAW4", "/MAT/HYD_JCOOK", "/MAT/LAW6",
-        "/MAT/HYDRO", "/MAT/LAW10", "/MAT/LAW19", "/MAT/FABRI", "/MAT/LAW25", "/MAT/COMPSH", "/MAT/LAW32",
-        "/MAT/HILL", "/MAT/LAW34", "/MAT/BOLTZMAN", "/MAT/LAW42", "/MAT/OGDEN", "/MAT/LAW44", "/MAT/COWPER",
-        "/MAT/LAW57", "/MAT/BARLAT3", "/MAT/LAW58", "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69",
-        "/MAT/LAW70", "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90", "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO",
-        "/MAT/USER",
+        "/MAT/LAW3", "/MAT/HYDPLA", "/MAT/LAW4", "/MAT/HYD_JCOOK", "/MAT/LAW6", "/MAT/HYDRO", "/MAT/LAW10",
+        "/MAT/LAW19", "/MAT/FABRI", "/MAT/LAW25", "/MAT/COMPSH", "/MAT/LAW32", "/MAT/HILL", "/MAT/LAW34",
+        "/MAT/BOLTZMAN", "/MAT/LAW42", "/MAT/OGDEN", "/MAT/LAW44", "/MAT/COWPER", "/MAT/LAW57",
+        "/MAT/BARLAT3", "/MAT/LAW58", "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW70",
+        "/MAT/FOAM_TAB", "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90", "/MAT/LAW109", "/MAT/PLAS_ZERIL",
+        "/MAT/ZHAO", "/MAT/USER",
         // properties
         "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE2", "/PROP/TRUSS", "/PROP/TYPE3", "/PROP/BEAM", "/PROP/TYPE8",
         "/PROP/SPR_GENE", "/PROP/SPR_BEAM", "/PROP/TYPE9", "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP",

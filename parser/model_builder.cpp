@@ -146,7 +146,9 @@ void ModelBuilder::build_materials() {
     const bool law2 = path == "/MAT/LAW2";
     const bool law36 = path == "/MAT/LAW36";
     const bool law27 = path == "/MAT/LAW27";
-    if (!law1 && !law2 && !law36 && !law27) continue;
+    const bool law0 = path == "/MAT/LAW0";
+    const bool law13 = path == "/MAT/LAW13";
+    if (!law1 && !law2 && !law36 && !law27 && !law0 && !law13) continue;
     model::Material mat;
     mat.id = r.id;
     mat.title = r.title;
@@ -154,13 +156,21 @@ void ModelBuilder::build_materials() {
     mat.law = law1    ? model::MaterialLaw::Elastic
               : law2  ? model::MaterialLaw::JohnsonCook
               : law27 ? model::MaterialLaw::PlasBrit
-                      : model::MaterialLaw::PlasTab;
+              : law36 ? model::MaterialLaw::PlasTab
+              : law0  ? model::MaterialLaw::Void
+                      : model::MaterialLaw::Rigid;
+    if (law0) {
+      read_void(r, mat);
+      if (register_id(mat_ids_, mat.id, static_cast<std::int32_t>(m_.materials.size()), r, "material", first))
+        m_.materials.push_back(std::move(mat));
+      continue;
+    }
     mat.rho = r.get_real("RHO_I");
     mat.rho_ref = r.get_real("RHO_ref");
     if (mat.rho_ref == 0) mat.rho_ref = mat.rho;
     mat.young = r.get_real("E");
     mat.poisson = r.get_real("nu");
-    if (mat.rho <= 0 && r.given("RHO_I"))
+    if (mat.rho < 0 && r.given("RHO_I"))  // 0 is reported by the field's rule (a value is required)
       error_at(r, "RHO_I", Diag::ValueOutOfRange, "density RHO_I = " + num(mat.rho) + " must be > 0");
     if (mat.young < 0)
       error_at(r, "E", Diag::ValueOutOfRange, "Young's modulus E = " + num(mat.young) + " must be > 0");
@@ -272,6 +282,22 @@ void ModelBuilder::build_materials() {
       m_.materials.push_back(std::move(mat));
   }
   build_failure_models();
+}
+
+// /MAT/VOID (law 0), read as OpenRadioss hm_read_mat00.F does: every value may be blank. The density gives
+// the element mass (rho_I V, none when 0); E and nu give only the contact stiffness (bulk E/3(1-2nu)).
+void ModelBuilder::read_void(const KeywordRecord& r, model::Material& mat) {
+  mat.rho = mat.rho_ref = r.get_real("RHO_I");
+  mat.young = r.get_real("E");
+  mat.poisson = r.get_real("nu");
+  if (mat.poisson < 0 || mat.poisson >= 0.5)
+    error_at(
+        r, "nu", Diag::BadPoisson,
+        "Poisson's ratio nu = " + num(mat.poisson) +
+            " is outside [0, 0.5): the contact stiffness takes the bulk modulus E/3(1-2nu), which would be "
+            "infinite or negative; leave it blank (0) or give a value such as 0.3");
+  mat.shear = mat.young / (2.0 * (1.0 + mat.poisson));
+  mat.bulk = mat.poisson < 0.5 ? mat.young / (3.0 * (1.0 - 2.0 * mat.poisson)) : 0.0;
 }
 
 // /MAT/PLAS_TAB (law 36), read as OpenRadioss hm_read_mat36.F does: one curve keeps no rate effect (Fsmooth,
@@ -883,6 +909,7 @@ model::Model ModelBuilder::build() {
   build_loads();
   build_rigid_walls();
   build_rigid_bodies();
+  build_rigid_material_bodies();  // after the /RBODY: its added main nodes come last
   build_interfaces();
   build_tied_interfaces();
   build_contact_laws();

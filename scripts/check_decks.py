@@ -165,6 +165,11 @@ def mat_law1(v):
     return [card(reals("RHO_I", "RHO_ref")), card(reals("E", "nu"))]
 
 
+def mat_void(v):
+    """/MAT/VOID: one optional card, every value may be blank."""
+    return [card(reals("RHO_I", "E", "nu"), optional=True)]
+
+
 def mat_law2(v):
     """Up to 130: RHO_ref only when columns 11-20 hold text (the old pre-read), no Iflag, no Chard in 90."""
     c2 = [F("E", "R", 1, 20), F("nu", "R", 21, 40)]
@@ -570,6 +575,11 @@ STARTER = {
     "/MAT/PLAS_TAB": ("id", True, mat_law36, None, None),
     "/MAT/LAW27": ("id", True, mat_law27, None, None),
     "/MAT/PLAS_BRIT": ("id", True, mat_law27, None, None),
+    "/MAT/LAW0": ("id", True, mat_void, None, None),
+    "/MAT/VOID": ("id", True, mat_void, None, None),
+    "/MAT/LAW00": ("id", True, mat_void, None, None),
+    "/MAT/LAW13": ("id", True, mat_law1, None, None),
+    "/MAT/RIGID": ("id", True, mat_law1, None, None),
     "/FAIL/JOHNSON": ("id", False, fail_johnson, None, None),
     "/GRNOD/NODE": ("id", True, lambda v: [], "ids", ID_REC),
     "/GRNOD/PART": ("id", True, lambda v: [], "ids", ID_REC),
@@ -1222,7 +1232,8 @@ def semantic(ck, m):
     props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14", "/PROP/SPRING", "/PROP/TYPE4"),
                   "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02",
-                  "/MAT/LAW36", "/MAT/PLAS_TAB", "/MAT/LAW27", "/MAT/PLAS_BRIT"), "material")
+                  "/MAT/LAW36", "/MAT/PLAS_TAB", "/MAT/LAW27", "/MAT/PLAS_BRIT", "/MAT/LAW0", "/MAT/VOID",
+                  "/MAT/LAW00", "/MAT/LAW13", "/MAT/RIGID"), "material")
     grnods = by_id(tuple(k for k in STARTER if k.startswith("/GRNOD/")), "node group")
     surfs = by_id(tuple(k for k in STARTER if k.startswith("/SURF/")), "surface")
 
@@ -1536,6 +1547,11 @@ def semantic(ck, m):
         if nu >= 0.5 or nu <= -1.0:
             p = pos(o, "nu")
             I("RX503", p[0], p[1], "Poisson's ratio %g" % nu)
+        if o["path"] in ("/MAT/LAW0", "/MAT/VOID", "/MAT/LAW00"):
+            continue  # a void's values may all be blank
+        if o["path"] in ("/MAT/LAW13", "/MAT/RIGID") and rho <= 0:
+            p = pos(o, "RHO_I")
+            I("RX502", p[0], p[1], "a rigid material needs RHO_I > 0")
         if val(o, "E", 0.0) <= 0:
             p = pos(o, "E")
             I("RX502", p[0], p[1], "E must be > 0")

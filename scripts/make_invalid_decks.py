@@ -690,6 +690,25 @@ def _():
     d.update("PART1", mat_ID=3)
     d.update("PSH", N=0)
     return d, "/MAT/PLAS_BRIT/3 on shells of N = 0 (law 27 needs integration points)", [("RX510", "PSH.N")]
+@fault("rigid_no_density")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", block("RIG", "/MAT/RIGID", 3, "Rigid steel", RHO_I=0.0, E=210000.0, nu=0.3))
+    return d, "/MAT/RIGID/3 RHO_I = 0 (its rigid body would have no mass)", [("RX502", "RIG.RHO_I")]
+
+
+@fault("rigid_no_young")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", block("RIG", "/MAT/RIGID", 3, "Rigid steel", RHO_I=7.85e-9, E=0.0, nu=0.3))
+    return d, "/MAT/RIGID/3 E = 0 (OpenRadioss refuses it too: the contact stiffness)", [("RX502", "RIG.E")]
+
+
+@fault("void_poisson_half")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", block("VOID", "/MAT/VOID", 3, "Void", RHO_I=0.0, E=1000.0, nu=0.5))
+    return d, "/MAT/VOID/3 nu = 0.5 (its contact bulk modulus E/3(1-2nu) would be infinite)", [("RX503", "VOID.nu")]
 
 
 @fault("fail_johnson_on_elastic")

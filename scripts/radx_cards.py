@@ -216,6 +216,8 @@ LAYOUTS = {
              r("delta_max")),
         Card(r("F"), r("E"), r("Ascale"), r("Hscale", since=120))),
     "/MAT/LAW1": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
+    "/MAT/VOID": Layout(Card(r("RHO_I"), r("E"), r("nu"))),
+    "/MAT/RIGID": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
     "/MAT/PLAS_JOHNS": Layout(
         Card(r("RHO_I"), r("RHO_ref")),
         Card(r("E"), r("nu"), i("Iflag", since=140), i("flagVP", since=2023), r("Pmin", since=2025)),

@@ -114,10 +114,19 @@ void ExplicitEngine::build_nodes() {
 
 void ExplicitEngine::build_groups() {
   const auto& m = model_;
-  // Elements sorted by part (stable), then cut into groups of at most kGroupSize.
-  auto order_by_part = [](const model::ElementBlock& b) {
-    std::vector<std::int32_t> order(b.size());
-    for (std::size_t e = 0; e < b.size(); ++e) order[e] = static_cast<std::int32_t>(e);
+  // Void and rigid elements compute no force (OpenRadioss forint.F skips laws 0 and 13): they get no group,
+  // hence no stable step either. Their mass is in the nodal masses, a rigid one's motion in its rigid body.
+  auto has_forces = [&](std::int32_t part) {
+    const auto law =
+        m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(part)].material)].law;
+    return law != model::MaterialLaw::Void && law != model::MaterialLaw::Rigid;
+  };
+  // Elements with forces sorted by part (stable), then cut into groups of at most kGroupSize.
+  auto order_by_part = [&](const model::ElementBlock& b) {
+    std::vector<std::int32_t> order;
+    order.reserve(b.size());
+    for (std::size_t e = 0; e < b.size(); ++e)
+      if (has_forces(b.part[e])) order.push_back(static_cast<std::int32_t>(e));
     std::stable_sort(order.begin(), order.end(),
                      [&](std::int32_t a, std::int32_t c) { return b.part[a] < b.part[c]; });
     return order;

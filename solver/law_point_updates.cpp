@@ -268,6 +268,8 @@ double jc_rate_factor(const MaterialParams& p, double rate) {
     case model::MaterialLaw::JohnsonCook: return rate_factor(p, rate);
     case model::MaterialLaw::PlasTab: return p.n_curves > 1 ? rate : 1.0;
     case model::MaterialLaw::Elastic:
+    case model::MaterialLaw::Void:
+    case model::MaterialLaw::Rigid:
     case model::MaterialLaw::PlasBrit: break;  // law 27 takes its rate term per point (law27_plas_brit.cpp)
   }
   return 1.0;
@@ -279,7 +281,9 @@ double shell_rate_threshold(const MaterialParams& p) {
     case model::MaterialLaw::JohnsonCook: return p.c != 0 ? p.eps_dot0 : kInf;
     case model::MaterialLaw::PlasTab: return p.n_curves > 1 ? -kInf : kInf;
     case model::MaterialLaw::Elastic:
-    case model::MaterialLaw::PlasBrit: break;
+    case model::MaterialLaw::PlasBrit:
+    case model::MaterialLaw::Void:
+    case model::MaterialLaw::Rigid: break;
   }
   return kInf;
 }

@@ -71,22 +71,26 @@ RigidBodies::RigidBodies(const model::Model& m, std::span<const std::int64_t> in
   for (const auto& rb : m.rigid_bodies) {
     // /RBODY/OFF in the engine deck: the body is not formed in this run; its nodes move freely.
     if (std::find(inactive.begin(), inactive.end(), rb.id) != inactive.end()) continue;
-    const std::string what = "/RBODY/" + std::to_string(rb.id);
+    const std::string what = rb.rigid_material != 0
+                                 ? "the rigid body of /MAT/RIGID/" + std::to_string(rb.rigid_material)
+                                 : "/RBODY/" + std::to_string(rb.id);
     if (rb.main_node == model::kNone || static_cast<std::size_t>(rb.main_node) >= m.nodes.size())
       throw std::runtime_error(what + ": no main node");
     if (rb.icog < 1 || rb.icog > 4) throw std::runtime_error(what + ": ICoG must be 1, 2, 3 or 4");
     RigidBodyInfo b;
     b.id = rb.id;
+    b.name = what;
     b.main = rb.main_node;
     b.secondary = rb.secondary;
     b.sensor = m.sensor_index(rb.sensor);
-    const bool sensor = b.sensor != model::kNone;
+    // With a sensor, or built from /MAT/RIGID elements: formed from the secondaries alone.
+    b.from_secondaries = b.sensor != model::kNone || rb.rigid_material != 0;
     b.ispher = rb.ispher == 1 ? 1 : 2;
-    b.icog = sensor ? 2 : rb.icog;  // with a sensor: formed from the secondaries alone
+    b.icog = b.from_secondaries ? 2 : rb.icog;
     for (const auto n : b.secondary) secondary_flag_[static_cast<std::size_t>(n)] = 1;
+    deck_mass_.push_back(b.from_secondaries ? 0.0 : rb.mass);
+    deck_inertia_.push_back(b.from_secondaries ? std::array<double, 6>{} : rb.inertia);
     bodies_.push_back(std::move(b));
-    deck_mass_.push_back(sensor ? 0.0 : rb.mass);
-    deck_inertia_.push_back(sensor ? std::array<double, 6>{} : rb.inertia);
   }
 }
 
@@ -110,12 +114,14 @@ void RigidBodies::release(RigidBodyInfo& b, NodeState& s) {
 void RigidBodies::initialize(NodeState& s, std::span<const double> sensor_starts) {
   for (std::size_t bi = 0; bi < bodies_.size(); ++bi) {
     auto& b = bodies_[bi];
-    const std::string what = "/RBODY/" + std::to_string(b.id);
+    const std::string& what = b.name;
     const auto mn = static_cast<std::size_t>(b.main);
     const bool sensor = b.sensor != model::kNone;
-    if (sensor) {
+    if (b.from_secondaries) {
       s.mass[mn] = 0;
       s.inertia[mn] = 0;
+    }
+    if (sensor) {
       if (time_origin(b.sensor, sensor_starts) <= 0) {  // the sensor is on at t = 0: never formed
         release(b, s);
         continue;
@@ -192,7 +198,8 @@ void RigidBodies::initialize(NodeState& s, std::span<const double> sensor_starts
     s.mass[mn] = mass;
     s.inertia[mn] = lam.minCoeff();
     Vec3 vm = velocity(s, mn), wm = spin(s, mn);
-    if (sensor) {  // the velocities that keep the secondaries' momentum and angular momentum (rbypid.F)
+    if (b.from_secondaries) {  // the velocities that keep the secondaries' momentum and angular momentum
+                               // (rbypid.F)
       Vec3 p = Vec3::Zero(), l = Vec3::Zero();
       for (const auto n : b.secondary) {
         const auto k = static_cast<std::size_t>(n);

@@ -46,6 +46,8 @@
 //     inertia, the secondaries go on from the rigid velocities they had (and get their weight again).
 //   Radioss forms the body again if the sensor switches off; the starter refuses that use (a sensor with
 //   Tstop), so a released body stays released.
+// A body of /MAT/RIGID (model::RigidBody::rigid_material) is formed as one with a sensor that never releases
+// it: the starter gives it an added main node (OpenRadioss rigid_mat.F has none; the motion is the same).
 // Not supported (construction throws std::runtime_error): a body without main node. Skews, /RBODY/ON and
 // rigid-body hierarchies are not handled (the starter rejects skews).
 // No allocation in the per-cycle calls, except the messages when a body is released.
@@ -64,12 +66,16 @@ namespace radx::solver {
 
 struct RigidBodyInfo {
   std::int64_t id = 0;
+  std::string name;  // "/RBODY/id", or the /MAT/RIGID material's body, for messages
   std::int32_t main = model::kNone;
   std::vector<std::int32_t> secondary;
   std::int32_t sensor = model::kNone;  // dense index into model.sensors: the sensor that releases the body
   bool active = true;                  // false once released by its sensor (or never formed)
   int release_in = 0;                  // cycles left before the release (0: none pending)
   int ispher = 2, icog = 1;
+  // Formed from its secondary nodes alone (a body with a sensor, or one of /MAT/RIGID's): no own mass or
+  // inertia at the main node, ICoG 2, and the velocities that keep the secondaries' momenta.
+  bool from_secondaries = false;
   double mass = 0;                          // M, the main node's mass after set-up
   std::array<double, 6> tensor{};           // global inertia tensor at set-up: Ixx Iyy Izz Ixy Iyz Ixz
   std::array<double, 3> principal{};        // I1 I2 I3 in use (after Ispher)

@@ -62,6 +62,11 @@ enum class MaterialLaw : std::uint8_t {
   JohnsonCook = 2,
   PlasTab = 36,
   PlasBrit = 27,  // /MAT/PLAS_BRIT (shells only)
+  // Issue 15: elements of these laws compute no internal force (OpenRadioss forint.F skips laws 0 and 13).
+  // A void element only carries its mass (rho_I V, 0 when no density is given) and its contact stiffness
+  // (E, nu); a rigid one is part of the rigid body the starter builds from the connected law-13 elements.
+  Void = 0,
+  Rigid = 13,
 };
 
 // /MAT/PLAS_TAB (law 36): yield curves sigma_y(eps_p) per strain rate, as given in the deck (the engine adds
@@ -346,6 +351,11 @@ struct RigidBody {
   std::int32_t group = kNone;
   std::int32_t surface = kNone;
   std::vector<std::int32_t> secondary;  // main node removed
+  // /MAT/RIGID (law 13): user id of the material whose connected elements form this body, 0 for a /RBODY.
+  // Such a body is built by the starter (id 0, not named by /RBODY/OFF or /TH/RBODY) on an internal main
+  // node of its own and, as a body with a sensor, from its secondary nodes alone (ICoG 2, no deck mass or
+  // inertia, the velocities that keep their momentum and angular momentum): OpenRadioss rigid_mat.F.
+  std::int64_t rigid_material = 0;
 };
 
 // /SECT: a cut through the model (OpenRadioss hm_read_sect.F, section.F). The engine sums the forces (and

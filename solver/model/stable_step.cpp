@@ -15,12 +15,14 @@ namespace radx::model {
 
 namespace {
 
-// Sound speed of the element's material, 0 when it has none (no material or no density).
+// Sound speed of the element's material, 0 when it has none (no material or no density) or computes no force
+// (void and rigid elements: the engine gives them no step).
 double sound_speed(const Model& m, std::int32_t part, bool solid) {
   if (part == kNone) return 0;
   const auto mi = m.parts[static_cast<std::size_t>(part)].material;
   if (mi == kNone) return 0;
   const Material& mat = m.materials[static_cast<std::size_t>(mi)];
+  if (mat.law == MaterialLaw::Void || mat.law == MaterialLaw::Rigid) return 0;
   if (!(mat.rho > 0) || !(mat.young > 0)) return 0;
   return solid ? std::sqrt((mat.bulk + 4.0 * mat.shear / 3.0) / mat.rho) : std::sqrt(mat.young / mat.rho);
 }
