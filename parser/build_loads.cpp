@@ -23,6 +23,7 @@
 #include <iterator>
 #include <map>
 #include <sstream>
+#include <unordered_map>
 
 #include "parser/field_parse.hpp"
 #include "parser/model_builder.hpp"
@@ -195,16 +196,27 @@ void check_bcs_skews(ModelBuilder& b, const std::vector<const KeywordRecord*>& r
   }
 }
 
+// Two /BCS with one id are both applied, with a warning: OpenRadioss's starter reads them without a word
+// (its QA deck LOIS/LOI13/solide does it) and nothing refers to a /BCS by its id.
 void build_bcs(ModelBuilder& b) {
-  IdIndex ids;
-  const auto recs = build_each(b, "/BCS", "boundary condition", b.m_.bcs, ids, [&](const KeywordRecord& r) {
+  std::unordered_map<std::int64_t, SourcePos> first;
+  std::vector<const KeywordRecord*> recs;
+  for (const auto* r : b.deck_.of("/BCS")) {
     static constexpr std::array<std::string_view, 6> kDofs = {"Tx", "Ty", "Tz", "Rx", "Ry", "Rz"};
     model::BoundaryCondition c;
-    for (std::size_t k = 0; k < kDofs.size(); ++k) c.fixed[k] = r.get_int(kDofs[k]) != 0 ? 1 : 0;
-    c.skew = skew_ref(b, r);
-    c.group = group_ref(b, r, "grnod_ID", false);
-    return c;
-  });
+    c.id = r->id;
+    c.title = r->title;
+    for (std::size_t k = 0; k < kDofs.size(); ++k) c.fixed[k] = r->get_int(kDofs[k]) != 0 ? 1 : 0;
+    c.skew = skew_ref(b, *r);
+    c.group = group_ref(b, *r, "grnod_ID", false);
+    if (const auto [it, fresh] = first.emplace(c.id, r->pos); !fresh)
+      b.warning_at(*r, "id", Diag::DuplicateId,
+                   "/BCS id " + std::to_string(c.id) + " is also used at " + b.deck_.files[it->second.file] +
+                       ":" + std::to_string(it->second.line) +
+                       "; both are applied, their fixed directions OR-ed, as OpenRadioss does");
+    b.m_.bcs.push_back(c);
+    recs.push_back(r);
+  }
   check_bcs_skews(b, recs);
 }
 

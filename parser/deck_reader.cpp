@@ -514,6 +514,35 @@ class StarterReader {
     }
   }
 
+  // A line of a record or id list that starts with a letter cannot be a record: OpenRadioss's reader skips
+  // such lines without a word (its QA decks include a qadiags.inc that holds only a licence header of
+  // "Copyright>" lines, read after a /GRNOD or /TH list). radx skips them too, with one warning per block
+  // naming the lines, because a typo there drops records.
+  struct SkippedText {
+    std::size_t count = 0;
+    SourcePos first{};
+    std::string sample;
+  };
+  static bool starts_with_text(std::string_view text) {
+    const auto t = trim(text);
+    return !t.empty() && std::isalpha(static_cast<unsigned char>(t.front()));
+  }
+  bool skip_text_line(const TextLine& line, SkippedText& skipped) {
+    if (!starts_with_text(line.text)) return false;
+    if (skipped.count++ == 0) {
+      skipped.first = line.pos;
+      skipped.sample = std::string(trim(line.text).substr(0, 40));
+    }
+    return true;
+  }
+  void report_skipped(const SkippedText& skipped, std::string_view path, const About& about) {
+    if (skipped.count == 0) return;
+    diags_.warning(Diag::ExtraData, at(skipped.first, 1), about,
+                   std::to_string(skipped.count) + " line(s) from here start with text ('" + skipped.sample +
+                       "') and are not records of " + std::string(path) +
+                       ": skipped, as OpenRadioss skips them");
+  }
+
   void read_block(std::size_t first, std::size_t last) {
     const auto& lines = text_.lines;
     const TextLine& head = lines[first];
@@ -691,16 +720,23 @@ class StarterReader {
           }
         }
         break;
-      case Tail::Records:
+      case Tail::Records: {
         init_table(rec.records, decl->record);
+        SkippedText skipped;
         for (; cur < last; ++cur) {
-          if (trim(lines[cur].text).empty()) continue;
+          if (trim(lines[cur].text).empty() || skip_text_line(lines[cur], skipped)) continue;
           read_record(rec.records, lines[cur], about);
         }
+        report_skipped(skipped, decl->path, about);
         break;
-      case Tail::IdList:
-        for (; cur < last; ++cur) read_ids(rec, lines[cur], about);
+      }
+      case Tail::IdList: {
+        SkippedText skipped;
+        for (; cur < last; ++cur)
+          if (!skip_text_line(lines[cur], skipped)) read_ids(rec, lines[cur], about);
+        report_skipped(skipped, decl->path, about);
         break;
+      }
       case Tail::Text:
         for (; cur < last; ++cur) {
           const auto& l = lines[cur];
@@ -727,15 +763,18 @@ class StarterReader {
             if (!name.empty()) rec.th_variables.push_back(upper(name));
           }
         }
+        SkippedText skipped;
         if (decl->tail == Tail::ThVarsThenIds) {
-          for (; cur < last; ++cur) read_ids(rec, lines[cur], about);
+          for (; cur < last; ++cur)
+            if (!skip_text_line(lines[cur], skipped)) read_ids(rec, lines[cur], about);
         } else {
           init_table(rec.records, decl->record);
           for (; cur < last; ++cur) {
-            if (trim(lines[cur].text).empty()) continue;
+            if (trim(lines[cur].text).empty() || skip_text_line(lines[cur], skipped)) continue;
             read_record(rec.records, lines[cur], about);
           }
         }
+        report_skipped(skipped, decl->path, about);
         break;
       }
     }

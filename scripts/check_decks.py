@@ -1071,7 +1071,8 @@ class Checker:
                 continue
             if k >= len(data):
                 obj["cards"].append(None)
-                obj.setdefault("missing", []).append(c)
+                if not c["optional"]:
+                    obj.setdefault("missing", []).append(c)
                 continue
             cm, r = data[k]
             k += 1
@@ -1104,6 +1105,14 @@ class Checker:
             # every character but blanks, each with the line it was written on
             obj["text"] = [(ch, (r[0], r[1])) for _, r in data[k:] for ch in r[2] if ch not in " \t"]
             k = len(data)
+        if tail in ("records", "threcords", "ids", "thids"):
+            # a list line that starts with a letter is no record: OpenRadioss skips it, radx warns once
+            rest = [(cm, r) for cm, r in data[k:] if not r[2].strip()[:1].isalpha()]
+            skipped = len(data) - k - len(rest)
+            if skipped:
+                first = next(r for _, r in data[k:] if r[2].strip()[:1].isalpha())
+                self.warn(first[0], first[1], "%s: %d line(s) start with text and are skipped" % (path, skipped))
+            data = data[:k] + rest
         if tail in ("records", "threcords"):
             for cm, r in data[k:]:
                 self.check_names_line(cm, recfields, path)

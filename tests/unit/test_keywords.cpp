@@ -1690,3 +1690,32 @@ TEST_CASE("a one-file deck is read by both readers: engine part, /END/ENGINE, th
   CHECK(starter.records[2].keyword() == "/FUNCT");
   CHECK(starter.records[2].records.size() == 2u);
 }
+
+TEST_CASE(
+    "lines of a record or id list that start with text are skipped with one warning, as OpenRadioss does",
+    "[keywords]") {
+  // OpenRadioss's QA decks end with `#include qadiags.inc`, a file holding only "Copyright>" licence lines,
+  // read as data of the block before it.
+  TempDir dir;
+  dir.write("licence.inc", "Copyright>        OpenRadioss\nCopyright>\nCopyright>  see <https://x>.\n");
+  const std::string s = begin_lines(2022) + "/NODE\n" + Card().at(1, 10, 7).at(11, 30, "1.5").str() + "\n" +
+                        "Copyright> text inside a record list\n" +
+                        Card().at(1, 10, 8).at(11, 30, "4.5").str() + "\n" + "/GRNOD/NODE/3\nthe group\n" +
+                        Card().at(1, 10, 7).at(11, 20, 8).str() + "\n#include licence.inc\n/END\n";
+  const auto path = dir.write("SKIP_0000.rad", s);
+  Diagnostics diags;
+  const auto deck = radx::read_starter_deck(path, diags);
+  INFO(all_diags(diags));
+  CHECK_FALSE(diags.has_errors());
+  // One warning per block, however many lines it skipped.
+  CHECK(has_diag(diags, Diag::ExtraData, radx::Severity::Warning,
+                 "1 line(s) from here start with text ('Copyright> text inside a record list')"));
+  CHECK(has_diag(diags, Diag::ExtraData, radx::Severity::Warning,
+                 "3 line(s) from here start with text ('Copyright>        OpenRadioss')"));
+  const auto node = deck.of("/NODE");
+  REQUIRE(node.size() == 1u);
+  CHECK(node[0]->records.size() == 2u);
+  const auto g = deck.of("/GRNOD/NODE");
+  REQUIRE(g.size() == 1u);
+  CHECK(g[0]->ids == std::vector<std::int64_t>{7, 8});
+}

@@ -205,3 +205,44 @@ TEST_CASE("/IMPVEL, /INIVEL and /CLOAD along skew axes", "[skew]") {
     CHECK(close(loads.concentrated_load_work(dt), 4.0 * r * dt, 1e-15));
   }
 }
+
+TEST_CASE("two /BCS with one id are both applied, OR-ed, with a warning (OpenRadioss reads them silently)",
+          "[skew][bcs]") {
+  // OpenRadioss's QA deck LOIS/LOI13/solide defines /BCS/1 twice on two node groups; its listing applies
+  // both.
+  std::string s = radx::test::begin_block(2026, "Mg mm s") + "/NODE\n";
+  for (int k = 0; k < 4; ++k)
+    s += Line().put(k + 1, 1, 10).put(k % 2 == 1 ? 1.0 : 0.0, 11, 30).put(k >= 2 ? 1.0 : 0.0, 31, 50).str() +
+         "\n";
+  s += "/SHELL/1\n" + Line().put(1, 1, 10).put(1, 11, 20).put(2, 21, 30).put(4, 31, 40).put(3, 41, 50).str();
+  s += "\n/PART/1\nplate\n" + Line().put(1, 1, 10).put(1, 11, 20).str() + "\n";
+  s += "/PROP/SHELL/1\nshell\n\n\n" + Line().put(1.0, 21, 40).str() + "\n";
+  s += "/MAT/LAW1/1\nsteel\n" + Line().put(7.85e-9, 1, 20).str() + "\n" +
+       Line().put(210000.0, 1, 20).put(0.3, 21, 40).str() + "\n";
+  s += "/GRNOD/NODE/2\na\n" + Line().put(1, 1, 10).put(2, 11, 20).str() + "\n";
+  s += "/GRNOD/NODE/3\nb\n" + Line().put(2, 1, 10).put(3, 11, 20).str() + "\n";
+  s += "/BCS/1\nfirst\n" + Line().put("100 000", 1, 10).put(0, 11, 20).put(2, 21, 30).str() + "\n";
+  s += "/BCS/1\nsecond\n" + Line().put("010 000", 1, 10).put(0, 11, 20).put(3, 21, 30).str() + "\n/END\n";
+  radx::test::TempDir dir;
+  radx::Diagnostics diags;
+  const auto deck = radx::read_starter_deck(dir.write("b_0000.rad", s), diags);
+  const auto md = radx::build_model(deck, diags);
+  bool warned = false;
+  for (const auto& d : diags.items()) {
+    INFO(radx::Diagnostics::format(d));
+    CHECK(d.severity != radx::Severity::Error);
+    warned = warned || (d.code == radx::Diag::DuplicateId && d.severity == radx::Severity::Warning);
+  }
+  CHECK(warned);
+  REQUIRE(md.bcs.size() == 2u);
+  // Node 2 is in both groups: X from the first, Y from the second.
+  sv::NodeState st;
+  st.resize(md.nodes.size());
+  const sv::SkewFrames frames(md);
+  sv::BoundaryConditions bcs(md, frames);
+  bcs.set_fixed_bits(st);
+  CHECK(st.fixed[0] == 0b001);
+  CHECK(st.fixed[1] == 0b011);
+  CHECK(st.fixed[2] == 0b010);
+  CHECK(st.fixed[3] == 0);
+}
