@@ -368,7 +368,26 @@ void Builder::time_steps(model::RunControls& rc) {
   }
 
   rc.nodal = model::DtControl{};
+  if (const EngineRecord* r = single("/DT/NODA")) {
+    // The action comes in the header: /DT/NODA/STOP reaches this declaration too (a text option).
+    std::int64_t option = 0;
+    if (!r->header.empty() && parse_int(r->header[0], option) != NumberStatus::Ok)
+      diags_.error(Diag::UnsupportedKeyword, deck_.where(r->pos, 1), About{r->decl->path},
+                   "/DT/NODA/" + r->header[0] +
+                       ": a nodal time step with that action changes the results and radx cannot run it; "
+                       "radx runs /DT/NODA (no action at Tmin) and /DT/NODA/CST (mass added below Tmin)");
+    else if (option != 0)
+      error(*r, Diag::ValueOutOfRange,
+            "/DT/NODA/" + std::to_string(option) +
+                ": the option is 0 or blank (a node group is read only by "
+                "/DT/NODA/CST/1)");
+    else
+      read_dt(*r, rc.nodal, kDefaultScale, 0.0, DtAction::None);
+  }
   if (const EngineRecord* r = single("/DT/NODA/CST")) {
+    if (rc.nodal.given)
+      error(*r, Diag::DuplicateSingleton,
+            "/DT/NODA and /DT/NODA/CST are both given; give one nodal time step");
     read_dt(*r, rc.nodal, kDefaultScale, 0.0, DtAction::AddMass);
     const double pct = r->value(0, 2);
     if (pct < 0)

@@ -127,6 +127,13 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
       t.push_back(std::move(k));
     }
     {
+      // /DT/NODA and /DT/NODA/0: OpenRadioss's freform.F leaves the action at none (IDT 0).
+      auto k = ekw("/DT/NODA", "nodal time step as the run's step, no action at the minimum");
+      k.header_fields = {"option"};
+      k.lines = {line({"Tscale", "Tmin"}, 1, {dim::none, dim::time})};
+      t.push_back(std::move(k));
+    }
+    {
       auto k = ekw("/DT/NODA/CST", "nodal time step with mass added below the minimum");
       k.header_fields = {"option"};
       k.lines = {line({"Tscale", "Tmin", "%AddedMass"}, 2, {dim::none, dim::time, dim::none}),
@@ -272,9 +279,8 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
     t.push_back(unsupported("/DT/CST_AMS", "nodal added mass together with advanced mass scaling",
                             "radx would need the non-diagonal AMS mass matrix and its iterative solve"));
     t.push_back(unsupported("/DT/NODA",
-                            "nodal time step without added mass or with another action (STOP, SET, KILL, "
-                            "the older CST1)",
-                            "radx would need the nodal time step as the run's step; it runs /DT/NODA/CST"));
+                            "nodal time step with another action (STOP, SET, KILL, the older CST1)",
+                            "radx would need that action; it runs /DT/NODA (no action) and /DT/NODA/CST"));
     t.push_back(unsupported("/DT/INTER", "other interface time-step actions (STOP, SET, KILL, AMS, V4, V5)",
                             "radx would need that action; it runs /DT/INTER/CST, /DEL and /LAG"));
     t.push_back(unsupported("/DT/BRICK", "brick time step with another action (none, STOP, DEL, KILL, SET)",

@@ -73,14 +73,14 @@ void check_initial_step(const Deck& deck, const model::Model& m, const model::St
 void check_cycle_count(const EngineDeck& engine, const model::RunControls& controls, const model::Model& m,
                        const model::StepEstimate& step, Diagnostics& diags) {
   if (!(step.dt > 0) || !(controls.t_stop > 0)) return;
-  // /DT/NODA/CST replaces the element step by the nodal one, with its own scale, and adds mass so that
-  // it stays at Tmin at least: a mass-scaled run is not warned of for the step it would have without.
+  // /DT/NODA replaces the element step by the nodal one, with its own scale; /DT/NODA/CST adds mass so
+  // that it stays at Tmin at least: a mass-scaled run is not warned of for the step it would have without.
   const auto& noda = controls.nodal;
-  const bool nodal = noda.given && noda.action == model::DtAction::AddMass;
+  const bool nodal = noda.given;
   const auto& dt_control = nodal ? noda : controls.global;
   const double scale = dt_control.scale > 0 ? dt_control.scale : 0.9;
   double dt = scale * step.dt;
-  if (nodal && noda.t_min > 0) dt = std::max(dt, noda.t_min);
+  if (nodal && noda.action == model::DtAction::AddMass && noda.t_min > 0) dt = std::max(dt, noda.t_min);
   dt = std::min(dt, controls.dt_max);
   if (!(dt > 0)) return;
   const double cycles = controls.t_stop / dt;

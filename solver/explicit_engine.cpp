@@ -530,7 +530,7 @@ double ExplicitEngine::nodal_time_step(StepControl& control) {
     const double k = s.stiffness[n];
     if (k <= 0 || s.mass[n] <= 0) continue;
     double dt = noda.scale * std::sqrt(2.0 * s.mass[n] / k);
-    if (noda.t_min > 0 && dt < noda.t_min) {
+    if (noda.action == model::DtAction::AddMass && noda.t_min > 0 && dt < noda.t_min) {
       const double m_needed = 0.5 * k * (noda.t_min / noda.scale) * (noda.t_min / noda.scale);
       s.added_mass[n] += m_needed - s.mass[n];
       s.mass[n] = m_needed;
@@ -728,7 +728,7 @@ bool ExplicitEngine::choose_time_step(LoopState& L, RunResult& res) {
         cst_violation_ + " (cycle " + std::to_string(L.cycle) + ", time " + std::to_string(L.time) + ")";
     return false;
   }
-  if (controls_.nodal.action == model::DtAction::AddMass && controls_.nodal.given) {
+  if (controls_.nodal.given) {  // /DT/NODA and /DT/NODA/CST: the nodal step replaces the element step
     StepControl nctl;
     dt_elem = nodal_time_step(nctl);  // /DT/NODA replaces the element step by the nodal one
     ctl = nctl;

@@ -122,6 +122,35 @@ TEST_CASE("/DT/NODA/CST adds the mass that keeps the nodal step at Tmin", "[engi
   CHECK(res.dt <= rc.nodal.t_min * (1 + 1e-12));
 }
 
+TEST_CASE("/DT/NODA (no action) runs at the nodal step and adds no mass below Tmin", "[engine]") {
+  // OpenRadioss's freform.F leaves /DT/NODA and /DT/NODA/0 without an action (IDT 0): the nodal step is the
+  // run's step, Tmin changes nothing.
+  const double a = 10.0;
+  auto m = cube(a);
+  const double E = 210000, nu = 0.3, rho = 7.85e-9;
+  const double K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
+  const double c = std::sqrt((K + 4 * G / 3) / rho);
+  const double dt_e = a / (c * (0.05 + std::sqrt(1 + 0.05 * 0.05)));  // elements.md 4.4, at rest
+  radx::model::RunControls rc;
+  rc.t_stop = 1e-5;
+  rc.nodal.given = true;
+  rc.nodal.action = radx::model::DtAction::None;
+  rc.nodal.scale = 0.67;
+  rc.nodal.t_min = 2 * dt_e;  // above the nodal step: /DT/NODA/CST would add mass here
+  double first = 0;
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  const auto res = engine.run([&](const radx::solver::CycleReport& r) {
+    if (first == 0) first = r.dt;
+    return true;
+  });
+  REQUIRE(res.status == radx::solver::RunStatus::Normal);
+  CHECK(res.last.added_mass == 0.0);
+  CHECK(res.last.control.kind == radx::solver::StepControl::Kind::Node);
+  // A lone cube's nodal step is its element step (elements.md 4.5), here at the /DT/NODA scale 0.67 instead
+  // of /DT's 0.9; relative round-off tolerance.
+  CHECK(first == Approx(0.67 * dt_e).epsilon(1e-9));
+}
+
 TEST_CASE("the /DT minimum stops the run with a message, the step grows by at most 10 % a cycle",
           "[engine]") {
   auto m = cube(10.0);

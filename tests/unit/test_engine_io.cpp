@@ -286,6 +286,10 @@ TEST_CASE("engine deck errors are located at their keyword line", "[engine-io]")
       {"duplicate /DT", "/DT\n0.9 0\n/DT\n0.8 0\n", "/DT\n0.8", Diag::DuplicateSingleton, "given again"},
       {"nodal group", "/DT/NODA/CST/1\n0.9 1e-7\n12\n", "/DT/NODA/CST", Diag::UnimplementedOption,
        "grnod_ID = 12"},
+      {"nodal stop", "/DT/NODA/STOP\n0.9 1e-7\n", "/DT/NODA/STOP", Diag::UnsupportedKeyword,
+       "radx runs /DT/NODA (no action at Tmin)"},
+      {"nodal twice", "/DT/NODA/0\n0.9 1e-7\n/DT/NODA/CST\n0.9 1e-7\n", "/DT/NODA/CST",
+       Diag::DuplicateSingleton, "both given"},
       {"restart letter", "", "/RUN", Diag::UnimplementedOption, "restart letter"},
   };
   for (const auto& c : cases) {
