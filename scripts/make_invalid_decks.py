@@ -974,12 +974,12 @@ def _():
         "/CTCLAW/3: tabulated law n3 names /FUNCT/12; only /FUNCT/11 exists", [("RX704", "CTC.law")]
 
 
-@fault("ishell_4_warped")
+@fault("ishell_3_elastoplastic_hourglass")
 def _():
     d = base()
-    d.update("PSH", Ishell=4)
-    return d, "/PROP/SHELL/1 Ishell = 4 (improved Belytschko-Tsay with warping) on the plate's 4-node shells: " \
-        "radx implements Ishell 1, 12 and 24 only (--allow-substitutions would run Ishell 1 and list it)", \
+    d.update("PSH", Ishell=3)
+    return d, "/PROP/SHELL/1 Ishell = 3 (Belytschko-Tsay with elasto-plastic hourglass) on the plate's 4-node " \
+        "shells: radx implements Ishell 1, 4, 12 and 24 only (--allow-substitutions would run Ishell 1 and list it)", \
         [("RX510", "PSH.Ishell")]
 
 
