@@ -634,7 +634,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     if (!outputs(L, last, on_cycle, res)) break;
     if (last) break;
     if (!integrate(L, res)) break;
-    L.time += L.dt2;  // 11.
+    L.time = L.reaches_end ? controls_.t_stop : L.time + L.dt2;  // 11.
     L.dt1 = L.dt2;
     ++L.cycle;
     L.first = false;
@@ -756,7 +756,13 @@ bool ExplicitEngine::choose_time_step(LoopState& L, RunResult& res) {
     res.message = "no finite time step: the model has no element with a stable step";
     return false;
   }
-  if (L.time + L.dt2 > controls_.t_stop) L.dt2 = std::max(controls_.t_stop - L.time, 0.0);
+  // The step that reaches the end time ends on it. A step that would leave less than a millionth of
+  // itself is stretched to the end (stable: the step carries its /DT scale): without that, time summed in
+  // floating point leaves a last cycle of round-off size (3000 steps of 1e-3 s end 2.2e-13 s short of 3 s)
+  // that evaluates loads and imposed velocities at the end time once more, as OpenRadioss does not.
+  const double remaining = controls_.t_stop - L.time;
+  L.reaches_end = L.dt2 >= remaining - 1e-6 * L.dt2;
+  if (L.reaches_end) L.dt2 = std::max(remaining, 0.0);
   L.control = ctl;
   if (controls_.global.t_min > 0 && dt_elem < controls_.global.t_min) {
     res.status = RunStatus::Error;

@@ -188,6 +188,7 @@ class ExplicitEngine {
     double time = 0, dt1 = 0, dt2 = 0;
     std::int64_t cycle = 0;
     bool first = true;
+    bool reaches_end = false;     // this cycle's step ends exactly at the /RUN end time
     StepControl control;          // what set the step of the last cycle
     double dt_contact = 0;        // this cycle's contact vote
     StepControl contact_control;  // and its pair

@@ -151,6 +151,30 @@ TEST_CASE("/DT/NODA (no action) runs at the nodal step and adds no mass below Tm
   CHECK(first == Approx(0.67 * dt_e).epsilon(1e-9));
 }
 
+TEST_CASE("a run of N equal steps ends at its end time in N cycles, without a round-off cycle", "[engine]") {
+  // 3000 steps of 1e-9 s summed in floating point end 1e-22 s away from 3e-6 s; the run must not add a cycle
+  // of that size (it would evaluate the loads at the end time once more) and must end exactly at Tstop.
+  auto m = cube(10.0, -1000.0);
+  radx::model::RunControls rc;
+  // A step far below the cube's own (about 1.6e-6 s), chosen so that the sum falls short of 3000 dt: the case
+  // the rule is for (a sum above it is cut by the last step anyway).
+  double summed = 0;
+  for (int tries = 0; tries < 100; ++tries) {
+    rc.dt_max = 1e-9 * (1.0 + 0.01 * tries);
+    rc.t_stop = 3000 * rc.dt_max;
+    summed = 0;
+    for (int k = 0; k < 3000; ++k) summed += rc.dt_max;
+    if (summed < rc.t_stop) break;
+  }
+  INFO("dt " << rc.dt_max << ": summed " << summed << " vs " << rc.t_stop);
+  REQUIRE(summed < rc.t_stop);
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  const auto res = engine.run({});
+  REQUIRE(res.status == radx::solver::RunStatus::Normal);
+  CHECK(res.cycles == 3000);
+  CHECK(res.time == rc.t_stop);
+}
+
 TEST_CASE("the /DT minimum stops the run with a message, the step grows by at most 10 % a cycle",
           "[engine]") {
   auto m = cube(10.0);
