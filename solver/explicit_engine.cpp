@@ -187,6 +187,28 @@ void ExplicitEngine::build_groups() {
         };
         g.area0[static_cast<std::size_t>(i)] =
             triangle ? model::triangle_area(X(0), X(1), X(2)) : model::quad_area(X(0), X(1), X(2), X(3));
+        // /FAIL/TAB's element-size factor from the length at t = 0 (OpenRadioss keeps the starter's ALDT,
+        // cfailini.F): elements.md 4.1 L = max(A / longest diagonal, shortest side or diagonal) for quads,
+        // 4.2 2A / longest side for triangles.
+        const auto& fp = materials_[static_cast<std::size_t>(mat)].fail;
+        if (fp.on && fp.has_size) {
+          auto d2 = [](const model::Vec3& a, const model::Vec3& c) {
+            return (a[0] - c[0]) * (a[0] - c[0]) + (a[1] - c[1]) * (a[1] - c[1]) +
+                   (a[2] - c[2]) * (a[2] - c[2]);
+          };
+          const double a0 = g.area0[static_cast<std::size_t>(i)];
+          double len = 0;
+          if (triangle) {
+            len = 2.0 * a0 / std::sqrt(std::max({d2(X(0), X(1)), d2(X(1), X(2)), d2(X(2), X(0))}));
+          } else {
+            const double dmax = std::max(d2(X(0), X(2)), d2(X(1), X(3)));
+            double lmin2 = std::min({d2(X(0), X(1)), d2(X(1), X(2)), d2(X(3), X(0))});
+            if (b.conn[e * 4 + 3] != b.conn[e * 4 + 2])
+              lmin2 = std::min({lmin2, d2(X(2), X(3)), d2(X(0), X(2)), d2(X(1), X(3))});
+            len = std::sqrt(std::max(a0 * a0 / dmax, lmin2));
+          }
+          g.fail_scale[static_cast<std::size_t>(i)] = fail_size_factor(fp, len);
+        }
       }
       shells_.push_back(std::move(g));
       k = end;
