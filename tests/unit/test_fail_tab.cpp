@@ -5,11 +5,13 @@
 // keyword. Expected values are computed here from the formulas at the top of those files. Units: MPa, mm, s.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "solver/element_groups.hpp"
+#include "solver/explicit_engine.hpp"
 #include "solver/material_point.hpp"
 #include "solver/shell_section.hpp"
 #include "test_util.hpp"
@@ -346,4 +348,49 @@ TEST_CASE("FAIL/TAB reader: the layouts of 100/120 and 110, defaults, functions,
     CHECK(f.el_ref == 1.0);                    // 0 -> 1
     CHECK(close(f.temp_factor, 3.0, kRound));  // FscaleT 2 x the constant 1.5
   }
+}
+
+TEST_CASE("FAIL/TAB element-size factor: from each shell's length at t = 0 (elements.md 4.1, 4.2)",
+          "[failtab][engine]") {
+  // A 4 x 2 rectangle: L = max(A / longest diagonal, shortest side) = max(8 / sqrt(20), 2) = 2; a 6 x 1
+  // strip: max(6 / sqrt(37), 1) = 1; a triangle (0,0) (4,0) (0,3): 2A / longest side = 12 / 5.
+  // Size function f(x) = x (points 0 and 10), Fscale_el 0.5, EI_ref 4: factor 0.5 L / 4.
+  using radx::test::Line;
+  std::string s = radx::test::begin_block(2026, "Mg mm s") + "/NODE\n";
+  const double xy[11][2] = {{0, 0},  {4, 0},  {4, 2},  {0, 2},  {10, 0}, {16, 0},
+                            {16, 1}, {10, 1}, {20, 0}, {24, 0}, {20, 3}};
+  for (int k = 0; k < 11; ++k)
+    s += Line().put(k + 1, 1, 10).put(xy[k][0], 11, 30).put(xy[k][1], 31, 50).put(0.0, 51, 70).str() + "\n";
+  s += "/SHELL/1\n" + Line().put(1, 1, 10).put(1, 11, 20).put(2, 21, 30).put(3, 31, 40).put(4, 41, 50).str() +
+       "\n" + Line().put(2, 1, 10).put(5, 11, 20).put(6, 21, 30).put(7, 31, 40).put(8, 41, 50).str() + "\n";
+  s += "/SH3N/1\n" + Line().put(3, 1, 10).put(9, 11, 20).put(10, 21, 30).put(11, 31, 40).str() + "\n";
+  s += "/PART/1\nplate\n" + Line().put(1, 1, 10).put(1, 11, 20).str() + "\n";
+  s += "/PROP/SHELL/1\nshell\n\n\n" + Line().put(3, 1, 10).put(1.0, 21, 40).str() + "\n";
+  s += "/MAT/PLAS_TAB/1\nsteel\n" + Line().put(7.85e-9, 1, 20).str() + "\n" +
+       Line().put(210000.0, 1, 20).put(0.3, 21, 40).str() + "\n" + Line().put(1, 1, 10).str() + "\n" +
+       Line().put(0, 1, 10).str() + "\n" + Line().put(1, 1, 10).str() + "\n" + Line().put(1.0, 1, 20).str() +
+       "\n" + Line().put(0.0, 1, 20).str() + "\n";
+  s += "/FAIL/TAB/1\n" + Line().put(1, 1, 10).put(1, 11, 20).put(1, 21, 30).str() + "\n" + Line().str() +
+       "\n" + Line().put(2, 1, 10).put(1.0, 11, 30).put(0.0, 31, 50).str() + "\n" +
+       Line().put(3, 1, 10).put(0.5, 11, 30).put(4.0, 31, 50).str() + "\n" + Line().str() + "\n";
+  s += "/FUNCT/1\nyield\n" + Line().put(0.0, 1, 20).put(200.0, 21, 40).str() + "\n" +
+       Line().put(1.0, 1, 20).put(400.0, 21, 40).str() + "\n";
+  s += "/FUNCT/2\neps_f\n" + Line().put(-1.0, 1, 20).put(0.3, 21, 40).str() + "\n" +
+       Line().put(1.0, 1, 20).put(0.3, 21, 40).str() + "\n";
+  s += "/FUNCT/3\nsize\n" + Line().put(0.0, 1, 20).put(0.0, 21, 40).str() + "\n" +
+       Line().put(10.0, 1, 20).put(10.0, 21, 40).str() + "\n/END\n";
+  const auto md = radx::test::model_of_deck(s);
+  radx::model::RunControls rc;
+  rc.t_stop = 1e-9;
+  ExplicitEngine engine(md, rc, EngineOptions{1, 1});
+  std::vector<double> quads, tris;
+  for (const auto& g : engine.shell_groups())
+    for (int i = 0; i < g.count; ++i)
+      (g.triangle ? tris : quads).push_back(g.fail_scale[static_cast<std::size_t>(i)]);
+  REQUIRE(quads.size() == 2);
+  REQUIRE(tris.size() == 1);
+  std::sort(quads.begin(), quads.end());
+  CHECK(close(quads[0], 0.5 * 1.0 / 4.0, kRound));  // the 6 x 1 strip
+  CHECK(close(quads[1], 0.5 * 2.0 / 4.0, kRound));  // the 4 x 2 rectangle
+  CHECK(close(tris[0], 0.5 * 2.4 / 4.0, kRound));   // the 3-4-5 triangle
 }
