@@ -155,7 +155,7 @@ TEST_CASE(
   CHECK(k == 150);  // 0.5 x 0.3 / 1e-3
 }
 
-TEST_CASE("FAIL/TAB on a solid point: D = eps_p / eps_f of the table at the rate; Ifail_so 1, 2, 3",
+TEST_CASE("FAIL/TAB on a solid point: D = eps_p / eps_f of the table at the rate, Ifail_so 1, 2, 3",
           "[material][fail][failtab]") {
   // Isochoric stretch with mu = 0: tr(sigma) = 0, triaxiality 0; rows f1 x 1 at rate 1 and f1 x 2 at rate 11,
   // point rate 6: eps_f = 0.3 x 1.5 = 0.45; Dcrit 0.9: fails when eps_p reaches 0.405.
