@@ -773,12 +773,18 @@ def _():
                "card's D)"), [("RX510", "FT.n")]
 
 
-@fault("fail_tab_xfem_and_negative_thickness")
+@fault("fail_tab_xfem")
 def _():
     d = base()
-    d.insert_before("AFTER_MATS", fail_tab(Ixfem=1, P_thickfail=-0.5, Ifail_sh=2))
-    return d, "/FAIL/TAB/1 Ixfem = 1 (XFEM) and P_thickfail < 0 (a fraction of points)", \
-        [("RX510", "FT.Ixfem"), ("RX510", "FT.P_thickfail")]
+    d.insert_before("AFTER_MATS", fail_tab(Ixfem=1))
+    return d, "/FAIL/TAB/1 Ixfem = 1 (XFEM crack)", [("RX510", "FT.Ixfem")]
+
+
+@fault("fail_tab_negative_thickness")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_tab(P_thickfail=-0.5, Ifail_sh=2))
+    return d, "/FAIL/TAB/1 P_thickfail < 0 (a fraction of failed points)", [("RX510", "FT.P_thickfail")]
 
 
 @fault("fail_tab_twice")
