@@ -318,6 +318,21 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
          << f.eps_dot_0 << "  EPSF_MIN " << f.eps_f_min << "  Ifail_sh " << f.ifail_sh << "  Ifail_so "
          << f.ifail_so << '\n';
     }
+    if (mat.fail_tab.on) {
+      const auto& f = mat.fail_tab;
+      os << "    /FAIL/TAB: dD = n D^(1-1/n) d_eps_p / eps_f, fails at Dcrit " << f.dcrit << "  n " << f.n
+         << "  Ifail_sh " << f.ifail_sh << "  Ifail_so " << f.ifail_so << "  P_thickfail " << f.p_thickfail
+         << '\n';
+      for (std::size_t i = 0; i < f.function_id.size(); ++i)
+        os << "      eps_f(triaxiality): function " << f.function_id[i] << " x " << f.scale[i] << " at rate "
+           << f.rate[i] << '\n';
+      if (f.size_function_id != 0)
+        os << "      element size factor: " << f.size_scale << " x function " << f.size_function_id
+           << " of L0 / " << f.el_ref << " (L0 the shell's length at t = 0)\n";
+      if (f.temp_function_id != 0)
+        os << "      temperature factor (constant function " << f.temp_function_id << "): " << f.temp_factor
+           << '\n';
+    }
   }
 
   heading(os, "PROPERTIES");

@@ -29,11 +29,16 @@
 #include <algorithm>
 #include <string>
 
+#include "parser/field_parse.hpp"
 #include "parser/model_builder.hpp"
 
 namespace radx::detail {
 
 namespace {
+
+std::string num(double v) {
+  return number_text(v);
+}
 
 std::string ishell_name(int v) {
   switch (v) {
@@ -259,6 +264,26 @@ void ModelBuilder::check_shell_only_laws() {
     const auto& part = m_.parts[p];
     if (part.material < 0 || part.property < 0) continue;
     const auto& mat = m_.materials[static_cast<std::size_t>(part.material)];
+    // /FAIL/TAB on bricks and tetrahedra: OpenRadioss's solid update (fail_tab_s.F) takes the damage factor
+    // n D^(1 - 1/n) with the card's D instead of the damage, and the element length of the cycle; radx runs
+    // the shell rule (the damage, the initial length), so it refuses what would differ: n != 1 and a size
+    // function.
+    if (mat.fail_tab.on && solid_part[p]) {
+      for (const auto& rec : deck_.records) {
+        if (rec.decl->path != "/FAIL/TAB" || rec.id != mat.id) continue;
+        if (mat.fail_tab.n != 1.0)
+          error_at(
+              rec, "n", Diag::PhysicsNotImplemented,
+              "n = " + num(mat.fail_tab.n) + " on part " + std::to_string(part.id) +
+                  " (bricks or tetrahedra): OpenRadioss's solids take n D^(1 - 1/n) with the card's D; radx "
+                  "implements /FAIL/TAB on solids with n = 1 only");
+        if (mat.fail_tab.size_function_id != 0)
+          error_at(rec, "fct_IDel", Diag::PhysicsNotImplemented,
+                   "an element size function on part " + std::to_string(part.id) +
+                       " (bricks or tetrahedra): OpenRadioss scales the solids' eps_f with the length of the "
+                       "cycle; radx implements the size function on shells only");
+      }
+    }
     if (mat.law != model::MaterialLaw::PlasBrit) continue;
     const auto& prop = m_.properties[static_cast<std::size_t>(part.property)];
     for (const auto& rec : deck_.records) {

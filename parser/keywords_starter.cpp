@@ -491,6 +491,18 @@ std::string_view plas_tab_name(int list, int k) {
   return names[static_cast<std::size_t>(list * kPlasTabMaxCurves + k)];
 }
 
+// Names of /FAIL/TAB's rate lines: "fct_ID1" .. "fct_ID100", "Fscale1" .., "Epsdot1" .., and the card names.
+constexpr int kFailTabMaxRates = 100;  // OpenRadioss hm_read_fail_tab_old.F: MAXFUNC
+std::string_view fail_tab_name(int list, int k) {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const char* base : {"fct_ID", "Fscale", "Epsdot", "rate line "})
+      for (int i = 1; i <= kFailTabMaxRates; ++i) v.push_back(base + std::to_string(i));
+    return v;
+  }();
+  return names[static_cast<std::size_t>(list * kFailTabMaxRates + k)];
+}
+
 // /MAT/PLAS_TAB's three lists (functions in 10-column cells, then scale factors and strain rates in
 // 20-column cells), 5 entries a line, as many lines as N_funct needs: line j is read when N_funct > 5 j.
 void add_plas_tab_lists(KeywordDecl& k) {
@@ -612,6 +624,68 @@ void add_plas_tab_and_failure(std::vector<KeywordDecl>& t) {
                     .ge(0)}),
         card("failure id", {I("fail_ID", 1, 10, "failure model id (optional)").refs(IdKind::Other)}),
     };
+    t.push_back(std::move(k));
+  }
+  {
+    // /FAIL/TAB/mat_ID[/unit_ID]: the radioss110 to radioss2018 cfg layouts (OpenRadioss
+    // hm_read_fail_tab_old.F; its starter converts the keyword to /FAIL/TAB1 with a /TABLE of the rate
+    // lines). Card 1 holds P_thickfail in columns 41-60 from 120 on and in the 90/100 decks (as OpenRadioss's
+    // own QA deck of format 100 writes it), in 61-80 in the radioss110 layout.
+    KeywordDecl k = kw("/FAIL/TAB", "tabulated failure model of a material (failure strain by triaxiality)",
+                       Header::IdUnit, false, "mat_ID");
+    k.id_kind = IdKind::Material;
+    auto card1 = [](bool v110, bool xfem) {
+      std::vector<FieldDecl> f = {
+          I("Ifail_sh", 1, 10,
+            "shells: 1 one failed point deletes, 2 P_thickfail of the thickness (point "
+            "stress zero), 3 the same with the failed points' stress kept")
+              .zero_is(1)
+              .allow({0, 1, 2, 3}),
+          I("Ifail_so", 11, 20, "solids: 1 deleted, 2 normal stresses set to the mean, 3 stress kept")
+              .zero_is(1)
+              .allow({0, 1, 2, 3}),
+          I("N_rate", 21, 30, "number of failure-strain functions (strain rates), 1 to 100")
+              .must()
+              .gt(0)
+              .le(100),
+          R("P_thickfail", v110 ? 61 : 41, v110 ? 80 : 60,
+            "failed fraction of the thickness that deletes the shell (Ifail_sh 2, 3); 0 = the property's")};
+      if (xfem)
+        f.push_back(I("Ixfem", 91, 100, "XFEM crack: 0 off, 1 multilayer, 2 monolayer").not_implemented());
+      return f;
+    };
+    k.cards = {
+        card_v("card 1", kAnyVersion, 100, card1(false, false)),
+        card_v("card 1", 110, 110, card1(true, false)),
+        card_v("card 1", 120, kLastVersion, card1(false, true)),
+        card("card 2",
+             {R("Dcrit", 1, 20, "damage at which the point fails; 0 = 1").zero_is(1.0).gt(0.0),
+              R("D", 21, 40, "instability damage of the fading (no fading in /FAIL/TAB); 1 = 0.999").unused(),
+              R("n", 41, 60, "damage exponent: dD = n D^(1 - 1/n) d_eps_p / eps_f; 0 = 1")
+                  .zero_is(1.0)
+                  .gt(0.0),
+              R("Dadv", 61, 80, "damage at which a crack advances (XFEM only)").versions(120).unused()}),
+    };
+    for (int i = 0; i < kFailTabMaxRates; ++i)
+      k.cards.push_back(
+          card_if(fail_tab_name(3, i), when_gt("N_rate", i),
+                  {I(fail_tab_name(0, i), 1, 10, "failure strain eps_f(triaxiality) at this rate")
+                       .must()
+                       .refs(IdKind::Other),
+                   R(fail_tab_name(1, i), 11, 30, "ordinate scale of that function; 0 = 1").zero_is(1.0),
+                   R(fail_tab_name(2, i), 31, 50, "strain rate of that function").dims(dim::rate)}));
+    k.cards.push_back(
+        card("element size",
+             {I("fct_IDel", 1, 10, "factor of eps_f by element size / EI_ref; 0 = none").refs(IdKind::Other),
+              R("Fscale_el", 11, 30, "scale of that factor; 0 = 1").zero_is(1.0),
+              R("EI_ref", 31, 50, "reference element size; 0 = 1").zero_is(1.0).dims(dim::length)}));
+    k.cards.push_back(
+        card("temperature",
+             {I("fct_IDt", 1, 10, "factor of eps_f by temperature; 0 = none (radx: a constant function only)")
+                  .refs(IdKind::Other),
+              R("FscaleT", 11, 30, "scale of that factor; 0 = 1").zero_is(1.0)}));
+    k.cards.push_back(card_v("failure id", 130, kLastVersion,
+                             {I("fail_ID", 1, 10, "failure model id (optional)").refs(IdKind::Other)}));
     t.push_back(std::move(k));
   }
 }

@@ -282,6 +282,7 @@ void ModelBuilder::build_materials() {
       m_.materials.push_back(std::move(mat));
   }
   build_failure_models();
+  build_fail_tab();
 }
 
 // /MAT/VOID (law 0), read as OpenRadioss hm_read_mat00.F does: every value may be blank. The density gives
@@ -444,6 +445,99 @@ void ModelBuilder::build_failure_models() {
       warning_at(r, "D1", Diag::ImplausibleMaterial,
                  "the failure strain D1 + D2 exp(D3 sigma*) is <= 0 at triaxiality 1: points in tension do "
                  "not accumulate damage there (radx adds d_eps_p / eps_f only for eps_f > 0)");
+  }
+}
+
+// /FAIL/TAB/mat_ID: attached to its material (law 2 or 36), at most one failure model per material.
+// Defaults of OpenRadioss hm_read_fail_tab_old.F / hm_read_fail_tab1.F: Dcrit 0 -> 1, n 0 -> 1, Ifail_sh and
+// Ifail_so 0 -> 1, the scale factors 0 -> 1, EI_ref 0 -> 1 (in the deck's length unit). The functions are
+// resolved once they are built (resolve_fail_tab_functions).
+void ModelBuilder::build_fail_tab() {
+  for (const auto* rp : deck_.of("/FAIL/TAB")) {
+    const auto& r = *rp;
+    const auto it = mat_ids_.find(r.id);
+    if (it == mat_ids_.end()) {
+      diags_.error(Diag::MissingReference, at(r.pos), about(r),
+                   "/FAIL/TAB names material " + std::to_string(r.id) +
+                       ", which does not exist; the id on the keyword line is the material's");
+      continue;
+    }
+    auto& mat = m_.materials[static_cast<std::size_t>(it->second)];
+    if (mat.law != model::MaterialLaw::JohnsonCook && mat.law != model::MaterialLaw::PlasTab) {
+      diags_.error(Diag::PhysicsNotImplemented, at(r.pos), about(r),
+                   "/FAIL/TAB on material " + std::to_string(r.id) + " (" + mat.keyword +
+                       "): radx implements it on /MAT/PLAS_JOHNS (law 2) and /MAT/PLAS_TAB (law 36) only");
+      continue;
+    }
+    if (mat.fail_jc.on || mat.fail_tab.on) {
+      diags_.error(Diag::DuplicateId, at(r.pos), about(r),
+                   "material " + std::to_string(r.id) + " already has a " +
+                       (mat.fail_jc.on ? "/FAIL/JOHNSON" : "/FAIL/TAB") +
+                       "; radx takes one failure model per material");
+      continue;
+    }
+    auto& f = mat.fail_tab;
+    f.on = true;
+    f.fail_id = r.get_int("fail_ID");
+    f.ifail_sh = static_cast<int>(r.get_int("Ifail_sh"));
+    f.ifail_so = static_cast<int>(r.get_int("Ifail_so"));
+    f.p_thickfail = r.get_real("P_thickfail");
+    if (f.p_thickfail < 0)
+      error_at(
+          r, "P_thickfail", Diag::PhysicsNotImplemented,
+          "P_thickfail = " + num(f.p_thickfail) +
+              " < 0 (a fraction of failed points) is not implemented by radx: give the failed fraction of "
+              "the thickness, 0 to 1");
+    f.dcrit = r.get_real("Dcrit");
+    f.d = r.get_real("D");
+    if (f.d == 1.0) f.d = 0.999;
+    f.n = r.get_real("n");
+    const auto n_rate = static_cast<int>(std::clamp<std::int64_t>(r.get_int("N_rate"), 0, 100));
+    for (int i = 1; i <= n_rate; ++i) {
+      const std::string k = std::to_string(i);
+      f.function_id.push_back(r.get_int("fct_ID" + k));
+      f.function.push_back(-1);
+      f.scale.push_back(r.get_real("Fscale" + k));
+      f.rate.push_back(r.get_real("Epsdot" + k));
+      if (i > 1 && !(f.rate[static_cast<std::size_t>(i - 1)] > f.rate[static_cast<std::size_t>(i - 2)]))
+        error_at(r, "Epsdot" + k, Diag::InconsistentValues,
+                 "Epsdot" + k + " = " + num(f.rate.back()) + " is not above Epsdot" + std::to_string(i - 1) +
+                     ": the strain rates of the failure-strain functions must increase");
+    }
+    f.size_function_id = r.get_int("fct_IDel");
+    f.size_scale = r.get_real("Fscale_el");
+    f.el_ref = r.get_real("EI_ref");
+    f.temp_function_id = r.get_int("fct_IDt");
+    f.temp_factor = r.get_real("FscaleT");
+  }
+}
+
+// /FAIL/TAB's function ids, once the functions exist. A temperature function is accepted only when it is
+// constant (radx has no temperature: any other would change eps_f with a temperature radx does not compute).
+void ModelBuilder::resolve_fail_tab_functions() {
+  for (const auto* rp : deck_.of("/FAIL/TAB")) {
+    const auto& r = *rp;
+    const auto it = mat_ids_.find(r.id);
+    if (it == mat_ids_.end()) continue;
+    auto& f = m_.materials[static_cast<std::size_t>(it->second)].fail_tab;
+    if (!f.on) continue;
+    for (std::size_t i = 0; i < f.function.size(); ++i)
+      f.function[i] =
+          ref(funct_ids_, r, "fct_ID" + std::to_string(i + 1), "failure strain function", "/FUNCT", false);
+    f.size_function = ref(funct_ids_, r, "fct_IDel", "element size factor function", "/FUNCT", true);
+    const auto ti = ref(funct_ids_, r, "fct_IDt", "temperature factor function", "/FUNCT", true);
+    if (ti >= 0) {
+      const auto& fn = m_.functions[static_cast<std::size_t>(ti)];
+      const bool constant =
+          !fn.y.empty() && std::all_of(fn.y.begin(), fn.y.end(), [&](double y) { return y == fn.y.front(); });
+      if (!constant)
+        error_at(r, "fct_IDt", Diag::PhysicsNotImplemented,
+                 "the temperature factor function " + std::to_string(f.temp_function_id) +
+                     " is not constant: radx has no temperature, so it takes a constant temperature function "
+                     "only (its value times FscaleT)");
+      else
+        f.temp_factor *= fn.y.front();
+    }
   }
 }
 
@@ -898,6 +992,7 @@ model::Model ModelBuilder::build() {
   build_functions();
   move_functions();
   resolve_plas_tab_functions();
+  resolve_fail_tab_functions();
   resolve_spring_functions();
   build_element_groups();  // before surfaces and node groups, which are built from element groups
   build_surfaces();        // before the groups: /GRNOD/SURF takes the nodes of surfaces

@@ -235,6 +235,28 @@ def fail_johnson(v):
     return cards
 
 
+def fail_tab(v):
+    """/FAIL/TAB/mat_ID (no title), the radioss110..2018 layouts: P_thickfail at 61-80 in 110, at 41-60 before
+    (the 100 QA decks) and from 120 (with Ixfem at 91-100); Dadv from 120; N_rate lines of fct_ID, Fscale,
+    Epsdot; the element-size and temperature cards; the optional fail_ID card from 130."""
+    c1 = [F("Ifail_sh", "I", 1, 10), F("Ifail_so", "I", 11, 20), F("N_rate", "I", 21, 30)]
+    c1.append(F("P_thickfail", "R", 61, 80) if v == 110 else F("P_thickfail", "R", 41, 60))
+    if v >= 120:
+        c1.append(F("Ixfem", "I", 91, 100))
+    c2 = [F("Dcrit", "R", 1, 20), F("D", "R", 21, 40), F("n", "R", 41, 60)]
+    if v >= 120:
+        c2.append(F("Dadv", "R", 61, 80))
+    cards = [card(c1), card(c2)]
+    for i in range(100):
+        cards.append(card([F("fct_ID%d" % (i + 1), "I", 1, 10), F("Fscale%d" % (i + 1), "R", 11, 30),
+                           F("Epsdot%d" % (i + 1), "R", 31, 50)], cond=lambda x, i=i: x.get("N_rate", 0) > i))
+    cards.append(card([F("fct_IDel", "I", 1, 10), F("Fscale_el", "R", 11, 30), F("EI_ref", "R", 31, 50)]))
+    cards.append(card([F("fct_IDt", "I", 1, 10), F("FscaleT", "R", 11, 30)]))
+    if v >= 130:
+        cards.append(card([F("fail_ID", "I", 1, 10)], optional=True))
+    return cards
+
+
 def ibc_fields():
     return [F("IBCX", "I", 8, 8), F("IBCY", "I", 9, 9), F("IBCZ", "I", 10, 10)]
 
@@ -581,6 +603,7 @@ STARTER = {
     "/MAT/LAW13": ("id", True, mat_law1, None, None),
     "/MAT/RIGID": ("id", True, mat_law1, None, None),
     "/FAIL/JOHNSON": ("id", False, fail_johnson, None, None),
+    "/FAIL/TAB": ("id", False, fail_tab, None, None),
     "/GRNOD/NODE": ("id", True, lambda v: [], "ids", ID_REC),
     "/GRNOD/PART": ("id", True, lambda v: [], "ids", ID_REC),
     "/GRNOD/GRNOD": ("id", True, lambda v: [], "ids", ID_REC),
@@ -1662,6 +1685,61 @@ def semantic(ck, m):
         if val(o, "Ixfem", 0) != 0:
             p = pos(o, "Ixfem")
             I("RX510", p[0], p[1], "/FAIL/JOHNSON %d: Ixfem not implemented by radx" % o["id"])
+    # /FAIL/TAB/mat_ID (model_builder.cpp build_fail_tab, resolve_fail_tab_functions; check_formulations.cpp):
+    # on an existing LAW2 or LAW36 material, one failure model per material, functions that exist, a constant
+    # temperature function, increasing rates; on solids n = 1 and no size function
+    for o in m.of("/FAIL/TAB"):
+        n_rate = val(o, "N_rate", 0)
+        if n_rate <= 0:
+            p = pos(o, "N_rate")
+            I("RX502", p[0], p[1], "/FAIL/TAB %d: N_rate is required" % o["id"])
+        elif n_rate > 100:
+            p = pos(o, "N_rate")
+            I("RX501", p[0], p[1], "/FAIL/TAB %d: N_rate > 100" % o["id"])
+        for name in ("Dcrit", "n"):
+            if val(o, name, 0.0) < 0:
+                p = pos(o, name)
+                I("RX501", p[0], p[1], "/FAIL/TAB %d: %s must be > 0" % (o["id"], name))
+        if val(o, "Ixfem", 0) != 0:
+            p = pos(o, "Ixfem")
+            I("RX510", p[0], p[1], "/FAIL/TAB %d: Ixfem not implemented by radx" % o["id"])
+        mat = mats.get(o["id"])
+        if mat is None:
+            I("RX402", o["pos"][0], o["pos"][1], "/FAIL/TAB: material %d does not exist" % o["id"])
+            continue
+        if mat["path"] not in ("/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02", "/MAT/LAW36", "/MAT/PLAS_TAB"):
+            I("RX510", o["pos"][0], o["pos"][1], "/FAIL/TAB on %s %d" % (mat["path"], o["id"]))
+            continue
+        if o["id"] in failed_mats:
+            I("RX401", o["pos"][0], o["pos"][1], "/FAIL/TAB: material %d has one already" % o["id"])
+            continue
+        failed_mats.add(o["id"])
+        if val(o, "P_thickfail", 0.0) < 0:
+            p = pos(o, "P_thickfail")
+            I("RX510", p[0], p[1], "/FAIL/TAB %d: P_thickfail < 0 not implemented by radx" % o["id"])
+        for k in range(1, min(max(n_rate, 0), 100) + 1):
+            need(o, "fct_ID%d" % k, functs, "function", zero_ok=False)
+            if k > 1 and not val(o, "Epsdot%d" % k, 0.0) > val(o, "Epsdot%d" % (k - 1), 0.0):
+                p = pos(o, "Epsdot%d" % k)
+                I("RX507", p[0], p[1], "/FAIL/TAB %d: strain rates not increasing" % o["id"])
+        need(o, "fct_IDel", functs, "function")
+        need(o, "fct_IDt", functs, "function")
+        ft = functs.get(val(o, "fct_IDt", 0))
+        if ft is not None:
+            ys = [r.get("Y") or 0.0 for r, _ in ft["recs"]]
+            if not ys or any(y != ys[0] for y in ys):
+                p = pos(o, "fct_IDt")
+                I("RX510", p[0], p[1], "/FAIL/TAB %d: temperature function not constant" % o["id"])
+        solid = any(("/BRICK" in kinds or "/TETRA4" in kinds) and pid in parts
+                    and val(parts[pid], "mat_ID") == o["id"] for pid, kinds in part_kind.items())
+        if solid:
+            nv = val(o, "n", 0.0)
+            if nv not in (0, 0.0, 1, 1.0):
+                p = pos(o, "n")
+                I("RX510", p[0], p[1], "/FAIL/TAB %d: n != 1 on solids" % o["id"])
+            if val(o, "fct_IDel", 0) != 0:
+                p = pos(o, "fct_IDel")
+                I("RX510", p[0], p[1], "/FAIL/TAB %d: size function on solids" % o["id"])
 
     for o in m.of("/BCS"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)

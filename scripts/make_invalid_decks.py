@@ -725,6 +725,76 @@ def _():
     return d, "two /FAIL/JOHNSON on /MAT/PLAS_JOHNS/1", [("RX401", "FJB_KW")]
 
 
+def fail_tab(mid=1, tag="FT", **kw):
+    """/FAIL/TAB/mid (tag FT) with one eps_f(triaxiality) function /FUNCT/8 (tag F8) unless the values say
+    otherwise, before AFTER_MATS."""
+    values = dict(Ifail_sh=1, Ifail_so=1, N_rate=1, Dcrit=1.0, n=1.0, fct_ID1=8, Fscale1=1.0, Epsdot1=0.0)
+    values.update(kw)
+    return (block(tag, "/FAIL/TAB", mid, **values) +
+            funct_rows(8, [(-1.0, 0.5), (1.0, 0.2)], "Failure strain", tag="F8"))
+
+
+@fault("fail_tab_on_elastic")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_tab(2))
+    return d, "/FAIL/TAB/2 on the elastic /MAT/LAW1/2 (radx: laws 2 and 36 only)", [("RX510", "FT_KW")]
+
+
+@fault("fail_tab_missing_function")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_tab(fct_ID1=99))
+    return d, "/FAIL/TAB/1 fct_ID1 = 99 names no /FUNCT", [("RX402", "FT.fct_ID1")]
+
+
+@fault("fail_tab_missing_size_function")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_tab(fct_IDel=98, EI_ref=1.0))
+    return d, "/FAIL/TAB/1 fct_IDel = 98 (element size factor) names no /FUNCT", [("RX402", "FT.fct_IDel")]
+
+
+@fault("fail_tab_temperature")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_tab(fct_IDt=9) +
+                    funct_rows(9, [(0.0, 1.0), (1000.0, 0.5)], "Temperature factor", tag="F9"))
+    return d, ("/FAIL/TAB/1 with a temperature factor that varies (radx has no temperature: a constant "
+               "function only)"), [("RX510", "FT.fct_IDt")]
+
+
+@fault("fail_tab_solid_exponent")
+def _():
+    d = base()
+    d.update("PART2", mat_ID=1)
+    d.insert_before("AFTER_MATS", fail_tab(n=2.0))
+    return d, ("/FAIL/TAB/1 with n = 2 on the brick's part (OpenRadioss's solids take n D^(1-1/n) with the "
+               "card's D)"), [("RX510", "FT.n")]
+
+
+@fault("fail_tab_xfem")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_tab(Ixfem=1))
+    return d, "/FAIL/TAB/1 Ixfem = 1 (XFEM crack)", [("RX510", "FT.Ixfem")]
+
+
+@fault("fail_tab_negative_thickness")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_tab(P_thickfail=-0.5, Ifail_sh=2))
+    return d, "/FAIL/TAB/1 P_thickfail < 0 (a fraction of failed points)", [("RX510", "FT.P_thickfail")]
+
+
+@fault("fail_tab_twice")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", block("FJ", "/FAIL/JOHNSON", 1, D1=0.1) + fail_tab())
+    return d, "/FAIL/JOHNSON and /FAIL/TAB on /MAT/PLAS_JOHNS/1 (one failure model per material)", \
+        [("RX401", "FT_KW")]
+
+
 @fault("funct_not_increasing")
 def _():
     d = base()

@@ -247,6 +247,17 @@ LAYOUTS = {
              i("Ixfem", col=91, since=120)),
         Card(i("FAILIP"), since=2025),
         title=False),
+    # /FAIL/TAB: the radioss2018 layout (the keyword's last); P_thickfail at 61-80 in the 110 layout only
+    "/FAIL/TAB": Layout(
+        Card(i("Ifail_sh"), i("Ifail_so"), i("N_rate"), r("P_thickfail", col=41, until=100),
+             r("P_thickfail", col=61, since=110, until=110), r("P_thickfail", col=41, since=120),
+             i("Ixfem", col=91, since=120)),
+        Card(r("Dcrit"), r("D"), r("n"), r("Dadv", since=120)),
+        *[Card(i("fct_ID%d" % k), r("Fscale%d" % k), r("Epsdot%d" % k),
+               when=lambda v, k=k: _int(v.get("N_rate")) >= k) for k in range(1, 11)],
+        Card(i("fct_IDel"), r("Fscale_el"), r("EI_ref")),
+        Card(i("fct_IDt"), r("FscaleT")),
+        title=False),
     # --- groups and surfaces (id lists)
     "/GRNOD/NODE": Layout(ids=ID10("node_ID")),
     "/GRNOD/PART": Layout(ids=ID10("part_ID")),

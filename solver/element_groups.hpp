@@ -55,7 +55,8 @@ struct ShellGroup {
   std::vector<double> off;         // [G] 1 alive, decaying by 0.8 after failure, 0 deleted
   std::vector<double> sig;         // [gauss][n_points][5][G]  sxx syy sxy syz szx, local frame
   std::vector<double> eps_p;       // [gauss][n_points][G]
-  std::vector<double> dmg;         // [gauss][n_points][G] /FAIL/JOHNSON damage (0 .. 1; 1: the point failed)
+  std::vector<double> dmg;  // [gauss][n_points][G] failure damage D / Dcrit (0 .. 1; 1: the point failed)
+  std::vector<double> fail_scale;  // [G] /FAIL/TAB element-size factor of eps_f (1 otherwise; set at t = 0)
   std::vector<double> brit;        // law 27 only: [gauss][n_points][kBritVars][G] crack state (allocate_brit)
   std::vector<double> hg;          // [3][G] elastic hourglass resultants Sx Sy Sz (Ishell 1);
                                    // QEPH: [4][6][G] stabilisation resultants at the 4 Gauss points

@@ -59,19 +59,6 @@ namespace {
 constexpr double kTiny =
     1e-20;  // OpenRadioss EM20: the floor of sigma_y, of rates in logarithms, of divisors
 
-// Value and slope of a curve at x: linear between its points, the end segments extrapolated.
-inline void curve_at(const TabCurve& c, double x, double& y, double& dy) {
-  if (c.n <= 1) {
-    y = c.n == 1 ? c.y[0] : 0.0;
-    dy = 0.0;
-    return;
-  }
-  // Segment i: the number of interior abscissas x_1 .. x_{n-2} at or below x (0 before x_1, n-2 after).
-  const auto i = static_cast<int>(std::upper_bound(c.x + 1, c.x + c.n - 1, x) - (c.x + 1));
-  dy = (c.y[i + 1] - c.y[i]) / (c.x[i + 1] - c.x[i]);
-  y = c.y[i] + dy * (x - c.x[i]);
-}
-
 }  // namespace
 
 double tab_flow_stress(const MaterialParams& p, double eps_p, double rate, double* slope) {

@@ -232,6 +232,7 @@ MaterialParams make_material_params(const model::Material& m) {
   if (m.fail_jc.on) {
     const auto& f = m.fail_jc;
     p.fail.on = true;
+    p.fail.kind = FailKind::Johnson;
     p.fail.d1 = f.d1;
     p.fail.d2 = f.d2;
     p.fail.d3 = f.d3;
@@ -240,7 +241,29 @@ MaterialParams make_material_params(const model::Material& m) {
     p.fail.eps_dot0 = f.eps_dot_0 > 0 ? f.eps_dot_0 : 1e-20;
     p.fail.eps_f_min = f.eps_f_min;
     p.fail.ifail_sh = f.ifail_sh == 0 ? 1 : f.ifail_sh;
-    p.fail.ifail_so = f.ifail_so == 0 ? 1 : f.ifail_so;
+    switch (f.ifail_so) {
+      case 2: p.fail.solid = SolidFailMode::DeviatorZero; break;
+      case 3: p.fail.solid = SolidFailMode::DeviatorTension; break;
+      case 4: p.fail.solid = SolidFailMode::StressZero; break;
+      default: p.fail.solid = SolidFailMode::Delete; break;
+    }
+  } else if (m.fail_tab.on) {
+    // The rows (functions) are set by the overload with the model's functions.
+    const auto& f = m.fail_tab;
+    p.fail.on = true;
+    p.fail.kind = FailKind::Tab;
+    p.fail.temp_factor = f.temp_factor;
+    p.fail.el_ref = f.el_ref > 0 ? f.el_ref : 1.0;
+    p.fail.dcrit = f.dcrit > 0 ? f.dcrit : 1.0;
+    p.fail.n_exp = f.n > 0 ? f.n : 1.0;
+    p.fail.ifail_sh = f.ifail_sh == 0 ? 1 : f.ifail_sh;
+    p.fail.keep_failed_stress = p.fail.ifail_sh == 3;
+    p.fail.p_thick = f.p_thickfail > 0 ? f.p_thickfail : 1.0 - 1e-6;
+    switch (f.ifail_so) {
+      case 2: p.fail.solid = SolidFailMode::NormalToMean; break;
+      case 3: p.fail.solid = SolidFailMode::Keep; break;
+      default: p.fail.solid = SolidFailMode::Delete; break;
+    }
   }
   return p;
 }
@@ -255,7 +278,32 @@ double jc_shell_return(const MaterialParams& p, int iplas, double rfac, double o
 MaterialParams make_material_params(const model::Material& m, const std::vector<model::Function>& functions,
                                     std::vector<TabCurve>& curves) {
   MaterialParams p = make_material_params(m);
+  curves.clear();
   if (m.law == model::MaterialLaw::PlasTab) tab_curves_params(m, functions, curves, p);
+  if (m.fail_tab.on) {
+    // /FAIL/TAB's rows after the law-36 curves in the same vector; the pointers are taken once it is full.
+    const auto view = [&](std::int32_t fi, double scale, double rate) {
+      TabCurve c;
+      if (fi >= 0 && static_cast<std::size_t>(fi) < functions.size()) {
+        const auto& fn = functions[static_cast<std::size_t>(fi)];
+        c.x = fn.x.data();
+        c.y = fn.y.data();
+        c.n = static_cast<int>(std::min(fn.x.size(), fn.y.size()));
+      }
+      c.scale = scale == 0 ? 1.0 : scale;
+      c.rate = rate;
+      return c;
+    };
+    const auto& f = m.fail_tab;
+    const std::size_t first = curves.size();
+    for (std::size_t i = 0; i < f.function.size(); ++i)
+      curves.push_back(view(f.function[i], f.scale[i], f.rate[i]));
+    if (p.n_curves > 0) p.curves = curves.data();
+    p.fail.rows = curves.data() + first;
+    p.fail.n_rows = static_cast<int>(f.function.size());
+    p.fail.has_size = f.size_function >= 0;
+    if (p.fail.has_size) p.fail.size = view(f.size_function, f.size_scale, 0.0);
+  }
   return p;
 }
 

@@ -56,11 +56,55 @@ struct TabCurve {
   double rate = 0;
 };
 
-// /FAIL/JOHNSON as the points use it (fail_johnson.cpp).
-struct FailJcParams {
+// Value and slope of a TabCurve's function (not scaled) at x: linear between the points, extrapolated with
+// the end segments (as every /FUNCT, functions.hpp); a one-point function is constant.
+inline void curve_at(const TabCurve& c, double x, double& y, double& dy) {
+  if (c.n <= 1) {
+    y = c.n == 1 ? c.y[0] : 0.0;
+    dy = 0.0;
+    return;
+  }
+  // Segment i: the number of interior abscissas x_1 .. x_{n-2} at or below x (0 before x_1, n-2 after).
+  const auto i = static_cast<int>(std::upper_bound(c.x + 1, c.x + c.n - 1, x) - (c.x + 1));
+  dy = (c.y[i + 1] - c.y[i]) / (c.x[i + 1] - c.x[i]);
+  y = c.y[i] + dy * (x - c.x[i]);
+}
+
+// What a solid point does once its damage reaches 1 (failure_damage.cpp).
+enum class SolidFailMode : std::uint8_t {
+  Delete,           // the brick starts its deletion (OFF 0.8, then the decay)
+  DeviatorZero,     // sigma = sigma_m I for ever, the brick stays
+  DeviatorTension,  // sigma = min(sigma_m, 0) I
+  StressZero,       // sigma = 0
+  NormalToMean,     // the normal stresses take sigma_m, the shears are kept (/FAIL/TAB Ifail_so 2)
+  Keep,             // the stress is kept (/FAIL/TAB Ifail_so 3: the damage is only an output)
+};
+
+// The failure model of a material as the points use it: /FAIL/JOHNSON (fail_johnson.cpp) or /FAIL/TAB
+// (fail_tab.cpp) give the failure strain; the damage stage (failure_damage.cpp) is shared. The point's damage
+// is kept normalised, d = D / Dcrit (Dcrit = 1 for Johnson-Cook): d reaches 1 when the point fails.
+enum class FailKind : std::uint8_t { None, Johnson, Tab };
+struct FailParams {
   bool on = false;
+  FailKind kind = FailKind::None;
+  // Johnson-Cook.
   double d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0, eps_dot0 = 1e-20, eps_f_min = 0;
-  int ifail_sh = 1, ifail_so = 1;
+  // Tabulated: eps_f(triaxiality) rows by increasing strain rate (non-owning, see make_material_params), the
+  // constant temperature factor, the size function (scale = Fscale_el) and its reference length.
+  const TabCurve* rows = nullptr;
+  int n_rows = 0;
+  double temp_factor = 1;
+  TabCurve size;
+  bool has_size = false;
+  double el_ref = 1;
+  // Damage: dD = n D^(1 - 1/n) d_eps_p / eps_f (the factor is 1 at D = 0), the point fails at D = Dcrit.
+  double dcrit = 1, n_exp = 1;
+  // Shells: Ifail_sh, whether a failed point keeps its stress (/FAIL/TAB Ifail_sh 3) and the failed thickness
+  // fraction that deletes the element (before the property's bound).
+  int ifail_sh = 1;
+  bool keep_failed_stress = false;
+  double p_thick = 1.0 - 1e-6;
+  SolidFailMode solid = SolidFailMode::Delete;
 };
 
 // /MAT/PLAS_BRIT's crack (law27_plas_brit.cpp): direction 1 only (OpenRadioss m27crak.F opens no other).
@@ -98,7 +142,7 @@ struct MaterialParams {
   double tab_lower = 0;  // lower bound of sigma_y over eps_p >= 0 and rates <= tab_rate_max (fast path)
   double tab_rate_max = 0;
   bool tab_bound = false;  // tab_lower is a valid bound (every curve's last segment rises or is flat)
-  FailJcParams fail;
+  FailParams fail;
   BritParams brit;  // law 27; its flow stress is law 2's (a, b, n, c, eps_dot0, sig_max0, icc above)
 };
 
@@ -256,11 +300,11 @@ inline bool solid_law_yields(const MaterialParams& p) {
   return p.law != model::MaterialLaw::Elastic;
 }
 
-// The solid point with its failure state: law 36 Eps_p_max and /FAIL/JOHNSON (Ifail_so) on top of the update
-// above. dmg: the point's Johnson-Cook damage (0 .. 1), updated. off: the element factor at the start of the
-// cycle (the damage accumulates only while it is 1). element_fails: the element starts its deletion this
-// cycle (law 36 eps_p > Eps_p_max, or Ifail_so 1 with D reaching 1); the caller sets its factor to 0.8 and
-// lets it decay as for shells (brick_next_off).
+// The solid point with its failure state: law 36 Eps_p_max and the failure model (SolidFailMode) on top of
+// the update above. dmg: the point's normalised damage D / Dcrit (0 .. 1), updated. off: the element factor
+// at the start of the cycle (the damage accumulates only while it is 1). element_fails: the element starts
+// its deletion this cycle (law 36 eps_p > Eps_p_max, or SolidFailMode::Delete with d reaching 1); the caller
+// sets its factor to 0.8 and lets it decay as for shells (brick_next_off).
 struct SolidPointResult {
   double deps_p = 0;
   bool element_fails = false;
@@ -276,21 +320,33 @@ inline double brick_next_off(double off_start, bool fails) {
   return fails ? 0.8 : off_start;
 }
 
-// /FAIL/JOHNSON at one point (fail_johnson.cpp): failure strain and damage increment.
+// /FAIL/JOHNSON's failure strain (fail_johnson.cpp):
 // eps_f = max(EPSF_MIN, (D1 + D2 exp(D3 sigma_m / svm)) (1 + D4 ln(max(1, rate / rate0))) (1 + D5 T*)), T* =
 // 0.
-double fail_jc_strain(const FailJcParams& f, double sigma_m, double svm, double rate);
-// D += d_eps_p / eps_f when eps_f > 0, capped at 1. Returns true when D reaches 1 in this call.
-bool fail_jc_accumulate(const FailJcParams& f, double sigma_m, double svm, double rate, double deps_p,
-                        double& dmg);
+double fail_jc_strain(const FailParams& f, double sigma_m, double svm, double rate);
+// /FAIL/TAB's failure strain before the element-size factor (fail_tab.cpp): the rows at the triaxiality
+// sigma_m / max(svm, 1e-20), linear in the rate between the rows around it (extrapolated beyond), times the
+// temperature factor.
+double fail_tab_strain(const FailParams& f, double sigma_m, double svm, double rate);
+// /FAIL/TAB's element-size factor Fscale_el f_el(len / EI_ref) of an element of characteristic length len
+// (1 without a size function): computed once per element from its initial length (fail_tab.cpp).
+double fail_size_factor(const FailParams& f, double len);
+// The failure strain of either model, times the element's size factor `escale`.
+double fail_strain(const FailParams& f, double sigma_m, double svm, double rate, double escale);
 
-// The shell point with /FAIL/JOHNSON: shell_point_update_r, then, while the element is intact (off = 1) and
-// the point alive (dmg < 1), D += d_eps_p / eps_f with the plane-stress sigma_m = (sxx + syy)/3 and svm of
-// the updated stress; a failed point (dmg >= 1) carries no stress any more (all five components zero).
-// rate: the element's strain rate (the D4 term).
+// The damage stage (failure_damage.cpp), shared by every failure model: with d = D / Dcrit,
+// D += n D^(1 - 1/n) d_eps_p / eps_f when eps_f > 0 (the factor is 1 at D = 0 and for n = 1), d capped at 1.
+// Returns true when d reaches 1 in this call.
+bool fail_accumulate(const FailParams& f, double sigma_m, double svm, double rate, double escale,
+                     double deps_p, double& dmg);
+
+// The shell point with its failure model: shell_point_update_r, then, while the element is intact (off = 1)
+// and the point alive (dmg < 1), the damage stage with the plane-stress sigma_m = (sxx + syy)/3 and svm of
+// the updated stress; a failed point (dmg >= 1) carries no stress any more (all five components zero) unless
+// the model keeps it (/FAIL/TAB Ifail_sh 3). rate: the element's strain rate; escale: its size factor.
 ShellPointResult shell_point_update_fail(const MaterialParams& p, int iplas, double rfac, double rate,
-                                         double off, const double de[5], double gs, double sig[5],
-                                         double& eps_p, double& dmg);
+                                         double escale, double off, const double de[5], double gs,
+                                         double sig[5], double& eps_p, double& dmg);
 
 // Internal pieces of the law files, for law_point_updates.cpp's dispatch (not for the kernels).
 namespace detail {

@@ -23,9 +23,10 @@
 //        the cycle whose starting OFF is below 0.1. Law 36: a point above Eps_p_max deletes the element at
 //        once (OFF 0 in that cycle: sigeps36c.F sets 0.8 without the progressive flag LAW2 sets, and
 //        mulawc.F90 turns such a 0.8 into 0).
-//   /FAIL/JOHNSON (fail_johnson.cpp): every point of such a material takes the exact update with its damage;
-//        a failed point carries no stress; the element is deleted at once (OFF 0) when the weight sum of its
-//        failed points reaches 1e-6 (Ifail_sh 1) or min(P_thickfail, 1 - 1e-6) (Ifail_sh 2).
+//   /FAIL/JOHNSON, /FAIL/TAB (failure_damage.cpp): every point of such a material takes the exact update with
+//        its damage; a failed point carries no stress (unless /FAIL/TAB Ifail_sh 3 keeps it); the element is
+//        deleted at once (OFF 0) when the weight sum of its failed points reaches 1e-6 (Ifail_sh 1) or
+//        min(the model's fraction, P_thickfail of the property) within [1e-6, 1 - 1e-6] (Ifail_sh 2, 3).
 //   6.5  plastic work: dW = 1/2 (svm_old + svm_new) deps_p w_i t A.
 //   Law 27 (law27_plas_brit.cpp): every point takes the exact update with its crack state; the element is
 //        deleted at once (OFF 0) when one of its points' largest principal strain passes EPS_f1.
@@ -308,8 +309,9 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
                                                brit_base + static_cast<std::size_t>(p) * kBritVars * G +
                                                    static_cast<std::size_t>(i0 + j),
                                                G)
-            : fail ? shell_point_update_fail(mat, iplas, s.rfac[j], s.rate[j], s.off[j], de, gs, sg, ep[j],
-                                             dmg_base[pj])
+            : fail ? shell_point_update_fail(mat, iplas, s.rfac[j], s.rate[j],
+                                             g.fail_scale[static_cast<std::size_t>(i0 + j)], s.off[j], de, gs,
+                                             sg, ep[j], dmg_base[pj])
                    : shell_point_update_r(mat, iplas, s.rfac[j], s.off[j], de, gs, sg, ep[j]);
         if (r.fails) s.crack_fail[j] = 1;
         for (int c = 0; c < 5; ++c) sp[c][j] = sg[c];
@@ -353,16 +355,17 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
   }
   RADX_IVDEP
   for (int j = 0; j < len; ++j) s.dthick[j] *= s.t[j];
-  // Deletion at once (next_off): law 36 with a point above Eps_p_max; /FAIL/JOHNSON with the thickness
-  // fraction of failed points (their weights) at Ifail_sh's threshold (fail_setoff_c.F: 1e-6, or P_thickfail
-  // kept within [1e-6, 1 - 1e-6]).
+  // Deletion at once (next_off): law 36 with a point above Eps_p_max; a failure model with the thickness
+  // fraction of failed points (their weights) at Ifail_sh's threshold (fail_setoff_c.F: 1e-6, or the model's
+  // fraction bounded by the property's P_thickfail, kept within [1e-6, 1 - 1e-6]).
   for (int j = 0; j < len; ++j) s.fail_now[j] = 0;
   const bool tab_limit = mat.law == model::MaterialLaw::PlasTab && mat.eps_p_max < 1e20;
   if (brit)
     for (int j = 0; j < len; ++j) s.fail_now[j] = s.off[j] == 1.0 ? s.crack_fail[j] : 0.0;
   if (fail || tab_limit) {
-    const double pt = std::clamp(std::abs(g.props.p_thick_fail), 1e-6, 1.0 - 1e-6);
-    const double limit = mat.fail.ifail_sh == 2 ? pt : 1e-6;
+    const double pt =
+        std::clamp(std::min(mat.fail.p_thick, std::abs(g.props.p_thick_fail)), 1e-6, 1.0 - 1e-6);
+    const double limit = mat.fail.ifail_sh >= 2 ? pt : 1e-6;
     for (int j = 0; j < len; ++j) {
       if (s.off[j] != 1.0) continue;
       bool gone = tab_limit && s.eps_p_max[j] > mat.eps_p_max;

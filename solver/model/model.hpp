@@ -93,6 +93,28 @@ struct FailJohnson {
   int ifail_so = 1;  // 1: brick deleted; 2: deviator zero; 3: deviator zero, no tension; 4: stress zero
 };
 
+// /FAIL/TAB on a material (OpenRadioss hm_read_fail_tab_old.F, run as /FAIL/TAB1 by the starter's
+// conversion): failure plastic strain from tables of the triaxiality, one per strain rate, times an
+// element-size factor and a temperature factor; damage D += n D^(1 - 1/n) d_eps_p / eps_f, the point fails at
+// Dcrit. Defaults resolved by the starter. Parallel vectors, one entry a strain rate.
+struct FailTab {
+  bool on = false;
+  std::int64_t fail_id = 0;
+  int ifail_sh = 1;        // 1: one failed point deletes the shell; 2 and 3: P_thickfail of the thickness
+  int ifail_so = 1;        // 1: brick deleted; 2: normal stresses set to the mean; 3: the stress is kept
+  double p_thickfail = 0;  // failed thickness fraction (Ifail_sh 2, 3); 0 = the property's
+  double dcrit = 1, d = 0.999, n = 1;
+  std::vector<std::int64_t> function_id;  // eps_f(triaxiality) per rate, user ids (listing)
+  std::vector<std::int32_t> function;     // dense indices into Model::functions
+  std::vector<double> scale;              // Fscale of each (0 -> 1)
+  std::vector<double> rate;               // Epsdot of each
+  std::int64_t size_function_id = 0;      // factor of the element size / El_ref; 0 = none
+  std::int32_t size_function = -1;
+  double size_scale = 1, el_ref = 1;
+  std::int64_t temp_function_id = 0;  // a constant temperature function only (radx has no temperature)
+  double temp_factor = 1;             // Fscale_T times that constant
+};
+
 // /MAT/PLAS_BRIT (law 27): the tension crack of each shell point, by direction 1 and 2 of the crack frame.
 // Defaults as OpenRadioss hm_read_mat27.F sets them for a blank or 0 field. The Johnson-Cook part (a, b, n,
 // sig_max0, c, eps_dot_0, icc, fsmooth, f_cut) is kept in Material's law-2 fields.
@@ -117,6 +139,7 @@ struct Material {
   // Tabulated plasticity (law 36); eps_p_max and f_cut above are shared with law 2.
   PlasTab tab;
   FailJohnson fail_jc;
+  FailTab fail_tab;
   PlasBrit brit;  // law 27's crack model
 };
 

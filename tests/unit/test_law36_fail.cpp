@@ -382,7 +382,7 @@ TEST_CASE(
     int failed_at = -1;
     for (int k = 0; k < 5000 && failed_at < 0; ++k) {
       const double e_old = eps_p;
-      shell_point_update_fail(p, 0, 1.0, rate, 1.0, de, 0.0, sig, eps_p, dmg);
+      shell_point_update_fail(p, 0, 1.0, rate, 1.0, 1.0, de, 0.0, sig, eps_p, dmg);
       if (dmg >= 1.0) {
         failed_at = k;
         CHECK(e_old < eps_f * (1 + 1e-9));
@@ -394,7 +394,7 @@ TEST_CASE(
     }
     CHECK(failed_at > 0);
     // A failed point stays without stress.
-    shell_point_update_fail(p, 0, 1.0, rate, 1.0, de, 0.0, sig, eps_p, dmg);
+    shell_point_update_fail(p, 0, 1.0, rate, 1.0, 1.0, de, 0.0, sig, eps_p, dmg);
     for (double s : sig) CHECK(s == 0.0);
   }
 }
