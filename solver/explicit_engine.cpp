@@ -1,7 +1,7 @@
 // The explicit time loop; see explicit_engine.hpp for the cycle order and the energy definitions.
 // Masses and rotational inertias (elements.md section 5): shells m_e = rho t0 A0, m_e/4 per slot,
 // I = (m_e/4)(A0/9 + t0^2/12); 3-node shells m_e alpha_k/pi with I_e = m_e (A0/4.5 + t0^2/12);
-// bricks m_e/8 per node, tetrahedra m_e/4 per node, no inertia for either.
+// bricks m_e/8 per node, tetrahedra m_e/4 per node, no inertia for either; TYPE8 springs I/2 per node.
 #include "solver/explicit_engine.hpp"
 
 #include <omp.h>
@@ -80,7 +80,7 @@ void ExplicitEngine::build_nodes() {
     nodes_.z[n] = nodes_.z0[n] = m.nodes.z[n];
   }
   // Masses are the starter's lumped masses (solver/model/masses.cpp); the engine adds the scalar
-  // rotational inertias, which only shells carry.
+  // rotational inertias, which shells and TYPE8 springs carry.
   nodes_.mass = m.node_mass;
   auto X = [&](std::int32_t n) { return model::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]}; };
   auto rho_of = [&](std::int32_t part) { return m.materials[m.parts[part].material].rho; };
@@ -110,6 +110,18 @@ void ExplicitEngine::build_nodes() {
       nodes_.inertia[c[k]] += ie * std::acos(cosang) / std::numbers::pi;
     }
   }
+  // TYPE8 springs: the property's inertia, half on each node (OpenRadioss starter rmass.F).
+  for (std::size_t e = 0; e < m.springs.size(); ++e) {
+    const auto* c = &m.springs.conn[3 * e];
+    const auto part = m.springs.part[e];
+    if (c[0] < 0 || c[1] < 0 || part == model::kNone) continue;
+    const auto prop = m.parts[static_cast<std::size_t>(part)].property;
+    if (prop == model::kNone ||
+        m.properties[static_cast<std::size_t>(prop)].kind != model::PropertyKind::Spring)
+      continue;
+    const auto& sp = m.properties[static_cast<std::size_t>(prop)].spring;
+    for (int k = 0; k < 2; ++k) nodes_.inertia[c[k]] += 0.5 * sp.inertia;
+  }
 }
 
 void ExplicitEngine::build_groups() {
@@ -117,8 +129,9 @@ void ExplicitEngine::build_groups() {
   // Void and rigid elements compute no force (OpenRadioss forint.F skips laws 0 and 13): they get no group,
   // hence no stable step either. Their mass is in the nodal masses, a rigid one's motion in its rigid body.
   auto has_forces = [&](std::int32_t part) {
-    const auto law =
-        m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(part)].material)].law;
+    const auto mat = m.parts[static_cast<std::size_t>(part)].material;
+    if (mat == model::kNone) return true;  // a spring part has no material: its property gives the forces
+    const auto law = m.materials[static_cast<std::size_t>(mat)].law;
     return law != model::MaterialLaw::Void && law != model::MaterialLaw::Rigid;
   };
   // Elements with forces sorted by part (stable), then cut into groups of at most kGroupSize.
@@ -295,19 +308,26 @@ void ExplicitEngine::build_groups() {
     auto curve = [&](std::int32_t f) {
       return f == model::kNone ? nullptr : &m.functions[static_cast<std::size_t>(f)];
     };
-    g.f_load = curve(prop.f_load);
-    g.f_damp = curve(prop.f_damp);
-    g.f_damp4 = curve(prop.f_damp4);
-    g.f_unload = curve(prop.f_unload);
+    for (int d = 0; d < (prop.type == 4 ? 1 : 6); ++d) {
+      const auto& law = prop.law(d);
+      g.curves[static_cast<std::size_t>(d)] =
+          SpringLawCurves{curve(law.f_load), curve(law.f_damp), curve(law.f_unload), curve(law.f_damp4)};
+    }
+    // TYPE8: the frame of the six laws, a fixed skew's axes (moving skews are refused by the starter).
+    if (prop.type == 8 && prop.skew != model::kNone)
+      g.frame = m.skews[static_cast<std::size_t>(prop.skew)].axes;
     for (int i = 0; i < g.count; ++i) {
       const auto e = static_cast<std::size_t>(s_order[k + static_cast<std::size_t>(i)]);
       g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
       const auto n1 = m.springs.conn[3 * e], n2 = m.springs.conn[3 * e + 1];
       g.conn[static_cast<std::size_t>(i)] = n1;
       g.conn[static_cast<std::size_t>(kGroupSize + i)] = n2;
-      g.l0[static_cast<std::size_t>(i)] =
-          model::norm(model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
-                                 model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]}));
+      const auto x21 = model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
+                                  model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]});
+      g.l0[static_cast<std::size_t>(i)] = model::norm(x21);
+      for (std::size_t d = 0; d < 3; ++d)
+        g.x0[d * kGroupSize + static_cast<std::size_t>(i)] =
+            x21[0] * g.frame[3 * d] + x21[1] * g.frame[3 * d + 1] + x21[2] * g.frame[3 * d + 2];
     }
     springs_.push_back(std::move(g));
     k = end;
@@ -346,7 +366,8 @@ void ExplicitEngine::build_assembly() {
       for (int i = 0; i < g.count; ++i)
         for (int q = 0; q < 2; ++q) {
           const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
-          f(node, &g.nodal_force[static_cast<std::size_t>(q * 3 * kGroupSize + i)], false);
+          const int stride = g.node_stride();  // TYPE8 carries moments too
+          f(node, &g.nodal_force[static_cast<std::size_t>(q * stride * kGroupSize + i)], stride == 6);
         }
   };
   each_entry([&](std::int32_t node, const double*, bool) { ++count[static_cast<std::size_t>(node) + 1]; });
@@ -393,8 +414,13 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
       tetra4_forces(g, nodes_, materials_[static_cast<std::size_t>(g.material)], cyc);
     }
 #pragma omp for schedule(dynamic, 1)
-    for (std::int64_t k = 0; k < nsp; ++k)
-      spring_type4_forces(springs_[static_cast<std::size_t>(k)], nodes_, cyc);
+    for (std::int64_t k = 0; k < nsp; ++k) {
+      auto& g = springs_[static_cast<std::size_t>(k)];
+      if (g.props.type == 8)
+        spring_type8_forces(g, nodes_, cyc);
+      else
+        spring_type4_forces(g, nodes_, cyc);
+    }
   }
 }
 
