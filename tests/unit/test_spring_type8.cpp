@@ -47,13 +47,15 @@ radx::model::SpringProperty linear_type8(double mass, double inertia, const std:
   return p;
 }
 
-// /PROP/SPR_GENE/1 with mass M, inertia I, skew, Ifail and the six stiffnesses; `h` the cards of one degree of
-// freedom may be replaced through `dof_card2` (the card with fct_ID1 and H), given per dof ("" keeps it 0).
+// /PROP/SPR_GENE/1 with mass M, inertia I, skew, Ifail and the six stiffnesses; `h` the cards of one degree
+// of freedom may be replaced through `dof_card2` (the card with fct_ID1 and H), given per dof ("" keeps it
+// 0).
 std::string spr_gene(double M, double I, const std::array<double, 6>& k, int skew = 0, int ifail = 0,
                      int iequil = 0, const std::array<std::string, 6>& dof_card2 = {}) {
-  std::string s = "/PROP/SPR_GENE/1\ngeneral spring\n" +
-                  Line().put(M, 1, 20).put(I, 21, 40).put(skew, 41, 50).put(ifail, 71, 80).put(iequil, 91, 100).str() +
-                  "\n";
+  std::string s =
+      "/PROP/SPR_GENE/1\ngeneral spring\n" +
+      Line().put(M, 1, 20).put(I, 21, 40).put(skew, 41, 50).put(ifail, 71, 80).put(iequil, 91, 100).str() +
+      "\n";
   for (std::size_t d = 0; d < 6; ++d) {
     s += Line().put(k[d], 1, 20).str() + "\n";
     s += (dof_card2[d].empty() ? Line().put(0, 1, 10).str() : dof_card2[d]) + "\n";
@@ -64,7 +66,8 @@ std::string spr_gene(double M, double I, const std::array<double, 6>& k, int ske
 }
 
 // Node 1 clamped at the origin, node 2 at (100, 0, 0) with the added mass m_add, node 3 at (100, 100, 0),
-// spring 1 of part 1 between nodes 1 and 2; `extra` adds cards (initial velocities, more parts). Units Mg mm s.
+// spring 1 of part 1 between nodes 1 and 2; `extra` adds cards (initial velocities, more parts). Units Mg mm
+// s.
 std::string deck_of(const std::string& prop, double m_add, const std::string& extra) {
   std::string s = radx::test::begin_block(2019);
   s += "/NODE\n" + Line().put(1, 1, 10).put(0.0, 11, 30).put(0.0, 31, 50).put(0.0, 51, 70).str() + "\n" +
@@ -86,7 +89,8 @@ std::string deck_of(const std::string& prop, double m_add, const std::string& ex
 std::vector<double> upward_zeros(const std::vector<double>& t, const std::vector<double>& u) {
   std::vector<double> z;
   for (std::size_t k = 1; k < u.size(); ++k)
-    if (u[k - 1] < 0 && u[k] >= 0) z.push_back(t[k - 1] + (t[k] - t[k - 1]) * (-u[k - 1]) / (u[k] - u[k - 1]));
+    if (u[k - 1] < 0 && u[k] >= 0)
+      z.push_back(t[k - 1] + (t[k] - t[k - 1]) * (-u[k - 1]) / (u[k] - u[k - 1]));
   return z;
 }
 
@@ -148,7 +152,7 @@ TEST_CASE("TYPE8 kernel: six uncoupled linear springs in a skewed frame, forces,
     work += 0.5 * (k[j] * u * u + k[3 + j] * r * r);  // first cycle from rest: the trapezoid is exact
   }
   for (std::size_t q = 0; q < 3; ++q) {
-    CHECK(std::abs(g.nodal_force[q * G] - f[q]) < 1e-12 * 100);       // node 1: pulled towards node 2
+    CHECK(std::abs(g.nodal_force[q * G] - f[q]) < 1e-12 * 100);         // node 1: pulled towards node 2
     CHECK(std::abs(g.nodal_force[(3 + q) * G] - mom[q]) < 1e-12 * 10);  // node 1: the moment
     CHECK(g.nodal_force[(6 + q) * G] == -g.nodal_force[q * G]);         // node 2: equal and opposite
     CHECK(g.nodal_force[(9 + q) * G] == -g.nodal_force[(3 + q) * G]);
@@ -209,7 +213,8 @@ TEST_CASE("TYPE8 kernel: failure, each direction alone (Ifail 0) or the sum of s
 TEST_CASE("TYPE8 in the engine: a translational oscillator at 2 pi sqrt(m / k)", "[spring8][engine]") {
   // The Y law acts on the transverse motion of node 2 (the frame is fixed: no geometric stiffness).
   const double M = 1e-6, K2 = 1000.0, m_add = 1e-3, v0 = 100.0;
-  const std::string vel = "/GRNOD/NODE/3\nmoving\n" + Line().put(2, 1, 10).str() + "\n/INIVEL/TRA/1\nstart\n" +
+  const std::string vel = "/GRNOD/NODE/3\nmoving\n" + Line().put(2, 1, 10).str() +
+                          "\n/INIVEL/TRA/1\nstart\n" +
                           Line().put(0.0, 1, 20).put(v0, 21, 40).put(0.0, 41, 60).put(3, 61, 70).str() + "\n";
   const auto m = radx::test::model_of_deck(deck_of(spr_gene(M, 0.0, {0, K2, 0, 0, 0, 0}), m_add, vel));
   const double mass = m_add + 0.5 * M;
@@ -281,7 +286,8 @@ TEST_CASE("TYPE8 starter: the six laws, the frame, refusals by name", "[spring8]
   CHECK(e.find("RX510") != std::string::npos);
   CHECK(e.find("Iequil") != std::string::npos);
   // A moving skew.
-  const std::string mov = "/SKEW/MOV/5\nmoving\n" + Line().put(1, 1, 10).put(2, 11, 20).put(3, 21, 30).str() + "\n";
+  const std::string mov =
+      "/SKEW/MOV/5\nmoving\n" + Line().put(1, 1, 10).put(2, 11, 20).put(3, 21, 30).str() + "\n";
   e = errors_of(deck_of(spr_gene(1e-6, 0.0, {1, 0, 0, 0, 0, 0}, 5), 1e-3, mov));
   CHECK(e.find("moving skew") != std::string::npos);
 }
