@@ -245,11 +245,13 @@ RADX_SCHEMA(SolidProperty, RADX_FIELD(isolid), RADX_FIELD(ismstr), RADX_FIELD(ic
             RADX_FIELD(inpts), RADX_FIELD(itetra4), RADX_FIELD(itetra10), RADX_FIELD(iale), RADX_FIELD(qa),
             RADX_FIELD(qb), RADX_FIELD(h), RADX_FIELD(lambda_v), RADX_FIELD(mu_v), RADX_FIELD(dn),
             RADX_FIELD(dt_min));
-RADX_SCHEMA(SpringProperty, RADX_FIELD(mass), RADX_FIELD(stiffness), RADX_FIELD(damping), RADX_FIELD(a),
-            RADX_FIELD(b), RADX_FIELD(d), RADX_FIELD(e), RADX_FIELD(hardening), RADX_FIELD(f_load),
-            RADX_FIELD(f_damp), RADX_FIELD(f_unload), RADX_FIELD(f_damp4), RADX_FIELD(fscale),
-            RADX_FIELD(ascale), RADX_FIELD(hscale), RADX_FIELD(delta_min), RADX_FIELD(delta_max),
-            RADX_FIELD(ileng), RADX_FIELD(sensor));
+RADX_SCHEMA(SpringLaw, RADX_FIELD(stiffness), RADX_FIELD(damping), RADX_FIELD(a), RADX_FIELD(b),
+            RADX_FIELD(d), RADX_FIELD(e), RADX_FIELD(hardening), RADX_FIELD(f_load), RADX_FIELD(f_damp),
+            RADX_FIELD(f_unload), RADX_FIELD(f_damp4), RADX_FIELD(fscale), RADX_FIELD(ascale),
+            RADX_FIELD(hscale), RADX_FIELD(delta_min), RADX_FIELD(delta_max));
+RADX_SCHEMA(SpringProperty, RADX_FIELD(type), RADX_FIELD(mass), RADX_FIELD(inertia), RADX_FIELD(ileng),
+            RADX_FIELD(sensor), RADX_FIELD(skew), RADX_FIELD(ifail), RADX_FIELD(x), RADX_FIELD(y),
+            RADX_FIELD(z), RADX_FIELD(rx), RADX_FIELD(ry), RADX_FIELD(rz));
 RADX_SCHEMA(Property, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(shell),
             RADX_FIELD(solid), RADX_FIELD(spring));
 RADX_SCHEMA(Part, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(property), RADX_FIELD(material),

@@ -656,7 +656,8 @@ const std::vector<ThKindDef>& th_kinds() {
       "FX",  "FY",  "FZ",  "MX",  "MY",  "MZ",   "RX",  "RY",  "RZ",  "FXI", "FYI", "FZI", "MXI",   "MYI",
       "MZI", "X",   "Y",   "Z",   "DX",  "DY",   "DZ",  "VX",  "VY",  "VZ",  "AX",  "AY",  "AZ",    "VRX",
       "VRY", "VRZ", "ARX", "ARY", "ARZ", "MASS", "IXX", "IYY", "IZZ", "IXY", "IYZ", "IZX", "STATUS"};
-  static const std::string_view kAxialSpring = "a TYPE4 spring is axial: FX and LX only";
+  static const std::string_view kAxialSpring =
+      "a TYPE4 spring is axial: FX and LX only (TYPE8 springs write them)";
   static const std::string_view kNoType14 =
       "forces of TYPE14 and TYPE15 interfaces, which radx does not have";
   static const std::vector<ThKindDef> kinds = {

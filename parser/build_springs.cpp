@@ -1,9 +1,11 @@
-// /PROP/SPRING (TYPE4) and /SPRING: the property's defaults as OpenRadioss's starter resolves them
-// (hm_read_prop04.F), the elements, and the checks that refuse what would not run.
+// /PROP/SPRING (TYPE4), /PROP/SPR_GENE (TYPE8) and /SPRING: the properties' defaults as OpenRadioss's
+// starter resolves them (hm_read_prop04.F, hm_read_prop08.F: each of TYPE8's six laws as TYPE4's one), the
+// elements, and the checks that refuse what would not run.
 //   A, D, F, Ascale, Hscale: 0 -> 1. Without fct_ID1 the force is linear, K dx: A = 1, B = E = 0 whatever
 //   the card says (a non-default A then warns, as Radioss's message 663 does). delta_min, delta_max:
 //   0 -> no failure. Ileng 1: dx, M, K, C per unit initial length (handled by the engine).
-// The spring's mass is M (M L0 with Ileng 1), half on each node (OpenRadioss starter rmass.F).
+// The spring's mass is M (M L0 with Ileng 1), half on each node; TYPE8's inertia too (OpenRadioss starter
+// rmass.F).
 #include <cmath>
 #include <string>
 
@@ -20,51 +22,103 @@ std::string num(double v) {
 }
 }  // namespace
 
-void ModelBuilder::read_spring_property(const KeywordRecord& r, model::Property& p) {
-  p.kind = model::PropertyKind::Spring;
-  auto& s = p.spring;
-  s.mass = r.get_real("M");
-  s.stiffness = r.get_real("K");
-  s.damping = r.get_real("C");
-  s.hardening = static_cast<int>(r.get_int("H"));
-  s.ileng = static_cast<int>(r.get_int("Ileng"));
-  s.sensor = r.get_int("sens_ID");
-  const bool curve = r.get_int("fct_ID1") != 0;
-  const double a = r.get_real("A");
+// One law: the fields of /PROP/SPRING (suffix "") or of one degree of freedom of /PROP/SPR_GENE (suffix
+// "1".."6": K1, fct_ID11, delta_min1, ...). `type8`: a stiffness of 0 is a free direction, not an error.
+void ModelBuilder::read_spring_law(const KeywordRecord& r, model::SpringLaw& s, const std::string& sfx,
+                                   bool type8) {
+  auto f = [&](const char* base) { return std::string(base) + sfx; };
+  s.stiffness = r.get_real(f("K"));
+  s.damping = r.get_real(f("C"));
+  s.hardening = static_cast<int>(r.get_int(f("H")));
+  const bool curve = r.get_int(f("fct_ID1")) != 0;
+  const double a = r.get_real(f("A"));
   s.a = curve ? (a == 0 ? 1.0 : a) : 1.0;
-  s.b = curve ? r.get_real("B") : 0.0;
-  s.e = curve ? r.get_real("E") : 0.0;
+  s.b = curve ? r.get_real(f("B")) : 0.0;
+  s.e = curve ? r.get_real(f("E")) : 0.0;
   if (!curve && a != 0 && a != 1)
-    warning_at(r, "A", Diag::InconsistentValues,
-               "A = " + num(a) +
-                   " amplifies the force of fct_ID1, which the property does not give: the linear "
-                   "force K dx is not amplified (A is taken as 1, as Radioss does)");
-  auto one_if_zero = [&](std::string_view field) {
+    warning_at(
+        r, f("A"), Diag::InconsistentValues,
+        f("A") + " = " + num(a) + " amplifies the force of " + f("fct_ID1") +
+            ", which the property does not give: the linear force K dx is not amplified (A is taken as "
+            "1, as Radioss does)");
+  auto one_if_zero = [&](const std::string& field) {
     const double v = r.find(field) ? r.get_real(field) : 0.0;
     return v == 0 ? 1.0 : v;
   };
-  s.d = one_if_zero("D");
-  s.fscale = one_if_zero("F");
-  s.ascale = one_if_zero("Ascale");
-  s.hscale = one_if_zero("Hscale");
-  const double dmin = r.get_real("delta_min"), dmax = r.get_real("delta_max");
+  s.d = one_if_zero(f("D"));
+  s.fscale = one_if_zero(f("F"));
+  s.ascale = one_if_zero(f("Ascale"));
+  s.hscale = one_if_zero(f("Hscale"));
+  const double dmin = r.get_real(f("delta_min")), dmax = r.get_real(f("delta_max"));
   s.delta_min = dmin == 0 ? -1e30 : dmin;
   s.delta_max = dmax == 0 ? 1e30 : dmax;
 
   // Without fct_ID1 Radioss runs the linear force K dx whatever H says (redef3.F90 tests the curve first).
   if (!curve && s.hardening != 0) {
-    warning_at(r, "H", Diag::InconsistentValues,
-               "H = " + std::to_string(s.hardening) +
-                   " acts on the curve fct_ID1, which the property does not give: the spring is linear, K dx "
-                   "(as Radioss runs it)");
+    warning_at(r, f("H"), Diag::InconsistentValues,
+               f("H") + " = " + std::to_string(s.hardening) + " acts on the curve " + f("fct_ID1") +
+                   ", which the property does not give: the spring is linear, K dx (as Radioss runs it)");
     s.hardening = 0;
   }
   // H 7 needs both curves (Radioss: error 1058 without fct_ID1; without fct_ID3 it warns and runs H 2).
-  if (s.hardening == 7 && curve && r.get_int("fct_ID3") == 0) {
-    warning_at(
-        r, "fct_ID3", Diag::DefaultApplied,
-        "H = 7 without the unloading curve fct_ID3 is H = 2 (uncoupled hardening), as Radioss reads it");
+  if (s.hardening == 7 && curve && r.get_int(f("fct_ID3")) == 0) {
+    warning_at(r, f("fct_ID3"), Diag::DefaultApplied,
+               f("H") + " = 7 without the unloading curve " + f("fct_ID3") +
+                   " is H = 2 (uncoupled hardening), as Radioss reads it");
     s.hardening = 2;
+  }
+  if (s.stiffness < 0)
+    error_at(
+        r, f("K"), Diag::ValueOutOfRange,
+        "stiffness " + f("K") + " = " + num(s.stiffness) +
+            " is negative; K must be > 0 (the linear stiffness, or with fct_ID1 the stiffness of the time "
+            "step)");
+  else if (!type8 && s.stiffness == 0 && s.damping <= 0 && r.get_int(f("fct_ID4")) == 0)
+    error_at(r, f("K"), Diag::ValueOutOfRange,
+             "stiffness K is 0 and the spring has no damping: it would carry no force; give K > 0 (with "
+             "fct_ID1, K >= the curve's largest slope sets the time step)");
+  else if (s.stiffness == 0 && curve)
+    error_at(r, f("K"), Diag::ValueOutOfRange,
+             "stiffness " + f("K") + " is 0 with the force curve " + f("fct_ID1") + " = " +
+                 std::to_string(r.get_int(f("fct_ID1"))) +
+                 ": the time step of a spring by function comes from K; give K > 0, at least the curve's "
+                 "largest slope A df/dx");
+  if (s.damping < 0)
+    error_at(r, f("C"), Diag::ValueOutOfRange,
+             "damping " + f("C") + " = " + num(s.damping) + " is negative; C must be >= 0");
+  if (s.delta_min > 0)
+    error_at(r, f("delta_min"), Diag::ValueOutOfRange,
+             f("delta_min") + " = " + num(dmin) +
+                 " is positive; the failure elongation in compression must be < 0 (0 = none)");
+  if (s.delta_max < 0)
+    error_at(r, f("delta_max"), Diag::ValueOutOfRange,
+             f("delta_max") + " = " + num(dmax) +
+                 " is negative; the failure elongation in tension must be > 0 (0 = none)");
+}
+
+void ModelBuilder::read_spring_property(const KeywordRecord& r, model::Property& p) {
+  p.kind = model::PropertyKind::Spring;
+  auto& s = p.spring;
+  const bool type8 = r.decl->path == "/PROP/SPR_GENE";
+  s.type = type8 ? 8 : 4;
+  s.mass = r.get_real("M");
+  s.sensor = r.get_int("sens_ID");
+  if (!type8) {
+    s.ileng = static_cast<int>(r.get_int("Ileng"));
+    read_spring_law(r, s.x, "", false);
+  } else {
+    s.inertia = r.get_real("Inertia");
+    s.ifail = static_cast<int>(r.get_int("Ifail"));
+    for (int d = 0; d < 6; ++d) read_spring_law(r, s.law(d), std::to_string(d + 1), true);
+    bool rotation_moves = false;
+    for (int d = 3; d < 6; ++d)
+      rotation_moves = rotation_moves || s.law(d).stiffness > 0 || s.law(d).damping > 0;
+    if (s.inertia < 0 || (rotation_moves && !(s.inertia > 1e-15)))
+      error_at(
+          r, "Inertia", Diag::ValueOutOfRange,
+          "spring inertia = " + num(s.inertia) +
+              " is not positive and a rotation (K4..K6, C4..C6) has stiffness or damping; give Inertia > 0 "
+              "(half goes to each node; it sets the rotational time step sqrt(I/K))");
   }
   // A spring without mass has no step and moves its nodes without inertia (Radioss error 229 below 1e-15).
   if (!(s.mass > 1e-15))
@@ -72,46 +126,47 @@ void ModelBuilder::read_spring_property(const KeywordRecord& r, model::Property&
              "spring mass M = " + num(s.mass) +
                  " is not positive; a spring needs a mass M > 0 (half goes to "
                  "each node; it sets the spring's time step sqrt(M/K))");
-  if (s.stiffness < 0)
-    error_at(r, "K", Diag::ValueOutOfRange,
-             "stiffness K = " + num(s.stiffness) +
-                 " is negative; K must be > 0 (the linear stiffness, or "
-                 "with fct_ID1 the stiffness of the time step)");
-  else if (s.stiffness == 0 && s.damping <= 0 && r.get_int("fct_ID4") == 0)
-    error_at(r, "K", Diag::ValueOutOfRange,
-             "stiffness K is 0 and the spring has no damping: it would carry no force; give K > 0 (with "
-             "fct_ID1, K >= the curve's largest slope sets the time step)");
-  else if (s.stiffness == 0 && curve)
-    error_at(r, "K", Diag::ValueOutOfRange,
-             "stiffness K is 0 with the force curve fct_ID1 = " + std::to_string(r.get_int("fct_ID1")) +
-                 ": the time step of a spring by function comes from K; give K > 0, at least the curve's "
-                 "largest slope A df/dx");
-  if (s.damping < 0)
-    error_at(r, "C", Diag::ValueOutOfRange, "damping C = " + num(s.damping) + " is negative; C must be >= 0");
-  if (s.delta_min > 0)
-    error_at(r, "delta_min", Diag::ValueOutOfRange,
-             "delta_min = " + num(dmin) +
-                 " is positive; the failure elongation in compression must be < 0 "
-                 "(0 = none)");
-  if (s.delta_max < 0)
-    error_at(r, "delta_max", Diag::ValueOutOfRange,
-             "delta_max = " + num(dmax) +
-                 " is negative; the failure elongation in tension must be > 0 "
-                 "(0 = none)");
 }
 
 void ModelBuilder::resolve_spring_functions() {
   for (const auto& r : deck_.records) {
-    if (r.decl->path != "/PROP/SPRING") continue;
+    const bool type8 = r.decl->path == "/PROP/SPR_GENE";
+    if (r.decl->path != "/PROP/SPRING" && !type8) continue;
     const auto it = prop_ids_.find(r.id);
     if (it == prop_ids_.end()) continue;
     auto& p = m_.properties[static_cast<std::size_t>(it->second)];
     if (p.kind != model::PropertyKind::Spring || p.title != r.title) continue;  // a duplicate id
-    auto& s = p.spring;
-    s.f_load = ref(funct_ids_, r, "fct_ID1", "force curve", "/FUNCT", true);
-    s.f_damp = ref(funct_ids_, r, "fct_ID2", "amplification curve", "/FUNCT", true);
-    s.f_unload = ref(funct_ids_, r, "fct_ID3", "unloading curve", "/FUNCT", true);
-    if (r.find("fct_ID4")) s.f_damp4 = ref(funct_ids_, r, "fct_ID4", "velocity force curve", "/FUNCT", true);
+    for (int d = 0; d < (type8 ? 6 : 1); ++d) {
+      auto& s = p.spring.law(d);
+      const std::string sfx = type8 ? std::to_string(d + 1) : "";
+      s.f_load = ref(funct_ids_, r, "fct_ID1" + sfx, "force curve", "/FUNCT", true);
+      s.f_damp = ref(funct_ids_, r, "fct_ID2" + sfx, "amplification curve", "/FUNCT", true);
+      s.f_unload = ref(funct_ids_, r, "fct_ID3" + sfx, "unloading curve", "/FUNCT", true);
+      if (r.find("fct_ID4" + sfx))
+        s.f_damp4 = ref(funct_ids_, r, "fct_ID4" + sfx, "velocity force curve", "/FUNCT", true);
+    }
+  }
+}
+
+// TYPE8's frame: a fixed skew. A moving skew (/SKEW/MOV) would turn the six springs with its nodes; radx
+// does not update the frame, so it refuses one (RX510).
+void ModelBuilder::resolve_spring_skews() {
+  for (const auto* r : deck_.of("/PROP/SPR_GENE")) {
+    const auto it = prop_ids_.find(r->id);
+    if (it == prop_ids_.end()) continue;
+    auto& p = m_.properties[static_cast<std::size_t>(it->second)];
+    if (p.kind != model::PropertyKind::Spring || p.title != r->title) continue;
+    p.spring.skew = ref(skew_ids_, *r, "skew_ID", "skew", "/SKEW", true);
+    // A skew whose frame was refused (degenerate nodes) is registered but not built: reported already.
+    if (p.spring.skew != kNone && static_cast<std::size_t>(p.spring.skew) >= m_.skews.size()) {
+      p.spring.skew = kNone;
+      continue;
+    }
+    if (p.spring.skew != kNone && m_.skews[static_cast<std::size_t>(p.spring.skew)].moving())
+      error_at(*r, "skew_ID", Diag::PhysicsNotImplemented,
+               "skew_ID = " + std::to_string(r->get_int("skew_ID")) +
+                   " is a moving skew (/SKEW/MOV), whose axes turn with its nodes: radx does not implement a "
+                   "TYPE8 spring in a moving frame; use a /SKEW/FIX or 0 (global axes)");
   }
 }
 
@@ -136,7 +191,8 @@ void ModelBuilder::build_springs() {
         diags_.error(Diag::PartWrongKind, at(r->pos, 1), about(*r),
                      "part " + std::to_string(r->id) + " has /PROP/" +
                          std::to_string(m_.properties[static_cast<std::size_t>(pp.property)].id) +
-                         ", not a spring property; /SPRING elements need a /PROP/SPRING (TYPE4) part");
+                         ", not a spring property; /SPRING elements need a /PROP/SPRING (TYPE4) or "
+                         "/PROP/SPR_GENE (TYPE8) part");
       }
     }
     const int cid = t.column("spring_ID");

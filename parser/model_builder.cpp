@@ -561,11 +561,12 @@ void ModelBuilder::build_properties() {
   std::unordered_map<std::int64_t, SourcePos> first;
   for (const auto& r : deck_.records) {
     const auto path = r.decl->path;
-    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING") continue;
+    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" && path != "/PROP/SPR_GENE")
+      continue;
     model::Property p;
     p.id = r.id;
     p.title = r.title;
-    if (path == "/PROP/SPRING") {
+    if (path == "/PROP/SPRING" || path == "/PROP/SPR_GENE") {
       read_spring_property(r, p);
     } else if (path == "/PROP/SHELL") {
       p.kind = model::PropertyKind::Shell;
@@ -1000,6 +1001,7 @@ model::Model ModelBuilder::build() {
   transform_node_groups();      // /TRANSFORM with grnod_ID: on the groups just built, in deck order
   apply_random_perturbation();  // on the placed nodes, before anything reads positions
   build_skews();                // after every move: a /SKEW/MOV takes its frame from its nodes
+  resolve_spring_skews();
   build_sensors();
   build_loads();
   build_rigid_walls();

@@ -59,8 +59,10 @@ class ModelBuilder {
   void build_subsets_and_parts();
   void build_elements();
   void read_spring_property(const KeywordRecord& r, model::Property& p);  // build_springs.cpp
-  void build_springs();                                                   // after the parts
-  void resolve_spring_functions();                                        // after the functions
+  void read_spring_law(const KeywordRecord& r, model::SpringLaw& s, const std::string& sfx, bool type8);
+  void resolve_spring_skews();      // after the skews
+  void build_springs();             // after the parts
+  void resolve_spring_functions();  // after the functions
   void check_tetra(model::ElementBlock& b, std::size_t base, const SourcePos& pos, std::int64_t eid);
   void build_boxes();
   void build_functions();

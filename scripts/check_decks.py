@@ -28,6 +28,7 @@ import os
 import re
 import sys
 
+SPRING_PROPS = ("/PROP/SPRING", "/PROP/TYPE4", "/PROP/SPR_GENE", "/PROP/TYPE8")
 RULER_RE = re.compile(r"^#-+1-+\|")
 REAL_RE = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([EeDd][+-]?\d+|[+-]\d+)?$")
 INT_RE = re.compile(r"^[+-]?\d+$")
@@ -131,6 +132,25 @@ def prop_spring(v):
     c3 += [F("delta_min", "R", 61, 80), F("delta_max", "R", 81, 100)]
     c4 = reals("F", "E", "Ascale", "Hscale" if v >= 120 else None)
     return [card(c1), card(c2), card(c3), card(c4)]
+
+
+def prop_spr_gene(v):
+    """/PROP/SPR_GENE (TYPE8), the 120 layout on (prop_p8_spr_gene.cfg; Ifail2 from 2018): six blocks of three
+    cards, the fields of /PROP/SPRING numbered by degree of freedom (K1, fct_ID11, delta_min1, ...)."""
+    c1 = [F("M", "R", 1, 20), F("Inertia", "R", 21, 40), F("skew_ID", "I", 41, 50), F("sens_ID", "I", 51, 60),
+          F("Isflag", "I", 61, 70), F("Ifail", "I", 71, 80)]
+    if v >= 2018:
+        c1.append(F("Ifail2", "I", 81, 90))
+    c1.append(F("Iequil", "I", 91, 100))
+    cards = [card(c1)]
+    for d in "123456":
+        cards.append(card(reals("K" + d, "C" + d, "A" + d, "B" + d, "D" + d)))
+        cards.append(card([F("fct_ID1" + d, "I", 1, 10), F("H" + d, "I", 11, 20), F("fct_ID2" + d, "I", 21, 30),
+                           F("fct_ID3" + d, "I", 31, 40), F("fct_ID4" + d, "I", 41, 50),
+                           F("delta_min" + d, "R", 61, 80), F("delta_max" + d, "R", 81, 100)]))
+        cards.append(card(reals("F" + d, "E" + d, "Ascale" + d, "Hscale" + d)))
+    cards.append(card([F("Fsmooth", "I", 1, 10), F("Fcut", "R", 11, 30)]))
+    return cards
 
 
 def prop_solid(v):
@@ -581,6 +601,8 @@ STARTER = {
     "/SPRING": ("part", False, lambda v: [], "records", SPRING_REC),
     "/PROP/SPRING": ("id", True, prop_spring, None, None),
     "/PROP/TYPE4": ("id", True, prop_spring, None, None),
+    "/PROP/SPR_GENE": ("id", True, prop_spr_gene, None, None),
+    "/PROP/TYPE8": ("id", True, prop_spr_gene, None, None),
     "/SH3N": ("part", False, lambda v: [], "records", SH3N_REC),
     "/PART": ("id", True, part, None, None),
     "/PROP/SHELL": ("id", True, prop_shell, None, None),
@@ -1160,6 +1182,9 @@ class Checker:
             else:
                 self.open_subs.pop()
             return
+        if path in ("/PROP/SPR_GENE", "/PROP/TYPE8") and v < 120:
+            self.issue("RX307", file, lineno, "%s is read from the 120 layout on, not in %d" % (path, v))
+            return
         if path == "/GRNOD/GEN_INCR" and v < 2017:
             self.issue("RX307", file, lineno, "/GRNOD/GEN_INCR is read from the 2017 layout on, not in %d" % v)
             return
@@ -1261,7 +1286,8 @@ def semantic(ck, m):
         return table
 
     parts = by_id(("/PART",), "part")
-    props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14", "/PROP/SPRING", "/PROP/TYPE4"),
+    props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14", "/PROP/SPRING", "/PROP/TYPE4",
+                   "/PROP/SPR_GENE", "/PROP/TYPE8"),
                   "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02",
                   "/MAT/LAW36", "/MAT/PLAS_TAB", "/MAT/LAW27", "/MAT/PLAS_BRIT", "/MAT/LAW0", "/MAT/VOID",
@@ -1338,7 +1364,7 @@ def semantic(ck, m):
         po = parts.get(o["id"])
         if po is not None and val(po, "prop_ID") in props:
             solid_prop = props[val(po, "prop_ID")]["path"] in ("/PROP/SOLID", "/PROP/TYPE14")
-            spring_prop = props[val(po, "prop_ID")]["path"] in ("/PROP/SPRING", "/PROP/TYPE4")
+            spring_prop = props[val(po, "prop_ID")]["path"] in SPRING_PROPS
             if spring_prop or solid_prop != (kind in ("/BRICK", "/TETRA4")):
                 I("RX407", o["pos"][0], o["pos"][1], "%s/%d: part of the wrong property kind" % (kind, o["id"]))
         nn = {"/SHELL": 4, "/SH3N": 3, "/BRICK": 8, "/TETRA4": 4}[kind]
@@ -1399,7 +1425,7 @@ def semantic(ck, m):
         part_kind.setdefault(o["id"], set()).add("/SPRING")
         po = parts.get(o["id"])
         if po is not None and val(po, "prop_ID") in props and \
-                props[val(po, "prop_ID")]["path"] not in ("/PROP/SPRING", "/PROP/TYPE4"):
+                props[val(po, "prop_ID")]["path"] not in SPRING_PROPS:
             I("RX407", o["pos"][0], o["pos"][1], "/SPRING/%d: part of the wrong property kind" % o["id"])
         for r, p in o["recs"]:
             eid = r.get("spring_ID")
@@ -1423,7 +1449,7 @@ def semantic(ck, m):
             I("RX402", p[0], p[1], "part %d: property %d does not exist" % (pid, val(o, "prop_ID")))
         # a spring part has no material; a part whose property is missing is reported for that alone
         spring_part = val(o, "prop_ID") not in props or \
-            props[val(o, "prop_ID")]["path"] in ("/PROP/SPRING", "/PROP/TYPE4")
+            props[val(o, "prop_ID")]["path"] in SPRING_PROPS
         if val(o, "mat_ID", 0) == 0 and not spring_part:
             p = pos(o, "mat_ID")
             I("RX404", p[0], p[1], "part %d: mat_ID is blank or 0" % pid)
@@ -1469,6 +1495,51 @@ def semantic(ck, m):
                 p = pos(o, name)
                 I("RX402", p[0], p[1], "spring property %d: function %d does not exist" % (o["id"], f))
 
+    # TYPE8 springs (build_springs.cpp): mass > 0, inertia > 0 when a rotation has stiffness or damping, per
+    # degree of freedom K >= 0 (> 0 with a curve), C >= 0, the curves exist, failure limits of the right sign;
+    # the skew exists and is fixed (a moving one is RX510); Ifail2, Iequil, Fsmooth, sens_ID not implemented
+    for o in props.values():
+        if o["path"] not in ("/PROP/SPR_GENE", "/PROP/TYPE8"):
+            continue
+        if not val(o, "M", 0.0) > 1e-15:
+            p = pos(o, "M")
+            I("RX501", p[0], p[1], "spring mass %g is not positive" % val(o, "M", 0.0))
+        rot = any(val(o, "K" + d, 0.0) > 0 or val(o, "C" + d, 0.0) > 0 for d in "456")
+        if val(o, "Inertia", 0.0) < 0 or (rot and not val(o, "Inertia", 0.0) > 1e-15):
+            p = pos(o, "Inertia")
+            I("RX501", p[0], p[1], "spring inertia %g is not positive" % val(o, "Inertia", 0.0))
+        for d in "123456":
+            k = val(o, "K" + d, 0.0)
+            if k < 0 or (k == 0 and val(o, "fct_ID1" + d, 0) != 0):
+                p = pos(o, "K" + d)
+                I("RX501", p[0], p[1], "spring stiffness K%s %g" % (d, k))
+            if val(o, "C" + d, 0.0) < 0:
+                p = pos(o, "C" + d)
+                I("RX501", p[0], p[1], "negative spring damping C%s" % d)
+            if val(o, "delta_min" + d, 0.0) > 0:
+                p = pos(o, "delta_min" + d)
+                I("RX501", p[0], p[1], "positive delta_min%s" % d)
+            if val(o, "delta_max" + d, 0.0) < 0:
+                p = pos(o, "delta_max" + d)
+                I("RX501", p[0], p[1], "negative delta_max%s" % d)
+            for name in ("fct_ID1", "fct_ID2", "fct_ID3", "fct_ID4"):
+                f = val(o, name + d, 0)
+                if f != 0 and f not in functs:
+                    p = pos(o, name + d)
+                    I("RX402", p[0], p[1], "spring property %d: function %d does not exist" % (o["id"], f))
+        for name in ("Ifail2", "Iequil", "Fsmooth", "sens_ID"):
+            if val(o, name, 0) != 0:
+                p = pos(o, name)
+                I("RX510", p[0], p[1], "%s %d: %s changes the physics" % (o["path"], o["id"], name))
+        sk = val(o, "skew_ID", 0)
+        if sk != 0:
+            skew = next((x for x in m.of("/SKEW/FIX", "/SKEW/MOV") if x["id"] == sk), None)
+            p = pos(o, "skew_ID")
+            if skew is None:
+                I("RX402", p[0], p[1], "spring property %d: skew %d does not exist" % (o["id"], sk))
+            elif skew["path"] == "/SKEW/MOV":
+                I("RX510", p[0], p[1], "spring property %d: moving skew %d" % (o["id"], sk))
+
     # formulations (check_formulations.cpp): a flag of a property used by elements must be one radx implements,
     # resolved as property value, else the /DEF_SHELL or /DEF_SOLID value, else the hard default
     defs = {k: (m.of(k) or [None])[0] for k in ("/DEF_SHELL", "/DEF_SOLID")}
@@ -1494,6 +1565,11 @@ def semantic(ck, m):
             h = val(o, "H", 0)
             if val(o, "fct_ID1", 0) != 0 and (h not in (0, 7) or (h == 7 and val(o, "fct_ID3", 0) == 0)):
                 bad.append("H")
+        elif o["path"] in ("/PROP/SPR_GENE", "/PROP/TYPE8"):
+            for d in "123456":
+                h = val(o, "H" + d, 0)
+                if val(o, "fct_ID1" + d, 0) != 0 and (h not in (0, 7) or (h == 7 and val(o, "fct_ID3" + d, 0) == 0)):
+                    bad.append("H" + d)
         elif o["path"] in ("/PROP/SHELL", "/PROP/TYPE1"):
             # Ishell 1, 12 (QBAT) and 24 (QEPH; 22 and 23 run as 24, elements.md 1.1)
             if "/SHELL" in kinds and resolved(o, "Ishell", "/DEF_SHELL", 1) not in (1, 12, 22, 23, 24):

@@ -497,6 +497,51 @@ def _():
         [("RX510", "PSPR.H")]
 
 
+SPR8 = dict(M=1e-6, Inertia=0.0, skew_ID=0, sens_ID=0, Isflag=0, Ifail=0, Ifail2=0, Iequil=0, Fsmooth=0, Fcut=0.0,
+            **{k + d: v for d in "123456" for k, v in (("K", 0.0), ("C", 0.0), ("A", 0.0), ("B", 0.0), ("D", 0.0),
+                                                      ("fct_ID1", 0), ("H", 0), ("fct_ID2", 0), ("fct_ID3", 0),
+                                                      ("fct_ID4", 0), ("delta_min", 0.0), ("delta_max", 0.0),
+                                                      ("F", 0.0), ("E", 0.0), ("Ascale", 0.0), ("Hscale", 0.0))})
+
+
+def with_spring8(d, **prop):
+    """d with /SPRING/4 (spring 31 between the plate's nodes 3 and 6, tag SPRING_31) in part 4 (no material) of
+    /PROP/SPR_GENE/4 (tag PSPR8: M 1e-6, K1 1000, the given values on top)."""
+    d.insert_before("AFTER_PARTS", block("SPRING", "/SPRING", 4, rows=[(31, 3, 6, 0)], row_tags=["SPRING_31"]) +
+                    part(4, "Spring", 4, 0))
+    d.insert_before("AFTER_MATS", block("PSPR8", "/PROP/SPR_GENE", 4, "General spring",
+                                        **dict(SPR8, K1=1000.0, **prop)))
+    return d
+
+
+@fault("spring8_rotation_without_inertia")
+def _():
+    d = with_spring8(base(), K4=50.0)
+    return d, "/PROP/SPR_GENE/4 gives the rotation about X a stiffness K4 = 50 but no Inertia: the rotation would " \
+        "have no time step and the node no inertia", [("RX501", "PSPR8.Inertia")]
+
+
+@fault("spring8_negative_damping")
+def _():
+    d = with_spring8(base(), C3=-1.0)
+    return d, "/PROP/SPR_GENE/4 has a negative damping C3 = -1", [("RX501", "PSPR8.C3")]
+
+
+@fault("spring8_hardening_refused")
+def _():
+    d = with_spring8(base(), fct_ID12=7, H2=6, fct_ID32=7, K2=1000.0)
+    d.insert_before("AFTER_MATS", funct_rows(7, [(-1.0, -1000.0), (0.0, 0.0), (1.0, 1000.0)], "Spring force", "F7"))
+    return d, "/PROP/SPR_GENE/4 asks for H2 = 6 (hardening of the yield curve) on its Y law, which radx does not " \
+        "implement: refused by name", [("RX510", "PSPR8.H2")]
+
+
+@fault("spring8_iequil_refused")
+def _():
+    d = with_spring8(base(), Iequil=1)
+    return d, "/PROP/SPR_GENE/4 asks for Iequil = 1 (moment equilibrium of the shear forces), which radx does not " \
+        "implement", [("RX510", "PSPR8.Iequil")]
+
+
 @fault("tetra_zero_volume")
 def _():
     d = with_tetra(base(), row=(21, 11, 12, 13, 14))

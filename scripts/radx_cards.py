@@ -215,6 +215,15 @@ LAYOUTS = {
         Card(i("fct_ID1"), i("H"), i("fct_ID2"), i("fct_ID3"), i("fct_ID4", since=120), gap(10), r("delta_min"),
              r("delta_max")),
         Card(r("F"), r("E"), r("Ascale"), r("Hscale", since=120))),
+    "/PROP/SPR_GENE": Layout(
+        Card(r("M"), r("Inertia"), i("skew_ID"), i("sens_ID"), i("Isflag"), i("Ifail"), i("Ifail2", since=2018),
+             i("Iequil", col=91)),
+        *[c for d in "123456" for c in (
+            Card(r("K" + d), r("C" + d), r("A" + d), r("B" + d), r("D" + d)),
+            Card(i("fct_ID1" + d), i("H" + d), i("fct_ID2" + d), i("fct_ID3" + d), i("fct_ID4" + d), gap(10),
+                 r("delta_min" + d), r("delta_max" + d)),
+            Card(r("F" + d), r("E" + d), r("Ascale" + d), r("Hscale" + d)))],
+        Card(i("Fsmooth"), r("Fcut"))),
     "/MAT/LAW1": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
     "/MAT/VOID": Layout(Card(r("RHO_I"), r("E"), r("nu"))),
     "/MAT/RIGID": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),

@@ -73,9 +73,11 @@ void SpringGroup::allocate(int n) {
   const auto G = static_cast<std::size_t>(kGroupSize);
   conn.assign(2 * G, 0);
   element.assign(G, -1);
-  for (auto* v : {&l0, &dx, &force, &f_static, &e_int, &dt, &k_nodal}) v->assign(G, 0.0);
+  for (auto* v : {&l0, &e_int, &dt, &k_nodal}) v->assign(G, 0.0);
+  for (auto* v : {&dx, &force, &f_static}) v->assign(6 * G, 0.0);
+  x0.assign(3 * G, 0.0);
   off.assign(G, 1.0);
-  nodal_force.assign(2 * 3 * G, 0.0);
+  nodal_force.assign(2 * 6 * G, 0.0);
 }
 
 void BrickGroup::allocate_points() {

@@ -5,11 +5,13 @@
 // order, so results do not depend on the number of threads.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "solver/material_point.hpp"
 #include "solver/node_state.hpp"
+#include "solver/spring_law.hpp"
 
 namespace radx::solver {
 
@@ -199,27 +201,29 @@ struct TetraGroup {
   void allocate(int n);
 };
 
-// TYPE4 springs (/SPRING with /PROP/SPRING, spring_type4.cpp): one part, so one property, per group. The
-// curves point into the model's functions (the engine keeps the model alive).
+// Springs (/SPRING): one part, so one property, per group. TYPE4 (/PROP/SPRING, spring_type4.cpp): one axial
+// law, state in the first G slots of dx, force, f_static and forces [2][3][G]. TYPE8 (/PROP/SPR_GENE,
+// spring_type8.cpp): six laws X Y Z RX RY RZ, state [6][G] and forces and moments [2][6][G]. The curves point
+// into the model's functions (the engine keeps the model alive).
 struct SpringGroup {
   int count = 0;
   std::vector<std::int32_t> element;  // [G] index of each slot's spring in the model's spring block
   std::int32_t part = -1;
   model::SpringProperty props;
-  const model::Function* f_load = nullptr;    // fct_ID1
-  const model::Function* f_damp = nullptr;    // fct_ID2
-  const model::Function* f_damp4 = nullptr;   // fct_ID4
-  const model::Function* f_unload = nullptr;  // fct_ID3 (H = 7)
-  std::vector<std::int32_t> conn;             // [2][G] n1 n2
-  std::vector<double> l0;                     // [G] initial length
-  std::vector<double> dx;                     // [G] elongation L - L0 of the last cycle (> 0 in tension)
-  std::vector<double> force;                  // [G] axial force of the last cycle (> 0 in tension)
-  std::vector<double> f_static;     // [G] H = 7: the force on the hysteresis loop, before amplification
-  std::vector<double> e_int;        // [G] accumulated work of the spring force (elastic and damping)
+  std::array<SpringLawCurves, 6> curves{};                 // each law's curves (TYPE4: [0])
+  std::array<double, 9> frame{1, 0, 0, 0, 1, 0, 0, 0, 1};  // TYPE8: rows = the axes X Y Z, global components
+  std::vector<std::int32_t> conn;                          // [2][G] n1 n2
+  std::vector<double> l0;                                  // [G] initial length
+  std::vector<double> x0;                                  // [3][G] TYPE8: initial x2 - x1 in the frame
+  std::vector<double> dx;           // [6][G] elongation (rotation) of the last cycle (> 0 in tension)
+  std::vector<double> force;        // [6][G] force (moment) of the last cycle (> 0 in tension)
+  std::vector<double> f_static;     // [6][G] H = 7: the force on the hysteresis loop, before amplification
+  std::vector<double> e_int;        // [G] accumulated work of the spring forces (elastic and damping)
   std::vector<double> off;          // [G] 1 alive, 0 broken (delta_min, delta_max)
   std::vector<double> dt;           // [G] stable step, before the /DT scale
   std::vector<double> k_nodal;      // [G] nodal stiffness contribution M / dt^2 (for nodal steps)
-  std::vector<double> nodal_force;  // [2][3][G] force ADDED to n1 and n2, global axes
+  std::vector<double> nodal_force;  // [2][3][G] (TYPE4) or [2][6][G] (TYPE8) ADDED to n1 and n2, global axes
+  [[nodiscard]] int node_stride() const { return props.type == 4 ? 3 : 6; }
   void allocate(int n);
 };
 
@@ -234,6 +238,7 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
 void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
                        const CycleInfo& cyc);
 void spring_type4_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc);
+void spring_type8_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc);
 void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 

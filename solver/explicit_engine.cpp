@@ -1,7 +1,7 @@
 // The explicit time loop; see explicit_engine.hpp for the cycle order and the energy definitions.
 // Masses and rotational inertias (elements.md section 5): shells m_e = rho t0 A0, m_e/4 per slot,
 // I = (m_e/4)(A0/9 + t0^2/12); 3-node shells m_e alpha_k/pi with I_e = m_e (A0/4.5 + t0^2/12);
-// bricks m_e/8 per node, tetrahedra m_e/4 per node, no inertia for either.
+// bricks m_e/8 per node, tetrahedra m_e/4 per node, no inertia for either; TYPE8 springs I/2 per node.
 #include "solver/explicit_engine.hpp"
 
 #include <omp.h>
@@ -80,7 +80,7 @@ void ExplicitEngine::build_nodes() {
     nodes_.z[n] = nodes_.z0[n] = m.nodes.z[n];
   }
   // Masses are the starter's lumped masses (solver/model/masses.cpp); the engine adds the scalar
-  // rotational inertias, which only shells carry.
+  // rotational inertias, which shells and TYPE8 springs carry.
   nodes_.mass = m.node_mass;
   auto X = [&](std::int32_t n) { return model::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]}; };
   auto rho_of = [&](std::int32_t part) { return m.materials[m.parts[part].material].rho; };
@@ -109,6 +109,18 @@ void ExplicitEngine::build_nodes() {
       const double cosang = std::clamp(model::dot(u, v) / (model::norm(u) * model::norm(v)), -1.0, 1.0);
       nodes_.inertia[c[k]] += ie * std::acos(cosang) / std::numbers::pi;
     }
+  }
+  // TYPE8 springs: the property's inertia, half on each node (OpenRadioss starter rmass.F).
+  for (std::size_t e = 0; e < m.springs.size(); ++e) {
+    const auto* c = &m.springs.conn[3 * e];
+    const auto part = m.springs.part[e];
+    if (c[0] < 0 || c[1] < 0 || part == model::kNone) continue;
+    const auto prop = m.parts[static_cast<std::size_t>(part)].property;
+    if (prop == model::kNone ||
+        m.properties[static_cast<std::size_t>(prop)].kind != model::PropertyKind::Spring)
+      continue;
+    const auto& sp = m.properties[static_cast<std::size_t>(prop)].spring;
+    for (int k = 0; k < 2; ++k) nodes_.inertia[c[k]] += 0.5 * sp.inertia;
   }
 }
 
@@ -189,6 +201,28 @@ void ExplicitEngine::build_groups() {
         };
         g.area0[static_cast<std::size_t>(i)] =
             triangle ? model::triangle_area(X(0), X(1), X(2)) : model::quad_area(X(0), X(1), X(2), X(3));
+        // /FAIL/TAB's element-size factor from the length at t = 0 (OpenRadioss keeps the starter's ALDT,
+        // cfailini.F): elements.md 4.1 L = max(A / longest diagonal, shortest side or diagonal) for quads,
+        // 4.2 2A / longest side for triangles.
+        const auto& fp = materials_[static_cast<std::size_t>(mat)].fail;
+        if (fp.on && fp.has_size) {
+          auto d2 = [](const model::Vec3& a, const model::Vec3& c) {
+            return (a[0] - c[0]) * (a[0] - c[0]) + (a[1] - c[1]) * (a[1] - c[1]) +
+                   (a[2] - c[2]) * (a[2] - c[2]);
+          };
+          const double a0 = g.area0[static_cast<std::size_t>(i)];
+          double len = 0;
+          if (triangle) {
+            len = 2.0 * a0 / std::sqrt(std::max({d2(X(0), X(1)), d2(X(1), X(2)), d2(X(2), X(0))}));
+          } else {
+            const double dmax = std::max(d2(X(0), X(2)), d2(X(1), X(3)));
+            double lmin2 = std::min({d2(X(0), X(1)), d2(X(1), X(2)), d2(X(3), X(0))});
+            if (b.conn[e * 4 + 3] != b.conn[e * 4 + 2])
+              lmin2 = std::min({lmin2, d2(X(2), X(3)), d2(X(0), X(2)), d2(X(1), X(3))});
+            len = std::sqrt(std::max(a0 * a0 / dmax, lmin2));
+          }
+          g.fail_scale[static_cast<std::size_t>(i)] = fail_size_factor(fp, len);
+        }
       }
       shells_.push_back(std::move(g));
       k = end;
@@ -297,19 +331,26 @@ void ExplicitEngine::build_groups() {
     auto curve = [&](std::int32_t f) {
       return f == model::kNone ? nullptr : &m.functions[static_cast<std::size_t>(f)];
     };
-    g.f_load = curve(prop.f_load);
-    g.f_damp = curve(prop.f_damp);
-    g.f_damp4 = curve(prop.f_damp4);
-    g.f_unload = curve(prop.f_unload);
+    for (int d = 0; d < (prop.type == 4 ? 1 : 6); ++d) {
+      const auto& law = prop.law(d);
+      g.curves[static_cast<std::size_t>(d)] =
+          SpringLawCurves{curve(law.f_load), curve(law.f_damp), curve(law.f_unload), curve(law.f_damp4)};
+    }
+    // TYPE8: the frame of the six laws, a fixed skew's axes (moving skews are refused by the starter).
+    if (prop.type == 8 && prop.skew != model::kNone)
+      g.frame = m.skews[static_cast<std::size_t>(prop.skew)].axes;
     for (int i = 0; i < g.count; ++i) {
       const auto e = static_cast<std::size_t>(s_order[k + static_cast<std::size_t>(i)]);
       g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
       const auto n1 = m.springs.conn[3 * e], n2 = m.springs.conn[3 * e + 1];
       g.conn[static_cast<std::size_t>(i)] = n1;
       g.conn[static_cast<std::size_t>(kGroupSize + i)] = n2;
-      g.l0[static_cast<std::size_t>(i)] =
-          model::norm(model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
-                                 model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]}));
+      const auto x21 = model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
+                                  model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]});
+      g.l0[static_cast<std::size_t>(i)] = model::norm(x21);
+      for (std::size_t d = 0; d < 3; ++d)
+        g.x0[d * kGroupSize + static_cast<std::size_t>(i)] =
+            x21[0] * g.frame[3 * d] + x21[1] * g.frame[3 * d + 1] + x21[2] * g.frame[3 * d + 2];
     }
     springs_.push_back(std::move(g));
     k = end;
@@ -348,7 +389,8 @@ void ExplicitEngine::build_assembly() {
       for (int i = 0; i < g.count; ++i)
         for (int q = 0; q < 2; ++q) {
           const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
-          f(node, &g.nodal_force[static_cast<std::size_t>(q * 3 * kGroupSize + i)], false);
+          const int stride = g.node_stride();  // TYPE8 carries moments too
+          f(node, &g.nodal_force[static_cast<std::size_t>(q * stride * kGroupSize + i)], stride == 6);
         }
   };
   each_entry([&](std::int32_t node, const double*, bool) { ++count[static_cast<std::size_t>(node) + 1]; });
@@ -395,8 +437,13 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
       tetra4_forces(g, nodes_, materials_[static_cast<std::size_t>(g.material)], cyc);
     }
 #pragma omp for schedule(dynamic, 1)
-    for (std::int64_t k = 0; k < nsp; ++k)
-      spring_type4_forces(springs_[static_cast<std::size_t>(k)], nodes_, cyc);
+    for (std::int64_t k = 0; k < nsp; ++k) {
+      auto& g = springs_[static_cast<std::size_t>(k)];
+      if (g.props.type == 8)
+        spring_type8_forces(g, nodes_, cyc);
+      else
+        spring_type4_forces(g, nodes_, cyc);
+    }
   }
 }
 

@@ -10,15 +10,8 @@
 //   s = L0 with Ileng 1 (a spring per unit length), 1 otherwise
 //   x = (l - L0) / s                          elongation (strain with Ileng 1), total form
 //   v = (x - x_old) / dt1                     (0 on the first cycle)
-//   f(x) = K x                                without fct_ID1
-//        = f1(x / Ascale)                     with it, H = 0
-//   H = 7 (elastic hysteresis between the loading curve f1 and the unloading curve f3): the trial
-//        f = f_old + (K / A) (x - x_old) is bounded by the curve of the way the spring moves: while |x| grows
-//        (x >= x_old >= ... in tension, x < x_old in compression) f is at most f1(x / Ascale) in tension and
-//        at least f1 in compression; while |x| shrinks, f is at least f3(x / Ascale) in tension and at most
-//        f3 in compression. f_old is this static force of the last cycle (before the amplification).
-//   a(v) = A + B ln(max(1, |v| / D)) + E g2(v / F)      (1 without fct_ID1: the starter sets A 1, B E 0)
-//   N = a(v) f(x) + C v + Hscale g4(v / F)    (K, C per unit length with Ileng 1)
+//   N = the scalar spring law of x, x_old, v  (spring_law.hpp: linear or by curve, H 0 or 7, damping;
+//                                             K, C per unit length with Ileng 1)
 //   work: E += (x - x_old) (N + N_old) / 2 * s   (trapezoid; elastic and damping work together, as Radioss)
 //   nodal forces: n1 += N e, n2 -= N e        (tension pulls the nodes together)
 //   failure: the spring breaks (N = 0 from then on) when s x leaves [delta_min Ascale, delta_max Ascale]
@@ -32,13 +25,14 @@
 #include <limits>
 
 #include "solver/element_groups.hpp"
-#include "solver/functions.hpp"
+#include "solver/spring_law.hpp"
 
 namespace radx::solver {
 
 void spring_type4_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc) {
   constexpr std::size_t G = kGroupSize;
   const auto& p = g.props;
+  const auto& law = p.x;
   const double inv_dt = cyc.dt1 > 0 ? 1.0 / cyc.dt1 : 0.0;
   for (int ii = 0; ii < g.count; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
@@ -48,7 +42,7 @@ void spring_type4_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo
     const double l0 = g.l0[i];
     const double s = p.ileng == 1 ? l0 : 1.0;
     // Step from the property: the same every cycle (r1len3.F has no geometric term for TYPE4).
-    const double m = p.mass * s, k = p.stiffness / s, c = p.damping / s;
+    const double m = p.mass * s, k = law.stiffness / s, c = law.damping / s;
     double dt = m / std::max(1e-15, std::sqrt(c * c + m * k) + c);
     dt = std::min(dt, 0.5 * m / std::max(1e-15, c));
     if (g.off[i] <= 0) {
@@ -66,28 +60,9 @@ void spring_type4_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo
     const double x = (l - l0) / s;
     const double x_old = g.dx[i] / s;
     const double v = (x - x_old) * inv_dt;
-    double f = p.stiffness * x;
-    double amp = 1.0;
-    if (g.f_load) {
-      const double load = function_value(*g.f_load, x / p.ascale);
-      f = load;
-      if (p.hardening == 7) {
-        const double unload = function_value(*g.f_unload, x / p.ascale);
-        f = g.f_static[i] + p.stiffness / p.a * (x - x_old);
-        const bool growing = x >= x_old;
-        if (x >= 0)
-          f = growing ? std::min(f, load) : std::max(f, unload);
-        else
-          f = growing ? std::min(f, unload) : std::max(f, load);
-      }
-      g.f_static[i] = f;
-      amp = p.a + p.b * std::log(std::max(1.0, std::abs(v / p.d)));
-      if (g.f_damp) amp += p.e * function_value(*g.f_damp, v / p.fscale);
-    }
-    double n = amp * f + p.damping * v;
-    if (g.f_damp4) n += p.hscale * function_value(*g.f_damp4, v / p.fscale);
+    double n = spring_law_force(law, g.curves[0], x, x_old, v, g.f_static[i]);
     const double elong = x * s;
-    if (elong > p.delta_max * p.ascale || elong < p.delta_min * p.ascale) {
+    if (elong > law.delta_max * law.ascale || elong < law.delta_min * law.ascale) {
       g.off[i] = 0.0;
       n = 0.0;
     }

@@ -467,9 +467,17 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
         const auto& g = e.spring_groups()[static_cast<std::size_t>(gi)];
         const auto k = static_cast<std::size_t>(i);
         put(o, "OFF", g.off[k]);
-        put(o, "FX", g.force[k]);
-        put(o, "LX", g.dx[k]);
         put(o, "IE", g.e_int[k]);
+        // TYPE4: FX and LX along the spring; TYPE8: the six laws' forces, moments, elongations, rotations.
+        const char* names[4][3] = {
+            {"FX", "FY", "FZ"}, {"MX", "MY", "MZ"}, {"LX", "LY", "LZ"}, {"RX", "RY", "RZ"}};
+        for (std::size_t d = 0; d < (g.props.type == 4 ? 1u : 3u); ++d) {
+          put(o, names[0][d], g.force[d * kGroupSize + k]);
+          put(o, names[2][d], g.dx[d * kGroupSize + k]);
+          if (g.props.type == 4) continue;
+          put(o, names[1][d], g.force[(3 + d) * kGroupSize + k]);
+          put(o, names[3][d], g.dx[(3 + d) * kGroupSize + k]);
+        }
       }
       break;
     case K::Accel:

@@ -156,12 +156,12 @@ struct SolidProperty {
   double qa = 1.1, qb = 0.05, h = 0.1, lambda_v = 0, mu_v = 0, dn = 0, dt_min = 0;
 };
 
-// /PROP/SPRING (/PROP/TYPE4), as OpenRadioss's starter reads it (hm_read_prop04.F), defaults resolved.
-// Force along the spring, with x the elongation (divided by the initial length when Ileng = 1) and
-// v = dx/dt:  F = (A + B ln(max(1, |v| / D)) + E g2(v / F)) f(x) + C v + Hscale g4(v / F),
-// with f(x) = K x without fct_ID1 (A = 1, B = E = 0 then), f1(x / Ascale) with it.
-struct SpringProperty {
-  double mass = 0;       // M (per unit length when Ileng = 1)
+// One spring law, as OpenRadioss's starter reads it (hm_read_prop04.F, hm_read_prop08.F), defaults
+// resolved: the force along one degree of freedom, with x its elongation (divided by the initial length when
+// Ileng = 1) and v = dx/dt:  F = (A + B ln(max(1, |v| / D)) + E g2(v / F)) f(x) + C v + Hscale g4(v / F),
+// with f(x) = K x without fct_ID1 (A = 1, B = E = 0 then), f1(x / Ascale) with it. For a rotational degree
+// of freedom x is an angle and F a moment.
+struct SpringLaw {
   double stiffness = 0;  // K: the linear stiffness, and the stiffness of the time step
   double damping = 0;    // C
   double a = 1, b = 0, d = 1, e = 0;
@@ -174,8 +174,28 @@ struct SpringProperty {
   double ascale = 1;              // Ascale: abscissa scale of fct_ID1
   double hscale = 1;              // Hscale4: ordinate scale of g4
   double delta_min = -1e30, delta_max = 1e30;  // failure elongations (0 in the deck: none)
-  int ileng = 0;                               // 1: M, K, C and the curves per unit length
-  std::int64_t sensor = 0;                     // sens_ID (refused when not 0)
+};
+
+// /PROP/SPRING (TYPE4): one law along the spring (`x`). /PROP/SPR_GENE (TYPE8): six uncoupled laws
+// x y z rx ry rz along the axes of a fixed frame (global, or a /SKEW/FIX), with the rotational inertia
+// `inertia` and the failure criterion `ifail`.
+struct SpringProperty {
+  int type = 4;               // Radioss property type: 4 (/PROP/SPRING) or 8 (/PROP/SPR_GENE)
+  double mass = 0;            // M (per unit length when Ileng = 1), half to each node
+  double inertia = 0;         // TYPE8: rotational inertia, half to each node
+  int ileng = 0;              // TYPE4: 1: M, K, C and the curves per unit length
+  std::int64_t sensor = 0;    // sens_ID (refused when not 0)
+  std::int32_t skew = kNone;  // TYPE8: frame of the six laws (dense index into Model::skews); kNone global
+  int ifail = 0;              // TYPE8: 0 a degree of freedom breaks the spring alone, 1 sum of squares
+  SpringLaw x, y, z, rx, ry, rz;  // TYPE4 uses x only
+  [[nodiscard]] const SpringLaw& law(int dof) const {
+    const SpringLaw* l[6] = {&x, &y, &z, &rx, &ry, &rz};
+    return *l[dof];
+  }
+  [[nodiscard]] SpringLaw& law(int dof) {
+    SpringLaw* l[6] = {&x, &y, &z, &rx, &ry, &rz};
+    return *l[dof];
+  }
 };
 
 struct Property {

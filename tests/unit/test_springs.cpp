@@ -112,7 +112,7 @@ TEST_CASE("spring kernel: linear force K dx along the line, equal and opposite, 
   auto ns = radx::test::make_nodes({{0, 0, 0}, {30, 40, 0}});  // L0 = 50
   radx::model::SpringProperty p;
   p.mass = 2.0;
-  p.stiffness = 8.0;
+  p.x.stiffness = 8.0;
   auto g = one_spring(ns, p);
   // Stretch by 5 along the line: x2 = (33, 44, 0), dx = 5, N = K dx = 40 in tension, pulling node 1
   // towards 2.
@@ -129,7 +129,7 @@ TEST_CASE("spring kernel: linear force K dx along the line, equal and opposite, 
   CHECK(rel(g.dt[0], std::sqrt(2.0 / 8.0)) < 1e-12);
   CHECK(rel(g.e_int[0], 100.0) < 1e-12);
   // With damping C: dt = M / (sqrt(C^2 + M K) + C), below sqrt(M/K).
-  g.props.damping = 3.0;
+  g.props.x.damping = 3.0;
   radx::solver::spring_type4_forces(g, ns, radx::solver::CycleInfo{1e-3, 1e-3, 0});
   CHECK(rel(g.dt[0], 2.0 / (std::sqrt(9.0 + 16.0) + 3.0)) < 1e-12);
 }
@@ -138,8 +138,8 @@ TEST_CASE("spring kernel: a rigid rotation of the spring gives no force (objecti
   auto ns = radx::test::make_nodes({{1, 2, 3}, {11, 2, 3}});  // L0 = 10 along X
   radx::model::SpringProperty p;
   p.mass = 1.0;
-  p.stiffness = 100.0;
-  p.damping = 5.0;
+  p.x.stiffness = 100.0;
+  p.x.damping = 5.0;
   auto g = one_spring(ns, p);
   // Turn n2 about n1 in steps up to 90 degrees about Z then tilt about X: the length stays 10, so the
   // elongation, its rate and the force stay 0 to round-off (force scale K L0 = 1000).
@@ -161,10 +161,10 @@ TEST_CASE("spring kernel: a spring by function follows the function, scaled and 
   auto ns = radx::test::make_nodes({{0, 0, 0}, {10, 0, 0}});
   radx::model::SpringProperty p;
   p.mass = 1.0;
-  p.stiffness = 100.0;
-  p.ascale = 2.0;
+  p.x.stiffness = 100.0;
+  p.x.ascale = 2.0;
   auto g = one_spring(ns, p);
-  g.f_load = &f;
+  g.curves[0].load = &f;
   const double dt = 1e-3;
   for (const double x : {0.5, 1.0, 2.0, 4.0, 6.0, 8.0, 3.0, -1.0}) {
     ns.x[1] = 10 + x;
@@ -174,9 +174,9 @@ TEST_CASE("spring kernel: a spring by function follows the function, scaled and 
   }
   // The dynamic amplification A + B ln(max(1, |v|/D)): from x = 2 to 2.5 in dt, v = 500, D = 50:
   // N = (A + B ln 10) f(1.25).
-  g.props.a = 1.5;
-  g.props.b = 0.2;
-  g.props.d = 50.0;
+  g.props.x.a = 1.5;
+  g.props.x.b = 0.2;
+  g.props.x.d = 50.0;
   ns.x[1] = 12.0;
   radx::solver::spring_type4_forces(g, ns, radx::solver::CycleInfo{dt, dt, 0});
   ns.x[1] = 12.5;
@@ -198,11 +198,11 @@ TEST_CASE("spring kernel: H = 7 follows the loading curve, unloads with K, then 
   auto ns = radx::test::make_nodes({{0, 0, 0}, {10, 0, 0}});
   radx::model::SpringProperty p;
   p.mass = 1.0;
-  p.stiffness = 1000.0;
-  p.hardening = 7;
+  p.x.stiffness = 1000.0;
+  p.x.hardening = 7;
   auto g = one_spring(ns, p);
-  g.f_load = &f1;
-  g.f_unload = &f3;
+  g.curves[0].load = &f1;
+  g.curves[0].unload = &f3;
   auto at = [&](double x) {
     ns.x[1] = 10 + x;
     radx::solver::spring_type4_forces(g, ns, radx::solver::CycleInfo{1e-3, 1e-3, 0});
@@ -226,9 +226,9 @@ TEST_CASE("spring kernel: Ileng 1 makes M, K and the elongation per unit length,
   auto ns = radx::test::make_nodes({{0, 0, 0}, {0, 0, 20}});  // L0 = 20
   radx::model::SpringProperty p;
   p.mass = 0.5;
-  p.stiffness = 400.0;
+  p.x.stiffness = 400.0;
   p.ileng = 1;
-  p.delta_max = 3.0;
+  p.x.delta_max = 3.0;
   auto g = one_spring(ns, p);
   ns.z[1] = 22;  // strain 0.1: N = K 0.1 = 40
   radx::solver::spring_type4_forces(g, ns, radx::solver::CycleInfo{1e-3, 1e-3, 0});
@@ -311,7 +311,7 @@ TEST_CASE("spring by function in the engine: the time history force follows the 
          Line().put(8, 1, 10).put("X", 20, 20).put(0, 21, 30).put(0, 31, 40).put(2, 41, 50).str() + "\n" +
          Line().put(0.0, 1, 20).put(1.0, 21, 40).str() + "\n";
   const auto m = radx::test::model_of_deck(oscillator_deck(1e-6, 6000.0, 0.0, 1e-3, 0.0, fun, 7));
-  REQUIRE(m.properties[0].spring.f_load == 0);
+  REQUIRE(m.properties[0].spring.x.f_load == 0);
   radx::model::RunControls rc;
   rc.t_stop = 5e-3;
   const radx::model::Function f = curve(fx, fy);
@@ -336,12 +336,12 @@ TEST_CASE("spring starter: property defaults, the mass of the nodes, refusals by
   const auto m = radx::test::model_of_deck(oscillator_deck(2e-6, 1000.0, 0.5, 1e-3, 0.0));
   const auto& p = m.properties[0];
   CHECK(p.kind == radx::model::PropertyKind::Spring);
-  CHECK(p.spring.a == 1.0);
-  CHECK(p.spring.d == 1.0);
-  CHECK(p.spring.fscale == 1.0);
-  CHECK(p.spring.ascale == 1.0);
-  CHECK(p.spring.delta_max >= 1e30);
-  CHECK(p.spring.damping == 0.5);
+  CHECK(p.spring.x.a == 1.0);
+  CHECK(p.spring.x.d == 1.0);
+  CHECK(p.spring.x.fscale == 1.0);
+  CHECK(p.spring.x.ascale == 1.0);
+  CHECK(p.spring.x.delta_max >= 1e30);
+  CHECK(p.spring.x.damping == 0.5);
   CHECK(m.node_mass[0] == 1e-6);  // M/2 on the clamped node
 
   auto errors_of = [](const std::string& text) {
