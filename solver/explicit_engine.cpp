@@ -116,9 +116,11 @@ void ExplicitEngine::build_groups() {
   const auto& m = model_;
   // Void and rigid elements compute no force (OpenRadioss forint.F skips laws 0 and 13): they get no group,
   // hence no stable step either. Their mass is in the nodal masses, a rigid one's motion in its rigid body.
+  // A spring's part has no material (-1): its force comes from its property.
   auto has_forces = [&](std::int32_t part) {
-    const auto law =
-        m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(part)].material)].law;
+    const auto mat = m.parts[static_cast<std::size_t>(part)].material;
+    if (mat < 0) return true;
+    const auto law = m.materials[static_cast<std::size_t>(mat)].law;
     return law != model::MaterialLaw::Void && law != model::MaterialLaw::Rigid;
   };
   // Elements with forces sorted by part (stable), then cut into groups of at most kGroupSize.
