@@ -90,7 +90,8 @@ void ModelBuilder::build_tied_interfaces() {
     } else if (in.spotflag != 0 && in.spotflag != 1) {
       error_at(r, "Spotflag", Diag::PhysicsNotImplemented,
                "Spotflag = " + std::to_string(in.spotflag) + " (" + std::string(spotflag_name(in.spotflag)) +
-                   ") is not implemented in radx; radx runs Spotflag 0 or 5 (the standard kinematic tie) and 1 (the rigid "
+                   ") is not implemented in radx; radx runs Spotflag 0 or 5 (the standard kinematic tie) and "
+                   "1 (the rigid "
                    "tie)");
       ok = false;
     }

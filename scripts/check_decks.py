@@ -1948,9 +1948,10 @@ def semantic(ck, m):
         for x, p in o["ids"]:
             if x not in subsets:
                 I("RX402", p[0], p[1], "TH subset %d does not exist" % x)
+    type2_ids = {o["id"] for o in m.of("/INTER/TYPE2")}
     for o in m.of("/TH/INTER"):
         for x, p in o["ids"]:
-            if x not in inters:
+            if x not in inters and x not in type2_ids:  # a TYPE2 id: a warning, not written
                 I("RX402", p[0], p[1], "TH interface %d does not exist" % x)
     rbodies = by_id(("/RBODY",), "rigid body")
     for o in m.of("/TH/BRIC", "/TH/BRICK", "/TH/SH3N"):

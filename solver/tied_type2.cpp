@@ -43,7 +43,6 @@ V3 place(const std::array<V3, 4>& x, const double* h, double d, bool triangle) {
   return p;
 }
 
-
 // 3 x 3 matrices, row-major.
 using M3 = std::array<double, 9>;
 
@@ -76,20 +75,34 @@ V3 solve(const M3& a, const V3& b) {
   return {model::dot(b, model::cross(c1, c2)) / det, model::dot(c0, model::cross(b, c2)) / det,
           model::dot(c0, model::cross(c1, b)) / det};
 }
-// Smallest eigenvalue of a symmetric matrix (the trigonometric closed form).
-double smallest_eigenvalue(const M3& a) {
-  const double p1 = a[1] * a[1] + a[2] * a[2] + a[5] * a[5];
-  const double q = (a[0] + a[4] + a[8]) / 3.0;
-  const double p2 = (a[0] - q) * (a[0] - q) + (a[4] - q) * (a[4] - q) + (a[8] - q) * (a[8] - q) + 2.0 * p1;
-  const double p = std::sqrt(p2 / 6.0);
-  if (!(p > 0)) return q;
-  M3 b{};
-  for (std::size_t i = 0; i < 9; ++i) b[i] = (a[i] - (i % 4 == 0 ? q : 0.0)) / p;
-  const double r = std::clamp(0.5 * (b[0] * (b[4] * b[8] - b[5] * b[7]) - b[1] * (b[3] * b[8] - b[5] * b[6]) +
-                                     b[2] * (b[3] * b[7] - b[4] * b[6])),
-                              -1.0, 1.0);
-  const double phi = std::acos(r) / 3.0;
-  return q + 2.0 * p * std::cos(phi + 2.0 * std::numbers::pi / 3.0);
+// Smallest eigenvalue of a symmetric matrix, by cyclic Jacobi rotations (accurate to round-off also for the
+// repeated eigenvalues of a square or regular segment, where the trigonometric closed form loses half the
+// digits).
+double smallest_eigenvalue(M3 a) {
+  for (int sweep = 0; sweep < 30; ++sweep) {
+    const double off = a[1] * a[1] + a[2] * a[2] + a[5] * a[5];
+    const double diag = a[0] * a[0] + a[4] * a[4] + a[8] * a[8];
+    if (!(off > 1e-32 * diag)) break;
+    for (const auto& [p, q] : {std::pair<std::size_t, std::size_t>{0, 1}, {0, 2}, {1, 2}}) {
+      const double apq = a[3 * p + q];
+      if (apq == 0) continue;
+      const double theta = (a[3 * q + q] - a[3 * p + p]) / (2.0 * apq);
+      const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+      const double c = 1.0 / std::sqrt(t * t + 1.0), sn = t * c;
+      // a <- G^T a G with the rotation G in the (p, q) plane.
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double akp = a[3 * k + p], akq = a[3 * k + q];
+        a[3 * k + p] = c * akp - sn * akq;
+        a[3 * k + q] = sn * akp + c * akq;
+      }
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double apk = a[3 * p + k], aqk = a[3 * q + k];
+        a[3 * p + k] = c * apk - sn * aqk;
+        a[3 * q + k] = sn * apk + c * aqk;
+      }
+    }
+  }
+  return std::min({a[0], a[4], a[8]});
 }
 // exp([d]x) by Rodrigues' formula.
 M3 rotation_of(const V3& d) {
@@ -395,9 +408,11 @@ void TiedInterfaces::transfer_stiffness(NodeState& s) const {
   for (std::size_t k = 0; k < rnode_.size(); ++k) {
     const auto n = static_cast<std::size_t>(rnode_[k]);
     const int nj = rnj_[k];
-    const double q2 = q0_[3 * k] * q0_[3 * k] + q0_[3 * k + 1] * q0_[3 * k + 1] + q0_[3 * k + 2] * q0_[3 * k + 2];
+    const double q2 =
+        q0_[3 * k] * q0_[3 * k] + q0_[3 * k + 1] * q0_[3 * k + 1] + q0_[3 * k + 2] * q0_[3 * k + 2];
     const double kj = s.stiffness[n] * (1.0 / nj + q2 * inv_lmin_[k]);
-    for (int j = 0; j < nj; ++j) s.stiffness[static_cast<std::size_t>(rseg_[4 * k + static_cast<std::size_t>(j)])] += kj;
+    for (int j = 0; j < nj; ++j)
+      s.stiffness[static_cast<std::size_t>(rseg_[4 * k + static_cast<std::size_t>(j)])] += kj;
     s.stiffness[n] = 1e-20;
   }
 }

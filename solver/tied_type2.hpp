@@ -45,7 +45,8 @@
 //                                                             R^T K symmetric, K = sum_j r_j r0_j^T),
 // and the node's rotation is R (w_s = the rate of R), so an offset off the segment's plane, in any
 // direction, turns with the segment. R is found by Newton's method on the rotations from the last cycle's:
-//     G = R^T K,  g = (G32 - G23, G13 - G31, G21 - G12),  delta = (tr G I - sym G)^-1 g,  R <- R exp([delta]x)
+//     G = R^T K,  g = (G32 - G23, G13 - G31, G21 - G12),  delta = (tr G I - sym G)^-1 g,  R <- R
+//     exp([delta]x)
 // (quadratic convergence; two or three passes a cycle, and exact for a rigid motion of the segment).
 // Virtual motion of the map: delta theta = A^-1 sum_j q_j x delta x_j, A = tr P I - P, P = K R^T (symmetric),
 // q_j = R r0_j (delta c drops out of K because sum r0_j = 0). Its transpose moves the secondary's force f_s
@@ -105,12 +106,12 @@ class TiedInterfaces {
   std::vector<std::uint8_t> triangle_;
   // Rigid ties (Spotflag 1), apart so that neither loop branches on the formulation.
   std::vector<std::int32_t> rnode_;
-  std::vector<std::int32_t> rseg_;     // 4 per tie (n4 == n3 for a triangle)
-  std::vector<std::uint8_t> rnj_;      // 4, or 3 distinct nodes
-  std::vector<double> r0_;             // 12 per tie: r0_j, the nodes about their centroid at t = 0
-  std::vector<double> q0_;             // 3 per tie: x_s - c at t = 0
-  std::vector<double> inv_lmin_;       // 1 / lambda_min(J0)
-  std::vector<double> rot_;            // 9 per tie: R, row-major, of the last fit
+  std::vector<std::int32_t> rseg_;  // 4 per tie (n4 == n3 for a triangle)
+  std::vector<std::uint8_t> rnj_;   // 4, or 3 distinct nodes
+  std::vector<double> r0_;          // 12 per tie: r0_j, the nodes about their centroid at t = 0
+  std::vector<double> q0_;          // 3 per tie: x_s - c at t = 0
+  std::vector<double> inv_lmin_;    // 1 / lambda_min(J0)
+  std::vector<double> rot_;         // 9 per tie: R, row-major, of the last fit
 };
 
 }  // namespace radx::solver
