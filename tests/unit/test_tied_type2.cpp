@@ -603,3 +603,60 @@ TEST_CASE(
   // Energy balance: the tie does no work.
   CHECK(worst_error < 0.1);
 }
+
+// At t = 0 a tied node takes the velocity of its place on the map, whatever its own /INIVEL says (as
+// OpenRadioss's first I2VIT3 / I2VIROT3): the derivative of the map along the segment's velocities, taken
+// here by a central difference of the map itself (Spotflag 0: sum h_j x_j + d n; Spotflag 1: the engine's own
+// placement, rigid_step above).
+TEST_CASE(
+    "TYPE2 set-up: a tied node starts with the velocity of its place, its own initial velocity replaced",
+    "[tied]") {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const int flag : {0, 1}) {
+    for (int trial = 0; trial < 10; ++trial) {
+      std::array<md::Vec3, 4> x{md::Vec3{0, 0, 0}, md::Vec3{1, 0, 0}, md::Vec3{1, 1, 0}, md::Vec3{0, 1, 0}};
+      for (auto& p : x)
+        for (auto& c : p) c += 0.1 * u(rng);
+      const double r = 0.8 * u(rng), s = 0.8 * u(rng), d = 0.3 * u(rng);
+      const auto h = md::tie_shape(r, s, false);
+      auto place = [&](const std::array<md::Vec3, 4>& y) {
+        const auto nn = md::tie_normal(y, false);
+        md::Vec3 q = md::scale(nn, d / md::norm(nn));
+        for (std::size_t j = 0; j < 4; ++j) q = md::add(q, md::scale(y[j], h[j]));
+        return q;
+      };
+      auto m = rigid_tie_model(x, place(x), false);
+      auto& t = m.tied_interfaces[0];
+      t.spotflag = flag;
+      t.tie_r = {r};
+      t.tie_s = {s};
+      t.tie_offset = {d};
+      sv::TiedInterfaces ties(m);
+      auto st = state_of(m);
+      std::array<md::Vec3, 4> v{};
+      for (std::size_t j = 0; j < 4; ++j) {
+        v[j] = {u(rng), u(rng), u(rng)};
+        st.vx[j] = v[j][0], st.vy[j] = v[j][1], st.vz[j] = v[j][2];
+        st.mass[j] = 1.0;
+      }
+      st.mass[4] = 0.5;
+      st.vx[4] = 10.0, st.vy[4] = -10.0, st.vz[4] = 10.0;  // its own, to be replaced
+      ties.initialize(st);
+      const double eps = 1e-6;
+      std::array<md::Vec3, 4> xp = x, xm = x;
+      for (std::size_t j = 0; j < 4; ++j) {
+        xp[j] = md::add(x[j], md::scale(v[j], eps));
+        xm[j] = md::sub(x[j], md::scale(v[j], eps));
+      }
+      const md::Vec3 expect =
+          flag == 0 ? md::scale(md::sub(place(xp), place(xm)), 0.5 / eps)
+                    : md::scale(md::sub(rigid_step(m, xp).first, rigid_step(m, xm).first), 0.5 / eps);
+      // Central difference of unit-size maps: error ~1e-12, round-off ~1e-10.
+      INFO("Spotflag " << flag);
+      CHECK(st.vx[4] == Approx(expect[0]).margin(1e-8));
+      CHECK(st.vy[4] == Approx(expect[1]).margin(1e-8));
+      CHECK(st.vz[4] == Approx(expect[2]).margin(1e-8));
+    }
+  }
+}
