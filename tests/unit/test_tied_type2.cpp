@@ -660,3 +660,69 @@ TEST_CASE(
     }
   }
 }
+
+// The terms the tests above do not reach, in closed form on a unit square segment with the node at
+// (r, s) = (-0.6, -0.4), 0.2 above it: h = (0.56, 0.14, 0.06, 0.24); about the square's centre q0 = (-0.3,
+// -0.2, 0.2), |q0|^2 = 0.17, J0 = diag(1, 1, 2) (lambda_min = 1). Main nodes: mass 1, inertia 1, stiffness 3;
+// the secondary: mass 0.5, inertia 0.3, stiffness 2, moment (1, -2, 3).
+TEST_CASE(
+    "TYPE2 masses, inertias, moments, nodal stiffness and rotations moved in closed form (Spotflag 0, 1)",
+    "[tied]") {
+  const std::array<md::Vec3, 4> x{md::Vec3{0, 0, 0}, md::Vec3{1, 0, 0}, md::Vec3{1, 1, 0}, md::Vec3{0, 1, 0}};
+  const std::array<double, 4> h{0.56, 0.14, 0.06, 0.24};
+  const md::Vec3 mo{1, -2, 3};
+  for (const int flag : {0, 1}) {
+    INFO("Spotflag " << flag);
+    auto m = rigid_tie_model(x, md::Vec3{0.2, 0.3, 0.2}, false);
+    auto& t = m.tied_interfaces[0];
+    t.spotflag = flag;
+    t.tie_r = {-0.6};
+    t.tie_s = {-0.4};
+    t.tie_offset = {0.2};
+    sv::TiedInterfaces ties(m);
+    auto st = state_of(m);
+    for (std::size_t j = 0; j < 4; ++j) st.mass[j] = st.inertia[j] = 1.0;
+    st.mass[4] = 0.5;
+    st.inertia[4] = 0.3;
+    ties.initialize(st);
+    st.mx[4] = mo[0], st.my[4] = mo[1], st.mz[4] = mo[2];
+    ties.transfer_forces(st);
+    for (std::size_t n = 0; n < 5; ++n) st.stiffness[n] = n < 4 ? 3.0 : 2.0;
+    ties.transfer_stiffness(st);
+    CHECK(st.mass[4] == 0.0);
+    CHECK(st.inertia[4] == 0.0);
+    CHECK(st.stiffness[4] == 1e-20);
+    for (std::size_t j = 0; j < 4; ++j) {
+      if (flag == 0) {
+        // Shares h_j of the mass, inertia, moment and stiffness (I2FOR3N, I2MOM3N; |h_j| for the stiffness).
+        CHECK(st.mass[j] == Approx(1.0 + 0.5 * h[j]).epsilon(1e-14));
+        CHECK(st.inertia[j] == Approx(1.0 + 0.3 * h[j]).epsilon(1e-14));
+        CHECK(st.mx[j] == Approx(mo[0] * h[j]).epsilon(1e-14));
+        CHECK(st.mz[j] == Approx(mo[2] * h[j]).epsilon(1e-14));
+        CHECK(st.stiffness[j] == Approx(3.0 + 2.0 * h[j]).epsilon(1e-14));
+        CHECK(st.added_mass[j] == 0.0);
+      } else {
+        // A quarter of the mass plus the inertia about the centre, (0.3 + 0.5 x 0.17) / 1, as added mass; the
+        // rotations get nothing; the stiffness 2 (1/4 + 0.17).
+        CHECK(st.mass[j] == Approx(1.0 + 0.125 + 0.385).epsilon(1e-14));
+        CHECK(st.added_mass[j] == Approx(0.385).epsilon(1e-14));
+        CHECK(st.inertia[j] == 1.0);
+        CHECK(st.mx[j] == 0.0);
+        CHECK(st.stiffness[j] == Approx(3.0 + 2.0 * (0.25 + 0.17)).epsilon(1e-14));
+      }
+    }
+    if (flag == 0) {
+      // The node's rotation: the h-weighted mean of the main nodes' (their rotational velocities w_j).
+      const std::array<md::Vec3, 4> w{md::Vec3{1, 0, 0}, md::Vec3{0, 2, 0}, md::Vec3{0, 0, 3},
+                                      md::Vec3{-1, 1, 1}};
+      for (std::size_t j = 0; j < 4; ++j) st.wx[j] = w[j][0], st.wy[j] = w[j][1], st.wz[j] = w[j][2];
+      ties.secondary_kinematics(st, 1e-3, 1e-3);
+      md::Vec3 expect{};
+      for (std::size_t j = 0; j < 4; ++j) expect = md::add(expect, md::scale(w[j], h[j]));
+      const double dt12 = 1e-3;
+      CHECK(st.wx[4] + dt12 * st.awx[4] == Approx(expect[0]).margin(1e-12));
+      CHECK(st.wy[4] + dt12 * st.awy[4] == Approx(expect[1]).margin(1e-12));
+      CHECK(st.wz[4] + dt12 * st.awz[4] == Approx(expect[2]).margin(1e-12));
+    }
+  }
+}
