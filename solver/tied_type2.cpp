@@ -146,15 +146,29 @@ void fit_rotation(const std::array<V3, 4>& r, const double* r0, int nj, M3& R) {
     for (std::size_t a = 0; a < 3; ++a)
       for (std::size_t b = 0; b < 3; ++b) k[3 * a + b] += r[q][a] * r0[3 * q + b];
   }
-  double scale = 0;
+  double scale = 0, size = 0;
   for (const double v : k) scale = std::max(scale, std::abs(v));
-  for (int it = 0; it < 12; ++it) {
+  for (int j = 0; j < nj; ++j) {
+    const auto q = static_cast<std::size_t>(j);
+    size += model::norm(r[q]) * model::norm(V3{r0[3 * q], r0[3 * q + 1], r0[3 * q + 2]});
+  }
+  for (int it = 0; it < 40; ++it) {
     const M3 g = mul(transpose(R), k);
     const V3 gv{g[7] - g[5], g[2] - g[6], g[3] - g[1]};
     if (model::norm(gv) <= 1e-15 * scale) break;
-    const V3 d = solve(trace_minus_sym(g), gv);
+    // Far from the fit (the segment turned by a large angle since R, or folded) the Newton matrix need not be
+    // positive definite and Newton's method could settle on a saddle of tr(R^T K): there a gradient step
+    // (an ascent, the objective's curvature being at most sum |r_j| |r0_j|), and never more than half a
+    // radian at once.
+    const M3 a = trace_minus_sym(g);
+    const bool definite =
+        a[0] > 0 && a[0] * a[4] - a[1] * a[3] > 0 &&
+        model::dot(V3{a[0], a[3], a[6]}, model::cross(V3{a[1], a[4], a[7]}, V3{a[2], a[5], a[8]})) > 0;
+    V3 d = definite ? solve(a, gv) : model::scale(gv, 1.0 / size);
+    const double nd = model::norm(d);
+    if (nd > 0.5) d = model::scale(d, 0.5 / nd);
     R = mul(R, rotation_of(d));
-    if (model::norm(d) < 1e-15) break;
+    if (nd < 1e-15) break;
   }
   orthonormalize(R);
 }

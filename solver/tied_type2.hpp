@@ -47,7 +47,8 @@
 // direction, turns with the segment. R is found by Newton's method on the rotations from the last cycle's:
 //     G = R^T K,  g = (G32 - G23, G13 - G31, G21 - G12),  delta = (tr G I - sym G)^-1 g,  R <- R
 //     exp([delta]x)
-// (quadratic convergence; two or three passes a cycle, and exact for a rigid motion of the segment).
+// (quadratic convergence; two or three passes a cycle, and exact for a rigid motion of the segment; where
+// tr G I - sym G is not positive definite, far from the fit, a gradient step instead, at most 0.5 rad).
 // Virtual motion of the map: delta theta = A^-1 sum_j q_j x delta x_j, A = tr P I - P, P = K R^T (symmetric),
 // q_j = R r0_j (delta c drops out of K because sum r0_j = 0). Its transpose moves the secondary's force f_s
 // and moment m_s to the segment:

@@ -500,6 +500,27 @@ TEST_CASE(
     // The offset turned with the segment to round-off of 90 products of rotations on unit lengths.
     for (std::size_t k = 0; k < 3; ++k) CHECK(pos(st, 4)[k] == Approx(expect[k]).margin(1e-12));
   }
+  SECTION("a turn of 90, 150 and 179 degrees in one step: the fit still finds it") {
+    const md::Vec3 axis = md::scale(md::Vec3{2, -1, 2}, 1.0 / 3.0);
+    for (const double deg : {90.0, 150.0, 179.0}) {
+      const double a = deg * std::numbers::pi / 180.0;
+      auto rotate = [&](const md::Vec3& p) {
+        const md::Vec3 r = md::sub(p, c);
+        return md::add(c,
+                       md::add(md::add(md::scale(r, std::cos(a)), md::scale(md::cross(axis, r), std::sin(a))),
+                               md::scale(axis, md::dot(axis, r) * (1 - std::cos(a)))));
+      };
+      std::array<md::Vec3, 4> y{};
+      for (std::size_t j = 0; j < 4; ++j) y[j] = rotate(x[j]);
+      const auto [moved, turned] = rigid_step(m, y);
+      const md::Vec3 expect = md::sub(rotate(xs), xs);
+      INFO(deg << " degrees");
+      for (std::size_t k = 0; k < 3; ++k) {
+        CHECK(moved[k] == Approx(expect[k]).margin(1e-12));
+        CHECK(turned[k] == Approx(a * axis[k]).margin(1e-12));
+      }
+    }
+  }
   SECTION("an in-plane stretch by 10 % along the segment's long side") {
     std::array<md::Vec3, 4> y = x;
     for (auto& p : y) p[0] = c[0] + 1.1 * (p[0] - c[0]);
