@@ -160,6 +160,17 @@ TEST_CASE("TYPE2 starter: a refused Spotflag and a /BCS on a tied node", "[tied]
     CHECK(all.find("Spotflag = 27") != std::string::npos);
     CHECK(all.find("switches to penalty") != std::string::npos);
   }
+  SECTION("a /TH/INTER naming the TYPE2: left out with a warning (radx writes no tied-interface history)") {
+    TiedPair p;
+    p.extra = "/TH/INTER/3\nties\nDEF\n" + Line().put(7, 1, 10).str() + "\n";
+    radx::Diagnostics d;
+    build(p.deck(), d);
+    const std::string all = all_diags(d);
+    INFO(all);
+    CHECK_FALSE(d.has_errors());
+    CHECK(all.find("RX311") != std::string::npos);
+    CHECK(all.find("interface 7 is an /INTER/TYPE2") != std::string::npos);
+  }
   SECTION("a /BCS on a tied node: the OpenRadioss warning of incompatible kinematic conditions") {
     TiedPair p;
     p.extra = "/GRNOD/NODE/9\nfixed\n" + Line().put(11, 1, 10).str() + "\n/BCS/1\nfix\n" +
