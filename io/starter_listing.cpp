@@ -414,8 +414,15 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
   if (!m.tied_interfaces.empty()) {
     heading(os, "TIED INTERFACES");
     for (const auto& t : m.tied_interfaces) {
+      // Spotflag 1 is the rigid tie only with rotational degrees of freedom (solver/tied_type2.hpp).
+      const bool rotations =
+          m.shells.size() + m.shells3.size() + m.springs.size() + m.rigid_bodies.size() > 0;
       os << "  interface " << t.id << " \"" << t.title << "\"  /INTER/TYPE2  Spotflag " << t.spotflag
-         << " (kinematic, offset carried along the segment normal)\n"
+         << (t.spotflag != 1 ? " (kinematic, offset carried along the segment normal)\n"
+             : rotations ? " (rigid: the node moves with the segment's least-squares rotation, its mass and "
+                           "inertia as added point masses on the segment's nodes)\n"
+                         : " (run as Spotflag 0, as OpenRadioss does: the model has no rotational degrees of "
+                           "freedom)\n")
          << "      search distance        " << t.search_distance
          << (t.dsearch > 0 ? "  (Dsearch)" : "  (automatic: r.m.s. main segment edge)") << '\n'
          << "      tied secondary nodes   " << t.tie_node.size() << '\n'

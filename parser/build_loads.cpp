@@ -856,6 +856,18 @@ void th_objects(ModelBuilder& b, const KeywordRecord& r, const ThKindDef& k, mod
       out.push_back(o);
       return;
     }
+    // A tied interface (TYPE2) has no contact forces radx records: the output is left out, the run goes on.
+    if (k.kind == model::ThKind::Inter) {
+      const auto t2 = b.deck_.of("/INTER/TYPE2");
+      if (std::any_of(t2.begin(), t2.end(), [id](const KeywordRecord* t) { return t->id == id; })) {
+        b.diags_.warning(
+            Diag::OutputNotWritten, b.at(pos, 1), ModelBuilder::about(r),
+            "interface " + std::to_string(id) +
+                " is an /INTER/TYPE2: radx writes no time history of tied interfaces; the run goes "
+                "on without it");
+        return;
+      }
+    }
     missing = true;
     b.diags_.error(Diag::MissingReference, b.at(pos, 1), ModelBuilder::about(r),
                    std::string(k.object) + " " + std::to_string(id) + " does not exist: no " +

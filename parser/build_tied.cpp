@@ -6,7 +6,9 @@
 //   - a node whose nearest segment is farther than that is an error with Ignore = 0 (message 1078) and is
 //     left out of the interface with a warning with Ignore >= 1 (1157); both list the nodes;
 //   - a segment holding the secondary node itself is skipped.
-// radx runs Spotflag 0 and 5 (5 is 0, hm_read_inter_type02.F); the other formulations are refused by name.
+// radx runs Spotflag 0 and 5 (5 is 0, hm_read_inter_type02.F) and 1 (the rigid tie, solver/tied_type2.hpp;
+// the standard tie in a model without rotational degrees of freedom, as in OpenRadioss); the other
+// formulations are refused by name.
 // Kinematic conflicts: OpenRadioss only warns (kinset.F, message 147) and the outcome then depends on the
 // order its engine applies the conditions in. radx refuses what it cannot run consistently: a node tied by
 // two TYPE2 (its mass would be given away twice), a tied node in a rigid body, and a tie whose main
@@ -39,7 +41,6 @@ std::string id_list(const std::vector<std::int64_t>& ids) {
 
 std::string_view spotflag_name(int f) {
   switch (f) {
-    case 1: return "the formulation that moves the node rigidly with its segment and adds mass";
     case 2: return "the formulation with the segment's rotations transmitted by moments (I2MOM3)";
     case 3: return "the rigid formulation of Spotflag 1 with its own mass update";
     case 4: return "the formulation without rotational degrees of freedom";
@@ -86,10 +87,12 @@ void ModelBuilder::build_tied_interfaces() {
     if (in.spotflag != 0 &&
         std::find(std::begin(kKnown), std::end(kKnown), in.spotflag) == std::end(kKnown)) {
       ok = false;
-    } else if (in.spotflag != 0) {
+    } else if (in.spotflag != 0 && in.spotflag != 1) {
       error_at(r, "Spotflag", Diag::PhysicsNotImplemented,
                "Spotflag = " + std::to_string(in.spotflag) + " (" + std::string(spotflag_name(in.spotflag)) +
-                   ") is not implemented in radx; radx runs Spotflag 0 or 5, the standard kinematic tie");
+                   ") is not implemented in radx; radx runs Spotflag 0 or 5 (the standard kinematic tie) and "
+                   "1 (the rigid "
+                   "tie)");
       ok = false;
     }
     if (in.idel2 != 0) {

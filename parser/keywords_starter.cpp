@@ -1198,7 +1198,7 @@ void add_contact(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
-    // The Spotflag values OpenRadioss reads (hm_read_inter_type02.F); radx runs 0 and 5 and refuses the
+    // The Spotflag values OpenRadioss reads (hm_read_inter_type02.F); radx runs 0, 5 and 1 and refuses the
     // others by name (parser/build_tied.cpp).
     KeywordDecl k =
         kw("/INTER/TYPE2", "tied interface: secondary nodes move with the main segments they sit on",
@@ -1212,7 +1212,9 @@ void add_contact(std::vector<KeywordDecl>& t) {
                 "warning")
                   .versions(110)
                   .allow({0, 1, 2, 3, 1000}),
-              I("Spotflag", 31, 40, "formulation: 0 or 5 standard kinematic tie (others refused by name)")
+              I("Spotflag", 31, 40,
+                "formulation: 0 or 5 standard kinematic tie, 1 rigid tie (the node moves with the segment's "
+                "least-squares rotation; others refused by name)")
                   .allow({0, 1, 2, 3, 4, 5, 10, 11, 12, 20, 21, 22, 25, 26, 27, 28, 30}),
               I("Level", 41, 50, "hierarchy level of the kinematic condition").unused(),
               I("Isearch", 51, 60, "search algorithm").allow({0, 1, 2}).unused(),

@@ -1986,7 +1986,7 @@ def semantic(ck, m):
                 p = pos(o, "C5")
                 I("RX703", p[0], p[1], "interface %d: Renard coefficients inconsistent" % iid)
 
-    # tied interfaces (build_tied.cpp): references, Spotflag values, the formulations radx refuses (RX510), a
+    # tied interfaces (build_tied.cpp): references, Spotflag values (0, 1, 5 run), the ones radx refuses (RX510), a
     # node tied by two TYPE2 (RX706, on the second; the nodes of the groups, which all find a segment here)
     tied_nodes = {}
     for o in m.of("/INTER/TYPE2"):
@@ -1996,13 +1996,13 @@ def semantic(ck, m):
         p = pos(o, "Spotflag")
         if flag not in (0, 1, 2, 3, 4, 5, 10, 11, 12, 20, 21, 22, 25, 26, 27, 28, 30):
             I("RX501", p[0], p[1], "/INTER/TYPE2 %d: Spotflag = %d" % (o["id"], flag))
-        elif flag not in (0, 5):
+        elif flag not in (0, 1, 5):
             I("RX510", p[0], p[1], "/INTER/TYPE2 %d: Spotflag %d not implemented" % (o["id"], flag))
         if val(o, "Idel2", 0) not in (0, 1000):
             p = pos(o, "Idel2")
             I("RX510", p[0], p[1], "/INTER/TYPE2 %d: Idel2 not implemented" % o["id"])
         g = grnods.get(val(o, "grnd_IDs", 0))
-        if g is not None and flag in (0, 5) and g["path"] == "/GRNOD/NODE":
+        if g is not None and flag in (0, 1, 5) and g["path"] == "/GRNOD/NODE":
             ids = [x for x, _ in g.get("ids", []) if isinstance(x, int) and x > 0]
             twice = [x for x in ids if x in tied_nodes]
             if twice:
@@ -2111,9 +2111,10 @@ def semantic(ck, m):
         for x, p in o["ids"]:
             if x not in subsets:
                 I("RX402", p[0], p[1], "TH subset %d does not exist" % x)
+    type2_ids = {o["id"] for o in m.of("/INTER/TYPE2")}
     for o in m.of("/TH/INTER"):
         for x, p in o["ids"]:
-            if x not in inters:
+            if x not in inters and x not in type2_ids:  # a TYPE2 id: a warning, not written
                 I("RX402", p[0], p[1], "TH interface %d does not exist" % x)
     rbodies = by_id(("/RBODY",), "rigid body")
     for o in m.of("/TH/BRIC", "/TH/BRICK", "/TH/SH3N"):

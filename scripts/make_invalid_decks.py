@@ -941,7 +941,7 @@ def _():
         [("RX402", "INT.grnd_IDs")]
 
 
-def type2(grnod=3, surf=1, spotflag=0, tag="T2", iid=1, group=True):
+def type2(grnod=3, surf=1, spotflag=0, tag="T2", iid=1, group=True, idel2=0):
     """A /INTER/TYPE2 (tag T2) tying the block's bottom nodes (/GRNOD/NODE/3: 11 12 13 14, 1.5 mm above the
     plate) to the plate surface (/SURF/PART/1), with those two in front (group=False: not again)."""
     rows = []
@@ -949,7 +949,7 @@ def type2(grnod=3, surf=1, spotflag=0, tag="T2", iid=1, group=True):
         rows += block("GRN3", "/GRNOD/NODE", 3, "Block bottom nodes", ids=[11, 12, 13, 14])
         rows += block("SURF1", "/SURF/PART", 1, "Plate surface", ids=[1])
     return rows + block(tag, "/INTER/TYPE2", iid, "Block bottom tied to plate", grnd_IDs=grnod, surf_IDm=surf,
-                        Ignore=0, Spotflag=spotflag, Level=0, Isearch=0, Idel2=0, Dsearch=0.0)
+                        Ignore=0, Spotflag=spotflag, Level=0, Isearch=0, Idel2=idel2, Dsearch=0.0)
 
 
 def with_type2(d, **kw):
@@ -975,11 +975,18 @@ def _():
         [("RX501", "T2.Spotflag")]
 
 
-@fault("type2_spotflag_1")
+@fault("type2_spotflag_3")
 def _():
-    return with_type2(base(), spotflag=1), \
-        "/INTER/TYPE2/1 Spotflag = 1 (a formulation radx does not implement, refused by name)", \
+    return with_type2(base(), spotflag=3), \
+        "/INTER/TYPE2/1 Spotflag = 3 (the rigid tie with its own mass update, refused by name; radx runs 1)", \
         [("RX510", "T2.Spotflag")]
+
+
+@fault("type2_spotflag_1_idel2")
+def _():
+    return with_type2(base(), spotflag=1, idel2=1), \
+        "/INTER/TYPE2/1 Spotflag = 1 (the rigid tie, run) with Idel2 = 1 (release on deletion, refused by name)", \
+        [("RX510", "T2.Idel2")]
 
 
 @fault("type2_node_tied_twice")

@@ -1,4 +1,5 @@
-// /INTER/TYPE2, the kinematic tie (Spotflag 0 and 5), as a kinematic condition of the cycle. It lives in
+// /INTER/TYPE2, the kinematic tie (Spotflag 0 and 5) and the rigid tie (Spotflag 1), as a kinematic
+// condition of the cycle. It lives in
 // solver/ beside the rigid bodies, not in contact/: nothing is searched or penalised after t = 0, the
 // secondary nodes are moved by a constraint, and its three steps sit between the force assembly and the
 // velocity update like /RBODY's (kinematics.hpp for the call order).
@@ -34,8 +35,38 @@
 // Placing the node on the map of the new positions (rather than integrating sum h_j v_j + d dn/dt) keeps
 // the offset to round-off under any rotation: no drift accumulates.
 // No allocation per cycle. Ties are visited in interface and node order: the result is deterministic.
+//
+// Spotflag 1, the rigid tie (OpenRadioss i2for3.F I2FOMO3, i2vit3.F I2VIROT3; used when the model has
+// rotational degrees of freedom: shells, springs or rigid bodies, IRODDL = 1; otherwise OpenRadioss runs it
+// as Spotflag 0 and so does radx). The secondary node is a point of a rigid body carried by the segment:
+// with the segment's nj distinct nodes (4, or 3 for a triangle), c = (1/nj) sum x_j, r_j = x_j - c, r0_j
+// and q0 = x_s - c at t = 0,
+//     x_s = c + R q0,   R = argmin_R sum_j |r_j - R r0_j|^2   (the least-squares rotation of the nodes:
+//                                                             R^T K symmetric, K = sum_j r_j r0_j^T),
+// and the node's rotation is R (w_s = the rate of R), so an offset off the segment's plane, in any
+// direction, turns with the segment. R is found by Newton's method on the rotations from the last cycle's:
+//     G = R^T K,  g = (G32 - G23, G13 - G31, G21 - G12),  delta = (tr G I - sym G)^-1 g,  R <- R
+//     exp([delta]x)
+// (quadratic convergence; two or three passes a cycle, and exact for a rigid motion of the segment; where
+// tr G I - sym G is not positive definite, far from the fit, a gradient step instead, at most 0.5 rad).
+// Virtual motion of the map: delta theta = A^-1 sum_j q_j x delta x_j, A = tr P I - P, P = K R^T (symmetric),
+// q_j = R r0_j (delta c drops out of K because sum r0_j = 0). Its transpose moves the secondary's force f_s
+// and moment m_s to the segment:
+//     f_j += f_s / nj + a x q_j,   a = A^-1 (m_s + (x_s - c) x f_s),
+// whose sum is f_s and whose moment about c is m_s + (x_s - c) x f_s: momentum and angular momentum are
+// kept and the tie does no work. The main nodes' rotations receive nothing (I2FOMO3).
+// Mass, at t = 0 (I2FOMO3's explicit branch for Spotflag 1): the secondary's rotational inertia about c,
+// I_c = I_s + m_s |q0|^2, becomes point masses on the segment's nodes, large enough that their inertia
+// mr J0 (J0 = tr P0 I - P0, P0 = sum r0_j r0_j^T) is at least I_c about every axis:
+//     m_j += m_s / nj + mr,   mr = I_c / lambda_min(J0),   booked as added mass nj mr;   m_s = I_s = 0.
+// (OpenRadioss takes for 1/lambda_min(J0) the largest row sum of J0^-1, the same for a segment along the
+// global axes; radx's does not depend on how the segment is turned.) /DT/NODA: K_j += K_s / nj +
+// K_s |q0|^2 / lambda_min(J0) (I2FOMO3 without the rotational stiffness, which radx's nodes do not carry).
+// Each cycle (secondary_kinematics): R^{n+1} from x_j^{n+1}, x_s^{n+1} = c^{n+1} + R^{n+1} q0 as above,
+// w_s^{n+1/2} = log(R^{n+1} R^{nT}) / dt2, aw_s = (w_s^{n+1/2} - w_s^{n-1/2}) / dt12.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -48,19 +79,23 @@ class TiedInterfaces {
  public:
   explicit TiedInterfaces(const model::Model& m);
 
-  [[nodiscard]] bool empty() const { return node_.empty(); }
-  [[nodiscard]] std::size_t size() const { return node_.size(); }
+  [[nodiscard]] bool empty() const { return node_.empty() && rnode_.empty(); }
+  [[nodiscard]] std::size_t size() const { return node_.size() + rnode_.size(); }
   // Once, before the rigid bodies and after /INIVEL: masses and inertias to the main nodes, and the
   // secondary velocities put on the map.
   void initialize(NodeState& s);
-  // Before a = f/m: forces and moments of the secondary nodes to their segments.
-  void transfer_forces(NodeState& s) const;
+  // Before a = f/m: forces and moments of the secondary nodes to their segments (the rigid ties' rotation
+  // is fitted to the current positions first).
+  void transfer_forces(NodeState& s);
   // /DT/NODA: the secondary nodes' stiffness to their segments, before the nodal steps are taken.
   void transfer_stiffness(NodeState& s) const;
   // Last condition before v += dt12 a. Precondition: dt1 + dt2 > 0; nothing is done when dt2 = 0.
-  void secondary_kinematics(NodeState& s, double dt1, double dt2) const;
+  void secondary_kinematics(NodeState& s, double dt1, double dt2);
   // 1 for each tied secondary node.
   void mark_nodes(std::vector<std::uint8_t>& held) const;
+  // The rigid ties' number (Spotflag 1 in a model with rotations) and, for tests, the rotation of tie k.
+  [[nodiscard]] std::size_t rigid_size() const { return rnode_.size(); }
+  [[nodiscard]] std::array<double, 9> rigid_rotation(std::size_t k) const;
 
  private:
   // One entry per tie, all interfaces in a row (structure of arrays).
@@ -70,6 +105,14 @@ class TiedInterfaces {
   std::vector<double> hc_;         // 4 per tie: at (r, s) clamped onto the segment (mass, rotations)
   std::vector<double> offset_;
   std::vector<std::uint8_t> triangle_;
+  // Rigid ties (Spotflag 1), apart so that neither loop branches on the formulation.
+  std::vector<std::int32_t> rnode_;
+  std::vector<std::int32_t> rseg_;  // 4 per tie (n4 == n3 for a triangle)
+  std::vector<std::uint8_t> rnj_;   // 4, or 3 distinct nodes
+  std::vector<double> r0_;          // 12 per tie: r0_j, the nodes about their centroid at t = 0
+  std::vector<double> q0_;          // 3 per tie: x_s - c at t = 0
+  std::vector<double> inv_lmin_;    // 1 / lambda_min(J0)
+  std::vector<double> rot_;         // 9 per tie: R, row-major, of the last fit
 };
 
 }  // namespace radx::solver

@@ -576,7 +576,7 @@ struct TiedInterface {
   std::int32_t secondary_group = kNone;
   std::int32_t main_surface = kNone;
   int ignore = 0;    // 0: a node without a segment is an error; 1..3: it leaves the interface (warning)
-  int spotflag = 0;  // 0 or 5: the standard kinematic formulation (the only one radx runs)
+  int spotflag = 0;  // 0 (or 5): the standard kinematic tie; 1: the rigid tie (solver/tied_type2.hpp)
   int level = 0, isearch = 2, idel2 = 0;
   double dsearch = 0;  // as given; 0 = automatic
   // Computed by the starter.
