@@ -28,6 +28,7 @@ std::string law_name(model::MaterialLaw l) {
     case model::MaterialLaw::PlasBrit: return "LAW27 brittle elasto-plastic (shells)";
     case model::MaterialLaw::Void: return "LAW0 void";
     case model::MaterialLaw::Rigid: return "LAW13 rigid";
+    case model::MaterialLaw::Ogden: return "LAW42 Ogden hyperelastic (one-point bricks)";
   }
   return "unknown law";
 }
@@ -301,6 +302,15 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
          << ", damage (eps_1 - EPS_t1)/(EPS_m1 - EPS_t1)"
          << " with EPS_m1 " << b.eps_m1 << ", at most d_max1 " << b.d_max1
          << "; element deleted above EPS_f1 " << b.eps_f1 << '\n';
+    }
+    if (mat.law == model::MaterialLaw::Ogden) {
+      const auto& o = mat.ogden;
+      os << "    W = sum mu_p/alpha_p (lb1^alpha_p + lb2^alpha_p + lb3^alpha_p - 3) + "
+         << (o.iform == 2 ? "K (J - 1 - ln J)" : "K/2 (J - 1)^2") << " (Iform " << o.iform
+         << "); G above is the initial shear modulus sum mu_p alpha_p / 2, E = 2 G (1 + nu)\n";
+      for (std::size_t k = 0; k < o.mu.size(); ++k)
+        os << "      term " << k + 1 << ": mu " << o.mu[k] << "  alpha " << o.alpha[k] << '\n';
+      os << "    tension cut-off on the principal Biot stress " << o.sig_cut << '\n';
     }
     if (mat.law == model::MaterialLaw::Void)
       os << "    no force; mass rho V, E and nu for the contact stiffness only\n";

@@ -257,6 +257,7 @@ void ModelBuilder::check_formulations() {
     }
   }
   check_shell_only_laws();
+  check_ogden_parts();
 }
 
 // /MAT/PLAS_BRIT (law 27) is a shell law with integration points (OpenRadioss: SHELL_ISOTROPIC only, and

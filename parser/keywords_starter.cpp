@@ -2065,6 +2065,52 @@ void add_defaults_and_controls(std::vector<KeywordDecl>& t) {
   }
 }
 
+// /MAT/OGDEN (law 42): Ogden's hyperelastic rubber (OpenRadioss hm_read_mat42.F; layouts of the radioss110,
+// 140 and 2025 cfg files: Iform from 140 on, the card of mu_6..mu_10 and alpha_6..alpha_10 blank before 140).
+// The Prony series (M > 0, then its cards) and the tabulated bulk function are refused by name.
+void add_ogden(std::vector<KeywordDecl>& t) {
+  KeywordDecl k =
+      kw("/MAT/LAW42",
+         "Ogden hyperelastic material: W = sum mu_p / alpha_p (lambda1b^alpha_p + lambda2b^alpha_p + "
+         "lambda3b^alpha_p - 3) + U(J), one-point bricks",
+         Header::IdUnit, true, "mat_ID");
+  k.aliases = {"/MAT/OGDEN"};
+  // Literal names: the declarations hold string_views.
+  auto mu = [](std::string_view name, int first) {
+    return R(name, first, first + 19, "shear parameter mu_p of the term").dims(dim::pressure);
+  };
+  auto alpha = [](std::string_view name, int first) {
+    return R(name, first, first + 19, "exponent alpha_p of the term");
+  };
+  k.cards = {
+      card("card 1", {R("RHO_I", 1, 20, "initial density").must().gt(0.0).dims(dim::density),
+                      R("RHO_ref", 21, 40, "reference density; 0 takes RHO_I").dims(dim::density)}),
+      card("card 2",
+           {R("nu", 1, 20, "Poisson's ratio, gives the bulk modulus; 0 = 0.495").zero_is(0.495),
+            R("sigma_cut", 21, 40,
+              "tension cut-off on the principal Biot stress (the element is deleted); 0 = 1e20")
+                .zero_is(1e20)
+                .dims(dim::pressure),
+            I("Jstrain", 41, 50, "strain formulation flag of the cfg file; OpenRadioss does not read it")
+                .unused(),
+            I("fct_IDbulk", 51, 60, "function of the bulk modulus against J (tabulated bulk)")
+                .refs(IdKind::Other)
+                .not_implemented(),
+            R("Fscale_bulk", 61, 80, "scale of fct_IDbulk").unused(),
+            I("M", 81, 90, "number of Prony terms of the visco-elastic part").not_implemented(),
+            I("Iform", 91, 100, "volumetric energy: 1 U = K/2 (J-1)^2, 2 U = K (J - 1 - ln J); 0 = 1")
+                .versions(140)
+                .allow({0, 1, 2})}),
+      card("card 3", {mu("mu_1", 1), mu("mu_2", 21), mu("mu_3", 41), mu("mu_4", 61), mu("mu_5", 81)}),
+      card("card 4", {mu("mu_6", 1), mu("mu_7", 21), mu("mu_8", 41), mu("mu_9", 61), mu("mu_10", 81)}),
+      card("card 5", {alpha("alpha_1", 1), alpha("alpha_2", 21), alpha("alpha_3", 41), alpha("alpha_4", 61),
+                      alpha("alpha_5", 81)}),
+      card("card 6", {alpha("alpha_6", 1), alpha("alpha_7", 21), alpha("alpha_8", 41), alpha("alpha_9", 61),
+                      alpha("alpha_10", 81)}),
+  };
+  t.push_back(std::move(k));
+}
+
 // Issue 15's materials. /MAT/VOID and /MAT/RIGID compute no internal force (OpenRadioss hm_read_mat00.F,
 // hm_read_mat13.F): their E and nu give the contact stiffness and, for the rigid law, a stable step only.
 void add_void_and_rigid(std::vector<KeywordDecl>& t) {
@@ -2119,6 +2165,7 @@ const std::vector<KeywordDecl>& starter_keywords() {
     add_plas_tab_and_failure(t);
     add_plas_brit(t);
     add_void_and_rigid(t);
+    add_ogden(t);
     add_groups(t);
     add_contact(t);
     add_loads(t);
@@ -2138,10 +2185,9 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         // materials
         "/MAT/LAW3", "/MAT/HYDPLA", "/MAT/LAW4", "/MAT/HYD_JCOOK", "/MAT/LAW6", "/MAT/HYDRO", "/MAT/LAW10",
         "/MAT/LAW19", "/MAT/FABRI", "/MAT/LAW25", "/MAT/COMPSH", "/MAT/LAW32", "/MAT/HILL", "/MAT/LAW34",
-        "/MAT/BOLTZMAN", "/MAT/LAW42", "/MAT/OGDEN", "/MAT/LAW44", "/MAT/COWPER", "/MAT/LAW57",
-        "/MAT/BARLAT3", "/MAT/LAW58", "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW70",
-        "/MAT/FOAM_TAB", "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90", "/MAT/LAW109", "/MAT/PLAS_ZERIL",
-        "/MAT/ZHAO", "/MAT/USER",
+        "/MAT/BOLTZMAN", "/MAT/LAW44", "/MAT/COWPER", "/MAT/LAW57", "/MAT/BARLAT3", "/MAT/LAW58",
+        "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW70", "/MAT/FOAM_TAB", "/MAT/LAW87",
+        "/MAT/LAW88", "/MAT/LAW90", "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO", "/MAT/USER",
         // properties
         "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE2", "/PROP/TRUSS", "/PROP/TYPE3", "/PROP/BEAM",
         "/PROP/SPR_BEAM", "/PROP/TYPE9", "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP", "/PROP/TYPE11",

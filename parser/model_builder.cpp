@@ -148,7 +148,8 @@ void ModelBuilder::build_materials() {
     const bool law27 = path == "/MAT/LAW27";
     const bool law0 = path == "/MAT/LAW0";
     const bool law13 = path == "/MAT/LAW13";
-    if (!law1 && !law2 && !law36 && !law27 && !law0 && !law13) continue;
+    const bool law42 = path == "/MAT/LAW42";
+    if (!law1 && !law2 && !law36 && !law27 && !law0 && !law13 && !law42) continue;
     model::Material mat;
     mat.id = r.id;
     mat.title = r.title;
@@ -158,9 +159,11 @@ void ModelBuilder::build_materials() {
               : law27 ? model::MaterialLaw::PlasBrit
               : law36 ? model::MaterialLaw::PlasTab
               : law0  ? model::MaterialLaw::Void
+              : law42 ? model::MaterialLaw::Ogden
                       : model::MaterialLaw::Rigid;
-    if (law0) {
-      read_void(r, mat);
+    if (law0 || law42) {
+      if (law0) read_void(r, mat);
+      if (law42) read_ogden(r, mat);
       if (register_id(mat_ids_, mat.id, static_cast<std::int32_t>(m_.materials.size()), r, "material", first))
         m_.materials.push_back(std::move(mat));
       continue;

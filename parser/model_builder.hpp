@@ -53,6 +53,7 @@ class ModelBuilder {
   void resolve_plas_tab_functions();                                  // after the functions
   void build_fail_tab();                                              // /FAIL/TAB, after the materials
   void resolve_fail_tab_functions();                                  // its functions, after the functions
+  void read_ogden(const KeywordRecord& r, model::Material& mat);      // /MAT/OGDEN (build_hyperelastic.cpp)
   void read_void(const KeywordRecord& r, model::Material& mat);       // /MAT/VOID's optional card
   void build_rigid_material_bodies();  // build_rigid_materials.cpp: one body per connected /MAT/RIGID set
   void build_properties();
@@ -84,6 +85,7 @@ class ModelBuilder {
   void warn_massless_accelerometers();
   void check_unused_nodes();
   void check_formulations();     // check_formulations.cpp
+  void check_ogden_parts();      // build_hyperelastic.cpp: law 42 on one-point bricks only
   void check_shell_only_laws();  // check_formulations.cpp: law 27 on shells with points only
   // The transform stage (build_transforms.cpp): submodel transforms right after the elements, node-group
   // transforms after the groups, /MOVE_FUNCT after the functions.

@@ -190,6 +190,18 @@ def mat_void(v):
     return [card(reals("RHO_I", "E", "nu"), optional=True)]
 
 
+def mat_law42(v):
+    """/MAT/OGDEN: Iform at 91-100 from 140; the mu_6..10 and alpha_6..10 cards are blank before 140 (read as 0)."""
+    c2 = [F("nu", "R", 1, 20), F("sigma_cut", "R", 21, 40), F("Jstrain", "I", 41, 50), F("fct_IDbulk", "I", 51, 60),
+          F("Fscale_bulk", "R", 61, 80), F("M", "I", 81, 90)]
+    if v >= 140:
+        c2.append(F("Iform", "I", 91, 100))
+    return [card(reals("RHO_I", "RHO_ref")), card(c2),
+            card(reals("mu_1", "mu_2", "mu_3", "mu_4", "mu_5")), card(reals("mu_6", "mu_7", "mu_8", "mu_9", "mu_10")),
+            card(reals("alpha_1", "alpha_2", "alpha_3", "alpha_4", "alpha_5")),
+            card(reals("alpha_6", "alpha_7", "alpha_8", "alpha_9", "alpha_10"))]
+
+
 def mat_law2(v):
     """Up to 130: RHO_ref only when columns 11-20 hold text (the old pre-read), no Iflag, no Chard in 90."""
     c2 = [F("E", "R", 1, 20), F("nu", "R", 21, 40)]
@@ -623,6 +635,8 @@ STARTER = {
     "/MAT/VOID": ("id", True, mat_void, None, None),
     "/MAT/LAW00": ("id", True, mat_void, None, None),
     "/MAT/LAW13": ("id", True, mat_law1, None, None),
+    "/MAT/LAW42": ("id", True, mat_law42, None, None),
+    "/MAT/OGDEN": ("id", True, mat_law42, None, None),
     "/MAT/RIGID": ("id", True, mat_law1, None, None),
     "/FAIL/JOHNSON": ("id", False, fail_johnson, None, None),
     "/FAIL/TAB": ("id", False, fail_tab, None, None),
@@ -1291,7 +1305,7 @@ def semantic(ck, m):
                   "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02",
                   "/MAT/LAW36", "/MAT/PLAS_TAB", "/MAT/LAW27", "/MAT/PLAS_BRIT", "/MAT/LAW0", "/MAT/VOID",
-                  "/MAT/LAW00", "/MAT/LAW13", "/MAT/RIGID"), "material")
+                  "/MAT/LAW00", "/MAT/LAW13", "/MAT/RIGID", "/MAT/LAW42", "/MAT/OGDEN"), "material")
     grnods = by_id(tuple(k for k in STARTER if k.startswith("/GRNOD/")), "node group")
     surfs = by_id(tuple(k for k in STARTER if k.startswith("/SURF/")), "surface")
 
@@ -1627,6 +1641,24 @@ def semantic(ck, m):
                 and val(prop, "N", 0) == 0:
             p = pos(prop, "N")
             I("RX510", p[0], p[1], "law 27 with N = 0 (part %d)" % pid)
+    # law 42 on one-point bricks only (build_hyperelastic.cpp check_ogden_parts): shells or tetrahedra at the
+    # material's keyword line, Isolid other than 1 and 2, Ismstr other than 4 at the property's field
+    for pid, kinds in part_kind.items():
+        if pid not in parts:
+            continue
+        mat = mats.get(val(parts[pid], "mat_ID"))
+        prop = props.get(val(parts[pid], "prop_ID"))
+        if mat is None or prop is None or mat["path"] not in ("/MAT/LAW42", "/MAT/OGDEN"):
+            continue
+        if kinds & {"/SHELL", "/SH3N", "/TETRA4"}:
+            I("RX510", mat["pos"][0], mat["pos"][1], "law 42 on shells or tetrahedra (part %d)" % pid)
+        if "/BRICK" in kinds and prop["path"] in ("/PROP/SOLID", "/PROP/TYPE14"):
+            if resolved(prop, "Isolid", "/DEF_SOLID", 1) not in (1, 2):
+                p = pos(prop, "Isolid")
+                I("RX510", p[0], p[1], "law 42 with Isolid %d (part %d)" % (resolved(prop, "Isolid", "/DEF_SOLID", 1), pid))
+            if resolved(prop, "Ismstr", "/DEF_SOLID", 4) != 4:
+                p = pos(prop, "Ismstr")
+                I("RX510", p[0], p[1], "law 42 with Ismstr %d (part %d)" % (resolved(prop, "Ismstr", "/DEF_SOLID", 4), pid))
     # fields read but not implemented whose non-zero value changes the physics (keywords_starter.cpp)
     for o in props.values():
         if o["path"] in ("/PROP/SOLID", "/PROP/TYPE14"):
@@ -1652,9 +1684,30 @@ def semantic(ck, m):
                 p = pos(o, "E")
                 I("RX512", p[0], p[1], "%s %d: wave speed %g units is implausible" % (o["path"], o["id"], c))
         nu = val(o, "nu", 0.0)
-        if nu >= 0.5 or nu <= -1.0:
+        if nu >= 0.5 or nu <= -1.0 or (nu < 0 and o["path"] in ("/MAT/LAW42", "/MAT/OGDEN")):
             p = pos(o, "nu")
             I("RX503", p[0], p[1], "Poisson's ratio %g" % nu)
+        if o["path"] in ("/MAT/LAW42", "/MAT/OGDEN"):
+            # the fields' rules (keywords_starter.cpp add_ogden), then build_hyperelastic.cpp read_ogden
+            for name in ("fct_IDbulk", "M"):
+                if val(o, name, 0) != 0:
+                    p = pos(o, name)
+                    I("RX510", p[0], p[1], "%s %d: %s not implemented by radx" % (o["path"], o["id"], name))
+            if val(o, "Iform", 0) not in (0, 1, 2):
+                p = pos(o, "Iform")
+                I("RX501", p[0], p[1], "%s %d: Iform = %d" % (o["path"], o["id"], val(o, "Iform")))
+            g = 0.0
+            for k in range(1, 11):
+                mu, alpha = val(o, "mu_%d" % k, 0.0) or 0.0, val(o, "alpha_%d" % k, 0.0) or 0.0
+                if mu != 0 and alpha == 0:
+                    p = pos(o, "alpha_%d" % k)
+                    I("RX507", p[0], p[1], "%s %d: mu_%d with alpha_%d = 0" % (o["path"], o["id"], k, k))
+                if mu != 0:
+                    g += mu * alpha
+            if not g > 0:
+                p = pos(o, "mu_1")
+                I("RX507", p[0], p[1], "%s %d: sum mu_p alpha_p = %g" % (o["path"], o["id"], g))
+            continue  # no E
         if o["path"] in ("/MAT/LAW0", "/MAT/VOID", "/MAT/LAW00"):
             continue  # a void's values may all be blank
         if o["path"] in ("/MAT/LAW13", "/MAT/RIGID") and rho <= 0:

@@ -735,6 +735,66 @@ def _():
     d.update("PART1", mat_ID=3)
     d.update("PSH", N=0)
     return d, "/MAT/PLAS_BRIT/3 on shells of N = 0 (law 27 needs integration points)", [("RX510", "PSH.N")]
+def ogden(mid=3, **kw):
+    """/MAT/OGDEN (tag OG; the rubber of OpenRadioss's law42 QA deck); no part uses it unless a fault says."""
+    values = dict(RHO_I=9.4e-10, nu=0.495, mu_1=0.8276, mu_2=0.055, alpha_1=2.0, alpha_2=-2.0, fill=0)
+    values.update(kw)
+    return block("OG", "/MAT/OGDEN", mid, "Rubber (Ogden)", **values)
+
+
+@fault("ogden_prony")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", ogden(M=2))
+    return d, "/MAT/OGDEN/3 M = 2 Prony terms (the visco-elastic part is not implemented)", [("RX510", "OG.M")]
+
+
+@fault("ogden_bulk_function")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", ogden(fct_IDbulk=5))
+    return d, "/MAT/OGDEN/3 fct_IDbulk = 5 (the tabulated bulk modulus is not implemented)", \
+        [("RX510", "OG.fct_IDbulk")]
+
+
+@fault("ogden_no_shear")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", ogden(mu_1=0.8, alpha_1=2.0, mu_2=0.9, alpha_2=-2.0))
+    return d, "/MAT/OGDEN/3 sum mu_p alpha_p = 1.6 - 1.8 < 0 (no initial shear stiffness)", [("RX507", "OG.mu_1")]
+
+
+@fault("ogden_zero_exponent")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", ogden(mu_3=0.1, alpha_3=0.0))
+    return d, "/MAT/OGDEN/3 mu_3 = 0.1 with alpha_3 = 0 (undefined energy mu_p / alpha_p)", [("RX507", "OG.alpha_3")]
+
+
+@fault("ogden_incompressible")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", ogden(nu=0.5))
+    return d, "/MAT/OGDEN/3 nu = 0.5 (infinite bulk modulus; radx asks for the value meant)", [("RX503", "OG.nu")]
+
+
+@fault("ogden_on_shells")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", ogden())
+    d.update("PART1", mat_ID=3)
+    return d, "/MAT/OGDEN/3 on the shell part 1 (law 42 runs on one-point bricks only)", [("RX510", "OG_KW")]
+
+
+@fault("ogden_heph")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", ogden())
+    d.update("PART2", mat_ID=3)
+    d.update("PSO", Isolid=24)
+    return d, "/MAT/OGDEN/3 on bricks of Isolid 24 (law 42 runs on Isolid 1 and 2 only)", [("RX510", "PSO.Isolid")]
+
+
 @fault("rigid_no_density")
 def _():
     d = base()

@@ -15,6 +15,7 @@ Decks (units Mg, mm, s: MPa, N, mJ):
   brittle_strip    a /MAT/PLAS_BRIT (law 27) strip pulled until its crack opens and its elements are deleted
   ringing_strip    a cantilever strip ringing after a tip pulse, on the nodal time step of /DT/NODA
   fail_tab_strip   a /MAT/PLAS_TAB strip with /FAIL/TAB pulled until its shells fail and are deleted
+  rubber_block     a /MAT/OGDEN (law 42) block stretched to twice its length and back
   old_layout_2019  a deck in the 2019 layout with the group, surface, box, subset, transform, submodel,
                    skew, section, accelerometer and control keywords the other samples do not use
 
@@ -1390,6 +1391,121 @@ internal energy stops growing. `/TH/PART/1` holds the strip's internal energy an
     return run, d, e, readme, ref
 
 
+# ---------------------------------------------------------------------------------------------------
+# 8. A rubber block stretched to twice its length and back (/MAT/OGDEN)
+
+RUBBER = dict(L=10.0, N=2, RHO=1e-9, MU1=0.8276, MU2=0.055, AL1=2.0, AL2=-2.0, NU=0.49, T=0.01)
+
+
+def ogden_uniaxial_w(p, lam):
+    """Energy density of law 42 (Iform 1) in uniaxial stress at the axial stretch lam: the lateral stretch t
+    that makes the lateral stress zero (bisection), then W = sum mu_p / alpha_p (lb1^a + 2 lb2^a - 3)
+    + K/2 (J - 1)^2 with J = lam t^2, lb1 = lam J^(-1/3), lb2 = t J^(-1/3)."""
+    terms = ((p["MU1"], p["AL1"]), (p["MU2"], p["AL2"]))
+    g = sum(mu * al for mu, al in terms)
+    k = g * (1 + p["NU"]) / (3 * (1 - 2 * p["NU"]))
+
+    def lateral_stress(t):
+        j = lam * t * t
+        lb1, lb2 = lam * j ** (-1 / 3), t * j ** (-1 / 3)
+        t1 = sum(mu * lb1 ** al for mu, al in terms)
+        t2 = sum(mu * lb2 ** al for mu, al in terms)
+        return (t2 - (t1 + 2 * t2) / 3) / j + k * (j - 1)
+
+    lo, hi = 0.5 / math.sqrt(lam), 2.0 / math.sqrt(lam)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if lateral_stress(mid) > 0 else (mid, hi)
+    t = 0.5 * (lo + hi)
+    j = lam * t * t
+    lb1, lb2 = lam * j ** (-1 / 3), t * j ** (-1 / 3)
+    return sum(mu / al * (lb1 ** al + 2 * lb2 ** al - 3) for mu, al in terms) + 0.5 * k * (j - 1) ** 2
+
+
+def rubber_block():
+    p = RUBBER
+    run = "RUBBER_BLOCK"
+    L, n, T = p["L"], p["N"], p["T"]
+    nodes, bricks, nid = box_mesh(1, 1, (0.0, 0.0, 0.0), (L, L, L), (n, n, n))
+    vmax = 2.0 * L / T  # a triangle of velocity over T moves the top by vmax T / 2 = L
+    d = starter(run, "Rubber block: Ogden (law 42) stretched to twice its length and back", [
+        "Sample deck: /MAT/OGDEN (law 42) in uniaxial tension. Units Mg, mm, s (MPa, N, mJ).",
+        "A %g mm cube of %d x %d x %d bricks on three symmetry planes, its top face pulled along +Z to z = %g"
+        % (L, n, n, n, 2 * L),
+        "at t = %g s and back to z = %g at t = %g s (a triangle of velocity each way): the strain" % (T, L, 2 * T),
+        "energy comes back. nu 0.49 (K / G0 = 50): with nu 0.4995 this mesh goes unstable in the first",
+        "hundred cycles in radx, with law 1 as with law 42 (a one-point brick issue, see README)."])
+    d.rows("/NODE", nodes)
+    d.ruler()
+    d.rows("/BRICK", bricks, ident=1)
+    d.ruler()
+    d.card("/PART", 1, "Rubber block", prop_ID=1, mat_ID=1, subset_ID=0, Thick=0.0)
+    prop_solid_defaults(d, 1, "Rubber solid")
+    d.comment("The rubber of OpenRadioss's law42 QA deck in MPa (mu 827.6 and 55 kPa, alpha 2 and -2), nearly",
+              "incompressible (nu %g: K / G0 = %g)" % (p["NU"], round((1 + p["NU"]) / (1.5 * (1 - 2 * p["NU"])), 1)))
+    d.card("/MAT/OGDEN", 1, "Rubber (Ogden two-term)", fill=0, RHO_I=p["RHO"], nu=p["NU"], mu_1=p["MU1"],
+           mu_2=p["MU2"], alpha_1=p["AL1"], alpha_2=p["AL2"])
+    d.ruler()
+    d.card("/GRNOD/NODE", 1, "Plane x = 0", ids=[nid(0, j, k) for k in range(n + 1) for j in range(n + 1)])
+    d.card("/GRNOD/NODE", 2, "Plane y = 0", ids=[nid(i, 0, k) for k in range(n + 1) for i in range(n + 1)])
+    d.card("/GRNOD/NODE", 3, "Plane z = 0", ids=[nid(i, j, 0) for j in range(n + 1) for i in range(n + 1)])
+    d.card("/GRNOD/NODE", 4, "Top face z = %g" % L, ids=[nid(i, j, n) for j in range(n + 1) for i in range(n + 1)])
+    d.card("/BCS", 1, "Symmetry x", Tra_rot=rc.bcs_code("100", "000"), skew_ID=0, grnod_ID=1)
+    d.card("/BCS", 2, "Symmetry y", Tra_rot=rc.bcs_code("010", "000"), skew_ID=0, grnod_ID=2)
+    d.card("/BCS", 3, "Symmetry z", Tra_rot=rc.bcs_code("001", "000"), skew_ID=0, grnod_ID=3)
+    d.rows("/FUNCT", [(0.0, 0.0), (T / 2, 1.0), (T, 0.0), (1.5 * T, -1.0), (2 * T, 0.0), (10 * T, 0.0)], ident=1,
+           title="Velocity out and back")
+    d.card("/IMPVEL", 1, "Top face pulled along Z and brought back", fill=0, funct_IDT=1, Dir="Z", skew_ID=0,
+           sensor_ID=0, grnod_ID=4, frame_ID=0, Icoor=0, Ascale_x=0.0, Fscale_y=vmax, Tstart=0.0, Tstop=0.0)
+    d.ruler()
+    d.card("/TH/PART", 1, "Block energies", variables=["DEF"], ids=[1])
+    d.ruler()
+    d.raw("/END")
+    e = engine(run, 2 * T, 1e-4, 2.5e-3, ["VONM"], ["VEL", "DISP"],
+               ["Run to %g s: out to a stretch of 2 at %g s and back." % (2 * T, T)], print_every=-500)
+    return run, d, e
+
+
+def rubber_block_deck():
+    run, d, e = rubber_block()
+    p = RUBBER
+    vol = p["L"] ** 3
+    w2 = ogden_uniaxial_w(p, 2.0) * vol
+    readme = f"""# Rubber block: /MAT/OGDEN (law 42) stretched to twice its length and back
+
+`{run}_0000.rad` (starter, format 2026) and `{run}_0001.rad` (engine), generated by `{GENERATOR}`
+(edit the script and regenerate). Units: **Mg, mm, s** (MPa, N, mJ).
+
+A {g(p['L'])} mm cube of {p['N']} x {p['N']} x {p['N']} one-point bricks (Isolid 1) on three symmetry planes; its
+top face is pulled along +Z to twice the length at t = {g(p['T'])} s and brought back at {g(2 * p['T'])} s, each way a
+triangle of velocity (peak {g(2 * p['L'] / p['T'])} mm/s, far below the shear wave speed sqrt(G0 / rho) = 2.8e4 mm/s).
+Material `/MAT/OGDEN/1`: mu 0.8276 and 0.055 MPa, alpha 2 and -2 (G0 = 0.7726 MPa), nu {p['NU']}.
+
+## Expected physics
+
+The deformation is homogeneous uniaxial stress, nearly isochoric (K / G0 = 50). At the stretch 2 the
+internal energy is the strain energy of that state, W(2) V0 = {g(w2, 6)} mJ, with W = sum mu_p / alpha_p (lb1^alpha_p
++ 2 lb2^alpha_p - 3) + K/2 (J - 1)^2 at the lateral stretch that leaves the sides free (the incompressible value
+sum mu_p / alpha_p (2^alpha_p + 2 * 2^(-alpha_p/2) - 3) V0 is 1.5 % higher); the reference checks it within 1 %
+(the kinetic energy is 0.1 mJ at that time). Back at the initial length the energy has returned (the hyperelastic
+law dissipates nothing): the internal energy at the end is checked below 1 % of the peak (measured: -0.13 %).
+`/TH/PART/1` holds the block's internal energy.
+
+Near incompressibility: with nu 0.4995 (K / G0 = 1000) this 2 x 2 x 2 mesh goes unstable within a hundred
+cycles in radx (the internal energy jumps and turns negative, the hourglass energy grows), with `/MAT/LAW1` of
+the same moduli as with law 42, while one brick alone runs stably; the deck keeps nu 0.49, where both are stable.
+"""
+    ref = ref_text(run, [
+        ("cycles", "0.02", "0", "2 % of the cycles (the step follows the stretch)"),
+        ("th:part/1:1:IE@0.01", "0.01", "0", "W(2) V0, the closed form of uniaxial stress, within 1 %"),
+        ("th:part/1:1:IE@0.02", "0", "%.3g" % (0.01 * w2), "the energy returns: below 1 %% of the peak (%.3g mJ)" % w2),
+    ])
+    # The energies are closed forms, not recorded values: W(2) V0 at the peak, 0 at the end.
+    ref = ref.replace("th:part/1:1:IE@0.01                  -   ", "th:part/1:1:IE@0.01                  %-4.6g" % w2)
+    ref = ref.replace("th:part/1:1:IE@0.02                  -   ", "th:part/1:1:IE@0.02                  0   ")
+    return run, d, e, readme, ref
+
+
 def write_deck(out, folder, run, d, e, readme=None, ref=None):
     path = os.path.join(out, folder)
     d.write(os.path.join(path, run + "_0000.rad"), report=True)
@@ -1419,7 +1535,8 @@ def main(argv):
 DECKS = {"taylor_bar": taylor_bar_deck, "bar_rwall": bar_rwall_deck, "imposed_loads": imposed_loads_deck,
          "mixed_idel": mixed_idel_deck, "old_layout_2019": old_layout_2019_deck,
          "perforation_tab": perforation_tab_deck, "brittle_strip": brittle_strip_deck,
-         "ringing_strip": ringing_strip_deck, "fail_tab_strip": fail_tab_strip_deck}
+         "ringing_strip": ringing_strip_deck, "fail_tab_strip": fail_tab_strip_deck,
+         "rubber_block": rubber_block_deck}
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv[1:]))

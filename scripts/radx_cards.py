@@ -227,6 +227,13 @@ LAYOUTS = {
     "/MAT/LAW1": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
     "/MAT/VOID": Layout(Card(r("RHO_I"), r("E"), r("nu"))),
     "/MAT/RIGID": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
+    "/MAT/OGDEN": Layout(
+        Card(r("RHO_I"), r("RHO_ref")),
+        Card(r("nu"), r("sigma_cut"), i("Jstrain"), i("fct_IDbulk"), r("Fscale_bulk"), i("M"), i("Iform", since=140)),
+        Card(r("mu_1"), r("mu_2"), r("mu_3"), r("mu_4"), r("mu_5")),
+        Card(r("mu_6"), r("mu_7"), r("mu_8"), r("mu_9"), r("mu_10")),
+        Card(r("alpha_1"), r("alpha_2"), r("alpha_3"), r("alpha_4"), r("alpha_5")),
+        Card(r("alpha_6"), r("alpha_7"), r("alpha_8"), r("alpha_9"), r("alpha_10"))),
     "/MAT/PLAS_JOHNS": Layout(
         Card(r("RHO_I"), r("RHO_ref")),
         Card(r("E"), r("nu"), i("Iflag", since=140), i("flagVP", since=2023), r("Pmin", since=2025)),

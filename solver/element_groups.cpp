@@ -1,4 +1,5 @@
 #include "solver/element_groups.hpp"
+#include "solver/solid_stages.hpp"
 
 #include <algorithm>
 
@@ -54,6 +55,16 @@ void BrickGroup::allocate(int n) {
     for (std::size_t i = 0; i < G; ++i) frame[(4 * d) * G + i] = 1.0;
   hg_stress.assign(12 * G, 0.0);
   w_hg.assign(G, 0.0);
+}
+
+void BrickGroup::set_reference(std::size_t i, const double x0[8][3]) {
+  const auto G = static_cast<std::size_t>(kGroupSize);
+  if (b_ref.empty()) b_ref.assign(12 * G, 0.0);
+  double j1[3], j2[3], j3[3], c12[3], c23[3], c31[3], b[8][3];
+  const double v0 = brick_centre_jacobian(x0, j1, j2, j3, c12, c23, c31);
+  brick_centre_gradients(c12, c23, c31, v0, b);
+  for (std::size_t k = 0; k < 4; ++k)
+    for (std::size_t d = 0; d < 3; ++d) b_ref[(3 * k + d) * G + i] = b[k][d];
 }
 
 void TetraGroup::allocate(int n) {

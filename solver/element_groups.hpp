@@ -136,8 +136,14 @@ struct BrickGroup {
   std::vector<double> frame;      // [9][G]
   std::vector<double> hg_stress;  // [3][4][G] Isolid 24: hourglass stresses per direction and mode (local)
   std::vector<double> w_hg;       // [G] Isolid 24: hourglass work, a part of e_int (diagnostic only)
+  // Laws of total strain (law 42, hex8_fb.cpp): the centre gradients B_k = dN_k/dX(0) of the initial geometry
+  // (global axes), k = 1..4 (B_{5..8} = -B_{3,4,1,2}), [3 * k + d][G], from which the kernel forms the total
+  // deformation gradient F = sum_k x_k (x) B_k. Empty for the other laws.
+  std::vector<double> b_ref;
   void allocate(int n);
   void allocate_points();  // the point arrays of a fully integrated group (n_points = 8)
+  // b_ref of element i from its initial node coordinates x0[8][3].
+  void set_reference(std::size_t i, const double x0[8][3]);
 };
 
 // True when the group's stress lives in the co-rotational element frame (Iframe 2; Isolid 24 forces it).

@@ -253,6 +253,8 @@ void ExplicitEngine::build_groups() {
     g.h = prop.h;
     resolve_full_brick(prop, materials_[static_cast<std::size_t>(g.material)], g);
     const double rho0 = materials_[static_cast<std::size_t>(g.material)].rho0;
+    const bool total_strain =
+        materials_[static_cast<std::size_t>(g.material)].law == model::MaterialLaw::Ogden;
     for (int i = 0; i < g.count; ++i) {
       const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
       g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
@@ -275,6 +277,12 @@ void ExplicitEngine::build_groups() {
           sum += vp[q];
         }
         g.vol[static_cast<std::size_t>(i)] = sum;
+      }
+      if (total_strain) {  // law 42: the reference gradients of the total deformation gradient
+        double xa[8][3];
+        for (std::size_t q = 0; q < 8; ++q)
+          for (std::size_t d = 0; d < 3; ++d) xa[q][d] = x[q][d];
+        g.set_reference(static_cast<std::size_t>(i), xa);
       }
       g.rho[static_cast<std::size_t>(i)] = rho0;
     }

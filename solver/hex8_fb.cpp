@@ -62,6 +62,14 @@
 // w <- unit(u x v + w) (all three from the previous values); then e1 = u, e3 = unit(e1 x v), e2 = e3 x e1.
 // Isolid 1/2 take (e_x, e_y, e_z) = (e1, e2, e3); Isolid 24 takes (e3, e1, e2), so its x axis follows xi.
 //
+// Total-strain laws (law 42, /MAT/OGDEN; kTotal): the stress is not integrated from D but computed from the
+// total deformation gradient at the centre, F = sum_k x_k (x) B_k with B_k = dN_k/dX(0) of the initial
+// geometry (g.b_ref, global axes; the same opposite-node pairs as L), in the frame x is in: with Iframe 2,
+// x' = R^T x gives F' = R^T F and the stress R^T sigma R kept in the frame. The law's wave speed
+// c = sqrt(M / rho) of the cycle (law42_ogden.cpp: the current tangent) replaces the material's constant c in
+// the bulk viscosity, the hourglass coefficient and the step. The energy trapezoid is unchanged (the
+// stress power of the old and new stresses). Laws 1, 2, 36 instantiate the kernel without it.
+//
 // Small strain (after a /DT/BRICK/CST switch, g.dt_fixed > 0): the node coordinates are frozen in g.x_ref at
 // the first cycle after the switch and replace x^n in every formula above, so b_k, V, rho and the step stay
 // those of that geometry (the step constant, as Radioss's small-strain switch); velocities stay v^{n-1/2}.
@@ -96,7 +104,7 @@ void brick_corotational_frame(const double x[8][3], bool heph_order, double R[3]
 
 namespace {
 
-template <bool kCorot>
+template <bool kCorot, bool kTotal>
 void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat,
                       const CycleInfo& cyc) {
   constexpr std::size_t G = kGroupSize;
@@ -176,11 +184,24 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
     const double rho = solid_density(rho0, g.vol0[i], vol);
     const double mu = solid_mu(rho, rho0);
     const double rate = filtered_rate(alpha, strain_rate_measure(D), g.rate[i]);
-    const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
     double sn[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
     double eps_p = g.eps_p[i];
     double dmg = g.dmg[i];
-    const SolidPointResult pr = solid_point_update(mat, rate, de, mu, sn, eps_p, dmg, off);
+    SolidPointResult pr;
+    [[maybe_unused]] double c_e = c;  // the wave speed of this element and cycle
+    if constexpr (kTotal) {
+      double B[8][3], F[3][3];
+      for (std::size_t k = 0; k < 4; ++k)
+        for (std::size_t d = 0; d < 3; ++d) B[k][d] = g.b_ref[(3 * k + d) * G + i];
+      brick_velocity_gradient(x, B, F);  // sum_k x_k (x) B_k, by the opposite-node pairs (B_5..8 unused)
+      const OgdenPointResult op = ogden_point(mat, F, sn);
+      c_e = std::sqrt(op.modulus / rho);
+      pr.element_fails = op.cut && off == 1.0;
+      (void)mu;
+    } else {
+      const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
+      pr = solid_point_update(mat, rate, de, mu, sn, eps_p, dmg, off);
+    }
     const double deps_p = pr.deps_p;
     // Law 36 Eps_p_max and /FAIL/JOHNSON Ifail_so 1: 0.8 when the brick fails, then 0.8 per cycle, 0 below
     // 0.1; the forces and energies of this cycle take the new factor (as the shells do, elements.md 6.4).
@@ -189,8 +210,9 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
     // Bulk viscosity and element step.
     const double l = std::cbrt(vol);
     const double ec = compression_rate(D);
-    const double q_new = bulk_viscosity(rho, ec, l, qa2, qb, c);
-    const double dt_e = solid_step(brick_face_length(x, vol), c, qa2, qb, l, ec);
+    const double c_w = kTotal ? c_e : c;
+    const double q_new = bulk_viscosity(rho, ec, l, qa2, qb, c_w);
+    const double dt_e = solid_step(brick_face_length(x, vol), c_w, qa2, qb, l, ec);
 
     // Energies.
     const double de_int =
@@ -211,7 +233,7 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
       if (plain_h) hx[0][d] = hx[1][d] = hx[2][d] = 0.0;
     }
     const double v23 = l * l;  // V^(2/3)
-    const double cl = a_hg * rho * v23 * c;
+    const double cl = a_hg * rho * v23 * c_w;
     const double cq = 100.0 * a_hg * a_hg * rho * v23;
     double hg[4][3];  // H_j = q_j (Cl + Cq |q_j|) per direction
     double de_hg = 0.0;
@@ -258,10 +280,18 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
 }  // namespace
 
 void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
-  if (g.iframe == 2)
-    hex8_forces_impl<true>(g, nodes, mat, cyc);
-  else
-    hex8_forces_impl<false>(g, nodes, mat, cyc);
+  const bool total = mat.law == model::MaterialLaw::Ogden;
+  if (g.iframe == 2) {
+    if (total)
+      hex8_forces_impl<true, true>(g, nodes, mat, cyc);
+    else
+      hex8_forces_impl<true, false>(g, nodes, mat, cyc);
+  } else {
+    if (total)
+      hex8_forces_impl<false, true>(g, nodes, mat, cyc);
+    else
+      hex8_forces_impl<false, false>(g, nodes, mat, cyc);
+  }
 }
 
 }  // namespace radx::solver

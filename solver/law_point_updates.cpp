@@ -229,6 +229,23 @@ MaterialParams make_material_params(const model::Material& m) {
     p.brit.eps_f = b.eps_f1 == 0 ? 1.2e22 : b.eps_f1;
     p.brit.point_rate = m.fsmooth == 0 && m.f_cut == 0;
   }
+  if (m.law == model::MaterialLaw::Ogden) {
+    auto& o = p.ogden;
+    o.n = static_cast<int>(std::min<std::size_t>(m.ogden.mu.size(), OgdenParams::kMaxTerms));
+    for (int k = 0; k < o.n; ++k) {
+      o.mu[k] = m.ogden.mu[static_cast<std::size_t>(k)];
+      o.alpha[k] = m.ogden.alpha[static_cast<std::size_t>(k)];
+      o.g += o.mu[k] * o.alpha[k];
+    }
+    o.sig_cut = m.ogden.sig_cut > 0 ? m.ogden.sig_cut : 1e20;
+    o.iform = m.ogden.iform == 2 ? 2 : 1;
+    // The starter's moduli (build_hyperelastic.cpp): G0 = g / 2, K = g (1 + nu) / 3 (1 - 2 nu).
+    p.shear = m.shear;
+    p.bulk = m.bulk;
+    p.c_solid = p.rho0 > 0 ? std::sqrt((p.bulk + 4.0 * p.shear / 3.0) / p.rho0) : 0.0;
+    o.stiffen = p.bulk > 24.0 * o.g;
+    o.nu1 = 40.0 * (0.5 - (3.0 * p.bulk - o.g) / (6.0 * p.bulk + o.g));
+  }
   if (m.fail_jc.on) {
     const auto& f = m.fail_jc;
     p.fail.on = true;
@@ -318,6 +335,7 @@ double jc_rate_factor(const MaterialParams& p, double rate) {
     case model::MaterialLaw::Elastic:
     case model::MaterialLaw::Void:
     case model::MaterialLaw::Rigid:
+    case model::MaterialLaw::Ogden:            // bricks only, no rate term
     case model::MaterialLaw::PlasBrit: break;  // law 27 takes its rate term per point (law27_plas_brit.cpp)
   }
   return 1.0;
@@ -331,6 +349,7 @@ double shell_rate_threshold(const MaterialParams& p) {
     case model::MaterialLaw::Elastic:
     case model::MaterialLaw::PlasBrit:
     case model::MaterialLaw::Void:
+    case model::MaterialLaw::Ogden:
     case model::MaterialLaw::Rigid: break;
   }
   return kInf;

@@ -120,6 +120,21 @@ struct BritParams {
 inline constexpr int kBritVars = 7;
 enum BritVar : int { kBritExx = 0, kBritEyy, kBritGxy, kBritCos, kBritSin, kBritDamage, kBritCrack };
 
+// /MAT/OGDEN (law42_ogden.cpp): the terms with mu_p != 0, G = sum mu_p alpha_p, the tension cut-off on the
+// principal Biot stress, the volumetric form (1: U = K/2 (J-1)^2, 2: U = K (J - 1 - ln J)) and the bulk
+// stiffening of OpenRadioss's sigeps42.F for K > 24 G (below a stretch of 0.2 the bulk modulus is multiplied
+// by max(1, nu1 / lambda_min), nu1 = 40 (1/2 - nu_G), nu_G = (3K - G) / (6K + G)).
+struct OgdenParams {
+  static constexpr int kMaxTerms = 10;
+  int n = 0;
+  double mu[kMaxTerms] = {}, alpha[kMaxTerms] = {};
+  double g = 0;  // sum mu_p alpha_p = 2 mu0
+  double sig_cut = 1e20;
+  int iform = 1;
+  bool stiffen = false;  // K > 24 G
+  double nu1 = 0;
+};
+
 // Parameters as the kernels use them (work units), derived once per material.
 struct MaterialParams {
   model::MaterialLaw law = model::MaterialLaw::Elastic;
@@ -143,8 +158,24 @@ struct MaterialParams {
   double tab_rate_max = 0;
   bool tab_bound = false;  // tab_lower is a valid bound (every curve's last segment rises or is flat)
   FailParams fail;
-  BritParams brit;  // law 27; its flow stress is law 2's (a, b, n, c, eps_dot0, sig_max0, icc above)
+  BritParams brit;    // law 27; its flow stress is law 2's (a, b, n, c, eps_dot0, sig_max0, icc above)
+  OgdenParams ogden;  // law 42
 };
+
+// Law 42 (law42_ogden.cpp) at one point: the Cauchy stress sig (xx yy zz xy yz zx, in the axes F maps into)
+// from the total deformation gradient F[a][c] = dx_a / dX_c. Returns the modulus M = K' + 4/3 G_t of the
+// point's wave speed c = sqrt(M / rho) (K' the bulk modulus with its stiffening, G_t the tangent shear
+// estimate), J = det F, and `cut` when a principal Biot stress passed sigma_cut (sig is then 0).
+struct OgdenPointResult {
+  double modulus = 0;
+  double j = 1;
+  bool cut = false;
+};
+OgdenPointResult ogden_point(const MaterialParams& p, const double F[3][3], double sig[6]);
+
+// Strain energy per unit reference volume W(F) of law 42 (without the bulk stiffening), for tests and
+// checks: W = sum_p mu_p / alpha_p (lb1^alpha_p + lb2^alpha_p + lb3^alpha_p - 3) + U(J).
+double ogden_energy_density(const MaterialParams& p, const double F[3][3]);
 
 // Factor of the strain-rate filter (elements.md 6.1 shells, 6.2 solids): rate <- alpha e + (1 - alpha) rate,
 // alpha = min(1, 2 pi Fcut dt1), 1 when Fcut = 0 (no filter). Shared by the shell and solid kernels.

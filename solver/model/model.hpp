@@ -67,6 +67,7 @@ enum class MaterialLaw : std::uint8_t {
   // (E, nu); a rigid one is part of the rigid body the starter builds from the connected law-13 elements.
   Void = 0,
   Rigid = 13,
+  Ogden = 42,  // /MAT/OGDEN: hyperelastic, stress from the total deformation gradient (one-point bricks)
 };
 
 // /MAT/PLAS_TAB (law 36): yield curves sigma_y(eps_p) per strain rate, as given in the deck (the engine adds
@@ -123,6 +124,16 @@ struct PlasBrit {
   double eps_t2 = 1e20, eps_m2 = 1.1e20, d_max2 = 0.999, eps_f2 = 1.2e22;
 };
 
+// /MAT/OGDEN (law 42) as OpenRadioss hm_read_mat42.F keeps it: the terms with mu_p != 0, in the deck's
+// order (up to 10), the bulk modulus K = G (1 + nu) / (3 (1 - 2 nu)) with G = sum mu_p alpha_p (twice the
+// initial shear modulus), the tension cut-off (Biot stress; 0 -> 1e20) and the volumetric form Iform
+// (1: U = K/2 (J - 1)^2, 2: U = K (J - 1 - ln J)). The shear modulus and nu are in Material::shear, poisson.
+struct Ogden {
+  std::vector<double> mu, alpha;
+  double sig_cut = 1e20;
+  int iform = 1;
+};
+
 struct Material {
   std::int64_t id = 0;
   std::string title;
@@ -141,6 +152,7 @@ struct Material {
   FailJohnson fail_jc;
   FailTab fail_tab;
   PlasBrit brit;  // law 27's crack model
+  Ogden ogden;    // law 42
 };
 
 enum class PropertyKind : std::uint8_t { Shell = 1, Solid = 14, Spring = 4 };
