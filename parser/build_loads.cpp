@@ -643,6 +643,9 @@ const std::vector<ThKindDef>& th_kinds() {
                                                       "MASS", "HE", "ERODED", "HEAT"};
   static const std::vector<std::string_view> kShell = {"F1",  "F2",  "F12", "M1",   "M2",  "M12",
                                                        "IEM", "IEB", "OFF", "EMIN", "EMAX"};
+  // Single names beyond the DEF set: the element's filtered equivalent strain rate and its thickness.
+  static const std::vector<std::string_view> kShellNames = {"F1",  "F2",  "F12",  "M1",   "M2",   "M12", "IEM",
+                                                            "IEB", "OFF", "EMIN", "EMAX", "EPSD", "THIC"};
   static const std::vector<ThZero> kShellZero = {{"IEB", "the bending share of the shell energy"},
                                                  {"EMIN", "strains are not kept"},
                                                  {"EMAX", "strains are not kept"}};
@@ -688,8 +691,8 @@ const std::vector<ThKindDef>& th_kinds() {
        {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "CE_ELAST", "CE_FRIC", "CE_DAMP"},
        {}},
       {"/TH/RWALL", K::Rwall, "rigid wall", "/RWALL", {{"DEF", kForces}}, kForces, {}},
-      {"/TH/SHEL", K::Shell, "4-node shell", "/SHELL", {{"DEF", kShell}}, kShell, kShellZero},
-      {"/TH/SH3N", K::Shell3, "3-node shell", "/SH3N", {{"DEF", kShell}}, kShell, kShellZero},
+      {"/TH/SHEL", K::Shell, "4-node shell", "/SHELL", {{"DEF", kShell}}, kShellNames, kShellZero},
+      {"/TH/SH3N", K::Shell3, "3-node shell", "/SH3N", {{"DEF", kShell}}, kShellNames, kShellZero},
       {"/TH/BRIC",
        K::Brick,
        "brick",

@@ -700,7 +700,7 @@ STARTER = {
 
 # /TH variable names per keyword, as OpenRadioss names them: (groups, single names). A name outside both is an
 # error (RX501), as is a block without variable names (RX502); both at the keyword line.
-TH_SHELL = ["F1", "F2", "F12", "M1", "M2", "M12", "IEM", "IEB", "OFF", "EMIN", "EMAX"]
+TH_SHELL = ["F1", "F2", "F12", "M1", "M2", "M12", "IEM", "IEB", "OFF", "EMIN", "EMAX", "EPSD", "THIC"]
 TH_BRICK = ["OFF", "SX", "SY", "SZ", "SXY", "SYZ", "SXZ", "IE", "DENS", "BULK", "VOL", "PLAS", "TEMP", "PLSR",
             "VX", "VY", "VZ"]
 TH_VARIABLES = {

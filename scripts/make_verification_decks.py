@@ -1133,6 +1133,7 @@ def th_sh3n():
     D.append(RULER)
     D += th_group("/TH/SH3N", 1, "Every triangle", ["DEF"], [1, 2, 11, 12], "id+skew")
     D += th_group("/TH/NODE", 2, "Pulled corners", ["DX", "DY"], [3, 13], "id+skew")
+    D += th_group("/TH/SH3N", 3, "Thickness and strain rate", ["THIC", "EPSD"], [1, 11], "id+skew")
     D.append(RULER)
     D.append("/END")
     E = engine_deck(run, p["T_STOP"], p["T_STOP"] / 4, 1000, ["Stretch to %g %% strain." %

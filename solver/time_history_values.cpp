@@ -63,6 +63,8 @@ Dim th_variable_dim(model::ThKind kind, const std::string& n) {
       if (n == "F1" || n == "F2" || n == "F12") return kForcePerLength;
       if (n == "M1" || n == "M2" || n == "M12") return kMomentPerLength;
       if (n == "IEM" || n == "IEB") return kEnergy;
+      if (n == "EPSD") return kRate;
+      if (n == "THIC") return kLength;
       return kNone;
     case K::Brick:
       if (n[0] == 'S' || n == "IE" || n == "BULK") return kStress;
@@ -376,6 +378,8 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
         put(o, "M12", mm[2] * t * t);
         put(o, "IEM", g.e_int[k]);
         put(o, "OFF", g.off[k]);
+        put(o, "EPSD", g.rate[k]);  // the filtered equivalent strain rate of the rate laws (elements.md 6.1)
+        put(o, "THIC", t);
       }
       break;
     case K::Brick:

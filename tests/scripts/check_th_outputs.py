@@ -17,7 +17,7 @@ import numpy as np
 from results_common import check, finish, run_radx
 
 JC = dict(H=10.0, RHO=7.85e-9, E=210000.0, NU=0.3, A=300.0, B=450.0, N=0.4, V=10.0)
-TRI = dict(L=10.0, T=1.0, E=210000.0, NU=0.3)
+TRI = dict(L=10.0, T=1.0, E=210000.0, NU=0.3, V=10.0)
 RB = dict(H=10.0, RHO=7.85e-9, F=1e-3, G=9810.0)
 
 
@@ -148,6 +148,20 @@ def sh3n(f):
                    1e-9 * np.max(np.abs(r[:, c["%d:%s" % (e1, name)]])) + 1e-12, "%s of %d and %d" % (name, e1, e2))
     check(units["1:F1"] == "N/mm" and units["1:IEM"] == "mJ", "units %s" % units)
     check(str(f["sh3n/1"].attrs["object_kind"]) == "3-node shell", "object_kind")
+    # THIC: the thickness the element tracks (Ithick 0 only keeps it out of the mechanics), of uniaxial plane
+    # stress: e_zz = -nu e_xx, t = T (1 + u/L)^-nu; 1e-5 T is 2 % of its change at the end (the lateral
+    # inertia). EPSD: the equivalent rate of elements.md 1.3,
+    # sqrt(4/3 (e_xx^2 + e_yy^2 + e_xx e_yy)), of uniaxial stress (e_yy = -nu e_xx) at e_xx = V/(L + u): 1e-2
+    # for the lateral inertia and the central difference of the rate against the node's displacement.
+    r3, c3, units3 = group(f, "sh3n/3")
+    nu = p["NU"]
+    for e, node in ((1, 3), (11, 13)):
+        u = nd[:, cn["%d:DX" % node]]
+        k = r3[:, 0] > 0
+        within(r3[:, c3["%d:THIC" % e]], T * (1 + u / L) ** (-nu), 1e-5 * T, "triangle %d THIC = T (1 + u/L)^-nu" % e)
+        rate = math.sqrt(4.0 / 3.0 * (1 - nu + nu * nu)) * p["V"] / (L + u)
+        within(r3[k, c3["%d:EPSD" % e]] / rate[k], 1.0, 1e-2, "triangle %d EPSD = equivalent strain rate" % e)
+    check(units3["1:THIC"] == "mm" and units3["1:EPSD"] == "1/s", "units %s" % units3)
     return "%d rows, 4 triangles: F1 F2 F12 in the element frames, M = 0, IEM, OFF" % len(t)
 
 
