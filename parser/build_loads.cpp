@@ -644,8 +644,8 @@ const std::vector<ThKindDef>& th_kinds() {
   static const std::vector<std::string_view> kShell = {"F1",  "F2",  "F12", "M1",   "M2",  "M12",
                                                        "IEM", "IEB", "OFF", "EMIN", "EMAX"};
   // Single names beyond the DEF set: the element's filtered equivalent strain rate and its thickness.
-  static const std::vector<std::string_view> kShellNames = {"F1",  "F2",  "F12",  "M1",   "M2",   "M12", "IEM",
-                                                            "IEB", "OFF", "EMIN", "EMAX", "EPSD", "THIC"};
+  static const std::vector<std::string_view> kShellNames = {
+      "F1", "F2", "F12", "M1", "M2", "M12", "IEM", "IEB", "OFF", "EMIN", "EMAX", "EPSD", "THIC"};
   static const std::vector<ThZero> kShellZero = {{"IEB", "the bending share of the shell energy"},
                                                  {"EMIN", "strains are not kept"},
                                                  {"EMAX", "strains are not kept"}};
