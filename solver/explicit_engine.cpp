@@ -16,6 +16,7 @@
 #include "solver/kinematics_driver.hpp"
 #include "solver/model/geometry.hpp"
 #include "solver/model/masses.hpp"
+#include "solver/model/stable_step.hpp"
 
 namespace radx::solver {
 
@@ -206,21 +207,8 @@ void ExplicitEngine::build_groups() {
         // 4.2 2A / longest side for triangles.
         const auto& fp = materials_[static_cast<std::size_t>(mat)].fail;
         if (fp.on && fp.has_size) {
-          auto d2 = [](const model::Vec3& a, const model::Vec3& c) {
-            return (a[0] - c[0]) * (a[0] - c[0]) + (a[1] - c[1]) * (a[1] - c[1]) +
-                   (a[2] - c[2]) * (a[2] - c[2]);
-          };
-          const double a0 = g.area0[static_cast<std::size_t>(i)];
-          double len = 0;
-          if (triangle) {
-            len = 2.0 * a0 / std::sqrt(std::max({d2(X(0), X(1)), d2(X(1), X(2)), d2(X(2), X(0))}));
-          } else {
-            const double dmax = std::max(d2(X(0), X(2)), d2(X(1), X(3)));
-            double lmin2 = std::min({d2(X(0), X(1)), d2(X(1), X(2)), d2(X(3), X(0))});
-            if (b.conn[e * 4 + 3] != b.conn[e * 4 + 2])
-              lmin2 = std::min({lmin2, d2(X(2), X(3)), d2(X(0), X(2)), d2(X(1), X(3))});
-            len = std::sqrt(std::max(a0 * a0 / dmax, lmin2));
-          }
+          const double len = triangle ? model::triangle_length(X(0), X(1), X(2))
+                                      : model::quad_length(X(0), X(1), X(2), X(3));
           g.fail_scale[static_cast<std::size_t>(i)] = fail_size_factor(fp, len);
         }
       }

@@ -46,7 +46,9 @@ void spring_type8_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo
   const double dt_t = spring_step(p.mass, k_t, c_t);
   const double dt_r = spring_step(p.inertia, k_r, c_r);
   const double dt = std::min(dt_t, dt_r);
-  const double k_nodal = dt_t < 1e30 ? p.mass / (dt_t * dt_t) : 0.0;
+  // The nodal stiffness M / dt^2 carries the spring's step to the nodal time step (/DT/NODA); nodes have no
+  // rotational stiffness, so the rotational step enters through the smaller of the two steps.
+  const double k_nodal = dt < 1e30 ? p.mass / (dt * dt) : 0.0;
   for (int ii = 0; ii < g.count; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
     for (std::size_t d = 0; d < 12; ++d) g.nodal_force[d * G + i] = 0.0;

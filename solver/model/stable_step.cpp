@@ -47,6 +47,8 @@ double brick_length(const std::array<Vec3, 8>& x) {
   return area_max > 0 && v > 0 ? v / area_max : 0;
 }
 
+}  // namespace
+
 double quad_length(const Vec3& x1, const Vec3& x2, const Vec3& x3, const Vec3& x4) {
   const double area = quad_area(x1, x2, x3, x4);
   const double d13 = squared(sub(x3, x1)), d24 = squared(sub(x4, x2));
@@ -63,8 +65,6 @@ double triangle_length(const Vec3& x1, const Vec3& x2, const Vec3& x3) {
       std::sqrt(std::max({squared(sub(x2, x1)), squared(sub(x3, x2)), squared(sub(x1, x3))}));
   return longest > 0 ? 2.0 * triangle_area(x1, x2, x3) / longest : 0;
 }
-
-}  // namespace
 
 StepEstimate estimate_stable_step(const Model& m) {
   StepEstimate best;

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "solver/model/geometry.hpp"
 #include "solver/model/model.hpp"
 
 namespace radx::model {
@@ -18,5 +19,10 @@ struct StepEstimate {
 };
 
 [[nodiscard]] StepEstimate estimate_stable_step(const Model& m);
+
+// Step lengths of a shell (elements.md 4.1 quad: max(A / longest diagonal, shortest side or diagonal, the
+// side 3-4 and the diagonals left out when n3 = n4); 4.2 triangle: 2 A / longest side); 0 when degenerate.
+[[nodiscard]] double quad_length(const Vec3& x1, const Vec3& x2, const Vec3& x3, const Vec3& x4);
+[[nodiscard]] double triangle_length(const Vec3& x1, const Vec3& x2, const Vec3& x3);
 
 }  // namespace radx::model
