@@ -162,6 +162,18 @@ TEST_CASE("TYPE8 kernel: six uncoupled linear springs in a skewed frame, forces,
   CHECK(rel(g.dt[0], std::min(std::sqrt(1.0 / 30.0), std::sqrt(0.5 / 3.0))) < 1e-12);
 }
 
+TEST_CASE("TYPE8 kernel: the nodal stiffness carries the rotational step to the nodal time step",
+          "[spring8]") {
+  // A stiff rotation only (K_r = 1e4, I = 0.5, M = 1): the step is sqrt(I / K_r), and the nodal stiffness
+  // M / dt^2 makes the nodal step sqrt(2 (M/2) / k) of each node equal to it (the /DT/NODA estimate).
+  auto ns = radx::test::make_nodes({{0, 0, 0}, {100, 0, 0}});
+  auto g = one_spring(ns, linear_type8(1.0, 0.5, {0, 0, 0, 1e4, 0, 0}));
+  radx::solver::spring_type8_forces(g, ns, radx::solver::CycleInfo{0.1, 0.1, 0});
+  const double dt_r = std::sqrt(0.5 / 1e4);
+  CHECK(rel(g.dt[0], dt_r) < 1e-12);
+  CHECK(rel(std::sqrt(2.0 * 0.5 / g.k_nodal[0]), dt_r) < 1e-12);
+}
+
 TEST_CASE("TYPE8 kernel: the elastic hysteresis (H 7) of a rotation, loop worked by hand", "[spring8]") {
   // Loading curve f1: 100 x up to x = 1, then 100 + 10 (x - 1); unloading curve f3: 20 x up to 1, then
   // 20 + 10 (x - 1) (both odd). K = 100 = A K / A, the elastic slope of the trial force.
