@@ -395,31 +395,41 @@ void ModelBuilder::resolve_plas_tab_functions() {
   }
 }
 
+// The material a failure model's keyword line names, when radx can attach it there: it exists, is of law 2
+// or 36, and has no failure model yet; otherwise the error and nullptr.
+model::Material* ModelBuilder::failure_material(const KeywordRecord& r, std::string_view keyword) {
+  const auto it = mat_ids_.find(r.id);
+  if (it == mat_ids_.end()) {
+    diags_.error(Diag::MissingReference, at(r.pos), about(r),
+                 std::string(keyword) + " names material " + std::to_string(r.id) +
+                     ", which does not exist; the id on the keyword line is the material's");
+    return nullptr;
+  }
+  auto& mat = m_.materials[static_cast<std::size_t>(it->second)];
+  if (mat.law != model::MaterialLaw::JohnsonCook && mat.law != model::MaterialLaw::PlasTab) {
+    diags_.error(Diag::PhysicsNotImplemented, at(r.pos), about(r),
+                 std::string(keyword) + " on material " + std::to_string(r.id) + " (" + mat.keyword +
+                     "): radx implements it on /MAT/PLAS_JOHNS (law 2) and /MAT/PLAS_TAB (law 36) only");
+    return nullptr;
+  }
+  if (mat.fail_jc.on || mat.fail_tab.on) {
+    diags_.error(Diag::DuplicateId, at(r.pos), about(r),
+                 "material " + std::to_string(r.id) + " already has a " +
+                     (mat.fail_jc.on ? "/FAIL/JOHNSON" : "/FAIL/TAB") +
+                     "; radx takes one failure model per material");
+    return nullptr;
+  }
+  return &mat;
+}
+
 // /FAIL/JOHNSON/mat_ID: attached to its material (law 2 or 36), at most one per material. Defaults of
 // OpenRadioss hm_read_fail_johnson.F: Epsilon_Dot_0 0 -> 1e-20, Ifail_sh and Ifail_so 0 -> 1.
 void ModelBuilder::build_failure_models() {
   for (const auto* rp : deck_.of("/FAIL/JOHNSON")) {
     const auto& r = *rp;
-    const auto it = mat_ids_.find(r.id);
-    if (it == mat_ids_.end()) {
-      diags_.error(Diag::MissingReference, at(r.pos), about(r),
-                   "/FAIL/JOHNSON names material " + std::to_string(r.id) +
-                       ", which does not exist; the id on the keyword line is the material's");
-      continue;
-    }
-    auto& mat = m_.materials[static_cast<std::size_t>(it->second)];
-    if (mat.law != model::MaterialLaw::JohnsonCook && mat.law != model::MaterialLaw::PlasTab) {
-      diags_.error(Diag::PhysicsNotImplemented, at(r.pos), about(r),
-                   "/FAIL/JOHNSON on material " + std::to_string(r.id) + " (" + mat.keyword +
-                       "): radx implements it on /MAT/PLAS_JOHNS (law 2) and /MAT/PLAS_TAB (law 36) only");
-      continue;
-    }
-    if (mat.fail_jc.on) {
-      diags_.error(Diag::DuplicateId, at(r.pos), about(r),
-                   "material " + std::to_string(r.id) +
-                       " already has a /FAIL/JOHNSON; radx takes one failure model per material");
-      continue;
-    }
+    model::Material* target = failure_material(r, "/FAIL/JOHNSON");
+    if (!target) continue;
+    auto& mat = *target;
     if (r.get_int("FAILIP") > 1)
       error_at(r, "FAILIP", Diag::PhysicsNotImplemented,
                "FAILIP = " + std::to_string(r.get_int("FAILIP")) +
@@ -458,27 +468,9 @@ void ModelBuilder::build_failure_models() {
 void ModelBuilder::build_fail_tab() {
   for (const auto* rp : deck_.of("/FAIL/TAB")) {
     const auto& r = *rp;
-    const auto it = mat_ids_.find(r.id);
-    if (it == mat_ids_.end()) {
-      diags_.error(Diag::MissingReference, at(r.pos), about(r),
-                   "/FAIL/TAB names material " + std::to_string(r.id) +
-                       ", which does not exist; the id on the keyword line is the material's");
-      continue;
-    }
-    auto& mat = m_.materials[static_cast<std::size_t>(it->second)];
-    if (mat.law != model::MaterialLaw::JohnsonCook && mat.law != model::MaterialLaw::PlasTab) {
-      diags_.error(Diag::PhysicsNotImplemented, at(r.pos), about(r),
-                   "/FAIL/TAB on material " + std::to_string(r.id) + " (" + mat.keyword +
-                       "): radx implements it on /MAT/PLAS_JOHNS (law 2) and /MAT/PLAS_TAB (law 36) only");
-      continue;
-    }
-    if (mat.fail_jc.on || mat.fail_tab.on) {
-      diags_.error(Diag::DuplicateId, at(r.pos), about(r),
-                   "material " + std::to_string(r.id) + " already has a " +
-                       (mat.fail_jc.on ? "/FAIL/JOHNSON" : "/FAIL/TAB") +
-                       "; radx takes one failure model per material");
-      continue;
-    }
+    model::Material* target = failure_material(r, "/FAIL/TAB");
+    if (!target) continue;
+    auto& mat = *target;
     auto& f = mat.fail_tab;
     f.on = true;
     f.fail_id = r.get_int("fail_ID");

@@ -49,12 +49,13 @@ class ModelBuilder {
   void build_materials();
   void read_plas_tab(const KeywordRecord& r, model::Material& mat);   // /MAT/PLAS_TAB's cards
   void read_plas_brit(const KeywordRecord& r, model::Material& mat);  // /MAT/PLAS_BRIT's cards
-  void build_failure_models();                                        // /FAIL/JOHNSON, after the materials
-  void resolve_plas_tab_functions();                                  // after the functions
-  void build_fail_tab();                                              // /FAIL/TAB, after the materials
-  void resolve_fail_tab_functions();                                  // its functions, after the functions
-  void read_ogden(const KeywordRecord& r, model::Material& mat);      // /MAT/OGDEN (build_hyperelastic.cpp)
-  void read_void(const KeywordRecord& r, model::Material& mat);       // /MAT/VOID's optional card
+  model::Material* failure_material(const KeywordRecord& r, std::string_view keyword);  // or nullptr
+  void build_failure_models();                                    // /FAIL/JOHNSON, after the materials
+  void resolve_plas_tab_functions();                              // after the functions
+  void build_fail_tab();                                          // /FAIL/TAB, after the materials
+  void resolve_fail_tab_functions();                              // its functions, after the functions
+  void read_ogden(const KeywordRecord& r, model::Material& mat);  // /MAT/OGDEN (build_hyperelastic.cpp)
+  void read_void(const KeywordRecord& r, model::Material& mat);   // /MAT/VOID's optional card
   void build_rigid_material_bodies();  // build_rigid_materials.cpp: one body per connected /MAT/RIGID set
   void build_properties();
   void build_subsets_and_parts();
