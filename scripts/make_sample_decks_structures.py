@@ -1234,9 +1234,9 @@ def ringing_strip():
     tip = [1 + nx + (nx + 1) * j for j in range(ny + 1)]
     d = starter(run, "Cantilever strip ringing on the nodal time step", [
         "Sample deck: the nodal time step (/DT/NODA/0 in the engine deck). Units Mg, mm, s (MPa, N, mJ).",
-        "A %g x %g mm steel strip, %g mm thick, clamped at x = 0 and struck at the tip by a %g N pulse along Z"
+        "A %g x %g mm steel strip, %g mm thick, clamped at x = 0 and struck at the tip by a %g N pulse"
         % (L, W, p["T"], p["F"]),
-        "lasting %g s: it rings in its first bending mode." % p["PULSE"]])
+        "along Z lasting %g s: it rings in its first bending mode." % p["PULSE"]])
     d.rows("/NODE", nodes)
     d.ruler()
     d.rows("/SHELL", shells, ident=1)
@@ -1245,7 +1245,7 @@ def ringing_strip():
     d.comment("Ishell 1 (the default), five points through the thickness")
     prop_shell(d, 1, "Strip shell %g mm" % p["T"], p["T"], 5)
     d.comment("Elastic steel: a = 1e20 keeps Johnson-Cook in its elastic range")
-    mat_jc(d, 1, "Steel, elastic", p["RHO"], p["E"], p["NU"], p["A"], 0.0, 1.0)
+    mat_jc(d, 1, "Elastic steel", p["RHO"], p["E"], p["NU"], p["A"], 0.0, 1.0)
     d.ruler()
     d.card("/GRNOD/NODE", 1, "Root (x = 0)", ids=root)
     d.card("/GRNOD/NODE", 2, "Tip (x = %g)" % L, ids=tip)
@@ -1255,7 +1255,7 @@ def ringing_strip():
     d.card("/CLOAD", 1, "Tip pulse along Z", funct_IDT=1, Dir="Z", skew_ID=0, sensor_ID=0, grnod_ID=2,
            Ascale_x=0.0, Fscale_y=p["F"] / len(tip))
     d.ruler()
-    d.card("/TH/NODE", 1, "Tip, mid-width", variables=["DEF"], rows=[(tip[ny // 2], 0, "tip")])
+    d.card("/TH/NODE", 1, "Tip at mid-width", variables=["DEF"], rows=[(tip[ny // 2], 0, "tip")])
     d.card("/TH/PART", 1, "Strip energies", variables=["DEF"], ids=[1])
     d.ruler()
     d.raw("/END")
