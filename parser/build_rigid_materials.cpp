@@ -51,6 +51,8 @@ void ModelBuilder::build_rigid_material_bodies() {
     for (std::size_t e = 0; e < b->size(); ++e) {
       if (b->part[e] == kNone || !rigid_part(b->part[e])) continue;
       const auto* c = &b->conn[e * npe];
+      // A node that does not exist is reported with the element already (its slot holds kNone).
+      if (std::any_of(c, c + npe, [](std::int32_t n) { return n < 0; })) continue;
       const auto mat = m_.parts[static_cast<std::size_t>(b->part[e])].material;
       for (std::size_t q = 0; q < npe; ++q) {
         const auto n = static_cast<std::size_t>(c[q]);

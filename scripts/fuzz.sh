@@ -32,6 +32,8 @@ done < <(find decks -name '*.rad' -size -64k -print0)
 cp -n decks/one_file/*.rad build-fuzz/corpus/engine/ 2>/dev/null || true
 
 status=0
+# A sanitizer report names the function and line only with a stack; CI keeps no artifacts, so the log must.
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
 for reader in starter engine; do
   echo "radx fuzz: the $reader reader, $((seconds * 250)) inputs (about ${seconds} s)"
   # A fixed seed and a fixed number of inputs: from the same corpus (a clean clone's, seeded from decks/) the

@@ -296,3 +296,26 @@ TEST_CASE("rigid material: a /BCS on one of its nodes is refused by name", "[rig
   }
   CHECK(found);
 }
+
+TEST_CASE("rigid material: an element naming a missing node is reported, not gathered into a body",
+          "[rigid]") {
+  // The brick of law 13 names node 99, which no /NODE line defines: the starter reports it
+  // (ElementNodeMissing) and leaves the slot empty; the rigid sets must not read that slot (a fuzzed deck
+  // found the index -1).
+  std::string s =
+      radx::test::begin_block(2026, "Mg mm s") + "/NODE\n" + cube_nodes(1, 0) + cube_nodes(11, 50);
+  s += brick(1, 1, {1, 2, 3, 4, 5, 6, 7, 8}) + brick(2, 2, {11, 12, 13, 14, 15, 16, 17, 99});
+  s += part(1, 1) + part(2, 2) + materials("") + "/END\n";
+  radx::test::TempDir dir;
+  radx::Diagnostics diags;
+  const auto deck = radx::read_starter_deck(dir.write("m_0000.rad", s), diags);
+  const auto md = radx::build_model(deck, diags);
+  int missing = 0;
+  for (const auto& d : diags.items()) {
+    const std::string text = radx::Diagnostics::format(d);
+    INFO(text);
+    if (text.find("uses node 99") != std::string::npos) ++missing;
+  }
+  CHECK(missing == 1);
+  CHECK(md.rigid_bodies.empty());  // the only law-13 element is incomplete
+}
