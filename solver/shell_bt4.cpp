@@ -1,7 +1,8 @@
-// Four-node Belytschko-Tsay shell (Ishell 1; every other Ishell is run as 1), one point in the plane, as
-// OpenRadioss runs it by default. Source of every formula: shared/spec/elements.md (sections in brackets),
-// itself read from OpenRadioss cforc3.F, ccoor3.F, cnvec3.F, cderi3.F, cdefo3.F, ccurv3.F, cstra3.F,
-// mulawc.F90, cfint3.F, chvis3.F, cdlen3.F, cdt3.F.
+// Four-node Belytschko-Tsay shell, Ishell 1 (and 0), one point in the plane, as OpenRadioss runs it by
+// default, and Ishell 4, its variant with the warp correction (cdefo3.F and cfint3.F, internal IHBE 4).
+// Source of every formula: shared/spec/elements.md (sections in brackets), itself read from OpenRadioss
+// cforc3.F, ccoor3.F, cnvec3.F, cderi3.F, cdefo3.F, ccurv3.F, cstra3.F, mulawc.F90, cfint3.F, chvis3.F,
+// cdlen3.F, cdt3.F.
 //
 // Geometry [1.2], rebuilt every cycle from X^n (stresses stay in this convected frame, never rotated):
 //   g1 = (X2 - X1) + (X3 - X4), g2 = (X3 - X2) + (X4 - X1), e3 = g1 x g2 / |g1 x g2|,
@@ -17,6 +18,13 @@
 //   A kxx = sum PX_k ry_k, A kyy = -sum PY_k rx_k, A kxy = sum (PY_k ry_k - PX_k rx_k);
 //   A gxz = sum PX_k vz_k + A/4 sum ry_k, A gyz = sum PY_k vz_k - A/4 sum rx_k;
 //   increments = rates dt1 / A.
+// Ishell 4 replaces the second-order correction: with the warp z2 = e3.(X2 - X1) (0 in small strain),
+//   gzx = (PX1 w13 + PX2 w24)/A, gzy = (PY1 w13 + PY2 w24)/A, a = gzx z2/2, b = dt1 gzx^2/2, c = gzy z2/2,
+//   d = dt1 gzy^2/2, the local velocities change by dvx = (-a - b PY2, a + b PY1, -a + b PY2, a - b PY1),
+//   dvy = (-c + d PX2, c - d PX1, -c - d PX2, c + d PX1) before the rates and the hourglass rates are taken:
+//   the membrane rates lose dt1/2 (dvz/dx)^2 and dt1/2 (dvz/dy)^2, and a warped element turning rigidly about
+//   an in-plane axis has no membrane hourglass rate; with N > 1 the moments of the membrane hourglass forces
+//   about the warp are added: mx_k -= z2/4 (Hy_1 + Hy_3), my_k += z2/4 (Hx_1 + Hx_3) (H_k = H gamma_k).
 // Section [1.4], energy [1.5] (A current area, t the mechanics thickness):
 //   E_int += 1/2 A t [(OFF_old FOR_old + OFF FOR_new).de_m + t (OFF_old MOM_old + OFF MOM_new).dkappa].
 //   Membrane damping (Dm > 0 only): visc = 1.414 Dm rho c sqrt(A)/dt1, FOR += visc (dexx + deyy/2,
@@ -83,6 +91,7 @@ struct Bt4Block {
   shell_detail::FrameBlock<kBlock> fr;                 // frame e1 e2 e3
   double vx[4][kBlock], vy[4][kBlock], vz[4][kBlock];  // node velocities, local
   double rxh[kBlock], ryh[kBlock];                     // local hourglass rotation rates
+  double z2[kBlock];                                   // warp e3.(X2 - X1), Ishell 4 (0 in small strain)
   double lx[4][kBlock], ly[4][kBlock];                 // local coordinates (node 1 at 0)
   double px1[kBlock], py1[kBlock], px2[kBlock], py2[kBlock];
   double area[kBlock], ainv[kBlock], l2[kBlock], nondeg[kBlock], off[kBlock], rate[kBlock];
@@ -100,6 +109,9 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
   constexpr std::size_t G = kGroupSize;
   const ShellProps& pr = g.props;
   const bool plain_h = pr.ismstr == 1;  // [1.7]: Ismstr 1 takes the plain h = (1, -1, 1, -1) as gamma
+  // Ishell 4 or 1, as arithmetic weights so that one vectorised loop runs both (w = 0 adds exact zeros).
+  const double w4 = pr.ishell == 4 ? 1.0 : 0.0, w1 = 1.0 - w4;
+  const double w4_moment = pr.n_points != 1 ? w4 : 0.0;  // cfint3.F: not with one point through the thickness
   const double dt1 = cyc.dt1;
   const ThicknessRule rule = thickness_rule(std::max(pr.n_points, 0));
   ensure_resultant_storage(g);
@@ -203,6 +215,10 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
         bk.lx[k][j] = lx[k];
         bk.ly[k][j] = ly[k];
       }
+      const double z2 =
+          (1.0 - sm) * (e3x * (bk.nb.x[1][j] - bk.nb.x[0][j]) + e3y * (bk.nb.y[1][j] - bk.nb.y[0][j]) +
+                        e3z * (bk.nb.z[1][j] - bk.nb.z[0][j]));
+      bk.z2[j] = z2;
       const double PX1 = 0.5 * (ly[1] - ly[3]), PY1 = 0.5 * (lx[3] - lx[1]);
       const double PX2 = 0.5 * ly[2], PY2 = -0.5 * lx[2];
       const double area = std::max(2.0 * (PY2 * PX1 - PY1 * PX2), tiny20);
@@ -218,16 +234,21 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
                  vx[k], vy[k], vz[k]);
         to_local(e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y, e3z, bk.nb.rx[k][j], bk.nb.ry[k][j], bk.nb.rz[k][j],
                  rx[k], ry[k], rz_unused);
-        bk.vx[k][j] = vx[k], bk.vy[k][j] = vy[k], bk.vz[k][j] = vz[k];
       }
       bk.rxh[j] = rx[0] - rx[1] + rx[2] - rx[3];  // hourglass rotation rates [1.7]
       bk.ryh[j] = ry[0] - ry[1] + ry[2] - ry[3];
 
-      // Rates times A [1.3].
+      // Rates times A [1.3], after Ishell 4's velocity changes (zero for Ishell 1).
       const double w13 = vz[0] - vz[2], w24 = vz[1] - vz[3];
+      const double gzx = (PX1 * w13 + PX2 * w24) * ainv, gzy = (PY1 * w13 + PY2 * w24) * ainv;
+      const double wa = w4 * (0.5 * gzx * z2), wb = w4 * (0.5 * dt1 * gzx * gzx);
+      const double wc = w4 * (0.5 * gzy * z2), wd = w4 * (0.5 * dt1 * gzy * gzy);
+      vx[0] += -wa - wb * PY2, vx[1] += wa + wb * PY1, vx[2] += -wa + wb * PY2, vx[3] += wa - wb * PY1;
+      vy[0] += -wc + wd * PX2, vy[1] += wc - wd * PX1, vy[2] += -wc - wd * PX2, vy[3] += wc + wd * PX1;
+      for (int k = 0; k < 4; ++k) bk.vx[k][j] = vx[k], bk.vy[k][j] = vy[k], bk.vz[k][j] = vz[k];
       const double ta = signed_floor(PY1 + PY2, tiny20), tb = signed_floor(PX2 - PX1, tiny20);
-      const double t1 = 0.25 * dt1 * (w13 - w24) * (w13 - w24) / ta;
-      const double t2 = 0.25 * dt1 * (w13 + w24) * (w13 + w24) / tb;
+      const double t1 = w1 * (0.25 * dt1 * (w13 - w24) * (w13 - w24) / ta);
+      const double t2 = w1 * (0.25 * dt1 * (w13 + w24) * (w13 + w24) / tb);
       const double u13 = vx[0] - vx[2] - t1, u24 = vx[1] - vx[3] + t1;
       const double v13 = vy[0] - vy[2] + t2, v24 = vy[1] - vy[3] + t2;
       const double rx13 = rx[0] - rx[2], rx24 = rx[1] - rx[3], ry13 = ry[0] - ry[2], ry24 = ry[1] - ry[3];
@@ -376,12 +397,13 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
       const double mxh = mhg * (cr * std::abs(rxh) * rxh);
       const double myh = mhg * (cr * std::abs(ryh) * ryh);
       constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
+      const double warp = w4_moment * 0.25 * bk.z2[j] * (gam[0] + gam[2]);  // Ishell 4, N > 1
       for (int k = 0; k < 4; ++k) {
         fx[k] += hxf * gam[k];
         fy[k] += hyf * gam[k];
         fz[k] += hzf * gam[k];
-        mx[k] += mxh * h[k];
-        my[k] += myh * h[k];
+        mx[k] += mxh * h[k] - warp * hyf;
+        my[k] += myh * h[k] + warp * hxf;
       }
       const double de_hg = dt1 * off * (hxf * qx + hyf * qy + hzf * qz + mxh * rxh + myh * ryh);
       const double eh = e_hg[ii];

@@ -879,3 +879,75 @@ TEST_CASE("BT4 hourglass vector: gamma is blind to linear fields, the plain h of
     }
   }
 }
+
+TEST_CASE(
+    "BT4 Ishell 4: a warped quad turning rigidly has no membrane hourglass rate, and half the "
+    "second-order membrane correction of Ishell 1",
+    "[shell][ishell4]") {
+  // Square a x a warped by w (z = 0, w, 0, w): the frame is (x, y, z) and z2 = w. Rigid rotation omega about
+  // y: v = (omega z, 0, -omega x), rotation rate ry = omega. gamma = h here (hx = hy = 0), so Ishell 1 sees
+  // the membrane hourglass rate qx = sum h vx = -2 omega w; Ishell 4 adds -4 (gzx w/2) with gzx = dvz/dx =
+  // -omega: qx = 0 (the b terms cancel in the sum). The membrane rate of Ishell 1 carries -dt1 (dvz/dx)^2,
+  // that of Ishell 4 -dt1/2 (dvz/dx)^2 (elements.md 1.3, cdefo3.F IHBE 4): after one cycle sigma_xx =
+  // E/(1-nu^2) dexx with dexx = -dt^2 omega^2 (Ishell 1) or -dt^2 omega^2/2 (Ishell 4), sigma_yy = nu
+  // sigma_xx.
+  const double young = 210000, nu = 0.3, rho = 7.85e-9, t = 1.0, a = 10.0, w = 0.8, omega = 200.0, dt = 1e-6;
+  const MaterialParams mat = elastic(young, nu, rho);
+  for (const int ishell : {1, 4}) {
+    DYNAMIC_SECTION("Ishell " << ishell) {
+      NodeState s = make_nodes({{0, 0, 0}, {a, 0, w}, {a, a, 0}, {0, a, w}});
+      for (std::size_t k = 0; k < 4; ++k) {
+        s.vx[k] = omega * s.z[k];
+        s.vz[k] = -omega * s.x[k];
+        s.wy[k] = omega;
+      }
+      ShellGroup g = make_group({{0, 1, 2, 3}}, t, 3);
+      g.props.ishell = ishell;
+      run(g, s, mat, dt);
+      const double km = young * g.props.hm / 8 * t * dt;
+      const double qx = ishell == 1 ? -2 * omega * w : 0.0;
+      // Stored membrane hourglass force: Km qx; Ishell 4 within round-off of the terms that cancel
+      // (omega w Km, times 1e-12).
+      CHECK(std::abs(g.hg[0] - km * qx) <= 1e-12 * km * omega * w);
+      CHECK(std::abs(g.hg[G]) <= 1e-12 * km * omega * w);
+      const double dexx = -(ishell == 1 ? 1.0 : 0.5) * dt * dt * omega * omega;
+      const double sxx = young / (1 - nu * nu) * dexx;
+      for (int p = 0; p < 3; ++p) {
+        CHECK(close(sig(g, p, 0, 0), sxx, 1e-9));       // relative round-off of a dt^2 term
+        CHECK(close(sig(g, p, 1, 0), nu * sxx, 1e-9));  // plane stress, deyy = 0
+      }
+    }
+  }
+}
+
+TEST_CASE("BT4 Ishell 4 with N > 1: the membrane hourglass force has a moment about the warp",
+          "[shell][ishell4]") {
+  // The warped square above with the in-plane hourglass mode vy = delta h: no strain, qy = 4 delta, Hy = Km
+  // qy
+  // + Cm qy^2 (1.7). cfint3.F adds mx_k -= z2/4 (Hy_1 + Hy_3) = -z2/2 Hy on every node (gamma_1 + gamma_3 =
+  // 2) to the internal moments; the nodal force is minus the internal one. Ishell 1 and Ishell 4 with N = 1
+  // have no such moment.
+  const double young = 210000, nu = 0.3, rho = 7.85e-9, t = 1.0, a = 10.0, w = 0.8, delta = 0.3, dt = 1e-7;
+  const MaterialParams mat = elastic(young, nu, rho);
+  struct Case {
+    int ishell, points;
+    bool moment;
+  };
+  for (const Case c : {Case{1, 3, false}, Case{4, 3, true}, Case{4, 1, false}}) {
+    DYNAMIC_SECTION("Ishell " << c.ishell << ", N " << c.points) {
+      NodeState s = make_nodes({{0, 0, 0}, {a, 0, w}, {a, a, 0}, {0, a, w}});
+      const double h[4] = {1, -1, 1, -1};
+      for (std::size_t k = 0; k < 4; ++k) s.vy[k] = delta * h[k];
+      ShellGroup g = make_group({{0, 1, 2, 3}}, t, c.points);
+      g.props.ishell = c.ishell;
+      g.props.n_points = c.points;
+      run(g, s, mat, dt);
+      const double hm = g.props.hm;
+      const double km = young * hm / 8 * t * dt, cm = 12.5 * rho * hm * t * a;
+      const double qy = 4 * delta, hy = km * qy + cm * qy * qy;
+      const double expected = c.moment ? 0.5 * w * hy : 0.0;
+      for (std::size_t k = 0; k < 4; ++k)  // round-off relative to the moment z2 Hy
+        CHECK(std::abs(g.nodal_force[(k * 6 + 3) * G] - expected) <= 1e-12 * w * hy);
+    }
+  }
+}
