@@ -193,9 +193,13 @@ void ModelBuilder::check_formulations() {
     }
     if (path == "/PROP/SHELL") {
       auto& s = prop.shell;
-      if (used & kQuad)
+      if (used & kQuad) {
         flag("Ishell", s.ishell, s.ishell == 1 || s.ishell == 12 || s.ishell == 24, 1, ishell_name(s.ishell),
              ishell_name(1), "4-node shells");
+        // A substituted formulation runs with its own defaults: Ishell 3's hourglass coefficients are not
+        // 1's.
+        shell_hourglass_defaults(rec, s);
+      }
       if (used & kTri)
         flag("Ish3n", s.ish3n, s.ish3n == 1 || s.ish3n == 2, 2, ish3n_name(s.ish3n), ish3n_name(2),
              "3-node shells");

@@ -536,6 +536,13 @@ void ModelBuilder::resolve_fail_tab_functions() {
   }
 }
 
+void ModelBuilder::shell_hourglass_defaults(const KeywordRecord& r, model::ShellProperty& s) {
+  const bool h3 = s.ishell == 3;
+  s.hm = r.find("Hm") && !r.find("Hm")->defaulted ? r.get_real("Hm") : (h3 ? 0.1 : 0.01);
+  s.hf = r.find("Hf") && !r.find("Hf")->defaulted ? r.get_real("Hf") : (h3 ? 0.1 : 0.01);
+  s.hr = r.find("Hr") && !r.find("Hr")->defaulted ? r.get_real("Hr") : 0.01;
+}
+
 void ModelBuilder::build_properties() {
   // Two-stage defaults: the /PROP value if non-zero, else the first /DEF_SHELL or /DEF_SOLID value if
   // non-zero, else the hard default (explicit analysis).
@@ -578,10 +585,7 @@ void ModelBuilder::build_properties() {
       s.ipos = static_cast<int>(r.get_int("Ipos"));
       s.p_thick_fail = r.get_real("P_Thick_Fail");
       if (s.p_thick_fail == 0) s.p_thick_fail = 0.999999;
-      const bool h3 = s.ishell == 3;
-      s.hm = r.find("Hm") && !r.find("Hm")->defaulted ? r.get_real("Hm") : (h3 ? 0.1 : 0.01);
-      s.hf = r.find("Hf") && !r.find("Hf")->defaulted ? r.get_real("Hf") : (h3 ? 0.1 : 0.01);
-      s.hr = r.find("Hr") && !r.find("Hr")->defaulted ? r.get_real("Hr") : 0.01;
+      shell_hourglass_defaults(r, s);
       s.dm = r.get_real("Dm");
       s.dn = r.get_real("Dn");
       if (s.dn == 0 && s.ishell == 24) s.dn = 0.015;

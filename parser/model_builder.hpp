@@ -61,6 +61,8 @@ class ModelBuilder {
   void build_subsets_and_parts();
   void build_elements();
   void read_spring_property(const KeywordRecord& r, model::Property& p);  // build_springs.cpp
+  // Hm and Hf as the deck gives them, else the default of the shell's Ishell (0.1 for 3, 0.01 otherwise).
+  static void shell_hourglass_defaults(const KeywordRecord& r, model::ShellProperty& s);
   void read_spring_law(const KeywordRecord& r, model::SpringLaw& s, const std::string& sfx, bool type8);
   void resolve_spring_skews();      // after the skews
   void build_springs();             // after the parts
