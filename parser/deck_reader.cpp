@@ -584,6 +584,7 @@ class StarterReader {
       // The id written after the path names the object in the message (/MAT/LAW51/9: material 9).
       std::int64_t written_id = 0;
       if (n < tokens.size() && parse_int(tokens[n], written_id) != NumberStatus::Ok) written_id = 0;
+      if (written_id != 0) deck_.unread.push_back({path, written_id, head.pos});
       if (is_known_unsupported(path)) {
         diags_.error(
             Diag::UnsupportedKeyword, at(head.pos, 1), About{path, written_id},

@@ -74,9 +74,21 @@ std::int32_t ModelBuilder::ref(const IdIndex& index, const KeywordRecord& r, std
   }
   const auto it = index.find(id);
   if (it == index.end()) {
-    error_at(r, field, Diag::MissingReference,
-             std::string(field) + " = " + std::to_string(id) + ": there is no " +
-                 std::string(target_keyword) + "/" + std::to_string(id) + " in the deck");
+    const std::string prefix = std::string(target_keyword) + "/";
+    const auto unread = std::find_if(deck_.unread.begin(), deck_.unread.end(), [&](const Deck::Unread& u) {
+      return u.id == id && u.path.rfind(prefix, 0) == 0;
+    });
+    if (unread != deck_.unread.end()) {
+      const Where w = deck_.where(unread->pos);
+      error_at(r, field, Diag::MissingReference,
+               std::string(field) + " = " + std::to_string(id) + " names " + unread->path + " " +
+                   std::to_string(id) + " (" + std::string(w.file) + ":" + std::to_string(w.line) +
+                   "), a keyword radx does not read (reported there): what uses it cannot be built");
+    } else {
+      error_at(r, field, Diag::MissingReference,
+               std::string(field) + " = " + std::to_string(id) + ": there is no " +
+                   std::string(target_keyword) + "/" + std::to_string(id) + " in the deck");
+    }
     return kNone;
   }
   return it->second;

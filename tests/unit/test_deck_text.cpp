@@ -219,3 +219,24 @@ TEST_CASE(
   // A word outside every Radioss family stays unknown.
   CHECK(all.find("10:1: error: RX301: [/FOOBAR]") != std::string::npos);
 }
+
+TEST_CASE("a reference to a keyword radx does not read names that keyword, not a missing id", "[lexer]") {
+  // /PART 1 takes /PROP/SPR_PRE 11 (line 9), which radx refuses (RX302): the part's RX402 must say that
+  // prop_ID 11 is that keyword, with its line; a reference to an id no keyword has keeps "there is no".
+  TempDir dir;
+  const std::string deck = radx::test::begin_block(2026) + "/NODE\n" + node_line(1, 0, 0, 0) + "\n" +
+                           node_line(2, 1, 0, 0) + "\n/PROP/SPR_PRE/11\npretensioner\n" +
+                           "/PART/1\npart one\n" + Line().put(11, 1, 10).put(1, 11, 20).str() + "\n" +
+                           "/PART/2\npart two\n" + Line().put(12, 1, 10).put(1, 11, 20).str() + "\n" +
+                           "/MAT/LAW1/1\nsteel\n" + Line().put(7.85e-9, 1, 20).str() + "\n" +
+                           Line().put(210000.0, 1, 20).put(0.3, 21, 40).str() + "\n/END\n";
+  const auto path = dir.write("unread_0000.rad", deck);
+  radx::Diagnostics diags;
+  const auto d = radx::read_starter_deck(path, diags);
+  (void)radx::build_model(d, diags);
+  const std::string all = codes(diags);
+  INFO(all);
+  CHECK(all.find("RX302: [/PROP/SPR_PRE id 11]") != std::string::npos);
+  CHECK(all.find("prop_ID = 11 names /PROP/SPR_PRE 11 (" + path + ":9)") != std::string::npos);
+  CHECK(all.find("prop_ID = 12: there is no /PROP/12 in the deck") != std::string::npos);
+}
