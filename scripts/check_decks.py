@@ -946,6 +946,11 @@ class Checker:
             if not tok:
                 vals[name] = None
                 continue
+            # Two values in one number field (shifted columns): Radioss reads the leading one (RX207).
+            if typ in ("I", "R") and len(tok.split()) > 1 and REAL_RE.match(tok.split()[0]):
+                self.warn(file, lineno, "%s: %s = %r holds two values; the leading one is read" % (kw, name, tok))
+                tok = tok.split()[0]
+                cell = tok
             if typ == "I":
                 if not INT_RE.match(tok):
                     self.issue("RX201", file, lineno, "%s: %s = %r is not an integer" % (kw, name, tok))
