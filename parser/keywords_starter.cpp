@@ -268,7 +268,8 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                "6 isotropic with nonlinear unloading, 7 elastic hysteresis, 8 elastic of the total length")
                  .allow({0, 1, 2, 4, 5, 6, 7, 8}),
              I("fct_ID2", 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
-             I("fct_ID3", 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading").refs(IdKind::Other),
+             I("fct_ID3", 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading")
+                 .refs(IdKind::Other),
              R("delta_min", 61, 80, "failure elongation in compression (< 0); 0 = none").dims(dim::length),
              R("delta_max", 81, 100, "failure elongation in tension (> 0); 0 = none").dims(dim::length)}),
         card_v(
@@ -279,7 +280,8 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                "6 isotropic with nonlinear unloading, 7 elastic hysteresis, 8 elastic of the total length")
                  .allow({0, 1, 2, 4, 5, 6, 7, 8}),
              I("fct_ID2", 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
-             I("fct_ID3", 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading").refs(IdKind::Other),
+             I("fct_ID3", 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading")
+                 .refs(IdKind::Other),
              I("fct_ID4", 41, 50, "additional force of the velocity, Hscale g4(v/F)").refs(IdKind::Other),
              R("delta_min", 61, 80, "failure elongation in compression (< 0); 0 = none").dims(dim::length),
              R("delta_max", 81, 100, "failure elongation in tension (> 0); 0 = none").dims(dim::length)}),
@@ -368,7 +370,8 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                   "elongation, 6 isotropic with nonlinear unloading, 7 elastic hysteresis (8 is refused)")
                     .allow({0, 1, 2, 4, 5, 6, 7, 8}),
                 I(n[7][d], 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
-                I(n[8][d], 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading").refs(IdKind::Other),
+                I(n[8][d], 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading")
+                    .refs(IdKind::Other),
                 I(n[9][d], 41, 50, "additional force of the velocity, Hscale g4(v/F)").refs(IdKind::Other),
                 R(n[10][d], 61, 80, "failure elongation (angle) in compression (< 0); 0 = none").dims(dq),
                 R(n[11][d], 81, 100, "failure elongation (angle) in tension (> 0); 0 = none").dims(dq)}));

@@ -221,8 +221,8 @@ struct SpringGroup {
   std::vector<std::int32_t> conn;                          // [2][G] n1 n2
   std::vector<double> l0;                                  // [G] initial length
   std::vector<double> x0;                                  // [3][G] TYPE8: initial x2 - x1 in the frame
-  std::vector<double> dx;           // [6][G] elongation (rotation) of the last cycle (> 0 in tension)
-  std::vector<double> force;        // [6][G] force (moment) of the last cycle (> 0 in tension)
+  std::vector<double> dx;     // [6][G] elongation (rotation) of the last cycle (> 0 in tension)
+  std::vector<double> force;  // [6][G] force (moment) of the last cycle (> 0 in tension)
   // [6][G] each law's SpringLawState (spring_law.hpp): the static force before amplification, the plastic
   // elongations (or extremes of the elongation), the yield force and the plastic travel.
   std::vector<double> f_static, plastic, plastic_c, yield, travel;

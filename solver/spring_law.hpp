@@ -72,11 +72,11 @@ struct SpringLawCurves {
 
 // What one law carries from one cycle to the next (all 0 at the start).
 struct SpringLawState {
-  double f_static = 0;  // f of the last cycle, before the amplification a(v)
-  double plastic = 0;   // H 1: accumulated plastic elongation p; H 2: p_t; H 5: x_t
-  double plastic_c = 0; // H 2: p_c; H 5: x_c
-  double yield = 0;     // H 6: Y
-  double travel = 0;    // H 6: T
+  double f_static = 0;   // f of the last cycle, before the amplification a(v)
+  double plastic = 0;    // H 1: accumulated plastic elongation p; H 2: p_t; H 5: x_t
+  double plastic_c = 0;  // H 2: p_c; H 5: x_c
+  double yield = 0;      // H 6: Y
+  double travel = 0;     // H 6: T
 };
 
 namespace spring_law_detail {
@@ -181,12 +181,8 @@ namespace spring_law_detail {
           f = growing ? std::min(f, unload) : std::max(f, load);
         break;
       }
-      case 8:
-        f = f1(length);
-        break;
-      default:
-        f = f1(x);
-        break;
+      case 8: f = f1(length); break;
+      default: f = f1(x); break;
     }
     s.f_static = f;
     amp = p.a + p.b * std::log(std::max(1.0, std::abs(v / p.d)));

@@ -87,6 +87,9 @@ TEST_CASE("spring law H 1: yield on f1, elastic unloading with K, isotropic yiel
     CHECK(std::abs(n - expect[k]) < 1e-9);
     if (k == 3) CHECK(rel(s.plastic, 4.0 - 130.0 / 100.0) < 1e-12);
   }
+  // Plastic elongation grows in compression too: p = 2.7 + |-270 - (-144)| / K = 3.96, the equivalent
+  // elongation 5.4 less 144 / K.
+  CHECK(rel(s.plastic, 5.4 - 144.0 / 100.0) < 1e-12);
 }
 
 TEST_CASE("spring law H 2: tension and compression yield apart, slack between the plastic elongations",
@@ -96,9 +99,9 @@ TEST_CASE("spring law H 2: tension and compression yield apart, slack between th
   radx::solver::SpringLawCurves c;
   c.load = &f1;
   radx::solver::SpringLawState s;
-  // x = 1: min(K x, f1) = 100 (p_t = 0); x = 3: f1 = 120, p_t = 1.8; x = 2: K (2 - 1.8) = 20; x = 1: slack, 0;
-  // x = -1: max(K x, f1) = -100 (p_c = 0); x = -2: f1 = -110, p_c = -0.9; x = -0.5: slack, 0; x = 2.5:
-  // K (2.5 - 1.8) = 70 (tension's yield unchanged by compression's); x = 3.5: f1 = 125.
+  // x = 1: min(K x, f1) = 100 (p_t = 0); x = 3: f1 = 120, p_t = 1.8; x = 2: K (2 - 1.8) = 20; x = 1: slack,
+  // 0; x = -1: max(K x, f1) = -100 (p_c = 0); x = -2: f1 = -110, p_c = -0.9; x = -0.5: slack, 0; x = 2.5: K
+  // (2.5 - 1.8) = 70 (tension's yield unchanged by compression's); x = 3.5: f1 = 125.
   check_path(p, c, {1, 3, 2, 1, -1, -2, -0.5, 2.5, 3.5}, {100, 120, 20, 0, -100, -110, 0, 70, 125}, s);
   CHECK(rel(s.plastic, 3.5 - 1.25) < 1e-12);
   CHECK(rel(s.plastic_c, -0.9) < 1e-12);
@@ -316,7 +319,8 @@ TEST_CASE("spring starter: the hardening flags and their curves", "[spring][spri
             .find("is H = 2") != std::string::npos);
   // TYPE8: 1 to 7 run; 8 is refused by name (Radioss evaluates it at the initial offset).
   CHECK(diags_of(oscillator(type8_prop(1e-6, 1000, 6, 8, 1), 1e-3, 0, f1, f3), radx::Severity::Error) == "");
-  const auto e = diags_of(oscillator(type8_prop(1e-6, 1000, 0, 8, 8), 1e-3, 0, f1, f3), radx::Severity::Error);
+  const auto e =
+      diags_of(oscillator(type8_prop(1e-6, 1000, 0, 8, 8), 1e-3, 0, f1, f3), radx::Severity::Error);
   CHECK(e.find("RX510") != std::string::npos);
   CHECK(e.find("H2 = 8 (elastic, force of the total length)") != std::string::npos);
 }
