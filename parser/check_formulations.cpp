@@ -19,11 +19,11 @@
 //                   fully integrated (2 x 2 x 2 points, hex8_full.cpp): Isolid 14 (HA8, co-rotational, Icpre
 //                   0 to 3, Inpts 222 only), 17 (H8C, Icpre default 1), 18 (H8D, run as 17 with Icpre chosen
 //                   by the law) and 12 (S8), each with Iframe 1 or 2 (14 and 18 impose 2)
-//   springs:        /PROP/SPRING (TYPE4) with H 0 (elastic: linear K, or the curve fct_ID1) and 7 (elastic
-//                   hysteresis between fct_ID1 and fct_ID3), with the damping C, the amplification A, B, D, E
-//                   fct_ID2 and the force fct_ID4; H 1, 2, 4, 5, 6, 8 are refused by name; /PROP/SPR_GENE
-//                   (TYPE8) the same for each of its six H1..H6; /PROP/SPR_BEAM (TYPE13) is refused as an
-//                   unsupported keyword
+//   springs:        /PROP/SPRING (TYPE4) with H 0 (elastic: linear K, or the curve fct_ID1), 1, 2, 4, 5, 6
+//                   (elasto-plastic), 7 (elastic hysteresis) and 8 (elastic of the total length), with the
+//                   damping C, the amplification A, B, D, E fct_ID2 and the force fct_ID4 (spring_law.hpp);
+//                   /PROP/SPR_GENE (TYPE8) the same for each of its six H1..H6 but H 8, refused by name;
+//                   /PROP/SPR_BEAM (TYPE13) is refused as an unsupported keyword
 //   4-node tetras:  Itetra4 1000 (constant strain, one point; OpenRadioss hm_read_prop14.F also reads 0 as
 //                   /DEF_SOLID's value, 2 and unexpected values as 1000), Ismstr 2 or 4, Iframe 1; Itetra4 1
 //                   and 3 (nodal pressure) and 10 (converted to a 10-node tetra) are refused
