@@ -161,10 +161,9 @@ TEST_CASE("spring law H 6: f1 of the plastic travel, unloading on the slope of f
   CHECK(rel(s.yield, 145.0) < 1e-12);
 }
 
-TEST_CASE("spring law H 2 and H 7 without fct_ID3 agree; H 8 is f1 of the length through the TYPE4 kernel",
-          "[spring][hardening]") {
-  // The starter turns H 7 without fct_ID3 into H 2 (tested below); here the TYPE4 kernel with H 8: f1 of
-  // the current length over Ascale, whatever the elongation.
+TEST_CASE("spring law H 8: f1 of the total length, through the TYPE4 kernel", "[spring][hardening]") {
+  // The TYPE4 kernel with H 8: f1 of the current length over Ascale, whatever the elongation. (H 7 without
+  // fct_ID3 runs as H 2: the starter test below.)
   const auto f1 = curve({0, 10}, {0, 1000});
   radx::model::SpringProperty prop;
   prop.mass = 1.0;
