@@ -53,8 +53,22 @@ void ModelBuilder::read_spring_law(const KeywordRecord& r, model::SpringLaw& s, 
   s.delta_min = dmin == 0 ? -1e30 : dmin;
   s.delta_max = dmax == 0 ? 1e30 : dmax;
 
+  // H 4, 5 and 6 bound or shape the force by fct_ID1 and fct_ID3, H 8 by fct_ID1: Radioss's starter refuses
+  // them without their curves (errors 231 and 1057).
+  const bool needs_unload = s.hardening == 4 || s.hardening == 5 || s.hardening == 6;
+  if ((needs_unload || s.hardening == 8) && !curve)
+    error_at(r, f("fct_ID1"), Diag::RequiredValueMissing,
+             f("H") + " = " + std::to_string(s.hardening) + " needs the force curve " + f("fct_ID1") +
+                 ", which is 0; give a /FUNCT (H = 0 without a curve is the linear spring K dx)");
+  if (needs_unload && r.get_int(f("fct_ID3")) == 0)
+    error_at(r, f("fct_ID3"), Diag::RequiredValueMissing,
+             f("H") + " = " + std::to_string(s.hardening) + " needs the curve " + f("fct_ID3") +
+                 (s.hardening == 4   ? " (the lower yield force of the elongation)"
+                  : s.hardening == 5 ? " (the residual elongation of the largest elongation)"
+                                     : " (the unloading curve, whose slope at the current force unloads)") +
+                 ", which is 0; give a /FUNCT");
   // Without fct_ID1 Radioss runs the linear force K dx whatever H says (redef3.F90 tests the curve first).
-  if (!curve && s.hardening != 0) {
+  if (!curve && s.hardening != 0 && !needs_unload && s.hardening != 8) {
     warning_at(r, f("H"), Diag::InconsistentValues,
                f("H") + " = " + std::to_string(s.hardening) + " acts on the curve " + f("fct_ID1") +
                    ", which the property does not give: the spring is linear, K dx (as Radioss runs it)");

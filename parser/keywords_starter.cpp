@@ -263,19 +263,25 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
         card_v(
             "card 3", kAnyVersion, 110,
             {I("fct_ID1", 1, 10, "force of the elongation f(dx); 0 = linear K").refs(IdKind::Other),
-             I("H", 11, 20, "hardening flag: 0 elastic, 7 elastic hysteresis (1, 2, 4, 5, 6, 8 are refused)")
+             I("H", 11, 20,
+               "hardening flag: 0 elastic, 1 isotropic, 2 uncoupled, 4 kinematic, 5 residual elongation, "
+               "6 isotropic with nonlinear unloading, 7 elastic hysteresis, 8 elastic of the total length")
                  .allow({0, 1, 2, 4, 5, 6, 7, 8}),
              I("fct_ID2", 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
-             I("fct_ID3", 31, 40, "unloading curve of H 4, 5, 7").refs(IdKind::Other),
+             I("fct_ID3", 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading")
+                 .refs(IdKind::Other),
              R("delta_min", 61, 80, "failure elongation in compression (< 0); 0 = none").dims(dim::length),
              R("delta_max", 81, 100, "failure elongation in tension (> 0); 0 = none").dims(dim::length)}),
         card_v(
             "card 3", 120, kLastVersion,
             {I("fct_ID1", 1, 10, "force of the elongation f(dx); 0 = linear K").refs(IdKind::Other),
-             I("H", 11, 20, "hardening flag: 0 elastic, 7 elastic hysteresis (1, 2, 4, 5, 6, 8 are refused)")
+             I("H", 11, 20,
+               "hardening flag: 0 elastic, 1 isotropic, 2 uncoupled, 4 kinematic, 5 residual elongation, "
+               "6 isotropic with nonlinear unloading, 7 elastic hysteresis, 8 elastic of the total length")
                  .allow({0, 1, 2, 4, 5, 6, 7, 8}),
              I("fct_ID2", 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
-             I("fct_ID3", 31, 40, "unloading curve of H 4, 5, 7").refs(IdKind::Other),
+             I("fct_ID3", 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading")
+                 .refs(IdKind::Other),
              I("fct_ID4", 41, 50, "additional force of the velocity, Hscale g4(v/F)").refs(IdKind::Other),
              R("delta_min", 61, 80, "failure elongation in compression (< 0); 0 = none").dims(dim::length),
              R("delta_max", 81, 100, "failure elongation in tension (> 0); 0 = none").dims(dim::length)}),
@@ -360,10 +366,12 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
           card(block2[d],
                {I(n[5][d], 1, 10, "force of the elongation f(dx); 0 = linear K").refs(IdKind::Other),
                 I(n[6][d], 11, 20,
-                  "hardening flag: 0 elastic, 7 elastic hysteresis (1, 2, 4, 5, 6, 8 are refused)")
+                  "hardening flag: 0 elastic, 1 isotropic, 2 uncoupled, 4 kinematic, 5 residual "
+                  "elongation, 6 isotropic with nonlinear unloading, 7 elastic hysteresis (8 is refused)")
                     .allow({0, 1, 2, 4, 5, 6, 7, 8}),
                 I(n[7][d], 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
-                I(n[8][d], 31, 40, "unloading curve of H 4, 5, 7").refs(IdKind::Other),
+                I(n[8][d], 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading")
+                    .refs(IdKind::Other),
                 I(n[9][d], 41, 50, "additional force of the velocity, Hscale g4(v/F)").refs(IdKind::Other),
                 R(n[10][d], 61, 80, "failure elongation (angle) in compression (< 0); 0 = none").dims(dq),
                 R(n[11][d], 81, 100, "failure elongation (angle) in tension (> 0); 0 = none").dims(dq)}));

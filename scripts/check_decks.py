@@ -29,6 +29,9 @@ import re
 import sys
 
 SPRING_PROPS = ("/PROP/SPRING", "/PROP/TYPE4", "/PROP/SPR_GENE", "/PROP/TYPE8")
+# The spring hardening flags radx runs (check_formulations.cpp spring_h_runs)
+SPRING_H_TYPE4 = (0, 1, 2, 4, 5, 6, 7, 8)
+SPRING_H_TYPE8 = (0, 1, 2, 4, 5, 6, 7)
 RULER_RE = re.compile(r"^#-+1-+\|")
 REAL_RE = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([EeDd][+-]?\d+|[+-]\d+)?$")
 INT_RE = re.compile(r"^[+-]?\d+$")
@@ -1487,6 +1490,16 @@ def semantic(ck, m):
                 p = pos(o, "N")
                 I("RX501", p[0], p[1], "N = %d outside 0..10" % nn)
 
+    # H 4, 5, 6 need fct_ID1 and fct_ID3, H 8 fct_ID1 (build_springs.cpp read_spring_law)
+    def spring_h_curves(o, d):
+        h = val(o, "H" + d, 0)
+        if h in (4, 5, 6, 8) and val(o, "fct_ID1" + d, 0) == 0:
+            p = pos(o, "fct_ID1" + d)
+            I("RX502", p[0], p[1], "spring property %d: H%s = %d needs fct_ID1%s" % (o["id"], d, h, d))
+        if h in (4, 5, 6) and val(o, "fct_ID3" + d, 0) == 0:
+            p = pos(o, "fct_ID3" + d)
+            I("RX502", p[0], p[1], "spring property %d: H%s = %d needs fct_ID3%s" % (o["id"], d, h, d))
+
     # springs (build_springs.cpp): mass > 0, K >= 0 (> 0 without damping or with a curve), C >= 0, the curves
     # exist, failure elongations of the right sign
     for o in props.values():
@@ -1513,6 +1526,7 @@ def semantic(ck, m):
             if f != 0 and f not in functs:
                 p = pos(o, name)
                 I("RX402", p[0], p[1], "spring property %d: function %d does not exist" % (o["id"], f))
+        spring_h_curves(o, "")
 
     # TYPE8 springs (build_springs.cpp): mass > 0, inertia > 0 when a rotation has stiffness or damping, per
     # degree of freedom K >= 0 (> 0 with a curve), C >= 0, the curves exist, failure limits of the right sign;
@@ -1546,6 +1560,7 @@ def semantic(ck, m):
                 if f != 0 and f not in functs:
                     p = pos(o, name + d)
                     I("RX402", p[0], p[1], "spring property %d: function %d does not exist" % (o["id"], f))
+            spring_h_curves(o, d)
         for name in ("Ifail2", "Iequil", "Fsmooth", "sens_ID"):
             if val(o, name, 0) != 0:
                 p = pos(o, name)
@@ -1579,15 +1594,15 @@ def semantic(ck, m):
         o = props[prop_id]
         bad = []
         if o["path"] in ("/PROP/SPRING", "/PROP/TYPE4"):
-            # the elastic spring and the elastic hysteresis run (H 7 without fct_ID3 is H 2); without fct_ID1 H
-            # does not act (linear)
+            # H 0 1 2 4 5 6 7 8 run (H 7 without fct_ID3 is H 2); without fct_ID1 H 1 2 7 do not act (linear)
             h = val(o, "H", 0)
-            if val(o, "fct_ID1", 0) != 0 and (h not in (0, 7) or (h == 7 and val(o, "fct_ID3", 0) == 0)):
+            if val(o, "fct_ID1", 0) != 0 and h not in SPRING_H_TYPE4:
                 bad.append("H")
         elif o["path"] in ("/PROP/SPR_GENE", "/PROP/TYPE8"):
+            # as TYPE4 but H 8, refused with or without a curve (the starter keeps it)
             for d in "123456":
                 h = val(o, "H" + d, 0)
-                if val(o, "fct_ID1" + d, 0) != 0 and (h not in (0, 7) or (h == 7 and val(o, "fct_ID3" + d, 0) == 0)):
+                if (val(o, "fct_ID1" + d, 0) != 0 and h not in SPRING_H_TYPE8) or h == 8:
                     bad.append("H" + d)
         elif o["path"] in ("/PROP/SHELL", "/PROP/TYPE1"):
             # Ishell 1, 12 (QBAT) and 24 (QEPH; 22 and 23 run as 24, elements.md 1.1)

@@ -489,12 +489,12 @@ def _():
     return d, "spring 31 joins node 3 to node 999, which does not exist", [("RX406", "SPRING_31")]
 
 
-@fault("spring_hardening_refused")
+@fault("spring_hardening_needs_curve")
 def _():
-    d = with_spring(base(), fct_ID1=7, H=4, fct_ID3=7)
+    d = with_spring(base(), fct_ID1=7, H=4)
     d.insert_before("AFTER_MATS", funct_rows(7, [(-1.0, -1000.0), (0.0, 0.0), (1.0, 1000.0)], "Spring force", "F7"))
-    return d, "/PROP/SPRING/4 asks for H = 4 (kinematic hardening), which radx does not implement: refused by name", \
-        [("RX510", "PSPR.H")]
+    return d, "/PROP/SPRING/4 asks for H = 4 (kinematic hardening) without fct_ID3, its lower yield curve", \
+        [("RX502", "PSPR.fct_ID3")]
 
 
 SPR8 = dict(M=1e-6, Inertia=0.0, skew_ID=0, sens_ID=0, Isflag=0, Ifail=0, Ifail2=0, Iequil=0, Fsmooth=0, Fcut=0.0,
@@ -529,10 +529,10 @@ def _():
 
 @fault("spring8_hardening_refused")
 def _():
-    d = with_spring8(base(), fct_ID12=7, H2=6, fct_ID32=7, K2=1000.0)
+    d = with_spring8(base(), fct_ID12=7, H2=8, K2=1000.0)
     d.insert_before("AFTER_MATS", funct_rows(7, [(-1.0, -1000.0), (0.0, 0.0), (1.0, 1000.0)], "Spring force", "F7"))
-    return d, "/PROP/SPR_GENE/4 asks for H2 = 6 (hardening of the yield curve) on its Y law, which radx does not " \
-        "implement: refused by name", [("RX510", "PSPR8.H2")]
+    return d, "/PROP/SPR_GENE/4 asks for H2 = 8 (force of the total length) on its Y law, which radx does not " \
+        "implement for TYPE8: refused by name", [("RX510", "PSPR8.H2")]
 
 
 @fault("spring8_iequil_refused")

@@ -208,7 +208,7 @@ struct TetraGroup {
 };
 
 // Springs (/SPRING): one part, so one property, per group. TYPE4 (/PROP/SPRING, spring_type4.cpp): one axial
-// law, state in the first G slots of dx, force, f_static and forces [2][3][G]. TYPE8 (/PROP/SPR_GENE,
+// law, state in the first G slots of dx, force, the law state and forces [2][3][G]. TYPE8 (/PROP/SPR_GENE,
 // spring_type8.cpp): six laws X Y Z RX RY RZ, state [6][G] and forces and moments [2][6][G]. The curves point
 // into the model's functions (the engine keeps the model alive).
 struct SpringGroup {
@@ -221,15 +221,28 @@ struct SpringGroup {
   std::vector<std::int32_t> conn;                          // [2][G] n1 n2
   std::vector<double> l0;                                  // [G] initial length
   std::vector<double> x0;                                  // [3][G] TYPE8: initial x2 - x1 in the frame
-  std::vector<double> dx;           // [6][G] elongation (rotation) of the last cycle (> 0 in tension)
-  std::vector<double> force;        // [6][G] force (moment) of the last cycle (> 0 in tension)
-  std::vector<double> f_static;     // [6][G] H = 7: the force on the hysteresis loop, before amplification
+  std::vector<double> dx;     // [6][G] elongation (rotation) of the last cycle (> 0 in tension)
+  std::vector<double> force;  // [6][G] force (moment) of the last cycle (> 0 in tension)
+  // [6][G] each law's SpringLawState (spring_law.hpp): the static force before amplification, the plastic
+  // elongations (or extremes of the elongation), the yield force and the plastic travel.
+  std::vector<double> f_static, plastic, plastic_c, yield, travel;
   std::vector<double> e_int;        // [G] accumulated work of the spring forces (elastic and damping)
   std::vector<double> off;          // [G] 1 alive, 0 broken (delta_min, delta_max)
   std::vector<double> dt;           // [G] stable step, before the /DT scale
   std::vector<double> k_nodal;      // [G] nodal stiffness contribution M / dt^2 (for nodal steps)
   std::vector<double> nodal_force;  // [2][3][G] (TYPE4) or [2][6][G] (TYPE8) ADDED to n1 and n2, global axes
   [[nodiscard]] int node_stride() const { return props.type == 4 ? 3 : 6; }
+  // The law state of slot j = dof * G + i, gathered from and scattered to the arrays above.
+  [[nodiscard]] SpringLawState law_state(std::size_t j) const {
+    return {f_static[j], plastic[j], plastic_c[j], yield[j], travel[j]};
+  }
+  void store(std::size_t j, const SpringLawState& s) {
+    f_static[j] = s.f_static;
+    plastic[j] = s.plastic;
+    plastic_c[j] = s.plastic_c;
+    yield[j] = s.yield;
+    travel[j] = s.travel;
+  }
   void allocate(int n);
 };
 

@@ -1,6 +1,7 @@
 // TYPE8 general spring (/SPRING with /PROP/SPR_GENE): six uncoupled springs between two nodes, along the
 // three axes of a fixed frame (global, or a /SKEW/FIX) for the translations and about them for the rotations.
-// Each follows the scalar spring law of spring_law.hpp (linear or by curve, H 0 or 7, damping).
+// Each follows the scalar spring law of spring_law.hpp (linear or by curve, H 0 1 2 4 5 6 7, damping; H 8,
+// the force of the total length, is refused by the starter for TYPE8).
 //
 // Sources, read for the behaviour (OpenRadioss): engine/source/elements/spring/r2def3.F (elongations,
 // failure), redef3.F90 (the law), r2len3.F (time step), r2cum3.F (nodal forces); starter hm_read_prop08.F
@@ -76,7 +77,9 @@ void spring_type8_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo
       const auto& law = p.law(static_cast<int>(d));
       const double q_old = g.dx[d * G + i];
       const double v = (q[d] - q_old) * inv_dt;
-      n[d] = spring_law_force(law, g.curves[d], q[d], q_old, v, g.f_static[d * G + i]);
+      auto st = g.law_state(d * G + i);
+      n[d] = spring_law_force(law, g.curves[d], q[d], q_old, v, 0.0, st);
+      g.store(d * G + i, st);
       const double lim = q[d] > 0 ? q[d] / (law.delta_max * law.ascale) : q[d] / (law.delta_min * law.ascale);
       crit = p.ifail == 0 ? std::max(crit, lim) : crit + lim * lim;
     }

@@ -177,10 +177,10 @@ struct SpringLaw {
   double stiffness = 0;  // K: the linear stiffness, and the stiffness of the time step
   double damping = 0;    // C
   double a = 1, b = 0, d = 1, e = 0;
-  int hardening = 0;  // H: 0 elastic, 7 elastic hysteresis (check_formulations.cpp refuses the others)
+  int hardening = 0;  // H: 0 1 2 4 5 6 7 8 (spring_law.hpp; check_formulations.cpp refuses 8 on TYPE8)
   std::int32_t f_load = kNone;    // fct_ID1: force of the elongation (dense index into Model::functions)
   std::int32_t f_damp = kNone;    // fct_ID2: the amplification g2 of the velocity
-  std::int32_t f_unload = kNone;  // fct_ID3: unloading curve of H 7 (also of H 4, 5, refused)
+  std::int32_t f_unload = kNone;  // fct_ID3: H 4 lower yield, H 5 residual, H 6 and 7 unloading
   std::int32_t f_damp4 = kNone;   // fct_ID4: the additional force g4 of the velocity
   double fscale = 1;              // F: velocity scale of g2 and g4
   double ascale = 1;              // Ascale: abscissa scale of fct_ID1
