@@ -211,6 +211,9 @@ TEST_CASE("TYPE13 initial frame: n3, else the skew's Y axis, else its X axis", "
   // n3 on the axis: global Y.
   y = radx::solver::spring_type13_initial_y(V{2, 0, 0}, V{4, 0, 0}, global);
   CHECK(std::abs(y[1] - 1) < 1e-15);
+  // A spring along Z without n3: global Y first, although global X would do as well.
+  y = radx::solver::spring_type13_initial_y(V{0, 0, 2}, {}, global);
+  CHECK(std::abs(y[1] - 1) < 1e-15);
   // A spring along Y without n3: global X.
   y = radx::solver::spring_type13_initial_y(V{0, 2, 0}, {}, global);
   CHECK(std::abs(y[0] - 1) < 1e-15);
