@@ -22,8 +22,8 @@
 //   springs:        /PROP/SPRING (TYPE4) with H 0 (elastic: linear K, or the curve fct_ID1), 1, 2, 4, 5, 6
 //                   (elasto-plastic), 7 (elastic hysteresis) and 8 (elastic of the total length), with the
 //                   damping C, the amplification A, B, D, E fct_ID2 and the force fct_ID4 (spring_law.hpp);
-//                   /PROP/SPR_GENE (TYPE8) the same for each of its six H1..H6 but H 8, refused by name;
-//                   /PROP/SPR_BEAM (TYPE13) is refused as an unsupported keyword
+//                   /PROP/SPR_GENE (TYPE8) and /PROP/SPR_BEAM (TYPE13) the same for each of their six
+//                   H1..H6 but H 8, refused by name
 //   4-node tetras:  Itetra4 1000 (constant strain, one point; OpenRadioss hm_read_prop14.F also reads 0 as
 //                   /DEF_SOLID's value, 2 and unexpected values as 1000), Ismstr 2 or 4, Iframe 1; Itetra4 1
 //                   and 3 (nodal pressure) and 10 (converted to a 10-node tetra) are refused
@@ -147,7 +147,8 @@ void ModelBuilder::check_formulations() {
 
   for (const auto& rec : deck_.records) {
     const auto path = rec.decl->path;
-    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" && path != "/PROP/SPR_GENE")
+    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" &&
+        path != "/PROP/SPR_GENE" && path != "/PROP/SPR_BEAM")
       continue;
     const auto it = prop_ids_.find(rec.id);
     if (it == prop_ids_.end()) continue;
@@ -190,12 +191,13 @@ void ModelBuilder::check_formulations() {
            spring_h_name(0), "springs (TYPE4)");
       continue;
     }
-    if (path == "/PROP/SPR_GENE") {
+    if (path == "/PROP/SPR_GENE" || path == "/PROP/SPR_BEAM") {
       static constexpr std::array<std::string_view, 6> h = {"H1", "H2", "H3", "H4", "H5", "H6"};
       for (int d = 0; d < 6; ++d) {
         auto& s = prop.spring.law(d);
         flag(h[static_cast<std::size_t>(d)], s.hardening, spring_h_runs(s.hardening, true), 0,
-             spring_h_name(s.hardening), spring_h_name(0), "springs (TYPE8)");
+             spring_h_name(s.hardening), spring_h_name(0),
+             prop.spring.type == 8 ? "springs (TYPE8)" : "springs (TYPE13)");
       }
       continue;
     }

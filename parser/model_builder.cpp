@@ -575,12 +575,13 @@ void ModelBuilder::build_properties() {
   std::unordered_map<std::int64_t, SourcePos> first;
   for (const auto& r : deck_.records) {
     const auto path = r.decl->path;
-    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" && path != "/PROP/SPR_GENE")
+    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" &&
+        path != "/PROP/SPR_GENE" && path != "/PROP/SPR_BEAM")
       continue;
     model::Property p;
     p.id = r.id;
     p.title = r.title;
-    if (path == "/PROP/SPRING" || path == "/PROP/SPR_GENE") {
+    if (path == "/PROP/SPRING" || path == "/PROP/SPR_GENE" || path == "/PROP/SPR_BEAM") {
       read_spring_property(r, p);
     } else if (path == "/PROP/SHELL") {
       p.kind = model::PropertyKind::Shell;

@@ -28,8 +28,9 @@ import os
 import re
 import sys
 
-SPRING_PROPS = ("/PROP/SPRING", "/PROP/TYPE4", "/PROP/SPR_GENE", "/PROP/TYPE8")
-# The spring hardening flags radx runs (check_formulations.cpp spring_h_runs)
+SPRING_PROPS = ("/PROP/SPRING", "/PROP/TYPE4", "/PROP/SPR_GENE", "/PROP/TYPE8", "/PROP/SPR_BEAM", "/PROP/TYPE13")
+SIX_LAW_PROPS = ("/PROP/SPR_GENE", "/PROP/TYPE8", "/PROP/SPR_BEAM", "/PROP/TYPE13")
+# The spring hardening flags radx runs (check_formulations.cpp spring_h_runs); TYPE13 as TYPE8
 SPRING_H_TYPE4 = (0, 1, 2, 4, 5, 6, 7, 8)
 SPRING_H_TYPE8 = (0, 1, 2, 4, 5, 6, 7)
 RULER_RE = re.compile(r"^#-+1-+\|")
@@ -153,6 +154,22 @@ def prop_spr_gene(v):
                            F("delta_min" + d, "R", 61, 80), F("delta_max" + d, "R", 81, 100)]))
         cards.append(card(reals("F" + d, "E" + d, "Ascale" + d, "Hscale" + d)))
     cards.append(card([F("Fsmooth", "I", 1, 10), F("Fcut", "R", 11, 30)]))
+    return cards
+
+
+def prop_spr_beam(v):
+    """/PROP/SPR_BEAM (TYPE13), the 120 layout on (prop_p13_spr_beam.cfg; Asrate and Israte from 2018): the six
+    blocks of /PROP/SPR_GENE after a card with Ileng and Ifail2, then the reference velocities and six cards of
+    failure parameters."""
+    c1 = [F("M", "R", 1, 20), F("Inertia", "R", 21, 40), F("skew_ID", "I", 41, 50), F("sens_ID", "I", 51, 60),
+          F("Isflag", "I", 61, 70), F("Ifail", "I", 71, 80), F("Ileng", "I", 81, 90), F("Ifail2", "I", 91, 100)]
+    cards = [card(c1)] + prop_spr_gene(v)[1:-1]
+    cv = [F("Vo", "R", 1, 20), F("Wo", "R", 21, 40)]
+    if v >= 2018:
+        cv += [F("Asrate", "R", 41, 60), F("Israte", "I", 61, 70)]
+    cards.append(card(cv))
+    for d in "123456":
+        cards.append(card(reals("c" + d, "n" + d, "alpha" + d, "beta" + d)))
     return cards
 
 
@@ -618,6 +635,8 @@ STARTER = {
     "/PROP/TYPE4": ("id", True, prop_spring, None, None),
     "/PROP/SPR_GENE": ("id", True, prop_spr_gene, None, None),
     "/PROP/TYPE8": ("id", True, prop_spr_gene, None, None),
+    "/PROP/SPR_BEAM": ("id", True, prop_spr_beam, None, None),
+    "/PROP/TYPE13": ("id", True, prop_spr_beam, None, None),
     "/SH3N": ("part", False, lambda v: [], "records", SH3N_REC),
     "/PART": ("id", True, part, None, None),
     "/PROP/SHELL": ("id", True, prop_shell, None, None),
@@ -1204,7 +1223,7 @@ class Checker:
             else:
                 self.open_subs.pop()
             return
-        if path in ("/PROP/SPR_GENE", "/PROP/TYPE8") and v < 120:
+        if path in SIX_LAW_PROPS and v < 120:
             self.issue("RX307", file, lineno, "%s is read from the 120 layout on, not in %d" % (path, v))
             return
         if path == "/GRNOD/GEN_INCR" and v < 2017:
@@ -1309,7 +1328,7 @@ def semantic(ck, m):
 
     parts = by_id(("/PART",), "part")
     props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14", "/PROP/SPRING", "/PROP/TYPE4",
-                   "/PROP/SPR_GENE", "/PROP/TYPE8"),
+                   "/PROP/SPR_GENE", "/PROP/TYPE8", "/PROP/SPR_BEAM", "/PROP/TYPE13"),
                   "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02",
                   "/MAT/LAW36", "/MAT/PLAS_TAB", "/MAT/LAW27", "/MAT/PLAS_BRIT", "/MAT/LAW0", "/MAT/VOID",
@@ -1528,16 +1547,18 @@ def semantic(ck, m):
                 I("RX402", p[0], p[1], "spring property %d: function %d does not exist" % (o["id"], f))
         spring_h_curves(o, "")
 
-    # TYPE8 springs (build_springs.cpp): mass > 0, inertia > 0 when a rotation has stiffness or damping, per
-    # degree of freedom K >= 0 (> 0 with a curve), C >= 0, the curves exist, failure limits of the right sign;
-    # the skew exists and is fixed (a moving one is RX510); Ifail2, Iequil, Fsmooth, sens_ID not implemented
+    # TYPE8 and TYPE13 springs (build_springs.cpp): mass > 0, inertia > 0 when a rotation (for TYPE13 also a
+    # shear) has stiffness or damping, per degree of freedom K >= 0 (> 0 with a curve), C >= 0, the curves exist,
+    # failure limits of the right sign; the skew exists (TYPE8: and is fixed, a moving one is RX510); TYPE8's
+    # Ifail2, Iequil, Fsmooth, TYPE13's Ileng, Ifail2, Israte, and sens_ID are not implemented
     for o in props.values():
-        if o["path"] not in ("/PROP/SPR_GENE", "/PROP/TYPE8"):
+        if o["path"] not in SIX_LAW_PROPS:
             continue
+        type13 = o["path"] in ("/PROP/SPR_BEAM", "/PROP/TYPE13")
         if not val(o, "M", 0.0) > 1e-15:
             p = pos(o, "M")
             I("RX501", p[0], p[1], "spring mass %g is not positive" % val(o, "M", 0.0))
-        rot = any(val(o, "K" + d, 0.0) > 0 or val(o, "C" + d, 0.0) > 0 for d in "456")
+        rot = any(val(o, "K" + d, 0.0) > 0 or val(o, "C" + d, 0.0) > 0 for d in ("23456" if type13 else "456"))
         if val(o, "Inertia", 0.0) < 0 or (rot and not val(o, "Inertia", 0.0) > 1e-15):
             p = pos(o, "Inertia")
             I("RX501", p[0], p[1], "spring inertia %g is not positive" % val(o, "Inertia", 0.0))
@@ -1561,7 +1582,7 @@ def semantic(ck, m):
                     p = pos(o, name + d)
                     I("RX402", p[0], p[1], "spring property %d: function %d does not exist" % (o["id"], f))
             spring_h_curves(o, d)
-        for name in ("Ifail2", "Iequil", "Fsmooth", "sens_ID"):
+        for name in (("Ileng", "Ifail2", "Israte", "sens_ID") if type13 else ("Ifail2", "Iequil", "Fsmooth", "sens_ID")):
             if val(o, name, 0) != 0:
                 p = pos(o, name)
                 I("RX510", p[0], p[1], "%s %d: %s changes the physics" % (o["path"], o["id"], name))
@@ -1571,7 +1592,7 @@ def semantic(ck, m):
             p = pos(o, "skew_ID")
             if skew is None:
                 I("RX402", p[0], p[1], "spring property %d: skew %d does not exist" % (o["id"], sk))
-            elif skew["path"] == "/SKEW/MOV":
+            elif skew["path"] == "/SKEW/MOV" and not type13:
                 I("RX510", p[0], p[1], "spring property %d: moving skew %d" % (o["id"], sk))
 
     # formulations (check_formulations.cpp): a flag of a property used by elements must be one radx implements,
@@ -1598,7 +1619,7 @@ def semantic(ck, m):
             h = val(o, "H", 0)
             if val(o, "fct_ID1", 0) != 0 and h not in SPRING_H_TYPE4:
                 bad.append("H")
-        elif o["path"] in ("/PROP/SPR_GENE", "/PROP/TYPE8"):
+        elif o["path"] in SIX_LAW_PROPS:
             # as TYPE4 but H 8, refused with or without a curve (the starter keeps it)
             for d in "123456":
                 h = val(o, "H" + d, 0)

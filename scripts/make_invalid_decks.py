@@ -542,6 +542,35 @@ def _():
         "implement", [("RX510", "PSPR8.Iequil")]
 
 
+SPR13 = dict({k: v for k, v in SPR8.items() if k not in ("Iequil", "Fsmooth", "Fcut")}, Ileng=0, Vo=0.0, Wo=0.0,
+             Asrate=0.0, Israte=0,
+             **{k + d: 0.0 for d in "123456" for k in ("c", "n", "alpha", "beta")})
+
+
+def with_spring13(d, **prop):
+    """d with /SPRING/4 (spring 31 between the plate's nodes 3 and 6, tag SPRING_31) in part 4 (no material) of
+    /PROP/SPR_BEAM/4 (tag PSPR13: M 1e-6, K1 1000, the given values on top)."""
+    d.insert_before("AFTER_PARTS", block("SPRING", "/SPRING", 4, rows=[(31, 3, 6, 0)], row_tags=["SPRING_31"]) +
+                    part(4, "Spring", 4, 0))
+    d.insert_before("AFTER_MATS", block("PSPR13", "/PROP/SPR_BEAM", 4, "Beam spring",
+                                        **dict(SPR13, K1=1000.0, **prop)))
+    return d
+
+
+@fault("spring13_shear_without_inertia")
+def _():
+    d = with_spring13(base(), K2=50.0)
+    return d, "/PROP/SPR_BEAM/4 gives the Y shear a stiffness K2 = 50 but no Inertia: its end moments would turn " \
+        "nodes without inertia", [("RX501", "PSPR13.Inertia")]
+
+
+@fault("spring13_ileng_refused")
+def _():
+    d = with_spring13(base(), Ileng=1)
+    return d, "/PROP/SPR_BEAM/4 asks for Ileng = 1 (values per unit length), which radx does not implement for " \
+        "TYPE13", [("RX510", "PSPR13.Ileng")]
+
+
 @fault("tetra_zero_volume")
 def _():
     d = with_tetra(base(), row=(21, 11, 12, 13, 14))

@@ -1506,6 +1506,57 @@ the same moduli as with law 42, while one brick alone runs stably; the deck keep
     return run, d, e, readme, ref
 
 
+SPRB = dict(L=100.0, M=1e-5, I=1e-2, KX=1e4, KY=1000.0, KT=2e5, M_ADD=1e-3, VY=100.0, WX=3.0, T_STOP=0.02)
+
+
+def spring_beam():
+    """A heavy node on a TYPE13 beam-type spring: K_y = 12 EI / L^3 and K_rz = EI / L make it a cantilever."""
+    p = SPRB
+    run = "SPRING_BEAM"
+    L = p["L"]
+    ei = p["KY"] * L ** 3 / 12.0
+    d = starter(run, "Heavy node on a TYPE13 beam-type spring", [
+        "Sample deck: the TYPE13 beam-type spring (/PROP/SPR_BEAM). Units Mg, mm, s (N, mJ).",
+        "Node 1 clamped; node 2 at x = %g mm carries %g Mg." % (L, p["M_ADD"]),
+        "Node 2 starts at %g mm/s along Y and %g rad/s about X." % (p["VY"], p["WX"]),
+        "K_y = 12 EI / L^3 and K_rz = EI / L (EI = %s N mm2): the spring bends as a cantilever beam." % g(ei),
+        "n3 (node 3) orients the frame: Y towards node 3."])
+    d.rows("/NODE", [(1, 0.0, 0.0, 0.0), (2, L, 0.0, 0.0), (3, 0.0, L, 0.0)])
+    d.ruler()
+    d.card("/PART", 1, "Beam spring", prop_ID=1, mat_ID=0, subset_ID=0, Thick=0.0)
+    d.rows("/SPRING", [(1, 1, 2, 3)], ident=1)
+    d.comment("Tension K1, shear K2 K3, torsion K4, bending K5 K6 (linear)")
+    laws = dict(K1=p["KX"], K2=p["KY"], K3=p["KY"], K4=p["KT"], K5=ei / L, K6=ei / L)
+    d.card("/PROP/SPR_BEAM", 1, "Beam spring", M=p["M"], Inertia=p["I"], skew_ID=0, sens_ID=0, Isflag=0,
+           Ifail=0, Ileng=0, Ifail2=0, **laws)
+    d.ruler()
+    d.card("/GRNOD/NODE", 1, "Clamped", ids=[1])
+    d.card("/BCS", 1, "Clamped", Tra_rot=rc.bcs_code("111", "111"), skew_ID=0, grnod_ID=1)
+    d.card("/GRNOD/NODE", 2, "Moving", ids=[2])
+    d.card("/ADMAS/0", 1, "Tip mass", MASS=p["M_ADD"], grnod_ID=2)
+    d.card("/INIVEL/TRA", 1, "Swing along Y", Vx=0.0, Vy=p["VY"], Vz=0.0, grnod_ID=2)
+    d.card("/INIVEL/ROT", 2, "Twist about X", Vx=p["WX"], Vy=0.0, Vz=0.0, grnod_ID=2)
+    d.ruler()
+    d.card("/TH/NODE", 1, "Tip", variables=["DEF"], rows=[(2, 0, "tip")])
+    d.card("/TH/SPRING", 1, "Beam spring", variables=["DEF", "F", "M", "L", "R"], rows=[(1,)])
+    d.ruler()
+    d.raw("/END")
+    e = engine(run, p["T_STOP"], 1e-4, 2e-3, [], ["VEL", "DISP"],
+               ["Run to %g s: about one and a half periods of the tip's swing." % p["T_STOP"]])
+    return run, d, e
+
+
+def spring_beam_deck():
+    run, d, e = spring_beam()
+    ref = ref_text(run, [
+        ("cycles", "0.01", "2", "1 % of the cycles: the spring's step"),
+        ("energy.error_percent", "0", "0.5", "balance within half a point of the recorded value"),
+        ("energy.internal", "0.02", "0.03", "2 % of the spring energy at the end"),
+        ("energy.kinetic_translational", "0.02", "0.03", "2 % of the tip's kinetic energy at the end"),
+    ])
+    return run, d, e, None, ref
+
+
 def write_deck(out, folder, run, d, e, readme=None, ref=None):
     path = os.path.join(out, folder)
     d.write(os.path.join(path, run + "_0000.rad"), report=True)
@@ -1536,7 +1587,7 @@ DECKS = {"taylor_bar": taylor_bar_deck, "bar_rwall": bar_rwall_deck, "imposed_lo
          "mixed_idel": mixed_idel_deck, "old_layout_2019": old_layout_2019_deck,
          "perforation_tab": perforation_tab_deck, "brittle_strip": brittle_strip_deck,
          "ringing_strip": ringing_strip_deck, "fail_tab_strip": fail_tab_strip_deck,
-         "rubber_block": rubber_block_deck}
+         "rubber_block": rubber_block_deck, "spring_beam": spring_beam_deck}
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv[1:]))

@@ -224,6 +224,15 @@ LAYOUTS = {
                  r("delta_min" + d), r("delta_max" + d)),
             Card(r("F" + d), r("E" + d), r("Ascale" + d), r("Hscale" + d)))],
         Card(i("Fsmooth"), r("Fcut"))),
+    "/PROP/SPR_BEAM": Layout(
+        Card(r("M"), r("Inertia"), i("skew_ID"), i("sens_ID"), i("Isflag"), i("Ifail"), i("Ileng"), i("Ifail2")),
+        *[c for d in "123456" for c in (
+            Card(r("K" + d), r("C" + d), r("A" + d), r("B" + d), r("D" + d)),
+            Card(i("fct_ID1" + d), i("H" + d), i("fct_ID2" + d), i("fct_ID3" + d), i("fct_ID4" + d), gap(10),
+                 r("delta_min" + d), r("delta_max" + d)),
+            Card(r("F" + d), r("E" + d), r("Ascale" + d), r("Hscale" + d)))],
+        Card(r("Vo"), r("Wo"), r("Asrate", since=2018), i("Israte", since=2018)),
+        *[Card(r("c" + d), r("n" + d), r("alpha" + d), r("beta" + d)) for d in "123456"]),
     "/MAT/LAW1": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
     "/MAT/VOID": Layout(Card(r("RHO_I"), r("E"), r("nu"))),
     "/MAT/RIGID": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
@@ -421,6 +430,7 @@ LAYOUTS = {
     "/TH/SHEL": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"), i("skew_ID"))),
     "/TH/SH3N": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"), i("skew_ID"))),
     "/TH/BRIC": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"))),
+    "/TH/SPRING": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"))),
     "/TH/PART": Layout(variables=TH_VARIABLES, ids=ID10("part_ID")),
     "/TH/INTER": Layout(variables=TH_VARIABLES, ids=ID10("inter_ID")),
     "/TH/RWALL": Layout(variables=TH_VARIABLES, ids=ID10("rwall_ID")),

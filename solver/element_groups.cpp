@@ -87,6 +87,7 @@ void SpringGroup::allocate(int n) {
   for (auto* v : {&l0, &e_int, &dt, &k_nodal}) v->assign(G, 0.0);
   for (auto* v : {&dx, &force, &f_static, &plastic, &plastic_c, &yield, &travel}) v->assign(6 * G, 0.0);
   x0.assign(3 * G, 0.0);
+  ey.assign(3 * G, 0.0);
   off.assign(G, 1.0);
   nodal_force.assign(2 * 6 * G, 0.0);
 }

@@ -190,15 +190,17 @@ struct SpringLaw {
 
 // /PROP/SPRING (TYPE4): one law along the spring (`x`). /PROP/SPR_GENE (TYPE8): six uncoupled laws
 // x y z rx ry rz along the axes of a fixed frame (global, or a /SKEW/FIX), with the rotational inertia
-// `inertia` and the failure criterion `ifail`.
+// `inertia` and the failure criterion `ifail`. /PROP/SPR_BEAM (TYPE13): the same six laws in a frame that
+// follows the spring, the shear forces balanced by end moments (spring_type13.cpp).
 struct SpringProperty {
-  int type = 4;               // Radioss property type: 4 (/PROP/SPRING) or 8 (/PROP/SPR_GENE)
-  double mass = 0;            // M (per unit length when Ileng = 1), half to each node
-  double inertia = 0;         // TYPE8: rotational inertia, half to each node
-  int ileng = 0;              // TYPE4: 1: M, K, C and the curves per unit length
+  int type = 4;        // Radioss property type: 4 (/PROP/SPRING), 8 (/PROP/SPR_GENE), 13 (/PROP/SPR_BEAM)
+  double mass = 0;     // M (per unit length when Ileng = 1), half to each node
+  double inertia = 0;  // TYPE8, TYPE13: rotational inertia, half to each node
+  int ileng = 0;       // TYPE4: 1: M, K, C and the curves per unit length
   std::int64_t sensor = 0;    // sens_ID (refused when not 0)
-  std::int32_t skew = kNone;  // TYPE8: frame of the six laws (dense index into Model::skews); kNone global
-  int ifail = 0;              // TYPE8: 0 a degree of freedom breaks the spring alone, 1 sum of squares
+  std::int32_t skew = kNone;  // TYPE8: frame of the six laws; TYPE13: orients the initial frame without n3
+                              // (dense index into Model::skews); kNone global
+  int ifail = 0;  // TYPE8, TYPE13: 0 a degree of freedom breaks the spring alone, 1 sum of squares
   SpringLaw x, y, z, rx, ry, rz;  // TYPE4 uses x only
   [[nodiscard]] const SpringLaw& law(int dof) const {
     const SpringLaw* l[6] = {&x, &y, &z, &rx, &ry, &rz};
