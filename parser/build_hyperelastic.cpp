@@ -111,12 +111,8 @@ void ModelBuilder::check_ogden_parts() {
                      "small-strain switch of Ismstr 2 is not implemented for it");
       // Law 70: OpenRadioss keeps Ismstr 1 (small strain on the initial geometry) and runs every other
       // value as the total strain of Ismstr 11, which radx measures from the stretches (law70_foam_tab.cpp).
-      if (foam && s.ismstr == 1)
-        error_at(rec, "Ismstr", Diag::PhysicsNotImplemented,
-                 "Ismstr 1 with " + who +
-                     ": OpenRadioss runs law 70 with the small strain of the initial geometry then, which "
-                     "radx does not implement; radx runs law 70 with its total strain (what OpenRadioss "
-                     "does for every other Ismstr): leave Ismstr 0 or set 4");
+      // Ismstr 1 is refused for every brick by check_formulations.cpp (or run as 4 under
+      // --allow-substitutions, which for law 70 is OpenRadioss's total strain).
     }
   }
 }

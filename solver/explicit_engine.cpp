@@ -252,6 +252,7 @@ void ExplicitEngine::build_groups() {
       for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v)
         for (std::size_t i = 0; i < kGroupSize; ++i) g.foam[v * kGroupSize + i] = st[v];
       if (prop.q_default) g.qa = g.qb = 0.0;
+      g.ismstr = 11;  // OpenRadioss runs law 70 with Ismstr 11 (sgrtails.F): never the small-strain switch
     }
     for (int i = 0; i < g.count; ++i) {
       const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
