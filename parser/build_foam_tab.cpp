@@ -5,14 +5,14 @@
 // the loading curves are sorted by rate and the first takes rate 0 (a warning when it was not); with no
 // unloading curve and Iflag <= 2 the first loading curve unloads and Iflag becomes 0 (a warning); Shape and
 // Hys 0 mean 1 (the fields' rules). radx refuses, where OpenRadioss goes on: two loading (or two unloading)
-// curves at the same rate (OpenRadioss refuses it for unloading curves only, and drops exact repeats), and
-// by name (RX510) tables of more than 100 abscissas, which OpenRadioss thins (vw_smooth.F) and radx does not.
+// curves at the same rate (OpenRadioss refuses it for unloading curves only, and drops exact repeats). Curves
+// and tables of more than 100 points are thinned by the engine as OpenRadioss thins them
+// (solver/model/foam_table.hpp).
 // The elements law 70 runs on are checked with law 42's (build_hyperelastic.cpp).
 #include <string>
 
 #include "parser/field_parse.hpp"
 #include "parser/model_builder.hpp"
-#include "solver/model/foam_table.hpp"
 
 namespace radx::detail {
 
@@ -20,7 +20,6 @@ namespace {
 std::string num(double v) {
   return number_text(v);
 }
-constexpr std::size_t kMaxTablePoints = 100;  // law70_table.F: NPTMAX
 }  // namespace
 
 void ModelBuilder::read_foam_tab(const KeywordRecord& r, model::Material& mat) {
@@ -116,43 +115,17 @@ void ModelBuilder::resolve_foam_tab_functions() {
     auto& mat = m_.materials[static_cast<std::size_t>(it->second)];
     if (mat.law != model::MaterialLaw::FoamTab || mat.title != r.title) continue;  // a duplicate id
     auto& f = mat.foam;
-    bool all = true;
     auto resolve = [&](const std::vector<std::int64_t>& ids, std::vector<std::int32_t>& dense,
                        const char* base, const char* what) {
       for (std::size_t i = 0; i < ids.size(); ++i) {
-        if (ids[i] <= 0) {  // reported by read_foam_tab
-          all = false;
-          continue;
-        }
+        if (ids[i] <= 0) continue;  // reported by read_foam_tab
         dense[i] = ref(funct_ids_, r, base + std::to_string(i + 1), what, "/FUNCT", false);
-        if (dense[i] < 0) all = false;
       }
     };
     resolve(f.load_function_id, f.load_function, "fct_L", "loading curve");
     resolve(f.unload_function_id, f.unload_function, "fct_U", "unloading curve");
     if (f.itens == 1 && f.tens_function_id > 0)
       f.tens_function = ref(funct_ids_, r, "fctIDTens", "tension factor curve", "/FUNCT", false);
-    if (!all) continue;
-    // The tables as the engine will build them: OpenRadioss thins a table of more than 100 abscissas.
-    auto table_size = [&](const std::vector<std::int32_t>& dense, const std::vector<double>& scale,
-                          const std::vector<double>& rate) {
-      std::vector<model::FoamCurveInput> in;
-      for (std::size_t i = 0; i < dense.size(); ++i) {
-        const auto& fn = m_.functions[static_cast<std::size_t>(dense[i])];
-        in.push_back({fn.x.data(), fn.y.data(), std::min(fn.x.size(), fn.y.size()), scale[i], rate[i]});
-      }
-      return model::build_foam_table(in).x.size();
-    };
-    const std::size_t nl = table_size(f.load_function, f.load_scale, f.load_rate);
-    const std::size_t nu = table_size(f.unload_function, f.unload_scale, f.unload_rate);
-    if (std::max(nl, nu) > kMaxTablePoints)
-      error_at(
-          r, nl > kMaxTablePoints ? "fct_L1" : "fct_U1", Diag::PhysicsNotImplemented,
-          std::string(nl > kMaxTablePoints ? "loading" : "unloading") + " table of " +
-              std::to_string(std::max(nl, nu)) +
-              " abscissas (the curves' points at strain >= 0, merged over the rates): OpenRadioss thins a "
-              "law-70 table to 100 points (vw_smooth.F) and radx does not implement that thinning; give "
-              "curves of at most 100 points together");
   }
 }
 

@@ -1286,24 +1286,6 @@ class Model:
         return [o for o in self.objs if o["path"] in paths]
 
 
-def foam_positive_abscissas(pts):
-    """Abscissas of a law-70 curve's table (solver/model/foam_table.cpp): the segments with both ends at x < 0
-    dropped, the first point at x > 0 (or the lower end of the segment crossing 0) taken to the origin."""
-    if len(pts) < 2:
-        return [0.0] + [x for x, _ in pts if x > 0]
-    out = []
-    s2 = 0.0
-    for j in range(len(pts) - 1):
-        (s1, t1), (s2, t2) = pts[j], pts[j + 1]
-        if s1 < 0 and s2 < 0:
-            continue
-        if (j == 0 and s1 > 0) or (s1 <= 0 < s2 and t1 != 0):
-            s1 = 0.0
-        out.append(s1)
-    out.append(s2)
-    return out
-
-
 def val(o, name, default=0):
     v = o["vals"].get(name)
     if v is None or v[0] is None:
@@ -1888,23 +1870,6 @@ def semantic(ck, m):
                 rates.append(r)
         if val(o, "Itens", 0) == 1:
             need(o, "fctIDTens", functs, "function", zero_ok=False)
-        # tables of more than 100 abscissas (the curves' parts at x >= 0, merged) are refused: OpenRadioss thins
-        # them (build_foam_tab.cpp, solver/model/foam_table.cpp)
-        sizes = []
-        for what, count in (("L", "Nload"), ("U", "Nunload")):
-            xs, ok = set(), True
-            for k in range(1, max(0, min(val(o, count, 0) or 0, 10)) + 1):
-                fid = val(o, "fct_%s%d" % (what, k), 0)
-                if fid not in functs:
-                    ok = False
-                    continue
-                pts = [(r.get("X") or 0.0, r.get("Y") or 0.0) for r, _ in functs[fid]["recs"]]
-                xs |= set(foam_positive_abscissas(pts))
-            sizes.append(len(xs) if ok else 0)
-        if max(sizes) > 100:
-            field = "fct_L1" if sizes[0] > 100 else "fct_U1"
-            p = pos(o, field)
-            I("RX510", p[0], p[1], "%s %d: table of %d abscissas (not thinned by radx)" % (o["path"], o["id"], max(sizes)))
     # /FAIL/JOHNSON/mat_ID: on an existing LAW2 or LAW36 material, one per material
     failed_mats = set()
     for o in m.of("/FAIL/JOHNSON"):

@@ -839,15 +839,6 @@ def _():
     return d, "/MAT/FOAM_TAB/3 fct_L1 = 99 names no /FUNCT", [("RX402", "FO.fct_L1")]
 
 
-@fault("foam_long_curve")
-def _():
-    d = base()
-    pts = [(round(0.008 * k, 6), round(0.002 * k + 0.00001 * k * k, 6)) for k in range(101)]
-    d.insert_before("AFTER_MATS", foam(points=pts))
-    return d, "/MAT/FOAM_TAB/3 loading curve of 101 points (OpenRadioss thins it to 100; radx does not)", \
-        [("RX510", "FO.fct_L1")]
-
-
 @fault("rigid_no_density")
 def _():
     d = base()

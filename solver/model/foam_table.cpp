@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace radx::model {
 
@@ -41,6 +42,63 @@ void positive_part(const FoamCurveInput& c, std::vector<double>& xs, std::vector
   ys.push_back(t2);
   for (std::size_t k = 0; k < xs.size(); ++k)
     if (xs[k] == 0) ys[k] = 0;
+}
+
+// Thinning of a curve to `target` points (foam_table.hpp): Visvalingam-Whyatt as vw_smooth.F does it.
+void thin(std::vector<double>& x, std::vector<double>& y, std::size_t target) {
+  const std::size_t n = x.size();
+  if (n <= target) return;
+  constexpr double kRemoved = std::numeric_limits<double>::max();
+  constexpr double kKept = kRemoved / 10;  // the end points and the origin
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> prev(n), next(n);
+  std::vector<double> area(n, kKept);
+  for (std::size_t i = 0; i < n; ++i) {
+    prev[i] = i == 0 ? kNone : i - 1;
+    next[i] = i + 1 < n ? i + 1 : kNone;
+  }
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    if (x[i] == 0 && y[i] == 0) continue;
+    area[i] = std::abs(x[i - 1] * y[i] + x[i] * y[i + 1] + x[i + 1] * y[i - 1] - x[i - 1] * y[i + 1] -
+                       x[i] * y[i - 1] - x[i + 1] * y[i]);
+  }
+  // Each removed point's neighbours get the estimate |(x0 - x2)(y0 - y1)| (x0 the neighbour, x2 its new
+  // next point, y1 the point before it), the previous one only when it is not the first point, the next one
+  // only when its own next is before the last point.
+  auto estimate = [&](std::size_t i0, std::size_t i1, std::size_t i2) {
+    area[i0] = std::abs((x[i0] - x[i2]) * (y[i0] - y[i1]));
+  };
+  for (std::size_t iter = 0; iter < n - target; ++iter) {
+    std::size_t imin = 0;
+    double amin = kRemoved;
+    for (std::size_t i = 0; i < n; ++i)
+      if (area[i] < amin) {
+        amin = area[i];
+        imin = i;
+      }
+    const std::size_t ip = prev[imin], in = next[imin];
+    if (ip != kNone) next[ip] = in;
+    if (in != kNone) prev[in] = ip;
+    area[imin] = kRemoved;
+    if (ip != kNone && prev[ip] != kNone && in != kNone) estimate(ip, prev[ip], in);
+    if (in != kNone && next[in] != kNone && next[in] < n - 1 && ip != kNone) estimate(in, ip, next[in]);
+  }
+  std::vector<double> kx, ky;
+  for (std::size_t i = 0; i < n; ++i)
+    if (area[i] < kRemoved) {
+      kx.push_back(x[i]);
+      ky.push_back(y[i]);
+    }
+  // Points on the wrong side of the axes go to the origin (a point of negative strain and negative stress
+  // stays, unless the next point is in the positive quadrant).
+  for (std::size_t i = 0; i < kx.size(); ++i) {
+    const double sx = kx[i], ty = ky[i];
+    const bool wrong = (sx < 0 && ty > 0) || (sx > 0 && ty < 0) || (sx == 0 && ty != 0);
+    const bool before_positive = sx < 0 && ty < 0 && i + 1 < kx.size() && kx[i + 1] > 0 && ky[i + 1] > 0;
+    if (wrong || before_positive) kx[i] = ky[i] = 0.0;
+  }
+  x = std::move(kx);
+  y = std::move(ky);
 }
 
 // Linear interpolation of (xs, ys) at x with the end segments extrapolated.
@@ -87,6 +145,7 @@ FoamTable build_foam_table(const std::vector<FoamCurveInput>& curves) {
   std::vector<std::vector<double>> xs(m), ys(m);
   for (std::size_t i = 0; i < m; ++i) {
     positive_part(curves[i], xs[i], ys[i]);
+    thin(xs[i], ys[i], kFoamTablePoints);
     t.rate.push_back(curves[i].rate);
   }
   if (m == 1) {
@@ -111,9 +170,27 @@ FoamTable build_foam_table(const std::vector<FoamCurveInput>& curves) {
       }
     }
   }
-  const std::size_t n = t.x.size();
+  std::size_t n = t.x.size();
   for (std::size_t i = 0; i < m; ++i)
     for (std::size_t k = 1; k < n; ++k) t.y[i * n + k] = std::max(t.y[i * n + k], t.y[i * n + k - 1]);
+  if (n > kFoamTablePoints) {
+    // The first curve is thinned; the others take their values at the abscissas it keeps.
+    const std::vector<double> x_all = t.x;
+    std::vector<double> y0(t.y.begin(), t.y.begin() + static_cast<std::ptrdiff_t>(n));
+    std::vector<double> x0 = x_all;
+    thin(x0, y0, kFoamTablePoints);
+    const std::size_t nn = x0.size();
+    std::vector<double> y(m * nn);
+    for (std::size_t k = 0; k < nn; ++k) y[k] = y0[k];
+    for (std::size_t i = 1; i < m; ++i) {
+      const std::vector<double> yi(t.y.begin() + static_cast<std::ptrdiff_t>(i * n),
+                                   t.y.begin() + static_cast<std::ptrdiff_t>((i + 1) * n));
+      for (std::size_t k = 0; k < nn; ++k) y[i * nn + k] = interp(x_all, yi, x0[k]);
+    }
+    t.x = std::move(x0);
+    t.y = std::move(y);
+    n = nn;
+  }
   return t;
 }
 

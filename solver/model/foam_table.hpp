@@ -11,7 +11,13 @@
 //     evaluated there (linear, the end segments extrapolated); then for each curve j >= 2 in rate order, at
 //     each abscissa k >= 2, when y_j - y_{j-1} changes sign between k-1 and k, y_j(k) <- 1.1 y_{j-1}(k)
 //     (the curves are made not to cross);
-//   every curve is made non-decreasing: y(k) <- max(y(k), y(k-1)).
+//   every curve is made non-decreasing: y(k) <- max(y(k), y(k-1));
+//   a curve of more than 100 points, and then a table of more than 100 abscissas (its first curve, the others
+//   taking their values at the abscissas kept), is thinned to 100 (vw_smooth.F): the interior point of least
+//   triangle area |x1 y + x y2 + x2 y1 - x1 y2 - x y1 - x2 y| (the origin and the end points never) is
+//   removed, its two neighbours get the estimate |(x0 - x2)(y0 - y1)| (neighbour x0, its new next x2, the
+//   point before it y1; the first point and a point whose next is the last keep theirs), until 100 remain;
+//   then points in the second or fourth quadrant, or on x = 0 with y != 0, go to the origin.
 //   value at (eps, rate): linear in eps on the common abscissas and linear in the rate between the two
 //   curves around it, both extrapolated with the end intervals (one curve: eps only).
 //
@@ -27,6 +33,8 @@
 #include <vector>
 
 namespace radx::model {
+
+inline constexpr std::size_t kFoamTablePoints = 100;  // law70_table.F: NPTMAX
 
 // One deck curve: its points (not scaled), its ordinate scale and its strain rate.
 struct FoamCurveInput {

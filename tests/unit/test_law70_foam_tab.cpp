@@ -5,6 +5,7 @@
 // is the curve itself (sigeps70.F takes min(curve, trial)). "Round-off" is 1e-12 of the curve's scale.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -122,7 +123,7 @@ TEST_CASE("Law 70 uniaxial compression at one rate follows the loading curve", "
   }
 }
 
-TEST_CASE("Law 70 unloading follows the unloading curve; the loop dissipates the area between the curves",
+TEST_CASE("Law 70 unloading follows the unloading curve and the loop dissipates the area between the curves",
           "[law70]") {
   // Load to e_m = 0.6, unload to 0. On the way back the stress drops elastically with the modulus E reached
   // (kept while the stress is between the curves) until it meets U, then follows U. The dissipated work is
@@ -372,4 +373,31 @@ TEST_CASE("Law 70 in the one-point brick: the internal energy of a crush is the 
   double s[6];
   brick_global_stress(g, 0, s);
   CHECK(std::abs(s[2] + load_curve(em)) <= 1e-9);
+}
+
+TEST_CASE("Law 70 tables of more than 100 points are thinned by least triangle area", "[law70]") {
+  // y = x^2 at x = 0, 1, .., 100 (101 points): every interior triangle has the same area (twice it: 2), so
+  // the first interior point goes. The same curve with y(50) on the chord of its neighbours (area 0):
+  // that point goes. Either way 100 points remain, the others unchanged.
+  std::vector<double> x, y;
+  for (int k = 0; k <= 100; ++k) {
+    x.push_back(k);
+    y.push_back(double(k) * k);
+  }
+  auto table = [&](const std::vector<double>& ys) {
+    radx::model::FoamCurveInput c{x.data(), ys.data(), x.size(), 1.0, 0.0};
+    return radx::model::build_foam_table({c});
+  };
+  const auto t1 = table(y);
+  REQUIRE(t1.x.size() == 100);
+  CHECK(t1.x[0] == 0.0);
+  CHECK(t1.x[1] == 2.0);
+  CHECK(t1.x[99] == 100.0);
+  auto y2 = y;
+  y2[50] = 0.5 * (y[49] + y[51]);
+  const auto t2 = table(y2);
+  REQUIRE(t2.x.size() == 100);
+  CHECK(std::find(t2.x.begin(), t2.x.end(), 50.0) == t2.x.end());
+  CHECK(std::find(t2.x.begin(), t2.x.end(), 1.0) != t2.x.end());
+  for (std::size_t k = 0; k < t2.x.size(); ++k) CHECK(t2.y[k] == t2.x[k] * t2.x[k]);
 }
