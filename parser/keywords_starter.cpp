@@ -2196,6 +2196,87 @@ void add_ogden(std::vector<KeywordDecl>& t) {
   t.push_back(std::move(k));
 }
 
+// /MAT/FOAM_TAB (law 70): tabulated visco-elastic foam (OpenRadioss hm_read_mat70.F; layouts of the
+// radioss51, 90 and 120 cfg files: Iflag, Shape and Hys from 90 on, Itens and its card from 120 on). One line
+// per curve: function, strain rate, scale. radx reads up to kFoamMaxCurves loading and as many unloading
+// curves.
+constexpr int kFoamMaxCurves = 10;
+std::string_view foam_name(int list, int k) {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const char* base :
+         {"fct_L", "rate_L", "scale_L", "fct_U", "rate_U", "scale_U", "loading curve ", "unloading curve "})
+      for (int i = 1; i <= kFoamMaxCurves; ++i) v.push_back(base + std::to_string(i));
+    return v;
+  }();
+  return names[static_cast<std::size_t>(list * kFoamMaxCurves + k)];
+}
+
+void add_foam_tab(std::vector<KeywordDecl>& t) {
+  KeywordDecl k = kw("/MAT/LAW70",
+                     "tabulated visco-elastic foam: loading curves per strain rate, unloading curve, "
+                     "hysteresis; one-point bricks",
+                     Header::IdUnit, true, "mat_ID");
+  k.aliases = {"/MAT/FOAM_TAB"};
+  k.cards = {
+      card("card 1", {R("RHO_I", 1, 20, "initial density").must().gt(0.0).dims(dim::density),
+                      R("RHO_ref", 21, 40, "reference density; 0 takes RHO_I").dims(dim::density)}),
+      card("card 2",
+           {R("E0", 1, 20, "initial Young's modulus (raised to the first slope of the loading curves)")
+                .must()
+                .gt(0.0)
+                .dims(dim::pressure),
+            R("nu", 21, 40, "Poisson's ratio"),
+            R("E_max", 41, 60, "largest Young's modulus; 0 = the largest slope of the loading curves")
+                .ge(0.0)
+                .dims(dim::pressure),
+            R("Eps_max", 61, 80, "strain beyond which the curves continue with the slope E_max; 0 = 1")
+                .zero_is(1.0)
+                .gt(0.0),
+            I("Itens", 81, 90, "1: the stress in expansion times fctIDTens(1 - rho / rho0)")
+                .versions(120)
+                .allow({0, 1})}),
+      card("card 3",
+           {R("Fcut", 1, 20, "cut-off frequency of the strain-rate filter; 0 = none").ge(0.0).dims(dim::rate),
+            I("Ismooth", 21, 30, "strain-rate filter flag (Fcut > 0 sets it)").allow({0, 1}),
+            I("Nload", 31, 40, "number of loading curves (strain rates), 1 to 10")
+                .must()
+                .ge(1)
+                .le(kFoamMaxCurves),
+            I("Nunload", 41, 50, "number of unloading curves, 0 to 10").ge(0).le(kFoamMaxCurves),
+            I("Iflag", 51, 60,
+              "unloading: 0 curves, 1 deviator and 2 stress times unload/static curve, 3 deviator and 4 "
+              "stress by the dissipated energy (Shape, Hys)")
+                .versions(90)
+                .allow({0, 1, 2, 3, 4}),
+            R("Shape", 61, 80, "exponent of the energy ratio of Iflag 3 and 4; 0 = 1")
+                .versions(90)
+                .zero_is(1.0),
+            R("Hys", 81, 100, "hysteresis factor of Iflag 3 and 4; 0 = 1").versions(90).zero_is(1.0)}),
+  };
+  for (int list = 0; list < 2; ++list)
+    for (int i = 0; i < kFoamMaxCurves; ++i) {
+      const int b = 3 * list;
+      k.cards.push_back(card_if(
+          foam_name(6 + list, i), when_gt(list == 0 ? "Nload" : "Nunload", i),
+          {I(foam_name(b, i), 1, 10, list == 0 ? "loading curve sigma(eps)" : "unloading curve sigma(eps)")
+               .refs(IdKind::Other),
+           R(foam_name(b + 1, i), 11, 30, "strain rate of the curve").ge(0.0).dims(dim::rate),
+           R(foam_name(b + 2, i), 31, 50, "scale of the curve's ordinates; 0 = 1")
+               .zero_is(1.0)
+               .dims(dim::pressure)}));
+    }
+  {
+    CardDecl c = card_if("tension card", when_eq("Itens", 1),
+                         {I("fctIDTens", 1, 10, "factor of the stress against 1 - rho / rho0 in expansion")
+                              .refs(IdKind::Other),
+                          R("FscaleTens", 11, 30, "scale of that factor; 0 = 1").zero_is(1.0)});
+    c.since = 120;
+    k.cards.push_back(std::move(c));
+  }
+  t.push_back(std::move(k));
+}
+
 // Issue 15's materials. /MAT/VOID and /MAT/RIGID compute no internal force (OpenRadioss hm_read_mat00.F,
 // hm_read_mat13.F): their E and nu give the contact stiffness and, for the rigid law, a stable step only.
 void add_void_and_rigid(std::vector<KeywordDecl>& t) {
@@ -2251,6 +2332,7 @@ const std::vector<KeywordDecl>& starter_keywords() {
     add_plas_brit(t);
     add_void_and_rigid(t);
     add_ogden(t);
+    add_foam_tab(t);
     add_groups(t);
     add_contact(t);
     add_loads(t);

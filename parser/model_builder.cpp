@@ -161,7 +161,8 @@ void ModelBuilder::build_materials() {
     const bool law0 = path == "/MAT/LAW0";
     const bool law13 = path == "/MAT/LAW13";
     const bool law42 = path == "/MAT/LAW42";
-    if (!law1 && !law2 && !law36 && !law27 && !law0 && !law13 && !law42) continue;
+    const bool law70 = path == "/MAT/LAW70";
+    if (!law1 && !law2 && !law36 && !law27 && !law0 && !law13 && !law42 && !law70) continue;
     model::Material mat;
     mat.id = r.id;
     mat.title = r.title;
@@ -172,10 +173,12 @@ void ModelBuilder::build_materials() {
               : law36 ? model::MaterialLaw::PlasTab
               : law0  ? model::MaterialLaw::Void
               : law42 ? model::MaterialLaw::Ogden
+              : law70 ? model::MaterialLaw::FoamTab
                       : model::MaterialLaw::Rigid;
-    if (law0 || law42) {
+    if (law0 || law42 || law70) {
       if (law0) read_void(r, mat);
       if (law42) read_ogden(r, mat);
+      if (law70) read_foam_tab(r, mat);
       if (register_id(mat_ids_, mat.id, static_cast<std::int32_t>(m_.materials.size()), r, "material", first))
         m_.materials.push_back(std::move(mat));
       continue;
@@ -624,8 +627,15 @@ void ModelBuilder::build_properties() {
       s.iale = static_cast<int>(r.get_int("Iale"));
       s.inpts = static_cast<int>(r.get_int("Inpts"));
       s.qa = r.get_real("qa");
-      if (s.qa == 0) s.qa = 1.1;
       s.qb = r.get_real("qb");
+      // Both 0 or blank in the deck (the fields' rules have put the defaults in): law 70 then runs without
+      // bulk viscosity (hm_read_prop14.F).
+      auto zero_in_deck = [&](std::string_view name) {
+        const auto* v = r.find(name);
+        return v == nullptr || v->defaulted || (v->decl != nullptr && v->r == 0.0);
+      };
+      s.q_default = zero_in_deck("qa") && zero_in_deck("qb");
+      if (s.qa == 0) s.qa = 1.1;
       if (s.qb == 0) s.qb = 0.05;
       s.h = r.get_real("h");
       if (s.h == 0) s.h = 0.1;
@@ -1005,6 +1015,7 @@ model::Model ModelBuilder::build() {
   build_functions();
   move_functions();
   resolve_plas_tab_functions();
+  resolve_foam_tab_functions();
   resolve_fail_tab_functions();
   resolve_spring_functions();
   build_element_groups();  // before surfaces and node groups, which are built from element groups

@@ -270,6 +270,27 @@ def mat_law36(v):
     return cards
 
 
+def mat_law70(v):
+    """/MAT/FOAM_TAB: Itens at 81-90 from 120, Iflag, Shape, Hys from 90; then Nload lines and Nunload lines
+    (function 1-10, rate 11-30, scale 31-50), radx reads up to 10 each; the tension line when Itens = 1 (120+)."""
+    c2 = [F("E0", "R", 1, 20), F("nu", "R", 21, 40), F("E_max", "R", 41, 60), F("Eps_max", "R", 61, 80)]
+    if v >= 120:
+        c2.append(F("Itens", "I", 81, 90))
+    c3 = [F("Fcut", "R", 1, 20), F("Ismooth", "I", 21, 30), F("Nload", "I", 31, 40), F("Nunload", "I", 41, 50)]
+    if v >= 90:
+        c3 += [F("Iflag", "I", 51, 60), F("Shape", "R", 61, 80), F("Hys", "R", 81, 100)]
+    cards = [card(reals("RHO_I", "RHO_ref")), card(c2), card(c3)]
+    for what, count in (("L", "Nload"), ("U", "Nunload")):
+        for k in range(10):
+            fields = [F("fct_%s%d" % (what, k + 1), "I", 1, 10), F("rate_%s%d" % (what, k + 1), "R", 11, 30),
+                      F("scale_%s%d" % (what, k + 1), "R", 31, 50)]
+            cards.append(card(fields, cond=lambda x, k=k, count=count: x.get(count, 0) > k))
+    if v >= 120:
+        cards.append(card([F("fctIDTens", "I", 1, 10), F("FscaleTens", "R", 11, 30)],
+                          cond=lambda x: x.get("Itens", 0) == 1))
+    return cards
+
+
 def fail_johnson(v):
     """/FAIL/JOHNSON/mat_ID (no title): EPSF_MIN from 2024, Dadv from 130, Ixfem from 120, FAILIP from 2025, then
     the optional fail_ID card."""
@@ -658,6 +679,8 @@ STARTER = {
     "/MAT/LAW00": ("id", True, mat_void, None, None),
     "/MAT/LAW13": ("id", True, mat_law1, None, None),
     "/MAT/LAW42": ("id", True, mat_law42, None, None),
+    "/MAT/LAW70": ("id", True, mat_law70, None, None),
+    "/MAT/FOAM_TAB": ("id", True, mat_law70, None, None),
     "/MAT/OGDEN": ("id", True, mat_law42, None, None),
     "/MAT/RIGID": ("id", True, mat_law1, None, None),
     "/FAIL/JOHNSON": ("id", False, fail_johnson, None, None),
@@ -1332,7 +1355,8 @@ def semantic(ck, m):
                   "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02",
                   "/MAT/LAW36", "/MAT/PLAS_TAB", "/MAT/LAW27", "/MAT/PLAS_BRIT", "/MAT/LAW0", "/MAT/VOID",
-                  "/MAT/LAW00", "/MAT/LAW13", "/MAT/RIGID", "/MAT/LAW42", "/MAT/OGDEN"), "material")
+                  "/MAT/LAW00", "/MAT/LAW13", "/MAT/RIGID", "/MAT/LAW42", "/MAT/OGDEN", "/MAT/LAW70",
+                  "/MAT/FOAM_TAB"), "material")
     grnods = by_id(tuple(k for k in STARTER if k.startswith("/GRNOD/")), "node group")
     surfs = by_id(tuple(k for k in STARTER if k.startswith("/SURF/")), "surface")
 
@@ -1700,6 +1724,20 @@ def semantic(ck, m):
             if resolved(prop, "Ismstr", "/DEF_SOLID", 4) != 4:
                 p = pos(prop, "Ismstr")
                 I("RX510", p[0], p[1], "law 42 with Ismstr %d (part %d)" % (resolved(prop, "Ismstr", "/DEF_SOLID", 4), pid))
+    # law 70 on one-point bricks only (build_hyperelastic.cpp check_ogden_parts)
+    for pid, kinds in part_kind.items():
+        if pid not in parts:
+            continue
+        mat = mats.get(val(parts[pid], "mat_ID"))
+        prop = props.get(val(parts[pid], "prop_ID"))
+        if mat is None or prop is None or mat["path"] not in ("/MAT/LAW70", "/MAT/FOAM_TAB"):
+            continue
+        if kinds & {"/SHELL", "/SH3N", "/TETRA4"}:
+            I("RX510", mat["pos"][0], mat["pos"][1], "law 70 on shells or tetrahedra (part %d)" % pid)
+        if "/BRICK" in kinds and prop["path"] in ("/PROP/SOLID", "/PROP/TYPE14"):
+            if resolved(prop, "Isolid", "/DEF_SOLID", 1) not in (1, 2):
+                p = pos(prop, "Isolid")
+                I("RX510", p[0], p[1], "law 70 with Isolid %d (part %d)" % (resolved(prop, "Isolid", "/DEF_SOLID", 1), pid))
     # fields read but not implemented whose non-zero value changes the physics (keywords_starter.cpp)
     for o in props.values():
         if o["path"] in ("/PROP/SOLID", "/PROP/TYPE14"):
@@ -1728,6 +1766,21 @@ def semantic(ck, m):
         if nu >= 0.5 or nu <= -1.0 or (nu < 0 and o["path"] in ("/MAT/LAW42", "/MAT/OGDEN")):
             p = pos(o, "nu")
             I("RX503", p[0], p[1], "Poisson's ratio %g" % nu)
+        if o["path"] in ("/MAT/LAW70", "/MAT/FOAM_TAB"):
+            # the fields' rules (keywords_starter.cpp add_foam_tab), then build_foam_tab.cpp read_foam_tab
+            if nu >= 0.5 or nu < 0:
+                p = pos(o, "nu")
+                I("RX503", p[0], p[1], "Poisson's ratio %g" % nu)
+            for name, lo, hi in (("Nload", 1, 10), ("Nunload", 0, 10), ("Iflag", 0, 4), ("Itens", 0, 1),
+                                 ("Ismooth", 0, 1)):
+                x = val(o, name, 0) or 0
+                if not lo <= x <= hi:
+                    p = pos(o, name)
+                    I("RX501", p[0], p[1], "%s %d: %s = %d" % (o["path"], o["id"], name, x))
+            if not (val(o, "E0", 0.0) or 0.0) > 0:
+                p = pos(o, "E0")
+                I("RX501" if val(o, "E0", None) is not None else "RX502", p[0], p[1], "E0 must be > 0")
+            continue  # no E
         if o["path"] in ("/MAT/LAW42", "/MAT/OGDEN"):
             # the fields' rules (keywords_starter.cpp add_ogden), then build_hyperelastic.cpp read_ogden
             for name in ("fct_IDbulk", "M"):
@@ -1841,6 +1894,23 @@ def semantic(ck, m):
             if val(o, name, 0) not in (0, 0.0):
                 p = pos(o, name)
                 I("RX510", p[0], p[1], "%s %d: %s not implemented by radx" % (o["path"], o["id"], name))
+    # /MAT/FOAM_TAB: each curve names a function, rates distinct within the loading and the unloading curves,
+    # the tension function with Itens 1 (build_foam_tab.cpp)
+    for o in mats.values():
+        if o["path"] not in ("/MAT/LAW70", "/MAT/FOAM_TAB"):
+            continue
+        for what, count in (("L", "Nload"), ("U", "Nunload")):
+            n = max(0, min(val(o, count, 0) or 0, 10))
+            rates = []
+            for k in range(1, n + 1):
+                need(o, "fct_%s%d" % (what, k), functs, "function", zero_ok=False)
+                r = val(o, "rate_%s%d" % (what, k), 0.0) or 0.0
+                if r in rates:
+                    p = pos(o, "rate_%s%d" % (what, k))
+                    I("RX507", p[0], p[1], "%s %d: two %sing curves at rate %g" % (o["path"], o["id"], what, r))
+                rates.append(r)
+        if val(o, "Itens", 0) == 1:
+            need(o, "fctIDTens", functs, "function", zero_ok=False)
     # /FAIL/JOHNSON/mat_ID: on an existing LAW2 or LAW36 material, one per material
     failed_mats = set()
     for o in m.of("/FAIL/JOHNSON"):

@@ -824,6 +824,50 @@ def _():
     return d, "/MAT/OGDEN/3 on bricks of Isolid 24 (law 42 runs on Isolid 1 and 2 only)", [("RX510", "PSO.Isolid")]
 
 
+def foam(mid=3, load=((7, 0.0, 1.0),), unload=(), points=((0.0, 0.0), (0.5, 0.2), (0.8, 1.0)), **kw):
+    """/MAT/FOAM_TAB/mid (tag FO; loading curves on /FUNCT/7, tag F7) before AFTER_MATS; no part uses it."""
+    values = dict(RHO_I=5e-11, E0=20.0, nu=0.0, E_max=0.0, Eps_max=0.0, Nload=len(load), Nunload=len(unload),
+                  Iflag=0, fill=0)
+    for k, (fid, rate, scale) in enumerate(load):
+        values.update({"fct_L%d" % (k + 1): fid, "rate_L%d" % (k + 1): rate, "scale_L%d" % (k + 1): scale})
+    for k, (fid, rate, scale) in enumerate(unload):
+        values.update({"fct_U%d" % (k + 1): fid, "rate_U%d" % (k + 1): rate, "scale_U%d" % (k + 1): scale})
+    values.update(kw)
+    return (block("FO", "/MAT/FOAM_TAB", mid, "Foam (tabulated)", **values) +
+            funct_rows(7, list(points), "Foam loading curve", tag="F7"))
+
+
+@fault("foam_on_shells")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", foam())
+    d.update("PART1", mat_ID=3)
+    return d, "/MAT/FOAM_TAB/3 on the shell part 1 (law 70 runs on one-point bricks only)", [("RX510", "FO_KW")]
+
+
+@fault("foam_heph")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", foam())
+    d.update("PART2", mat_ID=3)
+    d.update("PSO", Isolid=24)
+    return d, "/MAT/FOAM_TAB/3 on bricks of Isolid 24 (law 70 runs on Isolid 1 and 2 only)", [("RX510", "PSO.Isolid")]
+
+
+@fault("foam_same_rates")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", foam(load=((7, 0.0, 1.0), (7, 0.0, 2.0))))
+    return d, "/MAT/FOAM_TAB/3 two loading curves at the same strain rate 0", [("RX507", "FO.rate_L2")]
+
+
+@fault("foam_missing_function")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", foam(load=((99, 0.0, 1.0),)))
+    return d, "/MAT/FOAM_TAB/3 fct_L1 = 99 names no /FUNCT", [("RX402", "FO.fct_L1")]
+
+
 @fault("rigid_no_density")
 def _():
     d = base()

@@ -243,6 +243,15 @@ LAYOUTS = {
         Card(r("mu_6"), r("mu_7"), r("mu_8"), r("mu_9"), r("mu_10")),
         Card(r("alpha_1"), r("alpha_2"), r("alpha_3"), r("alpha_4"), r("alpha_5")),
         Card(r("alpha_6"), r("alpha_7"), r("alpha_8"), r("alpha_9"), r("alpha_10"))),
+    "/MAT/FOAM_TAB": Layout(
+        Card(r("RHO_I"), r("RHO_ref")),
+        Card(r("E0"), r("nu"), r("E_max"), r("Eps_max"), i("Itens", since=120)),
+        Card(r("Fcut"), i("Ismooth"), i("Nload"), i("Nunload"), i("Iflag", since=90), r("Shape", since=90),
+             r("Hys", since=90)),
+        *[Card(i("fct_%s%d" % (what, k)), r("rate_%s%d" % (what, k)), r("scale_%s%d" % (what, k)),
+               when=lambda v, k=k, count=count: _int(v.get(count)) >= k)
+          for what, count in (("L", "Nload"), ("U", "Nunload")) for k in range(1, 4)],
+        Card(i("fctIDTens"), r("FscaleTens"), since=120, when=lambda v: _int(v.get("Itens")) == 1)),
     "/MAT/PLAS_JOHNS": Layout(
         Card(r("RHO_I"), r("RHO_ref")),
         Card(r("E"), r("nu"), i("Iflag", since=140), i("flagVP", since=2023), r("Pmin", since=2025)),

@@ -142,6 +142,8 @@ struct BrickGroup {
   // (global axes), k = 1..4 (B_{5..8} = -B_{3,4,1,2}), [3 * k + d][G], from which the kernel forms the total
   // deformation gradient F = sum_k x_k (x) B_k. Empty for the other laws.
   std::vector<double> b_ref;
+  // Law 70 (law70_foam_tab.cpp): the point state, kFoamVars rows [v][G]. Empty for the other laws.
+  std::vector<double> foam;
   void allocate(int n);
   void allocate_points();  // the point arrays of a fully integrated group (n_points = 8)
   // b_ref of element i from its initial node coordinates x0[8][3].

@@ -242,8 +242,19 @@ void ExplicitEngine::build_groups() {
     g.h = prop.h;
     resolve_full_brick(prop, materials_[static_cast<std::size_t>(g.material)], g);
     const double rho0 = materials_[static_cast<std::size_t>(g.material)].rho0;
+    const auto& gmat = materials_[static_cast<std::size_t>(g.material)];
     const bool total_strain =
-        materials_[static_cast<std::size_t>(g.material)].law == model::MaterialLaw::Ogden;
+        gmat.law == model::MaterialLaw::Ogden || gmat.law == model::MaterialLaw::FoamTab;
+    if (gmat.law == model::MaterialLaw::FoamTab) {
+      // Law 70's state (m70init.F), and no bulk viscosity when the property leaves qa and qb blank.
+      g.foam.assign(static_cast<std::size_t>(kFoamVars) * kGroupSize, 0.0);
+      double st[kFoamVars];
+      foam_initial_state(gmat, st);
+      for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v)
+        for (std::size_t i = 0; i < kGroupSize; ++i) g.foam[v * kGroupSize + i] = st[v];
+      if (prop.q_default) g.qa = g.qb = 0.0;
+      g.ismstr = 11;  // OpenRadioss runs law 70 with Ismstr 11 (sgrtails.F): never the small-strain switch
+    }
     for (int i = 0; i < g.count; ++i) {
       const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
       g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);

@@ -67,7 +67,8 @@ enum class MaterialLaw : std::uint8_t {
   // (E, nu); a rigid one is part of the rigid body the starter builds from the connected law-13 elements.
   Void = 0,
   Rigid = 13,
-  Ogden = 42,  // /MAT/OGDEN: hyperelastic, stress from the total deformation gradient (one-point bricks)
+  Ogden = 42,    // /MAT/OGDEN: hyperelastic, stress from the total deformation gradient (one-point bricks)
+  FoamTab = 70,  // /MAT/FOAM_TAB: tabulated visco-elastic foam, total strain (one-point bricks)
 };
 
 // /MAT/PLAS_TAB (law 36): yield curves sigma_y(eps_p) per strain rate, as given in the deck (the engine adds
@@ -134,6 +135,32 @@ struct Ogden {
   int iform = 1;
 };
 
+// /MAT/FOAM_TAB (law 70) as the deck gives it (OpenRadioss hm_read_mat70.F's defaults applied): the loading
+// curves sigma(eps) per strain rate and the unloading curves (parallel vectors, one entry a curve, in the
+// deck's order), the tension factor curve of Itens 1, and the scalars. E0, nu are in Material::young,
+// poisson. The curve processing of the engine (solver/model/foam_table.hpp) derives the table, E0, Emax and
+// the strain limit the law runs with.
+struct FoamTab {
+  std::vector<std::int64_t> load_function_id;  // user ids (listing)
+  std::vector<std::int32_t> load_function;     // dense indices into Model::functions
+  std::vector<double> load_scale;              // 0 -> 1
+  std::vector<double> load_rate;
+  std::vector<std::int64_t> unload_function_id;
+  std::vector<std::int32_t> unload_function;
+  std::vector<double> unload_scale;
+  std::vector<double> unload_rate;
+  double e_max = 0;    // Emax: 0 -> the largest slope of the loading table
+  double eps_max = 1;  // strain beyond which the stiffness Emax continues the curves (0 -> 1)
+  int itens = 0;       // 1: stress times fct(1 - rho / rho0) in expansion
+  std::int64_t tens_function_id = 0;
+  std::int32_t tens_function = -1;
+  double tens_scale = 1;
+  int israte = 0;  // strain-rate filter flag (Fcut > 0 sets it); the cut-off is Material::f_cut
+  int iflag = 0;   // unloading formulation 0..4 (0 after the starter when no unloading curve and Iflag <= 2)
+  double shape = 1;  // Shape exponent of Iflag 3, 4 (0 -> 1)
+  double hys = 1;    // Hys factor of Iflag 3, 4 (0 -> 1)
+};
+
 struct Material {
   std::int64_t id = 0;
   std::string title;
@@ -153,6 +180,7 @@ struct Material {
   FailTab fail_tab;
   PlasBrit brit;  // law 27's crack model
   Ogden ogden;    // law 42
+  FoamTab foam;   // law 70
 };
 
 enum class PropertyKind : std::uint8_t { Shell = 1, Solid = 14, Spring = 4 };
@@ -166,6 +194,9 @@ struct ShellProperty {
 struct SolidProperty {
   int isolid = 1, ismstr = 4, icpre = 0, iframe = 1, inpts = 0, itetra4 = 1000, itetra10 = 1000, iale = 0;
   double qa = 1.1, qb = 0.05, h = 0.1, lambda_v = 0, mu_v = 0, dn = 0, dt_min = 0;
+  // qa and qb both 0 (blank) in the deck: OpenRadioss then runs law 70 without bulk viscosity (its defaults
+  // 1.1 and 0.05 apply to the other laws).
+  bool q_default = false;
 };
 
 // One spring law, as OpenRadioss's starter reads it (hm_read_prop04.F, hm_read_prop08.F), defaults
