@@ -222,6 +222,12 @@ RADX_SCHEMA(PlasTab, RADX_FIELD(function_id), RADX_FIELD(function), RADX_FIELD(s
 RADX_SCHEMA(PlasBrit, RADX_FIELD(eps_t1), RADX_FIELD(eps_m1), RADX_FIELD(d_max1), RADX_FIELD(eps_f1),
             RADX_FIELD(eps_t2), RADX_FIELD(eps_m2), RADX_FIELD(d_max2), RADX_FIELD(eps_f2));
 RADX_SCHEMA(Ogden, RADX_FIELD(mu), RADX_FIELD(alpha), RADX_FIELD(sig_cut), RADX_FIELD(iform));
+RADX_SCHEMA(FoamTab, RADX_FIELD(load_function_id), RADX_FIELD(load_function), RADX_FIELD(load_scale),
+            RADX_FIELD(load_rate), RADX_FIELD(unload_function_id), RADX_FIELD(unload_function),
+            RADX_FIELD(unload_scale), RADX_FIELD(unload_rate), RADX_FIELD(e_max), RADX_FIELD(eps_max),
+            RADX_FIELD(itens), RADX_FIELD(tens_function_id), RADX_FIELD(tens_function),
+            RADX_FIELD(tens_scale), RADX_FIELD(israte), RADX_FIELD(iflag), RADX_FIELD(shape),
+            RADX_FIELD(hys));
 RADX_SCHEMA(FailJohnson, RADX_FIELD(on), RADX_FIELD(fail_id), RADX_FIELD(d1), RADX_FIELD(d2), RADX_FIELD(d3),
             RADX_FIELD(d4), RADX_FIELD(d5), RADX_FIELD(eps_dot_0), RADX_FIELD(eps_f_min), RADX_FIELD(dadv),
             RADX_FIELD(ifail_sh), RADX_FIELD(ifail_so));
@@ -237,7 +243,7 @@ RADX_SCHEMA(Material, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(law), RADX_F
             RADX_FIELD(sig_y_input), RADX_FIELD(uts), RADX_FIELD(e_uts), RADX_FIELD(c), RADX_FIELD(eps_dot_0),
             RADX_FIELD(f_cut), RADX_FIELD(chard), RADX_FIELD(p_min), RADX_FIELD(m_temp), RADX_FIELD(t_melt),
             RADX_FIELD(rho_cp), RADX_FIELD(t_ref), RADX_FIELD(t_max), RADX_FIELD(tab), RADX_FIELD(fail_jc),
-            RADX_FIELD(fail_tab), RADX_FIELD(brit), RADX_FIELD(ogden));
+            RADX_FIELD(fail_tab), RADX_FIELD(brit), RADX_FIELD(ogden), RADX_FIELD(foam));
 RADX_SCHEMA(ShellProperty, RADX_FIELD(ishell), RADX_FIELD(ismstr), RADX_FIELD(ish3n), RADX_FIELD(idrill),
             RADX_FIELD(ipinch), RADX_FIELD(n_ip), RADX_FIELD(ithick), RADX_FIELD(iplas), RADX_FIELD(ipos),
             RADX_FIELD(p_thick_fail), RADX_FIELD(hm), RADX_FIELD(hf), RADX_FIELD(hr), RADX_FIELD(dm),
@@ -245,7 +251,7 @@ RADX_SCHEMA(ShellProperty, RADX_FIELD(ishell), RADX_FIELD(ismstr), RADX_FIELD(is
 RADX_SCHEMA(SolidProperty, RADX_FIELD(isolid), RADX_FIELD(ismstr), RADX_FIELD(icpre), RADX_FIELD(iframe),
             RADX_FIELD(inpts), RADX_FIELD(itetra4), RADX_FIELD(itetra10), RADX_FIELD(iale), RADX_FIELD(qa),
             RADX_FIELD(qb), RADX_FIELD(h), RADX_FIELD(lambda_v), RADX_FIELD(mu_v), RADX_FIELD(dn),
-            RADX_FIELD(dt_min));
+            RADX_FIELD(dt_min), RADX_FIELD(q_default));
 RADX_SCHEMA(SpringLaw, RADX_FIELD(stiffness), RADX_FIELD(damping), RADX_FIELD(a), RADX_FIELD(b),
             RADX_FIELD(d), RADX_FIELD(e), RADX_FIELD(hardening), RADX_FIELD(f_load), RADX_FIELD(f_damp),
             RADX_FIELD(f_unload), RADX_FIELD(f_damp4), RADX_FIELD(fscale), RADX_FIELD(ascale),

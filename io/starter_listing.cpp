@@ -29,6 +29,7 @@ std::string law_name(model::MaterialLaw l) {
     case model::MaterialLaw::Void: return "LAW0 void";
     case model::MaterialLaw::Rigid: return "LAW13 rigid";
     case model::MaterialLaw::Ogden: return "LAW42 Ogden hyperelastic (one-point bricks)";
+    case model::MaterialLaw::FoamTab: return "LAW70 tabulated visco-elastic foam (one-point bricks)";
   }
   return "unknown law";
 }
@@ -311,6 +312,20 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
       for (std::size_t k = 0; k < o.mu.size(); ++k)
         os << "      term " << k + 1 << ": mu " << o.mu[k] << "  alpha " << o.alpha[k] << '\n';
       os << "    tension cut-off on the principal Biot stress " << o.sig_cut << '\n';
+    }
+    if (mat.law == model::MaterialLaw::FoamTab) {
+      const auto& f = mat.foam;
+      os << "    E0 " << mat.young << "  nu " << mat.poisson << "  Emax " << f.e_max << "  eps_max "
+         << f.eps_max << "  Itens " << f.itens << "  Fcut " << mat.f_cut << "  Iflag " << f.iflag
+         << "  Shape " << f.shape << "  Hys " << f.hys << '\n';
+      for (std::size_t k = 0; k < f.load_function_id.size(); ++k)
+        os << "      loading curve " << f.load_function_id[k] << "  rate " << f.load_rate[k] << "  scale "
+           << f.load_scale[k] << '\n';
+      for (std::size_t k = 0; k < f.unload_function_id.size(); ++k)
+        os << "      unloading curve " << f.unload_function_id[k] << "  rate " << f.unload_rate[k]
+           << "  scale " << f.unload_scale[k] << '\n';
+      if (f.itens == 1)
+        os << "      tension factor curve " << f.tens_function_id << "  scale " << f.tens_scale << '\n';
     }
     if (mat.law == model::MaterialLaw::Void)
       os << "    no force; mass rho V, E and nu for the contact stiffness only\n";

@@ -584,9 +584,13 @@ const std::vector<std::int32_t>* ModelBuilder::group_nodes(std::int32_t g) {
   group.nodes.clear();
   std::set_difference(add.begin(), add.end(), remove.begin(), remove.end(), std::back_inserter(group.nodes));
   if (group.nodes.empty()) {
-    diags_.error(Diag::EmptyGroup, at(r.pos, 1), about(r),
-                 "node group " + std::to_string(group.id) +
-                     " holds no node: check its list (an empty group makes whatever uses it act on nothing)");
+    // After an error the group may be empty only because what it lists was not built (a part whose
+    // property radx refused has no elements): say so rather than blame the list alone.
+    diags_.error(
+        Diag::EmptyGroup, at(r.pos, 1), about(r),
+        "node group " + std::to_string(group.id) +
+            " holds no node: check its list (an empty group makes whatever uses it act on nothing)" +
+            (diags_.has_errors() ? "; the errors reported before it may have left out what it lists" : ""));
   }
   grnod_state_[g] = 2;
   return &group.nodes;

@@ -82,30 +82,37 @@ void ModelBuilder::check_ogden_parts() {
     const auto& part = m_.parts[p];
     if (part.material < 0 || part.property < 0) continue;
     const auto& mat = m_.materials[static_cast<std::size_t>(part.material)];
-    if (mat.law != model::MaterialLaw::Ogden) continue;
+    const bool ogden = mat.law == model::MaterialLaw::Ogden;
+    const bool foam = mat.law == model::MaterialLaw::FoamTab;
+    if (!ogden && !foam) continue;
+    const std::string law = ogden ? "law 42" : "law 70";
+    const std::string_view mat_path = ogden ? "/MAT/LAW42" : "/MAT/LAW70";
     const auto& prop = m_.properties[static_cast<std::size_t>(part.property)];
     const std::string who =
         mat.keyword + " " + std::to_string(mat.id) + " in part " + std::to_string(part.id);
     for (const auto& rec : deck_.records) {
       const auto path = rec.decl->path;
-      if (other_part[p] && path == "/MAT/LAW42" && rec.id == mat.id)
+      if (other_part[p] && path == mat_path && rec.id == mat.id)
         diags_.error(
             Diag::PhysicsNotImplemented, at(rec.pos), about(rec),
-            who +
-                " has shells or tetrahedra: radx implements law 42 on 8-node bricks of Isolid 1 or 2 "
-                "only (the one-point brick carries the total deformation gradient)");
+            who + " has shells or tetrahedra: radx implements " + law +
+                " on 8-node bricks of Isolid 1 or 2 only (the one-point brick carries the total deformation "
+                "gradient)");
       if (!brick_part[p] || path != "/PROP/SOLID" || rec.id != prop.id) continue;
       const auto& s = prop.solid;
       if (s.isolid != 1 && s.isolid != 2)
         error_at(rec, "Isolid", Diag::PhysicsNotImplemented,
-                 "Isolid " + std::to_string(s.isolid) + " with " + who +
-                     ": radx implements law 42 on the one-point brick only (Isolid 1 or 2, with Iframe 1 or "
-                     "2)");
-      if (s.ismstr != 4)
+                 "Isolid " + std::to_string(s.isolid) + " with " + who + ": radx implements " + law +
+                     " on the one-point brick only (Isolid 1 or 2, with Iframe 1 or 2)");
+      if (ogden && s.ismstr != 4)
         error_at(rec, "Ismstr", Diag::PhysicsNotImplemented,
                  "Ismstr " + std::to_string(s.ismstr) + " with " + who +
                      ": law 42's stretch is measured from the initial geometry (Ismstr 4, the default); the "
                      "small-strain switch of Ismstr 2 is not implemented for it");
+      // Law 70: OpenRadioss keeps Ismstr 1 (small strain on the initial geometry) and runs every other
+      // value as the total strain of Ismstr 11, which radx measures from the stretches (law70_foam_tab.cpp).
+      // Ismstr 1 is refused for every brick by check_formulations.cpp (or run as 4 under
+      // --allow-substitutions, which for law 70 is OpenRadioss's total strain).
     }
   }
 }

@@ -660,7 +660,7 @@ const std::vector<ThKindDef>& th_kinds() {
       "MZI", "X",   "Y",   "Z",   "DX",  "DY",   "DZ",  "VX",  "VY",  "VZ",  "AX",  "AY",  "AZ",    "VRX",
       "VRY", "VRZ", "ARX", "ARY", "ARZ", "MASS", "IXX", "IYY", "IZZ", "IXY", "IYZ", "IZX", "STATUS"};
   static const std::string_view kAxialSpring =
-      "a TYPE4 spring is axial: FX and LX only (TYPE8 springs write them)";
+      "a TYPE4 spring is axial: FX and LX only (TYPE8 and TYPE13 springs write them)";
   static const std::string_view kNoType14 =
       "forces of TYPE14 and TYPE15 interfaces, which radx does not have";
   static const std::vector<ThKindDef> kinds = {

@@ -1,11 +1,12 @@
-// /PROP/SPRING (TYPE4), /PROP/SPR_GENE (TYPE8) and /SPRING: the properties' defaults as OpenRadioss's
-// starter resolves them (hm_read_prop04.F, hm_read_prop08.F: each of TYPE8's six laws as TYPE4's one), the
-// elements, and the checks that refuse what would not run.
+// /PROP/SPRING (TYPE4), /PROP/SPR_GENE (TYPE8), /PROP/SPR_BEAM (TYPE13) and /SPRING: the properties'
+// defaults as OpenRadioss's starter resolves them (hm_read_prop04.F, hm_read_prop08.F, hm_read_prop13.F:
+// each of the six laws of TYPE8 and TYPE13 as TYPE4's one), the elements, and the checks that refuse what
+// would not run.
 //   A, D, F, Ascale, Hscale: 0 -> 1. Without fct_ID1 the force is linear, K dx: A = 1, B = E = 0 whatever
 //   the card says (a non-default A then warns, as Radioss's message 663 does). delta_min, delta_max:
 //   0 -> no failure. Ileng 1: dx, M, K, C per unit initial length (handled by the engine).
-// The spring's mass is M (M L0 with Ileng 1), half on each node; TYPE8's inertia too (OpenRadioss starter
-// rmass.F).
+// The spring's mass is M (M L0 with Ileng 1), half on each node; the inertia of TYPE8 and TYPE13 too
+// (OpenRadioss starter rmass.F). TYPE13's Ileng 1 is refused by its declaration (RX510).
 #include <cmath>
 #include <string>
 
@@ -23,7 +24,8 @@ std::string num(double v) {
 }  // namespace
 
 // One law: the fields of /PROP/SPRING (suffix "") or of one degree of freedom of /PROP/SPR_GENE (suffix
-// "1".."6": K1, fct_ID11, delta_min1, ...). `type8`: a stiffness of 0 is a free direction, not an error.
+// "1".."6": K1, fct_ID11, delta_min1, ...), which /PROP/SPR_BEAM shares. `type8` (TYPE8 and TYPE13): a
+// stiffness of 0 is a free direction, not an error.
 void ModelBuilder::read_spring_law(const KeywordRecord& r, model::SpringLaw& s, const std::string& sfx,
                                    bool type8) {
   auto f = [&](const char* base) { return std::string(base) + sfx; };
@@ -53,8 +55,22 @@ void ModelBuilder::read_spring_law(const KeywordRecord& r, model::SpringLaw& s, 
   s.delta_min = dmin == 0 ? -1e30 : dmin;
   s.delta_max = dmax == 0 ? 1e30 : dmax;
 
+  // H 4, 5 and 6 bound or shape the force by fct_ID1 and fct_ID3, H 8 by fct_ID1: Radioss's starter refuses
+  // them without their curves (errors 231 and 1057).
+  const bool needs_unload = s.hardening == 4 || s.hardening == 5 || s.hardening == 6;
+  if ((needs_unload || s.hardening == 8) && !curve)
+    error_at(r, f("fct_ID1"), Diag::RequiredValueMissing,
+             f("H") + " = " + std::to_string(s.hardening) + " needs the force curve " + f("fct_ID1") +
+                 ", which is 0; give a /FUNCT (H = 0 without a curve is the linear spring K dx)");
+  if (needs_unload && r.get_int(f("fct_ID3")) == 0)
+    error_at(r, f("fct_ID3"), Diag::RequiredValueMissing,
+             f("H") + " = " + std::to_string(s.hardening) + " needs the curve " + f("fct_ID3") +
+                 (s.hardening == 4   ? " (the lower yield force of the elongation)"
+                  : s.hardening == 5 ? " (the residual elongation of the largest elongation)"
+                                     : " (the unloading curve, whose slope at the current force unloads)") +
+                 ", which is 0; give a /FUNCT");
   // Without fct_ID1 Radioss runs the linear force K dx whatever H says (redef3.F90 tests the curve first).
-  if (!curve && s.hardening != 0) {
+  if (!curve && s.hardening != 0 && !needs_unload && s.hardening != 8) {
     warning_at(r, f("H"), Diag::InconsistentValues,
                f("H") + " = " + std::to_string(s.hardening) + " acts on the curve " + f("fct_ID1") +
                    ", which the property does not give: the spring is linear, K dx (as Radioss runs it)");
@@ -99,8 +115,9 @@ void ModelBuilder::read_spring_law(const KeywordRecord& r, model::SpringLaw& s, 
 void ModelBuilder::read_spring_property(const KeywordRecord& r, model::Property& p) {
   p.kind = model::PropertyKind::Spring;
   auto& s = p.spring;
-  const bool type8 = r.decl->path == "/PROP/SPR_GENE";
-  s.type = type8 ? 8 : 4;
+  const bool type13 = r.decl->path == "/PROP/SPR_BEAM";
+  const bool type8 = r.decl->path == "/PROP/SPR_GENE" || type13;  // six laws
+  s.type = type13 ? 13 : type8 ? 8 : 4;
   s.mass = r.get_real("M");
   s.sensor = r.get_int("sens_ID");
   if (!type8) {
@@ -110,15 +127,16 @@ void ModelBuilder::read_spring_property(const KeywordRecord& r, model::Property&
     s.inertia = r.get_real("Inertia");
     s.ifail = static_cast<int>(r.get_int("Ifail"));
     for (int d = 0; d < 6; ++d) read_spring_law(r, s.law(d), std::to_string(d + 1), true);
+    // TYPE13's shear laws Y and Z turn the nodes too (their end moments L/2 F): they need the inertia.
     bool rotation_moves = false;
-    for (int d = 3; d < 6; ++d)
+    for (int d = type13 ? 1 : 3; d < 6; ++d)
       rotation_moves = rotation_moves || s.law(d).stiffness > 0 || s.law(d).damping > 0;
     if (s.inertia < 0 || (rotation_moves && !(s.inertia > 1e-15)))
-      error_at(
-          r, "Inertia", Diag::ValueOutOfRange,
-          "spring inertia = " + num(s.inertia) +
-              " is not positive and a rotation (K4..K6, C4..C6) has stiffness or damping; give Inertia > 0 "
-              "(half goes to each node; it sets the rotational time step sqrt(I/K))");
+      error_at(r, "Inertia", Diag::ValueOutOfRange,
+               "spring inertia = " + num(s.inertia) + " is not positive and " +
+                   (type13 ? "a shear or rotation (K2..K6, C2..C6)" : "a rotation (K4..K6, C4..C6)") +
+                   " has stiffness or damping; give Inertia > 0 (half goes to each node; it sets the "
+                   "rotational time step sqrt(I/K))");
   }
   // A spring without mass has no step and moves its nodes without inertia (Radioss error 229 below 1e-15).
   if (!(s.mass > 1e-15))
@@ -130,7 +148,7 @@ void ModelBuilder::read_spring_property(const KeywordRecord& r, model::Property&
 
 void ModelBuilder::resolve_spring_functions() {
   for (const auto& r : deck_.records) {
-    const bool type8 = r.decl->path == "/PROP/SPR_GENE";
+    const bool type8 = r.decl->path == "/PROP/SPR_GENE" || r.decl->path == "/PROP/SPR_BEAM";  // six laws
     if (r.decl->path != "/PROP/SPRING" && !type8) continue;
     const auto it = prop_ids_.find(r.id);
     if (it == prop_ids_.end()) continue;
@@ -149,9 +167,12 @@ void ModelBuilder::resolve_spring_functions() {
 }
 
 // TYPE8's frame: a fixed skew. A moving skew (/SKEW/MOV) would turn the six springs with its nodes; radx
-// does not update the frame, so it refuses one (RX510).
+// does not update the frame, so it refuses one (RX510). TYPE13's skew only orients the spring's own frame at
+// the start (OpenRadioss r4buf3.F, with the skew's initial axes), so any skew serves.
 void ModelBuilder::resolve_spring_skews() {
-  for (const auto* r : deck_.of("/PROP/SPR_GENE")) {
+  for (const auto& rec : deck_.records) {
+    if (rec.decl->path != "/PROP/SPR_GENE" && rec.decl->path != "/PROP/SPR_BEAM") continue;
+    const auto* r = &rec;
     const auto it = prop_ids_.find(r->id);
     if (it == prop_ids_.end()) continue;
     auto& p = m_.properties[static_cast<std::size_t>(it->second)];
@@ -162,7 +183,8 @@ void ModelBuilder::resolve_spring_skews() {
       p.spring.skew = kNone;
       continue;
     }
-    if (p.spring.skew != kNone && m_.skews[static_cast<std::size_t>(p.spring.skew)].moving())
+    if (p.spring.type == 8 && p.spring.skew != kNone &&
+        m_.skews[static_cast<std::size_t>(p.spring.skew)].moving())
       error_at(*r, "skew_ID", Diag::PhysicsNotImplemented,
                "skew_ID = " + std::to_string(r->get_int("skew_ID")) +
                    " is a moving skew (/SKEW/MOV), whose axes turn with its nodes: radx does not implement a "
@@ -192,7 +214,7 @@ void ModelBuilder::build_springs() {
                      "part " + std::to_string(r->id) + " has /PROP/" +
                          std::to_string(m_.properties[static_cast<std::size_t>(pp.property)].id) +
                          ", not a spring property; /SPRING elements need a /PROP/SPRING (TYPE4) or "
-                         "/PROP/SPR_GENE (TYPE8) part");
+                         "/PROP/SPR_GENE (TYPE8) or /PROP/SPR_BEAM (TYPE13) part");
       }
     }
     const int cid = t.column("spring_ID");

@@ -19,11 +19,11 @@
 //                   fully integrated (2 x 2 x 2 points, hex8_full.cpp): Isolid 14 (HA8, co-rotational, Icpre
 //                   0 to 3, Inpts 222 only), 17 (H8C, Icpre default 1), 18 (H8D, run as 17 with Icpre chosen
 //                   by the law) and 12 (S8), each with Iframe 1 or 2 (14 and 18 impose 2)
-//   springs:        /PROP/SPRING (TYPE4) with H 0 (elastic: linear K, or the curve fct_ID1) and 7 (elastic
-//                   hysteresis between fct_ID1 and fct_ID3), with the damping C, the amplification A, B, D, E
-//                   fct_ID2 and the force fct_ID4; H 1, 2, 4, 5, 6, 8 are refused by name; /PROP/SPR_GENE
-//                   (TYPE8) the same for each of its six H1..H6; /PROP/SPR_BEAM (TYPE13) is refused as an
-//                   unsupported keyword
+//   springs:        /PROP/SPRING (TYPE4) with H 0 (elastic: linear K, or the curve fct_ID1), 1, 2, 4, 5, 6
+//                   (elasto-plastic), 7 (elastic hysteresis) and 8 (elastic of the total length), with the
+//                   damping C, the amplification A, B, D, E fct_ID2 and the force fct_ID4 (spring_law.hpp);
+//                   /PROP/SPR_GENE (TYPE8) and /PROP/SPR_BEAM (TYPE13) the same for each of their six
+//                   H1..H6 but H 8, refused by name
 //   4-node tetras:  Itetra4 1000 (constant strain, one point; OpenRadioss hm_read_prop14.F also reads 0 as
 //                   /DEF_SOLID's value, 2 and unexpected values as 1000), Ismstr 2 or 4, Iframe 1; Itetra4 1
 //                   and 3 (nodal pressure) and 10 (converted to a 10-node tetra) are refused
@@ -107,6 +107,7 @@ std::string spring_h_name(int v) {
     case 0: return "elastic, linear or nonlinear by fct_ID1";
     case 1: return "elasto-plastic, isotropic hardening";
     case 2: return "elasto-plastic, uncoupled hardening";
+    case 3: return "elasto-plastic, tension and compression coupled over the six degrees of freedom";
     case 4: return "elasto-plastic, kinematic hardening";
     case 5: return "nonlinear elastic-plastic with uncoupled loading and unloading";
     case 6: return "elasto-plastic with hardening of the yield curve";
@@ -114,6 +115,13 @@ std::string spring_h_name(int v) {
     case 8: return "elastic, force of the total length";
     default: return "hardening flag " + std::to_string(v);
   }
+}
+
+// The hardening flags spring_law.hpp runs: all of redef3.F90's but H 3 (tension and compression coupled over
+// the six degrees of freedom); H 8 on TYPE4 only: Radioss evaluates a TYPE8 law's curve at the spring's
+// initial offset along the axis (r2def3.F passes it), a constant force radx does not reproduce.
+bool spring_h_runs(int h, bool type8) {
+  return h == 0 || h == 1 || h == 2 || h == 4 || h == 5 || h == 6 || h == 7 || (h == 8 && !type8);
 }
 
 }  // namespace
@@ -139,7 +147,8 @@ void ModelBuilder::check_formulations() {
 
   for (const auto& rec : deck_.records) {
     const auto path = rec.decl->path;
-    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" && path != "/PROP/SPR_GENE")
+    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" &&
+        path != "/PROP/SPR_GENE" && path != "/PROP/SPR_BEAM")
       continue;
     const auto it = prop_ids_.find(rec.id);
     if (it == prop_ids_.end()) continue;
@@ -178,24 +187,29 @@ void ModelBuilder::check_formulations() {
     };
     if (path == "/PROP/SPRING") {
       auto& s = prop.spring.x;
-      flag("H", s.hardening, s.hardening == 0 || s.hardening == 7, 0, spring_h_name(s.hardening),
+      flag("H", s.hardening, spring_h_runs(s.hardening, false), 0, spring_h_name(s.hardening),
            spring_h_name(0), "springs (TYPE4)");
       continue;
     }
-    if (path == "/PROP/SPR_GENE") {
+    if (path == "/PROP/SPR_GENE" || path == "/PROP/SPR_BEAM") {
       static constexpr std::array<std::string_view, 6> h = {"H1", "H2", "H3", "H4", "H5", "H6"};
       for (int d = 0; d < 6; ++d) {
         auto& s = prop.spring.law(d);
-        flag(h[static_cast<std::size_t>(d)], s.hardening, s.hardening == 0 || s.hardening == 7, 0,
-             spring_h_name(s.hardening), spring_h_name(0), "springs (TYPE8)");
+        flag(h[static_cast<std::size_t>(d)], s.hardening, spring_h_runs(s.hardening, true), 0,
+             spring_h_name(s.hardening), spring_h_name(0),
+             prop.spring.type == 8 ? "springs (TYPE8)" : "springs (TYPE13)");
       }
       continue;
     }
     if (path == "/PROP/SHELL") {
       auto& s = prop.shell;
-      if (used & kQuad)
+      if (used & kQuad) {
         flag("Ishell", s.ishell, s.ishell == 1 || s.ishell == 4 || s.ishell == 12 || s.ishell == 24, 1,
              ishell_name(s.ishell), ishell_name(1), "4-node shells");
+        // A substituted formulation runs with its own defaults: Ishell 3's hourglass coefficients are not
+        // 1's.
+        shell_hourglass_defaults(rec, s);
+      }
       if (used & kTri)
         flag("Ish3n", s.ish3n, s.ish3n == 1 || s.ish3n == 2, 2, ish3n_name(s.ish3n), ish3n_name(2),
              "3-node shells");

@@ -121,6 +121,14 @@ struct Deck {
   bool allow_substitutions = false;    // ReadOptions::allow_substitutions
   // What runs instead of what the deck asks (only with allow_substitutions), one sentence each.
   std::vector<std::string> substitutions;
+  // Keywords refused as not read (RX302), with the id written after their path: a reference to one of them
+  // says what it names instead of "there is no ..." (a /PART naming a /PROP/SPR_PRE).
+  struct Unread {
+    std::string path;  // /PROP/SPR_PRE
+    std::int64_t id = 0;
+    SourcePos pos;
+  };
+  std::vector<Unread> unread;
   std::vector<const KeywordRecord*> of(std::string_view path) const;
   [[nodiscard]] Where where(SourcePos p, int column = 0) const;
 };

@@ -272,6 +272,24 @@ class StarterReader {
     deck_.version = version;
   }
 
+  // A number field that holds two values apart ("0000      .000000000": the card's columns are shifted) is
+  // read as its leading value when that one is a number: Radioss's reader scans a field with sscanf, which
+  // stops at the blank. It is a warning, since the value read may not be the one meant.
+  std::string_view leading_value(std::string_view raw, const std::string& what, SourcePos pos, int column,
+                                 const About& about) {
+    const auto blank = raw.find_first_of(" \t");
+    if (blank == std::string_view::npos) return raw;
+    const std::string_view first = raw.substr(0, blank);
+    double probe = 0;
+    if (parse_real(first, probe) != NumberStatus::Ok) return raw;
+    diags_.warning(Diag::TwoValuesInField, at(pos, column), about,
+                   what + " holds '" + std::string(raw) +
+                       "', two values: the card's columns look shifted; '" + std::string(first) +
+                       "' is read and the rest ignored, as Radioss reads it (check the "
+                       "card's alignment against its comment line)");
+    return first;
+  }
+
   // A field's text -> value, with defaults and checks.
   FieldValue parse_field(const FieldDecl& f, std::string_view raw, SourcePos pos, int column,
                          const About& about) {
@@ -285,6 +303,7 @@ class StarterReader {
     // of range.
     bool unreadable = false;
     const std::string what = "field " + std::string(f.name) + " (" + std::string(f.meaning) + ")";
+    if (f.type != FieldType::String) raw = leading_value(raw, what, pos, column, about);
     switch (f.type) {
       case FieldType::String: v.s = std::string(raw); break;
       case FieldType::Int: {
@@ -584,6 +603,7 @@ class StarterReader {
       // The id written after the path names the object in the message (/MAT/LAW51/9: material 9).
       std::int64_t written_id = 0;
       if (n < tokens.size() && parse_int(tokens[n], written_id) != NumberStatus::Ok) written_id = 0;
+      if (written_id != 0) deck_.unread.push_back({path, written_id, head.pos});
       if (is_known_unsupported(path)) {
         diags_.error(
             Diag::UnsupportedKeyword, at(head.pos, 1), About{path, written_id},

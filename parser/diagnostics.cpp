@@ -29,6 +29,8 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::IntegerOverflow, "an integer outside the 64-bit range"},
       {Diag::FieldTruncated, "a number that does not fit its columns"},
       {Diag::TextBeyondColumn100, "text beyond column 100 is ignored"},
+      {Diag::TwoValuesInField,
+       "a number field holds two values (shifted columns): the leading one is read, as Radioss reads it"},
       {Diag::UnknownKeyword, "a keyword radx does not know"},
       {Diag::UnsupportedKeyword, "a Radioss keyword that radx does not support"},
       {Diag::IgnoredControlCard, "a control card accepted and ignored (it changes no physics)"},

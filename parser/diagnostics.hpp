@@ -32,6 +32,7 @@ enum class Diag : std::uint16_t {
   IntegerOverflow = 204,
   FieldTruncated = 205,
   TextBeyondColumn100 = 206,
+  TwoValuesInField = 207,
   // keywords and cards
   UnknownKeyword = 301,
   UnsupportedKeyword = 302,

@@ -73,6 +73,82 @@ KeywordDecl kw(std::string_view path, std::string_view meaning, Header header, b
   return k;
 }
 
+// The three cards of each of the six laws of /PROP/SPR_GENE (TYPE8) and /PROP/SPR_BEAM (TYPE13), one block
+// per degree of freedom (1..3 translations X Y Z, 4..6 rotations), with the fields of /PROP/SPRING numbered
+// by degree of freedom as the Radioss manual numbers them; `blocks` names the cards [dof][card].
+using SixBlockNames = std::array<std::array<std::string_view, 3>, 6>;
+constexpr SixBlockNames kSprGeneBlocks = {{
+    {"X translation: card 1", "X translation: card 2", "X translation: card 3"},
+    {"Y translation: card 1", "Y translation: card 2", "Y translation: card 3"},
+    {"Z translation: card 1", "Z translation: card 2", "Z translation: card 3"},
+    {"X rotation: card 1", "X rotation: card 2", "X rotation: card 3"},
+    {"Y rotation: card 1", "Y rotation: card 2", "Y rotation: card 3"},
+    {"Z rotation: card 1", "Z rotation: card 2", "Z rotation: card 3"},
+}};
+constexpr SixBlockNames kSprBeamBlocks = {{
+    {"X tension: card 1", "X tension: card 2", "X tension: card 3"},
+    {"Y shear: card 1", "Y shear: card 2", "Y shear: card 3"},
+    {"Z shear: card 1", "Z shear: card 2", "Z shear: card 3"},
+    {"X torsion: card 1", "X torsion: card 2", "X torsion: card 3"},
+    {"Y bending: card 1", "Y bending: card 2", "Y bending: card 3"},
+    {"Z bending: card 1", "Z bending: card 2", "Z bending: card 3"},
+}};
+
+void add_six_spring_laws(KeywordDecl& k, const SixBlockNames& blocks) {
+  // Field names of the six blocks: [field][dof].
+  static constexpr std::array<std::array<std::string_view, 6>, 16> n = {{
+      {"K1", "K2", "K3", "K4", "K5", "K6"},
+      {"C1", "C2", "C3", "C4", "C5", "C6"},
+      {"A1", "A2", "A3", "A4", "A5", "A6"},
+      {"B1", "B2", "B3", "B4", "B5", "B6"},
+      {"D1", "D2", "D3", "D4", "D5", "D6"},
+      {"fct_ID11", "fct_ID12", "fct_ID13", "fct_ID14", "fct_ID15", "fct_ID16"},
+      {"H1", "H2", "H3", "H4", "H5", "H6"},
+      {"fct_ID21", "fct_ID22", "fct_ID23", "fct_ID24", "fct_ID25", "fct_ID26"},
+      {"fct_ID31", "fct_ID32", "fct_ID33", "fct_ID34", "fct_ID35", "fct_ID36"},
+      {"fct_ID41", "fct_ID42", "fct_ID43", "fct_ID44", "fct_ID45", "fct_ID46"},
+      {"delta_min1", "delta_min2", "delta_min3", "delta_min4", "delta_min5", "delta_min6"},
+      {"delta_max1", "delta_max2", "delta_max3", "delta_max4", "delta_max5", "delta_max6"},
+      {"F1", "F2", "F3", "F4", "F5", "F6"},
+      {"E1", "E2", "E3", "E4", "E5", "E6"},
+      {"Ascale1", "Ascale2", "Ascale3", "Ascale4", "Ascale5", "Ascale6"},
+      {"Hscale1", "Hscale2", "Hscale3", "Hscale4", "Hscale5", "Hscale6"},
+  }};
+  for (std::size_t d = 0; d < 6; ++d) {
+    const bool rot = d >= 3;
+    const Dim dk = rot ? dim::moment : dim::stiffness;   // moment per radian
+    const Dim dc = rot ? Dim{1, 2, -1} : Dim{1, 0, -1};  // per (angular) velocity
+    const Dim dq = rot ? dim::none : dim::length;        // elongation or angle
+    const Dim dv = rot ? dim::rate : dim::velocity;      // (angular) velocity
+    k.cards.push_back(
+        card(blocks[d][0],
+             {R(n[0][d], 1, 20, "linear stiffness; with fct_ID1 the stiffness of the time step").dims(dk),
+              R(n[1][d], 21, 40, "linear damping coefficient").dims(dc),
+              R(n[2][d], 41, 60, "amplification of the curve's force; 0 = 1 (1 without fct_ID1)"),
+              R(n[3][d], 61, 80, "logarithmic rate amplification of the curve's force"),
+              R(n[4][d], 81, 100, "velocity of the logarithmic amplification; 0 = 1").dims(dv)}));
+    k.cards.push_back(
+        card(blocks[d][1],
+             {I(n[5][d], 1, 10, "force of the elongation f(dx); 0 = linear K").refs(IdKind::Other),
+              I(n[6][d], 11, 20,
+                "hardening flag: 0 elastic, 1 isotropic, 2 uncoupled, 4 kinematic, 5 residual elongation, 6 "
+                "isotropic with nonlinear unloading, 7 elastic hysteresis (8 is refused)")
+                  .allow({0, 1, 2, 4, 5, 6, 7, 8}),
+              I(n[7][d], 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
+              I(n[8][d], 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading")
+                  .refs(IdKind::Other),
+              I(n[9][d], 41, 50, "additional force of the velocity, Hscale g4(v/F)").refs(IdKind::Other),
+              R(n[10][d], 61, 80, "failure elongation (angle) in compression (< 0); 0 = none").dims(dq),
+              R(n[11][d], 81, 100, "failure elongation (angle) in tension (> 0); 0 = none").dims(dq)}));
+    k.cards.push_back(
+        card(blocks[d][2],
+             {R(n[12][d], 1, 20, "velocity scale of the g(v) curves; 0 = 1").dims(dv),
+              R(n[13][d], 21, 40, "scale of g(v) in the amplification (0 without fct_ID1)"),
+              R(n[14][d], 41, 60, "abscissa scale of fct_ID1; 0 = 1").dims(dq),
+              R(n[15][d], 61, 80, "ordinate scale of fct_ID4; 0 = 1").dims(rot ? dim::moment : dim::force)}));
+  }
+}
+
 // Heat exchange coefficient and radiation factor of the TYPE7 thermal cards: power per area per kelvin
 // (per kelvin^4 for the radiation factor), M T^-3.
 constexpr Dim kHeatTransfer{1, 0, -3};
@@ -263,19 +339,25 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
         card_v(
             "card 3", kAnyVersion, 110,
             {I("fct_ID1", 1, 10, "force of the elongation f(dx); 0 = linear K").refs(IdKind::Other),
-             I("H", 11, 20, "hardening flag: 0 elastic, 7 elastic hysteresis (1, 2, 4, 5, 6, 8 are refused)")
+             I("H", 11, 20,
+               "hardening flag: 0 elastic, 1 isotropic, 2 uncoupled, 4 kinematic, 5 residual elongation, "
+               "6 isotropic with nonlinear unloading, 7 elastic hysteresis, 8 elastic of the total length")
                  .allow({0, 1, 2, 4, 5, 6, 7, 8}),
              I("fct_ID2", 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
-             I("fct_ID3", 31, 40, "unloading curve of H 4, 5, 7").refs(IdKind::Other),
+             I("fct_ID3", 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading")
+                 .refs(IdKind::Other),
              R("delta_min", 61, 80, "failure elongation in compression (< 0); 0 = none").dims(dim::length),
              R("delta_max", 81, 100, "failure elongation in tension (> 0); 0 = none").dims(dim::length)}),
         card_v(
             "card 3", 120, kLastVersion,
             {I("fct_ID1", 1, 10, "force of the elongation f(dx); 0 = linear K").refs(IdKind::Other),
-             I("H", 11, 20, "hardening flag: 0 elastic, 7 elastic hysteresis (1, 2, 4, 5, 6, 8 are refused)")
+             I("H", 11, 20,
+               "hardening flag: 0 elastic, 1 isotropic, 2 uncoupled, 4 kinematic, 5 residual elongation, "
+               "6 isotropic with nonlinear unloading, 7 elastic hysteresis, 8 elastic of the total length")
                  .allow({0, 1, 2, 4, 5, 6, 7, 8}),
              I("fct_ID2", 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
-             I("fct_ID3", 31, 40, "unloading curve of H 4, 5, 7").refs(IdKind::Other),
+             I("fct_ID3", 31, 40, "H 4: lower yield force; 5: residual elongation; 6, 7: unloading")
+                 .refs(IdKind::Other),
              I("fct_ID4", 41, 50, "additional force of the velocity, Hscale g4(v/F)").refs(IdKind::Other),
              R("delta_min", 61, 80, "failure elongation in compression (< 0); 0 = none").dims(dim::length),
              R("delta_max", 81, 100, "failure elongation in tension (> 0); 0 = none").dims(dim::length)}),
@@ -315,70 +397,73 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
          I("Iequil", 91, 100, "1: moment equilibrium of the shear forces (not implemented)")
              .allow({0, 1})
              .not_implemented()})};
-    // Field names of the six blocks: [field][dof].
-    static constexpr std::array<std::array<std::string_view, 6>, 16> n = {{
-        {"K1", "K2", "K3", "K4", "K5", "K6"},
-        {"C1", "C2", "C3", "C4", "C5", "C6"},
-        {"A1", "A2", "A3", "A4", "A5", "A6"},
-        {"B1", "B2", "B3", "B4", "B5", "B6"},
-        {"D1", "D2", "D3", "D4", "D5", "D6"},
-        {"fct_ID11", "fct_ID12", "fct_ID13", "fct_ID14", "fct_ID15", "fct_ID16"},
-        {"H1", "H2", "H3", "H4", "H5", "H6"},
-        {"fct_ID21", "fct_ID22", "fct_ID23", "fct_ID24", "fct_ID25", "fct_ID26"},
-        {"fct_ID31", "fct_ID32", "fct_ID33", "fct_ID34", "fct_ID35", "fct_ID36"},
-        {"fct_ID41", "fct_ID42", "fct_ID43", "fct_ID44", "fct_ID45", "fct_ID46"},
-        {"delta_min1", "delta_min2", "delta_min3", "delta_min4", "delta_min5", "delta_min6"},
-        {"delta_max1", "delta_max2", "delta_max3", "delta_max4", "delta_max5", "delta_max6"},
-        {"F1", "F2", "F3", "F4", "F5", "F6"},
-        {"E1", "E2", "E3", "E4", "E5", "E6"},
-        {"Ascale1", "Ascale2", "Ascale3", "Ascale4", "Ascale5", "Ascale6"},
-        {"Hscale1", "Hscale2", "Hscale3", "Hscale4", "Hscale5", "Hscale6"},
-    }};
-    static constexpr std::array<std::string_view, 6> block = {
-        "X translation: card 1", "Y translation: card 1", "Z translation: card 1",
-        "X rotation: card 1",    "Y rotation: card 1",    "Z rotation: card 1"};
-    static constexpr std::array<std::string_view, 6> block2 = {
-        "X translation: card 2", "Y translation: card 2", "Z translation: card 2",
-        "X rotation: card 2",    "Y rotation: card 2",    "Z rotation: card 2"};
-    static constexpr std::array<std::string_view, 6> block3 = {
-        "X translation: card 3", "Y translation: card 3", "Z translation: card 3",
-        "X rotation: card 3",    "Y rotation: card 3",    "Z rotation: card 3"};
-    for (std::size_t d = 0; d < 6; ++d) {
-      const bool rot = d >= 3;
-      const Dim dk = rot ? dim::moment : dim::stiffness;   // moment per radian
-      const Dim dc = rot ? Dim{1, 2, -1} : Dim{1, 0, -1};  // per (angular) velocity
-      const Dim dq = rot ? dim::none : dim::length;        // elongation or angle
-      const Dim dv = rot ? dim::rate : dim::velocity;      // (angular) velocity
-      k.cards.push_back(
-          card(block[d],
-               {R(n[0][d], 1, 20, "linear stiffness; with fct_ID1 the stiffness of the time step").dims(dk),
-                R(n[1][d], 21, 40, "linear damping coefficient").dims(dc),
-                R(n[2][d], 41, 60, "amplification of the curve's force; 0 = 1 (1 without fct_ID1)"),
-                R(n[3][d], 61, 80, "logarithmic rate amplification of the curve's force"),
-                R(n[4][d], 81, 100, "velocity of the logarithmic amplification; 0 = 1").dims(dv)}));
-      k.cards.push_back(
-          card(block2[d],
-               {I(n[5][d], 1, 10, "force of the elongation f(dx); 0 = linear K").refs(IdKind::Other),
-                I(n[6][d], 11, 20,
-                  "hardening flag: 0 elastic, 7 elastic hysteresis (1, 2, 4, 5, 6, 8 are refused)")
-                    .allow({0, 1, 2, 4, 5, 6, 7, 8}),
-                I(n[7][d], 21, 30, "amplification g(v) of the curve's force (E g(v/F))").refs(IdKind::Other),
-                I(n[8][d], 31, 40, "unloading curve of H 4, 5, 7").refs(IdKind::Other),
-                I(n[9][d], 41, 50, "additional force of the velocity, Hscale g4(v/F)").refs(IdKind::Other),
-                R(n[10][d], 61, 80, "failure elongation (angle) in compression (< 0); 0 = none").dims(dq),
-                R(n[11][d], 81, 100, "failure elongation (angle) in tension (> 0); 0 = none").dims(dq)}));
-      k.cards.push_back(card(
-          block3[d],
-          {R(n[12][d], 1, 20, "velocity scale of the g(v) curves; 0 = 1").dims(dv),
-           R(n[13][d], 21, 40, "scale of g(v) in the amplification (0 without fct_ID1)"),
-           R(n[14][d], 41, 60, "abscissa scale of fct_ID1; 0 = 1").dims(dq),
-           R(n[15][d], 61, 80, "ordinate scale of fct_ID4; 0 = 1").dims(rot ? dim::moment : dim::force)}));
-    }
+    add_six_spring_laws(k, kSprGeneBlocks);
     k.cards.push_back(card("strain-rate filter",
                            {I("Fsmooth", 1, 10, "smoothing of the failure criterion (not implemented)")
                                 .allow({0, 1})
                                 .not_implemented(),
                             R("Fcut", 11, 30, "cutoff frequency of Fsmooth").dims(dim::rate).unused()}));
+    t.push_back(std::move(k));
+  }
+  {
+    // OpenRadioss hm_read_prop13.F; the layouts of prop_p13_spr_beam.cfg from 120 on (Asrate and Israte from
+    // 2018 on). The six laws X (tension), Y Z (shear), RX (torsion), RY RZ (bending) act in a frame that
+    // follows the spring; the cards after the six blocks only serve the failure modes Ifail2 1..3.
+    KeywordDecl k = kw("/PROP/SPR_BEAM",
+                       "beam-type spring property (TYPE13): six laws in a frame that follows the spring, the "
+                       "shear forces balanced by end moments",
+                       Header::IdUnit, true, "prop_ID");
+    k.aliases = {"/PROP/TYPE13"};
+    k.since = 120;
+    k.cards = {card(
+        "card 1",
+        {R("M", 1, 20, "spring mass, half to each node; must be > 0").dims(dim::mass),
+         R("Inertia", 21, 40,
+           "rotational inertia, half to each node; > 0 when a shear or rotation has K or C")
+             .dims(dim::inertia),
+         I("skew_ID", 41, 50, "skew whose Y axis (X if Y lies along the spring) orients the frame without n3")
+             .refs(IdKind::Other),
+         I("sens_ID", 51, 60, "sensor that activates or deactivates the spring; 0 = none")
+             .refs(IdKind::Other)
+             .not_implemented(),
+         I("Isflag", 61, 70, "sensor flag").allow({0, 1, 2}).unused(),
+         I("Ifail", 71, 80, "failure criterion: 0 each direction alone, 1 the sum of squares").allow({0, 1}),
+         I("Ileng", 81, 90, "1: mass, stiffness, damping and curves per unit length (not implemented)")
+             .allow({0, 1})
+             .not_implemented(),
+         I("Ifail2", 91, 100,
+           "failure mode: 0 by elongation (1 with velocity, 2 by force, 3 by energy: not implemented)")
+             .allow({0, 1, 2, 3})
+             .not_implemented()})};
+    add_six_spring_laws(k, kSprBeamBlocks);
+    k.cards.push_back(card(
+        "reference velocities",
+        {R("Vo", 1, 20, "reference velocity of the failure modes Ifail2 1..3").dims(dim::velocity).unused(),
+         R("Wo", 21, 40, "reference angular velocity of the failure modes Ifail2 1..3")
+             .dims(dim::rate)
+             .unused(),
+         R("Asrate", 41, 60, "cutoff frequency of the failure criterion's filter")
+             .dims(dim::rate)
+             .versions(2018)
+             .unused(),
+         I("Israte", 61, 70, "filter of the failure criterion (not implemented)")
+             .versions(2018)
+             .allow({0, 1})
+             .not_implemented()}));
+    static constexpr std::array<std::array<std::string_view, 5>, 6> fail = {{
+        {"failure X", "c1", "n1", "alpha1", "beta1"},
+        {"failure Y", "c2", "n2", "alpha2", "beta2"},
+        {"failure Z", "c3", "n3", "alpha3", "beta3"},
+        {"failure RX", "c4", "n4", "alpha4", "beta4"},
+        {"failure RY", "c5", "n5", "alpha5", "beta5"},
+        {"failure RZ", "c6", "n6", "alpha6", "beta6"},
+    }};
+    for (const auto& f : fail)
+      k.cards.push_back(
+          card(f[0], {R(f[1], 1, 20, "velocity term of the failure limits (Ifail2 1..3)").unused(),
+                      R(f[2], 21, 40, "exponent of that term").unused(),
+                      R(f[3], 41, 60, "weight of this direction (Ifail2 1..3)").unused(),
+                      R(f[4], 61, 80, "exponent of this direction (Ifail2 1..3)").unused()}));
     t.push_back(std::move(k));
   }
   {
@@ -2111,6 +2196,87 @@ void add_ogden(std::vector<KeywordDecl>& t) {
   t.push_back(std::move(k));
 }
 
+// /MAT/FOAM_TAB (law 70): tabulated visco-elastic foam (OpenRadioss hm_read_mat70.F; layouts of the
+// radioss51, 90 and 120 cfg files: Iflag, Shape and Hys from 90 on, Itens and its card from 120 on). One line
+// per curve: function, strain rate, scale. radx reads up to kFoamMaxCurves loading and as many unloading
+// curves.
+constexpr int kFoamMaxCurves = 10;
+std::string_view foam_name(int list, int k) {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const char* base :
+         {"fct_L", "rate_L", "scale_L", "fct_U", "rate_U", "scale_U", "loading curve ", "unloading curve "})
+      for (int i = 1; i <= kFoamMaxCurves; ++i) v.push_back(base + std::to_string(i));
+    return v;
+  }();
+  return names[static_cast<std::size_t>(list * kFoamMaxCurves + k)];
+}
+
+void add_foam_tab(std::vector<KeywordDecl>& t) {
+  KeywordDecl k = kw("/MAT/LAW70",
+                     "tabulated visco-elastic foam: loading curves per strain rate, unloading curve, "
+                     "hysteresis; one-point bricks",
+                     Header::IdUnit, true, "mat_ID");
+  k.aliases = {"/MAT/FOAM_TAB"};
+  k.cards = {
+      card("card 1", {R("RHO_I", 1, 20, "initial density").must().gt(0.0).dims(dim::density),
+                      R("RHO_ref", 21, 40, "reference density; 0 takes RHO_I").dims(dim::density)}),
+      card("card 2",
+           {R("E0", 1, 20, "initial Young's modulus (raised to the first slope of the loading curves)")
+                .must()
+                .gt(0.0)
+                .dims(dim::pressure),
+            R("nu", 21, 40, "Poisson's ratio"),
+            R("E_max", 41, 60, "largest Young's modulus; 0 = the largest slope of the loading curves")
+                .ge(0.0)
+                .dims(dim::pressure),
+            R("Eps_max", 61, 80, "strain beyond which the curves continue with the slope E_max; 0 = 1")
+                .zero_is(1.0)
+                .gt(0.0),
+            I("Itens", 81, 90, "1: the stress in expansion times fctIDTens(1 - rho / rho0)")
+                .versions(120)
+                .allow({0, 1})}),
+      card("card 3",
+           {R("Fcut", 1, 20, "cut-off frequency of the strain-rate filter; 0 = none").ge(0.0).dims(dim::rate),
+            I("Ismooth", 21, 30, "strain-rate filter flag (Fcut > 0 sets it)").allow({0, 1}),
+            I("Nload", 31, 40, "number of loading curves (strain rates), 1 to 10")
+                .must()
+                .ge(1)
+                .le(kFoamMaxCurves),
+            I("Nunload", 41, 50, "number of unloading curves, 0 to 10").ge(0).le(kFoamMaxCurves),
+            I("Iflag", 51, 60,
+              "unloading: 0 curves, 1 deviator and 2 stress times unload/static curve, 3 deviator and 4 "
+              "stress by the dissipated energy (Shape, Hys)")
+                .versions(90)
+                .allow({0, 1, 2, 3, 4}),
+            R("Shape", 61, 80, "exponent of the energy ratio of Iflag 3 and 4; 0 = 1")
+                .versions(90)
+                .zero_is(1.0),
+            R("Hys", 81, 100, "hysteresis factor of Iflag 3 and 4; 0 = 1").versions(90).zero_is(1.0)}),
+  };
+  for (int list = 0; list < 2; ++list)
+    for (int i = 0; i < kFoamMaxCurves; ++i) {
+      const int b = 3 * list;
+      k.cards.push_back(card_if(
+          foam_name(6 + list, i), when_gt(list == 0 ? "Nload" : "Nunload", i),
+          {I(foam_name(b, i), 1, 10, list == 0 ? "loading curve sigma(eps)" : "unloading curve sigma(eps)")
+               .refs(IdKind::Other),
+           R(foam_name(b + 1, i), 11, 30, "strain rate of the curve").ge(0.0).dims(dim::rate),
+           R(foam_name(b + 2, i), 31, 50, "scale of the curve's ordinates; 0 = 1")
+               .zero_is(1.0)
+               .dims(dim::pressure)}));
+    }
+  {
+    CardDecl c = card_if("tension card", when_eq("Itens", 1),
+                         {I("fctIDTens", 1, 10, "factor of the stress against 1 - rho / rho0 in expansion")
+                              .refs(IdKind::Other),
+                          R("FscaleTens", 11, 30, "scale of that factor; 0 = 1").zero_is(1.0)});
+    c.since = 120;
+    k.cards.push_back(std::move(c));
+  }
+  t.push_back(std::move(k));
+}
+
 // Issue 15's materials. /MAT/VOID and /MAT/RIGID compute no internal force (OpenRadioss hm_read_mat00.F,
 // hm_read_mat13.F): their E and nu give the contact stiffness and, for the rigid law, a stable step only.
 void add_void_and_rigid(std::vector<KeywordDecl>& t) {
@@ -2166,6 +2332,7 @@ const std::vector<KeywordDecl>& starter_keywords() {
     add_plas_brit(t);
     add_void_and_rigid(t);
     add_ogden(t);
+    add_foam_tab(t);
     add_groups(t);
     add_contact(t);
     add_loads(t);
@@ -2189,11 +2356,10 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW70", "/MAT/FOAM_TAB", "/MAT/LAW87",
         "/MAT/LAW88", "/MAT/LAW90", "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO", "/MAT/USER",
         // properties
-        "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE2", "/PROP/TRUSS", "/PROP/TYPE3", "/PROP/BEAM",
-        "/PROP/SPR_BEAM", "/PROP/TYPE9", "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP", "/PROP/TYPE11",
-        "/PROP/SH_SANDW", "/PROP/TYPE13", "/PROP/TYPE16", "/PROP/SH_FABR", "/PROP/TYPE17", "/PROP/TYPE18",
-        "/PROP/INT_BEAM", "/PROP/TYPE20", "/PROP/TSHELL", "/PROP/TYPE22", "/PROP/TYPE23", "/PROP/TYPE51",
-        "/PROP/TYPE52", "/PROP/USER",
+        "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE2", "/PROP/TRUSS", "/PROP/TYPE3", "/PROP/BEAM", "/PROP/TYPE9",
+        "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP", "/PROP/TYPE11", "/PROP/SH_SANDW", "/PROP/TYPE16",
+        "/PROP/SH_FABR", "/PROP/TYPE17", "/PROP/TYPE18", "/PROP/INT_BEAM", "/PROP/TYPE20", "/PROP/TSHELL",
+        "/PROP/TYPE22", "/PROP/TYPE23", "/PROP/TYPE51", "/PROP/TYPE52", "/PROP/USER",
         // elements
         "/BEAM", "/TRUSS", "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD", "/TRIA", "/SPHCEL",
         // groups, surfaces, boxes

@@ -74,9 +74,21 @@ std::int32_t ModelBuilder::ref(const IdIndex& index, const KeywordRecord& r, std
   }
   const auto it = index.find(id);
   if (it == index.end()) {
-    error_at(r, field, Diag::MissingReference,
-             std::string(field) + " = " + std::to_string(id) + ": there is no " +
-                 std::string(target_keyword) + "/" + std::to_string(id) + " in the deck");
+    const std::string prefix = std::string(target_keyword) + "/";
+    const auto unread = std::find_if(deck_.unread.begin(), deck_.unread.end(), [&](const Deck::Unread& u) {
+      return u.id == id && u.path.rfind(prefix, 0) == 0;
+    });
+    if (unread != deck_.unread.end()) {
+      const Where w = deck_.where(unread->pos);
+      error_at(r, field, Diag::MissingReference,
+               std::string(field) + " = " + std::to_string(id) + " names " + unread->path + " " +
+                   std::to_string(id) + " (" + std::string(w.file) + ":" + std::to_string(w.line) +
+                   "), a keyword radx does not read (reported there): what uses it cannot be built");
+    } else {
+      error_at(r, field, Diag::MissingReference,
+               std::string(field) + " = " + std::to_string(id) + ": there is no " +
+                   std::string(target_keyword) + "/" + std::to_string(id) + " in the deck");
+    }
     return kNone;
   }
   return it->second;
@@ -149,7 +161,8 @@ void ModelBuilder::build_materials() {
     const bool law0 = path == "/MAT/LAW0";
     const bool law13 = path == "/MAT/LAW13";
     const bool law42 = path == "/MAT/LAW42";
-    if (!law1 && !law2 && !law36 && !law27 && !law0 && !law13 && !law42) continue;
+    const bool law70 = path == "/MAT/LAW70";
+    if (!law1 && !law2 && !law36 && !law27 && !law0 && !law13 && !law42 && !law70) continue;
     model::Material mat;
     mat.id = r.id;
     mat.title = r.title;
@@ -160,10 +173,12 @@ void ModelBuilder::build_materials() {
               : law36 ? model::MaterialLaw::PlasTab
               : law0  ? model::MaterialLaw::Void
               : law42 ? model::MaterialLaw::Ogden
+              : law70 ? model::MaterialLaw::FoamTab
                       : model::MaterialLaw::Rigid;
-    if (law0 || law42) {
+    if (law0 || law42 || law70) {
       if (law0) read_void(r, mat);
       if (law42) read_ogden(r, mat);
+      if (law70) read_foam_tab(r, mat);
       if (register_id(mat_ids_, mat.id, static_cast<std::int32_t>(m_.materials.size()), r, "material", first))
         m_.materials.push_back(std::move(mat));
       continue;
@@ -536,6 +551,13 @@ void ModelBuilder::resolve_fail_tab_functions() {
   }
 }
 
+void ModelBuilder::shell_hourglass_defaults(const KeywordRecord& r, model::ShellProperty& s) {
+  const bool h3 = s.ishell == 3;
+  s.hm = r.find("Hm") && !r.find("Hm")->defaulted ? r.get_real("Hm") : (h3 ? 0.1 : 0.01);
+  s.hf = r.find("Hf") && !r.find("Hf")->defaulted ? r.get_real("Hf") : (h3 ? 0.1 : 0.01);
+  s.hr = r.find("Hr") && !r.find("Hr")->defaulted ? r.get_real("Hr") : 0.01;
+}
+
 void ModelBuilder::build_properties() {
   // Two-stage defaults: the /PROP value if non-zero, else the first /DEF_SHELL or /DEF_SOLID value if
   // non-zero, else the hard default (explicit analysis).
@@ -556,12 +578,13 @@ void ModelBuilder::build_properties() {
   std::unordered_map<std::int64_t, SourcePos> first;
   for (const auto& r : deck_.records) {
     const auto path = r.decl->path;
-    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" && path != "/PROP/SPR_GENE")
+    if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" &&
+        path != "/PROP/SPR_GENE" && path != "/PROP/SPR_BEAM")
       continue;
     model::Property p;
     p.id = r.id;
     p.title = r.title;
-    if (path == "/PROP/SPRING" || path == "/PROP/SPR_GENE") {
+    if (path == "/PROP/SPRING" || path == "/PROP/SPR_GENE" || path == "/PROP/SPR_BEAM") {
       read_spring_property(r, p);
     } else if (path == "/PROP/SHELL") {
       p.kind = model::PropertyKind::Shell;
@@ -578,10 +601,7 @@ void ModelBuilder::build_properties() {
       s.ipos = static_cast<int>(r.get_int("Ipos"));
       s.p_thick_fail = r.get_real("P_Thick_Fail");
       if (s.p_thick_fail == 0) s.p_thick_fail = 0.999999;
-      const bool h3 = s.ishell == 3;
-      s.hm = r.find("Hm") && !r.find("Hm")->defaulted ? r.get_real("Hm") : (h3 ? 0.1 : 0.01);
-      s.hf = r.find("Hf") && !r.find("Hf")->defaulted ? r.get_real("Hf") : (h3 ? 0.1 : 0.01);
-      s.hr = r.find("Hr") && !r.find("Hr")->defaulted ? r.get_real("Hr") : 0.01;
+      shell_hourglass_defaults(r, s);
       s.dm = r.get_real("Dm");
       s.dn = r.get_real("Dn");
       if (s.dn == 0 && s.ishell == 24) s.dn = 0.015;
@@ -607,8 +627,15 @@ void ModelBuilder::build_properties() {
       s.iale = static_cast<int>(r.get_int("Iale"));
       s.inpts = static_cast<int>(r.get_int("Inpts"));
       s.qa = r.get_real("qa");
-      if (s.qa == 0) s.qa = 1.1;
       s.qb = r.get_real("qb");
+      // Both 0 or blank in the deck (the fields' rules have put the defaults in): law 70 then runs without
+      // bulk viscosity (hm_read_prop14.F).
+      auto zero_in_deck = [&](std::string_view name) {
+        const auto* v = r.find(name);
+        return v == nullptr || v->defaulted || (v->decl != nullptr && v->r == 0.0);
+      };
+      s.q_default = zero_in_deck("qa") && zero_in_deck("qb");
+      if (s.qa == 0) s.qa = 1.1;
       if (s.qb == 0) s.qb = 0.05;
       s.h = r.get_real("h");
       if (s.h == 0) s.h = 0.1;
@@ -988,6 +1015,7 @@ model::Model ModelBuilder::build() {
   build_functions();
   move_functions();
   resolve_plas_tab_functions();
+  resolve_foam_tab_functions();
   resolve_fail_tab_functions();
   resolve_spring_functions();
   build_element_groups();  // before surfaces and node groups, which are built from element groups

@@ -50,17 +50,21 @@ class ModelBuilder {
   void read_plas_tab(const KeywordRecord& r, model::Material& mat);   // /MAT/PLAS_TAB's cards
   void read_plas_brit(const KeywordRecord& r, model::Material& mat);  // /MAT/PLAS_BRIT's cards
   model::Material* failure_material(const KeywordRecord& r, std::string_view keyword);  // or nullptr
-  void build_failure_models();                                    // /FAIL/JOHNSON, after the materials
-  void resolve_plas_tab_functions();                              // after the functions
-  void build_fail_tab();                                          // /FAIL/TAB, after the materials
-  void resolve_fail_tab_functions();                              // its functions, after the functions
-  void read_ogden(const KeywordRecord& r, model::Material& mat);  // /MAT/OGDEN (build_hyperelastic.cpp)
-  void read_void(const KeywordRecord& r, model::Material& mat);   // /MAT/VOID's optional card
+  void build_failure_models();                                       // /FAIL/JOHNSON, after the materials
+  void resolve_plas_tab_functions();                                 // after the functions
+  void build_fail_tab();                                             // /FAIL/TAB, after the materials
+  void resolve_fail_tab_functions();                                 // its functions, after the functions
+  void read_ogden(const KeywordRecord& r, model::Material& mat);     // /MAT/OGDEN (build_hyperelastic.cpp)
+  void read_foam_tab(const KeywordRecord& r, model::Material& mat);  // /MAT/FOAM_TAB (build_foam_tab.cpp)
+  void resolve_foam_tab_functions();  // build_foam_tab.cpp: the curves' ids, their checks
+  void read_void(const KeywordRecord& r, model::Material& mat);  // /MAT/VOID's optional card
   void build_rigid_material_bodies();  // build_rigid_materials.cpp: one body per connected /MAT/RIGID set
   void build_properties();
   void build_subsets_and_parts();
   void build_elements();
   void read_spring_property(const KeywordRecord& r, model::Property& p);  // build_springs.cpp
+  // Hm and Hf as the deck gives them, else the default of the shell's Ishell (0.1 for 3, 0.01 otherwise).
+  static void shell_hourglass_defaults(const KeywordRecord& r, model::ShellProperty& s);
   void read_spring_law(const KeywordRecord& r, model::SpringLaw& s, const std::string& sfx, bool type8);
   void resolve_spring_skews();      // after the skews
   void build_springs();             // after the parts
@@ -86,7 +90,7 @@ class ModelBuilder {
   void warn_massless_accelerometers();
   void check_unused_nodes();
   void check_formulations();     // check_formulations.cpp
-  void check_ogden_parts();      // build_hyperelastic.cpp: law 42 on one-point bricks only
+  void check_ogden_parts();      // build_hyperelastic.cpp: laws 42 and 70 on one-point bricks only
   void check_shell_only_laws();  // check_formulations.cpp: law 27 on shells with points only
   // The transform stage (build_transforms.cpp): submodel transforms right after the elements, node-group
   // transforms after the groups, /MOVE_FUNCT after the functions.

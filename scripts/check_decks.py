@@ -28,7 +28,11 @@ import os
 import re
 import sys
 
-SPRING_PROPS = ("/PROP/SPRING", "/PROP/TYPE4", "/PROP/SPR_GENE", "/PROP/TYPE8")
+SPRING_PROPS = ("/PROP/SPRING", "/PROP/TYPE4", "/PROP/SPR_GENE", "/PROP/TYPE8", "/PROP/SPR_BEAM", "/PROP/TYPE13")
+SIX_LAW_PROPS = ("/PROP/SPR_GENE", "/PROP/TYPE8", "/PROP/SPR_BEAM", "/PROP/TYPE13")
+# The spring hardening flags radx runs (check_formulations.cpp spring_h_runs); TYPE13 as TYPE8
+SPRING_H_TYPE4 = (0, 1, 2, 4, 5, 6, 7, 8)
+SPRING_H_TYPE8 = (0, 1, 2, 4, 5, 6, 7)
 RULER_RE = re.compile(r"^#-+1-+\|")
 REAL_RE = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([EeDd][+-]?\d+|[+-]\d+)?$")
 INT_RE = re.compile(r"^[+-]?\d+$")
@@ -153,6 +157,22 @@ def prop_spr_gene(v):
     return cards
 
 
+def prop_spr_beam(v):
+    """/PROP/SPR_BEAM (TYPE13), the 120 layout on (prop_p13_spr_beam.cfg; Asrate and Israte from 2018): the six
+    blocks of /PROP/SPR_GENE after a card with Ileng and Ifail2, then the reference velocities and six cards of
+    failure parameters."""
+    c1 = [F("M", "R", 1, 20), F("Inertia", "R", 21, 40), F("skew_ID", "I", 41, 50), F("sens_ID", "I", 51, 60),
+          F("Isflag", "I", 61, 70), F("Ifail", "I", 71, 80), F("Ileng", "I", 81, 90), F("Ifail2", "I", 91, 100)]
+    cards = [card(c1)] + prop_spr_gene(v)[1:-1]
+    cv = [F("Vo", "R", 1, 20), F("Wo", "R", 21, 40)]
+    if v >= 2018:
+        cv += [F("Asrate", "R", 41, 60), F("Israte", "I", 61, 70)]
+    cards.append(card(cv))
+    for d in "123456":
+        cards.append(card(reals("c" + d, "n" + d, "alpha" + d, "beta" + d)))
+    return cards
+
+
 def prop_solid(v):
     c1 = [F("Isolid", "I", 1, 10), F("Ismstr", "I", 11, 20)]
     if v >= 2022:
@@ -247,6 +267,27 @@ def mat_law36(v):
         for j in range(20):
             fields = [F("%s%d" % (base, 5 * j + c + 1), kind, width * c + 1, width * (c + 1)) for c in range(5)]
             cards.append(card(fields, cond=lambda x, j=j: x.get("N_funct", 0) > 5 * j))
+    return cards
+
+
+def mat_law70(v):
+    """/MAT/FOAM_TAB: Itens at 81-90 from 120, Iflag, Shape, Hys from 90; then Nload lines and Nunload lines
+    (function 1-10, rate 11-30, scale 31-50), radx reads up to 10 each; the tension line when Itens = 1 (120+)."""
+    c2 = [F("E0", "R", 1, 20), F("nu", "R", 21, 40), F("E_max", "R", 41, 60), F("Eps_max", "R", 61, 80)]
+    if v >= 120:
+        c2.append(F("Itens", "I", 81, 90))
+    c3 = [F("Fcut", "R", 1, 20), F("Ismooth", "I", 21, 30), F("Nload", "I", 31, 40), F("Nunload", "I", 41, 50)]
+    if v >= 90:
+        c3 += [F("Iflag", "I", 51, 60), F("Shape", "R", 61, 80), F("Hys", "R", 81, 100)]
+    cards = [card(reals("RHO_I", "RHO_ref")), card(c2), card(c3)]
+    for what, count in (("L", "Nload"), ("U", "Nunload")):
+        for k in range(10):
+            fields = [F("fct_%s%d" % (what, k + 1), "I", 1, 10), F("rate_%s%d" % (what, k + 1), "R", 11, 30),
+                      F("scale_%s%d" % (what, k + 1), "R", 31, 50)]
+            cards.append(card(fields, cond=lambda x, k=k, count=count: x.get(count, 0) > k))
+    if v >= 120:
+        cards.append(card([F("fctIDTens", "I", 1, 10), F("FscaleTens", "R", 11, 30)],
+                          cond=lambda x: x.get("Itens", 0) == 1))
     return cards
 
 
@@ -615,6 +656,8 @@ STARTER = {
     "/PROP/TYPE4": ("id", True, prop_spring, None, None),
     "/PROP/SPR_GENE": ("id", True, prop_spr_gene, None, None),
     "/PROP/TYPE8": ("id", True, prop_spr_gene, None, None),
+    "/PROP/SPR_BEAM": ("id", True, prop_spr_beam, None, None),
+    "/PROP/TYPE13": ("id", True, prop_spr_beam, None, None),
     "/SH3N": ("part", False, lambda v: [], "records", SH3N_REC),
     "/PART": ("id", True, part, None, None),
     "/PROP/SHELL": ("id", True, prop_shell, None, None),
@@ -636,6 +679,8 @@ STARTER = {
     "/MAT/LAW00": ("id", True, mat_void, None, None),
     "/MAT/LAW13": ("id", True, mat_law1, None, None),
     "/MAT/LAW42": ("id", True, mat_law42, None, None),
+    "/MAT/LAW70": ("id", True, mat_law70, None, None),
+    "/MAT/FOAM_TAB": ("id", True, mat_law70, None, None),
     "/MAT/OGDEN": ("id", True, mat_law42, None, None),
     "/MAT/RIGID": ("id", True, mat_law1, None, None),
     "/FAIL/JOHNSON": ("id", False, fail_johnson, None, None),
@@ -946,6 +991,11 @@ class Checker:
             if not tok:
                 vals[name] = None
                 continue
+            # Two values in one number field (shifted columns): Radioss reads the leading one (RX207).
+            if typ in ("I", "R") and len(tok.split()) > 1 and REAL_RE.match(tok.split()[0]):
+                self.warn(file, lineno, "%s: %s = %r holds two values; the leading one is read" % (kw, name, tok))
+                tok = tok.split()[0]
+                cell = tok
             if typ == "I":
                 if not INT_RE.match(tok):
                     self.issue("RX201", file, lineno, "%s: %s = %r is not an integer" % (kw, name, tok))
@@ -1196,7 +1246,7 @@ class Checker:
             else:
                 self.open_subs.pop()
             return
-        if path in ("/PROP/SPR_GENE", "/PROP/TYPE8") and v < 120:
+        if path in SIX_LAW_PROPS and v < 120:
             self.issue("RX307", file, lineno, "%s is read from the 120 layout on, not in %d" % (path, v))
             return
         if path == "/GRNOD/GEN_INCR" and v < 2017:
@@ -1301,11 +1351,12 @@ def semantic(ck, m):
 
     parts = by_id(("/PART",), "part")
     props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14", "/PROP/SPRING", "/PROP/TYPE4",
-                   "/PROP/SPR_GENE", "/PROP/TYPE8"),
+                   "/PROP/SPR_GENE", "/PROP/TYPE8", "/PROP/SPR_BEAM", "/PROP/TYPE13"),
                   "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02",
                   "/MAT/LAW36", "/MAT/PLAS_TAB", "/MAT/LAW27", "/MAT/PLAS_BRIT", "/MAT/LAW0", "/MAT/VOID",
-                  "/MAT/LAW00", "/MAT/LAW13", "/MAT/RIGID", "/MAT/LAW42", "/MAT/OGDEN"), "material")
+                  "/MAT/LAW00", "/MAT/LAW13", "/MAT/RIGID", "/MAT/LAW42", "/MAT/OGDEN", "/MAT/LAW70",
+                  "/MAT/FOAM_TAB"), "material")
     grnods = by_id(tuple(k for k in STARTER if k.startswith("/GRNOD/")), "node group")
     surfs = by_id(tuple(k for k in STARTER if k.startswith("/SURF/")), "surface")
 
@@ -1482,6 +1533,16 @@ def semantic(ck, m):
                 p = pos(o, "N")
                 I("RX501", p[0], p[1], "N = %d outside 0..10" % nn)
 
+    # H 4, 5, 6 need fct_ID1 and fct_ID3, H 8 fct_ID1 (build_springs.cpp read_spring_law)
+    def spring_h_curves(o, d):
+        h = val(o, "H" + d, 0)
+        if h in (4, 5, 6, 8) and val(o, "fct_ID1" + d, 0) == 0:
+            p = pos(o, "fct_ID1" + d)
+            I("RX502", p[0], p[1], "spring property %d: H%s = %d needs fct_ID1%s" % (o["id"], d, h, d))
+        if h in (4, 5, 6) and val(o, "fct_ID3" + d, 0) == 0:
+            p = pos(o, "fct_ID3" + d)
+            I("RX502", p[0], p[1], "spring property %d: H%s = %d needs fct_ID3%s" % (o["id"], d, h, d))
+
     # springs (build_springs.cpp): mass > 0, K >= 0 (> 0 without damping or with a curve), C >= 0, the curves
     # exist, failure elongations of the right sign
     for o in props.values():
@@ -1508,17 +1569,20 @@ def semantic(ck, m):
             if f != 0 and f not in functs:
                 p = pos(o, name)
                 I("RX402", p[0], p[1], "spring property %d: function %d does not exist" % (o["id"], f))
+        spring_h_curves(o, "")
 
-    # TYPE8 springs (build_springs.cpp): mass > 0, inertia > 0 when a rotation has stiffness or damping, per
-    # degree of freedom K >= 0 (> 0 with a curve), C >= 0, the curves exist, failure limits of the right sign;
-    # the skew exists and is fixed (a moving one is RX510); Ifail2, Iequil, Fsmooth, sens_ID not implemented
+    # TYPE8 and TYPE13 springs (build_springs.cpp): mass > 0, inertia > 0 when a rotation (for TYPE13 also a
+    # shear) has stiffness or damping, per degree of freedom K >= 0 (> 0 with a curve), C >= 0, the curves exist,
+    # failure limits of the right sign; the skew exists (TYPE8: and is fixed, a moving one is RX510); TYPE8's
+    # Ifail2, Iequil, Fsmooth, TYPE13's Ileng, Ifail2, Israte, and sens_ID are not implemented
     for o in props.values():
-        if o["path"] not in ("/PROP/SPR_GENE", "/PROP/TYPE8"):
+        if o["path"] not in SIX_LAW_PROPS:
             continue
+        type13 = o["path"] in ("/PROP/SPR_BEAM", "/PROP/TYPE13")
         if not val(o, "M", 0.0) > 1e-15:
             p = pos(o, "M")
             I("RX501", p[0], p[1], "spring mass %g is not positive" % val(o, "M", 0.0))
-        rot = any(val(o, "K" + d, 0.0) > 0 or val(o, "C" + d, 0.0) > 0 for d in "456")
+        rot = any(val(o, "K" + d, 0.0) > 0 or val(o, "C" + d, 0.0) > 0 for d in ("23456" if type13 else "456"))
         if val(o, "Inertia", 0.0) < 0 or (rot and not val(o, "Inertia", 0.0) > 1e-15):
             p = pos(o, "Inertia")
             I("RX501", p[0], p[1], "spring inertia %g is not positive" % val(o, "Inertia", 0.0))
@@ -1541,7 +1605,8 @@ def semantic(ck, m):
                 if f != 0 and f not in functs:
                     p = pos(o, name + d)
                     I("RX402", p[0], p[1], "spring property %d: function %d does not exist" % (o["id"], f))
-        for name in ("Ifail2", "Iequil", "Fsmooth", "sens_ID"):
+            spring_h_curves(o, d)
+        for name in (("Ileng", "Ifail2", "Israte", "sens_ID") if type13 else ("Ifail2", "Iequil", "Fsmooth", "sens_ID")):
             if val(o, name, 0) != 0:
                 p = pos(o, name)
                 I("RX510", p[0], p[1], "%s %d: %s changes the physics" % (o["path"], o["id"], name))
@@ -1551,7 +1616,7 @@ def semantic(ck, m):
             p = pos(o, "skew_ID")
             if skew is None:
                 I("RX402", p[0], p[1], "spring property %d: skew %d does not exist" % (o["id"], sk))
-            elif skew["path"] == "/SKEW/MOV":
+            elif skew["path"] == "/SKEW/MOV" and not type13:
                 I("RX510", p[0], p[1], "spring property %d: moving skew %d" % (o["id"], sk))
 
     # formulations (check_formulations.cpp): a flag of a property used by elements must be one radx implements,
@@ -1574,15 +1639,15 @@ def semantic(ck, m):
         o = props[prop_id]
         bad = []
         if o["path"] in ("/PROP/SPRING", "/PROP/TYPE4"):
-            # the elastic spring and the elastic hysteresis run (H 7 without fct_ID3 is H 2); without fct_ID1 H
-            # does not act (linear)
+            # H 0 1 2 4 5 6 7 8 run (H 7 without fct_ID3 is H 2); without fct_ID1 H 1 2 7 do not act (linear)
             h = val(o, "H", 0)
-            if val(o, "fct_ID1", 0) != 0 and (h not in (0, 7) or (h == 7 and val(o, "fct_ID3", 0) == 0)):
+            if val(o, "fct_ID1", 0) != 0 and h not in SPRING_H_TYPE4:
                 bad.append("H")
-        elif o["path"] in ("/PROP/SPR_GENE", "/PROP/TYPE8"):
+        elif o["path"] in SIX_LAW_PROPS:
+            # as TYPE4 but H 8, refused with or without a curve (the starter keeps it)
             for d in "123456":
                 h = val(o, "H" + d, 0)
-                if val(o, "fct_ID1" + d, 0) != 0 and (h not in (0, 7) or (h == 7 and val(o, "fct_ID3" + d, 0) == 0)):
+                if (val(o, "fct_ID1" + d, 0) != 0 and h not in SPRING_H_TYPE8) or h == 8:
                     bad.append("H" + d)
         elif o["path"] in ("/PROP/SHELL", "/PROP/TYPE1"):
             # Ishell 1, 12 (QBAT) and 24 (QEPH; 22 and 23 run as 24, elements.md 1.1)
@@ -1659,6 +1724,20 @@ def semantic(ck, m):
             if resolved(prop, "Ismstr", "/DEF_SOLID", 4) != 4:
                 p = pos(prop, "Ismstr")
                 I("RX510", p[0], p[1], "law 42 with Ismstr %d (part %d)" % (resolved(prop, "Ismstr", "/DEF_SOLID", 4), pid))
+    # law 70 on one-point bricks only (build_hyperelastic.cpp check_ogden_parts)
+    for pid, kinds in part_kind.items():
+        if pid not in parts:
+            continue
+        mat = mats.get(val(parts[pid], "mat_ID"))
+        prop = props.get(val(parts[pid], "prop_ID"))
+        if mat is None or prop is None or mat["path"] not in ("/MAT/LAW70", "/MAT/FOAM_TAB"):
+            continue
+        if kinds & {"/SHELL", "/SH3N", "/TETRA4"}:
+            I("RX510", mat["pos"][0], mat["pos"][1], "law 70 on shells or tetrahedra (part %d)" % pid)
+        if "/BRICK" in kinds and prop["path"] in ("/PROP/SOLID", "/PROP/TYPE14"):
+            if resolved(prop, "Isolid", "/DEF_SOLID", 1) not in (1, 2):
+                p = pos(prop, "Isolid")
+                I("RX510", p[0], p[1], "law 70 with Isolid %d (part %d)" % (resolved(prop, "Isolid", "/DEF_SOLID", 1), pid))
     # fields read but not implemented whose non-zero value changes the physics (keywords_starter.cpp)
     for o in props.values():
         if o["path"] in ("/PROP/SOLID", "/PROP/TYPE14"):
@@ -1687,6 +1766,21 @@ def semantic(ck, m):
         if nu >= 0.5 or nu <= -1.0 or (nu < 0 and o["path"] in ("/MAT/LAW42", "/MAT/OGDEN")):
             p = pos(o, "nu")
             I("RX503", p[0], p[1], "Poisson's ratio %g" % nu)
+        if o["path"] in ("/MAT/LAW70", "/MAT/FOAM_TAB"):
+            # the fields' rules (keywords_starter.cpp add_foam_tab), then build_foam_tab.cpp read_foam_tab
+            if nu >= 0.5 or nu < 0:
+                p = pos(o, "nu")
+                I("RX503", p[0], p[1], "Poisson's ratio %g" % nu)
+            for name, lo, hi in (("Nload", 1, 10), ("Nunload", 0, 10), ("Iflag", 0, 4), ("Itens", 0, 1),
+                                 ("Ismooth", 0, 1)):
+                x = val(o, name, 0) or 0
+                if not lo <= x <= hi:
+                    p = pos(o, name)
+                    I("RX501", p[0], p[1], "%s %d: %s = %d" % (o["path"], o["id"], name, x))
+            if not (val(o, "E0", 0.0) or 0.0) > 0:
+                p = pos(o, "E0")
+                I("RX501" if val(o, "E0", None) is not None else "RX502", p[0], p[1], "E0 must be > 0")
+            continue  # no E
         if o["path"] in ("/MAT/LAW42", "/MAT/OGDEN"):
             # the fields' rules (keywords_starter.cpp add_ogden), then build_hyperelastic.cpp read_ogden
             for name in ("fct_IDbulk", "M"):
@@ -1800,6 +1894,23 @@ def semantic(ck, m):
             if val(o, name, 0) not in (0, 0.0):
                 p = pos(o, name)
                 I("RX510", p[0], p[1], "%s %d: %s not implemented by radx" % (o["path"], o["id"], name))
+    # /MAT/FOAM_TAB: each curve names a function, rates distinct within the loading and the unloading curves,
+    # the tension function with Itens 1 (build_foam_tab.cpp)
+    for o in mats.values():
+        if o["path"] not in ("/MAT/LAW70", "/MAT/FOAM_TAB"):
+            continue
+        for what, count in (("L", "Nload"), ("U", "Nunload")):
+            n = max(0, min(val(o, count, 0) or 0, 10))
+            rates = []
+            for k in range(1, n + 1):
+                need(o, "fct_%s%d" % (what, k), functs, "function", zero_ok=False)
+                r = val(o, "rate_%s%d" % (what, k), 0.0) or 0.0
+                if r in rates:
+                    p = pos(o, "rate_%s%d" % (what, k))
+                    I("RX507", p[0], p[1], "%s %d: two %sing curves at rate %g" % (o["path"], o["id"], what, r))
+                rates.append(r)
+        if val(o, "Itens", 0) == 1:
+            need(o, "fctIDTens", functs, "function", zero_ok=False)
     # /FAIL/JOHNSON/mat_ID: on an existing LAW2 or LAW36 material, one per material
     failed_mats = set()
     for o in m.of("/FAIL/JOHNSON"):

@@ -489,12 +489,12 @@ def _():
     return d, "spring 31 joins node 3 to node 999, which does not exist", [("RX406", "SPRING_31")]
 
 
-@fault("spring_hardening_refused")
+@fault("spring_hardening_needs_curve")
 def _():
-    d = with_spring(base(), fct_ID1=7, H=4, fct_ID3=7)
+    d = with_spring(base(), fct_ID1=7, H=4)
     d.insert_before("AFTER_MATS", funct_rows(7, [(-1.0, -1000.0), (0.0, 0.0), (1.0, 1000.0)], "Spring force", "F7"))
-    return d, "/PROP/SPRING/4 asks for H = 4 (kinematic hardening), which radx does not implement: refused by name", \
-        [("RX510", "PSPR.H")]
+    return d, "/PROP/SPRING/4 asks for H = 4 (kinematic hardening) without fct_ID3, its lower yield curve", \
+        [("RX502", "PSPR.fct_ID3")]
 
 
 SPR8 = dict(M=1e-6, Inertia=0.0, skew_ID=0, sens_ID=0, Isflag=0, Ifail=0, Ifail2=0, Iequil=0, Fsmooth=0, Fcut=0.0,
@@ -529,10 +529,10 @@ def _():
 
 @fault("spring8_hardening_refused")
 def _():
-    d = with_spring8(base(), fct_ID12=7, H2=6, fct_ID32=7, K2=1000.0)
+    d = with_spring8(base(), fct_ID12=7, H2=8, K2=1000.0)
     d.insert_before("AFTER_MATS", funct_rows(7, [(-1.0, -1000.0), (0.0, 0.0), (1.0, 1000.0)], "Spring force", "F7"))
-    return d, "/PROP/SPR_GENE/4 asks for H2 = 6 (hardening of the yield curve) on its Y law, which radx does not " \
-        "implement: refused by name", [("RX510", "PSPR8.H2")]
+    return d, "/PROP/SPR_GENE/4 asks for H2 = 8 (force of the total length) on its Y law, which radx does not " \
+        "implement for TYPE8: refused by name", [("RX510", "PSPR8.H2")]
 
 
 @fault("spring8_iequil_refused")
@@ -540,6 +540,35 @@ def _():
     d = with_spring8(base(), Iequil=1)
     return d, "/PROP/SPR_GENE/4 asks for Iequil = 1 (moment equilibrium of the shear forces), which radx does not " \
         "implement", [("RX510", "PSPR8.Iequil")]
+
+
+SPR13 = dict({k: v for k, v in SPR8.items() if k not in ("Iequil", "Fsmooth", "Fcut")}, Ileng=0, Vo=0.0, Wo=0.0,
+             Asrate=0.0, Israte=0,
+             **{k + d: 0.0 for d in "123456" for k in ("c", "n", "alpha", "beta")})
+
+
+def with_spring13(d, **prop):
+    """d with /SPRING/4 (spring 31 between the plate's nodes 3 and 6, tag SPRING_31) in part 4 (no material) of
+    /PROP/SPR_BEAM/4 (tag PSPR13: M 1e-6, K1 1000, the given values on top)."""
+    d.insert_before("AFTER_PARTS", block("SPRING", "/SPRING", 4, rows=[(31, 3, 6, 0)], row_tags=["SPRING_31"]) +
+                    part(4, "Spring", 4, 0))
+    d.insert_before("AFTER_MATS", block("PSPR13", "/PROP/SPR_BEAM", 4, "Beam spring",
+                                        **dict(SPR13, K1=1000.0, **prop)))
+    return d
+
+
+@fault("spring13_shear_without_inertia")
+def _():
+    d = with_spring13(base(), K2=50.0)
+    return d, "/PROP/SPR_BEAM/4 gives the Y shear a stiffness K2 = 50 but no Inertia: its end moments would turn " \
+        "nodes without inertia", [("RX501", "PSPR13.Inertia")]
+
+
+@fault("spring13_ileng_refused")
+def _():
+    d = with_spring13(base(), Ileng=1)
+    return d, "/PROP/SPR_BEAM/4 asks for Ileng = 1 (values per unit length), which radx does not implement for " \
+        "TYPE13", [("RX510", "PSPR13.Ileng")]
 
 
 @fault("tetra_zero_volume")
@@ -793,6 +822,50 @@ def _():
     d.update("PART2", mat_ID=3)
     d.update("PSO", Isolid=24)
     return d, "/MAT/OGDEN/3 on bricks of Isolid 24 (law 42 runs on Isolid 1 and 2 only)", [("RX510", "PSO.Isolid")]
+
+
+def foam(mid=3, load=((7, 0.0, 1.0),), unload=(), points=((0.0, 0.0), (0.5, 0.2), (0.8, 1.0)), **kw):
+    """/MAT/FOAM_TAB/mid (tag FO; loading curves on /FUNCT/7, tag F7) before AFTER_MATS; no part uses it."""
+    values = dict(RHO_I=5e-11, E0=20.0, nu=0.0, E_max=0.0, Eps_max=0.0, Nload=len(load), Nunload=len(unload),
+                  Iflag=0, fill=0)
+    for k, (fid, rate, scale) in enumerate(load):
+        values.update({"fct_L%d" % (k + 1): fid, "rate_L%d" % (k + 1): rate, "scale_L%d" % (k + 1): scale})
+    for k, (fid, rate, scale) in enumerate(unload):
+        values.update({"fct_U%d" % (k + 1): fid, "rate_U%d" % (k + 1): rate, "scale_U%d" % (k + 1): scale})
+    values.update(kw)
+    return (block("FO", "/MAT/FOAM_TAB", mid, "Foam (tabulated)", **values) +
+            funct_rows(7, list(points), "Foam loading curve", tag="F7"))
+
+
+@fault("foam_on_shells")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", foam())
+    d.update("PART1", mat_ID=3)
+    return d, "/MAT/FOAM_TAB/3 on the shell part 1 (law 70 runs on one-point bricks only)", [("RX510", "FO_KW")]
+
+
+@fault("foam_heph")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", foam())
+    d.update("PART2", mat_ID=3)
+    d.update("PSO", Isolid=24)
+    return d, "/MAT/FOAM_TAB/3 on bricks of Isolid 24 (law 70 runs on Isolid 1 and 2 only)", [("RX510", "PSO.Isolid")]
+
+
+@fault("foam_same_rates")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", foam(load=((7, 0.0, 1.0), (7, 0.0, 2.0))))
+    return d, "/MAT/FOAM_TAB/3 two loading curves at the same strain rate 0", [("RX507", "FO.rate_L2")]
+
+
+@fault("foam_missing_function")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", foam(load=((99, 0.0, 1.0),)))
+    return d, "/MAT/FOAM_TAB/3 fct_L1 = 99 names no /FUNCT", [("RX402", "FO.fct_L1")]
 
 
 @fault("rigid_no_density")

@@ -16,6 +16,8 @@ Decks (units Mg, mm, s: MPa, N, mJ):
   ringing_strip    a cantilever strip ringing after a tip pulse, on the nodal time step of /DT/NODA
   fail_tab_strip   a /MAT/PLAS_TAB strip with /FAIL/TAB pulled until its shells fail and are deleted
   rubber_block     a /MAT/OGDEN (law 42) block stretched to twice its length and back
+  spring_beam      a heavy node on a TYPE13 beam-type spring (/PROP/SPR_BEAM) swinging as a cantilever
+  foam_block       a /MAT/FOAM_TAB (law 70) block crushed and released: the area between the curves
   old_layout_2019  a deck in the 2019 layout with the group, surface, box, subset, transform, submodel,
                    skew, section, accelerometer and control keywords the other samples do not use
 
@@ -1506,6 +1508,173 @@ the same moduli as with law 42, while one brick alone runs stably; the deck keep
     return run, d, e, readme, ref
 
 
+SPRB = dict(L=100.0, M=1e-5, I=1e-2, KX=1e4, KY=1000.0, KT=2e5, M_ADD=1e-3, VY=100.0, WX=3.0, T_STOP=0.02)
+
+
+def spring_beam():
+    """A heavy node on a TYPE13 beam-type spring: K_y = 12 EI / L^3 and K_rz = EI / L make it a cantilever."""
+    p = SPRB
+    run = "SPRING_BEAM"
+    L = p["L"]
+    ei = p["KY"] * L ** 3 / 12.0
+    d = starter(run, "Heavy node on a TYPE13 beam-type spring", [
+        "Sample deck: the TYPE13 beam-type spring (/PROP/SPR_BEAM). Units Mg, mm, s (N, mJ).",
+        "Node 1 clamped; node 2 at x = %g mm carries %g Mg." % (L, p["M_ADD"]),
+        "Node 2 starts at %g mm/s along Y and %g rad/s about X." % (p["VY"], p["WX"]),
+        "K_y = 12 EI / L^3 and K_rz = EI / L (EI = %s N mm2): the spring bends as a cantilever beam." % g(ei),
+        "n3 (node 3) orients the frame: Y towards node 3."])
+    d.rows("/NODE", [(1, 0.0, 0.0, 0.0), (2, L, 0.0, 0.0), (3, 0.0, L, 0.0)])
+    d.ruler()
+    d.card("/PART", 1, "Beam spring", prop_ID=1, mat_ID=0, subset_ID=0, Thick=0.0)
+    d.rows("/SPRING", [(1, 1, 2, 3)], ident=1)
+    d.comment("Tension K1, shear K2 K3, torsion K4, bending K5 K6 (linear)")
+    laws = dict(K1=p["KX"], K2=p["KY"], K3=p["KY"], K4=p["KT"], K5=ei / L, K6=ei / L)
+    d.card("/PROP/SPR_BEAM", 1, "Beam spring", M=p["M"], Inertia=p["I"], skew_ID=0, sens_ID=0, Isflag=0,
+           Ifail=0, Ileng=0, Ifail2=0, **laws)
+    d.ruler()
+    d.card("/GRNOD/NODE", 1, "Clamped", ids=[1])
+    d.card("/BCS", 1, "Clamped", Tra_rot=rc.bcs_code("111", "111"), skew_ID=0, grnod_ID=1)
+    d.card("/GRNOD/NODE", 2, "Moving", ids=[2])
+    d.card("/ADMAS/0", 1, "Tip mass", MASS=p["M_ADD"], grnod_ID=2)
+    d.card("/INIVEL/TRA", 1, "Swing along Y", Vx=0.0, Vy=p["VY"], Vz=0.0, grnod_ID=2)
+    d.card("/INIVEL/ROT", 2, "Twist about X", Vx=p["WX"], Vy=0.0, Vz=0.0, grnod_ID=2)
+    d.ruler()
+    d.card("/TH/NODE", 1, "Tip", variables=["DEF"], rows=[(2, 0, "tip")])
+    d.card("/TH/SPRING", 1, "Beam spring", variables=["DEF", "F", "M", "L", "R"], rows=[(1,)])
+    d.ruler()
+    d.raw("/END")
+    e = engine(run, p["T_STOP"], 1e-4, 2e-3, [], ["VEL", "DISP"],
+               ["Run to %g s: about one and a half periods of the tip's swing." % p["T_STOP"]])
+    return run, d, e
+
+
+def spring_beam_deck():
+    run, d, e = spring_beam()
+    ref = ref_text(run, [
+        ("cycles", "0.01", "2", "1 % of the cycles: the spring's step"),
+        ("energy.error_percent", "0", "0.5", "balance within half a point of the recorded value"),
+        ("energy.internal", "0.02", "0.03", "2 % of the spring energy at the end"),
+        ("energy.kinetic_translational", "0.02", "0.03", "2 % of the tip's kinetic energy at the end"),
+    ])
+    return run, d, e, None, ref
+
+
+# ---------------------------------------------------------------------------------------------------
+# 9. A foam block crushed and released (/MAT/FOAM_TAB)
+
+FOAM = dict(L=10.0, N=1, RHO=5e-11, E0=20.0, T=0.02, EM=0.6,
+            LOAD=[(0.0, 0.0), (0.3, 0.1), (0.6, 0.3), (0.8, 0.8)],
+            UNLOAD=[(0.0, 0.0), (0.6, 0.05), (0.8, 0.8)])
+
+
+def pl_area(pts, e):
+    """Area under the piecewise-linear curve pts from 0 to e (e inside the curve)."""
+    a = 0.0
+    for (x1, y1), (x2, y2) in zip(pts, pts[1:]):
+        if e <= x1:
+            break
+        b = min(e, x2)
+        yb = y1 + (y2 - y1) * (b - x1) / (x2 - x1)
+        a += 0.5 * (y1 + yb) * (b - x1)
+    return a
+
+
+def pl_at(pts, e):
+    for (x1, y1), (x2, y2) in zip(pts, pts[1:]):
+        if e <= x2:
+            return y1 + (y2 - y1) * (e - x1) / (x2 - x1)
+    return pts[-1][1]
+
+
+def foam_block():
+    p = FOAM
+    run = "FOAM_BLOCK"
+    L, n, T, em = p["L"], p["N"], p["T"], p["EM"]
+    nodes, bricks, nid = box_mesh(1, 1, (0.0, 0.0, 0.0), (L, L, L), (n, n, n))
+    vmax = 2.0 * em * L / T  # a triangle of velocity over T moves the top by vmax T / 2 = em L
+    d = starter(run, "Foam block: tabulated foam (law 70) crushed to 40 % of its height and released", [
+        "Sample deck: /MAT/FOAM_TAB (law 70) in uniaxial compression. Units Mg, mm, s (MPa, N, mJ).",
+        "A %g mm cube of %d x %d x %d bricks on three symmetry planes, its top face pushed along -Z to z = %g"
+        % (L, n, n, n, L * (1 - em)),
+        "at t = %g s and back to z = %g at t = %g s: it loads along the loading curve and unloads" % (T, L, 2 * T),
+        "along the unloading curve; the internal energy left is the area between the curves."])
+    d.rows("/NODE", nodes)
+    d.ruler()
+    d.rows("/BRICK", bricks, ident=1)
+    d.ruler()
+    d.card("/PART", 1, "Foam block", prop_ID=1, mat_ID=1, subset_ID=0, Thick=0.0)
+    prop_solid_defaults(d, 1, "Foam solid")
+    d.comment("nu = 0: the uniaxial strain of the block is a uniaxial stress; E0 = E_max = 20 MPa, above every",
+              "slope of the curves, so the loading follows the curve; qa = qb = 0 means no bulk viscosity")
+    d.card("/MAT/FOAM_TAB", 1, "Foam (tabulated)", fill=0, RHO_I=p["RHO"], E0=p["E0"], nu=0.0, E_max=p["E0"],
+           Eps_max=1.0, Nload=1, Nunload=1, Iflag=0, fct_L1=2, rate_L1=0.0, scale_L1=1.0,
+           fct_U1=3, rate_U1=0.0, scale_U1=1.0)
+    d.ruler()
+    d.card("/GRNOD/NODE", 1, "Plane x = 0", ids=[nid(0, j, k) for k in range(n + 1) for j in range(n + 1)])
+    d.card("/GRNOD/NODE", 2, "Plane y = 0", ids=[nid(i, 0, k) for k in range(n + 1) for i in range(n + 1)])
+    d.card("/GRNOD/NODE", 3, "Plane z = 0", ids=[nid(i, j, 0) for j in range(n + 1) for i in range(n + 1)])
+    d.card("/GRNOD/NODE", 4, "Top face z = %g" % L, ids=[nid(i, j, n) for j in range(n + 1) for i in range(n + 1)])
+    d.card("/BCS", 1, "Symmetry x", Tra_rot=rc.bcs_code("100", "000"), skew_ID=0, grnod_ID=1)
+    d.card("/BCS", 2, "Symmetry y", Tra_rot=rc.bcs_code("010", "000"), skew_ID=0, grnod_ID=2)
+    d.card("/BCS", 3, "Symmetry z", Tra_rot=rc.bcs_code("001", "000"), skew_ID=0, grnod_ID=3)
+    d.rows("/FUNCT", [(0.0, 0.0), (T / 2, 1.0), (T, 0.0), (1.5 * T, -1.0), (2 * T, 0.0), (10 * T, 0.0)], ident=1,
+           title="Velocity in and out")
+    d.rows("/FUNCT", p["LOAD"], ident=2, title="Loading curve (stress against strain)")
+    d.rows("/FUNCT", p["UNLOAD"], ident=3, title="Unloading curve")
+    d.card("/IMPVEL", 1, "Top face pushed along -Z and released", fill=0, funct_IDT=1, Dir="Z", skew_ID=0,
+           sensor_ID=0, grnod_ID=4, frame_ID=0, Icoor=0, Ascale_x=0.0, Fscale_y=-vmax, Tstart=0.0, Tstop=0.0)
+    d.ruler()
+    d.card("/TH/PART", 1, "Block energies", variables=["DEF"], ids=[1])
+    d.ruler()
+    d.raw("/END")
+    e = engine(run, 2 * T, 1e-4, 5e-3, ["VONM"], ["VEL", "DISP"],
+               ["Run to %g s: crushed at %g s and released." % (2 * T, T)], print_every=-500)
+    return run, d, e
+
+
+def foam_block_deck():
+    run, d, e = foam_block()
+    p = FOAM
+    vol = p["L"] ** 3
+    em = p["EM"]
+    w_peak = pl_area(p["LOAD"], em) * vol
+    delta = pl_at(p["LOAD"], em) - pl_at(p["UNLOAD"], em)
+    u_slope = (p["UNLOAD"][1][1] - p["UNLOAD"][0][1]) / (p["UNLOAD"][1][0] - p["UNLOAD"][0][0])
+    e_drop = p["E0"] / (1 - em)  # the trial's modulus per unit of e: E de with de = dh / h = de / (1 - e)
+    w_end = (pl_area(p["LOAD"], em) - pl_area(p["UNLOAD"], em) - delta ** 2 / (2 * (e_drop - u_slope))) * vol
+    readme = f"""# Foam block: /MAT/FOAM_TAB (law 70) crushed and released
+
+`{run}_0000.rad` (starter, format 2026) and `{run}_0001.rad` (engine), generated by `{GENERATOR}`
+(edit the script and regenerate). Units: **Mg, mm, s** (MPa, N, mJ).
+
+A {g(p['L'])} mm cube of {p['N']} x {p['N']} x {p['N']} one-point bricks (Isolid 1) on three symmetry planes; its
+top face is pushed along -Z to {g(100 * (1 - em))} % of the height at t = {g(p['T'])} s and brought back at
+{g(2 * p['T'])} s, each way a triangle of velocity. Material `/MAT/FOAM_TAB/1`: nu 0, E0 = E_max = {g(p['E0'])} MPa,
+loading curve `/FUNCT/2` {p['LOAD']}, unloading curve `/FUNCT/3` {p['UNLOAD']} (strain, MPa), Iflag 0.
+
+## Expected physics
+
+With nu = 0 the block is in uniaxial stress with no lateral strain, and law 70's strain (the stretch minus 1)
+is the engineering strain e of the height: the Cauchy stress is -L(e) on loading, the current area is the
+initial one, so the work per unit initial volume is the area under L. At the turn the internal energy is
+V0 int_0^{g(em)} L de = {g(w_peak, 6)} mJ (checked within 1 %). On the way back the stress drops with the modulus
+E0 from L({g(em)}) = {g(pl_at(p['LOAD'], em))} to the unloading curve, then follows it to zero. The law's elastic trial
+adds E0 times the strain increment D dt = dh / h, while its curves take the total strain e = 1 - h / h0: in e
+the drop's slope is E0 / (1 - e_m) = {g(e_drop)} MPa. The energy left is
+V0 (int L - int U - Delta^2 / (2 (E0 / (1 - e_m) - U'))) = {g(w_end, 6)} mJ, the area between the curves less
+the triangle of the elastic drop (Delta = {g(delta)} MPa, U' = {g(u_slope)}), checked within 2 %. The property's blank qa and qb mean no bulk viscosity for law 70.
+`/TH/PART/1` holds the block's internal energy.
+"""
+    ref = ref_text(run, [
+        ("cycles", "0.02", "0", "2 % of the cycles"),
+        ("th:part/1:1:IE@0.02", "0.01", "0", "V0 int L de, the work of the loading curve, within 1 %"),
+        ("th:part/1:1:IE@0.04", "0.02", "0", "the area between the curves less the drop, within 2 %"),
+    ])
+    ref = ref.replace("th:part/1:1:IE@0.02                  -   ", "th:part/1:1:IE@0.02                  %-4.6g" % w_peak)
+    ref = ref.replace("th:part/1:1:IE@0.04                  -   ", "th:part/1:1:IE@0.04                  %-4.6g" % w_end)
+    return run, d, e, readme, ref
+
+
 def write_deck(out, folder, run, d, e, readme=None, ref=None):
     path = os.path.join(out, folder)
     d.write(os.path.join(path, run + "_0000.rad"), report=True)
@@ -1536,7 +1705,8 @@ DECKS = {"taylor_bar": taylor_bar_deck, "bar_rwall": bar_rwall_deck, "imposed_lo
          "mixed_idel": mixed_idel_deck, "old_layout_2019": old_layout_2019_deck,
          "perforation_tab": perforation_tab_deck, "brittle_strip": brittle_strip_deck,
          "ringing_strip": ringing_strip_deck, "fail_tab_strip": fail_tab_strip_deck,
-         "rubber_block": rubber_block_deck}
+         "rubber_block": rubber_block_deck, "spring_beam": spring_beam_deck,
+         "foam_block": foam_block_deck}
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv[1:]))

@@ -224,6 +224,15 @@ LAYOUTS = {
                  r("delta_min" + d), r("delta_max" + d)),
             Card(r("F" + d), r("E" + d), r("Ascale" + d), r("Hscale" + d)))],
         Card(i("Fsmooth"), r("Fcut"))),
+    "/PROP/SPR_BEAM": Layout(
+        Card(r("M"), r("Inertia"), i("skew_ID"), i("sens_ID"), i("Isflag"), i("Ifail"), i("Ileng"), i("Ifail2")),
+        *[c for d in "123456" for c in (
+            Card(r("K" + d), r("C" + d), r("A" + d), r("B" + d), r("D" + d)),
+            Card(i("fct_ID1" + d), i("H" + d), i("fct_ID2" + d), i("fct_ID3" + d), i("fct_ID4" + d), gap(10),
+                 r("delta_min" + d), r("delta_max" + d)),
+            Card(r("F" + d), r("E" + d), r("Ascale" + d), r("Hscale" + d)))],
+        Card(r("Vo"), r("Wo"), r("Asrate", since=2018), i("Israte", since=2018)),
+        *[Card(r("c" + d), r("n" + d), r("alpha" + d), r("beta" + d)) for d in "123456"]),
     "/MAT/LAW1": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
     "/MAT/VOID": Layout(Card(r("RHO_I"), r("E"), r("nu"))),
     "/MAT/RIGID": Layout(Card(r("RHO_I"), r("RHO_ref")), Card(r("E"), r("nu"))),
@@ -234,6 +243,15 @@ LAYOUTS = {
         Card(r("mu_6"), r("mu_7"), r("mu_8"), r("mu_9"), r("mu_10")),
         Card(r("alpha_1"), r("alpha_2"), r("alpha_3"), r("alpha_4"), r("alpha_5")),
         Card(r("alpha_6"), r("alpha_7"), r("alpha_8"), r("alpha_9"), r("alpha_10"))),
+    "/MAT/FOAM_TAB": Layout(
+        Card(r("RHO_I"), r("RHO_ref")),
+        Card(r("E0"), r("nu"), r("E_max"), r("Eps_max"), i("Itens", since=120)),
+        Card(r("Fcut"), i("Ismooth"), i("Nload"), i("Nunload"), i("Iflag", since=90), r("Shape", since=90),
+             r("Hys", since=90)),
+        *[Card(i("fct_%s%d" % (what, k)), r("rate_%s%d" % (what, k)), r("scale_%s%d" % (what, k)),
+               when=lambda v, k=k, count=count: _int(v.get(count)) >= k)
+          for what, count in (("L", "Nload"), ("U", "Nunload")) for k in range(1, 4)],
+        Card(i("fctIDTens"), r("FscaleTens"), since=120, when=lambda v: _int(v.get("Itens")) == 1)),
     "/MAT/PLAS_JOHNS": Layout(
         Card(r("RHO_I"), r("RHO_ref")),
         Card(r("E"), r("nu"), i("Iflag", since=140), i("flagVP", since=2023), r("Pmin", since=2025)),
@@ -421,6 +439,7 @@ LAYOUTS = {
     "/TH/SHEL": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"), i("skew_ID"))),
     "/TH/SH3N": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"), i("skew_ID"))),
     "/TH/BRIC": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"))),
+    "/TH/SPRING": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"))),
     "/TH/PART": Layout(variables=TH_VARIABLES, ids=ID10("part_ID")),
     "/TH/INTER": Layout(variables=TH_VARIABLES, ids=ID10("inter_ID")),
     "/TH/RWALL": Layout(variables=TH_VARIABLES, ids=ID10("rwall_ID")),

@@ -85,8 +85,9 @@ void SpringGroup::allocate(int n) {
   conn.assign(2 * G, 0);
   element.assign(G, -1);
   for (auto* v : {&l0, &e_int, &dt, &k_nodal}) v->assign(G, 0.0);
-  for (auto* v : {&dx, &force, &f_static}) v->assign(6 * G, 0.0);
+  for (auto* v : {&dx, &force, &f_static, &plastic, &plastic_c, &yield, &travel}) v->assign(6 * G, 0.0);
   x0.assign(3 * G, 0.0);
+  ey.assign(3 * G, 0.0);
   off.assign(G, 1.0);
   nodal_force.assign(2 * 6 * G, 0.0);
 }

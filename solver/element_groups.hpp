@@ -7,9 +7,11 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "solver/material_point.hpp"
+#include "solver/model/geometry.hpp"
 #include "solver/node_state.hpp"
 #include "solver/spring_law.hpp"
 
@@ -140,6 +142,8 @@ struct BrickGroup {
   // (global axes), k = 1..4 (B_{5..8} = -B_{3,4,1,2}), [3 * k + d][G], from which the kernel forms the total
   // deformation gradient F = sum_k x_k (x) B_k. Empty for the other laws.
   std::vector<double> b_ref;
+  // Law 70 (law70_foam_tab.cpp): the point state, kFoamVars rows [v][G]. Empty for the other laws.
+  std::vector<double> foam;
   void allocate(int n);
   void allocate_points();  // the point arrays of a fully integrated group (n_points = 8)
   // b_ref of element i from its initial node coordinates x0[8][3].
@@ -208,9 +212,10 @@ struct TetraGroup {
 };
 
 // Springs (/SPRING): one part, so one property, per group. TYPE4 (/PROP/SPRING, spring_type4.cpp): one axial
-// law, state in the first G slots of dx, force, f_static and forces [2][3][G]. TYPE8 (/PROP/SPR_GENE,
-// spring_type8.cpp): six laws X Y Z RX RY RZ, state [6][G] and forces and moments [2][6][G]. The curves point
-// into the model's functions (the engine keeps the model alive).
+// law, state in the first G slots of dx, force, the law state and forces [2][3][G]. TYPE8 (/PROP/SPR_GENE,
+// spring_type8.cpp) and TYPE13 (/PROP/SPR_BEAM, spring_type13.cpp): six laws X Y Z RX RY RZ, state [6][G]
+// and forces and moments [2][6][G]; TYPE13 also carries its moving frame's Y axis. The curves point into the
+// model's functions (the engine keeps the model alive).
 struct SpringGroup {
   int count = 0;
   std::vector<std::int32_t> element;  // [G] index of each slot's spring in the model's spring block
@@ -221,15 +226,30 @@ struct SpringGroup {
   std::vector<std::int32_t> conn;                          // [2][G] n1 n2
   std::vector<double> l0;                                  // [G] initial length
   std::vector<double> x0;                                  // [3][G] TYPE8: initial x2 - x1 in the frame
-  std::vector<double> dx;           // [6][G] elongation (rotation) of the last cycle (> 0 in tension)
-  std::vector<double> force;        // [6][G] force (moment) of the last cycle (> 0 in tension)
-  std::vector<double> f_static;     // [6][G] H = 7: the force on the hysteresis loop, before amplification
-  std::vector<double> e_int;        // [G] accumulated work of the spring forces (elastic and damping)
-  std::vector<double> off;          // [G] 1 alive, 0 broken (delta_min, delta_max)
-  std::vector<double> dt;           // [G] stable step, before the /DT scale
-  std::vector<double> k_nodal;      // [G] nodal stiffness contribution M / dt^2 (for nodal steps)
-  std::vector<double> nodal_force;  // [2][3][G] (TYPE4) or [2][6][G] (TYPE8) ADDED to n1 and n2, global axes
+  std::vector<double> ey;     // [3][G] TYPE13: the frame's Y axis of the last cycle (global components)
+  std::vector<double> dx;     // [6][G] elongation (rotation) of the last cycle (> 0 in tension)
+  std::vector<double> force;  // [6][G] force (moment) of the last cycle (> 0 in tension)
+  // [6][G] each law's SpringLawState (spring_law.hpp): the static force before amplification, the plastic
+  // elongations (or extremes of the elongation), the yield force and the plastic travel.
+  std::vector<double> f_static, plastic, plastic_c, yield, travel;
+  std::vector<double> e_int;    // [G] accumulated work of the spring forces (elastic and damping)
+  std::vector<double> off;      // [G] 1 alive, 0 broken (delta_min, delta_max)
+  std::vector<double> dt;       // [G] stable step, before the /DT scale
+  std::vector<double> k_nodal;  // [G] nodal stiffness contribution M / dt^2 (for nodal steps)
+  std::vector<double>
+      nodal_force;  // [2][3][G] (TYPE4) or [2][6][G] (TYPE8, 13) ADDED to n1 and n2, global axes
   [[nodiscard]] int node_stride() const { return props.type == 4 ? 3 : 6; }
+  // The law state of slot j = dof * G + i, gathered from and scattered to the arrays above.
+  [[nodiscard]] SpringLawState law_state(std::size_t j) const {
+    return {f_static[j], plastic[j], plastic_c[j], yield[j], travel[j]};
+  }
+  void store(std::size_t j, const SpringLawState& s) {
+    f_static[j] = s.f_static;
+    plastic[j] = s.plastic;
+    plastic_c[j] = s.plastic_c;
+    yield[j] = s.yield;
+    travel[j] = s.travel;
+  }
   void allocate(int n);
 };
 
@@ -245,6 +265,11 @@ void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
                        const CycleInfo& cyc);
 void spring_type4_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc);
 void spring_type8_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc);
+void spring_type13_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc);
+// TYPE13's initial Y axis (unit, normal to l = x2 - x1): from r3 = x3 - x1 when given and off the axis, else
+// from the skew's Y axis (rows of `skew_axes`: X Y Z), else its X axis (spring_type13.cpp).
+[[nodiscard]] model::Vec3 spring_type13_initial_y(const model::Vec3& l, const std::optional<model::Vec3>& r3,
+                                                  const std::array<double, 9>& skew_axes);
 void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "solver/kinematics_driver.hpp"
@@ -241,8 +242,19 @@ void ExplicitEngine::build_groups() {
     g.h = prop.h;
     resolve_full_brick(prop, materials_[static_cast<std::size_t>(g.material)], g);
     const double rho0 = materials_[static_cast<std::size_t>(g.material)].rho0;
+    const auto& gmat = materials_[static_cast<std::size_t>(g.material)];
     const bool total_strain =
-        materials_[static_cast<std::size_t>(g.material)].law == model::MaterialLaw::Ogden;
+        gmat.law == model::MaterialLaw::Ogden || gmat.law == model::MaterialLaw::FoamTab;
+    if (gmat.law == model::MaterialLaw::FoamTab) {
+      // Law 70's state (m70init.F), and no bulk viscosity when the property leaves qa and qb blank.
+      g.foam.assign(static_cast<std::size_t>(kFoamVars) * kGroupSize, 0.0);
+      double st[kFoamVars];
+      foam_initial_state(gmat, st);
+      for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v)
+        for (std::size_t i = 0; i < kGroupSize; ++i) g.foam[v * kGroupSize + i] = st[v];
+      if (prop.q_default) g.qa = g.qb = 0.0;
+      g.ismstr = 11;  // OpenRadioss runs law 70 with Ismstr 11 (sgrtails.F): never the small-strain switch
+    }
     for (int i = 0; i < g.count; ++i) {
       const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
       g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
@@ -347,6 +359,17 @@ void ExplicitEngine::build_groups() {
       for (std::size_t d = 0; d < 3; ++d)
         g.x0[d * kGroupSize + static_cast<std::size_t>(i)] =
             x21[0] * g.frame[3 * d] + x21[1] * g.frame[3 * d + 1] + x21[2] * g.frame[3 * d + 2];
+      if (prop.type == 13) {
+        const auto n3 = m.springs.conn[3 * e + 2];
+        const auto y = spring_type13_initial_y(
+            x21,
+            n3 == model::kNone ? std::optional<model::Vec3>{}
+                               : model::sub(model::Vec3{m.nodes.x[n3], m.nodes.y[n3], m.nodes.z[n3]},
+                                            model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]}),
+            prop.skew == model::kNone ? model::Skew{}.axes
+                                      : m.skews[static_cast<std::size_t>(prop.skew)].axes);
+        for (std::size_t d = 0; d < 3; ++d) g.ey[d * kGroupSize + static_cast<std::size_t>(i)] = y[d];
+      }
     }
     springs_.push_back(std::move(g));
     k = end;
@@ -437,6 +460,8 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
       auto& g = springs_[static_cast<std::size_t>(k)];
       if (g.props.type == 8)
         spring_type8_forces(g, nodes_, cyc);
+      else if (g.props.type == 13)
+        spring_type13_forces(g, nodes_, cyc);
       else
         spring_type4_forces(g, nodes_, cyc);
     }

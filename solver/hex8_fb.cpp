@@ -69,6 +69,9 @@
 // c = sqrt(M / rho) of the cycle (law42_ogden.cpp: the current tangent) replaces the material's constant c in
 // the bulk viscosity, the hourglass coefficient and the step. The energy trapezoid is unchanged (the
 // stress power of the old and new stresses). Laws 1, 2, 36 instantiate the kernel without it.
+// Law 70 (/MAT/FOAM_TAB) takes the same F: its strain is V - I from the principal stretches of F F^T
+// (law70_foam_tab.cpp), its state the group's `foam` rows, and its wave speed sqrt(A11(E) / rho0) replaces c
+// as law 42's does. One instance per law (TotalLaw), chosen per group.
 //
 // Small strain (after a /DT/BRICK/CST switch, g.dt_fixed > 0): the node coordinates are frozen in g.x_ref at
 // the first cycle after the switch and replace x^n in every formula above, so b_k, V, rho and the step stay
@@ -104,7 +107,26 @@ void brick_corotational_frame(const double x[8][3], bool heph_order, double R[3]
 
 namespace {
 
-template <bool kCorot, bool kTotal>
+// The stress of a total-strain law, chosen per group (never per element).
+enum class TotalLaw : std::uint8_t { None, Ogden, Foam };
+
+// Law 70's strain eps = V - I (engineering shears) from F: sum_i (lambda_i - 1) n_i (x) n_i.
+void biot_strain(const double F[3][3], double eps[6]) {
+  double lam[3], nv[3][3];
+  principal_stretches(F, lam, nv);
+  auto at = [&](int a, int b) {
+    return (lam[0] - 1.0) * nv[a][0] * nv[b][0] + (lam[1] - 1.0) * nv[a][1] * nv[b][1] +
+           (lam[2] - 1.0) * nv[a][2] * nv[b][2];
+  };
+  eps[0] = at(0, 0);
+  eps[1] = at(1, 1);
+  eps[2] = at(2, 2);
+  eps[3] = 2.0 * at(0, 1);
+  eps[4] = 2.0 * at(1, 2);
+  eps[5] = 2.0 * at(2, 0);
+}
+
+template <bool kCorot, TotalLaw kLaw>
 void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat,
                       const CycleInfo& cyc) {
   constexpr std::size_t G = kGroupSize;
@@ -189,14 +211,23 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
     double dmg = g.dmg[i];
     SolidPointResult pr;
     [[maybe_unused]] double c_e = c;  // the wave speed of this element and cycle
-    if constexpr (kTotal) {
+    if constexpr (kLaw != TotalLaw::None) {
       double B[8][3], F[3][3];
       for (std::size_t k = 0; k < 4; ++k)
         for (std::size_t d = 0; d < 3; ++d) B[k][d] = g.b_ref[(3 * k + d) * G + i];
       brick_velocity_gradient(x, B, F);  // sum_k x_k (x) B_k, by the opposite-node pairs (B_5..8 unused)
-      const OgdenPointResult op = ogden_point(mat, F, sn);
-      c_e = std::sqrt(op.modulus / rho);
-      pr.element_fails = op.cut && off == 1.0;
+      if constexpr (kLaw == TotalLaw::Ogden) {
+        const OgdenPointResult op = ogden_point(mat, F, sn);
+        c_e = std::sqrt(op.modulus / rho);
+        pr.element_fails = op.cut && off == 1.0;
+      } else {
+        double eps[6], st[kFoamVars];
+        biot_strain(F, eps);
+        const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
+        for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v) st[v] = g.foam[v * G + i];
+        c_e = foam_point(mat, eps, de, rate, rho / rho0, sn, st);
+        for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v) g.foam[v * G + i] = st[v];
+      }
       (void)mu;
     } else {
       const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
@@ -210,7 +241,7 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
     // Bulk viscosity and element step.
     const double l = std::cbrt(vol);
     const double ec = compression_rate(D);
-    const double c_w = kTotal ? c_e : c;
+    const double c_w = kLaw != TotalLaw::None ? c_e : c;
     const double q_new = bulk_viscosity(rho, ec, l, qa2, qb, c_w);
     const double dt_e = solid_step(brick_face_length(x, vol), c_w, qa2, qb, l, ec);
 
@@ -280,17 +311,29 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
 }  // namespace
 
 void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
-  const bool total = mat.law == model::MaterialLaw::Ogden;
-  if (g.iframe == 2) {
-    if (total)
-      hex8_forces_impl<true, true>(g, nodes, mat, cyc);
-    else
-      hex8_forces_impl<true, false>(g, nodes, mat, cyc);
-  } else {
-    if (total)
-      hex8_forces_impl<false, true>(g, nodes, mat, cyc);
-    else
-      hex8_forces_impl<false, false>(g, nodes, mat, cyc);
+  const TotalLaw law = mat.law == model::MaterialLaw::Ogden     ? TotalLaw::Ogden
+                       : mat.law == model::MaterialLaw::FoamTab ? TotalLaw::Foam
+                                                                : TotalLaw::None;
+  const bool corot = g.iframe == 2;
+  switch (law) {
+    case TotalLaw::Ogden:
+      if (corot)
+        hex8_forces_impl<true, TotalLaw::Ogden>(g, nodes, mat, cyc);
+      else
+        hex8_forces_impl<false, TotalLaw::Ogden>(g, nodes, mat, cyc);
+      break;
+    case TotalLaw::Foam:
+      if (corot)
+        hex8_forces_impl<true, TotalLaw::Foam>(g, nodes, mat, cyc);
+      else
+        hex8_forces_impl<false, TotalLaw::Foam>(g, nodes, mat, cyc);
+      break;
+    case TotalLaw::None:
+      if (corot)
+        hex8_forces_impl<true, TotalLaw::None>(g, nodes, mat, cyc);
+      else
+        hex8_forces_impl<false, TotalLaw::None>(g, nodes, mat, cyc);
+      break;
   }
 }
 

@@ -32,8 +32,6 @@
 
 namespace radx::solver {
 
-namespace {
-
 // Principal stretches and directions of F: eigen-decomposition of B = F F^T (a self-adjoint solver: robust
 // for repeated stretches, where the directions are any basis of the eigenspace and the stress does not
 // depend on the choice).
@@ -48,6 +46,8 @@ void principal_stretches(const double F[3][3], double lam[3], double n[3][3]) {
     for (int a = 0; a < 3; ++a) n[a][i] = es.eigenvectors()(a, i);  // column i: direction n_i
   }
 }
+
+namespace {
 
 double volumetric_slope(const OgdenParams& o, double k, double j) {
   return o.iform == 2 ? k * (1.0 - 1.0 / j) : k * (j - 1.0);

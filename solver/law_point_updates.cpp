@@ -292,11 +292,82 @@ double jc_shell_return(const MaterialParams& p, int iplas, double rfac, double o
 }
 }  // namespace detail
 
+namespace {
+
+// Law 70's tables and moduli (solver/model/foam_table.hpp) from the model's curves. The unloading table is
+// the first loading curve when the deck gives none and Iflag <= 2 (hm_read_mat70.F; Iflag is then 0); Iflag 3
+// and 4 need no unloading curve.
+void foam_params(const model::Material& m, const std::vector<model::Function>& functions, MaterialParams& p) {
+  const auto& ft = m.foam;
+  auto input = [&](std::int32_t fi, double scale, double rate) {
+    model::FoamCurveInput c;
+    if (fi >= 0 && static_cast<std::size_t>(fi) < functions.size()) {
+      const auto& fn = functions[static_cast<std::size_t>(fi)];
+      c.x = fn.x.data();
+      c.y = fn.y.data();
+      c.n = std::min(fn.x.size(), fn.y.size());
+    }
+    c.scale = scale == 0 ? 1.0 : scale;
+    c.rate = rate;
+    return c;
+  };
+  std::vector<model::FoamCurveInput> load, unload;
+  for (std::size_t i = 0; i < ft.load_function.size(); ++i)
+    load.push_back(input(ft.load_function[i], ft.load_scale[i], ft.load_rate[i]));
+  for (std::size_t i = 0; i < ft.unload_function.size(); ++i)
+    unload.push_back(input(ft.unload_function[i], ft.unload_scale[i], ft.unload_rate[i]));
+  auto by_rate = [](const model::FoamCurveInput& a, const model::FoamCurveInput& b) {
+    return a.rate < b.rate;
+  };
+  std::stable_sort(load.begin(), load.end(), by_rate);
+  std::stable_sort(unload.begin(), unload.end(), by_rate);
+  if (load.size() > 1) load[0].rate = 0;  // the static curve's rate is 0 (hm_read_mat70.F)
+  if (unload.size() > 1) unload[0].rate = 0;
+  auto& f = p.foam;
+  f.iflag = ft.iflag;
+  if (unload.empty() && ft.iflag <= 2 && !load.empty()) {
+    unload.push_back(load[0]);
+    f.iflag = 0;
+  }
+  f.shape = ft.shape == 0 ? 1.0 : ft.shape;
+  f.hys = ft.hys == 0 ? 1.0 : ft.hys;
+  auto table = std::make_shared<model::FoamTable>(model::build_foam_table(load));
+  const auto mod = model::foam_moduli(*table, m.young, ft.e_max, ft.eps_max);
+  f.e0 = mod.e0;
+  f.e_max = mod.e_max;
+  f.aa = mod.aa;
+  f.eps_max = mod.eps_max;
+  f.yld_emax = mod.yld_emax;
+  f.static_rate = table->rate.empty() ? 0.0 : table->rate[0];
+  f.load = std::move(table);
+  if (!unload.empty()) f.unload = std::make_shared<model::FoamTable>(model::build_foam_table(unload));
+  if (ft.itens == 1 && ft.tens_function >= 0 &&
+      static_cast<std::size_t>(ft.tens_function) < functions.size()) {
+    // The tension factor is the function itself (no processing), times its scale.
+    const auto& fn = functions[static_cast<std::size_t>(ft.tens_function)];
+    auto t = std::make_shared<model::FoamTable>();
+    t->x = fn.x;
+    t->rate = {0.0};
+    const double sc = ft.tens_scale == 0 ? 1.0 : ft.tens_scale;
+    for (double v : fn.y) t->y.push_back(sc * v);
+    f.tension = std::move(t);
+  }
+  // The moduli of E0 (the initial wave speed, the contact stiffness).
+  p.young = f.e0;
+  p.shear = p.young / (2.0 * (1.0 + p.nu));
+  p.bulk = p.young / (3.0 * (1.0 - 2.0 * p.nu));
+  p.c_solid = p.rho0 > 0 ? std::sqrt((p.bulk + 4.0 * p.shear / 3.0) / p.rho0) : 0.0;
+  p.f_cut = ft.israte > 0 || m.f_cut > 0 ? m.f_cut : 0.0;
+}
+
+}  // namespace
+
 MaterialParams make_material_params(const model::Material& m, const std::vector<model::Function>& functions,
                                     std::vector<TabCurve>& curves) {
   MaterialParams p = make_material_params(m);
   curves.clear();
   if (m.law == model::MaterialLaw::PlasTab) tab_curves_params(m, functions, curves, p);
+  if (m.law == model::MaterialLaw::FoamTab) foam_params(m, functions, p);
   if (m.fail_tab.on) {
     // /FAIL/TAB's rows after the law-36 curves in the same vector; the pointers are taken once it is full.
     const auto view = [&](std::int32_t fi, double scale, double rate) {
@@ -336,6 +407,7 @@ double jc_rate_factor(const MaterialParams& p, double rate) {
     case model::MaterialLaw::Void:
     case model::MaterialLaw::Rigid:
     case model::MaterialLaw::Ogden:            // bricks only, no rate term
+    case model::MaterialLaw::FoamTab:          // bricks only, its rate enters its curves
     case model::MaterialLaw::PlasBrit: break;  // law 27 takes its rate term per point (law27_plas_brit.cpp)
   }
   return 1.0;
@@ -350,6 +422,7 @@ double shell_rate_threshold(const MaterialParams& p) {
     case model::MaterialLaw::PlasBrit:
     case model::MaterialLaw::Void:
     case model::MaterialLaw::Ogden:
+    case model::MaterialLaw::FoamTab:
     case model::MaterialLaw::Rigid: break;
   }
   return kInf;

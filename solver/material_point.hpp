@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "solver/model/foam_table.hpp"
 #include "solver/model/model.hpp"
 
 // Lets GCC vectorise a hot loop over elements or points whose arrays it cannot prove distinct (they never
@@ -135,6 +137,36 @@ struct OgdenParams {
   double nu1 = 0;
 };
 
+// /MAT/FOAM_TAB (law70_foam_tab.cpp): the loading and unloading tables (model/foam_table.hpp; shared, built
+// once per material), the moduli the law runs with and its flags. `unload` is null when the unloading
+// formulation needs no curve (Iflag 3, 4 without unloading curves).
+struct FoamParams {
+  std::shared_ptr<const model::FoamTable> load, unload;
+  std::shared_ptr<const model::FoamTable> tension;  // Itens 1: the factor against 1 - rho / rho0 (one curve)
+  double e0 = 0, e_max = 0, aa = 0, eps_max = 1, yld_emax = 0;
+  double static_rate = 0;  // rate of the first loading curve (0)
+  int iflag = 0;
+  double shape = 1, hys = 1;
+};
+
+// Law 70's state at one point, kFoamVars rows of the brick group's `foam` buffer (the names of sigeps70.F's
+// user variables in brackets): the strain past the curve (eps_s), the largest dissipation measure reached,
+// the current modulus E, the strain norm of the last cycle, its loading direction (+1, -1), the stress norm
+// of the last cycle, the dissipation measure W, the static curve's value of the last cycle and the tension
+// factor of the last cycle.
+inline constexpr int kFoamVars = 9;
+enum FoamVar : int {
+  kFoamEpsS = 0,
+  kFoamWMax,
+  kFoamE,
+  kFoamEpstOld,
+  kFoamLoad,
+  kFoamYldOld,
+  kFoamW,
+  kFoamYldElasOld,
+  kFoamTensOld
+};
+
 // Parameters as the kernels use them (work units), derived once per material.
 struct MaterialParams {
   model::MaterialLaw law = model::MaterialLaw::Elastic;
@@ -160,6 +192,7 @@ struct MaterialParams {
   FailParams fail;
   BritParams brit;    // law 27; its flow stress is law 2's (a, b, n, c, eps_dot0, sig_max0, icc above)
   OgdenParams ogden;  // law 42
+  FoamParams foam;    // law 70
 };
 
 // Law 42 (law42_ogden.cpp) at one point: the Cauchy stress sig (xx yy zz xy yz zx, in the axes F maps into)
@@ -176,6 +209,21 @@ OgdenPointResult ogden_point(const MaterialParams& p, const double F[3][3], doub
 // Strain energy per unit reference volume W(F) of law 42 (without the bulk stiffening), for tests and
 // checks: W = sum_p mu_p / alpha_p (lb1^alpha_p + lb2^alpha_p + lb3^alpha_p - 3) + U(J).
 double ogden_energy_density(const MaterialParams& p, const double F[3][3]);
+
+// Law 70 (law70_foam_tab.cpp) at one point. In: eps, the total strain of the point (xx yy zz, then the
+// engineering shears, in the axes of the stress), de the strain increment of the step (same layout), rate
+// the filtered strain rate, rho_ratio = rho / rho0, sig the stress of the last cycle (in the same axes; the
+// law divides out the last tension factor itself). Out: sig the new stress, st[kFoamVars] updated. Returns
+// the wave speed c = sqrt(A11 / rho0), A11 = E (1 - nu) / ((1 + nu)(1 - 2 nu)) with the current modulus E.
+double foam_point(const MaterialParams& p, const double eps[6], const double de[6], double rate,
+                  double rho_ratio, double sig[6], double st[kFoamVars]);
+
+// A law-70 point's state before its first cycle (OpenRadioss m70init.F): modulus E0, tension factor 1.
+void foam_initial_state(const MaterialParams& p, double st[kFoamVars]);
+
+// Principal stretches lambda_i and directions n_i (column i of n) of a deformation gradient F: the
+// eigen-decomposition of B = F F^T (law42_ogden.cpp; shared by laws 42 and 70).
+void principal_stretches(const double F[3][3], double lam[3], double n[3][3]);
 
 // Factor of the strain-rate filter (elements.md 6.1 shells, 6.2 solids): rate <- alpha e + (1 - alpha) rate,
 // alpha = min(1, 2 pi Fcut dt1), 1 when Fcut = 0 (no filter). Shared by the shell and solid kernels.

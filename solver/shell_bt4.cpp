@@ -206,12 +206,8 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
         const double dx = bk.nb.x[k][j] - bk.nb.x[0][j], dy = bk.nb.y[k][j] - bk.nb.y[0][j],
                      dz = bk.nb.z[k][j] - bk.nb.z[0][j];
         const double cx = e1x * dx + e1y * dy + e1z * dz, cy = e2x * dx + e2y * dy + e2z * dz;
-        double& rx0 = ref[static_cast<std::size_t>(k - 1) * G + ii];
-        double& ry0 = ref[static_cast<std::size_t>(k + 2) * G + ii];
-        rx0 = cap * cx + (1.0 - cap) * rx0;
-        ry0 = cap * cy + (1.0 - cap) * ry0;
-        lx[k] = sm * rx0 + (1.0 - sm) * cx;
-        ly[k] = sm * ry0 + (1.0 - sm) * cy;
+        small_strain_coordinates(cx, cy, cap, sm, ref[static_cast<std::size_t>(k - 1) * G + ii],
+                                 ref[static_cast<std::size_t>(k + 2) * G + ii], lx[k], ly[k]);
         bk.lx[k][j] = lx[k];
         bk.ly[k][j] = ly[k];
       }

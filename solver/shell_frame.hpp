@@ -127,6 +127,18 @@ inline void store_local_forces(double* nf, std::size_t stride, std::size_t k, st
   o[5 * stride] = -(mx * e1z + my * e2z);
 }
 
+// Node k's in-plane coordinates (lx, ly) relative to node 1 through the small-strain switch, branch-free so
+// that the vectorised BT4 and QEPH loops stay vectorised: on the capture cycle (capture = 1) the current ones
+// (cx, cy) are stored in the reference slots (rx0, ry0); while frozen (frozen = 1) the stored ones are used.
+// With 0 for both the current values come back exactly and the slots are unchanged.
+inline void small_strain_coordinates(double cx, double cy, double capture, double frozen, double& rx0,
+                                     double& ry0, double& lx, double& ly) {
+  rx0 = capture * cx + (1.0 - capture) * rx0;
+  ry0 = capture * cy + (1.0 - capture) * ry0;
+  lx = frozen * rx0 + (1.0 - frozen) * cx;
+  ly = frozen * ry0 + (1.0 - frozen) * cy;
+}
+
 // Local geometry and velocities of element j of a four-node block (QBAT's front stage, elements.md 1.2; QEPH
 // takes the same steps in its vectorised loop): the node coordinates relative to node 1 in the frame (lx,
 // ly), under small strain (frozen: /DT/SHELL/CST switch or Ismstr 1) the first cycle's ones, kept in

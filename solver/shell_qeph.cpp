@@ -212,12 +212,8 @@ void shell_qeph_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
         double cx = 0, cy = 0, lz_unused = 0;
         to_local(e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y, e3z, bk.nb.x[k][j] - bk.nb.x[0][j],
                  bk.nb.y[k][j] - bk.nb.y[0][j], bk.nb.z[k][j] - bk.nb.z[0][j], cx, cy, lz_unused);
-        double& rx0 = ref[static_cast<std::size_t>(k - 1) * G + ii];
-        double& ry0 = ref[static_cast<std::size_t>(k + 2) * G + ii];
-        rx0 = cap * cx + (1.0 - cap) * rx0;
-        ry0 = cap * cy + (1.0 - cap) * ry0;
-        lx[k] = fz * rx0 + (1.0 - fz) * cx;
-        ly[k] = fz * ry0 + (1.0 - fz) * cy;
+        small_strain_coordinates(cx, cy, cap, fz, ref[static_cast<std::size_t>(k - 1) * G + ii],
+                                 ref[static_cast<std::size_t>(k + 2) * G + ii], lx[k], ly[k]);
         bk.lx[k][j] = lx[k];
         bk.ly[k][j] = ly[k];
       }

@@ -1,6 +1,6 @@
-// TYPE4 spring (/SPRING with /PROP/SPRING, H = 0 and 7): a 2-node axial spring, elastic (linear or by curve)
-// or with elastic hysteresis, and damping. The force acts along the current line n1 -> n2; the third node
-// plays no part.
+// TYPE4 spring (/SPRING with /PROP/SPRING, H = 0, 1, 2, 4, 5, 6, 7, 8): a 2-node axial spring, elastic
+// (linear or by curve), elasto-plastic or with elastic hysteresis, and damping. The force acts along the
+// current line n1 -> n2; the third node plays no part.
 //
 // Sources, read for the behaviour (OpenRadioss): engine/source/elements/spring/r1def3.F (length, elongation,
 // Ileng, failure), redef3.F90 (the force law and the energy), r1len3.F (time step), r1cum3.F (nodal forces);
@@ -10,8 +10,9 @@
 //   s = L0 with Ileng 1 (a spring per unit length), 1 otherwise
 //   x = (l - L0) / s                          elongation (strain with Ileng 1), total form
 //   v = (x - x_old) / dt1                     (0 on the first cycle)
-//   N = the scalar spring law of x, x_old, v  (spring_law.hpp: linear or by curve, H 0 or 7, damping;
-//                                             K, C per unit length with Ileng 1)
+//   N = the scalar spring law of x, x_old, v  (spring_law.hpp: linear or by curve, the hardening flag H,
+//                                             damping; K, C per unit length with Ileng 1; H 8 takes the
+//                                             length l itself, as Radioss does even with Ileng 1)
 //   work: E += (x - x_old) (N + N_old) / 2 * s   (trapezoid; elastic and damping work together, as Radioss)
 //   nodal forces: n1 += N e, n2 -= N e        (tension pulls the nodes together)
 //   failure: the spring breaks (N = 0 from then on) when s x leaves [delta_min Ascale, delta_max Ascale]
@@ -60,7 +61,9 @@ void spring_type4_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo
     const double x = (l - l0) / s;
     const double x_old = g.dx[i] / s;
     const double v = (x - x_old) * inv_dt;
-    double n = spring_law_force(law, g.curves[0], x, x_old, v, g.f_static[i]);
+    auto st = g.law_state(i);
+    double n = spring_law_force(law, g.curves[0], x, x_old, v, l, st);
+    g.store(i, st);
     const double elong = x * s;
     if (elong > law.delta_max * law.ascale || elong < law.delta_min * law.ascale) {
       g.off[i] = 0.0;

@@ -67,7 +67,8 @@ enum class MaterialLaw : std::uint8_t {
   // (E, nu); a rigid one is part of the rigid body the starter builds from the connected law-13 elements.
   Void = 0,
   Rigid = 13,
-  Ogden = 42,  // /MAT/OGDEN: hyperelastic, stress from the total deformation gradient (one-point bricks)
+  Ogden = 42,    // /MAT/OGDEN: hyperelastic, stress from the total deformation gradient (one-point bricks)
+  FoamTab = 70,  // /MAT/FOAM_TAB: tabulated visco-elastic foam, total strain (one-point bricks)
 };
 
 // /MAT/PLAS_TAB (law 36): yield curves sigma_y(eps_p) per strain rate, as given in the deck (the engine adds
@@ -134,6 +135,32 @@ struct Ogden {
   int iform = 1;
 };
 
+// /MAT/FOAM_TAB (law 70) as the deck gives it (OpenRadioss hm_read_mat70.F's defaults applied): the loading
+// curves sigma(eps) per strain rate and the unloading curves (parallel vectors, one entry a curve, in the
+// deck's order), the tension factor curve of Itens 1, and the scalars. E0, nu are in Material::young,
+// poisson. The curve processing of the engine (solver/model/foam_table.hpp) derives the table, E0, Emax and
+// the strain limit the law runs with.
+struct FoamTab {
+  std::vector<std::int64_t> load_function_id;  // user ids (listing)
+  std::vector<std::int32_t> load_function;     // dense indices into Model::functions
+  std::vector<double> load_scale;              // 0 -> 1
+  std::vector<double> load_rate;
+  std::vector<std::int64_t> unload_function_id;
+  std::vector<std::int32_t> unload_function;
+  std::vector<double> unload_scale;
+  std::vector<double> unload_rate;
+  double e_max = 0;    // Emax: 0 -> the largest slope of the loading table
+  double eps_max = 1;  // strain beyond which the stiffness Emax continues the curves (0 -> 1)
+  int itens = 0;       // 1: stress times fct(1 - rho / rho0) in expansion
+  std::int64_t tens_function_id = 0;
+  std::int32_t tens_function = -1;
+  double tens_scale = 1;
+  int israte = 0;  // strain-rate filter flag (Fcut > 0 sets it); the cut-off is Material::f_cut
+  int iflag = 0;   // unloading formulation 0..4 (0 after the starter when no unloading curve and Iflag <= 2)
+  double shape = 1;  // Shape exponent of Iflag 3, 4 (0 -> 1)
+  double hys = 1;    // Hys factor of Iflag 3, 4 (0 -> 1)
+};
+
 struct Material {
   std::int64_t id = 0;
   std::string title;
@@ -153,6 +180,7 @@ struct Material {
   FailTab fail_tab;
   PlasBrit brit;  // law 27's crack model
   Ogden ogden;    // law 42
+  FoamTab foam;   // law 70
 };
 
 enum class PropertyKind : std::uint8_t { Shell = 1, Solid = 14, Spring = 4 };
@@ -166,6 +194,9 @@ struct ShellProperty {
 struct SolidProperty {
   int isolid = 1, ismstr = 4, icpre = 0, iframe = 1, inpts = 0, itetra4 = 1000, itetra10 = 1000, iale = 0;
   double qa = 1.1, qb = 0.05, h = 0.1, lambda_v = 0, mu_v = 0, dn = 0, dt_min = 0;
+  // qa and qb both 0 (blank) in the deck: OpenRadioss then runs law 70 without bulk viscosity (its defaults
+  // 1.1 and 0.05 apply to the other laws).
+  bool q_default = false;
 };
 
 // One spring law, as OpenRadioss's starter reads it (hm_read_prop04.F, hm_read_prop08.F), defaults
@@ -177,10 +208,10 @@ struct SpringLaw {
   double stiffness = 0;  // K: the linear stiffness, and the stiffness of the time step
   double damping = 0;    // C
   double a = 1, b = 0, d = 1, e = 0;
-  int hardening = 0;  // H: 0 elastic, 7 elastic hysteresis (check_formulations.cpp refuses the others)
+  int hardening = 0;  // H: 0 1 2 4 5 6 7 8 (spring_law.hpp; check_formulations.cpp refuses 8 on TYPE8)
   std::int32_t f_load = kNone;    // fct_ID1: force of the elongation (dense index into Model::functions)
   std::int32_t f_damp = kNone;    // fct_ID2: the amplification g2 of the velocity
-  std::int32_t f_unload = kNone;  // fct_ID3: unloading curve of H 7 (also of H 4, 5, refused)
+  std::int32_t f_unload = kNone;  // fct_ID3: H 4 lower yield, H 5 residual, H 6 and 7 unloading
   std::int32_t f_damp4 = kNone;   // fct_ID4: the additional force g4 of the velocity
   double fscale = 1;              // F: velocity scale of g2 and g4
   double ascale = 1;              // Ascale: abscissa scale of fct_ID1
@@ -190,15 +221,17 @@ struct SpringLaw {
 
 // /PROP/SPRING (TYPE4): one law along the spring (`x`). /PROP/SPR_GENE (TYPE8): six uncoupled laws
 // x y z rx ry rz along the axes of a fixed frame (global, or a /SKEW/FIX), with the rotational inertia
-// `inertia` and the failure criterion `ifail`.
+// `inertia` and the failure criterion `ifail`. /PROP/SPR_BEAM (TYPE13): the same six laws in a frame that
+// follows the spring, the shear forces balanced by end moments (spring_type13.cpp).
 struct SpringProperty {
-  int type = 4;               // Radioss property type: 4 (/PROP/SPRING) or 8 (/PROP/SPR_GENE)
-  double mass = 0;            // M (per unit length when Ileng = 1), half to each node
-  double inertia = 0;         // TYPE8: rotational inertia, half to each node
-  int ileng = 0;              // TYPE4: 1: M, K, C and the curves per unit length
+  int type = 4;        // Radioss property type: 4 (/PROP/SPRING), 8 (/PROP/SPR_GENE), 13 (/PROP/SPR_BEAM)
+  double mass = 0;     // M (per unit length when Ileng = 1), half to each node
+  double inertia = 0;  // TYPE8, TYPE13: rotational inertia, half to each node
+  int ileng = 0;       // TYPE4: 1: M, K, C and the curves per unit length
   std::int64_t sensor = 0;    // sens_ID (refused when not 0)
-  std::int32_t skew = kNone;  // TYPE8: frame of the six laws (dense index into Model::skews); kNone global
-  int ifail = 0;              // TYPE8: 0 a degree of freedom breaks the spring alone, 1 sum of squares
+  std::int32_t skew = kNone;  // TYPE8: frame of the six laws; TYPE13: orients the initial frame without n3
+                              // (dense index into Model::skews); kNone global
+  int ifail = 0;  // TYPE8, TYPE13: 0 a degree of freedom breaks the spring alone, 1 sum of squares
   SpringLaw x, y, z, rx, ry, rz;  // TYPE4 uses x only
   [[nodiscard]] const SpringLaw& law(int dof) const {
     const SpringLaw* l[6] = {&x, &y, &z, &rx, &ry, &rz};

@@ -219,3 +219,56 @@ TEST_CASE(
   // A word outside every Radioss family stays unknown.
   CHECK(all.find("10:1: error: RX301: [/FOOBAR]") != std::string::npos);
 }
+
+TEST_CASE("a reference to a keyword radx does not read names that keyword, not a missing id", "[lexer]") {
+  // /PART 1 takes /PROP/SPR_PRE 11 (line 9), which radx refuses (RX302): the part's RX402 must say that
+  // prop_ID 11 is that keyword, with its line; a reference to an id no keyword has keeps "there is no".
+  TempDir dir;
+  const std::string deck = radx::test::begin_block(2026) + "/NODE\n" + node_line(1, 0, 0, 0) + "\n" +
+                           node_line(2, 1, 0, 0) + "\n/PROP/SPR_PRE/11\npretensioner\n" +
+                           "/PART/1\npart one\n" + Line().put(11, 1, 10).put(1, 11, 20).str() + "\n" +
+                           "/PART/2\npart two\n" + Line().put(12, 1, 10).put(1, 11, 20).str() + "\n" +
+                           "/MAT/LAW1/1\nsteel\n" + Line().put(7.85e-9, 1, 20).str() + "\n" +
+                           Line().put(210000.0, 1, 20).put(0.3, 21, 40).str() + "\n/END\n";
+  const auto path = dir.write("unread_0000.rad", deck);
+  radx::Diagnostics diags;
+  const auto d = radx::read_starter_deck(path, diags);
+  (void)radx::build_model(d, diags);
+  const std::string all = codes(diags);
+  INFO(all);
+  CHECK(all.find("RX302: [/PROP/SPR_PRE id 11]") != std::string::npos);
+  CHECK(all.find("prop_ID = 11 names /PROP/SPR_PRE 11 (" + path + ":9)") != std::string::npos);
+  CHECK(all.find("prop_ID = 12: there is no /PROP/12 in the deck") != std::string::npos);
+}
+
+TEST_CASE("a number field holding two values reads the leading one with a warning, as Radioss does",
+          "[lexer]") {
+  // Node 1's X field (columns 11-30) holds "1.5       2.5" (a card whose columns slid): Radioss's sscanf
+  // reads 1.5; radx reads 1.5 too and warns (RX207). Node 2's X field "abc 2.5" leads with text: an error.
+  TempDir dir;
+  std::string shifted = node_line(1, 0, 0, 0), text = node_line(2, 0, 0, 0);
+  shifted.replace(10, 20, "       1.5       2.5");
+  text.replace(10, 20, "             abc 2.5");
+  const auto path = dir.write("two_0000.rad",
+                              radx::test::begin_block(2026) + "/NODE\n" + shifted + "\n" + text + "\n/END\n");
+  radx::Diagnostics diags;
+  const auto d = radx::read_starter_deck(path, diags);
+  INFO(codes(diags));
+  REQUIRE(d.of("/NODE").size() == 1u);
+  const auto& t = d.of("/NODE").front()->records;
+  REQUIRE(t.size() == 2u);
+  CHECK(t.reals[t.column("X")][0] == 1.5);  // the leading value, exactly
+  int two = 0, bad = 0;
+  for (const auto& i : diags.items()) {
+    if (i.code == Diag::TwoValuesInField) {
+      ++two;
+      CHECK((i.line == 7 && i.column == 11));
+    }
+    if (i.code == Diag::BadReal) {
+      ++bad;
+      CHECK(i.line == 8);
+    }
+  }
+  CHECK(two == 1);
+  CHECK(bad == 1);
+}

@@ -123,3 +123,21 @@ TEST_CASE(
   CHECK(text.find("RX510") == std::string::npos);
   CHECK(slurp(dir.path() / "solid_numerical_viscosity_0000.out").find("SUBSTITUTIONS") != std::string::npos);
 }
+
+TEST_CASE("a substituted shell formulation runs with the defaults of the one that runs",
+          "[starter][engine]") {
+  // Ishell 3 defaults its hourglass coefficients Hm and Hf to 0.1, Ishell 1 to 0.01 (elements.md 1.7); the
+  // default deck leaves them blank. Ishell 3 substituted by Ishell 1 must run Ishell 1 with Ishell 1's
+  // defaults: the same energies, bit for bit, as the deck written with Ishell 1.
+  radx::test::TempDir dir;
+  const auto deck3 = block_on_plate_with_ishell(dir.path() / "ishell3", 3);
+  const auto deck1 = block_on_plate_with_ishell(dir.path() / "bt", 1);
+  const auto substituted = dir.path() / "substituted", plain = dir.path() / "plain";
+  REQUIRE(run(deck3, substituted, "--allow-substitutions", dir.path() / "substituted.log") == 0);
+  REQUIRE(run(deck1, plain, "", dir.path() / "plain.log") == 0);
+  const std::string summary3 = slurp(substituted / "BLOCK_ON_PLATE_summary.json");
+  const std::string summary1 = slurp(plain / "BLOCK_ON_PLATE_summary.json");
+  CHECK(summary3.find("Ishell = 3") != std::string::npos);
+  CHECK_FALSE(energy_block(summary3).empty());
+  CHECK(energy_block(summary3) == energy_block(summary1));
+}

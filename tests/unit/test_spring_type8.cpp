@@ -281,12 +281,12 @@ TEST_CASE("TYPE8 starter: the six laws, the frame, refusals by name", "[spring8]
   };
   const std::string fun = "/FUNCT/7\nforce\n" + Line().put(0.0, 1, 20).put(0.0, 21, 40).str() + "\n" +
                           Line().put(1.0, 1, 20).put(1000.0, 21, 40).str() + "\n";
-  // H 6 on the Y law is refused by name.
+  // H 8 on the Y law is refused by name.
   std::array<std::string, 6> cards{};
-  cards[1] = Line().put(7, 1, 10).put(6, 11, 20).put(7, 31, 40).str();
+  cards[1] = Line().put(7, 1, 10).put(8, 11, 20).put(7, 31, 40).str();
   auto e = errors_of(deck_of(spr_gene(1e-6, 0.0, {0, 1000, 0, 0, 0, 0}, 0, 0, 0, cards), 1e-3, fun));
   CHECK(e.find("RX510") != std::string::npos);
-  CHECK(e.find("H2 = 6 (elasto-plastic with hardening of the yield curve)") != std::string::npos);
+  CHECK(e.find("H2 = 8 (elastic, force of the total length)") != std::string::npos);
   // H 7 with both curves runs.
   cards[1] = Line().put(7, 1, 10).put(7, 11, 20).put(7, 31, 40).str();
   CHECK(errors_of(deck_of(spr_gene(1e-6, 0.0, {0, 1000, 0, 0, 0, 0}, 0, 0, 0, cards), 1e-3, fun)) == "");

@@ -364,17 +364,17 @@ TEST_CASE("spring starter: property defaults, the mass of the nodes, refusals by
   // A missing function.
   e = errors_of(oscillator_deck(1e-6, 1000.0, 0.0, 1e-3, 0.0, "", 99));
   CHECK(e.find("fct_ID1 = 99: there is no /FUNCT/99") != std::string::npos);
-  // H = 1 on a spring by function is refused by name.
+  // H = 4 on a spring by function needs fct_ID3, its lower yield curve (RX502).
   const std::string fun = "/FUNCT/7\nforce\n" + Line().put(0.0, 1, 20).put(0.0, 21, 40).str() + "\n" +
                           Line().put(1.0, 1, 20).put(1000.0, 21, 40).str() + "\n";
   std::string h1 = oscillator_deck(1e-6, 1000.0, 0.0, 1e-3, 0.0, fun, 7);
   const std::string card3 = Line().put(7, 1, 10).put(0, 11, 20).str();
   const auto at = h1.find(card3 + "\n");
   REQUIRE(at != std::string::npos);
-  h1.replace(at, card3.size(), Line().put(7, 1, 10).put(1, 11, 20).str());
+  h1.replace(at, card3.size(), Line().put(7, 1, 10).put(4, 11, 20).str());
   e = errors_of(h1);
-  CHECK(e.find("RX510") != std::string::npos);
-  CHECK(e.find("H = 1 (elasto-plastic, isotropic hardening)") != std::string::npos);
+  CHECK(e.find("RX502") != std::string::npos);
+  CHECK(e.find("H = 4 needs the curve fct_ID3") != std::string::npos);
   CHECK(errors_of(h1.substr(0, at) + Line().put(7, 1, 10).put(7, 11, 20).put(7, 31, 40).str() +
                   h1.substr(at + card3.size())) == "");  // H = 7 with both curves runs
 }
