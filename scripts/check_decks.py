@@ -1650,8 +1650,8 @@ def semantic(ck, m):
                 if (val(o, "fct_ID1" + d, 0) != 0 and h not in SPRING_H_TYPE8) or h == 8:
                     bad.append("H" + d)
         elif o["path"] in ("/PROP/SHELL", "/PROP/TYPE1"):
-            # Ishell 1, 12 (QBAT) and 24 (QEPH; 22 and 23 run as 24, elements.md 1.1)
-            if "/SHELL" in kinds and resolved(o, "Ishell", "/DEF_SHELL", 1) not in (1, 12, 22, 23, 24):
+            # Ishell 1, 4 (warp correction), 12 (QBAT) and 24 (QEPH; 22 and 23 run as 24, elements.md 1.1)
+            if "/SHELL" in kinds and resolved(o, "Ishell", "/DEF_SHELL", 1) not in (1, 4, 12, 22, 23, 24):
                 bad.append("Ishell")
             if "/SH3N" in kinds and resolved(o, "Ish3n", "/DEF_SHELL", 2) not in (1, 2):
                 bad.append("Ish3n")

@@ -1234,7 +1234,7 @@ def _():
     d = base()
     d.update("PSH", Ishell=3)
     return d, "/PROP/SHELL/1 Ishell = 3 (Belytschko-Tsay with elasto-plastic hourglass) on the plate's 4-node " \
-        "shells: radx implements Ishell 1, 12 and 24 only (--allow-substitutions would run Ishell 1 and list it)", \
+        "shells: radx implements Ishell 1, 4, 12 and 24 only (--allow-substitutions would run Ishell 1 and list it)", \
         [("RX510", "PSH.Ishell")]
 
 
