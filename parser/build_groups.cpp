@@ -590,7 +590,7 @@ const std::vector<std::int32_t>* ModelBuilder::group_nodes(std::int32_t g) {
         Diag::EmptyGroup, at(r.pos, 1), about(r),
         "node group " + std::to_string(group.id) +
             " holds no node: check its list (an empty group makes whatever uses it act on nothing)" +
-            (diags_.has_errors() ? "; the errors reported before it may have left out what it lists" : ""));
+            (diags_.has_errors() ? "; other errors of this deck may have left out what it lists" : ""));
   }
   grnod_state_[g] = 2;
   return &group.nodes;
