@@ -23,19 +23,9 @@ std::string num(double v) {
 }  // namespace
 
 void ModelBuilder::read_foam_tab(const KeywordRecord& r, model::Material& mat) {
-  mat.rho = r.get_real("RHO_I");
-  mat.rho_ref = r.get_real("RHO_ref");
-  if (mat.rho_ref == 0) mat.rho_ref = mat.rho;
-  mat.young = r.get_real("E0");
-  mat.poisson = r.get_real("nu");
-  if (mat.poisson < 0 || mat.poisson >= 0.5)
-    error_at(
-        r, "nu", Diag::BadPoisson,
-        "Poisson's ratio nu = " + num(mat.poisson) +
-            " is outside [0, 0.5): law 70's Hooke matrix E (1 - nu) / ((1 + nu)(1 - 2 nu)) would be infinite "
-            "or negative");
-  mat.shear = mat.young / (2.0 * (1.0 + mat.poisson));
-  mat.bulk = mat.poisson < 0.5 ? mat.young / (3.0 * (1.0 - 2.0 * mat.poisson)) : 0.0;
+  read_densities(r, mat);
+  read_isotropic_elastic(
+      r, mat, "E0", "law 70's Hooke matrix E (1 - nu) / ((1 + nu)(1 - 2 nu)) would be infinite or negative");
   auto& f = mat.foam;
   f.e_max = r.get_real("E_max");
   if (f.e_max > 0 && f.e_max < mat.young) {

@@ -24,9 +24,7 @@ std::string num(double v) {
 }  // namespace
 
 void ModelBuilder::read_ogden(const KeywordRecord& r, model::Material& mat) {
-  mat.rho = r.get_real("RHO_I");
-  mat.rho_ref = r.get_real("RHO_ref");
-  if (mat.rho_ref == 0) mat.rho_ref = mat.rho;
+  read_densities(r, mat);
   mat.poisson = r.get_real("nu");  // 0 -> 0.495 by the field's rule
   if (mat.poisson < 0 || mat.poisson >= 0.5)
     error_at(

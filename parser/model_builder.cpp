@@ -183,9 +183,7 @@ void ModelBuilder::build_materials() {
         m_.materials.push_back(std::move(mat));
       continue;
     }
-    mat.rho = r.get_real("RHO_I");
-    mat.rho_ref = r.get_real("RHO_ref");
-    if (mat.rho_ref == 0) mat.rho_ref = mat.rho;
+    read_densities(r, mat);
     mat.young = r.get_real("E");
     mat.poisson = r.get_real("nu");
     if (mat.rho < 0 && r.given("RHO_I"))  // 0 is reported by the field's rule (a value is required)
@@ -307,14 +305,26 @@ void ModelBuilder::build_materials() {
 // the element mass (rho_I V, none when 0); E and nu give only the contact stiffness (bulk E/3(1-2nu)).
 void ModelBuilder::read_void(const KeywordRecord& r, model::Material& mat) {
   mat.rho = mat.rho_ref = r.get_real("RHO_I");
-  mat.young = r.get_real("E");
+  read_isotropic_elastic(
+      r, mat, "E",
+      "the contact stiffness takes the bulk modulus E/3(1-2nu), which would be infinite or "
+      "negative; leave it blank (0) or give a value such as 0.3");
+}
+
+void ModelBuilder::read_densities(const KeywordRecord& r, model::Material& mat) {
+  mat.rho = r.get_real("RHO_I");
+  mat.rho_ref = r.get_real("RHO_ref");
+  if (mat.rho_ref == 0) mat.rho_ref = mat.rho;
+}
+
+void ModelBuilder::read_isotropic_elastic(const KeywordRecord& r, model::Material& mat,
+                                          std::string_view young_field, std::string_view nu_consequence) {
+  mat.young = r.get_real(young_field);
   mat.poisson = r.get_real("nu");
   if (mat.poisson < 0 || mat.poisson >= 0.5)
     error_at(
         r, "nu", Diag::BadPoisson,
-        "Poisson's ratio nu = " + num(mat.poisson) +
-            " is outside [0, 0.5): the contact stiffness takes the bulk modulus E/3(1-2nu), which would be "
-            "infinite or negative; leave it blank (0) or give a value such as 0.3");
+        "Poisson's ratio nu = " + num(mat.poisson) + " is outside [0, 0.5): " + std::string(nu_consequence));
   mat.shear = mat.young / (2.0 * (1.0 + mat.poisson));
   mat.bulk = mat.poisson < 0.5 ? mat.young / (3.0 * (1.0 - 2.0 * mat.poisson)) : 0.0;
 }

@@ -58,6 +58,12 @@ class ModelBuilder {
   void read_foam_tab(const KeywordRecord& r, model::Material& mat);  // /MAT/FOAM_TAB (build_foam_tab.cpp)
   void resolve_foam_tab_functions();  // build_foam_tab.cpp: the curves' ids, their checks
   void read_void(const KeywordRecord& r, model::Material& mat);  // /MAT/VOID's optional card
+  // RHO_I and RHO_ref (0: RHO_I), shared by the laws whose card starts with them.
+  static void read_densities(const KeywordRecord& r, model::Material& mat);
+  // E (from `young_field`) and nu with G and K; nu outside [0, 0.5) is an error whose message ends with
+  // `nu_consequence` (what the law would do with it).
+  void read_isotropic_elastic(const KeywordRecord& r, model::Material& mat, std::string_view young_field,
+                              std::string_view nu_consequence);
   void build_rigid_material_bodies();  // build_rigid_materials.cpp: one body per connected /MAT/RIGID set
   void build_properties();
   void build_subsets_and_parts();
