@@ -272,27 +272,34 @@ class StarterReader {
     deck_.version = version;
   }
 
-  // A number field that holds two values apart ("0000      .000000000": the card's columns are shifted) is
-  // read as its leading value when that one is a number: Radioss's reader scans a field with sscanf, which
-  // stops at the blank. It is a warning, since the value read may not be the one meant.
+  // A fixed-column card field that holds two numbers apart ("0000      .000000000": the card's columns are
+  // shifted) is read as its leading value: Radioss's reader scans a field with sscanf, which stops at the
+  // blank. A warning, since the value read may not be the one meant. Only on cards, and only when every part
+  // is a number: "1.5 E-3" stays an error, and so does a record line (/NODE, /SHELL ...) written without
+  // columns, where the leading value of a cell is usually not the one meant.
   std::string_view leading_value(std::string_view raw, const std::string& what, SourcePos pos, int column,
                                  const About& about) {
     const auto blank = raw.find_first_of(" \t");
     if (blank == std::string_view::npos) return raw;
-    const std::string_view first = raw.substr(0, blank);
     double probe = 0;
-    if (parse_real(first, probe) != NumberStatus::Ok) return raw;
+    std::string_view rest = raw;
+    while (!rest.empty()) {
+      const auto end = rest.find_first_of(" \t");
+      if (parse_real(rest.substr(0, end), probe) != NumberStatus::Ok) return raw;
+      rest = end == std::string_view::npos ? std::string_view{} : trim(rest.substr(end));
+    }
+    const std::string_view first = raw.substr(0, blank);
     diags_.warning(Diag::TwoValuesInField, at(pos, column), about,
                    what + " holds '" + std::string(raw) +
-                       "', two values: the card's columns look shifted; '" + std::string(first) +
-                       "' is read and the rest ignored, as Radioss reads it (check the "
-                       "card's alignment against its comment line)");
+                       "', more than one number: the card's columns look " + "shifted; '" +
+                       std::string(first) + "' is read and the rest ignored, as Radioss reads " +
+                       "it (check the card's alignment against its comment line)");
     return first;
   }
 
   // A field's text -> value, with defaults and checks.
   FieldValue parse_field(const FieldDecl& f, std::string_view raw, SourcePos pos, int column,
-                         const About& about) {
+                         const About& about, bool card_cell = false) {
     FieldValue v;
     v.decl = &f;
     v.pos = pos;
@@ -303,7 +310,7 @@ class StarterReader {
     // of range.
     bool unreadable = false;
     const std::string what = "field " + std::string(f.name) + " (" + std::string(f.meaning) + ")";
-    if (f.type != FieldType::String) raw = leading_value(raw, what, pos, column, about);
+    if (card_cell && f.type != FieldType::String) raw = leading_value(raw, what, pos, column, about);
     switch (f.type) {
       case FieldType::String: v.s = std::string(raw); break;
       case FieldType::Int: {
@@ -470,7 +477,7 @@ class StarterReader {
           raw = {};
         }
       }
-      rec.fields.push_back(parse_field(f, raw, pos, line ? f.first_col : 0, about));
+      rec.fields.push_back(parse_field(f, raw, pos, line ? f.first_col : 0, about, !free));
     }
     if (free && values.size() > fields.size()) {
       diags_.warning(Diag::ExtraData, at(pos, 1), about,

@@ -2353,8 +2353,8 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/MAT/LAW3", "/MAT/HYDPLA", "/MAT/LAW4", "/MAT/HYD_JCOOK", "/MAT/LAW6", "/MAT/HYDRO", "/MAT/LAW10",
         "/MAT/LAW19", "/MAT/FABRI", "/MAT/LAW25", "/MAT/COMPSH", "/MAT/LAW32", "/MAT/HILL", "/MAT/LAW34",
         "/MAT/BOLTZMAN", "/MAT/LAW44", "/MAT/COWPER", "/MAT/LAW57", "/MAT/BARLAT3", "/MAT/LAW58",
-        "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW70", "/MAT/FOAM_TAB", "/MAT/LAW87",
-        "/MAT/LAW88", "/MAT/LAW90", "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO", "/MAT/USER",
+        "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90",
+        "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO", "/MAT/USER",
         // properties
         "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE2", "/PROP/TRUSS", "/PROP/TYPE3", "/PROP/BEAM", "/PROP/TYPE9",
         "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP", "/PROP/TYPE11", "/PROP/SH_SANDW", "/PROP/TYPE16",

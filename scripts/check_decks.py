@@ -969,7 +969,7 @@ class Checker:
         return True
 
     # ---- field parsing
-    def parse_fields(self, fields, rec, kw, strict=True):
+    def parse_fields(self, fields, rec, kw, strict=True, card=False):
         """Parse one data line against fields. Returns dict name -> value (blank -> None)."""
         file, lineno, text = rec
         vals = {}
@@ -991,8 +991,8 @@ class Checker:
             if not tok:
                 vals[name] = None
                 continue
-            # Two values in one number field (shifted columns): Radioss reads the leading one (RX207).
-            if typ in ("I", "R") and len(tok.split()) > 1 and REAL_RE.match(tok.split()[0]):
+            # A card field holding only numbers apart (shifted columns): Radioss reads the leading one (RX207).
+            if card and typ in ("I", "R") and len(tok.split()) > 1 and all(REAL_RE.match(x) for x in tok.split()):
                 self.warn(file, lineno, "%s: %s = %r holds two values; the leading one is read" % (kw, name, tok))
                 tok = tok.split()[0]
                 cell = tok
@@ -1186,7 +1186,7 @@ class Checker:
             cm, r = data[k]
             k += 1
             self.check_names_line(cm, c["fields"], path)
-            cv = self.parse_fields(c["fields"], r, path)
+            cv = self.parse_fields(c["fields"], r, path, card=True)
             for key, (ga, gb) in c["gate"].items():
                 # the old pre-read: the field is not read when the gate columns are blank
                 if "," not in r[2] and not r[2][ga - 1:gb].strip():

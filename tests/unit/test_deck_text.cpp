@@ -241,34 +241,39 @@ TEST_CASE("a reference to a keyword radx does not read names that keyword, not a
   CHECK(all.find("prop_ID = 12: there is no /PROP/12 in the deck") != std::string::npos);
 }
 
-TEST_CASE("a number field holding two values reads the leading one with a warning, as Radioss does",
+TEST_CASE("a card field holding two numbers reads the leading one with a warning, as Radioss does",
           "[lexer]") {
-  // Node 1's X field (columns 11-30) holds "1.5       2.5" (a card whose columns slid): Radioss's sscanf
-  // reads 1.5; radx reads 1.5 too and warns (RX207). Node 2's X field "abc 2.5" leads with text: an error.
+  // /MAT/LAW1 1's E field (columns 1-20) holds "210000.0      5.0" (a card whose columns slid): Radioss's
+  // sscanf reads 210000; radx too, with RX207. Material 2's E field "1.5 E-3" is not two numbers (a blank
+  // inside one): an error, as before. A /NODE record whose X cell holds two numbers is an error too: record
+  // lines written without columns are not read by their leading values.
   TempDir dir;
-  std::string shifted = node_line(1, 0, 0, 0), text = node_line(2, 0, 0, 0);
-  shifted.replace(10, 20, "       1.5       2.5");
-  text.replace(10, 20, "             abc 2.5");
-  const auto path = dir.write("two_0000.rad",
-                              radx::test::begin_block(2026) + "/NODE\n" + shifted + "\n" + text + "\n/END\n");
+  std::string node = node_line(1, 0, 0, 0);
+  node.replace(10, 20, "       1.5       2.5");
+  const std::string deck = radx::test::begin_block(2026) + "/NODE\n" + node + "\n/MAT/LAW1/1\nshifted\n" +
+                           Line().put(7.85e-9, 1, 20).str() + "\n" + "  210000.0      5.0" +
+                           Line().put(0.3, 21, 40).str().substr(19) + "\n/MAT/LAW1/2\nblank in exponent\n" +
+                           Line().put(7.85e-9, 1, 20).str() + "\n" + "             1.5 E-3" +
+                           Line().put(0.3, 21, 40).str().substr(20) + "\n/END\n";
+  const auto path = dir.write("two_0000.rad", deck);
   radx::Diagnostics diags;
   const auto d = radx::read_starter_deck(path, diags);
   INFO(codes(diags));
-  REQUIRE(d.of("/NODE").size() == 1u);
-  const auto& t = d.of("/NODE").front()->records;
-  REQUIRE(t.size() == 2u);
-  CHECK(t.reals[t.column("X")][0] == 1.5);  // the leading value, exactly
+  const auto mats = d.of("/MAT/LAW1");
+  REQUIRE(mats.size() == 2u);
+  CHECK(mats[0]->get_real("E") == 210000.0);  // the leading value, exactly
+  CHECK(mats[0]->get_real("nu") == 0.3);
   int two = 0, bad = 0;
   for (const auto& i : diags.items()) {
     if (i.code == Diag::TwoValuesInField) {
       ++two;
-      CHECK((i.line == 7 && i.column == 11));
+      CHECK((i.line == 11 && i.column == 1));
     }
     if (i.code == Diag::BadReal) {
       ++bad;
-      CHECK(i.line == 8);
+      CHECK((i.line == 7 || i.line == 15));  // the /NODE cell and law 2's E
     }
   }
   CHECK(two == 1);
-  CHECK(bad == 1);
+  CHECK(bad == 2);
 }
