@@ -1135,6 +1135,22 @@ BRIT = dict(L=100.0, W=20.0, NX=10, NY=2, T=1.0, RHO=2.8e-9, E=71000.0, NU=0.33,
             SIGMAX=425.0, EPS_T=0.01, EPS_M=0.02, DMAX=0.9, EPS_F=0.05, V=1000.0, T_STOP=3e-3)
 
 
+def pulled_strip_conditions(d, root, tip, nodes, L, v, funct_id):
+    """A plane strip held at its root (x = 0) and pulled along +X at v by its end (x = L): node groups 1-4,
+    /BCS 1-3 (root along X, one root node along Y, every node in Z and rotations) and /IMPVEL 1 on the
+    constant curve funct_id (shared by brittle_strip and fail_tab_strip)."""
+    d.card("/GRNOD/NODE", 1, "Root (x = 0)", ids=root)
+    d.card("/GRNOD/NODE", 2, "Pulled end (x = %g)" % L, ids=tip)
+    d.card("/GRNOD/NODE", 3, "One root node (y = 0)", ids=[1])
+    d.card("/GRNOD/NODE", 4, "Every node", ids=[n[0] for n in nodes])
+    d.card("/BCS", 1, "Root held along X", Tra_rot=rc.bcs_code("100", "000"), skew_ID=0, grnod_ID=1)
+    d.card("/BCS", 2, "One root node held along Y", Tra_rot=rc.bcs_code("010", "000"), skew_ID=0, grnod_ID=3)
+    d.card("/BCS", 3, "Plane strip: no Z and no rotation", Tra_rot=rc.bcs_code("001", "111"), skew_ID=0, grnod_ID=4)
+    d.rows("/FUNCT", [(0.0, 1.0), (1.0, 1.0)], ident=funct_id, title="Constant 1")
+    d.card("/IMPVEL", 1, "End pulled along +X", fill=0, funct_IDT=funct_id, Dir="X", skew_ID=0, sensor_ID=0,
+           grnod_ID=2, frame_ID=0, Icoor=0, Ascale_x=0.0, Fscale_y=v, Tstart=0.0, Tstop=0.0)
+
+
 def brittle_strip():
     p = BRIT
     run = "BRITTLE_STRIP"
@@ -1162,16 +1178,7 @@ def brittle_strip():
            b=p["B"], n=p["N"], SIG_max0=p["SIGMAX"], EPS_t1=p["EPS_T"], EPS_m1=p["EPS_M"], d_max1=p["DMAX"],
            EPS_f1=p["EPS_F"])
     d.ruler()
-    d.card("/GRNOD/NODE", 1, "Root (x = 0)", ids=root)
-    d.card("/GRNOD/NODE", 2, "Pulled end (x = %g)" % L, ids=tip)
-    d.card("/GRNOD/NODE", 3, "One root node (y = 0)", ids=[1])
-    d.card("/GRNOD/NODE", 4, "Every node", ids=[n[0] for n in nodes])
-    d.card("/BCS", 1, "Root held along X", Tra_rot=rc.bcs_code("100", "000"), skew_ID=0, grnod_ID=1)
-    d.card("/BCS", 2, "One root node held along Y", Tra_rot=rc.bcs_code("010", "000"), skew_ID=0, grnod_ID=3)
-    d.card("/BCS", 3, "Plane strip: no Z and no rotation", Tra_rot=rc.bcs_code("001", "111"), skew_ID=0, grnod_ID=4)
-    d.rows("/FUNCT", [(0.0, 1.0), (1.0, 1.0)], ident=1, title="Constant 1")
-    d.card("/IMPVEL", 1, "End pulled along +X", fill=0, funct_IDT=1, Dir="X", skew_ID=0, sensor_ID=0, grnod_ID=2,
-           frame_ID=0, Icoor=0, Ascale_x=0.0, Fscale_y=p["V"], Tstart=0.0, Tstop=0.0)
+    pulled_strip_conditions(d, root, tip, nodes, L, p["V"], 1)
     d.ruler()
     d.card("/TH/PART", 1, "Strip energies", variables=["DEF"], ids=[1])
     d.ruler()
@@ -1341,16 +1348,7 @@ def fail_tab_strip():
     d.rows("/FUNCT", [(-1.0, 2 * p["EPS_F"]), (1.0 / 3.0, p["EPS_F"]), (1.0, 0.5 * p["EPS_F"])], ident=2,
            title="Failure plastic strain against the triaxiality")
     d.ruler()
-    d.card("/GRNOD/NODE", 1, "Root (x = 0)", ids=root)
-    d.card("/GRNOD/NODE", 2, "Pulled end (x = %g)" % L, ids=tip)
-    d.card("/GRNOD/NODE", 3, "One root node (y = 0)", ids=[1])
-    d.card("/GRNOD/NODE", 4, "Every node", ids=[n[0] for n in nodes])
-    d.card("/BCS", 1, "Root held along X", Tra_rot=rc.bcs_code("100", "000"), skew_ID=0, grnod_ID=1)
-    d.card("/BCS", 2, "One root node held along Y", Tra_rot=rc.bcs_code("010", "000"), skew_ID=0, grnod_ID=3)
-    d.card("/BCS", 3, "Plane strip: no Z and no rotation", Tra_rot=rc.bcs_code("001", "111"), skew_ID=0, grnod_ID=4)
-    d.rows("/FUNCT", [(0.0, 1.0), (1.0, 1.0)], ident=3, title="Constant 1")
-    d.card("/IMPVEL", 1, "End pulled along +X", fill=0, funct_IDT=3, Dir="X", skew_ID=0, sensor_ID=0, grnod_ID=2,
-           frame_ID=0, Icoor=0, Ascale_x=0.0, Fscale_y=p["V"], Tstart=0.0, Tstop=0.0)
+    pulled_strip_conditions(d, root, tip, nodes, L, p["V"], 3)
     d.ruler()
     d.card("/TH/PART", 1, "Strip energies", variables=["DEF"], ids=[1])
     d.ruler()
