@@ -18,8 +18,8 @@ Model (units Mg, mm, s): a 1000 x 1000 mm steel plate, 1 mm thick, meshed with N
 (Johnson-Cook, 5 integration points), clamped on its four edges.
   * without --impact: every plate node starts at 1 m/s downwards (/INIVEL/TRA on /GRNOD/PART of the plate);
     the clamped edges hold it, so the whole plate vibrates and yields along the edges;
-  * with --impact: the plate is at rest and an aluminium block of 10 x 10 x 4 bricks (100 x 100 x 40 mm,
-    bricks of L/100 = 10 mm whatever N is) sits 1 mm above the plate centre (bottom face z = 1.5) and moves
+  * with --impact: the plate is at rest and an aluminium block of 10 x 10 x 4 bricks (--block B: B x B x 4;
+    10 mm bricks whatever N is) sits 1 mm above the plate centre (bottom face z = 1.5) and moves
     down at 10 m/s. Two TYPE7 interfaces as in decks/block_on_plate: block nodes on the plate surface
     (Istf 4, Inacti 6, Fric 0.1, Iform 1) and plate nodes on the block's outer faces (Istf 0, Fric 0.2,
     Iform 2).
@@ -65,13 +65,13 @@ def first_power_of_ten_above(n):
     return p
 
 
-def starter(n, impact, root, lagdt=False, ishell=1, isolid=1):
+def starter(n, impact, root, lagdt=False, ishell=1, isolid=1, block_nx=BLOCK_NX):
     nn = n + 1
     d = rc.Deck(fill=0)
     d.raw("#RADIOSS STARTER")
     d.comment("Benchmark deck written by bench/gen_shell_plate.py:",
-              "%d x %d four-node shells (%d nodes)%s." % (n, n, nn * nn,
-                                                          " and a block of 400 bricks" if impact else ""),
+              "%d x %d four-node shells (%d nodes)%s." % (
+                  n, n, nn * nn, " and a block of %d bricks" % (block_nx * block_nx * BLOCK_NZ) if impact else ""),
               "Units: Mg, mm, s.")
     d.ruler().begin(root, ("Mg", "mm", "s")).ruler()
     d.card("/TITLE", title="Clamped %g mm steel plate: %d x %d shells%s" % (
@@ -87,7 +87,7 @@ def starter(n, impact, root, lagdt=False, ishell=1, isolid=1):
         d.raw("\n".join("%10d%s%s" % (1 + nn * j + i, cs[i], yz) for i in range(nn)))
     block_node0 = first_power_of_ten_above(nn * nn)
     block_elem0 = first_power_of_ten_above(n * n)
-    nb = BLOCK_NX + 1
+    nb = block_nx + 1
 
     def bn(i, j, k):
         return block_node0 + 1 + i + nb * j + nb * nb * k
@@ -96,7 +96,7 @@ def starter(n, impact, root, lagdt=False, ishell=1, isolid=1):
         hb = L_PLATE / 100.0
         d.raw("#  Block nodes: %d x %d x %d grid of %g mm pitch, bottom face at z = %g" % (nb, nb, BLOCK_NZ + 1, hb,
                                                                                          BLOCK_Z0))
-        d.rows("/NODE", [(bn(i, j, k), (2 * i - BLOCK_NX) * hb / 2, (2 * j - BLOCK_NX) * hb / 2, BLOCK_Z0 + k * hb)
+        d.rows("/NODE", [(bn(i, j, k), (2 * i - block_nx) * hb / 2, (2 * j - block_nx) * hb / 2, BLOCK_Z0 + k * hb)
                          for k in range(BLOCK_NZ + 1) for j in range(nb) for i in range(nb)], sig=SIG)
     d.ruler()
     d.rows("/SHELL", [], 1)
@@ -105,10 +105,10 @@ def starter(n, impact, root, lagdt=False, ishell=1, isolid=1):
         d.raw("\n".join("%10d%10d%10d%10d%10d" % (1 + n * j + i, base + i, base + i + 1, base + i + 1 + nn,
                                                    base + i + nn) for i in range(n)))
     if impact:
-        d.rows("/BRICK", [(block_elem0 + 1 + i + BLOCK_NX * j + BLOCK_NX * BLOCK_NX * k,
+        d.rows("/BRICK", [(block_elem0 + 1 + i + block_nx * j + block_nx * block_nx * k,
                            bn(i, j, k), bn(i + 1, j, k), bn(i + 1, j + 1, k), bn(i, j + 1, k),
                            bn(i, j, k + 1), bn(i + 1, j, k + 1), bn(i + 1, j + 1, k + 1), bn(i, j + 1, k + 1))
-                          for k in range(BLOCK_NZ) for j in range(BLOCK_NX) for i in range(BLOCK_NX)], 2)
+                          for k in range(BLOCK_NZ) for j in range(block_nx) for i in range(block_nx)], 2)
     d.ruler()
     d.card("/PART", 1, "Plate", prop_ID=1, mat_ID=1)
     if impact:
@@ -156,10 +156,11 @@ def starter(n, impact, root, lagdt=False, ishell=1, isolid=1):
     return d.lines
 
 
-def engine(n, root, inter_tmin=0.0):
+def engine(n, root, inter_tmin=0.0, tstop=None):
     h = L_PLATE / n
     dt_shell = 0.9 * h / math.sqrt(E_STEEL / RHO_STEEL)
-    tstop = sig3(CYCLES * dt_shell)
+    if tstop is None:
+        tstop = sig3(CYCLES * dt_shell)
     e = rc.Deck(engine=True)
     e.raw("#RADIOSS ENGINE")
     e.comment("Tstop = %d cycles x shell time step 0.9 h / sqrt(E/rho) = %d x %.4g s" % (CYCLES, CYCLES, dt_shell))
@@ -183,6 +184,10 @@ def main(argv):
     p.add_argument("--n", type=int, default=1000, help="elements per side (default 1000: one million shells)")
     p.add_argument("--out", default=".", help="output folder (default: current folder)")
     p.add_argument("--impact", action="store_true", help="add a 10 x 10 x 4 brick block and two TYPE7")
+    p.add_argument("--block", type=int, default=BLOCK_NX,
+                   help="with --impact: bricks along each side of the block (default 10; 10 mm bricks, 4 deep)")
+    p.add_argument("--tstop", type=float, default=None,
+                   help="end time in s (default: 1500 cycles of the plate's shell step)")
     p.add_argument("--contact", choices=("type7", "lagdt", "addmass"), default="type7",
                    help="with --impact: plain TYPE7 (default); lagdt: /INTER/LAGDT/TYPE7 with /DT/INTER/CST Tmin; "
                         "addmass: plain TYPE7 with /DT/INTER/CST Tmin (added mass)")
@@ -210,12 +215,13 @@ def main(argv):
     s_path = os.path.join(args.out, root + "_0000.rad")
     e_path = os.path.join(args.out, root + "_0001.rad")
     rc.write(s_path, starter(args.n, args.impact, root, lagdt=args.contact == "lagdt", ishell=args.ishell,
-                             isolid=args.isolid))
-    lines, tstop = engine(args.n, root, args.tmin if args.contact != "type7" else 0.0)
+                             isolid=args.isolid, block_nx=args.block))
+    lines, tstop = engine(args.n, root, args.tmin if args.contact != "type7" else 0.0, args.tstop)
     rc.write(e_path, lines)
     print("wrote %s and %s: %d shells, %d plate nodes%s, Tstop %g s (%.1f s)" %
           (s_path, e_path, args.n * args.n, (args.n + 1) ** 2,
-           ", 400 bricks and 605 block nodes" if args.impact else "", tstop, time.time() - t0))
+           ", %d bricks and %d block nodes" % (args.block ** 2 * BLOCK_NZ, (args.block + 1) ** 2 * (BLOCK_NZ + 1))
+           if args.impact else "", tstop, time.time() - t0))
     return 0
 
 
