@@ -4,8 +4,6 @@
 // bricks m_e/8 per node, tetrahedra m_e/4 per node, no inertia for either; TYPE8 springs I/2 per node.
 #include "solver/explicit_engine.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -24,6 +22,26 @@ namespace radx::solver {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Node stages run in chunks of this many nodes (about 0.1 ms of work each): chunk boundaries never depend
+// on the thread count, and a model of fewer than two chunks' nodes runs them on one thread.
+constexpr std::int64_t kNodeChunk = 2048;
+// Below this many groups (of kGroupSize elements) the element stage runs on one thread: waking another
+// costs about what a few groups' forces do.
+constexpr std::int64_t kMinParallelGroups = 8;
+
+// a = f / m, angular a = moment / scalar inertia; a massless node gets none.
+inline void accelerate_node(NodeState& s, std::size_t n) {
+  const double m = s.mass[n];
+  const double inv = m > 0 ? 1.0 / m : 0.0;
+  s.ax[n] = s.fx[n] * inv;
+  s.ay[n] = s.fy[n] * inv;
+  s.az[n] = s.fz[n] * inv;
+  const double I = s.inertia[n];
+  const double invI = I > 0 ? 1.0 / I : 0.0;
+  s.awx[n] = s.mx[n] * invI;
+  s.awy[n] = s.my[n] * invI;
+  s.awz[n] = s.mz[n] * invI;
+}
 
 }  // namespace
 
@@ -38,6 +56,9 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
   build_nodes();
   build_groups();
   build_assembly();
+  group_votes_.resize(static_cast<std::size_t>(group_count()));
+  team_ =
+      std::make_unique<ThreadTeam>(options_.threads > 0 ? options_.threads : ThreadTeam::default_threads());
   kinematics_ = std::make_unique<KinematicsDriver>(model_, controls_, nodes_, skews_, sensors_.starts());
   accelerometers_ = std::make_unique<Accelerometers>(model_, skews_);
   if (!model_.interfaces.empty()) {
@@ -52,17 +73,17 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
     contact_ = std::make_unique<contact::Type7Contact>(model_, cc);
     if (contact_->empty()) contact_.reset();
   }
+  fuse_accelerations_ =
+      !kinematics_->has_ties() && !controls_.nodal.given &&
+      !(contact_ && controls_.inter.given && controls_.inter.action == model::DtAction::AddMass);
 }
 
 std::int64_t ExplicitEngine::count_deleted() const {
+  // The element stage counted each group's deleted elements (springs count none: their failure does not
+  // concern contact).
   std::int64_t n = 0;
-  for (const auto& g : shells_)
-    for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
-  for (const auto& g : bricks_)
-    for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
-  for (const auto& g : tetras_)
-    for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
-  return n;  // springs are not contact faces: their failure does not concern contact
+  for (const auto& v : group_votes_) n += v.deleted;
+  return n;
 }
 
 ExplicitEngine::~ExplicitEngine() = default;
@@ -422,77 +443,21 @@ void ExplicitEngine::build_assembly() {
   });
 }
 
+// 3. The element stage: each group's forces, then, while its state is in cache, its time-step vote and
+// its deleted elements. One chunk is one group, taken by whichever thread is free.
 void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
-  const auto ns = static_cast<std::int64_t>(shells_.size());
-  const auto nb = static_cast<std::int64_t>(bricks_.size());
-  const auto nt = static_cast<std::int64_t>(tetras_.size());
-  const auto nsp = static_cast<std::int64_t>(springs_.size());
-#pragma omp parallel
-  {
-#pragma omp for schedule(dynamic, 1) nowait
-    for (std::int64_t k = 0; k < ns; ++k) {
-      auto& g = shells_[static_cast<std::size_t>(k)];
-      const auto& mat = materials_[static_cast<std::size_t>(g.material)];
-      switch (g.kernel) {
-        case ShellKernel::Bt4: shell_bt4_forces(g, nodes_, mat, cyc); break;
-        case ShellKernel::Tri3: shell_c0_tri3_forces(g, nodes_, mat, cyc); break;
-        case ShellKernel::Qeph: shell_qeph_forces(g, nodes_, mat, cyc); break;
-        case ShellKernel::Qbat: shell_qbat_forces(g, nodes_, mat, cyc); break;
-      }
-    }
-#pragma omp for schedule(dynamic, 1) nowait
-    for (std::int64_t k = 0; k < nb; ++k) {
-      auto& g = bricks_[static_cast<std::size_t>(k)];
-      const auto& mat = materials_[static_cast<std::size_t>(g.material)];
-      switch (brick_kernel(g)) {
-        case BrickKernel::OnePoint: hex8_forces(g, nodes_, mat, cyc); break;  // Isolid 1 and 2
-        case BrickKernel::Heph: hex8_heph_forces(g, nodes_, mat, cyc); break;
-        case BrickKernel::FullyIntegrated: hex8_full_forces(g, nodes_, mat, cyc); break;
-      }
-    }
-#pragma omp for schedule(dynamic, 1) nowait
-    for (std::int64_t k = 0; k < nt; ++k) {
-      auto& g = tetras_[static_cast<std::size_t>(k)];
-      tetra4_forces(g, nodes_, materials_[static_cast<std::size_t>(g.material)], cyc);
-    }
-#pragma omp for schedule(dynamic, 1)
-    for (std::int64_t k = 0; k < nsp; ++k) {
-      auto& g = springs_[static_cast<std::size_t>(k)];
-      if (g.props.type == 8)
-        spring_type8_forces(g, nodes_, cyc);
-      else if (g.props.type == 13)
-        spring_type13_forces(g, nodes_, cyc);
-      else
-        spring_type4_forces(g, nodes_, cyc);
-    }
+  const std::int64_t groups = group_count();
+  const auto body = [&](std::int64_t flat) { group_forces_and_vote(flat, cyc); };
+  if (groups < kMinParallelGroups) {
+    for (std::int64_t k = 0; k < groups; ++k) body(k);
+    return;
   }
+  team_->run(groups, body);
 }
 
-void ExplicitEngine::assemble() {
-  const auto n = static_cast<std::int64_t>(nodes_.n);
-  auto& s = nodes_;
-#pragma omp parallel for schedule(static)
-  for (std::int64_t k = 0; k < n; ++k) {
-    const auto node = static_cast<std::size_t>(k);
-    double f[6] = {0, 0, 0, 0, 0, 0};
-    for (std::size_t q = slot_offsets_[node]; q < slot_offsets_[node + 1]; ++q) {
-      const Slot& sl = slots_[q];
-      for (int d = 0; d < 3; ++d) f[d] += sl.base[d * kGroupSize];
-      if (sl.rot)
-        for (int d = 3; d < 6; ++d) f[d] += sl.base[d * kGroupSize];
-    }
-    // External loads were put in f*_ext by the loads; the total is their sum with the element forces.
-    s.fx[node] = s.fx_ext[node] + f[0];
-    s.fy[node] = s.fy_ext[node] + f[1];
-    s.fz[node] = s.fz_ext[node] + f[2];
-    s.mx[node] += f[3];
-    s.my[node] += f[4];
-    s.mz[node] += f[5];
-  }
-}
-
-double ExplicitEngine::element_time_step(StepControl& control) {
-  double best = kInf;
+void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& cyc) {
+  auto& vote = group_votes_[static_cast<std::size_t>(flat)];
+  vote = GroupVote{kInf};
   // /DT/<family>/CST: an element whose scaled step reaches Tmin is switched to a constant step (the
   // small-strain switch of Radioss); radx freezes the step at Tmin and keeps the element's large-strain
   // kinematics (a documented difference). Without /DT/<family>/CST the step is the element's.
@@ -505,60 +470,145 @@ double ExplicitEngine::element_time_step(StepControl& control) {
       if (frozen > 0) {
         // Without the small-strain kinematics the element's own stable step keeps falling; below half the
         // frozen step the run would go unstable, so it stops and says which element.
-        if (dt < 0.5 * frozen && cst_violation_.empty())
-          cst_violation_ = "element " + std::to_string(id) + " was held at the /DT/.../CST step " +
-                           std::to_string(frozen) + " but its own stable step fell to " + std::to_string(dt) +
-                           " (radx keeps large-strain kinematics after the switch); the run stops before it "
-                           "goes unstable: refine the mesh or use /DT/NODA/CST";
+        if (dt < 0.5 * frozen && vote.violation_id == 0) {
+          vote.violation_id = id;
+          vote.violation_frozen = frozen;
+          vote.violation_dt = dt;
+        }
         dt = frozen;
       } else if (dt < fam.t_min && raw > 0) {
         frozen = fam.t_min;
         dt = frozen;
-        ++switched_elements_;
+        ++vote.switched;
       }
     }
-    if (dt < best) {
-      best = dt;
-      control.kind = kind;
-      control.user_id = id;
+    if (dt < vote.dt) {
+      vote.dt = dt;
+      vote.kind = kind;
+      vote.user_id = id;
     }
   };
-  for (auto& g : shells_) {
+  auto count_deleted_in = [&](const auto& g) {
+    for (int i = 0; i < g.count; ++i) vote.deleted += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
+  };
+  const auto ns = static_cast<std::int64_t>(shells_.size()), nb = static_cast<std::int64_t>(bricks_.size());
+  const auto nt = static_cast<std::int64_t>(tetras_.size());
+  if (flat < ns) {
+    auto& g = shells_[static_cast<std::size_t>(flat)];
+    const auto& mat = materials_[static_cast<std::size_t>(g.material)];
+    switch (g.kernel) {
+      case ShellKernel::Bt4: shell_bt4_forces(g, nodes_, mat, cyc); break;
+      case ShellKernel::Tri3: shell_c0_tri3_forces(g, nodes_, mat, cyc); break;
+      case ShellKernel::Qeph: shell_qeph_forces(g, nodes_, mat, cyc); break;
+      case ShellKernel::Qbat: shell_qbat_forces(g, nodes_, mat, cyc); break;
+    }
     const auto& fam = g.triangle ? controls_.shell3 : controls_.shell;
     const double scale = fam.given ? fam.scale : controls_.global.scale;
+    const auto kind = g.triangle ? StepControl::Kind::Shell3 : StepControl::Kind::Shell;
+    const auto& ids = g.triangle ? model_.shells3.id : model_.shells.id;
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
-      const auto e = static_cast<std::size_t>(g.element[k]);
-      visit(scale, fam, g.dt[k], g.dt_fixed[k],
-            g.triangle ? StepControl::Kind::Shell3 : StepControl::Kind::Shell,
-            g.triangle ? model_.shells3.id[e] : model_.shells.id[e], g.props.ismstr == 2);
+      visit(scale, fam, g.dt[k], g.dt_fixed[k], kind, ids[static_cast<std::size_t>(g.element[k])],
+            g.props.ismstr == 2);
     }
+    count_deleted_in(g);
+    return;
   }
-  const double scale = controls_.brick.given ? controls_.brick.scale : controls_.global.scale;
-  for (auto& g : bricks_) {
+  const double solid_scale = controls_.brick.given ? controls_.brick.scale : controls_.global.scale;
+  if (flat < ns + nb) {
+    auto& g = bricks_[static_cast<std::size_t>(flat - ns)];
+    const auto& mat = materials_[static_cast<std::size_t>(g.material)];
+    switch (brick_kernel(g)) {
+      case BrickKernel::OnePoint: hex8_forces(g, nodes_, mat, cyc); break;  // Isolid 1 and 2
+      case BrickKernel::Heph: hex8_heph_forces(g, nodes_, mat, cyc); break;
+      case BrickKernel::FullyIntegrated: hex8_full_forces(g, nodes_, mat, cyc); break;
+    }
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
-      visit(scale, controls_.brick, g.dt[k], g.dt_fixed[k], StepControl::Kind::Brick,
+      visit(solid_scale, controls_.brick, g.dt[k], g.dt_fixed[k], StepControl::Kind::Brick,
             model_.bricks.id[static_cast<std::size_t>(g.element[k])], g.ismstr == 2);
     }
+    count_deleted_in(g);
+    return;
   }
-  // Tetrahedra vote with the brick family's /DT/BRICK scale (Radioss counts them as solids); they are not
-  // switched by /DT/BRICK/CST (no small-strain form here), so their frozen step stays unused.
-  for (auto& g : tetras_) {
+  if (flat < ns + nb + nt) {
+    auto& g = tetras_[static_cast<std::size_t>(flat - ns - nb)];
+    tetra4_forces(g, nodes_, materials_[static_cast<std::size_t>(g.material)], cyc);
+    // Tetrahedra vote with the brick family's /DT/BRICK scale (Radioss counts them as solids); they are not
+    // switched by /DT/BRICK/CST (no small-strain form here), so their frozen step stays unused.
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
       double unused_frozen = 0.0;
-      visit(scale, controls_.brick, g.dt[k], unused_frozen, StepControl::Kind::Tetra,
+      visit(solid_scale, controls_.brick, g.dt[k], unused_frozen, StepControl::Kind::Tetra,
             model_.tetras.id[static_cast<std::size_t>(g.element[k])], false);
     }
+    count_deleted_in(g);
+    return;
   }
+  auto& g = springs_[static_cast<std::size_t>(flat - ns - nb - nt)];
+  if (g.props.type == 8)
+    spring_type8_forces(g, nodes_, cyc);
+  else if (g.props.type == 13)
+    spring_type13_forces(g, nodes_, cyc);
+  else
+    spring_type4_forces(g, nodes_, cyc);
   // Springs vote with the global /DT scale (Radioss's DTFAC1(6)); no /DT/<family>/CST switch applies.
-  for (auto& g : springs_) {
-    for (int i = 0; i < g.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      double unused_frozen = 0.0;
-      visit(controls_.global.scale, controls_.global, g.dt[k], unused_frozen, StepControl::Kind::Spring,
-            model_.springs.id[static_cast<std::size_t>(g.element[k])], false);
+  for (int i = 0; i < g.count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    double unused_frozen = 0.0;
+    visit(controls_.global.scale, controls_.global, g.dt[k], unused_frozen, StepControl::Kind::Spring,
+          model_.springs.id[static_cast<std::size_t>(g.element[k])], false);
+  }
+}
+
+bool ExplicitEngine::parallel_nodes() const {
+  return static_cast<std::int64_t>(nodes_.n) >= 2 * kNodeChunk;
+}
+
+// 4-5. f = f_ext + the element entries, node by node in a fixed order; with `accelerate`, a = f / m and
+// the angular a = moment / scalar inertia in the same pass (a massless node gets none).
+void ExplicitEngine::assemble_and_accelerate(bool accelerate) {
+  auto& s = nodes_;
+  const auto chunks = Chunks::of(static_cast<std::int64_t>(s.n), kNodeChunk);
+  const auto body = [&](std::int64_t c) {
+    for (auto node = static_cast<std::size_t>(chunks.begin(c));
+         node < static_cast<std::size_t>(chunks.end(c)); ++node) {
+      double f[6] = {0, 0, 0, 0, 0, 0};
+      for (std::size_t q = slot_offsets_[node]; q < slot_offsets_[node + 1]; ++q) {
+        const Slot& sl = slots_[q];
+        for (int d = 0; d < 3; ++d) f[d] += sl.base[d * kGroupSize];
+        if (sl.rot)
+          for (int d = 3; d < 6; ++d) f[d] += sl.base[d * kGroupSize];
+      }
+      // External loads were put in f*_ext by the loads; the total is their sum with the element forces.
+      s.fx[node] = s.fx_ext[node] + f[0];
+      s.fy[node] = s.fy_ext[node] + f[1];
+      s.fz[node] = s.fz_ext[node] + f[2];
+      s.mx[node] += f[3];
+      s.my[node] += f[4];
+      s.mz[node] += f[5];
+      if (accelerate) accelerate_node(s, node);
+    }
+  };
+  team_->run(chunks.count(), body, parallel_nodes());
+}
+
+// The element stage's votes combined in group order, so the controlling element is the one a serial scan
+// would name: the first group with the smallest step (ties go to the earlier group).
+double ExplicitEngine::element_time_step(StepControl& control) {
+  double best = kInf;
+  for (const auto& v : group_votes_) {
+    switched_elements_ += v.switched;
+    if (v.violation_id != 0 && cst_violation_.empty())
+      cst_violation_ = "element " + std::to_string(v.violation_id) + " was held at the /DT/.../CST step " +
+                       std::to_string(v.violation_frozen) + " but its own stable step fell to " +
+                       std::to_string(v.violation_dt) +
+                       " (radx keeps large-strain kinematics after the switch); the run stops before it "
+                       "goes unstable: refine the mesh or use /DT/NODA/CST";
+    if (v.dt < best) {
+      best = v.dt;
+      control.kind = v.kind;
+      control.user_id = v.user_id;
     }
   }
   return best;
@@ -674,9 +724,8 @@ CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
 //   8. integrate             11. advance
 // A stage that ends the run returns false with res.status and res.message set.
 RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_cycle) {
-  if (options_.threads > 0) omp_set_num_threads(options_.threads);
   RunResult res;
-  res.threads = omp_get_max_threads();
+  res.threads = team_->size();
   const auto t_wall0 = std::chrono::steady_clock::now();
   sensors_.update(0.0, 0.0);  // a sensor due at t = 0 is on from the start
   kinematics_->initial_conditions();
@@ -694,7 +743,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     if (!choose_time_step(L, res)) break;
     sensors_.update(L.time, L.dt2);
     kinematics_->transfer_tied_forces();  // 4b. TYPE2: before the accelerations, as in OpenRadioss
-    accelerations();
+    if (!fuse_accelerations_) accelerations();
     if (!lagrange_correction(L, res)) break;
     kinematics_->kinematic_conditions(L.time, L.dt1, L.dt2);
     if (!accelerometers_->empty()) accelerometers_->update(nodes_, L.dt12(), L.dt2 > 0 ? L.dt2 : L.dt1);
@@ -717,18 +766,22 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
   return res;
 }
 
-// 1. External loads at t_n into f*_ext; moments start from zero.
+// 1. External loads at t_n into f*_ext; moments start from zero (integrate() zeroed them after the last
+// cycle's update, in its pass over the nodes).
 void ExplicitEngine::external_loads(LoopState& L) {
   auto& s = nodes_;
-  for (auto* v : {&s.fx_ext, &s.fy_ext, &s.fz_ext, &s.mx, &s.my, &s.mz}) std::fill(v->begin(), v->end(), 0.0);
+  if (!loads_zeroed_)
+    for (auto* v : {&s.fx_ext, &s.fy_ext, &s.fz_ext, &s.mx, &s.my, &s.mz})
+      std::fill(v->begin(), v->end(), 0.0);
+  loads_zeroed_ = false;
   kinematics_->external_loads(L.time, L.dt1, L.dt2);
 }
 
-// 3-4. Element groups, then the assembly f = f_ext + f_elements node by node.
+// 3-4. Element groups, then the assembly f = f_ext + f_elements node by node (and a = f / m when fused).
 void ExplicitEngine::element_forces(LoopState& L) {
   const auto t0 = std::chrono::steady_clock::now();
   compute_element_forces(CycleInfo{L.dt1, L.dt2, L.time});
-  assemble();
+  assemble_and_accelerate(fuse_accelerations_);
   L.element_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -748,6 +801,7 @@ void ExplicitEngine::contact_forces(LoopState& L) {
     s.fx[k] += f[3 * k];
     s.fy[k] += f[3 * k + 1];
     s.fz[k] += f[3 * k + 2];
+    if (fuse_accelerations_) accelerate_node(s, k);
   }
   if (step.dt < kInf) {
     L.dt_contact = step.dt;
@@ -841,24 +895,18 @@ bool ExplicitEngine::choose_time_step(LoopState& L, RunResult& res) {
   return true;
 }
 
-// 5. a = f / m, angular a = moment / scalar inertia (a massless node gets none).
+// 5. a = f / m for every node: after the TYPE2 ties moved forces (otherwise the assembly pass did it).
 void ExplicitEngine::accelerations() {
   auto& s = nodes_;
-  const auto nn = static_cast<std::int64_t>(s.n);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t k = 0; k < nn; ++k) {
-    const auto n = static_cast<std::size_t>(k);
-    const double m = s.mass[n];
-    const double inv = m > 0 ? 1.0 / m : 0.0;
-    s.ax[n] = s.fx[n] * inv;
-    s.ay[n] = s.fy[n] * inv;
-    s.az[n] = s.fz[n] * inv;
-    const double I = s.inertia[n];
-    const double invI = I > 0 ? 1.0 / I : 0.0;
-    s.awx[n] = s.mx[n] * invI;
-    s.awy[n] = s.my[n] * invI;
-    s.awz[n] = s.mz[n] * invI;
-  }
+  const auto chunks = Chunks::of(static_cast<std::int64_t>(s.n), kNodeChunk);
+  team_->run(
+      chunks.count(),
+      [&](std::int64_t c) {
+        for (auto n = static_cast<std::size_t>(chunks.begin(c)); n < static_cast<std::size_t>(chunks.end(c));
+             ++n)
+          accelerate_node(s, n);
+      },
+      parallel_nodes());
 }
 
 // 6. The switched LAGDT pairs' multipliers correct a; their forces join f (outputs: reactions, internal
@@ -951,26 +999,38 @@ void ExplicitEngine::sum_energies(const LoopState& L) {
 }
 
 // 8. v^{n+1/2} = v^{n-1/2} + dt12 a^n, x^{n+1} = x^n + dt2 v^{n+1/2}; a non-finite coordinate stops the run.
+// The same pass zeroes the external forces and moments for the next cycle's loads (step 1).
 bool ExplicitEngine::integrate(LoopState& L, RunResult& res) {
   auto& s = nodes_;
   const double dt12 = L.dt12();
   const double dt2 = L.dt2;
-  const auto nn = static_cast<std::int64_t>(s.n);
-  bool finite = true;
-#pragma omp parallel for schedule(static) reduction(&& : finite)
-  for (std::int64_t k = 0; k < nn; ++k) {
-    const auto n = static_cast<std::size_t>(k);
-    s.vx[n] += dt12 * s.ax[n];
-    s.vy[n] += dt12 * s.ay[n];
-    s.vz[n] += dt12 * s.az[n];
-    s.wx[n] += dt12 * s.awx[n];
-    s.wy[n] += dt12 * s.awy[n];
-    s.wz[n] += dt12 * s.awz[n];
-    s.x[n] += dt2 * s.vx[n];
-    s.y[n] += dt2 * s.vy[n];
-    s.z[n] += dt2 * s.vz[n];
-    finite = finite && std::isfinite(s.x[n] + s.y[n] + s.z[n]);
-  }
+  const auto chunks = Chunks::of(static_cast<std::int64_t>(s.n), kNodeChunk);
+  std::vector<std::uint8_t> chunk_finite(static_cast<std::size_t>(chunks.count()), 1);
+  team_->run(
+      chunks.count(),
+      [&](std::int64_t c) {
+        bool finite = true;
+        for (auto n = static_cast<std::size_t>(chunks.begin(c)); n < static_cast<std::size_t>(chunks.end(c));
+             ++n) {
+          s.vx[n] += dt12 * s.ax[n];
+          s.vy[n] += dt12 * s.ay[n];
+          s.vz[n] += dt12 * s.az[n];
+          s.wx[n] += dt12 * s.awx[n];
+          s.wy[n] += dt12 * s.awy[n];
+          s.wz[n] += dt12 * s.awz[n];
+          s.x[n] += dt2 * s.vx[n];
+          s.y[n] += dt2 * s.vy[n];
+          s.z[n] += dt2 * s.vz[n];
+          finite = finite && std::isfinite(s.x[n] + s.y[n] + s.z[n]);
+          s.fx_ext[n] = s.fy_ext[n] = s.fz_ext[n] = 0.0;
+          s.mx[n] = s.my[n] = s.mz[n] = 0.0;
+        }
+        chunk_finite[static_cast<std::size_t>(c)] = finite ? 1 : 0;
+      },
+      parallel_nodes());
+  loads_zeroed_ = true;
+  const bool finite =
+      std::all_of(chunk_finite.begin(), chunk_finite.end(), [](std::uint8_t f) { return f != 0; });
   kinematics_->after_update(dt2);
   if (finite) return true;
   res.status = RunStatus::Error;

@@ -35,6 +35,7 @@
 #include "solver/node_state.hpp"
 #include "solver/sensors.hpp"
 #include "solver/skew_frames.hpp"
+#include "solver/thread_team.hpp"
 
 namespace radx::solver {
 
@@ -88,7 +89,7 @@ struct CycleReport {
 struct EngineOptions {
   explicit EngineOptions(int threads_ = 0, int report_every_ = 1)
       : threads(threads_), report_every(report_every_) {}
-  int threads = 0;  // 0: OpenMP default (OMP_NUM_THREADS or all cores)
+  int threads = 0;  // 0: ThreadTeam::default_threads() (OMP_NUM_THREADS, else the cores this process has)
   // Energies are summed every report_every cycles (and at the first and last): the listing's /PRINT
   // frequency. /STOP criteria are checked on those cycles.
   int report_every = 1;
@@ -145,13 +146,31 @@ class ExplicitEngine {
   std::vector<std::string> take_events();
   // The sensors' state (activation times).
   [[nodiscard]] const Sensors& sensors() const { return sensors_; }
+  // The engine's threads, for passes over its state between cycles (result fields); idle then.
+  [[nodiscard]] ThreadTeam& team() const { return *team_; }
 
  private:
   void build_nodes();
   void build_groups();
   void build_assembly();
+  // One element group's share of the cycle beyond its forces: its time-step vote and deleted elements.
+  struct GroupVote {
+    double dt = 0;  // the smallest scaled (or frozen) step of the group
+    StepControl::Kind kind = StepControl::Kind::None;
+    std::int64_t user_id = 0;
+    std::int64_t switched = 0;      // elements frozen by /DT/<family>/CST this cycle
+    std::int64_t deleted = 0;       // elements with off <= 0 (contact's Idel); springs count none
+    std::int64_t violation_id = 0;  // the first element whose own step fell below half its frozen step
+    double violation_frozen = 0, violation_dt = 0;
+  };
+  // The groups in one list for the element stage: shells, bricks, tetras, springs (group_votes_'s order).
+  [[nodiscard]] std::int64_t group_count() const {
+    return static_cast<std::int64_t>(shells_.size() + bricks_.size() + tetras_.size() + springs_.size());
+  }
   void compute_element_forces(const CycleInfo& cyc);
-  void assemble();
+  void group_forces_and_vote(std::int64_t flat, const CycleInfo& cyc);
+  [[nodiscard]] bool parallel_nodes() const;
+  void assemble_and_accelerate(bool accelerate);
   double element_time_step(StepControl& control);
   double nodal_time_step(StepControl& control);
   [[nodiscard]] std::string bad_element(double time, std::int64_t cycle) const;
@@ -210,6 +229,12 @@ class ExplicitEngine {
   std::vector<std::uint8_t>
       held_;  // nodes moved by /IMPVEL, rigid bodies or rigid walls (LAGDT stays penalty)
   std::int64_t count_deleted() const;
+  std::vector<GroupVote> group_votes_;  // filled by the element stage, combined by element_time_step
+  std::unique_ptr<ThreadTeam> team_;
+  bool loads_zeroed_ = false;
+  // The assembly pass also computes a = f / m when nothing changes f or m between it and step 5: no TYPE2
+  // ties, no /DT/NODA (it may add mass), no /DT/INTER/CST added mass; contact then updates a where it adds.
+  bool fuse_accelerations_ = false;  // integrate() zeroed f_ext and the moments for the next cycle's loads
   EnergyBalance energy_;
   double mass0_ = 0;
   std::int64_t switched_elements_ = 0;  // elements whose step was frozen by /DT/<family>/CST

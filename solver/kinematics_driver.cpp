@@ -54,6 +54,10 @@ void KinematicsDriver::transfer_tied_forces() {
   if (!parts_->ties.empty()) parts_->ties.transfer_forces(nodes_);
 }
 
+bool KinematicsDriver::has_ties() const {
+  return !parts_->ties.empty();
+}
+
 void KinematicsDriver::transfer_tied_stiffness() {
   if (!parts_->ties.empty()) parts_->ties.transfer_stiffness(nodes_);
 }

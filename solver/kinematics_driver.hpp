@@ -37,6 +37,8 @@ class KinematicsDriver {
   void external_loads(double t, double dt1, double dt2);
   // Before a = f/m (after the contact forces): /INTER/TYPE2 secondary forces and moments to the main nodes.
   void transfer_tied_forces();
+  // Whether transfer_tied_forces() moves anything (the model has /INTER/TYPE2 ties).
+  [[nodiscard]] bool has_ties() const;
   // /DT/NODA, after the elements' nodal stiffness: the tied nodes' stiffness to their main nodes.
   void transfer_tied_stiffness();
   // Step 7: after a = f/m, before v += dt12 a.

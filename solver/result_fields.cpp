@@ -107,6 +107,16 @@ std::size_t cell_offset(const model::Model& m, bool triangle) {
   return triangle ? m.shells.size() : 0;
 }
 
+// Calls body(gi) for every group index gi < n, 16 groups to a chunk, on the engine's threads (idle while a
+// state is written).
+template <class Body>
+void each_group_parallel(const ExplicitEngine& e, std::int64_t n, Body&& body) {
+  const auto chunks = Chunks::of(n, 16);
+  e.team().run(chunks.count(), [&](std::int64_t c) {
+    for (std::int64_t gi = chunks.begin(c); gi < chunks.end(c); ++gi) body(gi);
+  });
+}
+
 // Calls fn(cell index, CellValues) for every element of the model.
 template <class Fn>
 void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
@@ -116,8 +126,7 @@ void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
   // Groups write disjoint cells: the engine's threads, idle while a state is written, share the passes.
   const auto& shells = e.shell_groups();
   const auto n_shell_groups = static_cast<std::int64_t>(shells.size());
-#pragma omp parallel for schedule(dynamic, 16)
-  for (std::int64_t gi = 0; gi < n_shell_groups; ++gi) {
+  each_group_parallel(e, n_shell_groups, [&](std::int64_t gi) {
     const auto& g = shells[static_cast<std::size_t>(gi)];
     const int np = g.props.n_points;
     const auto rule = shell_detail::thickness_rule(np > 0 ? np : 0);
@@ -153,12 +162,11 @@ void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
       c.density = mats[static_cast<std::size_t>(g.material)].rho0;
       fn(cell_offset(m, g.triangle) + static_cast<std::size_t>(g.element[k]), c);
     }
-  }
+  });
   const std::size_t brick0 = m.shells.size() + m.shells3.size();
   const auto& bricks = e.brick_groups();
   const auto n_brick_groups = static_cast<std::int64_t>(bricks.size());
-#pragma omp parallel for schedule(dynamic, 16)
-  for (std::int64_t gi = 0; gi < n_brick_groups; ++gi) {
+  each_group_parallel(e, n_brick_groups, [&](std::int64_t gi) {
     const auto& g = bricks[static_cast<std::size_t>(gi)];
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
@@ -171,13 +179,12 @@ void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
       c.density = g.rho[k];
       fn(brick0 + static_cast<std::size_t>(g.element[k]), c);
     }
-  }
+  });
   // Tetrahedra: the same fields as bricks (e_hg stays 0).
   const std::size_t tetra0 = brick0 + m.bricks.size();
   const auto& tetras = e.tetra_groups();
   const auto n_tetra_groups = static_cast<std::int64_t>(tetras.size());
-#pragma omp parallel for schedule(dynamic, 16)
-  for (std::int64_t gi = 0; gi < n_tetra_groups; ++gi) {
+  each_group_parallel(e, n_tetra_groups, [&](std::int64_t gi) {
     const auto& g = tetras[static_cast<std::size_t>(gi)];
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
@@ -191,7 +198,7 @@ void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
       c.density = g.rho[k];
       fn(tetra0 + static_cast<std::size_t>(g.element[k]), c);
     }
-  }
+  });
 }
 
 }  // namespace

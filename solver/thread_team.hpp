@@ -1,0 +1,89 @@
+// The engine's team of threads: deterministic division of work, dynamic assignment, bounded waiting.
+//
+// A stage of n items is cut into chunks of a fixed size (Chunks::of), so chunk c always covers the same
+// items [c * size, min((c + 1) * size, n)) whatever the thread count. Threads take chunks from a shared
+// counter: a thread whose core another program is using takes fewer chunks instead of making everyone wait
+// for an equal share at the end of the stage. Each chunk writes only its own outputs and reductions are
+// combined in chunk order after the stage, so results are bit-identical for any number of threads.
+//
+// Waiting is bounded: a thread with nothing to do spins for at most kSpinMicroseconds (pausing), then
+// sleeps on a futex (std::atomic::wait) until the next stage is posted or the last chunk is done. OpenMP's
+// default (libgomp spins about 300 000 times before sleeping) makes a waiting thread hold a core that
+// another job on the machine needs, and a team of 2 then ran 1.3x slower than 1 thread beside one busy core.
+// The bound is long enough to bridge the short serial gaps between a cycle's stages (tens of microseconds)
+// and short against a stage (milliseconds on a model worth threading).
+//
+// Stages too small to pay for waking a thread (fewer than two chunks, or one thread) run inline on the
+// calling thread: no thread is woken.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+namespace radx::solver {
+
+// A stage's division into chunks of `size` items (the last may be shorter).
+struct Chunks {
+  std::int64_t items = 0, size = 1;
+  [[nodiscard]] std::int64_t count() const { return items <= 0 ? 0 : (items + size - 1) / size; }
+  [[nodiscard]] std::int64_t begin(std::int64_t c) const { return c * size; }
+  [[nodiscard]] std::int64_t end(std::int64_t c) const {
+    return c * size + size < items ? c * size + size : items;
+  }
+  static Chunks of(std::int64_t items, std::int64_t size) { return Chunks{items, size > 0 ? size : 1}; }
+};
+
+class ThreadTeam {
+ public:
+  static constexpr int kSpinMicroseconds = 50;
+
+  // threads >= 1: the calling thread plus threads - 1 workers started now and joined by the destructor.
+  explicit ThreadTeam(int threads);
+  ~ThreadTeam();
+  ThreadTeam(const ThreadTeam&) = delete;
+  ThreadTeam& operator=(const ThreadTeam&) = delete;
+
+  [[nodiscard]] int size() const { return static_cast<int>(workers_.size()) + 1; }
+
+  // Calls body(c) exactly once for every chunk c in [0, chunks), on the team's threads, and returns when all
+  // are done; in order on the calling thread when `parallel` is false (work too small to share). The body
+  // must not throw and must not call run() itself.
+  template <class Body>
+  void run(std::int64_t chunks, Body&& body, bool parallel = true) {
+    if (chunks <= 0) return;
+    if (!parallel || chunks == 1 || workers_.empty()) {
+      for (std::int64_t c = 0; c < chunks; ++c) body(c);
+      return;
+    }
+    using B = std::remove_reference_t<Body>;
+    void* ctx = const_cast<void*>(static_cast<const void*>(&body));
+    post(
+        chunks, [](void* p, std::int64_t c) { (*static_cast<B*>(p))(c); }, ctx);
+  }
+
+  // The number of threads the engine uses when none is asked for: OMP_NUM_THREADS when it is set (Radioss
+  // users set it), else the cores this process may run on.
+  static int default_threads();
+
+ private:
+  using ChunkFn = void (*)(void*, std::int64_t);
+  void post(std::int64_t chunks, ChunkFn fn, void* ctx);
+  void take_chunks();
+  void worker_loop();
+
+  // The posted stage; written by the caller before it bumps `generation_`, read by the workers after.
+  ChunkFn fn_ = nullptr;
+  void* ctx_ = nullptr;
+  std::int64_t chunks_ = 0;
+  alignas(64) std::atomic<std::int64_t> next_chunk_{0};
+  alignas(64) std::atomic<std::uint32_t> generation_{0};  // bumped per stage; workers wait on it
+  alignas(64) std::atomic<int> busy_{0};  // workers still in the stage; the caller waits on it
+  std::atomic<bool> stop_{false};
+  std::vector<std::thread> workers_;
+};
+
+}  // namespace radx::solver
