@@ -38,9 +38,10 @@ T wait_while_equal(const std::atomic<T>& value, T old) {
 }  // namespace
 
 ThreadTeam::ThreadTeam(int threads) {
-  const int workers = threads > 1 ? threads - 1 : 0;
-  workers_.reserve(static_cast<std::size_t>(workers));
-  for (int i = 0; i < workers; ++i) workers_.emplace_back([this] { worker_loop(); });
+  const auto workers = static_cast<std::size_t>(threads > 1 ? threads - 1 : 0);
+  state_ = std::make_unique<WorkerState[]>(workers);
+  workers_.reserve(workers);
+  for (std::size_t i = 0; i < workers; ++i) workers_.emplace_back([this, i] { worker_loop(i); });
 }
 
 ThreadTeam::~ThreadTeam() {
@@ -80,22 +81,34 @@ void ThreadTeam::post(std::int64_t chunks, ChunkFn fn, void* ctx) {
   ctx_ = ctx;
   chunks_ = chunks;
   next_chunk_.store(0, std::memory_order_relaxed);
-  busy_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
-  generation_.fetch_add(1, std::memory_order_release);  // publishes the stage above
+  const std::size_t workers = workers_.size();
+  for (std::size_t i = 0; i < workers; ++i) state_[i].v.store(kPosted, std::memory_order_release);
+  generation_.fetch_add(1, std::memory_order_release);
   generation_.notify_all();
   take_chunks();
-  // The workers' last decrement releases their chunks' writes to this thread.
-  for (int left = busy_.load(std::memory_order_acquire); left != 0;) left = wait_while_equal(busy_, left);
+  // Every chunk is taken. A worker still at kPosted has not read the stage: withdraw it. The others hold
+  // or held a chunk: wait for their kDone, which releases their chunks' writes to this thread.
+  for (std::size_t i = 0; i < workers; ++i) {
+    int seen = kPosted;
+    if (state_[i].v.compare_exchange_strong(seen, kWithdrawn, std::memory_order_acq_rel)) continue;
+    while (seen != kDone) seen = wait_while_equal(state_[i].v, seen);
+  }
 }
 
-void ThreadTeam::worker_loop() {
+void ThreadTeam::worker_loop(std::size_t index) {
+  auto& state = state_[index].v;
   // The generation the team started with: a stage posted before this thread first runs is still seen.
   std::uint32_t seen = 0;
   while (true) {
     seen = wait_while_equal(generation_, seen);
     if (stop_.load(std::memory_order_relaxed)) return;
+    // The stage to join is the one whose kPosted this reads (a late wake-up may find a newer stage than the
+    // generation it woke for, or none: withdrawn).
+    int posted = kPosted;
+    if (!state.compare_exchange_strong(posted, kRunning, std::memory_order_acq_rel)) continue;
     take_chunks();
-    if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1) busy_.notify_one();
+    state.store(kDone, std::memory_order_release);
+    state.notify_one();
   }
 }
 
