@@ -73,9 +73,8 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
     contact_ = std::make_unique<contact::Type7Contact>(model_, cc);
     if (contact_->empty()) contact_.reset();
   }
-  fuse_accelerations_ =
-      !kinematics_->has_ties() && !controls_.nodal.given &&
-      !(contact_ && controls_.inter.given && controls_.inter.action == model::DtAction::AddMass);
+  fuse_accelerations_ = !kinematics_->has_ties() && !controls_.nodal.given &&
+                        !(contact_ && controls_.inter.action == model::DtAction::AddMass);
 }
 
 std::int64_t ExplicitEngine::count_deleted() const {
