@@ -2,6 +2,7 @@
 
 #include <sched.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <string>
@@ -68,10 +69,10 @@ int ThreadTeam::default_threads() {
   return hw >= 1 ? static_cast<int>(hw) : 1;
 }
 
-void ThreadTeam::take_chunks() {
-  while (true) {
+std::int64_t ThreadTeam::take_chunks() {
+  for (std::int64_t ran = 0;; ++ran) {
     const std::int64_t c = next_chunk_.fetch_add(1, std::memory_order_relaxed);
-    if (c >= chunks_) return;
+    if (c >= chunks_) return ran;
     fn_(ctx_, c);
   }
 }
@@ -85,13 +86,25 @@ void ThreadTeam::post(std::int64_t chunks, ChunkFn fn, void* ctx) {
   for (std::size_t i = 0; i < workers; ++i) state_[i].v.store(kPosted, std::memory_order_release);
   generation_.fetch_add(1, std::memory_order_release);
   generation_.notify_all();
-  take_chunks();
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  const std::int64_t mine = take_chunks();
+  const auto t1 = clock::now();
   // Every chunk is taken. A worker still at kPosted has not read the stage: withdraw it. The others hold
   // or held a chunk: wait for their kDone, which releases their chunks' writes to this thread.
   for (std::size_t i = 0; i < workers; ++i) {
     int seen = kPosted;
     if (state_[i].v.compare_exchange_strong(seen, kWithdrawn, std::memory_order_acq_rel)) continue;
     while (seen != kDone) seen = wait_while_equal(state_[i].v, seen);
+  }
+  // Did sharing pay? Alone, the caller would have taken about its time per chunk times every chunk.
+  const double worked = std::chrono::duration<double>(t1 - t0).count();
+  const double took = std::chrono::duration<double>(clock::now() - t0).count();
+  if (mine > 0 && took > worked * static_cast<double>(chunks) / static_cast<double>(mine)) {
+    solo_left_ = solo_next_;
+    solo_next_ = std::min(2 * solo_next_, kMaxSoloStages);
+  } else {
+    solo_next_ = 2;
   }
 }
 

@@ -18,6 +18,14 @@
 //
 // Stages too small to pay for waking a thread (fewer than two chunks, or one thread) run inline on the
 // calling thread: no thread is woken.
+//
+// A worker can still be preempted while it holds a chunk (its core taken by another program for a time
+// slice, milliseconds), and the stage then waits for it. So the team checks each shared stage: when the
+// caller's wait for the workers' last chunks made the stage longer than the caller would have taken alone
+// (its own time per chunk times all the chunks), the next stages run on the caller alone, 2, 4, ... up to
+// kMaxSoloStages at a time while sharing keeps losing, and sharing is tried again after each such run. On a
+// machine whose other cores are busy the team so falls back to one thread instead of being slower than it;
+// which thread runs a chunk never changes the results.
 #pragma once
 
 #include <atomic>
@@ -43,6 +51,7 @@ struct Chunks {
 class ThreadTeam {
  public:
   static constexpr int kSpinMicroseconds = 50;
+  static constexpr int kMaxSoloStages = 1024;
 
   // threads >= 1: the calling thread plus threads - 1 workers started now and joined by the destructor.
   explicit ThreadTeam(int threads);
@@ -58,7 +67,8 @@ class ThreadTeam {
   template <class Body>
   void run(std::int64_t chunks, Body&& body, bool parallel = true) {
     if (chunks <= 0) return;
-    if (!parallel || chunks == 1 || workers_.empty()) {
+    if (!parallel || chunks == 1 || workers_.empty() || solo_left_ > 0) {
+      if (parallel && solo_left_ > 0) --solo_left_;
       for (std::int64_t c = 0; c < chunks; ++c) body(c);
       return;
     }
@@ -75,7 +85,7 @@ class ThreadTeam {
  private:
   using ChunkFn = void (*)(void*, std::int64_t);
   void post(std::int64_t chunks, ChunkFn fn, void* ctx);
-  void take_chunks();
+  std::int64_t take_chunks();  // returns how many it ran
   void worker_loop(std::size_t index);
 
   // The posted stage; written by the caller before it bumps `generation_`, read by the workers after.
@@ -93,6 +103,9 @@ class ThreadTeam {
   std::unique_ptr<WorkerState[]> state_;
   std::atomic<bool> stop_{false};
   std::vector<std::thread> workers_;
+  // The caller's fallback to running stages alone (caller's thread only).
+  int solo_left_ = 0;  // shared-looking stages still to run alone
+  int solo_next_ = 2;  // the length of the next solo run if sharing loses again
 };
 
 }  // namespace radx::solver
