@@ -108,7 +108,9 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
   using namespace shell_detail;
   constexpr std::size_t G = kGroupSize;
   const ShellProps& pr = g.props;
-  const bool plain_h = pr.ismstr == 1;  // [1.7]: Ismstr 1 takes the plain h = (1, -1, 1, -1) as gamma
+  // [1.7]: Ismstr 1 takes the plain h = (1, -1, 1, -1) as gamma: wh = 0 (wh x, x finite, is +-0, and 1 +- 0 =
+  // 1).
+  const double wh = pr.ismstr == 1 ? 0.0 : 1.0;
   // Ishell 4 or 1, as arithmetic weights so that one vectorised loop runs both (w = 0 adds exact zeros).
   const double w4 = pr.ishell == 4 ? 1.0 : 0.0, w1 = 1.0 - w4;
   const double w4_moment = pr.n_points != 1 ? w4 : 0.0;  // cfint3.F: not with one point through the thickness
@@ -369,7 +371,7 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
       const double lx1 = bk.lx[1][j], lx2 = bk.lx[2][j], lx3 = bk.lx[3][j];
       const double ly1 = bk.ly[1][j], ly2 = bk.ly[2][j], ly3 = bk.ly[3][j];
       const double hx = (-lx1 + lx2 - lx3) * ainv, hy = (-ly1 + ly2 - ly3) * ainv;
-      const double c1 = plain_h ? 0.0 : PX1 * hx + PY1 * hy, c2 = plain_h ? 0.0 : PX2 * hx + PY2 * hy;
+      const double c1 = wh * (PX1 * hx + PY1 * hy), c2 = wh * (PX2 * hx + PY2 * hy);
       const double gam[4] = {off * (1.0 - c1), off * (-1.0 - c2), off * (1.0 + c1), off * (-1.0 + c2)};
       double qx = 0, qy = 0, qz = 0;
       for (int k = 0; k < 4; ++k) {
