@@ -64,7 +64,9 @@
 // element step. Square roots are taken in passes of their own (sqrt_in_place). Elements deleted at entry go
 // through the arithmetic with every state update masked, and get their zero forces and infinite step in a
 // scalar pass. The arithmetic is that of the element-by-element version, operation for operation, so the
-// results are the same to the bit.
+// results are the same to the bit. The kernel is compiled twice, for the build's x86-64-v2 and for x86-64-v3
+// (AVX2, four elements per vector), and runs the second where the processor has it (kernel_isa.hpp): the same
+// results to the bit, about half the instructions.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -72,6 +74,7 @@
 
 #include "solver/element_gather.hpp"
 #include "solver/element_groups.hpp"
+#include "solver/kernel_isa.hpp"
 #include "solver/shell_frame.hpp"
 #include "solver/shell_section.hpp"
 
@@ -101,10 +104,8 @@ struct Bt4Block {
   shell_detail::SectionBlock<kBlock> sec;
 };
 
-}  // namespace
-
-void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
-                      const CycleInfo& cyc) {
+// The kernel, compiled once per instruction-set variant (kernel_isa.hpp) by the wrappers below.
+void bt4_body(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
   using namespace shell_detail;
   constexpr std::size_t G = kGroupSize;
   const ShellProps& pr = g.props;
@@ -438,6 +439,34 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
         k_nodal[ii] = 0.0;
       }
   }
+}
+
+[[gnu::flatten]] void bt4_baseline(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                                   const CycleInfo& cyc) {
+  bt4_body(g, nodes, mat, cyc);
+}
+
+#if RADX_HAVE_ISA_V3
+RADX_TARGET_V3 void bt4_v3(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                           const CycleInfo& cyc) {
+  bt4_body(g, nodes, mat, cyc);
+}
+#endif
+
+}  // namespace
+
+void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc,
+                      KernelIsa isa) {
+#if RADX_HAVE_ISA_V3
+  if (isa == KernelIsa::V3 && kernel_isa_supported(KernelIsa::V3)) return bt4_v3(g, nodes, mat, cyc);
+#endif
+  (void)isa;
+  bt4_baseline(g, nodes, mat, cyc);
+}
+
+void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                      const CycleInfo& cyc) {
+  shell_bt4_forces(g, nodes, mat, cyc, best_kernel_isa());
 }
 
 }  // namespace radx::solver
