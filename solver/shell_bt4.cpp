@@ -187,13 +187,20 @@ void bt4_body(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat, 
   double* small = g.small.data();
   double* ref = g.ref_local.data();
   double capture[kGroupSize];
-  bool any_small = false;
+  // Ismstr 1 is small strain from the start: the same frozen geometry, captured at the first cycle. (Written
+  // without branches: the loop vectorises.)
+  const bool ismstr1 = pr.ismstr == 1;
+  const double* dt_fixed = g.dt_fixed.data();
+  std::int64_t any_small = 0;
+  RADX_IVDEP
   for (int i = 0; i < g.count; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    // Ismstr 1 is small strain from the start: the same frozen geometry, captured at the first cycle.
-    capture[ii] = ((g.dt_fixed[ii] > 0.0 || pr.ismstr == 1) && small[ii] == 0.0) ? 1.0 : 0.0;
-    if (capture[ii] != 0.0) small[ii] = 1.0;
-    any_small = any_small || small[ii] != 0.0;
+    const double sm = small[ii];
+    const bool cap = ((dt_fixed[ii] > 0.0) | ismstr1) & (sm == 0.0);
+    capture[ii] = cap ? 1.0 : 0.0;
+    const double sm_new = cap ? 1.0 : sm;
+    small[ii] = sm_new;
+    any_small |= sm_new != 0.0 ? 1 : 0;
   }
 
   Bt4Block bk;
@@ -222,7 +229,7 @@ void bt4_body(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat, 
     // (sm = 1), so PX, PY, A and the step stay constant; the selects are arithmetic so the loop stays
     // vectorised. A group without such an element (the usual case) takes the current coordinates without
     // reading or writing the frozen ones (sm = 0 would return them exactly).
-    if (any_small) {
+    if (any_small != 0) {
       RADX_IVDEP
       for (int j = 0; j < len; ++j) {
         const std::size_t ii = static_cast<std::size_t>(i0 + j);
