@@ -4,7 +4,9 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <numbers>
 #include <vector>
@@ -270,6 +272,23 @@ ShellPointResult shell_point_update(const MaterialParams& p, int iplas, double r
 // Johnson-Cook factor R = 1 + c ln(max(rate, rate0)/rate0) of 6.2 (exactly 1 without a logarithm when c = 0
 // or rate <= rate0); for law 36 the rate itself (the curves are chosen per point); 1 for law 1.
 double jc_rate_factor(const MaterialParams& p, double rate);
+
+// A lower bound of law 2's jc_rate_factor, R_lo <= R = 1 + c ln(max(rate, rate0)/rate0), without a
+// logarithm and without a branch (the kernels' vectorised loops take it for every element and the logarithm
+// only for the elements with a point that may yield): for x = rate/rate0 = 2^e m, m in [1, 2),
+// ln x = e ln 2 + ln m >= ln 2 (e + m - 1), the chord of the concave ln over [1, 2] (at most 0.061 below it),
+// less 1e-9 for the rounding of these few operations; max(., 0) keeps R_lo = 1 at or below rate0 (and for
+// rate 0 or subnormal). c >= 0 and inv_rate0 = 1/rate0 > 0.
+inline double jc_rate_factor_lower(double c, double inv_rate0, double rate) {
+  const double x = rate * inv_rate0;
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  // The biased exponent as a double, exactly: 2^52 + k has k in its low mantissa bits.
+  constexpr std::uint64_t kTwo52 = 0x4330000000000000ULL;
+  const double e = std::bit_cast<double>(((bits >> 52) & 0x7FFULL) | kTwo52) - 4503599627370496.0 - 1023.0;
+  const double m = std::bit_cast<double>((bits & 0x000FFFFFFFFFFFFFULL) | 0x3FF0000000000000ULL);
+  const double ln_lo = std::numbers::ln2 * (e + (m - 1.0)) - 1e-9;
+  return 1.0 + c * std::max(ln_lo, 0.0);
+}
 
 // Rate at or below which jc_rate_factor is 1 (+infinity: always 1); the kernels call jc_rate_factor only
 // above it. -infinity for law 36 with several curves (the term is the rate).

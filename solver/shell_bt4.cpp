@@ -61,10 +61,15 @@
 // block's elements with the element index innermost, on structure-of-arrays scratch (Bt4Block), written
 // without branches so that GCC vectorises it: gather; frame; local geometry, velocities and increments;
 // strain rate; section (shell_section.hpp); energy, forces and hourglass; rotation to global axes and the
-// element step. Square roots are taken in passes of their own (sqrt_in_place). Elements deleted at entry go
+// element step. Square roots are taken in passes of their own (sqrt_in_place). Law 2's rate term
+// R = 1 + c ln(rate/rate0) is first a lower bound without a logarithm (jc_rate_factor_lower), which is all
+// the elastic check of the section needs; the logarithm is taken only for the elements with a point that may
+// yield (SectionBlock::rfac_lower). Elements deleted at entry go
 // through the arithmetic with every state update masked, and get their zero forces and infinite step in a
 // scalar pass. The arithmetic is that of the element-by-element version, operation for operation, so the
-// results are the same to the bit.
+// results are the same to the bit. The kernel is compiled twice, for the build's x86-64-v2 and for x86-64-v3
+// (AVX2, four elements per vector), and runs the second where the processor has it (kernel_isa.hpp): the same
+// results to the bit, about half the instructions.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -72,6 +77,7 @@
 
 #include "solver/element_gather.hpp"
 #include "solver/element_groups.hpp"
+#include "solver/kernel_isa.hpp"
 #include "solver/shell_frame.hpp"
 #include "solver/shell_section.hpp"
 
@@ -101,14 +107,29 @@ struct Bt4Block {
   shell_detail::SectionBlock<kBlock> sec;
 };
 
-}  // namespace
+// Current in-plane coordinates of node k (1..3) of block element j relative to node 1: e1.(X_k - X_1),
+// e2.(X_k - X_1) [1.2].
+inline void local_xy(const Bt4Block& bk, int k, int j, double& cx, double& cy) {
+  const double dx = bk.nb.x[k][j] - bk.nb.x[0][j], dy = bk.nb.y[k][j] - bk.nb.y[0][j],
+               dz = bk.nb.z[k][j] - bk.nb.z[0][j];
+  cx = bk.fr.e1[0][j] * dx + bk.fr.e1[1][j] * dy + bk.fr.e1[2][j] * dz;
+  cy = bk.fr.e2[0][j] * dx + bk.fr.e2[1][j] * dy + bk.fr.e2[2][j] * dz;
+}
 
-void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
-                      const CycleInfo& cyc) {
+// Warp e3.(X_2 - X_1) of block element j (Ishell 4) [1.3].
+inline double warp_z2(const Bt4Block& bk, int j) {
+  return bk.fr.e3[0][j] * (bk.nb.x[1][j] - bk.nb.x[0][j]) + bk.fr.e3[1][j] * (bk.nb.y[1][j] - bk.nb.y[0][j]) +
+         bk.fr.e3[2][j] * (bk.nb.z[1][j] - bk.nb.z[0][j]);
+}
+
+// The kernel, compiled once per instruction-set variant (kernel_isa.hpp) by the wrappers below.
+void bt4_body(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
   using namespace shell_detail;
   constexpr std::size_t G = kGroupSize;
   const ShellProps& pr = g.props;
-  const bool plain_h = pr.ismstr == 1;  // [1.7]: Ismstr 1 takes the plain h = (1, -1, 1, -1) as gamma
+  // [1.7]: Ismstr 1 takes the plain h = (1, -1, 1, -1) as gamma: wh = 0 (wh x, x finite, is +-0, and 1 +- 0 =
+  // 1).
+  const double wh = pr.ismstr == 1 ? 0.0 : 1.0;
   // Ishell 4 or 1, as arithmetic weights so that one vectorised loop runs both (w = 0 adds exact zeros).
   const double w4 = pr.ishell == 4 ? 1.0 : 0.0, w1 = 1.0 - w4;
   const double w4_moment = pr.n_points != 1 ? w4 : 0.0;  // cfint3.F: not with one point through the thickness
@@ -136,13 +157,17 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
   const double kf0 = young * pr.hf * shf / (24.0 * (1.0 + nu)) * dt1;
   const bool update_thick = pr.ithick == 1;
   // Strain rate above which the element's rate term differs from 1 (jc_rate_factor).
-  const double rate_one = shell_rate_threshold(mat);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // Law 2 with c != 0 takes a lower bound of R in the vectorised loop and the logarithm only for the elements
+  // with a point that may yield (SectionBlock::rfac_lower): c_lower = 0 makes the bound exactly 1 otherwise.
+  const bool r_lower = mat.law == model::MaterialLaw::JohnsonCook && mat.c != 0;
+  const double c_lower = r_lower ? mat.c : 0.0, inv_rate0 = r_lower ? 1.0 / mat.eps_dot0 : 1.0;
+  const double rate_one = r_lower ? kInf : shell_rate_threshold(mat);
   const double tiny20 = opaque(1e-20), tiny30 = opaque(1e-30);  // floors of divisors
   // Masks. State updates of the last stage are written x + m * dx (m = 1, or 0 for an element deleted at
   // entry or in this cycle, whose increments are finite) rather than selected: a select of a computed value
   // is moved into a branch, which may trap (-ftrapping-math), and the loop would not vectorise.
   const double one = opaque(1.0), zero = opaque(0.0);
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   const double fail_limit = failure_limit(mat);  // EPS_p_max (6.4)
 
   const std::int32_t* conn = g.conn.data();
@@ -162,16 +187,26 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
   double* small = g.small.data();
   double* ref = g.ref_local.data();
   double capture[kGroupSize];
+  // Ismstr 1 is small strain from the start: the same frozen geometry, captured at the first cycle. (Written
+  // without branches: the loop vectorises.)
+  const bool ismstr1 = pr.ismstr == 1;
+  const double* dt_fixed = g.dt_fixed.data();
+  std::int64_t any_small = 0;
+  RADX_IVDEP
   for (int i = 0; i < g.count; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    // Ismstr 1 is small strain from the start: the same frozen geometry, captured at the first cycle.
-    capture[ii] = ((g.dt_fixed[ii] > 0.0 || pr.ismstr == 1) && small[ii] == 0.0) ? 1.0 : 0.0;
-    if (capture[ii] != 0.0) small[ii] = 1.0;
+    const double sm = small[ii];
+    const bool cap = ((dt_fixed[ii] > 0.0) | ismstr1) & (sm == 0.0);
+    capture[ii] = cap ? 1.0 : 0.0;
+    const double sm_new = cap ? 1.0 : sm;
+    small[ii] = sm_new;
+    any_small |= sm_new != 0.0 ? 1 : 0;
   }
 
   Bt4Block bk;
   SectionBlock<kBlock>& sec = bk.sec;
   sec.dt1 = dt1;  // law 27's rate term
+  sec.rfac_lower = r_lower;
   for (int i0 = 0; i0 < g.count; i0 += kBlock) {
     const int len = std::min(kBlock, g.count - i0);
 
@@ -189,32 +224,40 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
       thick[ii] = th;
       sec.t[j] = update_thick ? th : t0i;
     }
+    // Local coordinates (node 1 at 0) and the warp [1.2, 1.3]. Small strain after a /DT/SHELL/CST switch (or
+    // Ismstr 1): the local coordinates are frozen at the first cycle after it (cap = 1) and used from then on
+    // (sm = 1), so PX, PY, A and the step stay constant; the selects are arithmetic so the loop stays
+    // vectorised. A group without such an element (the usual case) takes the current coordinates without
+    // reading or writing the frozen ones (sm = 0 would return them exactly).
+    if (any_small != 0) {
+      RADX_IVDEP
+      for (int j = 0; j < len; ++j) {
+        const std::size_t ii = static_cast<std::size_t>(i0 + j);
+        const double sm = small[ii], cap = capture[ii];
+        for (int k = 1; k < 4; ++k) {
+          double cx = 0, cy = 0;
+          local_xy(bk, k, j, cx, cy);
+          small_strain_coordinates(cx, cy, cap, sm, ref[static_cast<std::size_t>(k - 1) * G + ii],
+                                   ref[static_cast<std::size_t>(k + 2) * G + ii], bk.lx[k][j], bk.ly[k][j]);
+        }
+        bk.z2[j] = (1.0 - sm) * warp_z2(bk, j);
+      }
+    } else {
+      RADX_IVDEP
+      for (int j = 0; j < len; ++j) {
+        for (int k = 1; k < 4; ++k) local_xy(bk, k, j, bk.lx[k][j], bk.ly[k][j]);
+        bk.z2[j] = warp_z2(bk, j);
+      }
+    }
     // Local geometry, local velocities and the increments [1.3].
     RADX_IVDEP
     for (int j = 0; j < len; ++j) {
       const double e1x = bk.fr.e1[0][j], e1y = bk.fr.e1[1][j], e1z = bk.fr.e1[2][j];
       const double e2x = bk.fr.e2[0][j], e2y = bk.fr.e2[1][j], e2z = bk.fr.e2[2][j];
       const double e3x = bk.fr.e3[0][j], e3y = bk.fr.e3[1][j], e3z = bk.fr.e3[2][j];
-      double lx[4], ly[4];
-      lx[0] = ly[0] = 0.0;
-      // Small strain after a /DT/SHELL/CST switch: the local coordinates are frozen at the first cycle after
-      // it (cap = 1) and used from then on (sm = 1), so PX, PY, A and the step stay constant. The selects are
-      // arithmetic so the loop stays vectorised; with sm = 0 they return the current values exactly.
-      const std::size_t ii = static_cast<std::size_t>(i0 + j);
-      const double sm = small[ii], cap = capture[ii];
-      for (int k = 1; k < 4; ++k) {
-        const double dx = bk.nb.x[k][j] - bk.nb.x[0][j], dy = bk.nb.y[k][j] - bk.nb.y[0][j],
-                     dz = bk.nb.z[k][j] - bk.nb.z[0][j];
-        const double cx = e1x * dx + e1y * dy + e1z * dz, cy = e2x * dx + e2y * dy + e2z * dz;
-        small_strain_coordinates(cx, cy, cap, sm, ref[static_cast<std::size_t>(k - 1) * G + ii],
-                                 ref[static_cast<std::size_t>(k + 2) * G + ii], lx[k], ly[k]);
-        bk.lx[k][j] = lx[k];
-        bk.ly[k][j] = ly[k];
-      }
-      const double z2 =
-          (1.0 - sm) * (e3x * (bk.nb.x[1][j] - bk.nb.x[0][j]) + e3y * (bk.nb.y[1][j] - bk.nb.y[0][j]) +
-                        e3z * (bk.nb.z[1][j] - bk.nb.z[0][j]));
-      bk.z2[j] = z2;
+      const double lx[4] = {0.0, bk.lx[1][j], bk.lx[2][j], bk.lx[3][j]};
+      const double ly[4] = {0.0, bk.ly[1][j], bk.ly[2][j], bk.ly[3][j]};
+      const double z2 = bk.z2[j];
       const double PX1 = 0.5 * (ly[1] - ly[3]), PY1 = 0.5 * (lx[3] - lx[1]);
       const double PX2 = 0.5 * ly[2], PY2 = -0.5 * lx[2];
       const double area = std::max(2.0 * (PY2 * PX1 - PY1 * PX2), tiny20);
@@ -281,7 +324,7 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
       bk.root[2][j] = area;
     }
     sqrt_in_place(bk.root[0], 3 * kBlock);
-    // Filtered strain rate (6.1) and its Johnson-Cook factor.
+    // Filtered strain rate (6.1) and its rate term (law 2: the lower bound; law 36: the rate).
     std::int64_t any_rate = 0;
     RADX_IVDEP
     for (int j = 0; j < len; ++j) {
@@ -292,8 +335,9 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
       rates[ii] = sec.off[j] > 0.0 ? rate : old;
       bk.rate[j] = rate;
       sec.rate[j] = rate;
-      sec.rfac[j] = 1.0;
-      const std::int64_t r = rate <= rate_one ? 0 : 1;  // R = 1 at or below rate0 (and for c = 0)
+      sec.rfac[j] = jc_rate_factor_lower(c_lower, inv_rate0, rate);  // 1 unless r_lower
+      sec.rfac_exact[j] = 0;
+      const std::int64_t r = rate <= rate_one ? 0 : 1;  // law 36's rate term (R = 1 otherwise)
       bk.flag[j] = r;
       any_rate |= r;
     }
@@ -369,7 +413,7 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
       const double lx1 = bk.lx[1][j], lx2 = bk.lx[2][j], lx3 = bk.lx[3][j];
       const double ly1 = bk.ly[1][j], ly2 = bk.ly[2][j], ly3 = bk.ly[3][j];
       const double hx = (-lx1 + lx2 - lx3) * ainv, hy = (-ly1 + ly2 - ly3) * ainv;
-      const double c1 = plain_h ? 0.0 : PX1 * hx + PY1 * hy, c2 = plain_h ? 0.0 : PX2 * hx + PY2 * hy;
+      const double c1 = wh * (PX1 * hx + PY1 * hy), c2 = wh * (PX2 * hx + PY2 * hy);
       const double gam[4] = {off * (1.0 - c1), off * (-1.0 - c2), off * (1.0 + c1), off * (-1.0 + c2)};
       double qx = 0, qy = 0, qz = 0;
       for (int k = 0; k < 4; ++k) {
@@ -436,6 +480,34 @@ void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParam
         k_nodal[ii] = 0.0;
       }
   }
+}
+
+[[gnu::flatten]] void bt4_baseline(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                                   const CycleInfo& cyc) {
+  bt4_body(g, nodes, mat, cyc);
+}
+
+#if RADX_HAVE_ISA_V3
+RADX_TARGET_V3 void bt4_v3(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                           const CycleInfo& cyc) {
+  bt4_body(g, nodes, mat, cyc);
+}
+#endif
+
+}  // namespace
+
+void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc,
+                      KernelIsa isa) {
+#if RADX_HAVE_ISA_V3
+  if (isa == KernelIsa::V3 && kernel_isa_supported(KernelIsa::V3)) return bt4_v3(g, nodes, mat, cyc);
+#endif
+  (void)isa;
+  bt4_baseline(g, nodes, mat, cyc);
+}
+
+void shell_bt4_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                      const CycleInfo& cyc) {
+  shell_bt4_forces(g, nodes, mat, cyc, best_kernel_isa());
 }
 
 }  // namespace radx::solver

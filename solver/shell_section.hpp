@@ -112,7 +112,12 @@ struct SectionBlock {
   double rfac[B];    // strain-rate term of the element rate (jc_rate_factor: R for law 2, the rate for 36)
   double rate[B];    // the element's filtered strain rate (the /FAIL/JOHNSON D4 term, law 27's rate term)
   double dt1 = 0;    // the step of the increments (law 27's rate term)
-  double off[B];     // element factor at the start of the cycle; <= 0: deleted, its state is left alone
+  // rfac_lower: rfac holds law 2's jc_rate_factor_lower, a lower bound (enough for shell_stays_elastic), and
+  // is made exact (jc_rate_factor of rate) for an element when one of its points takes the exact update;
+  // rfac_exact[j] = 1 once it is. False: rfac is exact from the start.
+  bool rfac_lower = false;
+  unsigned char rfac_exact[B] = {};
+  double off[B];  // element factor at the start of the cycle; <= 0: deleted, its state is left alone
   // Results.
   double for_old[5][B], for_new[5][B];
   double mom_old[3][B], mom_new[3][B];
@@ -299,6 +304,10 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
           continue;
         }
         any_redo = true;
+        if (s.rfac_lower && s.rfac_exact[j] == 0) {
+          s.rfac[j] = jc_rate_factor(mat, s.rate[j]);
+          s.rfac_exact[j] = 1;
+        }
         const double z = zeta * s.t[j];
         const double de[5] = {s.dem[0][j] + z * s.dk[0][j], s.dem[1][j] + z * s.dk[1][j],
                               s.dem[2][j] + z * s.dk[2][j], s.dem[3][j], s.dem[4][j]};

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -604,6 +605,62 @@ TEST_CASE("shell_stays_elastic: the points it passes take no plastic step, the p
   }
   CHECK(passed > 1000);
   CHECK(inside > 300);
+}
+
+TEST_CASE("jc_rate_factor_lower: a lower bound of R within 0.061 c, exactly 1 at or below rate0",
+          "[material]") {
+  // The BT4 kernel checks its points against min(a R_lo, SIG_max0) and takes the logarithm only for the
+  // elements with a point that fails the check. R_lo must never exceed R (a yielding point would be taken as
+  // elastic); the chord of ln over [1, 2] is below ln by at most ln(1/ln 2) - (1/ln 2 - 1) ln 2 = 0.0597.
+  const MaterialParams p = make_material_params(steel(MaterialLaw::JohnsonCook));
+  const double inv0 = 1.0 / p.eps_dot0;
+  auto lower = [&](double rate) { return radx::solver::jc_rate_factor_lower(p.c, inv0, rate); };
+  CHECK(lower(0.0) == 1.0);
+  CHECK(lower(1e-310) == 1.0);  // subnormal
+  CHECK(lower(0.5 * p.eps_dot0) == 1.0);
+  CHECK(lower(p.eps_dot0) == 1.0);
+  CHECK(lower(std::numeric_limits<double>::infinity()) > 1.0);
+  int n = 0;
+  double worst = 0;
+  for (double lg = -6.0; lg <= 12.0; lg += 1.0 / 1024.0, ++n) {
+    const double rate = std::pow(10.0, lg);
+    const double r = jc_rate_factor(p, rate), lo = lower(rate);
+    CHECK(lo <= r);
+    CHECK(lo >= 1.0);
+    worst = std::max(worst, (r - lo) / p.c);
+  }
+  // Over every binade, the largest gap is reached (to the grid's resolution) and never exceeded.
+  CHECK(n > 18000);
+  CHECK(worst <= 0.0597 + 1e-8);
+  CHECK(worst >= 0.059);
+
+  // A point that passes shell_stays_elastic with R_lo takes no plastic step with the exact R (trials scaled
+  // to 0.9 .. 1.1 times the exact bound a R).
+  const radx::solver::ShellYieldBound yb = radx::solver::shell_yield_bound(p);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int passed = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const double rate = std::pow(10.0, 6.0 * (1.0 + u(rng)));
+    const double r = jc_rate_factor(p, rate), lo = lower(rate);
+    double t[5] = {u(rng), u(rng), u(rng), 0.0, 0.0};
+    const double scale = (1.0 + 0.1 * u(rng)) * p.a * r / vm_plane(t);
+    for (double& c : t) c *= scale;
+    const double de[5] = {0, 0, 0, 0, 0};
+    const int iplas = k % 2;
+    const bool pass = iplas == 1
+                          ? radx::solver::shell_stays_elastic<true>(yb, lo, 1.0, 0.0, t[0], t[1], t[2])
+                          : radx::solver::shell_stays_elastic<false>(yb, lo, 1.0, 0.0, t[0], t[1], t[2]);
+    double sig[5] = {t[0], t[1], t[2], t[3], t[4]};
+    double eps_p = 0;
+    const auto res = radx::solver::shell_point_update_r(p, iplas, r, 1.0, de, 0.0, sig, eps_p);
+    if (pass) {
+      ++passed;
+      CHECK(res.deps_p == 0.0);
+      for (int c = 0; c < 3; ++c) CHECK(sig[c] == t[c]);
+    }
+  }
+  CHECK(passed > 1000);
 }
 
 TEST_CASE("solid point: pressure K mu, elastic shear G gamma, plastic return to sigma_y + d_eps_p H",
