@@ -191,7 +191,7 @@ def main(argv):
                    help="with --impact: the block's brick edge in mm (default 10)")
     p.add_argument("--gap", type=float, default=BLOCK_Z0 - THICK / 2,
                    help="with --impact: initial distance in mm from the block's bottom face to the plate's top "
-                        "surface (default 1)")
+                        "surface (default 1); down to -0.5 (the mid-surface, which TYPE7 sees with its gap)")
     p.add_argument("--tstop", type=float, default=None,
                    help="end time in s (default: 1500 cycles of the plate's shell step)")
     p.add_argument("--contact", choices=("type7", "lagdt", "addmass"), default="type7",
@@ -207,8 +207,8 @@ def main(argv):
     args = p.parse_args(argv)
     if args.n < 2:
         p.error("--n must be at least 2")
-    if args.brick_size <= 0 or args.gap < 0:
-        p.error("--brick-size must be positive and --gap at least 0")
+    if args.brick_size <= 0 or args.gap <= -THICK / 2:
+        p.error("--brick-size must be positive and --gap above %g (the plate's mid-surface)" % (-THICK / 2))
     if args.block * args.brick_size > L_PLATE:
         p.error("the block (--block x --brick-size) is wider than the %g mm plate" % L_PLATE)
     if args.contact != "type7" and not args.impact:
