@@ -19,8 +19,8 @@ Model (units Mg, mm, s): a 1000 x 1000 mm steel plate, 1 mm thick, meshed with N
   * without --impact: every plate node starts at 1 m/s downwards (/INIVEL/TRA on /GRNOD/PART of the plate);
     the clamped edges hold it, so the whole plate vibrates and yields along the edges;
   * with --impact: the plate is at rest and an aluminium block of 10 x 10 x 4 bricks (--block B: B x B x 4;
-    10 mm bricks whatever N is) sits 1 mm above the plate centre (bottom face z = 1.5) and moves
-    down at 10 m/s. Two TYPE7 interfaces as in decks/block_on_plate: block nodes on the plate surface
+    10 mm bricks whatever N is, --brick-size H: H mm bricks) sits 1 mm (--gap G: G mm) above the plate
+    centre (bottom face z = 1.5) and moves down at 10 m/s. Two TYPE7 interfaces as in decks/block_on_plate: block nodes on the plate surface
     (Istf 4, Inacti 6, Fric 0.1, Iform 1) and plate nodes on the block's outer faces (Istf 0, Fric 0.2,
     Iform 2).
   --contact lagdt writes both interfaces as /INTER/LAGDT/TYPE7 and adds /DT/INTER/CST 0.9 Tmin (--tmin) to the
@@ -65,7 +65,8 @@ def first_power_of_ten_above(n):
     return p
 
 
-def starter(n, impact, root, lagdt=False, ishell=1, isolid=1, block_nx=BLOCK_NX):
+def starter(n, impact, root, lagdt=False, ishell=1, isolid=1, block_nx=BLOCK_NX, brick=L_PLATE / 100.0,
+            block_z0=BLOCK_Z0):
     nn = n + 1
     d = rc.Deck(fill=0)
     d.raw("#RADIOSS STARTER")
@@ -93,10 +94,10 @@ def starter(n, impact, root, lagdt=False, ishell=1, isolid=1, block_nx=BLOCK_NX)
         return block_node0 + 1 + i + nb * j + nb * nb * k
 
     if impact:
-        hb = L_PLATE / 100.0
+        hb = brick
         d.raw("#  Block nodes: %d x %d x %d grid of %g mm pitch, bottom face at z = %g" % (nb, nb, BLOCK_NZ + 1, hb,
-                                                                                         BLOCK_Z0))
-        d.rows("/NODE", [(bn(i, j, k), (2 * i - block_nx) * hb / 2, (2 * j - block_nx) * hb / 2, BLOCK_Z0 + k * hb)
+                                                                                         block_z0))
+        d.rows("/NODE", [(bn(i, j, k), (2 * i - block_nx) * hb / 2, (2 * j - block_nx) * hb / 2, block_z0 + k * hb)
                          for k in range(BLOCK_NZ + 1) for j in range(nb) for i in range(nb)], sig=SIG)
     d.ruler()
     d.rows("/SHELL", [], 1)
@@ -186,6 +187,11 @@ def main(argv):
     p.add_argument("--impact", action="store_true", help="add a 10 x 10 x 4 brick block and two TYPE7")
     p.add_argument("--block", type=int, default=BLOCK_NX,
                    help="with --impact: bricks along each side of the block (default 10; 10 mm bricks, 4 deep)")
+    p.add_argument("--brick-size", type=float, default=L_PLATE / 100.0,
+                   help="with --impact: the block's brick edge in mm (default 10)")
+    p.add_argument("--gap", type=float, default=BLOCK_Z0 - THICK / 2,
+                   help="with --impact: initial distance in mm from the block's bottom face to the plate's top "
+                        "surface (default 1); down to -0.5 (the mid-surface, which TYPE7 sees with its gap)")
     p.add_argument("--tstop", type=float, default=None,
                    help="end time in s (default: 1500 cycles of the plate's shell step)")
     p.add_argument("--contact", choices=("type7", "lagdt", "addmass"), default="type7",
@@ -201,6 +207,10 @@ def main(argv):
     args = p.parse_args(argv)
     if args.n < 2:
         p.error("--n must be at least 2")
+    if args.brick_size <= 0 or args.gap <= -THICK / 2:
+        p.error("--brick-size must be positive and --gap above %g (the plate's mid-surface)" % (-THICK / 2))
+    if args.block * args.brick_size > L_PLATE:
+        p.error("the block (--block x --brick-size) is wider than the %g mm plate" % L_PLATE)
     if args.contact != "type7" and not args.impact:
         p.error("--contact needs --impact")
     root = "PLATE%d%s" % (args.n, "I" if args.impact else "")
@@ -215,7 +225,8 @@ def main(argv):
     s_path = os.path.join(args.out, root + "_0000.rad")
     e_path = os.path.join(args.out, root + "_0001.rad")
     rc.write(s_path, starter(args.n, args.impact, root, lagdt=args.contact == "lagdt", ishell=args.ishell,
-                             isolid=args.isolid, block_nx=args.block))
+                             isolid=args.isolid, block_nx=args.block, brick=args.brick_size,
+                             block_z0=THICK / 2 + args.gap))
     lines, tstop = engine(args.n, root, args.tmin if args.contact != "type7" else 0.0, args.tstop)
     rc.write(e_path, lines)
     print("wrote %s and %s: %d shells, %d plate nodes%s, Tstop %g s (%.1f s)" %
