@@ -229,29 +229,40 @@ int main(int argc, char** argv) {
   L.add("element gather", "x y z vx vy vz (element nodes)", Mode::Read, 6 * d * ne);
   L.add("element gather", "wx wy wz (shell nodes)", Mode::Read, 3 * d * ns);
 
-  // Node passes.
+  // Node passes: the engine's three (solver/explicit_engine.cpp): the assembly, with a = f / m in the same
+  // pass when the engine fuses them, the accelerations on their own otherwise, and the integration, which
+  // also zeroes the next cycle's external forces and moments.
   const double nn = static_cast<double>(nodes.n);
-  L.add("node: external loads", "fx_ext fy_ext fz_ext mx my mz (zeroed)", Mode::Write, 6 * d * nn);
-  L.add("node: assembly", "slot offsets", Mode::Read, sizeof(std::size_t) * (nn + 1));
-  L.add("node: assembly", "slots (pointer + flag, 16 B)", Mode::Read, 16 * slots);
-  L.add("node: assembly", "fx_ext fy_ext fz_ext", Mode::Read, 3 * d * nn);
-  L.add("node: assembly", "fx fy fz", Mode::Write, 3 * d * nn);
-  L.add("node: assembly", "mx my mz", Mode::ReadWrite, 2 * 3 * d * nn);
+  const bool fused = engine.fuses_accelerations();
+  const std::string assembly = fused ? "node: assembly + accelerations" : "node: assembly";
+  L.add(assembly, "slot offsets", Mode::Read, sizeof(std::size_t) * (nn + 1));
+  L.add(assembly, "slots (pointer + flag, 16 B)", Mode::Read, 16 * slots);
+  L.add(assembly, "fx_ext fy_ext fz_ext", Mode::Read, 3 * d * nn);
+  L.add(assembly, "fx fy fz", Mode::Write, 3 * d * nn);
+  L.add(assembly, "mx my mz", Mode::ReadWrite, 2 * 3 * d * nn);
   // The assembly reads every group's whole nodal-force buffer (the element pass wrote it).
   for (const auto& g : engine.shell_groups())
-    L.group_array("node: assembly", "group nodal_force (read back)", g.nodal_force, g.count, Mode::Read);
+    L.group_array(assembly, "group nodal_force (read back)", g.nodal_force, g.count, Mode::Read);
   for (const auto& g : engine.brick_groups())
-    L.group_array("node: assembly", "group nodal_force (read back)", g.nodal_force, g.count, Mode::Read);
+    L.group_array(assembly, "group nodal_force (read back)", g.nodal_force, g.count, Mode::Read);
+  if (fused) {
+    L.add(assembly, "mass inertia", Mode::Read, 2 * d * nn);
+    L.add(assembly, "ax ay az awx awy awz", Mode::Write, 6 * d * nn);
+  } else {
+    L.add("node: accelerations", "mass inertia fx fy fz mx my mz", Mode::Read, 8 * d * nn);
+    L.add("node: accelerations", "ax ay az awx awy awz", Mode::Write, 6 * d * nn);
+  }
+  // The time-step vote runs in the element pass right after each group's forces: dt and dt_fixed are still in
+  // cache there (not counted); the element's user id is a read from the model.
   double elements_dt = 0;
   for (const auto& g : engine.shell_groups()) elements_dt += g.count;
   for (const auto& g : engine.brick_groups()) elements_dt += g.count;
-  L.add("element time step", "dt dt_fixed", Mode::Read, 2 * d * elements_dt);
   L.add("element time step", "element index int32 + user id int64", Mode::Read, 12 * elements_dt);
-  L.add("node: accelerations", "mass inertia fx fy fz mx my mz", Mode::Read, 8 * d * nn);
-  L.add("node: accelerations", "ax ay az awx awy awz", Mode::Write, 6 * d * nn);
   L.add("node: integration", "ax ay az awx awy awz", Mode::Read, 6 * d * nn);
   L.add("node: integration", "vx vy vz wx wy wz", Mode::ReadWrite, 2 * 6 * d * nn);
   L.add("node: integration", "x y z", Mode::ReadWrite, 2 * 3 * d * nn);
+  L.add("node: integration", "fx_ext fy_ext fz_ext mx my mz (zeroed for the next cycle)", Mode::Write,
+        6 * d * nn);
 
   const double elements = static_cast<double>(engine.element_count());
   std::printf(

@@ -146,6 +146,8 @@ class ExplicitEngine {
   std::vector<std::string> take_events();
   // The sensors' state (activation times).
   [[nodiscard]] const Sensors& sensors() const { return sensors_; }
+  // Whether the assembly pass also computes a = f / m (see fuse_accelerations_).
+  [[nodiscard]] bool fuses_accelerations() const { return fuse_accelerations_; }
   // The engine's threads, for passes over its state between cycles (result fields); idle then.
   [[nodiscard]] ThreadTeam& team() const { return *team_; }
 
