@@ -83,10 +83,10 @@ def main() -> int:
             print(f"| {deck} | {ca} | {cb} | {rel['IE']:.1e} | {rel['KE']:.1e} | {rel['EXT']:.1e} | "
                   f"{share:.1e}{' (' + worst + ')' if worst else ''} |")
     else:
-        print(f"{'deck':34s} {'cycles ' + n[0]:>14s} {'cycles ' + n[1]:>14s} {'IE':>8s} {'KE':>8s} {'EXT':>8s}"
+        print(f"{'deck':58s} {'cycles ' + n[0]:>14s} {'cycles ' + n[1]:>14s} {'IE':>8s} {'KE':>8s} {'EXT':>8s}"
               f"  .ref diff/tol")
         for deck, ca, cb, rel, _, share, worst in rows:
-            print(f"{deck:34s} {ca:14d} {cb:14d} {rel['IE']:8.1e} {rel['KE']:8.1e} {rel['EXT']:8.1e}"
+            print(f"{deck:58s} {ca:14d} {cb:14d} {rel['IE']:8.1e} {rel['KE']:8.1e} {rel['EXT']:8.1e}"
                   f"  {share:.1e} {worst}")
     if not rows:
         print("no deck ran in both builds")

@@ -16,9 +16,13 @@ if ! /lib64/ld-linux-x86-64.so.2 --help 2>/dev/null | grep -q "x86-64-v3 (suppor
 fi
 RADX_ARCH=x86-64-v3 bash scripts/build.sh
 build-v3/apps/radx-engine --version
-# The Catch2 tests in one process (CTest would start one process per test case); tests two at a time in
-# the regression, so OpenMP threads wait passively as under CTest.
-(cd build-v3/tests && OMP_WAIT_POLICY=passive ./radx_unit_tests --warn NoTests)
+# The Catch2 tests in one process (CTest would start one process per test case), OpenMP threads waiting
+# passively as under CTest. Two test cases hold to the bit or to a few ulps what FMA contraction rounds
+# differently (docs/build-arch.md), and run in the default build only: shell_stays_elastic (a point the
+# elastic test passes must come out of the exact update as its trial, to the bit: the two paths are contracted
+# differently in v3) and node_skew_axes (orthonormal to 1e-15 absolute, 4.5 ulps of 1).
+(cd build-v3/tests && OMP_WAIT_POLICY=passive ./radx_unit_tests --warn NoTests \
+  '~[.] ~"shell_stays_elastic*" ~"node_skew_axes*"')
 (cd build-v3 && ctest --output-on-failure --parallel "$(nproc)" --timeout 1500 -R '^(cpu_check\.|regression\.decks$)')
 /usr/bin/python3 scripts/compare_arch.py build/tests/regression/summary.json build-v3/tests/regression/summary.json \
   --names x86-64-v2 x86-64-v3
