@@ -359,7 +359,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   io::EngineListing listing(io::ListingSinks{&listing_file, &out, controls.print_stdout,
                                              io::stdout_is_terminal(), controls.print_header_every});
   io::EngineListingHeader h;
-  h.program_version = RADX_VERSION;
+  h.program_version = RADX_VERSION " (" RADX_ARCH ")";
   h.engine_deck = opt.engine_deck;
   h.model_file = model_path;
   h.output_root = root;

@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
       return radx::app::kExitOk;
     }
     if (a == "--version") {
-      std::cout << "radx-engine " << RADX_VERSION << '\n';
+      std::cout << "radx-engine " << radx::app::kVersionText << '\n';
       return radx::app::kExitOk;
     }
     const bool takes_value = a == "-i" || a == "--out" || a == "--model" || a == "--threads";

@@ -283,7 +283,7 @@ int main(int argc, char** argv) {
     return radx::app::kExitOk;
   }
   if (cmd == "--version") {
-    std::cout << "radx " << RADX_VERSION << '\n';
+    std::cout << "radx " << radx::app::kVersionText << '\n';
     return radx::app::kExitOk;
   }
   if (cmd == "check") return check(args);

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
       return radx::app::kExitOk;
     }
     if (a == "--version") {
-      std::cout << "radx-starter " << RADX_VERSION << '\n';
+      std::cout << "radx-starter " << radx::app::kVersionText << '\n';
       return radx::app::kExitOk;
     }
     if ((a == "-i" || a == "--out") && i + 1 >= argc) {

@@ -227,7 +227,7 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
     }
     io::StarterListingInput li;
     li.deck_path = opt.deck;
-    li.program_version = RADX_VERSION;
+    li.program_version = RADX_VERSION " (" RADX_ARCH ")";
     li.model = &model;
     for (const auto& in : model.interfaces) {
       std::vector<std::string> echo;

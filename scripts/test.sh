@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Builds everything, then runs the whole test suite (CTest: Catch2 unit and verification tests, deck
-# checks, the model file read back with h5py), then fuzzes each deck reader for a minute when clang is
-# there (scripts/fuzz.sh; skipped with a note without clang).
+# checks, the model file read back with h5py), then builds and tests the x86-64-v3 variant in build-v3/ and
+# compares its results with the default build's (scripts/test-v3.sh; skipped with a note on a CPU without
+# AVX2/FMA), then fuzzes each deck reader for a minute when clang is there (scripts/fuzz.sh; skipped with a
+# note without clang).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 cd build
 ctest --output-on-failure --parallel "$(nproc)" --timeout 900
 cd ..
+bash scripts/test-v3.sh
 bash scripts/fuzz.sh 60
