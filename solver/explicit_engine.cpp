@@ -560,18 +560,29 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
   }
 }
 
-bool ExplicitEngine::parallel_nodes() const {
-  return static_cast<std::int64_t>(nodes_.n) >= 2 * kNodeChunk;
+Chunks ExplicitEngine::node_chunks() const {
+  return Chunks::of(static_cast<std::int64_t>(nodes_.n), kNodeChunk);
+}
+
+// Calls body(c, first, last) for every node chunk c, nodes [first, last), on the team; a model of fewer than
+// two chunks' nodes on the calling thread alone.
+template <class Body>
+void ExplicitEngine::node_pass(Body&& body) {
+  const auto chunks = node_chunks();
+  team_->run(
+      chunks.count(),
+      [&](std::int64_t c) {
+        body(c, static_cast<std::size_t>(chunks.begin(c)), static_cast<std::size_t>(chunks.end(c)));
+      },
+      static_cast<std::int64_t>(nodes_.n) >= 2 * kNodeChunk);
 }
 
 // 4-5. f = f_ext + the element entries, node by node in a fixed order; with `accelerate`, a = f / m and
 // the angular a = moment / scalar inertia in the same pass (a massless node gets none).
 void ExplicitEngine::assemble_and_accelerate(bool accelerate) {
   auto& s = nodes_;
-  const auto chunks = Chunks::of(static_cast<std::int64_t>(s.n), kNodeChunk);
-  const auto body = [&](std::int64_t c) {
-    for (auto node = static_cast<std::size_t>(chunks.begin(c));
-         node < static_cast<std::size_t>(chunks.end(c)); ++node) {
+  node_pass([&](std::int64_t, std::size_t first, std::size_t last) {
+    for (std::size_t node = first; node < last; ++node) {
       double f[6] = {0, 0, 0, 0, 0, 0};
       for (std::size_t q = slot_offsets_[node]; q < slot_offsets_[node + 1]; ++q) {
         const Slot& sl = slots_[q];
@@ -588,8 +599,7 @@ void ExplicitEngine::assemble_and_accelerate(bool accelerate) {
       s.mz[node] += f[5];
       if (accelerate) accelerate_node(s, node);
     }
-  };
-  team_->run(chunks.count(), body, parallel_nodes());
+  });
 }
 
 // The element stage's votes combined in group order, so the controlling element is the one a serial scan
@@ -897,15 +907,9 @@ bool ExplicitEngine::choose_time_step(LoopState& L, RunResult& res) {
 // 5. a = f / m for every node: after the TYPE2 ties moved forces (otherwise the assembly pass did it).
 void ExplicitEngine::accelerations() {
   auto& s = nodes_;
-  const auto chunks = Chunks::of(static_cast<std::int64_t>(s.n), kNodeChunk);
-  team_->run(
-      chunks.count(),
-      [&](std::int64_t c) {
-        for (auto n = static_cast<std::size_t>(chunks.begin(c)); n < static_cast<std::size_t>(chunks.end(c));
-             ++n)
-          accelerate_node(s, n);
-      },
-      parallel_nodes());
+  node_pass([&](std::int64_t, std::size_t first, std::size_t last) {
+    for (std::size_t n = first; n < last; ++n) accelerate_node(s, n);
+  });
 }
 
 // 6. The switched LAGDT pairs' multipliers correct a; their forces join f (outputs: reactions, internal
@@ -1003,30 +1007,25 @@ bool ExplicitEngine::integrate(LoopState& L, RunResult& res) {
   auto& s = nodes_;
   const double dt12 = L.dt12();
   const double dt2 = L.dt2;
-  const auto chunks = Chunks::of(static_cast<std::int64_t>(s.n), kNodeChunk);
-  std::vector<std::uint8_t> chunk_finite(static_cast<std::size_t>(chunks.count()), 1);
-  team_->run(
-      chunks.count(),
-      [&](std::int64_t c) {
-        bool finite = true;
-        for (auto n = static_cast<std::size_t>(chunks.begin(c)); n < static_cast<std::size_t>(chunks.end(c));
-             ++n) {
-          s.vx[n] += dt12 * s.ax[n];
-          s.vy[n] += dt12 * s.ay[n];
-          s.vz[n] += dt12 * s.az[n];
-          s.wx[n] += dt12 * s.awx[n];
-          s.wy[n] += dt12 * s.awy[n];
-          s.wz[n] += dt12 * s.awz[n];
-          s.x[n] += dt2 * s.vx[n];
-          s.y[n] += dt2 * s.vy[n];
-          s.z[n] += dt2 * s.vz[n];
-          finite = finite && std::isfinite(s.x[n] + s.y[n] + s.z[n]);
-          s.fx_ext[n] = s.fy_ext[n] = s.fz_ext[n] = 0.0;
-          s.mx[n] = s.my[n] = s.mz[n] = 0.0;
-        }
-        chunk_finite[static_cast<std::size_t>(c)] = finite ? 1 : 0;
-      },
-      parallel_nodes());
+  std::vector<std::uint8_t> chunk_finite(static_cast<std::size_t>(node_chunks().count()), 1);
+  node_pass([&](std::int64_t c, std::size_t first, std::size_t last) {
+    bool finite = true;
+    for (std::size_t n = first; n < last; ++n) {
+      s.vx[n] += dt12 * s.ax[n];
+      s.vy[n] += dt12 * s.ay[n];
+      s.vz[n] += dt12 * s.az[n];
+      s.wx[n] += dt12 * s.awx[n];
+      s.wy[n] += dt12 * s.awy[n];
+      s.wz[n] += dt12 * s.awz[n];
+      s.x[n] += dt2 * s.vx[n];
+      s.y[n] += dt2 * s.vy[n];
+      s.z[n] += dt2 * s.vz[n];
+      finite = finite && std::isfinite(s.x[n] + s.y[n] + s.z[n]);
+      s.fx_ext[n] = s.fy_ext[n] = s.fz_ext[n] = 0.0;
+      s.mx[n] = s.my[n] = s.mz[n] = 0.0;
+    }
+    chunk_finite[static_cast<std::size_t>(c)] = finite ? 1 : 0;
+  });
   loads_zeroed_ = true;
   const bool finite =
       std::all_of(chunk_finite.begin(), chunk_finite.end(), [](std::uint8_t f) { return f != 0; });

@@ -171,7 +171,9 @@ class ExplicitEngine {
   }
   void compute_element_forces(const CycleInfo& cyc);
   void group_forces_and_vote(std::int64_t flat, const CycleInfo& cyc);
-  [[nodiscard]] bool parallel_nodes() const;
+  [[nodiscard]] Chunks node_chunks() const;
+  template <class Body>
+  void node_pass(Body&& body);
   void assemble_and_accelerate(bool accelerate);
   double element_time_step(StepControl& control);
   double nodal_time_step(StepControl& control);
