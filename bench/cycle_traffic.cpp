@@ -14,8 +14,9 @@
 //   * the node gather of an element pass counts each node array once per node the family touches (perfect
 //     reuse of a node's values by the neighbouring elements of a block); the same gather without any reuse
 //     (each element reading its own nodes' values) is printed as an upper bound;
-//   * the assembly reads the slot offsets, one slot (a pointer and a flag, 16 bytes) per element node and the
-//     whole nodal-force buffer of every group, and writes the node forces;
+//   * each group's nodal-force buffer is read back once and added to the nodes' element sums ([node][6]) in
+//     the element stage, right after the group (counted although it is often still in cache then); the
+//     assembly reads the sums, clears them and writes the node forces;
 //   * contact (search and forces) is left out: its share of the wall time is reported separately; so are the
 //     energy sums, which run on report cycles only (/PRINT), and the boundary conditions (edge nodes only).
 // Kernels counted array by array: the Belytschko-Tsay shell (shell_bt4.cpp, Ishell 1 and 4) and the one-point
@@ -235,16 +236,17 @@ int main(int argc, char** argv) {
   const double nn = static_cast<double>(nodes.n);
   const bool fused = engine.fuses_accelerations();
   const std::string assembly = fused ? "node: assembly + accelerations" : "node: assembly";
-  L.add(assembly, "slot offsets", Mode::Read, sizeof(std::size_t) * (nn + 1));
-  L.add(assembly, "slots (pointer + flag, 16 B)", Mode::Read, 16 * slots);
+  // The element stage adds each group's nodal-force buffer (just written) to the nodes' sums, in group order.
+  const std::string sums = "element sums";
+  for (const auto& g : engine.shell_groups())
+    L.group_array(sums, "group nodal_force (read back)", g.nodal_force, g.count, Mode::Read);
+  for (const auto& g : engine.brick_groups())
+    L.group_array(sums, "group nodal_force (read back)", g.nodal_force, g.count, Mode::Read);
+  L.add(sums, "element_sums [node][6] (added to)", Mode::ReadWrite, 2 * 6 * d * nn);
+  L.add(assembly, "element_sums [node][6] (read, then cleared)", Mode::ReadWrite, 2 * 6 * d * nn);
   L.add(assembly, "fx_ext fy_ext fz_ext", Mode::Read, 3 * d * nn);
   L.add(assembly, "fx fy fz", Mode::Write, 3 * d * nn);
   L.add(assembly, "mx my mz", Mode::ReadWrite, 2 * 3 * d * nn);
-  // The assembly reads every group's whole nodal-force buffer (the element pass wrote it).
-  for (const auto& g : engine.shell_groups())
-    L.group_array(assembly, "group nodal_force (read back)", g.nodal_force, g.count, Mode::Read);
-  for (const auto& g : engine.brick_groups())
-    L.group_array(assembly, "group nodal_force (read back)", g.nodal_force, g.count, Mode::Read);
   if (fused) {
     L.add(assembly, "mass inertia", Mode::Read, 2 * d * nn);
     L.add(assembly, "ax ay az awx awy awz", Mode::Write, 6 * d * nn);
@@ -277,11 +279,12 @@ int main(int argc, char** argv) {
   const double total = L.total();
   const double shell_b = L.total("shell elements"), brick_b = L.total("brick elements");
   const double gather = L.total("element gather"), node_b = L.total("node:"),
-               dt_b = L.total("element time step");
+               dt_b = L.total("element time step"), sums_b = L.total("element sums");
   std::printf(
-      "\nper element-cycle: shell state %.0f B, brick state %.0f B, node gather %.0f B, node passes %.0f B, "
-      "time step %.0f B\n",
-      shell_b / elements, brick_b / elements, gather / elements, node_b / elements, dt_b / elements);
+      "\nper element-cycle: shell state %.0f B, brick state %.0f B, node gather %.0f B, element sums %.0f B, "
+      "node passes %.0f B, time step %.0f B\n",
+      shell_b / elements, brick_b / elements, gather / elements, sums_b / elements, node_b / elements,
+      dt_b / elements);
   std::printf("bytes per element-cycle: %.0f (%.1f MB per cycle)\n", total / elements, total * 1e-6);
   std::printf("upper bound with a gather that reuses nothing (each element reads its own nodes): %.0f\n",
               (total - gather + gather_no_reuse) / elements);

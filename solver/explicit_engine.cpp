@@ -55,7 +55,8 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
     materials_.push_back(make_material_params(model_.materials[i], model_.functions, material_curves_[i]));
   build_nodes();
   build_groups();
-  build_assembly();
+  element_sums_.assign(6 * nodes_.n, 0.0);
+  element_sums_order_.assign(group_count());
   group_votes_.resize(static_cast<std::size_t>(group_count()));
   team_ =
       std::make_unique<ThreadTeam>(options_.threads > 0 ? options_.threads : ThreadTeam::default_threads());
@@ -397,61 +398,58 @@ void ExplicitEngine::build_groups() {
   element_count_ = m.element_count() + m.springs.size();
 }
 
-void ExplicitEngine::build_assembly() {
-  // Count, then fill, the entries of each node in a fixed order: shell groups, then brick groups, each
-  // in group order, slot order and connectivity order.
-  const std::size_t n = nodes_.n;
-  std::vector<std::size_t> count(n + 1, 0);
-  auto each_entry = [&](auto&& f) {
-    for (auto& g : shells_) {
-      const int npe = g.triangle ? 3 : 4;
-      for (int i = 0; i < g.count; ++i)
-        for (int q = 0; q < npe; ++q) {
-          // A degenerate quad (n3 == n4) still has four slots; each carries its share.
-          const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
-          f(node, &g.nodal_force[static_cast<std::size_t>(q * 6 * kGroupSize + i)], true);
-        }
-    }
-    for (auto& g : bricks_)
-      for (int i = 0; i < g.count; ++i)
-        for (int q = 0; q < 8; ++q) {
-          const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
-          f(node, &g.nodal_force[static_cast<std::size_t>(q * 3 * kGroupSize + i)], false);
-        }
-    for (auto& g : tetras_)
-      for (int i = 0; i < g.count; ++i)
-        for (int q = 0; q < 4; ++q) {
-          const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
-          f(node, &g.nodal_force[static_cast<std::size_t>(q * 3 * kGroupSize + i)], false);
-        }
-    for (auto& g : springs_)
-      for (int i = 0; i < g.count; ++i)
-        for (int q = 0; q < 2; ++q) {
-          const auto node = g.conn[static_cast<std::size_t>(q * kGroupSize + i)];
-          const int stride = g.node_stride();  // TYPE8 carries moments too
-          f(node, &g.nodal_force[static_cast<std::size_t>(q * stride * kGroupSize + i)], stride == 6);
-        }
+// Adds group `flat`'s nodal-force buffer to the nodes' element sums, element by element and node by node of
+// the element: called for the groups in order (shells, bricks, tetras, springs), so each node's sum is made
+// in one fixed order. A degenerate quad (n3 == n4) still has four slots; each carries its share.
+void ExplicitEngine::add_group_forces(std::int64_t flat) {
+  double* sums = element_sums_.data();
+  const auto add = [sums](const auto& g, int nodes_per_element, auto components) {
+    constexpr std::size_t C = decltype(components)::value;
+    constexpr std::size_t G = kGroupSize;
+    const double* nf = g.nodal_force.data();
+    for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
+      for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q) {
+        double* sum = sums + 6 * static_cast<std::size_t>(g.conn[q * G + i]);
+        const double* f = nf + q * C * G + i;
+        for (std::size_t d = 0; d < C; ++d) sum[d] += f[d * G];
+      }
   };
-  each_entry([&](std::int32_t node, const double*, bool) { ++count[static_cast<std::size_t>(node) + 1]; });
-  for (std::size_t k = 0; k < n; ++k) count[k + 1] += count[k];
-  slot_offsets_ = count;
-  slots_.assign(count[n], Slot{nullptr, false});
-  std::vector<std::size_t> fill(count.begin(), count.end() - 1);
-  each_entry([&](std::int32_t node, const double* base, bool rot) {
-    slots_[fill[static_cast<std::size_t>(node)]++] = Slot{base, rot};
-  });
+  using Forces = std::integral_constant<std::size_t, 3>;
+  using ForcesAndMoments = std::integral_constant<std::size_t, 6>;
+  const auto ns = static_cast<std::int64_t>(shells_.size()), nb = static_cast<std::int64_t>(bricks_.size());
+  const auto nt = static_cast<std::int64_t>(tetras_.size());
+  if (flat < ns) {
+    const auto& g = shells_[static_cast<std::size_t>(flat)];
+    add(g, g.triangle ? 3 : 4, ForcesAndMoments{});
+  } else if (flat < ns + nb) {
+    add(bricks_[static_cast<std::size_t>(flat - ns)], 8, Forces{});
+  } else if (flat < ns + nb + nt) {
+    add(tetras_[static_cast<std::size_t>(flat - ns - nb)], 4, Forces{});
+  } else {
+    const auto& g = springs_[static_cast<std::size_t>(flat - ns - nb - nt)];
+    if (g.node_stride() == 6)  // TYPE8 and TYPE13 carry moments too
+      add(g, 2, ForcesAndMoments{});
+    else
+      add(g, 2, Forces{});
+  }
 }
 
 // 3. The element stage: each group's forces, then, while its state is in cache, its time-step vote and
 // its deleted elements. One chunk is one group, taken by whichever thread is free.
+// Each group's forces are added to the nodes' sums as soon as every group before it is (OrderedCommit), by
+// whichever thread is there: while they are still in cache, and on two threads beside the other's groups.
 void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
   const std::int64_t groups = group_count();
-  const auto body = [&](std::int64_t flat) { group_forces_and_vote(flat, cyc); };
-  if (groups < kMinParallelGroups) {
-    for (std::int64_t k = 0; k < groups; ++k) body(k);
-    return;
-  }
-  team_->run(groups, body);
+  const auto add = [this](std::int64_t flat) { add_group_forces(flat); };
+  element_sums_order_.reset();
+  team_->run(
+      groups,
+      [&](std::int64_t flat) {
+        group_forces_and_vote(flat, cyc);
+        element_sums_order_.finished(flat, add);
+      },
+      groups >= kMinParallelGroups);
+  element_sums_order_.drain(add);
 }
 
 void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& cyc) {
@@ -462,15 +460,18 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
   // kinematics (a documented difference). Without /DT/<family>/CST the step is the element's.
   // Radioss switches only the elements whose Ismstr allows it (2; 12 for bricks): the others keep their own
   // step under /DT/<family>/CST.
+  // The element's user id (ids[element]) is read only where it is reported: a read per element would be a
+  // second stream through the model beside the group's own arrays.
   auto visit = [&](double scale, const model::DtControl& fam, double raw, double& frozen,
-                   StepControl::Kind kind, std::int64_t id, bool switchable) {
+                   StepControl::Kind kind, const auto& ids, std::int32_t element, bool switchable) {
+    const auto id = [&] { return static_cast<std::int64_t>(ids[static_cast<std::size_t>(element)]); };
     double dt = scale * raw;
     if (switchable && fam.action == model::DtAction::Constant && fam.t_min > 0) {
       if (frozen > 0) {
         // Without the small-strain kinematics the element's own stable step keeps falling; below half the
         // frozen step the run would go unstable, so it stops and says which element.
         if (dt < 0.5 * frozen && vote.violation_id == 0) {
-          vote.violation_id = id;
+          vote.violation_id = id();
           vote.violation_frozen = frozen;
           vote.violation_dt = dt;
         }
@@ -484,7 +485,7 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
     if (dt < vote.dt) {
       vote.dt = dt;
       vote.kind = kind;
-      vote.user_id = id;
+      vote.user_id = id();
     }
   };
   auto count_deleted_in = [&](const auto& g) {
@@ -507,8 +508,7 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
     const auto& ids = g.triangle ? model_.shells3.id : model_.shells.id;
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
-      visit(scale, fam, g.dt[k], g.dt_fixed[k], kind, ids[static_cast<std::size_t>(g.element[k])],
-            g.props.ismstr == 2);
+      visit(scale, fam, g.dt[k], g.dt_fixed[k], kind, ids, g.element[k], g.props.ismstr == 2);
     }
     count_deleted_in(g);
     return;
@@ -524,8 +524,8 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
     }
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
-      visit(solid_scale, controls_.brick, g.dt[k], g.dt_fixed[k], StepControl::Kind::Brick,
-            model_.bricks.id[static_cast<std::size_t>(g.element[k])], g.ismstr == 2);
+      visit(solid_scale, controls_.brick, g.dt[k], g.dt_fixed[k], StepControl::Kind::Brick, model_.bricks.id,
+            g.element[k], g.ismstr == 2);
     }
     count_deleted_in(g);
     return;
@@ -538,8 +538,8 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
       double unused_frozen = 0.0;
-      visit(solid_scale, controls_.brick, g.dt[k], unused_frozen, StepControl::Kind::Tetra,
-            model_.tetras.id[static_cast<std::size_t>(g.element[k])], false);
+      visit(solid_scale, controls_.brick, g.dt[k], unused_frozen, StepControl::Kind::Tetra, model_.tetras.id,
+            g.element[k], false);
     }
     count_deleted_in(g);
     return;
@@ -556,7 +556,7 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
     const auto k = static_cast<std::size_t>(i);
     double unused_frozen = 0.0;
     visit(controls_.global.scale, controls_.global, g.dt[k], unused_frozen, StepControl::Kind::Spring,
-          model_.springs.id[static_cast<std::size_t>(g.element[k])], false);
+          model_.springs.id, g.element[k], false);
   }
 }
 
@@ -577,19 +577,14 @@ void ExplicitEngine::node_pass(Body&& body) {
       static_cast<std::int64_t>(nodes_.n) >= 2 * kNodeChunk);
 }
 
-// 4-5. f = f_ext + the element entries, node by node in a fixed order; with `accelerate`, a = f / m and
-// the angular a = moment / scalar inertia in the same pass (a massless node gets none).
+// 4-5. f = f_ext + the element sums (made in group order by the element stage), node by node; with
+// `accelerate`, a = f / m and the angular a = moment / scalar inertia in the same pass (a massless node gets
+// none).
 void ExplicitEngine::assemble_and_accelerate(bool accelerate) {
   auto& s = nodes_;
   node_pass([&](std::int64_t, std::size_t first, std::size_t last) {
     for (std::size_t node = first; node < last; ++node) {
-      double f[6] = {0, 0, 0, 0, 0, 0};
-      for (std::size_t q = slot_offsets_[node]; q < slot_offsets_[node + 1]; ++q) {
-        const Slot& sl = slots_[q];
-        for (int d = 0; d < 3; ++d) f[d] += sl.base[d * kGroupSize];
-        if (sl.rot)
-          for (int d = 3; d < 6; ++d) f[d] += sl.base[d * kGroupSize];
-      }
+      double* f = &element_sums_[6 * node];
       // External loads were put in f*_ext by the loads; the total is their sum with the element forces.
       s.fx[node] = s.fx_ext[node] + f[0];
       s.fy[node] = s.fy_ext[node] + f[1];
@@ -597,6 +592,7 @@ void ExplicitEngine::assemble_and_accelerate(bool accelerate) {
       s.mx[node] += f[3];
       s.my[node] += f[4];
       s.mz[node] += f[5];
+      for (int d = 0; d < 6; ++d) f[d] = 0.0;  // the next cycle's sums start from zero
       if (accelerate) accelerate_node(s, node);
     }
   });

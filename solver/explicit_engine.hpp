@@ -33,6 +33,7 @@
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
 #include "solver/node_state.hpp"
+#include "solver/ordered_commit.hpp"
 #include "solver/sensors.hpp"
 #include "solver/skew_frames.hpp"
 #include "solver/thread_team.hpp"
@@ -154,7 +155,6 @@ class ExplicitEngine {
  private:
   void build_nodes();
   void build_groups();
-  void build_assembly();
   // One element group's share of the cycle beyond its forces: its time-step vote and deleted elements.
   struct GroupVote {
     double dt = 0;  // the smallest scaled (or frozen) step of the group
@@ -171,6 +171,7 @@ class ExplicitEngine {
   }
   void compute_element_forces(const CycleInfo& cyc);
   void group_forces_and_vote(std::int64_t flat, const CycleInfo& cyc);
+  void add_group_forces(std::int64_t flat);
   [[nodiscard]] Chunks node_chunks() const;
   template <class Body>
   void node_pass(Body&& body);
@@ -193,14 +194,11 @@ class ExplicitEngine {
   std::vector<TetraGroup> tetras_;
   std::vector<SpringGroup> springs_;
   std::size_t element_count_ = 0;
-  // Assembly: for node n, slots_[offsets_[n] .. offsets_[n+1]) point at its entries in the groups'
-  // nodal_force buffers, in a fixed order; `rot` says whether the entry carries moments.
-  struct Slot {
-    const double* base;  // force component d is base[d * kGroupSize]
-    bool rot;
-  };
-  std::vector<std::size_t> slot_offsets_;
-  std::vector<Slot> slots_;
+  // Assembly: the element forces of every node summed in group order (group, element, node of the element),
+  // [node][fx fy fz mx my mz]; filled by the element stage through element_sums_order_, read and cleared by
+  // assemble_and_accelerate.
+  std::vector<double> element_sums_;
+  OrderedCommit element_sums_order_;
   SkewFrames skews_;                                // read by the loads, conditions and outputs below
   std::unique_ptr<KinematicsDriver> kinematics_;    // loads and kinematic conditions
   std::unique_ptr<Accelerometers> accelerometers_;  // /ACCEL, read every cycle after the conditions

@@ -306,8 +306,10 @@ ShellPointResult shell_point_update_r(const MaterialParams& p, int iplas, double
 
 // Elastic trial (1.4 / 6.3 step 1): in-plane trial stress into sxx syy sxy, transverse shear syz szx
 // (elastic, outside the yield function) updated.
-inline void shell_trial(const MaterialParams& p, double gs, double de0, double de1, double de2, double de3,
-                        double de4, double& sxx, double& syy, double& sxy, double& syz, double& szx) {
+// (P: MaterialParams, or any struct with its a11, a12, shear and nu: the batched loops copy those four.)
+template <class P>
+inline void shell_trial(const P& p, double gs, double de0, double de1, double de2, double de3, double de4,
+                        double& sxx, double& syy, double& sxy, double& syz, double& szx) {
   sxx = sxx + p.a11 * de0 + p.a12 * de1;
   syy = syy + p.a12 * de0 + p.a11 * de1;
   sxy = sxy + p.shear * de2;
@@ -316,7 +318,8 @@ inline void shell_trial(const MaterialParams& p, double gs, double de0, double d
 }
 
 // Thickness strain increment (1.8) from the in-plane increments and the plastic trace term d_ezz_p.
-inline double shell_dezz(const MaterialParams& p, double de0, double de1, double dezz_p) {
+template <class P>
+inline double shell_dezz(const P& p, double de0, double de1, double dezz_p) {
   return (-p.nu * (de0 + de1) - (1.0 - 2.0 * p.nu) * dezz_p) / (1.0 - p.nu);
 }
 

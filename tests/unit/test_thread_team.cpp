@@ -15,10 +15,12 @@
 #include "contact/type7_prepare.hpp"
 #include "parser/build_run_controls.hpp"
 #include "solver/explicit_engine.hpp"
+#include "solver/ordered_commit.hpp"
 #include "solver/thread_team.hpp"
 #include "test_util.hpp"
 
 using radx::solver::Chunks;
+using radx::solver::OrderedCommit;
 using radx::solver::ThreadTeam;
 
 TEST_CASE("chunks cover the items once, with boundaries that depend only on the item count", "[threads]") {
@@ -75,6 +77,62 @@ TEST_CASE("a stage's writes are all visible to the caller when run() returns, fr
     threads_seen.insert(who.begin(), who.end());
   }
   CHECK(threads_seen.size() == 2);
+}
+
+TEST_CASE("items finished in any order are committed once each, in item order", "[threads]") {
+  // On one thread, finished in reverse: nothing can be committed before item 0, then everything at once.
+  OrderedCommit order;
+  order.assign(6);
+  std::vector<std::int64_t> committed;
+  const auto commit = [&](std::int64_t k) { committed.push_back(k); };
+  for (std::int64_t k = 5; k >= 1; --k) {
+    order.finished(k, commit);
+    CHECK(committed.empty());
+  }
+  order.finished(0, commit);
+  CHECK(committed == std::vector<std::int64_t>{0, 1, 2, 3, 4, 5});
+  // Out of order: 1, 0 (commits 0 and 1), 3 (waits for 2), 2 (commits 2 and 3).
+  order.reset();
+  committed.clear();
+  order.finished(1, commit);
+  order.finished(0, commit);
+  CHECK(committed == std::vector<std::int64_t>{0, 1});
+  order.finished(3, commit);
+  CHECK(order.committed() == 2);
+  order.finished(2, commit);
+  order.drain(commit);
+  CHECK(committed == std::vector<std::int64_t>{0, 1, 2, 3});
+}
+
+TEST_CASE("a team's threads commit every item in item order, one committer at a time", "[threads]") {
+  // Items of uneven length (some sleep) make the threads finish out of order and race for the commit; the
+  // commit itself checks that no other commit runs beside it. drain() after the stage must find the rest.
+  for (const int threads : {2, 3}) {
+    ThreadTeam team(threads);
+    constexpr std::int64_t kItems = 400;
+    OrderedCommit order;
+    order.assign(kItems);
+    std::vector<std::int64_t> committed;
+    std::atomic<int> inside{0};
+    bool overlapped = false;
+    const auto commit = [&](std::int64_t k) {
+      if (inside.fetch_add(1) != 0) overlapped = true;
+      committed.push_back(k);
+      inside.fetch_sub(1);
+    };
+    for (int stage = 0; stage < 20; ++stage) {
+      order.reset();
+      committed.clear();
+      team.run(kItems, [&](std::int64_t k) {
+        if ((k * 7 + stage) % 13 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+        order.finished(k, commit);
+      });
+      order.drain(commit);
+      REQUIRE(committed.size() == static_cast<std::size_t>(kItems));
+      for (std::int64_t k = 0; k < kItems; ++k) REQUIRE(committed[static_cast<std::size_t>(k)] == k);
+    }
+    CHECK_FALSE(overlapped);
+  }
 }
 
 namespace {
