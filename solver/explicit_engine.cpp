@@ -462,16 +462,39 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
   // step under /DT/<family>/CST.
   // The element's user id (ids[element]) is read only where it is reported: a read per element would be a
   // second stream through the model beside the group's own arrays.
-  auto visit = [&](double scale, const model::DtControl& fam, double raw, double& frozen,
-                   StepControl::Kind kind, const auto& ids, std::int32_t element, bool switchable) {
-    const auto id = [&] { return static_cast<std::int64_t>(ids[static_cast<std::size_t>(element)]); };
-    double dt = scale * raw;
-    if (switchable && fam.action == model::DtAction::Constant && fam.t_min > 0) {
+  // A group's vote: the first element with the smallest scaled step. Under /DT/<family>/CST with a switchable
+  // element (frozen: the group's dt_fixed) each element is visited for the switch; otherwise only the
+  // smallest step is looked for, and the element's user id (ids[element]) is read for it alone.
+  auto vote_group = [&](const auto& g, double scale, const model::DtControl& fam, StepControl::Kind kind,
+                        const auto& ids, std::vector<double>* frozen_steps, bool switchable) {
+    const auto id_of = [&](std::size_t k) {
+      return static_cast<std::int64_t>(ids[static_cast<std::size_t>(g.element[k])]);
+    };
+    const std::size_t n = static_cast<std::size_t>(g.count);
+    if (!(switchable && frozen_steps != nullptr && fam.action == model::DtAction::Constant &&
+          fam.t_min > 0)) {
+      double best = vote.dt;
+      std::size_t at = n;
+      for (std::size_t k = 0; k < n; ++k) {
+        const double dt = scale * g.dt[k];
+        if (dt < best) best = dt, at = k;
+      }
+      if (at < n) {
+        vote.dt = best;
+        vote.kind = kind;
+        vote.user_id = id_of(at);
+      }
+      return;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      const double raw = g.dt[k];
+      double& frozen = (*frozen_steps)[k];
+      double dt = scale * raw;
       if (frozen > 0) {
         // Without the small-strain kinematics the element's own stable step keeps falling; below half the
         // frozen step the run would go unstable, so it stops and says which element.
         if (dt < 0.5 * frozen && vote.violation_id == 0) {
-          vote.violation_id = id();
+          vote.violation_id = id_of(k);
           vote.violation_frozen = frozen;
           vote.violation_dt = dt;
         }
@@ -481,11 +504,11 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
         dt = frozen;
         ++vote.switched;
       }
-    }
-    if (dt < vote.dt) {
-      vote.dt = dt;
-      vote.kind = kind;
-      vote.user_id = id();
+      if (dt < vote.dt) {
+        vote.dt = dt;
+        vote.kind = kind;
+        vote.user_id = id_of(k);
+      }
     }
   };
   auto count_deleted_in = [&](const auto& g) {
@@ -506,10 +529,7 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
     const double scale = fam.given ? fam.scale : controls_.global.scale;
     const auto kind = g.triangle ? StepControl::Kind::Shell3 : StepControl::Kind::Shell;
     const auto& ids = g.triangle ? model_.shells3.id : model_.shells.id;
-    for (int i = 0; i < g.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      visit(scale, fam, g.dt[k], g.dt_fixed[k], kind, ids, g.element[k], g.props.ismstr == 2);
-    }
+    vote_group(g, scale, fam, kind, ids, &g.dt_fixed, g.props.ismstr == 2);
     count_deleted_in(g);
     return;
   }
@@ -522,11 +542,8 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
       case BrickKernel::Heph: hex8_heph_forces(g, nodes_, mat, cyc); break;
       case BrickKernel::FullyIntegrated: hex8_full_forces(g, nodes_, mat, cyc); break;
     }
-    for (int i = 0; i < g.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      visit(solid_scale, controls_.brick, g.dt[k], g.dt_fixed[k], StepControl::Kind::Brick, model_.bricks.id,
-            g.element[k], g.ismstr == 2);
-    }
+    vote_group(g, solid_scale, controls_.brick, StepControl::Kind::Brick, model_.bricks.id, &g.dt_fixed,
+               g.ismstr == 2);
     count_deleted_in(g);
     return;
   }
@@ -535,12 +552,7 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
     tetra4_forces(g, nodes_, materials_[static_cast<std::size_t>(g.material)], cyc);
     // Tetrahedra vote with the brick family's /DT/BRICK scale (Radioss counts them as solids); they are not
     // switched by /DT/BRICK/CST (no small-strain form here), so their frozen step stays unused.
-    for (int i = 0; i < g.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      double unused_frozen = 0.0;
-      visit(solid_scale, controls_.brick, g.dt[k], unused_frozen, StepControl::Kind::Tetra, model_.tetras.id,
-            g.element[k], false);
-    }
+    vote_group(g, solid_scale, controls_.brick, StepControl::Kind::Tetra, model_.tetras.id, nullptr, false);
     count_deleted_in(g);
     return;
   }
@@ -552,12 +564,8 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
   else
     spring_type4_forces(g, nodes_, cyc);
   // Springs vote with the global /DT scale (Radioss's DTFAC1(6)); no /DT/<family>/CST switch applies.
-  for (int i = 0; i < g.count; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    double unused_frozen = 0.0;
-    visit(controls_.global.scale, controls_.global, g.dt[k], unused_frozen, StepControl::Kind::Spring,
-          model_.springs.id, g.element[k], false);
-  }
+  vote_group(g, controls_.global.scale, controls_.global, StepControl::Kind::Spring, model_.springs.id,
+             nullptr, false);
 }
 
 Chunks ExplicitEngine::node_chunks() const {
