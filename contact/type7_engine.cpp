@@ -210,6 +210,8 @@ struct Type7Contact::Impl {
   std::vector<double> lagrange_buf;  // [3 nodes], zero outside a call
   std::vector<std::int32_t> lagrange_touched;
   LagrangeSolver lagrange;
+  // The engine's threads (set_parallel_for); empty: in order on the calling thread.
+  ParallelFor parallel;
 
   // LAGDT pairs switch under /DT/INTER/CST or /DT/INTER/LAG with a Tmin.
   [[nodiscard]] bool lagrange_on() const {
@@ -561,6 +563,7 @@ struct Type7Contact::Impl {
     std::array<Vec3, 4> x{};
   };
   // The closest of the candidate segments cand[c .. end) of one node at xs (removed segments skipped).
+  // Reads only the coordinates and the interface's segments: the candidate stage runs it on any thread.
   static Closest closest_segment(const InterfaceState& st, const std::vector<Candidate>& cand, std::size_t c,
                                  std::size_t end, const Vec3& xs, const ContactNodes& nodes) {
     Closest best;
@@ -574,6 +577,50 @@ struct Type7Contact::Impl {
       if (d < best.d) best = Closest{cand[q].segment, d, h, x};
     }
     return best;
+  }
+
+  // Candidates per chunk of the closest-segment stage (some tens of microseconds of work each).
+  static constexpr std::int64_t kCandidateChunk = 512;
+  // A node's closest segment, kept at the index of its first candidate (the corners are read again from
+  // the coordinates when used: the same loads give the same values).
+  struct NodeClosest {
+    std::int32_t segment;
+    double d;
+    std::array<double, 4> h;
+  };
+  std::vector<NodeClosest> closest;  // [candidates]
+
+  // Stage A of interface_cycle: the closest segment of every active secondary node with candidates, into
+  // `closest`. Pure (closest_segment writes nothing shared), so it runs in chunks on the engine's threads:
+  // chunk c takes the nodes whose first candidate lies in [c kCandidateChunk, (c + 1) kCandidateChunk), a
+  // division fixed by the candidate list alone; each node's entry is written by exactly one chunk.
+  void closest_stage(const InterfaceState& st, const std::vector<Candidate>& cand,
+                     const ContactNodes& nodes) {
+    const auto n = static_cast<std::int64_t>(cand.size());
+    closest.resize(cand.size());
+    const auto& secondary = st.in->secondary_nodes;
+    NodeClosest* out = closest.data();
+    const auto body = [&, n, out](std::int64_t chunk) {
+      const std::int64_t stop = std::min(n, (chunk + 1) * kCandidateChunk);
+      std::int64_t c = chunk * kCandidateChunk;
+      while (c > 0 && c < n &&
+             cand[static_cast<std::size_t>(c)].node == cand[static_cast<std::size_t>(c - 1)].node)
+        ++c;  // that node's group belongs to the chunk where it starts
+      while (c < stop) {
+        const std::int32_t k = cand[static_cast<std::size_t>(c)].node;
+        std::int64_t end = c;
+        while (end < n && cand[static_cast<std::size_t>(end)].node == k) ++end;
+        const auto ks = static_cast<std::size_t>(k);
+        if (!st.node_off[ks]) {
+          const Vec3 xs = node_x(nodes, secondary[ks]);
+          const Closest cl = closest_segment(st, cand, static_cast<std::size_t>(c),
+                                             static_cast<std::size_t>(end), xs, nodes);
+          out[c] = NodeClosest{cl.segment, cl.d, cl.h};
+        }
+        c = end;
+      }
+    };
+    run_chunks(&parallel, (n + kCandidateChunk - 1) / kCandidateChunk, body);
   }
 
   // type7-lagdt.md 4.6 at Tstart > 0 or under a sensor (the starter treated t = 0 otherwise): nodes already
@@ -653,12 +700,16 @@ struct Type7Contact::Impl {
       st.started = true;
       if (!st.from_start) start_penetrations(st, nodes, t);
     }
-    st.search->update(Coordinates{nodes.x, nodes.y, nodes.z});
+    st.search->update(Coordinates{nodes.x, nodes.y, nodes.z}, false, &parallel);
     const auto& cand = st.search->candidates();
     const double scale = controls.dt_scale;
     const double alpha = friction_filter_alpha(in.ifric >= 0 ? in.ifiltr : 0, in.xfreq, dt1);
     const bool mass_scaled_interface =
         controls.action == ContactControls::Action::AddMass && controls.t_min > 0 && !in.lagdt;
+    // Stage A (parallel, pure): every node's closest candidate segment. Stage B (this loop, in node order
+    // as before): everything that writes shared state (forces, stiffness sums, switches, IBC releases,
+    // deactivations, messages), so its order and the sums it makes are those of one thread.
+    closest_stage(st, cand, nodes);
     std::size_t c = 0;
     while (c < cand.size()) {
       const std::int32_t k = cand[c].node;
@@ -670,19 +721,20 @@ struct Type7Contact::Impl {
         c = end;
         continue;
       }
-      // The closest candidate segment.
+      // The closest candidate segment (stage A).
       const Vec3 xs = node_x(nodes, node);
-      const Closest cl = closest_segment(st, cand, c, end, xs, nodes);
+      const NodeClosest& cl = closest[c];
       const double best_d = cl.d;
       const std::int32_t best = cl.segment;
       const std::array<double, 4>& best_h = cl.h;
-      const std::array<Vec3, 4>& best_x = cl.x;
       c = end;
       if (best < 0) {  // no segment left (removed by Idel): the friction history ends with the contact
         st.f_t[ks] = Vec3{};
         continue;
       }
       const auto sb = static_cast<std::size_t>(best);
+      std::array<Vec3, 4> best_x{};
+      for (std::size_t j = 0; j < 4; ++j) best_x[j] = node_x(nodes, st.segments[sb][j]);
       const double g_full = pair_gap(in, in.gap_node[ks], in.gap_segment[sb]);
       // Inacti 5, 6: the reduced initial gap returns to the full gap as the pair opens.
       // Inacti 6 keeps 5 % of the open distance as margin: r = g - 0.95 d (= P0 + 0.05 (g - P0) at t = 0).
@@ -889,6 +941,10 @@ Type7Contact::~Type7Contact() = default;
 
 bool Type7Contact::empty() const {
   return impl_->interfaces.empty();
+}
+
+void Type7Contact::set_parallel_for(ParallelFor parallel) {
+  impl_->parallel = std::move(parallel);
 }
 
 ContactStep Type7Contact::compute(double t, double dt1, const ContactNodes& nodes,

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "contact/lagrange_contact.hpp"
+#include "contact/parallel_for.hpp"
 #include "solver/model/model.hpp"
 
 namespace radx::contact {
@@ -87,6 +88,11 @@ class Type7Contact {
   Type7Contact& operator=(const Type7Contact&) = delete;
 
   [[nodiscard]] bool empty() const;
+
+  // The engine's threads for the pure parts of compute() (the search's displacement test, each secondary
+  // node's closest segment); unset, they run in order on the calling thread. The results do not depend on
+  // it (parallel_for.hpp).
+  void set_parallel_for(ParallelFor parallel);
 
   // Cycle step 2 at time t (dt1 = t^n - t^{n-1}): books the work of the previous cycle's forces over the
   // step just taken, sorts when due, computes the penalty, damping and friction forces of every active

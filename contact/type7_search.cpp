@@ -141,23 +141,46 @@ void Type7Search::drop_unused_tracked() {
   tracked_stale_ = false;
 }
 
-bool Type7Search::update(const Coordinates& c, bool force) {
+bool Type7Search::update(const Coordinates& c, bool force, const ParallelFor* parallel) {
   if (force || sorts_ == 0) {
     sort(c);
     return true;
   }
   if (tracked_stale_) drop_unused_tracked();
-  // Largest squared displacement since the last sort: a flat loop over the tracked nodes, every cycle.
-  const std::size_t n = tracked_.size();
+  // Largest squared displacement since the last sort: a flat loop over the tracked nodes, every cycle, in
+  // chunks of kTrackedChunk nodes (each its own maximum, then the maximum of those). A maximum is exact and
+  // does not depend on the order it is taken in (a NaN is skipped by every std::max(d2, NaN) alike), so the
+  // result is that of one loop for any division and any thread.
+  const auto n = static_cast<std::int64_t>(tracked_.size());
+  const std::int64_t chunks = (n + kTrackedChunk - 1) / kTrackedChunk;
+  chunk_d2_.assign(static_cast<std::size_t>(chunks), 0.0);
   const std::int32_t* t = tracked_.data();
   const double* xs = x_sort_.data();
   const double *x = c.x.data(), *y = c.y.data(), *z = c.z.data();
+  double* out = chunk_d2_.data();
+  const auto body = [=](std::int64_t ch) {
+    const auto first = static_cast<std::size_t>(ch * kTrackedChunk);
+    const auto last = static_cast<std::size_t>(std::min(n, (ch + 1) * kTrackedChunk));
+    // Four running maxima: one would make every node wait for the previous node's comparison.
+    double m[4] = {0, 0, 0, 0};
+    std::size_t k = first;
+    for (; k + 4 <= last; k += 4)
+      for (std::size_t u = 0; u < 4; ++u) {
+        const std::int32_t i = t[k + u];
+        const double* s = xs + 3 * (k + u);
+        const double dx = x[i] - s[0], dy = y[i] - s[1], dz = z[i] - s[2];
+        m[u] = std::max(m[u], dx * dx + dy * dy + dz * dz);
+      }
+    for (; k < last; ++k) {
+      const std::int32_t i = t[k];
+      const double dx = x[i] - xs[3 * k], dy = y[i] - xs[3 * k + 1], dz = z[i] - xs[3 * k + 2];
+      m[0] = std::max(m[0], dx * dx + dy * dy + dz * dz);
+    }
+    out[ch] = std::max(std::max(m[0], m[1]), std::max(m[2], m[3]));
+  };
+  run_chunks(parallel, chunks, body);
   double d2 = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::int32_t i = t[k];
-    const double dx = x[i] - xs[3 * k], dy = y[i] - xs[3 * k + 1], dz = z[i] - xs[3 * k + 2];
-    d2 = std::max(d2, dx * dx + dy * dy + dz * dz);
-  }
+  for (const double v : chunk_d2_) d2 = std::max(d2, v);
   // 2 d >= margin, squared (both sides are non-negative).
   if (4 * d2 >= margin_ * margin_) {
     sort(c);

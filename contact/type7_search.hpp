@@ -10,6 +10,8 @@
 #include <span>
 #include <vector>
 
+#include "contact/parallel_for.hpp"
+
 namespace radx::contact {
 
 // One candidate pair: a secondary node (index into the interface's secondary list, not a node index) and
@@ -34,8 +36,12 @@ class Type7Search {
               double gap_max, double bumult);
 
   // Sorts again when due (or when `force` is set) and returns true when it did. `x0` coordinates at the
-  // previous call are tracked internally; the first call always sorts.
-  bool update(const Coordinates& c, bool force = false);
+  // previous call are tracked internally; the first call always sorts. `parallel` (may be null) runs the
+  // displacement test of the tracked nodes in chunks of kTrackedChunk nodes.
+  bool update(const Coordinates& c, bool force = false, const ParallelFor* parallel = nullptr);
+
+  // Tracked nodes per chunk of the displacement test (a few microseconds of work each).
+  static constexpr std::int64_t kTrackedChunk = 4096;
 
   // Candidates of the last sort: every (node, segment) whose node lies inside the segment's box enlarged
   // by gap_max + margin, except a node and a segment that contains it (self-contact), sorted. Pairs of
@@ -73,6 +79,7 @@ class Type7Search {
   std::vector<double> cell_xyz_;          // [3 * active nodes] coordinates in the order of cell_node_
   std::vector<Candidate> found_;          // pairs in the order found (segment by segment)
   std::vector<std::int32_t> node_first_;  // [secondary + 1] CSR offsets used to order pairs by node
+  std::vector<double> chunk_d2_;          // [chunks] largest squared displacement per chunk (update)
 };
 
 // Reference search for tests: every (node, segment) pair within the enlarged boxes, by brute force.

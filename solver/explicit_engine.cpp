@@ -73,6 +73,11 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
                                                             : contact::ContactControls::Action::None;
     contact_ = std::make_unique<contact::Type7Contact>(model_, cc);
     if (contact_->empty()) contact_.reset();
+    // Contact's pure stages (search displacement test, closest segments) in its own fixed chunks on the
+    // team; contact runs fewer than two chunks on the calling thread without calling this.
+    if (contact_)
+      contact_->set_parallel_for(
+          [team = team_.get()](std::int64_t chunks, contact::ChunkBody body) { team->run(chunks, body); });
   }
   fuse_accelerations_ = !kinematics_->has_ties() && !controls_.nodal.given &&
                         !(contact_ && controls_.inter.action == model::DtAction::AddMass);
