@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -403,6 +404,20 @@ void ExplicitEngine::build_groups() {
   element_count_ = m.element_count() + m.springs.size();
 }
 
+// sum[d] += f[d * G] for d < C, two components at a time: the same additions as one at a time (each lane is
+// its own sum), in half the instructions; GCC does not pair them itself (the f values are G apart).
+template <std::size_t C, std::size_t G>
+inline void add_entry(double* sum, const double* f) {
+  using Pair = double __attribute__((vector_size(16)));
+  for (std::size_t d = 0; d + 1 < C; d += 2) {
+    Pair s;
+    std::memcpy(&s, sum + d, sizeof s);
+    s += Pair{f[d * G], f[(d + 1) * G]};
+    std::memcpy(sum + d, &s, sizeof s);
+  }
+  if constexpr (C % 2 == 1) sum[C - 1] += f[(C - 1) * G];
+}
+
 // Adds group `flat`'s nodal-force buffer to the nodes' element sums, element by element and node by node of
 // the element: called for the groups in order (shells, bricks, tetras, springs), so each node's sum is made
 // in one fixed order. A degenerate quad (n3 == n4) still has four slots; each carries its share.
@@ -413,11 +428,8 @@ void ExplicitEngine::add_group_forces(std::int64_t flat) {
     constexpr std::size_t G = kGroupSize;
     const double* nf = g.nodal_force.data();
     for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
-      for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q) {
-        double* sum = sums + 6 * static_cast<std::size_t>(g.conn[q * G + i]);
-        const double* f = nf + q * C * G + i;
-        for (std::size_t d = 0; d < C; ++d) sum[d] += f[d * G];
-      }
+      for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q)
+        add_entry<C, G>(sums + 6 * static_cast<std::size_t>(g.conn[q * G + i]), nf + q * C * G + i);
   };
   using Forces = std::integral_constant<std::size_t, 3>;
   using ForcesAndMoments = std::integral_constant<std::size_t, 6>;
