@@ -103,7 +103,7 @@ void ExplicitEngine::build_nodes() {
   }
   // Masses are the starter's lumped masses (solver/model/masses.cpp); the engine adds the scalar
   // rotational inertias, which shells and TYPE8 springs carry.
-  nodes_.mass = m.node_mass;
+  nodes_.mass.assign(m.node_mass.begin(), m.node_mass.end());
   auto X = [&](std::int32_t n) { return model::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]}; };
   auto rho_of = [&](std::int32_t part) { return m.materials[m.parts[part].material].rho; };
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
@@ -178,7 +178,7 @@ void ExplicitEngine::build_groups() {
       int points = prop.n_ip;
       if (m.materials[mat].law != model::MaterialLaw::Elastic && points == 0) points = 3;  // LAW2 with N = 0
       if (m.materials[mat].law == model::MaterialLaw::Elastic && points > 1) points = 0;   // LAW1: resultant
-      ShellGroup g;
+      ShellGroup g(&group_arena_);
       std::size_t end = k;
       while (end < order.size() && b.part[order[end]] == part &&
              end - k < static_cast<std::size_t>(kGroupSize))
@@ -244,7 +244,7 @@ void ExplicitEngine::build_groups() {
   while (k < order.size()) {
     const auto part = m.bricks.part[order[k]];
     const auto& prop = m.properties[m.parts[part].property].solid;
-    BrickGroup g;
+    BrickGroup g(&group_arena_);
     std::size_t end = k;
     while (end < order.size() && m.bricks.part[order[end]] == part &&
            end - k < static_cast<std::size_t>(kGroupSize))
@@ -315,7 +315,7 @@ void ExplicitEngine::build_groups() {
   while (k < t_order.size()) {
     const auto part = m.tetras.part[t_order[k]];
     const auto& prop = m.properties[m.parts[part].property].solid;
-    TetraGroup g;
+    TetraGroup g(&group_arena_);
     std::size_t end = k;
     while (end < t_order.size() && m.tetras.part[t_order[end]] == part &&
            end - k < static_cast<std::size_t>(kGroupSize))
@@ -434,7 +434,7 @@ void ExplicitEngine::build_assembly() {
   };
   each_entry([&](std::int32_t node, const double*, bool) { ++count[static_cast<std::size_t>(node) + 1]; });
   for (std::size_t k = 0; k < n; ++k) count[k + 1] += count[k];
-  slot_offsets_ = count;
+  slot_offsets_.assign(count.begin(), count.end());
   slots_.assign(count[n], Slot{nullptr, false});
   std::vector<std::size_t> fill(count.begin(), count.end() - 1);
   each_entry([&](std::int32_t node, const double* base, bool rot) {

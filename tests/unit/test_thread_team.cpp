@@ -80,7 +80,7 @@ TEST_CASE("a stage's writes are all visible to the caller when run() returns, fr
 namespace {
 
 struct RunOutcome {
-  std::vector<double> x, y, z, vx, vy, vz;
+  radx::solver::HugeVector<double> x, y, z, vx, vy, vz;
   radx::solver::EnergyBalance energy;
   std::int64_t cycles = 0;
 };
