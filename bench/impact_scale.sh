@@ -11,7 +11,8 @@
 # 20 at every size. Animation output is taken out of the engine deck (the run measures the cycle, not the
 # HDF5 writer); the time history stays.
 #
-# For each size: the starter's wall time and peak memory; for each thread count: the engine's microseconds per
+# For each size: the starter's wall time and peak memory; for each thread count: the engine's wall and CPU
+# seconds (user + system: the figure that holds when other jobs share the cores), microseconds per
 # element-cycle and contact share (both from its listing), its peak resident memory (/usr/bin/time -v) per
 # element, the bytes moved per element-cycle (bench/cycle_traffic.cpp, from the engine's arrays) and the ratio
 # of the measured cost to the traffic limit (bytes / triad bandwidth of bench/stream_bandwidth.cpp on as many
@@ -52,8 +53,10 @@ for t in $threads_list; do
   echo "triad bandwidth on $t thread(s): ${triad[$t]} GB/s"
 done
 
-# rss_kb FILE: the Maximum resident set size of a /usr/bin/time -v report; wall_s FILE: its elapsed seconds.
+# rss_kb FILE: the Maximum resident set size of a /usr/bin/time -v report; wall_s FILE: its elapsed seconds;
+# cpu_s FILE: its user + system seconds (what to compare when other jobs share the cores).
 rss_kb() { awk -F': ' '/Maximum resident set size/ {print $2}' "$1"; }
+cpu_s() { awk -F': ' '/User time|System time/ {s += $2} END {printf "%.1f", s}' "$1"; }
 wall_s() { awk -F': ' '/Elapsed \(wall clock\)/ {n = split($2, p, ":"); s = 0; for (i = 1; i <= n; ++i) s = s * 60 + p[i]; print s}' "$1"; }
 
 rows=()
@@ -107,6 +110,7 @@ EOF
     cost=$(awk '/^ +cost/ {print $2}' "$dir/run.$t")
     ncyc=$(awk '/^ +cycles/ {print $2}' "$dir/run.$t")
     wall=$(wall_s "$dir/time.$t")
+    cpu=$(cpu_s "$dir/time.$t")
     contact=$(sed -n 's/^ *contact (search and forces) *\([0-9.]*\) %.*/\1/p' "$dir/run.$t")
     rss=$(rss_kb "$dir/time.$t")
     per_elem=$(awk -v r="$rss" -v e="$elems" 'BEGIN {printf "%.0f", r * 1024 / e}')
@@ -114,7 +118,7 @@ EOF
     limit=$(awk -v b="$bytes" -v bw="${triad[$t]}" 'BEGIN {printf "%.4f", b / (bw * 1e3)}')
     ratio=$(awk -v c="$cost" -v l="$limit" 'BEGIN {printf "%.2f", c / l}')
     pairs=$(awk '/^  interface [0-9]+: active pairs/ {sub(",", "", $5); p = p (p == "" ? "" : "/") $5} END {print p}' "$dir/run.$t")
-    rows+=("| $n | $elems | $t | $ncyc | $wall | $cost | ${contact:-0} % | ${pairs:--} | $((rss / 1024)) | $per_elem | $bytes | $limit | $ratio |")
+    rows+=("| $n | $elems | $t | $ncyc | $wall | $cpu | $cost | ${contact:-0} % | ${pairs:--} | $((rss / 1024)) | $per_elem | $bytes | $limit | $ratio |")
     echo "N = $n, $t thread(s): $cost us/element-cycle, $ncyc cycles, contact ${contact:-0} %, peak $((rss / 1024)) MB" >&2
   done
   grep -E "^  interface" "$dir/run.1" | sed "s/^/  N = $n: /" >&2 || true
@@ -129,8 +133,8 @@ done
 echo
 echo "Engine (load at the end $(cut -d' ' -f1-3 /proc/loadavg)):"
 echo
-echo "| N | elements | threads | cycles | wall s | us/element-cycle | contact share | active pairs at the end (if 1/2) | peak RSS MB | peak bytes/element | bytes moved/element-cycle | traffic limit us | ratio to limit |"
-echo "|--:|---------:|--------:|-------:|-------:|-----------------:|--------------:|-----:|------------:|-------------------:|--------------------------:|-----------------:|---------------:|"
+echo "| N | elements | threads | cycles | wall s | CPU s | us/element-cycle | contact share | active pairs at the end (if 1/2) | peak RSS MB | peak bytes/element | bytes moved/element-cycle | traffic limit us | ratio to limit |"
+echo "|--:|---------:|--------:|-------:|-------:|------:|-----------------:|--------------:|-----:|------------:|-------------------:|--------------------------:|-----------------:|---------------:|"
 printf '%s\n' "${rows[@]}"
 echo
 echo "Starter:"

@@ -177,21 +177,11 @@ double ImposedVelocities::apply(NodeState& s, double t, double dt1, double dt2,
     const double f_now = increment ? scaled_function_value(e.f, tau, e.ascale, e.fscale) : 0.0;
     const bool rot = e.dir >= 3;
     const int d = rot ? e.dir - 3 : e.dir;
-    const std::vector<double>& x = d == 0 ? s.x : d == 1 ? s.y : s.z;
-    const std::vector<double>& x0 = d == 0 ? s.x0 : d == 1 ? s.y0 : s.z0;
-    std::vector<double>& v = rot ? (d == 0   ? s.wx
-                                    : d == 1 ? s.wy
-                                             : s.wz)
-                                 : (d == 0   ? s.vx
-                                    : d == 1 ? s.vy
-                                             : s.vz);
-    std::vector<double>& a = rot ? (d == 0   ? s.awx
-                                    : d == 1 ? s.awy
-                                             : s.awz)
-                                 : (d == 0   ? s.ax
-                                    : d == 1 ? s.ay
-                                             : s.az);
-    const std::vector<double>& mass = rot ? s.inertia : s.mass;
+    const auto& x = d == 0 ? s.x : d == 1 ? s.y : s.z;
+    const auto& x0 = d == 0 ? s.x0 : d == 1 ? s.y0 : s.z0;
+    auto& v = rot ? (d == 0 ? s.wx : d == 1 ? s.wy : s.wz) : (d == 0 ? s.vx : d == 1 ? s.vy : s.vz);
+    auto& a = rot ? (d == 0 ? s.awx : d == 1 ? s.awy : s.awz) : (d == 0 ? s.ax : d == 1 ? s.ay : s.az);
+    const auto& mass = rot ? s.inertia : s.mass;
     const bool line = !e.node_axis.empty();  // /IMPDISP/FGEO: each node along its own line
     const bool skewed = line || e.skew != model::kNone;
     const auto skew_axis = skews_->axis(e.skew, d);  // the skew's axis of this cycle

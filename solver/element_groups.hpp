@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory_resource>
 #include <optional>
 #include <vector>
 
@@ -18,6 +19,13 @@
 namespace radx::solver {
 
 inline constexpr int kGroupSize = 128;
+
+// A group's per-element array. Groups are small (128 elements, some 200 KB) and many (20,800 at 2.66 M
+// elements): each array on its own from the heap would sit on 4 KB pages, so the engine carves them out of
+// one arena on huge pages (HugePageResource under a monotonic buffer), which also keeps a group's arrays
+// together in memory. A group built without an arena (tests, tools) uses the heap.
+template <class T>
+using GroupArray = std::pmr::vector<T>;
 
 // Values of the cycle the kernels need.
 struct CycleInfo {
@@ -44,40 +52,47 @@ enum class ShellKernel : std::uint8_t {
 };
 
 struct ShellGroup {
+  // Where the arrays below live: the engine's arena (ExplicitEngine::group_arena_), or the heap by default.
+  std::pmr::memory_resource* arena = std::pmr::get_default_resource();
+  ShellGroup() = default;
+  explicit ShellGroup(std::pmr::memory_resource* r) : arena(r) {}
   int count = 0;          // elements in this group
   bool triangle = false;  // 3-node C0 shells (conn rows 0..2)
   ShellKernel kernel = ShellKernel::Bt4;
-  int gauss = 1;                      // in-plane integration points: 4 for QBAT (each with n_points)
-  std::vector<std::int32_t> element;  // [G] index of each slot's element in its model block
-  std::int32_t part = -1;             // dense part index (all elements of a group share it)
-  std::int32_t material = -1;         // index into the engine's MaterialParams
+  int gauss = 1;                            // in-plane integration points: 4 for QBAT (each with n_points)
+  GroupArray<std::int32_t> element{arena};  // [G] index of each slot's element in its model block
+  std::int32_t part = -1;                   // dense part index (all elements of a group share it)
+  std::int32_t material = -1;               // index into the engine's MaterialParams
   ShellProps props;
-  std::vector<std::int32_t> conn;  // [4][G] dense node indices (triangles: row 3 unused)
-  std::vector<double> t0;          // [G] thickness used by the mechanics
-  std::vector<double> thick;       // [G] current thickness (output; mechanics when ithick = 1)
-  std::vector<double> area0;       // [G] initial area
-  std::vector<double> off;         // [G] 1 alive, decaying by 0.8 after failure, 0 deleted
-  std::vector<double> sig;         // [gauss][n_points][5][G]  sxx syy sxy syz szx, local frame
-  std::vector<double> eps_p;       // [gauss][n_points][G]
-  std::vector<double> dmg;  // [gauss][n_points][G] failure damage D / Dcrit (0 .. 1; 1: the point failed)
-  std::vector<double> fail_scale;  // [G] /FAIL/TAB element-size factor of eps_f (1 otherwise; set at t = 0)
-  std::vector<double> brit;        // law 27 only: [gauss][n_points][kBritVars][G] crack state (allocate_brit)
-  std::vector<double> hg;          // [3][G] elastic hourglass resultants Sx Sy Sz (Ishell 1);
+  GroupArray<std::int32_t> conn{arena};  // [4][G] dense node indices (triangles: row 3 unused)
+  GroupArray<double> t0{arena};          // [G] thickness used by the mechanics
+  GroupArray<double> thick{arena};       // [G] current thickness (output; mechanics when ithick = 1)
+  GroupArray<double> area0{arena};       // [G] initial area
+  GroupArray<double> off{arena};         // [G] 1 alive, decaying by 0.8 after failure, 0 deleted
+  GroupArray<double> sig{arena};         // [gauss][n_points][5][G]  sxx syy sxy syz szx, local frame
+  GroupArray<double> eps_p{arena};       // [gauss][n_points][G]
+  GroupArray<double> dmg{
+      arena};  // [gauss][n_points][G] failure damage D / Dcrit (0 .. 1; 1: the point failed)
+  GroupArray<double> fail_scale{
+      arena};                      // [G] /FAIL/TAB element-size factor of eps_f (1 otherwise; set at t = 0)
+  GroupArray<double> brit{arena};  // law 27 only: [gauss][n_points][kBritVars][G] crack state (allocate_brit)
+  GroupArray<double> hg{arena};    // [3][G] elastic hourglass resultants Sx Sy Sz (Ishell 1);
                                    // QEPH: [4][6][G] stabilisation resultants at the 4 Gauss points
                                    // (shell_qeph.cpp)
-  std::vector<double> e_int;       // [G] accumulated internal energy (membrane + bending)
-  std::vector<double> e_hg;        // [G] accumulated hourglass energy
-  std::vector<double> w_plastic;   // [G] accumulated plastic work
-  std::vector<double> rate;        // [G] filtered equivalent strain rate (Johnson-Cook)
-  std::vector<double> dt;          // [G] stable step of the cycle, before the /DT scale
-  std::vector<double> dt_fixed;    // [G] engine: constant step after a /DT/SHELL|SH_3N/CST switch (0: none)
+  GroupArray<double> e_int{arena};      // [G] accumulated internal energy (membrane + bending)
+  GroupArray<double> e_hg{arena};       // [G] accumulated hourglass energy
+  GroupArray<double> w_plastic{arena};  // [G] accumulated plastic work
+  GroupArray<double> rate{arena};       // [G] filtered equivalent strain rate (Johnson-Cook)
+  GroupArray<double> dt{arena};         // [G] stable step of the cycle, before the /DT scale
+  GroupArray<double> dt_fixed{
+      arena};  // [G] engine: constant step after a /DT/SHELL|SH_3N/CST switch (0: none)
   // Small strain after that switch: 1.0 once the element's local geometry is frozen in ref_local
   // (quads: x2 x3 x4 y2 y3 y4; triangles: x2 x3 y3 and 0), so its B matrix, area and step stay constant.
-  std::vector<double> small;        // [G] 0 or 1
-  std::vector<double> ref_local;    // [6][G]
-  std::vector<double> k_nodal;      // [G] nodal stiffness contribution of each node (for nodal steps)
-  std::vector<double> nodal_force;  // [4][6][G] force (fx fy fz) and moment (mx my mz) ADDED to each node,
-                                    // global axes (internal forces enter with their minus sign)
+  GroupArray<double> small{arena};        // [G] 0 or 1
+  GroupArray<double> ref_local{arena};    // [6][G]
+  GroupArray<double> k_nodal{arena};      // [G] nodal stiffness contribution of each node (for nodal steps)
+  GroupArray<double> nodal_force{arena};  // [4][6][G] force (fx fy fz) and moment (mx my mz) ADDED to each
+                                          // node, global axes (internal forces enter with their minus sign)
   // n elements, `points` through the thickness (0: resultants), `gauss_points` in the plane, `hg_rows` rows
   // of hourglass state.
   void allocate(int n, int points, int gauss_points = 1, int hg_rows = 3);
@@ -85,8 +100,12 @@ struct ShellGroup {
 };
 
 struct BrickGroup {
+  // Where the arrays below live: the engine's arena (ExplicitEngine::group_arena_), or the heap by default.
+  std::pmr::memory_resource* arena = std::pmr::get_default_resource();
+  BrickGroup() = default;
+  explicit BrickGroup(std::pmr::memory_resource* r) : arena(r) {}
   int count = 0;
-  std::vector<std::int32_t> element;  // [G] index of each slot's element in the model's brick block
+  GroupArray<std::int32_t> element{arena};  // [G] index of each slot's element in the model's brick block
   std::int32_t part = -1;
   std::int32_t material = -1;
   int isolid = 1;
@@ -107,43 +126,45 @@ struct BrickGroup {
   bool coupled = false;
   bool dt_points = false;  // element length min_p 8 V_p / A_mid (S8Z, S8E) instead of V / max face area
   bool s8e_visc = false;   // Isolid 18 with LAW1: S8E's viscous hourglass damping (s8evis3.F), work in e_hg
-  std::vector<double> sig_p;       // [8][6][G] point stresses (co-rotational frame when corot), 8 points only
-  std::vector<double> eps_p_p;     // [8][G] point plastic strains
-  std::vector<double> dmg_p;       // [8][G] point /FAIL/JOHNSON damage
-  std::vector<double> vol0_p;      // [8][G] initial point volumes det J_p
-  std::vector<std::int32_t> conn;  // [8][G]
-  std::vector<double> vol0;        // [G] initial (one-point) volume
-  std::vector<double> vol;         // [G] current volume
-  std::vector<double> rho;         // [G] current density rho0 V0 / V
-  std::vector<double> off;         // [G]
-  std::vector<double> sig;         // [6][G] xx yy zz xy yz zx, global axes
-  std::vector<double> eps_p;       // [G]
-  std::vector<double> dmg;         // [G] /FAIL/JOHNSON damage (0 .. 1)
-  std::vector<double> q;           // [G] bulk viscosity pressure of the last cycle
-  std::vector<double> e_int;       // [G] accumulated internal energy (includes bulk viscosity work)
-  std::vector<double> e_hg;        // [G]
-  std::vector<double> hg_force;    // [4][3][G] hourglass forces H_j of the last cycle (energy trapezoid)
-  std::vector<double> w_plastic;   // [G]
-  std::vector<double> rate;        // [G] strain rate measure (Johnson-Cook)
-  std::vector<double> dt;          // [G]
-  std::vector<double> dt_fixed;    // [G] engine: constant step after a /DT/BRICK/CST switch (0: none)
+  GroupArray<double> sig_p{
+      arena};  // [8][6][G] point stresses (co-rotational frame when corot), 8 points only
+  GroupArray<double> eps_p_p{arena};     // [8][G] point plastic strains
+  GroupArray<double> dmg_p{arena};       // [8][G] point /FAIL/JOHNSON damage
+  GroupArray<double> vol0_p{arena};      // [8][G] initial point volumes det J_p
+  GroupArray<std::int32_t> conn{arena};  // [8][G]
+  GroupArray<double> vol0{arena};        // [G] initial (one-point) volume
+  GroupArray<double> vol{arena};         // [G] current volume
+  GroupArray<double> rho{arena};         // [G] current density rho0 V0 / V
+  GroupArray<double> off{arena};         // [G]
+  GroupArray<double> sig{arena};         // [6][G] xx yy zz xy yz zx, global axes
+  GroupArray<double> eps_p{arena};       // [G]
+  GroupArray<double> dmg{arena};         // [G] /FAIL/JOHNSON damage (0 .. 1)
+  GroupArray<double> q{arena};           // [G] bulk viscosity pressure of the last cycle
+  GroupArray<double> e_int{arena};       // [G] accumulated internal energy (includes bulk viscosity work)
+  GroupArray<double> e_hg{arena};        // [G]
+  GroupArray<double> hg_force{arena};   // [4][3][G] hourglass forces H_j of the last cycle (energy trapezoid)
+  GroupArray<double> w_plastic{arena};  // [G]
+  GroupArray<double> rate{arena};       // [G] strain rate measure (Johnson-Cook)
+  GroupArray<double> dt{arena};         // [G]
+  GroupArray<double> dt_fixed{arena};   // [G] engine: constant step after a /DT/BRICK/CST switch (0: none)
   // Small strain after that switch: 1 once the node coordinates are frozen in x_ref; the gradients, volume
   // and step then come from x_ref (Radioss's small-strain switch), the velocities stay current.
-  std::vector<std::uint8_t> small;  // [G]
-  std::vector<double> x_ref;        // [8][3][G]
-  std::vector<double> k_nodal;      // [G] nodal stiffness contribution (1/4 rho V / dt_e^2)
-  std::vector<double> nodal_force;  // [8][3][G] force ADDED to each node, global axes
+  GroupArray<std::uint8_t> small{arena};  // [G]
+  GroupArray<double> x_ref{arena};        // [8][3][G]
+  GroupArray<double> k_nodal{arena};      // [G] nodal stiffness contribution (1/4 rho V / dt_e^2)
+  GroupArray<double> nodal_force{arena};  // [8][3][G] force ADDED to each node, global axes
   // Co-rotational frame (Iframe 2, Isolid 24): columns e_x e_y e_z of the element frame of the last cycle,
   // [3 * column + row][G]; `sig` is then in that frame (global = R sig R^T). Identity until the first cycle.
-  std::vector<double> frame;      // [9][G]
-  std::vector<double> hg_stress;  // [3][4][G] Isolid 24: hourglass stresses per direction and mode (local)
-  std::vector<double> w_hg;       // [G] Isolid 24: hourglass work, a part of e_int (diagnostic only)
+  GroupArray<double> frame{arena};  // [9][G]
+  GroupArray<double> hg_stress{
+      arena};                      // [3][4][G] Isolid 24: hourglass stresses per direction and mode (local)
+  GroupArray<double> w_hg{arena};  // [G] Isolid 24: hourglass work, a part of e_int (diagnostic only)
   // Laws of total strain (law 42, hex8_fb.cpp): the centre gradients B_k = dN_k/dX(0) of the initial geometry
   // (global axes), k = 1..4 (B_{5..8} = -B_{3,4,1,2}), [3 * k + d][G], from which the kernel forms the total
   // deformation gradient F = sum_k x_k (x) B_k. Empty for the other laws.
-  std::vector<double> b_ref;
+  GroupArray<double> b_ref{arena};
   // Law 70 (law70_foam_tab.cpp): the point state, kFoamVars rows [v][G]. Empty for the other laws.
-  std::vector<double> foam;
+  GroupArray<double> foam{arena};
   void allocate(int n);
   void allocate_points();  // the point arrays of a fully integrated group (n_points = 8)
   // b_ref of element i from its initial node coordinates x0[8][3].
@@ -187,27 +208,31 @@ inline void brick_global_stress(const BrickGroup& g, std::size_t i, double out[6
 // 4-node tetrahedra (/TETRA4, Itetra4 1000): one point, constant strain, no hourglass. The same state as a
 // brick less what only hourglass control and the small-strain switch need.
 struct TetraGroup {
+  // Where the arrays below live: the engine's arena (ExplicitEngine::group_arena_), or the heap by default.
+  std::pmr::memory_resource* arena = std::pmr::get_default_resource();
+  TetraGroup() = default;
+  explicit TetraGroup(std::pmr::memory_resource* r) : arena(r) {}
   int count = 0;
-  std::vector<std::int32_t> element;  // [G] index of each slot's element in the model's tetra block
+  GroupArray<std::int32_t> element{arena};  // [G] index of each slot's element in the model's tetra block
   std::int32_t part = -1;
   std::int32_t material = -1;
   double qa = 1.1, qb = 0.05;
-  std::vector<std::int32_t> conn;   // [4][G]
-  std::vector<double> vol0;         // [G] initial volume
-  std::vector<double> vol;          // [G] current volume
-  std::vector<double> rho;          // [G] current density rho0 V0 / V
-  std::vector<double> off;          // [G] 1 alive, 0 deleted
-  std::vector<double> sig;          // [6][G] xx yy zz xy yz zx, global axes
-  std::vector<double> eps_p;        // [G]
-  std::vector<double> dmg;          // [G] /FAIL/JOHNSON damage (0 .. 1)
-  std::vector<double> q;            // [G] bulk viscosity pressure of the last cycle
-  std::vector<double> e_int;        // [G] accumulated internal energy (includes bulk viscosity work)
-  std::vector<double> e_hg;         // [G] always 0 (no hourglass); summed with the other groups'
-  std::vector<double> w_plastic;    // [G]
-  std::vector<double> rate;         // [G] strain rate measure (Johnson-Cook)
-  std::vector<double> dt;           // [G] stable step, before the /DT scale
-  std::vector<double> k_nodal;      // [G] nodal stiffness contribution (1/2 rho V / dt_e^2)
-  std::vector<double> nodal_force;  // [4][3][G] force ADDED to each node, global axes
+  GroupArray<std::int32_t> conn{arena};   // [4][G]
+  GroupArray<double> vol0{arena};         // [G] initial volume
+  GroupArray<double> vol{arena};          // [G] current volume
+  GroupArray<double> rho{arena};          // [G] current density rho0 V0 / V
+  GroupArray<double> off{arena};          // [G] 1 alive, 0 deleted
+  GroupArray<double> sig{arena};          // [6][G] xx yy zz xy yz zx, global axes
+  GroupArray<double> eps_p{arena};        // [G]
+  GroupArray<double> dmg{arena};          // [G] /FAIL/JOHNSON damage (0 .. 1)
+  GroupArray<double> q{arena};            // [G] bulk viscosity pressure of the last cycle
+  GroupArray<double> e_int{arena};        // [G] accumulated internal energy (includes bulk viscosity work)
+  GroupArray<double> e_hg{arena};         // [G] always 0 (no hourglass); summed with the other groups'
+  GroupArray<double> w_plastic{arena};    // [G]
+  GroupArray<double> rate{arena};         // [G] strain rate measure (Johnson-Cook)
+  GroupArray<double> dt{arena};           // [G] stable step, before the /DT scale
+  GroupArray<double> k_nodal{arena};      // [G] nodal stiffness contribution (1/2 rho V / dt_e^2)
+  GroupArray<double> nodal_force{arena};  // [4][3][G] force ADDED to each node, global axes
   void allocate(int n);
 };
 

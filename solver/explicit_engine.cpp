@@ -110,7 +110,7 @@ void ExplicitEngine::build_nodes() {
   }
   // Masses are the starter's lumped masses (solver/model/masses.cpp); the engine adds the scalar
   // rotational inertias, which shells and TYPE8 springs carry.
-  nodes_.mass = m.node_mass;
+  nodes_.mass.assign(m.node_mass.begin(), m.node_mass.end());
   auto X = [&](std::int32_t n) { return model::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]}; };
   auto rho_of = [&](std::int32_t part) { return m.materials[m.parts[part].material].rho; };
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
@@ -185,7 +185,7 @@ void ExplicitEngine::build_groups() {
       int points = prop.n_ip;
       if (m.materials[mat].law != model::MaterialLaw::Elastic && points == 0) points = 3;  // LAW2 with N = 0
       if (m.materials[mat].law == model::MaterialLaw::Elastic && points > 1) points = 0;   // LAW1: resultant
-      ShellGroup g;
+      ShellGroup g(&group_arena_);
       std::size_t end = k;
       while (end < order.size() && b.part[order[end]] == part &&
              end - k < static_cast<std::size_t>(kGroupSize))
@@ -251,7 +251,7 @@ void ExplicitEngine::build_groups() {
   while (k < order.size()) {
     const auto part = m.bricks.part[order[k]];
     const auto& prop = m.properties[m.parts[part].property].solid;
-    BrickGroup g;
+    BrickGroup g(&group_arena_);
     std::size_t end = k;
     while (end < order.size() && m.bricks.part[order[end]] == part &&
            end - k < static_cast<std::size_t>(kGroupSize))
@@ -322,7 +322,7 @@ void ExplicitEngine::build_groups() {
   while (k < t_order.size()) {
     const auto part = m.tetras.part[t_order[k]];
     const auto& prop = m.properties[m.parts[part].property].solid;
-    TetraGroup g;
+    TetraGroup g(&group_arena_);
     std::size_t end = k;
     while (end < t_order.size() && m.tetras.part[t_order[end]] == part &&
            end - k < static_cast<std::size_t>(kGroupSize))
@@ -483,7 +483,7 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
   // element (frozen: the group's dt_fixed) each element is visited for the switch; otherwise only the
   // smallest step is looked for, and the element's user id (ids[element]) is read for it alone.
   auto vote_group = [&](const auto& g, double scale, const model::DtControl& fam, StepControl::Kind kind,
-                        const auto& ids, std::vector<double>* frozen_steps, bool switchable) {
+                        const auto& ids, double* frozen_steps, bool switchable) {
     const auto id_of = [&](std::size_t k) {
       return static_cast<std::int64_t>(ids[static_cast<std::size_t>(g.element[k])]);
     };
@@ -505,7 +505,7 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
     }
     for (std::size_t k = 0; k < n; ++k) {
       const double raw = g.dt[k];
-      double& frozen = (*frozen_steps)[k];
+      double& frozen = frozen_steps[k];
       double dt = scale * raw;
       if (frozen > 0) {
         // Without the small-strain kinematics the element's own stable step keeps falling; below half the
@@ -546,7 +546,7 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
     const double scale = fam.given ? fam.scale : controls_.global.scale;
     const auto kind = g.triangle ? StepControl::Kind::Shell3 : StepControl::Kind::Shell;
     const auto& ids = g.triangle ? model_.shells3.id : model_.shells.id;
-    vote_group(g, scale, fam, kind, ids, &g.dt_fixed, g.props.ismstr == 2);
+    vote_group(g, scale, fam, kind, ids, g.dt_fixed.data(), g.props.ismstr == 2);
     count_deleted_in(g);
     return;
   }
@@ -559,7 +559,7 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
       case BrickKernel::Heph: hex8_heph_forces(g, nodes_, mat, cyc); break;
       case BrickKernel::FullyIntegrated: hex8_full_forces(g, nodes_, mat, cyc); break;
     }
-    vote_group(g, solid_scale, controls_.brick, StepControl::Kind::Brick, model_.bricks.id, &g.dt_fixed,
+    vote_group(g, solid_scale, controls_.brick, StepControl::Kind::Brick, model_.bricks.id, g.dt_fixed.data(),
                g.ismstr == 2);
     count_deleted_in(g);
     return;

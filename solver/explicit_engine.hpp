@@ -24,12 +24,14 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <memory_resource>
 #include <string>
 #include <vector>
 
 #include "contact/type7_engine.hpp"
 #include "solver/accelerometer.hpp"
 #include "solver/element_groups.hpp"
+#include "solver/huge_page_allocator.hpp"
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
 #include "solver/node_state.hpp"
@@ -189,6 +191,11 @@ class ExplicitEngine {
   NodeState nodes_;
   std::vector<MaterialParams> materials_;
   std::vector<std::vector<TabCurve>> material_curves_;  // law 36: what materials_[i].curves points to
+  // The groups' arrays (GroupArray): a monotonic buffer over huge pages, its first buffer small enough for a
+  // small model, the next ones 1.5 x larger (libstdc++'s growth). Declared before the groups, which it must
+  // outlive; groups are built once, in the constructor, so nothing is freed into it during a run.
+  HugePageResource huge_pages_;
+  std::pmr::monotonic_buffer_resource group_arena_{std::size_t{64} << 10, &huge_pages_};
   std::vector<ShellGroup> shells_;
   std::vector<BrickGroup> bricks_;
   std::vector<TetraGroup> tetras_;
@@ -197,7 +204,7 @@ class ExplicitEngine {
   // Assembly: the element forces of every node summed in group order (group, element, node of the element),
   // [node][fx fy fz mx my mz]; filled by the element stage through element_sums_order_, read and cleared by
   // assemble_and_accelerate.
-  std::vector<double> element_sums_;
+  HugeVector<double> element_sums_;
   OrderedCommit element_sums_order_;
   SkewFrames skews_;                                // read by the loads, conditions and outputs below
   std::unique_ptr<KinematicsDriver> kinematics_;    // loads and kinematic conditions

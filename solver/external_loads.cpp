@@ -140,11 +140,11 @@ void ExternalLoads::remove_element(model::SegmentOwner type, std::int32_t elemen
 double ExternalLoads::apply(NodeState& s, double t, double dt1, std::span<const double> sensor_starts) {
   double work = 0;
   const auto& rigid = rigid_secondary_;
-  std::array<std::vector<double>*, 3> f = {&s.fx, &s.fy, &s.fz};
-  std::array<std::vector<double>*, 3> fext = {&s.fx_ext, &s.fy_ext, &s.fz_ext};
-  std::array<std::vector<double>*, 3> mom = {&s.mx, &s.my, &s.mz};
-  std::array<const std::vector<double>*, 3> v = {&s.vx, &s.vy, &s.vz};
-  std::array<const std::vector<double>*, 3> w = {&s.wx, &s.wy, &s.wz};
+  std::array<HugeVector<double>*, 3> f = {&s.fx, &s.fy, &s.fz};
+  std::array<HugeVector<double>*, 3> fext = {&s.fx_ext, &s.fy_ext, &s.fz_ext};
+  std::array<HugeVector<double>*, 3> mom = {&s.mx, &s.my, &s.mz};
+  std::array<const HugeVector<double>*, 3> v = {&s.vx, &s.vy, &s.vz};
+  std::array<const HugeVector<double>*, 3> w = {&s.wx, &s.wy, &s.wz};
 
   // Gravity: force m g, work 1/2 (g_old + g_new) m v dt1; a rigid body's secondary nodes are skipped.
   for (auto& g : gravity_) {

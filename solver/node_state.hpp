@@ -7,24 +7,26 @@
 #include <cstdint>
 #include <vector>
 
+#include "solver/huge_page_allocator.hpp"
+
 namespace radx::solver {
 
 struct NodeState {
   std::size_t n = 0;
-  std::vector<double> x, y, z;                 // current coordinates x^n
-  std::vector<double> x0, y0, z0;              // initial coordinates
-  std::vector<double> vx, vy, vz;              // v^{n-1/2}
-  std::vector<double> ax, ay, az;              // a^n
-  std::vector<double> fx, fy, fz;              // assembled force of the cycle
-  std::vector<double> wx, wy, wz;              // angular velocity (rotational dofs of shell nodes)
-  std::vector<double> mx, my, mz;              // assembled moment of the cycle
-  std::vector<double> awx, awy, awz;           // angular acceleration
-  std::vector<double> mass;                    // lumped mass, including added mass
-  std::vector<double> inertia;                 // scalar rotational inertia (0 for nodes of bricks only)
-  std::vector<double> added_mass;              // mass added by /DT/NODA/CST and /DT/INTER/CST
-  std::vector<double> stiffness;               // nodal stiffness estimate for the nodal time step
-  std::vector<std::uint8_t> fixed;             // bit k: dof k held by a boundary condition
-  std::vector<double> fx_ext, fy_ext, fz_ext;  // external part of the force (loads), for output and work
+  HugeVector<double> x, y, z;                 // current coordinates x^n
+  HugeVector<double> x0, y0, z0;              // initial coordinates
+  HugeVector<double> vx, vy, vz;              // v^{n-1/2}
+  HugeVector<double> ax, ay, az;              // a^n
+  HugeVector<double> fx, fy, fz;              // assembled force of the cycle
+  HugeVector<double> wx, wy, wz;              // angular velocity (rotational dofs of shell nodes)
+  HugeVector<double> mx, my, mz;              // assembled moment of the cycle
+  HugeVector<double> awx, awy, awz;           // angular acceleration
+  HugeVector<double> mass;                    // lumped mass, including added mass
+  HugeVector<double> inertia;                 // scalar rotational inertia (0 for nodes of bricks only)
+  HugeVector<double> added_mass;              // mass added by /DT/NODA/CST and /DT/INTER/CST
+  HugeVector<double> stiffness;               // nodal stiffness estimate for the nodal time step
+  HugeVector<std::uint8_t> fixed;             // bit k: dof k held by a boundary condition
+  HugeVector<double> fx_ext, fy_ext, fz_ext;  // external part of the force (loads), for output and work
 
   void resize(std::size_t count) {
     n = count;

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "solver/element_groups.hpp"
@@ -140,7 +141,7 @@ double shell_max_eps_p(const ShellGroup& g) {
   return m;
 }
 
-double max_abs(const std::vector<double>& v) {
+double max_abs(std::span<const double> v) {
   double m = 0;
   for (double x : v) m = std::max(m, std::abs(x));
   return m;
@@ -190,7 +191,7 @@ std::vector<SolidRec> drive_solid(Solid kind, const MaterialParams& mat, int cyc
     return ns;
   };
   auto gap = [](double d, double e) { return std::abs(d - e / kD1) / std::max(d, 1e-300); };
-  auto f_max = [](const std::vector<double>& f) {
+  auto f_max = [](std::span<const double> f) {
     double m = 0;
     for (std::size_t r = 0; r < f.size() / G; ++r) m = std::max(m, std::abs(f[r * G]));
     return m;

@@ -589,7 +589,7 @@ TEST_CASE("brick hourglass: a pure mode velocity on a free cube", "[brick]") {
         NodeState ns = make_nodes(cube(a));
         BrickGroup g = make_group({kCubeConn}, ns, mat.rho0);
         g.isolid = isolid;
-        std::vector<double>* vel[3] = {&ns.vx, &ns.vy, &ns.vz};
+        radx::solver::HugeVector<double>* vel[3] = {&ns.vx, &ns.vy, &ns.vz};
         for (std::size_t k = 0; k < 8; ++k) (*vel[d])[k] = u0 * kModes[j][k];
         CycleInfo cyc;
         cyc.dt1 = 1e-4;

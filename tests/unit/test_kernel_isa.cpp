@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <span>
 #include <vector>
 
 #include "kernel_test_util.hpp"
@@ -31,7 +32,7 @@ namespace {
 constexpr std::size_t G = kGroupSize;
 
 // Bitwise equality of two arrays (NaN payloads and the sign of zero included); counts the differing entries.
-std::size_t bit_differences(const std::vector<double>& a, const std::vector<double>& b) {
+std::size_t bit_differences(std::span<const double> a, std::span<const double> b) {
   if (a.size() != b.size()) return a.size() + b.size();
   std::size_t n = 0;
   for (std::size_t k = 0; k < a.size(); ++k) n += std::memcmp(&a[k], &b[k], sizeof(double)) != 0 ? 1 : 0;

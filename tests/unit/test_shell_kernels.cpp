@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "kernel_test_util.hpp"
@@ -676,7 +677,7 @@ TEST_CASE("Shell energy: accumulated internal energy equals the work of the noda
     }
     return w;
   };
-  auto total = [](const std::vector<double>& v, int n) {
+  auto total = [](std::span<const double> v, int n) {
     double x = 0;
     for (int e = 0; e < n; ++e) x += v[static_cast<std::size_t>(e)];
     return x;

@@ -138,7 +138,7 @@ TEST_CASE("a team's threads commit every item in item order, one committer at a 
 namespace {
 
 struct RunOutcome {
-  std::vector<double> x, y, z, vx, vy, vz;
+  radx::solver::HugeVector<double> x, y, z, vx, vy, vz;
   radx::solver::EnergyBalance energy;
   std::int64_t cycles = 0;
 };
