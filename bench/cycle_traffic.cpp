@@ -255,11 +255,7 @@ int main(int argc, char** argv) {
     L.add("node: accelerations", "ax ay az awx awy awz", Mode::Write, 6 * d * nn);
   }
   // The time-step vote runs in the element pass right after each group's forces: dt and dt_fixed are still in
-  // cache there (not counted); the element's user id is a read from the model.
-  double elements_dt = 0;
-  for (const auto& g : engine.shell_groups()) elements_dt += g.count;
-  for (const auto& g : engine.brick_groups()) elements_dt += g.count;
-  L.add("element time step", "element index int32 + user id int64", Mode::Read, 12 * elements_dt);
+  // cache there, and the model's user id is read for the controlling element alone (not counted).
   L.add("node: integration", "ax ay az awx awy awz", Mode::Read, 6 * d * nn);
   L.add("node: integration", "vx vy vz wx wy wz", Mode::ReadWrite, 2 * 6 * d * nn);
   L.add("node: integration", "x y z", Mode::ReadWrite, 2 * 3 * d * nn);
@@ -279,12 +275,11 @@ int main(int argc, char** argv) {
   const double total = L.total();
   const double shell_b = L.total("shell elements"), brick_b = L.total("brick elements");
   const double gather = L.total("element gather"), node_b = L.total("node:"),
-               dt_b = L.total("element time step"), sums_b = L.total("element sums");
+               sums_b = L.total("element sums");
   std::printf(
       "\nper element-cycle: shell state %.0f B, brick state %.0f B, node gather %.0f B, element sums %.0f B, "
-      "node passes %.0f B, time step %.0f B\n",
-      shell_b / elements, brick_b / elements, gather / elements, sums_b / elements, node_b / elements,
-      dt_b / elements);
+      "node passes %.0f B\n",
+      shell_b / elements, brick_b / elements, gather / elements, sums_b / elements, node_b / elements);
   std::printf("bytes per element-cycle: %.0f (%.1f MB per cycle)\n", total / elements, total * 1e-6);
   std::printf("upper bound with a gather that reuses nothing (each element reads its own nodes): %.0f\n",
               (total - gather + gather_no_reuse) / elements);

@@ -23,6 +23,9 @@ class ChunkBody {
       ChunkBody(F& f)  // NOLINT(google-explicit-constructor): a view, built where the body is passed
       : ctx_(const_cast<void*>(static_cast<const void*>(&f))),
         fn_([](void* p, std::int64_t c) { (*static_cast<F*>(p))(c); }) {}
+  // A const temporary would bind to F& (F = const X) and leave a view that outlives it.
+  template <class F>
+  ChunkBody(const F&&) = delete;
   void operator()(std::int64_t c) const { fn_(ctx_, c); }
 
  private:

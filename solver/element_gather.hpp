@@ -1,7 +1,8 @@
 // The one gather and scatter path of the element families. Every element kernel reads its nodes' state
 // through these functions and writes its nodal forces through store_nodal_forces, so the node ordering of a
 // group (`conn` rows [node k][element i], k * kGroupSize + i) and of its force buffer ([node][component][i])
-// is written once. The engine's assembly then sums the force buffers node by node in a fixed order.
+// is written once. The engine then adds the force buffers to the nodes' sums group by group, in a fixed
+// order.
 //
 // Two shapes of gather:
 //   gather_element: one element into local [N][3] arrays (bricks, tetrahedra: kernels that run one element

@@ -1,8 +1,8 @@
 // Element groups: up to kGroupSize elements of one type, material and property, structure of arrays
 // with the element index innermost (array[k * kGroupSize + i]). The unit of vectorisation and of
 // threading. Kernels gather nodal values through `conn`, compute, and write their nodal forces into
-// the group's own `nodal_force` buffer; the assembly then sums those buffers node by node in a fixed
-// order, so results do not depend on the number of threads.
+// the group's own `nodal_force` buffer; the engine then adds each buffer to the nodes' sums group by group in
+// a fixed order (solver/ordered_commit.hpp), so results do not depend on the number of threads.
 #pragma once
 
 #include <array>

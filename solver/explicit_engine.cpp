@@ -5,6 +5,7 @@
 #include "solver/explicit_engine.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -467,6 +468,7 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
       },
       groups >= kMinParallelGroups);
   element_sums_order_.drain(add);
+  assert(element_sums_order_.committed() == groups);  // every group's forces are in the sums
 }
 
 void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& cyc) {
@@ -477,11 +479,10 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
   // kinematics (a documented difference). Without /DT/<family>/CST the step is the element's.
   // Radioss switches only the elements whose Ismstr allows it (2; 12 for bricks): the others keep their own
   // step under /DT/<family>/CST.
-  // The element's user id (ids[element]) is read only where it is reported: a read per element would be a
-  // second stream through the model beside the group's own arrays.
   // A group's vote: the first element with the smallest scaled step. Under /DT/<family>/CST with a switchable
   // element (frozen: the group's dt_fixed) each element is visited for the switch; otherwise only the
-  // smallest step is looked for, and the element's user id (ids[element]) is read for it alone.
+  // smallest step is looked for, and the element's user id (ids[element]) is read for it alone (a read per
+  // element would be a second stream through the model beside the group's own arrays).
   auto vote_group = [&](const auto& g, double scale, const model::DtControl& fam, StepControl::Kind kind,
                         const auto& ids, double* frozen_steps, bool switchable) {
     const auto id_of = [&](std::size_t k) {

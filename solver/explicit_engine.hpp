@@ -5,8 +5,9 @@
 //   1. external loads at t_n (gravity, concentrated loads, pressures);
 //   2. contact (TYPE7 penalty, contact/type7_engine.hpp): forces at t_n into the contact buffer, time-step
 //   vote;
-//   3. element groups: gather, strain rate, material update, internal forces, element time step;
-//   4. deterministic assembly of element and contact forces, node by node in a fixed order;
+//   3. element groups: gather, strain rate, material update, internal forces, element time step; each
+//   group's nodal forces added to the nodes' sums in group order (solver/ordered_commit.hpp);
+//   4. deterministic assembly f = f_ext + those sums node by node, then the contact forces;
 //   4b. /INTER/TYPE2 ties: the secondary nodes' forces and moments onto their main segments
 //   (solver/tied_type2.hpp; their masses were moved there at t = 0);
 //   5. accelerations a = f / m (rotations: moment / scalar inertia);
@@ -209,6 +210,7 @@ class ExplicitEngine {
   SkewFrames skews_;                                // read by the loads, conditions and outputs below
   std::unique_ptr<KinematicsDriver> kinematics_;    // loads and kinematic conditions
   std::unique_ptr<Accelerometers> accelerometers_;  // /ACCEL, read every cycle after the conditions
+  std::unique_ptr<ThreadTeam> team_;  // before contact_, whose ParallelFor calls it: destroyed after it
   std::unique_ptr<contact::Type7Contact> contact_;
   std::int64_t deleted_elements_ = 0;  // elements with off == 0, to tell contact (Idel) when it changes
   // The time loop's state between stages (run() lists the stages).
@@ -239,7 +241,6 @@ class ExplicitEngine {
       held_;  // nodes moved by /IMPVEL, rigid bodies or rigid walls (LAGDT stays penalty)
   std::int64_t count_deleted() const;
   std::vector<GroupVote> group_votes_;  // filled by the element stage, combined by element_time_step
-  std::unique_ptr<ThreadTeam> team_;
   bool loads_zeroed_ = false;
   // The assembly pass also computes a = f / m when nothing changes f or m between it and step 5: no TYPE2
   // ties, no /DT/NODA (it may add mass), no /DT/INTER/CST added mass; contact then updates a where it adds.

@@ -31,7 +31,8 @@ inline constexpr std::size_t kHugePageMinBytes = 2 * kHugePageBytes;
 inline void* map_huge_pages(std::size_t bytes) noexcept {
   const std::size_t page = 4096;
   const std::size_t len = (bytes + page - 1) / page * page;
-  void* raw = ::mmap(nullptr, len + kHugePageBytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  void* raw =
+      ::mmap(nullptr, len + kHugePageBytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (raw == MAP_FAILED) return nullptr;
   const auto start = reinterpret_cast<std::uintptr_t>(raw);
   const auto aligned = (start + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
@@ -82,14 +83,15 @@ struct HugePageAllocator {
 class HugePageResource final : public std::pmr::memory_resource {
  private:
   void* do_allocate(std::size_t bytes, std::size_t align) override {
-    if (bytes < kHugePageMinBytes || align > kHugePageBytes) return ::operator new(bytes, std::align_val_t{align});
+    if (bytes < kHugePageMinBytes || align > kHugePageBytes)
+      return ::operator new (bytes, std::align_val_t{align});
     void* p = map_huge_pages(bytes);
     if (p == nullptr) throw std::bad_alloc();
     return p;
   }
   void do_deallocate(void* p, std::size_t bytes, std::size_t align) override {
     if (bytes < kHugePageMinBytes || align > kHugePageBytes)
-      ::operator delete(p, std::align_val_t{align});
+      ::operator delete (p, std::align_val_t{align});
     else
       unmap_huge_pages(p, bytes);
   }

@@ -17,6 +17,7 @@
 // chunk body (and so every commit started inside one) has returned.
 #pragma once
 #include <atomic>
+#include <cassert>
 #include <cstdint>
 #include <memory>
 
@@ -33,6 +34,7 @@ class OrderedCommit {
 
   // Before a stage: nothing done, nothing committed.
   void reset() {
+    assert(!busy_.load());  // a commit left unfinished (it threw) would drop the next stages' items
     for (std::int64_t k = 0; k < items_; ++k)
       done_[static_cast<std::size_t>(k)].store(0, std::memory_order_relaxed);
     next_.store(0, std::memory_order_relaxed);

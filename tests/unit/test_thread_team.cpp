@@ -114,7 +114,7 @@ TEST_CASE("a team's threads commit every item in item order, one committer at a 
     order.assign(kItems);
     std::vector<std::int64_t> committed;
     std::atomic<int> inside{0};
-    bool overlapped = false;
+    std::atomic<bool> overlapped{false};
     const auto commit = [&](std::int64_t k) {
       if (inside.fetch_add(1) != 0) overlapped = true;
       committed.push_back(k);
@@ -131,7 +131,7 @@ TEST_CASE("a team's threads commit every item in item order, one committer at a 
       REQUIRE(committed.size() == static_cast<std::size_t>(kItems));
       for (std::int64_t k = 0; k < kItems; ++k) REQUIRE(committed[static_cast<std::size_t>(k)] == k);
     }
-    CHECK_FALSE(overlapped);
+    CHECK_FALSE(overlapped.load());
   }
 }
 
