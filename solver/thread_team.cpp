@@ -41,6 +41,7 @@ T wait_while_equal(const std::atomic<T>& value, T old) {
 ThreadTeam::ThreadTeam(int threads) {
   const auto workers = static_cast<std::size_t>(threads > 1 ? threads - 1 : 0);
   state_ = std::make_unique<WorkerState[]>(workers);
+  lanes_ = std::make_unique<Lane[]>(workers + 1);
   workers_.reserve(workers);
   for (std::size_t i = 0; i < workers; ++i) workers_.emplace_back([this, i] { worker_loop(i); });
 }
@@ -69,26 +70,45 @@ int ThreadTeam::default_threads() {
   return hw >= 1 ? static_cast<int>(hw) : 1;
 }
 
-std::int64_t ThreadTeam::take_chunks() {
-  for (std::int64_t ran = 0;; ++ran) {
-    const std::int64_t c = next_chunk_.fetch_add(1, std::memory_order_relaxed);
-    if (c >= chunks_) return ran;
-    fn_(ctx_, c);
-  }
+ThreadTeam::Share ThreadTeam::share(std::int64_t chunks, std::int64_t lanes, std::int64_t lane,
+                                    Spread spread) {
+  if (spread == Spread::Interleaved)
+    return Share{lane, lanes, lane < chunks ? (chunks - lane + lanes - 1) / lanes : 0};
+  const std::int64_t first = chunks * lane / lanes;
+  return Share{first, 1, chunks * (lane + 1) / lanes - first};
 }
 
-void ThreadTeam::post(std::int64_t chunks, ChunkFn fn, void* ctx) {
+std::int64_t ThreadTeam::take_chunks(std::size_t lane) {
+  const std::size_t lanes = workers_.size() + 1;
+  std::int64_t ran = 0;
+  for (std::size_t k = 0; k < lanes; ++k) {
+    Lane& l = lanes_[(lane + k) % lanes];
+    while (true) {
+      const std::int64_t i = l.next.fetch_add(1, std::memory_order_relaxed);
+      if (i >= l.share.count) break;
+      fn_(ctx_, l.share.first + i * l.share.stride);
+      ++ran;
+    }
+  }
+  return ran;
+}
+
+void ThreadTeam::post(std::int64_t chunks, ChunkFn fn, void* ctx, Spread spread) {
   fn_ = fn;
   ctx_ = ctx;
-  chunks_ = chunks;
-  next_chunk_.store(0, std::memory_order_relaxed);
   const std::size_t workers = workers_.size();
+  const auto lanes = static_cast<std::int64_t>(workers + 1);
+  for (std::int64_t k = 0; k < lanes; ++k) {
+    Lane& l = lanes_[static_cast<std::size_t>(k)];
+    l.share = share(chunks, lanes, k, spread);
+    l.next.store(0, std::memory_order_relaxed);
+  }
   for (std::size_t i = 0; i < workers; ++i) state_[i].v.store(kPosted, std::memory_order_release);
   generation_.fetch_add(1, std::memory_order_release);
   generation_.notify_all();
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
-  const std::int64_t mine = take_chunks();
+  const std::int64_t mine = take_chunks(0);
   const auto t1 = clock::now();
   // Every chunk is taken. A worker still at kPosted has not read the stage: withdraw it. The others hold
   // or held a chunk: wait for their kDone, which releases their chunks' writes to this thread.
@@ -119,7 +139,7 @@ void ThreadTeam::worker_loop(std::size_t index) {
     // generation it woke for, or none: withdrawn).
     int posted = kPosted;
     if (!state.compare_exchange_strong(posted, kRunning, std::memory_order_acq_rel)) continue;
-    take_chunks();
+    take_chunks(index + 1);
     state.store(kDone, std::memory_order_release);
     state.notify_one();
   }

@@ -38,18 +38,58 @@ TEST_CASE("chunks cover the items once, with boundaries that depend only on the 
   }
 }
 
+TEST_CASE("the threads' lanes partition a stage: blocks in order, or every T-th chunk", "[threads]") {
+  // Each thread takes its lane first, so a lane must hold each chunk once, and the lane a chunk lands in
+  // must depend only on the chunk, the chunk count and the thread count (a chunk then runs on the same thread
+  // every time the stage is posted, where its data already is).
+  for (const std::int64_t lanes : {1, 2, 3, 5})
+    for (const std::int64_t chunks : {0, 1, 2, 3, 4, 7, 64, 339}) {
+      std::vector<int> lane_of(static_cast<std::size_t>(chunks), -1);
+      for (const auto spread : {ThreadTeam::Spread::Blocks, ThreadTeam::Spread::Interleaved}) {
+        std::fill(lane_of.begin(), lane_of.end(), -1);
+        std::int64_t last_block_end = 0;
+        for (std::int64_t k = 0; k < lanes; ++k) {
+          const auto s = ThreadTeam::share(chunks, lanes, k, spread);
+          REQUIRE(s.count >= 0);
+          // Shares differ by at most one chunk: an equal split.
+          CHECK(s.count >= chunks / lanes);
+          CHECK(s.count <= chunks / lanes + 1);
+          if (spread == ThreadTeam::Spread::Blocks && s.count > 0) {
+            CHECK(s.stride == 1);
+            CHECK(s.first == last_block_end);  // lane k's run follows lane k - 1's
+            last_block_end = s.first + s.count;
+          }
+          for (std::int64_t i = 0; i < s.count; ++i) {
+            const std::int64_t c = s.first + i * s.stride;
+            REQUIRE(c >= 0);
+            REQUIRE(c < chunks);
+            REQUIRE(lane_of[static_cast<std::size_t>(c)] == -1);
+            lane_of[static_cast<std::size_t>(c)] = static_cast<int>(k);
+          }
+        }
+        for (std::int64_t c = 0; c < chunks; ++c) {
+          REQUIRE(lane_of[static_cast<std::size_t>(c)] >= 0);
+          if (spread == ThreadTeam::Spread::Interleaved)
+            CHECK(lane_of[static_cast<std::size_t>(c)] == c % lanes);
+        }
+      }
+    }
+}
+
 TEST_CASE("a team runs every chunk of every stage exactly once", "[threads]") {
   // Many short stages back to back exercise the hand-over between stages (a worker that misses a stage or
   // runs a chunk twice would show as a count other than 1).
   for (const int threads : {1, 2, 3, 8}) {
     ThreadTeam team(threads);
     CHECK(team.size() == threads);
-    for (const std::int64_t chunks : {1, 2, 7, 64, 1000}) {
-      std::vector<std::atomic<int>> runs(static_cast<std::size_t>(chunks));
-      for (int stage = 0; stage < 200; ++stage)
-        team.run(chunks, [&](std::int64_t c) { ++runs[static_cast<std::size_t>(c)]; });
-      for (const auto& r : runs) REQUIRE(r.load() == 200);
-    }
+    for (const auto spread : {ThreadTeam::Spread::Blocks, ThreadTeam::Spread::Interleaved})
+      for (const std::int64_t chunks : {1, 2, 7, 64, 1000}) {
+        std::vector<std::atomic<int>> runs(static_cast<std::size_t>(chunks));
+        for (int stage = 0; stage < 200; ++stage)
+          team.run(
+              chunks, [&](std::int64_t c) { ++runs[static_cast<std::size_t>(c)]; }, true, spread);
+        for (const auto& r : runs) REQUIRE(r.load() == 200);
+      }
     // Sequential fallback: in chunk order on the calling thread.
     std::vector<std::int64_t> order;
     team.run(
