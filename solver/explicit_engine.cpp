@@ -25,7 +25,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Node stages run in chunks of this many nodes (about 0.1 ms of work each): chunk boundaries never depend
-// on the thread count, and a model of fewer than two chunks' nodes runs them on one thread.
+// on the thread count, and a model of fewer than two chunks' nodes runs them on one thread. The chunks are
+// also the regions of the element sums' ordered commit.
 constexpr std::int64_t kNodeChunk = 2048;
 // Below this many groups (of kGroupSize elements) the element stage runs on one thread: waking another
 // costs about what a few groups' forces do.
@@ -58,7 +59,7 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
   build_nodes();
   build_groups();
   element_sums_.assign(6 * nodes_.n, 0.0);
-  element_sums_order_.assign(group_count());
+  build_sum_regions();
   group_votes_.resize(static_cast<std::size_t>(group_count()));
   team_ =
       std::make_unique<ThreadTeam>(options_.threads > 0 ? options_.threads : ThreadTeam::default_threads());
@@ -419,49 +420,99 @@ inline void add_entry(double* sum, const double* f) {
   if constexpr (C % 2 == 1) sum[C - 1] += f[(C - 1) * G];
 }
 
-// Adds group `flat`'s nodal-force buffer to the nodes' element sums, element by element and node by node of
-// the element: called for the groups in order (shells, bricks, tetras, springs), so each node's sum is made
-// in one fixed order. A degenerate quad (n3 == n4) still has four slots; each carries its share.
-void ExplicitEngine::add_group_forces(std::int64_t flat) {
-  double* sums = element_sums_.data();
-  const auto add = [sums](const auto& g, int nodes_per_element, auto components) {
-    constexpr std::size_t C = decltype(components)::value;
-    constexpr std::size_t G = kGroupSize;
-    const double* nf = g.nodal_force.data();
-    for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
-      for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q)
-        add_entry<C, G>(sums + 6 * static_cast<std::size_t>(g.conn[q * G + i]), nf + q * C * G + i);
-  };
+// Calls f(group, nodes per element, components) for the group of flat index `flat` (shells, bricks, tetras,
+// springs), components an integral_constant: 6 for a buffer of forces and moments, 3 for forces alone.
+template <class F>
+void ExplicitEngine::visit_group_sums(std::int64_t flat, F&& f) const {
   using Forces = std::integral_constant<std::size_t, 3>;
   using ForcesAndMoments = std::integral_constant<std::size_t, 6>;
   const auto ns = static_cast<std::int64_t>(shells_.size()), nb = static_cast<std::int64_t>(bricks_.size());
   const auto nt = static_cast<std::int64_t>(tetras_.size());
   if (flat < ns) {
     const auto& g = shells_[static_cast<std::size_t>(flat)];
-    add(g, g.triangle ? 3 : 4, ForcesAndMoments{});
+    f(g, g.triangle ? 3 : 4, ForcesAndMoments{});
   } else if (flat < ns + nb) {
-    add(bricks_[static_cast<std::size_t>(flat - ns)], 8, Forces{});
+    f(bricks_[static_cast<std::size_t>(flat - ns)], 8, Forces{});
   } else if (flat < ns + nb + nt) {
-    add(tetras_[static_cast<std::size_t>(flat - ns - nb)], 4, Forces{});
+    f(tetras_[static_cast<std::size_t>(flat - ns - nb)], 4, Forces{});
   } else {
     const auto& g = springs_[static_cast<std::size_t>(flat - ns - nb - nt)];
     if (g.node_stride() == 6)  // TYPE8 and TYPE13 carry moments too
-      add(g, 2, ForcesAndMoments{});
+      f(g, 2, ForcesAndMoments{});
     else
-      add(g, 2, Forces{});
+      f(g, 2, Forces{});
   }
 }
 
+// The regions (node chunks) each group writes into, and for a group writing into several its entries region
+// by region, each region's in the group's own order (element, node of the element).
+void ExplicitEngine::build_sum_regions() {
+  const std::int64_t groups = group_count();
+  const auto regions = static_cast<std::int32_t>(node_chunks().count());
+  std::vector<std::vector<std::int32_t>> group_regions(static_cast<std::size_t>(groups));
+  sum_part_begin_.assign(static_cast<std::size_t>(groups) + 1, 0);
+  sum_entries_begin_.assign(1, 0);
+  sum_entries_.clear();
+  for (std::int64_t flat = 0; flat < groups; ++flat)
+    visit_group_sums(flat, [&](const auto& g, int nodes_per_element, auto) {
+      const auto region_of = [&](std::size_t i, std::size_t q) {
+        return static_cast<std::int32_t>(g.conn[q * kGroupSize + i] / kNodeChunk);
+      };
+      auto& rs = group_regions[static_cast<std::size_t>(flat)];
+      for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
+        for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q)
+          rs.push_back(region_of(i, q));
+      std::sort(rs.begin(), rs.end());
+      rs.erase(std::unique(rs.begin(), rs.end()), rs.end());
+      for (const std::int32_t r : rs) {
+        if (rs.size() > 1)
+          for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
+            for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q)
+              if (region_of(i, q) == r) sum_entries_.push_back(static_cast<std::uint16_t>(8 * i + q));
+        sum_entries_begin_.push_back(static_cast<std::int64_t>(sum_entries_.size()));
+      }
+      sum_part_begin_[static_cast<std::size_t>(flat) + 1] =
+          sum_part_begin_[static_cast<std::size_t>(flat)] + static_cast<std::int64_t>(rs.size());
+    });
+  element_sums_order_.assign(group_regions, regions);
+}
+
+// Adds group `flat`'s nodal-force buffer to the nodes' element sums of its region regions_of(flat)[slot],
+// element by element and node by node of the element: called for each region's groups in group order
+// (shells, bricks, tetras, springs), so each node's sum is made in one fixed order. A degenerate quad
+// (n3 == n4) still has four slots; each carries its share.
+void ExplicitEngine::add_group_forces(std::int64_t flat, std::int32_t slot) {
+  double* sums = element_sums_.data();
+  const auto part = static_cast<std::size_t>(sum_part_begin_[static_cast<std::size_t>(flat)] + slot);
+  const std::uint16_t* code = sum_entries_.data() + sum_entries_begin_[part];
+  const std::uint16_t* code_end = sum_entries_.data() + sum_entries_begin_[part + 1];
+  visit_group_sums(flat, [&](const auto& g, int nodes_per_element, auto components) {
+    constexpr std::size_t C = decltype(components)::value;
+    constexpr std::size_t G = kGroupSize;
+    const double* nf = g.nodal_force.data();
+    const auto add = [&](std::size_t i, std::size_t q) {
+      add_entry<C, G>(sums + 6 * static_cast<std::size_t>(g.conn[q * G + i]), nf + q * C * G + i);
+    };
+    if (code == code_end) {  // the group writes into this region only: every entry
+      for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
+        for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q) add(i, q);
+    } else {
+      for (; code != code_end; ++code) add(*code >> 3, *code & 7u);
+    }
+  });
+}
+
 // 3. The element stage: each group's forces, then, while its state is in cache, its time-step vote and
-// its deleted elements. One chunk is one group. Groups are dealt to the threads in turn (thread k of T runs
-// groups k, k + T, ... first), so a group runs on the same core every cycle and its state stays in that
-// core's cache (9 % off the 2-thread impact benchmark against taking any free group); dealing them in blocks
-// would stall the ordered sums below on the first thread's block.
-// Each group's forces are added to the nodes' sums as soon as every group before it is (OrderedCommit), by
-// whichever thread is there: while they are still in cache, and on two threads beside the other's groups.
+// its deleted elements. One chunk is one group. Each thread runs its own block of groups first (thread k of
+// T: the k-th T-th of them), so a group runs on the same core every cycle and so do, mostly, the nodes it
+// writes, which the node passes deal out in blocks too: its state and its nodes stay in that core's cache.
+// Each group's forces are added to the nodes' sums as soon as every earlier group writing into the same
+// node chunk is (OrderedCommit, regions = node chunks), by whichever thread is there: while they are still
+// in cache, and each thread for its own block of nodes, beside the other's work; only the node chunks two
+// blocks share wait for both.
 void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
   const std::int64_t groups = group_count();
-  const auto add = [this](std::int64_t flat) { add_group_forces(flat); };
+  const auto add = [this](std::int64_t flat, std::int32_t slot) { add_group_forces(flat, slot); };
   element_sums_order_.reset();
   team_->run(
       groups,
@@ -469,9 +520,9 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
         group_forces_and_vote(flat, cyc);
         element_sums_order_.finished(flat, add);
       },
-      groups >= kMinParallelGroups, ThreadTeam::Spread::Interleaved);
+      groups >= kMinParallelGroups, ThreadTeam::Spread::Blocks);
   element_sums_order_.drain(add);
-  assert(element_sums_order_.committed() == groups);  // every group's forces are in the sums
+  assert(element_sums_order_.committed() == element_sums_order_.parts());  // every group's forces are in
 }
 
 void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& cyc) {

@@ -174,7 +174,10 @@ class ExplicitEngine {
   }
   void compute_element_forces(const CycleInfo& cyc);
   void group_forces_and_vote(std::int64_t flat, const CycleInfo& cyc);
-  void add_group_forces(std::int64_t flat);
+  void add_group_forces(std::int64_t flat, std::int32_t slot);
+  void build_sum_regions();
+  template <class F>
+  void visit_group_sums(std::int64_t flat, F&& f) const;
   [[nodiscard]] Chunks node_chunks() const;
   template <class Body>
   void node_pass(Body&& body);
@@ -206,7 +209,13 @@ class ExplicitEngine {
   // [node][fx fy fz mx my mz]; filled by the element stage through element_sums_order_, read and cleared by
   // assemble_and_accelerate.
   HugeVector<double> element_sums_;
+  // Regions are the node chunks; a group's part in a region is its entries (element i, node q of the
+  // element) whose node lies there, listed as codes 8 i + q in sum_entries_ when the group writes into more
+  // than one region (a group within one region adds all its entries, unlisted).
   OrderedCommit element_sums_order_;
+  std::vector<std::int64_t> sum_part_begin_;     // [groups + 1]: group k's parts, one per region it writes
+  std::vector<std::int64_t> sum_entries_begin_;  // [parts + 1]: each part's codes in sum_entries_
+  std::vector<std::uint16_t> sum_entries_;
   SkewFrames skews_;                                // read by the loads, conditions and outputs below
   std::unique_ptr<KinematicsDriver> kinematics_;    // loads and kinematic conditions
   std::unique_ptr<Accelerometers> accelerometers_;  // /ACCEL, read every cycle after the conditions

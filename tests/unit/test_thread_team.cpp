@@ -124,7 +124,7 @@ TEST_CASE("items finished in any order are committed once each, in item order", 
   OrderedCommit order;
   order.assign(6);
   std::vector<std::int64_t> committed;
-  const auto commit = [&](std::int64_t k) { committed.push_back(k); };
+  const auto commit = [&](std::int64_t k, std::int32_t) { committed.push_back(k); };
   for (std::int64_t k = 5; k >= 1; --k) {
     order.finished(k, commit);
     CHECK(committed.empty());
@@ -144,6 +144,31 @@ TEST_CASE("items finished in any order are committed once each, in item order", 
   CHECK(committed == std::vector<std::int64_t>{0, 1, 2, 3});
 }
 
+TEST_CASE("items writing into different regions are committed independently, each region in item order",
+          "[threads]") {
+  // Items 0 and 1 write into region 0, item 2 into regions 0 and 1, item 3 into region 1 alone.
+  OrderedCommit order;
+  order.assign({{0}, {0}, {0, 1}, {1}}, 2);
+  CHECK(order.parts() == 5);
+  CHECK(order.regions_of(2).size() == 2);
+  std::vector<std::pair<std::int64_t, std::int32_t>> committed;  // (item, region)
+  const auto commit = [&](std::int64_t k, std::int32_t slot) {
+    committed.emplace_back(k, order.regions_of(k)[static_cast<std::size_t>(slot)]);
+  };
+  // Item 3 waits for item 2, the only earlier item in region 1.
+  order.finished(3, commit);
+  CHECK(committed.empty());
+  // Item 2 commits into region 1 at once (then item 3 follows), but not into region 0 before items 0, 1.
+  order.finished(2, commit);
+  using P = std::pair<std::int64_t, std::int32_t>;
+  CHECK(committed == std::vector<P>{{2, 1}, {3, 1}});
+  order.finished(1, commit);
+  CHECK(committed.size() == 2);
+  order.finished(0, commit);
+  CHECK(committed == std::vector<P>{{2, 1}, {3, 1}, {0, 0}, {1, 0}, {2, 0}});
+  CHECK(order.committed() == order.parts());
+}
+
 TEST_CASE("a team's threads commit every item in item order, one committer at a time", "[threads]") {
   // Items of uneven length (some sleep) make the threads finish out of order and race for the commit; the
   // commit itself checks that no other commit runs beside it. drain() after the stage must find the rest.
@@ -155,7 +180,7 @@ TEST_CASE("a team's threads commit every item in item order, one committer at a 
     std::vector<std::int64_t> committed;
     std::atomic<int> inside{0};
     std::atomic<bool> overlapped{false};
-    const auto commit = [&](std::int64_t k) {
+    const auto commit = [&](std::int64_t k, std::int32_t) {
       if (inside.fetch_add(1) != 0) overlapped = true;
       committed.push_back(k);
       inside.fetch_sub(1);
@@ -170,6 +195,57 @@ TEST_CASE("a team's threads commit every item in item order, one committer at a 
       order.drain(commit);
       REQUIRE(committed.size() == static_cast<std::size_t>(kItems));
       for (std::int64_t k = 0; k < kItems; ++k) REQUIRE(committed[static_cast<std::size_t>(k)] == k);
+    }
+    CHECK_FALSE(overlapped.load());
+  }
+}
+
+TEST_CASE("a team's threads commit every region's items in item order, one committer per region at a time",
+          "[threads]") {
+  // 400 items over 7 regions, like element groups over node chunks: item k writes into region k / 60 and,
+  // every fifth item, into the next one too. Each region's commits must come in item order, none
+  // overlapping another of the same region; the threads run blocks of items (Spread::Blocks), as the
+  // element stage does, so whole regions are committed by the thread whose block they lie in.
+  constexpr std::int64_t kItems = 400;
+  constexpr std::int32_t kRegions = 7;
+  std::vector<std::vector<std::int32_t>> regions(kItems);
+  for (std::int64_t k = 0; k < kItems; ++k) {
+    const auto r = static_cast<std::int32_t>(k / 60);
+    regions[static_cast<std::size_t>(k)].push_back(r);
+    if (k % 5 == 0 && r + 1 < kRegions) regions[static_cast<std::size_t>(k)].push_back(r + 1);
+  }
+  for (const int threads : {2, 3}) {
+    ThreadTeam team(threads);
+    OrderedCommit order;
+    order.assign(regions, kRegions);
+    std::vector<std::vector<std::int64_t>> committed(kRegions);
+    std::vector<std::atomic<int>> inside(kRegions);
+    std::atomic<bool> overlapped{false};
+    const auto commit = [&](std::int64_t k, std::int32_t slot) {
+      const auto r = static_cast<std::size_t>(order.regions_of(k)[static_cast<std::size_t>(slot)]);
+      if (inside[r].fetch_add(1) != 0) overlapped = true;
+      committed[r].push_back(k);
+      inside[r].fetch_sub(1);
+    };
+    for (int stage = 0; stage < 20; ++stage) {
+      order.reset();
+      for (auto& c : committed) c.clear();
+      team.run(
+          kItems,
+          [&](std::int64_t k) {
+            if ((k * 7 + stage) % 13 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+            order.finished(k, commit);
+          },
+          true, ThreadTeam::Spread::Blocks);
+      order.drain(commit);
+      REQUIRE(order.committed() == order.parts());
+      for (std::int32_t r = 0; r < kRegions; ++r) {
+        std::vector<std::int64_t> expect;
+        for (std::int64_t k = 0; k < kItems; ++k)
+          for (const auto rr : regions[static_cast<std::size_t>(k)])
+            if (rr == r) expect.push_back(k);
+        REQUIRE(committed[static_cast<std::size_t>(r)] == expect);
+      }
     }
     CHECK_FALSE(overlapped.load());
   }
