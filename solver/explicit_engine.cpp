@@ -520,7 +520,7 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
         group_forces_and_vote(flat, cyc);
         element_sums_order_.finished(flat, add);
       },
-      groups >= kMinParallelGroups, ThreadTeam::Spread::Blocks);
+      groups >= kMinParallelGroups);
   element_sums_order_.drain(add);
   assert(element_sums_order_.committed() == element_sums_order_.parts());  // every group's forces are in
 }

@@ -70,12 +70,9 @@ int ThreadTeam::default_threads() {
   return hw >= 1 ? static_cast<int>(hw) : 1;
 }
 
-ThreadTeam::Share ThreadTeam::share(std::int64_t chunks, std::int64_t lanes, std::int64_t lane,
-                                    Spread spread) {
-  if (spread == Spread::Interleaved)
-    return Share{lane, lanes, lane < chunks ? (chunks - lane + lanes - 1) / lanes : 0};
+ThreadTeam::Share ThreadTeam::share(std::int64_t chunks, std::int64_t lanes, std::int64_t lane) {
   const std::int64_t first = chunks * lane / lanes;
-  return Share{first, 1, chunks * (lane + 1) / lanes - first};
+  return Share{first, chunks * (lane + 1) / lanes - first};
 }
 
 std::int64_t ThreadTeam::take_chunks(std::size_t lane) {
@@ -86,21 +83,21 @@ std::int64_t ThreadTeam::take_chunks(std::size_t lane) {
     while (true) {
       const std::int64_t i = l.next.fetch_add(1, std::memory_order_relaxed);
       if (i >= l.share.count) break;
-      fn_(ctx_, l.share.first + i * l.share.stride);
+      fn_(ctx_, l.share.first + i);
       ++ran;
     }
   }
   return ran;
 }
 
-void ThreadTeam::post(std::int64_t chunks, ChunkFn fn, void* ctx, Spread spread) {
+void ThreadTeam::post(std::int64_t chunks, ChunkFn fn, void* ctx) {
   fn_ = fn;
   ctx_ = ctx;
   const std::size_t workers = workers_.size();
   const auto lanes = static_cast<std::int64_t>(workers + 1);
   for (std::int64_t k = 0; k < lanes; ++k) {
     Lane& l = lanes_[static_cast<std::size_t>(k)];
-    l.share = share(chunks, lanes, k, spread);
+    l.share = share(chunks, lanes, k);
     l.next.store(0, std::memory_order_relaxed);
   }
   for (std::size_t i = 0; i < workers; ++i) state_[i].v.store(kPosted, std::memory_order_release);

@@ -5,13 +5,14 @@
 // and reductions are combined in chunk order after the stage, so results are bit-identical for any number of
 // threads and whichever thread runs a chunk.
 //
-// Which thread runs a chunk: every thread has a lane, its share of the stage's chunks (Spread::Blocks: a
-// contiguous run; Spread::Interleaved: every T-th chunk), and takes its own lane's chunks first, from a
-// counter of the lane, then the other lanes' leftovers from the same counters. So on an idle machine a stage
-// posted again runs each chunk on the same thread as last time, and the data it touches (a node range, an
-// element group's state) stays in that core's cache: read on the other core, data written here moves at
-// half the speed (measured on this machine's two cores: 26-35 GB/s against 51-58 GB/s). A thread whose core
-// another program is using takes fewer chunks: the others empty its lane instead of waiting for it.
+// Which thread runs a chunk: every thread has a lane, its share of the stage's chunks (thread k of T: the
+// k-th T-th of them, a contiguous run), and takes its own lane's chunks first, from a counter of the lane,
+// then the other lanes' leftovers from the same counters. So on an idle machine a stage posted again runs
+// each chunk on the same thread as last time, and the data it touches (a node range, an element group's
+// state) stays in that core's cache: read on the other core, data written here moves at half the speed
+// (measured on this machine's two cores: 26-35 GB/s against 51-58 GB/s). Stages over the same range in the
+// same chunks (the node passes) so meet their data where the last one left it. A thread whose core another
+// program is using takes fewer chunks: the others empty its lane instead of waiting for it.
 //
 // Waiting is bounded: a thread with nothing to do spins for at most kSpinMicroseconds (pausing), then
 // sleeps on a futex (std::atomic::wait) until the next stage is posted or the last chunk is done. The
@@ -68,23 +69,18 @@ class ThreadTeam {
 
   [[nodiscard]] int size() const { return static_cast<int>(workers_.size()) + 1; }
 
-  // How a stage's chunks are dealt to the threads' lanes (see the top of the file). Blocks suits passes over
-  // ranges (node passes: neighbouring chunks share nothing); Interleaved suits stages whose chunks are
-  // finished in order (the element sums commit groups in order, so every thread must progress through it).
-  enum class Spread { Blocks, Interleaved };
-
-  // Lane `lane`'s share of a stage of `chunks` chunks dealt to `lanes` lanes: chunks first, first + stride,
-  // ... (count of them). The shares of lanes 0 .. lanes - 1 partition [0, chunks).
+  // Lane `lane`'s share of a stage of `chunks` chunks dealt to `lanes` lanes: chunks [first, first + count).
+  // The shares of lanes 0 .. lanes - 1 partition [0, chunks) in order.
   struct Share {
-    std::int64_t first = 0, stride = 1, count = 0;
+    std::int64_t first = 0, count = 0;
   };
-  static Share share(std::int64_t chunks, std::int64_t lanes, std::int64_t lane, Spread spread);
+  static Share share(std::int64_t chunks, std::int64_t lanes, std::int64_t lane);
 
   // Calls body(c) exactly once for every chunk c in [0, chunks), on the team's threads, and returns when all
   // are done; in order on the calling thread when `parallel` is false (work too small to share). The body
   // must not throw and must not call run() itself.
   template <class Body>
-  void run(std::int64_t chunks, Body&& body, bool parallel = true, Spread spread = Spread::Blocks) {
+  void run(std::int64_t chunks, Body&& body, bool parallel = true) {
     if (chunks <= 0) return;
     if (!parallel || chunks == 1 || workers_.empty() || solo_left_ > 0) {
       if (parallel && solo_left_ > 0) --solo_left_;
@@ -94,7 +90,7 @@ class ThreadTeam {
     using B = std::remove_reference_t<Body>;
     void* ctx = const_cast<void*>(static_cast<const void*>(&body));
     post(
-        chunks, [](void* p, std::int64_t c) { (*static_cast<B*>(p))(c); }, ctx, spread);
+        chunks, [](void* p, std::int64_t c) { (*static_cast<B*>(p))(c); }, ctx);
   }
 
   // The number of threads the engine uses when none is asked for: OMP_NUM_THREADS when it is set (Radioss
@@ -103,7 +99,7 @@ class ThreadTeam {
 
  private:
   using ChunkFn = void (*)(void*, std::int64_t);
-  void post(std::int64_t chunks, ChunkFn fn, void* ctx, Spread spread);
+  void post(std::int64_t chunks, ChunkFn fn, void* ctx);
   std::int64_t take_chunks(
       std::size_t lane);  // runs lane `lane`'s chunks, then the others'; returns how many
   void worker_loop(std::size_t index);

@@ -38,41 +38,22 @@ TEST_CASE("chunks cover the items once, with boundaries that depend only on the 
   }
 }
 
-TEST_CASE("the threads' lanes partition a stage: blocks in order, or every T-th chunk", "[threads]") {
+TEST_CASE("the threads' lanes partition a stage into equal blocks in order", "[threads]") {
   // Each thread takes its lane first, so a lane must hold each chunk once, and the lane a chunk lands in
   // must depend only on the chunk, the chunk count and the thread count (a chunk then runs on the same thread
   // every time the stage is posted, where its data already is).
   for (const std::int64_t lanes : {1, 2, 3, 5})
     for (const std::int64_t chunks : {0, 1, 2, 3, 4, 7, 64, 339}) {
-      std::vector<int> lane_of(static_cast<std::size_t>(chunks), -1);
-      for (const auto spread : {ThreadTeam::Spread::Blocks, ThreadTeam::Spread::Interleaved}) {
-        std::fill(lane_of.begin(), lane_of.end(), -1);
-        std::int64_t last_block_end = 0;
-        for (std::int64_t k = 0; k < lanes; ++k) {
-          const auto s = ThreadTeam::share(chunks, lanes, k, spread);
-          REQUIRE(s.count >= 0);
-          // Shares differ by at most one chunk: an equal split.
-          CHECK(s.count >= chunks / lanes);
-          CHECK(s.count <= chunks / lanes + 1);
-          if (spread == ThreadTeam::Spread::Blocks && s.count > 0) {
-            CHECK(s.stride == 1);
-            CHECK(s.first == last_block_end);  // lane k's run follows lane k - 1's
-            last_block_end = s.first + s.count;
-          }
-          for (std::int64_t i = 0; i < s.count; ++i) {
-            const std::int64_t c = s.first + i * s.stride;
-            REQUIRE(c >= 0);
-            REQUIRE(c < chunks);
-            REQUIRE(lane_of[static_cast<std::size_t>(c)] == -1);
-            lane_of[static_cast<std::size_t>(c)] = static_cast<int>(k);
-          }
-        }
-        for (std::int64_t c = 0; c < chunks; ++c) {
-          REQUIRE(lane_of[static_cast<std::size_t>(c)] >= 0);
-          if (spread == ThreadTeam::Spread::Interleaved)
-            CHECK(lane_of[static_cast<std::size_t>(c)] == c % lanes);
-        }
+      std::int64_t next = 0;
+      for (std::int64_t k = 0; k < lanes; ++k) {
+        const auto s = ThreadTeam::share(chunks, lanes, k);
+        CHECK(s.first == next);  // lane k's block follows lane k - 1's: together they cover [0, chunks) once
+        // Shares differ by at most one chunk: an equal split.
+        CHECK(s.count >= chunks / lanes);
+        CHECK(s.count <= chunks / lanes + 1);
+        next = s.first + s.count;
       }
+      CHECK(next == chunks);
     }
 }
 
@@ -82,14 +63,12 @@ TEST_CASE("a team runs every chunk of every stage exactly once", "[threads]") {
   for (const int threads : {1, 2, 3, 8}) {
     ThreadTeam team(threads);
     CHECK(team.size() == threads);
-    for (const auto spread : {ThreadTeam::Spread::Blocks, ThreadTeam::Spread::Interleaved})
-      for (const std::int64_t chunks : {1, 2, 7, 64, 1000}) {
-        std::vector<std::atomic<int>> runs(static_cast<std::size_t>(chunks));
-        for (int stage = 0; stage < 200; ++stage)
-          team.run(
-              chunks, [&](std::int64_t c) { ++runs[static_cast<std::size_t>(c)]; }, true, spread);
-        for (const auto& r : runs) REQUIRE(r.load() == 200);
-      }
+    for (const std::int64_t chunks : {1, 2, 7, 64, 1000}) {
+      std::vector<std::atomic<int>> runs(static_cast<std::size_t>(chunks));
+      for (int stage = 0; stage < 200; ++stage)
+        team.run(chunks, [&](std::int64_t c) { ++runs[static_cast<std::size_t>(c)]; });
+      for (const auto& r : runs) REQUIRE(r.load() == 200);
+    }
     // Sequential fallback: in chunk order on the calling thread.
     std::vector<std::int64_t> order;
     team.run(
@@ -204,8 +183,8 @@ TEST_CASE("a team's threads commit every region's items in item order, one commi
           "[threads]") {
   // 400 items over 7 regions, like element groups over node chunks: item k writes into region k / 60 and,
   // every fifth item, into the next one too. Each region's commits must come in item order, none
-  // overlapping another of the same region; the threads run blocks of items (Spread::Blocks), as the
-  // element stage does, so whole regions are committed by the thread whose block they lie in.
+  // overlapping another of the same region; the threads run blocks of items, as in the element stage, so
+  // whole regions are committed by the thread whose block they lie in.
   constexpr std::int64_t kItems = 400;
   constexpr std::int32_t kRegions = 7;
   std::vector<std::vector<std::int32_t>> regions(kItems);
@@ -230,13 +209,10 @@ TEST_CASE("a team's threads commit every region's items in item order, one commi
     for (int stage = 0; stage < 20; ++stage) {
       order.reset();
       for (auto& c : committed) c.clear();
-      team.run(
-          kItems,
-          [&](std::int64_t k) {
-            if ((k * 7 + stage) % 13 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
-            order.finished(k, commit);
-          },
-          true, ThreadTeam::Spread::Blocks);
+      team.run(kItems, [&](std::int64_t k) {
+        if ((k * 7 + stage) % 13 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+        order.finished(k, commit);
+      });
       order.drain(commit);
       REQUIRE(order.committed() == order.parts());
       for (std::int32_t r = 0; r < kRegions; ++r) {
