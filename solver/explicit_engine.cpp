@@ -48,8 +48,26 @@ inline void accelerate_node(NodeState& s, std::size_t n) {
 
 // The node passes' loops over [first, last). The arrays never overlap, which GCC cannot see (it would have to
 // compare every pair of the twenty arrays before the loop, and gives up; it ignores __restrict on local
-// pointers): `ivdep` tells it. The integration is so vectorised; the assembly stays scalar (its sums are
-// [node][6], a stride GCC does not vectorise, and its divisions are guarded).
+// pointers): `ivdep` tells it, and the integration is so vectorised. The assembly is written two nodes at a
+// time by hand: its sums are [node][6], a stride GCC does not vectorise, and its guarded divisions keep
+// GCC's loop scalar.
+using Pair = double __attribute__((vector_size(16)));
+using PairMask = long long __attribute__((vector_size(16)));
+inline Pair load_pair(const double* p) {
+  Pair v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline void store_pair(double* p, Pair v) {
+  std::memcpy(p, &v, sizeof v);
+}
+// 1 / m where m > 0, else 0 (a massless node), for both lanes: the division runs on every lane (a zero or
+// NaN lane's inf or NaN is then masked away), the same division as the scalar 1.0 / m.
+inline Pair inverse_or_zero(Pair m) {
+  const PairMask positive = m > Pair{0.0, 0.0};
+  return reinterpret_cast<Pair>(reinterpret_cast<PairMask>(Pair{1.0, 1.0} / m) & positive);
+}
+
 // Assembly [4-5]: f = f_ext + the element sums, moments += their sums, the sums cleared for the next cycle;
 // with Accelerate, a = f / m and the angular a = moment / inertia (a massless node gets none).
 template <bool Accelerate>
@@ -71,31 +89,49 @@ void assemble_nodes(NodeState& s, double* sums, std::size_t first, std::size_t l
   double* awx = s.awx.data();
   double* awy = s.awy.data();
   double* awz = s.awz.data();
-#pragma GCC ivdep
-  for (std::size_t n = first; n < last; ++n) {
+  std::size_t n = first;
+  for (; n + 1 < last; n += 2) {
+    // Nodes n and n + 1: their sums [6] side by side, turned into one pair per component.
     double* f = sums + 6 * n;
+    const Pair a01 = load_pair(f), a23 = load_pair(f + 2), a45 = load_pair(f + 4);
+    const Pair b01 = load_pair(f + 6), b23 = load_pair(f + 8), b45 = load_pair(f + 10);
+    const PairMask first_lanes{0, 2}, second_lanes{1, 3};
     // External loads were put in f*_ext by the loads; the total is their sum with the element forces.
-    const double fxn = fx_ext[n] + f[0], fyn = fy_ext[n] + f[1], fzn = fz_ext[n] + f[2];
-    const double mxn = mx[n] + f[3], myn = my[n] + f[4], mzn = mz[n] + f[5];
-    fx[n] = fxn;
-    fy[n] = fyn;
-    fz[n] = fzn;
-    mx[n] = mxn;
-    my[n] = myn;
-    mz[n] = mzn;
-    for (int d = 0; d < 6; ++d) f[d] = 0.0;  // the next cycle's sums start from zero
+    const Pair fxn = load_pair(fx_ext + n) + __builtin_shuffle(a01, b01, first_lanes);
+    const Pair fyn = load_pair(fy_ext + n) + __builtin_shuffle(a01, b01, second_lanes);
+    const Pair fzn = load_pair(fz_ext + n) + __builtin_shuffle(a23, b23, first_lanes);
+    const Pair mxn = load_pair(mx + n) + __builtin_shuffle(a23, b23, second_lanes);
+    const Pair myn = load_pair(my + n) + __builtin_shuffle(a45, b45, first_lanes);
+    const Pair mzn = load_pair(mz + n) + __builtin_shuffle(a45, b45, second_lanes);
+    store_pair(fx + n, fxn);
+    store_pair(fy + n, fyn);
+    store_pair(fz + n, fzn);
+    store_pair(mx + n, mxn);
+    store_pair(my + n, myn);
+    store_pair(mz + n, mzn);
+    for (int d = 0; d < 12; d += 2)
+      store_pair(f + d, Pair{0.0, 0.0});  // the next cycle's sums start from zero
     if constexpr (Accelerate) {
-      const double m = mass[n];
-      const double inv = m > 0 ? 1.0 / m : 0.0;
-      ax[n] = fxn * inv;
-      ay[n] = fyn * inv;
-      az[n] = fzn * inv;
-      const double I = inertia[n];
-      const double invI = I > 0 ? 1.0 / I : 0.0;
-      awx[n] = mxn * invI;
-      awy[n] = myn * invI;
-      awz[n] = mzn * invI;
+      const Pair inv = inverse_or_zero(load_pair(mass + n));
+      store_pair(ax + n, fxn * inv);
+      store_pair(ay + n, fyn * inv);
+      store_pair(az + n, fzn * inv);
+      const Pair inv_i = inverse_or_zero(load_pair(inertia + n));
+      store_pair(awx + n, mxn * inv_i);
+      store_pair(awy + n, myn * inv_i);
+      store_pair(awz + n, mzn * inv_i);
     }
+  }
+  for (; n < last; ++n) {  // an odd last node
+    double* f = sums + 6 * n;
+    fx[n] = fx_ext[n] + f[0];
+    fy[n] = fy_ext[n] + f[1];
+    fz[n] = fz_ext[n] + f[2];
+    mx[n] += f[3];
+    my[n] += f[4];
+    mz[n] += f[5];
+    for (int d = 0; d < 6; ++d) f[d] = 0.0;
+    if constexpr (Accelerate) accelerate_node(s, n);
   }
 }
 
