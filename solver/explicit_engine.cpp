@@ -580,30 +580,34 @@ void ExplicitEngine::visit_group_sums(std::int64_t flat, F&& f) const {
 }
 
 // The regions (node chunks) each group writes into, and for a group writing into several its entries region
-// by region, each region's in the group's own order (element, node of the element).
+// by region, each region's in the group's own order (element, node of the element): one pass over the
+// entries, then a stable sort by region, so a badly numbered mesh (a group over many chunks) costs no more.
 void ExplicitEngine::build_sum_regions() {
+  static_assert(8 * kGroupSize <= 65536, "entry codes 8 i + q must fit in 16 bits");
   const std::int64_t groups = group_count();
   const auto regions = static_cast<std::int32_t>(node_chunks().count());
   std::vector<std::vector<std::int32_t>> group_regions(static_cast<std::size_t>(groups));
   sum_part_begin_.assign(static_cast<std::size_t>(groups) + 1, 0);
   sum_entries_begin_.assign(1, 0);
   sum_entries_.clear();
+  std::vector<std::pair<std::int32_t, std::uint16_t>> entries;  // (region, code), then sorted by region
   for (std::int64_t flat = 0; flat < groups; ++flat)
     visit_group_sums(flat, [&](const auto& g, int nodes_per_element, auto) {
-      const auto region_of = [&](std::size_t i, std::size_t q) {
-        return static_cast<std::int32_t>(g.conn[q * kGroupSize + i] / kNodeChunk);
-      };
-      auto& rs = group_regions[static_cast<std::size_t>(flat)];
+      entries.clear();
       for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
         for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q)
-          rs.push_back(region_of(i, q));
-      std::sort(rs.begin(), rs.end());
-      rs.erase(std::unique(rs.begin(), rs.end()), rs.end());
+          entries.emplace_back(static_cast<std::int32_t>(g.conn[q * kGroupSize + i] / kNodeChunk),
+                               static_cast<std::uint16_t>(8 * i + q));
+      std::stable_sort(entries.begin(), entries.end(),
+                       [](const auto& a, const auto& b) { return a.first < b.first; });
+      auto& rs = group_regions[static_cast<std::size_t>(flat)];
+      for (std::size_t k = 0; k < entries.size(); ++k)
+        if (k == 0 || entries[k].first != entries[k - 1].first) rs.push_back(entries[k].first);
+      // One part per region; a part's codes are listed only when the group has more than one.
+      std::size_t k = 0;
       for (const std::int32_t r : rs) {
-        if (rs.size() > 1)
-          for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
-            for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q)
-              if (region_of(i, q) == r) sum_entries_.push_back(static_cast<std::uint16_t>(8 * i + q));
+        for (; k < entries.size() && entries[k].first == r; ++k)
+          if (rs.size() > 1) sum_entries_.push_back(entries[k].second);
         sum_entries_begin_.push_back(static_cast<std::int64_t>(sum_entries_.size()));
       }
       sum_part_begin_[static_cast<std::size_t>(flat) + 1] =
@@ -657,7 +661,8 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
       },
       groups >= kMinParallelGroups);
   element_sums_order_.drain(add);
-  assert(element_sums_order_.committed() == element_sums_order_.parts());  // every group's forces are in
+  // every group's forces are in the sums
+  assert(element_sums_order_.committed() == element_sums_order_.parts());
 }
 
 void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& cyc) {

@@ -1,4 +1,5 @@
-// The engine's team of threads: deterministic division of work, dynamic assignment, bounded waiting.
+// The engine's team of threads: deterministic division of work, each thread's own share first and the
+// others' leftovers after, bounded waiting.
 //
 // A stage of n items is cut into chunks of a fixed size (Chunks::of), so chunk c always covers the same
 // items [c * size, min((c + 1) * size, n)) whatever the thread count. Each chunk writes only its own outputs
@@ -100,8 +101,8 @@ class ThreadTeam {
  private:
   using ChunkFn = void (*)(void*, std::int64_t);
   void post(std::int64_t chunks, ChunkFn fn, void* ctx);
-  std::int64_t take_chunks(
-      std::size_t lane);  // runs lane `lane`'s chunks, then the others'; returns how many
+  // Runs lane `lane`'s chunks, then the others'; returns how many it ran.
+  std::int64_t take_chunks(std::size_t lane);
   void worker_loop(std::size_t index);
 
   // A thread's share of the posted stage, handed out by `next`.
