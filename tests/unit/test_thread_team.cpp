@@ -253,9 +253,13 @@ RunOutcome run_impact(const radx::model::Model& m, radx::model::RunControls rc, 
   return RunOutcome{s.x, s.y, s.z, s.vx, s.vy, s.vz, res.last.energy, res.cycles};
 }
 
-}  // namespace
-
-TEST_CASE("the impact model runs bit-identically on 1, 2 and 3 threads", "[threads][engine]") {
+// The impact benchmark's deck at N = 70 (gen_shell_plate.py --impact), read as the starter would (TYPE7
+// gaps and search boxes prepared), with its engine controls.
+struct ImpactDeck {
+  radx::model::Model model;
+  radx::model::RunControls controls;
+};
+ImpactDeck impact_deck() {
   radx::test::TempDir dir;
   const std::string gen = "/usr/bin/python3 " + std::string(RADX_SOURCE_DIR) +
                           "/bench/gen_shell_plate.py --n 70 --impact --out " + dir.path().string() + " > " +
@@ -264,11 +268,20 @@ TEST_CASE("the impact model runs bit-identically on 1, 2 and 3 threads", "[threa
   std::ifstream in(dir.file("PLATE70I_0000.rad"));
   std::stringstream text;
   text << in.rdbuf();
-  auto m = radx::test::model_of_deck(text.str());
-  radx::contact::prepare_type7_interfaces(m);  // the starter's gaps and search boxes
+  ImpactDeck deck{radx::test::model_of_deck(text.str()), {}};
+  radx::contact::prepare_type7_interfaces(deck.model);  // the starter's gaps and search boxes
   radx::Diagnostics d;
-  const auto rc = radx::read_run_controls(dir.file("PLATE70I_0001.rad"), d);
+  deck.controls = radx::read_run_controls(dir.file("PLATE70I_0001.rad"), d);
   REQUIRE_FALSE(d.has_errors());
+  return deck;
+}
+
+}  // namespace
+
+TEST_CASE("the impact model runs bit-identically on 1, 2 and 3 threads", "[threads][engine]") {
+  const auto deck = impact_deck();
+  const auto& m = deck.model;
+  const auto& rc = deck.controls;
   // Every stage must be parallel for the test to mean anything: more than 8 groups, two node chunks.
   REQUIRE(m.nodes.size() >= 4096);
   const auto one = run_impact(m, rc, 1);
@@ -302,19 +315,9 @@ TEST_CASE("each node's element sum is made in group, element, node-of-element or
   // their boundaries, bricks in the last), run until the block has hit the plate: after the last cycle
   // (which does not integrate) f = (f_ext + that sum) + the contact force for every node (contact adds its
   // forces after the assembly; zero where it has none), compared with ==.
-  radx::test::TempDir dir;
-  const std::string gen = "/usr/bin/python3 " + std::string(RADX_SOURCE_DIR) +
-                          "/bench/gen_shell_plate.py --n 70 --impact --out " + dir.path().string() + " > " +
-                          dir.file("gen.txt");
-  REQUIRE(std::system(gen.c_str()) == 0);
-  std::ifstream in(dir.file("PLATE70I_0000.rad"));
-  std::stringstream text;
-  text << in.rdbuf();
-  auto m = radx::test::model_of_deck(text.str());
-  radx::contact::prepare_type7_interfaces(m);
-  radx::Diagnostics d;
-  auto rc = radx::read_run_controls(dir.file("PLATE70I_0001.rad"), d);
-  REQUIRE_FALSE(d.has_errors());
+  auto deck = impact_deck();
+  const auto& m = deck.model;
+  auto& rc = deck.controls;
   rc.t_stop = 2e-4;  // contact starts at 1e-4 s (1 mm at 10 m/s)
   REQUIRE(m.nodes.size() > 2 * 2048);
   for (const int threads : {1, 2}) {
