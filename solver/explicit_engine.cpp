@@ -25,9 +25,14 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Node stages run in chunks of this many nodes (about 0.1 ms of work each): chunk boundaries never depend
-// on the thread count, and a model of fewer than two chunks' nodes runs them on one thread. The chunks are
-// also the regions of the element sums' ordered commit.
+// on the thread count, and a model of fewer than two chunks' nodes runs them on one thread.
 constexpr std::int64_t kNodeChunk = 2048;
+// The element sums are committed in regions of whole node chunks (build_sum_regions), at most this many: one
+// chunk each on a small model, more on a large one. A group whose nodes reach into two regions adds its
+// entries from a list, slower than its plain loop; on a plate meshed row by row a group's nodes span a row
+// of nodes, which on a large model is as long as a chunk (1,601 nodes at 2.66 M elements), and most groups
+// would cross. 64 regions still give every thread many of its own.
+constexpr std::int64_t kMaxSumRegions = 64;
 // Below this many groups (of kGroupSize elements) the element stage runs on one thread: waking another
 // costs about what a few groups' forces do.
 constexpr std::int64_t kMinParallelGroups = 8;
@@ -579,13 +584,18 @@ void ExplicitEngine::visit_group_sums(std::int64_t flat, F&& f) const {
   }
 }
 
-// The regions (node chunks) each group writes into, and for a group writing into several its entries region
-// by region, each region's in the group's own order (element, node of the element): one pass over the
-// entries, then a stable sort by region, so a badly numbered mesh (a group over many chunks) costs no more.
+// The regions (runs of node chunks, kMaxSumRegions) each group writes into, and for a group writing into
+// several its entries region by region, each region's in the group's own order (element, node of the
+// element): one pass over the entries, then a stable sort by region, so a badly numbered mesh (a group over
+// many chunks) costs no more.
 void ExplicitEngine::build_sum_regions() {
   static_assert(8 * kGroupSize <= 65536, "entry codes 8 i + q must fit in 16 bits");
   const std::int64_t groups = group_count();
-  const auto regions = static_cast<std::int32_t>(node_chunks().count());
+  const std::int64_t chunks = node_chunks().count();
+  const std::int64_t region_nodes =
+      kNodeChunk * std::max<std::int64_t>(1, (chunks + kMaxSumRegions - 1) / kMaxSumRegions);
+  const auto regions =
+      static_cast<std::int32_t>((static_cast<std::int64_t>(nodes_.n) + region_nodes - 1) / region_nodes);
   std::vector<std::vector<std::int32_t>> group_regions(static_cast<std::size_t>(groups));
   sum_part_begin_.assign(static_cast<std::size_t>(groups) + 1, 0);
   sum_entries_begin_.assign(1, 0);
@@ -596,7 +606,7 @@ void ExplicitEngine::build_sum_regions() {
       entries.clear();
       for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
         for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q)
-          entries.emplace_back(static_cast<std::int32_t>(g.conn[q * kGroupSize + i] / kNodeChunk),
+          entries.emplace_back(static_cast<std::int32_t>(g.conn[q * kGroupSize + i] / region_nodes),
                                static_cast<std::uint16_t>(8 * i + q));
       std::stable_sort(entries.begin(), entries.end(),
                        [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -646,8 +656,8 @@ void ExplicitEngine::add_group_forces(std::int64_t flat, std::int32_t slot) {
 // T: the k-th T-th of them), so a group runs on the same core every cycle and so do, mostly, the nodes it
 // writes, which the node passes deal out in blocks too: its state and its nodes stay in that core's cache.
 // Each group's forces are added to the nodes' sums as soon as every earlier group writing into the same
-// node chunk is (OrderedCommit, regions = node chunks), by whichever thread is there: while they are still
-// in cache, and each thread for its own block of nodes, beside the other's work; only the node chunks two
+// region of node chunks is (OrderedCommit; kMaxSumRegions), by whichever thread is there: while they are
+// still in cache, and each thread for its own block of nodes, beside the other's work; only the regions two
 // blocks share wait for both.
 void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
   const std::int64_t groups = group_count();

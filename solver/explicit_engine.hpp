@@ -209,9 +209,9 @@ class ExplicitEngine {
   // [node][fx fy fz mx my mz]; filled by the element stage through element_sums_order_, read and cleared by
   // assemble_and_accelerate.
   HugeVector<double> element_sums_;
-  // Regions are the node chunks; a group's part in a region is its entries (element i, node q of the
-  // element) whose node lies there, listed as codes 8 i + q in sum_entries_ when the group writes into more
-  // than one region (a group within one region adds all its entries, unlisted).
+  // Regions are runs of node chunks (kMaxSumRegions); a group's part in a region is its entries (element i,
+  // node q of the element) whose node lies there, listed as codes 8 i + q in sum_entries_ when the group
+  // writes into more than one region (a group within one region adds all its entries, unlisted).
   OrderedCommit element_sums_order_;
   std::vector<std::int64_t> sum_part_begin_;     // [groups + 1]: group k's parts, one per region it writes
   std::vector<std::int64_t> sum_entries_begin_;  // [parts + 1]: each part's codes in sum_entries_
