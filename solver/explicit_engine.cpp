@@ -53,9 +53,9 @@ inline void accelerate_node(NodeState& s, std::size_t n) {
 
 // The node passes' loops over [first, last). The arrays never overlap, which GCC cannot see (it would have to
 // compare every pair of the twenty arrays before the loop, and gives up; it ignores __restrict on local
-// pointers): `ivdep` tells it, and the integration is so vectorised. The assembly is written two nodes at a
-// time by hand: its sums are [node][6], a stride GCC does not vectorise, and its guarded divisions keep
-// GCC's loop scalar.
+// pointers): `ivdep` (RADX_IVDEP) tells it, and the integration is so vectorised. The assembly is written two
+// nodes at a time by hand: its sums are [node][6], a stride GCC does not vectorise, and its guarded divisions
+// keep GCC's loop scalar.
 using Pair = double __attribute__((vector_size(16)));
 using PairMask = long long __attribute__((vector_size(16)));
 inline Pair load_pair(const double* p) {
@@ -166,7 +166,7 @@ bool integrate_nodes(NodeState& s, double dt12, double dt2, std::size_t first, s
   double* mz = s.mz.data();
   // t - t is 0 for a finite t, NaN otherwise: an integer or over the pass instead of a branch per node.
   int bad = 0;
-#pragma GCC ivdep
+  RADX_IVDEP
   for (std::size_t n = first; n < last; ++n) {
     const double vxn = vx[n] + dt12 * ax[n], vyn = vy[n] + dt12 * ay[n], vzn = vz[n] + dt12 * az[n];
     vx[n] = vxn;
@@ -186,6 +186,7 @@ bool integrate_nodes(NodeState& s, double dt12, double dt2, std::size_t first, s
   }
   return bad == 0;
 }
+
 }  // namespace
 
 ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunControls& controls,
@@ -550,13 +551,8 @@ void ExplicitEngine::build_groups() {
 // its own sum), in half the instructions; GCC does not pair them itself (the f values are G apart).
 template <std::size_t C, std::size_t G>
 inline void add_entry(double* sum, const double* f) {
-  using Pair = double __attribute__((vector_size(16)));
-  for (std::size_t d = 0; d + 1 < C; d += 2) {
-    Pair s;
-    std::memcpy(&s, sum + d, sizeof s);
-    s += Pair{f[d * G], f[(d + 1) * G]};
-    std::memcpy(sum + d, &s, sizeof s);
-  }
+  for (std::size_t d = 0; d + 1 < C; d += 2)
+    store_pair(sum + d, load_pair(sum + d) + Pair{f[d * G], f[(d + 1) * G]});
   if constexpr (C % 2 == 1) sum[C - 1] += f[(C - 1) * G];
 }
 
