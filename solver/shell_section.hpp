@@ -2,9 +2,9 @@
 // through-thickness integration of a block of elements' sections, the element equivalent strain rate and the
 // progressive failure factor. Internal to the solver; not a public API.
 //
-// The section runs point by point (two points per pass) over the block's elements, vectorised: every point
-// gets its elastic trial and the sums, and the points that may yield (shell_stays_elastic false, see
-// material_point.hpp) get the exact update shell_point_update_r afterwards, with their element's sums
+// The section runs point by point (up to kPassPoints points per pass) over the block's elements, vectorised:
+// every point gets its elastic trial and the sums, and the points that may yield (shell_stays_elastic false,
+// see material_point.hpp) get the exact update shell_point_update_r afterwards, with their element's sums
 // redone in the order of the points. Either way each point's result and each sum are those of the
 // element-by-element update, operation for operation.
 //
@@ -40,6 +40,7 @@
 #include <limits>
 #include <numbers>
 #include <type_traits>
+#include <utility>
 
 #include "solver/element_groups.hpp"
 #include "solver/material_point.hpp"
@@ -47,6 +48,9 @@
 namespace radx::solver::shell_detail {
 
 inline constexpr int kMaxPoints = 10;  // N > 10 is rejected by the starter (elements.md 1.1)
+// Points per pass of section_point_pass. The usual 3 and 5 points take one pass: the sums stay in registers
+// (or the core's spill slots) instead of going through SectionBlock between passes.
+inline constexpr int kPassPoints = 5;
 
 // Integration points and weights of one property (1.4). n = 0: resultant elasticity (no points).
 struct ThicknessRule {
@@ -127,14 +131,14 @@ struct SectionBlock {
   double fail_now[B];    // 1: /FAIL/JOHNSON deletes the element in this cycle (next_off)
   double crack_fail[B];  // 1: a law-27 point passed EPS_f1 in this cycle
   // Scratch of the points that take the exact update (shell_point_update_r).
-  double old[2][5][B];                                // their stress before the update (points of the pass)
-  std::int64_t exact[2][B];                           // 1: that point of element j takes it
+  double old[kPassPoints][5][B];                      // their stress before the update (points of the pass)
+  std::int64_t exact[kPassPoints][B];                 // 1: that point of element j takes it
   std::int64_t redo[B] = {};                          // 1: element j has such a point, its sums are redone
   unsigned char point_exact[kMaxPoints][B] = {};      // which points of element j took it
   double dezz_x[kMaxPoints][B], wp_x[kMaxPoints][B];  // their dezz and plastic work per volume
 };
 
-// Through-thickness points p0, p0 + 1 (kPts = 2) or p0 alone (kPts = 1) of the block, vectorised. For each
+// Through-thickness points p0 .. p0 + kPts - 1 (kPts <= kPassPoints) of the block, vectorised. For each
 // point: strain increment de(z) = de_m + z dkappa, the sums of FOR/MOM before the update, the elastic trial
 // (stored), the sums after it, the thickness strain and the largest eps_p, all as if the point stayed
 // elastic; the sums are taken point after point, as one point at a time would. exact[q][j] = 1 marks the
@@ -200,8 +204,10 @@ std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParam
         epm = std::max(epm, eps);
       }
     };
-    point(std::integral_constant<int, 0>{});
-    if constexpr (kPts == 2) point(std::integral_constant<int, 1>{});
+    [&]<int... q>(std::integer_sequence<int, q...>) {
+      (point(std::integral_constant<int, q>{}), ...);  // in order: the sums are taken point after point
+    }
+    (std::make_integer_sequence<int, kPts>{});
     for (int c = 0; c < 5; ++c) s.for_old[c][j] = fo[c], s.for_new[c][j] = fn[c];
     for (int c = 0; c < 3; ++c) s.mom_old[c][j] = mo[c], s.mom_new[c][j] = mn[c];
     s.dthick[j] = dth;
@@ -215,11 +221,18 @@ template <bool kNewton, int B>
 std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParams& mat,
                                 const ShellYieldBound& yb, double gs, const ThicknessRule& rule, int p0,
                                 int pts, double* sig, double* eps_p) {
-  if (pts == 2)
-    return p0 == 0 ? section_point_pass<true, kNewton, 2>(s, len, mat, yb, gs, rule, p0, sig, eps_p)
-                   : section_point_pass<false, kNewton, 2>(s, len, mat, yb, gs, rule, p0, sig, eps_p);
-  return p0 == 0 ? section_point_pass<true, kNewton, 1>(s, len, mat, yb, gs, rule, p0, sig, eps_p)
-                 : section_point_pass<false, kNewton, 1>(s, len, mat, yb, gs, rule, p0, sig, eps_p);
+  static_assert(kPassPoints == 5, "the dispatch below lists the pass sizes 1 .. kPassPoints");
+  const auto run = [&]<int kPts>(std::integral_constant<int, kPts>) {
+    return p0 == 0 ? section_point_pass<true, kNewton, kPts>(s, len, mat, yb, gs, rule, p0, sig, eps_p)
+                   : section_point_pass<false, kNewton, kPts>(s, len, mat, yb, gs, rule, p0, sig, eps_p);
+  };
+  switch (pts) {
+    case 1: return run(std::integral_constant<int, 1>{});
+    case 2: return run(std::integral_constant<int, 2>{});
+    case 3: return run(std::integral_constant<int, 3>{});
+    case 4: return run(std::integral_constant<int, 4>{});
+    default: return run(std::integral_constant<int, 5>{});
+  }
 }
 
 // Section update of the block: N = 0 resultant elasticity, or the N points (1.4) with the material update
@@ -284,8 +297,8 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
   double* sig = sig_base + i0;
   double* eps_p = eps_base + i0;
   bool any_redo = false;
-  for (int p0 = 0; p0 < rule.n; p0 += 2) {
-    const int pts = std::min(2, rule.n - p0);  // two points per pass: the sums are loaded and stored once
+  for (int p0 = 0; p0 < rule.n; p0 += kPassPoints) {
+    const int pts = std::min(kPassPoints, rule.n - p0);
     const std::int64_t any = iplas == 1
                                  ? section_point_pass<true>(s, len, mat, yb, gs, rule, p0, pts, sig, eps_p)
                                  : section_point_pass<false>(s, len, mat, yb, gs, rule, p0, pts, sig, eps_p);
