@@ -491,6 +491,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   s.threads = result.threads;
   s.wall_seconds = result.wall_seconds;
   s.contact_seconds = result.contact_seconds;
+  s.element_loop_seconds = result.element_seconds;
   s.initial_mass = result.last.mass0;
   s.mass = result.last.mass;
   s.added_mass = result.last.added_mass;

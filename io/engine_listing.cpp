@@ -159,9 +159,13 @@ std::string format_listing_line(const ListingLine& l) {
   return out;
 }
 
-double us_per_element_cycle(const RunSummary& s) {
+double us_per_element_cycle(const RunSummary& s, double seconds) {
   if (s.elements == 0 || s.cycles <= 0) return 0.0;
-  return 1e6 * s.wall_seconds / (static_cast<double>(s.elements) * static_cast<double>(s.cycles));
+  return 1e6 * seconds / (static_cast<double>(s.elements) * static_cast<double>(s.cycles));
+}
+
+double us_per_element_cycle(const RunSummary& s) {
+  return us_per_element_cycle(s, s.wall_seconds);
 }
 
 void write_engine_header(std::ostream& os, const EngineListingHeader& h) {
@@ -282,6 +286,12 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
                   s.wall_seconds > 0 ? 100.0 * s.contact_seconds / s.wall_seconds : 0.0,
                   format_duration(s.contact_seconds).c_str());
     row(os, "contact (search and forces)", buf);
+  }
+  if (s.element_loop_seconds > 0) {
+    std::snprintf(buf, sizeof buf, "%.4g us per element per cycle, %.1f %% of the wall time",
+                  us_per_element_cycle(s, s.element_loop_seconds),
+                  s.wall_seconds > 0 ? 100.0 * s.element_loop_seconds / s.wall_seconds : 0.0);
+    row(os, "element loop", std::string(buf) + " (forces, assembly, integration)");
   }
   row(os, "initial mass", sci(s.initial_mass));
   row(os, "final mass", sci(s.mass));

@@ -127,6 +127,9 @@ struct RunSummary {
   int threads = 1;
   double wall_seconds = 0;
   double contact_seconds = 0;  // wall time in the contact step (search, forces), part of wall_seconds
+  // Wall time in the element loop (element forces, their sums, the assembly, the integration), part of
+  // wall_seconds; 0: not measured.
+  double element_loop_seconds = 0;
   double initial_mass = 0;
   double mass = 0;        // total mass at the end (with added mass)
   double added_mass = 0;  // by /DT/NODA/CST and /DT/INTER/CST
@@ -162,8 +165,10 @@ struct RunSummary {
   double output_seconds = 0;
 };
 
-// Wall microseconds per element per cycle: 1e6 wall / (elements cycles); 0 when either count is 0.
+// Wall microseconds per element per cycle: 1e6 wall / (elements cycles); 0 when either count is 0. The
+// second form takes another wall time of the run (the element loop's).
 double us_per_element_cycle(const RunSummary& s);
+double us_per_element_cycle(const RunSummary& s, double seconds);
 
 // What the header block shows.
 struct EngineListingHeader {

@@ -163,6 +163,7 @@ std::string summary_json(const RunSummary& s) {
   w.field_int("threads", s.threads);
   w.field("wall_seconds", s.wall_seconds);
   w.field("us_per_element_cycle", us_per_element_cycle(s));
+  w.field("element_loop_us_per_element_cycle", us_per_element_cycle(s, s.element_loop_seconds));
   w.field("initial_mass", s.initial_mass);
   w.field("mass", s.mass);
   w.field("added_mass", s.added_mass);

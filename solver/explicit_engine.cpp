@@ -1218,6 +1218,7 @@ void ExplicitEngine::sum_energies(const LoopState& L) {
 // 8. v^{n+1/2} = v^{n-1/2} + dt12 a^n, x^{n+1} = x^n + dt2 v^{n+1/2}; a non-finite coordinate stops the run.
 // The same pass zeroes the external forces and moments for the next cycle's loads (step 1).
 bool ExplicitEngine::integrate(LoopState& L, RunResult& res) {
+  const auto t0 = std::chrono::steady_clock::now();
   auto& s = nodes_;
   const double dt12 = L.dt12();
   const double dt2 = L.dt2;
@@ -1228,6 +1229,7 @@ bool ExplicitEngine::integrate(LoopState& L, RunResult& res) {
   loads_zeroed_ = true;
   const bool finite =
       std::all_of(chunk_finite.begin(), chunk_finite.end(), [](std::uint8_t f) { return f != 0; });
+  L.element_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   kinematics_->after_update(dt2);
   if (finite) return true;
   res.status = RunStatus::Error;

@@ -110,6 +110,8 @@ struct RunResult {
   std::int64_t cycles = 0;
   double time = 0, dt = 0;
   double dt1 = 0;  // t^n - t^{n-1} of the last cycle reached
+  // element_seconds: the element loop, the passes bench/cycle_traffic.cpp counts (element forces, their sums,
+  // the assembly, the integration); contact_seconds: the contact step (search, forces, LAGDT solve).
   double wall_seconds = 0, element_seconds = 0, contact_seconds = 0;
   int threads = 1;
   CycleReport last;

@@ -643,6 +643,7 @@ radx::io::RunSummary sample_summary() {
   s.elements = 1000;
   s.threads = 4;
   s.wall_seconds = 2.0;
+  s.element_loop_seconds = 1.5;  // 3 us per element-cycle over 1000 elements x 500 cycles
   s.initial_mass = 7.5;
   s.mass = 7.625;
   s.added_mass = 0.125;
@@ -674,8 +675,11 @@ TEST_CASE("the end-of-run block", "[engine-io]") {
                             "hourglass", "contact, elastic", "contact, damping", "contact, friction",
                             "contact, Lagrange", "external work", "cycles", "wall time", "added mass"})
     CHECK(text.find(label) != std::string::npos);
-  CHECK(text.find("1.05000E+01") != std::string::npos);                   // kinetic translational
-  CHECK(text.find("4 us per element per cycle") != std::string::npos);    // cost
+  CHECK(text.find("1.05000E+01") != std::string::npos);                 // kinetic translational
+  CHECK(text.find("4 us per element per cycle") != std::string::npos);  // cost
+  // The element loop: 1.5 s / (1000 x 500) = 3 us, 1.5 / 2 = 75 % of the wall time.
+  CHECK(text.find("element loop") != std::string::npos);
+  CHECK(text.find("3 us per element per cycle, 75.0 % of the wall time") != std::string::npos);
   CHECK(text.find(" 500\n") != std::string::npos);                        // cycles
   CHECK(text.find("(1.67 % of the initial mass)") != std::string::npos);  // 0.125 / 7.5
   CHECK(text.find("17.3 %") != std::string::npos);  // error 100 (15.25 / (12 + 1) - 1) = 17.31
@@ -722,6 +726,7 @@ need(d["dt"] == 1.0 / 3.0, "dt")
 need(d["nodes"] == 1234 and d["elements"] == 1000 and d["threads"] == 4, "counts")
 need(d["wall_seconds"] == 2.0, "wall")
 need(abs(d["us_per_element_cycle"] - 4.0) <= 1e-12, "cost")
+need(abs(d["element_loop_us_per_element_cycle"] - 3.0) <= 1e-12, "element loop cost")
 need(d["mass"] == 7.625 and d["added_mass"] == 0.125, "mass")
 need(d["momentum"] == [1e-300, -2.5, None], "momentum " + repr(d["momentum"]))
 e = d["energy"]
