@@ -145,9 +145,9 @@ int main(int argc, char** argv) {
       notes.push_back(
           "a shell group not in Belytschko-Tsay: every allocated array counted as read and written");
       for (const auto* v :
-           {&g.t0,         &g.thick,    &g.area0, &g.off,       &g.sig,     &g.eps_p,      &g.dmg,
-            &g.fail_scale, &g.brit,     &g.hg,    &g.e_int,     &g.e_hg,    &g.w_plastic,  &g.rate,
-            &g.dt,         &g.dt_fixed, &g.small, &g.ref_local, &g.k_nodal, &g.nodal_force})
+           {&g.t0,   &g.thick,      &g.area0,    &g.off,   &g.sig,       &g.eps_p,   &g.res,
+            &g.dmg,  &g.fail_scale, &g.brit,     &g.hg,    &g.e_int,     &g.e_hg,    &g.w_plastic,
+            &g.rate, &g.dt,         &g.dt_fixed, &g.small, &g.ref_local, &g.k_nodal, &g.nodal_force})
         L.group_array(p, "other shell state", *v, n, Mode::ReadWrite);
       L.group_array(p, "conn", g.conn, n, Mode::Read);
       continue;
@@ -160,6 +160,7 @@ int main(int argc, char** argv) {
     L.group_array(p, "small", g.small, n, Mode::Read);
     L.group_array(p, "sig [points][5]", g.sig, n, Mode::ReadWrite);
     L.group_array(p, "eps_p [points]", g.eps_p, n, Mode::ReadWrite);
+    L.group_array(p, "res [8] (old resultants)", g.res, n, Mode::ReadWrite);
     if (mat.fail.on) {
       L.group_array(p, "dmg [points]", g.dmg, n, Mode::ReadWrite);
       L.group_array(p, "fail_scale", g.fail_scale, n, Mode::Read);

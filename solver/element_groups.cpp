@@ -22,6 +22,7 @@ void ShellGroup::allocate(int n, int points, int gauss_points, int hg_rows) {
   // N = 0 (resultant elasticity) keeps 5 force and 3 moment resultants.
   sig.assign(ng * (points > 0 ? np * 5 : 8) * G, 0.0);
   eps_p.assign(ng * np * G, 0.0);
+  res.assign(ng * 8 * G, 0.0);
   dmg.assign(ng * np * G, 0.0);
   fail_scale.assign(G, 1.0);
   hg.assign(static_cast<std::size_t>(hg_rows) * G, 0.0);

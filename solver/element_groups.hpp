@@ -71,6 +71,10 @@ struct ShellGroup {
   GroupArray<double> off{arena};         // [G] 1 alive, decaying by 0.8 after failure, 0 deleted
   GroupArray<double> sig{arena};         // [gauss][n_points][5][G]  sxx syy sxy syz szx, local frame
   GroupArray<double> eps_p{arena};       // [gauss][n_points][G]
+  // [gauss][8][G] FOR xx yy xy yz zx and MOM xx yy xy of `sig` (N >= 1: sums over the points, raw, as
+  // shell_section.hpp takes them), kept from the last cycle as the next cycle's old resultants. Zero with a
+  // zero sig; whatever writes sig outside the section update must write them too.
+  GroupArray<double> res{arena};
   GroupArray<double> dmg{
       arena};  // [gauss][n_points][G] failure damage D / Dcrit (0 .. 1; 1: the point failed)
   GroupArray<double> fail_scale{

@@ -144,7 +144,8 @@ void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
       const auto gpz = static_cast<std::size_t>(gp);
       section_update_block(g, i0, len, mat, rule, gs, sec, g.sig.data() + gpz * sig_rows * G,
                            g.eps_p.data() + gpz * eps_rows * G, g.dmg.data() + gpz * eps_rows * G,
-                           g.brit.empty() ? nullptr : g.brit.data() + gpz * eps_rows * kBritVars * G);
+                           g.brit.empty() ? nullptr : g.brit.data() + gpz * eps_rows * kBritVars * G,
+                           g.res.data() + gpz * 8 * G);
       for (int j = 0; j < len; ++j) {
         for (int q = 0; q < 5; ++q)
           bk.for_old[gp][q][j] = sec.for_old[q][j], bk.for_new[gp][q][j] = sec.for_new[q][j];

@@ -167,10 +167,10 @@ std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParam
     const double off = s.off[j], t = s.t[j], rfac = s.rfac[j];
     const double dm[5] = {s.dem[0][j], s.dem[1][j], s.dem[2][j], s.dem[3][j], s.dem[4][j]};
     const double dk[3] = {s.dk[0][j], s.dk[1][j], s.dk[2][j]};
-    double fo[5], mo[3], fn[5], mn[3], dth = 0, epm = 0;
+    double fn[5], mn[3], dth = 0, epm = 0;
     if constexpr (!kFirst) {
-      for (int c = 0; c < 5; ++c) fo[c] = s.for_old[c][j], fn[c] = s.for_new[c][j];
-      for (int c = 0; c < 3; ++c) mo[c] = s.mom_old[c][j], mn[c] = s.mom_new[c][j];
+      for (int c = 0; c < 5; ++c) fn[c] = s.for_new[c][j];
+      for (int c = 0; c < 3; ++c) mn[c] = s.mom_new[c][j];
       dth = s.dthick[j];
       epm = s.eps_p_max[j];
     }
@@ -193,13 +193,13 @@ std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParam
         sp[q][c][j] = n[c];
       }
       if constexpr (kFirst && q == 0) {
-        for (int c = 0; c < 5; ++c) fo[c] = w[q] * o[c], fn[c] = w[q] * n[c];
-        for (int c = 0; c < 3; ++c) mo[c] = m[q] * o[c], mn[c] = m[q] * n[c];
+        for (int c = 0; c < 5; ++c) fn[c] = w[q] * n[c];
+        for (int c = 0; c < 3; ++c) mn[c] = m[q] * n[c];
         dth = dz;
         epm = std::max(0.0, eps);
       } else {
-        for (int c = 0; c < 5; ++c) fo[c] += w[q] * o[c], fn[c] += w[q] * n[c];
-        for (int c = 0; c < 3; ++c) mo[c] += m[q] * o[c], mn[c] += m[q] * n[c];
+        for (int c = 0; c < 5; ++c) fn[c] += w[q] * n[c];
+        for (int c = 0; c < 3; ++c) mn[c] += m[q] * n[c];
         dth += dz;
         epm = std::max(epm, eps);
       }
@@ -208,8 +208,8 @@ std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParam
       (point(std::integral_constant<int, q>{}), ...);  // in order: the sums are taken point after point
     }
     (std::make_integer_sequence<int, kPts>{});
-    for (int c = 0; c < 5; ++c) s.for_old[c][j] = fo[c], s.for_new[c][j] = fn[c];
-    for (int c = 0; c < 3; ++c) s.mom_old[c][j] = mo[c], s.mom_new[c][j] = mn[c];
+    for (int c = 0; c < 5; ++c) s.for_new[c][j] = fn[c];
+    for (int c = 0; c < 3; ++c) s.mom_new[c][j] = mn[c];
     s.dthick[j] = dth;
     s.eps_p_max[j] = epm;
     if constexpr (kFirst) s.w_plastic[j] = 0;
@@ -238,15 +238,19 @@ std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParam
 // Section update of the block: N = 0 resultant elasticity, or the N points (1.4) with the material update
 // (6.3), thickness strain (1.8), plastic work (6.5) and the largest eps_p (6.4).
 //
-// sig_rows, eps_rows, dmg_rows, brit_rows: the first rows of the state this section updates, laid out as
-// ShellGroup::sig, ::eps_p, ::dmg and ::brit ([points][5][G] or [8][G], [points][G], [points][G],
-// [points][kBritVars][G]); the group's own rows by default. QBAT keeps one such state per in-plane Gauss
-// point and passes each in turn.
+// sig_rows, eps_rows, dmg_rows, brit_rows, res_rows: the first rows of the state this section updates, laid
+// out as ShellGroup::sig, ::eps_p, ::dmg, ::brit and ::res ([points][5][G] or [8][G], [points][G],
+// [points][G], [points][kBritVars][G], [8][G]); the group's own rows by default. QBAT keeps one such state
+// per in-plane Gauss point and passes each in turn.
+//
+// The old resultants (FOR, MOM before the update, for the energy) are those the last cycle left in res: the
+// sums over the same stored stresses in the same order, so the same numbers as summing the points again
+// (a Debug build checks it), without their 16 operations per point.
 template <int B>
 void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& mat,
                           const ThicknessRule& rule, double gs, SectionBlock<B>& s,
                           double* sig_rows = nullptr, double* eps_rows = nullptr, double* dmg_rows = nullptr,
-                          double* brit_rows = nullptr) {
+                          double* brit_rows = nullptr, double* res_rows = nullptr) {
   constexpr std::size_t G = kGroupSize;
   double* const sig_base = sig_rows != nullptr ? sig_rows : g.sig.data();
   double* const eps_base = eps_rows != nullptr ? eps_rows : g.eps_p.data();
@@ -296,6 +300,23 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
     for (int j = 0; j < len; ++j) s.crack_fail[j] = 0;
   double* sig = sig_base + i0;
   double* eps_p = eps_base + i0;
+  double* const res = (res_rows != nullptr ? res_rows : g.res.data()) + i0;
+  for (int c = 0; c < 5; ++c)
+    for (int j = 0; j < len; ++j) s.for_old[c][j] = res[static_cast<std::size_t>(c) * G + j];
+  for (int c = 0; c < 3; ++c)
+    for (int j = 0; j < len; ++j) s.mom_old[c][j] = res[static_cast<std::size_t>(5 + c) * G + j];
+#ifndef NDEBUG
+  for (int j = 0; j < len; ++j)
+    for (int c = 0; c < 5; ++c) {
+      double f = 0, mm = 0;
+      for (int p = 0; p < rule.n; ++p) {
+        f += rule.w[p] * sig_base[sig_index(p, c, i0 + j)];
+        mm += rule.m[p] * sig_base[sig_index(p, c, i0 + j)];
+      }
+      assert(f == s.for_old[c][j] && "ShellGroup::res out of date: sig written without its resultants");
+      assert((c >= 3 || mm == s.mom_old[c][j]) && "ShellGroup::res out of date");
+    }
+#endif
   bool any_redo = false;
   for (int p0 = 0; p0 < rule.n; p0 += kPassPoints) {
     const int pts = std::min(kPassPoints, rule.n - p0);
@@ -378,6 +399,14 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
   }
   RADX_IVDEP
   for (int j = 0; j < len; ++j) s.dthick[j] *= s.t[j];
+  // The next cycle's old resultants: those of sig as it is left (the old ones where a deleted element's
+  // stress was put back).
+  for (int c = 0; c < 5; ++c)
+    for (int j = 0; j < len; ++j)
+      res[static_cast<std::size_t>(c) * G + j] = s.off[j] > 0 ? s.for_new[c][j] : s.for_old[c][j];
+  for (int c = 0; c < 3; ++c)
+    for (int j = 0; j < len; ++j)
+      res[static_cast<std::size_t>(5 + c) * G + j] = s.off[j] > 0 ? s.mom_new[c][j] : s.mom_old[c][j];
   // Deletion at once (next_off): law 36 with a point above Eps_p_max; a failure model with the thickness
   // fraction of failed points (their weights) at Ifail_sh's threshold (fail_setoff_c.F: 1e-6, or the model's
   // fraction bounded by the property's P_thickfail, kept within [1e-6, 1 - 1e-6]).
