@@ -12,7 +12,6 @@
 #include <vector>
 
 #if defined(__SSE2__)
-#include <emmintrin.h>
 #endif
 
 #include "solver/model/foam_table.hpp"
@@ -39,14 +38,11 @@ inline double opaque(double v) {
   return v;
 }
 
-// Square roots of v[0 .. n). std::sqrt may set errno, which keeps GCC from vectorising a loop that calls
-// it; the kernels put the arguments in an array and take the roots here (sqrtpd rounds exactly as sqrtsd).
+// Square roots of v[0 .. n), in a loop of their own: the kernels put the arguments in an array and take the
+// roots here. The solver is compiled with -fno-math-errno (solver/CMakeLists.txt), so GCC vectorises this
+// loop at the width of the copy it is inlined into (sqrtpd rounds exactly as sqrtsd and the library).
 inline void sqrt_in_place(double* v, int n) {
-  int i = 0;
-#if defined(__SSE2__)
-  for (; i + 2 <= n; i += 2) _mm_storeu_pd(v + i, _mm_sqrt_pd(_mm_loadu_pd(v + i)));
-#endif
-  for (; i < n; ++i) v[i] = std::sqrt(v[i]);
+  for (int i = 0; i < n; ++i) v[i] = std::sqrt(v[i]);
 }
 
 // One yield curve of law 36: a non-owning view of a /FUNCT's points (the engine's model owns them), its

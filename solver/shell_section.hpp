@@ -301,10 +301,11 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
   double* sig = sig_base + i0;
   double* eps_p = eps_base + i0;
   double* const res = (res_rows != nullptr ? res_rows : g.res.data()) + i0;
-  for (int c = 0; c < 5; ++c)
-    for (int j = 0; j < len; ++j) s.for_old[c][j] = res[static_cast<std::size_t>(c) * G + j];
-  for (int c = 0; c < 3; ++c)
-    for (int j = 0; j < len; ++j) s.mom_old[c][j] = res[static_cast<std::size_t>(5 + c) * G + j];
+  RADX_IVDEP
+  for (int j = 0; j < len; ++j) {
+    for (int c = 0; c < 5; ++c) s.for_old[c][j] = res[static_cast<std::size_t>(c) * G + j];
+    for (int c = 0; c < 3; ++c) s.mom_old[c][j] = res[static_cast<std::size_t>(5 + c) * G + j];
+  }
 #ifndef NDEBUG
   for (int j = 0; j < len; ++j)
     for (int c = 0; c < 5; ++c) {
@@ -317,7 +318,7 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
       assert((c >= 3 || mm == s.mom_old[c][j]) && "ShellGroup::res out of date");
     }
 #endif
-  bool any_redo = false;
+  bool any_redo = false, any_put_back = false;
   for (int p0 = 0; p0 < rule.n; p0 += kPassPoints) {
     const int pts = std::min(kPassPoints, rule.n - p0);
     const std::int64_t any = iplas == 1
@@ -336,6 +337,7 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
         if (s.exact[q][j] == 0) continue;
         if (s.off[j] <= 0) {
           for (int c = 0; c < 5; ++c) sp[c][j] = s.old[q][c][j];
+          any_put_back = true;
           continue;
         }
         any_redo = true;
@@ -399,14 +401,19 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
   }
   RADX_IVDEP
   for (int j = 0; j < len; ++j) s.dthick[j] *= s.t[j];
-  // The next cycle's old resultants: those of sig as it is left (the old ones where a deleted element's
-  // stress was put back).
-  for (int c = 0; c < 5; ++c)
-    for (int j = 0; j < len; ++j)
-      res[static_cast<std::size_t>(c) * G + j] = s.off[j] > 0 ? s.for_new[c][j] : s.for_old[c][j];
-  for (int c = 0; c < 3; ++c)
-    for (int j = 0; j < len; ++j)
-      res[static_cast<std::size_t>(5 + c) * G + j] = s.off[j] > 0 ? s.mom_new[c][j] : s.mom_old[c][j];
+  // The next cycle's old resultants: those of sig as it is left, the old ones where a deleted element's
+  // stress was put back.
+  RADX_IVDEP
+  for (int j = 0; j < len; ++j) {
+    for (int c = 0; c < 5; ++c) res[static_cast<std::size_t>(c) * G + j] = s.for_new[c][j];
+    for (int c = 0; c < 3; ++c) res[static_cast<std::size_t>(5 + c) * G + j] = s.mom_new[c][j];
+  }
+  if (any_put_back)
+    for (int j = 0; j < len; ++j) {
+      if (s.off[j] > 0) continue;
+      for (int c = 0; c < 5; ++c) res[static_cast<std::size_t>(c) * G + j] = s.for_old[c][j];
+      for (int c = 0; c < 3; ++c) res[static_cast<std::size_t>(5 + c) * G + j] = s.mom_old[c][j];
+    }
   // Deletion at once (next_off): law 36 with a point above Eps_p_max; a failure model with the thickness
   // fraction of failed points (their weights) at Ifail_sh's threshold (fail_setoff_c.F: 1e-6, or the model's
   // fraction bounded by the property's P_thickfail, kept within [1e-6, 1 - 1e-6]).
