@@ -639,8 +639,20 @@ void ExplicitEngine::add_group_forces(std::int64_t flat, std::int32_t slot) {
       add_entry<C, G>(sums + 6 * static_cast<std::size_t>(g.conn[q * G + i]), nf + q * C * G + i);
     };
     if (code == code_end) {  // the group writes into this region only: every entry
-      for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
-        for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q) add(i, q);
+      // The nodes per element as a constant for the usual counts, so the element's entries are unrolled.
+      const auto all = [&]<std::size_t N>(std::integral_constant<std::size_t, N>) {
+        for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
+          for (std::size_t q = 0; q < N; ++q) add(i, q);
+      };
+      switch (nodes_per_element) {
+        case 2: all(std::integral_constant<std::size_t, 2>{}); break;
+        case 3: all(std::integral_constant<std::size_t, 3>{}); break;
+        case 4: all(std::integral_constant<std::size_t, 4>{}); break;
+        case 8: all(std::integral_constant<std::size_t, 8>{}); break;
+        default:
+          for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
+            for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q) add(i, q);
+      }
     } else {
       for (; code != code_end; ++code) add(*code >> 3, *code & 7u);
     }
