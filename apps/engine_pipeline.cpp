@@ -502,7 +502,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     for (const auto& r : c->results())
       s.interfaces.push_back(io::InterfaceSummary{r.id, r.active_pairs, r.max_penetration,
                                                   r.switched_pairs_max, r.switched_pairs_total, r.added_mass,
-                                                  r.deactivated_nodes});
+                                                  r.deactivated_nodes, r.mean_candidates(), r.search_sorts});
   if (const auto* c = engine.contact(); c != nullptr && c->has_lagrange()) {
     const auto& st = c->lagrange_stats();
     auto& L = s.lagrange;

@@ -702,6 +702,8 @@ struct Type7Contact::Impl {
     }
     st.search->update(Coordinates{nodes.x, nodes.y, nodes.z}, false, &parallel);
     const auto& cand = st.search->candidates();
+    ++st.result.active_cycles;
+    st.result.candidate_pair_cycles += static_cast<std::int64_t>(cand.size());
     const double scale = controls.dt_scale;
     const double alpha = friction_filter_alpha(in.ifric >= 0 ? in.ifiltr : 0, in.xfreq, dt1);
     const bool mass_scaled_interface =
@@ -1130,7 +1132,10 @@ void Type7Contact::elements_deleted(std::span<const std::uint8_t> alive) {
 
 std::vector<InterfaceResult> Type7Contact::results() const {
   std::vector<InterfaceResult> out;
-  for (const auto& st : impl_->interfaces) out.push_back(st.result);
+  for (const auto& st : impl_->interfaces) {
+    out.push_back(st.result);
+    if (st.search) out.back().search_sorts = st.search->sorts();
+  }
   return out;
 }
 

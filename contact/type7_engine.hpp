@@ -64,6 +64,16 @@ struct InterfaceResult {
   std::int64_t switched_pairs = 0;     // LAGDT: pairs switched to Lagrange multipliers in the last cycle
   std::int64_t switched_pairs_max = 0, switched_pairs_total = 0;  // most in one cycle; pair-cycles
   double e_lagrange = 0;                                          // work of the multipliers (dissipated)
+  // Workload of the candidate search (Type7Search): the cycles the interface was active (inside [Tstart,
+  // Tstop), its sensor on), the candidate pairs it held summed over those cycles, and the sorts it made.
+  std::int64_t active_cycles = 0;
+  std::int64_t candidate_pair_cycles = 0;
+  std::int64_t search_sorts = 0;
+  // Candidate pairs per active cycle, 0 before the first.
+  [[nodiscard]] double mean_candidates() const {
+    return active_cycles > 0 ? static_cast<double>(candidate_pair_cycles) / static_cast<double>(active_cycles)
+                             : 0.0;
+  }
 };
 
 // Views for cycle step 6: accelerations after a0 = f / m, corrected in place.

@@ -32,6 +32,13 @@ std::string sci(double v) {
   return buf;
 }
 
+// One decimal, fixed (a mean count).
+std::string fixed1(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f", v);
+  return buf;
+}
+
 std::string gnum(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%g", v);
@@ -308,7 +315,8 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
       os << "  interface " << in.id << ": active pairs " << in.active_pairs << ", max penetration "
          << sci(in.max_penetration) << ", switched pairs max " << in.switched_pairs_max << " total "
          << in.switched_pairs_total << ", added mass " << sci(in.added_mass) << ", nodes removed "
-         << in.removed_nodes << '\n';
+         << in.removed_nodes << ", candidate pairs per cycle " << fixed1(in.candidates_mean)
+         << " (mean), search sorts " << in.search_sorts << '\n';
     }
   }
   if (s.lagrange.present) {

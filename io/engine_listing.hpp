@@ -104,6 +104,8 @@ struct InterfaceSummary {
   std::int64_t switched_pairs_total = 0;  // LAGDT: pair-cycles handled by Lagrange multipliers
   double added_mass = 0;                  // by /DT/INTER/CST on this interface's nodes
   std::int64_t removed_nodes = 0;         // deactivated (surface reached), Idel or /DT/INTER/DEL
+  double candidates_mean = 0;             // candidate pairs of the search per cycle the interface was active
+  std::int64_t search_sorts = 0;          // sorts of the candidate search
 };
 
 // Interrupted: SIGTERM or SIGINT stopped the run after a cycle, its last state written. Running: the summary

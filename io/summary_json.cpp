@@ -193,7 +193,9 @@ std::string summary_json(const RunSummary& s) {
           ", \"max_penetration\": " + json_number(in.max_penetration) +
           ", \"switched_pairs_max\": " + std::to_string(in.switched_pairs_max) +
           ", \"switched_pairs_total\": " + std::to_string(in.switched_pairs_total) + ", \"added_mass\": " +
-          json_number(in.added_mass) + ", \"removed_nodes\": " + std::to_string(in.removed_nodes) + "}");
+          json_number(in.added_mass) + ", \"removed_nodes\": " + std::to_string(in.removed_nodes) +
+          ", \"candidates_mean\": " + json_number(in.candidates_mean) +
+          ", \"search_sorts\": " + std::to_string(in.search_sorts) + "}");
   }
   w.close(']');
   w.key("substitutions");
@@ -553,6 +555,8 @@ bool read_summary_json(const std::string& path, RunSummary& s, std::string& erro
         is.switched_pairs_total = static_cast<std::int64_t>(number_member(i, "switched_pairs_total"));
         is.added_mass = number_member(i, "added_mass");
         is.removed_nodes = static_cast<std::int64_t>(number_member(i, "removed_nodes"));
+        is.candidates_mean = number_member(i, "candidates_mean");
+        is.search_sorts = static_cast<std::int64_t>(number_member(i, "search_sorts"));
         r.interfaces.push_back(is);
       }
     }

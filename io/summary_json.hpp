@@ -10,9 +10,10 @@
 // added_mass, momentum [x, y, z], energy {kinetic, kinetic_translational, kinetic_rotational, internal,
 // hourglass, external_work, contact_elastic, contact_damping, contact_friction, contact_lagrange,
 // initial_total, total, error_percent}, interfaces [{id, active_pairs, max_penetration, switched_pairs_max,
-// switched_pairs_total, added_mass, removed_nodes}], substitutions [text], warnings [text: the engine deck's
-// warnings as the listing gives them, then "cycle N: ..." for those during the run, such as an energy error
-// past 10 % and 50 %; at most 100, then one "... and N more"], and lagrange_solver {...} when a LAGDT
+// switched_pairs_total, added_mass, removed_nodes, candidates_mean: the TYPE7 search's candidate pairs per
+// cycle the interface was active, search_sorts: its sorts}], substitutions [text], warnings [text: the engine
+// deck's warnings as the listing gives them, then "cycle N: ..." for those during the run, such as an energy
+// error past 10 % and 50 %; at most 100, then one "... and N more"], and lagrange_solver {...} when a LAGDT
 // interface could switch.
 //
 // read_summary_json reads a document back (for `radx regress`, which runs each deck in a child process and

@@ -658,7 +658,7 @@ radx::io::RunSummary sample_summary() {
   s.energy.contact_lagrange = 0.4;
   s.energy.external_work = 1.0;
   s.energy.initial_total = 12.0;
-  s.interfaces = {{7, 12, 1.5e-3, 4, 40, 2.5e-6, 3}, {9, 0, 0, 0, 0, 0, 0}};
+  s.interfaces = {{7, 12, 1.5e-3, 4, 40, 2.5e-6, 3, 2468.3, 17}, {9, 0, 0, 0, 0, 0, 0, 0, 0}};
   return s;
 }
 
@@ -683,6 +683,14 @@ TEST_CASE("the end-of-run block", "[engine-io]") {
   CHECK(text.find(" 500\n") != std::string::npos);                        // cycles
   CHECK(text.find("(1.67 % of the initial mass)") != std::string::npos);  // 0.125 / 7.5
   CHECK(text.find("17.3 %") != std::string::npos);  // error 100 (15.25 / (12 + 1) - 1) = 17.31
+  // One line per interface, with the search's workload: mean candidate pairs per cycle (one decimal), sorts.
+  CHECK(
+      text.find("  interface 7: active pairs 12, max penetration 1.50000E-03, switched pairs max 4 total 40, "
+                "added mass 2.50000E-06, nodes removed 3, candidate pairs per cycle 2468.3 (mean), search "
+                "sorts 17\n") != std::string::npos);
+  CHECK(text.find("  interface 9: active pairs 0, max penetration 0.00000E+00, switched pairs max 0 total 0, "
+                  "added mass 0.00000E+00, nodes removed 0, candidate pairs per cycle 0.0 (mean), search "
+                  "sorts 0\n") != std::string::npos);
 }
 
 TEST_CASE("NAME_summary.json reads back with its values", "[engine-io]") {
@@ -740,7 +748,9 @@ need(abs(e["error_percent"] - 100 * (15.25 / 13.0 - 1)) <= 1e-12, "error_percent
 i = d["interfaces"]
 need(len(i) == 2, "interfaces")
 need(i[0] == {"id": 7, "active_pairs": 12, "max_penetration": 1.5e-3, "switched_pairs_max": 4,
-              "switched_pairs_total": 40, "added_mass": 2.5e-6, "removed_nodes": 3}, "interface 7 " + repr(i[0]))
+              "switched_pairs_total": 40, "added_mass": 2.5e-6, "removed_nodes": 3, "candidates_mean": 2468.3,
+              "search_sorts": 17}, "interface 7 " + repr(i[0]))
+need(isinstance(i[0]["search_sorts"], int), "search_sorts is an integer")
 need(i[1]["id"] == 9 and i[1]["max_penetration"] == 0, "interface 9")
 )PY");
   const std::string cmd = "/usr/bin/python3 " + script + " " + path;
@@ -794,6 +804,13 @@ TEST_CASE("NAME_summary.json reads back through read_summary_json", "[engine-io]
   CHECK(r.energy.contact_lagrange == 0.4);
   CHECK(r.energy.external_work == 1.0);
   CHECK(r.energy.initial_total == 12.0);
+  REQUIRE(r.interfaces.size() == 2);
+  CHECK(r.interfaces[0].id == 7);
+  CHECK(r.interfaces[0].removed_nodes == 3);
+  CHECK(r.interfaces[0].candidates_mean == 2468.3);
+  CHECK(r.interfaces[0].search_sorts == 17);
+  CHECK(r.interfaces[1].candidates_mean == 0);
+  CHECK(r.interfaces[1].search_sorts == 0);
 
   // Not JSON, or not a summary: an error naming the file.
   for (const char* bad :

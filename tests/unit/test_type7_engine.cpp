@@ -1,11 +1,18 @@
 // TYPE7 in the engine, the paths a deck cannot reach reliably: a secondary node whose remaining gap
 // (g - p)/g is below 1e-6 cannot be held by the hyperbolic penalty (type7-lagdt.md 4.3) and is deactivated
-// with a warning naming the node and the interface.
+// with a warning naming the node and the interface. The search's workload the results report: candidate
+// pairs per active cycle and sorts, against a brute-force search on the same coordinates.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string>
 
+#include "contact/type7_engine.hpp"
 #include "contact/type7_prepare.hpp"
+#include "contact/type7_search.hpp"
 #include "parser/build_run_controls.hpp"
 #include "solver/explicit_engine.hpp"
 #include "test_util.hpp"
@@ -56,4 +63,92 @@ TEST_CASE("a node at the surface (remaining gap below 1e-6 of the gap) is deacti
   }
   // Deactivated nodes get no contact force afterwards.
   CHECK(engine.contact()->touched().empty());
+}
+
+TEST_CASE("TYPE7 results count the search's candidate pairs per active cycle and its sorts",
+          "[type7-engine]") {
+  // The impact benchmark's model at N = 20 with a 4 x 4 x 4 block of 10 mm bricks over 50 mm plate shells.
+  // Prescribed motion (no solver): the block slides 0.37 mm in x per cycle for 40 cycles, the plate stays.
+  // Expected values come from the rule of type7_search.cpp, not from the search: the margin is Bumult times
+  // the mean main segment edge at the first sort; a sort is due when 2 d >= margin, d the block's travel
+  // since the last sort (every tracked node of both interfaces moves with the block or not at all); between
+  // sorts the candidates are those of brute_force_candidates at the coordinates of the last sort.
+  radx::test::TempDir dir;
+  const std::string gen = "/usr/bin/python3 " + std::string(RADX_SOURCE_DIR) +
+                          "/bench/gen_shell_plate.py --n 20 --impact --block 4 --out " + dir.path().string() +
+                          " > " + dir.file("gen.txt");
+  REQUIRE(std::system(gen.c_str()) == 0);
+  std::ifstream deck(dir.file("PLATE20I_0000.rad"));
+  std::stringstream text;
+  text << deck.rdbuf();
+  auto m = radx::test::model_of_deck(text.str());
+  radx::contact::prepare_type7_interfaces(m);
+  REQUIRE(m.interfaces.size() == 2);
+  const std::size_t nn = m.nodes.size();
+  std::vector<std::uint8_t> is_block(nn, 0);
+  for (const auto n : m.interfaces[0].secondary_nodes) is_block[static_cast<std::size_t>(n)] = 1;
+
+  std::vector<double> x = m.nodes.x, y = m.nodes.y, z = m.nodes.z, vx(nn, 0.0), vy(nn, 0.0), vz(nn, 0.0);
+  std::vector<double> mass(nn, 1e-6), added(nn, 0.0);
+  std::vector<std::uint8_t> fixed(nn, 0);
+  const double step = 0.37;  // mm per cycle
+  const int cycles = 40;
+
+  // Independent count per interface.
+  std::vector<double> expected_mean;
+  std::vector<std::int64_t> expected_sorts;
+  for (const auto& in : m.interfaces) {
+    REQUIRE(in.igap == 0);
+    REQUIRE(in.contact_law_id == 0);
+    const auto& segs = m.surfaces[static_cast<std::size_t>(in.main_surface)].segments;
+    double edges = 0;
+    std::size_t count = 0;
+    const auto len = [&](std::int32_t a, std::int32_t b) {
+      const auto i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
+      return std::hypot(x[i] - x[j], y[i] - y[j], z[i] - z[j]);
+    };
+    for (const auto& sg : segs) {
+      const bool tri = sg[2] == sg[3];
+      edges += len(sg[0], sg[1]) + len(sg[1], sg[2]) +
+               (tri ? len(sg[2], sg[0]) : len(sg[2], sg[3]) + len(sg[3], sg[0]));
+      count += tri ? 3 : 4;
+    }
+    const double margin = in.bumult * edges / static_cast<double>(count);
+    std::int64_t sum = 0, sorts = 0;
+    std::size_t held = 0;
+    int last_sort = 0;
+    for (int k = 0; k < cycles; ++k) {
+      if (k == 0 || 2 * step * (k - last_sort) >= margin) {
+        std::vector<double> xs = x;
+        for (std::size_t n = 0; n < nn; ++n)
+          if (is_block[n]) xs[n] += step * k;
+        held = radx::contact::brute_force_candidates({xs, y, z}, in.secondary_nodes, segs, in.gapmin + margin)
+                   .size();
+        ++sorts;
+        last_sort = k;
+      }
+      sum += static_cast<std::int64_t>(held);
+    }
+    expected_mean.push_back(static_cast<double>(sum) / cycles);
+    expected_sorts.push_back(sorts);
+  }
+  // Margins 0.2 x 50 mm = 10 mm and 0.2 x 10 mm = 2 mm: a sort every 14 and every 3 cycles.
+  CHECK(expected_sorts == std::vector<std::int64_t>{3, 14});
+
+  radx::contact::Type7Contact contact(m, radx::contact::ContactControls{});
+  const double dt = 1e-6;
+  for (int k = 0; k < cycles; ++k) {
+    for (std::size_t n = 0; n < nn; ++n)
+      if (is_block[n]) x[n] = m.nodes.x[n] + step * k;
+    contact.compute(k * dt, k == 0 ? 0.0 : dt, {x, y, z, vx, vy, vz, mass, added, fixed, {}});
+  }
+  const auto results = contact.results();
+  REQUIRE(results.size() == 2);
+  for (std::size_t i = 0; i < 2; ++i) {
+    INFO("interface " << results[i].id);
+    CHECK(results[i].active_cycles == cycles);
+    CHECK(results[i].search_sorts == expected_sorts[i]);
+    CHECK(results[i].mean_candidates() == Approx(expected_mean[i]).epsilon(1e-15));
+    CHECK(results[i].mean_candidates() > 0);
+  }
 }
