@@ -66,7 +66,7 @@ def first_power_of_ten_above(n):
 
 
 def starter(n, impact, root, lagdt=False, ishell=1, isolid=1, block_nx=BLOCK_NX, brick=L_PLATE / 100.0,
-            block_z0=BLOCK_Z0):
+            block_z0=BLOCK_Z0, bumult=0.0):
     nn = n + 1
     d = rc.Deck(fill=0)
     d.raw("#RADIOSS STARTER")
@@ -146,7 +146,7 @@ def starter(n, impact, root, lagdt=False, ishell=1, isolid=1, block_nx=BLOCK_NX,
                 (2, "Plate nodes on block outer faces", 2, 2, 0, 0, 0.2, 2, 0.0)):
             d.card("/INTER/LAGDT/TYPE7" if lagdt else "/INTER/TYPE7", iid, title, grnd_IDs=grnod, surf_IDm=surf,
                    Istf=istf, Stmax="1E30" if istf >= 2 else 0.0, Stfac=1.0, Fric=fric, IBC=rc.ibc_code(0, 0, 0),
-                   Inacti=inacti, VISs=viss, VISf=1.0, Iform=iform)
+                   Inacti=inacti, VISs=viss, VISf=1.0, Bumult=bumult, Iform=iform)
     d.ruler()
     d.card("/TH/NODE", 1, "Plate centre", variables=["DEF"], rows=[(1 + (n // 2) + nn * (n // 2), 0, "Plate centre")])
     d.card("/TH/PART", 2, "Parts", variables=["DEF"], ids=[1, 2] if impact else [1])
@@ -204,6 +204,9 @@ def main(argv):
                    help="formulation of the plate's shells: 1 (default), 12 (QBAT) or 24 (QEPH)")
     p.add_argument("--isolid", type=int, choices=(1, 24), default=1,
                    help="with --impact: the block's brick formulation, 1 (default) or 24 (HEPH; root name _HEPH)")
+    p.add_argument("--bumult", type=float, default=0.0,
+                   help="with --impact: the interfaces' search margin factor Bumult (default 0: Radioss's default "
+                        "by model size, 0.2, then 0.3 above 1.5 M nodes and 0.4 above 2.5 M)")
     args = p.parse_args(argv)
     if args.n < 2:
         p.error("--n must be at least 2")
@@ -226,7 +229,7 @@ def main(argv):
     e_path = os.path.join(args.out, root + "_0001.rad")
     rc.write(s_path, starter(args.n, args.impact, root, lagdt=args.contact == "lagdt", ishell=args.ishell,
                              isolid=args.isolid, block_nx=args.block, brick=args.brick_size,
-                             block_z0=THICK / 2 + args.gap))
+                             block_z0=THICK / 2 + args.gap, bumult=args.bumult))
     lines, tstop = engine(args.n, root, args.tmin if args.contact != "type7" else 0.0, args.tstop)
     rc.write(e_path, lines)
     print("wrote %s and %s: %d shells, %d plate nodes%s, Tstop %g s (%.1f s)" %
