@@ -160,7 +160,7 @@ int main(int argc, char** argv) {
     L.group_array(p, "small", g.small, n, Mode::Read);
     L.group_array(p, "sig [points][5]", g.sig, n, Mode::ReadWrite);
     L.group_array(p, "eps_p [points]", g.eps_p, n, Mode::ReadWrite);
-    L.group_array(p, "res [8] (old resultants)", g.res, n, Mode::ReadWrite);
+    if (g.props.n_points > 0) L.group_array(p, "res [8] (old resultants)", g.res, n, Mode::ReadWrite);
     if (mat.fail.on) {
       L.group_array(p, "dmg [points]", g.dmg, n, Mode::ReadWrite);
       L.group_array(p, "fail_scale", g.fail_scale, n, Mode::Read);

@@ -17,8 +17,9 @@
 # element, the bytes moved per element-cycle (bench/cycle_traffic.cpp, from the engine's arrays) and the ratio
 # of the measured cost to the traffic limit (bytes / triad bandwidth of bench/stream_bandwidth.cpp on as many
 # threads, measured at the start), for the whole cycle and for the element loop alone (the listing's element
-# loop row: the passes the byte count covers, without contact and the time history). A size whose memory would not fit (estimated from the previous size's bytes
-# per element, against MemAvailable) is skipped with a note.
+# loop row: the passes the byte count covers, without contact and the time history). A size whose memory
+# would not fit (estimated from the previous size's bytes per element, against MemAvailable) is skipped with
+# a note.
 #
 # The interfaces' search margin factor is Bumult 0.2 at every size (--bumult; 0 takes Radioss's default by
 # model size, which doubles it to 0.4 above 2.5 M nodes, that is at N = 1600: three times the candidate pairs
@@ -41,7 +42,7 @@ while [[ $# -gt 0 ]]; do
     --cycles) cycles=$2; shift 2 ;;
     --bumult) bumult=$2; shift 2 ;;
     --keep) keep=$2; shift 2 ;;
-    -h|--help) sed -n '2,29p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
     *) echo "impact_scale: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -128,7 +129,8 @@ EOF
     # The element loop alone (element forces, their sums, assembly, integration): the passes the byte count
     # covers, so its ratio compares like with like (the whole cycle adds contact and the time history).
     loop=$(sed -n 's/^ *element loop *\([0-9.e+-]*\) us.*/\1/p' "$dir/run.$t")
-    loop_ratio=$(awk -v c="${loop:-0}" -v l="$limit" 'BEGIN {printf "%.2f", c / l}')
+    loop_ratio=-
+    [[ -n "$loop" ]] && loop_ratio=$(awk -v c="$loop" -v l="$limit" 'BEGIN {printf "%.2f", c / l}')
     pairs=$(awk '/^  interface [0-9]+: active pairs/ {sub(",", "", $5); p = p (p == "" ? "" : "/") $5} END {print p}' "$dir/run.$t")
     rows+=("| $n | $elems | $t | $ncyc | $wall | $cpu | $cost | ${contact:-0} % | ${pairs:--} | $((rss / 1024)) | $per_elem | $bytes | $limit | $ratio | ${loop:--} | $loop_ratio |")
     echo "N = $n, $t thread(s): $cost us/element-cycle, $ncyc cycles, contact ${contact:-0} %, peak $((rss / 1024)) MB" >&2

@@ -163,6 +163,7 @@ std::string summary_json(const RunSummary& s) {
   w.field_int("threads", s.threads);
   w.field("wall_seconds", s.wall_seconds);
   w.field("us_per_element_cycle", us_per_element_cycle(s));
+  w.field("element_loop_seconds", s.element_loop_seconds);
   w.field("element_loop_us_per_element_cycle", us_per_element_cycle(s, s.element_loop_seconds));
   w.field("initial_mass", s.initial_mass);
   w.field("mass", s.mass);
@@ -521,6 +522,7 @@ bool read_summary_json(const std::string& path, RunSummary& s, std::string& erro
     r.elements = static_cast<std::size_t>(number_member(d, "elements"));
     r.threads = static_cast<int>(number_member(d, "threads", 1));
     r.wall_seconds = number_member(d, "wall_seconds");
+    r.element_loop_seconds = number_member(d, "element_loop_seconds");
     r.initial_mass = number_member(d, "initial_mass");
     r.mass = number_member(d, "mass");
     r.added_mass = number_member(d, "added_mass");

@@ -5,16 +5,16 @@
 //
 // Keys: status ("normal", "error", "interrupted" by SIGTERM or SIGINT, or "running": written when the run
 // starts, so a run killed outright leaves it), message, run_name, run_number, cycles, time, dt, nodes,
-// elements, threads, wall_seconds, us_per_element_cycle, element_loop_us_per_element_cycle (the element
-// loop's wall time: element forces, their sums, the assembly, the integration), initial_mass, mass,
-// added_mass, momentum [x, y, z], energy {kinetic, kinetic_translational, kinetic_rotational, internal,
-// hourglass, external_work, contact_elastic, contact_damping, contact_friction, contact_lagrange,
-// initial_total, total, error_percent}, interfaces [{id, active_pairs, max_penetration, switched_pairs_max,
-// switched_pairs_total, added_mass, removed_nodes, candidates_mean: the TYPE7 search's candidate pairs per
-// cycle the interface was active, search_sorts: its sorts}], substitutions [text], warnings [text: the engine
-// deck's warnings as the listing gives them, then "cycle N: ..." for those during the run, such as an energy
-// error past 10 % and 50 %; at most 100, then one "... and N more"], and lagrange_solver {...} when a LAGDT
-// interface could switch.
+// elements, threads, wall_seconds, us_per_element_cycle, element_loop_seconds and
+// element_loop_us_per_element_cycle (the element loop's wall time: element forces, their sums, the assembly,
+// the integration), initial_mass, mass, added_mass, momentum [x, y, z], energy {kinetic,
+// kinetic_translational, kinetic_rotational, internal, hourglass, external_work, contact_elastic,
+// contact_damping, contact_friction, contact_lagrange, initial_total, total, error_percent}, interfaces [{id,
+// active_pairs, max_penetration, switched_pairs_max, switched_pairs_total, added_mass, removed_nodes,
+// candidates_mean: the TYPE7 search's candidate pairs per cycle the interface was active, search_sorts: its
+// sorts}], substitutions [text], warnings [text: the engine deck's warnings as the listing gives them, then
+// "cycle N: ..." for those during the run, such as an energy error past 10 % and 50 %; at most 100, then one
+// "... and N more"], and lagrange_solver {...} when a LAGDT interface could switch.
 //
 // read_summary_json reads a document back (for `radx regress`, which runs each deck in a child process and
 // reads its figures from this file): a small strict JSON reader, no library.

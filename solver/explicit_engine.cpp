@@ -978,7 +978,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     if (!choose_time_step(L, res)) break;
     sensors_.update(L.time, L.dt2);
     kinematics_->transfer_tied_forces();  // 4b. TYPE2: before the accelerations, as in OpenRadioss
-    if (!fuse_accelerations_) accelerations();
+    if (!fuse_accelerations_) accelerations(L);
     if (!lagrange_correction(L, res)) break;
     kinematics_->kinematic_conditions(L.time, L.dt1, L.dt2);
     if (!accelerometers_->empty()) accelerometers_->update(nodes_, L.dt12(), L.dt2 > 0 ? L.dt2 : L.dt1);
@@ -1131,11 +1131,13 @@ bool ExplicitEngine::choose_time_step(LoopState& L, RunResult& res) {
 }
 
 // 5. a = f / m for every node: after the TYPE2 ties moved forces (otherwise the assembly pass did it).
-void ExplicitEngine::accelerations() {
+void ExplicitEngine::accelerations(LoopState& L) {
+  const auto t0 = std::chrono::steady_clock::now();
   auto& s = nodes_;
   node_pass([&](std::int64_t, std::size_t first, std::size_t last) {
     for (std::size_t n = first; n < last; ++n) accelerate_node(s, n);
   });
+  L.element_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // 6. The switched LAGDT pairs' multipliers correct a; their forces join f (outputs: reactions, internal

@@ -242,7 +242,7 @@ class ExplicitEngine {
   void contact_forces(LoopState& L);
   void tell_contact_deleted_elements();
   bool choose_time_step(LoopState& L, RunResult& res);
-  void accelerations();
+  void accelerations(LoopState& L);
   bool lagrange_correction(LoopState& L, RunResult& res);
   bool outputs(LoopState& L, bool last, const std::function<bool(const CycleReport&)>& on_cycle,
                RunResult& res);

@@ -55,10 +55,10 @@
 // thirteen square roots and divisions) overlap with those of the others: gather; frame
 // (brick_corotational_frame_block); local geometry, strain rate and hourglass rates; the material, element by
 // element (the law is a call); bulk viscosity, energy, step; hourglass stresses; forces; state updates.
-// Square roots are taken in passes of their own (sqrt_in_place: std::sqrt may set errno, which keeps GCC
-// from vectorising a loop). Elements deleted at entry or with a bad volume go through the arithmetic with
-// every state update masked (pick) and get their zero forces at the end. The mode sums and the nodal forces
-// are the one-point brick's (brick_mode_sums, brick_nodal_forces: the same quantities, fewer operations).
+// Square roots are taken in passes of their own (sqrt_in_place). Elements deleted at entry or with a bad
+// volume go through the arithmetic with every state update masked (pick) and get their zero forces at the
+// end. The mode sums and the nodal forces are the one-point brick's (brick_mode_sums, brick_nodal_forces: the
+// same quantities, fewer operations).
 #include <algorithm>
 #include <bit>
 #include <cmath>

@@ -11,9 +11,6 @@
 #include <numbers>
 #include <vector>
 
-#if defined(__SSE2__)
-#endif
-
 #include "solver/model/foam_table.hpp"
 #include "solver/model/model.hpp"
 

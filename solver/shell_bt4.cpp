@@ -85,7 +85,7 @@ namespace radx::solver {
 
 namespace {
 
-constexpr int kBlock = 64;  // elements per block: the scratch (about 90 KB) stays in the core's caches
+constexpr int kBlock = 64;  // elements per block: the scratch (about 100 KB) stays in the core's caches
 
 inline double signed_floor(double v, double eps) {
   return v >= 0 ? std::max(v, eps) : std::min(v, -eps);

@@ -89,7 +89,7 @@ inline std::size_t sig_index(int p, int c, int i) {
 }
 
 // N = 0 stores the resultants in `sig` as [8][G]: FOR xx yy xy yz zx, then MOM xx yy xy. allocate() gives
-// [5][G] for N = 0; grow the buffer once (outside the element loop).
+// [8][G] for N = 0; a group whose N was set to 0 after it is grown here, once (outside the element loop).
 inline void ensure_resultant_storage(ShellGroup& g) {
   const std::size_t need = 8 * static_cast<std::size_t>(kGroupSize);
   if (g.props.n_points <= 0 && g.sig.size() < need) g.sig.resize(need, 0.0);
@@ -314,8 +314,10 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
         f += rule.w[p] * sig_base[sig_index(p, c, i0 + j)];
         mm += rule.m[p] * sig_base[sig_index(p, c, i0 + j)];
       }
-      assert(f == s.for_old[c][j] && "ShellGroup::res out of date: sig written without its resultants");
-      assert((c >= 3 || mm == s.mom_old[c][j]) && "ShellGroup::res out of date");
+      // (a NaN, left by an element deleted with a non-finite stress, equals itself here)
+      const auto same = [](double a, double b) { return a == b || (a != a && b != b); };
+      assert(same(f, s.for_old[c][j]) && "ShellGroup::res out of date: sig written without its resultants");
+      assert((c >= 3 || same(mm, s.mom_old[c][j])) && "ShellGroup::res out of date");
     }
 #endif
   bool any_redo = false, any_put_back = false;

@@ -734,6 +734,7 @@ need(d["dt"] == 1.0 / 3.0, "dt")
 need(d["nodes"] == 1234 and d["elements"] == 1000 and d["threads"] == 4, "counts")
 need(d["wall_seconds"] == 2.0, "wall")
 need(abs(d["us_per_element_cycle"] - 4.0) <= 1e-12, "cost")
+need(d["element_loop_seconds"] == 1.5, "element loop wall time")
 need(abs(d["element_loop_us_per_element_cycle"] - 3.0) <= 1e-12, "element loop cost")
 need(d["mass"] == 7.625 and d["added_mass"] == 0.125, "mass")
 need(d["momentum"] == [1e-300, -2.5, None], "momentum " + repr(d["momentum"]))
@@ -794,6 +795,7 @@ TEST_CASE("NAME_summary.json reads back through read_summary_json", "[engine-io]
   CHECK(r.nodes == 1234);
   CHECK(r.elements == 1000);
   CHECK(r.threads == 4);
+  CHECK(r.element_loop_seconds == 1.5);
   CHECK(r.mass == 7.625);
   CHECK(r.momentum[0] == 1e-300);
   CHECK(std::isnan(r.momentum[2]));  // infinity was written as null
