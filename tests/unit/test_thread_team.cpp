@@ -261,14 +261,7 @@ struct ImpactDeck {
 };
 ImpactDeck impact_deck() {
   radx::test::TempDir dir;
-  const std::string gen = "/usr/bin/python3 " + std::string(RADX_SOURCE_DIR) +
-                          "/bench/gen_shell_plate.py --n 70 --impact --out " + dir.path().string() + " > " +
-                          dir.file("gen.txt");
-  REQUIRE(std::system(gen.c_str()) == 0);
-  std::ifstream in(dir.file("PLATE70I_0000.rad"));
-  std::stringstream text;
-  text << in.rdbuf();
-  ImpactDeck deck{radx::test::model_of_deck(text.str()), {}};
+  ImpactDeck deck{radx::test::impact_benchmark_model(dir, 70), {}};
   radx::contact::prepare_type7_interfaces(deck.model);  // the starter's gaps and search boxes
   radx::Diagnostics d;
   deck.controls = radx::read_run_controls(dir.file("PLATE70I_0001.rad"), d);

@@ -74,14 +74,7 @@ TEST_CASE("TYPE7 results count the search's candidate pairs per active cycle and
   // since the last sort (every tracked node of both interfaces moves with the block or not at all); between
   // sorts the candidates are those of brute_force_candidates at the coordinates of the last sort.
   radx::test::TempDir dir;
-  const std::string gen = "/usr/bin/python3 " + std::string(RADX_SOURCE_DIR) +
-                          "/bench/gen_shell_plate.py --n 20 --impact --block 4 --out " + dir.path().string() +
-                          " > " + dir.file("gen.txt");
-  REQUIRE(std::system(gen.c_str()) == 0);
-  std::ifstream deck(dir.file("PLATE20I_0000.rad"));
-  std::stringstream text;
-  text << deck.rdbuf();
-  auto m = radx::test::model_of_deck(text.str());
+  auto m = radx::test::impact_benchmark_model(dir, 20, 4);
   radx::contact::prepare_type7_interfaces(m);
   REQUIRE(m.interfaces.size() == 2);
   const std::size_t nn = m.nodes.size();

@@ -58,14 +58,7 @@ TEST_CASE("TYPE7 contact gives == results whatever order or thread its chunks ru
   // resolve to the same forces), 8,281 plate nodes: both interfaces have two or more chunks of tracked nodes
   // and of candidates once the block is down.
   radx::test::TempDir dir;
-  const std::string gen = "/usr/bin/python3 " + std::string(RADX_SOURCE_DIR) +
-                          "/bench/gen_shell_plate.py --n 90 --impact --block 30 --out " +
-                          dir.path().string() + " > " + dir.file("gen.txt");
-  REQUIRE(std::system(gen.c_str()) == 0);
-  std::ifstream in(dir.file("PLATE90I_0000.rad"));
-  std::stringstream text;
-  text << in.rdbuf();
-  auto m = radx::test::model_of_deck(text.str());
+  auto m = radx::test::impact_benchmark_model(dir, 90, 30);
   radx::contact::prepare_type7_interfaces(m);
   REQUIRE(m.interfaces.size() == 2);
 

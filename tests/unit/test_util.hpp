@@ -7,6 +7,7 @@
 #include "parser/deck.hpp"
 #include "parser/model_builder.hpp"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -108,5 +109,22 @@ inline radx::model::Model model_of_deck(const std::string& text) {
   REQUIRE_FALSE(diags.has_errors());
   return m;
 }
+
+#ifdef RADX_SOURCE_DIR
+// The impact benchmark's decks (bench/gen_shell_plate.py --n N --impact, --block B unless 0) written into
+// `dir` as PLATE<N>I_0000.rad and _0001.rad, and the starter deck's model read and built as the starter does
+// (its TYPE7 gaps and search boxes not yet prepared).
+inline radx::model::Model impact_benchmark_model(const TempDir& dir, int n, int block = 0) {
+  const std::string gen = "/usr/bin/python3 " + std::string(RADX_SOURCE_DIR) +
+                          "/bench/gen_shell_plate.py --n " + std::to_string(n) + " --impact" +
+                          (block > 0 ? " --block " + std::to_string(block) : std::string()) + " --out " +
+                          dir.path().string() + " > " + dir.file("gen.txt");
+  REQUIRE(std::system(gen.c_str()) == 0);
+  std::ifstream in(dir.file("PLATE" + std::to_string(n) + "I_0000.rad"));
+  std::stringstream text;
+  text << in.rdbuf();
+  return model_of_deck(text.str());
+}
+#endif
 
 }  // namespace radx::test
