@@ -132,7 +132,9 @@ EOF
     loop_ratio=-
     [[ -n "$loop" ]] && loop_ratio=$(awk -v c="$loop" -v l="$limit" 'BEGIN {printf "%.2f", c / l}')
     pairs=$(awk '/^  interface [0-9]+: active pairs/ {sub(",", "", $5); p = p (p == "" ? "" : "/") $5} END {print p}' "$dir/run.$t")
-    rows+=("| $n | $elems | $t | $ncyc | $wall | $cpu | $cost | ${contact:-0} % | ${pairs:--} | $((rss / 1024)) | $per_elem | $bytes | $limit | $ratio | ${loop:--} | $loop_ratio |")
+    # Candidate pairs per element: the interfaces' mean candidate pairs per cycle (listing), summed.
+    cands=$(awk -v e="$elems" '/^  interface [0-9]+: active pairs/ {for (i = 1; i < NF; ++i) if ($i == "cycle") s += $(i + 1)} END {printf "%.3f", s / e}' "$dir/run.$t")
+    rows+=("| $n | $elems | $t | $ncyc | $wall | $cpu | $cost | ${contact:-0} % | ${pairs:--} | $cands | $((rss / 1024)) | $per_elem | $bytes | $limit | $ratio | ${loop:--} | $loop_ratio |")
     echo "N = $n, $t thread(s): $cost us/element-cycle, $ncyc cycles, contact ${contact:-0} %, peak $((rss / 1024)) MB" >&2
   done
   grep -E "^  interface" "$dir/run.1" | sed "s/^/  N = $n: /" >&2 || true
@@ -147,8 +149,8 @@ done
 echo
 echo "Engine (load at the end $(cut -d' ' -f1-3 /proc/loadavg)):"
 echo
-echo "| N | elements | threads | cycles | wall s | CPU s | us/element-cycle | contact share | active pairs at the end (if 1/2) | peak RSS MB | peak bytes/element | bytes moved/element-cycle | traffic limit us | ratio to limit | element loop us/element-cycle | element loop ratio to limit |"
-echo "|--:|---------:|--------:|-------:|-------:|------:|-----------------:|--------------:|-----:|------------:|-------------------:|--------------------------:|-----------------:|---------------:|------:|------:|"
+echo "| N | elements | threads | cycles | wall s | CPU s | us/element-cycle | contact share | active pairs at the end (if 1/2) | candidate pairs per element | peak RSS MB | peak bytes/element | bytes moved/element-cycle | traffic limit us | ratio to limit | element loop us/element-cycle | element loop ratio to limit |"
+echo "|--:|---------:|--------:|-------:|-------:|------:|-----------------:|--------------:|-----:|-----:|------------:|-------------------:|--------------------------:|-----------------:|---------------:|------:|------:|"
 printf '%s\n' "${rows[@]}"
 echo
 echo "Starter:"
