@@ -23,6 +23,11 @@ namespace radx::solver {
 
 namespace {
 
+// Wall seconds from t0 to now (the stages' timers of the listing).
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Node stages run in chunks of this many nodes (about 0.1 ms of work each): chunk boundaries never depend
 // on the thread count, and a model of fewer than two chunks' nodes runs them on one thread.
@@ -640,18 +645,16 @@ void ExplicitEngine::add_group_forces(std::int64_t flat, std::int32_t slot) {
     };
     if (code == code_end) {  // the group writes into this region only: every entry
       // The nodes per element as a constant for the usual counts, so the element's entries are unrolled.
-      const auto all = [&]<std::size_t N>(std::integral_constant<std::size_t, N>) {
+      const auto all = [&](auto nodes) {  // an integral_constant, or the run-time count
         for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
-          for (std::size_t q = 0; q < N; ++q) add(i, q);
+          for (std::size_t q = 0; q < static_cast<std::size_t>(nodes); ++q) add(i, q);
       };
       switch (nodes_per_element) {
         case 2: all(std::integral_constant<std::size_t, 2>{}); break;
         case 3: all(std::integral_constant<std::size_t, 3>{}); break;
         case 4: all(std::integral_constant<std::size_t, 4>{}); break;
         case 8: all(std::integral_constant<std::size_t, 8>{}); break;
-        default:
-          for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
-            for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q) add(i, q);
+        default: all(static_cast<std::size_t>(nodes_per_element));
       }
     } else {
       for (; code != code_end; ++code) add(*code >> 3, *code & 7u);
@@ -1017,7 +1020,7 @@ void ExplicitEngine::element_forces(LoopState& L) {
   const auto t0 = std::chrono::steady_clock::now();
   compute_element_forces(CycleInfo{L.dt1, L.dt2, L.time});
   assemble_and_accelerate(fuse_accelerations_);
-  L.element_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  L.element_seconds += seconds_since(t0);
 }
 
 // 2. Contact at x^n with v^{n-1/2}: Idel first (contact learns which elements were deleted), then the penalty
@@ -1044,7 +1047,7 @@ void ExplicitEngine::contact_forces(LoopState& L) {
     L.contact_control.user_id = step.interface_id;
     L.contact_control.node_id = step.node_id;
   }
-  L.contact_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  L.contact_seconds += seconds_since(t0);
 }
 
 void ExplicitEngine::tell_contact_deleted_elements() {
@@ -1137,7 +1140,7 @@ void ExplicitEngine::accelerations(LoopState& L) {
   node_pass([&](std::int64_t, std::size_t first, std::size_t last) {
     for (std::size_t n = first; n < last; ++n) accelerate_node(s, n);
   });
-  L.element_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  L.element_seconds += seconds_since(t0);
 }
 
 // 6. The switched LAGDT pairs' multipliers correct a; their forces join f (outputs: reactions, internal
@@ -1161,7 +1164,7 @@ bool ExplicitEngine::lagrange_correction(LoopState& L, RunResult& res) {
                   std::to_string(L.cycle) + ", time " + std::to_string(L.time) + ": " + e.what();
     return false;
   }
-  L.contact_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  L.contact_seconds += seconds_since(t0);
   return true;
 }
 
@@ -1243,7 +1246,7 @@ bool ExplicitEngine::integrate(LoopState& L, RunResult& res) {
   loads_zeroed_ = true;
   const bool finite =
       std::all_of(chunk_finite.begin(), chunk_finite.end(), [](std::uint8_t f) { return f != 0; });
-  L.element_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  L.element_seconds += seconds_since(t0);
   kinematics_->after_update(dt2);
   if (finite) return true;
   res.status = RunStatus::Error;
