@@ -45,7 +45,7 @@ done
 # run SIDE ENGINE CORE: one engine run in SIDE's directory, pinned to CORE.
 run() {
   (cd "$work/$1" && taskset -c "$3" "$2" "${root}_0001.rad" --out . --threads 1 --no-plot > run.out 2>&1) ||
-    { echo "ab_engines: $2 failed (listing: $work/$1/run.out)" >&2; tail -5 "$work/$1/run.out" >&2; exit 1; }
+    { echo "ab_engines: $2 failed; the end of its listing:" >&2; tail -5 "$work/$1/run.out" >&2; exit 1; }
 }
 cost() { awk '/^ +cost/ {print $2}' "$work/$1/run.out"; }
 loop() { sed -n 's/^ *element loop *\([0-9.e+-]*\) us.*/\1/p' "$work/$1/run.out"; }
