@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Two radx-engine builds compared on one deck, run at the same time, one per core (taskset), swapping the
 # cores after each pair. This host's speed drifts by 10 % or more between runs made one after the other (the
-# same engine gave an element loop of 0.279 to 0.312 us per element-cycle in three consecutive runs), which
+# same engine gave an element loop of 0.279 to 0.312 us per element-cycle in three runs within ten minutes), which
 # hides a few-percent change; two engines running side by side see the same host, so their ratio holds. They
-# share the memory bandwidth, as a 2-thread run's threads do, and each runs on 1 thread.
+# share the memory bandwidth, as a 2-thread run's threads do, and each runs on 1 thread. The same engine against
+# itself differs by -4 to +3 % in a pair (medians of 4 pairs 1.004 apart): a change below 2 % needs more pairs.
 #
 # For each pair: the listing's cost (us per element-cycle) and element loop of each engine; at the end the
 # medians and the ratio B / A of the medians (below 1: B is faster).
@@ -63,8 +64,10 @@ for ((p = 1; p <= pairs; ++p)); do
   pid_a=$!
   run b "$engine_b" "$((1 - core_a))" &
   pid_b=$!
-  wait "$pid_a"
-  wait "$pid_b"
+  failed=0  # both are waited for, so that neither outlives the script's clean-up
+  wait "$pid_a" || failed=1
+  wait "$pid_b" || failed=1
+  ((failed == 0)) || exit 1
   a_costs+=("$(cost a)") b_costs+=("$(cost b)") a_loops+=("$(loop a)") b_loops+=("$(loop b)")
   echo "| $p | $core_a | $(cost a) | $(loop a) | $(cost b) | $(loop b) |"
 done
