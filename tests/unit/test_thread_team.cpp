@@ -6,10 +6,7 @@
 #include <atomic>
 #include <catch2/catch.hpp>
 #include <chrono>
-#include <cstdlib>
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <thread>
 #include <utility>
 #include <vector>
