@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# Whether a change that is meant to keep every result keeps it to the bit.
+#
+#   capture BIN OUT   runs every sample deck under decks/ (radx regress --keep, 2 at a time) and the impact
+#                     benchmark model of bench/gen_shell_plate.py (N = 40, Isolid 1 and 24) with the radx,
+#                     radx-starter and radx-engine found in BIN, and keeps their outputs in OUT.
+#   compare A B       compares two captures: every HDF5 file (model files, states, time histories) with
+#                     h5diff and no tolerance, every NAME_summary.json with its timings and host figures
+#                     left out, and every listing (.out) with its timing lines left out. Prints each file
+#                     that differs; exit 1 when one does, or when a deck ran in one capture and not the other.
+#
+# Copy the executables of the reference build to BIN before changing the code (the script runs them from
+# there), for example: mkdir -p /tmp/ref && cp build/apps/radx build/apps/radx-starter build/apps/radx-engine
+# /tmp/ref/.
+# Usage: scripts/results_identity.sh capture BIN OUT | compare A B
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+usage() {
+  sed -n '2,/^# Usage/p' "$0" | sed 's/^# \{0,1\}//'
+  exit 2
+}
+
+capture() {
+  local bin=$1 out=$2
+  for exe in radx radx-starter radx-engine; do
+    [[ -x "$bin/$exe" ]] || { echo "error: $bin/$exe is not an executable" >&2; exit 2; }
+  done
+  [[ -e "$out" ]] && { echo "error: $out exists; give a new folder" >&2; exit 2; }
+  mkdir -p "$out/decks" "$out/impact"
+  out=$(cd "$out" && pwd)
+  # regress exits 1 when a deck misses its reference; the outputs are what is compared here, so go on.
+  "$bin/radx" regress decks -j 2 --keep --work "$out/decks" > "$out/regress.log" 2>&1 || true
+  for isolid in 1 24; do
+    local dir="$out/impact/isolid$isolid"
+    mkdir -p "$dir"
+    /usr/bin/python3 bench/gen_shell_plate.py --n 40 --impact --isolid "$isolid" --out "$dir" > /dev/null
+    local root
+    root=$(ls "$dir"/*_0000.rad)
+    "$bin/radx" run "$root" --out "$dir" --threads 2 --no-plot > "$dir/run.log" 2>&1
+  done
+  echo "captured $(find "$out" -name '*.h5' -o -name '*.hdf' | wc -l) HDF5 files in $out"
+}
+
+compare() {
+  local a=$1 b=$2 bad=0 n=0
+  while IFS= read -r rel; do
+    n=$((n + 1))
+    if [[ ! -e "$b/$rel" ]]; then
+      echo "only in $a: $rel"; bad=1; continue
+    fi
+    case "$rel" in
+      *.h5 | *.hdf)
+        if ! h5diff -q "$a/$rel" "$b/$rel" > /dev/null 2>&1; then
+          echo "differs: $rel"; bad=1
+        fi ;;
+      *_summary.json)
+        if ! /usr/bin/python3 - "$a/$rel" "$b/$rel" << 'EOF'; then
+import json, re, sys
+# Timings, the host and the thread count are not results.
+skip = re.compile(r"seconds|wall|_us|us_per|cost|timing|elapsed|date|host|started|finished|threads|cpu|version|path|file")
+def strip(x):
+    if isinstance(x, dict):
+        return {k: strip(v) for k, v in x.items() if not skip.search(k)}
+    if isinstance(x, list):
+        return [strip(v) for v in x]
+    return x
+a, b = (strip(json.load(open(p))) for p in sys.argv[1:3])
+sys.exit(0 if a == b else 1)
+EOF
+          echo "differs: $rel"; bad=1
+        fi ;;
+      *.out)
+        # A listing names its folder and times its stages: neither is a result.
+        local timing='wall time|starter time|writing time|us per element per cycle|% of the wall time|elapsed|seconds'
+        if ! diff -q <(sed "s#$a#ROOT#g" "$a/$rel" | grep -Ev "$timing") \
+          <(sed "s#$b#ROOT#g" "$b/$rel" | grep -Ev "$timing") > /dev/null; then
+          echo "differs: $rel"; bad=1
+        fi ;;
+    esac
+  done < <(cd "$a" && find . -type f \( -name '*.h5' -o -name '*.hdf' -o -name '*_summary.json' -o -name '*.out' \) | sort)
+  while IFS= read -r rel; do
+    [[ -e "$a/$rel" ]] || { echo "only in $b: $rel"; bad=1; }
+  done < <(cd "$b" && find . -type f \( -name '*.h5' -o -name '*.hdf' \) | sort)
+  if ((bad)); then
+    echo "results differ ($n files compared)"
+    return 1
+  fi
+  echo "identical: $n files (HDF5 to the bit, summaries and listings apart from timings)"
+}
+
+case "${1:-}" in
+  capture) [[ $# -eq 3 ]] || usage; capture "$2" "$3" ;;
+  compare) [[ $# -eq 3 ]] || usage; compare "$2" "$3" ;;
+  *) usage ;;
+esac
