@@ -9,13 +9,13 @@
 #include <utility>
 #include <vector>
 
-#include "io/energy_plot.hpp"
-#include "io/results_writer.hpp"
-#include "io/time_history.hpp"
-#include "io/unit_labels.hpp"
-#include "parser/build_run_controls.hpp"
-#include "solver/result_fields.hpp"
-#include "solver/time_history_values.hpp"
+#include "io/hdf5/results_writer.hpp"
+#include "io/hdf5/time_history.hpp"
+#include "io/listing/energy_plot.hpp"
+#include "io/listing/unit_labels.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "solver/outputs/result_fields.hpp"
+#include "solver/outputs/time_history_values.hpp"
 
 namespace radx::app {
 

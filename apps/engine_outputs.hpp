@@ -13,7 +13,7 @@
 #include <ostream>
 #include <string>
 
-#include "solver/explicit_engine.hpp"
+#include "solver/engine/explicit_engine.hpp"
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
 

@@ -25,15 +25,15 @@
 #include <string>
 #include <utility>
 
-#include "io/engine_listing.hpp"
-#include "io/model_file.hpp"
-#include "io/results_writer.hpp"
-#include "io/summary_json.hpp"
-#include "parser/build_run_controls.hpp"
-#include "parser/deck.hpp"
-#include "parser/diagnostics.hpp"
-#include "parser/plausibility.hpp"
-#include "solver/explicit_engine.hpp"
+#include "io/hdf5/model_file.hpp"
+#include "io/hdf5/results_writer.hpp"
+#include "io/listing/engine_listing.hpp"
+#include "io/listing/summary_json.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "parser/building/plausibility.hpp"
+#include "parser/reading/deck.hpp"
+#include "parser/reading/diagnostics.hpp"
+#include "solver/engine/explicit_engine.hpp"
 #include "solver/model/stable_step.hpp"
 
 namespace radx::app {

@@ -14,10 +14,10 @@
 #include "apps/engine_pipeline.hpp"
 #include "apps/regress.hpp"
 #include "apps/starter_pipeline.hpp"
-#include "io/time_history.hpp"
-#include "io/time_history_export.hpp"
-#include "parser/deck.hpp"
-#include "parser/deck_echo.hpp"
+#include "io/hdf5/time_history.hpp"
+#include "io/hdf5/time_history_export.hpp"
+#include "parser/reading/deck.hpp"
+#include "parser/reading/deck_echo.hpp"
 
 namespace {
 
@@ -165,7 +165,7 @@ int keywords(const std::vector<std::string>& args) {
   return radx::app::kExitOk;
 }
 
-// Parsing only: reading, selecting and writing are io's (io/time_history_export.hpp).
+// Parsing only: reading, selecting and writing are io's (io/hdf5/time_history_export.hpp).
 int th(const std::vector<std::string>& args) {
   std::string file, output;
   bool csv = false, have_output = false, recover = false;

@@ -28,10 +28,10 @@
 
 #include "apps/cli_common.hpp"
 #include "apps/starter_pipeline.hpp"
-#include "io/summary_json.hpp"
+#include "io/listing/summary_json.hpp"
 #include "io/xml_text.hpp"
-#include "parser/build_run_controls.hpp"
-#include "parser/deck.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "parser/reading/deck.hpp"
 
 extern char** environ;
 
@@ -570,7 +570,8 @@ void evaluate_own_reference(RegressResult& r, const RegressRunFiles& files) {
 }  // namespace
 
 std::vector<ListingPoint> listing_points(const std::string& listing_text) {
-  // CYCLE TIME TIME-STEP KIND ID ERROR% I-ENERGY K-ENERGY-T K-ENERGY-R EXT-WORK ... (io/engine_listing.cpp)
+  // CYCLE TIME TIME-STEP KIND ID ERROR% I-ENERGY K-ENERGY-T K-ENERGY-R EXT-WORK ...
+  // (io/listing/engine_listing.cpp)
   std::vector<ListingPoint> out;
   std::istringstream in(listing_text);
   std::string line;

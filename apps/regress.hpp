@@ -1,7 +1,7 @@
 // `radx regress DIR...`: the batch runner (docs/regress.md). It finds every deck under the folders given,
 // runs each in its own child process (`radx run`, the same executable) with a time limit, reads the
 // engine's NAME_summary.json, compares it with the folder's OpenRadioss `ref.extract` when there is one
-// (io/regression_extract.hpp), prints one line per deck as it finishes, then a table and totals, and
+// (io/regress/regression_extract.hpp), prints one line per deck as it finishes, then a table and totals, and
 // optionally writes the table as JSON.
 //
 // Child processes, not threads: a deck that crashes, hangs or exhausts memory ends only its own run, and
@@ -17,10 +17,10 @@
 #include <string_view>
 #include <vector>
 
-#include "io/engine_listing.hpp"
-#include "io/regress_reference.hpp"
-#include "io/regression_extract.hpp"
-#include "io/time_history.hpp"
+#include "io/hdf5/time_history.hpp"
+#include "io/listing/engine_listing.hpp"
+#include "io/regress/regress_reference.hpp"
+#include "io/regress/regression_extract.hpp"
 
 namespace radx::app {
 
@@ -44,8 +44,8 @@ struct RegressDeck {
   std::string label;                   // the folder relative to DIR (see find_regress_decks)
   std::filesystem::path starter_deck;  // NAME_0000.rad, or a one-file deck
   std::filesystem::path reference;     // ref.extract beside it; empty when none (or not this deck's)
-  // NAME.ref beside the starter deck (io/regress_reference.hpp): where the deck's own reference is, or
-  // where --update writes it. It takes precedence over ref.extract when it exists.
+  // NAME.ref beside the starter deck (io/regress/regress_reference.hpp): where the deck's own reference is,
+  // or where --update writes it. It takes precedence over ref.extract when it exists.
   std::filesystem::path own_reference;
   bool has_own_reference = false;
   bool starter_only = false;  // no engine deck beside it (NAME_0001.rad) and not a one-file deck: only the

@@ -11,13 +11,13 @@
 #include <sstream>
 
 #include "contact/type7_prepare.hpp"
-#include "io/model_file.hpp"
-#include "io/starter_listing.hpp"
-#include "parser/build_run_controls.hpp"
-#include "parser/deck.hpp"
-#include "parser/deck_echo.hpp"
-#include "parser/model_builder.hpp"
-#include "parser/plausibility.hpp"
+#include "io/hdf5/model_file.hpp"
+#include "io/listing/starter_listing.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/building/plausibility.hpp"
+#include "parser/reading/deck.hpp"
+#include "parser/reading/deck_echo.hpp"
 #include "solver/model/masses.hpp"
 #include "solver/model/stable_step.hpp"
 

@@ -33,10 +33,10 @@
 #include <string>
 #include <vector>
 
-#include "io/model_file.hpp"
-#include "parser/build_run_controls.hpp"
-#include "parser/diagnostics.hpp"
-#include "solver/explicit_engine.hpp"
+#include "io/hdf5/model_file.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "parser/reading/diagnostics.hpp"
+#include "solver/engine/explicit_engine.hpp"
 
 namespace {
 
@@ -231,9 +231,9 @@ int main(int argc, char** argv) {
   L.add("element gather", "x y z vx vy vz (element nodes)", Mode::Read, 6 * d * ne);
   L.add("element gather", "wx wy wz (shell nodes)", Mode::Read, 3 * d * ns);
 
-  // Node passes: the engine's three (solver/explicit_engine.cpp): the assembly, with a = f / m in the same
-  // pass when the engine fuses them, the accelerations on their own otherwise, and the integration, which
-  // also zeroes the next cycle's external forces and moments.
+  // Node passes: the engine's three (solver/engine/explicit_engine.cpp): the assembly, with a = f / m in the
+  // same pass when the engine fuses them, the accelerations on their own otherwise, and the integration,
+  // which also zeroes the next cycle's external forces and moments.
   const double nn = static_cast<double>(nodes.n);
   const bool fused = engine.fuses_accelerations();
   const std::string assembly = fused ? "node: assembly + accelerations" : "node: assembly";

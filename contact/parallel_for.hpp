@@ -4,7 +4,8 @@
 // team may run every chunk on the calling thread). Contact cuts its work into chunks whose boundaries depend
 // only on the model and the candidate list, never on the thread count, and each chunk writes only its own
 // outputs; whatever crosses chunks is combined in chunk order afterwards. So the results are bit-identical
-// for any ParallelFor, including one that runs the chunks in reverse (tests/unit/test_type7_parallel.cpp).
+// for any ParallelFor, including one that runs the chunks in reverse
+// (tests/unit/contact/test_type7_parallel.cpp).
 #pragma once
 
 #include <concepts>

@@ -15,7 +15,7 @@ Deck versions: the formats 90, 100, 110, 120, 130, 140 and 2017 to 2026. The lay
 from deck-format.md; those of 90 to 140 from the FORMAT(radiossNNN) blocks OpenRadioss reads each keyword with
 (the block of the highest version at or below the deck's), restated here as facts about the file format.
 
-Problems are reported with the RX codes of parser/diagnostics.hpp. For decks that carry `# expect:` lines
+Problems are reported with the RX codes of parser/reading/diagnostics.hpp. For decks that carry `# expect:` lines
 (decks/invalid/), the set of problems found must equal the set expected; for the other decks it must be
 empty. Exit status 0 when every deck checks out.
 

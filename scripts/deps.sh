@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages radx needs, only those missing (safe to run again).
 # Build: cmake, ninja, g++, Eigen, SuiteSparse (CHOLMOD), HDF5, Catch2. Tests: hdf5-tools, h5py, and
 # ParaView's pvpython (python3-paraview), which the tests use to open the files as a user would. Runs:
-# python3-matplotlib, with which the engine draws NAME_energy.png (io/energy_plot.hpp). Fuzzing and the clang
+# python3-matplotlib, with which the engine draws NAME_energy.png (io/listing/energy_plot.hpp). Fuzzing and the clang
 # UBSan build: clang, its sanitizer and libFuzzer runtimes (libclang-rt-dev) and its OpenMP (libomp-dev). The
 # time-history kill test: strace, which kills the engine at a chosen write.
 set -euo pipefail

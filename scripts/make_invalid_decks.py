@@ -1998,7 +1998,7 @@ def readme(table):
          "# fault: free text describing the fault",
          "```",
          "",
-         "* the code is a `Diag` of `parser/diagnostics.hpp`; the line is 1-based, in the deck itself unless",
+         "* the code is a `Diag` of `parser/reading/diagnostics.hpp`; the line is 1-based, in the deck itself unless",
          "  `file` names another file (relative to this folder);",
          "* without `warning` the diagnostic is an error and the deck must be refused; with it, a warning, and",
          "  a deck whose expectations are all warnings must be read;",

@@ -1104,7 +1104,7 @@ Open `{run}.hdf.series`, threshold on `element_status` = 1: the plug goes first,
 
 No closed form (see `decks/mixed_idel`); the checks are balances. The point behaviour (flow stress against
 the table, rate interpolation, damage against the formula, deletion) is tested in
-`tests/unit/test_law36_fail.cpp` and `decks/verification/idel` (IDEL2FAIL).
+`tests/unit/solver/materials/test_law36_fail.cpp` and `decks/verification/idel` (IDEL2FAIL).
 
 Measured with radx when the deck was written (the `.ref` holds them with their tolerances):
 

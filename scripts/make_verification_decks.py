@@ -4,7 +4,7 @@
 Each case gets a folder decks/verification/<case>/ with a starter deck <CASE>_0000.rad, an engine deck
 <CASE>_0001.rad and a README.md giving the closed-form answer. The decks are committed as text; this
 script is how they were made: edit it and regenerate rather than editing the decks by hand.
-tests/unit/test_verification.cpp runs every deck through the library and compares with the closed forms,
+tests/verification/test_verification.cpp runs every deck through the library and compares with the closed forms,
 computed there from the deck's own parameters (read back from the model).
 
     python3 scripts/make_verification_decks.py                     # every case, into decks/verification/
@@ -322,7 +322,7 @@ def bar_rwall():
 * after contact the bar leaves at +v0 = {p['V0']} m/s with its kinetic energy
   `m v0^2 / 2` = {g(0.5 * mass * p['V0'] ** 2)} J back (m = {g(mass)} kg).
 
-`tests/unit/test_verification.cpp` checks the stress (5 %), the contact duration (two element transit times),
+`tests/verification/test_verification.cpp` checks the stress (5 %), the contact duration (two element transit times),
 the rebound speed (2 %), the energy balance (1 %) and momentum before the impact and after the rebound
 (round-off).
 
@@ -446,7 +446,7 @@ def cantilever_strip(ishell=0, run="CANTILEVER_STRIP", what=CANT_VARIANTS[0][2])
 
 The initial velocity follows the first mode, so the tip displacement is close to
 `w(t) = V_tip / (2 pi f1) sin(2 pi f1 t)` (amplitude {g(p['V_TIP'] / (2 * math.pi * f[0]) * 1e3, 4)} mm, period
-{g(1 / f[0], 5)} s). `tests/unit/test_verification.cpp` measures the period from the zero crossings of the tip
+{g(1 / f[0], 5)} s). `tests/verification/test_verification.cpp` measures the period from the zero crossings of the tip
 displacement and checks it against 1/f1 within 2 %, and the energy balance (1 %), for each of the three
 formulations, and that the hourglass (QEPH: stabilisation) energy stays below 1 % of the internal energy.
 """
@@ -550,7 +550,7 @@ regenerate). Units: **kg, m, s** (Pa, N, J).
 
 ## Closed form (Euler-Bernoulli; nu = 0, L / H = {p['L'] / p['H']:g})
 
-`f1 = 1.87510^2 / (2 pi L^2) sqrt(E H^2 / (12 rho))` = {g(f1, 5)} Hz. `tests/unit/test_verification.cpp`
+`f1 = 1.87510^2 / (2 pi L^2) sqrt(E H^2 / (12 rho))` = {g(f1, 5)} Hz. `tests/verification/test_verification.cpp`
 measures the period from the zero crossings of the tip displacement: Isolid 24 within 2 % of f1 with its
 hourglass work below 1 % of the internal energy; Isolid 14 within 2 % of f1 (its assumed strain drops the
 parasitic shear of the 2 x 2 x 2 points); Isolid 1 is reported (one-point bricks with a viscous-only
@@ -696,7 +696,7 @@ def taylor_bar():
   model carries a quarter of it, less the chord error of the polygonal arc (mesh volume {g(vol, 6)} mm^3 against
   {g(math.pi * p['R'] ** 2 * L / 4, 6)} mm^3 for the exact quarter cylinder).
 
-`tests/unit/test_verification.cpp` checks the final length and the foot radius (3 %, see the test for why),
+`tests/verification/test_verification.cpp` checks the final length and the foot radius (3 %, see the test for why),
 the energy balance (1 %) and that 1 and 2 threads give bit-identical node coordinates.
 
 ## Mesh choice
@@ -802,7 +802,7 @@ The loading is slow: the dilatational wave crosses the cube in {g(h / c)} s, abo
 inertia leaves only small lateral stresses (of order rho c (0.5 - nu) eps_dot h = {g(p['RHO'] * c * (0.5 - p['NU']) * rate * h, 2)} MPa when the lateral
 contraction speeds up at yield).
 
-`tests/unit/test_verification.cpp` checks the axial stress against the curve at every plastic cycle, the plastic
+`tests/verification/test_verification.cpp` checks the axial stress against the curve at every plastic cycle, the plastic
 work against the area under the curve, and the energy balance (1 %).
 """
     return run, D, E, readme
@@ -870,7 +870,7 @@ Every node has the same acceleration -g, so the block is a rigid body in free fa
 DZ = -g t^2 / 2, VZ = -g t, AZ = -g (DX = DY = 0), the momentum ZMOM = -M g t, the kinetic energy
 KE = M g^2 t^2 / 2 = the external work, and the internal energy stays 0. Central differences integrate a
 constant acceleration exactly, so the time history matches these to round-off (single precision is not used in
-the time history). `tests/unit/test_results_engine.cpp` checks them.
+the time history). `tests/scripts/check_free_fall_th.py` checks them.
 """
     return run, D, E, readme
 
@@ -998,7 +998,7 @@ def two_bars():
 * then the striker is at rest and the struck bar moves at v0 = {g(v0)} (exchange of velocities), with the whole
   kinetic energy `m v0^2 / 2` = {g(e0)} (m = {g(mass_bar)} per bar).
 
-`tests/unit/test_verification.cpp` ("verification: two bars exchange velocities") checks the mean velocity
+`tests/verification/test_verification.cpp` ("verification: two bars exchange velocities") checks the mean velocity
 (momentum / mass) of each bar at the end (2 % of v0), the contact duration (two element transit times), the
 interface stress (5 %, as contact pressure and as the stress of the bricks on both sides), the energy balance
 (1 %), the momentum (round-off), and that the contact's damping and friction take no significant energy.
@@ -1509,7 +1509,7 @@ momentum component is its load's closed form, with the function's time origin at
 
 Discrete tolerance: a sensor's load starts at the first cycle at or after its time (and stops likewise), so
 a momentum may differ from the closed form by at most one step's impulse (load times the largest step).
-`tests/unit/test_verification.cpp` checks these, the listing's sensor messages and the energy balance.
+`tests/verification/test_verification.cpp` checks these, the listing's sensor messages and the energy balance.
 """
     return run, D, E, readme
 
@@ -1652,7 +1652,7 @@ def tetra_drop():
 | start | bottom face {g(z0)} above the plate: free flight for {g(p['T_FREE'])} s before the gap closes |
 | engine | Tstop {g(p['T_STOP'])}, `/DT` Tscale {g(p['TSCALE'])} |
 
-## What is checked (tests/unit/test_verification.cpp)
+## What is checked (tests/verification/test_verification.cpp)
 
 * energy balance within 1 % at every cycle (the largest error is at the first contact cycles, where the
   penalty force starts within one step: measured 0.4 % with Tscale {g(p['TSCALE'])} and Stfac {g(p['STFAC'])},
@@ -1787,7 +1787,7 @@ def tied_beam():
 
 ## Check
 
-`tests/unit/test_verification.cpp`: the largest tip deflection of each tied beam (Spotflag 0 and 1) and its
+`tests/verification/test_verification.cpp`: the largest tip deflection of each tied beam (Spotflag 0 and 1) and its
 time are within 2 % of the single mesh's (the tie must carry the bending moment and shear across the cut as
 the continuous mesh does; measured +0.03 % and +0.34 %), and the energy balance holds.
 """

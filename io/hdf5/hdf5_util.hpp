@@ -437,7 +437,7 @@ inline std::string read_string_attr(hid_t obj, const std::string& name) {
 }  // namespace radx::io::h5
 
 // ---------------------------------------------------------------------------------------------------
-// Added for the time history (io/time_history.cpp): string-array and variable-length attributes,
+// Added for the time history (io/hdf5/time_history.cpp): string-array and variable-length attributes,
 // chunked extendible datasets.
 
 namespace radx::io::h5 {

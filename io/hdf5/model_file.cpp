@@ -1,11 +1,11 @@
 // Model file writer and reader (layout: docs/model-file.md; VTKHDF part: results-format.md section 2).
 //
 // How the code is organised:
-// - HDF5 calls go through the helpers of io/hdf5_util.hpp (Handle, check, typed datasets and
+// - HDF5 calls go through the helpers of io/hdf5/hdf5_util.hpp (Handle, check, typed datasets and
 //   attributes), which throw h5::Failure with the path of the HDF5 object and the innermost message of
 //   the HDF5 error stack. write_model_file / read_model_file catch it and return false: nothing else
 //   escapes.
-// - The /VTKHDF mesh is written by io/vtkhdf_mesh.cpp, shared with the result mesh file P.mesh.hdf.
+// - The /VTKHDF mesh is written by io/hdf5/vtkhdf_mesh.cpp, shared with the result mesh file P.mesh.hdf.
 // - Schema<S>: one table per Model struct of (member name, member pointer). It drives both directions:
 //   a collection (vector of records) is written as a "table" group: attribute count, one dataset per
 //   member (a column), variable-length members as CSR (values + <name>_offsets), nested structs
@@ -13,7 +13,7 @@
 //   attributes, vectors as datasets.
 // - Big arrays (points, connectivity, element blocks) are written with one H5Dwrite each, contiguous
 //   layout, no fill, no conversion (memory and file types are both little-endian).
-#include "io/model_file.hpp"
+#include "io/hdf5/model_file.hpp"
 
 #include <hdf5.h>
 
@@ -25,8 +25,8 @@
 #include <utility>
 #include <vector>
 
-#include "io/hdf5_util.hpp"
-#include "io/vtkhdf_mesh.hpp"
+#include "io/hdf5/hdf5_util.hpp"
+#include "io/hdf5/vtkhdf_mesh.hpp"
 
 #ifndef RADX_VERSION
 #define RADX_VERSION "unknown"

@@ -18,7 +18,7 @@
 // Speed: the state's big arrays are written straight from the caller's spans, contiguous, without fill
 // value and without type conversion, one H5Dwrite per dataset (no chunking or compression: deflate would
 // cost seconds per state of a million nodes).
-#include "io/results_writer.hpp"
+#include "io/hdf5/results_writer.hpp"
 
 #include <fcntl.h>
 #include <hdf5.h>
@@ -37,8 +37,8 @@
 #include <system_error>
 #include <utility>
 
-#include "io/hdf5_util.hpp"
-#include "io/vtkhdf_mesh.hpp"
+#include "io/hdf5/hdf5_util.hpp"
+#include "io/hdf5/vtkhdf_mesh.hpp"
 #include "io/xml_text.hpp"
 
 namespace radx::io {

@@ -41,7 +41,7 @@
 //   every reader. h5clear would expose the torn flush instead.
 // - a read during a flush is refused like a killed file (plain readers) or reads the completed flushes.
 // Cost: per flush, an open, the extends, one extra metadata flush and an fsync; nothing grows with the run.
-#include "io/time_history.hpp"
+#include "io/hdf5/time_history.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -50,7 +50,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "io/hdf5_util.hpp"
+#include "io/hdf5/hdf5_util.hpp"
 
 namespace radx::io {
 

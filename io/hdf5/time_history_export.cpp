@@ -1,8 +1,8 @@
-// Listing, column selection and CSV export of a time-history file (io/time_history_export.hpp).
+// Listing, column selection and CSV export of a time-history file (io/hdf5/time_history_export.hpp).
 //
 // Numbers go through std::to_chars, not iostreams or printf, so the text does not depend on the locale
 // (a decimal comma would break the CSV) and 17 significant digits give back the same double.
-#include "io/time_history_export.hpp"
+#include "io/hdf5/time_history_export.hpp"
 
 #include <array>
 #include <charconv>

@@ -1,4 +1,4 @@
-// What `radx th` does with a time-history file once read (io/time_history.hpp): a listing of its groups,
+// What `radx th` does with a time-history file once read (io/hdf5/time_history.hpp): a listing of its groups,
 // the choice of columns by selectors, and the CSV export of the chosen columns on shared time rows.
 //
 // Selectors name columns by their full names (ThColumn::name): "global:IE", "node/1:12:DX". A selector
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "io/time_history.hpp"
+#include "io/hdf5/time_history.hpp"
 
 namespace radx::io {
 

@@ -1,12 +1,12 @@
 // The mesh of a Model as VTKHDF 1.0 UnstructuredGrid + /XDMF/MixedTopology (results-format.md section 2).
-#include "io/vtkhdf_mesh.hpp"
+#include "io/hdf5/vtkhdf_mesh.hpp"
 
 #include <array>
 #include <limits>
 #include <string>
 #include <vector>
 
-#include "io/hdf5_util.hpp"
+#include "io/hdf5/hdf5_util.hpp"
 
 namespace radx::io {
 

@@ -1,7 +1,8 @@
-// NAME_energy.csv and NAME_energy.png (io/energy_plot.hpp): the CSV written here, the chart drawn by the
-// embedded io/plot_energy.py in a child /usr/bin/python3 started with posix_spawn (no shell: arguments pass
-// byte for byte), its standard output and error captured through a pipe to word the warning on failure.
-#include "io/energy_plot.hpp"
+// NAME_energy.csv and NAME_energy.png (io/listing/energy_plot.hpp): the CSV written here, the chart drawn by
+// the embedded io/listing/plot_energy.py in a child /usr/bin/python3 started with posix_spawn (no shell:
+// arguments pass byte for byte), its standard output and error captured through a pipe to word the warning on
+// failure.
+#include "io/listing/energy_plot.hpp"
 
 #include <fcntl.h>
 #include <poll.h>

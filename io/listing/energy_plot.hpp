@@ -2,8 +2,8 @@
 // scripts and as a chart drawn by Python's matplotlib (Debian python3-matplotlib, run through
 // /usr/bin/python3 because only that interpreter sees the Debian modules).
 //
-// The plotting script is io/plot_energy.py, embedded in the binary at build time (io/CMakeLists.txt), so a
-// run needs no source tree. It is started without a shell (paths with spaces and quotes pass unchanged),
+// The plotting script is io/listing/plot_energy.py, embedded in the binary at build time (io/CMakeLists.txt),
+// so a run needs no source tree. It is started without a shell (paths with spaces and quotes pass unchanged),
 // with MPLBACKEND=Agg (no display needed) and its output captured to explain a failure. A missing plotting
 // tool is never an error of the run: the functions return false and a warning the caller prints.
 #pragma once
@@ -53,7 +53,7 @@ bool write_energy_csv(const EnergyPlotRequest& r, std::string& error);
 // PNG, if any, is then left untouched and no temporary file remains.
 bool draw_energy_png(const EnergyPlotRequest& r, const std::string& python, std::string& warning);
 
-// The text of io/plot_energy.py as compiled into this binary.
+// The text of io/listing/plot_energy.py as compiled into this binary.
 std::string_view energy_plot_script();
 
 }  // namespace radx::io

@@ -1,4 +1,4 @@
-#include "io/engine_listing.hpp"
+#include "io/listing/engine_listing.hpp"
 
 #include <unistd.h>
 

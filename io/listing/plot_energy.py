@@ -4,12 +4,12 @@ radx embeds this file in its binary at build time (io/CMakeLists.txt) and runs i
 engine run as
     /usr/bin/python3 -I -c <this script> CSV PNG TITLE TIME_UNIT ENERGY_UNIT
 so the engine needs no source tree. It also works stand-alone on a kept CSV:
-    python3 io/plot_energy.py run_energy.csv run_energy.png "my run" s J
+    python3 io/listing/plot_energy.py run_energy.csv run_energy.png "my run" s J
 
 The CSV has one header line, "time [s],kinetic [J],...", then one row of numbers per sample. Each energy
 column becomes one line; the column named "total" is drawn bold and black so the balance stands out.
 
-Exit codes, read by io/energy_plot.cpp to word its warning: 0 drawn, 2 wrong arguments, 3 matplotlib
+Exit codes, read by io/listing/energy_plot.cpp to word its warning: 0 drawn, 2 wrong arguments, 3 matplotlib
 cannot be imported, 4 the CSV cannot be read; anything else is an unexpected failure (traceback on stderr).
 """
 

@@ -1,4 +1,4 @@
-#include "io/starter_listing.hpp"
+#include "io/listing/starter_listing.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <utility>
 
-#include "io/unit_labels.hpp"
+#include "io/listing/unit_labels.hpp"
 
 namespace radx::io {
 
@@ -439,7 +439,8 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
   if (!m.tied_interfaces.empty()) {
     heading(os, "TIED INTERFACES");
     for (const auto& t : m.tied_interfaces) {
-      // Spotflag 1 is the rigid tie only with rotational degrees of freedom (solver/tied_type2.hpp).
+      // Spotflag 1 is the rigid tie only with rotational degrees of freedom
+      // (solver/conditions/tied_type2.hpp).
       const bool rotations =
           m.shells.size() + m.shells3.size() + m.springs.size() + m.rigid_bodies.size() > 0;
       os << "  interface " << t.id << " \"" << t.title << "\"  /INTER/TYPE2  Spotflag " << t.spotflag

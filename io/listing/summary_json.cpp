@@ -1,4 +1,4 @@
-#include "io/summary_json.hpp"
+#include "io/listing/summary_json.hpp"
 
 #include <unistd.h>
 

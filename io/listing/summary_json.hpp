@@ -23,7 +23,7 @@
 #include <string>
 #include <string_view>
 
-#include "io/engine_listing.hpp"
+#include "io/listing/engine_listing.hpp"
 
 namespace radx::io {
 

@@ -1,4 +1,4 @@
-#include "io/unit_labels.hpp"
+#include "io/listing/unit_labels.hpp"
 
 namespace radx::io {
 

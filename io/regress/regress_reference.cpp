@@ -1,5 +1,5 @@
-// NAME.ref reading, checking and rewriting (io/regress_reference.hpp).
-#include "io/regress_reference.hpp"
+// NAME.ref reading, checking and rewriting (io/regress/regress_reference.hpp).
+#include "io/regress/regress_reference.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -21,8 +21,8 @@
 #include <string_view>
 #include <vector>
 
-#include "io/engine_listing.hpp"
-#include "io/time_history.hpp"
+#include "io/hdf5/time_history.hpp"
+#include "io/listing/engine_listing.hpp"
 
 namespace radx::io {
 

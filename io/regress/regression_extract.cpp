@@ -1,4 +1,4 @@
-#include "io/regression_extract.hpp"
+#include "io/regress/regression_extract.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -11,8 +11,8 @@
 // The elements law 70 runs on are checked with law 42's (build_hyperelastic.cpp).
 #include <string>
 
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 
 namespace radx::detail {
 

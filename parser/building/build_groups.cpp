@@ -28,8 +28,8 @@
 #include <sstream>
 #include <string_view>
 
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 #include "solver/model/geometry.hpp"
 
 namespace radx {

@@ -7,13 +7,13 @@
 // tabulated bulk (fct_IDbulk), both by the fields' rules (keywords_starter.cpp).
 //
 // Elements: law 42 needs the total deformation gradient, which radx carries only in the one-point brick
-// (Isolid 1 and 2, either frame; solver/hex8_fb.cpp). Shells, tetrahedra and the other brick formulations
-// with law 42 are refused by name (RX510), and so is Ismstr 2 (the small-strain switch would freeze the
-// geometry the total stretch is measured on).
+// (Isolid 1 and 2, either frame; solver/elements/solid/hex8_fb.cpp). Shells, tetrahedra and the other brick
+// formulations with law 42 are refused by name (RX510), and so is Ismstr 2 (the small-strain switch would
+// freeze the geometry the total stretch is measured on).
 #include <string>
 
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 
 namespace radx::detail {
 

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "parser/ctclaw_urn.hpp"
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/ctclaw_urn.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 
 namespace radx {
 namespace detail {

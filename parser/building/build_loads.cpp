@@ -25,8 +25,8 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 #include "solver/model/geometry.hpp"
 
 namespace radx {
@@ -619,8 +619,8 @@ struct ThGroup {
   std::string_view name;
   std::vector<std::string_view> variables;
 };
-// A variable radx accepts but does not compute: written as 0 (solver/time_history_values.hpp), and the
-// starter warns naming it and why.
+// A variable radx accepts but does not compute: written as 0 (solver/outputs/time_history_values.hpp), and
+// the starter warns naming it and why.
 struct ThZero {
   std::string_view name;
   std::string_view why;

@@ -17,8 +17,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 
 namespace radx::detail {
 

@@ -4,10 +4,10 @@
 //   connected sets, whatever their part or material; each set is one rigid body;
 // * its mass is the sum of its nodes' masses (the elements of every law, rho_I V as for any element) and its
 //   inertia tensor sum_s [I_s 1 + m_s (|r_s|^2 1 - r_s r_s^T)] about their centre of mass: the body is formed
-//   from its nodes alone, with no main node of the deck. radx runs it as a /RBODY (solver/rigid_body.cpp)
-//   whose main node is a node the starter adds (id above every node id, no element, no mass of its own) and
-//   which is formed as a body with a sensor is (ICoG 2; v and omega keep the nodes' momentum and angular
-//   momentum), a form that gives the same motion;
+//   from its nodes alone, with no main node of the deck. radx runs it as a /RBODY
+//   (solver/conditions/rigid_body.cpp) whose main node is a node the starter adds (id above every node id, no
+//   element, no mass of its own) and which is formed as a body with a sensor is (ICoG 2; v and omega keep the
+//   nodes' momentum and angular momentum), a form that gives the same motion;
 // * the elements themselves compute no force (OpenRadioss forint.F skips laws 0 and 13).
 // A node of a law-13 set may not be a node of a /RBODY too (OpenRadioss merges such bodies into a hierarchy,
 // radx does not), nor carry a /BCS, /IMPVEL or /IMPDISP (OpenRadioss constrains the body through it, radx's
@@ -16,7 +16,7 @@
 #include <numeric>
 #include <string>
 
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
 
 namespace radx::detail {
 

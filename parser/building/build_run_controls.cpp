@@ -21,7 +21,7 @@
 //   passes over both; an id both switched on and off is an error. check_rigid_body_switches then drops, with
 //   a warning, the ids the model lacks.
 // * Every singleton keyword given twice is an error at the second one.
-#include "parser/build_run_controls.hpp"
+#include "parser/building/build_run_controls.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -30,7 +30,7 @@
 #include <filesystem>
 #include <map>
 
-#include "parser/field_parse.hpp"
+#include "parser/reading/field_parse.hpp"
 
 namespace radx {
 

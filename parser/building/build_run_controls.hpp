@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "parser/deck.hpp"
-#include "parser/diagnostics.hpp"
+#include "parser/reading/deck.hpp"
+#include "parser/reading/diagnostics.hpp"
 #include "solver/model/run_controls.hpp"
 
 namespace radx {

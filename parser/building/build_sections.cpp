@@ -12,7 +12,7 @@
 #include <cmath>
 #include <string>
 
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
 
 namespace radx {
 namespace detail {

@@ -13,8 +13,8 @@
 #include <cmath>
 #include <string>
 
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 #include "solver/model/geometry.hpp"
 
 namespace radx::detail {

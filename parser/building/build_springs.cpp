@@ -10,8 +10,8 @@
 #include <cmath>
 #include <string>
 
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 
 namespace radx::detail {
 

@@ -6,22 +6,22 @@
 //   - a node whose nearest segment is farther than that is an error with Ignore = 0 (message 1078) and is
 //     left out of the interface with a warning with Ignore >= 1 (1157); both list the nodes;
 //   - a segment holding the secondary node itself is skipped.
-// radx runs Spotflag 0 and 5 (5 is 0, hm_read_inter_type02.F) and 1 (the rigid tie, solver/tied_type2.hpp;
-// the standard tie in a model without rotational degrees of freedom, as in OpenRadioss); the other
-// formulations are refused by name.
-// Kinematic conflicts: OpenRadioss only warns (kinset.F, message 147) and the outcome then depends on the
-// order its engine applies the conditions in. radx refuses what it cannot run consistently: a node tied by
-// two TYPE2 (its mass would be given away twice), a tied node in a rigid body, and a tie whose main
-// segment holds another TYPE2's secondary node (the result would depend on the order of the ties). A /BCS
-// on a tied node is a warning, as in OpenRadioss: the tie moves the node and the /BCS has no effect.
+// radx runs Spotflag 0 and 5 (5 is 0, hm_read_inter_type02.F) and 1 (the rigid tie,
+// solver/conditions/tied_type2.hpp; the standard tie in a model without rotational degrees of freedom, as in
+// OpenRadioss); the other formulations are refused by name. Kinematic conflicts: OpenRadioss only warns
+// (kinset.F, message 147) and the outcome then depends on the order its engine applies the conditions in.
+// radx refuses what it cannot run consistently: a node tied by two TYPE2 (its mass would be given away
+// twice), a tied node in a rigid body, and a tie whose main segment holds another TYPE2's secondary node (the
+// result would depend on the order of the ties). A /BCS on a tied node is a warning, as in OpenRadioss: the
+// tie moves the node and the /BCS has no effect.
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <map>
 #include <sstream>
 
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 #include "solver/model/tied_map.hpp"
 
 namespace radx {

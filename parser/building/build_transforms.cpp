@@ -35,8 +35,8 @@
 #include <cmath>
 #include <functional>
 
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 #include "solver/model/geometry.hpp"
 
 namespace radx::detail {

@@ -31,8 +31,8 @@
 #include <array>
 #include <string>
 
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 
 namespace radx::detail {
 

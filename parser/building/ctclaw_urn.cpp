@@ -1,10 +1,10 @@
-#include "parser/ctclaw_urn.hpp"
+#include "parser/building/ctclaw_urn.hpp"
 
 #include <array>
 #include <cctype>
 #include <cmath>
 
-#include "parser/field_parse.hpp"
+#include "parser/reading/field_parse.hpp"
 
 namespace radx {
 

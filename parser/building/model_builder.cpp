@@ -2,8 +2,8 @@
 // defaults, deck-format.md section 5.1), subsets, parts, elements and their geometry checks, lumped
 // masses (elements.md section 5: shells m = rho t0 A0 split equally over the 4 slots, bricks
 // m = rho V0 split 1/8 per node, 3-node shells split by interior angle alpha_k / pi).
-#include "parser/model_builder.hpp"
-#include "parser/field_parse.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/field_parse.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -12,7 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "parser/deck.hpp"
+#include "parser/reading/deck.hpp"
 #include "solver/model/geometry.hpp"
 #include "solver/model/model.hpp"
 

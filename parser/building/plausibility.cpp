@@ -3,7 +3,7 @@
 // against 1e9. Warnings only: a scaled or academic model can mean it, a unit slip usually does not.
 // A deck that names no units reads as seconds: of the usual time units (s, ms, us) the most lenient for a
 // step that is too small, and the cycle count does not depend on the unit.
-#include "parser/plausibility.hpp"
+#include "parser/building/plausibility.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -3,8 +3,8 @@
 // (RX513): the run proceeds, and the message says what is typical so that a unit slip shows.
 #pragma once
 
-#include "parser/deck.hpp"
-#include "parser/diagnostics.hpp"
+#include "parser/reading/deck.hpp"
+#include "parser/reading/diagnostics.hpp"
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
 #include "solver/model/stable_step.hpp"

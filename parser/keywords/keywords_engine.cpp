@@ -13,7 +13,7 @@
 // * Unsupported: it changes the results and radx cannot run it (deletion, imposed velocities, relaxation,
 //   damping, other time-step controls): an error naming what radx would need.
 // A keyword whose first field Radioss does not know is an unknown keyword (Radioss stops on it too).
-#include "parser/keyword_schema.hpp"
+#include "parser/keywords/keyword_schema.hpp"
 
 namespace radx::schema {
 

@@ -17,7 +17,7 @@
 #include <tuple>
 #include <vector>
 
-#include "parser/keyword_schema.hpp"
+#include "parser/keywords/keyword_schema.hpp"
 
 namespace radx::schema {
 
@@ -1284,7 +1284,7 @@ void add_contact(std::vector<KeywordDecl>& t) {
   }
   {
     // The Spotflag values OpenRadioss reads (hm_read_inter_type02.F); radx runs 0, 5 and 1 and refuses the
-    // others by name (parser/build_tied.cpp).
+    // others by name (parser/building/build_tied.cpp).
     KeywordDecl k =
         kw("/INTER/TYPE2", "tied interface: secondary nodes move with the main segments they sit on",
            Header::IdUnit, true, "inter_ID");

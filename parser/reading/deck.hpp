@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "parser/diagnostics.hpp"
-#include "parser/keyword_schema.hpp"
+#include "parser/keywords/keyword_schema.hpp"
+#include "parser/reading/diagnostics.hpp"
 
 namespace radx {
 

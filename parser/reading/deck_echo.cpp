@@ -1,4 +1,4 @@
-#include "parser/deck_echo.hpp"
+#include "parser/reading/deck_echo.hpp"
 
 #include <algorithm>
 #include <iomanip>
@@ -150,7 +150,8 @@ void deck_versions_section(std::ostream& os) {
   os << "\n";
 }
 
-// How //SUBMODEL, /TRANSFORM and /MOVE_FUNCT act (parser/deck_reader.cpp, parser/build_transforms.cpp).
+// How //SUBMODEL, /TRANSFORM and /MOVE_FUNCT act (parser/reading/deck_reader.cpp,
+// parser/building/build_transforms.cpp).
 void assembly_section(std::ostream& os) {
   os << "## Submodels and transforms\n\n"
      << "- `//SUBMODEL/submodel_ID[/unit_ID]` opens a submodel and `//ENDSUB` closes the innermost open one "
@@ -206,8 +207,8 @@ std::vector<std::string> echo_keyword(const KeywordRecord& r) {
 
 void write_keyword_reference(std::ostream& os) {
   os << "# radx keyword reference\n\n"
-     << "Generated from the keyword declarations (`parser/keywords_starter.cpp`, "
-        "`parser/keywords_engine.cpp`) by "
+     << "Generated from the keyword declarations (`parser/keywords/keywords_starter.cpp`, "
+        "`parser/keywords/keywords_engine.cpp`) by "
         "`radx keywords --markdown`; do not edit by hand (`cmake --build build --target keyword-docs`).\n\n"
      << "Columns are 1-based and inclusive. Units: M mass, L length, T time (the field is converted from the "
         "deck's input units to its work units). Versions are the `/BEGIN` deck version (INVERS).\n\n"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "parser/deck.hpp"
+#include "parser/reading/deck.hpp"
 
 namespace radx {
 

@@ -15,9 +15,9 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "parser/deck.hpp"
-#include "parser/deck_text.hpp"
-#include "parser/field_parse.hpp"
+#include "parser/reading/deck.hpp"
+#include "parser/reading/deck_text.hpp"
+#include "parser/reading/field_parse.hpp"
 
 namespace radx {
 

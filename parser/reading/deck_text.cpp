@@ -1,11 +1,11 @@
-#include "parser/deck_text.hpp"
+#include "parser/reading/deck_text.hpp"
 
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "parser/field_parse.hpp"
+#include "parser/reading/field_parse.hpp"
 
 namespace radx {
 

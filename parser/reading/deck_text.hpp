@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "parser/deck.hpp"
+#include "parser/reading/deck.hpp"
 
 namespace radx {
 

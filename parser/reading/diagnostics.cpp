@@ -1,4 +1,4 @@
-#include "parser/diagnostics.hpp"
+#include "parser/reading/diagnostics.hpp"
 
 #include <algorithm>
 #include <ostream>

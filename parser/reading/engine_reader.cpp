@@ -13,9 +13,9 @@
 // first field with a form radx does not declare is not supported (RX302).
 #include <algorithm>
 
-#include "parser/deck.hpp"
-#include "parser/deck_text.hpp"
-#include "parser/field_parse.hpp"
+#include "parser/reading/deck.hpp"
+#include "parser/reading/deck_text.hpp"
+#include "parser/reading/field_parse.hpp"
 
 namespace radx {
 

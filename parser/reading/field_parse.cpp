@@ -1,4 +1,4 @@
-#include "parser/field_parse.hpp"
+#include "parser/reading/field_parse.hpp"
 
 #include <array>
 #include <cctype>

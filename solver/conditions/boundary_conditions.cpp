@@ -1,12 +1,12 @@
-#include "solver/boundary_conditions.hpp"
+#include "solver/conditions/boundary_conditions.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "solver/functions.hpp"
-#include "solver/sensors.hpp"
+#include "solver/conditions/functions.hpp"
+#include "solver/conditions/sensors.hpp"
 
 namespace radx::solver {
 

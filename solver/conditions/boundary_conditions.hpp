@@ -34,8 +34,8 @@
 // gives the frame of the cycle's x^n (a /BCS holds the directions of the current axes, an /IMPVEL or
 // /IMPDISP acts along the current axis, an /INIVEL takes the axes of the time it applies: t = 0 unless
 // Tstart or a sensor says otherwise).
-// Sensors (solver/sensors.hpp; OpenRadioss fixvel.F, inivel_start.F90), T the sensor's activation time
-// (model::kNever while it is off), tau = t - T:
+// Sensors (solver/conditions/sensors.hpp; OpenRadioss fixvel.F, inivel_start.F90), T the sensor's activation
+// time (model::kNever while it is off), tau = t - T:
 //   /IMPVEL   also needs tau >= 0 (Tstart and Tstop still bound t itself); v_imp = Fscale_y f((tau + dt2/2) /
 //             Ascale_x): the function's time origin is the activation.
 //   /IMPDISP  also needs tau >= 0. At tau = 0 as without a sensor, v_imp = (u(tau + dt2) - (x^n - X0)) / dt2;
@@ -52,9 +52,9 @@
 #include <span>
 #include <vector>
 
+#include "solver/conditions/skew_frames.hpp"
+#include "solver/engine/node_state.hpp"
 #include "solver/model/model.hpp"
-#include "solver/node_state.hpp"
-#include "solver/skew_frames.hpp"
 
 namespace radx::solver {
 

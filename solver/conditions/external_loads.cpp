@@ -1,4 +1,4 @@
-#include "solver/external_loads.hpp"
+#include "solver/conditions/external_loads.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -6,8 +6,8 @@
 #include <string>
 #include <utility>
 
-#include "solver/functions.hpp"
-#include "solver/sensors.hpp"
+#include "solver/conditions/functions.hpp"
+#include "solver/conditions/sensors.hpp"
 
 namespace radx::solver {
 

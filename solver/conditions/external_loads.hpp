@@ -14,14 +14,13 @@
 //                             triangle (n4 == n3)  F_node = p (x2 - x1) x (x3 - x1) / 6 = p A n / 3.
 //            A positive pressure pushes along n. Work (as force.F90): W += dt1 sum_nodes F_node . v.
 //            Idel = 1: the load of a segment stops when its owner element is deleted (remove_element).
-// A load with a sensor (solver/sensors.hpp) acts only from the sensor's activation time T on, while the
-// sensor is on, and reads its function at tau = t - T instead of t. Its work takes for g_old, F_old the value
-// it applied at the previous cycle (0 where it did not act), and books the cycle after it stops with g_new,
-// F_new = 0: the trapezoid of the force that acted, so that switching a load on or off keeps the energy
-// balance (OpenRadioss books nothing then).
-// Not supported (construction throws std::runtime_error naming the load): Itypfun 2 or 3 (function of
-// displacement or velocity), /PLOAD Ipinch != 0. A direction in a skew is read from SkewFrames at every
-// apply(): a /SKEW/MOV turns the load with the frame of x^n.
+// A load with a sensor (solver/conditions/sensors.hpp) acts only from the sensor's activation time T on,
+// while the sensor is on, and reads its function at tau = t - T instead of t. Its work takes for g_old, F_old
+// the value it applied at the previous cycle (0 where it did not act), and books the cycle after it stops
+// with g_new, F_new = 0: the trapezoid of the force that acted, so that switching a load on or off keeps the
+// energy balance (OpenRadioss books nothing then). Not supported (construction throws std::runtime_error
+// naming the load): Itypfun 2 or 3 (function of displacement or velocity), /PLOAD Ipinch != 0. A direction in
+// a skew is read from SkewFrames at every apply(): a /SKEW/MOV turns the load with the frame of x^n.
 //
 // Forces are ADDED to fx_ext.. and to fx.. (moments to mx..): the engine zeroes fx_ext.. and mx.. before
 // apply() and builds fx = fx_ext + element forces (or zeroes fx too and adds the element forces).
@@ -35,9 +34,9 @@
 #include <utility>
 #include <vector>
 
+#include "solver/conditions/skew_frames.hpp"
+#include "solver/engine/node_state.hpp"
 #include "solver/model/model.hpp"
-#include "solver/node_state.hpp"
-#include "solver/skew_frames.hpp"
 
 namespace radx::solver {
 

@@ -1,4 +1,4 @@
-#include "solver/functions.hpp"
+#include "solver/conditions/functions.hpp"
 
 #include <algorithm>
 #include <iterator>

@@ -41,9 +41,9 @@
 // When an element is deleted: loads.remove_element(type, index) (/PLOAD Idel = 1).
 #pragma once
 
-#include "solver/boundary_conditions.hpp"
-#include "solver/external_loads.hpp"
-#include "solver/functions.hpp"
-#include "solver/rigid_body.hpp"
-#include "solver/rigid_wall_plane.hpp"
-#include "solver/sensors.hpp"
+#include "solver/conditions/boundary_conditions.hpp"
+#include "solver/conditions/external_loads.hpp"
+#include "solver/conditions/functions.hpp"
+#include "solver/conditions/rigid_body.hpp"
+#include "solver/conditions/rigid_wall_plane.hpp"
+#include "solver/conditions/sensors.hpp"

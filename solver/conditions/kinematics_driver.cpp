@@ -1,11 +1,11 @@
-#include "solver/kinematics_driver.hpp"
+#include "solver/conditions/kinematics_driver.hpp"
 
-#include "solver/kinematics.hpp"
-#include "solver/tied_type2.hpp"
+#include "solver/conditions/kinematics.hpp"
+#include "solver/conditions/tied_type2.hpp"
 
 namespace radx::solver {
 
-// The call order is the one documented in solver/kinematics.hpp.
+// The call order is the one documented in solver/conditions/kinematics.hpp.
 struct KinematicsDriver::Parts {
   BoundaryConditions bcs;
   InitialVelocities inivel;

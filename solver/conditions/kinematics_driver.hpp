@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "solver/conditions/rigid_wall_plane.hpp"
+#include "solver/conditions/skew_frames.hpp"
+#include "solver/engine/node_state.hpp"
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
-#include "solver/node_state.hpp"
-#include "solver/rigid_wall_plane.hpp"
-#include "solver/skew_frames.hpp"
 
 namespace radx::solver {
 

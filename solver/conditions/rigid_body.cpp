@@ -1,4 +1,4 @@
-#include "solver/rigid_body.hpp"
+#include "solver/conditions/rigid_body.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "solver/sensors.hpp"
+#include "solver/conditions/sensors.hpp"
 
 namespace radx::solver {
 

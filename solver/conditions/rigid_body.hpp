@@ -59,8 +59,8 @@
 #include <string>
 #include <vector>
 
+#include "solver/engine/node_state.hpp"
 #include "solver/model/model.hpp"
-#include "solver/node_state.hpp"
 
 namespace radx::solver {
 

@@ -1,4 +1,4 @@
-#include "solver/rigid_wall_plane.hpp"
+#include "solver/conditions/rigid_wall_plane.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "solver/sensors.hpp"
+#include "solver/conditions/sensors.hpp"
 
 #include <cstdio>
 

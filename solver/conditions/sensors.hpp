@@ -14,7 +14,8 @@
 //     function's time origin is the activation; before it, and after the sensor switches off, nothing acts;
 //   /INIVEL sets its velocity at the first cycle with t >= T (Tstart 0), or >= min(Tstart, T);
 //   /INTER/TYPE7 acts for t >= max(Tstart, T) and t < Tstop;
-//   /RBODY is rigid until the sensor switches on, and released 2 cycles after (solver/rigid_body.hpp).
+//   /RBODY is rigid until the sensor switches on, and released 2 cycles after
+//   (solver/conditions/rigid_body.hpp).
 // No allocation in update() unless a sensor switches.
 #pragma once
 

@@ -1,4 +1,4 @@
-#include "solver/skew_frames.hpp"
+#include "solver/conditions/skew_frames.hpp"
 
 #include "solver/model/geometry.hpp"
 

@@ -12,8 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "solver/engine/node_state.hpp"
 #include "solver/model/model.hpp"
-#include "solver/node_state.hpp"
 
 namespace radx::solver {
 

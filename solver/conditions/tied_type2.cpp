@@ -1,6 +1,6 @@
 // /INTER/TYPE2 kinematic and rigid ties: the equations are written at the top of tied_type2.hpp (map:
 // solver/model/tied_map.hpp; OpenRadioss engine i2for3.F, i2vit3.F; starter i2tid3.F).
-#include "solver/tied_type2.hpp"
+#include "solver/conditions/tied_type2.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -14,7 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "solver/node_state.hpp"
+#include "solver/engine/node_state.hpp"
 
 namespace radx::solver {
 

@@ -1,5 +1,5 @@
-#include "solver/element_groups.hpp"
-#include "solver/solid_stages.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/solid/solid_stages.hpp"
 
 #include <algorithm>
 

@@ -2,7 +2,7 @@
 // with the element index innermost (array[k * kGroupSize + i]). The unit of vectorisation and of
 // threading. Kernels gather nodal values through `conn`, compute, and write their nodal forces into
 // the group's own `nodal_force` buffer; the engine then adds each buffer to the nodes' sums group by group in
-// a fixed order (solver/ordered_commit.hpp), so results do not depend on the number of threads.
+// a fixed order (solver/engine/ordered_commit.hpp), so results do not depend on the number of threads.
 #pragma once
 
 #include <array>
@@ -11,10 +11,10 @@
 #include <optional>
 #include <vector>
 
-#include "solver/material_point.hpp"
+#include "solver/elements/spring/spring_law.hpp"
+#include "solver/engine/node_state.hpp"
+#include "solver/materials/material_point.hpp"
 #include "solver/model/geometry.hpp"
-#include "solver/node_state.hpp"
-#include "solver/spring_law.hpp"
 
 namespace radx::solver {
 

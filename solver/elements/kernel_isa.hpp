@@ -6,11 +6,11 @@
 // processor has it. The two copies give the same results to the bit: the solver is compiled with
 // -ffp-contract=off, so that the v3 copy uses no fused multiply-add, and the vectorised loops do the same
 // IEEE operations per element in the same order whatever the vector width (GCC reorders no floating-point
-// sum without -ffast-math). tests/unit/test_kernel_isa.cpp runs both copies on the same state and compares
-// every output bit for bit.
+// sum without -ffast-math). tests/unit/solver/elements/test_kernel_isa.cpp runs both copies on the same state
+// and compares every output bit for bit.
 #pragma once
 
-#include "solver/element_groups.hpp"
+#include "solver/elements/element_groups.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #define RADX_HAVE_ISA_V3 1

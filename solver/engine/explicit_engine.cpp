@@ -2,7 +2,7 @@
 // Masses and rotational inertias (elements.md section 5): shells m_e = rho t0 A0, m_e/4 per slot,
 // I = (m_e/4)(A0/9 + t0^2/12); 3-node shells m_e alpha_k/pi with I_e = m_e (A0/4.5 + t0^2/12);
 // bricks m_e/8 per node, tetrahedra m_e/4 per node, no inertia for either; TYPE8 springs I/2 per node.
-#include "solver/explicit_engine.hpp"
+#include "solver/engine/explicit_engine.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -14,7 +14,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "solver/kinematics_driver.hpp"
+#include "solver/conditions/kinematics_driver.hpp"
 #include "solver/model/geometry.hpp"
 #include "solver/model/masses.hpp"
 #include "solver/model/stable_step.hpp"

@@ -6,17 +6,17 @@
 //   2. contact (TYPE7 penalty, contact/type7_engine.hpp): forces at t_n into the contact buffer, time-step
 //   vote;
 //   3. element groups: gather, strain rate, material update, internal forces, element time step; each
-//   group's nodal forces added to the nodes' sums in group order (solver/ordered_commit.hpp);
+//   group's nodal forces added to the nodes' sums in group order (solver/engine/ordered_commit.hpp);
 //   4. deterministic assembly f = f_ext + those sums node by node, then the contact forces;
 //   4b. /INTER/TYPE2 ties: the secondary nodes' forces and moments onto their main segments
-//   (solver/tied_type2.hpp; their masses were moved there at t = 0);
+//   (solver/conditions/tied_type2.hpp; their masses were moved there at t = 0);
 //   5. accelerations a = f / m (rotations: moment / scalar inertia);
 //   6. Lagrange-multiplier correction of the switched LAGDT pairs (contact/lagrange_contact.hpp);
 //   7. kinematic conditions: rigid bodies, boundary conditions, imposed velocities, rigid walls, and last
 //   the tied nodes put on their segments;
 //   8. v^{n+1/2} = v^{n-1/2} + dt12 a^n,  x^{n+1} = x^n + dt2 v^{n+1/2},  dt12 = (dt1 + dt2) / 2;
 //   9. next time step dt = min(scale * element steps, 1.1 dt_previous), then the sensors' check with it
-//      (solver/sensors.hpp: a sensor switches on when t + dt reaches its Tdelay);
+//      (solver/conditions/sensors.hpp: a sensor switches on when t + dt reaches its Tdelay);
 //  10. outputs when due (listing, states); 11. t += dt.
 // Energies follow elements.md section 8: internal (element work), hourglass, kinetic (at the full
 // step, v^{n-1/2} + dt1/2 a^n), external work; error % = 100 (E / (E0 + W) - 1).
@@ -30,16 +30,16 @@
 #include <vector>
 
 #include "contact/type7_engine.hpp"
-#include "solver/accelerometer.hpp"
-#include "solver/element_groups.hpp"
-#include "solver/huge_page_allocator.hpp"
+#include "solver/conditions/sensors.hpp"
+#include "solver/conditions/skew_frames.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/engine/huge_page_allocator.hpp"
+#include "solver/engine/node_state.hpp"
+#include "solver/engine/ordered_commit.hpp"
+#include "solver/engine/thread_team.hpp"
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
-#include "solver/node_state.hpp"
-#include "solver/ordered_commit.hpp"
-#include "solver/sensors.hpp"
-#include "solver/skew_frames.hpp"
-#include "solver/thread_team.hpp"
+#include "solver/outputs/accelerometer.hpp"
 
 namespace radx::solver {
 

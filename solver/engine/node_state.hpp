@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "solver/huge_page_allocator.hpp"
+#include "solver/engine/huge_page_allocator.hpp"
 
 namespace radx::solver {
 

@@ -1,4 +1,4 @@
-#include "solver/thread_team.hpp"
+#include "solver/engine/thread_team.hpp"
 
 #include <sched.h>
 

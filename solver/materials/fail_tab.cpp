@@ -31,7 +31,7 @@
 // shears kept, as fail_tab_s.F does), 3 the stress kept.
 #include <algorithm>
 
-#include "solver/material_point.hpp"
+#include "solver/materials/material_point.hpp"
 
 namespace radx::solver {
 

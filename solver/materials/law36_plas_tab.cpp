@@ -50,7 +50,7 @@
 #include <cmath>
 #include <limits>
 
-#include "solver/material_point.hpp"
+#include "solver/materials/material_point.hpp"
 
 namespace radx::solver {
 

@@ -28,7 +28,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/material_point.hpp"
+#include "solver/materials/material_point.hpp"
 
 namespace radx::solver {
 

@@ -39,7 +39,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/material_point.hpp"
+#include "solver/materials/material_point.hpp"
 
 namespace radx::solver {
 

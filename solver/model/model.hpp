@@ -476,8 +476,8 @@ struct Accelerometer {
 
 // /SENSOR/TIME (OpenRadioss read_sensor_time.F, sensor_time.F): on from Tdelay, off again from Tstop. The
 // loads, conditions and interfaces that name a sensor keep its user id (their `sensor` or `sens_id`); the
-// engine keeps each sensor's state (solver/sensors.hpp). Stored as its integer in the model file: new types
-// go at the end.
+// engine keeps each sensor's state (solver/conditions/sensors.hpp). Stored as its integer in the model file:
+// new types go at the end.
 enum class SensorType : std::uint8_t { Time = 0 };
 struct Sensor {
   std::int64_t id = 0;
@@ -611,17 +611,18 @@ struct Interface {
   }
 };
 
-// /INTER/TYPE2, kinematic tied interface (solver/tied_type2.hpp holds the equations). Each secondary node
-// that found a main segment within the search distance is a tie k, stored as columns: the node, the
-// segment's nodes (n4 == n3 for a triangle), its coordinates on the segment and its signed distance along
-// the segment's unit normal at t = 0 (the offset the engine carries in the segment's rotating frame).
+// /INTER/TYPE2, kinematic tied interface (solver/conditions/tied_type2.hpp holds the equations). Each
+// secondary node that found a main segment within the search distance is a tie k, stored as columns: the
+// node, the segment's nodes (n4 == n3 for a triangle), its coordinates on the segment and its signed distance
+// along the segment's unit normal at t = 0 (the offset the engine carries in the segment's rotating frame).
 struct TiedInterface {
   std::int64_t id = 0;
   std::string title;
   std::int32_t secondary_group = kNone;
   std::int32_t main_surface = kNone;
-  int ignore = 0;    // 0: a node without a segment is an error; 1..3: it leaves the interface (warning)
-  int spotflag = 0;  // 0 (or 5): the standard kinematic tie; 1: the rigid tie (solver/tied_type2.hpp)
+  int ignore = 0;  // 0: a node without a segment is an error; 1..3: it leaves the interface (warning)
+  int spotflag =
+      0;  // 0 (or 5): the standard kinematic tie; 1: the rigid tie (solver/conditions/tied_type2.hpp)
   int level = 0, isearch = 2, idel2 = 0;
   double dsearch = 0;  // as given; 0 = automatic
   // Computed by the starter.

@@ -1,5 +1,5 @@
-// The map of a /INTER/TYPE2 tie, shared by the starter (projection) and the engine (solver/tied_type2.cpp).
-// A secondary node s tied to the main segment (x1, x2, x3, x4) sits at
+// The map of a /INTER/TYPE2 tie, shared by the starter (projection) and the engine
+// (solver/conditions/tied_type2.cpp). A secondary node s tied to the main segment (x1, x2, x3, x4) sits at
 //     x_s = sum_j h_j(r, s) x_j + d n,        n = N / |N|,
 //   quad:     h = (1-r)(1-s)/4, (1+r)(1-s)/4, (1+r)(1+s)/4, (1-r)(1+s)/4,   N = (x3 - x1) x (x4 - x2);
 //   triangle: h = 1 - r - s, r, s, 0 (n4 == n3),                            N = (x2 - x1) x (x3 - x1).

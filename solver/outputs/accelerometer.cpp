@@ -1,4 +1,4 @@
-#include "solver/accelerometer.hpp"
+#include "solver/outputs/accelerometer.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -19,9 +19,9 @@
 #include <array>
 #include <vector>
 
+#include "solver/conditions/skew_frames.hpp"
+#include "solver/engine/node_state.hpp"
 #include "solver/model/model.hpp"
-#include "solver/node_state.hpp"
-#include "solver/skew_frames.hpp"
 
 namespace radx::solver {
 

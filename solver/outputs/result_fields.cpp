@@ -1,15 +1,15 @@
 // Result fields: see result_fields.hpp for the definition of every field. Shell frames are rebuilt from
 // the current coordinates with the element's own construction (shell_bt4.cpp [1.2] for quads,
 // shell_c0_tri3.cpp [2] for triangles) so the rotated stress is the one the kernel holds.
-#include "solver/result_fields.hpp"
+#include "solver/outputs/result_fields.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
 
+#include "solver/elements/shell/shell_section.hpp"
 #include "solver/model/geometry.hpp"
-#include "solver/shell_section.hpp"
 
 namespace radx::solver {
 

@@ -25,7 +25,7 @@
 #include <string_view>
 #include <vector>
 
-#include "solver/explicit_engine.hpp"
+#include "solver/engine/explicit_engine.hpp"
 
 namespace radx::solver {
 

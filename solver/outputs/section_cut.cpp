@@ -14,7 +14,7 @@
 // side gives F = -P, the half on the loaded side F = +P (quasi-statically). Radioss accumulates these sums
 // every cycle into impulses (its time history holds integrals over time); radx evaluates them on the cycle
 // it samples.
-#include "solver/section_cut.hpp"
+#include "solver/outputs/section_cut.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "solver/element_groups.hpp"
+#include "solver/elements/element_groups.hpp"
 #include "solver/model/model.hpp"
 
 namespace radx::solver {

@@ -1,14 +1,14 @@
 // Time-history values; the definition of every variable is in time_history_values.hpp.
-#include "solver/time_history_values.hpp"
+#include "solver/outputs/time_history_values.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
-#include "solver/kinematics_driver.hpp"
+#include "solver/conditions/kinematics_driver.hpp"
+#include "solver/conditions/rigid_body.hpp"
+#include "solver/elements/shell/shell_section.hpp"
 #include "solver/model/masses.hpp"
-#include "solver/rigid_body.hpp"
-#include "solver/shell_section.hpp"
 
 namespace radx::solver {
 

@@ -38,11 +38,11 @@
 // global axes, about the main node, at the current orientation; STATUS 1 for a body formed in this run, 0 for
 // one switched off by /RBODY/OFF (its forces, rotation and inertia are then 0 and its main node is a free
 // node). The starter lists the variables written as 0 (deck check warning) where a deck asks for them.
-// Per section (/TH/SECTIO, solver/section_cut.cpp): FNX FNY FNZ = (F . n) n and FTX FTY FTZ = F - (F . n) n,
-// global components, where F is the force the section's elements apply to its nodes on the sampled cycle;
-// M1 M2 M3 and F1 F2 F3 the moment about the centre and the force on the section's axes; MX MY MZ the moment
-// on the global axes; CX CY CZ the centre. OpenRadioss writes the time integrals of the forces and moments
-// (impulses) and lets its readers differentiate; radx writes the values themselves.
+// Per section (/TH/SECTIO, solver/outputs/section_cut.cpp): FNX FNY FNZ = (F . n) n and FTX FTY FTZ = F - (F
+// . n) n, global components, where F is the force the section's elements apply to its nodes on the sampled
+// cycle; M1 M2 M3 and F1 F2 F3 the moment about the centre and the force on the section's axes; MX MY MZ the
+// moment on the global axes; CX CY CZ the centre. OpenRadioss writes the time integrals of the forces and
+// moments (impulses) and lets its readers differentiate; radx writes the values themselves.
 #pragma once
 
 #include <cstdint>
@@ -50,8 +50,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/explicit_engine.hpp"
-#include "solver/section_cut.hpp"
+#include "solver/engine/explicit_engine.hpp"
+#include "solver/outputs/section_cut.hpp"
 
 namespace radx::solver {
 

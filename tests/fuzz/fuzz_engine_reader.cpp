@@ -4,9 +4,9 @@
 #include <cstdint>
 
 #include "fuzz_input_file.hpp"
-#include "parser/build_run_controls.hpp"
-#include "parser/deck.hpp"
-#include "parser/diagnostics.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "parser/reading/deck.hpp"
+#include "parser/reading/diagnostics.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const radx::fuzz::InputFile input(data, size, "ENGINE_0001.rad");

@@ -5,9 +5,9 @@
 #include <cstdint>
 
 #include "fuzz_input_file.hpp"
-#include "parser/deck.hpp"
-#include "parser/diagnostics.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/deck.hpp"
+#include "parser/reading/diagnostics.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const radx::fuzz::InputFile input(data, size, "STARTER_0000.rad");

@@ -14,7 +14,7 @@ Free plate, no gravity (--free: no external force):
 Clamped plate with gravity (the default deck at 50 m/s, Stfac 30): plain TYPE7 within 2 %, LAGDT no node
 through the plate and within 2 % (the issue's stiff-contact demand).
 Free plate, LAGDT: energy within 1 % (the issue's fast-impact demand). The multipliers' work is booked exactly
-(tests/unit/test_lagrange_contact); the one-step stop rings the bricks' hourglass modes at the highest
+(tests/unit/contact/test_lagrange_contact.cpp); the one-step stop rings the bricks' hourglass modes at the highest
 frequency, which the brick's trapezoidal hourglass energy books as the work those forces do (hex8_fb.cpp; the
 rectangle rule of elements.md 3.4 read +3 % here).
 """

@@ -8,8 +8,8 @@
 #include <limits>
 #include <vector>
 
-#include "solver/material_point.hpp"
-#include "solver/node_state.hpp"
+#include "solver/engine/node_state.hpp"
+#include "solver/materials/material_point.hpp"
 
 namespace radx::test {
 

@@ -4,8 +4,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "parser/deck.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/deck.hpp"
 
 #include <cstdlib>
 #include <filesystem>

@@ -28,11 +28,11 @@
 #include <vector>
 
 #include "contact/type7_prepare.hpp"
-#include "parser/build_run_controls.hpp"
-#include "parser/deck.hpp"
-#include "parser/model_builder.hpp"
-#include "solver/explicit_engine.hpp"
-#include "solver/functions.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/deck.hpp"
+#include "solver/conditions/functions.hpp"
+#include "solver/engine/explicit_engine.hpp"
 
 namespace {
 

@@ -75,11 +75,11 @@
 #include <cstddef>
 #include <limits>
 
-#include "solver/element_gather.hpp"
-#include "solver/element_groups.hpp"
-#include "solver/kernel_isa.hpp"
-#include "solver/shell_frame.hpp"
-#include "solver/shell_section.hpp"
+#include "solver/elements/element_gather.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/kernel_isa.hpp"
+#include "solver/elements/shell/shell_frame.hpp"
+#include "solver/elements/shell/shell_section.hpp"
 
 namespace radx::solver {
 

@@ -22,9 +22,9 @@
 #include <cstdint>
 #include <limits>
 
-#include "solver/element_gather.hpp"
-#include "solver/material_point.hpp"
-#include "solver/shell_section.hpp"
+#include "solver/elements/element_gather.hpp"
+#include "solver/elements/shell/shell_section.hpp"
+#include "solver/materials/material_point.hpp"
 
 namespace radx::solver::shell_detail {
 

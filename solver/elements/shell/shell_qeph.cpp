@@ -73,11 +73,11 @@
 #include <cstdint>
 #include <limits>
 
-#include "solver/element_gather.hpp"
-#include "solver/element_groups.hpp"
-#include "solver/shell_frame.hpp"
-#include "solver/shell_quad_mindlin.hpp"
-#include "solver/shell_section.hpp"
+#include "solver/elements/element_gather.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/shell/shell_frame.hpp"
+#include "solver/elements/shell/shell_quad_mindlin.hpp"
+#include "solver/elements/shell/shell_section.hpp"
 
 namespace radx::solver {
 

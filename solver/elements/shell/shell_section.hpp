@@ -42,8 +42,8 @@
 #include <type_traits>
 #include <utility>
 
-#include "solver/element_groups.hpp"
-#include "solver/material_point.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/materials/material_point.hpp"
 
 namespace radx::solver::shell_detail {
 

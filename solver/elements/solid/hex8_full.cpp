@@ -63,9 +63,9 @@
 #include <limits>
 #include <numbers>
 
-#include "solver/element_gather.hpp"
-#include "solver/element_groups.hpp"
-#include "solver/solid_stages.hpp"
+#include "solver/elements/element_gather.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/solid/solid_stages.hpp"
 
 namespace radx::solver {
 

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "solver/element_groups.hpp"
+#include "solver/elements/element_groups.hpp"
 
 namespace radx::solver {
 

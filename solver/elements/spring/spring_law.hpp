@@ -57,7 +57,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/functions.hpp"
+#include "solver/conditions/functions.hpp"
 #include "solver/model/model.hpp"
 
 namespace radx::solver {

@@ -17,8 +17,8 @@
 #include <cstddef>
 #include <limits>
 
-#include "solver/element_groups.hpp"
-#include "solver/spring_law.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/spring/spring_law.hpp"
 
 namespace radx::solver {
 

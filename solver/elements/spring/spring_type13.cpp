@@ -41,9 +41,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/element_groups.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/spring/spring_six_laws.hpp"
 #include "solver/model/geometry.hpp"
-#include "solver/spring_six_laws.hpp"
 
 namespace radx::solver {
 

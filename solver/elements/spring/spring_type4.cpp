@@ -25,8 +25,8 @@
 #include <cmath>
 #include <limits>
 
-#include "solver/element_groups.hpp"
-#include "solver/spring_law.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/spring/spring_law.hpp"
 
 namespace radx::solver {
 

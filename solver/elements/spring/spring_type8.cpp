@@ -15,8 +15,8 @@
 //     translations (rotations)
 //   nodal: F = sum_j N_j E_j, M = sum_j M_j E_j;  n1 += F, M;  n2 -= F, M
 //     (Radioss's TYPE8 without Iequil: the couple of a shear force over the length is not balanced)
-#include "solver/element_groups.hpp"
-#include "solver/spring_six_laws.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/spring/spring_six_laws.hpp"
 
 namespace radx::solver {
 

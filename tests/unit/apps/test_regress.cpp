@@ -14,7 +14,7 @@
 #include <string>
 
 #include "apps/regress.hpp"
-#include "io/regression_extract.hpp"
+#include "io/regress/regression_extract.hpp"
 #include "test_util.hpp"
 
 namespace fs = std::filesystem;

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/model_file.hpp"
+#include "io/hdf5/model_file.hpp"
 #include "test_util.hpp"
 
 namespace fs = std::filesystem;

@@ -10,8 +10,8 @@
 #include "contact/type7_engine.hpp"
 #include "contact/type7_prepare.hpp"
 #include "contact/type7_search.hpp"
-#include "parser/build_run_controls.hpp"
-#include "solver/explicit_engine.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "solver/engine/explicit_engine.hpp"
 #include "test_util.hpp"
 
 TEST_CASE("a node at the surface (remaining gap below 1e-6 of the gap) is deactivated with a warning",

@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "parser/deck.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/deck.hpp"
 #include "solver/model/model.hpp"
 #include "test_util.hpp"
 

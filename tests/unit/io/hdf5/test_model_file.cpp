@@ -1,4 +1,4 @@
-// Model file (io/model_file.hpp): round trip of every Model field, the VTKHDF layout of
+// Model file (io/hdf5/model_file.hpp): round trip of every Model field, the VTKHDF layout of
 // results-format.md section 2, and crash-safe failures (no .part left, previous file untouched).
 //
 // Tolerances: the round trip is compared EXACTLY (==), doubles included: the file stores the same
@@ -16,7 +16,7 @@
 #include <vector>
 #include "test_util.hpp"
 
-#include "io/model_file.hpp"
+#include "io/hdf5/model_file.hpp"
 #include "solver/model/model.hpp"
 
 namespace {
@@ -814,7 +814,7 @@ void check_same(const Model& a, const Model& b) {
 
 #undef SAME
 
-// Raw HDF5 access for the layout checks, independent of io/model_file.cpp.
+// Raw HDF5 access for the layout checks, independent of io/hdf5/model_file.cpp.
 template <class T>
 std::vector<T> read_raw(hid_t file, const char* path, hid_t mem_type) {
   const hid_t ds = H5Dopen2(file, path, H5P_DEFAULT);

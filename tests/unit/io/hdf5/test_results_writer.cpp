@@ -1,4 +1,4 @@
-// Result files (io/results_writer.hpp, results-format.md sections 1 to 5): the mesh file, three states
+// Result files (io/hdf5/results_writer.hpp, results-format.md sections 1 to 5): the mesh file, three states
 // read back with the HDF5 C API (external links, values, field data), both indexes parsed as text, time
 // ordering, removal of an earlier run's files of the same prefix only, and no .part/.tmp left behind.
 //
@@ -24,7 +24,7 @@
 #include <vector>
 #include "test_util.hpp"
 
-#include "io/results_writer.hpp"
+#include "io/hdf5/results_writer.hpp"
 #include "solver/model/model.hpp"
 
 namespace {

@@ -1,5 +1,5 @@
-// Time history (io/time_history.hpp, io/time_history_export.hpp, `radx th`): rows appended across two
-// flushes, read back by read_time_history and independently with the HDF5 C API (shape, chunking,
+// Time history (io/hdf5/time_history.hpp, io/hdf5/time_history_export.hpp, `radx th`): rows appended across
+// two flushes, read back by read_time_history and independently with the HDF5 C API (shape, chunking,
 // attributes, values), the atomic rewrite (no .part left, a failed flush keeps the previous file), the
 // listing, CSV export with selectors, and the exit codes of the `radx th` command.
 //
@@ -22,8 +22,8 @@
 #include <vector>
 #include "test_util.hpp"
 
-#include "io/time_history.hpp"
-#include "io/time_history_export.hpp"
+#include "io/hdf5/time_history.hpp"
+#include "io/hdf5/time_history_export.hpp"
 
 namespace {
 
@@ -123,7 +123,7 @@ std::vector<std::string> c_string_array_attr(hid_t obj, const char* name) {
   const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.id));
   const H5Id type{H5Tcopy(H5T_C_S1), H5Tclose};
   H5Tset_size(type.id, H5T_VARIABLE);
-  H5Tset_cset(type.id, H5T_CSET_UTF8);  // radx writes UTF-8 strings (io/hdf5_util.hpp)
+  H5Tset_cset(type.id, H5T_CSET_UTF8);  // radx writes UTF-8 strings (io/hdf5/hdf5_util.hpp)
   std::vector<char*> p(n, nullptr);
   if (n > 0) REQUIRE(H5Aread(a.id, type.id, p.data()) >= 0);
   std::vector<std::string> out;

@@ -1,6 +1,6 @@
-// NAME_energy.csv and NAME_energy.png (io/energy_plot.hpp): the table read back, the chart checked from its
-// bytes (PNG signature and the size in its IHDR chunk), the temporary files gone, the previous chart kept
-// when a new one fails, and every failure a warning rather than an exception. The chart is drawn by the
+// NAME_energy.csv and NAME_energy.png (io/listing/energy_plot.hpp): the table read back, the chart checked
+// from its bytes (PNG signature and the size in its IHDR chunk), the temporary files gone, the previous chart
+// kept when a new one fails, and every failure a warning rather than an exception. The chart is drawn by the
 // Debian /usr/bin/python3 with python3-matplotlib (scripts/deps.sh installs it).
 //
 // Tolerances:
@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "io/energy_plot.hpp"
+#include "io/listing/energy_plot.hpp"
 #include "test_util.hpp"
 
 namespace {
@@ -217,8 +217,8 @@ TEST_CASE("energy chart: a script failure is reported with the script's own word
   CHECK(leftovers(tmp.path()).empty());
 }
 
-TEST_CASE("energy chart: the embedded script is io/plot_energy.py", "[plot]") {
-  const std::string source = read_text(fs::path(RADX_SOURCE_DIR) / "io" / "plot_energy.py");
+TEST_CASE("energy chart: the embedded script is io/listing/plot_energy.py", "[plot]") {
+  const std::string source = read_text(fs::path(RADX_SOURCE_DIR) / "io" / "listing" / "plot_energy.py");
   REQUIRE_FALSE(source.empty());
   CHECK(radx::io::energy_plot_script() == source);
 }

@@ -23,10 +23,10 @@
 #include <tuple>
 #include <vector>
 
-#include "io/engine_listing.hpp"
-#include "io/summary_json.hpp"
-#include "parser/build_run_controls.hpp"
-#include "parser/deck.hpp"
+#include "io/listing/engine_listing.hpp"
+#include "io/listing/summary_json.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "parser/reading/deck.hpp"
 #include "test_util.hpp"
 
 namespace {

@@ -1,12 +1,12 @@
-// Unit labels of outputs (io/unit_labels.hpp): a named unit must be worth, in SI, what the work units give
-// for its dimension (mass^a length^b time^c of the system's SI factors), to round-off (relative 1e-12); other
-// dimensions are spelled from the unit names.
+// Unit labels of outputs (io/listing/unit_labels.hpp): a named unit must be worth, in SI, what the work units
+// give for its dimension (mass^a length^b time^c of the system's SI factors), to round-off (relative 1e-12);
+// other dimensions are spelled from the unit names.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
 #include <string>
 
-#include "io/unit_labels.hpp"
+#include "io/listing/unit_labels.hpp"
 
 TEST_CASE("named output units are worth what the work units give", "[units]") {
   const std::map<std::string, double> si = {{"J", 1.0},   {"mJ", 1e-3},  {"N", 1.0},     {"kN", 1e3},

@@ -1,5 +1,5 @@
-// A deck's own regression reference NAME.ref (io/regress_reference.hpp): its reader and every error, the
-// pass rule |radx - ref| <= max(rel |ref|, floor) and the score, time-history values interpolated between
+// A deck's own regression reference NAME.ref (io/regress/regress_reference.hpp): its reader and every error,
+// the pass rule |radx - ref| <= max(rel |ref|, floor) and the score, time-history values interpolated between
 // rows, --update keeping everything but the values, and the reference a run writes when there is none.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "io/regress_reference.hpp"
+#include "io/regress/regress_reference.hpp"
 #include "io/xml_text.hpp"
 
 using radx::io::RegressReference;

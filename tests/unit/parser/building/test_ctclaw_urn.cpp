@@ -7,10 +7,10 @@
 #include <sstream>
 
 #include "apps/starter_pipeline.hpp"
-#include "parser/ctclaw_urn.hpp"
-#include "parser/deck.hpp"
-#include "parser/field_parse.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/ctclaw_urn.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/deck.hpp"
+#include "parser/reading/field_parse.hpp"
 #include "test_util.hpp"
 
 using radx::parse_ctclaw_urn;

@@ -13,7 +13,7 @@
 #include <map>
 #include <set>
 
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
 #include "solver/model/geometry.hpp"
 #include "test_util.hpp"
 

@@ -1,7 +1,7 @@
-// Formulation honesty (parser/check_formulations.cpp): a formulation radx does not implement is refused by
-// name, or with --allow-substitutions runs the nearest implemented one, listed in the starter listing, the
-// engine listing and NAME_summary.json. The substituted run must be the implemented formulation's run, bit
-// for bit: the same deck written with that formulation gives the same energies.
+// Formulation honesty (parser/building/check_formulations.cpp): a formulation radx does not implement is
+// refused by name, or with --allow-substitutions runs the nearest implemented one, listed in the starter
+// listing, the engine listing and NAME_summary.json. The substituted run must be the implemented
+// formulation's run, bit for bit: the same deck written with that formulation gives the same energies.
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>

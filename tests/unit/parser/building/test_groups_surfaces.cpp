@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <set>
 
-#include "parser/model_builder.hpp"
+#include "parser/building/model_builder.hpp"
 #include "solver/model/geometry.hpp"
 #include "test_util.hpp"
 

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "apps/starter_pipeline.hpp"
-#include "io/engine_listing.hpp"
-#include "parser/diagnostics.hpp"
-#include "parser/plausibility.hpp"
+#include "io/listing/engine_listing.hpp"
+#include "parser/building/plausibility.hpp"
+#include "parser/reading/diagnostics.hpp"
 #include "solver/model/geometry.hpp"
 #include "solver/model/stable_step.hpp"
 #include "test_util.hpp"

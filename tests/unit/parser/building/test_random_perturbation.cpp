@@ -1,11 +1,11 @@
-// /RANDOM and /RANDOM/GRNOD (parser/build_random.cpp): the node coordinates after the starter, against the
-// 16-bit linear congruential sequence written out here independently: I <- (25173 I + 13849) mod 65536,
-// r = (I - 32768) / 32768, each node's x, y, z in node order, I_0 = trunc(32768 SEED + 32768).
+// /RANDOM and /RANDOM/GRNOD (parser/building/build_random.cpp): the node coordinates after the starter,
+// against the 16-bit linear congruential sequence written out here independently: I <- (25173 I + 13849) mod
+// 65536, r = (I - 32768) / 32768, each node's x, y, z in node order, I_0 = trunc(32768 SEED + 32768).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 
-#include "parser/deck.hpp"
+#include "parser/reading/deck.hpp"
 #include "test_util.hpp"
 
 using radx::test::Line;

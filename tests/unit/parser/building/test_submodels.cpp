@@ -1,6 +1,6 @@
 // //SUBMODEL ... //ENDSUB with their id offsets and units, /TRANSFORM/TRA, /ROT, /SCA and /SYM on submodels
-// and node groups, and /MOVE_FUNCT (parser/deck_reader.cpp, parser/build_transforms.cpp). Every expected
-// value is a closed form written out independently of the code under test:
+// and node groups, and /MOVE_FUNCT (parser/reading/deck_reader.cpp, parser/building/build_transforms.cpp).
+// Every expected value is a closed form written out independently of the code under test:
 //   rotation   x' = c + (x - c) cos a + (u x (x - c)) sin a + u (u . (x - c)) (1 - cos a)  (Rodrigues)
 //   scaling    x' = c + s (x - c) componentwise, volume V s_x s_y s_z
 //   mirror     x' = x - 2 ((x - p) . n) n with |n| = 1, volume unchanged
@@ -11,7 +11,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "solver/functions.hpp"
+#include "solver/conditions/functions.hpp"
 #include "solver/model/geometry.hpp"
 #include "test_util.hpp"
 

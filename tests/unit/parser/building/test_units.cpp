@@ -3,7 +3,7 @@
 // computed here from the SI values of the units: g = 1e-3 kg, mm = 1e-3 m, ms = 1e-3 s.
 #include <catch2/catch.hpp>
 
-#include "parser/deck.hpp"
+#include "parser/reading/deck.hpp"
 #include "test_util.hpp"
 
 using radx::test::Line;

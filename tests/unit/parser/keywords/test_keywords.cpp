@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "parser/deck.hpp"
+#include "parser/reading/deck.hpp"
 #include "test_util.hpp"
 
 namespace {

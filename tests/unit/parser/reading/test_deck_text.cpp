@@ -1,7 +1,7 @@
 // The text layer of the reader: comments, includes, CRLF, trailing blanks, free format, tabs.
 #include <catch2/catch.hpp>
 
-#include "parser/deck.hpp"
+#include "parser/reading/deck.hpp"
 #include "test_util.hpp"
 
 using radx::Diag;

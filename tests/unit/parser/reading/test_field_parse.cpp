@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "parser/field_parse.hpp"
+#include "parser/reading/field_parse.hpp"
 
 using radx::NumberStatus;
 

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "apps/starter_pipeline.hpp"
-#include "parser/deck.hpp"
+#include "parser/reading/deck.hpp"
 #include "test_util.hpp"
 
 namespace fs = std::filesystem;

@@ -14,8 +14,8 @@
 #include <sstream>
 #include <string>
 
-#include "parser/build_run_controls.hpp"
-#include "parser/keyword_schema.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "parser/keywords/keyword_schema.hpp"
 #include "test_util.hpp"
 
 namespace fs = std::filesystem;

@@ -11,8 +11,8 @@
 #include <regex>
 #include <sstream>
 
-#include "parser/build_run_controls.hpp"
-#include "parser/deck.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "parser/reading/deck.hpp"
 #include "test_util.hpp"
 
 namespace fs = std::filesystem;

@@ -1,5 +1,5 @@
-// Loads and kinematic conditions (solver/kinematics.hpp) on hand-built models and node states, driven by
-// a minimal central-difference loop written here: forces -> a = f/m -> conditions -> v += dt12 a,
+// Loads and kinematic conditions (solver/conditions/kinematics.hpp) on hand-built models and node states,
+// driven by a minimal central-difference loop written here: forces -> a = f/m -> conditions -> v += dt12 a,
 // x += dt2 v, with dt1 = 0 at cycle 0 (elements.md section 0). Each check states what its tolerance
 // means; "round-off" tolerances are 1e-12 relative unless a scale is given.
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/kinematics.hpp"
+#include "solver/conditions/kinematics.hpp"
 
 namespace m = radx::model;
 namespace sv = radx::solver;
@@ -1273,10 +1273,10 @@ TEST_CASE("rigid body tumbling: Euler's equations keep the global angular moment
 }
 
 // (f) ------------------------------------------------------------------------------------------------------
-// Sensors (solver/sensors.hpp): /SENSOR/TIME and what it drives. The loop below is the engine's order: loads
-// at t_n with the sensor state of the previous check, the step, the sensors' check with it, the conditions,
-// the update. With a constant step and activation times half a step before a cycle time, the central
-// difference sums are the exact integrals (midpoint rule on linear functions): round-off tolerances.
+// Sensors (solver/conditions/sensors.hpp): /SENSOR/TIME and what it drives. The loop below is the engine's
+// order: loads at t_n with the sensor state of the previous check, the step, the sensors' check with it, the
+// conditions, the update. With a constant step and activation times half a step before a cycle time, the
+// central difference sums are the exact integrals (midpoint rule on linear functions): round-off tolerances.
 namespace {
 
 m::Sensor timer(std::int64_t id, double t_delay, double t_stop = m::kNever) {

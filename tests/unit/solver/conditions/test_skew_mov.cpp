@@ -1,19 +1,19 @@
-// /SKEW/MOV: the frame carried by three nodes (parser/build_skews.cpp, model::node_skew_axes,
-// solver/skew_frames.cpp) and every use of a skew reading the frame of the cycle (boundary conditions,
-// imposed velocities, initial velocities, loads, accelerometers, the /TH/NODE values). Expected values from
-// the frame's definition (Dir axis along N1 -> N2, N3 in the plane of the Dir axis and the next one) and
-// from rotating the frame's nodes by a known angle.
+// /SKEW/MOV: the frame carried by three nodes (parser/building/build_skews.cpp, model::node_skew_axes,
+// solver/conditions/skew_frames.cpp) and every use of a skew reading the frame of the cycle (boundary
+// conditions, imposed velocities, initial velocities, loads, accelerometers, the /TH/NODE values). Expected
+// values from the frame's definition (Dir axis along N1 -> N2, N3 in the plane of the Dir axis and the next
+// one) and from rotating the frame's nodes by a known angle.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 
-#include "solver/accelerometer.hpp"
-#include "solver/boundary_conditions.hpp"
-#include "solver/explicit_engine.hpp"
-#include "solver/external_loads.hpp"
+#include "solver/conditions/boundary_conditions.hpp"
+#include "solver/conditions/external_loads.hpp"
+#include "solver/conditions/skew_frames.hpp"
+#include "solver/engine/explicit_engine.hpp"
 #include "solver/model/geometry.hpp"
-#include "solver/skew_frames.hpp"
-#include "solver/time_history_values.hpp"
+#include "solver/outputs/accelerometer.hpp"
+#include "solver/outputs/time_history_values.hpp"
 #include "test_util.hpp"
 
 using radx::test::Line;

@@ -1,11 +1,11 @@
-// /SKEW/FIX and the conditions and loads that name a skew (parser/build_skews.cpp,
-// solver/boundary_conditions.cpp, solver/external_loads.cpp). Expected values from the frame's definition and
-// Newton's law on a free node.
+// /SKEW/FIX and the conditions and loads that name a skew (parser/building/build_skews.cpp,
+// solver/conditions/boundary_conditions.cpp, solver/conditions/external_loads.cpp). Expected values from the
+// frame's definition and Newton's law on a free node.
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "solver/boundary_conditions.hpp"
-#include "solver/external_loads.hpp"
+#include "solver/conditions/boundary_conditions.hpp"
+#include "solver/conditions/external_loads.hpp"
 #include "test_util.hpp"
 
 using radx::test::Line;

@@ -1,6 +1,7 @@
-// /INTER/TYPE2 kinematic tie (solver/tied_type2.hpp, parser/build_tied.cpp): the starter's projection and
-// its diagnostics, the force transfer's balance and virtual work, and a tied pair of bricks turned 90
-// degrees through the whole engine. The tied cantilever (bending as one beam) is in test_verification.cpp.
+// /INTER/TYPE2 kinematic tie (solver/conditions/tied_type2.hpp, parser/building/build_tied.cpp): the
+// starter's projection and its diagnostics, the force transfer's balance and virtual work, and a tied pair of
+// bricks turned 90 degrees through the whole engine. The tied cantilever (bending as one beam) is in
+// test_verification.cpp.
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -10,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "parser/deck.hpp"
-#include "parser/model_builder.hpp"
-#include "solver/explicit_engine.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/deck.hpp"
+#include "solver/conditions/tied_type2.hpp"
+#include "solver/engine/explicit_engine.hpp"
 #include "solver/model/tied_map.hpp"
-#include "solver/tied_type2.hpp"
 #include "test_util.hpp"
 
 namespace md = radx::model;
@@ -356,8 +357,8 @@ TEST_CASE("TYPE2 in the engine: tied nodes keep their offsets through a 90 degre
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// Spotflag 1, the rigid tie (solver/tied_type2.hpp). The map is x_s = c + R q0 with R the least-squares
-// rotation of the segment's nodes about their centroid c; the forces go back by its transpose.
+// Spotflag 1, the rigid tie (solver/conditions/tied_type2.hpp). The map is x_s = c + R q0 with R the
+// least-squares rotation of the segment's nodes about their centroid c; the forces go back by its transpose.
 namespace {
 
 // A model of one tie: nodes 0..3 the segment (n4 = n3 for a triangle), node 4 the secondary, and one spring

@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "solver/explicit_engine.hpp"
+#include "solver/engine/explicit_engine.hpp"
 #include "test_util.hpp"
 
 using radx::test::Line;

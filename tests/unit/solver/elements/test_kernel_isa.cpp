@@ -1,6 +1,6 @@
-// The instruction-set variants of the element kernels (solver/kernel_isa.hpp) give the same results to the
-// bit: the x86-64-v3 copy of a kernel runs four doubles per vector where the baseline runs two, on the same
-// source, and must do the same IEEE operations per element in the same order (no fused multiply-add: the
+// The instruction-set variants of the element kernels (solver/elements/kernel_isa.hpp) give the same results
+// to the bit: the x86-64-v3 copy of a kernel runs four doubles per vector where the baseline runs two, on the
+// same source, and must do the same IEEE operations per element in the same order (no fused multiply-add: the
 // solver is compiled with -ffp-contract=off). The check is exact equality of every output and every state
 // array after several cycles on a warped, spinning, yielding mesh whose element count is not a multiple of
 // the block or of a vector (the loops' remainders run too).
@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "kernel_test_util.hpp"
-#include "solver/element_groups.hpp"
-#include "solver/kernel_isa.hpp"
-#include "solver/material_point.hpp"
-#include "solver/node_state.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/kernel_isa.hpp"
+#include "solver/engine/node_state.hpp"
+#include "solver/materials/material_point.hpp"
 
 using radx::solver::CycleInfo;
 using radx::solver::KernelIsa;

@@ -9,9 +9,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "parser/deck.hpp"
-#include "parser/model_builder.hpp"
-#include "solver/explicit_engine.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/deck.hpp"
+#include "solver/engine/explicit_engine.hpp"
 #include "test_util.hpp"
 
 using radx::test::Line;

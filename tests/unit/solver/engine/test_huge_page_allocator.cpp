@@ -1,7 +1,7 @@
-// The huge-page memory of the engine's large arrays (solver/huge_page_allocator.hpp): a large vector starts
-// on a 2 MB boundary in a mapping advised MADV_HUGEPAGE, a small one comes from the heap, values survive
-// growth across that threshold, copies and moves; the group arena (HugePageResource under a monotonic buffer)
-// hands out the same memory to the groups' arrays, which keep it when the group moves.
+// The huge-page memory of the engine's large arrays (solver/engine/huge_page_allocator.hpp): a large vector
+// starts on a 2 MB boundary in a mapping advised MADV_HUGEPAGE, a small one comes from the heap, values
+// survive growth across that threshold, copies and moves; the group arena (HugePageResource under a monotonic
+// buffer) hands out the same memory to the groups' arrays, which keep it when the group moves.
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <fstream>
@@ -10,8 +10,8 @@
 #include <string>
 #include <utility>
 
-#include "solver/element_groups.hpp"
-#include "solver/huge_page_allocator.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/engine/huge_page_allocator.hpp"
 
 using radx::solver::HugePageResource;
 using radx::solver::HugeVector;

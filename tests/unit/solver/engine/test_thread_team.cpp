@@ -1,7 +1,7 @@
-// The engine's thread team (solver/thread_team.hpp): every chunk runs exactly once whatever the team size,
-// chunk boundaries do not depend on the thread count, and a run of the impact benchmark's model (shells,
-// bricks, two TYPE7 interfaces; large enough that every stage runs in parallel) is bit-identical on 1, 2
-// and 3 threads (architecture.md: a deterministic scatter, results independent of the thread count).
+// The engine's thread team (solver/engine/thread_team.hpp): every chunk runs exactly once whatever the team
+// size, chunk boundaries do not depend on the thread count, and a run of the impact benchmark's model
+// (shells, bricks, two TYPE7 interfaces; large enough that every stage runs in parallel) is bit-identical on
+// 1, 2 and 3 threads (architecture.md: a deterministic scatter, results independent of the thread count).
 #include <array>
 #include <atomic>
 #include <catch2/catch.hpp>
@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "contact/type7_prepare.hpp"
-#include "parser/build_run_controls.hpp"
-#include "solver/explicit_engine.hpp"
-#include "solver/ordered_commit.hpp"
-#include "solver/thread_team.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "solver/engine/explicit_engine.hpp"
+#include "solver/engine/ordered_commit.hpp"
+#include "solver/engine/thread_team.hpp"
 #include "test_util.hpp"
 
 using radx::solver::Chunks;

@@ -1,8 +1,9 @@
-// /FAIL/TAB (solver/fail_tab.cpp) and the damage stage it shares with /FAIL/JOHNSON
-// (solver/failure_damage.cpp): the failure strain from the triaxiality tables, the rate interpolation, the
-// temperature and element-size factors, the damage integral with the exponent n and Dcrit, what a failed
-// point does, the shell section's deletion by Ifail_sh and P_thickfail, and the starter's reading of the
-// keyword. Expected values are computed here from the formulas at the top of those files. Units: MPa, mm, s.
+// /FAIL/TAB (solver/materials/fail_tab.cpp) and the damage stage it shares with /FAIL/JOHNSON
+// (solver/materials/failure_damage.cpp): the failure strain from the triaxiality tables, the rate
+// interpolation, the temperature and element-size factors, the damage integral with the exponent n and Dcrit,
+// what a failed point does, the shell section's deletion by Ifail_sh and P_thickfail, and the starter's
+// reading of the keyword. Expected values are computed here from the formulas at the top of those files.
+// Units: MPa, mm, s.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -10,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "solver/element_groups.hpp"
-#include "solver/explicit_engine.hpp"
-#include "solver/material_point.hpp"
-#include "solver/shell_section.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/shell/shell_section.hpp"
+#include "solver/engine/explicit_engine.hpp"
+#include "solver/materials/material_point.hpp"
 #include "test_util.hpp"
 
 using radx::model::Function;

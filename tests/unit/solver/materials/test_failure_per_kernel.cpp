@@ -1,7 +1,8 @@
 // Failure wiring of the new kernels (commit 1456a80): QEPH (Ishell 24), QBAT (Ishell 12), HEPH (Isolid 24),
 // the fully integrated brick (Isolid 14) and the tetrahedron with law 36 Eps_p_max and LAW2 + /FAIL/JOHNSON,
 // each driven in tension by imposed nodal velocities on fixed nodes (a constant strain increment per cycle),
-// against the rules written at the top of solver/fail_johnson.cpp and solver/shell_section.hpp:
+// against the rules written at the top of solver/materials/fail_johnson.cpp and
+// solver/elements/shell/shell_section.hpp:
 //  * shells: deleted at once (off 0) in the cycle the section says so (next_off with fail_now);
 //  * solids: off 0.8 in the failure cycle, 0.8 x off per cycle after it, 0 in the first cycle starting below
 //    0.1 (brick_next_off): 0.8^10 = 0.107 >= 0.1 > 0.8^11 = 0.086, so deleted 11 cycles after the trigger;
@@ -16,10 +17,10 @@
 #include <span>
 #include <vector>
 
-#include "solver/element_groups.hpp"
-#include "solver/material_point.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/engine/node_state.hpp"
+#include "solver/materials/material_point.hpp"
 #include "solver/model/geometry.hpp"
-#include "solver/node_state.hpp"
 
 using radx::model::Function;
 using radx::model::Material;

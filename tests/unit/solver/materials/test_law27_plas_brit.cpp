@@ -1,7 +1,7 @@
-// LAW27 (/MAT/PLAS_BRIT, solver/law27_plas_brit.cpp) at a single shell integration point and through the
-// shell section, against values computed here from the formulas at the top of that file. Units: MPa, mm, s
-// (aluminium-like). "Round-off" is 1e-12 relative: a few thousand ulps of the quantities involved, far below
-// any modelling effect tested here.
+// LAW27 (/MAT/PLAS_BRIT, solver/materials/law27_plas_brit.cpp) at a single shell integration point and
+// through the shell section, against values computed here from the formulas at the top of that file. Units:
+// MPa, mm, s (aluminium-like). "Round-off" is 1e-12 relative: a few thousand ulps of the quantities involved,
+// far below any modelling effect tested here.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "solver/element_groups.hpp"
-#include "solver/material_point.hpp"
-#include "solver/shell_section.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/shell/shell_section.hpp"
+#include "solver/materials/material_point.hpp"
 #include "test_util.hpp"
 
 using radx::model::Material;

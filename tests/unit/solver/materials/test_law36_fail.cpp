@@ -1,7 +1,8 @@
-// LAW36 (/MAT/PLAS_TAB, solver/law36_plas_tab.cpp) and /FAIL/JOHNSON (solver/fail_johnson.cpp) at a single
-// integration point and through the shell section and the brick kernel, against values computed here from
-// the formulas at the top of those files. Units: MPa, mm, s (steel-like). Each tolerance says what it means;
-// "round-off" is 1e-12 relative, a few thousand ulps of the quantities involved.
+// LAW36 (/MAT/PLAS_TAB, solver/materials/law36_plas_tab.cpp) and /FAIL/JOHNSON
+// (solver/materials/fail_johnson.cpp) at a single integration point and through the shell section and the
+// brick kernel, against values computed here from the formulas at the top of those files. Units: MPa, mm, s
+// (steel-like). Each tolerance says what it means; "round-off" is 1e-12 relative, a few thousand ulps of the
+// quantities involved.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -11,10 +12,10 @@
 #include <numbers>
 #include <vector>
 
-#include "solver/element_groups.hpp"
-#include "solver/material_point.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/shell/shell_section.hpp"
+#include "solver/materials/material_point.hpp"
 #include "solver/model/geometry.hpp"
-#include "solver/shell_section.hpp"
 #include "test_util.hpp"
 
 using radx::model::Function;

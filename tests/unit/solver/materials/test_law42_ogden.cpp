@@ -1,8 +1,9 @@
-// LAW42 (/MAT/OGDEN, solver/law42_ogden.cpp) at one point and in the one-point brick (solver/hex8_fb.cpp),
-// against closed forms of the Ogden model. Parameters: the QA rubber of OpenRadioss's law42 deck (mu 827.6
-// and 55, alpha 2 and -2; units of that deck), whose initial shear modulus is G0 = mu1 - mu2 = 772.6.
-// "Round-off" is 1e-10 relative: the eigen-solver's error on the stretches of B (about 1e-15 relative,
-// squared and raised to alpha) stays far below it, and no modelling effect is that small.
+// LAW42 (/MAT/OGDEN, solver/materials/law42_ogden.cpp) at one point and in the one-point brick
+// (solver/elements/solid/hex8_fb.cpp), against closed forms of the Ogden model. Parameters: the QA rubber of
+// OpenRadioss's law42 deck (mu 827.6 and 55, alpha 2 and -2; units of that deck), whose initial shear modulus
+// is G0 = mu1 - mu2 = 772.6. "Round-off" is 1e-10 relative: the eigen-solver's error on the stretches of B
+// (about 1e-15 relative, squared and raised to alpha) stays far below it, and no modelling effect is that
+// small.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -10,8 +11,8 @@
 #include <vector>
 
 #include "kernel_test_util.hpp"
-#include "solver/element_groups.hpp"
-#include "solver/material_point.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/materials/material_point.hpp"
 
 using radx::model::Material;
 using radx::model::MaterialLaw;
@@ -33,7 +34,7 @@ MaterialParams ogden(double nu, std::vector<double> mu = {827.6, 55.0},
   m.ogden.alpha = alpha;
   m.ogden.iform = iform;
   m.ogden.sig_cut = sig_cut;
-  // As the starter derives them (parser/build_hyperelastic.cpp).
+  // As the starter derives them (parser/building/build_hyperelastic.cpp).
   m.shear = 0.5 * g;
   m.bulk = g * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu));
   m.young = g * (1.0 + nu);

@@ -1,8 +1,9 @@
-// LAW70 (/MAT/FOAM_TAB, solver/law70_foam_tab.cpp) at one point and in the one-point brick, against closed
-// forms. With nu = 0 the law's Hooke matrix is diagonal (A11 = E, A12 = 0), so a uniaxial strain eps_xx = -e
-// gives a uniaxial stress whose norm is the curve's value: sigma_xx = -Y(e) (compression negative). The
-// curves' slopes stay below E0 = 20, so on loading the elastic trial is always above the curve and the stress
-// is the curve itself (sigeps70.F takes min(curve, trial)). "Round-off" is 1e-12 of the curve's scale.
+// LAW70 (/MAT/FOAM_TAB, solver/materials/law70_foam_tab.cpp) at one point and in the one-point brick, against
+// closed forms. With nu = 0 the law's Hooke matrix is diagonal (A11 = E, A12 = 0), so a uniaxial strain
+// eps_xx = -e gives a uniaxial stress whose norm is the curve's value: sigma_xx = -Y(e) (compression
+// negative). The curves' slopes stay below E0 = 20, so on loading the elastic trial is always above the curve
+// and the stress is the curve itself (sigeps70.F takes min(curve, trial)). "Round-off" is 1e-12 of the
+// curve's scale.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -11,8 +12,8 @@
 #include <vector>
 
 #include "kernel_test_util.hpp"
-#include "solver/element_groups.hpp"
-#include "solver/material_point.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/materials/material_point.hpp"
 
 using radx::model::Function;
 using radx::model::Material;

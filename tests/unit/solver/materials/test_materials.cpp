@@ -1,4 +1,4 @@
-// LAW1 (elastic) and LAW2 (Johnson-Cook) at a single integration point (solver/material_point.hpp),
+// LAW1 (elastic) and LAW2 (Johnson-Cook) at a single integration point (solver/materials/material_point.hpp),
 // against values computed here from the formulas of shared/spec/elements.md 1.4, 1.8, 3.3 and 6.
 // Units are consistent but arbitrary (steel-like: MPa, mm, s). Each check says what its tolerance means;
 // "round-off" tolerances are a few hundred ulps of the largest quantity in the formula.
@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "solver/material_point.hpp"
+#include "solver/materials/material_point.hpp"
 
 using radx::model::Material;
 using radx::model::MaterialLaw;

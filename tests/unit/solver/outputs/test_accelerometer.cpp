@@ -1,12 +1,13 @@
-// /ACCEL (solver/accelerometer.cpp): the reading of a node under constant acceleration, the integrated
-// velocity, the skew axes, and the 4-pole Butterworth filter's gain (-3 dB at Fcut, -80 dB a decade above).
+// /ACCEL (solver/outputs/accelerometer.cpp): the reading of a node under constant acceleration, the
+// integrated velocity, the skew axes, and the 4-pole Butterworth filter's gain (-3 dB at Fcut, -80 dB a
+// decade above).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 
-#include "solver/accelerometer.hpp"
-#include "solver/explicit_engine.hpp"
-#include "solver/time_history_values.hpp"
+#include "solver/engine/explicit_engine.hpp"
+#include "solver/outputs/accelerometer.hpp"
+#include "solver/outputs/time_history_values.hpp"
 #include "test_util.hpp"
 
 using radx::test::Line;

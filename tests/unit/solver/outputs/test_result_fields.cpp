@@ -1,4 +1,4 @@
-// Result fields (solver/result_fields.hpp) against independent quantities:
+// Result fields (solver/outputs/result_fields.hpp) against independent quantities:
 // * every /ANIM name the engine deck accepts has a field the engine can fill (the two tables agree);
 // * Johnson-Cook brick (decks/verification/jc_single_brick): the von Mises output lies on the flow curve
 //   a + b eps_p^n of the plastic-strain output; the axial stress equals it and the pressure is -1/3 of it
@@ -17,12 +17,12 @@
 #include <vector>
 
 #include "contact/type7_prepare.hpp"
-#include "parser/build_run_controls.hpp"
-#include "parser/deck.hpp"
-#include "parser/model_builder.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/deck.hpp"
+#include "solver/elements/shell/shell_section.hpp"
 #include "solver/model/geometry.hpp"
-#include "solver/result_fields.hpp"
-#include "solver/shell_section.hpp"
+#include "solver/outputs/result_fields.hpp"
 
 namespace {
 

@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "parser/build_run_controls.hpp"
-#include "parser/deck.hpp"
-#include "parser/model_builder.hpp"
-#include "solver/explicit_engine.hpp"
-#include "solver/kinematics_driver.hpp"
-#include "solver/time_history_values.hpp"
+#include "parser/building/build_run_controls.hpp"
+#include "parser/building/model_builder.hpp"
+#include "parser/reading/deck.hpp"
+#include "solver/conditions/kinematics_driver.hpp"
+#include "solver/engine/explicit_engine.hpp"
+#include "solver/outputs/time_history_values.hpp"
 #include "test_util.hpp"
 
 using radx::test::Line;

@@ -1,7 +1,8 @@
-// Shell kernels (solver/shell_bt4.cpp, solver/shell_c0_tri3.cpp) on node states and groups built by hand,
-// against values derived here from the formulas of shared/spec/elements.md (1.2-1.8, 2, 4.1, 4.2, 4.5,
-// 6.4) and the closed-form cases of shared/spec/verification.md 13. Each check says what its tolerance
-// means. "Round-off" is 1e-12 relative to the natural scale of the quantity (a few thousand ulps).
+// Shell kernels (solver/elements/shell/shell_bt4.cpp, solver/elements/shell/shell_c0_tri3.cpp) on node states
+// and groups built by hand, against values derived here from the formulas of shared/spec/elements.md
+// (1.2-1.8, 2, 4.1, 4.2, 4.5, 6.4) and the closed-form cases of shared/spec/verification.md 13. Each check
+// says what its tolerance means. "Round-off" is 1e-12 relative to the natural scale of the quantity (a few
+// thousand ulps).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -12,9 +13,9 @@
 #include <vector>
 
 #include "kernel_test_util.hpp"
-#include "solver/element_groups.hpp"
-#include "solver/material_point.hpp"
-#include "solver/node_state.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/engine/node_state.hpp"
+#include "solver/materials/material_point.hpp"
 
 using radx::model::Material;
 using radx::model::MaterialLaw;

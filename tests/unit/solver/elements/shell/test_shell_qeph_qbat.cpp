@@ -1,8 +1,9 @@
-// QEPH (Ishell 24, solver/shell_qeph.cpp) and QBAT (Ishell 12, solver/shell_qbat.cpp) on node states and
-// groups built by hand, against values derived here from the formulas of shared/spec/elements.md (1.4,
-// 1.10, 4.5, 6.4) and the closed-form patch fields of verification.md 13. "Round-off" is 1e-12 relative to
-// the natural scale of the quantity (a few thousand ulps); 1e-9 where a result goes through a material update
-// and a change of frame (still 1e5 times below any formulation error, which would be at least 1e-4).
+// QEPH (Ishell 24, solver/elements/shell/shell_qeph.cpp) and QBAT (Ishell 12,
+// solver/elements/shell/shell_qbat.cpp) on node states and groups built by hand, against values derived here
+// from the formulas of shared/spec/elements.md (1.4, 1.10, 4.5, 6.4) and the closed-form patch fields of
+// verification.md 13. "Round-off" is 1e-12 relative to the natural scale of the quantity (a few thousand
+// ulps); 1e-9 where a result goes through a material update and a change of frame (still 1e5 times below any
+// formulation error, which would be at least 1e-4).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -11,9 +12,9 @@
 #include <vector>
 
 #include "kernel_test_util.hpp"
-#include "solver/element_groups.hpp"
-#include "solver/material_point.hpp"
-#include "solver/node_state.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/engine/node_state.hpp"
+#include "solver/materials/material_point.hpp"
 
 using radx::model::Material;
 using radx::model::MaterialLaw;

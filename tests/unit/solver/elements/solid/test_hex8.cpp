@@ -1,6 +1,6 @@
-// The one-point brick with viscous hourglass control (solver/hex8_fb.cpp) on hand-built nodes and groups.
-// Expected values come from the formulas of shared/spec/elements.md 3.2-3.4, 4.4-4.5 and from closed-form
-// kinematics, computed here independently of the kernel (no kernel helper is reused). Units are
+// The one-point brick with viscous hourglass control (solver/elements/solid/hex8_fb.cpp) on hand-built nodes
+// and groups. Expected values come from the formulas of shared/spec/elements.md 3.2-3.4, 4.4-4.5 and from
+// closed-form kinematics, computed here independently of the kernel (no kernel helper is reused). Units are
 // consistent but arbitrary except in the steel time-step case (mm, s, tonne).
 //
 // Two properties of the centre-gradient element (OpenRadioss Isolid 1) shape these tests:
@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "kernel_test_util.hpp"
-#include "solver/element_groups.hpp"
+#include "solver/elements/element_groups.hpp"
 #include "solver/model/geometry.hpp"
 
 using namespace radx::solver;

@@ -1,6 +1,6 @@
-// The fully integrated brick (solver/hex8_full.cpp: Isolid 12, 14, 17, 18) on hand-built nodes and groups.
-// Expected values come from closed-form kinematics and linear elasticity, computed here without the kernel's
-// helpers. Units are consistent but arbitrary except in the steel time-step case (mm, s, tonne).
+// The fully integrated brick (solver/elements/solid/hex8_full.cpp: Isolid 12, 14, 17, 18) on hand-built nodes
+// and groups. Expected values come from closed-form kinematics and linear elasticity, computed here without
+// the kernel's helpers. Units are consistent but arbitrary except in the steel time-step case (mm, s, tonne).
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "kernel_test_util.hpp"
-#include "solver/element_groups.hpp"
+#include "solver/elements/element_groups.hpp"
 #include "solver/model/geometry.hpp"
 
 using namespace radx::solver;

@@ -1,7 +1,8 @@
-// The HEPH brick (Isolid 24, solver/hex8_heph.cpp) and the co-rotational frame of the one-point brick
-// (Iframe 2, solver/hex8_fb.cpp) on hand-built nodes and groups. Expected values come from closed forms
-// (finite-strain kinematics, the elastic energy of a warping mode of a cube) and from the formulas of
-// shared/spec/elements.md 3.5-3.7, 4.4-4.5, computed here without calling the kernels' helpers.
+// The HEPH brick (Isolid 24, solver/elements/solid/hex8_heph.cpp) and the co-rotational frame of the
+// one-point brick (Iframe 2, solver/elements/solid/hex8_fb.cpp) on hand-built nodes and groups. Expected
+// values come from closed forms (finite-strain kinematics, the elastic energy of a warping mode of a cube)
+// and from the formulas of shared/spec/elements.md 3.5-3.7, 4.4-4.5, computed here without calling the
+// kernels' helpers.
 //
 // Two properties make exact checks possible:
 //  * in the co-rotational frame the strain increment is D dt1 = sym(H) - 1/2 H^T H with H = L dt1 evaluated
@@ -18,7 +19,7 @@
 #include <vector>
 
 #include "kernel_test_util.hpp"
-#include "solver/element_groups.hpp"
+#include "solver/elements/element_groups.hpp"
 #include "solver/model/geometry.hpp"
 
 using namespace radx::solver;

@@ -1,7 +1,7 @@
-// The 4-node tetrahedron (/TETRA4, solver/tetra4.cpp) on hand-built nodes and groups, and through the
-// starter (reading, renumbering, masses, surfaces). Expected values come from closed-form kinematics and
-// from the formulas of the kernel's opening comment (OpenRadioss s4deri3.F, mqviscb.F, s4cumu3.F,
-// s4mass3.F), computed here independently of the kernel.
+// The 4-node tetrahedron (/TETRA4, solver/elements/solid/tetra4.cpp) on hand-built nodes and groups, and
+// through the starter (reading, renumbering, masses, surfaces). Expected values come from closed-form
+// kinematics and from the formulas of the kernel's opening comment (OpenRadioss s4deri3.F, mqviscb.F,
+// s4cumu3.F, s4mass3.F), computed here independently of the kernel.
 //
 // The linear tetrahedron reproduces a linear velocity field exactly on any shape (sum_k x_k (x) b_k = I
 // holds for every tetrahedron) and, unlike the one-point brick, integrates its gradients exactly, so every
@@ -17,8 +17,8 @@
 #include "contact/type7_engine.hpp"
 #include "contact/type7_prepare.hpp"
 #include "kernel_test_util.hpp"
-#include "parser/model_builder.hpp"
-#include "solver/element_groups.hpp"
+#include "parser/building/model_builder.hpp"
+#include "solver/elements/element_groups.hpp"
 #include "solver/model/geometry.hpp"
 #include "solver/model/masses.hpp"
 #include "solver/model/stable_step.hpp"

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "kernel_test_util.hpp"
-#include "solver/element_groups.hpp"
-#include "solver/explicit_engine.hpp"
-#include "solver/spring_law.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/elements/spring/spring_law.hpp"
+#include "solver/engine/explicit_engine.hpp"
 #include "test_util.hpp"
 
 namespace {

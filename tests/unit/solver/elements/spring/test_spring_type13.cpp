@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "kernel_test_util.hpp"
-#include "solver/element_groups.hpp"
-#include "solver/explicit_engine.hpp"
+#include "solver/elements/element_groups.hpp"
+#include "solver/engine/explicit_engine.hpp"
 #include "test_util.hpp"
 
 namespace {
