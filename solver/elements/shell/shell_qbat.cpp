@@ -40,10 +40,13 @@
 #include "solver/elements/shell/shell_frame.hpp"
 #include "solver/elements/shell/shell_quad_mindlin.hpp"
 #include "solver/elements/shell/shell_section.hpp"
+#include "solver/elements/shell/shell_stages.hpp"
 
 namespace radx::solver {
 
 namespace {
+
+using namespace shell_detail;  // the shared shell stages and the quad rows (shell_quad_mindlin.hpp)
 
 constexpr int kBlock = 64;  // elements per block (see shell_bt4.cpp)
 
@@ -61,157 +64,165 @@ struct QbatBlock {
   shell_detail::SectionBlock<kBlock> sec;
 };
 
-}  // namespace
+// Local geometry and velocities, the increments at the Gauss points and the element rate.
+[[gnu::always_inline]] inline void qbat_local_rates(QbatBlock& bk, const ShellConstants& k,
+                                                    const MaterialParams& mat, ShellGroup& g, int i0,
+                                                    int len) {
+  const double dt1 = k.dt1, alpha = k.alpha;
+  for (int j = 0; j < len; ++j) {
+    const std::size_t ii = static_cast<std::size_t>(i0 + j);
+    bk.off[j] = g.off[ii];
+    g.thick[ii] = first_use_thickness(FirstUseThickness::EveryElement, bk.off[j], g.thick[ii], g.t0[ii]);
+    bk.t[j] = k.update_thick ? g.thick[ii] : g.t0[ii];
+    // Local geometry (small strain: the first cycle's), velocities and rotation rates (shell_frame.hpp).
+    double lx[4], ly[4], vx[4], vy[4], vz[4], rx[4], ry[4];
+    quad_local_state(bk, j, g, ii, g.dt_fixed[ii] > 0.0 || g.props.ismstr == 1, lx, ly, vx, vy, vz, rx, ry);
+    double e[5], kap[3];
+    const QuadRows r0 = quad_rows(lx, ly, 0.0, 0.0);
+    bk.area[j] = 4.0 * r0.detj;
+    quad_rates(r0, vx, vy, vz, rx, ry, e, kap);
+    const double eq = dt1 > 0
+                          ? std::sqrt(equivalent_rate_arg(e[0] * dt1, e[1] * dt1, e[2] * dt1, kap[0] * dt1,
+                                                          kap[1] * dt1, kap[2] * dt1, g.thick[ii])) /
+                                dt1
+                          : 0.0;
+    const double rate = alpha * eq + (1.0 - alpha) * g.rate[ii];
+    if (bk.off[j] > 0.0) g.rate[ii] = rate;
+    bk.rfac[j] = jc_rate_factor(mat, rate);
+    bk.rate[j] = rate;
+    for (int gp = 0; gp < 4; ++gp) {
+      const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
+      bk.detj[gp][j] = r.detj;
+      quad_rates(r, vx, vy, vz, rx, ry, e, kap);
+      quad_second_order(r, vz, dt1, e);
+      for (int q = 0; q < 5; ++q) bk.dem[gp][q][j] = e[q] * dt1;
+      for (int q = 0; q < 3; ++q) bk.dk[gp][q][j] = kap[q] * dt1;
+    }
+    bk.dthick[j] = bk.w_plastic[j] = bk.eps_p_max[j] = bk.fail_now[j] = 0.0;
+  }
+}
 
-void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
-                       const CycleInfo& cyc) {
-  using namespace shell_detail;
+// The section at each Gauss point, on its own rows of the state; the element's thickness change, plastic
+// work, largest plastic strain and failure gathered over the points.
+[[gnu::always_inline]] inline void qbat_gauss_point_sections(QbatBlock& bk, const ShellConstants& k,
+                                                             const MaterialParams& mat, ShellGroup& g, int i0,
+                                                             int len) {
   constexpr std::size_t G = kGroupSize;
   const ShellProps& pr = g.props;
-  const double dt1 = cyc.dt1;
-  const ThicknessRule rule = thickness_rule(std::max(pr.n_points, 0));
   // Rows of one Gauss point's state: [n][5] stresses, or 8 resultants for N = 0 (allocate() made 4 of them).
   const std::size_t sig_rows = static_cast<std::size_t>(pr.n_points > 0 ? 5 * pr.n_points : 8);
   const std::size_t eps_rows = static_cast<std::size_t>(std::max(pr.n_points, 1));
-
-  const double young = mat.young, nu = mat.nu, rho = mat.rho0;
-  const double c = mat.c_shell > 0 ? mat.c_shell : std::sqrt(young / rho);
-  const double a11 = mat.a11 > 0 ? mat.a11 : young / (1.0 - nu * nu);
-  const double shf = pr.n_points == 1 ? 0.0 : pr.ashear;
-  const double gs = shf * mat.shear;
-  const double dn = pr.dn;
-  const double phi = std::sqrt(1.0 + dn * dn) - dn;
-  const double visc0 = (pr.dm > 0 && dt1 > 0) ? 1.414 * pr.dm * rho * c / dt1 : 0.0;
-  const double alpha = rate_filter_alpha(mat, dt1);
-  const double fail_limit = failure_limit(mat);
-  const bool update_thick = pr.ithick == 1;
-
-  double* nf = g.nodal_force.data();
-
-  QbatBlock bk;
   SectionBlock<kBlock>& sec = bk.sec;
-  sec.dt1 = dt1;  // law 27's rate term
+  for (int gp = 0; gp < 4; ++gp) {
+    for (int j = 0; j < len; ++j) {
+      for (int q = 0; q < 5; ++q) sec.dem[q][j] = bk.dem[gp][q][j];
+      for (int q = 0; q < 3; ++q) sec.dk[q][j] = bk.dk[gp][q][j];
+      sec.t[j] = bk.t[j];
+      sec.area[j] = bk.detj[gp][j];
+      sec.rfac[j] = bk.rfac[j];
+      sec.rate[j] = bk.rate[j];  // the /FAIL/JOHNSON D4 term
+      sec.off[j] = bk.off[j];
+    }
+    const auto gpz = static_cast<std::size_t>(gp);
+    section_update_block(g, i0, len, mat, k.rule, k.gs, sec, g.sig.data() + gpz * sig_rows * G,
+                         g.eps_p.data() + gpz * eps_rows * G, g.dmg.data() + gpz * eps_rows * G,
+                         g.brit.empty() ? nullptr : g.brit.data() + gpz * eps_rows * kBritVars * G,
+                         g.res.data() + gpz * 8 * G);
+    for (int j = 0; j < len; ++j) {
+      for (int q = 0; q < 5; ++q)
+        bk.for_old[gp][q][j] = sec.for_old[q][j], bk.for_new[gp][q][j] = sec.for_new[q][j];
+      for (int q = 0; q < 3; ++q)
+        bk.mom_old[gp][q][j] = sec.mom_old[q][j], bk.mom_new[gp][q][j] = sec.mom_new[q][j];
+      // Thickness change: the area-weighted mean of the points' (1.8).
+      bk.dthick[j] += sec.dthick[j] * bk.detj[gp][j] / bk.area[j];
+      bk.w_plastic[j] += sec.w_plastic[j];
+      bk.eps_p_max[j] = std::max(bk.eps_p_max[j], sec.eps_p_max[j]);
+      // Deletion at once when any Gauss point's section reaches its failure threshold.
+      bk.fail_now[j] = std::max(bk.fail_now[j], sec.fail_now[j]);
+    }
+  }
+}
+
+// Element j's energy increment over the Gauss points and its local nodal forces (none once it is deleted).
+[[gnu::always_inline]] inline double qbat_energy_and_forces(const QbatBlock& bk, double visc0, int j,
+                                                            double off_start, double off, const double lx[4],
+                                                            const double ly[4], double fx[4], double fy[4],
+                                                            double fz[4], double mx[4], double my[4]) {
+  const double t = bk.t[j], area = bk.area[j];
+  double de_int = 0;
+  const double ot = off * t, ot2 = off * t * t;
+  for (int gp = 0; gp < 4; ++gp) {
+    const double w = bk.detj[gp][j];
+    double dem[5], dk[3];
+    for (int q = 0; q < 5; ++q) dem[q] = bk.dem[gp][q][j];
+    for (int q = 0; q < 3; ++q) dk[q] = bk.dk[gp][q][j];
+    double fv[3];
+    membrane_damping(visc0, area, dem, fv);
+    de_int += shell_energy_increment(w, t, off_start, off, bk.for_old[gp], bk.for_new[gp], bk.mom_old[gp],
+                                     bk.mom_new[gp], j, dem, dk, fv);
+    if (off <= 0.0) continue;
+    const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
+    const double n[5] = {ot * (bk.for_new[gp][0][j] + fv[0]), ot * (bk.for_new[gp][1][j] + fv[1]),
+                         ot * (bk.for_new[gp][2][j] + fv[2]), ot * bk.for_new[gp][3][j],
+                         ot * bk.for_new[gp][4][j]};
+    const double m[3] = {ot2 * bk.mom_new[gp][0][j], ot2 * bk.mom_new[gp][1][j], ot2 * bk.mom_new[gp][2][j]};
+    quad_add_forces(r, w, n, m, fx, fy, fz, mx, my);
+  }
+  return de_int;
+}
+
+// Failure, energy, forces rotated to global axes, step (1.10) and nodal stiffness (4.5).
+[[gnu::always_inline]] inline void qbat_close_block(const QbatBlock& bk, const ShellConstants& k,
+                                                    ShellGroup& g, int i0, int len) {
+  constexpr std::size_t G = kGroupSize;
+  double* nf = g.nodal_force.data();
+  for (int j = 0; j < len; ++j) {
+    const std::size_t ii = static_cast<std::size_t>(i0 + j);
+    const double off_start = bk.off[j];
+    if (off_start <= 0.0) {
+      clear_shell_element(g, nf, ii, 24);
+      continue;
+    }
+    const double t = bk.t[j], area = bk.area[j];
+    const double off = next_off(k.fail_limit, off_start, bk.eps_p_max[j], bk.fail_now[j]);
+    g.off[ii] = off;
+    g.w_plastic[ii] += bk.w_plastic[j];
+    g.thick[ii] += bk.dthick[j] * off;
+
+    double lx[4], ly[4];
+    for (int n = 0; n < 4; ++n) lx[n] = bk.lx[n][j], ly[n] = bk.ly[n][j];
+    double fx[4] = {}, fy[4] = {}, fz[4] = {}, mx[4] = {}, my[4] = {};
+    g.e_int[ii] += qbat_energy_and_forces(bk, k.visc0, j, off_start, off, lx, ly, fx, fy, fz, mx, my);
+    if (off <= 0.0) {
+      clear_shell_element(g, nf, ii, 24);
+      continue;
+    }
+    const double e1x = bk.fr.e1[0][j], e1y = bk.fr.e1[1][j], e1z = bk.fr.e1[2][j];
+    const double e2x = bk.fr.e2[0][j], e2y = bk.fr.e2[1][j], e2z = bk.fr.e2[2][j];
+    const double e3x = bk.fr.e3[0][j], e3y = bk.fr.e3[1][j], e3z = bk.fr.e3[2][j];
+    for (int n = 0; n < 4; ++n)
+      store_local_forces(nf, G, static_cast<std::size_t>(n), ii, e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y, e3z,
+                         fx[n], fy[n], fz[n], mx[n], my[n]);
+    const double l = qeph_step_length(lx, ly, area);
+    g.dt[ii] = l * k.phi / k.c;
+    g.k_nodal[ii] = 0.5 * area * t * k.a11 / (l * l);
+  }
+}
+
+}  // namespace
+
+// The kernel: the list of its stages over each block of the group.
+void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                       const CycleInfo& cyc) {
+  const ShellConstants k = shell_constants(g.props, mat, cyc.dt1, g.props.dn);
+  QbatBlock bk;
+  bk.sec.dt1 = k.dt1;  // law 27's rate term
   for (int i0 = 0; i0 < g.count; i0 += kBlock) {
     const int len = std::min(kBlock, g.count - i0);
-    gather_block<true>(g.conn.data(), G, static_cast<std::size_t>(i0), static_cast<std::size_t>(len), nodes,
-                       bk.nb);
-    quad_frame_block(bk.nb, len, bk.fr);
-
-    // Local geometry and velocities, the increments at the Gauss points and the element rate.
-    for (int j = 0; j < len; ++j) {
-      const std::size_t ii = static_cast<std::size_t>(i0 + j);
-      bk.off[j] = g.off[ii];
-      if (g.thick[ii] <= 0.0) g.thick[ii] = g.t0[ii];
-      bk.t[j] = update_thick ? g.thick[ii] : g.t0[ii];
-      // Local geometry (small strain: the first cycle's), velocities and rotation rates (shell_frame.hpp).
-      double lx[4], ly[4], vx[4], vy[4], vz[4], rx[4], ry[4];
-      quad_local_state(bk, j, g, ii, g.dt_fixed[ii] > 0.0 || pr.ismstr == 1, lx, ly, vx, vy, vz, rx, ry);
-      double e[5], kap[3];
-      const QuadRows r0 = quad_rows(lx, ly, 0.0, 0.0);
-      bk.area[j] = 4.0 * r0.detj;
-      quad_rates(r0, vx, vy, vz, rx, ry, e, kap);
-      const double eq = dt1 > 0
-                            ? std::sqrt(equivalent_rate_arg(e[0] * dt1, e[1] * dt1, e[2] * dt1, kap[0] * dt1,
-                                                            kap[1] * dt1, kap[2] * dt1, g.thick[ii])) /
-                                  dt1
-                            : 0.0;
-      const double rate = alpha * eq + (1.0 - alpha) * g.rate[ii];
-      if (bk.off[j] > 0.0) g.rate[ii] = rate;
-      bk.rfac[j] = jc_rate_factor(mat, rate);
-      bk.rate[j] = rate;
-      for (int gp = 0; gp < 4; ++gp) {
-        const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
-        bk.detj[gp][j] = r.detj;
-        quad_rates(r, vx, vy, vz, rx, ry, e, kap);
-        quad_second_order(r, vz, dt1, e);
-        for (int q = 0; q < 5; ++q) bk.dem[gp][q][j] = e[q] * dt1;
-        for (int q = 0; q < 3; ++q) bk.dk[gp][q][j] = kap[q] * dt1;
-      }
-      bk.dthick[j] = bk.w_plastic[j] = bk.eps_p_max[j] = bk.fail_now[j] = 0.0;
-    }
-
-    // The section at each Gauss point, on its own rows of the state.
-    for (int gp = 0; gp < 4; ++gp) {
-      for (int j = 0; j < len; ++j) {
-        for (int q = 0; q < 5; ++q) sec.dem[q][j] = bk.dem[gp][q][j];
-        for (int q = 0; q < 3; ++q) sec.dk[q][j] = bk.dk[gp][q][j];
-        sec.t[j] = bk.t[j];
-        sec.area[j] = bk.detj[gp][j];
-        sec.rfac[j] = bk.rfac[j];
-        sec.rate[j] = bk.rate[j];  // the /FAIL/JOHNSON D4 term
-        sec.off[j] = bk.off[j];
-      }
-      const auto gpz = static_cast<std::size_t>(gp);
-      section_update_block(g, i0, len, mat, rule, gs, sec, g.sig.data() + gpz * sig_rows * G,
-                           g.eps_p.data() + gpz * eps_rows * G, g.dmg.data() + gpz * eps_rows * G,
-                           g.brit.empty() ? nullptr : g.brit.data() + gpz * eps_rows * kBritVars * G,
-                           g.res.data() + gpz * 8 * G);
-      for (int j = 0; j < len; ++j) {
-        for (int q = 0; q < 5; ++q)
-          bk.for_old[gp][q][j] = sec.for_old[q][j], bk.for_new[gp][q][j] = sec.for_new[q][j];
-        for (int q = 0; q < 3; ++q)
-          bk.mom_old[gp][q][j] = sec.mom_old[q][j], bk.mom_new[gp][q][j] = sec.mom_new[q][j];
-        // Thickness change: the area-weighted mean of the points' (1.8).
-        bk.dthick[j] += sec.dthick[j] * bk.detj[gp][j] / bk.area[j];
-        bk.w_plastic[j] += sec.w_plastic[j];
-        bk.eps_p_max[j] = std::max(bk.eps_p_max[j], sec.eps_p_max[j]);
-        // Deletion at once when any Gauss point's section reaches its failure threshold.
-        bk.fail_now[j] = std::max(bk.fail_now[j], sec.fail_now[j]);
-      }
-    }
-
-    // Failure, energy, forces, step.
-    for (int j = 0; j < len; ++j) {
-      const std::size_t ii = static_cast<std::size_t>(i0 + j);
-      const double off_start = bk.off[j];
-      if (off_start <= 0.0) {
-        clear_shell_element(g, nf, ii, 24);
-        continue;
-      }
-      const double t = bk.t[j], area = bk.area[j];
-      const double off = next_off(fail_limit, off_start, bk.eps_p_max[j], bk.fail_now[j]);
-      g.off[ii] = off;
-      g.w_plastic[ii] += bk.w_plastic[j];
-      g.thick[ii] += bk.dthick[j] * off;
-
-      double lx[4], ly[4];
-      for (int k = 0; k < 4; ++k) lx[k] = bk.lx[k][j], ly[k] = bk.ly[k][j];
-      double fx[4] = {}, fy[4] = {}, fz[4] = {}, mx[4] = {}, my[4] = {};
-      double de_int = 0;
-      const double ot = off * t, ot2 = off * t * t;
-      for (int gp = 0; gp < 4; ++gp) {
-        const double w = bk.detj[gp][j];
-        double dem[5], dk[3];
-        for (int q = 0; q < 5; ++q) dem[q] = bk.dem[gp][q][j];
-        for (int q = 0; q < 3; ++q) dk[q] = bk.dk[gp][q][j];
-        double fv[3];
-        membrane_damping(visc0, area, dem, fv);
-        de_int += shell_energy_increment(w, t, off_start, off, bk.for_old[gp], bk.for_new[gp], bk.mom_old[gp],
-                                         bk.mom_new[gp], j, dem, dk, fv);
-        if (off <= 0.0) continue;
-        const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
-        const double n[5] = {ot * (bk.for_new[gp][0][j] + fv[0]), ot * (bk.for_new[gp][1][j] + fv[1]),
-                             ot * (bk.for_new[gp][2][j] + fv[2]), ot * bk.for_new[gp][3][j],
-                             ot * bk.for_new[gp][4][j]};
-        const double m[3] = {ot2 * bk.mom_new[gp][0][j], ot2 * bk.mom_new[gp][1][j],
-                             ot2 * bk.mom_new[gp][2][j]};
-        quad_add_forces(r, w, n, m, fx, fy, fz, mx, my);
-      }
-      g.e_int[ii] += de_int;
-      if (off <= 0.0) {
-        clear_shell_element(g, nf, ii, 24);
-        continue;
-      }
-      const double e1x = bk.fr.e1[0][j], e1y = bk.fr.e1[1][j], e1z = bk.fr.e1[2][j];
-      const double e2x = bk.fr.e2[0][j], e2y = bk.fr.e2[1][j], e2z = bk.fr.e2[2][j];
-      const double e3x = bk.fr.e3[0][j], e3y = bk.fr.e3[1][j], e3z = bk.fr.e3[2][j];
-      for (int k = 0; k < 4; ++k)
-        store_local_forces(nf, G, static_cast<std::size_t>(k), ii, e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y,
-                           e3z, fx[k], fy[k], fz[k], mx[k], my[k]);
-      const double l = qeph_step_length(lx, ly, area);
-      g.dt[ii] = l * phi / c;
-      g.k_nodal[ii] = 0.5 * area * t * a11 / (l * l);
-    }
+    open_quad_block(g, nodes, i0, len, bk.nb, bk.fr);
+    qbat_local_rates(bk, k, mat, g, i0, len);
+    qbat_gauss_point_sections(bk, k, mat, g, i0, len);
+    qbat_close_block(bk, k, g, i0, len);
   }
 }
 

@@ -246,61 +246,62 @@ std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParam
 // The old resultants (FOR, MOM before the update, for the energy) are those the last cycle left in res: the
 // sums over the same stored stresses in the same order, so the same numbers as summing the points again
 // (a Debug build checks it), without their 16 operations per point.
+// The rows of the state one section update works on (see section_update_block).
+struct SectionRows {
+  double* sig;   // [points][5][G], or the [8][G] resultants for N = 0
+  double* eps;   // [points][G]
+  double* dmg;   // [points][G]
+  double* brit;  // [points][kBritVars][G]
+  double* res;   // [8][G]
+};
+
+// Resultant elasticity (LAW1, N = 0): FOR and MOM are the state, updated from the increments.
 template <int B>
-void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& mat,
-                          const ThicknessRule& rule, double gs, SectionBlock<B>& s,
-                          double* sig_rows = nullptr, double* eps_rows = nullptr, double* dmg_rows = nullptr,
-                          double* brit_rows = nullptr, double* res_rows = nullptr) {
+[[gnu::always_inline]] inline void section_resultant_elastic(const SectionRows& rows, int i0, int len,
+                                                             const MaterialParams& mat, double gs,
+                                                             SectionBlock<B>& s) {
   constexpr std::size_t G = kGroupSize;
-  double* const sig_base = sig_rows != nullptr ? sig_rows : g.sig.data();
-  double* const eps_base = eps_rows != nullptr ? eps_rows : g.eps_p.data();
-  double* const dmg_base = dmg_rows != nullptr ? dmg_rows : g.dmg.data();
-  double* const brit_base = brit_rows != nullptr ? brit_rows : g.brit.data();
-  if (rule.n == 0) {
-    // Resultant elasticity (LAW1, N = 0).
-    double* r = sig_base + i0;
-    const double a11 = mat.a11, a12 = mat.a12, gm = mat.shear;
-    const double fz = -mat.nu / (1.0 - mat.nu);
-    RADX_IVDEP
-    for (int j = 0; j < len; ++j) {
-      const double t12 = s.t[j] / 12.0;
-      const bool live = s.off[j] > 0;
-      double fo[5], mo[3];
-      for (int c = 0; c < 5; ++c) fo[c] = r[c * G + j];
-      for (int c = 0; c < 3; ++c) mo[c] = r[(5 + c) * G + j];
-      const double fn[5] = {fo[0] + a11 * s.dem[0][j] + a12 * s.dem[1][j],
-                            fo[1] + a12 * s.dem[0][j] + a11 * s.dem[1][j], fo[2] + gm * s.dem[2][j],
-                            fo[3] + gs * s.dem[3][j], fo[4] + gs * s.dem[4][j]};
-      const double mn[3] = {mo[0] + t12 * (a11 * s.dk[0][j] + a12 * s.dk[1][j]),
-                            mo[1] + t12 * (a12 * s.dk[0][j] + a11 * s.dk[1][j]),
-                            mo[2] + t12 * gm * s.dk[2][j]};
-      for (int c = 0; c < 5; ++c) {
-        s.for_old[c][j] = fo[c];
-        s.for_new[c][j] = fn[c];
-        r[c * G + j] = live ? fn[c] : fo[c];
-      }
-      for (int c = 0; c < 3; ++c) {
-        s.mom_old[c][j] = mo[c];
-        s.mom_new[c][j] = mn[c];
-        r[(5 + c) * G + j] = live ? mn[c] : mo[c];
-      }
-      // Elastic plane stress: dezz = -nu/(1 - nu) (dexx + deyy) at mid-surface.
-      s.dthick[j] = fz * (s.dem[0][j] + s.dem[1][j]) * s.t[j];
-      s.w_plastic[j] = 0;
-      s.eps_p_max[j] = 0;
-      s.fail_now[j] = 0;
+  double* r = rows.sig + i0;
+  const double a11 = mat.a11, a12 = mat.a12, gm = mat.shear;
+  const double fz = -mat.nu / (1.0 - mat.nu);
+  RADX_IVDEP
+  for (int j = 0; j < len; ++j) {
+    const double t12 = s.t[j] / 12.0;
+    const bool live = s.off[j] > 0;
+    double fo[5], mo[3];
+    for (int c = 0; c < 5; ++c) fo[c] = r[c * G + j];
+    for (int c = 0; c < 3; ++c) mo[c] = r[(5 + c) * G + j];
+    const double fn[5] = {fo[0] + a11 * s.dem[0][j] + a12 * s.dem[1][j],
+                          fo[1] + a12 * s.dem[0][j] + a11 * s.dem[1][j], fo[2] + gm * s.dem[2][j],
+                          fo[3] + gs * s.dem[3][j], fo[4] + gs * s.dem[4][j]};
+    const double mn[3] = {mo[0] + t12 * (a11 * s.dk[0][j] + a12 * s.dk[1][j]),
+                          mo[1] + t12 * (a12 * s.dk[0][j] + a11 * s.dk[1][j]), mo[2] + t12 * gm * s.dk[2][j]};
+    for (int c = 0; c < 5; ++c) {
+      s.for_old[c][j] = fo[c];
+      s.for_new[c][j] = fn[c];
+      r[c * G + j] = live ? fn[c] : fo[c];
     }
-    return;
+    for (int c = 0; c < 3; ++c) {
+      s.mom_old[c][j] = mo[c];
+      s.mom_new[c][j] = mn[c];
+      r[(5 + c) * G + j] = live ? mn[c] : mo[c];
+    }
+    // Elastic plane stress: dezz = -nu/(1 - nu) (dexx + deyy) at mid-surface.
+    s.dthick[j] = fz * (s.dem[0][j] + s.dem[1][j]) * s.t[j];
+    s.w_plastic[j] = 0;
+    s.eps_p_max[j] = 0;
+    s.fail_now[j] = 0;
   }
-  const int iplas = g.props.iplas;
-  const ShellYieldBound yb = shell_yield_bound(mat);
-  const bool fail = mat.fail.on;
-  const bool brit = mat.law == model::MaterialLaw::PlasBrit;
-  if (brit)
-    for (int j = 0; j < len; ++j) s.crack_fail[j] = 0;
-  double* sig = sig_base + i0;
-  double* eps_p = eps_base + i0;
-  double* const res = (res_rows != nullptr ? res_rows : g.res.data()) + i0;
+}
+
+// The old resultants: those the last cycle left in res. A Debug build checks them against the sums over the
+// stored stresses.
+template <int B>
+[[gnu::always_inline]] inline void section_old_resultants(const SectionRows& rows, int i0, int len,
+                                                          [[maybe_unused]] const ThicknessRule& rule,
+                                                          SectionBlock<B>& s) {
+  constexpr std::size_t G = kGroupSize;
+  const double* res = rows.res + i0;
   RADX_IVDEP
   for (int j = 0; j < len; ++j) {
     for (int c = 0; c < 5; ++c) s.for_old[c][j] = res[static_cast<std::size_t>(c) * G + j];
@@ -311,8 +312,8 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
     for (int c = 0; c < 5; ++c) {
       double f = 0, mm = 0;
       for (int p = 0; p < rule.n; ++p) {
-        f += rule.w[p] * sig_base[sig_index(p, c, i0 + j)];
-        mm += rule.m[p] * sig_base[sig_index(p, c, i0 + j)];
+        f += rule.w[p] * rows.sig[sig_index(p, c, i0 + j)];
+        mm += rule.m[p] * rows.sig[sig_index(p, c, i0 + j)];
       }
       // (a NaN, left by an element deleted with a non-finite stress, equals itself here)
       const auto same = [](double a, double b) { return a == b || (a != a && b != b); };
@@ -320,91 +321,106 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
       assert((c >= 3 || same(mm, s.mom_old[c][j])) && "ShellGroup::res out of date");
     }
 #endif
-  bool any_redo = false, any_put_back = false;
-  for (int p0 = 0; p0 < rule.n; p0 += kPassPoints) {
-    const int pts = std::min(kPassPoints, rule.n - p0);
-    const std::int64_t any = iplas == 1
-                                 ? section_point_pass<true>(s, len, mat, yb, gs, rule, p0, pts, sig, eps_p)
-                                 : section_point_pass<false>(s, len, mat, yb, gs, rule, p0, pts, sig, eps_p);
-    if (any == 0) continue;
-    // Deleted elements: stress put back. The points that may yield: the exact update from their stress
-    // before the step.
-    for (int q = 0; q < pts; ++q) {
-      const int p = p0 + q;
-      const double zeta = rule.zeta[p];
-      double* sp[5];
-      for (int c = 0; c < 5; ++c) sp[c] = sig_base + sig_index(p, c, i0);
-      double* ep = eps_base + static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0);
-      for (int j = 0; j < len; ++j) {
-        if (s.exact[q][j] == 0) continue;
-        if (s.off[j] <= 0) {
-          for (int c = 0; c < 5; ++c) sp[c][j] = s.old[q][c][j];
-          any_put_back = true;
-          continue;
-        }
-        any_redo = true;
-        if (s.rfac_lower && s.rfac_exact[j] == 0) {
-          s.rfac[j] = jc_rate_factor(mat, s.rate[j]);
-          s.rfac_exact[j] = 1;
-        }
-        const double z = zeta * s.t[j];
-        const double de[5] = {s.dem[0][j] + z * s.dk[0][j], s.dem[1][j] + z * s.dk[1][j],
-                              s.dem[2][j] + z * s.dk[2][j], s.dem[3][j], s.dem[4][j]};
-        double sg[5] = {s.old[q][0][j], s.old[q][1][j], s.old[q][2][j], s.old[q][3][j], s.old[q][4][j]};
-        const std::size_t pj = static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j);
-        const ShellPointResult r =
-            brit   ? detail::law27_shell_point(mat, iplas, s.rate[j], s.dt1, s.off[j], de, gs, sg, ep[j],
-                                               brit_base + static_cast<std::size_t>(p) * kBritVars * G +
-                                                   static_cast<std::size_t>(i0 + j),
-                                               G)
-            : fail ? shell_point_update_fail(mat, iplas, s.rfac[j], s.rate[j],
-                                             g.fail_scale[static_cast<std::size_t>(i0 + j)], s.off[j], de, gs,
-                                             sg, ep[j], dmg_base[pj])
-                   : shell_point_update_r(mat, iplas, s.rfac[j], s.off[j], de, gs, sg, ep[j]);
-        if (r.fails) s.crack_fail[j] = 1;
-        for (int c = 0; c < 5; ++c) sp[c][j] = sg[c];
-        s.point_exact[p][j] = 1;
-        s.dezz_x[p][j] = r.dezz;
-        s.wp_x[p][j] = r.w_plastic;
-        s.redo[j] = 1;
-      }
-    }
-  }
-  if (any_redo) {
-    // Sums after the update of the elements with an exactly updated point, redone in the order of the points.
+}
+
+// After a pass over points p0 .. p0 + pts - 1: the stress of deleted elements put back, and the points that
+// may yield given the exact update from their stress before the step. Sets any_redo when an element's sums
+// must be redone, any_put_back when a deleted element's stress was put back.
+template <int B>
+[[gnu::always_inline]] inline void section_exact_points(ShellGroup& g, const SectionRows& rows, int i0,
+                                                        int len, const MaterialParams& mat,
+                                                        const ThicknessRule& rule, double gs, int p0, int pts,
+                                                        SectionBlock<B>& s, bool& any_redo,
+                                                        bool& any_put_back) {
+  constexpr std::size_t G = kGroupSize;
+  const int iplas = g.props.iplas;
+  const bool fail = mat.fail.on;
+  const bool brit = mat.law == model::MaterialLaw::PlasBrit;
+  for (int q = 0; q < pts; ++q) {
+    const int p = p0 + q;
+    const double zeta = rule.zeta[p];
+    double* sp[5];
+    for (int c = 0; c < 5; ++c) sp[c] = rows.sig + sig_index(p, c, i0);
+    double* ep = rows.eps + static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0);
     for (int j = 0; j < len; ++j) {
-      if (s.redo[j] == 0) continue;
-      s.redo[j] = 0;
-      const double t = s.t[j];
-      double fn[5] = {0, 0, 0, 0, 0}, mn[3] = {0, 0, 0}, dthk = 0, wpl = 0, epmax = 0;
-      for (int p = 0; p < rule.n; ++p) {
-        const double w = rule.w[p], m = rule.m[p];
-        for (int c = 0; c < 5; ++c) fn[c] += w * sig_base[sig_index(p, c, i0 + j)];
-        for (int c = 0; c < 3; ++c) mn[c] += m * sig_base[sig_index(p, c, i0 + j)];
-        double dezz = 0, wp = 0;
-        if (s.point_exact[p][j] != 0) {
-          s.point_exact[p][j] = 0;
-          dezz = s.dezz_x[p][j];
-          wp = s.wp_x[p][j];
-        } else {
-          const double z = rule.zeta[p] * t;
-          dezz = shell_dezz(mat, s.dem[0][j] + z * s.dk[0][j], s.dem[1][j] + z * s.dk[1][j], 0.0);
-        }
-        wpl += wp * w * t * s.area[j];  // wp = 0 unless d_eps_p > 0
-        dthk += dezz * w;
-        epmax = std::max(epmax, eps_base[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)]);
+      if (s.exact[q][j] == 0) continue;
+      if (s.off[j] <= 0) {
+        for (int c = 0; c < 5; ++c) sp[c][j] = s.old[q][c][j];
+        any_put_back = true;
+        continue;
       }
-      for (int c = 0; c < 5; ++c) s.for_new[c][j] = fn[c];
-      for (int c = 0; c < 3; ++c) s.mom_new[c][j] = mn[c];
-      s.dthick[j] = dthk;
-      s.w_plastic[j] = wpl;
-      s.eps_p_max[j] = epmax;
+      any_redo = true;
+      if (s.rfac_lower && s.rfac_exact[j] == 0) {
+        s.rfac[j] = jc_rate_factor(mat, s.rate[j]);
+        s.rfac_exact[j] = 1;
+      }
+      const double z = zeta * s.t[j];
+      const double de[5] = {s.dem[0][j] + z * s.dk[0][j], s.dem[1][j] + z * s.dk[1][j],
+                            s.dem[2][j] + z * s.dk[2][j], s.dem[3][j], s.dem[4][j]};
+      double sg[5] = {s.old[q][0][j], s.old[q][1][j], s.old[q][2][j], s.old[q][3][j], s.old[q][4][j]};
+      const std::size_t pj = static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j);
+      const ShellPointResult r =
+          brit   ? detail::law27_shell_point(mat, iplas, s.rate[j], s.dt1, s.off[j], de, gs, sg, ep[j],
+                                             rows.brit + static_cast<std::size_t>(p) * kBritVars * G +
+                                                 static_cast<std::size_t>(i0 + j),
+                                             G)
+          : fail ? shell_point_update_fail(mat, iplas, s.rfac[j], s.rate[j],
+                                           g.fail_scale[static_cast<std::size_t>(i0 + j)], s.off[j], de, gs,
+                                           sg, ep[j], rows.dmg[pj])
+                 : shell_point_update_r(mat, iplas, s.rfac[j], s.off[j], de, gs, sg, ep[j]);
+      if (r.fails) s.crack_fail[j] = 1;
+      for (int c = 0; c < 5; ++c) sp[c][j] = sg[c];
+      s.point_exact[p][j] = 1;
+      s.dezz_x[p][j] = r.dezz;
+      s.wp_x[p][j] = r.w_plastic;
+      s.redo[j] = 1;
     }
   }
-  RADX_IVDEP
-  for (int j = 0; j < len; ++j) s.dthick[j] *= s.t[j];
-  // The next cycle's old resultants: those of sig as it is left, the old ones where a deleted element's
-  // stress was put back.
+}
+
+// Sums after the update of the elements with an exactly updated point, redone in the order of the points.
+template <int B>
+[[gnu::always_inline]] inline void section_redo_sums(const SectionRows& rows, int i0, int len,
+                                                     const MaterialParams& mat, const ThicknessRule& rule,
+                                                     SectionBlock<B>& s) {
+  constexpr std::size_t G = kGroupSize;
+  for (int j = 0; j < len; ++j) {
+    if (s.redo[j] == 0) continue;
+    s.redo[j] = 0;
+    const double t = s.t[j];
+    double fn[5] = {0, 0, 0, 0, 0}, mn[3] = {0, 0, 0}, dthk = 0, wpl = 0, epmax = 0;
+    for (int p = 0; p < rule.n; ++p) {
+      const double w = rule.w[p], m = rule.m[p];
+      for (int c = 0; c < 5; ++c) fn[c] += w * rows.sig[sig_index(p, c, i0 + j)];
+      for (int c = 0; c < 3; ++c) mn[c] += m * rows.sig[sig_index(p, c, i0 + j)];
+      double dezz = 0, wp = 0;
+      if (s.point_exact[p][j] != 0) {
+        s.point_exact[p][j] = 0;
+        dezz = s.dezz_x[p][j];
+        wp = s.wp_x[p][j];
+      } else {
+        const double z = rule.zeta[p] * t;
+        dezz = shell_dezz(mat, s.dem[0][j] + z * s.dk[0][j], s.dem[1][j] + z * s.dk[1][j], 0.0);
+      }
+      wpl += wp * w * t * s.area[j];  // wp = 0 unless d_eps_p > 0
+      dthk += dezz * w;
+      epmax = std::max(epmax, rows.eps[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)]);
+    }
+    for (int c = 0; c < 5; ++c) s.for_new[c][j] = fn[c];
+    for (int c = 0; c < 3; ++c) s.mom_new[c][j] = mn[c];
+    s.dthick[j] = dthk;
+    s.w_plastic[j] = wpl;
+    s.eps_p_max[j] = epmax;
+  }
+}
+
+// The next cycle's old resultants: those of sig as it is left, the old ones where a deleted element's stress
+// was put back.
+template <int B>
+[[gnu::always_inline]] inline void section_keep_resultants(const SectionRows& rows, int i0, int len,
+                                                           bool any_put_back, const SectionBlock<B>& s) {
+  constexpr std::size_t G = kGroupSize;
+  double* const res = rows.res + i0;
   RADX_IVDEP
   for (int j = 0; j < len; ++j) {
     for (int c = 0; c < 5; ++c) res[static_cast<std::size_t>(c) * G + j] = s.for_new[c][j];
@@ -416,30 +432,73 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
       for (int c = 0; c < 5; ++c) res[static_cast<std::size_t>(c) * G + j] = s.for_old[c][j];
       for (int c = 0; c < 3; ++c) res[static_cast<std::size_t>(5 + c) * G + j] = s.mom_old[c][j];
     }
-  // Deletion at once (next_off): law 36 with a point above Eps_p_max; a failure model with the thickness
-  // fraction of failed points (their weights) at Ifail_sh's threshold (fail_setoff_c.F: 1e-6, or the model's
-  // fraction bounded by the property's P_thickfail, kept within [1e-6, 1 - 1e-6]).
+}
+
+// Deletion at once (next_off): law 36 with a point above Eps_p_max; a failure model with the thickness
+// fraction of failed points (their weights) at Ifail_sh's threshold (fail_setoff_c.F: 1e-6, or the model's
+// fraction bounded by the property's P_thickfail, kept within [1e-6, 1 - 1e-6]); law 27 with a crack past
+// EPS_f1.
+template <int B>
+[[gnu::always_inline]] inline void section_failure(const ShellGroup& g, const SectionRows& rows, int i0,
+                                                   int len, const MaterialParams& mat,
+                                                   const ThicknessRule& rule, SectionBlock<B>& s) {
+  constexpr std::size_t G = kGroupSize;
+  const bool fail = mat.fail.on;
+  const bool brit = mat.law == model::MaterialLaw::PlasBrit;
   for (int j = 0; j < len; ++j) s.fail_now[j] = 0;
   const bool tab_limit = mat.law == model::MaterialLaw::PlasTab && mat.eps_p_max < 1e20;
   if (brit)
     for (int j = 0; j < len; ++j) s.fail_now[j] = s.off[j] == 1.0 ? s.crack_fail[j] : 0.0;
-  if (fail || tab_limit) {
-    const double pt =
-        std::clamp(std::min(mat.fail.p_thick, std::abs(g.props.p_thick_fail)), 1e-6, 1.0 - 1e-6);
-    const double limit = mat.fail.ifail_sh >= 2 ? pt : 1e-6;
-    for (int j = 0; j < len; ++j) {
-      if (s.off[j] != 1.0) continue;
-      bool gone = tab_limit && s.eps_p_max[j] > mat.eps_p_max;
-      if (fail) {
-        double frac = 0;
-        for (int p = 0; p < rule.n; ++p)
-          if (dmg_base[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)] >= 1.0)
-            frac += rule.w[p];
-        gone = gone || frac >= limit;
-      }
-      s.fail_now[j] = gone ? 1.0 : 0.0;
+  if (!(fail || tab_limit)) return;
+  const double pt = std::clamp(std::min(mat.fail.p_thick, std::abs(g.props.p_thick_fail)), 1e-6, 1.0 - 1e-6);
+  const double limit = mat.fail.ifail_sh >= 2 ? pt : 1e-6;
+  for (int j = 0; j < len; ++j) {
+    if (s.off[j] != 1.0) continue;
+    bool gone = tab_limit && s.eps_p_max[j] > mat.eps_p_max;
+    if (fail) {
+      double frac = 0;
+      for (int p = 0; p < rule.n; ++p)
+        if (rows.dmg[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)] >= 1.0)
+          frac += rule.w[p];
+      gone = gone || frac >= limit;
     }
+    s.fail_now[j] = gone ? 1.0 : 0.0;
   }
+}
+
+template <int B>
+void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& mat,
+                          const ThicknessRule& rule, double gs, SectionBlock<B>& s,
+                          double* sig_rows = nullptr, double* eps_rows = nullptr, double* dmg_rows = nullptr,
+                          double* brit_rows = nullptr, double* res_rows = nullptr) {
+  const SectionRows rows{
+      sig_rows != nullptr ? sig_rows : g.sig.data(), eps_rows != nullptr ? eps_rows : g.eps_p.data(),
+      dmg_rows != nullptr ? dmg_rows : g.dmg.data(), brit_rows != nullptr ? brit_rows : g.brit.data(),
+      res_rows != nullptr ? res_rows : g.res.data()};
+  if (rule.n == 0) {
+    section_resultant_elastic(rows, i0, len, mat, gs, s);
+    return;
+  }
+  const int iplas = g.props.iplas;
+  const ShellYieldBound yb = shell_yield_bound(mat);
+  if (mat.law == model::MaterialLaw::PlasBrit)
+    for (int j = 0; j < len; ++j) s.crack_fail[j] = 0;
+  double* sig = rows.sig + i0;
+  double* eps_p = rows.eps + i0;
+  section_old_resultants(rows, i0, len, rule, s);
+  bool any_redo = false, any_put_back = false;
+  for (int p0 = 0; p0 < rule.n; p0 += kPassPoints) {
+    const int pts = std::min(kPassPoints, rule.n - p0);
+    const std::int64_t any = iplas == 1
+                                 ? section_point_pass<true>(s, len, mat, yb, gs, rule, p0, pts, sig, eps_p)
+                                 : section_point_pass<false>(s, len, mat, yb, gs, rule, p0, pts, sig, eps_p);
+    if (any != 0) section_exact_points(g, rows, i0, len, mat, rule, gs, p0, pts, s, any_redo, any_put_back);
+  }
+  if (any_redo) section_redo_sums(rows, i0, len, mat, rule, s);
+  RADX_IVDEP
+  for (int j = 0; j < len; ++j) s.dthick[j] *= s.t[j];
+  section_keep_resultants(rows, i0, len, any_put_back, s);
+  section_failure(g, rows, i0, len, mat, rule, s);
 }
 
 // limit = EPS_p_max of a Johnson-Cook material, +infinity for a law that does not fail (failure_limit).
