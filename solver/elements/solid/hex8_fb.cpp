@@ -126,44 +126,146 @@ void biot_strain(const double F[3][3], double eps[6]) {
   eps[5] = 2.0 * at(2, 0);
 }
 
+// The group's constants of the kernel.
+struct FbConstants {
+  double dt1, c, rho0, qa2, qb, a_hg, alpha;
+  bool plain_h;  // Isolid 2: the plain hourglass vectors for every mode
+};
+
+inline FbConstants fb_constants(const BrickGroup& g, const MaterialParams& mat, double dt1) {
+  return FbConstants{
+      dt1, mat.c_solid, mat.rho0, g.qa * g.qa, g.qb, 0.25 * g.h, rate_filter_alpha(mat, dt1), g.isolid == 2};
+}
+
+// The strain rate D (engineering shears) and the stress the update starts from, so: co-rotational, the
+// second-order term of the strain increment and no spin (the frame turns with the element); otherwise the
+// stored stress turned by the Jaumann spin of the half step (old values on the right-hand side).
+template <bool kCorot>
+[[gnu::always_inline]] inline void fb_strain_rate(const BrickGroup& g, std::size_t i, const double L[3][3],
+                                                  double dt1, double D[6], double so[6]) {
+  constexpr std::size_t G = kGroupSize;
+  double s[6];
+#pragma GCC unroll 8
+  for (int m = 0; m < 6; ++m) s[m] = g.sig[static_cast<std::size_t>(m) * G + i];
+  if constexpr (kCorot) {
+    corotational_strain_rate(L, dt1, D);
+    for (int m = 0; m < 6; ++m) so[m] = s[m];
+  } else {
+    D[0] = L[0][0], D[1] = L[1][1], D[2] = L[2][2];
+    D[3] = L[0][1] + L[1][0], D[4] = L[1][2] + L[2][1], D[5] = L[2][0] + L[0][2];
+    double wx, wy, wz;
+    half_step_spin(L, dt1, wx, wy, wz);
+    jaumann_rotate(s, wx, wy, wz, so);
+  }
+}
+
+// The material at the element's point: sn from the start stress, the plastic strain and damage updated.
+// The total-strain laws (Ogden, the foam) take the deformation gradient F = sum_k x_k (x) B_k and give the
+// element's wave speed c_e of this cycle; the others keep the material's.
+template <TotalLaw kLaw>
+[[gnu::always_inline]] inline SolidPointResult fb_material(BrickGroup& g, std::size_t i, const FbConstants& k,
+                                                           const MaterialParams& mat, const double x[8][3],
+                                                           const double D[6], double rate, double rho,
+                                                           double mu, double off, double sn[6], double& eps_p,
+                                                           double& dmg, double& c_e) {
+  constexpr std::size_t G = kGroupSize;
+  const double dt1 = k.dt1;
+  SolidPointResult pr;
+  c_e = k.c;
+  if constexpr (kLaw != TotalLaw::None) {
+    double B[8][3], F[3][3];
+    for (std::size_t n = 0; n < 4; ++n)
+      for (std::size_t d = 0; d < 3; ++d) B[n][d] = g.b_ref[(3 * n + d) * G + i];
+    brick_velocity_gradient(x, B, F);  // sum_k x_k (x) B_k, by the opposite-node pairs (B_5..8 unused)
+    if constexpr (kLaw == TotalLaw::Ogden) {
+      const OgdenPointResult op = ogden_point(mat, F, sn);
+      c_e = std::sqrt(op.modulus / rho);
+      pr.element_fails = op.cut && off == 1.0;
+    } else {
+      double eps[6], st[kFoamVars];
+      biot_strain(F, eps);
+      const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
+      for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v) st[v] = g.foam[v * G + i];
+      c_e = foam_point(mat, eps, de, rate, rho / k.rho0, sn, st);
+      for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v) g.foam[v * G + i] = st[v];
+    }
+    (void)mu, (void)eps_p, (void)dmg;
+  } else {
+    const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
+    pr = solid_point_update(mat, rate, de, mu, sn, eps_p, dmg, off);
+  }
+  return pr;
+}
+
+// Hourglass forces H_j = q_j (Cl + Cq |q_j|) per direction, Cl = a rho V^(2/3) c, Cq = 100 a^2 rho V^(2/3),
+// with the rates q_j = sum_k (h_jk - hx_j . b_k) v_k = hv_j - L hx_j, hx_j = sum_k h_jk x_k and hv_j = sum_k
+// h_jk v_k (hx_j taken as 0 for the plain modes: mode 4 always, every mode with Isolid 2); the stored forces
+// updated and the hourglass work rate returned (trapezoid over the step).
+[[gnu::always_inline]] inline double fb_hourglass(BrickGroup& g, std::size_t i, const FbConstants& k,
+                                                  const double x[8][3], const double v[8][3],
+                                                  const double L[3][3], double rho, double l, double c_w,
+                                                  double hx[4][3], double hg[4][3]) {
+  constexpr std::size_t G = kGroupSize;
+  double hv[4][3];
+#pragma GCC unroll 8
+  for (int d = 0; d < 3; ++d) {
+    brick_mode_sums(x[0][d], x[1][d], x[2][d], x[3][d], x[4][d], x[5][d], x[6][d], x[7][d], hx, d);
+    brick_mode_sums(v[0][d], v[1][d], v[2][d], v[3][d], v[4][d], v[5][d], v[6][d], v[7][d], hv, d);
+  }
+#pragma GCC unroll 8
+  for (int d = 0; d < 3; ++d) {
+    hx[3][d] = 0.0;  // mode 4: plain h4 for Isolid 1 and 2
+    if (k.plain_h) hx[0][d] = hx[1][d] = hx[2][d] = 0.0;
+  }
+  const double v23 = l * l;  // V^(2/3)
+  const double cl = k.a_hg * rho * v23 * c_w;
+  const double cq = 100.0 * k.a_hg * k.a_hg * rho * v23;
+  double de_hg = 0.0;
+  for (int j = 0; j < 4; ++j)
+#pragma GCC unroll 8
+    for (int d = 0; d < 3; ++d) {
+      const double qj = hv[j][d] - (L[d][0] * hx[j][0] + L[d][1] * hx[j][1] + L[d][2] * hx[j][2]);
+      hg[j][d] = qj * (cl + cq * std::abs(qj));
+      auto& h_old = g.hg_force[static_cast<std::size_t>(3 * j + d) * G + i];
+      de_hg += 0.5 * (h_old + hg[j][d]) * qj;
+      h_old = hg[j][d];
+    }
+  return de_hg;
+}
+
+// An element that does not run this cycle: deleted (dt = +inf), or inverted, flat or not a number (its
+// volume stored, dt = 0: reported and stopped by the engine).
+inline void fb_element_off(BrickGroup& g, std::size_t i, bool deleted, double vol) {
+  clear_nodal_forces<8, 3>(g.nodal_force.data(), kGroupSize, i);
+  if (deleted) {
+    g.dt[i] = std::numeric_limits<double>::infinity();
+  } else {
+    g.vol[i] = vol;
+    g.dt[i] = 0.0;
+  }
+  g.k_nodal[i] = 0.0;
+}
+
+// One element at a time through local arrays. The short fixed-count loops carry "GCC unroll": GCC does not
+// unroll them completely at -O2, and unrolled the kernel runs about 35 % fewer instructions.
 template <bool kCorot, TotalLaw kLaw>
 void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat,
                       const CycleInfo& cyc) {
   constexpr std::size_t G = kGroupSize;
-  const double dt1 = cyc.dt1;
-  const double c = mat.c_solid;
-  const double rho0 = mat.rho0;
-  const double qa2 = g.qa * g.qa;
-  const double qb = g.qb;
-  const double a_hg = 0.25 * g.h;
-  const bool plain_h = g.isolid == 2;
-  const double alpha = rate_filter_alpha(mat, dt1);
-  const double inf = std::numeric_limits<double>::infinity();
-
-  const std::int32_t* conn = g.conn.data();
-  double* force = g.nodal_force.data();
-  auto clear_force = [&](std::size_t i) { clear_nodal_forces<8, 3>(force, G, i); };
-
-  // One element at a time through local arrays. The short fixed-count loops carry "GCC unroll": GCC does
-  // not unroll them completely at -O2, and unrolled the kernel runs about 35 % fewer instructions.
+  const FbConstants k = fb_constants(g, mat, cyc.dt1);
+  const double dt1 = k.dt1;
   const auto n = static_cast<std::size_t>(g.count);
   for (std::size_t i = 0; i < n; ++i) {
     const double off = g.off[i];
     if (off == 0.0) {
-      clear_force(i);
-      g.dt[i] = inf;
-      g.k_nodal[i] = 0.0;
+      fb_element_off(g, i, true, 0.0);
       continue;
     }
-
-    // Gather.
+    // Gather; /DT/BRICK/CST switched this element: freeze its coordinates once, then take the geometry
+    // (gradients, volume, density, step) from them; the velocities stay current (small strain).
     double x[8][3], v[8][3];
-    gather_element<8>(conn, G, i, nodes, x, v);
-
-    // /DT/BRICK/CST switched this element: freeze its coordinates once, then take the geometry (gradients,
-    // volume, density, step) from them; the velocities stay current (small strain).
+    gather_element<8>(g.conn.data(), G, i, nodes, x, v);
     brick_small_strain_geometry(g, i, x);
-
     // Co-rotational: into the element frame (x' = R^T x, v' = R^T v).
     [[maybe_unused]] double R[3][3];
     if constexpr (kCorot) {
@@ -171,118 +273,47 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
       brick_into_frame(R, x, v);
     }
 
-    // Centre Jacobian, volume, gradients.
+    // Centre Jacobian, volume, gradients; the velocity gradient L[a][c] = d v_a / d x_c from the
+    // opposite-node differences, the strain rate and the stress the update starts from.
     double j1[3], j2[3], j3[3], c12[3], c23[3], c31[3];
     const double vol = brick_centre_jacobian(x, j1, j2, j3, c12, c23, c31);
-    if (!(vol > 0.0)) {  // inverted, flat or not a number: reported and stopped by the engine
-      clear_force(i);
-      g.vol[i] = vol;
-      g.dt[i] = 0.0;
-      g.k_nodal[i] = 0.0;
+    if (!(vol > 0.0)) {
+      fb_element_off(g, i, false, vol);
       continue;
     }
-    double b[8][3];
+    double b[8][3], L[3][3], D[6], so[6];
     brick_centre_gradients(c12, c23, c31, vol, b);
-
-    // Velocity gradient L[a][c] = d v_a / d x_c, from the opposite-node differences.
-    double L[3][3];
     brick_velocity_gradient(v, b, L);
-    double D[6], so[6], s[6];
-#pragma GCC unroll 8
-    for (int m = 0; m < 6; ++m) s[m] = g.sig[static_cast<std::size_t>(m) * G + i];
-    if constexpr (kCorot) {
-      // Second-order term of the co-rotational strain increment; no spin (the frame turns with the element).
-      corotational_strain_rate(L, dt1, D);
-      for (int m = 0; m < 6; ++m) so[m] = s[m];
-    } else {
-      D[0] = L[0][0], D[1] = L[1][1], D[2] = L[2][2];
-      D[3] = L[0][1] + L[1][0], D[4] = L[1][2] + L[2][1], D[5] = L[2][0] + L[0][2];
-      double wx, wy, wz;
-      half_step_spin(L, dt1, wx, wy, wz);
-      jaumann_rotate(s, wx, wy, wz, so);  // the stored stress, old values on the right-hand side
-    }
+    fb_strain_rate<kCorot>(g, i, L, dt1, D, so);
 
     // Density, strain rate, material.
-    const double rho = solid_density(rho0, g.vol0[i], vol);
-    const double mu = solid_mu(rho, rho0);
-    const double rate = filtered_rate(alpha, strain_rate_measure(D), g.rate[i]);
+    const double rho = solid_density(k.rho0, g.vol0[i], vol);
+    const double mu = solid_mu(rho, k.rho0);
+    const double rate = filtered_rate(k.alpha, strain_rate_measure(D), g.rate[i]);
     double sn[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
-    double eps_p = g.eps_p[i];
-    double dmg = g.dmg[i];
-    SolidPointResult pr;
-    [[maybe_unused]] double c_e = c;  // the wave speed of this element and cycle
-    if constexpr (kLaw != TotalLaw::None) {
-      double B[8][3], F[3][3];
-      for (std::size_t k = 0; k < 4; ++k)
-        for (std::size_t d = 0; d < 3; ++d) B[k][d] = g.b_ref[(3 * k + d) * G + i];
-      brick_velocity_gradient(x, B, F);  // sum_k x_k (x) B_k, by the opposite-node pairs (B_5..8 unused)
-      if constexpr (kLaw == TotalLaw::Ogden) {
-        const OgdenPointResult op = ogden_point(mat, F, sn);
-        c_e = std::sqrt(op.modulus / rho);
-        pr.element_fails = op.cut && off == 1.0;
-      } else {
-        double eps[6], st[kFoamVars];
-        biot_strain(F, eps);
-        const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
-        for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v) st[v] = g.foam[v * G + i];
-        c_e = foam_point(mat, eps, de, rate, rho / rho0, sn, st);
-        for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v) g.foam[v * G + i] = st[v];
-      }
-      (void)mu;
-    } else {
-      const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
-      pr = solid_point_update(mat, rate, de, mu, sn, eps_p, dmg, off);
-    }
-    const double deps_p = pr.deps_p;
+    double eps_p = g.eps_p[i], dmg = g.dmg[i], c_e = k.c;
+    const SolidPointResult pr =
+        fb_material<kLaw>(g, i, k, mat, x, D, rate, rho, mu, off, sn, eps_p, dmg, c_e);
     // Law 36 Eps_p_max and /FAIL/JOHNSON Ifail_so 1: 0.8 when the brick fails, then 0.8 per cycle, 0 below
     // 0.1; the forces and energies of this cycle take the new factor (as the shells do, elements.md 6.4).
     const double off_new = brick_next_off(off, pr.element_fails);
 
-    // Bulk viscosity and element step.
+    // Bulk viscosity, element step, energies, hourglass.
     const double l = std::cbrt(vol);
     const double ec = compression_rate(D);
-    const double c_w = kLaw != TotalLaw::None ? c_e : c;
-    const double q_new = bulk_viscosity(rho, ec, l, qa2, qb, c_w);
-    const double dt_e = solid_step(brick_face_length(x, vol), c_w, qa2, qb, l, ec);
-
-    // Energies.
+    const double c_w = kLaw != TotalLaw::None ? c_e : k.c;
+    const double q_new = bulk_viscosity(rho, ec, l, k.qa2, k.qb, c_w);
+    const double dt_e = solid_step(brick_face_length(x, vol), c_w, k.qa2, k.qb, l, ec);
     const double de_int =
         solid_energy_increment(dt1, vol, g.vol[i], stress_power_sum(so, sn, D), g.q[i], q_new);
     const double svm = std::sqrt(von_mises2(sn));
+    double hx[4][3], hg[4][3];
+    const double de_hg = fb_hourglass(g, i, k, x, v, L, rho, l, c_w, hx, hg);
 
-    // Hourglass rates. With hx_j = sum_k h_jk x_k and hv_j = sum_k h_jk v_k (3-vectors):
-    //   q_j = sum_k (h_jk - hx_j . b_k) v_k = hv_j - L hx_j   (hx_j taken as 0 for the plain modes).
-    double hx[4][3], hv[4][3];
-#pragma GCC unroll 8
-    for (int d = 0; d < 3; ++d) {
-      brick_mode_sums(x[0][d], x[1][d], x[2][d], x[3][d], x[4][d], x[5][d], x[6][d], x[7][d], hx, d);
-      brick_mode_sums(v[0][d], v[1][d], v[2][d], v[3][d], v[4][d], v[5][d], v[6][d], v[7][d], hv, d);
-    }
-#pragma GCC unroll 8
-    for (int d = 0; d < 3; ++d) {
-      hx[3][d] = 0.0;  // mode 4: plain h4 for Isolid 1 and 2
-      if (plain_h) hx[0][d] = hx[1][d] = hx[2][d] = 0.0;
-    }
-    const double v23 = l * l;  // V^(2/3)
-    const double cl = a_hg * rho * v23 * c_w;
-    const double cq = 100.0 * a_hg * a_hg * rho * v23;
-    double hg[4][3];  // H_j = q_j (Cl + Cq |q_j|) per direction
-    double de_hg = 0.0;
-    for (int j = 0; j < 4; ++j)
-#pragma GCC unroll 8
-      for (int d = 0; d < 3; ++d) {
-        const double qj = hv[j][d] - (L[d][0] * hx[j][0] + L[d][1] * hx[j][1] + L[d][2] * hx[j][2]);
-        hg[j][d] = qj * (cl + cq * std::abs(qj));
-        auto& h_old = g.hg_force[static_cast<std::size_t>(3 * j + d) * G + i];
-        de_hg += 0.5 * (h_old + hg[j][d]) * qj;
-        h_old = hg[j][d];
-      }
-
-    // Nodal forces: stress part -V (sigma - q I) b_k, hourglass part -sum_j G_jk H_j.
+    // Nodal forces: stress part -V (sigma - q I) b_k, hourglass part -sum_j G_jk H_j; co-rotational: back to
+    // global axes (f = R f'), and the frame kept for the stress output.
     double f[8][3];
     brick_nodal_forces(sn, q_new, vol, hg, hx, b, f);
-
-    // Co-rotational: forces back to global axes (f = R f'), and the frame kept for the stress output.
     if constexpr (kCorot) {
       brick_from_frame(R, f);
       for (int c = 0; c < 3; ++c)
@@ -290,7 +321,7 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
     }
 
     // Store.
-    store_nodal_forces<8, 3>(force, G, i, off_new, f);
+    store_nodal_forces<8, 3>(g.nodal_force.data(), G, i, off_new, f);
 #pragma GCC unroll 8
     for (int m = 0; m < 6; ++m) g.sig[static_cast<std::size_t>(m) * G + i] = sn[m];
     g.eps_p[i] = eps_p;
@@ -302,7 +333,7 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
     g.rate[i] = rate;
     g.e_int[i] += off_new * de_int;
     g.e_hg[i] += off_new * dt1 * de_hg;
-    g.w_plastic[i] += off_new * svm * deps_p * vol;
+    g.w_plastic[i] += off_new * svm * pr.deps_p * vol;
     g.dt[i] = dt_e;
     g.k_nodal[i] = solid_nodal_stiffness(0.25, rho, vol, dt_e);
   }

@@ -105,16 +105,6 @@ const ShapeDerivs& derivs() {
   return s;
 }
 
-inline void cross(const double a[3], const double b[3], double c[3]) {
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-inline double dot3(const double a[3], const double b[3]) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 // Inverse of a 3x3 matrix m with determinant det (not zero).
 inline void inverse3(const double m[3][3], double det, double inv[3][3]) {
   const double id = 1.0 / det;
@@ -154,7 +144,7 @@ void corot_frame(const double x[8][3], double R[3][3], bool s8e) {
         const double a[3] = {q[0][(c + 1) % 3], q[1][(c + 1) % 3], q[2][(c + 1) % 3]};
         const double b[3] = {q[0][(c + 2) % 3], q[1][(c + 2) % 3], q[2][(c + 2) % 3]};
         double e[3];
-        cross(a, b, e);
+        cross3(a, b, e);
         for (int d = 0; d < 3; ++d) e[d] += q[d][c];
         const double n = std::sqrt(dot3(e, e));
         for (int d = 0; d < 3; ++d) nq[d][c] = n > 0 ? e[d] / n : q[d][c];
@@ -163,10 +153,10 @@ void corot_frame(const double x[8][3], double R[3][3], bool s8e) {
         for (int c = 0; c < 3; ++c) q[d][c] = nq[d][c];
     }
     double ee[3] = {q[0][1], q[1][1], q[2][1]}, qz[3] = {q[0][2], q[1][2], q[2][2]}, ex[3], ez[3];
-    cross(ee, qz, ex);
+    cross3(ee, qz, ex);
     const double n = std::sqrt(dot3(ex, ex));
     for (double& v : ex) v /= n;
-    cross(ex, ee, ez);
+    cross3(ex, ee, ez);
     for (int d = 0; d < 3; ++d) {
       R[0][d] = ex[d];
       R[1][d] = ee[d];
@@ -186,10 +176,10 @@ void corot_frame(const double x[8][3], double R[3][3], bool s8e) {
   double e1[3] = {q[0][0], q[1][0], q[2][0]}, q2[3] = {q[0][1], q[1][1], q[2][1]}, e2[3], e3[3];
   double n = std::sqrt(dot3(e1, e1));
   for (double& v : e1) v /= n;
-  cross(e1, q2, e3);
+  cross3(e1, q2, e3);
   n = std::sqrt(dot3(e3, e3));
   for (double& v : e3) v /= n;
-  cross(e3, e1, e2);
+  cross3(e3, e1, e2);
   for (int d = 0; d < 3; ++d) {
     R[0][d] = e1[d];
     R[1][d] = e2[d];
@@ -219,6 +209,8 @@ bool point_gradients(const double x[8][3], double vp[8], double b[8][8][3], doub
 
 // The points' strain operator: normal strain eps_aa = sum_k b_pk,a v_k,a + sum_{s != a} sum_k cp[p][s][a][k]
 // v_k,s, shear dv_a/dx_c (a != c) = sum_k bs[p][a][c][k] v_k,a. Plain: bs = b, cp = 0.
+constexpr std::size_t kPoints = 8;  // the 2 x 2 x 2 Gauss points
+
 struct PointOperator {
   double bs[8][3][3][8];
   double cp[8][3][3][8];
@@ -416,6 +408,201 @@ void plain_operator(const double b[8][8][3], PointOperator& op) {
         }
 }
 
+// The group's constants of the kernel.
+struct FullConstants {
+  double dt1, c, rho0, qa2, qb, alpha;
+  bool const_p;  // Icpre: every point takes the element's volumetric strain
+  double nu;     // the material's Poisson ratio in the coupling terms, as S8Z/S8E
+};
+
+FullConstants full_constants(const BrickGroup& g, const MaterialParams& mat, double dt1) {
+  FullConstants k;
+  k.dt1 = dt1;
+  k.c = mat.c_solid;
+  k.rho0 = mat.rho0;
+  k.qa2 = g.qa * g.qa;
+  k.qb = g.qb;
+  k.const_p = g.icpre != 0;
+  k.alpha = mat.f_cut > 0 ? std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1) : 1.0;
+  k.nu = std::min(0.5, mat.nu);
+  return k;
+}
+
+// Frame R (the identity without the co-rotational option) and the element's local coordinates and velocities.
+void full_local_state(const BrickGroup& g, const double xg[8][3], const double vg[8][3], double R[3][3],
+                      double x[8][3], double v[8][3]) {
+  if (g.corot) corot_frame(xg, R, g.dt_points && g.strain != BrickGroup::FullStrain::Asqbi);
+  for (int n = 0; n < 8; ++n)
+    for (int a = 0; a < 3; ++a) {
+      x[n][a] = R[a][0] * xg[n][0] + R[a][1] * xg[n][1] + R[a][2] * xg[n][2];
+      v[n][a] = R[a][0] * vg[n][0] + R[a][1] * vg[n][1] + R[a][2] * vg[n][2];
+    }
+}
+
+// The points' strain operator (the formulation's assumed strain).
+void full_strain_operator(const BrickGroup& g, const FullConstants& k, const double x[8][3],
+                          const double b[kPoints][8][3], const double ji[kPoints][3][3], PointOperator& op) {
+  double bc[8][3], hg[8][4][8][3];
+  switch (g.strain) {
+    case BrickGroup::FullStrain::Plain: plain_operator(b, op); break;
+    case BrickGroup::FullStrain::Asqbi:
+      hourglass_parts(x, ji, bc, hg);
+      asqbi_operator(b, hg, bc, k.nu, g.coupled, op);
+      break;
+    case BrickGroup::FullStrain::SelectShear:
+      hourglass_parts(x, ji, bc, hg);
+      select_operator(b, bc, k.nu, op);
+      break;
+  }
+}
+
+// The points' strain rates D (engineering shears) and spin increments W through the operator; with the
+// coupling terms, each point's reference volume takes its share of the volumetric strain.
+void full_strain_rates(BrickGroup& g, std::size_t i, double dt1, const PointOperator& op,
+                       const double v[8][3], const double b[kPoints][8][3], double D[kPoints][6],
+                       double W[kPoints][3]) {
+  constexpr std::size_t G = kGroupSize;
+  for (std::size_t p = 0; p < kPoints; ++p) {
+    double L[3][3] = {};  // plain velocity gradient, for the normal strains and the spin
+    for (int n = 0; n < 8; ++n)
+      for (int a = 0; a < 3; ++a)
+        for (int e = 0; e < 3; ++e) L[a][e] += v[n][a] * b[p][n][e];
+    double sh[3][3] = {};  // assumed dv_a/dx_c (a != c) and the coupling's normal strains (a == c)
+    for (int n = 0; n < 8; ++n)
+      for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 3; ++c) {
+          if (a == c) continue;
+          sh[a][c] += op.bs[p][a][c][n] * v[n][a];
+          if (g.coupled) sh[c][c] += op.cp[p][a][c][n] * v[n][a];
+        }
+    D[p][0] = L[0][0] + sh[0][0];
+    D[p][1] = L[1][1] + sh[1][1];
+    D[p][2] = L[2][2] + sh[2][2];
+    D[p][3] = sh[0][1] + sh[1][0];
+    D[p][4] = sh[1][2] + sh[2][1];
+    D[p][5] = sh[2][0] + sh[0][2];
+    W[p][0] = 0.5 * dt1 * (L[2][1] - L[1][2]);  // wx
+    W[p][1] = 0.5 * dt1 * (L[0][2] - L[2][0]);  // wy
+    W[p][2] = 0.5 * dt1 * (L[1][0] - L[0][1]);  // wz
+    // The coupling terms change the volume the strain sees, not the geometric one: the point's reference
+    // volume takes that part of the volumetric strain (V0_p <- V0_p (1 - dt1 tr), as S8Z and S8E do), so
+    // the pressure from mu = V0_p / V_p - 1 stays consistent with the strain.
+    if (g.coupled) g.vol0_p[p * G + i] *= 1.0 - dt1 * (sh[0][0] + sh[1][1] + sh[2][2]);
+  }
+}
+
+// What the material stage gives the element.
+struct FullMaterialResult {
+  double work = 0, w_pl = 0, eps_mean = 0, dmg_max = 0;
+  bool fails = false;  // a point starts the brick's deletion (law 36 Eps_p_max, /FAIL/JOHNSON Ifail_so 1)
+};
+
+// Material per point: the stress sn[p], the stress work with the mean volume over the step, the plastic
+// work, the mean plastic strain and the largest damage.
+FullMaterialResult full_material(BrickGroup& g, std::size_t i, const FullConstants& k,
+                                 const MaterialParams& mat, double off, double rate, double mu_el,
+                                 double vavg_ratio, const double vp[kPoints], const double D[kPoints][6],
+                                 const double W[kPoints][3], double sn[kPoints][6]) {
+  constexpr std::size_t G = kGroupSize;
+  const double dt1 = k.dt1;
+  FullMaterialResult r;
+  for (std::size_t p = 0; p < kPoints; ++p) {
+    double so[6];
+    for (std::size_t m = 0; m < 6; ++m) so[m] = g.sig_p[(p * 6 + m) * G + i];
+    if (!g.corot) {  // Jaumann rotation of the point's stress (3.2), old values on the right
+      const double wx = W[p][0], wy = W[p][1], wz = W[p][2];
+      const double s0[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
+      jaumann_rotate(s0, wx, wy, wz, so);
+    }
+    const double mu = k.const_p ? mu_el : g.vol0_p[p * G + i] / vp[p] - 1.0;
+    const double de[6] = {D[p][0] * dt1, D[p][1] * dt1, D[p][2] * dt1,
+                          D[p][3] * dt1, D[p][4] * dt1, D[p][5] * dt1};
+    for (std::size_t m = 0; m < 6; ++m) sn[p][m] = so[m];
+    double& ep = g.eps_p_p[p * G + i];
+    const SolidPointResult pr = solid_point_update(mat, rate, de, mu, sn[p], ep, g.dmg_p[p * G + i], off);
+    const double deps_p = pr.deps_p;
+    r.fails = r.fails || pr.element_fails;
+    r.dmg_max = std::max(r.dmg_max, g.dmg_p[p * G + i]);
+    r.eps_mean += ep / 8.0;
+    double wp = 0;
+    for (std::size_t m = 0; m < 6; ++m) wp += (so[m] + sn[p][m]) * D[p][m];
+    r.work += 0.5 * dt1 * vp[p] * vavg_ratio * wp;
+    const double svm = std::sqrt(von_mises2(sn[p]));
+    r.w_pl += svm * deps_p * vp[p];
+  }
+  return r;
+}
+
+// Characteristic length. S8Z and S8E: min over the points of 8 V_p / A_mid, A_mid the largest of the three
+// mid-sections of the centre Jacobian (4 |g_a x g_b|); equal to V / max face area on a box, and shorter on a
+// degenerate brick where a point's V_p shrinks. Otherwise the one-point V / max face area.
+double full_step_length(const BrickGroup& g, const double x[8][3], const double vp[kPoints], double vol) {
+  if (!g.dt_points) return brick_face_length(x, vol);
+  double gc[3][3] = {};  // gc[c] = dx/dxi_c at the centre
+  for (int n = 0; n < 8; ++n)
+    for (int c = 0; c < 3; ++c)
+      for (int d = 0; d < 3; ++d) gc[c][d] += 0.125 * kNat[n][c] * x[n][d];
+  double amid = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    double nc[3];
+    cross3(gc[(c + 1) % 3], gc[(c + 2) % 3], nc);
+    amid = std::max(amid, 4.0 * std::sqrt(dot3(nc, nc)));
+  }
+  double vmin = vp[0];
+  for (std::size_t p = 1; p < kPoints; ++p) vmin = std::min(vmin, vp[p]);
+  return 8.0 * vmin / amid;
+}
+
+// Forces in the local frame: the transpose of the strain operator, f_k,a = -sum_p V_p [(s_aa - q) b_pk,a
+//   + sum_{c != a} ((s_cc - q) cp[p][a][c][k] + s_ac bs[p][a][c][k])]; and the volume-weighted mean stress.
+void full_local_forces(const BrickGroup& g, const PointOperator& op, const double b[kPoints][8][3],
+                       const double vp[kPoints], double vol, const double sn[kPoints][6], double q_new,
+                       double fl[8][3], double smean[6]) {
+  for (std::size_t p = 0; p < kPoints; ++p) {
+    const double s[3][3] = {{sn[p][0] - q_new, sn[p][3], sn[p][5]},
+                            {sn[p][3], sn[p][1] - q_new, sn[p][4]},
+                            {sn[p][5], sn[p][4], sn[p][2] - q_new}};
+    for (int n = 0; n < 8; ++n)
+      for (int a = 0; a < 3; ++a) {
+        double t = s[a][a] * b[p][n][a];
+        for (int c = 0; c < 3; ++c) {
+          if (c == a) continue;
+          t += s[a][c] * op.bs[p][a][c][n];
+          if (g.coupled) t += s[c][c] * op.cp[p][a][c][n];
+        }
+        fl[n][a] -= vp[p] * t;
+      }
+    for (int m = 0; m < 6; ++m) smean[m] += vp[p] * sn[p][m] / vol;
+  }
+}
+
+// The element's output stress: the mean stress in global axes, sigma_g = R^T sigma_loc R.
+void full_output_stress(const double R[3][3], const double smean[6], double out[6]) {
+  const double S[3][3] = {
+      {smean[0], smean[3], smean[5]}, {smean[3], smean[1], smean[4]}, {smean[5], smean[4], smean[2]}};
+  double T[3][3] = {};
+  for (int a = 0; a < 3; ++a)
+    for (int e = 0; e < 3; ++e)
+      for (int r = 0; r < 3; ++r)
+        for (int t = 0; t < 3; ++t) T[a][e] += R[r][a] * S[r][t] * R[t][e];
+  out[0] = T[0][0], out[1] = T[1][1], out[2] = T[2][2], out[3] = T[0][1], out[4] = T[1][2], out[5] = T[2][0];
+}
+
+// An element that does not run this cycle: deleted (dt = +inf), or with a point of non-positive volume (its
+// volume stored as the worst one, not-a-number kept, dt = 0: reported and stopped by the engine).
+void full_element_off(BrickGroup& g, std::size_t i, bool deleted, const double vp[kPoints]) {
+  clear_nodal_forces<8, 3>(g.nodal_force.data(), kGroupSize, i);
+  if (deleted) {
+    g.dt[i] = std::numeric_limits<double>::infinity();
+  } else {
+    double bad = 0;
+    for (std::size_t p = 0; p < kPoints; ++p) bad = std::min(bad, vp[p]);
+    g.vol[i] = std::isnan(bad) ? bad : std::min(bad, 0.0);
+    g.dt[i] = 0.0;
+  }
+  g.k_nodal[i] = 0.0;
+}
+
 }  // namespace
 
 void resolve_full_brick(const model::SolidProperty& prop, const MaterialParams& mat, BrickGroup& g) {
@@ -470,216 +657,79 @@ void hex8_full_point_volumes(const double x[8][3], double vp[8]) {
 void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat,
                       const CycleInfo& cyc) {
   constexpr std::size_t G = kGroupSize;
-  constexpr std::size_t NP = 8;
-  const double dt1 = cyc.dt1;
-  const double c = mat.c_solid;
-  const double rho0 = mat.rho0;
-  const double qa2 = g.qa * g.qa;
-  const double qb = g.qb;
-  const bool const_p = g.icpre != 0;
-  const double alpha = mat.f_cut > 0 ? std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1) : 1.0;
-  const double inf = std::numeric_limits<double>::infinity();
-
-  const std::int32_t* conn = g.conn.data();
-  double* force = g.nodal_force.data();
-  auto sp = [&](std::size_t p, std::size_t m, std::size_t i) -> double& {
-    return g.sig_p[(p * 6 + m) * G + i];
-  };
-
-  const double nu = std::min(0.5, mat.nu);  // the material's Poisson ratio in the coupling terms, as S8Z/S8E
-  PointOperator op;                         // per element scratch, on the stack (no allocation in the loop)
-  double bc[8][3], hg[8][4][8][3];
+  const FullConstants k = full_constants(g, mat, cyc.dt1);
+  const double dt1 = k.dt1, c = k.c;
+  PointOperator op;  // per element scratch, on the stack (no allocation in the loop)
 
   const auto n = static_cast<std::size_t>(g.count);
   for (std::size_t i = 0; i < n; ++i) {
     const double off = g.off[i];
+    double vp[kPoints], b[kPoints][8][3], ji[kPoints][3][3];
     if (off == 0.0) {
-      clear_nodal_forces<8, 3>(force, G, i);
-      g.dt[i] = inf;
-      g.k_nodal[i] = 0.0;
+      full_element_off(g, i, true, vp);
       continue;
     }
     double xg[8][3], vg[8][3];
-    gather_element<8>(conn, G, i, nodes, xg, vg);
+    gather_element<8>(g.conn.data(), G, i, nodes, xg, vg);
     brick_small_strain_geometry(g, i, xg);  // /DT/BRICK/CST: freeze the geometry once (as hex8_fb.cpp)
-
-    // Frame and local coordinates.
-    double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    if (g.corot) corot_frame(xg, R, g.dt_points && g.strain != BrickGroup::FullStrain::Asqbi);
-    double x[8][3], v[8][3];
-    for (int k = 0; k < 8; ++k)
-      for (int a = 0; a < 3; ++a) {
-        x[k][a] = R[a][0] * xg[k][0] + R[a][1] * xg[k][1] + R[a][2] * xg[k][2];
-        v[k][a] = R[a][0] * vg[k][0] + R[a][1] * vg[k][1] + R[a][2] * vg[k][2];
-      }
-
-    double vp[NP], b[NP][8][3], ji[NP][3][3];
+    double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, x[8][3], v[8][3];
+    full_local_state(g, xg, vg, R, x, v);
     if (!point_gradients(x, vp, b, ji)) {
-      clear_nodal_forces<8, 3>(force, G, i);
-      double bad = 0;
-      for (std::size_t p = 0; p < NP; ++p) bad = std::min(bad, vp[p]);
-      g.vol[i] = std::isnan(bad) ? bad : std::min(bad, 0.0);
-      g.dt[i] = 0.0;
-      g.k_nodal[i] = 0.0;
+      full_element_off(g, i, false, vp);
       continue;
     }
     double vol = 0;
-    for (std::size_t p = 0; p < NP; ++p) vol += vp[p];
+    for (std::size_t p = 0; p < kPoints; ++p) vol += vp[p];
 
-    // The points' strain operator (the formulation's assumed strain), then the strain rates.
-    switch (g.strain) {
-      case BrickGroup::FullStrain::Plain: plain_operator(b, op); break;
-      case BrickGroup::FullStrain::Asqbi:
-        hourglass_parts(x, ji, bc, hg);
-        asqbi_operator(b, hg, bc, nu, g.coupled, op);
-        break;
-      case BrickGroup::FullStrain::SelectShear:
-        hourglass_parts(x, ji, bc, hg);
-        select_operator(b, bc, nu, op);
-        break;
-    }
-    double D[NP][6], W[NP][3], Dm[6] = {0, 0, 0, 0, 0, 0};
-    for (std::size_t p = 0; p < NP; ++p) {
-      double L[3][3] = {};  // plain velocity gradient, for the normal strains and the spin
-      for (int k = 0; k < 8; ++k)
-        for (int a = 0; a < 3; ++a)
-          for (int e = 0; e < 3; ++e) L[a][e] += v[k][a] * b[p][k][e];
-      double sh[3][3] = {};  // assumed dv_a/dx_c (a != c) and the coupling's normal strains (a == c)
-      for (int k = 0; k < 8; ++k)
-        for (int a = 0; a < 3; ++a)
-          for (int c = 0; c < 3; ++c) {
-            if (a == c) continue;
-            sh[a][c] += op.bs[p][a][c][k] * v[k][a];
-            if (g.coupled) sh[c][c] += op.cp[p][a][c][k] * v[k][a];
-          }
-      D[p][0] = L[0][0] + sh[0][0];
-      D[p][1] = L[1][1] + sh[1][1];
-      D[p][2] = L[2][2] + sh[2][2];
-      D[p][3] = sh[0][1] + sh[1][0];
-      D[p][4] = sh[1][2] + sh[2][1];
-      D[p][5] = sh[2][0] + sh[0][2];
-      W[p][0] = 0.5 * dt1 * (L[2][1] - L[1][2]);  // wx
-      W[p][1] = 0.5 * dt1 * (L[0][2] - L[2][0]);  // wy
-      W[p][2] = 0.5 * dt1 * (L[1][0] - L[0][1]);  // wz
-      // The coupling terms change the volume the strain sees, not the geometric one: the point's reference
-      // volume takes that part of the volumetric strain (V0_p <- V0_p (1 - dt1 tr), as S8Z and S8E do), so
-      // the pressure from mu = V0_p / V_p - 1 stays consistent with the strain.
-      if (g.coupled) g.vol0_p[p * G + i] *= 1.0 - dt1 * (sh[0][0] + sh[1][1] + sh[2][2]);
-    }
+    full_strain_operator(g, k, x, b, ji, op);
+    double D[kPoints][6], W[kPoints][3], Dm[6] = {0, 0, 0, 0, 0, 0};
+    full_strain_rates(g, i, dt1, op, v, b, D, W);
     double vol0 = 0;
-    for (std::size_t p = 0; p < NP; ++p) vol0 += g.vol0_p[p * G + i];
-    for (std::size_t p = 0; p < NP; ++p)
+    for (std::size_t p = 0; p < kPoints; ++p) vol0 += g.vol0_p[p * G + i];
+    for (std::size_t p = 0; p < kPoints; ++p)
       for (int m = 0; m < 6; ++m) Dm[m] += vp[p] * D[p][m] / vol;
 
     // Material per point.
-    const double rho = rho0 * vol0 / vol;
+    const double rho = k.rho0 * vol0 / vol;
     const double mu_el = vol0 / vol - 1.0;
-    const double rate = filtered_rate(alpha, strain_rate_measure(Dm), g.rate[i]);
+    const double rate = filtered_rate(k.alpha, strain_rate_measure(Dm), g.rate[i]);
     const double dvol = vol - g.vol[i];
     const double vavg_ratio = (vol - 0.5 * dvol) / vol;
-    double sn[NP][6];
-    double work = 0, w_pl = 0, eps_mean = 0, dmg_max = 0;
-    bool fails = false;  // a point starts the brick's deletion (law 36 Eps_p_max, /FAIL/JOHNSON Ifail_so 1)
-    for (std::size_t p = 0; p < NP; ++p) {
-      double so[6];
-      for (std::size_t m = 0; m < 6; ++m) so[m] = sp(p, m, i);
-      if (!g.corot) {  // Jaumann rotation of the point's stress (3.2), old values on the right
-        const double wx = W[p][0], wy = W[p][1], wz = W[p][2];
-        const double s0[6] = {so[0], so[1], so[2], so[3], so[4], so[5]};
-        jaumann_rotate(s0, wx, wy, wz, so);
-      }
-      const double mu = const_p ? mu_el : g.vol0_p[p * G + i] / vp[p] - 1.0;
-      const double de[6] = {D[p][0] * dt1, D[p][1] * dt1, D[p][2] * dt1,
-                            D[p][3] * dt1, D[p][4] * dt1, D[p][5] * dt1};
-      for (std::size_t m = 0; m < 6; ++m) sn[p][m] = so[m];
-      double& ep = g.eps_p_p[p * G + i];
-      const SolidPointResult pr = solid_point_update(mat, rate, de, mu, sn[p], ep, g.dmg_p[p * G + i], off);
-      const double deps_p = pr.deps_p;
-      fails = fails || pr.element_fails;
-      dmg_max = std::max(dmg_max, g.dmg_p[p * G + i]);
-      eps_mean += ep / 8.0;
-      double wp = 0;
-      for (std::size_t m = 0; m < 6; ++m) wp += (so[m] + sn[p][m]) * D[p][m];
-      work += 0.5 * dt1 * vp[p] * vavg_ratio * wp;
-      const double svm = std::sqrt(von_mises2(sn[p]));
-      w_pl += svm * deps_p * vp[p];
-    }
+    double sn[kPoints][6];
+    const FullMaterialResult mr = full_material(g, i, k, mat, off, rate, mu_el, vavg_ratio, vp, D, W, sn);
 
     // Bulk viscosity and step.
     const double l = std::cbrt(vol);
     const double ec = compression_rate(Dm);
-    const double q_new = bulk_viscosity(rho, ec, l, qa2, qb, c);
-    // Characteristic length. S8Z and S8E: min over the points of 8 V_p / A_mid, A_mid the largest of the
-    // three mid-sections of the centre Jacobian (4 |g_a x g_b|); equal to V / max face area on a box, and
-    // shorter on a degenerate brick where a point's V_p shrinks. Otherwise the one-point V / max face area.
-    double len;
-    if (g.dt_points) {
-      double gc[3][3] = {};  // gc[c] = dx/dxi_c at the centre
-      for (int k = 0; k < 8; ++k)
-        for (int c = 0; c < 3; ++c)
-          for (int d = 0; d < 3; ++d) gc[c][d] += 0.125 * kNat[k][c] * x[k][d];
-      double amid = 0.0;
-      for (int c = 0; c < 3; ++c) {
-        double n[3];
-        cross(gc[(c + 1) % 3], gc[(c + 2) % 3], n);
-        amid = std::max(amid, 4.0 * std::sqrt(dot3(n, n)));
-      }
-      double vmin = vp[0];
-      for (std::size_t p = 1; p < NP; ++p) vmin = std::min(vmin, vp[p]);
-      len = 8.0 * vmin / amid;
-    } else {
-      len = brick_face_length(x, vol);
-    }
-    const double dt_e = solid_step(len, c, qa2, qb, l, ec);
-    const double de_int = work - 0.5 * dvol * (g.q[i] + q_new);
+    const double q_new = bulk_viscosity(rho, ec, l, k.qa2, k.qb, c);
+    const double dt_e = solid_step(full_step_length(g, x, vp, vol), c, k.qa2, k.qb, l, ec);
+    const double de_int = mr.work - 0.5 * dvol * (g.q[i] + q_new);
 
-    // Forces: the transpose of the strain operator, f_k,a = -sum_p V_p [(s_aa - q) b_pk,a
-    //   + sum_{c != a} ((s_cc - q) cp[p][a][c][k] + s_ac bs[p][a][c][k])].
+    // Forces, the S8E viscous hourglass, back to global axes.
     double fl[8][3] = {};
     double smean[6] = {0, 0, 0, 0, 0, 0};
-    for (std::size_t p = 0; p < NP; ++p) {
-      const double s[3][3] = {{sn[p][0] - q_new, sn[p][3], sn[p][5]},
-                              {sn[p][3], sn[p][1] - q_new, sn[p][4]},
-                              {sn[p][5], sn[p][4], sn[p][2] - q_new}};
-      for (int k = 0; k < 8; ++k)
-        for (int a = 0; a < 3; ++a) {
-          double t = s[a][a] * b[p][k][a];
-          for (int c = 0; c < 3; ++c) {
-            if (c == a) continue;
-            t += s[a][c] * op.bs[p][a][c][k];
-            if (g.coupled) t += s[c][c] * op.cp[p][a][c][k];
-          }
-          fl[k][a] -= vp[p] * t;
-        }
-      for (int m = 0; m < 6; ++m) smean[m] += vp[p] * sn[p][m] / vol;
-    }
+    full_local_forces(g, op, b, vp, vol, sn, q_new, fl, smean);
     double w_visc = 0;
     if (g.s8e_visc)
       w_visc = s8e_hourglass_viscosity(x, v, vol, rho * c * 0.0025 * std::cbrt(vol), mat.nu, fl);
     double f[8][3];
-    for (int k = 0; k < 8; ++k)
-      for (int a = 0; a < 3; ++a) f[k][a] = R[0][a] * fl[k][0] + R[1][a] * fl[k][1] + R[2][a] * fl[k][2];
+    for (int nd = 0; nd < 8; ++nd)
+      for (int a = 0; a < 3; ++a) f[nd][a] = R[0][a] * fl[nd][0] + R[1][a] * fl[nd][1] + R[2][a] * fl[nd][2];
     // Deletion as the one-point brick (brick_next_off) once any point fails. As in hex8_fb.cpp, this cycle's
     // forces and energies take the new factor: 0.8 in the failure cycle, none in the cycle that deletes the
     // brick (with the factor at entry a brick reported deleted still pushed on its nodes for one cycle).
     // Which share of failed points OpenRadioss needs for a fully integrated brick is not read: one.
-    const double off_new = brick_next_off(off, fails);
-    store_nodal_forces<8, 3>(force, G, i, off_new, f);
+    const double off_new = brick_next_off(off, mr.fails);
+    store_nodal_forces<8, 3>(g.nodal_force.data(), G, i, off_new, f);
 
-    // Element output: the mean stress in global axes, sigma_g = R^T sigma_loc R.
-    const double S[3][3] = {
-        {smean[0], smean[3], smean[5]}, {smean[3], smean[1], smean[4]}, {smean[5], smean[4], smean[2]}};
-    double T[3][3] = {};
-    for (int a = 0; a < 3; ++a)
-      for (int e = 0; e < 3; ++e)
-        for (int r = 0; r < 3; ++r)
-          for (int t = 0; t < 3; ++t) T[a][e] += R[r][a] * S[r][t] * R[t][e];
-    const double out[6] = {T[0][0], T[1][1], T[2][2], T[0][1], T[1][2], T[2][0]};
-    for (std::size_t p = 0; p < NP; ++p)
-      for (std::size_t m = 0; m < 6; ++m) sp(p, m, i) = sn[p][m];
+    // The state.
+    double out[6];
+    full_output_stress(R, smean, out);
+    for (std::size_t p = 0; p < kPoints; ++p)
+      for (std::size_t m = 0; m < 6; ++m) g.sig_p[(p * 6 + m) * G + i] = sn[p][m];
     for (std::size_t m = 0; m < 6; ++m) g.sig[m * G + i] = out[m];
-    g.eps_p[i] = eps_mean;
-    g.dmg[i] = dmg_max;
+    g.eps_p[i] = mr.eps_mean;
+    g.dmg[i] = mr.dmg_max;
     g.off[i] = off_new;
     g.vol[i] = vol;
     g.rho[i] = rho;
@@ -687,7 +737,7 @@ void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
     g.rate[i] = rate;
     g.e_int[i] += off_new * de_int;
     g.e_hg[i] += off_new * dt1 * w_visc;
-    g.w_plastic[i] += off_new * w_pl;
+    g.w_plastic[i] += off_new * mr.w_pl;
     g.dt[i] = dt_e;
     g.k_nodal[i] = solid_nodal_stiffness(0.25, rho, vol, dt_e);
   }

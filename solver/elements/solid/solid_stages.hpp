@@ -28,6 +28,11 @@ inline void cross3(const double a[3], const double b[3], double c[3]) {
   c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+// a . b.
+inline double dot3(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
 // One-point brick geometry (elements.md 3.1, sderi3.F), nodes 1-4 one face, 5-8 above them:
 //   d17 = x7 - x1, d28 = x8 - x2, d35 = x5 - x3, d46 = x6 - x4,
 //   j1 = d17 + d28 - d35 - d46 (8 dx/deta), j2 = d17 + d28 + d35 + d46 (8 dx/dzeta),

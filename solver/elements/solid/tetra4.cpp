@@ -51,6 +51,52 @@ namespace {
 constexpr int kFaces[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
 constexpr int kOpposite[4] = {3, 2, 1, 0};
 
+// Face area vectors af_f (twice the face's area, outward) and the largest |af_f|^2; the volume V = d14 . (d24
+// x d34) / 6 (returned; not positive for an inverted, flat or not-a-number element, whose gradients are then
+// not computed) and the gradients b_k = -af_f / (6 V) of the node k opposite face f.
+[[gnu::always_inline]] inline double tetra_geometry(const double x[4][3], double b[4][3], double& area2_max) {
+  double af[4][3];
+#pragma GCC unroll 4
+  for (int f = 0; f < 4; ++f) {
+    double e1[3], e2[3];
+#pragma GCC unroll 3
+    for (int d = 0; d < 3; ++d) {
+      e1[d] = x[kFaces[f][1]][d] - x[kFaces[f][0]][d];
+      e2[d] = x[kFaces[f][2]][d] - x[kFaces[f][0]][d];
+    }
+    cross3(e1, e2, af[f]);
+    area2_max = std::max(area2_max, af[f][0] * af[f][0] + af[f][1] * af[f][1] + af[f][2] * af[f][2]);
+  }
+  double d14[3], d24[3], d34[3], c23[3];
+#pragma GCC unroll 3
+  for (int d = 0; d < 3; ++d) {
+    d14[d] = x[0][d] - x[3][d];
+    d24[d] = x[1][d] - x[3][d];
+    d34[d] = x[2][d] - x[3][d];
+  }
+  cross3(d24, d34, c23);
+  const double vol = (d14[0] * c23[0] + d14[1] * c23[1] + d14[2] * c23[2]) / 6.0;
+  if (!(vol > 0.0)) return vol;
+  const double inv6v = -1.0 / (6.0 * vol);
+#pragma GCC unroll 4
+  for (int f = 0; f < 4; ++f)
+#pragma GCC unroll 3
+    for (int d = 0; d < 3; ++d) b[kOpposite[f]][d] = af[f][d] * inv6v;
+  return vol;
+}
+
+// Nodal forces f_k = -V (sigma - q I) b_k.
+[[gnu::always_inline]] inline void tetra_nodal_forces(const double sn[6], double q_new, double vol,
+                                                      const double b[4][3], double f[4][3]) {
+  const double T[3][3] = {{vol * (sn[0] - q_new), vol * sn[3], vol * sn[5]},
+                          {vol * sn[3], vol * (sn[1] - q_new), vol * sn[4]},
+                          {vol * sn[5], vol * sn[4], vol * (sn[2] - q_new)}};
+#pragma GCC unroll 4
+  for (int k = 0; k < 4; ++k)
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; ++a) f[k][a] = -(T[a][0] * b[k][0] + T[a][1] * b[k][1] + T[a][2] * b[k][2]);
+}
+
 }  // namespace
 
 void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
@@ -80,28 +126,8 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
     gather_element<4>(conn, G, i, nodes, x, v);
 
     // Face area vectors (twice the area, outward), volume, gradients.
-    double af[4][3];
-    double area2_max = 0.0;
-#pragma GCC unroll 4
-    for (int f = 0; f < 4; ++f) {
-      double e1[3], e2[3];
-#pragma GCC unroll 3
-      for (int d = 0; d < 3; ++d) {
-        e1[d] = x[kFaces[f][1]][d] - x[kFaces[f][0]][d];
-        e2[d] = x[kFaces[f][2]][d] - x[kFaces[f][0]][d];
-      }
-      cross3(e1, e2, af[f]);
-      area2_max = std::max(area2_max, af[f][0] * af[f][0] + af[f][1] * af[f][1] + af[f][2] * af[f][2]);
-    }
-    double d14[3], d24[3], d34[3], c23[3];
-#pragma GCC unroll 3
-    for (int d = 0; d < 3; ++d) {
-      d14[d] = x[0][d] - x[3][d];
-      d24[d] = x[1][d] - x[3][d];
-      d34[d] = x[2][d] - x[3][d];
-    }
-    cross3(d24, d34, c23);
-    const double vol = (d14[0] * c23[0] + d14[1] * c23[1] + d14[2] * c23[2]) / 6.0;
+    double b[4][3], area2_max = 0.0;
+    const double vol = tetra_geometry(x, b, area2_max);
     if (!(vol > 0.0)) {  // inverted, flat or not a number: reported and stopped by the engine
       clear_nodal_forces<4, 3>(force, G, i);
       g.vol[i] = vol;
@@ -109,12 +135,6 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
       g.k_nodal[i] = 0.0;
       continue;
     }
-    const double inv6v = -1.0 / (6.0 * vol);
-    double b[4][3];
-#pragma GCC unroll 4
-    for (int f = 0; f < 4; ++f)
-#pragma GCC unroll 3
-      for (int d = 0; d < 3; ++d) b[kOpposite[f]][d] = af[f][d] * inv6v;
 
     // Velocity gradient L[a][c] = d v_a / d x_c.
     double L[3][3] = {};
@@ -168,15 +188,8 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
     const double svm = std::sqrt(von_mises2(sn));
 
     // Nodal forces f_k = -V (sigma - q I) b_k.
-    const double T[3][3] = {{vol * (sn[0] - q_new), vol * sn[3], vol * sn[5]},
-                            {vol * sn[3], vol * (sn[1] - q_new), vol * sn[4]},
-                            {vol * sn[5], vol * sn[4], vol * (sn[2] - q_new)}};
     double f[4][3];
-#pragma GCC unroll 4
-    for (int k = 0; k < 4; ++k)
-#pragma GCC unroll 3
-      for (int a = 0; a < 3; ++a) f[k][a] = -(T[a][0] * b[k][0] + T[a][1] * b[k][1] + T[a][2] * b[k][2]);
-
+    tetra_nodal_forces(sn, q_new, vol, b, f);
     store_nodal_forces<4, 3>(force, G, i, off_new, f);
 #pragma GCC unroll 6
     for (int m = 0; m < 6; ++m) g.sig[static_cast<std::size_t>(m) * G + i] = sn[m];
