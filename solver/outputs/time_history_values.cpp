@@ -209,291 +209,324 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
   }
 }
 
-void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::span<double> out) const {
+void ThGroupSampler::sample_nodes(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const {
+  const auto& s = e.nodes();
+  const double h = 0.5 * r.dt1;
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const auto n = static_cast<std::size_t>(objects_[o]);
+    // Every vector on the axes of the object's skew of this cycle (the global axes for none); X Y Z are
+    // the position's components on those axes, not measured from the skew's origin (OpenRadioss thnod.F).
+    const auto on = [&, sk = skews_[o]](std::array<double, 3> u) { return e.skews().on_axes(sk, u); };
+    const auto v = on({s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]});
+    const auto reac =
+        on({s.mass[n] * s.ax[n] - s.fx[n], s.mass[n] * s.ay[n] - s.fy[n], s.mass[n] * s.az[n] - s.fz[n]});
+    const auto mreac = on({s.inertia[n] * s.awx[n] - s.mx[n], s.inertia[n] * s.awy[n] - s.my[n],
+                           s.inertia[n] * s.awz[n] - s.mz[n]});
+    const auto x = on({s.x[n], s.y[n], s.z[n]});
+    const auto disp = on({s.x[n] - s.x0[n], s.y[n] - s.y0[n], s.z[n] - s.z0[n]});
+    const auto a = on({s.ax[n], s.ay[n], s.az[n]});
+    const auto vr = on({s.wx[n] + h * s.awx[n], s.wy[n] + h * s.awy[n], s.wz[n] + h * s.awz[n]});
+    const auto aw = on({s.awx[n], s.awy[n], s.awz[n]});
+    const char* axes[3] = {"X", "Y", "Z"};
+    for (std::size_t d = 0; d < 3; ++d) {
+      const std::string ax = axes[d];
+      put(o, "D" + ax, disp[d]);
+      put(o, "V" + ax, v[d]);
+      put(o, "A" + ax, a[d]);
+      put(o, "VR" + ax, vr[d]);
+      put(o, "AR" + ax, aw[d]);
+      put(o, ax, x[d]);
+      put(o, "REAC" + ax, reac[d]);
+      put(o, "REAC" + ax + ax, mreac[d]);
+    }
+  }
+}
+
+void ThGroupSampler::sample_parts(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const {
   const auto& s = e.nodes();
   const auto& m = e.model();
-  const std::size_t nv = variables_.size();
-  std::fill(out.begin(), out.end(), 0.0);
   const double h = 0.5 * r.dt1;
-  auto put = [&](std::size_t obj, const std::string& name, double value) {
-    const std::size_t k = index_of(variables_, name);
-    if (k < nv) out[obj * nv + k] = value;
-  };
+  // Element energies and eroded mass per part, then node sums per part.
+  std::vector<double> ie(m.parts.size(), 0.0), he(m.parts.size(), 0.0), eroded(m.parts.size(), 0.0);
+  const auto& mats = e.materials();
+  for (const auto& g : e.shell_groups())
+    for (int i = 0; i < g.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      const auto p = static_cast<std::size_t>(g.part);
+      ie[p] += g.e_int[k];
+      he[p] += g.e_hg[k];
+      if (g.off[k] <= 0) eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.area0[k] * g.t0[k];
+    }
+  for (const auto& g : e.brick_groups())
+    for (int i = 0; i < g.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      const auto p = static_cast<std::size_t>(g.part);
+      ie[p] += g.e_int[k];
+      he[p] += g.e_hg[k];
+      if (g.off[k] <= 0) eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.vol0[k];
+    }
+  for (const auto& g : e.tetra_groups())
+    for (int i = 0; i < g.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      const auto p = static_cast<std::size_t>(g.part);
+      ie[p] += g.e_int[k];
+      he[p] += g.e_hg[k];
+      if (g.off[k] <= 0) eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.vol0[k];
+    }
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    double v_ie = 0, v_he = 0, v_er = 0, ke = 0, mass = 0, mom[3] = {0, 0, 0};
+    for (const auto p : object_parts_[o]) {
+      const auto pp = static_cast<std::size_t>(p);
+      v_ie += ie[pp];
+      v_he += he[pp];
+      v_er += eroded[pp];
+      for (const auto& [node, share] : part_nodes_[pp]) {
+        const auto n = static_cast<std::size_t>(node);
+        const double mn = share * s.mass[n];
+        const double v[3] = {s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]};
+        ke += 0.5 * mn * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        mass += mn;
+        for (int d = 0; d < 3; ++d) mom[d] += mn * v[d];
+      }
+    }
+    put(o, "IE", v_ie);
+    put(o, "KE", ke);
+    put(o, "XMOM", mom[0]);
+    put(o, "YMOM", mom[1]);
+    put(o, "ZMOM", mom[2]);
+    put(o, "MASS", mass);
+    put(o, "HE", v_he);
+    put(o, "ERODED", v_er);
+  }
+}
+
+void ThGroupSampler::sample_rigid_walls(const ExplicitEngine& e, const CycleReport& /*r*/,
+                                        const ThPut& put) const {
+  const auto& walls = e.kinematics().wall_outputs();
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const auto& w = walls[static_cast<std::size_t>(objects_[o])];
+    const char* axes[3] = {"X", "Y", "Z"};
+    for (std::size_t d = 0; d < 3; ++d) {
+      put(o, std::string("FN") + axes[d], w.normal_force[d]);
+      put(o, std::string("FT") + axes[d], w.tangential_force[d]);
+    }
+  }
+}
+
+void ThGroupSampler::sample_interfaces(const ExplicitEngine& e, const CycleReport& /*r*/,
+                                       const ThPut& put) const {
+  const auto& m = e.model();
+  if (e.contact() == nullptr) return;
+  const auto results = e.contact()->results();
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const auto id = m.interfaces[static_cast<std::size_t>(objects_[o])].id;
+    for (const auto& res : results) {
+      if (res.id != id) continue;
+      const char* axes[3] = {"X", "Y", "Z"};
+      for (std::size_t d = 0; d < 3; ++d) {
+        put(o, std::string("FN") + axes[d], res.normal_force[d]);
+        put(o, std::string("FT") + axes[d], res.tangential_force[d]);
+      }
+      put(o, "CE_ELAST", res.e_elastic);
+      put(o, "CE_FRIC", res.e_friction);
+      put(o, "CE_DAMP", res.e_damping);
+    }
+  }
+}
+
+void ThGroupSampler::sample_shells(const ExplicitEngine& e, const CycleReport& /*r*/,
+                                   const ThPut& put) const {
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const auto [gi, i] = slots_[o];
+    if (gi < 0) continue;
+    const auto& g = e.shell_groups()[static_cast<std::size_t>(gi)];
+    const auto k = static_cast<std::size_t>(i);
+    const int np = g.props.n_points;
+    const double t = g.thick[k] > 0 ? g.thick[k] : g.t0[k];
+    double f[3] = {0, 0, 0}, mm[3] = {0, 0, 0};
+    // QBAT keeps one state per in-plane Gauss point ([gauss][...]): its resultants are their mean, as the
+    // result fields take it (result_fields.cpp).
+    const std::size_t rows = static_cast<std::size_t>(np <= 0 ? 8 : 5 * np) * kGroupSize;
+    const double per_point = 1.0 / g.gauss;
+    for (int gp = 0; gp < g.gauss; ++gp) {
+      const double* sig = g.sig.data() + static_cast<std::size_t>(gp) * rows;
+      if (np <= 0) {
+        for (std::size_t q = 0; q < 3; ++q) {
+          f[q] += per_point * sig[q * kGroupSize + k];
+          mm[q] += per_point * sig[(5 + q) * kGroupSize + k];
+        }
+      } else {
+        const auto rule = shell_detail::thickness_rule(np);
+        for (int p = 0; p < np; ++p)
+          for (int q = 0; q < 3; ++q) {
+            const double sg = sig[shell_detail::sig_index(p, q, i)];
+            f[q] += per_point * rule.w[p] * sg;
+            mm[q] += per_point * rule.m[p] * sg;
+          }
+      }
+    }
+    put(o, "F1", f[0] * t);
+    put(o, "F2", f[1] * t);
+    put(o, "F12", f[2] * t);
+    put(o, "M1", mm[0] * t * t);
+    put(o, "M2", mm[1] * t * t);
+    put(o, "M12", mm[2] * t * t);
+    put(o, "IEM", g.e_int[k]);
+    put(o, "OFF", g.off[k]);
+    put(o, "EPSD", g.rate[k]);  // the filtered equivalent strain rate of the rate laws (elements.md 6.1)
+    put(o, "THIC", t);
+  }
+}
+
+void ThGroupSampler::sample_bricks(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const {
+  const auto& s = e.nodes();
+  const double h = 0.5 * r.dt1;
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const auto [gi, i] = slots_[o];
+    if (gi < 0) continue;
+    const auto& g = e.brick_groups()[static_cast<std::size_t>(gi)];
+    const auto k = static_cast<std::size_t>(i);
+    const char* names[6] = {"SX", "SY", "SZ", "SXY", "SYZ", "SXZ"};
+    double sg[6];
+    brick_global_stress(g, k, sg);  // global axes also for co-rotational bricks
+    for (std::size_t c = 0; c < 6; ++c) put(o, names[c], sg[c]);
+    double v[3] = {0, 0, 0};
+    for (std::size_t c = 0; c < 8; ++c) {
+      const auto n = static_cast<std::size_t>(g.conn[c * kGroupSize + k]);
+      v[0] += (s.vx[n] + h * s.ax[n]) / 8;
+      v[1] += (s.vy[n] + h * s.ay[n]) / 8;
+      v[2] += (s.vz[n] + h * s.az[n]) / 8;
+    }
+    put(o, "OFF", g.off[k]);
+    put(o, "IE", g.vol0[k] > 0 ? g.e_int[k] / g.vol0[k] : 0.0);
+    put(o, "DENS", g.rho[k]);
+    put(o, "BULK", g.q[k]);
+    put(o, "VOL", g.vol[k]);
+    put(o, "PLAS", g.eps_p[k]);
+    put(o, "PLSR", g.rate[k]);
+    put(o, "VX", v[0]);
+    put(o, "VY", v[1]);
+    put(o, "VZ", v[2]);
+  }
+}
+
+void ThGroupSampler::sample_rigid_bodies(const ExplicitEngine& e, const CycleReport& r,
+                                         const ThPut& put) const {
+  const auto& s = e.nodes();
+  const auto& m = e.model();
+  const double h = 0.5 * r.dt1;
+  const auto& formed = e.kinematics().rigid_bodies().bodies();
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const RigidBodyInfo* b = bodies_[o] < 0 ? nullptr : &formed[static_cast<std::size_t>(bodies_[o])];
+    if (b && !b->active) b = nullptr;  // released by its sensor: a free main node, STATUS 0
+    const auto main = b ? b->main : m.rigid_bodies[static_cast<std::size_t>(objects_[o])].main_node;
+    if (main == model::kNone) continue;
+    const auto n = static_cast<std::size_t>(main);
+    const char* axes[3] = {"X", "Y", "Z"};
+    const double x[3] = {s.x[n], s.y[n], s.z[n]}, x0[3] = {s.x0[n], s.y0[n], s.z0[n]};
+    const double v[3] = {s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]};
+    const double a[3] = {s.ax[n], s.ay[n], s.az[n]};
+    const double w[3] = {s.wx[n] + h * s.awx[n], s.wy[n] + h * s.awy[n], s.wz[n] + h * s.awz[n]};
+    const double aw[3] = {s.awx[n], s.awy[n], s.awz[n]};
+    for (std::size_t d = 0; d < 3; ++d) {
+      const std::string ax = axes[d];
+      put(o, ax, x[d]);
+      put(o, "D" + ax, x[d] - x0[d]);
+      put(o, "V" + ax, v[d]);
+      put(o, "A" + ax, a[d]);
+      put(o, "VR" + ax, w[d]);
+      put(o, "AR" + ax, aw[d]);
+      if (b) {
+        put(o, "F" + ax, b->secondary_force[d]);
+        put(o, "M" + ax, b->secondary_moment[d]);
+        put(o, "R" + ax, b->rotation[d]);
+      }
+    }
+    put(o, "MASS", s.mass[n]);
+    put(o, "STATUS", b ? 1.0 : 0.0);
+    if (b) {
+      const auto inertia = current_inertia(*b);
+      const char* names[6] = {"IXX", "IYY", "IZZ", "IXY", "IYZ", "IZX"};
+      for (std::size_t c = 0; c < 6; ++c) put(o, names[c], inertia[c]);
+    }
+  }
+}
+
+void ThGroupSampler::sample_sections(const ExplicitEngine& e, const CycleReport& /*r*/,
+                                     const ThPut& put) const {
+  const auto& s = e.nodes();
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const SectionCut c = sections_[o].evaluate(s, e.shell_groups(), e.brick_groups());
+    const char* axes[3] = {"X", "Y", "Z"};
+    for (std::size_t d = 0; d < 3; ++d) {
+      const std::string ax = axes[d], k = std::to_string(d + 1);
+      put(o, "FN" + ax, c.normal_force[d]);
+      put(o, "FT" + ax, c.tangential_force[d]);
+      put(o, "M" + ax, c.moment[d]);
+      put(o, "C" + ax, c.centre[d]);
+      put(o, "F" + k, c.local_force[d]);
+      put(o, "M" + k, c.local_moment[d]);
+    }
+  }
+}
+
+void ThGroupSampler::sample_springs(const ExplicitEngine& e, const CycleReport& /*r*/,
+                                    const ThPut& put) const {
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const auto [gi, i] = slots_[o];
+    if (gi < 0) continue;
+    const auto& g = e.spring_groups()[static_cast<std::size_t>(gi)];
+    const auto k = static_cast<std::size_t>(i);
+    put(o, "OFF", g.off[k]);
+    put(o, "IE", g.e_int[k]);
+    // TYPE4: FX and LX along the spring; TYPE8: the six laws' forces, moments, elongations, rotations.
+    const char* names[4][3] = {
+        {"FX", "FY", "FZ"}, {"MX", "MY", "MZ"}, {"LX", "LY", "LZ"}, {"RX", "RY", "RZ"}};
+    for (std::size_t d = 0; d < (g.props.type == 4 ? 1u : 3u); ++d) {
+      put(o, names[0][d], g.force[d * kGroupSize + k]);
+      put(o, names[2][d], g.dx[d * kGroupSize + k]);
+      if (g.props.type == 4) continue;
+      put(o, names[1][d], g.force[(3 + d) * kGroupSize + k]);
+      put(o, names[3][d], g.dx[(3 + d) * kGroupSize + k]);
+    }
+  }
+}
+
+void ThGroupSampler::sample_accelerometers(const ExplicitEngine& e, const CycleReport& /*r*/,
+                                           const ThPut& put) const {
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const auto& a = e.accelerometers().readings()[static_cast<std::size_t>(objects_[o])];
+    const char* axes[3] = {"X", "Y", "Z"};
+    for (std::size_t d = 0; d < 3; ++d) {
+      put(o, std::string("A") + axes[d], a.acceleration[d]);
+      put(o, std::string("W") + axes[d], a.velocity[d]);
+    }
+  }
+}
+
+void ThGroupSampler::ThPut::operator()(std::size_t obj, const std::string& name, double value) const {
+  const std::size_t k = index_of(variables, name);
+  if (k < variables.size()) out[obj * variables.size() + k] = value;
+}
+
+// One row per object, each variable the group asks for at its column; the kind's sampler fills them.
+void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::span<double> out) const {
+  std::fill(out.begin(), out.end(), 0.0);
+  const ThPut put{out, variables_};
   using K = model::ThKind;
   switch (kind_) {
-    case K::Node:
-      for (std::size_t o = 0; o < objects_.size(); ++o) {
-        const auto n = static_cast<std::size_t>(objects_[o]);
-        // Every vector on the axes of the object's skew of this cycle (the global axes for none); X Y Z are
-        // the position's components on those axes, not measured from the skew's origin (OpenRadioss thnod.F).
-        const auto on = [&, sk = skews_[o]](std::array<double, 3> u) { return e.skews().on_axes(sk, u); };
-        const auto v = on({s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]});
-        const auto reac =
-            on({s.mass[n] * s.ax[n] - s.fx[n], s.mass[n] * s.ay[n] - s.fy[n], s.mass[n] * s.az[n] - s.fz[n]});
-        const auto mreac = on({s.inertia[n] * s.awx[n] - s.mx[n], s.inertia[n] * s.awy[n] - s.my[n],
-                               s.inertia[n] * s.awz[n] - s.mz[n]});
-        const auto x = on({s.x[n], s.y[n], s.z[n]});
-        const auto disp = on({s.x[n] - s.x0[n], s.y[n] - s.y0[n], s.z[n] - s.z0[n]});
-        const auto a = on({s.ax[n], s.ay[n], s.az[n]});
-        const auto vr = on({s.wx[n] + h * s.awx[n], s.wy[n] + h * s.awy[n], s.wz[n] + h * s.awz[n]});
-        const auto aw = on({s.awx[n], s.awy[n], s.awz[n]});
-        const char* axes[3] = {"X", "Y", "Z"};
-        for (std::size_t d = 0; d < 3; ++d) {
-          const std::string ax = axes[d];
-          put(o, "D" + ax, disp[d]);
-          put(o, "V" + ax, v[d]);
-          put(o, "A" + ax, a[d]);
-          put(o, "VR" + ax, vr[d]);
-          put(o, "AR" + ax, aw[d]);
-          put(o, ax, x[d]);
-          put(o, "REAC" + ax, reac[d]);
-          put(o, "REAC" + ax + ax, mreac[d]);
-        }
-      }
-      break;
+    case K::Node: sample_nodes(e, r, put); break;
     case K::Part:
-    case K::Subset: {
-      // Element energies and eroded mass per part, then node sums per part.
-      std::vector<double> ie(m.parts.size(), 0.0), he(m.parts.size(), 0.0), eroded(m.parts.size(), 0.0);
-      const auto& mats = e.materials();
-      for (const auto& g : e.shell_groups())
-        for (int i = 0; i < g.count; ++i) {
-          const auto k = static_cast<std::size_t>(i);
-          const auto p = static_cast<std::size_t>(g.part);
-          ie[p] += g.e_int[k];
-          he[p] += g.e_hg[k];
-          if (g.off[k] <= 0)
-            eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.area0[k] * g.t0[k];
-        }
-      for (const auto& g : e.brick_groups())
-        for (int i = 0; i < g.count; ++i) {
-          const auto k = static_cast<std::size_t>(i);
-          const auto p = static_cast<std::size_t>(g.part);
-          ie[p] += g.e_int[k];
-          he[p] += g.e_hg[k];
-          if (g.off[k] <= 0) eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.vol0[k];
-        }
-      for (const auto& g : e.tetra_groups())
-        for (int i = 0; i < g.count; ++i) {
-          const auto k = static_cast<std::size_t>(i);
-          const auto p = static_cast<std::size_t>(g.part);
-          ie[p] += g.e_int[k];
-          he[p] += g.e_hg[k];
-          if (g.off[k] <= 0) eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.vol0[k];
-        }
-      for (std::size_t o = 0; o < objects_.size(); ++o) {
-        double v_ie = 0, v_he = 0, v_er = 0, ke = 0, mass = 0, mom[3] = {0, 0, 0};
-        for (const auto p : object_parts_[o]) {
-          const auto pp = static_cast<std::size_t>(p);
-          v_ie += ie[pp];
-          v_he += he[pp];
-          v_er += eroded[pp];
-          for (const auto& [node, share] : part_nodes_[pp]) {
-            const auto n = static_cast<std::size_t>(node);
-            const double mn = share * s.mass[n];
-            const double v[3] = {s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]};
-            ke += 0.5 * mn * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-            mass += mn;
-            for (int d = 0; d < 3; ++d) mom[d] += mn * v[d];
-          }
-        }
-        put(o, "IE", v_ie);
-        put(o, "KE", ke);
-        put(o, "XMOM", mom[0]);
-        put(o, "YMOM", mom[1]);
-        put(o, "ZMOM", mom[2]);
-        put(o, "MASS", mass);
-        put(o, "HE", v_he);
-        put(o, "ERODED", v_er);
-      }
-      break;
-    }
-    case K::Rwall: {
-      const auto& walls = e.kinematics().wall_outputs();
-      for (std::size_t o = 0; o < objects_.size(); ++o) {
-        const auto& w = walls[static_cast<std::size_t>(objects_[o])];
-        const char* axes[3] = {"X", "Y", "Z"};
-        for (std::size_t d = 0; d < 3; ++d) {
-          put(o, std::string("FN") + axes[d], w.normal_force[d]);
-          put(o, std::string("FT") + axes[d], w.tangential_force[d]);
-        }
-      }
-      break;
-    }
-    case K::Inter: {
-      if (e.contact() == nullptr) break;
-      const auto results = e.contact()->results();
-      for (std::size_t o = 0; o < objects_.size(); ++o) {
-        const auto id = m.interfaces[static_cast<std::size_t>(objects_[o])].id;
-        for (const auto& res : results) {
-          if (res.id != id) continue;
-          const char* axes[3] = {"X", "Y", "Z"};
-          for (std::size_t d = 0; d < 3; ++d) {
-            put(o, std::string("FN") + axes[d], res.normal_force[d]);
-            put(o, std::string("FT") + axes[d], res.tangential_force[d]);
-          }
-          put(o, "CE_ELAST", res.e_elastic);
-          put(o, "CE_FRIC", res.e_friction);
-          put(o, "CE_DAMP", res.e_damping);
-        }
-      }
-      break;
-    }
+    case K::Subset: sample_parts(e, r, put); break;
+    case K::Rwall: sample_rigid_walls(e, r, put); break;
+    case K::Inter: sample_interfaces(e, r, put); break;
     case K::Shell:
-    case K::Shell3:
-      for (std::size_t o = 0; o < objects_.size(); ++o) {
-        const auto [gi, i] = slots_[o];
-        if (gi < 0) continue;
-        const auto& g = e.shell_groups()[static_cast<std::size_t>(gi)];
-        const auto k = static_cast<std::size_t>(i);
-        const int np = g.props.n_points;
-        const double t = g.thick[k] > 0 ? g.thick[k] : g.t0[k];
-        double f[3] = {0, 0, 0}, mm[3] = {0, 0, 0};
-        // QBAT keeps one state per in-plane Gauss point ([gauss][...]): its resultants are their mean, as the
-        // result fields take it (result_fields.cpp).
-        const std::size_t rows = static_cast<std::size_t>(np <= 0 ? 8 : 5 * np) * kGroupSize;
-        const double per_point = 1.0 / g.gauss;
-        for (int gp = 0; gp < g.gauss; ++gp) {
-          const double* sig = g.sig.data() + static_cast<std::size_t>(gp) * rows;
-          if (np <= 0) {
-            for (std::size_t q = 0; q < 3; ++q) {
-              f[q] += per_point * sig[q * kGroupSize + k];
-              mm[q] += per_point * sig[(5 + q) * kGroupSize + k];
-            }
-          } else {
-            const auto rule = shell_detail::thickness_rule(np);
-            for (int p = 0; p < np; ++p)
-              for (int q = 0; q < 3; ++q) {
-                const double sg = sig[shell_detail::sig_index(p, q, i)];
-                f[q] += per_point * rule.w[p] * sg;
-                mm[q] += per_point * rule.m[p] * sg;
-              }
-          }
-        }
-        put(o, "F1", f[0] * t);
-        put(o, "F2", f[1] * t);
-        put(o, "F12", f[2] * t);
-        put(o, "M1", mm[0] * t * t);
-        put(o, "M2", mm[1] * t * t);
-        put(o, "M12", mm[2] * t * t);
-        put(o, "IEM", g.e_int[k]);
-        put(o, "OFF", g.off[k]);
-        put(o, "EPSD", g.rate[k]);  // the filtered equivalent strain rate of the rate laws (elements.md 6.1)
-        put(o, "THIC", t);
-      }
-      break;
-    case K::Brick:
-      for (std::size_t o = 0; o < objects_.size(); ++o) {
-        const auto [gi, i] = slots_[o];
-        if (gi < 0) continue;
-        const auto& g = e.brick_groups()[static_cast<std::size_t>(gi)];
-        const auto k = static_cast<std::size_t>(i);
-        const char* names[6] = {"SX", "SY", "SZ", "SXY", "SYZ", "SXZ"};
-        double sg[6];
-        brick_global_stress(g, k, sg);  // global axes also for co-rotational bricks
-        for (std::size_t c = 0; c < 6; ++c) put(o, names[c], sg[c]);
-        double v[3] = {0, 0, 0};
-        for (std::size_t c = 0; c < 8; ++c) {
-          const auto n = static_cast<std::size_t>(g.conn[c * kGroupSize + k]);
-          v[0] += (s.vx[n] + h * s.ax[n]) / 8;
-          v[1] += (s.vy[n] + h * s.ay[n]) / 8;
-          v[2] += (s.vz[n] + h * s.az[n]) / 8;
-        }
-        put(o, "OFF", g.off[k]);
-        put(o, "IE", g.vol0[k] > 0 ? g.e_int[k] / g.vol0[k] : 0.0);
-        put(o, "DENS", g.rho[k]);
-        put(o, "BULK", g.q[k]);
-        put(o, "VOL", g.vol[k]);
-        put(o, "PLAS", g.eps_p[k]);
-        put(o, "PLSR", g.rate[k]);
-        put(o, "VX", v[0]);
-        put(o, "VY", v[1]);
-        put(o, "VZ", v[2]);
-      }
-      break;
-    case K::Rbody: {
-      const auto& formed = e.kinematics().rigid_bodies().bodies();
-      for (std::size_t o = 0; o < objects_.size(); ++o) {
-        const RigidBodyInfo* b = bodies_[o] < 0 ? nullptr : &formed[static_cast<std::size_t>(bodies_[o])];
-        if (b && !b->active) b = nullptr;  // released by its sensor: a free main node, STATUS 0
-        const auto main = b ? b->main : m.rigid_bodies[static_cast<std::size_t>(objects_[o])].main_node;
-        if (main == model::kNone) continue;
-        const auto n = static_cast<std::size_t>(main);
-        const char* axes[3] = {"X", "Y", "Z"};
-        const double x[3] = {s.x[n], s.y[n], s.z[n]}, x0[3] = {s.x0[n], s.y0[n], s.z0[n]};
-        const double v[3] = {s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]};
-        const double a[3] = {s.ax[n], s.ay[n], s.az[n]};
-        const double w[3] = {s.wx[n] + h * s.awx[n], s.wy[n] + h * s.awy[n], s.wz[n] + h * s.awz[n]};
-        const double aw[3] = {s.awx[n], s.awy[n], s.awz[n]};
-        for (std::size_t d = 0; d < 3; ++d) {
-          const std::string ax = axes[d];
-          put(o, ax, x[d]);
-          put(o, "D" + ax, x[d] - x0[d]);
-          put(o, "V" + ax, v[d]);
-          put(o, "A" + ax, a[d]);
-          put(o, "VR" + ax, w[d]);
-          put(o, "AR" + ax, aw[d]);
-          if (b) {
-            put(o, "F" + ax, b->secondary_force[d]);
-            put(o, "M" + ax, b->secondary_moment[d]);
-            put(o, "R" + ax, b->rotation[d]);
-          }
-        }
-        put(o, "MASS", s.mass[n]);
-        put(o, "STATUS", b ? 1.0 : 0.0);
-        if (b) {
-          const auto inertia = current_inertia(*b);
-          const char* names[6] = {"IXX", "IYY", "IZZ", "IXY", "IYZ", "IZX"};
-          for (std::size_t c = 0; c < 6; ++c) put(o, names[c], inertia[c]);
-        }
-      }
-      break;
-    }
-    case K::Section:
-      for (std::size_t o = 0; o < objects_.size(); ++o) {
-        const SectionCut c = sections_[o].evaluate(s, e.shell_groups(), e.brick_groups());
-        const char* axes[3] = {"X", "Y", "Z"};
-        for (std::size_t d = 0; d < 3; ++d) {
-          const std::string ax = axes[d], k = std::to_string(d + 1);
-          put(o, "FN" + ax, c.normal_force[d]);
-          put(o, "FT" + ax, c.tangential_force[d]);
-          put(o, "M" + ax, c.moment[d]);
-          put(o, "C" + ax, c.centre[d]);
-          put(o, "F" + k, c.local_force[d]);
-          put(o, "M" + k, c.local_moment[d]);
-        }
-      }
-      break;
-    case K::Spring:
-      for (std::size_t o = 0; o < objects_.size(); ++o) {
-        const auto [gi, i] = slots_[o];
-        if (gi < 0) continue;
-        const auto& g = e.spring_groups()[static_cast<std::size_t>(gi)];
-        const auto k = static_cast<std::size_t>(i);
-        put(o, "OFF", g.off[k]);
-        put(o, "IE", g.e_int[k]);
-        // TYPE4: FX and LX along the spring; TYPE8: the six laws' forces, moments, elongations, rotations.
-        const char* names[4][3] = {
-            {"FX", "FY", "FZ"}, {"MX", "MY", "MZ"}, {"LX", "LY", "LZ"}, {"RX", "RY", "RZ"}};
-        for (std::size_t d = 0; d < (g.props.type == 4 ? 1u : 3u); ++d) {
-          put(o, names[0][d], g.force[d * kGroupSize + k]);
-          put(o, names[2][d], g.dx[d * kGroupSize + k]);
-          if (g.props.type == 4) continue;
-          put(o, names[1][d], g.force[(3 + d) * kGroupSize + k]);
-          put(o, names[3][d], g.dx[(3 + d) * kGroupSize + k]);
-        }
-      }
-      break;
-    case K::Accel:
-      for (std::size_t o = 0; o < objects_.size(); ++o) {
-        const auto& a = e.accelerometers().readings()[static_cast<std::size_t>(objects_[o])];
-        const char* axes[3] = {"X", "Y", "Z"};
-        for (std::size_t d = 0; d < 3; ++d) {
-          put(o, std::string("A") + axes[d], a.acceleration[d]);
-          put(o, std::string("W") + axes[d], a.velocity[d]);
-        }
-      }
-      break;
+    case K::Shell3: sample_shells(e, r, put); break;
+    case K::Brick: sample_bricks(e, r, put); break;
+    case K::Rbody: sample_rigid_bodies(e, r, put); break;
+    case K::Section: sample_sections(e, r, put); break;
+    case K::Spring: sample_springs(e, r, put); break;
+    case K::Accel: sample_accelerometers(e, r, put); break;
   }
 }
 

@@ -79,6 +79,24 @@ class ThGroupSampler {
   void sample(const ExplicitEngine& e, const CycleReport& r, std::span<double> out) const;
 
  private:
+  // The output row of a sample: put(object, variable, value) writes a variable the group asks for and ignores
+  // the others.
+  struct ThPut {
+    std::span<double> out;
+    const std::vector<std::string>& variables;
+    void operator()(std::size_t obj, const std::string& name, double value) const;
+  };
+  void sample_nodes(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  void sample_parts(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  void sample_rigid_walls(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  void sample_interfaces(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  void sample_shells(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  void sample_bricks(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  void sample_rigid_bodies(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  void sample_sections(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  void sample_springs(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  void sample_accelerometers(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+
   model::ThKind kind_;
   std::vector<std::int32_t> objects_;
   std::vector<std::string> variables_;
