@@ -301,254 +301,276 @@ void ExplicitEngine::build_nodes() {
   }
 }
 
-void ExplicitEngine::build_groups() {
-  const auto& m = model_;
-  // Void and rigid elements compute no force (OpenRadioss forint.F skips laws 0 and 13): they get no group,
-  // hence no stable step either. Their mass is in the nodal masses, a rigid one's motion in its rigid body.
-  // A spring's part has no material (-1): its force comes from its property.
-  auto has_forces = [&](std::int32_t part) {
-    const auto mat = m.parts[static_cast<std::size_t>(part)].material;
-    if (mat < 0) return true;
-    const auto law = m.materials[static_cast<std::size_t>(mat)].law;
-    return law != model::MaterialLaw::Void && law != model::MaterialLaw::Rigid;
-  };
-  // Elements with forces sorted by part (stable), then cut into groups of at most kGroupSize.
-  auto order_by_part = [&](const model::ElementBlock& b) {
-    std::vector<std::int32_t> order;
-    order.reserve(b.size());
-    for (std::size_t e = 0; e < b.size(); ++e)
-      if (has_forces(b.part[e])) order.push_back(static_cast<std::int32_t>(e));
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::int32_t a, std::int32_t c) { return b.part[a] < b.part[c]; });
-    return order;
-  };
-  auto shell_groups = [&](const model::ElementBlock& b, bool triangle) {
-    const auto order = order_by_part(b);
-    const int npe = b.npe();
-    std::size_t k = 0;
-    while (k < order.size()) {
-      const auto part = b.part[order[k]];
-      const auto& prop = m.properties[m.parts[part].property].shell;
-      const auto mat = m.parts[part].material;
-      int points = prop.n_ip;
-      if (m.materials[mat].law != model::MaterialLaw::Elastic && points == 0) points = 3;  // LAW2 with N = 0
-      if (m.materials[mat].law == model::MaterialLaw::Elastic && points > 1) points = 0;   // LAW1: resultant
-      ShellGroup g(&group_arena_);
-      std::size_t end = k;
-      while (end < order.size() && b.part[order[end]] == part &&
-             end - k < static_cast<std::size_t>(kGroupSize))
-        ++end;
-      // The kernel of the property's formulation (check_formulations.cpp accepts only these).
-      const ShellKernel kernel = triangle            ? ShellKernel::Tri3
-                                 : prop.ishell == 24 ? ShellKernel::Qeph
-                                 : prop.ishell == 12 ? ShellKernel::Qbat
-                                                     : ShellKernel::Bt4;
-      const int gauss = kernel == ShellKernel::Qbat ? 4 : 1;
-      const int hg_rows = kernel == ShellKernel::Qeph ? 24 : 3;
-      g.allocate(static_cast<int>(end - k), points, gauss, hg_rows);
-      if (m.materials[mat].law == model::MaterialLaw::PlasBrit) g.allocate_brit();
-      g.kernel = kernel;
-      g.triangle = triangle;
-      g.part = part;
-      g.material = mat;
-      g.props.ishell = prop.ishell;
-      g.props.ismstr = prop.ismstr;
-      g.props.ish3n = prop.ish3n;
-      g.props.ithick = prop.ithick == 1 ? 1 : 0;
-      g.props.iplas = prop.iplas == 1 ? 1 : 0;
-      g.props.hm = prop.hm;
-      g.props.hf = prop.hf;
-      g.props.hr = prop.hr;
-      g.props.dm = prop.dm;
-      g.props.dn = prop.dn;
-      g.props.ashear = points == 1 ? 0.0 : prop.ashear;
-      g.props.p_thick_fail = prop.p_thick_fail;
-      for (int i = 0; i < g.count; ++i) {
-        const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
-        g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
-        for (int q = 0; q < npe; ++q)
-          g.conn[static_cast<std::size_t>(q * kGroupSize + i)] =
-              b.conn[e * static_cast<std::size_t>(npe) + q];
-        if (triangle) g.conn[static_cast<std::size_t>(3 * kGroupSize + i)] = b.conn[e * 3 + 2];
-        const double t0 = model::shell_thickness(m, b, e);
-        g.t0[static_cast<std::size_t>(i)] = g.thick[static_cast<std::size_t>(i)] = t0;
-        auto X = [&](int q) {
-          const auto n = b.conn[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(q)];
-          return model::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
-        };
-        g.area0[static_cast<std::size_t>(i)] =
-            triangle ? model::triangle_area(X(0), X(1), X(2)) : model::quad_area(X(0), X(1), X(2), X(3));
-        // /FAIL/TAB's element-size factor from the length at t = 0 (OpenRadioss keeps the starter's ALDT,
-        // cfailini.F): elements.md 4.1 L = max(A / longest diagonal, shortest side or diagonal) for quads,
-        // 4.2 2A / longest side for triangles.
-        const auto& fp = materials_[static_cast<std::size_t>(mat)].fail;
-        if (fp.on && fp.has_size) {
-          const double len = triangle ? model::triangle_length(X(0), X(1), X(2))
-                                      : model::quad_length(X(0), X(1), X(2), X(3));
-          g.fail_scale[static_cast<std::size_t>(i)] = fail_size_factor(fp, len);
-        }
-      }
-      shells_.push_back(std::move(g));
-      k = end;
-    }
-  };
-  shell_groups(m.shells, false);
-  shell_groups(m.shells3, true);
-  const auto order = order_by_part(m.bricks);
+namespace {
+
+// Void and rigid elements compute no force (OpenRadioss forint.F skips laws 0 and 13): they get no group,
+// hence no stable step either. Their mass is in the nodal masses, a rigid one's motion in its rigid body.
+// A spring's part has no material (-1): its force comes from its property.
+bool part_has_forces(const model::Model& m, std::int32_t part) {
+  const auto mat = m.parts[static_cast<std::size_t>(part)].material;
+  if (mat < 0) return true;
+  const auto law = m.materials[static_cast<std::size_t>(mat)].law;
+  return law != model::MaterialLaw::Void && law != model::MaterialLaw::Rigid;
+}
+
+// The elements of a block that have forces, sorted by part (stable).
+std::vector<std::int32_t> order_by_part(const model::Model& m, const model::ElementBlock& b) {
+  std::vector<std::int32_t> order;
+  order.reserve(b.size());
+  for (std::size_t e = 0; e < b.size(); ++e)
+    if (part_has_forces(m, b.part[e])) order.push_back(static_cast<std::int32_t>(e));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::int32_t a, std::int32_t c) { return b.part[a] < b.part[c]; });
+  return order;
+}
+
+// The block's elements with forces cut into groups: runs of one part of at most kGroupSize elements, in part
+// order; group(part, run) makes each.
+template <class MakeGroup>
+void for_each_group_run(const model::Model& m, const model::ElementBlock& b, MakeGroup&& group) {
+  const auto order = order_by_part(m, b);
   std::size_t k = 0;
   while (k < order.size()) {
-    const auto part = m.bricks.part[order[k]];
-    const auto& prop = m.properties[m.parts[part].property].solid;
-    BrickGroup g(&group_arena_);
+    const auto part = b.part[order[k]];
     std::size_t end = k;
-    while (end < order.size() && m.bricks.part[order[end]] == part &&
-           end - k < static_cast<std::size_t>(kGroupSize))
+    while (end < order.size() && b.part[order[end]] == part && end - k < static_cast<std::size_t>(kGroupSize))
       ++end;
-    g.allocate(static_cast<int>(end - k));
-    g.part = part;
-    g.material = m.parts[part].material;
-    g.isolid = prop.isolid;
-    g.ismstr = prop.ismstr;
-    g.iframe = prop.iframe;
-    g.icpre = prop.icpre;
-    g.dn = prop.dn > 0 ? prop.dn : 0.1;  // Isolid 24: dn 0 means the default 0.1 (hm_read_prop14.F)
-    g.qa = prop.qa;
-    g.qb = prop.qb;
-    g.h = prop.h;
-    resolve_full_brick(prop, materials_[static_cast<std::size_t>(g.material)], g);
-    const double rho0 = materials_[static_cast<std::size_t>(g.material)].rho0;
-    const auto& gmat = materials_[static_cast<std::size_t>(g.material)];
-    const bool total_strain =
-        gmat.law == model::MaterialLaw::Ogden || gmat.law == model::MaterialLaw::FoamTab;
-    if (gmat.law == model::MaterialLaw::FoamTab) {
-      // Law 70's state (m70init.F), and no bulk viscosity when the property leaves qa and qb blank.
-      g.foam.assign(static_cast<std::size_t>(kFoamVars) * kGroupSize, 0.0);
-      double st[kFoamVars];
-      foam_initial_state(gmat, st);
-      for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v)
-        for (std::size_t i = 0; i < kGroupSize; ++i) g.foam[v * kGroupSize + i] = st[v];
-      if (prop.q_default) g.qa = g.qb = 0.0;
-      g.ismstr = 11;  // OpenRadioss runs law 70 with Ismstr 11 (sgrtails.F): never the small-strain switch
-    }
-    for (int i = 0; i < g.count; ++i) {
-      const auto e = static_cast<std::size_t>(order[k + static_cast<std::size_t>(i)]);
-      g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
-      std::array<model::Vec3, 8> x{};
-      for (int q = 0; q < 8; ++q) {
-        const auto n = m.bricks.conn[8 * e + static_cast<std::size_t>(q)];
-        g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = n;
-        x[static_cast<std::size_t>(q)] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
-      }
-      const double v0 = model::brick_volume(x);
-      g.vol0[static_cast<std::size_t>(i)] = g.vol[static_cast<std::size_t>(i)] = v0;
-      if (g.n_points == 8) {  // point volumes, and the current volume as the kernel measures it (their sum)
-        double xa[8][3], vp[8];
-        for (std::size_t q = 0; q < 8; ++q)
-          for (std::size_t d = 0; d < 3; ++d) xa[q][d] = x[q][d];
-        hex8_full_point_volumes(xa, vp);
-        double sum = 0;
-        for (std::size_t q = 0; q < 8; ++q) {
-          g.vol0_p[q * kGroupSize + static_cast<std::size_t>(i)] = vp[q];
-          sum += vp[q];
-        }
-        g.vol[static_cast<std::size_t>(i)] = sum;
-      }
-      if (total_strain) {  // law 42: the reference gradients of the total deformation gradient
-        double xa[8][3];
-        for (std::size_t q = 0; q < 8; ++q)
-          for (std::size_t d = 0; d < 3; ++d) xa[q][d] = x[q][d];
-        g.set_reference(static_cast<std::size_t>(i), xa);
-      }
-      g.rho[static_cast<std::size_t>(i)] = rho0;
-    }
-    bricks_.push_back(std::move(g));
+    group(part, std::span<const std::int32_t>(order).subspan(k, end - k));
     k = end;
   }
-  // Tetrahedra: the same cut by part; the property gives the bulk viscosity only (no hourglass).
-  const auto t_order = order_by_part(m.tetras);
-  k = 0;
-  while (k < t_order.size()) {
-    const auto part = m.tetras.part[t_order[k]];
-    const auto& prop = m.properties[m.parts[part].property].solid;
-    TetraGroup g(&group_arena_);
-    std::size_t end = k;
-    while (end < t_order.size() && m.tetras.part[t_order[end]] == part &&
-           end - k < static_cast<std::size_t>(kGroupSize))
-      ++end;
-    g.allocate(static_cast<int>(end - k));
-    g.part = part;
-    g.material = m.parts[part].material;
-    g.qa = prop.qa;
-    g.qb = prop.qb;
-    const double rho0 = materials_[static_cast<std::size_t>(g.material)].rho0;
-    for (int i = 0; i < g.count; ++i) {
-      const auto e = static_cast<std::size_t>(t_order[k + static_cast<std::size_t>(i)]);
-      g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
-      model::Vec3 x[4];
-      for (int q = 0; q < 4; ++q) {
-        const auto n = m.tetras.conn[4 * e + static_cast<std::size_t>(q)];
-        g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = n;
-        x[q] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
-      }
-      const double v0 = model::tetra_volume(x[0], x[1], x[2], x[3]);
-      g.vol0[static_cast<std::size_t>(i)] = g.vol[static_cast<std::size_t>(i)] = v0;
-      g.rho[static_cast<std::size_t>(i)] = rho0;
-    }
-    tetras_.push_back(std::move(g));
-    k = end;
-  }
-  // Springs: the same cut by part; each group holds its property and the curves it names.
-  const auto s_order = order_by_part(m.springs);
-  k = 0;
-  while (k < s_order.size()) {
-    const auto part = m.springs.part[s_order[k]];
-    const auto& prop = m.properties[static_cast<std::size_t>(m.parts[part].property)].spring;
-    SpringGroup g;
-    std::size_t end = k;
-    while (end < s_order.size() && m.springs.part[s_order[end]] == part &&
-           end - k < static_cast<std::size_t>(kGroupSize))
-      ++end;
-    g.allocate(static_cast<int>(end - k));
-    g.part = part;
-    g.props = prop;
-    auto curve = [&](std::int32_t f) {
-      return f == model::kNone ? nullptr : &m.functions[static_cast<std::size_t>(f)];
+}
+
+// A shell group of the elements `run` of one part: the kernel of the property's formulation
+// (check_formulations.cpp accepts only these), the property's figures, connectivity, thickness, initial area
+// and the /FAIL/TAB element-size factor.
+ShellGroup make_shell_group(const model::Model& m, const std::vector<MaterialParams>& materials,
+                            std::pmr::memory_resource* arena, const model::ElementBlock& b, bool triangle,
+                            std::int32_t part, std::span<const std::int32_t> run) {
+  const auto& prop = m.properties[m.parts[part].property].shell;
+  const auto mat = m.parts[part].material;
+  const int npe = b.npe();
+  int points = prop.n_ip;
+  if (m.materials[mat].law != model::MaterialLaw::Elastic && points == 0) points = 3;  // LAW2 with N = 0
+  if (m.materials[mat].law == model::MaterialLaw::Elastic && points > 1) points = 0;   // LAW1: resultant
+  ShellGroup g(arena);
+  const ShellKernel kernel = triangle            ? ShellKernel::Tri3
+                             : prop.ishell == 24 ? ShellKernel::Qeph
+                             : prop.ishell == 12 ? ShellKernel::Qbat
+                                                 : ShellKernel::Bt4;
+  const int gauss = kernel == ShellKernel::Qbat ? 4 : 1;
+  const int hg_rows = kernel == ShellKernel::Qeph ? 24 : 3;
+  g.allocate(static_cast<int>(run.size()), points, gauss, hg_rows);
+  if (m.materials[mat].law == model::MaterialLaw::PlasBrit) g.allocate_brit();
+  g.kernel = kernel;
+  g.triangle = triangle;
+  g.part = part;
+  g.material = mat;
+  g.props.ishell = prop.ishell;
+  g.props.ismstr = prop.ismstr;
+  g.props.ish3n = prop.ish3n;
+  g.props.ithick = prop.ithick == 1 ? 1 : 0;
+  g.props.iplas = prop.iplas == 1 ? 1 : 0;
+  g.props.hm = prop.hm;
+  g.props.hf = prop.hf;
+  g.props.hr = prop.hr;
+  g.props.dm = prop.dm;
+  g.props.dn = prop.dn;
+  g.props.ashear = points == 1 ? 0.0 : prop.ashear;
+  g.props.p_thick_fail = prop.p_thick_fail;
+  for (int i = 0; i < g.count; ++i) {
+    const auto e = static_cast<std::size_t>(run[static_cast<std::size_t>(i)]);
+    g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
+    for (int q = 0; q < npe; ++q)
+      g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = b.conn[e * static_cast<std::size_t>(npe) + q];
+    if (triangle) g.conn[static_cast<std::size_t>(3 * kGroupSize + i)] = b.conn[e * 3 + 2];
+    const double t0 = model::shell_thickness(m, b, e);
+    g.t0[static_cast<std::size_t>(i)] = g.thick[static_cast<std::size_t>(i)] = t0;
+    auto X = [&](int q) {
+      const auto n = b.conn[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(q)];
+      return model::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
     };
-    for (int d = 0; d < (prop.type == 4 ? 1 : 6); ++d) {
-      const auto& law = prop.law(d);
-      g.curves[static_cast<std::size_t>(d)] =
-          SpringLawCurves{curve(law.f_load), curve(law.f_damp), curve(law.f_unload), curve(law.f_damp4)};
+    g.area0[static_cast<std::size_t>(i)] =
+        triangle ? model::triangle_area(X(0), X(1), X(2)) : model::quad_area(X(0), X(1), X(2), X(3));
+    // /FAIL/TAB's element-size factor from the length at t = 0 (OpenRadioss keeps the starter's ALDT,
+    // cfailini.F): elements.md 4.1 L = max(A / longest diagonal, shortest side or diagonal) for quads,
+    // 4.2 2A / longest side for triangles.
+    const auto& fp = materials[static_cast<std::size_t>(mat)].fail;
+    if (fp.on && fp.has_size) {
+      const double len =
+          triangle ? model::triangle_length(X(0), X(1), X(2)) : model::quad_length(X(0), X(1), X(2), X(3));
+      g.fail_scale[static_cast<std::size_t>(i)] = fail_size_factor(fp, len);
     }
-    // TYPE8: the frame of the six laws, a fixed skew's axes (moving skews are refused by the starter).
-    if (prop.type == 8 && prop.skew != model::kNone)
-      g.frame = m.skews[static_cast<std::size_t>(prop.skew)].axes;
-    for (int i = 0; i < g.count; ++i) {
-      const auto e = static_cast<std::size_t>(s_order[k + static_cast<std::size_t>(i)]);
-      g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
-      const auto n1 = m.springs.conn[3 * e], n2 = m.springs.conn[3 * e + 1];
-      g.conn[static_cast<std::size_t>(i)] = n1;
-      g.conn[static_cast<std::size_t>(kGroupSize + i)] = n2;
-      const auto x21 = model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
-                                  model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]});
-      g.l0[static_cast<std::size_t>(i)] = model::norm(x21);
-      for (std::size_t d = 0; d < 3; ++d)
-        g.x0[d * kGroupSize + static_cast<std::size_t>(i)] =
-            x21[0] * g.frame[3 * d] + x21[1] * g.frame[3 * d + 1] + x21[2] * g.frame[3 * d + 2];
-      if (prop.type == 13) {
-        const auto n3 = m.springs.conn[3 * e + 2];
-        const auto y = spring_type13_initial_y(
-            x21,
-            n3 == model::kNone ? std::optional<model::Vec3>{}
-                               : model::sub(model::Vec3{m.nodes.x[n3], m.nodes.y[n3], m.nodes.z[n3]},
-                                            model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]}),
-            prop.skew == model::kNone ? model::Skew{}.axes
-                                      : m.skews[static_cast<std::size_t>(prop.skew)].axes);
-        for (std::size_t d = 0; d < 3; ++d) g.ey[d * kGroupSize + static_cast<std::size_t>(i)] = y[d];
-      }
-    }
-    springs_.push_back(std::move(g));
-    k = end;
   }
+  return g;
+}
+
+// Law 70's state (m70init.F), and no bulk viscosity when the property leaves qa and qb blank; OpenRadioss
+// runs law 70 with Ismstr 11 (sgrtails.F): never the small-strain switch.
+void init_foam_group(BrickGroup& g, const MaterialParams& gmat, const model::SolidProperty& prop) {
+  g.foam.assign(static_cast<std::size_t>(kFoamVars) * kGroupSize, 0.0);
+  double st[kFoamVars];
+  foam_initial_state(gmat, st);
+  for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v)
+    for (std::size_t i = 0; i < kGroupSize; ++i) g.foam[v * kGroupSize + i] = st[v];
+  if (prop.q_default) g.qa = g.qb = 0.0;
+  g.ismstr = 11;
+}
+
+// Brick i's reference geometry: its volume; with eight points their volumes, and the current volume as the
+// kernel measures it (their sum); for a total-strain law (42, 70) the reference gradients of the total
+// deformation gradient.
+void init_brick_geometry(BrickGroup& g, int i, const std::array<model::Vec3, 8>& x, bool total_strain) {
+  const double v0 = model::brick_volume(x);
+  g.vol0[static_cast<std::size_t>(i)] = g.vol[static_cast<std::size_t>(i)] = v0;
+  double xa[8][3];
+  for (std::size_t q = 0; q < 8; ++q)
+    for (std::size_t d = 0; d < 3; ++d) xa[q][d] = x[q][d];
+  if (g.n_points == 8) {
+    double vp[8];
+    hex8_full_point_volumes(xa, vp);
+    double sum = 0;
+    for (std::size_t q = 0; q < 8; ++q) {
+      g.vol0_p[q * kGroupSize + static_cast<std::size_t>(i)] = vp[q];
+      sum += vp[q];
+    }
+    g.vol[static_cast<std::size_t>(i)] = sum;
+  }
+  if (total_strain) g.set_reference(static_cast<std::size_t>(i), xa);
+}
+
+// A brick group of the elements `run` of one part: the property's formulation and figures, the material's
+// state, connectivity and reference geometry.
+BrickGroup make_brick_group(const model::Model& m, const std::vector<MaterialParams>& materials,
+                            std::pmr::memory_resource* arena, std::int32_t part,
+                            std::span<const std::int32_t> run) {
+  const auto& prop = m.properties[m.parts[part].property].solid;
+  BrickGroup g(arena);
+  g.allocate(static_cast<int>(run.size()));
+  g.part = part;
+  g.material = m.parts[part].material;
+  g.isolid = prop.isolid;
+  g.ismstr = prop.ismstr;
+  g.iframe = prop.iframe;
+  g.icpre = prop.icpre;
+  g.dn = prop.dn > 0 ? prop.dn : 0.1;  // Isolid 24: dn 0 means the default 0.1 (hm_read_prop14.F)
+  g.qa = prop.qa;
+  g.qb = prop.qb;
+  g.h = prop.h;
+  const auto& gmat = materials[static_cast<std::size_t>(g.material)];
+  resolve_full_brick(prop, gmat, g);
+  const bool total_strain = gmat.law == model::MaterialLaw::Ogden || gmat.law == model::MaterialLaw::FoamTab;
+  if (gmat.law == model::MaterialLaw::FoamTab) init_foam_group(g, gmat, prop);
+  for (int i = 0; i < g.count; ++i) {
+    const auto e = static_cast<std::size_t>(run[static_cast<std::size_t>(i)]);
+    g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
+    std::array<model::Vec3, 8> x{};
+    for (int q = 0; q < 8; ++q) {
+      const auto n = m.bricks.conn[8 * e + static_cast<std::size_t>(q)];
+      g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = n;
+      x[static_cast<std::size_t>(q)] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
+    }
+    init_brick_geometry(g, i, x, total_strain);
+    g.rho[static_cast<std::size_t>(i)] = gmat.rho0;
+  }
+  return g;
+}
+
+// A tetrahedron group of the elements `run` of one part; the property gives the bulk viscosity only (no
+// hourglass).
+TetraGroup make_tetra_group(const model::Model& m, const std::vector<MaterialParams>& materials,
+                            std::pmr::memory_resource* arena, std::int32_t part,
+                            std::span<const std::int32_t> run) {
+  const auto& prop = m.properties[m.parts[part].property].solid;
+  TetraGroup g(arena);
+  g.allocate(static_cast<int>(run.size()));
+  g.part = part;
+  g.material = m.parts[part].material;
+  g.qa = prop.qa;
+  g.qb = prop.qb;
+  const double rho0 = materials[static_cast<std::size_t>(g.material)].rho0;
+  for (int i = 0; i < g.count; ++i) {
+    const auto e = static_cast<std::size_t>(run[static_cast<std::size_t>(i)]);
+    g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
+    model::Vec3 x[4];
+    for (int q = 0; q < 4; ++q) {
+      const auto n = m.tetras.conn[4 * e + static_cast<std::size_t>(q)];
+      g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = n;
+      x[q] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
+    }
+    const double v0 = model::tetra_volume(x[0], x[1], x[2], x[3]);
+    g.vol0[static_cast<std::size_t>(i)] = g.vol[static_cast<std::size_t>(i)] = v0;
+    g.rho[static_cast<std::size_t>(i)] = rho0;
+  }
+  return g;
+}
+
+// A spring group of the elements `run` of one part: its property and the curves it names, the frame of
+// TYPE8's six laws (a fixed skew's axes: moving skews are refused by the starter), the initial lengths and,
+// for TYPE13, the initial y axis.
+SpringGroup make_spring_group(const model::Model& m, std::int32_t part, std::span<const std::int32_t> run) {
+  const auto& prop = m.properties[static_cast<std::size_t>(m.parts[part].property)].spring;
+  SpringGroup g;
+  g.allocate(static_cast<int>(run.size()));
+  g.part = part;
+  g.props = prop;
+  auto curve = [&](std::int32_t f) {
+    return f == model::kNone ? nullptr : &m.functions[static_cast<std::size_t>(f)];
+  };
+  for (int d = 0; d < (prop.type == 4 ? 1 : 6); ++d) {
+    const auto& law = prop.law(d);
+    g.curves[static_cast<std::size_t>(d)] =
+        SpringLawCurves{curve(law.f_load), curve(law.f_damp), curve(law.f_unload), curve(law.f_damp4)};
+  }
+  if (prop.type == 8 && prop.skew != model::kNone)
+    g.frame = m.skews[static_cast<std::size_t>(prop.skew)].axes;
+  for (int i = 0; i < g.count; ++i) {
+    const auto e = static_cast<std::size_t>(run[static_cast<std::size_t>(i)]);
+    g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
+    const auto n1 = m.springs.conn[3 * e], n2 = m.springs.conn[3 * e + 1];
+    g.conn[static_cast<std::size_t>(i)] = n1;
+    g.conn[static_cast<std::size_t>(kGroupSize + i)] = n2;
+    const auto x21 = model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
+                                model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]});
+    g.l0[static_cast<std::size_t>(i)] = model::norm(x21);
+    for (std::size_t d = 0; d < 3; ++d)
+      g.x0[d * kGroupSize + static_cast<std::size_t>(i)] =
+          x21[0] * g.frame[3 * d] + x21[1] * g.frame[3 * d + 1] + x21[2] * g.frame[3 * d + 2];
+    if (prop.type == 13) {
+      const auto n3 = m.springs.conn[3 * e + 2];
+      const auto y = spring_type13_initial_y(
+          x21,
+          n3 == model::kNone ? std::optional<model::Vec3>{}
+                             : model::sub(model::Vec3{m.nodes.x[n3], m.nodes.y[n3], m.nodes.z[n3]},
+                                          model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]}),
+          prop.skew == model::kNone ? model::Skew{}.axes : m.skews[static_cast<std::size_t>(prop.skew)].axes);
+      for (std::size_t d = 0; d < 3; ++d) g.ey[d * kGroupSize + static_cast<std::size_t>(i)] = y[d];
+    }
+  }
+  return g;
+}
+
+}  // namespace
+
+// The element groups of every kind: the elements with forces of each block cut by part into runs of at most
+// kGroupSize.
+void ExplicitEngine::build_groups() {
+  const auto& m = model_;
+  std::pmr::memory_resource* arena = &group_arena_;
+  for_each_group_run(m, m.shells, [&](std::int32_t part, std::span<const std::int32_t> run) {
+    shells_.push_back(make_shell_group(m, materials_, arena, m.shells, false, part, run));
+  });
+  for_each_group_run(m, m.shells3, [&](std::int32_t part, std::span<const std::int32_t> run) {
+    shells_.push_back(make_shell_group(m, materials_, arena, m.shells3, true, part, run));
+  });
+  for_each_group_run(m, m.bricks, [&](std::int32_t part, std::span<const std::int32_t> run) {
+    bricks_.push_back(make_brick_group(m, materials_, arena, part, run));
+  });
+  for_each_group_run(m, m.tetras, [&](std::int32_t part, std::span<const std::int32_t> run) {
+    tetras_.push_back(make_tetra_group(m, materials_, arena, part, run));
+  });
+  for_each_group_run(m, m.springs, [&](std::int32_t part, std::span<const std::int32_t> run) {
+    springs_.push_back(make_spring_group(m, part, run));
+  });
   element_count_ = m.element_count() + m.springs.size();
 }
 
