@@ -180,56 +180,8 @@ void write_contact_law(std::ostream& os, const model::Model& m, const model::Int
     os << in << "               kappa K/A_s (default): " << kc_auto << '\n';
 }
 
-}  // namespace
-
-std::string shell_formulation(int ishell) {
-  switch (ishell) {
-    case 1: return "Belytschko-Tsay Q4, one point, viscous hourglass (Hm, Hf, Hr)";
-    case 2:
-      return "Q4 with Hallquist hourglass -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-    case 3:
-      return "Q4 elasto-plastic hourglass -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-    case 4: return "Q4 improved type 1 -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-    case 12: return "QBAT -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-    case 24: return "QEPH -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-    default:
-      return "Ishell " + std::to_string(ishell) +
-             " -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-  }
-}
-
-std::string shell3_formulation(int ish3n) {
-  switch (ish3n) {
-    case 1: return "C0 triangle";
-    case 2: return "C0 triangle with large-rotation correction -> radx uses the C0 triangle";
-    default: return "Ish3n " + std::to_string(ish3n) + " -> radx uses the C0 triangle";
-  }
-}
-
-std::string solid_formulation(int isolid) {
-  switch (isolid) {
-    case 1: return "8-node brick, one point, Flanagan-Belytschko viscous hourglass (h)";
-    case 2:
-      return "8-node brick, Hallquist hourglass -> radx uses one point, Flanagan-Belytschko viscous "
-             "hourglass";
-    default:
-      return "Isolid " + std::to_string(isolid) +
-             " -> radx uses the 8-node brick, one point, Flanagan-Belytschko "
-             "viscous hourglass";
-  }
-}
-
-void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
-  const model::Model& m = *in.model;
-  const auto& u = m.units;
-  os << "radx starter " << in.program_version << "\n"
-     << "deck          " << in.deck_path << "\n"
-     << "title         " << m.title << "\n"
-     << "run name      " << m.run_name << "\n"
-     << "deck version  " << m.deck_version << "\n"
-     << "work units    mass " << u.mass_name << ", length " << u.length_name << ", time " << u.time_name
-     << "\n";
-
+// How many of each kind of object the model holds.
+void write_counts(std::ostream& os, const model::Model& m) {
   heading(os, "COUNTS");
   auto count = [&](const char* what, std::size_t n) {
     os << "  " << std::left << std::setw(32) << what << n << '\n';
@@ -260,7 +212,10 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
   count("time-history groups", m.time_histories.size());
   count("contact interfaces", m.interfaces.size());
   if (!m.tied_interfaces.empty()) count("tied interfaces (TYPE2)", m.tied_interfaces.size());
+}
 
+// Each material with its law and the figures the engine uses.
+void write_materials(std::ostream& os, const model::Model& m) {
   os << std::setprecision(6);
   heading(os, "MATERIALS");
   for (const auto& mat : m.materials) {
@@ -359,7 +314,10 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
            << '\n';
     }
   }
+}
 
+// Each property with its formulation.
+void write_properties(std::ostream& os, const model::Model& m) {
   heading(os, "PROPERTIES");
   for (const auto& p : m.properties) {
     os << "  property " << p.id << " \"" << p.title << "\"  ";
@@ -379,7 +337,11 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
            << ": 4-node tetrahedron, one point, constant strain, no hourglass (for its tetrahedra)\n";
     }
   }
+}
 
+// Each part with its property, material, element count and mass, and the total mass.
+void write_parts(std::ostream& os, const model::Model& m) {
+  const auto& u = m.units;
   heading(os, "PARTS AND MASSES");
   os << "  " << std::left << std::setw(10) << "part" << std::setw(34) << "title" << std::setw(10)
      << "property" << std::setw(10) << "material" << std::setw(12) << "elements"
@@ -391,7 +353,10 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
        << '\n';
   }
   os << "  total mass " << m.total_mass << " " << u.mass_name << '\n';
+}
 
+// The sensors and when they switch.
+void write_sensors(std::ostream& os, const model::Model& m) {
   if (!m.sensors.empty()) {
     heading(os, "SENSORS");
     for (const auto& sn : m.sensors) {
@@ -403,7 +368,10 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
         os << sn.t_stop << '\n';
     }
   }
+}
 
+// The contact interfaces: each one's echo, surfaces and law.
+void write_interfaces(std::ostream& os, const model::Model& m, const StarterListingInput& in) {
   heading(os, "CONTACT INTERFACES");
   for (std::size_t k = 0; k < m.interfaces.size(); ++k) {
     const auto& c = m.interfaces[k];
@@ -435,7 +403,10 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
          << c.inacti << ": " << inacti_text(c.inacti) << ")";
     os << '\n';
   }
+}
 
+// The tied interfaces and their secondary nodes.
+void write_tied_interfaces(std::ostream& os, const model::Model& m) {
   if (!m.tied_interfaces.empty()) {
     heading(os, "TIED INTERFACES");
     for (const auto& t : m.tied_interfaces) {
@@ -463,7 +434,10 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
       os << '\n';
     }
   }
+}
 
+// The control cards accepted and ignored, and the substitutions.
+void write_notes(std::ostream& os, const model::Model& m) {
   if (!m.ignored_keywords.empty()) {
     heading(os, "CONTROL CARDS ACCEPTED AND IGNORED");
     for (const auto& k : m.ignored_keywords) os << "  " << k << '\n';
@@ -473,7 +447,10 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
     heading(os, "SUBSTITUTIONS (--allow-substitutions: what runs instead of what the deck asks)");
     for (const auto& k : m.substitutions) os << "  " << k << '\n';
   }
+}
 
+// The diagnostics, their count, and what was written.
+void write_diagnostics(std::ostream& os, const StarterListingInput& in) {
   heading(os, "DIAGNOSTICS");
   for (const auto& d : in.diagnostics) os << "  " << d << '\n';
   os << "  " << in.errors << " error(s), " << in.warnings << " warning(s)\n";
@@ -482,6 +459,67 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
                         : std::string("  no model file written: fix the errors above"))
      << '\n'
      << "  starter time " << std::fixed << std::setprecision(3) << in.seconds << " s\n";
+}
+
+}  // namespace
+
+std::string shell_formulation(int ishell) {
+  switch (ishell) {
+    case 1: return "Belytschko-Tsay Q4, one point, viscous hourglass (Hm, Hf, Hr)";
+    case 2:
+      return "Q4 with Hallquist hourglass -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+    case 3:
+      return "Q4 elasto-plastic hourglass -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+    case 4: return "Q4 improved type 1 -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+    case 12: return "QBAT -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+    case 24: return "QEPH -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+    default:
+      return "Ishell " + std::to_string(ishell) +
+             " -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
+  }
+}
+
+std::string shell3_formulation(int ish3n) {
+  switch (ish3n) {
+    case 1: return "C0 triangle";
+    case 2: return "C0 triangle with large-rotation correction -> radx uses the C0 triangle";
+    default: return "Ish3n " + std::to_string(ish3n) + " -> radx uses the C0 triangle";
+  }
+}
+
+std::string solid_formulation(int isolid) {
+  switch (isolid) {
+    case 1: return "8-node brick, one point, Flanagan-Belytschko viscous hourglass (h)";
+    case 2:
+      return "8-node brick, Hallquist hourglass -> radx uses one point, Flanagan-Belytschko viscous "
+             "hourglass";
+    default:
+      return "Isolid " + std::to_string(isolid) +
+             " -> radx uses the 8-node brick, one point, Flanagan-Belytschko "
+             "viscous hourglass";
+  }
+}
+
+void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
+  const model::Model& m = *in.model;
+  const auto& u = m.units;
+  os << "radx starter " << in.program_version << "\n"
+     << "deck          " << in.deck_path << "\n"
+     << "title         " << m.title << "\n"
+     << "run name      " << m.run_name << "\n"
+     << "deck version  " << m.deck_version << "\n"
+     << "work units    mass " << u.mass_name << ", length " << u.length_name << ", time " << u.time_name
+     << "\n";
+
+  write_counts(os, m);
+  write_materials(os, m);
+  write_properties(os, m);
+  write_parts(os, m);
+  write_sensors(os, m);
+  write_interfaces(os, m, in);
+  write_tied_interfaces(os, m);
+  write_notes(os, m);
+  write_diagnostics(os, in);
 }
 
 }  // namespace radx::io
