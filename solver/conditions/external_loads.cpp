@@ -139,14 +139,19 @@ void ExternalLoads::remove_element(model::SegmentOwner type, std::int32_t elemen
 
 double ExternalLoads::apply(NodeState& s, double t, double dt1, std::span<const double> sensor_starts) {
   double work = 0;
+  apply_gravity(s, t, dt1, sensor_starts, work);
+  apply_concentrated_loads(s, t, dt1, sensor_starts);
+  apply_pressures(s, t, dt1, sensor_starts, work);
+  return work;
+}
+
+// Gravity: force m g, work 1/2 (g_old + g_new) m v dt1; a rigid body's secondary nodes are skipped.
+void ExternalLoads::apply_gravity(NodeState& s, double t, double dt1, std::span<const double> sensor_starts,
+                                  double& work) {
   const auto& rigid = rigid_secondary_;
   std::array<HugeVector<double>*, 3> f = {&s.fx, &s.fy, &s.fz};
   std::array<HugeVector<double>*, 3> fext = {&s.fx_ext, &s.fy_ext, &s.fz_ext};
-  std::array<HugeVector<double>*, 3> mom = {&s.mx, &s.my, &s.mz};
   std::array<const HugeVector<double>*, 3> v = {&s.vx, &s.vy, &s.vz};
-  std::array<const HugeVector<double>*, 3> w = {&s.wx, &s.wy, &s.wz};
-
-  // Gravity: force m g, work 1/2 (g_old + g_new) m v dt1; a rigid body's secondary nodes are skipped.
   for (auto& g : gravity_) {
     const auto ends = g.sw.ends(g.g, g.sensor, t, dt1, sensor_starts);
     if (!ends) continue;
@@ -182,8 +187,16 @@ double ExternalLoads::apply(NodeState& s, double t, double dt1, std::span<const 
     }
     work += 0.5 * (g_old + g_new) * mv * dt1;
   }
+}
 
-  // Concentrated loads: the full value on every node; power 1/2 (F_old + F_new) v, booked with dt2.
+// Concentrated loads: the full value on every node; power 1/2 (F_old + F_new) v, booked with dt2.
+void ExternalLoads::apply_concentrated_loads(NodeState& s, double t, double dt1,
+                                             std::span<const double> sensor_starts) {
+  std::array<HugeVector<double>*, 3> f = {&s.fx, &s.fy, &s.fz};
+  std::array<HugeVector<double>*, 3> fext = {&s.fx_ext, &s.fy_ext, &s.fz_ext};
+  std::array<HugeVector<double>*, 3> mom = {&s.mx, &s.my, &s.mz};
+  std::array<const HugeVector<double>*, 3> v = {&s.vx, &s.vy, &s.vz};
+  std::array<const HugeVector<double>*, 3> w = {&s.wx, &s.wy, &s.wz};
   cload_power_ = 0;
   for (auto& c : cloads_) {
     const auto ends = c.sw.ends(c.f, c.sensor, t, dt1, sensor_starts);
@@ -225,8 +238,11 @@ double ExternalLoads::apply(NodeState& s, double t, double dt1, std::span<const 
     }
     cload_power_ += 0.5 * (f_old + f_new) * vsum;
   }
+}
 
-  // Pressure: p A n split equally over the nodes of each segment, current geometry.
+// Pressure: p A n split equally over the nodes of each segment, current geometry.
+void ExternalLoads::apply_pressures(NodeState& s, double t, double dt1, std::span<const double> sensor_starts,
+                                    double& work) {
   for (const auto& p : ploads_) {
     const double tau = t - time_origin(p.sensor, sensor_starts);
     if (tau < 0) continue;
@@ -270,7 +286,6 @@ double ExternalLoads::apply(NodeState& s, double t, double dt1, std::span<const 
       }
     }
   }
-  return work;
 }
 
 }  // namespace radx::solver

@@ -63,6 +63,12 @@ class ExternalLoads {
   [[nodiscard]] bool empty() const { return gravity_.empty() && cloads_.empty() && ploads_.empty(); }
 
  private:
+  // The stages of apply(): gravity and pressures add their work to `work`, in this order.
+  void apply_gravity(NodeState& s, double t, double dt1, std::span<const double> sensor_starts, double& work);
+  void apply_concentrated_loads(NodeState& s, double t, double dt1, std::span<const double> sensor_starts);
+  void apply_pressures(NodeState& s, double t, double dt1, std::span<const double> sensor_starts,
+                       double& work);
+
   struct Curve {
     model::Function f;
     bool constant = false;  // /GRAV without function: value = fscale
