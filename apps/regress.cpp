@@ -1,14 +1,9 @@
 // radx regress: deck discovery, the child runs, the status of each deck and the report (apps/regress.hpp).
 #include "apps/regress.hpp"
 
-#include <fcntl.h>
 #include <fnmatch.h>
 #include <sched.h>
-#include <signal.h>
-#include <spawn.h>
 #include <stdlib.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -29,11 +24,10 @@
 #include "apps/cli_common.hpp"
 #include "apps/starter_pipeline.hpp"
 #include "io/listing/summary_json.hpp"
+#include "io/spawn_process.hpp"
 #include "io/xml_text.hpp"
 #include "parser/building/build_run_controls.hpp"
 #include "parser/reading/deck.hpp"
-
-extern char** environ;
 
 namespace radx::app {
 
@@ -295,64 +289,20 @@ std::vector<RegressDeck> find_regress_decks(const std::vector<fs::path>& dirs, c
 
 ChildOutcome run_child(const std::vector<std::string>& args, const fs::path& log_path,
                        std::chrono::duration<double> timeout) {
-  ChildOutcome r;
-  std::vector<char*> argv;
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  const std::string log = log_path.string();
-  const std::string cwd = log_path.parent_path().string();
-
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  io::ProcessRequest request;
+  request.argv = args;
+  request.output_file = log_path;
   // Any file a run writes outside --out lands in its work folder, not in the caller's.
-  if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
-  // The child starts with no blocked signals and default handlers, whatever this process set.
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  sigset_t none, defaults;
-  sigemptyset(&none);
-  sigemptyset(&defaults);
-  sigaddset(&defaults, SIGPIPE);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setsigdefault(&attr, &defaults);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-
-  const auto start = std::chrono::steady_clock::now();
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, argv[0], &actions, &attr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attr);
-  if (rc != 0) {
-    r.start_error = "cannot start " + args[0] + ": " + std::strerror(rc);
-    return r;
-  }
-  // Polled rather than woken by SIGCHLD: no handler to install in a process that may run other children
-  // (the energy chart's Python), and a few milliseconds of latency are nothing next to a deck's run.
-  int status = 0;
-  auto pause = std::chrono::milliseconds(2);
-  for (;;) {
-    const pid_t w = waitpid(pid, &status, WNOHANG);
-    if (w == pid) break;
-    if (w < 0 && errno != EINTR) {
-      r.start_error = std::string("lost the child process: ") + std::strerror(errno);
-      return r;
-    }
-    if (std::chrono::steady_clock::now() - start >= timeout) {
-      r.timed_out = true;
-      kill(pid, SIGKILL);
-      while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-      }
-      break;
-    }
-    std::this_thread::sleep_for(pause);
-    pause = std::min(pause * 2, std::chrono::milliseconds(50));
-  }
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+  request.working_dir = log_path.parent_path();
+  request.timeout = timeout;
+  const io::ProcessResult p = io::run_process(request);
+  ChildOutcome r;
+  r.start_error = p.error;
+  if (!p.error.empty()) return r;
+  r.timed_out = p.timed_out;
+  r.exit_code = p.exit_code;
+  r.signal = p.signal;
+  r.seconds = p.seconds;
   return r;
 }
 

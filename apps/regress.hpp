@@ -75,8 +75,9 @@ struct ChildOutcome {
   double seconds = 0;       // wall time
 };
 
-// Runs `argv` (argv[0] an absolute path) with standard input from /dev/null and standard output and error
-// both into `log_path`; kills it with SIGKILL after `timeout`.
+// Runs `argv` (argv[0] an absolute path) in the folder of `log_path`, with standard input from /dev/null and
+// standard output and error both into `log_path`; kills it with SIGKILL after `timeout`
+// (io/spawn_process.hpp).
 ChildOutcome run_child(const std::vector<std::string>& argv, const std::filesystem::path& log_path,
                        std::chrono::duration<double> timeout);
 

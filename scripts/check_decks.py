@@ -1326,7 +1326,107 @@ def pos(o, name):
 
 
 def semantic(ck, m):
-    I = ck.issue
+    """The checks across keywords, one function per keyword family as parser/building/ builds them. They run in
+    this order, the order the problems are reported in: a table of objects by id reports its duplicate ids where
+    it is built, and a family reads the tables and the results of the families before it."""
+    tables = Tables(ck, m)
+    model_objects(tables)
+    unit_systems(tables)
+    submodel_placement(tables)
+    tables.functs = tables.by_id(("/FUNCT",), "function")
+    tables.inters = tables.by_id(("/INTER/TYPE7", "/INTER/LAGDT/TYPE7"), "interface")
+    elements(tables)
+    spring_elements(tables)
+    parts_and_properties(tables)
+    spring_properties(tables)
+    formulations(tables)
+    laws_on_elements(tables)
+    materials(tables)
+    groups(tables)
+    material_curves(tables)
+    failure_models(tables)
+    loads(tables)
+    skews(tables)
+    random_perturbation(tables)
+    sensors_bodies_walls(tables)
+    interfaces(tables)
+    tied_interfaces(tables)
+    contact_laws(tables)
+    sections(tables)
+    transforms(tables)
+    time_history(tables)
+    return tables.nodes, tables.parts
+
+
+class Tables:
+    """What the keyword families share: the checker (issue reports a problem), the model, the tables of its
+    objects by id and what the families before found (nodes, elements, groups, ...), as attributes."""
+
+    def __init__(self, ck, m):
+        self.ck, self.m, self.issue = ck, m, ck.issue
+        # the /DEF_SHELL and /DEF_SOLID whose values a property's 0 flags take (resolved)
+        self.defs = {k: (m.of(k) or [None])[0] for k in ("/DEF_SHELL", "/DEF_SOLID")}
+
+    def by_id(self, paths, what):
+        """The objects of the keywords `paths` by id; an id given twice is RX401 (the first one is kept)."""
+        table = {}
+        for o in self.m.of(*paths):
+            if o["id"] in table:
+                self.issue("RX401", o["pos"][0], o["pos"][1], "%s %d defined twice" % (what, o["id"]))
+                continue
+            table[o["id"]] = o
+        return table
+
+    def length_factor(self, o):
+        """Work length units per length unit the object is written in (1 when a name is not understood)."""
+        m, units = self.m, self.units
+        begin = m.units.get("input", (None,) * 3)[1], m.units.get("work", (None,) * 3)[1]
+        work = begin[1] or begin[0] or next((x["word"] for x in m.of("/UNIT/LENGTH")), None)
+        written = val(units[o["unit"]], "LUNIT", None) if o.get("unit") in units else (begin[0] or work)
+        a, b = unit_si(written or work, LENGTH_SI), unit_si(work, LENGTH_SI)
+        return a / b if a and b else 1.0
+
+    def place(self, o, point):
+        """A point written in object o (a box corner) where the boxes see it: in work units, moved with the
+        submodels o is written in."""
+        f = self.length_factor(o)
+        q = tuple(x * f for x in point)
+        for sid, fn in self.moves:
+            if sid in o["subs"]:
+                q = fn(q)
+        return q
+
+    def resolved(self, o, name, def_key, hard):
+        """A formulation flag of property o: its own value, else the /DEF_SHELL or /DEF_SOLID one (-2 there read as
+        -1), else `hard`."""
+        if val(o, name, 0) != 0:
+            return val(o, name)
+        d = self.defs[def_key]
+        if d is not None and val(d, name, 0) != 0:
+            return -1 if val(d, name) == -2 else val(d, name)
+        return hard
+
+    def need(self, o, field, table, what, zero_ok=True):
+        """The id in o's field names an object of `table` (RX402); 0 is RX502 unless zero_ok."""
+        I = self.issue
+        x = val(o, field, 0)
+        p = pos(o, field)
+        if x == 0:
+            if not zero_ok:
+                I("RX502", p[0], p[1], "%s %d: %s is required" % (o["path"], o["id"], field))
+            return
+        if x not in table:
+            I("RX402", p[0], p[1], "%s %d: %s %d does not exist" % (o["path"], o["id"], what, x))
+
+
+# ---------------------------------------------------------------------------------------------------
+# The keyword families, in semantic's order
+
+
+def model_objects(tables):
+    """Nodes, then the tables of parts, properties, materials, node groups and surfaces by id (model_builder.cpp);
+    a node or object id given twice is RX401."""
+    I, by_id, m = tables.issue, tables.by_id, tables.m
     nodes = {}  # as written (the element geometry is checked on these)
     node_block = {}  # node id -> its /NODE object (unit system, submodels)
     for o in m.of("/NODE"):
@@ -1340,15 +1440,6 @@ def semantic(ck, m):
             nodes[nid] = (r.get("X") or 0.0, r.get("Y") or 0.0, r.get("Z") or 0.0)
             node_block[nid] = o
 
-    def by_id(paths, what):
-        table = {}
-        for o in m.of(*paths):
-            if o["id"] in table:
-                I("RX401", o["pos"][0], o["pos"][1], "%s %d defined twice" % (what, o["id"]))
-                continue
-            table[o["id"]] = o
-        return table
-
     parts = by_id(("/PART",), "part")
     props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14", "/PROP/SPRING", "/PROP/TYPE4",
                    "/PROP/SPR_GENE", "/PROP/TYPE8", "/PROP/SPR_BEAM", "/PROP/TYPE13"),
@@ -1359,9 +1450,14 @@ def semantic(ck, m):
                   "/MAT/FOAM_TAB"), "material")
     grnods = by_id(tuple(k for k in STARTER if k.startswith("/GRNOD/")), "node group")
     surfs = by_id(tuple(k for k in STARTER if k.startswith("/SURF/")), "surface")
+    tables.grnods, tables.mats, tables.node_block, tables.nodes = grnods, mats, node_block, nodes
+    tables.parts, tables.props, tables.surfs = parts, props, surfs
 
-    # unit systems: names as in /BEGIN; a unit id on a keyword line (or a //SUBMODEL's) must name one, and one
-    # with an unknown unit name is no unit system
+
+def unit_systems(tables):
+    """Unit systems (/UNIT): names as in /BEGIN; a unit id on a keyword line (or a //SUBMODEL's) must name one,
+    and one with an unknown unit name is no unit system."""
+    I, by_id, m = tables.issue, tables.by_id, tables.m
     units = by_id(("/UNIT",), "unit system")
     for o in list(units.values()):
         for name, table in (("MUNIT", MASS_UNITS), ("LUNIT", LENGTH_UNITS), ("TUNIT", TIME_UNITS)):
@@ -1374,18 +1470,15 @@ def semantic(ck, m):
         if o.get("unit_id", 0) > 0 and o["unit_id"] not in units:
             I("RX402", o["pos"][0], o["pos"][1], "%s %d: unit system %d does not exist" % (o["path"], o["id"],
                                                                                           o["unit_id"]))
+    tables.units = units
 
-    def length_factor(o):
-        """Work length units per length unit the object is written in (1 when a name is not understood)."""
-        begin = m.units.get("input", (None,) * 3)[1], m.units.get("work", (None,) * 3)[1]
-        work = begin[1] or begin[0] or next((x["word"] for x in m.of("/UNIT/LENGTH")), None)
-        written = val(units[o["unit"]], "LUNIT", None) if o.get("unit") in units else (begin[0] or work)
-        a, b = unit_si(written or work, LENGTH_SI), unit_si(work, LENGTH_SI)
-        return a / b if a and b else 1.0
 
-    # Node positions the boxes see (keywords.md, Submodels and transforms): the nodes in work units, then moved
-    # by the transforms of the submodels they are written in (sub_ID), the innermost submodel's first, each
-    # submodel's in deck order. Node-group transforms come after the groups are built, so boxes never see them.
+def submodel_placement(tables):
+    """Node positions the boxes see (keywords.md, Submodels and transforms; build_transforms.cpp): the nodes in
+    work units, then moved by the transforms of the submodels they are written in (sub_ID), the innermost
+    submodel's first, each submodel's in deck order. Node-group transforms come after the groups are built, so
+    boxes never see them."""
+    length_factor, m, node_block, nodes = tables.length_factor, tables.m, tables.node_block, tables.nodes
     placed = {}
     for nid, c in nodes.items():
         f = length_factor(node_block[nid])
@@ -1397,26 +1490,19 @@ def semantic(ck, m):
     for o in sorted(moving, key=lambda o: -depth[val(o, "sub_ID")]):
         fn = transform_function(o, placed, length_factor(o))
         if fn is None:
-            continue  # degenerate: reported below (RX605)
+            continue  # degenerate: reported by transforms (RX605)
         sid = val(o, "sub_ID")
         moves.append((sid, fn))
         for nid in placed:
             if sid in node_block[nid]["subs"]:
                 placed[nid] = fn(placed[nid])
+    tables.moves, tables.placed = moves, placed
 
-    def place(o, point):
-        """A point written in object o (a box corner) where the boxes see it: in work units, moved with the
-        submodels o is written in."""
-        f = length_factor(o)
-        q = tuple(x * f for x in point)
-        for sid, fn in moves:
-            if sid in o["subs"]:
-                q = fn(q)
-        return q
-    functs = by_id(("/FUNCT",), "function")
-    inters = by_id(("/INTER/TYPE7", "/INTER/LAGDT/TYPE7"), "interface")
 
-    # elements
+def elements(tables):
+    """Shells, triangles, bricks and tetrahedra (model_builder.cpp): the part and its property kind, unique ids,
+    existing nodes, the geometry (area, volume, orientation) and the shell thickness."""
+    I, m, nodes, parts, props = tables.issue, tables.m, tables.nodes, tables.parts, tables.props
     elem_ids = {"/SHELL": set(), "/SH3N": set(), "/BRICK": set(), "/TETRA4": set()}
     elements = {"/SHELL": {}, "/SH3N": {}, "/BRICK": {}, "/TETRA4": {}}  # element id -> (part id, node ids)
     part_kind = {}
@@ -1481,8 +1567,14 @@ def semantic(ck, m):
                     I("RX601", p[0], p[1], "brick %d has volume %g" % (eid, vol))
                 elif hex_tangled(pts):
                     I("RX607", p[0], p[1], "brick %d has a corner turned inside out" % eid)
+    tables.elem_ids, tables.elements, tables.part_kind = elem_ids, elements, part_kind
 
-    # springs: the part has a spring property, n1 and n2 exist and differ, n3 exists when given, ids unique
+
+def spring_elements(tables):
+    """Springs (build_springs.cpp): the part has a spring property, n1 and n2 exist and differ, n3 exists when
+    given, ids unique."""
+    I, m, nodes, part_kind, parts = tables.issue, tables.m, tables.nodes, tables.part_kind, tables.parts
+    props = tables.props
     spring_ids = set()
     for o in m.of("/SPRING"):
         if o["id"] not in parts:
@@ -1507,7 +1599,11 @@ def semantic(ck, m):
             if not bad and ns[0] == ns[1]:
                 I("RX604", p[0], p[1], "spring %s joins a node to itself" % eid)
 
-    # parts
+
+def parts_and_properties(tables):
+    """Parts and shell properties (model_builder.cpp): the property and the material exist, the thickness and
+    the number of integration points."""
+    I, mats, parts, props = tables.issue, tables.mats, tables.parts, tables.props
     for pid, o in parts.items():
         if val(o, "prop_ID") not in props:
             p = pos(o, "prop_ID")
@@ -1532,6 +1628,11 @@ def semantic(ck, m):
             if nn < 0 or nn > 10:
                 p = pos(o, "N")
                 I("RX501", p[0], p[1], "N = %d outside 0..10" % nn)
+
+
+def spring_properties(tables):
+    """Spring properties TYPE4, TYPE8 and TYPE13 (build_springs.cpp)."""
+    I, functs, m, props = tables.issue, tables.functs, tables.m, tables.props
 
     # H 4, 5, 6 need fct_ID1 and fct_ID3, H 8 fct_ID1 (build_springs.cpp read_spring_law)
     def spring_h_curves(o, d):
@@ -1619,22 +1720,16 @@ def semantic(ck, m):
             elif skew["path"] == "/SKEW/MOV" and not type13:
                 I("RX510", p[0], p[1], "spring property %d: moving skew %d" % (o["id"], sk))
 
-    # formulations (check_formulations.cpp): a flag of a property used by elements must be one radx implements,
-    # resolved as property value, else the /DEF_SHELL or /DEF_SOLID value, else the hard default
-    defs = {k: (m.of(k) or [None])[0] for k in ("/DEF_SHELL", "/DEF_SOLID")}
+
+def formulations(tables):
+    """Formulations (check_formulations.cpp): a flag of a property used by elements must be one radx implements,
+    resolved as property value, else the /DEF_SHELL or /DEF_SOLID value, else the hard default."""
+    I, part_kind, parts, props = tables.issue, tables.part_kind, tables.parts, tables.props
+    resolved = tables.resolved
     used = {}
     for pid, kinds in part_kind.items():
         if pid in parts and val(parts[pid], "prop_ID") in props:
             used.setdefault(val(parts[pid], "prop_ID"), set()).update(kinds)
-
-    def resolved(o, name, def_key, hard):
-        if val(o, name, 0) != 0:
-            return val(o, name)
-        d = defs[def_key]
-        if d is not None and val(d, name, 0) != 0:
-            return -1 if val(d, name) == -2 else val(d, name)
-        return hard
-
     for prop_id, kinds in used.items():
         o = props[prop_id]
         bad = []
@@ -1691,6 +1786,12 @@ def semantic(ck, m):
             p = pos(o, name)
             I("RX510", p[0], p[1], "%s %d: %s not implemented by radx" % (o["path"], o["id"], name))
 
+
+def laws_on_elements(tables):
+    """The laws radx runs on some elements only (check_formulations.cpp, build_hyperelastic.cpp), and the solid
+    property fields that change the physics."""
+    I, mats, part_kind, parts, props = tables.issue, tables.mats, tables.part_kind, tables.parts, tables.props
+    resolved = tables.resolved
     # law 27 is a shell law with integration points (check_formulations.cpp check_shell_only_laws): refused on
     # bricks and tetrahedra (at the material's keyword line) and with a shell property of N = 0
     for pid, kinds in part_kind.items():
@@ -1747,7 +1848,11 @@ def semantic(ck, m):
                     I("RX510", p[0], p[1], "%s %d: %s = %g changes the physics" % (o["path"], o["id"], name,
                                                                                 val(o, name)))
 
-    # materials
+
+def materials(tables):
+    """Materials (model_builder.cpp, build_hyperelastic.cpp, build_foam_tab.cpp, build_rigid_materials.cpp): the
+    required cards, a plausible wave speed, Poisson's ratio and each law's own values."""
+    I, m, mats = tables.issue, tables.m, tables.mats
     velocity_si = work_velocity_si(m)
     for o in mats.values():
         if o.get("missing"):
@@ -1840,7 +1945,12 @@ def semantic(ck, m):
                 p = pos(o, "EPS_m1")
                 I("RX507", p[0], p[1], "%s %d: EPS_m1 <= EPS_t1" % (o["path"], o["id"]))
 
-    # groups
+
+def groups(tables):
+    """Subsets, element groups, node groups, surfaces and functions (build_groups.cpp)."""
+    I, by_id, ck, elements, functs = tables.issue, tables.by_id, tables.ck, tables.elements, tables.functs
+    grnods, m, mats, nodes, part_kind = tables.grnods, tables.m, tables.mats, tables.nodes, tables.part_kind
+    parts, place, placed, props, surfs = tables.parts, tables.place, tables.placed, tables.props, tables.surfs
     subsets = by_id(("/SUBSET",), "subset")
     egroups, emembers, surf_nodes, boxes = element_group_checks(ck, m, nodes, placed, place, parts, props, mats,
                                                                 subsets, elements, surfs)
@@ -1864,18 +1974,12 @@ def semantic(ck, m):
             if xs[k][0] is not None and xs[k - 1][0] is not None and xs[k][0] <= xs[k - 1][0]:
                 I("RX505", xs[k][1][0], xs[k][1][1], "function %d: X not increasing" % fid)
                 break
+    tables.egroups, tables.subsets = egroups, subsets
 
-    # loads and conditions
-    def need(o, field, table, what, zero_ok=True):
-        x = val(o, field, 0)
-        p = pos(o, field)
-        if x == 0:
-            if not zero_ok:
-                I("RX502", p[0], p[1], "%s %d: %s is required" % (o["path"], o["id"], field))
-            return
-        if x not in table:
-            I("RX402", p[0], p[1], "%s %d: %s %d does not exist" % (o["path"], o["id"], what, x))
 
+def material_curves(tables):
+    """The curves of /MAT/PLAS_TAB and /MAT/FOAM_TAB (model_builder.cpp read_plas_tab, build_foam_tab.cpp)."""
+    I, functs, mats, need = tables.issue, tables.functs, tables.mats, tables.need
     # /MAT/PLAS_TAB: each curve names a function, rates strictly increase, scales >= 0; the options radx does not
     # implement are refused (keywords_starter.cpp, model_builder.cpp read_plas_tab)
     for o in mats.values():
@@ -1911,6 +2015,12 @@ def semantic(ck, m):
                 rates.append(r)
         if val(o, "Itens", 0) == 1:
             need(o, "fctIDTens", functs, "function", zero_ok=False)
+
+
+def failure_models(tables):
+    """Failure models /FAIL/JOHNSON and /FAIL/TAB (model_builder.cpp, check_formulations.cpp)."""
+    I, functs, m, mats, need = tables.issue, tables.functs, tables.m, tables.mats, tables.need
+    part_kind, parts = tables.part_kind, tables.parts
     # /FAIL/JOHNSON/mat_ID: on an existing LAW2 or LAW36 material, one per material
     failed_mats = set()
     for o in m.of("/FAIL/JOHNSON"):
@@ -1981,6 +2091,10 @@ def semantic(ck, m):
                 p = pos(o, "fct_IDel")
                 I("RX510", p[0], p[1], "/FAIL/TAB %d: size function on solids" % o["id"])
 
+
+def loads(tables):
+    """Kinematic conditions and loads (build_loads.cpp): /BCS, /ADMAS, /INIVEL, /IMPVEL, /IMPDISP, /GRAV."""
+    I, functs, grnods, m, need = tables.issue, tables.functs, tables.grnods, tables.m, tables.need
     for o in m.of("/BCS"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
     for o in m.of("/ADMAS/0", "/ADMAS/1"):
@@ -2000,9 +2114,13 @@ def semantic(ck, m):
     for o in m.of("/GRAV"):
         need(o, "funct_IDT", functs, "function")
         need(o, "grnod_ID", grnods, "node group")
-    # skews (one id space for /SKEW/FIX and /SKEW/MOV): a fixed frame needs two independent directions, a moving
-    # one three distinct existing nodes, N2 off N1 and N3 off the line N1 N2 (sine of the angle > 1e-5), Dir X, Y,
-    # Z or blank; the loads and conditions may name one
+
+
+def skews(tables):
+    """Skews (build_skews.cpp; one id space for /SKEW/FIX and /SKEW/MOV): a fixed frame needs two independent
+    directions, a moving one three distinct existing nodes, N2 off N1 and N3 off the line N1 N2 (sine of the
+    angle > 1e-5), Dir X, Y, Z or blank; the loads and conditions may name one."""
+    I, by_id, m, nodes = tables.issue, tables.by_id, tables.m, tables.nodes
     skews = by_id(("/SKEW/FIX", "/SKEW/MOV"), "skew")
     for o in skews.values():
         if o["path"] != "/SKEW/MOV":
@@ -2050,7 +2168,13 @@ def semantic(ck, m):
         if sk and sk not in skews:
             p = pos(o, "skew_ID")
             I("RX402", p[0], p[1], "%s %d: skew %d does not exist" % (o["path"], o["id"], sk))
-    # random perturbation: XALEA >= 0; a group that exists; all nodes or groups, not both (Radioss: neither)
+    tables.skews = skews
+
+
+def random_perturbation(tables):
+    """Random perturbation (build_random.cpp): XALEA >= 0; a group that exists; all nodes or groups, not both
+    (Radioss: neither)."""
+    I, grnods, m = tables.issue, tables.grnods, tables.m
     for o in m.of("/RANDOM", "/RANDOM/GRNOD"):
         if val(o, "XALEA", 0.0) < 0:
             p = pos(o, "XALEA")
@@ -2063,6 +2187,12 @@ def semantic(ck, m):
     if rall and rgrp:
         p = pos(rgrp[0], "XALEA")
         I("RX507", p[0], p[1], "/RANDOM and /RANDOM/GRNOD both given")
+
+
+def sensors_bodies_walls(tables):
+    """Accelerometers, /CLOAD, sensors, rigid bodies, rigid walls and /IMPDISP/FGEO (build_loads.cpp)."""
+    I, by_id, functs, grnods, m = tables.issue, tables.by_id, tables.functs, tables.grnods, tables.m
+    need, nodes, skews = tables.need, tables.nodes, tables.skews
     # accelerometers: on an existing node, in an existing skew, with a cut-off frequency >= 0
     accels = by_id(("/ACCEL",), "accelerometer")
     for o in accels.values():
@@ -2127,7 +2257,10 @@ def semantic(ck, m):
         if not o["recs"] and val(o, "part_ID", 0) == 0:
             I("RX305", o["pos"][0], o["pos"][1], "/IMPDISP/FGEO %d lists no node" % o["id"])
 
-    # interfaces
+
+def interfaces(tables):
+    """Contact interfaces /INTER/TYPE7 and /INTER/LAGDT/TYPE7 (build_interfaces.cpp)."""
+    I, grnods, inters, need, surfs = tables.issue, tables.grnods, tables.inters, tables.need, tables.surfs
     for iid, o in inters.items():
         need(o, "grnd_IDs", grnods, "node group", zero_ok=False)
         need(o, "surf_IDm", surfs, "surface", zero_ok=False)
@@ -2150,8 +2283,11 @@ def semantic(ck, m):
                 p = pos(o, "C5")
                 I("RX703", p[0], p[1], "interface %d: Renard coefficients inconsistent" % iid)
 
-    # tied interfaces (build_tied.cpp): references, Spotflag values (0, 1, 5 run), the ones radx refuses (RX510), a
-    # node tied by two TYPE2 (RX706, on the second; the nodes of the groups, which all find a segment here)
+
+def tied_interfaces(tables):
+    """Tied interfaces (build_tied.cpp): references, Spotflag values (0, 1, 5 run), the ones radx refuses (RX510),
+    a node tied by two TYPE2 (RX706, on the second; the nodes of the groups, which all find a segment here)."""
+    I, grnods, m, need, surfs = tables.issue, tables.grnods, tables.m, tables.need, tables.surfs
     tied_nodes = {}
     for o in m.of("/INTER/TYPE2"):
         need(o, "grnd_IDs", grnods, "node group", zero_ok=False)
@@ -2175,14 +2311,23 @@ def semantic(ck, m):
             for x in ids:
                 tied_nodes.setdefault(x, o["id"])
 
-    # contact laws (/CTCLAW, contact-laws.md sections 4 and 5): the interface exists, the law string reads
+
+def contact_laws(tables):
+    """Contact laws (/CTCLAW, contact-laws.md sections 4 and 5; build_interfaces.cpp): the interface exists, the
+    law string reads."""
+    I, functs, inters, m, need = tables.issue, tables.functs, tables.inters, tables.m, tables.need
     for o in m.of("/CTCLAW"):
         need(o, "inter_ID", inters, "interface", zero_ok=False)
         for at, msg in law_string_problems(o.get("text", []), functs):
             I("RX704", at[0], at[1], "/CTCLAW %d: %s" % (o["id"], msg))
 
-    # sections: frame nodes, the cut's node group and the element groups must exist; radx refuses a moving
-    # frame, interface forces, reading cut files and truss, beam or spring groups (RX510, RX402)
+
+def sections(tables):
+    """Sections (build_sections.cpp): frame nodes, the cut's node group and the element groups must exist; radx
+    refuses a moving frame, interface forces, reading cut files and truss, beam or spring groups (RX510,
+    RX402)."""
+    I, by_id, egroups, grnods, need = tables.issue, tables.by_id, tables.egroups, tables.grnods, tables.need
+    nodes = tables.nodes
     sects = by_id(("/SECT",), "section")
     for o in sects.values():
         for f in ("node_ID1", "node_ID2", "node_ID3"):
@@ -2210,8 +2355,15 @@ def semantic(ck, m):
             if (root, val(o, f)) not in egroups:
                 p = pos(o, f)
                 I("RX402", p[0], p[1], "/SECT %d: %s group %d does not exist" % (o["id"], root, val(o, f)))
-    # model assembly: a transform moves a node group or a submodel (one of them), its node pairs are complete,
-    # its rotation axis or mirror normal is not of zero length; /MOVE_FUNCT names an existing function.
+    tables.sects = sects
+
+
+def transforms(tables):
+    """Model assembly (build_transforms.cpp): a transform moves a node group or a submodel (one of them), its node
+    pairs are complete, its rotation axis or mirror normal is not of zero length; /MOVE_FUNCT names an existing
+    function."""
+    I, by_id, functs, grnods, m = tables.issue, tables.by_id, tables.functs, tables.grnods, tables.m
+    need, nodes = tables.need, tables.nodes
     subs = by_id(("//SUBMODEL",), "submodel")
     for o in m.of("/TRANSFORM/TRA", "/TRANSFORM/ROT", "/TRANSFORM/SCA", "/TRANSFORM/SYM"):
         kind = o["path"].split("/")[2]
@@ -2250,6 +2402,12 @@ def semantic(ck, m):
     for o in m.of("/MOVE_FUNCT"):
         if o["id"] not in functs:
             I("RX402", o["pos"][0], o["pos"][1], "/MOVE_FUNCT %d: no such function" % o["id"])
+
+
+def time_history(tables):
+    """Time-history requests (build_loads.cpp): the objects they name exist, and their variable names."""
+    I, by_id, elem_ids, inters, m = tables.issue, tables.by_id, tables.elem_ids, tables.inters, tables.m
+    nodes, parts, sects, skews, subsets = tables.nodes, tables.parts, tables.sects, tables.skews, tables.subsets
     for o in m.of("/TH/SECTIO"):
         for x, p in o["ids"]:
             if x not in sects:
@@ -2300,7 +2458,6 @@ def semantic(ck, m):
         for w in words:
             if w not in groups and w not in single:
                 I("RX501", o["pos"][0], o["pos"][1], "%s %d: unknown variable %s" % (o["path"], o["id"], w))
-    return nodes, parts
 
 
 # ---------------------------------------------------------------------------------------------------

@@ -1,14 +1,9 @@
 // NAME_energy.csv and NAME_energy.png (io/listing/energy_plot.hpp): the CSV written here, the chart drawn by
-// the embedded io/listing/plot_energy.py in a child /usr/bin/python3 started with posix_spawn (no shell:
-// arguments pass byte for byte), its standard output and error captured through a pipe to word the warning on
-// failure.
+// the embedded io/listing/plot_energy.py in a child /usr/bin/python3 started without a shell (arguments pass
+// byte for byte, io/spawn_process.hpp), its standard output and error captured through a pipe to word the
+// warning on failure.
 #include "io/listing/energy_plot.hpp"
 
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
@@ -19,6 +14,8 @@
 #include <cstring>
 #include <filesystem>
 #include <system_error>
+
+#include "io/spawn_process.hpp"
 
 namespace radx::io {
 
@@ -55,91 +52,6 @@ void append_number(std::string& out, double v) {
   std::array<char, 40> buf{};
   const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 17);
   out.append(buf.data(), res.ptr);
-}
-
-struct ProcessResult {
-  int spawn_error = 0;  // errno from posix_spawn; 0 when the process started
-  bool timed_out = false;
-  int exit_code = -1;  // when it exited normally
-  int signal = 0;      // when a signal ended it
-  std::string output;  // standard output and error, interleaved, at most kMaxCapturedOutput (the end)
-};
-
-// Runs argv[0] (an absolute path, no PATH search) with `env`, standard input from /dev/null and both output
-// streams into one pipe, and waits for it; killed after `timeout`.
-ProcessResult run_captured(const std::vector<std::string>& args, const std::vector<std::string>& env,
-                           std::chrono::seconds timeout) {
-  ProcessResult result;
-  std::vector<char*> argv;
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  std::vector<char*> envp;
-  for (const auto& e : env) envp.push_back(const_cast<char*>(e.c_str()));
-  envp.push_back(nullptr);
-
-  // Close-on-exec, so processes spawned by other threads at the same moment do not inherit the pipe (which
-  // would keep it open and delay the end of file we wait for). The dup2 copies in the child are inherited.
-  int fds[2];
-  if (pipe2(fds, O_CLOEXEC) != 0) {
-    result.spawn_error = errno;
-    return result;
-  }
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
-  posix_spawn_file_actions_adddup2(&actions, fds[1], 2);
-  // The child starts with no blocked signals and default SIGPIPE, whatever the engine set for itself.
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  sigset_t none, defaults;
-  sigemptyset(&none);
-  sigemptyset(&defaults);
-  sigaddset(&defaults, SIGPIPE);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setsigdefault(&attr, &defaults);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, argv[0], &actions, &attr, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attr);
-  close(fds[1]);
-  if (rc != 0) {
-    close(fds[0]);
-    result.spawn_error = rc;
-    return result;
-  }
-
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  std::array<char, 4096> buf{};
-  for (;;) {
-    const auto left =
-        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) {
-      result.timed_out = true;
-      kill(pid, SIGKILL);
-      break;
-    }
-    pollfd p{fds[0], POLLIN, 0};
-    const int ready = poll(&p, 1, static_cast<int>(left.count()));
-    if (ready < 0 && errno == EINTR) continue;
-    if (ready <= 0) continue;  // timeout: the deadline check above ends the loop
-    const ssize_t n = read(fds[0], buf.data(), buf.size());
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;  // end of file: the child closed its output (it is exiting)
-    result.output.append(buf.data(), static_cast<std::size_t>(n));
-    if (result.output.size() > kMaxCapturedOutput)
-      result.output.erase(0, result.output.size() - kMaxCapturedOutput);
-  }
-  close(fds[0]);
-
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
-  return result;
 }
 
 // The last few non-empty lines of `text`, joined with " | ": enough to show a Python error on one line.
@@ -234,16 +146,19 @@ bool draw_energy_png(const EnergyPlotRequest& r, const std::string& python, std:
   // matplotlib picks the format from the name, hence ".part.png" rather than ".part".
   const std::string part = r.png_path + ".part.png";
   fs::remove(part, ec);  // left by a run that was killed while drawing
-  const std::vector<std::string> args{python,       "-I", "-c",    std::string(energy_plot_script()),
-                                      r.csv_path,   part, r.title, r.time_unit,
-                                      r.energy_unit};
+  ProcessRequest request;
   // -I: isolated mode. PYTHONPATH, PYTHONHOME and user site-packages of the caller's environment (often set
   // for another Python) must not change which matplotlib /usr/bin/python3 imports.
-  const ProcessResult p = run_captured(args, plot_environment(), kScriptTimeout);
+  request.argv = {python,  "-I",        "-c",         std::string(energy_plot_script()), r.csv_path, part,
+                  r.title, r.time_unit, r.energy_unit};
+  request.environment = plot_environment();
+  request.max_output = kMaxCapturedOutput;
+  request.timeout = kScriptTimeout;
+  const ProcessResult p = run_process(request);
 
   std::string reason;
-  if (p.spawn_error != 0) {
-    reason = "cannot start " + python + ": " + std::strerror(p.spawn_error);
+  if (!p.error.empty()) {
+    reason = p.error;  // "cannot start PYTHON: ..."
   } else if (p.timed_out) {
     reason = "the plotting script did not finish within " + std::to_string(kScriptTimeout.count()) + " s";
   } else if (p.exit_code == kExitNoMatplotlib) {

@@ -1163,98 +1163,115 @@ FieldDecl ibc(std::string_view name, int col, std::string_view meaning) {
   return I(name, col, col, meaning).allow({0, 1});
 }
 
-void add_contact(std::vector<KeywordDecl>& t) {
-  {
-    KeywordDecl k =
-        kw("/INTER/TYPE7", "node-to-surface penalty contact with a gap", Header::IdUnit, true, "inter_ID");
-    k.cards = {
-        card("card 1", {I("grnd_IDs", 1, 10, "secondary node group").refs(IdKind::Other).must(),
-                        I("surf_IDm", 11, 20, "main surface").refs(IdKind::Other).must(),
-                        I("Istf", 21, 30, "stiffness definition").allow({0, 1, 2, 3, 4, 5}),
-                        I("Ithe", 31, 40, "heat transfer through the contact").allow({0, 1}).unused(),
-                        I("Igap", 41, 50, "gap option: 0 constant, 1 variable, 2 variable with scale and cap")
-                            .allow({0, 1, 2}),
-                        multimp().versions(kAnyVersion, 110),
-                        I("Ibag", 61, 70, "airbag vent-hole closure on contact").allow({0, 1}).unused(),
-                        I("Idel", 71, 80, "removal of deleted segments and free secondary nodes")
-                            .allow({-2, -1, 0, 1, 2}),
-                        I("Icurv", 81, 90, "curved gap envelope").not_implemented(),
-                        I("Iadm", 91, 100, "local curvature for adaptive meshing").unused()}),
-        card("card 2",
-             {R("Fscalegap", 1, 20, "gap scale factor (Igap = 2)").zero_is(1.0).gt(0.0),
-              R("Gapmax", 21, 40, "largest gap (Igap = 2); 0 = no cap").ge(0.0).dims(dim::length),
-              R("Fpenmax", 41, 60, "initial penetrations above this fraction of the gap are deactivated")
+// /INTER/TYPE7 and /INTER/LAGDT/TYPE7 read the same cards, declared once here. The LAGDT layout has none of
+// TYPE7's thermal, curvature (TYPE7's card 4) and adaptive-meshing options, nor the fields the later TYPE7
+// layouts added (Fpenmax, mesh_size, dtmin, Irem_gap, Irem_i2, Itied, Ists, sens_ID, fct_IDF, AscaleF,
+// fric_ID); it keeps Multimp up to 130 where TYPE7 drops it after 110, and numbers its cards without TYPE7's
+// card 4.
+enum class Type7Layout : std::uint8_t { Type7, LagdtType7 };
+
+void add_type7_cards(KeywordDecl& k, Type7Layout layout) {
+  const bool type7 = layout == Type7Layout::Type7;
+  // Appends fields that only /INTER/TYPE7 has.
+  const auto type7_only = [type7](std::vector<FieldDecl>& fields, std::initializer_list<FieldDecl> more) {
+    if (type7) fields.insert(fields.end(), more);
+  };
+
+  std::vector<FieldDecl> card1 = {I("grnd_IDs", 1, 10, "secondary node group").refs(IdKind::Other).must(),
+                                  I("surf_IDm", 11, 20, "main surface").refs(IdKind::Other).must(),
+                                  I("Istf", 21, 30, "stiffness definition").allow({0, 1, 2, 3, 4, 5})};
+  type7_only(card1, {I("Ithe", 31, 40, "heat transfer through the contact").allow({0, 1}).unused()});
+  card1.insert(
+      card1.end(),
+      {I("Igap", 41, 50, "gap option: 0 constant, 1 variable, 2 variable with scale and cap")
+           .allow({0, 1, 2}),
+       multimp().versions(kAnyVersion, type7 ? 110 : 130),
+       I("Ibag", 61, 70, "airbag vent-hole closure on contact").allow({0, 1}).unused(),
+       I("Idel", 71, 80, "removal of deleted segments and free secondary nodes").allow({-2, -1, 0, 1, 2})});
+  type7_only(card1, {I("Icurv", 81, 90, "curved gap envelope").not_implemented(),
+                     I("Iadm", 91, 100, "local curvature for adaptive meshing").unused()});
+
+  std::vector<FieldDecl> card2 = {
+      R("Fscalegap", 1, 20, "gap scale factor (Igap = 2)").zero_is(1.0).gt(0.0),
+      R("Gapmax", 21, 40, "largest gap (Igap = 2); 0 = no cap").ge(0.0).dims(dim::length)};
+  type7_only(card2,
+             {R("Fpenmax", 41, 60, "initial penetrations above this fraction of the gap are deactivated")
                   .versions(120)
                   .ge(0.0),
               I("Itied", 81, 90, "tie nodes once in contact").versions(2020).not_implemented(),
-              I("Ists", 91, 100, "surface-to-surface option").versions(2026).not_implemented()}),
-        card("card 3", {R("Stmin", 1, 20, "smallest pair stiffness (Istf 2..5)").ge(0.0).dims(dim::stiffness),
-                        R("Stmax", 21, 40, "largest pair stiffness (Istf 2..5)")
-                            .zero_is(1e30)
-                            .ge(0.0)
-                            .dims(dim::stiffness),
-                        R("mesh_size", 41, 60, "percentage of mesh size for the self-contact gap")
-                            .versions(110)
-                            .not_implemented(),
-                        R("dtmin", 61, 80, "interface minimum time step: a node below it is removed")
-                            .versions(120)
-                            .ge(0.0)
-                            .dims(dim::time),
-                        I("Irem_gap", 81, 90, "deactivate secondary nodes when element size is below the gap")
-                            .versions(120)
-                            .not_implemented(),
-                        I("Irem_i2", 91, 100, "deactivate secondary nodes also tied by a TYPE2 interface")
-                            .versions(130)
-                            .unused()}),
-        card_if(
-            "card 4 (Icurv = 1 or 2)", when_in("Icurv", 1, 2),
-            {I("node_ID1", 1, 10, "first node defining the curvature").refs(IdKind::Node).not_implemented(),
-             I("node_ID2", 11, 20, "second node defining the curvature")
-                 .refs(IdKind::Node)
-                 .not_implemented()}),
-        card("card 5",
-             {R("Stfac", 1, 20, "stiffness scale factor, or the stiffness itself when Istf = 1")
-                  .zero_is(1.0)
-                  .gt(0.0),
-              R("Fric", 21, 40, "Coulomb friction coefficient").ge(0.0),
-              R("Gapmin", 41, 60, "smallest gap; the constant gap when Igap = 0").ge(0.0).dims(dim::length),
-              R("Tstart", 61, 80, "time the interface starts acting").dims(dim::time),
-              R("Tstop", 81, 100, "time the interface stops acting; 0 = never").dims(dim::time)}),
-        card("card 6",
-             {ibc("IBCX", 8, "release the secondary node's fixed X translation at first impact"),
-              ibc("IBCY", 9, "release the secondary node's fixed Y translation at first impact"),
-              ibc("IBCZ", 10, "release the secondary node's fixed Z translation at first impact"),
-              I("Inacti", 31, 40, "treatment of initial penetrations").allow({0, 1, 2, 3, 5, 6}),
-              R("VISs", 41, 60, "critical damping ratio on the normal stiffness").zero_is(0.05).ge(0.0),
-              R("VISF", 61, 80, "critical damping ratio on friction").zero_is(1.0).ge(0.0),
-              R("Bumult", 81, 100, "sorting margin factor; 0 = default by model size").ge(0.0)}),
-        card("card 7",
-             {I("Ifric", 1, 10, "friction law: 0 Coulomb, 1 viscous, 2 Darmstad, 3 Renard")
-                  .allow({0, 1, 2, 3}),
-              I("Ifiltr", 11, 20, "friction force filter").allow({0, 1, 2, 3}),
-              R("Xfreq", 21, 40, "filter coefficient (a frequency for Ifiltr = 3)").ge(0.0),
-              I("Iform", 41, 50, "friction penalty: 1 viscous (total), 2 stiffness (incremental)")
-                  .zero_is(1)
-                  .allow({0, 1, 2}),
-              I("sens_ID", 51, 60,
-                "sensor that switches the interface on (and off again at the sensor's Tstop); 0 = none")
-                  .refs(IdKind::Other)
-                  .versions(120),
-              I("fct_IDF", 61, 70, "function scaling friction with temperature")
-                  .refs(IdKind::Other)
-                  .versions(140)
-                  .not_implemented(),
-              R("AscaleF", 71, 90, "abscissa scale of fct_IDF").versions(140).unused(),
-              I("fric_ID", 91, 100, "/FRICTION definition")
-                  .refs(IdKind::Other)
-                  .versions(2018)
-                  .not_implemented()}),
-        card_if("friction C1..C5 (Ifric > 0)", when_gt("Ifric", 0), type7_friction_c1_c5()),
-        card_if("friction C6 (Ifric > 1)", when_gt("Ifric", 1),
-                {R("C6", 1, 20, "friction law coefficient 6")}),
-        // From 110 the adaptive-meshing card comes before the thermal cards; up to 100 after them.
-        card_v_if("adaptive meshing (Iadm = 2)", 110, kLastVersion, when_eq("Iadm", 2),
-                  type7_adaptive_meshing()),
+              I("Ists", 91, 100, "surface-to-surface option").versions(2026).not_implemented()});
+
+  std::vector<FieldDecl> card3 = {
+      R("Stmin", 1, 20, "smallest pair stiffness (Istf 2..5)").ge(0.0).dims(dim::stiffness),
+      R("Stmax", 21, 40, "largest pair stiffness (Istf 2..5)").zero_is(1e30).ge(0.0).dims(dim::stiffness)};
+  type7_only(card3, {R("mesh_size", 41, 60, "percentage of mesh size for the self-contact gap")
+                         .versions(110)
+                         .not_implemented(),
+                     R("dtmin", 61, 80, "interface minimum time step: a node below it is removed")
+                         .versions(120)
+                         .ge(0.0)
+                         .dims(dim::time),
+                     I("Irem_gap", 81, 90, "deactivate secondary nodes when element size is below the gap")
+                         .versions(120)
+                         .not_implemented(),
+                     I("Irem_i2", 91, 100, "deactivate secondary nodes also tied by a TYPE2 interface")
+                         .versions(130)
+                         .unused()});
+
+  std::vector<FieldDecl> friction = {
+      I("Ifric", 1, 10, "friction law: 0 Coulomb, 1 viscous, 2 Darmstad, 3 Renard").allow({0, 1, 2, 3}),
+      I("Ifiltr", 11, 20, "friction force filter").allow({0, 1, 2, 3}),
+      R("Xfreq", 21, 40, "filter coefficient (a frequency for Ifiltr = 3)").ge(0.0),
+      I("Iform", 41, 50, "friction penalty: 1 viscous (total), 2 stiffness (incremental)")
+          .zero_is(1)
+          .allow({0, 1, 2})};
+  type7_only(
+      friction,
+      {I("sens_ID", 51, 60,
+         "sensor that switches the interface on (and off again at the sensor's Tstop); 0 = none")
+           .refs(IdKind::Other)
+           .versions(120),
+       I("fct_IDF", 61, 70, "function scaling friction with temperature")
+           .refs(IdKind::Other)
+           .versions(140)
+           .not_implemented(),
+       R("AscaleF", 71, 90, "abscissa scale of fct_IDF").versions(140).unused(),
+       I("fric_ID", 91, 100, "/FRICTION definition").refs(IdKind::Other).versions(2018).not_implemented()});
+
+  k.cards = {card("card 1", std::move(card1)), card("card 2", std::move(card2)),
+             card("card 3", std::move(card3))};
+  if (type7)
+    k.cards.push_back(card_if(
+        "card 4 (Icurv = 1 or 2)", when_in("Icurv", 1, 2),
+        {I("node_ID1", 1, 10, "first node defining the curvature").refs(IdKind::Node).not_implemented(),
+         I("node_ID2", 11, 20, "second node defining the curvature").refs(IdKind::Node).not_implemented()}));
+  k.cards.push_back(
+      card(type7 ? "card 5" : "card 4",
+           {R("Stfac", 1, 20, "stiffness scale factor, or the stiffness itself when Istf = 1")
+                .zero_is(1.0)
+                .gt(0.0),
+            R("Fric", 21, 40, "Coulomb friction coefficient").ge(0.0),
+            R("Gapmin", 41, 60, "smallest gap; the constant gap when Igap = 0").ge(0.0).dims(dim::length),
+            R("Tstart", 61, 80, "time the interface starts acting").dims(dim::time),
+            R("Tstop", 81, 100, "time the interface stops acting; 0 = never").dims(dim::time)}));
+  k.cards.push_back(
+      card(type7 ? "card 6" : "card 5",
+           {ibc("IBCX", 8, "release the secondary node's fixed X translation at first impact"),
+            ibc("IBCY", 9, "release the secondary node's fixed Y translation at first impact"),
+            ibc("IBCZ", 10, "release the secondary node's fixed Z translation at first impact"),
+            I("Inacti", 31, 40, "treatment of initial penetrations").allow({0, 1, 2, 3, 5, 6}),
+            R("VISs", 41, 60, "critical damping ratio on the normal stiffness").zero_is(0.05).ge(0.0),
+            R("VISF", 61, 80, "critical damping ratio on friction").zero_is(1.0).ge(0.0),
+            R("Bumult", 81, 100, "sorting margin factor; 0 = default by model size").ge(0.0)}));
+  k.cards.push_back(card(type7 ? "card 7" : "card 6", std::move(friction)));
+  k.cards.push_back(card_if("friction C1..C5 (Ifric > 0)", when_gt("Ifric", 0), type7_friction_c1_c5()));
+  k.cards.push_back(card_if("friction C6 (Ifric > 1)", when_gt("Ifric", 1),
+                            {R("C6", 1, 20, "friction law coefficient 6")}));
+  if (type7) {
+    // From 110 the adaptive-meshing card comes before the thermal cards; up to 100 after them.
+    k.cards.push_back(card_v_if("adaptive meshing (Iadm = 2)", 110, kLastVersion, when_eq("Iadm", 2),
+                                type7_adaptive_meshing()));
+    k.cards.push_back(
         card_v_if("thermal 1 (Ithe = 1)", 100, kLastVersion, when_eq("Ithe", 1),
                   {R("Kthe", 1, 20, "heat exchange coefficient").dims(kHeatTransfer).unused(),
                    I("fct_IDK", 21, 30, "function of the heat exchange coefficient versus pressure")
@@ -1266,20 +1283,28 @@ void add_contact(std::vector<KeywordDecl>& t) {
                    R("AscaleK", 71, 90, "abscissa (pressure) scale of fct_IDK")
                        .versions(140)
                        .dims(dim::pressure)
-                       .unused()}),
+                       .unused()}));
+    k.cards.push_back(
         card_v_if("thermal 2 (Ithe = 1)", 140, kLastVersion, when_eq("Ithe", 1),
                   {R("Frad", 1, 20, "radiation factor").dims(kHeatTransfer).unused(),
                    R("Drad", 21, 40, "largest distance for radiation").dims(dim::length).unused(),
                    R("Fheats", 41, 60, "share of frictional heat given to the secondary side").unused(),
-                   R("Fheatm", 61, 80, "share of frictional heat given to the main side").unused()}),
-        // The 90 layout reads its thermal card for Ithe > 1 (a value radx does not accept).
-        card_v_if("thermal (Ithe > 1)", kAnyVersion, 90, when_gt("Ithe", 1),
-                  {R("Kthe", 1, 20, "heat exchange coefficient").dims(kHeatTransfer).unused(),
-                   R("Tint", 41, 60, "interface temperature (kelvin)").unused()}),
-        card_v_if("adaptive meshing (Iadm = 2)", kAnyVersion, 100, when_eq("Iadm", 2),
-                  type7_adaptive_meshing()),
-    };
-    k.dim_overrides = {{"Stfac", "Istf", {"1"}, dim::stiffness}, {"Xfreq", "Ifiltr", {"3"}, dim::rate}};
+                   R("Fheatm", 61, 80, "share of frictional heat given to the main side").unused()}));
+    // The 90 layout reads its thermal card for Ithe > 1 (a value radx does not accept).
+    k.cards.push_back(card_v_if("thermal (Ithe > 1)", kAnyVersion, 90, when_gt("Ithe", 1),
+                                {R("Kthe", 1, 20, "heat exchange coefficient").dims(kHeatTransfer).unused(),
+                                 R("Tint", 41, 60, "interface temperature (kelvin)").unused()}));
+    k.cards.push_back(card_v_if("adaptive meshing (Iadm = 2)", kAnyVersion, 100, when_eq("Iadm", 2),
+                                type7_adaptive_meshing()));
+  }
+  k.dim_overrides = {{"Stfac", "Istf", {"1"}, dim::stiffness}, {"Xfreq", "Ifiltr", {"3"}, dim::rate}};
+}
+
+void add_contact(std::vector<KeywordDecl>& t) {
+  {
+    KeywordDecl k =
+        kw("/INTER/TYPE7", "node-to-surface penalty contact with a gap", Header::IdUnit, true, "inter_ID");
+    add_type7_cards(k, Type7Layout::Type7);
     t.push_back(std::move(k));
   }
   {
@@ -1329,51 +1354,7 @@ void add_contact(std::vector<KeywordDecl>& t) {
     KeywordDecl k = kw("/INTER/LAGDT/TYPE7",
                        "TYPE7 contact whose pairs switch to Lagrange multipliers below the minimum time step",
                        Header::IdUnit, true, "inter_ID");
-    k.cards = {
-        card("card 1", {I("grnd_IDs", 1, 10, "secondary node group").refs(IdKind::Other).must(),
-                        I("surf_IDm", 11, 20, "main surface").refs(IdKind::Other).must(),
-                        I("Istf", 21, 30, "stiffness definition").allow({0, 1, 2, 3, 4, 5}),
-                        I("Igap", 41, 50, "gap option: 0 constant, 1 variable, 2 variable with scale and cap")
-                            .allow({0, 1, 2}),
-                        multimp().versions(kAnyVersion, 130),
-                        I("Ibag", 61, 70, "airbag vent-hole closure on contact").allow({0, 1}).unused(),
-                        I("Idel", 71, 80, "removal of deleted segments and free secondary nodes")
-                            .allow({-2, -1, 0, 1, 2})}),
-        card("card 2", {R("Fscalegap", 1, 20, "gap scale factor (Igap = 2)").zero_is(1.0).gt(0.0),
-                        R("Gapmax", 21, 40, "largest gap (Igap = 2); 0 = no cap").ge(0.0).dims(dim::length)}),
-        card("card 3", {R("Stmin", 1, 20, "smallest pair stiffness (Istf 2..5)").ge(0.0).dims(dim::stiffness),
-                        R("Stmax", 21, 40, "largest pair stiffness (Istf 2..5)")
-                            .zero_is(1e30)
-                            .ge(0.0)
-                            .dims(dim::stiffness)}),
-        card("card 4",
-             {R("Stfac", 1, 20, "stiffness scale factor, or the stiffness itself when Istf = 1")
-                  .zero_is(1.0)
-                  .gt(0.0),
-              R("Fric", 21, 40, "Coulomb friction coefficient").ge(0.0),
-              R("Gapmin", 41, 60, "smallest gap; the constant gap when Igap = 0").ge(0.0).dims(dim::length),
-              R("Tstart", 61, 80, "time the interface starts acting").dims(dim::time),
-              R("Tstop", 81, 100, "time the interface stops acting; 0 = never").dims(dim::time)}),
-        card("card 5",
-             {ibc("IBCX", 8, "release the secondary node's fixed X translation at first impact"),
-              ibc("IBCY", 9, "release the secondary node's fixed Y translation at first impact"),
-              ibc("IBCZ", 10, "release the secondary node's fixed Z translation at first impact"),
-              I("Inacti", 31, 40, "treatment of initial penetrations").allow({0, 1, 2, 3, 5, 6}),
-              R("VISs", 41, 60, "critical damping ratio on the normal stiffness").zero_is(0.05).ge(0.0),
-              R("VISF", 61, 80, "critical damping ratio on friction").zero_is(1.0).ge(0.0),
-              R("Bumult", 81, 100, "sorting margin factor; 0 = default by model size").ge(0.0)}),
-        card("card 6", {I("Ifric", 1, 10, "friction law: 0 Coulomb, 1 viscous, 2 Darmstad, 3 Renard")
-                            .allow({0, 1, 2, 3}),
-                        I("Ifiltr", 11, 20, "friction force filter").allow({0, 1, 2, 3}),
-                        R("Xfreq", 21, 40, "filter coefficient (a frequency for Ifiltr = 3)").ge(0.0),
-                        I("Iform", 41, 50, "friction penalty: 1 viscous (total), 2 stiffness (incremental)")
-                            .zero_is(1)
-                            .allow({0, 1, 2})}),
-        card_if("friction C1..C5 (Ifric > 0)", when_gt("Ifric", 0), type7_friction_c1_c5()),
-        card_if("friction C6 (Ifric > 1)", when_gt("Ifric", 1),
-                {R("C6", 1, 20, "friction law coefficient 6")}),
-    };
-    k.dim_overrides = {{"Stfac", "Istf", {"1"}, dim::stiffness}, {"Xfreq", "Ifiltr", {"3"}, dim::rate}};
+    add_type7_cards(k, Type7Layout::LagdtType7);
     t.push_back(std::move(k));
   }
   {
