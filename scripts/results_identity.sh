@@ -29,6 +29,7 @@ capture() {
   [[ -e "$out" ]] && { echo "error: $out exists; give a new folder" >&2; exit 2; }
   mkdir -p "$out/decks" "$out/impact"
   out=$(cd "$out" && pwd)
+  pwd > "$out/source_root"  # listings name the decks by their path: compare maps it away
   # regress exits 1 when a deck misses its reference; the outputs are what is compared here, so go on.
   "$bin/radx" regress decks -j 2 --keep --work "$out/decks" > "$out/regress.log" 2>&1 || true
   for isolid in 1 24; do
@@ -44,6 +45,11 @@ capture() {
 
 compare() {
   local a=$1 b=$2 bad=0 n=0
+  local src_a src_b
+  src_a=/nonexistent src_b=/nonexistent
+  if [[ -f "$a/source_root" && -f "$b/source_root" ]]; then
+    src_a=$(cat "$a/source_root") src_b=$(cat "$b/source_root")
+  fi
   while IFS= read -r rel; do
     n=$((n + 1))
     if [[ ! -e "$b/$rel" ]]; then
@@ -71,10 +77,10 @@ EOF
           echo "differs: $rel"; bad=1
         fi ;;
       *.out)
-        # A listing names its folder and times its stages: neither is a result.
+        # A listing names its folder and the source tree's decks, and times its stages: none is a result.
         local timing='wall time|starter time|writing time|us per element per cycle|% of the wall time|elapsed|seconds'
-        if ! diff -q <(sed "s#$a#ROOT#g" "$a/$rel" | grep -Ev "$timing") \
-          <(sed "s#$b#ROOT#g" "$b/$rel" | grep -Ev "$timing") > /dev/null; then
+        if ! diff -q <(sed "s#$a#ROOT#g; s#$src_a#SRC#g" "$a/$rel" | grep -Ev "$timing") \
+          <(sed "s#$b#ROOT#g; s#$src_b#SRC#g" "$b/$rel" | grep -Ev "$timing") > /dev/null; then
           echo "differs: $rel"; bad=1
         fi ;;
     esac
