@@ -1,4 +1,5 @@
-"""A cube dropped on a plate with each /CTCLAW normal law (contact-laws.md 2 and 6) against the closed forms.
+"""A cube dropped on a plate with each /CTCLAW normal law (docs/theory/contact-laws.md 2 and 6) against the
+closed forms.
 
 usage: /usr/bin/python3 check_ctclaw_drop.py --radx RADX --decks decks/verification/ctclaw_drop/*_0000.rad
            --out DIR
@@ -35,7 +36,7 @@ Tolerances (what they mean):
   * the lower-face nodes stay level at the peak (spread below 1 % of the gap): the rigid-body premise;
   * the starter listing's automatic stiffness density K / A_s (Kc = -1, pe) equals K over the A_s computed here
     (within its 6 printed digits): the checks' area is the starter's;
-  * energy balance (verification.md C): the run's energy error within 1 %.
+  * energy balance (docs/theory/verification.md C): the run's energy error within 1 %.
 """
 import math
 import os

@@ -8,7 +8,7 @@ Checks, from the run's NAME_summary.json and starter listing:
   * the laws acted: the contact energies (elastic, damping, friction) add up to more than 1 % of the initial
     energy (the block's impact is carried by interface 1's law);
   * the energy balance closes within 1 % (issue 12: "the balance closes within 1 % on the law decks"; the error
-    is the engine's E / (E0 + W) - 1 with contact energies included, verification.md C).
+    is the engine's E / (E0 + W) - 1 with contact energies included, docs/theory/verification.md C).
 """
 import argparse
 import json
