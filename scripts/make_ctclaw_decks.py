@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Write the solver-level verification decks of the /CTCLAW contact and friction laws (docs/theory/contact-laws.md
-section 6; issue 12) in Radioss block format (fixed columns).
+section 6) in Radioss block format (fixed columns).
 
 Each case gets a folder decks/verification/<case>/ with its starter and engine decks and a README.md giving
 the closed form and what the check compares. The decks are committed as text; this script is how they were

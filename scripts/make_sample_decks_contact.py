@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Write the contact, rigid-body and mass-scaling sample decks under decks/ (issue 13): small decks an engineer
+"""Write the contact, rigid-body and mass-scaling sample decks under decks/: small decks an engineer
 opens to learn radx, each showing one feature, with a README (model, what to look at in ParaView, the expected
 physics and where it comes from, the figures radx gave) and a regression reference NAME.ref.
 

@@ -2278,8 +2278,8 @@ void add_foam_tab(std::vector<KeywordDecl>& t) {
   t.push_back(std::move(k));
 }
 
-// Issue 15's materials. /MAT/VOID and /MAT/RIGID compute no internal force (OpenRadioss hm_read_mat00.F,
-// hm_read_mat13.F): their E and nu give the contact stiffness and, for the rigid law, a stable step only.
+// /MAT/VOID and /MAT/RIGID compute no internal force (OpenRadioss hm_read_mat00.F, hm_read_mat13.F): their
+// E and nu give the contact stiffness and, for the rigid law, a stable step only.
 void add_void_and_rigid(std::vector<KeywordDecl>& t) {
   {
     KeywordDecl k = kw("/MAT/LAW0", "void material: no stiffness, for contact surfaces and mass-less parts",

@@ -62,7 +62,7 @@ enum class MaterialLaw : std::uint8_t {
   JohnsonCook = 2,
   PlasTab = 36,
   PlasBrit = 27,  // /MAT/PLAS_BRIT (shells only)
-  // Issue 15: elements of these laws compute no internal force (OpenRadioss forint.F skips laws 0 and 13).
+  // Elements of these laws compute no internal force (OpenRadioss forint.F skips laws 0 and 13).
   // A void element only carries its mass (rho_I V, 0 when no density is given) and its contact stiffness
   // (E, nu); a rigid one is part of the rigid body the starter builds from the connected law-13 elements.
   Void = 0,

@@ -3,7 +3,7 @@
 usage: /usr/bin/python3 check_results_run.py --radx RADX --deck NAME_0000.rad --out DIR
            --paraview-check check_results_paraview.py
 
-issue 4 / docs/theory/results-format.md: the states are written at the first cycle whose time reaches each /ANIM/DT time
+docs/theory/results-format.md: the states are written at the first cycle whose time reaches each /ANIM/DT time
 (Tstart, Tstart + dT, ... up to Tstop and the end time), plus the first and the last cycle. This script derives
 those due times from the engine deck itself (its own small reader of /RUN and /ANIM/DT), the arrays from the
 /ANIM names (its own table of Radioss names, written from docs/theory/results-format.md), and the cell count and VTK
