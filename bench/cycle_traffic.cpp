@@ -1,4 +1,4 @@
-// Bytes moved per element-cycle (issue 16): the memory traffic of one engine cycle, summed from the arrays
+// Bytes moved per element-cycle: the memory traffic of one engine cycle, summed from the arrays
 // the engine actually holds for a model (the starter's model file and the engine deck), so the figure follows
 // the data layout as it changes. Prints each pass of the cycle, each array it reads or writes and its bytes,
 // the total per element-cycle and, given the measured bandwidth (bench/stream_bandwidth.sh, triad) and the

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Bytes moved per element-cycle on the impact model (issue 16; bench/cycle_traffic.cpp): writes the model
-# (bench/gen_shell_plate.py --n N --impact --block N/10, issue 16's model at N = 200), runs the starter, and
+# Bytes moved per element-cycle on the impact model (bench/cycle_traffic.cpp): writes the model
+# (bench/gen_shell_plate.py --n N --impact --block N/10, the impact benchmark at N = 200), runs the starter, and
 # prints every array each pass of a cycle reads or writes with its bytes, the total per element-cycle and the
 # traffic limit (bytes / bandwidth). The bandwidth is --bandwidth GB/s, or else the 1-thread triad of
 # bench/stream_bandwidth.cpp measured here; --us gives a measured cost (us per element-cycle, from an engine

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Contact benchmark (issue 5): the engine benchmark plate (N x N Johnson-Cook shells, default N = 200) at rest,
+# Contact benchmark: the engine benchmark plate (N x N Johnson-Cook shells, default N = 200) at rest,
 # hit at 10 m/s by an aluminium block of 10 x 10 x 4 bricks through two TYPE7 interfaces (block nodes on the
 # plate, plate nodes on the block; bench/gen_shell_plate.py --impact). Prints, on 1 and 2 threads, the cost in
 # microseconds per element per cycle and the share of the wall time spent in contact (search and forces), as

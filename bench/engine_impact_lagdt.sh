@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# LAGDT impact benchmark (issue 9): the impact benchmark deck of bench/engine_impact.sh (an N x N Johnson-Cook
+# LAGDT impact benchmark: the impact benchmark deck of bench/engine_impact.sh (an N x N Johnson-Cook
 # plate, default N = 200, hit at 10 m/s by a 10 x 10 x 4 aluminium block through two interfaces) in three
 # variants, each on one thread:
 #   type7    plain /INTER/TYPE7: the contact pairs set the step once the block touches;

@@ -2,7 +2,7 @@
 # Engine benchmark: a clamped 1 m steel plate of N x N Johnson-Cook shells (default N = 200: 5 mm
 # elements, 40,000 shells), 1 mm thick, 5 points through the thickness, every node starting at 1 m/s,
 # about 1,500 cycles. Prints the cost in microseconds per element per cycle on 1 and 2 threads, the
-# speed-up and the peak memory per element. Targets (issue 3): <= 0.2 us/element/cycle on one thread,
+# speed-up and the peak memory per element. Targets: <= 0.2 us/element/cycle on one thread,
 # >= 1.8x on 2 threads, <= 2 KB per element.
 # Usage: bench/engine_plate.sh [N] [ISHELL]   (needs a built tree: scripts/build.sh)
 #   ISHELL: the plate's shell formulation, 1 (default, Belytschko-Tsay), 24 (QEPH) or 12 (QBAT), so that the

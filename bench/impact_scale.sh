@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# Scale series of the impact benchmark (issue 16): the N x N Johnson-Cook plate of Belytschko-Tsay shells
+# Scale series of the impact benchmark: the N x N Johnson-Cook plate of Belytschko-Tsay shells
 # (5 points) hit at 10 m/s by a block of one-point bricks through two TYPE7 interfaces
 # (bench/gen_shell_plate.py --impact), at N = 200, 400, 800 and 1600 (about 40 k, 160 k, 640 k and 2.6 M
 # elements). The block keeps its share of the elements and its footprint: B = N/10 bricks a side, 4 deep,
-# edge 2000/N mm (10, 5, 2.5, 1.25 mm), a 200 x 200 mm block: 4 % bricks beside the shells (N = 200 is issue
-# 16's model). Each run lasts 0.6 x --cycles (default 150) of the plate's shell steps: about --cycles cycles,
-# as contact, once it acts, halves the step (the table gives the cycles run). The block starts 20 cycles of
-# travel (at 10 m/s) above the larger computed gap (interface 1: min(t, h/2); interface 2: a tenth of the
-# brick edge), measured from the plate's mid-surface (the generator's --gap), so contact acts from about cycle
-# 20 at every size. Animation output is taken out of the engine deck (the run measures the cycle, not the
-# HDF5 writer); the time history stays.
+# edge 2000/N mm (10, 5, 2.5, 1.25 mm), a 200 x 200 mm block: 4 % bricks beside the shells (N = 200 is the
+# impact model of the other benchmarks). Each run lasts 0.6 x --cycles (default 150) of the plate's shell
+# steps: about --cycles cycles, as contact, once it acts, halves the step (the table gives the cycles run).
+# The block starts 20 cycles of travel (at 10 m/s) above the larger computed gap (interface 1: min(t, h/2);
+# interface 2: a tenth of the brick edge), measured from the plate's mid-surface (the generator's --gap), so
+# contact acts from about cycle 20 at every size. Animation output is taken out of the engine deck (the run
+# measures the cycle, not the HDF5 writer); the time history stays.
 #
 # For each size: the starter's wall time and peak memory; for each thread count: the engine's wall and CPU
 # seconds (user + system: the figure that holds when other jobs share the cores), microseconds per

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# radx beside OpenRadioss on issue 16's impact model (bench/gen_shell_plate.py --n 200 --impact --block 20
+# radx beside OpenRadioss on the impact model (bench/gen_shell_plate.py --n 200 --impact --block 20
 # --tstop 7e-4: a 200 x 200 Johnson-Cook plate of Belytschko-Tsay shells hit by a 20 x 20 x 4 block of
 # one-point bricks through two TYPE7 interfaces, 0.7 ms, the deck's animation and time-history output kept),
 # on 1 and 2 threads, on an idle machine and with one core kept busy by `yes > /dev/null` (started before the

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Results-writing benchmark. Issue requirement: "Writing a state must not dominate a run: at most 10 % of the
+# Results-writing benchmark. The requirement: "Writing a state must not dominate a run: at most 10 % of the
 # wall time of the engine benchmark at 20 states, and a state of one million nodes in under 1 s."
 #
 # 1. The engine benchmark of bench/engine_plate.sh (N x N clamped Johnson-Cook shell plate, N = 200, about

@@ -1,4 +1,4 @@
-// STREAM-like memory bandwidth of this machine (issue 16): the four kernels of McCalpin's STREAM on three
+// STREAM-like memory bandwidth of this machine: the four kernels of McCalpin's STREAM on three
 // double arrays a, b, c of `n` elements each (default 50,000,000: 400 MB per array, 1.2 GB in all), best of
 // `reps` repetitions (the first one a warm-up, left out), on 1 and 2 threads (OpenMP, static schedule, each
 // thread touching its own share of the arrays first, so pages sit where they are used). Why so large: this

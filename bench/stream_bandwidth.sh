@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Memory bandwidth of this machine (issue 16), STREAM-like: copy, scale, add and triad on three double
+# Memory bandwidth of this machine, STREAM-like: copy, scale, add and triad on three double
 # arrays of 400 MB each (beyond the 508 MB last-level cache this machine reports) (bench/stream_bandwidth.cpp), best of 10 repetitions, on 1 and 2 threads, in GB/s
 # (bytes counted as STREAM counts them; the write-allocate read is in a separate column). The triad figure is
 # the bandwidth the traffic limit of the engine cycle uses (bench/cycle_traffic.sh, docs/performance.md).

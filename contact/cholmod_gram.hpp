@@ -1,6 +1,7 @@
 // Sparse factorisation of S = A A^T + beta I with CHOLMOD (SuiteSparse), for the Lagrange-multiplier
-// system of switched contact pairs (type7-lagdt.md section 6): A = L M^-1/2, so S = L M^-1 L^T is formed
-// by CHOLMOD itself (cholmod_factorize_p on an unsymmetric A factors beta I + A A^T) and never assembled.
+// system of switched contact pairs (docs/theory/type7-lagdt.md section 6): A = L M^-1/2, so S = L M^-1 L^T is
+// formed by CHOLMOD itself (cholmod_factorize_p on an unsymmetric A
+// factors beta I + A A^T) and never assembled.
 //
 // Ownership: the object owns its cholmod_common (cholmod_start / cholmod_finish), the matrix A, the
 // factor and the solve workspaces; nothing is shared between objects, so two solvers may run side by side.

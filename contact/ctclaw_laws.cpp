@@ -1,4 +1,4 @@
-// The /CTCLAW law family (shared/spec/contact-laws.md sections 2 and 3), per pair, no state.
+// The /CTCLAW law family (docs/theory/contact-laws.md sections 2 and 3), per pair, no state.
 //
 // u: overclosure (m), positive when the surfaces overlap (u = p, the penetration into the TYPE7 gap). Each
 // normal law returns P(u) >= 0 (Pa) and Kc(u) = dP/du (Pa/m); the pair's force is P A_s and its stiffness

@@ -1,4 +1,4 @@
-// The /CTCLAW contact and friction law family (shared/spec/contact-laws.md) as pure functions: a normal law
+// The /CTCLAW contact and friction law family (docs/theory/contact-laws.md) as pure functions: a normal law
 // gives the contact pressure and its tangent stiffness density at an overclosure, a friction law the
 // tangential force of one pair. No state, no allocation: the penalty kernel and the Lagrange-multiplier
 // friction call them per pair, with the law resolved for the pair's stiffness and area (PairLaw).
@@ -42,7 +42,7 @@ PairLaw resolve_pair_law(const model::ContactLaw& law, const model::Model& m, do
 double exponential_lambda(double kc_auto, double pe);
 double exponential_knee(double pz, double lambda, double kc_max);
 
-// The normal laws of contact-laws.md section 2.
+// The normal laws of docs/theory/contact-laws.md section 2.
 Pressure linear_pressure(double kc, double u);
 Pressure exponential_pressure(double pz, double lambda, double kc_max, double u_knee, double u);
 Pressure tabulated_pressure(std::span<const double> gap, std::span<const double> pressure, bool cubic,

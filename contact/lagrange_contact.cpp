@@ -1,5 +1,5 @@
-// Lagrange multipliers of switched LAGDT pairs (type7-lagdt.md section 6), one call per cycle after a0 = f /
-// m.
+// Lagrange multipliers of switched LAGDT pairs (docs/theory/type7-lagdt.md section 6), one call per cycle
+// after a0 = f / m.
 //
 // Row r of a pair (secondary node s, contact point sum h_j x_j, unit normal n from the surface to s): the
 // normal gap rate  gdot_r = J_r v = n . (v_s - sum_j h_j v_j), i.e. J_r holds +n on s and -h_j n on each main
@@ -30,9 +30,9 @@
 // Gauss-Seidel sweep): the force that stops the tangential relative velocity at the end of the step,
 //     F_stick,d = -v_t,d / (dt12 w_d),  w_d = w_s,d + sum_j h_j^2 w_j,d  (w the inverse masses),
 // projected on the tangent plane and scaled down to mu lambda when longer (sliding). A /CTCLAW friction law
-// bounds it instead by its own force at the slip speed v_t and the pressure lambda / A_s (contact-laws.md
-// section 5): exact Coulomb mu lambda, the regularised laws their smaller force at low slip; the
-// one-directional laws keep only the component along the segment's first tangent.
+// bounds it instead by its own force at the slip speed v_t and the pressure lambda / A_s
+// (docs/theory/contact-laws.md section 5): exact Coulomb mu lambda, the regularised laws their smaller force
+// at low slip; the one-directional laws keep only the component along the segment's first tangent.
 #include "contact/lagrange_contact.hpp"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
-// Lagrange multipliers for switched LAGDT contact pairs (type7-lagdt.md section 6; architecture.md cycle step
-// 6). Contact does not know the time loop: the engine hands over views of the node state after a0 = f / m and
-// the steps, and gets back corrected accelerations and each pair's multiplier and friction force.
-// The equations are in lagrange_contact.cpp.
+// Lagrange multipliers for switched LAGDT contact pairs (docs/theory/type7-lagdt.md section 6;
+// docs/architecture.md section 3, step 6). Contact does not know the time loop: the engine hands over views
+// of the node state after a0 = f / m and the steps, and gets back corrected accelerations and each pair's
+// multiplier and friction force. The equations are in lagrange_contact.cpp.
 #pragma once
 
 #include <array>

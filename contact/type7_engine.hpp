@@ -1,12 +1,12 @@
-// TYPE7 contact in the engine: the penalty path of /INTER/TYPE7 and /INTER/LAGDT/TYPE7 (type7-lagdt.md
-// sections 3 to 5) for every interface of the model, one call per cycle (architecture.md step 2).
-// Contact does not know the time loop: it receives views of the node state and the time, and returns its
-// nodal forces (in its own buffer, which the engine adds to the assembled forces), its time-step vote and
-// its energies. The equations are in the opening comment of type7_engine.cpp.
-// LAGDT: the pairs of /INTER/LAGDT/TYPE7 interfaces whose time step would fall below the Tmin of
-// /DT/INTER/CST (or /DT/INTER/LAG) leave the penalty path for the cycle (no force, no stiffness, no time-step
-// vote) and become rows of the Lagrange-multiplier system that lagrange_correction() solves at cycle step 6
-// (contact/lagrange_contact.hpp).
+// TYPE7 contact in the engine: the penalty path of /INTER/TYPE7 and /INTER/LAGDT/TYPE7
+// (docs/theory/type7-lagdt.md sections 3 to 5) for every interface of the model, one call per cycle
+// (docs/architecture.md section 3, step 2). Contact does not know the time loop: it receives views of the
+// node state and the time, and returns its nodal forces (in its own buffer, which the engine adds to the
+// assembled forces), its time-step vote and its energies. The equations are in the opening comment of
+// type7_engine.cpp. LAGDT: the pairs of /INTER/LAGDT/TYPE7 interfaces whose time step would fall below the
+// Tmin of /DT/INTER/CST (or /DT/INTER/LAG) leave the penalty path for the cycle (no force, no stiffness, no
+// time-step vote) and become rows of the Lagrange-multiplier system that lagrange_correction() solves at
+// cycle step 6 (contact/lagrange_contact.hpp).
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// TYPE7 pair laws (shared/spec/type7-lagdt.md 4.3 to 4.5), per pair, no state:
+// TYPE7 pair laws (docs/theory/type7-lagdt.md 4.3 to 4.5), per pair, no state:
 //
 // Normal penalty, 4.3, with p the penetration into the gap g and x = p / g in [0, 1):
 //   F_n = K p g / (g - p)                      force along the contact normal

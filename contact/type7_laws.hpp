@@ -1,7 +1,7 @@
-// The TYPE7 pair laws as pure functions (type7-lagdt.md 4.3 to 4.5): the hyperbolic penalty force, its
-// tangent stiffness and stored energy, the VISs damping coefficient, the friction coefficient of each Ifric
-// law, the friction filters and the two tangential force formulations. No state, no allocation: the
-// penalty kernel calls them per pair.
+// The TYPE7 pair laws as pure functions (docs/theory/type7-lagdt.md 4.3 to 4.5): the hyperbolic penalty
+// force, its tangent stiffness and stored energy, the VISs damping coefficient, the friction coefficient of
+// each Ifric law, the friction filters and the two tangential force formulations. No state, no allocation:
+// the penalty kernel calls them per pair.
 #pragma once
 
 #include <array>

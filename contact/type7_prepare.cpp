@@ -1,4 +1,4 @@
-// TYPE7 starter computations (shared/spec/type7-lagdt.md):
+// TYPE7 starter computations (docs/theory/type7-lagdt.md):
 //
 // Gap, 4.1. Igap 0: g = Gapmin, with Gapmin = min(t, l/10, lmin/2) when the input is 0 (t the mean
 //   thickness of the main shells, l the mean side of the main bricks, lmin the shortest side of all

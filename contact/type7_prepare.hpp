@@ -1,6 +1,6 @@
 // What the starter computes for each TYPE7 / LAGDT interface before the engine runs:
-// the gap (type7-lagdt.md 4.1), the stiffness per pair family (4.2) and the initial penetrations with
-// their Inacti treatment (4.6). Inputs and outputs are the model's interface records.
+// the gap (docs/theory/type7-lagdt.md 4.1), the stiffness per pair family (4.2) and the initial penetrations
+// with their Inacti treatment (4.6). Inputs and outputs are the model's interface records.
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// Candidate search of a TYPE7 interface (shared/spec/type7-lagdt.md 4.8; section 5, step 2).
+// Candidate search of a TYPE7 interface (docs/theory/type7-lagdt.md 4.8; section 5, step 2).
 //
 // Candidate. A secondary node s and a main segment m (nodes n1..n4, n4 == n3 for a triangle) form a
 // candidate when s lies in the axis-aligned box of m's nodes enlarged on every side by e = gap_max + margin,

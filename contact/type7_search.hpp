@@ -1,5 +1,5 @@
-// Candidate search of a TYPE7 interface (type7-lagdt.md 4.8): a voxel (bucket) sort of the secondary
-// nodes against the main segments' boxes enlarged by the largest pair gap and a margin
+// Candidate search of a TYPE7 interface (docs/theory/type7-lagdt.md 4.8): a voxel (bucket) sort of the
+// secondary nodes against the main segments' boxes enlarged by the largest pair gap and a margin
 // Bumult * (mean main segment edge length). Candidates are kept between sorts; a new sort is due when the
 // nodes have moved, since the last sort, by more than the margin can absorb (two nodes approaching each
 // other each use half of it). Cost O(N + M) per sort in the number of nodes and segments.

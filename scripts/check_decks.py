@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent column and consistency checker for the decks under decks/ (plain python3).
 
-This is NOT radx's reader. It is a small second implementation, written from deck-format.md, used to check
+This is NOT radx's reader. It is a small second implementation, written from docs/theory/deck-format.md, used to check
 the hand-made and generated decks:
 
   * every line is at most 100 columns and has no tab;
@@ -12,8 +12,8 @@ the hand-made and generated decks:
     where the starter sees them: in work units and moved by the transforms of their submodel.
 
 Deck versions: the formats 90, 100, 110, 120, 130, 140 and 2017 to 2026. The layouts of 2017 and newer come
-from deck-format.md; those of 90 to 140 from the FORMAT(radiossNNN) blocks OpenRadioss reads each keyword with
-(the block of the highest version at or below the deck's), restated here as facts about the file format.
+from docs/theory/deck-format.md; those of 90 to 140 from the FORMAT(radiossNNN) blocks OpenRadioss reads each keyword
+with (the block of the highest version at or below the deck's), restated here as facts about the file format.
 
 Problems are reported with the RX codes of parser/reading/diagnostics.hpp. For decks that carry `# expect:` lines
 (decks/invalid/), the set of problems found must equal the set expected; for the other decks it must be
@@ -71,7 +71,7 @@ VERSIONS = (90, 100, 110, 120, 130, 140) + tuple(range(2017, 2027))
 
 
 # ---------------------------------------------------------------------------------------------------
-# Starter keyword layouts (deck-format.md), by deck version v
+# Starter keyword layouts (docs/keywords.md), by deck version v
 
 
 def def_shell(v):
@@ -470,7 +470,7 @@ def grav(v):
 
 
 def rwall_plane(v):
-    """/RWALL/PLANE (deck-format.md): card 2 depends on Slide, card 3 on node_ID; Iform only from 2026."""
+    """/RWALL/PLANE (docs/keywords.md): card 2 depends on Slide, card 3 on node_ID; Iform only from 2026."""
     c1 = [F("node_ID", "I", 1, 10), F("Slide", "I", 11, 20), F("grnd_ID1", "I", 21, 30), F("grnd_ID2", "I", 31, 40)]
     if v >= 2026:
         c1.append(F("Iform", "I", 41, 50))
@@ -537,7 +537,7 @@ def sensor_time(v):
 
 
 def rbody(v):
-    """/RBODY (deck-format.md): cards 1-4; Ifail on card 4 from 2021, and card 5 when it is set. Card 4 starts in
+    """/RBODY (docs/keywords.md): cards 1-4; Ifail on card 4 from 2021, and card 5 when it is set. Card 4 starts in
     the 110 layout with Ioptoff alone; Iexpams from 2017."""
     cards = [card([F("node_ID", "I", 1, 10), F("sens_ID", "I", 11, 20), F("skew_ID", "I", 21, 30),
                    F("Ispher", "I", 31, 40), F("Mass", "R", 41, 60), F("grnd_ID", "I", 61, 70),
@@ -574,7 +574,7 @@ SHELL_REC = [F("shell_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 
 BRICK_REC = [F("brick_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(8)]
 SPRING_REC = [F("spring_ID", "I", 1, 10), F("n1", "I", 11, 20), F("n2", "I", 21, 30), F("n3", "I", 31, 40)]
 TETRA_REC = [F("tetra_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)]
-# /SH3N as OpenRadioss cuts the card (deck-format.md): PHI 71-90, Thick 91-100.
+# /SH3N as OpenRadioss cuts the card (docs/keywords.md): PHI 71-90, Thick 91-100.
 SH3N_REC = [F("tria_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(3)] + \
     [F("PHI", "R", 71, 90), F("Thick", "R", 91, 100)]
 FUNCT_REC = reals("X", "Y")
@@ -635,7 +635,7 @@ STARTER = {
     "/UNIT/LENGTH": ("word", False, lambda v: [], None, None),
     "/UNIT/TIME": ("word", False, lambda v: [], None, None),
     "/UNIT": ("id", True, unit_card, None, None),
-    # control cards radx accepts and ignores (layouts of deck-format.md 2; /SHFRA/V4 has no data)
+    # control cards radx accepts and ignores (layouts of docs/keywords.md; /SHFRA/V4 has no data)
     "/ANALY": ("none", False, analy, None, None),
     "/MEMORY": ("none", False, lambda v: [card([F("MEMORY", "I", 1, 10), F("REAL", "R", 21, 40)])], None, None),
     "/ANIM/VERS": ("none", False, lambda v: [card([F("ANIM_VERS", "I", 1, 10)])], None, None),
@@ -739,7 +739,7 @@ STARTER = {
     "/RANDOM": ("none", False, random_card, None, None),
     "/RANDOM/GRNOD": ("id", False, random_card, None, None),
     "/TH/ACCEL": ("id", True, lambda v: [], "thids", ID_REC),
-    # contact-laws.md section 5: the interface, then the law string on the lines up to the next keyword
+    # docs/theory/contact-laws.md section 5: the interface, then the law string on the lines up to the next keyword
     "/CTCLAW": ("id", True, lambda v: [card([F("inter_ID", "I", 1, 10)])], "text", None),
 }
 
@@ -1745,7 +1745,7 @@ def formulations(tables):
                 if (val(o, "fct_ID1" + d, 0) != 0 and h not in SPRING_H_TYPE8) or h == 8:
                     bad.append("H" + d)
         elif o["path"] in ("/PROP/SHELL", "/PROP/TYPE1"):
-            # Ishell 1, 4 (warp correction), 12 (QBAT) and 24 (QEPH; 22 and 23 run as 24, elements.md 1.1)
+            # Ishell 1, 4 (warp correction), 12 (QBAT) and 24 (QEPH; 22 and 23 run as 24, docs/theory/elements.md 1.1)
             if "/SHELL" in kinds and resolved(o, "Ishell", "/DEF_SHELL", 1) not in (1, 4, 12, 22, 23, 24):
                 bad.append("Ishell")
             if "/SH3N" in kinds and resolved(o, "Ish3n", "/DEF_SHELL", 2) not in (1, 2):
@@ -2313,8 +2313,8 @@ def tied_interfaces(tables):
 
 
 def contact_laws(tables):
-    """Contact laws (/CTCLAW, contact-laws.md sections 4 and 5; build_interfaces.cpp): the interface exists, the
-    law string reads."""
+    """Contact laws (/CTCLAW, docs/theory/contact-laws.md sections 4 and 5; build_interfaces.cpp): the interface exists,
+    the law string reads."""
     I, functs, inters, m, need = tables.issue, tables.functs, tables.inters, tables.m, tables.need
     for o in m.of("/CTCLAW"):
         need(o, "inter_ID", inters, "interface", zero_ok=False)
@@ -2479,7 +2479,7 @@ def time_history(tables):
 HEX_FACES = ((1, 4, 3, 2), (5, 6, 7, 8), (1, 2, 6, 5), (2, 3, 7, 6), (3, 4, 8, 7), (4, 1, 5, 8))  # 1-based, outward
 
 
-# The law string of /CTCLAW, read from contact-laws.md section 4 as a table of laws and their parameters:
+# The law string of /CTCLAW, read from docs/theory/contact-laws.md section 4 as a table of laws and their parameters:
 # "req" required, "opt" optional, "multi" the power terms kp<m>=<value>. Values: a rule on the number.
 LAW_NORMAL = {1: {"kc": "req"}, 2: {"pz": "req", "lambda": "opt", "pe": "opt", "kcmax": "opt"},
               3: {"curveid": "req", "cubic": "opt"}, 4: {"kp": "multi"}}
@@ -2866,7 +2866,7 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
     return groups, members, surf_nodes, boxes
 
 
-# Node groups (/GRNOD/..., deck-format.md section 2 and keywords.md), resolved to node ids:
+# Node groups (/GRNOD/..., docs/theory/deck-format.md section 2 and keywords.md), resolved to node ids:
 #   * NODE: the listed nodes; PART: the nodes of the parts' elements, a negative id removes;
 #   * GRNOD: union of node groups, a negative id removes (RX507 for a group that reaches itself, at the keyword
 #     line of the group found again);

@@ -2,7 +2,7 @@
 """Write the block-on-plate decks in Radioss block format (fixed columns).
 
 The decks are committed as text; this script is how they were made, so that every field sits at its
-exact columns (deck-format.md). Edit the script and regenerate rather than editing the decks by hand.
+exact columns (docs/theory/deck-format.md). Edit the script and regenerate rather than editing the decks by hand.
 
     python3 scripts/make_block_on_plate.py                  # both variants, into decks/
     python3 scripts/make_block_on_plate.py --variant lagdt  # only the /INTER/LAGDT/TYPE7 variant
@@ -159,8 +159,8 @@ def check_geometry(nodes, shell_list, brick_list):
 
 
 RUN_NAMES = {"penalty": "BLOCK_ON_PLATE", "lagdt": "BLOCK_ON_PLATE_LAGDT", "ctclaw": "BLOCK_ON_PLATE_CTCLAW"}
-# The /CTCLAW variant's laws (contact-laws.md; Mg, mm, s: pressures in MPa, Kc in MPa/mm, CtLin in MPa s/mm):
-# on the block's nodes, an exponential pressure of 0.01 MPa at the gap's surface working at 200 MPa (lambda =
+# The /CTCLAW variant's laws (docs/theory/contact-laws.md; Mg, mm, s: pressures in MPa, Kc in MPa/mm, CtLin in MPa
+# s/mm): on the block's nodes, an exponential pressure of 0.01 MPa at the gap's surface working at 200 MPa (lambda =
 # Kc_auto / pe), stiffening to at most 1e5 MPa/mm, with arctangent friction mu 0.1 reaching half of mu p at a
 # slip of 1 m/s (atan(CtLin s) = pi/4 at CtLin s = 1; a stiffer CtLin is a stiffer dashpot and a smaller step);
 # on the plate's nodes the automatic bilinear law (the interface's stiffness K / A_s) with exact Coulomb
@@ -231,7 +231,7 @@ def starter_deck(variant):
     interface(d, 2, "Plate nodes on block outer faces", lagdt, grnod=3, surf=2, istf=0, inacti=0, fric=0.2, iform=2,
               viss=0.0)
     if variant == "ctclaw":
-        d.raw("#  The interfaces' normal and friction laws replaced by the /CTCLAW family (contact-laws.md)")
+        d.raw("#  The interfaces' normal and friction laws replaced by /CTCLAW laws (docs/theory/contact-laws.md)")
         for iid, law in CTCLAW_LAWS.items():
             d.card("/CTCLAW", 10 + iid, "Law of interface %d" % iid, inter_ID=iid, law=law)
     d.ruler()
@@ -269,8 +269,8 @@ def engine_deck(variant, lagdt_tmin=1e-6):
     e.raw("/ANIM/ELEM/VONM", "/ANIM/ELEM/EPSP", "/ANIM/VECT/VEL", "/ANIM/VECT/CONT")
     e.ruler().card("/DT", Tscale=0.9, Tmin=0.0)
     if lagdt and INTER_DT:
-        e.raw("#  Contact pairs of the LAGDT interfaces whose time step would fall below Tmin switch to",
-              "#  Lagrange multipliers (type7-lagdt.md section 6; OpenRadioss itself needs /DT/INTER/LAG).")
+        e.raw("#  Contact pairs of the LAGDT interfaces whose time step would fall below Tmin switch to Lagrange",
+              "#  multipliers (docs/theory/type7-lagdt.md section 6; OpenRadioss itself needs /DT/INTER/LAG).")
         e.card("/DT/INTER/CST", Tscale=0.9, Tmin=lagdt_tmin)
     e.raw("/PRINT/-100")
     e.card("/STOP", Emax="1.0E+30", Mmax="1.0E+30", Nmax="1.0E+30", NTH=1, NANIM=1)

@@ -53,7 +53,7 @@ def deck():
     d.card("/DEF_SHELL").card("/DEF_SOLID")
     d.ruler()
     # A 4 x 4 x 4 block of 2.5 mm bricks: a lone one-point brick is unstable at its own time step after some
-    # tens of cycles (elements.md section 9), and a 2 x 2 x 2 block puts a quarter of the impact energy into
+    # tens of cycles (docs/theory/elements.md section 9), and a 2 x 2 x 2 block puts a quarter of the impact energy into
     # hourglass modes under nodal contact forces; this mesh keeps the energy balance within 1 %.
     nb, h = BLOCK_N, 10.0 / BLOCK_N
     d.rows("/NODE", [(1 + i + 3 * j, -10.0 + 10.0 * i, -10.0 + 10.0 * j, 0.0) for j in range(3) for i in range(3)] +

@@ -10,7 +10,7 @@ runs the starter on each and compares the model files with the 2026 one.
 
 The layouts of 90 to 140 are those OpenRadioss reads each keyword with (the FORMAT block of the highest
 version at or below the deck's), restated here from the format facts, not from radx's declarations; those of
-2026 follow deck-format.md. Edit this script and regenerate rather than editing the decks by hand.
+2026 follow docs/theory/deck-format.md. Edit this script and regenerate rather than editing the decks by hand.
 
     python3 scripts/make_version_decks.py              # into decks/versions/
     python3 scripts/make_version_decks.py --out /tmp/x

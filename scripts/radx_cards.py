@@ -1,4 +1,4 @@
-"""One card writer for the Radioss block-format decks that the generators write (deck-format.md).
+"""One card writer for the Radioss block-format decks that the generators write (docs/keywords.md).
 
 Every card layout is declared once, as data, in LAYOUTS (starter keywords, the 2026 layout of
 docs/keywords.md, with the version ranges of the fields that older layouts lack or hold elsewhere) and in
@@ -375,7 +375,7 @@ LAYOUTS = {
         Card(i("Ifric"), i("Ifiltr"), r("Xfreq"), i("Iform")),
         Card(r("C1"), r("C2"), r("C3"), r("C4"), r("C5"), when=lambda v: _int(v.get("Ifric")) in (1, 2, 3)),
         Card(r("C6"), when=lambda v: _int(v.get("Ifric")) in (2, 3))),
-    # the law: a free text line after the interface id (contact-laws.md)
+    # the law: a free text line after the interface id (docs/theory/contact-laws.md)
     "/CTCLAW": Layout(Card(i("inter_ID")), Card(left("law", 100, wrap=","), names=False)),
     # --- boundary conditions and loads
     "/BCS": Layout(Card(s("Tra rot"), i("skew_ID"), i("grnod_ID"))),

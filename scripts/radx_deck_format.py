@@ -1,4 +1,4 @@
-"""Fixed-column cells of the Radioss block format (deck-format.md), shared by the deck generators.
+"""Fixed-column cells of the Radioss block format (docs/theory/deck-format.md), shared by the deck generators.
 
 The cells under scripts/radx_cards.py (the one card writer of the generators), the ruler, the /BCS and IBC
 code cells and the file writer; scripts/make_version_decks.py restates the old layouts with fmt_real on

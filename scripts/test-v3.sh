@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The optional x86-64-v3 build (AVX2 + FMA; issue 16, docs/build-arch.md), tested beside the default one:
+# The optional x86-64-v3 build (AVX2 + FMA; docs/build-arch.md), tested beside the default one:
 # builds build-v3/ (Release, warnings as errors, -DRADX_ARCH=x86-64-v3), runs its Catch2 unit and
 # verification tests in one process, the CPU-check tests and the batch regression of every deck under decks/
 # against its NAME.ref, then compares its results deck by deck with the default build's regression run

@@ -1,4 +1,5 @@
-// Model file writer and reader (layout: docs/model-file.md; VTKHDF part: results-format.md section 2).
+// Model file writer and reader (layout: docs/model-file.md; VTKHDF part:
+// docs/theory/results-format.md section 2).
 //
 // How the code is organised:
 // - HDF5 calls go through the helpers of io/hdf5/hdf5_util.hpp (Handle, check, typed datasets and

@@ -1,5 +1,5 @@
 // The model file NAME_0000.hdf: the starter writes the validated Model once, the engine reads it back.
-// One HDF5 file holding a VTKHDF 1.0 UnstructuredGrid of the undeformed mesh (results-format.md
+// One HDF5 file holding a VTKHDF 1.0 UnstructuredGrid of the undeformed mesh (docs/theory/results-format.md
 // section 2, so ParaView opens it), /XDMF/MixedTopology, and under /radx everything of the Model in plain
 // datasets and attributes. The layout is documented in docs/model-file.md. All values in work units.
 #pragma once

@@ -1,11 +1,11 @@
-// Animation states for ParaView (results-format.md sections 1 to 5): P.mesh.hdf once, then per state
-// P_%06d.hdf (topology and time-invariant arrays as external links into the mesh file) and the two
+// Animation states for ParaView (docs/theory/results-format.md sections 1 to 5): P.mesh.hdf once, then per
+// state P_%06d.hdf (topology and time-invariant arrays as external links into the mesh file) and the two
 // indexes P.hdf.series and P.xmf, extended after every state.
 //
-// Crash safety, in the order of the spec's section 5: a state is written to `name.part`, closed, flushed
-// to disk and renamed; then each index gets the state's entry. So at any moment every index lists only
-// complete state files, and no HDF5 file is open between two calls (a killed process cannot leave a file
-// that HDF5 refuses to open, and ParaView can read a running job).
+// Crash safety, in the order of docs/theory/results-format.md section 5: a state is written to `name.part`,
+// closed, flushed to disk and renamed; then each index gets the state's entry. So at any moment every index
+// lists only complete state files, and no HDF5 file is open between two calls (a killed process cannot leave
+// a file that HDF5 refuses to open, and ParaView can read a running job).
 //
 // Why the indexes are extended in place rather than rewritten: rewriting them whole costs a time growing
 // with the states already written, so a long run's states would cost more and more. Each index is a fixed

@@ -1,6 +1,6 @@
-// Animation states for ParaView (results-format.md): one mesh file P.mesh.hdf written once, one HDF5 file
-// per state P_%06d.hdf whose topology and time-invariant arrays are external links into the mesh file,
-// and two indexes rewritten after every state: P.hdf.series (ParaView's file series, what users open)
+// Animation states for ParaView (docs/theory/results-format.md): one mesh file P.mesh.hdf written once, one
+// HDF5 file per state P_%06d.hdf whose topology and time-invariant arrays are external links into the mesh
+// file, and two indexes rewritten after every state: P.hdf.series (ParaView's file series, what users open)
 // and P.xmf (XDMF 3.0 temporal collection). Every file goes through `name.part` (or `.tmp`) and an
 // atomic rename, and no HDF5 file stays open between states, so a process killed at any moment leaves
 // a readable result set (the finished states, listed by the index).

@@ -1,4 +1,5 @@
-// Time-history file P_th.h5 (results-format.md section 7; layout: docs/results.md "Time history").
+// Time-history file P_th.h5 (docs/theory/results-format.md section 7;
+// layout: docs/results.md "Time history").
 //
 // Layout, one HDF5 file:
 // - root attributes: radx_th_format_version (int64, 1), time_unit (string), groups (string array: the

@@ -1,5 +1,5 @@
-// Time history P_th.h5 (results-format.md section 7): one dataset per group of variables, rows in time,
-// time as the first column, the variable names, object ids and units as attributes. The first flush
+// Time history P_th.h5 (docs/theory/results-format.md section 7): one dataset per group of variables, rows in
+// time, time as the first column, the variable names, object ids and units as attributes. The first flush
 // creates the file through `P_th.h5.part` and an atomic rename; later flushes append the rows held since
 // in place, so memory and the cost of a flush do not grow with the run. A run killed between flushes keeps
 // what the last flush wrote; one killed inside a flush leaves a file HDF5 readers refuse, which

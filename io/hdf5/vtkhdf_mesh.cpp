@@ -1,4 +1,5 @@
-// The mesh of a Model as VTKHDF 1.0 UnstructuredGrid + /XDMF/MixedTopology (results-format.md section 2).
+// The mesh of a Model as VTKHDF 1.0 UnstructuredGrid + /XDMF/MixedTopology
+// (docs/theory/results-format.md section 2).
 #include "io/hdf5/vtkhdf_mesh.hpp"
 
 #include <array>

@@ -1,5 +1,5 @@
-// The mesh of a Model as a VTKHDF 1.0 UnstructuredGrid (results-format.md section 2): the /VTKHDF group
-// and /XDMF/MixedTopology. Written into the model file (by the starter) and into the result mesh file
+// The mesh of a Model as a VTKHDF 1.0 UnstructuredGrid (docs/theory/results-format.md section 2): the /VTKHDF
+// group and /XDMF/MixedTopology. Written into the model file (by the starter) and into the result mesh file
 // P.mesh.hdf (by the engine) by the same code, so both are the same grid, cell for cell.
 #pragma once
 

@@ -1,5 +1,5 @@
 // The engine listing (standard output and NAME_0001.out), Radioss style: a header block with the model and
-// the resolved run controls, then every /PRINT cycles one line (shared/spec/elements.md section 8):
+// the resolved run controls, then every /PRINT cycles one line (docs/theory/elements.md section 8):
 //   CYCLE TIME TIME-STEP ELEMENT(type id) ERROR% I-ENERGY K-ENERGY-T K-ENERGY-R EXT-WORK MAS.ERR TOTAL-MASS
 //   MASS-ADDED
 // with the column titles repeated every nh lines when /PRINT/n/nh asks; a progress line on interactive
@@ -23,7 +23,7 @@
 
 namespace radx::io {
 
-// ERROR % of elements.md 8: 100 (E_tot / (E_tot0 + W_ext) - 1), clipped to [-99.9, 99.9]; 0 when
+// ERROR % of docs/theory/elements.md 8: 100 (E_tot / (E_tot0 + W_ext) - 1), clipped to [-99.9, 99.9]; 0 when
 // |E_tot0 + W_ext| <= 1e-20. E_tot = KE_T + KE_R + IE; E_tot0 = E_tot at cycle 0 minus the work booked at
 // cycle 0; W_ext the external work so far. NaN inputs give NaN (shown, never hidden).
 double energy_error_percent(double e_total, double e_total0, double w_ext);
@@ -83,10 +83,10 @@ struct EnergyBalance {
   double contact_friction = 0;
   double contact_lagrange = 0;
   double external_work = 0;
-  double initial_total = 0;  // E_tot0 of elements.md 8
+  double initial_total = 0;  // E_tot0 of docs/theory/elements.md 8
   // E_tot = KE_T + KE_R + IE + hourglass + contact. Radioss leaves hourglass and contact energies out of
   // its ERROR % (they show as a negative error); radx books them, so its balance closes
-  // (verification.md C). This is a deliberate difference.
+  // (docs/theory/verification.md C). This is a deliberate difference.
   [[nodiscard]] double total() const {
     return kinetic_t + kinetic_r + internal + hourglass + contact_elastic + contact_damping +
            contact_friction + contact_lagrange;

@@ -62,7 +62,8 @@ std::pair<double, double> automatic_stiffness_range(const model::Interface& c) {
   return {c.stiff_lo / a_hi, c.stiff_hi / a_lo};
 }
 
-// A /CTCLAW law as the starter understood it (contact-laws.md sections 2 and 3), in the work units.
+// A /CTCLAW law as the starter understood it (docs/theory/contact-laws.md sections 2 and 3), in the work
+// units.
 void write_contact_law(std::ostream& os, const model::Model& m, const model::Interface& c) {
   const auto& law = c.law;
   const auto& u = m.units;

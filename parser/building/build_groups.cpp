@@ -1,4 +1,4 @@
-// Deck -> Model: boxes, functions, element groups, node groups and surfaces (deck-format.md: /BOX/RECTA,
+// Deck -> Model: boxes, functions, element groups, node groups and surfaces (docs/keywords.md: /BOX/RECTA,
 // /FUNCT, /GRNOD/*, /SURF/PART, /SURF/PART/EXT, /SURF/SEG, and section 5.5). Negative ids subtract in
 // /GRNOD/PART and /GRNOD/GRNOD, and flip the segment normal in /SURF/PART (they never remove there).
 // /SURF/PART/EXT keeps the brick and tetrahedron faces that no other solid of the listed parts shares,

@@ -1,7 +1,7 @@
 // Deck -> Model: /INTER/TYPE7 and /INTER/LAGDT/TYPE7 into one interface definition, with the
-// defaults and checks of type7-lagdt.md section 3, and /CTCLAW law strings attached to their
-// interface (contact-laws.md section 5). The gap, stiffness and initial-penetration computations of
-// sections 4.1, 4.2 and 4.6 are physics and live in contact/type7_prepare.cpp.
+// defaults and checks of docs/theory/type7-lagdt.md section 3, and /CTCLAW law strings attached to their
+// interface (docs/theory/contact-laws.md section 5). The gap, stiffness and initial-penetration computations
+// of sections 4.1, 4.2 and 4.6 are physics and live in contact/type7_prepare.cpp.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -255,7 +255,8 @@ void ModelBuilder::build_contact_laws() {
     in.contact_law_id = r->id;
     in.contact_law = r->text;
     in.law = std::move(law);  // as understood, also with errors: the listing shows it
-    // contact-laws.md 4: a law with no s part is frictionless; the interface's own friction is replaced too.
+    // docs/theory/contact-laws.md 4: a law with no s part is frictionless; the
+    // interface's own friction is replaced too.
     if (in.law.friction == model::FrictionLaw::None && (in.fric > 0 || in.ifric > 0))
       diags_.warning(Diag::InterfaceFieldIgnored, where(0), about(*r),
                      law_id + " has no friction part (s...): the interface " + std::to_string(in.id) +

@@ -1,18 +1,20 @@
 // Deck -> Model: sensors (/SENSOR/TIME), kinematic conditions and loads (/BCS, /IMPVEL, /IMPDISP,
 // /IMPDISP/FGEO, /INIVEL/TRA, /CLOAD, /PLOAD, /GRAV), rigid walls (/RWALL/PLANE, CYL, SPHER, PARAL), rigid
 // bodies (/RBODY) and time-history requests (/TH/NODE, /TH/PART, /TH/INTER, /TH/RWALL, /TH/SHEL, /TH/SH3N,
-// /TH/BRIC, /TH/RBODY, /TH/SUBS); deck-format.md section 2 and 5.5, elements.md section 7.
+// /TH/BRIC, /TH/RBODY, /TH/SUBS); docs/theory/deck-format.md section 2
+// and 5.5, docs/theory/elements.md section 7.
 // * /SENSOR/TIME: Tstop 0 -> never; a Tstop at or before Tdelay is refused (Radioss would switch the
 //   sensor off one cycle after it switches on). A sensor_ID (sens_ID) names one; the model keeps the user id.
 // * Loads: value = Fscale_y f(t / Ascale_x), both scales 0 -> 1; the function is required except for
 //   /GRAV (0 = constant); /GRAV grnod_ID 0 = all nodes.
 // * /RWALL/PLANE: normal n = (M1 - M)/|M1 - M|; secondary nodes = grnd_ID1 + every node with
-//   0 <= (X - M).n <= d at t = 0 (when d > 0) - grnd_ID2 (elements.md 7.1). /RWALL/CYL: the same with the
-//   axis (M1 - M)/|M1 - M| and the height above the cylinder surface; /RWALL/SPHER: centre M, no M1.
+//   0 <= (X - M).n <= d at t = 0 (when d > 0) - grnd_ID2 (docs/theory/elements.md 7.1). /RWALL/CYL: the same
+//   with the axis (M1 - M)/|M1 - M| and the height above the cylinder surface; /RWALL/SPHER: centre M, no M1.
 //   /RWALL/PARAL: n = (M1 - M) x (M2 - M) normalised, the search along n as the infinite plane's
 //   (hm_read_rwall_paral.F); for a moving wall M is the wall node.
 // * /IMPDISP/FGEO: one object per keyword, its nodes and their final positions as listed.
-// * /RBODY: the main node is removed from the secondary group; Ispher 0 -> 2, ICoG 0 -> 1 (elements.md 7.2).
+// * /RBODY: the main node is removed from the secondary group; Ispher 0 -> 2,
+//   ICoG 0 -> 1 (docs/theory/elements.md 7.2).
 // * /TH/*: group names (DEF, D, V, ...) are expanded to variables; objects resolve to dense indices; the
 //   variables radx accepts but writes as 0 are named in a warning.
 // /FRAME is not read by radx, so a non-zero reference to one cannot be resolved and is reported as a missing
@@ -613,7 +615,8 @@ model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// Time histories: the accepted names per kind (deck-format.md /TH/*, results-format.md section 7).
+// Time histories: the accepted names per kind (docs/keywords.md /TH/*,
+// docs/theory/results-format.md section 7).
 
 struct ThGroup {
   std::string_view name;
@@ -635,7 +638,7 @@ struct ThKindDef {
   std::vector<ThZero> zero;             // of `names`, those written as 0
 };
 
-// Names and DEF sets as OpenRadioss defines them (its starter's /TH variable tables; deck-format.md /TH).
+// Names and DEF sets as OpenRadioss defines them (its starter's /TH variable tables; docs/keywords.md /TH).
 const std::vector<ThKindDef>& th_kinds() {
   using K = model::ThKind;
   static const std::vector<std::string_view> kForces = {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"};

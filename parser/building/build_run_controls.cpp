@@ -1,4 +1,5 @@
-// Engine deck -> RunControls. Rules (shared/spec/deck-format.md section 3, type7-lagdt.md section 6):
+// Engine deck -> RunControls. Rules (docs/theory/deck-format.md section 3, docs/theory/type7-lagdt.md
+// section 6):
 // * /RUN/name[/irun]: Tstop > 0 required; irun >= 1, from the file name (NAME_0003.rad: 3; else 1) when
 //   absent, as the Radioss engine takes it; a restart letter is refused (radx writes no restarts).
 // * /PRINT/n/nh: default -100; n != 0, |n| the line interval, n < 0 also to standard output; nh >= 0.

@@ -1,4 +1,4 @@
-// Engine deck -> model::RunControls (shared/spec/deck-format.md section 3): every engine keyword resolved
+// Engine deck -> model::RunControls (docs/theory/deck-format.md section 3): every engine keyword resolved
 // with its defaults (Tscale 0 -> 0.9, /PRINT -100, no /TFILE -> 1e30, /ANIM/DT Tstop 0 -> 1e20, /STOP
 // values 0 -> 1e30), each /DT option mapped to its action, the /ANIM field names checked against the names
 // radx writes, and every problem reported at the keyword line with a code. Times are taken as written:
@@ -16,7 +16,7 @@
 
 namespace radx {
 
-// One /ANIM field name radx maps to a results array (results-format.md section 3).
+// One /ANIM field name radx maps to a results array (docs/theory/results-format.md section 3).
 struct AnimFieldName {
   std::string_view family;                // "/ANIM/ELEM", "/ANIM/VECT", "/ANIM/TENS" or "/ANIM/NODA"
   std::string_view name;                  // the name radx stores in RunControls (canonical spelling)

@@ -4,7 +4,7 @@
 // no element changes nothing and is not checked; a flag that only matters for another element shape (Ish3n
 // on quadrangles, Icpre on Isolid 1 and 2) is not checked either.
 //
-// What radx implements (shared/spec/elements.md):
+// What radx implements (docs/theory/elements.md):
 //   4-node shells:  Ishell 1 (Belytschko-Tsay, viscous + elastic hourglass), 12 (QBAT: four Gauss points,
 //                   assumed transverse shear) and 24 (QEPH: one point with physical hourglass stabilisation),
 //                   Ismstr 2 (large strain, small strain only after /DT/SHELL/CST) and 1 (small strain from

@@ -15,7 +15,7 @@ constexpr auto kCount = static_cast<std::size_t>(P::Count);
 
 struct ParamName {
   std::string_view key;   // lower case, as matched
-  std::string_view name;  // as the spec writes it
+  std::string_view name;  // as docs/theory/contact-laws.md writes it
 };
 constexpr std::array<ParamName, kCount> kNames = {{{"kc", "Kc"},
                                                    {"pz", "pz"},

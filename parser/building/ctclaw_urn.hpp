@@ -1,4 +1,4 @@
-// The law string of /CTCLAW (shared/spec/contact-laws.md section 4), e.g.
+// The law string of /CTCLAW (docs/theory/contact-laws.md section 4), e.g.
 // n2s13{pz1e5,lambda2e3,Mu0.3,CtLin10}, read into a model::ContactLaw. A pure function of the text: no deck,
 // no model. Every problem is collected, each naming the parameter at fault (or "law string") and what is
 // accepted.

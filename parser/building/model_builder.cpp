@@ -1,7 +1,7 @@
 // Deck -> Model, core steps: nodes, materials, properties (with /DEF_SHELL and /DEF_SOLID two-stage
-// defaults, deck-format.md section 5.1), subsets, parts, elements and their geometry checks, lumped
-// masses (elements.md section 5: shells m = rho t0 A0 split equally over the 4 slots, bricks
-// m = rho V0 split 1/8 per node, 3-node shells split by interior angle alpha_k / pi).
+// defaults, docs/theory/deck-format.md section 5.1), subsets, parts, elements and their geometry checks,
+// lumped masses (docs/theory/elements.md section 5: shells m = rho t0 A0 split equally over the 4 slots,
+// bricks m = rho V0 split 1/8 per node, 3-node shells split by interior angle alpha_k / pi).
 #include "parser/building/model_builder.hpp"
 #include "parser/reading/field_parse.hpp"
 
@@ -615,8 +615,9 @@ void ModelBuilder::build_properties() {
       s.dm = r.get_real("Dm");
       s.dn = r.get_real("Dn");
       if (s.dn == 0 && s.ishell == 24) s.dn = 0.015;
-      if (s.dm == 0 && s.ishell == 24) s.dm = 0.015;  // QEPH's membrane damping default (elements.md 1.10)
-      s.n_ip = static_cast<int>(r.get_int("N"));      // 0 to 10: the field's rule (keywords_starter.cpp)
+      // QEPH's membrane damping default (docs/theory/elements.md 1.10)
+      if (s.dm == 0 && s.ishell == 24) s.dm = 0.015;
+      s.n_ip = static_cast<int>(r.get_int("N"));  // 0 to 10: the field's rule (keywords_starter.cpp)
       s.thickness = r.get_real("Thick");
       if (s.thickness < 0)
         error_at(r, "Thick", Diag::NonPositiveThickness,

@@ -292,7 +292,7 @@ struct KeywordDecl {
   IdKind list_kind = IdKind::None;
 };
 
-// The starter deck's keywords, in the order of deck-format.md.
+// The starter deck's keywords, in the order docs/keywords.md lists them (it is generated from this table).
 const std::vector<KeywordDecl>& starter_keywords();
 
 // Radioss keyword roots that radx recognises as real Radioss keywords but does not support: used to

@@ -1,4 +1,4 @@
-// The engine deck's keywords as data (shared/spec/deck-format.md section 3). Data lines are free format;
+// The engine deck's keywords as data (docs/theory/deck-format.md section 3). Data lines are free format;
 // each line declares the names of its values in order, how many of them must be present, and their
 // dimensions. Paths are written in full; the reader applies the engine's 5-character truncation of keyword
 // fields when it matches them.

@@ -1,6 +1,7 @@
 // The starter deck's keywords as data: one declaration per keyword of the subset radx reads (see
-// shared/spec/deck-format.md section 2, type7-lagdt.md section 3 and contact-laws.md section 5), in the
-// order of deck-format.md, plus the list of real Radioss keywords radx knows but does not support.
+// docs/theory/deck-format.md section 2, docs/theory/type7-lagdt.md section 3 and docs/theory/contact-laws.md
+// section 5), in the order docs/keywords.md lists them (it is generated from these declarations), plus the
+// list of real Radioss keywords radx knows but does not support.
 //
 // Conventions used throughout:
 // * Version bands follow the FORMAT(radiossNNN) blocks OpenRadioss reads a deck with: for each keyword, the
@@ -1365,7 +1366,7 @@ void add_contact(std::vector<KeywordDecl>& t) {
                                    .must()})};
     k.tail = Tail::Text;
     k.text_meaning =
-        "The law string (`shared/spec/contact-laws.md`): "
+        "The law string (`docs/theory/contact-laws.md`): "
         "`n<normal>s<friction>{Name1Value1,Name2Value2,...}`, "
         "e.g. `n2s13{pz1e5,lambda2e3,KcMax1e15,Mu0.3,CtLin10}`. Names are case-insensitive; a value follows "
         "its "
@@ -2258,8 +2259,8 @@ void add_foam_tab(std::vector<KeywordDecl>& t) {
   t.push_back(std::move(k));
 }
 
-// Issue 15's materials. /MAT/VOID and /MAT/RIGID compute no internal force (OpenRadioss hm_read_mat00.F,
-// hm_read_mat13.F): their E and nu give the contact stiffness and, for the rigid law, a stable step only.
+// /MAT/VOID and /MAT/RIGID compute no internal force (OpenRadioss hm_read_mat00.F, hm_read_mat13.F): their
+// E and nu give the contact stiffness and, for the rigid law, a stable step only.
 void add_void_and_rigid(std::vector<KeywordDecl>& t) {
   {
     KeywordDecl k = kw("/MAT/LAW0", "void material: no stiffness, for contact surfaces and mass-less parts",

@@ -1,6 +1,7 @@
 // Input diagnostics: every problem found in a deck is collected, coded and located, then reported
 // together. Codes are stable: tests, scripts and users refer to them, so a code is never reused for
-// another meaning. The full table lives in diagnostic_codes.cpp and is printed in docs/keywords.md.
+// another meaning. The codes are declared below (enum class Diag); what each one means is the table of
+// code_table() in diagnostics.cpp, printed in docs/keywords.md ("Diagnostic codes").
 #pragma once
 
 #include <cstdint>

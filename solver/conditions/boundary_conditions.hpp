@@ -1,11 +1,11 @@
-// Nodal kinematic conditions: /BCS, /IMPVEL, /IMPDISP, /IMPDISP/FGEO, /INIVEL/TRA (deck-format.md;
-// elements.md sections 0 and 8; OpenRadioss constraints/general/impvel/fixvel.F, fixfingeo.F,
+// Nodal kinematic conditions: /BCS, /IMPVEL, /IMPDISP, /IMPDISP/FGEO, /INIVEL/TRA (docs/keywords.md;
+// docs/theory/elements.md sections 0 and 8; OpenRadioss constraints/general/impvel/fixvel.F, fixfingeo.F,
 // loads/general/inivel/inivel_start.F90). v is the state's v^{n-1/2}, a the accelerations of the cycle, dt12
 // = (dt1 + dt2) / 2.
 //
 //   /BCS      the fixed bits (bit 0..2 Tx Ty Tz, 3..5 Rx Ry Rz) are OR-ed into state.fixed once; each call
 //             of apply() zeroes both v and a of the fixed components (translations and rotations).
-//             It does no work (elements.md 8).
+//             It does no work (docs/theory/elements.md 8).
 //   /IMPVEL   active for Tstart <= t <= Tstop. With v_imp(t) = Fscale_y f(t / Ascale_x), the imposed
 //             dof gets
 //                 a_imp = (v_imp(t + dt2/2) - v^{n-1/2}) / dt12,

@@ -1,11 +1,12 @@
 // External loads of the cycle at t = t_n: /GRAV, /CLOAD, /PLOAD, and the external work they do
-// (elements.md section 8, deck-format.md /GRAV /CLOAD /PLOAD, OpenRadioss loads/general/force.F90 and
-// grav/gravit.F). v below is the state's v^{n-1/2}; g(t), F(t), p(t) = Fscale_y f(t / Ascale_x).
+// (docs/theory/elements.md section 8, docs/keywords.md /GRAV /CLOAD /PLOAD, OpenRadioss
+// loads/general/force.F90 and grav/gravit.F). v below is the state's v^{n-1/2};
+// g(t), F(t), p(t) = Fscale_y f(t / Ascale_x).
 //
 //   /GRAV    force m g e_dir on every node of the group (all nodes when grnod_ID = 0), m = state.mass.
 //            Rigid-body secondary nodes are skipped: their weight is carried by the main node, whose
 //            mass is the whole body's mass after RigidBodies::initialize (Radioss skips them in the
-//            work the same way; elements.md 7.2). Work: W += 1/2 (g(t - dt1) + g(t)) m v_dir dt1.
+//            work the same way; docs/theory/elements.md 7.2). Work: W += 1/2 (g(t - dt1) + g(t)) m v_dir dt1.
 //   /CLOAD   every node of the group receives the full value F(t) along Dir (X Y Z: force into
 //            f*_ext and f*; XX YY ZZ: moment into m*). Work (booked once dt2 is known):
 //            W += 1/2 (F(t - dt1) + F(t)) v_dir dt2   (v_dir: angular velocity for a moment).

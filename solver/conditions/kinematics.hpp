@@ -1,6 +1,6 @@
 // Loads and kinematic conditions of the explicit cycle, and the order the time loop calls them in
-// (architecture.md section 4, elements.md section 0). The objects are built once from the Model; they
-// own copies of what they need (functions, node lists) and keep between cycles only what the work
+// (docs/architecture.md section 3, docs/theory/elements.md section 0). The objects are built once from the
+// Model; they own copies of what they need (functions, node lists) and keep between cycles only what the work
 // bookkeeping needs. Times: t = t_n, dt1 = t_n - t_{n-1} (0 at cycle 0), dt2 = t_{n+1} - t_n,
 // dt12 = (dt1 + dt2)/2. Every call returning a double returns external work to ADD to W_ext.
 //

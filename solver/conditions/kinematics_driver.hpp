@@ -45,7 +45,8 @@ class KinematicsDriver {
   void kinematic_conditions(double t, double dt1, double dt2);
   // After x += dt2 v (moving frames of rigid bodies).
   void after_update(double dt2);
-  // KE at the full step, v = v^{n-1/2} + dt1/2 a^n (elements.md section 8), rigid bodies counted once.
+  // KE at the full step, v = v^{n-1/2} + dt1/2 a^n (docs/theory/elements.md section 8), rigid bodies counted
+  // once.
   void kinetic_energy(double dt1, double& translational, double& rotational) const;
   [[nodiscard]] std::array<double, 3> momentum(double dt1) const;
   [[nodiscard]] double external_work() const;

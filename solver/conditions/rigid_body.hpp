@@ -1,4 +1,4 @@
-// /RBODY: elements.md 7.2, deck-format.md /RBODY; OpenRadioss starter inirby.F (set-up), engine
+// /RBODY: docs/theory/elements.md 7.2, docs/keywords.md /RBODY; OpenRadioss starter inirby.F (set-up), engine
 // rgbodfp.F (force gathering, Euler step), rgbodv.F (secondary kinematics), rgbcor.F (energy correction).
 // Notation: main node N, secondary nodes s with mass m_s, scalar nodal inertia I_s, r_s = x_s - x_N;
 // v = v^{n-1/2}, w = angular velocity omega^{n-1/2}, dt12 = (dt1 + dt2)/2.
@@ -93,7 +93,7 @@ struct RigidBodyInfo {
 std::array<double, 6> current_inertia(const RigidBodyInfo& b);
 
 // Amounts to ADD to the sums over all nodes (translational and rotational KE, mass, momentum) so that
-// each rigid body is counted once (elements.md 7.2 point 5).
+// each rigid body is counted once (docs/theory/elements.md 7.2 point 5).
 struct KineticCorrection {
   double translational = 0, rotational = 0, mass = 0;
   std::array<double, 3> momentum{};

@@ -1,4 +1,4 @@
-// /RWALL/PLANE, kinematic formulation (Iform 0): elements.md 7.1, OpenRadioss
+// /RWALL/PLANE, kinematic formulation (Iform 0): docs/theory/elements.md 7.1, OpenRadioss
 // constraints/general/rwall/rgwall.F (explicit branch, no friction filter) and rgwal0.F (RGWALF, RGWALT).
 // Run after the accelerations are final and before the velocity update; v = v^{n-1/2}, a = a^n,
 // dt12 = (dt1 + dt2)/2, n the unit normal (M1 - M)/|M1 - M|; the wall acts on the positive side.

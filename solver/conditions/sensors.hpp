@@ -1,5 +1,5 @@
 // Sensors of the run: the state of every /SENSOR of the model, updated once per cycle (OpenRadioss engine
-// tools/sensor/sensor_time.F, sensor_init.F; deck-format.md /SENSOR/TIME).
+// tools/sensor/sensor_time.F, sensor_init.F; docs/keywords.md /SENSOR/TIME).
 //
 // /SENSOR/TIME (Tdelay, Tstop): off at the start. Checked once before cycle 0 with (t, dt) = (0, 0), then at
 // every cycle once its step is known (t = t_n, dt = t_{n+1} - t_n, after the forces and before the kinematic

@@ -39,7 +39,8 @@ struct ShellProps {
   int ish3n = 2;     // 3-node shells: 2 with the in-plane large-rotation terms T11, T22; 1 without
   int n_points = 3;  // through-thickness points, >= 1; 0 = resultant elasticity (LAW1 only)
   double hm = 0.01, hf = 0.01, hr = 0.01, dm = 0, ashear = 5.0 / 6.0;
-  double dn = 0;  // QEPH numerical damping of the stabilisation (elements.md 1.10; 0.015 by default)
+  // QEPH numerical damping of the stabilisation (docs/theory/elements.md 1.10; 0.015 by default)
+  double dn = 0;
   double p_thick_fail = 0.999999;  // /FAIL Ifail_sh 2: failed thickness fraction that deletes the element
 };
 
@@ -113,7 +114,8 @@ struct BrickGroup {
   std::int32_t part = -1;
   std::int32_t material = -1;
   int isolid = 1;
-  int ismstr = 4;  // /DT/BRICK/CST switches a brick to small strain only with Ismstr 2 (deck-format.md)
+  // /DT/BRICK/CST switches a brick to small strain only with Ismstr 2 (docs/theory/deck-format.md)
+  int ismstr = 4;
   int iframe = 1;  // 1 Jaumann rate, global stress; 2 co-rotational element frame, stress in that frame
   // Icpre: Isolid 24: 0 compressible hourglass modes, 1 incompressible; fully integrated bricks (resolved by
   // resolve_full_brick): 0 pressure per point, 1 and 2 constant pressure over the element.
@@ -302,10 +304,10 @@ void spring_type13_forces(SpringGroup& g, const NodeState& nodes, const CycleInf
 void hex8_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 
-// Co-rotational frame of a one-point brick from its node coordinates x[8][3] (elements.md 3.6): the three
-// centre directions r (eta), s (zeta), t (xi), made orthonormal symmetrically. `heph_order`: the frame's
-// x axis along t, y along r, z along s (Isolid 24); otherwise x along r, y along s, z along t (Isolid 1, 2).
-// R[row][column], columns the unit axes in global coordinates.
+// Co-rotational frame of a one-point brick from its node coordinates x[8][3] (docs/theory/elements.md 3.6):
+// the three centre directions r (eta), s (zeta), t (xi), made orthonormal symmetrically. `heph_order`: the
+// frame's x axis along t, y along r, z along s (Isolid 24); otherwise x along r, y along s, z along t
+// (Isolid 1, 2). R[row][column], columns the unit axes in global coordinates.
 void brick_corotational_frame(const double x[8][3], bool heph_order, double R[3][3]);
 void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);

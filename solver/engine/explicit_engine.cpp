@@ -1,5 +1,5 @@
 // The explicit time loop; see explicit_engine.hpp for the cycle order and the energy definitions.
-// Masses and rotational inertias (elements.md section 5): shells m_e = rho t0 A0, m_e/4 per slot,
+// Masses and rotational inertias (docs/theory/elements.md section 5): shells m_e = rho t0 A0, m_e/4 per slot,
 // I = (m_e/4)(A0/9 + t0^2/12); 3-node shells m_e alpha_k/pi with I_e = m_e (A0/4.5 + t0^2/12);
 // bricks m_e/8 per node, tetrahedra m_e/4 per node, no inertia for either; TYPE8 springs I/2 per node.
 #include "solver/engine/explicit_engine.hpp"
@@ -266,8 +266,8 @@ void ExplicitEngine::build_nodes() {
     const double t0 = model::shell_thickness(m, m.shells, e);
     const double a0 = model::quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[3]));
     const double me = rho_of(m.shells.part[e]) * t0 * a0;
-    // Divisor of the in-plane term: 9, or 12 for QBAT and QEPH (elements.md 5, cinmas.F: internal IHBE >=
-    // 11).
+    // Divisor of the in-plane term: 9, or 12 for QBAT and QEPH (docs/theory/elements.md 5, cinmas.F: internal
+    // IHBE >= 11).
     const auto part = m.shells.part[e];
     const int ishell = m.properties[m.parts[part].property].shell.ishell;
     const double in_plane = (ishell == 12 || ishell == 24) ? 12.0 : 9.0;
@@ -392,8 +392,8 @@ ShellGroup make_shell_group(const model::Model& m, const std::vector<MaterialPar
     g.area0[static_cast<std::size_t>(i)] =
         triangle ? model::triangle_area(X(0), X(1), X(2)) : model::quad_area(X(0), X(1), X(2), X(3));
     // /FAIL/TAB's element-size factor from the length at t = 0 (OpenRadioss keeps the starter's ALDT,
-    // cfailini.F): elements.md 4.1 L = max(A / longest diagonal, shortest side or diagonal) for quads,
-    // 4.2 2A / longest side for triangles.
+    // cfailini.F): docs/theory/elements.md 4.1 L = max(A / longest diagonal, shortest side or diagonal) for
+    // quads, 4.2 2A / longest side for triangles.
     const auto& fp = materials[static_cast<std::size_t>(mat)].fail;
     if (fp.on && fp.has_size) {
       const double len =
@@ -876,7 +876,8 @@ double ExplicitEngine::element_time_step(StepControl& control) {
 
 double ExplicitEngine::nodal_time_step(StepControl& control) {
   // /DT/NODA/CST: dt_n = Tscale sqrt(2 m / K) with K the sum of the element stiffness estimates at the
-  // node (elements.md 4.5); below Tmin, mass is added so that dt_n = Tmin: m = K (Tmin / Tscale)^2 / 2.
+  // node (docs/theory/elements.md 4.5); below Tmin, mass is added so that
+  // dt_n = Tmin: m = K (Tmin / Tscale)^2 / 2.
   auto& s = nodes_;
   std::fill(s.stiffness.begin(), s.stiffness.end(), 0.0);
   for (const auto& g : shells_) {
@@ -1190,8 +1191,8 @@ bool ExplicitEngine::lagrange_correction(LoopState& L, RunResult& res) {
   return true;
 }
 
-// 10. Energies at t_n (elements.md section 8; summed only on report cycles, they cost a pass over every
-// element and node), then the caller's on_cycle (listing, states, /STOP), which may stop the run.
+// 10. Energies at t_n (docs/theory/elements.md section 8; summed only on report cycles, they cost a pass over
+// every element and node), then the caller's on_cycle (listing, states, /STOP), which may stop the run.
 bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(const CycleReport&)>& on_cycle,
                              RunResult& res) {
   auto& kin = *kinematics_;

@@ -1,6 +1,6 @@
 // The explicit engine: central differences with lumped mass over the model's element groups.
 //
-// One cycle (architecture.md section 4; elements.md section 0), cycle n at time t_n:
+// One cycle (docs/architecture.md section 3; docs/theory/elements.md section 0), cycle n at time t_n:
 //   0. the moving skews (/SKEW/MOV) rebuilt from x^n (SkewFrames): every later use in the cycle sees them;
 //   1. external loads at t_n (gravity, concentrated loads, pressures);
 //   2. contact (TYPE7 penalty, contact/type7_engine.hpp): forces at t_n into the contact buffer, time-step
@@ -18,7 +18,7 @@
 //   9. next time step dt = min(scale * element steps, 1.1 dt_previous), then the sensors' check with it
 //      (solver/conditions/sensors.hpp: a sensor switches on when t + dt reaches its Tdelay);
 //  10. outputs when due (listing, states); 11. t += dt.
-// Energies follow elements.md section 8: internal (element work), hourglass, kinetic (at the full
+// Energies follow docs/theory/elements.md section 8: internal (element work), hourglass, kinetic (at the full
 // step, v^{n-1/2} + dt1/2 a^n), external work; error % = 100 (E / (E0 + W) - 1).
 #pragma once
 

@@ -12,7 +12,8 @@
 // curve is linear between its points and extrapolated with its end segments.
 //
 // Flow stress at the plastic strain of the START of the step (explicit hardening) and the element's filtered
-// strain rate r (shells: the equivalent rate of elements.md 1.3; solids: sqrt(D:D) with tensor shears, 6.2):
+// strain rate r (shells: the equivalent rate of docs/theory/elements.md 1.3;
+// solids: sqrt(D:D) with tensor shears, 6.2):
 //   N = 1:  sigma_y = s_1 f_1(eps_p),  H = s_1 f_1'(eps_p)
 //   N > 1:  j = the last curve with rate_j <= r among 1 .. N-1 (j = 1 below rate_2),
 //           w = (r - r_j) / (r_{j+1} - r_j)                                  (Fsmooth 0 or 1, linear)

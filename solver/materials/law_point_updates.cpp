@@ -3,7 +3,7 @@
 // /FAIL/JOHNSON (fail_johnson.cpp) are dispatched from here: one switch on the law per point, no virtual
 // call.
 //
-// Sources: shared/spec/elements.md 1.4 (shell elasticity), 1.8 (thickness strain), 3.3 (solid pressure),
+// Sources: docs/theory/elements.md 1.4 (shell elasticity), 1.8 (thickness strain), 3.3 (solid pressure),
 // 6.1-6.3 (LAW2), read from OpenRadioss sigeps02c.F / m2cplr.F (shell) and m2law.F (solid).
 //
 // Johnson-Cook flow stress (6.2), eps_p at the START of the step (explicit hardening):

@@ -1,5 +1,5 @@
 // Material laws at one integration point, written once and used by shells (plane stress) and solids.
-// Formulas: shared/spec/elements.md sections 1.4 (shell elasticity), 3.3 (solid pressure), 6 (LAW2
+// Formulas: docs/theory/elements.md sections 1.4 (shell elasticity), 3.3 (solid pressure), 6 (LAW2
 // Johnson-Cook). LAW1 is the elastic limit of the same updates (no yield).
 #pragma once
 
@@ -169,7 +169,7 @@ struct MaterialParams {
   double young = 0, nu = 0;
   double shear = 0, bulk = 0;  // G = E / 2(1 + nu), K = E / 3(1 - 2 nu)
   double a11 = 0, a12 = 0;     // plane stress: A11 = E / (1 - nu^2), A12 = nu A11
-  double c_shell = 0;          // sqrt(E / rho0): shell sound speed (elements.md 4.1)
+  double c_shell = 0;          // sqrt(E / rho0): shell sound speed (docs/theory/elements.md 4.1)
   double c_solid = 0;          // sqrt((K + 4G/3) / rho0): solid sound speed (3.3)
   // Johnson-Cook (law 2); unused for law 1.
   double a = 0, b = 0, n = 1, c = 0, eps_dot0 = 1, sig_max0 = 1e20, eps_p_max = 1e20;
@@ -220,8 +220,9 @@ void foam_initial_state(const MaterialParams& p, double st[kFoamVars]);
 // eigen-decomposition of B = F F^T (law42_ogden.cpp; shared by laws 42 and 70).
 void principal_stretches(const double F[3][3], double lam[3], double n[3][3]);
 
-// Factor of the strain-rate filter (elements.md 6.1 shells, 6.2 solids): rate <- alpha e + (1 - alpha) rate,
-// alpha = min(1, 2 pi Fcut dt1), 1 when Fcut = 0 (no filter). Shared by the shell and solid kernels.
+// Factor of the strain-rate filter (docs/theory/elements.md 6.1 shells, 6.2 solids): rate <- alpha
+// e + (1 - alpha) rate, alpha = min(1, 2 pi Fcut dt1), 1 when Fcut = 0 (no
+// filter). Shared by the shell and solid kernels.
 inline double rate_filter_alpha(const MaterialParams& mat, double dt1) {
   if (mat.f_cut <= 0) return 1.0;
   return std::min(1.0, 2.0 * std::numbers::pi * mat.f_cut * dt1);
@@ -252,10 +253,11 @@ double jc_flow_stress(const MaterialParams& p, double eps_p, double rate, double
 // modulus (Ashear G). iplas: 0 radial return (default), 1 iterative projection (3 Newton steps).
 // off: element kill factor (Iplas 1 projection only when off == 1).
 struct ShellPointResult {
-  double deps_p = 0;     // plastic strain increment
-  double dezz = 0;       // thickness strain increment (for the thickness output)
-  double w_plastic = 0;  // plastic work per unit volume 1/2 (svm_old + svm_new) deps_p (elements.md 6.5)
-  bool fails = false;    // law 27: the point's principal strain passed EPS_f1, the element is deleted
+  double deps_p = 0;  // plastic strain increment
+  double dezz = 0;    // thickness strain increment (for the thickness output)
+  // plastic work per unit volume 1/2 (svm_old + svm_new) deps_p (docs/theory/elements.md 6.5)
+  double w_plastic = 0;
+  bool fails = false;  // law 27: the point's principal strain passed EPS_f1, the element is deleted
 };
 ShellPointResult shell_point_update(const MaterialParams& p, int iplas, double rate, double off,
                                     const double de[5], double gs, double sig[5], double& eps_p);

@@ -1,5 +1,5 @@
 // Element geometry shared by the starter's checks and masses and by the engine. Formulas follow
-// OpenRadioss's one-point elements (shared/spec/elements.md):
+// OpenRadioss's one-point elements (docs/theory/elements.md):
 //   quad area      A = 1/2 |d13 x d24|                         (d13 = x3 - x1, d24 = x4 - x2)
 //   triangle area  A = 1/2 |d12 x d13|
 //   brick volume   V = j1 . (j2 x j3) / 64 = 8 det J(0)        with d17 = x7 - x1, d28 = x8 - x2,

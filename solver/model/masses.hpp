@@ -1,4 +1,4 @@
-// Lumped nodal masses and part masses (shared/spec/elements.md section 5): the element mass is
+// Lumped nodal masses and part masses (docs/theory/elements.md section 5): the element mass is
 // rho_I t0 A0 for shells and rho_I V0 for bricks (one-point volume); 4-node shells give m/4 to each
 // connectivity slot (so a degenerate quad's repeated node gets 2/4), bricks m/8 per node, 3-node
 // shells m alpha_k / pi to node k (alpha_k the interior angle).
@@ -10,8 +10,8 @@
 
 namespace radx::model {
 
-// Thickness a shell element uses for its mechanics and mass (deck-format.md 5.4): the element card's
-// value if > 0, else its property's; 0 when neither is known.
+// Thickness a shell element uses for its mechanics and mass (docs/theory/deck-format.md 5.4): the element
+// card's value if > 0, else its property's; 0 when neither is known.
 double shell_thickness(const Model& m, const ElementBlock& b, std::size_t e);
 
 // Calls fn(node, part, element_index_in_block_order, mass) for every lumped-mass contribution of every

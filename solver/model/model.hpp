@@ -62,7 +62,7 @@ enum class MaterialLaw : std::uint8_t {
   JohnsonCook = 2,
   PlasTab = 36,
   PlasBrit = 27,  // /MAT/PLAS_BRIT (shells only)
-  // Issue 15: elements of these laws compute no internal force (OpenRadioss forint.F skips laws 0 and 13).
+  // Elements of these laws compute no internal force (OpenRadioss forint.F skips laws 0 and 13).
   // A void element only carries its mass (rho_I V, 0 when no density is given) and its contact stiffness
   // (E, nu); a rigid one is part of the rigid body the starter builds from the connected law-13 elements.
   Void = 0,
@@ -513,9 +513,9 @@ struct TimeHistoryGroup {
   std::vector<std::int64_t> skews;
 };
 
-// /CTCLAW (contact-laws.md): the normal and friction law of the SDT family that replaces an interface's own,
-// as the starter read the law string. The kinds are stored as their integers in the model file: new kinds go
-// at the end.
+// /CTCLAW (docs/theory/contact-laws.md): the normal and friction law of the SDT family that replaces an
+// interface's own, as the starter read the law string. The kinds are stored as their integers in the model
+// file: new kinds go at the end.
 enum class NormalLaw : std::uint8_t {
   Interface = 0,    // no n part: the interface's own TYPE7 penalty stays the normal law
   Linear = 1,       // P = Kc u
@@ -550,7 +550,7 @@ struct ContactLaw {
   double mu = 0, ct = 0, kappa = 0;
 };
 
-// /INTER/TYPE7 and /INTER/LAGDT/TYPE7 as one definition (type7-lagdt.md section 3), plus what the
+// /INTER/TYPE7 and /INTER/LAGDT/TYPE7 as one definition (docs/theory/type7-lagdt.md section 3), plus what the
 // starter computes for it (sections 4.1, 4.2, 4.6).
 struct Interface {
   std::int64_t id = 0;

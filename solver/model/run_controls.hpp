@@ -1,5 +1,5 @@
-// What the engine deck asks for (deck-format.md section 3), resolved: defaults applied, times in work
-// units. Built by the parser from the engine deck; read by the engine. Depends on nothing of ours.
+// What the engine deck asks for (docs/theory/deck-format.md section 3), resolved: defaults applied, times in
+// work units. Built by the parser from the engine deck; read by the engine. Depends on nothing of ours.
 #pragma once
 
 #include <cstdint>

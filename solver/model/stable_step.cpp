@@ -1,7 +1,7 @@
 // Initial stable step estimate: min over elements of L / c. Bricks: L = V / largest face area,
 // c = sqrt((K + 4G/3) / rho); shells: L from area over the longest diagonal bounded below by the shortest
 // side, triangles: L = 2A / longest side, tetrahedra: L = the smallest height 3 V / largest face area, c =
-// sqrt(E / rho) (shared/spec/elements.md 3.3, 4.1, 4.2).
+// sqrt(E / rho) (docs/theory/elements.md 3.3, 4.1, 4.2).
 #include "solver/model/stable_step.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // A cheap estimate of the initial stable time step, for plausibility checks before a run: per element
-// L / c with the element's step length and its material's sound speed (shared/spec/elements.md 3.3,
+// L / c with the element's step length and its material's sound speed (docs/theory/elements.md 3.3,
 // 4.1, 4.2), without the bulk viscosity and the /DT scale. It is within a few per cent of the step the
 // engine takes at cycle 0 and costs one pass over the elements.
 #pragma once
@@ -20,8 +20,9 @@ struct StepEstimate {
 
 [[nodiscard]] StepEstimate estimate_stable_step(const Model& m);
 
-// Step lengths of a shell (elements.md 4.1 quad: max(A / longest diagonal, shortest side or diagonal, the
-// side 3-4 and the diagonals left out when n3 = n4); 4.2 triangle: 2 A / longest side); 0 when degenerate.
+// Step lengths of a shell (docs/theory/elements.md 4.1 quad: max(A / longest diagonal, shortest side or
+// diagonal, the side 3-4 and the diagonals left out when n3 = n4); 4.2
+// triangle: 2 A / longest side); 0 when degenerate.
 [[nodiscard]] double quad_length(const Vec3& x1, const Vec3& x2, const Vec3& x3, const Vec3& x4);
 [[nodiscard]] double triangle_length(const Vec3& x1, const Vec3& x2, const Vec3& x3);
 

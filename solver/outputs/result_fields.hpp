@@ -1,7 +1,7 @@
 // Result fields of the running model, gathered from the element groups and the node state into flat
-// arrays in model order, for animation states and time histories (results-format.md sections 3 and 7).
-// Cells are numbered as the model file numbers them: 4-node shells, then 3-node shells, then bricks, then
-// tetrahedra (the same fields as bricks),
+// arrays in model order, for animation states and time histories (docs/theory/results-format.md sections 3
+// and 7). Cells are numbered as the model file numbers them: 4-node shells, then 3-node shells, then bricks,
+// then tetrahedra (the same fields as bricks),
 // each block in its model order. Nothing here changes the engine's state.
 //
 // Definitions (work units):
@@ -13,7 +13,7 @@
 //   von Mises = sqrt(1/2 [(sxx-syy)^2 + (syy-szz)^2 + (szz-sxx)^2] + 3 (sxy^2 + syz^2 + szx^2));
 //   pressure = -(sxx + syy + szz)/3; energy densities = accumulated energy / initial volume;
 //   density: bricks rho0 V0/V, shells rho0.
-//   velocity at the full step v^n = v^{n-1/2} + dt1/2 a^n (as the kinetic energy, elements.md 8);
+//   velocity at the full step v^n = v^{n-1/2} + dt1/2 a^n (as the kinetic energy, docs/theory/elements.md 8);
 //   internal force f_int = f_ext - f (m a = f_ext - f_int before kinematic conditions);
 //   reaction force = m a - f (a after the kinematic conditions): what boundary conditions, imposed
 //   velocities, rigid walls and rigid bodies add to the node; contact force: the TYPE7 forces of the cycle.
@@ -52,7 +52,7 @@ enum class NodeField : std::uint8_t {
   NodalTimeStep,  // scalar: sqrt(2 m / k) from the element stiffness estimates (0 where k = 0)
 };
 
-// The output array name of a field (results-format.md: no '/' or '.'), and back.
+// The output array name of a field (docs/theory/results-format.md: no '/' or '.'), and back.
 std::string_view field_name(CellField f);
 std::string_view field_name(NodeField f);
 std::optional<CellField> cell_field_named(std::string_view name);

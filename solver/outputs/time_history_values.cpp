@@ -373,7 +373,8 @@ void ThGroupSampler::sample_shells(const ExplicitEngine& e, const CycleReport& /
     put(o, "M12", mm[2] * t * t);
     put(o, "IEM", g.e_int[k]);
     put(o, "OFF", g.off[k]);
-    put(o, "EPSD", g.rate[k]);  // the filtered equivalent strain rate of the rate laws (elements.md 6.1)
+    // the filtered equivalent strain rate of the rate laws (docs/theory/elements.md 6.1)
+    put(o, "EPSD", g.rate[k]);
     put(o, "THIC", t);
   }
 }

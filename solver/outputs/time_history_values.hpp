@@ -1,5 +1,5 @@
-// Time-history values (results-format.md section 7): the global variables in Radioss's order and the
-// values of each /TH group of the model, sampled from the running engine on a full report cycle.
+// Time-history values (docs/theory/results-format.md section 7): the global variables in Radioss's order and
+// the values of each /TH group of the model, sampled from the running engine on a full report cycle.
 //
 // Global, in this order: IE internal energy, KE kinetic (translational), XMOM YMOM ZMOM momentum, MASS,
 // DT time step, RKE rotational kinetic energy, EXTW external work, SE spring energy (0: no springs), CE

@@ -1,4 +1,4 @@
-"""Block sliding with Coulomb friction (verification.md A.6) against its closed form.
+"""Block sliding with Coulomb friction (docs/theory/verification.md A.6) against its closed form.
 
 usage: /usr/bin/python3 check_contact_block_sliding.py --radx RADX
            --decks decks/verification/block_sliding/BLOCK_SLIDING_IFORM2_0000.rad
@@ -20,7 +20,7 @@ Tolerances (what they mean):
   * after 1.1 v0 / (mu g) the cube stays below 2 % of v0 (Iform 2 sticks elastically, Iform 1 decays);
   * the cube stays in contact: its lower-face nodes stay between the plate and the gap surface at every row;
   * the frictional contact energy equals the kinetic energy lost within 2 % of the initial kinetic energy, and the
-    run's energy error is within 1 % (verification.md C).
+    run's energy error is within 1 % (docs/theory/verification.md C).
 """
 import os
 

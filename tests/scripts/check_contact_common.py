@@ -3,9 +3,9 @@
 Not a test by itself. It holds:
   * a small fixed-column reader of the starter decks made by scripts/make_contact_decks.py, so that each
     check takes its parameters (masses, gap, stiffness, speeds) from the deck it runs, not from the generator;
-  * the one-degree-of-freedom model of a rigid body on N identical TYPE7 pairs (type7-lagdt.md 4.3), used for
-    the expected penetration and rebound speed when damping makes the energy equation of verification.md A.2
-    inexact; without damping it reduces to that equation (checked by self_test());
+  * the one-degree-of-freedom model of a rigid body on N identical TYPE7 pairs (docs/theory/type7-lagdt.md 4.3), used
+    for the expected penetration and rebound speed when damping makes the energy equation of
+    docs/theory/verification.md A.2 inexact; without damping it reduces to that equation (checked by self_test());
   * running radx (results_common.py) and reading its outputs (NAME_th.h5, NAME_summary.json, the animation
     states), with h5py;
   * what the checks share around that: the command line and the loop over the decks (main_per_deck), the
@@ -24,7 +24,7 @@ import sys
 from results_common import read_summary, run_radx  # noqa: F401  (part of this module's interface)
 
 # ---------------------------------------------------------------------------------------------------
-# Deck reading (fixed columns, deck-format.md); only what the contact decks use.
+# Deck reading (fixed columns, docs/theory/deck-format.md); only what the contact decks use.
 
 
 class Deck:
@@ -163,7 +163,7 @@ class Model:
 
 def type7_fields(data, lagdt=False):
     """/INTER/TYPE7 2019+ layout or /INTER/LAGDT/TYPE7 (lagdt: no Icurv, the same columns otherwise;
-    deck-format.md): data[0] is the title."""
+    docs/keywords.md): data[0] is the title."""
     c = data[1:]
     f = dict(grnd=integer(c[0], 1, 10), surf=integer(c[0], 11, 20), Istf=integer(c[0], 21, 30),
              Igap=integer(c[0], 41, 50), Icurv=0 if lagdt else integer(c[0], 81, 90), lagdt=lagdt)
@@ -175,7 +175,7 @@ def type7_fields(data, lagdt=False):
     f.update(Inacti=integer(c[k + 1], 31, 40), VISs=real(c[k + 1], 41, 60), VISf=real(c[k + 1], 61, 80))
     f.update(Ifric=integer(c[k + 2], 1, 10), Iform=integer(c[k + 2], 41, 50),
              sens=0 if lagdt else integer(c[k + 2], 51, 60))
-    # Two-stage defaults (type7-lagdt.md 3): 0 means the default.
+    # Two-stage defaults (docs/theory/type7-lagdt.md 3): 0 means the default.
     f["VISs"] = f["VISs"] or 0.05
     f["VISf"] = f["VISf"] or 1.0
     f["Iform"] = f["Iform"] or 1
@@ -200,7 +200,7 @@ def norm(a):
 
 
 # ---------------------------------------------------------------------------------------------------
-# TYPE7 normal law (type7-lagdt.md 4.3) and a rigid body on N identical pairs.
+# TYPE7 normal law (docs/theory/type7-lagdt.md 4.3) and a rigid body on N identical pairs.
 
 
 def penalty_force(K, g, p):
@@ -213,7 +213,7 @@ def penalty_energy(K, g, p):
 
 
 def energy_equation_x(P):
-    """x in [0, 1) with -x - ln(1 - x) = P (verification.md A.2), by bisection."""
+    """x in [0, 1) with -x - ln(1 - x) = P (docs/theory/verification.md A.2), by bisection."""
     lo, hi = 0.0, 1.0
     for _ in range(200):
         mid = 0.5 * (lo + hi)
@@ -230,7 +230,7 @@ def rigid_impact(M, masses, K, g, vis_s, p0, vn0, quadratic=True, steps_per_t0=4
     (secondary nodal mass masses[i]) pushes with F(p) = K p g / (g - p) and damps with
         c_i = VISs sqrt(2 k m_i / r) + 0.32 m_i max(0, -v_n) / (g - p),   k = K g / (g - p),
         r = (g - p)/g while approaching (v_n < 0), else 1,
-    the dashpot opposing v_n (type7-lagdt.md 4.3; quadratic=False leaves out the second term). So
+    the dashpot opposing v_n (docs/theory/type7-lagdt.md 4.3; quadratic=False leaves out the second term). So
         M dv_n/dt = N F(p) - sum_i c_i v_n,   dp/dt = -v_n.
     Starts at penetration p0 (negative: that far outside the gap) with normal speed vn0 < 0 and integrates
     with fixed-step RK4 (steps of t0 / steps_per_t0, t0 = sqrt(M / (N K))) until the pair opens again.
@@ -266,7 +266,7 @@ def rigid_impact(M, masses, K, g, vis_s, p0, vn0, quadratic=True, steps_per_t0=4
 
 
 def _rigid_acceleration(M, masses, K, g, vis_s, quadratic):
-    """dv_n/dt(p, v_n) of rigid_impact's body (the law and damping of type7-lagdt.md 4.3)."""
+    """dv_n/dt(p, v_n) of rigid_impact's body (the law and damping of docs/theory/type7-lagdt.md 4.3)."""
     n = len(masses)
     sum_m = sum(masses)
     sum_sqrt = sum(math.sqrt(m) for m in masses)
@@ -444,7 +444,7 @@ class Checks:
 
 
 def check_energy_error(checks, summary, detail=""):
-    """The run's energy error (summary) within 1 % (verification.md C); detail is added to the message."""
+    """The run's energy error (summary) within 1 % (docs/theory/verification.md C); detail is added to the message."""
     err = summary["energy"]["error_percent"]
     return checks.check(abs(err) <= 1.0, "energy error %.3g %% (allowed 1 %%%s)" % (err, detail))
 

@@ -1,4 +1,4 @@
-"""/DT/INTER/CST and /DT/INTER/DEL on a plain TYPE7 (type7-lagdt.md 4.4 and 6).
+"""/DT/INTER/CST and /DT/INTER/DEL on a plain TYPE7 (docs/theory/type7-lagdt.md 4.4 and 6).
 
 usage: /usr/bin/python3 check_contact_dt_inter.py --radx RADX
            --decks decks/verification/dt_inter/DT_INTER_CST_0000.rad
@@ -35,7 +35,7 @@ Tolerances (what they mean):
     plate; no mass added (exactly 0);
   * cube: largest penetration and rebound speed within 1 % of the one-DOF values (as in
     check_contact_node_on_segment);
-  * energy error within 1 % (verification.md C).
+  * energy error within 1 % (docs/theory/verification.md C).
 """
 import math
 import os

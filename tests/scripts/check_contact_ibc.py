@@ -1,4 +1,5 @@
-"""IBC (type7-lagdt.md 4.7): at its first impact a secondary node loses the fixed translations IBCX/IBCY/IBCZ select.
+"""IBC (docs/theory/type7-lagdt.md 4.7): at its first impact a secondary node loses the fixed
+translations IBCX/IBCY/IBCZ select.
 
 usage: /usr/bin/python3 check_contact_ibc.py --radx RADX
            --decks decks/verification/ibc/IBC_Z0_0000.rad decks/verification/ibc/IBC_Z1_0000.rad --out DIR
@@ -26,7 +27,7 @@ Tolerances (what they mean):
   * IBCZ 1: at the end every tile node has moved down by more than the gap, and the tile's mean speed (ZMOM /
     MASS of its part) is faster downwards than the cube's but not faster than after an elastic collision,
     2 M v0 / (M + m), plus g_z t_end;
-  * energy error within 1 % (verification.md C).
+  * energy error within 1 % (docs/theory/verification.md C).
 """
 import os
 

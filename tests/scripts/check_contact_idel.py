@@ -1,11 +1,12 @@
-"""Idel (type7-lagdt.md 4.7): the segment of a deleted element stops acting with Idel = 1 or 2, keeps acting with 0.
+"""Idel (docs/theory/type7-lagdt.md 4.7): the segment of a deleted element stops acting with Idel = 1 or 2,
+keeps acting with 0.
 
 usage: /usr/bin/python3 check_contact_idel.py --radx RADX
            --decks decks/verification/idel/IDEL0_0000.rad decks/verification/idel/IDEL1_0000.rad
                    decks/verification/idel/IDEL2_0000.rad --out DIR
 
 Each deck: the main surface is one Johnson-Cook shell with EPS_p_max failure, lying at z = 0 with all its nodes
-fixed in Z; it is pulled in its plane until it fails and is deleted (elements.md 6.4), staying flat. A stiff
+fixed in Z; it is pulled in its plane until it fails and is deleted (docs/theory/elements.md 6.4), staying flat. A stiff
 cube (mass M) then comes down at v0 on it, its lower-face nodes the secondary nodes. Everything is read from the
 deck; Idel decides what is expected:
 
@@ -21,7 +22,7 @@ Tolerances (what they mean):
     check_contact_node_on_segment);
   * Idel 1, 2: the interface's FNX, FNY, FNZ exactly 0 at every row, the cube keeps -v0 to 1e-9 (round-off; a
     single cycle of contact force would change it by more than 1e-4) and its lower face ends below z = 0;
-  * energy error within 1 % (verification.md C).
+  * energy error within 1 % (docs/theory/verification.md C).
 """
 import os
 

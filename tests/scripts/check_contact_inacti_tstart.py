@@ -1,4 +1,4 @@
-"""Initial penetrations treated when an interface starts at Tstart > 0 (type7-lagdt.md 4.6).
+"""Initial penetrations treated when an interface starts at Tstart > 0 (docs/theory/type7-lagdt.md 4.6).
 
 usage: /usr/bin/python3 check_contact_inacti_tstart.py --radx RADX --decks DIR --out DIR
 

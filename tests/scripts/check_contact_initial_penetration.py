@@ -1,4 +1,4 @@
-"""Initial penetrations treated by Inacti 0, 1, 2, 3, 5, 6 (type7-lagdt.md 4.6), one deck each.
+"""Initial penetrations treated by Inacti 0, 1, 2, 3, 5, 6 (docs/theory/type7-lagdt.md 4.6), one deck each.
 
 usage: /usr/bin/python3 check_contact_initial_penetration.py --radx RADX
            --decks decks/verification/initial_penetration/INITIAL_PENETRATION_INACTI*_0000.rad --out DIR
@@ -27,7 +27,7 @@ Tolerances (what they mean):
   * Inacti 5 and 6: tile A never passes the plate and rebounds. (Its acceleration at t = 0 is not a test of
     the reduced gap: the pair is active from the first cycle, where the quadratic damping term of 4.3 already
     pushes with 0.32 m v^2 / gap per node; the largest penetration into the reduced gap is the test.)
-  * energy error within 1 % (verification.md C).
+  * energy error within 1 % (docs/theory/verification.md C).
 """
 import os
 

@@ -1,4 +1,5 @@
-"""Secondary nodes against one TYPE7 segment (verification.md A.2) against the one-degree-of-freedom closed form.
+"""Secondary nodes against one TYPE7 segment (docs/theory/verification.md A.2) against the
+one-degree-of-freedom closed form.
 
 usage: /usr/bin/python3 check_contact_node_on_segment.py --radx RADX
            --deck decks/verification/node_on_segment/NODE_ON_SEGMENT_0000.rad
@@ -8,8 +9,8 @@ usage: /usr/bin/python3 check_contact_node_on_segment.py --radx RADX
 Each deck: a stiff cube (mass M) moving at v0 along -Z towards one fixed, flat main segment; its N lower-face
 nodes are the secondary nodes and reach the gap together, so the cube is one degree of freedom on N identical
 pairs F(p) = K p g / (g - p), damped per pair by c_i = VISs sqrt(2 k m_i / r) + 0.32 m_i max(0, -v_n) / (g - p)
-(type7-lagdt.md 4.3). Everything (M, nodal masses, K, g, VISs, v0, the start distance) is read from the deck;
-the expected largest penetration, contact time and rebound speed come from check_contact_common.rigid_impact
+(docs/theory/type7-lagdt.md 4.3). Everything (M, nodal masses, K, g, VISs, v0, the start distance) is read from the
+deck; the expected largest penetration, contact time and rebound speed come from check_contact_common.rigid_impact
 (RK4 of M dv/dt = N F(p) - sum c_i v), which without damping is the energy equation of A.2
 (M v0^2 / 2 = N K g^2 (-x - ln(1 - x))): self-tested first.
 
@@ -21,7 +22,7 @@ Tolerances (what they mean):
   * time in contact (mean penetration > 0) within 1 % (one cycle is 0.3 %);
   * the lower-face nodes stay level (spread of their penetrations below 1 % of the gap): the rigid-body premise;
   * the VISs deck rebounds slower than the VISs ~ 0 deck;
-  * energy balance (verification.md C): the run's energy error within 1 %.
+  * energy balance (docs/theory/verification.md C): the run's energy error within 1 %.
 --no-quadratic-damping compares with the one-DOF model without the 0.32 term (VISs ~ 0: rebound at v0).
 """
 import argparse

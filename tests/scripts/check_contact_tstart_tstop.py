@@ -1,4 +1,4 @@
-"""The interface's Tstart and Tstop (type7-lagdt.md 4.7): TYPE7 acts only for Tstart <= t < Tstop.
+"""The interface's Tstart and Tstop (docs/theory/type7-lagdt.md 4.7): TYPE7 acts only for Tstart <= t < Tstop.
 
 usage: /usr/bin/python3 check_contact_tstart_tstop.py --radx RADX
            --decks decks/verification/tstart_tstop/TSTART_AFTER_IMPACT_0000.rad
@@ -37,8 +37,8 @@ What is compared and the tolerances (what they mean):
     middle of the last step with a force (leapfrog velocities live at half steps, so this removes the half-cycle
     ambiguity, about 1 % of the speed here, leaving an O(dt^2) error);
   * "passes through": the lower face ends below the plate (penetration above g);
-  * energy error within 1 % (verification.md C): in TSTART_AFTER_IMPACT the energy given to the cube at Tstart
-    shows as negative elastic contact energy, so the balance closes.
+  * energy error within 1 % (docs/theory/verification.md C): in TSTART_AFTER_IMPACT the energy given to the cube at
+    Tstart shows as negative elastic contact energy, so the balance closes.
 """
 import os
 

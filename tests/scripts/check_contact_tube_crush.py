@@ -7,7 +7,7 @@ usage: /usr/bin/python3 check_contact_tube_crush.py --radx RADX
 
 Pass-through test, on the animation states (float64 coordinates of every node):
   * every quadrangle segment is split into four triangles around its centroid (the contact geometry of
-    type7-lagdt.md 4.3); a node is never tested against the triangles of a segment that contains it;
+    docs/theory/type7-lagdt.md 4.3); a node is never tested against the triangles of a segment that contains it;
   * for two consecutive states A and B, node and triangle vertices are taken to move on straight lines between
     them. The signed distance of the node to the triangle's plane is s_A in state A and s_B in state B (each
     with its own state's normal). A pass-through is a strict sign change (s_A s_B < 0, both above 1e-9 of the
@@ -26,7 +26,7 @@ Also checked:
   * the run reaches its end time and the moving end has travelled the imposed distance (0.5 % of it);
   * the tube folded: some node moved sideways by more than three thicknesses;
   * the self-contact acted: contact energy (elastic + damping + friction) above 0.1 % of the external work;
-  * energy error within 1 % (verification.md C).
+  * energy error within 1 % (docs/theory/verification.md C).
 """
 import argparse
 import os

@@ -2,14 +2,15 @@
 
 Not a test by itself. On top of check_contact_common (the deck reader, running radx, the time history), it
 holds what the law checks need, each computed from the deck the check runs:
-  * the /CTCLAW cards and /FUNCT curves of a deck, and a reader of the law string (contact-laws.md section 4);
+  * the /CTCLAW cards and /FUNCT curves of a deck, and a reader of the law string
+    (docs/theory/contact-laws.md section 4);
   * the tributary area A_s of each secondary node by the starter's rule (contact/type7_prepare.hpp,
     tributary_areas): the surface patches are the shells and the outer brick faces (a face no other brick has);
     a node takes a quarter of each 4-node patch and a third of each 3-node patch around it whose nodes are all
     secondary nodes of the interface (the contact surface: a block's lower-face corner takes its share of the
     lower face, not of the block's sides), or, when it has no such patch, of every patch around it;
-  * the normal laws P(u) of contact-laws.md section 2, written again here from the specification (the monotone
-    cubic with the tangents that contact/ctclaw_laws.cpp states), their energy integral and the largest
+  * the normal laws P(u) of docs/theory/contact-laws.md section 2, written again here from the specification (the
+    monotone cubic with the tangents that contact/ctclaw_laws.cpp states), their energy integral and the largest
     overclosure that absorbs a given energy;
   * the automatic stiffness density K / A_s that the starter listing prints for Kc = -1 or pe, to compare
     with the area computed here.
@@ -20,7 +21,7 @@ values in the READMEs).
 import math
 import re
 
-# The exponential law's cut-off: no contact below P = 1e-12 pz (contact-laws.md 2.2).
+# The exponential law's cut-off: no contact below P = 1e-12 pz (docs/theory/contact-laws.md 2.2).
 EXP_CUTOFF = 1e-12
 
 # ---------------------------------------------------------------------------------------------------
@@ -137,7 +138,7 @@ def listing_automatic_stiffness(listing_text):
 
 
 # ---------------------------------------------------------------------------------------------------
-# Normal laws (contact-laws.md section 2), per pair: the law string's parameters resolved with the pair's K
+# Normal laws (docs/theory/contact-laws.md section 2), per pair: the law string's parameters resolved with the pair's K
 # and A_s as the specification says (Kc = -1: K / A_s; lambda = (K / A_s) / pe).
 
 

@@ -1,4 +1,5 @@
-"""A cube dropped on a plate with each /CTCLAW normal law (contact-laws.md 2 and 6) against the closed forms.
+"""A cube dropped on a plate with each /CTCLAW normal law (docs/theory/contact-laws.md 2 and 6) against the
+closed forms.
 
 usage: /usr/bin/python3 check_ctclaw_drop.py --radx RADX --decks decks/verification/ctclaw_drop/*_0000.rad
            --out DIR
@@ -31,11 +32,11 @@ Tolerances (what they mean):
     central-difference integration across the law's onset costs ~1e-4 of v0; with VISs 0.05 the damping removes
     5.4 % of the speed, so 0.2 % also catches a damping off by more than ~4 %;
   * contact time of the bilinear law (mean overclosure > 0, its two crossings interpolated between rows) within
-    2 % of pi sqrt(M / k) (issue 12);
+    2 % of pi sqrt(M / k);
   * the lower-face nodes stay level at the peak (spread below 1 % of the gap): the rigid-body premise;
   * the starter listing's automatic stiffness density K / A_s (Kc = -1, pe) equals K over the A_s computed here
     (within its 6 printed digits): the checks' area is the starter's;
-  * energy balance (verification.md C): the run's energy error within 1 %.
+  * energy balance (docs/theory/verification.md C): the run's energy error within 1 %.
 """
 import math
 import os

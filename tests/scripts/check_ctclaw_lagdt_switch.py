@@ -1,6 +1,6 @@
 """A /CTCLAW law on an /INTER/LAGDT/TYPE7 acts until its pairs switch to Lagrange multipliers, and the
-multipliers act after the switch (contact-laws.md 5: "the normal law applies until a pair switches; after the
-switch the friction law acts with the multiplier as the normal force"; type7-lagdt.md 6).
+multipliers act after the switch (docs/theory/contact-laws.md 5: "the normal law applies until a pair switches; after
+the switch the friction law acts with the multiplier as the normal force"; docs/theory/type7-lagdt.md 6).
 
 usage: /usr/bin/python3 check_ctclaw_lagdt_switch.py --radx RADX
            --decks decks/verification/ctclaw_lagdt_switch/*_0000.rad --out DIR
@@ -60,7 +60,7 @@ Checks and tolerances (what they mean):
       lowers the ratio, and the lower face spreads sideways (its nodes move at +-0.05 to 0.07 m/s along Y) so
       the four forces lean off -X, hence 0.8 and 2 %. Were the friction still bounded by the law's P A_s
       after the switch, the ratio would fall to ~0.1 (a third of mu);
-  (c) the run's energy error (summary) within 1 % (verification.md C).
+  (c) the run's energy error (summary) within 1 % (docs/theory/verification.md C).
 """
 import math
 import os
@@ -74,8 +74,8 @@ COULOMB = (1, 11)
 
 
 def stiffness(law, u):
-    """Kc(u) = dP/du (Pa/m) of a check_ctclaw_common.NormalLaw: the closed forms of contact-laws.md 2 for the
-    bilinear, exponential and power laws, the slope of the segment for a linear table (a central difference
+    """Kc(u) = dP/du (Pa/m) of a check_ctclaw_common.NormalLaw: the closed forms of docs/theory/contact-laws.md 2 for
+    the bilinear, exponential and power laws, the slope of the segment for a linear table (a central difference
     elsewhere)."""
     if law.kind == 1:
         return law.kc if u > 0 else 0.0

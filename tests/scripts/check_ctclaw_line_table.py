@@ -1,4 +1,4 @@
-"""A tabulated /CTCLAW law equal to the bilinear law gives the same run (issue 12; contact-laws.md 2).
+"""A tabulated /CTCLAW law equal to the bilinear law gives the same run (docs/theory/contact-laws.md 2).
 
 usage: /usr/bin/python3 check_ctclaw_line_table.py --radx RADX
            --deck-table decks/verification/ctclaw_line_table/CTCLAW_LINE_TABLE_0000.rad

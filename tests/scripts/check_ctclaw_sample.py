@@ -7,8 +7,8 @@ Checks, from the run's NAME_summary.json and starter listing:
     string, so the laws were read and attached to their interfaces;
   * the laws acted: the contact energies (elastic, damping, friction) add up to more than 1 % of the initial
     energy (the block's impact is carried by interface 1's law);
-  * the energy balance closes within 1 % (issue 12: "the balance closes within 1 % on the law decks"; the error
-    is the engine's E / (E0 + W) - 1 with contact energies included, verification.md C).
+  * the energy balance closes within 1 %, as on the law decks (the error is the engine's E / (E0 + W) - 1 with
+    contact energies included, docs/theory/verification.md C).
 """
 import argparse
 import json

@@ -1,5 +1,5 @@
-"""A block sliding under gravity with each /CTCLAW friction law (contact-laws.md 3, 5 and 6) against the closed
-forms; the same on an /INTER/LAGDT/TYPE7 with every pair switched to a Lagrange-multiplier row.
+"""A block sliding under gravity with each /CTCLAW friction law (docs/theory/contact-laws.md 3, 5 and 6) against the
+closed forms; the same on an /INTER/LAGDT/TYPE7 with every pair switched to a Lagrange-multiplier row.
 
 usage: /usr/bin/python3 check_ctclaw_sliding.py --radx RADX
            --decks decks/verification/ctclaw_sliding/*_0000.rad decks/verification/ctclaw_lagdt/*_0000.rad
@@ -46,7 +46,7 @@ Tolerances (what they mean):
   * the cube stays in contact: its lower-face node in the time history stays between the plate and the gap
     surface at every row;
   * the frictional contact energy equals the kinetic energy lost within 2 % of the initial kinetic energy, and
-    the run's energy error is within 1 % (verification.md C);
+    the run's energy error is within 1 % (docs/theory/verification.md C);
   * LAGDT: every pair switched at every cycle (the summary's count of switched pair-cycles).
 """
 import math
@@ -59,7 +59,7 @@ import check_ctclaw_common as ctc
 
 
 def friction_traction(law, s, p):
-    """|F_t| / A_s (Pa) of a friction law at slip speed s and pressure p (contact-laws.md 3)."""
+    """|F_t| / A_s (Pa) of a friction law at slip speed s and pressure p (docs/theory/contact-laws.md 3)."""
     kind = law["friction"] % 10
     prm = law["params"]
     mu = prm.get("mu", 0.0)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Stiff, fast contact, the case /INTER/LAGDT/TYPE7 exists for (type7-lagdt.md section 6): a 4 x 4 x 2 brick
+"""Stiff, fast contact, the case /INTER/LAGDT/TYPE7 exists for (docs/theory/type7-lagdt.md section 6): a 4 x 4 x 2 brick
 block hitting a shell plate at 50 m/s through two interfaces with Stfac 30 (scripts/make_block_on_plate.py
 --v0 50 --stfac 30 --block-layers 2), run with LAGDT and Tmin just below the brick step, and with plain TYPE7.
 
@@ -16,7 +16,7 @@ through the plate and within 2 % (the issue's stiff-contact demand).
 Free plate, LAGDT: energy within 1 % (the issue's fast-impact demand). The multipliers' work is booked exactly
 (tests/unit/contact/test_lagrange_contact.cpp); the one-step stop rings the bricks' hourglass modes at the highest
 frequency, which the brick's trapezoidal hourglass energy books as the work those forces do (hex8_fb.cpp; the
-rectangle rule of elements.md 3.4 read +3 % here).
+rectangle rule of docs/theory/elements.md 3.4 read +3 % here).
 """
 import argparse
 import os

@@ -25,7 +25,7 @@ Tolerances (what they mean):
   * the multipliers never pull: FNZ (the interface's normal force on the bar) >= 0 on every row, and zero on
     every row after the separation, with no switched pair in the last listing lines;
   * no lower-face node inside the gap by more than 1e-3 of it (the rows stop the face on the gap's edge);
-  * energy balance within 1 % (verification.md C), both decks.
+  * energy balance within 1 % (docs/theory/verification.md C), both decks.
 """
 import argparse
 import os

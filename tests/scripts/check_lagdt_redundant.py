@@ -18,7 +18,7 @@ interfaces (the same secondary nodes on the same surface), the plate fully fixed
 LAGDT_RIGID_BODY: the cube is a rigid body.
   * its pairs stay on the penalty path: no switched pair, and one warning naming a lower-face node;
   * the penalty stops it inside the gap (largest penetration between 0 and the gap);
-Both: energy balance within 1 % (verification.md C).
+Both: energy balance within 1 % (docs/theory/verification.md C).
 """
 import argparse
 import os

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Checks the VTKHDF 1.0 mesh layout of a radx HDF5 file (model file NAME_0000.hdf or results mesh
-P.mesh.hdf) against docs results-format.md section 2, independently of the C++ writer.
+P.mesh.hdf) against docs/theory/results-format.md section 2, independently of the C++ writer.
 
 usage: /usr/bin/python3 check_model_file.py FILE.hdf --nodes N --cells C [--types 9:100,12:8]
 
@@ -165,7 +165,7 @@ def check(path, nodes, cells, type_counts):
         print(f"{path}")
         superblock = f.id.get_create_plist().get_version()[0]
         c.expect(superblock < 3, f"HDF5 superblock version {superblock}: library-version bounds were raised "
-                 "(or SWMR used); results-format.md section 2 forbids it")
+                 "(or SWMR used); docs/theory/results-format.md section 2 forbids it")
         print(f"  HDF5 superblock version {superblock}")
         for name in ("radx_model_format_version", "radx_version"):
             if name in f.attrs:

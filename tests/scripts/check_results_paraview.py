@@ -4,7 +4,7 @@ usage: pvpython check_results_paraview.py --series P.hdf.series --xmf P.xmf --ex
            --expect-cells NC --expect-arrays a,b,c [--expect-times t0,t1,...] [--expect-cell-types 9,12]
            [--last-displacement-from P_00000K.hdf] [--xdmf-readers XDMFReader,Xdmf3ReaderS]
 
-results-format.md sections 4 and 6. The .hdf.series is opened with OpenDataFile (ParaView's file series
+docs/theory/results-format.md sections 4 and 6. The .hdf.series is opened with OpenDataFile (ParaView's file series
 over its VTKHDF reader); the .xmf with each XDMF reader named (default: the XDMF 2 reader and the Xdmf3
 reader). For every reader: the number of states, the times (relative 1e-12), the point and cell array
 names (every expected name present), the cell count and the VTK cell types of the last state, and, with

@@ -3,11 +3,11 @@
 usage: /usr/bin/python3 check_results_run.py --radx RADX --deck NAME_0000.rad --out DIR
            --paraview-check check_results_paraview.py
 
-issue 4 / results-format.md: the states are written at the first cycle whose time reaches each /ANIM/DT time
+docs/theory/results-format.md: the states are written at the first cycle whose time reaches each /ANIM/DT time
 (Tstart, Tstart + dT, ... up to Tstop and the end time), plus the first and the last cycle. This script derives
 those due times from the engine deck itself (its own small reader of /RUN and /ANIM/DT), the arrays from the
-/ANIM names (its own table of Radioss names, written from results-format.md), and the cell count and VTK types
-from the model file (h5py); then checks:
+/ANIM names (its own table of Radioss names, written from docs/theory/results-format.md), and the cell count and VTK
+types from the model file (h5py); then checks:
   * the number of states and that state k's time t_k lies in [due_k, due_k + dt_max), dt_max the largest time
     step of the run (a state is written on the first cycle at or after its due time);
   * every state carries the same arrays, and they are the expected ones;
@@ -29,7 +29,7 @@ import numpy as np
 
 import results_common as rc
 
-ANIM_ARRAYS = {  # Radioss /ANIM name -> radx array (results-format.md section 3)
+ANIM_ARRAYS = {  # Radioss /ANIM name -> radx array (docs/theory/results-format.md section 3)
     ("ELEM", "VONM"): "von_mises", ("ELEM", "EPSP"): "plastic_strain", ("ELEM", "THIC"): "thickness",
     ("ELEM", "ENER"): "internal_energy_density", ("ELEM", "P"): "pressure", ("ELEM", "DENS"): "density",
     ("ELEM", "HOUR"): "hourglass_energy_density", ("VECT", "VEL"): "velocity", ("VECT", "DISP"): "displacement",

@@ -1,4 +1,4 @@
-"""What guards a run's outputs (issue 11, item 4): a refused or failed start leaves nothing of an earlier run, two
+"""What guards a run's outputs: a refused or failed start leaves nothing of an earlier run, two
 engines of one name never share a folder, a second stop signal of either kind ends the engine at once.
 
 usage: /usr/bin/python3 check_run_guards.py --radx R --radx-starter S --radx-engine E --deck NAME_0000.rad --out DIR

@@ -3,7 +3,7 @@
 usage: /usr/bin/python3 check_sigkill.py --radx-starter S --radx-engine E --deck NAME_0000.rad --out DIR
            --paraview-check check_results_paraview.py
 
-results-format.md section 5: a crash at any point leaves a consistent, readable result set, and the next run
+docs/theory/results-format.md section 5: a crash at any point leaves a consistent, readable result set, and the next run
 cleans up. The engine deck is the deck's own with a longer end time and frequent states (written here), run
 on one thread so that it lasts a few seconds; the engine is killed once the index lists at least 3 states.
 Checks:

@@ -1,4 +1,4 @@
-"""A SIGKILL at any write of a time-history flush (issue 11, item 5): P_th.h5 then reads, with plain h5py and
+"""A SIGKILL at any write of a time-history flush: P_th.h5 then reads, with plain h5py and
 with `radx th`, as exactly the rows of a completed flush, or is refused with a message saying it was being
 written when the run was killed and how to recover. Never rows of zeros, never groups of different lengths.
 

@@ -150,7 +150,7 @@ def sh3n(f):
     check(str(f["sh3n/1"].attrs["object_kind"]) == "3-node shell", "object_kind")
     # THIC: the thickness the element tracks (Ithick 0 only keeps it out of the mechanics), of uniaxial plane
     # stress: e_zz = -nu e_xx, t = T (1 + u/L)^-nu; 1e-5 T is 2 % of its change at the end (the lateral
-    # inertia). EPSD: the equivalent rate of elements.md 1.3,
+    # inertia). EPSD: the equivalent rate of docs/theory/elements.md 1.3,
     # sqrt(4/3 (e_xx^2 + e_yy^2 + e_xx e_yy)), of uniaxial stress (e_yy = -nu e_xx) at e_xx = V/(L + u): 1e-2
     # for the lateral inertia and the central difference of the rate against the node's displacement.
     r3, c3, units3 = group(f, "sh3n/3")

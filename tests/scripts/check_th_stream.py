@@ -1,4 +1,4 @@
-"""Long runs (issue 11, item 5): the time history is appended in place with memory independent of the run
+"""Long runs: the time history is appended in place with memory independent of the run
 length, survives SIGKILL with every flushed row, and the state indexes stay valid after every state.
 
 usage: /usr/bin/python3 check_th_stream.py --radx-starter S --radx-engine E --deck FREE_FALL_0000.rad --out DIR

@@ -2,7 +2,7 @@
 // whole library: read_starter_deck + build_model + contact::prepare_type7_interfaces + read_run_controls,
 // then solver::ExplicitEngine with a callback that records what each check needs. Every expected value is
 // computed HERE from the deck's own parameters read back from the Model (E, rho, lengths from the node
-// coordinates, v0 from the initial velocity), with the closed forms of shared/spec/verification.md.
+// coordinates, v0 from the initial velocity), with the closed forms of docs/theory/verification.md.
 //
 // Cases: A.3 elastic bar on a rigid wall, A.4 two bars exchanging velocities through TYPE7 contact, B.10
 // cantilever strip of shells, B.9 Taylor bar, B.14 uniaxial Johnson-Cook at one element; and on every deck
@@ -74,7 +74,8 @@ Case load_case(const std::string& folder, const std::string& root) {
   return c;
 }
 
-// Energy balance (verification.md C): |error %| of elements.md 8 at every cycle; keeps the worst.
+// Energy balance (docs/theory/verification.md C): |error %| of docs/theory/elements.md 8 at every cycle;
+// keeps the worst.
 struct EnergyWatch {
   double worst = 0;
   std::int64_t worst_cycle = -1;
@@ -93,9 +94,9 @@ struct EnergyWatch {
 };
 
 // The energy balance must hold within 1 % of the initial total energy at every cycle: the error of
-// elements.md 8, E / (E0 + W_ext) - 1, counts kinetic, internal (with bulk-viscosity heat), hourglass and
-// contact energies, so 1 % is the whole budget for the time integration and the work bookkeeping of the
-// walls and imposed velocities.
+// docs/theory/elements.md 8, E / (E0 + W_ext) - 1, counts kinetic, internal (with bulk-viscosity heat),
+// hourglass and contact energies, so 1 % is the whole budget for the time integration and the work
+// bookkeeping of the walls and imposed velocities.
 void check_energy(const EnergyWatch& e, const char* what) {
   INFO(what << ": worst energy error " << e.worst << " % at cycle " << e.worst_cycle);
   REQUIRE(e.cycles > 0);
@@ -195,7 +196,8 @@ TEST_CASE("verification: elastic bar on a rigid wall", "[verification]") {
   double dt1 = 0;
   const auto res = eng.run([&](const sv::CycleReport& r) {
     const auto& s = eng.nodes();
-    // Velocity of the lower face at t_n: v^{n-1/2} + dt1/2 a^n after the wall has acted (elements.md 8).
+    // Velocity of the lower face at t_n: v^{n-1/2} + dt1/2 a^n after the
+    // wall has acted (docs/theory/elements.md 8).
     double vl = 0, zl = std::numeric_limits<double>::infinity();
     for (const auto n : lower) {
       vl += s.vz[n] + 0.5 * dt1 * s.az[n];
@@ -442,7 +444,7 @@ TEST_CASE("verification: two bars exchange velocities", "[verification]") {
   const double sigma0 = -s_int[0] / t_int, sigma1 = -s_int[1] / t_int;
 
   // Final mean velocity of each bar: its momentum over its mass, sum_i m_i v_i / sum_i m_i over its nodes,
-  // with the full-step velocity v^{n-1/2} + dt1/2 a^n (elements.md 8).
+  // with the full-step velocity v^{n-1/2} + dt1/2 a^n (docs/theory/elements.md 8).
   const auto& s = eng.nodes();
   double pb[2] = {0, 0}, mb[2] = {0, 0};
   for (std::size_t n = 0; n < nn; ++n) {
@@ -486,9 +488,10 @@ TEST_CASE("verification: two bars exchange velocities", "[verification]") {
   CHECK(std::abs(v_struck - v0) <= 0.02 * v0);
   CHECK(v_struck > v_striker);  // the bars separate for good
 
-  // The contact's own losses. The quadratic damping term of type7-lagdt.md 4.3 always applies (VISs ~ 0
-  // removes only the linear one); it acts while the faces approach, i.e. at the first touch: its work must
-  // stay below 1e-3 of E0, i.e. below 0.05 % of v0 on the final speeds (Delta v ~ Delta E / (2 E0) v0).
+  // The contact's own losses. The quadratic damping term of docs/theory/type7-lagdt.md 4.3 always applies
+  // (VISs ~ 0 removes only the linear one); it acts while the faces approach, i.e. at the first touch: its
+  // work must stay below 1e-3 of E0, i.e. below 0.05 % of v0 on the final
+  // speeds (Delta v ~ Delta E / (2 E0) v0).
   CHECK(last.contact_damping >= 0);
   CHECK(last.contact_damping <= 1e-3 * e0);
   // Friction only holds the faces against sideways sliding: in the 1-D solution they do not slide, so it
@@ -548,8 +551,8 @@ TEST_CASE("verification: cantilever strip first frequency", "[verification]") {
   REQUIRE(!tip.empty());
 
   sv::ExplicitEngine eng(m, c.controls, sv::EngineOptions{1});
-  // Rotational inertia of the tip corner node (one element, elements.md 5): (m_e/4) (A0/d + t^2/12), d = 9
-  // for Ishell 1, 12 for QEPH and QBAT; to round-off of its value.
+  // Rotational inertia of the tip corner node (one element, docs/theory/elements.md 5): (m_e/4)
+  // (A0/d + t^2/12), d = 9 for Ishell 1, 12 for QEPH and QBAT; to round-off of its value.
   {
     const double h = L / 40.0, a0 = h * h;  // the strip's 0.025 m square elements
     const double me = mat.rho * thick * a0;
@@ -595,8 +598,8 @@ TEST_CASE("verification: cantilever strip first frequency", "[verification]") {
         variant.run, variant.ishell, f, cross.size(), f1, 100.0 * (f / f1 - 1.0), amplitude,
         internal_max > 0 ? hourglass_max / internal_max : 0.0, t.size(), seconds_since(t0));
   // First frequency within 2 % of the Euler-Bernoulli value: the shells' bilinear bending (one point, or
-  // four) and the lumped rotary inertia (elements.md 5) shift it by a fraction of a percent on this mesh;
-  // 2 % of f1 is 0.17 Hz, far below the distance to the second mode (52 Hz).
+  // four) and the lumped rotary inertia (docs/theory/elements.md 5) shift it by a fraction of a percent on
+  // this mesh; 2 % of f1 is 0.17 Hz, far below the distance to the second mode (52 Hz).
   CHECK(std::abs(f - f1) <= 0.02 * f1);
   // The stabilisation (QEPH) or hourglass control (Ishell 1) must not carry the bending: its energy stays
   // below 1 % of the largest internal energy of the run, i.e. it stiffens the first mode by less than about
@@ -800,8 +803,8 @@ TEST_CASE("verification: Taylor bar final length, thread independence", "[verifi
   Case c = load_case("taylor_bar", "TAYLOR_BAR");
   const md::Model& m = c.model;
   const md::Material& mat = only_material(m);
-  // The reference answer belongs to these parameters (verification.md B.9), so the deck must carry them
-  // (compared in SI; relative 1e-12: only the decimal reading and the unit factors round).
+  // The reference answer belongs to these parameters (docs/theory/verification.md B.9), so the deck must
+  // carry them (compared in SI; relative 1e-12: only the decimal reading and the unit factors round).
   const double f_len = m.units.length, f_mass = m.units.mass, f_time = m.units.time;
   const double f_stress = f_mass / (f_len * f_time * f_time);
   const auto same = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); };
@@ -921,11 +924,11 @@ TEST_CASE("verification: Johnson-Cook single brick flow curve", "[verification]"
   //  * axial stress szz = s_u + lateral stress; the lateral faces are free, so the lateral stress is only
   //    the inertia of the lateral contraction, of order rho c (0.5 - nu) eps_dot h ~ 0.1 MPa when the
   //    contraction speeds up at yield (README): it must stay below 1e-3 of the flow stress.
-  // Johnson-Cook hardening is explicit (elements.md 6.2-6.3: the slope H is taken at the plastic strain of
-  // the start of the step, H = 0 at eps_p = 0 for n < 1), so on a cycle where eps_p grows from e0 to e1 the
-  // stress lies on the curve up to that cycle's hardening increment |sigma_y(e1) - sigma_y(e0)| (1.7 MPa on
-  // the first plastic cycle, below 1e-5 of the flow stress once eps_p > 1e-4), plus round-off (1e-12).
-  // On the few cycles right after the first yield where eps_p does not grow, the point reloads
+  // Johnson-Cook hardening is explicit (docs/theory/elements.md 6.2-6.3: the slope H is taken at the plastic
+  // strain of the start of the step, H = 0 at eps_p = 0 for n < 1), so on a cycle where eps_p grows from e0
+  // to e1 the stress lies on the curve up to that cycle's hardening increment |sigma_y(e1) - sigma_y(e0)|
+  // (1.7 MPa on the first plastic cycle, below 1e-5 of the flow stress once eps_p > 1e-4), plus round-off
+  // (1e-12). On the few cycles right after the first yield where eps_p does not grow, the point reloads
   // elastically inside the yield surface (s_u <= sigma_y), which is only allowed before eps_p reaches 1e-5.
   double worst_u = 0, worst_axial = 0, worst_lateral = 0, worst_late = 0;
   std::size_t plastic = 0, reload = 0;
@@ -958,8 +961,8 @@ TEST_CASE("verification: Johnson-Cook single brick flow curve", "[verification]"
   CHECK(plastic > rec.size() / 2);  // the run is mostly plastic flow
 
   // Plastic work = area under the flow curve times the volume. The engine books sigma_vm,new d_eps_p V each
-  // cycle (elements.md 6.5) with the current volume V; the reference integrates the closed-form curve
-  // exactly over each cycle's plastic increment with the same V:  sum_k V_k [F(e_k) - F(e_k-1)],
+  // cycle (docs/theory/elements.md 6.5) with the current volume V; the reference integrates the closed-form
+  // curve exactly over each cycle's plastic increment with the same V:  sum_k V_k [F(e_k) - F(e_k-1)],
   // F(e) = a e + b e^(n+1) / (n + 1). The two differ by where the stress is sampled inside each increment
   // (at most that cycle's hardening increment, below 1e-5 of the stress after the onset of yield):
   // relative 1e-5. Against the initial volume (the README's closed form) the volume differs by the elastic
@@ -1033,7 +1036,7 @@ TEST_CASE("verification: loads and an imposed velocity started and stopped by /S
   const auto res = eng.run([&](const sv::CycleReport& r) {
     REQUIRE(r.full);
     // The energy balance as an absolute error, E - (E0 + W): the run starts at rest (E0 = 0), so right after
-    // a sensor the energies are tiny and the relative ERROR % of elements.md 8 says little.
+    // a sensor the energies are tiny and the relative ERROR % of docs/theory/elements.md 8 says little.
     err_energy =
         std::max(err_energy, std::abs(r.energy.total() - r.energy.initial_total - r.energy.external_work));
     for (auto& e : eng.take_events()) events.push_back(e);
@@ -1088,8 +1091,8 @@ TEST_CASE("verification: loads and an imposed velocity started and stopped by /S
 // ---------------------------------------------------------------------------------------------------------
 // A block of 4-node tetrahedra dropped on a clamped shell plate; TYPE7 main surface = the block's outer tetra
 // faces (triangle segments), secondary = the plate nodes. No closed form for the impact itself: the checks
-// are the global ones of verification.md C (energy balance) and that the contact on tetra faces works (the
-// block is stopped, no plate node crosses the block's bottom face).
+// are the global ones of docs/theory/verification.md C (energy balance) and that the contact on tetra faces
+// works (the block is stopped, no plate node crosses the block's bottom face).
 TEST_CASE("verification: tetrahedron block dropped on a plate through TYPE7", "[verification][tetra]") {
   Case c = load_case("tetra_drop", "TETRA_DROP");
   const md::Model& m = c.model;

@@ -1,8 +1,8 @@
-// The /CTCLAW law family (contact/ctclaw_laws.hpp) against contact-laws.md sections 2 and 3: each normal
-// law's pressure and stiffness against its formula written out again here at several overclosures, at the
-// KcMax knee and at both ends of a table, the stiffness against a centred finite difference of the pressure,
-// the monotone cubic table's properties, and each friction law's force against its formula at several slip
-// speeds and pressures, its direction and the one-directional variants.
+// The /CTCLAW law family (contact/ctclaw_laws.hpp) against docs/theory/contact-laws.md sections 2 and 3: each
+// normal law's pressure and stiffness against its formula written out again here at several overclosures, at
+// the KcMax knee and at both ends of a table, the stiffness against a centred finite difference of the
+// pressure, the monotone cubic table's properties, and each friction law's force against its formula at
+// several slip speeds and pressures, its direction and the one-directional variants.
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>

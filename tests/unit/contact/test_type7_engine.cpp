@@ -1,7 +1,7 @@
 // TYPE7 in the engine, the paths a deck cannot reach reliably: a secondary node whose remaining gap
-// (g - p)/g is below 1e-6 cannot be held by the hyperbolic penalty (type7-lagdt.md 4.3) and is deactivated
-// with a warning naming the node and the interface. The search's workload the results report: candidate
-// pairs per active cycle and sorts, against a brute-force search on the same coordinates.
+// (g - p)/g is below 1e-6 cannot be held by the hyperbolic penalty (docs/theory/type7-lagdt.md 4.3) and is
+// deactivated with a warning naming the node and the interface. The search's workload the results report:
+// candidate pairs per active cycle and sorts, against a brute-force search on the same coordinates.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>

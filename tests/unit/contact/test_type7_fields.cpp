@@ -1,6 +1,6 @@
-// /INTER/TYPE7 and /INTER/LAGDT/TYPE7 (type7-lagdt.md sections 2-3, deck-format.md section 2): every
-// field read through build_model into model::Interface, the conditional cards, every default, and the
-// checks with the line of the field at fault.
+// /INTER/TYPE7 and /INTER/LAGDT/TYPE7 (docs/theory/type7-lagdt.md sections 2-3, docs/theory/deck-format.md
+// section 2): every field read through build_model into model::Interface, the conditional cards, every
+// default, and the checks with the line of the field at fault.
 //
 // The interface sits on a tiny model: a one-element shell plate (part 1) as the main surface
 // (/SURF/PART/31) and one brick (part 2) above it whose nodes are the secondary group (/GRNOD/PART/21).
@@ -57,7 +57,7 @@ std::string all_diags(const Diagnostics& diags) {
   return s;
 }
 
-// --- the layouts, as type7-lagdt.md section 2 and deck-format.md /INTER/TYPE7 give them
+// --- the layouts, as docs/theory/type7-lagdt.md section 2 and docs/keywords.md /INTER/TYPE7 give them
 
 using Vals = std::map<std::string, std::string>;  // field name -> text as written (absent: blank)
 

@@ -1,8 +1,8 @@
-// TYPE7 pair laws (contact/type7_laws.hpp) against type7-lagdt.md 4.3 to 4.5: every function against
-// its formula written out again here, the energy against a numerical integral of the force, the tangent
-// stiffness against a finite difference of the force, the Renard law's continuity, the friction force
+// TYPE7 pair laws (contact/type7_laws.hpp) against docs/theory/type7-lagdt.md 4.3 to 4.5: every function
+// against its formula written out again here, the energy against a numerical integral of the force, the
+// tangent stiffness against a finite difference of the force, the Renard law's continuity, the friction force
 // direction and cap, the Iform 2 stick-then-slide history, the filters, and the energy equation of
-// verification.md A.2 solved for its table.
+// docs/theory/verification.md A.2 solved for its table.
 #include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
@@ -105,7 +105,7 @@ TEST_CASE("penalty energy is the integral of the force and the stiffness its der
   CHECK(c::penalty_energy(1.0, 1.0, tiny) == Approx(0.5 * tiny * tiny * (1 + 2 * tiny / 3)).epsilon(1e-14));
 }
 
-TEST_CASE("energy equation of verification.md A.2 reproduces its table", "[type7-laws]") {
+TEST_CASE("energy equation of docs/theory/verification.md A.2 reproduces its table", "[type7-laws]") {
   // m v0^2 / (2 K g^2) = -x - ln(1 - x): with K = g = 1 the left side P equals the stored energy at
   // p = x, so x is found by bisection on penalty_energy (increasing in x). Columns: P, the table's x
   // (5 decimals), x to 15 digits (mpmath findroot at 30 digits, outside this project). The table's

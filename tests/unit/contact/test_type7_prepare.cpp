@@ -1,4 +1,4 @@
-// TYPE7 starter computations against type7-lagdt.md sections 4.1 (gap), 4.2 (stiffness), 4.3
+// TYPE7 starter computations against docs/theory/type7-lagdt.md sections 4.1 (gap), 4.2 (stiffness), 4.3
 // (projection weights) and 4.6 (initial penetrations), on small models built in the test.
 #include <algorithm>
 #include <array>

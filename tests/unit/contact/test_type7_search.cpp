@@ -1,6 +1,6 @@
-// TYPE7 candidate search (type7-lagdt.md 4.8): the voxel sort against the brute-force reference on random
-// meshes, self-contact exclusion, the margin, the re-sort criterion 2 d >= margin and the guarantee that
-// makes it safe, removals. The scaling benchmark at the end is hidden (run by bench/contact_search.sh).
+// TYPE7 candidate search (docs/theory/type7-lagdt.md 4.8): the voxel sort against the brute-force reference
+// on random meshes, self-contact exclusion, the margin, the re-sort criterion 2 d >= margin and the guarantee
+// that makes it safe, removals. The scaling benchmark at the end is hidden (run by bench/contact_search.sh).
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>

@@ -1,5 +1,5 @@
 // Model file (io/hdf5/model_file.hpp): round trip of every Model field, the VTKHDF layout of
-// results-format.md section 2, and crash-safe failures (no .part left, previous file untouched).
+// docs/theory/results-format.md section 2, and crash-safe failures (no .part left, previous file untouched).
 //
 // Tolerances: the round trip is compared EXACTLY (==), doubles included: the file stores the same
 // IEEE 754 double bits (float64 little-endian datasets and attributes, no conversion), so any
@@ -889,7 +889,7 @@ TEST_CASE("model file: an empty model round-trips", "[io][model_file]") {
   CHECK(b.node_groups.empty());
 }
 
-TEST_CASE("model file: VTKHDF layout of results-format.md section 2", "[io][model_file]") {
+TEST_CASE("model file: VTKHDF layout of docs/theory/results-format.md section 2", "[io][model_file]") {
   TempDir dir;
   const std::string path = dir.file("LAYOUT_0000.hdf");
   std::string error;

@@ -1,6 +1,7 @@
-// Result files (io/hdf5/results_writer.hpp, results-format.md sections 1 to 5): the mesh file, three states
-// read back with the HDF5 C API (external links, values, field data), both indexes parsed as text, time
-// ordering, removal of an earlier run's files of the same prefix only, and no .part/.tmp left behind.
+// Result files (io/hdf5/results_writer.hpp, docs/theory/results-format.md sections 1 to 5): the mesh file,
+// three states read back with the HDF5 C API (external links, values, field data), both indexes parsed as
+// text, time ordering, removal of an earlier run's files of the same
+// prefix only, and no .part/.tmp left behind.
 //
 // Tolerances: values are compared EXACTLY (==): the writer stores the caller's float32 and float64 bits
 // without conversion, and the index times are printed with 17 significant digits, which give back the

@@ -1,6 +1,7 @@
 // The engine's input and output edges: run controls from small engine decks written here (every keyword,
-// the defaults of deck-format.md section 3, errors at their lines, unknown /ANIM names, one-file decks),
-// the listing line and its blocks, the energy error of elements.md section 8 and NAME_summary.json.
+// the defaults of docs/theory/deck-format.md section 3, errors at their lines, unknown /ANIM names, one-file
+// decks), the listing line and its blocks, the energy error of docs/theory/elements.md section 8 and
+// NAME_summary.json.
 //
 // Tolerances:
 // * Values read from deck text are compared with Approx(...).epsilon(1e-12): the decimal text is converted
@@ -374,7 +375,7 @@ TEST_CASE("an /ANIM name radx does not write is a warning that lists the names i
     for (const auto& a : radx::anim_field_names()) {
       INFO(a.name);
       CHECK_FALSE(a.array.empty());
-      CHECK(a.array.find_first_of("/.") == std::string_view::npos);  // results-format.md 3
+      CHECK(a.array.find_first_of("/.") == std::string_view::npos);  // docs/theory/results-format.md 3
       CHECK(radx::find_anim_field(a.family, a.name) == &a);
     }
     const auto* dis = radx::find_anim_field("/ANIM/VECT", "dis");
@@ -496,7 +497,7 @@ TEST_CASE("a one-file deck gives the engine part's run controls", "[engine-io]")
   }
 }
 
-TEST_CASE("the energy error of elements.md 8", "[engine-io]") {
+TEST_CASE("the energy error of docs/theory/elements.md 8", "[engine-io]") {
   using radx::io::energy_error_percent;
   CHECK(energy_error_percent(110, 100, 0) == Approx(10).epsilon(kEps));
   CHECK(energy_error_percent(90, 100, 10) == Approx(100 * (90.0 / 110.0 - 1)).epsilon(kEps));

@@ -1,6 +1,6 @@
-// The /CTCLAW law string (contact-laws.md section 4): every rule with the values read, and every error naming
-// its parameter; then the same laws in a deck, located at their line, with the curve of a tabulated law and
-// unit conversion checked by the model builder.
+// The /CTCLAW law string (docs/theory/contact-laws.md section 4): every rule with the values read, and every
+// error naming its parameter; then the same laws in a deck, located at their line, with the curve of a
+// tabulated law and unit conversion checked by the model builder.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <fstream>

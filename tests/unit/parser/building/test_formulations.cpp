@@ -126,9 +126,9 @@ TEST_CASE(
 
 TEST_CASE("a substituted shell formulation runs with the defaults of the one that runs",
           "[starter][engine]") {
-  // Ishell 3 defaults its hourglass coefficients Hm and Hf to 0.1, Ishell 1 to 0.01 (elements.md 1.7); the
-  // default deck leaves them blank. Ishell 3 substituted by Ishell 1 must run Ishell 1 with Ishell 1's
-  // defaults: the same energies, bit for bit, as the deck written with Ishell 1.
+  // Ishell 3 defaults its hourglass coefficients Hm and Hf to 0.1, Ishell 1 to 0.01
+  // (docs/theory/elements.md 1.7); the default deck leaves them blank. Ishell 3 substituted by Ishell 1 must
+  // run Ishell 1 with Ishell 1's defaults: the same energies, bit for bit, as the deck written with Ishell 1.
   radx::test::TempDir dir;
   const auto deck3 = block_on_plate_with_ishell(dir.path() / "ishell3", 3);
   const auto deck1 = block_on_plate_with_ishell(dir.path() / "bt", 1);

@@ -1,6 +1,6 @@
 // Unit conversion from the deck's input units to its work units, including fields whose dimension
-// depends on another field (type7-lagdt.md: Stfac is a stiffness when Istf = 1). Expected factors are
-// computed here from the SI values of the units: g = 1e-3 kg, mm = 1e-3 m, ms = 1e-3 s.
+// depends on another field (docs/theory/type7-lagdt.md: Stfac is a stiffness when Istf = 1). Expected factors
+// are computed here from the SI values of the units: g = 1e-3 kg, mm = 1e-3 m, ms = 1e-3 s.
 #include <catch2/catch.hpp>
 
 #include "parser/reading/deck.hpp"

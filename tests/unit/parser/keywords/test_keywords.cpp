@@ -1,9 +1,9 @@
-// Every keyword of the subset (deck-format.md section 2 and 3) read from small decks written in each
-// layout band, values checked field by field through the Deck API.
+// Every keyword of the subset (docs/theory/deck-format.md section 2 and 3) read from small decks written in
+// each layout band, values checked field by field through the Deck API.
 //
-// The decks are written by the test from an independent statement of the layouts (taken from
-// shared/spec/deck-format.md for 2017 and newer, and for the formats 90 to 140 from the FORMAT blocks of
-// the reference's reader files, not from the reader's declarations): each field is placed right-justified
+// The decks are written by the test from an independent statement of the layouts (for 2017 and newer the
+// layouts docs/keywords.md lists, for the formats 90 to 140 the FORMAT blocks of the reference's reader
+// files; written out here, not taken from the reader's declarations): each field is placed right-justified
 // at the columns of its band by a helper, so no column is counted by hand. Every field gets a distinct
 // non-default value (11, 12, 13, ... for integers, 14.5, 15.5, ... for reals), so a field read from the
 // wrong columns, or a card read in the wrong order, gives a wrong value. Fields that a band does not have

@@ -1,7 +1,7 @@
 // Loads and kinematic conditions (solver/conditions/kinematics.hpp) on hand-built models and node states,
 // driven by a minimal central-difference loop written here: forces -> a = f/m -> conditions -> v += dt12 a,
-// x += dt2 v, with dt1 = 0 at cycle 0 (elements.md section 0). Each check states what its tolerance
-// means; "round-off" tolerances are 1e-12 relative unless a scale is given.
+// x += dt2 v, with dt1 = 0 at cycle 0 (docs/theory/elements.md section 0). Each check states what its
+// tolerance means; "round-off" tolerances are 1e-12 relative unless a scale is given.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -90,7 +90,7 @@ void update(sv::NodeState& s, double dt1, double dt2) {
   }
 }
 
-// Kinetic energy at print time (elements.md 8): v^{n-1/2} + dt1/2 a^n.
+// Kinetic energy at print time (docs/theory/elements.md 8): v^{n-1/2} + dt1/2 a^n.
 double kinetic_energy(const sv::NodeState& s, double dt1) {
   double e = 0;
   const double h = 0.5 * dt1;
@@ -739,8 +739,8 @@ TEST_CASE("sphere and cylinder walls: the radial velocity is removed on contact,
   // A free node (mass 1) heading for a fixed cylinder (axis Z through the origin, diameter 2) at velocity
   // (-1, 0, 0.5), or for a fixed sphere (centre 0, diameter 2) at (-1, 0, 0), from x = 1.1: it reaches r = 1
   // after 0.1 s and stops radially there (perfectly plastic), keeping vz (along the cylinder's axis), never
-  // inside; the normal work is -1/2 m u^2 with u = 1 the radial approach speed (elements.md 7.1, the law of
-  // the plane).
+  // inside; the normal work is -1/2 m u^2 with u = 1 the radial approach speed (docs/theory/elements.md 7.1,
+  // the law of the plane).
   for (const int shape : {1, 2}) {
     DYNAMIC_SECTION((shape == 1 ? "cylinder" : "sphere")) {
       auto md = nodes_model({{1.1, 0, 0}});

@@ -1,6 +1,6 @@
-// Engine time-step controls and the run pipeline, with expected values from elements.md 4.4-4.5 and
-// deck-format.md section 3: nodal mass scaling (/DT/NODA/CST), the /DT minimum stop, inverted elements,
-// and `radx run` on the default deck (energy balance and mass in NAME_summary.json).
+// Engine time-step controls and the run pipeline, with expected values from docs/theory/elements.md 4.4-4.5
+// and docs/theory/deck-format.md section 3: nodal mass scaling (/DT/NODA/CST), the /DT minimum stop, inverted
+// elements, and `radx run` on the default deck (energy balance and mass in NAME_summary.json).
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -104,7 +104,7 @@ TEST_CASE("/DT/NODA/CST adds the mass that keeps the nodal step at Tmin", "[engi
   const double E = 210000, nu = 0.3, rho = 7.85e-9;
   const double K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
   const double c = std::sqrt((K + 4 * G / 3) / rho);
-  const double dt_e = a / (c * (0.05 + std::sqrt(1 + 0.05 * 0.05)));  // elements.md 4.4, at rest
+  const double dt_e = a / (c * (0.05 + std::sqrt(1 + 0.05 * 0.05)));  // docs/theory/elements.md 4.4, at rest
   radx::model::RunControls rc;
   rc.t_stop = 1e-5;
   rc.nodal.given = true;
@@ -115,8 +115,9 @@ TEST_CASE("/DT/NODA/CST adds the mass that keeps the nodal step at Tmin", "[engi
   const auto res = engine.run({});
   REQUIRE(res.status == radx::solver::RunStatus::Normal);
   const double m0 = rho * a * a * a;
-  // A cube alone reproduces its own step at the nodes (elements.md 4.5): sqrt(2 (m/8) / K_e) = dt_e.
-  // Holding the step at 2 x 0.9 dt_e needs (2)^2 = 4 times the mass: 3 m0 added. Round-off tolerance.
+  // A cube alone reproduces its own step at the nodes (docs/theory/elements.md 4.5): sqrt(2
+  // (m/8) / K_e) = dt_e. Holding the step at 2 x 0.9 dt_e needs (2)^2 = 4 times the mass: 3 m0 added.
+  // Round-off tolerance.
   CHECK(res.last.added_mass == Approx(3 * m0).epsilon(1e-9));
   CHECK(res.last.control.kind == radx::solver::StepControl::Kind::Node);
   CHECK(res.dt <= rc.nodal.t_min * (1 + 1e-12));
@@ -130,7 +131,7 @@ TEST_CASE("/DT/NODA (no action) runs at the nodal step and adds no mass below Tm
   const double E = 210000, nu = 0.3, rho = 7.85e-9;
   const double K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
   const double c = std::sqrt((K + 4 * G / 3) / rho);
-  const double dt_e = a / (c * (0.05 + std::sqrt(1 + 0.05 * 0.05)));  // elements.md 4.4, at rest
+  const double dt_e = a / (c * (0.05 + std::sqrt(1 + 0.05 * 0.05)));  // docs/theory/elements.md 4.4, at rest
   radx::model::RunControls rc;
   rc.t_stop = 1e-5;
   rc.nodal.given = true;
@@ -146,8 +147,8 @@ TEST_CASE("/DT/NODA (no action) runs at the nodal step and adds no mass below Tm
   REQUIRE(res.status == radx::solver::RunStatus::Normal);
   CHECK(res.last.added_mass == 0.0);
   CHECK(res.last.control.kind == radx::solver::StepControl::Kind::Node);
-  // A lone cube's nodal step is its element step (elements.md 4.5), here at the /DT/NODA scale 0.67 instead
-  // of /DT's 0.9; relative round-off tolerance.
+  // A lone cube's nodal step is its element step (docs/theory/elements.md 4.5), here at the /DT/NODA
+  // scale 0.67 instead of /DT's 0.9; relative round-off tolerance.
   CHECK(first == Approx(0.67 * dt_e).epsilon(1e-9));
 }
 
@@ -203,8 +204,9 @@ TEST_CASE("the /DT minimum stops the run with a message, the step grows by at mo
 TEST_CASE("a free cube with an initial velocity keeps its momentum and energy", "[engine]") {
   auto m = cube(10.0, -1000.0);
   radx::model::RunControls rc;
-  // A lone one-point brick becomes unstable at its own step after some tens of cycles (elements.md 9, a
-  // property of the element seeded by round-off): the run is kept to about 14 cycles.
+  // A lone one-point brick becomes unstable at its own step after some tens of cycles
+  // (docs/theory/elements.md 9, a property of the element seeded by round-off): the run is kept to about 14
+  // cycles.
   rc.t_stop = 2e-5;
   radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
   const double mass = 7.85e-9 * 1000.0;
@@ -245,9 +247,9 @@ TEST_CASE("radx run on the default deck closes its energy balance and writes NAM
 }
 
 TEST_CASE("every sample deck runs to its end time with the energy balance closed within 1 %", "[engine]") {
-  // verification.md C: kinetic + internal + hourglass + contact (elastic, damping, friction) - external work
-  // stays within 1 % of the initial total; the sample decks' blocks hit their plates through two TYPE7
-  // interfaces.
+  // docs/theory/verification.md C: kinetic + internal + hourglass + contact (elastic, damping,
+  // friction) - external work stays within 1 % of the initial total; the sample decks' blocks hit their
+  // plates through two TYPE7 interfaces.
   for (const char* deck :
        {"block_on_plate/BLOCK_ON_PLATE_0000.rad", "block_on_plate_lagdt/BLOCK_ON_PLATE_LAGDT_0000.rad",
         "one_file/ONE_FILE_0000.rad"}) {
@@ -327,7 +329,8 @@ TEST_CASE("/DT/BRICK/CST holds a brick's step at Tmin and stops if the brick's o
   const double E = 210000, nu = 0.3, rho = 7.85e-9;
   const double K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
   const double c = std::sqrt((K + 4 * G / 3) / rho);
-  const double dt_own = 0.9 * a / (c * (0.05 + std::sqrt(1 + 0.05 * 0.05)));  // elements.md 4.4 at rest
+  // docs/theory/elements.md 4.4 at rest
+  const double dt_own = 0.9 * a / (c * (0.05 + std::sqrt(1 + 0.05 * 0.05)));
   double second_dt = 0;
   auto run_with = [&](double t_min) {
     radx::model::RunControls rc;
@@ -351,7 +354,8 @@ TEST_CASE("/DT/BRICK/CST holds a brick's step at Tmin and stops if the brick's o
   const auto stopped = run_with(3.0 * dt_own);
   CHECK(stopped.status == radx::solver::RunStatus::Error);
   CHECK(stopped.message.find("element 1") != std::string::npos);
-  // The default Ismstr 4 never switches (deck-format.md: only Ismstr 2): the brick keeps its own step.
+  // The default Ismstr 4 never switches (docs/theory/deck-format.md: only Ismstr 2): the brick keeps its own
+  // step.
   m = cube(a);
   const auto own = run_with(1.2 * dt_own);
   CHECK(own.status == radx::solver::RunStatus::Normal);
@@ -363,7 +367,8 @@ TEST_CASE("/DT/BRICK/CST switches the brick to small strain: its step stays cons
   // One steel cube (side a) on symmetry supports (x = 0, y = 0, z = 0 faces), its top face pushed down at
   // constant speed V so that it is crushed by 40 % in the run. Large strain would shrink its step with its
   // height (dt ~ V / A_max); after the switch at Tmin the geometry of the switch is kept, so the element's
-  // own step (before the scale) and the run's step stay constant: elements.md's "step stays constant".
+  // own step (before the scale) and the run's step stay constant ("its step stays constant",
+  // docs/theory/elements.md section 4).
   const double a = 10.0, V = 2.0e5;  // mm/s: 40 % of a in 2e-5 s, some tens of brick steps
   std::string s = cube_text(a, 2);
   auto group = [&](int id, std::vector<int> nodes) {
@@ -567,7 +572,8 @@ TEST_CASE("/ADMAS/0 adds its mass to each node, /ADMAS/1 shares it, the engine r
 }
 
 TEST_CASE("/DTIX: the first step is DT_ini, it grows by 1.1 per cycle, never above DT_max", "[engine]") {
-  // A 10 mm steel cube at rest: its own step dt_e (elements.md 4.4) is far above both bounds here.
+  // A 10 mm steel cube at rest: its own step dt_e (docs/theory/elements.md 4.4) is far above both bounds
+  // here.
   const auto m = cube(10.0);
   radx::model::RunControls rc;
   rc.t_stop = 2e-5;

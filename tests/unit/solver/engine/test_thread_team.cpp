@@ -1,7 +1,8 @@
 // The engine's thread team (solver/engine/thread_team.hpp): every chunk runs exactly once whatever the team
 // size, chunk boundaries do not depend on the thread count, and a run of the impact benchmark's model
 // (shells, bricks, two TYPE7 interfaces; large enough that every stage runs in parallel) is bit-identical on
-// 1, 2 and 3 threads (architecture.md: a deterministic scatter, results independent of the thread count).
+// 1, 2 and 3 threads (docs/architecture.md section 3: a deterministic scatter, results independent of the
+// thread count).
 #include <array>
 #include <atomic>
 #include <catch2/catch.hpp>

@@ -351,8 +351,9 @@ TEST_CASE("FAIL/TAB reader: the layouts of 100/120 and 110, defaults, functions,
   }
 }
 
-TEST_CASE("FAIL/TAB element-size factor: from each shell's length at t = 0 (elements.md 4.1, 4.2)",
-          "[failtab][engine]") {
+TEST_CASE(
+    "FAIL/TAB element-size factor: from each shell's length at t = 0 (docs/theory/elements.md 4.1, 4.2)",
+    "[failtab][engine]") {
   // A 4 x 2 rectangle: L = max(A / longest diagonal, shortest side) = max(8 / sqrt(20), 2) = 2; a 6 x 1
   // strip: max(6 / sqrt(37), 1) = 1; a triangle (0,0) (4,0) (0,3): 2A / longest side = 12 / 5.
   // Size function f(x) = x (points 0 and 10), Fscale_el 0.5, EI_ref 4: factor 0.5 L / 4.

@@ -1,5 +1,5 @@
-// Failure wiring of the new kernels (commit 1456a80): QEPH (Ishell 24), QBAT (Ishell 12), HEPH (Isolid 24),
-// the fully integrated brick (Isolid 14) and the tetrahedron with law 36 Eps_p_max and LAW2 + /FAIL/JOHNSON,
+// Failure wiring of the kernels QEPH (Ishell 24), QBAT (Ishell 12), HEPH (Isolid 24), the fully integrated
+// brick (Isolid 14) and the tetrahedron with law 36 Eps_p_max and LAW2 + /FAIL/JOHNSON,
 // each driven in tension by imposed nodal velocities on fixed nodes (a constant strain increment per cycle),
 // against the rules written at the top of solver/materials/fail_johnson.cpp and
 // solver/elements/shell/shell_section.hpp:

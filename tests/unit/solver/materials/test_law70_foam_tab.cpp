@@ -221,8 +221,8 @@ TEST_CASE("Law 70 in the one-point brick is objective: a rigid rotation gives no
   // x = U X (N steps), then turned rigidly (N steps): the stress turns with it, sigma = Q sigma(U) Q^T. In
   // Iframe 1 the rotation has D = 0 exactly and the Jaumann update does not lower the stress norm, so the
   // law keeps the loading curve's norm: round-off. In Iframe 2 the co-rotational increment's second-order
-  // term (-dt/2 L'^T L', elements.md 3.6) lowers the elastic trial by up to E w^2 dt^2 / 2 a step, at most
-  // E w^2 dt T / 2 over the rotation: that bound is the tolerance.
+  // term (-dt/2 L'^T L', docs/theory/elements.md 3.6) lowers the elastic trial by up to E w^2 dt^2 / 2 a
+  // step, at most E w^2 dt T / 2 over the rotation: that bound is the tolerance.
   const auto f = foam(0, true);
   const std::array<std::array<double, 3>, 8> X = {
       {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};

@@ -1,5 +1,5 @@
 // LAW1 (elastic) and LAW2 (Johnson-Cook) at a single integration point (solver/materials/material_point.hpp),
-// against values computed here from the formulas of shared/spec/elements.md 1.4, 1.8, 3.3 and 6.
+// against values computed here from the formulas of docs/theory/elements.md 1.4, 1.8, 3.3 and 6.
 // Units are consistent but arbitrary (steel-like: MPa, mm, s). Each check says what its tolerance means;
 // "round-off" tolerances are a few hundred ulps of the largest quantity in the formula.
 #include <catch2/catch.hpp>
@@ -862,10 +862,10 @@ PathResult stretch_path(const MaterialParams& p, int steps, double rate) {
 
 TEST_CASE("solid monotonic stretch follows the Johnson-Cook curve, plastic work = area under it",
           "[material]") {
-  // verification.md case 14 at one point. The stretch path is deviatoric (lateral strains -1/2), so svm = 3G
-  // e until yield. Tolerances: per step round-off (see stretch_path); for the work the computed bound sum
-  // (max(svm, sigma(e_new)) - sigma(e_old)) dp, which is O(step) (about half of max dp times the rise of the
-  // curve, plus the first-step term b dp^(n+1)).
+  // docs/theory/verification.md case 14 at one point. The stretch path is deviatoric (lateral strains -1/2),
+  // so svm = 3G e until yield. Tolerances: per step round-off (see stretch_path); for the work the computed
+  // bound sum (max(svm, sigma(e_new)) - sigma(e_old)) dp, which is O(step) (about half of max dp times the
+  // rise of the curve, plus the first-step term b dp^(n+1)).
   const MaterialParams p = make_material_params(steel(MaterialLaw::JohnsonCook));
   const PathResult r1 = stretch_path(p, 1500, 20.0);
   const PathResult r2 = stretch_path(p, 3000, 20.0);

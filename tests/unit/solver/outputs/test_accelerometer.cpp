@@ -64,8 +64,8 @@ std::string falling_cube() {
 m::RunControls cube_controls(double t_stop) {
   m::RunControls rc;
   rc.t_stop = t_stop;
-  // A lone one-point brick is unstable at its own step (elements.md 9: its checkerboard mode's frequency is
-  // above 2 c / L): half the step keeps the cube rigid for the milliseconds the filter needs.
+  // A lone one-point brick is unstable at its own step (docs/theory/elements.md 9: its checkerboard mode's
+  // frequency is above 2 c / L): half the step keeps the cube rigid for the milliseconds the filter needs.
   rc.global.scale = 0.45;
   return rc;
 }

@@ -229,9 +229,9 @@ TEST_CASE("/TH/RWALL of a parallelogram wall: the impact force of the node hitti
   // Point masses (m = 0.001 Mg each) 31 at (0.9, 0.5, -1) and 32 at (0.2, 0.5, -1) fall at v0 = 25 m/s onto
   // the fixed parallelogram of corner (0, 0, -1.5) and edges (2, 0, 0), (1, 1, 0): node 31 lies over it
   // (0.2 e1 + 0.5 e2), node 32 beside it (-0.15 e1 + 0.5 e2). The wall stops node 31 in one cycle (impulse
-  // -m v0 along Z, elements.md 7.1) and lets node 32 fall on: z = -1 - v0 t. The /TH/RWALL row of the impact
-  // cycle holds the force of the nodes on the wall, FN = impulse / dt12 (the wall's own output); every other
-  // row 0.
+  // -m v0 along Z, docs/theory/elements.md 7.1) and lets node 32 fall on: z = -1 - v0 t. The /TH/RWALL row of
+  // the impact cycle holds the force of the nodes on the wall, FN = impulse / dt12 (the wall's own output);
+  // every other row 0.
   const double m0 = 0.001, v0 = 25000.0;
   const std::string extra = "/NODE\n" + node(31, 0.9, 0.5, -1.0) + node(32, 0.2, 0.5, -1.0) +
                             "/GRNOD/NODE/2\nfalling\n" + ints({31, 32}) + "/ADMAS/0/1\npoint masses\n" +

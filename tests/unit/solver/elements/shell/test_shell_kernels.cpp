@@ -1,6 +1,6 @@
 // Shell kernels (solver/elements/shell/shell_bt4.cpp, solver/elements/shell/shell_c0_tri3.cpp) on node states
-// and groups built by hand, against values derived here from the formulas of shared/spec/elements.md
-// (1.2-1.8, 2, 4.1, 4.2, 4.5, 6.4) and the closed-form cases of shared/spec/verification.md 13. Each check
+// and groups built by hand, against values derived here from the formulas of docs/theory/elements.md
+// (1.2-1.8, 2, 4.1, 4.2, 4.5, 6.4) and the closed-form cases of docs/theory/verification.md 13. Each check
 // says what its tolerance means. "Round-off" is 1e-12 relative to the natural scale of the quantity (a few
 // thousand ulps).
 #include <catch2/catch.hpp>
@@ -81,8 +81,8 @@ double resultant(const ShellGroup& g, int comp, int e) {
   return g.sig[static_cast<std::size_t>(comp) * G + static_cast<std::size_t>(e)];
 }
 
-// In-plane axis e1 of a flat quad in the xy plane, written again from elements.md 1.2 (the bisector of g1
-// and g2 rotated by -90 degrees), to bring the element's stresses to global axes.
+// In-plane axis e1 of a flat quad in the xy plane, written again from docs/theory/elements.md 1.2 (the
+// bisector of g1 and g2 rotated by -90 degrees), to bring the element's stresses to global axes.
 std::array<double, 2> quad_e1(const NodeState& s, const std::array<int, 4>& c) {
   auto X = [&](int k) { return std::array<double, 2>{s.x[c[k]], s.y[c[k]]}; };
   const auto x1 = X(0), x2 = X(1), x3 = X(2), x4 = X(3);
@@ -100,7 +100,8 @@ std::array<double, 3> to_global(double c, double s, double lxx, double lyy, doub
           c * s * (lxx - lyy) + (c * c - s * s) * lxy};
 }
 
-// The membrane patch of verification.md 13: 0.24 x 0.12 plate, interior nodes 5..8 (0-based 4..7).
+// The membrane patch of docs/theory/verification.md 13: 0.24 x 0.12
+// plate, interior nodes 5..8 (0-based 4..7).
 const std::vector<Vec3> kPatchNodes = {{0, 0, 0},       {0.24, 0, 0},    {0.24, 0.12, 0}, {0, 0.12, 0},
                                        {0.04, 0.02, 0}, {0.18, 0.03, 0}, {0.16, 0.08, 0}, {0.08, 0.08, 0}};
 const std::vector<std::array<int, 4>> kPatchQuads = {
@@ -147,7 +148,7 @@ double max_abs_force(const ShellGroup& g) {
 }  // namespace
 
 TEST_CASE("BT4 membrane patch: constant strain exact on a distorted mesh", "[shell]") {
-  // verification.md 13: E = 1e6, nu = 0.25, t = 0.001, sigma_x = sigma_y = 1333.33, tau = 400.
+  // docs/theory/verification.md 13: E = 1e6, nu = 0.25, t = 0.001, sigma_x = sigma_y = 1333.33, tau = 400.
   // The linear field is imposed in one step (dt1 = dt) on X^n = initial geometry: the one-point rates of
   // a bilinear quad are exact for linear velocity fields and the second-order correction of 1.3 is zero
   // for in-plane motion, so the increments equal the imposed strain to round-off (1e-9 relative is 1e5
@@ -318,7 +319,7 @@ TEST_CASE("BT4 rigid-body motions give no strain and no force", "[shell]") {
 }
 
 TEST_CASE("BT4 and C0 element time steps and nodal stiffness", "[shell]") {
-  // elements.md 4.1, 4.2, 4.5; g.dt is the step before the /DT scale 0.9. Units mm, t, s, MPa.
+  // docs/theory/elements.md 4.1, 4.2, 4.5; g.dt is the step before the /DT scale 0.9. Units mm, t, s, MPa.
   const double young = 210000, rho = 7.85e-9, t = 1.0;
   const MaterialParams mat = elastic(young, 0.3, rho);
   const double c = std::sqrt(young / rho);
@@ -490,14 +491,14 @@ TEST_CASE("BT4 hourglass: energy only from the hourglass mode, none for a degene
 }
 
 TEST_CASE("C0 triangle membrane patch: constant strain on every triangle", "[shell]") {
-  // The quad patch of verification.md 13 cut into 10 triangles (diagonal 1-3 of each quad), same field in
-  // one step. The Ish3n 2 correction of section 2 adds, in each triangle's own frame (e1 along side 12),
-  // the second-order terms dexx = Hxx - Hyx^2/2, deyy = Hyy - Hxy^2/2, dgxy = Hxy + Hyx - (Hyx Hyy + Hxy
-  // Hxx)/2 (H = displacement gradient in that frame; derived by hand from T11 = dt1/2 dvy/dx, T22 = dt1/2
-  // dvx/dy). Checks: (1) each triangle's local stress equals that closed form to 1e-9; (2) rotated to global
-  // axes it equals 1333.33 / 400 to 5e-4 (the size of the second-order term, |H|/2); (3) interior nodes are
-  // in equilibrium to 1e-3 of the force scale (the second-order terms differ between triangles whose frames
-  // differ, by up to |H|/2 = 5e-4 relative to sigma).
+  // The quad patch of docs/theory/verification.md 13 cut into 10 triangles (diagonal 1-3 of each quad), same
+  // field in one step. The Ish3n 2 correction of section 2 adds, in each triangle's own frame (e1 along
+  // side 12), the second-order terms dexx = Hxx - Hyx^2/2, deyy = Hyy - Hxy^2/2, dgxy = Hxy + Hyx - (Hyx
+  // Hyy + Hxy Hxx)/2 (H = displacement gradient in that frame; derived by hand from T11 = dt1/2 dvy/dx,
+  // T22 = dt1/2 dvx/dy). Checks: (1) each triangle's local stress equals that closed form to 1e-9; (2)
+  // rotated to global axes it equals 1333.33 / 400 to 5e-4 (the size of the second-order term, |H|/2); (3)
+  // interior nodes are in equilibrium to 1e-3 of the force scale (the second-order terms differ between
+  // triangles whose frames differ, by up to |H|/2 = 5e-4 relative to sigma).
   const double young = 1e6, nu = 0.25, t = 0.001, dt = 1e-4;
   const MaterialParams mat = elastic(young, nu, 1000.0);
   const double a11 = young / (1 - nu * nu), a12 = nu * a11, gm = young / (2 * (1 + nu));
@@ -755,8 +756,8 @@ TEST_CASE("Shell energy: accumulated internal energy equals the work of the noda
 
 TEST_CASE("BT4 failure: OFF decays by 0.8 per cycle after EPS_p_max, then the element is deleted",
           "[shell]") {
-  // elements.md 6.4: the cycle a point reaches EPS_p_max, OFF = 0.8; each next cycle OFF *= 0.8; the
-  // first cycle starting with OFF < 0.1 deletes the element (OFF = 0): no force, dt = +inf, energy kept.
+  // docs/theory/elements.md 6.4: the cycle a point reaches EPS_p_max, OFF = 0.8; each next cycle OFF *= 0.8;
+  // the first cycle starting with OFF < 0.1 deletes the element (OFF = 0): no force, dt = +inf, energy kept.
   Material jc;
   jc.law = MaterialLaw::JohnsonCook;
   jc.rho = 7.85e-9;
@@ -890,9 +891,9 @@ TEST_CASE(
   // y: v = (omega z, 0, -omega x), rotation rate ry = omega. gamma = h here (hx = hy = 0), so Ishell 1 sees
   // the membrane hourglass rate qx = sum h vx = -2 omega w; Ishell 4 adds -4 (gzx w/2) with gzx = dvz/dx =
   // -omega: qx = 0 (the b terms cancel in the sum). The membrane rate of Ishell 1 carries -dt1 (dvz/dx)^2,
-  // that of Ishell 4 -dt1/2 (dvz/dx)^2 (elements.md 1.3, cdefo3.F IHBE 4): after one cycle sigma_xx =
-  // E/(1-nu^2) dexx with dexx = -dt^2 omega^2 (Ishell 1) or -dt^2 omega^2/2 (Ishell 4), sigma_yy = nu
-  // sigma_xx.
+  // that of Ishell 4 -dt1/2 (dvz/dx)^2 (docs/theory/elements.md 1.3, cdefo3.F IHBE 4): after one cycle
+  // sigma_xx = E/(1-nu^2) dexx with dexx = -dt^2 omega^2 (Ishell 1) or -dt^2 omega^2/2 (Ishell 4),
+  // sigma_yy = nu sigma_xx.
   const double young = 210000, nu = 0.3, rho = 7.85e-9, t = 1.0, a = 10.0, w = 0.8, omega = 200.0, dt = 1e-6;
   const MaterialParams mat = elastic(young, nu, rho);
   for (const int ishell : {1, 4}) {

@@ -1,9 +1,9 @@
 // QEPH (Ishell 24, solver/elements/shell/shell_qeph.cpp) and QBAT (Ishell 12,
 // solver/elements/shell/shell_qbat.cpp) on node states and groups built by hand, against values derived here
-// from the formulas of shared/spec/elements.md (1.4, 1.10, 4.5, 6.4) and the closed-form patch fields of
-// verification.md 13. "Round-off" is 1e-12 relative to the natural scale of the quantity (a few thousand
-// ulps); 1e-9 where a result goes through a material update and a change of frame (still 1e5 times below any
-// formulation error, which would be at least 1e-4).
+// from the formulas of docs/theory/elements.md (1.4, 1.10, 4.5, 6.4) and the closed-form patch fields of
+// docs/theory/verification.md 13. "Round-off" is 1e-12 relative to the natural scale of the quantity (a few
+// thousand ulps); 1e-9 where a result goes through a material update and a change of frame (still 1e5 times
+// below any formulation error, which would be at least 1e-4).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -81,7 +81,7 @@ double state(const ShellGroup& g, int gp, int p, int comp, int e) {
   return g.sig[(static_cast<std::size_t>(gp) * rows + row) * G + static_cast<std::size_t>(e)];
 }
 
-// In-plane axis e1 of a flat quad in the xy plane (elements.md 1.2), written again here.
+// In-plane axis e1 of a flat quad in the xy plane (docs/theory/elements.md 1.2), written again here.
 std::array<double, 2> quad_e1(const NodeState& s, const std::array<int, 4>& c) {
   auto X = [&](int k) { return std::array<double, 2>{s.x[c[k]], s.y[c[k]]}; };
   const auto x1 = X(0), x2 = X(1), x3 = X(2), x4 = X(3);
@@ -99,7 +99,7 @@ std::array<double, 3> to_global(double c, double s, double lxx, double lyy, doub
           c * s * (lxx - lyy) + (c * c - s * s) * lxy};
 }
 
-// The distorted patch of verification.md 13: 0.24 x 0.12 plate, interior nodes 4..7 (0-based).
+// The distorted patch of docs/theory/verification.md 13: 0.24 x 0.12 plate, interior nodes 4..7 (0-based).
 const std::vector<Vec3> kPatchNodes = {{0, 0, 0},       {0.24, 0, 0},    {0.24, 0.12, 0}, {0, 0.12, 0},
                                        {0.04, 0.02, 0}, {0.18, 0.03, 0}, {0.16, 0.08, 0}, {0.08, 0.08, 0}};
 const std::vector<std::array<int, 4>> kPatchQuads = {
@@ -123,11 +123,11 @@ const char* name(ShellKernel k) {
 
 TEST_CASE("QEPH and QBAT membrane patch: constant strain gives the constant stress on a distorted mesh",
           "[shell][qeph][qbat]") {
-  // verification.md 13: u = 1e-3 (x + y/2), v = 1e-3 (y + x/2), E = 1e6, nu = 0.25: sigma_x = sigma_y =
-  // 1333.33, tau = 400, imposed in one step. The bilinear rows are exact for linear fields at every point,
-  // so every point of every element holds the constant stress (1e-9: material update and frame change), the
-  // stabilisation sees nothing (its energy is round-off of the internal energy), and every interior node is
-  // in equilibrium to round-off of the force scale sigma t L.
+  // docs/theory/verification.md 13: u = 1e-3 (x + y/2), v = 1e-3 (y + x/2), E = 1e6, nu = 0.25:
+  // sigma_x = sigma_y = 1333.33, tau = 400, imposed in one step. The bilinear rows are exact for linear
+  // fields at every point, so every point of every element holds the constant stress (1e-9: material update
+  // and frame change), the stabilisation sees nothing (its energy is round-off of the internal energy), and
+  // every interior node is in equilibrium to round-off of the force scale sigma t L.
   const double young = 1e6, nu = 0.25, t = 0.001, dt = 1e-4;
   const MaterialParams mat = elastic(young, nu, 1000.0);
   const double sx = young / (1 - nu * nu) * (1e-3 + nu * 1e-3), tau = young / (2 * (1 + nu)) * 1e-3;
@@ -205,7 +205,7 @@ TEST_CASE("QEPH and QBAT bending patch: constant curvature gives the constant mo
             q[0] = state(g, gp, 0, 3, e), q[1] = state(g, gp, 0, 4, e);
           } else {
             const double m[3] = {-1.0 / 12, 0.0, 1.0 / 12},
-                         w[3] = {0.25, 0.5, 0.25};  // elements.md 1.4, n = 3
+                         w[3] = {0.25, 0.5, 0.25};  // docs/theory/elements.md 1.4, n = 3
             for (int p = 0; p < 3; ++p) {
               for (int c = 0; c < 3; ++c) lm[c] += m[p] * state(g, gp, p, c, e);
               q[0] += w[p] * state(g, gp, p, 3, e), q[1] += w[p] * state(g, gp, p, 4, e);
@@ -279,7 +279,8 @@ TEST_CASE("QEPH and QBAT rigid-body rotation gives no strain, no force and no st
       }
 }
 
-TEST_CASE("QEPH and QBAT element step and nodal stiffness (elements.md 1.10, 4.5)", "[shell][qeph][qbat]") {
+TEST_CASE("QEPH and QBAT element step and nodal stiffness (docs/theory/elements.md 1.10, 4.5)",
+          "[shell][qeph][qbat]") {
   // g.dt is the step before the /DT scale 0.9. Units mm, t, s, MPa; steel.
   const double young = 210000, nu = 0.3, rho = 7.85e-9, t = 1.0;
   const MaterialParams mat = elastic(young, nu, rho);
@@ -289,12 +290,13 @@ TEST_CASE("QEPH and QBAT element step and nodal stiffness (elements.md 1.10, 4.5
     // F2 = 0.78 + 0.22 (3.413 (1 - 0.7071))^3 for a square (F1 = 1), D^2 = 50.
     const double f2 = 0.78 + 0.22 * std::pow(3.413 * (1.0 - 0.7071), 3);
     const double l = 100.0 / std::sqrt(2.0 * f2 * 1.25 * 50.0);
-    CHECK(close(l, 8.944, 2e-4));  // the value of elements.md 1.10, printed to 4 digits
+    CHECK(close(l, 8.944, 2e-4));  // the value of docs/theory/elements.md 1.10, printed to 4 digits
     ShellGroup q = make_group(ShellKernel::Qeph, {{0, 1, 2, 3}}, t, 0);
     run(q, s, mat, 0.0);
     const double phi = std::sqrt(1.0 + 0.015 * 0.015) - 0.015;
     CHECK(close(q.dt[0], l * phi / c, 1e-12));
-    CHECK(close(0.9 * q.dt[0], 1.533e-6, 5e-4));  // the OpenRadioss run of elements.md 1.10, 4 digits
+    // the OpenRadioss run of docs/theory/elements.md 1.10, 4 digits
+    CHECK(close(0.9 * q.dt[0], 1.533e-6, 5e-4));
     CHECK(close(q.k_nodal[0], 0.5 * 100 * t * a11 / (l * l), 1e-12));
     ShellGroup b = make_group(ShellKernel::Qbat, {{0, 1, 2, 3}}, t, 0);  // Dn 0 by default: phi = 1
     run(b, s, mat, 0.0);
@@ -316,8 +318,8 @@ TEST_CASE("QEPH and QBAT element step and nodal stiffness (elements.md 1.10, 4.5
 
 TEST_CASE("QEPH and QBAT failure: OFF decays by 0.8 per cycle after EPS_p_max, then the element is deleted",
           "[shell][qeph][qbat]") {
-  // elements.md 6.4 as for Ishell 1: a LAW2 point reaching EPS_p_max sets OFF = 0.8, OFF *= 0.8 each cycle,
-  // deletion (no force, dt = +inf, energy kept) in the first cycle starting below 0.1.
+  // docs/theory/elements.md 6.4 as for Ishell 1: a LAW2 point reaching EPS_p_max sets OFF = 0.8, OFF *= 0.8
+  // each cycle, deletion (no force, dt = +inf, energy kept) in the first cycle starting below 0.1.
   Material jc;
   jc.law = MaterialLaw::JohnsonCook;
   jc.rho = 7.85e-9;

@@ -1,5 +1,5 @@
 // The one-point brick with viscous hourglass control (solver/elements/solid/hex8_fb.cpp) on hand-built nodes
-// and groups. Expected values come from the formulas of shared/spec/elements.md 3.2-3.4, 4.4-4.5 and from
+// and groups. Expected values come from the formulas of docs/theory/elements.md 3.2-3.4, 4.4-4.5 and from
 // closed-form kinematics, computed here independently of the kernel (no kernel helper is reused). Units are
 // consistent but arbitrary except in the steel time-step case (mm, s, tonne).
 //
@@ -102,7 +102,7 @@ M3 mul(const M3& a, const M3& b) {
 }
 
 // Elastic stress {xx yy zz xy yz zx} from zero for the increment de = sym(Ldt) (engineering shears) and
-// the total volumetric measure mu: sigma = 2G dev(de) - K mu I (elements.md 3.3, 6.3).
+// the total volumetric measure mu: sigma = 2G dev(de) - K mu I (docs/theory/elements.md 3.3, 6.3).
 std::array<double, 6> elastic_stress(const MaterialParams& m, const M3& ldt, double mu) {
   const double tr = ldt[0][0] + ldt[1][1] + ldt[2][2];
   const double p = m.bulk * mu;
@@ -114,7 +114,8 @@ std::array<double, 6> elastic_stress(const MaterialParams& m, const M3& ldt, dou
 constexpr double kH4[8] = {1, -1, 1, -1, -1, 1, -1, 1};
 constexpr double kH1[8] = {1, -1, 1, -1, 1, -1, 1, -1};
 
-// Unit cube corners 0-7 and the eight interior nodes 8-15 of the 7-element patch (verification.md 13).
+// Unit cube corners 0-7 and the eight interior nodes 8-15 of the 7-element patch
+// (docs/theory/verification.md 13).
 std::vector<P3> patch_points() {
   return {{0, 0, 0},
           {1, 0, 0},
@@ -244,9 +245,9 @@ TEST_CASE("brick patch test: a linear field on the distorted 7-element cube", "[
   CHECK(e2 > 10 * e1);
 }
 
-// The patch of verification.md 13 under the infinitesimal field u = s B X, B = [[1, 1/2, 1/2], [1/2, 1, 1/2],
-// [1/2, 1/2, 1]] (the spec's field is s = 1e-3), imposed as in the test above: one step from the initial
-// geometry, x^n = X + u, at the constant velocity v = u / dt1.
+// The patch of docs/theory/verification.md 13 under the infinitesimal field u = s B X, B = [[1, 1/2, 1/2],
+// [1/2, 1, 1/2], [1/2, 1/2, 1]] (that section's field is s = 1e-3), imposed as in the test above: one step
+// from the initial geometry, x^n = X + u, at the constant velocity v = u / dt1.
 struct PatchResult {
   double err_linear = 0;       // max over elements and components |sigma - sigma_lin| / max |sigma_lin|
   double err_finite = 0;       // same against the element's own finite-strain closed form
@@ -306,8 +307,8 @@ PatchResult infinitesimal_patch(const MaterialParams& mat, double s, double dt1)
       r.err_linear = std::max(r.err_linear, std::abs(stress(g, e, m) - lin[m]) / scale);
       r.err_finite = std::max(r.err_finite, std::abs(stress(g, e, m) - fin[m]) / scale);
     }
-    // Mode-4 energy from its definition (elements.md 3.4): q4 = sum h4_k v_k, H = q4 (Cl + Cq |q4|) per
-    // direction, E = dt1 H . q4.
+    // Mode-4 energy from its definition (docs/theory/elements.md 3.4): q4 = sum h4_k v_k, H = q4 (Cl + Cq
+    // |q4|) per direction, E = dt1 H . q4.
     std::array<radx::model::Vec3, 8> xe;
     double q4[3] = {0, 0, 0};
     for (std::size_t k = 0; k < 8; ++k) {
@@ -360,11 +361,11 @@ TEST_CASE("brick patch test: an infinitesimal linear field gives the linear-elas
     CHECK(r.err_linear <= 2.5 * s + 2 * eps / s);
     CHECK(r.err_finite <= 2 * eps / s);
     // Hourglass energy. Isolid 1 projects modes 1-3 on the linear fields (Gamma = h - (h . x) b) but uses
-    // the plain h4 for mode 4 (elements.md 3.4), and h4 . x != 0 on a brick that is not a parallelepiped:
-    // a linear field has a mode-4 rate q4 = sum h4_k v_k on the distorted patch, so the hourglass energy
-    // is NOT zero here (it is zero on a parallelepiped mesh, next test). All of it is mode 4 (modes 1-3
-    // stay silent: 1e-9 relative), and it is small: E_hg / E_int = 3.0e-7 for this loading over dt1 = 1
-    // (whatever s: both are quadratic in s), checked below 1e-6.
+    // the plain h4 for mode 4 (docs/theory/elements.md 3.4), and h4 . x != 0 on a brick that is not a
+    // parallelepiped: a linear field has a mode-4 rate q4 = sum h4_k v_k on the distorted patch, so the
+    // hourglass energy is NOT zero here (it is zero on a parallelepiped mesh, next test). All of it is mode 4
+    // (modes 1-3 stay silent: 1e-9 relative), and it is small: E_hg / E_int = 3.0e-7 for this loading over
+    // dt1 = 1 (whatever s: both are quadratic in s), checked below 1e-6.
     CHECK(r.worst_mode4 < 1e-9);
     CHECK(r.e_hg < 1e-6 * r.e_int);
     // The hourglass control is viscous, so this energy is a rate effect that vanishes in the quasi-static
@@ -533,7 +534,7 @@ TEST_CASE("brick: rigid translation and rotation", "[brick]") {
 
 TEST_CASE("brick time step and nodal stiffness", "[brick]") {
   // 10 mm cube of LAW1 steel (mm, s, tonne): dx = V / max face = 10, c_eff = (qb + sqrt(qb^2 + 1)) c =
-  // 1.05125 c with qb = 0.05 and no compression (elements.md 4.4).
+  // 1.05125 c with qb = 0.05 and no compression (docs/theory/elements.md 4.4).
   const MaterialParams mat = elastic(210000.0, 0.3, 7.85e-9);
   NodeState ns = make_nodes(cube(10.0));
   BrickGroup g = make_group({kCubeConn}, ns, mat.rho0);

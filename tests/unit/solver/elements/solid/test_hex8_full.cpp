@@ -63,7 +63,8 @@ std::vector<P3> assemble(const BrickGroup& g, std::size_t n_nodes) {
   return f;
 }
 
-// The 7-element distorted patch of test_hex8.cpp (verification.md 13): unit cube, 8 interior nodes 8-15.
+// The 7-element distorted patch of test_hex8.cpp (docs/theory/verification.md 13): unit cube, 8 interior
+// nodes 8-15.
 std::vector<P3> patch_points() {
   return {{0, 0, 0},
           {1, 0, 0},
@@ -206,7 +207,7 @@ TEST_CASE("fully integrated brick: a 90 degree rigid rotation carries the stress
 }
 
 TEST_CASE("fully integrated brick time step and nodal stiffness", "[brick][full]") {
-  // Steel cube of 10 mm at rest (elements.md 4.4, 4.5): dx = V / max face area = a,
+  // Steel cube of 10 mm at rest (docs/theory/elements.md 4.4, 4.5): dx = V / max face area = a,
   // dt = a / (c (qb + sqrt(1 + qb^2))), c = sqrt((K + 4G/3) / rho0), k = rho V / (4 dt^2) per node.
   const MaterialParams mat = elastic(210000.0, 0.3, 7.85e-9);
   NodeState ns = make_nodes(cube(10.0));

@@ -1,7 +1,7 @@
 // The HEPH brick (Isolid 24, solver/elements/solid/hex8_heph.cpp) and the co-rotational frame of the
 // one-point brick (Iframe 2, solver/elements/solid/hex8_fb.cpp) on hand-built nodes and groups. Expected
 // values come from closed forms (finite-strain kinematics, the elastic energy of a warping mode of a cube)
-// and from the formulas of shared/spec/elements.md 3.5-3.7, 4.4-4.5, computed here without calling the
+// and from the formulas of docs/theory/elements.md 3.5-3.7, 4.4-4.5, computed here without calling the
 // kernels' helpers.
 //
 // Two properties make exact checks possible:
@@ -116,7 +116,7 @@ std::vector<P3> cube(double a) {
 }
 
 // Elastic stress {xx yy zz xy yz zx} from zero for a symmetric strain e (tensor shears) and the volumetric
-// measure mu: sigma = 2G dev(e) - K mu I (elements.md 3.3).
+// measure mu: sigma = 2G dev(e) - K mu I (docs/theory/elements.md 3.3).
 std::array<double, 6> elastic_stress(const MaterialParams& m, const M3& e, double mu) {
   const double tr = e[0][0] + e[1][1] + e[2][2];
   const double p = m.bulk * mu;
@@ -296,7 +296,7 @@ TEST_CASE("co-rotational one-point brick: a stretched brick turned by 90 degrees
 
 TEST_CASE("HEPH time step and nodal stiffness", "[heph]") {
   // 10 mm cube of LAW1 steel (mm, s, tonne): dx = V / max face = 10, c_eff = (qb + sqrt(qb^2 + 1)) c with
-  // qb = 0.05 and no compression (elements.md 4.4, the same rule as Isolid 1).
+  // qb = 0.05 and no compression (docs/theory/elements.md 4.4, the same rule as Isolid 1).
   const MaterialParams mat = elastic(210000.0, 0.3, 7.85e-9);
   NodeState ns = make_nodes(cube(10.0));
   BrickGroup g = make_group({kCubeConn}, ns, mat.rho0, 24, 2);
@@ -328,7 +328,8 @@ TEST_CASE("HEPH hourglass: a warping mode of a cube is resisted elastically with
   // strain). Its exact elastic energy is 1/2 G int (gamma_xy^2 + gamma_xz^2) dV = (4/3) G a u0^2, with the
   // nodal forces f_k,x = -(1/3) G a u0 m1_k; the shear gamma_xy couples it with u_y = v0 zeta xi
   // (m2 = (1,-1,-1,1,-1,1,1,-1)): f_k,y = -(1/6) G a u0 m2_k, and gamma_xz with u_z = w0 xi eta
-  // (m3 = (1,-1,1,-1,1,-1,1,-1)): f_k,z = -(1/6) G a u0 m3_k. HEPH reproduces these (elements.md 3.7).
+  // (m3 = (1,-1,1,-1,1,-1,1,-1)): f_k,z = -(1/6) G a u0 m3_k. HEPH
+  // reproduces these (docs/theory/elements.md 3.7).
   const double a = 2.0, E = 1e6;
   const MaterialParams mat = elastic(E, 0.0, 1.0);
   const double Gm = mat.shear;
