@@ -1,6 +1,6 @@
 // Four-node Belytschko-Tsay shell, Ishell 1 (and 0), one point in the plane, as OpenRadioss runs it by
 // default, and Ishell 4, its variant with the warp correction (cdefo3.F and cfint3.F, internal IHBE 4).
-// Source of every formula: shared/spec/elements.md (sections in brackets), itself read from OpenRadioss
+// Source of every formula: docs/theory/elements.md (sections in brackets), itself read from OpenRadioss
 // cforc3.F, ccoor3.F, cnvec3.F, cderi3.F, cdefo3.F, ccurv3.F, cstra3.F, mulawc.F90, cfint3.F, chvis3.F,
 // cdlen3.F, cdt3.F.
 //
@@ -57,7 +57,7 @@
 // and dt = +inf; thick = 0 is taken as t0 on first use. N = 0 keeps FOR and MOM in sig as [8][G]
 // (shell_section.hpp; the buffer is grown once if allocate() made it [5][G]).
 //
-// Layout (architecture.md): the group is run in blocks of kBlock elements; each stage is a loop over the
+// Layout (docs/architecture.md): the group is run in blocks of kBlock elements; each stage is a loop over the
 // block's elements with the element index innermost, on structure-of-arrays scratch (Bt4Block), written
 // without branches so that GCC vectorises it: gather; frame; local geometry, velocities and increments;
 // strain rate; section (shell_section.hpp); energy, forces and hourglass; rotation to global axes and the

@@ -1,5 +1,5 @@
 // Three-node C0 shell (Ish3n 2, the default, and Ish3n 1): constant-strain membrane, Mindlin transverse
-// shear, one point in the plane, no hourglass. Source of every formula: shared/spec/elements.md (sections in
+// shear, one point in the plane, no hourglass. Source of every formula: docs/theory/elements.md (sections in
 // brackets), read from OpenRadioss c3forc3.F, c3evec3.F, c3deri3.F, c3defo3.F, c3curv3.F, c3fint3.F, c3dt3.F.
 //
 // Geometry [2], rebuilt every cycle from X^n: e1 = (X2 - X1)/|X2 - X1|, e3 = normalise((X3 - X1) x (X3 -

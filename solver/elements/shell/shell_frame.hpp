@@ -3,7 +3,7 @@
 // Used by shell_bt4.cpp, shell_c0_tri3.cpp, shell_qeph.cpp, shell_qbat.cpp and the result fields, so that the
 // frame each of them sees is written once. Internal to the solver; not a public API.
 //
-// Equations (shared/spec/elements.md):
+// Equations (docs/theory/elements.md):
 //   1.2  four-node (bisector) frame, rebuilt every cycle from X^n:
 //        g1 = (X2 - X1) + (X3 - X4), g2 = (X3 - X2) + (X4 - X1), e3 = g1 x g2 / |g1 x g2|,
 //        e1 = normalise(g1 + |g1|/|g2| (g2 x e3)), e2 = e3 x e1;
@@ -139,11 +139,12 @@ inline void small_strain_coordinates(double cx, double cy, double capture, doubl
   ly = frozen * ry0 + (1.0 - frozen) * cy;
 }
 
-// Local geometry and velocities of element j of a four-node block (QBAT's front stage, elements.md 1.2; QEPH
-// takes the same steps in its vectorised loop): the node coordinates relative to node 1 in the frame (lx,
-// ly), under small strain (frozen: /DT/SHELL/CST switch or Ismstr 1) the first cycle's ones, kept in
-// g.ref_local (x2 x3 x4 y2 y3 y4); the nodal velocities (vx vy vz) and rotation rates (rx ry) on the frame's
-// axes. The values are also stored in the block's local rows (bk.vx ... bk.ly) for the back stage.
+// Local geometry and velocities of element j of a four-node block (QBAT's front stage,
+// docs/theory/elements.md 1.2; QEPH takes the same steps in its vectorised loop): the node coordinates
+// relative to node 1 in the frame (lx, ly), under small strain (frozen: /DT/SHELL/CST switch or Ismstr 1) the
+// first cycle's ones, kept in g.ref_local (x2 x3 x4 y2 y3 y4); the nodal velocities (vx vy vz) and rotation
+// rates (rx ry) on the frame's axes. The values are also stored in the block's local
+// rows (bk.vx ... bk.ly) for the back stage.
 template <class Block>
 inline void quad_local_state(Block& bk, int j, ShellGroup& g, std::size_t ii, bool frozen, double lx[4],
                              double ly[4], double vx[4], double vy[4], double vz[4], double rx[4],
@@ -190,8 +191,8 @@ inline void clear_shell_element(ShellGroup& g, double* nf, std::size_t ii, int r
   g.k_nodal[ii] = 0.0;
 }
 
-// Membrane damping stresses (elements.md 1.4) of a point of area A from the membrane increments dem
-// (xx yy xy): visc = visc0 sqrt(A), fv = visc (dexx + deyy/2, deyy + dexx/2, dgxy/3); 0 when visc0 = 0.
+// Membrane damping stresses (docs/theory/elements.md 1.4) of a point of area A from the membrane increments
+// dem (xx yy xy): visc = visc0 sqrt(A), fv = visc (dexx + deyy/2, deyy + dexx/2, dgxy/3); 0 when visc0 = 0.
 inline void membrane_damping(double visc0, double area, const double dem[5], double fv[3]) {
   fv[0] = fv[1] = fv[2] = 0.0;
   if (visc0 > 0) {
@@ -202,8 +203,9 @@ inline void membrane_damping(double visc0, double area, const double dem[5], dou
   }
 }
 
-// Internal energy increment of a point of weight w (area) and thickness t, elements.md 1.5: the trapezoid of
-// the resultants before (times off_start) and after (times off) the section update, plus the damping work,
+// Internal energy increment of a point of weight w (area) and thickness t, docs/theory/elements.md 1.5: the
+// trapezoid of the resultants before (times off_start) and after (times off)
+// the section update, plus the damping work,
 //   dE = w t / 2 (sum_q (off0 F_old + off F_new)_q dem_q + t sum_q (off0 M_old + off M_new)_q dk_q)
 //        + w t off fv . dem,
 // with F, M the averaged stresses N/t and M/t^2 of element j of the section rows (SectionBlock layout).

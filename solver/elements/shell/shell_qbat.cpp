@@ -1,6 +1,6 @@
 // Four-node shell QBAT (Ishell 12): four integration points in the plane (2 x 2 Gauss), each with the N
 // through-thickness points of the section, and an assumed transverse shear field. Sources:
-// shared/spec/elements.md 1.1 (flags), 1.10 (the step, shared with QEPH), 4.5 and 5, read from OpenRadioss
+// docs/theory/elements.md 1.1 (flags), 1.10 (the step, shared with QEPH), 4.5 and 5, read from OpenRadioss
 // cbaforc3.F (call sequence: four Gauss points, a material call at each, CNDT3 for the step as QEPH),
 // cbacoor.F (frame), cbadef.F (rates at the Gauss points, transverse shear from values tied at the edge
 // midpoints), cbafori.F (forces), cinmas.F (inertia). Written from the formulas, in our own words and

@@ -1,5 +1,5 @@
 // Four-node shell QEPH (Ishell 24): one integration point in the plane, with physical hourglass
-// stabilisation instead of Ishell 1's viscous and elastic hourglass. Sources: shared/spec/elements.md 1.10,
+// stabilisation instead of Ishell 1's viscous and elastic hourglass. Sources: docs/theory/elements.md 1.10,
 // 4.3, 4.5 and 5, read from OpenRadioss czforc3.F (call sequence), czcorc.F (frame, local coordinates),
 // czdef.F (centre rates and the hourglass rates), czstrah3.F (the stabilisation strains at the four Gauss
 // points: only xx and yy of the membrane and bending fields, the in-plane shears stay constant),

@@ -8,8 +8,8 @@
 // eta_k = (-1, -1, 1, 1); our own derivation of the standard isoparametric quadrilateral):
 //   N_k,xi = xi_k (1 + eta_k eta)/4, N_k,eta = eta_k (1 + xi_k xi)/4; J = [[x,xi y,xi], [x,eta y,eta]];
 //   N_k,x = (y,eta N_k,xi - y,xi N_k,eta)/det J, N_k,y = (x,xi N_k,eta - x,eta N_k,xi)/det J.
-//   At the centre, A N_k,x = PX_k and A N_k,y = PY_k of elements.md 1.2 (A = 4 det J(0)): the one-point
-//   rows of Ishell 1.
+//   At the centre, A N_k,x = PX_k and A N_k,y = PY_k of docs/theory/elements.md 1.2 (A = 4 det J(0)): the
+//   one-point rows of Ishell 1.
 //   Membrane: exx = sum N_k,x vx_k, eyy = sum N_k,y vy_k, gxy = sum (N_k,y vx_k + N_k,x vy_k).
 //   Curvature (Ishell 1's signs, 1.3): kxx = sum N_k,x ry_k, kyy = -sum N_k,y rx_k,
 //   kxy = sum (N_k,y ry_k - N_k,x rx_k).
@@ -25,9 +25,9 @@
 //   f_k = W (Nxx N_k,x + Nxy N_k,y, Nxy N_k,x + Nyy N_k,y, Qx s_x,w_k + Qy s_y,w_k),
 //   m_k = W (-(Myy N_k,y + Mxy N_k,x) + Qx s_x,rx_k + Qy s_y,rx_k, Mxx N_k,x + Mxy N_k,y + Qx s_x,ry_k
 //   + Qy s_y,ry_k), s the rows of gzx (x) and gyz (y) on (w, rx, ry).
-//   Step length (elements.md 1.10, read from cndt3.F and cncoef3.F, confirmed there by a run on a square):
-//   L = A / sqrt(F (1.25 + Hs) D^2), D = half the longer diagonal, Hs = max(|c1|, |c2|)/A with c1, c2 the
-//   2-D cross products of opposite nodes' positions from the centroid, F = 2 F1 F2,
+//   Step length (docs/theory/elements.md 1.10, read from cndt3.F and cncoef3.F, confirmed there by a run on a
+//   square): L = A / sqrt(F (1.25 + Hs) D^2), D = half the longer diagonal, Hs = max(|c1|, |c2|)/A with c1,
+//   c2 the 2-D cross products of opposite nodes' positions from the centroid, F = 2 F1 F2,
 //   F1 = 1 + min(1/2, (max(r1, r2)/min(r1, r2) - 1)/4), F2 = 0.78 + 0.22 [3.413 max(0, 4A/(r1 r2) -
 //   0.7071)]^3, r1 = |g1|, r2 = |g2| (the frame vectors of 1.2).
 #pragma once
@@ -120,10 +120,11 @@ inline void quad_rates(const QuadRows& r, const double vx[4], const double vy[4]
   }
 }
 
-// Second-order (large-rotation) correction of the membrane rates at a point, elements.md 1.3 generalised to
-// the point's own slopes: exx -= dt1 (w,x)^2, eyy -= dt1 (w,y)^2 (what Ishell 1's correction amounts to on a
-// rectangle). The rates use B(X^n) with v^{n-1/2}; without it an element turning out of its plane would be
-// stretched by the update x + dt v and book that stretch as strain energy [inferred for QEPH and QBAT].
+// Second-order (large-rotation) correction of the membrane rates at a point, docs/theory/elements.md 1.3
+// generalised to the point's own slopes: exx -= dt1 (w,x)^2, eyy -= dt1 (w,y)^2 (what Ishell 1's correction
+// amounts to on a rectangle). The rates use B(X^n) with v^{n-1/2}; without it an element turning out of its
+// plane would be stretched by the update x + dt v and book that stretch as
+// strain energy [inferred for QEPH and QBAT].
 inline void quad_second_order(const QuadRows& r, const double vz[4], double dt1, double e[5]) {
   double gx = 0, gy = 0;
   for (int k = 0; k < 4; ++k) gx += r.nx[k] * vz[k], gy += r.ny[k] * vz[k];

@@ -8,7 +8,7 @@
 // redone in the order of the points. Either way each point's result and each sum are those of the
 // element-by-element update, operation for operation.
 //
-// Equations (shared/spec/elements.md):
+// Equations (docs/theory/elements.md):
 //   1.4  point i of n at z_i = zeta_i t, zeta_i = -1/2 + (i-1)/(n-1) (n = 1: zeta = 0);
 //        de(z_i) = de_m + z_i dkappa (membrane and bending parts), transverse shear constant;
 //        FOR = sum w_i sigma_i (w = 1/(2(n-1)) at the surfaces, 1/(n-1) inside),
@@ -47,7 +47,7 @@
 
 namespace radx::solver::shell_detail {
 
-inline constexpr int kMaxPoints = 10;  // N > 10 is rejected by the starter (elements.md 1.1)
+inline constexpr int kMaxPoints = 10;  // N > 10 is rejected by the starter (docs/theory/elements.md 1.1)
 // Points per pass of section_point_pass. The usual 3 and 5 points take one pass: the sums stay in registers
 // (or the core's spill slots) instead of going through SectionBlock between passes.
 inline constexpr int kPassPoints = 5;

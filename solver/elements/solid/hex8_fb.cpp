@@ -1,7 +1,7 @@
 // Eight-node one-point brick with Flanagan-Belytschko viscous hourglass control (Isolid 1; Isolid 2 =
 // plain Hallquist h vectors for all modes; every other Isolid value is treated as 1).
 //
-// Source: shared/spec/elements.md 3.1-3.4 (kinematics, material call, bulk viscosity, energy, hourglass),
+// Source: docs/theory/elements.md 3.1-3.4 (kinematics, material call, bulk viscosity, energy, hourglass),
 // 4.4-4.5 (element step, nodal stiffness), 6.2 (strain-rate measure), read from OpenRadioss sderi3.F,
 // sdefo3.F, srota3.F, srho3.F, mqviscb.F, meint.F, shvis3.F, sdlen3.F.
 //
@@ -50,13 +50,13 @@
 //     qt = qb c + qa^2 l ec,  c_eff = qt + sqrt(qt^2 + c^2),  dt = dx / c_eff
 //   nodal stiffness (4.5): k = rho V / (4 dt^2) for each of the 8 nodes
 //
-// Co-rotational frame (Iframe 2; elements.md 3.6, read from OpenRadioss srcoor3.F, srepiso3.F, sortho3.F,
-// sdefo3.F, srrota3.F): every cycle the element frame R = [e_x e_y e_z] is built from the current nodes
-// (brick_corotational_frame below), the nodes and velocities are taken into it (x' = R^T x, v' = R^T v), all
-// of the above runs in that frame with the stored stress expressed in it and with no Jaumann rotation (the
-// frame carries the rotation), and the nodal forces go back to global axes (f = R f'). The strain rate gets
-// the second-order term of the co-rotational update (sdefo3.F, explicit): with L' the velocity gradient in
-// the frame, D_aa = L'_aa - dt1/2 (L'^T L')_aa and D_ab = L'_ab + L'_ba - dt1 (L'^T L')_ab (engineering
+// Co-rotational frame (Iframe 2; docs/theory/elements.md 3.6, read from OpenRadioss srcoor3.F, srepiso3.F,
+// sortho3.F, sdefo3.F, srrota3.F): every cycle the element frame R = [e_x e_y e_z] is built from the current
+// nodes (brick_corotational_frame below), the nodes and velocities are taken into it (x' = R^T x, v' = R^T
+// v), all of the above runs in that frame with the stored stress expressed in it and with no Jaumann rotation
+// (the frame carries the rotation), and the nodal forces go back to global axes (f = R f'). The strain rate
+// gets the second-order term of the co-rotational update (sdefo3.F, explicit): with L' the velocity gradient
+// in the frame, D_aa = L'_aa - dt1/2 (L'^T L')_aa and D_ab = L'_ab + L'_ba - dt1 (L'^T L')_ab (engineering
 // shear), i.e. the Almansi strain increment of the step. Frame construction: r = j1, s = j2, t = j3 (centre
 // directions eta, zeta, xi), normalised to u, v, w; three times u <- unit(v x w + u), v <- unit(w x u + v),
 // w <- unit(u x v + w) (all three from the previous values); then e1 = u, e3 = unit(e1 x v), e2 = e3 x e1.
@@ -295,7 +295,8 @@ void hex8_forces_impl(BrickGroup& g, const NodeState& nodes, const MaterialParam
     const SolidPointResult pr =
         fb_material<kLaw>(g, i, k, mat, x, D, rate, rho, mu, off, sn, eps_p, dmg, c_e);
     // Law 36 Eps_p_max and /FAIL/JOHNSON Ifail_so 1: 0.8 when the brick fails, then 0.8 per cycle, 0 below
-    // 0.1; the forces and energies of this cycle take the new factor (as the shells do, elements.md 6.4).
+    // 0.1; the forces and energies of this cycle take the new factor (as the
+    // shells do, docs/theory/elements.md 6.4).
     const double off_new = brick_next_off(off, pr.element_fails);
 
     // Bulk viscosity, element step, energies, hourglass.

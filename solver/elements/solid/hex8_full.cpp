@@ -9,7 +9,7 @@
 // forces weighted by the point volume), solide8/s8lagr3.F (density per element), solide8z/s8zdefo3.F
 // (constant-pressure option, spin set to zero in the co-rotational frame), solide/srepiso3.F and sortho3.F
 // (the co-rotational frame from the three centre directions, orthonormalised), starter hm_read_prop14.F and
-// sgrtails.F (defaults). Section numbers refer to shared/spec/elements.md.
+// sgrtails.F (defaults). Section numbers refer to docs/theory/elements.md.
 //
 // Nodes and natural coordinates as hex8_fb.cpp: (xi, eta, zeta)_k = (-1,-1,-1), (1,-1,-1), (1,1,-1),
 // (-1,1,-1), then the same with zeta = +1. Points p = 0..7 at (xi, eta, zeta)_p = a (xi, eta, zeta)_k,

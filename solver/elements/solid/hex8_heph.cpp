@@ -1,7 +1,7 @@
 // Eight-node brick HEPH (Isolid 24): one point at the centre, forced co-rotational frame, physical
 // elasto-plastic hourglass stresses stored per element, plus a small viscous hourglass part (dn).
 //
-// Sources: shared/spec/elements.md 3.5 and 3.6-3.7 (added with this kernel), read from OpenRadioss
+// Sources: docs/theory/elements.md 3.5 and 3.6-3.7, read from OpenRadioss
 // engine/source/elements/solid/solidez/szforc3.F (order of work), szderi3.F (gradients and the hourglass
 // shape vectors), szhour3.F (hourglass stresses, forces, energy), szsvm.F (equivalent stress of the
 // hourglass stresses), solide/srcoor3.F + srepiso3.F + sortho3.F (frame), sdefo3.F (co-rotational strain
@@ -14,8 +14,9 @@
 //   V = j_eta . (j_zeta x j_xi) / 64, b_k as in hex8_fb.cpp, L' = sum_k v'_k (x) b_k,
 //   D = sym L' - dt1/2 L'^T L' (engineering shears: twice the off-diagonal), no Jaumann rotation;
 //   rho = rho0 V0 / V, material solid_point_update(de = D dt1, mu), bulk viscosity, internal energy of the
-//   stress and the element step exactly as the one-point brick (elements.md 3.3, 4.4; sdlen3.F + mqviscb.F:
-//   dt = (V / max face area) / c_eff), nodal stiffness k = rho V / (4 dt^2) per node (4.5).
+//   stress and the element step exactly as the one-point brick (docs/theory/elements.md 3.3, 4.4;
+//   sdlen3.F + mqviscb.F: dt = (V / max face area) / c_eff), nodal
+//   stiffness k = rho V / (4 dt^2) per node (4.5).
 // Hourglass (szhour3.F). Modes, in this order, m1 = (1,1,-1,-1,-1,-1,1,1) (eta-zeta), m2 =
 // (1,-1,-1,1,-1,1,1,-1) (zeta-xi), m3 = (1,-1,1,-1,1,-1,1,-1) (xi-eta), m4 = (-1,1,-1,1,1,-1,1,-1)
 // (xi-eta-zeta);

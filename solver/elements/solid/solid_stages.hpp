@@ -2,7 +2,7 @@
 // (hex8_heph.cpp), the fully integrated brick (hex8_full.cpp) and the tetrahedron (tetra4.cpp) call these.
 // Internal to the solver; not a public API.
 //
-// Small inline functions, one per quantity, each with its formula and the section of shared/spec/elements.md
+// Small inline functions, one per quantity, each with its formula and the section of docs/theory/elements.md
 // it comes from. The arithmetic is written in the order the kernels had it (left to right, no reassociation),
 // so the kernels' results do not change to the bit; keep that order when editing. No allocation, no virtual
 // call: the compiler inlines them into the element loops.
@@ -33,7 +33,7 @@ inline double dot3(const double a[3], const double b[3]) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-// One-point brick geometry (elements.md 3.1, sderi3.F), nodes 1-4 one face, 5-8 above them:
+// One-point brick geometry (docs/theory/elements.md 3.1, sderi3.F), nodes 1-4 one face, 5-8 above them:
 //   d17 = x7 - x1, d28 = x8 - x2, d35 = x5 - x3, d46 = x6 - x4,
 //   j1 = d17 + d28 - d35 - d46 (8 dx/deta), j2 = d17 + d28 + d35 + d46 (8 dx/dzeta),
 //   j3 = d17 - d28 - d35 + d46 (8 dx/dxi); c12 = j1 x j2, c23 = j2 x j3, c31 = j3 x j1;
@@ -56,8 +56,8 @@ inline double brick_centre_jacobian(const double x[8][3], double j1[3], double j
   return (j1[0] * c23[0] + j1[1] * c23[1] + j1[2] * c23[2]) / 64.0;
 }
 
-// Centre gradients b_k = dN_k/dx(0) = [xi_k c12 + eta_k c23 + zeta_k c31] / (64 V) (elements.md 3.1), so
-// b5 = -b3, b6 = -b4, b7 = -b1, b8 = -b2.
+// Centre gradients b_k = dN_k/dx(0) = [xi_k c12 + eta_k c23 + zeta_k c31] / (64 V)
+// (docs/theory/elements.md 3.1), so b5 = -b3, b6 = -b4, b7 = -b1, b8 = -b2.
 inline void brick_centre_gradients(const double c12[3], const double c23[3], const double c31[3], double vol,
                                    double b[8][3]) {
   const double inv = 1.0 / (64.0 * vol);
@@ -75,7 +75,7 @@ inline void brick_centre_gradients(const double c12[3], const double c23[3], con
 }
 
 // Velocity gradient of the one-point brick, L[a][c] = dv_a/dx_c = sum_k v_k,a b_k,c, from the opposite-node
-// differences (elements.md 3.1): (v1 - v7) b1 + (v2 - v8) b2 + (v3 - v5) b3 + (v4 - v6) b4.
+// differences (docs/theory/elements.md 3.1): (v1 - v7) b1 + (v2 - v8) b2 + (v3 - v5) b3 + (v4 - v6) b4.
 inline void brick_velocity_gradient(const double v[8][3], const double b[8][3], double L[3][3]) {
   for (int a = 0; a < 3; ++a) L[a][0] = L[a][1] = L[a][2] = 0.0;
 #pragma GCC unroll 8
@@ -91,9 +91,10 @@ inline void brick_velocity_gradient(const double v[8][3], const double b[8][3], 
   }
 }
 
-// Mode sums r[j][d] = sum_k h_jk a_k of the one-point brick's hourglass vectors (elements.md 3.4), h1 =
-// (1,-1,1,-1,1,-1,1,-1), h2 = (1,1,-1,-1,-1,-1,1,1), h3 = (1,-1,-1,1,-1,1,1,-1), h4 = (1,-1,1,-1,-1,1,-1,1),
-// pairwise: with p = a1 - a4 - a6 + a7, m = a2 - a3 - a5 + a8, s = a1 - a2 - a5 + a6, t = a3 - a4 - a7 + a8:
+// Mode sums r[j][d] = sum_k h_jk a_k of the one-point brick's hourglass vectors
+// (docs/theory/elements.md 3.4), h1 = (1,-1,1,-1,1,-1,1,-1), h2 = (1,1,-1,-1,-1,-1,1,1),
+// h3 = (1,-1,-1,1,-1,1,1,-1), h4 = (1,-1,1,-1,-1,1,-1,1), pairwise: with p = a1 - a4 - a6 + a7,
+// m = a2 - a3 - a5 + a8, s = a1 - a2 - a5 + a6, t = a3 - a4 - a7 + a8:
 // h1 = p - m, h2 = p + m, h3 = s - t, h4 = s + t.
 inline void brick_mode_sums(double a1, double a2, double a3, double a4, double a5, double a6, double a7,
                             double a8, double r[4][3], int d) {
@@ -107,7 +108,8 @@ inline void brick_mode_sums(double a1, double a2, double a3, double a4, double a
 
 // Nodal forces f[k] (ADDED to node k) of a one-point brick with stress sn (xx yy zz xy yz zx), bulk
 // viscosity q and hourglass forces H_j = hg[j] on the vectors h_j of brick_mode_sums, with
-// G_jk = h_jk - hx_j . b_k (elements.md 3.1, 3.4): stress part -V (sigma - q I) b_k, hourglass part
+// G_jk = h_jk - hx_j . b_k (docs/theory/elements.md 3.1, 3.4): stress
+// part -V (sigma - q I) b_k, hourglass part
 //   -sum_j G_jk H_j = -sum_j h_jk H_j + M b_k with M = sum_j H_j (x) hx_j,
 // so f_k = -T b_k - sum_j h_jk H_j with T = V (sigma - q I) - M, and b_{5..8} = -b_{3,4,1,2}: the same
 // quantities as node by node, fewer operations. hx_j = 0 gives the plain vector h_j.
@@ -145,8 +147,9 @@ inline void brick_nodal_forces(const double sn[6], double q, double vol, const d
   }
 }
 
-// /DT/BRICK/CST small strain (elements.md 3.1, hex8_fb.cpp): freeze the brick's node coordinates in x_ref the
-// first cycle after the switch (dt_fixed > 0), then take x from them every cycle (velocities stay current).
+// /DT/BRICK/CST small strain (docs/theory/elements.md 3.1, hex8_fb.cpp): freeze the brick's node coordinates
+// in x_ref the first cycle after the switch (dt_fixed > 0), then take x from
+// them every cycle (velocities stay current).
 inline void brick_small_strain_geometry(BrickGroup& g, std::size_t i, double x[8][3]) {
   constexpr std::size_t G = kGroupSize;
   if (g.dt_fixed[i] > 0.0 && !g.small[i]) {
@@ -160,7 +163,7 @@ inline void brick_small_strain_geometry(BrickGroup& g, std::size_t i, double x[8
   }
 }
 
-// Nodes and velocities of a brick into the element frame R = [e_x e_y e_z] (elements.md 3.6):
+// Nodes and velocities of a brick into the element frame R = [e_x e_y e_z] (docs/theory/elements.md 3.6):
 // x' = R^T x, v' = R^T v, i.e. x'_c = sum_r R[r][c] x_r.
 inline void brick_into_frame(const double R[3][3], double x[8][3], double v[8][3]) {
 #pragma GCC unroll 8
@@ -178,7 +181,7 @@ inline void brick_into_frame(const double R[3][3], double x[8][3], double v[8][3
   }
 }
 
-// Nodal forces of a brick from its element frame back to global axes (elements.md 3.6): f = R f'.
+// Nodal forces of a brick from its element frame back to global axes (docs/theory/elements.md 3.6): f = R f'.
 inline void brick_from_frame(const double R[3][3], double f[8][3]) {
 #pragma GCC unroll 8
   for (int k = 0; k < 8; ++k) {
@@ -188,8 +191,8 @@ inline void brick_from_frame(const double R[3][3], double f[8][3]) {
   }
 }
 
-// Co-rotational frame of a block of one-point bricks (elements.md 3.6; srepiso3.F, sortho3.F), the
-// formulas of brick_corotational_frame (hex8_fb.cpp, which runs this with B = 1): r = j1, s = j2, t = j3
+// Co-rotational frame of a block of one-point bricks (docs/theory/elements.md 3.6; srepiso3.F, sortho3.F),
+// the formulas of brick_corotational_frame (hex8_fb.cpp, which runs this with B = 1): r = j1, s = j2, t = j3
 // (eta, zeta, xi) normalised to u, v, w; three times u <- unit(v x w + u), v <- unit(w x u + v),
 // w <- unit(u x v + w); e1 = u, e3 = unit(e1 x v), e2 = e3 x e1. A zero vector stays zero under unit().
 // Columns (e_x e_y e_z) = (e1 e2 e3), or (e3 e1 e2) with heph_order (Isolid 24).
@@ -286,7 +289,7 @@ inline void brick_corotational_frame_block(const double x[8][B], const double y[
   }
 }
 
-// Co-rotational strain rate (elements.md 3.6, sdefo3.F): D_aa = L_aa - dt1/2 (L^T L)_aa,
+// Co-rotational strain rate (docs/theory/elements.md 3.6, sdefo3.F): D_aa = L_aa - dt1/2 (L^T L)_aa,
 // D_ab = L_ab + L_ba - dt1 (L^T L)_ab (engineering shears), from the velocity gradient L in the frame.
 inline void corotational_strain_rate(const double L[3][3], double dt1, double D[6]) {
   auto ltl = [&](int a, int e) { return L[0][a] * L[0][e] + L[1][a] * L[1][e] + L[2][a] * L[2][e]; };
@@ -299,7 +302,7 @@ inline void corotational_strain_rate(const double L[3][3], double dt1, double D[
   D[5] = L[2][0] + L[0][2] - dt1 * ltl(2, 0);
 }
 
-// Half-step spin of the velocity gradient L[a][c] = dv_a/dx_c (elements.md 3.2):
+// Half-step spin of the velocity gradient L[a][c] = dv_a/dx_c (docs/theory/elements.md 3.2):
 // wx = dt1/2 (dvz/dy - dvy/dz), wy = dt1/2 (dvx/dz - dvz/dx), wz = dt1/2 (dvy/dx - dvx/dy).
 inline void half_step_spin(const double L[3][3], double dt1, double& wx, double& wy, double& wz) {
   wz = 0.5 * dt1 * (L[1][0] - L[0][1]);
@@ -308,7 +311,7 @@ inline void half_step_spin(const double L[3][3], double dt1, double& wx, double&
 }
 
 // First-order Jaumann rotation of the stored stress s (xx yy zz xy yz zx) into so, old values on the right
-// (elements.md 3.2, srota3.F):
+// (docs/theory/elements.md 3.2, srota3.F):
 //   sxx += -2 sxy wz + 2 szx wy,  syy += 2 sxy wz - 2 syz wx,  szz += -2 szx wy + 2 syz wx,
 //   sxy += wz (sxx - syy) + wy syz - wx szx,  syz += wx (syy - szz) + wz szx - wy sxy,
 //   szx += wy (szz - sxx) + wx sxy - wz syz.
@@ -321,7 +324,7 @@ inline void jaumann_rotate(const double s[6], double wx, double wy, double wz, d
   so[5] = s[5] + wy * (s[2] - s[0]) + wx * s[3] - wz * s[4];
 }
 
-// Strain-rate measure of the Johnson-Cook rate term (elements.md 6.2), D with engineering shears:
+// Strain-rate measure of the Johnson-Cook rate term (docs/theory/elements.md 6.2), D with engineering shears:
 //   e = sqrt(Dxx^2 + Dyy^2 + Dzz^2 + (D4^2 + D5^2 + D6^2) / 2); its square on its own for a block kernel
 // that takes the roots in a pass of their own.
 inline double strain_rate_measure2(const double D[6]) {
@@ -331,12 +334,14 @@ inline double strain_rate_measure(const double D[6]) {
   return std::sqrt(strain_rate_measure2(D));
 }
 
-// Its filter (elements.md 6.2): rate <- alpha e + (1 - alpha) rate, alpha = rate_filter_alpha(mat, dt1).
+// Its filter (docs/theory/elements.md 6.2): rate <- alpha e + (1 - alpha)
+// rate, alpha = rate_filter_alpha(mat, dt1).
 inline double filtered_rate(double alpha, double e_rate, double rate_old) {
   return alpha * e_rate + (1.0 - alpha) * rate_old;
 }
 
-// Density and volumetric strain of a solid (elements.md 3.2, srho3.F): rho = rho0 V0 / V, mu = rho/rho0 - 1.
+// Density and volumetric strain of a solid (docs/theory/elements.md 3.2,
+// srho3.F): rho = rho0 V0 / V, mu = rho/rho0 - 1.
 inline double solid_density(double rho0, double vol0, double vol) {
   return rho0 * vol0 / vol;
 }
@@ -344,17 +349,17 @@ inline double solid_mu(double rho, double rho0) {
   return rho / rho0 - 1.0;
 }
 
-// Compression rate of the bulk viscosity (elements.md 3.3): ec = max(0, -tr D).
+// Compression rate of the bulk viscosity (docs/theory/elements.md 3.3): ec = max(0, -tr D).
 inline double compression_rate(const double D[6]) {
   return std::max(0.0, -(D[0] + D[1] + D[2]));
 }
 
-// Bulk viscosity (elements.md 3.3, mqviscb.F), l = V^(1/3): q = rho ec l (qa^2 l ec + qb c).
+// Bulk viscosity (docs/theory/elements.md 3.3, mqviscb.F), l = V^(1/3): q = rho ec l (qa^2 l ec + qb c).
 inline double bulk_viscosity(double rho, double ec, double l, double qa2, double qb, double c) {
   return rho * ec * l * (qa2 * l * ec + qb * c);
 }
 
-// Brick characteristic length (elements.md 4.4, sdlen3.F): V / largest face area, a face's area
+// Brick characteristic length (docs/theory/elements.md 4.4, sdlen3.F): V / largest face area, a face's area
 // |d13 x d24| / 2 (node positions from kBrickFaces). In two parts so that a block kernel can take the square
 // root in a pass of its own: the largest |d13 x d24|^2, then the length from its root.
 inline double brick_face_cross2_max(const double x[8][3]) {
@@ -381,9 +386,9 @@ inline double brick_face_length(const double x[8][3], double vol) {
   return brick_face_length_of_root(vol, std::sqrt(brick_face_cross2_max(x)));
 }
 
-// Element step of a solid before the /DT scale (elements.md 4.4, mqviscb.F): with qt = qb c + qa^2 l ec,
-// c_eff = qt + sqrt(qt^2 + c^2) and dt = length / c_eff. In parts for a block kernel: qt, then the step from
-// the root sqrt(qt^2 + c^2).
+// Element step of a solid before the /DT scale (docs/theory/elements.md 4.4, mqviscb.F): with qt = qb
+// c + qa^2 l ec, c_eff = qt + sqrt(qt^2 + c^2) and dt = length / c_eff. In parts for a block kernel: qt, then
+// the step from the root sqrt(qt^2 + c^2).
 inline double solid_step_qt(double c, double qa2, double qb, double l, double ec) {
   return qb * c + qa2 * l * ec;
 }
@@ -395,8 +400,8 @@ inline double solid_step(double length, double c, double qa2, double qb, double 
   return solid_step_of_root(length, qt, std::sqrt(qt * qt + c * c));
 }
 
-// Stress power sum of the energy trapezoid (elements.md 3.3): sum_m (sigma_old + sigma_new)_m D_m,
-// engineering shears in D.
+// Stress power sum of the energy trapezoid (docs/theory/elements.md 3.3): sum_m (sigma_old + sigma_new)_m
+// D_m, engineering shears in D.
 inline double stress_power_sum(const double so[6], const double sn[6], const double D[6]) {
   double work = 0.0;
 #pragma GCC unroll 6
@@ -404,8 +409,8 @@ inline double stress_power_sum(const double so[6], const double sn[6], const dou
   return work;
 }
 
-// Internal energy increment of a one-point solid, total (elements.md 3.3, meint.F), with the bulk-viscosity
-// work: dE = dt1/2 Vavg work - dV/2 (q_old + q_new), dV = V - V_old, Vavg = V - dV/2,
+// Internal energy increment of a one-point solid, total (docs/theory/elements.md 3.3, meint.F), with the
+// bulk-viscosity work: dE = dt1/2 Vavg work - dV/2 (q_old + q_new), dV = V - V_old, Vavg = V - dV/2,
 // work = stress_power_sum(...).
 inline double solid_energy_increment(double dt1, double vol, double vol_old, double work, double q_old,
                                      double q_new) {
@@ -414,7 +419,7 @@ inline double solid_energy_increment(double dt1, double vol, double vol_old, dou
   return 0.5 * dt1 * vavg * work - 0.5 * dvol * (q_old + q_new);
 }
 
-// Square of the von Mises stress (elements.md 6.5): 3/2 s_dev : s_dev with sm = tr(sigma)/3,
+// Square of the von Mises stress (docs/theory/elements.md 6.5): 3/2 s_dev : s_dev with sm = tr(sigma)/3,
 //   svm^2 = 1.5 ((sxx - sm)^2 + (syy - sm)^2 + (szz - sm)^2) + 3 (sxy^2 + syz^2 + szx^2).
 inline double von_mises2(const double s[6]) {
   const double sm = (s[0] + s[1] + s[2]) / 3.0;
@@ -422,8 +427,8 @@ inline double von_mises2(const double s[6]) {
          3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
 }
 
-// Nodal stiffness of a solid (elements.md 4.5): k = share rho V / dt^2 for each node, share = 1/4 for the
-// bricks, 1/2 for the tetrahedron (s4cumu3.F).
+// Nodal stiffness of a solid (docs/theory/elements.md 4.5): k = share rho V / dt^2 for each node, share = 1/4
+// for the bricks, 1/2 for the tetrahedron (s4cumu3.F).
 inline double solid_nodal_stiffness(double share, double rho, double vol, double dt) {
   return share * rho * vol / (dt * dt);
 }

@@ -5,7 +5,7 @@
 // the work), s4deri3.F (gradients, volume, characteristic length), s4defo3.F (strain rates), s4fint3.F
 // (internal forces), s4cumu3.F (nodal stiffness); srota3.F, srho3.F, mqviscb.F shared with the brick;
 // starter s4mass3.F (mass), hm_read_solid.F (node order). The stress update, bulk viscosity and energies are
-// the one-point brick's (hex8_fb.cpp, shared/spec/elements.md 3.2, 3.3), which OpenRadioss runs through the
+// the one-point brick's (hex8_fb.cpp, docs/theory/elements.md 3.2, 3.3), which OpenRadioss runs through the
 // same routines (mmain, mqviscb) for both.
 //
 // Nodes x_1..x_4 (current geometry x^n), velocities v^{n-1/2}; dt1 = t^n - t^{n-1}.
