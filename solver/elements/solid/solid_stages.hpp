@@ -33,7 +33,7 @@ inline double dot3(const double a[3], const double b[3]) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-// One-point brick geometry (docs/theory/elements.md 3.1, sderi3.F), nodes 1-4 one face, 5-8 above them:
+// One-point brick geometry (docs/theory/elements.md 3.2, sderi3.F), nodes 1-4 one face, 5-8 above them:
 //   d17 = x7 - x1, d28 = x8 - x2, d35 = x5 - x3, d46 = x6 - x4,
 //   j1 = d17 + d28 - d35 - d46 (8 dx/deta), j2 = d17 + d28 + d35 + d46 (8 dx/dzeta),
 //   j3 = d17 - d28 - d35 + d46 (8 dx/dxi); c12 = j1 x j2, c23 = j2 x j3, c31 = j3 x j1;
@@ -57,7 +57,7 @@ inline double brick_centre_jacobian(const double x[8][3], double j1[3], double j
 }
 
 // Centre gradients b_k = dN_k/dx(0) = [xi_k c12 + eta_k c23 + zeta_k c31] / (64 V)
-// (docs/theory/elements.md 3.1), so b5 = -b3, b6 = -b4, b7 = -b1, b8 = -b2.
+// (docs/theory/elements.md 3.2), so b5 = -b3, b6 = -b4, b7 = -b1, b8 = -b2.
 inline void brick_centre_gradients(const double c12[3], const double c23[3], const double c31[3], double vol,
                                    double b[8][3]) {
   const double inv = 1.0 / (64.0 * vol);
@@ -75,7 +75,7 @@ inline void brick_centre_gradients(const double c12[3], const double c23[3], con
 }
 
 // Velocity gradient of the one-point brick, L[a][c] = dv_a/dx_c = sum_k v_k,a b_k,c, from the opposite-node
-// differences (docs/theory/elements.md 3.1): (v1 - v7) b1 + (v2 - v8) b2 + (v3 - v5) b3 + (v4 - v6) b4.
+// differences (docs/theory/elements.md 3.2): (v1 - v7) b1 + (v2 - v8) b2 + (v3 - v5) b3 + (v4 - v6) b4.
 inline void brick_velocity_gradient(const double v[8][3], const double b[8][3], double L[3][3]) {
   for (int a = 0; a < 3; ++a) L[a][0] = L[a][1] = L[a][2] = 0.0;
 #pragma GCC unroll 8
@@ -108,7 +108,7 @@ inline void brick_mode_sums(double a1, double a2, double a3, double a4, double a
 
 // Nodal forces f[k] (ADDED to node k) of a one-point brick with stress sn (xx yy zz xy yz zx), bulk
 // viscosity q and hourglass forces H_j = hg[j] on the vectors h_j of brick_mode_sums, with
-// G_jk = h_jk - hx_j . b_k (docs/theory/elements.md 3.1, 3.4): stress
+// G_jk = h_jk - hx_j . b_k (docs/theory/elements.md 3.2, 3.4): stress
 // part -V (sigma - q I) b_k, hourglass part
 //   -sum_j G_jk H_j = -sum_j h_jk H_j + M b_k with M = sum_j H_j (x) hx_j,
 // so f_k = -T b_k - sum_j h_jk H_j with T = V (sigma - q I) - M, and b_{5..8} = -b_{3,4,1,2}: the same
