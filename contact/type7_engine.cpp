@@ -142,6 +142,19 @@ Vec3 relative_velocity(const Velocity& v, std::int32_t s, const std::array<std::
   return vr;
 }
 
+// The candidates are sorted by node: node k = cand[c].node owns cand[c .. end). Calls visit(k, c, end) for
+// each node whose candidates start in [c, stop), in order.
+template <class Visit>
+void for_each_node(const std::vector<Candidate>& cand, std::size_t c, std::size_t stop, Visit&& visit) {
+  while (c < stop) {
+    const std::int32_t k = cand[c].node;
+    std::size_t end = c;
+    while (end < cand.size() && cand[end].node == k) ++end;
+    visit(static_cast<std::size_t>(k), c, end);
+    c = end;
+  }
+}
+
 double segment_area(const std::array<Vec3, 4>& x, bool triangle) {
   return triangle ? model::triangle_area(x[0], x[1], x[2]) : model::quad_area(x[0], x[1], x[2], x[3]);
 }
@@ -606,19 +619,13 @@ struct Type7Contact::Impl {
       while (c > 0 && c < n &&
              cand[static_cast<std::size_t>(c)].node == cand[static_cast<std::size_t>(c - 1)].node)
         ++c;  // that node's group belongs to the chunk where it starts
-      while (c < stop) {
-        const std::int32_t k = cand[static_cast<std::size_t>(c)].node;
-        std::int64_t end = c;
-        while (end < n && cand[static_cast<std::size_t>(end)].node == k) ++end;
-        const auto ks = static_cast<std::size_t>(k);
-        if (!st.node_off[ks]) {
-          const Vec3 xs = node_x(nodes, secondary[ks]);
-          const Closest cl = closest_segment(st, cand, static_cast<std::size_t>(c),
-                                             static_cast<std::size_t>(end), xs, nodes);
-          out[c] = NodeClosest{cl.segment, cl.d, cl.h};
-        }
-        c = end;
-      }
+      for_each_node(cand, static_cast<std::size_t>(c), static_cast<std::size_t>(stop),
+                    [&](std::size_t ks, std::size_t first, std::size_t end) {
+                      if (st.node_off[ks]) return;
+                      const Vec3 xs = node_x(nodes, secondary[ks]);
+                      const Closest cl = closest_segment(st, cand, first, end, xs, nodes);
+                      out[first] = NodeClosest{cl.segment, cl.d, cl.h};
+                    });
     };
     run_chunks(&parallel, (n + kCandidateChunk - 1) / kCandidateChunk, body);
   }
@@ -632,20 +639,14 @@ struct Type7Contact::Impl {
     const auto& cand = st.search->candidates();
     std::int64_t count = 0;
     double worst = 0;
-    std::size_t c = 0;
-    while (c < cand.size()) {
-      const std::int32_t k = cand[c].node;
-      std::size_t end = c;
-      while (end < cand.size() && cand[end].node == k) ++end;
-      const auto ks = static_cast<std::size_t>(k);
+    for_each_node(cand, 0, cand.size(), [&](std::size_t ks, std::size_t c, std::size_t end) {
       const std::int32_t node = in.secondary_nodes[ks];
       const Vec3 xs = node_x(nodes, node);
       const Closest cl = st.node_off[ks] ? Closest{} : closest_segment(st, cand, c, end, xs, nodes);
-      c = end;
-      if (cl.segment < 0) continue;
+      if (cl.segment < 0) return;
       const double g = pair_gap(in, in.gap_node[ks], in.gap_segment[static_cast<std::size_t>(cl.segment)]);
       const double p0 = g - cl.d;
-      if (!(p0 > 0)) continue;
+      if (!(p0 > 0)) return;
       ++count;
       worst = std::max(worst, p0);
       switch (in.inacti) {
@@ -667,7 +668,7 @@ struct Type7Contact::Impl {
         case 6: st.reduction[ks] = p0 + 0.05 * (g - p0); break;
         default: break;
       }
-    }
+    });
     for (std::size_t g = 0; g < st.segment_off.size(); ++g)
       if (st.segment_off[g]) st.search->remove_segment(static_cast<std::int32_t>(g));
     for (std::size_t k = 0; k < st.node_off.size(); ++k)
@@ -712,27 +713,18 @@ struct Type7Contact::Impl {
     // as before): everything that writes shared state (forces, stiffness sums, switches, IBC releases,
     // deactivations, messages), so its order and the sums it makes are those of one thread.
     closest_stage(st, cand, nodes);
-    std::size_t c = 0;
-    while (c < cand.size()) {
-      const std::int32_t k = cand[c].node;
-      std::size_t end = c;
-      while (end < cand.size() && cand[end].node == k) ++end;
-      const auto ks = static_cast<std::size_t>(k);
+    for_each_node(cand, 0, cand.size(), [&](std::size_t ks, std::size_t c, std::size_t) {
       const std::int32_t node = in.secondary_nodes[ks];
-      if (st.node_off[ks]) {
-        c = end;
-        continue;
-      }
+      if (st.node_off[ks]) return;
       // The closest candidate segment (stage A).
       const Vec3 xs = node_x(nodes, node);
       const NodeClosest& cl = closest[c];
       const double best_d = cl.d;
       const std::int32_t best = cl.segment;
       const std::array<double, 4>& best_h = cl.h;
-      c = end;
       if (best < 0) {  // no segment left (removed by Idel): the friction history ends with the contact
         st.f_t[ks] = Vec3{};
-        continue;
+        return;
       }
       const auto sb = static_cast<std::size_t>(best);
       std::array<Vec3, 4> best_x{};
@@ -747,7 +739,7 @@ struct Type7Contact::Impl {
       const double p = g - best_d;
       if (g <= 0) {
         st.f_t[ks] = Vec3{};
-        continue;
+        return;
       }
       // Normal from the contact point to the node (two-sided), or the segment normal.
       Vec3 cpt{};
@@ -820,11 +812,11 @@ struct Type7Contact::Impl {
           else if (approaching && k_reach > 0)
             add_pair_stiffness(node, st.segments[sb], best_h, k_reach, nodes, st);
         }
-        continue;
+        return;
       }
       if ((g - p) / g < 1e-6) {
         deactivate(st, ks, "reached the main surface (remaining gap below 1e-6 of the gap): deactivated");
-        continue;
+        return;
       }
       // Normal force, its tangent stiffness and the VISs damping: the law's P A_s and Kc A_s with the
       // plain critical-damping fraction (the hyperbola's 1/sqrt(r) and quadratic terms belong to its pole),
@@ -904,7 +896,7 @@ struct Type7Contact::Impl {
           controls.action == ContactControls::Action::Delete) {
         st.f_t[ks] = Vec3{};
         deactivate(st, ks, "left the interface: its contact time step fell below the /DT/INTER/DEL minimum");
-        continue;
+        return;
       }
       release_ibc(st, ks, node, nodes);
       PendingPair q;
@@ -929,11 +921,11 @@ struct Type7Contact::Impl {
         q.switchable = !wants || may_switch(st, q.row, nodes);
         if (wants && q.switchable) {
           switch_pair(st, q.row, ks, p);
-          continue;
+          return;
         }
       }
       pending.push_back(q);
-    }
+    });
   }
 };
 
