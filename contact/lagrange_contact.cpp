@@ -303,6 +303,130 @@ struct LagrangeSolver::Impl {
       out[static_cast<std::size_t>(r.pair)].friction = f;
     }
   }
+
+  // Rows: canonical, ordered, duplicates merged, rows without a free degree of freedom dropped.
+  void build_rows(std::span<const SwitchedPair> pairs, const LagrangeNodes& nodes) {
+    rows.clear();
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      Row r = make_row(pairs[k], static_cast<std::int32_t>(k));
+      if (!has_free_dof(r, nodes)) {
+        ++stats.dropped_rows;
+        continue;
+      }
+      rows.push_back(r);
+    }
+    std::sort(rows.begin(), rows.end(), row_less);
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      if (kept > 0 && same_row(rows[kept - 1], rows[k])) {
+        rows[kept - 1].allowed = std::min(rows[kept - 1].allowed, rows[k].allowed);
+        ++stats.merged_rows;
+        continue;
+      }
+      rows[kept++] = rows[k];
+    }
+    rows.resize(kept);
+  }
+
+  // The gap rates with a0 alone, the targets, and the first active set: the rows whose target a0 violates.
+  // Sets the tolerance of the comparisons with the targets; true when a row starts active.
+  bool start_active_set(const LagrangeNodes& nodes, double dt12, double dt2, double& tol) {
+    const std::size_t nr = rows.size();
+    rate0.resize(nr);
+    target.resize(nr);
+    active.assign(nr, 0);
+    double scale = 0;
+    for (std::size_t r = 0; r < nr; ++r) {
+      rate0[r] = rate(rows[r], nodes, dt12, false);
+      target[r] = -rows[r].allowed / dt2;
+      scale = std::max({scale, std::abs(rate0[r]), std::abs(target[r])});
+    }
+    tol = 1e-12 * scale + 1e-300;
+    bool any = false;
+    for (std::size_t r = 0; r < nr; ++r) {
+      active[r] = rate0[r] < target[r] - tol ? 1 : 0;
+      any = any || active[r];
+    }
+    return any;
+  }
+
+  void count_rows() {
+    const std::size_t nr = rows.size();
+    ++stats.cycles;
+    stats.rows_last = static_cast<std::int64_t>(nr);
+    stats.rows_max = std::max(stats.rows_max, stats.rows_last);
+    stats.rows_total += stats.rows_last;
+    stats.nonzeros_last = static_cast<std::int64_t>(a.col_ptr.back()) - static_cast<std::int64_t>(nr);
+    stats.nonzeros_max = std::max(stats.nonzeros_max, stats.nonzeros_last);
+  }
+
+  // The active-set passes from the first active set (`any`: it is not empty): solve, release the rows that
+  // would pull, then bring back the released rows the correction makes violate their target, until the set
+  // stops changing or kMaxPasses. Returns whether it stopped changing; `passes` receives the passes made.
+  bool run_active_set(const LagrangeNodes& nodes, double dt12, double tol, bool any, int& passes) {
+    auto& st = stats;
+    const std::size_t nr = rows.size();
+    lambda.assign(nr, 0.0);
+    rhs.resize(nr);
+    passes = 0;
+    bool converged = !any;
+    while (any && passes < kMaxPasses) {
+      ++passes;
+      auto tf = Clock::now();
+      set_active_values();
+      factor.factorize(a);
+      st.seconds_factorization += seconds_since(tf);
+      const auto ts = Clock::now();
+      for (std::size_t r = 0; r < nr; ++r) rhs[r] = active[r] ? (target[r] - rate0[r]) / dt12 : 0.0;
+      factor.solve(rhs, lambda);
+      bool changed = false;
+      for (std::size_t r = 0; r < nr; ++r)
+        if (active[r] && lambda[r] < 0) {
+          active[r] = 0;
+          changed = true;
+        }
+      if (!changed) {
+        corrections();
+        for (std::size_t r = 0; r < nr; ++r)
+          if (!active[r] && rate(rows[r], nodes, dt12, true) < target[r] - tol) {
+            active[r] = 1;
+            changed = true;
+          }
+      }
+      st.seconds_solve += seconds_since(ts);
+      if (!changed) {
+        converged = true;
+        break;
+      }
+    }
+    return converged;
+  }
+
+  // The multipliers of the active rows (clamped to >= 0, which matters when the passes did not converge)
+  // into the accelerations and into out.
+  void apply_multipliers(const LagrangeNodes& nodes, std::span<PairForce> out) {
+    const std::size_t nr = rows.size();
+    for (std::size_t r = 0; r < nr; ++r) lambda[r] = active[r] ? std::max(0.0, lambda[r]) : 0.0;
+    corrections();
+    for (std::size_t c = 0; c < delta.size(); ++c) {
+      const auto n = static_cast<std::size_t>(local_nodes[static_cast<std::size_t>(col_node[c])]);
+      auto& acc = col_dof[c] == 0 ? nodes.ax : col_dof[c] == 1 ? nodes.ay : nodes.az;
+      acc[n] += delta[c];
+    }
+    for (std::size_t r = 0; r < nr; ++r) out[static_cast<std::size_t>(rows[r].pair)].lambda = lambda[r];
+  }
+
+  void count_passes(int passes) {
+    auto& st = stats;
+    st.active_set_passes += passes;
+    st.passes_max = std::max(st.passes_max, passes);
+    const auto& fc = factor.counters();
+    st.analyses = fc.analyses;
+    st.symbolic_reuses = fc.reuses;
+    st.factorizations = fc.factorizations;
+    st.regularisations = fc.regularisations;
+    st.beta_max = fc.beta_max;
+  }
 };
 
 LagrangeSolver::LagrangeSolver() : impl_(std::make_unique<Impl>()) {}
@@ -320,107 +444,23 @@ void LagrangeSolver::solve(std::span<const SwitchedPair> pairs, std::span<const 
   st.rows_last = st.nonzeros_last = 0;
   if (pairs.empty() || !(dt12 > 0)) return;
   const auto t0 = Clock::now();
-  // Rows: canonical, ordered, duplicates merged, rows without a free degree of freedom dropped.
-  s.rows.clear();
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    Row r = make_row(pairs[k], static_cast<std::int32_t>(k));
-    if (!s.has_free_dof(r, nodes)) {
-      ++st.dropped_rows;
-      continue;
-    }
-    s.rows.push_back(r);
-  }
-  std::sort(s.rows.begin(), s.rows.end(), row_less);
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < s.rows.size(); ++k) {
-    if (kept > 0 && same_row(s.rows[kept - 1], s.rows[k])) {
-      s.rows[kept - 1].allowed = std::min(s.rows[kept - 1].allowed, s.rows[k].allowed);
-      ++st.merged_rows;
-      continue;
-    }
-    s.rows[kept++] = s.rows[k];
-  }
-  s.rows.resize(kept);
+  s.build_rows(pairs, nodes);
   if (s.rows.empty()) return;
   if (s.local.size() != nodes.mass.size()) s.local.assign(nodes.mass.size(), -1);
   s.number_columns(nodes);
   s.assemble_a();
-  const std::size_t nr = s.rows.size();
-  s.rate0.resize(nr);
-  s.target.resize(nr);
-  s.active.assign(nr, 0);
-  double scale = 0;
-  for (std::size_t r = 0; r < nr; ++r) {
-    s.rate0[r] = s.rate(s.rows[r], nodes, dt12, false);
-    s.target[r] = -s.rows[r].allowed / dt2;
-    scale = std::max({scale, std::abs(s.rate0[r]), std::abs(s.target[r])});
-  }
-  const double tol = 1e-12 * scale + 1e-300;
-  bool any = false;
-  for (std::size_t r = 0; r < nr; ++r) {
-    s.active[r] = s.rate0[r] < s.target[r] - tol ? 1 : 0;
-    any = any || s.active[r];
-  }
+  double tol = 0;
+  const bool any = s.start_active_set(nodes, dt12, dt2, tol);
   st.seconds_assembly += seconds_since(t0);
-  ++st.cycles;
-  st.rows_last = static_cast<std::int64_t>(nr);
-  st.rows_max = std::max(st.rows_max, st.rows_last);
-  st.rows_total += st.rows_last;
-  st.nonzeros_last = static_cast<std::int64_t>(s.a.col_ptr.back()) - static_cast<std::int64_t>(nr);
-  st.nonzeros_max = std::max(st.nonzeros_max, st.nonzeros_last);
-  s.lambda.assign(nr, 0.0);
-  s.rhs.resize(nr);
+  s.count_rows();
   int passes = 0;
-  bool converged = !any;
-  while (any && passes < kMaxPasses) {
-    ++passes;
-    auto tf = Clock::now();
-    s.set_active_values();
-    s.factor.factorize(s.a);
-    st.seconds_factorization += seconds_since(tf);
-    const auto ts = Clock::now();
-    for (std::size_t r = 0; r < nr; ++r) s.rhs[r] = s.active[r] ? (s.target[r] - s.rate0[r]) / dt12 : 0.0;
-    s.factor.solve(s.rhs, s.lambda);
-    bool changed = false;
-    for (std::size_t r = 0; r < nr; ++r)
-      if (s.active[r] && s.lambda[r] < 0) {
-        s.active[r] = 0;
-        changed = true;
-      }
-    if (!changed) {
-      s.corrections();
-      for (std::size_t r = 0; r < nr; ++r)
-        if (!s.active[r] && s.rate(s.rows[r], nodes, dt12, true) < s.target[r] - tol) {
-          s.active[r] = 1;
-          changed = true;
-        }
-    }
-    st.seconds_solve += seconds_since(ts);
-    if (!changed) {
-      converged = true;
-      break;
-    }
-  }
+  const bool converged = s.run_active_set(nodes, dt12, tol, any, passes);
   const auto ts = Clock::now();
   if (!converged) ++st.unconverged;
-  for (std::size_t r = 0; r < nr; ++r) s.lambda[r] = s.active[r] ? std::max(0.0, s.lambda[r]) : 0.0;
-  s.corrections();
-  for (std::size_t c = 0; c < s.delta.size(); ++c) {
-    const auto n = static_cast<std::size_t>(s.local_nodes[static_cast<std::size_t>(s.col_node[c])]);
-    auto& acc = s.col_dof[c] == 0 ? nodes.ax : s.col_dof[c] == 1 ? nodes.ay : nodes.az;
-    acc[n] += s.delta[c];
-  }
-  for (std::size_t r = 0; r < nr; ++r) out[static_cast<std::size_t>(s.rows[r].pair)].lambda = s.lambda[r];
+  s.apply_multipliers(nodes, out);
   s.friction(laws, pairs, nodes, dt12, out);
   for (const auto n : s.local_nodes) s.local[static_cast<std::size_t>(n)] = -1;
-  st.active_set_passes += passes;
-  st.passes_max = std::max(st.passes_max, passes);
-  const auto& fc = s.factor.counters();
-  st.analyses = fc.analyses;
-  st.symbolic_reuses = fc.reuses;
-  st.factorizations = fc.factorizations;
-  st.regularisations = fc.regularisations;
-  st.beta_max = fc.beta_max;
+  s.count_passes(passes);
   st.seconds_solve += seconds_since(ts);
 }
 

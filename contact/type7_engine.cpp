@@ -142,6 +142,19 @@ Vec3 relative_velocity(const Velocity& v, std::int32_t s, const std::array<std::
   return vr;
 }
 
+// The candidates are sorted by node: node k = cand[c].node owns cand[c .. end). Calls visit(k, c, end) for
+// each node whose candidates start in [c, stop), in order.
+template <class Visit>
+void for_each_node(const std::vector<Candidate>& cand, std::size_t c, std::size_t stop, Visit&& visit) {
+  while (c < stop) {
+    const std::int32_t k = cand[c].node;
+    std::size_t end = c;
+    while (end < cand.size() && cand[end].node == k) ++end;
+    visit(static_cast<std::size_t>(k), c, end);
+    c = end;
+  }
+}
+
 double segment_area(const std::array<Vec3, 4>& x, bool triangle) {
   return triangle ? model::triangle_area(x[0], x[1], x[2]) : model::quad_area(x[0], x[1], x[2], x[3]);
 }
@@ -178,6 +191,246 @@ Vec3 rotated_into_plane(const Vec3& f_old, const Vec3& n) {
   const Vec3 in_plane = model::sub(f_old, model::scale(n, model::dot(f_old, n)));
   const double len_new = model::norm(in_plane);
   return len_new > 0 ? model::scale(in_plane, len_old / len_new) : in_plane;
+}
+
+// Which parts of a pair's response a /CTCLAW law replaces (contact-laws.md section 5). The interface's law
+// decides it for all of its pairs, so the pair loop is compiled once per variant and chosen once per
+// interface (interface_cycle): no per-pair branch on the law's kind remains.
+struct LawVariant {
+  bool law = false;       // a /CTCLAW law: forces on the tributary area A_s, the segment's first tangent
+  bool normal = false;    // its normal law replaces the interface's penalty
+  bool friction = false;  // its friction law (None included) replaces the interface's Ifric friction
+};
+constexpr LawVariant kPenaltyOnly{}, kLawAreas{true, false, false}, kLawNormal{true, true, false},
+    kLawFriction{true, false, true}, kLawBoth{true, true, true};
+
+// What the controls and the interface fix for all of its pairs in this cycle.
+struct CycleFlags {
+  double dt1 = 0, scale = 0, alpha = 1;  // the step, the step scale factor, the friction filter factor
+  double t_min = 0;                      // Tmin of /DT/INTER
+  bool lagdt = false;                    // LAGDT pairs switch to rows (in.lagdt under lagrange_on())
+  bool mass_scaled = false;              // /DT/INTER/CST on a plain TYPE7: Tmin is kept by added mass
+  bool deletes = false;                  // /DT/INTER/DEL: a pair below Tmin leaves the interface
+};
+
+// The closest pair of a secondary node: its segment (stage A), gap and penetration, contact normal.
+struct PairGeometry {
+  std::size_t ks = 0, sb = 0;  // secondary index, segment index
+  std::int32_t node = 0;
+  std::array<double, 4> h{};
+  std::array<Vec3, 4> x{};  // the segment's corners
+  double d = 0, g = 0, p = 0;
+  Vec3 n{};
+};
+
+// What the pair's response starts from: penalty stiffness, mass, relative velocity, and the pair's law.
+struct PairContact {
+  double K = 0, ms = 0, vn = 0;
+  Vec3 vr{};
+  double area_s = 0;  // A_s of a /CTCLAW law, 0 without one
+  PairLaw law;
+  Pressure pr;
+  double onset = 0;
+  Vec3 t1{};
+  double row_area = 0, row_gap = 0;  // what the pair's row (LAGDT) takes
+  bool held = false;                 // its row pushed in the last cycle
+};
+
+// What a pair does in this cycle. classify_contact decides before the response (Open, Approaching,
+// Deactivate, or Penalty for a pair in contact); a pair in contact may then still Leave (classify_step) or
+// switch to a row, Lagrange (lagrange_class), once its step is known.
+enum class PairClass {
+  Open,         // not in contact, not about to be: nothing acts, its friction history ends
+  Approaching,  // not in contact yet, but closing within two steps, resting on the gap's edge or held
+  Penalty,      // in contact: the penalty (or its /CTCLAW law) acts
+  Lagrange,     // LAGDT: a row of the multiplier solve instead (section 6)
+  Leave,        // /DT/INTER/DEL: its step fell below Tmin
+  Deactivate,   // the penalty cannot hold it any more
+};
+struct ContactClass {
+  PairClass cls = PairClass::Penalty;
+  bool approaching = false;  // closing within two steps at its approach speed
+  bool on_edge = false;      // a LAGDT node resting on the gap's edge
+};
+
+struct NormalResponse {
+  double fn = 0, kt = 0, cdamp = 0;  // normal force, tangent stiffness, damping coefficient
+  Vec3 f_el{}, f_dp{};               // elastic and damping forces on the secondary node
+};
+struct FrictionResponse {
+  Vec3 f{};      // on the secondary node
+  double c = 0;  // the viscous slope, a dashpot for the step
+};
+struct PairStep {
+  double keff = 0;                          // the stiffness the pair votes with
+  double dt_spring = kInf, dt_pair = kInf;  // the spring's step; the kinematic and dashpot limits
+  double dt_vote = kInf;                    // the pair's own vote
+};
+
+// The row of the pair, if it switches.
+SwitchedPair pair_row(const InterfaceState& st, const PairGeometry& pg, const PairContact& pc) {
+  return SwitchedPair{pg.node,    st.segments[pg.sb], pg.h,     pg.n, pg.d,
+                      pc.row_gap, pc.row_area,        st.index, pc.t1};
+}
+
+// The pair's class before its response: in contact when its law (or the penalty) pushes; otherwise open,
+// or approaching when it is about to close, rests on the gap's edge or is held by its row.
+template <LawVariant V>
+[[gnu::always_inline]] inline ContactClass classify_contact(const PairGeometry& pg, const PairContact& pc,
+                                                            const CycleFlags& f) {
+  const double p = pg.p, g = pg.g, vn = pc.vn, ms = pc.ms, onset = pc.onset;
+  if (V.normal ? !(pc.pr.p > 0) : !(p > 0)) {
+    // A pair about to close (within two steps at its approach speed) already votes with its stiffness at
+    // p = 0: the step must be small before the force appears, because the velocity update of the first
+    // contact cycle uses (dt1 + dt2)/2, half of it from the step before.
+    // Not under /DT/INTER/DEL when the pair's step at p = 0 is already below Tmin: it will leave the
+    // interface as soon as it closes (k_eff >= K), so it must not pull the step below Tmin before.
+    const double k_close = V.normal ? law_reach_stiffness(pc.law, pc.area_s, onset, -vn, f.dt1) : pc.K;
+    const bool leaves =
+        f.deletes && ms > 0 && k_close > 0 && f.scale * std::sqrt(2.0 * ms / k_close) < f.t_min;
+    // A LAGDT node resting on the gap's edge (a row of the last cycle stopped it there, p = 0 to
+    // round-off) keeps its row: without it the forces behind it would push it one step into the gap
+    // before it switches again. The row costs nothing when it does not bind: the active set releases it.
+    // (From the law's onset for a law that acts beyond the gap.)
+    const double edge = std::isfinite(onset) ? onset : 0.0;
+    const bool on_edge = f.lagdt && edge - p <= kEdgeBand * g;
+    const bool approaching = vn < 0 && onset - p < -2.0 * vn * f.dt1;
+    const bool closing = (approaching || on_edge || pc.held) && !leaves;
+    return {closing ? PairClass::Approaching : PairClass::Open, approaching, on_edge};
+  }
+  // A node whose remaining gap is below 1e-6 of the gap cannot be held by the penalty.
+  if ((g - p) / g < 1e-6) return {PairClass::Deactivate};
+  return {PairClass::Penalty};
+}
+
+// Normal response: force, tangent stiffness and the VISs damping: the law's P A_s and Kc A_s with the
+// plain critical-damping fraction (the hyperbola's 1/sqrt(r) and quadratic terms belong to its pole), or
+// the interface's penalty.
+template <LawVariant V>
+[[gnu::always_inline]] inline NormalResponse normal_response(const model::Interface& in,
+                                                             const PairGeometry& pg, const PairContact& pc) {
+  NormalResponse r;
+  r.fn = V.normal ? pc.pr.p * pc.area_s : penalty_force(pc.K, pg.g, pg.p);
+  r.kt = V.normal ? pc.pr.kc * pc.area_s : penalty_tangent_stiffness(pc.K, pg.g, pg.p);
+  r.cdamp = V.normal ? in.vis_s * std::sqrt(2.0 * r.kt * pc.ms)
+                     : damping_coefficient(in.vis_s, pc.K, pg.g, pg.p, pc.ms, pc.vn);
+  r.f_el = model::scale(pg.n, r.fn);
+  // A law's damping never pulls: on the exponential tail P is tiny while c = VISs sqrt(2 Kc A_s m) is
+  // not, and a separating node would be held back by a force its law does not have.
+  const double f_damp = V.normal ? std::max(-r.cdamp * pc.vn, -r.fn) : -r.cdamp * pc.vn;
+  r.f_dp = model::scale(pg.n, f_damp);
+  return r;
+}
+
+// Friction by the pair's /CTCLAW law, at its pressure on A_s.
+template <LawVariant V>
+[[gnu::always_inline]] inline FrictionResponse law_friction(const InterfaceState& st, const PairGeometry& pg,
+                                                            const PairContact& pc, const NormalResponse& nr,
+                                                            const Vec3& vt, double dt1) {
+  FrictionResponse r;
+  const auto& law = pc.law;
+  if (law.friction != model::FrictionLaw::None) {
+    const double pressure = V.normal ? pc.pr.p : (pc.area_s > 0 ? nr.fn / pc.area_s : 0.0);
+    const LawFrictionInput li{vt,       pg.n,      pc.t1, rotated_into_plane(st.f_t[pg.ks], pg.n),
+                              pressure, pc.area_s, dt1};
+    r.f = law_friction_force(law, li);
+    r.c = friction_slope(law, pressure) * pc.area_s;
+  }
+  return r;
+}
+
+// Friction by the interface's Ifric law and Iform.
+[[gnu::always_inline]] inline FrictionResponse interface_friction(const InterfaceState& st,
+                                                                  const PairGeometry& pg,
+                                                                  const PairContact& pc,
+                                                                  const NormalResponse& nr, const Vec3& vt,
+                                                                  const CycleFlags& f) {
+  FrictionResponse r;
+  const auto& in = *st.in;
+  const double area = st.segment_area0[pg.sb];
+  const double speed = model::norm(vt);
+  const double mu = friction_coefficient(in.ifric, in.fric, in.c, area > 0 ? nr.fn / area : 0.0, speed);
+  const Vec3 old = rotated_into_plane(st.f_t[pg.ks], pg.n);
+  r.c = in.iform == 2 ? 0.0 : in.vis_f * std::sqrt(2.0 * pc.K * pc.ms);
+  FrictionInput fi;
+  fi.iform = in.iform == 2 ? 2 : 1;
+  fi.mu = mu;
+  fi.normal_force = std::abs(nr.fn - nr.cdamp * pc.vn);
+  fi.K = pc.K;
+  fi.mass = pc.ms;
+  fi.vis_f = in.vis_f;
+  fi.dt = f.dt1;
+  fi.alpha = f.alpha;
+  fi.v_t = vt;
+  fi.f_old = old;
+  const auto ft = tangential_force(fi);
+  r.f = {ft[0], ft[1], ft[2]};
+  return r;
+}
+
+// Friction, and its viscous slope (a dashpot for the step); the node's friction history takes the force.
+template <LawVariant V>
+[[gnu::always_inline]] inline FrictionResponse friction(InterfaceState& st, const PairGeometry& pg,
+                                                        const PairContact& pc, const NormalResponse& nr,
+                                                        const CycleFlags& f) {
+  const auto& in = *st.in;
+  FrictionResponse r;
+  Vec3 vt = model::sub(pc.vr, model::scale(pg.n, pc.vn));
+  if (V.friction)
+    r = law_friction<V>(st, pg, pc, nr, vt, f.dt1);
+  else if (in.fric > 0 || in.ifric > 0)
+    r = interface_friction(st, pg, pc, nr, vt, f);
+  st.f_t[pg.ks] = r.f;
+  return r;
+}
+
+// Time step of the pair (4.4), before anything is applied: under /DT/INTER/DEL a pair below Tmin leaves
+// the interface without acting in this cycle (no force, no IBC release, no stiffness).
+template <LawVariant V>
+[[gnu::always_inline]] inline PairStep pair_step(const PairGeometry& pg, const PairContact& pc,
+                                                 const NormalResponse& nr, const FrictionResponse& fr,
+                                                 const CycleFlags& f) {
+  const double g = pg.g, p = pg.p, ms = pc.ms, K = pc.K, vn = pc.vn, kt = nr.kt, cdamp = nr.cdamp;
+  const double scale = f.scale;
+  const double xi = ms > 0 && kt > 0 ? cdamp / (2.0 * std::sqrt(kt * ms)) : 0.0;
+  const double shrink = std::sqrt(1.0 + xi * xi) - xi;
+  // Voted with the stiffness the pair can reach within the step (reach_factor): tau0 = the step at p = 0.
+  // Not under /DT/INTER/CST on a plain TYPE7: there the step is held at Tmin by added mass, computed from
+  // k_eff as type7-lagdt.md section 6 writes it.
+  // A /CTCLAW law votes with law_reach_stiffness, and exact Coulomb's sticking spring kappa A_s when
+  // stiffer (a spring across the normal one: their directions are orthogonal, so the larger one sets the
+  // step).
+  const double reach = ms > 0 && !f.mass_scaled ? reach_factor(scale * std::sqrt(2.0 * ms / K), g, -vn) : 1.0;
+  double k_vote = V.normal ? law_reach_stiffness(pc.law, pc.area_s, p, -vn, f.dt1) : kt * reach;
+  if (V.law && pc.law.friction == model::FrictionLaw::Coulomb)
+    k_vote = std::max(k_vote, pc.law.kappa * pc.area_s);
+  PairStep s;
+  s.keff = k_vote / (shrink * shrink);
+  s.dt_spring = ms > 0 ? scale * std::sqrt(2.0 * ms / s.keff) : kInf;
+  double dt_pair = 0.5 * (g - p) / std::max(-vn, kTiny);  // kinematic
+  // Dashpots computed with v^{n-1/2} overshoot when c dt / m > 1 (the velocity they damp changes sign
+  // every cycle): the normal damping c and the viscous friction (C = VISF sqrt(2 K m) for Iform 1, the
+  // regularised /CTCLAW laws' slope at zero slip) keep dt <= m / c.
+  const double c_total = cdamp + fr.c;
+  if (c_total > 0) {
+    double dt_dash = scale * ms / c_total;
+    // Under /DT/INTER/CST (plain TYPE7) the step must stay at Tmin: this limit keeps a margin of more
+    // than two to the dashpot's stability bound 2 m / c, so it is not allowed below Tmin there.
+    if (f.mass_scaled) dt_dash = std::max(dt_dash, f.t_min);
+    dt_pair = std::min(dt_pair, dt_dash);
+  }
+  s.dt_pair = dt_pair;
+  // The pair's own vote: kinematic and dashpot limits, and the spring's step (never below the nodal step
+  // of a free node, so redundant there) except under /DT/INTER/CST on a plain TYPE7, where the nodal step
+  // adds mass to stay at Tmin and the pair's step, taken with the mass before that, must not undercut it.
+  if (!f.mass_scaled) dt_pair = std::min(dt_pair, s.dt_spring);
+  s.dt_vote = dt_pair;
+  return s;
+}
+
+// A pair in contact once its step is known: under /DT/INTER/DEL it leaves when the step is below Tmin.
+[[gnu::always_inline]] inline PairClass classify_step(const PairStep& s, const CycleFlags& f) {
+  return f.deletes && std::min(s.dt_spring, s.dt_pair) < f.t_min ? PairClass::Leave : PairClass::Penalty;
 }
 
 }  // namespace
@@ -606,19 +859,13 @@ struct Type7Contact::Impl {
       while (c > 0 && c < n &&
              cand[static_cast<std::size_t>(c)].node == cand[static_cast<std::size_t>(c - 1)].node)
         ++c;  // that node's group belongs to the chunk where it starts
-      while (c < stop) {
-        const std::int32_t k = cand[static_cast<std::size_t>(c)].node;
-        std::int64_t end = c;
-        while (end < n && cand[static_cast<std::size_t>(end)].node == k) ++end;
-        const auto ks = static_cast<std::size_t>(k);
-        if (!st.node_off[ks]) {
-          const Vec3 xs = node_x(nodes, secondary[ks]);
-          const Closest cl = closest_segment(st, cand, static_cast<std::size_t>(c),
-                                             static_cast<std::size_t>(end), xs, nodes);
-          out[c] = NodeClosest{cl.segment, cl.d, cl.h};
-        }
-        c = end;
-      }
+      for_each_node(cand, static_cast<std::size_t>(c), static_cast<std::size_t>(stop),
+                    [&](std::size_t ks, std::size_t first, std::size_t end) {
+                      if (st.node_off[ks]) return;
+                      const Vec3 xs = node_x(nodes, secondary[ks]);
+                      const Closest cl = closest_segment(st, cand, first, end, xs, nodes);
+                      out[first] = NodeClosest{cl.segment, cl.d, cl.h};
+                    });
     };
     run_chunks(&parallel, (n + kCandidateChunk - 1) / kCandidateChunk, body);
   }
@@ -632,20 +879,14 @@ struct Type7Contact::Impl {
     const auto& cand = st.search->candidates();
     std::int64_t count = 0;
     double worst = 0;
-    std::size_t c = 0;
-    while (c < cand.size()) {
-      const std::int32_t k = cand[c].node;
-      std::size_t end = c;
-      while (end < cand.size() && cand[end].node == k) ++end;
-      const auto ks = static_cast<std::size_t>(k);
+    for_each_node(cand, 0, cand.size(), [&](std::size_t ks, std::size_t c, std::size_t end) {
       const std::int32_t node = in.secondary_nodes[ks];
       const Vec3 xs = node_x(nodes, node);
       const Closest cl = st.node_off[ks] ? Closest{} : closest_segment(st, cand, c, end, xs, nodes);
-      c = end;
-      if (cl.segment < 0) continue;
+      if (cl.segment < 0) return;
       const double g = pair_gap(in, in.gap_node[ks], in.gap_segment[static_cast<std::size_t>(cl.segment)]);
       const double p0 = g - cl.d;
-      if (!(p0 > 0)) continue;
+      if (!(p0 > 0)) return;
       ++count;
       worst = std::max(worst, p0);
       switch (in.inacti) {
@@ -667,7 +908,7 @@ struct Type7Contact::Impl {
         case 6: st.reduction[ks] = p0 + 0.05 * (g - p0); break;
         default: break;
       }
-    }
+    });
     for (std::size_t g = 0; g < st.segment_off.size(); ++g)
       if (st.segment_off[g]) st.search->remove_segment(static_cast<std::int32_t>(g));
     for (std::size_t k = 0; k < st.node_off.size(); ++k)
@@ -678,6 +919,174 @@ struct Type7Contact::Impl {
                          std::to_string(count) + " secondary node(s) closer than the gap, largest " +
                          "penetration " + std::to_string(worst) + ": Inacti " + std::to_string(in.inacti) +
                          (in.inacti == 0 ? " (no action: the penalty pushes them out)" : " applied"));
+  }
+
+  // Closest pair: the gap of the pair with stage A's segment (Inacti 5, 6 reduced), its penetration and its
+  // normal. False when there is no pair: no segment left, or no gap left.
+  [[gnu::always_inline]] static bool closest_pair(InterfaceState& st, std::size_t ks, const NodeClosest& cl,
+                                                  const ContactNodes& nodes, PairGeometry& pg) {
+    const auto& in = *st.in;
+    const std::int32_t node = in.secondary_nodes[ks];
+    const Vec3 xs = node_x(nodes, node);
+    const double best_d = cl.d;
+    const std::int32_t best = cl.segment;
+    const std::array<double, 4>& best_h = cl.h;
+    if (best < 0) return false;  // no segment left (removed by Idel)
+    const auto sb = static_cast<std::size_t>(best);
+    std::array<Vec3, 4> best_x{};
+    for (std::size_t j = 0; j < 4; ++j) best_x[j] = node_x(nodes, st.segments[sb][j]);
+    const double g_full = pair_gap(in, in.gap_node[ks], in.gap_segment[sb]);
+    // Inacti 5, 6: the reduced initial gap returns to the full gap as the pair opens.
+    // Inacti 6 keeps 5 % of the open distance as margin: r = g - 0.95 d (= P0 + 0.05 (g - P0) at t = 0).
+    if (st.reduction[ks] > 0)
+      st.reduction[ks] =
+          std::min(st.reduction[ks], std::max(0.0, g_full - (in.inacti == 6 ? 0.95 : 1.0) * best_d));
+    const double g = g_full - st.reduction[ks];
+    const double p = g - best_d;
+    if (g <= 0) return false;
+    // Normal from the contact point to the node (two-sided), or the segment normal.
+    Vec3 cpt{};
+    for (std::size_t j = 0; j < 4; ++j)
+      for (std::size_t d = 0; d < 3; ++d) cpt[d] += best_h[j] * best_x[j][d];
+    Vec3 n = model::sub(xs, cpt);
+    if (best_d > 1e-12 * g) {
+      n = model::scale(n, 1.0 / best_d);
+    } else {
+      n = model::quad_normal(best_x[0], best_x[1], best_x[2], best_x[3]);
+      const double ln = model::norm(n);
+      n = ln > 0 ? model::scale(n, 1.0 / ln) : Vec3{0, 0, 1};
+    }
+    pg = PairGeometry{ks, sb, node, best_h, best_x, best_d, g, p, n};
+    return true;
+  }
+
+  // The pair's stiffness, mass and relative velocity, and its /CTCLAW law: a law (contact-laws.md section 5)
+  // replaces the normal law, the friction law or both, with its forces on the tributary area A_s of the node
+  // (the hit segment's area for a node without one).
+  template <LawVariant V>
+  [[gnu::always_inline]] PairContact pair_contact(const InterfaceState& st, const PairGeometry& pg,
+                                                  const CycleFlags& f, const ContactNodes& nodes) const {
+    const auto& in = *st.in;
+    const auto ks = pg.ks, sb = pg.sb;
+    const double p = pg.p, g = pg.g;
+    PairContact pc;
+    pc.K = pair_stiffness(in, in.stiff_segment[sb], in.stiff_node[ks]);
+    pc.ms = nodes.mass[static_cast<std::size_t>(pg.node)];
+    pc.vr = relative_velocity(velocity(nodes), pg.node, st.segments[sb], pg.h);
+    pc.vn = model::dot(pc.vr, pg.n);
+    pc.area_s = V.law ? law_area(st, ks, sb) : 0.0;
+    pc.law = V.law ? resolve_pair_law(in.law, model, pc.K, pc.area_s) : PairLaw{};
+    pc.pr = V.normal ? normal_pressure(pc.law, p) : Pressure{};
+    pc.onset = V.normal ? contact_onset(pc.law) : 0.0;  // the exponential law acts at open gaps
+    pc.t1 = V.law ? first_tangent(pg.x, pg.n) : Vec3{};
+    pc.row_area = V.law ? pc.area_s : st.segment_area0[sb];
+    // A law pair's row lets it close down to where its law starts (the gap, or beyond it for the
+    // exponential law), no further: one that switches where its law already pushes is held where it is,
+    // rather than losing the law's force and falling onto the gap.
+    pc.row_gap = V.normal && std::isfinite(pc.onset) ? std::min(g - pc.onset, pg.d) : g;
+    // A row that pushed in the last cycle stopped its node: the node keeps it while it needs it (the active
+    // set releases a row that would pull). Judged again by its step it could fall back to the penalty path
+    // for a cycle once stopped (no approach speed left to vote with) and be driven past where it stopped.
+    pc.held = f.lagdt && st.row_pushed[ks] != 0;
+    return pc;
+  }
+
+  // An approaching pair. LAGDT: a pair whose step at p = 0 is already below Tmin does not drag the step down
+  // before it closes: it becomes a row that lets it close down to the gap within the step, no further.
+  // It votes with the stiffness it can reach within the step (reach_factor, from the gap's edge where
+  // the hyperbola is extended to p < 0), never less than K.
+  template <LawVariant V>
+  [[gnu::always_inline]] void approach(InterfaceState& st, const PairGeometry& pg, const PairContact& pc,
+                                       const ContactClass& cc, const CycleFlags& f,
+                                       const ContactNodes& nodes) {
+    const double p = pg.p, g = pg.g, K = pc.K, ms = pc.ms, vn = pc.vn;
+    const double tau0 = ms > 0 && !f.mass_scaled ? f.scale * std::sqrt(2.0 * ms / K) : 0.0;
+    const double ratio = g / (g - p);
+    // A law node resting on the edge (not approaching) is judged by its law just inside contact.
+    const double k_reach =
+        V.normal
+            ? law_reach_stiffness(pc.law, pc.area_s, cc.on_edge ? std::max(p, kEdgeBand * g) : p, -vn, f.dt1)
+            : std::max(K, K * ratio * ratio * reach_factor(tau0, g, -vn));
+    const SwitchedPair row = pair_row(st, pg, pc);
+    const auto& seg = st.segments[pg.sb];
+    if (f.lagdt && (pc.held || pair_spring_step(pg.node, seg, pg.h, k_reach, nodes) < f.t_min) &&
+        may_switch(st, row, nodes))
+      switch_pair(st, row, pg.ks, 0.0);
+    else if (cc.approaching && k_reach > 0)
+      add_pair_stiffness(pg.node, seg, pg.h, k_reach, nodes, st);
+  }
+
+  // LAGDT: below Tmin the pair leaves the penalty path for this cycle and becomes a row (section 6), unless
+  // a kinematic condition holds one of its nodes (may_switch; the pair then stays a penalty pair that cannot
+  // switch later in the cycle either). Judged after release_ibc: a node whose IBC directions were just
+  // released counts as free in its spring's step, as it is when the force acts.
+  [[gnu::always_inline]] PairClass lagrange_class(PendingPair& q, const PairGeometry& pg,
+                                                  const PairContact& pc, const CycleFlags& f,
+                                                  const ContactNodes& nodes) {
+    if (!f.lagdt) return PairClass::Penalty;
+    auto& st = *q.st;
+    const bool wants = pc.held || std::min(q.dt_vote, pair_spring_step(pg.node, st.segments[pg.sb], pg.h,
+                                                                       q.keff, nodes)) < f.t_min;
+    q.switchable = !wants || may_switch(st, q.row, nodes);
+    return wants && q.switchable ? PairClass::Lagrange : PairClass::Penalty;
+  }
+
+  // One secondary node's pair in the cycle: closest pair, its class, normal response, friction, pair step,
+  // then what it becomes (a row, a penalty pair in `pending`, or nothing).
+  template <LawVariant V>
+  [[gnu::always_inline]] void pair_cycle(InterfaceState& st, std::size_t ks, const NodeClosest& cl,
+                                         const CycleFlags& f, const ContactNodes& nodes) {
+    PairGeometry pg;
+    if (!closest_pair(st, ks, cl, nodes, pg)) {  // the friction history ends with the contact
+      st.f_t[ks] = Vec3{};
+      return;
+    }
+    const PairContact pc = pair_contact<V>(st, pg, f, nodes);
+    const ContactClass cc = classify_contact<V>(pg, pc, f);
+    switch (cc.cls) {
+      case PairClass::Open: st.f_t[ks] = Vec3{}; return;
+      case PairClass::Approaching:
+        st.f_t[ks] = Vec3{};
+        approach<V>(st, pg, pc, cc, f, nodes);
+        return;
+      case PairClass::Deactivate:
+        deactivate(st, ks, "reached the main surface (remaining gap below 1e-6 of the gap): deactivated");
+        return;
+      default: break;
+    }
+    const NormalResponse nr = normal_response<V>(*st.in, pg, pc);
+    const FrictionResponse fr = friction<V>(st, pg, pc, nr, f);
+    const PairStep ps = pair_step<V>(pg, pc, nr, fr, f);
+    if (classify_step(ps, f) == PairClass::Leave) {
+      st.f_t[ks] = Vec3{};
+      deactivate(st, ks, "left the interface: its contact time step fell below the /DT/INTER/DEL minimum");
+      return;
+    }
+    release_ibc(st, ks, pg.node, nodes);
+    PendingPair q;
+    q.st = &st;
+    q.ks = ks;
+    q.row = pair_row(st, pg, pc);
+    q.f_el = nr.f_el;
+    q.f_dp = nr.f_dp;
+    q.f_fr = fr.f;
+    q.vr = pc.vr;
+    q.keff = ps.keff;
+    q.p = pg.p;
+    q.dt_vote = ps.dt_vote;
+    if (lagrange_class(q, pg, pc, f, nodes) == PairClass::Lagrange)
+      switch_pair(st, q.row, ks, pg.p);
+    else
+      pending.push_back(q);
+  }
+
+  // Stage B of interface_cycle, for one law variant: the pairs in node order.
+  template <LawVariant V>
+  void pair_loop(InterfaceState& st, const std::vector<Candidate>& cand, const CycleFlags& f,
+                 const ContactNodes& nodes) {
+    for_each_node(cand, 0, cand.size(), [&](std::size_t ks, std::size_t c, std::size_t) {
+      if (!st.node_off[ks]) pair_cycle<V>(st, ks, closest[c], f, nodes);
+    });
   }
 
   // One interface's pairs of the cycle: switched pairs into `switched`, penalty pairs into `pending` (applied
@@ -704,235 +1113,27 @@ struct Type7Contact::Impl {
     const auto& cand = st.search->candidates();
     ++st.result.active_cycles;
     st.result.candidate_pair_cycles += static_cast<std::int64_t>(cand.size());
-    const double scale = controls.dt_scale;
-    const double alpha = friction_filter_alpha(in.ifric >= 0 ? in.ifiltr : 0, in.xfreq, dt1);
-    const bool mass_scaled_interface =
-        controls.action == ContactControls::Action::AddMass && controls.t_min > 0 && !in.lagdt;
-    // Stage A (parallel, pure): every node's closest candidate segment. Stage B (this loop, in node order
+    CycleFlags f;
+    f.dt1 = dt1;
+    f.scale = controls.dt_scale;
+    f.alpha = friction_filter_alpha(in.ifric >= 0 ? in.ifiltr : 0, in.xfreq, dt1);
+    f.t_min = controls.t_min;
+    f.lagdt = in.lagdt && lagrange_on();
+    f.mass_scaled = controls.action == ContactControls::Action::AddMass && controls.t_min > 0 && !in.lagdt;
+    f.deletes = controls.action == ContactControls::Action::Delete && controls.t_min > 0;
+    // Stage A (parallel, pure): every node's closest candidate segment. Stage B (pair_loop, in node order
     // as before): everything that writes shared state (forces, stiffness sums, switches, IBC releases,
     // deactivations, messages), so its order and the sums it makes are those of one thread.
     closest_stage(st, cand, nodes);
-    std::size_t c = 0;
-    while (c < cand.size()) {
-      const std::int32_t k = cand[c].node;
-      std::size_t end = c;
-      while (end < cand.size() && cand[end].node == k) ++end;
-      const auto ks = static_cast<std::size_t>(k);
-      const std::int32_t node = in.secondary_nodes[ks];
-      if (st.node_off[ks]) {
-        c = end;
-        continue;
-      }
-      // The closest candidate segment (stage A).
-      const Vec3 xs = node_x(nodes, node);
-      const NodeClosest& cl = closest[c];
-      const double best_d = cl.d;
-      const std::int32_t best = cl.segment;
-      const std::array<double, 4>& best_h = cl.h;
-      c = end;
-      if (best < 0) {  // no segment left (removed by Idel): the friction history ends with the contact
-        st.f_t[ks] = Vec3{};
-        continue;
-      }
-      const auto sb = static_cast<std::size_t>(best);
-      std::array<Vec3, 4> best_x{};
-      for (std::size_t j = 0; j < 4; ++j) best_x[j] = node_x(nodes, st.segments[sb][j]);
-      const double g_full = pair_gap(in, in.gap_node[ks], in.gap_segment[sb]);
-      // Inacti 5, 6: the reduced initial gap returns to the full gap as the pair opens.
-      // Inacti 6 keeps 5 % of the open distance as margin: r = g - 0.95 d (= P0 + 0.05 (g - P0) at t = 0).
-      if (st.reduction[ks] > 0)
-        st.reduction[ks] =
-            std::min(st.reduction[ks], std::max(0.0, g_full - (in.inacti == 6 ? 0.95 : 1.0) * best_d));
-      const double g = g_full - st.reduction[ks];
-      const double p = g - best_d;
-      if (g <= 0) {
-        st.f_t[ks] = Vec3{};
-        continue;
-      }
-      // Normal from the contact point to the node (two-sided), or the segment normal.
-      Vec3 cpt{};
-      for (std::size_t j = 0; j < 4; ++j)
-        for (std::size_t d = 0; d < 3; ++d) cpt[d] += best_h[j] * best_x[j][d];
-      Vec3 n = model::sub(xs, cpt);
-      if (best_d > 1e-12 * g) {
-        n = model::scale(n, 1.0 / best_d);
-      } else {
-        n = model::quad_normal(best_x[0], best_x[1], best_x[2], best_x[3]);
-        const double ln = model::norm(n);
-        n = ln > 0 ? model::scale(n, 1.0 / ln) : Vec3{0, 0, 1};
-      }
-      const double K = pair_stiffness(in, in.stiff_segment[sb], in.stiff_node[ks]);
-      const double ms = nodes.mass[static_cast<std::size_t>(node)];
-      const Vec3 vr = relative_velocity(velocity(nodes), node, st.segments[sb], best_h);
-      const double vn = model::dot(vr, n);
-      // A /CTCLAW law (contact-laws.md section 5) replaces the normal law, the friction law or both, with
-      // its forces on the tributary area A_s of the node (the hit segment's area for a node without one).
-      const bool has_law = in.contact_law_id != 0;
-      const double area_s = has_law ? law_area(st, ks, sb) : 0.0;
-      const PairLaw law = has_law ? resolve_pair_law(in.law, model, K, area_s) : PairLaw{};
-      const bool law_normal = has_law && law.normal != model::NormalLaw::Interface;
-      const Pressure pr = law_normal ? normal_pressure(law, p) : Pressure{};
-      const double onset = law_normal ? contact_onset(law) : 0.0;  // the exponential law acts at open gaps
-      const Vec3 t1 = has_law ? first_tangent(best_x, n) : Vec3{};
-      const double row_area = has_law ? area_s : st.segment_area0[sb];
-      // A law pair's row lets it close down to where its law starts (the gap, or beyond it for the
-      // exponential law), no further: one that switches where its law already pushes is held where it is,
-      // rather than losing the law's force and falling onto the gap.
-      const double row_gap = law_normal && std::isfinite(onset) ? std::min(g - onset, best_d) : g;
-      // A row that pushed in the last cycle stopped its node: the node keeps it while it needs it (the active
-      // set releases a row that would pull). Judged again by its step it could fall back to the penalty path
-      // for a cycle once stopped (no approach speed left to vote with) and be driven past where it stopped.
-      const bool held = in.lagdt && lagrange_on() && st.row_pushed[ks] != 0;
-      if (law_normal ? !(pr.p > 0) : !(p > 0)) {
-        st.f_t[ks] = Vec3{};
-        // A pair about to close (within two steps at its approach speed) already votes with its stiffness at
-        // p = 0: the step must be small before the force appears, because the velocity update of the first
-        // contact cycle uses (dt1 + dt2)/2, half of it from the step before.
-        // Not under /DT/INTER/DEL when the pair's step at p = 0 is already below Tmin: it will leave the
-        // interface as soon as it closes (k_eff >= K), so it must not pull the step below Tmin before.
-        const double k_close = law_normal ? law_reach_stiffness(law, area_s, onset, -vn, dt1) : K;
-        const bool leaves = controls.action == ContactControls::Action::Delete && controls.t_min > 0 &&
-                            ms > 0 && k_close > 0 && scale * std::sqrt(2.0 * ms / k_close) < controls.t_min;
-        // A LAGDT node resting on the gap's edge (a row of the last cycle stopped it there, p = 0 to
-        // round-off) keeps its row: without it the forces behind it would push it one step into the gap
-        // before it switches again. The row costs nothing when it does not bind: the active set releases it.
-        // (From the law's onset for a law that acts beyond the gap.)
-        const double edge = std::isfinite(onset) ? onset : 0.0;
-        const bool on_edge = in.lagdt && lagrange_on() && edge - p <= kEdgeBand * g;
-        const bool approaching = vn < 0 && onset - p < -2.0 * vn * dt1;
-        if ((approaching || on_edge || held) && !leaves) {
-          // LAGDT: a pair whose step at p = 0 is already below Tmin does not drag the step down before it
-          // closes: it becomes a row that lets it close down to the gap within the step, no further.
-          // It votes with the stiffness it can reach within the step (reach_factor, from the gap's edge where
-          // the hyperbola is extended to p < 0), never less than K.
-          const double tau0 = ms > 0 && !mass_scaled_interface ? scale * std::sqrt(2.0 * ms / K) : 0.0;
-          const double ratio = g / (g - p);
-          // A law node resting on the edge (not approaching) is judged by its law just inside contact.
-          const double k_reach =
-              law_normal
-                  ? law_reach_stiffness(law, area_s, on_edge ? std::max(p, kEdgeBand * g) : p, -vn, dt1)
-                  : std::max(K, K * ratio * ratio * reach_factor(tau0, g, -vn));
-          const SwitchedPair row{node, st.segments[sb], best_h, n, best_d, row_gap, row_area, st.index, t1};
-          if (lagrange_on() && in.lagdt &&
-              (held || pair_spring_step(node, st.segments[sb], best_h, k_reach, nodes) < controls.t_min) &&
-              may_switch(st, row, nodes))
-            switch_pair(st, row, ks, 0.0);
-          else if (approaching && k_reach > 0)
-            add_pair_stiffness(node, st.segments[sb], best_h, k_reach, nodes, st);
-        }
-        continue;
-      }
-      if ((g - p) / g < 1e-6) {
-        deactivate(st, ks, "reached the main surface (remaining gap below 1e-6 of the gap): deactivated");
-        continue;
-      }
-      // Normal force, its tangent stiffness and the VISs damping: the law's P A_s and Kc A_s with the
-      // plain critical-damping fraction (the hyperbola's 1/sqrt(r) and quadratic terms belong to its pole),
-      // or the interface's penalty.
-      const double fn = law_normal ? pr.p * area_s : penalty_force(K, g, p);
-      const double kt = law_normal ? pr.kc * area_s : penalty_tangent_stiffness(K, g, p);
-      const double cdamp =
-          law_normal ? in.vis_s * std::sqrt(2.0 * kt * ms) : damping_coefficient(in.vis_s, K, g, p, ms, vn);
-      const Vec3 f_el = model::scale(n, fn);
-      // A law's damping never pulls: on the exponential tail P is tiny while c = VISs sqrt(2 Kc A_s m) is
-      // not, and a separating node would be held back by a force its law does not have.
-      const double f_damp = law_normal ? std::max(-cdamp * vn, -fn) : -cdamp * vn;
-      const Vec3 f_dp = model::scale(n, f_damp);
-      // Friction, and its viscous slope (a dashpot for the step).
-      Vec3 f_fr{};
-      double c_friction = 0;
-      const double area = st.segment_area0[sb];
-      Vec3 vt = model::sub(vr, model::scale(n, vn));
-      if (has_law && law.friction != model::FrictionLaw::Interface) {
-        if (law.friction != model::FrictionLaw::None) {
-          const double pressure = law_normal ? pr.p : (area_s > 0 ? fn / area_s : 0.0);
-          const LawFrictionInput li{vt, n, t1, rotated_into_plane(st.f_t[ks], n), pressure, area_s, dt1};
-          f_fr = law_friction_force(law, li);
-          c_friction = friction_slope(law, pressure) * area_s;
-        }
-      } else if (in.fric > 0 || in.ifric > 0) {
-        const double speed = model::norm(vt);
-        const double mu = friction_coefficient(in.ifric, in.fric, in.c, area > 0 ? fn / area : 0.0, speed);
-        const Vec3 old = rotated_into_plane(st.f_t[ks], n);
-        c_friction = in.iform == 2 ? 0.0 : in.vis_f * std::sqrt(2.0 * K * ms);
-        FrictionInput fi;
-        fi.iform = in.iform == 2 ? 2 : 1;
-        fi.mu = mu;
-        fi.normal_force = std::abs(fn - cdamp * vn);
-        fi.K = K;
-        fi.mass = ms;
-        fi.vis_f = in.vis_f;
-        fi.dt = dt1;
-        fi.alpha = alpha;
-        fi.v_t = vt;
-        fi.f_old = old;
-        const auto ft = tangential_force(fi);
-        f_fr = {ft[0], ft[1], ft[2]};
-      }
-      st.f_t[ks] = f_fr;
-      // Time step of the pair (4.4), before anything is applied: under /DT/INTER/DEL a pair below Tmin leaves
-      // the interface without acting in this cycle (no force, no IBC release, no stiffness).
-      const double xi = ms > 0 && kt > 0 ? cdamp / (2.0 * std::sqrt(kt * ms)) : 0.0;
-      const double shrink = std::sqrt(1.0 + xi * xi) - xi;
-      // Voted with the stiffness the pair can reach within the step (reach_factor): tau0 = the step at p = 0.
-      // Not under /DT/INTER/CST on a plain TYPE7: there the step is held at Tmin by added mass, computed from
-      // k_eff as type7-lagdt.md section 6 writes it.
-      // A /CTCLAW law votes with law_reach_stiffness, and exact Coulomb's sticking spring kappa A_s when
-      // stiffer (a spring across the normal one: their directions are orthogonal, so the larger one sets the
-      // step).
-      const double reach =
-          ms > 0 && !mass_scaled_interface ? reach_factor(scale * std::sqrt(2.0 * ms / K), g, -vn) : 1.0;
-      double k_vote = law_normal ? law_reach_stiffness(law, area_s, p, -vn, dt1) : kt * reach;
-      if (has_law && law.friction == model::FrictionLaw::Coulomb)
-        k_vote = std::max(k_vote, law.kappa * area_s);
-      const double keff = k_vote / (shrink * shrink);
-      const double dt_spring = ms > 0 ? scale * std::sqrt(2.0 * ms / keff) : kInf;
-      double dt_pair = 0.5 * (g - p) / std::max(-vn, kTiny);  // kinematic
-      // Dashpots computed with v^{n-1/2} overshoot when c dt / m > 1 (the velocity they damp changes sign
-      // every cycle): the normal damping c and the viscous friction (C = VISF sqrt(2 K m) for Iform 1, the
-      // regularised /CTCLAW laws' slope at zero slip) keep dt <= m / c.
-      const double c_total = cdamp + c_friction;
-      if (c_total > 0) {
-        double dt_dash = scale * ms / c_total;
-        // Under /DT/INTER/CST (plain TYPE7) the step must stay at Tmin: this limit keeps a margin of more
-        // than two to the dashpot's stability bound 2 m / c, so it is not allowed below Tmin there.
-        if (controls.t_min > 0 && controls.action == ContactControls::Action::AddMass && !in.lagdt)
-          dt_dash = std::max(dt_dash, controls.t_min);
-        dt_pair = std::min(dt_pair, dt_dash);
-      }
-      if (controls.t_min > 0 && std::min(dt_spring, dt_pair) < controls.t_min &&
-          controls.action == ContactControls::Action::Delete) {
-        st.f_t[ks] = Vec3{};
-        deactivate(st, ks, "left the interface: its contact time step fell below the /DT/INTER/DEL minimum");
-        continue;
-      }
-      release_ibc(st, ks, node, nodes);
-      PendingPair q;
-      q.st = &st;
-      q.ks = ks;
-      q.row = SwitchedPair{node, st.segments[sb], best_h, n, best_d, row_gap, row_area, st.index, t1};
-      q.f_el = f_el;
-      q.f_dp = f_dp;
-      q.f_fr = f_fr;
-      q.vr = vr;
-      q.keff = keff;
-      q.p = p;
-      // The pair's own vote: kinematic and dashpot limits, and the spring's step (never below the nodal step
-      // of a free node, so redundant there) except under /DT/INTER/CST on a plain TYPE7, where the nodal step
-      // adds mass to stay at Tmin and the pair's step, taken with the mass before that, must not undercut it.
-      if (!mass_scaled_interface) dt_pair = std::min(dt_pair, dt_spring);
-      q.dt_vote = dt_pair;
-      // LAGDT: below Tmin the pair leaves the penalty path for this cycle and becomes a row (section 6).
-      if (lagrange_on() && in.lagdt) {
-        const bool wants = held || std::min(dt_pair, pair_spring_step(node, st.segments[sb], best_h, keff,
-                                                                      nodes)) < controls.t_min;
-        q.switchable = !wants || may_switch(st, q.row, nodes);
-        if (wants && q.switchable) {
-          switch_pair(st, q.row, ks, p);
-          continue;
-        }
-      }
-      pending.push_back(q);
+    const bool by_law = in.contact_law_id != 0;
+    const bool normal_law = in.law.normal != model::NormalLaw::Interface;
+    const bool friction_law = in.law.friction != model::FrictionLaw::Interface;
+    switch (!by_law ? 0 : 1 + (normal_law ? 1 : 0) + (friction_law ? 2 : 0)) {
+      case 0: pair_loop<kPenaltyOnly>(st, cand, f, nodes); break;
+      case 1: pair_loop<kLawAreas>(st, cand, f, nodes); break;
+      case 2: pair_loop<kLawNormal>(st, cand, f, nodes); break;
+      case 3: pair_loop<kLawFriction>(st, cand, f, nodes); break;
+      default: pair_loop<kLawBoth>(st, cand, f, nodes); break;
     }
   }
 };

@@ -189,29 +189,53 @@ bool Type7Search::update(const Coordinates& c, bool force, const ParallelFor* pa
   return false;
 }
 
+// The grid of one sort (step 1): the box of the active secondary nodes, the enlargement of the segments'
+// boxes and the cells.
+struct Type7Search::Grid {
+  double nlo[3], nhi[3];  // box of the active secondary nodes
+  double e;               // gap_max + margin
+  double inv_h;           // 1 / cell side
+  double last[3];         // last cell along each axis
+  std::int32_t nx, ny;    // cells along x and y
+  std::size_t n_cells, n_nodes;
+};
+
 void Type7Search::sort(const Coordinates& c) {
   if (tracked_stale_) drop_unused_tracked();
-  const double *x = c.x.data(), *y = c.y.data(), *z = c.z.data();
-  const std::size_t n_sec = secondary_.size(), n_seg = segments_.size();
-
-  if (sorts_ == 0) {
-    double sum = 0;
-    std::int64_t edges = 0;
-    for (std::size_t s = 0; s < n_seg; ++s) {
-      if (segment_removed_[s]) continue;
-      const Segment& q = segments_[s];
-      const int ne = q[3] == q[2] ? 3 : 4;
-      for (int k = 0; k < ne; ++k) {
-        const auto i = static_cast<std::size_t>(q[k]), j = static_cast<std::size_t>(q[(k + 1) % ne]);
-        sum += std::sqrt((x[j] - x[i]) * (x[j] - x[i]) + (y[j] - y[i]) * (y[j] - y[i]) +
-                         (z[j] - z[i]) * (z[j] - z[i]));
-      }
-      edges += ne;
-    }
-    margin_ = edges > 0 ? bumult_ * sum / static_cast<double>(edges) : 0.0;
-  }
+  if (sorts_ == 0) set_margin(c);
   ++sorts_;
+  keep_sort_coordinates(c);
+  candidates_.clear();
+  candidates_stale_ = false;
+  Grid grid;
+  if (!make_grid(c, grid)) return;
+  bin_nodes(c, grid);
+  find_pairs(c, grid);
+  order_by_node();
+}
 
+// The margin, from the mean edge length of the active segments at the first sort.
+void Type7Search::set_margin(const Coordinates& c) {
+  const double *x = c.x.data(), *y = c.y.data(), *z = c.z.data();
+  const std::size_t n_seg = segments_.size();
+  double sum = 0;
+  std::int64_t edges = 0;
+  for (std::size_t s = 0; s < n_seg; ++s) {
+    if (segment_removed_[s]) continue;
+    const Segment& q = segments_[s];
+    const int ne = q[3] == q[2] ? 3 : 4;
+    for (int k = 0; k < ne; ++k) {
+      const auto i = static_cast<std::size_t>(q[k]), j = static_cast<std::size_t>(q[(k + 1) % ne]);
+      sum += std::sqrt((x[j] - x[i]) * (x[j] - x[i]) + (y[j] - y[i]) * (y[j] - y[i]) +
+                       (z[j] - z[i]) * (z[j] - z[i]));
+    }
+    edges += ne;
+  }
+  margin_ = edges > 0 ? bumult_ * sum / static_cast<double>(edges) : 0.0;
+}
+
+void Type7Search::keep_sort_coordinates(const Coordinates& c) {
+  const double *x = c.x.data(), *y = c.y.data(), *z = c.z.data();
   x_sort_.resize(3 * tracked_.size());
   for (std::size_t k = 0; k < tracked_.size(); ++k) {
     const auto i = static_cast<std::size_t>(tracked_[k]);
@@ -219,13 +243,18 @@ void Type7Search::sort(const Coordinates& c) {
     x_sort_[3 * k + 1] = y[i];
     x_sort_[3 * k + 2] = z[i];
   }
-  candidates_.clear();
-  candidates_stale_ = false;
+}
 
-  // 1. Box of the active secondary nodes and the cell side.
-  double nlo[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                   std::numeric_limits<double>::infinity()};
-  double nhi[3] = {-nlo[0], -nlo[1], -nlo[2]};
+// 1. Box of the active secondary nodes and the cell side. False when there is no active node or segment.
+bool Type7Search::make_grid(const Coordinates& c, Grid& grid) const {
+  const double *x = c.x.data(), *y = c.y.data(), *z = c.z.data();
+  const std::size_t n_sec = secondary_.size(), n_seg = segments_.size();
+  double* nlo = grid.nlo;
+  double* nhi = grid.nhi;
+  for (int a = 0; a < 3; ++a) {
+    nlo[a] = std::numeric_limits<double>::infinity();
+    nhi[a] = -nlo[a];
+  }
   std::size_t n_nodes = 0;
   for (std::size_t i = 0; i < n_sec; ++i) {
     if (node_removed_[i]) continue;
@@ -246,7 +275,7 @@ void Type7Search::sort(const Coordinates& c) {
     side_sum += std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
     ++n_segs;
   }
-  if (n_nodes == 0 || n_segs == 0) return;
+  if (n_nodes == 0 || n_segs == 0) return false;
 
   const double extent[3] = {nhi[0] - nlo[0], nhi[1] - nlo[1], nhi[2] - nlo[2]};
   double h = side_sum / static_cast<double>(n_segs);
@@ -262,13 +291,24 @@ void Type7Search::sort(const Coordinates& c) {
     if (cells <= max_cells) break;
     h *= std::max(1.05, std::cbrt(cells / max_cells));
   }
-  const double inv_h = 1 / h;
-  const double last[3] = {dims[0] - 1, dims[1] - 1, dims[2] - 1};
-  const auto nx = static_cast<std::int32_t>(dims[0]), ny = static_cast<std::int32_t>(dims[1]);
-  const auto n_cells = static_cast<std::size_t>(dims[0] * dims[1] * dims[2]);
+  grid.e = e;
+  grid.inv_h = 1 / h;
+  for (int a = 0; a < 3; ++a) grid.last[a] = dims[a] - 1;
+  grid.nx = static_cast<std::int32_t>(dims[0]);
+  grid.ny = static_cast<std::int32_t>(dims[1]);
+  grid.n_cells = static_cast<std::size_t>(dims[0] * dims[1] * dims[2]);
+  grid.n_nodes = n_nodes;
+  return true;
+}
 
-  // 2. Counting sort of the nodes into cells: counts at cell_first_[cell + 1], prefix sums, then a fill
-  // that advances cell_first_[cell] as its cursor and a shift that restores the offsets.
+// 2. Counting sort of the nodes into cells: counts at cell_first_[cell + 1], prefix sums, then a fill
+// that advances cell_first_[cell] as its cursor and a shift that restores the offsets.
+void Type7Search::bin_nodes(const Coordinates& c, const Grid& grid) {
+  const double *x = c.x.data(), *y = c.y.data(), *z = c.z.data();
+  const std::size_t n_sec = secondary_.size(), n_cells = grid.n_cells;
+  const double* nlo = grid.nlo;
+  const double* last = grid.last;
+  const double inv_h = grid.inv_h;
   node_cell_.resize(n_sec);
   cell_first_.assign(n_cells + 1, 0);
   for (std::size_t i = 0; i < n_sec; ++i) {
@@ -279,13 +319,13 @@ void Type7Search::sort(const Coordinates& c) {
     const auto g = static_cast<std::size_t>(secondary_[i]);
     const std::int32_t cell =
         cell_of(x[g], nlo[0], inv_h, last[0]) +
-        nx * (cell_of(y[g], nlo[1], inv_h, last[1]) + ny * cell_of(z[g], nlo[2], inv_h, last[2]));
+        grid.nx * (cell_of(y[g], nlo[1], inv_h, last[1]) + grid.ny * cell_of(z[g], nlo[2], inv_h, last[2]));
     node_cell_[i] = cell;
     ++cell_first_[static_cast<std::size_t>(cell) + 1];
   }
   for (std::size_t k = 0; k < n_cells; ++k) cell_first_[k + 1] += cell_first_[k];
-  cell_node_.resize(n_nodes);
-  cell_xyz_.resize(3 * n_nodes);
+  cell_node_.resize(grid.n_nodes);
+  cell_xyz_.resize(3 * grid.n_nodes);
   for (std::size_t i = 0; i < n_sec; ++i) {
     if (node_cell_[i] < 0) continue;
     const auto slot = static_cast<std::size_t>(cell_first_[static_cast<std::size_t>(node_cell_[i])]++);
@@ -297,14 +337,20 @@ void Type7Search::sort(const Coordinates& c) {
   }
   for (std::size_t k = n_cells; k > 0; --k) cell_first_[k] = cell_first_[k - 1];
   cell_first_[0] = 0;
+}
 
-  // 3. Segment by segment, the nodes of the overlapped cells. Cells ix0..ix1 of one row (iy, iz) are
-  // consecutive, so their nodes form one contiguous range.
+// 3. Segment by segment, the nodes of the overlapped cells. Cells ix0..ix1 of one row (iy, iz) are
+// consecutive, so their nodes form one contiguous range.
+void Type7Search::find_pairs(const Coordinates& c, const Grid& grid) {
+  const std::size_t n_seg = segments_.size();
+  const double *nlo = grid.nlo, *nhi = grid.nhi, *last = grid.last;
+  const double inv_h = grid.inv_h;
+  const std::int32_t nx = grid.nx, ny = grid.ny;
   found_.clear();
   for (std::size_t s = 0; s < n_seg; ++s) {
     if (segment_removed_[s]) continue;
     const Segment& q = segments_[s];
-    const Box b = enlarged_box(c, q, e);
+    const Box b = enlarged_box(c, q, grid.e);
     bool outside = false;
     for (int a = 0; a < 3; ++a) outside = outside || b.hi[a] < nlo[a] || b.lo[a] > nhi[a];
     if (outside) continue;
@@ -328,8 +374,11 @@ void Type7Search::sort(const Coordinates& c) {
         }
       }
   }
+}
 
-  // 4. Stable counting sort by node: the pairs were found in increasing segment order.
+// 4. Stable counting sort by node: the pairs were found in increasing segment order.
+void Type7Search::order_by_node() {
+  const std::size_t n_sec = secondary_.size();
   node_first_.assign(n_sec + 1, 0);
   for (const Candidate& p : found_) ++node_first_[static_cast<std::size_t>(p.node) + 1];
   for (std::size_t i = 0; i < n_sec; ++i) node_first_[i + 1] += node_first_[i];

@@ -56,7 +56,15 @@ class Type7Search {
   void remove_node(std::int32_t node);
 
  private:
+  // The sort and its stages (type7_search.cpp).
+  struct Grid;
   void sort(const Coordinates& c);
+  void set_margin(const Coordinates& c);
+  void keep_sort_coordinates(const Coordinates& c);
+  bool make_grid(const Coordinates& c, Grid& grid) const;
+  void bin_nodes(const Coordinates& c, const Grid& grid);
+  void find_pairs(const Coordinates& c, const Grid& grid);
+  void order_by_node();
   void drop_unused_tracked();
   void release_tracked(std::int32_t node);
 
