@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string_view>
@@ -171,140 +172,204 @@ void ModelBuilder::build_element_groups() {
   for (std::size_t g = 0; g < element_groups_.size(); ++g) group_elements(static_cast<std::int32_t>(g));
 }
 
+namespace {
+
+// An element group's list while it is resolved: the elements it adds and those it takes out.
+struct ElementGroupList {
+  ModelBuilder& b;
+  const KeywordRecord& r;
+  model::ElementType type;
+  const ElementGroupFamily& fam;
+  const model::ElementBlock& elems;
+  std::string gname;      // "brick group 5", for messages
+  std::string self_kind;  // GRSHEL, GRSH3N, GRBRIC: the subtype that lists groups of the group's family
+  std::vector<std::int32_t> add, remove;
+};
+
+// RX402 for entry k of the list: `what` does not exist.
+void report_missing_in_element_group(const ElementGroupList& l, std::size_t k, const std::string& what) {
+  l.b.diags_.error(Diag::MissingReference, l.b.at(l.r.id_pos[k], 1), ModelBuilder::about(l.r),
+                   what + " does not exist (listed in " + l.gname + ")");
+}
+
+// /GRSHEL/SHEL, /GRSH3N/SH3N, /GRBRIC/BRIC: the element ids themselves.
+void add_listed_elements(ElementGroupList& l) {
+  const auto& r = l.r;
+  const auto& fam = l.fam;
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    const std::int64_t id = r.ids[k];
+    const auto e = id > 0 ? l.elems.index.find(id) : -1;
+    if (id <= 0)
+      l.b.diags_.error(Diag::MissingReference, l.b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+                       "there is no " + std::string(fam.element) + " " + std::to_string(id) + ": " +
+                           std::string(r.decl->path) + " lists element ids, which are positive (to leave " +
+                           "elements out, subtract a group with " + std::string(fam.root) + "/" +
+                           l.self_kind + ")");
+    else if (e < 0)
+      l.b.diags_.error(Diag::MissingReference, l.b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+                       std::string(fam.element) + " " + std::to_string(id) + " does not exist: no " +
+                           std::string(fam.element_keyword) + " line defines it (listed in " + l.gname + ")");
+    else
+      l.add.push_back(e);
+  }
+}
+
+// The parts that entry k of a PART, SUBSET, MAT or PROP list names by `id` (its absolute value), added to
+// `parts`; false, with RX402, when nothing has that id.
+bool parts_named_by(const ElementGroupList& l, std::string_view kind, std::size_t k, std::int64_t id,
+                    std::vector<std::int32_t>& parts) {
+  const auto& b = l.b;
+  if (kind == "PART") {
+    const auto it = b.part_ids_.find(id);
+    if (it == b.part_ids_.end()) {
+      report_missing_in_element_group(l, k, "part " + std::to_string(id));
+      return false;
+    }
+    parts.push_back(it->second);
+  } else if (kind == "SUBSET") {
+    const auto it = b.subset_ids_.find(id);
+    if (it == b.subset_ids_.end()) {
+      report_missing_in_element_group(l, k, "subset " + std::to_string(id));
+      return false;
+    }
+    b.subset_parts(it->second, parts);
+  } else {
+    const bool mat = kind == "MAT";
+    const auto& index = mat ? b.mat_ids_ : b.prop_ids_;
+    const auto it = index.find(id);
+    if (it == index.end()) {
+      report_missing_in_element_group(l, k, (mat ? "material " : "property ") + std::to_string(id));
+      return false;
+    }
+    for (std::size_t p = 0; p < b.m_.parts.size(); ++p)
+      if ((mat ? b.m_.parts[p].material : b.m_.parts[p].property) == it->second)
+        parts.push_back(static_cast<std::int32_t>(p));
+  }
+  return true;
+}
+
+// /GR.../PART, SUBSET, MAT, PROP: the elements of the parts listed, less those of the parts a negative id
+// names.
+void add_elements_of_parts(ElementGroupList& l, std::string_view kind) {
+  const auto& r = l.r;
+  // +1 for a part brought in, -1 for a part taken out; -1 wins whatever the order of the ids.
+  std::vector<std::int8_t> tag(l.b.m_.parts.size(), 0);
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    const bool negative = r.ids[k] < 0;
+    const std::int64_t id = negative ? -r.ids[k] : r.ids[k];
+    std::vector<std::int32_t> parts;
+    if (!parts_named_by(l, kind, k, id, parts)) continue;
+    for (const auto p : parts) tag[p] = negative ? -1 : (tag[p] == 0 ? 1 : tag[p]);
+  }
+  for (std::size_t e = 0; e < l.elems.size(); ++e)
+    if (l.elems.part[e] != kNone && tag[l.elems.part[e]] == 1) l.add.push_back(static_cast<std::int32_t>(e));
+}
+
+// /GRSHEL/GRSHEL and the like: the elements of the groups listed; a negative id subtracts its group.
+void add_elements_of_groups(ElementGroupList& l) {
+  const auto& r = l.r;
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    const bool negative = r.ids[k] < 0;
+    const std::int64_t id = negative ? -r.ids[k] : r.ids[k];
+    const auto& ids = l.b.element_group_ids_[static_cast<std::size_t>(l.type)];
+    const auto it = ids.find(id);
+    if (it == ids.end()) {
+      report_missing_in_element_group(l, k, std::string(l.fam.element) + " group " + std::to_string(id));
+      continue;
+    }
+    if (const auto* sub = l.b.group_elements(it->second)) {
+      auto& dst = negative ? l.remove : l.add;
+      dst.insert(dst.end(), sub->begin(), sub->end());
+    }
+  }
+}
+
+// The entry of a BOX or BOX2 list that names the box, with a warning for every other entry; the list's
+// size when no entry does.
+std::size_t first_box_entry(const ElementGroupList& l) {
+  const auto& r = l.r;
+  // Radioss reads one box: the first positive id. Boxes are combined with /BOX/BOX, not by listing.
+  std::size_t box_k = r.ids.size();
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    if (box_k == r.ids.size() && r.ids[k] > 0) {
+      box_k = k;
+      continue;
+    }
+    l.b.diags_.warning(Diag::ExtraData, l.b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+                       "box id " + std::to_string(r.ids[k]) + " is ignored: " + std::string(r.decl->path) +
+                           " takes one box, the first positive id of its list, as Radioss does");
+  }
+  return box_k;
+}
+
+// /GR.../BOX and BOX2: the elements in the box of the list's first positive id.
+void add_elements_in_box(ElementGroupList& l, bool every_node) {
+  const auto& r = l.r;
+  const auto& m = l.b.m_;
+  const std::size_t box_k = first_box_entry(l);
+  if (box_k >= r.ids.size()) return;
+  const auto it = l.b.box_ids_.find(r.ids[box_k]);
+  if (it == l.b.box_ids_.end()) {
+    l.b.diags_.error(Diag::MissingReference, l.b.at(r.id_pos[box_k], 1), ModelBuilder::about(r),
+                     "box " + std::to_string(r.ids[box_k]) +
+                         " does not exist: there is no /BOX/RECTA, /BOX/CYLIN or /BOX/SPHER with id " +
+                         std::to_string(r.ids[box_k]) + " (listed in " + l.gname + ")");
+    return;
+  }
+  const auto& b = m.boxes[it->second];
+  const auto npe = static_cast<std::size_t>(l.elems.npe());
+  // BOX: every node of the element inside; BOX2: one node inside is enough.
+  for (std::size_t e = 0; e < l.elems.size(); ++e) {
+    std::size_t in = 0;
+    for (std::size_t k = 0; k < npe; ++k) {
+      const auto n = l.elems.conn[e * npe + k];
+      if (n >= 0 && inside(b, m.nodes.x[n], m.nodes.y[n], m.nodes.z[n])) ++in;
+    }
+    if (every_node ? in == npe : in > 0) l.add.push_back(static_cast<std::int32_t>(e));
+  }
+}
+
+}  // namespace
+
 const std::vector<std::int32_t>* ModelBuilder::group_elements(std::int32_t g) {
   auto& group = element_groups_[static_cast<std::size_t>(g)];
   if (group.state == 2) return &group.elements;
   const KeywordRecord& r = *group.record;
   const auto& fam = family(group.type);
-  const std::string gname = std::string(fam.element) + " group " + std::to_string(r.id);
-  const std::string self_kind(fam.root.substr(1));  // GRSHEL, GRSH3N, GRBRIC
+  ElementGroupList l{*this,
+                     r,
+                     group.type,
+                     fam,
+                     block(group.type),
+                     std::string(fam.element) + " group " + std::to_string(r.id),
+                     std::string(fam.root.substr(1)),
+                     {},
+                     {}};
   if (group.state == 1) {
-    diags_.error(
-        Diag::InconsistentValues, at(r.pos, 1), about(r),
-        gname + " includes itself through " + std::string(fam.root) + "/" + self_kind + "; remove the loop");
+    diags_.error(Diag::InconsistentValues, at(r.pos, 1), about(r),
+                 l.gname + " includes itself through " + std::string(fam.root) + "/" + l.self_kind +
+                     "; remove the loop");
     return nullptr;
   }
   group.state = 1;
   const std::size_t errors_before = diags_.error_count();
-  const auto& elems = block(group.type);
-  const auto npe = static_cast<std::size_t>(elems.npe());
   const std::string_view kind = r.decl->path.substr(fam.root.size() + 1);
-  std::vector<std::int32_t> add, remove;
-  auto missing = [&](std::size_t k, const std::string& what) {
-    diags_.error(Diag::MissingReference, at(r.id_pos[k], 1), about(r),
-                 what + " does not exist (listed in " + gname + ")");
-  };
-  if (kind == fam.list_kind) {
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      const std::int64_t id = r.ids[k];
-      const auto e = id > 0 ? elems.index.find(id) : -1;
-      if (id <= 0)
-        diags_.error(Diag::MissingReference, at(r.id_pos[k], 1), about(r),
-                     "there is no " + std::string(fam.element) + " " + std::to_string(id) + ": " +
-                         std::string(r.decl->path) + " lists element ids, which are positive (to leave " +
-                         "elements out, subtract a group with " + std::string(fam.root) + "/" + self_kind +
-                         ")");
-      else if (e < 0)
-        diags_.error(Diag::MissingReference, at(r.id_pos[k], 1), about(r),
-                     std::string(fam.element) + " " + std::to_string(id) + " does not exist: no " +
-                         std::string(fam.element_keyword) + " line defines it (listed in " + gname + ")");
-      else
-        add.push_back(e);
-    }
-  } else if (kind == "PART" || kind == "SUBSET" || kind == "MAT" || kind == "PROP") {
-    // +1 for a part brought in, -1 for a part taken out; -1 wins whatever the order of the ids.
-    std::vector<std::int8_t> tag(m_.parts.size(), 0);
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      const bool negative = r.ids[k] < 0;
-      const std::int64_t id = negative ? -r.ids[k] : r.ids[k];
-      std::vector<std::int32_t> parts;
-      if (kind == "PART") {
-        const auto it = part_ids_.find(id);
-        if (it == part_ids_.end()) {
-          missing(k, "part " + std::to_string(id));
-          continue;
-        }
-        parts.push_back(it->second);
-      } else if (kind == "SUBSET") {
-        const auto it = subset_ids_.find(id);
-        if (it == subset_ids_.end()) {
-          missing(k, "subset " + std::to_string(id));
-          continue;
-        }
-        subset_parts(it->second, parts);
-      } else {
-        const bool mat = kind == "MAT";
-        const auto& index = mat ? mat_ids_ : prop_ids_;
-        const auto it = index.find(id);
-        if (it == index.end()) {
-          missing(k, (mat ? "material " : "property ") + std::to_string(id));
-          continue;
-        }
-        for (std::size_t p = 0; p < m_.parts.size(); ++p)
-          if ((mat ? m_.parts[p].material : m_.parts[p].property) == it->second)
-            parts.push_back(static_cast<std::int32_t>(p));
-      }
-      for (const auto p : parts) tag[p] = negative ? -1 : (tag[p] == 0 ? 1 : tag[p]);
-    }
-    for (std::size_t e = 0; e < elems.size(); ++e)
-      if (elems.part[e] != kNone && tag[elems.part[e]] == 1) add.push_back(static_cast<std::int32_t>(e));
-  } else if (kind == self_kind) {
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      const bool negative = r.ids[k] < 0;
-      const std::int64_t id = negative ? -r.ids[k] : r.ids[k];
-      const auto& ids = element_group_ids_[static_cast<std::size_t>(group.type)];
-      const auto it = ids.find(id);
-      if (it == ids.end()) {
-        missing(k, std::string(fam.element) + " group " + std::to_string(id));
-        continue;
-      }
-      if (const auto* sub = group_elements(it->second)) {
-        auto& dst = negative ? remove : add;
-        dst.insert(dst.end(), sub->begin(), sub->end());
-      }
-    }
-  } else if (kind == "BOX" || kind == "BOX2") {
-    // Radioss reads one box: the first positive id. Boxes are combined with /BOX/BOX, not by listing.
-    std::size_t box_k = r.ids.size();
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      if (box_k == r.ids.size() && r.ids[k] > 0) {
-        box_k = k;
-        continue;
-      }
-      diags_.warning(Diag::ExtraData, at(r.id_pos[k], 1), about(r),
-                     "box id " + std::to_string(r.ids[k]) + " is ignored: " + std::string(r.decl->path) +
-                         " takes one box, the first positive id of its list, as Radioss does");
-    }
-    if (box_k < r.ids.size()) {
-      const auto it = box_ids_.find(r.ids[box_k]);
-      if (it == box_ids_.end()) {
-        diags_.error(Diag::MissingReference, at(r.id_pos[box_k], 1), about(r),
-                     "box " + std::to_string(r.ids[box_k]) +
-                         " does not exist: there is no /BOX/RECTA, /BOX/CYLIN or /BOX/SPHER with id " +
-                         std::to_string(r.ids[box_k]) + " (listed in " + gname + ")");
-      } else {
-        const auto& b = m_.boxes[it->second];
-        // BOX: every node of the element inside; BOX2: one node inside is enough.
-        const bool every_node = kind == "BOX";
-        for (std::size_t e = 0; e < elems.size(); ++e) {
-          std::size_t in = 0;
-          for (std::size_t k = 0; k < npe; ++k) {
-            const auto n = elems.conn[e * npe + k];
-            if (n >= 0 && inside(b, m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n])) ++in;
-          }
-          if (every_node ? in == npe : in > 0) add.push_back(static_cast<std::int32_t>(e));
-        }
-      }
-    }
-  }
-  sort_unique(add);
-  sort_unique(remove);
+  if (kind == fam.list_kind)
+    add_listed_elements(l);
+  else if (kind == "PART" || kind == "SUBSET" || kind == "MAT" || kind == "PROP")
+    add_elements_of_parts(l, kind);
+  else if (kind == l.self_kind)
+    add_elements_of_groups(l);
+  else if (kind == "BOX" || kind == "BOX2")
+    add_elements_in_box(l, kind == "BOX");
+  sort_unique(l.add);
+  sort_unique(l.remove);
   group.elements.clear();
-  std::set_difference(add.begin(), add.end(), remove.begin(), remove.end(),
+  std::set_difference(l.add.begin(), l.add.end(), l.remove.begin(), l.remove.end(),
                       std::back_inserter(group.elements));
   if (group.elements.empty() && diags_.error_count() == errors_before) {
     diags_.error(Diag::EmptyGroup, at(r.pos, 1), about(r),
-                 gname + " holds no " + std::string(fam.element) +
+                 l.gname + " holds no " + std::string(fam.element) +
                      ": check its list (the surfaces and node groups built from it would hold nothing)");
   }
   group.state = 2;
@@ -423,6 +488,208 @@ void ModelBuilder::build_groups() {
   for (std::size_t g = 0; g < m_.node_groups.size(); ++g) group_nodes(static_cast<std::int32_t>(g));
 }
 
+namespace {
+
+// A node group's list while it is resolved: the nodes it adds and those it takes out.
+struct NodeGroupList {
+  ModelBuilder& b;
+  const KeywordRecord& r;
+  std::int64_t id;  // the group's, for messages
+  std::vector<std::int32_t> add, remove;
+};
+
+// The nodes of the elements of `part`, to `out`.
+void add_part_nodes(const model::Model& m, std::int32_t part, std::vector<std::int32_t>& out) {
+  for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras}) {
+    const auto npe = static_cast<std::size_t>(b->npe());
+    for (std::size_t e = 0; e < b->size(); ++e) {
+      if (b->part[e] != part) continue;
+      for (std::size_t k = 0; k < npe; ++k)
+        if (b->conn[e * npe + k] >= 0) out.push_back(b->conn[e * npe + k]);
+    }
+  }
+}
+
+// RX402 for entry k of the list: `what` `id` does not exist.
+void report_missing_in_node_group(const NodeGroupList& l, std::size_t k, const std::string& what,
+                                  std::int64_t id) {
+  l.b.diags_.error(Diag::MissingReference, l.b.at(l.r.id_pos[k], 1), ModelBuilder::about(l.r),
+                   what + " " + std::to_string(id) + " does not exist (listed in node group " +
+                       std::to_string(l.id) + ")");
+}
+
+// /GRNOD/NODE: the node ids themselves.
+void add_listed_nodes(NodeGroupList& l) {
+  const auto& r = l.r;
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    const auto n = l.b.m_.nodes.index.find(r.ids[k]);
+    if (n < 0)
+      report_missing_in_node_group(l, k, "node", r.ids[k]);
+    else
+      l.add.push_back(n);
+  }
+}
+
+// /GRNOD/PART: the nodes of the parts listed; a negative id subtracts its part's nodes.
+void add_nodes_of_parts(NodeGroupList& l) {
+  const auto& r = l.r;
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    const std::int64_t id = r.ids[k] < 0 ? -r.ids[k] : r.ids[k];
+    const auto it = l.b.part_ids_.find(id);
+    if (it == l.b.part_ids_.end())
+      report_missing_in_node_group(l, k, "part", id);
+    else
+      add_part_nodes(l.b.m_, it->second, r.ids[k] < 0 ? l.remove : l.add);
+  }
+}
+
+// /GRNOD/GRNOD: the nodes of the node groups listed; a negative id subtracts its group.
+void add_nodes_of_node_groups(NodeGroupList& l) {
+  const auto& r = l.r;
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    const std::int64_t id = r.ids[k] < 0 ? -r.ids[k] : r.ids[k];
+    const auto it = l.b.grnod_ids_.find(id);
+    if (it == l.b.grnod_ids_.end()) {
+      report_missing_in_node_group(l, k, "node group", id);
+      continue;
+    }
+    if (const auto* sub = l.b.group_nodes(it->second)) {
+      auto& dst = r.ids[k] < 0 ? l.remove : l.add;
+      dst.insert(dst.end(), sub->begin(), sub->end());
+    }
+  }
+}
+
+// /GRNOD/BOX: the nodes inside each box listed.
+void add_nodes_in_boxes(NodeGroupList& l) {
+  const auto& r = l.r;
+  const auto& m = l.b.m_;
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    const auto it = l.b.box_ids_.find(r.ids[k]);
+    if (it == l.b.box_ids_.end()) {
+      report_missing_in_node_group(l, k, "box", r.ids[k]);
+      continue;
+    }
+    const auto& b = m.boxes[it->second];
+    for (std::size_t n = 0; n < m.nodes.size(); ++n) {
+      if (inside(b, m.nodes.x[n], m.nodes.y[n], m.nodes.z[n])) l.add.push_back(static_cast<std::int32_t>(n));
+    }
+  }
+}
+
+// The id ranges (first, last, increment) of /GRNOD/GENE (`gene`) or /GRNOD/GEN_INCR.
+std::vector<std::array<std::int64_t, 3>> node_id_ranges(const NodeGroupList& l, bool gene) {
+  const auto& r = l.r;
+  // GENE: pairs (first, last); GEN_INCR: records (first, last, incr).
+  std::vector<std::array<std::int64_t, 3>> ranges;
+  if (gene) {
+    if (r.ids.size() % 2 != 0)
+      l.b.diags_.error(Diag::InconsistentValues, l.b.at(r.id_pos.back(), 1), ModelBuilder::about(r),
+                       "/GRNOD/GENE lists pairs 'first last'; the last pair is incomplete");
+    for (std::size_t k = 0; k + 1 < r.ids.size(); k += 2) ranges.push_back({r.ids[k], r.ids[k + 1], 1});
+  } else {
+    const auto& t = r.records;
+    const int c1 = t.column("first"), c2 = t.column("last"), c3 = t.column("incr");
+    for (std::size_t k = 0; c1 >= 0 && c2 >= 0 && k < t.size(); ++k)
+      ranges.push_back({t.ints[c1][k], t.ints[c2][k], c3 >= 0 && t.ints[c3][k] > 0 ? t.ints[c3][k] : 1});
+  }
+  return ranges;
+}
+
+// /GRNOD/GENE and /GRNOD/GEN_INCR: the existing nodes of each id range.
+void add_nodes_in_ranges(NodeGroupList& l, bool gene) {
+  const auto& r = l.r;
+  const auto& nodes = l.b.m_.nodes;
+  for (const auto& [lo, hi, step] : node_id_ranges(l, gene)) {
+    if (hi - lo > 100 * static_cast<std::int64_t>(nodes.size()) + 1000000) {
+      l.b.diags_.error(
+          Diag::ValueOutOfRange, l.b.at(r.pos, 1), ModelBuilder::about(r),
+          "range " + std::to_string(lo) + " to " + std::to_string(hi) + " is far wider than the model");
+      continue;
+    }
+    for (std::int64_t id = lo; id <= hi; id += step) {
+      const auto n = nodes.index.find(id);
+      if (n >= 0) l.add.push_back(n);
+    }
+  }
+}
+
+// /GRNOD/MAT (`mat`) and /GRNOD/PROP: the nodes of the parts of each material or property listed.
+void add_nodes_of_materials_or_properties(NodeGroupList& l, bool mat) {
+  const auto& r = l.r;
+  const auto& m = l.b.m_;
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    const auto& index = mat ? l.b.mat_ids_ : l.b.prop_ids_;
+    const auto it = index.find(r.ids[k]);
+    if (it == index.end()) {
+      report_missing_in_node_group(l, k, mat ? "material" : "property", r.ids[k]);
+      continue;
+    }
+    for (std::size_t p = 0; p < m.parts.size(); ++p)
+      if ((mat ? m.parts[p].material : m.parts[p].property) == it->second)
+        add_part_nodes(m, static_cast<std::int32_t>(p), l.add);
+  }
+}
+
+// /GRNOD/SURF: the nodes of the segments of each surface listed.
+void add_nodes_of_surfaces(NodeGroupList& l) {
+  const auto& r = l.r;
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    const auto it = l.b.surf_ids_.find(r.ids[k]);
+    if (it == l.b.surf_ids_.end()) {
+      report_missing_in_node_group(l, k, "surface", r.ids[k]);
+      continue;
+    }
+    for (const auto& seg : l.b.m_.surfaces[it->second].segments)
+      l.add.insert(l.add.end(), seg.begin(), seg.end());
+  }
+}
+
+// /GRNOD/SUBSET: the nodes of the parts of each subset listed (and of its descendants).
+void add_nodes_of_subsets(NodeGroupList& l) {
+  const auto& r = l.r;
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    const auto it = l.b.subset_ids_.find(r.ids[k]);
+    if (it == l.b.subset_ids_.end()) {
+      report_missing_in_node_group(l, k, "subset", r.ids[k]);
+      continue;
+    }
+    std::vector<std::int32_t> parts;
+    l.b.subset_parts(it->second, parts);
+    for (auto p : parts) add_part_nodes(l.b.m_, p, l.add);
+  }
+}
+
+// /GRNOD/GRSHEL, /GRSH3N, /GRBRIC (`kind`): the nodes of the elements of each element group listed.
+void add_nodes_of_element_groups(NodeGroupList& l, const std::string& kind) {
+  const auto& r = l.r;
+  const auto type = kind == "GRSHEL"   ? model::ElementType::Shell4
+                    : kind == "GRSH3N" ? model::ElementType::Shell3
+                                       : model::ElementType::Brick8;
+  const auto& fam = family(type);
+  const auto& elems = l.b.block(type);
+  const auto npe = static_cast<std::size_t>(elems.npe());
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    if (r.ids[k] < 0) {
+      l.b.diags_.warning(Diag::ValueOutOfRange, l.b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+                         "id " + std::to_string(r.ids[k]) +
+                             " is ignored: a negative id removes nothing in /GRNOD/" + kind +
+                             ", as in Radioss; subtract node groups with /GRNOD/GRNOD");
+      continue;
+    }
+    const auto* eg = l.b.element_group(type, r.ids[k]);
+    if (!eg) {
+      report_missing_in_node_group(l, k, std::string(fam.element) + " group", r.ids[k]);
+      continue;
+    }
+    for (const auto e : eg->elements)
+      for (std::size_t j = 0; j < npe; ++j)
+        if (elems.conn[e * npe + j] >= 0) l.add.push_back(elems.conn[e * npe + j]);
+  }
+}
+
+}  // namespace
+
 const std::vector<std::int32_t>* ModelBuilder::group_nodes(std::int32_t g) {
   if (g < 0 || g >= static_cast<std::int32_t>(m_.node_groups.size())) return nullptr;
   auto& group = m_.node_groups[g];
@@ -435,154 +702,31 @@ const std::vector<std::int32_t>* ModelBuilder::group_nodes(std::int32_t g) {
     return nullptr;
   }
   grnod_state_[g] = 1;
-  std::vector<std::int32_t> add, remove;
-  auto part_nodes = [&](std::int32_t part, std::vector<std::int32_t>& out) {
-    for (const auto* b : {&m_.shells, &m_.shells3, &m_.bricks, &m_.tetras}) {
-      const auto npe = static_cast<std::size_t>(b->npe());
-      for (std::size_t e = 0; e < b->size(); ++e) {
-        if (b->part[e] != part) continue;
-        for (std::size_t k = 0; k < npe; ++k)
-          if (b->conn[e * npe + k] >= 0) out.push_back(b->conn[e * npe + k]);
-      }
-    }
-  };
+  NodeGroupList l{*this, r, group.id, {}, {}};
   const std::string& kind = group.kind;
-  auto missing = [&](std::size_t k, const std::string& what, std::int64_t id) {
-    diags_.error(Diag::MissingReference, at(r.id_pos[k], 1), about(r),
-                 what + " " + std::to_string(id) + " does not exist (listed in node group " +
-                     std::to_string(group.id) + ")");
-  };
-  if (kind == "NODE") {
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      const auto n = m_.nodes.index.find(r.ids[k]);
-      if (n < 0)
-        missing(k, "node", r.ids[k]);
-      else
-        add.push_back(n);
-    }
-  } else if (kind == "PART") {
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      const std::int64_t id = r.ids[k] < 0 ? -r.ids[k] : r.ids[k];
-      const auto it = part_ids_.find(id);
-      if (it == part_ids_.end())
-        missing(k, "part", id);
-      else
-        part_nodes(it->second, r.ids[k] < 0 ? remove : add);
-    }
-  } else if (kind == "GRNOD") {
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      const std::int64_t id = r.ids[k] < 0 ? -r.ids[k] : r.ids[k];
-      const auto it = grnod_ids_.find(id);
-      if (it == grnod_ids_.end()) {
-        missing(k, "node group", id);
-        continue;
-      }
-      if (const auto* sub = group_nodes(it->second)) {
-        auto& dst = r.ids[k] < 0 ? remove : add;
-        dst.insert(dst.end(), sub->begin(), sub->end());
-      }
-    }
-  } else if (kind == "BOX") {
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      const auto it = box_ids_.find(r.ids[k]);
-      if (it == box_ids_.end()) {
-        missing(k, "box", r.ids[k]);
-        continue;
-      }
-      const auto& b = m_.boxes[it->second];
-      for (std::size_t n = 0; n < m_.nodes.size(); ++n) {
-        if (inside(b, m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n]))
-          add.push_back(static_cast<std::int32_t>(n));
-      }
-    }
-  } else if (kind == "GENE" || kind == "GEN_INCR") {
-    // GENE: pairs (first, last); GEN_INCR: records (first, last, incr).
-    std::vector<std::array<std::int64_t, 3>> ranges;
-    if (kind == "GENE") {
-      if (r.ids.size() % 2 != 0)
-        diags_.error(Diag::InconsistentValues, at(r.id_pos.back(), 1), about(r),
-                     "/GRNOD/GENE lists pairs 'first last'; the last pair is incomplete");
-      for (std::size_t k = 0; k + 1 < r.ids.size(); k += 2) ranges.push_back({r.ids[k], r.ids[k + 1], 1});
-    } else {
-      const auto& t = r.records;
-      const int c1 = t.column("first"), c2 = t.column("last"), c3 = t.column("incr");
-      for (std::size_t k = 0; c1 >= 0 && c2 >= 0 && k < t.size(); ++k)
-        ranges.push_back({t.ints[c1][k], t.ints[c2][k], c3 >= 0 && t.ints[c3][k] > 0 ? t.ints[c3][k] : 1});
-    }
-    for (const auto& [lo, hi, step] : ranges) {
-      if (hi - lo > 100 * static_cast<std::int64_t>(m_.nodes.size()) + 1000000) {
-        diags_.error(
-            Diag::ValueOutOfRange, at(r.pos, 1), about(r),
-            "range " + std::to_string(lo) + " to " + std::to_string(hi) + " is far wider than the model");
-        continue;
-      }
-      for (std::int64_t id = lo; id <= hi; id += step) {
-        const auto n = m_.nodes.index.find(id);
-        if (n >= 0) add.push_back(n);
-      }
-    }
-  } else if (kind == "MAT" || kind == "PROP") {
-    const bool mat = kind == "MAT";
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      const auto& index = mat ? mat_ids_ : prop_ids_;
-      const auto it = index.find(r.ids[k]);
-      if (it == index.end()) {
-        missing(k, mat ? "material" : "property", r.ids[k]);
-        continue;
-      }
-      for (std::size_t p = 0; p < m_.parts.size(); ++p)
-        if ((mat ? m_.parts[p].material : m_.parts[p].property) == it->second)
-          part_nodes(static_cast<std::int32_t>(p), add);
-    }
-  } else if (kind == "SURF") {
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      const auto it = surf_ids_.find(r.ids[k]);
-      if (it == surf_ids_.end()) {
-        missing(k, "surface", r.ids[k]);
-        continue;
-      }
-      for (const auto& seg : m_.surfaces[it->second].segments) add.insert(add.end(), seg.begin(), seg.end());
-    }
-  } else if (kind == "SUBSET") {
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      const auto it = subset_ids_.find(r.ids[k]);
-      if (it == subset_ids_.end()) {
-        missing(k, "subset", r.ids[k]);
-        continue;
-      }
-      std::vector<std::int32_t> parts;
-      subset_parts(it->second, parts);
-      for (auto p : parts) part_nodes(p, add);
-    }
-  } else if (kind == "GRSHEL" || kind == "GRSH3N" || kind == "GRBRIC") {
-    const auto type = kind == "GRSHEL"   ? model::ElementType::Shell4
-                      : kind == "GRSH3N" ? model::ElementType::Shell3
-                                         : model::ElementType::Brick8;
-    const auto& fam = family(type);
-    const auto& elems = block(type);
-    const auto npe = static_cast<std::size_t>(elems.npe());
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      if (r.ids[k] < 0) {
-        diags_.warning(Diag::ValueOutOfRange, at(r.id_pos[k], 1), about(r),
-                       "id " + std::to_string(r.ids[k]) +
-                           " is ignored: a negative id removes nothing in /GRNOD/" + kind +
-                           ", as in Radioss; subtract node groups with /GRNOD/GRNOD");
-        continue;
-      }
-      const auto* eg = element_group(type, r.ids[k]);
-      if (!eg) {
-        missing(k, std::string(fam.element) + " group", r.ids[k]);
-        continue;
-      }
-      for (const auto e : eg->elements)
-        for (std::size_t j = 0; j < npe; ++j)
-          if (elems.conn[e * npe + j] >= 0) add.push_back(elems.conn[e * npe + j]);
-    }
-  }
-  sort_unique(add);
-  sort_unique(remove);
+  if (kind == "NODE")
+    add_listed_nodes(l);
+  else if (kind == "PART")
+    add_nodes_of_parts(l);
+  else if (kind == "GRNOD")
+    add_nodes_of_node_groups(l);
+  else if (kind == "BOX")
+    add_nodes_in_boxes(l);
+  else if (kind == "GENE" || kind == "GEN_INCR")
+    add_nodes_in_ranges(l, kind == "GENE");
+  else if (kind == "MAT" || kind == "PROP")
+    add_nodes_of_materials_or_properties(l, kind == "MAT");
+  else if (kind == "SURF")
+    add_nodes_of_surfaces(l);
+  else if (kind == "SUBSET")
+    add_nodes_of_subsets(l);
+  else if (kind == "GRSHEL" || kind == "GRSH3N" || kind == "GRBRIC")
+    add_nodes_of_element_groups(l, kind);
+  sort_unique(l.add);
+  sort_unique(l.remove);
   group.nodes.clear();
-  std::set_difference(add.begin(), add.end(), remove.begin(), remove.end(), std::back_inserter(group.nodes));
+  std::set_difference(l.add.begin(), l.add.end(), l.remove.begin(), l.remove.end(),
+                      std::back_inserter(group.nodes));
   if (group.nodes.empty()) {
     // After an error the group may be empty only because what it lists was not built (a part whose
     // property radx refused has no elements): say so rather than blame the list alone.
@@ -596,36 +740,319 @@ const std::vector<std::int32_t>* ModelBuilder::group_nodes(std::int32_t g) {
   return &group.nodes;
 }
 
+namespace {
+
+// Every element face by its sorted nodes, with the first element that has it: the owners of /SURF/SEG's
+// segments.
+using FaceOwners = std::map<FaceKey, std::pair<model::SegmentOwner, std::int32_t>>;
+
+FaceOwners face_owners(const model::Model& m) {
+  FaceOwners faces;
+  for (std::size_t e = 0; e < m.shells.size(); ++e) {
+    const auto* c = &m.shells.conn[4 * e];
+    faces.emplace(face_key({c[0], c[1], c[2], c[3]}),
+                  std::pair{model::SegmentOwner::Shell4, static_cast<std::int32_t>(e)});
+  }
+  for (std::size_t e = 0; e < m.shells3.size(); ++e) {
+    const auto* c = &m.shells3.conn[3 * e];
+    faces.emplace(face_key({c[0], c[1], c[2], c[2]}),
+                  std::pair{model::SegmentOwner::Shell3, static_cast<std::int32_t>(e)});
+  }
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+    const auto* c = &m.bricks.conn[8 * e];
+    for (const auto& f : model::kBrickFaces)
+      faces.emplace(face_key({c[f[0]], c[f[1]], c[f[2]], c[f[3]]}),
+                    std::pair{model::SegmentOwner::Brick8, static_cast<std::int32_t>(e)});
+  }
+  for (std::size_t e = 0; e < m.tetras.size(); ++e) {
+    const auto* c = &m.tetras.conn[4 * e];
+    for (const auto& f : model::kTetraFaces)
+      faces.emplace(face_key({c[f[0]], c[f[1]], c[f[2]], c[f[2]]}),
+                    std::pair{model::SegmentOwner::Tetra4, static_cast<std::int32_t>(e)});
+  }
+  return faces;
+}
+
+void push_segment(model::Surface& s, std::array<std::int32_t, 4> seg, model::SegmentOwner type,
+                  std::int32_t owner) {
+  s.segments.push_back(seg);
+  s.owner_type.push_back(type);
+  s.owner.push_back(owner);
+}
+
+// A shell as a segment, as the element is numbered, or flipped.
+void push_shell(const model::Model& m, model::Surface& s, std::int32_t e, bool flip) {
+  const auto* c = &m.shells.conn[4 * static_cast<std::size_t>(e)];
+  if (!flip)
+    push_segment(s, {c[0], c[1], c[2], c[3]}, model::SegmentOwner::Shell4, e);
+  else if (c[2] == c[3])
+    push_segment(s, {c[0], c[2], c[1], c[1]}, model::SegmentOwner::Shell4, e);
+  else
+    push_segment(s, {c[0], c[3], c[2], c[1]}, model::SegmentOwner::Shell4, e);
+}
+
+void push_shell3(const model::Model& m, model::Surface& s, std::int32_t e, bool flip) {
+  const auto* c = &m.shells3.conn[3 * static_cast<std::size_t>(e)];
+  if (flip)
+    push_segment(s, {c[0], c[2], c[1], c[1]}, model::SegmentOwner::Shell3, e);
+  else
+    push_segment(s, {c[0], c[1], c[2], c[2]}, model::SegmentOwner::Shell3, e);
+}
+
+// How many marked solids have each face (each solid counted once): the tetrahedra marked in
+// `tetra_neighbours`, the bricks marked in `neighbours` (either may be null).
+std::map<FaceKey, int> solids_sharing_faces(const model::Model& m,
+                                            const std::vector<std::uint8_t>* neighbours,
+                                            const std::vector<std::uint8_t>* tetra_neighbours) {
+  std::map<FaceKey, int> sharing;
+  if (tetra_neighbours) {
+    for (std::size_t e = 0; e < m.tetras.size(); ++e) {
+      if (!(*tetra_neighbours)[e]) continue;
+      const auto* c = &m.tetras.conn[4 * e];
+      for (const auto& f : model::kTetraFaces) {
+        std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[2]]};
+        const int n = keep_distinct(seg);
+        if (n >= 3) ++sharing[distinct_key(seg, n)];
+      }
+    }
+  }
+  if (neighbours) {
+    for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+      if (!(*neighbours)[e]) continue;
+      const auto* c = &m.bricks.conn[8 * e];
+      std::set<FaceKey> own;
+      for (const auto& f : model::kBrickFaces) {
+        std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
+        const int n = keep_distinct(seg);
+        if (n >= 3) own.insert(distinct_key(seg, n));
+      }
+      for (const auto& k : own) ++sharing[k];
+    }
+  }
+  return sharing;
+}
+
+// The faces of `bricks`, then of `tetras`, in that order, each pointing out of its element (a tetrahedron
+// face is a triangle, n4 = n3). With `neighbours` (bricks) and `tetra_neighbours`, a face that another
+// marked solid also has is an inner face and is left out; a face whose key is in `covered` is left out
+// too (a shell already gives that segment).
+void push_solid_faces(const model::Model& m, model::Surface& s, const std::vector<std::int32_t>& bricks,
+                      const std::vector<std::int32_t>& tetras, const std::vector<std::uint8_t>* neighbours,
+                      const std::vector<std::uint8_t>* tetra_neighbours, const std::set<FaceKey>& covered) {
+  auto sharing = solids_sharing_faces(m, neighbours, tetra_neighbours);
+  for (const auto e : bricks) {
+    const auto* c = &m.bricks.conn[8 * static_cast<std::size_t>(e)];
+    for (const auto& f : model::kBrickFaces) {
+      std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
+      const int n = keep_distinct(seg);
+      if (n < 3) continue;
+      const auto key = distinct_key(seg, n);
+      if (neighbours && sharing[key] > 1) continue;
+      if (covered.count(key)) continue;
+      push_segment(s, seg, model::SegmentOwner::Brick8, e);
+    }
+  }
+  for (const auto e : tetras) {
+    const auto* c = &m.tetras.conn[4 * static_cast<std::size_t>(e)];
+    for (const auto& f : model::kTetraFaces) {
+      std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[2]]};
+      const int n = keep_distinct(seg);
+      if (n < 3) continue;
+      const auto key = distinct_key(seg, n);
+      if (tetra_neighbours && sharing[key] > 1) continue;
+      if (covered.count(key)) continue;
+      push_segment(s, seg, model::SegmentOwner::Tetra4, e);
+    }
+  }
+}
+
+// /SURF/SEG: one segment per record line, owned by the element that has that face (built at the first
+// segment whose nodes all exist, kept in `owners` for the surfaces after it).
+void surface_from_segments(ModelBuilder& b, const KeywordRecord& r, model::Surface& s,
+                           std::optional<FaceOwners>& owners) {
+  const auto& t = r.records;
+  const int c[4] = {t.column("n1"), t.column("n2"), t.column("n3"), t.column("n4")};
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    std::array<std::int32_t, 4> seg{};
+    bool ok = true;
+    for (int j = 0; j < 4; ++j) {
+      std::int64_t uid = c[j] >= 0 ? t.ints[c[j]][k] : 0;
+      if (j == 3 && uid == 0) uid = c[2] >= 0 ? t.ints[c[2]][k] : 0;
+      seg[j] = uid == 0 ? -1 : b.m_.nodes.index.find(uid);
+      if (seg[j] < 0) {
+        b.diags_.error(
+            Diag::MissingReference, b.at(t.pos[k], 11 + 10 * j), ModelBuilder::about(r),
+            "segment node n" + std::to_string(j + 1) + " = " + std::to_string(uid) + " does not exist");
+        ok = false;
+      }
+    }
+    if (!ok) continue;
+    if (!owners) owners = face_owners(b.m_);
+    const auto it = owners->find(face_key(seg));
+    push_segment(s, seg, it == owners->end() ? model::SegmentOwner::None : it->second.first,
+                 it == owners->end() ? kNone : it->second.second);
+  }
+}
+
+bool part_has_solid(const model::Model& m, std::int32_t part) {
+  bool has_solid = false;
+  for (std::size_t e = 0; e < m.bricks.size() && !has_solid; ++e) has_solid = m.bricks.part[e] == part;
+  for (std::size_t e = 0; e < m.tetras.size() && !has_solid; ++e) has_solid = m.tetras.part[e] == part;
+  return has_solid;
+}
+
+// The parts a /SURF/PART list names, in tagging order, with their tags in `tag` (1, or -1 for a flipped
+// part); `shells_only` (plain /SURF/PART) refuses solid parts.
+std::vector<std::int32_t> tag_surface_parts(ModelBuilder& b, const KeywordRecord& r, bool shells_only,
+                                            std::vector<std::int8_t>& tag) {
+  // Each part once: the positive ids are tagged first, then the negative ones, and the first tag stays,
+  // so a part listed both ways keeps its elements' orientation.
+  std::vector<std::int32_t> order;  // tagged parts in tagging order
+  for (const bool negatives : {false, true}) {
+    for (std::size_t k = 0; k < r.ids.size(); ++k) {
+      const bool flip = r.ids[k] < 0;
+      if (flip != negatives) continue;
+      const std::int64_t id = flip ? -r.ids[k] : r.ids[k];
+      const auto it = b.part_ids_.find(id);
+      if (it == b.part_ids_.end()) {
+        b.diags_.error(
+            Diag::MissingReference, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+            "part " + std::to_string(id) + " does not exist (no /PART/" + std::to_string(id) + ")");
+        continue;
+      }
+      const auto part = it->second;
+      if (shells_only && part_has_solid(b.m_, part))
+        b.diags_.error(Diag::PartWrongKind, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+                       "part " + std::to_string(id) +
+                           " is a solid part: /SURF/PART takes shell parts only; use /SURF/PART/EXT for the "
+                           "outer faces of solid parts, or /SURF/PART/ALL for all their faces");
+      if (tag[part] == 0) {
+        tag[part] = flip ? -1 : 1;
+        order.push_back(part);
+      }
+    }
+  }
+  return order;
+}
+
+// The faces of the solids of the tagged parts, less those a shell of a tagged part covers; `ext` leaves
+// out the inner faces too.
+void push_part_solid_faces(const model::Model& m, model::Surface& s, const std::vector<std::int8_t>& tag,
+                           bool ext) {
+  auto listed = [&](std::int32_t part) { return part != kNone && tag[part] != 0; };
+  std::set<FaceKey> covered;
+  for (std::size_t e = 0; e < m.shells.size(); ++e) {
+    if (!listed(m.shells.part[e])) continue;
+    const auto* c = &m.shells.conn[4 * e];
+    std::array<std::int32_t, 4> f{c[0], c[1], c[2], c[3]};
+    // A degenerate 4-node shell covers no triangle face: Radioss looks for 3-node shells there.
+    if (keep_distinct(f) == 4) covered.insert(distinct_key(f, 4));
+  }
+  for (std::size_t e = 0; e < m.shells3.size(); ++e) {
+    if (!listed(m.shells3.part[e])) continue;
+    const auto* c = &m.shells3.conn[3 * e];
+    std::array<std::int32_t, 4> f{c[0], c[1], c[2], c[2]};
+    if (keep_distinct(f) == 3) covered.insert(distinct_key(f, 3));
+  }
+  std::vector<std::uint8_t> chosen(m.bricks.size(), 0);
+  std::vector<std::int32_t> bricks;
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+    if (!listed(m.bricks.part[e])) continue;
+    chosen[e] = 1;
+    bricks.push_back(static_cast<std::int32_t>(e));
+  }
+  std::vector<std::uint8_t> chosen_tetras(m.tetras.size(), 0);
+  std::vector<std::int32_t> tetras;
+  for (std::size_t e = 0; e < m.tetras.size(); ++e) {
+    if (!listed(m.tetras.part[e])) continue;
+    chosen_tetras[e] = 1;
+    tetras.push_back(static_cast<std::int32_t>(e));
+  }
+  push_solid_faces(m, s, bricks, tetras, ext ? &chosen : nullptr, ext ? &chosen_tetras : nullptr, covered);
+}
+
+// /SURF/PART, /SURF/PART/EXT, /SURF/PART/ALL: the shells of the parts listed, then for EXT and ALL the
+// faces of their solids.
+void surface_from_parts(ModelBuilder& b, const KeywordRecord& r, model::Surface& s, std::string_view path) {
+  const bool ext = path == "/SURF/PART/EXT";
+  const bool all = path == "/SURF/PART/ALL";
+  const auto& m = b.m_;
+  std::vector<std::int8_t> tag(m.parts.size(), 0);
+  for (const auto part : tag_surface_parts(b, r, !ext && !all, tag)) {
+    for (std::size_t e = 0; e < m.shells.size(); ++e)
+      if (m.shells.part[e] == part) push_shell(m, s, static_cast<std::int32_t>(e), tag[part] < 0);
+    for (std::size_t e = 0; e < m.shells3.size(); ++e)
+      if (m.shells3.part[e] == part) push_shell3(m, s, static_cast<std::int32_t>(e), tag[part] < 0);
+  }
+  if (ext || all) push_part_solid_faces(m, s, tag, ext);
+}
+
+// /SURF/GRSHEL, /SURF/GRSH3N: one segment per element of the groups listed.
+void surface_from_shell_groups(ModelBuilder& b, const KeywordRecord& r, model::Surface& s,
+                               model::ElementType type) {
+  const auto& fam = family(type);
+  // As for parts: positive ids tagged first, the first tag stays, a negative tag flips the segment.
+  std::vector<std::int8_t> tag(b.block(type).size(), 0);
+  std::vector<std::int32_t> order;
+  for (const bool negatives : {false, true}) {
+    for (std::size_t k = 0; k < r.ids.size(); ++k) {
+      const bool flip = r.ids[k] < 0;
+      if (flip != negatives) continue;
+      const std::int64_t id = flip ? -r.ids[k] : r.ids[k];
+      const auto* g = b.element_group(type, id);
+      if (!g) {
+        b.diags_.error(Diag::MissingReference, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+                       std::string(fam.element) + " group " + std::to_string(id) + " does not exist (no " +
+                           std::string(fam.root) + "/.../" + std::to_string(id) + ")");
+        continue;
+      }
+      for (const auto e : g->elements) {
+        if (tag[e] != 0) continue;
+        tag[e] = flip ? -1 : 1;
+        order.push_back(e);
+      }
+    }
+  }
+  for (const auto e : order) {
+    if (type == model::ElementType::Shell4)
+      push_shell(b.m_, s, e, tag[e] < 0);
+    else
+      push_shell3(b.m_, s, e, tag[e] < 0);
+  }
+}
+
+// /SURF/GRBRIC/EXT, /SURF/GRBRIC/FREE (`free`): the outer faces of the bricks of the groups listed.
+void surface_from_brick_groups(ModelBuilder& b, const KeywordRecord& r, model::Surface& s, bool free) {
+  // Brick faces keep their outward orientation: a negative group id counts as a positive one.
+  std::vector<std::uint8_t> chosen(b.m_.bricks.size(), 0);
+  std::vector<std::int32_t> bricks;
+  for (std::size_t k = 0; k < r.ids.size(); ++k) {
+    const std::int64_t id = r.ids[k] < 0 ? -r.ids[k] : r.ids[k];
+    const auto* g = b.element_group(model::ElementType::Brick8, id);
+    if (!g) {
+      b.diags_.error(Diag::MissingReference, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+                     "brick group " + std::to_string(id) + " does not exist (no /GRBRIC/.../" +
+                         std::to_string(id) + ")");
+      continue;
+    }
+    for (const auto e : g->elements) {
+      if (chosen[e]) continue;
+      chosen[e] = 1;
+      bricks.push_back(e);
+    }
+  }
+  // EXT: a face is inner when another brick of the groups has it; FREE: when any brick of the model has
+  // it.
+  const std::vector<std::uint8_t> every(free ? b.m_.bricks.size() : 0, 1);
+  push_solid_faces(b.m_, s, bricks, {}, free ? &every : &chosen, nullptr, {});
+}
+
+}  // namespace
+
 void ModelBuilder::build_surfaces() {
   std::unordered_map<std::int64_t, SourcePos> first;
   // Face lookup for /SURF/SEG owners, built only when needed.
-  std::map<FaceKey, std::pair<model::SegmentOwner, std::int32_t>> faces;
-  bool faces_built = false;
-  auto build_faces = [&] {
-    for (std::size_t e = 0; e < m_.shells.size(); ++e) {
-      const auto* c = &m_.shells.conn[4 * e];
-      faces.emplace(face_key({c[0], c[1], c[2], c[3]}),
-                    std::pair{model::SegmentOwner::Shell4, static_cast<std::int32_t>(e)});
-    }
-    for (std::size_t e = 0; e < m_.shells3.size(); ++e) {
-      const auto* c = &m_.shells3.conn[3 * e];
-      faces.emplace(face_key({c[0], c[1], c[2], c[2]}),
-                    std::pair{model::SegmentOwner::Shell3, static_cast<std::int32_t>(e)});
-    }
-    for (std::size_t e = 0; e < m_.bricks.size(); ++e) {
-      const auto* c = &m_.bricks.conn[8 * e];
-      for (const auto& f : model::kBrickFaces)
-        faces.emplace(face_key({c[f[0]], c[f[1]], c[f[2]], c[f[3]]}),
-                      std::pair{model::SegmentOwner::Brick8, static_cast<std::int32_t>(e)});
-    }
-    for (std::size_t e = 0; e < m_.tetras.size(); ++e) {
-      const auto* c = &m_.tetras.conn[4 * e];
-      for (const auto& f : model::kTetraFaces)
-        faces.emplace(face_key({c[f[0]], c[f[1]], c[f[2]], c[f[2]]}),
-                      std::pair{model::SegmentOwner::Tetra4, static_cast<std::int32_t>(e)});
-    }
-    faces_built = true;
-  };
+  std::optional<FaceOwners> owners;
   for (const auto& r : deck_.records) {
     const auto path = r.decl->path;
     if (path.rfind("/SURF/", 0) != 0) continue;
@@ -634,240 +1061,15 @@ void ModelBuilder::build_surfaces() {
     s.id = r.id;
     s.title = r.title;
     s.kind = std::string(path.substr(6));
-    auto push = [&](std::array<std::int32_t, 4> seg, model::SegmentOwner type, std::int32_t owner) {
-      s.segments.push_back(seg);
-      s.owner_type.push_back(type);
-      s.owner.push_back(owner);
-    };
-    // A shell as a segment, as the element is numbered, or flipped.
-    auto push_shell = [&](std::int32_t e, bool flip) {
-      const auto* c = &m_.shells.conn[4 * static_cast<std::size_t>(e)];
-      if (!flip)
-        push({c[0], c[1], c[2], c[3]}, model::SegmentOwner::Shell4, e);
-      else if (c[2] == c[3])
-        push({c[0], c[2], c[1], c[1]}, model::SegmentOwner::Shell4, e);
-      else
-        push({c[0], c[3], c[2], c[1]}, model::SegmentOwner::Shell4, e);
-    };
-    auto push_shell3 = [&](std::int32_t e, bool flip) {
-      const auto* c = &m_.shells3.conn[3 * static_cast<std::size_t>(e)];
-      if (flip)
-        push({c[0], c[2], c[1], c[1]}, model::SegmentOwner::Shell3, e);
-      else
-        push({c[0], c[1], c[2], c[2]}, model::SegmentOwner::Shell3, e);
-    };
-    // The faces of `bricks`, then of `tetras`, in that order, each pointing out of its element (a tetrahedron
-    // face is a triangle, n4 = n3). With `neighbours` (bricks) and `tetra_neighbours`, a face that another
-    // marked solid also has is an inner face and is left out; a face whose key is in `covered` is left out
-    // too (a shell already gives that segment).
-    auto push_solid_faces =
-        [&](const std::vector<std::int32_t>& bricks, const std::vector<std::int32_t>& tetras,
-            const std::vector<std::uint8_t>* neighbours, const std::vector<std::uint8_t>* tetra_neighbours,
-            const std::set<FaceKey>& covered) {
-          std::map<FaceKey, int> sharing;  // how many marked solids have the face (each solid counted once)
-          if (tetra_neighbours) {
-            for (std::size_t e = 0; e < m_.tetras.size(); ++e) {
-              if (!(*tetra_neighbours)[e]) continue;
-              const auto* c = &m_.tetras.conn[4 * e];
-              for (const auto& f : model::kTetraFaces) {
-                std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[2]]};
-                const int n = keep_distinct(seg);
-                if (n >= 3) ++sharing[distinct_key(seg, n)];
-              }
-            }
-          }
-          if (neighbours) {
-            for (std::size_t e = 0; e < m_.bricks.size(); ++e) {
-              if (!(*neighbours)[e]) continue;
-              const auto* c = &m_.bricks.conn[8 * e];
-              std::set<FaceKey> own;
-              for (const auto& f : model::kBrickFaces) {
-                std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
-                const int n = keep_distinct(seg);
-                if (n >= 3) own.insert(distinct_key(seg, n));
-              }
-              for (const auto& k : own) ++sharing[k];
-            }
-          }
-          for (const auto e : bricks) {
-            const auto* c = &m_.bricks.conn[8 * static_cast<std::size_t>(e)];
-            for (const auto& f : model::kBrickFaces) {
-              std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
-              const int n = keep_distinct(seg);
-              if (n < 3) continue;
-              const auto key = distinct_key(seg, n);
-              if (neighbours && sharing[key] > 1) continue;
-              if (covered.count(key)) continue;
-              push(seg, model::SegmentOwner::Brick8, e);
-            }
-          }
-          for (const auto e : tetras) {
-            const auto* c = &m_.tetras.conn[4 * static_cast<std::size_t>(e)];
-            for (const auto& f : model::kTetraFaces) {
-              std::array<std::int32_t, 4> seg{c[f[0]], c[f[1]], c[f[2]], c[f[2]]};
-              const int n = keep_distinct(seg);
-              if (n < 3) continue;
-              const auto key = distinct_key(seg, n);
-              if (tetra_neighbours && sharing[key] > 1) continue;
-              if (covered.count(key)) continue;
-              push(seg, model::SegmentOwner::Tetra4, e);
-            }
-          }
-        };
     if (path == "/SURF/SEG") {
-      const auto& t = r.records;
-      const int c[4] = {t.column("n1"), t.column("n2"), t.column("n3"), t.column("n4")};
-      for (std::size_t k = 0; k < t.size(); ++k) {
-        std::array<std::int32_t, 4> seg{};
-        bool ok = true;
-        for (int j = 0; j < 4; ++j) {
-          std::int64_t uid = c[j] >= 0 ? t.ints[c[j]][k] : 0;
-          if (j == 3 && uid == 0) uid = c[2] >= 0 ? t.ints[c[2]][k] : 0;
-          seg[j] = uid == 0 ? -1 : m_.nodes.index.find(uid);
-          if (seg[j] < 0) {
-            diags_.error(
-                Diag::MissingReference, at(t.pos[k], 11 + 10 * j), about(r),
-                "segment node n" + std::to_string(j + 1) + " = " + std::to_string(uid) + " does not exist");
-            ok = false;
-          }
-        }
-        if (!ok) continue;
-        if (!faces_built) build_faces();
-        const auto it = faces.find(face_key(seg));
-        push(seg, it == faces.end() ? model::SegmentOwner::None : it->second.first,
-             it == faces.end() ? kNone : it->second.second);
-      }
+      surface_from_segments(*this, r, s, owners);
     } else if (path == "/SURF/PART" || path == "/SURF/PART/EXT" || path == "/SURF/PART/ALL") {
-      const bool ext = path == "/SURF/PART/EXT";
-      const bool all = path == "/SURF/PART/ALL";
-      // Each part once: the positive ids are tagged first, then the negative ones, and the first tag stays,
-      // so a part listed both ways keeps its elements' orientation.
-      std::vector<std::int8_t> tag(m_.parts.size(), 0);
-      std::vector<std::int32_t> order;  // tagged parts in tagging order
-      for (const bool negatives : {false, true}) {
-        for (std::size_t k = 0; k < r.ids.size(); ++k) {
-          const bool flip = r.ids[k] < 0;
-          if (flip != negatives) continue;
-          const std::int64_t id = flip ? -r.ids[k] : r.ids[k];
-          const auto it = part_ids_.find(id);
-          if (it == part_ids_.end()) {
-            diags_.error(
-                Diag::MissingReference, at(r.id_pos[k], 1), about(r),
-                "part " + std::to_string(id) + " does not exist (no /PART/" + std::to_string(id) + ")");
-            continue;
-          }
-          const auto part = it->second;
-          if (!ext && !all) {
-            bool has_solid = false;
-            for (std::size_t e = 0; e < m_.bricks.size() && !has_solid; ++e)
-              has_solid = m_.bricks.part[e] == part;
-            for (std::size_t e = 0; e < m_.tetras.size() && !has_solid; ++e)
-              has_solid = m_.tetras.part[e] == part;
-            if (has_solid)
-              diags_.error(
-                  Diag::PartWrongKind, at(r.id_pos[k], 1), about(r),
-                  "part " + std::to_string(id) +
-                      " is a solid part: /SURF/PART takes shell parts only; use /SURF/PART/EXT for the "
-                      "outer faces of solid parts, or /SURF/PART/ALL for all their faces");
-          }
-          if (tag[part] == 0) {
-            tag[part] = flip ? -1 : 1;
-            order.push_back(part);
-          }
-        }
-      }
-      for (const auto part : order) {
-        for (std::size_t e = 0; e < m_.shells.size(); ++e)
-          if (m_.shells.part[e] == part) push_shell(static_cast<std::int32_t>(e), tag[part] < 0);
-        for (std::size_t e = 0; e < m_.shells3.size(); ++e)
-          if (m_.shells3.part[e] == part) push_shell3(static_cast<std::int32_t>(e), tag[part] < 0);
-      }
-      if (ext || all) {
-        auto listed = [&](std::int32_t part) { return part != kNone && tag[part] != 0; };
-        std::set<FaceKey> covered;
-        for (std::size_t e = 0; e < m_.shells.size(); ++e) {
-          if (!listed(m_.shells.part[e])) continue;
-          const auto* c = &m_.shells.conn[4 * e];
-          std::array<std::int32_t, 4> f{c[0], c[1], c[2], c[3]};
-          // A degenerate 4-node shell covers no triangle face: Radioss looks for 3-node shells there.
-          if (keep_distinct(f) == 4) covered.insert(distinct_key(f, 4));
-        }
-        for (std::size_t e = 0; e < m_.shells3.size(); ++e) {
-          if (!listed(m_.shells3.part[e])) continue;
-          const auto* c = &m_.shells3.conn[3 * e];
-          std::array<std::int32_t, 4> f{c[0], c[1], c[2], c[2]};
-          if (keep_distinct(f) == 3) covered.insert(distinct_key(f, 3));
-        }
-        std::vector<std::uint8_t> chosen(m_.bricks.size(), 0);
-        std::vector<std::int32_t> bricks;
-        for (std::size_t e = 0; e < m_.bricks.size(); ++e) {
-          if (!listed(m_.bricks.part[e])) continue;
-          chosen[e] = 1;
-          bricks.push_back(static_cast<std::int32_t>(e));
-        }
-        std::vector<std::uint8_t> chosen_tetras(m_.tetras.size(), 0);
-        std::vector<std::int32_t> tetras;
-        for (std::size_t e = 0; e < m_.tetras.size(); ++e) {
-          if (!listed(m_.tetras.part[e])) continue;
-          chosen_tetras[e] = 1;
-          tetras.push_back(static_cast<std::int32_t>(e));
-        }
-        push_solid_faces(bricks, tetras, ext ? &chosen : nullptr, ext ? &chosen_tetras : nullptr, covered);
-      }
+      surface_from_parts(*this, r, s, path);
     } else if (path == "/SURF/GRSHEL" || path == "/SURF/GRSH3N") {
-      const auto type = path == "/SURF/GRSHEL" ? model::ElementType::Shell4 : model::ElementType::Shell3;
-      const auto& fam = family(type);
-      // As for parts: positive ids tagged first, the first tag stays, a negative tag flips the segment.
-      std::vector<std::int8_t> tag(block(type).size(), 0);
-      std::vector<std::int32_t> order;
-      for (const bool negatives : {false, true}) {
-        for (std::size_t k = 0; k < r.ids.size(); ++k) {
-          const bool flip = r.ids[k] < 0;
-          if (flip != negatives) continue;
-          const std::int64_t id = flip ? -r.ids[k] : r.ids[k];
-          const auto* g = element_group(type, id);
-          if (!g) {
-            diags_.error(Diag::MissingReference, at(r.id_pos[k], 1), about(r),
-                         std::string(fam.element) + " group " + std::to_string(id) + " does not exist (no " +
-                             std::string(fam.root) + "/.../" + std::to_string(id) + ")");
-            continue;
-          }
-          for (const auto e : g->elements) {
-            if (tag[e] != 0) continue;
-            tag[e] = flip ? -1 : 1;
-            order.push_back(e);
-          }
-        }
-      }
-      for (const auto e : order) {
-        if (type == model::ElementType::Shell4)
-          push_shell(e, tag[e] < 0);
-        else
-          push_shell3(e, tag[e] < 0);
-      }
+      surface_from_shell_groups(
+          *this, r, s, path == "/SURF/GRSHEL" ? model::ElementType::Shell4 : model::ElementType::Shell3);
     } else if (path == "/SURF/GRBRIC/EXT" || path == "/SURF/GRBRIC/FREE") {
-      // Brick faces keep their outward orientation: a negative group id counts as a positive one.
-      std::vector<std::uint8_t> chosen(m_.bricks.size(), 0);
-      std::vector<std::int32_t> bricks;
-      for (std::size_t k = 0; k < r.ids.size(); ++k) {
-        const std::int64_t id = r.ids[k] < 0 ? -r.ids[k] : r.ids[k];
-        const auto* g = element_group(model::ElementType::Brick8, id);
-        if (!g) {
-          diags_.error(Diag::MissingReference, at(r.id_pos[k], 1), about(r),
-                       "brick group " + std::to_string(id) + " does not exist (no /GRBRIC/.../" +
-                           std::to_string(id) + ")");
-          continue;
-        }
-        for (const auto e : g->elements) {
-          if (chosen[e]) continue;
-          chosen[e] = 1;
-          bricks.push_back(e);
-        }
-      }
-      // EXT: a face is inner when another brick of the groups has it; FREE: when any brick of the model has
-      // it.
-      const std::vector<std::uint8_t> every(path == "/SURF/GRBRIC/FREE" ? m_.bricks.size() : 0, 1);
-      push_solid_faces(bricks, {}, path == "/SURF/GRBRIC/EXT" ? &chosen : &every, nullptr, {});
+      surface_from_brick_groups(*this, r, s, path == "/SURF/GRBRIC/FREE");
     } else if (path == "/SURF/GRBRIC") {
       diags_.error(Diag::PartWrongKind, at(r.pos, 1), about(r),
                    "a brick group makes a surface only as /SURF/GRBRIC/EXT (the faces no other brick of the "

@@ -615,8 +615,8 @@ model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// Time histories: the accepted names per kind (docs/keywords.md /TH/*,
-// docs/theory/results-format.md section 7).
+// Time histories: the accepted names per kind (docs/keywords.md /TH/*, docs/theory/results-format.md
+// section 7).
 
 struct ThGroup {
   std::string_view name;
@@ -638,7 +638,104 @@ struct ThKindDef {
   std::vector<ThZero> zero;             // of `names`, those written as 0
 };
 
-// Names and DEF sets as OpenRadioss defines them (its starter's /TH variable tables; docs/keywords.md /TH).
+// Names and DEF sets as OpenRadioss defines them (its starter's /TH variable tables; docs/keywords.md /TH),
+// one function for each kind whose table is long.
+ThKindDef th_node_kind() {
+  return {"/TH/NODE",
+          model::ThKind::Node,
+          "node",
+          "/NODE",
+          {{"DEF", {"DX", "DY", "DZ", "VX", "VY", "VZ"}},
+           {"D", {"DX", "DY", "DZ"}},
+           {"V", {"VX", "VY", "VZ"}},
+           {"A", {"AX", "AY", "AZ"}},
+           {"VR", {"VRX", "VRY", "VRZ"}},
+           {"AR", {"ARX", "ARY", "ARZ"}},
+           {"XYZ", {"X", "Y", "Z"}}},
+          {"DX",  "DY",  "DZ",  "VX",    "VY",    "VZ",    "AX",     "AY",     "AZ",
+           "VRX", "VRY", "VRZ", "ARX",   "ARY",   "ARZ",   "DRX",    "DRY",    "DRZ",
+           "X",   "Y",   "Z",   "REACX", "REACY", "REACZ", "REACXX", "REACYY", "REACZZ"},
+          {{"DRX", "rotation angles are not integrated"},
+           {"DRY", "rotation angles are not integrated"},
+           {"DRZ", "rotation angles are not integrated"}}};
+}
+
+ThKindDef th_rbody_kind() {
+  static const std::vector<std::string_view> kRbody = {
+      "FX",  "FY",  "FZ",  "MX",  "MY",  "MZ",   "RX",  "RY",  "RZ",  "FXI", "FYI", "FZI", "MXI",   "MYI",
+      "MZI", "X",   "Y",   "Z",   "DX",  "DY",   "DZ",  "VX",  "VY",  "VZ",  "AX",  "AY",  "AZ",    "VRX",
+      "VRY", "VRZ", "ARX", "ARY", "ARZ", "MASS", "IXX", "IYY", "IZZ", "IXY", "IYZ", "IZX", "STATUS"};
+  static const std::string_view kNoType14 =
+      "forces of TYPE14 and TYPE15 interfaces, which radx does not have";
+  return {"/TH/RBODY",
+          model::ThKind::Rbody,
+          "rigid body",
+          "/RBODY",
+          {{"DEF", {"FX", "FY", "FZ", "MX", "MY", "MZ", "RX", "RY", "RZ"}},
+           {"F", {"FX", "FY", "FZ"}},
+           {"M", {"MX", "MY", "MZ"}},
+           {"R", {"RX", "RY", "RZ"}},
+           {"FI", {"FXI", "FYI", "FZI"}},
+           {"MI", {"MXI", "MYI", "MZI"}},
+           {"D", {"DX", "DY", "DZ"}},
+           {"V", {"VX", "VY", "VZ", "VRX", "VRY", "VRZ"}},
+           {"A", {"AX", "AY", "AZ", "ARX", "ARY", "ARZ"}},
+           {"XYZ", {"X", "Y", "Z"}}},
+          kRbody,
+          {{"FXI", kNoType14},
+           {"FYI", kNoType14},
+           {"FZI", kNoType14},
+           {"MXI", kNoType14},
+           {"MYI", kNoType14},
+           {"MZI", kNoType14}}};
+}
+
+// OpenRadioss's DEF set and groups (hm_read_thgrou.F); of its 39 names radx computes the forces,
+// moments and centre, not the work, kinetic energies and cut-file errors.
+ThKindDef th_section_kind() {
+  return {"/TH/SECTIO",
+          model::ThKind::Section,
+          "section",
+          "/SECT",
+          {{"DEF", {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "M1", "M2", "M3"}},
+           {"FN", {"FNX", "FNY", "FNZ"}},
+           {"FT", {"FTX", "FTY", "FTZ"}},
+           {"M", {"M1", "M2", "M3"}},
+           {"CENTER", {"CX", "CY", "CZ"}},
+           {"GLOBAL", {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "MX", "MY", "MZ"}},
+           {"LOCAL", {"M1", "M2", "M3", "F1", "F2", "F3"}}},
+          {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "M1", "M2", "M3", "MX", "MY", "MZ", "F1", "F2", "F3",
+           "CX", "CY", "CZ"},
+          {}};
+}
+
+// OpenRadioss's spring names (th_spring.cfg): on a TYPE4 spring FX is the axial force (> 0 in tension)
+// and LX the elongation; the other directions and the moments are those of 6-dof springs.
+ThKindDef th_spring_kind() {
+  static const std::string_view kAxialSpring =
+      "a TYPE4 spring is axial: FX and LX only (TYPE8 and TYPE13 springs write them)";
+  return {"/TH/SPRING",
+          model::ThKind::Spring,
+          "spring",
+          "/SPRING",
+          {{"DEF", {"OFF", "FX", "LX", "IE"}},
+           {"F", {"FX", "FY", "FZ"}},
+           {"M", {"MX", "MY", "MZ"}},
+           {"L", {"LX", "LY", "LZ"}},
+           {"R", {"RX", "RY", "RZ"}}},
+          {"OFF", "FX", "FY", "FZ", "MX", "MY", "MZ", "LX", "LY", "LZ", "RX", "RY", "RZ", "IE"},
+          {{"FY", kAxialSpring},
+           {"FZ", kAxialSpring},
+           {"MX", kAxialSpring},
+           {"MY", kAxialSpring},
+           {"MZ", kAxialSpring},
+           {"LY", kAxialSpring},
+           {"LZ", kAxialSpring},
+           {"RX", kAxialSpring},
+           {"RY", kAxialSpring},
+           {"RZ", kAxialSpring}}};
+}
+
 const std::vector<ThKindDef>& th_kinds() {
   using K = model::ThKind;
   static const std::vector<std::string_view> kForces = {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"};
@@ -658,32 +755,8 @@ const std::vector<ThKindDef>& th_kinds() {
   static const std::vector<std::string_view> kBrick = {"OFF",  "SX",   "SY",   "SZ",   "SXY", "SYZ",
                                                        "SXZ",  "IE",   "DENS", "BULK", "VOL", "PLAS",
                                                        "TEMP", "PLSR", "VX",   "VY",   "VZ"};
-  static const std::vector<std::string_view> kRbody = {
-      "FX",  "FY",  "FZ",  "MX",  "MY",  "MZ",   "RX",  "RY",  "RZ",  "FXI", "FYI", "FZI", "MXI",   "MYI",
-      "MZI", "X",   "Y",   "Z",   "DX",  "DY",   "DZ",  "VX",  "VY",  "VZ",  "AX",  "AY",  "AZ",    "VRX",
-      "VRY", "VRZ", "ARX", "ARY", "ARZ", "MASS", "IXX", "IYY", "IZZ", "IXY", "IYZ", "IZX", "STATUS"};
-  static const std::string_view kAxialSpring =
-      "a TYPE4 spring is axial: FX and LX only (TYPE8 and TYPE13 springs write them)";
-  static const std::string_view kNoType14 =
-      "forces of TYPE14 and TYPE15 interfaces, which radx does not have";
   static const std::vector<ThKindDef> kinds = {
-      {"/TH/NODE",
-       K::Node,
-       "node",
-       "/NODE",
-       {{"DEF", {"DX", "DY", "DZ", "VX", "VY", "VZ"}},
-        {"D", {"DX", "DY", "DZ"}},
-        {"V", {"VX", "VY", "VZ"}},
-        {"A", {"AX", "AY", "AZ"}},
-        {"VR", {"VRX", "VRY", "VRZ"}},
-        {"AR", {"ARX", "ARY", "ARZ"}},
-        {"XYZ", {"X", "Y", "Z"}}},
-       {"DX",  "DY",  "DZ",  "VX",    "VY",    "VZ",    "AX",     "AY",     "AZ",
-        "VRX", "VRY", "VRZ", "ARX",   "ARY",   "ARZ",   "DRX",    "DRY",    "DRZ",
-        "X",   "Y",   "Z",   "REACX", "REACY", "REACZ", "REACXX", "REACYY", "REACZZ"},
-       {{"DRX", "rotation angles are not integrated"},
-        {"DRY", "rotation angles are not integrated"},
-        {"DRZ", "rotation angles are not integrated"}}},
+      th_node_kind(),
       {"/TH/PART", K::Part, "part", "/PART", {{"DEF", kPart}}, kPart, {}},
       {"/TH/SUBS", K::Subset, "subset", "/SUBSET", {{"DEF", kPart}}, kPart, {}},
       {"/TH/INTER",
@@ -703,43 +776,8 @@ const std::vector<ThKindDef>& th_kinds() {
        {{"DEF", kBrickDef}, {"STRESS", kStress}},
        kBrick,
        {{"TEMP", "radx has no thermal analysis"}}},
-      {"/TH/RBODY",
-       K::Rbody,
-       "rigid body",
-       "/RBODY",
-       {{"DEF", {"FX", "FY", "FZ", "MX", "MY", "MZ", "RX", "RY", "RZ"}},
-        {"F", {"FX", "FY", "FZ"}},
-        {"M", {"MX", "MY", "MZ"}},
-        {"R", {"RX", "RY", "RZ"}},
-        {"FI", {"FXI", "FYI", "FZI"}},
-        {"MI", {"MXI", "MYI", "MZI"}},
-        {"D", {"DX", "DY", "DZ"}},
-        {"V", {"VX", "VY", "VZ", "VRX", "VRY", "VRZ"}},
-        {"A", {"AX", "AY", "AZ", "ARX", "ARY", "ARZ"}},
-        {"XYZ", {"X", "Y", "Z"}}},
-       kRbody,
-       {{"FXI", kNoType14},
-        {"FYI", kNoType14},
-        {"FZI", kNoType14},
-        {"MXI", kNoType14},
-        {"MYI", kNoType14},
-        {"MZI", kNoType14}}},
-      // OpenRadioss's DEF set and groups (hm_read_thgrou.F); of its 39 names radx computes the forces,
-      // moments and centre, not the work, kinetic energies and cut-file errors.
-      {"/TH/SECTIO",
-       K::Section,
-       "section",
-       "/SECT",
-       {{"DEF", {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "M1", "M2", "M3"}},
-        {"FN", {"FNX", "FNY", "FNZ"}},
-        {"FT", {"FTX", "FTY", "FTZ"}},
-        {"M", {"M1", "M2", "M3"}},
-        {"CENTER", {"CX", "CY", "CZ"}},
-        {"GLOBAL", {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "MX", "MY", "MZ"}},
-        {"LOCAL", {"M1", "M2", "M3", "F1", "F2", "F3"}}},
-       {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "M1", "M2", "M3", "MX", "MY", "MZ", "F1", "F2", "F3", "CX",
-        "CY", "CZ"},
-       {}},
+      th_rbody_kind(),
+      th_section_kind(),
       // AX AY AZ: the filtered acceleration on the skew axes; WX WY WZ: the velocity integrated from the
       // unfiltered acceleration on the same axes (OpenRadioss's names and sets: DEF is the accelerations).
       {"/TH/ACCEL",
@@ -749,28 +787,7 @@ const std::vector<ThKindDef>& th_kinds() {
        {{"DEF", {"AX", "AY", "AZ"}}, {"W", {"WX", "WY", "WZ"}}},
        {"AX", "AY", "AZ", "WX", "WY", "WZ"},
        {}},
-      // OpenRadioss's spring names (th_spring.cfg): on a TYPE4 spring FX is the axial force (> 0 in tension)
-      // and LX the elongation; the other directions and the moments are those of 6-dof springs.
-      {"/TH/SPRING",
-       K::Spring,
-       "spring",
-       "/SPRING",
-       {{"DEF", {"OFF", "FX", "LX", "IE"}},
-        {"F", {"FX", "FY", "FZ"}},
-        {"M", {"MX", "MY", "MZ"}},
-        {"L", {"LX", "LY", "LZ"}},
-        {"R", {"RX", "RY", "RZ"}}},
-       {"OFF", "FX", "FY", "FZ", "MX", "MY", "MZ", "LX", "LY", "LZ", "RX", "RY", "RZ", "IE"},
-       {{"FY", kAxialSpring},
-        {"FZ", kAxialSpring},
-        {"MX", kAxialSpring},
-        {"MY", kAxialSpring},
-        {"MZ", kAxialSpring},
-        {"LY", kAxialSpring},
-        {"LZ", kAxialSpring},
-        {"RX", kAxialSpring},
-        {"RY", kAxialSpring},
-        {"RZ", kAxialSpring}}},
+      th_spring_kind(),
   };
   return kinds;
 }

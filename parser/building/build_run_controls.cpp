@@ -138,6 +138,10 @@ class Builder {
   void anim_dt(model::RunControls& rc);
   void anim_names(model::RunControls& rc);
   void time_steps(model::RunControls& rc);
+  void step_bounds(model::RunControls& rc);
+  void element_time_steps(model::RunControls& rc);
+  void nodal_time_step(model::RunControls& rc);
+  void interface_time_step(model::RunControls& rc);
   void stop(model::RunControls& rc);
   void rbodies(model::RunControls& rc);
   void versions();
@@ -331,25 +335,36 @@ void Builder::anim_names(model::RunControls& rc) {
 }
 
 void Builder::time_steps(model::RunControls& rc) {
-  using model::DtAction;
   rc.global = model::DtControl{};
-  rc.global.action = DtAction::Stop;
-  if (const EngineRecord* r = single("/DT")) read_dt(*r, rc.global, kDefaultScale, 0.0, DtAction::Stop);
-  if (const EngineRecord* r = single("/DTIX")) {
-    const double ini = r->value(0, 0), mx = r->value(0, 1);
-    if (ini < 0)
-      error(*r, Diag::ValueOutOfRange, "DT_ini = " + num(ini) + " is negative; accepted: >= 0 (0: no bound)");
-    if (mx < 0)
-      error(*r, Diag::ValueOutOfRange,
-            "DT_max = " + num(mx) + " is negative; accepted: > 0, or 0 for no bound");
-    if (mx > 0 && ini > mx)
-      error(*r, Diag::InconsistentValues,
-            "DT_ini = " + num(ini) + " is above DT_max = " + num(mx) +
-                ": the first step cannot exceed the largest");
-    rc.dt_initial = std::max(0.0, ini);
-    rc.dt_max = mx > 0 ? mx : 1e30;
-  }
+  rc.global.action = model::DtAction::Stop;
+  if (const EngineRecord* r = single("/DT"))
+    read_dt(*r, rc.global, kDefaultScale, 0.0, model::DtAction::Stop);
+  step_bounds(rc);
+  element_time_steps(rc);
+  nodal_time_step(rc);
+  interface_time_step(rc);
+}
 
+// /DTIX: the first step and the largest one.
+void Builder::step_bounds(model::RunControls& rc) {
+  const EngineRecord* r = single("/DTIX");
+  if (!r) return;
+  const double ini = r->value(0, 0), mx = r->value(0, 1);
+  if (ini < 0)
+    error(*r, Diag::ValueOutOfRange, "DT_ini = " + num(ini) + " is negative; accepted: >= 0 (0: no bound)");
+  if (mx < 0)
+    error(*r, Diag::ValueOutOfRange,
+          "DT_max = " + num(mx) + " is negative; accepted: > 0, or 0 for no bound");
+  if (mx > 0 && ini > mx)
+    error(*r, Diag::InconsistentValues,
+          "DT_ini = " + num(ini) + " is above DT_max = " + num(mx) +
+              ": the first step cannot exceed the largest");
+  rc.dt_initial = std::max(0.0, ini);
+  rc.dt_max = mx > 0 ? mx : 1e30;
+}
+
+// /DT/BRICK/CST, /DT/SHELL/CST, /DT/SH_3N/CST: each element family's control, the global one unless given.
+void Builder::element_time_steps(model::RunControls& rc) {
   struct Fam {
     std::string_view path;
     model::DtControl* c;
@@ -359,7 +374,7 @@ void Builder::time_steps(model::RunControls& rc) {
     *f.c = rc.global;
     f.c->given = false;
     if (const EngineRecord* r = single(f.path)) {
-      read_dt(*r, *f.c, rc.global.scale, rc.global.t_min, DtAction::Constant);
+      read_dt(*r, *f.c, rc.global.scale, rc.global.t_min, model::DtAction::Constant);
       if (f.path == "/DT/BRICK/CST" && r->lines.size() > 1 &&
           std::any_of(r->lines[1].begin(), r->lines[1].end(), [](double x) { return x != 0; }))
         warning(*r, Diag::UnimplementedOption,
@@ -367,7 +382,10 @@ void Builder::time_steps(model::RunControls& rc) {
                 "Tmin only");
     }
   }
+}
 
+// /DT/NODA (no action at Tmin) or /DT/NODA/CST (mass added below Tmin, up to %AddedMass), not both.
+void Builder::nodal_time_step(model::RunControls& rc) {
   rc.nodal = model::DtControl{};
   if (const EngineRecord* r = single("/DT/NODA")) {
     // The action comes in the header: /DT/NODA/STOP reaches this declaration too (a text option).
@@ -383,41 +401,43 @@ void Builder::time_steps(model::RunControls& rc) {
                 ": the option is 0 or blank (a node group is read only by "
                 "/DT/NODA/CST/1)");
     else
-      read_dt(*r, rc.nodal, kDefaultScale, 0.0, DtAction::None);
+      read_dt(*r, rc.nodal, kDefaultScale, 0.0, model::DtAction::None);
   }
-  if (const EngineRecord* r = single("/DT/NODA/CST")) {
-    if (rc.nodal.given)
-      error(*r, Diag::DuplicateSingleton,
-            "/DT/NODA and /DT/NODA/CST are both given; give one nodal time step");
-    read_dt(*r, rc.nodal, kDefaultScale, 0.0, DtAction::AddMass);
-    const double pct = r->value(0, 2);
-    if (pct < 0)
+  const EngineRecord* r = single("/DT/NODA/CST");
+  if (!r) return;
+  if (rc.nodal.given)
+    error(*r, Diag::DuplicateSingleton, "/DT/NODA and /DT/NODA/CST are both given; give one nodal time step");
+  read_dt(*r, rc.nodal, kDefaultScale, 0.0, model::DtAction::AddMass);
+  const double pct = r->value(0, 2);
+  if (pct < 0)
+    error(*r, Diag::ValueOutOfRange,
+          "%AddedMass = " + num(pct) +
+              " is negative; give the added-mass percentage that stops the run "
+              "(0: no limit)");
+  else
+    rc.nodal_max_added_mass_pct = pct;
+  std::int64_t option = 0;
+  if (header_int(*r, 0, 0, option)) {
+    if (option != 0 && option != 1)
       error(*r, Diag::ValueOutOfRange,
-            "%AddedMass = " + num(pct) +
-                " is negative; give the added-mass percentage that stops the run "
-                "(0: no limit)");
-    else
-      rc.nodal_max_added_mass_pct = pct;
-    std::int64_t option = 0;
-    if (header_int(*r, 0, 0, option)) {
-      if (option != 0 && option != 1)
-        error(*r, Diag::ValueOutOfRange,
-              "/DT/NODA/CST/" + std::to_string(option) + ": the option is 0 or 1 (1: a node group follows)");
-      const double grnod = r->value(1, 0);
-      if (option == 1 && grnod != 0)
-        error(*r, Diag::UnimplementedOption,
-              "grnod_ID = " + num(grnod) +
-                  ": radx applies the nodal time step to every node; restricting it to a node group is not "
-                  "implemented (remove the option /1 and the group line)");
-    }
+            "/DT/NODA/CST/" + std::to_string(option) + ": the option is 0 or 1 (1: a node group follows)");
+    const double grnod = r->value(1, 0);
+    if (option == 1 && grnod != 0)
+      error(*r, Diag::UnimplementedOption,
+            "grnod_ID = " + num(grnod) +
+                ": radx applies the nodal time step to every node; restricting it to a node group is not "
+                "implemented (remove the option /1 and the group line)");
   }
+}
 
+// /DT/INTER/DEL (which has precedence), /DT/INTER/CST or /DT/INTER/LAG (not both).
+void Builder::interface_time_step(model::RunControls& rc) {
   rc.inter = model::DtControl{};
   const EngineRecord* cst = single("/DT/INTER/CST");
   const EngineRecord* del = single("/DT/INTER/DEL");
   const EngineRecord* lag = single("/DT/INTER/LAG");
   if (del) {
-    read_dt(*del, rc.inter, kDefaultScale, 0.0, DtAction::Delete);
+    read_dt(*del, rc.inter, kDefaultScale, 0.0, model::DtAction::Delete);
     for (const EngineRecord* other : {cst, lag})
       if (other)
         warning(*other, Diag::InconsistentValues,
@@ -431,9 +451,9 @@ void Builder::time_steps(model::RunControls& rc) {
               ") are both given; give one (for /INTER/LAGDT/TYPE7 both switch pairs to Lagrange "
               "multipliers; for /INTER/TYPE7, CST adds mass)");
   } else if (cst) {
-    read_dt(*cst, rc.inter, kDefaultScale, 0.0, DtAction::AddMass);
+    read_dt(*cst, rc.inter, kDefaultScale, 0.0, model::DtAction::AddMass);
   } else if (lag) {
-    read_dt(*lag, rc.inter, kDefaultScale, 0.0, DtAction::Lagrange);
+    read_dt(*lag, rc.inter, kDefaultScale, 0.0, model::DtAction::Lagrange);
   }
 }
 

@@ -53,6 +53,106 @@ std::int32_t frame_node(ModelBuilder& b, const KeywordRecord& r, std::string_vie
   return n;
 }
 
+// The frame nodes N1 N2 N3: all three given, or none with Iframe >= 10; given, they must span a plane.
+void check_section_frame(ModelBuilder& b, const KeywordRecord& r, const model::Section& s) {
+  const bool none = r.get_int("node_ID1") == 0 && r.get_int("node_ID2") == 0 && r.get_int("node_ID3") == 0;
+  const bool all = r.get_int("node_ID1") != 0 && r.get_int("node_ID2") != 0 && r.get_int("node_ID3") != 0;
+  if (!all && !(none && s.iframe >= 10)) {
+    b.error_at(r, "node_ID1", Diag::RequiredIdMissing,
+               "node_ID1, node_ID2 and node_ID3 define the section frame and plane: give all three (with "
+               "Iframe >= 10 all three may be 0: global axes, section normal Z)");
+  } else if (all && s.n1 != kNone && s.n2 != kNone && s.n3 != kNone) {
+    const auto& nodes = b.m_.nodes;
+    const Vec p1 = node_point(nodes, s.n1), p2 = node_point(nodes, s.n2), p3 = node_point(nodes, s.n3);
+    const Vec a{p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2]}, c{p3[0] - p1[0], p3[1] - p1[1], p3[2] - p1[2]};
+    const Vec n{a[1] * c[2] - a[2] * c[1], a[2] * c[0] - a[0] * c[2], a[0] * c[1] - a[1] * c[0]};
+    const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    const double lc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    const double ln = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    // sin of the angle N2-N1-N3 below 1e-5: the plane, hence the normal, is undefined.
+    if (la <= 0 || lc <= 0 || ln < 1e-5 * la * lc)
+      b.error_at(r, "node_ID1", Diag::InconsistentValues,
+                 "nodes " + std::to_string(r.get_int("node_ID1")) + ", " +
+                     std::to_string(r.get_int("node_ID2")) + " and " + std::to_string(r.get_int("node_ID3")) +
+                     " coincide or are aligned: the section plane and its normal are undefined; N3 must lie "
+                     "in the section plane, off the line N1 N2");
+  }
+}
+
+// What radx does not do, refused by name: a moving frame, contact forces, cut files, truss, beam and spring
+// groups.
+void refuse_section_options(ModelBuilder& b, const KeywordRecord& r) {
+  if (const auto frame = r.get_int("Frame_ID"); frame != 0)
+    b.error_at(r, "Frame_ID", Diag::PhysicsNotImplemented,
+               "Frame_ID = " + std::to_string(frame) +
+                   ": a section carried by a moving frame (/FRAME) is not implemented; leave it 0 to use the "
+                   "frame of node_ID1, node_ID2, node_ID3");
+  if (const auto ninter = r.get_int("Ninter"); ninter != 0)
+    b.error_at(r, "Ninter", Diag::PhysicsNotImplemented,
+               "Ninter = " + std::to_string(ninter) +
+                   ": adding interface contact forces to a section is not implemented; leave it 0 (the "
+                   "section then sums element forces only)");
+  if (const auto isave = r.get_int("I_SAVE"); isave == 1 || isave == 2)
+    b.warning_at(r, "I_SAVE", Diag::OutputNotWritten,
+                 "I_SAVE = " + std::to_string(isave) +
+                     ": radx does not write section cut files; the section "
+                     "forces are in the time history (/TH/SECTIO)");
+  else if (isave >= 100)
+    b.error_at(r, "I_SAVE", Diag::PhysicsNotImplemented,
+               "I_SAVE = " + std::to_string(isave) +
+                   ": reading a section cut file as input is not implemented; accepted: 0, or 1 and 2 (cut "
+                   "file not written)");
+  for (const auto field : {"grtrus_ID", "grbeam_ID", "grsprg_ID"})
+    if (const auto g = r.get_int(field); g != 0)
+      b.error_at(r, field, Diag::MissingReference,
+                 std::string(field) + " = " + std::to_string(g) +
+                     ": radx has no truss, beam or spring elements (their groups are not read); leave it 0");
+}
+
+// The cut's node group grnod_ID and its nodes, which must not be empty.
+void read_section_nodes(ModelBuilder& b, const KeywordRecord& r, model::Section& s) {
+  s.node_group = b.ref(b.grnod_ids_, r, "grnod_ID", "node group", "/GRNOD", false);
+  if (s.node_group == kNone) return;
+  if (const auto* nodes = b.group_nodes(s.node_group)) s.nodes = *nodes;
+  if (s.nodes.empty())
+    b.error_at(r, "grnod_ID", Diag::EmptyGroup,
+               "node group " + std::to_string(r.get_int("grnod_ID")) +
+                   " is empty: the section has no node to sum the element forces at");
+}
+
+// The elements of the groups grbric_ID, grshel_ID and grtria_ID that touch the cut's nodes; at least one
+// group is needed, and together they must touch the cut.
+void read_section_elements(ModelBuilder& b, const KeywordRecord& r, model::Section& s) {
+  bool any_group = false, group_missing = false;
+  auto elements = [&](std::string_view field, model::ElementType type, std::string_view keyword,
+                      std::vector<std::int32_t>& out) {
+    const auto id = r.get_int(field);
+    if (id == 0) return;
+    any_group = true;
+    const auto* g = b.element_group(type, id);
+    if (g == nullptr) {
+      group_missing = true;
+      b.error_at(r, field, Diag::MissingReference,
+                 std::string(field) + " = " + std::to_string(id) + ": there is no " + std::string(keyword) +
+                     "/.../" + std::to_string(id) + " in the deck");
+      return;
+    }
+    out = touching(b.block(type), g->elements, s.nodes);
+  };
+  elements("grbric_ID", model::ElementType::Brick8, "/GRBRIC", s.bricks);
+  elements("grshel_ID", model::ElementType::Shell4, "/GRSHEL", s.shells);
+  elements("grtria_ID", model::ElementType::Shell3, "/GRSH3N", s.shells3);
+  if (!any_group)
+    b.error_at(r, "grshel_ID", Diag::RequiredIdMissing,
+               "no element group: give grbric_ID, grshel_ID or grtria_ID, the elements whose forces on the "
+               "section's nodes are summed");
+  else if (!group_missing && !s.nodes.empty() && s.bricks.empty() && s.shells.empty() && s.shells3.empty())
+    b.error_at(
+        r, "grshel_ID", Diag::EmptyGroup,
+        "no element of the groups has a node in grnod_ID " + std::to_string(r.get_int("grnod_ID")) +
+            ": the section would sum nothing; the groups must hold the elements on one side of the cut");
+}
+
 }  // namespace
 
 void ModelBuilder::build_sections() {
@@ -66,91 +166,10 @@ void ModelBuilder::build_sections() {
     s.n1 = frame_node(*this, r, "node_ID1");
     s.n2 = frame_node(*this, r, "node_ID2");
     s.n3 = frame_node(*this, r, "node_ID3");
-    const bool none = r.get_int("node_ID1") == 0 && r.get_int("node_ID2") == 0 && r.get_int("node_ID3") == 0;
-    const bool all = r.get_int("node_ID1") != 0 && r.get_int("node_ID2") != 0 && r.get_int("node_ID3") != 0;
-    if (!all && !(none && s.iframe >= 10)) {
-      error_at(r, "node_ID1", Diag::RequiredIdMissing,
-               "node_ID1, node_ID2 and node_ID3 define the section frame and plane: give all three (with "
-               "Iframe >= 10 all three may be 0: global axes, section normal Z)");
-    } else if (all && s.n1 != kNone && s.n2 != kNone && s.n3 != kNone) {
-      const Vec p1 = node_point(m_.nodes, s.n1), p2 = node_point(m_.nodes, s.n2),
-                p3 = node_point(m_.nodes, s.n3);
-      const Vec a{p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2]},
-          c{p3[0] - p1[0], p3[1] - p1[1], p3[2] - p1[2]};
-      const Vec n{a[1] * c[2] - a[2] * c[1], a[2] * c[0] - a[0] * c[2], a[0] * c[1] - a[1] * c[0]};
-      const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-      const double lc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-      const double ln = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      // sin of the angle N2-N1-N3 below 1e-5: the plane, hence the normal, is undefined.
-      if (la <= 0 || lc <= 0 || ln < 1e-5 * la * lc)
-        error_at(r, "node_ID1", Diag::InconsistentValues,
-                 "nodes " + std::to_string(r.get_int("node_ID1")) + ", " +
-                     std::to_string(r.get_int("node_ID2")) + " and " + std::to_string(r.get_int("node_ID3")) +
-                     " coincide or are aligned: the section plane and its normal are undefined; N3 must lie "
-                     "in the section plane, off the line N1 N2");
-    }
-    if (const auto frame = r.get_int("Frame_ID"); frame != 0)
-      error_at(r, "Frame_ID", Diag::PhysicsNotImplemented,
-               "Frame_ID = " + std::to_string(frame) +
-                   ": a section carried by a moving frame (/FRAME) is not implemented; leave it 0 to use the "
-                   "frame of node_ID1, node_ID2, node_ID3");
-    if (const auto ninter = r.get_int("Ninter"); ninter != 0)
-      error_at(r, "Ninter", Diag::PhysicsNotImplemented,
-               "Ninter = " + std::to_string(ninter) +
-                   ": adding interface contact forces to a section is not implemented; leave it 0 (the "
-                   "section then sums element forces only)");
-    if (const auto isave = r.get_int("I_SAVE"); isave == 1 || isave == 2)
-      warning_at(r, "I_SAVE", Diag::OutputNotWritten,
-                 "I_SAVE = " + std::to_string(isave) +
-                     ": radx does not write section cut files; the section "
-                     "forces are in the time history (/TH/SECTIO)");
-    else if (isave >= 100)
-      error_at(r, "I_SAVE", Diag::PhysicsNotImplemented,
-               "I_SAVE = " + std::to_string(isave) +
-                   ": reading a section cut file as input is not implemented; accepted: 0, or 1 and 2 (cut "
-                   "file not written)");
-    for (const auto field : {"grtrus_ID", "grbeam_ID", "grsprg_ID"})
-      if (const auto g = r.get_int(field); g != 0)
-        error_at(r, field, Diag::MissingReference,
-                 std::string(field) + " = " + std::to_string(g) +
-                     ": radx has no truss, beam or spring elements (their groups are not read); leave it 0");
-
-    s.node_group = ref(grnod_ids_, r, "grnod_ID", "node group", "/GRNOD", false);
-    if (s.node_group != kNone) {
-      if (const auto* nodes = group_nodes(s.node_group)) s.nodes = *nodes;
-      if (s.nodes.empty())
-        error_at(r, "grnod_ID", Diag::EmptyGroup,
-                 "node group " + std::to_string(r.get_int("grnod_ID")) +
-                     " is empty: the section has no node to sum the element forces at");
-    }
-    bool any_group = false, group_missing = false;
-    auto elements = [&](std::string_view field, model::ElementType type, std::string_view keyword,
-                        std::vector<std::int32_t>& out) {
-      const auto id = r.get_int(field);
-      if (id == 0) return;
-      any_group = true;
-      const auto* g = element_group(type, id);
-      if (g == nullptr) {
-        group_missing = true;
-        error_at(r, field, Diag::MissingReference,
-                 std::string(field) + " = " + std::to_string(id) + ": there is no " + std::string(keyword) +
-                     "/.../" + std::to_string(id) + " in the deck");
-        return;
-      }
-      out = touching(block(type), g->elements, s.nodes);
-    };
-    elements("grbric_ID", model::ElementType::Brick8, "/GRBRIC", s.bricks);
-    elements("grshel_ID", model::ElementType::Shell4, "/GRSHEL", s.shells);
-    elements("grtria_ID", model::ElementType::Shell3, "/GRSH3N", s.shells3);
-    if (!any_group)
-      error_at(r, "grshel_ID", Diag::RequiredIdMissing,
-               "no element group: give grbric_ID, grshel_ID or grtria_ID, the elements whose forces on the "
-               "section's nodes are summed");
-    else if (!group_missing && !s.nodes.empty() && s.bricks.empty() && s.shells.empty() && s.shells3.empty())
-      error_at(
-          r, "grshel_ID", Diag::EmptyGroup,
-          "no element of the groups has a node in grnod_ID " + std::to_string(r.get_int("grnod_ID")) +
-              ": the section would sum nothing; the groups must hold the elements on one side of the cut");
+    check_section_frame(*this, r, s);
+    refuse_section_options(*this, r);
+    read_section_nodes(*this, r, s);
+    read_section_elements(*this, r, s);
     if (register_id(sect_ids_, s.id, static_cast<std::int32_t>(m_.sections.size()), r, "section", first))
       m_.sections.push_back(std::move(s));
   }

@@ -124,27 +124,170 @@ bool spring_h_runs(int h, bool type8) {
   return h == 0 || h == 1 || h == 2 || h == 4 || h == 5 || h == 6 || h == 7 || (h == 8 && !type8);
 }
 
-}  // namespace
+// The element shapes that use a property, as bits.
+constexpr std::uint8_t kQuad = 1, kTri = 2, kBrick = 4, kTetra = 8, kSpring = 16;
 
-void ModelBuilder::check_formulations() {
-  // Which element shapes use each property.
-  std::vector<std::uint8_t> use(m_.properties.size(), 0);
-  constexpr std::uint8_t kQuad = 1, kTri = 2, kBrick = 4, kTetra = 8, kSpring = 16;
+// Which element shapes use each property.
+std::vector<std::uint8_t> property_uses(const model::Model& m) {
+  std::vector<std::uint8_t> use(m.properties.size(), 0);
   auto mark = [&](const model::ElementBlock& b, std::uint8_t bit) {
-    std::vector<std::uint8_t> part_seen(m_.parts.size(), 0);
+    std::vector<std::uint8_t> part_seen(m.parts.size(), 0);
     for (const auto p : b.part)
       if (p >= 0 && static_cast<std::size_t>(p) < part_seen.size())
         part_seen[static_cast<std::size_t>(p)] = 1;
-    for (std::size_t p = 0; p < m_.parts.size(); ++p)
-      if (part_seen[p] && m_.parts[p].property >= 0)
-        use[static_cast<std::size_t>(m_.parts[p].property)] |= bit;
+    for (std::size_t p = 0; p < m.parts.size(); ++p)
+      if (part_seen[p] && m.parts[p].property >= 0) use[static_cast<std::size_t>(m.parts[p].property)] |= bit;
   };
-  mark(m_.shells, kQuad);
-  mark(m_.shells3, kTri);
-  mark(m_.bricks, kBrick);
-  mark(m_.tetras, kTetra);
-  mark(m_.springs, kSpring);
+  mark(m.shells, kQuad);
+  mark(m.shells3, kTri);
+  mark(m.bricks, kBrick);
+  mark(m.tetras, kTetra);
+  mark(m.springs, kSpring);
+  return use;
+}
 
+// The formulation flags of one used property's record.
+struct PropertyFlags {
+  ModelBuilder& b;
+  const KeywordRecord& rec;
+  std::string_view path;    // /PROP/SHELL ...
+  std::string def_keyword;  // /DEF_SHELL or /DEF_SOLID: where a flag the property leaves 0 may come from
+  std::uint8_t used;        // the shapes that use the property (kQuad ...)
+};
+
+// One flag: accepted when `ok`; otherwise refused, or substituted by `nearest`.
+void check_flag(const PropertyFlags& p, std::string_view field, int& value, bool ok, int nearest,
+                const std::string& what_value, const std::string& what_nearest, std::string_view shape) {
+  if (ok) return;
+  const auto& rec = p.rec;
+  // Where the value comes from when the property leaves the field 0.
+  std::string source;
+  if (rec.get_int(field) == 0) {
+    const auto defs = p.b.deck_.of(p.def_keyword);
+    const bool from_def = !defs.empty() && defs.front()->find(field) && defs.front()->get_int(field) != 0;
+    source = from_def ? " (the property leaves it 0: from " + p.def_keyword + ")"
+                      : " (the property leaves it 0: the formulation's default)";
+  }
+  const std::string asked =
+      std::string(field) + " = " + std::to_string(value) + " (" + what_value + ")" + source;
+  if (p.b.deck_.allow_substitutions) {
+    const std::string text = asked + " runs as " + std::string(field) + " = " + std::to_string(nearest) +
+                             " (" + what_nearest + ") for its " + std::string(shape);
+    p.b.warning_at(rec, field, Diag::Substitution, text);
+    p.b.m_.substitutions.push_back(std::string(p.path) + " " + std::to_string(rec.id) + " \"" + rec.title +
+                                   "\": " + text);
+    value = nearest;
+  } else {
+    p.b.error_at(rec, field, Diag::PhysicsNotImplemented,
+                 asked + " is used by " + std::string(shape) +
+                     " and radx does not implement it; radx implements " + std::string(field) + " = " +
+                     std::to_string(nearest) + " (" + what_nearest +
+                     "); set it, or run with --allow-substitutions to run that instead");
+  }
+}
+
+// /PROP/SPRING's H, /PROP/SPR_GENE's and /PROP/SPR_BEAM's H1 ... H6.
+void check_spring_flags(const PropertyFlags& p, model::Property& prop) {
+  if (p.path == "/PROP/SPRING") {
+    auto& s = prop.spring.x;
+    check_flag(p, "H", s.hardening, spring_h_runs(s.hardening, false), 0, spring_h_name(s.hardening),
+               spring_h_name(0), "springs (TYPE4)");
+    return;
+  }
+  static constexpr std::array<std::string_view, 6> h = {"H1", "H2", "H3", "H4", "H5", "H6"};
+  for (int d = 0; d < 6; ++d) {
+    auto& s = prop.spring.law(d);
+    check_flag(p, h[static_cast<std::size_t>(d)], s.hardening, spring_h_runs(s.hardening, true), 0,
+               spring_h_name(s.hardening), spring_h_name(0),
+               prop.spring.type == 8 ? "springs (TYPE8)" : "springs (TYPE13)");
+  }
+}
+
+// /PROP/SHELL: Ishell where quadrangles use it, Ish3n where triangles do, and Ismstr.
+void check_shell_flags(const PropertyFlags& p, model::ShellProperty& s) {
+  if (p.used & kQuad) {
+    check_flag(p, "Ishell", s.ishell, s.ishell == 1 || s.ishell == 4 || s.ishell == 12 || s.ishell == 24, 1,
+               ishell_name(s.ishell), ishell_name(1), "4-node shells");
+    // A substituted formulation runs with its own defaults: Ishell 3's hourglass coefficients are not
+    // 1's.
+    ModelBuilder::shell_hourglass_defaults(p.rec, s);
+  }
+  if (p.used & kTri)
+    check_flag(p, "Ish3n", s.ish3n, s.ish3n == 1 || s.ish3n == 2, 2, ish3n_name(s.ish3n), ish3n_name(2),
+               "3-node shells");
+  check_flag(p, "Ismstr", s.ismstr, s.ismstr == 1 || s.ismstr == 2, 2, ismstr_name(s.ismstr), ismstr_name(2),
+             "shells");
+}
+
+// The Iframe the deck asks for: the property's, else /DEF_SOLID's, else 1.
+int deck_iframe(const PropertyFlags& p) {
+  auto asked = p.rec.get_int("Iframe");
+  const auto defs = p.b.deck_.of("/DEF_SOLID");
+  if (asked == 0 && !defs.empty() && defs.front()->find("Iframe")) asked = defs.front()->get_int("Iframe");
+  return asked > 0 ? static_cast<int>(asked) : 1;
+}
+
+// /PROP/SOLID where tetrahedra use it: Itetra4, Ismstr (when no brick uses it too) and the frame.
+void check_tetra_flags(const PropertyFlags& p, model::SolidProperty& s) {
+  check_flag(p, "Itetra4", s.itetra4, s.itetra4 != 1 && s.itetra4 != 3 && s.itetra4 != 10, 1000,
+             itetra4_name(s.itetra4), itetra4_name(1000), "4-node tetrahedra");
+  if (!(p.used & kBrick))
+    check_flag(p, "Ismstr", s.ismstr, s.ismstr == 2 || s.ismstr == 4, 4, ismstr_name(s.ismstr),
+               ismstr_name(4), "4-node tetrahedra");
+  // The deck's frame (the property's Iframe, else /DEF_SOLID's, else 1), also when bricks share the
+  // property: OpenRadioss's tetrahedron runs co-rotational with 2 (s4forc3.F, JCVT), radx's only with
+  // the Jaumann rate. Checked on a copy, so that under --allow-substitutions a brick sharing the
+  // property keeps its frame while the tetrahedra run the Jaumann rate.
+  auto tet_frame = static_cast<int>(p.rec.get_int("Iframe"));
+  const auto def_solid = p.b.deck_.of("/DEF_SOLID");
+  if (tet_frame == 0 && !def_solid.empty() && def_solid.front()->find("Iframe"))
+    tet_frame = static_cast<int>(def_solid.front()->get_int("Iframe"));
+  if (tet_frame <= 0) tet_frame = 1;
+  check_flag(p, "Iframe", tet_frame, tet_frame == 1, 1, tet_frame == 2 ? "co-rotational" : "frame option",
+             "Jaumann rate, not co-rotational", "4-node tetrahedra");
+}
+
+// /PROP/SOLID where bricks use it: Isolid, HA8's Inpts, HEPH's Icpre and Ihkt, Ismstr, Iframe and Icontrol.
+void check_brick_flags(const PropertyFlags& p, model::SolidProperty& s) {
+  const bool full = s.isolid == 12 || s.isolid == 14 || s.isolid == 17 || s.isolid == 18;
+  check_flag(p, "Isolid", s.isolid, s.isolid == 1 || s.isolid == 2 || s.isolid == 24 || full, 1,
+             isolid_name(s.isolid), isolid_name(1), "bricks");
+  if (s.isolid == 14)  // HA8 reads Inpts; radx implements its default 2 x 2 x 2 (222)
+    check_flag(p, "Inpts", s.inpts, s.inpts == 0 || s.inpts == 222, 222,
+               "integration points " + std::to_string(s.inpts), "2 x 2 x 2 Gauss points", "bricks");
+  if (s.isolid == 24) {
+    check_flag(p, "Icpre", s.icpre, s.icpre == 0 || s.icpre == 1 || s.icpre == 3, 0,  // 3: off, as 0
+               s.icpre == 2 ? "pressure from the plastic state" : "pressure option",
+               "compressible hourglass modes", "HEPH bricks (Isolid 24)");
+    // Ihkt (old layouts) 2 and above change HEPH's hourglass (szhour3.F, szsvm.F).
+    int ihkt = p.rec.find("Ihkt") ? static_cast<int>(p.rec.get_int("Ihkt")) : 0;
+    check_flag(p, "Ihkt", ihkt, ihkt <= 1, 1, "hourglass option", "hourglass from the shear modulus",
+               "HEPH bricks (Isolid 24)");
+  }
+  check_flag(p, "Ismstr", s.ismstr, s.ismstr == 2 || s.ismstr == 4, 4, ismstr_name(s.ismstr), ismstr_name(4),
+             "bricks");
+  check_flag(p, "Iframe", s.iframe, s.iframe == 1 || s.iframe == 2, 1, "frame option",
+             "Jaumann rate, not co-rotational", "bricks");
+  int icontrol = static_cast<int>(p.rec.get_int("Icontrol"));
+  check_flag(p, "Icontrol", icontrol, icontrol != 1, 2, "distortion control on", "distortion control off",
+             "bricks");
+}
+
+// /PROP/SOLID: the frame the deck asks for where the formulation imposes its own, then the tetrahedra's and
+// the bricks' flags.
+void check_solid_flags(const PropertyFlags& p, model::SolidProperty& s) {
+  // Isolid 14, 15, 18 and 24 impose the co-rotational frame (model_builder.cpp): that is not the deck's
+  // choice, which is the property's Iframe, else /DEF_SOLID's, else 1.
+  // Isolid 24 is implemented with its forced frame, so it keeps iframe 2.
+  if (s.isolid == 14 || s.isolid == 15 || s.isolid == 18) s.iframe = deck_iframe(p);
+  if (p.used & kTetra) check_tetra_flags(p, s);
+  if (p.used & kBrick) check_brick_flags(p, s);
+}
+
+}  // namespace
+
+void ModelBuilder::check_formulations() {
+  const auto use = property_uses(m_);
   for (const auto& rec : deck_.records) {
     const auto path = rec.decl->path;
     if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" &&
@@ -155,120 +298,13 @@ void ModelBuilder::check_formulations() {
     auto& prop = m_.properties[static_cast<std::size_t>(it->second)];
     const std::uint8_t used = use[static_cast<std::size_t>(it->second)];
     if (used == 0) continue;
-    const std::string def_keyword = path == "/PROP/SHELL" ? "/DEF_SHELL" : "/DEF_SOLID";
-    // One flag: accepted when `ok`; otherwise refused, or substituted by `nearest`.
-    auto flag = [&](std::string_view field, int& value, bool ok, int nearest, const std::string& what_value,
-                    const std::string& what_nearest, std::string_view shape) {
-      if (ok) return;
-      // Where the value comes from when the property leaves the field 0.
-      std::string source;
-      if (rec.get_int(field) == 0) {
-        const auto defs = deck_.of(def_keyword);
-        const bool from_def = !defs.empty() && defs.front()->find(field) && defs.front()->get_int(field) != 0;
-        source = from_def ? " (the property leaves it 0: from " + def_keyword + ")"
-                          : " (the property leaves it 0: the formulation's default)";
-      }
-      const std::string asked =
-          std::string(field) + " = " + std::to_string(value) + " (" + what_value + ")" + source;
-      if (deck_.allow_substitutions) {
-        const std::string text = asked + " runs as " + std::string(field) + " = " + std::to_string(nearest) +
-                                 " (" + what_nearest + ") for its " + std::string(shape);
-        warning_at(rec, field, Diag::Substitution, text);
-        m_.substitutions.push_back(std::string(path) + " " + std::to_string(rec.id) + " \"" + rec.title +
-                                   "\": " + text);
-        value = nearest;
-      } else {
-        error_at(rec, field, Diag::PhysicsNotImplemented,
-                 asked + " is used by " + std::string(shape) +
-                     " and radx does not implement it; radx implements " + std::string(field) + " = " +
-                     std::to_string(nearest) + " (" + what_nearest +
-                     "); set it, or run with --allow-substitutions to run that instead");
-      }
-    };
-    if (path == "/PROP/SPRING") {
-      auto& s = prop.spring.x;
-      flag("H", s.hardening, spring_h_runs(s.hardening, false), 0, spring_h_name(s.hardening),
-           spring_h_name(0), "springs (TYPE4)");
-      continue;
-    }
-    if (path == "/PROP/SPR_GENE" || path == "/PROP/SPR_BEAM") {
-      static constexpr std::array<std::string_view, 6> h = {"H1", "H2", "H3", "H4", "H5", "H6"};
-      for (int d = 0; d < 6; ++d) {
-        auto& s = prop.spring.law(d);
-        flag(h[static_cast<std::size_t>(d)], s.hardening, spring_h_runs(s.hardening, true), 0,
-             spring_h_name(s.hardening), spring_h_name(0),
-             prop.spring.type == 8 ? "springs (TYPE8)" : "springs (TYPE13)");
-      }
-      continue;
-    }
-    if (path == "/PROP/SHELL") {
-      auto& s = prop.shell;
-      if (used & kQuad) {
-        flag("Ishell", s.ishell, s.ishell == 1 || s.ishell == 4 || s.ishell == 12 || s.ishell == 24, 1,
-             ishell_name(s.ishell), ishell_name(1), "4-node shells");
-        // A substituted formulation runs with its own defaults: Ishell 3's hourglass coefficients are not
-        // 1's.
-        shell_hourglass_defaults(rec, s);
-      }
-      if (used & kTri)
-        flag("Ish3n", s.ish3n, s.ish3n == 1 || s.ish3n == 2, 2, ish3n_name(s.ish3n), ish3n_name(2),
-             "3-node shells");
-      flag("Ismstr", s.ismstr, s.ismstr == 1 || s.ismstr == 2, 2, ismstr_name(s.ismstr), ismstr_name(2),
-           "shells");
-    } else {
-      auto& s = prop.solid;
-      // Isolid 14, 15, 18 and 24 impose the co-rotational frame (model_builder.cpp): that is not the deck's
-      // choice, which is the property's Iframe, else /DEF_SOLID's, else 1.
-      // Isolid 24 is implemented with its forced frame, so it keeps iframe 2.
-      if (s.isolid == 14 || s.isolid == 15 || s.isolid == 18) {
-        auto asked = rec.get_int("Iframe");
-        const auto defs = deck_.of("/DEF_SOLID");
-        if (asked == 0 && !defs.empty() && defs.front()->find("Iframe"))
-          asked = defs.front()->get_int("Iframe");
-        s.iframe = asked > 0 ? static_cast<int>(asked) : 1;
-      }
-      if (used & kTetra) {
-        flag("Itetra4", s.itetra4, s.itetra4 != 1 && s.itetra4 != 3 && s.itetra4 != 10, 1000,
-             itetra4_name(s.itetra4), itetra4_name(1000), "4-node tetrahedra");
-        if (!(used & kBrick))
-          flag("Ismstr", s.ismstr, s.ismstr == 2 || s.ismstr == 4, 4, ismstr_name(s.ismstr), ismstr_name(4),
-               "4-node tetrahedra");
-        // The deck's frame (the property's Iframe, else /DEF_SOLID's, else 1), also when bricks share the
-        // property: OpenRadioss's tetrahedron runs co-rotational with 2 (s4forc3.F, JCVT), radx's only with
-        // the Jaumann rate. Checked on a copy, so that under --allow-substitutions a brick sharing the
-        // property keeps its frame while the tetrahedra run the Jaumann rate.
-        auto tet_frame = static_cast<int>(rec.get_int("Iframe"));
-        const auto def_solid = deck_.of("/DEF_SOLID");
-        if (tet_frame == 0 && !def_solid.empty() && def_solid.front()->find("Iframe"))
-          tet_frame = static_cast<int>(def_solid.front()->get_int("Iframe"));
-        if (tet_frame <= 0) tet_frame = 1;
-        flag("Iframe", tet_frame, tet_frame == 1, 1, tet_frame == 2 ? "co-rotational" : "frame option",
-             "Jaumann rate, not co-rotational", "4-node tetrahedra");
-      }
-      if (!(used & kBrick)) continue;
-      const bool full = s.isolid == 12 || s.isolid == 14 || s.isolid == 17 || s.isolid == 18;
-      flag("Isolid", s.isolid, s.isolid == 1 || s.isolid == 2 || s.isolid == 24 || full, 1,
-           isolid_name(s.isolid), isolid_name(1), "bricks");
-      if (s.isolid == 14)  // HA8 reads Inpts; radx implements its default 2 x 2 x 2 (222)
-        flag("Inpts", s.inpts, s.inpts == 0 || s.inpts == 222, 222,
-             "integration points " + std::to_string(s.inpts), "2 x 2 x 2 Gauss points", "bricks");
-      if (s.isolid == 24) {
-        flag("Icpre", s.icpre, s.icpre == 0 || s.icpre == 1 || s.icpre == 3, 0,  // 3: off, as 0
-             s.icpre == 2 ? "pressure from the plastic state" : "pressure option",
-             "compressible hourglass modes", "HEPH bricks (Isolid 24)");
-        // Ihkt (old layouts) 2 and above change HEPH's hourglass (szhour3.F, szsvm.F).
-        int ihkt = rec.find("Ihkt") ? static_cast<int>(rec.get_int("Ihkt")) : 0;
-        flag("Ihkt", ihkt, ihkt <= 1, 1, "hourglass option", "hourglass from the shear modulus",
-             "HEPH bricks (Isolid 24)");
-      }
-      flag("Ismstr", s.ismstr, s.ismstr == 2 || s.ismstr == 4, 4, ismstr_name(s.ismstr), ismstr_name(4),
-           "bricks");
-      flag("Iframe", s.iframe, s.iframe == 1 || s.iframe == 2, 1, "frame option",
-           "Jaumann rate, not co-rotational", "bricks");
-      int icontrol = static_cast<int>(rec.get_int("Icontrol"));
-      flag("Icontrol", icontrol, icontrol != 1, 2, "distortion control on", "distortion control off",
-           "bricks");
-    }
+    const PropertyFlags flags{*this, rec, path, path == "/PROP/SHELL" ? "/DEF_SHELL" : "/DEF_SOLID", used};
+    if (path == "/PROP/SPRING" || path == "/PROP/SPR_GENE" || path == "/PROP/SPR_BEAM")
+      check_spring_flags(flags, prop);
+    else if (path == "/PROP/SHELL")
+      check_shell_flags(flags, prop.shell);
+    else
+      check_solid_flags(flags, prop.solid);
   }
   check_shell_only_laws();
   check_ogden_parts();

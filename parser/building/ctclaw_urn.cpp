@@ -324,133 +324,156 @@ class UrnParser {
                 law_prefix(n_, s_law_) + " takes " + accepted(n_, s_law_));
   }
 
+  // The value read for `p` (0 when not given).
+  double val(P p) const { return g(p).value; }
+
+  // n1: the linear law, its stiffness Kc.
+  void finish_linear_law(model::ContactLaw& law) {
+    law.normal = model::NormalLaw::Linear;
+    require(P::Kc, "the contact stiffness per unit area, > 0, or -1 for the automatic K / A_s");
+    if (check(P::Kc, val(P::Kc) > 0 || val(P::Kc) == -1,
+              "must be > 0 (a pressure per length), or -1 for the automatic stiffness K / A_s"))
+      law.kc = val(P::Kc);
+  }
+
+  // n2: the exponential law, pz with lambda or pe (not both), and the optional bound KcMax.
+  void finish_exponential_law(model::ContactLaw& law) {
+    law.normal = model::NormalLaw::Exponential;
+    require(P::Pz, "the pressure at zero overclosure, > 0");
+    const bool pz = check(P::Pz, val(P::Pz) > 0, "must be > 0 (the pressure at zero overclosure)");
+    const bool lambda = check(P::Lambda, val(P::Lambda) > 0, "must be > 0 (the decay rate, per length)");
+    const bool pe = check(P::Pe, val(P::Pe) > 0, "must be > 0 (the expected working pressure)");
+    const bool kc_max = check(P::KcMax, val(P::KcMax) > 0,
+                              "must be > 0 (the largest stiffness, a pressure per length); leave it out "
+                              "for no bound");
+    if (g(P::Lambda).given && g(P::Pe).given) {
+      const auto& later = g(P::Lambda).offset > g(P::Pe).offset ? g(P::Lambda) : g(P::Pe);
+      problem(later.offset == g(P::Lambda).offset ? "lambda" : "pe", later.offset,
+              "lambda and pe are exclusive: give lambda (the decay rate) or pe (the expected working "
+              "pressure, lambda = (K / A_s) / pe), not both");
+    } else if (!g(P::Lambda).given && !g(P::Pe).given) {
+      problem("lambda", 0,
+              "n2 needs lambda (the decay rate, > 0) or pe (the expected working pressure, > 0); " +
+                  law_prefix(n_, s_law_) + " takes " + accepted(n_, s_law_));
+    }
+    if (pz) law.pz = val(P::Pz);
+    if (lambda && !g(P::Pe).given) law.lambda = val(P::Lambda);
+    if (pe && !g(P::Lambda).given) law.pe = val(P::Pe);
+    if (kc_max) {
+      law.kc_max = val(P::KcMax);
+      if (pz && lambda && !g(P::Pe).given && val(P::KcMax) < val(P::Lambda) * val(P::Pz))
+        problem("KcMax", g(P::KcMax).offset,
+                "KcMax = " + number_text(val(P::KcMax)) +
+                    " is below the initial stiffness lambda pz = " + number_text(val(P::Lambda)) + " * " +
+                    number_text(val(P::Pz)) + " = " + number_text(val(P::Lambda) * val(P::Pz)) +
+                    "; need KcMax >= lambda pz (the stiffness the law starts from), or leave KcMax out");
+    }
+  }
+
+  // n3: the tabulated law, its curve id and interpolation.
+  void finish_tabulated_law(model::ContactLaw& law) {
+    law.normal = model::NormalLaw::Tabulated;
+    require(P::CurveId, "the id of the /FUNCT of gap to pressure");
+    const double c = val(P::CurveId);
+    if (check(P::CurveId, c >= 1 && c < 9.2e18 && c == std::floor(c),
+              "must be the id of a /FUNCT (a positive integer)")) {
+      res_.curve_id = static_cast<std::int64_t>(c);
+      res_.curve_offset = at_[g(P::CurveId).offset];
+    }
+    if (check(P::Cubic, val(P::Cubic) == 0 || val(P::Cubic) == 1,
+              "must be 0 (linear interpolation) or 1 (monotone cubic interpolation)"))
+      law.cubic = val(P::Cubic) == 1;
+  }
+
+  // Whether every power term is readable and valid (exponent >= 1, coefficient >= 0, each exponent once),
+  // with a problem for each one that is not; sets `any_positive` when a coefficient is > 0.
+  bool power_terms_valid(bool& any_positive) {
+    bool all_ok = true;
+    for (std::size_t j = 0; j < power_.size(); ++j) {
+      const auto& t = power_[j];
+      if (!t.ok) {
+        all_ok = false;
+        continue;
+      }
+      if (!(t.m >= 1)) {
+        problem(
+            t.written, t.offset,
+            "the exponent m = " + number_text(t.m) + " of " + t.written + " must be >= 1 (kp<m>=<value>)");
+        all_ok = false;
+      }
+      if (!(t.k >= 0)) {
+        problem(t.written, t.offset, t.written + " = " + number_text(t.k) + " must be >= 0");
+        all_ok = false;
+      }
+      any_positive = any_positive || t.k > 0;
+      for (std::size_t i = 0; i < j; ++i)
+        if (power_[i].ok && power_[i].m == t.m) {
+          problem(t.written, t.offset,
+                  "the exponent " + number_text(t.m) + " is given twice ('" + power_[i].written + "' and '" +
+                      t.written + "'): give each power once");
+          all_ok = false;
+          break;
+        }
+    }
+    return all_ok;
+  }
+
+  // n4: the power law, the sum of its readable terms.
+  void finish_power_law(model::ContactLaw& law) {
+    law.normal = model::NormalLaw::Power;
+    if (power_.empty())
+      problem("kp", 0,
+              "n4 needs one or more power terms kp<m>=<value> (P = sum of kp_m u^m), e.g. "
+              "n4{kp1=1e9,kp2=1e15}");
+    bool any_positive = false;
+    const bool all_ok = power_terms_valid(any_positive);
+    if (all_ok && !power_.empty() && !any_positive)
+      problem(power_.front().written, power_.front().offset,
+              "every kp is 0: the law would never push; give at least one kp<m> > 0");
+    for (const auto& t : power_)
+      if (t.ok) {
+        law.power_m.push_back(t.m);
+        law.power_k.push_back(t.k);
+      }
+  }
+
+  // The friction law: the interface's own or none without an s part, else its mu, slope and stiffness.
+  void finish_friction_law(model::ContactLaw& law) {
+    if (s_law_ == 0) {
+      law.friction = n_ == 0 ? model::FrictionLaw::Interface : model::FrictionLaw::None;
+      return;
+    }
+    if (!friction_known(s_law_)) return;
+    const int base = s_law_ > 10 ? s_law_ - 10 : s_law_;
+    law.bidirectional = s_law_ > 10;
+    law.friction = base == 1   ? model::FrictionLaw::Coulomb
+                   : base == 2 ? model::FrictionLaw::Linear
+                   : base == 3 ? model::FrictionLaw::Arctangent
+                               : model::FrictionLaw::ScaledLinear;
+    require(P::Mu, "the friction coefficient, >= 0");
+    if (check(P::Mu, val(P::Mu) >= 0, "must be >= 0 (the friction coefficient)")) law.mu = val(P::Mu);
+    if (base != 1) {
+      require(P::CtLin, "the slope of the regularised friction, > 0");
+      if (check(P::CtLin, val(P::CtLin) > 0, "must be > 0 (the slope of the regularised friction)"))
+        law.ct = val(P::CtLin);
+    }
+    if (check(P::Kappa, val(P::Kappa) > 0,
+              "must be > 0 (the sticking stiffness per unit area); leave it out for the default K / A_s"))
+      law.kappa = val(P::Kappa);
+  }
+
   UrnResult finish() {
     auto& law = res_.law;
-    const auto val = [&](P p) { return g(p).value; };
     // Normal law.
     switch (n_) {
       case 0: law.normal = model::NormalLaw::Interface; break;
-      case 1: {
-        law.normal = model::NormalLaw::Linear;
-        require(P::Kc, "the contact stiffness per unit area, > 0, or -1 for the automatic K / A_s");
-        if (check(P::Kc, val(P::Kc) > 0 || val(P::Kc) == -1,
-                  "must be > 0 (a pressure per length), or -1 for the automatic stiffness K / A_s"))
-          law.kc = val(P::Kc);
-        break;
-      }
-      case 2: {
-        law.normal = model::NormalLaw::Exponential;
-        require(P::Pz, "the pressure at zero overclosure, > 0");
-        const bool pz = check(P::Pz, val(P::Pz) > 0, "must be > 0 (the pressure at zero overclosure)");
-        const bool lambda = check(P::Lambda, val(P::Lambda) > 0, "must be > 0 (the decay rate, per length)");
-        const bool pe = check(P::Pe, val(P::Pe) > 0, "must be > 0 (the expected working pressure)");
-        const bool kc_max = check(P::KcMax, val(P::KcMax) > 0,
-                                  "must be > 0 (the largest stiffness, a pressure per length); leave it out "
-                                  "for no bound");
-        if (g(P::Lambda).given && g(P::Pe).given) {
-          const auto& later = g(P::Lambda).offset > g(P::Pe).offset ? g(P::Lambda) : g(P::Pe);
-          problem(later.offset == g(P::Lambda).offset ? "lambda" : "pe", later.offset,
-                  "lambda and pe are exclusive: give lambda (the decay rate) or pe (the expected working "
-                  "pressure, lambda = (K / A_s) / pe), not both");
-        } else if (!g(P::Lambda).given && !g(P::Pe).given) {
-          problem("lambda", 0,
-                  "n2 needs lambda (the decay rate, > 0) or pe (the expected working pressure, > 0); " +
-                      law_prefix(n_, s_law_) + " takes " + accepted(n_, s_law_));
-        }
-        if (pz) law.pz = val(P::Pz);
-        if (lambda && !g(P::Pe).given) law.lambda = val(P::Lambda);
-        if (pe && !g(P::Lambda).given) law.pe = val(P::Pe);
-        if (kc_max) {
-          law.kc_max = val(P::KcMax);
-          if (pz && lambda && !g(P::Pe).given && val(P::KcMax) < val(P::Lambda) * val(P::Pz))
-            problem("KcMax", g(P::KcMax).offset,
-                    "KcMax = " + number_text(val(P::KcMax)) +
-                        " is below the initial stiffness lambda pz = " + number_text(val(P::Lambda)) + " * " +
-                        number_text(val(P::Pz)) + " = " + number_text(val(P::Lambda) * val(P::Pz)) +
-                        "; need KcMax >= lambda pz (the stiffness the law starts from), or leave KcMax out");
-        }
-        break;
-      }
-      case 3: {
-        law.normal = model::NormalLaw::Tabulated;
-        require(P::CurveId, "the id of the /FUNCT of gap to pressure");
-        const double c = val(P::CurveId);
-        if (check(P::CurveId, c >= 1 && c < 9.2e18 && c == std::floor(c),
-                  "must be the id of a /FUNCT (a positive integer)")) {
-          res_.curve_id = static_cast<std::int64_t>(c);
-          res_.curve_offset = at_[g(P::CurveId).offset];
-        }
-        if (check(P::Cubic, val(P::Cubic) == 0 || val(P::Cubic) == 1,
-                  "must be 0 (linear interpolation) or 1 (monotone cubic interpolation)"))
-          law.cubic = val(P::Cubic) == 1;
-        break;
-      }
-      case 4: {
-        law.normal = model::NormalLaw::Power;
-        if (power_.empty())
-          problem("kp", 0,
-                  "n4 needs one or more power terms kp<m>=<value> (P = sum of kp_m u^m), e.g. "
-                  "n4{kp1=1e9,kp2=1e15}");
-        bool all_ok = true, any_positive = false;
-        for (std::size_t j = 0; j < power_.size(); ++j) {
-          const auto& t = power_[j];
-          if (!t.ok) {
-            all_ok = false;
-            continue;
-          }
-          if (!(t.m >= 1)) {
-            problem(t.written, t.offset,
-                    "the exponent m = " + number_text(t.m) + " of " + t.written +
-                        " must be >= 1 (kp<m>=<value>)");
-            all_ok = false;
-          }
-          if (!(t.k >= 0)) {
-            problem(t.written, t.offset, t.written + " = " + number_text(t.k) + " must be >= 0");
-            all_ok = false;
-          }
-          any_positive = any_positive || t.k > 0;
-          for (std::size_t i = 0; i < j; ++i)
-            if (power_[i].ok && power_[i].m == t.m) {
-              problem(t.written, t.offset,
-                      "the exponent " + number_text(t.m) + " is given twice ('" + power_[i].written +
-                          "' and '" + t.written + "'): give each power once");
-              all_ok = false;
-              break;
-            }
-        }
-        if (all_ok && !power_.empty() && !any_positive)
-          problem(power_.front().written, power_.front().offset,
-                  "every kp is 0: the law would never push; give at least one kp<m> > 0");
-        for (const auto& t : power_)
-          if (t.ok) {
-            law.power_m.push_back(t.m);
-            law.power_k.push_back(t.k);
-          }
-        break;
-      }
+      case 1: finish_linear_law(law); break;
+      case 2: finish_exponential_law(law); break;
+      case 3: finish_tabulated_law(law); break;
+      case 4: finish_power_law(law); break;
       default: break;
     }
-    // Friction law.
-    if (s_law_ == 0) {
-      law.friction = n_ == 0 ? model::FrictionLaw::Interface : model::FrictionLaw::None;
-    } else if (friction_known(s_law_)) {
-      const int base = s_law_ > 10 ? s_law_ - 10 : s_law_;
-      law.bidirectional = s_law_ > 10;
-      law.friction = base == 1   ? model::FrictionLaw::Coulomb
-                     : base == 2 ? model::FrictionLaw::Linear
-                     : base == 3 ? model::FrictionLaw::Arctangent
-                                 : model::FrictionLaw::ScaledLinear;
-      require(P::Mu, "the friction coefficient, >= 0");
-      if (check(P::Mu, val(P::Mu) >= 0, "must be >= 0 (the friction coefficient)")) law.mu = val(P::Mu);
-      if (base != 1) {
-        require(P::CtLin, "the slope of the regularised friction, > 0");
-        if (check(P::CtLin, val(P::CtLin) > 0, "must be > 0 (the slope of the regularised friction)"))
-          law.ct = val(P::CtLin);
-      }
-      if (check(P::Kappa, val(P::Kappa) > 0,
-                "must be > 0 (the sticking stiffness per unit area); leave it out for the default K / A_s"))
-        law.kappa = val(P::Kappa);
-    }
+    finish_friction_law(law);
     return std::move(res_);
   }
 

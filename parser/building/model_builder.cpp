@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "solver/model/geometry.hpp"
@@ -150,150 +151,165 @@ void ModelBuilder::build_nodes() {
   node_used_.assign(n.size(), 0);
 }
 
-void ModelBuilder::build_materials() {
-  std::unordered_map<std::int64_t, SourcePos> first;
-  for (const auto& r : deck_.records) {
-    const auto path = r.decl->path;
-    const bool law1 = path == "/MAT/LAW1";
-    const bool law2 = path == "/MAT/LAW2";
-    const bool law36 = path == "/MAT/LAW36";
-    const bool law27 = path == "/MAT/LAW27";
-    const bool law0 = path == "/MAT/LAW0";
-    const bool law13 = path == "/MAT/LAW13";
-    const bool law42 = path == "/MAT/LAW42";
-    const bool law70 = path == "/MAT/LAW70";
-    if (!law1 && !law2 && !law36 && !law27 && !law0 && !law13 && !law42 && !law70) continue;
-    model::Material mat;
-    mat.id = r.id;
-    mat.title = r.title;
-    mat.keyword = r.written.substr(0, r.written.find_last_of('/'));
-    mat.law = law1    ? model::MaterialLaw::Elastic
-              : law2  ? model::MaterialLaw::JohnsonCook
-              : law27 ? model::MaterialLaw::PlasBrit
-              : law36 ? model::MaterialLaw::PlasTab
-              : law0  ? model::MaterialLaw::Void
-              : law42 ? model::MaterialLaw::Ogden
-              : law70 ? model::MaterialLaw::FoamTab
-                      : model::MaterialLaw::Rigid;
-    if (law0 || law42 || law70) {
-      if (law0) read_void(r, mat);
-      if (law42) read_ogden(r, mat);
-      if (law70) read_foam_tab(r, mat);
-      if (register_id(mat_ids_, mat.id, static_cast<std::int32_t>(m_.materials.size()), r, "material", first))
-        m_.materials.push_back(std::move(mat));
-      continue;
-    }
-    read_densities(r, mat);
-    mat.young = r.get_real("E");
-    mat.poisson = r.get_real("nu");
-    if (mat.rho < 0 && r.given("RHO_I"))  // 0 is reported by the field's rule (a value is required)
-      error_at(r, "RHO_I", Diag::ValueOutOfRange, "density RHO_I = " + num(mat.rho) + " must be > 0");
-    if (mat.young < 0)
-      error_at(r, "E", Diag::ValueOutOfRange, "Young's modulus E = " + num(mat.young) + " must be > 0");
-    if (mat.poisson < 0 || mat.poisson >= 0.5) {
-      error_at(r, "nu", Diag::BadPoisson,
+namespace {
+
+// The law of a material keyword the builder reads (LAW13 is /MAT/RIGID), or none.
+std::optional<model::MaterialLaw> material_law(std::string_view path) {
+  if (path == "/MAT/LAW1") return model::MaterialLaw::Elastic;
+  if (path == "/MAT/LAW2") return model::MaterialLaw::JohnsonCook;
+  if (path == "/MAT/LAW27") return model::MaterialLaw::PlasBrit;
+  if (path == "/MAT/LAW36") return model::MaterialLaw::PlasTab;
+  if (path == "/MAT/LAW0") return model::MaterialLaw::Void;
+  if (path == "/MAT/LAW42") return model::MaterialLaw::Ogden;
+  if (path == "/MAT/LAW70") return model::MaterialLaw::FoamTab;
+  if (path == "/MAT/LAW13") return model::MaterialLaw::Rigid;
+  return std::nullopt;
+}
+
+// A warning when the wave speed sqrt(E/rho) is one no material has in any plausible reading of the units.
+void warn_implausible_wave_speed(ModelBuilder& b, const KeywordRecord& r, const model::Material& mat) {
+  // Values typed in other units than the deck's (a modulus in Pa in an mm-Mg-s deck) give wave
+  // speeds no material has, and with them steps or run times that are absurd; warn, as the run can
+  // still be meant (a scaled model). c = sqrt(E/rho) is in the work units' length over time; with
+  // units the deck names that is a speed in m/s. A deck that names none reads as SI but may be in any
+  // consistent system, whose velocity unit is 1e-3 (mm/s) to 1e4 (cm/us) m/s: warn only when every
+  // such reading is implausible.
+  const double c = std::sqrt(mat.young / mat.rho);
+  const auto& w = b.deck_.work_units;
+  constexpr double kLight = 299792458.0;
+  const double fastest = b.deck_.units_named ? w.length / w.time : 1e4;
+  const double slowest = b.deck_.units_named ? w.length / w.time : 1e-3;
+  const bool slow = c * fastest<1.0, fast = c * slowest> kLight;
+  if (!slow && !fast) return;
+  const std::string speed =
+      b.deck_.units_named
+          ? num(c * fastest) + " m/s (E = " + num(mat.young) + ", RHO_I = " + num(mat.rho) +
+                " in the deck's work units " + w.mass_name + " " + w.length_name + " " + w.time_name + ")"
+          : num(c) + " length per time unit (E = " + num(mat.young) + ", RHO_I = " + num(mat.rho) +
+                "; the deck names no units, so radx takes the most plausible of the usual systems: " +
+                (slow ? num(c * fastest) + " m/s if in cm/us" : num(c * slowest) + " m/s if in mm/s") + ")";
+  b.warning_at(r, "E", Diag::ImplausibleMaterial,
+               "the wave speed sqrt(E/RHO_I) = " + speed + " is " +
+                   (fast ? "above the speed of light (3.0e8 m/s)" : "below 1 m/s") +
+                   "; solids have 20 (soft foams, rubbers) to 18000 m/s (diamond), metals about 5000 "
+                   "m/s: check the units of E and RHO_I");
+}
+
+// The densities, E and nu of the laws whose card starts with them, checked, with G and K.
+void read_elastic_constants(ModelBuilder& b, const KeywordRecord& r, model::Material& mat) {
+  ModelBuilder::read_densities(r, mat);
+  mat.young = r.get_real("E");
+  mat.poisson = r.get_real("nu");
+  if (mat.rho < 0 && r.given("RHO_I"))  // 0 is reported by the field's rule (a value is required)
+    b.error_at(r, "RHO_I", Diag::ValueOutOfRange, "density RHO_I = " + num(mat.rho) + " must be > 0");
+  if (mat.young < 0)
+    b.error_at(r, "E", Diag::ValueOutOfRange, "Young's modulus E = " + num(mat.young) + " must be > 0");
+  if (mat.poisson < 0 || mat.poisson >= 0.5) {
+    b.error_at(r, "nu", Diag::BadPoisson,
                "Poisson's ratio nu = " + num(mat.poisson) +
                    " is outside [0, 0.5): the bulk modulus E/3(1-2nu) would be infinite or negative (Radioss "
                    "turns "
                    "exactly 0.5 into 0.499 silently; radx asks for the value you mean, e.g. 0.499)");
+  }
+  if (mat.rho > 0 && mat.young > 0) warn_implausible_wave_speed(b, r, mat);
+  mat.shear = mat.young / (2.0 * (1.0 + mat.poisson));
+  mat.bulk = mat.poisson < 0.5 ? mat.young / (3.0 * (1.0 - 2.0 * mat.poisson)) : 0.0;
+}
+
+// /MAT/PLAS_JOHNS with Iflag = 1: a, b and n from the yield stress, the ultimate stress and its strain.
+void johnson_cook_from_uts(ModelBuilder& b, const KeywordRecord& r, model::Material& mat) {
+  mat.sig_y_input = r.get_real("SIG_Y");
+  mat.uts = r.get_real("UTS");
+  mat.e_uts = r.get_real("EUTS");
+  // Iflag = 1: rm = UTS (1 + e_uts), ag = ln(1 + e_uts), n = rm ag / (rm - sy), b = rm / (n ag^(n-1)).
+  const double sy = mat.sig_y_input;
+  const double rm = mat.uts * (1.0 + mat.e_uts);
+  const double ag = std::log1p(mat.e_uts);
+  if (sy <= 0 || mat.uts <= 0 || mat.e_uts <= 0 || rm <= sy) {
+    b.error_at(r, "SIG_Y", Diag::InconsistentValues,
+               "Iflag = 1 needs SIG_Y > 0, UTS > 0, EUTS > 0 and UTS(1+EUTS) > SIG_Y; got SIG_Y = " +
+                   num(sy) + ", UTS = " + num(mat.uts) + ", EUTS = " + num(mat.e_uts));
+    return;
+  }
+  mat.a = sy;
+  mat.n = rm * ag / (rm - sy);
+  mat.b = rm / (mat.n * std::pow(ag, mat.n - 1.0));
+  if (mat.n > 1.0) {
+    mat.n = 1.0;
+    mat.b = (rm - sy) / (ag - rm / mat.young - sy / mat.young);
+    b.warning_at(r, "SIG_Y", Diag::DefaultApplied,
+                 "Iflag = 1 gives a hardening exponent above 1; n = 1 is used with b = " + num(mat.b));
+  }
+}
+
+// /MAT/PLAS_JOHNS (law 2) past its elastic constants: the flags, the yield curve (Iflag 0: a, b, n; 1: from
+// the ultimate stress), the strain-rate and the thermal terms, with their zero defaults.
+void read_johnson_cook(ModelBuilder& b, const KeywordRecord& r, model::Material& mat) {
+  mat.iflag = static_cast<int>(r.get_int("Iflag"));
+  mat.flag_vp = static_cast<int>(r.get_int("flagVP"));
+  if (mat.flag_vp == 0) mat.flag_vp = 2;
+  mat.p_min = r.given("Pmin") && r.get_real("Pmin") != 0 ? r.get_real("Pmin") : -1e20;
+  mat.eps_p_max = r.get_real("EPS_p_max");
+  mat.sig_max0 = r.get_real("SIG_max0");
+  if (mat.eps_p_max == 0) mat.eps_p_max = 1e20;
+  if (mat.sig_max0 == 0) mat.sig_max0 = 1e20;
+  if (mat.iflag == 1) {
+    johnson_cook_from_uts(b, r, mat);
+  } else {
+    mat.a = r.get_real("a");
+    mat.b = r.get_real("b");
+    mat.n = r.get_real("n");  // <= 1: the field's rule (keywords_starter.cpp)
+    if (mat.n == 0) mat.n = 1.0;
+    if (mat.a <= 0)
+      b.error_at(r, "a", Diag::ValueOutOfRange, "yield stress a = " + num(mat.a) + " must be > 0");
+  }
+  mat.c = r.get_real("c");
+  mat.eps_dot_0 = r.get_real("EPS_DOT_0");
+  if (mat.c != 0 && mat.eps_dot_0 <= 0) {
+    b.error_at(r, "EPS_DOT_0", Diag::RequiredValueMissing,
+               "strain-rate coefficient c = " + num(mat.c) +
+                   " needs a reference strain rate EPS_DOT_0 > 0 (it is blank or 0)");
+  }
+  if (mat.c == 0) mat.eps_dot_0 = 1.0;
+  mat.icc = static_cast<int>(r.get_int("ICC"));
+  if (mat.icc == 0) mat.icc = 1;
+  mat.fsmooth = static_cast<int>(r.get_int("Fsmooth"));
+  mat.f_cut = r.get_real("F_cut");
+  mat.chard = r.get_real("Chard");
+  mat.m_temp = r.get_real("m");
+  if (mat.m_temp == 0) mat.m_temp = 1.0;
+  mat.t_melt = r.get_real("T_melt");
+  if (mat.t_melt == 0) mat.t_melt = 1e20;
+  mat.rho_cp = r.get_real("rhoC_p");
+  mat.t_ref = r.get_real("T_r");
+  if (mat.t_ref <= 0) mat.t_ref = 300.0;
+  mat.t_max = r.get_real("T_max");
+  if (mat.t_max == 0) mat.t_max = 1e20;
+}
+
+}  // namespace
+
+void ModelBuilder::build_materials() {
+  std::unordered_map<std::int64_t, SourcePos> first;
+  for (const auto& r : deck_.records) {
+    const auto law = material_law(r.decl->path);
+    if (!law) continue;
+    model::Material mat;
+    mat.id = r.id;
+    mat.title = r.title;
+    mat.keyword = r.written.substr(0, r.written.find_last_of('/'));
+    mat.law = *law;
+    switch (mat.law) {
+      case model::MaterialLaw::Void: read_void(r, mat); break;
+      case model::MaterialLaw::Ogden: read_ogden(r, mat); break;
+      case model::MaterialLaw::FoamTab: read_foam_tab(r, mat); break;
+      default:
+        read_elastic_constants(*this, r, mat);
+        if (mat.law == model::MaterialLaw::JohnsonCook) read_johnson_cook(*this, r, mat);
+        if (mat.law == model::MaterialLaw::PlasTab) read_plas_tab(r, mat);
+        if (mat.law == model::MaterialLaw::PlasBrit) read_plas_brit(r, mat);
+        break;
     }
-    if (mat.rho > 0 && mat.young > 0) {
-      // Values typed in other units than the deck's (a modulus in Pa in an mm-Mg-s deck) give wave
-      // speeds no material has, and with them steps or run times that are absurd; warn, as the run can
-      // still be meant (a scaled model). c = sqrt(E/rho) is in the work units' length over time; with
-      // units the deck names that is a speed in m/s. A deck that names none reads as SI but may be in any
-      // consistent system, whose velocity unit is 1e-3 (mm/s) to 1e4 (cm/us) m/s: warn only when every
-      // such reading is implausible.
-      const double c = std::sqrt(mat.young / mat.rho);
-      const auto& w = deck_.work_units;
-      constexpr double kLight = 299792458.0;
-      const double fastest = deck_.units_named ? w.length / w.time : 1e4;
-      const double slowest = deck_.units_named ? w.length / w.time : 1e-3;
-      const bool slow = c * fastest<1.0, fast = c * slowest> kLight;
-      if (slow || fast) {
-        const std::string speed =
-            deck_.units_named
-                ? num(c * fastest) + " m/s (E = " + num(mat.young) + ", RHO_I = " + num(mat.rho) +
-                      " in the deck's work units " + w.mass_name + " " + w.length_name + " " + w.time_name +
-                      ")"
-                : num(c) + " length per time unit (E = " + num(mat.young) + ", RHO_I = " + num(mat.rho) +
-                      "; the deck names no units, so radx takes the most plausible of the usual systems: " +
-                      (slow ? num(c * fastest) + " m/s if in cm/us" : num(c * slowest) + " m/s if in mm/s") +
-                      ")";
-        warning_at(r, "E", Diag::ImplausibleMaterial,
-                   "the wave speed sqrt(E/RHO_I) = " + speed + " is " +
-                       (fast ? "above the speed of light (3.0e8 m/s)" : "below 1 m/s") +
-                       "; solids have 20 (soft foams, rubbers) to 18000 m/s (diamond), metals about 5000 "
-                       "m/s: check the units of E and RHO_I");
-      }
-    }
-    mat.shear = mat.young / (2.0 * (1.0 + mat.poisson));
-    mat.bulk = mat.poisson < 0.5 ? mat.young / (3.0 * (1.0 - 2.0 * mat.poisson)) : 0.0;
-    if (law2) {
-      mat.iflag = static_cast<int>(r.get_int("Iflag"));
-      mat.flag_vp = static_cast<int>(r.get_int("flagVP"));
-      if (mat.flag_vp == 0) mat.flag_vp = 2;
-      mat.p_min = r.given("Pmin") && r.get_real("Pmin") != 0 ? r.get_real("Pmin") : -1e20;
-      mat.eps_p_max = r.get_real("EPS_p_max");
-      mat.sig_max0 = r.get_real("SIG_max0");
-      if (mat.eps_p_max == 0) mat.eps_p_max = 1e20;
-      if (mat.sig_max0 == 0) mat.sig_max0 = 1e20;
-      if (mat.iflag == 1) {
-        mat.sig_y_input = r.get_real("SIG_Y");
-        mat.uts = r.get_real("UTS");
-        mat.e_uts = r.get_real("EUTS");
-        // Iflag = 1: rm = UTS (1 + e_uts), ag = ln(1 + e_uts), n = rm ag / (rm - sy), b = rm / (n ag^(n-1)).
-        const double sy = mat.sig_y_input;
-        const double rm = mat.uts * (1.0 + mat.e_uts);
-        const double ag = std::log1p(mat.e_uts);
-        if (sy <= 0 || mat.uts <= 0 || mat.e_uts <= 0 || rm <= sy) {
-          error_at(r, "SIG_Y", Diag::InconsistentValues,
-                   "Iflag = 1 needs SIG_Y > 0, UTS > 0, EUTS > 0 and UTS(1+EUTS) > SIG_Y; got SIG_Y = " +
-                       num(sy) + ", UTS = " + num(mat.uts) + ", EUTS = " + num(mat.e_uts));
-        } else {
-          mat.a = sy;
-          mat.n = rm * ag / (rm - sy);
-          mat.b = rm / (mat.n * std::pow(ag, mat.n - 1.0));
-          if (mat.n > 1.0) {
-            mat.n = 1.0;
-            mat.b = (rm - sy) / (ag - rm / mat.young - sy / mat.young);
-            warning_at(r, "SIG_Y", Diag::DefaultApplied,
-                       "Iflag = 1 gives a hardening exponent above 1; n = 1 is used with b = " + num(mat.b));
-          }
-        }
-      } else {
-        mat.a = r.get_real("a");
-        mat.b = r.get_real("b");
-        mat.n = r.get_real("n");  // <= 1: the field's rule (keywords_starter.cpp)
-        if (mat.n == 0) mat.n = 1.0;
-        if (mat.a <= 0)
-          error_at(r, "a", Diag::ValueOutOfRange, "yield stress a = " + num(mat.a) + " must be > 0");
-      }
-      mat.c = r.get_real("c");
-      mat.eps_dot_0 = r.get_real("EPS_DOT_0");
-      if (mat.c != 0 && mat.eps_dot_0 <= 0) {
-        error_at(r, "EPS_DOT_0", Diag::RequiredValueMissing,
-                 "strain-rate coefficient c = " + num(mat.c) +
-                     " needs a reference strain rate EPS_DOT_0 > 0 (it is blank or 0)");
-      }
-      if (mat.c == 0) mat.eps_dot_0 = 1.0;
-      mat.icc = static_cast<int>(r.get_int("ICC"));
-      if (mat.icc == 0) mat.icc = 1;
-      mat.fsmooth = static_cast<int>(r.get_int("Fsmooth"));
-      mat.f_cut = r.get_real("F_cut");
-      mat.chard = r.get_real("Chard");
-      mat.m_temp = r.get_real("m");
-      if (mat.m_temp == 0) mat.m_temp = 1.0;
-      mat.t_melt = r.get_real("T_melt");
-      if (mat.t_melt == 0) mat.t_melt = 1e20;
-      mat.rho_cp = r.get_real("rhoC_p");
-      mat.t_ref = r.get_real("T_r");
-      if (mat.t_ref <= 0) mat.t_ref = 300.0;
-      mat.t_max = r.get_real("T_max");
-      if (mat.t_max == 0) mat.t_max = 1e20;
-    }
-    if (law36) read_plas_tab(r, mat);
-    if (law27) read_plas_brit(r, mat);
     if (register_id(mat_ids_, mat.id, static_cast<std::int32_t>(m_.materials.size()), r, "material", first))
       m_.materials.push_back(std::move(mat));
   }
@@ -711,198 +727,254 @@ void ModelBuilder::build_subsets_and_parts() {
   }
 }
 
-void ModelBuilder::build_elements() {
-  using model::ElementType;
-  struct Kind {
-    std::string_view keyword;
-    std::string_view id_field;
-    model::ElementBlock* block;
-    model::PropertyKind prop_kind;
-  };
-  const Kind kinds[] = {{"/SHELL", "shell_ID", &m_.shells, model::PropertyKind::Shell},
-                        {"/SH3N", "tria_ID", &m_.shells3, model::PropertyKind::Shell},
-                        {"/BRICK", "brick_ID", &m_.bricks, model::PropertyKind::Solid},
-                        {"/TETRA4", "tetra_ID", &m_.tetras, model::PropertyKind::Solid}};
-  const char* node_names[8] = {"n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"};
-  for (const auto& kind : kinds) {
-    auto& b = *kind.block;
-    const int npe = b.npe();
-    std::vector<SourcePos> pos;
-    for (const auto* r : deck_.of(kind.keyword)) {
-      const auto& t = r->records;
-      const auto pit = part_ids_.find(r->id);
-      std::int32_t part = kNone;
-      if (pit == part_ids_.end()) {
-        diags_.error(Diag::MissingReference, at(r->pos, 1), about(*r),
-                     std::string(kind.keyword) + "/" + std::to_string(r->id) + ": part " +
-                         std::to_string(r->id) + " does not exist (no /PART/" + std::to_string(r->id) +
-                         "); the keyword line names the part");
+namespace {
+
+// An element keyword: its id field, the block it fills, the property kind its parts need.
+struct ElementKind {
+  std::string_view keyword;
+  std::string_view id_field;
+  model::ElementBlock* block;
+  model::PropertyKind prop_kind;
+};
+
+constexpr const char* kNodeNames[8] = {"n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"};
+
+// The part the keyword line names (kNone, with the error, when it does not exist); a part whose property is
+// of another shape than the elements' is an error.
+std::int32_t element_part(ModelBuilder& b, const KeywordRecord& r, const ElementKind& kind) {
+  const auto pit = b.part_ids_.find(r.id);
+  if (pit == b.part_ids_.end()) {
+    b.diags_.error(Diag::MissingReference, b.at(r.pos, 1), ModelBuilder::about(r),
+                   std::string(kind.keyword) + "/" + std::to_string(r.id) + ": part " + std::to_string(r.id) +
+                       " does not exist (no /PART/" + std::to_string(r.id) +
+                       "); the keyword line names the part");
+    return kNone;
+  }
+  const std::int32_t part = pit->second;
+  const auto& m = b.m_;
+  const auto& p = m.parts[part];
+  if (p.property != kNone && m.properties[p.property].kind != kind.prop_kind) {
+    b.diags_.error(Diag::PartWrongKind, b.at(r.pos, 1), ModelBuilder::about(r),
+                   "part " + std::to_string(r.id) + " has a " +
+                       (m.properties[p.property].kind == model::PropertyKind::Spring ? "spring"
+                        : kind.prop_kind == model::PropertyKind::Shell               ? "solid"
+                                                                                     : "shell") +
+                       " property (/PROP/" + std::to_string(m.properties[p.property].id) + "); " +
+                       std::string(kind.keyword) + " elements need a " +
+                       (kind.prop_kind == model::PropertyKind::Shell ? "/PROP/SHELL" : "/PROP/SOLID"));
+  }
+  return part;
+}
+
+// The nodes of element `eid` (user ids `user`, read at `pos`) into blk.conn, each marked used; returns
+// whether one is blank or does not exist (kNone in its slot, with the error).
+bool append_element_nodes(ModelBuilder& b, model::ElementBlock& blk, std::string_view keyword,
+                          std::int64_t eid, const std::int64_t* user, SourcePos pos) {
+  const int npe = blk.npe();
+  bool missing = false;
+  for (int k = 0; k < npe; ++k) {
+    std::int32_t n = kNone;
+    if (user[k] == 0) {
+      b.diags_.error(Diag::ElementNodeMissing, b.at(pos, 11 + 10 * k), About{keyword, eid},
+                     std::string(kNodeNames[k]) + " is blank or 0: element " + std::to_string(eid) +
+                         " needs " + std::to_string(npe) + " nodes");
+      missing = true;
+    } else {
+      n = b.m_.nodes.index.find(user[k]);
+      if (n < 0) {
+        b.diags_.error(Diag::ElementNodeMissing, b.at(pos, 11 + 10 * k), About{keyword, eid},
+                       "element " + std::to_string(eid) + " uses node " + std::to_string(user[k]) + " (" +
+                           kNodeNames[k] + "), which does not exist");
+        missing = true;
       } else {
-        part = pit->second;
-        const auto& p = m_.parts[part];
-        if (p.property != kNone && m_.properties[p.property].kind != kind.prop_kind) {
-          diags_.error(Diag::PartWrongKind, at(r->pos, 1), about(*r),
-                       "part " + std::to_string(r->id) + " has a " +
-                           (m_.properties[p.property].kind == model::PropertyKind::Spring ? "spring"
-                            : kind.prop_kind == model::PropertyKind::Shell                ? "solid"
-                                                                                          : "shell") +
-                           " property (/PROP/" + std::to_string(m_.properties[p.property].id) + "); " +
-                           std::string(kind.keyword) + " elements need a " +
-                           (kind.prop_kind == model::PropertyKind::Shell ? "/PROP/SHELL" : "/PROP/SOLID"));
-        }
-      }
-      const int cid = t.column(kind.id_field);
-      int cn[8];
-      for (int k = 0; k < npe; ++k) cn[k] = t.column(node_names[k]);
-      const int cthick = t.column("Thick");
-      const int cphi = t.column("PHI");
-      if (cid < 0) continue;
-      for (std::size_t e = 0; e < t.size(); ++e) {
-        const std::int64_t eid = t.ints[cid][e];
-        b.id.push_back(eid);
-        b.part.push_back(part);
-        b.thickness.push_back(cthick >= 0 ? t.reals[cthick][e] : 0.0);
-        b.phi.push_back(cphi >= 0 ? t.reals[cphi][e] : 0.0);
-        pos.push_back(t.pos[e]);
-        std::int64_t user[8] = {};
-        for (int k = 0; k < npe; ++k) user[k] = cn[k] >= 0 ? t.ints[cn[k]][e] : 0;
-        // A quad with n4 = 0 is a triangle written as a quad: n4 := n3.
-        if (kind.block->type == ElementType::Shell4 && user[3] == 0) user[3] = user[2];
-        bool missing = false;
-        for (int k = 0; k < npe; ++k) {
-          std::int32_t n = kNone;
-          if (user[k] == 0) {
-            diags_.error(Diag::ElementNodeMissing, at(t.pos[e], 11 + 10 * k), About{kind.keyword, eid},
-                         std::string(node_names[k]) + " is blank or 0: element " + std::to_string(eid) +
-                             " needs " + std::to_string(npe) + " nodes");
-            missing = true;
-          } else {
-            n = m_.nodes.index.find(user[k]);
-            if (n < 0) {
-              diags_.error(Diag::ElementNodeMissing, at(t.pos[e], 11 + 10 * k), About{kind.keyword, eid},
-                           "element " + std::to_string(eid) + " uses node " + std::to_string(user[k]) + " (" +
-                               node_names[k] + "), which does not exist");
-              missing = true;
-            } else {
-              node_used_[n] = 1;
-            }
-          }
-          b.conn.push_back(n);
-        }
-        if (part != kNone) ++m_.parts[part].element_count;
-        if (missing) continue;
-        // Coordinates that could not be read are already reported; their geometry would only echo it.
-        bool unreadable = false;
-        for (int k = 0; k < npe; ++k) unreadable = unreadable || node_bad_[b.conn[b.conn.size() - npe + k]];
-        if (unreadable) continue;
-        // Geometry.
-        const std::size_t base = b.conn.size() - static_cast<std::size_t>(npe);
-        auto X = [&](int k) {
-          const auto n = b.conn[base + static_cast<std::size_t>(k)];
-          return model::Vec3{m_.nodes.x[n], m_.nodes.y[n], m_.nodes.z[n]};
-        };
-        const About ab{kind.keyword, eid};
-        if (b.type == ElementType::Tetra4) {
-          check_tetra(b, base, t.pos[e], eid);
-        } else if (b.type == ElementType::Brick8) {
-          std::array<model::Vec3, 8> x{};
-          for (int k = 0; k < 8; ++k) x[k] = X(k);
-          const double v = model::brick_volume(x);
-          if (!(v > 0)) {
-            diags_.error(
-                Diag::NonPositiveVolume, at(t.pos[e], 1), ab,
-                "brick " + std::to_string(eid) + " has " + (v == 0 ? "zero" : "negative") + " volume (" +
-                    num(v) + "): " +
-                    (v < 0 ? "its nodes n1-n4 and n5-n8 are numbered so that the element is inverted; "
-                             "n1-n4 must turn counter-clockwise seen from the n5-n8 face"
-                           : "its nodes are flat or collapsed"));
-          } else if (const auto corner = model::most_negative_brick_corner(x); corner.ratio < -1e-6) {
-            // The one-point volume averages the corners, so a tangled brick passes it and then runs
-            // with a stiffness and a step that belong to no real shape.
-            diags_.warning(
-                Diag::TangledBrick, at(t.pos[e], 1), ab,
-                "brick " + std::to_string(eid) + " is tangled: its corner at node " +
-                    std::to_string(m_.nodes.id[b.conn[base + static_cast<std::size_t>(corner.node)]]) +
-                    " (n" + std::to_string(corner.node + 1) +
-                    ") is turned inside out (its edges there span a negative volume: the faces meeting there "
-                    "fold through each other or the brick is re-entrant), though its volume (" +
-                    num(v) +
-                    ") is positive; in a valid brick every corner's three edges turn the same "
-                    "way as n1-n2, n1-n4, n1-n5");
-          }
-        } else {
-          double area = 0;
-          if (b.type == ElementType::Shell3) {
-            area = model::triangle_area(X(0), X(1), X(2));
-          } else {
-            area = model::quad_area(X(0), X(1), X(2), X(3));
-            if (b.conn[base + 2] == b.conn[base + 3]) {
-              // n4 = n3: a degenerate triangle, accepted as Radioss does.
-            }
-          }
-          int distinct = 0;
-          for (int k = 0; k < npe; ++k) {
-            bool seen = false;
-            for (int l = 0; l < k; ++l) seen = seen || b.conn[base + k] == b.conn[base + l];
-            distinct += seen ? 0 : 1;
-          }
-          if (distinct < 3) {
-            diags_.error(Diag::RepeatedNodeInElement, at(t.pos[e], 1), ab,
-                         "shell " + std::to_string(eid) + " has only " + std::to_string(distinct) +
-                             " distinct nodes; a shell needs 3 (triangle) or 4");
-          } else if (!(area > 0)) {
-            diags_.error(
-                Diag::NonPositiveArea, at(t.pos[e], 1), ab,
-                "shell " + std::to_string(eid) + " has zero area: its nodes are aligned or collapsed");
-          }
-          const double th = b.thickness.back();
-          if (th < 0) {
-            diags_.error(Diag::NonPositiveThickness,
-                         at(t.pos[e], cthick >= 0 ? t.fields[cthick]->first_col : 1), ab,
-                         "element thickness " + num(th) +
-                             " is negative; it must be > 0 (or blank to use the "
-                             "property thickness)");
-          } else if (th == 0 && part != kNone && m_.parts[part].property != kNone &&
-                     m_.properties[m_.parts[part].property].kind == model::PropertyKind::Shell &&
-                     m_.properties[m_.parts[part].property].shell.thickness == 0) {
-            diags_.error(Diag::NonPositiveThickness, at(t.pos[e], 1), ab,
-                         "shell " + std::to_string(eid) +
-                             " has no thickness: the element card gives none and /PROP/" +
-                             std::to_string(m_.properties[m_.parts[part].property].id) +
-                             " Thick is 0; give a thickness > 0 on either");
-          }
-        }
+        b.node_used_[n] = 1;
       }
     }
-    if (b.type == ElementType::Brick8) brick_pos_ = pos;
-    // Element ids unique within the type; tetrahedra also share the bricks' id space (Radioss keeps both in
-    // one solid element table).
-    if (b.type == ElementType::Tetra4) {
-      for (std::size_t i = 0; i < b.id.size(); ++i) {
-        const auto other = m_.bricks.index.find(b.id[i]);
-        if (other < 0) continue;
-        const SourcePos p = brick_pos_[static_cast<std::size_t>(other)];
-        diags_.error(Diag::DuplicateId, at(pos[i], 1), About{kind.keyword, b.id[i]},
-                     "element id " + std::to_string(b.id[i]) + " is already used by /BRICK at " +
-                         deck_.files[p.file] + ":" + std::to_string(p.line) +
-                         "; tetrahedra and bricks share one id space (solid elements), element ids must "
-                         "be unique");
-      }
+    blk.conn.push_back(n);
+  }
+  return missing;
+}
+
+model::Vec3 element_node_position(const model::Model& m, const model::ElementBlock& blk, std::size_t base,
+                                  int k) {
+  const auto n = blk.conn[base + static_cast<std::size_t>(k)];
+  return model::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
+}
+
+// A brick whose nodes start at blk.conn[base]: a volume that is not positive is an error, a corner turned
+// inside out a warning.
+void check_brick_shape(ModelBuilder& b, const model::ElementBlock& blk, std::size_t base, SourcePos pos,
+                       const About& ab) {
+  const auto& m = b.m_;
+  const std::int64_t eid = ab.id;
+  std::array<model::Vec3, 8> x{};
+  for (int k = 0; k < 8; ++k) x[k] = element_node_position(m, blk, base, k);
+  const double v = model::brick_volume(x);
+  if (!(v > 0)) {
+    b.diags_.error(Diag::NonPositiveVolume, b.at(pos, 1), ab,
+                   "brick " + std::to_string(eid) + " has " + (v == 0 ? "zero" : "negative") + " volume (" +
+                       num(v) + "): " +
+                       (v < 0 ? "its nodes n1-n4 and n5-n8 are numbered so that the element is inverted; "
+                                "n1-n4 must turn counter-clockwise seen from the n5-n8 face"
+                              : "its nodes are flat or collapsed"));
+  } else if (const auto corner = model::most_negative_brick_corner(x); corner.ratio < -1e-6) {
+    // The one-point volume averages the corners, so a tangled brick passes it and then runs
+    // with a stiffness and a step that belong to no real shape.
+    b.diags_.warning(
+        Diag::TangledBrick, b.at(pos, 1), ab,
+        "brick " + std::to_string(eid) + " is tangled: its corner at node " +
+            std::to_string(m.nodes.id[blk.conn[base + static_cast<std::size_t>(corner.node)]]) + " (n" +
+            std::to_string(corner.node + 1) +
+            ") is turned inside out (its edges there span a negative volume: the faces meeting there "
+            "fold through each other or the brick is re-entrant), though its volume (" +
+            num(v) +
+            ") is positive; in a valid brick every corner's three edges turn the same "
+            "way as n1-n2, n1-n4, n1-n5");
+  }
+}
+
+// A shell whose nodes start at blk.conn[base], read at `pos` (its thickness in column `thick_column`): fewer
+// than 3 distinct nodes, no area, a negative thickness, or no thickness on the element nor on its property,
+// are errors.
+void check_shell_shape(ModelBuilder& b, const model::ElementBlock& blk, std::size_t base, SourcePos pos,
+                       int thick_column, std::int32_t part, const About& ab) {
+  const auto& m = b.m_;
+  const std::int64_t eid = ab.id;
+  const int npe = blk.npe();
+  auto X = [&](int k) { return element_node_position(m, blk, base, k); };
+  double area = 0;
+  if (blk.type == model::ElementType::Shell3) {
+    area = model::triangle_area(X(0), X(1), X(2));
+  } else {
+    area = model::quad_area(X(0), X(1), X(2), X(3));
+    if (blk.conn[base + 2] == blk.conn[base + 3]) {
+      // n4 = n3: a degenerate triangle, accepted as Radioss does.
     }
-    std::int64_t dup = 0;
-    if (!b.index.build(b.id, dup)) {
-      std::unordered_map<std::int64_t, std::size_t> first;
-      for (std::size_t i = 0; i < b.id.size(); ++i) {
-        const auto [it, ok] = first.emplace(b.id[i], i);
-        if (!ok) {
-          const SourcePos p = pos[it->second];
-          diags_.error(Diag::DuplicateId, at(pos[i], 1), About{kind.keyword, b.id[i]},
-                       "element id " + std::to_string(b.id[i]) + " is already used at " +
-                           deck_.files[p.file] + ":" + std::to_string(p.line) +
-                           "; element ids must be unique");
-        }
-      }
+  }
+  int distinct = 0;
+  for (int k = 0; k < npe; ++k) {
+    bool seen = false;
+    for (int l = 0; l < k; ++l) seen = seen || blk.conn[base + k] == blk.conn[base + l];
+    distinct += seen ? 0 : 1;
+  }
+  if (distinct < 3) {
+    b.diags_.error(Diag::RepeatedNodeInElement, b.at(pos, 1), ab,
+                   "shell " + std::to_string(eid) + " has only " + std::to_string(distinct) +
+                       " distinct nodes; a shell needs 3 (triangle) or 4");
+  } else if (!(area > 0)) {
+    b.diags_.error(Diag::NonPositiveArea, b.at(pos, 1), ab,
+                   "shell " + std::to_string(eid) + " has zero area: its nodes are aligned or collapsed");
+  }
+  const double th = blk.thickness.back();
+  if (th < 0) {
+    b.diags_.error(Diag::NonPositiveThickness, b.at(pos, thick_column), ab,
+                   "element thickness " + num(th) +
+                       " is negative; it must be > 0 (or blank to use the "
+                       "property thickness)");
+  } else if (th == 0 && part != kNone && m.parts[part].property != kNone &&
+             m.properties[m.parts[part].property].kind == model::PropertyKind::Shell &&
+             m.properties[m.parts[part].property].shell.thickness == 0) {
+    b.diags_.error(Diag::NonPositiveThickness, b.at(pos, 1), ab,
+                   "shell " + std::to_string(eid) +
+                       " has no thickness: the element card gives none and /PROP/" +
+                       std::to_string(m.properties[m.parts[part].property].id) +
+                       " Thick is 0; give a thickness > 0 on either");
+  }
+}
+
+// The elements of one keyword's records into the kind's block, with their nodes and shapes checked; the
+// line of each element to `pos`.
+void read_element_records(ModelBuilder& b, const ElementKind& kind, const KeywordRecord& r,
+                          std::vector<SourcePos>& pos) {
+  auto& blk = *kind.block;
+  const int npe = blk.npe();
+  const auto& t = r.records;
+  const std::int32_t part = element_part(b, r, kind);
+  const int cid = t.column(kind.id_field);
+  int cn[8];
+  for (int k = 0; k < npe; ++k) cn[k] = t.column(kNodeNames[k]);
+  const int cthick = t.column("Thick");
+  const int cphi = t.column("PHI");
+  if (cid < 0) return;
+  for (std::size_t e = 0; e < t.size(); ++e) {
+    const std::int64_t eid = t.ints[cid][e];
+    blk.id.push_back(eid);
+    blk.part.push_back(part);
+    blk.thickness.push_back(cthick >= 0 ? t.reals[cthick][e] : 0.0);
+    blk.phi.push_back(cphi >= 0 ? t.reals[cphi][e] : 0.0);
+    pos.push_back(t.pos[e]);
+    std::int64_t user[8] = {};
+    for (int k = 0; k < npe; ++k) user[k] = cn[k] >= 0 ? t.ints[cn[k]][e] : 0;
+    // A quad with n4 = 0 is a triangle written as a quad: n4 := n3.
+    if (blk.type == model::ElementType::Shell4 && user[3] == 0) user[3] = user[2];
+    const bool missing = append_element_nodes(b, blk, kind.keyword, eid, user, t.pos[e]);
+    if (part != kNone) ++b.m_.parts[part].element_count;
+    if (missing) continue;
+    // Coordinates that could not be read are already reported; their geometry would only echo it.
+    bool unreadable = false;
+    for (int k = 0; k < npe; ++k) unreadable = unreadable || b.node_bad_[blk.conn[blk.conn.size() - npe + k]];
+    if (unreadable) continue;
+    // Geometry.
+    const std::size_t base = blk.conn.size() - static_cast<std::size_t>(npe);
+    const About ab{kind.keyword, eid};
+    if (blk.type == model::ElementType::Tetra4)
+      b.check_tetra(blk, base, t.pos[e], eid);
+    else if (blk.type == model::ElementType::Brick8)
+      check_brick_shape(b, blk, base, t.pos[e], ab);
+    else
+      check_shell_shape(b, blk, base, t.pos[e], cthick >= 0 ? t.fields[cthick]->first_col : 1, part, ab);
+  }
+}
+
+// Tetrahedra share the bricks' id space (Radioss keeps both in one solid element table): a tetrahedron id
+// that a brick has is an error.
+void check_tetra_ids_against_bricks(ModelBuilder& b, const ElementKind& kind,
+                                    const std::vector<SourcePos>& pos) {
+  const auto& blk = *kind.block;
+  for (std::size_t i = 0; i < blk.id.size(); ++i) {
+    const auto other = b.m_.bricks.index.find(blk.id[i]);
+    if (other < 0) continue;
+    const SourcePos p = b.brick_pos_[static_cast<std::size_t>(other)];
+    b.diags_.error(Diag::DuplicateId, b.at(pos[i], 1), About{kind.keyword, blk.id[i]},
+                   "element id " + std::to_string(blk.id[i]) + " is already used by /BRICK at " +
+                       b.deck_.files[p.file] + ":" + std::to_string(p.line) +
+                       "; tetrahedra and bricks share one id space (solid elements), element ids must "
+                       "be unique");
+  }
+}
+
+// The block's id index; every id used twice within it is an error, with both lines.
+void index_element_ids(ModelBuilder& b, const ElementKind& kind, const std::vector<SourcePos>& pos) {
+  auto& blk = *kind.block;
+  std::int64_t dup = 0;
+  if (blk.index.build(blk.id, dup)) return;
+  std::unordered_map<std::int64_t, std::size_t> first;
+  for (std::size_t i = 0; i < blk.id.size(); ++i) {
+    const auto [it, ok] = first.emplace(blk.id[i], i);
+    if (!ok) {
+      const SourcePos p = pos[it->second];
+      b.diags_.error(Diag::DuplicateId, b.at(pos[i], 1), About{kind.keyword, blk.id[i]},
+                     "element id " + std::to_string(blk.id[i]) + " is already used at " +
+                         b.deck_.files[p.file] + ":" + std::to_string(p.line) +
+                         "; element ids must be unique");
     }
+  }
+}
+
+}  // namespace
+
+void ModelBuilder::build_elements() {
+  const ElementKind kinds[] = {{"/SHELL", "shell_ID", &m_.shells, model::PropertyKind::Shell},
+                               {"/SH3N", "tria_ID", &m_.shells3, model::PropertyKind::Shell},
+                               {"/BRICK", "brick_ID", &m_.bricks, model::PropertyKind::Solid},
+                               {"/TETRA4", "tetra_ID", &m_.tetras, model::PropertyKind::Solid}};
+  for (const auto& kind : kinds) {
+    std::vector<SourcePos> pos;
+    for (const auto* r : deck_.of(kind.keyword)) read_element_records(*this, kind, *r, pos);
+    if (kind.block->type == model::ElementType::Brick8) brick_pos_ = pos;
+    // Element ids unique within the type; tetrahedra also share the bricks' id space.
+    if (kind.block->type == model::ElementType::Tetra4) check_tetra_ids_against_bricks(*this, kind, pos);
+    index_element_ids(*this, kind, pos);
   }
 }
 

@@ -297,6 +297,116 @@ class StarterReader {
     return first;
   }
 
+  // Where a field's value was written, and what its messages call it.
+  struct FieldPlace {
+    std::string what;  // "field E (Young's modulus)"
+    SourcePos pos;
+    int column;
+    const About& about;
+  };
+
+  // An integer field's text into v.i (and v.r); false, with the error, when it is not an integer.
+  bool read_integer(std::string_view raw, FieldValue& v, const FieldPlace& p) {
+    bool ok = true;
+    const auto st = parse_int(raw, v.i);
+    if (st == NumberStatus::Malformed) {
+      // A real with no fractional part written in an integer field is common in decks written by
+      // hand; anything else is an error.
+      double r = 0;
+      if (parse_real(raw, r) == NumberStatus::Ok && r == std::floor(r) && std::abs(r) < 9e15) {
+        v.i = static_cast<std::int64_t>(r);
+      } else {
+        diags_.error(Diag::BadInteger, at(p.pos, p.column), p.about,
+                     p.what + ": '" + std::string(raw) + "' is not an integer; write digits only, e.g. 12");
+        ok = false;
+      }
+    } else if (st == NumberStatus::Overflow) {
+      diags_.error(Diag::IntegerOverflow, at(p.pos, p.column), p.about,
+                   p.what + ": '" + std::string(raw) + "' is out of the integer range");
+      ok = false;
+    }
+    v.r = static_cast<double>(v.i);
+    return ok;
+  }
+
+  // A real field's text into v.r; false, with the error, when it is not a number.
+  bool read_real(std::string_view raw, FieldValue& v, const FieldPlace& p) {
+    bool ok = true;
+    const auto st = parse_real(raw, v.r);
+    if (st == NumberStatus::Malformed) {
+      diags_.error(Diag::BadReal, at(p.pos, p.column), p.about,
+                   p.what + ": '" + std::string(raw) +
+                       "' is not a number; accepted forms: 1.5, .5, 5., 1E-3, 1.D3, 1.5d-3, 210000003000");
+      ok = false;
+    } else if (st == NumberStatus::Overflow) {
+      diags_.error(
+          Diag::RealOverflow, at(p.pos, p.column), p.about,
+          p.what + ": '" + std::string(raw) + "' is beyond the double-precision range (about 1.8E308)");
+      ok = false;
+    }
+    v.i = 0;
+    return ok;
+  }
+
+  // A number outside the declared accepted values or bounds is an error, unless it was reported already
+  // (`unreadable`, or 0 in a required field) or is a blank optional field with no default.
+  void check_accepted(const FieldDecl& f, const FieldValue& v, bool zero, bool unreadable, double value,
+                      const FieldPlace& p) {
+    if (unreadable || (zero && f.required)) {
+      // Already reported as unreadable or missing; a range message on top would repeat it.
+    } else if (!f.allowed.empty() && f.type == FieldType::Int &&
+               std::find(f.allowed.begin(), f.allowed.end(), v.i) == f.allowed.end()) {
+      diags_.error(
+          Diag::ValueOutOfRange, at(p.pos, p.column), p.about,
+          p.what + " = " + std::to_string(v.i) + " is not accepted; accepted values: " + describe_allowed(f));
+    } else if ((f.min && (f.min_exclusive ? value <= *f.min : value < *f.min)) ||
+               (f.max && (f.max_exclusive ? value >= *f.max : value > *f.max))) {
+      if (!(zero && !f.required && !f.zero_default && v.blank)) {
+        diags_.error(Diag::ValueOutOfRange, at(p.pos, p.column), p.about,
+                     p.what + " = " + fmt_num(value) + " is out of range; accepted: " + describe_bounds(f));
+      }
+    }
+  }
+
+  // A value given in a field radx reads and does not use: a warning when it changes no result; when it
+  // changes the physics, an error, or with --allow-substitutions a warning and a listed substitution.
+  void report_unused_value(const FieldDecl& f, double value, const FieldPlace& p) {
+    if (!f.changes_physics) {
+      diags_.warning(Diag::UnimplementedOption, at(p.pos, p.column), p.about,
+                     p.what + " = " + fmt_num(value) + " is read but not used by radx; it changes no result");
+    } else if (deck_.allow_substitutions) {
+      const std::string text =
+          p.what + " = " + fmt_num(value) + " is not implemented by radx: the run goes on without it";
+      diags_.warning(Diag::Substitution, at(p.pos, p.column), p.about, text);
+      deck_.substitutions.push_back(std::string(p.about.keyword) +
+                                    (p.about.id ? " " + std::to_string(p.about.id) : std::string()) + ": " +
+                                    text);
+    } else {
+      diags_.error(Diag::PhysicsNotImplemented, at(p.pos, p.column), p.about,
+                   p.what + " = " + fmt_num(value) +
+                       " changes the physics and radx does not implement it; leave it blank or 0, or run "
+                       "with --allow-substitutions to run without it");
+    }
+  }
+
+  // The checks of a number once read: a required value, the zero default, the accepted values and bounds,
+  // and a value radx does not use.
+  void check_number(const FieldDecl& f, FieldValue& v, bool unreadable, const FieldPlace& p) {
+    const bool zero = (f.type == FieldType::Int) ? v.i == 0 : v.r == 0.0;
+    if (zero && f.required && !unreadable) {
+      diags_.error(Diag::RequiredValueMissing, at(p.pos, p.column), p.about,
+                   p.what + " is " + (v.blank ? "blank" : "0") + ": a value is required");
+    }
+    if (zero && f.zero_default) {
+      v.r = *f.zero_default;
+      v.i = int_if_representable(*f.zero_default);
+      v.defaulted = true;
+    }
+    const double value = f.type == FieldType::Int ? static_cast<double>(v.i) : v.r;
+    check_accepted(f, v, zero, unreadable, value, p);
+    if (f.ignored && !zero && !v.defaulted) report_unused_value(f, value, p);
+  }
+
   // A field's text -> value, with defaults and checks.
   FieldValue parse_field(const FieldDecl& f, std::string_view raw, SourcePos pos, int column,
                          const About& about, bool card_cell = false) {
@@ -306,98 +416,19 @@ class StarterReader {
     v.column = static_cast<std::uint16_t>(column);
     raw = trim(raw);
     v.blank = raw.empty();
+    const FieldPlace place{"field " + std::string(f.name) + " (" + std::string(f.meaning) + ")", pos, column,
+                           about};
+    if (card_cell && f.type != FieldType::String) raw = leading_value(raw, place.what, pos, column, about);
     // A value already reported as unreadable is read as blank; it is not reported again as missing or out
     // of range.
     bool unreadable = false;
-    const std::string what = "field " + std::string(f.name) + " (" + std::string(f.meaning) + ")";
-    if (card_cell && f.type != FieldType::String) raw = leading_value(raw, what, pos, column, about);
     switch (f.type) {
       case FieldType::String: v.s = std::string(raw); break;
-      case FieldType::Int: {
-        const auto st = parse_int(raw, v.i);
-        if (st == NumberStatus::Malformed) {
-          // A real with no fractional part written in an integer field is common in decks written by
-          // hand; anything else is an error.
-          double r = 0;
-          if (parse_real(raw, r) == NumberStatus::Ok && r == std::floor(r) && std::abs(r) < 9e15) {
-            v.i = static_cast<std::int64_t>(r);
-          } else {
-            diags_.error(Diag::BadInteger, at(pos, column), about,
-                         what + ": '" + std::string(raw) + "' is not an integer; write digits only, e.g. 12");
-            v.blank = unreadable = true;
-          }
-        } else if (st == NumberStatus::Overflow) {
-          diags_.error(Diag::IntegerOverflow, at(pos, column), about,
-                       what + ": '" + std::string(raw) + "' is out of the integer range");
-          v.blank = unreadable = true;
-        }
-        v.r = static_cast<double>(v.i);
-        break;
-      }
-      case FieldType::Real: {
-        const auto st = parse_real(raw, v.r);
-        if (st == NumberStatus::Malformed) {
-          diags_.error(
-              Diag::BadReal, at(pos, column), about,
-              what + ": '" + std::string(raw) +
-                  "' is not a number; accepted forms: 1.5, .5, 5., 1E-3, 1.D3, 1.5d-3, 210000003000");
-          v.blank = unreadable = true;
-        } else if (st == NumberStatus::Overflow) {
-          diags_.error(
-              Diag::RealOverflow, at(pos, column), about,
-              what + ": '" + std::string(raw) + "' is beyond the double-precision range (about 1.8E308)");
-          v.blank = unreadable = true;
-        }
-        v.i = 0;
-        break;
-      }
+      case FieldType::Int: unreadable = !read_integer(raw, v, place); break;
+      case FieldType::Real: unreadable = !read_real(raw, v, place); break;
     }
-    if (f.type != FieldType::String) {
-      const bool zero = (f.type == FieldType::Int) ? v.i == 0 : v.r == 0.0;
-      if (zero && f.required && !unreadable) {
-        diags_.error(Diag::RequiredValueMissing, at(pos, column), about,
-                     what + " is " + (v.blank ? "blank" : "0") + ": a value is required");
-      }
-      if (zero && f.zero_default) {
-        v.r = *f.zero_default;
-        v.i = int_if_representable(*f.zero_default);
-        v.defaulted = true;
-      }
-      const double value = f.type == FieldType::Int ? static_cast<double>(v.i) : v.r;
-      if (unreadable || (zero && f.required)) {
-        // Already reported as unreadable or missing; a range message on top would repeat it.
-      } else if (!f.allowed.empty() && f.type == FieldType::Int &&
-                 std::find(f.allowed.begin(), f.allowed.end(), v.i) == f.allowed.end()) {
-        diags_.error(
-            Diag::ValueOutOfRange, at(pos, column), about,
-            what + " = " + std::to_string(v.i) + " is not accepted; accepted values: " + describe_allowed(f));
-      } else if ((f.min && (f.min_exclusive ? value <= *f.min : value < *f.min)) ||
-                 (f.max && (f.max_exclusive ? value >= *f.max : value > *f.max))) {
-        if (!(zero && !f.required && !f.zero_default && v.blank)) {
-          diags_.error(Diag::ValueOutOfRange, at(pos, column), about,
-                       what + " = " + fmt_num(value) + " is out of range; accepted: " + describe_bounds(f));
-        }
-      }
-      if (f.ignored && !zero && !v.defaulted) {
-        if (!f.changes_physics) {
-          diags_.warning(
-              Diag::UnimplementedOption, at(pos, column), about,
-              what + " = " + fmt_num(value) + " is read but not used by radx; it changes no result");
-        } else if (deck_.allow_substitutions) {
-          const std::string text =
-              what + " = " + fmt_num(value) + " is not implemented by radx: the run goes on without it";
-          diags_.warning(Diag::Substitution, at(pos, column), about, text);
-          deck_.substitutions.push_back(std::string(about.keyword) +
-                                        (about.id ? " " + std::to_string(about.id) : std::string()) + ": " +
-                                        text);
-        } else {
-          diags_.error(Diag::PhysicsNotImplemented, at(pos, column), about,
-                       what + " = " + fmt_num(value) +
-                           " changes the physics and radx does not implement it; leave it blank or 0, or run "
-                           "with --allow-substitutions to run without it");
-        }
-      }
-    }
+    if (unreadable) v.blank = true;
+    if (f.type != FieldType::String) check_number(f, v, unreadable, place);
     return v;
   }
 
@@ -569,162 +600,168 @@ class StarterReader {
                        ": skipped, as OpenRadioss skips them");
   }
 
-  void read_block(std::size_t first, std::size_t last) {
-    const auto& lines = text_.lines;
-    const TextLine& head = lines[first];
-    auto tokens = split_keyword(head.text);
-    if (tokens.empty()) {
-      diags_.error(Diag::UnknownKeyword, at(head.pos, 1), About{"/"}, "a lone '/' is not a keyword");
-      return;
-    }
-    if (tokens[0] == "END") return;
-    // Longest declared path that matches the leading tokens.
+  // The declaration of the longest declared path that matches the leading tokens, with the number of tokens
+  // its path takes in `used`; nullptr when none matches.
+  static const KeywordDecl* longest_declared_path(const std::vector<std::string>& tokens, std::size_t& used) {
     const auto& reg = starter_registry();
-    const KeywordDecl* decl = nullptr;
-    std::size_t used = 0;
     for (std::size_t n = std::min(tokens.size(), reg.max_tokens); n >= 1; --n) {
       const auto it = reg.by_path.find(join_path(tokens, n));
       if (it != reg.by_path.end()) {
-        decl = it->second;
         used = n;
-        break;
+        return it->second;
       }
     }
-    const std::string written(trim(head.text));
-    // The declaration must take every leading non-numeric field: `/SURF/PART/ALL/5` is not
-    // `/SURF/PART` with id "ALL".
+    return nullptr;
+  }
+
+  // How many of the leading tokens are not numeric fields (`/SURF/PART/ALL/5`: 3).
+  static std::size_t leading_words(const std::vector<std::string>& tokens) {
     std::size_t words = 0;
     while (words < tokens.size() &&
            !(std::isdigit(static_cast<unsigned char>(tokens[words].empty() ? 'x' : tokens[words][0])) ||
              tokens[words][0] == '-'))
       ++words;
-    // A Header::Word keyword takes one text field after its path (`/UNIT/LENGTH/mm`).
-    const bool word_header = decl && decl->header == schema::Header::Word;
-    if (decl && used + (word_header ? 1 : 0) < words) decl = nullptr;
-    if (!decl) {
-      // Strip trailing numeric header fields for the message.
-      std::size_t n = tokens.size();
-      while (n > 1 && !tokens[n - 1].empty() && std::isdigit(static_cast<unsigned char>(tokens[n - 1][0])))
-        --n;
-      const std::string path = join_path(tokens, n);
-      // The id written after the path names the object in the message (/MAT/LAW51/9: material 9).
-      std::int64_t written_id = 0;
-      if (n < tokens.size() && parse_int(tokens[n], written_id) != NumberStatus::Ok) written_id = 0;
-      if (written_id != 0) deck_.unread.push_back({path, written_id, head.pos});
-      if (is_known_unsupported(path)) {
-        diags_.error(
-            Diag::UnsupportedKeyword, at(head.pos, 1), About{path, written_id},
-            "the Radioss keyword " + path + " is not supported by radx; " + readable_alternatives(path));
-      } else if (const auto family = radioss_family(path); !family.empty()) {
-        diags_.error(Diag::UnsupportedKeyword, at(head.pos, 1), About{path, written_id},
-                     path + " is not a " + family +
-                         " radx reads (a Radioss keyword radx does not implement, or "
-                         "a misspelling); " +
-                         readable_alternatives(path));
-      } else {
-        diags_.error(Diag::UnknownKeyword, at(head.pos, 1), About{path},
-                     "unknown keyword " + path +
-                         ": not a keyword radx knows (check the spelling); see "
-                         "docs/keywords.md for the keywords radx reads");
-      }
-      return;
+    return words;
+  }
+
+  // The error for a keyword line that no declaration takes: a Radioss keyword radx does not support, one of a
+  // Radioss family radx reads others of, or an unknown keyword.
+  void report_undeclared_keyword(const std::vector<std::string>& tokens, const TextLine& head) {
+    // Strip trailing numeric header fields for the message.
+    std::size_t n = tokens.size();
+    while (n > 1 && !tokens[n - 1].empty() && std::isdigit(static_cast<unsigned char>(tokens[n - 1][0]))) --n;
+    const std::string path = join_path(tokens, n);
+    // The id written after the path names the object in the message (/MAT/LAW51/9: material 9).
+    std::int64_t written_id = 0;
+    if (n < tokens.size() && parse_int(tokens[n], written_id) != NumberStatus::Ok) written_id = 0;
+    if (written_id != 0) deck_.unread.push_back({path, written_id, head.pos});
+    if (is_known_unsupported(path)) {
+      diags_.error(
+          Diag::UnsupportedKeyword, at(head.pos, 1), About{path, written_id},
+          "the Radioss keyword " + path + " is not supported by radx; " + readable_alternatives(path));
+    } else if (const auto family = radioss_family(path); !family.empty()) {
+      diags_.error(Diag::UnsupportedKeyword, at(head.pos, 1), About{path, written_id},
+                   path + " is not a " + family +
+                       " radx reads (a Radioss keyword radx does not implement, or "
+                       "a misspelling); " +
+                       readable_alternatives(path));
+    } else {
+      diags_.error(Diag::UnknownKeyword, at(head.pos, 1), About{path},
+                   "unknown keyword " + path +
+                       ": not a keyword radx knows (check the spelling); see "
+                       "docs/keywords.md for the keywords radx reads");
     }
-    if (deck_.version < decl->since) {
-      diags_.error(Diag::UnsupportedVersion, at(head.pos, 1), About{decl->path},
-                   std::string(decl->path) + " is not read by radx in a deck of version " +
+  }
+
+  // Whether the deck's version has an established layout of `decl`; the error when it has not.
+  bool layout_known_in_version(const KeywordDecl& decl, const TextLine& head) {
+    if (deck_.version >= decl.since) return true;
+    diags_.error(Diag::UnsupportedVersion, at(head.pos, 1), About{decl.path},
+                 std::string(decl.path) + " is not read by radx in a deck of version " +
+                     std::to_string(deck_.version) +
+                     ": its layout in that format is not established; radx "
+                     "reads it in decks of version " +
+                     std::to_string(decl.since) + " and newer");
+    return false;
+  }
+
+  // The text field after a Header::Word keyword's path (`/UNIT/LENGTH/mm`), into rec.header_word; `used`
+  // then takes every token. False, with the error, when the line has not exactly one such field.
+  bool read_header_word(const KeywordDecl& decl, const std::vector<std::string>& tokens, std::size_t& used,
+                        const TextLine& head, KeywordRecord& rec) {
+    if (tokens.size() != used + 1) {
+      diags_.error(Diag::BadHeader, at(head.pos, 1), About{decl.path},
+                   std::string(decl.path) + " takes " + header_help(decl));
+      return false;
+    }
+    // The keyword fields are upper-cased; a unit name keeps its case (Mg is not mg).
+    std::string word(trim(head.text.substr(head.text.rfind('/') + 1)));
+    std::erase_if(word, [](char c) { return c == ' ' || c == '\t'; });
+    rec.header_word = word;
+    used = tokens.size();
+    return true;
+  }
+
+  // //SUBMODEL/id/unit/Vnnnn: the optional version of the submodel's text, checked and taken off `tokens`.
+  void take_submodel_version(const KeywordDecl& decl, std::vector<std::string>& tokens, std::size_t used,
+                             const TextLine& head) {
+    if (!(decl.path == "//SUBMODEL" && tokens.size() > used && tokens.back().size() > 1 &&
+          tokens.back()[0] == 'V'))
+      return;
+    std::int64_t v = 0;
+    if (parse_int(std::string_view(tokens.back()).substr(1), v) != NumberStatus::Ok || v != deck_.version) {
+      diags_.error(Diag::UnsupportedVersion, at(head.pos, 1), About{decl.path},
+                   "the submodel's version " + tokens.back() + " differs from the deck's (" +
                        std::to_string(deck_.version) +
-                       ": its layout in that format is not established; radx "
-                       "reads it in decks of version " +
-                       std::to_string(decl->since) + " and newer");
-      return;
+                       "): radx reads a submodel only in the format of the deck around it");
     }
-    KeywordRecord rec;
-    rec.decl = decl;
-    rec.written = written;
-    rec.pos = head.pos;
-    if (word_header) {
-      if (tokens.size() != used + 1) {
-        diags_.error(Diag::BadHeader, at(head.pos, 1), About{decl->path},
-                     std::string(decl->path) + " takes " + header_help(*decl));
-        return;
-      }
-      // The keyword fields are upper-cased; a unit name keeps its case (Mg is not mg).
-      std::string word(trim(head.text.substr(head.text.rfind('/') + 1)));
-      std::erase_if(word, [](char c) { return c == ' ' || c == '\t'; });
-      rec.header_word = word;
-      used = tokens.size();
-    }
-    if (decl->path == "/BEGIN" && tokens.size() > used) {
-      diags_.note(Diag::IgnoredControlCard, at(head.pos, 1), About{decl->path},
-                  written + ": the field after /BEGIN is ignored, as Radioss ignores it");
-      used = tokens.size();
-    }
-    // //SUBMODEL/id/unit/Vnnnn: the optional version of the submodel's text.
-    if (decl->path == "//SUBMODEL" && tokens.size() > used && tokens.back().size() > 1 &&
-        tokens.back()[0] == 'V') {
-      std::int64_t v = 0;
-      if (parse_int(std::string_view(tokens.back()).substr(1), v) != NumberStatus::Ok || v != deck_.version) {
-        diags_.error(Diag::UnsupportedVersion, at(head.pos, 1), About{decl->path},
-                     "the submodel's version " + tokens.back() + " differs from the deck's (" +
-                         std::to_string(deck_.version) +
-                         "): radx reads a submodel only in the format of the deck around it");
-      }
-      tokens.pop_back();
-    }
-    // Header fields.
+    tokens.pop_back();
+  }
+
+  // The numeric fields of the keyword line after the path (tokens from `used` on): checked against the
+  // declared header, then read as the record's id and unit id.
+  void read_header_fields(const KeywordDecl& decl, const std::vector<std::string>& tokens, std::size_t used,
+                          const TextLine& head, KeywordRecord& rec) {
     std::vector<std::int64_t> header;
     bool header_ok = true;
     for (std::size_t k = used; k < tokens.size(); ++k) {
       std::int64_t v = 0;
       if (parse_int(tokens[k], v) != NumberStatus::Ok || v < 0) {
-        diags_.error(Diag::BadHeader, at(head.pos, 1), About{decl->path},
-                     "'" + tokens[k] + "' in the keyword line is not a valid id: " + std::string(decl->path) +
-                         " takes " + header_help(*decl));
+        diags_.error(Diag::BadHeader, at(head.pos, 1), About{decl.path},
+                     "'" + tokens[k] + "' in the keyword line is not a valid id: " + std::string(decl.path) +
+                         " takes " + header_help(decl));
         header_ok = false;
       }
       header.push_back(v);
     }
     using schema::Header;
-    const std::size_t allowed = decl->header == Header::None ? 0 : (decl->header == Header::IdUnit ? 2 : 1);
+    const std::size_t allowed = decl.header == Header::None ? 0 : (decl.header == Header::IdUnit ? 2 : 1);
     if (header_ok && header.size() > allowed) {
       diags_.error(
-          Diag::BadHeader, at(head.pos, 1), About{decl->path},
-          "too many fields in the keyword line: " + std::string(decl->path) + " takes " + header_help(*decl));
+          Diag::BadHeader, at(head.pos, 1), About{decl.path},
+          "too many fields in the keyword line: " + std::string(decl.path) + " takes " + header_help(decl));
     }
     const bool needs_id =
-        decl->header == Header::IdUnit || decl->header == Header::Id || decl->header == Header::PartId;
+        decl.header == Header::IdUnit || decl.header == Header::Id || decl.header == Header::PartId;
     if (header_ok && needs_id && (header.empty() || header[0] <= 0)) {
-      diags_.error(Diag::BadHeader, at(head.pos, 1), About{decl->path},
-                   std::string(decl->path) + " needs a positive " + std::string(decl->id_name) +
-                       " in the keyword line: " + header_help(*decl));
+      diags_.error(Diag::BadHeader, at(head.pos, 1), About{decl.path},
+                   std::string(decl.path) + " needs a positive " + std::string(decl.id_name) +
+                       " in the keyword line: " + header_help(decl));
     }
-    if (decl->header == Header::UnitOnly) {
+    if (decl.header == Header::UnitOnly) {
       rec.unit_id = header.empty() ? 0 : header[0];
-    } else if (decl->header != Header::None) {
+    } else if (decl.header != Header::None) {
       rec.id = header.empty() ? 0 : header[0];
       if (header.size() > 1) rec.unit_id = header[1];
     }
-    std::size_t cur = first + 1;
-    if (decl->has_title) {
-      if (cur < last) {
-        rec.title =
-            std::string(trim(lines[cur].text.substr(0, std::min<std::size_t>(100, lines[cur].text.size()))));
-        for (auto& c : rec.title)
-          if (c == '\t') c = ' ';
-        ++cur;
-      } else {
-        diags_.error(
-            Diag::MissingTitle, at(head.pos, 1), About{decl->path, rec.id},
-            std::string(decl->path) + " is followed by a title line, then its cards; this block has none");
-      }
+  }
+
+  // The title line of a keyword that has one, at line `cur` of the block ending before `last`; returns the
+  // line after it.
+  std::size_t read_title(const KeywordDecl& decl, std::size_t cur, std::size_t last, const TextLine& head,
+                         KeywordRecord& rec) {
+    if (!decl.has_title) return cur;
+    const auto& lines = text_.lines;
+    if (cur < last) {
+      rec.title =
+          std::string(trim(lines[cur].text.substr(0, std::min<std::size_t>(100, lines[cur].text.size()))));
+      for (auto& c : rec.title)
+        if (c == '\t') c = ' ';
+      ++cur;
+    } else {
+      diags_.error(
+          Diag::MissingTitle, at(head.pos, 1), About{decl.path, rec.id},
+          std::string(decl.path) + " is followed by a title line, then its cards; this block has none");
     }
-    const About about{decl->path, rec.id, rec.title};
-    if (decl->support == schema::Support::Ignored) {
-      diags_.note(Diag::IgnoredControlCard, at(head.pos, 1), about,
-                  written + " is accepted and ignored: it changes no physics in radx");
-    }
-    // Fixed cards.
-    for (const auto& card : decl->cards) {
+    return cur;
+  }
+
+  // The fixed cards of the deck's version whose condition holds, one line each from line `cur` (a card past
+  // the block's end is read as blank); returns the line after them.
+  std::size_t read_cards(const KeywordDecl& decl, std::size_t cur, std::size_t last, const TextLine& head,
+                         KeywordRecord& rec, const About& about) {
+    const auto& lines = text_.lines;
+    for (const auto& card : decl.cards) {
       if (!card.in_version(deck_.version)) continue;
       if (card.condition.op != schema::CondOp::Always) {
         const FieldValue* f = rec.find(card.condition.field);
@@ -734,88 +771,155 @@ class StarterReader {
       read_card(card, line, head.pos, rec, about);
       if (line) ++cur;
     }
-    // Tail.
+    return cur;
+  }
+
+  // Tail::None: the first non-blank line after the cards is reported, and none is read.
+  void warn_data_after_cards(const KeywordDecl& decl, std::size_t cur, std::size_t last, const About& about) {
+    const auto& lines = text_.lines;
+    for (; cur < last; ++cur) {
+      if (!trim(lines[cur].text).empty()) {
+        diags_.warning(Diag::ExtraData, at(lines[cur].pos, 1), about,
+                       "data line after the last card of " + std::string(decl.path) + " is ignored: '" +
+                           std::string(trim(lines[cur].text)) + "'");
+        break;
+      }
+    }
+  }
+
+  // The record lines from `cur` to `last` into rec.records (blank lines and lines of text skipped).
+  void read_record_lines(const KeywordDecl& decl, std::size_t cur, std::size_t last, KeywordRecord& rec,
+                         const About& about, SkippedText& skipped) {
+    const auto& lines = text_.lines;
+    init_table(rec.records, decl.record);
+    for (; cur < last; ++cur) {
+      if (trim(lines[cur].text).empty() || skip_text_line(lines[cur], skipped)) continue;
+      read_record(rec.records, lines[cur], about);
+    }
+  }
+
+  // The id lines from `cur` to `last` into rec.ids (lines of text skipped).
+  void read_id_lines(std::size_t cur, std::size_t last, KeywordRecord& rec, const About& about,
+                     SkippedText& skipped) {
+    const auto& lines = text_.lines;
+    for (; cur < last; ++cur)
+      if (!skip_text_line(lines[cur], skipped)) read_ids(rec, lines[cur], about);
+  }
+
+  // Tail::Text: every non-blank character from `cur` to `last`, with where it was written.
+  void read_text_lines(std::size_t cur, std::size_t last, KeywordRecord& rec) {
+    const auto& lines = text_.lines;
+    for (; cur < last; ++cur) {
+      const auto& l = lines[cur];
+      for (std::size_t c = 0; c < l.text.size(); ++c) {
+        if (l.text[c] == ' ' || l.text[c] == '\t') continue;
+        rec.text += l.text[c];
+        rec.text_pos.push_back(l.pos);
+        rec.text_column.push_back(static_cast<std::uint32_t>(c + 1));
+      }
+    }
+  }
+
+  // The lines of time-history variable names from `cur` (the first always, then each line whose first cell
+  // does not start with a number), upper-cased into rec.th_variables; returns the line after them.
+  std::size_t read_th_variable_lines(std::size_t cur, std::size_t last, KeywordRecord& rec) {
+    const auto& lines = text_.lines;
+    bool first_line = true;
+    for (; cur < last; ++cur) {
+      const auto head_cell = trim(cell(lines[cur].text, 1, 10));
+      const bool var_line =
+          first_line || (!head_cell.empty() && !std::isdigit(static_cast<unsigned char>(head_cell[0])) &&
+                         head_cell[0] != '-' && head_cell[0] != '+');
+      if (!var_line) break;
+      first_line = false;
+      for (int c = 0; c < 10; ++c) {
+        const auto name = trim(cell(lines[cur].text, 10 * c + 1, 10 * c + 10));
+        if (!name.empty()) rec.th_variables.push_back(upper(name));
+      }
+    }
+    return cur;
+  }
+
+  // What follows the cards, by the declared tail, from line `cur` to the block's end `last`.
+  void read_tail(const KeywordDecl& decl, std::size_t cur, std::size_t last, KeywordRecord& rec,
+                 const About& about) {
     using schema::Tail;
-    switch (decl->tail) {
-      case Tail::None:
-        for (; cur < last; ++cur) {
-          if (!trim(lines[cur].text).empty()) {
-            diags_.warning(Diag::ExtraData, at(lines[cur].pos, 1), about,
-                           "data line after the last card of " + std::string(decl->path) + " is ignored: '" +
-                               std::string(trim(lines[cur].text)) + "'");
-            break;
-          }
-        }
-        break;
-      case Tail::Records: {
-        init_table(rec.records, decl->record);
-        SkippedText skipped;
-        for (; cur < last; ++cur) {
-          if (trim(lines[cur].text).empty() || skip_text_line(lines[cur], skipped)) continue;
-          read_record(rec.records, lines[cur], about);
-        }
-        report_skipped(skipped, decl->path, about);
-        break;
-      }
-      case Tail::IdList: {
-        SkippedText skipped;
-        for (; cur < last; ++cur)
-          if (!skip_text_line(lines[cur], skipped)) read_ids(rec, lines[cur], about);
-        report_skipped(skipped, decl->path, about);
-        break;
-      }
-      case Tail::Text:
-        for (; cur < last; ++cur) {
-          const auto& l = lines[cur];
-          for (std::size_t c = 0; c < l.text.size(); ++c) {
-            if (l.text[c] == ' ' || l.text[c] == '\t') continue;
-            rec.text += l.text[c];
-            rec.text_pos.push_back(l.pos);
-            rec.text_column.push_back(static_cast<std::uint32_t>(c + 1));
-          }
-        }
-        break;
+    SkippedText skipped;
+    switch (decl.tail) {
+      case Tail::None: warn_data_after_cards(decl, cur, last, about); return;
+      case Tail::Records: read_record_lines(decl, cur, last, rec, about, skipped); break;
+      case Tail::IdList: read_id_lines(cur, last, rec, about, skipped); break;
+      case Tail::Text: read_text_lines(cur, last, rec); return;
       case Tail::ThVarsThenIds:
-      case Tail::ThVarsThenRecords: {
-        bool first_line = true;
-        for (; cur < last; ++cur) {
-          const auto head_cell = trim(cell(lines[cur].text, 1, 10));
-          const bool var_line =
-              first_line || (!head_cell.empty() && !std::isdigit(static_cast<unsigned char>(head_cell[0])) &&
-                             head_cell[0] != '-' && head_cell[0] != '+');
-          if (!var_line) break;
-          first_line = false;
-          for (int c = 0; c < 10; ++c) {
-            const auto name = trim(cell(lines[cur].text, 10 * c + 1, 10 * c + 10));
-            if (!name.empty()) rec.th_variables.push_back(upper(name));
-          }
-        }
-        SkippedText skipped;
-        if (decl->tail == Tail::ThVarsThenIds) {
-          for (; cur < last; ++cur)
-            if (!skip_text_line(lines[cur], skipped)) read_ids(rec, lines[cur], about);
-        } else {
-          init_table(rec.records, decl->record);
-          for (; cur < last; ++cur) {
-            if (trim(lines[cur].text).empty() || skip_text_line(lines[cur], skipped)) continue;
-            read_record(rec.records, lines[cur], about);
-          }
-        }
-        report_skipped(skipped, decl->path, about);
+        read_id_lines(read_th_variable_lines(cur, last, rec), last, rec, about, skipped);
         break;
+      case Tail::ThVarsThenRecords:
+        read_record_lines(decl, read_th_variable_lines(cur, last, rec), last, rec, about, skipped);
+        break;
+    }
+    report_skipped(skipped, decl.path, about);
+  }
+
+  // Whether `decl` is a keyword the deck may hold once and an earlier record of it is kept already; the
+  // warning when so.
+  bool repeats_singleton(const KeywordDecl& decl, const TextLine& head, const About& about) {
+    if (!decl.singleton) return false;
+    for (const auto& r : deck_.records) {
+      if (r.decl == &decl) {
+        diags_.warning(Diag::DuplicateSingleton, at(head.pos, 1), about,
+                       std::string(decl.path) + " appears more than once; only the first (line " +
+                           std::to_string(r.pos.line) + ") counts");
+        return true;
       }
     }
+    return false;
+  }
+
+  // One keyword block, lines `first` (the keyword line) to `last` (excluded): the declaration, the header,
+  // the title, the cards and the tail, into a record of deck_.
+  void read_block(std::size_t first, std::size_t last) {
+    const TextLine& head = text_.lines[first];
+    auto tokens = split_keyword(head.text);
+    if (tokens.empty()) {
+      diags_.error(Diag::UnknownKeyword, at(head.pos, 1), About{"/"}, "a lone '/' is not a keyword");
+      return;
+    }
+    if (tokens[0] == "END") return;
+    std::size_t used = 0;
+    const KeywordDecl* decl = longest_declared_path(tokens, used);
+    const std::string written(trim(head.text));
+    // The declaration must take every leading non-numeric field: `/SURF/PART/ALL/5` is not
+    // `/SURF/PART` with id "ALL".
+    // A Header::Word keyword takes one text field after its path (`/UNIT/LENGTH/mm`).
+    const bool word_header = decl && decl->header == schema::Header::Word;
+    if (decl && used + (word_header ? 1 : 0) < leading_words(tokens)) decl = nullptr;
+    if (!decl) {
+      report_undeclared_keyword(tokens, head);
+      return;
+    }
+    if (!layout_known_in_version(*decl, head)) return;
+    KeywordRecord rec;
+    rec.decl = decl;
+    rec.written = written;
+    rec.pos = head.pos;
+    if (word_header && !read_header_word(*decl, tokens, used, head, rec)) return;
+    if (decl->path == "/BEGIN" && tokens.size() > used) {
+      diags_.note(Diag::IgnoredControlCard, at(head.pos, 1), About{decl->path},
+                  written + ": the field after /BEGIN is ignored, as Radioss ignores it");
+      used = tokens.size();
+    }
+    take_submodel_version(*decl, tokens, used, head);
+    read_header_fields(*decl, tokens, used, head, rec);
+    std::size_t cur = read_title(*decl, first + 1, last, head, rec);
+    const About about{decl->path, rec.id, rec.title};
+    if (decl->support == schema::Support::Ignored) {
+      diags_.note(Diag::IgnoredControlCard, at(head.pos, 1), about,
+                  written + " is accepted and ignored: it changes no physics in radx");
+    }
+    cur = read_cards(*decl, cur, last, head, rec, about);
+    read_tail(*decl, cur, last, rec, about);
     if (!place_in_submodel(rec, about)) return;
-    if (decl->singleton) {
-      for (const auto& r : deck_.records) {
-        if (r.decl == decl) {
-          diags_.warning(Diag::DuplicateSingleton, at(head.pos, 1), about,
-                         std::string(decl->path) + " appears more than once; only the first (line " +
-                             std::to_string(r.pos.line) + ") counts");
-          return;
-        }
-      }
-    }
+    if (repeats_singleton(*decl, head, about)) return;
     deck_.records.push_back(std::move(rec));
   }
 

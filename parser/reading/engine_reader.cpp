@@ -112,6 +112,150 @@ std::vector<std::string_view> split_values(std::string_view line) {
   return out;
 }
 
+// The declaration whose path or alias matches the most leading tokens, with that count in `used`; nullptr
+// when none matches.
+const EngineKeywordDecl* matching_declaration(const std::vector<std::string>& tokens, bool is_anim,
+                                              std::size_t& used) {
+  const EngineKeywordDecl* decl = nullptr;
+  for (const auto& d : schema::engine_keywords()) {
+    std::size_t n = match(d, d.path, tokens, is_anim);
+    for (auto a : d.aliases) n = std::max(n, match(d, a, tokens, is_anim));
+    if (n > used) {
+      used = n;
+      decl = &d;
+    }
+  }
+  return decl;
+}
+
+// The error for a keyword line no declaration takes: unknown to Radioss, or a form radx does not read.
+void report_undeclared_engine_keyword(const std::vector<std::string>& tokens, bool is_anim,
+                                      const std::string& written, Where where, Diagnostics& diags) {
+  const std::string forms = paths_of_root(tokens, is_anim);
+  if (forms.empty())
+    diags.error(Diag::UnknownKeyword, where, About{written},
+                "engine keyword " + written +
+                    " is not a keyword of the Radioss engine deck (Radioss stops on it too); see "
+                    "docs/keywords.md for the engine keywords");
+  else
+    diags.error(Diag::UnsupportedKeyword, where, About{written},
+                "engine keyword " + written + " is not a form radx reads; radx reads " + forms +
+                    " (docs/keywords.md)");
+}
+
+// The lines of one keyword block while they are read: `cur` is the next one, `end` the first after the
+// block. `checked`: the keyword is one radx reads, so its lines are checked.
+struct EngineBlock {
+  const DeckText& text;
+  Diagnostics& diags;
+  const TextLine& head;
+  std::size_t cur;
+  std::size_t end;
+  About about;
+  bool checked;
+};
+
+// The next non-blank line of the block, or nullptr at its end: list-directed reads pass over blank lines.
+const TextLine* next_data_line(EngineBlock& b) {
+  while (b.cur < b.end && trim(b.text.lines[b.cur].text).empty()) ++b.cur;
+  return b.cur < b.end ? &b.text.lines[b.cur] : nullptr;
+}
+
+// The numbers of a data line (0 where a value is not a number: the error when the block is checked).
+std::vector<double> read_line_values(EngineBlock& b, const TextLine& line, const schema::EngineLineDecl& ld,
+                                     EngineRecord& rec) {
+  std::vector<double> values;
+  const auto parts = split_values(line.text);
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    double v = 0;
+    const auto st = parse_real(parts[k], v);
+    if (st != NumberStatus::Ok) rec.has_unreadable = true;
+    if (st != NumberStatus::Ok && b.checked) {
+      const std::string name =
+          k < ld.names.size() ? std::string(ld.names[k]) : "value " + std::to_string(k + 1);
+      b.diags.error(st == NumberStatus::Overflow ? Diag::RealOverflow : Diag::BadReal,
+                    b.text.where(line.pos, 1), b.about,
+                    name + ": '" + std::string(parts[k]) + "' is not a number");
+    }
+    values.push_back(v);
+  }
+  return values;
+}
+
+// One data line per declared line into rec.lines; in a checked block, a line with fewer values than its
+// declaration requires is an error.
+void read_declared_lines(EngineBlock& b, const EngineKeywordDecl& decl, EngineRecord& rec) {
+  for (const auto& ld : decl.lines) {
+    const TextLine* line = next_data_line(b);
+    std::vector<double> values;
+    if (line) {
+      values = read_line_values(b, *line, ld, rec);
+      ++b.cur;
+    }
+    if (b.checked && values.size() < ld.required) {
+      std::string names;
+      for (std::size_t k = 0; k < ld.names.size(); ++k) names += (k ? " " : "") + std::string(ld.names[k]);
+      b.diags.error(Diag::EngineBadLine, b.text.where(line ? line->pos : b.head.pos, 1), b.about,
+                    std::string(decl.path) + " needs " + std::to_string(ld.required) +
+                        " value(s) on this line (" + names + "); found " + std::to_string(values.size()));
+    }
+    rec.lines.push_back(std::move(values));
+  }
+}
+
+// Every remaining line of the block as integer ids into rec.ids.
+void read_engine_id_lines(EngineBlock& b, EngineRecord& rec) {
+  const auto& lines = b.text.lines;
+  for (; b.cur < b.end; ++b.cur) {
+    for (auto part : split_values(lines[b.cur].text)) {
+      std::int64_t v = 0;
+      if (parse_int(part, v) != NumberStatus::Ok) {
+        b.diags.error(Diag::BadInteger, b.text.where(lines[b.cur].pos, 1), b.about,
+                      "'" + std::string(part) + "' is not an id");
+        continue;
+      }
+      rec.ids.push_back(v);
+      rec.id_pos.push_back(lines[b.cur].pos);
+    }
+  }
+}
+
+// The keyword block of lines `first` (the keyword line, split into `tokens`) to `end` (excluded) into a
+// record of `deck`.
+void read_engine_block(const DeckText& text, std::size_t first, std::size_t end,
+                       const std::vector<std::string>& tokens, bool is_anim, EngineDeck& deck,
+                       Diagnostics& diags) {
+  const TextLine& head = text.lines[first];
+  std::size_t used = 0;
+  const EngineKeywordDecl* decl = matching_declaration(tokens, is_anim, used);
+  std::string written(trim(head.text));
+  if (!decl) {
+    report_undeclared_engine_keyword(tokens, is_anim, written, text.where(head.pos, 1), diags);
+    return;
+  }
+  EngineRecord rec;
+  rec.decl = decl;
+  rec.written = written;
+  rec.pos = head.pos;
+  for (std::size_t k = used; k < tokens.size(); ++k) rec.header.push_back(tokens[k]);
+  // Keywords radx does not read are reported once; their data lines are read but never checked.
+  EngineBlock b{text, diags, head, first + 1, end, About{decl->path}, decl->support == schema::Support::Read};
+  report_not_read(*decl, written, text.where(head.pos, 1), b.about, diags);
+  if (b.checked && rec.header.size() < decl->header_required) {
+    diags.error(Diag::BadHeader, text.where(head.pos, 1), b.about,
+                std::string(decl->path) + " needs " + std::to_string(decl->header_required) +
+                    " field(s) after the keyword in the keyword line");
+  }
+  read_declared_lines(b, *decl, rec);
+  if (b.checked && decl->id_lines) read_engine_id_lines(b, rec);
+  if (b.checked && next_data_line(b)) {
+    diags.warning(Diag::ExtraData, text.where(text.lines[b.cur].pos, 1), b.about,
+                  "data line after the last line of " + std::string(decl->path) + " is ignored: '" +
+                      std::string(trim(text.lines[b.cur].text)) + "'");
+  }
+  deck.records.push_back(std::move(rec));
+}
+
 }  // namespace
 
 double EngineRecord::value(std::size_t line, std::size_t k, double dflt) const {
@@ -140,7 +284,6 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
   }
   deck.files = text.files;
   const auto& lines = text.lines;
-  const auto& decls = schema::engine_keywords();
   bool ended = false;
   std::size_t i = 0;
   while (i < lines.size()) {
@@ -162,100 +305,7 @@ EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags) {
     }
     std::size_t j = i + 1;
     while (j < lines.size() && (lines[j].text.empty() || lines[j].text.front() != '/')) ++j;
-    const EngineKeywordDecl* decl = nullptr;
-    std::size_t used = 0;
-    for (const auto& d : decls) {
-      std::size_t n = match(d, d.path, tokens, is_anim);
-      for (auto a : d.aliases) n = std::max(n, match(d, a, tokens, is_anim));
-      if (n > used) {
-        used = n;
-        decl = &d;
-      }
-    }
-    std::string written(trim(head.text));
-    if (!decl) {
-      const std::string forms = paths_of_root(tokens, is_anim);
-      if (forms.empty())
-        diags.error(Diag::UnknownKeyword, text.where(head.pos, 1), About{written},
-                    "engine keyword " + written +
-                        " is not a keyword of the Radioss engine deck (Radioss stops on it too); see "
-                        "docs/keywords.md for the engine keywords");
-      else
-        diags.error(Diag::UnsupportedKeyword, text.where(head.pos, 1), About{written},
-                    "engine keyword " + written + " is not a form radx reads; radx reads " + forms +
-                        " (docs/keywords.md)");
-      i = j;
-      continue;
-    }
-    EngineRecord rec;
-    rec.decl = decl;
-    rec.written = written;
-    rec.pos = head.pos;
-    for (std::size_t k = used; k < tokens.size(); ++k) rec.header.push_back(tokens[k]);
-    const About about{decl->path};
-    // Keywords radx does not read are reported once; their data lines are read but never checked.
-    const bool checked = decl->support == schema::Support::Read;
-    report_not_read(*decl, written, text.where(head.pos, 1), about, diags);
-    if (checked && rec.header.size() < decl->header_required) {
-      diags.error(Diag::BadHeader, text.where(head.pos, 1), about,
-                  std::string(decl->path) + " needs " + std::to_string(decl->header_required) +
-                      " field(s) after the keyword in the keyword line");
-    }
-    std::size_t cur = i + 1;
-    // Skip blank lines between data lines: list-directed reads pass over them.
-    auto next_data = [&]() -> const TextLine* {
-      while (cur < j && trim(lines[cur].text).empty()) ++cur;
-      return cur < j ? &lines[cur] : nullptr;
-    };
-    for (const auto& ld : decl->lines) {
-      const TextLine* line = next_data();
-      std::vector<double> values;
-      if (line) {
-        const auto parts = split_values(line->text);
-        for (std::size_t k = 0; k < parts.size(); ++k) {
-          double v = 0;
-          const auto st = parse_real(parts[k], v);
-          if (st != NumberStatus::Ok) rec.has_unreadable = true;
-          if (st != NumberStatus::Ok && checked) {
-            const std::string name =
-                k < ld.names.size() ? std::string(ld.names[k]) : "value " + std::to_string(k + 1);
-            diags.error(st == NumberStatus::Overflow ? Diag::RealOverflow : Diag::BadReal,
-                        text.where(line->pos, 1), about,
-                        name + ": '" + std::string(parts[k]) + "' is not a number");
-          }
-          values.push_back(v);
-        }
-        ++cur;
-      }
-      if (checked && values.size() < ld.required) {
-        std::string names;
-        for (std::size_t k = 0; k < ld.names.size(); ++k) names += (k ? " " : "") + std::string(ld.names[k]);
-        diags.error(Diag::EngineBadLine, text.where(line ? line->pos : head.pos, 1), about,
-                    std::string(decl->path) + " needs " + std::to_string(ld.required) +
-                        " value(s) on this line (" + names + "); found " + std::to_string(values.size()));
-      }
-      rec.lines.push_back(std::move(values));
-    }
-    if (checked && decl->id_lines) {
-      for (; cur < j; ++cur) {
-        for (auto part : split_values(lines[cur].text)) {
-          std::int64_t v = 0;
-          if (parse_int(part, v) != NumberStatus::Ok) {
-            diags.error(Diag::BadInteger, text.where(lines[cur].pos, 1), about,
-                        "'" + std::string(part) + "' is not an id");
-            continue;
-          }
-          rec.ids.push_back(v);
-          rec.id_pos.push_back(lines[cur].pos);
-        }
-      }
-    }
-    if (checked && next_data()) {
-      diags.warning(Diag::ExtraData, text.where(lines[cur].pos, 1), about,
-                    "data line after the last line of " + std::string(decl->path) + " is ignored: '" +
-                        std::string(trim(lines[cur].text)) + "'");
-    }
-    deck.records.push_back(std::move(rec));
+    read_engine_block(text, i, j, tokens, is_anim, deck, diags);
     i = j;
   }
   if (!ended) {
