@@ -1,4 +1,4 @@
-// TYPE7 penalty contact, one cycle per call (type7-lagdt.md sections 4 and 5).
+// TYPE7 penalty contact, one cycle per call (docs/theory/type7-lagdt.md sections 4 and 5).
 //
 // For each interface active at t (Tstart <= t < Tstop, and t >= the activation time of its sensor while the
 // sensor is on: OpenRadioss inttri.F, intfop2.F), after a new candidate sort when due (4.8):
@@ -193,9 +193,9 @@ Vec3 rotated_into_plane(const Vec3& f_old, const Vec3& n) {
   return len_new > 0 ? model::scale(in_plane, len_old / len_new) : in_plane;
 }
 
-// Which parts of a pair's response a /CTCLAW law replaces (contact-laws.md section 5). The interface's law
-// decides it for all of its pairs, so the pair loop is compiled once per variant and chosen once per
-// interface (interface_cycle): no per-pair branch on the law's kind remains.
+// Which parts of a pair's response a /CTCLAW law replaces (docs/theory/contact-laws.md section 5). The
+// interface's law decides it for all of its pairs, so the pair loop is compiled once per variant and chosen
+// once per interface (interface_cycle): no per-pair branch on the law's kind remains.
 struct LawVariant {
   bool law = false;       // a /CTCLAW law: forces on the tributary area A_s, the segment's first tangent
   bool normal = false;    // its normal law replaces the interface's penalty
@@ -396,7 +396,7 @@ template <LawVariant V>
   const double shrink = std::sqrt(1.0 + xi * xi) - xi;
   // Voted with the stiffness the pair can reach within the step (reach_factor): tau0 = the step at p = 0.
   // Not under /DT/INTER/CST on a plain TYPE7: there the step is held at Tmin by added mass, computed from
-  // k_eff as type7-lagdt.md section 6 writes it.
+  // k_eff as docs/theory/type7-lagdt.md section 6 writes it.
   // A /CTCLAW law votes with law_reach_stiffness, and exact Coulomb's sticking spring kappa A_s when
   // stiffer (a spring across the normal one: their directions are orthogonal, so the larger one sets the
   // step).
@@ -615,9 +615,9 @@ struct Type7Contact::Impl {
   }
 
   // Nodal steps dt = scale sqrt(2 m / G) (G the Gershgorin row sums above: for a node against a fixed
-  // segment G = k_eff and this is type7-lagdt.md 4.4's sqrt(2 m / k_eff); when both sides move the
-  // relative motion is stiffer and the step shrinks with it); /DT/INTER/CST on plain TYPE7 adds mass below
-  // Tmin.
+  // segment G = k_eff and this is docs/theory/type7-lagdt.md 4.4's sqrt(2 m / k_eff); when both sides move
+  // the relative motion is stiffer and the step shrinks with it); /DT/INTER/CST on plain TYPE7 adds mass
+  // below Tmin.
   ContactStep nodal_steps(const ContactNodes& nodes) {
     ContactStep vote;
     std::sort(k_nodes.begin(), k_nodes.end());
@@ -870,9 +870,9 @@ struct Type7Contact::Impl {
     run_chunks(&parallel, (n + kCandidateChunk - 1) / kCandidateChunk, body);
   }
 
-  // type7-lagdt.md 4.6 at Tstart > 0 or under a sensor (the starter treated t = 0 otherwise): nodes already
-  // closer than the gap when the interface starts get the Inacti treatment then, from the current
-  // coordinates.
+  // docs/theory/type7-lagdt.md 4.6 at Tstart > 0 or under a sensor (the starter treated t = 0 otherwise):
+  // nodes already closer than the gap when the interface starts get the Inacti treatment then, from the
+  // current coordinates.
   void start_penetrations(InterfaceState& st, const ContactNodes& nodes, double t) {
     const auto& in = *st.in;
     st.search->update(Coordinates{nodes.x, nodes.y, nodes.z}, true);
@@ -960,9 +960,9 @@ struct Type7Contact::Impl {
     return true;
   }
 
-  // The pair's stiffness, mass and relative velocity, and its /CTCLAW law: a law (contact-laws.md section 5)
-  // replaces the normal law, the friction law or both, with its forces on the tributary area A_s of the node
-  // (the hit segment's area for a node without one).
+  // The pair's stiffness, mass and relative velocity, and its /CTCLAW law: a law (docs/theory/contact-laws.md
+  // section 5) replaces the normal law, the friction law or both, with its forces on the tributary area A_s
+  // of the node (the hit segment's area for a node without one).
   template <LawVariant V>
   [[gnu::always_inline]] PairContact pair_contact(const InterfaceState& st, const PairGeometry& pg,
                                                   const CycleFlags& f, const ContactNodes& nodes) const {
