@@ -178,6 +178,230 @@ std::string starter_hint(const std::string& model_path, const std::string& root)
          "_0000.rad), or give the model file with --model FILE\n";
 }
 
+// The run starts: nothing of an earlier run of this name may stay beside its outputs, where a script would
+// take it for this run's, even if this run is refused or killed before its first cycle. False (with the
+// reason on err) when the folder cannot be locked or cleared.
+bool claim_output_folder(const std::string& out_dir, const std::string& root, RunLock& lock,
+                         std::ostream& err) {
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  try {
+    lock = RunLock(out_dir, root);
+    remove_earlier_engine_outputs(out_dir, root);
+  } catch (const std::exception& e) {
+    err << "radx-engine: error: " << e.what() << '\n';
+    return false;
+  }
+  return true;
+}
+
+// The engine deck read into controls, its diagnostics printed; false when it has errors.
+bool read_engine_deck_checked(const std::string& path, Diagnostics& diags, EngineDeck& deck,
+                              model::RunControls& controls, std::ostream& err) {
+  controls = read_run_controls(path, diags, &deck);
+  diags.sort();
+  diags.print(err);
+  if (!diags.has_errors()) return true;
+  err << "radx-engine: " << diags.error_count() << " error(s) in " << path << "; nothing was run\n";
+  return false;
+}
+
+// What the engine said during the cycle: warnings to the listing, standard error and the summary; events to
+// the listing, with their cycle and time.
+void report_cycle_messages(solver::ExplicitEngine& engine, const solver::CycleReport& r,
+                           std::ostream& listing_file, io::EngineListing& listing, std::ostream& err,
+                           io::RunSummary& s) {
+  for (const auto& m : engine.take_messages()) {
+    listing_file << "  WARNING (cycle " << r.cycle << "): " << m << '\n';
+    err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
+    s.add_warning("cycle " + std::to_string(r.cycle) + ": " + m);
+  }
+  for (const auto& m : engine.take_events()) {
+    char at[64];
+    std::snprintf(at, sizeof at, " (cycle %lld, t = %.5E)", static_cast<long long>(r.cycle), r.time);
+    listing.message(" " + m + at);
+  }
+}
+
+// How the run ended: normally, interrupted by a signal, or in error; and the reason.
+void set_final_status(io::RunSummary& s, const solver::RunResult& result, int stopped_by,
+                      const std::string& stop_message) {
+  s.status = result.status == solver::RunStatus::Normal ? io::RunStatus::Normal
+             : stopped_by != 0                          ? io::RunStatus::Interrupted
+                                                        : io::RunStatus::Error;
+  s.message = !stop_message.empty()    ? stop_message
+              : result.message.empty() ? std::string("end time reached")
+                                       : result.message;
+}
+
+// The summary's model figures and the decks' warnings, before the run starts.
+void start_summary(io::RunSummary& s, const model::Model& model, const solver::ExplicitEngine& engine,
+                   std::initializer_list<const Diagnostics*> lists) {
+  s.nodes = model.nodes.size();
+  s.elements = engine.element_count();
+  for (const auto* list : lists)
+    for (const auto& d : list->items())
+      if (d.severity == Severity::Warning) s.add_warning(Diagnostics::format(d));
+}
+
+// The last state and time-history row, also after an error stop, and the energy plot. A failure to write them
+// makes the run an error termination (no longer an interruption), with that reason unless /STOP gave one.
+void finish_outputs(EngineOutputs& outputs, bool plot, std::ostream& err, solver::RunResult& result,
+                    std::string& stop_message, int& stopped_by) {
+  try {
+    outputs.finish(result, plot, err);
+  } catch (const std::exception& e) {
+    err << "radx-engine: error: cannot write the results: " << e.what() << '\n';
+    if (stop_message.empty() || stopped_by != 0)
+      stop_message = std::string("cannot write the results: ") + e.what();
+    stopped_by = 0;
+    result.status = solver::RunStatus::Error;
+  }
+}
+
+// The summary written, the reason also on standard error (where a batch system or a script looks for it), and
+// the exit code: 0 normal, 1 error, 128 + the signal for an interruption (as a shell reports it).
+int end_of_run(const io::RunSummary& s, const std::string& summary_path, int stopped_by, std::ostream& err) {
+  if (s.status == io::RunStatus::Error) err << "radx-engine: error termination: " << s.message << '\n';
+  std::string error;
+  if (!io::write_summary_json(summary_path, s, error)) {
+    err << "radx-engine: " << error << '\n';
+    return 1;
+  }
+  if (s.status == io::RunStatus::Interrupted)
+    err << "radx-engine: " << s.message << "; the last state, the summary and the listing are written\n";
+  if (s.status == io::RunStatus::Interrupted) return 128 + stopped_by;
+  return s.status == io::RunStatus::Normal ? 0 : 1;
+}
+
+// The listing's header: what runs, on what, in which units, with the deck's messages.
+io::EngineListingHeader listing_header(const EngineOptions& opt, const model::Model& model,
+                                       const std::string& model_path, const std::string& root,
+                                       const model::RunControls& controls,
+                                       std::initializer_list<const Diagnostics*> messages) {
+  io::EngineListingHeader h;
+  h.program_version = RADX_VERSION " (" RADX_ARCH ")";
+  h.engine_deck = opt.engine_deck;
+  h.model_file = model_path;
+  h.output_root = root;
+  h.nodes = model.nodes.size();
+  h.shells = model.shells.size();
+  h.shells3 = model.shells3.size();
+  h.bricks = model.bricks.size();
+  h.tetras = model.tetras.size();
+  h.interfaces = model.interfaces.size();
+  h.total_mass = model.total_mass;
+  h.mass_unit = model.units.mass_name;
+  h.length_unit = model.units.length_name;
+  h.time_unit = model.units.time_name;
+  h.controls = &controls;
+  for (const auto* list : messages)
+    for (const auto& d : list->items()) h.deck_messages.push_back(Diagnostics::format(d));
+  return h;
+}
+
+// One line of the listing for a report cycle; the switched LAGDT pairs only when an interface can switch.
+io::ListingLine listing_line(const solver::CycleReport& r, bool lagrange_column) {
+  io::ListingLine l;
+  l.cycle = r.cycle;
+  l.time = r.time;
+  l.dt = r.dt;
+  l.source = source_of(r.control.kind);
+  l.source_id = r.control.user_id;
+  l.source_node = r.control.node_id;
+  l.error_percent = r.energy.error_percent;
+  l.internal_energy = r.energy.internal;
+  l.kinetic_t = r.energy.kinetic_t;
+  l.kinetic_r = r.energy.kinetic_r;
+  l.external_work = r.energy.external_work;
+  l.mass_error = r.mass0 > 0 ? (r.mass - r.mass0) / r.mass0 : 0.0;
+  l.total_mass = r.mass;
+  l.added_mass = r.added_mass;
+  if (lagrange_column) l.switched_pairs = r.switched_pairs;
+  return l;
+}
+
+// Why /STOP stops the run at this report (energy error, mass error), or nothing.
+std::string stop_criterion(const model::RunControls& controls, const solver::CycleReport& r) {
+  const double err_pct = r.energy.error_percent;
+  const bool err_hit = controls.stop_positive_error_only ? err_pct > controls.stop_energy_error_pct
+                                                         : std::abs(err_pct) > controls.stop_energy_error_pct;
+  if (err_hit)
+    return "/STOP: energy error " + std::to_string(err_pct) + " % beyond " +
+           std::to_string(controls.stop_energy_error_pct) + " %";
+  if (r.mass0 > 0 && (r.mass - r.mass0) / r.mass0 > controls.stop_mass_error)
+    return "/STOP: mass error beyond " + std::to_string(controls.stop_mass_error);
+  return {};
+}
+
+// /RBODY/ON and /RBODY/OFF name rigid bodies of the model. Every body is active at the start of a run (one
+// with a sensor until the sensor releases it), so ON keeps it and OFF leaves it out of this run; an id the
+// model lacks switches nothing (a warning, as Radioss goes on too). And the cycle count the run would need:
+// the starter warns too, but only when it found this engine deck beside its own.
+Diagnostics check_deck_against_model(const EngineDeck& deck, model::RunControls& controls,
+                                     const model::Model& model) {
+  std::vector<std::int64_t> body_ids;
+  for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
+  Diagnostics model_diags;
+  check_rigid_body_switches(deck, body_ids, controls, model_diags);
+  check_cycle_count(deck, controls, model, model::estimate_stable_step(model), model_diags);
+  model_diags.sort();
+  return model_diags;
+}
+
+// The LAGDT solver's figures of the run.
+void fill_lagrange_summary(const contact::LagrangeStats& st, decltype(io::RunSummary::lagrange)& L) {
+  L.present = true;
+  L.cycles = st.cycles;
+  L.rows_max = st.rows_max;
+  L.rows_total = st.rows_total;
+  L.nonzeros_max = st.nonzeros_max;
+  L.dropped_rows = st.dropped_rows;
+  L.merged_rows = st.merged_rows;
+  L.factorizations = st.factorizations;
+  L.analyses = st.analyses;
+  L.symbolic_reuses = st.symbolic_reuses;
+  L.regularisations = st.regularisations;
+  L.active_set_passes = st.active_set_passes;
+  L.passes_max = st.passes_max;
+  L.unconverged = st.unconverged;
+  L.beta_max = st.beta_max;
+  L.seconds_assembly = st.seconds_assembly;
+  L.seconds_factorization = st.seconds_factorization;
+  L.seconds_solve = st.seconds_solve;
+}
+
+// The run's figures into its summary: cycles, time, cost, masses, momentum, energies, interfaces, the LAGDT
+// solver, the outputs written.
+void fill_run_summary(io::RunSummary& s, const solver::RunResult& result, const model::Model& model,
+                      const model::RunControls& controls, const solver::ExplicitEngine& engine,
+                      const EngineOutputs& outputs, const std::string& th_path) {
+  s.cycles = result.cycles;
+  s.time = result.time;
+  s.dt = result.dt;
+  s.threads = result.threads;
+  s.wall_seconds = result.wall_seconds;
+  s.contact_seconds = result.contact_seconds;
+  s.element_loop_seconds = result.element_seconds;
+  s.initial_mass = result.last.mass0;
+  s.mass = result.last.mass;
+  s.added_mass = result.last.added_mass;
+  s.momentum = result.last.momentum;
+  s.energy = to_io(result.last.energy);
+  s.substitutions = model.substitutions;
+  if (const auto* c = engine.contact())
+    for (const auto& r : c->results())
+      s.interfaces.push_back(io::InterfaceSummary{r.id, r.active_pairs, r.max_penetration,
+                                                  r.switched_pairs_max, r.switched_pairs_total, r.added_mass,
+                                                  r.deactivated_nodes, r.mean_candidates(), r.search_sorts});
+  if (const auto* c = engine.contact(); c != nullptr && c->has_lagrange())
+    fill_lagrange_summary(c->lagrange_stats(), s.lagrange);
+  s.states = outputs.states_written();
+  s.series = outputs.series_path();
+  if (!model.time_histories.empty() || controls.th_dt < 1e29) s.time_history = th_path;
+  s.output_seconds = outputs.seconds_writing();
+}
+
 }  // namespace
 
 // The file is removed as the lock is released, so a folder keeps no lock file after a run that ended. A
@@ -250,18 +474,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   // the run before its first cycle, and the default action (an end without a summary) never meets it.
   const StopSignals stop_signals;
   const std::string root = run_output_root(opt.engine_deck);
-  // The run starts: nothing of an earlier run of this name may stay beside its outputs, where a script would
-  // take it for this run's, even if this run is refused or killed before its first cycle.
-  std::error_code ec;
-  fs::create_directories(opt.out_dir, ec);
   RunLock lock;
-  try {
-    lock = RunLock(opt.out_dir, root);
-    remove_earlier_engine_outputs(opt.out_dir, root);
-  } catch (const std::exception& e) {
-    err << "radx-engine: error: " << e.what() << '\n';
-    return 1;
-  }
+  if (!claim_output_folder(opt.out_dir, root, lock, err)) return 1;
   const std::string summary_path = io::summary_json_path(opt.out_dir, root);
   io::RunSummary s;
   // A stop signal before the engine runs: the summary says so, and the exit code is the signal's.
@@ -276,14 +490,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   };
   Diagnostics diags;
   EngineDeck deck;
-  model::RunControls controls = read_run_controls(opt.engine_deck, diags, &deck);
-  diags.sort();
-  diags.print(err);
-  if (diags.has_errors()) {
-    err << "radx-engine: " << diags.error_count() << " error(s) in " << opt.engine_deck
-        << "; nothing was run\n";
-    return 1;
-  }
+  model::RunControls controls;
+  if (!read_engine_deck_checked(opt.engine_deck, diags, deck, controls, err)) return 1;
   s.run_name = controls.run_name;
   s.run_number = controls.run_number;
   const std::string model_path =
@@ -296,16 +504,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return 1;
   }
   if (StopSignals::received() != 0) return interrupted_early();
-  // /RBODY/ON and /RBODY/OFF name rigid bodies of the model. Every body is active at the start of a run (one
-  // with a sensor until the sensor releases it), so ON keeps it and OFF leaves it out of this run; an id the
-  // model lacks switches nothing (a warning, as Radioss goes on too).
-  std::vector<std::int64_t> body_ids;
-  for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
-  Diagnostics model_diags;
-  check_rigid_body_switches(deck, body_ids, controls, model_diags);
-  // The starter warns too, but only when it found this engine deck beside its own.
-  check_cycle_count(deck, controls, model, model::estimate_stable_step(model), model_diags);
-  model_diags.sort();
+  Diagnostics model_diags = check_deck_against_model(deck, controls, model);
   model_diags.print(err);
   // Kinematic conditions check what the starter could not (a moving wall without mass, a rigid body
   // without inertia) and throw with a message; report it as an input error.
@@ -327,11 +526,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
 
   // A "running" summary replaces none (the earlier run's went first), so a run killed outright leaves either
   // no summary or one that says it did not finish.
-  s.nodes = model.nodes.size();
-  s.elements = engine.element_count();
-  for (const auto* list : {&diags, &model_diags})
-    for (const auto& d : list->items())
-      if (d.severity == Severity::Warning) s.add_warning(Diagnostics::format(d));
+  start_summary(s, model, engine, {&diags, &model_diags});
   const std::string listing_path = (fs::path(opt.out_dir) / (root + "_0001.out")).string();
   std::ofstream listing_file(listing_path, std::ios::trunc);
   if (!listing_file) {
@@ -358,47 +553,12 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   if (!io::write_summary_json(summary_path, s, error)) return early_error(error);
   io::EngineListing listing(io::ListingSinks{&listing_file, &out, controls.print_stdout,
                                              io::stdout_is_terminal(), controls.print_header_every});
-  io::EngineListingHeader h;
-  h.program_version = RADX_VERSION " (" RADX_ARCH ")";
-  h.engine_deck = opt.engine_deck;
-  h.model_file = model_path;
-  h.output_root = root;
-  h.nodes = model.nodes.size();
-  h.shells = model.shells.size();
-  h.shells3 = model.shells3.size();
-  h.bricks = model.bricks.size();
-  h.tetras = model.tetras.size();
-  h.interfaces = model.interfaces.size();
-  h.total_mass = model.total_mass;
-  h.mass_unit = model.units.mass_name;
-  h.length_unit = model.units.length_name;
-  h.time_unit = model.units.time_name;
-  h.controls = &controls;
-  for (const auto* list : {&diags, &model_diags})
-    for (const auto& d : list->items()) h.deck_messages.push_back(Diagnostics::format(d));
+  const io::EngineListingHeader h =
+      listing_header(opt, model, model_path, root, controls, {&diags, &model_diags});
   listing.header(h);
 
   const auto wall0 = std::chrono::steady_clock::now();
   const bool lagrange_column = engine.contact() != nullptr && engine.contact()->has_lagrange();
-  auto to_line = [&](const solver::CycleReport& r) {
-    io::ListingLine l;
-    l.cycle = r.cycle;
-    l.time = r.time;
-    l.dt = r.dt;
-    l.source = source_of(r.control.kind);
-    l.source_id = r.control.user_id;
-    l.source_node = r.control.node_id;
-    l.error_percent = r.energy.error_percent;
-    l.internal_energy = r.energy.internal;
-    l.kinetic_t = r.energy.kinetic_t;
-    l.kinetic_r = r.energy.kinetic_r;
-    l.external_work = r.energy.external_work;
-    l.mass_error = r.mass0 > 0 ? (r.mass - r.mass0) / r.mass0 : 0.0;
-    l.total_mass = r.mass;
-    l.added_mass = r.added_mass;
-    if (lagrange_column) l.switched_pairs = r.switched_pairs;
-    return l;
-  };
   std::string stop_message;
   io::EnergyErrorWarnings energy_warnings;
   int stopped_by = 0;
@@ -406,16 +566,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   try {
     result = engine.run([&](const solver::CycleReport& r) {
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-      for (const auto& m : engine.take_messages()) {
-        listing_file << "  WARNING (cycle " << r.cycle << "): " << m << '\n';
-        err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
-        s.add_warning("cycle " + std::to_string(r.cycle) + ": " + m);
-      }
-      for (const auto& m : engine.take_events()) {
-        char at[64];
-        std::snprintf(at, sizeof at, " (cycle %lld, t = %.5E)", static_cast<long long>(r.cycle), r.time);
-        listing.message(" " + m + at);
-      }
+      report_cycle_messages(engine, r, listing_file, listing, err, s);
       listing.progress(r.cycle, r.time, controls.t_stop, wall);
       if (!r.full) return true;
       // To the listing and standard output (the run's own record), and to standard error as other warnings.
@@ -435,18 +586,9 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
       const int signo = r.time < controls.t_stop ? StopSignals::received() : 0;
       if (signo == 0 && r.cycle % std::max(1, controls.print_every) != 0 && r.time < controls.t_stop)
         return true;
-      listing.line(to_line(r));
-      const double err_pct = r.energy.error_percent;
-      const bool err_hit = controls.stop_positive_error_only
-                               ? err_pct > controls.stop_energy_error_pct
-                               : std::abs(err_pct) > controls.stop_energy_error_pct;
-      if (err_hit) {
-        stop_message = "/STOP: energy error " + std::to_string(err_pct) + " % beyond " +
-                       std::to_string(controls.stop_energy_error_pct) + " %";
-        return false;
-      }
-      if (r.mass0 > 0 && (r.mass - r.mass0) / r.mass0 > controls.stop_mass_error) {
-        stop_message = "/STOP: mass error beyond " + std::to_string(controls.stop_mass_error);
+      listing.line(listing_line(r, lagrange_column));
+      if (std::string why = stop_criterion(controls, r); !why.empty()) {
+        stop_message = why;
         return false;
       }
       if (signo != 0) {
@@ -468,79 +610,13 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return 1;
   }
 
-  // The last state and time-history row, also after an error stop, and the energy plot.
-  try {
-    outputs->finish(result, opt.plot, err);
-  } catch (const std::exception& e) {
-    err << "radx-engine: error: cannot write the results: " << e.what() << '\n';
-    if (stop_message.empty() || stopped_by != 0)
-      stop_message = std::string("cannot write the results: ") + e.what();
-    stopped_by = 0;  // an error termination now, not an interruption
-    result.status = solver::RunStatus::Error;
-  }
+  finish_outputs(*outputs, opt.plot, err, result, stop_message, stopped_by);
 
-  s.status = result.status == solver::RunStatus::Normal ? io::RunStatus::Normal
-             : stopped_by != 0                          ? io::RunStatus::Interrupted
-                                                        : io::RunStatus::Error;
-  s.message = !stop_message.empty()    ? stop_message
-              : result.message.empty() ? std::string("end time reached")
-                                       : result.message;
-  s.cycles = result.cycles;
-  s.time = result.time;
-  s.dt = result.dt;
-  s.threads = result.threads;
-  s.wall_seconds = result.wall_seconds;
-  s.contact_seconds = result.contact_seconds;
-  s.element_loop_seconds = result.element_seconds;
-  s.initial_mass = result.last.mass0;
-  s.mass = result.last.mass;
-  s.added_mass = result.last.added_mass;
-  s.momentum = result.last.momentum;
-  s.energy = to_io(result.last.energy);
-  s.substitutions = model.substitutions;
-  if (const auto* c = engine.contact())
-    for (const auto& r : c->results())
-      s.interfaces.push_back(io::InterfaceSummary{r.id, r.active_pairs, r.max_penetration,
-                                                  r.switched_pairs_max, r.switched_pairs_total, r.added_mass,
-                                                  r.deactivated_nodes, r.mean_candidates(), r.search_sorts});
-  if (const auto* c = engine.contact(); c != nullptr && c->has_lagrange()) {
-    const auto& st = c->lagrange_stats();
-    auto& L = s.lagrange;
-    L.present = true;
-    L.cycles = st.cycles;
-    L.rows_max = st.rows_max;
-    L.rows_total = st.rows_total;
-    L.nonzeros_max = st.nonzeros_max;
-    L.dropped_rows = st.dropped_rows;
-    L.merged_rows = st.merged_rows;
-    L.factorizations = st.factorizations;
-    L.analyses = st.analyses;
-    L.symbolic_reuses = st.symbolic_reuses;
-    L.regularisations = st.regularisations;
-    L.active_set_passes = st.active_set_passes;
-    L.passes_max = st.passes_max;
-    L.unconverged = st.unconverged;
-    L.beta_max = st.beta_max;
-    L.seconds_assembly = st.seconds_assembly;
-    L.seconds_factorization = st.seconds_factorization;
-    L.seconds_solve = st.seconds_solve;
-  }
-  s.states = outputs->states_written();
-  s.series = outputs->series_path();
-  if (!model.time_histories.empty() || controls.th_dt < 1e29)
-    s.time_history = (fs::path(opt.out_dir) / (root + "_th.h5")).string();
-  s.output_seconds = outputs->seconds_writing();
+  set_final_status(s, result, stopped_by, stop_message);
+  fill_run_summary(s, result, model, controls, engine, *outputs,
+                   (fs::path(opt.out_dir) / (root + "_th.h5")).string());
   listing.summary(s);
-  // The reason also on standard error, where a batch system or a script looks for it.
-  if (s.status == io::RunStatus::Error) err << "radx-engine: error termination: " << s.message << '\n';
-  if (!io::write_summary_json(summary_path, s, error)) {
-    err << "radx-engine: " << error << '\n';
-    return 1;
-  }
-  if (s.status == io::RunStatus::Interrupted)
-    err << "radx-engine: " << s.message << "; the last state, the summary and the listing are written\n";
-  if (s.status == io::RunStatus::Interrupted) return 128 + stopped_by;  // as a shell reports the signal
-  return s.status == io::RunStatus::Normal ? 0 : 1;
+  return end_of_run(s, summary_path, stopped_by, err);
 }
 
 }  // namespace radx::app
