@@ -183,6 +183,69 @@ ShellPointResult shell_point_core(const MaterialParams& p, int iplas, const JcRa
 
 }  // namespace
 
+namespace {
+
+// LAW42 (Ogden): its terms, cut-off and form, and the starter's moduli.
+void set_ogden_params(const model::Material& m, MaterialParams& p) {
+  auto& o = p.ogden;
+  o.n = static_cast<int>(std::min<std::size_t>(m.ogden.mu.size(), OgdenParams::kMaxTerms));
+  for (int k = 0; k < o.n; ++k) {
+    o.mu[k] = m.ogden.mu[static_cast<std::size_t>(k)];
+    o.alpha[k] = m.ogden.alpha[static_cast<std::size_t>(k)];
+    o.g += o.mu[k] * o.alpha[k];
+  }
+  o.sig_cut = m.ogden.sig_cut > 0 ? m.ogden.sig_cut : 1e20;
+  o.iform = m.ogden.iform == 2 ? 2 : 1;
+  // The starter's moduli (build_hyperelastic.cpp): G0 = g / 2, K = g (1 + nu) / 3 (1 - 2 nu).
+  p.shear = m.shear;
+  p.bulk = m.bulk;
+  p.c_solid = p.rho0 > 0 ? std::sqrt((p.bulk + 4.0 * p.shear / 3.0) / p.rho0) : 0.0;
+  o.stiffen = p.bulk > 24.0 * o.g;
+  o.nu1 = 40.0 * (0.5 - (3.0 * p.bulk - o.g) / (6.0 * p.bulk + o.g));
+}
+
+// The failure model on the material (/FAIL/JOHNSON or /FAIL/TAB), with their defaults.
+void set_failure_params(const model::Material& m, MaterialParams& p) {
+  if (m.fail_jc.on) {
+    const auto& f = m.fail_jc;
+    p.fail.on = true;
+    p.fail.kind = FailKind::Johnson;
+    p.fail.d1 = f.d1;
+    p.fail.d2 = f.d2;
+    p.fail.d3 = f.d3;
+    p.fail.d4 = f.d4;
+    p.fail.d5 = f.d5;
+    p.fail.eps_dot0 = f.eps_dot_0 > 0 ? f.eps_dot_0 : 1e-20;
+    p.fail.eps_f_min = f.eps_f_min;
+    p.fail.ifail_sh = f.ifail_sh == 0 ? 1 : f.ifail_sh;
+    switch (f.ifail_so) {
+      case 2: p.fail.solid = SolidFailMode::DeviatorZero; break;
+      case 3: p.fail.solid = SolidFailMode::DeviatorTension; break;
+      case 4: p.fail.solid = SolidFailMode::StressZero; break;
+      default: p.fail.solid = SolidFailMode::Delete; break;
+    }
+  } else if (m.fail_tab.on) {
+    // The rows (functions) are set by the overload with the model's functions.
+    const auto& f = m.fail_tab;
+    p.fail.on = true;
+    p.fail.kind = FailKind::Tab;
+    p.fail.temp_factor = f.temp_factor;
+    p.fail.el_ref = f.el_ref > 0 ? f.el_ref : 1.0;
+    p.fail.dcrit = f.dcrit > 0 ? f.dcrit : 1.0;
+    p.fail.n_exp = f.n > 0 ? f.n : 1.0;
+    p.fail.ifail_sh = f.ifail_sh == 0 ? 1 : f.ifail_sh;
+    p.fail.keep_failed_stress = p.fail.ifail_sh == 3;
+    p.fail.p_thick = f.p_thickfail > 0 ? f.p_thickfail : 1.0 - 1e-6;
+    switch (f.ifail_so) {
+      case 2: p.fail.solid = SolidFailMode::NormalToMean; break;
+      case 3: p.fail.solid = SolidFailMode::Keep; break;
+      default: p.fail.solid = SolidFailMode::Delete; break;
+    }
+  }
+}
+
+}  // namespace
+
 MaterialParams make_material_params(const model::Material& m) {
   MaterialParams p;
   p.law = m.law;
@@ -229,59 +292,8 @@ MaterialParams make_material_params(const model::Material& m) {
     p.brit.eps_f = b.eps_f1 == 0 ? 1.2e22 : b.eps_f1;
     p.brit.point_rate = m.fsmooth == 0 && m.f_cut == 0;
   }
-  if (m.law == model::MaterialLaw::Ogden) {
-    auto& o = p.ogden;
-    o.n = static_cast<int>(std::min<std::size_t>(m.ogden.mu.size(), OgdenParams::kMaxTerms));
-    for (int k = 0; k < o.n; ++k) {
-      o.mu[k] = m.ogden.mu[static_cast<std::size_t>(k)];
-      o.alpha[k] = m.ogden.alpha[static_cast<std::size_t>(k)];
-      o.g += o.mu[k] * o.alpha[k];
-    }
-    o.sig_cut = m.ogden.sig_cut > 0 ? m.ogden.sig_cut : 1e20;
-    o.iform = m.ogden.iform == 2 ? 2 : 1;
-    // The starter's moduli (build_hyperelastic.cpp): G0 = g / 2, K = g (1 + nu) / 3 (1 - 2 nu).
-    p.shear = m.shear;
-    p.bulk = m.bulk;
-    p.c_solid = p.rho0 > 0 ? std::sqrt((p.bulk + 4.0 * p.shear / 3.0) / p.rho0) : 0.0;
-    o.stiffen = p.bulk > 24.0 * o.g;
-    o.nu1 = 40.0 * (0.5 - (3.0 * p.bulk - o.g) / (6.0 * p.bulk + o.g));
-  }
-  if (m.fail_jc.on) {
-    const auto& f = m.fail_jc;
-    p.fail.on = true;
-    p.fail.kind = FailKind::Johnson;
-    p.fail.d1 = f.d1;
-    p.fail.d2 = f.d2;
-    p.fail.d3 = f.d3;
-    p.fail.d4 = f.d4;
-    p.fail.d5 = f.d5;
-    p.fail.eps_dot0 = f.eps_dot_0 > 0 ? f.eps_dot_0 : 1e-20;
-    p.fail.eps_f_min = f.eps_f_min;
-    p.fail.ifail_sh = f.ifail_sh == 0 ? 1 : f.ifail_sh;
-    switch (f.ifail_so) {
-      case 2: p.fail.solid = SolidFailMode::DeviatorZero; break;
-      case 3: p.fail.solid = SolidFailMode::DeviatorTension; break;
-      case 4: p.fail.solid = SolidFailMode::StressZero; break;
-      default: p.fail.solid = SolidFailMode::Delete; break;
-    }
-  } else if (m.fail_tab.on) {
-    // The rows (functions) are set by the overload with the model's functions.
-    const auto& f = m.fail_tab;
-    p.fail.on = true;
-    p.fail.kind = FailKind::Tab;
-    p.fail.temp_factor = f.temp_factor;
-    p.fail.el_ref = f.el_ref > 0 ? f.el_ref : 1.0;
-    p.fail.dcrit = f.dcrit > 0 ? f.dcrit : 1.0;
-    p.fail.n_exp = f.n > 0 ? f.n : 1.0;
-    p.fail.ifail_sh = f.ifail_sh == 0 ? 1 : f.ifail_sh;
-    p.fail.keep_failed_stress = p.fail.ifail_sh == 3;
-    p.fail.p_thick = f.p_thickfail > 0 ? f.p_thickfail : 1.0 - 1e-6;
-    switch (f.ifail_so) {
-      case 2: p.fail.solid = SolidFailMode::NormalToMean; break;
-      case 3: p.fail.solid = SolidFailMode::Keep; break;
-      default: p.fail.solid = SolidFailMode::Delete; break;
-    }
-  }
+  if (m.law == model::MaterialLaw::Ogden) set_ogden_params(m, p);
+  set_failure_params(m, p);
   return p;
 }
 

@@ -97,6 +97,31 @@ constexpr int kOpposite[4] = {3, 2, 1, 0};
     for (int a = 0; a < 3; ++a) f[k][a] = -(T[a][0] * b[k][0] + T[a][1] * b[k][1] + T[a][2] * b[k][2]);
 }
 
+// The strain rate D (engineering shears) from the velocity gradient L[a][c] = d v_a / d x_c, and the stored
+// stress turned by the Jaumann spin of the half step (old values on the right-hand side).
+[[gnu::always_inline]] inline void tetra_strain_rate(const TetraGroup& g, std::size_t i, const double v[4][3],
+                                                     const double b[4][3], double dt1, double D[6],
+                                                     double so[6]) {
+  constexpr std::size_t G = kGroupSize;
+  double L[3][3] = {};
+#pragma GCC unroll 4
+  for (int k = 0; k < 4; ++k)
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; ++a) {
+      L[a][0] += v[k][a] * b[k][0];
+      L[a][1] += v[k][a] * b[k][1];
+      L[a][2] += v[k][a] * b[k][2];
+    }
+  D[0] = L[0][0], D[1] = L[1][1], D[2] = L[2][2];
+  D[3] = L[0][1] + L[1][0], D[4] = L[1][2] + L[2][1], D[5] = L[2][0] + L[0][2];
+  double wx, wy, wz;
+  half_step_spin(L, dt1, wx, wy, wz);
+  double s[6];
+#pragma GCC unroll 6
+  for (int m = 0; m < 6; ++m) s[m] = g.sig[static_cast<std::size_t>(m) * G + i];
+  jaumann_rotate(s, wx, wy, wz, so);
+}
+
 }  // namespace
 
 void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
@@ -136,26 +161,9 @@ void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& 
       continue;
     }
 
-    // Velocity gradient L[a][c] = d v_a / d x_c.
-    double L[3][3] = {};
-#pragma GCC unroll 4
-    for (int k = 0; k < 4; ++k)
-#pragma GCC unroll 3
-      for (int a = 0; a < 3; ++a) {
-        L[a][0] += v[k][a] * b[k][0];
-        L[a][1] += v[k][a] * b[k][1];
-        L[a][2] += v[k][a] * b[k][2];
-      }
-    const double D[6] = {L[0][0], L[1][1], L[2][2], L[0][1] + L[1][0], L[1][2] + L[2][1], L[2][0] + L[0][2]};
-    double wx, wy, wz;
-    half_step_spin(L, dt1, wx, wy, wz);
-
-    // Jaumann rotation of the stored stress (old values on the right-hand side).
-    double s[6];
-#pragma GCC unroll 6
-    for (int m = 0; m < 6; ++m) s[m] = g.sig[static_cast<std::size_t>(m) * G + i];
-    double so[6];
-    jaumann_rotate(s, wx, wy, wz, so);
+    // Strain rate and the stored stress turned by the half-step spin.
+    double D[6], so[6];
+    tetra_strain_rate(g, i, v, b, dt1, D, so);
 
     // Density, strain rate, material.
     const double rho = solid_density(rho0, g.vol0[i], vol);
