@@ -12,7 +12,10 @@
 #   engine, whose wall time it writes to DIR/engine.time); cycles from its listing ROOT_0001.out ("TOTAL
 #   NUMBER OF CYCLES"); peak memory from /usr/bin/time -v around run_case.sh, the larger of its starter's and
 #   engine's, and the engine's own "TOTAL MEMORY USED" line.
-# Without OpenRadioss (no engine under $OPENRADIOSS_ROOT/exec) only radx runs, and the script says so.
+# OpenRadioss is built outside the repository (the project ships no recipe that builds it): OPENRADIOSS_ROOT
+# names the build (exec/engine_linux64_gf under it), OPENRADIOSS_RUN_CASE the wrapper run_case.sh DIR ROOT that
+# runs DIR/ROOT_0000.rad and DIR/ROOT_0001.rad through it and writes the engine's wall time to DIR/engine.time.
+# Without them (no engine, no wrapper) only radx runs, and the script says so.
 #
 # Usage: bench/impact_vs_openradioss.sh [--radx-only] [--threads "1 2"] [--load "idle busy"] [--keep DIR]
 set -euo pipefail
@@ -27,15 +30,15 @@ while [[ $# -gt 0 ]]; do
     --threads) threads_list=$2; shift 2 ;;
     --load) loads=$2; shift 2 ;;
     --keep) keep=$2; shift 2 ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
     *) echo "impact_vs_openradioss: unknown argument $1" >&2; exit 2 ;;
   esac
 done
 or_root=${OPENRADIOSS_ROOT:-/tmp/openradioss-ref/OpenRadioss}
-run_case=/tmp/openradioss-ref/run_case.sh
+run_case=${OPENRADIOSS_RUN_CASE:-/tmp/openradioss-ref/run_case.sh}
 if [[ $radx_only == 0 && ( ! -x "$or_root/exec/engine_linux64_gf" || ! -f "$run_case" ) ]]; then
-  echo "OpenRadioss is absent ($or_root/exec/engine_linux64_gf or $run_case missing; build it with" \
-       "../shared/tools/build-openradioss.sh): radx only"
+  echo "OpenRadioss is absent ($or_root/exec/engine_linux64_gf or $run_case missing; set OPENRADIOSS_ROOT" \
+       "and OPENRADIOSS_RUN_CASE to a build of it and its run_case.sh): radx only"
   radx_only=1
 fi
 [ -f build/CMakeCache.txt ] || cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
