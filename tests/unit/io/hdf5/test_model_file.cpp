@@ -45,26 +45,8 @@ void add_block(ElementBlock& b, std::vector<std::int64_t> ids, std::vector<std::
 }
 
 // 16 nodes; cells in file order: quad, quad with n3 == n4, 3-node shell, brick, degenerate brick.
-Model make_model() {
-  Values v;
-  Model m;
-  m.title = "Model file test: Stahl \xC3\x9C 100 % (UTF-8)";
-  m.run_name = "MODEL_TEST";
-  m.deck_version = 2022;
-  m.units = Units{0.001, 0.001, 0.001, "g", "mm", "ms"};
-  for (int i = 0; i < 16; ++i) {
-    m.nodes.id.push_back(i == 15 ? 4'000'000'000LL : 10 * (i + 1));
-    m.nodes.x.push_back(0.1 * i);
-    m.nodes.y.push_back(1.0 / (i + 3));
-    m.nodes.z.push_back(-2.5e-7 * i * i);
-  }
-  std::int64_t dup = 0;
-  m.nodes.index.build(m.nodes.id, dup);
-  add_block(m.shells, {101, 102}, {0, 1}, {0, 1, 2, 3, 1, 4, 5, 5}, {1.25, 0.0}, {15.0, -30.0});
-  add_block(m.shells3, {201}, {1}, {2, 3, 6}, {0.75}, {45.5});
-  add_block(m.bricks, {301, 5'000'000'000LL}, {2, 2},
-            {8, 9, 10, 11, 12, 13, 14, 15, 8, 9, 10, 10, 12, 13, 14, 14}, {}, {});
-
+// Two materials: an elastic one and a Johnson-Cook one with every field set.
+void add_materials(Model& m, Values& v) {
   Material elastic;
   elastic.id = 1;
   elastic.title = "elastic";
@@ -85,7 +67,10 @@ Model make_model() {
   jc.c = v.real(), jc.eps_dot_0 = v.real(), jc.f_cut = v.real(), jc.chard = v.real(), jc.p_min = v.real();
   jc.m_temp = v.real(), jc.t_melt = v.real(), jc.rho_cp = v.real(), jc.t_ref = v.real(), jc.t_max = v.real();
   m.materials = {elastic, jc};
+}
 
+// A shell and a solid property with every field set.
+void add_properties(Model& m, Values& v) {
   Property shell;
   shell.id = v.big();
   shell.title = "shell property";
@@ -105,7 +90,10 @@ Model make_model() {
   q.qa = v.real(), q.qb = v.real(), q.h = v.real(), q.lambda_v = v.real(), q.mu_v = v.real();
   q.dn = v.real(), q.dt_min = v.real();
   m.properties = {shell, solid};
+}
 
+// Three parts over the properties and materials.
+void add_parts(Model& m, Values& v) {
   for (int i = 0; i < 3; ++i) {
     Part p;
     p.id = i == 2 ? 3'000'000'000LL : 7 + i;  // beyond 32 bits: the mesh must keep it
@@ -118,7 +106,10 @@ Model make_model() {
     p.element_count = i == 2 ? 2 : 1;
     m.parts.push_back(p);
   }
+}
 
+// Subsets with a child, node groups (one empty), a box and a cylinder.
+void add_groups_and_boxes(Model& m, Values& v) {
   Subset top;
   top.id = v.big();
   top.title = "top";
@@ -154,7 +145,10 @@ Model make_model() {
   cylinder.p2 = {v.real(), v.real(), v.real()};
   cylinder.diameter = v.real();
   m.boxes = {box, cylinder};
+}
 
+// Surfaces of parts and of segments, and one function.
+void add_surfaces_and_functions(Model& m, Values& v) {
   Surface surf;
   surf.id = v.big();
   surf.title = "main";
@@ -177,7 +171,10 @@ Model make_model() {
   f.x = {0.0, v.real(), v.real()};
   f.y = {v.real(), v.real(), v.real()};
   m.functions = {f};
+}
 
+// A boundary condition, an imposed velocity, an imposed final geometry and an initial velocity.
+void add_kinematic_conditions(Model& m, Values& v) {
   BoundaryCondition bc;
   bc.id = v.big();
   bc.title = "bc";
@@ -215,7 +212,10 @@ Model make_model() {
   init.skew = v.big(), init.sensor = v.big();
   init.t_start = v.real();
   m.initial_velocities = {init};
+}
 
+// A concentrated load, a pressure load and gravity.
+void add_loads(Model& m, Values& v) {
   ConcentratedLoad cl;
   cl.id = v.big();
   cl.title = "cload";
@@ -246,7 +246,10 @@ Model make_model() {
   grav.group = 0;
   grav.ascale_x = v.real(), grav.fscale_y = v.real();
   m.gravities = {grav};
+}
 
+// A rigid wall, an accelerometer, a rigid body, sensors and skews.
+void add_walls_bodies_skews(Model& m, Values& v) {
   RigidWall wall;
   wall.id = v.big();
   wall.title = "wall";
@@ -309,7 +312,10 @@ Model make_model() {
   Sensor sensor_never;  // Tstop never
   sensor_never.id = v.big();
   m.sensors = {sensor, sensor_never};
+}
 
+// A time-history group and two interfaces (one with its computed arrays, one default).
+void add_time_history_and_interfaces(Model& m, Values& v) {
   TimeHistoryGroup th;
   th.id = v.big();
   th.title = "th nodes";
@@ -364,6 +370,37 @@ Model make_model() {
   Interface plain;  // defaults, empty computed arrays
   plain.id = v.big();
   m.interfaces = {it, plain};
+}
+
+Model make_model() {
+  Values v;
+  Model m;
+  m.title = "Model file test: Stahl \xC3\x9C 100 % (UTF-8)";
+  m.run_name = "MODEL_TEST";
+  m.deck_version = 2022;
+  m.units = Units{0.001, 0.001, 0.001, "g", "mm", "ms"};
+  for (int i = 0; i < 16; ++i) {
+    m.nodes.id.push_back(i == 15 ? 4'000'000'000LL : 10 * (i + 1));
+    m.nodes.x.push_back(0.1 * i);
+    m.nodes.y.push_back(1.0 / (i + 3));
+    m.nodes.z.push_back(-2.5e-7 * i * i);
+  }
+  std::int64_t dup = 0;
+  m.nodes.index.build(m.nodes.id, dup);
+  add_block(m.shells, {101, 102}, {0, 1}, {0, 1, 2, 3, 1, 4, 5, 5}, {1.25, 0.0}, {15.0, -30.0});
+  add_block(m.shells3, {201}, {1}, {2, 3, 6}, {0.75}, {45.5});
+  add_block(m.bricks, {301, 5'000'000'000LL}, {2, 2},
+            {8, 9, 10, 11, 12, 13, 14, 15, 8, 9, 10, 10, 12, 13, 14, 14}, {}, {});
+
+  add_materials(m, v);
+  add_properties(m, v);
+  add_parts(m, v);
+  add_groups_and_boxes(m, v);
+  add_surfaces_and_functions(m, v);
+  add_kinematic_conditions(m, v);
+  add_loads(m, v);
+  add_walls_bodies_skews(m, v);
+  add_time_history_and_interfaces(m, v);
 
   m.ignored_keywords = {"/ANIM/VECT/DISP", "/PRINT/-100"};
   for (int i = 0; i < 16; ++i) m.node_mass.push_back(v.real());
@@ -383,31 +420,8 @@ void check_block(const ElementBlock& a, const ElementBlock& b) {
   for (std::size_t e = 0; e < a.id.size(); ++e) CHECK(b.index.find(a.id[e]) == static_cast<std::int32_t>(e));
 }
 
-void check_same(const Model& a, const Model& b) {
-  SAME(title);
-  SAME(run_name);
-  SAME(deck_version);
-  SAME(units.mass);
-  SAME(units.length);
-  SAME(units.time);
-  SAME(units.mass_name);
-  SAME(units.length_name);
-  SAME(units.time_name);
-  SAME(nodes.id);
-  SAME(nodes.x);
-  SAME(nodes.y);
-  SAME(nodes.z);
-  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
-    CHECK(b.nodes.index.find(a.nodes.id[i]) == static_cast<std::int32_t>(i));
-  }
-  CHECK(b.nodes.index.find(123456) == -1);
-  check_block(a.shells, b.shells);
-  check_block(a.shells3, b.shells3);
-  check_block(a.bricks, b.bricks);
-  SAME(ignored_keywords);
-  SAME(node_mass);
-  SAME(total_mass);
-
+// The materials, field by field.
+void check_same_materials(const Model& a, const Model& b) {
   REQUIRE(a.materials.size() == b.materials.size());
   for (std::size_t i = 0; i < a.materials.size(); ++i) {
     const Material& x = a.materials[i];
@@ -445,7 +459,10 @@ void check_same(const Model& a, const Model& b) {
     CHECK(x.t_ref == y.t_ref);
     CHECK(x.t_max == y.t_max);
   }
+}
 
+// The properties and parts, field by field.
+void check_same_properties_and_parts(const Model& a, const Model& b) {
   REQUIRE(a.properties.size() == b.properties.size());
   for (std::size_t i = 0; i < a.properties.size(); ++i) {
     const Property& x = a.properties[i];
@@ -500,7 +517,10 @@ void check_same(const Model& a, const Model& b) {
     CHECK(x.mass == y.mass);
     CHECK(x.element_count == y.element_count);
   }
+}
 
+// Subsets, node groups, boxes, surfaces and functions.
+void check_same_groups(const Model& a, const Model& b) {
   REQUIRE(a.subsets.size() == b.subsets.size());
   for (std::size_t i = 0; i < a.subsets.size(); ++i) {
     CHECK(a.subsets[i].id == b.subsets[i].id);
@@ -544,7 +564,10 @@ void check_same(const Model& a, const Model& b) {
     CHECK(a.functions[i].x == b.functions[i].x);
     CHECK(a.functions[i].y == b.functions[i].y);
   }
+}
 
+// Boundary conditions, imposed final geometries, imposed and initial velocities.
+void check_same_kinematic_conditions(const Model& a, const Model& b) {
   REQUIRE(a.bcs.size() == b.bcs.size());
   for (std::size_t i = 0; i < a.bcs.size(); ++i) {
     CHECK(a.bcs[i].id == b.bcs[i].id);
@@ -600,7 +623,10 @@ void check_same(const Model& a, const Model& b) {
     CHECK(x.sensor == y.sensor);
     CHECK(x.t_start == y.t_start);
   }
+}
 
+// Concentrated and pressure loads, gravity and accelerometers.
+void check_same_loads(const Model& a, const Model& b) {
   REQUIRE(a.concentrated_loads.size() == b.concentrated_loads.size());
   for (std::size_t i = 0; i < a.concentrated_loads.size(); ++i) {
     const ConcentratedLoad& x = a.concentrated_loads[i];
@@ -656,7 +682,10 @@ void check_same(const Model& a, const Model& b) {
     CHECK(a.accelerometers[i].skew == b.accelerometers[i].skew);
     CHECK(a.accelerometers[i].fcut == b.accelerometers[i].fcut);
   }
+}
 
+// Rigid walls, rigid bodies and sensors.
+void check_same_walls_bodies_sensors(const Model& a, const Model& b) {
   REQUIRE(a.rigid_walls.size() == b.rigid_walls.size());
   for (std::size_t i = 0; i < a.rigid_walls.size(); ++i) {
     const RigidWall& x = a.rigid_walls[i];
@@ -717,7 +746,10 @@ void check_same(const Model& a, const Model& b) {
     CHECK(a.sensors[i].t_delay == b.sensors[i].t_delay);
     CHECK(a.sensors[i].t_stop == b.sensors[i].t_stop);
   }
+}
 
+// Time-history groups and skews.
+void check_same_time_histories_and_skews(const Model& a, const Model& b) {
   REQUIRE(a.time_histories.size() == b.time_histories.size());
   for (std::size_t i = 0; i < a.time_histories.size(); ++i) {
     CHECK(a.time_histories[i].id == b.time_histories[i].id);
@@ -742,7 +774,10 @@ void check_same(const Model& a, const Model& b) {
     CHECK(x.dir == y.dir);
     CHECK(x.moving() == y.moving());
   }
+}
 
+// The interfaces with their computed arrays.
+void check_same_interfaces(const Model& a, const Model& b) {
   REQUIRE(a.interfaces.size() == b.interfaces.size());
   for (std::size_t i = 0; i < a.interfaces.size(); ++i) {
     const Interface& x = a.interfaces[i];
@@ -810,6 +845,41 @@ void check_same(const Model& a, const Model& b) {
     CHECK(x.penetrating_nodes == y.penetrating_nodes);
     CHECK(x.initial_gap_reduction == y.initial_gap_reduction);
   }
+}
+
+void check_same(const Model& a, const Model& b) {
+  SAME(title);
+  SAME(run_name);
+  SAME(deck_version);
+  SAME(units.mass);
+  SAME(units.length);
+  SAME(units.time);
+  SAME(units.mass_name);
+  SAME(units.length_name);
+  SAME(units.time_name);
+  SAME(nodes.id);
+  SAME(nodes.x);
+  SAME(nodes.y);
+  SAME(nodes.z);
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    CHECK(b.nodes.index.find(a.nodes.id[i]) == static_cast<std::int32_t>(i));
+  }
+  CHECK(b.nodes.index.find(123456) == -1);
+  check_block(a.shells, b.shells);
+  check_block(a.shells3, b.shells3);
+  check_block(a.bricks, b.bricks);
+  SAME(ignored_keywords);
+  SAME(node_mass);
+  SAME(total_mass);
+
+  check_same_materials(a, b);
+  check_same_properties_and_parts(a, b);
+  check_same_groups(a, b);
+  check_same_kinematic_conditions(a, b);
+  check_same_loads(a, b);
+  check_same_walls_bodies_sensors(a, b);
+  check_same_time_histories_and_skews(a, b);
+  check_same_interfaces(a, b);
 }
 
 #undef SAME
