@@ -89,60 +89,33 @@ struct Ledger {
   }
 };
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  using namespace radx;
-  if (argc < 3) {
-    std::fprintf(
-        stderr,
-        "usage: radx_bench_traffic ENGINE_DECK MODEL_FILE [--bandwidth GB/s] [--us US_PER_ELEMENT_CYCLE]\n");
-    return 2;
-  }
-  double bandwidth = 0, us = 0;
-  for (int a = 3; a + 1 < argc; a += 2) {
-    if (std::strcmp(argv[a], "--bandwidth") == 0)
-      bandwidth = std::atof(argv[a + 1]);
-    else if (std::strcmp(argv[a], "--us") == 0)
-      us = std::atof(argv[a + 1]);
-    else {
-      std::fprintf(stderr, "radx_bench_traffic: unknown option %s\n", argv[a]);
-      return 2;
-    }
-  }
-  Diagnostics diags;
-  const model::RunControls controls = read_run_controls(argv[1], diags);
-  if (diags.has_errors()) {
-    diags.print(std::cerr);
-    return 1;
-  }
-  model::Model model;
-  std::string error;
-  if (!io::read_model_file(argv[2], model, error)) {
-    std::cerr << argv[2] << ": " << error << '\n';
-    return 1;
-  }
-  const solver::ExplicitEngine engine(model, controls, solver::EngineOptions(1));
-  const auto& nodes = engine.nodes();
-  const auto& mats = engine.materials();
-  Ledger L;
-  std::vector<std::string> notes;
+// What the element passes leave for the gather and the report: the nodes each family touches, the
+// element-node slots, the gather without reuse, and the notes on what is not counted exactly.
+struct Tally {
   std::set<std::int32_t> shell_nodes, solid_nodes;
   double slots = 0, gather_no_reuse = 0;
-  const double d = sizeof(double);
+  std::vector<std::string> notes;
+};
 
-  // Element passes.
+constexpr double d = sizeof(double);
+
+// The shell groups' arrays, as the Belytschko-Tsay kernel reads and writes them; any other kernel's arrays
+// all read and written.
+void count_shell_groups(const radx::solver::ExplicitEngine& engine, const radx::model::RunControls& controls,
+                        Ledger& L, Tally& T) {
+  using namespace radx;
+  const auto& mats = engine.materials();
   for (const auto& g : engine.shell_groups()) {
     const int n = g.count;
     const auto& mat = mats[static_cast<std::size_t>(g.material)];
     const int npe = g.triangle ? 3 : 4;
     for (int k = 0; k < npe; ++k)
-      for (int i = 0; i < n; ++i) shell_nodes.insert(g.conn[static_cast<std::size_t>(k * kGroupSize + i)]);
-    slots += static_cast<double>(npe) * n;
-    gather_no_reuse += static_cast<double>(npe) * n * 9 * d;
+      for (int i = 0; i < n; ++i) T.shell_nodes.insert(g.conn[static_cast<std::size_t>(k * kGroupSize + i)]);
+    T.slots += static_cast<double>(npe) * n;
+    T.gather_no_reuse += static_cast<double>(npe) * n * 9 * d;
     const std::string p = "shell elements";
     if (g.kernel != solver::ShellKernel::Bt4) {
-      notes.push_back(
+      T.notes.push_back(
           "a shell group not in Belytschko-Tsay: every allocated array counted as read and written");
       for (const auto* v :
            {&g.t0,   &g.thick,      &g.area0,    &g.off,   &g.sig,       &g.eps_p,   &g.res,
@@ -177,15 +150,22 @@ int main(int argc, char** argv) {
     L.group_array(p, "k_nodal", g.k_nodal, n, Mode::Write);
     L.group_array(p, "nodal_force [4][6]", g.nodal_force, n, Mode::Write);
   }
+}
+
+// The one-point brick groups' arrays, as their kernel reads and writes them; any other kernel's arrays all
+// read and written.
+void count_brick_groups(const radx::solver::ExplicitEngine& engine, const radx::model::RunControls& controls,
+                        Ledger& L, Tally& T) {
+  using namespace radx;
   for (const auto& g : engine.brick_groups()) {
     const int n = g.count;
     for (int k = 0; k < 8; ++k)
-      for (int i = 0; i < n; ++i) solid_nodes.insert(g.conn[static_cast<std::size_t>(k * kGroupSize + i)]);
-    slots += 8.0 * n;
-    gather_no_reuse += 8.0 * n * 6 * d;
+      for (int i = 0; i < n; ++i) T.solid_nodes.insert(g.conn[static_cast<std::size_t>(k * kGroupSize + i)]);
+    T.slots += 8.0 * n;
+    T.gather_no_reuse += 8.0 * n * 6 * d;
     const std::string p = "brick elements";
     if (solver::brick_kernel(g) != solver::BrickKernel::OnePoint) {
-      notes.push_back("a brick group not one-point: every allocated array counted as read and written");
+      T.notes.push_back("a brick group not one-point: every allocated array counted as read and written");
       for (const auto* v :
            {&g.sig_p,       &g.eps_p_p,   &g.dmg_p,     &g.vol0_p, &g.vol0,     &g.vol,   &g.rho,
             &g.off,         &g.sig,       &g.eps_p,     &g.dmg,    &g.q,        &g.e_int, &g.e_hg,
@@ -221,12 +201,15 @@ int main(int argc, char** argv) {
     L.group_array(p, "k_nodal", g.k_nodal, n, Mode::Write);
     L.group_array(p, "nodal_force [8][3]", g.nodal_force, n, Mode::Write);
   }
-  if (!engine.tetra_groups().empty() || !engine.spring_groups().empty())
-    notes.push_back("tetrahedra and springs are not counted");
-  // Node gather of the element passes: each touched node's arrays once.
-  const double ns = static_cast<double>(shell_nodes.size());
-  std::set<std::int32_t> all_elem_nodes = shell_nodes;
-  all_elem_nodes.insert(solid_nodes.begin(), solid_nodes.end());
+}
+
+// The node gather of the element passes (each touched node's arrays once), the element sums and the node
+// passes.
+void count_node_passes(const radx::solver::ExplicitEngine& engine, const Tally& T, Ledger& L) {
+  const auto& nodes = engine.nodes();
+  const double ns = static_cast<double>(T.shell_nodes.size());
+  std::set<std::int32_t> all_elem_nodes = T.shell_nodes;
+  all_elem_nodes.insert(T.solid_nodes.begin(), T.solid_nodes.end());
   const double ne = static_cast<double>(all_elem_nodes.size());
   L.add("element gather", "x y z vx vy vz (element nodes)", Mode::Read, 6 * d * ne);
   L.add("element gather", "wx wy wz (shell nodes)", Mode::Read, 3 * d * ns);
@@ -262,12 +245,18 @@ int main(int argc, char** argv) {
   L.add("node: integration", "x y z", Mode::ReadWrite, 2 * 3 * d * nn);
   L.add("node: integration", "fx_ext fy_ext fz_ext mx my mz (zeroed for the next cycle)", Mode::Write,
         6 * d * nn);
+}
 
+// The ledger, its totals per family and per element-cycle, and the traffic limit at the measured bandwidth.
+void print_report(const radx::solver::ExplicitEngine& engine, const Ledger& L, const Tally& T,
+                  double bandwidth, double us) {
+  const double nn = static_cast<double>(engine.nodes().n);
+  const double ns = static_cast<double>(T.shell_nodes.size());
   const double elements = static_cast<double>(engine.element_count());
   std::printf(
       "model: %.0f elements (%zu shell groups, %zu brick groups), %.0f nodes (%.0f of shells), "
       "%.0f element-node slots\n\n",
-      elements, engine.shell_groups().size(), engine.brick_groups().size(), nn, ns, slots);
+      elements, engine.shell_groups().size(), engine.brick_groups().size(), nn, ns, T.slots);
   std::printf("| pass | arrays | access | MB per cycle | bytes per element-cycle |\n");
   std::printf("|------|--------|:------:|-------------:|------------------------:|\n");
   for (const auto& l : L.lines)
@@ -283,13 +272,57 @@ int main(int argc, char** argv) {
       shell_b / elements, brick_b / elements, gather / elements, sums_b / elements, node_b / elements);
   std::printf("bytes per element-cycle: %.0f (%.1f MB per cycle)\n", total / elements, total * 1e-6);
   std::printf("upper bound with a gather that reuses nothing (each element reads its own nodes): %.0f\n",
-              (total - gather + gather_no_reuse) / elements);
-  for (const auto& n : notes) std::printf("note: %s\n", n.c_str());
+              (total - gather + T.gather_no_reuse) / elements);
+  for (const auto& n : T.notes) std::printf("note: %s\n", n.c_str());
   if (bandwidth > 0) {
     const double limit_us = total / elements / (bandwidth * 1e3);
     std::printf("traffic limit at %.2f GB/s: %.4f us per element-cycle\n", bandwidth, limit_us);
     if (us > 0)
       std::printf("measured %.4f us per element-cycle: %.2f x the traffic limit\n", us, us / limit_us);
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace radx;
+  if (argc < 3) {
+    std::fprintf(
+        stderr,
+        "usage: radx_bench_traffic ENGINE_DECK MODEL_FILE [--bandwidth GB/s] [--us US_PER_ELEMENT_CYCLE]\n");
+    return 2;
+  }
+  double bandwidth = 0, us = 0;
+  for (int a = 3; a + 1 < argc; a += 2) {
+    if (std::strcmp(argv[a], "--bandwidth") == 0)
+      bandwidth = std::atof(argv[a + 1]);
+    else if (std::strcmp(argv[a], "--us") == 0)
+      us = std::atof(argv[a + 1]);
+    else {
+      std::fprintf(stderr, "radx_bench_traffic: unknown option %s\n", argv[a]);
+      return 2;
+    }
+  }
+  Diagnostics diags;
+  const model::RunControls controls = read_run_controls(argv[1], diags);
+  if (diags.has_errors()) {
+    diags.print(std::cerr);
+    return 1;
+  }
+  model::Model model;
+  std::string error;
+  if (!io::read_model_file(argv[2], model, error)) {
+    std::cerr << argv[2] << ": " << error << '\n';
+    return 1;
+  }
+  const solver::ExplicitEngine engine(model, controls, solver::EngineOptions(1));
+  Ledger L;
+  Tally T;
+  count_shell_groups(engine, controls, L, T);
+  count_brick_groups(engine, controls, L, T);
+  if (!engine.tetra_groups().empty() || !engine.spring_groups().empty())
+    T.notes.push_back("tetrahedra and springs are not counted");
+  count_node_passes(engine, T, L);
+  print_report(engine, L, T, bandwidth, us);
   return 0;
 }
