@@ -43,14 +43,12 @@ struct ProcessResult {
 };
 
 // Starts the program and waits for it.
-// * Into a file: waitpid is polled (2 ms, doubling up to 50 ms) rather than woken by SIGCHLD, so no handler
-// is
-//   installed in a process that may run other children; a few milliseconds of latency are nothing next to a
-//   deck's run.
-// * Into a pipe: the pipe is read up to its end of file (the child closed its output: it is exiting) or to
-// the
-//   time limit, then the child is waited for. The pipe is close-on-exec in this process, so programs started
-//   by other threads at the same moment do not inherit it (which would delay its end of file).
+// Into a file: waitpid is polled (2 ms, doubling up to 50 ms) rather than woken by SIGCHLD, so no handler is
+// installed in a process that may run other children; a few milliseconds of latency are nothing next to a
+// deck's run.
+// Into a pipe: the pipe is read up to its end of file (the child closed its output: it is exiting) or to the
+// time limit, then the child is waited for. The pipe is close-on-exec in this process, so programs started by
+// other threads at the same moment do not inherit it (which would delay its end of file).
 ProcessResult run_process(const ProcessRequest& request);
 
 }  // namespace radx::io
