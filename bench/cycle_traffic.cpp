@@ -105,7 +105,7 @@ void count_shell_groups(const radx::solver::ExplicitEngine& engine, const radx::
                         Ledger& L, Tally& T) {
   using namespace radx;
   const auto& mats = engine.materials();
-  for (const auto& g : engine.shell_groups()) {
+  for (const auto& g : engine.groups().shells) {
     const int n = g.count;
     const auto& mat = mats[static_cast<std::size_t>(g.material)];
     const int npe = g.triangle ? 3 : 4;
@@ -157,7 +157,7 @@ void count_shell_groups(const radx::solver::ExplicitEngine& engine, const radx::
 void count_brick_groups(const radx::solver::ExplicitEngine& engine, const radx::model::RunControls& controls,
                         Ledger& L, Tally& T) {
   using namespace radx;
-  for (const auto& g : engine.brick_groups()) {
+  for (const auto& g : engine.groups().bricks) {
     const int n = g.count;
     for (int k = 0; k < 8; ++k)
       for (int i = 0; i < n; ++i) T.solid_nodes.insert(g.conn[static_cast<std::size_t>(k * kGroupSize + i)]);
@@ -222,9 +222,9 @@ void count_node_passes(const radx::solver::ExplicitEngine& engine, const Tally& 
   const std::string assembly = fused ? "node: assembly + accelerations" : "node: assembly";
   // The element stage adds each group's nodal-force buffer (just written) to the nodes' sums, in group order.
   const std::string sums = "element sums";
-  for (const auto& g : engine.shell_groups())
+  for (const auto& g : engine.groups().shells)
     L.group_array(sums, "group nodal_force (read back)", g.nodal_force, g.count, Mode::Read);
-  for (const auto& g : engine.brick_groups())
+  for (const auto& g : engine.groups().bricks)
     L.group_array(sums, "group nodal_force (read back)", g.nodal_force, g.count, Mode::Read);
   L.add(sums, "element_sums [node][6] (added to)", Mode::ReadWrite, 2 * 6 * d * nn);
   L.add(assembly, "element_sums [node][6] (read, then cleared)", Mode::ReadWrite, 2 * 6 * d * nn);
@@ -256,7 +256,7 @@ void print_report(const radx::solver::ExplicitEngine& engine, const Ledger& L, c
   std::printf(
       "model: %.0f elements (%zu shell groups, %zu brick groups), %.0f nodes (%.0f of shells), "
       "%.0f element-node slots\n\n",
-      elements, engine.shell_groups().size(), engine.brick_groups().size(), nn, ns, T.slots);
+      elements, engine.groups().shells.size(), engine.groups().bricks.size(), nn, ns, T.slots);
   std::printf("| pass | arrays | access | MB per cycle | bytes per element-cycle |\n");
   std::printf("|------|--------|:------:|-------------:|------------------------:|\n");
   for (const auto& l : L.lines)
@@ -320,7 +320,7 @@ int main(int argc, char** argv) {
   Tally T;
   count_shell_groups(engine, controls, L, T);
   count_brick_groups(engine, controls, L, T);
-  if (!engine.tetra_groups().empty() || !engine.spring_groups().empty())
+  if (!engine.groups().tetras.empty() || !engine.groups().springs.empty())
     T.notes.push_back("tetrahedra and springs are not counted");
   count_node_passes(engine, T, L);
   print_report(engine, L, T, bandwidth, us);

@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <memory_resource>
 #include <optional>
+#include <span>
+#include <type_traits>
 #include <vector>
 
 #include "solver/elements/spring/spring_law.hpp"
@@ -34,6 +36,41 @@ struct CycleInfo {
   double time = 0;
 };
 
+// The fields every group kind has: what the engine's stages (the sums, the step votes, deleted elements,
+// energies) and the outputs read without knowing the kind. Each kind adds its own state and says the layout
+// of `conn` and `nodal_force`.
+struct GroupCore {
+  // Where the arrays below live: the engine's arena (ExplicitEngine::group_arena_), or the heap by default.
+  std::pmr::memory_resource* arena = std::pmr::get_default_resource();
+  GroupCore() = default;
+  explicit GroupCore(std::pmr::memory_resource* r) : arena(r) {}
+  int count = 0;                            // elements in this group
+  GroupArray<std::int32_t> element{arena};  // [G] index of each slot's element in its model block
+  std::int32_t part = -1;                   // dense part index (all elements of a group share it)
+  GroupArray<std::int32_t> conn{arena};     // [nodes per element][G] dense node indices
+  GroupArray<double> off{arena};            // [G] 1 alive, decaying after failure, 0 deleted
+  GroupArray<double> e_int{arena};          // [G] accumulated internal energy (work of the element forces)
+  GroupArray<double> dt{arena};             // [G] stable step of the cycle, before the /DT scale
+  GroupArray<double> k_nodal{arena};        // [G] nodal stiffness contribution of each node (nodal steps)
+  // [nodes per element][components][G] force (and moment) ADDED to each node, global axes (internal forces
+  // enter with their minus sign)
+  GroupArray<double> nodal_force{arena};
+};
+
+// The fields of the groups whose elements have a material at their integration points (shells, bricks,
+// tetrahedra): the stress and plastic state (laid out per kind), the energies the material dissipates and the
+// filtered strain rate.
+struct MaterialGroupCore : GroupCore {
+  using GroupCore::GroupCore;
+  std::int32_t material = -1;           // index into the engine's MaterialParams
+  GroupArray<double> sig{arena};        // stresses, layout per kind
+  GroupArray<double> eps_p{arena};      // plastic strain per point
+  GroupArray<double> dmg{arena};        // failure damage D / Dcrit per point (0 .. 1; 1: the point failed)
+  GroupArray<double> e_hg{arena};       // [G] accumulated hourglass energy
+  GroupArray<double> w_plastic{arena};  // [G] accumulated plastic work
+  GroupArray<double> rate{arena};       // [G] filtered equivalent strain rate (Johnson-Cook, law 36)
+};
+
 struct ShellProps {
   int ishell = 1, ismstr = 2, ithick = 0, iplas = 0;  // internal meaning: ithick 1 = update, iplas 1 = Newton
   int ish3n = 2;     // 3-node shells: 2 with the in-plane large-rotation terms T11, T22; 1 without
@@ -52,67 +89,44 @@ enum class ShellKernel : std::uint8_t {
   Qbat,  // Ishell 12 (shell_qbat.cpp)
 };
 
-struct ShellGroup {
-  // Where the arrays below live: the engine's arena (ExplicitEngine::group_arena_), or the heap by default.
-  std::pmr::memory_resource* arena = std::pmr::get_default_resource();
-  ShellGroup() = default;
-  explicit ShellGroup(std::pmr::memory_resource* r) : arena(r) {}
-  int count = 0;          // elements in this group
+// Shells: conn [4][G] (triangles: row 3 unused), nodal_force [4][6][G] forces and moments.
+struct ShellGroup : MaterialGroupCore {
+  using MaterialGroupCore::MaterialGroupCore;
   bool triangle = false;  // 3-node C0 shells (conn rows 0..2)
   ShellKernel kernel = ShellKernel::Bt4;
-  int gauss = 1;                            // in-plane integration points: 4 for QBAT (each with n_points)
-  GroupArray<std::int32_t> element{arena};  // [G] index of each slot's element in its model block
-  std::int32_t part = -1;                   // dense part index (all elements of a group share it)
-  std::int32_t material = -1;               // index into the engine's MaterialParams
+  int gauss = 1;  // in-plane integration points: 4 for QBAT (each with n_points)
   ShellProps props;
-  GroupArray<std::int32_t> conn{arena};  // [4][G] dense node indices (triangles: row 3 unused)
-  GroupArray<double> t0{arena};          // [G] thickness used by the mechanics
-  GroupArray<double> thick{arena};       // [G] current thickness (output; mechanics when ithick = 1)
-  GroupArray<double> area0{arena};       // [G] initial area
-  GroupArray<double> off{arena};         // [G] 1 alive, decaying by 0.8 after failure, 0 deleted
-  GroupArray<double> sig{arena};         // [gauss][n_points][5][G]  sxx syy sxy syz szx, local frame
-  GroupArray<double> eps_p{arena};       // [gauss][n_points][G]
+  GroupArray<double> t0{arena};     // [G] thickness used by the mechanics
+  GroupArray<double> thick{arena};  // [G] current thickness (output; mechanics when ithick = 1)
+  GroupArray<double> area0{arena};  // [G] initial area
+  // sig [gauss][n_points][5][G] sxx syy sxy syz szx, local frame; eps_p and dmg [gauss][n_points][G]
   // [gauss][8][G] FOR xx yy xy yz zx and MOM xx yy xy of `sig` (N >= 1: sums over the points, raw, as
   // shell_section.hpp takes them), kept from the last cycle as the next cycle's old resultants. Zero with a
   // zero sig; whatever writes sig outside the section update must write them too.
   GroupArray<double> res{arena};
-  GroupArray<double> dmg{
-      arena};  // [gauss][n_points][G] failure damage D / Dcrit (0 .. 1; 1: the point failed)
   GroupArray<double> fail_scale{
       arena};                      // [G] /FAIL/TAB element-size factor of eps_f (1 otherwise; set at t = 0)
   GroupArray<double> brit{arena};  // law 27 only: [gauss][n_points][kBritVars][G] crack state (allocate_brit)
   GroupArray<double> hg{arena};    // [3][G] elastic hourglass resultants Sx Sy Sz (Ishell 1);
                                    // QEPH: [4][6][G] stabilisation resultants at the 4 Gauss points
                                    // (shell_qeph.cpp)
-  GroupArray<double> e_int{arena};      // [G] accumulated internal energy (membrane + bending)
-  GroupArray<double> e_hg{arena};       // [G] accumulated hourglass energy
-  GroupArray<double> w_plastic{arena};  // [G] accumulated plastic work
-  GroupArray<double> rate{arena};       // [G] filtered equivalent strain rate (Johnson-Cook)
-  GroupArray<double> dt{arena};         // [G] stable step of the cycle, before the /DT scale
   GroupArray<double> dt_fixed{
       arena};  // [G] engine: constant step after a /DT/SHELL|SH_3N/CST switch (0: none)
   // Small strain after that switch: 1.0 once the element's local geometry is frozen in ref_local
   // (quads: x2 x3 x4 y2 y3 y4; triangles: x2 x3 y3 and 0), so its B matrix, area and step stay constant.
-  GroupArray<double> small{arena};        // [G] 0 or 1
-  GroupArray<double> ref_local{arena};    // [6][G]
-  GroupArray<double> k_nodal{arena};      // [G] nodal stiffness contribution of each node (for nodal steps)
-  GroupArray<double> nodal_force{arena};  // [4][6][G] force (fx fy fz) and moment (mx my mz) ADDED to each
-                                          // node, global axes (internal forces enter with their minus sign)
+  GroupArray<double> small{arena};      // [G] 0 or 1
+  GroupArray<double> ref_local{arena};  // [6][G]
+  [[nodiscard]] int nodes_per_element() const { return triangle ? 3 : 4; }
   // n elements, `points` through the thickness (0: resultants), `gauss_points` in the plane, `hg_rows` rows
   // of hourglass state.
   void allocate(int n, int points, int gauss_points = 1, int hg_rows = 3);
   void allocate_brit();  // law 27's crack state, after allocate: no strain, crack frame (1, 0), no damage
 };
 
-struct BrickGroup {
-  // Where the arrays below live: the engine's arena (ExplicitEngine::group_arena_), or the heap by default.
-  std::pmr::memory_resource* arena = std::pmr::get_default_resource();
-  BrickGroup() = default;
-  explicit BrickGroup(std::pmr::memory_resource* r) : arena(r) {}
-  int count = 0;
-  GroupArray<std::int32_t> element{arena};  // [G] index of each slot's element in the model's brick block
-  std::int32_t part = -1;
-  std::int32_t material = -1;
+// Bricks: conn [8][G], nodal_force [8][3][G]; sig [6][G] xx yy zz xy yz zx (global axes, or the element
+// frame of a co-rotational group), eps_p and dmg (/FAIL/JOHNSON) [G]; e_int includes the bulk viscosity work.
+struct BrickGroup : MaterialGroupCore {
+  using MaterialGroupCore::MaterialGroupCore;
   int isolid = 1;
   // /DT/BRICK/CST switches a brick to small strain only with Ismstr 2 (docs/theory/deck-format.md)
   int ismstr = 4;
@@ -134,31 +148,19 @@ struct BrickGroup {
   bool s8e_visc = false;   // Isolid 18 with LAW1: S8E's viscous hourglass damping (s8evis3.F), work in e_hg
   GroupArray<double> sig_p{
       arena};  // [8][6][G] point stresses (co-rotational frame when corot), 8 points only
-  GroupArray<double> eps_p_p{arena};     // [8][G] point plastic strains
-  GroupArray<double> dmg_p{arena};       // [8][G] point /FAIL/JOHNSON damage
-  GroupArray<double> vol0_p{arena};      // [8][G] initial point volumes det J_p
-  GroupArray<std::int32_t> conn{arena};  // [8][G]
-  GroupArray<double> vol0{arena};        // [G] initial (one-point) volume
-  GroupArray<double> vol{arena};         // [G] current volume
-  GroupArray<double> rho{arena};         // [G] current density rho0 V0 / V
-  GroupArray<double> off{arena};         // [G]
-  GroupArray<double> sig{arena};         // [6][G] xx yy zz xy yz zx, global axes
-  GroupArray<double> eps_p{arena};       // [G]
-  GroupArray<double> dmg{arena};         // [G] /FAIL/JOHNSON damage (0 .. 1)
-  GroupArray<double> q{arena};           // [G] bulk viscosity pressure of the last cycle
-  GroupArray<double> e_int{arena};       // [G] accumulated internal energy (includes bulk viscosity work)
-  GroupArray<double> e_hg{arena};        // [G]
-  GroupArray<double> hg_force{arena};   // [4][3][G] hourglass forces H_j of the last cycle (energy trapezoid)
-  GroupArray<double> w_plastic{arena};  // [G]
-  GroupArray<double> rate{arena};       // [G] strain rate measure (Johnson-Cook)
-  GroupArray<double> dt{arena};         // [G]
-  GroupArray<double> dt_fixed{arena};   // [G] engine: constant step after a /DT/BRICK/CST switch (0: none)
+  GroupArray<double> eps_p_p{arena};   // [8][G] point plastic strains
+  GroupArray<double> dmg_p{arena};     // [8][G] point /FAIL/JOHNSON damage
+  GroupArray<double> vol0_p{arena};    // [8][G] initial point volumes det J_p
+  GroupArray<double> vol0{arena};      // [G] initial (one-point) volume
+  GroupArray<double> vol{arena};       // [G] current volume
+  GroupArray<double> rho{arena};       // [G] current density rho0 V0 / V
+  GroupArray<double> q{arena};         // [G] bulk viscosity pressure of the last cycle
+  GroupArray<double> hg_force{arena};  // [4][3][G] hourglass forces H_j of the last cycle (energy trapezoid)
+  GroupArray<double> dt_fixed{arena};  // [G] engine: constant step after a /DT/BRICK/CST switch (0: none)
   // Small strain after that switch: 1 once the node coordinates are frozen in x_ref; the gradients, volume
   // and step then come from x_ref (Radioss's small-strain switch), the velocities stay current.
   GroupArray<std::uint8_t> small{arena};  // [G]
   GroupArray<double> x_ref{arena};        // [8][3][G]
-  GroupArray<double> k_nodal{arena};      // [G] nodal stiffness contribution (1/4 rho V / dt_e^2)
-  GroupArray<double> nodal_force{arena};  // [8][3][G] force ADDED to each node, global axes
   // Co-rotational frame (Iframe 2, Isolid 24): columns e_x e_y e_z of the element frame of the last cycle,
   // [3 * column + row][G]; `sig` is then in that frame (global = R sig R^T). Identity until the first cycle.
   GroupArray<double> frame{arena};  // [9][G]
@@ -171,6 +173,7 @@ struct BrickGroup {
   GroupArray<double> b_ref{arena};
   // Law 70 (law70_foam_tab.cpp): the point state, kFoamVars rows [v][G]. Empty for the other laws.
   GroupArray<double> foam{arena};
+  [[nodiscard]] static constexpr int nodes_per_element() { return 8; }
   void allocate(int n);
   void allocate_points();  // the point arrays of a fully integrated group (n_points = 8)
   // b_ref of element i from its initial node coordinates x0[8][3].
@@ -211,34 +214,17 @@ inline void brick_global_stress(const BrickGroup& g, std::size_t i, double out[6
   out[5] = at(2, 0);
 }
 
-// 4-node tetrahedra (/TETRA4, Itetra4 1000): one point, constant strain, no hourglass. The same state as a
-// brick less what only hourglass control and the small-strain switch need.
-struct TetraGroup {
-  // Where the arrays below live: the engine's arena (ExplicitEngine::group_arena_), or the heap by default.
-  std::pmr::memory_resource* arena = std::pmr::get_default_resource();
-  TetraGroup() = default;
-  explicit TetraGroup(std::pmr::memory_resource* r) : arena(r) {}
-  int count = 0;
-  GroupArray<std::int32_t> element{arena};  // [G] index of each slot's element in the model's tetra block
-  std::int32_t part = -1;
-  std::int32_t material = -1;
+// 4-node tetrahedra (/TETRA4, Itetra4 1000): one point, constant strain, no hourglass (e_hg stays 0). The
+// same state as a brick less what only hourglass control and the small-strain switch need: conn [4][G],
+// nodal_force [4][3][G], sig [6][G] in global axes.
+struct TetraGroup : MaterialGroupCore {
+  using MaterialGroupCore::MaterialGroupCore;
   double qa = 1.1, qb = 0.05;
-  GroupArray<std::int32_t> conn{arena};   // [4][G]
-  GroupArray<double> vol0{arena};         // [G] initial volume
-  GroupArray<double> vol{arena};          // [G] current volume
-  GroupArray<double> rho{arena};          // [G] current density rho0 V0 / V
-  GroupArray<double> off{arena};          // [G] 1 alive, 0 deleted
-  GroupArray<double> sig{arena};          // [6][G] xx yy zz xy yz zx, global axes
-  GroupArray<double> eps_p{arena};        // [G]
-  GroupArray<double> dmg{arena};          // [G] /FAIL/JOHNSON damage (0 .. 1)
-  GroupArray<double> q{arena};            // [G] bulk viscosity pressure of the last cycle
-  GroupArray<double> e_int{arena};        // [G] accumulated internal energy (includes bulk viscosity work)
-  GroupArray<double> e_hg{arena};         // [G] always 0 (no hourglass); summed with the other groups'
-  GroupArray<double> w_plastic{arena};    // [G]
-  GroupArray<double> rate{arena};         // [G] strain rate measure (Johnson-Cook)
-  GroupArray<double> dt{arena};           // [G] stable step, before the /DT scale
-  GroupArray<double> k_nodal{arena};      // [G] nodal stiffness contribution (1/2 rho V / dt_e^2)
-  GroupArray<double> nodal_force{arena};  // [4][3][G] force ADDED to each node, global axes
+  GroupArray<double> vol0{arena};  // [G] initial volume
+  GroupArray<double> vol{arena};   // [G] current volume
+  GroupArray<double> rho{arena};   // [G] current density rho0 V0 / V
+  GroupArray<double> q{arena};     // [G] bulk viscosity pressure of the last cycle
+  [[nodiscard]] static constexpr int nodes_per_element() { return 4; }
   void allocate(int n);
 };
 
@@ -246,30 +232,24 @@ struct TetraGroup {
 // law, state in the first G slots of dx, force, the law state and forces [2][3][G]. TYPE8 (/PROP/SPR_GENE,
 // spring_type8.cpp) and TYPE13 (/PROP/SPR_BEAM, spring_type13.cpp): six laws X Y Z RX RY RZ, state [6][G]
 // and forces and moments [2][6][G]; TYPE13 also carries its moving frame's Y axis. The curves point into the
-// model's functions (the engine keeps the model alive).
-struct SpringGroup {
-  int count = 0;
-  std::vector<std::int32_t> element;  // [G] index of each slot's spring in the model's spring block
-  std::int32_t part = -1;
+// model's functions (the engine keeps the model alive). conn [2][G] n1 n2; e_int is the work of the spring
+// forces (elastic and damping); off 0 once broken (delta_min, delta_max).
+struct SpringGroup : GroupCore {
+  using GroupCore::GroupCore;
   model::SpringProperty props;
   std::array<SpringLawCurves, 6> curves{};                 // each law's curves (TYPE4: [0])
   std::array<double, 9> frame{1, 0, 0, 0, 1, 0, 0, 0, 1};  // TYPE8: rows = the axes X Y Z, global components
-  std::vector<std::int32_t> conn;                          // [2][G] n1 n2
-  std::vector<double> l0;                                  // [G] initial length
-  std::vector<double> x0;                                  // [3][G] TYPE8: initial x2 - x1 in the frame
-  std::vector<double> ey;     // [3][G] TYPE13: the frame's Y axis of the last cycle (global components)
-  std::vector<double> dx;     // [6][G] elongation (rotation) of the last cycle (> 0 in tension)
-  std::vector<double> force;  // [6][G] force (moment) of the last cycle (> 0 in tension)
+  GroupArray<double> l0{arena};                            // [G] initial length
+  GroupArray<double> x0{arena};                            // [3][G] TYPE8: initial x2 - x1 in the frame
+  GroupArray<double> ey{arena};     // [3][G] TYPE13: the frame's Y axis of the last cycle (global components)
+  GroupArray<double> dx{arena};     // [6][G] elongation (rotation) of the last cycle (> 0 in tension)
+  GroupArray<double> force{arena};  // [6][G] force (moment) of the last cycle (> 0 in tension)
   // [6][G] each law's SpringLawState (spring_law.hpp): the static force before amplification, the plastic
   // elongations (or extremes of the elongation), the yield force and the plastic travel.
-  std::vector<double> f_static, plastic, plastic_c, yield, travel;
-  std::vector<double> e_int;    // [G] accumulated work of the spring forces (elastic and damping)
-  std::vector<double> off;      // [G] 1 alive, 0 broken (delta_min, delta_max)
-  std::vector<double> dt;       // [G] stable step, before the /DT scale
-  std::vector<double> k_nodal;  // [G] nodal stiffness contribution M / dt^2 (for nodal steps)
-  std::vector<double>
-      nodal_force;  // [2][3][G] (TYPE4) or [2][6][G] (TYPE8, 13) ADDED to n1 and n2, global axes
+  GroupArray<double> f_static{arena}, plastic{arena}, plastic_c{arena}, yield{arena}, travel{arena};
+  // nodal_force: [2][3][G] (TYPE4) or [2][6][G] (TYPE8, 13), forces and moments
   [[nodiscard]] int node_stride() const { return props.type == 4 ? 3 : 6; }
+  [[nodiscard]] static constexpr int nodes_per_element() { return 2; }
   // The law state of slot j = dof * G + i, gathered from and scattered to the arrays above.
   [[nodiscard]] SpringLawState law_state(std::size_t j) const {
     return {f_static[j], plastic[j], plastic_c[j], yield[j], travel[j]};
@@ -283,6 +263,114 @@ struct SpringGroup {
   }
   void allocate(int n);
 };
+
+// Every element group of a model, kind by kind, in the one order all the engine's stages use: shells,
+// bricks, tetrahedra, springs. A flat group index counts through the kinds in that order (the element
+// stage's chunks, its votes and the order of the nodal sums), and sums over groups are taken in it.
+struct ElementGroups {
+  std::vector<ShellGroup> shells;
+  std::vector<BrickGroup> bricks;
+  std::vector<TetraGroup> tetras;
+  std::vector<SpringGroup> springs;
+
+  [[nodiscard]] std::int64_t count() const {
+    return static_cast<std::int64_t>(shells.size() + bricks.size() + tetras.size() + springs.size());
+  }
+  // Calls f(group) for every group, in the flat order.
+  template <class F>
+  void for_each(F&& f) const {
+    each(*this, f);
+  }
+  template <class F>
+  void for_each(F&& f) {
+    each(*this, f);
+  }
+  // Calls f(group) for the group of flat index `flat`.
+  template <class F>
+  void visit(std::int64_t flat, F&& f) const {
+    at(*this, flat, f);
+  }
+  template <class F>
+  void visit(std::int64_t flat, F&& f) {
+    at(*this, flat, f);
+  }
+
+ private:
+  template <class Self, class F>
+  static void each(Self& self, F& f) {
+    for (auto& g : self.shells) f(g);
+    for (auto& g : self.bricks) f(g);
+    for (auto& g : self.tetras) f(g);
+    for (auto& g : self.springs) f(g);
+  }
+  template <class Self, class F>
+  static void at(Self& self, std::int64_t flat, F& f) {
+    auto k = static_cast<std::size_t>(flat);
+    if (k < self.shells.size()) return f(self.shells[k]);
+    k -= self.shells.size();
+    if (k < self.bricks.size()) return f(self.bricks[k]);
+    k -= self.bricks.size();
+    if (k < self.tetras.size()) return f(self.tetras[k]);
+    f(self.springs[k - self.tetras.size()]);
+  }
+};
+
+// True for the group kinds with a material at their points (shells, bricks, tetrahedra), for the visitors
+// that skip springs.
+template <class Group>
+inline constexpr bool kHasMaterial = std::is_base_of_v<MaterialGroupCore, Group>;
+
+// The model block a group's elements come from (their user ids, parts and connectivity).
+inline const model::ElementBlock& element_block(const model::Model& m, const ShellGroup& g) {
+  return g.triangle ? m.shells3 : m.shells;
+}
+inline const model::ElementBlock& element_block(const model::Model& m, const BrickGroup&) {
+  return m.bricks;
+}
+inline const model::ElementBlock& element_block(const model::Model& m, const TetraGroup&) {
+  return m.tetras;
+}
+inline const model::ElementBlock& element_block(const model::Model& m, const SpringGroup&) {
+  return m.springs;
+}
+
+// Where a group's elements sit among the model's cells (4-node shells, 3-node shells, bricks, tetrahedra,
+// then springs: the order of the model file, the results and contact's element flags): slot i of g is cell
+// first_cell(m, g) + g.element[i].
+inline std::size_t first_cell(const model::Model& m, const ShellGroup& g) {
+  return g.triangle ? m.shells.size() : 0;
+}
+inline std::size_t first_cell(const model::Model& m, const BrickGroup&) {
+  return m.shells.size() + m.shells3.size();
+}
+inline std::size_t first_cell(const model::Model& m, const TetraGroup&) {
+  return m.shells.size() + m.shells3.size() + m.bricks.size();
+}
+inline std::size_t first_cell(const model::Model& m, const SpringGroup&) {
+  return m.element_count();
+}
+
+// Adds each element's nodal stiffness contribution k_nodal to its nodes' sums k[node] (the nodal time step),
+// element by element and node by node of the element.
+template <class Group>
+void add_nodal_stiffness(const Group& g, std::span<double> k) {
+  const int nodes = g.nodes_per_element();
+  for (int i = 0; i < g.count; ++i)
+    for (int q = 0; q < nodes; ++q)
+      k[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
+          g.k_nodal[static_cast<std::size_t>(i)];
+}
+
+// The initial mass of element i of a group with a material of initial density rho0.
+inline double initial_mass(const ShellGroup& g, std::size_t i, double rho0) {
+  return rho0 * g.area0[i] * g.t0[i];
+}
+template <class Solid>
+requires(std::is_same_v<Solid, BrickGroup> ||
+         std::is_same_v<Solid, TetraGroup>) inline double initial_mass(const Solid& g, std::size_t i,
+                                                                       double rho0) {
+  return rho0 * g.vol0[i];
+}
 
 // Kernels (one file each). Each reads node coordinates and velocities from `nodes`, updates the
 // group's state, energies and element steps, and fills `nodal_force`. Elements with off == 0 give no

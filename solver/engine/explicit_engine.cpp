@@ -13,6 +13,7 @@
 #include <numbers>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 #include "solver/conditions/kinematics_driver.hpp"
 #include "solver/model/geometry.hpp"
@@ -507,9 +508,10 @@ TetraGroup make_tetra_group(const model::Model& m, const std::vector<MaterialPar
 // A spring group of the elements `run` of one part: its property and the curves it names, the frame of
 // TYPE8's six laws (a fixed skew's axes: moving skews are refused by the starter), the initial lengths and,
 // for TYPE13, the initial y axis.
-SpringGroup make_spring_group(const model::Model& m, std::int32_t part, std::span<const std::int32_t> run) {
+SpringGroup make_spring_group(const model::Model& m, std::pmr::memory_resource* arena, std::int32_t part,
+                              std::span<const std::int32_t> run) {
   const auto& prop = m.properties[static_cast<std::size_t>(m.parts[part].property)].spring;
-  SpringGroup g;
+  SpringGroup g(arena);
   g.allocate(static_cast<int>(run.size()));
   g.part = part;
   g.props = prop;
@@ -557,19 +559,19 @@ void ExplicitEngine::build_groups() {
   const auto& m = model_;
   std::pmr::memory_resource* arena = &group_arena_;
   for_each_group_run(m, m.shells, [&](std::int32_t part, std::span<const std::int32_t> run) {
-    shells_.push_back(make_shell_group(m, materials_, arena, m.shells, false, part, run));
+    groups_.shells.push_back(make_shell_group(m, materials_, arena, m.shells, false, part, run));
   });
   for_each_group_run(m, m.shells3, [&](std::int32_t part, std::span<const std::int32_t> run) {
-    shells_.push_back(make_shell_group(m, materials_, arena, m.shells3, true, part, run));
+    groups_.shells.push_back(make_shell_group(m, materials_, arena, m.shells3, true, part, run));
   });
   for_each_group_run(m, m.bricks, [&](std::int32_t part, std::span<const std::int32_t> run) {
-    bricks_.push_back(make_brick_group(m, materials_, arena, part, run));
+    groups_.bricks.push_back(make_brick_group(m, materials_, arena, part, run));
   });
   for_each_group_run(m, m.tetras, [&](std::int32_t part, std::span<const std::int32_t> run) {
-    tetras_.push_back(make_tetra_group(m, materials_, arena, part, run));
+    groups_.tetras.push_back(make_tetra_group(m, materials_, arena, part, run));
   });
   for_each_group_run(m, m.springs, [&](std::int32_t part, std::span<const std::int32_t> run) {
-    springs_.push_back(make_spring_group(m, part, run));
+    groups_.springs.push_back(make_spring_group(m, arena, part, run));
   });
   element_count_ = m.element_count() + m.springs.size();
 }
@@ -583,28 +585,26 @@ inline void add_entry(double* sum, const double* f) {
   if constexpr (C % 2 == 1) sum[C - 1] += f[(C - 1) * G];
 }
 
-// Calls f(group, nodes per element, components) for the group of flat index `flat` (shells, bricks, tetras,
-// springs), components an integral_constant: 6 for a buffer of forces and moments, 3 for forces alone.
+// Calls f(group, nodes per element, components) for the group of flat index `flat`, components an
+// integral_constant: 6 for a buffer of forces and moments (shells, TYPE8 and TYPE13 springs), 3 for forces
+// alone.
 template <class F>
 void ExplicitEngine::visit_group_sums(std::int64_t flat, F&& f) const {
   using Forces = std::integral_constant<std::size_t, 3>;
   using ForcesAndMoments = std::integral_constant<std::size_t, 6>;
-  const auto ns = static_cast<std::int64_t>(shells_.size()), nb = static_cast<std::int64_t>(bricks_.size());
-  const auto nt = static_cast<std::int64_t>(tetras_.size());
-  if (flat < ns) {
-    const auto& g = shells_[static_cast<std::size_t>(flat)];
-    f(g, g.triangle ? 3 : 4, ForcesAndMoments{});
-  } else if (flat < ns + nb) {
-    f(bricks_[static_cast<std::size_t>(flat - ns)], 8, Forces{});
-  } else if (flat < ns + nb + nt) {
-    f(tetras_[static_cast<std::size_t>(flat - ns - nb)], 4, Forces{});
-  } else {
-    const auto& g = springs_[static_cast<std::size_t>(flat - ns - nb - nt)];
-    if (g.node_stride() == 6)  // TYPE8 and TYPE13 carry moments too
-      f(g, 2, ForcesAndMoments{});
-    else
-      f(g, 2, Forces{});
-  }
+  groups_.visit(flat, [&](const auto& g) {
+    using Group = std::decay_t<decltype(g)>;
+    if constexpr (std::is_same_v<Group, ShellGroup>) {
+      f(g, g.nodes_per_element(), ForcesAndMoments{});
+    } else if constexpr (std::is_same_v<Group, SpringGroup>) {
+      if (g.node_stride() == 6)
+        f(g, g.nodes_per_element(), ForcesAndMoments{});
+      else
+        f(g, g.nodes_per_element(), Forces{});
+    } else {
+      f(g, g.nodes_per_element(), Forces{});
+    }
+  });
 }
 
 // The regions (runs of node chunks, kMaxSumRegions) each group writes into, and for a group writing into
@@ -708,119 +708,151 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
   assert(element_sums_order_.committed() == element_sums_order_.parts());
 }
 
+namespace {
+
+// The kernel of a group: one switch per kind, no virtual call.
+void run_kernel(ShellGroup& g, const NodeState& nodes, const std::vector<MaterialParams>& materials,
+                const CycleInfo& cyc) {
+  const auto& mat = materials[static_cast<std::size_t>(g.material)];
+  switch (g.kernel) {
+    case ShellKernel::Bt4: shell_bt4_forces(g, nodes, mat, cyc); break;
+    case ShellKernel::Tri3: shell_c0_tri3_forces(g, nodes, mat, cyc); break;
+    case ShellKernel::Qeph: shell_qeph_forces(g, nodes, mat, cyc); break;
+    case ShellKernel::Qbat: shell_qbat_forces(g, nodes, mat, cyc); break;
+  }
+}
+void run_kernel(BrickGroup& g, const NodeState& nodes, const std::vector<MaterialParams>& materials,
+                const CycleInfo& cyc) {
+  const auto& mat = materials[static_cast<std::size_t>(g.material)];
+  switch (brick_kernel(g)) {
+    case BrickKernel::OnePoint: hex8_forces(g, nodes, mat, cyc); break;  // Isolid 1 and 2
+    case BrickKernel::Heph: hex8_heph_forces(g, nodes, mat, cyc); break;
+    case BrickKernel::FullyIntegrated: hex8_full_forces(g, nodes, mat, cyc); break;
+  }
+}
+void run_kernel(TetraGroup& g, const NodeState& nodes, const std::vector<MaterialParams>& materials,
+                const CycleInfo& cyc) {
+  tetra4_forces(g, nodes, materials[static_cast<std::size_t>(g.material)], cyc);
+}
+void run_kernel(SpringGroup& g, const NodeState& nodes, const std::vector<MaterialParams>&,
+                const CycleInfo& cyc) {
+  if (g.props.type == 8)
+    spring_type8_forces(g, nodes, cyc);
+  else if (g.props.type == 13)
+    spring_type13_forces(g, nodes, cyc);
+  else
+    spring_type4_forces(g, nodes, cyc);
+}
+
+// How a group's elements vote for the step: the /DT scale of their family, the family's /DT/<family>/CST
+// control, the kind the report names, and the frozen steps of the elements that family may switch to a
+// constant step (null when none can be).
+struct StepRule {
+  double scale = 1;
+  const model::DtControl* family = nullptr;
+  StepControl::Kind kind = StepControl::Kind::None;
+  double* frozen_steps = nullptr;
+  bool switchable = false;
+};
+double family_scale(const model::DtControl& family, const model::RunControls& c) {
+  return family.given ? family.scale : c.global.scale;
+}
+StepRule step_rule(ShellGroup& g, const model::RunControls& c) {
+  const auto& fam = g.triangle ? c.shell3 : c.shell;
+  return {family_scale(fam, c), &fam, g.triangle ? StepControl::Kind::Shell3 : StepControl::Kind::Shell,
+          g.dt_fixed.data(), g.props.ismstr == 2};
+}
+StepRule step_rule(BrickGroup& g, const model::RunControls& c) {
+  return {family_scale(c.brick, c), &c.brick, StepControl::Kind::Brick, g.dt_fixed.data(), g.ismstr == 2};
+}
+// Tetrahedra vote with the brick family's /DT/BRICK scale (Radioss counts them as solids); they are not
+// switched by /DT/BRICK/CST (no small-strain form here).
+StepRule step_rule(TetraGroup&, const model::RunControls& c) {
+  return {family_scale(c.brick, c), &c.brick, StepControl::Kind::Tetra, nullptr, false};
+}
+// Springs vote with the global /DT scale (Radioss's DTFAC1(6)); no /DT/<family>/CST switch applies.
+StepRule step_rule(SpringGroup&, const model::RunControls& c) {
+  return {c.global.scale, &c.global, StepControl::Kind::Spring, nullptr, false};
+}
+
+// /DT/<family>/CST: an element whose scaled step reaches Tmin is switched to a constant step (the
+// small-strain switch of Radioss); radx freezes the step at Tmin and keeps the element's large-strain
+// kinematics (a documented difference). Without /DT/<family>/CST the step is the element's.
+// Radioss switches only the elements whose Ismstr allows it (2; 12 for bricks): the others keep their own
+// step under /DT/<family>/CST.
+// A group's vote: the first element with the smallest scaled step. Under /DT/<family>/CST with a switchable
+// element (frozen: the group's dt_fixed) each element is visited for the switch; otherwise only the
+// smallest step is looked for, and the element's user id (ids[element]) is read for it alone (a read per
+// element would be a second stream through the model beside the group's own arrays).
+void vote_for_step(GroupVote& vote, const GroupCore& g, const StepRule& rule,
+                   const std::vector<std::int64_t>& ids) {
+  const double scale = rule.scale;
+  const model::DtControl& fam = *rule.family;
+  const StepControl::Kind kind = rule.kind;
+  double* frozen_steps = rule.frozen_steps;
+  const auto id_of = [&](std::size_t k) {
+    return static_cast<std::int64_t>(ids[static_cast<std::size_t>(g.element[k])]);
+  };
+  const std::size_t n = static_cast<std::size_t>(g.count);
+  if (!(rule.switchable && frozen_steps != nullptr && fam.action == model::DtAction::Constant &&
+        fam.t_min > 0)) {
+    double best = vote.dt;
+    std::size_t at = n;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double dt = scale * g.dt[k];
+      if (dt < best) best = dt, at = k;
+    }
+    if (at < n) {
+      vote.dt = best;
+      vote.kind = kind;
+      vote.user_id = id_of(at);
+    }
+    return;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const double raw = g.dt[k];
+    double& frozen = frozen_steps[k];
+    double dt = scale * raw;
+    if (frozen > 0) {
+      // Without the small-strain kinematics the element's own stable step keeps falling; below half the
+      // frozen step the run would go unstable, so it stops and says which element.
+      if (dt < 0.5 * frozen && vote.violation_id == 0) {
+        vote.violation_id = id_of(k);
+        vote.violation_frozen = frozen;
+        vote.violation_dt = dt;
+      }
+      dt = frozen;
+    } else if (dt < fam.t_min && raw > 0) {
+      frozen = fam.t_min;
+      dt = frozen;
+      ++vote.switched;
+    }
+    if (dt < vote.dt) {
+      vote.dt = dt;
+      vote.kind = kind;
+      vote.user_id = id_of(k);
+    }
+  }
+}
+
+std::int64_t count_deleted_in(const GroupCore& g) {
+  std::int64_t n = 0;
+  for (int i = 0; i < g.count; ++i) n += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
+  return n;
+}
+
+}  // namespace
+
+// Each group's kernel, then, while its state is in cache, its vote for the step and its deleted elements
+// (springs count none: their failure does not concern contact).
 void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& cyc) {
   auto& vote = group_votes_[static_cast<std::size_t>(flat)];
   vote = GroupVote{kInf};
-  // /DT/<family>/CST: an element whose scaled step reaches Tmin is switched to a constant step (the
-  // small-strain switch of Radioss); radx freezes the step at Tmin and keeps the element's large-strain
-  // kinematics (a documented difference). Without /DT/<family>/CST the step is the element's.
-  // Radioss switches only the elements whose Ismstr allows it (2; 12 for bricks): the others keep their own
-  // step under /DT/<family>/CST.
-  // A group's vote: the first element with the smallest scaled step. Under /DT/<family>/CST with a switchable
-  // element (frozen: the group's dt_fixed) each element is visited for the switch; otherwise only the
-  // smallest step is looked for, and the element's user id (ids[element]) is read for it alone (a read per
-  // element would be a second stream through the model beside the group's own arrays).
-  auto vote_group = [&](const auto& g, double scale, const model::DtControl& fam, StepControl::Kind kind,
-                        const auto& ids, double* frozen_steps, bool switchable) {
-    const auto id_of = [&](std::size_t k) {
-      return static_cast<std::int64_t>(ids[static_cast<std::size_t>(g.element[k])]);
-    };
-    const std::size_t n = static_cast<std::size_t>(g.count);
-    if (!(switchable && frozen_steps != nullptr && fam.action == model::DtAction::Constant &&
-          fam.t_min > 0)) {
-      double best = vote.dt;
-      std::size_t at = n;
-      for (std::size_t k = 0; k < n; ++k) {
-        const double dt = scale * g.dt[k];
-        if (dt < best) best = dt, at = k;
-      }
-      if (at < n) {
-        vote.dt = best;
-        vote.kind = kind;
-        vote.user_id = id_of(at);
-      }
-      return;
-    }
-    for (std::size_t k = 0; k < n; ++k) {
-      const double raw = g.dt[k];
-      double& frozen = frozen_steps[k];
-      double dt = scale * raw;
-      if (frozen > 0) {
-        // Without the small-strain kinematics the element's own stable step keeps falling; below half the
-        // frozen step the run would go unstable, so it stops and says which element.
-        if (dt < 0.5 * frozen && vote.violation_id == 0) {
-          vote.violation_id = id_of(k);
-          vote.violation_frozen = frozen;
-          vote.violation_dt = dt;
-        }
-        dt = frozen;
-      } else if (dt < fam.t_min && raw > 0) {
-        frozen = fam.t_min;
-        dt = frozen;
-        ++vote.switched;
-      }
-      if (dt < vote.dt) {
-        vote.dt = dt;
-        vote.kind = kind;
-        vote.user_id = id_of(k);
-      }
-    }
-  };
-  auto count_deleted_in = [&](const auto& g) {
-    for (int i = 0; i < g.count; ++i) vote.deleted += g.off[static_cast<std::size_t>(i)] <= 0 ? 1 : 0;
-  };
-  const auto ns = static_cast<std::int64_t>(shells_.size()), nb = static_cast<std::int64_t>(bricks_.size());
-  const auto nt = static_cast<std::int64_t>(tetras_.size());
-  if (flat < ns) {
-    auto& g = shells_[static_cast<std::size_t>(flat)];
-    const auto& mat = materials_[static_cast<std::size_t>(g.material)];
-    switch (g.kernel) {
-      case ShellKernel::Bt4: shell_bt4_forces(g, nodes_, mat, cyc); break;
-      case ShellKernel::Tri3: shell_c0_tri3_forces(g, nodes_, mat, cyc); break;
-      case ShellKernel::Qeph: shell_qeph_forces(g, nodes_, mat, cyc); break;
-      case ShellKernel::Qbat: shell_qbat_forces(g, nodes_, mat, cyc); break;
-    }
-    const auto& fam = g.triangle ? controls_.shell3 : controls_.shell;
-    const double scale = fam.given ? fam.scale : controls_.global.scale;
-    const auto kind = g.triangle ? StepControl::Kind::Shell3 : StepControl::Kind::Shell;
-    const auto& ids = g.triangle ? model_.shells3.id : model_.shells.id;
-    vote_group(g, scale, fam, kind, ids, g.dt_fixed.data(), g.props.ismstr == 2);
-    count_deleted_in(g);
-    return;
-  }
-  const double solid_scale = controls_.brick.given ? controls_.brick.scale : controls_.global.scale;
-  if (flat < ns + nb) {
-    auto& g = bricks_[static_cast<std::size_t>(flat - ns)];
-    const auto& mat = materials_[static_cast<std::size_t>(g.material)];
-    switch (brick_kernel(g)) {
-      case BrickKernel::OnePoint: hex8_forces(g, nodes_, mat, cyc); break;  // Isolid 1 and 2
-      case BrickKernel::Heph: hex8_heph_forces(g, nodes_, mat, cyc); break;
-      case BrickKernel::FullyIntegrated: hex8_full_forces(g, nodes_, mat, cyc); break;
-    }
-    vote_group(g, solid_scale, controls_.brick, StepControl::Kind::Brick, model_.bricks.id, g.dt_fixed.data(),
-               g.ismstr == 2);
-    count_deleted_in(g);
-    return;
-  }
-  if (flat < ns + nb + nt) {
-    auto& g = tetras_[static_cast<std::size_t>(flat - ns - nb)];
-    tetra4_forces(g, nodes_, materials_[static_cast<std::size_t>(g.material)], cyc);
-    // Tetrahedra vote with the brick family's /DT/BRICK scale (Radioss counts them as solids); they are not
-    // switched by /DT/BRICK/CST (no small-strain form here), so their frozen step stays unused.
-    vote_group(g, solid_scale, controls_.brick, StepControl::Kind::Tetra, model_.tetras.id, nullptr, false);
-    count_deleted_in(g);
-    return;
-  }
-  auto& g = springs_[static_cast<std::size_t>(flat - ns - nb - nt)];
-  if (g.props.type == 8)
-    spring_type8_forces(g, nodes_, cyc);
-  else if (g.props.type == 13)
-    spring_type13_forces(g, nodes_, cyc);
-  else
-    spring_type4_forces(g, nodes_, cyc);
-  // Springs vote with the global /DT scale (Radioss's DTFAC1(6)); no /DT/<family>/CST switch applies.
-  vote_group(g, controls_.global.scale, controls_.global, StepControl::Kind::Spring, model_.springs.id,
-             nullptr, false);
+  groups_.visit(flat, [&](auto& g) {
+    run_kernel(g, nodes_, materials_, cyc);
+    vote_for_step(vote, g, step_rule(g, controls_), element_block(model_, g).id);
+    if constexpr (kHasMaterial<std::decay_t<decltype(g)>>) vote.deleted += count_deleted_in(g);
+  });
 }
 
 Chunks ExplicitEngine::node_chunks() const {
@@ -880,28 +912,7 @@ double ExplicitEngine::nodal_time_step(StepControl& control) {
   // dt_n = Tmin: m = K (Tmin / Tscale)^2 / 2.
   auto& s = nodes_;
   std::fill(s.stiffness.begin(), s.stiffness.end(), 0.0);
-  for (const auto& g : shells_) {
-    const int npe = g.triangle ? 3 : 4;
-    for (int i = 0; i < g.count; ++i)
-      for (int q = 0; q < npe; ++q)
-        s.stiffness[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
-            g.k_nodal[static_cast<std::size_t>(i)];
-  }
-  for (const auto& g : bricks_)
-    for (int i = 0; i < g.count; ++i)
-      for (int q = 0; q < 8; ++q)
-        s.stiffness[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
-            g.k_nodal[static_cast<std::size_t>(i)];
-  for (const auto& g : tetras_)
-    for (int i = 0; i < g.count; ++i)
-      for (int q = 0; q < 4; ++q)
-        s.stiffness[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
-            g.k_nodal[static_cast<std::size_t>(i)];
-  for (const auto& g : springs_)
-    for (int i = 0; i < g.count; ++i)
-      for (int q = 0; q < 2; ++q)
-        s.stiffness[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
-            g.k_nodal[static_cast<std::size_t>(i)];
+  groups_.for_each([&](const auto& g) { add_nodal_stiffness(g, s.stiffness); });
   kinematics_->transfer_tied_stiffness();
   const auto& noda = controls_.nodal;
   double best = kInf;
@@ -924,35 +935,29 @@ double ExplicitEngine::nodal_time_step(StepControl& control) {
   return best;
 }
 
+// The first element, in group order, without a valid step: a solid's volume went to zero or below, a
+// shell collapsed or its values are no longer finite.
 std::string ExplicitEngine::bad_element(double time, std::int64_t cycle) const {
-  for (const auto& g : bricks_)
-    for (int i = 0; i < g.count; ++i)
-      if (g.dt[static_cast<std::size_t>(i)] <= 0)
-        return "brick " +
-               std::to_string(
-                   model_.bricks.id[static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])]) +
-               " has a zero or negative volume (" + std::to_string(g.vol[static_cast<std::size_t>(i)]) +
-               ") at cycle " + std::to_string(cycle) + ", time " + std::to_string(time) +
-               ": the mesh is inverted; the run stops";
-  for (const auto& g : tetras_)
-    for (int i = 0; i < g.count; ++i)
-      if (!(g.dt[static_cast<std::size_t>(i)] > 0))
-        return "tetrahedron " +
-               std::to_string(
-                   model_.tetras.id[static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])]) +
-               " has a zero or negative volume (" + std::to_string(g.vol[static_cast<std::size_t>(i)]) +
-               ") at cycle " + std::to_string(cycle) + ", time " + std::to_string(time) +
-               ": the mesh is inverted; the run stops";
-  for (const auto& g : shells_)
-    for (int i = 0; i < g.count; ++i)
-      if (!(g.dt[static_cast<std::size_t>(i)] > 0)) {
-        const auto e = static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)]);
-        return std::string(g.triangle ? "3-node shell " : "shell ") +
-               std::to_string(g.triangle ? model_.shells3.id[e] : model_.shells.id[e]) +
-               " has no valid time step (collapsed or non-finite) at cycle " + std::to_string(cycle) +
-               ", time " + std::to_string(time) + "; the run stops";
+  const std::string when = " at cycle " + std::to_string(cycle) + ", time " + std::to_string(time);
+  std::string found;
+  groups_.for_each([&](const auto& g) {
+    using Group = std::decay_t<decltype(g)>;
+    if constexpr (kHasMaterial<Group>) {
+      for (int i = 0; i < g.count && found.empty(); ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        if (g.dt[k] > 0) continue;
+        const auto id = std::to_string(element_block(model_, g).id[static_cast<std::size_t>(g.element[k])]);
+        if constexpr (std::is_same_v<Group, ShellGroup>)
+          found = std::string(g.triangle ? "3-node shell " : "shell ") + id +
+                  " has no valid time step (collapsed or non-finite)" + when + "; the run stops";
+        else
+          found = std::string(std::is_same_v<Group, BrickGroup> ? "brick " : "tetrahedron ") + id +
+                  " has a zero or negative volume (" + std::to_string(g.vol[k]) + ")" + when +
+                  ": the mesh is inverted; the run stops";
       }
-  return "an element has no valid time step at cycle " + std::to_string(cycle);
+    }
+  });
+  return found.empty() ? "an element has no valid time step at cycle " + std::to_string(cycle) : found;
 }
 
 CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
@@ -1078,20 +1083,13 @@ void ExplicitEngine::tell_contact_deleted_elements() {
   if (deleted == deleted_elements_) return;
   deleted_elements_ = deleted;
   std::vector<std::uint8_t> alive(model_.element_count(), 1);
-  const std::size_t tri0 = model_.shells.size(), brick0 = tri0 + model_.shells3.size();
-  const std::size_t tetra0 = brick0 + model_.bricks.size();
-  for (const auto& g : shells_)
-    for (int i = 0; i < g.count; ++i)
-      if (g.off[static_cast<std::size_t>(i)] <= 0)
-        alive[(g.triangle ? tri0 : 0) + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
-  for (const auto& g : bricks_)
-    for (int i = 0; i < g.count; ++i)
-      if (g.off[static_cast<std::size_t>(i)] <= 0)
-        alive[brick0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
-  for (const auto& g : tetras_)
-    for (int i = 0; i < g.count; ++i)
-      if (g.off[static_cast<std::size_t>(i)] <= 0)
-        alive[tetra0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+  groups_.for_each([&](const auto& g) {
+    if constexpr (kHasMaterial<std::decay_t<decltype(g)>>) {
+      for (int i = 0; i < g.count; ++i)
+        if (g.off[static_cast<std::size_t>(i)] <= 0)
+          alive[first_cell(model_, g) + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+    }
+  });
   contact_->elements_deleted(alive);
 }
 
@@ -1224,21 +1222,19 @@ bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(c
 
 void ExplicitEngine::sum_energies(const LoopState& L) {
   auto& kin = *kinematics_;
-  energy_.internal = energy_.hourglass = energy_.plastic_work = 0;
-  auto add_groups = [&](const auto& groups) {
-    for (const auto& g : groups)
-      for (int i = 0; i < g.count; ++i) {
-        energy_.internal += g.e_int[static_cast<std::size_t>(i)];
-        energy_.hourglass += g.e_hg[static_cast<std::size_t>(i)];
-        energy_.plastic_work += g.w_plastic[static_cast<std::size_t>(i)];
+  energy_.internal = energy_.hourglass = energy_.plastic_work = energy_.spring = 0;
+  groups_.for_each([&](const auto& g) {
+    for (int i = 0; i < g.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      if constexpr (kHasMaterial<std::decay_t<decltype(g)>>) {
+        energy_.internal += g.e_int[k];
+        energy_.hourglass += g.e_hg[k];
+        energy_.plastic_work += g.w_plastic[k];
+      } else {
+        energy_.spring += g.e_int[k];
       }
-  };
-  add_groups(shells_);
-  add_groups(bricks_);
-  add_groups(tetras_);
-  energy_.spring = 0;
-  for (const auto& g : springs_)
-    for (int i = 0; i < g.count; ++i) energy_.spring += g.e_int[static_cast<std::size_t>(i)];
+    }
+  });
   energy_.internal += energy_.spring;
   if (contact_) {
     energy_.contact_elastic = contact_->energy_elastic();

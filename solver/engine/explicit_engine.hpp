@@ -117,6 +117,17 @@ struct RunResult {
   CycleReport last;
 };
 
+// One element group's share of the cycle beyond its forces: its time-step vote and deleted elements.
+struct GroupVote {
+  double dt = 0;  // the smallest scaled (or frozen) step of the group
+  StepControl::Kind kind = StepControl::Kind::None;
+  std::int64_t user_id = 0;
+  std::int64_t switched = 0;      // elements frozen by /DT/<family>/CST this cycle
+  std::int64_t deleted = 0;       // elements with off <= 0 (contact's Idel); springs count none
+  std::int64_t violation_id = 0;  // the first element whose own step fell below half its frozen step
+  double violation_frozen = 0, violation_dt = 0;
+};
+
 class ExplicitEngine {
  public:
   ExplicitEngine(const model::Model& model, const model::RunControls& controls, EngineOptions options);
@@ -129,10 +140,7 @@ class ExplicitEngine {
   RunResult run(const std::function<bool(const CycleReport&)>& on_cycle);
 
   [[nodiscard]] const NodeState& nodes() const { return nodes_; }
-  [[nodiscard]] const std::vector<ShellGroup>& shell_groups() const { return shells_; }
-  [[nodiscard]] const std::vector<BrickGroup>& brick_groups() const { return bricks_; }
-  [[nodiscard]] const std::vector<TetraGroup>& tetra_groups() const { return tetras_; }
-  [[nodiscard]] const std::vector<SpringGroup>& spring_groups() const { return springs_; }
+  [[nodiscard]] const ElementGroups& groups() const { return groups_; }
   [[nodiscard]] std::size_t element_count() const { return element_count_; }
   [[nodiscard]] const model::Model& model() const { return model_; }
   [[nodiscard]] const std::vector<MaterialParams>& materials() const { return materials_; }
@@ -160,20 +168,7 @@ class ExplicitEngine {
  private:
   void build_nodes();
   void build_groups();
-  // One element group's share of the cycle beyond its forces: its time-step vote and deleted elements.
-  struct GroupVote {
-    double dt = 0;  // the smallest scaled (or frozen) step of the group
-    StepControl::Kind kind = StepControl::Kind::None;
-    std::int64_t user_id = 0;
-    std::int64_t switched = 0;      // elements frozen by /DT/<family>/CST this cycle
-    std::int64_t deleted = 0;       // elements with off <= 0 (contact's Idel); springs count none
-    std::int64_t violation_id = 0;  // the first element whose own step fell below half its frozen step
-    double violation_frozen = 0, violation_dt = 0;
-  };
-  // The groups in one list for the element stage: shells, bricks, tetras, springs (group_votes_'s order).
-  [[nodiscard]] std::int64_t group_count() const {
-    return static_cast<std::int64_t>(shells_.size() + bricks_.size() + tetras_.size() + springs_.size());
-  }
+  [[nodiscard]] std::int64_t group_count() const { return groups_.count(); }
   void compute_element_forces(const CycleInfo& cyc);
   void group_forces_and_vote(std::int64_t flat, const CycleInfo& cyc);
   void add_group_forces(std::int64_t flat, std::int32_t slot);
@@ -202,10 +197,7 @@ class ExplicitEngine {
   // outlive; groups are built once, in the constructor, so nothing is freed into it during a run.
   HugePageResource huge_pages_;
   std::pmr::monotonic_buffer_resource group_arena_{std::size_t{64} << 10, &huge_pages_};
-  std::vector<ShellGroup> shells_;
-  std::vector<BrickGroup> bricks_;
-  std::vector<TetraGroup> tetras_;
-  std::vector<SpringGroup> springs_;
+  ElementGroups groups_;  // group_votes_ and the nodal sums follow its flat order
   std::size_t element_count_ = 0;
   // Assembly: the element forces of every node summed in group order (group, element, node of the element),
   // [node][fx fy fz mx my mz]; filled by the element stage through element_sums_order_, read and cleared by

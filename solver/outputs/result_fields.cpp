@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "solver/elements/shell/shell_section.hpp"
 #include "solver/model/geometry.hpp"
@@ -103,10 +104,6 @@ void shell_frame(const ShellGroup& g, int i, const NodeState& s, Vec3& e1, Vec3&
   e2 = model::cross(e3, e1);
 }
 
-std::size_t cell_offset(const model::Model& m, bool triangle) {
-  return triangle ? m.shells.size() : 0;
-}
-
 // Calls body(gi) for every group index gi < n, 16 groups to a chunk, on the engine's threads (idle while a
 // state is written).
 template <class Body>
@@ -117,87 +114,75 @@ void each_group_parallel(const ExplicitEngine& e, std::int64_t n, Body&& body) {
   });
 }
 
-// Calls fn(cell index, CellValues) for every element of the model.
+// Element i of a shell group: the through-thickness mean stress in global axes, the largest eps_p of its
+// points, its thickness. QBAT keeps one state per in-plane Gauss point ([gauss][...]): the element's value is
+// their mean (the Gauss points have nearly equal weights), and its eps_p the largest.
+CellValues cell_values(const ShellGroup& g, int i, const NodeState& s,
+                       const std::vector<MaterialParams>& mats) {
+  const int np = g.props.n_points;
+  const auto rule = shell_detail::thickness_rule(np > 0 ? np : 0);
+  const auto k = static_cast<std::size_t>(i);
+  CellValues c;
+  double loc[5] = {0, 0, 0, 0, 0};
+  const std::size_t rows = static_cast<std::size_t>(np <= 0 ? 8 : 5 * np) * kGroupSize;
+  const std::size_t eps_rows = static_cast<std::size_t>(np <= 0 ? 1 : np) * kGroupSize;
+  const double per_point = 1.0 / g.gauss;
+  for (int gp = 0; gp < g.gauss; ++gp) {
+    const double* sig = g.sig.data() + static_cast<std::size_t>(gp) * rows;
+    const double* eps = g.eps_p.data() + static_cast<std::size_t>(gp) * eps_rows;
+    if (np <= 0) {  // resultant elasticity: the first 5 rows are the mean stresses
+      for (int q = 0; q < 5; ++q) loc[q] += per_point * sig[static_cast<std::size_t>(q) * kGroupSize + k];
+    } else {
+      for (int p = 0; p < np; ++p) {
+        for (int q = 0; q < 5; ++q) loc[q] += per_point * rule.w[p] * sig[shell_detail::sig_index(p, q, i)];
+        c.eps_p = std::max(c.eps_p, eps[static_cast<std::size_t>(p) * kGroupSize + k]);
+      }
+    }
+  }
+  Vec3 e1, e2, e3;
+  shell_frame(g, i, s, e1, e2, e3);
+  c.sig = to_global(loc, e1, e2, e3);
+  c.thickness = g.thick[k] > 0 ? g.thick[k] : g.t0[k];
+  c.volume0 = g.area0[k] * g.t0[k];
+  c.e_int = g.e_int[k];
+  c.e_hg = g.e_hg[k];
+  c.density = mats[static_cast<std::size_t>(g.material)].rho0;
+  return c;
+}
+
+// Element i of a brick or tetrahedron group (a tetrahedron's e_hg stays 0).
+template <class Solid>
+CellValues cell_values(const Solid& g, int i, const NodeState&, const std::vector<MaterialParams>&) {
+  const auto k = static_cast<std::size_t>(i);
+  CellValues c;
+  if constexpr (std::is_same_v<Solid, BrickGroup>) {
+    brick_global_stress(g, k, c.sig.data());
+  } else {
+    for (int q = 0; q < 6; ++q)
+      c.sig[static_cast<std::size_t>(q)] = g.sig[static_cast<std::size_t>(q) * kGroupSize + k];
+  }
+  c.eps_p = g.eps_p[k];
+  c.volume0 = g.vol0[k];
+  c.e_int = g.e_int[k];
+  c.e_hg = g.e_hg[k];
+  c.density = g.rho[k];
+  return c;
+}
+
+// Calls fn(cell index, CellValues) for every element of the model with a material (springs have none of
+// these fields). Groups write disjoint cells: the engine's threads, idle while a state is written, share the
+// groups.
 template <class Fn>
 void for_each_cell(const ExplicitEngine& e, Fn&& fn) {
   const auto& m = e.model();
-  const auto& s = e.nodes();
-  const auto& mats = e.materials();
-  // Groups write disjoint cells: the engine's threads, idle while a state is written, share the passes.
-  const auto& shells = e.shell_groups();
-  const auto n_shell_groups = static_cast<std::int64_t>(shells.size());
-  each_group_parallel(e, n_shell_groups, [&](std::int64_t gi) {
-    const auto& g = shells[static_cast<std::size_t>(gi)];
-    const int np = g.props.n_points;
-    const auto rule = shell_detail::thickness_rule(np > 0 ? np : 0);
-    for (int i = 0; i < g.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      CellValues c;
-      double loc[5] = {0, 0, 0, 0, 0};
-      // QBAT keeps one state per in-plane Gauss point ([gauss][...]): the element's value is their mean (the
-      // Gauss points have nearly equal weights), and its eps_p the largest.
-      const std::size_t rows = static_cast<std::size_t>(np <= 0 ? 8 : 5 * np) * kGroupSize;
-      const std::size_t eps_rows = static_cast<std::size_t>(np <= 0 ? 1 : np) * kGroupSize;
-      const double per_point = 1.0 / g.gauss;
-      for (int gp = 0; gp < g.gauss; ++gp) {
-        const double* sig = g.sig.data() + static_cast<std::size_t>(gp) * rows;
-        const double* eps = g.eps_p.data() + static_cast<std::size_t>(gp) * eps_rows;
-        if (np <= 0) {  // resultant elasticity: the first 5 rows are the mean stresses
-          for (int q = 0; q < 5; ++q) loc[q] += per_point * sig[static_cast<std::size_t>(q) * kGroupSize + k];
-        } else {
-          for (int p = 0; p < np; ++p) {
-            for (int q = 0; q < 5; ++q)
-              loc[q] += per_point * rule.w[p] * sig[shell_detail::sig_index(p, q, i)];
-            c.eps_p = std::max(c.eps_p, eps[static_cast<std::size_t>(p) * kGroupSize + k]);
-          }
-        }
+  each_group_parallel(e, e.groups().count(), [&](std::int64_t gi) {
+    e.groups().visit(gi, [&](const auto& g) {
+      if constexpr (kHasMaterial<std::decay_t<decltype(g)>>) {
+        for (int i = 0; i < g.count; ++i)
+          fn(first_cell(m, g) + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)]),
+             cell_values(g, i, e.nodes(), e.materials()));
       }
-      Vec3 e1, e2, e3;
-      shell_frame(g, i, s, e1, e2, e3);
-      c.sig = to_global(loc, e1, e2, e3);
-      c.thickness = g.thick[k] > 0 ? g.thick[k] : g.t0[k];
-      c.volume0 = g.area0[k] * g.t0[k];
-      c.e_int = g.e_int[k];
-      c.e_hg = g.e_hg[k];
-      c.density = mats[static_cast<std::size_t>(g.material)].rho0;
-      fn(cell_offset(m, g.triangle) + static_cast<std::size_t>(g.element[k]), c);
-    }
-  });
-  const std::size_t brick0 = m.shells.size() + m.shells3.size();
-  const auto& bricks = e.brick_groups();
-  const auto n_brick_groups = static_cast<std::int64_t>(bricks.size());
-  each_group_parallel(e, n_brick_groups, [&](std::int64_t gi) {
-    const auto& g = bricks[static_cast<std::size_t>(gi)];
-    for (int i = 0; i < g.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      CellValues c;
-      brick_global_stress(g, k, c.sig.data());
-      c.eps_p = g.eps_p[k];
-      c.volume0 = g.vol0[k];
-      c.e_int = g.e_int[k];
-      c.e_hg = g.e_hg[k];
-      c.density = g.rho[k];
-      fn(brick0 + static_cast<std::size_t>(g.element[k]), c);
-    }
-  });
-  // Tetrahedra: the same fields as bricks (e_hg stays 0).
-  const std::size_t tetra0 = brick0 + m.bricks.size();
-  const auto& tetras = e.tetra_groups();
-  const auto n_tetra_groups = static_cast<std::int64_t>(tetras.size());
-  each_group_parallel(e, n_tetra_groups, [&](std::int64_t gi) {
-    const auto& g = tetras[static_cast<std::size_t>(gi)];
-    for (int i = 0; i < g.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      CellValues c;
-      for (int q = 0; q < 6; ++q)
-        c.sig[static_cast<std::size_t>(q)] = g.sig[static_cast<std::size_t>(q) * kGroupSize + k];
-      c.eps_p = g.eps_p[k];
-      c.volume0 = g.vol0[k];
-      c.e_int = g.e_int[k];
-      c.e_hg = g.e_hg[k];
-      c.density = g.rho[k];
-      fn(tetra0 + static_cast<std::size_t>(g.element[k]), c);
-    }
+    });
   });
 }
 
@@ -264,24 +249,11 @@ void gather_node_field(const ExplicitEngine& e, NodeField f, double dt1, std::sp
     out[3 * n + 2] = static_cast<float>(z);
   };
   if (f == NodeField::NodalTimeStep) {
+    // The elements' stiffness without the springs' (the engine's nodal step adds theirs).
     std::vector<double> k(s.n, 0.0);
-    for (const auto& g : e.shell_groups()) {
-      const int npe = g.triangle ? 3 : 4;
-      for (int i = 0; i < g.count; ++i)
-        for (int q = 0; q < npe; ++q)
-          k[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
-              g.k_nodal[static_cast<std::size_t>(i)];
-    }
-    for (const auto& g : e.brick_groups())
-      for (int i = 0; i < g.count; ++i)
-        for (int q = 0; q < 8; ++q)
-          k[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
-              g.k_nodal[static_cast<std::size_t>(i)];
-    for (const auto& g : e.tetra_groups())
-      for (int i = 0; i < g.count; ++i)
-        for (int q = 0; q < 4; ++q)
-          k[static_cast<std::size_t>(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])] +=
-              g.k_nodal[static_cast<std::size_t>(i)];
+    e.groups().for_each([&](const auto& g) {
+      if constexpr (kHasMaterial<std::decay_t<decltype(g)>>) add_nodal_stiffness(g, k);
+    });
     for (std::size_t n = 0; n < s.n; ++n)
       out[n] = k[n] > 0 ? static_cast<float>(std::sqrt(2.0 * s.mass[n] / k[n])) : 0.0f;
     return;
@@ -324,26 +296,11 @@ void gather_node_field(const ExplicitEngine& e, NodeField f, double dt1, std::sp
 void gather_element_status(const ExplicitEngine& e, std::span<std::uint8_t> out) {
   const auto& m = e.model();
   std::fill(out.begin(), out.end(), std::uint8_t{1});
-  for (const auto& g : e.shell_groups())
+  e.groups().for_each([&](const auto& g) {
     for (int i = 0; i < g.count; ++i)
       if (g.off[static_cast<std::size_t>(i)] <= 0)
-        out[cell_offset(m, g.triangle) + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] =
-            0;
-  const std::size_t brick0 = m.shells.size() + m.shells3.size();
-  for (const auto& g : e.brick_groups())
-    for (int i = 0; i < g.count; ++i)
-      if (g.off[static_cast<std::size_t>(i)] <= 0)
-        out[brick0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
-  const std::size_t tetra0 = brick0 + m.bricks.size();
-  for (const auto& g : e.tetra_groups())
-    for (int i = 0; i < g.count; ++i)
-      if (g.off[static_cast<std::size_t>(i)] <= 0)
-        out[tetra0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
-  const std::size_t spring0 = tetra0 + m.tetras.size();
-  for (const auto& g : e.spring_groups())
-    for (int i = 0; i < g.count; ++i)
-      if (g.off[static_cast<std::size_t>(i)] <= 0)
-        out[spring0 + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+        out[first_cell(m, g) + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;
+  });
 }
 
 void gather_points(const ExplicitEngine& e, std::span<double> out) {

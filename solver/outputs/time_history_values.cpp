@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <type_traits>
 
 #include "solver/conditions/kinematics_driver.hpp"
 #include "solver/conditions/rigid_body.hpp"
@@ -144,11 +145,11 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
       }
     };
     if (kind_ == K::Brick)
-      index(e.brick_groups(), [](const BrickGroup&) { return true; });
+      index(e.groups().bricks, [](const BrickGroup&) { return true; });
     else if (kind_ == K::Spring)
-      index(e.spring_groups(), [](const SpringGroup&) { return true; });
+      index(e.groups().springs, [](const SpringGroup&) { return true; });
     else
-      index(e.shell_groups(), [&](const ShellGroup& grp) { return grp.triangle == (kind_ == K::Shell3); });
+      index(e.groups().shells, [&](const ShellGroup& grp) { return grp.triangle == (kind_ == K::Shell3); });
     for (std::size_t o = 0; o < objects_.size(); ++o) {
       const auto el = static_cast<std::size_t>(objects_[o]);
       if (el < where.size()) slots_[o] = where[el];
@@ -157,7 +158,7 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
   }
   if (kind_ == K::Section) {
     for (const auto o : objects_)
-      sections_.emplace_back(m.sections[static_cast<std::size_t>(o)], e.shell_groups(), e.brick_groups());
+      sections_.emplace_back(m.sections[static_cast<std::size_t>(o)], e.groups().shells, e.groups().bricks);
     return;
   }
   if (kind_ == K::Node) {
@@ -249,30 +250,18 @@ void ThGroupSampler::sample_parts(const ExplicitEngine& e, const CycleReport& r,
   // Element energies and eroded mass per part, then node sums per part.
   std::vector<double> ie(m.parts.size(), 0.0), he(m.parts.size(), 0.0), eroded(m.parts.size(), 0.0);
   const auto& mats = e.materials();
-  for (const auto& g : e.shell_groups())
-    for (int i = 0; i < g.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
+  e.groups().for_each([&](const auto& g) {
+    if constexpr (kHasMaterial<std::decay_t<decltype(g)>>) {
       const auto p = static_cast<std::size_t>(g.part);
-      ie[p] += g.e_int[k];
-      he[p] += g.e_hg[k];
-      if (g.off[k] <= 0) eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.area0[k] * g.t0[k];
+      const double rho0 = mats[static_cast<std::size_t>(g.material)].rho0;
+      for (int i = 0; i < g.count; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        ie[p] += g.e_int[k];
+        he[p] += g.e_hg[k];
+        if (g.off[k] <= 0) eroded[p] += initial_mass(g, k, rho0);
+      }
     }
-  for (const auto& g : e.brick_groups())
-    for (int i = 0; i < g.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      const auto p = static_cast<std::size_t>(g.part);
-      ie[p] += g.e_int[k];
-      he[p] += g.e_hg[k];
-      if (g.off[k] <= 0) eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.vol0[k];
-    }
-  for (const auto& g : e.tetra_groups())
-    for (int i = 0; i < g.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      const auto p = static_cast<std::size_t>(g.part);
-      ie[p] += g.e_int[k];
-      he[p] += g.e_hg[k];
-      if (g.off[k] <= 0) eroded[p] += mats[static_cast<std::size_t>(g.material)].rho0 * g.vol0[k];
-    }
+  });
   for (std::size_t o = 0; o < objects_.size(); ++o) {
     double v_ie = 0, v_he = 0, v_er = 0, ke = 0, mass = 0, mom[3] = {0, 0, 0};
     for (const auto p : object_parts_[o]) {
@@ -339,7 +328,7 @@ void ThGroupSampler::sample_shells(const ExplicitEngine& e, const CycleReport& /
   for (std::size_t o = 0; o < objects_.size(); ++o) {
     const auto [gi, i] = slots_[o];
     if (gi < 0) continue;
-    const auto& g = e.shell_groups()[static_cast<std::size_t>(gi)];
+    const auto& g = e.groups().shells[static_cast<std::size_t>(gi)];
     const auto k = static_cast<std::size_t>(i);
     const int np = g.props.n_points;
     const double t = g.thick[k] > 0 ? g.thick[k] : g.t0[k];
@@ -385,7 +374,7 @@ void ThGroupSampler::sample_bricks(const ExplicitEngine& e, const CycleReport& r
   for (std::size_t o = 0; o < objects_.size(); ++o) {
     const auto [gi, i] = slots_[o];
     if (gi < 0) continue;
-    const auto& g = e.brick_groups()[static_cast<std::size_t>(gi)];
+    const auto& g = e.groups().bricks[static_cast<std::size_t>(gi)];
     const auto k = static_cast<std::size_t>(i);
     const char* names[6] = {"SX", "SY", "SZ", "SXY", "SYZ", "SXZ"};
     double sg[6];
@@ -457,7 +446,7 @@ void ThGroupSampler::sample_sections(const ExplicitEngine& e, const CycleReport&
                                      const ThPut& put) const {
   const auto& s = e.nodes();
   for (std::size_t o = 0; o < objects_.size(); ++o) {
-    const SectionCut c = sections_[o].evaluate(s, e.shell_groups(), e.brick_groups());
+    const SectionCut c = sections_[o].evaluate(s, e.groups().shells, e.groups().bricks);
     const char* axes[3] = {"X", "Y", "Z"};
     for (std::size_t d = 0; d < 3; ++d) {
       const std::string ax = axes[d], k = std::to_string(d + 1);
@@ -476,7 +465,7 @@ void ThGroupSampler::sample_springs(const ExplicitEngine& e, const CycleReport& 
   for (std::size_t o = 0; o < objects_.size(); ++o) {
     const auto [gi, i] = slots_[o];
     if (gi < 0) continue;
-    const auto& g = e.spring_groups()[static_cast<std::size_t>(gi)];
+    const auto& g = e.groups().springs[static_cast<std::size_t>(gi)];
     const auto k = static_cast<std::size_t>(i);
     put(o, "OFF", g.off[k]);
     put(o, "IE", g.e_int[k]);

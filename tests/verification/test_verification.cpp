@@ -174,8 +174,8 @@ TEST_CASE("verification: elastic bar on a rigid wall", "[verification]") {
   sv::ExplicitEngine eng(m, c.controls, sv::EngineOptions{1});
   // Bricks of the lower layer (a node on the lower face), as (group, slot).
   std::vector<std::pair<std::size_t, std::size_t>> lower_bricks;
-  for (std::size_t gi = 0; gi < eng.brick_groups().size(); ++gi) {
-    const auto& g = eng.brick_groups()[gi];
+  for (std::size_t gi = 0; gi < eng.groups().bricks.size(); ++gi) {
+    const auto& g = eng.groups().bricks[gi];
     for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i) {
       const auto e = static_cast<std::size_t>(g.element[i]);
       bool low = false;
@@ -204,7 +204,7 @@ TEST_CASE("verification: elastic bar on a rigid wall", "[verification]") {
       zl = std::min(zl, s.z[n]);
     }
     double szz = 0;
-    for (const auto& [gi, i] : lower_bricks) szz += eng.brick_groups()[gi].sig[2 * G + i];
+    for (const auto& [gi, i] : lower_bricks) szz += eng.groups().bricks[gi].sig[2 * G + i];
     rec.push_back(Rec{r.time, r.dt, vl / static_cast<double>(lower.size()),
                       szz / static_cast<double>(lower_bricks.size()), zl, r.momentum});
     energy(r);
@@ -368,8 +368,8 @@ TEST_CASE("verification: two bars exchange velocities", "[verification]") {
   REQUIRE(eng.contact() != nullptr);
   // The bricks of each bar at the interface (a node on the bar's end face), as (group, slot).
   std::array<std::vector<std::pair<std::size_t, std::size_t>>, 2> end_bricks;
-  for (std::size_t gi = 0; gi < eng.brick_groups().size(); ++gi) {
-    const auto& g = eng.brick_groups()[gi];
+  for (std::size_t gi = 0; gi < eng.groups().bricks.size(); ++gi) {
+    const auto& g = eng.groups().bricks[gi];
     for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i) {
       const auto e = static_cast<std::size_t>(g.element[i]);
       for (std::size_t b = 0; b < 2; ++b) {
@@ -401,7 +401,7 @@ TEST_CASE("verification: two bars exchange velocities", "[verification]") {
     // force: the normal contact force on the striker's face, positive in compression (it pushes along -Z).
     Rec x{r.time, r.dt, -ir[0].normal_force[2], {0, 0}, ir[0].active_pairs, r.momentum};
     for (std::size_t b = 0; b < 2; ++b) {
-      for (const auto& [gi, i] : end_bricks[b]) x.szz[b] += eng.brick_groups()[gi].sig[2 * G + i];
+      for (const auto& [gi, i] : end_bricks[b]) x.szz[b] += eng.groups().bricks[gi].sig[2 * G + i];
       x.szz[b] /= static_cast<double>(end_bricks[b].size());
     }
     rec.push_back(x);
@@ -646,7 +646,7 @@ BeamRun run_cantilever_bricks(const char* root) {
     t.push_back(r.time);
     w.push_back(z / static_cast<double>(tip.size()));
     double e_int = 0, w_hg = 0;
-    for (const auto& g : eng.brick_groups())
+    for (const auto& g : eng.groups().bricks)
       for (int i = 0; i < g.count; ++i) {
         e_int += g.e_int[static_cast<std::size_t>(i)];
         w_hg += g.w_hg[static_cast<std::size_t>(i)];
@@ -909,7 +909,7 @@ TEST_CASE("verification: Johnson-Cook single brick flow curve", "[verification]"
   std::vector<Rec> rec;
   EnergyWatch energy;
   const auto res = eng.run([&](const sv::CycleReport& r) {
-    const auto& g = eng.brick_groups().at(0);
+    const auto& g = eng.groups().bricks.at(0);
     Rec x{r.time, g.eps_p[0], g.w_plastic[0], g.vol[0], {}};
     for (std::size_t k = 0; k < 6; ++k) x.sig[k] = g.sig[k * G];
     rec.push_back(x);
@@ -972,7 +972,7 @@ TEST_CASE("verification: Johnson-Cook single brick flow curve", "[verification]"
   for (std::size_t k = 1; k < rec.size(); ++k)
     w_ref += rec[k].vol * (area(rec[k].eps_p) - area(rec[k - 1].eps_p));
   const double eps_end = rec.back().eps_p, w_end = rec.back().w_plastic;
-  const double vol0 = eng.brick_groups().at(0).vol0[0];
+  const double vol0 = eng.groups().bricks.at(0).vol0[0];
   CHECK(std::abs(w_end - w_ref) <= 1e-5 * w_ref);
   CHECK(std::abs(w_end - vol0 * area(eps_end)) <= 2e-3 * vol0 * area(eps_end));
   if (verbose())

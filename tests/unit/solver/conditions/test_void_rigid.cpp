@@ -93,7 +93,7 @@ TEST_CASE("void brick: mass rho_I V on its nodes, no force, and no stable step o
     // Its contact stiffness uses K = E / 3 (nu blank).
     CHECK(md.materials[2].bulk == Approx(1000.0 / 3).epsilon(1e-15));
     sv::ExplicitEngine engine(md, controls(2e-3), sv::EngineOptions{1, 1});
-    REQUIRE(engine.brick_groups().size() == 1);  // only the elastic cube has a group
+    REQUIRE(engine.groups().bricks.size() == 1);  // only the elastic cube has a group
     double t = 0;
     engine.run([&](const sv::CycleReport& r) {
       t = r.time;
@@ -160,7 +160,7 @@ TEST_CASE("rigid material in free flight: no strain, momentum and angular moment
   const auto main = static_cast<std::size_t>(md.rigid_bodies[0].main_node);
   const double mass = kRho * kA * kA * kA;
   sv::ExplicitEngine engine(md, controls(1e-3), sv::EngineOptions{1, 1});
-  REQUIRE(engine.brick_groups().size() == 1);
+  REQUIRE(engine.groups().bricks.size() == 1);
   std::vector<std::size_t> sec;
   for (const auto n : md.rigid_bodies[0].secondary) sec.push_back(static_cast<std::size_t>(n));
   const auto& ns = engine.nodes();

@@ -393,7 +393,7 @@ TEST_CASE("/DT/BRICK/CST switches the brick to small strain: its step stays cons
   std::array<double, 3> top{};
   const auto res = run_held_at_tmin(
       m, 0.4 * a / V, &radx::model::RunControls::brick,
-      [](const radx::solver::ExplicitEngine& e) { return e.brick_groups().at(0).dt[0]; }, rc, steps, own, 4,
+      [](const radx::solver::ExplicitEngine& e) { return e.groups().bricks.at(0).dt[0]; }, rc, steps, own, 4,
       top);
   INFO(res.message);
   REQUIRE(res.status == radx::solver::RunStatus::Normal);
@@ -441,7 +441,7 @@ TEST_CASE("/DT/SHELL/CST switches the shell to small strain: its step stays exac
   std::array<double, 3> pushed{};
   const auto res = run_held_at_tmin(
       m, 0.4 * a / V, &radx::model::RunControls::shell,
-      [](const radx::solver::ExplicitEngine& e) { return e.shell_groups().at(0).dt[0]; }, rc, steps, own, 1,
+      [](const radx::solver::ExplicitEngine& e) { return e.groups().shells.at(0).dt[0]; }, rc, steps, own, 1,
       pushed);
   INFO(res.message);
   REQUIRE(res.status == radx::solver::RunStatus::Normal);

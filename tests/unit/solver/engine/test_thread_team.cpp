@@ -325,12 +325,12 @@ TEST_CASE("each node's element sum is made in group, element, node-of-element or
             sum[static_cast<std::size_t>(g.conn[q * G + i])][c] +=
                 g.nodal_force[(q * components + c) * G + i];
     };
-    for (const auto& g : engine.shell_groups()) add(g, g.triangle ? 3 : 4, 6);
-    for (const auto& g : engine.brick_groups()) add(g, 8, 3);
-    REQUIRE(engine.tetra_groups().empty());
-    REQUIRE(engine.spring_groups().empty());
+    for (const auto& g : engine.groups().shells) add(g, g.triangle ? 3 : 4, 6);
+    for (const auto& g : engine.groups().bricks) add(g, 8, 3);
+    REQUIRE(engine.groups().tetras.empty());
+    REQUIRE(engine.groups().springs.empty());
     std::size_t crossing = 0;  // shell groups reaching into two node chunks: the listed entries' path
-    for (const auto& g : engine.shell_groups()) {
+    for (const auto& g : engine.groups().shells) {
       std::set<int> chunks;
       for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
         for (std::size_t q = 0; q < 4; ++q) chunks.insert(g.conn[q * G + i] / 2048);

@@ -386,7 +386,7 @@ TEST_CASE(
   rc.t_stop = 1e-9;
   ExplicitEngine engine(md, rc, EngineOptions{1, 1});
   std::vector<double> quads, tris;
-  for (const auto& g : engine.shell_groups())
+  for (const auto& g : engine.groups().shells)
     for (int i = 0; i < g.count; ++i)
       (g.triangle ? tris : quads).push_back(g.fail_scale[static_cast<std::size_t>(i)]);
   REQUIRE(quads.size() == 2);

@@ -120,7 +120,7 @@ TEST_CASE("shell stress output: plane stress in the element, von Mises invariant
   const auto& s = eng.nodes();
   double largest = 0;
   int checked = 0;
-  for (const auto& g : eng.shell_groups()) {
+  for (const auto& g : eng.groups().shells) {
     if (g.triangle) continue;
     const int np = g.props.n_points;
     const auto rule = sv::shell_detail::thickness_rule(np > 0 ? np : 0);

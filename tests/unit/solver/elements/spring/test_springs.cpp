@@ -319,7 +319,7 @@ TEST_CASE("spring by function in the engine: the time history force follows the 
   int checked = 0;
   double worst = 0;
   engine.run([&](const radx::solver::CycleReport&) {
-    const auto& g = engine.spring_groups()[0];
+    const auto& g = engine.groups().springs[0];
     const double x = g.dx[0];
     if (x > 0.1) {
       worst =
