@@ -16,12 +16,6 @@
 
 namespace radx::detail {
 
-namespace {
-std::string num(double v) {
-  return number_text(v);
-}
-}  // namespace
-
 void ModelBuilder::read_foam_tab(const KeywordRecord& r, model::Material& mat) {
   read_densities(r, mat);
   read_isotropic_elastic(
@@ -31,7 +25,7 @@ void ModelBuilder::read_foam_tab(const KeywordRecord& r, model::Material& mat) {
   if (f.e_max > 0 && f.e_max < mat.young) {
     warning_at(
         r, "E_max", Diag::DefaultApplied,
-        "E_max = " + num(f.e_max) + " is below E0 = " + num(mat.young) +
+        "E_max = " + number_text(f.e_max) + " is below E0 = " + number_text(mat.young) +
             ": it is dropped and the largest slope of the loading curves taken instead, as OpenRadioss "
             "does");
     f.e_max = 0;
@@ -65,7 +59,7 @@ void ModelBuilder::read_foam_tab(const KeywordRecord& r, model::Material& mat) {
         if (rate[static_cast<std::size_t>(j)] == rate.back())
           error_at(r, fr, Diag::InconsistentValues,
                    what + "ing curves " + std::to_string(j + 1) + " and " + k +
-                       " have the same strain rate " + num(rate.back()) +
+                       " have the same strain rate " + number_text(rate.back()) +
                        ": the curves of a table need distinct rates (give each its own rate or drop one)");
     }
   };
@@ -76,7 +70,7 @@ void ModelBuilder::read_foam_tab(const KeywordRecord& r, model::Material& mat) {
     for (double v : f.load_rate) lowest = std::min(lowest, v);
     if (lowest != 0)
       warning_at(r, "rate_L1", Diag::DefaultApplied,
-                 "the lowest loading rate is " + num(lowest) +
+                 "the lowest loading rate is " + number_text(lowest) +
                      ": its curve is the static one and is taken at rate 0, as OpenRadioss does");
   }
   if (nu == 0 && f.iflag <= 2) {

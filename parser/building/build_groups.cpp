@@ -40,10 +40,6 @@ using model::kNone;
 
 namespace {
 
-std::string num(double v) {
-  return number_text(v);
-}
-
 using FaceKey = std::array<std::int32_t, 4>;
 FaceKey face_key(std::array<std::int32_t, 4> f) {
   std::sort(f.begin(), f.end());
@@ -461,8 +457,8 @@ void ModelBuilder::build_functions() {
     for (std::size_t k = 1; k < f.x.size(); ++k) {
       if (!(f.x[k] > f.x[k - 1])) {
         diags_.error(Diag::NonMonotonicFunction, at(t.pos[k], 1), about(*r),
-                     "abscissa X = " + num(f.x[k]) + " is not greater than the previous one (" +
-                         num(f.x[k - 1]) + "); function abscissas must be strictly increasing");
+                     "abscissa X = " + number_text(f.x[k]) + " is not greater than the previous one (" +
+                         number_text(f.x[k - 1]) + "); function abscissas must be strictly increasing");
       }
     }
     if (register_id(funct_ids_, f.id, static_cast<std::int32_t>(m_.functions.size()), *r, "function", first))

@@ -17,19 +17,13 @@
 
 namespace radx::detail {
 
-namespace {
-std::string num(double v) {
-  return number_text(v);
-}
-}  // namespace
-
 void ModelBuilder::read_ogden(const KeywordRecord& r, model::Material& mat) {
   read_densities(r, mat);
   mat.poisson = r.get_real("nu");  // 0 -> 0.495 by the field's rule
   if (mat.poisson < 0 || mat.poisson >= 0.5)
     error_at(
         r, "nu", Diag::BadPoisson,
-        "Poisson's ratio nu = " + num(mat.poisson) +
+        "Poisson's ratio nu = " + number_text(mat.poisson) +
             " is outside [0, 0.5): the bulk modulus G (1 + nu) / 3 (1 - 2 nu) would be infinite or negative "
             "(OpenRadioss takes 1e-20 for 1 - 2 nu; radx asks for the value you mean, e.g. 0.4999)");
   auto& o = mat.ogden;
@@ -49,7 +43,7 @@ void ModelBuilder::read_ogden(const KeywordRecord& r, model::Material& mat) {
     if (alpha == 0)
       error_at(
           r, kAlpha[p], Diag::InconsistentValues,
-          std::string(kMu[p]) + " = " + num(mu) + " with " + kAlpha[p] +
+          std::string(kMu[p]) + " = " + number_text(mu) + " with " + kAlpha[p] +
               " = 0: a term with a zero exponent has no stiffness and an undefined energy mu_p / alpha_p; "
               "give its exponent or set its mu to 0");
     o.mu.push_back(mu);
@@ -58,7 +52,7 @@ void ModelBuilder::read_ogden(const KeywordRecord& r, model::Material& mat) {
   }
   if (!(g > 0))
     error_at(r, "mu_1", Diag::InconsistentValues,
-             "sum mu_p alpha_p = " + num(g) +
+             "sum mu_p alpha_p = " + number_text(g) +
                  " must be > 0: it is twice the initial shear modulus, the sum of each term's contribution "
                  "mu_p alpha_p");
   mat.shear = 0.5 * g;

@@ -16,9 +16,6 @@ namespace detail {
 using model::kNone;
 
 namespace {
-std::string num(double v) {
-  return number_text(v);
-}
 
 // The fields of an /INTER/TYPE7 or /INTER/LAGDT/TYPE7 record, with their zero defaults.
 model::Interface read_type7(ModelBuilder& b, const KeywordRecord& r, bool lagdt) {
@@ -88,16 +85,18 @@ void check_type7_stiffness(ModelBuilder& b, const KeywordRecord& r, model::Inter
     if (!f || f->blank || f->defaulted || in.stfac <= 0)
       b.error_at(r, "Stfac", Diag::RequiredValueMissing,
                  "Istf = 1 takes the stiffness value from Stfac, which is " +
-                     std::string(f && !f->defaulted && !f->blank ? num(in.stfac) : "0 or blank") +
+                     std::string(f && !f->defaulted && !f->blank ? number_text(in.stfac) : "0 or blank") +
                      "; give the interface stiffness (force per length) > 0");
   } else {
     if (in.stfac == 0) in.stfac = 1.0;
     if (in.stfac < 0)
-      b.error_at(r, "Stfac", Diag::ValueOutOfRange, "Stfac = " + num(in.stfac) + " must be > 0 (0 means 1)");
+      b.error_at(r, "Stfac", Diag::ValueOutOfRange,
+                 "Stfac = " + number_text(in.stfac) + " must be > 0 (0 means 1)");
   }
   if (in.istf >= 2 && in.stmax < in.stmin)
     b.error_at(r, "Stmax", Diag::InconsistentValues,
-               "Stmax = " + num(in.stmax) + " is below Stmin = " + num(in.stmin) + "; need Stmin <= Stmax");
+               "Stmax = " + number_text(in.stmax) + " is below Stmin = " + number_text(in.stmin) +
+                   "; need Stmin <= Stmax");
 }
 
 // Renard friction (Ifric = 3): C1 = mu_s, C2 = mu_d, C3 = mu_max, C4 = mu_min, C5 = V_cr1, C6 = V_cr2, in
@@ -108,7 +107,7 @@ void check_renard_friction(ModelBuilder& b, const KeywordRecord& r, const model:
   if (c[4] == 0)
     why = "C5 (critical speed V_cr1) is 0";
   else if (!(c[4] < c[5]))
-    why = "C5 = " + num(c[4]) + " is not below C6 = " + num(c[5]);
+    why = "C5 = " + number_text(c[4]) + " is not below C6 = " + number_text(c[5]);
   else if (!(c[3] <= c[0] && c[0] <= c[2]))
     why = "C1 (mu_s) must lie in [C4, C3] = [mu_min, mu_max]";
   else if (!(c[3] <= c[1] && c[1] <= c[2]))
@@ -125,16 +124,16 @@ void check_type7(ModelBuilder& b, const KeywordRecord& r, model::Interface& in) 
   check_type7_stiffness(b, r, in);
   if (in.t_stop <= in.t_start)
     b.error_at(r, "Tstop", Diag::InconsistentValues,
-               "Tstop = " + num(in.t_stop) + " is not after Tstart = " + num(in.t_start) +
+               "Tstop = " + number_text(in.t_stop) + " is not after Tstart = " + number_text(in.t_start) +
                    ": the interface would never act; need Tstop > Tstart (0 = never stop)");
   if (in.ibag != 0)
     b.warning_at(r, "Ibag", Diag::UnimplementedOption,
                  "Ibag = " + std::to_string(in.ibag) +
                      ": airbag vent-hole closure is accepted but monitored volumes are not modelled by radx");
   if ((in.ifiltr == 1 || in.ifiltr == 2) && (in.xfreq < 0 || in.xfreq > 1))
-    b.error_at(
-        r, "Xfreq", Diag::ValueOutOfRange,
-        "Xfreq = " + num(in.xfreq) + " with Ifiltr = " + std::to_string(in.ifiltr) + " must be in [0, 1]");
+    b.error_at(r, "Xfreq", Diag::ValueOutOfRange,
+               "Xfreq = " + number_text(in.xfreq) + " with Ifiltr = " + std::to_string(in.ifiltr) +
+                   " must be in [0, 1]");
   if (in.ifric == 3) check_renard_friction(b, r, in);
 }
 
@@ -190,14 +189,14 @@ bool pressure_curve_ok(const ContactLawRecord& c, const UrnResult& urn, std::int
                 " point(s); a tabulated law needs at least 2 points (gap, pressure)");
   for (std::size_t j = 0; j < f.y.size(); ++j)
     if (f.y[j] < 0) {
-      curve_error(fn + " point " + std::to_string(j + 1) + " (gap " + num(f.x[j]) + ") has the pressure " +
-                  num(f.y[j]) + " < 0: contact pressures are >= 0");
+      curve_error(fn + " point " + std::to_string(j + 1) + " (gap " + number_text(f.x[j]) +
+                  ") has the pressure " + number_text(f.y[j]) + " < 0: contact pressures are >= 0");
       break;
     }
   for (std::size_t j = 1; j < f.y.size(); ++j)
     if (f.y[j] > f.y[j - 1]) {
-      curve_error(fn + ": the pressure rises from " + num(f.y[j - 1]) + " at gap " + num(f.x[j - 1]) +
-                  " to " + num(f.y[j]) + " at gap " + num(f.x[j]) +
+      curve_error(fn + ": the pressure rises from " + number_text(f.y[j - 1]) + " at gap " +
+                  number_text(f.x[j - 1]) + " to " + number_text(f.y[j]) + " at gap " + number_text(f.x[j]) +
                   "; the pressure must not increase as the gap grows (the stiffness would be negative)");
       break;
     }
@@ -205,7 +204,8 @@ bool pressure_curve_ok(const ContactLawRecord& c, const UrnResult& urn, std::int
   // would press every node the search finds at any distance.
   const std::size_t n = f.y.size();
   if (curve_ok && n >= 2 && f.y[n - 1] > 0 && !(f.y[n - 1] < f.y[n - 2]))
-    curve_error(fn + " ends at gap " + num(f.x[n - 1]) + " with the pressure " + num(f.y[n - 1]) +
+    curve_error(fn + " ends at gap " + number_text(f.x[n - 1]) + " with the pressure " +
+                number_text(f.y[n - 1]) +
                 " > 0 and a last segment that does not fall: the pressure must reach 0 at some gap (end the "
                 "table with a 0, or let its last segment fall)");
   if (curve_ok && n >= 2 && std::all_of(f.y.begin(), f.y.end(), [](double y) { return !(y > 0); }))
@@ -260,7 +260,7 @@ void attach_law(const ContactLawRecord& c, model::Interface& in, model::ContactL
   if (in.law.friction == model::FrictionLaw::None && (in.fric > 0 || in.ifric > 0))
     c.b.diags_.warning(Diag::InterfaceFieldIgnored, c.where(0), ModelBuilder::about(r),
                        c.law_id + " has no friction part (s...): the interface " + std::to_string(in.id) +
-                           "'s Fric = " + num(in.fric) + ", Ifric = " + std::to_string(in.ifric) +
+                           "'s Fric = " + number_text(in.fric) + ", Ifric = " + std::to_string(in.ifric) +
                            " is replaced and the contact is frictionless; add an s part to keep friction");
 }
 

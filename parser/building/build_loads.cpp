@@ -42,10 +42,6 @@ using IdIndex = ModelBuilder::IdIndex;
 using FirstPos = std::unordered_map<std::int64_t, SourcePos>;
 using NodeList = std::vector<std::int32_t>;
 
-std::string num(double v) {
-  return number_text(v);
-}
-
 int geti(const KeywordRecord& r, std::string_view field) {
   return static_cast<int>(r.get_int(field));
 }
@@ -141,9 +137,9 @@ constexpr std::string_view kLoadDirections = "X, Y, Z (force) or XX, YY, ZZ (mom
 double mass_field(ModelBuilder& b, const KeywordRecord& r, std::string_view meaning) {
   const double m = r.get_real("Mass");
   if (m < 0)
-    b.error_at(
-        r, "Mass", Diag::ValueOutOfRange,
-        "Mass = " + num(m) + " is negative; it is the mass " + std::string(meaning) + "; accepted: >= 0");
+    b.error_at(r, "Mass", Diag::ValueOutOfRange,
+               "Mass = " + number_text(m) + " is negative; it is the mass " + std::string(meaning) +
+                   "; accepted: >= 0");
   return m;
 }
 
@@ -251,8 +247,8 @@ void build_imposed_velocities(ModelBuilder& b) {
       v.t_stop = real_or(r, "Tstop", model::kNever);
       if (r.get_real("Tstop") != 0 && v.t_stop <= v.t_start)
         b.error_at(r, "Tstop", Diag::InconsistentValues,
-                   "Tstop = " + num(v.t_stop) + " is not after Tstart = " + num(v.t_start) + ": the " +
-                       std::string(displacement ? "displacement" : "velocity") +
+                   "Tstop = " + number_text(v.t_stop) + " is not after Tstart = " + number_text(v.t_start) +
+                       ": the " + std::string(displacement ? "displacement" : "velocity") +
                        " would never be imposed; need Tstop > Tstart (0 = never stop)");
       if (v.icoor == 1 && v.frame == 0)
         b.error_at(r, "Icoor", Diag::InconsistentValues,
@@ -284,14 +280,14 @@ void build_imposed_final_geometries(ModelBuilder& b) {
         if (g.ascale_x != 1.0)
           b.warning_at(
               r, "Ascale", Diag::InconsistentValues,
-              "Ascale = " + num(g.ascale_x) +
+              "Ascale = " + number_text(g.ascale_x) +
                   ": the function is evaluated at t * Ascale, as Radioss does for /IMPDISP/FGEO (where "
                   "/IMPDISP evaluates it at t / Ascale_x)");
         g.t_start = r.get_real("Tstart");
         g.t_stop = real_or(r, "Tstop", model::kNever);
         if (r.get_real("Tstop") != 0 && g.t_stop <= g.t_start)
           b.error_at(r, "Tstop", Diag::InconsistentValues,
-                     "Tstop = " + num(g.t_stop) + " is not after Tstart = " + num(g.t_start) +
+                     "Tstop = " + number_text(g.t_stop) + " is not after Tstart = " + number_text(g.t_start) +
                          ": the motion would never be imposed; need Tstop > Tstart (0 = never stop)");
         const auto& t = r.records;
         const int cn = t.column("node_IDN"), cx = t.column("Xn"), cy = t.column("Yn"), cz = t.column("Zn");
@@ -467,7 +463,7 @@ bool wall_normal(ModelBuilder& b, const KeywordRecord& r, model::RigidWall& w, d
   b.error_at(
       r, "XM1", Diag::InconsistentValues,
       "M1 = " + point_text(w.m1) + " and M = " + point_text(w.m) +
-          (w.node != kNone ? " (the wall node)" : "") + " coincide (|M1 - M| = " + num(len) +
+          (w.node != kNone ? " (the wall node)" : "") + " coincide (|M1 - M| = " + number_text(len) +
           "): the wall normal (M1 - M)/|M1 - M| is undefined; M1 must be a distinct point on the side the "
           "wall acts on");
   return false;
@@ -485,7 +481,7 @@ bool parallelogram_normal(ModelBuilder& b, const KeywordRecord& r, model::RigidW
   b.error_at(r, "XM2", Diag::InconsistentValues,
              "M = " + point_text(w.m) + (w.node != kNone ? " (the wall node)" : "") +
                  ", M1 = " + point_text(w.m1) + " and M2 = " + point_text(w.m2) +
-                 " are aligned (|(M1 - M) x (M2 - M)| = " + num(area) +
+                 " are aligned (|(M1 - M) x (M2 - M)| = " + number_text(area) +
                  "): the parallelogram has no area and no normal; M1 and M2 must be the corners next to M");
   return false;
 }
@@ -515,7 +511,7 @@ model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double
   if (w.distance < 0)
     b.error_at(
         r, "d", Diag::ValueOutOfRange,
-        "d = " + num(w.distance) +
+        "d = " + number_text(w.distance) +
             " is negative; it is the search distance on the positive side of the wall; accepted: 0 (no "
             "search) or > 0");
   w.friction = r.get_real("fric");
@@ -532,7 +528,8 @@ model::RigidWall make_rigid_wall(ModelBuilder& b, const KeywordRecord& r, double
   if (defined && w.secondary.empty())
     b.warning_at(
         r, "grnd_ID1", Diag::EmptyGroup,
-        "the rigid wall has no secondary node (grnd_ID1, plus the nodes within d = " + num(w.distance) +
+        "the rigid wall has no secondary node (grnd_ID1, plus the nodes within d = " +
+            number_text(w.distance) +
             " on the positive side, minus grnd_ID2, is empty): it acts on nothing; give a grnd_ID1 group or "
             "a search distance d > 0");
   return w;
@@ -553,13 +550,13 @@ void check_sensor_body(ModelBuilder& b, const KeywordRecord& r, const model::Rig
   if (sensor.t_stop < model::kNever)
     b.error_at(r, "sens_ID", Diag::PhysicsNotImplemented,
                "sens_ID = " + std::to_string(rb.sensor) + ": /SENSOR/TIME/" + std::to_string(rb.sensor) +
-                   " switches off again at Tstop = " + num(sensor.t_stop) +
+                   " switches off again at Tstop = " + number_text(sensor.t_stop) +
                    ", when Radioss forms the released rigid body again from the current positions and "
                    "velocities; radx does not re-form a rigid body: use a sensor without Tstop (the body is "
                    "then released once, for the rest of the run)");
   std::string unused;
   auto add = [&](const std::string& what) { unused += (unused.empty() ? "" : ", ") + what; };
-  if (rb.mass != 0) add("Mass = " + num(rb.mass));
+  if (rb.mass != 0) add("Mass = " + number_text(rb.mass));
   if (std::any_of(rb.inertia.begin(), rb.inertia.end(), [](double j) { return j != 0; })) add("Jxx..Jxz");
   if (rb.skew != 0) add("skew_ID = " + std::to_string(rb.skew));
   if (rb.icog == 3 || rb.icog == 4) add("ICoG = " + std::to_string(rb.icog));
@@ -931,7 +928,7 @@ void ModelBuilder::build_sensors() {
       s.t_stop = t_stop;
       if (t_stop <= s.t_delay)
         error_at(r, "Tstop", Diag::InconsistentValues,
-                 "Tstop = " + num(t_stop) + " is not after Tdelay = " + num(s.t_delay) +
+                 "Tstop = " + number_text(t_stop) + " is not after Tdelay = " + number_text(s.t_delay) +
                      ": the sensor would switch off as it switches on; need Tstop > Tdelay (0 = never)");
     }
     return s;

@@ -17,12 +17,6 @@ namespace radx::detail {
 
 using model::kNone;
 
-namespace {
-std::string num(double v) {
-  return number_text(v);
-}
-}  // namespace
-
 // One law: the fields of /PROP/SPRING (suffix "") or of one degree of freedom of /PROP/SPR_GENE (suffix
 // "1".."6": K1, fct_ID11, delta_min1, ...), which /PROP/SPR_BEAM shares. `type8` (TYPE8 and TYPE13): a
 // stiffness of 0 is a free direction, not an error.
@@ -40,7 +34,7 @@ void ModelBuilder::read_spring_law(const KeywordRecord& r, model::SpringLaw& s, 
   if (!curve && a != 0 && a != 1)
     warning_at(
         r, f("A"), Diag::InconsistentValues,
-        f("A") + " = " + num(a) + " amplifies the force of " + f("fct_ID1") +
+        f("A") + " = " + number_text(a) + " amplifies the force of " + f("fct_ID1") +
             ", which the property does not give: the linear force K dx is not amplified (A is taken as "
             "1, as Radioss does)");
   auto one_if_zero = [&](const std::string& field) {
@@ -86,7 +80,7 @@ void ModelBuilder::read_spring_law(const KeywordRecord& r, model::SpringLaw& s, 
   if (s.stiffness < 0)
     error_at(
         r, f("K"), Diag::ValueOutOfRange,
-        "stiffness " + f("K") + " = " + num(s.stiffness) +
+        "stiffness " + f("K") + " = " + number_text(s.stiffness) +
             " is negative; K must be > 0 (the linear stiffness, or with fct_ID1 the stiffness of the time "
             "step)");
   else if (!type8 && s.stiffness == 0 && s.damping <= 0 && r.get_int(f("fct_ID4")) == 0)
@@ -101,14 +95,14 @@ void ModelBuilder::read_spring_law(const KeywordRecord& r, model::SpringLaw& s, 
                  "largest slope A df/dx");
   if (s.damping < 0)
     error_at(r, f("C"), Diag::ValueOutOfRange,
-             "damping " + f("C") + " = " + num(s.damping) + " is negative; C must be >= 0");
+             "damping " + f("C") + " = " + number_text(s.damping) + " is negative; C must be >= 0");
   if (s.delta_min > 0)
     error_at(r, f("delta_min"), Diag::ValueOutOfRange,
-             f("delta_min") + " = " + num(dmin) +
+             f("delta_min") + " = " + number_text(dmin) +
                  " is positive; the failure elongation in compression must be < 0 (0 = none)");
   if (s.delta_max < 0)
     error_at(r, f("delta_max"), Diag::ValueOutOfRange,
-             f("delta_max") + " = " + num(dmax) +
+             f("delta_max") + " = " + number_text(dmax) +
                  " is negative; the failure elongation in tension must be > 0 (0 = none)");
 }
 
@@ -133,7 +127,7 @@ void ModelBuilder::read_spring_property(const KeywordRecord& r, model::Property&
       rotation_moves = rotation_moves || s.law(d).stiffness > 0 || s.law(d).damping > 0;
     if (s.inertia < 0 || (rotation_moves && !(s.inertia > 1e-15)))
       error_at(r, "Inertia", Diag::ValueOutOfRange,
-               "spring inertia = " + num(s.inertia) + " is not positive and " +
+               "spring inertia = " + number_text(s.inertia) + " is not positive and " +
                    (type13 ? "a shear or rotation (K2..K6, C2..C6)" : "a rotation (K4..K6, C4..C6)") +
                    " has stiffness or damping; give Inertia > 0 (half goes to each node; it sets the "
                    "rotational time step sqrt(I/K))");
@@ -141,7 +135,7 @@ void ModelBuilder::read_spring_property(const KeywordRecord& r, model::Property&
   // A spring without mass has no step and moves its nodes without inertia (Radioss error 229 below 1e-15).
   if (!(s.mass > 1e-15))
     error_at(r, "M", Diag::ValueOutOfRange,
-             "spring mass M = " + num(s.mass) +
+             "spring mass M = " + number_text(s.mass) +
                  " is not positive; a spring needs a mass M > 0 (half goes to "
                  "each node; it sets the spring's time step sqrt(M/K))");
 }

@@ -38,10 +38,6 @@ namespace radx::detail {
 
 namespace {
 
-std::string num(double v) {
-  return number_text(v);
-}
-
 std::string ishell_name(int v) {
   switch (v) {
     case 1: return "Belytschko-Tsay with viscous and elastic hourglass";
@@ -337,7 +333,7 @@ void ModelBuilder::check_shell_only_laws() {
         if (mat.fail_tab.n != 1.0)
           error_at(
               rec, "n", Diag::PhysicsNotImplemented,
-              "n = " + num(mat.fail_tab.n) + " on part " + std::to_string(part.id) +
+              "n = " + number_text(mat.fail_tab.n) + " on part " + std::to_string(part.id) +
                   " (bricks or tetrahedra): OpenRadioss's solids take n D^(1 - 1/n) with the card's D; radx "
                   "implements /FAIL/TAB on solids with n = 1 only");
         if (mat.fail_tab.size_function_id != 0)

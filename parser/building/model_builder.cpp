@@ -18,12 +18,6 @@ namespace detail {
 
 using model::kNone;
 
-namespace {
-std::string num(double v) {
-  return number_text(v);
-}
-}  // namespace
-
 Where ModelBuilder::at_field(const KeywordRecord& r, std::string_view field) const {
   const FieldValue* f = r.find(field);
   if (f && f->column > 0) return at(f->pos, f->column);
@@ -183,11 +177,15 @@ void warn_implausible_wave_speed(ModelBuilder& b, const KeywordRecord& r, const 
   if (!slow && !fast) return;
   const std::string speed =
       b.deck_.units_named
-          ? num(c * fastest) + " m/s (E = " + num(mat.young) + ", RHO_I = " + num(mat.rho) +
-                " in the deck's work units " + w.mass_name + " " + w.length_name + " " + w.time_name + ")"
-          : num(c) + " length per time unit (E = " + num(mat.young) + ", RHO_I = " + num(mat.rho) +
+          ? number_text(c * fastest) + " m/s (E = " + number_text(mat.young) +
+                ", RHO_I = " + number_text(mat.rho) + " in the deck's work units " + w.mass_name + " " +
+                w.length_name + " " + w.time_name + ")"
+          : number_text(c) + " length per time unit (E = " + number_text(mat.young) +
+                ", RHO_I = " + number_text(mat.rho) +
                 "; the deck names no units, so radx takes the most plausible of the usual systems: " +
-                (slow ? num(c * fastest) + " m/s if in cm/us" : num(c * slowest) + " m/s if in mm/s") + ")";
+                (slow ? number_text(c * fastest) + " m/s if in cm/us"
+                      : number_text(c * slowest) + " m/s if in mm/s") +
+                ")";
   b.warning_at(r, "E", Diag::ImplausibleMaterial,
                "the wave speed sqrt(E/RHO_I) = " + speed + " is " +
                    (fast ? "above the speed of light (3.0e8 m/s)" : "below 1 m/s") +
@@ -201,12 +199,13 @@ void read_elastic_constants(ModelBuilder& b, const KeywordRecord& r, model::Mate
   mat.young = r.get_real("E");
   mat.poisson = r.get_real("nu");
   if (mat.rho < 0 && r.given("RHO_I"))  // 0 is reported by the field's rule (a value is required)
-    b.error_at(r, "RHO_I", Diag::ValueOutOfRange, "density RHO_I = " + num(mat.rho) + " must be > 0");
+    b.error_at(r, "RHO_I", Diag::ValueOutOfRange, "density RHO_I = " + number_text(mat.rho) + " must be > 0");
   if (mat.young < 0)
-    b.error_at(r, "E", Diag::ValueOutOfRange, "Young's modulus E = " + num(mat.young) + " must be > 0");
+    b.error_at(r, "E", Diag::ValueOutOfRange,
+               "Young's modulus E = " + number_text(mat.young) + " must be > 0");
   if (mat.poisson < 0 || mat.poisson >= 0.5) {
     b.error_at(r, "nu", Diag::BadPoisson,
-               "Poisson's ratio nu = " + num(mat.poisson) +
+               "Poisson's ratio nu = " + number_text(mat.poisson) +
                    " is outside [0, 0.5): the bulk modulus E/3(1-2nu) would be infinite or negative (Radioss "
                    "turns "
                    "exactly 0.5 into 0.499 silently; radx asks for the value you mean, e.g. 0.499)");
@@ -228,7 +227,8 @@ void johnson_cook_from_uts(ModelBuilder& b, const KeywordRecord& r, model::Mater
   if (sy <= 0 || mat.uts <= 0 || mat.e_uts <= 0 || rm <= sy) {
     b.error_at(r, "SIG_Y", Diag::InconsistentValues,
                "Iflag = 1 needs SIG_Y > 0, UTS > 0, EUTS > 0 and UTS(1+EUTS) > SIG_Y; got SIG_Y = " +
-                   num(sy) + ", UTS = " + num(mat.uts) + ", EUTS = " + num(mat.e_uts));
+                   number_text(sy) + ", UTS = " + number_text(mat.uts) +
+                   ", EUTS = " + number_text(mat.e_uts));
     return;
   }
   mat.a = sy;
@@ -237,8 +237,9 @@ void johnson_cook_from_uts(ModelBuilder& b, const KeywordRecord& r, model::Mater
   if (mat.n > 1.0) {
     mat.n = 1.0;
     mat.b = (rm - sy) / (ag - rm / mat.young - sy / mat.young);
-    b.warning_at(r, "SIG_Y", Diag::DefaultApplied,
-                 "Iflag = 1 gives a hardening exponent above 1; n = 1 is used with b = " + num(mat.b));
+    b.warning_at(
+        r, "SIG_Y", Diag::DefaultApplied,
+        "Iflag = 1 gives a hardening exponent above 1; n = 1 is used with b = " + number_text(mat.b));
   }
 }
 
@@ -261,13 +262,13 @@ void read_johnson_cook(ModelBuilder& b, const KeywordRecord& r, model::Material&
     mat.n = r.get_real("n");  // <= 1: the field's rule (keywords_starter.cpp)
     if (mat.n == 0) mat.n = 1.0;
     if (mat.a <= 0)
-      b.error_at(r, "a", Diag::ValueOutOfRange, "yield stress a = " + num(mat.a) + " must be > 0");
+      b.error_at(r, "a", Diag::ValueOutOfRange, "yield stress a = " + number_text(mat.a) + " must be > 0");
   }
   mat.c = r.get_real("c");
   mat.eps_dot_0 = r.get_real("EPS_DOT_0");
   if (mat.c != 0 && mat.eps_dot_0 <= 0) {
     b.error_at(r, "EPS_DOT_0", Diag::RequiredValueMissing,
-               "strain-rate coefficient c = " + num(mat.c) +
+               "strain-rate coefficient c = " + number_text(mat.c) +
                    " needs a reference strain rate EPS_DOT_0 > 0 (it is blank or 0)");
   }
   if (mat.c == 0) mat.eps_dot_0 = 1.0;
@@ -338,9 +339,9 @@ void ModelBuilder::read_isotropic_elastic(const KeywordRecord& r, model::Materia
   mat.young = r.get_real(young_field);
   mat.poisson = r.get_real("nu");
   if (mat.poisson < 0 || mat.poisson >= 0.5)
-    error_at(
-        r, "nu", Diag::BadPoisson,
-        "Poisson's ratio nu = " + num(mat.poisson) + " is outside [0, 0.5): " + std::string(nu_consequence));
+    error_at(r, "nu", Diag::BadPoisson,
+             "Poisson's ratio nu = " + number_text(mat.poisson) +
+                 " is outside [0, 0.5): " + std::string(nu_consequence));
   mat.shear = mat.young / (2.0 * (1.0 + mat.poisson));
   mat.bulk = mat.poisson < 0.5 ? mat.young / (3.0 * (1.0 - 2.0 * mat.poisson)) : 0.0;
 }
@@ -368,12 +369,13 @@ void ModelBuilder::read_plas_tab(const KeywordRecord& r, model::Material& mat) {
                    std::to_string(tab.function_id.back()) + "; each curve needs the id of a /FUNCT");
     if (tab.scale.back() < 0)
       error_at(r, fs, Diag::ValueOutOfRange,
-               fs + " = " + num(tab.scale.back()) + " is negative: a yield curve's scale factor must be > 0");
+               fs + " = " + number_text(tab.scale.back()) +
+                   " is negative: a yield curve's scale factor must be > 0");
     if (i > 0 && !(tab.rate[static_cast<std::size_t>(i)] > tab.rate[static_cast<std::size_t>(i - 1)]))
       error_at(r, rate, Diag::InconsistentValues,
                "strain rates must be strictly increasing: Eps_dot" + std::to_string(i) + " = " +
-                   num(tab.rate[static_cast<std::size_t>(i - 1)]) + ", " + rate + " = " +
-                   num(tab.rate[static_cast<std::size_t>(i)]));
+                   number_text(tab.rate[static_cast<std::size_t>(i - 1)]) + ", " + rate + " = " +
+                   number_text(tab.rate[static_cast<std::size_t>(i)]));
   }
   if (n == 1) {
     // A single (static) curve: no rate effect, no filter (OpenRadioss sets them so).
@@ -398,8 +400,8 @@ void ModelBuilder::read_plas_brit(const KeywordRecord& r, model::Material& mat) 
   mat.eps_dot_0 = r.get_real("EPS_DOT_0");
   if (mat.c != 0 && mat.eps_dot_0 <= 0)
     error_at(r, "EPS_DOT_0", Diag::RequiredValueMissing,
-             "strain-rate coefficient c = " + num(mat.c) +
-                 " needs a reference strain rate EPS_DOT_0 > 0 (it is " + num(mat.eps_dot_0) + ")");
+             "strain-rate coefficient c = " + number_text(mat.c) +
+                 " needs a reference strain rate EPS_DOT_0 > 0 (it is " + number_text(mat.eps_dot_0) + ")");
   if (mat.c == 0) mat.eps_dot_0 = 1.0;
   mat.icc = static_cast<int>(r.get_int("ICC"));
   mat.fsmooth = static_cast<int>(r.get_int("Fsmooth"));
@@ -417,7 +419,7 @@ void ModelBuilder::read_plas_brit(const KeywordRecord& r, model::Material& mat) 
   // The damage is (eps_1 - EPS_t1) / (EPS_m1 - EPS_t1): it needs EPS_m1 above EPS_t1 (hm_read_mat27.F, 208).
   if (!(b.eps_m1 > b.eps_t1))
     error_at(r, "EPS_m1", Diag::InconsistentValues,
-             "EPS_m1 = " + num(b.eps_m1) + " must be above EPS_t1 = " + num(b.eps_t1) +
+             "EPS_m1 = " + number_text(b.eps_m1) + " must be above EPS_t1 = " + number_text(b.eps_t1) +
                  ": the damage grows from 0 at EPS_t1 to 1 at EPS_m1 (0 in both leaves the crack off)");
 }
 
@@ -491,9 +493,9 @@ void ModelBuilder::build_failure_models() {
     f.ifail_sh = static_cast<int>(r.get_int("Ifail_sh"));
     f.ifail_so = static_cast<int>(r.get_int("Ifail_so"));
     if (f.d5 != 0)
-      warning_at(
-          r, "D5", Diag::DefaultApplied,
-          "D5 = " + num(f.d5) + " multiplies the temperature term T*, which is 0 in radx (no heating)");
+      warning_at(r, "D5", Diag::DefaultApplied,
+                 "D5 = " + number_text(f.d5) +
+                     " multiplies the temperature term T*, which is 0 in radx (no heating)");
     // eps_f at triaxiality 1 (OpenRadioss checks this too): a criterion that is never positive fails at once.
     if (f.d1 + f.d2 * std::exp(f.d3) <= 0 && f.eps_f_min <= 0)
       warning_at(r, "D1", Diag::ImplausibleMaterial,
@@ -521,7 +523,7 @@ void ModelBuilder::build_fail_tab() {
     if (f.p_thickfail < 0)
       error_at(
           r, "P_thickfail", Diag::PhysicsNotImplemented,
-          "P_thickfail = " + num(f.p_thickfail) +
+          "P_thickfail = " + number_text(f.p_thickfail) +
               " < 0 (a fraction of failed points) is not implemented by radx: give the failed fraction of "
               "the thickness, 0 to 1");
     f.dcrit = r.get_real("Dcrit");
@@ -537,7 +539,8 @@ void ModelBuilder::build_fail_tab() {
       f.rate.push_back(r.get_real("Epsdot" + k));
       if (i > 1 && !(f.rate[static_cast<std::size_t>(i - 1)] > f.rate[static_cast<std::size_t>(i - 2)]))
         error_at(r, "Epsdot" + k, Diag::InconsistentValues,
-                 "Epsdot" + k + " = " + num(f.rate.back()) + " is not above Epsdot" + std::to_string(i - 1) +
+                 "Epsdot" + k + " = " + number_text(f.rate.back()) + " is not above Epsdot" +
+                     std::to_string(i - 1) +
                      ": the strain rates of the failure-strain functions must increase");
     }
     f.size_function_id = r.get_int("fct_IDel");
@@ -637,7 +640,7 @@ void ModelBuilder::build_properties() {
       s.thickness = r.get_real("Thick");
       if (s.thickness < 0)
         error_at(r, "Thick", Diag::NonPositiveThickness,
-                 "shell thickness Thick = " + num(s.thickness) + " is negative; it must be > 0");
+                 "shell thickness Thick = " + number_text(s.thickness) + " is negative; it must be > 0");
       s.ashear = r.get_real("Ashear");
       if (s.ashear == 0) s.ashear = 5.0 / 6.0;
     } else {
@@ -716,9 +719,9 @@ void ModelBuilder::build_subsets_and_parts() {
     p.subset = ref(subset_ids_, *r, "subset_ID", "subset", "/SUBSET", true);
     p.contact_thickness = r->get_real("Thick");
     if (p.contact_thickness < 0)
-      error_at(
-          *r, "Thick", Diag::NonPositiveThickness,
-          "/PART contact thickness " + num(p.contact_thickness) + " is negative; it must be >= 0 (0 = none)");
+      error_at(*r, "Thick", Diag::NonPositiveThickness,
+               "/PART contact thickness " + number_text(p.contact_thickness) +
+                   " is negative; it must be >= 0 (0 = none)");
     const auto dense = static_cast<std::int32_t>(m_.parts.size());
     if (register_id(part_ids_, p.id, dense, *r, "part", first)) {
       if (p.subset != kNone) m_.subsets[p.subset].parts.push_back(dense);
@@ -813,7 +816,7 @@ void check_brick_shape(ModelBuilder& b, const model::ElementBlock& blk, std::siz
   if (!(v > 0)) {
     b.diags_.error(Diag::NonPositiveVolume, b.at(pos, 1), ab,
                    "brick " + std::to_string(eid) + " has " + (v == 0 ? "zero" : "negative") + " volume (" +
-                       num(v) + "): " +
+                       number_text(v) + "): " +
                        (v < 0 ? "its nodes n1-n4 and n5-n8 are numbered so that the element is inverted; "
                                 "n1-n4 must turn counter-clockwise seen from the n5-n8 face"
                               : "its nodes are flat or collapsed"));
@@ -827,7 +830,7 @@ void check_brick_shape(ModelBuilder& b, const model::ElementBlock& blk, std::siz
             std::to_string(corner.node + 1) +
             ") is turned inside out (its edges there span a negative volume: the faces meeting there "
             "fold through each other or the brick is re-entrant), though its volume (" +
-            num(v) +
+            number_text(v) +
             ") is positive; in a valid brick every corner's three edges turn the same "
             "way as n1-n2, n1-n4, n1-n5");
   }
@@ -868,7 +871,7 @@ void check_shell_shape(ModelBuilder& b, const model::ElementBlock& blk, std::siz
   const double th = blk.thickness.back();
   if (th < 0) {
     b.diags_.error(Diag::NonPositiveThickness, b.at(pos, thick_column), ab,
-                   "element thickness " + num(th) +
+                   "element thickness " + number_text(th) +
                        " is negative; it must be > 0 (or blank to use the "
                        "property thickness)");
   } else if (th == 0 && part != kNone && m.parts[part].property != kNone &&
@@ -1007,14 +1010,14 @@ void ModelBuilder::check_tetra(model::ElementBlock& b, std::size_t base, const S
     for (std::size_t l = 0; l < k; ++l) l_max = std::max(l_max, model::norm(model::sub(X(k), X(l))));
   if (!(std::abs(v) > 1e-10 * l_max * l_max * l_max)) {
     diags_.error(Diag::NonPositiveVolume, at(pos, 1), ab,
-                 "tetrahedron " + std::to_string(eid) + " has zero volume (" + num(v) +
+                 "tetrahedron " + std::to_string(eid) + " has zero volume (" + number_text(v) +
                      "): its 4 nodes lie in one plane; a /TETRA4 needs a positive volume");
     return;
   }
   if (v < 0) {
     std::swap(b.conn[base + 1], b.conn[base + 3]);
     diags_.warning(Diag::RenumberedTetra, at(pos, 1), ab,
-                   "tetrahedron " + std::to_string(eid) + " has negative volume (" + num(v) +
+                   "tetrahedron " + std::to_string(eid) + " has negative volume (" + number_text(v) +
                        ") in the order n1 n2 n3 n4: the right-hand normal of n1 n2 n3 points towards n4; "
                        "its nodes n2 and n4 are swapped, as Radioss does");
   }
