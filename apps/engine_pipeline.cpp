@@ -34,6 +34,7 @@
 #include "parser/reading/deck.hpp"
 #include "parser/reading/diagnostics.hpp"
 #include "solver/engine/explicit_engine.hpp"
+#include "solver/model/run_files.hpp"
 #include "solver/model/stable_step.hpp"
 
 namespace radx::app {
@@ -473,7 +474,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   // Before anything that takes time (reading the deck and the model, setting up): a signal during it stops
   // the run before its first cycle, and the default action (an end without a summary) never meets it.
   const StopSignals stop_signals;
-  const std::string root = run_output_root(opt.engine_deck);
+  const std::string root = model::run_output_root(opt.engine_deck);
   RunLock lock;
   if (!claim_output_folder(opt.out_dir, root, lock, err)) return 1;
   const std::string summary_path = io::summary_json_path(opt.out_dir, root);

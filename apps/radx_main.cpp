@@ -2,7 +2,7 @@
 // beside it or in the same one-file deck) without writing anything; `radx keywords` prints the
 // keyword reference generated from the declarations; `radx th FILE` lists or exports a time history;
 // `radx regress DIR...` runs every deck under the folders given and compares them with their references
-// (apps/regress.hpp).
+// (apps/regress_command.hpp).
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -12,12 +12,13 @@
 
 #include "apps/cli_common.hpp"
 #include "apps/engine_pipeline.hpp"
-#include "apps/regress.hpp"
+#include "apps/regress_command.hpp"
 #include "apps/starter_pipeline.hpp"
 #include "io/hdf5/time_history.hpp"
 #include "io/hdf5/time_history_export.hpp"
 #include "parser/reading/deck.hpp"
 #include "parser/reading/deck_echo.hpp"
+#include "solver/model/run_files.hpp"
 
 namespace {
 
@@ -124,7 +125,7 @@ int run(const std::vector<std::string>& args) {
     std::cout << "radx run: no deck given, running the embedded default deck " << sopt.deck << '\n';
   }
   if (eopt.engine_deck.empty()) {
-    if (radx::is_one_file_deck(sopt.deck)) {
+    if (radx::model::is_one_file_deck(sopt.deck)) {
       eopt.engine_deck = sopt.deck;
     } else {
       const std::filesystem::path p(sopt.deck);

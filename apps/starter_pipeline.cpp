@@ -13,23 +13,19 @@
 #include "contact/type7_prepare.hpp"
 #include "io/hdf5/model_file.hpp"
 #include "io/listing/starter_listing.hpp"
+#include "io/text_file.hpp"
 #include "parser/building/build_run_controls.hpp"
 #include "parser/building/model_builder.hpp"
 #include "parser/building/plausibility.hpp"
 #include "parser/reading/deck.hpp"
 #include "parser/reading/deck_echo.hpp"
 #include "solver/model/masses.hpp"
+#include "solver/model/run_files.hpp"
 #include "solver/model/stable_step.hpp"
 
 namespace radx::app {
 
 namespace fs = std::filesystem;
-
-std::string starter_output_root(const std::string& deck) {
-  std::string stem = fs::path(deck).stem().string();
-  if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, "_0000") == 0) return stem;
-  return stem + "_0000";
-}
 
 namespace {
 
@@ -78,33 +74,6 @@ void check_pe_laws(const Deck& deck, const model::Model& model, Diagnostics& dia
 
 }  // namespace
 
-bool write_text_atomically(const std::string& path, const std::string& text, std::string& error) {
-  const std::string part = path + ".part";
-  {
-    std::ofstream f(part, std::ios::binary | std::ios::trunc);
-    if (!f) {
-      error = "cannot create " + part;
-      return false;
-    }
-    f << text;
-    f.flush();
-    if (!f) {
-      error = "cannot write " + part;
-      std::error_code ec;
-      fs::remove(part, ec);
-      return false;
-    }
-  }
-  std::error_code ec;
-  fs::rename(part, path, ec);
-  if (ec) {
-    error = "cannot rename " + part + " to " + path + ": " + ec.message();
-    fs::remove(part, ec);
-    return false;
-  }
-  return true;
-}
-
 StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ostream& err) {
   const auto t0 = std::chrono::steady_clock::now();
   StarterResult res;
@@ -115,8 +84,8 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
     try {
       std::error_code ec;
       fs::create_directories(opt.out_dir, ec);
-      lock = RunLock(opt.out_dir, run_output_root(opt.deck));
-      remove_earlier_engine_outputs(opt.out_dir, run_output_root(opt.deck));
+      lock = RunLock(opt.out_dir, model::run_output_root(opt.deck));
+      remove_earlier_engine_outputs(opt.out_dir, model::run_output_root(opt.deck));
     } catch (const std::exception& e) {
       err << "radx-starter: error: " << e.what() << '\n';
       res.errors = 1;
@@ -168,7 +137,7 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
   }
   // The end time lives in the engine deck: read it when it is there, also when only the starter runs, so
   // that an absurd one is caught before the run starts; its own problems are reported only on request.
-  const std::string engine = is_one_file_deck(opt.deck) ? opt.deck : engine_deck_beside(opt.deck);
+  const std::string engine = model::is_one_file_deck(opt.deck) ? opt.deck : engine_deck_beside(opt.deck);
   if (!engine.empty()) {
     Diagnostics unreported;
     Diagnostics& engine_diags = opt.check_engine_deck ? diags : unreported;
@@ -209,7 +178,7 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
   if (opt.write_outputs && readable) {
     std::error_code ec;
     fs::create_directories(opt.out_dir, ec);
-    const std::string root = (fs::path(opt.out_dir) / starter_output_root(opt.deck)).string();
+    const std::string root = (fs::path(opt.out_dir) / model::starter_output_root(opt.deck)).string();
     res.listing_path = root + ".out";
     const std::string model_path = root + ".hdf";
     std::string error;
@@ -243,7 +212,7 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
     li.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::ostringstream listing;
     io::write_starter_listing(listing, li);
-    if (!write_text_atomically(res.listing_path, listing.str(), error)) {
+    if (!io::write_text_atomically(res.listing_path, listing.str(), error)) {
       err << opt.deck << ": error: " << error << '\n';
       ++res.errors;
     }

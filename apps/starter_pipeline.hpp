@@ -25,13 +25,6 @@ struct StarterResult {
   std::string model_path;
 };
 
-// Writes `text` to `path` through `path`.part and a rename, so a reader never sees half a file and a failure
-// leaves the old file whole. False with `error` set (the .part file removed) on failure.
-bool write_text_atomically(const std::string& path, const std::string& text, std::string& error);
-
-// Output root of a deck: NAME_0000.rad -> NAME_0000; NAME.rad (one-file) -> NAME_0000.
-std::string starter_output_root(const std::string& deck);
-
 StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ostream& err);
 
 }  // namespace radx::app

@@ -32,6 +32,7 @@
 #include <map>
 
 #include "parser/reading/field_parse.hpp"
+#include "solver/model/run_files.hpp"
 
 namespace radx {
 
@@ -608,36 +609,13 @@ model::RunControls build_run_controls(const EngineDeck& deck, Diagnostics& diags
   return Builder(deck, diags).build();
 }
 
-namespace {
-
-// The stem of `path` and, when it ends with _NNNN, the stem without it and the number.
-std::string split_run_suffix(const std::string& path, int& number) {
-  std::string stem = std::filesystem::path(path).stem().string();
-  number = -1;
-  const std::size_t n = stem.size();
-  if (n > 5 && stem[n - 5] == '_' && std::all_of(stem.end() - 4, stem.end(), [](char c) {
-        return std::isdigit(static_cast<unsigned char>(c));
-      })) {
-    number = std::stoi(stem.substr(n - 4));
-    stem.resize(n - 5);
-  }
-  return stem;
-}
-
-}  // namespace
-
-std::string run_output_root(const std::string& engine_deck_path) {
-  int number = 0;
-  return split_run_suffix(engine_deck_path, number);
-}
-
 void check_run_name(const EngineDeck& deck, const model::RunControls& controls,
                     const std::string& engine_deck_path, Diagnostics& diags) {
   const auto runs = deck.of("/RUN");
   if (runs.empty()) return;
   const EngineRecord& r = *runs.front();
   int number = -1;
-  const std::string root = split_run_suffix(engine_deck_path, number);
+  const std::string root = model::split_run_suffix(engine_deck_path, number);
   const std::string file = std::filesystem::path(engine_deck_path).filename().string();
   if (!controls.run_name.empty() && upper(controls.run_name) != upper(root)) {
     diags.warning(Diag::EngineRunNameMismatch, deck.where(r.pos, 1), About{"/RUN"},
@@ -661,7 +639,7 @@ model::RunControls read_run_controls(const std::string& engine_deck_path, Diagno
     // /RUN/name without irun: the Radioss engine takes the run number from the file name.
     const auto runs = read.of("/RUN");
     int file_number = -1;
-    split_run_suffix(engine_deck_path, file_number);
+    model::split_run_suffix(engine_deck_path, file_number);
     if (!runs.empty() && runs.front()->header.size() < 2 && file_number > 0) rc.run_number = file_number;
     check_run_name(read, rc, engine_deck_path, diags);
   }

@@ -44,13 +44,9 @@ std::string accepted_anim_names(std::string_view family);
 // value was wrong, so callers must check diags.has_errors() before running.
 model::RunControls build_run_controls(const EngineDeck& deck, Diagnostics& diags);
 
-// The root name of a run's outputs from the engine deck path: NAME_0001.rad -> NAME (any _NNNN suffix of
-// four digits is removed, so the one-file NAME_0000.rad also gives NAME); a one-file NAME.rad -> NAME.
-std::string run_output_root(const std::string& engine_deck_path);
-
-// Warning RX803 at the /RUN line when the /RUN name differs from run_output_root(engine_deck_path)
-// (compared without case: the engine reader stores keyword fields in upper case), or when the file name
-// carries a run number (NAME_0003.rad) different from the /RUN number.
+// Warning RX803 at the /RUN line when the /RUN name differs from model::run_output_root(engine_deck_path)
+// (solver/model/run_files.hpp; compared without case: the engine reader stores keyword fields in upper
+// case), or when the file name carries a run number (NAME_0003.rad) different from the /RUN number.
 void check_run_name(const EngineDeck& deck, const model::RunControls& controls,
                     const std::string& engine_deck_path, Diagnostics& diags);
 

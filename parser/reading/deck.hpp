@@ -165,7 +165,5 @@ struct ReadOptions {
 Deck read_starter_deck(const std::string& path, Diagnostics& diags, const ReadOptions& opt = {});
 // Reads an engine deck (or the engine part of a one-file deck).
 EngineDeck read_engine_deck(const std::string& path, Diagnostics& diags);
-// True when the file has a line starting with /END/ENGINE (a one-file deck).
-bool is_one_file_deck(const std::string& path);
 
 }  // namespace radx

@@ -9,8 +9,6 @@
 #include <array>
 #include <cmath>
 #include <deque>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <unordered_map>
@@ -1197,19 +1195,6 @@ std::optional<double> unit_factor(std::string_view name, char kind) {
   double v = 0;
   if (parse_real(name, v) == NumberStatus::Ok && v > 0) return v;
   return std::nullopt;
-}
-
-bool is_one_file_deck(const std::string& path) {
-  // Only a regular file can be one: opening a FIFO would block, /dev/zero would never end (the reader
-  // reports such a path as an error).
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return false;
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (upper(trim(line)).rfind("/END/ENGINE", 0) == 0) return true;
-  }
-  return false;
 }
 
 Deck read_starter_deck(const std::string& path, Diagnostics& diags, const ReadOptions& opt) {

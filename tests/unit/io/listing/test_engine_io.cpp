@@ -28,6 +28,7 @@
 #include "io/listing/summary_json.hpp"
 #include "parser/building/build_run_controls.hpp"
 #include "parser/reading/deck.hpp"
+#include "solver/model/run_files.hpp"
 #include "test_util.hpp"
 
 namespace {
@@ -442,11 +443,11 @@ TEST_CASE("/RBODY/ON and /RBODY/OFF pass over ids that name no rigid body, as Ra
 }
 
 TEST_CASE("output root names and the /RUN name check", "[engine-io]") {
-  CHECK(radx::run_output_root("dir/NAME_0001.rad") == "NAME");
-  CHECK(radx::run_output_root("NAME_0000.rad") == "NAME");  // one-file deck named like a starter deck
-  CHECK(radx::run_output_root("/a/b/Name.rad") == "Name");  // one-file deck
-  CHECK(radx::run_output_root("CASE_A_0012.rad") == "CASE_A");
-  CHECK(radx::run_output_root("CASE_12.rad") == "CASE_12");  // not four digits: part of the name
+  CHECK(radx::model::run_output_root("dir/NAME_0001.rad") == "NAME");
+  CHECK(radx::model::run_output_root("NAME_0000.rad") == "NAME");  // one-file deck named like a starter deck
+  CHECK(radx::model::run_output_root("/a/b/Name.rad") == "Name");  // one-file deck
+  CHECK(radx::model::run_output_root("CASE_A_0012.rad") == "CASE_A");
+  CHECK(radx::model::run_output_root("CASE_12.rad") == "CASE_12");  // not four digits: part of the name
 
   radx::test::TempDir dir;
   SECTION("name differs") {
@@ -482,8 +483,8 @@ TEST_CASE("a one-file deck gives the engine part's run controls", "[engine-io]")
   for (const char* name : {"ONE.rad", "ONE_0000.rad"}) {
     DYNAMIC_SECTION(name) {
       const std::string path = dir.write(name, deck);
-      REQUIRE(radx::is_one_file_deck(path));
-      CHECK(radx::run_output_root(path) == "ONE");
+      REQUIRE(radx::model::is_one_file_deck(path));
+      CHECK(radx::model::run_output_root(path) == "ONE");
       Diagnostics diags;
       const auto rc = radx::read_run_controls(path, diags);
       INFO(all_diags(diags));

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "parser/reading/deck.hpp"
+#include "solver/model/run_files.hpp"
 #include "test_util.hpp"
 
 namespace {
@@ -1661,7 +1662,7 @@ TEST_CASE("a one-file deck is read by both readers: engine part, /END/ENGINE, th
       "\n/FUNCT/2\ncurve\n" + Card().at(1, 20, "0.").at(21, 40, "1.").str() + "\n" +
       Card().at(1, 20, "1.").at(21, 40, "2.").str() + "\n/END\n";
   const auto path = dir.write("ONEFILE_0000.rad", text);
-  CHECK(radx::is_one_file_deck(path));
+  CHECK(radx::model::is_one_file_deck(path));
 
   Diagnostics ediags;
   const auto engine = radx::read_engine_deck(path, ediags);

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "parser/reading/deck.hpp"
+#include "solver/model/run_files.hpp"
 #include "test_util.hpp"
 
 using radx::Diag;
@@ -160,7 +161,7 @@ TEST_CASE("a one-file deck splits at /END/ENGINE for both readers", "[lexer]") {
   const std::string text = "/RUN/ONE/1\n0.01\n/PRINT/-10\n/END/ENGINE\n" + radx::test::begin_block(2019) +
                            "/NODE\n" + node_line(1, 0, 0, 0) + "\n/END\n";
   const auto path = dir.write("ONE.rad", text);
-  CHECK(radx::is_one_file_deck(path));
+  CHECK(radx::model::is_one_file_deck(path));
   radx::Diagnostics diags;
   const auto s = radx::read_starter_deck(path, diags);
   const auto e = radx::read_engine_deck(path, diags);

@@ -11,6 +11,7 @@
 
 #include "apps/starter_pipeline.hpp"
 #include "parser/reading/deck.hpp"
+#include "solver/model/run_files.hpp"
 #include "test_util.hpp"
 
 namespace fs = std::filesystem;
@@ -106,7 +107,7 @@ TEST_CASE("every invalid deck gives its diagnostics, exit code 1 and no model fi
       }
       CHECK(res.exit_code == (any_error_expected ? 1 : 0));
       if (any_error_expected) {
-        const auto root = radx::app::starter_output_root(deck.string());
+        const auto root = radx::model::starter_output_root(deck.string());
         CHECK_FALSE(fs::exists(out.path() / (root + ".hdf")));
         CHECK_FALSE(fs::exists(out.path() / (root + ".hdf.part")));
       }

@@ -13,6 +13,7 @@
 
 #include "parser/building/build_run_controls.hpp"
 #include "parser/reading/deck.hpp"
+#include "solver/model/run_files.hpp"
 #include "test_util.hpp"
 
 namespace fs = std::filesystem;
@@ -97,7 +98,7 @@ TEST_CASE("a FIFO or a device as the deck or as an #include is refused without r
     REQUIRE(diags.error_count() == 1);
     CHECK(diags.items()[0].code == Diag::FileNotFound);
     CHECK(diags.items()[0].message.find("regular text files") != std::string::npos);
-    CHECK_FALSE(radx::is_one_file_deck(path));
+    CHECK_FALSE(radx::model::is_one_file_deck(path));
   }
   const std::string deck_path = dir.write(
       "inc_0000.rad", radx::test::begin_block(2026) + "#include pipe_0000.rad\n#include /dev/zero\n/END\n");
