@@ -72,6 +72,135 @@ void check_pe_laws(const Deck& deck, const model::Model& model, Diagnostics& dia
   }
 }
 
+// The first /INTER/TYPE7 or /INTER/LAGDT/TYPE7 record of the deck with id `id`, or null.
+const KeywordRecord* type7_record(const Deck& deck, std::int64_t id) {
+  for (const auto& rec : deck.records)
+    if (rec.id == id && (rec.decl->path == "/INTER/TYPE7" || rec.decl->path == "/INTER/LAGDT/TYPE7"))
+      return &rec;
+  return nullptr;
+}
+
+// A warning per interface with secondary nodes inside the gap at the start, saying what its Inacti does with
+// them. True when the starter moved some (Inacti 3): the masses are then computed again.
+bool warn_initial_penetrations(const Deck& deck, const model::Model& model, const std::string& deck_path,
+                               Diagnostics& diags) {
+  bool moved = false;
+  for (const auto& in : model.interfaces) {
+    if (in.initial_penetrations == 0) continue;
+    moved = moved || in.inacti == 3;
+    std::ostringstream msg;
+    msg << in.initial_penetrations << " secondary node(s) start inside the gap; largest penetration "
+        << in.max_initial_penetration << " at node " << in.max_penetration_node << "; Inacti = " << in.inacti
+        << (in.inacti == 0   ? ": no action, the penalty will push them out (this may inject energy)"
+            : in.inacti == 1 ? ": their stiffness is deactivated"
+            : in.inacti == 2 ? ": the stiffness of the main segments concerned is deactivated"
+            : in.inacti == 3 ? ": the starter moved them out to the gap surface"
+                             : ": their gap starts reduced and grows back as the pair opens");
+    const auto* r = type7_record(deck, in.id);
+    diags.warning(Diag::InitialPenetration, r ? deck.where(r->pos, 1) : Where{deck_path},
+                  About{in.lagdt ? "/INTER/LAGDT/TYPE7" : "/INTER/TYPE7", in.id, in.title}, msg.str());
+  }
+  return moved;
+}
+
+// The model of a readable deck, its interfaces prepared (gaps, stiffnesses, initial penetrations) and the
+// checks that need them, when it built without errors.
+model::Model build_prepared_model(const Deck& deck, const std::string& deck_path, Diagnostics& diags) {
+  model::Model model = build_model(deck, diags);
+  if (diags.has_errors()) return model;
+  contact::prepare_type7_interfaces(model);
+  if (warn_initial_penetrations(deck, model, deck_path, diags)) model::compute_lumped_masses(model);
+  check_pe_laws(deck, model, diags);
+  return model;
+}
+
+// The end time lives in the engine deck: read it when it is there, also when only the starter runs, so that
+// an absurd one is caught before the run starts; its own problems are reported only on request.
+void check_engine_deck_beside(const StarterOptions& opt, bool readable, const model::Model& model,
+                              const model::StepEstimate& step, Diagnostics& diags) {
+  const std::string engine = model::is_one_file_deck(opt.deck) ? opt.deck : engine_deck_beside(opt.deck);
+  if (engine.empty()) return;
+  Diagnostics unreported;
+  Diagnostics& engine_diags = opt.check_engine_deck ? diags : unreported;
+  EngineDeck engine_deck;
+  model::RunControls controls = read_run_controls(engine, engine_diags, &engine_deck);
+  if (readable && opt.check_engine_deck) {
+    std::vector<std::int64_t> body_ids;
+    for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
+    check_rigid_body_switches(engine_deck, body_ids, controls, diags);
+  }
+  check_cycle_count(engine_deck, controls, model, step, diags);
+}
+
+// The summary on standard output: the model's counts, its mass and interfaces, the diagnostics' counts.
+void print_starter_summary(std::ostream& out, const StarterOptions& opt, bool readable,
+                           const model::Model& model, const StarterResult& res) {
+  out << "radx starter: " << opt.deck << '\n';
+  if (readable) {
+    out << "  nodes " << model.nodes.size() << ", shells " << model.shells.size() << ", 3-node shells "
+        << model.shells3.size() << ", bricks " << model.bricks.size()
+        << (model.tetras.size() == 0 ? std::string() : ", tetrahedra " + std::to_string(model.tetras.size()))
+        << ", parts " << model.parts.size() << ", interfaces " << model.interfaces.size() << '\n';
+    out << "  total mass " << std::setprecision(6) << model.total_mass << ' ' << model.units.mass_name
+        << '\n';
+    for (const auto& in : model.interfaces) {
+      out << "  interface " << in.id << (in.lagdt ? " (LAGDT)" : "") << ": " << in.secondary_nodes.size()
+          << " secondary nodes, gap " << in.gap_lo << " to " << in.gap_hi << ", stiffness " << in.stiff_lo
+          << " to " << in.stiff_hi << '\n';
+    }
+  }
+  out << "  " << res.errors << " error(s), " << res.warnings << " warning(s)\n";
+}
+
+// The model file (a deck without errors; an earlier one that no longer matches the deck is removed) and the
+// listing NAME_0000.out.
+void write_starter_outputs(const StarterOptions& opt, const Deck& deck, const model::Model& model,
+                           const Diagnostics& diags, std::chrono::steady_clock::time_point t0,
+                           StarterResult& res, std::ostream& out, std::ostream& err) {
+  std::error_code ec;
+  fs::create_directories(opt.out_dir, ec);
+  const std::string root = (fs::path(opt.out_dir) / model::starter_output_root(opt.deck)).string();
+  res.listing_path = root + ".out";
+  const std::string model_path = root + ".hdf";
+  std::string error;
+  if (!diags.has_errors()) {
+    if (!io::write_model_file(model, model_path, error)) {
+      err << opt.deck << ": error: cannot write the model file: " << error << '\n';
+      ++res.errors;
+    } else {
+      res.model_path = model_path;
+    }
+  } else if (fs::exists(model_path)) {
+    // A model file from an earlier run no longer matches this deck: do not leave it for the engine.
+    fs::remove(model_path, ec);
+    out << "  removed the stale model file " << model_path << " (it does not match the deck any more)\n";
+  }
+  io::StarterListingInput li;
+  li.deck_path = opt.deck;
+  li.program_version = RADX_VERSION " (" RADX_ARCH ")";
+  li.model = &model;
+  for (const auto& in : model.interfaces) {
+    std::vector<std::string> echo;
+    for (const auto& rec : deck.records)
+      if (rec.id == in.id && (rec.decl->path == "/INTER/TYPE7" || rec.decl->path == "/INTER/LAGDT/TYPE7"))
+        echo = echo_keyword(rec);
+    li.interface_echo.push_back(std::move(echo));
+  }
+  for (const auto& d : diags.items()) li.diagnostics.push_back(Diagnostics::format(d));
+  li.errors = res.errors;
+  li.warnings = res.warnings;
+  li.model_file = res.model_path;
+  li.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::ostringstream listing;
+  io::write_starter_listing(listing, li);
+  if (!io::write_text_atomically(res.listing_path, listing.str(), error)) {
+    err << opt.deck << ": error: " << error << '\n';
+    ++res.errors;
+  }
+  out << "  listing " << res.listing_path << '\n';
+  if (!res.model_path.empty()) out << "  model file " << res.model_path << '\n';
+}
+
 }  // namespace
 
 StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ostream& err) {
@@ -97,128 +226,21 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
   ReadOptions read_opt;
   read_opt.allow_substitutions = opt.allow_substitutions;
   const Deck deck = read_starter_deck(opt.deck, diags, read_opt);
-  model::Model model;
   const bool readable = !deck.records.empty();
-  if (readable) {
-    model = build_model(deck, diags);
-    if (!diags.has_errors()) {
-      contact::prepare_type7_interfaces(model);
-      bool moved = false;
-      for (const auto& in : model.interfaces) {
-        if (in.initial_penetrations == 0) continue;
-        moved = moved || in.inacti == 3;
-        std::ostringstream msg;
-        msg << in.initial_penetrations << " secondary node(s) start inside the gap; largest penetration "
-            << in.max_initial_penetration << " at node " << in.max_penetration_node
-            << "; Inacti = " << in.inacti
-            << (in.inacti == 0   ? ": no action, the penalty will push them out (this may inject energy)"
-                : in.inacti == 1 ? ": their stiffness is deactivated"
-                : in.inacti == 2 ? ": the stiffness of the main segments concerned is deactivated"
-                : in.inacti == 3 ? ": the starter moved them out to the gap surface"
-                                 : ": their gap starts reduced and grows back as the pair opens");
-        const auto* r = [&]() -> const KeywordRecord* {
-          for (const auto& rec : deck.records)
-            if (rec.id == in.id &&
-                (rec.decl->path == "/INTER/TYPE7" || rec.decl->path == "/INTER/LAGDT/TYPE7"))
-              return &rec;
-          return nullptr;
-        }();
-        diags.warning(Diag::InitialPenetration, r ? deck.where(r->pos, 1) : Where{opt.deck},
-                      About{in.lagdt ? "/INTER/LAGDT/TYPE7" : "/INTER/TYPE7", in.id, in.title}, msg.str());
-      }
-      if (moved) model::compute_lumped_masses(model);
-      check_pe_laws(deck, model, diags);
-    }
-  }
+  model::Model model;
+  if (readable) model = build_prepared_model(deck, opt.deck, diags);
   model::StepEstimate step;
   if (readable && !diags.has_errors()) {
     step = model::estimate_stable_step(model);
     check_initial_step(deck, model, step, diags);
   }
-  // The end time lives in the engine deck: read it when it is there, also when only the starter runs, so
-  // that an absurd one is caught before the run starts; its own problems are reported only on request.
-  const std::string engine = model::is_one_file_deck(opt.deck) ? opt.deck : engine_deck_beside(opt.deck);
-  if (!engine.empty()) {
-    Diagnostics unreported;
-    Diagnostics& engine_diags = opt.check_engine_deck ? diags : unreported;
-    EngineDeck engine_deck;
-    model::RunControls controls = read_run_controls(engine, engine_diags, &engine_deck);
-    if (readable && opt.check_engine_deck) {
-      std::vector<std::int64_t> body_ids;
-      for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
-      check_rigid_body_switches(engine_deck, body_ids, controls, diags);
-    }
-    check_cycle_count(engine_deck, controls, model, step, diags);
-  }
+  check_engine_deck_beside(opt, readable, model, step, diags);
   diags.sort();
   res.errors = diags.error_count();
   res.warnings = diags.warning_count();
   diags.print(err);
-
-  std::vector<std::string> diag_lines;
-  for (const auto& d : diags.items()) diag_lines.push_back(Diagnostics::format(d));
-
-  // Summary on stdout.
-  out << "radx starter: " << opt.deck << '\n';
-  if (readable) {
-    out << "  nodes " << model.nodes.size() << ", shells " << model.shells.size() << ", 3-node shells "
-        << model.shells3.size() << ", bricks " << model.bricks.size()
-        << (model.tetras.size() == 0 ? std::string() : ", tetrahedra " + std::to_string(model.tetras.size()))
-        << ", parts " << model.parts.size() << ", interfaces " << model.interfaces.size() << '\n';
-    out << "  total mass " << std::setprecision(6) << model.total_mass << ' ' << model.units.mass_name
-        << '\n';
-    for (const auto& in : model.interfaces) {
-      out << "  interface " << in.id << (in.lagdt ? " (LAGDT)" : "") << ": " << in.secondary_nodes.size()
-          << " secondary nodes, gap " << in.gap_lo << " to " << in.gap_hi << ", stiffness " << in.stiff_lo
-          << " to " << in.stiff_hi << '\n';
-    }
-  }
-  out << "  " << res.errors << " error(s), " << res.warnings << " warning(s)\n";
-
-  if (opt.write_outputs && readable) {
-    std::error_code ec;
-    fs::create_directories(opt.out_dir, ec);
-    const std::string root = (fs::path(opt.out_dir) / model::starter_output_root(opt.deck)).string();
-    res.listing_path = root + ".out";
-    const std::string model_path = root + ".hdf";
-    std::string error;
-    if (!diags.has_errors()) {
-      if (!io::write_model_file(model, model_path, error)) {
-        err << opt.deck << ": error: cannot write the model file: " << error << '\n';
-        ++res.errors;
-      } else {
-        res.model_path = model_path;
-      }
-    } else if (fs::exists(model_path)) {
-      // A model file from an earlier run no longer matches this deck: do not leave it for the engine.
-      fs::remove(model_path, ec);
-      out << "  removed the stale model file " << model_path << " (it does not match the deck any more)\n";
-    }
-    io::StarterListingInput li;
-    li.deck_path = opt.deck;
-    li.program_version = RADX_VERSION " (" RADX_ARCH ")";
-    li.model = &model;
-    for (const auto& in : model.interfaces) {
-      std::vector<std::string> echo;
-      for (const auto& rec : deck.records)
-        if (rec.id == in.id && (rec.decl->path == "/INTER/TYPE7" || rec.decl->path == "/INTER/LAGDT/TYPE7"))
-          echo = echo_keyword(rec);
-      li.interface_echo.push_back(std::move(echo));
-    }
-    li.diagnostics = diag_lines;
-    li.errors = res.errors;
-    li.warnings = res.warnings;
-    li.model_file = res.model_path;
-    li.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::ostringstream listing;
-    io::write_starter_listing(listing, li);
-    if (!io::write_text_atomically(res.listing_path, listing.str(), error)) {
-      err << opt.deck << ": error: " << error << '\n';
-      ++res.errors;
-    }
-    out << "  listing " << res.listing_path << '\n';
-    if (!res.model_path.empty()) out << "  model file " << res.model_path << '\n';
-  }
+  print_starter_summary(out, opt, readable, model, res);
+  if (opt.write_outputs && readable) write_starter_outputs(opt, deck, model, diags, t0, res, out, err);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   out << "  starter time " << std::fixed << std::setprecision(3) << secs << " s\n";
   res.exit_code = res.errors > 0 ? 1 : 0;
