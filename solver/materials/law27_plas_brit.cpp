@@ -110,10 +110,10 @@ ShellPointResult law27_shell_point(const MaterialParams& p, int iplas, double ra
                   d1 * gs * ee[4]};
 
   // Plasticity with the rate term of the point (or of the element).
-  const double e_ref = std::max(kTinyRate, p.eps_dot0 * dt1);
+  const double e_ref = std::max(kTinyRate, p.jc.eps_dot0 * dt1);
   const double inc =
       p.brit.point_rate ? std::max({std::abs(e[0]), std::abs(e[1]), 0.5 * std::abs(e[2])}) : rate * dt1;
-  const double rfac = 1.0 + p.c * std::log(std::max(inc, e_ref) / e_ref);
+  const double rfac = 1.0 + p.jc.c * std::log(std::max(inc, e_ref) / e_ref);
   ShellPointResult out;
   double dezz_p = 0;
   out.deps_p = jc_shell_return(p, iplas, rfac, off, sn[0], sn[1], sn[2], eps_p, dezz_p);

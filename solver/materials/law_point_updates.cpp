@@ -61,14 +61,14 @@ struct JcRate {
 JcRate jc_rate_of_factor(const MaterialParams& p, double r) {
   JcRate out;
   out.r = r;
-  out.cap = p.sig_max0 * (p.icc == 1 ? r : 1.0);
+  out.cap = p.jc.sig_max0 * (p.jc.icc == 1 ? r : 1.0);
   return out;
 }
 
 double rate_factor(const MaterialParams& p, double rate) {
   // rate <= rate0: max(rate, rate0)/rate0 = 1 and ln 1 = 0, so R = 1 exactly; c = 0: R = 1 + 0 ln(.) = 1.
-  if (p.c == 0 || rate <= p.eps_dot0) return 1.0;
-  return 1.0 + p.c * std::log(std::max(rate, p.eps_dot0) / p.eps_dot0);
+  if (p.jc.c == 0 || rate <= p.jc.eps_dot0) return 1.0;
+  return 1.0 + p.jc.c * std::log(std::max(rate, p.jc.eps_dot0) / p.jc.eps_dot0);
 }
 
 JcRate jc_rate(const MaterialParams& p, double rate) {
@@ -77,15 +77,16 @@ JcRate jc_rate(const MaterialParams& p, double rate) {
 
 // Flow stress (6.2) for a known rate factor: the one implementation behind jc_flow_stress and the shells.
 inline double jc_flow_stress_at(const MaterialParams& p, double eps_p, const JcRate& jr, double* slope) {
-  double hard = p.a;
+  const JohnsonCookParams& jc = p.jc;
+  double hard = jc.a;
   double h = 0;
-  if (p.n == 1.0) {
-    hard += p.b * eps_p;
-    h = p.b;
+  if (jc.n == 1.0) {
+    hard += jc.b * eps_p;
+    h = jc.b;
   } else if (eps_p > 0) {
-    const double en = std::pow(eps_p, p.n);
-    hard += p.b * en;
-    h = p.n * p.b * en / eps_p;
+    const double en = std::pow(eps_p, jc.n);
+    hard += jc.b * en;
+    h = jc.n * jc.b * en / eps_p;
   }
   double sy = hard * jr.r;
   h *= jr.r;
@@ -130,7 +131,8 @@ double jc_return_core(const MaterialParams& p, int iplas, const JcRate& jr, doub
     const double b = 0.75 * s2 * s2 + 3.0 * sxy * sxy;
     const double svm = std::sqrt(a + b);
     if (svm > sy) {
-      const double h = sy >= jr.cap ? 0.0 : p.n * p.b * jr.r * std::pow(eps_p + kShellSlopeEps, p.n - 1.0);
+      const double h =
+          sy >= jr.cap ? 0.0 : p.jc.n * p.jc.b * jr.r * std::pow(eps_p + kShellSlopeEps, p.jc.n - 1.0);
       const double nu1 = 1.0 / (1.0 - p.nu);
       const double nu2 = 1.0 / (1.0 + p.nu);
       double next = (svm - sy) / (3.0 * p.shear + h);
@@ -260,30 +262,30 @@ MaterialParams make_material_params(const model::Material& m) {
   p.c_solid = p.rho0 > 0 ? std::sqrt((p.bulk + 4.0 * p.shear / 3.0) / p.rho0) : 0.0;
   if (m.law == model::MaterialLaw::JohnsonCook) {
     // 6.1 defaults, applied again here so that a Material built by hand behaves like one from the starter.
-    p.a = m.a;
-    p.b = m.b;
-    p.n = m.n == 0 ? 1.0 : m.n;
-    p.c = m.c;
-    p.eps_dot0 = (m.c == 0 || m.eps_dot_0 <= 0) ? 1.0 : m.eps_dot_0;
-    p.sig_max0 = m.sig_max0 == 0 ? 1e20 : m.sig_max0;
-    p.eps_p_max = m.eps_p_max == 0 ? 1e20 : m.eps_p_max;
-    p.icc = m.icc == 0 ? 1 : m.icc;
-    p.flag_vp = m.flag_vp == 0 ? 2 : m.flag_vp;
+    p.jc.a = m.a;
+    p.jc.b = m.b;
+    p.jc.n = m.n == 0 ? 1.0 : m.n;
+    p.jc.c = m.c;
+    p.jc.eps_dot0 = (m.c == 0 || m.eps_dot_0 <= 0) ? 1.0 : m.eps_dot_0;
+    p.jc.sig_max0 = m.sig_max0 == 0 ? 1e20 : m.sig_max0;
+    p.jc.eps_p_max = m.eps_p_max == 0 ? 1e20 : m.eps_p_max;
+    p.jc.icc = m.icc == 0 ? 1 : m.icc;
+    p.jc.flag_vp = m.flag_vp == 0 ? 2 : m.flag_vp;
     p.f_cut = m.f_cut;
   }
   if (m.law == model::MaterialLaw::PlasTab) {
-    p.eps_p_max = m.eps_p_max == 0 ? 1e20 : m.eps_p_max;
+    p.tab.eps_p_max = m.eps_p_max == 0 ? 1e20 : m.eps_p_max;
     p.f_cut = m.f_cut;
   }
   if (m.law == model::MaterialLaw::PlasBrit) {
     // hm_read_mat27.F's defaults, applied again for a Material built by hand.
-    p.a = m.a == 0 ? 1e20 : m.a;
-    p.b = m.b;
-    p.n = m.n == 0 ? 1.0 : m.n;
-    p.c = m.c;
-    p.eps_dot0 = (m.c == 0 || m.eps_dot_0 <= 0) ? 1.0 : m.eps_dot_0;
-    p.sig_max0 = m.sig_max0 == 0 ? 1e20 : m.sig_max0;
-    p.icc = m.icc == 0 ? 1 : m.icc;
+    p.jc.a = m.a == 0 ? 1e20 : m.a;
+    p.jc.b = m.b;
+    p.jc.n = m.n == 0 ? 1.0 : m.n;
+    p.jc.c = m.c;
+    p.jc.eps_dot0 = (m.c == 0 || m.eps_dot_0 <= 0) ? 1.0 : m.eps_dot_0;
+    p.jc.sig_max0 = m.sig_max0 == 0 ? 1e20 : m.sig_max0;
+    p.jc.icc = m.icc == 0 ? 1 : m.icc;
     p.f_cut = m.f_cut;
     const auto& b = m.brit;
     p.brit.eps_t = b.eps_t1 == 0 ? 1e20 : b.eps_t1;
@@ -398,7 +400,7 @@ MaterialParams make_material_params(const model::Material& m, const std::vector<
     const std::size_t first = curves.size();
     for (std::size_t i = 0; i < f.function.size(); ++i)
       curves.push_back(view(f.function[i], f.scale[i], f.rate[i]));
-    if (p.n_curves > 0) p.curves = curves.data();
+    if (p.tab.n_curves > 0) p.tab.curves = curves.data();
     p.fail.rows = curves.data() + first;
     p.fail.n_rows = static_cast<int>(f.function.size());
     p.fail.has_size = f.size_function >= 0;
@@ -414,7 +416,7 @@ double jc_flow_stress(const MaterialParams& p, double eps_p, double rate, double
 double jc_rate_factor(const MaterialParams& p, double rate) {
   switch (p.law) {
     case model::MaterialLaw::JohnsonCook: return rate_factor(p, rate);
-    case model::MaterialLaw::PlasTab: return p.n_curves > 1 ? rate : 1.0;
+    case model::MaterialLaw::PlasTab: return p.tab.n_curves > 1 ? rate : 1.0;
     case model::MaterialLaw::Elastic:
     case model::MaterialLaw::Void:
     case model::MaterialLaw::Rigid:
@@ -428,8 +430,8 @@ double jc_rate_factor(const MaterialParams& p, double rate) {
 double shell_rate_threshold(const MaterialParams& p) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   switch (p.law) {
-    case model::MaterialLaw::JohnsonCook: return p.c != 0 ? p.eps_dot0 : kInf;
-    case model::MaterialLaw::PlasTab: return p.n_curves > 1 ? -kInf : kInf;
+    case model::MaterialLaw::JohnsonCook: return p.jc.c != 0 ? p.jc.eps_dot0 : kInf;
+    case model::MaterialLaw::PlasTab: return p.tab.n_curves > 1 ? -kInf : kInf;
     case model::MaterialLaw::Elastic:
     case model::MaterialLaw::PlasBrit:
     case model::MaterialLaw::Void:
@@ -465,7 +467,7 @@ double solid_point_update(const MaterialParams& p, double rate, const double de[
   if (p.law == model::MaterialLaw::JohnsonCook) {
     double h = 0;
     double sy = jc_flow_stress(p, eps_p, rate, &h);
-    if (eps_p > p.eps_p_max) {  // failed point: no deviatoric strength any more
+    if (eps_p > p.jc.eps_p_max) {  // failed point: no deviatoric strength any more
       sy = 0;
       h = 0;
     }
@@ -494,7 +496,7 @@ double solid_yield_stress(const MaterialParams& p, double eps_p, double rate) {
   switch (p.law) {
     case model::MaterialLaw::JohnsonCook:
       // A failed point (eps_p beyond EPS_p_max) has no deviatoric strength left (solid_point_update).
-      return eps_p > p.eps_p_max ? 0.0 : jc_flow_stress(p, eps_p, rate);
+      return eps_p > p.jc.eps_p_max ? 0.0 : jc_flow_stress(p, eps_p, rate);
     case model::MaterialLaw::PlasTab: return tab_flow_stress(p, eps_p, rate);
     default: return 1e30;  // LAW1: elastic
   }
