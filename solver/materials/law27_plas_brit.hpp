@@ -2,7 +2,11 @@
 // the layout of its point state (law27_plas_brit.cpp).
 #pragma once
 
+#include "solver/model/model.hpp"
+
 namespace radx::solver {
+
+struct MaterialParams;
 
 // The crack's constants: direction 1 only (OpenRadioss m27crak.F opens no other). The flow stress is law 2's
 // (MaterialParams::jc).
@@ -17,5 +21,9 @@ struct BritParams {
 // frame; (1, 0) until the crack opens), the damage of direction 1 and its crack strain.
 inline constexpr int kBritVars = 7;
 enum BritVar : int { kBritExx = 0, kBritEyy, kBritGxy, kBritCos, kBritSin, kBritDamage, kBritCrack };
+
+// Fills p.jc (law 27's flow stress, with hm_read_mat27.F's defaults: a 0 means 1e20, elastic-brittle), p.brit
+// and the rate filter.
+void plas_brit_params(const model::Material& m, MaterialParams& p);
 
 }  // namespace radx::solver

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <numbers>
 
+#include "solver/model/model.hpp"
+
 namespace radx::solver {
 
 struct MaterialParams;
@@ -25,6 +27,14 @@ struct JohnsonCookParams {
 // `slope` (if not null) receives d sigma_y / d eps_p (0 when capped). Temperature term = 1 (radx has no
 // adiabatic heating).
 double jc_flow_stress(const MaterialParams& p, double eps_p, double rate, double* slope = nullptr);
+
+// The Johnson-Cook rate factor R = 1 + c ln(max(rate, rate0)/rate0) of 6.2, exactly 1 (without a logarithm)
+// when c = 0 or rate <= rate0.
+double johnson_cook_rate_factor(const MaterialParams& p, double rate);
+
+// Fills p.jc and the rate filter of a law-2 material, with the defaults of 6.1 applied again so that a
+// Material built by hand behaves like one from the starter.
+void johnson_cook_params(const model::Material& m, MaterialParams& p);
 
 // A lower bound of law 2's jc_rate_factor, R_lo <= R = 1 + c ln(max(rate, rate0)/rate0), without a
 // logarithm and without a branch (the kernels' vectorised loops take it for every element and the logarithm

@@ -1,7 +1,7 @@
 // LAW36 (/MAT/PLAS_TAB): isotropic elasto-plasticity with tabulated yield curves sigma_y(eps_p), one curve
 // per strain rate, for shells (plane stress) and solids. The points call it through material_point.hpp
 // (shell_point_update_r, solid_point_update), which dispatch on the law; the elastic trial, the thickness
-// strain and the pressure are those of LAW2 (law_point_updates.cpp).
+// strain and the pressure are those of LAW1 and LAW2 (material_point.cpp).
 //
 // Sources: docs/elements-openradioss.md 6.6 (LAW36), docs/theory/elements.md 1.3 and 6.2 (the strain rates);
 // read, not translated: OpenRadioss starter/source/materials/mat/mat036/hm_read_mat36.F (cards,

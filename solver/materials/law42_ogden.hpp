@@ -1,6 +1,8 @@
 // /MAT/OGDEN (law 42): Ogden's hyperelastic rubber, its parameters and its point (law42_ogden.cpp).
 #pragma once
 
+#include "solver/model/model.hpp"
+
 namespace radx::solver {
 
 struct MaterialParams;
@@ -19,6 +21,9 @@ struct OgdenParams {
   bool stiffen = false;  // K > 24 G
   double nu1 = 0;
 };
+
+// Fills p.ogden and the moduli the starter derived (G0, K and the solid sound speed).
+void ogden_params(const model::Material& m, MaterialParams& p);
 
 // Law 42 at one point: the Cauchy stress sig (xx yy zz xy yz zx, in the axes F maps into) from the total
 // deformation gradient F[a][c] = dx_a / dX_c. Returns the modulus M = K' + 4/3 G_t of the point's wave speed

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "solver/model/foam_table.hpp"
+#include "solver/model/model.hpp"
 
 namespace radx::solver {
 
@@ -39,6 +41,14 @@ enum FoamVar : int {
   kFoamYldElasOld,
   kFoamTensOld
 };
+
+// Fills p.foam's tables and moduli from the model's curves, and the moduli of E0 and the rate filter the
+// law runs with.
+void foam_params(const model::Material& m, const std::vector<model::Function>& functions, MaterialParams& p);
+
+// Law 70's strain eps = V - I (engineering shears) from the total deformation gradient F:
+// sum_i (lambda_i - 1) n_i (x) n_i.
+void foam_strain(const double F[3][3], double eps[6]);
 
 // Law 70 at one point. In: eps, the total strain of the point (xx yy zz, then the engineering shears, in the
 // axes of the stress), de the strain increment of the step (same layout), rate the filtered strain rate,

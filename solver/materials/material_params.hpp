@@ -1,5 +1,5 @@
 // The parameters of a material as the points and the kernels use them (work units), derived once per
-// material by make_material_params (law_point_updates.cpp): the constants every law has, then each law's own
+// material by make_material_params (material_params.cpp): the constants every law has, then each law's own
 // in a struct of that law, declared in the law's header.
 #pragma once
 

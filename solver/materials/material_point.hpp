@@ -1,4 +1,5 @@
-// Material laws at one integration point, written once and used by shells (plane stress) and solids.
+// Material laws at one integration point, written once and used by shells (plane stress) and solids
+// (material_point.cpp dispatches to the law files).
 // Formulas: docs/theory/elements.md sections 1.4 (shell elasticity), 3.3 (solid pressure), 6 (LAW2
 // Johnson-Cook). LAW1 is the elastic limit of the same updates (no yield).
 #pragma once
@@ -196,14 +197,23 @@ ShellPointResult shell_point_update_fail(const MaterialParams& p, int iplas, dou
                                          double escale, double off, const double de[5], double gs,
                                          double sig[5], double& eps_p, double& dmg);
 
-// Internal pieces of the law files, for law_point_updates.cpp's dispatch (the shell section also calls law
-// 27's point directly, with the group's state rows).
+// Internal pieces of the law files, for material_point.cpp's dispatch (the shell section also calls law 27's
+// point directly, with the group's state rows).
 namespace detail {
+// Law 1 shell point (material_point.cpp): the elastic trial and the thickness strain increment.
+ShellPointResult elastic_shell_point(const MaterialParams& p, const double de[5], double gs, double sig[5]);
+// Law 2 shell point (law2_plas_johns.cpp) for the rate factor rfac: the elastic trial, the plastic
+// correction, its plastic work and the thickness strain increment.
+ShellPointResult law2_shell_point(const MaterialParams& p, int iplas, double rfac, double off,
+                                  const double de[5], double gs, double sig[5], double& eps_p);
 // LAW2's plastic correction of a plane-stress trial (sxx, syy, sxy) in place, for the rate factor rfac
-// (law_point_updates.cpp): radial return (Iplas 0) or the Newton projection (Iplas 1, off = 1 only).
+// (law2_plas_johns.cpp): radial return (Iplas 0) or the Newton projection (Iplas 1, off = 1 only).
 // eps_p is updated; returns d_eps_p, and dezz_p receives the plastic trace term of 1.8.
 double jc_shell_return(const MaterialParams& p, int iplas, double rfac, double off, double& sxx, double& syy,
                        double& sxy, double& eps_p, double& dezz_p);
+// Law 2 radial return of a solid's trial deviator s (in place, law2_plas_johns.cpp); returns d_eps_p and
+// updates eps_p.
+double law2_solid_deviator(const MaterialParams& p, double rate, double s[6], double& eps_p);
 // Law 27 shell point (law27_plas_brit.cpp). rate: the element's filtered strain rate; dt1: the step of the
 // increments; st: the point's state, row k at st[k * stride] (BritVar).
 ShellPointResult law27_shell_point(const MaterialParams& p, int iplas, double rate, double dt1, double off,
