@@ -13,6 +13,11 @@
 // Solid (3.3). de = {dxx, dyy, dzz, dgxy, dgyz, dgzx} (engineering shears), sig = {xx yy zz xy yz zx}.
 //   s = dev(sig_old);  s_ii += 2G (de_ii - tr(de)/3),  s_ij += G dg_ij   (LAW1: kept; LAW2, LAW36 return it)
 //   pressure p = K mu (total; mu = rho/rho0 - 1 > 0 in compression),  sig = s - p I
+//
+// The one entry point material_point_update takes any law through these same functions: a shell point
+// (plane stress) through the shell point of its law, with /FAIL/* when the material has one; a solid point
+// through solid_point_update (laws 1, 2, 36 and their failure), ogden_point (law 42, from F) or foam_point
+// (law 70, from the strain V - I of F and the increment).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -120,6 +125,94 @@ double solid_yield_stress(const MaterialParams& p, double eps_p, double rate) {
     case model::MaterialLaw::PlasTab: return tab_flow_stress(p, eps_p, rate);
     default: return 1e30;  // LAW1: elastic
   }
+}
+
+PointState initial_point_state(const MaterialParams& p) {
+  PointState st;
+  st.brit[kBritCos] = 1.0;  // the crack frame is the element frame until the crack opens
+  if (p.law == model::MaterialLaw::FoamTab) foam_initial_state(p, st.foam);
+  return st;
+}
+
+namespace {
+
+// A shell point: the stress and the increment in the shells' five components (xx yy xy yz zx).
+PointResult plane_stress_point(const MaterialParams& p, const PointInput& in, PointState& st) {
+  PointResult out;
+  const double de[5] = {in.de[0], in.de[1], in.de[3], in.de[4], in.de[5]};
+  double sig[5] = {st.sig[0], st.sig[1], st.sig[3], st.sig[4], st.sig[5]};
+  const double gs = in.transverse_shear;
+  ShellPointResult r;
+  switch (p.law) {
+    case model::MaterialLaw::PlasBrit:
+      r = detail::law27_shell_point(p, in.iplas, in.rate, in.dt, in.off, de, gs, sig, st.eps_p, st.brit, 1);
+      break;
+    case model::MaterialLaw::Elastic:
+    case model::MaterialLaw::JohnsonCook:
+    case model::MaterialLaw::PlasTab:
+      r = p.fail.on ? shell_point_update_fail(p, in.iplas, jc_rate_factor(p, in.rate), in.rate, in.fail_scale,
+                                              in.off, de, gs, sig, st.eps_p, st.dmg)
+                    : shell_point_update(p, in.iplas, in.rate, in.off, de, gs, sig, st.eps_p);
+      // The laws' plastic-strain limits delete the element (shell_section.hpp): law 36 at once past
+      // Eps_p_max, law 2 progressively from EPS_p_max on (6.4).
+      r.fails = (p.law == model::MaterialLaw::PlasTab && in.off == 1.0 && st.eps_p > p.tab.eps_p_max) ||
+                (p.law == model::MaterialLaw::JohnsonCook && st.eps_p >= p.jc.eps_p_max);
+      break;
+    case model::MaterialLaw::Void:
+    case model::MaterialLaw::Rigid:
+    case model::MaterialLaw::Ogden:
+    case model::MaterialLaw::FoamTab: out.supported = false; return out;
+  }
+  st.sig[0] = sig[0];
+  st.sig[1] = sig[1];
+  st.sig[2] = 0.0;
+  st.sig[3] = sig[2];
+  st.sig[4] = sig[3];
+  st.sig[5] = sig[4];
+  out.deps_p = r.deps_p;
+  out.dezz = r.dezz;
+  out.w_plastic = r.w_plastic;
+  out.wave_speed = p.c_shell;
+  out.element_fails = r.fails;
+  return out;
+}
+
+PointResult solid_point(const MaterialParams& p, const PointInput& in, PointState& st) {
+  PointResult out;
+  out.wave_speed = p.c_solid;
+  switch (p.law) {
+    case model::MaterialLaw::Elastic:
+    case model::MaterialLaw::JohnsonCook:
+    case model::MaterialLaw::PlasTab: {
+      const SolidPointResult r =
+          solid_point_update(p, in.rate, in.de, in.rho_ratio - 1.0, st.sig, st.eps_p, st.dmg, in.off);
+      out.deps_p = r.deps_p;
+      out.element_fails = r.element_fails;
+      break;
+    }
+    case model::MaterialLaw::Ogden: {
+      const OgdenPointResult r = ogden_point(p, in.F, st.sig);
+      out.wave_speed = std::sqrt(r.modulus / (in.rho_ratio * p.rho0));
+      out.element_fails = r.cut && in.off == 1.0;
+      break;
+    }
+    case model::MaterialLaw::FoamTab: {
+      double eps[6];
+      foam_strain(in.F, eps);
+      out.wave_speed = foam_point(p, eps, in.de, in.rate, in.rho_ratio, st.sig, st.foam);
+      break;
+    }
+    case model::MaterialLaw::PlasBrit:  // shells only
+    case model::MaterialLaw::Void:
+    case model::MaterialLaw::Rigid: out.supported = false; break;
+  }
+  return out;
+}
+
+}  // namespace
+
+PointResult material_point_update(const MaterialParams& p, const PointInput& in, PointState& st) {
+  return in.plane_stress ? plane_stress_point(p, in, st) : solid_point(p, in, st);
 }
 
 }  // namespace radx::solver

@@ -1,5 +1,11 @@
 // Material laws at one integration point, written once and used by shells (plane stress) and solids
-// (material_point.cpp dispatches to the law files).
+// (material_point.cpp dispatches to the law files). Two ways in:
+// - material_point_update, the one entry point for any law at one point: a strain increment and the
+//   deformation gradient in, the stress and the point's state updated (the point tests drive every law
+//   through it);
+// - the specialised paths the element kernels take (shell_point_update_r and the shell pieces their batched
+//   loops inline, solid_point_update, and the law functions of the total-strain laws), from which
+//   material_point_update is built.
 // Formulas: docs/theory/elements.md sections 1.4 (shell elasticity), 3.3 (solid pressure), 6 (LAW2
 // Johnson-Cook). LAW1 is the elastic limit of the same updates (no yield).
 #pragma once
@@ -225,5 +231,57 @@ ShellPointResult law36_shell_point(const MaterialParams& p, int iplas, double ra
 // Law 36 radial return of a solid's trial deviator s (in place); returns d_eps_p and updates eps_p.
 double law36_solid_deviator(const MaterialParams& p, double rate, double s[6], double& eps_p);
 }  // namespace detail
+
+// ---- The one entry point: any law at one integration point ----
+
+// What a point is given for one step. Strains in the axes of the stress; shears engineering (2 e_ab).
+// plane_stress (shells): sigma_zz = 0, de[2] is not read (the law gives the thickness strain increment in
+// PointResult::dezz); the laws that run on shells are 1, 2, 27 and 36.
+struct PointInput {
+  double de[6] = {};  // strain increment of the step: xx yy zz xy yz zx
+  // Total deformation gradient F[a][c] = dx_a / dX_c, for the total-strain laws (42, and 70's strain).
+  double F[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  double rho_ratio = 1;  // rho / rho0 (solids: the pressure's mu = rho / rho0 - 1, law 70's tension)
+  double rate = 0;       // the element's filtered strain rate
+  double dt = 0;         // the step of the increments (law 27's rate term)
+  bool plane_stress = false;
+  // Shells: the transverse shear modulus (the property's shear factor times G), Iplas, the element size
+  // factor of /FAIL/TAB.
+  double transverse_shear = 0;
+  int iplas = 0;
+  double fail_scale = 1;
+  double off = 1;  // the element's life factor at the start of the step
+};
+
+// The point's state, carried from step to step: the stress (xx yy zz xy yz zx; sig[2] stays 0 in plane
+// stress), the plastic strain, the normalised damage of the failure model, and the law's own rows.
+struct PointState {
+  double sig[6] = {};
+  double eps_p = 0;
+  double dmg = 0;
+  double brit[kBritVars] = {};  // law 27 (BritVar)
+  double foam[kFoamVars] = {};  // law 70 (FoamVar)
+};
+
+// A point's state before its first step: zero stress and strains, the law's own initial rows.
+PointState initial_point_state(const MaterialParams& p);
+
+struct PointResult {
+  bool supported = true;  // false: the law does not run in this state of stress (nothing was updated)
+  double deps_p = 0;
+  double dezz = 0;        // plane stress: the thickness strain increment
+  double w_plastic = 0;   // plane stress: plastic work per unit volume of the step (6.5)
+  double wave_speed = 0;  // the point's sound speed: the material's, or the current one of laws 42 and 70
+  // The point's law or failure model starts the element's deletion: on shells law 27's EPS_f1 and the
+  // plastic-strain limits of laws 2 and 36 (a shell's failed points delete it by their thickness fraction,
+  // which is the section's: see PointState::dmg); on solids SolidFailMode::Delete, law 36's Eps_p_max and
+  // law 42's tension cut-off.
+  bool element_fails = false;
+};
+
+// Updates any law at one integration point through the functions the element kernels use (no formula of its
+// own): shells through the shell point of their law (with the failure model when there is one), solids
+// through solid_point_update, law 42 from F, law 70 from F's strain and the increment.
+PointResult material_point_update(const MaterialParams& p, const PointInput& in, PointState& st);
 
 }  // namespace radx::solver
