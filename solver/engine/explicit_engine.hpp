@@ -191,7 +191,7 @@ class ExplicitEngine {
   Sensors sensors_;
   NodeState nodes_;
   std::vector<MaterialParams> materials_;
-  std::vector<std::vector<TabCurve>> material_curves_;  // law 36: what materials_[i].curves points to
+  std::vector<std::vector<TabCurve>> material_curves_;  // law 36: what materials_[i].tab.curves points to
   // The groups' arrays (GroupArray): a monotonic buffer over huge pages, its first buffer small enough for a
   // small model, the next ones 1.5 x larger (libstdc++'s growth). Declared before the groups, which it must
   // outlive; groups are built once, in the constructor, so nothing is freed into it during a run.

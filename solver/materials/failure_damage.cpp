@@ -71,7 +71,7 @@ SolidPointResult solid_point_update(const MaterialParams& p, double rate, const 
   SolidPointResult out;
   out.deps_p = solid_point_update(p, rate, de, mu, sig, eps_p);
   // Law 36 Eps_p_max (sigeps36.F): strictly above it, a live brick starts its deletion.
-  if (p.law == model::MaterialLaw::PlasTab && off == 1.0 && eps_p > p.eps_p_max) out.element_fails = true;
+  if (p.law == model::MaterialLaw::PlasTab && off == 1.0 && eps_p > p.tab.eps_p_max) out.element_fails = true;
   if (!p.fail.on) return out;
   const auto& f = p.fail;
   const double sm = (sig[0] + sig[1] + sig[2]) / 3.0;

@@ -24,7 +24,7 @@
 //   s23 = G_s g23,  s31 = D1 G_s g31
 //   (undamaged this is the plane-stress update of LAW2: s += A de.)
 //
-// Plasticity (m27plas.F): LAW2's shell return (law_point_updates.cpp, radial or Iplas 1 Newton) on the
+// Plasticity (m27plas.F): LAW2's shell return (law2_plas_johns.cpp, radial or Iplas 1 Newton) on the
 // in-plane stress of the crack frame, with the flow stress
 //   sigma_y = min((a + b eps_p^n) Q, SIG_max0 (Q if ICC = 1 else 1)),  Q = 1 + c ln(e_p / e_r),
 //   e_r = max(1e-20, EPS_DOT_0 dt),  e_p = max(e_r, max(|de1|, |de2|, |dg12|/2))   (Fsmooth 0, Fcut 0)
@@ -47,7 +47,27 @@
 
 #include "solver/materials/material_point.hpp"
 
-namespace radx::solver::detail {
+namespace radx::solver {
+
+void plas_brit_params(const model::Material& m, MaterialParams& p) {
+  // hm_read_mat27.F's defaults, applied again for a Material built by hand.
+  p.jc.a = m.a == 0 ? 1e20 : m.a;
+  p.jc.b = m.b;
+  p.jc.n = m.n == 0 ? 1.0 : m.n;
+  p.jc.c = m.c;
+  p.jc.eps_dot0 = (m.c == 0 || m.eps_dot_0 <= 0) ? 1.0 : m.eps_dot_0;
+  p.jc.sig_max0 = m.sig_max0 == 0 ? 1e20 : m.sig_max0;
+  p.jc.icc = m.icc == 0 ? 1 : m.icc;
+  p.f_cut = m.f_cut;
+  const auto& b = m.brit;
+  p.brit.eps_t = b.eps_t1 == 0 ? 1e20 : b.eps_t1;
+  p.brit.eps_m = b.eps_m1 == 0 ? 1.1e20 : b.eps_m1;
+  p.brit.d_max = b.d_max1 == 0 ? 0.999 : b.d_max1;
+  p.brit.eps_f = b.eps_f1 == 0 ? 1.2e22 : b.eps_f1;
+  p.brit.point_rate = m.fsmooth == 0 && m.f_cut == 0;
+}
+
+namespace detail {
 
 namespace {
 
@@ -110,10 +130,10 @@ ShellPointResult law27_shell_point(const MaterialParams& p, int iplas, double ra
                   d1 * gs * ee[4]};
 
   // Plasticity with the rate term of the point (or of the element).
-  const double e_ref = std::max(kTinyRate, p.eps_dot0 * dt1);
+  const double e_ref = std::max(kTinyRate, p.jc.eps_dot0 * dt1);
   const double inc =
       p.brit.point_rate ? std::max({std::abs(e[0]), std::abs(e[1]), 0.5 * std::abs(e[2])}) : rate * dt1;
-  const double rfac = 1.0 + p.c * std::log(std::max(inc, e_ref) / e_ref);
+  const double rfac = 1.0 + p.jc.c * std::log(std::max(inc, e_ref) / e_ref);
   ShellPointResult out;
   double dezz_p = 0;
   out.deps_p = jc_shell_return(p, iplas, rfac, off, sn[0], sn[1], sn[2], eps_p, dezz_p);
@@ -150,4 +170,6 @@ ShellPointResult law27_shell_point(const MaterialParams& p, int iplas, double ra
   return out;
 }
 
-}  // namespace radx::solver::detail
+}  // namespace detail
+
+}  // namespace radx::solver

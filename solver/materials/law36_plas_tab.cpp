@@ -1,9 +1,10 @@
 // LAW36 (/MAT/PLAS_TAB): isotropic elasto-plasticity with tabulated yield curves sigma_y(eps_p), one curve
 // per strain rate, for shells (plane stress) and solids. The points call it through material_point.hpp
 // (shell_point_update_r, solid_point_update), which dispatch on the law; the elastic trial, the thickness
-// strain and the pressure are those of LAW2 (law_point_updates.cpp).
+// strain and the pressure are those of LAW1 and LAW2 (material_point.cpp).
 //
-// Sources (read, not translated): OpenRadioss starter/source/materials/mat/mat036/hm_read_mat36.F (cards,
+// Sources: docs/elements-openradioss.md 6.6 (LAW36), docs/theory/elements.md 1.3 and 6.2 (the strain rates);
+// read, not translated: OpenRadioss starter/source/materials/mat/mat036/hm_read_mat36.F (cards,
 // defaults), engine/source/materials/mat/mat036/sigeps36c.F (shells) and sigeps36.F (solids), VP = 0
 // (total strain rate), Chard = 0 (isotropic), no pressure or Young's-modulus function, no tension failure.
 //
@@ -64,22 +65,22 @@ constexpr double kTiny =
 
 double tab_flow_stress(const MaterialParams& p, double eps_p, double rate, double* slope) {
   double y1 = 0, d1 = 0;
-  if (p.n_curves <= 1) {
-    if (p.n_curves == 1) {
-      curve_at(p.curves[0], eps_p, y1, d1);
-      y1 *= p.curves[0].scale;
-      d1 *= p.curves[0].scale;
+  if (p.tab.n_curves <= 1) {
+    if (p.tab.n_curves == 1) {
+      curve_at(p.tab.curves[0], eps_p, y1, d1);
+      y1 *= p.tab.curves[0].scale;
+      d1 *= p.tab.curves[0].scale;
     }
     if (slope != nullptr) *slope = d1;
     return y1;
   }
   int j = 0;
-  for (int k = 1; k < p.n_curves - 1; ++k)
-    if (rate >= p.curves[k].rate) j = k;
-  const TabCurve& c1 = p.curves[j];
-  const TabCurve& c2 = p.curves[j + 1];
+  for (int k = 1; k < p.tab.n_curves - 1; ++k)
+    if (rate >= p.tab.curves[k].rate) j = k;
+  const TabCurve& c1 = p.tab.curves[j];
+  const TabCurve& c2 = p.tab.curves[j + 1];
   double w = 0;
-  if (p.tab_log) {
+  if (p.tab.log_rate) {
     const double r1 = std::max(c1.rate, kTiny);
     w = std::log(std::max(rate, kTiny) / r1) / std::log(c2.rate / r1);
   } else {
@@ -202,26 +203,26 @@ void tab_curves_params(const model::Material& m, const std::vector<model::Functi
     c0.rate = 0;
     curves.insert(curves.begin(), c0);
   }
-  p.curves = curves.data();
-  p.n_curves = static_cast<int>(curves.size());
-  p.tab_log = curves.size() > 1 && tab.fsmooth == 2;
-  p.tab_rate_max = curves.size() > 1 ? curves.back().rate : 1e300;
+  p.tab.curves = curves.data();
+  p.tab.n_curves = static_cast<int>(curves.size());
+  p.tab.log_rate = curves.size() > 1 && tab.fsmooth == 2;
+  p.tab.rate_max = curves.size() > 1 ? curves.back().rate : 1e300;
   // Lower bound of sigma_y for the shells' elastic fast path: a curve over eps_p >= 0 is smallest at eps_p =
   // 0 or at one of its points, unless its last segment falls (then it has no lower bound).
-  p.tab_bound = !curves.empty();
-  p.tab_lower = std::numeric_limits<double>::infinity();
+  p.tab.bound = !curves.empty();
+  p.tab.lower = std::numeric_limits<double>::infinity();
   for (const auto& c : curves) {
-    if (c.n >= 2 && c.y[c.n - 1] < c.y[c.n - 2]) p.tab_bound = false;
+    if (c.n >= 2 && c.y[c.n - 1] < c.y[c.n - 2]) p.tab.bound = false;
     double y0 = 0, d0 = 0;
     curve_at(c, 0.0, y0, d0);
     double lo = y0;
     for (int k = 0; k < c.n; ++k)
       if (c.x[k] > 0) lo = std::min(lo, c.y[k]);
-    p.tab_lower = std::min(p.tab_lower, lo * c.scale);
+    p.tab.lower = std::min(p.tab.lower, lo * c.scale);
   }
-  if (!p.tab_bound || !(p.tab_lower >= 0)) {
-    p.tab_bound = false;
-    p.tab_lower = 0;
+  if (!p.tab.bound || !(p.tab.lower >= 0)) {
+    p.tab.bound = false;
+    p.tab.lower = 0;
   }
 }
 

@@ -28,7 +28,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/materials/material_point.hpp"
+#include "solver/materials/material_params.hpp"
 
 namespace radx::solver {
 
@@ -109,6 +109,25 @@ OgdenPointResult ogden_point(const MaterialParams& p, const double F[3][3], doub
   sig[4] = at(1, 2);
   sig[5] = at(2, 0);
   return out;
+}
+
+// LAW42 (Ogden): its terms, cut-off and form, and the starter's moduli.
+void ogden_params(const model::Material& m, MaterialParams& p) {
+  auto& o = p.ogden;
+  o.n = static_cast<int>(std::min<std::size_t>(m.ogden.mu.size(), OgdenParams::kMaxTerms));
+  for (int k = 0; k < o.n; ++k) {
+    o.mu[k] = m.ogden.mu[static_cast<std::size_t>(k)];
+    o.alpha[k] = m.ogden.alpha[static_cast<std::size_t>(k)];
+    o.g += o.mu[k] * o.alpha[k];
+  }
+  o.sig_cut = m.ogden.sig_cut > 0 ? m.ogden.sig_cut : 1e20;
+  o.iform = m.ogden.iform == 2 ? 2 : 1;
+  // The starter's moduli (build_hyperelastic.cpp): G0 = g / 2, K = g (1 + nu) / 3 (1 - 2 nu).
+  p.shear = m.shear;
+  p.bulk = m.bulk;
+  p.c_solid = p.rho0 > 0 ? std::sqrt((p.bulk + 4.0 * p.shear / 3.0) / p.rho0) : 0.0;
+  o.stiffen = p.bulk > 24.0 * o.g;
+  o.nu1 = 40.0 * (0.5 - (3.0 * p.bulk - o.g) / (6.0 * p.bulk + o.g));
 }
 
 double ogden_energy_density(const MaterialParams& p, const double F[3][3]) {

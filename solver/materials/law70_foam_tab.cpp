@@ -39,7 +39,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/materials/material_point.hpp"
+#include "solver/materials/material_params.hpp"
 
 namespace radx::solver {
 
@@ -60,6 +60,87 @@ void hooke(double a1, double a2, double g, const double e[6], double s[6]) {
 }
 
 }  // namespace
+
+// Law 70's tables and moduli (solver/model/foam_table.hpp) from the model's curves. The unloading table is
+// the first loading curve when the deck gives none and Iflag <= 2 (hm_read_mat70.F; Iflag is then 0); Iflag 3
+// and 4 need no unloading curve.
+void foam_params(const model::Material& m, const std::vector<model::Function>& functions, MaterialParams& p) {
+  const auto& ft = m.foam;
+  auto input = [&](std::int32_t fi, double scale, double rate) {
+    model::FoamCurveInput c;
+    if (fi >= 0 && static_cast<std::size_t>(fi) < functions.size()) {
+      const auto& fn = functions[static_cast<std::size_t>(fi)];
+      c.x = fn.x.data();
+      c.y = fn.y.data();
+      c.n = std::min(fn.x.size(), fn.y.size());
+    }
+    c.scale = scale == 0 ? 1.0 : scale;
+    c.rate = rate;
+    return c;
+  };
+  std::vector<model::FoamCurveInput> load, unload;
+  for (std::size_t i = 0; i < ft.load_function.size(); ++i)
+    load.push_back(input(ft.load_function[i], ft.load_scale[i], ft.load_rate[i]));
+  for (std::size_t i = 0; i < ft.unload_function.size(); ++i)
+    unload.push_back(input(ft.unload_function[i], ft.unload_scale[i], ft.unload_rate[i]));
+  auto by_rate = [](const model::FoamCurveInput& a, const model::FoamCurveInput& b) {
+    return a.rate < b.rate;
+  };
+  std::stable_sort(load.begin(), load.end(), by_rate);
+  std::stable_sort(unload.begin(), unload.end(), by_rate);
+  if (load.size() > 1) load[0].rate = 0;  // the static curve's rate is 0 (hm_read_mat70.F)
+  if (unload.size() > 1) unload[0].rate = 0;
+  auto& f = p.foam;
+  f.iflag = ft.iflag;
+  if (unload.empty() && ft.iflag <= 2 && !load.empty()) {
+    unload.push_back(load[0]);
+    f.iflag = 0;
+  }
+  f.shape = ft.shape == 0 ? 1.0 : ft.shape;
+  f.hys = ft.hys == 0 ? 1.0 : ft.hys;
+  auto table = std::make_shared<model::FoamTable>(model::build_foam_table(load));
+  const auto mod = model::foam_moduli(*table, m.young, ft.e_max, ft.eps_max);
+  f.e0 = mod.e0;
+  f.e_max = mod.e_max;
+  f.aa = mod.aa;
+  f.eps_max = mod.eps_max;
+  f.yld_emax = mod.yld_emax;
+  f.static_rate = table->rate.empty() ? 0.0 : table->rate[0];
+  f.load = std::move(table);
+  if (!unload.empty()) f.unload = std::make_shared<model::FoamTable>(model::build_foam_table(unload));
+  if (ft.itens == 1 && ft.tens_function >= 0 &&
+      static_cast<std::size_t>(ft.tens_function) < functions.size()) {
+    // The tension factor is the function itself (no processing), times its scale.
+    const auto& fn = functions[static_cast<std::size_t>(ft.tens_function)];
+    auto t = std::make_shared<model::FoamTable>();
+    t->x = fn.x;
+    t->rate = {0.0};
+    const double sc = ft.tens_scale == 0 ? 1.0 : ft.tens_scale;
+    for (double v : fn.y) t->y.push_back(sc * v);
+    f.tension = std::move(t);
+  }
+  // The moduli of E0 (the initial wave speed, the contact stiffness).
+  p.young = f.e0;
+  p.shear = p.young / (2.0 * (1.0 + p.nu));
+  p.bulk = p.young / (3.0 * (1.0 - 2.0 * p.nu));
+  p.c_solid = p.rho0 > 0 ? std::sqrt((p.bulk + 4.0 * p.shear / 3.0) / p.rho0) : 0.0;
+  p.f_cut = ft.israte > 0 || m.f_cut > 0 ? m.f_cut : 0.0;
+}
+
+void foam_strain(const double F[3][3], double eps[6]) {
+  double lam[3], nv[3][3];
+  principal_stretches(F, lam, nv);
+  auto at = [&](int a, int b) {
+    return (lam[0] - 1.0) * nv[a][0] * nv[b][0] + (lam[1] - 1.0) * nv[a][1] * nv[b][1] +
+           (lam[2] - 1.0) * nv[a][2] * nv[b][2];
+  };
+  eps[0] = at(0, 0);
+  eps[1] = at(1, 1);
+  eps[2] = at(2, 2);
+  eps[3] = 2.0 * at(0, 1);
+  eps[4] = 2.0 * at(1, 2);
+  eps[5] = 2.0 * at(2, 0);
+}
 
 void foam_initial_state(const MaterialParams& p, double st[kFoamVars]) {
   for (int k = 0; k < kFoamVars; ++k) st[k] = 0.0;

@@ -156,8 +156,8 @@ Bt4Constants bt4_constants(const ShellProps& pr, const MaterialParams& mat, doub
   k.kf0 = k.s.young * pr.hf * shf / (24.0 * (1.0 + nu)) * dt1;
   // Law 2 with c != 0 takes a lower bound of R in the vectorised loop and the logarithm only for the elements
   // with a point that may yield (SectionBlock::rfac_lower): c_lower = 0 makes the bound exactly 1 otherwise.
-  k.r_lower = mat.law == model::MaterialLaw::JohnsonCook && mat.c != 0;
-  k.c_lower = k.r_lower ? mat.c : 0.0, k.inv_rate0 = k.r_lower ? 1.0 / mat.eps_dot0 : 1.0;
+  k.r_lower = mat.law == model::MaterialLaw::JohnsonCook && mat.jc.c != 0;
+  k.c_lower = k.r_lower ? mat.jc.c : 0.0, k.inv_rate0 = k.r_lower ? 1.0 / mat.jc.eps_dot0 : 1.0;
   // Strain rate above which the element's rate term differs from 1 (jc_rate_factor).
   k.rate_one = k.r_lower ? std::numeric_limits<double>::infinity() : shell_rate_threshold(mat);
   k.tiny20 = opaque(1e-20), k.tiny30 = opaque(1e-30);

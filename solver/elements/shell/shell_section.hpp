@@ -446,7 +446,7 @@ template <int B>
   const bool fail = mat.fail.on;
   const bool brit = mat.law == model::MaterialLaw::PlasBrit;
   for (int j = 0; j < len; ++j) s.fail_now[j] = 0;
-  const bool tab_limit = mat.law == model::MaterialLaw::PlasTab && mat.eps_p_max < 1e20;
+  const bool tab_limit = mat.law == model::MaterialLaw::PlasTab && mat.tab.eps_p_max < 1e20;
   if (brit)
     for (int j = 0; j < len; ++j) s.fail_now[j] = s.off[j] == 1.0 ? s.crack_fail[j] : 0.0;
   if (!(fail || tab_limit)) return;
@@ -454,7 +454,7 @@ template <int B>
   const double limit = mat.fail.ifail_sh >= 2 ? pt : 1e-6;
   for (int j = 0; j < len; ++j) {
     if (s.off[j] != 1.0) continue;
-    bool gone = tab_limit && s.eps_p_max[j] > mat.eps_p_max;
+    bool gone = tab_limit && s.eps_p_max[j] > mat.tab.eps_p_max;
     if (fail) {
       double frac = 0;
       for (int p = 0; p < rule.n; ++p)
@@ -514,7 +514,8 @@ inline double next_off(double limit, double off_start, double eps_p_max, double 
 
 // The progressive failure limit: law 2's EPS_p_max (law 36 deletes at once through fail_now instead).
 inline double failure_limit(const MaterialParams& mat) {
-  return mat.law == model::MaterialLaw::JohnsonCook ? mat.eps_p_max : std::numeric_limits<double>::infinity();
+  return mat.law == model::MaterialLaw::JohnsonCook ? mat.jc.eps_p_max
+                                                    : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace radx::solver::shell_detail

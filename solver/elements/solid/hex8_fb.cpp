@@ -110,22 +110,6 @@ namespace {
 // The stress of a total-strain law, chosen per group (never per element).
 enum class TotalLaw : std::uint8_t { None, Ogden, Foam };
 
-// Law 70's strain eps = V - I (engineering shears) from F: sum_i (lambda_i - 1) n_i (x) n_i.
-void biot_strain(const double F[3][3], double eps[6]) {
-  double lam[3], nv[3][3];
-  principal_stretches(F, lam, nv);
-  auto at = [&](int a, int b) {
-    return (lam[0] - 1.0) * nv[a][0] * nv[b][0] + (lam[1] - 1.0) * nv[a][1] * nv[b][1] +
-           (lam[2] - 1.0) * nv[a][2] * nv[b][2];
-  };
-  eps[0] = at(0, 0);
-  eps[1] = at(1, 1);
-  eps[2] = at(2, 2);
-  eps[3] = 2.0 * at(0, 1);
-  eps[4] = 2.0 * at(1, 2);
-  eps[5] = 2.0 * at(2, 0);
-}
-
 // The group's constants of the kernel.
 struct FbConstants {
   double dt1, c, rho0, qa2, qb, a_hg, alpha;
@@ -183,7 +167,7 @@ template <TotalLaw kLaw>
       pr.element_fails = op.cut && off == 1.0;
     } else {
       double eps[6], st[kFoamVars];
-      biot_strain(F, eps);
+      foam_strain(F, eps);
       const double de[6] = {D[0] * dt1, D[1] * dt1, D[2] * dt1, D[3] * dt1, D[4] * dt1, D[5] * dt1};
       for (std::size_t v = 0; v < static_cast<std::size_t>(kFoamVars); ++v) st[v] = g.foam[v * G + i];
       c_e = foam_point(mat, eps, de, rate, rho / k.rho0, sn, st);

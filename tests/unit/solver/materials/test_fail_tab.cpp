@@ -79,7 +79,7 @@ TEST_CASE("FAIL/TAB failure strain: the triaxiality table, linear in the rate be
   MaterialParams p = make_material_params(m, kFns, curves);
   REQUIRE(p.fail.kind == FailKind::Tab);
   REQUIRE(p.fail.n_rows == 2);
-  REQUIRE(p.n_curves == 1);  // the law-36 curve is kept in front of the rows
+  REQUIRE(p.tab.n_curves == 1);  // the law-36 curve is kept in front of the rows
   auto expect = [](double eta, double rate) {
     const double f = 0.3 - 0.2 * eta;
     return f * (1.0 + (rate - 1.0) / 10.0);

@@ -79,9 +79,9 @@ TEST_CASE("law 36 flow stress: on a curve, between two rates (linear, logarithmi
                                      curve({0.0, 0.1, 0.2}, {250.0, 400.0, 450.0})};
   std::vector<TabCurve> curves;
   const MaterialParams lin = make_material_params(plas_tab({1.0, 2.0}, {10.0, 100.0}), fns, curves);
-  REQUIRE(lin.n_curves == 3);
-  CHECK(lin.curves[0].rate == 0.0);
-  CHECK(lin.curves[1].rate == 10.0);
+  REQUIRE(lin.tab.n_curves == 3);
+  CHECK(lin.tab.curves[0].rate == 0.0);
+  CHECK(lin.tab.curves[1].rate == 10.0);
   double h = 0;
   // Below the first rate the first curve holds (rate-0 copy): 250, H 1000.
   CHECK(close(tab_flow_stress(lin, 0.05, 5.0, &h), 250.0, kRound));
@@ -107,9 +107,9 @@ TEST_CASE("law 36 flow stress: on a curve, between two rates (linear, logarithmi
   CHECK(jc_rate_factor(one, 55.0) == 1.0);
   CHECK(shell_rate_threshold(lin) == -std::numeric_limits<double>::infinity());
   // Fast-path bound: the smallest scaled ordinate over eps_p >= 0, up to the highest rate.
-  CHECK(lin.tab_bound);
-  CHECK(lin.tab_lower == 200.0);
-  CHECK(lin.tab_rate_max == 100.0);
+  CHECK(lin.tab.bound);
+  CHECK(lin.tab.lower == 200.0);
+  CHECK(lin.tab.rate_max == 100.0);
 }
 
 TEST_CASE("law 36 with the Johnson-Cook curve tabulated equals LAW2 within the table's interpolation error",

@@ -46,8 +46,8 @@ bool close(double x, double expected, double rel, double abs_floor = 0.0) {
 
 // Flow stress written out from 6.2 (T = 1, no cap).
 double jc_expected(const MaterialParams& p, double eps_p, double rate) {
-  const double r = rate > p.eps_dot0 ? 1.0 + p.c * std::log(rate / p.eps_dot0) : 1.0;
-  return (p.a + p.b * std::pow(eps_p, p.n)) * r;
+  const double r = rate > p.jc.eps_dot0 ? 1.0 + p.jc.c * std::log(rate / p.jc.eps_dot0) : 1.0;
+  return (p.jc.a + p.jc.b * std::pow(eps_p, p.jc.n)) * r;
 }
 
 double vm_plane(const double* s) {
@@ -75,8 +75,9 @@ struct Projection {
 Projection evaluate(const MaterialParams& p, const double t[3], double eps_p, double rate, double dp) {
   const double s1 = t[0] + t[1], s2 = t[0] - t[1];
   const double a = 0.25 * s1 * s1, b = 0.75 * s2 * s2 + 3.0 * t[2] * t[2];
-  const double rr = rate > p.eps_dot0 ? 1.0 + p.c * std::log(rate / p.eps_dot0) : 1.0;
-  const double h = p.n * p.b * rr * std::pow(eps_p + 1e-7, p.n - 1.0);  // H at the old eps_p (m2cplr.F)
+  const double rr = rate > p.jc.eps_dot0 ? 1.0 + p.jc.c * std::log(rate / p.jc.eps_dot0) : 1.0;
+  const double h =
+      p.jc.n * p.jc.b * rr * std::pow(eps_p + 1e-7, p.jc.n - 1.0);  // H at the old eps_p (m2cplr.F)
   Projection out;
   out.dp = dp;
   const double yi = jc_flow_stress(p, eps_p + dp, rate);
@@ -91,8 +92,8 @@ Projection evaluate(const MaterialParams& p, const double t[3], double eps_p, do
   return out;
 }
 double newton_start(const MaterialParams& p, const double t[3], double eps_p, double rate) {
-  const double rr = rate > p.eps_dot0 ? 1.0 + p.c * std::log(rate / p.eps_dot0) : 1.0;
-  const double h = p.n * p.b * rr * std::pow(eps_p + 1e-7, p.n - 1.0);
+  const double rr = rate > p.jc.eps_dot0 ? 1.0 + p.jc.c * std::log(rate / p.jc.eps_dot0) : 1.0;
+  const double h = p.jc.n * p.jc.b * rr * std::pow(eps_p + 1e-7, p.jc.n - 1.0);
   return (vm_plane(t) - jc_flow_stress(p, eps_p, rate)) / (3.0 * p.shear + h);
 }
 // `evals` evaluations from the start of 6.3; the last one is the one used.
@@ -162,12 +163,12 @@ TEST_CASE("material params: moduli, plane-stress coefficients, sound speeds and 
   CHECK(close(p.c_solid, std::sqrt((p.bulk + 4 * p.shear / 3) / m.rho), kRound));
   CHECK(p.rho0 == m.rho);
   // Reader defaults: n 0 -> 1, c = 0 -> rate0 = 1, ICC 0 -> 1, VP 0 -> 2, caps 0 -> 1e20.
-  CHECK(p.n == 1.0);
-  CHECK(p.eps_dot0 == 1.0);
-  CHECK(p.icc == 1);
-  CHECK(p.flag_vp == 2);
-  CHECK(p.sig_max0 == 1e20);
-  CHECK(p.eps_p_max == 1e20);
+  CHECK(p.jc.n == 1.0);
+  CHECK(p.jc.eps_dot0 == 1.0);
+  CHECK(p.jc.icc == 1);
+  CHECK(p.jc.flag_vp == 2);
+  CHECK(p.jc.sig_max0 == 1e20);
+  CHECK(p.jc.eps_p_max == 1e20);
 }
 
 TEST_CASE("shell point, uniaxial stress path: sxx = E exx, syy = 0, dezz = -nu dexx", "[material]") {
@@ -214,10 +215,10 @@ TEST_CASE("Johnson-Cook flow stress: (a + b eps^n)(1 + c ln(rate/rate0)), rates 
       double slope = -1;
       const double sy = jc_flow_stress(p, eps, rate, &slope);
       CHECK(close(sy, jc_expected(p, eps, rate), 1e-13));
-      const double r = rate > p.eps_dot0 ? 1.0 + p.c * std::log(rate / p.eps_dot0) : 1.0;
-      if (rate <= p.eps_dot0) CHECK(sy == jc_flow_stress(p, eps, 0.0));  // R = 1 exactly below rate0
+      const double r = rate > p.jc.eps_dot0 ? 1.0 + p.jc.c * std::log(rate / p.jc.eps_dot0) : 1.0;
+      if (rate <= p.jc.eps_dot0) CHECK(sy == jc_flow_stress(p, eps, 0.0));  // R = 1 exactly below rate0
       // eps = 0 with n < 1: the slope is infinite; the kernels use 0 there (m2law.F).
-      const double h = eps > 0 ? p.n * p.b * r * std::pow(eps, p.n - 1) : 0.0;
+      const double h = eps > 0 ? p.jc.n * p.jc.b * r * std::pow(eps, p.jc.n - 1) : 0.0;
       CHECK(close(slope, h, kRound));
     }
   }
@@ -226,8 +227,9 @@ TEST_CASE("Johnson-Cook flow stress: (a + b eps^n)(1 + c ln(rate/rate0)), rates 
     m.n = 1.0;
     const MaterialParams q = make_material_params(m);
     double slope = 0;
-    CHECK(close(jc_flow_stress(q, 0.0, 10.0, &slope), q.a * (1 + q.c * std::log(10.0 / q.eps_dot0)), 1e-13));
-    CHECK(close(slope, q.b * (1 + q.c * std::log(10.0 / q.eps_dot0)), 1e-13));
+    CHECK(close(jc_flow_stress(q, 0.0, 10.0, &slope), q.jc.a * (1 + q.jc.c * std::log(10.0 / q.jc.eps_dot0)),
+                1e-13));
+    CHECK(close(slope, q.jc.b * (1 + q.jc.c * std::log(10.0 / q.jc.eps_dot0)), 1e-13));
   }
   SECTION("cap SIG_max0: times R with ICC = 1, bare with ICC = 2, slope 0 when capped") {
     Material m = steel(MaterialLaw::JohnsonCook);
@@ -389,7 +391,7 @@ TEST_CASE("shell Iplas = 1 agrees with radial return where plane stress makes th
   m.b = 0;
   m.c = 0;
   const MaterialParams p = make_material_params(m);
-  const double sy = p.a;
+  const double sy = p.jc.a;
   SECTION("pure shear") {
     const double de[5] = {0, 0, 4e-3, 0, 0};
     double sig[5] = {0, 0, 0, 0, 0};
@@ -536,8 +538,8 @@ TEST_CASE("shell point with the rate factor given: shell_point_update_r(R) is sh
   // R: exactly 1 at or below rate0 and for c = 0 (no logarithm); 1 + c ln(rate/rate0) above.
   const MaterialParams& p = mats[0];
   CHECK(jc_rate_factor(p, 0.0) == 1.0);
-  CHECK(jc_rate_factor(p, p.eps_dot0) == 1.0);
-  CHECK(close(jc_rate_factor(p, 50.0), 1.0 + p.c * std::log(50.0 / p.eps_dot0), kRound));
+  CHECK(jc_rate_factor(p, p.jc.eps_dot0) == 1.0);
+  CHECK(close(jc_rate_factor(p, 50.0), 1.0 + p.jc.c * std::log(50.0 / p.jc.eps_dot0), kRound));
   CHECK(jc_rate_factor(mats[2], 50.0) == 1.0);
   Material no_rate = steel(MaterialLaw::JohnsonCook);
   no_rate.c = 0;
@@ -568,7 +570,7 @@ TEST_CASE("shell_stays_elastic: the points it passes take no plastic step, the p
         for (const double rate : {0.0, 40.0})
           for (int k = 0; k < 200; ++k) {
             const double r = jc_rate_factor(p, rate);
-            const double lb = std::min(p.a * r, p.sig_max0);
+            const double lb = std::min(p.jc.a * r, p.jc.sig_max0);
             const double gs = 5.0 / 6.0 * p.shear;
             const double de[5] = {1e-4 * u(rng), 1e-4 * u(rng), 1e-4 * u(rng), 1e-4 * u(rng), 1e-4 * u(rng)};
             const double eps0 = k % 2 == 0 ? 0.0 : 0.02 * (1.0 + u(rng));
@@ -613,12 +615,12 @@ TEST_CASE("jc_rate_factor_lower: a lower bound of R within 0.061 c, exactly 1 at
   // elements with a point that fails the check. R_lo must never exceed R (a yielding point would be taken as
   // elastic); the chord of ln over [1, 2] is below ln by at most ln(1/ln 2) - (1/ln 2 - 1) ln 2 = 0.0597.
   const MaterialParams p = make_material_params(steel(MaterialLaw::JohnsonCook));
-  const double inv0 = 1.0 / p.eps_dot0;
-  auto lower = [&](double rate) { return radx::solver::jc_rate_factor_lower(p.c, inv0, rate); };
+  const double inv0 = 1.0 / p.jc.eps_dot0;
+  auto lower = [&](double rate) { return radx::solver::jc_rate_factor_lower(p.jc.c, inv0, rate); };
   CHECK(lower(0.0) == 1.0);
   CHECK(lower(1e-310) == 1.0);  // subnormal
-  CHECK(lower(0.5 * p.eps_dot0) == 1.0);
-  CHECK(lower(p.eps_dot0) == 1.0);
+  CHECK(lower(0.5 * p.jc.eps_dot0) == 1.0);
+  CHECK(lower(p.jc.eps_dot0) == 1.0);
   CHECK(lower(std::numeric_limits<double>::infinity()) > 1.0);
   int n = 0;
   double worst = 0;
@@ -627,7 +629,7 @@ TEST_CASE("jc_rate_factor_lower: a lower bound of R within 0.061 c, exactly 1 at
     const double r = jc_rate_factor(p, rate), lo = lower(rate);
     CHECK(lo <= r);
     CHECK(lo >= 1.0);
-    worst = std::max(worst, (r - lo) / p.c);
+    worst = std::max(worst, (r - lo) / p.jc.c);
   }
   // Over every binade, the largest gap is reached (to the grid's resolution) and never exceeded.
   CHECK(n > 18000);
@@ -644,7 +646,7 @@ TEST_CASE("jc_rate_factor_lower: a lower bound of R within 0.061 c, exactly 1 at
     const double rate = std::pow(10.0, 6.0 * (1.0 + u(rng)));
     const double r = jc_rate_factor(p, rate), lo = lower(rate);
     double t[5] = {u(rng), u(rng), u(rng), 0.0, 0.0};
-    const double scale = (1.0 + 0.1 * u(rng)) * p.a * r / vm_plane(t);
+    const double scale = (1.0 + 0.1 * u(rng)) * p.jc.a * r / vm_plane(t);
     for (double& c : t) c *= scale;
     const double de[5] = {0, 0, 0, 0, 0};
     const int iplas = k % 2;
@@ -717,8 +719,8 @@ TEST_CASE("solid point: pressure K mu, elastic shear G gamma, plastic return to 
     for (int i = 3; i < 6; ++i) t[i] = sig0[i] + p.shear * de[i];
     const double svm_t = vm_solid(t);
     const double sy = jc_expected(p, eps0, rate);
-    const double r = 1.0 + p.c * std::log(rate / p.eps_dot0);
-    const double h = p.n * p.b * r * std::pow(eps0, p.n - 1.0);
+    const double r = 1.0 + p.jc.c * std::log(rate / p.jc.eps_dot0);
+    const double h = p.jc.n * p.jc.b * r * std::pow(eps0, p.jc.n - 1.0);
     REQUIRE(svm_t > 1.2 * sy);
     double sig[6];
     std::copy(sig0, sig0 + 6, sig);
@@ -743,7 +745,7 @@ TEST_CASE("solid point: pressure K mu, elastic shear G gamma, plastic return to 
     double h = 0;
     const double sy = jc_flow_stress(p, 0.049, 0.0, &h);
     const double dp0 = solid_point_update(p, 0.0, de, 0.0, sig, eps_p);
-    REQUIRE(eps_p > p.eps_p_max);
+    REQUIRE(eps_p > p.jc.eps_p_max);
     CHECK(close(vm_solid(sig), sy + dp0 * h, kRound));  // returned to the surface, not zeroed
     for (int k = 0; k < 5; ++k) {
       const double dek[6] = {1e-3 * k, -2e-3, 1e-3, 0.01, -0.02, 0.003};
@@ -853,8 +855,8 @@ PathResult stretch_path(const MaterialParams& p, int steps, double rate) {
     out.bound += (std::max(svm, sy_next) - sy_old) * dp;
   }
   out.eps_p = eps_p;
-  const double r = rate > p.eps_dot0 ? 1.0 + p.c * std::log(rate / p.eps_dot0) : 1.0;
-  out.area = r * (p.a * eps_p + p.b * std::pow(eps_p, p.n + 1) / (p.n + 1));
+  const double r = rate > p.jc.eps_dot0 ? 1.0 + p.jc.c * std::log(rate / p.jc.eps_dot0) : 1.0;
+  out.area = r * (p.jc.a * eps_p + p.jc.b * std::pow(eps_p, p.jc.n + 1) / (p.jc.n + 1));
   return out;
 }
 

@@ -412,10 +412,10 @@ TEST_CASE("HEPH hourglass with a law that yields: the hourglass stiffness drops 
   auto jc = [&](double a_y) {
     MaterialParams m = elastic(young, nu, 1.0);
     m.law = radx::model::MaterialLaw::JohnsonCook;
-    m.a = a_y;
-    m.b = 0.0;
-    m.n = 1.0;
-    m.c = 0.0;
+    m.jc.a = a_y;
+    m.jc.b = 0.0;
+    m.jc.n = 1.0;
+    m.jc.c = 0.0;
     return m;
   };
   constexpr double m1[8] = {1, 1, -1, -1, -1, -1, 1, 1};
