@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "io/listing/unit_labels.hpp"
+#include "solver/model/formulations.hpp"
 
 namespace radx::io {
 
@@ -317,6 +318,13 @@ void write_materials(std::ostream& os, const model::Model& m) {
   }
 }
 
+// A formulation flag's value and name; a value radx does not run says so (a property that elements use with
+// it was refused, or substituted under --allow-substitutions, and then holds the value that runs).
+std::string formulation_text(int value, const std::string& name, bool runs) {
+  return std::to_string(value) + ": " + name +
+         (runs ? "" : " (not run by radx: refused where elements use it)");
+}
+
 // Each property with its formulation.
 void write_properties(std::ostream& os, const model::Model& m) {
   heading(os, "PROPERTIES");
@@ -324,15 +332,19 @@ void write_properties(std::ostream& os, const model::Model& m) {
     os << "  property " << p.id << " \"" << p.title << "\"  ";
     if (p.kind == model::PropertyKind::Shell) {
       const auto& s = p.shell;
-      os << "/PROP/SHELL\n    Ishell " << s.ishell << ": " << shell_formulation(s.ishell) << "\n    Ish3n "
-         << s.ish3n << ": " << shell3_formulation(s.ish3n) << "\n    thickness " << s.thickness << "  N "
-         << s.n_ip << "  Hm " << s.hm << "  Hf " << s.hf << "  Hr " << s.hr << "  Ashear " << s.ashear
-         << "  Ismstr " << s.ismstr << "  Ithick " << s.ithick << "  Iplas " << s.iplas << '\n';
+      os << "/PROP/SHELL\n    Ishell "
+         << formulation_text(s.ishell, model::ishell_name(s.ishell), model::runs_ishell(s.ishell))
+         << "\n    Ish3n "
+         << formulation_text(s.ish3n, model::ish3n_name(s.ish3n), model::runs_ish3n(s.ish3n))
+         << "\n    thickness " << s.thickness << "  N " << s.n_ip << "  Hm " << s.hm << "  Hf " << s.hf
+         << "  Hr " << s.hr << "  Ashear " << s.ashear << "  Ismstr " << s.ismstr << "  Ithick " << s.ithick
+         << "  Iplas " << s.iplas << '\n';
     } else {
       const auto& s = p.solid;
-      os << "/PROP/SOLID\n    Isolid " << s.isolid << ": " << solid_formulation(s.isolid) << "\n    qa "
-         << s.qa << "  qb " << s.qb << "  h " << s.h << "  Ismstr " << s.ismstr << "  Iframe " << s.iframe
-         << '\n';
+      os << "/PROP/SOLID\n    Isolid "
+         << formulation_text(s.isolid, model::isolid_name(s.isolid), model::runs_isolid(s.isolid))
+         << "\n    qa " << s.qa << "  qb " << s.qb << "  h " << s.h << "  Ismstr " << s.ismstr << "  Iframe "
+         << s.iframe << '\n';
       if (m.tetras.size() > 0)
         os << "    Itetra4 " << s.itetra4
            << ": 4-node tetrahedron, one point, constant strain, no hourglass (for its tetrahedra)\n";
@@ -463,43 +475,6 @@ void write_diagnostics(std::ostream& os, const StarterListingInput& in) {
 }
 
 }  // namespace
-
-std::string shell_formulation(int ishell) {
-  switch (ishell) {
-    case 1: return "Belytschko-Tsay Q4, one point, viscous hourglass (Hm, Hf, Hr)";
-    case 2:
-      return "Q4 with Hallquist hourglass -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-    case 3:
-      return "Q4 elasto-plastic hourglass -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-    case 4: return "Q4 improved type 1 -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-    case 12: return "QBAT -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-    case 24: return "QEPH -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-    default:
-      return "Ishell " + std::to_string(ishell) +
-             " -> radx uses Belytschko-Tsay Q4, one point, viscous hourglass";
-  }
-}
-
-std::string shell3_formulation(int ish3n) {
-  switch (ish3n) {
-    case 1: return "C0 triangle";
-    case 2: return "C0 triangle with large-rotation correction -> radx uses the C0 triangle";
-    default: return "Ish3n " + std::to_string(ish3n) + " -> radx uses the C0 triangle";
-  }
-}
-
-std::string solid_formulation(int isolid) {
-  switch (isolid) {
-    case 1: return "8-node brick, one point, Flanagan-Belytschko viscous hourglass (h)";
-    case 2:
-      return "8-node brick, Hallquist hourglass -> radx uses one point, Flanagan-Belytschko viscous "
-             "hourglass";
-    default:
-      return "Isolid " + std::to_string(isolid) +
-             " -> radx uses the 8-node brick, one point, Flanagan-Belytschko "
-             "viscous hourglass";
-  }
-}
 
 void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
   const model::Model& m = *in.model;

@@ -27,9 +27,4 @@ struct StarterListingInput {
 
 void write_starter_listing(std::ostream& os, const StarterListingInput& in);
 
-// The formulation radx uses for a shell Ishell / 3-node Ish3n / solid Isolid value, in words.
-std::string shell_formulation(int ishell);
-std::string shell3_formulation(int ish3n);
-std::string solid_formulation(int isolid);
-
 }  // namespace radx::io

@@ -33,47 +33,11 @@
 
 #include "parser/building/model_builder.hpp"
 #include "parser/reading/field_parse.hpp"
+#include "solver/model/formulations.hpp"
 
 namespace radx::detail {
 
 namespace {
-
-std::string ishell_name(int v) {
-  switch (v) {
-    case 1: return "Belytschko-Tsay with viscous and elastic hourglass";
-    case 2: return "Belytschko-Tsay with the plain hourglass vector";
-    case 3: return "Belytschko-Tsay with elasto-plastic hourglass";
-    case 4: return "improved Belytschko-Tsay with warping";
-    case 12: return "QBAT, four Gauss points";
-    case 24: return "QEPH, physical hourglass";
-    default: return v < 0 ? "automatic choice" : "formulation " + std::to_string(v);
-  }
-}
-
-std::string ish3n_name(int v) {
-  switch (v) {
-    case 1: return "C0 without the second large-rotation term";
-    case 2: return "C0";
-    case 30: return "DKT18";
-    case 31: return "DKT_S3";
-    default: return v < 0 ? "automatic choice" : "formulation " + std::to_string(v);
-  }
-}
-
-std::string isolid_name(int v) {
-  switch (v) {
-    case 1: return "one point, Flanagan-Belytschko viscous hourglass";
-    case 2: return "one point, plain hourglass vectors";
-    case 12: return "S8 fully integrated (old)";
-    case 14: return "HA8, fully integrated";
-    case 15: return "HSEPH thick shell";
-    case 16: return "20-node quadratic";
-    case 17: return "H8C, fully integrated with constant pressure";
-    case 18: return "H8D, fully integrated";
-    case 24: return "HEPH, physical hourglass";
-    default: return v < 0 ? "automatic choice" : "formulation " + std::to_string(v);
-  }
-}
 
 std::string ismstr_name(int v) {
   switch (v) {
@@ -202,15 +166,15 @@ void check_spring_flags(const PropertyFlags& p, model::Property& prop) {
 // /PROP/SHELL: Ishell where quadrangles use it, Ish3n where triangles do, and Ismstr.
 void check_shell_flags(const PropertyFlags& p, model::ShellProperty& s) {
   if (p.used & kQuad) {
-    check_flag(p, "Ishell", s.ishell, s.ishell == 1 || s.ishell == 4 || s.ishell == 12 || s.ishell == 24, 1,
-               ishell_name(s.ishell), ishell_name(1), "4-node shells");
+    check_flag(p, "Ishell", s.ishell, model::runs_ishell(s.ishell), 1, model::ishell_name(s.ishell),
+               model::ishell_name(1), "4-node shells");
     // A substituted formulation runs with its own defaults: Ishell 3's hourglass coefficients are not
     // 1's.
     ModelBuilder::shell_hourglass_defaults(p.rec, s);
   }
   if (p.used & kTri)
-    check_flag(p, "Ish3n", s.ish3n, s.ish3n == 1 || s.ish3n == 2, 2, ish3n_name(s.ish3n), ish3n_name(2),
-               "3-node shells");
+    check_flag(p, "Ish3n", s.ish3n, model::runs_ish3n(s.ish3n), 2, model::ish3n_name(s.ish3n),
+               model::ish3n_name(2), "3-node shells");
   check_flag(p, "Ismstr", s.ismstr, s.ismstr == 1 || s.ismstr == 2, 2, ismstr_name(s.ismstr), ismstr_name(2),
              "shells");
 }
@@ -245,9 +209,8 @@ void check_tetra_flags(const PropertyFlags& p, model::SolidProperty& s) {
 
 // /PROP/SOLID where bricks use it: Isolid, HA8's Inpts, HEPH's Icpre and Ihkt, Ismstr, Iframe and Icontrol.
 void check_brick_flags(const PropertyFlags& p, model::SolidProperty& s) {
-  const bool full = s.isolid == 12 || s.isolid == 14 || s.isolid == 17 || s.isolid == 18;
-  check_flag(p, "Isolid", s.isolid, s.isolid == 1 || s.isolid == 2 || s.isolid == 24 || full, 1,
-             isolid_name(s.isolid), isolid_name(1), "bricks");
+  check_flag(p, "Isolid", s.isolid, model::runs_isolid(s.isolid), 1, model::isolid_name(s.isolid),
+             model::isolid_name(1), "bricks");
   if (s.isolid == 14)  // HA8 reads Inpts; radx implements its default 2 x 2 x 2 (222)
     check_flag(p, "Inpts", s.inpts, s.inpts == 0 || s.inpts == 222, 222,
                "integration points " + std::to_string(s.inpts), "2 x 2 x 2 Gauss points", "bricks");
