@@ -186,7 +186,7 @@ void write_starter_outputs(const StarterOptions& opt, const Deck& deck, const mo
         echo = echo_keyword(rec);
     li.interface_echo.push_back(std::move(echo));
   }
-  for (const auto& d : diags.items()) li.diagnostics.push_back(Diagnostics::format(d));
+  li.diagnostics = diags.lines();
   li.errors = res.errors;
   li.warnings = res.warnings;
   li.model_file = res.model_path;

@@ -38,9 +38,24 @@ REAL_RE = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([EeDd][+-]?\d+|[+-]\d+)?$")
 INT_RE = re.compile(r"^[+-]?\d+$")
 EXPECT_RE = re.compile(r"^#\s*expect:\s*(RX\d{3})\s+line\s+(\d+)(?:\s+file\s+(\S+))?(?:\s+warning)?\s*$")
 
-MASS_UNITS = {"kg", "g", "mg", "Mg", "t", "lb"}
-LENGTH_UNITS = {"m", "mm", "cm", "km", "um", "mum", "in", "ft"}
-TIME_UNITS = {"s", "ms", "mus", "us", "ns", "min", "h"}
+SI_PREFIXES = {"y", "z", "a", "f", "p", "n", "u", "mu", "\u00b5", "\u03bc", "m", "c", "d", "", "da", "h", "k", "K",
+               "M", "G", "T", "P", "E", "Z", "Y"}
+
+
+class Units:
+    """Unit names of one kind as Radioss reads them: an SI prefix before the base unit, and the names radx
+    also reads (t, lb, in, ft, min, h)."""
+
+    def __init__(self, base, extra):
+        self.base, self.extra = base, extra
+
+    def __contains__(self, name):
+        return name in self.extra or (name.endswith(self.base) and name[:-1] in SI_PREFIXES)
+
+
+MASS_UNITS = Units("g", {"t", "ton", "lb"})
+LENGTH_UNITS = Units("m", {"in", "ft"})
+TIME_UNITS = Units("s", {"min", "h"})
 
 # Radioss keyword roots radx does not read: "not supported" (RX302) rather than unknown (RX301).
 UNSUPPORTED_ROOTS = ("/MAT/", "/PROP/", "/INTER/", "/BEAM", "/TRUSS", "/RBE2", "/RBE3", "/MONVOL",
@@ -50,6 +65,11 @@ UNSUPPORTED_ROOTS = ("/MAT/", "/PROP/", "/INTER/", "/BEAM", "/TRUSS", "/RBE2", "
                      "/TH/", "/ALE/", "/EBCS", "/VISC/", "/ANIM/", "/AMS", "/CAA", "/XREF", "/REFSTA",
                      "/FUNCT_PYTHON", "/ACTIV", "/LEAK", "/DFS", "/INIGRAV", "/INIMAP1D", "/INIMAP2D", "/PERTURB",
                      "/STATE")
+# Radioss keywords radx does not read, matched as whole words (/DT and /DT/..., not /DTX).
+UNSUPPORTED_WORDS = ("/CONVEC", "/RADIATION", "/IMPFLUX", "/IMPTEMP", "/THERM_STRESS", "/HEAT", "/INITEMP",
+                     "/ANIM", "/PRINT", "/PARITH", "/DT", "/RUN", "/STOP", "/RFILE", "/EIG", "/STAMPING", "/NBCS",
+                     "/CLOAD", "/UPWIND", "/EXTERN", "/NONLOCAL", "/SPHGLO", "/MADYMO", "/INCLUDE",
+                     "/INCLUDE_LS-DYNA", "/MONVOL", "/IMPL", "/IMPLICIT", "/H3D")
 
 
 def F(name, typ, a, b):
@@ -941,7 +961,7 @@ class Checker:
         self.style.append(Issue("STYLE", file, line, msg))
 
     # ---- files and includes
-    def load(self, path, display, stack, out):
+    def load(self, path, display, stack, out, top=True):
         try:
             with open(path, "rb") as f:
                 raw = f.read()
@@ -953,8 +973,20 @@ class Checker:
             lines.pop()
         for k, ln in enumerate(lines, 1):
             ln = ln.rstrip("\r")
+            # an included file ends at its /END or #enddata (Radioss reads the /END as #enddata); a warning
+            # when lines that are not comments follow
+            if not top and (ln.rstrip().replace(" ", "").upper() == "/END" or ln.lower().startswith("#enddata")):
+                if ln.startswith("/"):
+                    self.ended_in_include = True
+                if any(x.strip() and not is_comment(x.strip()) for x in lines[k:]):
+                    self.issue("RX108", display, k, "%s ends the included file; lines after it are not read" %
+                               ln.strip())
+                break
             if ln.lower().startswith("#include"):
-                name = ln[8:].strip()
+                name = ln[8:].strip().replace("'", "")
+                if len(name) >= 2 and name[0] == name[-1] == '"':
+                    name = name[1:-1]
+                    self.issue("RX109", display, k, "double-quoted include name (OpenRadioss does not read it)")
                 target = os.path.normpath(os.path.join(os.path.dirname(path), name))
                 tdisp = os.path.normpath(os.path.join(os.path.dirname(display), name))
                 if os.path.abspath(target) in stack:
@@ -963,7 +995,7 @@ class Checker:
                 if not os.path.exists(target):
                     self.issue("RX103", display, k, "include file not found: %s" % name)
                     continue
-                self.load(target, tdisp, stack + [os.path.abspath(target)], out)
+                self.load(target, tdisp, stack + [os.path.abspath(target)], out, top=False)
                 continue
             out.append((display, k, ln))
         return True
@@ -1115,7 +1147,9 @@ class Checker:
                 j += 1
             if path is None:
                 written = "/" + "/".join(parts)
-                if any(written.startswith(u) for u in UNSUPPORTED_ROOTS):
+                if any(written.startswith(u) for u in UNSUPPORTED_ROOTS) or \
+                        any(written == u or written.startswith(u + "/") for u in UNSUPPORTED_WORDS) or \
+                        (written.startswith("/INCLUDE") and not written.startswith("/INCLUDE_")):
                     self.issue("RX302", file, lineno, "keyword %s is not supported" % written)
                 else:
                     self.issue("RX301", file, lineno, "unknown keyword %s" % written)
@@ -1123,7 +1157,7 @@ class Checker:
                 continue
             self.keyword(model, path, rest, recs[i], block, version)
             i = j
-        if not end_seen and not fragment:
+        if not end_seen and not fragment and not getattr(self, "ended_in_include", False):
             self.issue("RX106", mainfile, last_line, "no /END")
         for o in self.open_subs:
             self.issue("RX312", o["pos"][0], o["pos"][1], "//SUBMODEL %d has no //ENDSUB" % o["id"])
@@ -1147,7 +1181,12 @@ class Checker:
             if v > 90:
                 self.warn(file, lineno, "%s is ignored in a deck of version %d (units are /BEGIN cards)" % (path, v))
         if header in ("id", "part"):
-            if not rest or not INT_RE.match(rest[0]):
+            if not rest and path.startswith("/INTER/"):
+                # an interface with no id is interface 1, as OpenRadioss reads it (RX508 warning)
+                self.issue("RX508", file, lineno, "%s has no id: read as interface 1" % path)
+                rest = ["1"]
+                oid = 1
+            elif not rest or not INT_RE.match(rest[0]):
                 self.issue("RX306", file, lineno, "%s needs an id" % path)
             else:
                 oid = int(rest[0])

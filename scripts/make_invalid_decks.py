@@ -274,7 +274,67 @@ def _():
     text = node_line(2, 10.0, 0.0, 0.0)
     assert text[10] == " "
     d.set("NODE_2", text[:10] + "\t" + text[11:])
-    return d, "node 2: a tab character in column 11 (first column of X)", [("RX104", "NODE_2")]
+    return d, "node 2: a tab character in column 11 (first column of X), read as one blank column as Radioss " \
+        "reads it (a warning)", [("RX104 warning", "NODE_2")]
+
+
+@fault("tab_separated_ids")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", [("/GRNOD/NODE/7", "TG_KW"), "Ids separated by tabs", ("         4\t5\t6", "TG_IDS")])
+    return d, "/GRNOD/NODE/7 lists 4, then '<tab>5<tab>6' in the second 10-column cell (a tab is one column): " \
+        "Radioss reads only id 5 there and drops 6, radx refuses it", [("RX104 warning", "TG_IDS"),
+                                                                      ("RX201", "TG_IDS")]
+
+
+@fault("end_in_include")
+def _():
+    d = base()
+    d.delete("EL_KW", "EL.nu")
+    d.insert_before("AFTER_MATS", [("#include inc/end_in_include.rad", "INC")])
+    b = Deck()
+    b.add("# Included by end_in_include.rad. Holds /MAT/LAW1/2, then an /END that ends this file only (as")
+    b.add("# Radioss reads it); the keyword after it is not read.")
+    b.extend(law1(2, "EL"))
+    b.add("/END", "INC_END")
+    b.extend(FOOBAR)
+    return d, "inc/end_in_include.rad ends with /END then /FOOBAR/1: the /END ends that file only (a warning), " \
+        "the deck goes on", [("RX108 warning", "INC_END", "inc/end_in_include.rad")], \
+        {"inc/end_in_include.rad": b}
+
+
+@fault("include_double_quoted")
+def _():
+    d = base()
+    d.delete("EL_KW", "EL.nu")
+    d.insert_before("AFTER_MATS", [('#include "inc/include_double_quoted.rad"', "INC")])
+    b = Deck()
+    b.add("# Included by include_double_quoted.rad with a double-quoted name, which OpenRadioss does not read.")
+    b.extend(law1(2, "EL"))
+    return d, "#include with a double-quoted name: radx reads it, OpenRadioss does not (a warning)", \
+        [("RX109 warning", "INC")], {"inc/include_double_quoted.rad": b}
+
+
+@fault("slash_include")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", [("/INCLUDE", "SI_KW"), "inc/no_such_file.rad"])
+    return d, "/INCLUDE is not how Radioss includes a file (OpenRadioss skips it)", [("RX302", "SI_KW")]
+
+
+@fault("inter_without_id")
+def _():
+    d = with_inter(base())
+    d.set("INT_KW", "/INTER/TYPE7")
+    return d, "/INTER/TYPE7 written without its id: read as interface 1, the id OpenRadioss gives it (a warning)", \
+        [("RX508 warning", "INT_KW")]
+
+
+@fault("convec_unsupported")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", [("/CONVEC/1", "CV_KW"), "Convection", "         1         0"])
+    return d, "/CONVEC/1, a Radioss thermal keyword radx does not implement", [("RX302", "CV_KW")]
 
 
 FOOBAR = [("/FOOBAR/1", "BAD_KW"), "Not a Radioss keyword", "         1         2"]

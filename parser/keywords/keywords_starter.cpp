@@ -2372,7 +2372,12 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/DT/BRICK/DEL", "/DT/BRICK/STOP", "/DT/SHELL/DEL", "/DT/SHELL/STOP", "/DT/SH_3N/DEL", "/DT/SH3N/DEL",
         "/DT/NODA/STOP", "/DT/NODA/KILL", "/DT/NODA/SET", "/DT/INTER/STOP", "/DT/AMS", "/ATFILE", "/H3D",
         "/OUTP", "/DEL", "/KILL", "/CHKPT", "/ANIM/SHELL", "/ANIM/BRICK", "/ANIM/MASS", "/DYREL", "/ADYREL",
-        "/IMPL", "/MON/FULL"};
+        "/IMPL", "/MON/FULL",
+        // thermal analysis
+        "/CONVEC", "/RADIATION", "/IMPFLUX", "/THERM_STRESS",
+        // engine keywords written in a starter deck, and starter options radx lacks
+        "/ANIM", "/PRINT", "/PARITH", "/DT", "/RUN", "/STOP", "/RFILE", "/EIG", "/STAMPING", "/NBCS",
+        "/CLOAD", "/UPWIND", "/EXTERN", "/NONLOCAL", "/SPHGLO", "/MADYMO", "/INCLUDE_LS-DYNA"};
   }();
   return roots;
 }

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <deque>
 #include <map>
 #include <sstream>
 #include <unordered_map>
@@ -140,6 +139,14 @@ std::string readable_alternatives(const std::string& path) {
   return "radx reads " + list + " (docs/keywords.md)";
 }
 
+// What a unit of `kind` may be called, for messages.
+std::string unit_names_accepted(char kind) {
+  const std::string prefixes = "an SI prefix (n, u or mu, m, c, d, k, M, G, T, ...) before ";
+  if (kind == 'M') return prefixes + "g (kg, g, mg, Mg, Tg), or t, lb";
+  if (kind == 'L') return prefixes + "m (m, mm, um, km), or in, ft";
+  return prefixes + "s (s, ms, us, ns), or min, h";
+}
+
 std::string_view cell(std::string_view line, int first, int last) {
   const auto f = static_cast<std::size_t>(first - 1);
   if (line.size() <= f) return {};
@@ -212,7 +219,7 @@ class StarterReader {
         }
       }
     }
-    if (end == lines.size()) {
+    if (end == lines.size() && !text_.ended_in_include) {
       const SourcePos p = lines.back().pos;
       diags_.error(Diag::MissingEnd, text_.where(p, 1), About{"/END"},
                    "the deck has no /END line: the file looks truncated; a starter deck ends with /END");
@@ -439,26 +446,21 @@ class StarterReader {
     return out;
   }
 
-  // A tab before a value in a fixed-column line is an error. The line is then read as an editor shows it (tab
-  // stops every 8 columns) only so that later checks do not cascade from it; no model is written anyway.
+  // A tab before a value in a fixed-column line is read as Radioss reads it: one blank column (its field
+  // reader takes the line as written and scans each cell with blanks and tabs alike), not a jump to the next
+  // tab stop. A warning, since an editor showing tab stops shows the values in other columns than the ones
+  // they are read from. Free-format (comma) lines have no columns: their tabs are blanks.
   std::string_view check_tabs(const TextLine& line, const About& about) {
     const auto tab = line.text.find('\t');
     if (tab == std::string_view::npos) return line.text;
     if (line.text.find(',') != std::string_view::npos) return line.text;  // free format: tabs are blanks
     // Tabs among the trailing blanks move no value: the line ends before them (as Radioss reads it).
     if (line.text.find_first_not_of(" \t\r", tab) == std::string_view::npos) return line.text.substr(0, tab);
-    diags_.error(
-        Diag::TabInFixedField, at(line.pos, static_cast<int>(tab) + 1), about,
-        "tab character in a fixed-column line: tabs are rejected in fixed columns because their width "
-        "is ambiguous; replace them with spaces, or write the values comma-separated");
-    std::string& expanded = expanded_.emplace_back();
-    for (char c : line.text) {
-      if (c == '\t')
-        expanded.append(8 - expanded.size() % 8, ' ');
-      else
-        expanded += c;
-    }
-    return expanded;
+    diags_.warning(Diag::TabInFixedField, at(line.pos, static_cast<int>(tab) + 1), about,
+                   "tab character in a fixed-column line: read as one blank column, as Radioss reads it (not "
+                   "as a jump to the next tab stop, which an editor may show); check that each value sits in "
+                   "its columns counting the tab as one character, or write the values comma-separated");
+    return line.text;
   }
 
   void check_width(const TextLine& line, const About& about) {
@@ -544,6 +546,33 @@ class StarterReader {
     t.bad.push_back(diags_.error_count() > errors_before ? 1 : 0);
   }
 
+  // The error for an id-list cell that is not one integer. A cell of several integers apart (ids separated
+  // by blanks or tabs rather than placed in their own cells) is read by Radioss as its first id, the others
+  // dropped without a word; radx refuses it and says so, since a group that silently loses members changes
+  // the model.
+  static std::string bad_id_cell(std::string_view cell) {
+    std::vector<std::string> parts;
+    bool all_ints = true;
+    for (std::string_view rest = cell; !rest.empty();) {
+      const auto e = rest.find_first_of(" \t");
+      const auto part = rest.substr(0, e);
+      std::int64_t v = 0;
+      if (parse_int(part, v) != NumberStatus::Ok) all_ints = false;
+      parts.emplace_back(part);
+      rest = e == std::string_view::npos ? std::string_view{} : trim(rest.substr(e));
+    }
+    std::string shown;
+    for (const auto& p : parts) shown += (shown.empty() ? "" : " ") + p;
+    if (parts.size() > 1 && all_ints) {
+      std::string others;
+      for (std::size_t k = 1; k < parts.size(); ++k) others += (k > 1 ? ", " : "") + parts[k];
+      return "one 10-column cell holds " + std::to_string(parts.size()) + " ids ('" + shown +
+             "', blank- or tab-separated): Radioss reads only the first (" + parts[0] + ") and drops " +
+             others + " without a word; give each id its own 10-column cell, or separate the ids with commas";
+    }
+    return "'" + shown + "' is not an id; ids are integers, 10 per line in 10-column cells";
+  }
+
   void read_ids(KeywordRecord& rec, const TextLine& line, const About& about) {
     const std::string_view text = check_tabs(line, about);
     const bool free = text.find(',') != std::string_view::npos;
@@ -553,9 +582,7 @@ class StarterReader {
       const auto st = parse_int(raw, v);
       if (st == NumberStatus::Blank) return;
       if (st != NumberStatus::Ok) {
-        diags_.error(Diag::BadInteger, at(line.pos, col), about,
-                     "'" + std::string(trim(raw)) +
-                         "' is not an id; ids are integers, 10 per line in 10-column cells");
+        diags_.error(Diag::BadInteger, at(line.pos, col), about, bad_id_cell(trim(raw)));
         return;
       }
       if (v == 0) return;
@@ -633,7 +660,13 @@ class StarterReader {
     std::int64_t written_id = 0;
     if (n < tokens.size() && parse_int(tokens[n], written_id) != NumberStatus::Ok) written_id = 0;
     if (written_id != 0) deck_.unread.push_back({path, written_id, head.pos});
-    if (is_known_unsupported(path)) {
+    // `/INCLUDE name` on one line reads as /INCLUDENAME (blanks in keyword fields are dropped).
+    if (path.starts_with("/INCLUDE") && !path.starts_with("/INCLUDE_")) {
+      diags_.error(
+          Diag::UnsupportedKeyword, at(head.pos, 1), About{"/INCLUDE"},
+          "/INCLUDE does not include a file in Radioss: OpenRadioss skips the line and does not read "
+          "the file; write '#include FILE' (FILE relative to this file, no quotes or in single quotes)");
+    } else if (is_known_unsupported(path)) {
       diags_.error(
           Diag::UnsupportedKeyword, at(head.pos, 1), About{path, written_id},
           "the Radioss keyword " + path + " is not supported by radx; " + readable_alternatives(path));
@@ -721,6 +754,15 @@ class StarterReader {
     }
     const bool needs_id =
         decl.header == Header::IdUnit || decl.header == Header::Id || decl.header == Header::PartId;
+    // An interface written without its id (/INTER/TYPE7) is read by OpenRadioss as interface 1; radx does the
+    // same and says so (a second interface 1 is then a duplicate id, as in Radioss).
+    if (header_ok && needs_id && header.empty() && std::string_view(decl.path).starts_with("/INTER/")) {
+      diags_.warning(Diag::DefaultApplied, at(head.pos, 1), About{decl.path, 1},
+                     std::string(decl.path) + " has no interface id in the keyword line: it is read as " +
+                         std::string(decl.path) + "/1, the id OpenRadioss gives it; write " +
+                         header_help(decl));
+      header.push_back(1);
+    }
     if (header_ok && needs_id && (header.empty() || header[0] <= 0)) {
       diags_.error(Diag::BadHeader, at(head.pos, 1), About{decl.path},
                    std::string(decl.path) + " needs a positive " + std::string(decl.id_name) +
@@ -1025,10 +1067,7 @@ class StarterReader {
                          std::string(kind == 'M'   ? "mass"
                                      : kind == 'L' ? "length"
                                                    : "time") +
-                         " unit '" + text + "'; accepted: " +
-                         (kind == 'M'   ? "kg, g, mg, Mg (or t), lb"
-                          : kind == 'L' ? "m, cm, mm, um (or mum), km, in, ft"
-                                        : "s, ms, us (or mus), ns, min, h") +
+                         " unit '" + text + "'; accepted: " + unit_names_accepted(kind) +
                          ", or a numeric factor to SI");
         ok = false;
         return;
@@ -1078,10 +1117,7 @@ class StarterReader {
       const auto f = unit_factor(r.header_word, kind);
       if (!f) {
         diags_.error(Diag::BadUnit, at(r.pos, 1), about,
-                     "unknown unit '" + r.header_word + "'; accepted: " +
-                         (kind == 'M'   ? "kg, g, mg, Mg (or t), lb"
-                          : kind == 'L' ? "m, cm, mm, um (or mum), km, in, ft"
-                                        : "s, ms, us (or mus), ns, min, h") +
+                     "unknown unit '" + r.header_word + "'; accepted: " + unit_names_accepted(kind) +
                          ", or a numeric factor to SI");
         continue;
       }
@@ -1156,8 +1192,7 @@ class StarterReader {
   DeckText& text_;
   Diagnostics& diags_;
   Deck& deck_;
-  std::vector<std::int32_t> open_;    // the open //SUBMODELs, innermost last (indices into deck_.submodels)
-  std::deque<std::string> expanded_;  // tab-expanded copies of rejected lines (stable addresses)
+  std::vector<std::int32_t> open_;  // the open //SUBMODELs, innermost last (indices into deck_.submodels)
 };
 
 std::size_t one_file_start(const DeckText& text) {
@@ -1170,28 +1205,40 @@ std::size_t one_file_start(const DeckText& text) {
 
 }  // namespace
 
+// A unit name as Radioss reads it: an SI prefix (y z a f p n u or mu or the Greek mu, m c d, da h k K M G T P
+// E Z Y, or none) before the base unit of the kind (g for mass, m for length, s for time). radx also reads a
+// few names Radioss does not (t, ton, lb, in, ft, min, h as the hour) and a numeric factor to SI.
 std::optional<double> unit_factor(std::string_view name, char kind) {
   name = trim(name);
   struct U {
     std::string_view n;
     double f;
   };
-  static const U mass[] = {{"kg", 1.0}, {"g", 1e-3},  {"mg", 1e-6},      {"Mg", 1e3},
-                           {"t", 1e3},  {"ton", 1e3}, {"lb", 0.45359237}};
-  static const U length[] = {{"m", 1.0},  {"cm", 1e-2},   {"mm", 1e-3},   {"um", 1e-6}, {"mum", 1e-6},
-                             {"km", 1e3}, {"in", 0.0254}, {"ft", 0.3048}, {"dm", 0.1}};
-  static const U time[] = {{"s", 1.0},   {"ms", 1e-3}, {"us", 1e-6}, {"mus", 1e-6},
-                           {"ns", 1e-9}, {"min", 60.}, {"h", 3600.}};
+  static const U extra_mass[] = {{"t", 1e3}, {"ton", 1e3}, {"lb", 0.45359237}};
+  static const U extra_length[] = {{"in", 0.0254}, {"ft", 0.3048}};
+  static const U extra_time[] = {{"min", 60.}, {"h", 3600.}};
   auto look = [&](const auto& table) -> std::optional<double> {
     for (const auto& u : table)
       if (u.n == name) return u.f;
     return std::nullopt;
   };
   std::optional<double> f;
-  if (kind == 'M') f = look(mass);
-  if (kind == 'L') f = look(length);
-  if (kind == 'T') f = look(time);
+  if (kind == 'M') f = look(extra_mass);
+  if (kind == 'L') f = look(extra_length);
+  if (kind == 'T') f = look(extra_time);
   if (f) return f;
+  const char base = kind == 'M' ? 'g' : kind == 'L' ? 'm' : 's';
+  if (!name.empty() && name.back() == base) {
+    static const U prefixes[] = {
+        {"y", 1e-24}, {"z", 1e-21}, {"a", 1e-18}, {"f", 1e-15},       {"p", 1e-12},
+        {"n", 1e-9},  {"u", 1e-6},  {"mu", 1e-6}, {"\xc2\xb5", 1e-6}, {"\xce\xbc", 1e-6},
+        {"m", 1e-3},  {"c", 1e-2},  {"d", 1e-1},  {"", 1.0},          {"da", 1e1},
+        {"h", 1e2},   {"k", 1e3},   {"K", 1e3},   {"M", 1e6},         {"G", 1e9},
+        {"T", 1e12},  {"P", 1e15},  {"E", 1e18},  {"Z", 1e21},        {"Y", 1e24}};
+    const std::string_view prefix = name.substr(0, name.size() - 1);
+    for (const auto& p : prefixes)
+      if (p.n == prefix) return kind == 'M' ? p.f * 1e-3 : p.f;  // the SI mass unit is the kg, not the g
+  }
   double v = 0;
   if (parse_real(name, v) == NumberStatus::Ok && v > 0) return v;
   return std::nullopt;

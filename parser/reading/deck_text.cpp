@@ -1,5 +1,7 @@
 #include "parser/reading/deck_text.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -98,6 +100,10 @@ class Loader {
     out_.buffers.push_back(std::make_unique<std::string>(std::move(content)));
     const std::string_view text = *out_.buffers.back();
     stack_.push_back(canon);
+    if (top) {
+      top_path_ = path;
+      top_display_ = display;
+    }
 
     std::size_t start = 0;
     std::uint32_t line_no = 0;
@@ -109,22 +115,16 @@ class Loader {
       ++line_no;
       while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.remove_suffix(1);
       const SourcePos pos{file_index, line_no};
+      // Radioss ends an included file at its /END (taken for #enddata) or #enddata; in the main file
+      // #enddata is a comment and /END is the starter's business.
+      if (!top && (is_end_line(line) || starts_with_nocase(line, "#enddata"))) {
+        report_file_end(line, pos, text.substr(std::min(start, text.size())), included_from);
+        if (line.front() == '/') out_.ended_in_include = true;
+        break;
+      }
       if (!line.empty() && (line.front() == '#' || line.front() == '$')) {
-        if (line.rfind("#include", 0) == 0) {
-          std::string name(trim(line.substr(8)));
-          if (name.size() >= 2 && (name.front() == '"' || name.front() == '\'') &&
-              name.back() == name.front())
-            name = name.substr(1, name.size() - 2);
-          if (name.empty()) {
-            diags_.error(Diag::IncludeNotFound, out_.where(pos, 1), About{"#include"},
-                         "#include needs a file name after it");
-            continue;
-          }
-          const fs::path inc = path.parent_path() / name;
-          const std::string inc_display =
-              (fs::path(display).parent_path() / name).lexically_normal().string();
-          load(inc, inc_display, pos, false);
-        }
+        // Radioss takes `#include` in any case (#INCLUDE, #Include) as the include line.
+        if (starts_with_nocase(line, "#include")) include(line.substr(8), path, display, pos);
         continue;  // comment line
       }
       out_.lines.push_back(TextLine{line, pos});
@@ -134,9 +134,89 @@ class Loader {
   }
 
  private:
+  static bool starts_with_nocase(std::string_view line, std::string_view word) {
+    if (line.size() < word.size()) return false;
+    for (std::size_t k = 0; k < word.size(); ++k)
+      if (std::tolower(static_cast<unsigned char>(line[k])) != word[k]) return false;
+    return true;
+  }
+
+  static bool is_end_line(std::string_view line) {
+    if (line.empty() || line.front() != '/') return false;
+    const auto tokens = keyword_fields(line);
+    return tokens.size() == 1 && tokens[0] == "END";
+  }
+
+  // The /END or #enddata of an included file: a note when nothing follows it, a warning naming what is not
+  // read when something does.
+  void report_file_end(std::string_view line, SourcePos pos, std::string_view rest, SourcePos included_from) {
+    std::size_t dropped = 0;
+    std::size_t first_dropped = 0;
+    std::uint32_t k = pos.line;
+    for (std::size_t at = 0; at < rest.size();) {
+      std::size_t e = rest.find('\n', at);
+      if (e == std::string_view::npos) e = rest.size();
+      const std::string_view l = trim(rest.substr(at, e - at));
+      ++k;
+      if (!l.empty() && l.front() != '#' && l.front() != '$' && dropped++ == 0) first_dropped = k;
+      at = e + 1;
+    }
+    const std::string what = line.front() == '/' ? "/END" : "#enddata";
+    const std::string where_back =
+        out_.files.at(included_from.file) + ":" + std::to_string(included_from.line);
+    std::string msg = what + " in an included file ends that file only, as Radioss reads it" +
+                      (what == "/END" ? std::string(" (it takes it for #enddata)") : std::string()) +
+                      ": the deck goes on after the #include line at " + where_back;
+    if (dropped == 0) {
+      diags_.note(Diag::IncludedFileEnded, out_.where(pos, 1), About{what}, msg);
+    } else {
+      diags_.warning(Diag::IncludedFileEnded, out_.where(pos, 1), About{what},
+                     msg + "; the " + std::to_string(dropped) +
+                         " data or keyword line(s) after it in this file " + "(from line " +
+                         std::to_string(first_dropped) + ") are not read");
+    }
+  }
+
+  // `#include NAME` (what follows the 8 letters in `rest`): the name is read as Radioss reads it, single
+  // quotes taken off, relative to the including file, else to the main deck (Radioss looks there next).
+  void include(std::string_view rest, const fs::path& path, const std::string& display, SourcePos pos) {
+    std::string name(trim(rest));
+    std::erase(name, '\'');
+    if (name.size() >= 2 && name.front() == '"' && name.back() == '"') {
+      name = name.substr(1, name.size() - 2);
+      diags_.warning(
+          Diag::IncludeForm, out_.where(pos, 1), About{"#include"},
+          "a double-quoted include name: radx reads '" + name +
+              "', OpenRadioss does not (it looks for a file whose name holds the quotes and stops); "
+              "write the name without quotes, or in single quotes, for the deck to run in Radioss");
+    }
+    if (name.empty()) {
+      diags_.error(Diag::IncludeNotFound, out_.where(pos, 1), About{"#include"},
+                   "#include needs a file name after it");
+      return;
+    }
+    fs::path inc = path.parent_path() / name;
+    std::string inc_display = (fs::path(display).parent_path() / name).lexically_normal().string();
+    std::error_code ec;
+    if (!fs::exists(inc, ec) && stack_.size() > 1 && fs::path(name).is_relative()) {
+      const fs::path beside_main = top_path_.parent_path() / name;
+      if (fs::exists(beside_main, ec)) {
+        inc_display = (fs::path(top_display_).parent_path() / name).lexically_normal().string();
+        diags_.note(Diag::IncludeForm, out_.where(pos, 1), About{"#include"},
+                    "'" + name +
+                        "' is not beside the including file; it is read from beside the main deck (" +
+                        inc_display + "), where Radioss looks next");
+        inc = beside_main;
+      }
+    }
+    load(inc, inc_display, pos, false);
+  }
+
   DeckText& out_;
   Diagnostics& diags_;
   std::vector<fs::path> stack_;
+  fs::path top_path_;  // the main deck, where an include not found beside its includer is looked for
+  std::string top_display_;
 };
 
 }  // namespace

@@ -21,6 +21,9 @@ struct DeckText {
   std::vector<std::string> files;                     // display paths
   std::vector<std::unique_ptr<std::string>> buffers;  // file contents; TextLine views point into them
   std::vector<TextLine> lines;
+  // Whether an included file ended at an /END: a deck whose main file only includes the model reaches its
+  // end there, as Radioss reads it, and needs no /END of its own.
+  bool ended_in_include = false;
   [[nodiscard]] Where where(SourcePos p, int column = 0) const {
     return Where{files.at(p.file), static_cast<int>(p.line), column};
   }

@@ -1,6 +1,8 @@
 #include "parser/reading/diagnostics.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <map>
 #include <ostream>
 #include <sstream>
 
@@ -19,10 +21,18 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::FileNotFound, "the deck file cannot be opened"},
       {Diag::IncludeLoop, "an #include chain includes a file that is already being read"},
       {Diag::IncludeNotFound, "an #include names a file that cannot be opened"},
-      {Diag::TabInFixedField, "a tab character in a fixed-column line (tabs are rejected there)"},
+      {Diag::TabInFixedField,
+       "a tab character before a value in a fixed-column line: read as one blank column, as Radioss reads it "
+       "(not as a jump to the next tab stop)"},
       {Diag::MissingBegin, "no /BEGIN line: the starter reads from /BEGIN to /END"},
       {Diag::MissingEnd, "no /END line: the file is truncated"},
       {Diag::NotUtf8OrBinary, "the file holds binary data (NUL bytes)"},
+      {Diag::IncludedFileEnded,
+       "an /END or #enddata line in an included file: it ends that file only, as Radioss reads it, and the "
+       "deck goes on after the #include line"},
+      {Diag::IncludeForm,
+       "an #include read in a way worth knowing: a double-quoted name (OpenRadioss does not read it), or a "
+       "file found beside the main deck rather than beside the including file (where Radioss looks next)"},
       {Diag::BadInteger, "a field that must hold an integer holds something else"},
       {Diag::BadReal, "a field that must hold a real number holds something else"},
       {Diag::RealOverflow, "a real number outside the double-precision range"},
@@ -100,6 +110,8 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::EngineRunNameMismatch, "the /RUN name or number differs from the file name"},
       {Diag::EngineNoEnd,
        "the engine deck has no /END line: it is read to the end of the file, as Radioss does"},
+      {Diag::EngineRestartDecks,
+       "NAME_0002.rad and later beside the engine deck: OpenRadioss restart decks, which radx does not run"},
   };
   return table;
 }
@@ -175,8 +187,63 @@ std::string Diagnostics::format(const Diagnostic& d) {
   return os.str();
 }
 
+namespace {
+
+// What makes two diagnostics one cause: code, severity, keyword and object id, and the message with its
+// numbers and quoted values masked (nodes 12 and 13 missing from one group are one cause; a missing group and
+// a missing material are two, and so are the same warning on two interfaces).
+std::string cause_of(const Diagnostic& d) {
+  std::string key = diag_code(d.code) + static_cast<char>('0' + static_cast<int>(d.severity)) + d.keyword +
+                    '#' + std::to_string(d.id) + '|';
+  bool in_quote = false;
+  bool in_number = false;
+  for (const char c : d.message) {
+    if (c == '\'') {
+      in_quote = !in_quote;
+      key += '\'';
+      continue;
+    }
+    if (in_quote) continue;
+    const bool digit = std::isdigit(static_cast<unsigned char>(c)) != 0;
+    if (digit && !in_number) key += '#';
+    in_number = digit || (in_number && (c == '.' || c == 'e' || c == 'E' || c == '-' || c == '+'));
+    if (!in_number) key += c;
+  }
+  return key;
+}
+
+}  // namespace
+
+std::vector<std::string> Diagnostics::lines() const {
+  std::vector<std::string> out;
+  struct Cause {
+    std::size_t count = 0;
+    const Diagnostic* first = nullptr;
+  };
+  std::map<std::string, Cause> causes;
+  std::vector<const Cause*> capped;
+  for (const auto& d : items_) {
+    Cause& c = causes[cause_of(d)];
+    if (c.count++ == 0) c.first = &d;
+    if (c.count <= kRepeatsShown) out.push_back(format(d));
+    if (c.count == kRepeatsShown + 1) capped.push_back(&c);
+  }
+  for (const Cause* c : capped) {
+    const Diagnostic& d = *c->first;
+    std::string kind = d.severity == Severity::Error     ? "error"
+                       : d.severity == Severity::Warning ? "warning"
+                                                         : "note";
+    // Not in the `file:line: error: RXnnn:` shape: it stands for diagnostics, it is not one.
+    out.push_back("radx: ... and " + std::to_string(c->count - kRepeatsShown) + " more of the same (" +
+                  diag_code(d.code) + " " + kind + "s like the one at " +
+                  (d.file.empty() ? std::string("radx") : d.file) + ":" + std::to_string(d.line) +
+                  ", not shown; " + std::to_string(c->count) + " in all)");
+  }
+  return out;
+}
+
 void Diagnostics::print(std::ostream& os) const {
-  for (const auto& d : items_) os << format(d) << '\n';
+  for (const auto& l : lines()) os << l << '\n';
 }
 
 }  // namespace radx

@@ -26,6 +26,8 @@ enum class Diag : std::uint16_t {
   MissingBegin = 105,
   MissingEnd = 106,
   NotUtf8OrBinary = 107,
+  IncludedFileEnded = 108,
+  IncludeForm = 109,
   // fields
   BadInteger = 201,
   BadReal = 202,
@@ -90,6 +92,7 @@ enum class Diag : std::uint16_t {
   EngineBadLine = 802,
   EngineRunNameMismatch = 803,
   EngineNoEnd = 804,
+  EngineRestartDecks = 805,
 };
 
 // "RX" + number, e.g. RX402. Never changes once released.
@@ -152,6 +155,11 @@ class Diagnostics {
   void sort();
   // `file:line:col: error: RX402: [/PART/3 "title"] message` lines.
   void print(std::ostream& os) const;
+  // The lines print() writes: one per diagnostic, except that one cause repeated (the same code, severity,
+  // keyword and object id, and the same message once its numbers and quoted values are set aside) is shown
+  // kRepeatsShown times, then counted in a closing "... and N more of the same" line. Counts are unchanged.
+  [[nodiscard]] std::vector<std::string> lines() const;
+  static constexpr std::size_t kRepeatsShown = 5;
   static std::string format(const Diagnostic& d);
 
  private:
