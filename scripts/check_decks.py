@@ -64,7 +64,7 @@ UNSUPPORTED_ROOTS = ("/MAT/", "/PROP/", "/INTER/", "/BEAM", "/TRUSS", "/RBE2", "
                      "/GRBRIC", "/LINE", "/MERGE", "/CYL_JOINT", "/IMPDISP", "/IMPACC", "/FXBODY", "/DAMP",
                      "/TH/", "/ALE/", "/EBCS", "/VISC/", "/ANIM/", "/AMS", "/CAA", "/XREF", "/REFSTA",
                      "/FUNCT_PYTHON", "/ACTIV", "/LEAK", "/DFS", "/INIGRAV", "/INIMAP1D", "/INIMAP2D", "/PERTURB",
-                     "/STATE")
+                     "/STATE", "/SET/")
 # Radioss keywords radx does not read, matched as whole words (/DT and /DT/..., not /DTX).
 UNSUPPORTED_WORDS = ("/CONVEC", "/RADIATION", "/IMPFLUX", "/IMPTEMP", "/THERM_STRESS", "/HEAT", "/INITEMP",
                      "/ANIM", "/PRINT", "/PARITH", "/DT", "/RUN", "/STOP", "/RFILE", "/EIG", "/STAMPING", "/NBCS",
@@ -807,7 +807,7 @@ def box_spher(v):
 # title and a list of ids; a unit id may follow the group id on the keyword line.
 GROUP_FAMILIES = {"/GRSHEL": ("/SHELL", "SHEL", "4-node shell"), "/GRSH3N": ("/SH3N", "SH3N", "3-node shell"),
                   "/GRBRIC": ("/BRICK", "BRIC", "brick")}
-GROUP_SUBTYPES = ("PART", "SUBSET", "MAT", "PROP", "BOX", "BOX2")
+GROUP_SUBTYPES = ("PART", "SUBSET", "MAT", "PROP", "BOX", "BOX2", "GENE")
 for _root, (_ekw, _list, _name) in GROUP_FAMILIES.items():
     for _sub in (_list, _root[1:]) + GROUP_SUBTYPES:
         STARTER[_root + "/" + _sub] = ("id", True, lambda v: [], "ids", ID_REC)
@@ -938,8 +938,8 @@ def match_keyword(parts):
 
 
 class Issue:
-    def __init__(self, code, file, line, msg):
-        self.code, self.file, self.line, self.msg = code, file, line, msg
+    def __init__(self, code, file, line, msg, warning=False):
+        self.code, self.file, self.line, self.msg, self.warning = code, file, line, msg, warning
 
     def key(self):
         return (self.code, self.file, self.line)
@@ -954,8 +954,13 @@ class Checker:
         self.style = []  # column/style problems that are not input errors (ruler mismatch, etc.)
         self.verbose = verbose
 
-    def issue(self, code, file, line, msg):
-        self.issues.append(Issue(code, file, line, msg))
+    def issue(self, code, file, line, msg, warning=False):
+        """A problem radx reports; warning=True when it reads the deck anyway (the checks that depend on whether
+        an error was found count the errors only)."""
+        self.issues.append(Issue(code, file, line, msg, warning))
+
+    def errors(self):
+        return sum(1 for x in self.issues if not x.warning)
 
     def warn(self, file, line, msg):
         self.style.append(Issue("STYLE", file, line, msg))
@@ -1683,8 +1688,21 @@ def spring_properties(tables):
             p = pos(o, "fct_ID3" + d)
             I("RX502", p[0], p[1], "spring property %d: H%s = %d needs fct_ID3%s" % (o["id"], d, h, d))
 
-    # springs (build_springs.cpp): mass > 0, K >= 0 (> 0 without damping or with a curve), C >= 0, the curves
-    # exist, failure elongations of the right sign
+    def flat(fid):
+        """The function fid has no slope (a missing one is reported elsewhere: not flat here)."""
+        if fid not in functs:
+            return False
+        pts = [(r.get("X"), r.get("Y") or 0.0) for r, _ in functs[fid]["recs"] if r.get("X") is not None]
+        return not any(b[0] > a[0] and b[1] != a[1] for a, b in zip(pts, pts[1:]))
+
+    def bad_zero_k(o, d):
+        """K = 0 with a force curve: accepted for H = 0 (the curve is the law, its slope gives the step) unless
+        the curve is flat; refused for the other H, which unload or yield with the slope K."""
+        f = val(o, "fct_ID1" + d, 0)
+        return f != 0 and (val(o, "H" + d, 0) != 0 or flat(f))
+
+    # springs (build_springs.cpp): mass > 0, K >= 0 (> 0 without damping and curve), K = 0 with a curve only for
+    # H = 0 and a curve with a slope, C >= 0, the curves exist, failure elongations of the right sign
     for o in props.values():
         if o["path"] not in ("/PROP/SPRING", "/PROP/TYPE4"):
             continue
@@ -1692,7 +1710,8 @@ def spring_properties(tables):
             p = pos(o, "M")
             I("RX501", p[0], p[1], "spring mass %g is not positive" % val(o, "M", 0.0))
         k, c = val(o, "K", 0.0), val(o, "C", 0.0)
-        if k < 0 or (k == 0 and c <= 0 and val(o, "fct_ID4", 0) == 0) or (k == 0 and val(o, "fct_ID1", 0) != 0):
+        if k < 0 or (k == 0 and c <= 0 and val(o, "fct_ID4", 0) == 0 and val(o, "fct_ID1", 0) == 0) or \
+                (k == 0 and bad_zero_k(o, "")):
             p = pos(o, "K")
             I("RX501", p[0], p[1], "spring stiffness %g" % k)
         if c < 0:
@@ -1728,7 +1747,7 @@ def spring_properties(tables):
             I("RX501", p[0], p[1], "spring inertia %g is not positive" % val(o, "Inertia", 0.0))
         for d in "123456":
             k = val(o, "K" + d, 0.0)
-            if k < 0 or (k == 0 and val(o, "fct_ID1" + d, 0) != 0):
+            if k < 0 or (k == 0 and bad_zero_k(o, d)):
                 p = pos(o, "K" + d)
                 I("RX501", p[0], p[1], "spring stiffness K%s %g" % (d, k))
             if val(o, "C" + d, 0.0) < 0:
@@ -1993,18 +2012,21 @@ def groups(tables):
     subsets = by_id(("/SUBSET",), "subset")
     egroups, emembers, surf_nodes, boxes = element_group_checks(ck, m, nodes, placed, place, parts, props, mats,
                                                                 subsets, elements, surfs)
-    node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, elements, egroups, emembers,
-                      surfs, surf_nodes, grnods)
+    tables.grnod_members = node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, elements,
+                                             egroups, emembers, surfs, surf_nodes, grnods)
+    tables.emembers = emembers
     for sid, o in surfs.items():
         if o["path"] not in ("/SURF/PART", "/SURF/PART/EXT"):
             continue  # element_group_checks
-        if not o["ids"]:
-            I("RX403", o["pos"][0], o["pos"][1], "surface %d is empty" % sid)
+        before = ck.errors()
         for x, p in o["ids"]:
             if abs(x) not in parts:
-                I("RX402", p[0], p[1], "surface %d: part %d does not exist" % (sid, x))
+                I("RX402", p[0], p[1], "surface %d: part %d does not exist" % (sid, x), warning=True)
             elif o["path"] == "/SURF/PART" and part_kind.get(abs(x), set()) & {"/BRICK", "/TETRA4"}:
                 I("RX407", p[0], p[1], "surface %d: /SURF/PART on solid part %d" % (sid, x))
+        # empty: a warning, as in Radioss, when nothing else stopped the surface
+        if not surf_nodes.get(sid) and ck.errors() == before:
+            I("RX403", o["pos"][0], o["pos"][1], "surface %d is empty" % sid, warning=True)
 
     # functions
     for fid, o in functs.items():
@@ -2301,9 +2323,10 @@ def interfaces(tables):
     """Contact interfaces /INTER/TYPE7 and /INTER/LAGDT/TYPE7 (build_interfaces.cpp)."""
     I, grnods, inters, need, surfs = tables.issue, tables.grnods, tables.inters, tables.need, tables.surfs
     for iid, o in inters.items():
-        need(o, "grnd_IDs", grnods, "node group", zero_ok=False)
+        # 0: the main surface's nodes are the secondary nodes (a self-contact), as Radioss takes them
+        need(o, "grnd_IDs", grnods, "node group", zero_ok=True)
         need(o, "surf_IDm", surfs, "surface", zero_ok=False)
-        rng = {"Istf": (0, 1, 2, 3, 4, 5), "Igap": (0, 1, 2), "Inacti": (0, 1, 2, 3, 5, 6), "Ifric": (0, 1, 2, 3),
+        rng = {"Istf": (0, 1, 2, 3, 4, 5), "Igap": (0, 1, 2, 1000), "Inacti": (0, 1, 2, 3, 5, 6), "Ifric": (0, 1, 2, 3),
                "Idel": (-2, -1, 0, 1, 2), "Iform": (0, 1, 2), "Ifiltr": (0, 1, 2, 3)}
         for f, allowed in rng.items():
             if val(o, f, 0) not in allowed:
@@ -2394,6 +2417,14 @@ def sections(tables):
             if (root, val(o, f)) not in egroups:
                 p = pos(o, f)
                 I("RX402", p[0], p[1], "/SECT %d: %s group %d does not exist" % (o["id"], root, val(o, f)))
+            elif root == "/GRBRIC":
+                # a brick group's tetrahedra on the cut: radx sums no tetrahedron force in a section
+                cut = tables.grnod_members.get(val(o, "grnod_ID"), set())
+                tetras = tables.elements["/TETRA4"]
+                if any(e in tetras and e not in tables.elements["/BRICK"] and set(tetras[e][1]) & cut
+                       for e in tables.emembers[(root, val(o, f))]):
+                    p = pos(o, f)
+                    I("RX510", p[0], p[1], "/SECT %d: tetrahedra of brick group %d on the cut" % (o["id"], val(o, f)))
     tables.sects = sects
 
 
@@ -2481,8 +2512,12 @@ def time_history(tables):
     for o in m.of("/TH/BRIC", "/TH/BRICK", "/TH/SH3N"):
         kind = "/BRICK" if o["path"] != "/TH/SH3N" else "/SH3N"
         for r, p in o["recs"]:
-            if r.get("elem_ID", r.get("node_ID")) not in elem_ids[kind]:
-                I("RX402", p[0], p[1], "TH %s element %s does not exist" % (kind, r.get("elem_ID", r.get("node_ID"))))
+            eid = r.get("elem_ID", r.get("node_ID"))
+            if kind == "/BRICK" and eid not in elem_ids[kind] and eid in elem_ids["/TETRA4"]:
+                # Radioss records a tetrahedron as a brick; radx writes none (a warning, the run goes on)
+                I("RX311", p[0], p[1], "TH tetrahedron %s is not written" % eid, warning=True)
+            elif eid not in elem_ids[kind]:
+                I("RX402", p[0], p[1], "TH %s element %s does not exist" % (kind, eid))
     for o in m.of("/TH/RBODY"):
         for x, p in o["ids"]:
             if x not in rbodies:
@@ -2511,11 +2546,24 @@ def time_history(tables):
 #   * /SURF/GRSHEL, /SURF/GRSH3N: one segment per element; /SURF/GRBRIC/EXT: brick faces no other brick of the
 #     groups has; /FREE: no other brick at all; bare /SURF/GRBRIC is refused; /SURF/PART/ALL: every brick face
 #     of the parts (a shell of the listed parts on a face replaces it) plus their shells.
-# Errors: RX402 at the id's line, RX507 for a group that reaches itself (at the keyword line of the group found
-# again), RX403 at the keyword line when the result is empty and nothing else went wrong while building it
-# (node groups: whenever empty), RX407 for a bare /SURF/GRBRIC.
+# Errors: RX402 at the id's line (a warning unless it is an element id: the part, group or box is left out, as in
+# Radioss), RX507 for a group that reaches itself (at the keyword line of the group found again), RX403 (a
+# warning) at the keyword line when the result is empty and no error was found while building it (node groups:
+# whenever empty), RX407 for a bare /SURF/GRBRIC. /GRBRIC takes the tetrahedra as bricks; GENE the existing ids
+# of each pair `first last`.
 
 HEX_FACES = ((1, 4, 3, 2), (5, 6, 7, 8), (1, 2, 6, 5), (2, 3, 7, 6), (3, 4, 8, 7), (4, 1, 5, 8))  # 1-based, outward
+TET_FACES = ((1, 2, 3), (1, 2, 4), (2, 3, 4), (1, 3, 4))  # 1-based, as node sets
+
+
+def group_elements(elements, root):
+    """The elements a group of `root` can hold, by id: a brick group takes the tetrahedra too (Radioss stores a
+    tetrahedron as a brick)."""
+    els = dict(elements[GROUP_FAMILIES[root][0]])
+    if root == "/GRBRIC":
+        for e, v in elements["/TETRA4"].items():
+            els.setdefault(e, v)
+    return els
 
 
 # The law string of /CTCLAW, read from docs/theory/contact-laws.md section 4 as a table of laws and their parameters:
@@ -2748,22 +2796,30 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
             I("RX507", o["pos"][0], o["pos"][1], "%s group %d reaches itself" % key)
             return None
         state[key] = 1
-        before = len(ck.issues)
+        before = ck.errors()
         root = key[0]
         ekw, list_kind, name = GROUP_FAMILIES[root]
-        els = elements[ekw]
+        els = group_elements(elements, root)
         kind = o["path"][len(root) + 1:]
         add, rem = set(), set()
 
-        def missing(p, what):
-            I("RX402", p[0], p[1], "%s %d: %s does not exist" % (o["path"], o["id"], what))
+        def missing(p, what, warning=True):
+            # an element id that does not exist stops radx as Radioss; anything else is left out with a warning
+            I("RX402", p[0], p[1], "%s %d: %s does not exist" % (o["path"], o["id"], what), warning=warning)
 
         if kind == list_kind:
             for x, p in o["ids"]:
                 if x <= 0 or x not in els:
-                    missing(p, "%s %d" % (name, x))
+                    missing(p, "%s %d" % (name, x), warning=False)
                 else:
                     add.add(x)
+        elif kind == "GENE":
+            ids = [x for x, _ in o["ids"]]
+            if len(ids) % 2:
+                p = o["ids"][-1][1]
+                I("RX507", p[0], p[1], "%s %d: the last pair 'first last' is incomplete" % (o["path"], o["id"]))
+            for k in range(0, len(ids) - 1, 2):
+                add.update(e for e in els if ids[k] <= e <= ids[k + 1])
         elif kind in ("PART", "SUBSET", "MAT", "PROP"):
             plus, minus = set(), set()
             for x, p in o["ids"]:
@@ -2800,8 +2856,8 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
                     if all(ins) if kind == "BOX" else any(ins):
                         add.add(e)
         res = add - rem
-        if not res and len(ck.issues) == before:
-            I("RX403", o["pos"][0], o["pos"][1], "%s group %d holds no element" % key)
+        if not res and ck.errors() == before:
+            I("RX403", o["pos"][0], o["pos"][1], "%s group %d holds no element" % key, warning=True)
         state[key], members[key] = 2, res
         return res
 
@@ -2809,9 +2865,9 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
         resolve(key)
 
     def faces_of(ns):
-        """Faces of a brick (node ids) with 3 or 4 distinct nodes, as sets."""
+        """Faces of a brick or a tetrahedron (node ids) with 3 or 4 distinct nodes, as sets."""
         out = []
-        for f in HEX_FACES:
+        for f in (HEX_FACES if len(ns) == 8 else TET_FACES):
             d = distinct([ns[k - 1] for k in f])
             if len(d) >= 3:
                 out.append(frozenset(d))
@@ -2829,16 +2885,16 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
             listed = {abs(x) for x, _ in o["ids"]}
             got = shell_nodes(listed)
             if path.endswith("/EXT"):
-                # brick faces no other brick of the listed parts shares
+                # solid faces no other solid of the listed parts shares
                 seen = {}
-                for pid, ns in elements["/BRICK"].values():
+                for pid, ns in list(elements["/BRICK"].values()) + list(elements["/TETRA4"].values()):
                     if pid in listed:
                         for f in set(faces_of(ns)):
                             seen[f] = seen.get(f, 0) + 1
                 got |= {n for f, k in seen.items() if k == 1 for n in f}
             surf_nodes[o["id"]] = got
             continue
-        before = len(ck.issues)
+        before = ck.errors()
         if path == "/SURF/SEG":
             # n4 = 0 makes a triangle (n4 := n3); each of n1 n2 n3 (and a non-zero n4) must exist
             got, count = set(), 0
@@ -2851,8 +2907,8 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
                     got.update(ns)
                     count += 1
             surf_nodes[o["id"]] = got
-            if count == 0 and len(ck.issues) == before:
-                I("RX403", o["pos"][0], o["pos"][1], "/SURF/SEG %d holds no segment" % o["id"])
+            if count == 0 and ck.errors() == before:
+                I("RX403", o["pos"][0], o["pos"][1], "/SURF/SEG %d holds no segment" % o["id"], warning=True)
             continue
         if path not in SURFS_OF_GROUPS + ("/SURF/PART/ALL",):
             continue
@@ -2865,7 +2921,8 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
             listed = set()
             for x, p in o["ids"]:
                 if abs(x) not in parts:
-                    I("RX402", p[0], p[1], "/SURF/PART/ALL %d: part %d does not exist" % (o["id"], abs(x)))
+                    I("RX402", p[0], p[1], "/SURF/PART/ALL %d: part %d does not exist" % (o["id"], abs(x)),
+                      warning=True)
                 else:
                     listed.add(abs(x))
             count = sum(1 for kw in ("/SHELL", "/SH3N") for pid, _ in elements[kw].values() if pid in listed)
@@ -2881,27 +2938,29 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
                     got.update(n for f in faces for n in f)
         else:
             root = "/GR" + path.split("/")[2][2:]
+            solids = group_elements(elements, "/GRBRIC")
             chosen = set()
             for x, p in o["ids"]:
                 if (root, abs(x)) not in groups:
                     I("RX402", p[0], p[1], "%s %d: group %d does not exist" % (path, o["id"], abs(x)))
+                    # (an error in radx: Radioss's handling of a missing group in a surface is not established)
                     continue
                 chosen |= members[(root, abs(x))]
             if root != "/GRBRIC":
                 count = len(chosen)
                 got = {n for e in chosen for n in elements[GROUP_FAMILIES[root][0]][e][1]}
             else:
-                around = chosen if path.endswith("/EXT") else set(elements["/BRICK"])
+                around = chosen if path.endswith("/EXT") else set(solids)
                 seen = {}
                 for e in around:
-                    for f in set(faces_of(elements["/BRICK"][e][1])):
+                    for f in set(faces_of(solids[e][1])):
                         seen[f] = seen.get(f, 0) + 1
-                faces = [f for e in chosen for f in faces_of(elements["/BRICK"][e][1]) if seen[f] == 1]
+                faces = [f for e in chosen for f in faces_of(solids[e][1]) if seen[f] == 1]
                 count = len(faces)
                 got = {n for f in faces for n in f}
         surf_nodes[o["id"]] = got
-        if count == 0 and len(ck.issues) == before:
-            I("RX403", o["pos"][0], o["pos"][1], "%s %d holds no segment" % (path, o["id"]))
+        if count == 0 and ck.errors() == before:
+            I("RX403", o["pos"][0], o["pos"][1], "%s %d holds no segment" % (path, o["id"]), warning=True)
     return groups, members, surf_nodes, boxes
 
 
@@ -2912,12 +2971,11 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
 #   * BOX: the nodes (any node, used or not) inside each listed box, where the boxes see them (after the submodel
 #     transforms, before the node-group ones);
 #   * GENE: every existing node id in each pair `first last` (an odd count is RX507 at the last id's line);
-#     GEN_INCR: first, first + incr, ... up to last (incr 0 or less: 1); a range far wider than the model is
-#     RX501 at the keyword line;
+#     GEN_INCR: first, first + incr, ... up to last (incr 0 or less: 1), however wide the range;
 #   * SUBSET (with child subsets), MAT, PROP: the nodes of the parts' elements; SURF: the surfaces' segment nodes;
 #   * GRSHEL, GRSH3N, GRBRIC: the nodes of the groups' elements, negative ids ignored.
-# An id that names nothing is RX402 at its line; a group left empty is RX403 at the keyword line, whatever else
-# went wrong.
+# An id that names nothing is RX402 at its line (an error for a node id, else a warning: it is left out, as in
+# Radioss); a group left empty is RX403 (a warning) at the keyword line, whatever else went wrong.
 def node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, elements, egroups, emembers,
                       surfs, surf_nodes, grnods):
     I = ck.issue
@@ -2939,7 +2997,9 @@ def node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, 
         add, rem = set(), set()
 
         def missing(p, what):
-            I("RX402", p[0], p[1], "%s %d: %s does not exist" % (o["path"], gid, what))
+            # a node id that does not exist stops radx as Radioss; anything else is left out with a warning
+            I("RX402", p[0], p[1], "%s %d: %s does not exist" % (o["path"], gid, what),
+              warning=not what.startswith("node "))
 
         for x, p in o["ids"]:
             a = abs(x)
@@ -2988,8 +3048,9 @@ def node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, 
                 if (root, x) not in egroups:
                     missing(p, "%s group %d" % (root, x))
                     continue
+                els = group_elements(elements, root)
                 for e in emembers[(root, x)]:
-                    add.update(elements[GROUP_FAMILIES[root][0]][e][1])
+                    add.update(els[e][1])
         ranges = []
         if kind == "GENE":
             ids = [x for x, _ in o["ids"]]
@@ -3000,14 +3061,10 @@ def node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, 
         elif kind == "GEN_INCR":
             ranges = [(r.get("first") or 0, r.get("last") or 0, max(r.get("incr") or 1, 1)) for r, _ in o["recs"]]
         for lo, hi, step in ranges:
-            if hi - lo > 100 * len(nodes) + 1000000:
-                I("RX501", o["pos"][0], o["pos"][1], "%s %d: range %d to %d is far wider than the model" %
-                  (o["path"], gid, lo, hi))
-                continue
             add.update(n for n in nodes if lo <= n <= hi and (n - lo) % step == 0)
         res = add - rem
         if not res:
-            I("RX403", o["pos"][0], o["pos"][1], "%s %d holds no node" % (o["path"], gid))
+            I("RX403", o["pos"][0], o["pos"][1], "%s %d holds no node" % (o["path"], gid), warning=True)
         state[gid], members[gid] = 2, res
         return res
 

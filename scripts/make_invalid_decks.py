@@ -460,11 +460,22 @@ def _():
     return d, "/BCS/1 names node group 99, which does not exist", [("RX402", "BCS.grnod_ID")]
 
 
+@fault("bcs_names_set")
+def _():
+    # A /SET/GENERAL in the place of a node group: radx reads no /SET and says the id names one.
+    d = base()
+    d.insert_before("BEFORE_END", [("/SET/GENERAL/5", "SET_KW"), "Set of nodes", "NODE 1 2 3", "END"])
+    d.update("BCS", grnod_ID=5)
+    return d, "/BCS/1 names 5, a /SET/GENERAL (which radx does not read) rather than a /GRNOD", \
+        [("RX302", "SET_KW"), ("RX402", "BCS.grnod_ID")]
+
+
 @fault("empty_group")
 def _():
     d = base()
     d.delete("GRN1.ids")
-    return d, "/GRNOD/NODE/1 (used by /BCS/1) lists no node", [("RX403", "GRN1_KW")]
+    return d, "/GRNOD/NODE/1 (used by /BCS/1) lists no node: /BCS/1 acts on nothing (a warning, as in Radioss)", \
+        [("RX403 warning", "GRN1_KW")]
 
 
 @fault("surf_part_on_solid")
@@ -541,6 +552,23 @@ def _():
     d = with_spring(base(), fct_ID1=99)
     return d, "/PROP/SPRING/4 names the force curve fct_ID1 = 99, which no /FUNCT defines", \
         [("RX402", "PSPR.fct_ID1")]
+
+
+@fault("spring_zero_stiffness_hardening")
+def _():
+    # K = 0 with a curve is the nonlinear elastic spring for H = 0 (read, the step from the curve's slope); H 1
+    # unloads with the slope K, which is then 0.
+    d = with_spring(base(), K=0.0, fct_ID1=7, H=1)
+    d.insert_before("AFTER_MATS", funct_rows(7, [(-1.0, -1000.0), (0.0, 0.0), (1.0, 1000.0)], "Spring force", "F7"))
+    return d, "/PROP/SPRING/4 K = 0 with a force curve and H = 1: that law unloads with the slope K", \
+        [("RX501", "PSPR.K")]
+
+
+@fault("spring_zero_stiffness_flat_curve")
+def _():
+    d = with_spring(base(), K=0.0, fct_ID1=7)
+    d.insert_before("AFTER_MATS", funct_rows(7, [(-1.0, 0.0), (1.0, 0.0)], "Flat force", "F7"))
+    return d, "/PROP/SPRING/4 K = 0 with a flat force curve: no force and no time step", [("RX501", "PSPR.K")]
 
 
 @fault("spring_missing_node")
@@ -1196,7 +1224,7 @@ def _():
 
 @fault("igap_3")
 def _():
-    return with_inter(base(), igap=3), "/INTER/TYPE7/1 Igap = 3 (0..2 allowed)", [("RX501", "INT.Igap")]
+    return with_inter(base(), igap=3), "/INTER/TYPE7/1 Igap = 3 (0, 1, 2 and 1000 allowed)", [("RX501", "INT.Igap")]
 
 
 @fault("istf1_stfac_zero")
@@ -1417,6 +1445,14 @@ def _():
     return d, "/TH/BRIC/1 lists brick 11 and brick 99, which does not exist", [("RX402", "TH_OBJ")]
 
 
+@fault("th_bric_tetra")
+def _():
+    d = with_tetra(base())
+    d.insert_before("BEFORE_END", th_rows("/TH/BRIC", "Solid stresses", ["SX", "SY", "SZ"], [11, 21], "id"))
+    return d, "/TH/BRIC/1 lists brick 11 and tetrahedron 21 (Radioss records it as a brick): radx writes no time " \
+        "history of tetrahedra and goes on without it (a warning)", [("RX311 warning", "TH_OBJ")]
+
+
 @fault("th_sh3n_missing_element")
 def _():
     d = base()
@@ -1430,6 +1466,20 @@ def _():
     d.insert_before("BEFORE_END", th_rows("/TH/NODE", "Plate corner in a skew", ["DEF"], records=[(1, 7)]))
     return d, "/TH/NODE/1 lists node 1 in skew 7, and the deck has no /SKEW/FIX/7 or /SKEW/MOV/7", \
         [("RX402", "TH_OBJ")]
+
+
+@fault("th_node_frame_skew")
+def _():
+    # Radioss's /TH/NODE skew field may name a /FRAME; radx reads no /FRAME and says the id names one.
+    rows = [("/FRAME/FIX/7", "FR_KW"), "Fixed frame"] + foreign(
+        (rc.Card(rc.i("N1"), rc.i("N2"), rc.i("N3")), [0, 0, 0]),
+        (rc.Card(rc.r("X0"), rc.r("Y0"), rc.r("Z0")), [0.0, 0.0, 0.0]),
+        (rc.Card(rc.r("X1"), rc.r("Y1"), rc.r("Z1")), [1.0, 0.0, 0.0]),
+        (rc.Card(rc.r("X2"), rc.r("Y2"), rc.r("Z2")), [0.0, 1.0, 0.0]))
+    d = with_rows(rows)
+    d.insert_before("BEFORE_END", th_rows("/TH/NODE", "Plate corner in a frame", ["DEF"], records=[(1, 7)]))
+    return d, "/TH/NODE/1 lists node 1 in frame 7 (/FRAME/FIX/7, which radx does not read): the TH error says " \
+        "it names a /FRAME", [("RX302", "FR_KW"), ("RX402", "TH_OBJ")]
 
 
 @fault("th_shel_in_skew")
@@ -1628,31 +1678,35 @@ def _():
 @fault("grshel_part_missing_part")
 def _():
     d = with_rows(id_list("/GRSHEL/PART/1", "G1", "Shells of parts", [1, 9]))
-    return d, "/GRSHEL/PART/1 lists part 9, which does not exist", [("RX402", "G1.ids")]
+    return d, "/GRSHEL/PART/1 lists part 9, which does not exist: left out (a warning), as in Radioss", [("RX402 warning", "G1.ids")]
 
 
 @fault("grbric_subset_missing_subset")
 def _():
     d = with_rows(id_list("/GRBRIC/SUBSET/1", "G1", "Bricks of a subset", [4]))
-    return d, "/GRBRIC/SUBSET/1 lists subset 4; the deck has no /SUBSET", [("RX402", "G1.ids")]
+    return d, "/GRBRIC/SUBSET/1 lists subset 4; the deck has no /SUBSET: left out, the group is empty (two warnings, as in " \
+        "Radioss)", [("RX402 warning", "G1.ids"), ("RX403 warning", "G1_KW")]
 
 
 @fault("grshel_mat_missing_material")
 def _():
     d = with_rows(id_list("/GRSHEL/MAT/1", "G1", "Shells of a material", [1, 7]))
-    return d, "/GRSHEL/MAT/1 lists material 7, which does not exist", [("RX402", "G1.ids")]
+    return d, "/GRSHEL/MAT/1 lists material 7, which does not exist: left out (a warning), as in Radioss", \
+        [("RX402 warning", "G1.ids")]
 
 
 @fault("grbric_prop_missing_property")
 def _():
     d = with_rows(id_list("/GRBRIC/PROP/1", "G1", "Bricks of a property", [2, 7]))
-    return d, "/GRBRIC/PROP/1 lists property 7, which does not exist", [("RX402", "G1.ids")]
+    return d, "/GRBRIC/PROP/1 lists property 7, which does not exist: left out (a warning), as in Radioss", \
+        [("RX402 warning", "G1.ids")]
 
 
 @fault("grshel_box_missing_box")
 def _():
     d = with_rows(id_list("/GRSHEL/BOX/1", "G1", "Shells in a box", [3]))
-    return d, "/GRSHEL/BOX/1 names box 3; the deck has no /BOX", [("RX402", "G1.ids")]
+    return d, "/GRSHEL/BOX/1 names box 3; the deck has no /BOX: it selects nothing, the group is empty (two warnings, " \
+        "as in Radioss)", [("RX402 warning", "G1.ids"), ("RX403 warning", "G1_KW")]
 
 
 @fault("box_cylinder_no_axis")
@@ -1672,7 +1726,8 @@ def _():
     # The sphere of centre (10, 5, 0) and diameter 12 holds the plate's middle nodes 2 and 5, no whole shell.
     d = with_rows(sphere_rows(2, (10.0, 5.0, 0.0), 12.0),
                   id_list("/GRSHEL/BOX/1", "G1", "Shells in the sphere", [2]))
-    return d, "/GRSHEL/BOX/1: box 2 (a sphere) holds no whole shell", [("RX403", "G1_KW")]
+    return d, "/GRSHEL/BOX/1: box 2 (a sphere) holds no whole shell (a warning, as in Radioss)", \
+        [("RX403 warning", "G1_KW")]
 
 
 @fault("grbric_box_duplicate_box_id")
@@ -1688,7 +1743,8 @@ def _():
 def _():
     d = with_rows(id_list("/GRBRIC/BRIC/1", "G1", "Bricks", [11]),
                   id_list("/GRBRIC/GRBRIC/2", "G2", "Union", [1, 5]))
-    return d, "/GRBRIC/GRBRIC/2 lists brick group 5, which does not exist", [("RX402", "G2.ids")]
+    return d, "/GRBRIC/GRBRIC/2 lists brick group 5, which does not exist: left out (a warning), as in Radioss", \
+        [("RX402 warning", "G2.ids")]
 
 
 @fault("grshel_grshel_loop")
@@ -1712,20 +1768,22 @@ def _():
                   id_list("/GRBRIC/BOX/1", "G1", "Bricks wholly in the box", [1]),
                   id_list("/GRBRIC/BOX2/2", "G2", "Bricks with a node in the box", [1]))
     return d, "box 1 holds the lower four nodes of brick 11 only: /GRBRIC/BOX/1 (all nodes inside) is empty, " \
-        "/GRBRIC/BOX2/2 (one node inside) holds the brick", [("RX403", "G1_KW")]
+        "/GRBRIC/BOX2/2 (one node inside) holds the brick", [("RX403 warning", "G1_KW")]
 
 
 @fault("grsh3n_part_empty")
 def _():
     d = with_rows(id_list("/GRSH3N/PART/1", "G1", "Triangles of the plate", [1]))
-    return d, "/GRSH3N/PART/1 lists part 1, which has 4-node shells only: no 3-node shell", [("RX403", "G1_KW")]
+    return d, "/GRSH3N/PART/1 lists part 1, which has 4-node shells only: no 3-node shell (a warning)", \
+        [("RX403 warning", "G1_KW")]
 
 
 @fault("grshel_grshel_removes_all")
 def _():
     d = with_rows(id_list("/GRSHEL/PART/1", "G1", "Plate", [1]),
                   id_list("/GRSHEL/GRSHEL/2", "G2", "Plate minus plate", [1, -1]))
-    return d, "/GRSHEL/GRSHEL/2 adds group 1 and removes it again: empty", [("RX403", "G2_KW")]
+    return d, "/GRSHEL/GRSHEL/2 adds group 1 and removes it again: empty (a warning)", \
+        [("RX403 warning", "G2_KW")]
 
 
 @fault("surf_grshel_missing_group")
@@ -1759,7 +1817,8 @@ def _():
 @fault("surf_part_all_missing_part")
 def _():
     d = with_rows(id_list("/SURF/PART/ALL/1", "S1", "All faces", [2, 5]))
-    return d, "/SURF/PART/ALL/1 lists part 5, which does not exist", [("RX402", "S1.ids")]
+    return d, "/SURF/PART/ALL/1 lists part 5, which does not exist: left out (a warning), as in Radioss", \
+        [("RX402 warning", "S1.ids")]
 
 
 @fault("surf_part_all_empty")
@@ -1767,14 +1826,16 @@ def _():
     d = base()
     d.insert_before("AFTER_PARTS", part(3, "Part without elements", 1, 1))
     d.insert_before("BEFORE_END", id_list("/SURF/PART/ALL/1", "S1", "All faces of part 3", [3]))
-    return d, "/SURF/PART/ALL/1 lists part 3, which has no element: no segment", [("RX403", "S1_KW")]
+    return d, "/SURF/PART/ALL/1 lists part 3, which has no element: no segment (a warning, as in Radioss)", \
+        [("RX403 warning", "S1_KW")]
 
 
 @fault("grnod_grshel_missing_group")
 def _():
     d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", [1]),
                   id_list("/GRNOD/GRSHEL/3", "N3", "Nodes of shell groups", [1, 2]))
-    return d, "/GRNOD/GRSHEL/3 lists shell group 2, which does not exist", [("RX402", "N3.ids")]
+    return d, "/GRNOD/GRSHEL/3 lists shell group 2, which does not exist: left out (a warning), as in Radioss", \
+        [("RX402 warning", "N3.ids")]
 
 
 @fault("grnod_grbric_negative_only")
@@ -1782,7 +1843,26 @@ def _():
     d = with_rows(id_list("/GRBRIC/PART/1", "G1", "Block", [2]),
                   id_list("/GRNOD/GRBRIC/3", "N3", "Nodes of brick groups", [-1]))
     return d, "/GRNOD/GRBRIC/3 lists only -1: a negative id is ignored there (a warning), as in Radioss, so the " \
-        "group holds no node", [("RX403", "N3_KW")]
+        "group holds no node (a warning)", [("RX403 warning", "N3_KW")]
+
+
+@fault("grnod_part_missing_part")
+def _():
+    d = with_rows(id_list("/GRNOD/PART/3", "N3", "Nodes of parts", [2, 9]))
+    return d, "/GRNOD/PART/3 lists part 9, which does not exist: left out (a warning), as in Radioss", \
+        [("RX402 warning", "N3.ids")]
+
+
+@fault("sect_grbric_tetra")
+def _():
+    # The cut at the brick's bottom nodes 11 12 13 14, which the tetrahedron 21 (11 14 12 15) touches.
+    d = with_tetra(base())
+    d.insert_before("BEFORE_END", id_list("/GRNOD/NODE/4", "N4", "Cut nodes", [11, 12, 13, 14]) +
+                    id_list("/GRBRIC/PART/2", "G2", "Solids", [2, 3]) +
+                    block("SECT", "/SECT", 1, "Cut", node_ID1=11, node_ID2=12, node_ID3=14, grnod_ID=4,
+                          grbric_ID=2, fill=0))
+    return d, "/SECT/1 sums brick group 2, which holds tetrahedron 21 on the cut: radx sums no tetrahedron " \
+        "force in a section", [("RX510", "SECT.grbric_ID")]
 
 
 # Added masses, initial velocities, gravity and concentrated loads: their references and values.
@@ -2043,8 +2123,8 @@ def main(argv):
 def readme(table):
     L = ["# Invalid starter decks",
          "",
-         "Each `.rad` file here is a small starter deck (format 2026, units Mg mm s) that must be REJECTED (two,",
-         "marked `warning`, must be read with a warning instead). It is the same tiny valid model every time (two 4-node shells of part 1 with Johnson-Cook steel, one brick",
+         "Each `.rad` file here is a small starter deck (format 2026, units Mg mm s) that must be REJECTED (those",
+         "whose expectations are all marked `warning` must be read with those warnings instead). It is the same tiny valid model every time (two 4-node shells of part 1 with Johnson-Cook steel, one brick",
          "of part 2 with elastic aluminium, plate nodes clamped by `/BCS`) with one fault put in, so that it",
          "should produce only the diagnostics listed (`several_errors.rad` has four independent faults, and",
          "all four must be reported).",

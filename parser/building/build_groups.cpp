@@ -20,7 +20,14 @@
 //   side, each pointing out of its brick), plus the shell segments. In /SURF/PART/EXT and /ALL a brick
 //   face that a shell of a listed part covers is left out: the shell gives that segment.
 // * /GRNOD/GRSHEL, /GRSH3N, /GRBRIC: the nodes of the groups' elements; Radioss ignores negative ids there.
-// Where Radioss only warns about an id that does not exist, radx stops (RX402), as it does for /GRNOD.
+// * /GRBRIC holds tetrahedra as well as bricks (/GRBRIC/BRIC lists /TETRA4 ids, PART, BOX and GENE take the
+//   parts' tetrahedra), as Radioss stores a tetrahedron as a brick.
+// * GENE (pairs first, last) takes the ids of the range that exist, however wide the range (1 to 999999999
+//   is common): a note says how many exist when the range is far wider than the model.
+// * What Radioss only warns about, radx reads with a warning saying what it did: a part, subset, material,
+//   property, box, group or surface a group lists that does not exist is left out (RX402 warning), and a
+//   group or surface that ends up empty acts on nothing (RX403 warning). A node or element id that does not
+//   exist stops Radioss, and radx (RX402 error).
 #include <algorithm>
 #include <array>
 #include <map>
@@ -129,6 +136,17 @@ const model::ElementBlock& ModelBuilder::block(model::ElementType type) const {
   return m_.shells;
 }
 
+ModelBuilder::GroupElement ModelBuilder::group_element(model::ElementType type, std::int32_t e) const {
+  const auto& b = block(type);
+  if (type == model::ElementType::Brick8 && e >= static_cast<std::int32_t>(b.size()))
+    return {&m_.tetras, e - static_cast<std::int32_t>(b.size())};
+  return {&b, e};
+}
+
+std::size_t ModelBuilder::group_capacity(model::ElementType type) const {
+  return block(type).size() + (type == model::ElementType::Brick8 ? m_.tetras.size() : 0);
+}
+
 void ModelBuilder::subset_parts(std::int32_t s, std::vector<std::int32_t>& out) const {
   std::vector<std::int32_t> stack{s};
   std::vector<std::uint8_t> seen(m_.subsets.size(), 0);
@@ -182,10 +200,30 @@ struct ElementGroupList {
   std::vector<std::int32_t> add, remove;
 };
 
-// RX402 for entry k of the list: `what` does not exist.
+// RX402 warning for entry k of the list: `what` does not exist, and the group goes on without it, as
+// Radioss goes on (a warning in its hierarchy references).
 void report_missing_in_element_group(const ElementGroupList& l, std::size_t k, const std::string& what) {
-  l.b.diags_.error(Diag::MissingReference, l.b.at(l.r.id_pos[k], 1), ModelBuilder::about(l.r),
-                   what + " does not exist (listed in " + l.gname + ")");
+  l.b.diags_.warning(Diag::MissingReference, l.b.at(l.r.id_pos[k], 1), ModelBuilder::about(l.r),
+                     what + " does not exist (listed in " + l.gname + "): it is left out, as Radioss does");
+}
+
+// The index, in a group of the list's type, of the element with user id `id`; -1 when none. A brick group
+// looks among the tetrahedra when no brick has the id.
+std::int32_t group_index_of(const ElementGroupList& l, std::int64_t id) {
+  const auto e = l.elems.index.find(id);
+  if (e >= 0 || l.type != model::ElementType::Brick8) return e;
+  const auto t = l.b.m_.tetras.index.find(id);
+  return t < 0 ? -1 : static_cast<std::int32_t>(l.elems.size()) + t;
+}
+
+// Calls f(group index, part) for every element a group of the list's type can hold.
+template <class F>
+void for_each_group_element(const ElementGroupList& l, F&& f) {
+  const auto n = l.b.group_capacity(l.type);
+  for (std::size_t e = 0; e < n; ++e) {
+    const auto ge = l.b.group_element(l.type, static_cast<std::int32_t>(e));
+    f(static_cast<std::int32_t>(e), ge);
+  }
 }
 
 // /GRSHEL/SHEL, /GRSH3N/SH3N, /GRBRIC/BRIC: the element ids themselves.
@@ -194,7 +232,7 @@ void add_listed_elements(ElementGroupList& l) {
   const auto& fam = l.fam;
   for (std::size_t k = 0; k < r.ids.size(); ++k) {
     const std::int64_t id = r.ids[k];
-    const auto e = id > 0 ? l.elems.index.find(id) : -1;
+    const auto e = id > 0 ? group_index_of(l, id) : -1;
     if (id <= 0)
       l.b.diags_.error(Diag::MissingReference, l.b.at(r.id_pos[k], 1), ModelBuilder::about(r),
                        "there is no " + std::string(fam.element) + " " + std::to_string(id) + ": " +
@@ -204,7 +242,9 @@ void add_listed_elements(ElementGroupList& l) {
     else if (e < 0)
       l.b.diags_.error(Diag::MissingReference, l.b.at(r.id_pos[k], 1), ModelBuilder::about(r),
                        std::string(fam.element) + " " + std::to_string(id) + " does not exist: no " +
-                           std::string(fam.element_keyword) + " line defines it (listed in " + l.gname + ")");
+                           std::string(fam.element_keyword) +
+                           (l.type == model::ElementType::Brick8 ? " or /TETRA4" : "") +
+                           " line defines it (listed in " + l.gname + ")");
     else
       l.add.push_back(e);
   }
@@ -257,8 +297,10 @@ void add_elements_of_parts(ElementGroupList& l, std::string_view kind) {
     if (!parts_named_by(l, kind, k, id, parts)) continue;
     for (const auto p : parts) tag[p] = negative ? -1 : (tag[p] == 0 ? 1 : tag[p]);
   }
-  for (std::size_t e = 0; e < l.elems.size(); ++e)
-    if (l.elems.part[e] != kNone && tag[l.elems.part[e]] == 1) l.add.push_back(static_cast<std::int32_t>(e));
+  for_each_group_element(l, [&](std::int32_t e, ModelBuilder::GroupElement ge) {
+    const auto part = ge.block->part[static_cast<std::size_t>(ge.index)];
+    if (part != kNone && tag[part] == 1) l.add.push_back(e);
+  });
 }
 
 // /GRSHEL/GRSHEL and the like: the elements of the groups listed; a negative id subtracts its group.
@@ -306,23 +348,74 @@ void add_elements_in_box(ElementGroupList& l, bool every_node) {
   if (box_k >= r.ids.size()) return;
   const auto it = l.b.box_ids_.find(r.ids[box_k]);
   if (it == l.b.box_ids_.end()) {
-    l.b.diags_.error(Diag::MissingReference, l.b.at(r.id_pos[box_k], 1), ModelBuilder::about(r),
-                     "box " + std::to_string(r.ids[box_k]) +
-                         " does not exist: there is no /BOX/RECTA, /BOX/CYLIN or /BOX/SPHER with id " +
-                         std::to_string(r.ids[box_k]) + " (listed in " + l.gname + ")");
+    // Radioss finds nothing in a box that does not exist and goes on.
+    l.b.diags_.warning(Diag::MissingReference, l.b.at(r.id_pos[box_k], 1), ModelBuilder::about(r),
+                       "box " + std::to_string(r.ids[box_k]) +
+                           " does not exist: there is no /BOX/RECTA, /BOX/CYLIN or /BOX/SPHER with id " +
+                           std::to_string(r.ids[box_k]) + " (listed in " + l.gname +
+                           "); it selects nothing, as in Radioss");
     return;
   }
   const auto& b = m.boxes[it->second];
-  const auto npe = static_cast<std::size_t>(l.elems.npe());
   // BOX: every node of the element inside; BOX2: one node inside is enough.
-  for (std::size_t e = 0; e < l.elems.size(); ++e) {
+  for_each_group_element(l, [&](std::int32_t e, ModelBuilder::GroupElement ge) {
+    const auto npe = static_cast<std::size_t>(ge.block->npe());
     std::size_t in = 0;
     for (std::size_t k = 0; k < npe; ++k) {
-      const auto n = l.elems.conn[e * npe + k];
+      const auto n = ge.block->conn[static_cast<std::size_t>(ge.index) * npe + k];
       if (n >= 0 && inside(b, m.nodes.x[n], m.nodes.y[n], m.nodes.z[n])) ++in;
     }
-    if (every_node ? in == npe : in > 0) l.add.push_back(static_cast<std::int32_t>(e));
+    if (every_node ? in == npe : in > 0) l.add.push_back(e);
+  });
+}
+
+// The (first, last, increment) ranges of a GENE list, pairs 'first last'.
+std::vector<std::array<std::int64_t, 3>> gene_ranges(ModelBuilder& b, const KeywordRecord& r) {
+  std::vector<std::array<std::int64_t, 3>> ranges;
+  if (r.ids.size() % 2 != 0)
+    b.diags_.error(Diag::InconsistentValues, b.at(r.id_pos.back(), 1), ModelBuilder::about(r),
+                   std::string(r.decl->path) + " lists pairs 'first last'; the last pair is incomplete");
+  for (std::size_t k = 0; k + 1 < r.ids.size(); k += 2) ranges.push_back({r.ids[k], r.ids[k + 1], 1});
+  return ranges;
+}
+
+// The indices of the ids of `ids` (user ids by index, looked up by `find`) in each range to `out`, as
+// Radioss takes the ids of a range that exist. A range far wider than the model walks the model's ids
+// rather than the range, and a note says how many of its ids exist.
+template <class Find>
+void add_ids_in_ranges(ModelBuilder& b, const KeywordRecord& r, const std::vector<std::int64_t>& ids,
+                       Find&& find, const std::vector<std::array<std::int64_t, 3>>& ranges,
+                       std::vector<std::int32_t>& out) {
+  const auto size = static_cast<std::int64_t>(ids.size());
+  for (const auto& [lo, hi, step] : ranges) {
+    if (hi < lo) continue;
+    const std::int64_t span = (hi - lo) / step + 1;
+    const std::size_t before = out.size();
+    if (span <= size) {
+      for (std::int64_t id = lo; id <= hi; id += step)
+        if (const std::int32_t e = find(id); e >= 0) out.push_back(e);
+      continue;
+    }
+    for (std::size_t e = 0; e < ids.size(); ++e)
+      if (ids[e] >= lo && ids[e] <= hi && (ids[e] - lo) % step == 0) out.push_back(find(ids[e]));
+    if (span > 100 * size + 1000)
+      b.diags_.note(Diag::DefaultApplied, b.at(r.pos, 1), ModelBuilder::about(r),
+                    "range " + std::to_string(lo) + " to " + std::to_string(hi) + " (" +
+                        std::to_string(span) +
+                        " ids) is far wider than the model: " + std::to_string(out.size() - before) +
+                        " of its ids exist and are taken, as Radioss takes them");
   }
+}
+
+// /GRSHEL/GENE, /GRSH3N/GENE, /GRBRIC/GENE: the existing elements of each id range (a brick group's
+// tetrahedra too).
+void add_elements_in_ranges(ElementGroupList& l) {
+  const auto ranges = gene_ranges(l.b, l.r);
+  std::vector<std::int64_t> ids(l.elems.id);
+  if (l.type == model::ElementType::Brick8)
+    ids.insert(ids.end(), l.b.m_.tetras.id.begin(), l.b.m_.tetras.id.end());
+  add_ids_in_ranges(
+      l.b, l.r, ids, [&](std::int64_t id) { return group_index_of(l, id); }, ranges, l.add);
 }
 
 }  // namespace
@@ -358,15 +451,19 @@ const std::vector<std::int32_t>* ModelBuilder::group_elements(std::int32_t g) {
     add_elements_of_groups(l);
   else if (kind == "BOX" || kind == "BOX2")
     add_elements_in_box(l, kind == "BOX");
+  else if (kind == "GENE")
+    add_elements_in_ranges(l);
   sort_unique(l.add);
   sort_unique(l.remove);
   group.elements.clear();
   std::set_difference(l.add.begin(), l.add.end(), l.remove.begin(), l.remove.end(),
                       std::back_inserter(group.elements));
   if (group.elements.empty() && diags_.error_count() == errors_before) {
-    diags_.error(Diag::EmptyGroup, at(r.pos, 1), about(r),
-                 l.gname + " holds no " + std::string(fam.element) +
-                     ": check its list (the surfaces and node groups built from it would hold nothing)");
+    // Radioss warns and goes on; what is built from the group then holds nothing.
+    diags_.warning(Diag::EmptyGroup, at(r.pos, 1), about(r),
+                   l.gname + " holds no " + std::string(fam.element) +
+                       (group.type == model::ElementType::Brick8 ? " or tetrahedron" : "") +
+                       ": the surfaces and node groups built from it hold nothing of it (as in Radioss)");
   }
   group.state = 2;
   return &group.elements;
@@ -454,6 +551,8 @@ void ModelBuilder::build_functions() {
       diags_.warning(Diag::EmptyRecordList, at(t.pos[0], 1), about(*r),
                      "the function has a single point: it is constant");
     }
+    // The Radioss starter stops too on an abscissa not above the one before (it does not sort them);
+    // radx reports every such point rather than the first.
     for (std::size_t k = 1; k < f.x.size(); ++k) {
       if (!(f.x[k] > f.x[k - 1])) {
         diags_.error(Diag::NonMonotonicFunction, at(t.pos[k], 1), about(*r),
@@ -506,12 +605,15 @@ void add_part_nodes(const model::Model& m, std::int32_t part, std::vector<std::i
   }
 }
 
-// RX402 for entry k of the list: `what` `id` does not exist.
+// RX402 for entry k of the list: `what` `id` does not exist. An error for a node id, as Radioss stops
+// there; a warning for anything else (a part, group, box ...), left out as Radioss leaves it out.
 void report_missing_in_node_group(const NodeGroupList& l, std::size_t k, const std::string& what,
                                   std::int64_t id) {
-  l.b.diags_.error(Diag::MissingReference, l.b.at(l.r.id_pos[k], 1), ModelBuilder::about(l.r),
-                   what + " " + std::to_string(id) + " does not exist (listed in node group " +
-                       std::to_string(l.id) + ")");
+  const bool node = what == "node";
+  l.b.diags_.add(node ? Severity::Error : Severity::Warning, Diag::MissingReference, l.b.at(l.r.id_pos[k], 1),
+                 ModelBuilder::about(l.r),
+                 what + " " + std::to_string(id) + " does not exist (listed in node group " +
+                     std::to_string(l.id) + ")" + (node ? "" : ": it is left out, as Radioss does"));
 }
 
 // /GRNOD/NODE: the node ids themselves.
@@ -579,10 +681,7 @@ std::vector<std::array<std::int64_t, 3>> node_id_ranges(const NodeGroupList& l, 
   // GENE: pairs (first, last); GEN_INCR: records (first, last, incr).
   std::vector<std::array<std::int64_t, 3>> ranges;
   if (gene) {
-    if (r.ids.size() % 2 != 0)
-      l.b.diags_.error(Diag::InconsistentValues, l.b.at(r.id_pos.back(), 1), ModelBuilder::about(r),
-                       "/GRNOD/GENE lists pairs 'first last'; the last pair is incomplete");
-    for (std::size_t k = 0; k + 1 < r.ids.size(); k += 2) ranges.push_back({r.ids[k], r.ids[k + 1], 1});
+    ranges = gene_ranges(l.b, r);
   } else {
     const auto& t = r.records;
     const int c1 = t.column("first"), c2 = t.column("last"), c3 = t.column("incr");
@@ -594,20 +693,10 @@ std::vector<std::array<std::int64_t, 3>> node_id_ranges(const NodeGroupList& l, 
 
 // /GRNOD/GENE and /GRNOD/GEN_INCR: the existing nodes of each id range.
 void add_nodes_in_ranges(NodeGroupList& l, bool gene) {
-  const auto& r = l.r;
   const auto& nodes = l.b.m_.nodes;
-  for (const auto& [lo, hi, step] : node_id_ranges(l, gene)) {
-    if (hi - lo > 100 * static_cast<std::int64_t>(nodes.size()) + 1000000) {
-      l.b.diags_.error(
-          Diag::ValueOutOfRange, l.b.at(r.pos, 1), ModelBuilder::about(r),
-          "range " + std::to_string(lo) + " to " + std::to_string(hi) + " is far wider than the model");
-      continue;
-    }
-    for (std::int64_t id = lo; id <= hi; id += step) {
-      const auto n = nodes.index.find(id);
-      if (n >= 0) l.add.push_back(n);
-    }
-  }
+  add_ids_in_ranges(
+      l.b, l.r, nodes.id, [&](std::int64_t id) { return nodes.index.find(id); }, node_id_ranges(l, gene),
+      l.add);
 }
 
 // /GRNOD/MAT (`mat`) and /GRNOD/PROP: the nodes of the parts of each material or property listed.
@@ -663,8 +752,6 @@ void add_nodes_of_element_groups(NodeGroupList& l, const std::string& kind) {
                     : kind == "GRSH3N" ? model::ElementType::Shell3
                                        : model::ElementType::Brick8;
   const auto& fam = family(type);
-  const auto& elems = l.b.block(type);
-  const auto npe = static_cast<std::size_t>(elems.npe());
   for (std::size_t k = 0; k < r.ids.size(); ++k) {
     if (r.ids[k] < 0) {
       l.b.diags_.warning(Diag::ValueOutOfRange, l.b.at(r.id_pos[k], 1), ModelBuilder::about(r),
@@ -678,9 +765,13 @@ void add_nodes_of_element_groups(NodeGroupList& l, const std::string& kind) {
       report_missing_in_node_group(l, k, std::string(fam.element) + " group", r.ids[k]);
       continue;
     }
-    for (const auto e : eg->elements)
+    for (const auto e : eg->elements) {
+      const auto ge = l.b.group_element(type, e);
+      const auto npe = static_cast<std::size_t>(ge.block->npe());
+      const auto* c = &ge.block->conn[static_cast<std::size_t>(ge.index) * npe];
       for (std::size_t j = 0; j < npe; ++j)
-        if (elems.conn[e * npe + j] >= 0) l.add.push_back(elems.conn[e * npe + j]);
+        if (c[j] >= 0) l.add.push_back(c[j]);
+    }
   }
 }
 
@@ -724,13 +815,13 @@ const std::vector<std::int32_t>* ModelBuilder::group_nodes(std::int32_t g) {
   std::set_difference(l.add.begin(), l.add.end(), l.remove.begin(), l.remove.end(),
                       std::back_inserter(group.nodes));
   if (group.nodes.empty()) {
-    // After an error the group may be empty only because what it lists was not built (a part whose
-    // property radx refused has no elements): say so rather than blame the list alone.
-    diags_.error(
+    // Radioss warns and goes on. After an error the group may be empty only because what it lists was not
+    // built (a part whose property radx refused has no elements): say so rather than blame the list alone.
+    diags_.warning(
         Diag::EmptyGroup, at(r.pos, 1), about(r),
         "node group " + std::to_string(group.id) +
-            " holds no node: check its list (an empty group makes whatever uses it act on nothing)" +
-            (diags_.has_errors() ? "; other errors of this deck may have left out what it lists" : ""));
+            " holds no node: whatever uses it acts on nothing, as in Radioss; check its list" +
+            (diags_.has_errors() ? " (other errors of this deck may have left out what it lists)" : ""));
   }
   grnod_state_[g] = 2;
   return &group.nodes;
@@ -911,9 +1002,10 @@ std::vector<std::int32_t> tag_surface_parts(ModelBuilder& b, const KeywordRecord
       const std::int64_t id = flip ? -r.ids[k] : r.ids[k];
       const auto it = b.part_ids_.find(id);
       if (it == b.part_ids_.end()) {
-        b.diags_.error(
-            Diag::MissingReference, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
-            "part " + std::to_string(id) + " does not exist (no /PART/" + std::to_string(id) + ")");
+        // Radioss leaves it out with a warning (a hierarchy reference).
+        b.diags_.warning(Diag::MissingReference, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+                         "part " + std::to_string(id) + " does not exist (no /PART/" + std::to_string(id) +
+                             "): it is left out, as Radioss does");
         continue;
       }
       const auto part = it->second;
@@ -1019,9 +1111,10 @@ void surface_from_shell_groups(ModelBuilder& b, const KeywordRecord& r, model::S
 
 // /SURF/GRBRIC/EXT, /SURF/GRBRIC/FREE (`free`): the outer faces of the bricks of the groups listed.
 void surface_from_brick_groups(ModelBuilder& b, const KeywordRecord& r, model::Surface& s, bool free) {
-  // Brick faces keep their outward orientation: a negative group id counts as a positive one.
-  std::vector<std::uint8_t> chosen(b.m_.bricks.size(), 0);
-  std::vector<std::int32_t> bricks;
+  // Brick faces keep their outward orientation: a negative group id counts as a positive one. A group's
+  // tetrahedra give their faces as the bricks do.
+  std::vector<std::uint8_t> chosen(b.m_.bricks.size(), 0), chosen_tetras(b.m_.tetras.size(), 0);
+  std::vector<std::int32_t> bricks, tetras;
   for (std::size_t k = 0; k < r.ids.size(); ++k) {
     const std::int64_t id = r.ids[k] < 0 ? -r.ids[k] : r.ids[k];
     const auto* g = b.element_group(model::ElementType::Brick8, id);
@@ -1032,15 +1125,20 @@ void surface_from_brick_groups(ModelBuilder& b, const KeywordRecord& r, model::S
       continue;
     }
     for (const auto e : g->elements) {
-      if (chosen[e]) continue;
-      chosen[e] = 1;
-      bricks.push_back(e);
+      const auto ge = b.group_element(model::ElementType::Brick8, e);
+      const bool tetra = ge.block == &b.m_.tetras;
+      auto& mark = tetra ? chosen_tetras : chosen;
+      if (mark[ge.index]) continue;
+      mark[ge.index] = 1;
+      (tetra ? tetras : bricks).push_back(ge.index);
     }
   }
-  // EXT: a face is inner when another brick of the groups has it; FREE: when any brick of the model has
+  // EXT: a face is inner when another solid of the groups has it; FREE: when any solid of the model has
   // it.
   const std::vector<std::uint8_t> every(free ? b.m_.bricks.size() : 0, 1);
-  push_solid_faces(b.m_, s, bricks, {}, free ? &every : &chosen, nullptr, {});
+  const std::vector<std::uint8_t> every_tetra(free ? b.m_.tetras.size() : 0, 1);
+  push_solid_faces(b.m_, s, bricks, tetras, free ? &every : &chosen, free ? &every_tetra : &chosen_tetras,
+                   {});
 }
 
 }  // namespace
@@ -1073,8 +1171,11 @@ void ModelBuilder::build_surfaces() {
                    "Radioss refuses /SURF/GRBRIC alone too");
     }
     if (s.segments.empty() && diags_.error_count() == errors_before) {
-      diags_.error(Diag::EmptyGroup, at(r.pos, 1), about(r),
-                   "surface " + std::to_string(s.id) + " holds no segment: check its list");
+      // Radioss warns and goes on: what uses the surface finds no segment on it.
+      diags_.warning(
+          Diag::EmptyGroup, at(r.pos, 1), about(r),
+          "surface " + std::to_string(s.id) +
+              " holds no segment: whatever uses it finds nothing on it, as in Radioss; check its list");
     }
     if (register_id(surf_ids_, s.id, static_cast<std::int32_t>(m_.surfaces.size()), r, "surface", first))
       m_.surfaces.push_back(std::move(s));

@@ -23,11 +23,19 @@ model::Interface read_type7(ModelBuilder& b, const KeywordRecord& r, bool lagdt)
   in.id = r.id;
   in.title = r.title;
   in.lagdt = lagdt;
-  in.secondary_group = b.ref(b.grnod_ids_, r, "grnd_IDs", "node group", "/GRNOD", false);
+  // 0: no group; build_interfaces takes the main surface's nodes, as Radioss does.
+  in.secondary_group = b.ref(b.grnod_ids_, r, "grnd_IDs", "node group", "/GRNOD", true);
   in.main_surface = b.ref(b.surf_ids_, r, "surf_IDm", "surface", "/SURF", false);
   auto geti = [&](std::string_view f) { return static_cast<int>(r.get_int(f)); };
   in.istf = geti("Istf");
   in.igap = geti("Igap");
+  if (in.igap == 1000) {
+    // 1000 asks for Radioss's built-in default over a /DEFAULT/INTER value: the constant gap of Igap 0.
+    in.igap = 0;
+    b.note_at(r, "Igap", Diag::DefaultApplied,
+              "Igap = 1000 is the constant gap Gapmin of Igap = 0 (Radioss's own default, whatever "
+              "/DEFAULT/INTER says), as Radioss reads it");
+  }
   in.ibag = geti("Ibag");
   in.idel = geti("Idel");
   in.ithe = geti("Ithe");
@@ -276,6 +284,18 @@ void ModelBuilder::build_interfaces() {
     check_type7(*this, r, in);
     if (in.secondary_group != kNone) {
       if (const auto* nodes = group_nodes(in.secondary_group)) in.secondary_nodes = *nodes;
+    } else if (r.get_int("grnd_IDs") == 0 && in.main_surface != kNone) {
+      // No secondary group: the Radioss starter takes the main surface as the secondary side too (its nodes
+      // against its segments, a self-contact).
+      for (const auto& seg : m_.surfaces[static_cast<std::size_t>(in.main_surface)].segments)
+        in.secondary_nodes.insert(in.secondary_nodes.end(), seg.begin(), seg.end());
+      std::sort(in.secondary_nodes.begin(), in.secondary_nodes.end());
+      in.secondary_nodes.erase(std::unique(in.secondary_nodes.begin(), in.secondary_nodes.end()),
+                               in.secondary_nodes.end());
+      note_at(r, "grnd_IDs", Diag::DefaultApplied,
+              "grnd_IDs = 0: the secondary nodes are the " + std::to_string(in.secondary_nodes.size()) +
+                  " nodes of the main surface " + std::to_string(r.get_int("surf_IDm")) +
+                  " (a self-contact), as Radioss takes them");
     }
     if (register_id(inter_ids_, in.id, static_cast<std::int32_t>(m_.interfaces.size()), r, "interface",
                     first))

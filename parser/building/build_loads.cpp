@@ -99,6 +99,17 @@ std::int64_t unreadable_ref(ModelBuilder& b, const KeywordRecord& r, std::string
 std::string missing_skew_text(const ModelBuilder& b, std::string_view field, std::int64_t id) {
   if (id == 0 || b.skew_ids_.find(id) != b.skew_ids_.end()) return {};
   const std::string s = std::to_string(id);
+  // Radioss's skew fields (a /TH/NODE skew_ID among them) may name a /FRAME: say so rather than "no skew".
+  const auto& unread = b.deck_.unread;
+  const auto frame = std::find_if(unread.begin(), unread.end(), [&](const Deck::Unread& u) {
+    return u.id == id && u.path.rfind("/FRAME/", 0) == 0;
+  });
+  if (frame != unread.end()) {
+    const Where w = b.deck_.where(frame->pos);
+    return std::string(field) + " = " + s + " names " + frame->path + " " + s + " (" + std::string(w.file) +
+           ":" + std::to_string(w.line) + "), a frame: radx does not read /FRAME (reported there); give a " +
+           "/SKEW/FIX or /SKEW/MOV, or 0 for the global axes";
+  }
   return std::string(field) + " = " + s + ": there is no /SKEW/FIX/" + s + " or /SKEW/MOV/" + s +
          " in the deck; 0 = global axes";
 }
@@ -887,6 +898,15 @@ void th_objects(ModelBuilder& b, const KeywordRecord& r, const ThKindDef& k, mod
                 "on without it");
         return;
       }
+    }
+    // Radioss records a tetrahedron under /TH/BRIC (it stores tetrahedra as bricks); radx writes no time
+    // history of tetrahedra: the output is left out by name, the run goes on.
+    if (k.kind == model::ThKind::Brick && b.m_.tetras.index.find(id) >= 0) {
+      b.diags_.warning(
+          Diag::OutputNotWritten, b.at(pos, 1), ModelBuilder::about(r),
+          "element " + std::to_string(id) +
+              " is a /TETRA4: radx writes no time history of tetrahedra; the run goes on without it");
+      return;
     }
     missing = true;
     b.diags_.error(Diag::MissingReference, b.at(pos, 1), ModelBuilder::about(r),

@@ -1,7 +1,8 @@
 // Engine deck -> RunControls. Rules (docs/theory/deck-format.md section 3, docs/theory/type7-lagdt.md
 // section 6):
-// * /RUN/name[/irun]: Tstop > 0 required; irun >= 1, from the file name (NAME_0003.rad: 3; else 1) when
-//   absent, as the Radioss engine takes it; a restart letter is refused (radx writes no restarts).
+// * /RUN/name[/irun]: Tstop > 0 required; irun 1 to 99999, from the file name (NAME_0003.rad: 3; else 1) when
+//   absent or 0 (a note), as the Radioss engine takes it; a restart letter is refused (radx writes no
+//   restarts).
 // * /PRINT/n/nh: default -100; n != 0, |n| the line interval, n < 0 also to standard output; nh >= 0.
 // * /TFILE: dt_his >= 0, 0 meaning every cycle (Radioss then keeps the starter's interval, 0: a row every
 //   cycle); without /TFILE, 1e30 (no time history beyond the first and last states).
@@ -168,11 +169,12 @@ void Builder::run(model::RunControls& rc) {
   }
   std::int64_t irun = 1;
   if (header_int(*r, 1, 1, irun)) {
-    if (irun < 1 || irun > 99999) {
+    // irun 0 leaves the number to the file name, as the Radioss engine does (read_run_controls).
+    if (irun < 0 || irun > 99999) {
       error(*r, Diag::ValueOutOfRange,
             "run number irun = " + std::to_string(irun) +
-                " is out of range; engine runs are numbered 1 to 99999 (run 0 is the starter)");
-    } else {
+                " is out of range; engine runs are numbered 1 to 99999, 0 taking the file name's number");
+    } else if (irun > 0) {
       rc.run_number = static_cast<int>(irun);
     }
   }
@@ -636,11 +638,23 @@ model::RunControls read_run_controls(const std::string& engine_deck_path, Diagno
   model::RunControls rc;
   if (!read.records.empty()) {
     rc = build_run_controls(read, diags);
-    // /RUN/name without irun: the Radioss engine takes the run number from the file name.
+    // /RUN/name without irun, or with irun 0: the Radioss engine takes the run number from the file name
+    // (and ignores the /RUN number even when one is given, with a warning radx gives as RX803).
     const auto runs = read.of("/RUN");
     int file_number = -1;
     model::split_run_suffix(engine_deck_path, file_number);
-    if (!runs.empty() && runs.front()->header.size() < 2 && file_number > 0) rc.run_number = file_number;
+    if (!runs.empty()) {
+      const EngineRecord& r = *runs.front();
+      std::int64_t irun = -1;
+      const bool zero = r.header.size() >= 2 && parse_int(r.header[1], irun) == NumberStatus::Ok && irun == 0;
+      if (r.header.size() < 2 || zero) rc.run_number = file_number > 0 ? file_number : 1;
+      if (zero) {
+        diags.note(Diag::DefaultApplied, read.where(r.pos, 1), About{"/RUN"},
+                   "run number 0: the run takes the number " + std::to_string(rc.run_number) +
+                       (file_number > 0 ? " of the file name" : " (the file name carries none)") +
+                       ", as the Radioss engine does");
+      }
+    }
     check_run_name(read, rc, engine_deck_path, diags);
   }
   if (deck) *deck = std::move(read);

@@ -137,7 +137,23 @@ void read_section_elements(ModelBuilder& b, const KeywordRecord& r, model::Secti
                      "/.../" + std::to_string(id) + " in the deck");
       return;
     }
-    out = touching(b.block(type), g->elements, s.nodes);
+    if (type != model::ElementType::Brick8) {
+      out = touching(b.block(type), g->elements, s.nodes);
+      return;
+    }
+    // A brick group may hold tetrahedra (past the bricks): radx sums no tetrahedron force in a section.
+    std::vector<std::int32_t> bricks, tetras;
+    for (const auto e : g->elements) {
+      const auto ge = b.group_element(type, e);
+      (ge.block == &b.m_.tetras ? tetras : bricks).push_back(ge.index);
+    }
+    out = touching(b.block(type), bricks, s.nodes);
+    if (const auto t = touching(b.m_.tetras, tetras, s.nodes); !t.empty())
+      b.error_at(
+          r, field, Diag::PhysicsNotImplemented,
+          std::string(field) + " = " + std::to_string(id) + ": " + std::to_string(t.size()) +
+              " tetrahedra of the group touch the cut, and radx sums no tetrahedron force in a section "
+              "(bricks and shells only); leave them out of the group");
   };
   elements("grbric_ID", model::ElementType::Brick8, "/GRBRIC", s.bricks);
   elements("grshel_ID", model::ElementType::Shell4, "/GRSHEL", s.shells);

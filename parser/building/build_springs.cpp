@@ -7,6 +7,7 @@
 //   0 -> no failure. Ileng 1: dx, M, K, C per unit initial length (handled by the engine).
 // The spring's mass is M (M L0 with Ileng 1), half on each node; the inertia of TYPE8 and TYPE13 too
 // (OpenRadioss starter rmass.F). TYPE13's Ileng 1 is refused by its declaration (RX510).
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -83,16 +84,18 @@ void ModelBuilder::read_spring_law(const KeywordRecord& r, model::SpringLaw& s, 
         "stiffness " + f("K") + " = " + number_text(s.stiffness) +
             " is negative; K must be > 0 (the linear stiffness, or with fct_ID1 the stiffness of the time "
             "step)");
-  else if (!type8 && s.stiffness == 0 && s.damping <= 0 && r.get_int(f("fct_ID4")) == 0)
+  else if (!type8 && s.stiffness == 0 && !curve && s.damping <= 0 && r.get_int(f("fct_ID4")) == 0)
+    error_at(
+        r, f("K"), Diag::ValueOutOfRange,
+        "stiffness K is 0 and the spring has no damping: it would carry no force; give K > 0, or a force "
+        "curve fct_ID1");
+  else if (s.stiffness == 0 && curve && s.hardening != 0)
+    // H 1 to 8 unload or bound the force with the slope K: with K = 0 there is no such slope. (H = 0 takes
+    // the step stiffness from the curve: resolve_spring_functions.)
     error_at(r, f("K"), Diag::ValueOutOfRange,
-             "stiffness K is 0 and the spring has no damping: it would carry no force; give K > 0 (with "
-             "fct_ID1, K >= the curve's largest slope sets the time step)");
-  else if (s.stiffness == 0 && curve)
-    error_at(r, f("K"), Diag::ValueOutOfRange,
-             "stiffness " + f("K") + " is 0 with the force curve " + f("fct_ID1") + " = " +
-                 std::to_string(r.get_int(f("fct_ID1"))) +
-                 ": the time step of a spring by function comes from K; give K > 0, at least the curve's "
-                 "largest slope A df/dx");
+             "stiffness " + f("K") + " is 0 with " + f("H") + " = " + std::to_string(s.hardening) +
+                 ": that law unloads or yields with the slope K; give K > 0 (K = 0 with a force curve is "
+                 "accepted for H = 0, the nonlinear elastic spring)");
   if (s.damping < 0)
     error_at(r, f("C"), Diag::ValueOutOfRange,
              "damping " + f("C") + " = " + number_text(s.damping) + " is negative; C must be >= 0");
@@ -140,6 +143,32 @@ void ModelBuilder::read_spring_property(const KeywordRecord& r, model::Property&
                  "each node; it sets the spring's time step sqrt(M/K))");
 }
 
+// K = 0 with a force curve and H = 0: the curve is the law, and K, which only sets the time step there, is
+// taken as the stiffness of the curve's steepest segment, A max |df/dx| / Ascale (the force is A f(x /
+// Ascale)), so that the step sqrt(M / K) resolves the stiffest part of the curve. OpenRadioss runs such a
+// spring with the step of that stiffness (a deck with a straight curve of slope k steps as one with K = k).
+void ModelBuilder::step_stiffness_from_curve(const KeywordRecord& r, model::SpringLaw& s,
+                                             const std::string& sfx) {
+  const auto& fn = m_.functions[static_cast<std::size_t>(s.f_load)];
+  double slope = 0;
+  for (std::size_t k = 1; k < fn.x.size(); ++k)
+    if (fn.x[k] > fn.x[k - 1])
+      slope = std::max(slope, std::abs((fn.y[k] - fn.y[k - 1]) / (fn.x[k] - fn.x[k - 1])));
+  const double k = s.a * slope / s.ascale;
+  if (!(k > 0)) {
+    error_at(r, "K" + sfx, Diag::ValueOutOfRange,
+             "stiffness K" + sfx + " is 0 and the force curve fct_ID1" + sfx + " = " + std::to_string(fn.id) +
+                 " is flat: the spring would carry no force and has no time step; give K > 0 or a curve "
+                 "with a slope");
+    return;
+  }
+  s.stiffness = k;
+  note_at(r, "K" + sfx, Diag::DefaultApplied,
+          "K" + sfx + " = 0 with the force curve fct_ID1" + sfx + " = " + std::to_string(fn.id) +
+              ": the curve is the law; the time step takes the curve's largest slope A df/dx = " +
+              number_text(k) + " as the stiffness, as Radioss steps it");
+}
+
 void ModelBuilder::resolve_spring_functions() {
   for (const auto& r : deck_.records) {
     const bool type8 = r.decl->path == "/PROP/SPR_GENE" || r.decl->path == "/PROP/SPR_BEAM";  // six laws
@@ -156,6 +185,7 @@ void ModelBuilder::resolve_spring_functions() {
       s.f_unload = ref(funct_ids_, r, "fct_ID3" + sfx, "unloading curve", "/FUNCT", true);
       if (r.find("fct_ID4" + sfx))
         s.f_damp4 = ref(funct_ids_, r, "fct_ID4" + sfx, "velocity force curve", "/FUNCT", true);
+      if (s.stiffness == 0 && s.hardening == 0 && s.f_load != kNone) step_stiffness_from_curve(r, s, sfx);
     }
   }
 }

@@ -32,6 +32,10 @@ void ModelBuilder::warning_at(const KeywordRecord& r, std::string_view field, Di
   diags_.warning(code, at_field(r, field), about(r), std::move(msg));
 }
 
+void ModelBuilder::note_at(const KeywordRecord& r, std::string_view field, Diag code, std::string msg) {
+  diags_.note(code, at_field(r, field), about(r), std::move(msg));
+}
+
 namespace {
 // "box" -> "boxes", "part" -> "parts": the kinds named in duplicate-id messages.
 std::string plural(std::string_view noun) {
@@ -70,10 +74,20 @@ std::int32_t ModelBuilder::ref(const IdIndex& index, const KeywordRecord& r, std
   const auto it = index.find(id);
   if (it == index.end()) {
     const std::string prefix = std::string(target_keyword) + "/";
+    // Radioss lets a group reference (/GRNOD, /SURF, /GRSHEL ...) name a /SET as well, in the same ids.
+    const bool set_ok = target_keyword.rfind("/GR", 0) == 0 || target_keyword == "/SURF";
     const auto unread = std::find_if(deck_.unread.begin(), deck_.unread.end(), [&](const Deck::Unread& u) {
-      return u.id == id && u.path.rfind(prefix, 0) == 0;
+      return u.id == id && (u.path.rfind(prefix, 0) == 0 || (set_ok && u.path.rfind("/SET/", 0) == 0));
     });
-    if (unread != deck_.unread.end()) {
+    if (unread != deck_.unread.end() && unread->path.rfind("/SET/", 0) == 0) {
+      const Where w = deck_.where(unread->pos);
+      error_at(r, field, Diag::MissingReference,
+               std::string(field) + " = " + std::to_string(id) + " names " + unread->path + " " +
+                   std::to_string(id) + " (" + std::string(w.file) + ":" + std::to_string(w.line) +
+                   "), a /SET, which radx does not read yet (reported there), not a " +
+                   std::string(target_keyword) + ": give the " + std::string(what) + " as a " +
+                   std::string(target_keyword) + " instead");
+    } else if (unread != deck_.unread.end()) {
       const Where w = deck_.where(unread->pos);
       error_at(r, field, Diag::MissingReference,
                std::string(field) + " = " + std::to_string(id) + " names " + unread->path + " " +

@@ -34,6 +34,7 @@ class ModelBuilder {
   Where at_field(const KeywordRecord& r, std::string_view field) const;
   void error_at(const KeywordRecord& r, std::string_view field, Diag code, std::string msg);
   void warning_at(const KeywordRecord& r, std::string_view field, Diag code, std::string msg);
+  void note_at(const KeywordRecord& r, std::string_view field, Diag code, std::string msg);
 
   using IdIndex = std::unordered_map<std::int64_t, std::int32_t>;
   // Registers an object id; reports a duplicate (RX401) and returns false.
@@ -75,6 +76,7 @@ class ModelBuilder {
   void resolve_spring_skews();      // after the skews
   void build_springs();             // after the parts
   void resolve_spring_functions();  // after the functions
+  void step_stiffness_from_curve(const KeywordRecord& r, model::SpringLaw& s, const std::string& sfx);
   void check_tetra(model::ElementBlock& b, std::size_t base, const SourcePos& pos, std::int64_t eid);
   void build_boxes();
   void build_functions();
@@ -126,10 +128,12 @@ class ModelBuilder {
   // Element groups (/GRSHEL, /GRSH3N, /GRBRIC) stay in the starter: they are resolved into the surfaces
   // and node groups built from them, and nothing downstream needs them. Each element type has its own
   // group ids, as in Radioss.
+  // A brick group holds tetrahedra too, as Radioss groups them with the bricks: its indices past the last
+  // brick are tetrahedra (group_element).
   struct ElementGroup {
     const KeywordRecord* record = nullptr;
     model::ElementType type = model::ElementType::Shell4;
-    std::vector<std::int32_t> elements;  // sorted, unique indices into the block of `type`
+    std::vector<std::int32_t> elements;  // sorted, unique indices into the block of `type` (see above)
     std::uint8_t state = 0;              // 0 not built, 1 building, 2 built
   };
   // The group of `type` with user id `id`, or nullptr when there is none.
@@ -137,6 +141,15 @@ class ModelBuilder {
   // Resolves group g (recursive /GRSHEL/GRSHEL and the like, with loop detection); nullptr on a loop.
   const std::vector<std::int32_t>* group_elements(std::int32_t g);
   const model::ElementBlock& block(model::ElementType type) const;
+  // The block and index of element e of a group of `type`: a brick group's indices past the bricks are
+  // tetrahedra.
+  struct GroupElement {
+    const model::ElementBlock* block;
+    std::int32_t index;
+  };
+  [[nodiscard]] GroupElement group_element(model::ElementType type, std::int32_t e) const;
+  // How many elements a group of `type` can hold: a brick group's bricks and tetrahedra.
+  [[nodiscard]] std::size_t group_capacity(model::ElementType type) const;
   // All parts of subset s and of its descendants.
   void subset_parts(std::int32_t s, std::vector<std::int32_t>& out) const;
   std::int32_t node_ref(std::int64_t user_id, const KeywordRecord& r, SourcePos pos, std::string_view what);

@@ -1057,6 +1057,16 @@ void add_groups(std::vector<KeywordDecl>& t) {
       "/GRSHEL/BOX2",
       "4-node shell group: the shells with at least one node in the box (only the first box id counts)",
       "grshel_ID");
+  // GENE: pairs (first, last) of element ids, the ids of each range that exist (the last word is not a
+  // node list here).
+  auto element_gene = [&t, &element_group](std::string_view path, std::string_view meaning,
+                                           std::string_view id_name) {
+    element_group(path, meaning, id_name);
+    t.back().list_kind = IdKind::Element;
+  };
+  element_gene("/GRSHEL/GENE",
+               "4-node shell group: the existing /SHELL ids in ranges given as pairs (first, last)",
+               "grshel_ID");
   element_group("/GRSH3N/SH3N", "3-node shell group: the listed /SH3N element ids", "grsh3n_ID");
   element_group("/GRSH3N/PART",
                 "3-node shell group: the 3-node shells of the listed parts; a negative id removes",
@@ -1086,8 +1096,15 @@ void add_groups(std::vector<KeywordDecl>& t) {
       "3-node shell group: the 3-node shells with at least one node in the box (only the first box id "
       "counts)",
       "grsh3n_ID");
-  element_group("/GRBRIC/BRIC", "brick group: the listed /BRICK element ids", "grbric_ID");
-  element_group("/GRBRIC/PART", "brick group: the bricks of the listed parts; a negative id removes",
+  element_gene("/GRSH3N/GENE",
+               "3-node shell group: the existing /SH3N ids in ranges given as pairs (first, last)",
+               "grsh3n_ID");
+  element_group("/GRBRIC/BRIC", "brick group: the listed /BRICK and /TETRA4 element ids", "grbric_ID");
+  element_gene("/GRBRIC/GENE",
+               "brick group: the existing /BRICK and /TETRA4 ids in ranges given as pairs (first, last)",
+               "grbric_ID");
+  element_group("/GRBRIC/PART",
+                "brick group: the bricks and tetrahedra of the listed parts; a negative id removes",
                 "grbric_ID");
   element_group("/GRBRIC/GRBRIC", "brick group: union of /GRBRIC groups; a negative id removes", "grbric_ID");
   element_group(
@@ -1101,11 +1118,13 @@ void add_groups(std::vector<KeywordDecl>& t) {
   element_group("/GRBRIC/PROP",
                 "brick group: the bricks of the parts with the listed properties; a negative id removes",
                 "grbric_ID");
-  element_group("/GRBRIC/BOX",
-                "brick group: the bricks whose 8 nodes all lie in the box (only the first box id counts)",
-                "grbric_ID");
+  element_group(
+      "/GRBRIC/BOX",
+      "brick group: the bricks and tetrahedra whose nodes all lie in the box (only the first box id counts)",
+      "grbric_ID");
   element_group("/GRBRIC/BOX2",
-                "brick group: the bricks with at least one node in the box (only the first box id counts)",
+                "brick group: the bricks and tetrahedra with at least one node in the box (only the first "
+                "box id counts)",
                 "grbric_ID");
   id_group("/GRNOD/GRSHEL", "node group: the nodes of the shells of the listed /GRSHEL groups", "grnod_ID");
   id_group("/GRNOD/GRSH3N", "node group: the nodes of the 3-node shells of the listed /GRSH3N groups",
@@ -1178,14 +1197,14 @@ void add_type7_cards(KeywordDecl& k, Type7Layout layout) {
     if (type7) fields.insert(fields.end(), more);
   };
 
-  std::vector<FieldDecl> card1 = {I("grnd_IDs", 1, 10, "secondary node group").refs(IdKind::Other).must(),
+  std::vector<FieldDecl> card1 = {I("grnd_IDs", 1, 10, "secondary node group").refs(IdKind::Other),
                                   I("surf_IDm", 11, 20, "main surface").refs(IdKind::Other).must(),
                                   I("Istf", 21, 30, "stiffness definition").allow({0, 1, 2, 3, 4, 5})};
   type7_only(card1, {I("Ithe", 31, 40, "heat transfer through the contact").allow({0, 1}).unused()});
   card1.insert(
       card1.end(),
       {I("Igap", 41, 50, "gap option: 0 constant, 1 variable, 2 variable with scale and cap")
-           .allow({0, 1, 2}),
+           .allow({0, 1, 2, 1000}),
        multimp().versions(kAnyVersion, type7 ? 110 : 130),
        I("Ibag", 61, 70, "airbag vent-hole closure on contact").allow({0, 1}).unused(),
        I("Idel", 71, 80, "removal of deleted segments and free secondary nodes").allow({-2, -1, 0, 1, 2})});

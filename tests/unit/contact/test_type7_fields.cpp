@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -902,5 +903,53 @@ TEST_CASE("TYPE7 and LAGDT: a missing node group or surface is RX402 on card 1",
       expect_error_at(diags, b.deck, Diag::MissingReference, "surf_IDm");
       CHECK(first(diags, Diag::MissingReference)->column == 11);
     }
+  }
+}
+
+TEST_CASE(
+    "TYPE7 and LAGDT: grnd_IDs 0 takes the main surface's nodes as secondary nodes, with a note, as "
+    "Radioss does",
+    "[type7]") {
+  for (const auto& kind : kAllKinds) {
+    INFO(kind.name());
+    for (const char* zero : {"0", ""}) {
+      Vals v = minimal();
+      v["grnd_IDs"] = zero;
+      TempDir dir;
+      Diagnostics diags;
+      const auto b = build(dir, kind, v, diags);
+      check_no_errors(diags);
+      REQUIRE(b.model.interfaces.size() == 1u);
+      const auto& in = b.model.interfaces[0];
+      CHECK(in.secondary_group == radx::model::kNone);
+      std::set<std::int32_t> expected;
+      for (const auto& seg : b.model.surfaces.at(static_cast<std::size_t>(in.main_surface)).segments)
+        expected.insert(seg.begin(), seg.end());
+      CHECK(std::set<std::int32_t>(in.secondary_nodes.begin(), in.secondary_nodes.end()) == expected);
+      CHECK(in.secondary_nodes.size() == expected.size());
+      const auto* d = first(diags, Diag::DefaultApplied);
+      REQUIRE(d);
+      CHECK(d->severity == radx::Severity::Note);
+      CHECK(d->message.find("self-contact") != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("TYPE7 and LAGDT: Igap 1000 is the constant gap of Igap 0, with a note, as Radioss reads it",
+          "[type7]") {
+  for (const auto& kind : kAllKinds) {
+    INFO(kind.name());
+    Vals v = minimal();
+    v["Igap"] = "1000";
+    TempDir dir;
+    Diagnostics diags;
+    const auto b = build(dir, kind, v, diags);
+    check_no_errors(diags);
+    REQUIRE(b.model.interfaces.size() == 1u);
+    CHECK(b.model.interfaces[0].igap == 0);
+    const auto* d = first(diags, Diag::DefaultApplied);
+    REQUIRE(d);
+    CHECK(d->line == static_cast<int>(b.deck.line_of.at("Igap")));
+    CHECK(d->message.find("Igap = 1000") != std::string::npos);
   }
 }

@@ -402,6 +402,26 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("/RUN with run number 0 takes the file name's number with a note, as the Radioss engine does",
+          "[engine-io]") {
+  radx::test::TempDir dir;
+  for (const char* name : {"CASE_0002.rad", "CASE.rad"}) {
+    DYNAMIC_SECTION(name) {
+      const Built b = build(dir, name, "/RUN/CASE/0\n1.5\n/END\n");
+      INFO(all_diags(b.diags));
+      CHECK_FALSE(b.diags.has_errors());
+      CHECK(b.diags.warning_count() == 0);
+      const auto* d = find(b.diags, Diag::DefaultApplied);
+      REQUIRE(d);
+      CHECK(d->severity == radx::Severity::Note);
+      CHECK(d->message.find("run number 0") != std::string::npos);
+      CHECK(b.rc.run_number == (std::string(name) == "CASE.rad" ? 1 : 2));
+    }
+  }
+  const Built negative = build(dir, "CASE_0001.rad", "/RUN/CASE/-1\n1.5\n/END\n");
+  CHECK(find(negative.diags, Diag::ValueOutOfRange));
+}
+
 TEST_CASE("/RBODY/ON and /RBODY/OFF pass over ids that name no rigid body, as Radioss does", "[engine-io]") {
   radx::test::TempDir dir;
   const std::string text = "/RUN/A/1\n1\n/RBODY/ON\n0\n/RBODY/OFF\n4 -2\n/END\n";

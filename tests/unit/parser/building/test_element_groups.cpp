@@ -128,11 +128,16 @@ struct Built {
   std::set<long long> elements(ElementType type, long long id) const {
     const auto* g = builder->element_group(type, id);
     REQUIRE(g != nullptr);
+    std::set<long long> out;
     const auto& block = type == ElementType::Shell4   ? model.shells
                         : type == ElementType::Shell3 ? model.shells3
                                                       : model.bricks;
-    std::set<long long> out;
-    for (auto e : g->elements) out.insert(block.id[e]);
+    for (auto e : g->elements) {
+      // The builder's blocks were moved into `model`: a brick group's indices past the bricks are
+      // tetrahedra.
+      const auto n = static_cast<std::int32_t>(block.size());
+      out.insert(e < n ? block.id[e] : model.tetras.id[static_cast<std::size_t>(e - n)]);
+    }
     CHECK(out.size() == g->elements.size());
     return out;
   }
@@ -220,10 +225,12 @@ TEST_CASE("element groups by id, part, subset, material, property and group reso
                        kw("/GRBRIC/PROP/3", {2, -2}) + kw("/GRBRIC/GRBRIC/4", {2, -1}) +
                        kw("/GRBRIC/PART/5", {2}) + kw("/GRBRIC/SUBSET/6", {10}));
   INFO(b->report());
-  // /GRBRIC/PROP/3 removes all it adds and /GRBRIC/SUBSET/6 reaches no brick: two errors, nothing else.
+  // /GRBRIC/PROP/3 removes all it adds and /GRBRIC/SUBSET/6 reaches no brick: two warnings (as in Radioss),
+  // nothing else.
+  CHECK_FALSE(b->diags.has_errors());
   std::vector<std::string> errors;
   for (const auto& d : b->diags.items())
-    if (d.severity == radx::Severity::Error) errors.push_back(radx::Diagnostics::format(d));
+    if (d.severity == radx::Severity::Warning) errors.push_back(radx::Diagnostics::format(d));
   REQUIRE(errors.size() == 2);
   CHECK(errors[0].find("RX403") != std::string::npos);
   CHECK(errors[0].find("brick group 3 holds no brick") != std::string::npos);
@@ -263,11 +270,12 @@ TEST_CASE("BOX takes the elements with every node in the box, BOX2 those with on
             kw("/GRSHEL/BOX2/4", {2}) + kw("/GRBRIC/BOX/1", {3}) + kw("/GRBRIC/BOX2/2", {3}) +
             kw("/GRSH3N/BOX2/1", {4}) + kw("/GRSH3N/BOX/2", {1, 4}) + kw("/GRSHEL/BOX/5", {-3, 1, 3}));
   INFO(b->report());
-  // /GRSH3N/BOX/2 takes box 1 only (the first id), which holds no triangle: that is its one error.
+  // /GRSH3N/BOX/2 takes box 1 only (the first id), which holds no triangle: an empty group, a warning as in
+  // Radioss.
   std::size_t errors = 0;
   for (const auto& d : b->diags.items()) errors += d.severity == radx::Severity::Error;
-  CHECK(errors == 1);
-  CHECK(has(b->diags, radx::Diag::EmptyGroup));
+  CHECK(errors == 0);
+  CHECK(has(b->diags, radx::Diag::EmptyGroup, radx::Severity::Warning));
   // Shell 1 lies in the box; shells 2, 4 and 5 only touch it with nodes (1, 0), (0, 1) and (1, 1).
   CHECK(b->elements(ElementType::Shell4, 1) == std::set<long long>{1});
   CHECK(b->elements(ElementType::Shell4, 2) == std::set<long long>{1, 2, 4, 5});
@@ -340,26 +348,34 @@ TEST_CASE("boxes share one id space, a cylinder needs an axis and a diameter", "
   CHECK(has(b->diags, radx::Diag::RequiredValueMissing));  // cylinder 3: no diameter
 }
 
-TEST_CASE("a loop of element groups, missing ids and negative element ids are errors at their lines",
-          "[element_groups]") {
+TEST_CASE(
+    "a loop of element groups and missing or negative element ids are errors and a missing part or group is "
+    "left out with a warning as in Radioss",
+    "[element_groups]") {
   const auto b =
       build(kw("/GRSHEL/GRSHEL/1", {2}) + kw("/GRSHEL/GRSHEL/2", {1}) +  //
             kw("/GRBRIC/BRIC/3", {31, 99}) + kw("/GRSH3N/SH3N/4", {-21, 22}) + kw("/GRSHEL/PART/5", {1, 7}) +
             kw("/GRSHEL/MAT/6", {1, 8}) + kw("/GRSHEL/PROP/7", {1, 9}) + kw("/GRSHEL/SUBSET/8", {10, 12}) +
             kw("/GRSHEL/BOX/9", {4}) + kw("/GRSHEL/GRSHEL/10", {8, 11}));
   INFO(b->report());
-  std::map<int, std::vector<int>> by_code;  // code -> lines
-  for (const auto& d : b->diags.items())
+  std::map<int, std::vector<int>> by_code, warned;  // code -> lines
+  for (const auto& d : b->diags.items()) {
     if (d.severity == radx::Severity::Error) by_code[static_cast<int>(d.code)].push_back(d.line);
-  // One loop error for the 1 -> 2 -> 1 loop, at group 1's keyword line; missing element 99, negative
-  // element -21, part 7, material 8, property 9, subset 12, box 4, group 11: eight missing references.
+    if (d.severity == radx::Severity::Warning) warned[static_cast<int>(d.code)].push_back(d.line);
+  }
+  // One loop error for the 1 -> 2 -> 1 loop, at group 1's keyword line; missing element 99 and negative
+  // element -21: two errors. Part 7, material 8, property 9, subset 12, box 4, group 11: six warnings, and
+  // group 9 (box 4 only) ends up empty: a warning.
   REQUIRE(by_code[507].size() == 1);
-  CHECK(by_code[402].size() == 8);
+  CHECK(by_code[402].size() == 2);
   CHECK(by_code.size() == 2);
+  CHECK(warned[402].size() == 6);
+  CHECK(warned[403].size() == 1);
   const auto text = b->report();
   CHECK(text.find("4-node shell group 1 includes itself through /GRSHEL/GRSHEL") != std::string::npos);
-  CHECK(text.find("brick 99 does not exist: no /BRICK line defines it (listed in brick group 3)") !=
-        std::string::npos);
+  CHECK(
+      text.find("brick 99 does not exist: no /BRICK or /TETRA4 line defines it (listed in brick group 3)") !=
+      std::string::npos);
   CHECK(text.find("there is no 3-node shell -21") != std::string::npos);
 }
 
@@ -471,14 +487,14 @@ TEST_CASE("/GRNOD/GRSHEL, /GRSH3N and /GRBRIC take the nodes of the groups' elem
   CHECK(b->nodes(3) == std::set<long long>{202, 203, 206});
   CHECK(b->nodes(4) == std::set<long long>{bid(0, 0, 0), bid(1, 0, 0), bid(1, 1, 0), bid(0, 1, 0),
                                            bid(0, 0, 1), bid(1, 0, 1), bid(1, 1, 1), bid(0, 1, 1)});
-  // Group 5 lists only a negative id: it holds no node, an error; the two negative ids warn.
+  // Group 5 lists only a negative id: it holds no node, a warning as in Radioss; the two negative ids warn.
   std::size_t errors = 0, warnings = 0;
   for (const auto& d : b->diags.items()) {
     errors += d.severity == radx::Severity::Error;
     warnings += d.severity == radx::Severity::Warning && d.code == radx::Diag::ValueOutOfRange;
   }
-  CHECK(errors == 1);
-  CHECK(has(b->diags, radx::Diag::EmptyGroup));
+  CHECK(errors == 0);
+  CHECK(has(b->diags, radx::Diag::EmptyGroup, radx::Severity::Warning));
   CHECK(warnings == 2);
 }
 
@@ -489,4 +505,54 @@ TEST_CASE("/SURF/GRBRIC without /EXT or /FREE is refused, as Radioss refuses it"
   std::size_t errors = 0;
   for (const auto& d : b->diags.items()) errors += d.severity == radx::Severity::Error;
   CHECK(errors == 1);
+}
+
+namespace {
+// A tetrahedron 61 of part 6 (nodes 301..304 above the block, positive as written) for the tests below.
+std::string tetra_part() {
+  return "/NODE\n" + node_line(301, 0, 0, 5) + node_line(302, 0, 1, 5) + node_line(303, 1, 0, 5) +
+         node_line(304, 0, 0, 6) + "/TETRA4/6\n" + ids_line({61, 301, 302, 303, 304}) + "\n/PART/6\ntetra\n" +
+         ids_line({2, 2}) + "\n";
+}
+}  // namespace
+
+TEST_CASE("/GRBRIC holds tetrahedra as Radioss does: by id, part, range and box, and what is built from it",
+          "[element_groups]") {
+  const auto b =
+      build(tetra_part() + box(7, {-0.5, -0.5, 4.5}, {1.5, 1.5, 6.5}) + kw("/GRBRIC/BRIC/11", {31, 61}) +
+            kw("/GRBRIC/PART/12", {6}) + kw("/GRBRIC/GENE/13", {36, 70}) + kw("/GRBRIC/BOX/14", {7}) +
+            kw("/GRNOD/GRBRIC/15", {12}) + kw("/SURF/GRBRIC/EXT/16", {12}));
+  INFO(b->report());
+  CHECK_FALSE(b->diags.has_errors());
+  CHECK(b->elements(ElementType::Brick8, 11) == std::set<long long>{31, 61});
+  CHECK(b->elements(ElementType::Brick8, 12) == std::set<long long>{61});
+  CHECK(b->elements(ElementType::Brick8, 13) == std::set<long long>{36, 37, 38, 61});
+  CHECK(b->elements(ElementType::Brick8, 14) == std::set<long long>{61});
+  CHECK(b->nodes(15) == std::set<long long>{301, 302, 303, 304});
+  const auto& s = b->surface(16);
+  REQUIRE(s.segments.size() == 4);
+  for (std::size_t k = 0; k < 4; ++k) CHECK(s.owner_type[k] == radx::model::SegmentOwner::Tetra4);
+}
+
+TEST_CASE("GENE groups take the ids of a range that exist, however wide, with a note for a far wider range",
+          "[element_groups]") {
+  const auto b = build(kw("/GRSHEL/GENE/1", {1, 999999999}) + kw("/GRSH3N/GENE/2", {22, 23}) +
+                       kw("/GRBRIC/GENE/3", {1, 999999999}) + kw("/GRNOD/GENE/4", {1, 999999999}) +
+                       kw("/GRNOD/GENE/5", {3, 6}));
+  INFO(b->report());
+  CHECK_FALSE(b->diags.has_errors());
+  CHECK(b->diags.warning_count() == 0);
+  CHECK(b->elements(ElementType::Shell4, 1) == std::set<long long>{1, 2, 3, 4, 5, 6, 7, 8, 9, 50});
+  CHECK(b->elements(ElementType::Shell3, 2) == std::set<long long>{22, 23});
+  CHECK(b->elements(ElementType::Brick8, 3) == range(31, 38));
+  CHECK(b->nodes(4).size() == 16 + 27 + 6);
+  CHECK(b->nodes(5) == std::set<long long>{3, 4, 5, 6});
+  std::size_t notes = 0;
+  for (const auto& d : b->diags.items())
+    if (d.severity == radx::Severity::Note && d.code == radx::Diag::DefaultApplied &&
+        d.message.find("far wider than the model") != std::string::npos)
+      ++notes;
+  CHECK(notes == 3);
+  CHECK(b->report().find("range 1 to 999999999 (999999999 ids) is far wider than the model: 49 of its ids "
+                         "exist") != std::string::npos);
 }

@@ -378,3 +378,27 @@ TEST_CASE("spring starter: property defaults, the mass of the nodes, refusals by
   CHECK(errors_of(h1.substr(0, at) + Line().put(7, 1, 10).put(7, 11, 20).put(7, 31, 40).str() +
                   h1.substr(at + card3.size())) == "");  // H = 7 with both curves runs
 }
+
+TEST_CASE("spring with K = 0 and a force curve: the curve is the law, its steepest slope gives the step",
+          "[spring][starter]") {
+  // A curve through 0 with slopes 400 then 1000 (N/mm): the step stiffness is 1000, the step sqrt(M / 1000).
+  const std::string fun = "/FUNCT/7\nforce\n" + Line().put(-1.0, 1, 20).put(-400.0, 21, 40).str() + "\n" +
+                          Line().put(0.0, 1, 20).put(0.0, 21, 40).str() + "\n" +
+                          Line().put(1.0, 1, 20).put(1000.0, 21, 40).str() + "\n";
+  radx::test::TempDir dir;
+  radx::Diagnostics diags;
+  const auto deck = radx::read_starter_deck(
+      dir.write("k0_0000.rad", oscillator_deck(1e-6, 0.0, 0.0, 1e-3, 0.0, fun, 7)), diags);
+  const auto m = radx::build_model(deck, diags);
+  std::string all;
+  for (const auto& d : diags.items()) all += radx::Diagnostics::format(d) + "\n";
+  INFO(all);
+  REQUIRE_FALSE(diags.has_errors());
+  CHECK(diags.contains(radx::Diag::DefaultApplied));
+  CHECK(all.find("largest slope A df/dx = 1000") != std::string::npos);
+  CHECK(m.properties[0].spring.x.stiffness == Approx(1000.0));
+  // The engine's step on the oscillator: Tscale sqrt(M / k) with k = 1000, as OpenRadioss steps a straight
+  // curve of that slope with K = 0 (not unbounded).
+  const auto tr = run(m, 1e-4);
+  CHECK(tr.dt == Approx(0.9 * std::sqrt(1e-6 / 1000.0)).epsilon(1e-6));
+}
