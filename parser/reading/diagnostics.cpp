@@ -72,7 +72,9 @@ const std::vector<CodeInfo>& code_table() {
       {Diag::BadUnit, "a unit name or factor that radx does not know"},
       {Diag::InconsistentValues, "values that contradict each other"},
       {Diag::DefaultApplied, "a value replaced by a default worth knowing about"},
-      {Diag::UnimplementedOption, "an option radx reads but does not implement, and which changes no result"},
+      {Diag::UnimplementedOption,
+       "an option radx reads but does not implement: a warning where it changes no result (it is left "
+       "out), an error where it would (the deck is refused, naming the option)"},
       {Diag::PhysicsNotImplemented,
        "a formulation, option or value that changes the physics and that radx does not implement "
        "(--allow-substitutions runs the nearest one radx implements instead)"},
