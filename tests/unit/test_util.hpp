@@ -7,6 +7,7 @@
 #include "parser/building/model_builder.hpp"
 #include "parser/reading/deck.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +18,11 @@
 #include <vector>
 
 namespace radx::test {
+
+// x within a relative tolerance `rel` of `expected`, plus an absolute floor for expected values near zero.
+inline bool close(double x, double expected, double rel, double abs_floor = 0.0) {
+  return std::abs(x - expected) <= rel * std::abs(expected) + abs_floor;
+}
 
 class TempDir {
  public:

@@ -23,9 +23,7 @@ namespace {
 
 constexpr double kRound = 1e-12;
 
-bool close(double x, double expected, double rel, double abs_floor = 0.0) {
-  return std::abs(x - expected) <= rel * std::abs(expected) + abs_floor;
-}
+using radx::test::close;
 
 // E 71000, nu 0.33, a 290, b 562.3, n 0.63, SIG_max0 425 (the LOI27 QA aluminium), crack off unless set.
 Material brit(double eps_t = 0, double eps_m = 0, double d_max = 0, double eps_f = 0) {

@@ -27,9 +27,7 @@ namespace {
 
 constexpr double kRound = 1e-12;
 
-bool close(double x, double expected, double rel, double abs_floor = 0.0) {
-  return std::abs(x - expected) <= rel * std::abs(expected) + abs_floor;
-}
+using radx::test::close;
 
 Function curve(std::vector<double> x, std::vector<double> y) {
   Function f;

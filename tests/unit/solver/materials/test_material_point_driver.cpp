@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "solver/materials/material_point.hpp"
+#include "test_util.hpp"
 
 using radx::model::Function;
 using radx::model::Material;
@@ -23,9 +24,7 @@ namespace {
 
 constexpr double kRound = 1e-12;
 
-bool close(double x, double expected, double rel, double abs_floor = 0.0) {
-  return std::abs(x - expected) <= rel * std::abs(expected) + abs_floor;
-}
+using radx::test::close;
 
 // ---- The driver ----
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "solver/materials/material_point.hpp"
+#include "test_util.hpp"
 
 using radx::model::Material;
 using radx::model::MaterialLaw;
@@ -40,9 +41,7 @@ Material steel(MaterialLaw law) {
   return m;
 }
 
-bool close(double x, double expected, double rel, double abs_floor = 0.0) {
-  return std::abs(x - expected) <= rel * std::abs(expected) + abs_floor;
-}
+using radx::test::close;
 
 // Flow stress written out from 6.2 (T = 1, no cap).
 double jc_expected(const MaterialParams& p, double eps_p, double rate) {

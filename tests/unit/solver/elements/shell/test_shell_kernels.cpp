@@ -16,6 +16,7 @@
 #include "solver/elements/element_groups.hpp"
 #include "solver/engine/node_state.hpp"
 #include "solver/materials/material_point.hpp"
+#include "test_util.hpp"
 
 using radx::model::Material;
 using radx::model::MaterialLaw;
@@ -116,9 +117,7 @@ void impose_patch_field(NodeState& s, double dt) {
   }
 }
 
-bool close(double x, double expected, double rel, double abs_floor = 0.0) {
-  return std::abs(x - expected) <= rel * std::abs(expected) + abs_floor;
-}
+using radx::test::close;
 
 // Rotation matrix about a unit axis by angle a (Rodrigues).
 std::array<Vec3, 3> rotation(Vec3 n, double a) {

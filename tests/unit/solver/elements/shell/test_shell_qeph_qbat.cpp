@@ -15,6 +15,7 @@
 #include "solver/elements/element_groups.hpp"
 #include "solver/engine/node_state.hpp"
 #include "solver/materials/material_point.hpp"
+#include "test_util.hpp"
 
 using radx::model::Material;
 using radx::model::MaterialLaw;
@@ -105,9 +106,7 @@ const std::vector<Vec3> kPatchNodes = {{0, 0, 0},       {0.24, 0, 0},    {0.24, 
 const std::vector<std::array<int, 4>> kPatchQuads = {
     {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}, {4, 5, 6, 7}};
 
-bool close(double x, double expected, double rel, double abs_floor = 0.0) {
-  return std::abs(x - expected) <= rel * std::abs(expected) + abs_floor;
-}
+using radx::test::close;
 
 double max_abs_force(const ShellGroup& g) {
   double m = 0;
