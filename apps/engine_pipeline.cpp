@@ -196,39 +196,22 @@ bool claim_output_folder(const std::string& out_dir, const std::string& root, Ru
   return true;
 }
 
-// The engine deck read into controls, its diagnostics printed; false when it has errors.
 // NAME_0002.rad and later beside NAME_0001.rad are the restart decks OpenRadioss runs one after another; radx
 // runs NAME_0001.rad only, and says so once rather than skip them without a word.
 void note_restart_decks(const std::string& path, Diagnostics& diags) {
-  const fs::path p(path);
-  const std::string stem = p.stem().string();
-  if (stem.size() < 6 || stem.compare(stem.size() - 5, 5, "_0001") != 0) return;
-  const std::string root = stem.substr(0, stem.size() - 5);
-  std::vector<std::string> found;
-  std::error_code ec;
-  const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.size() != root.size() + 9 || name.compare(0, root.size() + 1, root + "_") != 0 ||
-        e.path().extension() != p.extension())
-      continue;
-    const std::string number = name.substr(root.size() + 1, 4);
-    if (std::all_of(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
-        std::stoi(number) >= 2)
-      found.push_back(name);
-  }
+  const auto found = model::later_engine_decks(path);
   if (found.empty()) return;
-  std::sort(found.begin(), found.end());
+  const std::string name = fs::path(path).filename().string();
   std::string list;
   for (const auto& f : found) list += (list.empty() ? "" : ", ") + f;
   diags.note(Diag::EngineRestartDecks, Where{path}, About{},
              list +
                  (found.size() == 1 ? " is an OpenRadioss restart deck" : " are OpenRadioss restart decks") +
-                 " (run after " + p.filename().string() +
-                 " from its restart file); radx does not run restart decks: it runs " +
-                 p.filename().string() + " only");
+                 " (run after " + name +
+                 " from its restart file); radx does not run restart decks: it runs " + name + " only");
 }
 
+// The engine deck read into controls, its diagnostics printed; false when it has errors.
 bool read_engine_deck_checked(const std::string& path, Diagnostics& diags, EngineDeck& deck,
                               model::RunControls& controls, std::ostream& err) {
   controls = read_run_controls(path, diags, &deck);

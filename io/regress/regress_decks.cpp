@@ -180,9 +180,8 @@ RegressDeck make_deck(const DeckFolder& f, const std::string& deck, const fs::pa
   if (run_number_of(deck) == 0) {
     const std::string prefix = deck.substr(0, deck.size() - 8);  // "NAME_"
     std::string later;
-    for (const auto& n : names)
-      if (run_number_of(n) >= 2 && n.size() == deck.size() && n.compare(0, prefix.size(), prefix) == 0)
-        later += (later.empty() ? "" : ", ") + n;
+    for (const auto& n : model::later_engine_decks((folder / (prefix + "0001.rad")).string()))
+      later += (later.empty() ? "" : ", ") + n;
     if (!later.empty())
       notes.push_back(later + " not run (radx runs " + prefix + "0001.rad only: it has no restart)");
   }

@@ -32,6 +32,25 @@ std::string starter_output_root(const std::string& deck) {
   return stem + "_0000";
 }
 
+std::vector<std::string> later_engine_decks(const std::string& engine_deck) {
+  namespace fs = std::filesystem;
+  const fs::path p(engine_deck);
+  int number = -1;
+  const std::string root = split_run_suffix(engine_deck, number);
+  std::vector<std::string> found;
+  if (number != 1) return found;
+  std::error_code ec;
+  const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    int later = -1;
+    if (e.path().extension() == p.extension() && split_run_suffix(name, later) == root && later >= 2)
+      found.push_back(name);
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
 bool is_one_file_deck(const std::string& path) {
   // Only a regular file can be one: opening a FIFO would block, /dev/zero would never end (the reader
   // reports such a path as an error).

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace radx::model {
 
@@ -17,6 +18,11 @@ std::string run_output_root(const std::string& engine_deck_path);
 
 // Output root of a deck: NAME_0000.rad -> NAME_0000; NAME.rad (one-file) -> NAME_0000.
 std::string starter_output_root(const std::string& deck);
+
+// The later engine decks of the run of `engine_deck` (NAME_0001.rad): NAME_0002.rad, NAME_0003.rad, ...
+// beside it, by name. OpenRadioss runs them one after another as restarts; radx does not. Empty for a deck
+// not numbered _0001.
+std::vector<std::string> later_engine_decks(const std::string& engine_deck);
 
 // True when the file has a line starting with /END/ENGINE (a one-file deck).
 bool is_one_file_deck(const std::string& path);
