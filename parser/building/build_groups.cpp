@@ -386,19 +386,26 @@ template <class Find>
 void add_ids_in_ranges(ModelBuilder& b, const KeywordRecord& r, const std::vector<std::int64_t>& ids,
                        Find&& find, const std::vector<std::array<std::int64_t, 3>>& ranges,
                        std::vector<std::int32_t>& out) {
-  const auto size = static_cast<std::int64_t>(ids.size());
+  const auto size = static_cast<std::uint64_t>(ids.size());
   for (const auto& [lo, hi, step] : ranges) {
     if (hi < lo) continue;
-    const std::int64_t span = (hi - lo) / step + 1;
+    // In unsigned arithmetic: a range may span the whole of int64 (-9e18 to 9e18) without overflow.
+    const std::uint64_t span =
+        (static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo)) / static_cast<std::uint64_t>(step) + 1;
     const std::size_t before = out.size();
     if (span <= size) {
-      for (std::int64_t id = lo; id <= hi; id += step)
-        if (const std::int32_t e = find(id); e >= 0) out.push_back(e);
+      for (std::uint64_t k = 0; k < span; ++k)
+        if (const std::int32_t e = find(lo + static_cast<std::int64_t>(k) * step); e >= 0) out.push_back(e);
       continue;
     }
-    for (std::size_t e = 0; e < ids.size(); ++e)
-      if (ids[e] >= lo && ids[e] <= hi && (ids[e] - lo) % step == 0) out.push_back(find(ids[e]));
-    if (span > 100 * size + 1000)
+    for (std::size_t e = 0; e < ids.size(); ++e) {
+      if (ids[e] < lo || ids[e] > hi) continue;
+      if ((static_cast<std::uint64_t>(ids[e]) - static_cast<std::uint64_t>(lo)) % static_cast<std::uint64_t>(step))
+        continue;
+      // An id the index does not hold (a duplicate or refused entity) is not a member.
+      if (const std::int32_t found = find(ids[e]); found >= 0) out.push_back(found);
+    }
+    if (span / 100 > size + 10)
       b.diags_.note(Diag::DefaultApplied, b.at(r.pos, 1), ModelBuilder::about(r),
                     "range " + std::to_string(lo) + " to " + std::to_string(hi) + " (" +
                         std::to_string(span) +
@@ -726,7 +733,8 @@ void add_nodes_of_surfaces(NodeGroupList& l) {
       continue;
     }
     for (const auto& seg : l.b.m_.surfaces[it->second].segments)
-      l.add.insert(l.add.end(), seg.begin(), seg.end());
+      for (const auto n : seg)
+        if (n >= 0) l.add.push_back(n);  // a segment whose node was refused keeps kNone there
   }
 }
 
