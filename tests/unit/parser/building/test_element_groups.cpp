@@ -556,3 +556,13 @@ TEST_CASE("GENE groups take the ids of a range that exist, however wide, with a 
   CHECK(b->report().find("range 1 to 999999999 (999999999 ids) is far wider than the model: 49 of its ids "
                          "exist") != std::string::npos);
 }
+
+TEST_CASE("A GENE range from the most negative to the largest id a field holds takes every existing id",
+          "[element_groups]") {
+  const auto b = build(kw("/GRNOD/GENE/4", {-999999999LL, 9999999999LL}) +
+                       kw("/GRSHEL/GENE/1", {-999999999LL, 9999999999LL}));
+  INFO(b->report());
+  CHECK_FALSE(b->diags.has_errors());
+  CHECK(b->nodes(4).size() == 16 + 27 + 6);
+  CHECK(b->elements(ElementType::Shell4, 1) == std::set<long long>{1, 2, 3, 4, 5, 6, 7, 8, 9, 50});
+}
