@@ -49,6 +49,7 @@ std::string kind_path(model::ThKind k) {
     case model::ThKind::Section: return "section";
     case model::ThKind::Accel: return "accel";
     case model::ThKind::Spring: return "spring";
+    case model::ThKind::Truss: return "truss";
   }
   return "other";
 }
@@ -67,6 +68,7 @@ std::string kind_name(model::ThKind k) {
     case model::ThKind::Section: return "section";
     case model::ThKind::Accel: return "accelerometer";
     case model::ThKind::Spring: return "spring";
+    case model::ThKind::Truss: return "truss";
   }
   return "";
 }
@@ -86,6 +88,7 @@ std::int64_t user_id(const model::Model& m, model::ThKind k, std::int32_t i) {
     case model::ThKind::Section: return m.sections[n].id;
     case model::ThKind::Accel: return m.accelerometers[n].id;
     case model::ThKind::Spring: return m.springs.id[n];
+    case model::ThKind::Truss: return m.trusses.id[n];
   }
   return 0;
 }

@@ -54,6 +54,7 @@ io::StepSource source_of(solver::StepControl::Kind k) {
     case solver::StepControl::Kind::Interface: return io::StepSource::Interface;
     case solver::StepControl::Kind::Imposed: return io::StepSource::Imposed;
     case solver::StepControl::Kind::Spring: return io::StepSource::Spring;
+    case solver::StepControl::Kind::Truss: return io::StepSource::Truss;
     case solver::StepControl::Kind::None: break;
   }
   return io::StepSource::None;

@@ -5,7 +5,8 @@
 //   main segments; a term with no element behind it is left out).
 //   Igap 1: g = max(Gapmin, gs + gm); Igap 2: g = max(Gapmin, min(Fscalegap (gs + gm), Gapmax)),
 //   Gapmax = 0 meaning no cap. gm = t/2 of the main shell (0 for a brick face); gs = t/2 of the
-//   thickest shell at the secondary node (0 for bricks only or no element).
+//   thickest shell at the secondary node, sqrt(A)/2 for a truss of cross-section A (the largest of these;
+//   0 for bricks only or no element).
 // Stiffness, 4.2. Main segment on a shell: Km = Stfac 0.5 E t; on a brick: Km = Stfac B S^2 / V.
 //   Secondary node on a shell: Ks = Stfac 0.5 E t; on a brick: Ks = Stfac B V^(1/3).
 //   A tetrahedron counts as a solid as a brick does (Radioss keeps it as a degenerate brick): its face gives
@@ -179,11 +180,11 @@ double tetra_mean_side(const std::array<Vec3, 4>& x) {
   return s / 6.0;
 }
 
-// Per-node properties of the elements around each node: thickest shell (contact thickness), and the
-// largest shell and brick stiffness terms.
+// Per-node properties of the elements around each node: thickest shell or truss (contact thickness), and the
+// largest shell (or truss) and brick stiffness terms.
 struct NodeSupport {
   std::vector<double> half_thickness;  // gs
-  std::vector<double> k_shell;         // 0.5 E t (max over shells)
+  std::vector<double> k_shell;         // 0.5 E t (max over shells), E A / L (trusses)
   std::vector<double> k_brick;         // B V^(1/3) (max over bricks)
 };
 
@@ -215,6 +216,25 @@ NodeSupport node_support(const model::Model& m) {
     for (int j = 0; j < 8; ++j) {
       const auto node = m.bricks.conn[8 * e + j];
       if (node >= 0) s.k_brick[node] = std::max(s.k_brick[node], k);
+    }
+  }
+  // Trusses: gs = sqrt(A)/2 for the cross-section A (or half the /PART contact thickness when given), and
+  // the truss's axial stiffness E A / L as the node's stiffness term.
+  // [inferred: Ks = E A / L, the nodal stiffness Radioss's starter gives a truss node (tmass.F)]
+  for (std::size_t e = 0; e < m.trusses.size(); ++e) {
+    const auto part = m.trusses.part[e];
+    if (part < 0) continue;
+    const auto& p = m.parts[static_cast<std::size_t>(part)];
+    if (p.property < 0 || p.material < 0) continue;
+    const double area = m.properties[static_cast<std::size_t>(p.property)].truss.area;
+    const double half = p.contact_thickness > 0 ? 0.5 * p.contact_thickness : 0.5 * std::sqrt(area);
+    const auto n1 = m.trusses.conn[2 * e], n2 = m.trusses.conn[2 * e + 1];
+    if (n1 < 0 || n2 < 0) continue;
+    const double l = model::norm(model::sub(node_x(m, n2), node_x(m, n1)));
+    const double k = l > 0 ? material_of(m, part).young * area / l : 0.0;
+    for (const auto node : {n1, n2}) {
+      s.half_thickness[node] = std::max(s.half_thickness[node], half);
+      s.k_shell[node] = std::max(s.k_shell[node], k);
     }
   }
   for (std::size_t e = 0; e < m.tetras.size(); ++e) {

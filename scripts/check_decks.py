@@ -593,6 +593,8 @@ SHELL_REC = [F("shell_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 
     [F("PHI", "R", 61, 80), F("Thick", "R", 81, 100)]
 BRICK_REC = [F("brick_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(8)]
 SPRING_REC = [F("spring_ID", "I", 1, 10), F("n1", "I", 11, 20), F("n2", "I", 21, 30), F("n3", "I", 31, 40)]
+TRUSS_REC = [F("truss_ID", "I", 1, 10), F("n1", "I", 11, 20), F("n2", "I", 21, 30)]
+TRUSS_PROPS = ("/PROP/TRUSS", "/PROP/TYPE2")
 TETRA_REC = [F("tetra_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)]
 # /SH3N as OpenRadioss cuts the card (docs/keywords.md): PHI 71-90, Thick 91-100.
 SH3N_REC = [F("tria_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(3)] + \
@@ -672,6 +674,8 @@ STARTER = {
     "/BRICK": ("part", False, lambda v: [], "records", BRICK_REC),
     "/TETRA4": ("part", False, lambda v: [], "records", TETRA_REC),
     "/SPRING": ("part", False, lambda v: [], "records", SPRING_REC),
+    "/TRUSS": ("part", False, lambda v: [], "records", TRUSS_REC),
+    "/PROP/TRUSS": ("id", True, lambda v: [card([F("Area", "R", 1, 20), F("Gap", "R", 21, 40)])], None, None),
     "/PROP/SPRING": ("id", True, prop_spring, None, None),
     "/PROP/TYPE4": ("id", True, prop_spring, None, None),
     "/PROP/SPR_GENE": ("id", True, prop_spr_gene, None, None),
@@ -751,6 +755,7 @@ STARTER = {
     "/TH/BRICK": ("id", True, lambda v: [], "threcords", THELEM_REC),
     "/TH/SH3N": ("id", True, lambda v: [], "threcords", THNODE_REC),
     "/TH/SPRING": ("id", True, lambda v: [], "threcords", THELEM_REC),
+    "/TH/TRUSS": ("id", True, lambda v: [], "threcords", THELEM_REC),
     "/TH/RBODY": ("id", True, lambda v: [], "thids", ID_REC),
     "/TH/SUBS": ("id", True, lambda v: [], "thids", ID_REC),
     "/SECT": ("id", True, sect, None, None),
@@ -1381,6 +1386,7 @@ def semantic(ck, m):
     tables.inters = tables.by_id(("/INTER/TYPE7", "/INTER/LAGDT/TYPE7"), "interface")
     elements(tables)
     spring_elements(tables)
+    truss_elements(tables)
     parts_and_properties(tables)
     spring_properties(tables)
     formulations(tables)
@@ -1486,7 +1492,7 @@ def model_objects(tables):
 
     parts = by_id(("/PART",), "part")
     props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14", "/PROP/SPRING", "/PROP/TYPE4",
-                   "/PROP/SPR_GENE", "/PROP/TYPE8", "/PROP/SPR_BEAM", "/PROP/TYPE13"),
+                   "/PROP/SPR_GENE", "/PROP/TYPE8", "/PROP/SPR_BEAM", "/PROP/TYPE13", "/PROP/TRUSS", "/PROP/TYPE2"),
                   "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02",
                   "/MAT/LAW36", "/MAT/PLAS_TAB", "/MAT/LAW27", "/MAT/PLAS_BRIT", "/MAT/LAW0", "/MAT/VOID",
@@ -1642,6 +1648,55 @@ def spring_elements(tables):
                 I("RX406", p[0], p[1], "spring %s uses a node that does not exist" % eid)
             if not bad and ns[0] == ns[1]:
                 I("RX604", p[0], p[1], "spring %s joins a node to itself" % eid)
+
+
+def truss_elements(tables):
+    """Trusses (model_builder.cpp): the part has a truss property, n1 and n2 exist, differ and lie apart, ids
+    unique; the property's area > 0, Gap 0 (a gap truss changes the physics); the part's material is law 1 or
+    2 (check_formulations.cpp check_truss_laws)."""
+    I, m, nodes, part_kind, parts = tables.issue, tables.m, tables.nodes, tables.part_kind, tables.parts
+    props, mats = tables.props, tables.mats
+    truss_ids = set()
+    for o in m.of("/TRUSS"):
+        if o["id"] not in parts:
+            I("RX402", o["pos"][0], o["pos"][1], "/TRUSS: part %d does not exist" % o["id"])
+        part_kind.setdefault(o["id"], set()).add("/TRUSS")
+        po = parts.get(o["id"])
+        if po is not None and val(po, "prop_ID") in props and \
+                props[val(po, "prop_ID")]["path"] not in TRUSS_PROPS:
+            I("RX407", o["pos"][0], o["pos"][1], "/TRUSS/%d: part of the wrong property kind" % o["id"])
+        for r, p in o["recs"]:
+            eid = r.get("truss_ID")
+            if eid in truss_ids:
+                I("RX401", p[0], p[1], "truss %d defined twice" % eid)
+                continue
+            truss_ids.add(eid)
+            ns = [r.get("n1"), r.get("n2")]
+            bad = [x for x in ns if x is None or x not in nodes]
+            for _ in bad:
+                I("RX406", p[0], p[1], "truss %s uses a node that does not exist" % eid)
+            if not bad and (ns[0] == ns[1] or nodes[ns[0]] == nodes[ns[1]]):
+                I("RX604", p[0], p[1], "truss %s has no length" % eid)
+    for o in props.values():
+        if o["path"] not in TRUSS_PROPS:
+            continue
+        if val(o, "Area", None) is None:
+            p = pos(o, "Area")
+            I("RX502", p[0], p[1], "truss property %d: Area is blank" % o["id"])
+        elif not val(o, "Area") > 0:
+            p = pos(o, "Area")
+            I("RX501", p[0], p[1], "truss property %d: Area %g is not positive" % (o["id"], val(o, "Area")))
+        if val(o, "Gap", 0.0) != 0:
+            p = pos(o, "Gap")
+            I("RX510", p[0], p[1], "truss property %d: Gap changes the physics" % o["id"])
+    for pid, kinds in part_kind.items():
+        if "/TRUSS" not in kinds or pid not in parts:
+            continue
+        mat = mats.get(val(parts[pid], "mat_ID"))
+        if mat is not None and mat["path"] not in ("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2",
+                                                   "/MAT/PLAS_JOHNS", "/MAT/LAW02"):
+            p = pos(parts[pid], "mat_ID")
+            I("RX510", p[0], p[1], "part %d: trusses run laws 1 and 2 only" % pid)
 
 
 def parts_and_properties(tables):

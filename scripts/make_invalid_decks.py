@@ -585,6 +585,43 @@ def _():
         [("RX502", "PSPR.fct_ID3")]
 
 
+def with_truss(d, row=(31, 3, 6), mat=2, **prop):
+    """d with /TRUSS/4 (truss 31 between the plate's nodes 3 and 6, tag TRUSS_31) in part 4 (tag PART4, material
+    `mat`: 2 the elastic law 1) of /PROP/TRUSS/4 (tag PTRUSS: Area 10, the given values on top)."""
+    d.insert_before("AFTER_PARTS", block("TRUSS", "/TRUSS", 4, rows=[row], row_tags=["TRUSS_31"]) +
+                    part(4, "Truss", 4, mat))
+    d.insert_before("AFTER_MATS", block("PTRUSS", "/PROP/TRUSS", 4, "Truss", **dict(dict(Area=10.0, Gap=0.0),
+                                                                                   **prop)))
+    return d
+
+
+@fault("truss_gap")
+def _():
+    d = with_truss(base(), Gap=1.0)
+    return d, "/PROP/TRUSS/4 Gap = 1: a gap truss (no force until it shortens by Gap), which radx does not " \
+        "implement", [("RX510", "PTRUSS.Gap")]
+
+
+@fault("truss_zero_area")
+def _():
+    d = with_truss(base(), Area=-1.0)
+    return d, "/PROP/TRUSS/4 Area = -1: a truss needs a cross-section > 0", [("RX501", "PTRUSS.Area")]
+
+
+@fault("truss_same_nodes")
+def _():
+    d = with_truss(base(), row=(31, 3, 3))
+    return d, "truss 31 joins node 3 to itself", [("RX604", "TRUSS_31")]
+
+
+@fault("truss_law_not_run")
+def _():
+    d = with_truss(base(), mat=3)
+    d.insert_before("AFTER_MATS", block("VOID3", "/MAT/VOID", 3, "Void"))
+    return d, "part 4's trusses have the void material (law 0): radx's trusses run laws 1 and 2 only", \
+        [("RX510", "PART4.mat_ID")]
+
+
 SPR8 = dict(M=1e-6, Inertia=0.0, skew_ID=0, sens_ID=0, Isflag=0, Ifail=0, Ifail2=0, Iequil=0, Fsmooth=0, Fcut=0.0,
             **{k + d: v for d in "123456" for k, v in (("K", 0.0), ("C", 0.0), ("A", 0.0), ("B", 0.0), ("D", 0.0),
                                                       ("fct_ID1", 0), ("H", 0), ("fct_ID2", 0), ("fct_ID3", 0),

@@ -260,8 +260,9 @@ RADX_SCHEMA(SpringLaw, RADX_FIELD(stiffness), RADX_FIELD(damping), RADX_FIELD(a)
 RADX_SCHEMA(SpringProperty, RADX_FIELD(type), RADX_FIELD(mass), RADX_FIELD(inertia), RADX_FIELD(ileng),
             RADX_FIELD(sensor), RADX_FIELD(skew), RADX_FIELD(ifail), RADX_FIELD(x), RADX_FIELD(y),
             RADX_FIELD(z), RADX_FIELD(rx), RADX_FIELD(ry), RADX_FIELD(rz));
+RADX_SCHEMA(TrussProperty, RADX_FIELD(area));
 RADX_SCHEMA(Property, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(shell),
-            RADX_FIELD(solid), RADX_FIELD(spring));
+            RADX_FIELD(solid), RADX_FIELD(spring), RADX_FIELD(truss));
 RADX_SCHEMA(Part, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(property), RADX_FIELD(material),
             RADX_FIELD(subset), RADX_FIELD(contact_thickness), RADX_FIELD(mass), RADX_FIELD(element_count));
 RADX_SCHEMA(Subset, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(children), RADX_FIELD(parts));
@@ -345,7 +346,7 @@ RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RAD
 
 // Written member by member below (write_radx, read_file, write_block, read_block): a new member of these
 // structs must be added there.
-static_assert(member_count<Model>() == 39, "model::Model changed: update write_radx and read_file");
+static_assert(member_count<Model>() == 40, "model::Model changed: update write_radx and read_file");
 static_assert(member_count<model::Nodes>() == 5, "model::Nodes changed: update write_radx and read_file");
 static_assert(member_count<model::ElementBlock>() == 7, "model::ElementBlock changed: update write_block");
 
@@ -386,6 +387,7 @@ void for_each_block(ModelT& m, Fn&& fn) {
   fn("brick8", m.bricks);
   fn("tetra4", m.tetras);
   fn("spring2", m.springs);
+  fn("truss2", m.trusses);
 }
 
 // ---------------------------------------------------------------------------------------------------

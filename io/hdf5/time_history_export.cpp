@@ -145,7 +145,9 @@ void list_time_history(const std::string& file, const std::vector<ThGroupData>& 
       write_wrapped(os,
                     "  objects:   " + std::to_string(l.objects.size()) + ' ' +
                         (l.object_kind.empty() ? "object" : l.object_kind) +
-                        (l.objects.size() == 1 ? ":" : "s:"),
+                        (l.objects.size() == 1          ? ":"
+                         : l.object_kind.ends_with('s') ? "es:"
+                                                        : "s:"),
                     ids);
     }
     std::vector<std::string> variables;

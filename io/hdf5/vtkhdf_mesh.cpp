@@ -26,6 +26,7 @@ const char* block_name(model::ElementType t) {
     case model::ElementType::Brick8: return "brick";
     case model::ElementType::Tetra4: return "tetrahedron";
     case model::ElementType::Spring2: return "spring";
+    case model::ElementType::Truss2: return "truss";
   }
   return "element";
 }
@@ -37,6 +38,13 @@ void for_each_block(const Model& m, Fn&& fn) {
   fn(m.shells3);
   fn(m.bricks);
   fn(m.tetras);
+}
+
+// The line elements, whose cells follow the mesh's: springs (n1 n2 of their three slots), then trusses.
+template <class Fn>
+void for_each_line_block(const Model& m, Fn&& fn) {
+  fn(m.springs, std::size_t{3});
+  fn(m.trusses, std::size_t{2});
 }
 
 }  // namespace
@@ -71,29 +79,31 @@ void check_vtkhdf_mesh(const Model& m) {
       }
     }
   });
-  // Springs: n1 and n2 must exist; the orientation node n3 is optional.
-  const auto& sp = m.springs;
-  if (sp.part.size() != sp.size() || sp.conn.size() != 3 * sp.size())
-    throw h5::Failure(
-        "invalid model: the spring block part or connectivity array does not match its id count");
-  for (std::size_t e = 0; e < sp.size(); ++e) {
-    if (sp.part[e] < 0 || static_cast<std::size_t>(sp.part[e]) >= m.parts.size())
-      throw h5::Failure("invalid model: spring " + std::to_string(sp.id[e]) + " has part index " +
-                        std::to_string(sp.part[e]) + " out of range");
-    for (std::size_t k = 0; k < 2; ++k) {
-      const std::int32_t node = sp.conn[3 * e + k];
-      if (node < 0 || static_cast<std::size_t>(node) >= nn)
-        throw h5::Failure("invalid model: spring " + std::to_string(sp.id[e]) + " has node index " +
-                          std::to_string(node) + " out of range");
+  // Springs and trusses: n1 and n2 must exist; a spring's orientation node n3 is optional.
+  for_each_line_block(m, [&](const model::ElementBlock& b, std::size_t stride) {
+    const std::string name = block_name(b.type);
+    if (b.part.size() != b.size() || b.conn.size() != stride * b.size())
+      throw h5::Failure("invalid model: the " + name +
+                        " block part or connectivity array does not match its id count");
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      if (b.part[e] < 0 || static_cast<std::size_t>(b.part[e]) >= m.parts.size())
+        throw h5::Failure("invalid model: " + name + " " + std::to_string(b.id[e]) + " has part index " +
+                          std::to_string(b.part[e]) + " out of range");
+      for (std::size_t k = 0; k < 2; ++k) {
+        const std::int32_t node = b.conn[stride * e + k];
+        if (node < 0 || static_cast<std::size_t>(node) >= nn)
+          throw h5::Failure("invalid model: " + name + " " + std::to_string(b.id[e]) + " has node index " +
+                            std::to_string(node) + " out of range");
+      }
     }
-  }
+  });
 }
 
 VtkhdfMeshSizes write_vtkhdf_mesh(hid_t file, const Model& m) {
   const std::size_t nn = m.nodes.size();
   const std::size_t nc = m.cell_count();
   const std::size_t max_conn = 4 * m.shells.size() + 3 * m.shells3.size() + 8 * m.bricks.size() +
-                               4 * m.tetras.size() + 3 * m.springs.size();
+                               4 * m.tetras.size() + 2 * m.springs.size() + 2 * m.trusses.size();
 
   std::vector<std::int64_t> connectivity, offsets, element_id, mixed;
   std::vector<std::uint8_t> types;
@@ -134,20 +144,22 @@ VtkhdfMeshSizes write_vtkhdf_mesh(hid_t file, const Model& m) {
       element_id.push_back(b.id[e]);
     }
   });
-  // Springs after the mesh cells, as VTK lines; XDMF's polyline names its node count.
-  for (std::size_t e = 0; e < m.springs.size(); ++e) {
-    const std::int32_t* nodes = m.springs.conn.data() + 3 * e;
-    mixed.push_back(kXdmfPolyline);
-    mixed.push_back(2);
-    for (std::size_t k = 0; k < 2; ++k) {
-      connectivity.push_back(nodes[k]);
-      mixed.push_back(nodes[k]);
+  // Springs and trusses after the mesh cells, as VTK lines; XDMF's polyline names its node count.
+  for_each_line_block(m, [&](const model::ElementBlock& b, std::size_t stride) {
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const std::int32_t* nodes = b.conn.data() + stride * e;
+      mixed.push_back(kXdmfPolyline);
+      mixed.push_back(2);
+      for (std::size_t k = 0; k < 2; ++k) {
+        connectivity.push_back(nodes[k]);
+        mixed.push_back(nodes[k]);
+      }
+      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+      types.push_back(kVtkLine);
+      part_id.push_back(m.parts[static_cast<std::size_t>(b.part[e])].id);
+      element_id.push_back(b.id[e]);
     }
-    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-    types.push_back(kVtkLine);
-    part_id.push_back(m.parts[static_cast<std::size_t>(m.springs.part[e])].id);
-    element_id.push_back(m.springs.id[e]);
-  }
+  });
   std::vector<double> points(3 * nn);
   for (std::size_t i = 0; i < nn; ++i) {
     points[3 * i] = m.nodes.x[i];

@@ -126,6 +126,7 @@ std::string_view step_source_label(StepSource s) {
     case StepSource::Interface: return "INTER";
     case StepSource::Imposed: return "DTIX";
     case StepSource::Spring: return "SPRING";
+    case StepSource::Truss: return "TRUSS";
   }
   return "-";
 }

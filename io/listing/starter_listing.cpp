@@ -339,6 +339,14 @@ void write_properties(std::ostream& os, const model::Model& m) {
          << "\n    thickness " << s.thickness << "  N " << s.n_ip << "  Hm " << s.hm << "  Hf " << s.hf
          << "  Hr " << s.hr << "  Ashear " << s.ashear << "  Ismstr " << s.ismstr << "  Ithick " << s.ithick
          << "  Iplas " << s.iplas << '\n';
+    } else if (p.kind == model::PropertyKind::Truss) {
+      os << "/PROP/TRUSS\n    area " << p.truss.area << ": 2-node truss, axial force only (laws 1 and 2)\n";
+    } else if (p.kind == model::PropertyKind::Spring) {
+      const int t = p.spring.type;
+      os << (t == 4   ? "/PROP/SPRING"
+             : t == 8 ? "/PROP/SPR_GENE"
+                      : "/PROP/SPR_BEAM")
+         << " (TYPE" << t << ")\n    mass " << p.spring.mass << "  inertia " << p.spring.inertia << '\n';
     } else {
       const auto& s = p.solid;
       os << "/PROP/SOLID\n    Isolid "

@@ -132,6 +132,7 @@ const model::ElementBlock& ModelBuilder::block(model::ElementType type) const {
     case model::ElementType::Brick8: return m_.bricks;
     case model::ElementType::Tetra4: return m_.tetras;
     case model::ElementType::Spring2: return m_.springs;
+    case model::ElementType::Truss2: return m_.trusses;
   }
   return m_.shells;
 }
@@ -391,7 +392,8 @@ void add_ids_in_ranges(ModelBuilder& b, const KeywordRecord& r, const std::vecto
     if (hi < lo) continue;
     // In unsigned arithmetic: a range may span the whole of int64 (-9e18 to 9e18) without overflow.
     const std::uint64_t span =
-        (static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo)) / static_cast<std::uint64_t>(step) + 1;
+        (static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo)) / static_cast<std::uint64_t>(step) +
+        1;
     const std::size_t before = out.size();
     if (span <= size) {
       for (std::uint64_t k = 0; k < span; ++k)
@@ -400,7 +402,8 @@ void add_ids_in_ranges(ModelBuilder& b, const KeywordRecord& r, const std::vecto
     }
     for (std::size_t e = 0; e < ids.size(); ++e) {
       if (ids[e] < lo || ids[e] > hi) continue;
-      if ((static_cast<std::uint64_t>(ids[e]) - static_cast<std::uint64_t>(lo)) % static_cast<std::uint64_t>(step))
+      if ((static_cast<std::uint64_t>(ids[e]) - static_cast<std::uint64_t>(lo)) %
+          static_cast<std::uint64_t>(step))
         continue;
       // An id the index does not hold (a duplicate or refused entity) is not a member.
       if (const std::int32_t found = find(ids[e]); found >= 0) out.push_back(found);

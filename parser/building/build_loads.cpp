@@ -796,6 +796,15 @@ const std::vector<ThKindDef>& th_kinds() {
        {"AX", "AY", "AZ", "WX", "WY", "WZ"},
        {}},
       th_spring_kind(),
+      // OpenRadioss's truss names (hm_read_thgrou.F, thtrus.F): F the axial force (> 0 in tension), IE the
+      // work of that force, A the current area, L the initial length, PLAS the plastic strain.
+      {"/TH/TRUSS",
+       K::Truss,
+       "truss",
+       "/TRUSS",
+       {{"DEF", {"OFF", "F", "IE", "PLAS"}}},
+       {"OFF", "F", "IE", "A", "L", "PLAS"},
+       {}},
   };
   return kinds;
 }
@@ -872,6 +881,7 @@ std::int32_t th_object(const ModelBuilder& b, model::ThKind kind, std::int64_t i
     case model::ThKind::Section: return in(b.sect_ids_);
     case model::ThKind::Accel: return in(b.accel_ids_);
     case model::ThKind::Spring: return b.m_.springs.index.find(id);
+    case model::ThKind::Truss: return b.m_.trusses.index.find(id);
   }
   return kNone;
 }

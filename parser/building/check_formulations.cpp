@@ -24,6 +24,8 @@
 //                   damping C, the amplification A, B, D, E fct_ID2 and the force fct_ID4 (spring_law.hpp);
 //                   /PROP/SPR_GENE (TYPE8) and /PROP/SPR_BEAM (TYPE13) the same for each of their six
 //                   H1..H6 but H 8, refused by name
+//   trusses:        /PROP/TRUSS (TYPE2) with laws 1 and 2 (Gap 0), as OpenRadioss's truss runs them: law 2
+//                   without its strain-rate term, no /FAIL model; other laws are refused by name
 //   4-node tetras:  Itetra4 1000 (constant strain, one point; OpenRadioss hm_read_prop14.F also reads 0 as
 //                   /DEF_SOLID's value, 2 and unexpected values as 1000), Ismstr 2 or 4, Iframe 1; Itetra4 1
 //                   and 3 (nodal pressure) and 10 (converted to a 10-node tetra) are refused
@@ -267,6 +269,43 @@ void ModelBuilder::check_formulations() {
   }
   check_shell_only_laws();
   check_ogden_parts();
+  check_truss_laws();
+}
+
+// Trusses run laws 1 and 2 (truss_axial.cpp). OpenRadioss's truss runs laws 1, 2, 34 and 44: 34 and 44 radx
+// does not have, so they are refused by name (RX510). Its law 2 takes neither the strain-rate term nor a
+// /FAIL model (m2lawt.F): radx runs it the same and says so with a warning where the deck gives them.
+void ModelBuilder::check_truss_laws() {
+  std::vector<std::uint8_t> truss_part(m_.parts.size(), 0);
+  for (const auto p : m_.trusses.part)
+    if (p >= 0 && static_cast<std::size_t>(p) < truss_part.size())
+      truss_part[static_cast<std::size_t>(p)] = 1;
+  for (std::size_t p = 0; p < m_.parts.size(); ++p) {
+    const auto& part = m_.parts[p];
+    if (!truss_part[p] || part.material < 0) continue;
+    const auto& mat = m_.materials[static_cast<std::size_t>(part.material)];
+    for (const auto& rec : deck_.records) {
+      if (rec.decl->path != "/PART" || rec.id != part.id) continue;
+      const std::string used_by =
+          mat.keyword + " " + std::to_string(mat.id) + " on the trusses of part " + std::to_string(part.id);
+      if (mat.law != model::MaterialLaw::Elastic && mat.law != model::MaterialLaw::JohnsonCook) {
+        error_at(rec, "mat_ID", Diag::PhysicsNotImplemented,
+                 used_by +
+                     ": radx's trusses run law 1 (/MAT/LAW1, /MAT/ELAST) and law 2 (/MAT/LAW2, "
+                     "/MAT/PLAS_JOHNS) only");
+        continue;
+      }
+      if (mat.law == model::MaterialLaw::JohnsonCook && mat.c != 0)
+        warning_at(rec, "mat_ID", Diag::UnimplementedOption,
+                   used_by + ": the strain-rate term (c = " + number_text(mat.c) +
+                       ") does not act on trusses, as in Radioss (its truss takes the static yield curve)");
+      if (mat.fail_jc.on || mat.fail_tab.on)
+        warning_at(rec, "mat_ID", Diag::UnimplementedOption,
+                   used_by +
+                       ": its /FAIL model does not act on trusses, as in Radioss; a truss of law 2 "
+                       "fails at the material's EPS_max only");
+    }
+  }
 }
 
 // /MAT/PLAS_BRIT (law 27) is a shell law with integration points (OpenRadioss: SHELL_ISOTROPIC only, and

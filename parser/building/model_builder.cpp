@@ -622,13 +622,16 @@ void ModelBuilder::build_properties() {
   for (const auto& r : deck_.records) {
     const auto path = r.decl->path;
     if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" &&
-        path != "/PROP/SPR_GENE" && path != "/PROP/SPR_BEAM")
+        path != "/PROP/SPR_GENE" && path != "/PROP/SPR_BEAM" && path != "/PROP/TRUSS")
       continue;
     model::Property p;
     p.id = r.id;
     p.title = r.title;
     if (path == "/PROP/SPRING" || path == "/PROP/SPR_GENE" || path == "/PROP/SPR_BEAM") {
       read_spring_property(r, p);
+    } else if (path == "/PROP/TRUSS") {
+      p.kind = model::PropertyKind::Truss;
+      p.truss.area = r.get_real("Area");  // > 0: the field's rule
     } else if (path == "/PROP/SHELL") {
       p.kind = model::PropertyKind::Shell;
       auto& s = p.shell;
@@ -756,6 +759,25 @@ struct ElementKind {
 
 constexpr const char* kNodeNames[8] = {"n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"};
 
+std::string_view property_kind_name(model::PropertyKind k) {
+  switch (k) {
+    case model::PropertyKind::Shell: return "shell";
+    case model::PropertyKind::Solid: return "solid";
+    case model::PropertyKind::Spring: return "spring";
+    case model::PropertyKind::Truss: return "truss";
+  }
+  return "other";
+}
+std::string_view property_keyword(model::PropertyKind k) {
+  switch (k) {
+    case model::PropertyKind::Shell: return "/PROP/SHELL";
+    case model::PropertyKind::Solid: return "/PROP/SOLID";
+    case model::PropertyKind::Spring: return "/PROP/SPRING";
+    case model::PropertyKind::Truss: return "/PROP/TRUSS";
+  }
+  return "/PROP";
+}
+
 // The part the keyword line names (kNone, with the error, when it does not exist); a part whose property is
 // of another shape than the elements' is an error.
 std::int32_t element_part(ModelBuilder& b, const KeywordRecord& r, const ElementKind& kind) {
@@ -773,12 +795,9 @@ std::int32_t element_part(ModelBuilder& b, const KeywordRecord& r, const Element
   if (p.property != kNone && m.properties[p.property].kind != kind.prop_kind) {
     b.diags_.error(Diag::PartWrongKind, b.at(r.pos, 1), ModelBuilder::about(r),
                    "part " + std::to_string(r.id) + " has a " +
-                       (m.properties[p.property].kind == model::PropertyKind::Spring ? "spring"
-                        : kind.prop_kind == model::PropertyKind::Shell               ? "solid"
-                                                                                     : "shell") +
-                       " property (/PROP/" + std::to_string(m.properties[p.property].id) + "); " +
-                       std::string(kind.keyword) + " elements need a " +
-                       (kind.prop_kind == model::PropertyKind::Shell ? "/PROP/SHELL" : "/PROP/SOLID"));
+                       std::string(property_kind_name(m.properties[p.property].kind)) + " property (/PROP/" +
+                       std::to_string(m.properties[p.property].id) + "); " + std::string(kind.keyword) +
+                       " elements need a " + std::string(property_keyword(kind.prop_kind)));
   }
   return part;
 }
@@ -848,6 +867,21 @@ void check_brick_shape(ModelBuilder& b, const model::ElementBlock& blk, std::siz
             ") is positive; in a valid brick every corner's three edges turn the same "
             "way as n1-n2, n1-n4, n1-n5");
   }
+}
+
+// A truss whose nodes start at blk.conn[base]: its two nodes must be distinct and apart (its length is
+// the denominator of its strain and its step).
+void check_truss_shape(ModelBuilder& b, const model::ElementBlock& blk, std::size_t base, SourcePos pos,
+                       const About& ab) {
+  const double length = model::norm(
+      model::sub(element_node_position(b.m_, blk, base, 1), element_node_position(b.m_, blk, base, 0)));
+  if (blk.conn[base] == blk.conn[base + 1])
+    b.diags_.error(Diag::RepeatedNodeInElement, b.at(pos, 1), ab,
+                   "truss " + std::to_string(ab.id) + " has n1 = n2; a truss joins two distinct nodes");
+  else if (!(length > 0))
+    b.diags_.error(
+        Diag::RepeatedNodeInElement, b.at(pos, 1), ab,
+        "truss " + std::to_string(ab.id) + " has zero length: its two nodes are at the same place");
 }
 
 // A shell whose nodes start at blk.conn[base], read at `pos` (its thickness in column `thick_column`): fewer
@@ -938,6 +972,8 @@ void read_element_records(ModelBuilder& b, const ElementKind& kind, const Keywor
       b.check_tetra(blk, base, t.pos[e], eid);
     else if (blk.type == model::ElementType::Brick8)
       check_brick_shape(b, blk, base, t.pos[e], ab);
+    else if (blk.type == model::ElementType::Truss2)
+      check_truss_shape(b, blk, base, t.pos[e], ab);
     else
       check_shell_shape(b, blk, base, t.pos[e], cthick >= 0 ? t.fields[cthick]->first_col : 1, part, ab);
   }
@@ -984,7 +1020,8 @@ void ModelBuilder::build_elements() {
   const ElementKind kinds[] = {{"/SHELL", "shell_ID", &m_.shells, model::PropertyKind::Shell},
                                {"/SH3N", "tria_ID", &m_.shells3, model::PropertyKind::Shell},
                                {"/BRICK", "brick_ID", &m_.bricks, model::PropertyKind::Solid},
-                               {"/TETRA4", "tetra_ID", &m_.tetras, model::PropertyKind::Solid}};
+                               {"/TETRA4", "tetra_ID", &m_.tetras, model::PropertyKind::Solid},
+                               {"/TRUSS", "truss_ID", &m_.trusses, model::PropertyKind::Truss}};
   for (const auto& kind : kinds) {
     std::vector<SourcePos> pos;
     for (const auto* r : deck_.of(kind.keyword)) read_element_records(*this, kind, *r, pos);

@@ -98,6 +98,7 @@ class ModelBuilder {
   void warn_massless_accelerometers();
   void check_unused_nodes();
   void check_formulations();     // check_formulations.cpp
+  void check_truss_laws();       // check_formulations.cpp
   void check_ogden_parts();      // build_hyperelastic.cpp: laws 42 and 70 on one-point bricks only
   void check_shell_only_laws();  // check_formulations.cpp: law 27 on shells with points only
   // The transform stage (build_transforms.cpp): submodel transforms right after the elements, node-group

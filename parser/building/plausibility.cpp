@@ -26,16 +26,19 @@ const char* keyword_of(model::ElementType t) {
     case model::ElementType::Brick8: return "/BRICK";
     case model::ElementType::Tetra4: return "/TETRA4";
     case model::ElementType::Spring2: return "/SPRING";
+    case model::ElementType::Truss2: return "/TRUSS";
   }
   return "/SHELL";
 }
 
 // The line of an element's card; the deck's first file when it cannot be found.
 Where element_where(const Deck& deck, model::ElementType t, std::int64_t id) {
-  const char* id_field = t == model::ElementType::Brick8   ? "brick_ID"
-                         : t == model::ElementType::Tetra4 ? "tetra_ID"
-                         : t == model::ElementType::Shell3 ? "tria_ID"
-                                                           : "shell_ID";
+  const char* id_field = t == model::ElementType::Brick8    ? "brick_ID"
+                         : t == model::ElementType::Tetra4  ? "tetra_ID"
+                         : t == model::ElementType::Shell3  ? "tria_ID"
+                         : t == model::ElementType::Spring2 ? "spring_ID"
+                         : t == model::ElementType::Truss2  ? "truss_ID"
+                                                            : "shell_ID";
   for (const auto* r : deck.of(keyword_of(t))) {
     const int c = r->records.column(id_field);
     if (c < 0) continue;

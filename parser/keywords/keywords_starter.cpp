@@ -299,6 +299,16 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    // Columns as OpenRadioss's reader cuts the card (hm_read_truss.F): id, then the nodes 10 wide.
+    KeywordDecl k = kw("/TRUSS", "2-node truss elements of one part (a /PROP/TRUSS part), one per line",
+                       Header::PartId, false, "part_ID");
+    k.tail = Tail::Records;
+    k.record = card("truss", {I("truss_ID", 1, 10, "element id").refs(IdKind::Element).must().gt(0),
+                              I("n1", 11, 20, "first node").refs(IdKind::Node).must(),
+                              I("n2", 21, 30, "second node").refs(IdKind::Node).must()});
+    t.push_back(std::move(k));
+  }
+  {
     KeywordDecl k = kw("/PART", "a part: the property and material of a set of elements", Header::IdUnit,
                        true, "part_ID");
     k.cards = {card(
@@ -315,6 +325,19 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
 // ---------------------------------------------------------------------------------------------------------
 // Properties and materials
 void add_properties_and_materials(std::vector<KeywordDecl>& t) {
+  {
+    // OpenRadioss hm_read_prop02.F; prop_p2_trus.cfg (one layout from radioss51 on).
+    KeywordDecl k = kw("/PROP/TRUSS", "truss property (TYPE2): cross-section area (axial force only)",
+                       Header::IdUnit, true, "prop_ID");
+    k.aliases = {"/PROP/TYPE2"};
+    k.cards = {card(
+        "card 1", {R("Area", 1, 20, "initial cross-section area").dims(dim::area).must().gt(0.0),
+                   R("Gap", 21, 40,
+                     "initial gap: the truss carries no force until it has shortened by Gap (a gap element)")
+                       .dims(dim::length)
+                       .not_implemented()})};
+    t.push_back(std::move(k));
+  }
   {
     // OpenRadioss hm_read_prop04.F; the layouts of prop_p4_spring.cfg (fct_ID4 and Hscale from 120 on).
     KeywordDecl k = kw("/PROP/SPRING", "spring property (TYPE4): mass, stiffness or force curve, damping",
@@ -2027,6 +2050,7 @@ void add_time_history(std::vector<KeywordDecl>& t) {
   th("/TH/SECTIO", {}, "time history of section forces and moments", Objects::Ids);
   th("/TH/ACCEL", {}, "time history of accelerometers", Objects::Ids);
   th("/TH/SPRING", {}, "time history of spring forces, elongations and energies", Objects::Records);
+  th("/TH/TRUSS", {}, "time history of truss forces, energies and plastic strains", Objects::Records);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -2357,12 +2381,12 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90",
         "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO", "/MAT/USER",
         // properties
-        "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE2", "/PROP/TRUSS", "/PROP/TYPE3", "/PROP/BEAM", "/PROP/TYPE9",
-        "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP", "/PROP/TYPE11", "/PROP/SH_SANDW", "/PROP/TYPE16",
-        "/PROP/SH_FABR", "/PROP/TYPE17", "/PROP/TYPE18", "/PROP/INT_BEAM", "/PROP/TYPE20", "/PROP/TSHELL",
-        "/PROP/TYPE22", "/PROP/TYPE23", "/PROP/TYPE51", "/PROP/TYPE52", "/PROP/USER",
+        "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE3", "/PROP/BEAM", "/PROP/TYPE9", "/PROP/SH_ORTH",
+        "/PROP/TYPE10", "/PROP/SH_COMP", "/PROP/TYPE11", "/PROP/SH_SANDW", "/PROP/TYPE16", "/PROP/SH_FABR",
+        "/PROP/TYPE17", "/PROP/TYPE18", "/PROP/INT_BEAM", "/PROP/TYPE20", "/PROP/TSHELL", "/PROP/TYPE22",
+        "/PROP/TYPE23", "/PROP/TYPE51", "/PROP/TYPE52", "/PROP/USER",
         // elements
-        "/BEAM", "/TRUSS", "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD", "/TRIA", "/SPHCEL",
+        "/BEAM", "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD", "/TRIA", "/SPHCEL",
         // groups, surfaces, boxes
         "/GRNOD/LINE", "/GRSHEL", "/GRSH3N", "/GRBRIC", "/GRBEAM", "/GRTRUS", "/GRSPRI", "/GRPART", "/GRQUAD",
         "/SURF/SURF", "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE",
@@ -2385,8 +2409,8 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/FUNCT_PYTHON", "/ACTIV", "/LEAK", "/DFS", "/EBCS", "/INIGRAV", "/INIMAP1D", "/INIMAP2D", "/PERTURB",
         "/STATE",
         // time history that radx does not write
-        "/TH/BEAM", "/TH/TRUSS", "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME", "/TH/CLUSTER", "/ATH",
-        "/BTH", "/CTH", "/DTH", "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
+        "/TH/BEAM", "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME", "/TH/CLUSTER", "/ATH", "/BTH", "/CTH",
+        "/DTH", "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
         // engine keywords
         "/DT/BRICK/DEL", "/DT/BRICK/STOP", "/DT/SHELL/DEL", "/DT/SHELL/STOP", "/DT/SH_3N/DEL", "/DT/SH3N/DEL",
         "/DT/NODA/STOP", "/DT/NODA/KILL", "/DT/NODA/SET", "/DT/INTER/STOP", "/DT/AMS", "/ATFILE", "/H3D",

@@ -264,17 +264,32 @@ struct SpringGroup : GroupCore {
   void allocate(int n);
 };
 
+// Trusses (/TRUSS, truss_axial.cpp): one part per group, laws 1 and 2. conn [2][G] n1 n2, nodal_force
+// [2][3][G]; sig [G] the axial stress N / A, eps_p [G] the plastic strain (law 2); dmg, e_hg and rate stay 0.
+struct TrussGroup : MaterialGroupCore {
+  using MaterialGroupCore::MaterialGroupCore;
+  GroupArray<double> area0{arena};   // [G] initial cross-section (the property's)
+  GroupArray<double> area{arena};    // [G] current cross-section (follows the strain through nu)
+  GroupArray<double> l0{arena};      // [G] initial length
+  GroupArray<double> force{arena};   // [G] axial force N of the last cycle (> 0 in tension)
+  GroupArray<double> strain{arena};  // [G] accumulated axial strain (the integral of the strain rate)
+  [[nodiscard]] static constexpr int nodes_per_element() { return 2; }
+  void allocate(int n);
+};
+
 // Every element group of a model, kind by kind, in the one order all the engine's stages use: shells,
-// bricks, tetrahedra, springs. A flat group index counts through the kinds in that order (the element
-// stage's chunks, its votes and the order of the nodal sums), and sums over groups are taken in it.
+// bricks, tetrahedra, springs, trusses. A flat group index counts through the kinds in that order (the
+// element stage's chunks, its votes and the order of the nodal sums), and sums over groups are taken in it.
 struct ElementGroups {
   std::vector<ShellGroup> shells;
   std::vector<BrickGroup> bricks;
   std::vector<TetraGroup> tetras;
   std::vector<SpringGroup> springs;
+  std::vector<TrussGroup> trusses;
 
   [[nodiscard]] std::int64_t count() const {
-    return static_cast<std::int64_t>(shells.size() + bricks.size() + tetras.size() + springs.size());
+    return static_cast<std::int64_t>(shells.size() + bricks.size() + tetras.size() + springs.size() +
+                                     trusses.size());
   }
   // Calls f(group) for every group, in the flat order.
   template <class F>
@@ -302,6 +317,7 @@ struct ElementGroups {
     for (auto& g : self.bricks) f(g);
     for (auto& g : self.tetras) f(g);
     for (auto& g : self.springs) f(g);
+    for (auto& g : self.trusses) f(g);
   }
   template <class Self, class F>
   static void at(Self& self, std::int64_t flat, F& f) {
@@ -311,12 +327,14 @@ struct ElementGroups {
     if (k < self.bricks.size()) return f(self.bricks[k]);
     k -= self.bricks.size();
     if (k < self.tetras.size()) return f(self.tetras[k]);
-    f(self.springs[k - self.tetras.size()]);
+    k -= self.tetras.size();
+    if (k < self.springs.size()) return f(self.springs[k]);
+    f(self.trusses[k - self.springs.size()]);
   }
 };
 
-// True for the group kinds with a material at their points (shells, bricks, tetrahedra), for the visitors
-// that skip springs.
+// True for the group kinds with a material at their points (shells, bricks, tetrahedra, trusses), for the
+// visitors that skip springs.
 template <class Group>
 inline constexpr bool kHasMaterial = std::is_base_of_v<MaterialGroupCore, Group>;
 
@@ -333,10 +351,13 @@ inline const model::ElementBlock& element_block(const model::Model& m, const Tet
 inline const model::ElementBlock& element_block(const model::Model& m, const SpringGroup&) {
   return m.springs;
 }
+inline const model::ElementBlock& element_block(const model::Model& m, const TrussGroup&) {
+  return m.trusses;
+}
 
 // Where a group's elements sit among the model's cells (4-node shells, 3-node shells, bricks, tetrahedra,
-// then springs: the order of the model file, the results and contact's element flags): slot i of g is cell
-// first_cell(m, g) + g.element[i].
+// then springs and trusses: the order of the model file, the results and contact's element flags): slot i of
+// g is cell first_cell(m, g) + g.element[i].
 inline std::size_t first_cell(const model::Model& m, const ShellGroup& g) {
   return g.triangle ? m.shells.size() : 0;
 }
@@ -349,6 +370,14 @@ inline std::size_t first_cell(const model::Model& m, const TetraGroup&) {
 inline std::size_t first_cell(const model::Model& m, const SpringGroup&) {
   return m.element_count();
 }
+inline std::size_t first_cell(const model::Model& m, const TrussGroup&) {
+  return m.element_count() + m.springs.size();
+}
+
+// True for the kinds whose elements are cells of the solid and shell mesh (contact's surfaces and element
+// flags number those cells only); springs and trusses are cells of the results after them.
+template <class Group>
+inline constexpr bool kMeshCell = kHasMaterial<Group> && !std::is_same_v<Group, TrussGroup>;
 
 // Adds each element's nodal stiffness contribution k_nodal to its nodes' sums k[node] (the nodal time step),
 // element by element and node by node of the element.
@@ -364,6 +393,9 @@ void add_nodal_stiffness(const Group& g, std::span<double> k) {
 // The initial mass of element i of a group with a material of initial density rho0.
 inline double initial_mass(const ShellGroup& g, std::size_t i, double rho0) {
   return rho0 * g.area0[i] * g.t0[i];
+}
+inline double initial_mass(const TrussGroup& g, std::size_t i, double rho0) {
+  return rho0 * g.area0[i] * g.l0[i];
 }
 template <class Solid>
 requires(std::is_same_v<Solid, BrickGroup> ||
@@ -385,6 +417,8 @@ void shell_qbat_forces(ShellGroup& g, const NodeState& nodes, const MaterialPara
 void spring_type4_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc);
 void spring_type8_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc);
 void spring_type13_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc);
+void truss_axial_forces(TrussGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                        const CycleInfo& cyc);
 // TYPE13's initial Y axis (unit, normal to l = x2 - x1): from r3 = x3 - x1 when given and off the axis, else
 // from the skew's Y axis (rows of `skew_axes`: X Y Z), else its X axis (spring_type13.cpp).
 [[nodiscard]] model::Vec3 spring_type13_initial_y(const model::Vec3& l, const std::optional<model::Vec3>& r3,

@@ -551,6 +551,28 @@ SpringGroup make_spring_group(const model::Model& m, std::pmr::memory_resource* 
   return g;
 }
 
+// A truss group of the elements `run` of one part: the property's area, the initial lengths.
+TrussGroup make_truss_group(const model::Model& m, std::pmr::memory_resource* arena, std::int32_t part,
+                            std::span<const std::int32_t> run) {
+  const auto& prop = m.properties[static_cast<std::size_t>(m.parts[part].property)].truss;
+  TrussGroup g(arena);
+  g.allocate(static_cast<int>(run.size()));
+  g.part = part;
+  g.material = m.parts[part].material;
+  for (int i = 0; i < g.count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const auto e = static_cast<std::size_t>(run[k]);
+    g.element[k] = static_cast<std::int32_t>(e);
+    const auto n1 = m.trusses.conn[2 * e], n2 = m.trusses.conn[2 * e + 1];
+    g.conn[k] = n1;
+    g.conn[kGroupSize + k] = n2;
+    g.l0[k] = model::norm(model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
+                                     model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]}));
+    g.area0[k] = g.area[k] = prop.area;
+  }
+  return g;
+}
+
 }  // namespace
 
 // The element groups of every kind: the elements with forces of each block cut by part into runs of at most
@@ -573,7 +595,10 @@ void ExplicitEngine::build_groups() {
   for_each_group_run(m, m.springs, [&](std::int32_t part, std::span<const std::int32_t> run) {
     groups_.springs.push_back(make_spring_group(m, arena, part, run));
   });
-  element_count_ = m.element_count() + m.springs.size();
+  for_each_group_run(m, m.trusses, [&](std::int32_t part, std::span<const std::int32_t> run) {
+    groups_.trusses.push_back(make_truss_group(m, arena, part, run));
+  });
+  element_count_ = m.element_count() + m.springs.size() + m.trusses.size();
 }
 
 // sum[d] += f[d * G] for d < C, two components at a time: the same additions as one at a time (each lane is
@@ -743,6 +768,10 @@ void run_kernel(SpringGroup& g, const NodeState& nodes, const std::vector<Materi
   else
     spring_type4_forces(g, nodes, cyc);
 }
+void run_kernel(TrussGroup& g, const NodeState& nodes, const std::vector<MaterialParams>& materials,
+                const CycleInfo& cyc) {
+  truss_axial_forces(g, nodes, materials[static_cast<std::size_t>(g.material)], cyc);
+}
 
 // How a group's elements vote for the step: the /DT scale of their family, the family's /DT/<family>/CST
 // control, the kind the report names, and the frozen steps of the elements that family may switch to a
@@ -773,6 +802,11 @@ StepRule step_rule(TetraGroup&, const model::RunControls& c) {
 // Springs vote with the global /DT scale (Radioss's DTFAC1(6)); no /DT/<family>/CST switch applies.
 StepRule step_rule(SpringGroup&, const model::RunControls& c) {
   return {c.global.scale, &c.global, StepControl::Kind::Spring, nullptr, false};
+}
+// Trusses vote with the global /DT scale too (Radioss's DTFAC1(4), which only /DT/TRUSS sets; radx does not
+// read /DT/TRUSS).
+StepRule step_rule(TrussGroup&, const model::RunControls& c) {
+  return {c.global.scale, &c.global, StepControl::Kind::Truss, nullptr, false};
 }
 
 // /DT/<family>/CST: an element whose scaled step reaches Tmin is switched to a constant step (the
@@ -950,6 +984,9 @@ std::string ExplicitEngine::bad_element(double time, std::int64_t cycle) const {
         if constexpr (std::is_same_v<Group, ShellGroup>)
           found = std::string(g.triangle ? "3-node shell " : "shell ") + id +
                   " has no valid time step (collapsed or non-finite)" + when + "; the run stops";
+        else if constexpr (std::is_same_v<Group, TrussGroup>)
+          found = "truss " + id + " has no valid time step (its nodes met or its values are not finite)" +
+                  when + "; the run stops";
         else
           found = std::string(std::is_same_v<Group, BrickGroup> ? "brick " : "tetrahedron ") + id +
                   " has a zero or negative volume (" + std::to_string(g.vol[k]) + ")" + when +
@@ -1084,7 +1121,7 @@ void ExplicitEngine::tell_contact_deleted_elements() {
   deleted_elements_ = deleted;
   std::vector<std::uint8_t> alive(model_.element_count(), 1);
   groups_.for_each([&](const auto& g) {
-    if constexpr (kHasMaterial<std::decay_t<decltype(g)>>) {
+    if constexpr (kMeshCell<std::decay_t<decltype(g)>>) {
       for (int i = 0; i < g.count; ++i)
         if (g.off[static_cast<std::size_t>(i)] <= 0)
           alive[first_cell(model_, g) + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)])] = 0;

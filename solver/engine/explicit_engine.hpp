@@ -70,7 +70,8 @@ struct StepControl {
     Interface,
     Imposed,
     Tetra,
-    Spring
+    Spring,
+    Truss
   } kind = Kind::None;
   std::int64_t user_id = 0;
   std::int64_t node_id = 0;  // Interface: the secondary node of the controlling pair

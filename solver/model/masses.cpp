@@ -79,6 +79,17 @@ void for_each_nodal_mass(const Model& m,
     const double l0 = sp.ileng == 1 ? norm(sub(X(c[1]), X(c[0]))) : 1.0;
     for (int k = 0; k < 2; ++k) fn(c[k], part, cell, 0.5 * sp.mass * l0);
   }
+  // Trusses: m_e = rho A0 L0, half on each node (OpenRadioss starter tmass.F); numbered after the springs.
+  for (std::size_t e = 0; e < m.trusses.size(); ++e, ++cell) {
+    if (!valid(m.trusses, e)) continue;
+    const auto* c = &m.trusses.conn[2 * e];
+    const auto part = m.trusses.part[e];
+    const auto prop = m.parts[static_cast<std::size_t>(part)].property;
+    if (prop == kNone || m.properties[static_cast<std::size_t>(prop)].kind != PropertyKind::Truss) continue;
+    const double me =
+        rho_of(part) * m.properties[static_cast<std::size_t>(prop)].truss.area * norm(sub(X(c[1]), X(c[0])));
+    for (int k = 0; k < 2; ++k) fn(c[k], part, cell, 0.5 * me);
+  }
 }
 
 void compute_lumped_masses(Model& m) {

@@ -32,7 +32,14 @@ struct Nodes {
 };
 
 // Stored as its integer in the model file: new types go at the end.
-enum class ElementType : std::uint8_t { Shell4 = 0, Shell3 = 1, Brick8 = 2, Tetra4 = 3, Spring2 = 4 };
+enum class ElementType : std::uint8_t {
+  Shell4 = 0,
+  Shell3 = 1,
+  Brick8 = 2,
+  Tetra4 = 3,
+  Spring2 = 4,
+  Truss2 = 5
+};
 [[nodiscard]] constexpr int nodes_per_element(ElementType t) {
   switch (t) {
     case ElementType::Shell4: return 4;
@@ -40,6 +47,7 @@ enum class ElementType : std::uint8_t { Shell4 = 0, Shell3 = 1, Brick8 = 2, Tetr
     case ElementType::Brick8: return 8;
     case ElementType::Tetra4: return 4;
     case ElementType::Spring2: return 3;  // n1 n2 and the optional orientation node
+    case ElementType::Truss2: return 2;
   }
   return 0;
 }
@@ -183,7 +191,7 @@ struct Material {
   FoamTab foam;   // law 70
 };
 
-enum class PropertyKind : std::uint8_t { Shell = 1, Solid = 14, Spring = 4 };
+enum class PropertyKind : std::uint8_t { Shell = 1, Truss = 2, Solid = 14, Spring = 4 };
 
 struct ShellProperty {
   int ishell = 1, ismstr = 2, ish3n = 2, idrill = 0, ipinch = 0, n_ip = 0, ithick = 2, iplas = 2, ipos = 0;
@@ -243,6 +251,12 @@ struct SpringProperty {
   }
 };
 
+// /PROP/TRUSS (TYPE2): the initial cross-section area. The truss carries an axial force only; its area
+// follows the axial strain through the material's Poisson ratio (docs/theory/elements.md, trusses).
+struct TrussProperty {
+  double area = 0;
+};
+
 struct Property {
   std::int64_t id = 0;
   std::string title;
@@ -250,6 +264,7 @@ struct Property {
   ShellProperty shell;
   SolidProperty solid;
   SpringProperty spring;
+  TrussProperty truss;
 };
 
 struct Part {
@@ -500,7 +515,8 @@ enum class ThKind : std::uint8_t {
   Rbody,
   Section,
   Accel,
-  Spring
+  Spring,
+  Truss
 };
 struct TimeHistoryGroup {
   std::int64_t id = 0;
@@ -649,6 +665,9 @@ struct Model {
   // /SPRING: 2-node springs (their parts have a /PROP/SPRING); conn[3 e + 2] is the optional third node
   // (orientation, kNone when blank). Not cells of the solid and shell mesh: element_count() leaves them out.
   ElementBlock springs{ElementType::Spring2, {}, {}, {}, {}, {}, {}};
+  // /TRUSS: 2-node trusses (their parts have a /PROP/TRUSS and a law 1 or 2 material). Cells of the results
+  // after the springs; not cells of the solid and shell mesh either.
+  ElementBlock trusses{ElementType::Truss2, {}, {}, {}, {}, {}, {}};
   std::vector<Material> materials;
   std::vector<Property> properties;
   std::vector<Part> parts;
@@ -687,8 +706,8 @@ struct Model {
     return shells.size() + shells3.size() + bricks.size() + tetras.size();
   }
 
-  // Cells of the results files: the mesh cells above, then the springs (VTK lines n1 n2).
-  [[nodiscard]] std::size_t cell_count() const { return element_count() + springs.size(); }
+  // Cells of the results files: the mesh cells above, then the springs and the trusses (VTK lines n1 n2).
+  [[nodiscard]] std::size_t cell_count() const { return element_count() + springs.size() + trusses.size(); }
 
   // Dense index of the skew with user id `skew`; kNone for 0 (the global frame). Throws std::out_of_range
   // for an id the model lacks (the starter refuses those).

@@ -96,6 +96,12 @@ Dim th_variable_dim(model::ThKind kind, const std::string& n) {
       if (n[0] == 'L') return kLength;
       if (n == "IE") return kEnergy;
       return kNone;  // OFF, RX RY RZ (radians)
+    case K::Truss:
+      if (n == "F") return kForce;
+      if (n == "IE") return kEnergy;
+      if (n == "A") return Dim{0, 2, 0};
+      if (n == "L") return kLength;
+      return kNone;  // OFF, PLAS
   }
   return kNone;
 }
@@ -129,7 +135,8 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
     : kind_(g.kind), objects_(g.objects), variables_(g.variables) {
   const auto& m = e.model();
   using K = model::ThKind;
-  if (kind_ == K::Shell || kind_ == K::Shell3 || kind_ == K::Brick || kind_ == K::Spring) {
+  if (kind_ == K::Shell || kind_ == K::Shell3 || kind_ == K::Brick || kind_ == K::Spring ||
+      kind_ == K::Truss) {
     // Where each object sits in the element groups, found once: the groups do not change during a run.
     slots_.assign(objects_.size(), {-1, -1});
     std::vector<std::pair<int, int>> where;
@@ -148,6 +155,8 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
       index(e.groups().bricks, [](const BrickGroup&) { return true; });
     else if (kind_ == K::Spring)
       index(e.groups().springs, [](const SpringGroup&) { return true; });
+    else if (kind_ == K::Truss)
+      index(e.groups().trusses, [](const TrussGroup&) { return true; });
     else
       index(e.groups().shells, [&](const ShellGroup& grp) { return grp.triangle == (kind_ == K::Shell3); });
     for (std::size_t o = 0; o < objects_.size(); ++o) {
@@ -482,6 +491,22 @@ void ThGroupSampler::sample_springs(const ExplicitEngine& e, const CycleReport& 
   }
 }
 
+void ThGroupSampler::sample_trusses(const ExplicitEngine& e, const CycleReport& /*r*/,
+                                    const ThPut& put) const {
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const auto [gi, i] = slots_[o];
+    if (gi < 0) continue;
+    const auto& g = e.groups().trusses[static_cast<std::size_t>(gi)];
+    const auto k = static_cast<std::size_t>(i);
+    put(o, "OFF", g.off[k]);
+    put(o, "F", g.force[k]);
+    put(o, "IE", g.e_int[k]);
+    put(o, "A", g.area[k]);
+    put(o, "L", g.l0[k]);
+    put(o, "PLAS", g.eps_p[k]);
+  }
+}
+
 void ThGroupSampler::sample_accelerometers(const ExplicitEngine& e, const CycleReport& /*r*/,
                                            const ThPut& put) const {
   for (std::size_t o = 0; o < objects_.size(); ++o) {
@@ -516,6 +541,7 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
     case K::Rbody: sample_rigid_bodies(e, r, put); break;
     case K::Section: sample_sections(e, r, put); break;
     case K::Spring: sample_springs(e, r, put); break;
+    case K::Truss: sample_trusses(e, r, put); break;
     case K::Accel: sample_accelerometers(e, r, put); break;
   }
 }
