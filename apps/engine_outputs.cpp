@@ -50,6 +50,7 @@ std::string kind_path(model::ThKind k) {
     case model::ThKind::Accel: return "accel";
     case model::ThKind::Spring: return "spring";
     case model::ThKind::Truss: return "truss";
+    case model::ThKind::Beam: return "beam";
   }
   return "other";
 }
@@ -69,6 +70,7 @@ std::string kind_name(model::ThKind k) {
     case model::ThKind::Accel: return "accelerometer";
     case model::ThKind::Spring: return "spring";
     case model::ThKind::Truss: return "truss";
+    case model::ThKind::Beam: return "beam";
   }
   return "";
 }
@@ -89,6 +91,7 @@ std::int64_t user_id(const model::Model& m, model::ThKind k, std::int32_t i) {
     case model::ThKind::Accel: return m.accelerometers[n].id;
     case model::ThKind::Spring: return m.springs.id[n];
     case model::ThKind::Truss: return m.trusses.id[n];
+    case model::ThKind::Beam: return m.beams.id[n];
   }
   return 0;
 }

@@ -55,6 +55,7 @@ io::StepSource source_of(solver::StepControl::Kind k) {
     case solver::StepControl::Kind::Imposed: return io::StepSource::Imposed;
     case solver::StepControl::Kind::Spring: return io::StepSource::Spring;
     case solver::StepControl::Kind::Truss: return io::StepSource::Truss;
+    case solver::StepControl::Kind::Beam: return io::StepSource::Beam;
     case solver::StepControl::Kind::None: break;
   }
   return io::StepSource::None;

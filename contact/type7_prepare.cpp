@@ -5,8 +5,8 @@
 //   main segments; a term with no element behind it is left out).
 //   Igap 1: g = max(Gapmin, gs + gm); Igap 2: g = max(Gapmin, min(Fscalegap (gs + gm), Gapmax)),
 //   Gapmax = 0 meaning no cap. gm = t/2 of the main shell (0 for a brick face); gs = t/2 of the
-//   thickest shell at the secondary node, sqrt(A)/2 for a truss of cross-section A (the largest of these;
-//   0 for bricks only or no element).
+//   thickest shell at the secondary node, sqrt(A)/2 for a truss or beam of cross-section A (the largest of
+//   these; 0 for bricks only or no element).
 // Stiffness, 4.2. Main segment on a shell: Km = Stfac 0.5 E t; on a brick: Km = Stfac B S^2 / V.
 //   Secondary node on a shell: Ks = Stfac 0.5 E t; on a brick: Ks = Stfac B V^(1/3).
 //   A tetrahedron counts as a solid as a brick does (Radioss keeps it as a degenerate brick): its face gives
@@ -188,6 +188,28 @@ struct NodeSupport {
   std::vector<double> k_brick;         // B V^(1/3) (max over bricks)
 };
 
+// A truss's or beam's nodes (`stride` slots an element): the largest half section size and axial stiffness.
+void support_of_line_elements(const model::Model& m, const model::ElementBlock& b, std::size_t stride,
+                              NodeSupport& s) {
+  for (std::size_t e = 0; e < b.size(); ++e) {
+    const auto part = b.part[e];
+    if (part < 0) continue;
+    const auto& p = m.parts[static_cast<std::size_t>(part)];
+    if (p.property < 0 || p.material < 0) continue;
+    const auto& prop = m.properties[static_cast<std::size_t>(p.property)];
+    const double area = prop.kind == model::PropertyKind::Beam ? prop.beam.area : prop.truss.area;
+    const double half = p.contact_thickness > 0 ? 0.5 * p.contact_thickness : 0.5 * std::sqrt(area);
+    const auto n1 = b.conn[stride * e], n2 = b.conn[stride * e + 1];
+    if (n1 < 0 || n2 < 0) continue;
+    const double l = model::norm(model::sub(node_x(m, n2), node_x(m, n1)));
+    const double k = l > 0 ? material_of(m, part).young * area / l : 0.0;
+    for (const auto node : {n1, n2}) {
+      s.half_thickness[node] = std::max(s.half_thickness[node], half);
+      s.k_shell[node] = std::max(s.k_shell[node], k);
+    }
+  }
+}
+
 NodeSupport node_support(const model::Model& m) {
   NodeSupport s;
   const auto n = m.nodes.size();
@@ -218,25 +240,11 @@ NodeSupport node_support(const model::Model& m) {
       if (node >= 0) s.k_brick[node] = std::max(s.k_brick[node], k);
     }
   }
-  // Trusses: gs = sqrt(A)/2 for the cross-section A (or half the /PART contact thickness when given), and
-  // the truss's axial stiffness E A / L as the node's stiffness term.
+  // Trusses and beams: gs = sqrt(A)/2 for the cross-section A (or half the /PART contact thickness when
+  // given), and the axial stiffness E A / L as the node's stiffness term.
   // [inferred: Ks = E A / L, the nodal stiffness Radioss's starter gives a truss node (tmass.F)]
-  for (std::size_t e = 0; e < m.trusses.size(); ++e) {
-    const auto part = m.trusses.part[e];
-    if (part < 0) continue;
-    const auto& p = m.parts[static_cast<std::size_t>(part)];
-    if (p.property < 0 || p.material < 0) continue;
-    const double area = m.properties[static_cast<std::size_t>(p.property)].truss.area;
-    const double half = p.contact_thickness > 0 ? 0.5 * p.contact_thickness : 0.5 * std::sqrt(area);
-    const auto n1 = m.trusses.conn[2 * e], n2 = m.trusses.conn[2 * e + 1];
-    if (n1 < 0 || n2 < 0) continue;
-    const double l = model::norm(model::sub(node_x(m, n2), node_x(m, n1)));
-    const double k = l > 0 ? material_of(m, part).young * area / l : 0.0;
-    for (const auto node : {n1, n2}) {
-      s.half_thickness[node] = std::max(s.half_thickness[node], half);
-      s.k_shell[node] = std::max(s.k_shell[node], k);
-    }
-  }
+  support_of_line_elements(m, m.trusses, 2, s);
+  support_of_line_elements(m, m.beams, 3, s);
   for (std::size_t e = 0; e < m.tetras.size(); ++e) {
     const auto x = tetra_x(m, static_cast<std::int32_t>(e));
     const double v = std::max(0.0, model::tetra_volume(x[0], x[1], x[2], x[3]));

@@ -595,6 +595,8 @@ BRICK_REC = [F("brick_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 
 SPRING_REC = [F("spring_ID", "I", 1, 10), F("n1", "I", 11, 20), F("n2", "I", 21, 30), F("n3", "I", 31, 40)]
 TRUSS_REC = [F("truss_ID", "I", 1, 10), F("n1", "I", 11, 20), F("n2", "I", 21, 30)]
 TRUSS_PROPS = ("/PROP/TRUSS", "/PROP/TYPE2")
+BEAM_REC = [F("beam_ID", "I", 1, 10), F("n1", "I", 11, 20), F("n2", "I", 21, 30), F("n3", "I", 31, 40)]
+BEAM_PROPS = ("/PROP/BEAM", "/PROP/TYPE3")
 TETRA_REC = [F("tetra_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)]
 # /SH3N as OpenRadioss cuts the card (docs/keywords.md): PHI 71-90, Thick 91-100.
 SH3N_REC = [F("tria_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(3)] + \
@@ -676,6 +678,12 @@ STARTER = {
     "/SPRING": ("part", False, lambda v: [], "records", SPRING_REC),
     "/TRUSS": ("part", False, lambda v: [], "records", TRUSS_REC),
     "/PROP/TRUSS": ("id", True, lambda v: [card([F("Area", "R", 1, 20), F("Gap", "R", 21, 40)])], None, None),
+    "/BEAM": ("part", False, lambda v: [], "records", BEAM_REC),
+    "/PROP/BEAM": ("id", True, lambda v: [card([F("Ismstr", "I", 11, 20)]), card(reals("Dm", "Df")),
+                                          card(reals("Area", "Iyy", "Izz", "Ixx")),
+                                          card([F("Wx1", "I", 4, 4), F("Wy1", "I", 5, 5), F("Wz1", "I", 6, 6),
+                                                F("Wx2", "I", 8, 8), F("Wy2", "I", 9, 9), F("Wz2", "I", 10, 10),
+                                                F("Ishear", "I", 11, 20)])], None, None),
     "/PROP/SPRING": ("id", True, prop_spring, None, None),
     "/PROP/TYPE4": ("id", True, prop_spring, None, None),
     "/PROP/SPR_GENE": ("id", True, prop_spr_gene, None, None),
@@ -756,6 +764,7 @@ STARTER = {
     "/TH/SH3N": ("id", True, lambda v: [], "threcords", THNODE_REC),
     "/TH/SPRING": ("id", True, lambda v: [], "threcords", THELEM_REC),
     "/TH/TRUSS": ("id", True, lambda v: [], "threcords", THELEM_REC),
+    "/TH/BEAM": ("id", True, lambda v: [], "threcords", THELEM_REC),
     "/TH/RBODY": ("id", True, lambda v: [], "thids", ID_REC),
     "/TH/SUBS": ("id", True, lambda v: [], "thids", ID_REC),
     "/SECT": ("id", True, sect, None, None),
@@ -1387,6 +1396,7 @@ def semantic(ck, m):
     elements(tables)
     spring_elements(tables)
     truss_elements(tables)
+    beam_elements(tables)
     parts_and_properties(tables)
     spring_properties(tables)
     formulations(tables)
@@ -1492,7 +1502,8 @@ def model_objects(tables):
 
     parts = by_id(("/PART",), "part")
     props = by_id(("/PROP/SHELL", "/PROP/TYPE1", "/PROP/SOLID", "/PROP/TYPE14", "/PROP/SPRING", "/PROP/TYPE4",
-                   "/PROP/SPR_GENE", "/PROP/TYPE8", "/PROP/SPR_BEAM", "/PROP/TYPE13", "/PROP/TRUSS", "/PROP/TYPE2"),
+                   "/PROP/SPR_GENE", "/PROP/TYPE8", "/PROP/SPR_BEAM", "/PROP/TYPE13", "/PROP/TRUSS", "/PROP/TYPE2",
+                   "/PROP/BEAM", "/PROP/TYPE3"),
                   "property")
     mats = by_id(("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02",
                   "/MAT/LAW36", "/MAT/PLAS_TAB", "/MAT/LAW27", "/MAT/PLAS_BRIT", "/MAT/LAW0", "/MAT/VOID",
@@ -1697,6 +1708,64 @@ def truss_elements(tables):
                                                    "/MAT/PLAS_JOHNS", "/MAT/LAW02"):
             p = pos(parts[pid], "mat_ID")
             I("RX510", p[0], p[1], "part %d: trusses run laws 1 and 2 only" % pid)
+
+
+def beam_elements(tables):
+    """Type-3 beams (model_builder.cpp, check_formulations.cpp): the part has a beam property, n1 and n2 exist,
+    differ and lie apart, n3 exists when given and lies off the axis, ids unique; the section's values > 0,
+    Ismstr 1 and 3 refused; the part's material is law 1 or 2."""
+    I, m, nodes, part_kind, parts = tables.issue, tables.m, tables.nodes, tables.part_kind, tables.parts
+    props, mats = tables.props, tables.mats
+    beam_ids = set()
+    for o in m.of("/BEAM"):
+        if o["id"] not in parts:
+            I("RX402", o["pos"][0], o["pos"][1], "/BEAM: part %d does not exist" % o["id"])
+        part_kind.setdefault(o["id"], set()).add("/BEAM")
+        po = parts.get(o["id"])
+        if po is not None and val(po, "prop_ID") in props and props[val(po, "prop_ID")]["path"] not in BEAM_PROPS:
+            I("RX407", o["pos"][0], o["pos"][1], "/BEAM/%d: part of the wrong property kind" % o["id"])
+        for r, p in o["recs"]:
+            eid = r.get("beam_ID")
+            if eid in beam_ids:
+                I("RX401", p[0], p[1], "beam %d defined twice" % eid)
+                continue
+            beam_ids.add(eid)
+            ns = [r.get("n1"), r.get("n2")]
+            bad = [x for x in ns if x is None or x not in nodes]
+            if r.get("n3") not in (None, 0) and r.get("n3") not in nodes:
+                bad.append(r.get("n3"))
+            for _ in bad:
+                I("RX406", p[0], p[1], "beam %s uses a node that does not exist" % eid)
+            if bad:
+                continue
+            if ns[0] == ns[1] or nodes[ns[0]] == nodes[ns[1]]:
+                I("RX604", p[0], p[1], "beam %s has no length" % eid)
+            elif r.get("n3") not in (None, 0):
+                a, b, c = nodes[ns[0]], nodes[ns[1]], nodes[r.get("n3")]
+                axis, y = sub(b, a), sub(c, a)
+                if not norm(cross(axis, y)) > 1e-12 * norm(axis) * norm(y):
+                    I("RX603", p[0], p[1], "beam %s: n3 on its axis" % eid)
+    for o in props.values():
+        if o["path"] not in BEAM_PROPS:
+            continue
+        for name in ("Area", "Iyy", "Izz", "Ixx"):
+            if val(o, name, None) is None:
+                p = pos(o, name)
+                I("RX502", p[0], p[1], "beam property %d: %s is blank" % (o["id"], name))
+            elif not val(o, name) > 0:
+                p = pos(o, name)
+                I("RX501", p[0], p[1], "beam property %d: %s is not positive" % (o["id"], name))
+        if val(o, "Ismstr", 0) in (1, 3):
+            p = pos(o, "Ismstr")
+            I("RX510", p[0], p[1], "beam property %d: small strain" % o["id"])
+    for pid, kinds in part_kind.items():
+        if "/BEAM" not in kinds or pid not in parts:
+            continue
+        mat = mats.get(val(parts[pid], "mat_ID"))
+        if mat is not None and mat["path"] not in ("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2",
+                                                   "/MAT/PLAS_JOHNS", "/MAT/LAW02"):
+            p = pos(parts[pid], "mat_ID")
+            I("RX510", p[0], p[1], "part %d: beams run laws 1 and 2 only" % pid)
 
 
 def parts_and_properties(tables):

@@ -622,6 +622,47 @@ def _():
         [("RX510", "PART4.mat_ID")]
 
 
+BEAMP = dict(Ismstr=0, Dm=0.0, Df=0.0, Area=100.0, Iyy=833.0, Izz=833.0, Ixx=1406.0, Wdof="000 000", Ishear=0)
+
+
+def with_beam(d, row=(31, 3, 6, 0), mat=2, **prop):
+    """d with /BEAM/4 (beam 31 between the plate's nodes 3 and 6, tag BEAM_31) in part 4 (tag PART4, material
+    `mat`: 2 the elastic law 1) of /PROP/BEAM/4 (tag PBEAM: a 10 mm square section, the given values on
+    top)."""
+    d.insert_before("AFTER_PARTS", block("BEAM", "/BEAM", 4, rows=[row], row_tags=["BEAM_31"]) +
+                    part(4, "Beam", 4, mat))
+    d.insert_before("AFTER_MATS", block("PBEAM", "/PROP/BEAM", 4, "Beam", **dict(BEAMP, **prop)))
+    return d
+
+
+@fault("beam_small_strain")
+def _():
+    d = with_beam(base(), Ismstr=1)
+    return d, "/PROP/BEAM/4 Ismstr = 1: small strain (the initial length in the strains), not implemented for " \
+        "beams", [("RX510", "PBEAM.Ismstr")]
+
+
+@fault("beam_zero_inertia")
+def _():
+    d = with_beam(base(), Iyy=-1.0)
+    return d, "/PROP/BEAM/4 Iyy = -1: a second moment of area must be > 0", [("RX501", "PBEAM.Iyy")]
+
+
+@fault("beam_orientation_on_axis")
+def _():
+    d = with_beam(base(), row=(31, 1, 3, 2))
+    return d, "beam 31 from node 1 to node 3 with its orientation node 2 on that line: no y axis", \
+        [("RX603", "BEAM_31")]
+
+
+@fault("beam_law_not_run")
+def _():
+    d = with_beam(base(), mat=3)
+    d.insert_before("AFTER_MATS", block("VOID3", "/MAT/VOID", 3, "Void"))
+    return d, "part 4's beams have the void material (law 0): radx's type-3 beams run laws 1 and 2 only", \
+        [("RX510", "PART4.mat_ID")]
+
+
 SPR8 = dict(M=1e-6, Inertia=0.0, skew_ID=0, sens_ID=0, Isflag=0, Ifail=0, Ifail2=0, Iequil=0, Fsmooth=0, Fcut=0.0,
             **{k + d: v for d in "123456" for k, v in (("K", 0.0), ("C", 0.0), ("A", 0.0), ("B", 0.0), ("D", 0.0),
                                                       ("fct_ID1", 0), ("H", 0), ("fct_ID2", 0), ("fct_ID3", 0),

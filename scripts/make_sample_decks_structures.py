@@ -18,6 +18,7 @@ Decks (units Mg, mm, s: MPa, N, mJ):
   rubber_block     a /MAT/OGDEN (law 42) block stretched to twice its length and back
   spring_beam      a heavy node on a TYPE13 beam-type spring (/PROP/SPR_BEAM) swinging as a cantilever
   truss_bar        two truss bars (laws 1 and 2) pulled from a clamp: the wave force and the yield force
+  beam_cantilever  two cantilevers of type-3 beams (laws 1 and 2) under a tip load: period, deflection, hinge
   foam_block       a /MAT/FOAM_TAB (law 70) block crushed and released: the area between the curves
   old_layout_2019  a deck in the 2019 layout with the group, surface, box, subset, transform, submodel,
                    skew, section, accelerometer and control keywords the other samples do not use
@@ -1654,6 +1655,110 @@ of the values above, which the reference holds.
 
 
 # ---------------------------------------------------------------------------------------------------
+# 8c. Two cantilevers of type-3 beams under a tip load (/BEAM, /PROP/BEAM)
+
+BEAMC = dict(L=1000.0, N=10, A_SEC=10.0, RHO=7.85e-9, E=210000.0, NU=0.3, P=10.0, A_YIELD=200.0, P_PLASTIC=25.0)
+
+
+def beam_cantilever():
+    """Two cantilevers of 10 type-3 beams (10 mm square section) loaded at the tip from t = 0: an elastic one
+    swings about P L^3 / 3 E I at its first bending frequency; a law-2 one (b = 0) whose root moment the
+    resultant criterion caps at sigma_y a^3 / 6."""
+    p = BEAMC
+    run = "BEAM_CANTILEVER"
+    n, L, a = p["N"], p["L"], p["A_SEC"]
+    area, inertia, torsion = a * a, a ** 4 / 12.0, 0.1406 * a ** 4
+    omega = 1.875104 ** 2 * math.sqrt(p["E"] * inertia / (p["RHO"] * area * L ** 4))
+    t_stop = 1.5 * 2 * math.pi / omega
+    d = starter(run, "Two cantilevers of type-3 beams under a tip load", [
+        "Sample deck: /BEAM with /PROP/BEAM (type 3), laws 1 and 2. Units Mg, mm, s (MPa, N, mJ).",
+        "Two cantilevers of %d beams along X, %g mm long, %g mm square section, clamped at x = 0;" % (n, L, a),
+        "part 1 elastic with a %g N tip load along Z;" % p["P"],
+        "part 2 Johnson-Cook a = %g MPa, b = 0, with %g N." % (p["A_YIELD"], p["P_PLASTIC"]),
+        "Node 1000 orients the first (local y = global Y); the second's blank n3 takes global Y."])
+    bars = [(0, 1), (100, 2)]
+    d.rows("/NODE", [(off + k + 1, k * L / n, float(off), 0.0) for off, _ in bars for k in range(n + 1)] +
+           [(1000, 0.0, 50.0, 0.0)])
+    d.ruler()
+    for off, part in bars:
+        d.rows("/BEAM", [(off + k + 1, off + k + 1, off + k + 2, 1000 if off == 0 else 0) for k in range(n)],
+               ident=part)
+    d.ruler()
+    d.card("/PART", 1, "Elastic cantilever", prop_ID=1, mat_ID=1, subset_ID=0, Thick=0.0)
+    d.card("/PART", 2, "Plastic cantilever", prop_ID=1, mat_ID=2, subset_ID=0, Thick=0.0)
+    d.comment("Dm 0 and Df 0 (= 0.01, the default flexural damping); no released rotation; shear included")
+    d.card("/PROP/BEAM", 1, "Square %g mm" % a, Ismstr=0, Dm=0.0, Df=0.0, Area=area, Iyy=inertia, Izz=inertia,
+           Ixx=torsion, Wdof="000 000", Ishear=0)
+    d.card("/MAT/LAW1", 1, "Elastic steel", RHO_I=p["RHO"], E=p["E"], nu=p["NU"])
+    mat_jc(d, 2, "Perfectly plastic steel", p["RHO"], p["E"], p["NU"], p["A_YIELD"], 0.0, 1.0)
+    d.ruler()
+    d.card("/GRNOD/NODE", 1, "Clamps (x = 0)", ids=[1, 101])
+    d.card("/BCS", 1, "Clamped", Tra_rot=rc.bcs_code("111", "111"), skew_ID=0, grnod_ID=1)
+    d.card("/GRNOD/NODE", 2, "Elastic tip", ids=[n + 1])
+    d.card("/GRNOD/NODE", 3, "Plastic tip", ids=[101 + n])
+    d.rows("/FUNCT", [(0.0, 1.0), (10.0, 1.0)], ident=1, title="Constant")
+    d.card("/CLOAD", 1, "Elastic tip load", funct_IDT=1, Dir="Z", skew_ID=0, sensor_ID=0, grnod_ID=2,
+           Ascale_x=0.0, Fscale_y=p["P"])
+    d.card("/CLOAD", 2, "Plastic tip load", funct_IDT=1, Dir="Z", skew_ID=0, sensor_ID=0, grnod_ID=3,
+           Ascale_x=0.0, Fscale_y=p["P_PLASTIC"])
+    d.ruler()
+    d.card("/TH/NODE", 1, "Tips", variables=["DEF"], rows=[(n + 1, 0, "elastic tip"), (101 + n, 0, "plastic tip")])
+    d.card("/TH/BEAM", 1, "Root beams", variables=["DEF", "EPSP"], rows=[(1,), (101,)])
+    d.card("/TH/PART", 1, "Cantilever energies", variables=["DEF"], ids=[1, 2])
+    d.ruler()
+    d.raw("/END")
+    e = engine(run, float("%.4g" % t_stop), 1e-3, 2e-2, ["VONM", "EPSP"], ["VEL", "DISP"],
+               ["Run to one and a half periods of the elastic cantilever's first bending mode."])
+    return run, d, e
+
+
+def beam_cantilever_deck():
+    run, d, e = beam_cantilever()
+    p = BEAMC
+    n, L, a = p["N"], p["L"], p["A_SEC"]
+    area, inertia = a * a, a ** 4 / 12.0
+    G = p["E"] / (2 * (1 + p["NU"]))
+    delta = p["P"] * L ** 3 / (3 * p["E"] * inertia) + p["P"] * L / (5.0 / 6.0 * G * area)
+    omega = 1.875104 ** 2 * math.sqrt(p["E"] * inertia / (p["RHO"] * area * L ** 4))
+    period = 2 * math.pi / omega
+    m_yield = p["A_YIELD"] * a ** 3 / 6.0
+    t_half = round(period / 2, 4)
+    readme = f"""# Two cantilevers of type-3 beams under a tip load (/BEAM, /PROP/BEAM)
+
+`{run}_0000.rad` (starter, format 2026) and `{run}_0001.rad` (engine), generated by `{GENERATOR}`
+(edit the script and regenerate). Units: **Mg, mm, s** (MPa, N, mJ).
+
+Two cantilevers of {n} beams (type 3, {g(a)} mm square: A = {g(area)} mm2, I = {g(inertia)} mm4) along X,
+{g(L)} mm long, clamped at x = 0 and loaded at the tip along Z from t = 0. Node 1000 orients the first: its local
+y axis is global Y (the second leaves n3 blank, which takes global Y too).
+
+## Expected physics
+
+- Elastic cantilever (part 1, {g(p['P'])} N): the step load sets the tip swinging between 0 and twice the static
+  deflection delta = P L^3 / 3 E I + P L / (5/6 G A) = {g(delta)} mm, at the first bending period
+  2 pi / (1.875^2 sqrt(E I / (rho A L^4))) = {g(period * 1e3)} ms; the root moment swings up to 2 P L = {g(2 * p['P'] * L)} N mm.
+- Plastic cantilever (part 2, Johnson-Cook a = {g(p['A_YIELD'])} MPa, b = 0, {g(p['P_PLASTIC'])} N): the dynamic
+  root moment 2 P L = {g(2 * p['P_PLASTIC'] * L)} N mm would exceed what the type-3 beam's resultant criterion
+  sqrt(N^2 + 3 A (Mx^2/Ixx + My^2/Iyy + Mz^2/Izz)) / A <= sigma_y allows in pure bending: M = sigma_y a^3 / 6 =
+  {g(m_yield)} N mm (the elastic limit moment: Radioss's global plasticity has no shape factor). The root beam
+  flows (EPSP > 0) and its moment stays at that value.
+
+`tests/unit/solver/elements/beam/test_beam.cpp` asserts the elastic cantilever's period and mean deflection
+against these formulas on the same beam (measured: period 0.8 % above, mean deflection within 0.04 %); this deck
+is the regression run (`{run}.ref`): the elastic tip at half a period, the plastic root moment and its plastic
+strain.
+"""
+    ref = ref_text(run, [
+        ("cycles", "0.01", "2", "1 % of the cycles: the beams' step"),
+        ("energy.error_percent", "0", "0.5", "balance within half a point of the recorded value"),
+        ("th:node/1:%d:DZ@%g" % (n + 1, t_half), "0.03", "0.01", "elastic tip near 2 delta at half a period, 3 %"),
+        ("th:beam/1:101:M2@%g" % t_half, "0.01", "1", "plastic root moment at sigma_y a^3 / 6, within 1 %"),
+        ("th:beam/1:101:EPSP@%g" % t_half, "0.05", "1e-6", "plastic strain of the root beam, within 5 %"),
+    ])
+    return run, d, e, readme, ref
+
+
+# ---------------------------------------------------------------------------------------------------
 # 9. A foam block crushed and released (/MAT/FOAM_TAB)
 
 FOAM = dict(L=10.0, N=1, RHO=5e-11, E0=20.0, T=0.02, EM=0.6,
@@ -1800,7 +1905,7 @@ DECKS = {"taylor_bar": taylor_bar_deck, "bar_rwall": bar_rwall_deck, "imposed_lo
          "perforation_tab": perforation_tab_deck, "brittle_strip": brittle_strip_deck,
          "ringing_strip": ringing_strip_deck, "fail_tab_strip": fail_tab_strip_deck,
          "rubber_block": rubber_block_deck, "spring_beam": spring_beam_deck,
-         "foam_block": foam_block_deck, "truss_bar": truss_bar_deck}
+         "foam_block": foam_block_deck, "truss_bar": truss_bar_deck, "beam_cantilever": beam_cantilever_deck}
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv[1:]))

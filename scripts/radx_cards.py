@@ -178,6 +178,7 @@ LAYOUTS = {
     "/TETRA4": Layout(title=False, rows=Card(i("tetra_ID"), *[i("node_ID%d" % k) for k in range(1, 5)])),
     "/SPRING": Layout(title=False, rows=Card(i("spring_ID"), i("node_ID1"), i("node_ID2"), i("node_ID3"))),
     "/TRUSS": Layout(title=False, rows=Card(i("truss_ID"), i("node_ID1"), i("node_ID2"))),
+    "/BEAM": Layout(title=False, rows=Card(i("beam_ID"), i("node_ID1"), i("node_ID2"), i("node_ID3"))),
     "/PART": Layout(Card(i("prop_ID"), i("mat_ID"), i("subset_ID"), r("Thick"))),
     "/TRANSFORM/TRA": Layout(
         Card(i("grnod_ID"), r("X_translation"), r("Y_translation"), r("Z_translation"), i("node_ID1"),
@@ -211,6 +212,8 @@ LAYOUTS = {
              r("vdef_min", col=21, since=2023), r("vdef_max", since=2023), r("ASP_max", since=2023),
              r("COL_min", since=2023))),
     "/PROP/TRUSS": Layout(Card(r("Area"), r("Gap"))),
+    "/PROP/BEAM": Layout(Card(gap(10), i("Ismstr")), Card(r("Dm"), r("Df")), Card(r("Area"), r("Iyy"), r("Izz"), r("Ixx")),
+                         Card(s("Wdof", 10), i("Ishear"))),
     "/PROP/SPRING": Layout(
         Card(r("M"), gap(30), i("sens_ID"), i("Isflag"), i("Ileng")),
         Card(r("K"), r("C"), r("A"), r("B"), r("D")),
@@ -443,6 +446,7 @@ LAYOUTS = {
     "/TH/BRIC": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"))),
     "/TH/SPRING": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"))),
     "/TH/TRUSS": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"))),
+    "/TH/BEAM": Layout(variables=TH_VARIABLES, rows=Card(i("elem_ID"))),
     "/TH/PART": Layout(variables=TH_VARIABLES, ids=ID10("part_ID")),
     "/TH/INTER": Layout(variables=TH_VARIABLES, ids=ID10("inter_ID")),
     "/TH/RWALL": Layout(variables=TH_VARIABLES, ids=ID10("rwall_ID")),

@@ -261,8 +261,11 @@ RADX_SCHEMA(SpringProperty, RADX_FIELD(type), RADX_FIELD(mass), RADX_FIELD(inert
             RADX_FIELD(sensor), RADX_FIELD(skew), RADX_FIELD(ifail), RADX_FIELD(x), RADX_FIELD(y),
             RADX_FIELD(z), RADX_FIELD(rx), RADX_FIELD(ry), RADX_FIELD(rz));
 RADX_SCHEMA(TrussProperty, RADX_FIELD(area));
+RADX_SCHEMA(BeamProperty, RADX_FIELD(area), RADX_FIELD(iyy), RADX_FIELD(izz), RADX_FIELD(ixx), RADX_FIELD(dm),
+            RADX_FIELD(df), RADX_FIELD(ishear), RADX_FIELD(ismstr), RADX_FIELD(release_x),
+            RADX_FIELD(release_y1), RADX_FIELD(release_z1), RADX_FIELD(release_y2), RADX_FIELD(release_z2));
 RADX_SCHEMA(Property, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(shell),
-            RADX_FIELD(solid), RADX_FIELD(spring), RADX_FIELD(truss));
+            RADX_FIELD(solid), RADX_FIELD(spring), RADX_FIELD(truss), RADX_FIELD(beam));
 RADX_SCHEMA(Part, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(property), RADX_FIELD(material),
             RADX_FIELD(subset), RADX_FIELD(contact_thickness), RADX_FIELD(mass), RADX_FIELD(element_count));
 RADX_SCHEMA(Subset, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(children), RADX_FIELD(parts));
@@ -346,7 +349,7 @@ RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RAD
 
 // Written member by member below (write_radx, read_file, write_block, read_block): a new member of these
 // structs must be added there.
-static_assert(member_count<Model>() == 40, "model::Model changed: update write_radx and read_file");
+static_assert(member_count<Model>() == 41, "model::Model changed: update write_radx and read_file");
 static_assert(member_count<model::Nodes>() == 5, "model::Nodes changed: update write_radx and read_file");
 static_assert(member_count<model::ElementBlock>() == 7, "model::ElementBlock changed: update write_block");
 
@@ -388,6 +391,7 @@ void for_each_block(ModelT& m, Fn&& fn) {
   fn("tetra4", m.tetras);
   fn("spring2", m.springs);
   fn("truss2", m.trusses);
+  fn("beam2", m.beams);
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -662,7 +666,9 @@ void read_block(hid_t elements, const std::string& name, model::ElementBlock& b,
   for (std::size_t k = 0; k < b.conn.size(); ++k) {
     const std::int32_t node = b.conn[k];
     // A spring's third node (orientation) is optional.
-    if (b.type == model::ElementType::Spring2 && k % 3 == 2 && node == model::kNone) continue;
+    if ((b.type == model::ElementType::Spring2 || b.type == model::ElementType::Beam2) && k % 3 == 2 &&
+        node == model::kNone)
+      continue;
     if (node < 0 || static_cast<std::size_t>(node) >= node_count) {
       throw Failure("dataset " + path_of(g, "conn") + " has node index " + std::to_string(node) +
                     " out of range");

@@ -27,6 +27,7 @@ const char* block_name(model::ElementType t) {
     case model::ElementType::Tetra4: return "tetrahedron";
     case model::ElementType::Spring2: return "spring";
     case model::ElementType::Truss2: return "truss";
+    case model::ElementType::Beam2: return "beam";
   }
   return "element";
 }
@@ -45,6 +46,7 @@ template <class Fn>
 void for_each_line_block(const Model& m, Fn&& fn) {
   fn(m.springs, std::size_t{3});
   fn(m.trusses, std::size_t{2});
+  fn(m.beams, std::size_t{3});
 }
 
 }  // namespace
@@ -103,7 +105,8 @@ VtkhdfMeshSizes write_vtkhdf_mesh(hid_t file, const Model& m) {
   const std::size_t nn = m.nodes.size();
   const std::size_t nc = m.cell_count();
   const std::size_t max_conn = 4 * m.shells.size() + 3 * m.shells3.size() + 8 * m.bricks.size() +
-                               4 * m.tetras.size() + 2 * m.springs.size() + 2 * m.trusses.size();
+                               4 * m.tetras.size() + 2 * m.springs.size() + 2 * m.trusses.size() +
+                               2 * m.beams.size();
 
   std::vector<std::int64_t> connectivity, offsets, element_id, mixed;
   std::vector<std::uint8_t> types;

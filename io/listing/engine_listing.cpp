@@ -127,6 +127,7 @@ std::string_view step_source_label(StepSource s) {
     case StepSource::Imposed: return "DTIX";
     case StepSource::Spring: return "SPRING";
     case StepSource::Truss: return "TRUSS";
+    case StepSource::Beam: return "BEAM";
   }
   return "-";
 }

@@ -42,8 +42,20 @@ class EnergyErrorWarnings {
 };
 
 // What controls the time step printed on a listing line.
-enum class StepSource : std::uint8_t { None, Brick, Shell, Shell3, Node, Interface, Imposed, Spring, Truss };
-// "BRICK", "SHELL", "SH3N", "NODE", "INTER", "SPRING", "TRUSS", "DTIX" (/DTIX set the step), or "-" for None.
+enum class StepSource : std::uint8_t {
+  None,
+  Brick,
+  Shell,
+  Shell3,
+  Node,
+  Interface,
+  Imposed,
+  Spring,
+  Truss,
+  Beam
+};
+// "BRICK", "SHELL", "SH3N", "NODE", "INTER", "SPRING", "TRUSS", "BEAM", "DTIX" (/DTIX set the step), or "-"
+// for None.
 std::string_view step_source_label(StepSource s);
 
 // One listing line.

@@ -339,6 +339,11 @@ void write_properties(std::ostream& os, const model::Model& m) {
          << "\n    thickness " << s.thickness << "  N " << s.n_ip << "  Hm " << s.hm << "  Hf " << s.hf
          << "  Hr " << s.hr << "  Ashear " << s.ashear << "  Ismstr " << s.ismstr << "  Ithick " << s.ithick
          << "  Iplas " << s.iplas << '\n';
+    } else if (p.kind == model::PropertyKind::Beam) {
+      const auto& b = p.beam;
+      os << "/PROP/BEAM\n    area " << b.area << "  Iyy " << b.iyy << "  Izz " << b.izz << "  Ixx " << b.ixx
+         << "  Dm " << b.dm << "  Df " << b.df << "  Ishear " << b.ishear
+         << ": type-3 beam, section resultants (laws 1 and 2)\n";
     } else if (p.kind == model::PropertyKind::Truss) {
       os << "/PROP/TRUSS\n    area " << p.truss.area << ": 2-node truss, axial force only (laws 1 and 2)\n";
     } else if (p.kind == model::PropertyKind::Spring) {

@@ -133,6 +133,7 @@ const model::ElementBlock& ModelBuilder::block(model::ElementType type) const {
     case model::ElementType::Tetra4: return m_.tetras;
     case model::ElementType::Spring2: return m_.springs;
     case model::ElementType::Truss2: return m_.trusses;
+    case model::ElementType::Beam2: return m_.beams;
   }
   return m_.shells;
 }

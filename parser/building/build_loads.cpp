@@ -805,6 +805,15 @@ const std::vector<ThKindDef>& th_kinds() {
        {{"DEF", {"OFF", "F", "IE", "PLAS"}}},
        {"OFF", "F", "IE", "A", "L", "PLAS"},
        {}},
+      // OpenRadioss's type-3 beam names (hm_read_thgrou.F): the section's resultants in the beam's frame, the
+      // work of the section and the plastic strain.
+      {"/TH/BEAM",
+       K::Beam,
+       "beam",
+       "/BEAM",
+       {{"DEF", {"OFF", "F1", "F2", "F3", "M1", "M2", "M3", "IE"}}},
+       {"OFF", "F1", "F2", "F3", "M1", "M2", "M3", "IE", "EPSP"},
+       {}},
   };
   return kinds;
 }
@@ -882,6 +891,7 @@ std::int32_t th_object(const ModelBuilder& b, model::ThKind kind, std::int64_t i
     case model::ThKind::Accel: return in(b.accel_ids_);
     case model::ThKind::Spring: return b.m_.springs.index.find(id);
     case model::ThKind::Truss: return b.m_.trusses.index.find(id);
+    case model::ThKind::Beam: return b.m_.beams.index.find(id);
   }
   return kNone;
 }

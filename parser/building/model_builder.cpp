@@ -622,13 +622,16 @@ void ModelBuilder::build_properties() {
   for (const auto& r : deck_.records) {
     const auto path = r.decl->path;
     if (path != "/PROP/SHELL" && path != "/PROP/SOLID" && path != "/PROP/SPRING" &&
-        path != "/PROP/SPR_GENE" && path != "/PROP/SPR_BEAM" && path != "/PROP/TRUSS")
+        path != "/PROP/SPR_GENE" && path != "/PROP/SPR_BEAM" && path != "/PROP/TRUSS" && path != "/PROP/BEAM")
       continue;
     model::Property p;
     p.id = r.id;
     p.title = r.title;
     if (path == "/PROP/SPRING" || path == "/PROP/SPR_GENE" || path == "/PROP/SPR_BEAM") {
       read_spring_property(r, p);
+    } else if (path == "/PROP/BEAM") {
+      p.kind = model::PropertyKind::Beam;
+      read_beam_property(r, p.beam);
     } else if (path == "/PROP/TRUSS") {
       p.kind = model::PropertyKind::Truss;
       p.truss.area = r.get_real("Area");  // > 0: the field's rule
@@ -765,6 +768,7 @@ std::string_view property_kind_name(model::PropertyKind k) {
     case model::PropertyKind::Solid: return "solid";
     case model::PropertyKind::Spring: return "spring";
     case model::PropertyKind::Truss: return "truss";
+    case model::PropertyKind::Beam: return "beam";
   }
   return "other";
 }
@@ -774,6 +778,7 @@ std::string_view property_keyword(model::PropertyKind k) {
     case model::PropertyKind::Solid: return "/PROP/SOLID";
     case model::PropertyKind::Spring: return "/PROP/SPRING";
     case model::PropertyKind::Truss: return "/PROP/TRUSS";
+    case model::PropertyKind::Beam: return "/PROP/BEAM";
   }
   return "/PROP";
 }
@@ -807,9 +812,15 @@ std::int32_t element_part(ModelBuilder& b, const KeywordRecord& r, const Element
 bool append_element_nodes(ModelBuilder& b, model::ElementBlock& blk, std::string_view keyword,
                           std::int64_t eid, const std::int64_t* user, SourcePos pos) {
   const int npe = blk.npe();
+  // A beam's third node only orients its section: blank takes a global axis (beam_type3.cpp).
+  const int optional_from = blk.type == model::ElementType::Beam2 ? 2 : npe;
   bool missing = false;
   for (int k = 0; k < npe; ++k) {
     std::int32_t n = kNone;
+    if (user[k] == 0 && k >= optional_from) {
+      blk.conn.push_back(kNone);
+      continue;
+    }
     if (user[k] == 0) {
       b.diags_.error(Diag::ElementNodeMissing, b.at(pos, 11 + 10 * k), About{keyword, eid},
                      std::string(kNodeNames[k]) + " is blank or 0: element " + std::to_string(eid) +
@@ -869,19 +880,33 @@ void check_brick_shape(ModelBuilder& b, const model::ElementBlock& blk, std::siz
   }
 }
 
-// A truss whose nodes start at blk.conn[base]: its two nodes must be distinct and apart (its length is
-// the denominator of its strain and its step).
-void check_truss_shape(ModelBuilder& b, const model::ElementBlock& blk, std::size_t base, SourcePos pos,
-                       const About& ab) {
-  const double length = model::norm(
-      model::sub(element_node_position(b.m_, blk, base, 1), element_node_position(b.m_, blk, base, 0)));
-  if (blk.conn[base] == blk.conn[base + 1])
-    b.diags_.error(Diag::RepeatedNodeInElement, b.at(pos, 1), ab,
-                   "truss " + std::to_string(ab.id) + " has n1 = n2; a truss joins two distinct nodes");
-  else if (!(length > 0))
+// A truss or beam whose nodes start at blk.conn[base]: its two nodes must be distinct and apart (its length
+// is the denominator of its strains and its step); a beam's orientation node must lie off its axis.
+void check_line_shape(ModelBuilder& b, const model::ElementBlock& blk, std::size_t base, SourcePos pos,
+                      const About& ab) {
+  const std::string what = blk.type == model::ElementType::Beam2 ? "beam" : "truss";
+  const auto x1 = element_node_position(b.m_, blk, base, 0), x2 = element_node_position(b.m_, blk, base, 1);
+  const double length = model::norm(model::sub(x2, x1));
+  if (blk.conn[base] == blk.conn[base + 1]) {
     b.diags_.error(
         Diag::RepeatedNodeInElement, b.at(pos, 1), ab,
-        "truss " + std::to_string(ab.id) + " has zero length: its two nodes are at the same place");
+        what + " " + std::to_string(ab.id) + " has n1 = n2; a " + what + " joins two distinct nodes");
+    return;
+  }
+  if (!(length > 0)) {
+    b.diags_.error(
+        Diag::RepeatedNodeInElement, b.at(pos, 1), ab,
+        what + " " + std::to_string(ab.id) + " has zero length: its two nodes are at the same place");
+    return;
+  }
+  if (blk.type != model::ElementType::Beam2 || blk.conn[base + 2] == kNone) return;
+  const auto y = model::sub(element_node_position(b.m_, blk, base, 2), x1);
+  const double off_axis = model::norm(model::cross(model::sub(x2, x1), y));
+  if (!(off_axis > 1e-12 * length * model::norm(y)))
+    b.diags_.error(Diag::DegenerateElement, b.at(pos, 31), ab,
+                   "beam " + std::to_string(ab.id) +
+                       ": its orientation node n3 lies on the beam's axis, so it gives no y axis; choose a "
+                       "node off the line n1 n2, or leave n3 blank for the global axis");
 }
 
 // A shell whose nodes start at blk.conn[base], read at `pos` (its thickness in column `thick_column`): fewer
@@ -963,7 +988,10 @@ void read_element_records(ModelBuilder& b, const ElementKind& kind, const Keywor
     if (missing) continue;
     // Coordinates that could not be read are already reported; their geometry would only echo it.
     bool unreadable = false;
-    for (int k = 0; k < npe; ++k) unreadable = unreadable || b.node_bad_[blk.conn[blk.conn.size() - npe + k]];
+    for (int k = 0; k < npe; ++k) {
+      const auto n = blk.conn[blk.conn.size() - static_cast<std::size_t>(npe) + static_cast<std::size_t>(k)];
+      unreadable = unreadable || (n != kNone && b.node_bad_[n]);
+    }
     if (unreadable) continue;
     // Geometry.
     const std::size_t base = blk.conn.size() - static_cast<std::size_t>(npe);
@@ -972,8 +1000,8 @@ void read_element_records(ModelBuilder& b, const ElementKind& kind, const Keywor
       b.check_tetra(blk, base, t.pos[e], eid);
     else if (blk.type == model::ElementType::Brick8)
       check_brick_shape(b, blk, base, t.pos[e], ab);
-    else if (blk.type == model::ElementType::Truss2)
-      check_truss_shape(b, blk, base, t.pos[e], ab);
+    else if (blk.type == model::ElementType::Truss2 || blk.type == model::ElementType::Beam2)
+      check_line_shape(b, blk, base, t.pos[e], ab);
     else
       check_shell_shape(b, blk, base, t.pos[e], cthick >= 0 ? t.fields[cthick]->first_col : 1, part, ab);
   }
@@ -1021,7 +1049,8 @@ void ModelBuilder::build_elements() {
                                {"/SH3N", "tria_ID", &m_.shells3, model::PropertyKind::Shell},
                                {"/BRICK", "brick_ID", &m_.bricks, model::PropertyKind::Solid},
                                {"/TETRA4", "tetra_ID", &m_.tetras, model::PropertyKind::Solid},
-                               {"/TRUSS", "truss_ID", &m_.trusses, model::PropertyKind::Truss}};
+                               {"/TRUSS", "truss_ID", &m_.trusses, model::PropertyKind::Truss},
+                               {"/BEAM", "beam_ID", &m_.beams, model::PropertyKind::Beam}};
   for (const auto& kind : kinds) {
     std::vector<SourcePos> pos;
     for (const auto* r : deck_.of(kind.keyword)) read_element_records(*this, kind, *r, pos);

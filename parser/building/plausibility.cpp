@@ -27,6 +27,7 @@ const char* keyword_of(model::ElementType t) {
     case model::ElementType::Tetra4: return "/TETRA4";
     case model::ElementType::Spring2: return "/SPRING";
     case model::ElementType::Truss2: return "/TRUSS";
+    case model::ElementType::Beam2: return "/BEAM";
   }
   return "/SHELL";
 }
@@ -38,6 +39,7 @@ Where element_where(const Deck& deck, model::ElementType t, std::int64_t id) {
                          : t == model::ElementType::Shell3  ? "tria_ID"
                          : t == model::ElementType::Spring2 ? "spring_ID"
                          : t == model::ElementType::Truss2  ? "truss_ID"
+                         : t == model::ElementType::Beam2   ? "beam_ID"
                                                             : "shell_ID";
   for (const auto* r : deck.of(keyword_of(t))) {
     const int c = r->records.column(id_field);

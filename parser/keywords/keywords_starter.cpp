@@ -299,6 +299,21 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    // Columns as OpenRadioss's reader cuts the card (hm_read_beam.F): id, then the nodes 10 wide.
+    KeywordDecl k = kw("/BEAM", "2-node beam elements of one part (a /PROP/BEAM part), one per line",
+                       Header::PartId, false, "part_ID");
+    k.tail = Tail::Records;
+    k.record =
+        card("beam", {I("beam_ID", 1, 10, "element id").refs(IdKind::Element).must().gt(0),
+                      I("n1", 11, 20, "first node").refs(IdKind::Node).must(),
+                      I("n2", 21, 30, "second node").refs(IdKind::Node).must(),
+                      I("n3", 31, 40,
+                        "orientation node: the local y axis points from n1 towards it; blank: global Y (Z "
+                        "for a beam along Y)")
+                          .refs(IdKind::Node)});
+    t.push_back(std::move(k));
+  }
+  {
     // Columns as OpenRadioss's reader cuts the card (hm_read_truss.F): id, then the nodes 10 wide.
     KeywordDecl k = kw("/TRUSS", "2-node truss elements of one part (a /PROP/TRUSS part), one per line",
                        Header::PartId, false, "part_ID");
@@ -325,6 +340,40 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
 // ---------------------------------------------------------------------------------------------------------
 // Properties and materials
 void add_properties_and_materials(std::vector<KeywordDecl>& t) {
+  {
+    // OpenRadioss hm_read_prop03.F; prop_p3_beam.cfg (one layout from radioss51 on).
+    KeywordDecl k =
+        kw("/PROP/BEAM",
+           "beam property (TYPE3): section area and inertias, damping, shear and released rotations",
+           Header::IdUnit, true, "prop_ID");
+    k.aliases = {"/PROP/TYPE3"};
+    k.cards = {
+        card("card 1",
+             {I("Ismstr", 11, 20,
+                "strain formulation: 0, 2 and 4 large strain (radx runs these); 1 and 3 small strain")
+                  .allow({0, 1, 2, 3, 4})}),
+        card("card 2", {R("Dm", 1, 20, "membrane damping (fraction of the critical damping)").dims(dim::none),
+                        R("Df", 21, 40, "flexural damping; 0 = 0.01").dims(dim::none)}),
+        card("card 3", {R("Area", 1, 20, "cross-section area").dims(dim::area).must().gt(0.0),
+                        R("Iyy", 21, 40, "second moment of area about the local y axis (bending in z)")
+                            .dims(Dim{0, 4, 0})
+                            .must()
+                            .gt(0.0),
+                        R("Izz", 41, 60, "second moment of area about the local z axis (bending in y)")
+                            .dims(Dim{0, 4, 0})
+                            .must()
+                            .gt(0.0),
+                        R("Ixx", 61, 80, "torsion constant").dims(Dim{0, 4, 0}).must().gt(0.0)}),
+        card("card 4",
+             {I("Wx1", 4, 4, "1: rotation about x released (at either node: torsion)").allow({0, 1}),
+              I("Wy1", 5, 5, "1: rotation about y released at node 1").allow({0, 1}),
+              I("Wz1", 6, 6, "1: rotation about z released at node 1").allow({0, 1}),
+              I("Wx2", 8, 8, "1: rotation about x released (at either node: torsion)").allow({0, 1}),
+              I("Wy2", 9, 9, "1: rotation about y released at node 2").allow({0, 1}),
+              I("Wz2", 10, 10, "1: rotation about z released at node 2").allow({0, 1}),
+              I("Ishear", 11, 20, "0: shear deformation taken into account; 1: neglected").allow({0, 1})})};
+    t.push_back(std::move(k));
+  }
   {
     // OpenRadioss hm_read_prop02.F; prop_p2_trus.cfg (one layout from radioss51 on).
     KeywordDecl k = kw("/PROP/TRUSS", "truss property (TYPE2): cross-section area (axial force only)",
@@ -2051,6 +2100,7 @@ void add_time_history(std::vector<KeywordDecl>& t) {
   th("/TH/ACCEL", {}, "time history of accelerometers", Objects::Ids);
   th("/TH/SPRING", {}, "time history of spring forces, elongations and energies", Objects::Records);
   th("/TH/TRUSS", {}, "time history of truss forces, energies and plastic strains", Objects::Records);
+  th("/TH/BEAM", {}, "time history of beam forces, moments, energies and plastic strains", Objects::Records);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -2381,12 +2431,12 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/MAT/LAW62", "/MAT/LAW65", "/MAT/LAW66", "/MAT/LAW69", "/MAT/LAW87", "/MAT/LAW88", "/MAT/LAW90",
         "/MAT/LAW109", "/MAT/PLAS_ZERIL", "/MAT/ZHAO", "/MAT/USER",
         // properties
-        "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE3", "/PROP/BEAM", "/PROP/TYPE9", "/PROP/SH_ORTH",
-        "/PROP/TYPE10", "/PROP/SH_COMP", "/PROP/TYPE11", "/PROP/SH_SANDW", "/PROP/TYPE16", "/PROP/SH_FABR",
-        "/PROP/TYPE17", "/PROP/TYPE18", "/PROP/INT_BEAM", "/PROP/TYPE20", "/PROP/TSHELL", "/PROP/TYPE22",
-        "/PROP/TYPE23", "/PROP/TYPE51", "/PROP/TYPE52", "/PROP/USER",
+        "/PROP/TYPE0", "/PROP/VOID", "/PROP/TYPE9", "/PROP/SH_ORTH", "/PROP/TYPE10", "/PROP/SH_COMP",
+        "/PROP/TYPE11", "/PROP/SH_SANDW", "/PROP/TYPE16", "/PROP/SH_FABR", "/PROP/TYPE17", "/PROP/TYPE18",
+        "/PROP/INT_BEAM", "/PROP/TYPE20", "/PROP/TSHELL", "/PROP/TYPE22", "/PROP/TYPE23", "/PROP/TYPE51",
+        "/PROP/TYPE52", "/PROP/USER",
         // elements
-        "/BEAM", "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD", "/TRIA", "/SPHCEL",
+        "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD", "/TRIA", "/SPHCEL",
         // groups, surfaces, boxes
         "/GRNOD/LINE", "/GRSHEL", "/GRSH3N", "/GRBRIC", "/GRBEAM", "/GRTRUS", "/GRSPRI", "/GRPART", "/GRQUAD",
         "/SURF/SURF", "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE",
@@ -2409,8 +2459,8 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/FUNCT_PYTHON", "/ACTIV", "/LEAK", "/DFS", "/EBCS", "/INIGRAV", "/INIMAP1D", "/INIMAP2D", "/PERTURB",
         "/STATE",
         // time history that radx does not write
-        "/TH/BEAM", "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME", "/TH/CLUSTER", "/ATH", "/BTH", "/CTH",
-        "/DTH", "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
+        "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME", "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH",
+        "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
         // engine keywords
         "/DT/BRICK/DEL", "/DT/BRICK/STOP", "/DT/SHELL/DEL", "/DT/SHELL/STOP", "/DT/SH_3N/DEL", "/DT/SH3N/DEL",
         "/DT/NODA/STOP", "/DT/NODA/KILL", "/DT/NODA/SET", "/DT/INTER/STOP", "/DT/AMS", "/ATFILE", "/H3D",

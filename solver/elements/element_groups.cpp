@@ -105,6 +105,19 @@ void TrussGroup::allocate(int n) {
   nodal_force.assign(2 * 3 * G, 0.0);
 }
 
+void BeamGroup::allocate(int n) {
+  count = n;
+  const auto G = static_cast<std::size_t>(kGroupSize);
+  conn.assign(2 * G, 0);
+  element.assign(G, -1);
+  for (auto* v : {&l0, &sig, &eps_p, &dmg, &e_int, &e_hg, &w_plastic, &rate, &dt, &k_nodal})
+    v->assign(G, 0.0);
+  ey.assign(3 * G, 0.0);
+  resultant.assign(6 * G, 0.0);
+  off.assign(G, 1.0);
+  nodal_force.assign(2 * 6 * G, 0.0);
+}
+
 void BrickGroup::allocate_points() {
   const auto G = static_cast<std::size_t>(kGroupSize);
   sig_p.assign(8 * 6 * G, 0.0);

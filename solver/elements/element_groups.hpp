@@ -277,8 +277,37 @@ struct TrussGroup : MaterialGroupCore {
   void allocate(int n);
 };
 
+// The section of a type-3 beam as its kernel uses it (beam_type3.cpp).
+struct BeamSection {
+  double area = 0, iyy = 0, izz = 0, ixx = 0;
+  double dm = 0, df = 0.01;
+  bool shear_neglected = false;  // Ishear 1
+};
+// Which end rotations a beam transmits: 1 transmitted, 0 released (Wdof 1); x is the torsion at either end.
+struct BeamReleases {
+  double x = 1, y1 = 1, z1 = 1, y2 = 1, z2 = 1;
+};
+struct BeamStep {
+  double dt = 0, k_nodal = 0;
+};
+
+// Type-3 beams (/BEAM, beam_type3.cpp): one part per group, laws 1 and 2. conn [2][G] n1 n2 (the orientation
+// node only sets ey at the start), nodal_force [2][6][G] forces and moments; the section's resultants
+// [6][G] N Qy Qz Mx My Mz in the beam's frame, ey [3][G] its y axis of the last cycle (global components);
+// sig [G] the mean axial stress N / A, eps_p [G] the plastic strain of law 2.
+struct BeamGroup : MaterialGroupCore {
+  using MaterialGroupCore::MaterialGroupCore;
+  BeamSection section;
+  BeamReleases releases;
+  GroupArray<double> l0{arena};         // [G] initial length
+  GroupArray<double> ey{arena};         // [3][G]
+  GroupArray<double> resultant{arena};  // [6][G]
+  [[nodiscard]] static constexpr int nodes_per_element() { return 2; }
+  void allocate(int n);
+};
+
 // Every element group of a model, kind by kind, in the one order all the engine's stages use: shells,
-// bricks, tetrahedra, springs, trusses. A flat group index counts through the kinds in that order (the
+// bricks, tetrahedra, springs, trusses, beams. A flat group index counts through the kinds in that order (the
 // element stage's chunks, its votes and the order of the nodal sums), and sums over groups are taken in it.
 struct ElementGroups {
   std::vector<ShellGroup> shells;
@@ -286,10 +315,11 @@ struct ElementGroups {
   std::vector<TetraGroup> tetras;
   std::vector<SpringGroup> springs;
   std::vector<TrussGroup> trusses;
+  std::vector<BeamGroup> beams;
 
   [[nodiscard]] std::int64_t count() const {
     return static_cast<std::int64_t>(shells.size() + bricks.size() + tetras.size() + springs.size() +
-                                     trusses.size());
+                                     trusses.size() + beams.size());
   }
   // Calls f(group) for every group, in the flat order.
   template <class F>
@@ -318,6 +348,7 @@ struct ElementGroups {
     for (auto& g : self.tetras) f(g);
     for (auto& g : self.springs) f(g);
     for (auto& g : self.trusses) f(g);
+    for (auto& g : self.beams) f(g);
   }
   template <class Self, class F>
   static void at(Self& self, std::int64_t flat, F& f) {
@@ -329,7 +360,9 @@ struct ElementGroups {
     if (k < self.tetras.size()) return f(self.tetras[k]);
     k -= self.tetras.size();
     if (k < self.springs.size()) return f(self.springs[k]);
-    f(self.trusses[k - self.springs.size()]);
+    k -= self.springs.size();
+    if (k < self.trusses.size()) return f(self.trusses[k]);
+    f(self.beams[k - self.trusses.size()]);
   }
 };
 
@@ -354,6 +387,9 @@ inline const model::ElementBlock& element_block(const model::Model& m, const Spr
 inline const model::ElementBlock& element_block(const model::Model& m, const TrussGroup&) {
   return m.trusses;
 }
+inline const model::ElementBlock& element_block(const model::Model& m, const BeamGroup&) {
+  return m.beams;
+}
 
 // Where a group's elements sit among the model's cells (4-node shells, 3-node shells, bricks, tetrahedra,
 // then springs and trusses: the order of the model file, the results and contact's element flags): slot i of
@@ -373,11 +409,15 @@ inline std::size_t first_cell(const model::Model& m, const SpringGroup&) {
 inline std::size_t first_cell(const model::Model& m, const TrussGroup&) {
   return m.element_count() + m.springs.size();
 }
+inline std::size_t first_cell(const model::Model& m, const BeamGroup&) {
+  return m.element_count() + m.springs.size() + m.trusses.size();
+}
 
 // True for the kinds whose elements are cells of the solid and shell mesh (contact's surfaces and element
 // flags number those cells only); springs and trusses are cells of the results after them.
 template <class Group>
-inline constexpr bool kMeshCell = kHasMaterial<Group> && !std::is_same_v<Group, TrussGroup>;
+inline constexpr bool kMeshCell =
+    kHasMaterial<Group> && !std::is_same_v<Group, TrussGroup> && !std::is_same_v<Group, BeamGroup>;
 
 // Adds each element's nodal stiffness contribution k_nodal to its nodes' sums k[node] (the nodal time step),
 // element by element and node by node of the element.
@@ -396,6 +436,9 @@ inline double initial_mass(const ShellGroup& g, std::size_t i, double rho0) {
 }
 inline double initial_mass(const TrussGroup& g, std::size_t i, double rho0) {
   return rho0 * g.area0[i] * g.l0[i];
+}
+inline double initial_mass(const BeamGroup& g, std::size_t i, double rho0) {
+  return rho0 * g.section.area * g.l0[i];
 }
 template <class Solid>
 requires(std::is_same_v<Solid, BrickGroup> ||
@@ -419,6 +462,9 @@ void spring_type8_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo
 void spring_type13_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo& cyc);
 void truss_axial_forces(TrussGroup& g, const NodeState& nodes, const MaterialParams& mat,
                         const CycleInfo& cyc);
+void beam_type3_forces(BeamGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
+// The step and the nodal stiffness of a type-3 beam of length l (beam_type3.cpp).
+[[nodiscard]] BeamStep beam_step(const BeamSection& s, const MaterialParams& mat, double l);
 // TYPE13's initial Y axis (unit, normal to l = x2 - x1): from r3 = x3 - x1 when given and off the axis, else
 // from the skew's Y axis (rows of `skew_axes`: X Y Z), else its X axis (spring_type13.cpp).
 [[nodiscard]] model::Vec3 spring_type13_initial_y(const model::Vec3& l, const std::optional<model::Vec3>& r3,

@@ -1,7 +1,8 @@
 // The explicit time loop; see explicit_engine.hpp for the cycle order and the energy definitions.
 // Masses and rotational inertias (docs/theory/elements.md section 5): shells m_e = rho t0 A0, m_e/4 per slot,
 // I = (m_e/4)(A0/9 + t0^2/12); 3-node shells m_e alpha_k/pi with I_e = m_e (A0/4.5 + t0^2/12);
-// bricks m_e/8 per node, tetrahedra m_e/4 per node, no inertia for either; TYPE8 springs I/2 per node.
+// bricks m_e/8 per node, tetrahedra m_e/4 per node, no inertia for either; TYPE8 springs I/2 per node;
+// type-3 beams as add_beam_inertias says (trusses carry none).
 #include "solver/engine/explicit_engine.hpp"
 
 #include <algorithm>
@@ -249,6 +250,39 @@ std::vector<std::string> ExplicitEngine::take_events() {
   return out;
 }
 
+namespace {
+
+// Type-3 beams: each node's rotational inertia (OpenRadioss starter pmass.F), with m = rho A l / 2 per node,
+// lambda = A l^2 / (12 max(Iyy, Izz)) and phi = 6 E / (5 G) / lambda min(Iyy, Izz) / max(Iyy, Izz):
+// I = 1.2 m (1.2 l)^2 / 12 + rho l / 2 max(Iyy, Izz), times max(1, (4 + phi) / (1 + phi) / (1 + lambda)) for
+// a short beam (lambda < 1), and at least rho l / 2 Ixx.
+void add_beam_inertias(const model::Model& m, NodeState& nodes) {
+  for (std::size_t e = 0; e < m.beams.size(); ++e) {
+    const auto* c = &m.beams.conn[3 * e];
+    const auto part = m.beams.part[e];
+    if (c[0] < 0 || c[1] < 0 || part == model::kNone) continue;
+    const auto& p = m.parts[static_cast<std::size_t>(part)];
+    if (p.property == model::kNone || p.material == model::kNone ||
+        m.properties[static_cast<std::size_t>(p.property)].kind != model::PropertyKind::Beam)
+      continue;
+    const auto& b = m.properties[static_cast<std::size_t>(p.property)].beam;
+    const auto& mat = m.materials[static_cast<std::size_t>(p.material)];
+    const double l = model::norm(model::sub(model::Vec3{m.nodes.x[c[1]], m.nodes.y[c[1]], m.nodes.z[c[1]]},
+                                            model::Vec3{m.nodes.x[c[0]], m.nodes.y[c[0]], m.nodes.z[c[0]]}));
+    const double bb = std::max({b.iyy, b.izz, 1e-30});
+    const double lambda = b.area * l * l / bb / 12.0;
+    const double phi = 1.2 * mat.young / std::max(mat.shear, 1e-30) / lambda * std::min(b.iyy, b.izz) / bb;
+    const double amplification = std::max(1.0, (4.0 + phi) / (1.0 + phi) / (1.0 + lambda));
+    const double half_mass = 0.5 * mat.rho * l * b.area;
+    double inertia = 1.2 * half_mass * (1.2 * l) * (1.2 * l) / 12.0 + mat.rho * 0.5 * l * bb;
+    if (lambda < 1.0) inertia *= amplification;
+    inertia = std::max(inertia, mat.rho * 0.5 * l * b.ixx);
+    for (int k = 0; k < 2; ++k) nodes.inertia[static_cast<std::size_t>(c[k])] += inertia;
+  }
+}
+
+}  // namespace
+
 void ExplicitEngine::build_nodes() {
   const auto& m = model_;
   nodes_.resize(m.nodes.size());
@@ -288,6 +322,7 @@ void ExplicitEngine::build_nodes() {
       nodes_.inertia[c[k]] += ie * std::acos(cosang) / std::numbers::pi;
     }
   }
+  add_beam_inertias(m, nodes_);
   // TYPE8 springs: the property's inertia, half on each node (OpenRadioss starter rmass.F).
   for (std::size_t e = 0; e < m.springs.size(); ++e) {
     const auto* c = &m.springs.conn[3 * e];
@@ -573,6 +608,46 @@ TrussGroup make_truss_group(const model::Model& m, std::pmr::memory_resource* ar
   return g;
 }
 
+// A beam's initial y axis (peveci.F): towards its orientation node n3, else the global Y axis, or Z for a
+// beam along Y. The kernel makes it normal to the beam each cycle.
+model::Vec3 beam_initial_y(const model::Model& m, std::size_t e) {
+  const auto* c = &m.beams.conn[3 * e];
+  auto X = [&](std::int32_t n) { return model::Vec3{m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]}; };
+  if (c[2] != model::kNone) {
+    const auto y = model::sub(X(c[2]), X(c[0]));
+    return model::scale(y, 1.0 / model::norm(y));
+  }
+  const auto e1 = model::sub(X(c[1]), X(c[0]));
+  return e1[0] * e1[0] + e1[2] * e1[2] < 1e-20 ? model::Vec3{0, 0, 1} : model::Vec3{0, 1, 0};
+}
+
+// A beam group of the elements `run` of one part: the property's section and released rotations, the initial
+// lengths and y axes.
+BeamGroup make_beam_group(const model::Model& m, std::pmr::memory_resource* arena, std::int32_t part,
+                          std::span<const std::int32_t> run) {
+  const auto& prop = m.properties[static_cast<std::size_t>(m.parts[part].property)].beam;
+  BeamGroup g(arena);
+  g.allocate(static_cast<int>(run.size()));
+  g.part = part;
+  g.material = m.parts[part].material;
+  g.section = {prop.area, prop.iyy, prop.izz, prop.ixx, prop.dm, prop.df, prop.ishear != 0};
+  g.releases = {1.0 - prop.release_x, 1.0 - prop.release_y1, 1.0 - prop.release_z1, 1.0 - prop.release_y2,
+                1.0 - prop.release_z2};
+  for (int i = 0; i < g.count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const auto e = static_cast<std::size_t>(run[k]);
+    g.element[k] = static_cast<std::int32_t>(e);
+    const auto n1 = m.beams.conn[3 * e], n2 = m.beams.conn[3 * e + 1];
+    g.conn[k] = n1;
+    g.conn[kGroupSize + k] = n2;
+    g.l0[k] = model::norm(model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
+                                     model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]}));
+    const auto y = beam_initial_y(m, e);
+    for (std::size_t d = 0; d < 3; ++d) g.ey[d * kGroupSize + k] = y[d];
+  }
+  return g;
+}
+
 }  // namespace
 
 // The element groups of every kind: the elements with forces of each block cut by part into runs of at most
@@ -598,7 +673,10 @@ void ExplicitEngine::build_groups() {
   for_each_group_run(m, m.trusses, [&](std::int32_t part, std::span<const std::int32_t> run) {
     groups_.trusses.push_back(make_truss_group(m, arena, part, run));
   });
-  element_count_ = m.element_count() + m.springs.size() + m.trusses.size();
+  for_each_group_run(m, m.beams, [&](std::int32_t part, std::span<const std::int32_t> run) {
+    groups_.beams.push_back(make_beam_group(m, arena, part, run));
+  });
+  element_count_ = m.element_count() + m.springs.size() + m.trusses.size() + m.beams.size();
 }
 
 // sum[d] += f[d * G] for d < C, two components at a time: the same additions as one at a time (each lane is
@@ -619,7 +697,7 @@ void ExplicitEngine::visit_group_sums(std::int64_t flat, F&& f) const {
   using ForcesAndMoments = std::integral_constant<std::size_t, 6>;
   groups_.visit(flat, [&](const auto& g) {
     using Group = std::decay_t<decltype(g)>;
-    if constexpr (std::is_same_v<Group, ShellGroup>) {
+    if constexpr (std::is_same_v<Group, ShellGroup> || std::is_same_v<Group, BeamGroup>) {
       f(g, g.nodes_per_element(), ForcesAndMoments{});
     } else if constexpr (std::is_same_v<Group, SpringGroup>) {
       if (g.node_stride() == 6)
@@ -772,6 +850,10 @@ void run_kernel(TrussGroup& g, const NodeState& nodes, const std::vector<Materia
                 const CycleInfo& cyc) {
   truss_axial_forces(g, nodes, materials[static_cast<std::size_t>(g.material)], cyc);
 }
+void run_kernel(BeamGroup& g, const NodeState& nodes, const std::vector<MaterialParams>& materials,
+                const CycleInfo& cyc) {
+  beam_type3_forces(g, nodes, materials[static_cast<std::size_t>(g.material)], cyc);
+}
 
 // How a group's elements vote for the step: the /DT scale of their family, the family's /DT/<family>/CST
 // control, the kind the report names, and the frozen steps of the elements that family may switch to a
@@ -807,6 +889,10 @@ StepRule step_rule(SpringGroup&, const model::RunControls& c) {
 // read /DT/TRUSS).
 StepRule step_rule(TrussGroup&, const model::RunControls& c) {
   return {c.global.scale, &c.global, StepControl::Kind::Truss, nullptr, false};
+}
+// Beams likewise (DTFAC1(5), set by /DT/BEAM, which radx does not read).
+StepRule step_rule(BeamGroup&, const model::RunControls& c) {
+  return {c.global.scale, &c.global, StepControl::Kind::Beam, nullptr, false};
 }
 
 // /DT/<family>/CST: an element whose scaled step reaches Tmin is switched to a constant step (the
@@ -984,9 +1070,10 @@ std::string ExplicitEngine::bad_element(double time, std::int64_t cycle) const {
         if constexpr (std::is_same_v<Group, ShellGroup>)
           found = std::string(g.triangle ? "3-node shell " : "shell ") + id +
                   " has no valid time step (collapsed or non-finite)" + when + "; the run stops";
-        else if constexpr (std::is_same_v<Group, TrussGroup>)
-          found = "truss " + id + " has no valid time step (its nodes met or its values are not finite)" +
-                  when + "; the run stops";
+        else if constexpr (std::is_same_v<Group, TrussGroup> || std::is_same_v<Group, BeamGroup>)
+          found = std::string(std::is_same_v<Group, BeamGroup> ? "beam " : "truss ") + id +
+                  " has no valid time step (its nodes met or its values are not finite)" + when +
+                  "; the run stops";
         else
           found = std::string(std::is_same_v<Group, BrickGroup> ? "brick " : "tetrahedron ") + id +
                   " has a zero or negative volume (" + std::to_string(g.vol[k]) + ")" + when +

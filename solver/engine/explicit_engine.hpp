@@ -71,7 +71,8 @@ struct StepControl {
     Imposed,
     Tetra,
     Spring,
-    Truss
+    Truss,
+    Beam
   } kind = Kind::None;
   std::int64_t user_id = 0;
   std::int64_t node_id = 0;  // Interface: the secondary node of the controlling pair

@@ -90,6 +90,18 @@ void for_each_nodal_mass(const Model& m,
         rho_of(part) * m.properties[static_cast<std::size_t>(prop)].truss.area * norm(sub(X(c[1]), X(c[0])));
     for (int k = 0; k < 2; ++k) fn(c[k], part, cell, 0.5 * me);
   }
+  // Beams: m_e = rho A l0, half on each of n1 and n2 (OpenRadioss starter pmass.F); the orientation node
+  // carries nothing. Numbered after the trusses.
+  for (std::size_t e = 0; e < m.beams.size(); ++e, ++cell) {
+    const auto* c = &m.beams.conn[3 * e];
+    const auto part = m.beams.part[e];
+    if (c[0] < 0 || c[1] < 0 || part == kNone) continue;
+    const auto prop = m.parts[static_cast<std::size_t>(part)].property;
+    if (prop == kNone || m.properties[static_cast<std::size_t>(prop)].kind != PropertyKind::Beam) continue;
+    const double me =
+        rho_of(part) * m.properties[static_cast<std::size_t>(prop)].beam.area * norm(sub(X(c[1]), X(c[0])));
+    for (int k = 0; k < 2; ++k) fn(c[k], part, cell, 0.5 * me);
+  }
 }
 
 void compute_lumped_masses(Model& m) {

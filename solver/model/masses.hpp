@@ -2,7 +2,7 @@
 // rho_I t0 A0 for shells and rho_I V0 for bricks (one-point volume); 4-node shells give m/4 to each
 // connectivity slot (so a degenerate quad's repeated node gets 2/4), bricks m/8 per node, 3-node
 // shells m alpha_k / pi to node k (alpha_k the interior angle), springs their property's M, trusses
-// rho A0 L0 / 2 per node.
+// and beams rho A0 L0 / 2 per node.
 #pragma once
 
 #include <functional>
@@ -16,8 +16,8 @@ namespace radx::model {
 double shell_thickness(const Model& m, const ElementBlock& b, std::size_t e);
 
 // Calls fn(node, part, element_index_in_block_order, mass) for every lumped-mass contribution of every
-// valid element, in model cell order (4-node shells, 3-node shells, bricks, tetrahedra, then springs and
-// trusses); `cell` numbers the elements that way. Elements with a missing node or part are skipped.
+// valid element, in model cell order (4-node shells, 3-node shells, bricks, tetrahedra, then springs,
+// trusses and beams); `cell` numbers the elements that way. Elements with a missing node or part are skipped.
 void for_each_nodal_mass(
     const Model& m,
     const std::function<void(std::int32_t node, std::int32_t part, std::size_t cell, double mass)>& fn);

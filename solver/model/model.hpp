@@ -38,7 +38,8 @@ enum class ElementType : std::uint8_t {
   Brick8 = 2,
   Tetra4 = 3,
   Spring2 = 4,
-  Truss2 = 5
+  Truss2 = 5,
+  Beam2 = 6
 };
 [[nodiscard]] constexpr int nodes_per_element(ElementType t) {
   switch (t) {
@@ -48,6 +49,7 @@ enum class ElementType : std::uint8_t {
     case ElementType::Tetra4: return 4;
     case ElementType::Spring2: return 3;  // n1 n2 and the optional orientation node
     case ElementType::Truss2: return 2;
+    case ElementType::Beam2: return 3;  // n1 n2 and the orientation node (kNone when blank)
   }
   return 0;
 }
@@ -191,7 +193,7 @@ struct Material {
   FoamTab foam;   // law 70
 };
 
-enum class PropertyKind : std::uint8_t { Shell = 1, Truss = 2, Solid = 14, Spring = 4 };
+enum class PropertyKind : std::uint8_t { Shell = 1, Truss = 2, Beam = 3, Solid = 14, Spring = 4 };
 
 struct ShellProperty {
   int ishell = 1, ismstr = 2, ish3n = 2, idrill = 0, ipinch = 0, n_ip = 0, ithick = 2, iplas = 2, ipos = 0;
@@ -257,6 +259,18 @@ struct TrussProperty {
   double area = 0;
 };
 
+// /PROP/BEAM (TYPE3): the Radioss beam, integrated over its section (resultants): the section's area and
+// second moments, the membrane and flexural damping, the shear flag and the released rotations
+// (docs/elements-openradioss.md 12.2).
+struct BeamProperty {
+  double area = 0, iyy = 0, izz = 0, ixx = 0;  // Ixx: torsion
+  double dm = 0, df = 0.01;                    // Df 0 -> 0.01 (hm_read_prop03.F)
+  int ishear = 0;                              // 0: Timoshenko shear; 1: shear neglected (Euler-Bernoulli)
+  int ismstr = 0;
+  // Released rotations (Wdof): x at either end (torsion), y and z at node 1 and node 2; 1 = released.
+  int release_x = 0, release_y1 = 0, release_z1 = 0, release_y2 = 0, release_z2 = 0;
+};
+
 struct Property {
   std::int64_t id = 0;
   std::string title;
@@ -265,6 +279,7 @@ struct Property {
   SolidProperty solid;
   SpringProperty spring;
   TrussProperty truss;
+  BeamProperty beam;
 };
 
 struct Part {
@@ -516,7 +531,8 @@ enum class ThKind : std::uint8_t {
   Section,
   Accel,
   Spring,
-  Truss
+  Truss,
+  Beam
 };
 struct TimeHistoryGroup {
   std::int64_t id = 0;
@@ -668,6 +684,9 @@ struct Model {
   // /TRUSS: 2-node trusses (their parts have a /PROP/TRUSS and a law 1 or 2 material). Cells of the results
   // after the springs; not cells of the solid and shell mesh either.
   ElementBlock trusses{ElementType::Truss2, {}, {}, {}, {}, {}, {}};
+  // /BEAM: 2-node beams (their parts have a /PROP/BEAM and a law 1 or 2 material); conn[3 e + 2] is the
+  // orientation node (kNone when blank). Cells of the results after the trusses.
+  ElementBlock beams{ElementType::Beam2, {}, {}, {}, {}, {}, {}};
   std::vector<Material> materials;
   std::vector<Property> properties;
   std::vector<Part> parts;
@@ -706,8 +725,10 @@ struct Model {
     return shells.size() + shells3.size() + bricks.size() + tetras.size();
   }
 
-  // Cells of the results files: the mesh cells above, then the springs and the trusses (VTK lines n1 n2).
-  [[nodiscard]] std::size_t cell_count() const { return element_count() + springs.size() + trusses.size(); }
+  // Cells of the results files: the mesh cells above, then the springs, trusses and beams (VTK lines n1 n2).
+  [[nodiscard]] std::size_t cell_count() const {
+    return element_count() + springs.size() + trusses.size() + beams.size();
+  }
 
   // Dense index of the skew with user id `skew`; kNone for 0 (the global frame). Throws std::out_of_range
   // for an id the model lacks (the starter refuses those).

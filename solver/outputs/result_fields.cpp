@@ -187,6 +187,24 @@ CellValues cell_values(const TrussGroup& g, int i, const NodeState& s,
   return c;
 }
 
+// Element i of a beam group: the mean axial stress N / A along its current line, as a truss's (the section's
+// forces and moments are in /TH/BEAM); the volume A l0 for the energy density.
+CellValues cell_values(const BeamGroup& g, int i, const NodeState& s,
+                       const std::vector<MaterialParams>& mats) {
+  const auto k = static_cast<std::size_t>(i);
+  const auto n1 = static_cast<std::size_t>(g.conn[k]), n2 = static_cast<std::size_t>(g.conn[kGroupSize + k]);
+  const Vec3 e = unit(Vec3{s.x[n2] - s.x[n1], s.y[n2] - s.y[n1], s.z[n2] - s.z[n1]});
+  CellValues c;
+  const double sigma = g.sig[k];
+  c.sig = {sigma * e[0] * e[0], sigma * e[1] * e[1], sigma * e[2] * e[2],
+           sigma * e[0] * e[1], sigma * e[1] * e[2], sigma * e[2] * e[0]};
+  c.eps_p = g.eps_p[k];
+  c.volume0 = g.section.area * g.l0[k];
+  c.e_int = g.e_int[k];
+  c.density = mats[static_cast<std::size_t>(g.material)].rho0;
+  return c;
+}
+
 // Calls fn(cell index, CellValues) for every element of the model with a material (springs have none of
 // these fields). Groups write disjoint cells: the engine's threads, idle while a state is written, share the
 // groups.

@@ -102,6 +102,11 @@ Dim th_variable_dim(model::ThKind kind, const std::string& n) {
       if (n == "A") return Dim{0, 2, 0};
       if (n == "L") return kLength;
       return kNone;  // OFF, PLAS
+    case K::Beam:
+      if (n[0] == 'F') return kForce;
+      if (n[0] == 'M') return Dim{1, 2, -2};
+      if (n == "IE") return kEnergy;
+      return kNone;  // OFF, EPSP
   }
   return kNone;
 }
@@ -136,7 +141,7 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
   const auto& m = e.model();
   using K = model::ThKind;
   if (kind_ == K::Shell || kind_ == K::Shell3 || kind_ == K::Brick || kind_ == K::Spring ||
-      kind_ == K::Truss) {
+      kind_ == K::Truss || kind_ == K::Beam) {
     // Where each object sits in the element groups, found once: the groups do not change during a run.
     slots_.assign(objects_.size(), {-1, -1});
     std::vector<std::pair<int, int>> where;
@@ -157,6 +162,8 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
       index(e.groups().springs, [](const SpringGroup&) { return true; });
     else if (kind_ == K::Truss)
       index(e.groups().trusses, [](const TrussGroup&) { return true; });
+    else if (kind_ == K::Beam)
+      index(e.groups().beams, [](const BeamGroup&) { return true; });
     else
       index(e.groups().shells, [&](const ShellGroup& grp) { return grp.triangle == (kind_ == K::Shell3); });
     for (std::size_t o = 0; o < objects_.size(); ++o) {
@@ -507,6 +514,20 @@ void ThGroupSampler::sample_trusses(const ExplicitEngine& e, const CycleReport& 
   }
 }
 
+void ThGroupSampler::sample_beams(const ExplicitEngine& e, const CycleReport& /*r*/, const ThPut& put) const {
+  static const char* names[6] = {"F1", "F2", "F3", "M1", "M2", "M3"};
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const auto [gi, i] = slots_[o];
+    if (gi < 0) continue;
+    const auto& g = e.groups().beams[static_cast<std::size_t>(gi)];
+    const auto k = static_cast<std::size_t>(i);
+    put(o, "OFF", g.off[k]);
+    for (std::size_t d = 0; d < 6; ++d) put(o, names[d], g.resultant[d * kGroupSize + k]);
+    put(o, "IE", g.e_int[k]);
+    put(o, "EPSP", g.eps_p[k]);
+  }
+}
+
 void ThGroupSampler::sample_accelerometers(const ExplicitEngine& e, const CycleReport& /*r*/,
                                            const ThPut& put) const {
   for (std::size_t o = 0; o < objects_.size(); ++o) {
@@ -542,6 +563,7 @@ void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::
     case K::Section: sample_sections(e, r, put); break;
     case K::Spring: sample_springs(e, r, put); break;
     case K::Truss: sample_trusses(e, r, put); break;
+    case K::Beam: sample_beams(e, r, put); break;
     case K::Accel: sample_accelerometers(e, r, put); break;
   }
 }

@@ -96,6 +96,7 @@ class ThGroupSampler {
   void sample_sections(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
   void sample_springs(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
   void sample_trusses(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  void sample_beams(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
   void sample_accelerometers(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
 
   model::ThKind kind_;

@@ -35,7 +35,8 @@ namespace {
 // the plastic strain increment.
 double truss_plastic_return(const JohnsonCookParams& jc, double young, double area, double& force,
                             double& eps_p, double& sigma_y) {
-  sigma_y = std::min(jc.a + (eps_p > 0 ? jc.b * std::pow(eps_p, jc.n) : (jc.n == 0 ? jc.b : 0.0)), jc.sig_max0);
+  sigma_y =
+      std::min(jc.a + (eps_p > 0 ? jc.b * std::pow(eps_p, jc.n) : (jc.n == 0 ? jc.b : 0.0)), jc.sig_max0);
   double h = 0;
   if (jc.n == 1)
     h = jc.b;
@@ -57,7 +58,8 @@ void fade(double& off) {
 
 }  // namespace
 
-void truss_axial_forces(TrussGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
+void truss_axial_forces(TrussGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                        const CycleInfo& cyc) {
   constexpr std::size_t G = kGroupSize;
   const double dt1 = cyc.dt1;
   const bool plastic = mat.law == model::MaterialLaw::JohnsonCook;

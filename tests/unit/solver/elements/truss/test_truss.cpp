@@ -55,15 +55,16 @@ std::string bar_deck(int n, double h, double v0, const std::string& mat) {
   for (int k = 0; k <= n; ++k)
     s += Line().put(k + 1, 1, 10).put(k * h, 11, 30).put(0.0, 31, 50).put(0.0, 51, 70).str() + "\n";
   s += "/TRUSS/1\n";
-  for (int k = 0; k < n; ++k) s += Line().put(k + 1, 1, 10).put(k + 1, 11, 20).put(k + 2, 21, 30).str() + "\n";
+  for (int k = 0; k < n; ++k)
+    s += Line().put(k + 1, 1, 10).put(k + 1, 11, 20).put(k + 2, 21, 30).str() + "\n";
   s += "/PART/1\nbar\n" + Line().put(1, 1, 10).put(1, 11, 20).str() + "\n";
   s += "/PROP/TRUSS/1\nbar section\n" + Line().put(kArea, 1, 20).str() + "\n";
   s += mat;
   s += "/GRNOD/NODE/1\nclamped\n" + Line().put(1, 1, 10).str() + "\n";
   s += "/BCS/1\nclamped\n" + Line().put("111 000", 4, 10).put(0, 11, 20).put(1, 21, 30).str() + "\n";
   s += "/GRNOD/GENE/2\nmoving\n" + Line().put(2, 1, 10).put(n + 1, 11, 20).str() + "\n";
-  s += "/INIVEL/TRA/1\nstart\n" + Line().put(v0, 1, 20).put(0.0, 21, 40).put(0.0, 41, 60).put(2, 61, 70).str() +
-       "\n";
+  s += "/INIVEL/TRA/1\nstart\n" +
+       Line().put(v0, 1, 20).put(0.0, 21, 40).put(0.0, 41, 60).put(2, 61, 70).str() + "\n";
   s += "/END\n";
   return s;
 }
@@ -95,7 +96,8 @@ BarTrace run_bar(const radx::model::Model& m, double t_stop, const std::vector<i
   engine.run([&](const radx::solver::CycleReport& r) {
     const auto& g = engine.groups().trusses.at(0);
     tr.t.push_back(r.time);
-    for (std::size_t w = 0; w < watch.size(); ++w) tr.force[w].push_back(g.force[static_cast<std::size_t>(watch[w])]);
+    for (std::size_t w = 0; w < watch.size(); ++w)
+      tr.force[w].push_back(g.force[static_cast<std::size_t>(watch[w])]);
     tr.plas_first.push_back(g.eps_p[0]);
     if (tr.dt == 0) tr.dt = r.dt;
     if (r.full) tr.worst_error = std::max(tr.worst_error, std::abs(r.energy.error_percent));
@@ -184,13 +186,14 @@ TEST_CASE("truss kernel: law 2 breaks the truss at EPS_max, which then fades ove
   CHECK(g.off[0] == Approx(0.8).epsilon(1e-15));
   const double f1 = g.force[0];
   CHECK(rel(f1, 0.8 * 200.0 * g.area[0]) < 1e-12);
-  for (int k = 0; k < 12; ++k) radx::solver::truss_axial_forces(g, ns, mat, radx::solver::CycleInfo{1.0, 1.0, 0});
+  for (int k = 0; k < 12; ++k)
+    radx::solver::truss_axial_forces(g, ns, mat, radx::solver::CycleInfo{1.0, 1.0, 0});
   CHECK(g.off[0] == 0.0);  // 0.8^11 < 0.1: off is 0 and the force with it
   CHECK(g.force[0] == 0.0);
   CHECK(std::isinf(g.dt[0]));
 }
 
-TEST_CASE("truss bar: the elastic wave carries rho c v0 A at the bar's wave speed; mass and step",
+TEST_CASE("truss bar: the elastic wave carries rho c v0 A at the bar's wave speed, with its mass and step",
           "[truss][engine]") {
   const int n = 50;
   const double h = 20.0, v0 = 1000.0;  // a 1 m bar of 20 mm trusses, 1 m/s
@@ -201,7 +204,7 @@ TEST_CASE("truss bar: the elastic wave carries rho c v0 A at the bar's wave spee
   CHECK(rel(m.total_mass, kRho * kArea * h * n) < 1e-12);
   const double c = std::sqrt(kE / kRho), L = n * h;
   const double f_wave = kRho * c * v0 * kArea;  // the stress rho c v0 behind the front, times A
-  const int mid = n / 2;                          // truss 26, centred at x = 0.51 L
+  const int mid = n / 2;                        // truss 26, centred at x = 0.51 L
   const auto tr = run_bar(m, 1.8 * L / c, {0, mid});
   // The default /DT scale 0.9 times the truss step h / c.
   CHECK(rel(tr.dt, 0.9 * h / c) < 1e-9);
@@ -216,7 +219,7 @@ TEST_CASE("truss bar: the elastic wave carries rho c v0 A at the bar's wave spee
   CHECK(tr.worst_error < 0.5);
 }
 
-TEST_CASE("truss bar of law 2: the elastic precursor carries the yield force a A; the clamped end yields",
+TEST_CASE("truss bar of law 2: the elastic precursor carries the yield force a A and the clamped end yields",
           "[truss][engine]") {
   const int n = 50;
   const double h = 20.0, v0 = 1000.0, a = 20.0;  // rho c v0 = 40.6 MPa > a: the bar yields at the clamp
@@ -238,13 +241,13 @@ TEST_CASE("truss starter: what radx refuses or warns about by name", "[truss][st
   gap.replace(gap.find(area_line), area_line.size(), Line().put(kArea, 1, 20).put(1.0, 21, 40).str());
   CHECK(errors_of(gap).find("Gap") != std::string::npos);
   // A law trusses do not run: law 36 is refused by name on the part.
-  std::string tab = bar_deck(4, 20.0, 0.0,
-                             "/MAT/PLAS_TAB/1\nsteel\n" + Line().put(kRho, 1, 20).str() + "\n" +
-                                 Line().put(kE, 1, 20).put(kNu, 21, 40).str() + "\n" +
-                                 Line().put(1, 1, 10).str() + "\n" + Line().put(1, 1, 10).str() + "\n" +
-                                 Line().put(1.0, 1, 20).str() + "\n" + "/FUNCT/1\nyield\n" +
-                                 Line().put(0.0, 1, 20).put(200.0, 21, 40).str() + "\n" +
-                                 Line().put(1.0, 1, 20).put(300.0, 21, 40).str() + "\n");
+  std::string tab =
+      bar_deck(4, 20.0, 0.0,
+               "/MAT/PLAS_TAB/1\nsteel\n" + Line().put(kRho, 1, 20).str() + "\n" +
+                   Line().put(kE, 1, 20).put(kNu, 21, 40).str() + "\n" + Line().put(1, 1, 10).str() + "\n" +
+                   Line().put(1, 1, 10).str() + "\n" + Line().put(1.0, 1, 20).str() + "\n" +
+                   "/FUNCT/1\nyield\n" + Line().put(0.0, 1, 20).put(200.0, 21, 40).str() + "\n" +
+                   Line().put(1.0, 1, 20).put(300.0, 21, 40).str() + "\n");
   const auto e = errors_of(tab);
   CHECK(e.find("RX510") != std::string::npos);
   CHECK(e.find("trusses run law 1") != std::string::npos);
