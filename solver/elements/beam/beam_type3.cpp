@@ -1,6 +1,7 @@
 // Radioss type-3 beam (/BEAM with /PROP/BEAM): a 2-node Timoshenko beam integrated over its section, its
 // state the section's resultants (axial force N, shear forces Qy Qz, torque Mx, bending moments My Mz) in a
-// frame that follows the beam; elastic (law 1) or with a global plasticity criterion on the resultants (law 2).
+// frame that follows the beam; elastic (law 1) or with a global plasticity criterion on the resultants (law
+// 2).
 //
 // Sources, read for the behaviour (OpenRadioss): engine/source/elements/beam/pevec3.F (frame), pdefo3.F and
 // pcurv3.F (strain and curvature rates), main_beam3.F, materials/mat/mat001/m1lawp.F and mat002/m2lawp.F
@@ -12,14 +13,16 @@
 // Rates (v at n-1/2, w the nodal angular velocities): exx, exy, exz = e1, e2, e3 . (v2 - v1) / l; the local
 //   rotation rates r_k = (e1, e2, e3) . w_k; then, with h = dt1 / 2 and the rates before the update (0):
 //     exx -= h (exy0^2 + exz0^2), exy += h exz0 exx0, exz += h exy0 exx0
-//     rx_k -= h (exy0 ry_k0 + exz0 rz_k0), ry_k -= (h/2)(rx1 + rx2) (rz_k0 - exy), rz_k += (h/2)(rx1 + rx2)(ry_k0 + exz)
+//     rx_k -= h (exy0 ry_k0 + exz0 rz_k0), ry_k -= (h/2)(rx1 + rx2) (rz_k0 - exy), rz_k += (h/2)(rx1 +
+//     rx2)(ry_k0 + exz)
 //   released rotations (Wdof) replace r by the value that makes the end moment vanish (pcurv3.F);
 //   kxx, kyy, kzz = (r_2 - r_1) / l;  exz += (ry1 + ry2) / 2,  exy -= (rz1 + rz2) / 2.
 // Law 1 (increments d = rate dt1): N += E A dexx; Qy += S2 dexy; Qz += S1 dexz; Mx += G Ixx dkxx;
 //   My += E Iyy dkyy; Mz += E Izz dkzz, with the shear stiffnesses S1 = S0 B1 / (S + B1) + f B1,
 //   S2 = S0 B2 / (S + B2) + f B2, S = 5/6 G A, B1 = 12 E Iyy / l^2, B2 = 12 E Izz / l^2, S0 = (1 - f) S,
 //   f = 1 with Ishear 1 (shear neglected: the shear stiffness of the bending alone), 0 otherwise.
-// Law 2: the elastic trial, then the equivalent stress s = sqrt(N^2 + 3 A (Mx^2/Ixx + My^2/Iyy + Mz^2/Izz)) / A
+// Law 2: the elastic trial, then the equivalent stress s = sqrt(N^2 + 3 A (Mx^2/Ixx + My^2/Iyy + Mz^2/Izz)) /
+// A
 //   against sigma_y = min((a + b eps_p^n) R, SIG_max0 (R if ICC 1)), R = 1 + c ln(max(rate, eps_dot0 dt1) /
 //   (eps_dot0 dt1)) with rate = |dW| / (s A) the section's work increment; N and the moments are scaled by
 //   min(1, sigma_y / s) (the shear forces are not); eps_p += max(0, R dW_p / (2 sigma_y A)) with dW_p the
@@ -28,11 +31,12 @@
 // Damping (forces to the nodes, not to the state): N += Dm exx A l sqrt(2 E rho); Q += Df (exy, exz) A l
 //   sqrt(2 E rho); Mx += Df kxx l Ixx sqrt(2 G rho); My, Mz += Df (kyy Iyy, kzz Izz) l sqrt(2 E rho).
 // Nodal forces (added; node 1 then node 2): N e1 + Qy e2 + Qz e3 and its opposite; moments
-//   node 1: Mx e1 + (My - l Qz / 2) e2 + (Mz + l Qy / 2) e3, node 2: -Mx e1 - (My + l Qz / 2) e2 - (Mz - l Qy / 2) e3
-//   (a released end's moment goes to the other end, pfint3.F).
-// Step (pdlen3.F): dt = k l / c / sqrt(F), c = sqrt(E / rho0), k = sqrt(1 + d^2) - d with d = sqrt(2) max(Dm, Df),
-//   F = max(1, l / (A l^2 / (12 max(Iyy, Izz)) + 6 E / (5 G))) as OpenRadioss writes it (l in the work units);
-//   nodal stiffness F A E / (l k^2).
+//   node 1: Mx e1 + (My - l Qz / 2) e2 + (Mz + l Qy / 2) e3, node 2: -Mx e1 - (My + l Qz / 2) e2 - (Mz - l Qy
+//   / 2) e3 (a released end's moment goes to the other end, pfint3.F).
+// Step (pdlen3.F): dt = k l / c / sqrt(F), c = sqrt(E / rho0), k = sqrt(1 + d^2) - d with d = sqrt(2) max(Dm,
+// Df),
+//   F = max(1, l / (A l^2 / (12 max(Iyy, Izz)) + 6 E / (5 G))) as OpenRadioss writes it (l in the work
+//   units); nodal stiffness F A E / (l k^2).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -48,13 +52,19 @@ using V3 = std::array<double, 3>;
 V3 cross3(const V3& a, const V3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-double dot3(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm3(const V3& a) { return std::sqrt(dot3(a, a)); }
-V3 scaled(const V3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+double dot3(const V3& a, const V3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+double norm3(const V3& a) {
+  return std::sqrt(dot3(a, a));
+}
+V3 scaled(const V3& a, double s) {
+  return {a[0] * s, a[1] * s, a[2] * s};
+}
 
 // The beam's frame at x^n from the last cycle's y axis, turned by the mean twist over dt1 (pevec3.F).
-void beam_frame(const V3& dx, const V3& ey_old, const V3& w1, const V3& w2, double dt1, V3& e1, V3& e2, V3& e3,
-                double& l) {
+void beam_frame(const V3& dx, const V3& ey_old, const V3& w1, const V3& w2, double dt1, V3& e1, V3& e2,
+                V3& e3, double& l) {
   l = norm3(dx);
   e1 = scaled(dx, 1.0 / l);
   e3 = cross3(e1, ey_old);
@@ -72,8 +82,8 @@ struct BeamRates {
   double exx, exy, exz, kxx, kyy, kzz;
 };
 
-BeamRates beam_rates(const BeamReleases& rel, const V3& e1, const V3& e2, const V3& e3, const V3& dv, const V3& w1,
-                     const V3& w2, double l, double dt1) {
+BeamRates beam_rates(const BeamReleases& rel, const V3& e1, const V3& e2, const V3& e3, const V3& dv,
+                     const V3& w1, const V3& w2, double l, double dt1) {
   BeamRates r{};
   r.exx = dot3(e1, dv) / l;
   r.exy = dot3(e2, dv) / l;
@@ -112,7 +122,8 @@ BeamRates beam_rates(const BeamReleases& rel, const V3& e1, const V3& e2, const 
 }
 
 // Law 1's increments of the resultants, and the elastic trial of law 2 (m1lawp.F).
-void beam_elastic(const BeamSection& s, const MaterialParams& mat, double l, const BeamRates& d, double res[6]) {
+void beam_elastic(const BeamSection& s, const MaterialParams& mat, double l, const BeamRates& d,
+                  double res[6]) {
   const double E = mat.young, G = mat.shear;
   const double sh = 5.0 / 6.0 * G * s.area;
   const double b = 12.0 * E / (l * l);
@@ -131,17 +142,17 @@ void beam_elastic(const BeamSection& s, const MaterialParams& mat, double l, con
 
 // The equivalent stress of the resultants (main_beam3.F, m2lawp.F).
 double beam_equivalent_stress(const BeamSection& s, const double res[6]) {
-  const double q = res[0] * res[0] + 3.0 * s.area *
-                                         (res[3] * res[3] / std::max(s.ixx, 1e-20) +
-                                          res[4] * res[4] / std::max(s.iyy, 1e-20) +
-                                          res[5] * res[5] / std::max(s.izz, 1e-20));
+  const double q = res[0] * res[0] +
+                   3.0 * s.area *
+                       (res[3] * res[3] / std::max(s.ixx, 1e-20) + res[4] * res[4] / std::max(s.iyy, 1e-20) +
+                        res[5] * res[5] / std::max(s.izz, 1e-20));
   return std::sqrt(q) / s.area;
 }
 
-// Law 2 on the section (m2lawp.F): the trial `res` (from `old`) scaled back onto the yield surface; returns the
-// plastic work increment per unit length (0 when elastic). eps_p grows by the plastic strain.
-double beam_plastic_return(const BeamSection& s, const MaterialParams& mat, const BeamRates& d, const double old[6],
-                           double res[6], double& eps_p, double dt1) {
+// Law 2 on the section (m2lawp.F): the trial `res` (from `old`) scaled back onto the yield surface; returns
+// the plastic work increment per unit length (0 when elastic). eps_p grows by the plastic strain.
+double beam_plastic_return(const BeamSection& s, const MaterialParams& mat, const BeamRates& d,
+                           const double old[6], double res[6], double& eps_p, double dt1) {
   const auto& jc = mat.jc;
   const double E = mat.young, G = mat.shear, A = s.area;
   double work = old[0] * d.exx + old[3] * d.kxx + old[4] * d.kyy + old[5] * d.kzz;  // N and M of the start
@@ -219,7 +230,8 @@ BeamStep beam_step(const BeamSection& s, const MaterialParams& mat, double l) {
   return {k * l / c / std::sqrt(fsh), fsh * s.area * mat.young / (l * k * k)};
 }
 
-void beam_type3_forces(BeamGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc) {
+void beam_type3_forces(BeamGroup& g, const NodeState& nodes, const MaterialParams& mat,
+                       const CycleInfo& cyc) {
   constexpr std::size_t G = kGroupSize;
   const double dt1 = cyc.dt1;
   const bool plastic = mat.law == model::MaterialLaw::JohnsonCook;

@@ -59,20 +59,29 @@ std::string cantilever_deck(int n, double L, double P) {
   for (int k = 0; k <= n; ++k)
     s += Line().put(k + 1, 1, 10).put(k * L / n, 11, 30).put(0.0, 31, 50).put(0.0, 51, 70).str() + "\n";
   s += "/BEAM/1\n";
-  for (int k = 0; k < n; ++k) s += Line().put(k + 1, 1, 10).put(k + 1, 11, 20).put(k + 2, 21, 30).str() + "\n";
+  for (int k = 0; k < n; ++k)
+    s += Line().put(k + 1, 1, 10).put(k + 1, 11, 20).put(k + 2, 21, 30).str() + "\n";
   s += "/PART/1\ncantilever\n" + Line().put(1, 1, 10).put(1, 11, 20).str() + "\n";
-  s += "/PROP/BEAM/1\nsquare 10 mm\n" + Line().put(0, 11, 20).str() + "\n" + Line().put(0.0, 1, 20).str() + "\n" +
-       Line().put(kA, 1, 20).put(kI, 21, 40).put(kI, 41, 60).put(kJ, 61, 80).str() + "\n" +
+  s += "/PROP/BEAM/1\nsquare 10 mm\n" + Line().put(0, 11, 20).str() + "\n" + Line().put(0.0, 1, 20).str() +
+       "\n" + Line().put(kA, 1, 20).put(kI, 21, 40).put(kI, 41, 60).put(kJ, 61, 80).str() + "\n" +
        Line().put("000 000", 4, 10).put(0, 11, 20).str() + "\n";
-  s += "/MAT/LAW1/1\nsteel\n" + Line().put(kRho, 1, 20).str() + "\n" + Line().put(kE, 1, 20).put(kNu, 21, 40).str() +
-       "\n";
+  s += "/MAT/LAW1/1\nsteel\n" + Line().put(kRho, 1, 20).str() + "\n" +
+       Line().put(kE, 1, 20).put(kNu, 21, 40).str() + "\n";
   s += "/GRNOD/NODE/1\nclamped\n" + Line().put(1, 1, 10).str() + "\n";
   s += "/BCS/1\nclamped\n" + Line().put("111 111", 4, 10).put(0, 11, 20).put(1, 21, 30).str() + "\n";
   s += "/GRNOD/NODE/2\ntip\n" + Line().put(n + 1, 1, 10).str() + "\n";
   s += "/FUNCT/1\nconstant\n" + Line().put(0.0, 1, 20).put(1.0, 21, 40).str() + "\n" +
        Line().put(10.0, 1, 20).put(1.0, 21, 40).str() + "\n";
   s += "/CLOAD/1\ntip load\n" +
-       Line().put(1, 1, 10).put("Z", 11, 20).put(0, 21, 30).put(0, 31, 40).put(2, 41, 50).put(0.0, 61, 80).put(P, 81, 100).str() +
+       Line()
+           .put(1, 1, 10)
+           .put("Z", 11, 20)
+           .put(0, 21, 30)
+           .put(0, 31, 40)
+           .put(2, 41, 50)
+           .put(0.0, 61, 80)
+           .put(P, 81, 100)
+           .str() +
        "\n";
   s += "/END\n";
   return s;
@@ -91,7 +100,8 @@ std::string errors_of(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("beam kernel: a stretch gives N = E A eps, a bend M = E I kappa, and the forces balance", "[beam]") {
+TEST_CASE("beam kernel: a stretch gives N = E A eps, a bend M = E I kappa, and the forces balance",
+          "[beam]") {
   const double l = 100.0, dt = 1e-4;
   const auto mat = steel();
   auto ns = radx::test::make_nodes({{0, 0, 0}, {l, 0, 0}});
@@ -162,7 +172,8 @@ TEST_CASE("beam kernel: law 2 caps the equivalent stress of the resultants at th
   CHECK(rel(g.eps_p[0], 0.5 * work / a / kA) < 1e-12);
 }
 
-TEST_CASE("beam cantilever: the tip swings about P L^3 / 3 E I with the first bending period", "[beam][engine]") {
+TEST_CASE("beam cantilever: the tip swings about P L^3 / 3 E I with the first bending period",
+          "[beam][engine]") {
   const int n = 10;
   const double L = 1000.0, P = 10.0;
   const auto m = radx::test::model_of_deck(cantilever_deck(n, L, P));
@@ -187,8 +198,9 @@ TEST_CASE("beam cantilever: the tip swings about P L^3 / 3 E I with the first be
   std::vector<double> up;
   for (std::size_t k = 1; k < w.size(); ++k)
     if (w[k - 1] < delta && w[k] >= delta) up.push_back(t[k]);
-  INFO("tip z from " << *std::min_element(w.begin(), w.end()) << " to " << *std::max_element(w.begin(), w.end())
-                     << ", static deflection " << delta << ", " << w.size() << " cycles");
+  INFO("tip z from " << *std::min_element(w.begin(), w.end()) << " to "
+                     << *std::max_element(w.begin(), w.end()) << ", static deflection " << delta << ", "
+                     << w.size() << " cycles");
   REQUIRE(up.size() >= 3);
   const double measured = (up.back() - up.front()) / static_cast<double>(up.size() - 1);
   INFO("period " << measured << " expected " << period);
@@ -208,7 +220,8 @@ TEST_CASE("beam starter: what radx refuses by name", "[beam][starter]") {
   // Small strain.
   std::string small = base;
   const std::string ismstr = Line().put(0, 11, 20).str() + "\n" + Line().put(0.0, 1, 20).str();
-  small.replace(small.find(ismstr), ismstr.size(), Line().put(1, 11, 20).str() + "\n" + Line().put(0.0, 1, 20).str());
+  small.replace(small.find(ismstr), ismstr.size(),
+                Line().put(1, 11, 20).str() + "\n" + Line().put(0.0, 1, 20).str());
   CHECK(errors_of(small).find("Ismstr = 1") != std::string::npos);
   // A law type-3 beams do not run.
   std::string tab = base;
@@ -217,6 +230,7 @@ TEST_CASE("beam starter: what radx refuses by name", "[beam][starter]") {
   // An orientation node on the axis.
   std::string axis = base;
   const std::string first = Line().put(1, 1, 10).put(1, 11, 20).put(2, 21, 30).str();
-  axis.replace(axis.find(first), first.size(), Line().put(1, 1, 10).put(1, 11, 20).put(2, 21, 30).put(3, 31, 40).str());
+  axis.replace(axis.find(first), first.size(),
+               Line().put(1, 1, 10).put(1, 11, 20).put(2, 21, 30).put(3, 31, 40).str());
   CHECK(errors_of(axis).find("lies on the beam's axis") != std::string::npos);
 }
