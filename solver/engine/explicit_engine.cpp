@@ -247,7 +247,68 @@ ExplicitEngine::~ExplicitEngine() = default;
 std::vector<std::string> ExplicitEngine::take_events() {
   auto out = sensors_.take_messages();
   for (auto& m : kinematics_->take_messages()) out.push_back(std::move(m));
+  for (auto& m : deletion_events_) out.push_back(std::move(m));
+  deletion_events_.clear();
   return out;
+}
+
+namespace {
+
+std::string element_kind_name(const ShellGroup& g) {
+  return g.triangle ? "3-node shell" : "shell";
+}
+std::string element_kind_name(const BrickGroup&) {
+  return "brick";
+}
+std::string element_kind_name(const TetraGroup&) {
+  return "tetrahedron";
+}
+std::string element_kind_name(const SpringGroup&) {
+  return "spring";
+}
+std::string element_kind_name(const TrussGroup&) {
+  return "truss";
+}
+std::string element_kind_name(const BeamGroup&) {
+  return "beam";
+}
+
+// The listing names at most this many deleted elements one by one (Radioss names every one; a crash model
+// that erodes thousands would bury the rest of the listing), then says how many more there are.
+constexpr std::int64_t kDeletionLines = 1000;
+
+}  // namespace
+
+// Once an element's life factor reaches 0 (its material failed, a spring or truss broke), the listing says
+// which, once, as Radioss's "DELETE OF ... ELEMENT" and "RUPTURE OF ..." lines do. Scans the groups only in a
+// cycle whose count of such elements changed.
+void ExplicitEngine::list_deleted_elements() {
+  std::int64_t ended = 0;
+  for (const auto& v : group_votes_) ended += v.ended;
+  if (ended == ended_elements_) return;
+  const std::int64_t before = ended_elements_;
+  ended_elements_ = ended;
+  if (deletion_listed_.empty()) deletion_listed_.assign(model_.cell_count(), 0);
+  std::int64_t listed = before;
+  groups_.for_each([&](const auto& g) {
+    const auto& block = element_block(model_, g);
+    for (int i = 0; i < g.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      if (g.off[k] > 0) continue;
+      const auto e = static_cast<std::size_t>(g.element[k]);
+      auto& seen = deletion_listed_[first_cell(model_, g) + e];
+      if (seen) continue;
+      seen = 1;
+      ++listed;
+      if (listed <= kDeletionLines)
+        deletion_events_.push_back(element_kind_name(g) + " " + std::to_string(block.id[e]) + " of part " +
+                                   std::to_string(model_.parts[static_cast<std::size_t>(g.part)].id) +
+                                   " deleted: it failed and carries no force from now on");
+      else if (listed == kDeletionLines + 1)
+        deletion_events_.push_back("more elements are deleted from here on; the listing names the first " +
+                                   std::to_string(kDeletionLines) + " only (element_status in the results)");
+    }
+  });
 }
 
 namespace {
@@ -971,7 +1032,9 @@ void ExplicitEngine::group_forces_and_vote(std::int64_t flat, const CycleInfo& c
   groups_.visit(flat, [&](auto& g) {
     run_kernel(g, nodes_, materials_, cyc);
     vote_for_step(vote, g, step_rule(g, controls_), element_block(model_, g).id);
-    if constexpr (kHasMaterial<std::decay_t<decltype(g)>>) vote.deleted += count_deleted_in(g);
+    const std::int64_t ended = count_deleted_in(g);
+    vote.ended += ended;
+    if constexpr (kHasMaterial<std::decay_t<decltype(g)>>) vote.deleted += ended;
   });
 }
 
@@ -1171,6 +1234,7 @@ void ExplicitEngine::external_loads(LoopState& L) {
 void ExplicitEngine::element_forces(LoopState& L) {
   const auto t0 = std::chrono::steady_clock::now();
   compute_element_forces(CycleInfo{L.dt1, L.dt2, L.time});
+  list_deleted_elements();
   assemble_and_accelerate(fuse_accelerations_);
   L.element_seconds += seconds_since(t0);
 }

@@ -126,6 +126,7 @@ struct GroupVote {
   std::int64_t user_id = 0;
   std::int64_t switched = 0;      // elements frozen by /DT/<family>/CST this cycle
   std::int64_t deleted = 0;       // elements with off <= 0 (contact's Idel); springs count none
+  std::int64_t ended = 0;         // elements of any kind with off <= 0 (the listing's deletion lines)
   std::int64_t violation_id = 0;  // the first element whose own step fell below half its frozen step
   double violation_frozen = 0, violation_dt = 0;
 };
@@ -218,6 +219,10 @@ class ExplicitEngine {
   std::unique_ptr<ThreadTeam> team_;  // before contact_, whose ParallelFor calls it: destroyed after it
   std::unique_ptr<contact::Type7Contact> contact_;
   std::int64_t deleted_elements_ = 0;  // elements with off == 0, to tell contact (Idel) when it changes
+  // Elements of any kind whose deletion the listing has been told (by cell), their count, and the lines.
+  std::vector<std::uint8_t> deletion_listed_;
+  std::int64_t ended_elements_ = 0;
+  std::vector<std::string> deletion_events_;
   // The time loop's state between stages (run() lists the stages).
   struct LoopState {
     double time = 0, dt1 = 0, dt2 = 0;
@@ -235,6 +240,7 @@ class ExplicitEngine {
   void element_forces(LoopState& L);
   void contact_forces(LoopState& L);
   void tell_contact_deleted_elements();
+  void list_deleted_elements();
   bool choose_time_step(LoopState& L, RunResult& res);
   void accelerations(LoopState& L);
   bool lagrange_correction(LoopState& L, RunResult& res);

@@ -263,3 +263,28 @@ TEST_CASE("truss starter: what radx refuses or warns about by name", "[truss][st
   const auto w = errors_of(bar_deck(4, 20.0, 0.0, johnson_cook_card(200.0, 0.1)), radx::Severity::Warning);
   CHECK(w.find("strain-rate term") != std::string::npos);
 }
+
+TEST_CASE("truss bar: a truss that breaks at EPS_max is named once among the engine's events",
+          "[truss][engine]") {
+  const int n = 10;
+  const double h = 20.0, v0 = 1000.0, a = 20.0;
+  // EPS_p_max 0.001: the clamped truss flows at (rho c v0 - a) / (rho c) of v0 over h and breaks early.
+  const std::string mat = "/MAT/PLAS_JOHNS/1\nsteel\n" + Line().put(kRho, 1, 20).str() + "\n" +
+                          Line().put(kE, 1, 20).put(kNu, 21, 40).str() + "\n" +
+                          Line().put(a, 1, 20).put(0.0, 21, 40).put(1.0, 41, 60).put(0.001, 61, 80).str() +
+                          "\n" + Line().put(0.0, 1, 20).put(1.0, 21, 40).str() + "\n";
+  const auto m = radx::test::model_of_deck(bar_deck(n, h, v0, mat));
+  radx::model::RunControls rc;
+  rc.t_stop = 4.0 * n * h / std::sqrt(kE / kRho);
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  std::vector<std::string> events;
+  engine.run([&](const radx::solver::CycleReport&) {
+    for (auto& e : engine.take_events()) events.push_back(e);
+    return true;
+  });
+  std::size_t first = 0;
+  for (const auto& e : events) first += e.rfind("truss 1 of part 1 deleted", 0) == 0 ? 1 : 0;
+  INFO(events.size() << " events");
+  CHECK(first == 1);
+  CHECK(engine.groups().trusses.at(0).off[0] == 0.0);
+}
