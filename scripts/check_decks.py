@@ -649,6 +649,8 @@ def unit_card(v):
 ID_REC = [F("id%d" % (k + 1), "I", 1 + 10 * k, 10 + 10 * k) for k in range(10)]
 # /GRNOD/GEN_INCR: one arithmetic range a line (read from the 2017 layout on)
 GEN_INCR_REC = [F("first", "I", 1, 10), F("last", "I", 11, 20), F("incr", "I", 21, 30)]
+# /SET/GENERAL, /SET/COLLECT: a clause word in columns 1-10 (blank: the clause above goes on), then nine ids
+SET_REC = [F("clause", "S", 1, 10)] + [F("item%d" % k, "I", 1 + 10 * k, 10 + 10 * k) for k in range(1, 10)]
 # /SURF/SEG: one segment a line; n4 = 0 makes a triangle
 SEG_REC = [F("seg_ID", "I", 1, 10), F("n1", "I", 11, 20), F("n2", "I", 21, 30), F("n3", "I", 31, 40),
            F("n4", "I", 41, 50)]
@@ -728,6 +730,8 @@ STARTER = {
     "/GRNOD/GENE": ("id", True, lambda v: [], "ids", ID_REC),
     "/GRNOD/GEN_INCR": ("id", True, lambda v: [], "records", GEN_INCR_REC),
     "/SURF/SEG": ("id", True, lambda v: [], "records", SEG_REC),
+    "/SET/GENERAL": ("id", True, lambda v: [], "clauses", SET_REC),
+    "/SET/COLLECT": ("id", True, lambda v: [], "clauses", SET_REC),
     "/SURF/PART/EXT": ("id", True, lambda v: [], "ids", ID_REC),
     "/SURF/PART": ("id", True, lambda v: [], "ids", ID_REC),
     "/INTER/LAGDT/TYPE7": ("id", True, inter_lagdt, None, None),
@@ -1280,6 +1284,11 @@ class Checker:
                 first = next(r for _, r in data[k:] if r[2].strip()[:1].isalpha())
                 self.warn(first[0], first[1], "%s: %d line(s) start with text and are skipped" % (path, skipped))
             data = data[:k] + rest
+        if tail == "clauses":
+            # a clause line starts with its word: no line is skipped for starting with text
+            for cm, r in data[k:]:
+                obj["recs"].append((self.parse_fields(recfields, r, path), (r[0], r[1])))
+            k = len(data)
         if tail in ("records", "threcords"):
             for cm, r in data[k:]:
                 self.check_names_line(cm, recfields, path)
@@ -1403,6 +1412,7 @@ def semantic(ck, m):
     laws_on_elements(tables)
     materials(tables)
     groups(tables)
+    sets(tables)
     material_curves(tables)
     failure_models(tables)
     loads(tables)
@@ -1415,6 +1425,7 @@ def semantic(ck, m):
     sections(tables)
     transforms(tables)
     time_history(tables)
+    empty_sets_in_use(tables)
     return tables.nodes, tables.parts
 
 
@@ -1475,8 +1486,13 @@ class Tables:
             if not zero_ok:
                 I("RX502", p[0], p[1], "%s %d: %s is required" % (o["path"], o["id"], field))
             return
-        if x not in table:
-            I("RX402", p[0], p[1], "%s %d: %s %d does not exist" % (o["path"], o["id"], what, x))
+        if x in table:
+            return
+        # a set of the id stands for a node group or a surface no group has (docs/sets.md)
+        if what in ("node group", "surface") and x in getattr(self, "set_members", {}):
+            self.set_uses.add((x, what, o["path"], o["id"]))
+            return
+        I("RX402", p[0], p[1], "%s %d: %s %d does not exist" % (o["path"], o["id"], what, x))
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -2139,6 +2155,7 @@ def groups(tables):
     tables.grnod_members = node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, elements,
                                              egroups, emembers, surfs, surf_nodes, grnods)
     tables.emembers = emembers
+    tables.boxes = boxes
     for sid, o in surfs.items():
         if o["path"] not in ("/SURF/PART", "/SURF/PART/EXT"):
             continue  # element_group_checks
@@ -2487,6 +2504,11 @@ def tied_interfaces(tables):
         if val(o, "Idel2", 0) not in (0, 1000):
             p = pos(o, "Idel2")
             I("RX510", p[0], p[1], "/INTER/TYPE2 %d: Idel2 not implemented" % o["id"])
+        sid = val(o, "surf_IDm", 0)
+        got = tables.set_members.get(sid) if sid not in surfs else None
+        if got is not None and not (got["/SHELL"] or got["/SH3N"] or got["solids"]):
+            p = pos(o, "surf_IDm")
+            I("RX403", p[0], p[1], "/INTER/TYPE2 %d: the main surface (set %d) has no segment" % (o["id"], sid))
         g = grnods.get(val(o, "grnd_IDs", 0))
         if g is not None and flag in (0, 1, 5) and g["path"] == "/GRNOD/NODE":
             ids = [x for x, _ in g.get("ids", []) if isinstance(x, int) and x > 0]
@@ -3195,6 +3217,159 @@ def node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, 
     for gid in grnods:
         resolve(gid)
     return members
+
+
+# Sets (build_sets.cpp, docs/sets.md): /SET/GENERAL and /SET/COLLECT (every /SET/COLLECT of one id is one set).
+# A set holds nodes, parts and elements; its clauses join it kind by kind: a plain clause adds, _D removes, _I
+# keeps what both hold. PART: the parts, their elements and the elements' nodes; NODE; SHELL, SH3N, SOLID (bricks
+# and tetrahedra): the elements and their nodes; BOX, BOX2: the nodes in the boxes and the elements with every
+# (BOX) or one (BOX2) node in them; ALL: everything; SET, SETCOL: the union of the sets listed; _G: triples
+# first, last, step. An id that names nothing is RX402, a warning; a word that is no clause or ids before any
+# word RX507; a Radioss clause or option radx does not build, or a set in a //SUBMODEL, RX510; a loop RX507.
+SET_CLAUSES = ("PART", "NODE", "SHELL", "SH3N", "SOLID", "SET", "SETCOL", "BOX", "BOX2", "ALL")
+SET_REFUSED = ("SEG", "SUBS", "SUBM", "RBODY", "ELLIPS", "PLANE", "NODENS", "BEAM", "TRUSS", "SPRING", "QUAD", "TRIA")
+SET_KINDS = ("nodes", "parts", "/SHELL", "/SH3N", "solids")
+
+
+def set_clauses(I, o):
+    """The clauses of one set object: (key, options, cells with 0 for blanks, (file, line) of each cell)."""
+    out = []
+    for r, p in o["recs"]:
+        word = (r.get("clause") or "").strip().upper()
+        cells = [r.get("item%d" % k) or 0 for k in range(1, 10)]
+        if word:
+            key, _, opts = word.partition("_")
+            out.append([key, opts, [], [], p])
+        elif not out:
+            I("RX507", p[0], p[1], "%s %d: ids before any clause word" % (o["path"], o["id"]))
+            continue
+        out[-1][2] += cells
+        out[-1][3] += [p] * len(cells)
+    return out
+
+
+def sets(tables):
+    I, m, elements, nodes, parts = tables.issue, tables.m, tables.elements, tables.nodes, tables.parts
+    placed, boxes = tables.placed, tables.boxes
+    general, collect = {}, {}
+    for o in m.of("/SET/GENERAL", "/SET/COLLECT"):
+        if o["in_sub"]:
+            I("RX510", o["pos"][0], o["pos"][1], "%s %d inside a //SUBMODEL" % (o["path"], o["id"]))
+            continue
+        own, other = (collect, general) if o["path"] == "/SET/COLLECT" else (general, collect)
+        if o["id"] in other:
+            I("RX401", o["pos"][0], o["pos"][1], "set %d is both a /SET/GENERAL and a /SET/COLLECT" % o["id"])
+        elif o["path"] == "/SET/COLLECT":
+            own.setdefault(o["id"], []).append(o)
+        elif o["id"] in own:
+            I("RX401", o["pos"][0], o["pos"][1], "set %d defined twice" % o["id"])
+        else:
+            own[o["id"]] = [o]
+    solids = {**elements["/BRICK"], **elements["/TETRA4"]}
+    by_kind = {"/SHELL": elements["/SHELL"], "/SH3N": elements["/SH3N"], "solids": solids}
+    state, members = {}, {}
+
+    def element_nodes(res):
+        for kind in ("/SHELL", "/SH3N", "solids"):
+            for e in res[kind]:
+                res["nodes"].update(by_kind[kind][e][1])
+
+    def clause(o, key, opts, cells, cpos):
+        res = {k: set() for k in SET_KINDS}
+
+        def named(universe, what):
+            if "G" in opts:
+                got = set()
+                for k in range(0, len(cells), 3):
+                    lo, hi, step = cells[k], cells[k + 1], max(cells[k + 2], 1)
+                    if lo or hi:
+                        got.update(x for x in universe if lo <= x <= hi and (x - lo) % step == 0)
+                return got
+            got = set()
+            for x, p in zip(cells, cpos):
+                if x == 0:
+                    continue
+                if x in universe:
+                    got.add(x)
+                else:
+                    I("RX402", p[0], p[1], "%s %d: %s %d does not exist" % (o["path"], o["id"], what, x), warning=True)
+            return got
+
+        if key == "PART":
+            res["parts"] = named(parts, "part")
+            for kind in ("/SHELL", "/SH3N", "solids"):
+                res[kind] = {e for e, (pid, _) in by_kind[kind].items() if pid in res["parts"]}
+            element_nodes(res)
+        elif key == "NODE":
+            res["nodes"] = named(nodes, "node")
+        elif key in ("SHELL", "SH3N", "SOLID"):
+            kind = {"SHELL": "/SHELL", "SH3N": "/SH3N", "SOLID": "solids"}[key]
+            res[kind] = named(by_kind[kind], {"SHELL": "4-node shell", "SH3N": "3-node shell", "SOLID": "solid"}[key])
+            element_nodes(res)
+        elif key in ("BOX", "BOX2"):
+            inside = set()
+            for b in named(boxes, "box"):
+                inside.update(n for n, c in placed.items() if boxes[b](c))
+            res["nodes"] = inside
+            for kind in ("/SHELL", "/SH3N", "solids"):
+                res[kind] = {e for e, (_, ns) in by_kind[kind].items()
+                             if (all if key == "BOX" else any)(n in inside for n in ns)}
+        elif key == "ALL":
+            res["nodes"], res["parts"] = set(nodes), set(parts)
+            for kind in ("/SHELL", "/SH3N", "solids"):
+                res[kind] = set(by_kind[kind])
+        else:
+            table = collect if key == "SETCOL" else general
+            for x in named(table, "/SET/COLLECT set" if key == "SETCOL" else "/SET/GENERAL set"):
+                got = resolve(table, x)
+                if got is not None:
+                    for k in SET_KINDS:
+                        res[k] |= got[k]
+        return res
+
+    def resolve(table, sid):
+        if state.get(sid) == 2:
+            return members[sid]
+        objs = table[sid]
+        if state.get(sid) == 1:
+            I("RX507", objs[0]["pos"][0], objs[0]["pos"][1], "set %d includes itself" % sid)
+            return None
+        state[sid] = 1
+        before = tables.ck.errors()
+        res = {k: set() for k in SET_KINDS}
+        for o in objs:
+            for key, opts, cells, cpos, p in set_clauses(I, o):
+                if key in SET_REFUSED or any(c in "BCE" for c in opts):
+                    I("RX510", p[0], p[1], "%s %d: clause %s is not built" % (o["path"], sid, key + "_" + opts))
+                    continue
+                if key not in SET_CLAUSES or any(c not in "DGIOA" for c in opts):
+                    I("RX507", p[0], p[1], "%s %d: %r is not a clause" % (o["path"], sid, key))
+                    continue
+                got = clause(o, key, opts, cells, cpos)
+                for k in SET_KINDS:
+                    res[k] = res[k] - got[k] if "D" in opts else res[k] & got[k] if "I" in opts else res[k] | got[k]
+        res["errors"] = tables.ck.errors() > before
+        state[sid], members[sid] = 2, res
+        return res
+
+    for table in (general, collect):
+        for sid in table:
+            resolve(table, sid)
+    tables.set_members, tables.set_objects, tables.set_uses = members, {**collect, **general}, set()
+
+
+def empty_sets_in_use(tables):
+    """A set named as a node group that holds no node, or as a surface that holds no element: RX403, a warning
+    (once per set and use), as Radioss warns of the empty group it builds."""
+    warned = set()
+    for sid, what, _, _ in sorted(tables.set_uses):
+        got = tables.set_members[sid]
+        empty = not got["nodes"] if what == "node group" else not (got["/SHELL"] or got["/SH3N"] or got["solids"])
+        if empty and not got["errors"] and (sid, what) not in warned:
+            warned.add((sid, what))
+            o = tables.set_objects[sid][0]
+            tables.issue("RX403", o["pos"][0], o["pos"][1], "set %d is used as an empty %s" % (sid, what),
+                         warning=True)
 
 
 def transform_function(o, at, f):

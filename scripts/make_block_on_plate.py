@@ -7,6 +7,8 @@ exact columns (docs/theory/deck-format.md). Edit the script and regenerate rathe
     python3 scripts/make_block_on_plate.py                  # both variants, into decks/
     python3 scripts/make_block_on_plate.py --variant lagdt  # only the /INTER/LAGDT/TYPE7 variant
     python3 scripts/make_block_on_plate.py --variant ctclaw # only the /CTCLAW variant
+    python3 scripts/make_block_on_plate.py --variant sets   # only the /SET/GENERAL variant
+    python3 scripts/make_block_on_plate.py --variant set_operations  # the set-operations test deck
     python3 scripts/make_block_on_plate.py --out /tmp/x     # somewhere else
     python3 scripts/make_block_on_plate.py --v0 50 --stfac 30 --block-layers 2 --out /tmp/x
                                                             # stiff, fast contact (the LAGDT tests)
@@ -18,6 +20,12 @@ Variants:
   ctclaw   decks/block_on_plate_ctclaw/BLOCK_ON_PLATE_CTCLAW_0000.rad and _0001.rad (the two /INTER/TYPE7
            with /CTCLAW laws: exponential pressure with arctangent friction on the block's nodes, the
            automatic bilinear law with exact Coulomb friction on the plate's nodes)
+  sets     decks/block_on_plate_sets/BLOCK_ON_PLATE_SETS_0000.rad and _0001.rad: the penalty deck with its node
+           groups and surfaces given as sets (/SET/COLLECT and /SET/GENERAL: the same members, so the same
+           results to the bit)
+  set_operations  decks/verification/set_operations/BLOCK_ON_PLATE_SET_OPS_0000.rad and _0001.rad: the sets
+           variant with the block and the plate built by set operations (a union of two sets intersected
+           with a third; everything less the block), which hold the same members again
 
 Model (units Mg, mm, s): a 100 x 100 x 1 mm steel plate of 10 x 10 shells (Johnson-Cook), clamped on its
 four edges, and a 20 mm aluminium cube of 4 x 4 x 4 bricks 1 mm above its centre, moving down at 10 m/s.
@@ -158,7 +166,10 @@ def check_geometry(nodes, shell_list, brick_list):
 # Starter deck
 
 
-RUN_NAMES = {"penalty": "BLOCK_ON_PLATE", "lagdt": "BLOCK_ON_PLATE_LAGDT", "ctclaw": "BLOCK_ON_PLATE_CTCLAW"}
+RUN_NAMES = {"penalty": "BLOCK_ON_PLATE", "lagdt": "BLOCK_ON_PLATE_LAGDT", "ctclaw": "BLOCK_ON_PLATE_CTCLAW",
+             "sets": "BLOCK_ON_PLATE_SETS", "set_operations": "BLOCK_ON_PLATE_SET_OPS"}
+# Where each variant's folder goes, under --out (default decks/).
+FOLDERS = {"set_operations": os.path.join("verification", "set_operations")}
 # The /CTCLAW variant's laws (docs/theory/contact-laws.md; Mg, mm, s: pressures in MPa, Kc in MPa/mm, CtLin in MPa
 # s/mm): on the block's nodes, an exponential pressure of 0.01 MPa at the gap's surface working at 200 MPa (lambda =
 # Kc_auto / pe), stiffening to at most 1e5 MPa/mm, with arctangent friction mu 0.1 reaching half of mu p at a
@@ -176,7 +187,9 @@ def starter_deck(variant):
     check_geometry(pn + bn, sh, br)
     d = rc.Deck(fill=0)
     d.raw("#RADIOSS STARTER")
-    what = {"penalty": "", "lagdt": ", LAGDT variant", "ctclaw": ", /CTCLAW variant"}[variant]
+    what = {"penalty": "", "lagdt": ", LAGDT variant", "ctclaw": ", /CTCLAW variant",
+            "sets": ", /SET/GENERAL variant (the same model as BLOCK_ON_PLATE)",
+            "set_operations": ", set-operations variant (the same model as BLOCK_ON_PLATE)"}[variant]
     d.comment("radx default deck%s:" % what,
               "a steel plate (Johnson-Cook shells, clamped edges) hit by an aluminium block (elastic bricks)",
               "at 10 m/s. Units: Mg, mm, s (stress in MPa, force in N, energy in mJ).",
@@ -212,11 +225,16 @@ def starter_deck(variant):
            a=250.0, b=450.0, n=0.3, c=0.014, EPS_DOT_0=1.0)
     d.card("/MAT/LAW1", 2, "Aluminium (elastic)", RHO_I=2.7e-9, RHO_ref=None, E=70000.0, nu=0.33)
     d.ruler()
-    d.card("/GRNOD/NODE", 1, "Plate edge nodes (clamped)", ids=edge_nodes())
-    d.card("/GRNOD/PART", 2, "Block nodes", ids=[2])
-    d.card("/GRNOD/PART", 3, "Plate nodes", ids=[1])
-    d.card("/SURF/PART", 1, "Plate surface (shell segments with normals along +Z)", ids=[1])
-    d.card("/SURF/PART/EXT", 2, "Block outer faces (outward)", ids=[2])
+    plate_surface = 1
+    if variant in ("sets", "set_operations"):
+        plate_surface = 3
+        set_cards(d, variant == "set_operations")
+    else:
+        d.card("/GRNOD/NODE", 1, "Plate edge nodes (clamped)", ids=edge_nodes())
+        d.card("/GRNOD/PART", 2, "Block nodes", ids=[2])
+        d.card("/GRNOD/PART", 3, "Plate nodes", ids=[1])
+        d.card("/SURF/PART", 1, "Plate surface (shell segments with normals along +Z)", ids=[1])
+        d.card("/SURF/PART/EXT", 2, "Block outer faces (outward)", ids=[2])
     d.ruler()
     if not FREE:
         d.card("/BCS", 1, "Clamped plate edges", Tra_rot=rc.bcs_code("111", "111"), grnod_ID=1)
@@ -226,7 +244,8 @@ def starter_deck(variant):
                Fscale_y=GRAVITY)
     d.rows("/FUNCT", ((0.0, 0.0), (0.0005, 1.0), (1.0, 1.0)), 1, "Unit ramp over 0.5 ms (not referenced by this deck)")
     d.ruler()
-    interface(d, 1, "Block nodes on plate surface", lagdt, grnod=2, surf=1, istf=4, inacti=6, fric=0.1, iform=1,
+    interface(d, 1, "Block nodes on plate surface", lagdt, grnod=2, surf=plate_surface, istf=4, inacti=6, fric=0.1,
+              iform=1,
               viss=0.05)
     interface(d, 2, "Plate nodes on block outer faces", lagdt, grnod=3, surf=2, istf=0, inacti=0, fric=0.2, iform=2,
               viss=0.0)
@@ -242,6 +261,35 @@ def starter_deck(variant):
     d.ruler()
     d.raw("/END")
     return d.lines
+
+
+def set_cards(d, operations=False):
+    """The penalty deck's groups and surfaces as sets: the clamped edge nodes (two /SET/COLLECT of one id: the
+    bottom and top rows generated, the side columns listed), and one /SET/GENERAL per part that is both its node
+    group and its surface (a set gives each use the members it asks for: the nodes of the elements, or the
+    shells and outer brick faces). With `operations`, the part sets are built by set operations instead."""
+    n = PLATE_N + 1
+    sides = sorted(plate_node_id(i, j) for j in range(1, n - 1) for i in (0, n - 1))
+    rows_ = [("NODE_G", plate_node_id(0, 0), plate_node_id(n - 1, 0), 1,
+              plate_node_id(0, n - 1), plate_node_id(n - 1, n - 1), 1)]
+    columns = [("NODE" if k == 0 else "",) + tuple(sides[k:k + 9]) for k in range(0, len(sides), 9)]
+    generated = set(range(plate_node_id(0, 0), plate_node_id(n - 1, 0) + 1)) | set(
+        range(plate_node_id(0, n - 1), plate_node_id(n - 1, n - 1) + 1))
+    assert generated | set(sides) == set(edge_nodes()), "the set is the penalty deck's /GRNOD/NODE/1"
+    # Set 1 in two /SET/COLLECT blocks of one id: each adds to the one set.
+    d.rows("/SET/COLLECT", rows_, 1, "Plate edge nodes (clamped): the bottom and top rows generated")
+    d.rows("/SET/COLLECT", columns, 1, "Plate edge nodes (clamped): the side columns listed")
+    if operations:
+        # The same members by set operations: (block or plate) and block; everything less the block.
+        d.rows("/SET/GENERAL", [("SET", 20, 21), ("SET_I", 22)], 2, "Block: sets 20 or 21 and set 22")
+        d.rows("/SET/GENERAL", [("ALL",), ("PART_D", 2)], 3, "Plate: everything less the block")
+        d.rows("/SET/GENERAL", [("PART", 2)], 20, "Block")
+        d.rows("/SET/GENERAL", [("PART", 1)], 21, "Plate")
+        d.rows("/SET/GENERAL", [("PART", 2)], 22, "Block again")
+        return
+    d.rows("/SET/GENERAL", [("PART", 2)], 2,
+           "Block: its nodes (interface 1 and velocity) and outer faces (interface 2)")
+    d.rows("/SET/GENERAL", [("PART", 1)], 3, "Plate: its nodes (interface 2) and shell segments (interface 1)")
 
 
 def interface(d, iid, title, lagdt, grnod, surf, istf, inacti, fric, iform, viss):
@@ -281,7 +329,8 @@ def engine_deck(variant, lagdt_tmin=1e-6):
 def main(argv):
     here = os.path.dirname(os.path.abspath(__file__))
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--variant", choices=("penalty", "lagdt", "ctclaw", "all"), default="all")
+    p.add_argument("--variant", choices=("penalty", "lagdt", "ctclaw", "sets", "set_operations", "all"),
+                   default="all")
     p.add_argument("--lagdt-tmin", type=float, default=1e-6,
                    help="Tmin of /DT/INTER/CST in the LAGDT engine deck (default 1e-6 s: the block's bottom pairs "
                         "switch at impact; 1e-7 s switches none)")
@@ -297,10 +346,10 @@ def main(argv):
     global V0, STFAC, BLOCK_NZ, FREE, INTER_DT, TSTOP
     V0, STFAC, BLOCK_NZ, FREE = -1000.0 * args.v0, args.stfac, args.block_layers, args.free
     INTER_DT, TSTOP = not args.no_inter_dt, args.tstop
-    variants = ("penalty", "lagdt", "ctclaw") if args.variant == "all" else (args.variant,)
+    variants = ("penalty", "lagdt", "ctclaw", "sets", "set_operations") if args.variant == "all" else (args.variant,)
     for v in variants:
         root = RUN_NAMES[v]
-        folder = root.lower()
+        folder = FOLDERS.get(v, root.lower())
         d = os.path.normpath(os.path.join(args.out, folder))
         rc.write(os.path.join(d, root + "_0000.rad"), starter_deck(v), report=True)
         rc.write(os.path.join(d, root + "_0001.rad"), engine_deck(v, args.lagdt_tmin), report=True)

@@ -460,14 +460,65 @@ def _():
     return d, "/BCS/1 names node group 99, which does not exist", [("RX402", "BCS.grnod_ID")]
 
 
-@fault("bcs_names_set")
+def set_rows(sid, clauses, title="Set", tag=None):
+    """/SET/GENERAL/sid (tag SETsid) with clause rows; row k carries the tag TAG_Ck (k from 1)."""
+    tag = tag or "SET%d" % sid
+    return block(tag, "/SET/GENERAL", sid, title, rows=clauses,
+                 row_tags=["%s_C%d" % (tag, k + 1) for k in range(len(clauses))])
+
+
+@fault("set_missing_part")
 def _():
-    # A /SET/GENERAL in the place of a node group: radx reads no /SET and says the id names one.
+    # Radioss leaves a missing part out of a set with a warning (its message 1902) and warns of the empty group.
     d = base()
-    d.insert_before("BEFORE_END", [("/SET/GENERAL/5", "SET_KW"), "Set of nodes", "NODE 1 2 3", "END"])
+    d.insert_before("BEFORE_END", set_rows(5, [("PART", 99)], "Parts of the plate (part 99 does not exist)"))
     d.update("BCS", grnod_ID=5)
-    return d, "/BCS/1 names 5, a /SET/GENERAL (which radx does not read) rather than a /GRNOD", \
-        [("RX302", "SET_KW"), ("RX402", "BCS.grnod_ID")]
+    return d, "/SET/GENERAL/5 (the node group of /BCS/1) lists part 99, which does not exist: left out, the set is " \
+        "empty (two warnings, as in Radioss)", [("RX402 warning", "SET5_C1"), ("RX403 warning", "SET5_KW")]
+
+
+@fault("set_unknown_clause")
+def _():
+    # SH4N is no Radioss clause (4-node shells are SHELL): OpenRadioss drops it without a word, radx stops.
+    d = base()
+    d.insert_before("BEFORE_END", set_rows(5, [("SH4N", 1, 2)], "Plate shells written as SH4N"))
+    d.update("BCS", grnod_ID=5)
+    return d, "/SET/GENERAL/5 has a clause SH4N, which is not a /SET clause (SHELL is)", [("RX507", "SET5_C1")]
+
+
+@fault("set_unsupported_clause")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", set_rows(5, [("SEG", 1, 1, 2, 5, 4)], "A segment clause"))
+    d.update("BCS", grnod_ID=5)
+    return d, "/SET/GENERAL/5 has a SEG clause, which radx does not build (refused by name)", \
+        [("RX510", "SET5_C1")]
+
+
+@fault("set_unsupported_option")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", set_rows(5, [("PART_E", 1)], "Outer nodes of the plate"))
+    d.update("BCS", grnod_ID=5)
+    return d, "/SET/GENERAL/5 has PART_E (only the nodes of outer faces and free edges), an option radx does not " \
+        "apply (refused by name)", [("RX510", "SET5_C1")]
+
+
+@fault("set_includes_itself")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", set_rows(5, [("SET", 6)], "Set 6") + set_rows(6, [("SET", 5)], "Set 5"))
+    d.update("BCS", grnod_ID=5)
+    return d, "/SET/GENERAL/5 takes set 6, which takes set 5", [("RX507", "SET5_KW")]
+
+
+@fault("set_empty_tie_surface")
+def _():
+    # A set of nodes only has no segment: as a TYPE2 main surface it leaves nothing to tie to, an error.
+    d = with_type2(base(), surf=7)
+    d.insert_before("BEFORE_END", set_rows(7, [("NODE", 1, 2, 3)], "Plate nodes (no element: no segment)"))
+    return d, "/INTER/TYPE2/1 names /SET/GENERAL/7 as its main surface; the set holds nodes only, so no segment " \
+        "(a warning at the set, an error at the tie)", [("RX403 warning", "SET7_KW"), ("RX403", "T2.surf_IDm")]
 
 
 @fault("empty_group")

@@ -142,6 +142,10 @@ def _int(v):
 ID10 = lambda name: IdList(name)  # noqa: E731
 TH_VARIABLES = IdList("var_ID", kind="L", key="variables")
 
+# A /SET clause line: its word (left-justified in columns 1-10; blank carries on the clause above) and up to nine
+# ids, or three (first, last, step) triples for a _G clause.
+SET_CLAUSE = Card(left("clause", 10), *[i("item%d" % k) for k in range(1, 10)])
+
 LAYOUTS = {
     # --- control
     "/BEGIN": Layout(
@@ -298,6 +302,9 @@ LAYOUTS = {
         Card(i("fct_IDt"), r("FscaleT")),
         title=False),
     # --- groups and surfaces (id lists)
+    # A set's clauses: a clause word in columns 1-10 (blank: the clause above goes on), then its ids.
+    "/SET/GENERAL": Layout(rows=SET_CLAUSE),
+    "/SET/COLLECT": Layout(rows=SET_CLAUSE),
     "/GRNOD/NODE": Layout(ids=ID10("node_ID")),
     "/GRNOD/PART": Layout(ids=ID10("part_ID")),
     "/GRNOD/GRNOD": Layout(ids=ID10("grnod_ID")),

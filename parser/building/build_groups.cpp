@@ -36,6 +36,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "parser/building/group_geometry.hpp"
 #include "parser/building/model_builder.hpp"
 #include "parser/reading/field_parse.hpp"
 #include "solver/model/geometry.hpp"
@@ -47,7 +48,6 @@ using model::kNone;
 
 namespace {
 
-using FaceKey = std::array<std::int32_t, 4>;
 FaceKey face_key(std::array<std::int32_t, 4> f) {
   std::sort(f.begin(), f.end());
   return f;
@@ -58,10 +58,12 @@ void sort_unique(std::vector<std::int32_t>& v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
+}  // namespace
+
 // Inside the box or on its boundary (OpenRadioss rdbox.F: INSIDE_CYLINDER, INSIDE_SPHERE). Cylinder: the
 // projection on the axis p1 -> p2 lies between the end faces and the distance to the axis is at most D/2;
 // sphere: |x - p1| <= D/2.
-bool inside(const model::Box& b, double x, double y, double z) {
+bool inside_box(const model::Box& b, double x, double y, double z) {
   const model::Vec3 d = model::sub({x, y, z}, b.p1);
   switch (b.shape) {
     case model::BoxShape::Recta:
@@ -79,6 +81,8 @@ bool inside(const model::Box& b, double x, double y, double z) {
   }
   return false;
 }
+
+namespace {
 
 // The three element group families: the keyword root, the subtype that lists element ids, the words
 // messages use. Indexed by model::ElementType.
@@ -365,7 +369,7 @@ void add_elements_in_box(ElementGroupList& l, bool every_node) {
     std::size_t in = 0;
     for (std::size_t k = 0; k < npe; ++k) {
       const auto n = ge.block->conn[static_cast<std::size_t>(ge.index) * npe + k];
-      if (n >= 0 && inside(b, m.nodes.x[n], m.nodes.y[n], m.nodes.z[n])) ++in;
+      if (n >= 0 && inside_box(b, m.nodes.x[n], m.nodes.y[n], m.nodes.z[n])) ++in;
     }
     if (every_node ? in == npe : in > 0) l.add.push_back(e);
   });
@@ -681,7 +685,8 @@ void add_nodes_in_boxes(NodeGroupList& l) {
     }
     const auto& b = m.boxes[it->second];
     for (std::size_t n = 0; n < m.nodes.size(); ++n) {
-      if (inside(b, m.nodes.x[n], m.nodes.y[n], m.nodes.z[n])) l.add.push_back(static_cast<std::int32_t>(n));
+      if (inside_box(b, m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]))
+        l.add.push_back(static_cast<std::int32_t>(n));
     }
   }
 }
@@ -879,7 +884,8 @@ void push_segment(model::Surface& s, std::array<std::int32_t, 4> seg, model::Seg
   s.owner.push_back(owner);
 }
 
-// A shell as a segment, as the element is numbered, or flipped.
+}  // namespace
+
 void push_shell(const model::Model& m, model::Surface& s, std::int32_t e, bool flip) {
   const auto* c = &m.shells.conn[4 * static_cast<std::size_t>(e)];
   if (!flip)
@@ -897,6 +903,8 @@ void push_shell3(const model::Model& m, model::Surface& s, std::int32_t e, bool 
   else
     push_segment(s, {c[0], c[1], c[2], c[2]}, model::SegmentOwner::Shell3, e);
 }
+
+namespace {
 
 // How many marked solids have each face (each solid counted once): the tetrahedra marked in
 // `tetra_neighbours`, the bricks marked in `neighbours` (either may be null).
@@ -931,10 +939,9 @@ std::map<FaceKey, int> solids_sharing_faces(const model::Model& m,
   return sharing;
 }
 
-// The faces of `bricks`, then of `tetras`, in that order, each pointing out of its element (a tetrahedron
-// face is a triangle, n4 = n3). With `neighbours` (bricks) and `tetra_neighbours`, a face that another
-// marked solid also has is an inner face and is left out; a face whose key is in `covered` is left out
-// too (a shell already gives that segment).
+}  // namespace
+
+// A tetrahedron face is a triangle segment (n4 = n3); a key in `covered` is a face a shell already gives.
 void push_solid_faces(const model::Model& m, model::Surface& s, const std::vector<std::int32_t>& bricks,
                       const std::vector<std::int32_t>& tetras, const std::vector<std::uint8_t>* neighbours,
                       const std::vector<std::uint8_t>* tetra_neighbours, const std::set<FaceKey>& covered) {
@@ -964,6 +971,8 @@ void push_solid_faces(const model::Model& m, model::Surface& s, const std::vecto
     }
   }
 }
+
+namespace {
 
 // /SURF/SEG: one segment per record line, owned by the element that has that face (built at the first
 // segment whose nodes all exist, kept in `owners` for the surfaces after it).

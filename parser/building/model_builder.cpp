@@ -72,6 +72,12 @@ std::int32_t ModelBuilder::ref(const IdIndex& index, const KeywordRecord& r, std
     return kNone;
   }
   const auto it = index.find(id);
+  // A set of the id stands in for a node group or a surface no /GRNOD or /SURF defines (Radioss builds the
+  // group from the set where it is named); a group of the same id wins, as in Radioss.
+  if (it == index.end() && (target_keyword == "/GRNOD" || target_keyword == "/SURF")) {
+    const auto s = target_keyword == "/GRNOD" ? node_group_from_set(id) : surface_from_set(id);
+    if (s != kNone) return s;
+  }
   if (it == index.end()) {
     const std::string prefix = std::string(target_keyword) + "/";
     // Radioss lets a group reference (/GRNOD, /SURF, /GRSHEL ...) name a /SET as well, in the same ids.
@@ -84,9 +90,10 @@ std::int32_t ModelBuilder::ref(const IdIndex& index, const KeywordRecord& r, std
       error_at(r, field, Diag::MissingReference,
                std::string(field) + " = " + std::to_string(id) + " names " + unread->path + " " +
                    std::to_string(id) + " (" + std::string(w.file) + ":" + std::to_string(w.line) +
-                   "), a /SET, which radx does not read yet (reported there), not a " +
+                   "), a /SET of a type radx does not read (reported there; radx reads /SET/GENERAL and "
+                   "/SET/COLLECT), not a " +
                    std::string(target_keyword) + ": give the " + std::string(what) + " as a " +
-                   std::string(target_keyword) + " instead");
+                   std::string(target_keyword) + " or a /SET/GENERAL instead");
     } else if (unread != deck_.unread.end()) {
       const Where w = deck_.where(unread->pos);
       error_at(r, field, Diag::MissingReference,
@@ -1185,6 +1192,7 @@ model::Model ModelBuilder::build() {
   resolve_fail_tab_functions();
   resolve_spring_functions();
   build_element_groups();  // before surfaces and node groups, which are built from element groups
+  build_sets();            // after the element groups: a set is one where no group has its id
   build_surfaces();        // before the groups: /GRNOD/SURF takes the nodes of surfaces
   build_groups();
   transform_node_groups();      // /TRANSFORM with grnod_ID: on the groups just built, in deck order

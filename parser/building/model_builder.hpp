@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <compare>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -154,6 +155,34 @@ class ModelBuilder {
   [[nodiscard]] GroupElement group_element(model::ElementType type, std::int32_t e) const;
   // How many elements a group of `type` can hold: a brick group's bricks and tetrahedra.
   [[nodiscard]] std::size_t group_capacity(model::ElementType type) const;
+  // Sets (/SET/GENERAL, /SET/COLLECT; build_sets.cpp). A set holds each kind of member Radioss gives it;
+  // it stays in the starter and becomes a node group, a surface or an element group of its id where a
+  // keyword names one and no group or surface of that kind has the id (a group of the same id wins, as in
+  // Radioss).
+  struct SetSegment {
+    std::array<std::int32_t, 4> nodes{};
+    model::SegmentOwner type = model::SegmentOwner::None;
+    std::int32_t owner = model::kNone;
+    auto operator<=>(const SetSegment&) const = default;
+  };
+  struct SetMembers {
+    // Sorted, unique dense indices; solids as a brick group holds them (tetrahedra after the bricks).
+    std::vector<std::int32_t> nodes, parts, shells, shells3, solids;
+    std::vector<SetSegment> segments;  // the surface, in the order its segments were added
+  };
+  struct Set {
+    std::vector<const KeywordRecord*> records;  // one /SET/GENERAL, or every /SET/COLLECT of the id
+    bool collect = false;
+    SetMembers members;
+    std::uint8_t state = 0;   // 0 not built, 1 building, 2 built
+    bool had_errors = false;  // its clauses gave errors: an empty set is not warned of again
+  };
+  void build_sets();  // after the element groups: adds the sets' element groups
+  // The members of set s (resolved on first use, SET clauses recursively); nullptr on a loop.
+  const SetMembers* set_members(std::int32_t s);
+  // The node group or surface of set `id`, built into the model on first use; kNone when no set has it.
+  std::int32_t node_group_from_set(std::int64_t id);
+  std::int32_t surface_from_set(std::int64_t id);
   // All parts of subset s and of its descendants.
   void subset_parts(std::int32_t s, std::vector<std::int32_t>& out) const;
   std::int32_t node_ref(std::int64_t user_id, const KeywordRecord& r, SourcePos pos, std::string_view what);
@@ -166,6 +195,8 @@ class ModelBuilder {
 
   IdIndex mat_ids_, prop_ids_, part_ids_, subset_ids_, box_ids_, funct_ids_, grnod_ids_, surf_ids_,
       inter_ids_, rwall_ids_, rbody_ids_, skew_ids_, sect_ids_, accel_ids_, sensor_ids_;
+  std::vector<Set> sets_;
+  IdIndex set_ids_, collect_set_ids_;  // /SET/GENERAL and /SET/COLLECT ids -> sets_
   std::vector<ElementGroup> element_groups_;
   IdIndex element_group_ids_[3];  // by model::ElementType
   std::vector<const KeywordRecord*> grnod_records_;

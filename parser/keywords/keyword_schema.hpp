@@ -237,6 +237,9 @@ enum class Tail : std::uint8_t {
   Text,               // lines joined, blanks removed (/CTCLAW law string)
   ThVarsThenIds,      // /TH/PART, /TH/INTER, ...: variable-name lines, then ids 10 per line
   ThVarsThenRecords,  // /TH/NODE, /TH/SHEL: variable-name lines, then `record` lines
+  // /SET: one `record` card per line, text lines included (a clause word in columns 1-10, blank on the
+  // lines that carry on the clause above, then its ids in 10-column cells).
+  Clauses,
 };
 
 // Header fields after the keyword path: `/INTER/TYPE7/inter_ID/unit_ID`.

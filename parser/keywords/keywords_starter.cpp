@@ -1198,6 +1198,36 @@ void add_groups(std::vector<KeywordDecl>& t) {
                 "brick group: the bricks and tetrahedra with at least one node in the box (only the first "
                 "box id counts)",
                 "grbric_ID");
+  // Sets (/SET/GENERAL, /SET/COLLECT): clause lines, each a clause word then ids. The ids' kind depends on
+  // the clause (nodes, parts, elements, boxes, sets), so a set inside a //SUBMODEL is refused by the builder
+  // rather than shifted by one offset.
+  for (const auto& [path, meaning] :
+       {std::pair{
+            std::string_view("/SET/GENERAL"),
+            std::string_view("set: nodes, parts, elements and a surface from clauses combined in order, "
+                             "usable wherever a node group, an element group or a surface is named")},
+        std::pair{std::string_view("/SET/COLLECT"),
+                  std::string_view(
+                      "set like /SET/GENERAL; every /SET/COLLECT with the same id adds to one set")}}) {
+    KeywordDecl k = kw(path, meaning, Header::Id, true, "set_ID");
+    k.tail = Tail::Clauses;
+    k.record =
+        card("clause", {S("clause", 1, 10,
+                          "PART, NODE, SHELL, SH3N, SOLID, SET, SETCOL, BOX, BOX2 or ALL, with options "
+                          "after '_': D removes, G generates (first last step), I intersects (SET), O "
+                          "flips shell normals, A takes every solid face; blank: the clause above goes on")});
+    for (const auto name :
+         {"item1", "item2", "item3", "item4", "item5", "item6", "item7", "item8", "item9"}) {
+      const int c = 11 + 10 * static_cast<int>(name[4] - '1');
+      k.record.fields.push_back(
+          I(name, c, c + 9, "an id of the clause's kind (or first, last, step with _G)"));
+    }
+    k.text_meaning =
+        "Clauses are applied in order: a plain clause adds, _D removes, _I keeps what both hold; each kind "
+        "of "
+        "member (nodes, parts, shells, 3-node shells, solids, surface segments) separately (docs/sets.md).";
+    t.push_back(std::move(k));
+  }
   id_group("/GRNOD/GRSHEL", "node group: the nodes of the shells of the listed /GRSHEL groups", "grnod_ID");
   id_group("/GRNOD/GRSH3N", "node group: the nodes of the 3-node shells of the listed /GRSH3N groups",
            "grnod_ID");

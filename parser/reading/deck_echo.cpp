@@ -255,6 +255,13 @@ void write_keyword_reference(std::ostream& os) {
         os << "Then text lines, joined with blanks removed.\n\n";
         if (!k.text_meaning.empty()) os << k.text_meaning << "\n\n";
         break;
+      case Tail::Clauses:
+        os << "Then clause lines: a clause word in columns 1-10 (a blank word carries on the clause above), "
+              "then its ids in 10-column cells:\n\n";
+        field_rows(os, k.record.fields);
+        os << "\n";
+        if (!k.text_meaning.empty()) os << k.text_meaning << "\n\n";
+        break;
       case Tail::ThVarsThenIds:
         os << "Then variable-name lines (10-column cells), then object ids.\n\n";
         break;

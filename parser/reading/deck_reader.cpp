@@ -838,6 +838,16 @@ class StarterReader {
     }
   }
 
+  // Tail::Clauses: every non-blank line is a record; a clause word starts its line, so no line is skipped
+  // for starting with text.
+  void read_clause_lines(const KeywordDecl& decl, std::size_t cur, std::size_t last, KeywordRecord& rec,
+                         const About& about) {
+    const auto& lines = text_.lines;
+    init_table(rec.records, decl.record);
+    for (; cur < last; ++cur)
+      if (!trim(lines[cur].text).empty()) read_record(rec.records, lines[cur], about);
+  }
+
   // The id lines from `cur` to `last` into rec.ids (lines of text skipped).
   void read_id_lines(std::size_t cur, std::size_t last, KeywordRecord& rec, const About& about,
                      SkippedText& skipped) {
@@ -890,6 +900,7 @@ class StarterReader {
       case Tail::Records: read_record_lines(decl, cur, last, rec, about, skipped); break;
       case Tail::IdList: read_id_lines(cur, last, rec, about, skipped); break;
       case Tail::Text: read_text_lines(cur, last, rec); return;
+      case Tail::Clauses: read_clause_lines(decl, cur, last, rec, about); return;
       case Tail::ThVarsThenIds:
         read_id_lines(read_th_variable_lines(cur, last, rec), last, rec, about, skipped);
         break;
