@@ -1,6 +1,6 @@
-// The damage stage of every failure model (/FAIL/JOHNSON, /FAIL/TAB) at an integration point, and the point
-// updates that carry it: one stage, the models differ only in their failure strain (fail_johnson.cpp,
-// fail_tab.cpp) and in what a failed point does (FailParams).
+// The damage stage of every failure model (/FAIL/JOHNSON, /FAIL/TAB, /FAIL/BIQUAD) at an integration point,
+// and the point updates that carry it: one stage, the models differ only in their failure strain
+// (fail_johnson.cpp, fail_tab.cpp, fail_biquad.cpp) and in what a failed point does (FailParams).
 //
 // Damage, normalised d = D / Dcrit (Dcrit = 1, n = 1 for Johnson-Cook), with the stress AFTER the material
 // update of the step and d_eps_p its plastic increment:
@@ -33,6 +33,8 @@ double fail_strain(const FailParams& f, double sigma_m, double svm, double rate,
   switch (f.kind) {
     case FailKind::Johnson: return fail_jc_strain(f, sigma_m, svm, rate) * escale;
     case FailKind::Tab: return fail_tab_strain(f, sigma_m, svm, rate) * escale;
+    // OpenRadioss fail_biquad_c.F / _s.F: D += d_eps_p / max(eps_f, 1e-6).
+    case FailKind::Biquad: return std::max(fail_biquad_strain(f, sigma_m, svm) * escale, 1e-6);
     case FailKind::None: break;
   }
   return 0.0;
