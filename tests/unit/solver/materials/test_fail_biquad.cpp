@@ -1,15 +1,19 @@
 // /FAIL/BIQUAD (solver/materials/fail_biquad.cpp) through the damage stage it shares (failure_damage.cpp):
 // the two parabolas through C1..C5 at their triaxialities, the plane-strain vertex form of S_Flag 2, the
-// triaxiality of shell and solid stress states, the damage integral and the floor of a curve below zero, and
-// the starter's reading (M_Flag, S_Flag, P_thickfail, the size function). Expected values are the card's
-// C1..C5 and the closed forms of docs/theory/failure-biquad.md. Units: MPa, mm, s.
+// triaxiality of shell and solid stress states, the damage integral and the floor of a curve below zero, the
+// starter's reading (M_Flag, S_Flag, P_thickfail, the size function), and the sample deck
+// decks/fail_biquad_strip against its closed form. Expected values are the card's C1..C5 and the closed forms
+// of docs/theory/failure-biquad.md. Units: MPa, mm, s.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "solver/elements/element_groups.hpp"
+#include "solver/engine/explicit_engine.hpp"
 #include "solver/materials/material_point.hpp"
 #include "test_util.hpp"
 
@@ -216,4 +220,54 @@ TEST_CASE("FAIL/BIQUAD reader: M_Flag's multiples of C3, S_Flag defaults, P_thic
     CHECK(f.size_function >= 0);
     CHECK(f.el_ref == 1.0);
   }
+}
+
+TEST_CASE("FAIL/BIQUAD sample deck: the strip's shells and the bar's bricks fail at eps_p = C3 in tension",
+          "[biquad][engine][deck]") {
+  // decks/fail_biquad_strip: law 2 (300 + 1000 eps_p MPa, E 210000), C3 = 0.08, M_Flag 2; a shell strip and
+  // a brick bar, each pulled at V = 1000 mm/s over L = 100 mm in uniaxial stress (triaxiality 1/3). Closed
+  // form (the deck's README): the points fail at eps_p = C3, when the logarithmic strain C3 + (300 + 1000 C3)
+  // / E is reached, at t_f = L (exp(C3 + sigma / E) - 1) / V.
+  const std::string dir = std::string(RADX_SOURCE_DIR) + "/decks/fail_biquad_strip/";
+  radx::Diagnostics diags;
+  const auto deck = radx::read_starter_deck(dir + "FAIL_BIQUAD_STRIP_0000.rad", diags);
+  const auto m = radx::build_model(deck, diags);
+  REQUIRE_FALSE(diags.has_errors());
+  const double c3 = 0.08, sigma = 300.0 + 1000.0 * c3;
+  const double t_f = 100.0 * (std::exp(c3 + sigma / 210000.0) - 1.0) / 1000.0;
+  radx::model::RunControls rc;
+  rc.t_stop = 1.03 * t_f;
+  ExplicitEngine engine(m, rc, EngineOptions{1, 1000});
+  double t_shell = -1, t_brick = -1, eps_shell = 0, eps_brick = 0;
+  engine.run([&](const CycleReport& r) {
+    const auto& sh = engine.groups().shells;
+    for (const auto& g : sh)
+      for (int i = 0; i < g.count && t_shell < 0; ++i) {
+        const auto e = static_cast<std::size_t>(i);
+        if (g.off[e] == 1.0) continue;
+        t_shell = r.time;
+        for (int k = 0; k < g.gauss * g.props.n_points; ++k)
+          eps_shell = std::max(eps_shell, g.eps_p[static_cast<std::size_t>(k) * kGroupSize + e]);
+      }
+    for (const auto& g : engine.groups().bricks)
+      for (int i = 0; i < g.count && t_brick < 0; ++i) {
+        const auto e = static_cast<std::size_t>(i);
+        if (g.off[e] == 1.0) continue;
+        t_brick = r.time;
+        eps_brick = g.eps_p[e];
+      }
+    return true;
+  });
+  INFO("closed form t_f = " << t_f << " s; shells " << t_shell << " s at eps_p " << eps_shell << "; bricks "
+                            << t_brick << " s at eps_p " << eps_brick);
+  REQUIRE(t_shell > 0);
+  REQUIRE(t_brick > 0);
+  // The failed point's plastic strain is C3 to 1 %: the damage integral at a triaxiality within about 0.01
+  // of 1/3 (the lateral inertia of the pulled strip and bar), plus one cycle's increment.
+  CHECK(close(eps_shell, c3, 0.01));
+  CHECK(close(eps_brick, c3, 0.01));
+  // The failure time within 0.5 % of t_f: the strain rate along the pulled bar is uniform to that once the
+  // first elastic waves have crossed it (the strain lags the pulled end by the wave transit, ~20 us).
+  CHECK(close(t_shell, t_f, 0.005));
+  CHECK(close(t_brick, t_f, 0.005));
 }
