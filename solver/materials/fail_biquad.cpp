@@ -26,8 +26,9 @@
 //   then eps_f times the element's size factor f_el(L0 / EI_ref) (Ireg 1), floored at 1e-6 (a curve below
 //   zero fails the point at once, as OpenRadioss's max(eps_f, 1e-6) does).
 // The damage: D += d_eps_p / eps_f; the point fails at D = 1.
-// OpenRadioss solves the two fits numerically with the triaxialities rounded to 8 digits (their squares to
-// 6): its curve passes through C1..C5 to about 1e-6 relative; radx's closed forms pass through them exactly.
+// OpenRadioss solves the two fits numerically with the triaxialities rounded (1/sqrt(3) to 0.57735, the
+// squares to 6 digits): its curve misses C1..C5 by up to about 1e-5 relative; radx's closed forms meet them
+// to round-off.
 //
 // What a failed point does: shells: no stress any more; the element is deleted when the failed fraction of
 // the thickness reaches min(P_thickfail (0: 1e-6), the property's P_thickfail) kept in [1e-6, 1 - 1e-6].
