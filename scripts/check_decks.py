@@ -2176,9 +2176,9 @@ def failure_models(tables):
                 I("RX510", p[0], p[1], "/FAIL/TAB %d: size function on solids" % o["id"])
 
     # /FAIL/BIQUAD/mat_ID (build_fail_biquad.cpp, check_formulations.cpp): on an existing LAW2 or LAW36
-    # material, one failure model per material; refused: S_Flag 3 with 0 < Inst_start < C4 (C4 after M_Flag),
-    # the softening (ICOUP 1 or 2 with S_Flag 3, or DCRIT > 0), Ireg > 1 with a size function, P_thickfail
-    # < 0, a size function on solids; S_Flag outside 0..3 is out of range
+    # material, one failure model per material; refused: the softening (ICOUP 1, or 2 with S_Flag 3 and
+    # 0 < Inst_start < C4 after M_Flag, or DCRIT > 0), Ireg > 1 with a size function, P_thickfail < 0, a size
+    # function on solids; S_Flag outside 0..3 is out of range
     ratios = {2: (4.3, 1.4, 0.6, 1.6), 3: (5.2, 3.1, 0.8, 3.5), 4: (5.0, 1.0, 0.4, 0.8), 5: (7.8, 3.5, 0.6, 2.8),
               6: (3.6, 0.6, 0.5, 0.6), 7: (10.0, 2.7, 0.6, 0.7)}
     tension = {2: 0.5, 3: 0.12, 4: 0.3, 5: 0.17, 6: 0.1, 7: 0.11}
@@ -2208,9 +2208,6 @@ def failure_models(tables):
             I("RX501", p[0], p[1], "/FAIL/BIQUAD %d: S_Flag not 0..3" % o["id"])
         inst = val(o, "Inst_start", 0.0)
         s3 = s_flag == 3 and 0 < inst < c4
-        if s3:
-            p = pos(o, "S_Flag")
-            I("RX510", p[0], p[1], "/FAIL/BIQUAD %d: S_Flag 3 (necking instability)" % o["id"])
         icoup, dcrit = val(o, "ICOUP", 0), min(max(val(o, "DCRIT", 0.0), 0.0), 1.0)
         if icoup == 2 and not s3:
             icoup = 0

@@ -1080,14 +1080,6 @@ def _():
     return d, "/FAIL/BIQUAD/2 on the elastic /MAT/LAW1/2 (radx: laws 2 and 36 only)", [("RX510", "FB_KW")]
 
 
-@fault("fail_biquad_necking")
-def _():
-    d = base()
-    d.insert_before("AFTER_MATS", fail_biquad(S_Flag=3, Inst_start=0.1))
-    return d, ("/FAIL/BIQUAD/1 S_Flag = 3 with 0 < Inst_start < C4 (the shells' necking instability)"), \
-        [("RX510", "FB.S_Flag")]
-
-
 @fault("fail_biquad_s_flag_range")
 def _():
     d = base()
@@ -1100,6 +1092,14 @@ def _():
     d = base()
     d.insert_before("AFTER_MATS", fail_biquad(ICOUP=1, DCRIT=0.5, EXP=2.0))
     return d, "/FAIL/BIQUAD/1 ICOUP = 1 (stress softening from DCRIT)", [("RX510", "FB.ICOUP")]
+
+
+@fault("fail_biquad_necking_softening")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_biquad(S_Flag=3, Inst_start=0.1, ICOUP=2, EXP=2.0))
+    return d, ("/FAIL/BIQUAD/1 ICOUP = 2 with S_Flag 3 (stress softening from the necking instability)"), \
+        [("RX510", "FB.ICOUP")]
 
 
 @fault("fail_biquad_dcrit")

@@ -238,8 +238,9 @@ RADX_SCHEMA(FailTab, RADX_FIELD(on), RADX_FIELD(fail_id), RADX_FIELD(ifail_sh), 
             RADX_FIELD(size_function), RADX_FIELD(size_scale), RADX_FIELD(el_ref),
             RADX_FIELD(temp_function_id), RADX_FIELD(temp_factor));
 RADX_SCHEMA(FailBiquad, RADX_FIELD(on), RADX_FIELD(fail_id), RADX_FIELD(c1), RADX_FIELD(c2), RADX_FIELD(c3),
-            RADX_FIELD(c4), RADX_FIELD(c5), RADX_FIELD(m_flag), RADX_FIELD(s_flag), RADX_FIELD(p_thickfail),
-            RADX_FIELD(size_function_id), RADX_FIELD(size_function), RADX_FIELD(el_ref));
+            RADX_FIELD(c4), RADX_FIELD(c5), RADX_FIELD(m_flag), RADX_FIELD(s_flag), RADX_FIELD(inst_start),
+            RADX_FIELD(p_thickfail), RADX_FIELD(size_function_id), RADX_FIELD(size_function),
+            RADX_FIELD(el_ref));
 RADX_SCHEMA(Material, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(law), RADX_FIELD(keyword),
             RADX_FIELD(rho), RADX_FIELD(rho_ref), RADX_FIELD(young), RADX_FIELD(poisson), RADX_FIELD(shear),
             RADX_FIELD(bulk), RADX_FIELD(iflag), RADX_FIELD(flag_vp), RADX_FIELD(icc), RADX_FIELD(fsmooth),

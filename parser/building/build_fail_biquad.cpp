@@ -9,9 +9,9 @@
 //   P_thickfail clamped to [-1, 1], 0 -> 1e-6;
 //   Ireg: 0 without fct_IDel, 0 -> 1 with it; EI_ref 0 -> 1;
 //   DCRIT clamped to [0, 1]; DCRIT > 0 with ICOUP 0 -> ICOUP 1; ICOUP 2 without S_Flag 3 -> 0 (a warning).
-// What radx does not run is refused by name (RX510): S_Flag 3 (the shells' necking instability), the stress
-// softening (ICOUP > 0), Ireg 2 and 3 (the size factor by triaxiality), P_thickfail < 0 (a fraction of
-// points). The size function on solids is refused in check_formulations.cpp.
+// What radx does not run is refused by name (RX510): the stress softening (ICOUP > 0), Ireg 2 and 3 (the size
+// factor by triaxiality), P_thickfail < 0 (a fraction of points). The size function on solids is refused in
+// check_formulations.cpp.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -99,11 +99,7 @@ void ModelBuilder::resolve_biquad_options(const KeywordRecord& r, model::FailBiq
                    ": no instability, S_Flag 2 is used (as Radioss does)");
     f.s_flag = 2;
   }
-  if (f.s_flag == 3)
-    error_at(
-        r, "S_Flag", Diag::PhysicsNotImplemented,
-        "S_Flag = 3 (the shells' necking instability from Inst_start) is not implemented by radx; "
-        "accepted: S_Flag 1 (the second parabola above triaxiality 1/3) or 2 (plane strain the minimum)");
+  if (f.s_flag == 3) f.inst_start = inst;
   const double dcrit = std::clamp(r.get_real("DCRIT"), 0.0, 1.0);
   std::int64_t icoup = r.get_int("ICOUP");
   if (dcrit != 0 && icoup == 0) icoup = 1;

@@ -895,8 +895,8 @@ void add_plas_tab_and_failure(std::vector<KeywordDecl>& t) {
                "material selector: C1, C2, C4, C5 as multiples of C3: 0 user values (all blank: mild steel), "
                "1 mild steel, 2 HSS, 3 UHSS, 4 AA5182, 5 AA6082-T6, 6 PA6GF30, 7 PP T40, 99 R1 R2 R4 R5"),
              I("S_Flag", 31, 40,
-               "above triaxiality 1/3: 1 the second parabola, 2 plane strain the minimum; 0 = 2 (3, the "
-               "necking instability: refused)")
+               "above triaxiality 1/3: 1 the second parabola, 2 plane strain the minimum, 3 that and the "
+               "shells' necking instability from Inst_start; 0 = 2")
                  .zero_is(2)
                  .allow({0, 1, 2, 3}),
              R("Inst_start", 41, 60,

@@ -26,6 +26,10 @@
 //   then eps_f times the element's size factor f_el(L0 / EI_ref) (Ireg 1), floored at 1e-6 (a curve below
 //   zero fails the point at once, as OpenRadioss's max(eps_f, 1e-6) does).
 // The damage: D += d_eps_p / eps_f; the point fails at D = 1.
+// S_Flag 3 (shells; solids run it as 2): the failure curve of S_Flag 2, and an instability damage
+//   D_i += d_eps_p / (escale eps_i(eta)) while eps_i > 0, capped at 1, with eps_i = 0 for eta <= 1/3 and
+//   above eps_i = I + (P - I) (eta - s)^2 / (x_P - s)^2,  I = Inst_start, (x_P, P) as for S_Flag 2; the shell
+//   goes at once when all its points have D_i = 1 (shell_section.hpp section_instability).
 // OpenRadioss solves the two fits numerically with the triaxialities rounded (1/sqrt(3) to 0.57735, the
 // squares to 6 digits): its curve misses C1..C5 by up to about 1e-5 relative; radx's closed forms meet them
 // to round-off.
@@ -68,12 +72,27 @@ void fail_biquad_fit(double c1, double c2, double c3, double c4, double c5, Fail
 
 double fail_biquad_curve(const FailParams& f, double eta) {
   if (eta <= 1.0 / 3.0) return poly(f.bq_low, eta);
-  if (f.bq_s_flag == 1) return poly(f.bq_high, eta);
+  if (f.bq_s_flag == 1) return poly(f.bq_high, eta);  // S_Flag 2 and 3: the vertex form
   const double s = kPlaneStrain;
   const double vertex = poly(f.bq_high, s);
   const double xp = eta <= s ? 1.0 / 3.0 : 2.0 / 3.0;
   const double yp = eta <= s ? poly(f.bq_low, xp) : poly(f.bq_high, xp);
   return vertex + (yp - vertex) * (eta - s) * (eta - s) / ((xp - s) * (xp - s));
+}
+
+double fail_biquad_instability_curve(const FailParams& f, double eta) {
+  if (eta <= 1.0 / 3.0) return 0.0;
+  const double s = kPlaneStrain;
+  const double xp = eta <= s ? 1.0 / 3.0 : 2.0 / 3.0;
+  const double yp = eta <= s ? poly(f.bq_low, xp) : poly(f.bq_high, xp);
+  return f.bq_inst + (yp - f.bq_inst) * (eta - s) * (eta - s) / ((xp - s) * (xp - s));
+}
+
+void fail_biquad_instability(const FailParams& f, double sigma_m, double svm, double escale, double deps_p,
+                             double& dmg_inst) {
+  const double eta = std::clamp(sigma_m / std::max(kTiny, svm), -2.0 / 3.0, 2.0 / 3.0);
+  const double eps_i = fail_biquad_instability_curve(f, eta) * escale;
+  if (eps_i > 0) dmg_inst = std::min(1.0, dmg_inst + deps_p / eps_i);
 }
 
 double fail_biquad_strain(const FailParams& f, double sigma_m, double svm) {

@@ -41,7 +41,8 @@ struct FailParams {
   // p(eta) = c[0] + c[1] eta + c[2] eta^2. The size function and its reference length are `size`, `el_ref`.
   double bq_low[3] = {0, 0, 0};
   double bq_high[3] = {0, 0, 0};
-  int bq_s_flag = 2;
+  int bq_s_flag = 2;   // 1, 2, or 3: 2 with the shells' necking instability
+  double bq_inst = 0;  // S_Flag 3: Inst_start, the instability strain at plane strain
   // Damage: dD = n D^(1 - 1/n) d_eps_p / eps_f (the factor is 1 at D = 0), the point fails at D = Dcrit.
   double dcrit = 1, n_exp = 1;
   // Shells: Ifail_sh, whether a failed point keeps its stress (/FAIL/TAB Ifail_sh 3) and the failed thickness
@@ -70,6 +71,11 @@ void fail_biquad_fit(double c1, double c2, double c3, double c4, double c5, Fail
 double fail_biquad_curve(const FailParams& f, double eta);
 // The same at the stress state: eta = sigma_m / max(svm, 1e-20) kept in [-2/3, 2/3].
 double fail_biquad_strain(const FailParams& f, double sigma_m, double svm);
+// /FAIL/BIQUAD S_Flag 3 (fail_biquad.cpp): the instability strain at eta, 0 (no instability) up to 1/3.
+double fail_biquad_instability_curve(const FailParams& f, double eta);
+// The instability damage of a shell point: D_i += d_eps_p / (escale eps_i(eta)) while eps_i > 0, capped at 1.
+void fail_biquad_instability(const FailParams& f, double sigma_m, double svm, double escale, double deps_p,
+                             double& dmg_inst);
 // The failure strain of any model, times the element's size factor `escale`.
 double fail_strain(const FailParams& f, double sigma_m, double svm, double rate, double escale);
 

@@ -56,12 +56,16 @@ bool fail_accumulate(const FailParams& f, double sigma_m, double svm, double rat
 
 ShellPointResult shell_point_update_fail(const MaterialParams& p, int iplas, double rfac, double rate,
                                          double escale, double off, const double de[5], double gs,
-                                         double sig[5], double& eps_p, double& dmg) {
+                                         double sig[5], double& eps_p, double& dmg, double* dmg_inst) {
   const ShellPointResult r = shell_point_update_r(p, iplas, rfac, off, de, gs, sig, eps_p);
   if (!p.fail.on) return r;
   if (off == 1.0 && dmg < 1.0 && r.deps_p > 0) {
     const double svm = std::sqrt(std::max(0.0, shell_vm2_radial(sig[0], sig[1], sig[2])));
-    fail_accumulate(p.fail, (sig[0] + sig[1]) / 3.0, svm, rate, escale, r.deps_p, dmg);
+    const double sm = (sig[0] + sig[1]) / 3.0;
+    // /FAIL/BIQUAD S_Flag 3: the instability damage, updated before the point's own (fail_biquad_c.F).
+    if (dmg_inst != nullptr && p.fail.kind == FailKind::Biquad && p.fail.bq_s_flag == 3)
+      fail_biquad_instability(p.fail, sm, svm, escale, r.deps_p, *dmg_inst);
+    fail_accumulate(p.fail, sm, svm, rate, escale, r.deps_p, dmg);
   }
   if (dmg >= 1.0 && !p.fail.keep_failed_stress)
     for (int k = 0; k < 5; ++k) sig[k] = 0.0;

@@ -61,6 +61,7 @@ void set_failure_params(const model::Material& m, MaterialParams& p) {
     p.fail.kind = FailKind::Biquad;
     fail_biquad_fit(f.c1, f.c2, f.c3, f.c4, f.c5, p.fail);
     p.fail.bq_s_flag = f.s_flag;
+    p.fail.bq_inst = f.inst_start;
     p.fail.el_ref = f.el_ref > 0 ? f.el_ref : 1.0;
     p.fail.ifail_sh = 2;
     p.fail.p_thick = f.p_thickfail;

@@ -126,7 +126,8 @@ struct FailBiquad {
   std::int64_t fail_id = 0;
   double c1 = 0, c2 = 0, c3 = 0, c4 = 0, c5 = 0;  // after M_Flag
   int m_flag = 0;
-  int s_flag = 2;                     // 1: the second parabola above 1/3; 2: plane strain the minimum
+  int s_flag = 2;  // 1: the second parabola above 1/3; 2: plane strain the minimum; 3: 2 and the necking
+  double inst_start = 0;              // S_Flag 3: the instability strain at plane strain, in (0, C4)
   double p_thickfail = 1e-6;          // in [1e-6, 1]; min with the property's at run time
   std::int64_t size_function_id = 0;  // factor of eps_f by the element size / EI_ref; 0 = none
   std::int32_t size_function = -1;

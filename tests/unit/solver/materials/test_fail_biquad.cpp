@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "solver/elements/element_groups.hpp"
+#include "solver/elements/shell/shell_section.hpp"
 #include "solver/engine/explicit_engine.hpp"
 #include "solver/materials/material_point.hpp"
 #include "test_util.hpp"
@@ -202,6 +203,10 @@ TEST_CASE("FAIL/BIQUAD reader: M_Flag's multiples of C3, S_Flag defaults, P_thic
     CHECK(f.s_flag == 2);
     CHECK(f.p_thickfail == 1e-6);
     CHECK(f.size_function < 0);
+    // Inst_start 0.05 below C4 = 0.096: S_Flag 3 runs, with its instability strain.
+    const auto m3 = radx::test::model_of_deck(deck(0.0, 3, 3, 0.05, 0.0, ""));
+    CHECK(m3.materials[0].fail_bq.s_flag == 3);
+    CHECK(m3.materials[0].fail_bq.inst_start == 0.05);
   }
   {
     // M_Flag 99: the card's ratios R1 R2 R4 R5 of C3 = 0.4; S_Flag 0 -> 2; P_thickfail above 1 -> 1; the size
@@ -270,4 +275,89 @@ TEST_CASE("FAIL/BIQUAD sample deck: the strip's shells and the bar's bricks fail
   // first elastic waves have crossed it (the strain lags the pulled end by the wave transit, ~20 us).
   CHECK(close(t_shell, t_f, 0.005));
   CHECK(close(t_brick, t_f, 0.005));
+}
+
+TEST_CASE("FAIL/BIQUAD S_Flag 3: the instability curve through Inst_start at plane strain, C3 and C5",
+          "[material][fail][biquad]") {
+  Material m = biquad_material(3);
+  m.fail_bq.inst_start = 0.1;
+  const MaterialParams p = make_material_params(m);
+  REQUIRE(p.fail.bq_s_flag == 3);
+  // Up to 1/3 no instability; above, the vertex Inst_start at 1/sqrt(3), C3 (0.3) at 1/3, C5 (0.35) at 2/3.
+  CHECK(fail_biquad_instability_curve(p.fail, 0.0) == 0.0);
+  CHECK(fail_biquad_instability_curve(p.fail, 1.0 / 3.0) == 0.0);
+  CHECK(close(fail_biquad_instability_curve(p.fail, 1.0 / 3.0 + 1e-12), 0.3, 1e-9));
+  CHECK(close(fail_biquad_instability_curve(p.fail, kS), 0.1, kRound));
+  CHECK(close(fail_biquad_instability_curve(p.fail, 2.0 / 3.0), 0.35, kRound));
+  const double e = 0.5;
+  CHECK(close(fail_biquad_instability_curve(p.fail, e), 0.1 + 0.2 * std::pow((e - kS) / (1.0 / 3 - kS), 2),
+              kRound));
+  // The failure curve of S_Flag 3 is the one of S_Flag 2.
+  const MaterialParams p2 = make_material_params(biquad_material(2));
+  for (double eta : {-0.3, 0.1, 0.4, 0.55, 0.6, 0.65})
+    CHECK(fail_biquad_curve(p.fail, eta) == fail_biquad_curve(p2.fail, eta));
+  // The damage: 0.05 of plastic strain at plane strain is half the instability; none at eta = 1/3.
+  double d = 0;
+  fail_biquad_instability(p.fail, kS * 300.0, 300.0, 1.0, 0.05, d);
+  CHECK(close(d, 0.5, 1e-9));
+  d = 0;
+  fail_biquad_instability(p.fail, 100.0, 300.0, 1.0, 0.05, d);
+  CHECK(d == 0.0);
+}
+
+TEST_CASE("FAIL/BIQUAD S_Flag 3 on a shell section: deleted when every point has reached the instability",
+          "[shell][fail][biquad]") {
+  // Membrane plane strain (eps_yy = 0) with a little bending along x: the triaxiality rises from
+  // (1 + nu) / (3 sqrt(1 - nu + nu^2)) at first yield (elastic syy = nu sxx) towards 1/sqrt(3), where the
+  // instability curve has its minimum Inst_start = 0.1. The three points strain at different rates (the
+  // bending), so they reach the instability one after the other: the element goes in the step the last one
+  // (the lower surface) does, at an eps_p of that point between Inst_start and the instability strain at the
+  // first yield's triaxiality, well before the failure strain (about C4 = 0.2). With S_Flag 2 the same path
+  // does not delete it there.
+  using namespace radx::solver::shell_detail;
+  constexpr std::size_t G = kGroupSize;
+  const double nu = 0.3;
+  const double eta_y = (1 + nu) / (3 * std::sqrt(1 - nu + nu * nu));
+  const double eps_i_max = 0.1 + 0.2 * std::pow((eta_y - kS) / (1.0 / 3 - kS), 2);
+  for (const int s_flag : {3, 2}) {
+    Material m = biquad_material(s_flag);
+    m.fail_bq.inst_start = 0.1;
+    const MaterialParams p = make_material_params(m);
+    ShellGroup g;
+    g.allocate(1, 3);
+    const ThicknessRule rule = thickness_rule(3);
+    SectionBlock<4> s{};
+    bool deleted = false;
+    double ep_low_before = 0, inst_low_before = 0, inst_top_before = 0;
+    for (int step = 0; step < 2000 && !deleted; ++step) {
+      ep_low_before = g.eps_p[0];
+      inst_low_before = g.dmg_inst[0];
+      inst_top_before = g.dmg_inst[2 * G];
+      for (int k = 0; k < 5; ++k) s.dem[k][0] = 0;
+      s.dem[0][0] = 2e-4;
+      s.dk[0][0] = 2e-5;  // the surfaces at +-1e-5 of the membrane's 2e-4 per step
+      s.dk[1][0] = s.dk[2][0] = 0;
+      s.t[0] = 1.0;
+      s.area[0] = 1.0;
+      s.rfac[0] = 1.0;
+      s.rate[0] = 0.0;
+      s.off[0] = 1.0;
+      section_update_block(g, 0, 1, p, rule, p.shear * 5.0 / 6.0, s);
+      deleted = next_off(failure_limit(p), 1.0, s.eps_p_max[0], s.fail_now[0]) == 0.0 && g.eps_p[0] < 0.15;
+    }
+    INFO("S_Flag " << s_flag << ": lower point eps_p " << g.eps_p[0] << ", instability damage "
+                   << g.dmg_inst[0]);
+    if (s_flag == 3) {
+      REQUIRE(deleted);
+      for (int q = 0; q < 3; ++q) CHECK(g.dmg_inst[static_cast<std::size_t>(q) * G] == 1.0);
+      CHECK(inst_top_before == 1.0);  // the upper surface got there first
+      CHECK(inst_low_before < 1.0);   // the lower one in the deleting step
+      CHECK(g.dmg[0] < 1.0);
+      CHECK(ep_low_before < eps_i_max);
+      CHECK(g.eps_p[0] >= 0.1 * (1 - 1e-9));
+    } else {
+      CHECK_FALSE(deleted);
+      CHECK(g.dmg_inst[0] == 0.0);
+    }
+  }
 }
