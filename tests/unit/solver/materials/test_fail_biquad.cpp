@@ -371,39 +371,49 @@ TEST_CASE("FAIL/BIQUAD sample deck fail_biquad_neck: shells deleted by the insta
   const std::string dir = std::string(RADX_SOURCE_DIR) + "/decks/fail_biquad_neck/";
   radx::Diagnostics diags;
   const auto deck = radx::read_starter_deck(dir + "FAIL_BIQUAD_NECK_0000.rad", diags);
-  const auto m = radx::build_model(deck, diags);
+  const auto m0 = radx::build_model(deck, diags);
   REQUIRE_FALSE(diags.has_errors());
   const double nu = 0.3, inst = 0.06, c3 = 0.2;
   const double eta_y = (1 + nu) / (3 * std::sqrt(1 - nu + nu * nu));
   const double eps_i_y = inst + (c3 - inst) * std::pow((eta_y - kS) / (1.0 / 3 - kS), 2);
-  radx::model::RunControls rc;
-  rc.t_stop = 8e-3;
-  ExplicitEngine engine(m, rc, EngineOptions{1, 1000});
-  double t_first = -1, eps_min = 1, eps_max = 0, dmg_max = 0;
-  int deleted = 0;
-  std::vector<double> seen(kGroupSize, 0.0);
-  engine.run([&](const CycleReport& r) {
-    for (const auto& g : engine.groups().shells)
-      for (int i = 0; i < g.count; ++i) {
-        const auto e = static_cast<std::size_t>(i);
-        if (g.off[e] != 0.0 || seen[e] != 0.0) continue;
-        seen[e] = 1.0;
-        ++deleted;
-        if (t_first < 0) t_first = r.time;
-        for (int k = 0; k < g.gauss * g.props.n_points; ++k) {
-          const std::size_t pk = static_cast<std::size_t>(k) * kGroupSize + e;
-          CHECK(g.dmg_inst[pk] == 1.0);
-          eps_min = std::min(eps_min, g.eps_p[pk]);
-          eps_max = std::max(eps_max, g.eps_p[pk]);
-          dmg_max = std::max(dmg_max, g.dmg[pk]);
+  for (const int ishell : {1, 12}) {
+    auto m = m0;
+    REQUIRE(m.properties.size() == 1);
+    m.properties[0].shell.ishell = ishell;
+    radx::model::RunControls rc;
+    rc.t_stop = 8e-3;
+    ExplicitEngine engine(m, rc, EngineOptions{1, 1000});
+    double t_first = -1, eps_min = 1, eps_max = 0, dmg_max = 0;
+    int deleted = 0;
+    std::vector<double> seen(kGroupSize, 0.0);
+    engine.run([&](const CycleReport& r) {
+      for (const auto& g : engine.groups().shells)
+        for (int i = 0; i < g.count; ++i) {
+          const auto e = static_cast<std::size_t>(i);
+          if (g.off[e] != 0.0 || seen[e] != 0.0) continue;
+          seen[e] = 1.0;
+          ++deleted;
+          if (t_first < 0) t_first = r.time;
+          for (int k = 0; k < g.gauss * g.props.n_points; ++k) {
+            const std::size_t pk = static_cast<std::size_t>(k) * kGroupSize + e;
+            CHECK(g.dmg_inst[pk] == 1.0);
+            eps_min = std::min(eps_min, g.eps_p[pk]);
+            eps_max = std::max(eps_max, g.eps_p[pk]);
+            dmg_max = std::max(dmg_max, g.dmg[pk]);
+          }
         }
-      }
-    return true;
-  });
-  INFO("first deletion " << t_first << " s; " << deleted << " shells; eps_p " << eps_min << " .. " << eps_max
-                         << "; damage up to " << dmg_max << "; eps_i(eta_y) " << eps_i_y);
-  REQUIRE(deleted > 0);
-  CHECK(eps_min >= inst);
-  CHECK(eps_max <= eps_i_y);
-  CHECK(dmg_max < 1.0);
+      return true;
+    });
+    INFO("Ishell " << ishell << ": first deletion " << t_first << " s; " << deleted << " shells; eps_p "
+                   << eps_min << " .. " << eps_max << "; damage up to " << dmg_max << "; eps_i(eta_y) "
+                   << eps_i_y);
+    REQUIRE(deleted > 0);
+    CHECK(eps_min >= inst);
+    CHECK(eps_max <= eps_i_y);
+    CHECK(dmg_max < 1.0);
+    if (ishell == 12) {
+      REQUIRE(!engine.groups().shells.empty());
+      CHECK(engine.groups().shells[0].gauss == 4);
+    }
+  }
 }
