@@ -328,6 +328,27 @@ def fail_johnson(v):
     return cards
 
 
+def fail_biquad(v):
+    """/FAIL/BIQUAD/mat_ID (no title), the radioss2017..2026 layouts: C1..C5; P_thickfail, M_Flag, S_Flag,
+    Inst_start, with Ireg at 61-70 from 2026, fct_IDel 71-80 and EI_ref 81-100 from 2018; R1 R2 R4 R5 when
+    M_Flag = 99; ICOUP 11-20, DCRIT, EXP from 2024 and FAILIP 61-70 from 2025; the optional fail_ID card."""
+    c2 = [F("P_thickfail", "R", 1, 20), F("M_Flag", "I", 21, 30), F("S_Flag", "I", 31, 40),
+          F("Inst_start", "R", 41, 60)]
+    if v >= 2026:
+        c2.append(F("Ireg", "I", 61, 70))
+    if v >= 2018:
+        c2 += [F("fct_IDel", "I", 71, 80), F("EI_ref", "R", 81, 100)]
+    cards = [card(reals("C1", "C2", "C3", "C4", "C5")), card(c2),
+             card(reals("R1", "R2", "R4", "R5"), cond=lambda x: x.get("M_Flag", 0) == 99)]
+    if v >= 2024:
+        c4 = [F("ICOUP", "I", 11, 20), F("DCRIT", "R", 21, 40), F("EXP", "R", 41, 60)]
+        if v >= 2025:
+            c4.append(F("FAILIP", "I", 61, 70))
+        cards.append(card(c4))
+    cards.append(card([F("fail_ID", "I", 1, 10)], optional=True))
+    return cards
+
+
 def fail_tab(v):
     """/FAIL/TAB/mat_ID (no title), the radioss110..2018 layouts: P_thickfail at 61-80 in 110, at 41-60 before
     (the 100 QA decks) and from 120 (with Ixfem at 91-100); Dadv from 120; N_rate lines of fct_ID, Fscale,
@@ -719,6 +740,7 @@ STARTER = {
     "/MAT/RIGID": ("id", True, mat_law1, None, None),
     "/FAIL/JOHNSON": ("id", False, fail_johnson, None, None),
     "/FAIL/TAB": ("id", False, fail_tab, None, None),
+    "/FAIL/BIQUAD": ("id", False, fail_biquad, None, None),
     "/GRNOD/NODE": ("id", True, lambda v: [], "ids", ID_REC),
     "/GRNOD/PART": ("id", True, lambda v: [], "ids", ID_REC),
     "/GRNOD/GRNOD": ("id", True, lambda v: [], "ids", ID_REC),
@@ -2220,7 +2242,8 @@ def material_curves(tables):
 
 
 def failure_models(tables):
-    """Failure models /FAIL/JOHNSON and /FAIL/TAB (model_builder.cpp, check_formulations.cpp)."""
+    """Failure models /FAIL/JOHNSON, /FAIL/TAB and /FAIL/BIQUAD (model_builder.cpp, build_fail_biquad.cpp,
+    check_formulations.cpp)."""
     I, functs, m, mats, need = tables.issue, tables.functs, tables.m, tables.mats, tables.need
     part_kind, parts = tables.part_kind, tables.parts
     # /FAIL/JOHNSON/mat_ID: on an existing LAW2 or LAW36 material, one per material
@@ -2292,6 +2315,62 @@ def failure_models(tables):
             if val(o, "fct_IDel", 0) != 0:
                 p = pos(o, "fct_IDel")
                 I("RX510", p[0], p[1], "/FAIL/TAB %d: size function on solids" % o["id"])
+
+    # /FAIL/BIQUAD/mat_ID (build_fail_biquad.cpp, check_formulations.cpp): on an existing LAW2 or LAW36
+    # material, one failure model per material; refused: the softening (ICOUP 1, or 2 with S_Flag 3 and
+    # 0 < Inst_start < C4 after M_Flag, or DCRIT > 0), Ireg > 1 with a size function, P_thickfail < 0, a size
+    # function on solids; S_Flag outside 0..3 is out of range
+    ratios = {2: (4.3, 1.4, 0.6, 1.6), 3: (5.2, 3.1, 0.8, 3.5), 4: (5.0, 1.0, 0.4, 0.8), 5: (7.8, 3.5, 0.6, 2.8),
+              6: (3.6, 0.6, 0.5, 0.6), 7: (10.0, 2.7, 0.6, 0.7)}
+    tension = {2: 0.5, 3: 0.12, 4: 0.3, 5: 0.17, 6: 0.1, 7: 0.11}
+    for o in m.of("/FAIL/BIQUAD"):
+        mat = mats.get(o["id"])
+        if mat is None:
+            I("RX402", o["pos"][0], o["pos"][1], "/FAIL/BIQUAD: material %d does not exist" % o["id"])
+            continue
+        if mat["path"] not in ("/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02", "/MAT/LAW36", "/MAT/PLAS_TAB"):
+            I("RX510", o["pos"][0], o["pos"][1], "/FAIL/BIQUAD on %s %d" % (mat["path"], o["id"]))
+            continue
+        if o["id"] in failed_mats:
+            I("RX401", o["pos"][0], o["pos"][1], "/FAIL/BIQUAD: material %d has one already" % o["id"])
+            continue
+        failed_mats.add(o["id"])
+        m_flag = val(o, "M_Flag", 0)
+        c3 = val(o, "C3", 0.0) or tension.get(m_flag, 0.6)
+        c4 = val(o, "C4", 0.0)
+        blank = all(val(o, k, 0.0) == 0 for k in ("C1", "C2", "C4", "C5"))
+        if m_flag == 99:
+            c4 = val(o, "R4", 0.0) * c3
+        elif m_flag != 0 or blank:
+            c4 = ratios.get(m_flag, (3.5, 1.6, 0.6, 1.5))[2] * c3
+        s_flag = val(o, "S_Flag", 0)
+        if s_flag not in (0, 1, 2, 3):
+            p = pos(o, "S_Flag")
+            I("RX501", p[0], p[1], "/FAIL/BIQUAD %d: S_Flag not 0..3" % o["id"])
+        inst = val(o, "Inst_start", 0.0)
+        s3 = s_flag == 3 and 0 < inst < c4
+        icoup, dcrit = val(o, "ICOUP", 0), min(max(val(o, "DCRIT", 0.0), 0.0), 1.0)
+        if icoup == 2 and not s3:
+            icoup = 0
+        if icoup != 0:
+            p = pos(o, "ICOUP")
+            I("RX510", p[0], p[1], "/FAIL/BIQUAD %d: ICOUP (softening)" % o["id"])
+        elif dcrit > 0 and val(o, "ICOUP", 0) == 0:
+            p = pos(o, "DCRIT")
+            I("RX510", p[0], p[1], "/FAIL/BIQUAD %d: DCRIT > 0 (softening)" % o["id"])
+        if val(o, "fct_IDel", 0) != 0 and val(o, "Ireg", 0) > 1:
+            p = pos(o, "Ireg")
+            I("RX510", p[0], p[1], "/FAIL/BIQUAD %d: Ireg > 1" % o["id"])
+        if val(o, "P_thickfail", 0.0) < 0:
+            p = pos(o, "P_thickfail")
+            I("RX510", p[0], p[1], "/FAIL/BIQUAD %d: P_thickfail < 0 not implemented by radx" % o["id"])
+        need(o, "fct_IDel", functs, "function")
+        solid = any(("/BRICK" in kinds or "/TETRA4" in kinds) and pid in parts
+                    and val(parts[pid], "mat_ID") == o["id"] for pid, kinds in part_kind.items())
+        if solid and val(o, "fct_IDel", 0) != 0:
+            p = pos(o, "fct_IDel")
+            I("RX510", p[0], p[1], "/FAIL/BIQUAD %d: size function on solids" % o["id"])
+
 
 
 def loads(tables):

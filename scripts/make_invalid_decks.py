@@ -1190,6 +1190,93 @@ def _():
         [("RX401", "FT_KW")]
 
 
+def fail_biquad(mid=1, tag="FB", **kw):
+    """/FAIL/BIQUAD/mid (tag FB) with C1..C5 given (S_Flag 2) unless the values say otherwise, before
+    AFTER_MATS."""
+    values = dict(C1=0.9, C2=0.45, C3=0.3, C4=0.2, C5=0.35, P_thickfail=0.0, M_Flag=0, S_Flag=0, Inst_start=0.0)
+    values.update(kw)
+    return block(tag, "/FAIL/BIQUAD", mid, **values)
+
+
+def size_function():
+    return funct_rows(8, [(0.0, 1.2), (10.0, 0.8)], "Element size factor", tag="F8")
+
+
+@fault("fail_biquad_on_elastic")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_biquad(2))
+    return d, "/FAIL/BIQUAD/2 on the elastic /MAT/LAW1/2 (radx: laws 2 and 36 only)", [("RX510", "FB_KW")]
+
+
+@fault("fail_biquad_s_flag_range")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_biquad(S_Flag=5))
+    return d, "/FAIL/BIQUAD/1 S_Flag = 5 (accepted: 0 to 3)", [("RX501", "FB.S_Flag")]
+
+
+@fault("fail_biquad_softening")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_biquad(ICOUP=1, DCRIT=0.5, EXP=2.0))
+    return d, "/FAIL/BIQUAD/1 ICOUP = 1 (stress softening from DCRIT)", [("RX510", "FB.ICOUP")]
+
+
+@fault("fail_biquad_necking_softening")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_biquad(S_Flag=3, Inst_start=0.1, ICOUP=2, EXP=2.0))
+    return d, ("/FAIL/BIQUAD/1 ICOUP = 2 with S_Flag 3 (stress softening from the necking instability)"), \
+        [("RX510", "FB.ICOUP")]
+
+
+@fault("fail_biquad_dcrit")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_biquad(DCRIT=0.5))
+    return d, "/FAIL/BIQUAD/1 DCRIT = 0.5 with ICOUP 0 (Radioss then softens with ICOUP 1)", \
+        [("RX510", "FB.DCRIT")]
+
+
+@fault("fail_biquad_ireg")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_biquad(Ireg=2, fct_IDel=8, EI_ref=1.0) + size_function())
+    return d, "/FAIL/BIQUAD/1 Ireg = 2 (the size factor weighted by the triaxiality)", [("RX510", "FB.Ireg")]
+
+
+@fault("fail_biquad_negative_thickness")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_biquad(P_thickfail=-0.5))
+    return d, "/FAIL/BIQUAD/1 P_thickfail < 0 (a fraction of failed points)", [("RX510", "FB.P_thickfail")]
+
+
+@fault("fail_biquad_missing_size_function")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_biquad(fct_IDel=98, EI_ref=1.0))
+    return d, "/FAIL/BIQUAD/1 fct_IDel = 98 (element size factor) names no /FUNCT", [("RX402", "FB.fct_IDel")]
+
+
+@fault("fail_biquad_solid_size")
+def _():
+    d = base()
+    d.update("PART2", mat_ID=1)
+    d.insert_before("AFTER_MATS", fail_biquad(fct_IDel=8, EI_ref=1.0) + size_function())
+    return d, "/FAIL/BIQUAD/1 with an element size function on the brick's part (radx: shells only)", \
+        [("RX510", "FB.fct_IDel")]
+
+
+@fault("fail_biquad_twice")
+def _():
+    d = base()
+    d.insert_before("AFTER_MATS", fail_tab() + fail_biquad())
+    return d, "/FAIL/TAB and /FAIL/BIQUAD on /MAT/PLAS_JOHNS/1 (one failure model per material)", \
+        [("RX401", "FB_KW")]
+
+
 @fault("funct_not_increasing")
 def _():
     d = base()

@@ -15,6 +15,8 @@ Decks (units Mg, mm, s: MPa, N, mJ):
   brittle_strip    a /MAT/PLAS_BRIT (law 27) strip pulled until its crack opens and its elements are deleted
   ringing_strip    a cantilever strip ringing after a tip pulse, on the nodal time step of /DT/NODA
   fail_tab_strip   a /MAT/PLAS_TAB strip with /FAIL/TAB pulled until its shells fail and are deleted
+  fail_biquad_strip  a /MAT/PLAS_JOHNS strip of shells and bar of bricks with /FAIL/BIQUAD pulled until they fail
+  fail_biquad_neck   a strip in plane strain deleted by /FAIL/BIQUAD's necking instability (S_Flag 3)
   rubber_block     a /MAT/OGDEN (law 42) block stretched to twice its length and back
   spring_beam      a heavy node on a TYPE13 beam-type spring (/PROP/SPR_BEAM) swinging as a cantilever
   truss_bar        two truss bars (laws 1 and 2) pulled from a clamp: the wave force and the yield force
@@ -1393,6 +1395,245 @@ internal energy stops growing. `/TH/PART/1` holds the strip's internal energy an
     return run, d, e, readme, ref
 
 
+# DP600 ratios of /FAIL/BIQUAD's M_Flag 2 (C1, C2, C4, C5 over C3): OpenRadioss biquad_coefficients.F.
+FBQ = dict(L=100.0, W=20.0, NX=10, NY=2, T=1.0, BAR=10.0, NB=2, Y_BAR=40.0, RHO=7.85e-9, E=210000.0, NU=0.3,
+           A=300.0, B=1000.0, N=1.0, C3=0.08, M_FLAG=2, RATIOS=(4.3, 1.4, 0.6, 1.6), V=1000.0, T_STOP=10e-3)
+
+
+def biquad_failure_time(p):
+    """Closed form of the failure of a bar pulled at V by its end in uniaxial stress: the point fails when
+    eps_p = C3 (eta = 1/3, D = eps_p / C3); the logarithmic strain is then C3 + sigma / E with sigma = A + B C3^N,
+    reached when L exp(eps) = L + V t."""
+    sig = p["A"] + p["B"] * p["C3"] ** p["N"]
+    eps = p["C3"] + sig / p["E"]
+    return p["L"] * (math.exp(eps) - 1.0) / p["V"], eps, sig
+
+
+def fail_biquad_strip():
+    p = FBQ
+    run = "FAIL_BIQUAD_STRIP"
+    nx, ny, L, W, h = p["NX"], p["NY"], p["L"], p["W"], p["BAR"]
+    nodes = grid_nodes(1, (0.0, 0.0, 0.0), (L / nx, 0, 0), (0, W / ny, 0), nx, ny)
+    shells = grid_shells(1, 1, nx, ny)
+    root = [1 + (nx + 1) * j for j in range(ny + 1)]
+    tip = [1 + nx + (nx + 1) * j for j in range(ny + 1)]
+    nb = p["NB"]
+    bnodes, bricks, bid = box_mesh(1001, 1001, (0.0, p["Y_BAR"], 0.0), (L, h, h), (nx, nb, nb))
+    d = starter(run, "Strip and bar with /FAIL/BIQUAD: pulled until their points fail at eps_p = C3", [
+        "Sample deck: /MAT/PLAS_JOHNS (law 2) and /FAIL/BIQUAD in uniaxial tension (triaxiality 1/3).",
+        "Units Mg, mm, s (MPa, N, mJ). A %g x %g mm strip of shells, %g mm thick (part 1)," % (L, W, p["T"]),
+        "and a %g x %g x %g mm bar of bricks (part 2), each held along X at x = 0" % (L, h, h),
+        "and pulled at %g mm/s at x = %g." % (p["V"], L)])
+    d.rows("/NODE", nodes + bnodes)
+    d.ruler()
+    d.rows("/SHELL", shells, ident=1)
+    d.rows("/BRICK", bricks, ident=2)
+    d.ruler()
+    d.card("/PART", 1, "Strip", prop_ID=1, mat_ID=1, subset_ID=0, Thick=0.0)
+    d.card("/PART", 2, "Bar", prop_ID=2, mat_ID=1, subset_ID=0, Thick=0.0)
+    d.comment("Five points through the thickness, Iplas 1 (Newton return)")
+    prop_shell(d, 1, "Strip shell %g mm" % p["T"], p["T"], 5)
+    prop_solid_defaults(d, 2, "Bar solid")
+    mat_jc(d, 1, "Steel (Johnson-Cook with linear hardening)", p["RHO"], p["E"], p["NU"], p["A"], p["B"], p["N"])
+    d.comment("C3 = %g in uniaxial tension; M_Flag %d (DP600) sets C1, C2, C4, C5" % (p["C3"], p["M_FLAG"]),
+              "to %s times C3; S_Flag 0 (2: plane strain the minimum);" % ", ".join(g(r) for r in p["RATIOS"]),
+              "P_thickfail 0 (1e-6: the first failed point deletes the shell)")
+    d.card("/FAIL/BIQUAD", 1, C1=0.0, C2=0.0, C3=p["C3"], C4=0.0, C5=0.0, P_thickfail=0.0, M_Flag=p["M_FLAG"],
+           S_Flag=0, Inst_start=0.0)
+    d.ruler()
+    pulled_strip_conditions(d, root, tip, nodes, L, p["V"], 3)
+    d.card("/GRNOD/NODE", 5, "Bar root (x = 0)", ids=[bid(0, j, k) for k in range(nb + 1) for j in range(nb + 1)])
+    d.card("/GRNOD/NODE", 6, "Bar end (x = %g)" % L, ids=[bid(nx, j, k) for k in range(nb + 1) for j in range(nb + 1)])
+    d.card("/GRNOD/NODE", 7, "Bar root corner at y = %g and z = 0" % p["Y_BAR"], ids=[bid(0, 0, 0)])
+    d.card("/GRNOD/NODE", 8, "Bar root corner at y = %g and z = 0" % (p["Y_BAR"] + h), ids=[bid(0, nb, 0)])
+    d.card("/BCS", 4, "Bar root held along X", Tra_rot=rc.bcs_code("100", "000"), skew_ID=0, grnod_ID=5)
+    d.card("/BCS", 5, "Bar: no rigid motion along Y and Z", Tra_rot=rc.bcs_code("011", "000"), skew_ID=0, grnod_ID=7)
+    d.card("/BCS", 6, "Bar: no rotation about X", Tra_rot=rc.bcs_code("001", "000"), skew_ID=0, grnod_ID=8)
+    d.card("/IMPVEL", 2, "Bar end pulled along +X", fill=0, funct_IDT=3, Dir="X", skew_ID=0, sensor_ID=0,
+           grnod_ID=6, frame_ID=0, Icoor=0, Ascale_x=0.0, Fscale_y=p["V"], Tstart=0.0, Tstop=0.0)
+    d.ruler()
+    d.card("/TH/PART", 1, "Strip and bar energies", variables=["DEF"], ids=[1, 2])
+    d.ruler()
+    d.raw("/END")
+    e = engine(run, p["T_STOP"], 1e-5, 5e-4, ["VONM", "EPSP"], ["VEL", "DISP"],
+               ["Run to %g s: past the failure of the strip and the bar." % p["T_STOP"]], print_every=-200)
+    return run, d, e
+
+
+def fail_biquad_strip_deck():
+    run, d, e = fail_biquad_strip()
+    p = FBQ
+    t_f, eps_f, sig_f = biquad_failure_time(p)
+    c = [r * p["C3"] for r in p["RATIOS"]]
+    readme = f"""# Strip and bar with /FAIL/BIQUAD pulled apart
+
+`{run}_0000.rad` (starter, format 2026) and `{run}_0001.rad` (engine), generated by `{GENERATOR}`
+(edit the script and regenerate). Units: **Mg, mm, s** (MPa, N, mJ).
+
+Part 1: a {g(p['L'])} x {g(p['W'])} mm strip of {p['NX']} x {p['NY']} shells, {g(p['T'])} mm thick (five points,
+Iplas 1). Part 2: a {g(p['L'])} x {g(p['BAR'])} x {g(p['BAR'])} mm bar of {p['NX']} bricks (Isolid 1). Each is held
+along X at x = 0 and pulled at {g(p['V'])} mm/s at x = {g(p['L'])}, its sides free: uniaxial stress. Material
+`/MAT/PLAS_JOHNS/1`: E {g(p['E'])} MPa, nu {p['NU']}, yield {g(p['A'])} + {g(p['B'])} eps_p, no rate term.
+Failure `/FAIL/BIQUAD/1`: C3 = {g(p['C3'])}, M_Flag {p['M_FLAG']} (DP600: C1 C2 C4 C5 =
+{', '.join(g(x) for x in c)}), S_Flag 2 (the default), P_thickfail 1e-6 (the default: the first failed point
+deletes the shell).
+
+## Expected physics
+
+Uniaxial stress has the triaxiality 1/3, where the curve gives eps_f = C3 = {g(p['C3'])}; the damage
+D = eps_p / C3 reaches 1 at eps_p = C3. The stress is then sigma = {g(sig_f)} MPa and the logarithmic strain
+C3 + sigma / E = {g(eps_f, 5)}, reached when {g(p['L'])} exp(eps) = {g(p['L'])} + {g(p['V'])} t: at
+t_f = {g(t_f * 1e3, 5)} ms (the strain rate is uniform once the first waves have crossed the bar, a few
+microseconds). Each shell is deleted in the cycle its points fail; each brick starts its deletion (OFF 0.8, then
+the decay). The internal energy stops growing once the elements are gone. `/TH/PART/1` holds the energies of both
+parts. The regression test "FAIL/BIQUAD sample deck" (tests/unit/solver/materials/test_fail_biquad.cpp) runs the
+deck and checks the failed points' plastic strain (C3 within 1 %) and the first failure times (t_f within 0.5 %).
+
+The bar has two bricks across (10 x 5 x 5 mm bricks): with one 10 mm cube across, the one-point bricks of this
+pulled bar went unstable in the first cycles in radx and in OpenRadioss alike, with and without the failure model
+(a lone-column mode of the mesh, not of /FAIL/BIQUAD).
+
+## Compared with OpenRadioss
+
+The same two files run by OpenRadioss (its starter and engine, 1 thread), against radx when the deck was written:
+
+| | closed form | OpenRadioss | radx |
+|---|---|---|---|
+| first shell point failure (ms) | {g(t_f * 1e3, 5)} | 8.5058 (shell 18, its five layers) | 8.5058 |
+| first brick failure (ms) | {g(t_f * 1e3, 5)} | 8.5151 (bricks 1010, 1020, ...) | 8.5154 |
+| plastic strain of a failed point | {g(p['C3'])} | - | 0.07997 (shell), 0.0800 (brick) |
+| shells / bricks failed by 10 ms | | 6 / 12 | 6 / 12 |
+| internal energy at cycle 8400 (5.906 ms, mJ) | | 2.228e5 | 2.228e5 |
+| internal energy at 8.251 ms (mJ) | | 3.192e5 | 3.192e5 |
+| internal energy at 9.895 ms (mJ) | | 3.284e5 | 3.289e5 |
+| kinetic energy at 9.895 ms (mJ) | | 1373 | 1041 |
+| external work at 9.895 ms (mJ) | | 3.304e5 | 3.304e5 |
+| cycles to 10 ms | | 14355 | 14354 |
+| first parabola C2 + b1 eta + a1 eta^2: a1, b1 | 0.9, -0.396 | 0.9000010, -0.3960000 | 0.9, -0.396 |
+| second parabola a0 + b2 eta + a2 eta^2: a2, b2, a0 | | 3.080529, -2.936526, 0.716561 | 3.080492, -2.936492, 0.716554 |
+
+Both fail the points about 0.2 % before the closed form (the strain along the pulled strip leads the uniform value
+by the wave transit). After the failure the two runs ring down differently (kinetic energy 1373 and 1041 mJ of a
+3.3e5 mJ balance): OpenRadioss's energy error drifts to -0.2 %, radx's stays at 0.0 %. OpenRadioss's listing
+gives C1 = 0.3440000152588 (single-precision ratio 4.3), radx 0.344; its parabolas are fitted with the
+triaxialities rounded (0.57735, squares to six digits), radx's in closed form: the coefficients differ in the fifth
+digit; OpenRadioss's curve misses C3 by 1e-7 (first parabola) and 4e-7 (second), C4 by 3e-7 and C5 by 1.4e-6.
+"""
+    ref = ref_text(run, [
+        ("cycles", "0.02", "0", "2 % of the cycles"),
+        ("energy.error_percent", "0", "1", "balance within 1 point of the recorded value"),
+        ("th:part/1:1:IE@0.006", "0.01", "0", "strip internal energy while it hardens, within 1 %"),
+        ("th:part/1:2:IE@0.006", "0.01", "0", "bar internal energy while it hardens, within 1 %"),
+        ("th:part/1:1:IE@0.01", "0.01", "0", "strip internal energy after the failure, within 1 %"),
+    ])
+    return run, d, e, readme, ref
+
+
+FBN = dict(L=100.0, W=20.0, NX=10, NY=2, T=1.0, RHO=7.85e-9, E=210000.0, NU=0.3, A=300.0, B=1000.0, N=1.0,
+           C=(0.6, 0.3, 0.2, 0.12, 0.25), INST=0.06, V=1000.0, T_STOP=8e-3)
+
+
+def fail_biquad_neck():
+    p = FBN
+    run = "FAIL_BIQUAD_NECK"
+    nx, ny, L, W = p["NX"], p["NY"], p["L"], p["W"]
+    nodes = grid_nodes(1, (0.0, 0.0, 0.0), (L / nx, 0, 0), (0, W / ny, 0), nx, ny)
+    shells = grid_shells(1, 1, nx, ny)
+    root = [1 + (nx + 1) * j for j in range(ny + 1)]
+    tip = [1 + nx + (nx + 1) * j for j in range(ny + 1)]
+    d = starter(run, "Strip in plane strain with /FAIL/BIQUAD S_Flag 3: deleted by the necking instability", [
+        "Sample deck: /MAT/PLAS_JOHNS (law 2) and /FAIL/BIQUAD with the necking instability (S_Flag 3).",
+        "Units Mg, mm, s (MPa, N, mJ). A %g x %g mm strip of shells, %g mm thick, every node held along Y"
+        % (L, W, p["T"]),
+        "(plane strain: triaxiality towards 1/sqrt(3)), held along X at x = 0,",
+        "pulled at %g mm/s at x = %g." % (p["V"], L)])
+    d.rows("/NODE", nodes)
+    d.ruler()
+    d.rows("/SHELL", shells, ident=1)
+    d.ruler()
+    d.card("/PART", 1, "Strip", prop_ID=1, mat_ID=1, subset_ID=0, Thick=0.0)
+    d.comment("Five points through the thickness, Iplas 1 (Newton return)")
+    prop_shell(d, 1, "Strip shell %g mm" % p["T"], p["T"], 5)
+    mat_jc(d, 1, "Steel (Johnson-Cook with linear hardening)", p["RHO"], p["E"], p["NU"], p["A"], p["B"], p["N"])
+    d.comment("C1..C5 given (M_Flag 0); S_Flag 3: the failure curve of S_Flag 2 (its minimum C4 = %g at plane"
+              % p["C"][3],
+              "strain) and an instability curve with its minimum Inst_start = %g there; a shell goes once all" % p["INST"],
+              "its points have reached the instability")
+    c1, c2, c3, c4, c5 = p["C"]
+    d.card("/FAIL/BIQUAD", 1, C1=c1, C2=c2, C3=c3, C4=c4, C5=c5, P_thickfail=0.0, M_Flag=0, S_Flag=3,
+           Inst_start=p["INST"])
+    d.ruler()
+    d.card("/GRNOD/NODE", 1, "Root (x = 0)", ids=root)
+    d.card("/GRNOD/NODE", 2, "Pulled end (x = %g)" % L, ids=tip)
+    d.card("/GRNOD/NODE", 4, "Every node", ids=[n[0] for n in nodes])
+    d.card("/BCS", 1, "Root held along X", Tra_rot=rc.bcs_code("100", "000"), skew_ID=0, grnod_ID=1)
+    d.card("/BCS", 3, "Plane strain strip: no Y and no Z and no rotation", Tra_rot=rc.bcs_code("011", "111"),
+           skew_ID=0, grnod_ID=4)
+    d.rows("/FUNCT", [(0.0, 1.0), (1.0, 1.0)], ident=3, title="Constant 1")
+    d.card("/IMPVEL", 1, "End pulled along +X", fill=0, funct_IDT=3, Dir="X", skew_ID=0, sensor_ID=0,
+           grnod_ID=2, frame_ID=0, Icoor=0, Ascale_x=0.0, Fscale_y=p["V"], Tstart=0.0, Tstop=0.0)
+    d.ruler()
+    d.card("/TH/PART", 1, "Strip energies", variables=["DEF"], ids=[1])
+    d.ruler()
+    d.raw("/END")
+    e = engine(run, p["T_STOP"], 1e-5, 5e-4, ["VONM", "EPSP"], ["VEL", "DISP"],
+               ["Run to %g s: past the instability of the strip." % p["T_STOP"]], print_every=-200)
+    return run, d, e
+
+
+def fail_biquad_neck_deck():
+    run, d, e = fail_biquad_neck()
+    p = FBN
+    nu = p["NU"]
+    eta_y = (1 + nu) / (3 * math.sqrt(1 - nu + nu * nu))
+    s = 1 / math.sqrt(3)
+    eps_i_y = p["INST"] + (p["C"][2] - p["INST"]) * ((eta_y - s) / (1 / 3 - s)) ** 2
+    readme = f"""# Strip in plane strain with /FAIL/BIQUAD's necking instability
+
+`{run}_0000.rad` (starter, format 2026) and `{run}_0001.rad` (engine), generated by `{GENERATOR}`
+(edit the script and regenerate). Units: **Mg, mm, s** (MPa, N, mJ).
+
+A {g(p['L'])} x {g(p['W'])} mm strip of {p['NX']} x {p['NY']} shells, {g(p['T'])} mm thick (five points, Iplas 1),
+every node held along Y (plane strain), held along X at x = 0 and pulled at {g(p['V'])} mm/s at x = {g(p['L'])}.
+Material `/MAT/PLAS_JOHNS/1`: E {g(p['E'])} MPa, nu {nu}, yield {g(p['A'])} + {g(p['B'])} eps_p. Failure
+`/FAIL/BIQUAD/1`: C1..C5 = {', '.join(g(c) for c in p['C'])}, S_Flag 3 with Inst_start = {g(p['INST'])}.
+
+## Expected physics
+
+In plane strain the plane-stress triaxiality rises from (1 + nu) / (3 sqrt(1 - nu + nu^2)) = {g(eta_y)} at first
+yield (elastic syy = nu sxx) towards 1/sqrt(3) (syy = sxx / 2 in plastic flow). There the failure curve's minimum is
+C4 = {g(p['C'][3])}, and the instability curve's Inst_start = {g(p['INST'])} (docs/theory/failure-biquad.md). The
+instability damage D_i = integral of d_eps_p / eps_i(eta) reaches 1 at a plastic strain between Inst_start and
+eps_i({g(eta_y)}) = {g(eps_i_y)}; each shell is deleted at once in the cycle all five of its points have, well before
+its points fail (at about C4). Without S_Flag 3 (S_Flag 2) the strip would hold until about C4. The regression
+test "FAIL/BIQUAD sample deck fail_biquad_neck" (tests/unit/solver/materials/test_fail_biquad.cpp) runs the deck
+and checks that every deleted shell's points have reached the instability at a plastic strain in those bounds and
+that none of them failed.
+
+## Compared with OpenRadioss
+
+The same two files run by OpenRadioss (its starter and engine, 1 thread), against radx when the deck was written:
+
+| | OpenRadioss | radx |
+|---|---|---|
+| first shells deleted by the instability (ms) | 5.5456 (shells 4, 5, 6, ...: "INSTABILITY REACHED") | 5.5456 |
+| shells deleted by 8 ms | 12 | 12 |
+| plastic strain of their points | - | 0.0602 to 0.0610 (damage of failure up to 0.50) |
+| internal energy at cycle 2000 (3.480 ms, mJ) | 2.461e4 | 2.461e4 |
+| internal energy at cycle 3600 (6.264 ms, mJ) | 4.036e4 | 4.036e4 |
+| kinetic energy at cycle 3600 (mJ) | 166.2 | 166.2 |
+| external work at cycle 3600 (mJ) | 4.052e4 | 4.052e4 |
+| cycles to 8 ms | 4599 | 4598 |
+"""
+    ref = ref_text(run, [
+        ("cycles", "0.02", "0", "2 % of the cycles"),
+        ("energy.error_percent", "0", "1", "balance within 1 point of the recorded value"),
+        ("th:part/1:1:IE@0.003", "0.01", "0", "internal energy while the strip hardens, within 1 %"),
+        ("th:part/1:1:IE@0.008", "0.01", "0", "internal energy after the instability, within 1 %"),
+    ])
+    return run, d, e, readme, ref
+
+
 # ---------------------------------------------------------------------------------------------------
 # 8. A rubber block stretched to twice its length and back (/MAT/OGDEN)
 
@@ -1913,6 +2154,7 @@ DECKS = {"taylor_bar": taylor_bar_deck, "bar_rwall": bar_rwall_deck, "imposed_lo
          "mixed_idel": mixed_idel_deck, "old_layout_2019": old_layout_2019_deck,
          "perforation_tab": perforation_tab_deck, "brittle_strip": brittle_strip_deck,
          "ringing_strip": ringing_strip_deck, "fail_tab_strip": fail_tab_strip_deck,
+         "fail_biquad_strip": fail_biquad_strip_deck, "fail_biquad_neck": fail_biquad_neck_deck,
          "rubber_block": rubber_block_deck, "spring_beam": spring_beam_deck,
          "foam_block": foam_block_deck, "truss_bar": truss_bar_deck, "beam_cantilever": beam_cantilever_deck}
 

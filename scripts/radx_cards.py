@@ -301,6 +301,15 @@ LAYOUTS = {
         Card(i("fct_IDel"), r("Fscale_el"), r("EI_ref")),
         Card(i("fct_IDt"), r("FscaleT")),
         title=False),
+    # /FAIL/BIQUAD: the radioss2017..2026 layouts (size function from 2018, Ireg 2026, the softening card 2024,
+    # FAILIP 2025); the R1 R2 R4 R5 card only with M_Flag 99
+    "/FAIL/BIQUAD": Layout(
+        Card(r("C1"), r("C2"), r("C3"), r("C4"), r("C5")),
+        Card(r("P_thickfail"), i("M_Flag"), i("S_Flag"), r("Inst_start"), i("Ireg", col=61, since=2026),
+             i("fct_IDel", col=71, since=2018), r("EI_ref", col=81, since=2018)),
+        Card(r("R1"), r("R2"), r("R4"), r("R5"), when=lambda v: _int(v.get("M_Flag")) == 99),
+        Card(i("ICOUP", col=11), r("DCRIT"), r("EXP"), i("FAILIP", since=2025), since=2024),
+        title=False),
     # --- groups and surfaces (id lists)
     # A set's clauses: a clause word in columns 1-10 (blank: the clause above goes on), then its ids.
     "/SET/GENERAL": Layout(rows=SET_CLAUSE),

@@ -237,6 +237,10 @@ RADX_SCHEMA(FailTab, RADX_FIELD(on), RADX_FIELD(fail_id), RADX_FIELD(ifail_sh), 
             RADX_FIELD(function), RADX_FIELD(scale), RADX_FIELD(rate), RADX_FIELD(size_function_id),
             RADX_FIELD(size_function), RADX_FIELD(size_scale), RADX_FIELD(el_ref),
             RADX_FIELD(temp_function_id), RADX_FIELD(temp_factor));
+RADX_SCHEMA(FailBiquad, RADX_FIELD(on), RADX_FIELD(fail_id), RADX_FIELD(c1), RADX_FIELD(c2), RADX_FIELD(c3),
+            RADX_FIELD(c4), RADX_FIELD(c5), RADX_FIELD(m_flag), RADX_FIELD(s_flag), RADX_FIELD(inst_start),
+            RADX_FIELD(p_thickfail), RADX_FIELD(size_function_id), RADX_FIELD(size_function),
+            RADX_FIELD(el_ref));
 RADX_SCHEMA(Material, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(law), RADX_FIELD(keyword),
             RADX_FIELD(rho), RADX_FIELD(rho_ref), RADX_FIELD(young), RADX_FIELD(poisson), RADX_FIELD(shear),
             RADX_FIELD(bulk), RADX_FIELD(iflag), RADX_FIELD(flag_vp), RADX_FIELD(icc), RADX_FIELD(fsmooth),
@@ -244,7 +248,7 @@ RADX_SCHEMA(Material, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(law), RADX_F
             RADX_FIELD(sig_y_input), RADX_FIELD(uts), RADX_FIELD(e_uts), RADX_FIELD(c), RADX_FIELD(eps_dot_0),
             RADX_FIELD(f_cut), RADX_FIELD(chard), RADX_FIELD(p_min), RADX_FIELD(m_temp), RADX_FIELD(t_melt),
             RADX_FIELD(rho_cp), RADX_FIELD(t_ref), RADX_FIELD(t_max), RADX_FIELD(tab), RADX_FIELD(fail_jc),
-            RADX_FIELD(fail_tab), RADX_FIELD(brit), RADX_FIELD(ogden), RADX_FIELD(foam));
+            RADX_FIELD(fail_tab), RADX_FIELD(fail_bq), RADX_FIELD(brit), RADX_FIELD(ogden), RADX_FIELD(foam));
 RADX_SCHEMA(ShellProperty, RADX_FIELD(ishell), RADX_FIELD(ismstr), RADX_FIELD(ish3n), RADX_FIELD(idrill),
             RADX_FIELD(ipinch), RADX_FIELD(n_ip), RADX_FIELD(ithick), RADX_FIELD(iplas), RADX_FIELD(ipos),
             RADX_FIELD(p_thick_fail), RADX_FIELD(hm), RADX_FIELD(hf), RADX_FIELD(hr), RADX_FIELD(dm),

@@ -315,6 +315,16 @@ void write_materials(std::ostream& os, const model::Model& m) {
         os << "      temperature factor (constant function " << f.temp_function_id << "): " << f.temp_factor
            << '\n';
     }
+    if (mat.fail_bq.on) {
+      const auto& f = mat.fail_bq;
+      os << "    /FAIL/BIQUAD: eps_f(triaxiality) through C1 " << f.c1 << " (-1/3)  C2 " << f.c2
+         << " (0)  C3 " << f.c3 << " (1/3)  C4 " << f.c4 << " (1/sqrt 3)  C5 " << f.c5 << " (2/3)  M_Flag "
+         << f.m_flag << "  S_Flag " << f.s_flag << "  P_thickfail " << f.p_thickfail << '\n';
+      if (f.s_flag == 3) os << "      necking instability (shells): Inst_start " << f.inst_start << '\n';
+      if (f.size_function_id != 0)
+        os << "      element size factor: function " << f.size_function_id << " of L0 / " << f.el_ref
+           << " (L0 the shell's length at t = 0)\n";
+    }
   }
 }
 

@@ -386,6 +386,16 @@ void ModelBuilder::check_shell_only_laws() {
                        "cycle; radx implements the size function on shells only");
       }
     }
+    // /FAIL/BIQUAD on bricks and tetrahedra: OpenRadioss takes the size factor from the length of the first
+    // cycle the solid is updated in; radx keeps the size factor on shells only.
+    if (mat.fail_bq.on && solid_part[p] && mat.fail_bq.size_function_id != 0) {
+      for (const auto& rec : deck_.records)
+        if (rec.decl->path == "/FAIL/BIQUAD" && rec.id == mat.id)
+          error_at(rec, "fct_IDel", Diag::PhysicsNotImplemented,
+                   "an element size function on part " + std::to_string(part.id) +
+                       " (bricks or tetrahedra): radx implements /FAIL/BIQUAD's size factor on shells only; "
+                       "accepted on solids: fct_IDel 0");
+    }
     if (mat.law != model::MaterialLaw::PlasBrit) continue;
     const auto& prop = m_.properties[static_cast<std::size_t>(part.property)];
     for (const auto& rec : deck_.records) {

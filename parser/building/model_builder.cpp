@@ -337,6 +337,7 @@ void ModelBuilder::build_materials() {
   }
   build_failure_models();
   build_fail_tab();
+  build_fail_biquad();
 }
 
 // /MAT/VOID (law 0), read as OpenRadioss hm_read_mat00.F does: every value may be blank. The density gives
@@ -476,10 +477,12 @@ model::Material* ModelBuilder::failure_material(const KeywordRecord& r, std::str
                      "): radx implements it on /MAT/PLAS_JOHNS (law 2) and /MAT/PLAS_TAB (law 36) only");
     return nullptr;
   }
-  if (mat.fail_jc.on || mat.fail_tab.on) {
+  if (mat.fail_jc.on || mat.fail_tab.on || mat.fail_bq.on) {
     diags_.error(Diag::DuplicateId, at(r.pos), about(r),
                  "material " + std::to_string(r.id) + " already has a " +
-                     (mat.fail_jc.on ? "/FAIL/JOHNSON" : "/FAIL/TAB") +
+                     (mat.fail_jc.on    ? "/FAIL/JOHNSON"
+                      : mat.fail_tab.on ? "/FAIL/TAB"
+                                        : "/FAIL/BIQUAD") +
                      "; radx takes one failure model per material");
     return nullptr;
   }
@@ -1190,6 +1193,7 @@ model::Model ModelBuilder::build() {
   resolve_plas_tab_functions();
   resolve_foam_tab_functions();
   resolve_fail_tab_functions();
+  resolve_fail_biquad_functions();
   resolve_spring_functions();
   build_element_groups();  // before surfaces and node groups, which are built from element groups
   build_sets();            // after the element groups: a set is one where no group has its id

@@ -52,10 +52,14 @@ class ModelBuilder {
   void read_plas_tab(const KeywordRecord& r, model::Material& mat);   // /MAT/PLAS_TAB's cards
   void read_plas_brit(const KeywordRecord& r, model::Material& mat);  // /MAT/PLAS_BRIT's cards
   model::Material* failure_material(const KeywordRecord& r, std::string_view keyword);  // or nullptr
-  void build_failure_models();                                       // /FAIL/JOHNSON, after the materials
-  void resolve_plas_tab_functions();                                 // after the functions
-  void build_fail_tab();                                             // /FAIL/TAB, after the materials
-  void resolve_fail_tab_functions();                                 // its functions, after the functions
+  void build_failure_models();        // /FAIL/JOHNSON, after the materials
+  void resolve_plas_tab_functions();  // after the functions
+  void build_fail_tab();              // /FAIL/TAB, after the materials
+  void resolve_fail_tab_functions();  // its functions, after the functions
+  void build_fail_biquad();           // /FAIL/BIQUAD (build_fail_biquad.cpp)
+  void resolve_biquad_strains(const KeywordRecord& r, model::FailBiquad& f);  // C1..C5 after M_Flag
+  void resolve_biquad_options(const KeywordRecord& r, model::FailBiquad& f);  // S_Flag, softening
+  void resolve_fail_biquad_functions();                                       // its size function
   void read_ogden(const KeywordRecord& r, model::Material& mat);     // /MAT/OGDEN (build_hyperelastic.cpp)
   void read_foam_tab(const KeywordRecord& r, model::Material& mat);  // /MAT/FOAM_TAB (build_foam_tab.cpp)
   void resolve_foam_tab_functions();  // build_foam_tab.cpp: the curves' ids, their checks

@@ -940,6 +940,65 @@ void add_plas_tab_and_failure(std::vector<KeywordDecl>& t) {
                              {I("fail_ID", 1, 10, "failure model id (optional)").refs(IdKind::Other)}));
     t.push_back(std::move(k));
   }
+  {
+    // /FAIL/BIQUAD/mat_ID[/unit_ID]: the radioss2017 to radioss2026 cfg layouts (OpenRadioss
+    // hm_read_fail_biquad.F, biquad_coefficients.F). The size function arrives in 2018, the softening card in
+    // 2024, FAILIP in 2025, Ireg in 2026.
+    KeywordDecl k =
+        kw("/FAIL/BIQUAD",
+           "biquadratic failure model of a material (failure strain by triaxiality, two parabolas)",
+           Header::IdUnit, false, "mat_ID");
+    k.id_kind = IdKind::Material;
+    k.cards = {
+        card("card 1",
+             {R("C1", 1, 20, "plastic strain at failure in simple compression (triaxiality -1/3)"),
+              R("C2", 21, 40, "plastic strain at failure in shear (triaxiality 0)"),
+              R("C3", 41, 60,
+                "plastic strain at failure in uniaxial tension (triaxiality 1/3); 0 = the M_Flag "
+                "material's"),
+              R("C4", 61, 80, "plastic strain at failure in plane strain (triaxiality 1/sqrt(3))"),
+              R("C5", 81, 100, "plastic strain at failure in equibiaxial tension (triaxiality 2/3)")}),
+        card(
+            "card 2",
+            {R("P_thickfail", 1, 20,
+               "failed fraction of the thickness that deletes the shell, kept in [1e-6, 1]; 0 = 1e-6 "
+               "(< 0, a fraction of points: refused)"),
+             I("M_Flag", 21, 30,
+               "material selector: C1, C2, C4, C5 as multiples of C3: 0 user values (all blank: mild steel), "
+               "1 mild steel, 2 HSS, 3 UHSS, 4 AA5182, 5 AA6082-T6, 6 PA6GF30, 7 PP T40, 99 R1 R2 R4 R5"),
+             I("S_Flag", 31, 40,
+               "above triaxiality 1/3: 1 the second parabola, 2 plane strain the minimum, 3 that and the "
+               "shells' necking instability from Inst_start; 0 = 2")
+                 .zero_is(2)
+                 .allow({0, 1, 2, 3}),
+             R("Inst_start", 41, 60,
+               "instability strain of S_Flag 3 (at or below 0, or at or above C4: S_Flag 2)"),
+             I("Ireg", 61, 70,
+               "element size regularisation: 1 the function of the size (2, 3 by triaxiality: "
+               "refused); 0 = 1 with a function")
+                 .versions(2026),
+             I("fct_IDel", 71, 80, "factor of eps_f by element size / EI_ref; 0 = none")
+                 .versions(2018)
+                 .refs(IdKind::Other),
+             R("EI_ref", 81, 100, "reference element size; 0 = 1")
+                 .versions(2018)
+                 .zero_is(1.0)
+                 .dims(dim::length)}),
+        card_if("card 3 (M_Flag = 99)", when_eq("M_Flag", 99),
+                {R("R1", 1, 20, "C1 / C3 (M_Flag 99)"), R("R2", 21, 40, "C2 / C3 (M_Flag 99)"),
+                 R("R4", 41, 60, "C4 / C3 (M_Flag 99)"), R("R5", 61, 80, "C5 / C3 (M_Flag 99)")}),
+        card_v("softening", 2024, kLastVersion,
+               {I("ICOUP", 11, 20, "stress softening: 0 none (1, 2: refused)"),
+                R("DCRIT", 21, 40,
+                  "damage at which the softening starts, kept in [0, 1] (> 0: ICOUP 1, refused)"),
+                R("EXP", 41, 60, "softening exponent; 0 = 1").zero_is(1.0).unused(),
+                I("FAILIP", 61, 70, "failed beam integration points before deletion (beams only)")
+                    .versions(2025)
+                    .unused()}),
+        card("failure id", {I("fail_ID", 1, 10, "failure model id (optional)").refs(IdKind::Other)}),
+    };
+    t.push_back(std::move(k));
+  }
 }
 
 // /MAT/PLAS_BRIT (law 27): Johnson-Cook plasticity of shells with a tension crack (OpenRadioss

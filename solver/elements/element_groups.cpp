@@ -24,6 +24,7 @@ void ShellGroup::allocate(int n, int points, int gauss_points, int hg_rows) {
   eps_p.assign(ng * np * G, 0.0);
   res.assign(ng * 8 * G, 0.0);
   dmg.assign(ng * np * G, 0.0);
+  dmg_inst.assign(ng * np * G, 0.0);
   fail_scale.assign(G, 1.0);
   hg.assign(static_cast<std::size_t>(hg_rows) * G, 0.0);
   nodal_force.assign(4 * 6 * G, 0.0);

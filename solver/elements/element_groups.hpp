@@ -104,6 +104,8 @@ struct ShellGroup : MaterialGroupCore {
   // shell_section.hpp takes them), kept from the last cycle as the next cycle's old resultants. Zero with a
   // zero sig; whatever writes sig outside the section update must write them too.
   GroupArray<double> res{arena};
+  // /FAIL/BIQUAD S_Flag 3: the points' instability damage, the rows of dmg ([gauss][n_points][G]).
+  GroupArray<double> dmg_inst{arena};
   GroupArray<double> fail_scale{
       arena};                      // [G] /FAIL/TAB element-size factor of eps_f (1 otherwise; set at t = 0)
   GroupArray<double> brit{arena};  // law 27 only: [gauss][n_points][kBritVars][G] crack state (allocate_brit)

@@ -1,6 +1,6 @@
-// The damage stage of every failure model (/FAIL/JOHNSON, /FAIL/TAB) at an integration point, and the point
-// updates that carry it: one stage, the models differ only in their failure strain (fail_johnson.cpp,
-// fail_tab.cpp) and in what a failed point does (FailParams).
+// The damage stage of every failure model (/FAIL/JOHNSON, /FAIL/TAB, /FAIL/BIQUAD) at an integration point,
+// and the point updates that carry it: one stage, the models differ only in their failure strain
+// (fail_johnson.cpp, fail_tab.cpp, fail_biquad.cpp) and in what a failed point does (FailParams).
 //
 // Damage, normalised d = D / Dcrit (Dcrit = 1, n = 1 for Johnson-Cook), with the stress AFTER the material
 // update of the step and d_eps_p its plastic increment:
@@ -33,6 +33,8 @@ double fail_strain(const FailParams& f, double sigma_m, double svm, double rate,
   switch (f.kind) {
     case FailKind::Johnson: return fail_jc_strain(f, sigma_m, svm, rate) * escale;
     case FailKind::Tab: return fail_tab_strain(f, sigma_m, svm, rate) * escale;
+    // OpenRadioss fail_biquad_c.F / _s.F: D += d_eps_p / max(eps_f, 1e-6).
+    case FailKind::Biquad: return std::max(fail_biquad_strain(f, sigma_m, svm) * escale, 1e-6);
     case FailKind::None: break;
   }
   return 0.0;
@@ -54,12 +56,16 @@ bool fail_accumulate(const FailParams& f, double sigma_m, double svm, double rat
 
 ShellPointResult shell_point_update_fail(const MaterialParams& p, int iplas, double rfac, double rate,
                                          double escale, double off, const double de[5], double gs,
-                                         double sig[5], double& eps_p, double& dmg) {
+                                         double sig[5], double& eps_p, double& dmg, double* dmg_inst) {
   const ShellPointResult r = shell_point_update_r(p, iplas, rfac, off, de, gs, sig, eps_p);
   if (!p.fail.on) return r;
   if (off == 1.0 && dmg < 1.0 && r.deps_p > 0) {
     const double svm = std::sqrt(std::max(0.0, shell_vm2_radial(sig[0], sig[1], sig[2])));
-    fail_accumulate(p.fail, (sig[0] + sig[1]) / 3.0, svm, rate, escale, r.deps_p, dmg);
+    const double sm = (sig[0] + sig[1]) / 3.0;
+    // /FAIL/BIQUAD S_Flag 3: the instability damage, updated before the point's own (fail_biquad_c.F).
+    if (dmg_inst != nullptr && p.fail.kind == FailKind::Biquad && p.fail.bq_s_flag == 3)
+      fail_biquad_instability(p.fail, sm, svm, escale, r.deps_p, *dmg_inst);
+    fail_accumulate(p.fail, sm, svm, rate, escale, r.deps_p, dmg);
   }
   if (dmg >= 1.0 && !p.fail.keep_failed_stress)
     for (int k = 0; k < 5; ++k) sig[k] = 0.0;

@@ -4,8 +4,9 @@
 //   G = E / 2(1 + nu),  K = E / 3(1 - 2 nu),  A11 = E / (1 - nu^2),  A12 = nu A11,
 //   c_shell = sqrt(E / rho0),  c_solid = sqrt((K + 4G/3) / rho0);
 // then each law's own constants, filled by the law's file (johnson_cook_params, plas_brit_params,
-// tab_curves_params, ogden_params, foam_params), and the failure model's (/FAIL/JOHNSON, /FAIL/TAB; their
-// cards and defaults: docs/elements-openradioss.md 6.7, fail_johnson.cpp, fail_tab.cpp).
+// tab_curves_params, ogden_params, foam_params), and the failure model's (/FAIL/JOHNSON, /FAIL/TAB,
+// /FAIL/BIQUAD; their cards and defaults: docs/elements-openradioss.md 6.7, fail_johnson.cpp, fail_tab.cpp,
+// fail_biquad.cpp).
 #include <algorithm>
 #include <cmath>
 
@@ -52,6 +53,19 @@ void set_failure_params(const model::Material& m, MaterialParams& p) {
       case 3: p.fail.solid = SolidFailMode::Keep; break;
       default: p.fail.solid = SolidFailMode::Delete; break;
     }
+  } else if (m.fail_bq.on) {
+    // A failed shell point carries no stress and the element goes at the thickness fraction P_thickfail
+    // (Ifail_sh 2's rule); a failed solid point deletes its brick.
+    const auto& f = m.fail_bq;
+    p.fail.on = true;
+    p.fail.kind = FailKind::Biquad;
+    fail_biquad_fit(f.c1, f.c2, f.c3, f.c4, f.c5, p.fail);
+    p.fail.bq_s_flag = f.s_flag;
+    p.fail.bq_inst = f.inst_start;
+    p.fail.el_ref = f.el_ref > 0 ? f.el_ref : 1.0;
+    p.fail.ifail_sh = 2;
+    p.fail.p_thick = f.p_thickfail;
+    p.fail.solid = SolidFailMode::Delete;
   }
 }
 
@@ -116,6 +130,14 @@ MaterialParams make_material_params(const model::Material& m, const std::vector<
     p.fail.n_rows = static_cast<int>(f.function.size());
     p.fail.has_size = f.size_function >= 0;
     if (p.fail.has_size) p.fail.size = view(f.size_function, f.size_scale, 0.0);
+  }
+  if (m.fail_bq.on && m.fail_bq.size_function >= 0) {
+    const auto& fn = functions[static_cast<std::size_t>(m.fail_bq.size_function)];
+    p.fail.has_size = true;
+    p.fail.size.x = fn.x.data();
+    p.fail.size.y = fn.y.data();
+    p.fail.size.n = static_cast<int>(std::min(fn.x.size(), fn.y.size()));
+    p.fail.size.scale = 1.0;
   }
   return p;
 }

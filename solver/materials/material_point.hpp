@@ -198,10 +198,12 @@ inline double brick_next_off(double off_start, bool fails) {
 // The shell point with its failure model: shell_point_update_r, then, while the element is intact (off = 1)
 // and the point alive (dmg < 1), the damage stage with the plane-stress sigma_m = (sxx + syy)/3 and svm of
 // the updated stress; a failed point (dmg >= 1) carries no stress any more (all five components zero) unless
-// the model keeps it (/FAIL/TAB Ifail_sh 3). rate: the element's strain rate; escale: its size factor.
+// the model keeps it (/FAIL/TAB Ifail_sh 3). rate: the element's strain rate; escale: its size factor;
+// dmg_inst: the point's /FAIL/BIQUAD instability damage (S_Flag 3), updated, or nullptr.
 ShellPointResult shell_point_update_fail(const MaterialParams& p, int iplas, double rfac, double rate,
                                          double escale, double off, const double de[5], double gs,
-                                         double sig[5], double& eps_p, double& dmg);
+                                         double sig[5], double& eps_p, double& dmg,
+                                         double* dmg_inst = nullptr);
 
 // Internal pieces of the law files, for material_point.cpp's dispatch (the shell section also calls law 27's
 // point directly, with the group's state rows).

@@ -127,6 +127,23 @@ struct FailTab {
   double temp_factor = 1;             // Fscale_T times that constant
 };
 
+// /FAIL/BIQUAD on a material (OpenRadioss hm_read_fail_biquad.F): the plastic strain at failure of the
+// triaxiality from two parabolas through C1..C5 at -1/3, 0, 1/3, 1/sqrt(3), 2/3; damage D += d_eps_p / eps_f,
+// the point fails at D = 1. Values as the starter resolves them (M_Flag's multiples of C3, S_Flag, the
+// clamped P_thickfail).
+struct FailBiquad {
+  bool on = false;
+  std::int64_t fail_id = 0;
+  double c1 = 0, c2 = 0, c3 = 0, c4 = 0, c5 = 0;  // after M_Flag
+  int m_flag = 0;
+  int s_flag = 2;  // 1: the second parabola above 1/3; 2: plane strain the minimum; 3: 2 and the necking
+  double inst_start = 0;              // S_Flag 3: the instability strain at plane strain, in (0, C4)
+  double p_thickfail = 1e-6;          // in [1e-6, 1]; min with the property's at run time
+  std::int64_t size_function_id = 0;  // factor of eps_f by the element size / EI_ref; 0 = none
+  std::int32_t size_function = -1;
+  double el_ref = 1;
+};
+
 // /MAT/PLAS_BRIT (law 27): the tension crack of each shell point, by direction 1 and 2 of the crack frame.
 // Defaults as OpenRadioss hm_read_mat27.F sets them for a blank or 0 field. The Johnson-Cook part (a, b, n,
 // sig_max0, c, eps_dot_0, icc, fsmooth, f_cut) is kept in Material's law-2 fields.
@@ -188,6 +205,7 @@ struct Material {
   PlasTab tab;
   FailJohnson fail_jc;
   FailTab fail_tab;
+  FailBiquad fail_bq;
   PlasBrit brit;  // law 27's crack model
   Ogden ogden;    // law 42
   FoamTab foam;   // law 70

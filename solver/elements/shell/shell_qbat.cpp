@@ -60,7 +60,7 @@ struct QbatBlock {
   double dem[4][5][kBlock], dk[4][3][kBlock];
   double for_old[4][5][kBlock], for_new[4][5][kBlock], mom_old[4][3][kBlock], mom_new[4][3][kBlock];
   double detj[4][kBlock];
-  double dthick[kBlock], w_plastic[kBlock], eps_p_max[kBlock], fail_now[kBlock];
+  double dthick[kBlock], w_plastic[kBlock], eps_p_max[kBlock], fail_now[kBlock], unstable[kBlock];
   shell_detail::SectionBlock<kBlock> sec;
 };
 
@@ -99,6 +99,7 @@ struct QbatBlock {
       for (int q = 0; q < 3; ++q) bk.dk[gp][q][j] = kap[q] * dt1;
     }
     bk.dthick[j] = bk.w_plastic[j] = bk.eps_p_max[j] = bk.fail_now[j] = 0.0;
+    bk.unstable[j] = 1.0;
   }
 }
 
@@ -139,8 +140,11 @@ struct QbatBlock {
       bk.eps_p_max[j] = std::max(bk.eps_p_max[j], sec.eps_p_max[j]);
       // Deletion at once when any Gauss point's section reaches its failure threshold.
       bk.fail_now[j] = std::max(bk.fail_now[j], sec.fail_now[j]);
+      // /FAIL/BIQUAD's instability deletes when every point of every Gauss point has reached it.
+      bk.unstable[j] = std::min(bk.unstable[j], sec.unstable[j]);
     }
   }
+  for (int j = 0; j < len; ++j) bk.fail_now[j] = std::max(bk.fail_now[j], bk.unstable[j]);
 }
 
 // Element j's energy increment over the Gauss points and its local nodal forces (none once it is deleted).

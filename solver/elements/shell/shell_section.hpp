@@ -129,6 +129,7 @@ struct SectionBlock {
   double w_plastic[B];   // plastic work increment (6.5)
   double eps_p_max[B];   // largest plastic strain over the points after the update
   double fail_now[B];    // 1: /FAIL/JOHNSON deletes the element in this cycle (next_off)
+  double unstable[B];    // 1: every point of the section reached /FAIL/BIQUAD's instability (S_Flag 3)
   double crack_fail[B];  // 1: a law-27 point passed EPS_f1 in this cycle
   // Scratch of the points that take the exact update (shell_point_update_r).
   double old[kPassPoints][5][B];                      // their stress before the update (points of the pass)
@@ -248,11 +249,12 @@ std::int64_t section_point_pass(SectionBlock<B>& s, int len, const MaterialParam
 // (a Debug build checks it), without their 16 operations per point.
 // The rows of the state one section update works on (see section_update_block).
 struct SectionRows {
-  double* sig;   // [points][5][G], or the [8][G] resultants for N = 0
-  double* eps;   // [points][G]
-  double* dmg;   // [points][G]
-  double* brit;  // [points][kBritVars][G]
-  double* res;   // [8][G]
+  double* sig;       // [points][5][G], or the [8][G] resultants for N = 0
+  double* eps;       // [points][G]
+  double* dmg;       // [points][G]
+  double* dmg_inst;  // [points][G] the same rows of ShellGroup::dmg_inst
+  double* brit;      // [points][kBritVars][G]
+  double* res;       // [8][G]
 };
 
 // Resultant elasticity (LAW1, N = 0): FOR and MOM are the state, updated from the increments.
@@ -366,7 +368,7 @@ template <int B>
                                              G)
           : fail ? shell_point_update_fail(mat, iplas, s.rfac[j], s.rate[j],
                                            g.fail_scale[static_cast<std::size_t>(i0 + j)], s.off[j], de, gs,
-                                           sg, ep[j], rows.dmg[pj])
+                                           sg, ep[j], rows.dmg[pj], rows.dmg_inst + pj)
                  : shell_point_update_r(mat, iplas, s.rfac[j], s.off[j], de, gs, sg, ep[j]);
       if (r.fails) s.crack_fail[j] = 1;
       for (int c = 0; c < 5; ++c) sp[c][j] = sg[c];
@@ -437,6 +439,24 @@ template <int B>
 // Deletion at once (next_off): law 36 with a point above Eps_p_max; a failure model with the thickness
 // fraction of failed points (their weights) at Ifail_sh's threshold (fail_setoff_c.F: 1e-6, or the model's
 // fraction bounded by the property's P_thickfail, kept within [1e-6, 1 - 1e-6]); law 27 with a crack past
+// /FAIL/BIQUAD S_Flag 3 (OpenRadioss fail_biquad_c.F): unstable[j] = 1 when every point of the section has
+// reached the instability (its instability damage is 1). With one in-plane point the section is the element,
+// which is then deleted at once; QBAT deletes when all four of its sections are unstable (shell_qbat.cpp).
+template <int B>
+[[gnu::always_inline]] inline void section_instability(const ShellGroup& g, const SectionRows& rows, int i0,
+                                                       int len, const ThicknessRule& rule,
+                                                       SectionBlock<B>& s) {
+  constexpr std::size_t G = kGroupSize;
+  for (int j = 0; j < len; ++j) {
+    if (s.off[j] != 1.0) continue;
+    bool all = rule.n > 0;
+    for (int p = 0; p < rule.n; ++p)
+      all = all && rows.dmg_inst[static_cast<std::size_t>(p) * G + static_cast<std::size_t>(i0 + j)] >= 1.0;
+    s.unstable[j] = all ? 1.0 : 0.0;
+    if (all && g.gauss == 1) s.fail_now[j] = 1.0;
+  }
+}
+
 // EPS_f1.
 template <int B>
 [[gnu::always_inline]] inline void section_failure(const ShellGroup& g, const SectionRows& rows, int i0,
@@ -464,6 +484,8 @@ template <int B>
     }
     s.fail_now[j] = gone ? 1.0 : 0.0;
   }
+  if (mat.fail.kind == FailKind::Biquad && mat.fail.bq_s_flag == 3)
+    section_instability(g, rows, i0, len, rule, s);
 }
 
 template <int B>
@@ -471,10 +493,14 @@ void section_update_block(ShellGroup& g, int i0, int len, const MaterialParams& 
                           const ThicknessRule& rule, double gs, SectionBlock<B>& s,
                           double* sig_rows = nullptr, double* eps_rows = nullptr, double* dmg_rows = nullptr,
                           double* brit_rows = nullptr, double* res_rows = nullptr) {
-  const SectionRows rows{
-      sig_rows != nullptr ? sig_rows : g.sig.data(), eps_rows != nullptr ? eps_rows : g.eps_p.data(),
-      dmg_rows != nullptr ? dmg_rows : g.dmg.data(), brit_rows != nullptr ? brit_rows : g.brit.data(),
-      res_rows != nullptr ? res_rows : g.res.data()};
+  double* dmg = dmg_rows != nullptr ? dmg_rows : g.dmg.data();
+  const SectionRows rows{sig_rows != nullptr ? sig_rows : g.sig.data(),
+                         eps_rows != nullptr ? eps_rows : g.eps_p.data(),
+                         dmg,
+                         g.dmg_inst.data() + (dmg - g.dmg.data()),
+                         brit_rows != nullptr ? brit_rows : g.brit.data(),
+                         res_rows != nullptr ? res_rows : g.res.data()};
+  for (int j = 0; j < len; ++j) s.unstable[j] = 0;
   if (rule.n == 0) {
     section_resultant_elastic(rows, i0, len, mat, gs, s);
     return;
