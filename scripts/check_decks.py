@@ -1937,8 +1937,6 @@ def spring_properties(tables):
             p = pos(o, "skew_ID")
             if skew is None:
                 I("RX402", p[0], p[1], "spring property %d: skew %d does not exist" % (o["id"], sk))
-            elif skew["path"] == "/SKEW/MOV" and not type13:
-                I("RX510", p[0], p[1], "spring property %d: moving skew %d" % (o["id"], sk))
 
 
 def formulations(tables):

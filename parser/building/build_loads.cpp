@@ -120,14 +120,19 @@ std::int64_t skew_ref(ModelBuilder& b, const KeywordRecord& r) {
     b.error_at(r, "skew_ID", Diag::MissingReference, std::move(text));
   return id;
 }
-// Where radx has no use for a skew yet (the rigid-body inertia frame): only 0 is accepted.
-std::int64_t unsupported_skew_ref(ModelBuilder& b, const KeywordRecord& r, std::string_view what) {
-  const std::int64_t id = r.get_int("skew_ID");
-  if (id != 0)
-    b.error_at(r, "skew_ID", Diag::UnimplementedOption,
-               "skew_ID = " + std::to_string(id) + ": " + std::string(what) +
-                   " in a skew frame is not supported; leave it 0 (global axes)");
-  return id;
+// Jxx Jyy Jzz Jxy Jyz Jxz given in the axes of a skew (rows of `axes`: its X Y Z axes at t = 0) in global
+// axes: J_global = R J R^T with R's columns the skew's axes, as Radioss's starter turns an /RBODY's added
+// inertia (inirby.F).
+std::array<double, 6> inertia_in_global_axes(const std::array<double, 6>& j,
+                                             const std::array<double, 9>& axes) {
+  const double J[3][3] = {{j[0], j[3], j[5]}, {j[3], j[1], j[4]}, {j[5], j[4], j[2]}};
+  auto R = [&](int row, int col) { return axes[static_cast<std::size_t>(3 * col + row)]; };
+  double g[3][3] = {};
+  for (int a = 0; a < 3; ++a)
+    for (int c = 0; c < 3; ++c)
+      for (int p = 0; p < 3; ++p)
+        for (int q = 0; q < 3; ++q) g[a][c] += R(a, p) * J[p][q] * R(c, q);
+  return {g[0][0], g[1][1], g[2][2], g[0][1], g[1][2], g[0][2]};
 }
 
 // Direction codes 0..5 = X Y Z XX YY ZZ; `count` 3 accepts the translations only.
@@ -592,7 +597,8 @@ model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
   }
   rb.sensor = b.sensor_ref(r, "sens_ID");
   // With a sensor the added inertia is not used, so neither is its frame.
-  rb.skew = rb.sensor != 0 ? r.get_int("skew_ID") : unsupported_skew_ref(b, r, "added inertia");
+  // The frame of the added inertia Jxx..Jxz (with a sensor the inertia is not used, nor its frame).
+  rb.skew = rb.sensor != 0 ? r.get_int("skew_ID") : skew_ref(b, r);
   rb.ispher = int_or(r, "Ispher", 2);
   rb.mass = mass_field(b, r, "added to the main node");
   rb.group = group_ref(b, r, "grnd_ID", false);
@@ -601,6 +607,11 @@ model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
   rb.surface = lookup(b, b.surf_ids_, r, "surf_ID", "surface", "/SURF", true);
   static constexpr std::array<std::string_view, 6> kInertia = {"Jxx", "Jyy", "Jzz", "Jxy", "Jyz", "Jxz"};
   for (std::size_t k = 0; k < kInertia.size(); ++k) rb.inertia[k] = r.get_real(kInertia[k]);
+  if (rb.sensor == 0 && rb.skew != 0) {
+    const auto it = b.skew_ids_.find(rb.skew);
+    if (it != b.skew_ids_.end() && static_cast<std::size_t>(it->second) < b.m_.skews.size())
+      rb.inertia = inertia_in_global_axes(rb.inertia, b.m_.skews[static_cast<std::size_t>(it->second)].axes);
+  }
   if (rb.sensor != 0) check_sensor_body(b, r, rb);
   rb.ioptoff = geti(r, "Ioptoff");
   rb.iexpams = geti(r, "Iexpams");

@@ -190,9 +190,9 @@ void ModelBuilder::resolve_spring_functions() {
   }
 }
 
-// TYPE8's frame: a fixed skew. A moving skew (/SKEW/MOV) would turn the six springs with its nodes; radx
-// does not update the frame, so it refuses one (RX510). TYPE13's skew only orients the spring's own frame at
-// the start (OpenRadioss r4buf3.F, with the skew's initial axes), so any skew serves.
+// TYPE8's frame: a /SKEW/FIX, or a /SKEW/MOV whose axes the engine follows every cycle (OpenRadioss r2def3.F
+// reads the skew's current axes). TYPE13's skew only orients the spring's own frame at the start
+// (OpenRadioss r4buf3.F, with the skew's initial axes).
 void ModelBuilder::resolve_spring_skews() {
   for (const auto& rec : deck_.records) {
     if (rec.decl->path != "/PROP/SPR_GENE" && rec.decl->path != "/PROP/SPR_BEAM") continue;
@@ -207,12 +207,6 @@ void ModelBuilder::resolve_spring_skews() {
       p.spring.skew = kNone;
       continue;
     }
-    if (p.spring.type == 8 && p.spring.skew != kNone &&
-        m_.skews[static_cast<std::size_t>(p.spring.skew)].moving())
-      error_at(*r, "skew_ID", Diag::PhysicsNotImplemented,
-               "skew_ID = " + std::to_string(r->get_int("skew_ID")) +
-                   " is a moving skew (/SKEW/MOV), whose axes turn with its nodes: radx does not implement a "
-                   "TYPE8 spring in a moving frame; use a /SKEW/FIX or 0 (global axes)");
   }
 }
 

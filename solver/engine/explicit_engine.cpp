@@ -1167,7 +1167,7 @@ CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
 }
 
 // The time loop. Each cycle is the list of its stages, in the order of explicit_engine.hpp:
-//   0. skews_.update (moving skews of x^n)
+//   0. skews_.update (moving skews of x^n), and the TYPE8 springs' frames that follow them
 //   1. external_loads        2. contact_forces (penalty, votes, LAGDT switches)
 //   3-4. element_forces (groups, then the deterministic assembly with the contact forces)
 //   9. choose_time_step (early: the step of this cycle comes from the votes just computed), then the sensors
@@ -1190,6 +1190,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
   LoopState L;
   while (true) {
     skews_.update(nodes_);  // 0.
+    follow_moving_skews();
     external_loads(L);
     element_forces(L);
     contact_forces(L);
@@ -1264,6 +1265,17 @@ void ExplicitEngine::contact_forces(LoopState& L) {
     L.contact_control.node_id = step.node_id;
   }
   L.contact_seconds += seconds_since(t0);
+}
+
+// 0. A TYPE8 spring in a /SKEW/MOV works in the skew's current axes (OpenRadioss r2def3.F): its group's
+// frame follows the skew; its offsets x0 stay those of t = 0 in the initial axes.
+void ExplicitEngine::follow_moving_skews() {
+  for (auto& g : groups_.springs) {
+    const auto skew = g.props.skew;
+    if (g.props.type != 8 || skew == model::kNone || !model_.skews[static_cast<std::size_t>(skew)].moving())
+      continue;
+    g.frame = skews_.axes(skew);
+  }
 }
 
 void ExplicitEngine::tell_contact_deleted_elements() {

@@ -241,6 +241,7 @@ class ExplicitEngine {
   void contact_forces(LoopState& L);
   void tell_contact_deleted_elements();
   void list_deleted_elements();
+  void follow_moving_skews();
   bool choose_time_step(LoopState& L, RunResult& res);
   void accelerations(LoopState& L);
   bool lagrange_correction(LoopState& L, RunResult& res);

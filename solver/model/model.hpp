@@ -482,7 +482,8 @@ struct RigidBody {
   std::int64_t sensor = 0, skew = 0;
   int ispher = 2, ikrem = 0, icog = 1, ioptoff = 0, iexpams = 0, ifail = 0;
   double mass = 0;
-  std::array<double, 6> inertia{};  // Jxx Jyy Jzz Jxy Jyz Jxz (added)
+  std::array<double, 6>
+      inertia{};  // Jxx Jyy Jzz Jxy Jyz Jxz (added), global axes (the starter turns a skew's)
   double fn = 1e20, ft = 1e20, exp_n = 2, exp_t = 2;
   std::int32_t group = kNone;
   std::int32_t surface = kNone;

@@ -1,5 +1,6 @@
 // TYPE8 general spring (/SPRING with /PROP/SPR_GENE): six uncoupled springs between two nodes, along the
-// three axes of a fixed frame (global, or a /SKEW/FIX) for the translations and about them for the rotations.
+// three axes of a frame (global, a /SKEW/FIX, or a /SKEW/MOV whose current axes the engine sets each cycle)
+// for the translations and about them for the rotations.
 // Each follows the scalar spring law of spring_law.hpp (linear or by curve, H 0 1 2 4 5 6 7, damping; H 8,
 // the force of the total length, is refused by the starter for TYPE8).
 //
@@ -8,7 +9,8 @@
 // (defaults), rmass.F (mass and inertia).
 //
 // Frame rows E_X, E_Y, E_Z; nodes x1, x2 at x^n, angular velocities w1, w2 at t^{n-1/2}; dt1 = t^n - t^{n-1}.
-//   u_j = (x2 - x1) . E_j - (x2^0 - x1^0) . E_j        j = X Y Z, total form (fixed frame)
+//   u_j = (x2 - x1) . E_j - (x2^0 - x1^0) . E_j^0      j = X Y Z, total form: the current axes E_j, the
+//                                                      offsets of t = 0 in the initial axes E_j^0
 //   r_j = r_j_old + dt1 (w2 - w1) . E_j                 j = X Y Z, rotations integrated incrementally
 //   N_j = law_j(u_j, ...) forces; moments M_j = law_{3+j}(r_j, ...); failure, work and step: the six laws of
 //     spring_six_laws.hpp, with k_t, c_t (k_r, c_r) the largest stiffness and damping of the three
