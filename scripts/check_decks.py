@@ -846,12 +846,13 @@ def box_spher(v):
 # Element groups: root -> (element keyword, subtype listing element ids, element name). Every subtype reads a
 # title and a list of ids; a unit id may follow the group id on the keyword line.
 GROUP_FAMILIES = {"/GRSHEL": ("/SHELL", "SHEL", "4-node shell"), "/GRSH3N": ("/SH3N", "SH3N", "3-node shell"),
-                  "/GRBRIC": ("/BRICK", "BRIC", "brick")}
+                  "/GRBRIC": ("/BRICK", "BRIC", "brick"), "/GRTRUS": ("/TRUSS", "TRUS", "truss"),
+                  "/GRBEAM": ("/BEAM", "BEAM", "beam")}
 GROUP_SUBTYPES = ("PART", "SUBSET", "MAT", "PROP", "BOX", "BOX2", "GENE")
 for _root, (_ekw, _list, _name) in GROUP_FAMILIES.items():
     for _sub in (_list, _root[1:]) + GROUP_SUBTYPES:
         STARTER[_root + "/" + _sub] = ("id", True, lambda v: [], "ids", ID_REC)
-NODES_OF_GROUPS = ("/GRNOD/GRSHEL", "/GRNOD/GRSH3N", "/GRNOD/GRBRIC")
+NODES_OF_GROUPS = ("/GRNOD/GRSHEL", "/GRNOD/GRSH3N", "/GRNOD/GRBRIC", "/GRNOD/GRTRUS", "/GRNOD/GRBEAM")
 SURFS_OF_GROUPS = ("/SURF/GRSHEL", "/SURF/GRSH3N", "/SURF/GRBRIC/EXT", "/SURF/GRBRIC/FREE", "/SURF/GRBRIC")
 for _path in NODES_OF_GROUPS + SURFS_OF_GROUPS + ("/SURF/PART/ALL", "/SUBSET"):
     STARTER[_path] = ("id", True, lambda v: [], "ids", ID_REC)
@@ -1602,8 +1603,9 @@ def elements(tables):
     """Shells, triangles, bricks and tetrahedra (model_builder.cpp): the part and its property kind, unique ids,
     existing nodes, the geometry (area, volume, orientation) and the shell thickness."""
     I, m, nodes, parts, props = tables.issue, tables.m, tables.nodes, tables.parts, tables.props
-    elem_ids = {"/SHELL": set(), "/SH3N": set(), "/BRICK": set(), "/TETRA4": set()}
-    elements = {"/SHELL": {}, "/SH3N": {}, "/BRICK": {}, "/TETRA4": {}}  # element id -> (part id, node ids)
+    elem_ids = {"/SHELL": set(), "/SH3N": set(), "/BRICK": set(), "/TETRA4": set(), "/TRUSS": set(), "/BEAM": set()}
+    # element id -> (part id, node ids); trusses and beams (their two nodes) are added by their own checks
+    elements = {"/SHELL": {}, "/SH3N": {}, "/BRICK": {}, "/TETRA4": {}, "/TRUSS": {}, "/BEAM": {}}
     part_kind = {}
     for o in m.of("/SHELL", "/SH3N", "/BRICK", "/TETRA4"):
         kind = o["path"]
@@ -1721,6 +1723,8 @@ def truss_elements(tables):
                 continue
             truss_ids.add(eid)
             ns = [r.get("n1"), r.get("n2")]
+            tables.elements["/TRUSS"][eid] = (o["id"], ns)
+            tables.elem_ids["/TRUSS"].add(eid)
             bad = [x for x in ns if x is None or x not in nodes]
             for _ in bad:
                 I("RX406", p[0], p[1], "truss %s uses a node that does not exist" % eid)
@@ -1768,7 +1772,9 @@ def beam_elements(tables):
                 I("RX401", p[0], p[1], "beam %d defined twice" % eid)
                 continue
             beam_ids.add(eid)
-            ns = [r.get("n1"), r.get("n2")]
+            ns = [r.get("n1"), r.get("n2")]  # the orientation node n3 is not one of the beam's nodes in groups
+            tables.elements["/BEAM"][eid] = (o["id"], ns)
+            tables.elem_ids["/BEAM"].add(eid)
             bad = [x for x in ns if x is None or x not in nodes]
             if r.get("n3") not in (None, 0) and r.get("n3") not in nodes:
                 bad.append(r.get("n3"))
@@ -2630,7 +2636,7 @@ def sections(tables):
         for f in ("grtrus_ID", "grbeam_ID", "grsprg_ID"):
             if val(o, f, 0) != 0:
                 p = pos(o, f)
-                I("RX402", p[0], p[1], "/SECT %d: radx has no %s elements" % (o["id"], f))
+                I("RX510", p[0], p[1], "/SECT %d: %s: a section sums bricks and shells only" % (o["id"], f))
         listed = [(f, root) for f, root in (("grbric_ID", "/GRBRIC"), ("grshel_ID", "/GRSHEL"),
                                             ("grtria_ID", "/GRSH3N")) if val(o, f, 0) != 0]
         if not listed:
@@ -3264,7 +3270,7 @@ def node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, 
                     add.update(surf_nodes.get(x, ()))
                 else:
                     missing(p, "surface %d" % x)
-            elif kind in ("GRSHEL", "GRSH3N", "GRBRIC"):
+            elif kind in ("GRSHEL", "GRSH3N", "GRBRIC", "GRTRUS", "GRBEAM"):
                 root = "/" + kind
                 if x < 0:
                     continue  # ignored (a warning)

@@ -84,24 +84,37 @@ bool inside_box(const model::Box& b, double x, double y, double z) {
 
 namespace {
 
-// The three element group families: the keyword root, the subtype that lists element ids, the words
-// messages use. Indexed by model::ElementType.
+// The element group families: the keyword root, the subtype that lists element ids, the words messages
+// use. Indexed by model::ElementType; tetrahedra are grouped as bricks and springs are not grouped (empty
+// root).
 struct ElementGroupFamily {
   std::string_view root;             // "/GRSHEL"
   std::string_view list_kind;        // "SHEL": the subtype that lists element ids
   std::string_view element;          // "4-node shell"
   std::string_view element_keyword;  // "/SHELL"
 };
-constexpr std::array<ElementGroupFamily, 3> kFamilies = {{
+constexpr std::array<ElementGroupFamily, ModelBuilder::kElementTypes> kFamilies = {{
     {"/GRSHEL", "SHEL", "4-node shell", "/SHELL"},
     {"/GRSH3N", "SH3N", "3-node shell", "/SH3N"},
     {"/GRBRIC", "BRIC", "brick", "/BRICK"},
+    {"", "", "tetrahedron", "/TETRA4"},
+    {"", "", "spring", "/SPRING"},
+    {"/GRTRUS", "TRUS", "truss", "/TRUSS"},
+    {"/GRBEAM", "BEAM", "beam", "/BEAM"},
 }};
 static_assert(static_cast<int>(model::ElementType::Shell4) == 0 &&
               static_cast<int>(model::ElementType::Shell3) == 1 &&
-              static_cast<int>(model::ElementType::Brick8) == 2);
+              static_cast<int>(model::ElementType::Brick8) == 2 &&
+              static_cast<int>(model::ElementType::Truss2) == 5 &&
+              static_cast<int>(model::ElementType::Beam2) == 6);
 const ElementGroupFamily& family(model::ElementType t) {
   return kFamilies[static_cast<std::size_t>(t)];
+}
+
+// The nodes of an element of block b that make its shape: all its nodes, but a beam's two (its third only
+// orients it), as Radioss's groups take them (hm_lecgrn.F: columns 2 and 3 of trusses and beams).
+std::size_t shape_nodes(const model::ElementBlock& b) {
+  return b.type == model::ElementType::Beam2 ? 2 : static_cast<std::size_t>(b.npe());
 }
 
 // Keeps the distinct nodes of a face in their order and returns how many there are: a degenerate brick
@@ -174,12 +187,13 @@ const ModelBuilder::ElementGroup* ModelBuilder::element_group(model::ElementType
 }
 
 void ModelBuilder::build_element_groups() {
-  std::unordered_map<std::int64_t, SourcePos> first[3];
+  std::unordered_map<std::int64_t, SourcePos> first[kElementTypes];
   for (const auto& r : deck_.records) {
     const auto path = r.decl->path;
     for (std::size_t f = 0; f < kFamilies.size(); ++f) {
       const auto root = kFamilies[f].root;
-      if (path.size() <= root.size() || path.compare(0, root.size(), root) != 0 || path[root.size()] != '/')
+      if (root.empty() || path.size() <= root.size() || path.compare(0, root.size(), root) != 0 ||
+          path[root.size()] != '/')
         continue;
       ElementGroup g;
       g.record = &r;
@@ -363,15 +377,17 @@ void add_elements_in_box(ElementGroupList& l, bool every_node) {
     return;
   }
   const auto& b = m.boxes[it->second];
-  // BOX: every node of the element inside; BOX2: one node inside is enough.
+  // BOX: every node of the element inside; BOX2: one node inside is enough. A beam's orientation node is not
+  // one of its nodes there.
   for_each_group_element(l, [&](std::int32_t e, ModelBuilder::GroupElement ge) {
     const auto npe = static_cast<std::size_t>(ge.block->npe());
+    const std::size_t nodes = shape_nodes(*ge.block);
     std::size_t in = 0;
-    for (std::size_t k = 0; k < npe; ++k) {
+    for (std::size_t k = 0; k < nodes; ++k) {
       const auto n = ge.block->conn[static_cast<std::size_t>(ge.index) * npe + k];
       if (n >= 0 && inside_box(b, m.nodes.x[n], m.nodes.y[n], m.nodes.z[n])) ++in;
     }
-    if (every_node ? in == npe : in > 0) l.add.push_back(e);
+    if (every_node ? in == nodes : in > 0) l.add.push_back(e);
   });
 }
 
@@ -610,11 +626,11 @@ struct NodeGroupList {
 
 // The nodes of the elements of `part`, to `out`.
 void add_part_nodes(const model::Model& m, std::int32_t part, std::vector<std::int32_t>& out) {
-  for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras}) {
+  for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras, &m.trusses, &m.beams}) {
     const auto npe = static_cast<std::size_t>(b->npe());
     for (std::size_t e = 0; e < b->size(); ++e) {
       if (b->part[e] != part) continue;
-      for (std::size_t k = 0; k < npe; ++k)
+      for (std::size_t k = 0; k < shape_nodes(*b); ++k)
         if (b->conn[e * npe + k] >= 0) out.push_back(b->conn[e * npe + k]);
     }
   }
@@ -767,6 +783,8 @@ void add_nodes_of_element_groups(NodeGroupList& l, const std::string& kind) {
   const auto& r = l.r;
   const auto type = kind == "GRSHEL"   ? model::ElementType::Shell4
                     : kind == "GRSH3N" ? model::ElementType::Shell3
+                    : kind == "GRTRUS" ? model::ElementType::Truss2
+                    : kind == "GRBEAM" ? model::ElementType::Beam2
                                        : model::ElementType::Brick8;
   const auto& fam = family(type);
   for (std::size_t k = 0; k < r.ids.size(); ++k) {
@@ -786,7 +804,7 @@ void add_nodes_of_element_groups(NodeGroupList& l, const std::string& kind) {
       const auto ge = l.b.group_element(type, e);
       const auto npe = static_cast<std::size_t>(ge.block->npe());
       const auto* c = &ge.block->conn[static_cast<std::size_t>(ge.index) * npe];
-      for (std::size_t j = 0; j < npe; ++j)
+      for (std::size_t j = 0; j < shape_nodes(*ge.block); ++j)
         if (c[j] >= 0) l.add.push_back(c[j]);
     }
   }
@@ -824,7 +842,7 @@ const std::vector<std::int32_t>* ModelBuilder::group_nodes(std::int32_t g) {
     add_nodes_of_surfaces(l);
   else if (kind == "SUBSET")
     add_nodes_of_subsets(l);
-  else if (kind == "GRSHEL" || kind == "GRSH3N" || kind == "GRBRIC")
+  else if (kind == "GRSHEL" || kind == "GRSH3N" || kind == "GRBRIC" || kind == "GRTRUS" || kind == "GRBEAM")
     add_nodes_of_element_groups(l, kind);
   sort_unique(l.add);
   sort_unique(l.remove);

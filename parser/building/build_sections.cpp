@@ -102,11 +102,14 @@ void refuse_section_options(ModelBuilder& b, const KeywordRecord& r) {
                "I_SAVE = " + std::to_string(isave) +
                    ": reading a section cut file as input is not implemented; accepted: 0, or 1 and 2 (cut "
                    "file not written)");
+  // Trusses and beams run, but a section sums the forces of bricks and shells only: the section's forces
+  // would leave theirs out.
   for (const auto field : {"grtrus_ID", "grbeam_ID", "grsprg_ID"})
     if (const auto g = r.get_int(field); g != 0)
-      b.error_at(r, field, Diag::MissingReference,
+      b.error_at(r, field, Diag::PhysicsNotImplemented,
                  std::string(field) + " = " + std::to_string(g) +
-                     ": radx has no truss, beam or spring elements (their groups are not read); leave it 0");
+                     ": radx sums the forces of bricks and shells only in a section, not those of trusses, "
+                     "beams or springs; leave it 0");
 }
 
 // The cut's node group grnod_ID and its nodes, which must not be empty.

@@ -202,7 +202,8 @@ class ModelBuilder {
   std::vector<Set> sets_;
   IdIndex set_ids_, collect_set_ids_;  // /SET/GENERAL and /SET/COLLECT ids -> sets_
   std::vector<ElementGroup> element_groups_;
-  IdIndex element_group_ids_[3];  // by model::ElementType
+  static constexpr std::size_t kElementTypes = 7;  // model::ElementType's values
+  IdIndex element_group_ids_[kElementTypes];       // by model::ElementType
   std::vector<const KeywordRecord*> grnod_records_;
   std::vector<std::uint8_t> grnod_state_;    // 0 not built, 1 building, 2 built
   std::vector<std::uint8_t> node_used_;      // by an element or as a rigid-body / wall node

@@ -1062,7 +1062,8 @@ void add_groups(std::vector<KeywordDecl>& t) {
   auto listed = [](std::string_view path) {
     const auto word = path.substr(path.find('/', 1) + 1);
     if (word == "NODE" || word == "GENE") return IdKind::Node;
-    if (word == "SHEL" || word == "SH3N" || word == "BRIC") return IdKind::Element;
+    if (word == "SHEL" || word == "SH3N" || word == "BRIC" || word == "TRUS" || word == "BEAM")
+      return IdKind::Element;
     if (word.substr(0, 4) == "PART") return IdKind::Part;
     if (word == "MAT") return IdKind::Material;
     if (word == "PROP") return IdKind::Property;
@@ -1287,10 +1288,59 @@ void add_groups(std::vector<KeywordDecl>& t) {
         "member (nodes, parts, shells, 3-node shells, solids, surface segments) separately (docs/sets.md).";
     t.push_back(std::move(k));
   }
+  // Truss and beam groups: the same subtypes as the shells' (BOX: the element's two nodes, not a beam's
+  // orientation node).
+  element_group("/GRTRUS/TRUS", "truss group: the listed /TRUSS element ids", "grtrus_ID");
+  element_group("/GRTRUS/PART", "truss group: the elements of the listed parts; a negative id removes",
+                "grtrus_ID");
+  element_group("/GRTRUS/GRTRUS", "truss group: union of /GRTRUS groups; a negative id removes", "grtrus_ID");
+  element_group("/GRTRUS/SUBSET",
+                "truss group: the elements of the parts of the listed subsets (and their children); a "
+                "negative id removes",
+                "grtrus_ID");
+  element_group("/GRTRUS/MAT",
+                "truss group: the elements of the parts with the listed materials; a negative id removes",
+                "grtrus_ID");
+  element_group("/GRTRUS/PROP",
+                "truss group: the elements of the parts with the listed properties; a negative id removes",
+                "grtrus_ID");
+  element_group("/GRTRUS/BOX",
+                "truss group: the elements whose two nodes lie in the box (only the first box id counts)",
+                "grtrus_ID");
+  element_group("/GRTRUS/BOX2",
+                "truss group: the elements with at least one node in the box (only the first box id counts)",
+                "grtrus_ID");
+  element_gene("/GRTRUS/GENE", "truss group: the existing /TRUSS ids in ranges given as pairs (first, last)",
+               "grtrus_ID");
+  element_group("/GRBEAM/BEAM", "beam group: the listed /BEAM element ids", "grbeam_ID");
+  element_group("/GRBEAM/PART", "beam group: the elements of the listed parts; a negative id removes",
+                "grbeam_ID");
+  element_group("/GRBEAM/GRBEAM", "beam group: union of /GRBEAM groups; a negative id removes", "grbeam_ID");
+  element_group("/GRBEAM/SUBSET",
+                "beam group: the elements of the parts of the listed subsets (and their children); a "
+                "negative id removes",
+                "grbeam_ID");
+  element_group("/GRBEAM/MAT",
+                "beam group: the elements of the parts with the listed materials; a negative id removes",
+                "grbeam_ID");
+  element_group("/GRBEAM/PROP",
+                "beam group: the elements of the parts with the listed properties; a negative id removes",
+                "grbeam_ID");
+  element_group("/GRBEAM/BOX",
+                "beam group: the elements whose two nodes lie in the box (only the first box id counts)",
+                "grbeam_ID");
+  element_group("/GRBEAM/BOX2",
+                "beam group: the elements with at least one node in the box (only the first box id counts)",
+                "grbeam_ID");
+  element_gene("/GRBEAM/GENE", "beam group: the existing /BEAM ids in ranges given as pairs (first, last)",
+               "grbeam_ID");
   id_group("/GRNOD/GRSHEL", "node group: the nodes of the shells of the listed /GRSHEL groups", "grnod_ID");
   id_group("/GRNOD/GRSH3N", "node group: the nodes of the 3-node shells of the listed /GRSH3N groups",
            "grnod_ID");
   id_group("/GRNOD/GRBRIC", "node group: the nodes of the bricks of the listed /GRBRIC groups", "grnod_ID");
+  id_group("/GRNOD/GRTRUS", "node group: the nodes of the trusses of the listed /GRTRUS groups", "grnod_ID");
+  id_group("/GRNOD/GRBEAM", "node group: the two nodes of the beams of the listed /GRBEAM groups",
+           "grnod_ID");
   id_group("/SURF/PART", "surface: the shell and 3-node shell segments of the listed parts", "surf_ID");
   id_group("/SURF/PART/EXT", "surface: shell segments and outer solid faces of the listed parts", "surf_ID");
   id_group("/SURF/PART/ALL",
@@ -2527,9 +2577,9 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         // elements
         "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD", "/TRIA", "/SPHCEL",
         // groups, surfaces, boxes
-        "/GRNOD/LINE", "/GRSHEL", "/GRSH3N", "/GRBRIC", "/GRBEAM", "/GRTRUS", "/GRSPRI", "/GRPART", "/GRQUAD",
-        "/SURF/SURF", "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE",
-        "/SURF/ELLIPS", "/LINE", "/SET",
+        "/GRNOD/LINE", "/GRSHEL", "/GRSH3N", "/GRBRIC", "/GRSPRI", "/GRPART", "/GRQUAD", "/SURF/SURF",
+        "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE", "/SURF/ELLIPS",
+        "/LINE", "/SET",
         // interfaces
         "/INTER/TYPE1", "/INTER/TYPE3", "/INTER/TYPE5", "/INTER/TYPE8", "/INTER/TYPE10", "/INTER/TYPE11",
         "/INTER/TYPE14", "/INTER/TYPE15", "/INTER/TYPE17", "/INTER/TYPE18", "/INTER/TYPE19", "/INTER/TYPE20",

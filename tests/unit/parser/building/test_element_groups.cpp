@@ -131,6 +131,8 @@ struct Built {
     std::set<long long> out;
     const auto& block = type == ElementType::Shell4   ? model.shells
                         : type == ElementType::Shell3 ? model.shells3
+                        : type == ElementType::Truss2 ? model.trusses
+                        : type == ElementType::Beam2  ? model.beams
                                                       : model.bricks;
     for (auto e : g->elements) {
       // The builder's blocks were moved into `model`: a brick group's indices past the bricks are
@@ -565,4 +567,37 @@ TEST_CASE("A GENE range from the most negative to the largest id a field holds t
   CHECK_FALSE(b->diags.has_errors());
   CHECK(b->nodes(4).size() == 16 + 27 + 6);
   CHECK(b->elements(ElementType::Shell4, 1) == std::set<long long>{1, 2, 3, 4, 5, 6, 7, 8, 9, 50});
+}
+
+TEST_CASE("/GRTRUS and /GRBEAM take trusses and beams by id, part, range, group and box",
+          "[element_groups]") {
+  // Trusses 71, 72 of part 7 along the plate's first row of nodes; beams 81, 82 of part 8 along its second
+  // row, beam 81 oriented by node 16 (x = 3, y = 3), outside the box below, which its own nodes lie in.
+  const std::string lines =
+      "/NODE\n" + node_line(401, 0, 0, 10) + node_line(402, 1, 0, 10) + node_line(403, 2, 0, 10) +
+      node_line(411, 0, 1, 10) + node_line(412, 1, 1, 10) + node_line(413, 2, 1, 10) +
+      node_line(420, 5, 5, 5) + "/TRUSS/7\n" + ids_line({71, 401, 402}) + "\n" + ids_line({72, 402, 403}) +
+      "\n" + "/BEAM/8\n" + ids_line({81, 411, 412, 420}) + "\n" + ids_line({82, 412, 413}) + "\n" +
+      "/PART/7\ntruss\n" + ids_line({7, 1}) + "\n/PART/8\nbeam\n" + ids_line({8, 1}) + "\n" +
+      "/PROP/TRUSS/7\ntruss\n" + Line().put(1.0, 1, 20).str() + "\n/PROP/BEAM/8\nbeam\n\n\n" +
+      Line().put(1.0, 1, 20).put(0.1, 21, 40).put(0.1, 41, 60).put(0.2, 61, 80).str() + "\n\n";
+  const auto b = build(lines + kw("/GRTRUS/TRUS/1", {72}) + kw("/GRTRUS/PART/2", {7}) +
+                       kw("/GRBEAM/GENE/3", {80, 90}) + kw("/GRBEAM/GRBEAM/4", {3, -5}) +
+                       kw("/GRBEAM/BEAM/5", {82}) + box(9, {-0.5, 0.5, 9.5}, {1.5, 1.5, 10.5}) +
+                       kw("/GRBEAM/BOX/6", {9}) + kw("/GRTRUS/BOX2/7", {9}) + kw("/GRNOD/PART/40", {8, 7}) +
+                       kw("/GRNOD/GRBEAM/41", {4}) + kw("/GRNOD/GRTRUS/42", {1}));
+  INFO(b->report());
+  CHECK_FALSE(b->diags.has_errors());
+  CHECK(b->elements(ElementType::Truss2, 1) == std::set<long long>{72});
+  CHECK(b->elements(ElementType::Truss2, 2) == std::set<long long>{71, 72});
+  CHECK(b->elements(ElementType::Beam2, 3) == std::set<long long>{81, 82});
+  CHECK(b->elements(ElementType::Beam2, 4) == std::set<long long>{81});
+  // BOX: beam 81's two nodes (411, 412) lie in the box; its orientation node 420 does not count.
+  CHECK(b->elements(ElementType::Beam2, 6) == std::set<long long>{81});
+  // BOX2: a truss with one node in the box (node 401 or 402 at y = 0 are outside it: none).
+  CHECK(b->elements(ElementType::Truss2, 7).empty());
+  // Node groups take the nodes of trusses and beams, a beam's two: never its orientation node 420.
+  CHECK(b->nodes(40) == std::set<long long>{401, 402, 403, 411, 412, 413});
+  CHECK(b->nodes(41) == std::set<long long>{411, 412});
+  CHECK(b->nodes(42) == std::set<long long>{402, 403});
 }
