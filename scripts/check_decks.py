@@ -1974,7 +1974,7 @@ def formulations(tables):
                 bad.append("Ishell")
             if "/SH3N" in kinds and resolved(o, "Ish3n", "/DEF_SHELL", 2) not in (1, 2):
                 bad.append("Ish3n")
-            if resolved(o, "Ismstr", "/DEF_SHELL", 2) not in (1, 2):
+            if resolved(o, "Ismstr", "/DEF_SHELL", 2) not in (1, 2, 4, -1):
                 bad.append("Ismstr")
         elif "/TETRA4" in kinds and "/BRICK" not in kinds:
             if resolved(o, "Itetra4", "/DEF_SOLID", 1000) in (1, 3, 10):

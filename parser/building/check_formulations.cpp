@@ -7,8 +7,9 @@
 // What radx implements (docs/theory/elements.md):
 //   4-node shells:  Ishell 1 (Belytschko-Tsay, viscous + elastic hourglass), 12 (QBAT: four Gauss points,
 //                   assumed transverse shear) and 24 (QEPH: one point with physical hourglass stabilisation),
-//                   Ismstr 2 (large strain, small strain only after /DT/SHELL/CST) and 1 (small strain from
-//                   the start, Ishell 1 only), Ithick 1/2, Iplas 1/2; every other Ishell is refused by name
+//                   Ismstr 2 (large strain, small strain only after /DT/SHELL/CST), 4 and -1 (large strain,
+//                   never switched) and 1 (small strain from the start, Ishell 1 only), Ithick 1/2, Iplas
+//                   1/2; every other Ishell is refused by name
 //   3-node shells:  Ish3n 2 (C0) and 1 (C0 without the in-plane large-rotation terms), Ismstr 2 and 1
 //   8-node bricks:  Isolid 1 (one point, Flanagan-Belytschko viscous hourglass) and 2 (plain h vectors),
 //                   each with Iframe 1 (Jaumann rate) or 2 (co-rotational element frame); Isolid 24 (HEPH:
@@ -179,8 +180,10 @@ void check_shell_flags(const PropertyFlags& p, model::ShellProperty& s) {
   if (p.used & kTri)
     check_flag(p, "Ish3n", s.ish3n, model::runs_ish3n(s.ish3n), 2, model::ish3n_name(s.ish3n),
                model::ish3n_name(2), "3-node shells");
-  check_flag(p, "Ismstr", s.ismstr, s.ismstr == 1 || s.ismstr == 2, 2, ismstr_name(s.ismstr), ismstr_name(2),
-             "shells");
+  // 4 (and -1, which OpenRadioss's shells run as 4: hm_read_prop01.F keeps it, no shell path tests it) is
+  // large strain never switched: radx's 2 without the /DT/SHELL/CST switch (the step rule switches 2 only).
+  check_flag(p, "Ismstr", s.ismstr, s.ismstr == 1 || s.ismstr == 2 || s.ismstr == 4 || s.ismstr == -1, 2,
+             ismstr_name(s.ismstr), ismstr_name(2), "shells");
 }
 
 // The Iframe the deck asks for: the property's, else /DEF_SOLID's, else 1.

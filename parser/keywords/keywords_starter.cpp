@@ -546,8 +546,10 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
     k.cards = {
         card("card 1", {I("Ishell", 1, 10, "4-node shell formulation; 0 takes /DEF_SHELL, then 1")
                             .allow({0, 1, 2, 3, 4, 12, 22, 23, 24}),
-                        I("Ismstr", 11, 20, "shell strain formulation; 0 takes /DEF_SHELL, then 2")
-                            .allow({0, 1, 2, 3, 4, 10}),
+                        I("Ismstr", 11, 20,
+                          "shell strain formulation; 0 takes /DEF_SHELL, then 2; -1 runs as 4 (Radioss keeps "
+                          "it and none of its shell paths treats it apart)")
+                            .allow({-1, 0, 1, 2, 3, 4, 10}),
                         I("Ish3n", 21, 30, "3-node shell formulation; 0 takes /DEF_SHELL, then 2")
                             .allow({0, 1, 2, 30, 31}),
                         I("Idrill", 31, 40, "drilling stiffness: 1 on, 2 off; 0 takes /DEF_SHELL, then off")

@@ -141,3 +141,34 @@ TEST_CASE("a substituted shell formulation runs with the defaults of the one tha
   CHECK_FALSE(energy_block(summary3).empty());
   CHECK(energy_block(summary3) == energy_block(summary1));
 }
+
+TEST_CASE(
+    "shell Ismstr 4 and -1 run as large strain without a switch: the default deck's energies to the bit",
+    "[starter]") {
+  // The default deck's engine deck has no /DT/SHELL/CST, so Ismstr 2's switch never acts: 4 and -1 (which
+  // OpenRadioss's shells run as 4) give the same run, bit for bit.
+  radx::test::TempDir dir;
+  const auto plain_deck = block_on_plate_with_ishell(dir.path() / "deck2", 1);
+  REQUIRE(run(plain_deck, dir.path() / "plain", "", dir.path() / "plain.log") == 0);
+  const std::string plain = energy_block(slurp(dir.path() / "plain" / "BLOCK_ON_PLATE_summary.json"));
+  REQUIRE_FALSE(plain.empty());
+  for (const int ismstr : {4, -1}) {
+    const auto sub = dir.path() / ("deck" + std::to_string(ismstr + 10));
+    std::filesystem::create_directories(sub);
+    std::filesystem::copy_file(plain_deck.parent_path() / "BLOCK_ON_PLATE_0001.rad",
+                               sub / "BLOCK_ON_PLATE_0001.rad");
+    std::string text = slurp(plain_deck);
+    const auto at = text.find("/PROP/SHELL/1");
+    REQUIRE(at != std::string::npos);
+    // The first data line after the title: Ishell in 1-10, Ismstr in 11-20.
+    auto line = text.find('\n', text.find('\n', at) + 1) + 1;
+    while (text[line] == '#') line = text.find('\n', line) + 1;
+    const std::string field = std::to_string(ismstr);
+    text.replace(line + 10, 10, std::string(10 - field.size(), ' ') + field);
+    std::ofstream(sub / "BLOCK_ON_PLATE_0000.rad") << text;
+    const auto out = dir.path() / ("out" + std::to_string(ismstr + 10));
+    INFO("Ismstr " << ismstr << ": " << slurp(dir.path() / "log.txt"));
+    REQUIRE(run(sub / "BLOCK_ON_PLATE_0000.rad", out, "", dir.path() / "log.txt") == 0);
+    CHECK(energy_block(slurp(out / "BLOCK_ON_PLATE_summary.json")) == plain);
+  }
+}
