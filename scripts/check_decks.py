@@ -760,6 +760,7 @@ STARTER = {
     "/INTER/TYPE7": ("id", True, inter_type7, None, None),
     "/INTER/TYPE2": ("id", True, inter_type2, None, None),
     "/BCS": ("id", True, bcs, None, None),
+    "/ALE/BCS": ("id", True, bcs, None, None),
     "/IMPVEL": ("id", True, impvel, None, None),
     "/IMPDISP": ("id", True, impdisp, None, None),
     "/INIVEL/TRA": ("id", True, inivel, None, None),
@@ -2382,6 +2383,12 @@ def loads(tables):
     I, functs, grnods, m, need = tables.issue, tables.functs, tables.grnods, tables.m, tables.need
     for o in m.of("/BCS"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
+    # /ALE/BCS: only ALE nodes' grid and material velocities; radx's nodes are Lagrangian (build_loads.cpp)
+    for o in m.of("/ALE/BCS"):
+        need(o, "grnod_ID", grnods, "node group", zero_ok=False)
+        if val(o, "grnod_ID", 0) in grnods:
+            p = pos(o, "grnod_ID")
+            I("RX509", p[0], p[1], "/ALE/BCS %d changes nothing on Lagrangian nodes" % o["id"], warning=True)
     for o in m.of("/ADMAS/0", "/ADMAS/1"):
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
         if val(o, "MASS", 0.0) < 0:

@@ -646,6 +646,15 @@ def with_truss(d, row=(31, 3, 6), mat=2, **prop):
     return d
 
 
+@fault("ale_bcs_on_lagrangian_nodes")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", block("ALEBCS", "/ALE/BCS", 5, "Fixed grid velocity",
+                                        Code=bcs_code("111", "000"), skew_ID=0, grnod_ID=1))
+    return d, "/ALE/BCS on the plate's nodes: it fixes ALE grid velocities, which act on nothing on radx's " \
+        "Lagrangian nodes, as in Radioss (a warning)", [("RX509 warning", "ALEBCS.grnod_ID")]
+
+
 @fault("truss_gap")
 def _():
     d = with_truss(base(), Gap=1.0)

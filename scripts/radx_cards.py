@@ -181,6 +181,7 @@ LAYOUTS = {
     "/BRICK": Layout(title=False, rows=Card(i("brick_ID"), *[i("node_ID%d" % k) for k in range(1, 9)])),
     "/TETRA4": Layout(title=False, rows=Card(i("tetra_ID"), *[i("node_ID%d" % k) for k in range(1, 5)])),
     "/SPRING": Layout(title=False, rows=Card(i("spring_ID"), i("node_ID1"), i("node_ID2"), i("node_ID3"))),
+    "/ALE/BCS": Layout(Card(s("Code"), i("skew_ID"), i("grnod_ID"))),
     "/TRUSS": Layout(title=False, rows=Card(i("truss_ID"), i("node_ID1"), i("node_ID2"))),
     "/BEAM": Layout(title=False, rows=Card(i("beam_ID"), i("node_ID1"), i("node_ID2"), i("node_ID3"))),
     "/PART": Layout(Card(i("prop_ID"), i("mat_ID"), i("subset_ID"), r("Thick"))),

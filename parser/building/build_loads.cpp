@@ -234,6 +234,23 @@ void build_bcs(ModelBuilder& b) {
   check_bcs_skews(b, recs);
 }
 
+// /ALE/BCS: the codes of ALE nodes' grid and material velocities, which OpenRadioss keeps in bits of the
+// node code that only its ALE solver reads (hm_read_alebcs.F: IC1 * 8 + IC2, where /BCS uses IC1 * 512 +
+// IC2 * 64). radx runs Lagrangian nodes only (every ALE keyword and Iale flag is refused), on which these
+// codes act on nothing: the group and skew are checked, and a warning says so.
+void build_ale_bcs(ModelBuilder& b) {
+  for (const auto* r : b.deck_.of("/ALE/BCS")) {
+    (void)skew_ref(b, *r);
+    const auto group = group_ref(b, *r, "grnod_ID", false);
+    if (group == kNone) continue;
+    b.warning_at(
+        *r, "grnod_ID", Diag::UnimplementedOption,
+        "/ALE/BCS fixes grid and material velocities of ALE nodes; radx runs no ALE element, so on its "
+        "Lagrangian nodes it changes nothing, as in Radioss for a Lagrangian node (use /BCS to fix a "
+        "node)");
+  }
+}
+
 // /IMPVEL (a velocity) and /IMPDISP (a displacement from the initial position): the same cards, one model
 // object each; the engine turns the displacement into the velocity that reaches it at the end of the step.
 void build_imposed_velocities(ModelBuilder& b) {
@@ -995,6 +1012,7 @@ void ModelBuilder::build_loads() {
   build_added_masses(*this);
   build_accelerometers(*this);
   build_bcs(*this);
+  build_ale_bcs(*this);
   build_imposed_velocities(*this);
   build_imposed_final_geometries(*this);
   build_initial_velocities(*this);

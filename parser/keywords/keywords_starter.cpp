@@ -1650,6 +1650,25 @@ void add_loads(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    // OpenRadioss hm_read_alebcs.F: the same card as /BCS, its six codes the grid velocity (3) and the
+    // material velocity (3) of ALE nodes.
+    KeywordDecl k =
+        kw("/ALE/BCS",
+           "ALE boundary condition: fixed grid and material velocities of ALE nodes (no effect on the "
+           "Lagrangian nodes radx runs)",
+           Header::Id, true, "bcs_ID");
+    k.cards = {card(
+        "card 1", {I("Gx", 4, 4, "1 = grid velocity X fixed").allow({0, 1}),
+                   I("Gy", 5, 5, "1 = grid velocity Y fixed").allow({0, 1}),
+                   I("Gz", 6, 6, "1 = grid velocity Z fixed").allow({0, 1}),
+                   I("Mx", 8, 8, "1 = material velocity X fixed").allow({0, 1}),
+                   I("My", 9, 9, "1 = material velocity Y fixed").allow({0, 1}),
+                   I("Mz", 10, 10, "1 = material velocity Z fixed").allow({0, 1}),
+                   I("skew_ID", 11, 20, "skew of the fixed directions; 0 = global axes").refs(IdKind::Other),
+                   I("grnod_ID", 21, 30, "nodes concerned").refs(IdKind::Other)})};
+    t.push_back(std::move(k));
+  }
+  {
     KeywordDecl k = kw("/IMPVEL", "imposed velocity on a node group, following a function of time",
                        Header::IdUnit, true, "impvel_ID");
     k.cards = {
