@@ -1879,10 +1879,13 @@ def spring_properties(tables):
             p = pos(o, "M")
             I("RX501", p[0], p[1], "spring mass %g is not positive" % val(o, "M", 0.0))
         k, c = val(o, "K", 0.0), val(o, "C", 0.0)
-        if k < 0 or (k == 0 and c <= 0 and val(o, "fct_ID4", 0) == 0 and val(o, "fct_ID1", 0) == 0) or \
-                (k == 0 and bad_zero_k(o, "")):
+        if k < 0 or (k == 0 and bad_zero_k(o, "")):
             p = pos(o, "K")
             I("RX501", p[0], p[1], "spring stiffness %g" % k)
+        elif k == 0 and c <= 0 and val(o, "fct_ID4", 0) == 0 and val(o, "fct_ID1", 0) == 0:
+            # a spring of mass only: read, with a warning (OpenRadioss runs it)
+            p = pos(o, "K")
+            I("RX501", p[0], p[1], "spring stiffness 0 without damping: mass only", warning=True)
         if c < 0:
             p = pos(o, "C")
             I("RX501", p[0], p[1], "negative spring damping")

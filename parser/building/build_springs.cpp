@@ -85,10 +85,12 @@ void ModelBuilder::read_spring_law(const KeywordRecord& r, model::SpringLaw& s, 
             " is negative; K must be > 0 (the linear stiffness, or with fct_ID1 the stiffness of the time "
             "step)");
   else if (!type8 && s.stiffness == 0 && !curve && s.damping <= 0 && r.get_int(f("fct_ID4")) == 0)
-    error_at(
+    // OpenRadioss runs such a spring (its QA deck IMPOSED/IMPDISP_FGEO uses one to carry a node's mass): it
+    // only adds its mass to its nodes.
+    warning_at(
         r, f("K"), Diag::ValueOutOfRange,
-        "stiffness K is 0 and the spring has no damping: it would carry no force; give K > 0, or a force "
-        "curve fct_ID1");
+        "stiffness K is 0 and the spring has no damping nor force curve: it carries no force, only its "
+        "mass, as in Radioss; give K > 0 or a force curve fct_ID1 if it should resist");
   else if (s.stiffness == 0 && curve && s.hardening != 0)
     // H 1 to 8 unload or bound the force with the slope K: with K = 0 there is no such slope. (H = 0 takes
     // the step stiffness from the curve: resolve_spring_functions.)

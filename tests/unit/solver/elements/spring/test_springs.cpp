@@ -402,3 +402,22 @@ TEST_CASE("spring with K = 0 and a force curve: the curve is the law, its steepe
   const auto tr = run(m, 1e-4);
   CHECK(tr.dt == Approx(0.9 * std::sqrt(1e-6 / 1000.0)).epsilon(1e-6));
 }
+
+TEST_CASE("spring with K = 0, no damping and no curve: read with a warning, it carries its mass and no force",
+          "[spring][starter]") {
+  // Radioss runs such a spring (its QA deck IMPOSED/IMPDISP_FGEO carries a node's mass with one).
+  radx::test::TempDir dir;
+  radx::Diagnostics diags;
+  const auto deck =
+      radx::read_starter_deck(dir.write("m_0000.rad", oscillator_deck(2e-6, 0.0, 0.0, 1e-3, 100.0)), diags);
+  const auto m = radx::build_model(deck, diags);
+  REQUIRE_FALSE(diags.has_errors());
+  std::string warnings;
+  for (const auto& d : diags.items())
+    if (d.severity == radx::Severity::Warning) warnings += radx::Diagnostics::format(d) + "\n";
+  CHECK(warnings.find("carries no force, only its mass") != std::string::npos);
+  // The free node flies at its initial velocity: no spring force acts on it (100 mm/s over 1 ms).
+  const auto tr = run(m, 1e-3);
+  REQUIRE_FALSE(tr.u.empty());
+  CHECK(std::abs(tr.u.back() - 100.0 * tr.t.back()) < 1e-9);
+}
