@@ -17,12 +17,19 @@ std::string rbody_deck(int skew) {
   std::string s = radx::test::begin_block(2024);
   s += "/NODE\n" + Line().put(1, 1, 10).put(0.0, 11, 30).put(0.0, 31, 50).put(0.0, 51, 70).str() + "\n" +
        Line().put(2, 1, 10).put(1.0, 11, 30).put(0.0, 31, 50).put(0.0, 51, 70).str() + "\n";
-  s += "/SKEW/FIX/5\nturned about Z\n" + Line().put(0.0, 1, 20).put(0.0, 21, 40).put(0.0, 41, 60).str() + "\n" +
-       Line().put(-1.0, 1, 20).put(0.0, 21, 40).put(0.0, 41, 60).str() + "\n" +
+  s += "/SKEW/FIX/5\nturned about Z\n" + Line().put(0.0, 1, 20).put(0.0, 21, 40).put(0.0, 41, 60).str() +
+       "\n" + Line().put(-1.0, 1, 20).put(0.0, 21, 40).put(0.0, 41, 60).str() + "\n" +
        Line().put(0.0, 1, 20).put(0.0, 21, 40).put(1.0, 41, 60).str() + "\n";
   s += "/GRNOD/NODE/1\ncarried\n" + Line().put(2, 1, 10).str() + "\n";
   s += "/RBODY/1\nbody\n" +
-       Line().put(1, 1, 10).put(0, 11, 20).put(skew, 21, 30).put(0, 31, 40).put(1e-3, 41, 60).put(1, 61, 70).str() +
+       Line()
+           .put(1, 1, 10)
+           .put(0, 11, 20)
+           .put(skew, 21, 30)
+           .put(0, 31, 40)
+           .put(1e-3, 41, 60)
+           .put(1, 61, 70)
+           .str() +
        "\n" + Line().put(10.0, 1, 20).put(20.0, 21, 40).put(30.0, 41, 60).str() + "\n" +
        Line().put(1.0, 1, 20).put(0.0, 21, 40).put(0.0, 41, 60).str() + "\n";
   s += "/END\n";
