@@ -771,6 +771,8 @@ STARTER = {
     "/GRAV": ("id", True, grav, None, None),
     "/SKEW/FIX": ("id", True, skew_fix, None, None),
     "/SKEW/MOV": ("id", True, skew_mov, None, None),
+    "/FRAME/FIX": ("id", True, skew_fix, None, None),
+    "/FRAME/MOV": ("id", True, skew_mov, None, None),
     "/CLOAD": ("id", True, cload, None, None),
     "/PLOAD": ("id", True, pload, None, None),
     "/RWALL/PLANE": ("id", True, rwall_plane, None, None),
@@ -2412,58 +2414,72 @@ def loads(tables):
 
 
 def skews(tables):
-    """Skews (build_skews.cpp; one id space for /SKEW/FIX and /SKEW/MOV): a fixed frame needs two independent
-    directions, a moving one three distinct existing nodes, N2 off N1 and N3 off the line N1 N2 (sine of the
-    angle > 1e-5), Dir X, Y, Z or blank; the loads and conditions may name one."""
+    """Skews and frames (build_skews.cpp; one id space for /SKEW/FIX, /SKEW/MOV, /FRAME/FIX and /FRAME/MOV): a
+    fixed one needs two independent directions (a skew's direction with only a Y (Z) component is its sign, a
+    frame's is used as given), a moving one three distinct existing nodes, N2 off N1 and N3 off the line N1 N2
+    (sine of the angle > 1e-5), Dir X, Y, Z or blank; the loads and conditions may name a skew only, /IMPVEL and
+    /IMPDISP frame_ID a frame (refused: RX510)."""
     I, by_id, m, nodes = tables.issue, tables.by_id, tables.m, tables.nodes
-    skews = by_id(("/SKEW/FIX", "/SKEW/MOV"), "skew")
-    for o in skews.values():
-        if o["path"] != "/SKEW/MOV":
+    both = by_id(("/SKEW/FIX", "/SKEW/MOV", "/FRAME/FIX", "/FRAME/MOV"), "skew or frame")
+    skews = {k: o for k, o in both.items() if o["path"].startswith("/SKEW/")}
+    frames = {k: o for k, o in both.items() if o["path"].startswith("/FRAME/")}
+    for o in both.values():
+        if o["path"] not in ("/SKEW/MOV", "/FRAME/MOV"):
             continue
         ids = [val(o, k, 0) for k in ("N1", "N2", "N3")]
         d = str(val(o, "Dir", "")).strip().upper()
         if d not in ("", "X", "Y", "Z"):
             p = pos(o, "Dir")
-            I("RX501", p[0], p[1], "/SKEW/MOV %d: Dir = %r is not X, Y or Z" % (o["id"], d))
+            I("RX501", p[0], p[1], "%s %d: Dir = %r is not X, Y or Z" % (o["path"], o["id"], d))
         bad = False
         for k, x in zip(("N1", "N2", "N3"), ids):
             p = pos(o, k)
             if x == 0:
-                I("RX502", p[0], p[1], "/SKEW/MOV %d: %s is required" % (o["id"], k))
+                I("RX502", p[0], p[1], "%s %d: %s is required" % (o["path"], o["id"], k))
                 bad = True
             elif x not in nodes:
-                I("RX402", p[0], p[1], "/SKEW/MOV %d: node %d does not exist" % (o["id"], x))
+                I("RX402", p[0], p[1], "%s %d: node %d does not exist" % (o["path"], o["id"], x))
                 bad = True
         if bad:
             continue
         p = pos(o, "N1")
         if len(set(ids)) < 3:
-            I("RX507", p[0], p[1], "/SKEW/MOV %d: the nodes %s are not distinct" % (o["id"], ids))
+            I("RX507", p[0], p[1], "%s %d: the nodes %s are not distinct" % (o["path"], o["id"], ids))
             continue
         e = sub(nodes[ids[1]], nodes[ids[0]])
         t = sub(nodes[ids[2]], nodes[ids[0]])
         if norm(e) == 0:
-            I("RX507", p[0], p[1], "/SKEW/MOV %d: N2 sits on N1" % o["id"])
+            I("RX507", p[0], p[1], "%s %d: N2 sits on N1" % (o["path"], o["id"]))
         elif norm(cross(e, t)) <= 1e-5 * norm(e) * norm(t):
-            I("RX507", p[0], p[1], "/SKEW/MOV %d: N3 lies on the line N1 N2" % o["id"])
-    for o in skews.values():
-        if o["path"] != "/SKEW/FIX":
+            I("RX507", p[0], p[1], "%s %d: N3 lies on the line N1 N2" % (o["path"], o["id"]))
+    for o in both.values():
+        if o["path"] not in ("/SKEW/FIX", "/FRAME/FIX"):
             continue
         y = [val(o, k, 0.0) for k in ("X1", "Y1", "Z1")]
         z = [val(o, k, 0.0) for k in ("X2", "Y2", "Z2")]
-        if y[0] == 0 and y[2] == 0:
-            y[1] = -1.0 if y[1] < 0 else 1.0
-        if z[0] == 0 and z[1] == 0:
-            z[2] = -1.0 if z[2] < 0 else 1.0
-        if norm(cross(y, z)) <= 1e-12 * norm(y) * norm(z):
+        if o["path"] == "/SKEW/FIX":
+            if y[0] == 0 and y[2] == 0:
+                y[1] = -1.0 if y[1] < 0 else 1.0
+            if z[0] == 0 and z[1] == 0:
+                z[2] = -1.0 if z[2] < 0 else 1.0
+        if norm(z) == 0 or norm(cross(y, z)) <= 1e-12 * norm(y) * norm(z):
             p = pos(o, "X2")
-            I("RX507", p[0], p[1], "/SKEW/FIX %d: Y' and Z' are parallel" % o["id"])
+            I("RX507", p[0], p[1], "%s %d: Y' and Z' are parallel or zero" % (o["path"], o["id"]))
     for o in m.of("/BCS", "/IMPVEL", "/IMPDISP", "/INIVEL/TRA", "/INIVEL/T+G", "/INIVEL/ROT", "/CLOAD", "/GRAV"):
         sk = val(o, "skew_ID", 0)
         if sk and sk not in skews:
             p = pos(o, "skew_ID")
             I("RX402", p[0], p[1], "%s %d: skew %d does not exist" % (o["path"], o["id"], sk))
+    for o in m.of("/IMPVEL", "/IMPDISP"):
+        fr = val(o, "frame_ID", 0)
+        if fr:
+            p = pos(o, "frame_ID")
+            if fr not in frames:
+                I("RX402", p[0], p[1], "%s %d: frame %d does not exist" % (o["path"], o["id"], fr))
+            else:
+                I("RX510", p[0], p[1], "%s %d: imposed relative to frame %d" % (o["path"], o["id"], fr))
     tables.skews = skews
+    tables.frames = frames
 
 
 def random_perturbation(tables):
@@ -2730,7 +2746,11 @@ def time_history(tables):
     for o in m.of("/TH/NODE", "/TH/SHEL", "/TH/SH3N"):
         for r, p in o["recs"]:
             sk = r.get("skew_ID") or 0
-            if sk and sk not in skews:
+            # a /TH/NODE skew_ID may name a frame: a /FRAME/FIX is written, a /FRAME/MOV refused (RX509)
+            if sk and o["path"] == "/TH/NODE" and sk in tables.frames:
+                if tables.frames[sk]["path"] == "/FRAME/MOV":
+                    I("RX509", p[0], p[1], "%s %d: node in moving frame %d" % (o["path"], o["id"], sk))
+            elif sk and sk not in skews and sk not in tables.frames:
                 I("RX402", p[0], p[1], "%s %d: skew %d does not exist" % (o["path"], o["id"], sk))
             elif sk and o["path"] != "/TH/NODE":
                 I("RX509", p[0], p[1], "%s %d: shell results in skew %d" % (o["path"], o["id"], sk))

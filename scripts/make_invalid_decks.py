@@ -1693,18 +1693,61 @@ def _():
         [("RX402", "TH_OBJ")]
 
 
-@fault("th_node_frame_skew")
+def frame_rows(keyword, fid=7, title="Frame", **fields):
+    """/FRAME/FIX or /FRAME/MOV with id fid (tag FRF or FRM): the cards of /SKEW/FIX and /SKEW/MOV."""
+    return block("FRF" if keyword == "/FRAME/FIX" else "FRM", keyword, fid, title, **fields)
+
+
+def frame_fix_rows(fid=7, y_axis=(0.0, 1.0, 0.0), title="Fixed frame"):
+    """/FRAME/FIX/fid at (1, 2, 3) with Y' = y_axis and Z' = (0, 0, 1) (tag FRF)."""
+    return frame_rows("/FRAME/FIX", fid, title, Ox=1.0, Oy=2.0, Oz=3.0, X1=y_axis[0], Y1=y_axis[1], Z1=y_axis[2],
+                      X2=0.0, Y2=0.0, Z2=1.0)
+
+
+@fault("th_node_moving_frame")
 def _():
-    # Radioss's /TH/NODE skew field may name a /FRAME; radx reads no /FRAME and says the id names one.
-    rows = [("/FRAME/FIX/7", "FR_KW"), "Fixed frame"] + foreign(
-        (rc.Card(rc.i("N1"), rc.i("N2"), rc.i("N3")), [0, 0, 0]),
-        (rc.Card(rc.r("X0"), rc.r("Y0"), rc.r("Z0")), [0.0, 0.0, 0.0]),
-        (rc.Card(rc.r("X1"), rc.r("Y1"), rc.r("Z1")), [1.0, 0.0, 0.0]),
-        (rc.Card(rc.r("X2"), rc.r("Y2"), rc.r("Z2")), [0.0, 1.0, 0.0]))
-    d = with_rows(rows)
-    d.insert_before("BEFORE_END", th_rows("/TH/NODE", "Plate corner in a frame", ["DEF"], records=[(1, 7)]))
-    return d, "/TH/NODE/1 lists node 1 in frame 7 (/FRAME/FIX/7, which radx does not read): the TH error says " \
-        "it names a /FRAME", [("RX302", "FR_KW"), ("RX402", "TH_OBJ")]
+    # Radioss writes a node in a /FRAME/MOV relative to the moving frame (its velocity and rotation taken out).
+    d = with_rows(frame_rows("/FRAME/MOV", 7, "Frame on plate nodes", N1=1, N2=2, N3=4, Dir=""),
+                  th_rows("/TH/NODE", "Plate corner in a moving frame", ["DEF"], records=[(1, 7)]))
+    return d, "/TH/NODE/1 lists node 1 in /FRAME/MOV/7: radx does not write motion relative to a moving frame", \
+        [("RX509", "TH_OBJ")]
+
+
+@fault("frame_skew_duplicate_id")
+def _():
+    d = base()
+    d.insert_before("BCS_KW", skew_fix_rows((0.0, 1.0, 0.0), "Fixed skew") + frame_fix_rows(5))
+    return d, "/SKEW/FIX/5 and /FRAME/FIX/5: skews and frames share one id space", [("RX401", "FRF_KW")]
+
+
+@fault("bcs_skew_names_frame")
+def _():
+    d = base()
+    d.insert_before("BCS_KW", frame_fix_rows(5))
+    d.update("BCS", skew_ID=5)
+    return d, "/BCS/1 skew_ID = 5 names /FRAME/FIX/5: Radioss reads a /BCS skew_ID as a skew only", \
+        [("RX402", "BCS.skew_ID")]
+
+
+@fault("impvel_in_frame")
+def _():
+    d = with_rows(frame_fix_rows(7), impvel_rows(7), funct_rows(7, [(0.0, 0.0), (0.002, 1.0)], "Speed"))
+    d.update("IMP", frame_ID=7)
+    return d, "/IMPVEL/1 frame_ID = 7: radx does not impose a velocity relative to a frame", \
+        [("RX510", "IMP.frame_ID")]
+
+
+@fault("frame_fix_zero_axis")
+def _():
+    # A skew's Y' of (0, 0, 0) is taken as (0, 1, 0); a frame's is used as given (OpenRadioss hm_read_frm.F).
+    d = with_rows(frame_fix_rows(7, (0.0, 0.0, 0.0), "Frame without Y'"))
+    return d, "/FRAME/FIX/7 with Y' = (0, 0, 0): no frame", [("RX507", "FRF.X2")]
+
+
+@fault("frame_mov_collinear_nodes")
+def _():
+    d = with_rows(frame_rows("/FRAME/MOV", 7, "Frame on a line", N1=1, N2=2, N3=3, Dir=""))
+    return d, "/FRAME/MOV/7 on nodes 1, 2, 3, which lie on the line y = 0: no plane", [("RX507", "FRM.N1")]
 
 
 @fault("th_shel_in_skew")

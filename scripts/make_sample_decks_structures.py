@@ -9,7 +9,7 @@ NAME_0001.rad (engine), README.md and the regression reference NAME.ref.
 Decks (units Mg, mm, s: MPa, N, mJ):
   taylor_bar       Taylor impact of a Johnson-Cook copper cylinder on a /RWALL/PLANE
   bar_rwall        elastic bar on a rigid wall: contact time 2 L / c, force rho c A v0, rebound at v0
-  imposed_loads    /CLOAD, /PLOAD, /IMPVEL (started by a /SENSOR/TIME) and /IMPDISP along a /SKEW/FIX
+  imposed_loads    /CLOAD, /PLOAD, /IMPVEL (started by a /SENSOR/TIME) and /IMPDISP along a /SKEW/FIX; /FRAME/FIX, /FRAME/MOV
   mixed_idel       a brick projectile perforating a Johnson-Cook shell plate whose shells fail, TYPE7 Idel
   perforation_tab  the same with a tabulated plate (/MAT/PLAS_TAB, three strain rates) failing by /FAIL/JOHNSON
   brittle_strip    a /MAT/PLAS_BRIT (law 27) strip pulled until its crack opens and its elements are deleted
@@ -366,12 +366,21 @@ def imposed_loads():
     d.card("/IMPDISP", 4, "Block 4 moved along x' of skew 1", fill=0, funct_IDT=1, Dir="X", skew_ID=1,
            sensor_ID=0, grnod_ID=5, frame_ID=0, Icoor=0, Ascale_x=0.0, Fscale_y=p["DISP"], Tstart=0.0,
            Tstop=0.0)
+    d.comment("/FRAME/FIX 2: the axes of skew 1 with its origin at the block's corner 301; a /TH/NODE in a frame",
+              "measures positions from the frame's origin (in a skew from the global origin)")
+    d.card("/FRAME/FIX", 2, "Rail frame at the block corner", Ox=0.0, Oy=90.0, Oz=-5.0,
+           X1=round(-math.sin(th), 15), Y1=round(math.cos(th), 15), Z1=0.0, X2=0.0, Y2=0.0, Z2=1.0)
+    d.comment("/FRAME/MOV 3: carried by the block's nodes 301 (origin), 302 (X') and 303 (X'Y' plane); it turns",
+              "with them, but radx writes no time history relative to a moving frame (RX509), so nothing uses it")
+    d.card("/FRAME/MOV", 3, "Frame on the block", N1=301, N2=302, N3=303, Dir="X")
     d.ruler()
     d.card("/TH/NODE", 1, "Strip tips; bar end and middle; block corner", variables=["DEF"],
            rows=[(tip_a_mid, 0, "strip 1 tip (force)"), (tip_b_mid, 0, "strip 2 tip (pressure)"),
                  (bar_pulled[0], 0, "bar 3 pulled end"), (bar_mid, 0, "bar 3 middle"),
                  (301, 0, "block 4 corner in global axes"), (302, 1, "block 4 corner in skew 1 axes")])
     d.card("/TH/PART", 2, "Part energies", variables=["DEF"], ids=[1, 2, 3, 4])
+    d.card("/TH/NODE", 3, "Block corner in frame 2", variables=["XYZ"],
+           rows=[(302, 2, "block 4 corner 302 from corner 301 on the rail axes")])
     d.ruler()
     d.raw("/END")
     e = engine(run, p["T_STOP"], 2e-4, 1e-3, ["VONM"], ["VEL", "DISP", "FREAC"],
@@ -884,6 +893,9 @@ bending frequency is f1 = {g(f1)} Hz (period {g(1e3 / f1)} ms): the ramp spans 5
 its rate, so the strips follow it almost statically (the dynamic overshoot of such a ramp is about
 (1 / (f1 T))^2 / 4, 1 %, and less at the end of a smooth ramp). Outputs: `/TH/NODE/1` (strip tips 42 and 142,
 bar end 211 and middle 206, block corner 301 in global axes and block corner 302 on the skew's axes),
+`/TH/NODE/3` (block corner 302 in `/FRAME/FIX/2`, the skew's axes with the origin at corner 301 at t = 0:
+X' = 10 cos 30 + 5 = 13.660254 mm and Y' = -10 sin 30 = -5 mm at the end; `/FRAME/MOV/3` rides on the block
+but nothing uses it),
 `/TH/PART/2` (the four parts); states every 1e-3 s with VONM, VEL, DISP and FREAC (reaction forces). Tstop
 {g(p['T_STOP'])} s.
 
@@ -921,6 +933,8 @@ work 315.2 mJ). 24161 cycles, about 0.7 s on one core.
         ("th:part/2:3:IE@0.02", "0.01", "0", "bar strain energy within 1 % of E A u^2 / (2 L)"),
         ("th:node/1:%d:DX@0.004" % x["bar_end"], "0", "1e-9", "bar end still at rest before the sensor"),
         ("th:node/1:302:DX@0.02", "0", "1e-6", "imposed displacement along the skew axis, exact"),
+        ("th:node/3:302:X@0.02", "0", "1e-6", "10 cos 30 + 5 from the frame's origin: the edge, then the slide"),
+        ("th:node/3:302:Y@0.02", "0", "1e-6", "-10 sin 30 from the frame's origin, exact"),
     ])
     return run, d, e, readme, ref
 

@@ -289,7 +289,7 @@ RADX_SCHEMA(ImposedFinalGeometry, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(
             RADX_FIELD(ascale_x), RADX_FIELD(t_start), RADX_FIELD(t_stop), RADX_FIELD(nodes),
             RADX_FIELD(targets));
 RADX_SCHEMA(Skew, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(origin), RADX_FIELD(axes), RADX_FIELD(n1),
-            RADX_FIELD(n2), RADX_FIELD(n3), RADX_FIELD(dir));
+            RADX_FIELD(n2), RADX_FIELD(n3), RADX_FIELD(dir), RADX_FIELD(frame));
 RADX_SCHEMA(AddedMass, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(type), RADX_FIELD(mass),
             RADX_FIELD(group));
 RADX_SCHEMA(InitialVelocity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(v), RADX_FIELD(group),

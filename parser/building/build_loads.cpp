@@ -17,8 +17,9 @@
 //   ICoG 0 -> 1 (docs/theory/elements.md 7.2).
 // * /TH/*: group names (DEF, D, V, ...) are expanded to variables; objects resolve to dense indices; the
 //   variables radx accepts but writes as 0 are named in a warning.
-// /FRAME is not read by radx, so a non-zero reference to one cannot be resolved and is reported as a missing
-// reference. Skews are /SKEW/FIX and /SKEW/MOV (build_skews.cpp).
+// Skews are /SKEW/FIX and /SKEW/MOV, frames /FRAME/FIX and /FRAME/MOV (build_skews.cpp). Among the fields
+// radx reads, only a /TH/NODE skew_ID may name a frame (as in Radioss, hm_read_thgrou.F); /IMPVEL's
+// frame_ID names one too, and radx refuses it (it does not impose velocities relative to a frame).
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -80,26 +81,27 @@ const NodeList& nodes_of(ModelBuilder& b, std::int32_t group) {
   return nodes ? *nodes : kEmpty;
 }
 
-// A reference to a kind of object radx does not read (/FRAME, a /TH skew): only 0 is accepted.
-std::string unreadable_ref_text(std::string_view field, std::int64_t id, std::string_view target,
-                                std::string_view zero_means) {
-  return std::string(field) + " = " + std::to_string(id) + ": there is no " + std::string(target) + "/" +
-         std::to_string(id) + " in the deck; radx does not read " + std::string(target) +
-         " (not supported), so leave " + std::string(field) + " blank or 0 (" + std::string(zero_means) + ")";
-}
-std::int64_t unreadable_ref(ModelBuilder& b, const KeywordRecord& r, std::string_view field,
-                            std::string_view target, std::string_view zero_means) {
-  const std::int64_t id = r.get_int(field);
-  if (id != 0)
-    b.error_at(r, field, Diag::MissingReference, unreadable_ref_text(field, id, target, zero_means));
-  return id;
+// The /FRAME/FIX or /FRAME/MOV record with user id `id`, if the deck has one.
+const KeywordRecord* frame_record(const ModelBuilder& b, std::int64_t id) {
+  for (const char* path : {"/FRAME/FIX", "/FRAME/MOV"})
+    for (const auto* r : b.deck_.of(path))
+      if (r->id == id) return r;
+  return nullptr;
 }
 // "there is no /SKEW/FIX/7 or /SKEW/MOV/7 in the deck; 0 = global axes" when skew `id` is not in the deck,
-// empty when it is (or id is 0).
+// empty when it is (or id is 0). Skews and frames share one id space, and Radioss resolves most skew fields
+// among the skews only (hm_read_bcs.F, hm_read_cload.F, ...): a frame there is named as such.
 std::string missing_skew_text(const ModelBuilder& b, std::string_view field, std::int64_t id) {
   if (id == 0 || b.skew_ids_.find(id) != b.skew_ids_.end()) return {};
   const std::string s = std::to_string(id);
-  // Radioss's skew fields (a /TH/NODE skew_ID among them) may name a /FRAME: say so rather than "no skew".
+  if (const KeywordRecord* f = frame_record(b, id)) {
+    const Where w = b.deck_.where(f->pos);
+    return std::string(field) + " = " + s + " names " + std::string(f->decl->path) + "/" + s + " (" +
+           std::string(w.file) + ":" + std::to_string(w.line) +
+           "), a frame: Radioss reads this field as a skew only; give a " +
+           "/SKEW/FIX or /SKEW/MOV, or 0 for the global axes";
+  }
+  // Frames radx does not read (/FRAME/MOV2, /FRAME/NOD) are in the deck's unread keywords.
   const auto& unread = b.deck_.unread;
   const auto frame = std::find_if(unread.begin(), unread.end(), [&](const Deck::Unread& u) {
     return u.id == id && u.path.rfind("/FRAME/", 0) == 0;
@@ -107,7 +109,7 @@ std::string missing_skew_text(const ModelBuilder& b, std::string_view field, std
   if (frame != unread.end()) {
     const Where w = b.deck_.where(frame->pos);
     return std::string(field) + " = " + s + " names " + frame->path + " " + s + " (" + std::string(w.file) +
-           ":" + std::to_string(w.line) + "), a frame: radx does not read /FRAME (reported there); give a " +
+           ":" + std::to_string(w.line) + "), a frame radx does not read (reported there); give a " +
            "/SKEW/FIX or /SKEW/MOV, or 0 for the global axes";
   }
   return std::string(field) + " = " + s + ": there is no /SKEW/FIX/" + s + " or /SKEW/MOV/" + s +
@@ -271,7 +273,19 @@ void build_imposed_velocities(ModelBuilder& b) {
                 "accepted: X, Y, Z, or /IMPVEL with the rotational velocity");
       v.skew = skew_ref(b, r);
       v.sensor = b.sensor_ref(r);
-      v.frame = unreadable_ref(b, r, "frame_ID", "/FRAME", "no moving frame");
+      v.frame = r.get_int("frame_ID");
+      if (v.frame != 0 && b.frame_ids_.count(v.frame) == 0)
+        b.error_at(r, "frame_ID", Diag::MissingReference,
+                   "frame_ID = " + std::to_string(v.frame) + ": there is no /FRAME/FIX/" +
+                       std::to_string(v.frame) + " or /FRAME/MOV/" + std::to_string(v.frame) +
+                       " in the deck; 0 = none");
+      else if (v.frame != 0)
+        b.error_at(
+            r, "frame_ID", Diag::PhysicsNotImplemented,
+            "frame_ID = " + std::to_string(v.frame) + ": radx does not impose " +
+                std::string(displacement ? "displacements" : "velocities") +
+                " relative to a frame (Radioss adds the frame's own motion); leave frame_ID blank or 0, "
+                "or give the direction in a skew_ID");
       v.icoor = geti(r, "Icoor");
       v.group = group_ref(b, r, "grnod_ID", false);
       v.ascale_x = real_or(r, "Ascale_x", 1.0);
@@ -285,7 +299,7 @@ void build_imposed_velocities(ModelBuilder& b) {
                        " would never be imposed; need Tstop > Tstart (0 = never stop)");
       if (v.icoor == 1 && v.frame == 0)
         b.error_at(r, "Icoor", Diag::InconsistentValues,
-                   "Icoor = 1 (cylindrical) needs a moving frame (frame_ID), which radx does not read; use "
+                   "Icoor = 1 (cylindrical) needs a frame (frame_ID), which radx does not run; use "
                    "Icoor = 0 (Cartesian)");
       return v;
     });
@@ -969,12 +983,24 @@ void th_objects(ModelBuilder& b, const KeywordRecord& r, const ThKindDef& k, mod
       take(t.ints[cid][i], t.pos[i]);
       const std::int64_t skew = cskew >= 0 ? t.ints[cskew][i] : 0;
       if (k.kind == model::ThKind::Node && out.size() > before) g.skews.push_back(skew);
-      if (auto text = missing_skew_text(b, "skew_ID", skew); !text.empty())
+      // A TH skew_ID may name a frame (Radioss looks among the skews, then the frames, hm_read_thgrou.F);
+      // radx writes a node in a /FRAME/FIX but not in a /FRAME/MOV, whose velocities Radioss gives relative
+      // to the moving frame (the frame's own velocity and rotation taken out), which radx does not compute.
+      const KeywordRecord* f = b.frame_ids_.count(skew) != 0 ? frame_record(b, skew) : nullptr;
+      if (f && k.kind == model::ThKind::Node) {
+        if (f->decl->path == std::string_view("/FRAME/MOV"))
+          b.diags_.error(Diag::UnimplementedOption, b.at(t.pos[i], 11), ModelBuilder::about(r),
+                         "skew_ID = " + std::to_string(skew) + " names /FRAME/MOV/" + std::to_string(skew) +
+                             ": radx does not write a node's motion relative to a moving frame; give a "
+                             "/FRAME/FIX, a /SKEW/MOV (the same axes, absolute motion) or 0");
+      } else if (auto text = f ? std::string() : missing_skew_text(b, "skew_ID", skew); !text.empty()) {
         b.diags_.error(Diag::MissingReference, b.at(t.pos[i], 11), ModelBuilder::about(r), std::move(text));
-      else if (skew != 0 && k.kind != model::ThKind::Node)
+      } else if (skew != 0 && k.kind != model::ThKind::Node) {
         b.diags_.error(Diag::UnimplementedOption, b.at(t.pos[i], 11), ModelBuilder::about(r),
                        "skew_ID = " + std::to_string(skew) + ": radx writes " + std::string(k.object) +
-                           " results in the element frame only, not in a skew; leave skew_ID blank or 0");
+                           " results in the element frame only, not in a skew or frame; leave skew_ID blank "
+                           "or 0");
+      }
     }
   } else {
     for (std::size_t i = 0; i < r.ids.size(); ++i) take(r.ids[i], r.id_pos[i]);

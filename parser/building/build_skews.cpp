@@ -1,5 +1,7 @@
 // Deck -> Model: /SKEW/FIX and /SKEW/MOV, the frames that /BCS, /IMPVEL, /IMPDISP, /INIVEL, /CLOAD, /GRAV,
-// /ACCEL and /TH/NODE may name. The two keywords share one id space.
+// /ACCEL and /TH/NODE may name, and /FRAME/FIX and /FRAME/MOV, which only /TH/NODE reads among the keywords
+// radx runs (docs/theory/frames.md). The four keywords share one id space, as in Radioss (its starter checks
+// skew and frame ids together for duplicates).
 //
 // /SKEW/FIX: Y' = (X1, Y1, Z1), Z' = (X2, Y2, Z2) as given (a direction with only a Y (resp. Z) component is
 //   taken as its sign, as Radioss does), x' = Y' x Z', y' = Z' x x', z' = Z'; each normalised. x' = 0 (Y'
@@ -9,6 +11,9 @@
 //   (model::node_skew_axes). The three nodes must exist and be distinct, N2 must not sit on N1, and N3 must
 //   not lie on the line N1 N2 at t = 0: the sine of the angle between N1N2 and N1N3 must exceed 1e-5.
 //   Radioss only warns about the last (message 163) and bends N1N3 off the line; radx refuses the deck.
+// /FRAME/FIX, /FRAME/MOV: the same cards and the same axes (OpenRadioss hm_read_frm.F), with one difference:
+//   a frame's Y' or Z' direction is used as given, with no "only a Y component means its sign" rule, so a
+//   zero direction leaves no frame (Radioss would keep zero axes) and is the same error as for a skew.
 #include <cctype>
 #include <cmath>
 #include <string>
@@ -40,8 +45,10 @@ bool fixed_skew(ModelBuilder& b, const KeywordRecord& r, model::Skew& s) {
   s.origin = b.submodel_point(r, {r.get_real("Ox"), r.get_real("Oy"), r.get_real("Oz")});
   V3 y = {r.get_real("X1"), r.get_real("Y1"), r.get_real("Z1")};
   V3 z = {r.get_real("X2"), r.get_real("Y2"), r.get_real("Z2")};
-  if (y[0] == 0 && y[2] == 0) y[1] = y[1] < 0 ? -1.0 : 1.0;
-  if (z[0] == 0 && z[1] == 0) z[2] = z[2] < 0 ? -1.0 : 1.0;
+  if (!s.frame) {
+    if (y[0] == 0 && y[2] == 0) y[1] = y[1] < 0 ? -1.0 : 1.0;
+    if (z[0] == 0 && z[1] == 0) z[2] = z[2] < 0 ? -1.0 : 1.0;
+  }
   // Directions written inside a submodel turn with it.
   y = b.submodel_vector(r, y);
   z = b.submodel_vector(r, z);
@@ -96,8 +103,8 @@ bool moving_skew(ModelBuilder& b, const KeywordRecord& r, model::Skew& s) {
       if (ids[i] == ids[j]) {
         b.error_at(r, fields[j], Diag::InconsistentValues,
                    std::string(fields[i]) + " and " + fields[j] + " are the same node " +
-                       std::to_string(ids[i]) +
-                       ": a moving skew needs three distinct nodes (N1 origin, N2 its axis, N3 its plane)");
+                       std::to_string(ids[i]) + ": a moving " + std::string(s.frame ? "frame" : "skew") +
+                       " needs three distinct nodes (N1 origin, N2 its axis, N3 its plane)");
         return false;
       }
   const auto& n = b.m_.nodes;
@@ -134,6 +141,24 @@ void ModelBuilder::build_skews() {
       s.title = r->title;
       // Registered before the frame is checked: a degenerate frame is one error, not one more per use.
       if (!register_id(skew_ids_, s.id, static_cast<std::int32_t>(m_.skews.size()), *r, "skew", first))
+        continue;
+      if (moving ? moving_skew(*this, *r, s) : fixed_skew(*this, *r, s)) m_.skews.push_back(std::move(s));
+    }
+  for (const auto& [path, moving] : {std::pair{"/FRAME/FIX", false}, {"/FRAME/MOV", true}})
+    for (const auto* r : deck_.of(path)) {
+      model::Skew s;
+      s.id = r->id;
+      s.title = r->title;
+      s.frame = true;
+      if (skew_ids_.count(s.id) != 0) {
+        const SourcePos p = first[s.id];
+        diags_.error(Diag::DuplicateId, at(r->pos, 1), about(*r),
+                     "frame id " + std::to_string(s.id) + " is already used by a skew at " +
+                         deck_.files[p.file] + ":" + std::to_string(p.line) +
+                         "; skews and frames share one id space (a skew_ID may name either)");
+        continue;
+      }
+      if (!register_id(frame_ids_, s.id, static_cast<std::int32_t>(m_.skews.size()), *r, "frame", first))
         continue;
       if (moving ? moving_skew(*this, *r, s) : fixed_skew(*this, *r, s)) m_.skews.push_back(std::move(s));
     }

@@ -199,6 +199,9 @@ class ModelBuilder {
 
   IdIndex mat_ids_, prop_ids_, part_ids_, subset_ids_, box_ids_, funct_ids_, grnod_ids_, surf_ids_,
       inter_ids_, rwall_ids_, rbody_ids_, skew_ids_, sect_ids_, accel_ids_, sensor_ids_;
+  // /FRAME/FIX and /FRAME/MOV: in m_.skews with the skews, but apart from skew_ids_ so that a field Radioss
+  // reads as a skew only does not accept a frame. The two indexes share one id space.
+  IdIndex frame_ids_;
   std::vector<Set> sets_;
   IdIndex set_ids_, collect_set_ids_;  // /SET/GENERAL and /SET/COLLECT ids -> sets_
   std::vector<ElementGroup> element_groups_;

@@ -1794,9 +1794,16 @@ void add_loads(std::vector<KeywordDecl>& t) {
                                I("grnod_ID", 21, 30, "nodes concerned").refs(IdKind::Other).must()})};
     t.push_back(std::move(k));
   }
-  {
-    KeywordDecl k = kw("/SKEW/FIX", "fixed frame: origin, Y' and Z' directions (x' = Y' x Z', y' = z' x x')",
-                       Header::IdUnit, true, "skew_ID");
+  // /FRAME/FIX and /FRAME/MOV have the cards of /SKEW/FIX and /SKEW/MOV (OpenRadioss hm_read_frm.F builds
+  // their axes the same way) and share the skews' id space.
+  for (const auto& [path, meaning, id_name] :
+       {std::tuple{"/SKEW/FIX", "fixed frame: origin, Y' and Z' directions (x' = Y' x Z', y' = z' x x')",
+                   "skew_ID"},
+        std::tuple{"/FRAME/FIX",
+                   "fixed reference frame: origin, Y' and Z' directions (x' = Y' x Z', y' = z' x x'); a "
+                   "/TH/NODE in it measures positions from the origin",
+                   "frame_ID"}}) {
+    KeywordDecl k = kw(path, meaning, Header::IdUnit, true, id_name);
     k.cards = {card("card 1", {R("Ox", 1, 20, "origin X").dims(dim::length),
                                R("Oy", 21, 40, "origin Y").dims(dim::length),
                                R("Oz", 41, 60, "origin Z").dims(dim::length)}),
@@ -1808,12 +1815,16 @@ void add_loads(std::vector<KeywordDecl>& t) {
                                R("Z2", 41, 60, "Z' direction, Z component")})};
     t.push_back(std::move(k));
   }
-  {
-    KeywordDecl k =
-        kw("/SKEW/MOV",
-           "moving frame carried by three nodes: origin N1, the Dir axis along N1 -> N2, N3 in the "
-           "plane of the Dir axis and the next one; rebuilt from the nodes every cycle",
-           Header::IdUnit, true, "skew_ID");
+  for (const auto& [path, meaning, id_name] :
+       {std::tuple{"/SKEW/MOV",
+                   "moving frame carried by three nodes: origin N1, the Dir axis along N1 -> N2, N3 in the "
+                   "plane of the Dir axis and the next one; rebuilt from the nodes every cycle",
+                   "skew_ID"},
+        std::tuple{"/FRAME/MOV",
+                   "moving reference frame carried by three nodes, built as /SKEW/MOV: origin N1, the Dir "
+                   "axis along N1 -> N2, N3 in the plane of the Dir axis and the next one",
+                   "frame_ID"}}) {
+    KeywordDecl k = kw(path, meaning, Header::IdUnit, true, id_name);
     k.cards = {
         card("card 1", {I("N1", 1, 10, "origin node").refs(IdKind::Node).must(),
                         I("N2", 11, 20, "node giving the Dir axis from N1").refs(IdKind::Node).must(),
@@ -2607,10 +2618,10 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/INTER/TYPE21", "/INTER/TYPE23", "/INTER/TYPE24", "/INTER/TYPE25", "/INTER/SUB", "/FRICTION",
         "/DEFAULT", "/INTTHICK",
         // constraints, kinematics, loads, initial state
-        "/SKEW/MOV2", "/FRAME", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT", "/MPC", "/GJOINT",
-        "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPACC", "/IMPTEMP", "/INIVEL/GRID", "/INIVEL/AXIS", "/INIVEL/NODE",
-        "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD", "/RWALL/LAGMUL", "/RWALL/THERM", "/INISHE", "/INIBRI",
-        "/INISH3", "/INITEMP", "/INISTA",
+        "/SKEW/MOV2", "/FRAME/MOV2", "/FRAME/NOD", "/SENSOR", "/RBE2", "/RBE3", "/RLINK", "/CYL_JOINT",
+        "/MPC", "/GJOINT", "/BCS/CYCLIC", "/BCS/LAGMUL", "/IMPACC", "/IMPTEMP", "/INIVEL/GRID",
+        "/INIVEL/AXIS", "/INIVEL/NODE", "/INIVEL/FVM", "/PFLUID", "/PBLAST", "/LOAD", "/RWALL/LAGMUL",
+        "/RWALL/THERM", "/INISHE", "/INIBRI", "/INISH3", "/INITEMP", "/INISTA",
         // physics and model structure
         "/FAIL", "/EOS", "/VISC", "/HEAT", "/MONVOL", "/ALE", "/EULER", "/SPH", "/PARAMETER", "/DEFINE",
         "/TRANSFORM/MATRIX", "/TRANSFORM/POSITION", "/TRANSFORM/AUTOPOSITION", "/INCLUDE", "/ADMAS/2",

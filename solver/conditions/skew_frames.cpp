@@ -6,8 +6,10 @@ namespace radx::solver {
 
 SkewFrames::SkewFrames(const model::Model& m) : model_(m) {
   axes_.reserve(m.skews.size());
+  origins_.reserve(m.skews.size());
   for (std::size_t k = 0; k < m.skews.size(); ++k) {
     axes_.push_back(m.skews[k].axes);
+    origins_.push_back(m.skews[k].origin);
     if (m.skews[k].moving()) moving_.push_back(static_cast<std::int32_t>(k));
   }
 }
@@ -20,6 +22,7 @@ void SkewFrames::update(const NodeState& s) {
   for (const auto i : moving_) {
     const auto& sk = model_.skews[static_cast<std::size_t>(i)];
     axes_[static_cast<std::size_t>(i)] = model::node_skew_axes(at(sk.n1), at(sk.n2), at(sk.n3), sk.dir);
+    origins_[static_cast<std::size_t>(i)] = at(sk.n1);
   }
 }
 

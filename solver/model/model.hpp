@@ -370,6 +370,9 @@ struct Skew {
   std::array<double, 9> axes{1, 0, 0, 0, 1, 0, 0, 0, 1};
   std::int32_t n1 = kNone, n2 = kNone, n3 = kNone;  // /SKEW/MOV nodes; kNone for /SKEW/FIX
   int dir = 0;                                      // /SKEW/MOV Dir: 0 X, 1 Y, 2 Z
+  // A /FRAME/FIX or /FRAME/MOV: built as the skew of the same card, but a /TH/NODE in it measures positions
+  // from its origin, and only the fields that Radioss reads as "skew or frame" accept it.
+  bool frame = false;
   [[nodiscard]] bool moving() const { return n1 != kNone; }
 };
 
@@ -755,7 +758,8 @@ struct Model {
     if (skew == 0) return kNone;
     for (std::size_t k = 0; k < skews.size(); ++k)
       if (skews[k].id == skew) return static_cast<std::int32_t>(k);
-    throw std::out_of_range("no /SKEW/FIX or /SKEW/MOV " + std::to_string(skew) + " in the model");
+    throw std::out_of_range("no /SKEW/FIX, /SKEW/MOV, /FRAME/FIX or /FRAME/MOV " + std::to_string(skew) +
+                            " in the model");
   }
 
   // Dense index in `sensors` of the sensor with user id `sensor`; kNone for 0 (no sensor). Throws

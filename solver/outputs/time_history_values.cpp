@@ -232,14 +232,17 @@ void ThGroupSampler::sample_nodes(const ExplicitEngine& e, const CycleReport& r,
   for (std::size_t o = 0; o < objects_.size(); ++o) {
     const auto n = static_cast<std::size_t>(objects_[o]);
     // Every vector on the axes of the object's skew of this cycle (the global axes for none); X Y Z are
-    // the position's components on those axes, not measured from the skew's origin (OpenRadioss thnod.F).
-    const auto on = [&, sk = skews_[o]](std::array<double, 3> u) { return e.skews().on_axes(sk, u); };
+    // the position's components on those axes, not measured from a skew's origin, but measured from a
+    // frame's (OpenRadioss thnod.F and relfram.F; a /FRAME/FIX here, the starter refuses a /FRAME/MOV).
+    const auto sk = skews_[o];
+    const auto on = [&](std::array<double, 3> u) { return e.skews().on_axes(sk, u); };
+    const std::array<double, 3> o0 = e.skews().is_frame(sk) ? e.skews().origin(sk) : std::array<double, 3>{};
     const auto v = on({s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]});
     const auto reac =
         on({s.mass[n] * s.ax[n] - s.fx[n], s.mass[n] * s.ay[n] - s.fy[n], s.mass[n] * s.az[n] - s.fz[n]});
     const auto mreac = on({s.inertia[n] * s.awx[n] - s.mx[n], s.inertia[n] * s.awy[n] - s.my[n],
                            s.inertia[n] * s.awz[n] - s.mz[n]});
-    const auto x = on({s.x[n], s.y[n], s.z[n]});
+    const auto x = on({s.x[n] - o0[0], s.y[n] - o0[1], s.z[n] - o0[2]});
     const auto disp = on({s.x[n] - s.x0[n], s.y[n] - s.y0[n], s.z[n] - s.z0[n]});
     const auto a = on({s.ax[n], s.ay[n], s.az[n]});
     const auto vr = on({s.wx[n] + h * s.awx[n], s.wy[n] + h * s.awy[n], s.wz[n] + h * s.awz[n]});
