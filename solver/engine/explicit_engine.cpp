@@ -647,6 +647,25 @@ SpringGroup make_spring_group(const model::Model& m, std::pmr::memory_resource* 
   return g;
 }
 
+// The slots of a truss or beam group (`npe` slots an element in `block`): the element, its two nodes and its
+// initial length; then f(slot, element) for what the kind adds.
+template <class LineGroup, class F>
+void fill_line_group(const model::Model& m, const model::ElementBlock& block,
+                     std::span<const std::int32_t> run, LineGroup& g, F&& f) {
+  const auto npe = static_cast<std::size_t>(block.npe());
+  for (int i = 0; i < g.count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const auto e = static_cast<std::size_t>(run[k]);
+    g.element[k] = static_cast<std::int32_t>(e);
+    const auto n1 = block.conn[npe * e], n2 = block.conn[npe * e + 1];
+    g.conn[k] = n1;
+    g.conn[kGroupSize + k] = n2;
+    g.l0[k] = model::norm(model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
+                                     model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]}));
+    f(k, e);
+  }
+}
+
 // A truss group of the elements `run` of one part: the property's area, the initial lengths.
 TrussGroup make_truss_group(const model::Model& m, std::pmr::memory_resource* arena, std::int32_t part,
                             std::span<const std::int32_t> run) {
@@ -655,17 +674,8 @@ TrussGroup make_truss_group(const model::Model& m, std::pmr::memory_resource* ar
   g.allocate(static_cast<int>(run.size()));
   g.part = part;
   g.material = m.parts[part].material;
-  for (int i = 0; i < g.count; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const auto e = static_cast<std::size_t>(run[k]);
-    g.element[k] = static_cast<std::int32_t>(e);
-    const auto n1 = m.trusses.conn[2 * e], n2 = m.trusses.conn[2 * e + 1];
-    g.conn[k] = n1;
-    g.conn[kGroupSize + k] = n2;
-    g.l0[k] = model::norm(model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
-                                     model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]}));
-    g.area0[k] = g.area[k] = prop.area;
-  }
+  fill_line_group(m, m.trusses, run, g,
+                  [&](std::size_t k, std::size_t) { g.area0[k] = g.area[k] = prop.area; });
   return g;
 }
 
@@ -694,18 +704,10 @@ BeamGroup make_beam_group(const model::Model& m, std::pmr::memory_resource* aren
   g.section = {prop.area, prop.iyy, prop.izz, prop.ixx, prop.dm, prop.df, prop.ishear != 0};
   g.releases = {1.0 - prop.release_x, 1.0 - prop.release_y1, 1.0 - prop.release_z1, 1.0 - prop.release_y2,
                 1.0 - prop.release_z2};
-  for (int i = 0; i < g.count; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const auto e = static_cast<std::size_t>(run[k]);
-    g.element[k] = static_cast<std::int32_t>(e);
-    const auto n1 = m.beams.conn[3 * e], n2 = m.beams.conn[3 * e + 1];
-    g.conn[k] = n1;
-    g.conn[kGroupSize + k] = n2;
-    g.l0[k] = model::norm(model::sub(model::Vec3{m.nodes.x[n2], m.nodes.y[n2], m.nodes.z[n2]},
-                                     model::Vec3{m.nodes.x[n1], m.nodes.y[n1], m.nodes.z[n1]}));
+  fill_line_group(m, m.beams, run, g, [&](std::size_t k, std::size_t e) {
     const auto y = beam_initial_y(m, e);
     for (std::size_t d = 0; d < 3; ++d) g.ey[d * kGroupSize + k] = y[d];
-  }
+  });
   return g;
 }
 

@@ -169,10 +169,13 @@ CellValues cell_values(const Solid& g, int i, const NodeState&, const std::vecto
   return c;
 }
 
-// Element i of a truss group: the uniaxial stress sigma e (x) e along its current line in global axes, so
-// that von Mises is |sigma| and the pressure -sigma/3; the volume A0 L0 for the energy density.
-CellValues cell_values(const TrussGroup& g, int i, const NodeState& s,
-                       const std::vector<MaterialParams>& mats) {
+// Element i of a truss or beam group: the uniaxial stress sigma e (x) e along its current line in global
+// axes (a truss's stress, a beam's mean axial stress N / A: the section's forces and moments are in
+// /TH/BEAM), so that von Mises is |sigma| and the pressure -sigma/3; the volume A0 L0 for the energy
+// density.
+template <class LineGroup>
+requires(std::is_same_v<LineGroup, TrussGroup> || std::is_same_v<LineGroup, BeamGroup>) CellValues
+    cell_values(const LineGroup& g, int i, const NodeState& s, const std::vector<MaterialParams>& mats) {
   const auto k = static_cast<std::size_t>(i);
   const auto n1 = static_cast<std::size_t>(g.conn[k]), n2 = static_cast<std::size_t>(g.conn[kGroupSize + k]);
   const Vec3 e = unit(Vec3{s.x[n2] - s.x[n1], s.y[n2] - s.y[n1], s.z[n2] - s.z[n1]});
@@ -181,25 +184,10 @@ CellValues cell_values(const TrussGroup& g, int i, const NodeState& s,
   c.sig = {sigma * e[0] * e[0], sigma * e[1] * e[1], sigma * e[2] * e[2],
            sigma * e[0] * e[1], sigma * e[1] * e[2], sigma * e[2] * e[0]};
   c.eps_p = g.eps_p[k];
-  c.volume0 = g.area0[k] * g.l0[k];
-  c.e_int = g.e_int[k];
-  c.density = mats[static_cast<std::size_t>(g.material)].rho0;
-  return c;
-}
-
-// Element i of a beam group: the mean axial stress N / A along its current line, as a truss's (the section's
-// forces and moments are in /TH/BEAM); the volume A l0 for the energy density.
-CellValues cell_values(const BeamGroup& g, int i, const NodeState& s,
-                       const std::vector<MaterialParams>& mats) {
-  const auto k = static_cast<std::size_t>(i);
-  const auto n1 = static_cast<std::size_t>(g.conn[k]), n2 = static_cast<std::size_t>(g.conn[kGroupSize + k]);
-  const Vec3 e = unit(Vec3{s.x[n2] - s.x[n1], s.y[n2] - s.y[n1], s.z[n2] - s.z[n1]});
-  CellValues c;
-  const double sigma = g.sig[k];
-  c.sig = {sigma * e[0] * e[0], sigma * e[1] * e[1], sigma * e[2] * e[2],
-           sigma * e[0] * e[1], sigma * e[1] * e[2], sigma * e[2] * e[0]};
-  c.eps_p = g.eps_p[k];
-  c.volume0 = g.section.area * g.l0[k];
+  if constexpr (std::is_same_v<LineGroup, TrussGroup>)
+    c.volume0 = g.area0[k] * g.l0[k];
+  else
+    c.volume0 = g.section.area * g.l0[k];
   c.e_int = g.e_int[k];
   c.density = mats[static_cast<std::size_t>(g.material)].rho0;
   return c;
