@@ -16,6 +16,7 @@
 // that deck rather than run it unperturbed without a word.
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "parser/building/model_builder.hpp"
 #include "parser/reading/field_parse.hpp"
@@ -27,7 +28,12 @@ namespace {
 class RadiossRandom {
  public:
   explicit RadiossRandom(double seed) {
-    if (seed != 0.0) state_ = static_cast<std::int32_t>(seed * 32768.0 + 32768.0);
+    if (seed == 0.0) return;
+    // A seed beyond 32 bits (or not a number): Radioss's INT on x86 (cvttsd2si) gives the integer
+    // indefinite, INT32_MIN; in C++ the conversion would be undefined.
+    const double v = seed * 32768.0 + 32768.0;
+    state_ = v > -2147483649.0 && v < 2147483648.0 ? static_cast<std::int32_t>(v)
+                                                   : std::numeric_limits<std::int32_t>::min();
   }
   double next() {
     // 32-bit wrap of 25173 I + 13849, then Fortran's MOD (the sign of the dividend), as C++'s %.

@@ -109,3 +109,16 @@ TEST_CASE("/RANDOM with /RANDOM/GRNOD is refused, a missing group and a negative
   INFO(all2);
   CHECK(all2.find("RX402: [/RANDOM/GRNOD id 9]") != std::string::npos);
 }
+
+TEST_CASE(
+    "/RANDOM with a SEED beyond 32 bits starts from Radioss's integer indefinite, without undefined "
+    "behaviour",
+    "[random]") {
+  // trunc(32768 SEED + 32768) does not fit 32 bits for SEED = 1e10: Radioss's INT on x86 gives INT32_MIN.
+  // The first draw by hand, in 32-bit arithmetic: 25173 (-2^31) + 13849 wraps to -2^31 + 13849 =
+  // -2147469799, whose Fortran MOD 65536 is -51687: r = (-51687 - 32768) / 32768.
+  const double xalea = 0.01;
+  const auto plain = radx::test::model_of_deck(cube_deck(""));
+  const auto m = radx::test::model_of_deck(cube_deck("/RANDOM\n" + random_card(xalea, 1e10)));
+  CHECK(m.nodes.x[0] == Approx(plain.nodes.x[0] + xalea * (-51687.0 - 32768.0) / 32768.0).margin(1e-15));
+}
