@@ -274,36 +274,18 @@ void ModelBuilder::check_formulations() {
   }
   check_shell_only_laws();
   check_ogden_parts();
-  check_truss_laws();
-}
-
-// /PROP/BEAM's fields (hm_read_prop03.F): Df 0 is 0.01; the released rotations from the Wdof digits.
-void ModelBuilder::read_beam_property(const KeywordRecord& r, model::BeamProperty& b) {
-  b.area = r.get_real("Area");
-  b.iyy = r.get_real("Iyy");
-  b.izz = r.get_real("Izz");
-  b.ixx = r.get_real("Ixx");
-  b.dm = r.get_real("Dm");
-  b.df = r.get_real("Df");
-  if (b.df == 0) b.df = 0.01;
-  b.ishear = static_cast<int>(r.get_int("Ishear"));
-  b.ismstr = static_cast<int>(r.get_int("Ismstr"));
-  b.release_x = r.get_int("Wx1") != 0 || r.get_int("Wx2") != 0 ? 1 : 0;
-  b.release_y1 = static_cast<int>(r.get_int("Wy1"));
-  b.release_z1 = static_cast<int>(r.get_int("Wz1"));
-  b.release_y2 = static_cast<int>(r.get_int("Wy2"));
-  b.release_z2 = static_cast<int>(r.get_int("Wz2"));
+  check_truss_and_beam_laws();
 }
 
 // Trusses run laws 1 and 2 (truss_axial.cpp). OpenRadioss's truss runs laws 1, 2, 34 and 44: 34 and 44 radx
 // does not have, so they are refused by name (RX510). Its law 2 takes neither the strain-rate term nor a
 // /FAIL model (m2lawt.F): radx runs it the same and says so with a warning where the deck gives them.
-void ModelBuilder::check_truss_laws() {
+void ModelBuilder::check_truss_and_beam_laws() {
   check_line_element_laws(m_.trusses, "trusses");
   check_line_element_laws(m_.beams, "beams");
   // Small strain (Ismstr 1, 3) takes the initial length in place of the current one: not implemented.
-  for (const auto& rec : deck_.records) {
-    if (rec.decl->path != "/PROP/BEAM") continue;
+  for (const auto* r : deck_.of("/PROP/BEAM")) {
+    const auto& rec = *r;
     const auto ismstr = rec.get_int("Ismstr");
     if (ismstr == 1 || ismstr == 3)
       error_at(
@@ -321,34 +303,35 @@ void ModelBuilder::check_line_element_laws(const model::ElementBlock& block, std
   for (const auto p : block.part)
     if (p >= 0 && static_cast<std::size_t>(p) < used.size()) used[static_cast<std::size_t>(p)] = 1;
   const bool truss = block.type == model::ElementType::Truss2;
-  for (std::size_t p = 0; p < m_.parts.size(); ++p) {
-    const auto& part = m_.parts[p];
-    if (!used[p] || part.material < 0) continue;
+  // One pass over the /PART records (a part's record is where the message points).
+  for (const auto* r : deck_.of("/PART")) {
+    const auto& rec = *r;
+    const auto it = part_ids_.find(rec.id);
+    if (it == part_ids_.end() || !used[static_cast<std::size_t>(it->second)]) continue;
+    const auto& part = m_.parts[static_cast<std::size_t>(it->second)];
+    if (part.material < 0) continue;
     const auto& mat = m_.materials[static_cast<std::size_t>(part.material)];
-    for (const auto& rec : deck_.records) {
-      if (rec.decl->path != "/PART" || rec.id != part.id) continue;
-      const std::string used_by = mat.keyword + " " + std::to_string(mat.id) + " on the " +
-                                  std::string(what) + " of part " + std::to_string(part.id);
-      if (mat.law != model::MaterialLaw::Elastic && mat.law != model::MaterialLaw::JohnsonCook) {
-        error_at(rec, "mat_ID", Diag::PhysicsNotImplemented,
-                 used_by + ": radx's " + std::string(what) +
-                     " run law 1 (/MAT/LAW1, /MAT/ELAST) and law 2 (/MAT/LAW2, /MAT/PLAS_JOHNS) only");
-        continue;
-      }
-      if (truss && mat.law == model::MaterialLaw::JohnsonCook && mat.c != 0)
-        warning_at(rec, "mat_ID", Diag::UnimplementedOption,
-                   used_by + ": the strain-rate term (c = " + number_text(mat.c) +
-                       ") does not act on trusses, as in Radioss (its truss takes the static yield curve)");
-      if (!truss && mat.law == model::MaterialLaw::JohnsonCook && mat.c != 0 && mat.flag_vp == 1)
-        error_at(rec, "mat_ID", Diag::PhysicsNotImplemented,
-                 used_by +
-                     ": flagVP = 1 (the plastic strain rate) is not implemented for beams; radx's beams "
-                     "take the rate of the section's work (flagVP 2 or 3)");
-      if (mat.fail_jc.on || mat.fail_tab.on)
-        warning_at(rec, "mat_ID", Diag::UnimplementedOption,
-                   used_by + ": its /FAIL model does not act on " + std::string(what) +
-                       " in radx; they fail at the material's EPS_max only");
+    const std::string used_by = mat.keyword + " " + std::to_string(mat.id) + " on the " + std::string(what) +
+                                " of part " + std::to_string(part.id);
+    if (mat.law != model::MaterialLaw::Elastic && mat.law != model::MaterialLaw::JohnsonCook) {
+      error_at(rec, "mat_ID", Diag::PhysicsNotImplemented,
+               used_by + ": radx's " + std::string(what) +
+                   " run law 1 (/MAT/LAW1, /MAT/ELAST) and law 2 (/MAT/LAW2, /MAT/PLAS_JOHNS) only");
+      continue;
     }
+    if (truss && mat.law == model::MaterialLaw::JohnsonCook && mat.c != 0)
+      warning_at(rec, "mat_ID", Diag::UnimplementedOption,
+                 used_by + ": the strain-rate term (c = " + number_text(mat.c) +
+                     ") does not act on trusses, as in Radioss (its truss takes the static yield curve)");
+    if (!truss && mat.law == model::MaterialLaw::JohnsonCook && mat.c != 0 && mat.flag_vp == 1)
+      error_at(rec, "mat_ID", Diag::PhysicsNotImplemented,
+               used_by +
+                   ": flagVP = 1 (the plastic strain rate) is not implemented for beams; radx's beams "
+                   "take the rate of the section's work (flagVP 2 or 3)");
+    if (mat.fail_jc.on || mat.fail_tab.on)
+      warning_at(rec, "mat_ID", Diag::UnimplementedOption,
+                 used_by + ": its /FAIL model does not act on " + std::string(what) +
+                     " in radx; they fail at the material's EPS_max only");
   }
 }
 

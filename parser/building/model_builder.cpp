@@ -409,6 +409,24 @@ void ModelBuilder::read_plas_tab(const KeywordRecord& r, model::Material& mat) {
   }
 }
 
+// /PROP/BEAM's fields (hm_read_prop03.F): Df 0 is 0.01; the released rotations from the Wdof digits.
+void ModelBuilder::read_beam_property(const KeywordRecord& r, model::BeamProperty& b) {
+  b.area = r.get_real("Area");
+  b.iyy = r.get_real("Iyy");
+  b.izz = r.get_real("Izz");
+  b.ixx = r.get_real("Ixx");
+  b.dm = r.get_real("Dm");
+  b.df = r.get_real("Df");
+  if (b.df == 0) b.df = 0.01;
+  b.ishear = static_cast<int>(r.get_int("Ishear"));
+  b.ismstr = static_cast<int>(r.get_int("Ismstr"));
+  b.release_x = r.get_int("Wx1") != 0 || r.get_int("Wx2") != 0 ? 1 : 0;
+  b.release_y1 = static_cast<int>(r.get_int("Wy1"));
+  b.release_z1 = static_cast<int>(r.get_int("Wz1"));
+  b.release_y2 = static_cast<int>(r.get_int("Wy2"));
+  b.release_z2 = static_cast<int>(r.get_int("Wz2"));
+}
+
 // /MAT/PLAS_BRIT (law 27), read as OpenRadioss hm_read_mat27.F does: a 0 = 1e20 (no yield), n 0 = 1, SIG_max0
 // 0 = 1e20, c 0 sets EPS_DOT_0 to 1, ICC 0 = 1, Fcut not 0 turns Fsmooth 0 into 1; the crack fields' zero
 // defaults are the fields' rules (keywords_starter.cpp). Direction 2 is read and kept, never used (m27crak.F

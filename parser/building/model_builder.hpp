@@ -74,8 +74,8 @@ class ModelBuilder {
   void build_properties();
   void build_subsets_and_parts();
   void build_elements();
-  void read_spring_property(const KeywordRecord& r, model::Property& p);           // build_springs.cpp
-  static void read_beam_property(const KeywordRecord& r, model::BeamProperty& b);  // check_formulations.cpp
+  void read_spring_property(const KeywordRecord& r, model::Property& p);  // build_springs.cpp
+  static void read_beam_property(const KeywordRecord& r, model::BeamProperty& b);
   // Hm and Hf as the deck gives them, else the default of the shell's Ishell (0.1 for 3, 0.01 otherwise).
   static void shell_hourglass_defaults(const KeywordRecord& r, model::ShellProperty& s);
   void read_spring_law(const KeywordRecord& r, model::SpringLaw& s, const std::string& sfx, bool type8);
@@ -103,8 +103,8 @@ class ModelBuilder {
   void compute_masses();
   void warn_massless_accelerometers();
   void check_unused_nodes();
-  void check_formulations();  // check_formulations.cpp
-  void check_truss_laws();
+  void check_formulations();         // check_formulations.cpp
+  void check_truss_and_beam_laws();  // check_formulations.cpp
   void check_line_element_laws(const model::ElementBlock& block,
                                std::string_view what);  // check_formulations.cpp
   void check_ogden_parts();      // build_hyperelastic.cpp: laws 42 and 70 on one-point bricks only

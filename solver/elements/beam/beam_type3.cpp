@@ -42,39 +42,31 @@
 #include <limits>
 
 #include "solver/elements/element_groups.hpp"
+#include "solver/model/geometry.hpp"
 
 namespace radx::solver {
 
 namespace {
 
-using V3 = std::array<double, 3>;
-
-V3 cross3(const V3& a, const V3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot3(const V3& a, const V3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-double norm3(const V3& a) {
-  return std::sqrt(dot3(a, a));
-}
-V3 scaled(const V3& a, double s) {
-  return {a[0] * s, a[1] * s, a[2] * s};
-}
+using V3 = model::Vec3;
+using model::cross;
+using model::dot;
+using model::norm;
+using model::scale;
 
 // The beam's frame at x^n from the last cycle's y axis, turned by the mean twist over dt1 (pevec3.F).
 void beam_frame(const V3& dx, const V3& ey_old, const V3& w1, const V3& w2, double dt1, V3& e1, V3& e2,
                 V3& e3, double& l) {
-  l = norm3(dx);
-  e1 = scaled(dx, 1.0 / l);
-  e3 = cross3(e1, ey_old);
-  e2 = cross3(e3, e1);
-  const double theta = 0.5 * (dot3(e1, w1) + dot3(e1, w2)) * dt1;
-  const double c = std::cos(theta) / norm3(e2), s = std::sin(theta) / norm3(e3);
+  l = norm(dx);
+  e1 = scale(dx, 1.0 / l);
+  e3 = cross(e1, ey_old);
+  e2 = cross(e3, e1);
+  const double theta = 0.5 * (dot(e1, w1) + dot(e1, w2)) * dt1;
+  const double c = std::cos(theta) / norm(e2), s = std::sin(theta) / norm(e3);
   for (std::size_t d = 0; d < 3; ++d) e2[d] = e2[d] * c + e3[d] * s;
-  e2 = scaled(e2, 1.0 / norm3(e2));
-  e3 = cross3(e1, e2);
-  e3 = scaled(e3, 1.0 / norm3(e3));
+  e2 = scale(e2, 1.0 / norm(e2));
+  e3 = cross(e1, e2);
+  e3 = scale(e3, 1.0 / norm(e3));
 }
 
 // The deformation rates of the section in the beam's frame (pdefo3.F, pcurv3.F).
@@ -85,11 +77,11 @@ struct BeamRates {
 BeamRates beam_rates(const BeamReleases& rel, const V3& e1, const V3& e2, const V3& e3, const V3& dv,
                      const V3& w1, const V3& w2, double l, double dt1) {
   BeamRates r{};
-  r.exx = dot3(e1, dv) / l;
-  r.exy = dot3(e2, dv) / l;
-  r.exz = dot3(e3, dv) / l;
-  double rx1 = dot3(e1, w1), ry1 = dot3(e2, w1), rz1 = dot3(e3, w1);
-  double rx2 = dot3(e1, w2), ry2 = dot3(e2, w2), rz2 = dot3(e3, w2);
+  r.exx = dot(e1, dv) / l;
+  r.exy = dot(e2, dv) / l;
+  r.exz = dot(e3, dv) / l;
+  double rx1 = dot(e1, w1), ry1 = dot(e2, w1), rz1 = dot(e3, w1);
+  double rx2 = dot(e1, w2), ry2 = dot(e2, w2), rz2 = dot(e3, w2);
   const double h = 0.5 * dt1;
   const double rxav = 0.5 * h * (rx1 + rx2);
   const double exx0 = r.exx, exy0 = r.exy, exz0 = r.exz;
