@@ -1704,36 +1704,62 @@ def spring_elements(tables):
                 I("RX604", p[0], p[1], "spring %s joins a node to itself" % eid)
 
 
-def truss_elements(tables):
-    """Trusses (model_builder.cpp): the part has a truss property, n1 and n2 exist, differ and lie apart, ids
-    unique; the property's area > 0, Gap 0 (a gap truss changes the physics); the part's material is law 1 or
-    2 (check_formulations.cpp check_truss_laws)."""
+LINE_ELEMENT_LAWS = ("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2", "/MAT/PLAS_JOHNS", "/MAT/LAW02")
+
+
+def line_elements(tables, keyword, id_field, prop_paths, what, orientation=None):
+    """Trusses or beams (model_builder.cpp check_line_shape, check_formulations.cpp check_line_element_laws): the
+    part exists and has a property of `prop_paths`, ids unique, n1 and n2 (and the optional `orientation` node)
+    exist, n1 and n2 differ and lie apart, the orientation node lies off the axis; the part's material is law 1
+    or 2. Registers the elements with their two nodes (an orientation node is not one of them in groups)."""
     I, m, nodes, part_kind, parts = tables.issue, tables.m, tables.nodes, tables.part_kind, tables.parts
     props, mats = tables.props, tables.mats
-    truss_ids = set()
-    for o in m.of("/TRUSS"):
+    ids = set()
+    for o in m.of(keyword):
         if o["id"] not in parts:
-            I("RX402", o["pos"][0], o["pos"][1], "/TRUSS: part %d does not exist" % o["id"])
-        part_kind.setdefault(o["id"], set()).add("/TRUSS")
+            I("RX402", o["pos"][0], o["pos"][1], "%s: part %d does not exist" % (keyword, o["id"]))
+        part_kind.setdefault(o["id"], set()).add(keyword)
         po = parts.get(o["id"])
-        if po is not None and val(po, "prop_ID") in props and \
-                props[val(po, "prop_ID")]["path"] not in TRUSS_PROPS:
-            I("RX407", o["pos"][0], o["pos"][1], "/TRUSS/%d: part of the wrong property kind" % o["id"])
+        if po is not None and val(po, "prop_ID") in props and props[val(po, "prop_ID")]["path"] not in prop_paths:
+            I("RX407", o["pos"][0], o["pos"][1], "%s/%d: part of the wrong property kind" % (keyword, o["id"]))
         for r, p in o["recs"]:
-            eid = r.get("truss_ID")
-            if eid in truss_ids:
-                I("RX401", p[0], p[1], "truss %d defined twice" % eid)
+            eid = r.get(id_field)
+            if eid in ids:
+                I("RX401", p[0], p[1], "%s %d defined twice" % (what, eid))
                 continue
-            truss_ids.add(eid)
+            ids.add(eid)
             ns = [r.get("n1"), r.get("n2")]
-            tables.elements["/TRUSS"][eid] = (o["id"], ns)
-            tables.elem_ids["/TRUSS"].add(eid)
+            tables.elements[keyword][eid] = (o["id"], ns)
+            tables.elem_ids[keyword].add(eid)
             bad = [x for x in ns if x is None or x not in nodes]
+            n3 = r.get(orientation) if orientation else None
+            if n3 not in (None, 0) and n3 not in nodes:
+                bad.append(n3)
             for _ in bad:
-                I("RX406", p[0], p[1], "truss %s uses a node that does not exist" % eid)
-            if not bad and (ns[0] == ns[1] or nodes[ns[0]] == nodes[ns[1]]):
-                I("RX604", p[0], p[1], "truss %s has no length" % eid)
-    for o in props.values():
+                I("RX406", p[0], p[1], "%s %s uses a node that does not exist" % (what, eid))
+            if bad:
+                continue
+            if ns[0] == ns[1] or nodes[ns[0]] == nodes[ns[1]]:
+                I("RX604", p[0], p[1], "%s %s has no length" % (what, eid))
+            elif n3 not in (None, 0):
+                a, b, c = nodes[ns[0]], nodes[ns[1]], nodes[n3]
+                axis, y = sub(b, a), sub(c, a)
+                if not norm(cross(axis, y)) > 1e-12 * norm(axis) * norm(y):
+                    I("RX603", p[0], p[1], "%s %s: n3 on its axis" % (what, eid))
+    for pid, kinds in part_kind.items():
+        if keyword not in kinds or pid not in parts:
+            continue
+        mat = mats.get(val(parts[pid], "mat_ID"))
+        if mat is not None and mat["path"] not in LINE_ELEMENT_LAWS:
+            p = pos(parts[pid], "mat_ID")
+            I("RX510", p[0], p[1], "part %d: %ss run laws 1 and 2 only" % (pid, what))
+
+
+def truss_elements(tables):
+    """Trusses: the elements (line_elements); the property's area > 0, Gap 0 (a gap truss changes the physics)."""
+    I = tables.issue
+    line_elements(tables, "/TRUSS", "truss_ID", TRUSS_PROPS, "truss")
+    for o in tables.props.values():
         if o["path"] not in TRUSS_PROPS:
             continue
         if val(o, "Area", None) is None:
@@ -1745,54 +1771,14 @@ def truss_elements(tables):
         if val(o, "Gap", 0.0) != 0:
             p = pos(o, "Gap")
             I("RX510", p[0], p[1], "truss property %d: Gap changes the physics" % o["id"])
-    for pid, kinds in part_kind.items():
-        if "/TRUSS" not in kinds or pid not in parts:
-            continue
-        mat = mats.get(val(parts[pid], "mat_ID"))
-        if mat is not None and mat["path"] not in ("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2",
-                                                   "/MAT/PLAS_JOHNS", "/MAT/LAW02"):
-            p = pos(parts[pid], "mat_ID")
-            I("RX510", p[0], p[1], "part %d: trusses run laws 1 and 2 only" % pid)
 
 
 def beam_elements(tables):
-    """Type-3 beams (model_builder.cpp, check_formulations.cpp): the part has a beam property, n1 and n2 exist,
-    differ and lie apart, n3 exists when given and lies off the axis, ids unique; the section's values > 0,
-    Ismstr 1 and 3 refused; the part's material is law 1 or 2."""
-    I, m, nodes, part_kind, parts = tables.issue, tables.m, tables.nodes, tables.part_kind, tables.parts
-    props, mats = tables.props, tables.mats
-    beam_ids = set()
-    for o in m.of("/BEAM"):
-        if o["id"] not in parts:
-            I("RX402", o["pos"][0], o["pos"][1], "/BEAM: part %d does not exist" % o["id"])
-        part_kind.setdefault(o["id"], set()).add("/BEAM")
-        po = parts.get(o["id"])
-        if po is not None and val(po, "prop_ID") in props and props[val(po, "prop_ID")]["path"] not in BEAM_PROPS:
-            I("RX407", o["pos"][0], o["pos"][1], "/BEAM/%d: part of the wrong property kind" % o["id"])
-        for r, p in o["recs"]:
-            eid = r.get("beam_ID")
-            if eid in beam_ids:
-                I("RX401", p[0], p[1], "beam %d defined twice" % eid)
-                continue
-            beam_ids.add(eid)
-            ns = [r.get("n1"), r.get("n2")]  # the orientation node n3 is not one of the beam's nodes in groups
-            tables.elements["/BEAM"][eid] = (o["id"], ns)
-            tables.elem_ids["/BEAM"].add(eid)
-            bad = [x for x in ns if x is None or x not in nodes]
-            if r.get("n3") not in (None, 0) and r.get("n3") not in nodes:
-                bad.append(r.get("n3"))
-            for _ in bad:
-                I("RX406", p[0], p[1], "beam %s uses a node that does not exist" % eid)
-            if bad:
-                continue
-            if ns[0] == ns[1] or nodes[ns[0]] == nodes[ns[1]]:
-                I("RX604", p[0], p[1], "beam %s has no length" % eid)
-            elif r.get("n3") not in (None, 0):
-                a, b, c = nodes[ns[0]], nodes[ns[1]], nodes[r.get("n3")]
-                axis, y = sub(b, a), sub(c, a)
-                if not norm(cross(axis, y)) > 1e-12 * norm(axis) * norm(y):
-                    I("RX603", p[0], p[1], "beam %s: n3 on its axis" % eid)
-    for o in props.values():
+    """Type-3 beams: the elements (line_elements, with the orientation node n3); the section's values > 0,
+    Ismstr 1 and 3 refused."""
+    I = tables.issue
+    line_elements(tables, "/BEAM", "beam_ID", BEAM_PROPS, "beam", orientation="n3")
+    for o in tables.props.values():
         if o["path"] not in BEAM_PROPS:
             continue
         for name in ("Area", "Iyy", "Izz", "Ixx"):
@@ -1805,14 +1791,6 @@ def beam_elements(tables):
         if val(o, "Ismstr", 0) in (1, 3):
             p = pos(o, "Ismstr")
             I("RX510", p[0], p[1], "beam property %d: small strain" % o["id"])
-    for pid, kinds in part_kind.items():
-        if "/BEAM" not in kinds or pid not in parts:
-            continue
-        mat = mats.get(val(parts[pid], "mat_ID"))
-        if mat is not None and mat["path"] not in ("/MAT/LAW1", "/MAT/ELAST", "/MAT/LAW01", "/MAT/LAW2",
-                                                   "/MAT/PLAS_JOHNS", "/MAT/LAW02"):
-            p = pos(parts[pid], "mat_ID")
-            I("RX510", p[0], p[1], "part %d: beams run laws 1 and 2 only" % pid)
 
 
 def parts_and_properties(tables):
