@@ -3,8 +3,11 @@
 //
 //   N_j = law_j(q_j, q_j_old, v_j),  v_j = (q_j - q_j_old) / dt1 (0 on the first cycle)   (spring_law.hpp)
 //   failure (each limit scaled by its Ascale): d_j = q_j / delta_max_j when q_j > 0, q_j / delta_min_j
-//     otherwise; Ifail 0: crit = max_j d_j; Ifail 1: crit = sum_j d_j^2; crit >= 1 breaks the spring (no
-//     force from that cycle on). A limit of 0 in the deck is none (1e30). OpenRadioss r2def3.F, r4def3.F
+//     otherwise; Ifail 0: crit = max_j d_j; Ifail 1: crit = sum_j d_j^2; crit >= 1 breaks the spring. As
+//     Radioss tests the limits after the laws, the forces of the breaking cycle still act on the nodes, and
+//     the spring no longer votes for that cycle's step; the next cycle the forces are 0 and the trapezoid
+//     books the half increment (q - q_old) N_old / 2 that the last forces did over that step; after that the
+//     slot is skipped. A limit of 0 in the deck is none (1e30). OpenRadioss r2def3.F, r4def3.F, r2len3.F
 //     with Ifail2 = 0 (the other failure modes are refused by the starter).
 //   work: E += sum_j (q_j - q_j_old) (N_j + N_j_old) / 2   (elastic and damping work together, as Radioss)
 // Stable step (OpenRadioss r2len3.F), M the mass, I the inertia, k and c the translational (resp.
@@ -43,7 +46,16 @@ inline void spring_six_step(SpringGroup& g, std::size_t i, SpringFamilyStiffness
   g.k_nodal[i] = dt < 1e30 ? g.props.mass / (dt * dt) : 0.0;
 }
 
-// A broken slot: no force, no step.
+// True once a broken slot's forces are all 0: nothing more happens in it, and the kernels skip it.
+[[nodiscard]] inline bool spring_six_released(const SpringGroup& g, std::size_t i) {
+  constexpr std::size_t G = kGroupSize;
+  if (g.off[i] > 0) return false;
+  for (std::size_t d = 0; d < 6; ++d)
+    if (g.force[d * G + i] != 0.0) return false;
+  return true;
+}
+
+// A released slot: no force, no step.
 inline void spring_six_off(SpringGroup& g, std::size_t i) {
   constexpr std::size_t G = kGroupSize;
   for (std::size_t d = 0; d < 6; ++d) g.force[d * G + i] = 0.0;
@@ -52,12 +64,32 @@ inline void spring_six_off(SpringGroup& g, std::size_t i) {
   g.k_nodal[i] = 0.0;
 }
 
+// Books the trapezoid work of the step from the stored state to (q, n) and stores them.
+inline void spring_six_commit(SpringGroup& g, std::size_t i, const double (&q)[6], const double (&n)[6]) {
+  constexpr std::size_t G = kGroupSize;
+  double work = 0;
+  for (std::size_t d = 0; d < 6; ++d) {
+    work += (q[d] - g.dx[d * G + i]) * (n[d] + g.force[d * G + i]) * 0.5;
+    g.force[d * G + i] = n[d];
+    g.dx[d * G + i] = q[d];
+  }
+  g.e_int[i] += work;
+}
+
 // The six forces (moments) n of slot i from its elongations (rotations) q; tests failure, accumulates the
-// work and stores q and n as the slot's state. Returns false when the spring broke this cycle (n = 0).
+// work and stores q and n as the slot's state. Returns false when the spring is broken: in the cycle that
+// breaks it n still holds the cycle's forces (and the slot leaves the step vote); in the cycle after, n = 0.
 inline bool spring_six_laws(SpringGroup& g, std::size_t i, const double (&q)[6], double inv_dt,
                             double (&n)[6]) {
   constexpr std::size_t G = kGroupSize;
   const auto& p = g.props;
+  if (g.off[i] <= 0) {
+    for (std::size_t d = 0; d < 6; ++d) n[d] = 0.0;
+    spring_six_commit(g, i, q, n);
+    g.dt[i] = std::numeric_limits<double>::infinity();
+    g.k_nodal[i] = 0.0;
+    return false;
+  }
   double crit = 0;
   for (std::size_t d = 0; d < 6; ++d) {
     const auto& law = p.law(static_cast<int>(d));
@@ -73,15 +105,10 @@ inline bool spring_six_laws(SpringGroup& g, std::size_t i, const double (&q)[6],
   const bool alive = crit < 1.0;
   if (!alive) {
     g.off[i] = 0.0;
-    for (double& v : n) v = 0.0;
+    g.dt[i] = std::numeric_limits<double>::infinity();
+    g.k_nodal[i] = 0.0;
   }
-  double work = 0;
-  for (std::size_t d = 0; d < 6; ++d) {
-    work += (q[d] - g.dx[d * G + i]) * (n[d] + g.force[d * G + i]) * 0.5;
-    g.force[d * G + i] = n[d];
-    g.dx[d * G + i] = q[d];
-  }
-  g.e_int[i] += work;
+  spring_six_commit(g, i, q, n);
   return alive;
 }
 

@@ -114,7 +114,7 @@ void spring_type13_forces(SpringGroup& g, const NodeState& nodes, const CycleInf
   const double c_sh = std::max(p.law(1).damping, p.law(2).damping);
   for (int ii = 0; ii < g.count; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
-    if (g.off[i] <= 0) {
+    if (spring_six_released(g, i)) {
       spring_six_off(g, i);
       continue;
     }

@@ -15,8 +15,10 @@
 //                                             length l itself, as Radioss does even with Ileng 1)
 //   work: E += (x - x_old) (N + N_old) / 2 * s   (trapezoid; elastic and damping work together, as Radioss)
 //   nodal forces: n1 += N e, n2 -= N e        (tension pulls the nodes together)
-//   failure: the spring breaks (N = 0 from then on) when s x leaves [delta_min Ascale, delta_max Ascale]
-//     (hm_read_prop04.F scales both limits by Ascale)
+//   failure: the spring breaks when s x leaves [delta_min Ascale, delta_max Ascale] (hm_read_prop04.F
+//     scales both limits by Ascale); N of the breaking cycle still acts, as in r1def3.F, and the spring
+//     leaves the step vote; the next cycle N = 0 and the trapezoid books (x - x_old) N_old / 2, the work
+//     of the last force over that step; after that the spring is skipped
 // Time step (r1len3.F), with the spring's own mass m = M s, stiffness k = K / s, damping c = C / s:
 //   dt = min( m / (sqrt(c^2 + m k) + c),  m / (2 c) )
 //   which is sqrt(m / k) without damping: the period 2 pi sqrt((m/2) / (2 k)) of the spring's two half
@@ -46,14 +48,14 @@ void spring_type4_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo
     const double m = p.mass * s, k = law.stiffness / s, c = law.damping / s;
     double dt = m / std::max(1e-15, std::sqrt(c * c + m * k) + c);
     dt = std::min(dt, 0.5 * m / std::max(1e-15, c));
-    if (g.off[i] <= 0) {
-      g.force[i] = 0.0;
+    // A broken spring that has released its last force is skipped; the cycle after the break still books
+    // the work of that force (its force is 0 now).
+    const bool broken = g.off[i] <= 0;
+    if (broken && g.force[i] == 0.0) {
       g.dt[i] = std::numeric_limits<double>::infinity();
       g.k_nodal[i] = 0.0;
       continue;
     }
-    g.dt[i] = dt;
-    g.k_nodal[i] = m / (dt * dt);
     const double ex = nodes.x[n2] - nodes.x[n1], ey = nodes.y[n2] - nodes.y[n1],
                  ez = nodes.z[n2] - nodes.z[n1];
     const double l = std::sqrt(ex * ex + ey * ey + ez * ez);
@@ -61,14 +63,17 @@ void spring_type4_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo
     const double x = (l - l0) / s;
     const double x_old = g.dx[i] / s;
     const double v = (x - x_old) * inv_dt;
-    auto st = g.law_state(i);
-    double n = spring_law_force(law, g.curves[0], x, x_old, v, l, st);
-    g.store(i, st);
+    double n = 0.0;
     const double elong = x * s;
-    if (elong > law.delta_max * law.ascale || elong < law.delta_min * law.ascale) {
-      g.off[i] = 0.0;
-      n = 0.0;
+    if (!broken) {
+      auto st = g.law_state(i);
+      n = spring_law_force(law, g.curves[0], x, x_old, v, l, st);
+      g.store(i, st);
+      if (elong > law.delta_max * law.ascale || elong < law.delta_min * law.ascale) g.off[i] = 0.0;
     }
+    // A broken spring leaves the step vote from the cycle that breaks it on (r1len3.F reads the new OFF).
+    g.dt[i] = g.off[i] > 0 ? dt : std::numeric_limits<double>::infinity();
+    g.k_nodal[i] = g.off[i] > 0 ? m / (dt * dt) : 0.0;
     g.e_int[i] += (x - x_old) * (n + g.force[i]) * 0.5 * s;
     g.force[i] = n;
     g.dx[i] = elong;

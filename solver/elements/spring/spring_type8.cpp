@@ -30,7 +30,7 @@ void spring_type8_forces(SpringGroup& g, const NodeState& nodes, const CycleInfo
   const auto t = spring_family(g.props, 0), r = spring_family(g.props, 3);
   for (int ii = 0; ii < g.count; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
-    if (g.off[i] <= 0) {
+    if (spring_six_released(g, i)) {
       spring_six_off(g, i);
       continue;
     }

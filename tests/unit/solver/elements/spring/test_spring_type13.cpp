@@ -202,6 +202,36 @@ TEST_CASE("TYPE13 kernel: a rigid rotation of 90 degrees gives no force", "[spri
   CHECK(e_500 / e_1000 > 1.8);
 }
 
+TEST_CASE("TYPE13 kernel: the cycle that passes delta_max still pulls, the next books its last work",
+          "[spring13]") {
+  auto ns = radx::test::make_nodes({{0, 0, 0}, {10, 0, 0}});
+  auto p = linear_type13(1.0, 1.0, {200, 0, 0, 0, 0, 0});
+  p.x.delta_max = 0.5;
+  auto g = one_spring(ns, p);
+  const radx::solver::CycleInfo cyc{0.1, 0.1, 0};
+  ns.x[1] = 10.4;  // elongation 0.4 < 0.5: intact, N = K u = 80
+  radx::solver::spring_type13_forces(g, ns, cyc);
+  REQUIRE(g.off[0] == 1.0);
+  ns.x[1] = 10.6;  // 0.6 > 0.5: broken this cycle, yet N = 120 acts on both nodes, as Radioss applies it
+  radx::solver::spring_type13_forces(g, ns, cyc);
+  CHECK(g.off[0] == 0.0);
+  CHECK(rel(g.nodal_force[0], 120.0) < 1e-12);
+  CHECK(rel(g.nodal_force[6 * G], -120.0) < 1e-12);
+  // Trapezoid work 0.4 x 80 / 2 + 0.2 x (80 + 120) / 2: the breaking increment counts.
+  CHECK(rel(g.e_int[0], 16.0 + 20.0) < 1e-12);
+  CHECK(std::isinf(g.dt[0]));  // a broken spring no longer limits the step, from this cycle on
+  // The next cycle (node to 10.7) the force is 0 and the trapezoid books the last force's half increment
+  // 0.1 x 120 / 2 = 6: the work the nodes received from it over this step.
+  ns.x[1] = 10.7;
+  radx::solver::spring_type13_forces(g, ns, cyc);
+  CHECK(g.nodal_force[0] == 0.0);
+  CHECK(rel(g.e_int[0], 42.0) < 1e-12);
+  ns.x[1] = 11.0;  // after that nothing changes: the broken spring keeps the energy it took
+  radx::solver::spring_type13_forces(g, ns, cyc);
+  CHECK(g.nodal_force[0] == 0.0);
+  CHECK(rel(g.e_int[0], 42.0) < 1e-12);
+}
+
 TEST_CASE("TYPE13 initial frame: n3, else the skew's Y axis, else its X axis", "[spring13]") {
   const std::array<double, 9> global{1, 0, 0, 0, 1, 0, 0, 0, 1};
   using V = radx::model::Vec3;

@@ -236,11 +236,28 @@ TEST_CASE("spring kernel: Ileng 1 makes M, K and the elongation per unit length,
   // m = M L0 = 10, k = K / L0 = 20: dt = sqrt(m/k).
   CHECK(rel(g.dt[0], std::sqrt(10.0 / 20.0)) < 1e-12);
   CHECK(g.off[0] == 1.0);
-  ns.z[1] = 23.5;  // elongation 3.5 > delta_max = 3: broken, no force from then on
+  // Elongation 3.5 > delta_max = 3: broken, but the force of this cycle (K 3.5 / 20 = 70) still acts on the
+  // nodes and its work counts, as Radioss applies it before switching the element off.
+  ns.z[1] = 23.5;
   radx::solver::spring_type4_forces(g, ns, radx::solver::CycleInfo{1e-3, 1e-3, 0});
   CHECK(g.off[0] == 0.0);
+  CHECK(rel(g.force[0], 70.0) < 1e-12);
+  CHECK(rel(g.nodal_force[2 * G], 70.0) < 1e-12);  // tension pulls node 1 towards node 2 (+z)
+  // Work: the strain step 0.075 under the mean force (40 + 70) / 2, times L0 = 20.
+  const double work = 0.5 * 0.1 * 40.0 * 20.0 + 0.075 * (40.0 + 70.0) / 2 * 20.0;
+  CHECK(rel(g.e_int[0], work) < 1e-12);
+  CHECK(std::isinf(g.dt[0]));  // it no longer limits the step
+  // The next cycle (elongation 4, strain step 0.025) carries no force; the trapezoid books the half increment
+  // of the last force, 0.025 x 70 / 2 x 20; after that the energy stays.
+  ns.z[1] = 24.0;
+  radx::solver::spring_type4_forces(g, ns, radx::solver::CycleInfo{1e-3, 1e-3, 0});
   CHECK(g.force[0] == 0.0);
   CHECK(g.nodal_force[2 * G] == 0.0);
+  const double work_after = work + 0.025 * 70.0 / 2 * 20.0;
+  CHECK(rel(g.e_int[0], work_after) < 1e-12);
+  ns.z[1] = 25.0;
+  radx::solver::spring_type4_forces(g, ns, radx::solver::CycleInfo{1e-3, 1e-3, 0});
+  CHECK(rel(g.e_int[0], work_after) < 1e-12);
 }
 
 TEST_CASE("spring-mass oscillator: period 2 pi sqrt(m/K) and amplitude v0/omega", "[spring][engine]") {
