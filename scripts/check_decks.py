@@ -825,6 +825,7 @@ TH_VARIABLES = {
     "/TH/SECTIO": (["DEF", "FN", "FT", "M", "CENTER", "GLOBAL", "LOCAL"],
                    [a + x for a in ("FN", "FT", "M", "C") for x in "XYZ"] + [a + k for a in "FM" for k in "123"]),
     "/TH/ACCEL": (["DEF", "W"], ["AX", "AY", "AZ", "WX", "WY", "WZ"]),
+    "/TH/SPRING": (["DEF"], ["OFF"] + [a + x for a in "FMLR" for x in "XYZ"] + ["IE"]),
     "/TH/RBODY": (["DEF", "F", "M", "R", "FI", "MI", "D", "V", "A", "XYZ"],
                   [a + x for a in ("F", "M", "R") for x in "XYZ"] + [a + x + "I" for a in "FM" for x in "XYZ"] +
                   ["X", "Y", "Z"] + [a + x for a in ("D", "V", "A", "VR", "AR") for x in "XYZ"] +

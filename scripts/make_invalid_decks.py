@@ -1774,6 +1774,14 @@ def _():
         [("RX501", "TH_KW")]
 
 
+@fault("th_spring_group_name")
+def _():
+    d = with_spring(base())
+    d.insert_before("BEFORE_END", th_rows("/TH/SPRING", "Spring forces", ["DEF", "F"], [31], "id"))
+    return d, "/TH/SPRING/1 asks for F: DEF is /TH/SPRING's only group name (OpenRadioss refuses F, M, L and R " \
+        "there too); name FX FY FZ one by one", [("RX501", "TH_KW")]
+
+
 @fault("th_rbody_no_variables")
 def _():
     d = base()

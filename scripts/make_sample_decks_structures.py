@@ -1795,7 +1795,8 @@ def spring_beam():
     d.card("/INIVEL/ROT", 2, "Twist about X", Vx=p["WX"], Vy=0.0, Vz=0.0, grnod_ID=2)
     d.ruler()
     d.card("/TH/NODE", 1, "Tip", variables=["DEF"], rows=[(2, 0, "tip")])
-    d.card("/TH/SPRING", 1, "Beam spring", variables=["DEF", "F", "M", "L", "R"], rows=[(1,)])
+    d.card("/TH/SPRING", 2, "Beam spring", variables=["DEF", "FY", "FZ", "MX", "MY", "MZ", "LY", "LZ", "RX", "RY",
+                                                              "RZ"], rows=[(1,)])
     d.ruler()
     d.raw("/END")
     e = engine(run, p["T_STOP"], 1e-4, 2e-3, [], ["VEL", "DISP"],

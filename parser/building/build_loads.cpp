@@ -759,8 +759,9 @@ ThKindDef th_section_kind() {
           {}};
 }
 
-// OpenRadioss's spring names (th_spring.cfg): on a TYPE4 spring FX is the axial force (> 0 in tension)
-// and LX the elongation; the other directions and the moments are those of 6-dof springs.
+// OpenRadioss's spring names (hm_read_thgrou.F): on a TYPE4 spring FX is the axial force (> 0 in tension)
+// and LX the elongation; the other directions and the moments are those of 6-dof springs. DEF is the only
+// group name: OpenRadioss refuses F, M, L and R on /TH/SPRING, so radx does too.
 ThKindDef th_spring_kind() {
   static const std::string_view kAxialSpring =
       "a TYPE4 spring is axial: FX and LX only (TYPE8 and TYPE13 springs write them)";
@@ -768,11 +769,7 @@ ThKindDef th_spring_kind() {
           model::ThKind::Spring,
           "spring",
           "/SPRING",
-          {{"DEF", {"OFF", "FX", "LX", "IE"}},
-           {"F", {"FX", "FY", "FZ"}},
-           {"M", {"MX", "MY", "MZ"}},
-           {"L", {"LX", "LY", "LZ"}},
-           {"R", {"RX", "RY", "RZ"}}},
+          {{"DEF", {"OFF", "FX", "LX", "IE"}}},
           {"OFF", "FX", "FY", "FZ", "MX", "MY", "MZ", "LX", "LY", "LZ", "RX", "RY", "RZ", "IE"},
           {{"FY", kAxialSpring},
            {"FZ", kAxialSpring},
