@@ -296,8 +296,8 @@ void ModelBuilder::check_truss_and_beam_laws() {
   }
 }
 
-// The laws a truss or beam part runs: 1 and 2; law 2 without its strain-rate term on trusses and without a
-// /FAIL model on either (OpenRadioss's m2lawt.F and m2lawp.F).
+// The laws a truss or beam part runs: 1 and 2; law 2 without its strain-rate term on trusses, with
+// /FAIL/JOHNSON or /FAIL/BIQUAD on beams only (OpenRadioss's m2lawt.F, m2lawp.F and fail_beam3.F).
 void ModelBuilder::check_line_element_laws(const model::ElementBlock& block, std::string_view what) {
   std::vector<std::uint8_t> used(m_.parts.size(), 0);
   for (const auto p : block.part)
@@ -328,10 +328,13 @@ void ModelBuilder::check_line_element_laws(const model::ElementBlock& block, std
                used_by +
                    ": flagVP = 1 (the plastic strain rate) is not implemented for beams; radx's beams "
                    "take the rate of the section's work (flagVP 2 or 3)");
-    if (mat.fail_jc.on || mat.fail_tab.on)
+    // Radioss's trusses take no failure model, and its type-3 beams /FAIL/JOHNSON and /FAIL/BIQUAD among
+    // radx's (main_beam3.F: not /FAIL/TAB): a model they ignore is only a warning, as Radioss says nothing.
+    const bool beam_fails = !truss && (mat.fail_jc.on || mat.fail_bq.on);
+    if (!beam_fails && (mat.fail_jc.on || mat.fail_tab.on || mat.fail_bq.on))
       warning_at(rec, "mat_ID", Diag::UnimplementedOption,
                  used_by + ": its /FAIL model does not act on " + std::string(what) +
-                     " in radx; they fail at the material's EPS_max only");
+                     ", as in Radioss; they fail at the material's EPS_max only");
   }
 }
 

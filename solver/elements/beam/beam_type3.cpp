@@ -27,6 +27,16 @@
 //   (eps_dot0 dt1)) with rate = |dW| / (s A) the section's work increment; N and the moments are scaled by
 //   min(1, sigma_y / s) (the shear forces are not); eps_p += max(0, R dW_p / (2 sigma_y A)) with dW_p the
 //   increment's work less its elastic part; rupture at EPS_p_max as the truss (off *= 0.8 each cycle).
+// Failure model on law 2 (/FAIL/JOHNSON, /FAIL/BIQUAD; fail_beam3.F with fail_johnson_b.F, fail_biquad_b.F):
+//   while the beam is intact (off = 1, EPS_max not reached) and yields (d_eps_p > 0), with the new resultants
+//   s = the equivalent stress above and sigma_m = N / (3 A):
+//     D += d_eps_p / eps_f(sigma_m, s, rate) (failure.hpp: Johnson-Cook, or the biquadratic curve of
+//     eta = sigma_m / s kept in [-2/3, 2/3], times the size factor of l0, floored at 1e-6);
+//     D = 1: the beam fades as at EPS_max (off 0.8, then 0.8 per cycle).
+//   rate (Johnson-Cook's D4 only): r = l sqrt(3 (exx^2 / 2 + (exy / 2)^2 + (exz / 2)^2)) / 1.5 from the
+//   rates, filtered as the material's strain rate (Fcut) when the law has a rate term. OpenRadioss multiplies
+//   by the length l, so r is a velocity rather than a strain rate; kept as it runs, to fail where Radioss
+//   fails.
 // Work: E += l/2 [(N + N') dexx + (Q + Q') . (dexy, dexz) + (M + M') . dk] (old and new resultants).
 // Damping (forces to the nodes, not to the state): N += Dm exx A l sqrt(2 E rho); Q += Df (exy, exz) A l
 //   sqrt(2 E rho); Mx += Df kxx l Ixx sqrt(2 G rho); My, Mz += Df (kyy Iyy, kzz Izz) l sqrt(2 E rho).
@@ -42,6 +52,7 @@
 #include <limits>
 
 #include "solver/elements/element_groups.hpp"
+#include "solver/materials/failure.hpp"
 #include "solver/model/geometry.hpp"
 
 namespace radx::solver {
@@ -205,6 +216,21 @@ void beam_nodal_forces(const BeamReleases& rel, const double f[6], double l, con
   }
 }
 
+// The section's rate for a failure model's strain-rate term, as main_beam3.F forms it (see the header).
+double beam_failure_rate(const BeamRates& r, double l) {
+  const double q = 0.5 * r.exx * r.exx + 0.25 * r.exy * r.exy + 0.25 * r.exz * r.exz;
+  return l * std::sqrt(3.0 * q) / 1.5;
+}
+
+// A failure model's damage of an intact, yielding beam; true when it reaches 1.
+bool beam_failure(const BeamSection& s, const MaterialParams& mat, const double res[6], double deps_p,
+                  double rate, double l0, double& dmg) {
+  if (deps_p <= 0) return false;
+  const double svm = beam_equivalent_stress(s, res);
+  const double sigma_m = res[0] / (3.0 * s.area);
+  return fail_accumulate(mat.fail, sigma_m, svm, rate, fail_size_factor(mat.fail, l0), deps_p, dmg);
+}
+
 // A failed beam fades over a few cycles (off 1 -> 0.8 -> 0.64 ... -> 0 below 0.1), as Radioss does.
 void fade(double& off) {
   if (off < 0.1) off = 0.0;
@@ -255,10 +281,18 @@ void beam_type3_forces(BeamGroup& g, const NodeState& nodes, const MaterialParam
     beam_elastic(s, mat, l, inc, res);
     double off = g.off[i];
     if (plastic) {
+      const double eps_p0 = g.eps_p[i];
       const double w_p = beam_plastic_return(s, mat, inc, old, res, g.eps_p[i], dt1);
       g.w_plastic[i] += w_p * l * off;
       fade(off);
       if (off >= 1.0 && g.eps_p[i] >= mat.jc.eps_p_max) off *= 0.8;
+      if (mat.fail.on) {
+        // Radioss filters the section's rate only when the law has a rate term (c != 0, its Israte).
+        const double alpha = mat.jc.c != 0 ? rate_filter_alpha(mat, dt1) : 1.0;
+        g.rate[i] = alpha * beam_failure_rate(rate, l) + (1.0 - alpha) * g.rate[i];
+        if (off >= 1.0 && beam_failure(s, mat, res, g.eps_p[i] - eps_p0, g.rate[i], g.l0[i], g.dmg[i]))
+          off *= 0.8;
+      }
     }
     for (double& r : res) r *= off;
     g.off[i] = off;

@@ -14,6 +14,7 @@
 #include "kernel_test_util.hpp"
 #include "solver/elements/element_groups.hpp"
 #include "solver/engine/explicit_engine.hpp"
+#include "solver/materials/failure.hpp"
 #include "solver/materials/material_params.hpp"
 #include "test_util.hpp"
 
@@ -170,6 +171,64 @@ TEST_CASE("beam kernel: law 2 caps the equivalent stress of the resultants at th
   // increment (N_old + N_new) d eps = a A 0.01 less the elastic part (a A)^2 / (E A).
   const double work = a * kA * 0.01 - (a * kA) * (a * kA) / (kE * kA);
   CHECK(rel(g.eps_p[0], 0.5 * work / a / kA) < 1e-12);
+}
+
+// Pulls (dir 1) or pushes (dir -1) a law-2 beam at a constant strain increment until it starts to fade;
+// returns its plastic strain when it did (0 if it never did in `cycles`), with its damage in `dmg`.
+double eps_p_at_failure(const radx::solver::MaterialParams& mat, double dir, int cycles, double& dmg) {
+  const double l = 100.0, dt = 1.0;
+  auto ns = radx::test::make_nodes({{0, 0, 0}, {l, 0, 0}});
+  auto g = one_beam(l);
+  ns.vx[1] = 0.05 * dir;  // 5e-4 strain per cycle: the section yields after a few cycles
+  for (int c = 0; c < cycles; ++c) {
+    const double eps_p0 = g.eps_p[0];
+    radx::solver::beam_type3_forces(g, ns, mat, radx::solver::CycleInfo{dt, dt, 0});
+    ns.x[1] += ns.vx[1] * dt;
+    if (g.off[0] < 1.0) {
+      dmg = g.dmg[0];
+      // the damage of this cycle's plastic increment took it past 1: the strain it failed at lies in it
+      CHECK(eps_p0 < g.eps_p[0]);
+      return g.eps_p[0];
+    }
+  }
+  dmg = g.dmg[0];
+  return 0.0;
+}
+
+TEST_CASE("beam kernel: /FAIL/BIQUAD and /FAIL/JOHNSON fail a yielding beam at eps_f of its triaxiality",
+          "[beam][fail]") {
+  // Pure tension or compression of the section: sigma_m / s = N / 3A / (|N| / A) = +-1/3, so the biquadratic
+  // curve gives C3 in tension and C1 in compression, Johnson-Cook D1 + D2 exp(+-D3 / 3).
+  auto mat = steel(200.0);
+  const double c1 = 0.06, c3 = 0.03;
+  radx::solver::fail_biquad_fit(c1, 0.04, c3, 0.02, 0.025, mat.fail);
+  mat.fail.on = true;
+  mat.fail.kind = radx::solver::FailKind::Biquad;
+  // Once yielding on a flat curve the plastic strain grows by the strain increment, at most 5e-4 a cycle
+  // (the length grows): the beam fails within one increment past eps_f.
+  const double step = 5e-4;
+  double dmg = 0;
+  const double tension = eps_p_at_failure(mat, 1.0, 1000, dmg);
+  CHECK(dmg == 1.0);
+  CHECK(tension >= c3);
+  CHECK(tension < c3 + step);
+  const double compression = eps_p_at_failure(mat, -1.0, 1000, dmg);
+  CHECK(compression >= c1);
+  CHECK(compression < c1 + step);
+
+  auto jc = steel(200.0);
+  jc.fail.on = true;
+  jc.fail.kind = radx::solver::FailKind::Johnson;
+  jc.fail.d1 = 0.01;
+  jc.fail.d2 = 0.05;
+  jc.fail.d3 = -1.5;
+  const double eps_f = 0.01 + 0.05 * std::exp(-1.5 / 3.0);
+  const double jc_tension = eps_p_at_failure(jc, 1.0, 1000, dmg);
+  CHECK(jc_tension >= eps_f);
+  CHECK(jc_tension < eps_f + step);
+  // Without a failure model the same beam does not fail (EPS_max is infinite).
+  auto plain = steel(200.0);
+  CHECK(eps_p_at_failure(plain, 1.0, 400, dmg) == 0.0);
 }
 
 TEST_CASE("beam cantilever: the tip swings about P L^3 / 3 E I with the first bending period",

@@ -262,6 +262,12 @@ TEST_CASE("truss starter: what radx refuses or warns about by name", "[truss][st
   // Law 2's strain-rate term does not act on trusses: a warning, as Radioss runs it without.
   const auto w = errors_of(bar_deck(4, 20.0, 0.0, johnson_cook_card(200.0, 0.1)), radx::Severity::Warning);
   CHECK(w.find("strain-rate term") != std::string::npos);
+  // Nor does any failure model (Radioss's trusses call none): /FAIL/BIQUAD on the truss material warns.
+  const std::string biquad = "/FAIL/BIQUAD/1\n" + Line().put(0.08, 41, 60).str() + "\n" +
+                             Line().put(0.0, 1, 20).put(2, 21, 30).str() + "\n\n";
+  const auto wb =
+      errors_of(bar_deck(4, 20.0, 0.0, johnson_cook_card(200.0, 0.0) + biquad), radx::Severity::Warning);
+  CHECK(wb.find("its /FAIL model does not act on trusses") != std::string::npos);
 }
 
 TEST_CASE("truss bar: a truss that breaks at EPS_max is named once among the engine's events",
