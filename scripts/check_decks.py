@@ -2167,6 +2167,7 @@ def groups(tables):
                                              egroups, emembers, surfs, surf_nodes, grnods)
     tables.emembers = emembers
     tables.boxes = boxes
+    tables.surf_nodes = surf_nodes
     for sid, o in surfs.items():
         if o["path"] not in ("/SURF/PART", "/SURF/PART/EXT"):
             continue  # element_group_checks
@@ -2555,6 +2556,11 @@ def interfaces(tables):
         # 0: the main surface's nodes are the secondary nodes (a self-contact), as Radioss takes them
         need(o, "grnd_IDs", grnods, "node group", zero_ok=True)
         need(o, "surf_IDm", surfs, "surface", zero_ok=False)
+        # a main surface that holds no segment: Radioss stops (its error 3160), radx too
+        sid = val(o, "surf_IDm", 0)
+        if sid in surfs and sid in tables.surf_nodes and not tables.surf_nodes[sid]:
+            p = pos(o, "surf_IDm")
+            I("RX403", p[0], p[1], "interface %d: the main surface %d holds no segment" % (iid, sid))
         rng = {"Istf": (0, 1, 2, 3, 4, 5), "Igap": (0, 1, 2, 1000), "Inacti": (0, 1, 2, 3, 5, 6), "Ifric": (0, 1, 2, 3),
                "Idel": (-2, -1, 0, 1, 2), "Iform": (0, 1, 2), "Ifiltr": (0, 1, 2, 3)}
         for f, allowed in rng.items():

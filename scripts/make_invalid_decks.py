@@ -2106,6 +2106,16 @@ def _():
         [("RX403 warning", "S1_KW")]
 
 
+@fault("inter_empty_main_surface")
+def _():
+    d = base()
+    d.insert_before("BEFORE_END", id_list("/SURF/PART/ALL/5", "S5", "Faces of a part that does not exist", [99]))
+    d.insert_before("BEFORE_END", type7(surf=5))
+    return d, "/INTER/TYPE7/1's main surface 5 lists only part 99, which does not exist: the surface is empty " \
+        "(warnings) and the interface would find no contact, which Radioss stops on (error 3160)", \
+        [("RX402 warning", "S5.ids"), ("RX403 warning", "S5_KW"), ("RX403", "INT.surf_IDm")]
+
+
 @fault("grnod_grshel_missing_group")
 def _():
     d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", [1]),

@@ -297,6 +297,17 @@ void ModelBuilder::build_interfaces() {
                   " nodes of the main surface " + std::to_string(r.get_int("surf_IDm")) +
                   " (a self-contact), as Radioss takes them");
     }
+    // Radioss stops on an interface whose main surface holds no segment (its error 3160): the contact would
+    // find nothing, and the deck almost always names the wrong surface or parts.
+    if (in.main_surface != kNone && m_.surfaces[static_cast<std::size_t>(in.main_surface)].segments.empty())
+      error_at(r, "surf_IDm", Diag::EmptyGroup,
+               "the main surface " + std::to_string(r.get_int("surf_IDm")) +
+                   " holds no segment, so the interface would find no contact (Radioss stops on it too); "
+                   "check the surface's parts or segments");
+    else if (in.main_surface != kNone && in.secondary_nodes.empty())
+      warning_at(r, "grnd_IDs", Diag::EmptyGroup,
+                 "the interface has no secondary node, so it finds no contact (Radioss warns too); check the "
+                 "secondary node group");
     if (register_id(inter_ids_, in.id, static_cast<std::int32_t>(m_.interfaces.size()), r, "interface",
                     first))
       m_.interfaces.push_back(std::move(in));
