@@ -3186,8 +3186,8 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
             chosen = set()
             for x, p in o["ids"]:
                 if (root, abs(x)) not in groups:
-                    I("RX402", p[0], p[1], "%s %d: group %d does not exist" % (path, o["id"], abs(x)))
-                    # (an error in radx: Radioss's handling of a missing group in a surface is not established)
+                    # left out with a warning, as Radioss's warning 192 does
+                    I("RX402", p[0], p[1], "%s %d: group %d does not exist" % (path, o["id"], abs(x)), warning=True)
                     continue
                 chosen |= members[(root, abs(x))]
             if root != "/GRBRIC":

@@ -2066,20 +2066,23 @@ def _():
 def _():
     d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", [1, 2]),
                   id_list("/SURF/GRSHEL/1", "S1", "Surface of shell groups", [1, 3]))
-    return d, "/SURF/GRSHEL/1 lists shell group 3, which does not exist", [("RX402", "S1.ids")]
+    return d, "/SURF/GRSHEL/1 lists shell group 3, which does not exist: left out (a warning, Radioss's 192)", \
+        [("RX402 warning", "S1.ids")]
 
 
 @fault("surf_grsh3n_missing_group")
 def _():
     d = with_rows(id_list("/SURF/GRSH3N/1", "S1", "Surface of 3-node shell groups", [4]))
-    return d, "/SURF/GRSH3N/1 lists 3-node shell group 4; the deck has none", [("RX402", "S1.ids")]
+    return d, "/SURF/GRSH3N/1 lists 3-node shell group 4; the deck has none: left out, and the surface is " \
+        "empty (warnings, as in Radioss)", [("RX402 warning", "S1.ids"), ("RX403 warning", "S1_KW")]
 
 
 @fault("surf_grbric_ext_missing_group")
 def _():
     d = with_rows(id_list("/GRBRIC/PART/1", "G1", "Block", [2]),
                   id_list("/SURF/GRBRIC/EXT/1", "S1", "Outer faces", [1, 2]))
-    return d, "/SURF/GRBRIC/EXT/1 lists brick group 2, which does not exist", [("RX402", "S1.ids")]
+    return d, "/SURF/GRBRIC/EXT/1 lists brick group 2, which does not exist: left out (a warning, Radioss's " \
+        "192)", [("RX402 warning", "S1.ids")]
 
 
 @fault("surf_grbric_without_ext")

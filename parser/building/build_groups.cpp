@@ -1128,9 +1128,11 @@ void surface_from_shell_groups(ModelBuilder& b, const KeywordRecord& r, model::S
       const std::int64_t id = flip ? -r.ids[k] : r.ids[k];
       const auto* g = b.element_group(type, id);
       if (!g) {
-        b.diags_.error(Diag::MissingReference, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
-                       std::string(fam.element) + " group " + std::to_string(id) + " does not exist (no " +
-                           std::string(fam.root) + "/.../" + std::to_string(id) + ")");
+        // Radioss's warning 192: the group is left out (the surface may end up empty: a warning too).
+        b.diags_.warning(Diag::MissingReference, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+                         std::string(fam.element) + " group " + std::to_string(id) + " does not exist (no " +
+                             std::string(fam.root) + "/.../" + std::to_string(id) +
+                             "): it is left out, as Radioss does");
         continue;
       }
       for (const auto e : g->elements) {
@@ -1158,9 +1160,9 @@ void surface_from_brick_groups(ModelBuilder& b, const KeywordRecord& r, model::S
     const std::int64_t id = r.ids[k] < 0 ? -r.ids[k] : r.ids[k];
     const auto* g = b.element_group(model::ElementType::Brick8, id);
     if (!g) {
-      b.diags_.error(Diag::MissingReference, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
-                     "brick group " + std::to_string(id) + " does not exist (no /GRBRIC/.../" +
-                         std::to_string(id) + ")");
+      b.diags_.warning(Diag::MissingReference, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+                       "brick group " + std::to_string(id) + " does not exist (no /GRBRIC/.../" +
+                           std::to_string(id) + "): it is left out, as Radioss does");
       continue;
     }
     for (const auto e : g->elements) {
