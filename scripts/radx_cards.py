@@ -265,7 +265,7 @@ LAYOUTS = {
     "/MAT/PLAS_JOHNS": Layout(
         Card(r("RHO_I"), r("RHO_ref")),
         Card(r("E"), r("nu"), i("Iflag", since=140), i("flagVP", since=2023), r("Pmin", since=2025)),
-        Card(r("a"), r("b"), r("n"), r("EPS_p_max"), r("SIG_max0"), when=lambda v: _int(v.get("Iflag")) == 0),
+        Card(r("a"), r("b"), r("n"), r("EPS_p_max"), r("SIG_max0"), when=lambda v: _int(v.get("Iflag")) != 1),
         Card(r("SIG_Y"), r("UTS"), r("EUTS"), r("EPS_p_max", key="EPS_p_max"), r("SIG_max0"),
              when=lambda v: _int(v.get("Iflag")) == 1),
         Card(r("c"), r("EPS_DOT_0"), i("ICC"), i("Fsmooth"), r("F_cut"), r("Chard", since=100)),
