@@ -2495,7 +2495,7 @@ def sensors_bodies_walls(tables):
     for o in m.of("/TH/ACCEL"):
         for x, p in o["ids"]:
             if x not in accels:
-                I("RX402", p[0], p[1], "TH accelerometer %d does not exist" % x)
+                I("RX402", p[0], p[1], "TH accelerometer %d does not exist" % x, warning=True)
     for o in m.of("/CLOAD"):
         need(o, "funct_IDT", functs, "function", zero_ok=False)
         need(o, "grnod_ID", grnods, "node group", zero_ok=False)
@@ -2715,13 +2715,15 @@ def transforms(tables):
 
 
 def time_history(tables):
-    """Time-history requests (build_loads.cpp): the objects they name exist, and their variable names."""
+    """Time-history requests (build_loads.cpp): the objects they name exist (a missing node or element is an
+    error, a missing part, subset, interface, wall, body, section or accelerometer a warning: left out, as
+    Radioss does), and their variable names."""
     I, by_id, elem_ids, inters, m = tables.issue, tables.by_id, tables.elem_ids, tables.inters, tables.m
     nodes, parts, sects, skews, subsets = tables.nodes, tables.parts, tables.sects, tables.skews, tables.subsets
     for o in m.of("/TH/SECTIO"):
         for x, p in o["ids"]:
             if x not in sects:
-                I("RX402", p[0], p[1], "TH section %d does not exist" % x)
+                I("RX402", p[0], p[1], "TH section %d does not exist" % x, warning=True)
 
     # time history; node values may be written in a skew, shell results only in the element frame
     for o in m.of("/TH/NODE"):
@@ -2742,16 +2744,16 @@ def time_history(tables):
     for o in m.of("/TH/PART"):
         for x, p in o["ids"]:
             if x not in parts:
-                I("RX402", p[0], p[1], "TH part %d does not exist" % x)
+                I("RX402", p[0], p[1], "TH part %d does not exist" % x, warning=True)
     for o in m.of("/TH/SUBS"):
         for x, p in o["ids"]:
             if x not in subsets:
-                I("RX402", p[0], p[1], "TH subset %d does not exist" % x)
+                I("RX402", p[0], p[1], "TH subset %d does not exist" % x, warning=True)
     type2_ids = {o["id"] for o in m.of("/INTER/TYPE2")}
     for o in m.of("/TH/INTER"):
         for x, p in o["ids"]:
             if x not in inters and x not in type2_ids:  # a TYPE2 id: a warning, not written
-                I("RX402", p[0], p[1], "TH interface %d does not exist" % x)
+                I("RX402", p[0], p[1], "TH interface %d does not exist" % x, warning=True)
     rbodies = by_id(("/RBODY",), "rigid body")
     for o in m.of("/TH/BRIC", "/TH/BRICK", "/TH/SH3N"):
         kind = "/BRICK" if o["path"] != "/TH/SH3N" else "/SH3N"
@@ -2765,7 +2767,7 @@ def time_history(tables):
     for o in m.of("/TH/RBODY"):
         for x, p in o["ids"]:
             if x not in rbodies:
-                I("RX402", p[0], p[1], "TH rigid body %d does not exist" % x)
+                I("RX402", p[0], p[1], "TH rigid body %d does not exist" % x, warning=True)
     for o in m.objs:
         if o["path"] not in TH_VARIABLES:
             continue

@@ -1763,7 +1763,8 @@ def _():
 def _():
     d = base()
     d.insert_before("BEFORE_END", th_rows("/TH/RBODY", "Rigid bodies", ["DEF"], [5]))
-    return d, "/TH/RBODY/1 lists rigid body 5, which does not exist (the deck has no /RBODY)", [("RX402", "TH_OBJ")]
+    return d, "/TH/RBODY/1 lists rigid body 5, which does not exist (the deck has no /RBODY): left out with a " \
+        "warning, as Radioss does (its 257)", [("RX402 warning", "TH_OBJ")]
 
 
 @fault("th_bric_unknown_variable")
@@ -1917,13 +1918,15 @@ def _():
 @fault("th_accel_missing_accelerometer")
 def _():
     d = with_rows(accel_rows(1), th_rows("/TH/ACCEL", "Sensors", ["DEF"], [2]))
-    return d, "/TH/ACCEL/1 lists accelerometer 2; the deck has only /ACCEL/1", [("RX402", "TH_OBJ")]
+    return d, "/TH/ACCEL/1 lists accelerometer 2; the deck has only /ACCEL/1: left out with a warning, as " \
+        "Radioss does", [("RX402 warning", "TH_OBJ")]
 
 
 @fault("th_sectio_missing_section")
 def _():
     d = with_rows(th_rows("/TH/SECTIO", "Cuts", ["DEF"], [7]))
-    return d, "/TH/SECTIO/1 lists section 7; the deck has no /SECT", [("RX402", "TH_OBJ")]
+    return d, "/TH/SECTIO/1 lists section 7; the deck has no /SECT: left out with a warning, as Radioss does", \
+        [("RX402 warning", "TH_OBJ")]
 
 
 @fault("grshel_shel_missing_element")

@@ -968,9 +968,19 @@ void th_objects(ModelBuilder& b, const KeywordRecord& r, const ThKindDef& k, mod
       return;
     }
     missing = true;
-    b.diags_.error(Diag::MissingReference, b.at(pos, 1), ModelBuilder::about(r),
-                   std::string(k.object) + " " + std::to_string(id) + " does not exist: no " +
-                       std::string(k.target) + " defines it");
+    // Radioss stops on a missing node or element (its errors 78 and 69) but leaves a missing part, subset,
+    // interface, wall, body, section or accelerometer out with a warning (257, 1610).
+    const bool named_object = k.kind == model::ThKind::Part || k.kind == model::ThKind::Subset ||
+                              k.kind == model::ThKind::Inter || k.kind == model::ThKind::Rwall ||
+                              k.kind == model::ThKind::Rbody || k.kind == model::ThKind::Section ||
+                              k.kind == model::ThKind::Accel;
+    const std::string text = std::string(k.object) + " " + std::to_string(id) + " does not exist: no " +
+                             std::string(k.target) + " defines it";
+    if (named_object)
+      b.diags_.warning(Diag::MissingReference, b.at(pos, 1), ModelBuilder::about(r),
+                       text + "; it is left out, as Radioss does");
+    else
+      b.diags_.error(Diag::MissingReference, b.at(pos, 1), ModelBuilder::about(r), text);
   };
   if (r.decl->tail == schema::Tail::ThVarsThenRecords) {
     const auto& t = r.records;
