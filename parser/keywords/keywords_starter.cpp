@@ -691,7 +691,8 @@ void add_properties_and_materials(std::vector<KeywordDecl>& t) {
                   .versions(2025)
                   .zero_is(-1e20)
                   .dims(dim::pressure)}),
-        // Radioss reads a, b, n for every Iflag but 1: an Iflag out of range is refused once, on its own field.
+        // Radioss reads a, b, n for every Iflag but 1: an Iflag out of range is refused once, on its own
+        // field.
         card_if("card 3 (Iflag 0)", when_ne("Iflag", 1),
                 {R("a", 1, 20, "initial yield stress").gt(0.0).dims(dim::pressure),
                  R("b", 21, 40, "hardening modulus").dims(dim::pressure),
