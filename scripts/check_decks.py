@@ -2161,6 +2161,10 @@ def groups(tables):
     grnods, m, mats, nodes, part_kind = tables.grnods, tables.m, tables.mats, tables.nodes, tables.part_kind
     parts, place, placed, props, surfs = tables.parts, tables.place, tables.placed, tables.props, tables.surfs
     subsets = by_id(("/SUBSET",), "subset")
+    for o in subsets.values():
+        for x, p in o["ids"]:
+            if x != 0 and x not in subsets:  # left out, as Radioss's warning 182 (0: no child)
+                I("RX402", p[0], p[1], "/SUBSET %d: child subset %d does not exist" % (o["id"], x), warning=True)
     egroups, emembers, surf_nodes, boxes = element_group_checks(ck, m, nodes, placed, place, parts, props, mats,
                                                                 subsets, elements, surfs)
     tables.grnod_members = node_group_checks(ck, m, nodes, placed, boxes, parts, props, mats, subsets, elements,
@@ -3094,7 +3098,8 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
         elif kind in ("BOX", "BOX2"):
             first = next(((x, p) for x, p in o["ids"] if x > 0), None)
             if first is not None and first[0] not in boxes:
-                missing(first[1], "box %d" % first[0])
+                # Radioss stops on a missing box in truss and beam groups (its error 798), not in the others
+                missing(first[1], "box %d" % first[0], warning=root not in ("/GRTRUS", "/GRBEAM"))
             elif first is not None:
                 inside = boxes[first[0]]
                 for e, (pid, ns) in els.items():

@@ -1988,6 +1988,21 @@ def _():
         "as in Radioss)", [("RX402 warning", "G1.ids"), ("RX403 warning", "G1_KW")]
 
 
+@fault("grtrus_box_missing_box")
+def _():
+    d = with_truss(base())
+    d.insert_before("BEFORE_END", id_list("/GRTRUS/BOX/1", "G1", "Trusses in a box", [3]))
+    return d, "/GRTRUS/BOX/1 names box 3; the deck has no /BOX: Radioss stops on it in truss and beam groups (its " \
+        "error 798), where it only warns for shells and solids", [("RX402", "G1.ids")]
+
+
+@fault("subset_missing_child")
+def _():
+    d = with_rows(id_list("/SUBSET/4", "SB", "Subset with a missing child", [9]))
+    return d, "/SUBSET/4 lists child subset 9, which does not exist: left out (a warning, Radioss's 182)", \
+        [("RX402 warning", "SB.ids")]
+
+
 @fault("box_cylinder_no_axis")
 def _():
     d = with_rows(cylinder_rows(1, (5.0, 5.0, 0.0), (5.0, 5.0, 0.0), 4.0))

@@ -368,12 +368,17 @@ void add_elements_in_box(ElementGroupList& l, bool every_node) {
   if (box_k >= r.ids.size()) return;
   const auto it = l.b.box_ids_.find(r.ids[box_k]);
   if (it == l.b.box_ids_.end()) {
-    // Radioss finds nothing in a box that does not exist and goes on.
-    l.b.diags_.warning(Diag::MissingReference, l.b.at(r.id_pos[box_k], 1), ModelBuilder::about(r),
-                       "box " + std::to_string(r.ids[box_k]) +
-                           " does not exist: there is no /BOX/RECTA, /BOX/CYLIN or /BOX/SPHER with id " +
-                           std::to_string(r.ids[box_k]) + " (listed in " + l.gname +
-                           "); it selects nothing, as in Radioss");
+    // Radioss finds nothing in a box that does not exist and goes on for shells and solids (the group is
+    // only reported empty), but stops on it for trusses and beams (its error 798).
+    const std::string text = "box " + std::to_string(r.ids[box_k]) +
+                             " does not exist: there is no /BOX/RECTA, /BOX/CYLIN or /BOX/SPHER with id " +
+                             std::to_string(r.ids[box_k]) + " (listed in " + l.gname + ")";
+    if (l.type == model::ElementType::Truss2 || l.type == model::ElementType::Beam2)
+      l.b.diags_.error(Diag::MissingReference, l.b.at(r.id_pos[box_k], 1), ModelBuilder::about(r),
+                       text + "; Radioss stops on it in truss and beam groups");
+    else
+      l.b.diags_.warning(Diag::MissingReference, l.b.at(r.id_pos[box_k], 1), ModelBuilder::about(r),
+                         text + "; it selects nothing, as in Radioss");
     return;
   }
   const auto& b = m.boxes[it->second];

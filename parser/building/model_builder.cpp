@@ -744,9 +744,10 @@ void ModelBuilder::build_subsets_and_parts() {
     for (std::size_t k = 0; k < r->ids.size(); ++k) {
       const auto c = subset_ids_.find(r->ids[k]);
       if (c == subset_ids_.end()) {
-        diags_.error(Diag::MissingReference, at(r->id_pos[k], 1), about(*r),
-                     "child subset " + std::to_string(r->ids[k]) + " does not exist (no /SUBSET/" +
-                         std::to_string(r->ids[k]) + ")");
+        // Radioss ignores it with its warning 182.
+        diags_.warning(Diag::MissingReference, at(r->id_pos[k], 1), about(*r),
+                       "child subset " + std::to_string(r->ids[k]) + " does not exist (no /SUBSET/" +
+                           std::to_string(r->ids[k]) + "): it is left out, as Radioss does");
       } else {
         m_.subsets[it->second].children.push_back(c->second);
       }
