@@ -1811,6 +1811,11 @@ def parts_and_properties(tables):
         elif val(o, "mat_ID", 0) != 0 and val(o, "mat_ID") not in mats:
             p = pos(o, "mat_ID")
             I("RX402", p[0], p[1], "part %d: material %d does not exist" % (pid, val(o, "mat_ID")))
+        subset_ids = {x["id"] for x in tables.m.of("/SUBSET")}
+        if val(o, "subset_ID", 0) != 0 and val(o, "subset_ID") not in subset_ids:
+            # Radioss resets it to none with its warning 183
+            p = pos(o, "subset_ID")
+            I("RX402", p[0], p[1], "part %d: subset %d does not exist" % (pid, val(o, "subset_ID")), warning=True)
 
     # properties
     for o in props.values():

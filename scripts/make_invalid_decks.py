@@ -2003,6 +2003,14 @@ def _():
         [("RX402 warning", "SB.ids")]
 
 
+@fault("part_missing_subset")
+def _():
+    d = base()
+    d.update("PART1", subset_ID=7)
+    return d, "/PART/1 names subset 7, which does not exist: the part belongs to no subset (a warning, Radioss's " \
+        "183 resets it to 0)", [("RX402 warning", "PART1.subset_ID")]
+
+
 @fault("box_cylinder_no_axis")
 def _():
     d = with_rows(cylinder_rows(1, (5.0, 5.0, 0.0), (5.0, 5.0, 0.0), 4.0))

@@ -765,7 +765,13 @@ void ModelBuilder::build_subsets_and_parts() {
     const bool spring = p.property == kNone || m_.properties[static_cast<std::size_t>(p.property)].kind ==
                                                    model::PropertyKind::Spring;
     p.material = ref(mat_ids_, *r, "mat_ID", "material", "/MAT", spring);
-    p.subset = ref(subset_ids_, *r, "subset_ID", "subset", "/SUBSET", true);
+    // A subset that does not exist is Radioss's warning 183: the part's subset is reset to none.
+    if (const auto sid = r->get_int("subset_ID"); sid != 0 && subset_ids_.find(sid) == subset_ids_.end())
+      warning_at(*r, "subset_ID", Diag::MissingReference,
+                 "subset_ID = " + std::to_string(sid) + ": there is no /SUBSET/" + std::to_string(sid) +
+                     " in the deck; the part belongs to no subset, as Radioss resets it");
+    else
+      p.subset = ref(subset_ids_, *r, "subset_ID", "subset", "/SUBSET", true);
     p.contact_thickness = r->get_real("Thick");
     if (p.contact_thickness < 0)
       error_at(*r, "Thick", Diag::NonPositiveThickness,
