@@ -2653,12 +2653,12 @@ def sections(tables):
         if val(o, "I_SAVE", 0) >= 100:
             p = pos(o, "I_SAVE")
             I("RX510", p[0], p[1], "/SECT %d: reading cut files is not implemented" % o["id"])
-        for f in ("grtrus_ID", "grbeam_ID", "grsprg_ID"):
-            if val(o, f, 0) != 0:
-                p = pos(o, f)
-                I("RX510", p[0], p[1], "/SECT %d: %s: a section sums bricks and shells only" % (o["id"], f))
+        if val(o, "grsprg_ID", 0) != 0:
+            p = pos(o, "grsprg_ID")
+            I("RX510", p[0], p[1], "/SECT %d: grsprg_ID: a section sums no spring force" % o["id"])
         listed = [(f, root) for f, root in (("grbric_ID", "/GRBRIC"), ("grshel_ID", "/GRSHEL"),
-                                            ("grtria_ID", "/GRSH3N")) if val(o, f, 0) != 0]
+                                            ("grtria_ID", "/GRSH3N"), ("grtrus_ID", "/GRTRUS"),
+                                            ("grbeam_ID", "/GRBEAM")) if val(o, f, 0) != 0]
         if not listed:
             p = pos(o, "grshel_ID")
             I("RX404", p[0], p[1], "/SECT %d: no element group" % o["id"])

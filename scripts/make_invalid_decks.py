@@ -1882,6 +1882,15 @@ def _():
     return d, "/SECT/1 sums /GRSHEL group 5, which does not exist", [("RX402", "SECT.grshel_ID")]
 
 
+@fault("sect_springs")
+def _():
+    d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", [1, 2]),
+                  block("SECT", "/SECT", 1, "Cut", node_ID1=1, node_ID2=2, node_ID3=4, grnod_ID=1, grshel_ID=1,
+                        grsprg_ID=3, fill=0))
+    return d, "/SECT/1 also names spring group 3: radx sums the forces of bricks, shells, trusses and beams in a " \
+        "section, not those of springs", [("RX510", "SECT.grsprg_ID")]
+
+
 @fault("sect_moving_frame")
 def _():
     d = with_rows(id_list("/GRSHEL/SHEL/1", "G1", "Shells", [1, 2]), sect_rows(1, frame=3))

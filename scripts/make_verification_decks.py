@@ -1233,7 +1233,10 @@ rotation that carries node 8 about the main node, and ~ alpha t^2 / 2; STATUS = 
 # ---------------------------------------------------------------------------------------------------
 # Sections: a clamped brick bar pulled along its axis, cut in the middle (Mg, mm, s)
 
-SECT = dict(H=10.0, NX=8, CUT=4, RHO=7.85e-9, E=210000.0, NU=0.3, P=1000.0, T_RAMP=2e-3, TH_DT=1e-4)
+SECT = dict(H=10.0, NX=8, CUT=4, RHO=7.85e-9, E=210000.0, NU=0.3, P=1000.0, T_RAMP=2e-3, TH_DT=1e-4,
+            # the truss bar (section area) and the beam (a x a square section, tip load Q along Z beside P)
+            TRUSS_A=100.0, BEAM_A=20.0, Q=100.0, LINE_Y=100.0)
+SECT_TRUSS_NODE0, SECT_BEAM_NODE0 = 1001, 2001  # node ids 1001 + i (truss), 2001 + i (beam) at x = i h
 
 
 def sect_node_id(i, j, k):
@@ -1257,12 +1260,28 @@ def sect_bar():
                 "%d bricks of %g mm along X, x = 0 clamped; the four nodes at x = %g pulled along +X, P(t) = %g N"
                 % (nx, h, nx * h, p["P"]), "in total rising linearly over %g s; the cut is the plane x = %g."
                 % (p["T_RAMP"], cut * h)])
+    y_t, y_b = p["LINE_Y"], 2 * p["LINE_Y"]
+    line_nodes = [(SECT_TRUSS_NODE0 + i, i * h, y_t, 0.0) for i in range(nx + 1)]
+    line_nodes += [(SECT_BEAM_NODE0 + i, i * h, y_b, 0.0) for i in range(nx + 1)]
+    line_nodes += [(3000, 0.0, y_b + 50.0, 0.0)]  # the beams' orientation node: local y along global Y
     D += node_block(nodes, "Bar nodes: id = 1 + 4 i + j + 2 k at (i h, j h, k h)")
+    D += node_block(line_nodes, "Truss bar nodes 1001 + i, beam nodes 2001 + i at x = i h; 3000 orients the beams")
     D.append(RULER)
     D += brick_block(1, bricks, "Bricks 1..%d, brick i + 1 between x = i h and (i + 1) h" % nx)
+    D += ["#  Trusses 1001 + i and beams 2001 + i between x = i h and (i + 1) h"]
+    D += rc.rows("/TRUSS", [(SECT_TRUSS_NODE0 + i, SECT_TRUSS_NODE0 + i, SECT_TRUSS_NODE0 + i + 1)
+                            for i in range(nx)], ident=2)
+    D += rc.rows("/BEAM", [(SECT_BEAM_NODE0 + i, SECT_BEAM_NODE0 + i, SECT_BEAM_NODE0 + i + 1, 3000)
+                           for i in range(nx)], ident=3)
     D.append(RULER)
+    a = p["BEAM_A"]
     D += part_card(1, "Bar", 1, 1)
+    D += part_card(2, "Truss bar", 2, 1)
+    D += part_card(3, "Beam cantilever", 3, 1)
     D += prop_solid(1, "Bar solid")
+    D += rc.card("/PROP/TRUSS", 2, "Truss section %g mm2" % p["TRUSS_A"], Area=p["TRUSS_A"], Gap=0.0)
+    D += rc.card("/PROP/BEAM", 3, "Square %g mm without damping" % a, Ismstr=0, Dm=0.0, Df=1e-30, Area=a * a,
+                 Iyy=a ** 4 / 12, Izz=a ** 4 / 12, Ixx=0.1406 * a ** 4, Wdof="000 000", Ishear=0)
     D += mat_law1(1, "Steel (elastic)", p["RHO"], p["E"], p["NU"])
     D.append(RULER)
     D += grnod_node(1, "Clamped end x = 0", [n(0, j, k) for k in range(2) for j in range(2)])
@@ -1270,8 +1289,21 @@ def sect_bar():
     D += grnod_node(3, "Cut x = %g" % (cut * h), cut_nodes)
     D += rc.card("/GRBRIC/BRIC", 1, "Held side (x < cut)", ids=range(1, cut + 1))
     D += rc.card("/GRBRIC/BRIC", 2, "Pulled side (x > cut)", ids=range(cut + 1, nx + 1))
+    D += grnod_node(4, "Truss and beam roots x = 0", [SECT_TRUSS_NODE0, SECT_BEAM_NODE0])
+    D += grnod_node(5, "Truss and beam tips", [SECT_TRUSS_NODE0 + nx, SECT_BEAM_NODE0 + nx])
+    D += grnod_node(6, "Beam tip", [SECT_BEAM_NODE0 + nx])
+    D += grnod_node(7, "Truss cut", [SECT_TRUSS_NODE0 + cut])
+    D += grnod_node(8, "Beam cut", [SECT_BEAM_NODE0 + cut])
+    D += grnod_node(9, "Truss nodes: no rotation and no lateral motion",
+                    [SECT_TRUSS_NODE0 + i for i in range(1, nx + 1)])
+    D += rc.card("/GRTRUS/TRUS", 3, "Truss bar on the pulled side", ids=[SECT_TRUSS_NODE0 + i for i in range(cut, nx)])
+    D += rc.card("/GRBEAM/BEAM", 4, "Beam on the pulled side", ids=[SECT_BEAM_NODE0 + i for i in range(cut, nx)])
     D += bcs(1, "Clamped end", "111", "000", 1)
+    D += bcs(2, "Clamped truss and beam roots", "111", "111", 4)
+    D += bcs(3, "Truss nodes move along X only", "011", "111", 9)
     D += cload(1, "Pull along +X with P/4 on each end node", "X", 2, p["P"] / 4)
+    D += cload(2, "Pull the truss and beam tips along +X with P", "X", 5, p["P"])
+    D += cload(3, "Push the beam tip along +Z with Q", "Z", 6, p["Q"])
     D += funct(1, "Ramp", [(0.0, 0.0), (p["T_RAMP"], 1.0), (1.0, 1.0)])
     D.append(RULER)
     # Section 1: the pulled side, frame of the cut's nodes (e1 = Y, e3 = X the normal), centre N1 (Iframe 0).
@@ -1280,8 +1312,11 @@ def sect_bar():
                                        (2, "Held side in global axes about the centre of the cut", 1, 11)):
         D += rc.card("/SECT", sid, title, node_ID1=n(cut, 0, 0), node_ID2=n(cut, 1, 0), node_ID3=n(cut, 0, 1),
                      grnod_ID=3, grbric_ID=grbric, Iframe=iframe, fill=0)
+    # Sections 3 and 4: the truss bar's and the beam's pulled sides, global axes about their cut node.
+    D += rc.card("/SECT", 3, "Truss bar on the pulled side", grnod_ID=7, grtrus_ID=3, Iframe=11, fill=0)
+    D += rc.card("/SECT", 4, "Beam on the pulled side", grnod_ID=8, grbeam_ID=4, Iframe=11, fill=0)
     D.append(RULER)
-    D += th_group("/TH/SECTIO", 1, "Both sides", ["DEF", "GLOBAL", "LOCAL", "CENTER"], [1, 2])
+    D += th_group("/TH/SECTIO", 1, "Both sides", ["DEF", "GLOBAL", "LOCAL", "CENTER"], [1, 2, 3, 4])
     D += th_group("/TH/NODE", 2, "Pulled end node", ["DEF"], [n(nx, 1, 1)], "id+skew")
     D.append(RULER)
     D.append("/END")
@@ -1304,6 +1339,13 @@ the node group of the four nodes at x = {cut * h:g}; `/TFILE` every {p['TH_DT']:
   N1 = (40, 0, 0), N2 = (40, 10, 0), N3 = (40, 0, 10): e1 = Y, e3 = e1 x (N3 - N1) = X (the normal), e2 = e3 x e1 = Z;
   Iframe 0 puts the centre C at N3 projected on the line N1 N2, that is N1.
 - `/SECT/2` sums the bricks on the held side, global axes (Iframe 11), centre = the mean of the cut's nodes.
+- Beside the bar, a bar of {nx} trusses ({p['TRUSS_A']:g} mm2, nodes 1001 + i) and a cantilever of {nx} type-3
+  beams ({p['BEAM_A']:g} x {p['BEAM_A']:g} mm, nodes 2001 + i), both clamped at x = 0 and pulled at their tips by
+  P(t) along X; the beam's tip is also pushed along Z by Q(t) = {p['Q']:g} N t / {p['T_RAMP']:g} s. `/SECT/3`
+  sums the trusses on the pulled side at the truss node x = {cut * h:g}, `/SECT/4` the beams on the pulled side at
+  the beam node x = {cut * h:g}, both in global axes about their single cut node (Iframe 11): the truss cut
+  gives F = (P, 0, 0), the beam cut F = (P, 0, Q) and the moment of the tip load about the cut,
+  M = (L - x_cut) e_x x Q e_z = (0, -(L - x_cut) Q, 0), carried by the beams' nodal moments.
 
 Quasi-statically the pulled side pulls the cut's nodes with F = (P, 0, 0) and the held side with (-P, 0, 0). The
 stress is uniform, so each cut node carries a quarter: about N1 the moment of section 1 is

@@ -319,7 +319,7 @@ RADX_SCHEMA(Sensor, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(type), RADX_FI
             RADX_FIELD(t_stop));
 RADX_SCHEMA(Section, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(n1), RADX_FIELD(n2), RADX_FIELD(n3),
             RADX_FIELD(node_group), RADX_FIELD(iframe), RADX_FIELD(nodes), RADX_FIELD(shells),
-            RADX_FIELD(shells3), RADX_FIELD(bricks));
+            RADX_FIELD(shells3), RADX_FIELD(bricks), RADX_FIELD(trusses), RADX_FIELD(beams));
 RADX_SCHEMA(TimeHistoryGroup, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(variables),
             RADX_FIELD(objects), RADX_FIELD(skews));
 RADX_SCHEMA(ContactLaw, RADX_FIELD(normal), RADX_FIELD(friction), RADX_FIELD(bidirectional), RADX_FIELD(kc),

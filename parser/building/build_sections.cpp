@@ -34,9 +34,11 @@ std::vector<std::int32_t> touching(const model::ElementBlock& block,
                                    const std::vector<std::int32_t>& nodes) {
   std::vector<std::int32_t> out;
   const auto npe = static_cast<std::size_t>(block.npe());
+  // A beam's orientation node carries no force: only its two end nodes can be on the cut.
+  const std::size_t force_nodes = block.type == model::ElementType::Beam2 ? 2 : npe;
   for (const auto e : elements) {
     const auto* c = &block.conn[static_cast<std::size_t>(e) * npe];
-    if (std::any_of(c, c + npe,
+    if (std::any_of(c, c + force_nodes,
                     [&](std::int32_t n) { return std::binary_search(nodes.begin(), nodes.end(), n); }))
       out.push_back(e);
   }
@@ -102,14 +104,13 @@ void refuse_section_options(ModelBuilder& b, const KeywordRecord& r) {
                "I_SAVE = " + std::to_string(isave) +
                    ": reading a section cut file as input is not implemented; accepted: 0, or 1 and 2 (cut "
                    "file not written)");
-  // Trusses and beams run, but a section sums the forces of bricks and shells only: the section's forces
-  // would leave theirs out.
-  for (const auto field : {"grtrus_ID", "grbeam_ID", "grsprg_ID"})
-    if (const auto g = r.get_int(field); g != 0)
-      b.error_at(r, field, Diag::PhysicsNotImplemented,
-                 std::string(field) + " = " + std::to_string(g) +
-                     ": radx sums the forces of bricks and shells only in a section, not those of trusses, "
-                     "beams or springs; leave it 0");
+  // Springs run, but a section sums the forces of bricks, shells, trusses and beams only: the section's
+  // forces would leave theirs out.
+  if (const auto g = r.get_int("grsprg_ID"); g != 0)
+    b.error_at(r, "grsprg_ID", Diag::PhysicsNotImplemented,
+               "grsprg_ID = " + std::to_string(g) +
+                   ": radx sums the forces of bricks, shells, trusses and beams in a section, not those of "
+                   "springs; leave it 0");
 }
 
 // The cut's node group grnod_ID and its nodes, which must not be empty.
@@ -123,8 +124,8 @@ void read_section_nodes(ModelBuilder& b, const KeywordRecord& r, model::Section&
                    " is empty: the section has no node to sum the element forces at");
 }
 
-// The elements of the groups grbric_ID, grshel_ID and grtria_ID that touch the cut's nodes; at least one
-// group is needed, and together they must touch the cut.
+// The elements of the groups grbric_ID, grshel_ID, grtria_ID, grtrus_ID and grbeam_ID that touch the cut's
+// nodes; at least one group is needed, and together they must touch the cut.
 void read_section_elements(ModelBuilder& b, const KeywordRecord& r, model::Section& s) {
   bool any_group = false, group_missing = false;
   auto elements = [&](std::string_view field, model::ElementType type, std::string_view keyword,
@@ -156,16 +157,19 @@ void read_section_elements(ModelBuilder& b, const KeywordRecord& r, model::Secti
           r, field, Diag::PhysicsNotImplemented,
           std::string(field) + " = " + std::to_string(id) + ": " + std::to_string(t.size()) +
               " tetrahedra of the group touch the cut, and radx sums no tetrahedron force in a section "
-              "(bricks and shells only); leave them out of the group");
+              "(bricks, shells, trusses and beams only); leave them out of the group");
   };
   elements("grbric_ID", model::ElementType::Brick8, "/GRBRIC", s.bricks);
   elements("grshel_ID", model::ElementType::Shell4, "/GRSHEL", s.shells);
   elements("grtria_ID", model::ElementType::Shell3, "/GRSH3N", s.shells3);
+  elements("grtrus_ID", model::ElementType::Truss2, "/GRTRUS", s.trusses);
+  elements("grbeam_ID", model::ElementType::Beam2, "/GRBEAM", s.beams);
   if (!any_group)
     b.error_at(r, "grshel_ID", Diag::RequiredIdMissing,
-               "no element group: give grbric_ID, grshel_ID or grtria_ID, the elements whose forces on the "
-               "section's nodes are summed");
-  else if (!group_missing && !s.nodes.empty() && s.bricks.empty() && s.shells.empty() && s.shells3.empty())
+               "no element group: give grbric_ID, grshel_ID, grtria_ID, grtrus_ID or grbeam_ID, the elements "
+               "whose forces on the section's nodes are summed");
+  else if (!group_missing && !s.nodes.empty() && s.bricks.empty() && s.shells.empty() && s.shells3.empty() &&
+           s.trusses.empty() && s.beams.empty())
     b.error_at(
         r, "grshel_ID", Diag::EmptyGroup,
         "no element of the groups has a node in grnod_ID " + std::to_string(r.get_int("grnod_ID")) +

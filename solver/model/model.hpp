@@ -514,6 +514,8 @@ struct Section {
   std::vector<std::int32_t> shells;   // 4-node shells of grshel_ID with a node in `nodes`
   std::vector<std::int32_t> shells3;  // 3-node shells of grtria_ID with a node in `nodes`
   std::vector<std::int32_t> bricks;   // bricks of grbric_ID with a node in `nodes`
+  std::vector<std::int32_t> trusses;  // trusses of grtrus_ID with a node in `nodes`
+  std::vector<std::int32_t> beams;    // beams of grbeam_ID with a node in `nodes`
 };
 
 // /ACCEL: an accelerometer on a node, its axes a skew's (0: global), its signal filtered by a 4-pole

@@ -1,7 +1,9 @@
 // Section cut forces, as OpenRadioss computes them (engine section.F, section_c.F, section_skew.F):
 //
-//   F = sum_{e in groups} sum_{q in e, node(q) in cut} f_eq                  (f_eq: force element e adds to
-//   q) M = sum_{e, q} (x_node(q) - C) x f_eq + m_eq                          (m_eq: shell nodal moment)
+//   F = sum_{e in groups} sum_{q in e, node(q) in cut} f_eq        (f_eq: force element e adds to q;
+//                                                                   bricks, shells, trusses and beams)
+//   M = sum_{e, q} (x_node(q) - C) x f_eq + m_eq                   (m_eq: shell or beam nodal moment;
+//                                                                   section_p.F for beams, section_t.F)
 //   frame, from the current positions, Iframe < 10:
 //     e1 = (x2 - x1)/|x2 - x1|,  e3 = e1 x (x3 - x1)/|.|,  e2 = e3 x e1,  n = e3
 //   Iframe >= 10: e_k = global axes, n = (x2 - x1) x (x3 - x1)/|.| (n = Z when N1 is 0)
@@ -37,7 +39,7 @@ Vec3 minus(const Vec3& a, const Vec3& b) {
   return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
 }
 
-// Element index in its model block -> (group, slot), for the shell groups of one kind or the brick groups.
+// Element index in its model block -> (group, slot), for the groups of one kind that `keep` accepts.
 template <class Group, class Keep>
 std::vector<std::pair<int, int>> slots_of(const std::vector<Group>& groups, Keep keep) {
   std::vector<std::pair<int, int>> where;
@@ -54,31 +56,33 @@ std::vector<std::pair<int, int>> slots_of(const std::vector<Group>& groups, Keep
 
 }  // namespace
 
-SectionSum::SectionSum(const model::Section& s, const std::vector<ShellGroup>& shells,
-                       const std::vector<BrickGroup>& bricks)
+SectionSum::SectionSum(const model::Section& s, const ElementGroups& groups)
     : nodes_(s.nodes), n1_(s.n1), n2_(s.n2), n3_(s.n3), iframe_(s.iframe) {
   auto on_cut = [&](std::int32_t n) { return std::binary_search(nodes_.begin(), nodes_.end(), n); };
-  auto add = [&](const auto& groups, const auto& where, const std::vector<std::int32_t>& elements, int npe,
-                 bool shell) {
+  auto add = [&](const auto& kind_groups, const auto& where, const std::vector<std::int32_t>& elements,
+                 int npe, Kind kind) {
     for (const auto el : elements) {
       const auto e = static_cast<std::size_t>(el);
       if (e >= where.size() || where[e].first < 0) continue;  // not run (e.g. inside a rigid body)
       const auto [gi, i] = where[e];
-      const auto& g = groups[static_cast<std::size_t>(gi)];
-      Term t{shell, gi, i, 0};
+      const auto& g = kind_groups[static_cast<std::size_t>(gi)];
+      Term t{kind, gi, i, 0};
       for (int q = 0; q < npe; ++q)
         if (on_cut(g.conn[static_cast<std::size_t>(q * kGroupSize + i)])) t.corners |= std::uint8_t(1u << q);
       if (t.corners != 0) terms_.push_back(t);
     }
   };
+  const auto all = [](const auto&) { return true; };
+  const auto& shells = groups.shells;
   // A degenerate quad (n3 == n4) keeps four corners, each with its share of the force: both count.
-  add(shells, slots_of(shells, [](const ShellGroup& g) { return !g.triangle; }), s.shells, 4, true);
-  add(shells, slots_of(shells, [](const ShellGroup& g) { return g.triangle; }), s.shells3, 3, true);
-  add(bricks, slots_of(bricks, [](const BrickGroup&) { return true; }), s.bricks, 8, false);
+  add(shells, slots_of(shells, [](const ShellGroup& g) { return !g.triangle; }), s.shells, 4, Kind::Shell);
+  add(shells, slots_of(shells, [](const ShellGroup& g) { return g.triangle; }), s.shells3, 3, Kind::Shell);
+  add(groups.bricks, slots_of(groups.bricks, all), s.bricks, 8, Kind::Brick);
+  add(groups.trusses, slots_of(groups.trusses, all), s.trusses, 2, Kind::Truss);
+  add(groups.beams, slots_of(groups.beams, all), s.beams, 2, Kind::Beam);
 }
 
-SectionCut SectionSum::evaluate(const NodeState& nodes, const std::vector<ShellGroup>& shells,
-                                const std::vector<BrickGroup>& bricks) const {
+SectionCut SectionSum::evaluate(const NodeState& nodes, const ElementGroups& groups) const {
   SectionCut c;
   auto x = [&](std::int32_t n) {
     const auto k = static_cast<std::size_t>(n);
@@ -129,16 +133,19 @@ SectionCut SectionSum::evaluate(const NodeState& nodes, const std::vector<ShellG
     }
   };
   constexpr auto G = static_cast<std::size_t>(kGroupSize);
-  for (const auto& t : terms_) {
+  // The corners of one term whose node is on the cut: C components per node (3 forces, or 6 with moments).
+  const auto add_corners = [&](const auto& g, const Term& t, std::size_t corners, std::size_t C) {
     const auto i = static_cast<std::size_t>(t.slot);
-    if (t.shell) {
-      const auto& g = shells[static_cast<std::size_t>(t.group)];
-      for (std::size_t q = 0; q < 4; ++q)
-        if (t.corners & (1u << q)) add(g.conn[q * G + i], &g.nodal_force[q * 6 * G + i], G, true);
-    } else {
-      const auto& g = bricks[static_cast<std::size_t>(t.group)];
-      for (std::size_t q = 0; q < 8; ++q)
-        if (t.corners & (1u << q)) add(g.conn[q * G + i], &g.nodal_force[q * 3 * G + i], G, false);
+    for (std::size_t q = 0; q < corners; ++q)
+      if (t.corners & (1u << q)) add(g.conn[q * G + i], &g.nodal_force[q * C * G + i], G, C == 6);
+  };
+  for (const auto& t : terms_) {
+    const auto k = static_cast<std::size_t>(t.group);
+    switch (t.kind) {
+      case Kind::Shell: add_corners(groups.shells[k], t, 4, 6); break;
+      case Kind::Brick: add_corners(groups.bricks[k], t, 8, 3); break;
+      case Kind::Truss: add_corners(groups.trusses[k], t, 2, 3); break;
+      case Kind::Beam: add_corners(groups.beams[k], t, 2, 6); break;
     }
   }
   const double fn = dot(c.force, c.normal);

@@ -30,14 +30,13 @@ struct SectionCut {
 // run), with the corners that lie on the cut. Read-only on the groups and the nodes.
 class SectionSum {
  public:
-  SectionSum(const model::Section& s, const std::vector<ShellGroup>& shells,
-             const std::vector<BrickGroup>& bricks);
-  [[nodiscard]] SectionCut evaluate(const NodeState& nodes, const std::vector<ShellGroup>& shells,
-                                    const std::vector<BrickGroup>& bricks) const;
+  SectionSum(const model::Section& s, const ElementGroups& groups);
+  [[nodiscard]] SectionCut evaluate(const NodeState& nodes, const ElementGroups& groups) const;
 
  private:
+  enum class Kind : std::uint8_t { Shell, Brick, Truss, Beam };
   struct Term {
-    bool shell = true;
+    Kind kind = Kind::Shell;
     int group = 0, slot = 0;
     std::uint8_t corners = 0;  // bit q set: corner q of the element is a node of the cut
   };

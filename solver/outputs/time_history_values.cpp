@@ -173,8 +173,7 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
     return;
   }
   if (kind_ == K::Section) {
-    for (const auto o : objects_)
-      sections_.emplace_back(m.sections[static_cast<std::size_t>(o)], e.groups().shells, e.groups().bricks);
+    for (const auto o : objects_) sections_.emplace_back(m.sections[static_cast<std::size_t>(o)], e.groups());
     return;
   }
   if (kind_ == K::Node) {
@@ -465,7 +464,7 @@ void ThGroupSampler::sample_sections(const ExplicitEngine& e, const CycleReport&
                                      const ThPut& put) const {
   const auto& s = e.nodes();
   for (std::size_t o = 0; o < objects_.size(); ++o) {
-    const SectionCut c = sections_[o].evaluate(s, e.groups().shells, e.groups().bricks);
+    const SectionCut c = sections_[o].evaluate(s, e.groups());
     const char* axes[3] = {"X", "Y", "Z"};
     for (std::size_t d = 0; d < 3; ++d) {
       const std::string ax = axes[d], k = std::to_string(d + 1);

@@ -1,4 +1,5 @@
-"""Section forces (/SECT, /TH/SECTIO) on a clamped brick bar pulled by a slow ramp.
+"""Section forces (/SECT, /TH/SECTIO) on a clamped brick bar, a truss bar and a beam cantilever pulled by a slow
+ramp.
 
 usage: /usr/bin/python3 check_sections.py --radx RADX --deck decks/verification/sections/SECT_BAR_0000.rad --out DIR
 
@@ -16,7 +17,7 @@ import numpy as np
 
 from results_common import check, finish, run_radx
 
-SECT = dict(H=10.0, NX=8, CUT=4, RHO=7.85e-9, E=210000.0, P=1000.0, T_RAMP=2e-3)
+SECT = dict(H=10.0, NX=8, CUT=4, RHO=7.85e-9, E=210000.0, P=1000.0, T_RAMP=2e-3, BEAM_A=20.0, Q=100.0)
 
 
 def within(got, want, atol, what):
@@ -74,6 +75,25 @@ def main():
     within(np.c_[col(1, "CX"), col(1, "CY"), col(1, "CZ")], np.array([cut, 0, 0]), 0.01, "section 1 centre = N1")
     within(np.c_[col(2, "CX"), col(2, "CY"), col(2, "CZ")], np.array([cut, h / 2, h / 2]), 0.01,
            "section 2 centre = mean of the cut's nodes")
+    # Sections 3 and 4 (Iframe 11, global axes about the single cut node): the truss bar's pulled side pulls the
+    # cut node with (P, 0, 0); the beam's with (P, 0, Q) and the moment of the tip load Q about the cut,
+    # (0, -(L - x_cut) Q, 0), carried by the beams' nodal moments. The axial force follows P within tol as the
+    # brick bar's does; the tip load Q excites the cantilever's first bending mode, omega_b = 1.875^2
+    # sqrt(E I / (rho A L^4)), by Q / (omega_b T): the beam's Z force and moment are checked within twice that.
+    arm = L - p["CUT"] * h
+    q_load = p["Q"] * np.minimum(t / p["T_RAMP"], 1.0)
+    a = p["BEAM_A"]
+    omega_b = 1.875 ** 2 * math.sqrt(p["E"] * a ** 4 / 12 / (p["RHO"] * a * a * L ** 4))
+    tol_q = max(0.01, 2.0 / (omega_b * p["T_RAMP"])) * p["Q"]
+    for s in (3, 4):
+        within(col(s, "FNX") + col(s, "FTX"), load, tol, "section %d F.X = +P(t)" % s)
+        within(col(s, "FNY") + col(s, "FTY"), 0.0, 1e-3 * P, "section %d F.Y = 0" % s)
+        within(col(s, "MX"), 0.0, 1e-3 * h * P, "section %d MX = 0" % s)
+        within(col(s, "MZ"), 0.0, 1e-3 * h * P, "section %d MZ = 0" % s)
+    within(col(3, "FNZ") + col(3, "FTZ"), 0.0, 1e-3 * P, "section 3 (trusses) F.Z = 0")
+    within(col(3, "MY"), 0.0, 1e-3 * h * P, "section 3 (trusses) MY = 0: the cut node is the centre")
+    within(col(4, "FNZ") + col(4, "FTZ"), q_load, tol_q, "section 4 (beams) F.Z = +Q(t)")
+    within(col(4, "MY"), -arm * q_load, arm * tol_q, "section 4 (beams) MY = -(L - x_cut) Q(t)")
     check(units["1:FNX"] == "N" and units["1:M1"] in ("N.mm", "mJ") and units["1:CX"] == "mm",
           "units %s %s %s" % (units["1:FNX"], units["1:M1"], units["1:CX"]))
     finish("section forces follow P(t) = %g N within %.3g N; moments and centres as in the README" % (P, tol))
