@@ -3102,6 +3102,11 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
                     (rem if x < 0 else add).update(got)
         elif kind in ("BOX", "BOX2"):
             first = next(((x, p) for x, p in o["ids"] if x > 0), None)
+            for x, p in o["ids"]:  # only the first positive id is read
+                if first is None or (x, p) != first:
+                    I("RX310", p[0], p[1], "%s %d: box id %d ignored" % (o["path"], o["id"], x), warning=True)
+            if first is None and root in ("/GRTRUS", "/GRBEAM"):
+                I("RX404", o["pos"][0], o["pos"][1], "%s %d names no box" % (o["path"], o["id"]))
             if first is not None and first[0] not in boxes:
                 # Radioss stops on a missing box in truss and beam groups (its error 798), not in the others
                 missing(first[1], "box %d" % first[0], warning=root not in ("/GRTRUS", "/GRBEAM"))

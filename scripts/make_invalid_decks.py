@@ -2005,6 +2005,14 @@ def _():
         "error 798), where it only warns for shells and solids", [("RX402", "G1.ids")]
 
 
+@fault("grbeam_box_no_box")
+def _():
+    d = with_beam(base())
+    d.insert_before("BEFORE_END", id_list("/GRBEAM/BOX/1", "G1", "Beams in no box", [-4]))
+    return d, "/GRBEAM/BOX/1 lists no positive box id: Radioss stops on it in truss and beam groups (its error " \
+        "798 on box 0); the negative id is ignored (a warning)", [("RX404", "G1_KW"), ("RX310 warning", "G1.ids")]
+
+
 @fault("subset_missing_child")
 def _():
     d = with_rows(id_list("/SUBSET/4", "SB", "Subset with a missing child", [9]))

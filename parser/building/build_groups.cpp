@@ -365,7 +365,15 @@ void add_elements_in_box(ElementGroupList& l, bool every_node) {
   const auto& r = l.r;
   const auto& m = l.b.m_;
   const std::size_t box_k = first_box_entry(l);
-  if (box_k >= r.ids.size()) return;
+  const bool line_elements = l.type == model::ElementType::Truss2 || l.type == model::ElementType::Beam2;
+  if (box_k >= r.ids.size()) {
+    // No positive box id: Radioss stops on it in truss and beam groups (its error 798 on box 0).
+    if (line_elements)
+      l.b.diags_.error(Diag::RequiredIdMissing, l.b.at(r.pos, 1), ModelBuilder::about(r),
+                       l.gname + " names no box (no positive box id): Radioss stops on it in truss and beam "
+                                 "groups; give the id of a /BOX");
+    return;
+  }
   const auto it = l.b.box_ids_.find(r.ids[box_k]);
   if (it == l.b.box_ids_.end()) {
     // Radioss finds nothing in a box that does not exist and goes on for shells and solids (the group is
@@ -373,7 +381,7 @@ void add_elements_in_box(ElementGroupList& l, bool every_node) {
     const std::string text = "box " + std::to_string(r.ids[box_k]) +
                              " does not exist: there is no /BOX/RECTA, /BOX/CYLIN or /BOX/SPHER with id " +
                              std::to_string(r.ids[box_k]) + " (listed in " + l.gname + ")";
-    if (l.type == model::ElementType::Truss2 || l.type == model::ElementType::Beam2)
+    if (line_elements)
       l.b.diags_.error(Diag::MissingReference, l.b.at(r.id_pos[box_k], 1), ModelBuilder::about(r),
                        text + "; Radioss stops on it in truss and beam groups");
     else
