@@ -370,8 +370,9 @@ void add_elements_in_box(ElementGroupList& l, bool every_node) {
     // No positive box id: Radioss stops on it in truss and beam groups (its error 798 on box 0).
     if (line_elements)
       l.b.diags_.error(Diag::RequiredIdMissing, l.b.at(r.pos, 1), ModelBuilder::about(r),
-                       l.gname + " names no box (no positive box id): Radioss stops on it in truss and beam "
-                                 "groups; give the id of a /BOX");
+                       l.gname +
+                           " names no box (no positive box id): Radioss stops on it in truss and beam "
+                           "groups; give the id of a /BOX");
     return;
   }
   const auto it = l.b.box_ids_.find(r.ids[box_k]);
