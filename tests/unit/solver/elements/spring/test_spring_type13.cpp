@@ -265,6 +265,48 @@ TEST_CASE("TYPE13 in the engine: an axial oscillator at 2 pi sqrt(m / k)", "[spr
   CHECK(rel(e, e0) < 1e-3);  // KE + spring energy conserved (no damping)
 }
 
+TEST_CASE("TYPE13 in the engine: a pretensioned spring that breaks keeps the work done up to its last cycle",
+          "[spring13][engine]") {
+  // The tension law is the curve f(u) = F0 + K u (a pretension F0 at u = 0), with delta_max = d_max. Node 2
+  // (mass m) leaves at v0 along the spring: the spring decelerates it until u passes d_max, then breaks.
+  // Energy: the spring's work W(u) = F0 u + K u^2 / 2 up to the elongation of the breaking cycle, which lies
+  // between d_max and d_max + v0 dt (one step beyond), is what it keeps; the node keeps KE0 - W.
+  const double F0 = 1000.0, K = 1000.0, d_max = 5.0, m_add = 1e-3, v0 = 6000.0, M = 1e-5;
+  std::string prop = spr_beam(M, 0.0, {K, 0, 0, 0, 0, 0});
+  // The tension law's second card (the first line that is a lone 0): fct_ID11 = 7, H = 0, delta_min -20,
+  // delta_max d_max.
+  const std::string card2 = "\n" + Line().put(0, 1, 10).str() + "\n";
+  prop.replace(prop.find(card2), card2.size(),
+               "\n" + Line().put(7, 1, 10).put(-20.0, 61, 80).put(d_max, 81, 100).str() + "\n");
+  const std::string extra =
+      "/FUNCT/7\npretension\n" + Line().put(-100.0, 1, 20).put(F0 - 100 * K, 21, 40).str() + "\n" +
+      Line().put(100.0, 1, 20).put(F0 + 100 * K, 21, 40).str() + "\n" + "/GRNOD/NODE/3\nmoving\n" +
+      Line().put(2, 1, 10).str() + "\n/INIVEL/TRA/1\nstart\n" +
+      Line().put(v0, 1, 20).put(0.0, 21, 40).put(0.0, 41, 60).put(3, 61, 70).str() + "\n";
+  const auto m = radx::test::model_of_deck(deck_of(prop, m_add, extra));
+  radx::model::RunControls rc;
+  rc.t_stop = 2e-3;
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  double dt_max = 0, e0 = 0, ke = 0, ie = 0;
+  engine.run([&](const radx::solver::CycleReport& r) {
+    dt_max = std::max(dt_max, r.dt);
+    if (r.full) {
+      if (e0 == 0) e0 = r.energy.kinetic_t;
+      ke = r.energy.kinetic_t;
+      ie = r.energy.internal;
+    }
+    return true;
+  });
+  REQUIRE(engine.groups().springs.at(0).off[0] == 0.0);
+  const double mass = m_add + 0.5 * M;
+  const auto work = [&](double u) { return F0 * u + 0.5 * K * u * u; };
+  CHECK(rel(e0, 0.5 * mass * v0 * v0) < 1e-12);
+  // The trapezoid books each step's work to second order: 1e-3 of W is far above that error here.
+  CHECK(ie >= work(d_max) * (1 - 1e-3));
+  CHECK(ie <= work(d_max + v0 * dt_max) * (1 + 1e-3));
+  CHECK(rel(ke + ie, e0) < 1e-3);  // nothing is lost when the spring lets go
+}
+
 TEST_CASE("TYPE13 in the engine: a torsional oscillator at 2 pi sqrt(I / k_r)", "[spring13][engine]") {
   // Node 2 gets I_a / 2 from spring 1 and I_b / 2 from spring 2 (part 2, to the free node 3, no stiffness):
   // I = (I_a + I_b) / 2, large against I_a so that the step sqrt(I_a / K4) is far below the period.
