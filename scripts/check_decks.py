@@ -2529,6 +2529,21 @@ def sensors_bodies_walls(tables):
         if val(o, "Ioptoff", 0) == 1:
             p = pos(o, "Ioptoff")
             I("RX510", p[0], p[1], "/RBODY %d: Ioptoff = 1 is not implemented" % o["id"])
+        # a group holding only the main node: a warning; then, without added inertia and with a main node of no
+        # shell, beam or spring, the body has no rotational inertia (Radioss's error 274)
+        main, gid = val(o, "node_ID", 0), val(o, "grnd_ID", 0)
+        if gid in grnods and main in nodes:
+            members = tables.grnod_members.get(gid, set())
+            if members and not (members - {main}):
+                p = pos(o, "grnd_ID")
+                I("RX403", p[0], p[1], "/RBODY %d: its group holds only the main node" % o["id"], warning=True)
+            rotational = any(main in ns for kind in ("/SHELL", "/SH3N", "/BEAM")
+                             for _, ns in tables.elements[kind].values()) or \
+                any(main in [r.get("n1"), r.get("n2"), r.get("n3")] for so in m.of("/SPRING") for r, _ in so["recs"])
+            if not (members - {main}) and val(o, "sens_ID", 0) == 0 and not rotational and \
+                    all(val(o, k, 0.0) <= 0 for k in ("Jxx", "Jyy", "Jzz")):
+                p = pos(o, "grnd_ID")
+                I("RX502", p[0], p[1], "/RBODY %d: no secondary node and no inertia" % o["id"])
     for o in m.of("/RWALL/CYL", "/RWALL/SPHER"):
         if val(o, "Diameter", 0.0) <= 0:
             p = pos(o, "Diameter")

@@ -1375,6 +1375,17 @@ def _():
         [("RX510", "RB.Ioptoff")]
 
 
+@fault("rbody_no_inertia")
+def _():
+    rows = block("N99", "/NODE", rows=[(99, 5.0, 5.0, 10.0)])
+    rows += block("G7", "/GRNOD/NODE", 7, "The main node only", ids=[99])
+    rows += block("RB", "/RBODY", 1, "Main node alone", node_ID=99, Mass=1e-3, grnd_ID=7, fill=0)
+    return with_rows(rows), \
+        "/RBODY/1's group holds only its main node (a warning): no secondary node, no added inertia and a main " \
+        "node of no element, so it cannot turn (Radioss's error 274)", \
+        [("RX403 warning", "RB.grnd_ID"), ("RX502", "RB.grnd_ID")]
+
+
 @fault("inter_missing_surface")
 def _():
     return with_inter(base(), surf=99), "/INTER/TYPE7/1 names surface 99, which does not exist", \

@@ -615,6 +615,25 @@ void check_sensor_body(ModelBuilder& b, const KeywordRecord& r, const model::Rig
             "node at their centre of mass (as Radioss does)");
 }
 
+// Whether node n is a node of an element that gives nodes rotational inertia (shells, beams, springs).
+bool node_of_rotational_element(const model::Model& m, std::int32_t n) {
+  for (const auto* block : {&m.shells, &m.shells3, &m.beams, &m.springs})
+    if (std::find(block->conn.begin(), block->conn.end(), n) != block->conn.end()) return true;
+  return false;
+}
+
+// A body with no secondary node, no added inertia and a main node that no shell, beam or spring gives
+// inertia cannot turn: Radioss's starter stops on it (its error 274); the engine would stop at its start.
+void check_body_inertia(ModelBuilder& b, const KeywordRecord& r, const model::RigidBody& rb) {
+  if (rb.sensor != 0 || rb.main_node == kNone || rb.group == kNone || !rb.secondary.empty()) return;
+  if (rb.inertia[0] > 0 || rb.inertia[1] > 0 || rb.inertia[2] > 0) return;
+  if (node_of_rotational_element(b.m_, rb.main_node)) return;
+  b.error_at(r, "grnd_ID", Diag::RequiredValueMissing,
+             "the rigid body has no secondary node, no added inertia (Jxx, Jyy, Jzz) and a main node of no "
+             "shell, beam or spring: it has no rotational inertia (Radioss stops on it too, its error 274); "
+             "give secondary nodes in grnd_ID or the inertia");
+}
+
 model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
   model::RigidBody rb;
   if (const std::int64_t node = r.get_int("node_ID"); node == 0) {
@@ -661,6 +680,7 @@ model::RigidBody make_rigid_body(ModelBuilder& b, const KeywordRecord& r) {
         r, "grnd_ID", Diag::EmptyGroup,
         "grnd_ID holds only the main node, which is removed from the secondary nodes: the rigid body "
         "drives no node");
+  check_body_inertia(b, r, rb);
   return rb;
 }
 
