@@ -86,7 +86,7 @@ def variants(lines, keywords, values):
 
 
 def run_radx(radx, deck, work):
-    r = subprocess.run([radx, "-i", deck, "--out", work], capture_output=True, text=True, cwd=work)
+    r = subprocess.run([radx, "-i", deck, "--out", work], capture_output=True, text=True, errors="replace", cwd=work)
     err = next((l for l in r.stderr.splitlines() + r.stdout.splitlines() if ": error: " in l), "")
     return r.returncode == 0, err
 
@@ -97,7 +97,8 @@ def run_openradioss(root, deck, work):
                KMP_STACKSIZE="400m")
     try:
         r = subprocess.run([os.path.join(root, "exec", "starter_linux64_gf"), "-i", os.path.basename(deck),
-                            "-np", "1", "-nt", "1"], capture_output=True, text=True, cwd=work, env=env, timeout=120)
+                            "-np", "1", "-nt", "1"], capture_output=True, text=True, errors="replace", cwd=work, env=env,
+                           timeout=120)
     except subprocess.TimeoutExpired:
         return False, "timeout"
     log = r.stdout
