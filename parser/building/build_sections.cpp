@@ -160,7 +160,7 @@ void read_section_elements(ModelBuilder& b, const KeywordRecord& r, model::Secti
       b.error_at(r, field, Diag::PhysicsNotImplemented,
                  std::string(field) + " = " + std::to_string(id) + ": " + std::to_string(q.size()) +
                      " 20-node bricks of the group touch the cut, and radx sums no 20-node brick force in a "
-                     "section (bricks and shells only); leave them out of the group");
+                     "section (bricks, shells, trusses and beams only); leave them out of the group");
     if (const auto t = touching(b.m_.tetras, tetras, s.nodes); !t.empty())
       b.error_at(
           r, field, Diag::PhysicsNotImplemented,
