@@ -84,7 +84,8 @@ std::int64_t user_id(const model::Model& m, model::ThKind k, std::int32_t i) {
     case model::ThKind::Rwall: return m.rigid_walls[n].id;
     case model::ThKind::Shell: return m.shells.id[n];
     case model::ThKind::Subset: return m.subsets[n].id;
-    case model::ThKind::Brick: return m.bricks.id[n];
+    case model::ThKind::Brick:
+      return n < m.bricks.size() ? m.bricks.id[n] : m.bricks20.id[n - m.bricks.size()];
     case model::ThKind::Shell3: return m.shells3.id[n];
     case model::ThKind::Rbody: return m.rigid_bodies[n].id;
     case model::ThKind::Section: return m.sections[n].id;

@@ -308,6 +308,7 @@ io::EngineListingHeader listing_header(const EngineOptions& opt, const model::Mo
   h.shells3 = model.shells3.size();
   h.bricks = model.bricks.size();
   h.tetras = model.tetras.size();
+  h.bricks20 = model.bricks20.size();
   h.interfaces = model.interfaces.size();
   h.total_mass = model.total_mass;
   h.mass_unit = model.units.mass_name;

@@ -736,7 +736,7 @@ struct Type7Contact::Impl {
     force.assign(3 * m.nodes.size(), 0.0);
     is_touched.assign(m.nodes.size(), 0);
     elements_around0.assign(m.nodes.size(), 0);
-    for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras}) {
+    for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras, &m.bricks20}) {
       const auto npe = static_cast<std::size_t>(b->npe());
       for (std::size_t e = 0; e < b->size(); ++e)
         for (std::size_t k = 0; k < npe; ++k)
@@ -1304,7 +1304,7 @@ void Type7Contact::elements_deleted(std::span<const std::uint8_t> alive) {
   // Alive elements around each node, for the removal of secondary nodes left without any (Idel > 0).
   std::vector<std::int32_t> alive_around(m.nodes.size(), 0);
   std::size_t cell = 0;
-  for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras}) {
+  for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras, &m.bricks20}) {
     const auto npe = static_cast<std::size_t>(b->npe());
     for (std::size_t e = 0; e < b->size(); ++e, ++cell)
       if (alive[cell])

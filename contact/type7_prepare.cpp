@@ -28,6 +28,7 @@
 #include <limits>
 
 #include "solver/model/geometry.hpp"
+#include "solver/model/hex20_shape.hpp"
 #include "solver/model/masses.hpp"
 
 namespace radx::contact {
@@ -251,6 +252,21 @@ NodeSupport node_support(const model::Model& m) {
     const double k = material_of(m, m.tetras.part[e]).bulk * std::cbrt(v);
     for (int j = 0; j < 4; ++j) {
       const auto node = m.tetras.conn[4 * e + j];
+      if (node >= 0) s.k_brick[node] = std::max(s.k_brick[node], k);
+    }
+  }
+  // 20-node bricks give their nodes (secondary nodes of a contact; they have no main faces) the same solid
+  // term, K V^(1/3) with V by the starter's 3 x 3 x 3 rule.
+  for (std::size_t e = 0; e < m.bricks20.size(); ++e) {
+    double x[20][3];
+    for (int j = 0; j < 20; ++j) {
+      const auto p = node_x(m, m.bricks20.conn[20 * e + static_cast<std::size_t>(j)]);
+      for (int d = 0; d < 3; ++d) x[j][d] = p[static_cast<std::size_t>(d)];
+    }
+    const double v = std::max(0.0, model::hex20_volume(x, model::hex20_starter_rule()));
+    const double k = material_of(m, m.bricks20.part[e]).bulk * std::cbrt(v);
+    for (int j = 0; j < 20; ++j) {
+      const auto node = m.bricks20.conn[20 * e + static_cast<std::size_t>(j)];
       if (node >= 0) s.k_brick[node] = std::max(s.k_brick[node], k);
     }
   }

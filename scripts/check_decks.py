@@ -619,6 +619,10 @@ TRUSS_PROPS = ("/PROP/TRUSS", "/PROP/TYPE2")
 BEAM_REC = [F("beam_ID", "I", 1, 10), F("n1", "I", 11, 20), F("n2", "I", 21, 30), F("n3", "I", 31, 40)]
 BEAM_PROPS = ("/PROP/BEAM", "/PROP/TYPE3")
 TETRA_REC = [F("tetra_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(4)]
+# /BRIC20: three lines an element (hm_cfg_files radioss41/ELEM/bric20.cfg): id and n1..n8; n9..n16; n17..n20
+BRIC20_LINES = [[F("brick20_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(8)],
+                [F("n%d" % (k + 9), "I", 1 + 10 * k, 10 + 10 * k) for k in range(8)],
+                [F("n%d" % (k + 17), "I", 1 + 10 * k, 10 + 10 * k) for k in range(4)]]
 # /SH3N as OpenRadioss cuts the card (docs/keywords.md): PHI 71-90, Thick 91-100.
 SH3N_REC = [F("tria_ID", "I", 1, 10)] + [F("n%d" % (k + 1), "I", 11 + 10 * k, 20 + 10 * k) for k in range(3)] + \
     [F("PHI", "R", 71, 90), F("Thick", "R", 91, 100)]
@@ -698,6 +702,7 @@ STARTER = {
     "/SHELL": ("part", False, lambda v: [], "records", SHELL_REC),
     "/BRICK": ("part", False, lambda v: [], "records", BRICK_REC),
     "/TETRA4": ("part", False, lambda v: [], "records", TETRA_REC),
+    "/BRIC20": ("part", False, lambda v: [], "records3", BRIC20_LINES),
     "/SPRING": ("part", False, lambda v: [], "records", SPRING_REC),
     "/TRUSS": ("part", False, lambda v: [], "records", TRUSS_REC),
     "/PROP/TRUSS": ("id", True, lambda v: [card([F("Area", "R", 1, 20), F("Gap", "R", 21, 40)])], None, None),
@@ -1303,6 +1308,22 @@ class Checker:
             # every character but blanks, each with the line it was written on
             obj["text"] = [(ch, (r[0], r[1])) for _, r in data[k:] for ch in r[2] if ch not in " \t"]
             k = len(data)
+        if tail == "records3":
+            # three lines a record; a block that ends inside one is RX304 (deck_reader.cpp)
+            rows = [(cm, r) for cm, r in data[k:]]
+            for j in range(0, len(rows) - len(rows) % 3, 3):
+                vals3, first = {}, rows[j][1]
+                if any("," in rows[j + q][1][2] for q in range(3)):
+                    # fixed 10-column fields only (deck_reader.cpp read_multi_line_records)
+                    self.issue("RX201", first[0], first[1], "%s: an element's lines hold commas" % path)
+                    continue
+                for q in range(3):
+                    vals3.update(self.parse_fields(recfields[q], rows[j + q][1], path))
+                obj["recs"].append((vals3, (first[0], first[1])))
+            if len(rows) % 3:
+                r0 = rows[len(rows) - len(rows) % 3][1]
+                self.issue("RX304", r0[0], r0[1], "%s: the block ends inside an element's three lines" % path)
+            k = len(data)
         if tail in ("records", "threcords", "ids", "thids"):
             # a list line that starts with a letter is no record: OpenRadioss skips it, radx warns once
             rest = [(cm, r) for cm, r in data[k:] if not r[2].strip()[:1].isalpha()]
@@ -1603,15 +1624,51 @@ def submodel_placement(tables):
     tables.moves, tables.placed = moves, placed
 
 
+# Natural coordinates of the 20-node brick's nodes (corners, then the mid-side nodes of edges 1-2, 2-3, 3-4, 4-1,
+# 1-5, 2-6, 3-7, 4-8, 5-6, 6-7, 7-8, 8-5).
+HEX20_NAT = [(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1), (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1),
+             (0, -1, -1), (1, 0, -1), (0, 1, -1), (-1, 0, -1), (-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0),
+             (0, -1, 1), (1, 0, 1), (0, 1, 1), (-1, 0, 1)]
+
+
+def hex20_min_det(pts):
+    """The smallest det J of the serendipity brick at the 3 x 3 x 3 Gauss points (the starter's check)."""
+    g = (-math.sqrt(0.6), 0.0, math.sqrt(0.6))
+    dmin = None
+    for x in g:
+        for y in g:
+            for z in g:
+                p = (x, y, z)
+                J = [[0.0] * 3 for _ in range(3)]
+                for a, s in enumerate(HEX20_NAT):
+                    if a < 8:
+                        f = [1 + p[c] * s[c] for c in range(3)]
+                        gg = sum(p[c] * s[c] for c in range(3)) - 2
+                        d = [0.125 * s[c] * f[(c + 1) % 3] * f[(c + 2) % 3] * (gg + f[c]) for c in range(3)]
+                    else:
+                        c0 = [c for c in range(3) if s[c] == 0][0]
+                        d1, d2 = (c0 + 1) % 3, (c0 + 2) % 3
+                        q, f1, f2 = 1 - p[c0] ** 2, 1 + p[d1] * s[d1], 1 + p[d2] * s[d2]
+                        d = [0.0] * 3
+                        d[c0], d[d1], d[d2] = -0.5 * p[c0] * f1 * f2, 0.25 * q * s[d1] * f2, 0.25 * q * f1 * s[d2]
+                    for i in range(3):
+                        for c in range(3):
+                            J[i][c] += pts[a][i] * d[c]
+                det = dot(J[0], cross(J[1], J[2]))
+                dmin = det if dmin is None else min(dmin, det)
+    return dmin
+
+
 def elements(tables):
     """Shells, triangles, bricks and tetrahedra (model_builder.cpp): the part and its property kind, unique ids,
     existing nodes, the geometry (area, volume, orientation) and the shell thickness."""
     I, m, nodes, parts, props = tables.issue, tables.m, tables.nodes, tables.parts, tables.props
-    elem_ids = {"/SHELL": set(), "/SH3N": set(), "/BRICK": set(), "/TETRA4": set(), "/TRUSS": set(), "/BEAM": set()}
+    elem_ids = {"/SHELL": set(), "/SH3N": set(), "/BRICK": set(), "/TETRA4": set(), "/BRIC20": set(),
+                "/TRUSS": set(), "/BEAM": set()}
     # element id -> (part id, node ids); trusses and beams (their two nodes) are added by their own checks
-    elements = {"/SHELL": {}, "/SH3N": {}, "/BRICK": {}, "/TETRA4": {}, "/TRUSS": {}, "/BEAM": {}}
+    elements = {"/SHELL": {}, "/SH3N": {}, "/BRICK": {}, "/TETRA4": {}, "/BRIC20": {}, "/TRUSS": {}, "/BEAM": {}}
     part_kind = {}
-    for o in m.of("/SHELL", "/SH3N", "/BRICK", "/TETRA4"):
+    for o in m.of("/SHELL", "/SH3N", "/BRICK", "/TETRA4", "/BRIC20"):
         kind = o["path"]
         if o["id"] not in parts:
             I("RX402", o["pos"][0], o["pos"][1], "%s: part %d does not exist" % (kind, o["id"]))
@@ -1621,13 +1678,15 @@ def elements(tables):
         if po is not None and val(po, "prop_ID") in props:
             solid_prop = props[val(po, "prop_ID")]["path"] in ("/PROP/SOLID", "/PROP/TYPE14")
             spring_prop = props[val(po, "prop_ID")]["path"] in SPRING_PROPS
-            if spring_prop or solid_prop != (kind in ("/BRICK", "/TETRA4")):
+            if spring_prop or solid_prop != (kind in ("/BRICK", "/TETRA4", "/BRIC20")):
                 I("RX407", o["pos"][0], o["pos"][1], "%s/%d: part of the wrong property kind" % (kind, o["id"]))
-        nn = {"/SHELL": 4, "/SH3N": 3, "/BRICK": 8, "/TETRA4": 4}[kind]
+        nn = {"/SHELL": 4, "/SH3N": 3, "/BRICK": 8, "/TETRA4": 4, "/BRIC20": 20}[kind]
         for r, p in o["recs"]:
-            eid = r.get({"/SHELL": "shell_ID", "/SH3N": "tria_ID", "/BRICK": "brick_ID", "/TETRA4": "tetra_ID"}[kind])
-            # tetrahedra share the bricks' id space (solid elements)
-            if eid in elem_ids[kind] or (kind == "/TETRA4" and eid in elem_ids["/BRICK"]):
+            eid = r.get({"/SHELL": "shell_ID", "/SH3N": "tria_ID", "/BRICK": "brick_ID", "/TETRA4": "tetra_ID",
+                         "/BRIC20": "brick20_ID"}[kind])
+            # tetrahedra and 20-node bricks share the bricks' id space (solid elements)
+            if eid in elem_ids[kind] or (kind == "/TETRA4" and eid in elem_ids["/BRICK"]) or \
+                    (kind == "/BRIC20" and (eid in elem_ids["/BRICK"] or eid in elem_ids["/TETRA4"])):
                 I("RX401", p[0], p[1], "element %d defined twice" % eid)
                 continue
             elem_ids[kind].add(eid)
@@ -1655,6 +1714,12 @@ def elements(tables):
                 t = t_el if t_el != 0.0 else t_pr
                 if t == 0.0:
                     I("RX504", p[0], p[1], "shell %d has no thickness (element and property are 0)" % eid)
+            elif kind == "/BRIC20":
+                if len(set(ns)) < 20:
+                    I("RX604", p[0], p[1], "20-node brick %d repeats a node" % eid)
+                    continue
+                if hex20_min_det(pts) <= 0:
+                    I("RX601", p[0], p[1], "20-node brick %d has a non-positive Jacobian at a Gauss point" % eid)
             elif kind == "/TETRA4":
                 if len(set(ns)) < 4:
                     I("RX604", p[0], p[1], "tetrahedron %d repeats a node" % eid)
@@ -1996,6 +2061,18 @@ def formulations(tables):
                 bad.append("Iframe")
             if val(o, "Icontrol", 0) == 1:
                 bad.append("Icontrol")
+        if "/BRIC20" in kinds and o["path"] in ("/PROP/SOLID", "/PROP/TYPE14"):
+            # 20-node bricks: Isolid 16, 14, 17 (14 and 17 also run the 20-node brick in OpenRadioss); Inpts of 2 or
+            # 3 points per direction (check_formulations.cpp check_brick20_flags)
+            isolid = resolved(o, "Isolid", "/DEF_SOLID", 1)
+            if isolid not in (16, 14, 17) and "Isolid" not in bad:
+                bad.append("Isolid")
+            inpts = val(o, "Inpts", 0) or 0
+            digits_ok = inpts == 0 or (100 <= inpts <= 999 and all(c in "23" for c in str(inpts)))
+            if isolid != 17 and not digits_ok and "Inpts" not in bad:
+                bad.append("Inpts")
+            if "/BRICK" not in kinds and "/TETRA4" not in kinds and resolved(o, "Ismstr", "/DEF_SOLID", 4) not in (2, 4):
+                bad.append("Ismstr")
         for name in bad:
             p = pos(o, name)
             I("RX510", p[0], p[1], "%s %d: %s not implemented by radx" % (o["path"], o["id"], name))
@@ -2015,7 +2092,7 @@ def laws_on_elements(tables):
         prop = props.get(val(parts[pid], "prop_ID"))
         if mat is None or prop is None or mat["path"] not in ("/MAT/LAW27", "/MAT/PLAS_BRIT"):
             continue
-        if "/BRICK" in kinds or "/TETRA4" in kinds:
+        if kinds & {"/BRICK", "/TETRA4", "/BRIC20"}:
             I("RX510", mat["pos"][0], mat["pos"][1], "law 27 on solids (part %d)" % pid)
         if ("/SHELL" in kinds or "/SH3N" in kinds) and prop["path"] in ("/PROP/SHELL", "/PROP/TYPE1") \
                 and val(prop, "N", 0) == 0:
@@ -2030,8 +2107,8 @@ def laws_on_elements(tables):
         prop = props.get(val(parts[pid], "prop_ID"))
         if mat is None or prop is None or mat["path"] not in ("/MAT/LAW42", "/MAT/OGDEN"):
             continue
-        if kinds & {"/SHELL", "/SH3N", "/TETRA4"}:
-            I("RX510", mat["pos"][0], mat["pos"][1], "law 42 on shells or tetrahedra (part %d)" % pid)
+        if kinds & {"/SHELL", "/SH3N", "/TETRA4", "/BRIC20"}:
+            I("RX510", mat["pos"][0], mat["pos"][1], "law 42 on shells, tetrahedra or 20-node bricks (part %d)" % pid)
         if "/BRICK" in kinds and prop["path"] in ("/PROP/SOLID", "/PROP/TYPE14"):
             if resolved(prop, "Isolid", "/DEF_SOLID", 1) not in (1, 2):
                 p = pos(prop, "Isolid")
@@ -2047,8 +2124,8 @@ def laws_on_elements(tables):
         prop = props.get(val(parts[pid], "prop_ID"))
         if mat is None or prop is None or mat["path"] not in ("/MAT/LAW70", "/MAT/FOAM_TAB"):
             continue
-        if kinds & {"/SHELL", "/SH3N", "/TETRA4"}:
-            I("RX510", mat["pos"][0], mat["pos"][1], "law 70 on shells or tetrahedra (part %d)" % pid)
+        if kinds & {"/SHELL", "/SH3N", "/TETRA4", "/BRIC20"}:
+            I("RX510", mat["pos"][0], mat["pos"][1], "law 70 on shells, tetrahedra or 20-node bricks (part %d)" % pid)
         if "/BRICK" in kinds and prop["path"] in ("/PROP/SOLID", "/PROP/TYPE14"):
             if resolved(prop, "Isolid", "/DEF_SOLID", 1) not in (1, 2):
                 p = pos(prop, "Isolid")
@@ -2184,8 +2261,12 @@ def groups(tables):
         for x, p in o["ids"]:
             if abs(x) not in parts:
                 I("RX402", p[0], p[1], "surface %d: part %d does not exist" % (sid, x), warning=True)
-            elif o["path"] == "/SURF/PART" and part_kind.get(abs(x), set()) & {"/BRICK", "/TETRA4"}:
-                I("RX407", p[0], p[1], "surface %d: /SURF/PART on solid part %d" % (sid, x))
+            else:
+                # surfaces of 20-node bricks are not built (OpenRadioss's ssurftag.F skips them): refused
+                if "/BRIC20" in part_kind.get(abs(x), set()):
+                    I("RX510", p[0], p[1], "surface %d: part %d has 20-node bricks" % (sid, x))
+                if o["path"] == "/SURF/PART" and part_kind.get(abs(x), set()) & {"/BRICK", "/TETRA4", "/BRIC20"}:
+                    I("RX407", p[0], p[1], "surface %d: /SURF/PART on solid part %d" % (sid, x))
         # empty: a warning, as in Radioss, when nothing else stopped the surface
         if not surf_nodes.get(sid) and ck.errors() == before:
             I("RX403", o["pos"][0], o["pos"][1], "surface %d is empty" % sid, warning=True)
@@ -2304,7 +2385,7 @@ def failure_models(tables):
             if not ys or any(y != ys[0] for y in ys):
                 p = pos(o, "fct_IDt")
                 I("RX510", p[0], p[1], "/FAIL/TAB %d: temperature function not constant" % o["id"])
-        solid = any(("/BRICK" in kinds or "/TETRA4" in kinds) and pid in parts
+        solid = any(kinds & {"/BRICK", "/TETRA4", "/BRIC20"} and pid in parts
                     and val(parts[pid], "mat_ID") == o["id"] for pid, kinds in part_kind.items())
         if solid:
             nv = val(o, "n", 0.0)
@@ -2364,7 +2445,7 @@ def failure_models(tables):
             p = pos(o, "P_thickfail")
             I("RX510", p[0], p[1], "/FAIL/BIQUAD %d: P_thickfail < 0 not implemented by radx" % o["id"])
         need(o, "fct_IDel", functs, "function")
-        solid = any(("/BRICK" in kinds or "/TETRA4" in kinds) and pid in parts
+        solid = any(kinds & {"/BRICK", "/TETRA4", "/BRIC20"} and pid in parts
                     and val(parts[pid], "mat_ID") == o["id"] for pid, kinds in part_kind.items())
         if solid and val(o, "fct_IDel", 0) != 0:
             p = pos(o, "fct_IDel")
@@ -2786,7 +2867,8 @@ def time_history(tables):
             if kind == "/BRICK" and eid not in elem_ids[kind] and eid in elem_ids["/TETRA4"]:
                 # Radioss records a tetrahedron as a brick; radx writes none (a warning, the run goes on)
                 I("RX311", p[0], p[1], "TH tetrahedron %s is not written" % eid, warning=True)
-            elif eid not in elem_ids[kind]:
+            elif eid not in elem_ids[kind] and not (kind == "/BRICK" and eid in elem_ids["/BRIC20"]):
+                # a 20-node brick is recorded under /TH/BRIC (build_loads.cpp)
                 I("RX402", p[0], p[1], "TH %s element %s does not exist" % (kind, eid))
     for o in m.of("/TH/RBODY"):
         for x, p in o["ids"]:
@@ -2831,7 +2913,7 @@ def group_elements(elements, root):
     tetrahedron as a brick)."""
     els = dict(elements[GROUP_FAMILIES[root][0]])
     if root == "/GRBRIC":
-        for e, v in elements["/TETRA4"].items():
+        for e, v in list(elements["/TETRA4"].items()) + list(elements["/BRIC20"].items()):
             els.setdefault(e, v)
     return els
 
@@ -3222,6 +3304,12 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
                     I("RX402", p[0], p[1], "%s %d: group %d does not exist" % (path, o["id"], abs(x)), warning=True)
                     continue
                 chosen |= members[(root, abs(x))]
+                if root == "/GRBRIC" and members[(root, abs(x))] & set(elements["/BRIC20"]):
+                    # no faces of 20-node bricks (build_groups.cpp surface_from_brick_groups): refused
+                    I("RX510", p[0], p[1], "%s %d: group %d holds 20-node bricks" % (path, o["id"], abs(x)))
+            if root == "/GRBRIC":
+                solids = {e: v for e, v in solids.items() if e not in elements["/BRIC20"]}
+                chosen = {e for e in chosen if e in solids}
             if root != "/GRBRIC":
                 count = len(chosen)
                 got = {n for e in chosen for n in elements[GROUP_FAMILIES[root][0]][e][1]}

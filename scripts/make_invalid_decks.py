@@ -852,6 +852,95 @@ def _():
         [("RX510", "PSO.Iframe")]
 
 
+# A 20-node brick: a 10 mm cube at x = 30..40, corners then mid-side nodes in /BRIC20's order (ids 101-120).
+BRIC20_NAT = [(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1), (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1),
+              (0, -1, -1), (1, 0, -1), (0, 1, -1), (-1, 0, -1), (-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0),
+              (0, -1, 1), (1, 0, 1), (0, 1, 1), (-1, 0, 1)]
+BRIC20_NODES = [(101 + k, 35.0 + 5.0 * a, 5.0 + 5.0 * b, 6.5 + 5.0 * c) for k, (a, b, c) in enumerate(BRIC20_NAT)]
+
+
+def with_bric20(d, nodes=None, isolid=16, inpts=0, eid=31, lines=3):
+    """d with the nodes 101-120 and /BRIC20/3 (element eid on them, its first line tagged BRIC20_<eid>; only its
+    first `lines` lines) in part 3 of /PROP/SOLID/3 (tag PSO20: Isolid isolid, Inpts inpts), law 1."""
+    nodes = nodes or list(range(101, 121))
+    d.insert_before("AFTER_PARTS", block("NODE20", "/NODE", rows=BRIC20_NODES,
+                                         row_tags=["NODE_%d" % n[0] for n in BRIC20_NODES]))
+    rows = rc.bric20_rows(3, [(eid, *nodes)])
+    tagged = [(rows[0], "BRIC20_KW")] + [(r, None) for r in rows[1:4]]
+    tagged.append((rows[4], "BRIC20_%d" % eid))
+    tagged += [(r, None) for r in rows[5:4 + lines]]
+    d.insert_before("AFTER_PARTS", [(t, g) if g else t for t, g in tagged] + part(3, "Quadratic", 3, 2))
+    d.insert_before("AFTER_MATS", block("PSO20", "/PROP/SOLID", 3, "Quadratic solid",
+                                        **dict(PSO, Isolid=isolid, Inpts=inpts)))
+    return d
+
+
+@fault("bric20_isolid_one_point")
+def _():
+    d = with_bric20(base(), isolid=1)
+    return d, "/PROP/SOLID/3 Isolid = 1 on 20-node brick 31: OpenRadioss runs it with one Gauss point and no " \
+              "hourglass control; refused by name (radx runs 16, 14 and 17)", [("RX510", "PSO20.Isolid")]
+
+
+@fault("bric20_inpts_one_point")
+def _():
+    d = with_bric20(base(), inpts=122)
+    return d, "/PROP/SOLID/3 Inpts = 122 on 20-node brick 31: one point along a direction leaves zero-energy " \
+              "modes; radx builds 2 or 3 points per direction", [("RX510", "PSO20.Inpts")]
+
+
+@fault("bric20_repeated_node")
+def _():
+    d = with_bric20(base(), nodes=[101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113, 114, 115, 116,
+                                   117, 118, 119, 117])
+    return d, "20-node brick 31 lists node 117 twice (n17 and n20)", [("RX604", "BRIC20_31")]
+
+
+@fault("bric20_inverted")
+def _():
+    d = with_bric20(base(), nodes=[105, 106, 107, 108, 101, 102, 103, 104, 117, 118, 119, 120, 113, 114, 115, 116,
+                                   109, 110, 111, 112])
+    return d, "20-node brick 31 lists its top face first: non-positive Jacobian", [("RX601", "BRIC20_31")]
+
+
+@fault("bric20_id_of_a_brick")
+def _():
+    d = with_bric20(base(), eid=11)
+    return d, "20-node brick 11 takes the id of brick 11: solid elements share one id space", \
+        [("RX401", "BRIC20_11")]
+
+
+@fault("bric20_missing_line")
+def _():
+    d = with_bric20(base(), lines=2)
+    return d, "/BRIC20/3 ends after two of element 31's three lines", [("RX304", "BRIC20_31")]
+
+
+@fault("bric20_free_format")
+def _():
+    d = with_bric20(base())
+    d.set("BRIC20_31", "31, 101, 102, 103, 104, 105, 106, 107, 108")
+    return d, "/BRIC20/3 element 31 written comma-separated: /BRIC20 is read in fixed 10-column fields only", \
+        [("RX201", "BRIC20_31")]
+
+
+@fault("bric20_group_surface")
+def _():
+    d = with_bric20(base())
+    d.insert_before("BEFORE_END", block("GRB", "/GRBRIC/PART", 4, "Quadratic part's bricks", ids=[3]) +
+                    block("SURF", "/SURF/GRBRIC/EXT", 1, "Their skin", ids=[4]))
+    return d, "/SURF/GRBRIC/EXT/1 of brick group 4, which holds 20-node brick 31: their faces are not built", \
+        [("RX510", "SURF.ids")]
+
+
+@fault("bric20_surface")
+def _():
+    d = with_bric20(base())
+    d.insert_before("BEFORE_END", block("SURF", "/SURF/PART/EXT", 1, "Quadratic part's skin", ids=[3]))
+    return d, "/SURF/PART/EXT/1 lists part 3 of 20-node bricks: their faces are not built (OpenRadioss gives " \
+              "them no segment either)", [("RX510", "SURF.ids")]
+
+
 @fault("implausible_wave_speed")
 def _():
     d = base()

@@ -732,6 +732,21 @@ def rows(keyword, rows_, ident=None, title=None, **kw):
     return card(keyword, ident, title, rows=rows_, **kw)
 
 
+def bric20_rows(part, rows_):
+    """/BRIC20/part: each row (id, n1 .. n20) on three lines, 10-column fields: the id and the 8 corners;
+    the mid-side nodes n9-n16 from column 1; n17-n20."""
+    head = "".join("%10s" % h for h in ["brick_ID"] + ["node_ID%d" % k for k in range(1, 9)])
+    out = ["/BRIC20/%d" % part, "#" + head[1:],
+           "#" + "".join("%10s" % ("node_ID%d" % k) for k in range(9, 17))[1:],
+           "#" + "".join("%10s" % ("node_ID%d" % k) for k in range(17, 21))[1:]]
+    for r in rows_:
+        assert len(r) == 21, "a /BRIC20 row is the id and 20 nodes"
+        out.append("".join("%10d" % v for v in r[:9]))
+        out.append("".join("%10d" % v for v in r[9:17]))
+        out.append("".join("%10d" % v for v in r[17:21]))
+    return out
+
+
 def begin(run, units, work_units=None, version=VERSION):
     """/BEGIN: run name, deck version, input units and work units (the input units when not given)."""
     work_units = work_units or units

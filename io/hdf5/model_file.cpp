@@ -353,7 +353,7 @@ RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RAD
 
 // Written member by member below (write_radx, read_file, write_block, read_block): a new member of these
 // structs must be added there.
-static_assert(member_count<Model>() == 41, "model::Model changed: update write_radx and read_file");
+static_assert(member_count<Model>() == 42, "model::Model changed: update write_radx and read_file");
 static_assert(member_count<model::Nodes>() == 5, "model::Nodes changed: update write_radx and read_file");
 static_assert(member_count<model::ElementBlock>() == 7, "model::ElementBlock changed: update write_block");
 
@@ -393,6 +393,7 @@ void for_each_block(ModelT& m, Fn&& fn) {
   fn("shell3", m.shells3);
   fn("brick8", m.bricks);
   fn("tetra4", m.tetras);
+  fn("brick20", m.bricks20);
   fn("spring2", m.springs);
   fn("truss2", m.trusses);
   fn("beam2", m.beams);

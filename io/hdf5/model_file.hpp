@@ -13,7 +13,7 @@ namespace radx::io {
 
 // Version of the layout under /radx, stored as the root attribute radx_model_format_version. A reader
 // accepts exactly its own version: any change of the layout increments it (docs/model-file.md).
-inline constexpr std::int64_t kModelFormatVersion = 20;
+inline constexpr std::int64_t kModelFormatVersion = 21;
 
 // Writes `m` to `path` crash-safely: the file is written as `path + ".part"`, closed, then renamed over
 // `path` (atomic on POSIX), so `path` is either the previous file or the complete new one. On failure

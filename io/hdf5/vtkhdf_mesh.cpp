@@ -17,7 +17,13 @@ using model::Model;
 
 // XDMF "Mixed" topology type codes.
 constexpr std::int64_t kXdmfPolyline = 2, kXdmfTriangle = 4, kXdmfQuad = 5, kXdmfTetrahedron = 6,
-                       kXdmfHexahedron = 9;
+                       kXdmfHexahedron = 9, kXdmfHexahedron20 = 48;
+
+// VTK_QUADRATIC_HEXAHEDRON (and XDMF Hexahedron_20) take the corners, then the mid-side nodes of the bottom
+// face's edges, of the top face's, and of the four vertical edges; Radioss's /BRIC20 has the vertical
+// edges before the top face's. Position v of the cell is the element's node kHex20ToVtk[v].
+constexpr std::array<std::size_t, 20> kHex20ToVtk = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,
+                                                     10, 11, 16, 17, 18, 19, 12, 13, 14, 15};
 
 const char* block_name(model::ElementType t) {
   switch (t) {
@@ -28,6 +34,7 @@ const char* block_name(model::ElementType t) {
     case model::ElementType::Spring2: return "spring";
     case model::ElementType::Truss2: return "truss";
     case model::ElementType::Beam2: return "beam";
+    case model::ElementType::Brick20: return "20-node brick";
   }
   return "element";
 }
@@ -39,6 +46,7 @@ void for_each_block(const Model& m, Fn&& fn) {
   fn(m.shells3);
   fn(m.bricks);
   fn(m.tetras);
+  fn(m.bricks20);
 }
 
 // The line elements, whose cells follow the mesh's: springs (n1 n2 of their three slots), then trusses.
@@ -105,8 +113,8 @@ VtkhdfMeshSizes write_vtkhdf_mesh(hid_t file, const Model& m) {
   const std::size_t nn = m.nodes.size();
   const std::size_t nc = m.cell_count();
   const std::size_t max_conn = 4 * m.shells.size() + 3 * m.shells3.size() + 8 * m.bricks.size() +
-                               4 * m.tetras.size() + 2 * m.springs.size() + 2 * m.trusses.size() +
-                               2 * m.beams.size();
+                               4 * m.tetras.size() + 20 * m.bricks20.size() + 2 * m.springs.size() +
+                               2 * m.trusses.size() + 2 * m.beams.size();
 
   std::vector<std::int64_t> connectivity, offsets, element_id, mixed;
   std::vector<std::uint8_t> types;
@@ -125,7 +133,11 @@ VtkhdfMeshSizes write_vtkhdf_mesh(hid_t file, const Model& m) {
       std::size_t used = npe;
       std::uint8_t vtk = kVtkHexahedron;
       std::int64_t xdmf = kXdmfHexahedron;
-      if (b.type == model::ElementType::Tetra4) {
+      const bool quadratic = b.type == model::ElementType::Brick20;
+      if (quadratic) {
+        vtk = kVtkQuadraticHexahedron;
+        xdmf = kXdmfHexahedron20;
+      } else if (b.type == model::ElementType::Tetra4) {
         vtk = kVtkTetra;
         xdmf = kXdmfTetrahedron;
       } else if (b.type == model::ElementType::Shell4 && nodes[2] != nodes[3]) {
@@ -138,8 +150,9 @@ VtkhdfMeshSizes write_vtkhdf_mesh(hid_t file, const Model& m) {
       }
       mixed.push_back(xdmf);
       for (std::size_t k = 0; k < used; ++k) {
-        connectivity.push_back(nodes[k]);
-        mixed.push_back(nodes[k]);
+        const std::int32_t node = nodes[quadratic ? kHex20ToVtk[k] : k];
+        connectivity.push_back(node);
+        mixed.push_back(node);
       }
       offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
       types.push_back(vtk);

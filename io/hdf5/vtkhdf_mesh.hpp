@@ -17,6 +17,7 @@ inline constexpr std::uint8_t kVtkTriangle = 5;
 inline constexpr std::uint8_t kVtkQuad = 9;
 inline constexpr std::uint8_t kVtkTetra = 10;
 inline constexpr std::uint8_t kVtkHexahedron = 12;
+inline constexpr std::uint8_t kVtkQuadraticHexahedron = 25;  // /BRIC20, VTK's node order (vtkhdf_mesh.cpp)
 
 // Sizes of the grid written, for the indexes that describe it (XDMF needs the MixedTopology length).
 struct VtkhdfMeshSizes {

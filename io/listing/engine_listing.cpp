@@ -193,6 +193,7 @@ void write_engine_header(std::ostream& os, const EngineListingHeader& h) {
   row(os, "3-node shells", std::to_string(h.shells3));
   row(os, "8-node bricks", std::to_string(h.bricks));
   if (h.tetras > 0) row(os, "4-node tetrahedra", std::to_string(h.tetras));
+  if (h.bricks20 > 0) row(os, "20-node bricks", std::to_string(h.bricks20));
   row(os, "contact interfaces", std::to_string(h.interfaces));
   row(os, "total mass", gnum(h.total_mass) + " " + h.mass_unit);
 

@@ -196,6 +196,7 @@ struct EngineListingHeader {
   std::size_t shells3 = 0;
   std::size_t bricks = 0;
   std::size_t tetras = 0;
+  std::size_t bricks20 = 0;
   std::size_t interfaces = 0;
   double total_mass = 0;
   std::string mass_unit = "kg", length_unit = "m", time_unit = "s";

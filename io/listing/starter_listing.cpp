@@ -1,6 +1,7 @@
 #include "io/listing/starter_listing.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <ostream>
@@ -9,6 +10,7 @@
 
 #include "io/listing/unit_labels.hpp"
 #include "solver/model/formulations.hpp"
+#include "solver/model/hex20_shape.hpp"
 
 namespace radx::io {
 
@@ -193,6 +195,7 @@ void write_counts(std::ostream& os, const model::Model& m) {
   count("3-node shells", m.shells3.size());
   count("8-node bricks", m.bricks.size());
   if (m.tetras.size() > 0) count("4-node tetrahedra", m.tetras.size());
+  if (m.bricks20.size() > 0) count("20-node bricks", m.bricks20.size());
   count("parts", m.parts.size());
   count("properties", m.properties.size());
   count("materials", m.materials.size());
@@ -371,6 +374,12 @@ void write_properties(std::ostream& os, const model::Model& m) {
       if (m.tetras.size() > 0)
         os << "    Itetra4 " << s.itetra4
            << ": 4-node tetrahedron, one point, constant strain, no hourglass (for its tetrahedra)\n";
+      if (m.bricks20.size() > 0) {
+        const auto n =
+            s.isolid == 17 ? std::array<int, 3>{2, 2, 2} : model::hex20_rule_of_inpts(s.inpts, s.isolid).n;
+        os << "    Inpts " << s.inpts << ": " << n[0] << " x " << n[1] << " x " << n[2]
+           << " Gauss points (xi, eta, zeta) for its 20-node bricks, serendipity, no hourglass\n";
+      }
     }
   }
 }

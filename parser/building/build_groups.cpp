@@ -20,8 +20,9 @@
 //   side, each pointing out of its brick), plus the shell segments. In /SURF/PART/EXT and /ALL a brick
 //   face that a shell of a listed part covers is left out: the shell gives that segment.
 // * /GRNOD/GRSHEL, /GRSH3N, /GRBRIC: the nodes of the groups' elements; Radioss ignores negative ids there.
-// * /GRBRIC holds tetrahedra as well as bricks (/GRBRIC/BRIC lists /TETRA4 ids, PART, BOX and GENE take the
-//   parts' tetrahedra), as Radioss stores a tetrahedron as a brick.
+// * /GRBRIC holds tetrahedra and 20-node bricks as well as bricks (/GRBRIC/BRIC lists /TETRA4 and /BRIC20
+//   ids, PART, BOX and GENE take the parts' tetrahedra and 20-node bricks), as Radioss keeps them in one
+//   solid table. Surfaces of a group's 20-node bricks are refused (OpenRadioss builds none).
 // * GENE (pairs first, last) takes the ids of the range that exist, however wide the range (1 to 999999999
 //   is common): a note says how many exist when the range is far wider than the model.
 // * What Radioss only warns about, radx reads with a warning saying what it did: a part, subset, material,
@@ -101,6 +102,7 @@ constexpr std::array<ElementGroupFamily, ModelBuilder::kElementTypes> kFamilies 
     {"", "", "spring", "/SPRING"},
     {"/GRTRUS", "TRUS", "truss", "/TRUSS"},
     {"/GRBEAM", "BEAM", "beam", "/BEAM"},
+    {"", "", "20-node brick", "/BRIC20"},
 }};
 static_assert(static_cast<int>(model::ElementType::Shell4) == 0 &&
               static_cast<int>(model::ElementType::Shell3) == 1 &&
@@ -151,19 +153,26 @@ const model::ElementBlock& ModelBuilder::block(model::ElementType type) const {
     case model::ElementType::Spring2: return m_.springs;
     case model::ElementType::Truss2: return m_.trusses;
     case model::ElementType::Beam2: return m_.beams;
+    case model::ElementType::Brick20: return m_.bricks20;
   }
   return m_.shells;
 }
 
+// A brick group's index runs through the bricks, then the tetrahedra, then the 20-node bricks (Radioss keeps
+// all three in one solid table and groups them together).
 ModelBuilder::GroupElement ModelBuilder::group_element(model::ElementType type, std::int32_t e) const {
   const auto& b = block(type);
-  if (type == model::ElementType::Brick8 && e >= static_cast<std::int32_t>(b.size()))
-    return {&m_.tetras, e - static_cast<std::int32_t>(b.size())};
+  if (type == model::ElementType::Brick8 && e >= static_cast<std::int32_t>(b.size())) {
+    const auto t = e - static_cast<std::int32_t>(b.size());
+    if (t < static_cast<std::int32_t>(m_.tetras.size())) return {&m_.tetras, t};
+    return {&m_.bricks20, t - static_cast<std::int32_t>(m_.tetras.size())};
+  }
   return {&b, e};
 }
 
 std::size_t ModelBuilder::group_capacity(model::ElementType type) const {
-  return block(type).size() + (type == model::ElementType::Brick8 ? m_.tetras.size() : 0);
+  return block(type).size() +
+         (type == model::ElementType::Brick8 ? m_.tetras.size() + m_.bricks20.size() : 0);
 }
 
 void ModelBuilder::subset_parts(std::int32_t s, std::vector<std::int32_t>& out) const {
@@ -228,12 +237,14 @@ void report_missing_in_element_group(const ElementGroupList& l, std::size_t k, c
 }
 
 // The index, in a group of the list's type, of the element with user id `id`; -1 when none. A brick group
-// looks among the tetrahedra when no brick has the id.
+// looks among the tetrahedra, then the 20-node bricks, when no brick has the id.
 std::int32_t group_index_of(const ElementGroupList& l, std::int64_t id) {
   const auto e = l.elems.index.find(id);
   if (e >= 0 || l.type != model::ElementType::Brick8) return e;
   const auto t = l.b.m_.tetras.index.find(id);
-  return t < 0 ? -1 : static_cast<std::int32_t>(l.elems.size()) + t;
+  if (t >= 0) return static_cast<std::int32_t>(l.elems.size()) + t;
+  const auto q = l.b.m_.bricks20.index.find(id);
+  return q < 0 ? -1 : static_cast<std::int32_t>(l.elems.size() + l.b.m_.tetras.size()) + q;
 }
 
 // Calls f(group index, part) for every element a group of the list's type can hold.
@@ -263,7 +274,7 @@ void add_listed_elements(ElementGroupList& l) {
       l.b.diags_.error(Diag::MissingReference, l.b.at(r.id_pos[k], 1), ModelBuilder::about(r),
                        std::string(fam.element) + " " + std::to_string(id) + " does not exist: no " +
                            std::string(fam.element_keyword) +
-                           (l.type == model::ElementType::Brick8 ? " or /TETRA4" : "") +
+                           (l.type == model::ElementType::Brick8 ? ", /TETRA4 or /BRIC20" : "") +
                            " line defines it (listed in " + l.gname + ")");
     else
       l.add.push_back(e);
@@ -453,12 +464,14 @@ void add_ids_in_ranges(ModelBuilder& b, const KeywordRecord& r, const std::vecto
 }
 
 // /GRSHEL/GENE, /GRSH3N/GENE, /GRBRIC/GENE: the existing elements of each id range (a brick group's
-// tetrahedra too).
+// tetrahedra and 20-node bricks too).
 void add_elements_in_ranges(ElementGroupList& l) {
   const auto ranges = gene_ranges(l.b, l.r);
   std::vector<std::int64_t> ids(l.elems.id);
-  if (l.type == model::ElementType::Brick8)
+  if (l.type == model::ElementType::Brick8) {
     ids.insert(ids.end(), l.b.m_.tetras.id.begin(), l.b.m_.tetras.id.end());
+    ids.insert(ids.end(), l.b.m_.bricks20.id.begin(), l.b.m_.bricks20.id.end());
+  }
   add_ids_in_ranges(
       l.b, l.r, ids, [&](std::int64_t id) { return group_index_of(l, id); }, ranges, l.add);
 }
@@ -507,7 +520,7 @@ const std::vector<std::int32_t>* ModelBuilder::group_elements(std::int32_t g) {
     // Radioss warns and goes on; what is built from the group then holds nothing.
     diags_.warning(Diag::EmptyGroup, at(r.pos, 1), about(r),
                    l.gname + " holds no " + std::string(fam.element) +
-                       (group.type == model::ElementType::Brick8 ? " or tetrahedron" : "") +
+                       (group.type == model::ElementType::Brick8 ? ", tetrahedron or 20-node brick" : "") +
                        ": the surfaces and node groups built from it hold nothing of it (as in Radioss)");
   }
   group.state = 2;
@@ -640,7 +653,7 @@ struct NodeGroupList {
 
 // The nodes of the elements of `part`, to `out`.
 void add_part_nodes(const model::Model& m, std::int32_t part, std::vector<std::int32_t>& out) {
-  for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras, &m.trusses, &m.beams}) {
+  for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras, &m.bricks20, &m.trusses, &m.beams}) {
     const auto npe = static_cast<std::size_t>(b->npe());
     for (std::size_t e = 0; e < b->size(); ++e) {
       if (b->part[e] != part) continue;
@@ -1038,6 +1051,7 @@ bool part_has_solid(const model::Model& m, std::int32_t part) {
   bool has_solid = false;
   for (std::size_t e = 0; e < m.bricks.size() && !has_solid; ++e) has_solid = m.bricks.part[e] == part;
   for (std::size_t e = 0; e < m.tetras.size() && !has_solid; ++e) has_solid = m.tetras.part[e] == part;
+  for (std::size_t e = 0; e < m.bricks20.size() && !has_solid; ++e) has_solid = m.bricks20.part[e] == part;
   return has_solid;
 }
 
@@ -1062,6 +1076,17 @@ std::vector<std::int32_t> tag_surface_parts(ModelBuilder& b, const KeywordRecord
         continue;
       }
       const auto part = it->second;
+      // OpenRadioss's surface search takes the faces of 8- and 10-node solids only (ssurftag.F loops over
+      // NUMELS8 + NUMELS10): a 20-node brick part would add no segment. Refused by name rather than run
+      // with a surface that silently lacks them.
+      if (std::any_of(b.m_.bricks20.part.begin(), b.m_.bricks20.part.end(),
+                      [part](std::int32_t p) { return p == part; }))
+        b.diags_.error(
+            Diag::PhysicsNotImplemented, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+            "part " + std::to_string(id) +
+                " has 20-node bricks (/BRIC20): surfaces of 20-node bricks are not built (OpenRadioss "
+                "gives them no segment either); use the part's nodes as secondary nodes of the "
+                "contact, or a /SURF/SEG of its faces' corner nodes");
       if (shells_only && part_has_solid(b.m_, part))
         b.diags_.error(Diag::PartWrongKind, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
                        "part " + std::to_string(id) +
@@ -1179,14 +1204,25 @@ void surface_from_brick_groups(ModelBuilder& b, const KeywordRecord& r, model::S
                            std::to_string(id) + "): it is left out, as Radioss does");
       continue;
     }
+    bool quadratic = false;
     for (const auto e : g->elements) {
       const auto ge = b.group_element(model::ElementType::Brick8, e);
+      if (ge.block == &b.m_.bricks20) {
+        quadratic = true;  // no faces of 20-node bricks, as in OpenRadioss (ssurftag.F): refused below
+        continue;
+      }
       const bool tetra = ge.block == &b.m_.tetras;
       auto& mark = tetra ? chosen_tetras : chosen;
       if (mark[ge.index]) continue;
       mark[ge.index] = 1;
       (tetra ? tetras : bricks).push_back(ge.index);
     }
+    if (quadratic)
+      b.diags_.error(
+          Diag::PhysicsNotImplemented, b.at(r.id_pos[k], 1), ModelBuilder::about(r),
+          "brick group " + std::to_string(id) +
+              " holds 20-node bricks (/BRIC20): surfaces of 20-node bricks are not built (OpenRadioss "
+              "gives them no segment either); leave them out of the group");
   }
   // EXT: a face is inner when another solid of the groups has it; FREE: when any solid of the model has
   // it.

@@ -63,7 +63,7 @@ void ModelBuilder::read_ogden(const KeywordRecord& r, model::Material& mat) {
 
 void ModelBuilder::check_ogden_parts() {
   std::vector<std::uint8_t> other_part(m_.parts.size(), 0), brick_part(m_.parts.size(), 0);
-  for (const auto* b : {&m_.shells, &m_.shells3, &m_.tetras})
+  for (const auto* b : {&m_.shells, &m_.shells3, &m_.tetras, &m_.bricks20})
     for (const auto p : b->part)
       if (p >= 0 && static_cast<std::size_t>(p) < other_part.size())
         other_part[static_cast<std::size_t>(p)] = 1;
@@ -87,7 +87,7 @@ void ModelBuilder::check_ogden_parts() {
       if (other_part[p] && path == mat_path && rec.id == mat.id)
         diags_.error(
             Diag::PhysicsNotImplemented, at(rec.pos), about(rec),
-            who + " has shells or tetrahedra: radx implements " + law +
+            who + " has shells, tetrahedra or 20-node bricks: radx implements " + law +
                 " on 8-node bricks of Isolid 1 or 2 only (the one-point brick carries the total deformation "
                 "gradient)");
       if (!brick_part[p] || path != "/PROP/SOLID" || rec.id != prop.id) continue;

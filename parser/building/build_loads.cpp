@@ -943,7 +943,13 @@ std::int32_t th_object(const ModelBuilder& b, model::ThKind kind, std::int64_t i
     case model::ThKind::Rwall: return in(b.rwall_ids_);
     case model::ThKind::Shell: return b.m_.shells.index.find(id);
     case model::ThKind::Subset: return in(b.subset_ids_);
-    case model::ThKind::Brick: return b.m_.bricks.index.find(id);
+    case model::ThKind::Brick: {
+      // 20-node bricks after the 8-node ones (model::TimeHistoryGroup::objects)
+      const auto e = b.m_.bricks.index.find(id);
+      if (e >= 0) return e;
+      const auto e20 = b.m_.bricks20.index.find(id);
+      return e20 < 0 ? kNone : static_cast<std::int32_t>(b.m_.bricks.size()) + e20;
+    }
     case model::ThKind::Shell3: return b.m_.shells3.index.find(id);
     case model::ThKind::Rbody: return in(b.rbody_ids_);
     case model::ThKind::Section: return in(b.sect_ids_);

@@ -55,7 +55,7 @@ RigidSets join_rigid_material_nodes(const model::Model& m) {
   RigidSets sets{std::vector<std::int32_t>(nn), std::vector<std::uint8_t>(nn, 0),
                  std::vector<std::int64_t>(nn, 0)};
   std::iota(sets.parent.begin(), sets.parent.end(), 0);
-  for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras}) {
+  for (const auto* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras, &m.bricks20}) {
     const auto npe = static_cast<std::size_t>(b->npe());
     for (std::size_t e = 0; e < b->size(); ++e) {
       if (b->part[e] == kNone || !rigid_part(m, b->part[e])) continue;

@@ -145,13 +145,22 @@ void read_section_elements(ModelBuilder& b, const KeywordRecord& r, model::Secti
       out = touching(b.block(type), g->elements, s.nodes);
       return;
     }
-    // A brick group may hold tetrahedra (past the bricks): radx sums no tetrahedron force in a section.
-    std::vector<std::int32_t> bricks, tetras;
+    // A brick group may hold tetrahedra and 20-node bricks (past the bricks): radx sums neither's force in a
+    // section.
+    std::vector<std::int32_t> bricks, tetras, quadratic;
     for (const auto e : g->elements) {
       const auto ge = b.group_element(type, e);
-      (ge.block == &b.m_.tetras ? tetras : bricks).push_back(ge.index);
+      (ge.block == &b.m_.tetras     ? tetras
+       : ge.block == &b.m_.bricks20 ? quadratic
+                                    : bricks)
+          .push_back(ge.index);
     }
     out = touching(b.block(type), bricks, s.nodes);
+    if (const auto q = touching(b.m_.bricks20, quadratic, s.nodes); !q.empty())
+      b.error_at(r, field, Diag::PhysicsNotImplemented,
+                 std::string(field) + " = " + std::to_string(id) + ": " + std::to_string(q.size()) +
+                     " 20-node bricks of the group touch the cut, and radx sums no 20-node brick force in a "
+                     "section (bricks, shells, trusses and beams only); leave them out of the group");
     if (const auto t = touching(b.m_.tetras, tetras, s.nodes); !t.empty())
       b.error_at(
           r, field, Diag::PhysicsNotImplemented,

@@ -8,11 +8,11 @@
 //   over I). An empty kind of a clause leaves the set's kind as it is, except under I, which empties it.
 // * PART: the parts, their elements, the elements' nodes and a surface: the shells as numbered (option O:
 //   flipped), the faces of their solids that no other solid of the clause's parts shares (option A: every
-//   face). SHELL, SH3N, SOLID: the elements listed (SOLID takes /BRICK and /TETRA4 ids), their nodes and
-//   surface the same way (a solid face is inner when another solid of the clause has it). NODE: the nodes.
-//   BOX, BOX2: the nodes inside the boxes, the elements with all (BOX) or at least one (BOX2) node inside,
-//   and their surface (a solid face is inner when any solid of the model has it). ALL: every node, part and
-//   element of the model. SET (SETCOL): the union of the /SET/GENERAL (/SET/COLLECT) sets listed.
+//   face). SHELL, SH3N, SOLID: the elements listed (SOLID takes /BRICK, /TETRA4 and /BRIC20 ids), their nodes
+//   and surface the same way (a solid face is inner when another solid of the clause has it). NODE: the
+//   nodes. BOX, BOX2: the nodes inside the boxes, the elements with all (BOX) or at least one (BOX2) node
+//   inside, and their surface (a solid face is inner when any solid of the model has it). ALL: every node,
+//   part and element of the model. SET (SETCOL): the union of the /SET/GENERAL (/SET/COLLECT) sets listed.
 // * Option G reads triples (first, last, step; step 0 is 1) and takes the ids of each range that exist. A
 //   listed id that does not exist is left out with a warning (Radioss's message 1902), nodes included.
 // * Every /SET/COLLECT with one id adds to one set.
@@ -169,11 +169,14 @@ void add_element_nodes(const model::Model& m, ModelBuilder::SetMembers& s,
   for (const auto e : s.shells) take(m.shells, e, 4);
   for (const auto e : s.shells3) take(m.shells3, e, 3);
   const auto bricks = static_cast<std::int32_t>(m.bricks.size());
+  const auto tetras = static_cast<std::int32_t>(m.tetras.size());
   for (const auto e : s.solids) {
     if (e < bricks)
       take(m.bricks, e, 8);
-    else
+    else if (e < bricks + tetras)
       take(m.tetras, e - bricks, 4);
+    else
+      take(m.bricks20, e - bricks - tetras, 20);
   }
   for (const auto e : springs) take(m.springs, e, 2);
   sort_unique(s.nodes);
@@ -193,6 +196,8 @@ void add_element_surface(const ClauseContext& x, ModelBuilder::SetMembers& s, Fa
   std::vector<std::uint8_t> brick_mark(nb, neighbours == FaceNeighbours::Model ? 1 : 0);
   std::vector<std::uint8_t> tetra_mark(x.m.tetras.size(), neighbours == FaceNeighbours::Model ? 1 : 0);
   for (const auto e : s.solids) {
+    // 20-node bricks (after the tetrahedra) give no faces, as OpenRadioss's surface search (ssurftag.F)
+    if (static_cast<std::size_t>(e) >= nb + x.m.tetras.size()) continue;
     const bool tetra = static_cast<std::size_t>(e) >= nb;
     const auto i = tetra ? e - static_cast<std::int32_t>(nb) : e;
     (tetra ? tetras : bricks).push_back(i);
@@ -204,12 +209,15 @@ void add_element_surface(const ClauseContext& x, ModelBuilder::SetMembers& s, Fa
     s.segments.push_back({surf.segments[k], surf.owner_type[k], surf.owner[k]});
 }
 
-// The group index (solids: tetrahedra after the bricks) of the solid with user id `id`, or -1.
+// The group index (solids: tetrahedra after the bricks, 20-node bricks after them) of the solid with user id
+// `id`, or -1.
 std::int32_t solid_index(const model::Model& m, std::int64_t id) {
   const auto e = m.bricks.index.find(id);
   if (e >= 0) return e;
   const auto t = m.tetras.index.find(id);
-  return t < 0 ? -1 : static_cast<std::int32_t>(m.bricks.size()) + t;
+  if (t >= 0) return static_cast<std::int32_t>(m.bricks.size()) + t;
+  const auto q = m.bricks20.index.find(id);
+  return q < 0 ? -1 : static_cast<std::int32_t>(m.bricks.size() + m.tetras.size()) + q;
 }
 
 // The elements of `parts` (sorted dense part indices) into s, and the parts' springs into `springs`.
@@ -226,6 +234,9 @@ void add_elements_of_parts(const model::Model& m, ModelBuilder::SetMembers& s,
     if (in(m.bricks.part[e])) s.solids.push_back(static_cast<std::int32_t>(e));
   for (std::size_t e = 0; e < m.tetras.size(); ++e)
     if (in(m.tetras.part[e])) s.solids.push_back(static_cast<std::int32_t>(m.bricks.size() + e));
+  for (std::size_t e = 0; e < m.bricks20.size(); ++e)
+    if (in(m.bricks20.part[e]))
+      s.solids.push_back(static_cast<std::int32_t>(m.bricks.size() + m.tetras.size() + e));
   for (std::size_t e = 0; e < m.springs.size(); ++e)
     if (in(m.springs.part[e])) springs.push_back(static_cast<std::int32_t>(e));
 }
@@ -262,6 +273,7 @@ ModelBuilder::SetMembers element_clause(const ClauseContext& x) {
   } else {
     std::vector<std::int64_t> ids(m.bricks.id);
     ids.insert(ids.end(), m.tetras.id.begin(), m.tetras.id.end());
+    ids.insert(ids.end(), m.bricks20.id.begin(), m.bricks20.id.end());
     s.solids = resolve_ids(
         x.b, x.c, ids, [&](std::int64_t id) { return solid_index(m, id); }, "solid");
   }
@@ -312,6 +324,7 @@ ModelBuilder::SetMembers box_clause(const ClauseContext& x) {
   select(m.shells3, s.shells3, 0);
   select(m.bricks, s.solids, 0);
   select(m.tetras, s.solids, static_cast<std::int32_t>(m.bricks.size()));
+  select(m.bricks20, s.solids, static_cast<std::int32_t>(m.bricks.size() + m.tetras.size()));
   add_element_surface(x, s, FaceNeighbours::Model);
   return s;
 }
@@ -327,7 +340,7 @@ ModelBuilder::SetMembers all_clause(const ClauseContext& x) {
   every(m.parts.size(), s.parts);
   every(m.shells.size(), s.shells);
   every(m.shells3.size(), s.shells3);
-  every(m.bricks.size() + m.tetras.size(), s.solids);
+  every(m.bricks.size() + m.tetras.size() + m.bricks20.size(), s.solids);
   add_element_surface(x, s, FaceNeighbours::Model);
   return s;
 }

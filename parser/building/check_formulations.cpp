@@ -90,7 +90,7 @@ bool spring_h_runs(int h, bool type8) {
 }
 
 // The element shapes that use a property, as bits.
-constexpr std::uint8_t kQuad = 1, kTri = 2, kBrick = 4, kTetra = 8, kSpring = 16;
+constexpr std::uint8_t kQuad = 1, kTri = 2, kBrick = 4, kTetra = 8, kSpring = 16, kBrick20 = 32;
 
 // Which element shapes use each property.
 std::vector<std::uint8_t> property_uses(const model::Model& m) {
@@ -108,6 +108,7 @@ std::vector<std::uint8_t> property_uses(const model::Model& m) {
   mark(m.bricks, kBrick);
   mark(m.tetras, kTetra);
   mark(m.springs, kSpring);
+  mark(m.bricks20, kBrick20);
   return use;
 }
 
@@ -214,6 +215,64 @@ void check_tetra_flags(const PropertyFlags& p, model::SolidProperty& s) {
              "Jaumann rate, not co-rotational", "4-node tetrahedra");
 }
 
+// What a 20-node brick does with an Isolid, as OpenRadioss runs it: every 20-node brick runs s20forc3.F
+// (forint.F dispatches on the node count); the Isolid only sets the Gauss points (starter hm_read_prop14.F,
+// sgrtails.F, elbuf_ini.F): 16 (and 222) the Inpts rule (default 222), 14 the Inpts rule with other digit
+// axes, 17 2 x 2 x 2, 1, 2 and 24 one point, 12, 13 and 18 eight points along one axis.
+std::string brick20_isolid_name(int v) {
+  switch (v) {
+    case 16: return "quadratic brick, Inpts Gauss points";
+    case 14: return "Inpts Gauss points (HA8's digit order)";
+    case 17: return "2 x 2 x 2 Gauss points";
+    case 1:
+    case 2:
+    case 24:
+      return "one Gauss point: OpenRadioss runs it without hourglass control, so the element has zero-energy "
+             "modes";
+    case 12:
+    case 13:
+    case 18: return "eight Gauss points along one axis (one across the other two): zero-energy modes";
+    default: return "formulation " + std::to_string(v);
+  }
+}
+
+// What an Inpts code asks of a 20-node brick, for the message that refuses it.
+std::string brick20_inpts_name(int inpts) {
+  const int d[3] = {inpts / 100, (inpts / 10) % 10, inpts % 10};
+  if (inpts < 100 || inpts > 999 || d[0] == 0 || d[1] == 0 || d[2] == 0) return "not three point counts";
+  if (d[0] == 1 || d[1] == 1 || d[2] == 1)
+    return "one Gauss point along a direction: zero-energy modes, and the element has no hourglass control";
+  return "more than 3 Gauss points along a direction (OpenRadioss's 4 to 9 along s serve 16-node thick "
+         "shells)";
+}
+
+// Whether each digit of an Inpts code asks for 2 or 3 points (the rules radx builds for 20-node bricks).
+bool brick20_inpts_runs(int inpts) {
+  if (inpts == 0) return true;
+  if (inpts < 100 || inpts > 999) return false;
+  for (const int d : {inpts / 100, (inpts / 10) % 10, inpts % 10})
+    if (d != 2 && d != 3) return false;
+  return true;
+}
+
+// /PROP/SOLID where 20-node bricks use it: Isolid (16, 14, 17 run; the one-point and one-axis rules that
+// OpenRadioss also runs on them are refused), Inpts (2 or 3 points per direction) and Ismstr.
+void check_brick20_flags(const PropertyFlags& p, model::SolidProperty& s) {
+  int isolid = s.isolid;
+  check_flag(p, "Isolid", isolid, isolid == 16 || isolid == 14 || isolid == 17 || isolid == 222, 16,
+             brick20_isolid_name(isolid), brick20_isolid_name(16), "20-node bricks");
+  if (isolid != 17) {
+    int inpts = s.inpts;
+    check_flag(p, "Inpts", inpts, brick20_inpts_runs(inpts), 222, brick20_inpts_name(inpts),
+               "2 x 2 x 2 Gauss points; 2 or 3 along each direction run", "20-node bricks");
+    if (!(p.used & kBrick)) s.inpts = inpts;
+  }
+  if (!(p.used & kBrick)) s.isolid = isolid;
+  if (!(p.used & (kBrick | kTetra)))
+    check_flag(p, "Ismstr", s.ismstr, s.ismstr == 2 || s.ismstr == 4, 4, ismstr_name(s.ismstr),
+               ismstr_name(4), "20-node bricks");
+}
+
 // /PROP/SOLID where bricks use it: Isolid, HA8's Inpts, HEPH's Icpre and Ihkt, Ismstr, Iframe and Icontrol.
 void check_brick_flags(const PropertyFlags& p, model::SolidProperty& s) {
   check_flag(p, "Isolid", s.isolid, model::runs_isolid(s.isolid), 1, model::isolid_name(s.isolid),
@@ -248,6 +307,7 @@ void check_solid_flags(const PropertyFlags& p, model::SolidProperty& s) {
   if (s.isolid == 14 || s.isolid == 15 || s.isolid == 18) s.iframe = deck_iframe(p);
   if (p.used & kTetra) check_tetra_flags(p, s);
   if (p.used & kBrick) check_brick_flags(p, s);
+  if (p.used & kBrick20) check_brick20_flags(p, s);
 }
 
 }  // namespace
@@ -343,7 +403,7 @@ void ModelBuilder::check_line_element_laws(const model::ElementBlock& block, std
 // run LAW2's three points; nothing to substitute, so there is no --allow-substitutions way out).
 void ModelBuilder::check_shell_only_laws() {
   std::vector<std::uint8_t> solid_part(m_.parts.size(), 0), shell_part(m_.parts.size(), 0);
-  for (const auto* b : {&m_.bricks, &m_.tetras})
+  for (const auto* b : {&m_.bricks, &m_.tetras, &m_.bricks20})
     for (const auto p : b->part)
       if (p >= 0 && static_cast<std::size_t>(p) < solid_part.size())
         solid_part[static_cast<std::size_t>(p)] = 1;

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "solver/model/geometry.hpp"
+#include "solver/model/hex20_shape.hpp"
 #include "solver/model/masses.hpp"
 
 namespace radx {
@@ -795,7 +796,15 @@ struct ElementKind {
   model::PropertyKind prop_kind;
 };
 
-constexpr const char* kNodeNames[8] = {"n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"};
+constexpr const char* kNodeNames[20] = {"n1",  "n2",  "n3",  "n4",  "n5",  "n6",  "n7",  "n8",  "n9",  "n10",
+                                        "n11", "n12", "n13", "n14", "n15", "n16", "n17", "n18", "n19", "n20"};
+
+// The column a node field starts at on its line: the element cards put n1 at 11, n2 at 21, ...; the 20-node
+// brick's n9-n16 and n17-n20 start their own lines at column 1.
+int node_column(model::ElementType type, int k) {
+  if (type == model::ElementType::Brick20 && k >= 8) return 1 + 10 * ((k - 8) % 8);
+  return 11 + 10 * k;
+}
 
 std::string_view property_kind_name(model::PropertyKind k) {
   switch (k) {
@@ -857,14 +866,14 @@ bool append_element_nodes(ModelBuilder& b, model::ElementBlock& blk, std::string
       continue;
     }
     if (user[k] == 0) {
-      b.diags_.error(Diag::ElementNodeMissing, b.at(pos, 11 + 10 * k), About{keyword, eid},
+      b.diags_.error(Diag::ElementNodeMissing, b.at(pos, node_column(blk.type, k)), About{keyword, eid},
                      std::string(kNodeNames[k]) + " is blank or 0: element " + std::to_string(eid) +
                          " needs " + std::to_string(npe) + " nodes");
       missing = true;
     } else {
       n = b.m_.nodes.index.find(user[k]);
       if (n < 0) {
-        b.diags_.error(Diag::ElementNodeMissing, b.at(pos, 11 + 10 * k), About{keyword, eid},
+        b.diags_.error(Diag::ElementNodeMissing, b.at(pos, node_column(blk.type, k)), About{keyword, eid},
                        "element " + std::to_string(eid) + " uses node " + std::to_string(user[k]) + " (" +
                            kNodeNames[k] + "), which does not exist");
         missing = true;
@@ -993,6 +1002,41 @@ void check_shell_shape(ModelBuilder& b, const model::ElementBlock& blk, std::siz
   }
 }
 
+// A 20-node brick whose nodes start at blk.conn[base]: 20 distinct nodes, and det J > 0 at the 3 x 3 x 3
+// Gauss points (OpenRadioss's engine stops at the first point with a volume <= 0, s20deri3.F; the starter
+// catches it before the run). A mid-side node far off its edge, or corners numbered the other way round,
+// give such a point.
+void check_brick20_shape(ModelBuilder& b, const model::ElementBlock& blk, std::size_t base, SourcePos pos,
+                         const About& ab) {
+  const auto& m = b.m_;
+  const std::int64_t eid = ab.id;
+  for (std::size_t k = 1; k < 20; ++k)
+    for (std::size_t l = 0; l < k; ++l)
+      if (blk.conn[base + k] == blk.conn[base + l]) {
+        b.diags_.error(Diag::RepeatedNodeInElement, b.at(pos, 1), ab,
+                       "20-node brick " + std::to_string(eid) + " lists node " +
+                           std::to_string(m.nodes.id[static_cast<std::size_t>(blk.conn[base + k])]) +
+                           " twice (n" + std::to_string(l + 1) + " and n" + std::to_string(k + 1) +
+                           "); a /BRIC20 needs 20 distinct nodes (radx does not run degenerate 20-node "
+                           "bricks)");
+        return;
+      }
+  double x[20][3];
+  for (int k = 0; k < 20; ++k) {
+    const auto p = element_node_position(m, blk, base, k);
+    for (int d = 0; d < 3; ++d) x[k][d] = p[static_cast<std::size_t>(d)];
+  }
+  double det_min = 0;
+  const double v = model::hex20_volume(x, model::hex20_starter_rule(), &det_min);
+  if (!(det_min > 0)) {
+    b.diags_.error(Diag::NonPositiveVolume, b.at(pos, 1), ab,
+                   "20-node brick " + std::to_string(eid) + " has a non-positive Jacobian at a Gauss point " +
+                       "(smallest det J " + number_text(det_min) + ", volume " + number_text(v) +
+                       "): its corners n1-n4 must turn counter-clockwise seen from the n5-n8 face and each "
+                       "mid-side node n9-n20 must lie near the middle of its edge");
+  }
+}
+
 // The elements of one keyword's records into the kind's block, with their nodes and shapes checked; the
 // line of each element to `pos`.
 void read_element_records(ModelBuilder& b, const ElementKind& kind, const KeywordRecord& r,
@@ -1002,7 +1046,7 @@ void read_element_records(ModelBuilder& b, const ElementKind& kind, const Keywor
   const auto& t = r.records;
   const std::int32_t part = element_part(b, r, kind);
   const int cid = t.column(kind.id_field);
-  int cn[8];
+  int cn[20];
   for (int k = 0; k < npe; ++k) cn[k] = t.column(kNodeNames[k]);
   const int cthick = t.column("Thick");
   const int cphi = t.column("PHI");
@@ -1014,7 +1058,7 @@ void read_element_records(ModelBuilder& b, const ElementKind& kind, const Keywor
     blk.thickness.push_back(cthick >= 0 ? t.reals[cthick][e] : 0.0);
     blk.phi.push_back(cphi >= 0 ? t.reals[cphi][e] : 0.0);
     pos.push_back(t.pos[e]);
-    std::int64_t user[8] = {};
+    std::int64_t user[20] = {};
     for (int k = 0; k < npe; ++k) user[k] = cn[k] >= 0 ? t.ints[cn[k]][e] : 0;
     // A quad with n4 = 0 is a triangle written as a quad: n4 := n3.
     if (blk.type == model::ElementType::Shell4 && user[3] == 0) user[3] = user[2];
@@ -1033,6 +1077,8 @@ void read_element_records(ModelBuilder& b, const ElementKind& kind, const Keywor
     const About ab{kind.keyword, eid};
     if (blk.type == model::ElementType::Tetra4)
       b.check_tetra(blk, base, t.pos[e], eid);
+    else if (blk.type == model::ElementType::Brick20)
+      check_brick20_shape(b, blk, base, t.pos[e], ab);
     else if (blk.type == model::ElementType::Brick8)
       check_brick_shape(b, blk, base, t.pos[e], ab);
     else if (blk.type == model::ElementType::Truss2 || blk.type == model::ElementType::Beam2)
@@ -1056,6 +1102,26 @@ void check_tetra_ids_against_bricks(ModelBuilder& b, const ElementKind& kind,
                        b.deck_.files[p.file] + ":" + std::to_string(p.line) +
                        "; tetrahedra and bricks share one id space (solid elements), element ids must "
                        "be unique");
+  }
+}
+
+// 20-node bricks share the solid id space with bricks and tetrahedra (one solid element table in Radioss).
+void check_brick20_ids_against_solids(ModelBuilder& b, const ElementKind& kind,
+                                      const std::vector<SourcePos>& pos) {
+  const auto& blk = *kind.block;
+  for (std::size_t i = 0; i < blk.id.size(); ++i) {
+    for (const auto* other_blk : {&b.m_.bricks, &b.m_.tetras}) {
+      const auto other = other_blk->index.find(blk.id[i]);
+      if (other < 0) continue;
+      const bool brick = other_blk == &b.m_.bricks;
+      const SourcePos p = (brick ? b.brick_pos_ : b.tetra_pos_)[static_cast<std::size_t>(other)];
+      b.diags_.error(Diag::DuplicateId, b.at(pos[i], 1), About{kind.keyword, blk.id[i]},
+                     "element id " + std::to_string(blk.id[i]) + " is already used by " +
+                         (brick ? "/BRICK" : "/TETRA4") + " at " + b.deck_.files[p.file] + ":" +
+                         std::to_string(p.line) +
+                         "; 20-node bricks, bricks and tetrahedra share one id space (solid elements), "
+                         "element ids must be unique");
+    }
   }
 }
 
@@ -1084,6 +1150,7 @@ void ModelBuilder::build_elements() {
                                {"/SH3N", "tria_ID", &m_.shells3, model::PropertyKind::Shell},
                                {"/BRICK", "brick_ID", &m_.bricks, model::PropertyKind::Solid},
                                {"/TETRA4", "tetra_ID", &m_.tetras, model::PropertyKind::Solid},
+                               {"/BRIC20", "brick20_ID", &m_.bricks20, model::PropertyKind::Solid},
                                {"/TRUSS", "truss_ID", &m_.trusses, model::PropertyKind::Truss},
                                {"/BEAM", "beam_ID", &m_.beams, model::PropertyKind::Beam}};
   for (const auto& kind : kinds) {
@@ -1092,6 +1159,8 @@ void ModelBuilder::build_elements() {
     if (kind.block->type == model::ElementType::Brick8) brick_pos_ = pos;
     // Element ids unique within the type; tetrahedra also share the bricks' id space.
     if (kind.block->type == model::ElementType::Tetra4) check_tetra_ids_against_bricks(*this, kind, pos);
+    if (kind.block->type == model::ElementType::Tetra4) tetra_pos_ = pos;
+    if (kind.block->type == model::ElementType::Brick20) check_brick20_ids_against_solids(*this, kind, pos);
     index_element_ids(*this, kind, pos);
   }
 }

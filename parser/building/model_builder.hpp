@@ -205,7 +205,7 @@ class ModelBuilder {
   std::vector<Set> sets_;
   IdIndex set_ids_, collect_set_ids_;  // /SET/GENERAL and /SET/COLLECT ids -> sets_
   std::vector<ElementGroup> element_groups_;
-  static constexpr std::size_t kElementTypes = 7;  // model::ElementType's values
+  static constexpr std::size_t kElementTypes = 8;  // model::ElementType's values
   IdIndex element_group_ids_[kElementTypes];       // by model::ElementType
   std::vector<const KeywordRecord*> grnod_records_;
   std::vector<std::uint8_t> grnod_state_;    // 0 not built, 1 building, 2 built
@@ -213,6 +213,7 @@ class ModelBuilder {
   std::vector<SourcePos> node_pos_;          // where each node was defined
   std::vector<std::int32_t> node_submodel_;  // the submodel each node was written in (-1: top level)
   std::vector<SourcePos> brick_pos_;         // where each brick was defined
+  std::vector<SourcePos> tetra_pos_;         // where each tetrahedron was defined
   IdIndex submodel_ids_;                     // submodel id -> index into deck_.submodels
   std::vector<std::vector<Affine>> submodel_transforms_;  // by submodel, in deck order
   bool mirrored_ = false;               // a transform applied since the last brick check reverses orientation

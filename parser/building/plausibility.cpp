@@ -28,6 +28,7 @@ const char* keyword_of(model::ElementType t) {
     case model::ElementType::Spring2: return "/SPRING";
     case model::ElementType::Truss2: return "/TRUSS";
     case model::ElementType::Beam2: return "/BEAM";
+    case model::ElementType::Brick20: return "/BRIC20";
   }
   return "/SHELL";
 }
@@ -40,6 +41,7 @@ Where element_where(const Deck& deck, model::ElementType t, std::int64_t id) {
                          : t == model::ElementType::Spring2 ? "spring_ID"
                          : t == model::ElementType::Truss2  ? "truss_ID"
                          : t == model::ElementType::Beam2   ? "beam_ID"
+                         : t == model::ElementType::Brick20 ? "brick20_ID"
                                                             : "shell_ID";
   for (const auto* r : deck.of(keyword_of(t))) {
     const int c = r->records.column(id_field);
@@ -52,10 +54,11 @@ Where element_where(const Deck& deck, model::ElementType t, std::int64_t id) {
 }
 
 std::string element_name(const model::StepEstimate& step) {
-  return std::string(step.type == model::ElementType::Brick8   ? "brick "
-                     : step.type == model::ElementType::Tetra4 ? "tetrahedron "
-                     : step.type == model::ElementType::Shell3 ? "3-node shell "
-                                                               : "shell ") +
+  return std::string(step.type == model::ElementType::Brick8    ? "brick "
+                     : step.type == model::ElementType::Brick20 ? "20-node brick "
+                     : step.type == model::ElementType::Tetra4  ? "tetrahedron "
+                     : step.type == model::ElementType::Shell3  ? "3-node shell "
+                                                                : "shell ") +
          std::to_string(step.element_id);
 }
 

@@ -280,6 +280,9 @@ struct KeywordDecl {
   std::vector<CardDecl> cards;
   Tail tail = Tail::None;
   CardDecl record;  // for Records and ThVarsThenRecords
+  // Tail::Records: the lines one record spans (/BRIC20: 3). Line k's columns 1-100 are the record's columns
+  // 100 k + 1 .. 100 k + 100, so a field on the second line at columns 1-10 is declared at 101-110.
+  int record_lines = 1;
   // For Tail::Text: what the text says (the reference prints it after the generic sentence).
   std::string_view text_meaning;
   Support support = Support::Read;

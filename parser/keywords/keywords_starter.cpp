@@ -286,6 +286,44 @@ void add_control_and_mesh(std::vector<KeywordDecl>& t) {
     t.push_back(std::move(k));
   }
   {
+    // Three lines per element, as OpenRadioss's card (hm_cfg_files .../ELEM/bric20.cfg): the id and the 8
+    // corners, then the mid-side nodes 9-16 and 17-20 from column 1. Line 2 is declared at columns 101-180
+    // and line 3 at 201-240 (KeywordDecl::record_lines).
+    KeywordDecl k = kw("/BRIC20",
+                       "20-node quadratic bricks of one part (a /PROP/SOLID part), three lines per element: "
+                       "id and corners n1-n8; mid-side nodes n9-n16; n17-n20",
+                       Header::PartId, false, "part_ID");
+    k.tail = Tail::Records;
+    k.record_lines = 3;
+    std::vector<FieldDecl> f = {
+        I("brick20_ID", 1, 10, "element id, unique among all solid elements")
+            .refs(IdKind::Element)
+            .must()
+            .gt(0),
+        I("n1", 11, 20, "corner 1 (n1..n4 form one face, as /BRICK)").refs(IdKind::Node).must(),
+        I("n2", 21, 30, "corner 2").refs(IdKind::Node).must(),
+        I("n3", 31, 40, "corner 3").refs(IdKind::Node).must(),
+        I("n4", 41, 50, "corner 4").refs(IdKind::Node).must(),
+        I("n5", 51, 60, "corner 5, joined to n1").refs(IdKind::Node).must(),
+        I("n6", 61, 70, "corner 6, joined to n2").refs(IdKind::Node).must(),
+        I("n7", 71, 80, "corner 7, joined to n3").refs(IdKind::Node).must(),
+        I("n8", 81, 90, "corner 8, joined to n4").refs(IdKind::Node).must(),
+        I("n9", 101, 110, "line 2, columns 1-10: mid-side node of edge n1-n2").refs(IdKind::Node).must(),
+        I("n10", 111, 120, "line 2, columns 11-20: edge n2-n3").refs(IdKind::Node).must(),
+        I("n11", 121, 130, "line 2, columns 21-30: edge n3-n4").refs(IdKind::Node).must(),
+        I("n12", 131, 140, "line 2, columns 31-40: edge n4-n1").refs(IdKind::Node).must(),
+        I("n13", 141, 150, "line 2, columns 41-50: edge n1-n5").refs(IdKind::Node).must(),
+        I("n14", 151, 160, "line 2, columns 51-60: edge n2-n6").refs(IdKind::Node).must(),
+        I("n15", 161, 170, "line 2, columns 61-70: edge n3-n7").refs(IdKind::Node).must(),
+        I("n16", 171, 180, "line 2, columns 71-80: edge n4-n8").refs(IdKind::Node).must(),
+        I("n17", 201, 210, "line 3, columns 1-10: edge n5-n6").refs(IdKind::Node).must(),
+        I("n18", 211, 220, "line 3, columns 11-20: edge n6-n7").refs(IdKind::Node).must(),
+        I("n19", 221, 230, "line 3, columns 21-30: edge n7-n8").refs(IdKind::Node).must(),
+        I("n20", 231, 240, "line 3, columns 31-40: edge n8-n5").refs(IdKind::Node).must()};
+    k.record = card("bric20", std::move(f));
+    t.push_back(std::move(k));
+  }
+  {
     // Columns as OpenRadioss's reader cuts the card (hm_read_spring.F): id, then the nodes 10 wide.
     KeywordDecl k = kw("/SPRING", "2-node spring elements of one part (a /PROP/SPRING part), one per line",
                        Header::PartId, false, "part_ID");
@@ -1235,13 +1273,16 @@ void add_groups(std::vector<KeywordDecl>& t) {
   element_gene("/GRSH3N/GENE",
                "3-node shell group: the existing /SH3N ids in ranges given as pairs (first, last)",
                "grsh3n_ID");
-  element_group("/GRBRIC/BRIC", "brick group: the listed /BRICK and /TETRA4 element ids", "grbric_ID");
-  element_gene("/GRBRIC/GENE",
-               "brick group: the existing /BRICK and /TETRA4 ids in ranges given as pairs (first, last)",
-               "grbric_ID");
-  element_group("/GRBRIC/PART",
-                "brick group: the bricks and tetrahedra of the listed parts; a negative id removes",
+  element_group("/GRBRIC/BRIC", "brick group: the listed /BRICK, /TETRA4 and /BRIC20 element ids",
                 "grbric_ID");
+  element_gene(
+      "/GRBRIC/GENE",
+      "brick group: the existing /BRICK, /TETRA4 and /BRIC20 ids in ranges given as pairs (first, last)",
+      "grbric_ID");
+  element_group(
+      "/GRBRIC/PART",
+      "brick group: the bricks, tetrahedra and 20-node bricks of the listed parts; a negative id removes",
+      "grbric_ID");
   element_group("/GRBRIC/GRBRIC", "brick group: union of /GRBRIC groups; a negative id removes", "grbric_ID");
   element_group(
       "/GRBRIC/SUBSET",
@@ -1254,12 +1295,13 @@ void add_groups(std::vector<KeywordDecl>& t) {
   element_group("/GRBRIC/PROP",
                 "brick group: the bricks of the parts with the listed properties; a negative id removes",
                 "grbric_ID");
-  element_group(
-      "/GRBRIC/BOX",
-      "brick group: the bricks and tetrahedra whose nodes all lie in the box (only the first box id counts)",
-      "grbric_ID");
+  element_group("/GRBRIC/BOX",
+                "brick group: the bricks, tetrahedra and 20-node bricks whose nodes all lie in the box (only "
+                "the first box id counts)",
+                "grbric_ID");
   element_group("/GRBRIC/BOX2",
-                "brick group: the bricks and tetrahedra with at least one node in the box (only the first "
+                "brick group: the bricks, tetrahedra and 20-node bricks with at least one node in the box "
+                "(only the first "
                 "box id counts)",
                 "grbric_ID");
   // Sets (/SET/GENERAL, /SET/COLLECT): clause lines, each a clause word then ids. The ids' kind depends on
@@ -2609,7 +2651,7 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/PROP/INT_BEAM", "/PROP/TYPE20", "/PROP/TSHELL", "/PROP/TYPE22", "/PROP/TYPE23", "/PROP/TYPE51",
         "/PROP/TYPE52", "/PROP/USER",
         // elements
-        "/TETRA10", "/PENTA6", "/SHEL16", "/BRIC20", "/QUAD", "/TRIA", "/SPHCEL",
+        "/TETRA10", "/PENTA6", "/SHEL16", "/QUAD", "/TRIA", "/SPHCEL",
         // groups, surfaces, boxes
         "/GRNOD/LINE", "/GRSHEL", "/GRSH3N", "/GRBRIC", "/GRSPRI", "/GRPART", "/GRQUAD", "/SURF/SURF",
         "/SURF/GRBRIC", "/SURF/BOX", "/SURF/MAT", "/SURF/PROP", "/SURF/SUBSET", "/SURF/PLANE", "/SURF/ELLIPS",

@@ -246,7 +246,12 @@ void write_keyword_reference(std::ostream& os) {
     switch (k.tail) {
       case Tail::None: break;
       case Tail::Records:
-        os << "Then one record per line:\n\n";
+        if (k.record_lines > 1)
+          os << "Then one record per " << k.record_lines
+             << " lines, fixed 10-column fields only (columns 101-200 below are columns 1-100 of a record's "
+                "second line, 201-300 of its third):\n\n";
+        else
+          os << "Then one record per line:\n\n";
         field_rows(os, k.record.fields);
         os << "\n";
         break;

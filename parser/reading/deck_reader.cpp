@@ -832,10 +832,71 @@ class StarterReader {
                          const About& about, SkippedText& skipped) {
     const auto& lines = text_.lines;
     init_table(rec.records, decl.record);
+    if (decl.record_lines > 1) {
+      read_multi_line_records(decl, cur, last, rec, about, skipped);
+      return;
+    }
     for (; cur < last; ++cur) {
       if (trim(lines[cur].text).empty() || skip_text_line(lines[cur], skipped)) continue;
       read_record(rec.records, lines[cur], about);
     }
+  }
+
+  // Records of decl.record_lines lines each (/BRIC20): the lines of one record, blank and comment lines
+  // skipped, joined into one text of 100 columns per line, read as one record at its first line. A block
+  // that ends inside a record is an error naming the lines it lacks.
+  void read_multi_line_records(const KeywordDecl& decl, std::size_t cur, std::size_t last, KeywordRecord& rec,
+                               const About& about, SkippedText& skipped) {
+    const auto& lines = text_.lines;
+    const auto per = static_cast<std::size_t>(decl.record_lines);
+    std::vector<std::size_t> taken;
+    for (; cur < last; ++cur) {
+      if (trim(lines[cur].text).empty() || skip_text_line(lines[cur], skipped)) continue;
+      taken.push_back(cur);
+      if (taken.size() < per) continue;
+      TextLine joined = lines[taken.front()];
+      std::string text;
+      bool free = false;
+      for (const auto l : taken) {
+        std::string part(check_tabs(lines[l], about));
+        free = free || part.find(',') != std::string::npos;
+        if (part.size() > 100) part.resize(100);  // check_width reports longer lines on each one
+        part.resize(100, ' ');
+        text += part;
+        check_width(lines[l], about);
+      }
+      joined.text = text;
+      if (free)
+        diags_.error(Diag::BadInteger, at(lines[taken.front()].pos, 1), about,
+                     std::string(decl.path) +
+                         " is read in fixed 10-column fields only: write its node lines without commas");
+      else
+        read_joined_record(rec.records, joined, about);
+      taken.clear();
+    }
+    if (!taken.empty())
+      diags_.error(Diag::MissingCard, at(lines[taken.front()].pos, 1), about,
+                   std::string(decl.path) + " takes " + std::to_string(per) +
+                       " lines per element and the block ends after " + std::to_string(taken.size()) +
+                       " line(s) of this one; write the element's remaining node lines");
+  }
+
+  // One record from lines joined by read_multi_line_records (no width check: each line had its own).
+  void read_joined_record(RecordTable& t, const TextLine& joined, const About& about) {
+    const std::size_t errors_before = diags_.error_count();
+    const std::string_view text = joined.text;
+    t.pos.push_back(joined.pos);
+    for (std::size_t k = 0; k < t.fields.size(); ++k) {
+      const auto& f = *t.fields[k];
+      const std::string_view raw = cell(text, f.first_col, f.last_col);
+      FieldValue v = parse_field(f, raw, joined.pos, f.first_col, about);
+      switch (f.type) {
+        case FieldType::Int: t.ints[k].push_back(v.i); break;
+        case FieldType::Real: t.reals[k].push_back(v.r); break;
+        case FieldType::String: t.strings[k].push_back(std::move(v.s)); break;
+      }
+    }
+    t.bad.push_back(diags_.error_count() > errors_before ? 1 : 0);
   }
 
   // Tail::Clauses: every non-blank line is a record; a clause word starts its line, so no line is skipped

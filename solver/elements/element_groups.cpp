@@ -81,6 +81,23 @@ void TetraGroup::allocate(int n) {
   nodal_force.assign(4 * 3 * G, 0.0);
 }
 
+void Hex20Group::allocate(int n) {
+  count = n;
+  const auto G = static_cast<std::size_t>(kGroupSize);
+  const auto np = static_cast<std::size_t>(n_points());
+  conn.assign(20 * G, 0);
+  element.assign(G, -1);
+  for (auto* v : {&vol0, &vol, &rho, &eps_p, &dmg, &q, &e_int, &e_hg, &w_plastic, &rate, &dt, &k_nodal})
+    v->assign(G, 0.0);
+  off.assign(G, 1.0);
+  sig.assign(6 * G, 0.0);
+  sig_p.assign(np * 6 * G, 0.0);
+  eps_p_p.assign(np * G, 0.0);
+  dmg_p.assign(np * G, 0.0);
+  vol0_p.assign(np * G, 0.0);
+  nodal_force.assign(20 * 3 * G, 0.0);
+}
+
 void SpringGroup::allocate(int n) {
   count = n;
   const auto G = static_cast<std::size_t>(kGroupSize);

@@ -230,6 +230,27 @@ struct TetraGroup : MaterialGroupCore {
   void allocate(int n);
 };
 
+// 20-node quadratic bricks (/BRIC20, hex20_quadratic.cpp): a product Gauss rule of n[0] x n[1] x n[2]
+// points (2 or 3 along each natural direction), per-point state, no hourglass (e_hg stays 0). conn [20][G],
+// nodal_force [20][3][G]; sig [6][G] the volume-weighted mean point stress (global axes), eps_p [G] the
+// points' mean plastic strain, dmg [G] their largest damage.
+struct Hex20Group : MaterialGroupCore {
+  using MaterialGroupCore::MaterialGroupCore;
+  double qa = 1.1, qb = 0.05;
+  std::array<int, 3> rule{2, 2, 2};  // Gauss points along xi, eta, zeta (model::Hex20Rule::n)
+  [[nodiscard]] int n_points() const { return rule[0] * rule[1] * rule[2]; }
+  GroupArray<double> sig_p{arena};    // [np][6][G] point stresses, global axes (Jaumann rate)
+  GroupArray<double> eps_p_p{arena};  // [np][G] point plastic strains
+  GroupArray<double> dmg_p{arena};    // [np][G] point failure damage
+  GroupArray<double> vol0_p{arena};   // [np][G] initial point volumes w_p det J_p
+  GroupArray<double> vol0{arena};     // [G] initial volume sum_p vol0_p
+  GroupArray<double> vol{arena};      // [G] current volume
+  GroupArray<double> rho{arena};      // [G] current density rho0 V0 / V
+  GroupArray<double> q{arena};        // [G] bulk viscosity pressure of the last cycle
+  [[nodiscard]] static constexpr int nodes_per_element() { return 20; }
+  void allocate(int n);  // after `rule` is set
+};
+
 // Springs (/SPRING): one part, so one property, per group. TYPE4 (/PROP/SPRING, spring_type4.cpp): one axial
 // law, state in the first G slots of dx, force, the law state and forces [2][3][G]. TYPE8 (/PROP/SPR_GENE,
 // spring_type8.cpp) and TYPE13 (/PROP/SPR_BEAM, spring_type13.cpp): six laws X Y Z RX RY RZ, state [6][G]
@@ -309,19 +330,21 @@ struct BeamGroup : MaterialGroupCore {
 };
 
 // Every element group of a model, kind by kind, in the one order all the engine's stages use: shells,
-// bricks, tetrahedra, springs, trusses, beams. A flat group index counts through the kinds in that order (the
-// element stage's chunks, its votes and the order of the nodal sums), and sums over groups are taken in it.
+// bricks, tetrahedra, 20-node bricks, springs, trusses, beams. A flat group index counts through the kinds in
+// that order (the element stage's chunks, its votes and the order of the nodal sums), and sums over groups
+// are taken in it.
 struct ElementGroups {
   std::vector<ShellGroup> shells;
   std::vector<BrickGroup> bricks;
   std::vector<TetraGroup> tetras;
+  std::vector<Hex20Group> bricks20;
   std::vector<SpringGroup> springs;
   std::vector<TrussGroup> trusses;
   std::vector<BeamGroup> beams;
 
   [[nodiscard]] std::int64_t count() const {
-    return static_cast<std::int64_t>(shells.size() + bricks.size() + tetras.size() + springs.size() +
-                                     trusses.size() + beams.size());
+    return static_cast<std::int64_t>(shells.size() + bricks.size() + tetras.size() + bricks20.size() +
+                                     springs.size() + trusses.size() + beams.size());
   }
   // Calls f(group) for every group, in the flat order.
   template <class F>
@@ -348,6 +371,7 @@ struct ElementGroups {
     for (auto& g : self.shells) f(g);
     for (auto& g : self.bricks) f(g);
     for (auto& g : self.tetras) f(g);
+    for (auto& g : self.bricks20) f(g);
     for (auto& g : self.springs) f(g);
     for (auto& g : self.trusses) f(g);
     for (auto& g : self.beams) f(g);
@@ -361,6 +385,8 @@ struct ElementGroups {
     k -= self.bricks.size();
     if (k < self.tetras.size()) return f(self.tetras[k]);
     k -= self.tetras.size();
+    if (k < self.bricks20.size()) return f(self.bricks20[k]);
+    k -= self.bricks20.size();
     if (k < self.springs.size()) return f(self.springs[k]);
     k -= self.springs.size();
     if (k < self.trusses.size()) return f(self.trusses[k]);
@@ -383,6 +409,9 @@ inline const model::ElementBlock& element_block(const model::Model& m, const Bri
 inline const model::ElementBlock& element_block(const model::Model& m, const TetraGroup&) {
   return m.tetras;
 }
+inline const model::ElementBlock& element_block(const model::Model& m, const Hex20Group&) {
+  return m.bricks20;
+}
 inline const model::ElementBlock& element_block(const model::Model& m, const SpringGroup&) {
   return m.springs;
 }
@@ -404,6 +433,9 @@ inline std::size_t first_cell(const model::Model& m, const BrickGroup&) {
 }
 inline std::size_t first_cell(const model::Model& m, const TetraGroup&) {
   return m.shells.size() + m.shells3.size() + m.bricks.size();
+}
+inline std::size_t first_cell(const model::Model& m, const Hex20Group&) {
+  return m.shells.size() + m.shells3.size() + m.bricks.size() + m.tetras.size();
 }
 inline std::size_t first_cell(const model::Model& m, const SpringGroup&) {
   return m.element_count();
@@ -443,8 +475,8 @@ inline double initial_mass(const BeamGroup& g, std::size_t i, double rho0) {
   return rho0 * g.section.area * g.l0[i];
 }
 template <class Solid>
-requires(std::is_same_v<Solid, BrickGroup> ||
-         std::is_same_v<Solid, TetraGroup>) inline double initial_mass(const Solid& g, std::size_t i,
+requires(std::is_same_v<Solid, BrickGroup> || std::is_same_v<Solid, TetraGroup> ||
+         std::is_same_v<Solid, Hex20Group>) inline double initial_mass(const Solid& g, std::size_t i,
                                                                        double rho0) {
   return rho0 * g.vol0[i];
 }
@@ -480,6 +512,10 @@ void hex8_heph_forces(BrickGroup& g, const NodeState& nodes, const MaterialParam
 // (Isolid 1, 2). R[row][column], columns the unit axes in global coordinates.
 void brick_corotational_frame(const double x[8][3], bool heph_order, double R[3][3]);
 void tetra4_forces(TetraGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
+void hex20_forces(Hex20Group& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
+// Element i's initial point volumes vol0_p, volume vol0 and vol from its node coordinates x0[20][3]
+// (hex20_quadratic.cpp).
+void hex20_init_geometry(Hex20Group& g, std::size_t i, const double x0[20][3]);
 void hex8_full_forces(BrickGroup& g, const NodeState& nodes, const MaterialParams& mat, const CycleInfo& cyc);
 // The flags of a brick group from its property and material (OpenRadioss's defaults per Isolid, see
 // hex8_full.cpp): n_points, icpre, corot, strain, coupled, dt_points. One-point formulations keep n_points

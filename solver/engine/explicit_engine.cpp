@@ -1,7 +1,8 @@
 // The explicit time loop; see explicit_engine.hpp for the cycle order and the energy definitions.
 // Masses and rotational inertias (docs/theory/elements.md section 5): shells m_e = rho t0 A0, m_e/4 per slot,
 // I = (m_e/4)(A0/9 + t0^2/12); 3-node shells m_e alpha_k/pi with I_e = m_e (A0/4.5 + t0^2/12);
-// bricks m_e/8 per node, tetrahedra m_e/4 per node, no inertia for either; TYPE8 springs I/2 per node;
+// bricks m_e/8 per node, tetrahedra m_e/4 per node, 20-node bricks m_e/64 per corner and 7 m_e/96 per
+// mid-side node, no inertia for these; TYPE8 springs I/2 per node;
 // type-3 beams as add_beam_inertias says (trusses carry none).
 #include "solver/engine/explicit_engine.hpp"
 
@@ -18,6 +19,7 @@
 
 #include "solver/conditions/kinematics_driver.hpp"
 #include "solver/model/geometry.hpp"
+#include "solver/model/hex20_shape.hpp"
 #include "solver/model/masses.hpp"
 #include "solver/model/stable_step.hpp"
 
@@ -262,6 +264,9 @@ std::string element_kind_name(const BrickGroup&) {
 }
 std::string element_kind_name(const TetraGroup&) {
   return "tetrahedron";
+}
+std::string element_kind_name(const Hex20Group&) {
+  return "20-node brick";
 }
 std::string element_kind_name(const SpringGroup&) {
   return "spring";
@@ -601,6 +606,39 @@ TetraGroup make_tetra_group(const model::Model& m, const std::vector<MaterialPar
   return g;
 }
 
+// A 20-node brick group of the elements `run` of one part: the Gauss rule from the property's Isolid and
+// Inpts (the starter accepts 16 and 14 with 2 or 3 points per direction, and 17 as 2 x 2 x 2), the bulk
+// viscosity, the initial point volumes.
+Hex20Group make_hex20_group(const model::Model& m, const std::vector<MaterialParams>& materials,
+                            std::pmr::memory_resource* arena, std::int32_t part,
+                            std::span<const std::int32_t> run) {
+  const auto& prop = m.properties[m.parts[part].property].solid;
+  Hex20Group g(arena);
+  g.rule =
+      prop.isolid == 17 ? std::array<int, 3>{2, 2, 2} : model::hex20_rule_of_inpts(prop.inpts, prop.isolid).n;
+  g.allocate(static_cast<int>(run.size()));
+  g.part = part;
+  g.material = m.parts[part].material;
+  g.qa = prop.qa;
+  g.qb = prop.qb;
+  const double rho0 = materials[static_cast<std::size_t>(g.material)].rho0;
+  for (int i = 0; i < g.count; ++i) {
+    const auto e = static_cast<std::size_t>(run[static_cast<std::size_t>(i)]);
+    g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
+    double x[20][3];
+    for (int q = 0; q < 20; ++q) {
+      const auto n = m.bricks20.conn[20 * e + static_cast<std::size_t>(q)];
+      g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = n;
+      x[q][0] = m.nodes.x[n];
+      x[q][1] = m.nodes.y[n];
+      x[q][2] = m.nodes.z[n];
+    }
+    hex20_init_geometry(g, static_cast<std::size_t>(i), x);
+    g.rho[static_cast<std::size_t>(i)] = rho0;
+  }
+  return g;
+}
+
 // A spring group of the elements `run` of one part: its property and the curves it names, the frame of
 // TYPE8's six laws (a fixed skew's axes: moving skews are refused by the starter), the initial lengths and,
 // for TYPE13, the initial y axis.
@@ -730,6 +768,9 @@ void ExplicitEngine::build_groups() {
   for_each_group_run(m, m.tetras, [&](std::int32_t part, std::span<const std::int32_t> run) {
     groups_.tetras.push_back(make_tetra_group(m, materials_, arena, part, run));
   });
+  for_each_group_run(m, m.bricks20, [&](std::int32_t part, std::span<const std::int32_t> run) {
+    groups_.bricks20.push_back(make_hex20_group(m, materials_, arena, part, run));
+  });
   for_each_group_run(m, m.springs, [&](std::int32_t part, std::span<const std::int32_t> run) {
     groups_.springs.push_back(make_spring_group(m, arena, part, run));
   });
@@ -778,7 +819,8 @@ void ExplicitEngine::visit_group_sums(std::int64_t flat, F&& f) const {
 // element): one pass over the entries, then a stable sort by region, so a badly numbered mesh (a group over
 // many chunks) costs no more.
 void ExplicitEngine::build_sum_regions() {
-  static_assert(8 * kGroupSize <= 65536, "entry codes 8 i + q must fit in 16 bits");
+  // q < 32: up to the 20 nodes of a quadratic brick
+  static_assert(32 * kGroupSize <= 65536, "entry codes 32 i + q must fit in 16 bits");
   const std::int64_t groups = group_count();
   const std::int64_t chunks = node_chunks().count();
   const std::int64_t region_nodes =
@@ -796,7 +838,7 @@ void ExplicitEngine::build_sum_regions() {
       for (std::size_t i = 0; i < static_cast<std::size_t>(g.count); ++i)
         for (std::size_t q = 0; q < static_cast<std::size_t>(nodes_per_element); ++q)
           entries.emplace_back(static_cast<std::int32_t>(g.conn[q * kGroupSize + i] / region_nodes),
-                               static_cast<std::uint16_t>(8 * i + q));
+                               static_cast<std::uint16_t>(32 * i + q));
       std::stable_sort(entries.begin(), entries.end(),
                        [](const auto& a, const auto& b) { return a.first < b.first; });
       auto& rs = group_regions[static_cast<std::size_t>(flat)];
@@ -817,8 +859,8 @@ void ExplicitEngine::build_sum_regions() {
 
 // Adds group `flat`'s nodal-force buffer to the nodes' element sums of its region regions_of(flat)[slot],
 // element by element and node by node of the element: called for each region's groups in group order
-// (shells, bricks, tetras, springs), so each node's sum is made in one fixed order. A degenerate quad
-// (n3 == n4) still has four slots; each carries its share.
+// (shells, bricks, tetras, 20-node bricks, springs, ...), so each node's sum is made in one fixed order. A
+// degenerate quad (n3 == n4) still has four slots; each carries its share.
 void ExplicitEngine::add_group_forces(std::int64_t flat, std::int32_t slot) {
   double* sums = element_sums_.data();
   const auto part = static_cast<std::size_t>(sum_part_begin_[static_cast<std::size_t>(flat)] + slot);
@@ -845,7 +887,7 @@ void ExplicitEngine::add_group_forces(std::int64_t flat, std::int32_t slot) {
         default: all(static_cast<std::size_t>(nodes_per_element));
       }
     } else {
-      for (; code != code_end; ++code) add(*code >> 3, *code & 7u);
+      for (; code != code_end; ++code) add(*code >> 5, *code & 31u);
     }
   });
 }
@@ -900,6 +942,10 @@ void run_kernel(TetraGroup& g, const NodeState& nodes, const std::vector<Materia
                 const CycleInfo& cyc) {
   tetra4_forces(g, nodes, materials[static_cast<std::size_t>(g.material)], cyc);
 }
+void run_kernel(Hex20Group& g, const NodeState& nodes, const std::vector<MaterialParams>& materials,
+                const CycleInfo& cyc) {
+  hex20_forces(g, nodes, materials[static_cast<std::size_t>(g.material)], cyc);
+}
 void run_kernel(SpringGroup& g, const NodeState& nodes, const std::vector<MaterialParams>&,
                 const CycleInfo& cyc) {
   if (g.props.type == 8)
@@ -943,6 +989,10 @@ StepRule step_rule(BrickGroup& g, const model::RunControls& c) {
 // switched by /DT/BRICK/CST (no small-strain form here).
 StepRule step_rule(TetraGroup&, const model::RunControls& c) {
   return {family_scale(c.brick, c), &c.brick, StepControl::Kind::Tetra, nullptr, false};
+}
+// 20-node bricks vote as bricks (/DT/BRICK scale); no /DT/BRICK/CST switch (no small-strain form here).
+StepRule step_rule(Hex20Group&, const model::RunControls& c) {
+  return {family_scale(c.brick, c), &c.brick, StepControl::Kind::Brick, nullptr, false};
 }
 // Springs vote with the global /DT scale (Radioss's DTFAC1(6)); no /DT/<family>/CST switch applies.
 StepRule step_rule(SpringGroup&, const model::RunControls& c) {
@@ -1140,8 +1190,10 @@ std::string ExplicitEngine::bad_element(double time, std::int64_t cycle) const {
                   " has no valid time step (its nodes met or its values are not finite)" + when +
                   "; the run stops";
         else
-          found = std::string(std::is_same_v<Group, BrickGroup> ? "brick " : "tetrahedron ") + id +
-                  " has a zero or negative volume (" + std::to_string(g.vol[k]) + ")" + when +
+          found = std::string(std::is_same_v<Group, BrickGroup>   ? "brick "
+                              : std::is_same_v<Group, Hex20Group> ? "20-node brick "
+                                                                  : "tetrahedron ") +
+                  id + " has a zero or negative volume (" + std::to_string(g.vol[k]) + ")" + when +
                   ": the mesh is inverted; the run stops";
       }
     }

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "solver/model/geometry.hpp"
+#include "solver/model/hex20_shape.hpp"
 
 namespace radx::model {
 
@@ -66,6 +67,19 @@ void for_each_nodal_mass(const Model& m,
     const double me =
         rho_of(m.tetras.part[e]) * std::max(0.0, tetra_volume(X(c[0]), X(c[1]), X(c[2]), X(c[3])));
     for (int k = 0; k < 4; ++k) fn(c[k], m.tetras.part[e], cell, 0.25 * me);
+  }
+  // 20-node bricks: m_e = rho V0 (V0 by the 3 x 3 x 3 rule), 1/64 to each corner and 7/96 to each mid-side
+  // node (OpenRadioss starter s20mass3.F; hex20_shape.hpp).
+  for (std::size_t e = 0; e < m.bricks20.size(); ++e, ++cell) {
+    if (!valid(m.bricks20, e)) continue;
+    const auto* c = &m.bricks20.conn[20 * e];
+    double x[20][3];
+    for (int k = 0; k < 20; ++k) {
+      const Vec3 p = X(c[k]);
+      for (int d = 0; d < 3; ++d) x[k][d] = p[d];
+    }
+    const double me = rho_of(m.bricks20.part[e]) * std::max(0.0, hex20_volume(x, hex20_starter_rule()));
+    for (int k = 0; k < 20; ++k) fn(c[k], m.bricks20.part[e], cell, hex20_mass_share(k) * me);
   }
   // Springs: their property's M (M L0 with Ileng 1), half on each of n1 and n2 (OpenRadioss starter
   // rmass.F); numbered after the mesh cells.

@@ -16,8 +16,9 @@ namespace radx::model {
 double shell_thickness(const Model& m, const ElementBlock& b, std::size_t e);
 
 // Calls fn(node, part, element_index_in_block_order, mass) for every lumped-mass contribution of every
-// valid element, in model cell order (4-node shells, 3-node shells, bricks, tetrahedra, then springs,
-// trusses and beams); `cell` numbers the elements that way. Elements with a missing node or part are skipped.
+// valid element, in model cell order (4-node shells, 3-node shells, bricks, tetrahedra, 20-node bricks, then
+// springs, trusses and beams); `cell` numbers the elements that way. Elements with a missing node or part are
+// skipped.
 void for_each_nodal_mass(
     const Model& m,
     const std::function<void(std::int32_t node, std::int32_t part, std::size_t cell, double mass)>& fn);

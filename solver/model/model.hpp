@@ -39,7 +39,8 @@ enum class ElementType : std::uint8_t {
   Tetra4 = 3,
   Spring2 = 4,
   Truss2 = 5,
-  Beam2 = 6
+  Beam2 = 6,
+  Brick20 = 7
 };
 [[nodiscard]] constexpr int nodes_per_element(ElementType t) {
   switch (t) {
@@ -50,6 +51,7 @@ enum class ElementType : std::uint8_t {
     case ElementType::Spring2: return 3;  // n1 n2 and the optional orientation node
     case ElementType::Truss2: return 2;
     case ElementType::Beam2: return 3;  // n1 n2 and the orientation node (kNone when blank)
+    case ElementType::Brick20: return 20;
   }
   return 0;
 }
@@ -563,7 +565,9 @@ struct TimeHistoryGroup {
   std::string title;
   ThKind kind = ThKind::Node;
   std::vector<std::string> variables;  // expanded (DEF replaced)
-  std::vector<std::int32_t> objects;   // dense indices of the objects of `kind`
+  // dense indices of the objects of `kind`; /TH/BRIC: a 20-node brick e is bricks.size() + e (Radioss keeps
+  // them in one solid table)
+  std::vector<std::int32_t> objects;
   // /TH/NODE: the skew (user id, 0 global axes) each object's vectors are written in, one per object;
   // empty for the other kinds.
   std::vector<std::int64_t> skews;
@@ -702,6 +706,9 @@ struct Model {
   // 4-node tetrahedra (/TETRA4), nodes as the deck gives them unless the starter renumbered an inverted one
   // (n2 and n4 swapped, as Radioss does) so that tetra_volume (geometry.hpp) is positive.
   ElementBlock tetras{ElementType::Tetra4, {}, {}, {}, {}, {}, {}};
+  // 20-node quadratic bricks (/BRIC20): the 8 corners then the 12 mid-side nodes, in Radioss's order
+  // (hex20_shape.hpp). Cells of the mesh after the tetrahedra.
+  ElementBlock bricks20{ElementType::Brick20, {}, {}, {}, {}, {}, {}};
   // /SPRING: 2-node springs (their parts have a /PROP/SPRING); conn[3 e + 2] is the optional third node
   // (orientation, kNone when blank). Not cells of the solid and shell mesh: element_count() leaves them out.
   ElementBlock springs{ElementType::Spring2, {}, {}, {}, {}, {}, {}};
@@ -744,9 +751,10 @@ struct Model {
   std::vector<double> node_mass;
   double total_mass = 0;
 
-  // Cells are numbered 4-node shells, 3-node shells, bricks, tetrahedra (model file, results, contact).
+  // Cells are numbered 4-node shells, 3-node shells, bricks, tetrahedra, 20-node bricks (model file,
+  // results, contact).
   [[nodiscard]] std::size_t element_count() const {
-    return shells.size() + shells3.size() + bricks.size() + tetras.size();
+    return shells.size() + shells3.size() + bricks.size() + tetras.size() + bricks20.size();
   }
 
   // Cells of the results files: the mesh cells above, then the springs, trusses and beams (VTK lines n1 n2).

@@ -1,7 +1,8 @@
 // Initial stable step estimate: min over elements of L / c. Bricks: L = V / largest face area,
 // c = sqrt((K + 4G/3) / rho); shells: L from area over the longest diagonal bounded below by the shortest
 // side, triangles: L = 2A / longest side, tetrahedra: L = the smallest height 3 V / largest face area, c =
-// sqrt(E / rho) (docs/theory/elements.md 3.3, 4.1, 4.2).
+// sqrt(E / rho) (docs/theory/elements.md 3.3, 4.1, 4.2); 20-node bricks: OpenRadioss's length of
+// hex20_length (hex20_shape.hpp) over the 3 x 3 x 3 points.
 #include "solver/model/stable_step.hpp"
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <limits>
 
 #include "solver/model/geometry.hpp"
+#include "solver/model/hex20_shape.hpp"
 
 namespace radx::model {
 
@@ -69,11 +71,12 @@ double triangle_length(const Vec3& x1, const Vec3& x2, const Vec3& x3) {
 StepEstimate estimate_stable_step(const Model& m) {
   StepEstimate best;
   double dt_min = std::numeric_limits<double>::infinity();
-  for (const ElementBlock* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras}) {
+  for (const ElementBlock* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras, &m.bricks20}) {
     const auto npe = static_cast<std::size_t>(b->npe());
     for (std::size_t e = 0; e < b->size(); ++e) {
-      const double c =
-          sound_speed(m, b->part[e], b->type == ElementType::Brick8 || b->type == ElementType::Tetra4);
+      const double c = sound_speed(m, b->part[e],
+                                   b->type == ElementType::Brick8 || b->type == ElementType::Tetra4 ||
+                                       b->type == ElementType::Brick20);
       if (!(c > 0)) continue;
       const std::int32_t* conn = &b->conn[e * npe];
       bool valid = true;
@@ -84,6 +87,13 @@ StepEstimate estimate_stable_step(const Model& m) {
         std::array<Vec3, 8> x{};
         for (std::size_t k = 0; k < 8; ++k) x[k] = node_at(m, conn[k]);
         l = brick_length(x);
+      } else if (b->type == ElementType::Brick20) {
+        double x[20][3];
+        for (std::size_t k = 0; k < 20; ++k) {
+          const Vec3 p = node_at(m, conn[k]);
+          for (std::size_t d = 0; d < 3; ++d) x[k][d] = p[d];
+        }
+        l = hex20_length(x, hex20_starter_rule());
       } else if (b->type == ElementType::Tetra4) {
         l = tetra_length(node_at(m, conn[0]), node_at(m, conn[1]), node_at(m, conn[2]), node_at(m, conn[3]));
       } else if (b->type == ElementType::Shell4 && conn[2] != conn[3]) {

@@ -150,7 +150,7 @@ CellValues cell_values(const ShellGroup& g, int i, const NodeState& s,
   return c;
 }
 
-// Element i of a brick or tetrahedron group (a tetrahedron's e_hg stays 0).
+// Element i of a brick, tetrahedron or 20-node brick group (e_hg stays 0 but for the 8-node bricks).
 template <class Solid>
 CellValues cell_values(const Solid& g, int i, const NodeState&, const std::vector<MaterialParams>&) {
   const auto k = static_cast<std::size_t>(i);

@@ -156,9 +156,25 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
         }
       }
     };
-    if (kind_ == K::Brick)
+    if (kind_ == K::Brick) {
       index(e.groups().bricks, [](const BrickGroup&) { return true; });
-    else if (kind_ == K::Spring)
+      // 20-node bricks are objects bricks.size() + e: their slots after the 8-node bricks' ones
+      const auto nb = m.bricks.size();
+      std::vector<std::pair<int, int>> eight;
+      eight.swap(where);
+      index(e.groups().bricks20, [](const Hex20Group&) { return true; });
+      quadratic_.assign(objects_.size(), 0);
+      for (std::size_t o = 0; o < objects_.size(); ++o) {
+        const auto el = static_cast<std::size_t>(objects_[o]);
+        if (el < nb) {
+          if (el < eight.size()) slots_[o] = eight[el];
+        } else {
+          quadratic_[o] = 1;
+          if (el - nb < where.size()) slots_[o] = where[el - nb];
+        }
+      }
+      return;
+    } else if (kind_ == K::Spring)
       index(e.groups().springs, [](const SpringGroup&) { return true; });
     else if (kind_ == K::Truss)
       index(e.groups().trusses, [](const TrussGroup&) { return true; });
@@ -392,6 +408,10 @@ void ThGroupSampler::sample_bricks(const ExplicitEngine& e, const CycleReport& r
   for (std::size_t o = 0; o < objects_.size(); ++o) {
     const auto [gi, i] = slots_[o];
     if (gi < 0) continue;
+    if (quadratic_[o]) {
+      sample_brick20(e, r, put, o);
+      continue;
+    }
     const auto& g = e.groups().bricks[static_cast<std::size_t>(gi)];
     const auto k = static_cast<std::size_t>(i);
     const char* names[6] = {"SX", "SY", "SZ", "SXY", "SYZ", "SXZ"};
@@ -416,6 +436,37 @@ void ThGroupSampler::sample_bricks(const ExplicitEngine& e, const CycleReport& r
     put(o, "VY", v[1]);
     put(o, "VZ", v[2]);
   }
+}
+
+// A 20-node brick under /TH/BRIC: the volume-weighted mean stress of its points, the mean plastic strain, and
+// the velocity at its centre, sum_a N_a(0) v_a = (sum of the mid-side nodes' - sum of the corners') / 4.
+void ThGroupSampler::sample_brick20(const ExplicitEngine& e, const CycleReport& r, const ThPut& put,
+                                    std::size_t o) const {
+  const auto& s = e.nodes();
+  const double h = 0.5 * r.dt1;
+  const auto [gi, i] = slots_[o];
+  const auto& g = e.groups().bricks20[static_cast<std::size_t>(gi)];
+  const auto k = static_cast<std::size_t>(i);
+  const char* names[6] = {"SX", "SY", "SZ", "SXY", "SYZ", "SXZ"};
+  for (std::size_t c = 0; c < 6; ++c) put(o, names[c], g.sig[c * kGroupSize + k]);
+  double v[3] = {0, 0, 0};
+  for (std::size_t c = 0; c < 20; ++c) {
+    const auto n = static_cast<std::size_t>(g.conn[c * kGroupSize + k]);
+    const double w = c < 8 ? -0.25 : 0.25;
+    v[0] += w * (s.vx[n] + h * s.ax[n]);
+    v[1] += w * (s.vy[n] + h * s.ay[n]);
+    v[2] += w * (s.vz[n] + h * s.az[n]);
+  }
+  put(o, "OFF", g.off[k]);
+  put(o, "IE", g.vol0[k] > 0 ? g.e_int[k] / g.vol0[k] : 0.0);
+  put(o, "DENS", g.rho[k]);
+  put(o, "BULK", g.q[k]);
+  put(o, "VOL", g.vol[k]);
+  put(o, "PLAS", g.eps_p[k]);
+  put(o, "PLSR", g.rate[k]);
+  put(o, "VX", v[0]);
+  put(o, "VY", v[1]);
+  put(o, "VZ", v[2]);
 }
 
 void ThGroupSampler::sample_rigid_bodies(const ExplicitEngine& e, const CycleReport& r,

@@ -92,6 +92,7 @@ class ThGroupSampler {
   void sample_interfaces(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
   void sample_shells(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
   void sample_bricks(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  void sample_brick20(const ExplicitEngine& e, const CycleReport& r, const ThPut& put, std::size_t o) const;
   void sample_rigid_bodies(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
   void sample_sections(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
   void sample_springs(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
@@ -108,6 +109,8 @@ class ThGroupSampler {
   // Elements: for each object, its (group, slot) in the engine's element groups ({-1, -1}: in none).
   // Rigid bodies: for each object, its index in the bodies formed in this run (-1: switched off).
   std::vector<std::pair<int, int>> slots_;
+  std::vector<std::uint8_t>
+      quadratic_;  // /TH/BRIC: 1 for an object that is a 20-node brick (slot in bricks20)
   std::vector<int> bodies_;
   std::vector<std::int32_t> skews_;   // nodes: the dense skew index of each object (kNone: global axes)
   std::vector<SectionSum> sections_;  // sections: one per object

@@ -30,6 +30,7 @@ VTK_TYPES = {
     10: ("tetra", 4, 6, False),
     12: ("hexahedron", 8, 9, False),
     13: ("wedge", 6, 8, False),
+    25: ("quadratic hexahedron", 20, 48, False),
 }
 
 

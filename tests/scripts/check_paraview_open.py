@@ -33,7 +33,8 @@ def node_bounds(deck):
 
 def main():
     deck, model = sys.argv[1:3]
-    nodes, quads, tris, bricks, tetras = count(deck)
+    nodes, quads, tris, bricks, tetras, bricks20 = count(deck)
+    cells = quads + tris + bricks + tetras + bricks20
     reader = OpenDataFile(model)
     reader.UpdatePipeline()
     info = reader.GetDataInformation()
@@ -43,8 +44,8 @@ def main():
         failures.append(f"ParaView picked {kind}, expected its VTKHDF reader")
     if info.GetNumberOfPoints() != nodes:
         failures.append(f"points {info.GetNumberOfPoints()} != deck nodes {nodes}")
-    if info.GetNumberOfCells() != quads + tris + bricks + tetras:
-        failures.append(f"cells {info.GetNumberOfCells()} != deck elements {quads + tris + bricks + tetras}")
+    if info.GetNumberOfCells() != cells:
+        failures.append(f"cells {info.GetNumberOfCells()} != deck elements {cells}")
     for name in ("node_id",):
         if name not in reader.PointData.keys():
             failures.append(f"point array {name} missing")

@@ -14,7 +14,7 @@ import sys
 
 
 def count(deck):
-    nodes = quads = tris = bricks = tetras = 0
+    nodes = quads = tris = bricks = tetras = bricks20_lines = 0
     block = None
     for line in open(deck, encoding="ascii", errors="replace"):
         line = line.rstrip("\r\n")
@@ -22,7 +22,7 @@ def count(deck):
             continue
         if line.startswith("/"):
             key = line.split("/")[1].strip().upper()
-            block = key if key in ("NODE", "SHELL", "SH3N", "BRICK", "TETRA4") else None
+            block = key if key in ("NODE", "SHELL", "SH3N", "BRICK", "TETRA4", "BRIC20") else None
             continue
         if block is None or not line.strip():
             continue
@@ -40,7 +40,9 @@ def count(deck):
             bricks += 1
         elif block == "TETRA4":
             tetras += 1
-    return nodes, quads, tris, bricks, tetras
+        elif block == "BRIC20":  # three lines per element
+            bricks20_lines += 1
+    return nodes, quads, tris, bricks, tetras, bricks20_lines // 3
 
 
 def main():
@@ -48,13 +50,16 @@ def main():
         print(__doc__)
         return 2
     deck, model = sys.argv[1:]
-    nodes, quads, tris, bricks, tetras = count(deck)
-    types = ",".join(f"{t}:{n}" for t, n in ((9, quads), (5, tris), (12, bricks), (10, tetras)) if n)
+    nodes, quads, tris, bricks, tetras, bricks20 = count(deck)
+    types = ",".join(f"{t}:{n}" for t, n in ((9, quads), (5, tris), (12, bricks), (10, tetras), (25, bricks20))
+                     if n)
     checker = os.path.join(os.path.dirname(os.path.abspath(__file__)), "check_model_file.py")
-    cmd = [sys.executable, checker, model, "--nodes", str(nodes), "--cells", str(quads + tris + bricks + tetras)]
+    cmd = [sys.executable, checker, model, "--nodes", str(nodes), "--cells",
+           str(quads + tris + bricks + tetras + bricks20)]
     if types:
         cmd += ["--types", types]
-    print("deck counts: nodes", nodes, "quads", quads, "triangles", tris, "bricks", bricks, "tetrahedra", tetras)
+    print("deck counts: nodes", nodes, "quads", quads, "triangles", tris, "bricks", bricks, "tetrahedra", tetras,
+          "20-node bricks", bricks20)
     return subprocess.call(cmd)
 
 

@@ -375,9 +375,8 @@ TEST_CASE(
   CHECK(warned[403].size() == 1);
   const auto text = b->report();
   CHECK(text.find("4-node shell group 1 includes itself through /GRSHEL/GRSHEL") != std::string::npos);
-  CHECK(
-      text.find("brick 99 does not exist: no /BRICK or /TETRA4 line defines it (listed in brick group 3)") !=
-      std::string::npos);
+  CHECK(text.find("brick 99 does not exist: no /BRICK, /TETRA4 or /BRIC20 line defines it (listed in brick "
+                  "group 3)") != std::string::npos);
   CHECK(text.find("there is no 3-node shell -21") != std::string::npos);
 }
 

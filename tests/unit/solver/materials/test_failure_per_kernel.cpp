@@ -1,5 +1,5 @@
 // Failure wiring of the kernels QEPH (Ishell 24), QBAT (Ishell 12), HEPH (Isolid 24), the fully integrated
-// brick (Isolid 14) and the tetrahedron with law 36 Eps_p_max and LAW2 + /FAIL/JOHNSON,
+// brick (Isolid 14), the tetrahedron and the 20-node brick with law 36 Eps_p_max and LAW2 + /FAIL/JOHNSON,
 // each driven in tension by imposed nodal velocities on fixed nodes (a constant strain increment per cycle),
 // against the rules written at the top of solver/materials/fail_johnson.cpp and
 // solver/elements/shell/shell_section.hpp:
@@ -21,6 +21,7 @@
 #include "solver/engine/node_state.hpp"
 #include "solver/materials/material_point.hpp"
 #include "solver/model/geometry.hpp"
+#include "solver/model/hex20_shape.hpp"
 
 using radx::model::Function;
 using radx::model::Material;
@@ -150,13 +151,14 @@ double max_abs(std::span<const double> v) {
 
 // ---- solids -------------------------------------------------------------------------------------------
 
-enum class Solid { OnePoint, Heph, Full14, Tetra };
+enum class Solid { OnePoint, Heph, Full14, Tetra, Hex20 };
 const char* name(Solid k) {
   switch (k) {
     case Solid::OnePoint: return "one-point brick (Isolid 1)";
     case Solid::Heph: return "HEPH (Isolid 24)";
     case Solid::Full14: return "fully integrated (Isolid 14)";
     case Solid::Tetra: return "tetra4";
+    case Solid::Hex20: return "20-node brick (Isolid 16)";
   }
   return "";
 }
@@ -212,6 +214,36 @@ std::vector<SolidRec> drive_solid(Solid kind, const MaterialParams& mat, int cyc
       tetra4_forces(g, ns, mat, cyc);
       out.push_back(
           {g.off[0], g.eps_p[0], g.dmg[0], gap(g.dmg[0], g.eps_p[0]), g.dmg[0], f_max(g.nodal_force)});
+    }
+    return out;
+  }
+  if (kind == Solid::Hex20) {
+    // The unit cube's 20 nodes (corners, then the mid-side nodes in /BRIC20's order), 2 x 2 x 2 points.
+    std::vector<P3> pts;
+    double x0[20][3];
+    for (std::size_t k = 0; k < 20; ++k) {
+      for (std::size_t d = 0; d < 3; ++d) x0[k][d] = 0.5 * (1 + radx::model::kHex20Nat[k][d]);
+      pts.push_back({x0[k][0], x0[k][1], x0[k][2]});
+    }
+    const NodeState ns = nodes(pts);
+    Hex20Group g;
+    g.allocate(1);
+    for (std::size_t k = 0; k < 20; ++k) g.conn[k * G] = static_cast<std::int32_t>(k);
+    hex20_init_geometry(g, 0, x0);
+    g.rho[0] = mat.rho0;
+    for (int n = 0; n < cycles && g.off[0] > 0; ++n) {
+      hex20_forces(g, ns, mat, cyc);
+      SolidRec r;
+      r.off = g.off[0];
+      r.dmg_elem = g.dmg[0];
+      for (std::size_t p = 0; p < 8; ++p) {
+        const double e = g.eps_p_p[p * G], d = g.dmg_p[p * G];
+        r.eps_p = std::max(r.eps_p, e);
+        r.dmg = std::max(r.dmg, d);
+        r.dmg_gap = std::max(r.dmg_gap, gap(d, e));
+      }
+      r.f_max = f_max(g.nodal_force);
+      out.push_back(r);
     }
     return out;
   }
@@ -399,11 +431,13 @@ TEST_CASE("failwire: QEPH and QBAT pass the element strain rate to FAIL/JOHNSON'
     }
 }
 
-TEST_CASE("failwire: HEPH, Isolid 14 and tetra4 with law 36 Eps_p_max: 0.8 at the trigger, 0.8^k, deleted",
-          "[failwire][brick][tetra]") {
+TEST_CASE(
+    "failwire: HEPH, Isolid 14, tetra4 and the 20-node brick with law 36 Eps_p_max: 0.8 at the trigger, "
+    "0.8^k, deleted",
+    "[failwire][brick][tetra][hex20]") {
   const MaterialParams& mat = law36();
   // One section per kernel: a failed REQUIRE ends only that kernel's run.
-  for (Solid kind : {Solid::Heph, Solid::Full14, Solid::Tetra}) DYNAMIC_SECTION(name(kind)) {
+  for (Solid kind : {Solid::Heph, Solid::Full14, Solid::Tetra, Solid::Hex20}) DYNAMIC_SECTION(name(kind)) {
       const auto rec = drive_solid(kind, mat, 400);
       const std::size_t t = first_below_one(rec);
       REQUIRE(t > 0);
@@ -417,11 +451,13 @@ TEST_CASE("failwire: HEPH, Isolid 14 and tetra4 with law 36 Eps_p_max: 0.8 at th
     }
 }
 
-TEST_CASE("failwire: HEPH, Isolid 14 and tetra4 with LAW2 + FAIL/JOHNSON: D = eps_p / D1, then the decay",
-          "[failwire][brick][tetra]") {
+TEST_CASE(
+    "failwire: HEPH, Isolid 14, tetra4 and the 20-node brick with LAW2 + FAIL/JOHNSON: D = eps_p / D1, "
+    "then the decay",
+    "[failwire][brick][tetra][hex20]") {
   const MaterialParams mat = law2_johnson();
   // One section per kernel: a failed REQUIRE ends only that kernel's run.
-  for (Solid kind : {Solid::Heph, Solid::Full14, Solid::Tetra}) DYNAMIC_SECTION(name(kind)) {
+  for (Solid kind : {Solid::Heph, Solid::Full14, Solid::Tetra, Solid::Hex20}) DYNAMIC_SECTION(name(kind)) {
       const auto rec = drive_solid(kind, mat, 600);
       const std::size_t t = first_below_one(rec);
       REQUIRE(t > 0);
@@ -539,7 +575,8 @@ TEST_CASE("failwire: a failing solid's forces take the new factor in the same cy
   // consecutive cycles differs by one cycle's hardening (H d_eps_p ~ 0.1 MPa on ~220 MPa, 5e-4 relative), so
   // the force ratio of two cycles is the ratio of their factors within 2e-3.
   const MaterialParams mat = law2_johnson();
-  for (Solid kind : {Solid::OnePoint, Solid::Heph, Solid::Full14, Solid::Tetra}) DYNAMIC_SECTION(name(kind)) {
+  for (Solid kind : {Solid::OnePoint, Solid::Heph, Solid::Full14, Solid::Tetra, Solid::Hex20})
+    DYNAMIC_SECTION(name(kind)) {
       const auto rec = drive_solid(kind, mat, 600);
       const std::size_t t = first_below_one(rec);
       REQUIRE(t > 0);
