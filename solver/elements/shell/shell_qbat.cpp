@@ -10,10 +10,19 @@
 // Warping terms are not taken (flat element) [inferred].
 // At each Gauss point g (xi, eta = +-1/sqrt(3), weight det J(g); shell_quad_mindlin.hpp):
 //   de(g) = rows(g) v dt1 with the second-order membrane correction of 1.3 at the point's slopes
-//   (quad_second_order) (membrane exx eyy gxy, curvature kxx kyy kxy, transverse shear gyz gzx from the
+//   (quad_second_order) (membrane exx eyy, curvature kxx kyy kxy, transverse shear gyz gzx from the
 //   assumed field tied at the edge midpoints [inferred to be the Bathe-Dvorkin/Batoz Q4gamma field]);
+//   the membrane shear gxy is the centre's, rows(0) v dt1, at every Gauss point (assumed membrane shear
+//   strain: cbaforc3.F calls CBADEFSH, "use only the constant part", and the forces CBAFORCT with the
+//   centre rows, whenever Idrill is 0, which radx always runs). Taken at the Gauss points, gxy would lock
+//   in-plane bending: the bending mode u = c x y of an a x b element would store the shear energy
+//   G c^2 b a^3/24 on top of the bending's E/(1 - nu^2) c^2 a b^3/24 (a square: 1.48 times the
+//   beam's E I, against 1.10 with the centre's shear);
 //   the section (shell_section.hpp: 1.4, 1.8, 6.3, 6.5) updates FOR(g), MOM(g) at its N points;
-//   f_k = sum_g det J(g) rows(g)^T (N(g), M(g), Q(g)) times OFF, N = FOR t, M = MOM t^2, Q = FOR_shear t;
+//   f_k = sum_g det J(g) rows(g)^T (N(g), M(g), Q(g)) times OFF, N = FOR t, M = MOM t^2, Q = FOR_shear t,
+//   except that Nxy(g) acts through rows(0): the exact transpose of the constant gxy, so that the work
+//   of the forces is the energy below [radx: OpenRadioss applies the plain mean of the four points' Nxy
+//   with the area; the same on a parallelogram, where the det J(g) are equal];
 //   E_int += sum_g 1/2 det J(g) t [(OFF_old FOR_old + OFF FOR_new).de_m + t (OFF_old MOM_old + OFF
 //   MOM_new).dkappa] (1.5 summed over the points).
 // Full 2 x 2 integration of the bilinear field has no zero-energy mode besides the drilling rotation (no
@@ -60,6 +69,7 @@ struct QbatBlock {
   double dem[4][5][kBlock], dk[4][3][kBlock];
   double for_old[4][5][kBlock], for_new[4][5][kBlock], mom_old[4][3][kBlock], mom_new[4][3][kBlock];
   double detj[4][kBlock];
+  double nx0[4][kBlock], ny0[4][kBlock];  // the centre rows N_k,x, N_k,y of the membrane shear
   double dthick[kBlock], w_plastic[kBlock], eps_p_max[kBlock], fail_now[kBlock], unstable[kBlock];
   shell_detail::SectionBlock<kBlock> sec;
 };
@@ -81,6 +91,8 @@ struct QbatBlock {
     const QuadRows r0 = quad_rows(lx, ly, 0.0, 0.0);
     bk.area[j] = 4.0 * r0.detj;
     quad_rates(r0, vx, vy, vz, rx, ry, e, kap);
+    const double gxy0 = e[2];  // the assumed membrane shear of every Gauss point
+    for (int n = 0; n < 4; ++n) bk.nx0[n][j] = r0.nx[n], bk.ny0[n][j] = r0.ny[n];
     const double eq = dt1 > 0
                           ? std::sqrt(equivalent_rate_arg(e[0] * dt1, e[1] * dt1, e[2] * dt1, kap[0] * dt1,
                                                           kap[1] * dt1, kap[2] * dt1, g.thick[ii])) /
@@ -95,6 +107,7 @@ struct QbatBlock {
       bk.detj[gp][j] = r.detj;
       quad_rates(r, vx, vy, vz, rx, ry, e, kap);
       quad_second_order(r, vz, dt1, e);
+      e[2] = gxy0;
       for (int q = 0; q < 5; ++q) bk.dem[gp][q][j] = e[q] * dt1;
       for (int q = 0; q < 3; ++q) bk.dk[gp][q][j] = kap[q] * dt1;
     }
@@ -155,6 +168,7 @@ struct QbatBlock {
   const double t = bk.t[j], area = bk.area[j];
   double de_int = 0;
   const double ot = off * t, ot2 = off * t * t;
+  double nxy_sum = 0;  // sum_g det J(g) Nxy(g): the membrane shear force, through the centre rows
   for (int gp = 0; gp < 4; ++gp) {
     const double w = bk.detj[gp][j];
     double dem[5], dk[3];
@@ -166,12 +180,17 @@ struct QbatBlock {
                                      bk.mom_new[gp], j, dem, dk, fv);
     if (off <= 0.0) continue;
     const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
-    const double n[5] = {ot * (bk.for_new[gp][0][j] + fv[0]), ot * (bk.for_new[gp][1][j] + fv[1]),
-                         ot * (bk.for_new[gp][2][j] + fv[2]), ot * bk.for_new[gp][3][j],
-                         ot * bk.for_new[gp][4][j]};
+    const double n[5] = {ot * (bk.for_new[gp][0][j] + fv[0]), ot * (bk.for_new[gp][1][j] + fv[1]), 0.0,
+                         ot * bk.for_new[gp][3][j], ot * bk.for_new[gp][4][j]};
+    nxy_sum += w * ot * (bk.for_new[gp][2][j] + fv[2]);
     const double m[3] = {ot2 * bk.mom_new[gp][0][j], ot2 * bk.mom_new[gp][1][j], ot2 * bk.mom_new[gp][2][j]};
     quad_add_forces(r, w, n, m, fx, fy, fz, mx, my);
   }
+  if (off > 0.0)
+    for (int k = 0; k < 4; ++k) {
+      fx[k] += nxy_sum * bk.ny0[k][j];
+      fy[k] += nxy_sum * bk.nx0[k][j];
+    }
   return de_int;
 }
 

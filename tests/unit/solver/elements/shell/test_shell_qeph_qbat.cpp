@@ -446,3 +446,35 @@ TEST_CASE("QEPH and QBAT energy: internal plus stabilisation energy equals the w
       CHECK(close(e_int + e_hg, work, 1e-12));
     }
 }
+
+TEST_CASE("QBAT in-plane bending: the membrane shear is the centre's, so the bending mode does not lock",
+          "[shell][qbat]") {
+  // The in-plane bending mode u = c (x - a/2)(y - b/2), v = 0 of an a x b rectangle (nodal vx = c a b/4 h_k,
+  // h = (1, -1, 1, -1)), imposed in one step from rest, elastic. Its strains are exx = c (y - b/2), eyy = 0
+  // and gxy = c (x - a/2), which is 0 at the centre. QBAT takes the membrane shear at the centre
+  // (OpenRadioss's assumed membrane shear of cbaforc3.F with Idrill 0), so the Gauss points hold no shear
+  // stress and the energy is the bending part alone, integrated exactly by the 2 x 2 rule:
+  //   E = 1/2 t E/(1 - nu^2) (c dt)^2 int (y - b/2)^2 dA = 1/2 t E/(1 - nu^2) (c dt)^2 a b^3/12.
+  // With gxy taken at the Gauss points (in-plane shear locking) the shear would add 1/2 t G (c dt)^2 b
+  // a^3/12, 1.4 times the bending part for this 20 x 10 element: the tolerance 1e-9 is round-off of the
+  // material update, far below that.
+  const double young = 210000, nu = 0.3, rho = 7.85e-9, a = 20, b = 10, t = 1.5, c = 50, dt = 1e-7;
+  const std::vector<Vec3> xyz = {{0, 0, 0}, {a, 0, 0}, {a, b, 0}, {0, b, 0}};
+  for (int points : {0, 5}) {
+    INFO("through-thickness points " << points);
+    NodeState s = make_nodes(xyz);
+    for (std::size_t k = 0; k < 4; ++k) s.vx[k] = c * (s.x[k] - 0.5 * a) * (s.y[k] - 0.5 * b);
+    ShellGroup g = make_group(ShellKernel::Qbat, {{0, 1, 2, 3}}, t, points);
+    run(g, s, elastic(young, nu, rho), dt);
+    for (int gp = 0; gp < 4; ++gp)
+      for (int p = 0; p < std::max(points, 1); ++p) CHECK(std::abs(state(g, gp, p, 2, 0)) <= 1e-9);
+    const double expected = 0.5 * t * young / (1 - nu * nu) * (c * dt) * (c * dt) * a * b * b * b / 12.0;
+    CHECK(close(g.e_int[0], expected, 1e-9));
+    // The nodal forces are the transpose of the same strains: their power on the mode's velocities is twice
+    // the energy over the step (the stress grew linearly from 0), E = 1/2 (f . v) dt with f = -buffer.
+    const auto f = assemble(g, s.n);
+    double power = 0;
+    for (std::size_t k = 0; k < 4; ++k) power += -f[k][0] * s.vx[k];
+    CHECK(close(0.5 * power * dt, expected, 1e-9));
+  }
+}
