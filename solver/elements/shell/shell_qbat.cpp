@@ -7,7 +7,18 @@
 // structure; what is our interpretation is marked [inferred].
 //
 // Frame and local coordinates: shell_frame.hpp (1.2), rebuilt every cycle; stresses stay in that frame.
-// Warping terms are not taken (flat element) [inferred].
+// Warp: the rows are those of the element projected on its mean plane, but the membrane rates take the
+//   warp z_k of the nodes off that plane (z_k = +-Z h_k, h = (1, -1, 1, -1)): with the slopes z,x = sum
+//   N_k,x z_k, z,y and w,x = sum N_k,x vz_k, w,y at the point,
+//     exx += z,x w,x,  eyy += z,y w,y,  gxy += z,x w,y + z,y w,x,
+//   the in-plane part of the surface's covariant rate 1/2 (g_a . v,b + g_b . v,a) once g_a = g_a(plane) +
+//   z,a e3, which makes every rigid motion strain-free. Without it a rigid rotation of rate Om about an
+//   in-plane axis gives the warped nodes the in-plane velocities Om z_k, an h pattern that the Gauss points
+//   of an a x a element read as exx, eyy = +-Om Z 2/(sqrt(3) a): a warped element turning in a fold yields
+//   where it does not deform (OpenRadioss's cbadef.F takes the nodes' velocities in the tangent frame of
+//   each Gauss point of a warped element, which is free of it [read; our first-order equivalent]).
+//   The forces carry the transpose: fz_k += det J(g) (Nxx z,x N_k,x + Nyy z,y N_k,y), the shear's through
+//   the centre rows.
 // At each Gauss point g (xi, eta = +-1/sqrt(3), weight det J(g); shell_quad_mindlin.hpp):
 //   de(g) = rows(g) v dt1 with the second-order membrane correction of 1.3 at the point's slopes
 //   (quad_second_order) (membrane exx eyy, curvature kxx kyy kxy, transverse shear gyz gzx from the
@@ -70,6 +81,7 @@ struct QbatBlock {
   double for_old[4][5][kBlock], for_new[4][5][kBlock], mom_old[4][3][kBlock], mom_new[4][3][kBlock];
   double detj[4][kBlock];
   double nx0[4][kBlock], ny0[4][kBlock];  // the centre rows N_k,x, N_k,y of the membrane shear
+  double zx0[kBlock], zy0[kBlock], zx[4][kBlock], zy[4][kBlock];  // warp slopes z,x z,y: centre, points
   double dthick[kBlock], w_plastic[kBlock], eps_p_max[kBlock], fail_now[kBlock], unstable[kBlock];
   shell_detail::SectionBlock<kBlock> sec;
 };
@@ -90,7 +102,29 @@ struct QbatBlock {
     double e[5], kap[3];
     const QuadRows r0 = quad_rows(lx, ly, 0.0, 0.0);
     bk.area[j] = 4.0 * r0.detj;
+    // Warp: the nodes' heights off the mean plane through their centroid (z1 = z3 and z2 = z4, since e3 is
+    // normal to both diagonals), and the membrane terms z,x w,x, z,y w,y, z,x w,y + z,y w,x at a point.
+    double lz[4], zc = 0;
+    for (int n = 0; n < 4; ++n) {
+      lz[n] = bk.fr.e3[0][j] * (bk.nb.x[n][j] - bk.nb.x[0][j]) +
+              bk.fr.e3[1][j] * (bk.nb.y[n][j] - bk.nb.y[0][j]) +
+              bk.fr.e3[2][j] * (bk.nb.z[n][j] - bk.nb.z[0][j]);
+      zc += 0.25 * lz[n];
+    }
+    for (int n = 0; n < 4; ++n) lz[n] -= zc;
+    auto add_warp = [&lz, &vz](const QuadRows& r, double rate[5], double& zx, double& zy) {
+      double wx = 0, wy = 0;
+      zx = zy = 0;
+      for (int n = 0; n < 4; ++n) {
+        zx += r.nx[n] * lz[n], zy += r.ny[n] * lz[n];
+        wx += r.nx[n] * vz[n], wy += r.ny[n] * vz[n];
+      }
+      rate[0] += zx * wx;
+      rate[1] += zy * wy;
+      rate[2] += zx * wy + zy * wx;
+    };
     quad_rates(r0, vx, vy, vz, rx, ry, e, kap);
+    add_warp(r0, e, bk.zx0[j], bk.zy0[j]);
     const double gxy0 = e[2];  // the assumed membrane shear of every Gauss point
     for (int n = 0; n < 4; ++n) bk.nx0[n][j] = r0.nx[n], bk.ny0[n][j] = r0.ny[n];
     const double eq = dt1 > 0
@@ -106,6 +140,7 @@ struct QbatBlock {
       const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
       bk.detj[gp][j] = r.detj;
       quad_rates(r, vx, vy, vz, rx, ry, e, kap);
+      add_warp(r, e, bk.zx[gp][j], bk.zy[gp][j]);
       quad_second_order(r, vz, dt1, e);
       e[2] = gxy0;
       for (int q = 0; q < 5; ++q) bk.dem[gp][q][j] = e[q] * dt1;
@@ -185,11 +220,13 @@ struct QbatBlock {
     nxy_sum += w * ot * (bk.for_new[gp][2][j] + fv[2]);
     const double m[3] = {ot2 * bk.mom_new[gp][0][j], ot2 * bk.mom_new[gp][1][j], ot2 * bk.mom_new[gp][2][j]};
     quad_add_forces(r, w, n, m, fx, fy, fz, mx, my);
+    for (int k = 0; k < 4; ++k) fz[k] += w * (n[0] * bk.zx[gp][j] * r.nx[k] + n[1] * bk.zy[gp][j] * r.ny[k]);
   }
   if (off > 0.0)
     for (int k = 0; k < 4; ++k) {
       fx[k] += nxy_sum * bk.ny0[k][j];
       fy[k] += nxy_sum * bk.nx0[k][j];
+      fz[k] += nxy_sum * (bk.zx0[j] * bk.ny0[k][j] + bk.zy0[j] * bk.nx0[k][j]);
     }
   return de_int;
 }
