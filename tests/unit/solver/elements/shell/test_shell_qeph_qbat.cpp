@@ -118,6 +118,31 @@ const char* name(ShellKernel k) {
   return k == ShellKernel::Qbat ? "QBAT" : "QEPH";
 }
 
+// The rigid velocity field v = w x (X - X0) on the nodes, with the nodes' angular velocity w.
+void rigid_rotation(NodeState& s, const Vec3& w, const Vec3& x0) {
+  for (std::size_t k = 0; k < s.n; ++k) {
+    const Vec3 r = {s.x[k] - x0[0], s.y[k] - x0[1], s.z[k] - x0[2]};
+    s.vx[k] = w[1] * r[2] - w[2] * r[1];
+    s.vy[k] = w[2] * r[0] - w[0] * r[2];
+    s.vz[k] = w[0] * r[1] - w[1] * r[0];
+    s.wx[k] = w[0], s.wy[k] = w[1], s.wz[k] = w[2];
+  }
+}
+
+// A warped quad: the square 10 x 10 with its nodes 0.5 above and below the mean plane in the pattern h =
+// (1, -1, 1, -1) (the only warp four nodes can have), tilted about x by 30 degrees.
+std::vector<Vec3> warped_quad() {
+  const double c = std::cos(0.5235987755982988), sn = std::sin(0.5235987755982988);
+  const double h[4] = {1, -1, 1, -1};
+  std::vector<Vec3> xyz;
+  int k = 0;
+  for (const auto& p : std::vector<std::array<double, 2>>{{0, 0}, {10, 0}, {10, 10}, {0, 10}}) {
+    const double z = 0.5 * h[k++];
+    xyz.push_back({p[0], p[1] * c - z * sn, p[1] * sn + z * c});
+  }
+  return xyz;
+}
+
 }  // namespace
 
 TEST_CASE("QEPH and QBAT membrane patch: constant strain gives the constant stress on a distorted mesh",
@@ -253,13 +278,7 @@ TEST_CASE("QEPH and QBAT rigid-body rotation gives no strain, no force and no st
                           << about_normal);
         const Vec3 w = about_normal ? Vec3{0.0, -400.0 * sn, 400.0 * c} : Vec3{300.0, -200.0, 500.0};
         NodeState s = make_nodes(xyz);
-        for (std::size_t k = 0; k < 4; ++k) {
-          const Vec3 r = {s.x[k] - x0[0], s.y[k] - x0[1], s.z[k] - x0[2]};
-          s.vx[k] = w[1] * r[2] - w[2] * r[1];
-          s.vy[k] = w[2] * r[0] - w[0] * r[2];
-          s.vz[k] = w[0] * r[1] - w[1] * r[0];
-          s.wx[k] = w[0], s.wy[k] = w[1], s.wz[k] = w[2];
-        }
+        rigid_rotation(s, w, x0);
         ShellGroup g = make_group(kernel, {{0, 1, 2, 3}}, t, points);
         const double wn = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
         const double sscale = young * wn * dt;  // stress of a strain of one rotation increment
@@ -479,20 +498,6 @@ TEST_CASE("QBAT in-plane bending: the membrane shear is the centre's, so the ben
   }
 }
 
-// A warped quad: the square 10 x 10 with its nodes 0.5 above and below the mean plane in the pattern h =
-// (1, -1, 1, -1) (the only warp four nodes can have), tilted about x by 30 degrees.
-std::vector<Vec3> warped_quad() {
-  const double c = std::cos(0.5235987755982988), sn = std::sin(0.5235987755982988);
-  const double h[4] = {1, -1, 1, -1};
-  std::vector<Vec3> xyz;
-  int k = 0;
-  for (const auto& p : std::vector<std::array<double, 2>>{{0, 0}, {10, 0}, {10, 10}, {0, 10}}) {
-    const double z = 0.5 * h[k++];
-    xyz.push_back({p[0], p[1] * c - z * sn, p[1] * sn + z * c});
-  }
-  return xyz;
-}
-
 TEST_CASE("QBAT rigid-body rotation of a warped element gives no membrane strain", "[shell][qbat]") {
   // v = w x (X - X0) on the warped quad. Projected on the mean plane, the rotation about the in-plane axes
   // gives the warped nodes the in-plane velocities w z_k, an h pattern that the Gauss points would read as
@@ -508,13 +513,7 @@ TEST_CASE("QBAT rigid-body rotation of a warped element gives no membrane strain
     INFO("through-thickness points " << points);
     const Vec3 w = {300.0, -200.0, 500.0};
     NodeState s = make_nodes(xyz);
-    for (std::size_t k = 0; k < 4; ++k) {
-      const Vec3 r = {s.x[k] - x0[0], s.y[k] - x0[1], s.z[k] - x0[2]};
-      s.vx[k] = w[1] * r[2] - w[2] * r[1];
-      s.vy[k] = w[2] * r[0] - w[0] * r[2];
-      s.vz[k] = w[0] * r[1] - w[1] * r[0];
-      s.wx[k] = w[0], s.wy[k] = w[1], s.wz[k] = w[2];
-    }
+    rigid_rotation(s, w, x0);
     ShellGroup g = make_group(ShellKernel::Qbat, {{0, 1, 2, 3}}, t, points);
     const double wn = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
     for (int cycle = 0; cycle < 3; ++cycle) run(g, s, mat, dt);
