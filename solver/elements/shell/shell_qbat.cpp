@@ -7,13 +7,33 @@
 // structure; what is our interpretation is marked [inferred].
 //
 // Frame and local coordinates: shell_frame.hpp (1.2), rebuilt every cycle; stresses stay in that frame.
-// Warping terms are not taken (flat element) [inferred].
+// Warp: the rows are those of the element projected on its mean plane, but the membrane rates take the
+//   warp z_k of the nodes off that plane (z_k = +-Z h_k, h = (1, -1, 1, -1)): with the slopes z,x = sum
+//   N_k,x z_k, z,y and w,x = sum N_k,x vz_k, w,y at the point,
+//     exx += z,x w,x,  eyy += z,y w,y,  gxy += z,x w,y + z,y w,x,
+//   the in-plane part of the surface's covariant rate 1/2 (g_a . v,b + g_b . v,a) once g_a = g_a(plane) +
+//   z,a e3, which makes every rigid motion strain-free. Without it a rigid rotation of rate Om about an
+//   in-plane axis gives the warped nodes the in-plane velocities Om z_k, an h pattern that the Gauss points
+//   of an a x a element read as exx, eyy = +-Om Z 2/(sqrt(3) a): a warped element turning in a fold yields
+//   where it does not deform (OpenRadioss's cbadef.F takes the nodes' velocities in the tangent frame of
+//   each Gauss point of a warped element, which is free of it [read; our first-order equivalent]).
+//   The forces carry the transpose: fz_k += det J(g) (Nxx z,x N_k,x + Nyy z,y N_k,y), the shear's through
+//   the centre rows.
 // At each Gauss point g (xi, eta = +-1/sqrt(3), weight det J(g); shell_quad_mindlin.hpp):
 //   de(g) = rows(g) v dt1 with the second-order membrane correction of 1.3 at the point's slopes
-//   (quad_second_order) (membrane exx eyy gxy, curvature kxx kyy kxy, transverse shear gyz gzx from the
+//   (quad_second_order) (membrane exx eyy, curvature kxx kyy kxy, transverse shear gyz gzx from the
 //   assumed field tied at the edge midpoints [inferred to be the Bathe-Dvorkin/Batoz Q4gamma field]);
+//   the membrane shear gxy is the centre's, rows(0) v dt1, at every Gauss point (assumed membrane shear
+//   strain: cbaforc3.F calls CBADEFSH, "use only the constant part", and the forces CBAFORCT with the
+//   centre rows, whenever Idrill is 0, which radx always runs). Taken at the Gauss points, gxy would lock
+//   in-plane bending: the bending mode u = c x y of an a x b element would store the shear energy
+//   G c^2 b a^3/24 on top of the bending's E/(1 - nu^2) c^2 a b^3/24 (a square: 1.48 times the
+//   beam's E I, against 1.10 with the centre's shear);
 //   the section (shell_section.hpp: 1.4, 1.8, 6.3, 6.5) updates FOR(g), MOM(g) at its N points;
-//   f_k = sum_g det J(g) rows(g)^T (N(g), M(g), Q(g)) times OFF, N = FOR t, M = MOM t^2, Q = FOR_shear t;
+//   f_k = sum_g det J(g) rows(g)^T (N(g), M(g), Q(g)) times OFF, N = FOR t, M = MOM t^2, Q = FOR_shear t,
+//   except that Nxy(g) acts through rows(0): the exact transpose of the constant gxy, so that the work
+//   of the forces is the energy below [radx: OpenRadioss applies the plain mean of the four points' Nxy
+//   with the area; the same on a parallelogram, where the det J(g) are equal];
 //   E_int += sum_g 1/2 det J(g) t [(OFF_old FOR_old + OFF FOR_new).de_m + t (OFF_old MOM_old + OFF
 //   MOM_new).dkappa] (1.5 summed over the points).
 // Full 2 x 2 integration of the bilinear field has no zero-energy mode besides the drilling rotation (no
@@ -60,6 +80,8 @@ struct QbatBlock {
   double dem[4][5][kBlock], dk[4][3][kBlock];
   double for_old[4][5][kBlock], for_new[4][5][kBlock], mom_old[4][3][kBlock], mom_new[4][3][kBlock];
   double detj[4][kBlock];
+  double nx0[4][kBlock], ny0[4][kBlock];  // the centre rows N_k,x, N_k,y of the membrane shear
+  double zx0[kBlock], zy0[kBlock], zx[4][kBlock], zy[4][kBlock];  // warp slopes z,x z,y: centre, points
   double dthick[kBlock], w_plastic[kBlock], eps_p_max[kBlock], fail_now[kBlock], unstable[kBlock];
   shell_detail::SectionBlock<kBlock> sec;
 };
@@ -80,7 +102,31 @@ struct QbatBlock {
     double e[5], kap[3];
     const QuadRows r0 = quad_rows(lx, ly, 0.0, 0.0);
     bk.area[j] = 4.0 * r0.detj;
+    // Warp: the nodes' heights off the mean plane through their centroid (z1 = z3 and z2 = z4, since e3 is
+    // normal to both diagonals), and the membrane terms z,x w,x, z,y w,y, z,x w,y + z,y w,x at a point.
+    double lz[4], zc = 0;
+    for (int n = 0; n < 4; ++n) {
+      lz[n] = bk.fr.e3[0][j] * (bk.nb.x[n][j] - bk.nb.x[0][j]) +
+              bk.fr.e3[1][j] * (bk.nb.y[n][j] - bk.nb.y[0][j]) +
+              bk.fr.e3[2][j] * (bk.nb.z[n][j] - bk.nb.z[0][j]);
+      zc += 0.25 * lz[n];
+    }
+    for (int n = 0; n < 4; ++n) lz[n] -= zc;
+    auto add_warp = [&lz, &vz](const QuadRows& r, double rate[5], double& zx, double& zy) {
+      double wx = 0, wy = 0;
+      zx = zy = 0;
+      for (int n = 0; n < 4; ++n) {
+        zx += r.nx[n] * lz[n], zy += r.ny[n] * lz[n];
+        wx += r.nx[n] * vz[n], wy += r.ny[n] * vz[n];
+      }
+      rate[0] += zx * wx;
+      rate[1] += zy * wy;
+      rate[2] += zx * wy + zy * wx;
+    };
     quad_rates(r0, vx, vy, vz, rx, ry, e, kap);
+    add_warp(r0, e, bk.zx0[j], bk.zy0[j]);
+    const double gxy0 = e[2];  // the assumed membrane shear of every Gauss point
+    for (int n = 0; n < 4; ++n) bk.nx0[n][j] = r0.nx[n], bk.ny0[n][j] = r0.ny[n];
     const double eq = dt1 > 0
                           ? std::sqrt(equivalent_rate_arg(e[0] * dt1, e[1] * dt1, e[2] * dt1, kap[0] * dt1,
                                                           kap[1] * dt1, kap[2] * dt1, g.thick[ii])) /
@@ -94,7 +140,9 @@ struct QbatBlock {
       const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
       bk.detj[gp][j] = r.detj;
       quad_rates(r, vx, vy, vz, rx, ry, e, kap);
+      add_warp(r, e, bk.zx[gp][j], bk.zy[gp][j]);
       quad_second_order(r, vz, dt1, e);
+      e[2] = gxy0;
       for (int q = 0; q < 5; ++q) bk.dem[gp][q][j] = e[q] * dt1;
       for (int q = 0; q < 3; ++q) bk.dk[gp][q][j] = kap[q] * dt1;
     }
@@ -155,6 +203,7 @@ struct QbatBlock {
   const double t = bk.t[j], area = bk.area[j];
   double de_int = 0;
   const double ot = off * t, ot2 = off * t * t;
+  double nxy_sum = 0;  // sum_g det J(g) Nxy(g): the membrane shear force, through the centre rows
   for (int gp = 0; gp < 4; ++gp) {
     const double w = bk.detj[gp][j];
     double dem[5], dk[3];
@@ -166,12 +215,19 @@ struct QbatBlock {
                                      bk.mom_new[gp], j, dem, dk, fv);
     if (off <= 0.0) continue;
     const QuadRows r = quad_rows(lx, ly, kXiGauss[gp], kEtaGauss[gp]);
-    const double n[5] = {ot * (bk.for_new[gp][0][j] + fv[0]), ot * (bk.for_new[gp][1][j] + fv[1]),
-                         ot * (bk.for_new[gp][2][j] + fv[2]), ot * bk.for_new[gp][3][j],
-                         ot * bk.for_new[gp][4][j]};
+    const double n[5] = {ot * (bk.for_new[gp][0][j] + fv[0]), ot * (bk.for_new[gp][1][j] + fv[1]), 0.0,
+                         ot * bk.for_new[gp][3][j], ot * bk.for_new[gp][4][j]};
+    nxy_sum += w * ot * (bk.for_new[gp][2][j] + fv[2]);
     const double m[3] = {ot2 * bk.mom_new[gp][0][j], ot2 * bk.mom_new[gp][1][j], ot2 * bk.mom_new[gp][2][j]};
     quad_add_forces(r, w, n, m, fx, fy, fz, mx, my);
+    for (int k = 0; k < 4; ++k) fz[k] += w * (n[0] * bk.zx[gp][j] * r.nx[k] + n[1] * bk.zy[gp][j] * r.ny[k]);
   }
+  if (off > 0.0)
+    for (int k = 0; k < 4; ++k) {
+      fx[k] += nxy_sum * bk.ny0[k][j];
+      fy[k] += nxy_sum * bk.nx0[k][j];
+      fz[k] += nxy_sum * (bk.zx0[j] * bk.ny0[k][j] + bk.zy0[j] * bk.nx0[k][j]);
+    }
   return de_int;
 }
 
