@@ -25,6 +25,21 @@ std::size_t index_of(const std::vector<std::string>& names, const std::string& v
   return static_cast<std::size_t>(std::find(names.begin(), names.end(), v) - names.begin());
 }
 
+// What 8-node and 20-node bricks write alike under /TH/BRIC: their state scalars and the centre velocity v.
+template <class Put, class Group>
+void put_solid_state(const Put& put, std::size_t o, const Group& g, std::size_t k, const double (&v)[3]) {
+  put(o, "OFF", g.off[k]);
+  put(o, "IE", g.vol0[k] > 0 ? g.e_int[k] / g.vol0[k] : 0.0);
+  put(o, "DENS", g.rho[k]);
+  put(o, "BULK", g.q[k]);
+  put(o, "VOL", g.vol[k]);
+  put(o, "PLAS", g.eps_p[k]);
+  put(o, "PLSR", g.rate[k]);
+  put(o, "VX", v[0]);
+  put(o, "VY", v[1]);
+  put(o, "VZ", v[2]);
+}
+
 }  // namespace
 
 const std::vector<ThVariableInfo>& global_th_variables() {
@@ -425,16 +440,7 @@ void ThGroupSampler::sample_bricks(const ExplicitEngine& e, const CycleReport& r
       v[1] += (s.vy[n] + h * s.ay[n]) / 8;
       v[2] += (s.vz[n] + h * s.az[n]) / 8;
     }
-    put(o, "OFF", g.off[k]);
-    put(o, "IE", g.vol0[k] > 0 ? g.e_int[k] / g.vol0[k] : 0.0);
-    put(o, "DENS", g.rho[k]);
-    put(o, "BULK", g.q[k]);
-    put(o, "VOL", g.vol[k]);
-    put(o, "PLAS", g.eps_p[k]);
-    put(o, "PLSR", g.rate[k]);
-    put(o, "VX", v[0]);
-    put(o, "VY", v[1]);
-    put(o, "VZ", v[2]);
+    put_solid_state(put, o, g, k, v);
   }
 }
 
@@ -457,16 +463,7 @@ void ThGroupSampler::sample_brick20(const ExplicitEngine& e, const CycleReport& 
     v[1] += w * (s.vy[n] + h * s.ay[n]);
     v[2] += w * (s.vz[n] + h * s.az[n]);
   }
-  put(o, "OFF", g.off[k]);
-  put(o, "IE", g.vol0[k] > 0 ? g.e_int[k] / g.vol0[k] : 0.0);
-  put(o, "DENS", g.rho[k]);
-  put(o, "BULK", g.q[k]);
-  put(o, "VOL", g.vol[k]);
-  put(o, "PLAS", g.eps_p[k]);
-  put(o, "PLSR", g.rate[k]);
-  put(o, "VX", v[0]);
-  put(o, "VY", v[1]);
-  put(o, "VZ", v[2]);
+  put_solid_state(put, o, g, k, v);
 }
 
 void ThGroupSampler::sample_rigid_bodies(const ExplicitEngine& e, const CycleReport& r,
