@@ -573,8 +573,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   if (!io::write_summary_json(summary_path, s, error)) return early_error(error);
   io::EngineListing listing(io::ListingSinks{&listing_file, &out, controls.print_stdout,
                                              io::stdout_is_terminal(), controls.print_header_every});
-  const io::EngineListingHeader h =
-      listing_header(opt, model, model_path, root, controls, {&diags, &model_diags});
+  io::EngineListingHeader h = listing_header(opt, model, model_path, root, controls, {&diags, &model_diags});
+  h.threads = engine.team().size();  // the threads the run uses, as the footer and the summary say
   listing.header(h);
 
   const auto wall0 = std::chrono::steady_clock::now();

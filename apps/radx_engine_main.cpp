@@ -22,9 +22,9 @@ void usage(std::ostream& os) {
         "  --model FILE   the model file (default: DIR/NAME_0000.hdf)\n"
         "  --threads N    threads (default: OMP_NUM_THREADS, else the cores this process may use); results "
         "do "
-        "not depend on it\n"
+        "not depend on it; -nt N, Radioss's spelling, is the same\n"
         "  --no-plot      do not draw NAME_energy.png (the CSV is still written)\n"
-        "  --help, --version\n"
+        "  --help, --version (or -version)\n"
         "\n"
         "SIGTERM or SIGINT stops the run after the cycle under way, with a last state, the summary (status\n"
         "\"interrupted\") and the listing's termination lines; a second one ends it at once.\n"
@@ -44,11 +44,13 @@ int main(int argc, char** argv) {
       usage(std::cout);
       return radx::app::kExitOk;
     }
-    if (a == "--version") {
+    // -version and -nt N are Radioss's own spellings (engine_linux64 -i DECK -nt N): scripts written for it
+    // run unchanged.
+    if (a == "--version" || a == "-version") {
       std::cout << "radx-engine " << radx::app::kVersionText << '\n';
       return radx::app::kExitOk;
     }
-    const bool takes_value = a == "-i" || a == "--out" || a == "--model" || a == "--threads";
+    const bool takes_value = a == "-i" || a == "--out" || a == "--model" || a == "--threads" || a == "-nt";
     if (takes_value && i + 1 >= argc) {
       std::cerr << "radx-engine: " << a << " needs a value\n";
       return radx::app::kExitUsage;
@@ -59,14 +61,14 @@ int main(int argc, char** argv) {
       opt.out_dir = argv[++i];
     } else if (a == "--model") {
       opt.model_file = argv[++i];
-    } else if (a == "--threads") {
+    } else if (a == "--threads" || a == "-nt") {
       try {
         opt.threads = std::stoi(argv[++i]);
       } catch (...) {
         opt.threads = -1;
       }
       if (opt.threads < 1) {
-        std::cerr << "radx-engine: --threads needs a positive integer\n";
+        std::cerr << "radx-engine: " << a << " needs a positive integer\n";
         return radx::app::kExitUsage;
       }
     } else if (a == "--no-plot") {

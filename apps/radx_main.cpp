@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <filesystem>
@@ -22,51 +23,74 @@
 
 namespace {
 
+// Each command's synopsis and help, the one text both `radx --help` and `radx COMMAND --help` print.
+struct CommandHelp {
+  std::string_view name;
+  std::string_view text;
+};
+constexpr CommandHelp kCommands[] = {
+    {"check",
+     "  check DECK                  read and check a starter deck (and NAME_0001.rad beside it, or the\n"
+     "                              engine part of a one-file deck); writes nothing\n"},
+    {"keywords",
+     "  keywords [--markdown] [--output FILE]\n"
+     "                              the keyword reference (every keyword, card, field and diagnostic "
+     "code)\n"},
+    {"run",
+     "  run [DECK] [--out DIR] [--threads N] [--no-plot] [--allow-substitutions] [--starter-only]\n"
+     "                              the starter then the engine: DECK is NAME_0000.rad (NAME_0001.rad "
+     "beside\n"
+     "                              it) or a one-file deck; without DECK, the embedded default deck.\n"
+     "                              --allow-substitutions: run the nearest formulation radx implements\n"
+     "                              where the deck asks for one it lacks (each is listed) instead of\n"
+     "                              refusing the deck. --starter-only: stop after the starter (a\n"
+     "                              starter deck with no engine deck)\n"},
+    {"th",
+     "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]...] | th FILE --recover\n"
+     "                              a time history P_th.h5: without --csv, list its groups (objects,\n"
+     "                              variables, units, rows, time range); with --csv, write the chosen\n"
+     "                              columns (all by default) as CSV to OUT.csv or standard output.\n"
+     "                              SELECTOR: a group (node/1), a column (global:IE, node/1:12:DX) or an\n"
+     "                              object's columns (node/1:12); '*' and '?' are wildcards; repeatable.\n"
+     "                              --recover: rewrite a file whose run was killed inside a flush (HDF5\n"
+     "                              readers refuse it) with the rows of the flushes that completed\n"},
+    {"regress",
+     "  regress [DIR...] [-j N] [--filter PATTERN]... [--update] [--keep] [--junit FILE]\n"
+     "          [--summary FILE] [--tol PCT] [--timeout SECONDS] [--threads N] [--work DIR]\n"
+     "                              run every deck under the folders (default ./decks: NAME_0000.rad, a\n"
+     "                              one-file deck, or a deck whose # expect: lines say it must be\n"
+     "                              refused), N at a time (default: the cores), each as its own `radx\n"
+     "                              run` (--threads, default 1) with a time limit (--timeout, default\n"
+     "                              600 s), and compare it with its reference: its NAME.ref, or the\n"
+     "                              folder's OpenRadioss ref.extract (energies within --tol, default\n"
+     "                              5 %); one line per deck as it finishes, then a table. --filter keeps\n"
+     "                              the decks whose name matches (glob, or substring); --update rewrites\n"
+     "                              (or writes) each NAME.ref from the run, saying what changed; --junit\n"
+     "                              writes a JUnit XML report, --summary a JSON one. Runs happen in a\n"
+     "                              scratch folder; a passing deck's is removed unless --keep (--work\n"
+     "                              DIR keeps them there). Exit code 1 when a deck fails\n"
+     "                              (docs/regress.md)\n"},
+};
+
+constexpr std::string_view kExitCodes =
+    "Exit code: 0 success, 1 input errors or an error termination, 2 usage errors, 143 or 130 when\n"
+    "SIGTERM or SIGINT stopped the engine (after a cycle, with a last state and the summary).\n";
+
 void usage(std::ostream& os) {
-  os << "usage: radx <command> [options]\n"
-        "\n"
-        "commands:\n"
-        "  check DECK                  read and check a starter deck (and NAME_0001.rad beside it, or the\n"
-        "                              engine part of a one-file deck); writes nothing\n"
-        "  keywords [--markdown] [--output FILE]\n"
-        "                              the keyword reference (every keyword, card, field and diagnostic "
-        "code)\n"
-        "  run [DECK] [--out DIR] [--threads N] [--no-plot] [--allow-substitutions] [--starter-only]\n"
-        "                              the starter then the engine: DECK is NAME_0000.rad (NAME_0001.rad "
-        "beside\n"
-        "                              it) or a one-file deck; without DECK, the embedded default deck.\n"
-        "                              --allow-substitutions: run the nearest formulation radx implements\n"
-        "                              where the deck asks for one it lacks (each is listed) instead of\n"
-        "                              refusing the deck. --starter-only: stop after the starter (a\n"
-        "                              starter deck with no engine deck)\n"
-        "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]...] | th FILE --recover\n"
-        "                              a time history P_th.h5: without --csv, list its groups (objects,\n"
-        "                              variables, units, rows, time range); with --csv, write the chosen\n"
-        "                              columns (all by default) as CSV to OUT.csv or standard output.\n"
-        "                              SELECTOR: a group (node/1), a column (global:IE, node/1:12:DX) or an\n"
-        "                              object's columns (node/1:12); '*' and '?' are wildcards; repeatable.\n"
-        "                              --recover: rewrite a file whose run was killed inside a flush (HDF5\n"
-        "                              readers refuse it) with the rows of the flushes that completed\n"
-        "  regress [DIR...] [-j N] [--filter PATTERN]... [--update] [--keep] [--junit FILE]\n"
-        "          [--summary FILE] [--tol PCT] [--timeout SECONDS] [--threads N] [--work DIR]\n"
-        "                              run every deck under the folders (default ./decks: NAME_0000.rad, a\n"
-        "                              one-file deck, or a deck whose # expect: lines say it must be\n"
-        "                              refused), N at a time (default: the cores), each as its own `radx\n"
-        "                              run` (--threads, default 1) with a time limit (--timeout, default\n"
-        "                              600 s), and compare it with its reference: its NAME.ref, or the\n"
-        "                              folder's OpenRadioss ref.extract (energies within --tol, default\n"
-        "                              5 %); one line per deck as it finishes, then a table. --filter keeps\n"
-        "                              the decks whose name matches (glob, or substring); --update rewrites\n"
-        "                              (or writes) each NAME.ref from the run, saying what changed; --junit\n"
-        "                              writes a JUnit XML report, --summary a JSON one. Runs happen in a\n"
-        "                              scratch folder; a passing deck's is removed unless --keep (--work\n"
-        "                              DIR keeps them there). Exit code 1 when a deck fails\n"
-        "                              (docs/regress.md)\n"
-        "\n"
-        "  --help, --version\n"
-        "\n"
-        "Exit code: 0 success, 1 input errors or an error termination, 2 usage errors, 143 or 130 when\n"
-        "SIGTERM or SIGINT stopped the engine (after a cycle, with a last state and the summary).\n";
+  os << "usage: radx <command> [options]\n\ncommands:\n";
+  for (const auto& c : kCommands) os << c.text;
+  os << "\n  --help, --version; radx COMMAND --help (or radx help COMMAND) for one command\n\n" << kExitCodes;
+}
+
+// The help of one command, or nullptr when `name` is none.
+const CommandHelp* command_help(std::string_view name) {
+  for (const auto& c : kCommands)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+void command_usage(const CommandHelp& c, std::ostream& os) {
+  os << "usage: radx " << c.name << " [options]\n\n" << c.text << '\n' << kExitCodes;
 }
 
 int check(const std::vector<std::string>& args) {
@@ -280,8 +304,27 @@ int main(int argc, char** argv) {
   const std::string cmd = argv[1];
   const std::vector<std::string> args(argv + 2, argv + argc);
   if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+    // `radx help COMMAND`: that command's help.
+    if (!args.empty()) {
+      const auto* c = command_help(args[0]);
+      if (c == nullptr) {
+        std::cerr << "radx help: unknown command '" << args[0] << "'\n";
+        usage(std::cerr);
+        return radx::app::kExitUsage;
+      }
+      command_usage(*c, std::cout);
+      return radx::app::kExitOk;
+    }
     usage(std::cout);
     return radx::app::kExitOk;
+  }
+  // `radx COMMAND --help` (or -h) anywhere among its arguments: that command's help, nothing run.
+  if (const auto* c = command_help(cmd)) {
+    for (const auto& a : args)
+      if (a == "--help" || a == "-h") {
+        command_usage(*c, std::cout);
+        return radx::app::kExitOk;
+      }
   }
   if (cmd == "--version") {
     std::cout << "radx " << radx::app::kVersionText << '\n';

@@ -18,6 +18,9 @@ void usage(std::ostream& os) {
         "Without a deck, runs the embedded default deck (block on plate), written to DIR first.\n"
         "\n"
         "  -i DECK       the starter deck (as Radioss users type it)\n"
+        "  -nt N, -np N  Radioss's thread and domain counts: accepted and without effect (the starter runs "
+        "on\n"
+        "                one thread and writes the same model file for any count)\n"
         "  --out DIR     output folder (default: the current folder)\n"
         "  --allow-substitutions\n"
         "                where the deck asks for a formulation or option radx does not implement, run\n"
@@ -40,11 +43,11 @@ int main(int argc, char** argv) {
       usage(std::cout);
       return radx::app::kExitOk;
     }
-    if (a == "--version") {
+    if (a == "--version" || a == "-version") {
       std::cout << "radx-starter " << radx::app::kVersionText << '\n';
       return radx::app::kExitOk;
     }
-    if ((a == "-i" || a == "--out") && i + 1 >= argc) {
+    if ((a == "-i" || a == "--out" || a == "-nt" || a == "-np") && i + 1 >= argc) {
       std::cerr << "radx-starter: " << a << " needs a value\n";
       usage(std::cerr);
       return radx::app::kExitUsage;
@@ -55,6 +58,12 @@ int main(int argc, char** argv) {
       opt.out_dir = argv[++i];
     } else if (a == "--allow-substitutions") {
       opt.allow_substitutions = true;
+    } else if (a == "-nt") {
+      // Radioss's starter thread count (starter_linux64 -i DECK -np 1 -nt 1): the starter runs on one thread.
+      ++i;
+    } else if (a == "-np") {
+      // Radioss's domain count: radx writes one model file for every process count.
+      ++i;
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << "radx-starter: unknown option " << a << '\n';
       usage(std::cerr);

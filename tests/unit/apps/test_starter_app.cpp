@@ -40,12 +40,45 @@ TEST_CASE("radx-starter exit codes: 0 success, 1 input error, 2 usage error", "[
   CHECK(run(exe + " -i") == 2);
   CHECK(run(exe + " " + kDefaultDeck + " --out " + dir.path().string()) == 0);
   CHECK(run(exe + " -i " + kDefaultDeck + " --out " + dir.path().string()) == 0);
+  // Radioss's own command line (starter_linux64 -i DECK -np 1 -nt 1) runs unchanged.
+  CHECK(run(exe + " -i " + kDefaultDeck + " -np 1 -nt 1 --out " + dir.path().string()) == 0);
+  CHECK(run(exe + " -version") == 0);
+  CHECK(run(exe + " -i " + kDefaultDeck + " -nt") == 2);
   CHECK(run(exe + " " + dir.file("no_such_0000.rad") + " --out " + dir.path().string()) == 1);
   const std::string driver = RADX_DRIVER_EXE;
   CHECK(run(driver + " --help") == 0);
   CHECK(run(driver + " check " + kDefaultDeck) == 0);
   CHECK(run(driver + " check " + std::string(RADX_SOURCE_DIR) + "/decks/invalid/istf_7.rad") == 1);
   CHECK(run(driver + " frobnicate") == 2);
+}
+
+TEST_CASE("every radx command answers --help with its own usage and runs nothing", "[app]") {
+  radx::test::TempDir dir;
+  const std::string driver = RADX_DRIVER_EXE;
+  for (const std::string cmd : {"check", "keywords", "run", "th", "regress"}) {
+    INFO(cmd);
+    const std::string out = dir.file(cmd + ".txt");
+    // --help after other arguments too: nothing is read, checked or run.
+    CHECK(std::system((driver + " " + cmd + " no_such_deck.rad --help > " + out + " 2>&1").c_str()) == 0);
+    CHECK(slurp(out).rfind("usage: radx " + cmd, 0) == 0);
+    CHECK(run(driver + " help " + cmd) == 0);
+    CHECK(run(driver + " " + cmd + " -h") == 0);
+  }
+  CHECK(run(driver + " help frobnicate") == 2);
+}
+
+TEST_CASE("radx-engine takes Radioss's -nt N and states the threads in its listing header", "[app]") {
+  radx::test::TempDir dir;
+  const std::string out = " --out " + dir.path().string();
+  REQUIRE(run(std::string(RADX_STARTER_EXE) + " -i " + kDefaultDeck + out) == 0);
+  const std::string engine_deck =
+      std::string(RADX_SOURCE_DIR) + "/decks/block_on_plate/BLOCK_ON_PLATE_0001.rad";
+  REQUIRE(run(std::string(RADX_ENGINE_EXE) + " -i " + engine_deck + " -nt 2 --no-plot" + out) == 0);
+  const auto listing = slurp(dir.path() / "BLOCK_ON_PLATE_0001.out");
+  CHECK(listing.find("threads       2\n") != std::string::npos);
+  CHECK(slurp(dir.path() / "BLOCK_ON_PLATE_summary.json").find("\"threads\": 2") != std::string::npos);
+  CHECK(run(std::string(RADX_ENGINE_EXE) + " -version") == 0);
+  CHECK(run(std::string(RADX_ENGINE_EXE) + " -i " + engine_deck + " -nt 0" + out) == 2);
 }
 
 TEST_CASE("the default deck gives a listing and a model file whose masses match rho t A and rho V", "[app]") {
