@@ -10,8 +10,9 @@ then read by radx's starter and by OpenRadioss's starter (only the starters run)
   laxer       radx accepts, OpenRadioss refuses (radx may run a deck that Radioss stops)
 
 The report lists the stricter and laxer variants with the keyword, line, field columns, value and the first
-error radx gives. This is a development tool, not a test: it needs an OpenRadioss build (see
-../shared/tools/build-openradioss.sh) and takes about a second per variant.
+error radx gives. This is a development tool, not a test: it needs an OpenRadioss build (a folder
+holding exec/starter_linux64_gf and hm_cfg_files: --openradioss DIR or OPENRADIOSS_ROOT) and takes about a second
+per variant.
 
 Usage: scripts/sweep_fields.py DECK_0000.rad [--radx build/apps/radx-starter] [--openradioss DIR]
        [--keywords /PROP/SHELL,/MAT/LAW2] [--values blank,0,-1,max] [--out REPORT.md] [--work DIR]
