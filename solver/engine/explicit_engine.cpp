@@ -540,51 +540,14 @@ void init_brick_geometry(BrickGroup& g, int i, const std::array<model::Vec3, 8>&
   if (total_strain) g.set_reference(static_cast<std::size_t>(i), xa);
 }
 
-// A brick group of the elements `run` of one part: the property's formulation and figures, the material's
-// state, connectivity and reference geometry.
-BrickGroup make_brick_group(const model::Model& m, const std::vector<MaterialParams>& materials,
-                            std::pmr::memory_resource* arena, std::int32_t part,
-                            std::span<const std::int32_t> run) {
+// What every solid group takes alike from its part and elements: the part and material, the property's bulk
+// viscosity, and per element its index, its nodes' slots and the initial density. `geometry(i, x)` then sets
+// element i's reference geometry from its nodes' coordinates x at t = 0.
+template <std::size_t kNodes, class Group, class Geometry>
+void fill_solid_group(Group& g, const model::Model& m, const std::vector<MaterialParams>& materials,
+                      const model::ElementBlock& b, std::int32_t part, std::span<const std::int32_t> run,
+                      Geometry&& geometry) {
   const auto& prop = m.properties[m.parts[part].property].solid;
-  BrickGroup g(arena);
-  g.allocate(static_cast<int>(run.size()));
-  g.part = part;
-  g.material = m.parts[part].material;
-  g.isolid = prop.isolid;
-  g.ismstr = prop.ismstr;
-  g.iframe = prop.iframe;
-  g.icpre = prop.icpre;
-  g.dn = prop.dn > 0 ? prop.dn : 0.1;  // Isolid 24: dn 0 means the default 0.1 (hm_read_prop14.F)
-  g.qa = prop.qa;
-  g.qb = prop.qb;
-  g.h = prop.h;
-  const auto& gmat = materials[static_cast<std::size_t>(g.material)];
-  resolve_full_brick(prop, gmat, g);
-  const bool total_strain = gmat.law == model::MaterialLaw::Ogden || gmat.law == model::MaterialLaw::FoamTab;
-  if (gmat.law == model::MaterialLaw::FoamTab) init_foam_group(g, gmat, prop);
-  for (int i = 0; i < g.count; ++i) {
-    const auto e = static_cast<std::size_t>(run[static_cast<std::size_t>(i)]);
-    g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
-    std::array<model::Vec3, 8> x{};
-    for (int q = 0; q < 8; ++q) {
-      const auto n = m.bricks.conn[8 * e + static_cast<std::size_t>(q)];
-      g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = n;
-      x[static_cast<std::size_t>(q)] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
-    }
-    init_brick_geometry(g, i, x, total_strain);
-    g.rho[static_cast<std::size_t>(i)] = gmat.rho0;
-  }
-  return g;
-}
-
-// A tetrahedron group of the elements `run` of one part; the property gives the bulk viscosity only (no
-// hourglass).
-TetraGroup make_tetra_group(const model::Model& m, const std::vector<MaterialParams>& materials,
-                            std::pmr::memory_resource* arena, std::int32_t part,
-                            std::span<const std::int32_t> run) {
-  const auto& prop = m.properties[m.parts[part].property].solid;
-  TetraGroup g(arena);
-  g.allocate(static_cast<int>(run.size()));
   g.part = part;
   g.material = m.parts[part].material;
   g.qa = prop.qa;
@@ -593,16 +556,53 @@ TetraGroup make_tetra_group(const model::Model& m, const std::vector<MaterialPar
   for (int i = 0; i < g.count; ++i) {
     const auto e = static_cast<std::size_t>(run[static_cast<std::size_t>(i)]);
     g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
-    model::Vec3 x[4];
-    for (int q = 0; q < 4; ++q) {
-      const auto n = m.tetras.conn[4 * e + static_cast<std::size_t>(q)];
-      g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = n;
+    std::array<model::Vec3, kNodes> x{};
+    for (std::size_t q = 0; q < kNodes; ++q) {
+      const auto n = b.conn[kNodes * e + q];
+      g.conn[q * kGroupSize + static_cast<std::size_t>(i)] = n;
       x[q] = {m.nodes.x[n], m.nodes.y[n], m.nodes.z[n]};
     }
-    const double v0 = model::tetra_volume(x[0], x[1], x[2], x[3]);
-    g.vol0[static_cast<std::size_t>(i)] = g.vol[static_cast<std::size_t>(i)] = v0;
+    geometry(i, x);
     g.rho[static_cast<std::size_t>(i)] = rho0;
   }
+}
+
+// A brick group of the elements `run` of one part: the property's formulation and figures, the material's
+// state, connectivity and reference geometry.
+BrickGroup make_brick_group(const model::Model& m, const std::vector<MaterialParams>& materials,
+                            std::pmr::memory_resource* arena, std::int32_t part,
+                            std::span<const std::int32_t> run) {
+  const auto& prop = m.properties[m.parts[part].property].solid;
+  BrickGroup g(arena);
+  g.allocate(static_cast<int>(run.size()));
+  g.isolid = prop.isolid;
+  g.ismstr = prop.ismstr;
+  g.iframe = prop.iframe;
+  g.icpre = prop.icpre;
+  g.dn = prop.dn > 0 ? prop.dn : 0.1;  // Isolid 24: dn 0 means the default 0.1 (hm_read_prop14.F)
+  g.h = prop.h;
+  const auto& gmat = materials[static_cast<std::size_t>(m.parts[part].material)];
+  const bool total_strain = gmat.law == model::MaterialLaw::Ogden || gmat.law == model::MaterialLaw::FoamTab;
+  resolve_full_brick(prop, gmat, g);  // before the geometry: it sets the number of points
+  fill_solid_group<8>(g, m, materials, m.bricks, part, run, [&](int i, const std::array<model::Vec3, 8>& x) {
+    init_brick_geometry(g, i, x, total_strain);
+  });
+  // After the common set-up, whose bulk viscosity law 70 may clear.
+  if (gmat.law == model::MaterialLaw::FoamTab) init_foam_group(g, gmat, prop);
+  return g;
+}
+
+// A tetrahedron group of the elements `run` of one part; the property gives the bulk viscosity only (no
+// hourglass).
+TetraGroup make_tetra_group(const model::Model& m, const std::vector<MaterialParams>& materials,
+                            std::pmr::memory_resource* arena, std::int32_t part,
+                            std::span<const std::int32_t> run) {
+  TetraGroup g(arena);
+  g.allocate(static_cast<int>(run.size()));
+  fill_solid_group<4>(g, m, materials, m.tetras, part, run, [&](int i, const std::array<model::Vec3, 4>& x) {
+    const double v0 = model::tetra_volume(x[0], x[1], x[2], x[3]);
+    g.vol0[static_cast<std::size_t>(i)] = g.vol[static_cast<std::size_t>(i)] = v0;
+  });
   return g;
 }
 
@@ -617,25 +617,13 @@ Hex20Group make_hex20_group(const model::Model& m, const std::vector<MaterialPar
   g.rule =
       prop.isolid == 17 ? std::array<int, 3>{2, 2, 2} : model::hex20_rule_of_inpts(prop.inpts, prop.isolid).n;
   g.allocate(static_cast<int>(run.size()));
-  g.part = part;
-  g.material = m.parts[part].material;
-  g.qa = prop.qa;
-  g.qb = prop.qb;
-  const double rho0 = materials[static_cast<std::size_t>(g.material)].rho0;
-  for (int i = 0; i < g.count; ++i) {
-    const auto e = static_cast<std::size_t>(run[static_cast<std::size_t>(i)]);
-    g.element[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(e);
-    double x[20][3];
-    for (int q = 0; q < 20; ++q) {
-      const auto n = m.bricks20.conn[20 * e + static_cast<std::size_t>(q)];
-      g.conn[static_cast<std::size_t>(q * kGroupSize + i)] = n;
-      x[q][0] = m.nodes.x[n];
-      x[q][1] = m.nodes.y[n];
-      x[q][2] = m.nodes.z[n];
-    }
-    hex20_init_geometry(g, static_cast<std::size_t>(i), x);
-    g.rho[static_cast<std::size_t>(i)] = rho0;
-  }
+  fill_solid_group<20>(g, m, materials, m.bricks20, part, run,
+                       [&](int i, const std::array<model::Vec3, 20>& x) {
+                         double xa[20][3];
+                         for (std::size_t q = 0; q < 20; ++q)
+                           for (std::size_t d = 0; d < 3; ++d) xa[q][d] = x[q][d];
+                         hex20_init_geometry(g, static_cast<std::size_t>(i), xa);
+                       });
   return g;
 }
 
