@@ -254,11 +254,10 @@ void write_engine_header(std::ostream& os, const EngineListingHeader& h) {
   os << '\n';
 }
 
-void write_run_summary(std::ostream& os, const RunSummary& s) {
-  const EnergyBalance& e = s.energy;
-  heading(os, termination_label(s.status).data());
-  if (!s.message.empty()) os << "  " << s.message << '\n';
+namespace {
 
+// The energies at the end and the balance error.
+void write_energy_balance(std::ostream& os, const EnergyBalance& e) {
   heading(os, "ENERGY BALANCE");
   auto erow = [&](const char* label, double v) { row(os, label, sci(v)); };
   erow("kinetic, translational", e.kinetic_t);
@@ -276,12 +275,11 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.1f %%", e.error_percent());
   row(os, "error 100 (E / (E0 + W) - 1)", buf);
+}
 
-  if (!s.substitutions.empty()) {
-    heading(os, "SUBSTITUTIONS (--allow-substitutions: these ran instead of what the deck asks)");
-    for (const auto& text : s.substitutions) os << "  " << text << '\n';
-  }
-
+// Cycles, time, cost, masses and momentum.
+void write_run_figures(std::ostream& os, const RunSummary& s) {
+  char buf[64];
   heading(os, "RUN");
   row(os, "cycles", std::to_string(s.cycles));
   row(os, "final time", sci(s.time));
@@ -312,6 +310,10 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
   }
   row(os, "added mass", added);
   row(os, "momentum", sci(s.momentum[0]) + " " + sci(s.momentum[1]) + " " + sci(s.momentum[2]));
+}
+
+// Each contact interface's counts and the Lagrange-multiplier solve's.
+void write_contact_figures(std::ostream& os, const RunSummary& s) {
   if (!s.interfaces.empty()) {
     heading(os, "CONTACT INTERFACES");
     for (const auto& in : s.interfaces) {
@@ -350,14 +352,34 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
     row(os, "time: solve", share(L.seconds_solve));
     row(os, "time: all three", share(L.seconds_assembly + L.seconds_factorization + L.seconds_solve));
   }
-  if (s.states > 0 || !s.time_history.empty()) {
-    heading(os, "RESULTS");
-    if (s.states > 0) row(os, "animation states", std::to_string(s.states) + " in " + s.series);
-    if (!s.time_history.empty()) row(os, "time history", s.time_history);
-    std::snprintf(buf, sizeof buf, " (%.1f %% of the wall time)",
-                  s.wall_seconds > 0 ? 100.0 * s.output_seconds / s.wall_seconds : 0.0);
-    row(os, "writing time", format_duration(s.output_seconds) + buf);
+}
+
+// What was written and how long writing took.
+void write_results_figures(std::ostream& os, const RunSummary& s) {
+  if (s.states == 0 && s.time_history.empty()) return;
+  char buf[64];
+  heading(os, "RESULTS");
+  if (s.states > 0) row(os, "animation states", std::to_string(s.states) + " in " + s.series);
+  if (!s.time_history.empty()) row(os, "time history", s.time_history);
+  std::snprintf(buf, sizeof buf, " (%.1f %% of the wall time)",
+                s.wall_seconds > 0 ? 100.0 * s.output_seconds / s.wall_seconds : 0.0);
+  row(os, "writing time", format_duration(s.output_seconds) + buf);
+}
+
+}  // namespace
+
+void write_run_summary(std::ostream& os, const RunSummary& s) {
+  heading(os, termination_label(s.status).data());
+  if (!s.message.empty()) os << "  " << s.message << '\n';
+  write_energy_balance(os, s.energy);
+  if (!s.substitutions.empty()) {
+    heading(os, "SUBSTITUTIONS (--allow-substitutions: these ran instead of what the deck asks)");
+    for (const auto& text : s.substitutions) os << "  " << text << '\n';
   }
+
+  write_run_figures(os, s);
+  write_contact_figures(os, s);
+  write_results_figures(os, s);
   os << rule;
   os << "  " << termination_label(s.status) << '\n';
 }

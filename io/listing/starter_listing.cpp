@@ -219,6 +219,114 @@ void write_counts(std::ostream& os, const model::Model& m) {
   if (!m.tied_interfaces.empty()) count("tied interfaces (TYPE2)", m.tied_interfaces.size());
 }
 
+// The constants of the material's law, each law in its own words.
+void write_law_constants(std::ostream& os, const model::Model& m, const model::Material& mat) {
+  if (mat.law == model::MaterialLaw::JohnsonCook) {
+    os << "    yield (a + b eps_p^n)(1 + c ln(rate/rate0)): a " << mat.a << "  b " << mat.b << "  n " << mat.n
+       << "  c " << mat.c << "  rate0 " << mat.eps_dot_0 << '\n'
+       << "    SIG_max0 " << mat.sig_max0 << "  EPS_p_max " << mat.eps_p_max << "  ICC " << mat.icc
+       << "  flagVP " << mat.flag_vp;
+    if (mat.iflag == 1)
+      os << "  (Iflag 1: from SIG_Y " << mat.sig_y_input << ", UTS " << mat.uts << ", EUTS " << mat.e_uts
+         << ")";
+    os << '\n';
+    if (mat.rho_cp > 0)
+      os << "    rhoCp " << mat.rho_cp
+         << " given: adiabatic heating is not implemented in radx; the temperature "
+         << "term stays 1\n";
+  }
+  if (mat.law == model::MaterialLaw::PlasTab) {
+    const auto& tab = mat.tab;
+    os << "    yield curves sigma_y(eps_p) per strain rate: " << tab.function_id.size() << "  EPS_p_max "
+       << mat.eps_p_max << "  Fsmooth " << tab.fsmooth << " ("
+       << (tab.fsmooth == 2 ? "logarithmic" : "linear") << " in the rate)  Fcut " << mat.f_cut << '\n';
+    for (std::size_t i = 0; i < tab.function_id.size(); ++i)
+      os << "      curve " << i + 1 << ": function " << tab.function_id[i] << "  scale " << tab.scale[i]
+         << "  strain rate " << tab.rate[i] << '\n';
+    if (tab.function_id.size() > 1 && tab.rate.front() != 0)
+      os << "      (below the first rate the first curve holds: it is repeated at rate 0)\n";
+  }
+  if (mat.law == model::MaterialLaw::PlasBrit) {
+    const auto& b = mat.brit;
+    os << "    yield min((a + b eps_p^n) R, SIG_max0 (R if ICC 1)), R = 1 + c ln(rate/rate0): a " << mat.a
+       << "  b " << mat.b << "  n " << mat.n << "  SIG_max0 " << mat.sig_max0 << "  c " << mat.c << "  rate0 "
+       << mat.eps_dot_0 << "  ICC " << mat.icc << "  Fsmooth " << mat.fsmooth << "  Fcut " << mat.f_cut
+       << '\n'
+       << "    crack (direction 1): opens at EPS_t1 " << b.eps_t1
+       << ", damage (eps_1 - EPS_t1)/(EPS_m1 - EPS_t1)"
+       << " with EPS_m1 " << b.eps_m1 << ", at most d_max1 " << b.d_max1 << "; element deleted above EPS_f1 "
+       << b.eps_f1 << '\n';
+  }
+  if (mat.law == model::MaterialLaw::Ogden) {
+    const auto& o = mat.ogden;
+    os << "    W = sum mu_p/alpha_p (lb1^alpha_p + lb2^alpha_p + lb3^alpha_p - 3) + "
+       << (o.iform == 2 ? "K (J - 1 - ln J)" : "K/2 (J - 1)^2") << " (Iform " << o.iform
+       << "); G above is the initial shear modulus sum mu_p alpha_p / 2, E = 2 G (1 + nu)\n";
+    for (std::size_t k = 0; k < o.mu.size(); ++k)
+      os << "      term " << k + 1 << ": mu " << o.mu[k] << "  alpha " << o.alpha[k] << '\n';
+    os << "    tension cut-off on the principal Biot stress " << o.sig_cut << '\n';
+  }
+  if (mat.law == model::MaterialLaw::FoamTab) {
+    const auto& f = mat.foam;
+    os << "    E0 " << mat.young << "  nu " << mat.poisson << "  Emax " << f.e_max << "  eps_max "
+       << f.eps_max << "  Itens " << f.itens << "  Fcut " << mat.f_cut << "  Iflag " << f.iflag << "  Shape "
+       << f.shape << "  Hys " << f.hys << '\n';
+    for (std::size_t k = 0; k < f.load_function_id.size(); ++k)
+      os << "      loading curve " << f.load_function_id[k] << "  rate " << f.load_rate[k] << "  scale "
+         << f.load_scale[k] << '\n';
+    for (std::size_t k = 0; k < f.unload_function_id.size(); ++k)
+      os << "      unloading curve " << f.unload_function_id[k] << "  rate " << f.unload_rate[k] << "  scale "
+         << f.unload_scale[k] << '\n';
+    if (f.itens == 1)
+      os << "      tension factor curve " << f.tens_function_id << "  scale " << f.tens_scale << '\n';
+  }
+  if (mat.law == model::MaterialLaw::Void)
+    os << "    no force; mass rho V, E and nu for the contact stiffness only\n";
+  if (mat.law == model::MaterialLaw::Rigid) {
+    // The bodies its connected elements form (a body is listed under the first law-13 material it met).
+    for (const auto& b : m.rigid_bodies)
+      if (b.rigid_material == mat.id)
+        os << "    rigid body of " << b.secondary.size() << " nodes on the added main node "
+           << m.nodes.id[static_cast<std::size_t>(b.main_node)] << '\n';
+  }
+}
+
+// The failure models on the material.
+void write_failure_models(std::ostream& os, const model::Material& mat) {
+  if (mat.fail_jc.on) {
+    const auto& f = mat.fail_jc;
+    os << "    /FAIL/JOHNSON: eps_f = (D1 + D2 exp(D3 sigma*))(1 + D4 ln(rate/rate0))(1 + D5 T*): D1 " << f.d1
+       << "  D2 " << f.d2 << "  D3 " << f.d3 << "  D4 " << f.d4 << "  D5 " << f.d5 << "  rate0 "
+       << f.eps_dot_0 << "  EPSF_MIN " << f.eps_f_min << "  Ifail_sh " << f.ifail_sh << "  Ifail_so "
+       << f.ifail_so << '\n';
+  }
+  if (mat.fail_tab.on) {
+    const auto& f = mat.fail_tab;
+    os << "    /FAIL/TAB: dD = n D^(1-1/n) d_eps_p / eps_f, fails at Dcrit " << f.dcrit << "  n " << f.n
+       << "  Ifail_sh " << f.ifail_sh << "  Ifail_so " << f.ifail_so << "  P_thickfail " << f.p_thickfail
+       << '\n';
+    for (std::size_t i = 0; i < f.function_id.size(); ++i)
+      os << "      eps_f(triaxiality): function " << f.function_id[i] << " x " << f.scale[i] << " at rate "
+         << f.rate[i] << '\n';
+    if (f.size_function_id != 0)
+      os << "      element size factor: " << f.size_scale << " x function " << f.size_function_id
+         << " of L0 / " << f.el_ref << " (L0 the shell's length at t = 0)\n";
+    if (f.temp_function_id != 0)
+      os << "      temperature factor (constant function " << f.temp_function_id << "): " << f.temp_factor
+         << '\n';
+  }
+  if (mat.fail_bq.on) {
+    const auto& f = mat.fail_bq;
+    os << "    /FAIL/BIQUAD: eps_f(triaxiality) through C1 " << f.c1 << " (-1/3)  C2 " << f.c2 << " (0)  C3 "
+       << f.c3 << " (1/3)  C4 " << f.c4 << " (1/sqrt 3)  C5 " << f.c5 << " (2/3)  M_Flag " << f.m_flag
+       << "  S_Flag " << f.s_flag << "  P_thickfail " << f.p_thickfail << '\n';
+    if (f.s_flag == 3) os << "      necking instability (shells): Inst_start " << f.inst_start << '\n';
+    if (f.size_function_id != 0)
+      os << "      element size factor: function " << f.size_function_id << " of L0 / " << f.el_ref
+         << " (L0 the shell's length at t = 0)\n";
+  }
+}
+
 // Each material with its law and the figures the engine uses.
 void write_materials(std::ostream& os, const model::Model& m) {
   os << std::setprecision(6);
@@ -228,106 +336,8 @@ void write_materials(std::ostream& os, const model::Model& m) {
        << ")\n"
        << "    density " << mat.rho << "  E " << mat.young << "  nu " << mat.poisson << "  G " << mat.shear
        << "  K " << mat.bulk << '\n';
-    if (mat.law == model::MaterialLaw::JohnsonCook) {
-      os << "    yield (a + b eps_p^n)(1 + c ln(rate/rate0)): a " << mat.a << "  b " << mat.b << "  n "
-         << mat.n << "  c " << mat.c << "  rate0 " << mat.eps_dot_0 << '\n'
-         << "    SIG_max0 " << mat.sig_max0 << "  EPS_p_max " << mat.eps_p_max << "  ICC " << mat.icc
-         << "  flagVP " << mat.flag_vp;
-      if (mat.iflag == 1)
-        os << "  (Iflag 1: from SIG_Y " << mat.sig_y_input << ", UTS " << mat.uts << ", EUTS " << mat.e_uts
-           << ")";
-      os << '\n';
-      if (mat.rho_cp > 0)
-        os << "    rhoCp " << mat.rho_cp
-           << " given: adiabatic heating is not implemented in radx; the temperature "
-           << "term stays 1\n";
-    }
-    if (mat.law == model::MaterialLaw::PlasTab) {
-      const auto& tab = mat.tab;
-      os << "    yield curves sigma_y(eps_p) per strain rate: " << tab.function_id.size() << "  EPS_p_max "
-         << mat.eps_p_max << "  Fsmooth " << tab.fsmooth << " ("
-         << (tab.fsmooth == 2 ? "logarithmic" : "linear") << " in the rate)  Fcut " << mat.f_cut << '\n';
-      for (std::size_t i = 0; i < tab.function_id.size(); ++i)
-        os << "      curve " << i + 1 << ": function " << tab.function_id[i] << "  scale " << tab.scale[i]
-           << "  strain rate " << tab.rate[i] << '\n';
-      if (tab.function_id.size() > 1 && tab.rate.front() != 0)
-        os << "      (below the first rate the first curve holds: it is repeated at rate 0)\n";
-    }
-    if (mat.law == model::MaterialLaw::PlasBrit) {
-      const auto& b = mat.brit;
-      os << "    yield min((a + b eps_p^n) R, SIG_max0 (R if ICC 1)), R = 1 + c ln(rate/rate0): a " << mat.a
-         << "  b " << mat.b << "  n " << mat.n << "  SIG_max0 " << mat.sig_max0 << "  c " << mat.c
-         << "  rate0 " << mat.eps_dot_0 << "  ICC " << mat.icc << "  Fsmooth " << mat.fsmooth << "  Fcut "
-         << mat.f_cut << '\n'
-         << "    crack (direction 1): opens at EPS_t1 " << b.eps_t1
-         << ", damage (eps_1 - EPS_t1)/(EPS_m1 - EPS_t1)"
-         << " with EPS_m1 " << b.eps_m1 << ", at most d_max1 " << b.d_max1
-         << "; element deleted above EPS_f1 " << b.eps_f1 << '\n';
-    }
-    if (mat.law == model::MaterialLaw::Ogden) {
-      const auto& o = mat.ogden;
-      os << "    W = sum mu_p/alpha_p (lb1^alpha_p + lb2^alpha_p + lb3^alpha_p - 3) + "
-         << (o.iform == 2 ? "K (J - 1 - ln J)" : "K/2 (J - 1)^2") << " (Iform " << o.iform
-         << "); G above is the initial shear modulus sum mu_p alpha_p / 2, E = 2 G (1 + nu)\n";
-      for (std::size_t k = 0; k < o.mu.size(); ++k)
-        os << "      term " << k + 1 << ": mu " << o.mu[k] << "  alpha " << o.alpha[k] << '\n';
-      os << "    tension cut-off on the principal Biot stress " << o.sig_cut << '\n';
-    }
-    if (mat.law == model::MaterialLaw::FoamTab) {
-      const auto& f = mat.foam;
-      os << "    E0 " << mat.young << "  nu " << mat.poisson << "  Emax " << f.e_max << "  eps_max "
-         << f.eps_max << "  Itens " << f.itens << "  Fcut " << mat.f_cut << "  Iflag " << f.iflag
-         << "  Shape " << f.shape << "  Hys " << f.hys << '\n';
-      for (std::size_t k = 0; k < f.load_function_id.size(); ++k)
-        os << "      loading curve " << f.load_function_id[k] << "  rate " << f.load_rate[k] << "  scale "
-           << f.load_scale[k] << '\n';
-      for (std::size_t k = 0; k < f.unload_function_id.size(); ++k)
-        os << "      unloading curve " << f.unload_function_id[k] << "  rate " << f.unload_rate[k]
-           << "  scale " << f.unload_scale[k] << '\n';
-      if (f.itens == 1)
-        os << "      tension factor curve " << f.tens_function_id << "  scale " << f.tens_scale << '\n';
-    }
-    if (mat.law == model::MaterialLaw::Void)
-      os << "    no force; mass rho V, E and nu for the contact stiffness only\n";
-    if (mat.law == model::MaterialLaw::Rigid) {
-      // The bodies its connected elements form (a body is listed under the first law-13 material it met).
-      for (const auto& b : m.rigid_bodies)
-        if (b.rigid_material == mat.id)
-          os << "    rigid body of " << b.secondary.size() << " nodes on the added main node "
-             << m.nodes.id[static_cast<std::size_t>(b.main_node)] << '\n';
-    }
-    if (mat.fail_jc.on) {
-      const auto& f = mat.fail_jc;
-      os << "    /FAIL/JOHNSON: eps_f = (D1 + D2 exp(D3 sigma*))(1 + D4 ln(rate/rate0))(1 + D5 T*): D1 "
-         << f.d1 << "  D2 " << f.d2 << "  D3 " << f.d3 << "  D4 " << f.d4 << "  D5 " << f.d5 << "  rate0 "
-         << f.eps_dot_0 << "  EPSF_MIN " << f.eps_f_min << "  Ifail_sh " << f.ifail_sh << "  Ifail_so "
-         << f.ifail_so << '\n';
-    }
-    if (mat.fail_tab.on) {
-      const auto& f = mat.fail_tab;
-      os << "    /FAIL/TAB: dD = n D^(1-1/n) d_eps_p / eps_f, fails at Dcrit " << f.dcrit << "  n " << f.n
-         << "  Ifail_sh " << f.ifail_sh << "  Ifail_so " << f.ifail_so << "  P_thickfail " << f.p_thickfail
-         << '\n';
-      for (std::size_t i = 0; i < f.function_id.size(); ++i)
-        os << "      eps_f(triaxiality): function " << f.function_id[i] << " x " << f.scale[i] << " at rate "
-           << f.rate[i] << '\n';
-      if (f.size_function_id != 0)
-        os << "      element size factor: " << f.size_scale << " x function " << f.size_function_id
-           << " of L0 / " << f.el_ref << " (L0 the shell's length at t = 0)\n";
-      if (f.temp_function_id != 0)
-        os << "      temperature factor (constant function " << f.temp_function_id << "): " << f.temp_factor
-           << '\n';
-    }
-    if (mat.fail_bq.on) {
-      const auto& f = mat.fail_bq;
-      os << "    /FAIL/BIQUAD: eps_f(triaxiality) through C1 " << f.c1 << " (-1/3)  C2 " << f.c2
-         << " (0)  C3 " << f.c3 << " (1/3)  C4 " << f.c4 << " (1/sqrt 3)  C5 " << f.c5 << " (2/3)  M_Flag "
-         << f.m_flag << "  S_Flag " << f.s_flag << "  P_thickfail " << f.p_thickfail << '\n';
-      if (f.s_flag == 3) os << "      necking instability (shells): Inst_start " << f.inst_start << '\n';
-      if (f.size_function_id != 0)
-        os << "      element size factor: function " << f.size_function_id << " of L0 / " << f.el_ref
-           << " (L0 the shell's length at t = 0)\n";
-    }
+    write_law_constants(os, m, mat);
+    write_failure_models(os, mat);
   }
 }
 
