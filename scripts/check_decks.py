@@ -3081,9 +3081,8 @@ def parts_of_subset(parts, subsets, sid):
     return out
 
 
-def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subsets, elements, surfs):
-    """Boxes, element groups and surfaces. nodes: as written (ids); placed: where the boxes see them; place(o, p):
-    a point written in o where the boxes see it. Returns (groups, members, surface nodes, boxes)."""
+def check_boxes(ck, m, nodes, placed, place):
+    """Boxes, one id space: a test "is this point inside (boundary included)" per box id."""
     I = ck.issue
 
     # Boxes, one id space: a test "is this point inside (boundary included)" per box. The points come from the
@@ -3129,6 +3128,12 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
             t = sum(d[i] * u[i] for i in range(3))
             return 0 <= t <= h and norm([d[i] - t * u[i] for i in range(3)]) <= r
         boxes[o["id"]] = in_cylinder
+    return boxes
+
+
+def resolve_element_groups(ck, m, placed, parts, props, mats, subsets, elements, boxes):
+    """Every element group of every family resolved to its element ids. Returns (groups, members)."""
+    I = ck.issue
 
     groups = {}
     for root in GROUP_FAMILIES:
@@ -3221,6 +3226,12 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
 
     for key in groups:
         resolve(key)
+    return groups, members
+
+
+def surface_nodes(ck, nodes, parts, elements, surfs, groups, members):
+    """The nodes of each surface's segments, by surface id (for /GRNOD/SURF), with the surfaces' own checks."""
+    I = ck.issue
 
     def faces_of(ns):
         """Faces of a brick or a tetrahedron (node ids) with 3 or 4 distinct nodes, as sets."""
@@ -3325,6 +3336,15 @@ def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subset
         surf_nodes[o["id"]] = got
         if count == 0 and ck.errors() == before:
             I("RX403", o["pos"][0], o["pos"][1], "%s %d holds no segment" % (path, o["id"]), warning=True)
+    return surf_nodes
+
+
+def element_group_checks(ck, m, nodes, placed, place, parts, props, mats, subsets, elements, surfs):
+    """Boxes, element groups and surfaces. nodes: as written (ids); placed: where the boxes see them; place(o, p):
+    a point written in o where the boxes see it. Returns (groups, members, surface nodes, boxes)."""
+    boxes = check_boxes(ck, m, nodes, placed, place)
+    groups, members = resolve_element_groups(ck, m, placed, parts, props, mats, subsets, elements, boxes)
+    surf_nodes = surface_nodes(ck, nodes, parts, elements, surfs, groups, members)
     return groups, members, surf_nodes, boxes
 
 
