@@ -2,6 +2,10 @@
 #pragma once
 
 #include <string>
+#include <string_view>
+#include <vector>
+
+#include "parser/reading/closest_names.hpp"
 
 namespace radx::app {
 
@@ -13,9 +17,18 @@ inline constexpr int kExitUsage = 2;
 // as `--version` and the listings' first line show them: "0.1.0 (x86-64-v2)".
 inline constexpr const char* kVersionText = RADX_VERSION " (" RADX_ARCH ")";
 
-// The default deck (decks/block_on_plate), compiled into the executables so a bare `radx-starter`
+// The default deck (decks/block_impact), compiled into the executables so a bare `radx-starter`
 // runs a real model. Writes it into `dir` (unless an identical file is there) and returns its path.
 std::string write_default_starter_deck(const std::string& dir);
 std::string write_default_engine_deck(const std::string& dir);
+
+// The message for an option `who` does not take: "radx run: unknown option --thread (did you mean
+// --threads?)".
+inline std::string unknown_option(std::string_view who, std::string_view option,
+                                  const std::vector<std::string>& known) {
+  const std::string hint = did_you_mean(option, known);
+  return std::string(who) + ": unknown option " + std::string(option) +
+         (hint.empty() ? "" : " (" + hint + ")");
+}
 
 }  // namespace radx::app

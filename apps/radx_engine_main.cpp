@@ -74,7 +74,10 @@ int main(int argc, char** argv) {
     } else if (a == "--no-plot") {
       opt.plot = false;
     } else if (!a.empty() && a[0] == '-') {
-      std::cerr << "radx-engine: unknown option " << a << '\n';
+      std::cerr << radx::app::unknown_option("radx-engine", a,
+                                             {"-i", "--out", "--model", "--threads", "-nt", "--no-plot",
+                                              "--version", "-version", "--help"})
+                << '\n';
       usage(std::cerr);
       return radx::app::kExitUsage;
     } else if (opt.engine_deck.empty()) {

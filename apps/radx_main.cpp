@@ -134,7 +134,10 @@ int run(const std::vector<std::string>& args) {
     } else if (a == "--starter-only") {
       starter_only = true;
     } else if (!a.empty() && a[0] == '-') {
-      std::cerr << "radx run: unknown option " << a << '\n';
+      std::cerr << radx::app::unknown_option("radx run", a,
+                                             {"--out", "--threads", "--no-plot", "--allow-substitutions",
+                                              "--starter-only", "--help"})
+                << '\n';
       return radx::app::kExitUsage;
     } else if (sopt.deck.empty()) {
       sopt.deck = a;
@@ -211,7 +214,9 @@ int th(const std::vector<std::string>& args) {
     } else if (a == "--var") {
       selectors.push_back(args[++i]);
     } else if (!a.empty() && a[0] == '-') {
-      std::cerr << "radx th: unknown option " << a << '\n';
+      std::cerr << radx::app::unknown_option("radx th", a,
+                                             {"--csv", "--recover", "--output", "--var", "--help"})
+                << '\n';
       return radx::app::kExitUsage;
     } else if (file.empty()) {
       file = a;
@@ -344,7 +349,8 @@ int main(int argc, char** argv) {
     }
     return radx::app::regress_command(args, self, std::cout, std::cerr);
   }
-  std::cerr << "radx: unknown command '" << cmd << "'\n";
+  const std::string hint = radx::did_you_mean(cmd, {"check", "keywords", "run", "th", "regress", "help"});
+  std::cerr << "radx: unknown command '" << cmd << "'" << (hint.empty() ? "" : " (" + hint + ")") << '\n';
   usage(std::cerr);
   return radx::app::kExitUsage;
 }

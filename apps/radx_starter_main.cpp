@@ -65,7 +65,10 @@ int main(int argc, char** argv) {
       // Radioss's domain count: radx writes one model file for every process count.
       ++i;
     } else if (!a.empty() && a[0] == '-') {
-      std::cerr << "radx-starter: unknown option " << a << '\n';
+      std::cerr << radx::app::unknown_option("radx-starter", a,
+                                             {"-i", "--out", "--allow-substitutions", "-nt", "-np",
+                                              "--version", "-version", "--help"})
+                << '\n';
       usage(std::cerr);
       return radx::app::kExitUsage;
     } else if (opt.deck.empty()) {

@@ -111,7 +111,10 @@ std::optional<int> parse_regress_options(const std::vector<std::string>& args, R
     } else if (a == "--update") {
       settings.update = true;
     } else if (!a.empty() && a[0] == '-') {
-      err << "radx regress: unknown option " << a << '\n';
+      err << unknown_option("radx regress", a,
+                            {"--tol", "--work", "--timeout", "--threads", "--summary", "--junit", "--filter",
+                             "-j", "--jobs", "--keep", "--update", "--help"})
+          << '\n';
       return kExitUsage;
     } else {
       o.dirs.emplace_back(a);

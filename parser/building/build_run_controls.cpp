@@ -32,6 +32,7 @@
 #include <filesystem>
 #include <map>
 
+#include "parser/reading/closest_names.hpp"
 #include "parser/reading/field_parse.hpp"
 #include "solver/model/run_files.hpp"
 
@@ -316,6 +317,16 @@ void Builder::anim_names(model::RunControls& rc) {
       if (r->header.empty()) continue;  // the reader reports the missing name (RX306)
       // An output radx does not write changes no result: a warning, and the run goes on without it.
       const AnimFieldName* a = find_anim_field(f.path, r->header[0]);
+      if (!a && !radioss_knows_anim_field(f.path, r->header[0])) {
+        // Radioss would not write it either: a slip of the hand, which a warning would let run for hours
+        // without the field the user asked for.
+        const std::string suggestion = did_you_mean(r->header[0], anim_names_of_family(f.path));
+        error(*r, Diag::UnknownKeyword,
+              std::string(f.path) + "/" + r->header[0] + ": '" + r->header[0] + "' is not " + f.what +
+                  " Radioss knows" + (suggestion.empty() ? "" : " (" + suggestion + ")") +
+                  "; radx writes: " + accepted_anim_names(f.path) + " (docs/results.md)");
+        continue;
+      }
       if (!a) {
         warning(*r, Diag::OutputNotWritten,
                 std::string(f.path) + "/" + r->header[0] + ": '" + r->header[0] + "' is not " + f.what +
@@ -574,6 +585,63 @@ const std::vector<AnimFieldName>& anim_field_names() {
       {"/ANIM/NODA", "DT", {}, "nodal_time_step", "nodal time step", 2, {}},
   };
   return table;
+}
+
+namespace {
+
+// The /ANIM field names the Radioss engine knows (its animation reader, read in OpenRadioss), as the
+// beginnings it compares: a written name that starts with one of them is a Radioss field. `exact` names
+// must be written whole (DT, not DTX).
+struct RadiossAnimName {
+  std::string_view family;
+  std::string_view name;
+  bool exact = false;
+};
+
+const std::vector<RadiossAnimName>& radioss_anim_names() {
+  static const std::vector<RadiossAnimName> table = [] {
+    std::vector<RadiossAnimName> t;
+    auto add = [&t](std::string_view family, std::initializer_list<std::string_view> names) {
+      for (auto n : names) t.push_back({family, n});
+    };
+    add("/ANIM/VECT", {"ACC",  "CLUST", "CONT",  "CONT2", "DIS",   "DROT",  "DXANC", "FEXT",   "FINT",
+                       "FOPT", "FREAC", "FRES",  "FVEL",  "GVEL",  "MREAC", "PCONT", "PCONT2", "VEL",
+                       "VFLU", "VROT",  "ZFINT", "ZFP",   "ZFVEL", "ZMOM",  "ZVEL"});
+    add("/ANIM/TENS", {"EPSDO", "STRAI", "STRESS"});
+    add("/ANIM/ELEM",
+        {"AMS",  "BF51",  "BFRAC", "BULK",  "COLOR", "DAM1",      "DAM2",    "DAM3",    "DAMG",
+         "DENS", "DENS3", "DOMAI", "EINT",  "ENER",  "EPSD",      "EPSP",    "FIN",     "|FIN|",
+         "HOUR", "K",     "LAW20", "LAW51", "MACH",  "MOM",       "|MOM|",   "NL_EPSD", "NL_EPSP",
+         "OFF",  "P",     "PLA51", "QVIS",  "SCHLI", "SIGEQ",     "SIGX",    "SIGY",    "SIGZ",
+         "SSP",  "TDET",  "TEM51", "TEMP",  "THIC",  "TILLOTSON", "TSAIWU",  "TVIS",    "USER",
+         "USR",  "VEL",   "|VEL|", "VFRAC", "VOL",   "VORT",      "VSTRAIN", "WPLA"});
+    add("/ANIM/NODA", {"DAMA2", "DENS", "DINER", "DMAS", "ENER", "FPOT", "NDMAS", "NVAR", "PEXT", "SCHLI",
+                       "SSP", "STIF", "TEMP", "VFRAC", "ZVFRA", "ZVOL"});
+    t.push_back({"/ANIM/ELEM", "DT", true});
+    t.push_back({"/ANIM/NODA", "DT"});
+    t.push_back({"/ANIM/NODA", "P", true});
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
+bool radioss_knows_anim_field(std::string_view family, std::string_view written) {
+  const std::string w = upper(written);
+  for (const auto& n : radioss_anim_names())
+    if (n.family == family && (n.exact ? w == n.name : w.starts_with(n.name))) return true;
+  return false;
+}
+
+std::vector<std::string> anim_names_of_family(std::string_view family) {
+  std::vector<std::string> names;
+  for (const auto& a : anim_field_names())
+    if (a.family == family) names.emplace_back(a.name);
+  for (const auto& n : radioss_anim_names())
+    if (n.family == family && std::find(names.begin(), names.end(), n.name) == names.end())
+      names.emplace_back(n.name);
+  return names;
 }
 
 const AnimFieldName* find_anim_field(std::string_view family, std::string_view written) {

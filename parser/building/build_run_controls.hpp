@@ -36,6 +36,13 @@ const std::vector<AnimFieldName>& anim_field_names();
 // (its name, an alias, or its significant letters); nullptr when radx does not map that name.
 const AnimFieldName* find_anim_field(std::string_view family, std::string_view written);
 
+// Whether the Radioss engine knows `written` as a field of `family` (and so would write it): a name radx
+// does not write but Radioss knows is a warning; one Radioss does not know either is a misspelling, an error.
+bool radioss_knows_anim_field(std::string_view family, std::string_view written);
+
+// The names of `family` to suggest for a misspelt one: radx's first, then the other Radioss names.
+std::vector<std::string> anim_names_of_family(std::string_view family);
+
 // The accepted names of a family, blank separated, aliases in parentheses: "VEL DISP (DIS) ACC ...".
 std::string accepted_anim_names(std::string_view family);
 

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "parser/reading/closest_names.hpp"
 #include "parser/reading/deck.hpp"
 #include "parser/reading/deck_text.hpp"
 #include "parser/reading/field_parse.hpp"
@@ -137,6 +138,21 @@ std::string readable_alternatives(const std::string& path) {
   std::string list;
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
   return "radx reads " + list + " (docs/keywords.md)";
+}
+
+// "; did you mean /MAT/PLAS_JOHNS?" when the path is a slip from a keyword radx reads, else "".
+std::string suggested_keyword(const std::string& path) {
+  static const std::vector<std::string> read = [] {
+    std::vector<std::string> names;
+    for (const auto& k : schema::starter_keywords())
+      if (k.support != schema::Support::Ignored) {
+        names.emplace_back(k.path);
+        for (auto a : k.aliases) names.emplace_back(a);
+      }
+    return names;
+  }();
+  const std::string text = did_you_mean(path, read);
+  return text.empty() ? text : "; " + text;
 }
 
 // What a unit of `kind` may be called, for messages.
@@ -674,13 +690,12 @@ class StarterReader {
       diags_.error(Diag::UnsupportedKeyword, at(head.pos, 1), About{path, written_id},
                    path + " is not a " + family +
                        " radx reads (a Radioss keyword radx does not implement, or "
-                       "a misspelling); " +
-                       readable_alternatives(path));
+                       "a misspelling" +
+                       suggested_keyword(path) + "); " + readable_alternatives(path));
     } else {
       diags_.error(Diag::UnknownKeyword, at(head.pos, 1), About{path},
-                   "unknown keyword " + path +
-                       ": not a keyword radx knows (check the spelling); see "
-                       "docs/keywords.md for the keywords radx reads");
+                   "unknown keyword " + path + ": not a keyword radx knows (check the spelling" +
+                       suggested_keyword(path) + "); see docs/keywords.md for the keywords radx reads");
     }
   }
 

@@ -13,6 +13,7 @@
 // first field with a form radx does not declare is not supported (RX302).
 #include <algorithm>
 
+#include "parser/reading/closest_names.hpp"
 #include "parser/reading/deck.hpp"
 #include "parser/reading/deck_text.hpp"
 #include "parser/reading/field_parse.hpp"
@@ -132,12 +133,22 @@ const EngineKeywordDecl* matching_declaration(const std::vector<std::string>& to
 void report_undeclared_engine_keyword(const std::vector<std::string>& tokens, bool is_anim,
                                       const std::string& written, Where where, Diagnostics& diags) {
   const std::string forms = paths_of_root(tokens, is_anim);
-  if (forms.empty())
+  if (forms.empty()) {
+    static const std::vector<std::string> declared = [] {
+      std::vector<std::string> names;
+      for (const auto& d : schema::engine_keywords()) {
+        names.emplace_back(d.path);
+        for (auto a : d.aliases) names.emplace_back(a);
+      }
+      return names;
+    }();
+    const std::string suggestion = did_you_mean(written, declared);
     diags.error(Diag::UnknownKeyword, where, About{written},
                 "engine keyword " + written +
-                    " is not a keyword of the Radioss engine deck (Radioss stops on it too); see "
-                    "docs/keywords.md for the engine keywords");
-  else
+                    " is not a keyword of the Radioss engine deck (Radioss stops on it too)" +
+                    (suggestion.empty() ? "" : " (" + suggestion + ")") +
+                    "; see docs/keywords.md for the engine keywords");
+  } else
     diags.error(Diag::UnsupportedKeyword, where, About{written},
                 "engine keyword " + written + " is not a form radx reads; radx reads " + forms +
                     " (docs/keywords.md)");
