@@ -132,6 +132,16 @@ void check_engine_deck_beside(const StarterOptions& opt, bool readable, const mo
   check_cycle_count(engine_deck, controls, model, step, diags);
 }
 
+// The total mass and each interface's gap and stiffness ranges, as the prepared model has them.
+void print_prepared_figures(std::ostream& out, const model::Model& model) {
+  out << "  total mass " << std::setprecision(6) << model.total_mass << ' ' << model.units.mass_name << '\n';
+  for (const auto& in : model.interfaces) {
+    out << "  interface " << in.id << (in.lagdt ? " (LAGDT)" : "") << ": " << in.secondary_nodes.size()
+        << " secondary nodes, gap " << in.gap_lo << " to " << in.gap_hi << ", stiffness " << in.stiff_lo
+        << " to " << in.stiff_hi << '\n';
+  }
+}
+
 // The summary on standard output: the model's counts, its mass and interfaces, the diagnostics' counts.
 void print_starter_summary(std::ostream& out, const StarterOptions& opt, bool readable,
                            const model::Model& model, const StarterResult& res) {
@@ -141,12 +151,11 @@ void print_starter_summary(std::ostream& out, const StarterOptions& opt, bool re
         << model.shells3.size() << ", bricks " << model.bricks.size()
         << (model.tetras.size() == 0 ? std::string() : ", tetrahedra " + std::to_string(model.tetras.size()))
         << ", parts " << model.parts.size() << ", interfaces " << model.interfaces.size() << '\n';
-    out << "  total mass " << std::setprecision(6) << model.total_mass << ' ' << model.units.mass_name
-        << '\n';
-    for (const auto& in : model.interfaces) {
-      out << "  interface " << in.id << (in.lagdt ? " (LAGDT)" : "") << ": " << in.secondary_nodes.size()
-          << " secondary nodes, gap " << in.gap_lo << " to " << in.gap_hi << ", stiffness " << in.stiff_lo
-          << " to " << in.stiff_hi << '\n';
+    if (res.errors > 0) {
+      // Masses, gaps and stiffnesses of a model that is not whole would mislead: say they are missing.
+      out << "  mass, gaps and stiffnesses not computed: the starter stopped on the errors above\n";
+    } else {
+      print_prepared_figures(out, model);
     }
   }
   out << "  " << res.errors << " error(s), " << res.warnings << " warning(s)\n";
@@ -155,8 +164,9 @@ void print_starter_summary(std::ostream& out, const StarterOptions& opt, bool re
 // The model file (a deck without errors; an earlier one that no longer matches the deck is removed) and the
 // listing NAME_0000.out.
 void write_starter_outputs(const StarterOptions& opt, const Deck& deck, const model::Model& model,
-                           const Diagnostics& diags, std::chrono::steady_clock::time_point t0,
-                           StarterResult& res, std::ostream& out, std::ostream& err) {
+                           const model::StepEstimate& step, const Diagnostics& diags,
+                           std::chrono::steady_clock::time_point t0, StarterResult& res, std::ostream& out,
+                           std::ostream& err) {
   std::error_code ec;
   fs::create_directories(opt.out_dir, ec);
   const std::string root = (fs::path(opt.out_dir) / model::starter_output_root(opt.deck)).string();
@@ -190,6 +200,7 @@ void write_starter_outputs(const StarterOptions& opt, const Deck& deck, const mo
   li.errors = res.errors;
   li.warnings = res.warnings;
   li.model_file = res.model_path;
+  li.smallest_steps = step.smallest;
   li.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::ostringstream listing;
   io::write_starter_listing(listing, li);
@@ -231,7 +242,7 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
   if (readable) model = build_prepared_model(deck, opt.deck, diags);
   model::StepEstimate step;
   if (readable && !diags.has_errors()) {
-    step = model::estimate_stable_step(model);
+    step = model::estimate_stable_step(model, 10);
     check_initial_step(deck, model, step, diags);
   }
   check_engine_deck_beside(opt, readable, model, step, diags);
@@ -240,7 +251,7 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
   res.warnings = diags.warning_count();
   diags.print(err);
   print_starter_summary(out, opt, readable, model, res);
-  if (opt.write_outputs && readable) write_starter_outputs(opt, deck, model, diags, t0, res, out, err);
+  if (opt.write_outputs && readable) write_starter_outputs(opt, deck, model, step, diags, t0, res, out, err);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   out << "  starter time " << std::fixed << std::setprecision(3) << secs << " s\n";
   res.exit_code = res.errors > 0 ? 1 : 0;

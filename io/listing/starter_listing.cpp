@@ -394,8 +394,10 @@ void write_properties(std::ostream& os, const model::Model& m) {
   }
 }
 
+constexpr const char* kNotComputed = "not computed (the starter stopped on errors)";
+
 // Each part with its property, material, element count and mass, and the total mass.
-void write_parts(std::ostream& os, const model::Model& m) {
+void write_parts(std::ostream& os, const model::Model& m, bool prepared) {
   const auto& u = m.units;
   heading(os, "PARTS AND MASSES");
   os << "  " << std::left << std::setw(10) << "part" << std::setw(34) << "title" << std::setw(10)
@@ -404,10 +406,43 @@ void write_parts(std::ostream& os, const model::Model& m) {
   for (const auto& p : m.parts) {
     os << "  " << std::left << std::setw(10) << p.id << std::setw(34) << p.title.substr(0, 32)
        << std::setw(10) << (p.property >= 0 ? m.properties[p.property].id : 0) << std::setw(10)
-       << (p.material >= 0 ? m.materials[p.material].id : 0) << std::setw(12) << p.element_count << p.mass
-       << '\n';
+       << (p.material >= 0 ? m.materials[p.material].id : 0) << std::setw(12) << p.element_count;
+    if (prepared)
+      os << p.mass;
+    else
+      os << "-";
+    os << '\n';
   }
-  os << "  total mass " << m.total_mass << " " << u.mass_name << '\n';
+  if (prepared)
+    os << "  total mass " << m.total_mass << " " << u.mass_name << '\n';
+  else
+    os << "  total mass " << kNotComputed << '\n';
+}
+
+// The elements with the smallest steps, where a model's step is decided: a small or distorted element shows
+// here before it costs hours.
+void write_smallest_steps(std::ostream& os, const model::Model& m, const StarterListingInput& in) {
+  heading(os, "SMALLEST ELEMENT TIME STEPS");
+  if (in.errors > 0) {
+    os << "  " << kNotComputed << '\n';
+    return;
+  }
+  if (in.smallest_steps.empty()) {
+    os << "  no shell or solid element with a material that has a step\n";
+    return;
+  }
+  os << "  L / c of each shell and solid at rest, without bulk viscosity and before the /DT scale factor "
+        "(time "
+     << m.units.time_name << ")\n";
+  os << "  " << std::left << std::setw(6) << "rank" << std::setw(16) << "element" << std::setw(12) << "id"
+     << std::setw(10) << "part"
+     << "dt\n";
+  for (std::size_t k = 0; k < in.smallest_steps.size(); ++k) {
+    const auto& s = in.smallest_steps[k];
+    os << "  " << std::left << std::setw(6) << k + 1 << std::setw(16) << model::element_type_name(s.type)
+       << std::setw(12) << s.element_id << std::setw(10)
+       << (s.part >= 0 ? m.parts[static_cast<std::size_t>(s.part)].id : 0) << s.dt << '\n';
+  }
 }
 
 // The sensors and when they switch.
@@ -428,6 +463,13 @@ void write_sensors(std::ostream& os, const model::Model& m) {
 // The contact interfaces: each one's echo, surfaces and law.
 void write_interfaces(std::ostream& os, const model::Model& m, const StarterListingInput& in) {
   heading(os, "CONTACT INTERFACES");
+  auto range = [&in, &os](double lo, double hi) {
+    if (in.errors > 0) return std::string(kNotComputed);
+    std::ostringstream r;
+    r.copyfmt(os);  // the figures as the rest of the listing prints them
+    r << lo << " to " << hi;
+    return r.str();
+  };
   for (std::size_t k = 0; k < m.interfaces.size(); ++k) {
     const auto& c = m.interfaces[k];
     os << "  interface " << c.id << " \"" << c.title << "\"  "
@@ -440,8 +482,8 @@ void write_interfaces(std::ostream& os, const model::Model& m, const StarterList
        << (c.main_surface >= 0 ? m.surfaces[c.main_surface].segments.size() : 0) << '\n'
        << "      Gapmin                 " << c.gapmin
        << (c.gapmin_automatic ? "  (automatic: min(t, l/10, lmin/2))" : "") << '\n'
-       << "      gap g                  " << c.gap_lo << " to " << c.gap_hi << '\n'
-       << "      stiffness K            " << c.stiff_lo << " to " << c.stiff_hi << '\n'
+       << "      gap g                  " << range(c.gap_lo, c.gap_hi) << '\n'
+       << "      stiffness K            " << range(c.stiff_lo, c.stiff_hi) << '\n'
        << "      Stfac                  " << c.stfac << '\n'
        << "      VISs                   " << c.vis_s << '\n'
        << "      VISF                   " << c.vis_f << '\n'
@@ -532,7 +574,8 @@ void write_starter_listing(std::ostream& os, const StarterListingInput& in) {
   write_counts(os, m);
   write_materials(os, m);
   write_properties(os, m);
-  write_parts(os, m);
+  write_parts(os, m, in.errors == 0);
+  write_smallest_steps(os, m, in);
   write_sensors(os, m);
   write_interfaces(os, m, in);
   write_tied_interfaces(os, m);

@@ -54,12 +54,7 @@ Where element_where(const Deck& deck, model::ElementType t, std::int64_t id) {
 }
 
 std::string element_name(const model::StepEstimate& step) {
-  return std::string(step.type == model::ElementType::Brick8    ? "brick "
-                     : step.type == model::ElementType::Brick20 ? "20-node brick "
-                     : step.type == model::ElementType::Tetra4  ? "tetrahedron "
-                     : step.type == model::ElementType::Shell3  ? "3-node shell "
-                                                                : "shell ") +
-         std::to_string(step.element_id);
+  return std::string(model::element_type_name(step.type)) + " " + std::to_string(step.element_id);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -54,6 +55,21 @@ enum class ElementType : std::uint8_t {
     case ElementType::Brick20: return 20;
   }
   return 0;
+}
+
+// The element type as messages and listings name it ("brick", "3-node shell").
+[[nodiscard]] constexpr std::string_view element_type_name(ElementType t) {
+  switch (t) {
+    case ElementType::Shell4: return "shell";
+    case ElementType::Shell3: return "3-node shell";
+    case ElementType::Brick8: return "brick";
+    case ElementType::Tetra4: return "tetrahedron";
+    case ElementType::Spring2: return "spring";
+    case ElementType::Truss2: return "truss";
+    case ElementType::Beam2: return "beam";
+    case ElementType::Brick20: return "20-node brick";
+  }
+  return "element";
 }
 
 // All elements of one type, element-major connectivity (conn[e * npe + k], dense node indices).

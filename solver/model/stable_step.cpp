@@ -68,7 +68,21 @@ double triangle_length(const Vec3& x1, const Vec3& x2, const Vec3& x3) {
   return longest > 0 ? 2.0 * triangle_area(x1, x2, x3) / longest : 0;
 }
 
-StepEstimate estimate_stable_step(const Model& m) {
+namespace {
+
+// Keeps the `keep` smallest steps seen, smallest first; a later element with an equal step stays after
+// the earlier one.
+void keep_smallest(std::vector<ElementStep>& smallest, std::size_t keep, const ElementStep& s) {
+  if (keep == 0 || (smallest.size() == keep && !(s.dt < smallest.back().dt))) return;
+  const auto at = std::upper_bound(smallest.begin(), smallest.end(), s.dt,
+                                   [](double dt, const ElementStep& e) { return dt < e.dt; });
+  smallest.insert(at, s);
+  if (smallest.size() > keep) smallest.pop_back();
+}
+
+}  // namespace
+
+StepEstimate estimate_stable_step(const Model& m, std::size_t keep) {
   StepEstimate best;
   double dt_min = std::numeric_limits<double>::infinity();
   for (const ElementBlock* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras, &m.bricks20}) {
@@ -105,8 +119,12 @@ StepEstimate estimate_stable_step(const Model& m) {
       const double dt = l / c;
       if (dt < dt_min) {
         dt_min = dt;
-        best = {dt, b->type, b->id[e], static_cast<std::int32_t>(e)};
+        best.dt = dt;
+        best.type = b->type;
+        best.element_id = b->id[e];
+        best.element = static_cast<std::int32_t>(e);
       }
+      keep_smallest(best.smallest, keep, {dt, b->type, b->id[e], static_cast<std::int32_t>(e), b->part[e]});
     }
   }
   return best;

@@ -2,12 +2,14 @@
 // masses against the closed form rho * t * A (shells) and rho * V (bricks).
 #include <array>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "io/hdf5/model_file.hpp"
+#include "solver/model/stable_step.hpp"
 #include "test_util.hpp"
 
 namespace fs = std::filesystem;
@@ -123,6 +125,63 @@ TEST_CASE("the default deck gives a listing and a model file whose masses match 
   for (double v : m.node_mass) nodal += v;
   CHECK(nodal == Approx(expected).epsilon(1e-12));  // lumping conserves the mass
   CHECK(m.interfaces.size() == 2);
+}
+
+TEST_CASE("the starter listing names the ten smallest element steps, L / c of the elements at rest",
+          "[app]") {
+  // decks/block_on_plate: 5 mm aluminium cubes (E 70000 MPa, nu 0.33, rho 2.7e-9 Mg/mm^3) and 10 mm steel
+  // shells (E 210000 MPa, rho 7.85e-9). Brick: L = V / largest face = 5 mm, c = sqrt((K + 4G/3) / rho);
+  // shell: L = 10 mm, c = sqrt(E / rho). The bricks' 8.07e-7 s is below the shells' 1.93e-6 s, so the ten
+  // smallest are ten of the 64 equal bricks: the first ten in element order.
+  const double E = 70000, nu = 0.33, rho = 2.7e-9;
+  const double K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
+  const double dt_brick = 5.0 / std::sqrt((K + 4 * G / 3) / rho);
+  const double dt_shell = 10.0 / std::sqrt(210000 / 7.85e-9);
+  REQUIRE(dt_brick < dt_shell);
+  radx::test::TempDir dir;
+  REQUIRE(run(std::string(RADX_STARTER_EXE) + " " + kDefaultDeck + " --out " + dir.path().string()) == 0);
+  radx::model::Model m;
+  std::string error;
+  REQUIRE(radx::io::read_model_file((dir.path() / "BLOCK_ON_PLATE_0000.hdf").string(), m, error));
+  const auto step = radx::model::estimate_stable_step(m, 10);
+  REQUIRE(step.smallest.size() == 10);
+  for (std::size_t k = 0; k < 10; ++k) {
+    CHECK(step.smallest[k].type == radx::model::ElementType::Brick8);
+    CHECK(step.smallest[k].dt == Approx(dt_brick).epsilon(1e-9));  // the same formula, another order of sums
+    CHECK(step.smallest[k].element_id == m.bricks.id[k]);
+    CHECK(m.parts[static_cast<std::size_t>(step.smallest[k].part)].id == 2);
+  }
+  CHECK(step.dt == step.smallest[0].dt);
+  const auto listing = slurp(dir.path() / "BLOCK_ON_PLATE_0000.out");
+  const auto at = listing.find("SMALLEST ELEMENT TIME STEPS");
+  REQUIRE(at != std::string::npos);
+  std::ostringstream first;
+  first << "  1     brick           " << m.bricks.id[0];
+  CHECK(listing.find(first.str(), at) != std::string::npos);
+  CHECK(listing.find("  10    brick", at) != std::string::npos);
+  CHECK(listing.find("  11 ", at) > listing.find("CONTACT INTERFACES", at));  // ten rows, no more
+}
+
+TEST_CASE("after errors the starter prints no mass, gap or stiffness of a model that is not whole", "[app]") {
+  radx::test::TempDir dir;
+  std::string deck = slurp(kDefaultDeck);
+  const auto p = deck.find("/MAT/PLAS_JOHNS");
+  REQUIRE(p != std::string::npos);
+  deck.replace(p, 15, "/MAT/PLAS_JHONS");  // the plate loses its material: its mass cannot be computed
+  const auto path = dir.write("ERR_0000.rad", deck);
+  const std::string log = dir.file("starter.log");
+  const int rc = std::system(
+      (std::string(RADX_STARTER_EXE) + " " + path + " --out " + dir.path().string() + " > " + log + " 2>&1")
+          .c_str());
+  CHECK((WIFEXITED(rc) ? WEXITSTATUS(rc) : -1) == 1);
+  const auto out = slurp(log);
+  CHECK(out.find("total mass") == std::string::npos);
+  CHECK(out.find("gap ") == std::string::npos);
+  CHECK(out.find("not computed") != std::string::npos);
+  const auto listing = slurp(dir.path() / "ERR_0000.out");
+  CHECK(listing.find("total mass not computed (the starter stopped on errors)") != std::string::npos);
+  CHECK(listing.find("gap g                  not computed") != std::string::npos);
+  CHECK(listing.find("stiffness K            not computed") != std::string::npos);
 }
 
 TEST_CASE("a deck that now has errors removes the stale model file of an earlier run", "[app]") {
