@@ -408,6 +408,7 @@ void fill_run_summary(io::RunSummary& s, const solver::RunResult& result, const 
   s.added_mass = result.last.added_mass;
   s.momentum = result.last.momentum;
   s.energy = to_io(result.last.energy);
+  if (const auto w = io::hourglass_warning(s.energy); !w.empty()) s.add_warning(w);
   s.substitutions = model.substitutions;
   if (const auto* c = engine.contact())
     for (const auto& r : c->results())
@@ -416,6 +417,11 @@ void fill_run_summary(io::RunSummary& s, const solver::RunResult& result, const 
                                                   r.deactivated_nodes, r.mean_candidates(), r.search_sorts});
   if (const auto* c = engine.contact(); c != nullptr && c->has_lagrange())
     fill_lagrange_summary(c->lagrange_stats(), s.lagrange);
+  const auto& by_part = engine.deleted_by_part();
+  for (std::size_t p = 0; p < by_part.size(); ++p)
+    if (by_part[p] > 0) s.deleted_by_part.push_back({model.parts[p].id, model.parts[p].title, by_part[p]});
+  for (const auto& d : engine.first_deleted())
+    s.first_deleted.push_back({d.kind, d.element_id, d.part_id, d.cycle, d.time});
   s.states = outputs.states_written();
   s.series = outputs.series_path();
   if (!model.time_histories.empty() || controls.th_dt < 1e29) s.time_history = th_path;

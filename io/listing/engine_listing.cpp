@@ -275,6 +275,11 @@ void write_energy_balance(std::ostream& os, const EnergyBalance& e) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.1f %%", e.error_percent());
   row(os, "error 100 (E / (E0 + W) - 1)", buf);
+  if (e.internal > 0) {
+    std::snprintf(buf, sizeof buf, "%.1f %%", 100.0 * e.hourglass / e.internal);
+    row(os, "hourglass / internal", buf);
+  }
+  if (const auto w = hourglass_warning(e); !w.empty()) os << "  WARNING: " << w << '\n';
 }
 
 // Cycles, time, cost, masses and momentum.
@@ -354,6 +359,22 @@ void write_contact_figures(std::ostream& os, const RunSummary& s) {
   }
 }
 
+// How many elements each part lost, and the first ones.
+void write_deleted_elements(std::ostream& os, const RunSummary& s) {
+  if (s.deleted_by_part.empty()) return;
+  heading(os, "DELETED ELEMENTS");
+  row(os, "total", std::to_string(s.deleted_total()));
+  for (const auto& p : s.deleted_by_part)
+    row(os, ("part " + std::to_string(p.part_id) + (p.title.empty() ? "" : " \"" + p.title + "\"")).c_str(),
+        std::to_string(p.count));
+  os << "  the first " << s.first_deleted.size() << ":\n";
+  for (const auto& d : s.first_deleted) {
+    char at[64];
+    std::snprintf(at, sizeof at, " (cycle %lld, t = %.5E)", static_cast<long long>(d.cycle), d.time);
+    os << "    " << d.kind << " " << d.element_id << " of part " << d.part_id << at << '\n';
+  }
+}
+
 // What was written and how long writing took.
 void write_results_figures(std::ostream& os, const RunSummary& s) {
   if (s.states == 0 && s.time_history.empty()) return;
@@ -368,6 +389,17 @@ void write_results_figures(std::ostream& os, const RunSummary& s) {
 
 }  // namespace
 
+std::string hourglass_warning(const EnergyBalance& e) {
+  if (!(e.internal > 0) || !(e.hourglass > 0.1 * e.internal)) return {};
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.1f %%", 100.0 * e.hourglass / e.internal);
+  return std::string("hourglass energy is ") + buf +
+         " of the internal energy, above 10 %: the one-point elements' zero-energy modes carry work the "
+         "mesh should; use physically stabilised or fully integrated formulations (QEPH shells Ishell 24, "
+         "HEPH "
+         "bricks Isolid 24, or Isolid 14 and 17) or a finer mesh";
+}
+
 void write_run_summary(std::ostream& os, const RunSummary& s) {
   heading(os, termination_label(s.status).data());
   if (!s.message.empty()) os << "  " << s.message << '\n';
@@ -378,6 +410,7 @@ void write_run_summary(std::ostream& os, const RunSummary& s) {
   }
 
   write_run_figures(os, s);
+  write_deleted_elements(os, s);
   write_contact_figures(os, s);
   write_results_figures(os, s);
   os << rule;

@@ -150,6 +150,25 @@ struct RunSummary {
   std::array<double, 3> momentum{0, 0, 0};
   EnergyBalance energy;
   std::vector<InterfaceSummary> interfaces;
+  // Deleted elements (failed material, broken spring, truss or beam): the count of each part that lost any,
+  // and the first ones with when they went (the listing names up to a thousand as they go).
+  struct DeletedPart {
+    std::int64_t part_id = 0;
+    std::string title;
+    std::int64_t count = 0;
+  };
+  struct DeletedElement {
+    std::string kind;
+    std::int64_t element_id = 0, part_id = 0, cycle = 0;
+    double time = 0;
+  };
+  std::vector<DeletedPart> deleted_by_part;
+  std::vector<DeletedElement> first_deleted;
+  [[nodiscard]] std::int64_t deleted_total() const {
+    std::int64_t n = 0;
+    for (const auto& p : deleted_by_part) n += p.count;
+    return n;
+  }
   // --allow-substitutions: what ran instead of what the deck asks (from the model file).
   std::vector<std::string> substitutions;
   // The run's warnings, in the order said: those of the engine deck and its checks against the model, then
@@ -178,6 +197,11 @@ struct RunSummary {
   std::string time_history;  // P_th.h5, or empty
   double output_seconds = 0;
 };
+
+// The warning a run whose hourglass energy passes 10 % of its internal energy gets (the ratio Radioss users
+// check: above it the one-point elements' zero-energy modes carry a share of the work that the mesh's real
+// deformation should), or "" below it.
+std::string hourglass_warning(const EnergyBalance& e);
 
 // Wall microseconds per element per cycle: 1e6 wall / (elements cycles); 0 when either count is 0. The
 // second form takes another wall time of the run (the element loop's).

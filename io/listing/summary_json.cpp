@@ -199,6 +199,27 @@ std::string summary_json(const RunSummary& s) {
           ", \"search_sorts\": " + std::to_string(in.search_sorts) + "}");
   }
   w.close(']');
+  w.key("deleted_elements");
+  w.open('{');
+  w.field_int("total", static_cast<long long>(s.deleted_total()));
+  w.key("by_part");
+  w.open('[');
+  for (const auto& p : s.deleted_by_part) {
+    w.item();
+    w.raw("{\"part\": " + std::to_string(p.part_id) + ", \"title\": " + json_string(p.title) +
+          ", \"count\": " + std::to_string(p.count) + "}");
+  }
+  w.close(']');
+  w.key("first");
+  w.open('[');
+  for (const auto& d : s.first_deleted) {
+    w.item();
+    w.raw("{\"element\": " + json_string(d.kind) + ", \"id\": " + std::to_string(d.element_id) +
+          ", \"part\": " + std::to_string(d.part_id) + ", \"cycle\": " + std::to_string(d.cycle) +
+          ", \"time\": " + json_number(d.time) + "}");
+  }
+  w.close(']');
+  w.close('}');
   w.key("substitutions");
   w.open('[');
   for (const auto& text : s.substitutions) {

@@ -287,13 +287,14 @@ constexpr std::int64_t kDeletionLines = 1000;
 // Once an element's life factor reaches 0 (its material failed, a spring or truss broke), the listing says
 // which, once, as Radioss's "DELETE OF ... ELEMENT" and "RUPTURE OF ..." lines do. Scans the groups only in a
 // cycle whose count of such elements changed.
-void ExplicitEngine::list_deleted_elements() {
+void ExplicitEngine::list_deleted_elements(std::int64_t cycle, double time) {
   std::int64_t ended = 0;
   for (const auto& v : group_votes_) ended += v.ended;
   if (ended == ended_elements_) return;
   const std::int64_t before = ended_elements_;
   ended_elements_ = ended;
   if (deletion_listed_.empty()) deletion_listed_.assign(model_.cell_count(), 0);
+  if (deleted_by_part_.empty()) deleted_by_part_.assign(model_.parts.size(), 0);
   std::int64_t listed = before;
   groups_.for_each([&](const auto& g) {
     const auto& block = element_block(model_, g);
@@ -305,9 +306,13 @@ void ExplicitEngine::list_deleted_elements() {
       if (seen) continue;
       seen = 1;
       ++listed;
+      ++deleted_by_part_[static_cast<std::size_t>(g.part)];
+      const std::int64_t part_id = model_.parts[static_cast<std::size_t>(g.part)].id;
+      if (first_deleted_.size() < kFirstDeleted)
+        first_deleted_.push_back({element_kind_name(g), block.id[e], part_id, cycle, time});
       if (listed <= kDeletionLines)
         deletion_events_.push_back(element_kind_name(g) + " " + std::to_string(block.id[e]) + " of part " +
-                                   std::to_string(model_.parts[static_cast<std::size_t>(g.part)].id) +
+                                   std::to_string(part_id) +
                                    " deleted: it failed and carries no force from now on");
       else if (listed == kDeletionLines + 1)
         deletion_events_.push_back("more elements are deleted from here on; the listing names the first " +
@@ -1277,7 +1282,7 @@ void ExplicitEngine::external_loads(LoopState& L) {
 void ExplicitEngine::element_forces(LoopState& L) {
   const auto t0 = std::chrono::steady_clock::now();
   compute_element_forces(CycleInfo{L.dt1, L.dt2, L.time});
-  list_deleted_elements();
+  list_deleted_elements(L.cycle, L.time);
   assemble_and_accelerate(fuse_accelerations_);
   L.element_seconds += seconds_since(t0);
 }

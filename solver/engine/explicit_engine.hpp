@@ -161,6 +161,16 @@ class ExplicitEngine {
   // Events since the last call, in Radioss's words: sensors switching on or off, rigid bodies released by
   // their sensor. One line each; taken (emptied) by the call.
   std::vector<std::string> take_events();
+  // Deleted elements so far (failed material, broken spring, truss or beam): how many per part (by dense
+  // part index), and the first kFirstDeleted of them with when they went, for the listing and the summary.
+  struct DeletedElement {
+    std::string kind;  // "shell", "brick", ...
+    std::int64_t element_id = 0, part_id = 0, cycle = 0;
+    double time = 0;
+  };
+  static constexpr std::size_t kFirstDeleted = 10;
+  [[nodiscard]] const std::vector<std::int64_t>& deleted_by_part() const { return deleted_by_part_; }
+  [[nodiscard]] const std::vector<DeletedElement>& first_deleted() const { return first_deleted_; }
   // The sensors' state (activation times).
   [[nodiscard]] const Sensors& sensors() const { return sensors_; }
   // Whether the assembly pass also computes a = f / m (see fuse_accelerations_).
@@ -223,6 +233,8 @@ class ExplicitEngine {
   std::vector<std::uint8_t> deletion_listed_;
   std::int64_t ended_elements_ = 0;
   std::vector<std::string> deletion_events_;
+  std::vector<std::int64_t> deleted_by_part_;
+  std::vector<DeletedElement> first_deleted_;
   // The time loop's state between stages (run() lists the stages).
   struct LoopState {
     double time = 0, dt1 = 0, dt2 = 0;
@@ -240,7 +252,7 @@ class ExplicitEngine {
   void element_forces(LoopState& L);
   void contact_forces(LoopState& L);
   void tell_contact_deleted_elements();
-  void list_deleted_elements();
+  void list_deleted_elements(std::int64_t cycle, double time);
   void follow_moving_skews();
   bool choose_time_step(LoopState& L, RunResult& res);
   void accelerations(LoopState& L);
