@@ -9,6 +9,7 @@ exact columns (docs/theory/deck-format.md). Edit the script and regenerate rathe
     python3 scripts/make_block_on_plate.py --variant ctclaw # only the /CTCLAW variant
     python3 scripts/make_block_on_plate.py --variant sets   # only the /SET/GENERAL variant
     python3 scripts/make_block_on_plate.py --variant set_operations  # the set-operations test deck
+    python3 scripts/make_block_on_plate.py --variant showcase  # the embedded default deck
     python3 scripts/make_block_on_plate.py --out /tmp/x     # somewhere else
     python3 scripts/make_block_on_plate.py --v0 50 --stfac 30 --block-layers 2 --out /tmp/x
                                                             # stiff, fast contact (the LAGDT tests)
@@ -23,6 +24,10 @@ Variants:
   sets     decks/block_on_plate_sets/BLOCK_ON_PLATE_SETS_0000.rad and _0001.rad: the penalty deck with its node
            groups and surfaces given as sets (/SET/COLLECT and /SET/GENERAL: the same members, so the same
            results to the bit)
+  showcase decks/block_impact/BLOCK_IMPACT_0000.rad and _0001.rad, the deck the executables embed and run by
+           default: what a crash engineer would choose for the same impact (QEPH shells, Ishell 24; HEPH bricks,
+           Isolid 24; a 5 mm plate mesh) with both interfaces /INTER/LAGDT/TYPE7 and /DT/INTER/CST, so that tens
+           of pairs switch to Lagrange multipliers at impact and slide with friction after the switch
   set_operations  decks/verification/set_operations/BLOCK_ON_PLATE_SET_OPS_0000.rad and _0001.rad: the sets
            variant with the block and the plate built by set operations (a union of two sets intersected
            with a third; everything less the block), which hold the same members again
@@ -167,7 +172,9 @@ def check_geometry(nodes, shell_list, brick_list):
 
 
 RUN_NAMES = {"penalty": "BLOCK_ON_PLATE", "lagdt": "BLOCK_ON_PLATE_LAGDT", "ctclaw": "BLOCK_ON_PLATE_CTCLAW",
-             "sets": "BLOCK_ON_PLATE_SETS", "set_operations": "BLOCK_ON_PLATE_SET_OPS"}
+             "sets": "BLOCK_ON_PLATE_SETS", "set_operations": "BLOCK_ON_PLATE_SET_OPS", "showcase": "BLOCK_IMPACT"}
+# The variants whose interfaces are /INTER/LAGDT/TYPE7.
+LAGDT_VARIANTS = ("lagdt", "showcase")
 # Where each variant's folder goes, under --out (default decks/).
 FOLDERS = {"set_operations": os.path.join("verification", "set_operations")}
 # The /CTCLAW variant's laws (docs/theory/contact-laws.md; Mg, mm, s: pressures in MPa, Kc in MPa/mm, CtLin in MPa
@@ -180,7 +187,8 @@ CTCLAW_LAWS = {1: "n2s13{pz0.01,pe200,KcMax1e5,Mu0.1,CtLin1e-3}", 2: "n1s11{Kc-1
 
 
 def starter_deck(variant):
-    lagdt = variant == "lagdt"
+    lagdt = variant in LAGDT_VARIANTS
+    showcase = variant == "showcase"
     run = RUN_NAMES[variant]
     pn, bn = plate_nodes(), block_nodes()
     sh, br = shells(), bricks()
@@ -189,7 +197,8 @@ def starter_deck(variant):
     d.raw("#RADIOSS STARTER")
     what = {"penalty": "", "lagdt": ", LAGDT variant", "ctclaw": ", /CTCLAW variant",
             "sets": ", /SET/GENERAL variant (the same model as BLOCK_ON_PLATE)",
-            "set_operations": ", set-operations variant (the same model as BLOCK_ON_PLATE)"}[variant]
+            "set_operations": ", set-operations variant (the same model as BLOCK_ON_PLATE)",
+            "showcase": " (QEPH shells, HEPH bricks, LAGDT contact)"}[variant]
     d.comment("radx default deck%s:" % what,
               "a steel plate (Johnson-Cook shells, clamped edges) hit by an aluminium block (elastic bricks)",
               "at 10 m/s. Units: Mg, mm, s (stress in MPa, force in N, energy in mJ).",
@@ -216,10 +225,18 @@ def starter_deck(variant):
     d.card("/PART", 1, "Plate", prop_ID=1, mat_ID=1)
     d.card("/PART", 2, "Block", prop_ID=2, mat_ID=2)
     d.ruler()
-    d.raw("#  Ishell Ismstr Ish3n Idrill = 0: from /DEF_SHELL (all 0), so Ishell 1, Ismstr 2, Ish3n 2, Idrill 0")
-    d.card("/PROP/SHELL", 1, "Plate shell 1 mm with 5 integration points", N=5, Thick=PLATE_T, Ithick=1, Iplas=1)
-    d.raw("#  Isolid Ismstr Icpre Iframe = 0: from /DEF_SOLID (all 0), so Isolid 1, Ismstr 4, Iframe 1")
-    d.card("/PROP/SOLID", 2, "Block solid with one integration point")
+    if showcase:
+        d.raw("#  QEPH (Ishell 24): one point in the plane with physical hourglass stiffness, where BT4's viscous",
+              "#  hourglass would take a tenth and more of the impact energy on this coarse plate")
+        d.card("/PROP/SHELL", 1, "Plate shell 1 mm, QEPH, 5 integration points", Ishell=24, N=5, Thick=PLATE_T,
+               Ithick=1, Iplas=1)
+        d.raw("#  HEPH (Isolid 24): one point with physical hourglass stiffness, co-rotational")
+        d.card("/PROP/SOLID", 2, "Block solid, HEPH", Isolid=24)
+    else:
+        d.raw("#  Ishell Ismstr Ish3n Idrill = 0: from /DEF_SHELL (all 0), so Ishell 1, Ismstr 2, Ish3n 2, Idrill 0")
+        d.card("/PROP/SHELL", 1, "Plate shell 1 mm with 5 integration points", N=5, Thick=PLATE_T, Ithick=1, Iplas=1)
+        d.raw("#  Isolid Ismstr Icpre Iframe = 0: from /DEF_SOLID (all 0), so Isolid 1, Ismstr 4, Iframe 1")
+        d.card("/PROP/SOLID", 2, "Block solid with one integration point")
     d.ruler()
     d.card("/MAT/PLAS_JOHNS", 1, "Steel (Johnson-Cook)", RHO_I=7.85e-9, RHO_ref=None, E=210000.0, nu=0.3,
            a=250.0, b=450.0, n=0.3, c=0.014, EPS_DOT_0=1.0)
@@ -304,7 +321,7 @@ def interface(d, iid, title, lagdt, grnod, surf, istf, inacti, fric, iform, viss
 
 
 def engine_deck(variant, lagdt_tmin=1e-6):
-    lagdt = variant == "lagdt"
+    lagdt = variant in LAGDT_VARIANTS
     run = RUN_NAMES[variant]
     e = rc.Deck(engine=True)
     e.raw("#RADIOSS ENGINE")
@@ -329,7 +346,7 @@ def engine_deck(variant, lagdt_tmin=1e-6):
 def main(argv):
     here = os.path.dirname(os.path.abspath(__file__))
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--variant", choices=("penalty", "lagdt", "ctclaw", "sets", "set_operations", "all"),
+    p.add_argument("--variant", choices=("penalty", "lagdt", "ctclaw", "sets", "set_operations", "showcase", "all"),
                    default="all")
     p.add_argument("--lagdt-tmin", type=float, default=1e-6,
                    help="Tmin of /DT/INTER/CST in the LAGDT engine deck (default 1e-6 s: the block's bottom pairs "
@@ -346,7 +363,8 @@ def main(argv):
     global V0, STFAC, BLOCK_NZ, FREE, INTER_DT, TSTOP
     V0, STFAC, BLOCK_NZ, FREE = -1000.0 * args.v0, args.stfac, args.block_layers, args.free
     INTER_DT, TSTOP = not args.no_inter_dt, args.tstop
-    variants = ("penalty", "lagdt", "ctclaw", "sets", "set_operations") if args.variant == "all" else (args.variant,)
+    variants = (("penalty", "lagdt", "ctclaw", "sets", "set_operations", "showcase") if args.variant == "all"
+                else (args.variant,))
     for v in variants:
         root = RUN_NAMES[v]
         folder = FOLDERS.get(v, root.lower())
