@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <map>
 #include <ostream>
 #include <set>
 #include <sstream>
@@ -205,14 +206,99 @@ std::vector<std::string> echo_keyword(const KeywordRecord& r) {
   return lines;
 }
 
+namespace {
+
+// The families of the support table: a keyword belongs to the first family one of whose prefixes starts its
+// path (a prefix ending in '/' takes every keyword under it, one without takes that keyword and its forms).
+struct SupportFamily {
+  std::string_view name;
+  std::vector<std::string_view> prefixes;
+};
+
+const std::vector<SupportFamily>& support_families() {
+  static const std::vector<SupportFamily> families = {
+      {"Elements",
+       {"/SHELL", "/SH3N", "/BRICK", "/BRIC20", "/TETRA4", "/TETRA10", "/SPRING", "/TRUSS", "/BEAM", "/QUAD",
+        "/PENTA6", "/SPHCEL", "/XELEM"}},
+      {"Element properties", {"/PROP/"}},
+      {"Materials", {"/MAT/"}},
+      {"Failure models", {"/FAIL/"}},
+      {"Contact", {"/INTER/", "/CTCLAW"}},
+      {"Rigid bodies, walls, ties", {"/RBODY", "/RWALL", "/RBE", "/RLINK", "/CYL_JOINT"}},
+      {"Loads and initial conditions",
+       {"/BCS", "/IMPVEL", "/IMPDISP", "/IMPACC", "/CLOAD", "/PLOAD", "/GRAV", "/INIVEL", "/LOAD", "/PBLAST",
+        "/ADMAS", "/INISTA", "/INISHE", "/INIBRI"}},
+      {"Outputs", {"/TH/", "/ANIM", "/SECT", "/ACCEL", "/TFILE", "/H3D", "/OUTP", "/PRINT"}},
+      {"Run controls (engine deck)", {"/RUN", "/DT", "/STOP", "/RBODY/ON", "/RBODY/OFF", "/PARITH", "/VERS"}},
+  };
+  return families;
+}
+
+// The family of `path`, or "Model set-up" (nodes, groups, surfaces, sets, functions, skews, units, ...).
+std::string_view support_family(std::string_view path) {
+  for (const auto& f : support_families())
+    for (auto p : f.prefixes)
+      if (path.starts_with(p) && (p.ends_with('/') || path.size() == p.size() || path[p.size()] == '/'))
+        return f.name;
+  return "Model set-up";
+}
+
+// "What radx supports": per family, the keywords radx runs, and the Radioss keywords it knows and refuses by
+// name (it never runs another formulation in their place).
+void write_support_table(std::ostream& os) {
+  std::vector<std::string_view> order;
+  for (const auto& f : support_families()) order.push_back(f.name);
+  order.insert(order.begin(), "Model set-up");
+  std::map<std::string_view, std::vector<std::string>> runs, refused, ignored;
+  // Each keyword as the table shows it, with its other spellings: "`/MAT/LAW2` (`/MAT/PLAS_JOHNS`,
+  // `/MAT/LAW02`)".
+  auto shown = [](std::string_view path, const std::vector<std::string_view>& aliases,
+                  std::string_view note) {
+    std::string text = "`" + std::string(path) + std::string(note) + "`";
+    for (std::size_t k = 0; k < aliases.size(); ++k)
+      text += (k == 0 ? " (`" : ", `") + std::string(aliases[k]) + "`" + (k + 1 == aliases.size() ? ")" : "");
+    return text;
+  };
+  for (const auto& k : schema::starter_keywords())
+    (k.support == schema::Support::Ignored ? ignored : runs)[support_family(k.path)].push_back(
+        shown(k.path, k.aliases, ""));
+  for (const auto& k : schema::engine_keywords()) {
+    auto& bucket = k.support == schema::Support::Read          ? runs
+                   : k.support == schema::Support::Unsupported ? refused
+                                                               : ignored;
+    bucket[support_family(k.path)].push_back(shown(k.path, k.aliases, " (engine)"));
+  }
+  for (auto root : schema::known_unsupported_roots())
+    refused[support_family(root)].push_back(shown(root, {}, ""));
+  auto list = [](const std::vector<std::string>& names) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out.empty() ? std::string("-") : out;
+  };
+  os << "## What radx supports\n\n"
+     << "Every keyword radx declares, by family: those it runs, those it accepts and ignores (they change no "
+        "result, or are outputs it does not write: a note or a warning), and the Radioss keywords it knows "
+        "and refuses by name (it never runs another formulation in their place; `--allow-substitutions` runs "
+        "the nearest one it has where a formulation flag, not a keyword, is missing). The cards of each are "
+        "below.\n\n"
+     << "| family | runs | accepted, ignored or not written | refused by name |\n|---|---|---|---|\n";
+  for (auto f : order)
+    os << "| " << f << " | " << list(runs[f]) << " | " << list(ignored[f]) << " | " << list(refused[f])
+       << " |\n";
+  os << "\n";
+}
+
+}  // namespace
+
 void write_keyword_reference(std::ostream& os) {
   os << "# radx keyword reference\n\n"
      << "Generated from the keyword declarations (`parser/keywords/keywords_starter.cpp`, "
         "`parser/keywords/keywords_engine.cpp`) by "
         "`radx keywords --markdown`; do not edit by hand (`cmake --build build --target keyword-docs`).\n\n"
      << "Columns are 1-based and inclusive. Units: M mass, L length, T time (the field is converted from the "
-        "deck's input units to its work units). Versions are the `/BEGIN` deck version (INVERS).\n\n"
-     << "## Starter keywords\n\n";
+        "deck's input units to its work units). Versions are the `/BEGIN` deck version (INVERS).\n\n";
+  write_support_table(os);
+  os << "## Starter keywords\n\n";
   for (const auto& k : schema::starter_keywords()) {
     os << "### " << k.path << "\n\n";
     if (!k.aliases.empty()) {
