@@ -228,10 +228,10 @@ def starter_deck(variant):
     if showcase:
         d.raw("#  QEPH (Ishell 24): one point in the plane with physical hourglass stiffness, where BT4's viscous",
               "#  hourglass would take a tenth and more of the impact energy on this coarse plate")
-        d.card("/PROP/SHELL", 1, "Plate shell 1 mm, QEPH, 5 integration points", Ishell=24, N=5, Thick=PLATE_T,
+        d.card("/PROP/SHELL", 1, "Plate shell 1 mm QEPH with 5 integration points", Ishell=24, N=5, Thick=PLATE_T,
                Ithick=1, Iplas=1)
         d.raw("#  HEPH (Isolid 24): one point with physical hourglass stiffness, co-rotational")
-        d.card("/PROP/SOLID", 2, "Block solid, HEPH", Isolid=24)
+        d.card("/PROP/SOLID", 2, "Block solid HEPH", Isolid=24)
     else:
         d.raw("#  Ishell Ismstr Ish3n Idrill = 0: from /DEF_SHELL (all 0), so Ishell 1, Ismstr 2, Ish3n 2, Idrill 0")
         d.card("/PROP/SHELL", 1, "Plate shell 1 mm with 5 integration points", N=5, Thick=PLATE_T, Ithick=1, Iplas=1)

@@ -324,7 +324,7 @@ TEST_CASE("an /ANIM name radx does not write is a warning that lists the names i
     const char* accepted;
   };
   const std::vector<Case> cases = {
-      {"/ANIM/ELEM/FOO", "VONM EPSP THIC ENER P DENS HOUR"},
+      {"/ANIM/ELEM/TEMP", "VONM EPSP THIC ENER P DENS HOUR"},  // a Radioss field radx does not write
       {"/ANIM/VECT/VROT", "VEL DISP (DIS) ACC CONT FINT FEXT FREAC"},
       {"/ANIM/TENS/STRAIN", "STRESS"},
       {"/ANIM/NODA/TEMP", "DMAS DT"},

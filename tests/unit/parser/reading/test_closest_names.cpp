@@ -73,7 +73,7 @@ TEST_CASE("a misspelt starter keyword gets the keyword radx reads that it is one
   CHECK(all.find("did you mean", law51) == std::string::npos);
 }
 
-TEST_CASE("a misspelt /ANIM field is an error naming the closest field; a Radioss field radx lacks a warning",
+TEST_CASE("a misspelt /ANIM field is an error naming the closest field, a Radioss field radx lacks a warning",
           "[spelling]") {
   radx::test::TempDir dir;
   const std::string deck =
