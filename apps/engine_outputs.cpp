@@ -172,10 +172,12 @@ struct EngineOutputs::Impl {
           sa.cell_field = *f;
           spec.components = solver::components(*f);
           spec.on_points = false;
+          spec.unit = unit(solver::field_dim(*f));
           sa.values.resize(model.cell_count() * static_cast<std::size_t>(spec.components));
         } else if (const auto g = solver::node_field_named(array)) {
           sa.node_field = *g;
           spec.components = solver::components(*g);
+          spec.unit = unit(solver::field_dim(*g));
           sa.values.resize(model.nodes.size() * static_cast<std::size_t>(spec.components));
         } else {
           throw std::runtime_error(std::string(family) + "/" + name + ": the engine has no field " + array);

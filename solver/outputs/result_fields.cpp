@@ -22,34 +22,41 @@ struct CellFieldInfo {
   CellField field;
   std::string_view name;
   int components;
+  Dim dim;
 };
 struct NodeFieldInfo {
   NodeField field;
   std::string_view name;
   int components;
+  Dim dim;
 };
+
+constexpr Dim kStress{1, -1, -2};  // also energy per volume
+constexpr Dim kNone{0, 0, 0};
+constexpr Dim kLength{0, 1, 0};
+constexpr Dim kForce{1, 1, -2};
 
 // Names match parser's anim_field_names() output names (a test keeps the two in step).
 constexpr std::array<CellFieldInfo, 8> kCellFields = {{
-    {CellField::VonMises, "von_mises", 1},
-    {CellField::PlasticStrain, "plastic_strain", 1},
-    {CellField::Thickness, "thickness", 1},
-    {CellField::InternalEnergyDensity, "internal_energy_density", 1},
-    {CellField::Pressure, "pressure", 1},
-    {CellField::Density, "density", 1},
-    {CellField::HourglassEnergyDensity, "hourglass_energy_density", 1},
-    {CellField::Stress, "stress", 6},
+    {CellField::VonMises, "von_mises", 1, kStress},
+    {CellField::PlasticStrain, "plastic_strain", 1, kNone},
+    {CellField::Thickness, "thickness", 1, kLength},
+    {CellField::InternalEnergyDensity, "internal_energy_density", 1, kStress},
+    {CellField::Pressure, "pressure", 1, kStress},
+    {CellField::Density, "density", 1, {1, -3, 0}},
+    {CellField::HourglassEnergyDensity, "hourglass_energy_density", 1, kStress},
+    {CellField::Stress, "stress", 6, kStress},
 }};
 constexpr std::array<NodeFieldInfo, 9> kNodeFields = {{
-    {NodeField::Displacement, "displacement", 3},
-    {NodeField::Velocity, "velocity", 3},
-    {NodeField::Acceleration, "acceleration", 3},
-    {NodeField::ContactForce, "contact_force", 3},
-    {NodeField::InternalForce, "internal_force", 3},
-    {NodeField::ExternalForce, "external_force", 3},
-    {NodeField::ReactionForce, "reaction_force", 3},
-    {NodeField::AddedMass, "added_mass", 1},
-    {NodeField::NodalTimeStep, "nodal_time_step", 1},
+    {NodeField::Displacement, "displacement", 3, kLength},
+    {NodeField::Velocity, "velocity", 3, {0, 1, -1}},
+    {NodeField::Acceleration, "acceleration", 3, {0, 1, -2}},
+    {NodeField::ContactForce, "contact_force", 3, kForce},
+    {NodeField::InternalForce, "internal_force", 3, kForce},
+    {NodeField::ExternalForce, "external_force", 3, kForce},
+    {NodeField::ReactionForce, "reaction_force", 3, kForce},
+    {NodeField::AddedMass, "added_mass", 1, {1, 0, 0}},
+    {NodeField::NodalTimeStep, "nodal_time_step", 1, {0, 0, 1}},
 }};
 
 // The stress state of one cell in global axes, with what the scalar fields need.
@@ -241,6 +248,16 @@ int components(NodeField f) {
   for (const auto& i : kNodeFields)
     if (i.field == f) return i.components;
   return 1;
+}
+Dim field_dim(CellField f) {
+  for (const auto& i : kCellFields)
+    if (i.field == f) return i.dim;
+  return {};
+}
+Dim field_dim(NodeField f) {
+  for (const auto& i : kNodeFields)
+    if (i.field == f) return i.dim;
+  return {};
 }
 
 void gather_cell_field(const ExplicitEngine& e, CellField f, std::span<float> out) {

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "solver/engine/explicit_engine.hpp"
+#include "solver/outputs/time_history_values.hpp"
 
 namespace radx::solver {
 
@@ -59,6 +60,9 @@ std::optional<CellField> cell_field_named(std::string_view name);
 std::optional<NodeField> node_field_named(std::string_view name);
 int components(CellField f);
 int components(NodeField f);
+// The physical dimension of a field's values (stress, length, ...), for its unit label.
+Dim field_dim(CellField f);
+Dim field_dim(NodeField f);
 
 // Fill `out` ([cells * components] or [nodes * components]). `dt1` is the step t^n - t^{n-1}.
 void gather_cell_field(const ExplicitEngine& e, CellField f, std::span<float> out);

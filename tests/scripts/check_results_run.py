@@ -38,7 +38,7 @@ ANIM_ARRAYS = {  # Radioss /ANIM name -> radx array (docs/theory/results-format.
     ("NODA", "DMAS"): "added_mass", ("NODA", "DT"): "nodal_time_step",
 }
 ALWAYS_POINT = {"displacement", "velocity", "node_id"}
-ALWAYS_CELL = {"element_status", "part_id", "element_id"}
+ALWAYS_CELL = {"element_status", "part_id", "element_id", "vtkGhostType"}
 
 
 def fail(msg):
