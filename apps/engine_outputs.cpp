@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -32,6 +34,7 @@ struct StateArray {
   bool cell = false;
   solver::CellField cell_field{};
   solver::NodeField node_field{};
+  int shell_point = -1;  // >= 0: the stress at that through-thickness point of the shells
   std::vector<float> values;
 };
 
@@ -147,6 +150,41 @@ struct EngineOutputs::Impl {
     return io::unit_label(model.units, d.mass, d.length, d.time);
   }
 
+  // Shells' von Mises and stress at the bottom, middle and top layers beside von_mises and stress, and the
+  // stress at each through-thickness point beside stress (docs/results.md section 7), when the model has
+  // shells: what Radioss writes for /ANIM/SHELL/TENS/STRESS/LOWER, UPPER and the layers.
+  void add_shell_layer_arrays(std::vector<io::ResultArray>& specs) {
+    if (model.shells.size() + model.shells3.size() == 0) return;
+    const auto requested = [&](std::string_view name) {
+      return std::any_of(specs.begin(), specs.end(),
+                         [&](const io::ResultArray& s) { return s.name == name; });
+    };
+    const auto add = [&](solver::CellField f, int point, std::string name) {
+      StateArray sa;
+      sa.cell = true;
+      sa.cell_field = f;
+      sa.shell_point = point;
+      io::ResultArray spec;
+      spec.name = std::move(name);
+      spec.components = solver::components(f);
+      spec.on_points = false;
+      spec.unit = unit(solver::field_dim(f));
+      sa.values.resize(model.cell_count() * static_cast<std::size_t>(spec.components));
+      specs.push_back(std::move(spec));
+      arrays.push_back(std::move(sa));
+    };
+    using solver::CellField;
+    if (requested("von_mises"))
+      for (const CellField f : {CellField::VonMisesBottom, CellField::VonMisesMiddle, CellField::VonMisesTop})
+        add(f, -1, std::string(solver::field_name(f)));
+    if (requested("stress")) {
+      for (const CellField f : {CellField::StressBottom, CellField::StressMiddle, CellField::StressTop})
+        add(f, -1, std::string(solver::field_name(f)));
+      for (int p = 0; p < solver::shell_points_max(engine); ++p)
+        add(CellField::Stress, p, "stress_point_" + std::to_string(p + 1));
+    }
+  }
+
   void setup_states() {
     std::vector<io::ResultArray> specs;
     const std::pair<const std::vector<std::string>*, std::string_view> families[] = {
@@ -172,10 +210,12 @@ struct EngineOutputs::Impl {
           sa.cell_field = *f;
           spec.components = solver::components(*f);
           spec.on_points = false;
+          spec.unit = unit(solver::field_dim(*f));
           sa.values.resize(model.cell_count() * static_cast<std::size_t>(spec.components));
         } else if (const auto g = solver::node_field_named(array)) {
           sa.node_field = *g;
           spec.components = solver::components(*g);
+          spec.unit = unit(solver::field_dim(*g));
           sa.values.resize(model.nodes.size() * static_cast<std::size_t>(spec.components));
         } else {
           throw std::runtime_error(std::string(family) + "/" + name + ": the engine has no field " + array);
@@ -183,6 +223,7 @@ struct EngineOutputs::Impl {
         specs.push_back(spec);
         arrays.push_back(std::move(sa));
       }
+    add_shell_layer_arrays(specs);
     results = std::make_unique<io::ResultsWriter>(model, out_dir, root, specs);
     points.resize(3 * model.nodes.size());
     displacement.resize(3 * model.nodes.size());
@@ -237,7 +278,9 @@ struct EngineOutputs::Impl {
     st.velocity = velocity;
     st.element_status = status;
     for (auto& a : arrays) {
-      if (a.cell)
+      if (a.shell_point >= 0)
+        solver::gather_shell_point_stress(engine, a.shell_point, a.values);
+      else if (a.cell)
         solver::gather_cell_field(engine, a.cell_field, a.values);
       else
         solver::gather_node_field(engine, a.node_field, dt1, a.values);

@@ -39,6 +39,7 @@
 
 #include "io/hdf5/hdf5_util.hpp"
 #include "io/hdf5/vtkhdf_mesh.hpp"
+#include "io/listing/unit_labels.hpp"
 #include "io/xml_text.hpp"
 
 namespace radx::io {
@@ -48,8 +49,41 @@ namespace {
 namespace fs = std::filesystem;
 
 // Arrays every state has, whose names the extra arrays must not take.
-constexpr std::array<const char*, 6> kReservedNames{"displacement", "velocity",   "element_status",
-                                                    "node_id",      "element_id", "part_id"};
+constexpr std::array<const char*, 7> kReservedNames{"displacement", "velocity", "element_status", "node_id",
+                                                    "element_id",   "part_id",  "vtkGhostType"};
+
+// vtkDataSetAttributes::HIDDENCELL: VTK's ghost-cell flag of a cell that filters and renderers skip (ParaView
+// does not draw it), the VTK convention for a deleted element that still belongs to the mesh.
+constexpr std::uint8_t kVtkHiddenCell = 32;
+
+// Attaches the string attribute `units` to the object `name` of `loc`: a fixed-length UTF-8 string, not a
+// variable-length one, whose bytes would sit in the file's global heap: HDF5 1.10 then fails to read the
+// attribute of a dataset reached through an external link while the linked file is also open ("bad global
+// heap collection signature"), which is how a state's node_id, part_id and element_id are reached.
+void write_units_attr(hid_t loc, const std::string& name, const std::string& unit) {
+  const std::string what = "cannot write the units of " + h5::path_of(loc, name);
+  const std::string value = unit.empty() ? std::string("1") : unit;
+  const h5::Handle object(H5Oopen(loc, name.c_str(), H5P_DEFAULT), H5Oclose, what);
+  const h5::Handle type(H5Tcopy(H5T_C_S1), H5Tclose, what);
+  h5::check(H5Tset_size(type, value.size()), what);
+  h5::check(H5Tset_strpad(type, H5T_STR_NULLPAD), what);
+  h5::check(H5Tset_cset(type, H5T_CSET_UTF8), what);
+  const h5::Handle space(H5Screate(H5S_SCALAR), H5Sclose, what);
+  const h5::Handle a(H5Acreate2(object, "units", type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, what);
+  h5::check(H5Awrite(a, type, value.data()), what);
+}
+
+// Lines of text as the bytes of a uint8 field-data array: ParaView 5.11's VTKHDF reader reads numeric
+// arrays only (an HDF5 string dataset arrives as a vtkStringArray of empty strings), so the text that a
+// ParaView script needs (units, part titles) goes as UTF-8 bytes, one line per entry.
+std::vector<std::uint8_t> text_bytes(const std::vector<std::string>& lines) {
+  std::vector<std::uint8_t> out;
+  for (const std::string& l : lines) {
+    out.insert(out.end(), l.begin(), l.end());
+    out.push_back('\n');
+  }
+  return out;
+}
 
 // The 17 significant digits that give back the same double, in the C locale whatever the process locale
 // is (std::to_chars ignores it; printf would print "0,5" under a German locale and break both indexes).
@@ -182,6 +216,7 @@ struct ResultsWriter::Impl {
   std::string dir;
   std::string prefix;
   std::vector<ResultArray> arrays;
+  std::string length_unit, velocity_unit, time_unit;
   VtkhdfMeshSizes mesh;
   std::vector<IndexedArray> indexed;                   // every array of a state, in the order of the indexes
   std::vector<std::pair<std::string, double>> states;  // file name, time
@@ -194,6 +229,7 @@ struct ResultsWriter::Impl {
 
   void remove_earlier_run() const;
   void write_mesh(const model::Model& model);
+  void write_mesh_extras(hid_t file, const model::Model& model) const;
   void write_state_file(const std::string& part, const ResultState& state, int index) const;
   [[nodiscard]] std::string series_entry(std::size_t i) const;
   [[nodiscard]] std::string series_text() const;
@@ -237,6 +273,7 @@ void ResultsWriter::Impl::write_mesh(const model::Model& model) {
   try {
     h5::Handle file = h5::create_file(part);
     mesh = write_vtkhdf_mesh(file, model);
+    write_mesh_extras(file, model);
     file.close("cannot close file " + part);
     h5::sync_file(part);
     h5::replace_file(part, final_path);
@@ -245,6 +282,31 @@ void ResultsWriter::Impl::write_mesh(const model::Model& model) {
     fs::remove(part, ignored);
     throw;
   }
+}
+
+// The mesh file's additions to the shared VTKHDF mesh: units of its datasets, and the parts as field data
+// (ids, and titles one per line in the same order; the titles also as a string attribute for HDF5 tools).
+void ResultsWriter::Impl::write_mesh_extras(hid_t file, const model::Model& model) const {
+  const h5::Handle vtk = h5::open_group(file, "VTKHDF");
+  write_units_attr(vtk, "Points", length_unit);
+  write_units_attr(vtk, "PointData/node_id", "1");
+  write_units_attr(vtk, "CellData/part_id", "1");
+  write_units_attr(vtk, "CellData/element_id", "1");
+  std::vector<std::int64_t> ids;
+  std::vector<std::string> titles;
+  for (const model::Part& p : model.parts) {
+    ids.push_back(p.id);
+    // One line per title: a line break inside a title would shift the lines.
+    std::string t = p.title;
+    for (char& c : t)
+      if (c == '\n' || c == '\r') c = ' ';
+    titles.push_back(t);
+  }
+  const h5::Handle field_data = h5::create_group(vtk, "FieldData");
+  h5::write_dataset(field_data, "part_ids", ids);
+  h5::write_dataset(field_data, "part_titles", text_bytes(titles));
+  h5::Handle ids_object(H5Oopen(field_data, "part_ids", H5P_DEFAULT), H5Oclose, "cannot open part_ids");
+  h5::write_string_array_attr(ids_object, "titles", titles);
 }
 
 void ResultsWriter::Impl::write_state_file(const std::string& part, const ResultState& state,
@@ -270,6 +332,10 @@ void ResultsWriter::Impl::write_state_file(const std::string& part, const Result
     h5::write_dataset(point_data, "displacement", state.displacement, 3);
     h5::write_dataset(point_data, "velocity", state.velocity, 3);
     h5::write_dataset(cell_data, "element_status", state.element_status);
+    std::vector<std::uint8_t> ghost(state.element_status.size());
+    for (std::size_t c = 0; c < ghost.size(); ++c)
+      ghost[c] = state.element_status[c] == 0 ? kVtkHiddenCell : 0;
+    h5::write_dataset(cell_data, "vtkGhostType", ghost);
     for (std::size_t a = 0; a < arrays.size(); ++a) {
       const ResultArray& r = arrays[a];
       const hsize_t cols = r.components > 1 ? static_cast<hsize_t>(r.components) : 0;
@@ -279,6 +345,27 @@ void ResultsWriter::Impl::write_state_file(const std::string& part, const Result
     const h5::Handle field_data = h5::create_group(vtk, "FieldData");
     h5::write_dataset(field_data, "TimeValue", std::vector<double>{state.time});
     h5::write_dataset(field_data, "StateIndex", std::vector<std::int64_t>{index});
+    h5::link_external(mesh_file, "/VTKHDF/FieldData/part_ids", field_data, "part_ids");
+    h5::link_external(mesh_file, "/VTKHDF/FieldData/part_titles", field_data, "part_titles");
+
+    // Units: an attribute on every dataset of the state, and the list as field data for ParaView.
+    std::vector<std::string> unit_lines;
+    const auto unit = [&](hid_t group, const std::string& name, const std::string& label) {
+      write_units_attr(group, name, label);
+      unit_lines.push_back(name + "\t" + label);
+    };
+    unit(vtk, "Points", length_unit);
+    unit(point_data, "displacement", length_unit);
+    unit(point_data, "velocity", velocity_unit);
+    unit_lines.push_back("node_id\t1");
+    unit(cell_data, "element_status", "1");
+    unit(cell_data, "vtkGhostType", "1");
+    unit_lines.push_back("part_id\t1");
+    unit_lines.push_back("element_id\t1");
+    for (const ResultArray& r : arrays) unit(r.on_points ? point_data : cell_data, r.name, r.unit);
+    unit(field_data, "TimeValue", time_unit);
+    unit(field_data, "StateIndex", "1");
+    h5::write_dataset(field_data, "units", text_bytes(unit_lines));
   }
   file.close("cannot close file " + part);
   // On disk before the rename: after a system crash a listed state is complete, not an empty file.
@@ -384,6 +471,11 @@ ResultsWriter::ResultsWriter(const model::Model& model, std::string dir, std::st
   w.dir = dir.empty() ? std::string(".") : std::move(dir);
   w.prefix = std::move(prefix);
   w.arrays = std::move(arrays);
+  w.length_unit = unit_label(model.units, 0, 1, 0);
+  w.velocity_unit = unit_label(model.units, 0, 1, -1);
+  w.time_unit = unit_label(model.units, 0, 0, 1);
+  for (ResultArray& a : w.arrays)
+    if (a.unit.empty()) a.unit = "1";
   if (w.prefix.empty() || w.prefix.find('/') != std::string::npos) {
     throw std::runtime_error("invalid result prefix '" + w.prefix + "': a file name without '/' is expected");
   }
@@ -402,6 +494,7 @@ ResultsWriter::ResultsWriter(const model::Model& model, std::string dir, std::st
     if (a.on_points) w.indexed.push_back({a.name, true, a.components, "Float", 4, false});
   }
   w.indexed.push_back({"element_status", false, 1, "UChar", 1, false});
+  w.indexed.push_back({"vtkGhostType", false, 1, "UChar", 1, false});
   w.indexed.push_back({"part_id", false, 1, "Int", 8, true});
   w.indexed.push_back({"element_id", false, 1, "Int", 8, true});
   for (const ResultArray& a : w.arrays) {

@@ -17,12 +17,13 @@
 namespace radx::io {
 
 // One array of every state, after the always-present ones (Points, displacement, velocity,
-// element_status). Names contain no '/' or '.'. Values are stored as float32 [N, components]
+// element_status, vtkGhostType). Names contain no '/' or '.'. Values are stored as float32 [N, components]
 // ([N] when components == 1).
 struct ResultArray {
   std::string name;
   int components = 1;
   bool on_points = true;  // PointData [NP, k] or CellData [NC, k]
+  std::string unit;       // label of the values' unit in the model's work units ("1": dimensionless)
 };
 
 // The data of one state. Spans are read during write_state only.
@@ -45,7 +46,9 @@ class ResultsWriter {
   // Starts the result set of prefix `prefix` in `dir` (created if needed): removes what an earlier run
   // left there under that prefix (state files, stray .part/.tmp files, both indexes), then writes
   // P.mesh.hdf from the model (cells in model order: 4-node shells, 3-node shells, bricks, as the model
-  // file). Throws std::runtime_error naming the file and HDF5 object on failure.
+  // file), with the part ids and titles as field data. Every dataset of the states carries its unit (an
+  // attribute `units`, labels from the model's work units), and every state lists them in its field data
+  // `units` (docs/results.md). Throws std::runtime_error naming the file and HDF5 object on failure.
   ResultsWriter(const model::Model& model, std::string dir, std::string prefix,
                 std::vector<ResultArray> arrays);
   ~ResultsWriter();

@@ -242,7 +242,12 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
         "radx writes /ANIM/ELEM, /ANIM/VECT, /ANIM/TENS/STRESS and /ANIM/NODA fields, for every element, in "
         "its HDF5 states";
     t.push_back(
-        not_written("/ANIM/SHELL", "shell fields and tensors by layer in the animation files", kAnimInstead));
+        not_written("/ANIM/SHELL", "shell fields and tensors by layer in the animation files",
+                    "radx writes the shells' stress and von Mises at the bottom, middle and top layers "
+                    "(stress_bottom, stress_middle, stress_top for LOWER, the mid-surface and UPPER; "
+                    "von_mises_bottom, ...) and the stress at every point through the thickness "
+                    "(stress_point_1 at the bottom, ...) with /ANIM/TENS/STRESS and /ANIM/ELEM/VONM "
+                    "(docs/results.md)"));
     t.push_back(not_written("/ANIM/BRICK", "brick fields and tensors in the animation files", kAnimInstead));
     t.push_back(not_written("/ANIM/MASS", "masses in the animation files",
                             "radx writes the mass added to nodes (/ANIM/NODA/DMAS)"));

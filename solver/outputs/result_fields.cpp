@@ -22,39 +22,54 @@ struct CellFieldInfo {
   CellField field;
   std::string_view name;
   int components;
+  Dim dim;
 };
 struct NodeFieldInfo {
   NodeField field;
   std::string_view name;
   int components;
+  Dim dim;
 };
 
+constexpr Dim kStress{1, -1, -2};  // also energy per volume
+constexpr Dim kNone{0, 0, 0};
+constexpr Dim kLength{0, 1, 0};
+constexpr Dim kForce{1, 1, -2};
+
 // Names match parser's anim_field_names() output names (a test keeps the two in step).
-constexpr std::array<CellFieldInfo, 8> kCellFields = {{
-    {CellField::VonMises, "von_mises", 1},
-    {CellField::PlasticStrain, "plastic_strain", 1},
-    {CellField::Thickness, "thickness", 1},
-    {CellField::InternalEnergyDensity, "internal_energy_density", 1},
-    {CellField::Pressure, "pressure", 1},
-    {CellField::Density, "density", 1},
-    {CellField::HourglassEnergyDensity, "hourglass_energy_density", 1},
-    {CellField::Stress, "stress", 6},
+// The shell layer fields are not /ANIM names: the engine adds them beside von_mises and stress.
+constexpr std::array<CellFieldInfo, 14> kCellFields = {{
+    {CellField::VonMises, "von_mises", 1, kStress},
+    {CellField::PlasticStrain, "plastic_strain", 1, kNone},
+    {CellField::Thickness, "thickness", 1, kLength},
+    {CellField::InternalEnergyDensity, "internal_energy_density", 1, kStress},
+    {CellField::Pressure, "pressure", 1, kStress},
+    {CellField::Density, "density", 1, {1, -3, 0}},
+    {CellField::HourglassEnergyDensity, "hourglass_energy_density", 1, kStress},
+    {CellField::Stress, "stress", 6, kStress},
+    {CellField::VonMisesBottom, "von_mises_bottom", 1, kStress},
+    {CellField::VonMisesMiddle, "von_mises_middle", 1, kStress},
+    {CellField::VonMisesTop, "von_mises_top", 1, kStress},
+    {CellField::StressBottom, "stress_bottom", 6, kStress},
+    {CellField::StressMiddle, "stress_middle", 6, kStress},
+    {CellField::StressTop, "stress_top", 6, kStress},
 }};
 constexpr std::array<NodeFieldInfo, 9> kNodeFields = {{
-    {NodeField::Displacement, "displacement", 3},
-    {NodeField::Velocity, "velocity", 3},
-    {NodeField::Acceleration, "acceleration", 3},
-    {NodeField::ContactForce, "contact_force", 3},
-    {NodeField::InternalForce, "internal_force", 3},
-    {NodeField::ExternalForce, "external_force", 3},
-    {NodeField::ReactionForce, "reaction_force", 3},
-    {NodeField::AddedMass, "added_mass", 1},
-    {NodeField::NodalTimeStep, "nodal_time_step", 1},
+    {NodeField::Displacement, "displacement", 3, kLength},
+    {NodeField::Velocity, "velocity", 3, {0, 1, -1}},
+    {NodeField::Acceleration, "acceleration", 3, {0, 1, -2}},
+    {NodeField::ContactForce, "contact_force", 3, kForce},
+    {NodeField::InternalForce, "internal_force", 3, kForce},
+    {NodeField::ExternalForce, "external_force", 3, kForce},
+    {NodeField::ReactionForce, "reaction_force", 3, kForce},
+    {NodeField::AddedMass, "added_mass", 1, {1, 0, 0}},
+    {NodeField::NodalTimeStep, "nodal_time_step", 1, {0, 0, 1}},
 }};
 
 // The stress state of one cell in global axes, with what the scalar fields need.
 struct CellValues {
-  std::array<double, 6> sig{};  // xx yy zz xy yz zx
+  std::array<double, 6> sig{};                   // xx yy zz xy yz zx
+  std::array<std::array<double, 6>, 3> layer{};  // the same at the bottom, middle, top (ShellLayer order)
   double eps_p = 0, thickness = 0, volume0 = 0, e_int = 0, e_hg = 0, density = 0;
 };
 
@@ -114,6 +129,12 @@ void each_group_parallel(const ExplicitEngine& e, std::int64_t n, Body&& body) {
   });
 }
 
+// The rows of one in-plane Gauss point of a shell group's sig: [5 n_points][G], or [8][G] for N = 0.
+std::size_t shell_sig_rows(const ShellGroup& g) {
+  const int np = g.props.n_points;
+  return static_cast<std::size_t>(np <= 0 ? 8 : 5 * np) * kGroupSize;
+}
+
 // Element i of a shell group: the through-thickness mean stress in global axes, the largest eps_p of its
 // points, its thickness. QBAT keeps one state per in-plane Gauss point ([gauss][...]): the element's value is
 // their mean (the Gauss points have nearly equal weights), and its eps_p the largest.
@@ -142,6 +163,8 @@ CellValues cell_values(const ShellGroup& g, int i, const NodeState& s,
   Vec3 e1, e2, e3;
   shell_frame(g, i, s, e1, e2, e3);
   c.sig = to_global(loc, e1, e2, e3);
+  for (const ShellLayer l : {ShellLayer::Bottom, ShellLayer::Middle, ShellLayer::Top})
+    c.layer[static_cast<std::size_t>(l)] = to_global(shell_layer_stress(g, i, l).data(), e1, e2, e3);
   c.thickness = g.thick[k] > 0 ? g.thick[k] : g.t0[k];
   c.volume0 = g.area0[k] * g.t0[k];
   c.e_int = g.e_int[k];
@@ -161,6 +184,7 @@ CellValues cell_values(const Solid& g, int i, const NodeState&, const std::vecto
     for (int q = 0; q < 6; ++q)
       c.sig[static_cast<std::size_t>(q)] = g.sig[static_cast<std::size_t>(q) * kGroupSize + k];
   }
+  c.layer = {c.sig, c.sig, c.sig};
   c.eps_p = g.eps_p[k];
   c.volume0 = g.vol0[k];
   c.e_int = g.e_int[k];
@@ -183,6 +207,7 @@ requires(std::is_same_v<LineGroup, TrussGroup> || std::is_same_v<LineGroup, Beam
   const double sigma = g.sig[k];
   c.sig = {sigma * e[0] * e[0], sigma * e[1] * e[1], sigma * e[2] * e[2],
            sigma * e[0] * e[1], sigma * e[1] * e[2], sigma * e[2] * e[0]};
+  c.layer = {c.sig, c.sig, c.sig};
   c.eps_p = g.eps_p[k];
   if constexpr (std::is_same_v<LineGroup, TrussGroup>)
     c.volume0 = g.area0[k] * g.l0[k];
@@ -242,6 +267,77 @@ int components(NodeField f) {
     if (i.field == f) return i.components;
   return 1;
 }
+Dim field_dim(CellField f) {
+  for (const auto& i : kCellFields)
+    if (i.field == f) return i.dim;
+  return {};
+}
+Dim field_dim(NodeField f) {
+  for (const auto& i : kNodeFields)
+    if (i.field == f) return i.dim;
+  return {};
+}
+
+std::array<double, 5> shell_point_stress(const ShellGroup& g, int i, int point) {
+  std::array<double, 5> loc{};
+  const std::size_t rows = shell_sig_rows(g);
+  const double per_point = 1.0 / g.gauss;
+  for (int gp = 0; gp < g.gauss; ++gp) {
+    const double* sig = g.sig.data() + static_cast<std::size_t>(gp) * rows;
+    for (int q = 0; q < 5; ++q)
+      loc[static_cast<std::size_t>(q)] += per_point * sig[shell_detail::sig_index(point, q, i)];
+  }
+  return loc;
+}
+
+std::array<double, 5> shell_layer_stress(const ShellGroup& g, int i, ShellLayer layer) {
+  const int np = g.props.n_points;
+  if (np <= 0) {  // resultants: FOR + 12 zeta MOM for the in-plane rows, FOR for the transverse shear
+    const double zeta = layer == ShellLayer::Bottom ? -0.5 : layer == ShellLayer::Top ? 0.5 : 0.0;
+    const std::size_t rows = shell_sig_rows(g);
+    const auto k = static_cast<std::size_t>(i);
+    std::array<double, 5> loc{};
+    const double per_point = 1.0 / g.gauss;
+    for (int gp = 0; gp < g.gauss; ++gp) {
+      const double* sig = g.sig.data() + static_cast<std::size_t>(gp) * rows;
+      const auto row = [&](int r) { return sig[static_cast<std::size_t>(r) * kGroupSize + k]; };
+      for (int q = 0; q < 5; ++q) loc[static_cast<std::size_t>(q)] += per_point * row(q);
+      for (int q = 0; q < 3; ++q) loc[static_cast<std::size_t>(q)] += per_point * 12.0 * zeta * row(5 + q);
+    }
+    return loc;
+  }
+  if (layer == ShellLayer::Bottom) return shell_point_stress(g, i, 0);
+  if (layer == ShellLayer::Top) return shell_point_stress(g, i, np - 1);
+  if (np % 2 == 1) return shell_point_stress(g, i, np / 2);
+  const auto below = shell_point_stress(g, i, np / 2 - 1), above = shell_point_stress(g, i, np / 2);
+  std::array<double, 5> mid{};
+  for (std::size_t q = 0; q < 5; ++q) mid[q] = 0.5 * (below[q] + above[q]);
+  return mid;
+}
+
+int shell_points_max(const ExplicitEngine& e) {
+  int n = 0;
+  for (const auto& g : e.groups().shells) n = std::max(n, g.props.n_points);
+  return n;
+}
+
+void gather_shell_point_stress(const ExplicitEngine& e, int point, std::span<float> out) {
+  std::fill(out.begin(), out.end(), 0.0f);
+  const auto& m = e.model();
+  const auto& shells = e.groups().shells;
+  each_group_parallel(e, static_cast<std::int64_t>(shells.size()), [&](std::int64_t gi) {
+    const ShellGroup& g = shells[static_cast<std::size_t>(gi)];
+    if (point >= g.props.n_points) return;
+    for (int i = 0; i < g.count; ++i) {
+      Vec3 e1, e2, e3;
+      shell_frame(g, i, e.nodes(), e1, e2, e3);
+      const auto sig = to_global(shell_point_stress(g, i, point).data(), e1, e2, e3);
+      float* o = out.data() +
+                 6 * (first_cell(m, g) + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)]));
+      for (std::size_t q = 0; q < 6; ++q) o[q] = static_cast<float>(sig[q]);
+    }
+  });
+}
 
 void gather_cell_field(const ExplicitEngine& e, CellField f, std::span<float> out) {
   std::fill(out.begin(), out.end(), 0.0f);
@@ -260,6 +356,16 @@ void gather_cell_field(const ExplicitEngine& e, CellField f, std::span<float> ou
       case CellField::Stress:
         for (std::size_t q = 0; q < 6; ++q) o[q] = static_cast<float>(c.sig[q]);
         break;
+      case CellField::VonMisesBottom: o[0] = static_cast<float>(von_mises(c.layer[0])); break;
+      case CellField::VonMisesMiddle: o[0] = static_cast<float>(von_mises(c.layer[1])); break;
+      case CellField::VonMisesTop: o[0] = static_cast<float>(von_mises(c.layer[2])); break;
+      case CellField::StressBottom:
+      case CellField::StressMiddle:
+      case CellField::StressTop: {
+        const auto l = static_cast<std::size_t>(f) - static_cast<std::size_t>(CellField::StressBottom);
+        for (std::size_t q = 0; q < 6; ++q) o[q] = static_cast<float>(c.layer[l][q]);
+        break;
+      }
     }
   });
 }

@@ -38,7 +38,12 @@ with h5py.File(sys.argv[1], "r") as f:
     with open(sys.argv[3], "w") as out:
         for center, group in (("point", "PointData"), ("cell", "CellData")):
             for name, ds in f["/VTKHDF/" + group].items():
-                out.write(f"{center} {name} {ds.shape[1] if len(ds.shape) > 1 else 1}\\n")
+                unit = ds.attrs.get("units", b"-")
+                unit = unit.decode() if isinstance(unit, bytes) else str(unit)
+                out.write(f"{center}\\t{name}\\t{ds.shape[1] if len(ds.shape) > 1 else 1}\\t{unit}\\n")
+        ids = f["/VTKHDF/FieldData/part_ids"]
+        for i, t in zip(ids[()], ids.attrs["titles"]):
+            out.write(f"part\\t{i}\\t{t.decode() if isinstance(t, bytes) else t}\\n")
 """
 
 
@@ -78,14 +83,27 @@ def read_state_h5py(path):
                              text=True)
         if run.returncode != 0:
             raise RuntimeError(f"h5py could not read {path}: {run.stderr.strip() or run.stdout.strip()}")
-        components = {}
+        components, units, parts = {}, {}, []
         for line in open(listing, encoding="utf-8"):
-            center, name, k = line.split()
+            fields = line.rstrip("\n").split("\t")
+            if fields[0] == "part":
+                parts.append((int(fields[1]), fields[2]))
+                continue
+            center, name, k, unit = fields
             components[(center, name)] = int(k)
-        return np.load(out), components
+            units[name] = unit
+        return np.load(out), components, units, parts
 
 
-def check_reader(label, reader, args, expected, failures):
+def text_lines(field_data, name):
+    """Lines of a text field-data array (UTF-8 bytes stored as uint8)."""
+    array = field_data.GetArray(name)
+    if array is None:
+        return None
+    return bytes(int(array.GetValue(i)) for i in range(array.GetNumberOfValues())).decode("utf-8").splitlines()
+
+
+def check_reader(label, reader, args, expected, failures, vtkhdf=False):
     fail_count = len(failures)
 
     def fail(text):
@@ -137,6 +155,22 @@ def check_reader(label, reader, args, expected, failures):
         array = block.GetPointData().GetArray("displacement")
         if array is not None:
             displacement.append(vtk_to_numpy(array))
+        # The units and the parts as the state's field data (the VTKHDF reader; the XDMF index has none).
+        if expected is not None and vtkhdf:
+            units = text_lines(block.GetFieldData(), "units")
+            if units is None:
+                fail("no field data 'units'")
+            else:
+                listed = dict(l.split("\t", 1) for l in units)
+                for name, unit in sorted(expected[2].items()):
+                    if listed.get(name) != unit:
+                        fail(f"field data units give {name} [{listed.get(name)}], its dataset's attribute [{unit}]")
+            titles = text_lines(block.GetFieldData(), "part_titles")
+            ids = block.GetFieldData().GetArray("part_ids")
+            seen = [] if ids is None or titles is None else \
+                list(zip((int(ids.GetValue(i)) for i in range(ids.GetNumberOfValues())), titles))
+            if seen != expected[3]:
+                fail(f"field data parts {seen}, the mesh file's {expected[3]}")
     if args.expect_cell_types is not None and cell_types != set(args.expect_cell_types):
         fail(f"VTK cell types {sorted(cell_types)}, expected {sorted(args.expect_cell_types)}")
     if expected is not None:
@@ -199,7 +233,7 @@ def main():
         failures.append(f"ParaView found no reader for {args.series}")
     else:
         check_reader(f"{os.path.basename(args.series)} ({type(series).__name__})", series, args, expected,
-                     failures)
+                     failures, vtkhdf=True)
         Delete(series)
     makers = {
         "XDMFReader": lambda p: XDMFReader(FileNames=[p]),

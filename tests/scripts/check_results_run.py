@@ -38,7 +38,10 @@ ANIM_ARRAYS = {  # Radioss /ANIM name -> radx array (docs/theory/results-format.
     ("NODA", "DMAS"): "added_mass", ("NODA", "DT"): "nodal_time_step",
 }
 ALWAYS_POINT = {"displacement", "velocity", "node_id"}
-ALWAYS_CELL = {"element_status", "part_id", "element_id"}
+ALWAYS_CELL = {"element_status", "part_id", "element_id", "vtkGhostType"}
+# Beside von_mises and stress when the model has shells (docs/results.md section 7).
+SHELL_LAYERS = {"von_mises": {"von_mises_bottom", "von_mises_middle", "von_mises_top"},
+                "stress": {"stress_bottom", "stress_middle", "stress_top"}}
 
 
 def fail(msg):
@@ -117,6 +120,15 @@ def main():
                                                   "internal_force", "external_force", "reaction_force",
                                                   "added_mass", "nodal_time_step"}} | ALWAYS_POINT
     cell_arrays = (expected - point_arrays) | ALWAYS_CELL
+    if any(t in (5, 9) for t in types):  # shells: their layers, and the stress at each point
+        for name, layers in SHELL_LAYERS.items():
+            if name in cell_arrays:
+                cell_arrays |= layers
+        if "stress" in cell_arrays and arrays:
+            points = sorted(int(n[len("stress_point_"):]) for n in arrays[1] if re.fullmatch(r"stress_point_\d+", n))
+            if points != list(range(1, len(points) + 1)):
+                fail("shell point stresses %s, expected stress_point_1 .. stress_point_N" % points)
+            cell_arrays |= {"stress_point_%d" % k for k in points}
     if arrays and (arrays[0] != point_arrays or arrays[1] != cell_arrays):
         fail("arrays %s, expected point %s cell %s" % (arrays, sorted(point_arrays), sorted(cell_arrays)))
 

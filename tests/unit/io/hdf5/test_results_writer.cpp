@@ -49,8 +49,12 @@ radx::model::Model make_model() {
   for (int i = 0; i < 2; ++i) {
     radx::model::Part p;
     p.id = 21 + i;
+    p.title = i == 0 ? "Door panel" : "B-pillar, inner";
     m.parts.push_back(p);
   }
+  m.units.mass_name = "Mg";
+  m.units.length_name = "mm";
+  m.units.time_name = "s";
   m.shells.id = {1, 2, 3};
   m.shells.part = {0, 0, 1};
   m.shells.conn = {0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 7};
@@ -68,7 +72,22 @@ radx::model::Model make_model() {
 constexpr std::size_t kNodes = 13, kCells = 5;
 
 const std::vector<ResultArray> kArrays{
-    {"plastic_strain", 1, false}, {"stress", 6, false}, {"acceleration", 3, true}};
+    {"plastic_strain", 1, false, ""}, {"stress", 6, false, "MPa"}, {"acceleration", 3, true, "mm/s2"}};
+
+// The string attribute `name` of the object at `path` (fixed-length, as the writer stores units).
+std::string string_attr(hid_t file, const std::string& path, const std::string& name) {
+  const hid_t a = H5Aopen_by_name(file, path.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+  if (a < 0) return "<no attribute " + name + " on " + path + ">";
+  const hid_t type = H5Aget_type(a);
+  std::string out = "<not a fixed-length string>";
+  if (H5Tget_class(type) == H5T_STRING && H5Tis_variable_str(type) == 0) {
+    std::string text(H5Tget_size(type), '\0');
+    if (H5Aread(a, type, text.data()) >= 0) out = text.substr(0, text.find('\0'));
+  }
+  H5Tclose(type);
+  H5Aclose(a);
+  return out;
+}
 
 // The arrays of state s, with values that differ per state, per entry and per component.
 struct StateData {
@@ -290,6 +309,40 @@ TEST_CASE("results: mesh file, three states, external links, values and indexes"
             std::vector<double>{d.time});
       CHECK(read_all<std::int64_t>(file, "/VTKHDF/FieldData/StateIndex", H5T_NATIVE_INT64) ==
             std::vector<std::int64_t>{s});
+      // Deleted elements are VTK hidden cells (vtkDataSetAttributes::HIDDENCELL = 32), the others 0.
+      std::vector<std::uint8_t> ghost;
+      for (const std::uint8_t st : d.status) ghost.push_back(st == 0 ? 32 : 0);
+      CHECK(read_all<std::uint8_t>(file, "/VTKHDF/CellData/vtkGhostType", H5T_NATIVE_UINT8) == ghost);
+      // Units: the attribute of every dataset, from the model's work units (Mg mm s) or the array's own, and
+      // the same list as text in the field data.
+      const std::vector<std::pair<std::string, std::string>> units{{"Points", "mm"},
+                                                                   {"PointData/displacement", "mm"},
+                                                                   {"PointData/velocity", "mm/s"},
+                                                                   {"PointData/node_id", "1"},
+                                                                   {"PointData/acceleration", "mm/s2"},
+                                                                   {"CellData/element_status", "1"},
+                                                                   {"CellData/vtkGhostType", "1"},
+                                                                   {"CellData/part_id", "1"},
+                                                                   {"CellData/element_id", "1"},
+                                                                   {"CellData/plastic_strain", "1"},
+                                                                   {"CellData/stress", "MPa"},
+                                                                   {"FieldData/TimeValue", "s"}};
+      for (const auto& [path, unit] : units) {
+        INFO(path);
+        CHECK(string_attr(file, "/VTKHDF/" + path, "units") == unit);
+      }
+      const auto text = read_all<std::uint8_t>(file, "/VTKHDF/FieldData/units", H5T_NATIVE_UINT8);
+      const std::string listed(text.begin(), text.end());
+      for (const auto& [path, unit] : units) {
+        const std::string line = path.substr(path.find('/') + 1) + "\t" + unit + "\n";
+        INFO(line);
+        CHECK(listed.find(line) != std::string::npos);
+      }
+      // The parts, linked from the mesh file: ids, and titles one per line in the same order.
+      CHECK(read_all<std::int64_t>(file, "/VTKHDF/FieldData/part_ids", H5T_NATIVE_INT64) ==
+            std::vector<std::int64_t>{21, 22});
+      const auto titles = read_all<std::uint8_t>(file, "/VTKHDF/FieldData/part_titles", H5T_NATIVE_UINT8);
+      CHECK(std::string(titles.begin(), titles.end()) == "Door panel\nB-pillar, inner\n");
       H5Fclose(file);
     }
     H5Fclose(mesh);
@@ -324,11 +377,11 @@ TEST_CASE("results: mesh file, three states, external links, values and indexes"
           std::vector<std::string>{"P_000000.hdf:/VTKHDF/Points", "P_000001.hdf:/VTKHDF/Points",
                                    "P_000002.hdf:/VTKHDF/Points"});
     const auto names = all_matches(text, R"re(<Attribute Name="([^"]+)")re");
-    REQUIRE(names.size() == 3 * 9);
-    const std::set<std::string> per_state(names.begin(), names.begin() + 9);
+    REQUIRE(names.size() == 3 * 10);
+    const std::set<std::string> per_state(names.begin(), names.begin() + 10);
     CHECK(per_state == std::set<std::string>{"displacement", "velocity", "acceleration", "node_id",
-                                             "element_status", "part_id", "element_id", "plastic_strain",
-                                             "stress"});
+                                             "element_status", "vtkGhostType", "part_id", "element_id",
+                                             "plastic_strain", "stress"});
     // Time-invariant arrays come from the mesh file, the others from their state file.
     CHECK(
         all_matches(
@@ -435,11 +488,12 @@ TEST_CASE("results: invalid arrays and states are refused", "[io][results]") {
   TempDir dir;
   const radx::model::Model model = make_model();
   const std::string folder = dir.path().string();
-  CHECK_THROWS_AS(ResultsWriter(model, folder, "P", {{"a/b", 1, true}}), std::runtime_error);
-  CHECK_THROWS_AS(ResultsWriter(model, folder, "P", {{"a.b", 1, true}}), std::runtime_error);
-  CHECK_THROWS_AS(ResultsWriter(model, folder, "P", {{"velocity", 3, true}}), std::runtime_error);
-  CHECK_THROWS_AS(ResultsWriter(model, folder, "P", {{"x", 1, true}, {"x", 3, false}}), std::runtime_error);
-  CHECK_THROWS_AS(ResultsWriter(model, folder, "P", {{"x", 0, true}}), std::runtime_error);
+  CHECK_THROWS_AS(ResultsWriter(model, folder, "P", {{"a/b", 1, true, ""}}), std::runtime_error);
+  CHECK_THROWS_AS(ResultsWriter(model, folder, "P", {{"a.b", 1, true, ""}}), std::runtime_error);
+  CHECK_THROWS_AS(ResultsWriter(model, folder, "P", {{"velocity", 3, true, ""}}), std::runtime_error);
+  CHECK_THROWS_AS(ResultsWriter(model, folder, "P", {{"x", 1, true, ""}, {"x", 3, false, ""}}),
+                  std::runtime_error);
+  CHECK_THROWS_AS(ResultsWriter(model, folder, "P", {{"x", 0, true, ""}}), std::runtime_error);
   CHECK_THROWS_AS(ResultsWriter(model, folder, "a/P", {}), std::runtime_error);
   radx::model::Model broken = model;
   broken.bricks.conn[3] = 13;  // node index out of range

@@ -7,7 +7,9 @@
 // * shells (decks/block_on_plate after 300 cycles): the global stress tensor of each shell is plane stress
 //   in the element: n.sigma.n = 0 with n the normal of the current diagonals (computed here), and the von
 //   Mises value of the tensor equals the one of the through-thickness mean stress in the element frame
-//   (rotation invariance).
+//   (rotation invariance); the stress at each through-thickness point, weighted by the rule, sums to that
+//   mean, and the bottom and top layers are the first and last points (test_shell_layers.cpp checks the
+//   layers against closed forms).
 // Tolerances: outputs are float32 (relative 6e-8 rounding, so 1e-6 of the value); the flow-curve lag of an
 // explicit hardening step is bounded by 1e-5 of the flow stress once eps_p > 1e-3 (test_verification.cpp);
 // the lateral inertia stress of the brick is below 1e-3 of the flow stress (jc_single_brick README).
@@ -162,4 +164,54 @@ TEST_CASE("shell stress output: plane stress in the element, von Mises invariant
   }
   CHECK(checked > 0);
   CHECK(largest > 0);
+}
+
+// The shells' per-point and layer outputs against the mean stress output of the same state: the mean is the
+// rule's weighted sum of the points (sum w_i sigma_i, docs/theory/elements.md 1.4), the bottom and top layers
+// are the first and last points, whatever the frame they are rotated from (the same for all).
+TEST_CASE("shell point and layer stress outputs agree with the mean stress output", "[results-fields]") {
+  Case c = load("block_on_plate", "BLOCK_ON_PLATE");
+  c.controls.t_stop = 1e30;
+  const md::Model& m = c.model;
+  sv::ExplicitEngine eng(m, c.controls, sv::EngineOptions(1));
+  const auto res = eng.run([&](const sv::CycleReport& r) { return r.cycle < 300; });
+  REQUIRE(res.cycles >= 300);
+  const int np = sv::shell_points_max(eng);
+  REQUIRE(np >= 2);
+  const std::size_t nc = m.element_count();
+  std::vector<float> mean(6 * nc), bottom(6 * nc), top(6 * nc), vm_top(nc);
+  std::vector<std::vector<float>> point(static_cast<std::size_t>(np), std::vector<float>(6 * nc));
+  sv::gather_cell_field(eng, sv::CellField::Stress, mean);
+  sv::gather_cell_field(eng, sv::CellField::StressBottom, bottom);
+  sv::gather_cell_field(eng, sv::CellField::StressTop, top);
+  sv::gather_cell_field(eng, sv::CellField::VonMisesTop, vm_top);
+  for (int p = 0; p < np; ++p) sv::gather_shell_point_stress(eng, p, point[static_cast<std::size_t>(p)]);
+  double largest = 0;  // the largest stress value of any point
+  for (const auto& values : point)
+    for (const float v : values) largest = std::max(largest, std::abs(static_cast<double>(v)));
+  REQUIRE(largest > 0);
+  int checked = 0;
+  for (const auto& g : eng.groups().shells) {
+    REQUIRE(g.props.n_points == np);  // one shell property in this deck
+    const auto rule = sv::shell_detail::thickness_rule(np);
+    for (int i = 0; i < g.count; ++i) {
+      const std::size_t cell =
+          sv::first_cell(m, g) + static_cast<std::size_t>(g.element[static_cast<std::size_t>(i)]);
+      for (std::size_t q = 0; q < 6; ++q) {
+        double sum = 0;
+        for (int p = 0; p < np; ++p) sum += rule.w[p] * point[static_cast<std::size_t>(p)][6 * cell + q];
+        // float32 outputs: 1e-6 of the largest stress per value, times the sum of the weights (1).
+        CHECK(std::abs(sum - mean[6 * cell + q]) <= 2e-6 * largest);
+        CHECK(bottom[6 * cell + q] == point[0][6 * cell + q]);
+        CHECK(top[6 * cell + q] == point[static_cast<std::size_t>(np - 1)][6 * cell + q]);
+      }
+      const float* t = &top[6 * cell];
+      const double a = t[0] - t[1], b = t[1] - t[2], d = t[2] - t[0];
+      const double vm =
+          std::sqrt(0.5 * (a * a + b * b + d * d) + 3.0 * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5]));
+      CHECK(std::abs(vm - vm_top[cell]) <= 2e-6 * std::max(vm, 1e-30) + 1e-6 * largest);
+      ++checked;
+    }
+  }
+  CHECK(checked == static_cast<int>(m.shells.size() + m.shells3.size()));
 }
