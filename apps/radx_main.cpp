@@ -17,6 +17,7 @@
 #include "apps/starter_pipeline.hpp"
 #include "io/hdf5/time_history.hpp"
 #include "io/hdf5/time_history_export.hpp"
+#include "io/signal/cfc_filter.hpp"
 #include "parser/reading/deck.hpp"
 #include "parser/reading/deck_echo.hpp"
 #include "solver/model/run_files.hpp"
@@ -46,12 +47,16 @@ constexpr CommandHelp kCommands[] = {
      "                              refusing the deck. --starter-only: stop after the starter (a\n"
      "                              starter deck with no engine deck)\n"},
     {"th",
-     "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]...] | th FILE --recover\n"
+     "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]... [--filter CFC]] | th FILE --recover\n"
      "                              a time history P_th.h5: without --csv, list its groups (objects,\n"
      "                              variables, units, rows, time range); with --csv, write the chosen\n"
      "                              columns (all by default) as CSV to OUT.csv or standard output.\n"
      "                              SELECTOR: a group (node/1), a column (global:IE, node/1:12:DX) or an\n"
      "                              object's columns (node/1:12); '*' and '?' are wildcards; repeatable.\n"
+     "                              --filter CFC60|CFC180|CFC600|CFC1000: SAE J211 channel frequency\n"
+     "                              class filter of each chosen column (phaseless 2-pole Butterworth,\n"
+     "                              forward then backward; -3 dB at 5/3 CFC Hz); rows not evenly spaced\n"
+     "                              are resampled on a uniform step for it (a note says so).\n"
      "                              --recover: rewrite a file whose run was killed inside a flush (HDF5\n"
      "                              readers refuse it) with the rows of the flushes that completed\n"},
     {"regress",
@@ -192,12 +197,12 @@ int keywords(const std::vector<std::string>& args) {
 
 // Parsing only: reading, selecting and writing are io's (io/hdf5/time_history_export.hpp).
 int th(const std::vector<std::string>& args) {
-  std::string file, output;
+  std::string file, output, filter;
   bool csv = false, have_output = false, recover = false;
   std::vector<std::string> selectors;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if ((a == "-o" || a == "--output" || a == "--var") && i + 1 >= args.size()) {
+    if ((a == "-o" || a == "--output" || a == "--var" || a == "--filter") && i + 1 >= args.size()) {
       std::cerr << "radx th: " << a << " needs a value\n";
       return radx::app::kExitUsage;
     }
@@ -210,6 +215,8 @@ int th(const std::vector<std::string>& args) {
       have_output = true;
     } else if (a == "--var") {
       selectors.push_back(args[++i]);
+    } else if (a == "--filter") {
+      filter = args[++i];
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << "radx th: unknown option " << a << '\n';
       return radx::app::kExitUsage;
@@ -224,8 +231,14 @@ int th(const std::vector<std::string>& args) {
     std::cerr << "radx th: give a time-history file (P_th.h5)\n";
     return radx::app::kExitUsage;
   }
-  if (!csv && (have_output || !selectors.empty())) {
-    std::cerr << "radx th: -o and --var go with --csv\n";
+  if (!csv && (have_output || !selectors.empty() || !filter.empty())) {
+    std::cerr << "radx th: -o, --var and --filter go with --csv\n";
+    return radx::app::kExitUsage;
+  }
+  const auto cfc = radx::io::parse_cfc_class(filter);
+  if (!filter.empty() && !cfc) {
+    std::cerr << "radx th: --filter " << filter
+              << ": not a class; accepted: CFC60, CFC180, CFC600, CFC1000\n";
     return radx::app::kExitUsage;
   }
   // --recover rewrites the file: never under a run that is still writing it (its next flush would append at
@@ -285,8 +298,19 @@ int th(const std::vector<std::string>& args) {
     std::cerr << "radx th: " << file << ": " << error << '\n';
     return radx::app::kExitInputError;
   }
-  const bool written = have_output ? radx::io::write_th_csv_file(groups, chosen, output, error)
-                                   : radx::io::write_th_csv(groups, chosen, std::cout, error);
+  if (cfc) {
+    bool resampled = false;
+    if (!radx::io::filter_th_columns(groups, chosen, *cfc, error, &resampled)) {
+      std::cerr << "radx th: " << file << ": --filter " << filter << ": " << error << '\n';
+      return radx::app::kExitInputError;
+    }
+    if (resampled)
+      std::cerr << "radx th: note: " << file << ": the rows are not evenly spaced; each column was resampled "
+                << "on a uniform step (the span over the rows) for the " << filter
+                << " filter and read back at the rows' times\n";
+  }
+  const bool written = have_output ? radx::io::write_th_csv_file(groups, chosen, output, error, filter)
+                                   : radx::io::write_th_csv(groups, chosen, std::cout, error, filter);
   if (!written) {
     std::cerr << "radx th: " << file << ": " << error << '\n';
     return radx::app::kExitInputError;
