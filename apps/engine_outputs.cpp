@@ -252,9 +252,10 @@ struct EngineOutputs::Impl {
       for (const auto o : g.objects) l.objects.push_back(user_id(model, g.kind, o));
       if (std::any_of(g.skews.begin(), g.skews.end(), [](std::int64_t s) { return s != 0; }))
         l.skews = g.skews;
-      l.variables = g.variables;
-      for (const auto& v : g.variables) l.units.push_back(unit(solver::th_variable_dim(g.kind, v)));
       samplers.emplace_back(engine, g);
+      // The deck's variables, then the instantaneous values of the interval means (FNX_INST, ...).
+      l.variables = samplers.back().variables();
+      for (const auto& v : l.variables) l.units.push_back(unit(solver::th_variable_dim(g.kind, v)));
       th_values.emplace_back(samplers.back().size(), 0.0);
       layouts.push_back(std::move(l));
     }
@@ -312,6 +313,11 @@ EngineOutputs::EngineOutputs(const model::Model& m, const model::RunControls& c,
 }
 
 EngineOutputs::~EngineOutputs() = default;
+
+void EngineOutputs::accumulate(const solver::CycleReport& r) {
+  for (auto& sampler : impl_->samplers)
+    if (sampler.averages()) sampler.accumulate(impl_->engine, r);
+}
 
 bool EngineOutputs::due(double time) const {
   return time >= impl_->next_state || time >= impl_->next_th;

@@ -4,7 +4,8 @@
 //   states: the first cycle, every /ANIM/DT interval from Tstart to Tstop (at the first cycle whose time
 //     reaches the due time), and the last cycle of the run, also when the run stops on an error;
 //   time-history rows: the first cycle, every /TFILE interval, and the last cycle (when the deck has
-//     /TFILE or any /TH group);
+//     /TFILE or any /TH group); interface and section forces in them are means over the interval since the
+//     previous row, summed from every cycle;
 //   energy samples: every full report (the /PRINT cycles and every output cycle).
 #pragma once
 
@@ -37,6 +38,9 @@ class EngineOutputs {
 
   // True when a state or a time-history row is due at `time` (the engine then makes a full report).
   [[nodiscard]] bool due(double time) const;
+  // Called with every cycle's report, before on_report: the time-history groups that write interval means
+  // (interfaces, sections: solver/outputs/time_history_values.hpp) add the cycle to their integrals.
+  void accumulate(const solver::CycleReport& r);
   // Called with every full report: writes what is due.
   void on_report(const solver::CycleReport& r);
   // At the end of the run (normal or error): the last state and time-history row if not yet written,

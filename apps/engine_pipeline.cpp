@@ -594,6 +594,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
       report_cycle_messages(engine, r, listing_file, listing, err, s);
       listing.progress(r.cycle, r.time, controls.t_stop, wall);
+      outputs->accumulate(r);  // every cycle: the interval means of the time history
       if (!r.full) return true;
       // To the listing and standard output (the run's own record), and to standard error as other warnings.
       for (const auto& m : energy_warnings.check(r.energy.error_percent)) {

@@ -2,7 +2,7 @@
 // beside it or in the same one-file deck) without writing anything; `radx keywords` prints the
 // keyword reference generated from the declarations; `radx th FILE` lists or exports a time history;
 // `radx regress DIR...` runs every deck under the folders given and compares them with their references
-// (apps/regress_command.hpp).
+// (apps/regress_command.hpp); `radx diff RUN_A RUN_B` compares two runs (io/compare/run_compare.hpp).
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -15,8 +15,10 @@
 #include "apps/engine_pipeline.hpp"
 #include "apps/regress_command.hpp"
 #include "apps/starter_pipeline.hpp"
+#include "io/compare/run_compare.hpp"
 #include "io/hdf5/time_history.hpp"
 #include "io/hdf5/time_history_export.hpp"
+#include "io/signal/cfc_filter.hpp"
 #include "parser/reading/deck.hpp"
 #include "parser/reading/deck_echo.hpp"
 #include "solver/model/run_files.hpp"
@@ -46,14 +48,31 @@ constexpr CommandHelp kCommands[] = {
      "                              refusing the deck. --starter-only: stop after the starter (a\n"
      "                              starter deck with no engine deck)\n"},
     {"th",
-     "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]...] | th FILE --recover\n"
+     "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]... [--filter CFC]] | th FILE --recover\n"
      "                              a time history P_th.h5: without --csv, list its groups (objects,\n"
      "                              variables, units, rows, time range); with --csv, write the chosen\n"
      "                              columns (all by default) as CSV to OUT.csv or standard output.\n"
      "                              SELECTOR: a group (node/1), a column (global:IE, node/1:12:DX) or an\n"
      "                              object's columns (node/1:12); '*' and '?' are wildcards; repeatable.\n"
+     "                              --filter CFC60|CFC180|CFC600|CFC1000: SAE J211 channel frequency\n"
+     "                              class filter of each chosen column (phaseless 2-pole Butterworth,\n"
+     "                              forward then backward; -3 dB at 5/3 CFC Hz); rows not evenly spaced\n"
+     "                              are resampled on a uniform step for it (a note says so).\n"
      "                              --recover: rewrite a file whose run was killed inside a flush (HDF5\n"
      "                              readers refuse it) with the rows of the flushes that completed\n"},
+    {"diff",
+     "  diff RUN_A RUN_B [--rel R] [--abs A] [--top N]\n"
+     "                              compare two runs: the figures of their NAME_summary.json and their\n"
+     "                              NAME_th.h5 channels (matched by group, object id and variable, read\n"
+     "                              at the common times by linear interpolation). RUN: a\n"
+     "                              NAME_summary.json, its folder, or DIR/NAME. B passes where |B - A| <=\n"
+     "                              max(R |A|, floor): R the relative tolerance (default 1e-3), floor R x\n"
+     "                              the largest magnitude in either run of the channels of the same /TH\n"
+     "                              group and unit (of a figure's family: every energy, the momentum),\n"
+     "                              or A with --abs (in each channel's unit). Prints the N largest\n"
+     "                              deviations (default 10) with their time and both values.\n"
+     "                              Exit code 0 within the tolerance, 1 past it, 2 on bad input (a\n"
+     "                              missing file, runs that cannot be compared, a bad option)\n"},
     {"regress",
      "  regress [DIR...] [-j N] [--filter PATTERN]... [--update] [--keep] [--junit FILE]\n"
      "          [--summary FILE] [--tol PCT] [--timeout SECONDS] [--threads N] [--work DIR]\n"
@@ -195,12 +214,12 @@ int keywords(const std::vector<std::string>& args) {
 
 // Parsing only: reading, selecting and writing are io's (io/hdf5/time_history_export.hpp).
 int th(const std::vector<std::string>& args) {
-  std::string file, output;
+  std::string file, output, filter;
   bool csv = false, have_output = false, recover = false;
   std::vector<std::string> selectors;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if ((a == "-o" || a == "--output" || a == "--var") && i + 1 >= args.size()) {
+    if ((a == "-o" || a == "--output" || a == "--var" || a == "--filter") && i + 1 >= args.size()) {
       std::cerr << "radx th: " << a << " needs a value\n";
       return radx::app::kExitUsage;
     }
@@ -213,6 +232,8 @@ int th(const std::vector<std::string>& args) {
       have_output = true;
     } else if (a == "--var") {
       selectors.push_back(args[++i]);
+    } else if (a == "--filter") {
+      filter = args[++i];
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << radx::app::unknown_option("radx th", a,
                                              {"--csv", "--recover", "--output", "--var", "--help"})
@@ -229,8 +250,14 @@ int th(const std::vector<std::string>& args) {
     std::cerr << "radx th: give a time-history file (P_th.h5)\n";
     return radx::app::kExitUsage;
   }
-  if (!csv && (have_output || !selectors.empty())) {
-    std::cerr << "radx th: -o and --var go with --csv\n";
+  if (!csv && (have_output || !selectors.empty() || !filter.empty())) {
+    std::cerr << "radx th: -o, --var and --filter go with --csv\n";
+    return radx::app::kExitUsage;
+  }
+  const auto cfc = radx::io::parse_cfc_class(filter);
+  if (!filter.empty() && !cfc) {
+    std::cerr << "radx th: --filter " << filter
+              << ": not a class; accepted: CFC60, CFC180, CFC600, CFC1000\n";
     return radx::app::kExitUsage;
   }
   // --recover rewrites the file: never under a run that is still writing it (its next flush would append at
@@ -290,13 +317,80 @@ int th(const std::vector<std::string>& args) {
     std::cerr << "radx th: " << file << ": " << error << '\n';
     return radx::app::kExitInputError;
   }
-  const bool written = have_output ? radx::io::write_th_csv_file(groups, chosen, output, error)
-                                   : radx::io::write_th_csv(groups, chosen, std::cout, error);
+  if (cfc) {
+    bool resampled = false;
+    if (!radx::io::filter_th_columns(groups, chosen, *cfc, error, &resampled)) {
+      std::cerr << "radx th: " << file << ": --filter " << filter << ": " << error << '\n';
+      return radx::app::kExitInputError;
+    }
+    if (resampled)
+      std::cerr << "radx th: note: " << file << ": the rows are not evenly spaced; each column was resampled "
+                << "on a uniform step (the span over the rows) for the " << filter
+                << " filter and read back at the rows' times\n";
+  }
+  const bool written = have_output ? radx::io::write_th_csv_file(groups, chosen, output, error, filter)
+                                   : radx::io::write_th_csv(groups, chosen, std::cout, error, filter);
   if (!written) {
     std::cerr << "radx th: " << file << ": " << error << '\n';
     return radx::app::kExitInputError;
   }
   return radx::app::kExitOk;
+}
+
+// Parsing only: the comparison is io's (io/compare/run_compare.hpp). Exit 0 within, 1 past, 2 bad input.
+int diff(const std::vector<std::string>& args) {
+  constexpr int kWithin = 0, kPast = 1, kBadInput = 2;
+  radx::io::CompareOptions options;
+  std::vector<std::string> runs;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--rel" || a == "--abs" || a == "--top") {
+      if (i + 1 >= args.size()) {
+        std::cerr << "radx diff: " << a << " needs a value\n";
+        return kBadInput;
+      }
+      const std::string& v = args[++i];
+      double x = -1;
+      try {
+        std::size_t used = 0;
+        x = std::stod(v, &used);
+        if (used != v.size()) x = -1;
+      } catch (...) {
+        x = -1;
+      }
+      if (!(x >= 0) || (a == "--top" && x != static_cast<double>(static_cast<std::size_t>(x)))) {
+        std::cerr << "radx diff: " << a << " " << v << ": give a number >= 0"
+                  << (a == "--top" ? " (a whole number)" : "") << '\n';
+        return kBadInput;
+      }
+      if (a == "--rel") options.rel = x;
+      if (a == "--abs") options.abs = x;
+      if (a == "--top") options.top = static_cast<std::size_t>(x);
+    } else if (!a.empty() && a[0] == '-') {
+      std::cerr << "radx diff: unknown option " << a << '\n';
+      return kBadInput;
+    } else {
+      runs.push_back(a);
+    }
+  }
+  if (runs.size() != 2) {
+    std::cerr
+        << "radx diff: give two runs, RUN_A RUN_B (each a NAME_summary.json, its folder, or DIR/NAME)\n";
+    return kBadInput;
+  }
+  radx::io::RunFiles a, b;
+  std::string error;
+  if (!radx::io::find_run_files(runs[0], a, error) || !radx::io::find_run_files(runs[1], b, error)) {
+    std::cerr << "radx diff: " << error << '\n';
+    return kBadInput;
+  }
+  radx::io::RunComparison c;
+  if (!radx::io::compare_runs(a, b, options, c, error)) {
+    std::cerr << "radx diff: " << error << '\n';
+    return kBadInput;
+  }
+  radx::io::write_comparison(a, b, options, c, std::cout);
+  return c.past() == 0 ? kWithin : kPast;
 }
 
 }  // namespace
@@ -339,6 +433,7 @@ int main(int argc, char** argv) {
   if (cmd == "keywords") return keywords(args);
   if (cmd == "run") return run(args);
   if (cmd == "th") return th(args);
+  if (cmd == "diff") return diff(args);
   if (cmd == "regress") {
     // The decks run in child processes of this same executable (`radx run`).
     std::error_code ec;

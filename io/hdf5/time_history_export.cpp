@@ -11,6 +11,8 @@
 #include <string_view>
 #include <utility>
 
+#include "io/signal/cfc_filter.hpp"
+
 namespace radx::io {
 
 namespace {
@@ -205,8 +207,47 @@ bool select_th_columns(const std::vector<ThGroupData>& groups, const std::vector
   return true;
 }
 
+bool filter_th_columns(std::vector<ThGroupData>& groups, const std::vector<ThColumnRef>& chosen, double cfc,
+                       std::string& error, bool* resampled) {
+  if (resampled != nullptr) *resampled = false;
+  if (chosen.empty()) return true;
+  const std::string& unit = groups[chosen[0].group].time_unit;
+  const auto seconds = seconds_per_time_unit(unit);
+  if (!seconds) {
+    error = "time unit '" + unit +
+            "' is not one the CFC filter converts to seconds (s, ms, us, ns, or a factor to seconds)";
+    return false;
+  }
+  // Every column filtered first, then stored: a failure leaves the groups as they were.
+  std::vector<std::vector<double>> filtered;
+  std::vector<double> times, values;
+  for (const auto& ref : chosen) {
+    const ThGroupData& g = groups[ref.group];
+    const std::size_t n = row_count(g);
+    times.resize(n);
+    values.resize(n);
+    for (std::size_t r = 0; r < n; ++r) {
+      times[r] = g.rows[r * g.columns];
+      values[r] = g.rows[r * g.columns + ref.column];
+    }
+    bool moved = false;
+    filtered.emplace_back();
+    if (!cfc_filter_channel(times, values, cfc, *seconds, filtered.back(), error, &moved)) {
+      error = th_columns(g.layout, g.time_unit)[ref.column].name + ": " + error;
+      return false;
+    }
+    if (moved && resampled != nullptr) *resampled = true;
+  }
+  for (std::size_t k = 0; k < chosen.size(); ++k) {
+    ThGroupData& g = groups[chosen[k].group];
+    for (std::size_t r = 0; r < filtered[k].size(); ++r)
+      g.rows[r * g.columns + chosen[k].column] = filtered[k][r];
+  }
+  return true;
+}
+
 bool write_th_csv(const std::vector<ThGroupData>& groups, const std::vector<ThColumnRef>& chosen,
-                  std::ostream& os, std::string& error) {
+                  std::ostream& os, std::string& error, const std::string& label) {
   if (chosen.empty()) {
     error = "no columns to export";
     return false;
@@ -240,7 +281,7 @@ bool write_th_csv(const std::vector<ThGroupData>& groups, const std::vector<ThCo
   os << csv_field(with_unit("time", first.time_unit));
   for (const auto& ref : chosen) {
     const ThColumn& c = names[ref.group][ref.column];
-    os << ',' << csv_field(with_unit(c.name, c.unit));
+    os << ',' << csv_field(with_unit(c.name, c.unit) + (label.empty() ? "" : ' ' + label));
   }
   os << '\n';
   std::string line;
@@ -262,14 +303,14 @@ bool write_th_csv(const std::vector<ThGroupData>& groups, const std::vector<ThCo
 }
 
 bool write_th_csv_file(const std::vector<ThGroupData>& groups, const std::vector<ThColumnRef>& chosen,
-                       const std::string& path, std::string& error) {
+                       const std::string& path, std::string& error, const std::string& label) {
   const std::string part = path + ".part";
   bool ok = false;
   {
     std::ofstream f(part, std::ios::trunc | std::ios::binary);
     if (!f) {
       error = "cannot create " + part;
-    } else if (write_th_csv(groups, chosen, f, error)) {
+    } else if (write_th_csv(groups, chosen, f, error, label)) {
       f.close();
       ok = !f.fail();
       if (!ok) error = "cannot write " + part;

@@ -14,8 +14,8 @@
 // f_eq is the force the element applies to the node, so F is the force that the groups' side of the cut
 // exerts on the cut's nodes: for a bar held at one end and pulled at the other by P, the half on the held
 // side gives F = -P, the half on the loaded side F = +P (quasi-statically). Radioss accumulates these sums
-// every cycle into impulses (its time history holds integrals over time); radx evaluates them on the cycle
-// it samples.
+// every cycle into impulses (its time history holds integrals over time); radx evaluates them every cycle and
+// writes their means over each output interval (solver/outputs/time_history_values.hpp).
 #include "solver/outputs/section_cut.hpp"
 
 #include <algorithm>

@@ -155,6 +155,20 @@ ThGroupSampler::ThGroupSampler(const ExplicitEngine& e, const model::TimeHistory
     : kind_(g.kind), objects_(g.objects), variables_(g.variables) {
   const auto& m = e.model();
   using K = model::ThKind;
+  // Interval means (time_history_values.hpp): an interface's forces (not its energies), a section's forces
+  // and moments (not its centre), each with its instantaneous value as <VAR>_INST after the deck's variables.
+  if (kind_ == K::Inter || kind_ == K::Section) {
+    const std::size_t deck_variables = variables_.size();
+    for (std::size_t v = 0; v < deck_variables; ++v) {
+      const std::string& name = variables_[v];
+      const bool mean = kind_ == K::Inter ? !name.starts_with("CE_") : name[0] != 'C';
+      if (!mean) continue;
+      averaged_.emplace_back(v, variables_.size());
+      variables_.push_back(name + "_INST");
+    }
+    last_.assign(size(), 0.0);
+    integral_.assign(size(), 0.0);
+  }
   if (kind_ == K::Shell || kind_ == K::Shell3 || kind_ == K::Brick || kind_ == K::Spring ||
       kind_ == K::Truss || kind_ == K::Beam) {
     // Where each object sits in the element groups, found once: the groups do not change during a run.
@@ -595,8 +609,52 @@ void ThGroupSampler::ThPut::operator()(std::size_t obj, const std::string& name,
   if (k < variables.size()) out[obj * variables.size() + k] = value;
 }
 
+void ThGroupSampler::accumulate(const ExplicitEngine& e, const CycleReport& r) {
+  if (averaged_.empty()) return;
+  std::vector<double>& now = cycle_;
+  now.resize(size());
+  sample_cycle(e, r, now);
+  const std::size_t nv = variables_.size();
+  if (accumulated_) {
+    const double half_step = 0.5 * (r.time - last_time_);
+    for (std::size_t o = 0; o < objects_.size(); ++o)
+      for (const auto& [v, inst] : averaged_) {
+        const std::size_t k = o * nv + v;
+        integral_[k] += half_step * (last_[k] + now[k]);
+      }
+  }
+  std::copy(now.begin(), now.end(), last_.begin());
+  last_time_ = r.time;
+  accumulated_ = true;
+}
+
+void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::span<double> out) {
+  if (averaged_.empty()) {
+    sample_cycle(e, r, out);
+    return;
+  }
+  // A caller that did not accumulate this cycle (the engine's outputs accumulate every cycle) gets the
+  // trapezoid from the last cycle it accumulated.
+  if (!accumulated_ || last_time_ != r.time) accumulate(e, r);
+  std::copy(last_.begin(), last_.end(), out.begin());
+  const std::size_t nv = variables_.size();
+  const double interval = r.time - row_time_;
+  // The first row has no interval: it keeps the cycle's value, as does a row at the time of the previous one.
+  const bool mean = sampled_ && interval > 0;
+  for (std::size_t o = 0; o < objects_.size(); ++o)
+    for (const auto& [v, inst] : averaged_) {
+      const std::size_t k = o * nv + v;
+      out[o * nv + inst] = out[k];
+      if (mean) out[k] = integral_[k] / interval;
+      integral_[k] = 0;
+    }
+  row_time_ = r.time;
+  sampled_ = true;
+}
+
 // One row per object, each variable the group asks for at its column; the kind's sampler fills them.
-void ThGroupSampler::sample(const ExplicitEngine& e, const CycleReport& r, std::span<double> out) const {
+void ThGroupSampler::sample_cycle(const ExplicitEngine& e, const CycleReport& r,
+                                  std::span<double> out) const {
   std::fill(out.begin(), out.end(), 0.0);
   const ThPut put{out, variables_};
   using K = model::ThKind;

@@ -16,8 +16,8 @@
 // on the skew's axes of the sampled cycle (X Y Z the position's components on them, as OpenRadioss thnod.F:
 // not measured from the skew's origin).
 // Per rigid wall: FN, FT the normal and tangential force of the last cycle.
-// Per interface: FN, FT the sums over the secondary nodes of the normal (with damping) and friction forces
-// of the last cycle; CE_ELAST, CE_FRIC, CE_DAMP the booked contact energies.
+// Per interface: FN, FT the sums over the secondary nodes of the normal (with damping) and friction forces,
+// as interval means (below); CE_ELAST, CE_FRIC, CE_DAMP the booked contact energies.
 // Per 4-node shell (/TH/SHEL) and per 3-node shell (/TH/SH3N): F1 F2 F12 = t x mean stress (membrane forces
 // per unit length, element frame: the triangle's x axis along n1 -> n2), M1 M2 M12 = t^2 sum m_i sigma_i
 // (moments per unit length), IEM = the element's internal energy (radx does not split membrane and bending
@@ -39,10 +39,24 @@
 // one switched off by /RBODY/OFF (its forces, rotation and inertia are then 0 and its main node is a free
 // node). The starter lists the variables written as 0 (deck check warning) where a deck asks for them.
 // Per section (/TH/SECTIO, solver/outputs/section_cut.cpp): FNX FNY FNZ = (F . n) n and FTX FTY FTZ = F - (F
-// . n) n, global components, where F is the force the section's elements apply to its nodes on the sampled
-// cycle; M1 M2 M3 and F1 F2 F3 the moment about the centre and the force on the section's axes; MX MY MZ the
-// moment on the global axes; CX CY CZ the centre. OpenRadioss writes the time integrals of the forces and
-// moments (impulses) and lets its readers differentiate; radx writes the values themselves.
+// . n) n, global components, where F is the force the section's elements apply to its nodes; M1 M2 M3 and F1
+// F2 F3 the moment about the centre and the force on the section's axes; MX MY MZ the moment on the global
+// axes (all interval means, below); CX CY CZ the centre on the sampled cycle.
+//
+// Interval means. An interface's forces and a section's forces and moments change every cycle (a contact
+// force rings at the contact stiffness' frequency), so a value sampled on one cycle per row is noise. Like
+// OpenRadioss, which sums the impulse F dt of every cycle and writes it for its readers to divide by the
+// output interval, radx writes the impulse over the interval divided by the interval, for a row at t_k:
+//     F_k = (1 / (t_k - t_{k-1})) sum_{cycles m in (t_{k-1}, t_k]} (F^{m-1} + F^m) / 2 (t_m - t_{m-1})
+// the trapezoid rule over the cycles' values F^m (F at t_m). Its interval is exactly (t_{k-1}, t_k], so a
+// constant force gives itself, a force linear in time gives its value at mid-interval, and the impulses
+// F_k (t_k - t_{k-1}) add up to the momentum change of the full-step velocities v^{m-1/2} + dt1/2 a^m that
+// /TH/NODE and /TH/PART write (OpenRadioss's sum of F dt12 runs half a step past t_k). The first row, which
+// has no interval, holds the value of its cycle. Every row after it holds the mean over the time since the
+// previous row, whatever that time (the last row, on the end time, often has a shorter interval; with
+// /TFILE 0, a row every cycle, each row is the mean of two consecutive cycles). The value of the sampled
+// cycle itself stays available as the variable <VAR>_INST (FNX_INST, M1_INST, ...), written after the deck's
+// variables for each averaged one.
 #pragma once
 
 #include <cstdint>
@@ -76,7 +90,16 @@ class ThGroupSampler {
  public:
   ThGroupSampler(const ExplicitEngine& e, const model::TimeHistoryGroup& g);
   [[nodiscard]] std::size_t size() const { return objects_.size() * variables_.size(); }
-  void sample(const ExplicitEngine& e, const CycleReport& r, std::span<double> out) const;
+  // The variables written per object: the deck's, then <VAR>_INST for each averaged one.
+  [[nodiscard]] const std::vector<std::string>& variables() const { return variables_; }
+  // Whether the group has interval means (interfaces and sections with a force or moment variable): then
+  // accumulate must see every cycle.
+  [[nodiscard]] bool averages() const { return !averaged_.empty(); }
+  // Every cycle, before a row of that cycle is sampled: adds the trapezoid of the cycle's step.
+  void accumulate(const ExplicitEngine& e, const CycleReport& r);
+  // A row: the instantaneous values, the interval means in place of the averaged variables (the interval
+  // then starts anew at r.time). A cycle not accumulated yet is accumulated first.
+  void sample(const ExplicitEngine& e, const CycleReport& r, std::span<double> out);
 
  private:
   // The output row of a sample: put(object, variable, value) writes a variable the group asks for and ignores
@@ -99,6 +122,8 @@ class ThGroupSampler {
   void sample_trusses(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
   void sample_beams(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
   void sample_accelerometers(const ExplicitEngine& e, const CycleReport& r, const ThPut& put) const;
+  // The values of the cycle, every variable as sampled (no means).
+  void sample_cycle(const ExplicitEngine& e, const CycleReport& r, std::span<double> out) const;
 
   model::ThKind kind_;
   std::vector<std::int32_t> objects_;
@@ -114,6 +139,14 @@ class ThGroupSampler {
   std::vector<int> bodies_;
   std::vector<std::int32_t> skews_;   // nodes: the dense skew index of each object (kNone: global axes)
   std::vector<SectionSum> sections_;  // sections: one per object
+  // Interval means: for each averaged variable, its column and its <VAR>_INST column.
+  std::vector<std::pair<std::size_t, std::size_t>> averaged_;
+  std::vector<double> last_;      // the values of the last cycle accumulated (object-major, as a row)
+  std::vector<double> integral_;  // sum of the trapezoids since the last row, per value
+  std::vector<double> cycle_;     // scratch: the values of the cycle being accumulated
+  double last_time_ = 0;          // of the last cycle accumulated
+  double row_time_ = 0;           // of the last row
+  bool accumulated_ = false, sampled_ = false;
 };
 
 }  // namespace radx::solver

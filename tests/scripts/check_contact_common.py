@@ -356,10 +356,12 @@ def part_velocity(th, pid, axis="Z"):
 
 
 def contact_forces(th, iid):
-    """(time, [FNX, FNY, FNZ] as a [3, rows] array) of interface iid from the time history."""
+    """(time, [FNX, FNY, FNZ] as a [3, rows] array) of interface iid from the time history: the forces of each
+    row's cycle (FNX_INST..), which the checks compare with that cycle's state; FNX.. are the means over the
+    interval since the previous row (docs/results.md, "Interval means")."""
     import numpy as np
-    t, _ = th_column(th, "%d:FNZ" % iid)
-    return t, np.array([th_column(th, "%d:FN%s" % (iid, a))[1] for a in "XYZ"])
+    t, _ = th_column(th, "%d:FNZ_INST" % iid)
+    return t, np.array([th_column(th, "%d:FN%s_INST" % (iid, a))[1] for a in "XYZ"])
 
 
 def penetrations(m, th, nodes, g, z_plate):

@@ -171,7 +171,7 @@ def one_deck(radx, deck, out, checks):
     umean = u.mean(axis=0)
     _, fnv = cc.contact_forces(th, iid)
     fn_abs = np.linalg.norm(fnv, axis=0)
-    ftv = np.array([cc.th_column(th, "%d:FT%s" % (iid, a))[1] for a in "XYZ"])
+    ftv = np.array([cc.th_column(th, "%d:FT%s_INST" % (iid, a))[1] for a in "XYZ"])  # the cycle's, as FN
     ft_abs = np.linalg.norm(ftv, axis=0)
     pid = m.brick_part()
     _, vz = cc.part_velocity(th, pid)

@@ -1,6 +1,11 @@
 """Section forces (/SECT, /TH/SECTIO) on a clamped brick bar, a truss bar and a beam cantilever pulled by a slow
 ramp.
 
+The forces and moments of /TH/SECTIO are means over the interval since the previous row (docs/results.md,
+"Interval means"): they are checked against the mean of the load over each interval, which for the ramp is its
+value at mid-interval, half a row interval (2.5 % of P) behind its value at the row's time; FNX_INST (the value of
+the row's cycle) is checked against the load at the row's time.
+
 usage: /usr/bin/python3 check_sections.py --radx RADX --deck decks/verification/sections/SECT_BAR_0000.rad --out DIR
 
 Runs the deck (radx run) and reads SECT_BAR_th.h5 with h5py. The model and the closed form are in
@@ -43,12 +48,25 @@ def main():
     col = lambda s, v: r[:, cols["%d:%s" % (s, v)]]
     t = r[:, 0]
     check(len(t) >= 20, "%d rows, expected one every 1e-4 s over 2e-3 s" % len(t))
-    load = P * np.minimum(t / p["T_RAMP"], 1.0)
+    T = p["T_RAMP"]
+    ramp = np.minimum(t / T, 1.0)
+
+    def ramp_integral(x):  # integral of min(s / T, 1) from 0 to x
+        return np.where(x <= T, x * x / (2 * T), T / 2 + (x - T))
+
+    # The mean of the ramp over (t_{k-1}, t_k]; the first row, which has no interval, the ramp's value there.
+    mean_ramp = np.concatenate(([ramp[0]], np.diff(ramp_integral(t)) / np.diff(t)))
+    load = P * mean_ramp
     # Tolerance: a ramp over T excites the bar's first axial mode with an amplitude P / (omega T) (omega = 2 pi c /
     # 4L), 0.5 % of P here (README); 1 % of P bounds it with the higher modes.
     c = math.sqrt(p["E"] / p["RHO"])
     tol = max(0.01, 2.0 / (2 * math.pi * c / (4 * L) * p["T_RAMP"])) * P
-    within(col(1, "FNX"), load, tol, "section 1 (pulled side) FNX = +P(t)")
+    within(col(1, "FNX"), load, tol, "section 1 (pulled side) FNX = +P(t), interval mean")
+    within(col(1, "FNX_INST"), P * ramp, tol, "section 1 (pulled side) FNX_INST = +P(t) at the row's time")
+    within(col(2, "FNX_INST"), -P * ramp, tol, "section 2 (held side) FNX_INST = -P(t) at the row's time")
+    # What tells the two apart: on the ramp a mean lags the row's value by P dt_his / (2 T) = 2.5 % of P.
+    check(np.max(np.abs(col(1, "FNX") - P * ramp)) > 1.5 * tol,
+          "section 1 FNX should lag P(t) by half a row interval on the ramp")
     within(col(2, "FNX"), -load, tol, "section 2 (held side) FNX = -P(t)")
     within(col(1, "F3"), load, tol, "section 1 F3 (normal e3 = X) = P(t)")
     within(col(2, "F1"), -load, tol, "section 2 F1 (global X, Iframe 11) = -P(t)")
@@ -81,7 +99,7 @@ def main():
     # brick bar's does; the tip load Q excites the cantilever's first bending mode, omega_b = 1.875^2
     # sqrt(E I / (rho A L^4)), by Q / (omega_b T): the beam's Z force and moment are checked within twice that.
     arm = L - p["CUT"] * h
-    q_load = p["Q"] * np.minimum(t / p["T_RAMP"], 1.0)
+    q_load = p["Q"] * mean_ramp
     a = p["BEAM_A"]
     omega_b = 1.875 ** 2 * math.sqrt(p["E"] * a ** 4 / 12 / (p["RHO"] * a * a * L ** 4))
     tol_q = max(0.01, 2.0 / (omega_b * p["T_RAMP"])) * p["Q"]

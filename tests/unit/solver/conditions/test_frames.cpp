@@ -100,7 +100,7 @@ TEST_CASE("/TH/NODE in a /FRAME/FIX: the position from the origin, the vectors o
   rc.t_stop = 0.1;
   rc.dt_initial = rc.dt_max = dt;
   sv::ExplicitEngine engine(md, rc, sv::EngineOptions{1, 1});
-  const sv::ThGroupSampler sampler(engine, th);
+  sv::ThGroupSampler sampler(engine, th);
   std::vector<double> v(sampler.size());
   REQUIRE(v.size() == 3u * 6u);
   const double r = 1.0 / std::sqrt(2.0);

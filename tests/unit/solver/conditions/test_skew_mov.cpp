@@ -397,7 +397,7 @@ TEST_CASE("a rigid body spinning at omega carries a /SKEW/MOV: /TH/NODE in the s
   rc.t_stop = 0.1;  // one rad
   rc.dt_initial = rc.dt_max = dt;
   sv::ExplicitEngine engine(md, rc, sv::EngineOptions{1, 1});
-  const sv::ThGroupSampler sampler(engine, th);
+  sv::ThGroupSampler sampler(engine, th);
   std::vector<double> v(sampler.size());
   REQUIRE(v.size() == 3u * 6u);
   double worst_p = 0, worst_v = 0, worst_g = 0;

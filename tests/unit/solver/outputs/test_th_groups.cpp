@@ -197,7 +197,7 @@ TEST_CASE("/TH/RBODY of a body switched off by /RBODY/OFF: STATUS 0, no force, t
     INFO((off ? "/RBODY/OFF" : "formed"));
     if (off) c.rbody_off = {m.rigid_bodies[0].id};
     sv::ExplicitEngine eng(m, c, sv::EngineOptions(1));
-    const sv::ThGroupSampler sampler(eng, g);
+    sv::ThGroupSampler sampler(eng, g);
     std::vector<double> v(sampler.size());
     const auto res = eng.run([&](const sv::CycleReport& r) {
       sampler.sample(eng, r, v);
@@ -259,7 +259,7 @@ TEST_CASE("/TH/RWALL of a parallelogram wall: the impact force of the node hitti
   const md::TimeHistoryGroup& g = group(m, 3);
   REQUIRE(g.kind == md::ThKind::Rwall);
   sv::ExplicitEngine eng(m, c, sv::EngineOptions(1));
-  const sv::ThGroupSampler sampler(eng, g);
+  sv::ThGroupSampler sampler(eng, g);
   std::vector<double> v(sampler.size());
   auto at = [&](const std::string& name) {
     const auto k = std::find(g.variables.begin(), g.variables.end(), name) - g.variables.begin();
