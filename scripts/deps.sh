@@ -4,10 +4,12 @@
 # ParaView's pvpython (python3-paraview), which the tests use to open the files as a user would. Runs:
 # python3-matplotlib, with which the engine draws NAME_energy.png (io/listing/energy_plot.hpp). Fuzzing and the clang
 # UBSan build: clang, its sanitizer and libFuzzer runtimes (libclang-rt-dev) and its OpenMP (libomp-dev). The
-# time-history kill test: strace, which kills the engine at a chosen write.
+# time-history kill test: strace, which kills the engine at a chosen write. The packaging test (cpack -G DEB):
+# dpkg-dev (dpkg-shlibdeps computes the package's dependencies).
 set -euo pipefail
 packages=(cmake ninja-build g++ libeigen3-dev libsuitesparse-dev libhdf5-dev catch2 hdf5-tools python3-h5py
-          python3-numpy python3-matplotlib python3-paraview clang-format git clang libclang-rt-dev libomp-dev strace)
+          python3-numpy python3-matplotlib python3-paraview clang-format git clang libclang-rt-dev libomp-dev strace
+          dpkg-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
