@@ -1,7 +1,7 @@
 # What `cmake --install build --prefix P` puts under P, and the Debian package built from it (cpack -G DEB in
 # the build folder); docs/install.md describes the layout:
 #   bin/                      radx, radx-starter, radx-engine
-#   share/radx/decks/         the embedded default deck's source folder (decks/block_on_plate)
+#   share/radx/decks/         the embedded default deck's source folder (RADX_DEFAULT_DECK_DIR of apps/)
 #   share/radx/paraview/      the ParaView scripts of scripts/paraview/, when the folder has any
 #   share/doc/radx/           README.md, LICENSE and docs/
 #   include/radx/, lib/       the libraries and their headers, for another CMake project:
@@ -16,7 +16,9 @@ set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
 
 install(TARGETS radx radx-starter radx-engine RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/decks/block_on_plate DESTINATION ${CMAKE_INSTALL_DATADIR}/radx/decks)
+# The folder of the deck compiled into the executables, as apps/CMakeLists.txt names it.
+get_directory_property(RADX_DEFAULT_DECK_DIR DIRECTORY ${PROJECT_SOURCE_DIR}/apps DEFINITION RADX_DEFAULT_DECK_DIR)
+install(DIRECTORY ${RADX_DEFAULT_DECK_DIR} DESTINATION ${CMAKE_INSTALL_DATADIR}/radx/decks)
 # Globbed at build time too (CONFIGURE_DEPENDS): the folder may not exist yet, and a script added to it is
 # installed without a manual reconfigure.
 file(GLOB RADX_PARAVIEW_SCRIPTS LIST_DIRECTORIES false CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/scripts/paraview/*)

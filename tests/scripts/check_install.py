@@ -1,11 +1,15 @@
 """radx as a user gets it: installed with `cmake --install`, or packaged with `cpack -G DEB`, then run on the
 default deck from a folder that has nothing to do with the source or build tree.
 
-usage: /usr/bin/python3 check_install.py --build BUILD --source SRC --out DIR --version V --arch A (prefix|deb)
+usage: /usr/bin/python3 check_install.py --build BUILD --source SRC --deck DECK_DIR --out DIR --version V --arch A
+                                         (prefix|deb)
+
+DECK_DIR is the folder of the deck compiled into the executables (apps/CMakeLists.txt), ROOT_0000.rad and
+ROOT_0001.rad in it.
 
 prefix: `cmake --install BUILD --prefix DIR/prefix`, then
-  1. the layout: bin/radx, bin/radx-starter, bin/radx-engine; share/radx/decks/block_on_plate with the default
-     deck's two files byte for byte as decks/block_on_plate has them; share/doc/radx/README.md and every
+  1. the layout: bin/radx, bin/radx-starter, bin/radx-engine; share/radx/decks/<DECK_DIR's name> with the
+     default deck's two files and its regression reference; share/doc/radx/README.md and every
      docs/*.md; lib/cmake/radx/radxConfig.cmake, radxConfigVersion.cmake, radxTargets.cmake; the headers
      under include/radx; share/radx/paraview holds exactly the files of scripts/paraview (none while the
      folder is absent);
@@ -26,9 +30,10 @@ The run check: `radx run` (no deck: the embedded default deck) in a new empty wo
 writes, in that folder, the starter's and engine's listings, the model file, NAME_summary.json, the state
 index NAME.hdf.series, the time history NAME_th.h5, the energy CSV and PNG. The summary's status is normal,
 its energy error is within half a percentage point of the regression reference installed beside the deck
-(BLOCK_ON_PLATE.ref, whose own tolerance it is) and its cycle count within the reference's 1 %; its version,
+(ROOT.ref, whose own tolerance it is) and its cycle count within the reference's 1 %; its version,
 commit and arch are those that `radx --version` prints, the version is V and the arch A; its units are the
-work units of the installed deck's /BEGIN card.
+work units of the installed deck's /BEGIN card (its fourth data line), and the deck files the run wrote are
+the installed ones byte for byte.
 """
 import argparse
 import glob
@@ -42,8 +47,9 @@ import tempfile
 from results_common import check, finish
 
 EXES = ["radx", "radx-starter", "radx-engine"]
-DECK = "block_on_plate"
-ROOT = "BLOCK_ON_PLATE"
+# The default deck's folder name and file root, set by main() from --deck.
+DECK = ""
+ROOT = ""
 
 
 def sh(cmd, **kw):
@@ -88,10 +94,12 @@ def reference(deck_dir):
 
 
 def work_units(starter_deck):
-    """The /BEGIN card's work units: the data line after the "#          Work_mass" comment."""
+    """The /BEGIN card's work units: its data lines are the run name, the deck version, the input units and
+    the work units (comment lines, starting with #, are not data)."""
     lines = open(starter_deck).read().splitlines()
-    k = next(i for i, l in enumerate(lines) if "Work_mass" in l)
-    return lines[k + 1].split()
+    k = next(i for i, l in enumerate(lines) if l.rstrip() == "/BEGIN")
+    data = [l for l in lines[k + 1:] if not l.startswith("#")]
+    return data[3].split()
 
 
 def check_run(radx, share, want_version, want_arch):
@@ -118,6 +126,9 @@ def check_run(radx, share, want_version, want_arch):
             return None
         check(s["status"] == "normal", "status %s: %s" % (s["status"], s.get("message")))
         ref = reference(deck_dir)
+        check("energy.error_percent" in ref and "cycles" in ref, "%s.ref lacks the energy error or the cycles" % ROOT)
+        if "energy.error_percent" not in ref or "cycles" not in ref:
+            return s
         value, _, floor = ref["energy.error_percent"]
         err = s["energy"]["error_percent"]
         check(abs(err - value) <= floor, "energy error %.4g %% is not within %g points of the reference %.4g %%" %
@@ -258,11 +269,19 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
     ap.add_argument("--source", required=True)
+    ap.add_argument("--deck", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--version", required=True)
     ap.add_argument("--arch", required=True)
     ap.add_argument("mode", choices=["prefix", "deb"])
     a = ap.parse_args()
+    global DECK, ROOT
+    DECK = os.path.basename(os.path.normpath(a.deck))
+    starters = glob.glob(os.path.join(a.deck, "*_0000.rad"))
+    check(len(starters) == 1, "%s has %d starter decks" % (a.deck, len(starters)))
+    if len(starters) != 1:
+        finish("")
+    ROOT = os.path.basename(starters[0])[:-len("_0000.rad")]
     shutil.rmtree(a.out, ignore_errors=True)
     os.makedirs(a.out)
     if a.mode == "prefix":
