@@ -1,5 +1,6 @@
 #include "apps/engine_pipeline.hpp"
 
+#include "apps/build_info.hpp"
 #include "apps/engine_outputs.hpp"
 
 #include <fcntl.h>
@@ -504,6 +505,9 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   if (!claim_output_folder(opt.out_dir, root, lock, err)) return 1;
   const std::string summary_path = io::summary_json_path(opt.out_dir, root);
   io::RunSummary s;
+  s.version = kVersion;
+  s.commit = build_commit();
+  s.arch = kArch;
   // A stop signal before the engine runs: the summary says so, and the exit code is the signal's.
   auto interrupted_early = [&]() {
     const int signo = StopSignals::received();
@@ -529,6 +533,9 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     err << starter_hint(model_path, root);
     return 1;
   }
+  s.mass_unit = model.units.mass_name;
+  s.length_unit = model.units.length_name;
+  s.time_unit = model.units.time_name;
   if (StopSignals::received() != 0) return interrupted_early();
   Diagnostics model_diags = check_deck_against_model(deck, controls, model);
   model_diags.print(err);

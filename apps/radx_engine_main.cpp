@@ -2,6 +2,7 @@
 #include <iostream>
 #include <string>
 
+#include "apps/build_info.hpp"
 #include "apps/cli_common.hpp"
 #include "apps/engine_pipeline.hpp"
 
@@ -47,7 +48,7 @@ int main(int argc, char** argv) {
     // -version and -nt N are Radioss's own spellings (engine_linux64 -i DECK -nt N): scripts written for it
     // run unchanged.
     if (a == "--version" || a == "-version") {
-      std::cout << "radx-engine " << radx::app::kVersionText << '\n';
+      std::cout << "radx-engine " << radx::app::version_text() << '\n';
       return radx::app::kExitOk;
     }
     const bool takes_value = a == "-i" || a == "--out" || a == "--model" || a == "--threads" || a == "-nt";

@@ -11,6 +11,7 @@
 
 #include <filesystem>
 
+#include "apps/build_info.hpp"
 #include "apps/cli_common.hpp"
 #include "apps/engine_pipeline.hpp"
 #include "apps/regress_command.hpp"
@@ -426,7 +427,7 @@ int main(int argc, char** argv) {
       }
   }
   if (cmd == "--version") {
-    std::cout << "radx " << radx::app::kVersionText << '\n';
+    std::cout << "radx " << radx::app::version_text() << '\n';
     return radx::app::kExitOk;
   }
   if (cmd == "check") return check(args);

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <string>
 
+#include "apps/build_info.hpp"
 #include "apps/cli_common.hpp"
 #include "apps/starter_pipeline.hpp"
 
@@ -44,7 +45,7 @@ int main(int argc, char** argv) {
       return radx::app::kExitOk;
     }
     if (a == "--version" || a == "-version") {
-      std::cout << "radx-starter " << radx::app::kVersionText << '\n';
+      std::cout << "radx-starter " << radx::app::version_text() << '\n';
       return radx::app::kExitOk;
     }
     if ((a == "-i" || a == "--out" || a == "-nt" || a == "-np") && i + 1 >= argc) {

@@ -6,11 +6,17 @@
 # UBSan build: clang, its sanitizer and libFuzzer runtimes (libclang-rt-dev) and its OpenMP (libomp-dev). The
 # time-history kill test: strace, which kills the engine at a chosen write. ParaView screenshots in the tests: xvfb
 # and xauth, for xvfb-run (Debian's pvpython crashes with --force-offscreen-rendering, so it renders on a virtual
-# X display).
+# X display). The packaging test (cpack -G DEB): dpkg-dev (dpkg-shlibdeps computes the package's dependencies).
+# `deps.sh run` installs only what building the executables and running them needs (the README's first
+# command): no test, fuzzing or packaging tools. Catch2 stays in that set: the configuration, the same for
+# both commands, looks for it.
+# Usage: scripts/deps.sh [run]
 set -euo pipefail
-packages=(cmake ninja-build g++ libeigen3-dev libsuitesparse-dev libhdf5-dev catch2 hdf5-tools python3-h5py
-          python3-numpy python3-matplotlib python3-paraview clang-format git clang libclang-rt-dev libomp-dev strace
-          xvfb xauth)
+packages=(cmake ninja-build g++ libeigen3-dev libsuitesparse-dev libhdf5-dev catch2 python3-matplotlib git)
+if [[ "${1:-}" != run ]]; then
+  packages+=(hdf5-tools python3-h5py python3-numpy python3-paraview clang-format clang libclang-rt-dev libomp-dev
+             strace dpkg-dev xvfb xauth)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

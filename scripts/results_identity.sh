@@ -68,8 +68,8 @@ compare() {
       *_summary.json)
         if ! /usr/bin/python3 - "$a/$rel" "$b/$rel" << 'EOF'; then
 import json, re, sys
-# Timings, the host and the thread count are not results.
-skip = re.compile(r"seconds|wall|_us|us_per|cost|timing|elapsed|date|host|started|finished|threads|cpu|version|path|file")
+# Timings, the host, the thread count and the build (version, commit, instruction set) are not results.
+skip = re.compile(r"seconds|wall|_us|us_per|cost|timing|elapsed|date|host|started|finished|threads|cpu|version|path|file|^commit$|^arch$")
 def strip(x):
     if isinstance(x, dict):
         return {k: strip(v) for k, v in x.items() if not skip.search(k)}

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds everything, then runs the main job (starter then engine) on the embedded default deck (block on
-# plate) in out/default.
+# Builds the three executables (radx, radx-starter, radx-engine and the libraries they link; not the test
+# suite, which scripts/test.sh builds), then runs the main job (starter then engine) on the embedded default
+# deck (block on plate) in out/default.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+RADX_TARGETS="radx radx-starter radx-engine" bash scripts/build.sh
 mkdir -p out/default
 ./build/apps/radx run --out out/default

@@ -155,6 +155,17 @@ std::string summary_json(const RunSummary& s) {
   w.field("message", json_string(s.message));
   w.field("run_name", json_string(s.run_name));
   w.field_int("run_number", s.run_number);
+  if (!s.version.empty()) w.field("version", json_string(s.version));
+  if (!s.commit.empty()) w.field("commit", json_string(s.commit));
+  if (!s.arch.empty()) w.field("arch", json_string(s.arch));
+  if (!s.mass_unit.empty()) {
+    w.key("units");
+    w.open('{');
+    w.field("mass", json_string(s.mass_unit));
+    w.field("length", json_string(s.length_unit));
+    w.field("time", json_string(s.time_unit));
+    w.close('}');
+  }
   w.field_int("cycles", static_cast<long long>(s.cycles));
   w.field("time", s.time);
   w.field("dt", s.dt);
@@ -536,6 +547,14 @@ bool read_summary_json(const std::string& path, RunSummary& s, std::string& erro
     r.message = string_member(d, "message");
     r.run_name = string_member(d, "run_name");
     r.run_number = static_cast<int>(number_member(d, "run_number", 1));
+    r.version = string_member(d, "version");
+    r.commit = string_member(d, "commit");
+    r.arch = string_member(d, "arch");
+    if (const JsonValue* u = member(d, "units"); u && u->kind == JsonValue::Kind::Object) {
+      r.mass_unit = string_member(*u, "mass");
+      r.length_unit = string_member(*u, "length");
+      r.time_unit = string_member(*u, "time");
+    }
     r.cycles = static_cast<std::int64_t>(number_member(d, "cycles"));
     r.time = number_member(d, "time");
     r.dt = number_member(d, "dt");

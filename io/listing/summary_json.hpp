@@ -4,7 +4,10 @@
 // NAME_summary.json.part first, flushed to disk, then renamed over the real name.
 //
 // Keys: status ("normal", "error", "interrupted" by SIGTERM or SIGINT, or "running": written when the run
-// starts, so a run killed outright leaves it), message, run_name, run_number, cycles, time, dt, nodes,
+// starts, so a run killed outright leaves it), message, run_name, run_number, version, commit and arch (the
+// build that ran: "0.1.0", the git commit "395d0c5", "395d0c5-dirty" or "unknown", and the instruction set
+// "x86-64-v2"), units {mass, length, time} (the work units as /BEGIN names them and the listing states them,
+// from when the model is read), cycles, time, dt, nodes,
 // elements, threads, wall_seconds, us_per_element_cycle, element_loop_seconds and
 // element_loop_us_per_element_cycle (the element loop's wall time: element forces, their sums, the assembly,
 // the integration), initial_mass, mass, added_mass, momentum [x, y, z], energy {kinetic,
@@ -45,11 +48,11 @@ std::string summary_json_path(const std::string& dir, const std::string& output_
 // (the .part file is removed).
 bool write_summary_json(const std::string& path, const RunSummary& s, std::string& error);
 
-// Reads `path` into `s`: status, message, run_name, run_number, cycles, time, dt, nodes, elements, threads,
-// wall_seconds, initial_mass, mass, added_mass, momentum, the energies by kind (the derived kinetic, total
-// and error_percent are not stored) and the interfaces (lagrange_solver is not read). A null number reads as
-// NaN. False with `error` set ("PATH: what is wrong") when the file cannot be read, is not JSON, or lacks
-// status, cycles, time or energy.
+// Reads `path` into `s`: status, message, run_name, run_number, version, commit, arch, units, cycles, time,
+// dt, nodes, elements, threads, wall_seconds, initial_mass, mass, added_mass, momentum, the energies by kind
+// (the derived kinetic, total and error_percent are not stored) and the interfaces (lagrange_solver is not
+// read). A null number reads as NaN. False with `error` set ("PATH: what is wrong") when the file cannot be
+// read, is not JSON, or lacks status, cycles, time or energy.
 bool read_summary_json(const std::string& path, RunSummary& s, std::string& error);
 
 }  // namespace radx::io

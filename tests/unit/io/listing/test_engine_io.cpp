@@ -658,6 +658,12 @@ radx::io::RunSummary sample_summary() {
   s.message = "stop: \"energy\" \\ error\n\tabove 5 %\x01 caf\xc3\xa9 \xff";
   s.run_name = "BLOCK";
   s.run_number = 2;
+  s.version = "0.1.0";
+  s.commit = "395d0c5-dirty";
+  s.arch = "x86-64-v3";
+  s.mass_unit = "Mg";
+  s.length_unit = "mm";
+  s.time_unit = "s";
   s.cycles = 500;
   s.time = 0.1;
   s.dt = 1.0 / 3.0;
@@ -750,6 +756,8 @@ for k in ["status", "message", "cycles", "time", "dt", "nodes", "elements", "thr
 need(d["status"] == "error", "status")
 need(d["message"] == 'stop: "energy" \\ error\n\tabove 5 %\x01 caf\u00e9 \ufffd', "message " + repr(d["message"]))
 need(d["run_name"] == "BLOCK" and d["run_number"] == 2, "run")
+need(d["version"] == "0.1.0" and d["commit"] == "395d0c5-dirty" and d["arch"] == "x86-64-v3", "build")
+need(d["units"] == {"mass": "Mg", "length": "mm", "time": "s"}, "units " + repr(d.get("units")))
 need(d["cycles"] == 500 and isinstance(d["cycles"], int), "cycles")
 need(d["time"] == 0.1, "time")
 need(d["dt"] == 1.0 / 3.0, "dt")
@@ -779,13 +787,19 @@ need(i[1]["id"] == 9 and i[1]["max_penetration"] == 0, "interface 9")
   const std::string cmd = "/usr/bin/python3 " + script + " " + path;
   CHECK(std::system(cmd.c_str()) == 0);
 
-  // With no interface the list is empty, and the document is still valid JSON.
+  // With no interface the list is empty, and the document is still valid JSON. Build and units unknown (a
+  // run stopped before its model was read): their keys are left out rather than written empty.
   auto s2 = s;
   s2.interfaces.clear();
   s2.status = radx::io::RunStatus::Normal;
+  s2.version = s2.commit = s2.arch = s2.mass_unit = s2.length_unit = s2.time_unit = "";
   const std::string text = radx::io::summary_json(s2);
   CHECK(text.find("\"interfaces\": []") != std::string::npos);
   CHECK(text.find("\"status\": \"normal\"") != std::string::npos);
+  for (const char* key : {"\"version\"", "\"commit\"", "\"arch\"", "\"units\""}) {
+    INFO(key);
+    CHECK(text.find(key) == std::string::npos);
+  }
   const std::string p2 = dir.write("empty.json", text);
   const std::string cmd2 =
       "/usr/bin/python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); sys.exit(d[\"interfaces\"] != "
@@ -811,6 +825,12 @@ TEST_CASE("NAME_summary.json reads back through read_summary_json", "[engine-io]
   CHECK(r.message == "stop: \"energy\" \\ error\n\tabove 5 %\x01 caf\xc3\xa9 \xef\xbf\xbd");
   CHECK(r.run_name == "BLOCK");
   CHECK(r.run_number == 2);
+  CHECK(r.version == "0.1.0");
+  CHECK(r.commit == "395d0c5-dirty");
+  CHECK(r.arch == "x86-64-v3");
+  CHECK(r.mass_unit == "Mg");
+  CHECK(r.length_unit == "mm");
+  CHECK(r.time_unit == "s");
   CHECK(r.cycles == 500);
   CHECK(r.time == 0.1);
   CHECK(r.dt == 1.0 / 3.0);  // 17 digits: the same double
