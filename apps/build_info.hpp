@@ -17,7 +17,7 @@ inline constexpr std::string_view kArch = RADX_ARCH;
 // (cmake/RadxGitCommit.cmake), so it follows HEAD without a new configure.
 std::string_view build_commit();
 
-// "0.1.0 (commit 395d0c5, x86-64-v2)": what `--version` prints after the program's name.
+// "0.1.0 (commit abc1234, x86-64-v2)": what `--version` prints after the program's name.
 inline std::string version_text() {
   return std::string(kVersion) + " (commit " + std::string(build_commit()) + ", " + std::string(kArch) + ")";
 }

@@ -236,8 +236,8 @@ int th(const std::vector<std::string>& args) {
     } else if (a == "--filter") {
       filter = args[++i];
     } else if (!a.empty() && a[0] == '-') {
-      std::cerr << radx::app::unknown_option("radx th", a,
-                                             {"--csv", "--recover", "--output", "--var", "--help"})
+      std::cerr << radx::app::unknown_option(
+                       "radx th", a, {"--csv", "--recover", "--output", "-o", "--var", "--filter", "--help"})
                 << '\n';
       return radx::app::kExitUsage;
     } else if (file.empty()) {
@@ -319,8 +319,8 @@ int th(const std::vector<std::string>& args) {
     return radx::app::kExitInputError;
   }
   if (cfc) {
-    bool resampled = false;
-    if (!radx::io::filter_th_columns(groups, chosen, *cfc, error, &resampled)) {
+    bool resampled = false, coarse = false;
+    if (!radx::io::filter_th_columns(groups, chosen, *cfc, error, &resampled, &coarse)) {
       std::cerr << "radx th: " << file << ": --filter " << filter << ": " << error << '\n';
       return radx::app::kExitInputError;
     }
@@ -328,6 +328,10 @@ int th(const std::vector<std::string>& args) {
       std::cerr << "radx th: note: " << file << ": the rows are not evenly spaced; each column was resampled "
                 << "on a uniform step (the span over the rows) for the " << filter
                 << " filter and read back at the rows' times\n";
+    if (coarse)
+      std::cerr << "radx th: note: " << file << ": the rows are sampled below the 10 F_H = " << 50 * *cfc / 3
+                << " Hz that SAE J211 asks for the " << filter
+                << " class; the filter ran, but a finer /TFILE interval gives a truer pulse\n";
   }
   const bool written = have_output ? radx::io::write_th_csv_file(groups, chosen, output, error, filter)
                                    : radx::io::write_th_csv(groups, chosen, std::cout, error, filter);
@@ -368,7 +372,7 @@ int diff(const std::vector<std::string>& args) {
       if (a == "--abs") options.abs = x;
       if (a == "--top") options.top = static_cast<std::size_t>(x);
     } else if (!a.empty() && a[0] == '-') {
-      std::cerr << "radx diff: unknown option " << a << '\n';
+      std::cerr << radx::app::unknown_option("radx diff", a, {"--rel", "--abs", "--top", "--help"}) << '\n';
       return kBadInput;
     } else {
       runs.push_back(a);
@@ -445,7 +449,8 @@ int main(int argc, char** argv) {
     }
     return radx::app::regress_command(args, self, std::cout, std::cerr);
   }
-  const std::string hint = radx::did_you_mean(cmd, {"check", "keywords", "run", "th", "regress", "help"});
+  const std::string hint =
+      radx::did_you_mean(cmd, {"check", "keywords", "run", "th", "diff", "regress", "help"});
   std::cerr << "radx: unknown command '" << cmd << "'" << (hint.empty() ? "" : " (" + hint + ")") << '\n';
   usage(std::cerr);
   return radx::app::kExitUsage;

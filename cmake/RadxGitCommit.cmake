@@ -1,7 +1,7 @@
 # Script mode (cmake -DSOURCE_DIR=... -DOUTPUT=... -P RadxGitCommit.cmake), run at every build by the target
 # radx_commit (apps/CMakeLists.txt): writes OUTPUT, the C++ source of radx::app::build_commit(), which
 # returns the commit the sources are at:
-#   the short hash of HEAD ("395d0c5"), with "-dirty" when a tracked file differs from HEAD (untracked files
+#   the short hash of HEAD ("abc1234"), with "-dirty" when a tracked file differs from HEAD (untracked files
 #   do not count, as for git describe --dirty);
 #   "unknown" when SOURCE_DIR is not the top of a git work tree (a source tarball, even one unpacked inside
 #   another repository) or git cannot be run.

@@ -208,8 +208,9 @@ bool select_th_columns(const std::vector<ThGroupData>& groups, const std::vector
 }
 
 bool filter_th_columns(std::vector<ThGroupData>& groups, const std::vector<ThColumnRef>& chosen, double cfc,
-                       std::string& error, bool* resampled) {
+                       std::string& error, bool* resampled, bool* coarse) {
   if (resampled != nullptr) *resampled = false;
+  if (coarse != nullptr) *coarse = false;
   if (chosen.empty()) return true;
   const std::string& unit = groups[chosen[0].group].time_unit;
   const auto seconds = seconds_per_time_unit(unit);
@@ -237,6 +238,8 @@ bool filter_th_columns(std::vector<ThGroupData>& groups, const std::vector<ThCol
       return false;
     }
     if (moved && resampled != nullptr) *resampled = true;
+    const double mean_step = n > 1 ? (times[n - 1] - times[0]) / static_cast<double>(n - 1) * *seconds : 0.0;
+    if (coarse != nullptr && mean_step > 0 && 1.0 / mean_step < 10.0 * (5.0 / 3.0) * cfc) *coarse = true;
   }
   for (std::size_t k = 0; k < chosen.size(); ++k) {
     ThGroupData& g = groups[chosen[k].group];

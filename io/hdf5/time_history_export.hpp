@@ -36,10 +36,12 @@ bool select_th_columns(const std::vector<ThGroupData>& groups, const std::vector
 // Replaces the values of the chosen columns by their SAE J211 CFC filtering (io/signal/cfc_filter.hpp:
 // class `cfc`, 60, 180, 600 or 1000; the time unit of the file converted to seconds), each column on its own.
 // Rows not evenly spaced are resampled for the filter and read back at their times; `*resampled` says so.
+// `*coarse`: a column's sampling rate is below the 10 F_H that SAE J211 asks for (F_H = 5/3 CFC), though fine
+// enough for the filter to run.
 // False with `error` when the time unit is not one radx converts to seconds, or a column cannot be filtered
 // (fewer than 3 rows, a step too coarse for the class): the groups are then unchanged.
 bool filter_th_columns(std::vector<ThGroupData>& groups, const std::vector<ThColumnRef>& chosen, double cfc,
-                       std::string& error, bool* resampled = nullptr);
+                       std::string& error, bool* resampled = nullptr, bool* coarse = nullptr);
 
 // Writes one header line "time [s],global:IE [J],..." (a unit in brackets when it has one; a field with
 // a comma or a quote is quoted as RFC 4180 says) and one line per time row, values with 17 significant

@@ -133,7 +133,7 @@ struct RunSummary {
                         // SIGTERM ...")
   std::string run_name;
   int run_number = 1;
-  // The build that ran (apps/build_info.hpp): "0.1.0", "395d0c5" (or "395d0c5-dirty", "unknown"),
+  // The build that ran (apps/build_info.hpp): "0.1.0", "abc1234" (or "abc1234-dirty", "unknown"),
   // "x86-64-v2". Empty: not said (the summary then leaves the key out).
   std::string version, commit, arch;
   // The model's work units as /BEGIN names them and the listing states them ("kg", "m", "s"); empty before

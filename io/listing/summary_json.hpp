@@ -5,7 +5,7 @@
 //
 // Keys: status ("normal", "error", "interrupted" by SIGTERM or SIGINT, or "running": written when the run
 // starts, so a run killed outright leaves it), message, run_name, run_number, version, commit and arch (the
-// build that ran: "0.1.0", the git commit "395d0c5", "395d0c5-dirty" or "unknown", and the instruction set
+// build that ran: "0.1.0", the git commit "abc1234", "abc1234-dirty" or "unknown", and the instruction set
 // "x86-64-v2"), units {mass, length, time} (the work units as /BEGIN names them and the listing states them,
 // from when the model is read), cycles, time, dt, nodes,
 // elements, threads, wall_seconds, us_per_element_cycle, element_loop_seconds and

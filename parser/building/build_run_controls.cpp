@@ -591,7 +591,9 @@ namespace {
 
 // The /ANIM field names the Radioss engine knows (its animation reader, read in OpenRadioss), as the
 // beginnings it compares: a written name that starts with one of them is a Radioss field. `exact` names
-// must be written whole (DT, not DTX).
+// must be written whole (DT, not DTX). /ANIM/ELEM's P and K are compared on their first letter alone by
+// Radioss too (any P... but PLA51 is the pressure, any K... the turbulent energy), so no name starting with
+// them is a misspelling there.
 struct RadiossAnimName {
   std::string_view family;
   std::string_view name;

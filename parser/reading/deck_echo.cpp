@@ -229,7 +229,7 @@ const std::vector<SupportFamily>& support_families() {
        {"/BCS", "/IMPVEL", "/IMPDISP", "/IMPACC", "/CLOAD", "/PLOAD", "/GRAV", "/INIVEL", "/LOAD", "/PBLAST",
         "/ADMAS", "/INISTA", "/INISHE", "/INIBRI"}},
       {"Outputs", {"/TH/", "/ANIM", "/SECT", "/ACCEL", "/TFILE", "/H3D", "/OUTP", "/PRINT"}},
-      {"Run controls (engine deck)", {"/RUN", "/DT", "/STOP", "/RBODY/ON", "/RBODY/OFF", "/PARITH", "/VERS"}},
+      {"Run controls (engine deck)", {"/RUN", "/DT", "/STOP", "/PARITH", "/VERS"}},
   };
   return families;
 }
@@ -254,7 +254,7 @@ void write_support_table(std::ostream& os) {
   // `/MAT/LAW02`)".
   auto shown = [](std::string_view path, const std::vector<std::string_view>& aliases,
                   std::string_view note) {
-    std::string text = "`" + std::string(path) + std::string(note) + "`";
+    std::string text = "`" + std::string(path) + "`" + std::string(note);
     for (std::size_t k = 0; k < aliases.size(); ++k)
       text += (k == 0 ? " (`" : ", `") + std::string(aliases[k]) + "`" + (k + 1 == aliases.size() ? ")" : "");
     return text;

@@ -8,8 +8,9 @@
     line chart beside it.
 Deleted elements are hidden by VTK's ghost-cell flag (cell array vtkGhostType), whatever is shown.
 
-In the ParaView GUI: Macros > Import new macro... (this file), run it, and choose NAME.hdf.series in the
-dialog that asks for it (or set RADX_RUN=path/NAME.hdf.series in the environment before starting ParaView).
+In the ParaView GUI: Macros > Import new macro... (this file, once); then open NAME.hdf.series, select it in the
+pipeline browser and click radx_open in the Macros menu (or start ParaView with RADX_RUN=path/NAME.hdf.series
+in the environment and run the macro).
 From pvpython or the Python shell:
 
     import radx_open

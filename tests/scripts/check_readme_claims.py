@@ -5,7 +5,9 @@
   docs/keywords.md (generated from the declarations and kept current by the keywords.doc test): one it runs,
   unless the README's sentence says it is refused, ignored or not written; a family root (`/GRNOD`) must have
   keywords radx runs under it;
-* a keyword the README says is refused is in the keyword reference's "refused by name" column;
+* a keyword named in a sentence that says something is refused, ignored or not written must still be one radx
+  declares (such a sentence may name keywords that run beside the one refused, so it is not required to be in
+  the refused column);
 * the count of sample folders the README states ("thirty-five folders under `decks/`") is the number of deck
   folders directly under decks/.
 

@@ -659,7 +659,7 @@ radx::io::RunSummary sample_summary() {
   s.run_name = "BLOCK";
   s.run_number = 2;
   s.version = "0.1.0";
-  s.commit = "395d0c5-dirty";
+  s.commit = "abc1234-dirty";
   s.arch = "x86-64-v3";
   s.mass_unit = "Mg";
   s.length_unit = "mm";
@@ -756,7 +756,7 @@ for k in ["status", "message", "cycles", "time", "dt", "nodes", "elements", "thr
 need(d["status"] == "error", "status")
 need(d["message"] == 'stop: "energy" \\ error\n\tabove 5 %\x01 caf\u00e9 \ufffd', "message " + repr(d["message"]))
 need(d["run_name"] == "BLOCK" and d["run_number"] == 2, "run")
-need(d["version"] == "0.1.0" and d["commit"] == "395d0c5-dirty" and d["arch"] == "x86-64-v3", "build")
+need(d["version"] == "0.1.0" and d["commit"] == "abc1234-dirty" and d["arch"] == "x86-64-v3", "build")
 need(d["units"] == {"mass": "Mg", "length": "mm", "time": "s"}, "units " + repr(d.get("units")))
 need(d["cycles"] == 500 and isinstance(d["cycles"], int), "cycles")
 need(d["time"] == 0.1, "time")
@@ -826,7 +826,7 @@ TEST_CASE("NAME_summary.json reads back through read_summary_json", "[engine-io]
   CHECK(r.run_name == "BLOCK");
   CHECK(r.run_number == 2);
   CHECK(r.version == "0.1.0");
-  CHECK(r.commit == "395d0c5-dirty");
+  CHECK(r.commit == "abc1234-dirty");
   CHECK(r.arch == "x86-64-v3");
   CHECK(r.mass_unit == "Mg");
   CHECK(r.length_unit == "mm");
