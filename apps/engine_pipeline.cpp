@@ -429,6 +429,63 @@ void fill_run_summary(io::RunSummary& s, const solver::RunResult& result, const 
   s.output_seconds = outputs.seconds_writing();
 }
 
+// What the pipeline does after each cycle the engine reports: the cycle's messages and progress, the time
+// history's interval means, and on full reports the energy warnings, the outputs, the listing line, the /STOP
+// criteria and the stop signals. after_cycle returns false to end the run, with the reason in stop_message
+// (and the signal in stopped_by).
+struct CycleWatch {
+  solver::ExplicitEngine& engine;
+  const model::RunControls& controls;
+  EngineOutputs& outputs;
+  io::EngineListing& listing;
+  std::ostream& listing_file;
+  std::ostream& err;
+  io::RunSummary& s;
+  std::chrono::steady_clock::time_point wall0 = std::chrono::steady_clock::now();
+  bool lagrange_column = engine.contact() != nullptr && engine.contact()->has_lagrange();
+  io::EnergyErrorWarnings energy_warnings{};
+  std::string stop_message{};
+  int stopped_by = 0;
+
+  bool after_cycle(const solver::CycleReport& r) {
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    report_cycle_messages(engine, r, listing_file, listing, err, s);
+    listing.progress(r.cycle, r.time, controls.t_stop, wall);
+    outputs.accumulate(r);  // every cycle: the interval means of the time history
+    if (!r.full) return true;
+    // To the listing and standard output (the run's own record), and to standard error as other warnings.
+    for (const auto& m : energy_warnings.check(r.energy.error_percent)) {
+      listing.message("  WARNING (cycle " + std::to_string(r.cycle) + "): " + m);
+      err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
+      s.add_warning("cycle " + std::to_string(r.cycle) + ": " + m);
+    }
+    try {
+      outputs.on_report(r);
+    } catch (const std::exception& e) {
+      stop_message = std::string("cannot write the results: ") + e.what();
+      return false;
+    }
+    // Read once per cycle, on full reports only: a signal that lands after a partial report stops the next
+    // cycle, which output_due makes full. On the last cycle the run ends normally anyway.
+    const int signo = r.time < controls.t_stop ? StopSignals::received() : 0;
+    if (signo == 0 && r.cycle % std::max(1, controls.print_every) != 0 && r.time < controls.t_stop)
+      return true;
+    listing.line(listing_line(r, lagrange_column));
+    if (std::string why = stop_criterion(controls, r); !why.empty()) {
+      stop_message = why;
+      return false;
+    }
+    if (signo != 0) {
+      stopped_by = signo;
+      char at[96];
+      std::snprintf(at, sizeof at, " at cycle %lld, time %.5E", static_cast<long long>(r.cycle), r.time);
+      stop_message = "interrupted by " + signal_name(signo) + at;
+      return false;
+    }
+    return true;
+  }
+};
+
 }  // namespace
 
 // The file is removed as the lock is released, so a folder keeps no lock file after a run that ended. A
@@ -590,50 +647,10 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   h.threads = engine.team().size();  // the threads the run uses, as the footer and the summary say
   listing.header(h);
 
-  const auto wall0 = std::chrono::steady_clock::now();
-  const bool lagrange_column = engine.contact() != nullptr && engine.contact()->has_lagrange();
-  std::string stop_message;
-  io::EnergyErrorWarnings energy_warnings;
-  int stopped_by = 0;
+  CycleWatch watch{engine, controls, *outputs, listing, listing_file, err, s};
   solver::RunResult result;
   try {
-    result = engine.run([&](const solver::CycleReport& r) {
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-      report_cycle_messages(engine, r, listing_file, listing, err, s);
-      listing.progress(r.cycle, r.time, controls.t_stop, wall);
-      outputs->accumulate(r);  // every cycle: the interval means of the time history
-      if (!r.full) return true;
-      // To the listing and standard output (the run's own record), and to standard error as other warnings.
-      for (const auto& m : energy_warnings.check(r.energy.error_percent)) {
-        listing.message("  WARNING (cycle " + std::to_string(r.cycle) + "): " + m);
-        err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
-        s.add_warning("cycle " + std::to_string(r.cycle) + ": " + m);
-      }
-      try {
-        outputs->on_report(r);
-      } catch (const std::exception& e) {
-        stop_message = std::string("cannot write the results: ") + e.what();
-        return false;
-      }
-      // Read once per cycle, on full reports only: a signal that lands after a partial report stops the next
-      // cycle, which output_due makes full. On the last cycle the run ends normally anyway.
-      const int signo = r.time < controls.t_stop ? StopSignals::received() : 0;
-      if (signo == 0 && r.cycle % std::max(1, controls.print_every) != 0 && r.time < controls.t_stop)
-        return true;
-      listing.line(listing_line(r, lagrange_column));
-      if (std::string why = stop_criterion(controls, r); !why.empty()) {
-        stop_message = why;
-        return false;
-      }
-      if (signo != 0) {
-        stopped_by = signo;
-        char at[96];
-        std::snprintf(at, sizeof at, " at cycle %lld, time %.5E", static_cast<long long>(r.cycle), r.time);
-        stop_message = "interrupted by " + signal_name(signo) + at;
-        return false;
-      }
-      return true;
-    });
+    result = engine.run([&](const solver::CycleReport& r) { return watch.after_cycle(r); });
   } catch (const std::exception& e) {
     err << opt.engine_deck << ": error: " << e.what() << '\n';
     s.status = io::RunStatus::Error;
@@ -644,13 +661,13 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     return 1;
   }
 
-  finish_outputs(*outputs, opt.plot, err, result, stop_message, stopped_by);
+  finish_outputs(*outputs, opt.plot, err, result, watch.stop_message, watch.stopped_by);
 
-  set_final_status(s, result, stopped_by, stop_message);
+  set_final_status(s, result, watch.stopped_by, watch.stop_message);
   fill_run_summary(s, result, model, controls, engine, *outputs,
                    (fs::path(opt.out_dir) / (root + "_th.h5")).string());
   listing.summary(s);
-  return end_of_run(s, summary_path, stopped_by, err);
+  return end_of_run(s, summary_path, watch.stopped_by, err);
 }
 
 }  // namespace radx::app
