@@ -157,15 +157,19 @@ bool compare_histories(const RunFiles& fa, const RunFiles& fb, const std::vector
   };
   std::vector<Pair> pairs;
   std::map<std::string, double> scale;
+  // A channel one run has and the other lacks: a deviation past every tolerance.
+  auto only_in_one_run = [&out](const std::string& name, const char* run) {
+    Deviation d;
+    d.quantity = "th:" + name;
+    ++out.channels;
+    d.score = kInf;
+    d.why = std::string("only run ") + run + " has this channel";
+    out.deviations.push_back(std::move(d));
+  };
   for (const auto& [name, ra] : ca) {
     const auto it = cb.find(name);
     if (it == cb.end()) {
-      Deviation d;
-      d.quantity = "th:" + name;
-      ++out.channels;
-      d.score = kInf;
-      d.why = "only run A has this channel";
-      out.deviations.push_back(std::move(d));
+      only_in_one_run(name, "A");
       continue;
     }
     const ChannelRef rb = it->second;
@@ -196,13 +200,7 @@ bool compare_histories(const RunFiles& fa, const RunFiles& fb, const std::vector
     out.deviations.push_back(std::move(d));
   }
   for (const auto& [name, rb] : cb) {
-    if (ca.count(name) != 0) continue;
-    Deviation d;
-    d.quantity = "th:" + name;
-    ++out.channels;
-    d.score = kInf;
-    d.why = "only run B has this channel";
-    out.deviations.push_back(std::move(d));
+    if (ca.count(name) == 0) only_in_one_run(name, "B");
   }
   return true;
 }

@@ -256,28 +256,6 @@ std::vector<std::string> ExplicitEngine::take_events() {
 
 namespace {
 
-std::string element_kind_name(const ShellGroup& g) {
-  return g.triangle ? "3-node shell" : "shell";
-}
-std::string element_kind_name(const BrickGroup&) {
-  return "brick";
-}
-std::string element_kind_name(const TetraGroup&) {
-  return "tetrahedron";
-}
-std::string element_kind_name(const Hex20Group&) {
-  return "20-node brick";
-}
-std::string element_kind_name(const SpringGroup&) {
-  return "spring";
-}
-std::string element_kind_name(const TrussGroup&) {
-  return "truss";
-}
-std::string element_kind_name(const BeamGroup&) {
-  return "beam";
-}
-
 // The listing names at most this many deleted elements one by one (Radioss names every one; a crash model
 // that erodes thousands would bury the rest of the listing), then says how many more there are.
 constexpr std::int64_t kDeletionLines = 1000;
@@ -298,6 +276,7 @@ void ExplicitEngine::list_deleted_elements(std::int64_t cycle, double time) {
   std::int64_t listed = before;
   groups_.for_each([&](const auto& g) {
     const auto& block = element_block(model_, g);
+    const std::string_view kind = model::element_type_name(block.type);
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
       if (g.off[k] > 0) continue;
@@ -309,9 +288,9 @@ void ExplicitEngine::list_deleted_elements(std::int64_t cycle, double time) {
       ++deleted_by_part_[static_cast<std::size_t>(g.part)];
       const std::int64_t part_id = model_.parts[static_cast<std::size_t>(g.part)].id;
       if (first_deleted_.size() < kFirstDeleted)
-        first_deleted_.push_back({element_kind_name(g), block.id[e], part_id, cycle, time});
+        first_deleted_.push_back({std::string(kind), block.id[e], part_id, cycle, time});
       if (listed <= kDeletionLines)
-        deletion_events_.push_back(element_kind_name(g) + " " + std::to_string(block.id[e]) + " of part " +
+        deletion_events_.push_back(std::string(kind) + " " + std::to_string(block.id[e]) + " of part " +
                                    std::to_string(part_id) +
                                    " deleted: it failed and carries no force from now on");
       else if (listed == kDeletionLines + 1)
