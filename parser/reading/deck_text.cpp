@@ -33,28 +33,38 @@ std::string not_a_deck_file(const fs::path& p) {
   }
 }
 
+// Read to the end rather than to the size the system reports: files of /proc and pipes report 0 and still
+// hold text, which would otherwise be read as an empty file without a word.
 bool read_whole_file(const fs::path& p, std::string& out) {
   std::ifstream in(p, std::ios::binary);
   if (!in) return false;
-  in.seekg(0, std::ios::end);
-  const auto size = in.tellg();
-  if (size < 0) return false;
+  std::error_code ec;
+  const auto reported = fs::file_size(p, ec);
   // A file too large for memory is an input problem like any other, not a crash.
   try {
-    out.resize(static_cast<std::size_t>(size));
+    if (!ec) out.reserve(static_cast<std::size_t>(reported));
+    constexpr std::size_t kChunk = 1 << 16;
+    std::size_t used = 0;
+    while (in) {
+      out.resize(used + kChunk);
+      in.read(out.data() + used, static_cast<std::streamsize>(kChunk));
+      used += static_cast<std::size_t>(in.gcount());
+    }
+    out.resize(used);
   } catch (const std::exception&) {
     return false;
   }
-  in.seekg(0, std::ios::beg);
-  in.read(out.data(), size);
-  return static_cast<bool>(in) || in.eof();
+  return in.eof() && !in.bad();
 }
 
 class Loader {
  public:
   Loader(DeckText& out, Diagnostics& diags) : out_(out), diags_(diags) {}
 
-  bool load(const fs::path& path, const std::string& display, SourcePos included_from, bool top) {
+  // hint: said after a failure to read an included file (where its name was looked for); empty for the
+  // main deck and for absolute include names.
+  bool load(const fs::path& path, const std::string& display, SourcePos included_from, bool top,
+            const std::string& hint = {}) {
     std::error_code ec;
     const fs::path canon = fs::weakly_canonical(path, ec);
     for (const auto& open : stack_) {
@@ -73,8 +83,7 @@ class Loader {
                      "cannot read the deck file '" + display + "': " + why + accepted);
       } else {
         diags_.error(Diag::IncludeNotFound, out_.where(included_from, 1), About{"#include"},
-                     "cannot read the included file '" + display + "': " + why + accepted +
-                         " (include paths are relative to the including file)");
+                     "cannot read the included file '" + display + "': " + why + accepted + hint);
       }
       return false;
     }
@@ -85,8 +94,7 @@ class Loader {
                      "cannot open the deck file '" + display + "': check the path and the permissions");
       } else {
         diags_.error(Diag::IncludeNotFound, out_.where(included_from, 1), About{"#include"},
-                     "cannot open the included file '" + display +
-                         "': include paths are relative to the including file");
+                     "cannot open the included file '" + display + "'" + hint);
       }
       return false;
     }
@@ -94,6 +102,10 @@ class Loader {
       diags_.error(Diag::NotUtf8OrBinary, Where{display, 0, 0}, About{},
                    "the file holds NUL bytes: it is not a text deck");
       return false;
+    }
+    if (!top && content.find_first_not_of(" \t\r\n") == std::string::npos) {
+      diags_.warning(Diag::IncludeForm, out_.where(included_from, 1), About{"#include"},
+                     "the included file '" + display + "' is empty: nothing is read from it");
     }
     const auto file_index = static_cast<std::uint32_t>(out_.files.size());
     out_.files.push_back(display);
@@ -209,7 +221,11 @@ class Loader {
         inc = beside_main;
       }
     }
-    load(inc, inc_display, pos, false);
+    const std::string hint = fs::path(name).is_relative()
+                                 ? " (a relative include name is looked for beside the including file, then "
+                                   "beside the main deck)"
+                                 : "";
+    load(inc, inc_display, pos, false, hint);
   }
 
   DeckText& out_;

@@ -32,7 +32,9 @@ const std::vector<CodeInfo>& code_table() {
        "deck goes on after the #include line"},
       {Diag::IncludeForm,
        "an #include read in a way worth knowing: a double-quoted name (OpenRadioss does not read it), or a "
-       "file found beside the main deck rather than beside the including file (where Radioss looks next)"},
+       "file found beside the main deck rather than beside the including file (where Radioss looks next), or "
+       "an "
+       "empty file"},
       {Diag::BadInteger, "a field that must hold an integer holds something else"},
       {Diag::BadReal, "a field that must hold a real number holds something else"},
       {Diag::RealOverflow, "a real number outside the double-precision range"},

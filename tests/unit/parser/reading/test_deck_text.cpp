@@ -82,6 +82,48 @@ TEST_CASE("an include loop and a missing include are located errors", "[lexer]")
   }
 }
 
+TEST_CASE("a file whose reported size is 0 is read to its end, and an empty include is said", "[lexer]") {
+  TempDir dir;
+  // /proc/self/environ reports size 0 and holds the environment, NUL-separated: read whole, it is refused as
+  // binary, where a read of the reported size took it for an empty file without a word.
+  const auto proc =
+      dir.write("proc_0000.rad", radx::test::begin_block(2026) + "#include /proc/self/environ\n/END\n");
+  radx::Diagnostics d1;
+  radx::read_starter_deck(proc, d1);
+  INFO(codes(d1));
+  CHECK(d1.contains(Diag::NotUtf8OrBinary));
+  // An absolute name that cannot be opened gets no hint about relative names.
+  const auto absent = dir.write(
+      "abs_0000.rad", radx::test::begin_block(2026) + "#include /nonexistent/radx/nodes.inc\n/END\n");
+  radx::Diagnostics d2;
+  radx::read_starter_deck(absent, d2);
+  REQUIRE(d2.contains(Diag::IncludeNotFound));
+  for (const auto& i : d2.items())
+    if (i.code == Diag::IncludeNotFound) CHECK(i.message.find("relative") == std::string::npos);
+  // A relative one does, naming where it was looked for.
+  const auto rel = dir.write("rel_0000.rad", radx::test::begin_block(2026) + "#include sub/none.inc\n/END\n");
+  radx::Diagnostics d3;
+  radx::read_starter_deck(rel, d3);
+  REQUIRE(d3.contains(Diag::IncludeNotFound));
+  for (const auto& i : d3.items())
+    if (i.code == Diag::IncludeNotFound)
+      CHECK(i.message.find("beside the including file") != std::string::npos);
+  // An empty included file is read as nothing, with a warning at its #include line.
+  dir.write("empty.inc", "");
+  const auto empty =
+      dir.write("empty_0000.rad", radx::test::begin_block(2026) + "/NODE\n#include empty.inc\n/END\n");
+  radx::Diagnostics d4;
+  radx::read_starter_deck(empty, d4);
+  INFO(codes(d4));
+  REQUIRE(d4.contains(Diag::IncludeForm));
+  for (const auto& i : d4.items())
+    if (i.code == Diag::IncludeForm) {
+      CHECK(i.severity == radx::Severity::Warning);
+      CHECK(i.message.find("empty") != std::string::npos);
+      CHECK(i.line == 7);
+    }
+}
+
 TEST_CASE("a comma line is read as free format, field by field in declaration order", "[lexer]") {
   TempDir dir;
   const auto path =
