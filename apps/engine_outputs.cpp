@@ -16,6 +16,7 @@
 #include "io/listing/energy_plot.hpp"
 #include "io/listing/unit_labels.hpp"
 #include "parser/building/build_run_controls.hpp"
+#include "solver/model/output_schedule.hpp"
 #include "solver/outputs/result_fields.hpp"
 #include "solver/outputs/time_history_values.hpp"
 
@@ -351,9 +352,7 @@ void EngineOutputs::on_report(const solver::CycleReport& r) {
     // Next /ANIM/DT time strictly after this one (several intervals may pass in one cycle).
     double next = kNever;
     if (c.anim_dt > 0) {
-      next = c.anim_start;
-      if (r.time >= next) next += c.anim_dt * std::floor((r.time - c.anim_start) / c.anim_dt);
-      while (next <= r.time) next += c.anim_dt;  // strictly after, whatever the rounding of the floor
+      next = model::next_output_time(c.anim_start, c.anim_dt, r.time);
       if (next > c.anim_stop) next = kNever;
     }
     s.next_state = next;
@@ -364,8 +363,7 @@ void EngineOutputs::on_report(const solver::CycleReport& r) {
     if (c.th_dt == 0.0) {
       next = std::nextafter(r.time, kNever);  // /TFILE dt_his 0: every cycle
     } else if (c.th_dt < kNoInterval) {
-      next = c.th_dt * std::floor(r.time / c.th_dt);
-      while (next <= r.time) next += c.th_dt;
+      next = model::next_output_time(0.0, c.th_dt, r.time);
     }
     s.next_th = next;
   }

@@ -2,6 +2,7 @@
 
 #include "apps/build_info.hpp"
 #include "apps/engine_outputs.hpp"
+#include "apps/stop_deadline.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -130,6 +131,21 @@ class StopSignals {
   static constexpr std::array<int, 2> kSignals{SIGTERM, SIGINT};
   std::array<struct sigaction, 2> previous_{};
 };
+
+// The watchdog's end of a run whose cycle did not end after a stop signal: the default action of the
+// signal, as a second signal would give. The summary keeps saying "running": it was not written, and the
+// run did not end normally.
+void end_stuck_run(double waited_s) {
+  const int signo = StopSignals::received();
+  char line[160];
+  std::snprintf(line, sizeof line,
+                "radx-engine: the cycle under way did not end %.1f s after the stop signal; ending the run "
+                "now, without a last state\n",
+                waited_s);
+  std::fputs(line, stderr);
+  ::signal(signo, SIG_DFL);
+  ::raise(signo);
+}
 
 std::string signal_name(int signo) {
   if (signo == SIGTERM) return "SIGTERM";
@@ -558,6 +574,14 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   // the run before its first cycle, and the default action (an end without a summary) never meets it.
   const StopSignals stop_signals;
   const std::string root = model::run_output_root(opt.engine_deck);
+  // The deck first: a restart run (refused until radx can resume one) must not touch run 1's outputs, which
+  // claiming the folder removes. Other deck errors still clear them, so no earlier run's results stay beside
+  // a run that did not happen.
+  Diagnostics diags;
+  EngineDeck deck;
+  model::RunControls controls;
+  const bool deck_read = read_engine_deck_checked(opt.engine_deck, diags, deck, controls, err);
+  if (!deck_read && controls.run_number >= 2) return 1;
   RunLock lock;
   if (!claim_output_folder(opt.out_dir, root, lock, err)) return 1;
   const std::string summary_path = io::summary_json_path(opt.out_dir, root);
@@ -575,10 +599,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
     err << "radx-engine: " << s.message << '\n';
     return 128 + signo;
   };
-  Diagnostics diags;
-  EngineDeck deck;
-  model::RunControls controls;
-  if (!read_engine_deck_checked(opt.engine_deck, diags, deck, controls, err)) return 1;
+  if (!deck_read) return 1;
   s.run_name = controls.run_name;
   s.run_number = controls.run_number;
   const std::string model_path =
@@ -650,7 +671,11 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   CycleWatch watch{engine, controls, *outputs, listing, listing_file, err, s};
   solver::RunResult result;
   try {
-    result = engine.run([&](const solver::CycleReport& r) { return watch.after_cycle(r); });
+    StopDeadline deadline([] { return StopSignals::received() != 0; }, end_stuck_run);
+    result = engine.run([&](const solver::CycleReport& r) {
+      deadline.cycle_ended();
+      return watch.after_cycle(r);
+    });
   } catch (const std::exception& e) {
     err << opt.engine_deck << ": error: " << e.what() << '\n';
     s.status = io::RunStatus::Error;

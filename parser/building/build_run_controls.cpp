@@ -34,15 +34,17 @@
 
 #include "parser/reading/closest_names.hpp"
 #include "parser/reading/field_parse.hpp"
+#include "solver/model/output_schedule.hpp"
 #include "solver/model/run_files.hpp"
 
 namespace radx {
 
 namespace {
 
-constexpr double kOff = 1e30;          // /STOP values and /TFILE: never
-constexpr double kAnimNever = 1e20;    // /ANIM/DT Tstop 0
-constexpr double kDefaultScale = 0.9;  // Tscale 0
+constexpr double kOff = 1e30;            // /STOP values and /TFILE: never
+constexpr double kAnimNever = 1e20;      // /ANIM/DT Tstop 0
+constexpr double kManyAnimStates = 1e5;  // more /ANIM/DT states than any study reads: a unit slip
+constexpr double kDefaultScale = 0.9;    // Tscale 0
 
 std::string num(double v) {
   char buf[32];
@@ -139,6 +141,7 @@ class Builder {
   void print(model::RunControls& rc);
   void tfile(model::RunControls& rc);
   void anim_dt(model::RunControls& rc);
+  void check_anim_count(const EngineRecord& r, model::RunControls& rc);
   void anim_names(model::RunControls& rc);
   void time_steps(model::RunControls& rc);
   void step_bounds(model::RunControls& rc);
@@ -235,6 +238,15 @@ void Builder::tfile(model::RunControls& rc) {
                 ": the time-history interval must be >= 0 (0: every cycle; remove /TFILE for none)");
     else
       rc.th_dt = dt;
+    if (dt > 0 && rc.t_stop > 0 && dt < model::time_resolution(rc.t_stop)) {
+      warning(*r, Diag::ValueOutOfRange,
+              "dt_his = " + num(dt) + " is below the time resolution at the end time " + num(rc.t_stop) +
+                  " (" + num(model::time_resolution(rc.t_stop)) + "): the deck asks for " +
+                  num(rc.t_stop / dt) +
+                  " rows, and an interval this small cannot advance the time; radx writes a row every cycle, "
+                  "as dt_his = 0 asks");
+      rc.th_dt = 0.0;
+    }
   }
 }
 
@@ -296,10 +308,35 @@ void Builder::anim_dt(model::RunControls& rc) {
   rc.anim_start = start;
   rc.anim_dt = interval;
   rc.anim_stop = end;
+  check_anim_count(*r, rc);
   if (rc.t_stop > 0 && start > rc.t_stop)
     warning(*r, Diag::InconsistentValues,
             "Tstart = " + num(start) + " is after the end of the run (" + num(rc.t_stop) +
                 "): only the first and last states are written");
+}
+
+// An interval that asks for more states than any study reads is kept, with a warning that says how many;
+// one below the time resolution at the end time is refused: no schedule can step by less
+// (solver/model/output_schedule.hpp), so it would write a full state every cycle, a disk filled by a typo.
+// (A time-history interval that small is raised to every cycle instead, which dt_his = 0 asks for anyway.)
+void Builder::check_anim_count(const EngineRecord& r, model::RunControls& rc) {
+  const double last = std::min(rc.anim_stop, rc.t_stop);
+  if (!(rc.t_stop > 0) || !(last > rc.anim_start)) return;
+  const double states = (last - rc.anim_start) / rc.anim_dt;
+  const double resolution = model::time_resolution(last);
+  if (rc.anim_dt < resolution) {
+    error(r, Diag::ValueOutOfRange,
+          "dT = " + num(rc.anim_dt) + " is below the time resolution at the last state time " + num(last) +
+              " (" + num(resolution) + "): the deck asks for " + num(states) +
+              " states, and no schedule can step by less than the resolution, so it would write a full "
+              "state every cycle; give dT >= " +
+              num(resolution) + " (a state every cycle is never what a study reads: check the unit)");
+  } else if (states > kManyAnimStates) {
+    warning(r, Diag::ValueOutOfRange,
+            "dT = " + num(rc.anim_dt) + " asks for " + num(states) +
+                " animation states (each a full copy of the /ANIM fields; at most one per cycle is written); "
+                "check the interval's unit");
+  }
 }
 
 void Builder::anim_names(model::RunControls& rc) {
@@ -702,6 +739,19 @@ void check_run_name(const EngineDeck& deck, const model::RunControls& controls,
   }
 }
 
+// Run 2 and later resume run 1 from its restart file in Radioss. radx writes no restart file yet, so such a
+// run could only start again from cycle 0 under run 1's name, over run 1's outputs: it is refused before the
+// engine claims the output folder, and run 1's files stay as they are.
+void refuse_restart_run(const EngineDeck& deck, const EngineRecord& r, const model::RunControls& rc,
+                        Diagnostics& diags) {
+  diags.error(Diag::UnimplementedOption, deck.where(r.pos, 1), About{"/RUN"},
+              "run number " + std::to_string(rc.run_number) +
+                  " is a restart run: Radioss resumes it from the restart file of the run before, and radx "
+                  "writes no restart file yet, so it cannot resume; radx runs run 1 only (" +
+                  (rc.run_name.empty() ? std::string("NAME") : rc.run_name) +
+                  "_0001.rad with /RUN/name/1). Nothing was run and no output was touched");
+}
+
 model::RunControls read_run_controls(const std::string& engine_deck_path, Diagnostics& diags,
                                      EngineDeck* deck) {
   EngineDeck read = read_engine_deck(engine_deck_path, diags);
@@ -726,6 +776,7 @@ model::RunControls read_run_controls(const std::string& engine_deck_path, Diagno
       }
     }
     check_run_name(read, rc, engine_deck_path, diags);
+    if (!runs.empty() && rc.run_number >= 2) refuse_restart_run(read, *runs.front(), rc, diags);
   }
   if (deck) *deck = std::move(read);
   return rc;

@@ -16,7 +16,12 @@ time history are there):
   * SIGTERM then SIGINT, and SIGINT then SIGTERM: the engine ends at once, killed by a signal (the default
     action), not by the clean exit a single signal gives;
   * SIGTERM twice a millisecond apart (what `timeout` sends: to the engine, then to its process group) is one
-    request: the engine stops cleanly with exit 143, an "interrupted" summary and a last state.
+    request: the engine stops cleanly with exit 143, an "interrupted" summary and a last state;
+  * a restart deck (NAME_0002.rad, /RUN/NAME/2) is refused with exit 1 naming the restart run, and leaves every
+    output of run 1 as it was (same files, same bytes);
+  * a time-history interval of 1e-30 (below the resolution of the time at the end time, where adding it to the
+    time changes nothing) is said when the deck is read and the run ends normally, a row every cycle: the
+    schedule of outputs cannot stall a cycle.
 """
 import argparse
 import json
@@ -137,7 +142,51 @@ def main():
     check(p.returncode == 128 + signal.SIGTERM and status == "interrupted",
           "SIGTERM twice within a millisecond: exit %s and status %r, not one clean stop (143, interrupted)"
           % (p.returncode, status))
-    finish("a refused or failed start leaves no earlier output; one engine a name; a second signal ends the run")
+    check_restart_refused(a, out, base, env, normal_run)
+    check_tiny_th_interval(a, out, base, env, engine_deck, source)
+    finish("a refused or failed start leaves no earlier output; one engine a name; a second signal ends the run; "
+           "a restart deck touches nothing; a tiny output interval does not stall")
+
+
+def snapshot(out, base):
+    """The bytes of every file of the run in out."""
+    return {f: open(os.path.join(out, f), "rb").read() for f in sorted(os.listdir(out))
+            if f.startswith(base) and os.path.isfile(os.path.join(out, f))}
+
+
+def check_restart_refused(a, out, base, env, normal_run):
+    normal_run()
+    before = snapshot(out, base)
+    restart = os.path.join(out, base + "_0002.rad")
+    lines = open(a.deck.replace("_0000.rad", "_0001.rad")).read().splitlines()
+    k = next(i for i, line in enumerate(lines) if line.startswith("/RUN/"))
+    lines[k] = "/RUN/%s/2" % base
+    open(restart, "w").write("\n".join(lines) + "\n")
+    before.pop(os.path.basename(restart), None)
+    r = subprocess.run([a.radx_engine, restart, "--out", out, "--no-plot"], capture_output=True, text=True,
+                       env=env, timeout=60)
+    check(r.returncode == 1 and "run number 2 is a restart run" in r.stderr,
+          "a restart deck: exit %d, %r" % (r.returncode, r.stderr[-800:]))
+    after = snapshot(out, base)
+    after.pop(os.path.basename(restart), None)
+    changed = sorted(f for f in set(before) | set(after) if before.get(f) != after.get(f))
+    check(not changed, "a refused restart deck changed or removed run 1's %s" % changed)
+    os.remove(restart)
+
+
+def check_tiny_th_interval(a, out, base, env, engine_deck, source):
+    write_engine_deck(source, engine_deck, th_dt=1e-30)
+    try:
+        r = subprocess.run([a.radx_engine, engine_deck, "--out", out, "--no-plot"], capture_output=True, text=True,
+                           env=env, timeout=120)
+    except subprocess.TimeoutExpired:
+        check(False, "an engine with /TFILE 1e-30 did not end within 120 s (a stalled output schedule)")
+        return
+    status = json.load(open(os.path.join(out, base + "_summary.json")))["status"]
+    check(r.returncode == 0 and status == "normal", "/TFILE 1e-30: exit %d, status %r, %r"
+          % (r.returncode, status, r.stderr[-800:]))
+    check("below the time resolution" in r.stderr and "a row every cycle" in r.stderr,
+          "/TFILE 1e-30 was not said when the deck was read: %r" % r.stderr[-800:])
 
 
 if __name__ == "__main__":

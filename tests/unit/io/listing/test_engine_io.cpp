@@ -260,6 +260,36 @@ TEST_CASE("engine defaults: /PRINT -100, no /TFILE, Tscale 0, Tstop 0, /STOP 0",
   }
 }
 
+TEST_CASE("output intervals no schedule can follow, or that ask for absurd counts, are said at the deck",
+          "[engine-io]") {
+  radx::test::TempDir dir;
+  SECTION("a time-history interval below the time resolution is every cycle, with the rows it asked for") {
+    const Built b = build(dir, "A_0001.rad", "/RUN/A/1\n0.02\n/TFILE\n1e-30\n/END\n");
+    INFO(all_diags(b.diags));
+    CHECK_FALSE(b.diags.has_errors());
+    const auto* w = find(b.diags, Diag::ValueOutOfRange);
+    REQUIRE(w);
+    CHECK(w->severity == radx::Severity::Warning);
+    CHECK(w->line == 3);
+    CHECK(w->message.find("2e+28 rows") != std::string::npos);  // 0.02 / 1e-30
+    CHECK(b.rc.th_dt == 0.0);
+  }
+  SECTION("an interval just above the resolution is kept as given") {
+    const Built b = build(dir, "A_0001.rad", "/RUN/A/1\n1\n/TFILE\n1e-15\n/END\n");
+    CHECK(b.diags.items().empty());
+    CHECK(b.rc.th_dt == 1e-15);
+  }
+  SECTION("more animation states than any study reads: kept, with the count") {
+    const Built b = build(dir, "A_0001.rad", "/RUN/A/1\n1\n/ANIM/DT\n0 1e-6\n/END\n");
+    INFO(all_diags(b.diags));
+    CHECK_FALSE(b.diags.has_errors());
+    const auto* w = find(b.diags, Diag::ValueOutOfRange);
+    REQUIRE(w);
+    CHECK(w->message.find("1e+06 animation states") != std::string::npos);
+    CHECK(b.rc.anim_dt == 1e-6);
+  }
+}
+
 TEST_CASE("engine deck errors are located at their keyword line", "[engine-io]") {
   struct Case {
     const char* what;
@@ -274,6 +304,9 @@ TEST_CASE("engine deck errors are located at their keyword line", "[engine-io]")
       {"dT negative", "/ANIM/DT\n0 -1e-3\n", "/ANIM/DT", Diag::ValueOutOfRange, "dT = -0.001"},
       {"anim Tstop negative", "/ANIM/DT\n0 1e-3 -1\n", "/ANIM/DT", Diag::ValueOutOfRange, "Tstop = -1"},
       {"anim function", "/ANIM/DT\n0 1e-3 0 0 12\n", "/ANIM/DT", Diag::UnimplementedOption, "fct_ID = 12"},
+      // Tstop 1: the spacing of doubles at the last state time is 2^-52 = 2.2e-16.
+      {"anim below resolution", "/ANIM/DT\n0 1e-300\n", "/ANIM/DT", Diag::ValueOutOfRange,
+       "below the time resolution at the last state time 1 (2.22045e-16)"},
       {"Tscale negative", "/DT\n-0.5 0\n", "/DT", Diag::ValueOutOfRange, "Tscale = -0.5"},
       {"Tmin negative", "/DT/SHELL/CST\n0.9 -1e-6\n", "/DT/SHELL/CST", Diag::ValueOutOfRange,
        "Tmin = -1e-06"},
@@ -394,9 +427,12 @@ TEST_CASE(
     DYNAMIC_SECTION(name) {
       const Built b = build(dir, name, "/RUN/CASE\n1.5\n/TFILE/4\n0.0\n/END\n");
       INFO(all_diags(b.diags));
-      CHECK(b.diags.items().empty());
+      const bool restart = std::string(name) != "CASE.rad";
+      // Run 3 would be a restart, which radx refuses (the restart test below); nothing else is said.
+      CHECK(b.diags.items().size() == (restart ? 1u : 0u));
+      CHECK(b.diags.has_errors() == restart);
       CHECK(b.rc.run_name == "CASE");
-      CHECK(b.rc.run_number == (std::string(name) == "CASE.rad" ? 1 : 3));
+      CHECK(b.rc.run_number == (restart ? 3 : 1));
       CHECK(b.rc.th_dt == 0.0);
     }
   }
@@ -409,7 +445,7 @@ TEST_CASE("/RUN with run number 0 takes the file name's number with a note, as t
     DYNAMIC_SECTION(name) {
       const Built b = build(dir, name, "/RUN/CASE/0\n1.5\n/END\n");
       INFO(all_diags(b.diags));
-      CHECK_FALSE(b.diags.has_errors());
+      CHECK(b.diags.has_errors() == (std::string(name) != "CASE.rad"));  // run 2: a restart, refused
       CHECK(b.diags.warning_count() == 0);
       const auto* d = find(b.diags, Diag::DefaultApplied);
       REQUIRE(d);
@@ -420,6 +456,26 @@ TEST_CASE("/RUN with run number 0 takes the file name's number with a note, as t
   }
   const Built negative = build(dir, "CASE_0001.rad", "/RUN/CASE/-1\n1.5\n/END\n");
   CHECK(find(negative.diags, Diag::ValueOutOfRange));
+}
+
+TEST_CASE("a restart run (/RUN/name/2 and on) is refused by name until radx can resume one", "[engine-io]") {
+  radx::test::TempDir dir;
+  for (const char* text :
+       {"/RUN/CASE/2\n1.5\n/END\n", "/RUN/CASE/0\n1.5\n/END\n", "/RUN/CASE\n1.5\n/END\n"}) {
+    DYNAMIC_SECTION(text) {
+      const Built b = build(dir, "CASE_0002.rad", text);
+      INFO(all_diags(b.diags));
+      REQUIRE(b.diags.error_count() == 1);
+      const auto* d = find(b.diags, Diag::UnimplementedOption);
+      REQUIRE(d);
+      CHECK(d->line == 1);
+      CHECK(d->message.find("run number 2 is a restart run") != std::string::npos);
+      CHECK(d->message.find("CASE_0001.rad") != std::string::npos);
+    }
+  }
+  // /RUN's number decides, as in Radioss: run 1 in a file named for run 2 is run 1 (with RX803's warning).
+  const Built one = build(dir, "CASE_0002.rad", "/RUN/CASE/1\n1.5\n/END\n");
+  CHECK_FALSE(one.diags.has_errors());
 }
 
 TEST_CASE("/RBODY/ON and /RBODY/OFF pass over ids that name no rigid body, as Radioss does", "[engine-io]") {
