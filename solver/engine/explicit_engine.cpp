@@ -109,14 +109,13 @@ void assemble_nodes(NodeState& s, double* sums, std::size_t first, std::size_t l
     double* f = sums + 6 * n;
     const Pair a01 = load_pair(f), a23 = load_pair(f + 2), a45 = load_pair(f + 4);
     const Pair b01 = load_pair(f + 6), b23 = load_pair(f + 8), b45 = load_pair(f + 10);
-    const PairMask first_lanes{0, 2}, second_lanes{1, 3};
     // External loads were put in f*_ext by the loads; the total is their sum with the element forces.
-    const Pair fxn = load_pair(fx_ext + n) + __builtin_shuffle(a01, b01, first_lanes);
-    const Pair fyn = load_pair(fy_ext + n) + __builtin_shuffle(a01, b01, second_lanes);
-    const Pair fzn = load_pair(fz_ext + n) + __builtin_shuffle(a23, b23, first_lanes);
-    const Pair mxn = load_pair(mx + n) + __builtin_shuffle(a23, b23, second_lanes);
-    const Pair myn = load_pair(my + n) + __builtin_shuffle(a45, b45, first_lanes);
-    const Pair mzn = load_pair(mz + n) + __builtin_shuffle(a45, b45, second_lanes);
+    const Pair fxn = load_pair(fx_ext + n) + __builtin_shufflevector(a01, b01, 0, 2);
+    const Pair fyn = load_pair(fy_ext + n) + __builtin_shufflevector(a01, b01, 1, 3);
+    const Pair fzn = load_pair(fz_ext + n) + __builtin_shufflevector(a23, b23, 0, 2);
+    const Pair mxn = load_pair(mx + n) + __builtin_shufflevector(a23, b23, 1, 3);
+    const Pair myn = load_pair(my + n) + __builtin_shufflevector(a45, b45, 0, 2);
+    const Pair mzn = load_pair(mz + n) + __builtin_shufflevector(a45, b45, 1, 3);
     store_pair(fx + n, fxn);
     store_pair(fy + n, fyn);
     store_pair(fz + n, fzn);
