@@ -24,6 +24,18 @@ namespace radx::app {
 namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
+
+// `next` moved on by whole intervals until it is strictly after `time`. An interval smaller than the spacing
+// of doubles at `time` (a /ANIM/DT dT of 1e-30 at t = 1e-5) adds nothing; the next output is then the next
+// double, every cycle, instead of an endless loop.
+double first_after(double next, double interval, double time) {
+  while (next <= time) {
+    const double moved = next + interval;
+    if (moved == next) return std::nextafter(time, kNever);
+    next = moved;
+  }
+  return next;
+}
 constexpr double kNoInterval = 1e29;  // /TFILE absent: dt_his = 1e30
 // Energy samples kept for the chart: beyond this, every other one is dropped, so memory stays bounded
 // however long the run (a chart cannot show more points than this anyway).
@@ -353,7 +365,7 @@ void EngineOutputs::on_report(const solver::CycleReport& r) {
     if (c.anim_dt > 0) {
       next = c.anim_start;
       if (r.time >= next) next += c.anim_dt * std::floor((r.time - c.anim_start) / c.anim_dt);
-      while (next <= r.time) next += c.anim_dt;  // strictly after, whatever the rounding of the floor
+      next = first_after(next, c.anim_dt, r.time);  // strictly after, whatever the rounding of the floor
       if (next > c.anim_stop) next = kNever;
     }
     s.next_state = next;
@@ -365,7 +377,7 @@ void EngineOutputs::on_report(const solver::CycleReport& r) {
       next = std::nextafter(r.time, kNever);  // /TFILE dt_his 0: every cycle
     } else if (c.th_dt < kNoInterval) {
       next = c.th_dt * std::floor(r.time / c.th_dt);
-      while (next <= r.time) next += c.th_dt;
+      next = first_after(next, c.th_dt, r.time);
     }
     s.next_th = next;
   }
