@@ -10,6 +10,7 @@
 #include <cassert>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <numbers>
@@ -1141,6 +1142,24 @@ double ExplicitEngine::nodal_time_step(StepControl& control) {
   return best;
 }
 
+namespace {
+
+template <class Group>
+std::string solid_name() {
+  return std::is_same_v<Group, BrickGroup>   ? "brick "
+         : std::is_same_v<Group, Hex20Group> ? "20-node brick "
+                                             : "tetrahedron ";
+}
+
+// A value as %g writes it: a step of 1e-300 must not read 0.000000.
+std::string short_text(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+}  // namespace
+
 // The first element, in group order, without a valid step: a solid's volume went to zero or below, a
 // shell collapsed or its values are no longer finite.
 std::string ExplicitEngine::bad_element(double time, std::int64_t cycle) const {
@@ -1160,12 +1179,15 @@ std::string ExplicitEngine::bad_element(double time, std::int64_t cycle) const {
           found = std::string(std::is_same_v<Group, BeamGroup> ? "beam " : "truss ") + id +
                   " has no valid time step (its nodes met or its values are not finite)" + when +
                   "; the run stops";
-        else
-          found = std::string(std::is_same_v<Group, BrickGroup>   ? "brick "
-                              : std::is_same_v<Group, Hex20Group> ? "20-node brick "
-                                                                  : "tetrahedron ") +
-                  id + " has a zero or negative volume (" + std::to_string(g.vol[k]) + ")" + when +
-                  ": the mesh is inverted; the run stops";
+        else if (!(g.vol[k] > 0))
+          found = solid_name<Group>() + id + " has a zero or negative volume (" + std::to_string(g.vol[k]) +
+                  ")" + when + ": the mesh is inverted; the run stops";
+        else  // a sound volume with a step of 0 or NaN: the sound speed or the bulk viscosity is at fault
+          found =
+              solid_name<Group>() + id + " has no valid time step (" + short_text(g.dt[k]) +
+              ") though its volume is positive (" + short_text(g.vol[k]) + ")" + when +
+              ": its material's sound speed or its property's bulk viscosity (qa, qb) is not finite or too "
+              "large; the run stops";
       }
     }
   });
