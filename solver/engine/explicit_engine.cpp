@@ -17,6 +17,7 @@
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 #include "solver/conditions/kinematics_driver.hpp"
 #include "solver/model/geometry.hpp"
@@ -1158,6 +1159,28 @@ std::string short_text(double v) {
   return text;
 }
 
+// Why a run stops on an energy that is not finite: the energies that are not, and the first node whose
+// kinetic energy 1/2 m v^2 is not (a density, mass or velocity beyond the range of doubles: a rigid material
+// of density 1e300 still moves and keeps finite coordinates, but its kinetic energy overflows).
+std::string nonfinite_energy_message(const EnergyBalance& e, const NodeState& s, const model::Model& m) {
+  const std::pair<const char*, double> terms[] = {
+      {"kinetic", e.kinetic_t + e.kinetic_r},
+      {"internal", e.internal},
+      {"hourglass", e.hourglass},
+      {"external work", e.external_work},
+      {"contact", e.contact_elastic + e.contact_damping + e.contact_friction + e.contact_lagrange}};
+  std::string which;
+  for (const auto& [name, value] : terms)
+    if (!std::isfinite(value)) which += std::string(which.empty() ? "" : ", ") + name;
+  std::string message = "the " + which + " energy is not finite";
+  for (std::size_t n = 0; n < s.n; ++n)
+    if (!std::isfinite(s.mass[n] * (s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n]))) {
+      message += " (node " + std::to_string(m.nodes.id[n]) + ": mass " + short_text(s.mass[n]) + ")";
+      break;
+    }
+  return message + ": a density, mass, stiffness or velocity of the deck is beyond the range of doubles";
+}
+
 }  // namespace
 
 // The first element, in group order, without a valid step: a solid's volume went to zero or below, a
@@ -1459,6 +1482,13 @@ bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(c
   rep.switched_pairs = contact_ ? contact_->switched_pairs() : 0;
   rep.full = full;
   if (full) res.last = rep;
+  // A normal end must not report energies that are not numbers.
+  if (full && !std::isfinite(energy_.total() + energy_.external_work + energy_.initial_total)) {
+    res.status = RunStatus::Error;
+    res.message = nonfinite_energy_message(energy_, nodes_, model_) + " (cycle " + std::to_string(L.cycle) +
+                  ", time " + short_text(L.time) + "); the run stops";
+    return false;
+  }
   if (on_cycle && !on_cycle(rep)) {
     res.status = RunStatus::Error;
     if (res.message.empty()) res.message = "stopped by a /STOP criterion";
