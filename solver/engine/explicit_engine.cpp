@@ -1160,8 +1160,9 @@ std::string short_text(double v) {
 }
 
 // Why a run stops on an energy that is not finite: the energies that are not, and the first node whose
-// kinetic energy 1/2 m v^2 is not (a density, mass or velocity beyond the range of doubles: a rigid material
-// of density 1e300 still moves and keeps finite coordinates, but its kinetic energy overflows).
+// kinetic energy 1/2 m v^2 or external force is not (a rigid material of density 1e300 still moves and keeps
+// finite coordinates, but its kinetic energy overflows), else, for the external work, the imposed motions and
+// loads.
 std::string nonfinite_energy_message(const EnergyBalance& e, const NodeState& s, const model::Model& m) {
   const std::pair<const char*, double> terms[] = {
       {"kinetic", e.kinetic_t + e.kinetic_r},
@@ -1173,12 +1174,21 @@ std::string nonfinite_energy_message(const EnergyBalance& e, const NodeState& s,
   for (const auto& [name, value] : terms)
     if (!std::isfinite(value)) which += std::string(which.empty() ? "" : ", ") + name;
   std::string message = "the " + which + " energy is not finite";
-  for (std::size_t n = 0; n < s.n; ++n)
-    if (!std::isfinite(s.mass[n] * (s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n]))) {
-      message += " (node " + std::to_string(m.nodes.id[n]) + ": mass " + short_text(s.mass[n]) + ")";
-      break;
-    }
-  return message + ": a density, mass, stiffness or velocity of the deck is beyond the range of doubles";
+  for (std::size_t n = 0; n < s.n; ++n) {
+    const double v2 = s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n];
+    const double f = s.fx_ext[n] + s.fy_ext[n] + s.fz_ext[n];
+    if (std::isfinite(s.mass[n] * v2) && std::isfinite(f)) continue;
+    message += " (node " + std::to_string(m.nodes.id[n]) + ": mass " + short_text(s.mass[n]) + ", speed " +
+               short_text(std::sqrt(v2)) + ", external force " + short_text(f) + ")";
+    return message +
+           ": a density, mass, stiffness, velocity or load of the deck is beyond the range of doubles";
+  }
+  if (!std::isfinite(e.external_work))  // no node's own values: the work of an imposed motion's reaction
+    return message +
+           ": an imposed motion or a load (/IMPVEL, /IMPDISP, /IMPACC, /CLOAD, /PLOAD, /GRAV) or its "
+           "/FUNCT curve is beyond the range of doubles";
+  return message +
+         ": a density, mass, stiffness, velocity or load of the deck is beyond the range of doubles";
 }
 
 }  // namespace
