@@ -14,8 +14,15 @@
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #define RADX_HAVE_ISA_V3 1
-// Compiles a function (and, with flatten, everything inlined into it) for x86-64-v3.
+// Compiles a function (and, with flatten, everything inlined into it) for x86-64-v3. clang 14 knows the level
+// only as -march, not in a target attribute, and is given the level's features instead (the same
+// instructions: x86-64-v2's and AVX, AVX2, FMA, BMI1, BMI2, F16C, LZCNT, MOVBE).
+#if defined(__clang__)
+#define RADX_TARGET_V3 \
+  __attribute__((target("sse4.2,popcnt,cx16,sahf,avx,avx2,fma,bmi,bmi2,f16c,lzcnt,movbe,xsave"), flatten))
+#else
 #define RADX_TARGET_V3 __attribute__((target("arch=x86-64-v3"), flatten))
+#endif
 #else
 #define RADX_HAVE_ISA_V3 0
 #endif
@@ -30,7 +37,12 @@ enum class KernelIsa {
 // True when this processor can run the variant.
 inline bool kernel_isa_supported(KernelIsa isa) {
   if (isa == KernelIsa::Baseline) return true;
-#if RADX_HAVE_ISA_V3
+#if RADX_HAVE_ISA_V3 && defined(__clang__)
+  // clang 14's __builtin_cpu_supports does not know the level names: the features that tell v3 from v2
+  // (every CPU with AVX2, FMA and BMI2 also has F16C, LZCNT and MOVBE), as apps/cpu_check.cpp asks them.
+  return __builtin_cpu_supports("avx") && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
+         __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2");
+#elif RADX_HAVE_ISA_V3
   return __builtin_cpu_supports("x86-64-v3") != 0;
 #else
   return false;

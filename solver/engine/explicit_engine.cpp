@@ -10,12 +10,14 @@
 #include <cassert>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 #include "solver/conditions/kinematics_driver.hpp"
 #include "solver/model/geometry.hpp"
@@ -109,14 +111,13 @@ void assemble_nodes(NodeState& s, double* sums, std::size_t first, std::size_t l
     double* f = sums + 6 * n;
     const Pair a01 = load_pair(f), a23 = load_pair(f + 2), a45 = load_pair(f + 4);
     const Pair b01 = load_pair(f + 6), b23 = load_pair(f + 8), b45 = load_pair(f + 10);
-    const PairMask first_lanes{0, 2}, second_lanes{1, 3};
     // External loads were put in f*_ext by the loads; the total is their sum with the element forces.
-    const Pair fxn = load_pair(fx_ext + n) + __builtin_shuffle(a01, b01, first_lanes);
-    const Pair fyn = load_pair(fy_ext + n) + __builtin_shuffle(a01, b01, second_lanes);
-    const Pair fzn = load_pair(fz_ext + n) + __builtin_shuffle(a23, b23, first_lanes);
-    const Pair mxn = load_pair(mx + n) + __builtin_shuffle(a23, b23, second_lanes);
-    const Pair myn = load_pair(my + n) + __builtin_shuffle(a45, b45, first_lanes);
-    const Pair mzn = load_pair(mz + n) + __builtin_shuffle(a45, b45, second_lanes);
+    const Pair fxn = load_pair(fx_ext + n) + __builtin_shufflevector(a01, b01, 0, 2);
+    const Pair fyn = load_pair(fy_ext + n) + __builtin_shufflevector(a01, b01, 1, 3);
+    const Pair fzn = load_pair(fz_ext + n) + __builtin_shufflevector(a23, b23, 0, 2);
+    const Pair mxn = load_pair(mx + n) + __builtin_shufflevector(a23, b23, 1, 3);
+    const Pair myn = load_pair(my + n) + __builtin_shufflevector(a45, b45, 0, 2);
+    const Pair mzn = load_pair(mz + n) + __builtin_shufflevector(a45, b45, 1, 3);
     store_pair(fx + n, fxn);
     store_pair(fy + n, fyn);
     store_pair(fz + n, fzn);
@@ -1142,6 +1143,56 @@ double ExplicitEngine::nodal_time_step(StepControl& control) {
   return best;
 }
 
+namespace {
+
+template <class Group>
+std::string solid_name() {
+  return std::is_same_v<Group, BrickGroup>   ? "brick "
+         : std::is_same_v<Group, Hex20Group> ? "20-node brick "
+                                             : "tetrahedron ";
+}
+
+// A value as %g writes it: a step of 1e-300 must not read 0.000000.
+std::string short_text(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+// Why a run stops on an energy that is not finite: the energies that are not, and the first node whose
+// kinetic energy 1/2 m v^2 or external force is not (a rigid material of density 1e300 still moves and keeps
+// finite coordinates, but its kinetic energy overflows), else, for the external work, the imposed motions and
+// loads.
+std::string nonfinite_energy_message(const EnergyBalance& e, const NodeState& s, const model::Model& m) {
+  const std::pair<const char*, double> terms[] = {
+      {"kinetic", e.kinetic_t + e.kinetic_r},
+      {"internal", e.internal},
+      {"hourglass", e.hourglass},
+      {"external work", e.external_work},
+      {"contact", e.contact_elastic + e.contact_damping + e.contact_friction + e.contact_lagrange}};
+  std::string which;
+  for (const auto& [name, value] : terms)
+    if (!std::isfinite(value)) which += std::string(which.empty() ? "" : ", ") + name;
+  std::string message = "the " + which + " energy is not finite";
+  for (std::size_t n = 0; n < s.n; ++n) {
+    const double v2 = s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n];
+    const double f = s.fx_ext[n] + s.fy_ext[n] + s.fz_ext[n];
+    if (std::isfinite(s.mass[n] * v2) && std::isfinite(f)) continue;
+    message += " (node " + std::to_string(m.nodes.id[n]) + ": mass " + short_text(s.mass[n]) + ", speed " +
+               short_text(std::sqrt(v2)) + ", external force " + short_text(f) + ")";
+    return message +
+           ": a density, mass, stiffness, velocity or load of the deck is beyond the range of doubles";
+  }
+  if (!std::isfinite(e.external_work))  // no node's own values: the work of an imposed motion's reaction
+    return message +
+           ": an imposed motion or a load (/IMPVEL, /IMPDISP, /IMPACC, /CLOAD, /PLOAD, /GRAV) or its "
+           "/FUNCT curve is beyond the range of doubles";
+  return message +
+         ": a density, mass, stiffness, velocity or load of the deck is beyond the range of doubles";
+}
+
+}  // namespace
+
 // The first element, in group order, without a valid step: a solid's volume went to zero or below, a
 // shell collapsed or its values are no longer finite.
 std::string ExplicitEngine::bad_element(double time, std::int64_t cycle) const {
@@ -1161,12 +1212,15 @@ std::string ExplicitEngine::bad_element(double time, std::int64_t cycle) const {
           found = std::string(std::is_same_v<Group, BeamGroup> ? "beam " : "truss ") + id +
                   " has no valid time step (its nodes met or its values are not finite)" + when +
                   "; the run stops";
-        else
-          found = std::string(std::is_same_v<Group, BrickGroup>   ? "brick "
-                              : std::is_same_v<Group, Hex20Group> ? "20-node brick "
-                                                                  : "tetrahedron ") +
-                  id + " has a zero or negative volume (" + std::to_string(g.vol[k]) + ")" + when +
-                  ": the mesh is inverted; the run stops";
+        else if (!(g.vol[k] > 0))
+          found = solid_name<Group>() + id + " has a zero or negative volume (" + std::to_string(g.vol[k]) +
+                  ")" + when + ": the mesh is inverted; the run stops";
+        else  // a sound volume with a step of 0 or NaN: the sound speed or the bulk viscosity is at fault
+          found =
+              solid_name<Group>() + id + " has no valid time step (" + short_text(g.dt[k]) +
+              ") though its volume is positive (" + short_text(g.vol[k]) + ")" + when +
+              ": its material's sound speed or its property's bulk viscosity (qa, qb) is not finite or too "
+              "large; the run stops";
       }
     }
   });
@@ -1438,6 +1492,13 @@ bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(c
   rep.switched_pairs = contact_ ? contact_->switched_pairs() : 0;
   rep.full = full;
   if (full) res.last = rep;
+  // A normal end must not report energies that are not numbers.
+  if (full && !std::isfinite(energy_.total() + energy_.external_work + energy_.initial_total)) {
+    res.status = RunStatus::Error;
+    res.message = nonfinite_energy_message(energy_, nodes_, model_) + " (cycle " + std::to_string(L.cycle) +
+                  ", time " + short_text(L.time) + "); the run stops";
+    return false;
+  }
   if (on_cycle && !on_cycle(rep)) {
     res.status = RunStatus::Error;
     if (res.message.empty()) res.message = "stopped by a /STOP criterion";

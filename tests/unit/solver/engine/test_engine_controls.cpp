@@ -597,3 +597,47 @@ TEST_CASE("/DTIX: the first step is DT_ini, it grows by 1.1 per cycle, never abo
   }
   CHECK(*std::max_element(steps.begin(), steps.end()) <= rc.dt_max);
 }
+
+TEST_CASE("a brick whose step is 0 with a positive volume is not called inverted", "[engine]") {
+  // Linear bulk viscosity qb = 1e300 (card 2 of /PROP/SOLID): the step l / (c (qb + ...)) underflows to 0
+  // while the cube is whole; the stop must name the brick and the step, not an inverted mesh.
+  std::string s = cube_text(10.0);
+  const std::string blank_card2 = "\n\n/MAT/LAW1";
+  REQUIRE(s.find(blank_card2) != std::string::npos);
+  s.replace(s.find(blank_card2), blank_card2.size(),
+            "\n" + Line().put(0.0, 1, 20).put("1e300", 21, 40).str() + "\n/MAT/LAW1");
+  const auto m = radx::test::model_of_deck(s + "/END\n");
+  radx::model::RunControls rc;
+  rc.t_stop = 1e-4;
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  const auto res = engine.run({});
+  INFO(res.message);
+  CHECK(res.status == radx::solver::RunStatus::Error);
+  CHECK(res.message.find("brick 1 has no valid time step") != std::string::npos);
+  CHECK(res.message.find("volume is positive (1000)") != std::string::npos);
+  CHECK(res.message.find("inverted") == std::string::npos);
+}
+
+TEST_CASE("a run whose kinetic energy overflows stops with an error naming a node, not a normal end",
+          "[engine]") {
+  // Density 1e300 (a converter's placeholder): the node masses, 1e300 x 1000 mm^3 / 8 = 1.25e302, are finite
+  // and so are the coordinates, but m v^2 at 1e4 mm/s, 1.25e310, is past the largest double (1.8e308). The
+  // run must not end "normal" with non-finite energies.
+  std::string s = cube_text(10.0);
+  const std::string material = "/MAT/LAW1/1\nsteel\n";
+  const auto at = s.find(material);
+  REQUIRE(at != std::string::npos);
+  const auto density_line = at + material.size();
+  s.replace(density_line, s.find('\n', density_line) - density_line, Line().put("1e300", 1, 20).str());
+  s += "/GRNOD/PART/1\nall\n" + Line().put(1, 1, 10).str() + "\n/INIVEL/TRA/1\nv\n" +
+       Line().put(0.0, 1, 20).put(0.0, 21, 40).put(1e4, 41, 60).put(1, 61, 70).str() + "\n/END\n";
+  const auto m = radx::test::model_of_deck(s);
+  radx::model::RunControls rc;
+  rc.t_stop = 1e-4;
+  radx::solver::ExplicitEngine engine(m, rc, radx::solver::EngineOptions{1, 1});
+  const auto res = engine.run({});
+  INFO(res.message);
+  CHECK(res.status == radx::solver::RunStatus::Error);
+  CHECK(res.message.find("the kinetic energy is not finite (node 1: mass") != std::string::npos);
+  CHECK(res.cycles == 0);  // caught at the first report, before anything else is written
+}
