@@ -64,18 +64,21 @@ void check_initial_step(const Deck& deck, const model::Model& m, const model::St
   if (!(step.dt > 0)) return;
   const double seconds = step.dt * m.units.time;
   if (seconds >= kImplausibleStepSeconds) return;
+  const bool spring = step.type == model::ElementType::Spring2;
   diags.warning(Diag::ImplausibleTimeStep, element_where(deck, step.type, step.element_id),
                 About{keyword_of(step.type), step.element_id},
                 "the initial stable time step is about " + num(seconds) + " s (" +
                     (m.units.time == 1.0 ? std::string() : num(step.dt) + " " + m.units.time_name + ", ") +
-                    "element size over wave speed of " + element_name(step) +
+                    (spring ? "mass, stiffness and damping of " : "element size over wave speed of ") +
+                    element_name(step) +
                     "), below 1e-12 s: a millisecond would take more than 1e9 cycles; crash models step at "
-                    "1e-8 to 1e-5 s: check the element size and the units of the material's E and RHO_I");
+                    "1e-8 to 1e-5 s: " +
+                    (spring ? "check the spring property's mass and stiffness and their units"
+                            : "check the element size and the units of the material's E and RHO_I"));
 }
 
-void check_cycle_count(const EngineDeck& engine, const model::RunControls& controls, const model::Model& m,
-                       const model::StepEstimate& step, Diagnostics& diags) {
-  if (!(step.dt > 0) || !(controls.t_stop > 0)) return;
+RunCycles estimate_run_cycles(const model::RunControls& controls, const model::StepEstimate& step) {
+  if (!(step.dt > 0) || !(controls.t_stop > 0)) return {};
   // /DT/NODA replaces the element step by the nodal one, with its own scale; /DT/NODA/CST adds mass so
   // that it stays at Tmin at least: a mass-scaled run is not warned of for the step it would have without.
   const auto& noda = controls.nodal;
@@ -85,8 +88,13 @@ void check_cycle_count(const EngineDeck& engine, const model::RunControls& contr
   double dt = scale * step.dt;
   if (nodal && noda.action == model::DtAction::AddMass && noda.t_min > 0) dt = std::max(dt, noda.t_min);
   dt = std::min(dt, controls.dt_max);
-  if (!(dt > 0)) return;
-  const double cycles = controls.t_stop / dt;
+  if (!(dt > 0)) return {};
+  return {dt, controls.t_stop / dt};
+}
+
+void check_cycle_count(const EngineDeck& engine, const model::RunControls& controls, const model::Model& m,
+                       const model::StepEstimate& step, Diagnostics& diags) {
+  const auto [dt, cycles] = estimate_run_cycles(controls, step);
   if (cycles <= kImplausibleCycles) return;
   const auto runs = engine.of("/RUN");
   const Where where = !runs.empty()           ? engine.where(runs.front()->pos, 1)
