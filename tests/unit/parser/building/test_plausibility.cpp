@@ -5,6 +5,7 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -394,4 +395,32 @@ TEST_CASE("a spring's property step: TYPE4 per unit length, TYPE8 and TYPE13 by 
   // Bulk viscosity: qb = 0 leaves the step, qb = 0.75 halves it (sqrt(1.5625) - 0.75 = 0.5).
   CHECK(radx::model::bulk_viscosity_step_factor(0.0) == 1.0);
   CHECK(radx::model::bulk_viscosity_step_factor(0.75) == Approx(0.5).epsilon(1e-15));
+}
+
+TEST_CASE(
+    "a contact law whose stiffness would vote a step below 1/100 of the elements' warns RX513 at the "
+    "interface",
+    "[plausibility]") {
+  // ctclaw_drop's cube on the bilinear law Kc = 5.625e9 Pa/m: a pair Kc A_s = 1.4e7 N/m on a lower-face node
+  // of 0.5625 kg votes sqrt(2 m / k) = 2.8e-4 s, above the bricks' step. Made 1e12 times steeper (a legal
+  // law), it votes 2.83e-10 s, 1/3e4 of the bricks' 8.5e-6 s: said before the run.
+  std::ifstream in(std::string(RADX_SOURCE_DIR) + "/decks/verification/ctclaw_drop/CTCLAW_DROP_N1_0000.rad");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  radx::test::TempDir dir;
+  const auto ordinary = starter(dir, deck);
+  INFO(ordinary.err);
+  CHECK(ordinary.err.find("RX513") == std::string::npos);
+  for (auto at = deck.find("n1{Kc5.625e9}"); at != std::string::npos; at = deck.find("n1{Kc5.625e9}"))
+    deck.replace(at, 13, "n1{Kc5.625e21}");
+  const auto steep = starter(dir, deck);
+  INFO(steep.err);
+  const double dt = std::sqrt(2 * 0.5625 / (5.625e21 * 0.0025));
+  char expected[160];
+  std::snprintf(expected, sizeof expected,
+                "once in contact a pair of this interface votes a step of about %.3g s", dt);
+  CHECK(steep.err.find(std::string("warning: RX513: [/INTER/TYPE7 id 1 \"Cube lower face on the plate\"] ") +
+                       expected) != std::string::npos);
+  CHECK(steep.err.find("Kc A_s = 1.41e+19 on secondary node 101 of mass 0.562") != std::string::npos);
 }
