@@ -65,14 +65,15 @@ std::string RunawayWatch::check(const solver::CycleReport& r, double wall_second
   if (r.control.kind == solver::StepControl::Kind::Imposed) return {};
   if (r.dt1 > 0 && r.dt >= 1.0999 * r.dt1) return {};  // on its way up at the growth bound
   const double left = (t_stop_ - r.time) / r.dt;
-  const double limit = estimated_cycles_ > 0 ? std::min(kEstimateFactor * estimated_cycles_, kCycleLimit)
-                                             : kCycleLimit;
+  const double limit =
+      estimated_cycles_ > 0 ? std::min(kEstimateFactor * estimated_cycles_, kCycleLimit) : kCycleLimit;
   if (!(left > limit)) return {};
   said_ = true;
   const double per_cycle = wall_seconds / static_cast<double>(r.cycle);
-  std::string m = "the run will not end in any reasonable time: the time step has fallen to " + num(r.dt) + " " +
-                  time_unit_ + ", set by " + step_control_name(r.control) + "; the " + num(t_stop_ - r.time) +
-                  " " + time_unit_ + " left to the end time take about " + num(left) + " more cycles";
+  std::string m = "the run will not end in any reasonable time: the time step has fallen to " + num(r.dt) +
+                  " " + time_unit_ + ", set by " + step_control_name(r.control) + "; the " +
+                  num(t_stop_ - r.time) + " " + time_unit_ + " left to the end time take about " + num(left) +
+                  " more cycles";
   if (estimated_cycles_ > 0)
     m += ", " + num(left / estimated_cycles_) + " times the starter's estimate of the whole run (" +
          num(estimated_cycles_) + " cycles)";
@@ -81,7 +82,8 @@ std::string RunawayWatch::check(const solver::CycleReport& r, double wall_second
   if (!stops)
     m += ". The run goes on; --stop-if-runaway (or " + step_stop_keyword(r.control) +
          " with a Tmin) stops such a run";
-  return m + "; check what sets the step (a steep contact or spring law, a tiny or crushed element, the units)";
+  return m +
+         "; check what sets the step (a steep contact or spring law, a tiny or crushed element, the units)";
 }
 
 }  // namespace radx::app

@@ -13,8 +13,8 @@ namespace radx::app {
 
 class RunawayWatch {
  public:
-  static constexpr double kEstimateFactor = 100;  // cycles left beyond this many times the estimate
-  static constexpr double kCycleLimit = 1e9;      // or beyond this many cycles
+  static constexpr double kEstimateFactor = 100;        // cycles left beyond this many times the estimate
+  static constexpr double kCycleLimit = 1e9;            // or beyond this many cycles
   static constexpr std::int64_t kMeasuredCycles = 100;  // cycles timed before the wall time is projected
 
   // estimated_cycles: the starter's estimate of the whole run's cycles (plausibility.hpp

@@ -35,7 +35,8 @@ TEST_CASE("runaway: cycles left beyond 100 times the estimate warn once, with th
   INFO(m);
   CHECK(m.find("the time step has fallen to 4.9e-07 s, set by interface 1 (secondary node 101)") !=
         std::string::npos);
-  // 0.5 / 4.9e-7 = 1.02e6 cycles left, 102 estimates; 1 s over 1001 cycles is 999 us a cycle, 1020 s (17 min).
+  // 0.5 / 4.9e-7 = 1.02e6 cycles left, 102 estimates; 1 s over 1001 cycles is 999 us a cycle, 1020 s (17
+  // min).
   CHECK(m.find("take about 1.02e+06 more cycles, 102 times the starter's estimate of the whole run (1e+04 "
                "cycles); at the 999 us per cycle measured so far that is 17 min of wall time") !=
         std::string::npos);
@@ -44,9 +45,10 @@ TEST_CASE("runaway: cycles left beyond 100 times the estimate warn once, with th
   CHECK(w.check(cycle(1002, 0.5, 1e-9, 4.9e-7, kPair), 1.0).empty());  // once
 }
 
-TEST_CASE("runaway: 1e9 cycles left warn whatever the estimate; none without a measured cost or while the "
-          "step grows",
-          "[runaway]") {
+TEST_CASE(
+    "runaway: 1e9 cycles left warn whatever the estimate; none without a measured cost or while the "
+    "step grows",
+    "[runaway]") {
   // An estimate of 1e9 cycles (100 of them would be 1e11): 1e9 cycles left are the limit.
   radx::app::RunawayWatch big(1e9, 1.0, "ms");
   CHECK(big.check(cycle(500, 0.0, 1.01e-9, 1.01e-9, {StepControl::Kind::Spring, 7, 0}), 1.0).empty());
