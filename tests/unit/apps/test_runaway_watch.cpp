@@ -46,7 +46,7 @@ TEST_CASE("runaway: cycles left beyond 100 times the estimate warn once, with th
 }
 
 TEST_CASE(
-    "runaway: 1e9 cycles left warn whatever the estimate; none without a measured cost or while the "
+    "runaway: 1e9 cycles left warn whatever the estimate, none without a measured cost or while the "
     "step grows",
     "[runaway]") {
   // An estimate of 1e9 cycles (100 of them would be 1e11): 1e9 cycles left are the limit.
