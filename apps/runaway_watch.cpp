@@ -1,7 +1,7 @@
 // The runaway test (apps/runaway_watch.hpp): with the step dt of the cycle at time t,
 //   cycles_left = (t_stop - t) / dt,  a runaway when cycles_left > min(100 N_est, 1e9)
-// (N_est the starter's cycles for the whole run, plausibility.hpp; 1e9 alone when it has none), and the wall
-// time it would take, cycles_left * (wall time so far / cycles so far).
+// (N_est the starter's cycles for the whole run, plausibility.hpp; 1e9 alone when it has none) on every call
+// for 1000 cycles, and the wall time it would take, cycles_left * (wall time so far / cycles so far).
 #include "apps/runaway_watch.hpp"
 
 #include <algorithm>
@@ -61,19 +61,24 @@ std::string wall_time_words(double seconds) {
 }
 
 std::string RunawayWatch::check(const solver::CycleReport& r, double wall_seconds, bool stops) {
-  if (said_ || r.cycle < kMeasuredCycles || !(r.dt > 0) || !(r.time < t_stop_)) return {};
-  if (r.control.kind == solver::StepControl::Kind::Imposed) return {};
-  if (r.dt1 > 0 && r.dt >= 1.0999 * r.dt1) return {};  // on its way up at the growth bound
+  if (said_ || !(r.dt > 0) || !(r.time < t_stop_)) return {};
   const double left = (t_stop_ - r.time) / r.dt;
   const double limit =
       estimated_cycles_ > 0 ? std::min(kEstimateFactor * estimated_cycles_, kCycleLimit) : kCycleLimit;
-  if (!(left > limit)) return {};
+  const bool recovering = r.control.kind == solver::StepControl::Kind::Imposed ||
+                          (r.dt1 > 0 && r.dt >= 1.0999 * r.dt1);  // on its way up at the growth bound
+  if (!(left > limit) || recovering) {
+    since_ = -1;
+    return {};
+  }
+  if (since_ < 0) since_ = r.cycle;
+  if (r.cycle < kMeasuredCycles || r.cycle - since_ < kLastingCycles) return {};
   said_ = true;
   const double per_cycle = wall_seconds / static_cast<double>(r.cycle);
   std::string m = "the run will not end in any reasonable time: the time step has fallen to " + num(r.dt) +
-                  " " + time_unit_ + ", set by " + step_control_name(r.control) + "; the " +
-                  num(t_stop_ - r.time) + " " + time_unit_ + " left to the end time take about " + num(left) +
-                  " more cycles";
+                  " " + time_unit_ + " (since cycle " + std::to_string(since_) + "), set by " +
+                  step_control_name(r.control) + "; the " + num(t_stop_ - r.time) + " " + time_unit_ +
+                  " left to the end time take about " + num(left) + " more cycles";
   if (estimated_cycles_ > 0)
     m += ", " + num(left / estimated_cycles_) + " times the starter's estimate of the whole run (" +
          num(estimated_cycles_) + " cycles)";
