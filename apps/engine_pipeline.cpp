@@ -2,6 +2,7 @@
 
 #include "apps/build_info.hpp"
 #include "apps/engine_outputs.hpp"
+#include "apps/runaway_watch.hpp"
 #include "apps/stop_deadline.hpp"
 
 #include <fcntl.h>
@@ -376,12 +377,12 @@ std::string stop_criterion(const model::RunControls& controls, const solver::Cyc
 // model lacks switches nothing (a warning, as Radioss goes on too). And the cycle count the run would need:
 // the starter warns too, but only when it found this engine deck beside its own.
 Diagnostics check_deck_against_model(const EngineDeck& deck, model::RunControls& controls,
-                                     const model::Model& model) {
+                                     const model::Model& model, const model::StepEstimate& step) {
   std::vector<std::int64_t> body_ids;
   for (const auto& b : model.rigid_bodies) body_ids.push_back(b.id);
   Diagnostics model_diags;
   check_rigid_body_switches(deck, body_ids, controls, model_diags);
-  check_cycle_count(deck, controls, model, model::estimate_stable_step(model), model_diags);
+  check_cycle_count(deck, controls, model, step, model_diags);
   model_diags.sort();
   return model_diags;
 }
@@ -460,6 +461,8 @@ struct CycleWatch {
   std::chrono::steady_clock::time_point wall0 = std::chrono::steady_clock::now();
   bool lagrange_column = engine.contact() != nullptr && engine.contact()->has_lagrange();
   io::EnergyErrorWarnings energy_warnings{};
+  RunawayWatch runaway{};
+  bool stop_if_runaway = false;
   std::string stop_message{};
   int stopped_by = 0;
 
@@ -475,6 +478,7 @@ struct CycleWatch {
       err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
       s.add_warning("cycle " + std::to_string(r.cycle) + ": " + m);
     }
+    if (!check_runaway(r, wall)) return false;
     try {
       outputs.on_report(r);
     } catch (const std::exception& e) {
@@ -498,6 +502,21 @@ struct CycleWatch {
       stop_message = "interrupted by " + signal_name(signo) + at;
       return false;
     }
+    return true;
+  }
+
+  // A run that will not end: warned once (listing, standard output and error, summary), or with
+  // --stop-if-runaway stopped here (false), on a full report so that its last state and summary agree.
+  bool check_runaway(const solver::CycleReport& r, double wall) {
+    const std::string m = runaway.check(r, wall, stop_if_runaway);
+    if (m.empty()) return true;
+    if (stop_if_runaway) {
+      stop_message = "stopped by --stop-if-runaway at cycle " + std::to_string(r.cycle) + ": " + m;
+      return false;
+    }
+    listing.message("  WARNING (cycle " + std::to_string(r.cycle) + "): " + m);
+    err << "radx-engine: warning: cycle " << r.cycle << ", time " << r.time << ": " << m << '\n';
+    s.add_warning("cycle " + std::to_string(r.cycle) + ": " + m);
     return true;
   }
 };
@@ -615,7 +634,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   s.length_unit = model.units.length_name;
   s.time_unit = model.units.time_name;
   if (StopSignals::received() != 0) return interrupted_early();
-  Diagnostics model_diags = check_deck_against_model(deck, controls, model);
+  const model::StepEstimate step_estimate = model::estimate_stable_step(model);
+  Diagnostics model_diags = check_deck_against_model(deck, controls, model, step_estimate);
   model_diags.print(err);
   // Kinematic conditions check what the starter could not (a moving wall without mass, a rigid body
   // without inertia) and throw with a message; report it as an input error.
@@ -669,6 +689,9 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   listing.header(h);
 
   CycleWatch watch{engine, controls, *outputs, listing, listing_file, err, s};
+  watch.runaway = RunawayWatch(estimate_run_cycles(controls, step_estimate).cycles, controls.t_stop,
+                               model.units.time_name);
+  watch.stop_if_runaway = opt.stop_if_runaway;
   solver::RunResult result;
   try {
     StopDeadline deadline([] { return StopSignals::received() != 0; }, end_stuck_run);

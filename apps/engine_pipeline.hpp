@@ -14,6 +14,9 @@ struct EngineOptions {
   std::string out_dir = ".";
   int threads = 0;   // 0: OMP_NUM_THREADS or all cores
   bool plot = true;  // draw NAME_energy.png at the end (--no-plot)
+  // --stop-if-runaway: a run whose step leaves more cycles to the end time than it can take
+  // (apps/runaway_watch.hpp) stops with an error termination instead of going on with a warning.
+  bool stop_if_runaway = false;
 };
 
 // 0 normal termination, 1 input error or error termination.

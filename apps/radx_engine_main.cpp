@@ -10,6 +10,7 @@ namespace {
 
 void usage(std::ostream& os) {
   os << "usage: radx-engine [NAME_0001.rad] [--out DIR] [--model FILE] [--threads N] [--no-plot]\n"
+        "                   [--stop-if-runaway]\n"
         "       radx-engine -i NAME_0001.rad ...\n"
         "\n"
         "Runs the explicit engine: reads the engine deck and the starter's model file NAME_0000.hdf (in the\n"
@@ -25,6 +26,11 @@ void usage(std::ostream& os) {
         "do "
         "not depend on it; -nt N, Radioss's spelling, is the same\n"
         "  --no-plot      do not draw NAME_energy.png (the CSV is still written)\n"
+        "  --stop-if-runaway\n"
+        "                 stop the run (error termination, its reason in the listing and the summary) when\n"
+        "                 its time step falls so far that the cycles left to the end time exceed 100 times\n"
+        "                 the starter's estimate of the whole run, or 1e9; without it the run goes on and\n"
+        "                 warns once, naming what sets the step and the wall time it would take\n"
         "  --help, --version (or -version)\n"
         "\n"
         "SIGTERM or SIGINT stops the run after the cycle under way, with a last state, the summary (status\n"
@@ -75,10 +81,12 @@ int main(int argc, char** argv) {
       }
     } else if (a == "--no-plot") {
       opt.plot = false;
+    } else if (a == "--stop-if-runaway") {
+      opt.stop_if_runaway = true;
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << radx::app::unknown_option("radx-engine", a,
                                              {"-i", "--out", "--model", "--threads", "-nt", "--no-plot",
-                                              "--version", "-version", "--help"})
+                                              "--stop-if-runaway", "--version", "-version", "--help"})
                 << '\n';
       usage(std::cerr);
       return radx::app::kExitUsage;

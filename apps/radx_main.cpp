@@ -41,13 +41,15 @@ constexpr CommandHelp kCommands[] = {
      "code)\n"},
     {"run",
      "  run [DECK] [--out DIR] [--threads N] [--no-plot] [--allow-substitutions] [--starter-only]\n"
+     "      [--stop-if-runaway]\n"
      "                              the starter then the engine: DECK is NAME_0000.rad (NAME_0001.rad "
      "beside\n"
      "                              it) or a one-file deck; without DECK, the embedded default deck.\n"
      "                              --allow-substitutions: run the nearest formulation radx implements\n"
      "                              where the deck asks for one it lacks (each is listed) instead of\n"
      "                              refusing the deck. --starter-only: stop after the starter (a\n"
-     "                              starter deck with no engine deck)\n"},
+     "                              starter deck with no engine deck). --stop-if-runaway: as\n"
+     "                              radx-engine's (stop a run whose step has collapsed)\n"},
     {"th",
      "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]... [--filter CFC]] | th FILE --recover\n"
      "                              a time history P_th.h5: without --csv, list its groups (objects,\n"
@@ -149,6 +151,8 @@ int run(const std::vector<std::string>& args) {
       }
     } else if (a == "--no-plot") {
       eopt.plot = false;
+    } else if (a == "--stop-if-runaway") {
+      eopt.stop_if_runaway = true;
     } else if (a == "--allow-substitutions") {
       sopt.allow_substitutions = true;
     } else if (a == "--starter-only") {
@@ -156,7 +160,7 @@ int run(const std::vector<std::string>& args) {
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << radx::app::unknown_option("radx run", a,
                                              {"--out", "--threads", "--no-plot", "--allow-substitutions",
-                                              "--starter-only", "--help"})
+                                              "--starter-only", "--stop-if-runaway", "--help"})
                 << '\n';
       return radx::app::kExitUsage;
     } else if (sopt.deck.empty()) {

@@ -244,6 +244,7 @@ StarterResult run_starter(const StarterOptions& opt, std::ostream& out, std::ost
   if (readable && !diags.has_errors()) {
     step = model::estimate_stable_step(model, 10);
     check_initial_step(deck, model, step, diags);
+    check_contact_step(deck, model, step, diags);
   }
   check_engine_deck_beside(opt, readable, model, step, diags);
   diags.sort();

@@ -29,8 +29,14 @@
 //   3, 13 arctangent       F_t = -mu p (2/pi) atan(ct s) A_s e;
 //   4, 14 scaled linear    F_t = -p min(ct s, mu) A_s e.
 // 1..4 keep only the slip along the segment's first tangent t1 (w -> (w . t1) t1); 11..14 use the plane.
-// The regularised laws are dashpots for small s, of slope (per area) ct, mu p (2/pi) ct and p ct: the
-// explicit step must stay below m / (slope A_s) (friction_slope).
+// The regularised laws are dashpots for small s, of slope (per area) ct, mu p (2/pi) ct and p ct. Computed
+// explicitly with the slip of the last half step they would overshoot once C dt / m_slip > 1 (C the slope
+// times A_s) and need dt <= m_slip / C, which a steep law (ct of 1e15 Pa s/m: practically exact Coulomb)
+// makes absurdly small. Instead the force is bounded by what stops the slip within the step
+// (docs/theory/contact-laws.md 3.5):
+//   |F_t| = min(friction_traction(s, p) A_s, m_slip s / dt),  1 / m_slip = 1 / m_s + sum_j h_j^2 / m_j
+// (the free nodes of the pair), so the slip after the step keeps its sign: unconditionally stable, the law
+// unchanged wherever the step resolves it (C dt <= m_slip), and no step vote.
 #include "contact/ctclaw_laws.hpp"
 
 #include <algorithm>
@@ -201,16 +207,6 @@ double friction_traction(const PairLaw& law, double slip_speed, double pressure)
   }
 }
 
-double friction_slope(const PairLaw& law, double pressure) {
-  const double p = std::max(0.0, pressure);
-  switch (law.friction) {
-    case model::FrictionLaw::Linear: return law.mu * p > 0 ? law.ct : 0.0;
-    case model::FrictionLaw::Arctangent: return law.mu * p * (2 / std::numbers::pi) * law.ct;
-    case model::FrictionLaw::ScaledLinear: return law.mu > 0 ? p * law.ct : 0.0;
-    default: return 0;
-  }
-}
-
 std::array<double, 3> law_friction_force(const PairLaw& law, const LawFrictionInput& in) {
   Vec w = in.w, f_old = in.f_old;
   if (!law.bidirectional) {
@@ -233,7 +229,8 @@ std::array<double, 3> law_friction_force(const PairLaw& law, const LawFrictionIn
   }
   const double s = std::sqrt(dot(w, w));
   if (!(s > 0)) return f;
-  const double magnitude = friction_traction(law, s, in.pressure) * in.area;
+  double magnitude = friction_traction(law, s, in.pressure) * in.area;
+  if (in.mobility > 0 && in.dt > 0) magnitude = std::min(magnitude, s / (in.mobility * in.dt));
   for (std::size_t d = 0; d < 3; ++d) f[d] = -magnitude * w[d] / s;
   return f;
 }

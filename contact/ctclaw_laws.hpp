@@ -60,18 +60,19 @@ double contact_onset(const PairLaw& law);
 // (Linear: min(ct s, mu p); Arctangent: mu p (2/pi) atan(ct s); ScaledLinear: p min(ct s, mu)); for the
 // exact Coulomb law its sliding value mu p.
 double friction_traction(const PairLaw& law, double slip_speed, double pressure);
-// d|F_t|/ds / A_s at s = 0 (Pa s/m): the viscous slope that bounds the explicit step (m / (slope A_s)).
-double friction_slope(const PairLaw& law, double pressure);
 
 // The tangential force on the secondary node of one penalty pair, global axes.
 // w: the tangential relative velocity; n: the contact normal; t1: the segment's first tangent (unit, in the
 // tangent plane), to which s1..s4 restrict the slip; f_old: the previous force already rotated into the
-// current tangent plane (Coulomb's sticking spring); area A_s; dt the step.
+// current tangent plane (Coulomb's sticking spring); area A_s; dt the step; mobility 1 / m_slip (1/kg), the
+// change of the relative tangential velocity per unit force on the pair (0: none bounds the force).
 //   Coulomb: trial = f_old - kappa A_s w dt, scaled back to mu p A_s when longer;
-//   regularised: -friction_traction(|w|, p) A_s e, e = w / |w|.
+//   regularised: -min(friction_traction(|w|, p) A_s, |w| / (mobility dt)) e, e = w / |w|: never more than
+//   what stops the slip within the step, so a steep law cannot overshoot and sets no step.
 struct LawFrictionInput {
   std::array<double, 3> w{}, n{}, t1{}, f_old{};
   double pressure = 0, area = 0, dt = 0;
+  double mobility = 0;
 };
 std::array<double, 3> law_friction_force(const PairLaw& law, const LawFrictionInput& in);
 

@@ -27,15 +27,16 @@
 //   times (1 + tau0 w / g)^2, tau0 the step at p = 0), so that a fast pair cannot close into a stiffer part
 //   of the hyperbola than its vote allowed (without it a pair crossing most of a small gap in one step,
 //   voted with k_t at the start of the step, met a stiffness up to 20 times larger and the run gained
-//   energy). dt_k = 0.5 (g - p) / max(-v_n, tiny); the dashpots (damping c, viscous friction C) add dt <=
-//   scale m/(c + C). /DT/INTER/CST (plain TYPE7): below Tmin the node's mass grows to m = k_eff (Tmin /
-//   scale)^2 / 2 (main nodes with h_j k_eff), and the pair's own vote leaves the spring step to the nodal
-//   step so that it does not undercut Tmin; /DT/INTER/DEL: a pair whose step (spring, kinematic, dashpot) is
-//   below Tmin leaves the interface before it acts (no force, IBC release or stiffness in that cycle), and a
-//   pair about to close whose step at p = 0 is already below Tmin does not vote (it will leave as it closes).
-//   A node whose remaining gap (g - p)/g falls below 1e-6 cannot be held by the penalty: it is deactivated
-//   with a warning naming the node and the interface. IBC: at the node's first impact, its fixed X/Y/Z
-//   translations selected by IBCX/Y/Z are released.
+//   energy). dt_k = 0.5 (g - p) / max(-v_n, tiny); the dashpots (damping c, Iform 1 viscous friction C) add
+//   dt <= scale m/(c + C); a /CTCLAW regularised friction law is bounded by what stops the slip within the
+//   step (ctclaw_laws.cpp) and adds nothing. /DT/INTER/CST (plain TYPE7): below Tmin the node's mass grows to
+//   m = k_eff (Tmin / scale)^2 / 2 (main nodes with h_j k_eff), and the pair's own vote leaves the spring
+//   step to the nodal step so that it does not undercut Tmin; /DT/INTER/DEL: a pair whose step (spring,
+//   kinematic, dashpot) is below Tmin leaves the interface before it acts (no force, IBC release or stiffness
+//   in that cycle), and a pair about to close whose step at p = 0 is already below Tmin does not vote (it
+//   will leave as it closes). A node whose remaining gap (g - p)/g falls below 1e-6 cannot be held by the
+//   penalty: it is deactivated with a warning naming the node and the interface. IBC: at the node's first
+//   impact, its fixed X/Y/Z translations selected by IBCX/Y/Z are released.
 // Initial penetrations at Tstart > 0, or under a sensor (4.6): on the interface's first active cycle the
 // nodes closer than the gap get the Inacti treatment from the current coordinates (1: the node, 2: the
 // segment leave; 3: the node is moved out to the gap; 5, 6: reduced gap), reported once; otherwise the
@@ -323,18 +324,19 @@ template <LawVariant V>
 }
 
 // Friction by the pair's /CTCLAW law, at its pressure on A_s.
+// A regularised law's force is bounded by what stops the slip within the step (mobility: 1 / m_slip), so it
+// is no dashpot for the step.
 template <LawVariant V>
 [[gnu::always_inline]] inline FrictionResponse law_friction(const InterfaceState& st, const PairGeometry& pg,
                                                             const PairContact& pc, const NormalResponse& nr,
-                                                            const Vec3& vt, double dt1) {
+                                                            const Vec3& vt, double dt1, double mobility) {
   FrictionResponse r;
   const auto& law = pc.law;
   if (law.friction != model::FrictionLaw::None) {
     const double pressure = V.normal ? pc.pr.p : (pc.area_s > 0 ? nr.fn / pc.area_s : 0.0);
     const LawFrictionInput li{vt,       pg.n,      pc.t1, rotated_into_plane(st.f_t[pg.ks], pg.n),
-                              pressure, pc.area_s, dt1};
+                              pressure, pc.area_s, dt1,   mobility};
     r.f = law_friction_force(law, li);
-    r.c = friction_slope(law, pressure) * pc.area_s;
   }
   return r;
 }
@@ -368,16 +370,17 @@ template <LawVariant V>
   return r;
 }
 
-// Friction, and its viscous slope (a dashpot for the step); the node's friction history takes the force.
+// Friction, and its viscous slope (Iform 1: a dashpot for the step); the node's friction history takes the
+// force. mobility: 1 / m_slip of the pair (slip_mobility), for a /CTCLAW friction law.
 template <LawVariant V>
 [[gnu::always_inline]] inline FrictionResponse friction(InterfaceState& st, const PairGeometry& pg,
                                                         const PairContact& pc, const NormalResponse& nr,
-                                                        const CycleFlags& f) {
+                                                        const CycleFlags& f, double mobility) {
   const auto& in = *st.in;
   FrictionResponse r;
   Vec3 vt = model::sub(pc.vr, model::scale(pg.n, pc.vn));
   if (V.friction)
-    r = law_friction<V>(st, pg, pc, nr, vt, f.dt1);
+    r = law_friction<V>(st, pg, pc, nr, vt, f.dt1, mobility);
   else if (in.fric > 0 || in.ifric > 0)
     r = interface_friction(st, pg, pc, nr, vt, f);
   st.f_t[pg.ks] = r.f;
@@ -409,8 +412,8 @@ template <LawVariant V>
   s.dt_spring = ms > 0 ? scale * std::sqrt(2.0 * ms / s.keff) : kInf;
   double dt_pair = 0.5 * (g - p) / std::max(-vn, kTiny);  // kinematic
   // Dashpots computed with v^{n-1/2} overshoot when c dt / m > 1 (the velocity they damp changes sign
-  // every cycle): the normal damping c and the viscous friction (C = VISF sqrt(2 K m) for Iform 1, the
-  // regularised /CTCLAW laws' slope at zero slip) keep dt <= m / c.
+  // every cycle): the normal damping c and the viscous friction (C = VISF sqrt(2 K m) for Iform 1) keep
+  // dt <= m / c. (A /CTCLAW law's friction is bounded by the slip it can stop instead: fr.c = 0.)
   const double c_total = cdamp + fr.c;
   if (c_total > 0) {
     double dt_dash = scale * ms / c_total;
@@ -492,6 +495,23 @@ struct Type7Contact::Impl {
         dt = std::min(dt,
                       scale * std::sqrt(2.0 * mass(seg[j]) / (h[j] * k * ((s_free ? 1.0 : 0.0) + h_free))));
     return dt;
+  }
+
+  // The pair's slip mobility 1 / m_slip = [s free] / m_s + sum_j [j free] h_j^2 / m_j (1/kg): the change of
+  // the relative velocity per unit force on the secondary node (and -h_j of it on main node j); 0 when
+  // nothing can move. The same measure as a LAGDT row's (lagrange_contact.cpp).
+  double slip_mobility(std::int32_t s_node, const std::array<std::int32_t, 4>& seg,
+                       const std::array<double, 4>& h, const ContactNodes& nodes) const {
+    auto is_free = [&](std::int32_t n) { return (nodes.fixed[static_cast<std::size_t>(n)] & 7u) != 7u; };
+    auto inverse_mass = [&](std::int32_t n) {
+      const double m = nodes.mass[static_cast<std::size_t>(n)];
+      return is_free(n) && m > 0 ? 1.0 / m : 0.0;
+    };
+    const bool triangle = seg[3] == seg[2];
+    double w = inverse_mass(s_node);
+    for (std::size_t j = 0; j < 4; ++j)
+      if (h[j] > 0 && !(j == 3 && triangle)) w += h[j] * h[j] * inverse_mass(seg[j]);
+    return w;
   }
 
   // Whether a LAGDT pair that would switch may: not when a kinematic condition other than /BCS moves one of
@@ -1055,7 +1075,8 @@ struct Type7Contact::Impl {
       default: break;
     }
     const NormalResponse nr = normal_response<V>(*st.in, pg, pc);
-    const FrictionResponse fr = friction<V>(st, pg, pc, nr, f);
+    const double mobility = V.friction ? slip_mobility(pg.node, st.segments[pg.sb], pg.h, nodes) : 0.0;
+    const FrictionResponse fr = friction<V>(st, pg, pc, nr, f, mobility);
     const PairStep ps = pair_step<V>(pg, pc, nr, fr, f);
     if (classify_step(ps, f) == PairClass::Leave) {
       st.f_t[ks] = Vec3{};

@@ -251,6 +251,12 @@ SLIDE_LAWS = (
     # threshold mu / ct = 0.1 m/s (0.28 of v1(0) = v0 / sqrt 2), then as exp(-ct g t); the +Y part stays v0 / sqrt 2.
     # A law taking the whole slip's speed |v| >= v0 / sqrt 2 > mu / ct would stay Coulomb and stop v1 earlier.
     ("S4_45", "n1s4{Kc-1,Mu0.3,CtLin3}", "XY", "scaled slope along +X, sliding at 45 degrees: brakes the +X part"),
+    # Steep slopes (practically exact Coulomb): CtLin 1e15 Pa s/m is 1e6 MPa s/mm, threshold speed mu p / ct of
+    # 2.6e-12 m/s. Their dashpot, m_s / (ct A_s) = 3e-13 s, would vote the step if it were explicit; bounded by
+    # the slip it can stop within the step it votes nothing (docs/theory/contact-laws.md 3.5).
+    ("S12_STEEP", "n1s12{Kc-1,Mu0.3,CtLin1e15}", "X", "linear slope, steep: practically exact Coulomb"),
+    ("S13_STEEP", "n1s13{Kc-1,Mu0.3,CtLin1e12}", "X", "arctangent, steep: practically exact Coulomb"),
+    ("S14_STEEP", "n1s14{Kc-1,Mu0.3,CtLin1e12}", "X", "scaled slope, steep: practically exact Coulomb"),
 )
 LAGDT_LAWS = (
     ("S11", "n1s11{Kc-1,Mu0.3}", "X", "exact Coulomb, every pair switched to a multiplier row"),
@@ -383,7 +389,12 @@ Every pair slides at the cube's speed v; the friction forces add up to M g times
   |v| >= v2 > mu / ct would stay Coulomb and stop v1 at {g(v1_0 / a_)} s; one acting in the whole plane would
   brake v2 too;
 - `_LOW_CT`: s12 and s14 with slopes low enough that their threshold speed is 0.3 v0: Coulomb above it, then
-  viscous, the speed decaying as exp(-(ct 4 A_s / M) t) (s12) or exp(-ct g t) (s14).
+  viscous, the speed decaying as exp(-(ct 4 A_s / M) t) (s12) or exp(-ct g t) (s14);
+- `_STEEP`: s12, s13 and s14 so steep that they are practically exact Coulomb (s12's CtLin 1e15 Pa s/m is
+  1e6 MPa s/mm): a = mu g until the stop at v0 / (mu g), then at rest. Their viscous slope at zero slip,
+  C = ct A_s (s12), would vote a step m_s / C of about 3e-13 s if the dashpot were explicit (a run of 1e12
+  cycles); bounded by what stops the slip within the step (docs/theory/contact-laws.md 3.5) it votes nothing,
+  and the runs take the cube's own step.
 
 The friction's moment about the centre of mass (a / 2 above the lower face) tilts the cube forward: the front
 pairs carry (M g + F_t) / 4, the rear ones (M g - F_t) / 4. The laws linear in the pressure do not notice (the

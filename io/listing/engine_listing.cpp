@@ -221,6 +221,7 @@ void write_engine_header(std::ostream& os, const EngineListingHeader& h) {
     dt_row(os, "time step, 4-node shells", c.shell, tu);
     dt_row(os, "time step, 3-node shells", c.shell3, tu);
     dt_row(os, "time step, nodal", c.nodal, tu);
+    if (c.spring.given) dt_row(os, "time step, springs", c.spring, tu);
     if (c.nodal.given && c.nodal_max_added_mass_pct > 0)
       row(os, "  stop when added mass exceeds", gnum(c.nodal_max_added_mass_pct) + " %");
     dt_row(os, "time step, interfaces", c.inter, tu);

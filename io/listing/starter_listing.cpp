@@ -428,11 +428,11 @@ void write_smallest_steps(std::ostream& os, const model::Model& m, const Starter
     return;
   }
   if (in.smallest_steps.empty()) {
-    os << "  no shell or solid element with a material that has a step\n";
+    os << "  no shell, solid or spring element with a step\n";
     return;
   }
-  os << "  L / c of each shell and solid at rest, without bulk viscosity and before the /DT scale factor "
-        "(time "
+  os << "  L / c of each shell and solid at rest (solids with their bulk viscosity qb), each spring's step "
+        "from its property, before the /DT scale factor (time "
      << m.units.time_name << ")\n";
   os << "  " << std::left << std::setw(6) << "rank" << std::setw(16) << "element" << std::setw(12) << "id"
      << std::setw(10) << "part"

@@ -414,17 +414,34 @@ void Builder::step_bounds(model::RunControls& rc) {
   rc.dt_max = mx > 0 ? mx : 1e30;
 }
 
-// /DT/BRICK/CST, /DT/SHELL/CST, /DT/SH_3N/CST: each element family's control, the global one unless given.
+// /DT/BRICK, /DT/SHELL, /DT/SH_3N with /CST or /STOP (one of them), /DT/SPRING/STOP: each element family's
+// control, the global one unless given. /STOP (OpenRadioss: IDTMIN 1 of the family) stops the run when an
+// element of the family has a scaled step below Tmin.
 void Builder::element_time_steps(model::RunControls& rc) {
   struct Fam {
-    std::string_view path;
+    std::string_view path, stop;
     model::DtControl* c;
   };
   for (const Fam f :
-       {Fam{"/DT/BRICK/CST", &rc.brick}, Fam{"/DT/SHELL/CST", &rc.shell}, Fam{"/DT/SH_3N/CST", &rc.shell3}}) {
+       {Fam{"/DT/BRICK/CST", "/DT/BRICK/STOP", &rc.brick}, Fam{"/DT/SHELL/CST", "/DT/SHELL/STOP", &rc.shell},
+        Fam{"/DT/SH_3N/CST", "/DT/SH_3N/STOP", &rc.shell3}, Fam{{}, "/DT/SPRING/STOP", &rc.spring}}) {
     *f.c = rc.global;
     f.c->given = false;
-    if (const EngineRecord* r = single(f.path)) {
+    const EngineRecord* stop = single(f.stop);
+    const EngineRecord* cst = f.path.empty() ? nullptr : single(f.path);
+    if (stop && cst) {
+      const Where first = deck_.where(cst->pos);
+      error(*stop, Diag::InconsistentValues,
+            std::string(f.stop) + " and " + std::string(f.path) + " (" + std::string(first.file) + ":" +
+                std::to_string(first.line) +
+                ") are both given; give one action for the family's minimum step");
+    } else if (stop) {
+      read_dt(*stop, *f.c, rc.global.scale, 0.0, model::DtAction::Stop);
+      if (!(f.c->t_min > 0))
+        warning(*stop, Diag::ValueOutOfRange,
+                std::string(f.stop) + " with Tmin = 0 never stops the run; give the minimum step");
+    }
+    if (const EngineRecord* r = cst) {
       read_dt(*r, *f.c, rc.global.scale, rc.global.t_min, model::DtAction::Constant);
       if (f.path == "/DT/BRICK/CST" && r->lines.size() > 1 &&
           std::any_of(r->lines[1].begin(), r->lines[1].end(), [](double x) { return x != 0; }))
@@ -481,15 +498,33 @@ void Builder::nodal_time_step(model::RunControls& rc) {
   }
 }
 
-// /DT/INTER/DEL (which has precedence), /DT/INTER/CST or /DT/INTER/LAG (not both).
+// /DT/INTER/DEL (which has precedence), /DT/INTER/CST, /DT/INTER/LAG or /DT/INTER/STOP (one of the last
+// three).
 void Builder::interface_time_step(model::RunControls& rc) {
   rc.inter = model::DtControl{};
   const EngineRecord* cst = single("/DT/INTER/CST");
   const EngineRecord* del = single("/DT/INTER/DEL");
   const EngineRecord* lag = single("/DT/INTER/LAG");
+  const EngineRecord* stop = single("/DT/INTER/STOP");
+  if (stop && !del) {
+    for (const EngineRecord* other : {cst, lag}) {
+      if (!other) continue;
+      const Where first = deck_.where(other->pos);
+      error(*stop, Diag::InconsistentValues,
+            "/DT/INTER/STOP and " + other->written + " (" + std::string(first.file) + ":" +
+                std::to_string(first.line) +
+                ") are both given; give one action for the interface minimum step");
+      return;
+    }
+    read_dt(*stop, rc.inter, kDefaultScale, 0.0, model::DtAction::Stop);
+    if (!(rc.inter.t_min > 0))
+      warning(*stop, Diag::ValueOutOfRange,
+              "/DT/INTER/STOP with Tmin = 0 never stops the run; give the minimum step");
+    return;
+  }
   if (del) {
     read_dt(*del, rc.inter, kDefaultScale, 0.0, model::DtAction::Delete);
-    for (const EngineRecord* other : {cst, lag})
+    for (const EngineRecord* other : {cst, lag, stop})
       if (other)
         warning(*other, Diag::InconsistentValues,
                 other->written +

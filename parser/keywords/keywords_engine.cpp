@@ -157,6 +157,40 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
       t.push_back(std::move(k));
     }
     {
+      auto k = ekw("/DT/INTER/STOP", "the run stops when an interface time step falls below the minimum");
+      k.lines = {dt_line()};
+      t.push_back(std::move(k));
+    }
+    {
+      auto k = ekw("/DT/SPRING/STOP",
+                   "spring time-step scale; the run stops when a spring's step falls below "
+                   "the minimum");
+      k.lines = {dt_line()};
+      t.push_back(std::move(k));
+    }
+    {
+      auto k = ekw("/DT/BRICK/STOP",
+                   "brick time-step scale; the run stops when a brick's step falls below the "
+                   "minimum");
+      k.lines = {dt_line()};
+      t.push_back(std::move(k));
+    }
+    {
+      auto k = ekw("/DT/SHELL/STOP",
+                   "4-node shell time-step scale; the run stops when a shell's step falls "
+                   "below the minimum");
+      k.lines = {dt_line()};
+      t.push_back(std::move(k));
+    }
+    {
+      auto k = ekw("/DT/SH_3N/STOP",
+                   "3-node shell time-step scale; the run stops when a 3-node shell's step "
+                   "falls below the minimum");
+      k.aliases = {"/DT/SH3N/STOP"};
+      k.lines = {dt_line()};
+      t.push_back(std::move(k));
+    }
+    {
       auto k = ekw("/DT/BRICK/CST", "bricks below the minimum time step switch to small strain");
       k.header_fields = {"option"};
       k.lines = {dt_line(), line({"COL_min", "DEFV_min"}, 0)};
@@ -286,17 +320,19 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
     t.push_back(unsupported("/DT/NODA",
                             "nodal time step with another action (STOP, SET, KILL, the older CST1)",
                             "radx would need that action; it runs /DT/NODA (no action) and /DT/NODA/CST"));
-    t.push_back(unsupported("/DT/INTER", "other interface time-step actions (STOP, SET, KILL, AMS, V4, V5)",
-                            "radx would need that action; it runs /DT/INTER/CST, /DEL and /LAG"));
-    t.push_back(unsupported("/DT/BRICK", "brick time step with another action (none, STOP, DEL, KILL, SET)",
-                            "radx would need that action on bricks; it runs /DT/BRICK/CST"));
-    t.push_back(unsupported("/DT/SHELL",
-                            "4-node shell time step with another action (none or DEL: shells deleted below "
-                            "Tmin; STOP, KILL, SET)",
-                            "radx would need that action on shells; it runs /DT/SHELL/CST"));
+    t.push_back(unsupported("/DT/INTER", "other interface time-step actions (SET, KILL, AMS, V4, V5)",
+                            "radx would need that action; it runs /DT/INTER/CST, /DEL, /LAG and /STOP"));
+    t.push_back(
+        unsupported("/DT/BRICK", "brick time step with another action (none, DEL, KILL, SET)",
+                    "radx would need that action on bricks; it runs /DT/BRICK/CST and /DT/BRICK/STOP"));
+    t.push_back(
+        unsupported("/DT/SHELL",
+                    "4-node shell time step with another action (none or DEL: shells deleted below "
+                    "Tmin; KILL, SET)",
+                    "radx would need that action on shells; it runs /DT/SHELL/CST and /DT/SHELL/STOP"));
     {
-      auto k = unsupported("/DT/SH_3N", "3-node shell time step with another action (none, DEL, STOP, KILL)",
-                           "radx would need that action on 3-node shells; it runs /DT/SH_3N/CST");
+      auto k = unsupported("/DT/SH_3N", "3-node shell time step with another action (none, DEL, KILL)",
+                           "radx would need that action on 3-node shells; it runs /DT/SH_3N/CST and /STOP");
       k.aliases = {"/DT/SH3N"};
       t.push_back(std::move(k));
     }
@@ -305,8 +341,8 @@ const std::vector<EngineKeywordDecl>& engine_keywords() {
                     "other time-step controls (beams, springs, trusses, quads, airbags, SPH, ALE, "
                     "thermal, /DT/INTER/V5, /DT/SMSTR/V4, ...)",
                     "radx would need the time step of that element family or that action; it runs "
-                    "/DT, /DT/NODA/CST, /DT/INTER/CST, /DEL and /LAG, /DT/BRICK/CST, /DT/SHELL/CST and "
-                    "/DT/SH_3N/CST"));
+                    "/DT, /DT/NODA/CST, /DT/INTER/CST, /DEL, /LAG and /STOP, /DT/BRICK, /DT/SHELL and "
+                    "/DT/SH_3N with /CST or /STOP, /DT/SPRING/STOP"));
     t.push_back(unsupported("/DT1", "the older per-family time-step options",
                             "radx would need them; write /DT/BRICK/CST or /DT/SHELL/CST instead"));
     {

@@ -2677,10 +2677,9 @@ const std::vector<std::string_view>& known_unsupported_roots() {
         "/TH/MONV", "/TH/SENSOR", "/TH/GAUGE", "/TH/FRAME", "/TH/CLUSTER", "/ATH", "/BTH", "/CTH", "/DTH",
         "/ETH", "/FTH", "/GTH", "/HTH", "/ITH",
         // engine keywords
-        "/DT/BRICK/DEL", "/DT/BRICK/STOP", "/DT/SHELL/DEL", "/DT/SHELL/STOP", "/DT/SH_3N/DEL", "/DT/SH3N/DEL",
-        "/DT/NODA/STOP", "/DT/NODA/KILL", "/DT/NODA/SET", "/DT/INTER/STOP", "/DT/AMS", "/ATFILE", "/H3D",
-        "/OUTP", "/DEL", "/KILL", "/CHKPT", "/ANIM/SHELL", "/ANIM/BRICK", "/ANIM/MASS", "/DYREL", "/ADYREL",
-        "/IMPL", "/MON/FULL",
+        "/DT/BRICK/DEL", "/DT/SHELL/DEL", "/DT/SH_3N/DEL", "/DT/SH3N/DEL", "/DT/NODA/STOP", "/DT/NODA/KILL",
+        "/DT/NODA/SET", "/DT/AMS", "/ATFILE", "/H3D", "/OUTP", "/DEL", "/KILL", "/CHKPT", "/ANIM/SHELL",
+        "/ANIM/BRICK", "/ANIM/MASS", "/DYREL", "/ADYREL", "/IMPL", "/MON/FULL",
         // thermal analysis
         "/CONVEC", "/RADIATION", "/IMPFLUX", "/THERM_STRESS",
         // engine keywords written in a starter deck, and starter options radx lacks

@@ -967,9 +967,10 @@ StepRule step_rule(TetraGroup&, const model::RunControls& c) {
 StepRule step_rule(Hex20Group&, const model::RunControls& c) {
   return {family_scale(c.brick, c), &c.brick, StepControl::Kind::Brick, nullptr, false};
 }
-// Springs vote with the global /DT scale (Radioss's DTFAC1(6)); no /DT/<family>/CST switch applies.
+// Springs vote with the /DT/SPRING/STOP scale when given, else the global /DT scale (Radioss's DTFAC1(6));
+// no /DT/<family>/CST switch applies.
 StepRule step_rule(SpringGroup&, const model::RunControls& c) {
-  return {c.global.scale, &c.global, StepControl::Kind::Spring, nullptr, false};
+  return {family_scale(c.spring, c), &c.spring, StepControl::Kind::Spring, nullptr, false};
 }
 // Trusses vote with the global /DT scale too (Radioss's DTFAC1(4), which only /DT/TRUSS sets; radx does not
 // read /DT/TRUSS).
@@ -1095,9 +1096,55 @@ void ExplicitEngine::assemble_and_accelerate(bool accelerate) {
 
 // The element stage's votes combined in group order, so the controlling element is the one a serial scan
 // would name: the first group with the smallest step (ties go to the earlier group).
+namespace {
+
+// The /DT/<family>/STOP control of the elements a vote comes from (null for families without one), the
+// family's keyword word and an element's name.
+const model::DtControl* stop_family(StepControl::Kind kind, const model::RunControls& c) {
+  switch (kind) {
+    case StepControl::Kind::Brick:
+    case StepControl::Kind::Tetra: return &c.brick;
+    case StepControl::Kind::Shell: return &c.shell;
+    case StepControl::Kind::Shell3: return &c.shell3;
+    case StepControl::Kind::Spring: return &c.spring;
+    default: return nullptr;
+  }
+}
+const char* step_family_keyword(StepControl::Kind kind) {
+  switch (kind) {
+    case StepControl::Kind::Shell: return "SHELL";
+    case StepControl::Kind::Shell3: return "SH_3N";
+    case StepControl::Kind::Spring: return "SPRING";
+    default: return "BRICK";
+  }
+}
+std::string short_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+const char* step_family_name(StepControl::Kind kind) {
+  switch (kind) {
+    case StepControl::Kind::Shell: return "shell";
+    case StepControl::Kind::Shell3: return "3-node shell";
+    case StepControl::Kind::Spring: return "spring";
+    case StepControl::Kind::Tetra: return "tetrahedron";
+    default: return "brick";
+  }
+}
+
+}  // namespace
+
 double ExplicitEngine::element_time_step(StepControl& control) {
   double best = kInf;
   for (const auto& v : group_votes_) {
+    // /DT/<family>/STOP: an element of the family below its Tmin ends the run (OpenRadioss IDTMIN = 1).
+    if (const auto* fam = stop_family(v.kind, controls_); fam != nullptr && fam->given &&
+                                                          fam->action == model::DtAction::Stop &&
+                                                          v.dt < fam->t_min && step_stop_.empty())
+      step_stop_ = std::string(step_family_name(v.kind)) + " " + std::to_string(v.user_id) +
+                   " has the step " + short_number(v.dt) + ", below the /DT/" + step_family_keyword(v.kind) +
+                   "/STOP minimum " + short_number(fam->t_min);
     switched_elements_ += v.switched;
     if (v.violation_id != 0 && cst_violation_.empty())
       cst_violation_ = "element " + std::to_string(v.violation_id) + " was held at the /DT/.../CST step " +
@@ -1387,6 +1434,19 @@ bool ExplicitEngine::choose_time_step(LoopState& L, RunResult& res) {
     res.status = RunStatus::Error;
     res.message =
         cst_violation_ + " (cycle " + std::to_string(L.cycle) + ", time " + std::to_string(L.time) + ")";
+    return false;
+  }
+  // /DT/INTER/STOP: the contact vote (its own scale applied) below Tmin ends the run.
+  const auto& inter = controls_.inter;
+  if (step_stop_.empty() && inter.given && inter.action == model::DtAction::Stop &&
+      L.dt_contact < inter.t_min)
+    step_stop_ = "interface " + std::to_string(L.contact_control.user_id) + " (secondary node " +
+                 std::to_string(L.contact_control.node_id) + ") has the step " + short_number(L.dt_contact) +
+                 ", below the /DT/INTER/STOP minimum " + short_number(inter.t_min);
+  if (!step_stop_.empty()) {
+    res.status = RunStatus::Error;
+    res.message = "the run stops: " + step_stop_ + " (cycle " + std::to_string(L.cycle) + ", time " +
+                  short_number(L.time) + ")";
     return false;
   }
   if (controls_.nodal.given) {  // /DT/NODA and /DT/NODA/CST: the nodal step replaces the element step

@@ -273,6 +273,7 @@ class ExplicitEngine {
   double mass0_ = 0;
   std::int64_t switched_elements_ = 0;  // elements whose step was frozen by /DT/<family>/CST
   std::string cst_violation_;  // set when a frozen element's own step falls below half the frozen step
+  std::string step_stop_;      // set when a step falls below a /DT/<family>/STOP or /DT/INTER/STOP minimum
 };
 
 }  // namespace radx::solver

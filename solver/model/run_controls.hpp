@@ -35,8 +35,9 @@ struct RunControls {
   DtControl global;                     // /DT: element step scale and minimum (Tmin reached: stop)
   DtControl nodal;                      // /DT/NODA/CST: mass added below Tmin
   double nodal_max_added_mass_pct = 0;  // /DT/NODA/CST third value: stop beyond it (0: no limit)
-  DtControl brick, shell, shell3;       // /DT/BRICK|SHELL|SH_3N/CST: small-strain switch at Tmin
-  DtControl inter;                      // /DT/INTER/CST, /DEL, /LAG
+  DtControl brick, shell, shell3;       // /DT/BRICK|SHELL|SH_3N/CST: small-strain switch at Tmin; /STOP
+  DtControl spring;                     // /DT/SPRING/STOP
+  DtControl inter;                      // /DT/INTER/CST, /DEL, /LAG, /STOP
   double dt_initial = 0;                // /DTIX DT_ini: the first step is at most this (0: no bound)
   double dt_max = 1e30;                 // /DTIX DT_max: no step above it
 

@@ -2,7 +2,8 @@
 // c = sqrt((K + 4G/3) / rho); shells: L from area over the longest diagonal bounded below by the shortest
 // side, triangles: L = 2A / longest side, tetrahedra: L = the smallest height 3 V / largest face area, c =
 // sqrt(E / rho) (docs/theory/elements.md 3.3, 4.1, 4.2); 20-node bricks: OpenRadioss's length of
-// hex20_length (hex20_shape.hpp) over the 3 x 3 x 3 points.
+// hex20_length (hex20_shape.hpp) over the 3 x 3 x 3 points. Solids times sqrt(1 + qb^2) - qb, their bulk
+// viscosity at rest (4.4). Springs: spring_property_step.
 #include "solver/model/stable_step.hpp"
 
 #include <algorithm>
@@ -27,6 +28,18 @@ double sound_speed(const Model& m, std::int32_t part, bool solid) {
   if (mat.law == MaterialLaw::Void || mat.law == MaterialLaw::Rigid) return 0;
   if (!(mat.rho > 0) || !(mat.young > 0)) return 0;
   return solid ? std::sqrt((mat.bulk + 4.0 * mat.shear / 3.0) / mat.rho) : std::sqrt(mat.young / mat.rho);
+}
+
+// The linear bulk viscosity a solid part runs with: its property's qb, none for law 70 when the property
+// leaves qa and qb blank (as the engine's foam groups).
+double solid_qb(const Model& m, std::int32_t part) {
+  if (part == kNone) return 0;
+  const Part& pt = m.parts[static_cast<std::size_t>(part)];
+  if (pt.property == kNone) return 0;
+  const SolidProperty& prop = m.properties[static_cast<std::size_t>(pt.property)].solid;
+  const bool foam =
+      pt.material != kNone && m.materials[static_cast<std::size_t>(pt.material)].law == MaterialLaw::FoamTab;
+  return foam && prop.q_default ? 0.0 : prop.qb;
 }
 
 Vec3 node_at(const Model& m, std::int32_t n) {
@@ -70,6 +83,28 @@ double triangle_length(const Vec3& x1, const Vec3& x2, const Vec3& x3) {
 
 namespace {
 
+// The step length of one mesh element at its nodes' initial coordinates.
+double element_length(const Model& m, const ElementBlock& b, const std::int32_t* conn) {
+  if (b.type == ElementType::Brick8) {
+    std::array<Vec3, 8> x{};
+    for (std::size_t k = 0; k < 8; ++k) x[k] = node_at(m, conn[k]);
+    return brick_length(x);
+  }
+  if (b.type == ElementType::Brick20) {
+    double x[20][3];
+    for (std::size_t k = 0; k < 20; ++k) {
+      const Vec3 p = node_at(m, conn[k]);
+      for (std::size_t d = 0; d < 3; ++d) x[k][d] = p[d];
+    }
+    return hex20_length(x, hex20_starter_rule());
+  }
+  if (b.type == ElementType::Tetra4)
+    return tetra_length(node_at(m, conn[0]), node_at(m, conn[1]), node_at(m, conn[2]), node_at(m, conn[3]));
+  if (b.type == ElementType::Shell4 && conn[2] != conn[3])
+    return quad_length(node_at(m, conn[0]), node_at(m, conn[1]), node_at(m, conn[2]), node_at(m, conn[3]));
+  return triangle_length(node_at(m, conn[0]), node_at(m, conn[1]), node_at(m, conn[2]));
+}
+
 // Keeps the `keep` smallest steps seen, smallest first; a later element with an equal step stays after
 // the earlier one.
 void keep_smallest(std::vector<ElementStep>& smallest, std::size_t keep, const ElementStep& s) {
@@ -82,50 +117,91 @@ void keep_smallest(std::vector<ElementStep>& smallest, std::size_t keep, const E
 
 }  // namespace
 
+double bulk_viscosity_step_factor(double qb) {
+  return std::sqrt(1.0 + qb * qb) - qb;
+}
+
+namespace {
+
+// m / (sqrt(c^2 + m k) + c) of one spring family; +infinity without stiffness and damping.
+double spring_family_step(double m, double k, double c) {
+  if (k + c < 1e-15) return std::numeric_limits<double>::infinity();
+  return m / std::max(1e-15, std::sqrt(c * c + m * std::max(k, 1e-15)) + c);
+}
+
+struct FamilyStiffness {
+  double k = 0, c = 0;
+};
+FamilyStiffness spring_family(const SpringProperty& p, int first) {
+  FamilyStiffness s;
+  for (int d = first; d < first + 3; ++d) {
+    s.k = std::max(s.k, p.law(d).stiffness);
+    s.c = std::max(s.c, p.law(d).damping);
+  }
+  return s;
+}
+
+}  // namespace
+
+double spring_property_step(const SpringProperty& p, double l0) {
+  if (p.type == 4) {
+    const double s = p.ileng == 1 ? l0 : 1.0;
+    if (!(s > 0)) return std::numeric_limits<double>::infinity();
+    const double m = p.mass * s, k = p.x.stiffness / s, c = p.x.damping / s;
+    return std::min(m / std::max(1e-15, std::sqrt(c * c + m * k) + c), 0.5 * m / std::max(1e-15, c));
+  }
+  const FamilyStiffness t = spring_family(p, 0);
+  FamilyStiffness r = spring_family(p, 3);
+  if (p.type == 13) {
+    r.k += std::max(p.law(1).stiffness, p.law(2).stiffness) * l0 * l0;
+    r.c += std::max(p.law(1).damping, p.law(2).damping) * l0 * l0;
+  }
+  return std::min(spring_family_step(p.mass, t.k, t.c), spring_family_step(p.inertia, r.k, r.c));
+}
+
 StepEstimate estimate_stable_step(const Model& m, std::size_t keep) {
   StepEstimate best;
   double dt_min = std::numeric_limits<double>::infinity();
+  auto consider = [&](double dt, ElementType type, std::int64_t id, std::size_t e, std::int32_t part) {
+    if (!(dt > 0) || !std::isfinite(dt)) return;
+    if (dt < dt_min) {
+      dt_min = dt;
+      best.dt = dt;
+      best.type = type;
+      best.element_id = id;
+      best.element = static_cast<std::int32_t>(e);
+    }
+    keep_smallest(best.smallest, keep, {dt, type, id, static_cast<std::int32_t>(e), part});
+  };
   for (const ElementBlock* b : {&m.shells, &m.shells3, &m.bricks, &m.tetras, &m.bricks20}) {
     const auto npe = static_cast<std::size_t>(b->npe());
+    const bool solid =
+        b->type == ElementType::Brick8 || b->type == ElementType::Tetra4 || b->type == ElementType::Brick20;
     for (std::size_t e = 0; e < b->size(); ++e) {
-      const double c = sound_speed(m, b->part[e],
-                                   b->type == ElementType::Brick8 || b->type == ElementType::Tetra4 ||
-                                       b->type == ElementType::Brick20);
+      const double c = sound_speed(m, b->part[e], solid);
       if (!(c > 0)) continue;
       const std::int32_t* conn = &b->conn[e * npe];
       bool valid = true;
       for (std::size_t k = 0; k < npe; ++k) valid = valid && conn[k] != kNone;
       if (!valid) continue;
-      double l = 0;
-      if (b->type == ElementType::Brick8) {
-        std::array<Vec3, 8> x{};
-        for (std::size_t k = 0; k < 8; ++k) x[k] = node_at(m, conn[k]);
-        l = brick_length(x);
-      } else if (b->type == ElementType::Brick20) {
-        double x[20][3];
-        for (std::size_t k = 0; k < 20; ++k) {
-          const Vec3 p = node_at(m, conn[k]);
-          for (std::size_t d = 0; d < 3; ++d) x[k][d] = p[d];
-        }
-        l = hex20_length(x, hex20_starter_rule());
-      } else if (b->type == ElementType::Tetra4) {
-        l = tetra_length(node_at(m, conn[0]), node_at(m, conn[1]), node_at(m, conn[2]), node_at(m, conn[3]));
-      } else if (b->type == ElementType::Shell4 && conn[2] != conn[3]) {
-        l = quad_length(node_at(m, conn[0]), node_at(m, conn[1]), node_at(m, conn[2]), node_at(m, conn[3]));
-      } else {
-        l = triangle_length(node_at(m, conn[0]), node_at(m, conn[1]), node_at(m, conn[2]));
-      }
+      const double l = element_length(m, *b, conn);
       if (!(l > 0)) continue;
-      const double dt = l / c;
-      if (dt < dt_min) {
-        dt_min = dt;
-        best.dt = dt;
-        best.type = b->type;
-        best.element_id = b->id[e];
-        best.element = static_cast<std::int32_t>(e);
-      }
-      keep_smallest(best.smallest, keep, {dt, b->type, b->id[e], static_cast<std::int32_t>(e), b->part[e]});
+      const double q = solid ? bulk_viscosity_step_factor(solid_qb(m, b->part[e])) : 1.0;
+      consider(l / c * q, b->type, b->id[e], e, b->part[e]);
     }
+  }
+  const ElementBlock& springs = m.springs;
+  const auto npe = static_cast<std::size_t>(springs.npe());
+  for (std::size_t e = 0; e < springs.size(); ++e) {
+    const std::int32_t part = springs.part[e];
+    if (part == kNone) continue;
+    const auto prop = m.parts[static_cast<std::size_t>(part)].property;
+    if (prop == kNone) continue;
+    const std::int32_t* conn = &springs.conn[e * npe];
+    if (conn[0] == kNone || conn[1] == kNone) continue;
+    const double l0 = std::sqrt(squared(sub(node_at(m, conn[1]), node_at(m, conn[0]))));
+    consider(spring_property_step(m.properties[static_cast<std::size_t>(prop)].spring, l0), springs.type,
+             springs.id[e], e, part);
   }
   return best;
 }

@@ -13,6 +13,8 @@ all pairs slip at the cube's speed v, so dv/dt = -a(v) = -sum f(v, p) A_s / M:
   * s1, s11 (exact Coulomb): a = mu g: the cube stops at v0 / (mu g) and sticks;
   * s12: f = min(ct v, mu p); s14: f = p min(ct v, mu): a = mu g above the threshold speed, viscous below it;
   * s13: f = mu p (2/pi) atan(ct v): a = mu g (2/pi) atan(ct v) at every speed;
+  * a steep law (the _STEEP decks: its threshold speed v*, mu p / ct, mu / ct, or for s13 the speed 63.7 / ct
+    where it reaches 99 % of mu p, below 1e-6 v0) is exact Coulomb for the check: a = mu g, then at rest;
   * s1..s4 keep only the slip along the segment's first tangent t1 = x2 - x1: sliding along t1 they act as above;
     sliding across it (the _S1_Y deck) they give no friction and the cube keeps v0; sliding at an angle to it
     (the _S4_45 deck) they act as above on the velocity's part along t1, v1 (from v1(0) = v0 cos angle, the slip
@@ -22,8 +24,8 @@ pairs carry more, N_i = M g / N + F h x_i / sum x_j^2 (x_i the pair's arm along 
 this changes nothing for the laws linear in the pressure (s1, s11, s13, s14) but delays s12's viscous branch
 (min(ct v, mu p_i) of the rear pairs switches first). The expected speed history is the ODE M dv/dt = -F(v) with
 that F (RK4, steps of a tenth of its fastest time scale M / (slope at v = 0 * sum A_s), at most 1e-4 s; exact
-Coulomb: v0 - mu g t, then at rest); M, g, v0, the law string, the geometry and the first tangent are read from
-the deck.
+Coulomb and steep laws: v0 - mu g t, then at rest); M, g, v0, the law string, the geometry and the first tangent
+are read from the deck.
 On LAGDT (every pair a multiplier row at every cycle, /DT/INTER/CST with Tmin far above the pairs' steps) the
 multiplier is the normal force: the same closed form. The runs use one thread (the checks are about the laws;
 thread determinism is contact.threads').
@@ -31,8 +33,10 @@ thread determinism is contact.threads').
 Tolerances (what they mean):
   * deceleration while sliding (least squares on the rows with 0.9 v0 >= v >= max(0.1 v0, 2 v*), v* the
     regularised laws' threshold speed: mu p / ct for s12, mu / ct for s14) within 3 % of mu g for the Coulomb-like
-    laws (s1, s11, s12, s14): the normal forces wobble by about 0.5 % as the cube settles and tilts on its pairs
-    (block_sliding's tolerance);
+    laws (s1, s11, s12, s14 and the steep ones): the normal forces wobble by about 0.5 % as the cube settles and
+    tilts on its pairs (block_sliding's tolerance);
+  * the step is the cube's own, not a friction dashpot's: the run's mean step t_end / cycles is at least 0.9 of
+    its first step (the listing's cycle 0) (the steep laws' dashpot m_s / (ct A_s), 3e-13 s, would make it 1e-7 of the cube's step);
   * the times at which the speed falls below 0.9, 0.5 and 0.1 v0 within 3 % (plus one time-history row) of the
     ODE's: the same 3 % on the mean deceleration up to there, and for s13 the check of its arctangent shape (its
     deceleration at 0.1 v0 is 0.54 mu g, at 0.9 v0 0.94 mu g: a Coulomb law would miss by 20 %), for the decks
@@ -93,12 +97,27 @@ def friction_force(law, v, weight, arms, height, areas):
     return f
 
 
-def expected_speed(law, M, g_acc, arms, height, areas, v0, t_end):
-    """(times, speeds) of M dv/dt = -F(v) (friction_force) from v0: RK4 with steps of a tenth of the ODE's
-    fastest time scale M / (slope at v = 0 * sum A_s), at most 1e-4 s; exact Coulomb: v0 - mu g t, then 0."""
+def threshold_speed(law, p):
+    """The slip speed above which a regularised law is Coulomb's mu p (s13: 99 % of it) at pressure p; 0 for
+    exact Coulomb."""
     kind, prm = law["friction"] % 10, law["params"]
     mu, ct = prm.get("mu", 0.0), prm.get("ctlin", 0.0)
-    if kind == 1:
+    return {1: 0.0, 2: mu * p / ct if ct else 0.0, 3: math.tan(0.99 * math.pi / 2) / ct if ct else 0.0,
+            4: mu / ct if ct else 0.0}[kind]
+
+
+def is_steep(law, p, v0):
+    """A regularised law so steep that it is exact Coulomb for the check: threshold speed below 1e-6 v0."""
+    return law["friction"] % 10 != 1 and threshold_speed(law, p) < 1e-6 * v0
+
+
+def expected_speed(law, M, g_acc, arms, height, areas, v0, t_end):
+    """(times, speeds) of M dv/dt = -F(v) (friction_force) from v0: RK4 with steps of a tenth of the ODE's
+    fastest time scale M / (slope at v = 0 * sum A_s), at most 1e-4 s; exact Coulomb or a steep law: v0 - mu g t,
+    then 0."""
+    kind, prm = law["friction"] % 10, law["params"]
+    mu, ct = prm.get("mu", 0.0), prm.get("ctlin", 0.0)
+    if kind == 1 or is_steep(law, M * g_acc / sum(areas), v0):
         ts = np.linspace(0.0, t_end, 20001)
         return ts, np.maximum(0.0, v0 - mu * g_acc * ts)
     p_mean = M * g_acc / sum(areas)
@@ -172,7 +191,8 @@ def one_deck(radx, deck, out, checks):
     height = com[2] - sum(m.nodes[n][2] for n in secondary) / len(secondary)
     a_s = [areas[n] for n in secondary]
     mu = law["params"]["mu"]
-    coulomb_like = law["friction"] % 10 in (1, 2, 4)
+    steep = is_steep(law, weights[0] / a_s[0], v0)
+    coulomb_like = law["friction"] % 10 in (1, 2, 4) or steep
     t_end = cc.engine_card(deck, "/RUN/" + os.path.basename(deck)[:-len("_0000.rad")] + "/1")[0]
     print("%s: /CTCLAW/%d %s on %s, M = %g, g = %g, v0 = %g along (%g, %g, %g), first tangent (%g, %g, %g), A_s = "
           "%s, pressure %.6g Pa%s" % (os.path.basename(deck), law_id, urn, "LAGDT/TYPE7" if it["lagdt"] else "TYPE7",
@@ -203,9 +223,7 @@ def one_deck(radx, deck, out, checks):
         te, ve = expected_speed(law, M, g_acc, arms, height, a_s, vb0, t_end)
         if coulomb_like:
             # Coulomb above the threshold speed of the regularised laws: mu p / ct (s12), mu / ct (s14).
-            kind, prm = law["friction"] % 10, law["params"]
-            v_star = (mu * weights[0] / a_s[0] / prm["ctlin"] if kind == 2 else mu / prm["ctlin"] if kind == 4
-                      else 0.0)
+            v_star = threshold_speed(law, weights[0] / a_s[0])
             sliding = (v <= 0.9 * vb0) & (v >= max(0.1 * vb0, 2 * v_star))
             if checks.check(sliding.sum() >= 10, "%d time-history rows in the sliding phase" % sliding.sum()):
                 slope = np.polyfit(t[sliding], v[sliding], 1)[0]
@@ -223,6 +241,9 @@ def one_deck(radx, deck, out, checks):
         checks.check(abs(en["contact_friction"] - (ke0 - en["kinetic"])) <= 0.02 * ke0,
                      "frictional energy %.5g J = kinetic energy lost %.5g J (allowed 2 %% of %.4g J)"
                      % (en["contact_friction"], ke0 - en["kinetic"], ke0))
+    dt0 = cc.listing_rows(cc.read_listing(out, name))[0]["dt"]
+    checks.check(t_end / s["cycles"] >= 0.9 * dt0, "the step is the cube's own: mean step %.4g s over %d cycles, "
+                 "first step %.4g s (the mean at least 0.9 of it)" % (t_end / s["cycles"], s["cycles"], dt0))
     z_plate = m.nodes[seg[0]][2]
     for n in (n for n in secondary if cc.has_column(th, "%d:DZ" % n)):
         d = m.nodes[n][2] + cc.th_column(th, "%d:DZ" % n)[1] - z_plate

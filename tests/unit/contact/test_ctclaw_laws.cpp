@@ -273,10 +273,6 @@ TEST_CASE("friction laws: the force of each law against its formula, opposite to
         CHECK(dot(f, w) == Approx(-norm(f) * s).epsilon(1e-12));  // opposite to the slip
         CHECK(f[2] == 0);
       }
-      // The viscous slope at zero slip against a forward difference of the traction.
-      const double h = 1e-12;
-      INFO("law " << static_cast<int>(kind) << " p " << p);
-      CHECK(c::friction_slope(law, p) == Approx(c::friction_traction(law, h, p) / h).epsilon(1e-6));
     }
   }
   // The linear law's threshold depends on the pressure, the scaled one's does not.
@@ -291,6 +287,65 @@ TEST_CASE("friction laws: the force of each law against its formula, opposite to
     CHECK(c::friction_traction(lin, 1.001 * mu * p / ct, p) == Approx(mu * p).epsilon(1e-15));
     CHECK(c::friction_traction(scaled, 0.999 * mu / ct, p) < mu * p);
     CHECK(c::friction_traction(scaled, 1.001 * mu / ct, p) == Approx(mu * p).epsilon(1e-15));
+  }
+}
+
+TEST_CASE("regularised laws: the force never exceeds what stops the slip within the step", "[ctclaw]") {
+  // A pair of the sliding-block verification deck: pressure p on A_s, secondary mass m_s on a fixed segment
+  // (mobility 1 / m_s), the cube's step dt; a steep linear law (CtLin 1e15 Pa s/m = 1e6 MPa s/mm), whose
+  // dashpot C = ct A_s would need dt <= m_s / C = 3e-13 s if explicit.
+  const double mu = 0.3, p = 8829.0, area = 0.0025, m_s = 0.75, dt = 1e-5;
+  const double coulomb = mu * p * area;  // 6.6 N
+  const Vec n = {0, 0, 1}, t1 = {1, 0, 0};
+  for (const auto kind : {FrictionLaw::Linear, FrictionLaw::Arctangent, FrictionLaw::ScaledLinear}) {
+    c::PairLaw law;
+    law.friction = kind;
+    law.bidirectional = true;
+    law.mu = mu;
+    law.ct = 1e15;
+    INFO("law " << static_cast<int>(kind));
+    // Sliding: m_s s / dt (37500 N) is far above the traction: the law's own force, mu p A_s.
+    auto f = c::law_friction_force(law, c::LawFrictionInput{{0.5, 0, 0}, n, t1, {}, p, area, dt, 1 / m_s});
+    CHECK(norm(f) == Approx(coulomb).epsilon(1e-12));
+    // Almost at rest: the force is what stops the slip in one step, m_s s / dt, not mu p A_s.
+    const double s = 1e-6;
+    f = c::law_friction_force(law, c::LawFrictionInput{{s, 0, 0}, n, t1, {}, p, area, dt, 1 / m_s});
+    CHECK(norm(f) == Approx(m_s * s / dt).epsilon(1e-14));
+    CHECK(s + dt * f[0] / m_s == Approx(0).margin(1e-15 * s));
+    // A block of mass m_s integrated with central differences from 0.5 m/s: it decelerates at mu p A_s / m_s
+    // (mu g) and comes to rest at 0.5 m_s / (mu p A_s) without the speed changing sign (the explicit
+    // dashpot, C dt / m_s = 3e7, would flip it every step).
+    double v = 0.5, t = 0;
+    bool reversed = false;
+    double t_rest = -1;
+    for (int k = 0; k < 100000 && t_rest < 0; ++k) {
+      f = c::law_friction_force(law, c::LawFrictionInput{{v, 0, 0}, n, t1, {}, p, area, dt, 1 / m_s});
+      v += dt * f[0] / m_s;
+      t += dt;
+      reversed = reversed || v < 0;
+      if (v <= 1e-12) t_rest = t;
+    }
+    CHECK_FALSE(reversed);
+    // The stop time of exact Coulomb, within one step (and, for the arctangent, the time it takes to lose
+    // the last m_s v* of momentum, v* = 1 / ct of no consequence here).
+    CHECK(t_rest == Approx(0.5 * m_s / coulomb).margin(1.001 * dt));
+    // Without the bound the same step overshoots: the slip reverses in the first step once slow.
+    v = 1e-6;
+    f = c::law_friction_force(law, c::LawFrictionInput{{v, 0, 0}, n, t1, {}, p, area, dt, 0.0});
+    CHECK(v + dt * f[0] / m_s < -0.5 * v);
+  }
+  // A law the step resolves (C dt / m_s = 1e-6 here) keeps its force to the bit.
+  c::PairLaw soft;
+  soft.friction = FrictionLaw::Linear;
+  soft.bidirectional = true;
+  soft.mu = mu;
+  soft.ct = 40.0;
+  for (const double s : {1e-9, 1e-3, 0.5}) {
+    const auto bounded =
+        c::law_friction_force(soft, c::LawFrictionInput{{s, 0, 0}, n, t1, {}, p, area, dt, 1 / m_s});
+    const auto free =
+        c::law_friction_force(soft, c::LawFrictionInput{{s, 0, 0}, n, t1, {}, p, area, dt, 0.0});
+    CHECK(bounded[0] == free[0]);
   }
 }
 

@@ -993,3 +993,44 @@ TEST_CASE("/DTIX: DT_ini and DT_max reach the run controls, bad values are locat
     CHECK(d->message.find("DT_ini") != std::string::npos);
   }
 }
+
+TEST_CASE("/DT/<family>/STOP and /DT/INTER/STOP: the family's scale and a minimum that stops the run",
+          "[engine-io]") {
+  radx::test::TempDir dir;
+  {
+    const Built b =
+        build(dir, "A_0001.rad",
+              "/RUN/A/1\n1.5\n/DT/INTER/STOP\n0.5 1e-8\n/DT/SPRING/STOP\n0.7 2e-8\n/DT/BRICK/STOP\n"
+              "0 3e-8\n/DT/SHELL/STOP\n0.6 4e-8\n/DT/SH3N/STOP\n0.4 5e-8\n/END\n");
+    INFO(all_diags(b.diags));
+    REQUIRE_FALSE(b.diags.has_errors());
+    CHECK(b.diags.warning_count() == 0);
+    struct Want {
+      const radx::model::DtControl* c;
+      double scale, t_min;
+    };
+    for (const auto& w :
+         {Want{&b.rc.inter, 0.5, 1e-8}, Want{&b.rc.spring, 0.7, 2e-8}, Want{&b.rc.brick, 0.9, 3e-8},
+          Want{&b.rc.shell, 0.6, 4e-8}, Want{&b.rc.shell3, 0.4, 5e-8}}) {
+      CHECK(w.c->given);
+      CHECK(w.c->action == DtAction::Stop);
+      CHECK(w.c->scale == Approx(w.scale).epsilon(kEps));  // Tscale 0: the /DT scale, 0.9
+      CHECK(w.c->t_min == Approx(w.t_min).epsilon(kEps));
+    }
+  }
+  {
+    // One action per minimum: /STOP with /CST is a located error; Tmin 0 never stops (a warning).
+    const std::string text =
+        "/RUN/A/1\n1.5\n/DT/BRICK/CST\n0.9 1e-8\n/DT/BRICK/STOP\n0.9 1e-8\n/DT/INTER/LAG\n"
+        "0.9 1e-8\n/DT/INTER/STOP\n0.9 1e-8\n/DT/SPRING/STOP\n0.9 0\n/END\n";
+    const Built b = build(dir, "A_0001.rad", text);
+    std::size_t both = 0;
+    for (const auto& d : b.diags.items())
+      if (d.code == Diag::InconsistentValues && d.message.find("are both given") != std::string::npos) ++both;
+    CHECK(both == 2);
+    const auto* zero = find(b.diags, Diag::ValueOutOfRange);
+    REQUIRE(zero != nullptr);
+    CHECK(zero->line == line_of(text, "/DT/SPRING/STOP"));
+    CHECK(zero->message.find("never stops the run") != std::string::npos);
+  }
+}

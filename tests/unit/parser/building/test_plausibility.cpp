@@ -1,9 +1,11 @@
 // Plausibility warnings: decks that are valid but whose physics or run is absurd (a wave speed no material
 // has, a tangled brick, a step below 1e-12 s, an end time beyond 1e9 cycles, an energy error past 10 % and
 // 50 %) run on, but say so, located, with what is typical.
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -135,7 +137,8 @@ TEST_CASE("the wave speed sqrt(E/rho) is checked in m/s with the deck's units", 
 TEST_CASE("a density of 1e-30 warns of the material and of the step it gives", "[plausibility]") {
   radx::test::TempDir dir;
   // Steel's E in Mg mm s with rho = 1e-30: c = sqrt(210000 / 1e-30) = 4.58e17 mm/s = 4.58e14 m/s, above
-  // light; the step of the 10 mm cube is 10 / 4.58e17 = 2.18e-17 s (nu = 0: the solid speed is the same).
+  // light; the step of the 10 mm cube is 10 / 4.58e17 = 2.18e-17 s (nu = 0: the solid speed is the same),
+  // 2.08e-17 s with the default bulk viscosity qb = 0.05 (times sqrt(1 + qb^2) - qb = 0.951).
   const auto r = starter(dir, cube_deck(10.0, 1e-30, 210000.0) + "/END\n");
   INFO(r.err);
   CHECK(r.exit_code == 0);
@@ -143,7 +146,7 @@ TEST_CASE("a density of 1e-30 warns of the material and of the step it gives", "
             "warning: RX512: [/MAT/LAW1 id 1 \"mat\"] the wave speed sqrt(E/RHO_I) = 4.58258e+14 m/s (E = "
             "210000, RHO_I = 1e-30 in the deck's work units Mg mm s) is above the speed of light") !=
         std::string::npos);
-  CHECK(r.err.find("warning: RX513: [/BRICK id 1] the initial stable time step is about 2.18e-17 s") !=
+  CHECK(r.err.find("warning: RX513: [/BRICK id 1] the initial stable time step is about 2.08e-17 s") !=
         std::string::npos);
 }
 
@@ -169,22 +172,26 @@ TEST_CASE("a deck that names no units is judged by the most plausible usual syst
 }
 
 TEST_CASE("the initial step estimate is the element size over the wave speed", "[plausibility]") {
-  // A cube of side 10 mm, nu = 0: L = V / largest face = 10, c = sqrt(E/rho) = sqrt(210000/7.85e-9).
+  // A cube of side 10 mm, nu = 0: L = V / largest face = 10, c = sqrt(E/rho) = sqrt(210000/7.85e-9), lowered
+  // by the default linear bulk viscosity qb = 0.05 at rest: c_eff = c (qb + sqrt(1 + qb^2)).
   const auto m = radx::test::model_of_deck(cube_deck(10.0, 7.85e-9, 210000.0) + "/END\n");
   const auto step = radx::model::estimate_stable_step(m);
-  CHECK(step.dt == Approx(10.0 / std::sqrt(210000.0 / 7.85e-9)).epsilon(1e-12));
+  const double qb = 0.05;
+  CHECK(step.dt ==
+        Approx(10.0 / std::sqrt(210000.0 / 7.85e-9) / (qb + std::sqrt(1 + qb * qb))).epsilon(1e-12));
   CHECK(step.element_id == 1);
   CHECK(step.type == radx::model::ElementType::Brick8);
 }
 
 TEST_CASE("a step below 1e-12 s is a warning RX513 at the element that sets it", "[plausibility]") {
   radx::test::TempDir dir;
-  // E = 1e30 with steel's density in Mg mm s: c = 1.1e19 mm/s, step 10 mm / c = 8.9e-19 s.
+  // E = 1e30 with steel's density in Mg mm s: c = 1.1e19 mm/s, step 10 mm / c = 8.86e-19 s, 8.43e-19 s with
+  // the default bulk viscosity (times 0.951).
   const auto r = starter(dir, cube_deck(10.0, 7.85e-9, 1e30) + "/END\n");
   INFO(r.err);
   CHECK(r.exit_code == 0);
   CHECK(r.err.find("CUBE_0000.rad:16:1: warning: RX513: [/BRICK id 1] the initial stable time step is about "
-                   "8.86e-19 s (element size over wave speed of brick 1), below 1e-12 s") !=
+                   "8.43e-19 s (element size over wave speed of brick 1), below 1e-12 s") !=
         std::string::npos);
   CHECK(r.err.find("RX512") != std::string::npos);  // and the material that causes it
   const auto steel = starter(dir, cube_deck(10.0, 7.85e-9, 210000.0) + "/END\n");
@@ -195,15 +202,16 @@ TEST_CASE("a run whose end time is absurd warns RX513 at /RUN in the starter and
           "[plausibility]") {
   radx::test::TempDir dir;
   const std::string deck = cube_deck(10.0, 7.85e-9, 210000.0) + "/END\n";
-  // Steel cube of 10 mm: step 0.9 x 10 mm / 5172 m/s = 1.74e-6 s; 1e30 s needs 5.75e35 cycles.
+  // Steel cube of 10 mm: step 0.9 x 0.951 (qb = 0.05) x 10 mm / 5172 m/s = 1.66e-6 s; 1e30 s needs 6.04e35
+  // cycles.
   const std::string absurd = "/RUN/CUBE/1\n1e30\n/END\n";
   const std::string sane = "/RUN/CUBE/1\n1e-3\n/END\n";
   for (const bool check : {false, true}) {
     const auto r = starter(dir, deck, absurd, check);
     INFO(r.err);
     CHECK(r.exit_code == 0);
-    CHECK(r.err.find("CUBE_0001.rad:1:1: warning: RX513: [/RUN] the end time 1e+30 s needs about 5.75e+35 "
-                     "cycles of the initial step 1.74e-06 s (set by brick 1), more than 1e9") !=
+    CHECK(r.err.find("CUBE_0001.rad:1:1: warning: RX513: [/RUN] the end time 1e+30 s needs about 6.04e+35 "
+                     "cycles of the initial step 1.66e-06 s (set by brick 1), more than 1e9") !=
           std::string::npos);
     const auto ok = starter(dir, deck, sane, check);
     CHECK(ok.err.find("RX513") == std::string::npos);
@@ -227,8 +235,8 @@ TEST_CASE("a run whose end time is absurd warns RX513 at /RUN in the starter and
 }
 
 TEST_CASE("nodal mass scaling counts cycles at its Tmin", "[plausibility]") {
-  // Steel cube of 10 mm: 0.9 x 1.93e-6 s = 1.74e-6 s a cycle; 1e4 s takes 5.75e9 cycles, past 1e9, but
-  // /DT/NODA/CST holding the step at 1e-4 s takes 1e8.
+  // Steel cube of 10 mm: 0.9 x 0.951 x 1.93e-6 s = 1.66e-6 s a cycle; 1e4 s takes 6.04e9 cycles, past 1e9,
+  // but /DT/NODA/CST holding the step at 1e-4 s takes 1e8.
   const auto m = radx::test::model_of_deck(cube_deck(10.0, 7.85e-9, 210000.0) + "/END\n");
   const auto step = radx::model::estimate_stable_step(m);
   radx::EngineDeck engine;
@@ -237,7 +245,7 @@ TEST_CASE("nodal mass scaling counts cycles at its Tmin", "[plausibility]") {
   radx::Diagnostics plain;
   radx::check_cycle_count(engine, rc, m, step, plain);
   REQUIRE(plain.items().size() == 1);
-  CHECK(plain.items()[0].message.find("needs about 5.75e+09 cycles") != std::string::npos);
+  CHECK(plain.items()[0].message.find("needs about 6.04e+09 cycles") != std::string::npos);
   rc.nodal.given = true;
   rc.nodal.action = radx::model::DtAction::AddMass;
   rc.nodal.t_min = 1e-4;
@@ -322,4 +330,97 @@ TEST_CASE("the engine warns once when the energy error passes 10 % and runs to i
   CHECK(count(summary, "past 10 %: the run ") == 1);
   CHECK(count(summary, "past 50 %") == 0);
   CHECK(listing.find("NORMAL TERMINATION") != std::string::npos);
+}
+
+namespace {
+
+// The spring oscillator sample deck (a TYPE4 spring of mass 1e-6 Mg, K = 1000 N/mm, C = 1 N s/mm between a
+// clamped node and a heavy one): a model with no element but the spring.
+std::string spring_deck() {
+  std::ifstream in(std::string(RADX_SOURCE_DIR) + "/decks/spring_oscillator/SPRING_OSC_0000.rad");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("the step estimate counts springs: a spring-only run of more than 1e9 cycles warns RX513",
+          "[plausibility]") {
+  const auto m = radx::test::model_of_deck(spring_deck());
+  const auto step = radx::model::estimate_stable_step(m);
+  // r1len3.F: dt = min(m / (sqrt(c^2 + m k) + c), m / (2 c)) with m = 1e-6, k = 1000, c = 1.
+  const double mass = 1e-6, k = 1000.0, c = 1.0;
+  const double dt = std::min(mass / (std::sqrt(c * c + mass * k) + c), 0.5 * mass / c);
+  CHECK(step.dt == Approx(dt).epsilon(1e-12));
+  CHECK(step.type == radx::model::ElementType::Spring2);
+  CHECK(step.element_id == 1);
+  // 1000 s at 0.9 dt: 2.22e9 cycles, past 1e9; the sample's own 0.02 s is 4.4e4.
+  radx::EngineDeck engine;
+  radx::model::RunControls rc;
+  rc.t_stop = 1000.0;
+  radx::Diagnostics long_run;
+  radx::check_cycle_count(engine, rc, m, step, long_run);
+  REQUIRE(long_run.items().size() == 1);
+  INFO(long_run.items()[0].message);
+  CHECK(long_run.items()[0].message.find("needs about 2.22e+09 cycles of the initial step 4.5e-07 s (set by "
+                                         "spring 1)") != std::string::npos);
+  rc.t_stop = 0.02;
+  radx::Diagnostics sample;
+  radx::check_cycle_count(engine, rc, m, step, sample);
+  CHECK(sample.items().empty());
+}
+
+TEST_CASE("a spring's property step: TYPE4 per unit length, TYPE8 and TYPE13 by family", "[plausibility]") {
+  radx::model::SpringProperty p;
+  p.type = 4;
+  p.mass = 2.0;
+  p.x.stiffness = 8.0;
+  // Undamped: sqrt(m / k) = 0.5.
+  CHECK(radx::model::spring_property_step(p, 3.0) == Approx(0.5).epsilon(1e-15));
+  // Ileng 1: m = M l0, k = K / l0: sqrt(M l0^2 / K) = 1.5 at l0 = 3.
+  p.ileng = 1;
+  CHECK(radx::model::spring_property_step(p, 3.0) == Approx(1.5).epsilon(1e-15));
+  // TYPE8: the smaller of sqrt(M / k_t) and sqrt(I / k_r).
+  radx::model::SpringProperty g;
+  g.type = 8;
+  g.mass = 2.0;
+  g.inertia = 1.0;
+  g.y.stiffness = 8.0;
+  g.rz.stiffness = 100.0;
+  CHECK(radx::model::spring_property_step(g, 3.0) == Approx(0.1).epsilon(1e-15));
+  // TYPE13: the shear laws add k l0^2 to the rotations: sqrt(1 / (100 + 8 x 9)).
+  g.type = 13;
+  CHECK(radx::model::spring_property_step(g, 3.0) == Approx(1.0 / std::sqrt(172.0)).epsilon(1e-15));
+  // Bulk viscosity: qb = 0 leaves the step, qb = 0.75 halves it (sqrt(1.5625) - 0.75 = 0.5).
+  CHECK(radx::model::bulk_viscosity_step_factor(0.0) == 1.0);
+  CHECK(radx::model::bulk_viscosity_step_factor(0.75) == Approx(0.5).epsilon(1e-15));
+}
+
+TEST_CASE(
+    "a contact law whose stiffness would vote a step below 1/100 of the elements' warns RX513 at the "
+    "interface",
+    "[plausibility]") {
+  // ctclaw_drop's cube on the bilinear law Kc = 5.625e9 Pa/m: a pair Kc A_s = 1.4e7 N/m on a lower-face node
+  // of 0.5625 kg votes sqrt(2 m / k) = 2.8e-4 s, above the bricks' step. Made 1e12 times steeper (a legal
+  // law), it votes 2.83e-10 s, 1/3e4 of the bricks' 8.5e-6 s: said before the run.
+  std::ifstream in(std::string(RADX_SOURCE_DIR) + "/decks/verification/ctclaw_drop/CTCLAW_DROP_N1_0000.rad");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  radx::test::TempDir dir;
+  const auto ordinary = starter(dir, deck);
+  INFO(ordinary.err);
+  CHECK(ordinary.err.find("RX513") == std::string::npos);
+  for (auto at = deck.find("n1{Kc5.625e9}"); at != std::string::npos; at = deck.find("n1{Kc5.625e9}"))
+    deck.replace(at, 13, "n1{Kc5.625e21}");
+  const auto steep = starter(dir, deck);
+  INFO(steep.err);
+  const double dt = std::sqrt(2 * 0.5625 / (5.625e21 * 0.0025));
+  char expected[160];
+  std::snprintf(expected, sizeof expected,
+                "once in contact a pair of this interface votes a step of about %.3g s", dt);
+  CHECK(steep.err.find(std::string("warning: RX513: [/INTER/TYPE7 id 1 \"Cube lower face on the plate\"] ") +
+                       expected) != std::string::npos);
+  CHECK(steep.err.find("Kc A_s = 1.41e+19 on secondary node 101 of mass 0.562") != std::string::npos);
 }

@@ -201,6 +201,47 @@ TEST_CASE("the /DT minimum stops the run with a message, the step grows by at mo
   CHECK(growth_ok);
 }
 
+TEST_CASE("/DT/BRICK/STOP and /DT/SPRING/STOP stop the run when an element's scaled step falls below Tmin",
+          "[engine]") {
+  // The cube's brick: 0.9 x 10 mm / c_eff, about 1.7e-6 s. A Tmin above it stops the run at once, naming the
+  // brick; one below it lets the run end normally.
+  auto m = cube(10.0);
+  radx::model::RunControls rc;
+  rc.t_stop = 2e-5;
+  rc.brick.given = true;
+  rc.brick.action = radx::model::DtAction::Stop;
+  rc.brick.t_min = 1e-5;
+  radx::solver::ExplicitEngine stopped(m, rc, radx::solver::EngineOptions{1, 1});
+  const auto res = stopped.run({});
+  CHECK(res.status == radx::solver::RunStatus::Error);
+  CHECK(res.cycles == 0);
+  CHECK(res.message.find("brick 1 has the step ") != std::string::npos);
+  CHECK(res.message.find("below the /DT/BRICK/STOP minimum 1e-05") != std::string::npos);
+  rc.brick.t_min = 1e-7;
+  radx::solver::ExplicitEngine runs(m, rc, radx::solver::EngineOptions{1, 1});
+  CHECK(runs.run({}).status == radx::solver::RunStatus::Normal);
+
+  // The spring oscillator: dt = min(m / (sqrt(c^2 + m k) + c), m / (2 c)) = 4.9988e-7 s (m 1e-6, k 1000, c
+  // 1), 4.4989e-7 s scaled by 0.9: a Tmin of 4.5e-7 s stops it, one of 4.49e-7 s does not.
+  std::ifstream in(std::string(RADX_SOURCE_DIR) + "/decks/spring_oscillator/SPRING_OSC_0000.rad");
+  std::stringstream text;
+  text << in.rdbuf();
+  const auto springs = radx::test::model_of_deck(text.str());
+  radx::model::RunControls sc;
+  sc.t_stop = 1e-5;
+  sc.spring.given = true;
+  sc.spring.action = radx::model::DtAction::Stop;
+  sc.spring.t_min = 4.5e-7;
+  radx::solver::ExplicitEngine spring_stop(springs, sc, radx::solver::EngineOptions{1, 1});
+  const auto sres = spring_stop.run({});
+  CHECK(sres.status == radx::solver::RunStatus::Error);
+  CHECK(sres.message.find("spring 1 has the step 4.499e-07, below the /DT/SPRING/STOP minimum 4.5e-07") !=
+        std::string::npos);
+  sc.spring.t_min = 4.49e-7;
+  radx::solver::ExplicitEngine spring_runs(springs, sc, radx::solver::EngineOptions{1, 1});
+  CHECK(spring_runs.run({}).status == radx::solver::RunStatus::Normal);
+}
+
 TEST_CASE("a free cube with an initial velocity keeps its momentum and energy", "[engine]") {
   auto m = cube(10.0, -1000.0);
   radx::model::RunControls rc;
