@@ -375,7 +375,8 @@ std::string stop_criterion(const model::RunControls& controls, const solver::Cyc
 // /RBODY/ON and /RBODY/OFF name rigid bodies of the model. Every body is active at the start of a run (one
 // with a sensor until the sensor releases it), so ON keeps it and OFF leaves it out of this run; an id the
 // model lacks switches nothing (a warning, as Radioss goes on too). And the cycle count the run would need:
-// the starter warns too, but only when it found this engine deck beside its own.
+// the starter warns too, but only when it found this engine deck beside its own; and the animation states
+// it would write.
 Diagnostics check_deck_against_model(const EngineDeck& deck, model::RunControls& controls,
                                      const model::Model& model, const model::StepEstimate& step) {
   std::vector<std::int64_t> body_ids;
@@ -383,6 +384,7 @@ Diagnostics check_deck_against_model(const EngineDeck& deck, model::RunControls&
   Diagnostics model_diags;
   check_rigid_body_switches(deck, body_ids, controls, model_diags);
   check_cycle_count(deck, controls, model, step, model_diags);
+  check_output_count(deck, controls, model, step, model_diags);
   model_diags.sort();
   return model_diags;
 }

@@ -41,10 +41,9 @@ namespace radx {
 
 namespace {
 
-constexpr double kOff = 1e30;            // /STOP values and /TFILE: never
-constexpr double kAnimNever = 1e20;      // /ANIM/DT Tstop 0
-constexpr double kManyAnimStates = 1e5;  // more /ANIM/DT states than any study reads: a unit slip
-constexpr double kDefaultScale = 0.9;    // Tscale 0
+constexpr double kOff = 1e30;          // /STOP values and /TFILE: never
+constexpr double kAnimNever = 1e20;    // /ANIM/DT Tstop 0
+constexpr double kDefaultScale = 0.9;  // Tscale 0
 
 std::string num(double v) {
   char buf[32];
@@ -315,28 +314,21 @@ void Builder::anim_dt(model::RunControls& rc) {
                 "): only the first and last states are written");
 }
 
-// An interval that asks for more states than any study reads is kept, with a warning that says how many;
-// one below the time resolution at the end time is refused: no schedule can step by less
-// (solver/model/output_schedule.hpp), so it would write a full state every cycle, a disk filled by a typo.
-// (A time-history interval that small is raised to every cycle instead, which dt_his = 0 asks for anyway.)
+// An interval below the time resolution at the last state time cannot advance the time there: it is raised
+// to that resolution (solver/model/output_schedule.hpp would fall back to the next double anyway), which
+// makes the schedule a state every cycle, and said with the count the deck asks for. How many states the run
+// would write is known only with the model's step: check_output_count says it when it is many.
 void Builder::check_anim_count(const EngineRecord& r, model::RunControls& rc) {
   const double last = std::min(rc.anim_stop, rc.t_stop);
   if (!(rc.t_stop > 0) || !(last > rc.anim_start)) return;
-  const double states = (last - rc.anim_start) / rc.anim_dt;
   const double resolution = model::time_resolution(last);
-  if (rc.anim_dt < resolution) {
-    error(r, Diag::ValueOutOfRange,
+  if (rc.anim_dt >= resolution) return;
+  warning(r, Diag::ValueOutOfRange,
           "dT = " + num(rc.anim_dt) + " is below the time resolution at the last state time " + num(last) +
-              " (" + num(resolution) + "): the deck asks for " + num(states) +
-              " states, and no schedule can step by less than the resolution, so it would write a full "
-              "state every cycle; give dT >= " +
-              num(resolution) + " (a state every cycle is never what a study reads: check the unit)");
-  } else if (states > kManyAnimStates) {
-    warning(r, Diag::ValueOutOfRange,
-            "dT = " + num(rc.anim_dt) + " asks for " + num(states) +
-                " animation states (each a full copy of the /ANIM fields; at most one per cycle is written); "
-                "check the interval's unit");
-  }
+              " (" + num(resolution) + "): the deck asks for " + num((last - rc.anim_start) / rc.anim_dt) +
+              " states, and no schedule can step by less; dT is raised to " + num(resolution) +
+              ", a state every cycle (check the unit)");
+  rc.anim_dt = resolution;
 }
 
 void Builder::anim_names(model::RunControls& rc) {

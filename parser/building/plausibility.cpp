@@ -184,4 +184,25 @@ void check_cycle_count(const EngineDeck& engine, const model::RunControls& contr
                     m.units.time_name + ")");
 }
 
+void check_output_count(const EngineDeck& engine, const model::RunControls& controls, const model::Model& m,
+                        const model::StepEstimate& step, Diagnostics& diags) {
+  const auto anim = engine.of("/ANIM/DT");
+  if (anim.empty() || !(controls.anim_dt > 0)) return;
+  const double last = std::min(controls.anim_stop, controls.t_stop);
+  if (!(last > controls.anim_start)) return;
+  const double asked = (last - controls.anim_start) / controls.anim_dt;
+  // At most one state a cycle is written, whatever the interval.
+  const double cycles = estimate_run_cycles(controls, step).cycles;
+  const double written = cycles > 0 ? std::min(asked, cycles) : asked;
+  if (written <= kManyAnimStates) return;
+  diags.warning(Diag::ValueOutOfRange, engine.where(anim.front()->pos, 1), About{"/ANIM/DT"},
+                "dT = " + num(controls.anim_dt) + " " + m.units.time_name + " writes about " + num(written) +
+                    " animation states (" +
+                    (written < asked ? "one every cycle of the estimated " + num(cycles)
+                                     : "from " + num(controls.anim_start) + " to " + num(last)) +
+                    "), each a full copy of the /ANIM fields: more than any study reads; check the interval "
+                    "and its unit (" +
+                    m.units.time_name + ")");
+}
+
 }  // namespace radx

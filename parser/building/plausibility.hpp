@@ -40,4 +40,10 @@ struct RunCycles {
 void check_cycle_count(const EngineDeck& engine, const model::RunControls& controls, const model::Model& m,
                        const model::StepEstimate& step, Diagnostics& diags);
 
+// More /ANIM/DT states than any study reads: the warning states how many the run would write, at most one a
+// cycle of the estimated step.
+inline constexpr double kManyAnimStates = 1e5;
+void check_output_count(const EngineDeck& engine, const model::RunControls& controls, const model::Model& m,
+                        const model::StepEstimate& step, Diagnostics& diags);
+
 }  // namespace radx

@@ -14,6 +14,7 @@
 
 #include "apps/starter_pipeline.hpp"
 #include "io/listing/engine_listing.hpp"
+#include "parser/building/build_run_controls.hpp"
 #include "parser/building/plausibility.hpp"
 #include "parser/reading/diagnostics.hpp"
 #include "solver/model/geometry.hpp"
@@ -252,6 +253,46 @@ TEST_CASE("nodal mass scaling counts cycles at its Tmin", "[plausibility]") {
   radx::Diagnostics scaled;
   radx::check_cycle_count(engine, rc, m, step, scaled);
   CHECK(scaled.items().empty());
+}
+
+TEST_CASE("an /ANIM/DT that writes more than 1e5 states is said with the count, at most one a cycle",
+          "[plausibility]") {
+  // Steel cube of 10 mm: a cycle of 0.9 x the estimated step (0.9 x 0.951 x 1.93e-6 s).
+  const auto m = radx::test::model_of_deck(cube_deck(10.0, 7.85e-9, 210000.0) + "/END\n");
+  const auto step = radx::model::estimate_stable_step(m);
+  radx::test::TempDir dir;
+  struct Written {
+    std::size_t count;
+    double states;
+    std::string message;
+  };
+  auto check = [&](const std::string& run, const std::string& anim) {
+    radx::EngineDeck deck;
+    radx::Diagnostics read;
+    auto rc = radx::read_run_controls(
+        dir.write("CUBE_0001.rad", "/RUN/CUBE/1\n" + run + "\n/ANIM/DT\n" + anim + "\n/END\n"), read, &deck);
+    REQUIRE_FALSE(read.has_errors());
+    radx::Diagnostics d;
+    radx::check_output_count(deck, rc, m, step, d);
+    Written w{d.items().size(), 0.0, d.items().empty() ? "" : d.items()[0].message};
+    if (const auto at = w.message.find("writes about "); at != std::string::npos)
+      w.states = std::atof(w.message.c_str() + at + 13);
+    return std::make_pair(w, radx::estimate_run_cycles(rc, step).cycles);
+  };
+  // 1 s at dT = 1e-9 s asks for 1e9 states; one a cycle is written: the run's cycles (printed to 3 digits).
+  const auto [every_cycle, cycles] = check("1", "0 1e-9");
+  REQUIRE(every_cycle.count == 1);
+  INFO(every_cycle.message);
+  CHECK(every_cycle.message.find("one every cycle") != std::string::npos);
+  CHECK(every_cycle.states == Approx(cycles).epsilon(5e-3));
+  CHECK(cycles > radx::kManyAnimStates);
+  // 1e4 s at dT = 1e-2 s: 1e6 states, fewer than the cycles, each written.
+  const auto [long_run, long_cycles] = check("1e4", "0 1e-2");
+  REQUIRE(long_run.count == 1);
+  CHECK(long_run.states == Approx(1e6).epsilon(5e-3));
+  CHECK(long_cycles > 1e6);
+  // 1 s at dT = 1e-4 s: 1e4 states, as a study reads them.
+  CHECK(check("1", "0 1e-4").first.count == 0);
 }
 
 TEST_CASE("energy error warnings: at 10 % and at 50 %, each once, in either sign", "[plausibility]") {
