@@ -185,9 +185,11 @@ std::string starter_hint(const std::string& model_path, const std::string& root)
 
 // A problem of the model file as a diagnostic of that file: the codes are the same numbers (9xx).
 Diag model_file_diag(io::ModelFileCode code) {
-  static_assert(static_cast<int>(Diag::ModelFileBadReference) == static_cast<int>(io::ModelFileCode::BadReference));
+  static_assert(static_cast<int>(Diag::ModelFileBadReference) ==
+                static_cast<int>(io::ModelFileCode::BadReference));
   static_assert(static_cast<int>(Diag::ModelFileBadValue) == static_cast<int>(io::ModelFileCode::BadValue));
-  static_assert(static_cast<int>(Diag::ModelFileOtherFormat) == static_cast<int>(io::ModelFileCode::OtherFormat));
+  static_assert(static_cast<int>(Diag::ModelFileOtherFormat) ==
+                static_cast<int>(io::ModelFileCode::OtherFormat));
   static_assert(static_cast<int>(Diag::ModelFileChanged) == static_cast<int>(io::ModelFileCode::Changed));
   static_assert(static_cast<int>(Diag::ModelFileOtherRun) == static_cast<int>(io::ModelFileCode::OtherRun));
   return static_cast<Diag>(static_cast<std::uint16_t>(code));
@@ -204,17 +206,20 @@ void check_model_of_this_run(const io::ModelFileFingerprint& f, const std::strin
     });
   };
   if (f.run_name.empty() || same(f.run_name, controls.run_name)) return;
-  const std::string made_by = f.deck_files.empty() ? std::string() : " (made from " + f.deck_files.front() + ")";
+  const std::string made_by =
+      f.deck_files.empty() ? std::string() : " (made from " + f.deck_files.front() + ")";
   diags.error(Diag::ModelFileOtherRun, Where{model_path}, About{},
               "the model file is the model of run " + f.run_name + made_by + ", but the engine deck " +
-                  engine_deck + " runs /RUN/" + controls.run_name + ": give the model of " + controls.run_name +
-                  " (run radx-starter " + controls.run_name + "_0000.rad, or give its model file with --model)");
+                  engine_deck + " runs /RUN/" + controls.run_name + ": give the model of " +
+                  controls.run_name + " (run radx-starter " + controls.run_name +
+                  "_0000.rad, or give its model file with --model)");
 }
 
 // The model file read, checked entry by entry, and found to be the model of this run. False, with every
 // problem printed against the model file, when the engine must not run it.
-bool read_checked_model(const std::string& model_path, const std::string& engine_deck, const std::string& root,
-                        const model::RunControls& controls, model::Model& model, std::ostream& err) {
+bool read_checked_model(const std::string& model_path, const std::string& engine_deck,
+                        const std::string& root, const model::RunControls& controls, model::Model& model,
+                        std::ostream& err) {
   const io::ModelFileReading r = io::read_model_file(model_path, model);
   if (!r.error.empty()) {
     err << model_path << ": error: cannot read the model file: " << r.error << '\n';
@@ -232,7 +237,8 @@ bool read_checked_model(const std::string& model_path, const std::string& engine
     err << "radx-engine: the first " << r.problems.items.size() << " problems of the model file are listed\n";
   err << "radx-engine: " << count << " error(s) in the model file " << model_path
       << "; nothing was run. The engine runs only a model file its starter wrote, unchanged, for this run: "
-         "run the starter on the deck again (radx-starter " << root << "_0000.rad)\n";
+         "run the starter on the deck again (radx-starter "
+      << root << "_0000.rad)\n";
   return false;
 }
 

@@ -176,8 +176,8 @@ void write_starter_outputs(const StarterOptions& opt, const Deck& deck, const mo
   const std::string model_path = root + ".hdf";
   std::string error;
   if (!diags.has_errors()) {
-    if (!io::write_model_file(model, model_path, io::model_file_origin(deck.files, std::string(build_commit())),
-                              error)) {
+    if (!io::write_model_file(model, model_path,
+                              io::model_file_origin(deck.files, std::string(build_commit())), error)) {
       err << opt.deck << ": error: cannot write the model file: " << error << '\n';
       ++res.errors;
     } else {

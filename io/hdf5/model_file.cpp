@@ -10,8 +10,8 @@
 // - Schema<S> (io/hdf5/model_schema.hpp): one table per Model struct of (member name, member pointer). It
 //   drives both directions: a collection (vector of records) is written as a "table" group: attribute
 //   count, one dataset per member (a column), variable-length members as CSR (values + <name>_offsets),
-//   nested structs flattened as <outer>_<inner>. Interfaces and Units are written one group per record: scalars as
-//   attributes, vectors as datasets.
+//   nested structs flattened as <outer>_<inner>. Interfaces and Units are written one group per record:
+//   scalars as attributes, vectors as datasets.
 // - Big arrays (points, connectivity, element blocks) are written with one H5Dwrite each, contiguous
 //   layout, no fill, no conversion (memory and file types are both little-endian).
 #include "io/hdf5/model_file.hpp"
@@ -47,7 +47,7 @@ namespace {
 namespace fs = std::filesystem;
 using model::Model;
 // The generic HDF5 helpers are this file's vocabulary: used unqualified.
-using namespace radx::io::h5;  // NOLINT(google-build-using-namespace)
+using namespace radx::io::h5;      // NOLINT(google-build-using-namespace)
 using namespace radx::io::schema;  // NOLINT(google-build-using-namespace)
 
 // ---------------------------------------------------------------------------------------------------
@@ -497,8 +497,8 @@ void check_content_hash(hid_t file, ModelFileReading& r) {
   r.problems.add(ModelFileCode::Changed, std::string("/@") + kContentHashAttribute,
                  f.content_hash.empty()
                      ? std::string("the file has no content hash: it was not written by a radx starter")
-                     : "the file was changed after the starter wrote it: its content hash is " + f.computed_hash +
-                           ", the starter stored " + f.content_hash +
+                     : "the file was changed after the starter wrote it: its content hash is " +
+                           f.computed_hash + ", the starter stored " + f.content_hash +
                            "; run the starter on the deck again rather than edit the model file");
 }
 
@@ -543,7 +543,8 @@ ModelFileOrigin model_file_origin(const std::vector<std::string>& deck_files, st
   return o;
 }
 
-bool write_model_file(const Model& m, const std::string& path, const ModelFileOrigin& origin, std::string& error) {
+bool write_model_file(const Model& m, const std::string& path, const ModelFileOrigin& origin,
+                      std::string& error) {
   const std::string part = path + ".part";
   try {
     const QuietHdf5 quiet;
@@ -577,7 +578,8 @@ bool read_model_file(const std::string& path, Model& m, std::string& error) {
   const ModelFileReading r = read_model_file(path, m);
   if (r.ok()) return true;
   error = "cannot read model file " + path + ": " + (r.error.empty() ? "" : r.error);
-  for (const auto& p : r.problems.items) error += (error.back() == ' ' ? "" : "; ") + p.where + ": " + p.message;
+  for (const auto& p : r.problems.items)
+    error += (error.back() == ' ' ? "" : "; ") + p.where + ": " + p.message;
   if (r.problems.count > r.problems.items.size())
     error += "; and " + std::to_string(r.problems.count - r.problems.items.size()) + " more";
   return false;

@@ -77,6 +77,38 @@ struct Range {
   std::string_view items;  // "nodes"
 };
 
+// What one record of a table is called in messages: "material" for /radx/materials.
+std::string_view record_kind(std::string_view table) {
+  static constexpr std::pair<std::string_view, std::string_view> kKinds[] = {
+      {"materials", "material"},
+      {"properties", "property"},
+      {"parts", "part"},
+      {"subsets", "subset"},
+      {"node_groups", "node group"},
+      {"boxes", "box"},
+      {"surfaces", "surface"},
+      {"functions", "function"},
+      {"bcs", "/BCS"},
+      {"imposed_velocities", "/IMPVEL"},
+      {"imposed_final_geometries", "/IMPDISP/FGEO"},
+      {"initial_velocities", "/INIVEL"},
+      {"concentrated_loads", "/CLOAD"},
+      {"pressure_loads", "/PLOAD"},
+      {"gravities", "/GRAV"},
+      {"rigid_walls", "/RWALL"},
+      {"rigid_bodies", "/RBODY"},
+      {"added_masses", "/ADMAS"},
+      {"skews", "skew"},
+      {"sections", "/SECT"},
+      {"accelerometers", "/ACCEL"},
+      {"sensors", "/SENSOR"},
+      {"time_histories", "/TH"},
+      {"tied_interfaces", "/INTER/TYPE2"}};
+  for (const auto& [t, kind] : kKinds)
+    if (t == table) return kind;
+  return table;
+}
+
 // Sorted user ids of a collection, for the references by user id (skew, sensor, frame).
 template <class T>
 std::vector<std::int64_t> sorted_ids(const std::vector<T>& recs) {
@@ -132,10 +164,11 @@ class Checker {
              std::int64_t value, const Range& range, bool optional) {
     if (value >= 0 && static_cast<std::size_t>(value) < range.size) return true;
     if (optional && value == kNone) return true;
-    bad(entry(where_ds, row, col),
-        o.text() + ": " + std::string(what) + " " + std::to_string(value) + " is out of range; expected 0 to " +
-            std::to_string(static_cast<std::int64_t>(range.size) - 1) + " (" + std::to_string(range.size) + " " +
-            std::string(range.items) + ")" + (optional ? ", or -1 for none" : ""));
+    bad(entry(where_ds, row, col), o.text() + ": " + std::string(what) + " " + std::to_string(value) +
+                                       " is out of range; expected 0 to " +
+                                       std::to_string(static_cast<std::int64_t>(range.size) - 1) + " (" +
+                                       std::to_string(range.size) + " " + std::string(range.items) + ")" +
+                                       (optional ? ", or -1 for none" : ""));
     return false;
   }
 
@@ -171,13 +204,14 @@ class Checker {
   void code(const std::string& where, const Owner& o, std::string_view what, int value,
             std::initializer_list<int> valid, std::string_view meaning) {
     if (std::find(valid.begin(), valid.end(), value) != valid.end()) return;
-    bad(where, o.text() + ": " + std::string(what) + " " + std::to_string(value) + " is not a valid code; expected " +
-                   std::string(meaning));
+    bad(where, o.text() + ": " + std::string(what) + " " + std::to_string(value) +
+                   " is not a valid code; expected " + std::string(meaning));
   }
 
   void not_negative(const std::string& where, const Owner& o, std::string_view what, double v) {
     if (v >= 0) return;  // NaN is reported by check_reals
-    bad_value(where, o.text() + ": " + std::string(what) + " " + real_text(v) + " is negative; expected >= 0");
+    bad_value(where,
+              o.text() + ": " + std::string(what) + " " + real_text(v) + " is negative; expected >= 0");
   }
 
   // Ids of a collection: positive (or 0 where `zero_allowed`: objects the starter makes without an id),
@@ -190,15 +224,16 @@ class Checker {
       if (ids[i] > 0) {
         sorted.emplace_back(ids[i], i);
       } else if (ids[i] < 0 || !zero_allowed) {
-        bad(entry(ds, i), std::string(kind) + " id " + std::to_string(ids[i]) + " is not a valid id; expected > 0");
+        bad(entry(ds, i),
+            std::string(kind) + " id " + std::to_string(ids[i]) + " is not a valid id; expected > 0");
       }
     }
     std::sort(sorted.begin(), sorted.end());
     for (std::size_t k = 1; k < sorted.size(); ++k) {
       if (sorted[k].first != sorted[k - 1].first) continue;
       bad(entry(ds, sorted[k].second), std::string(kind) + " id " + std::to_string(sorted[k].first) +
-                                           " repeats the id of entry " + std::to_string(sorted[k - 1].second) +
-                                           "; expected each id once");
+                                           " repeats the id of entry " +
+                                           std::to_string(sorted[k - 1].second) + "; expected each id once");
     }
   }
   template <class T>
@@ -219,7 +254,8 @@ class Checker {
   void check_block_parts(const std::string& ds, const model::ElementBlock& b);
   void check_reals();
   template <class T, class Get>
-  void finite_column(const std::string& ds, std::string_view kind, const std::vector<T>& recs, const Get& get);
+  void finite_column(const std::string& ds, std::string_view kind, const std::vector<T>& recs,
+                     const Get& get);
   template <class R>
   void finite_record(const std::string& path, const Owner& o, const R& r, const std::string& prefix);
   void check_materials();
@@ -286,11 +322,13 @@ void Checker::check_node_masses() {
     }
   }
   if (nn > 0 && !(sum > 0)) {
-    bad_value("/radx/node_mass", "every node has mass 0: the model has no mass to move (the starter gives each "
-                                 "node the mass of its elements)");
+    bad_value("/radx/node_mass",
+              "every node has mass 0: the model has no mass to move (the starter gives each "
+              "node the mass of its elements)");
   }
   if (!std::isfinite(m_.total_mass) || m_.total_mass < 0) {
-    bad_value("/radx@total_mass", "total mass " + real_text(m_.total_mass) + "; expected a finite number >= 0");
+    bad_value("/radx@total_mass",
+              "total mass " + real_text(m_.total_mass) + "; expected a finite number >= 0");
   }
 }
 
@@ -317,8 +355,9 @@ void Checker::check_block(const std::string& name, const model::ElementBlock& b)
   const auto column_size = [&](const char* column, std::size_t have, std::size_t want, bool may_be_empty) {
     if (have == want || (may_be_empty && have == 0)) return;
     sizes_ok = false;
-    bad(ds + "/" + column, "has " + std::to_string(have) + " values; expected " + std::to_string(want) + " (" +
-                               std::to_string(npe) + " per " + std::string(kind) + " of " + ds + "/id)");
+    bad(ds + "/" + column, "has " + std::to_string(have) + " values; expected " + std::to_string(want) +
+                               " (" + std::to_string(npe) + " per " + std::string(kind) + " of " + ds +
+                               "/id)");
   };
   column_size("part", b.part.size(), n, false);
   column_size("conn", b.conn.size(), n * npe, false);
@@ -339,7 +378,8 @@ void Checker::check_block(const std::string& name, const model::ElementBlock& b)
   for (std::size_t e = 0; e < b.thickness.size(); ++e) {
     if (!std::isfinite(b.thickness[e]) || b.thickness[e] < 0)
       bad_value(entry(ds + "/thickness", e), Owner{kind, b.id[e]}.text() + ": thickness " +
-                                                 real_text(b.thickness[e]) + "; expected a finite number >= 0");
+                                                 real_text(b.thickness[e]) +
+                                                 "; expected a finite number >= 0");
   }
   for (std::size_t e = 0; e < b.phi.size(); ++e) {
     if (!std::isfinite(b.phi[e]))
@@ -376,8 +416,8 @@ void Checker::check_block_parts(const std::string& ds, const model::ElementBlock
     bad(entry(ds + "/part", e), o.text() + ": its part " + std::to_string(part.id) + " has property " +
                                     std::to_string(prop.id) + " of kind " +
                                     std::to_string(static_cast<int>(prop.kind)) + "; a " +
-                                    std::string(model::element_type_name(b.type)) + " needs a property of kind " +
-                                    std::to_string(static_cast<int>(want)));
+                                    std::string(model::element_type_name(b.type)) +
+                                    " needs a property of kind " + std::to_string(static_cast<int>(want)));
   }
 }
 
@@ -394,7 +434,8 @@ void Checker::finite_column(const std::string& ds, std::string_view kind, const 
   };
   if constexpr (schema::Record<M>) {
     schema::for_each_field<M>([&](const char* sub, auto member) {
-      finite_column(ds + "_" + sub, kind, recs, [&](const T& r) -> const auto& { return get(r).*member; });
+      finite_column(
+          ds + "_" + sub, kind, recs, [&](const T& r) -> const auto& { return get(r).*member; });
     });
   } else if constexpr (std::is_same_v<M, double>) {
     for (std::size_t r = 0; r < recs.size(); ++r)
@@ -449,19 +490,21 @@ void Checker::check_reals() {
   for (const auto& [what, value] : {std::pair{"mass", m_.units.mass}, std::pair{"length", m_.units.length},
                                     std::pair{"time", m_.units.time}}) {
     if (std::isfinite(value) && value > 0) continue;
-    bad_value(std::string("/radx/units@") + what,
-              "the SI value of the work unit of " + std::string(what) + " is " + real_text(value) +
-                  "; expected a finite number > 0");
+    bad_value(std::string("/radx/units@") + what, "the SI value of the work unit of " + std::string(what) +
+                                                      " is " + real_text(value) +
+                                                      "; expected a finite number > 0");
   }
   schema::for_each_table(m_, [&](const char* table, const auto& recs) {
     using T = typename std::remove_cvref_t<decltype(recs)>::value_type;
     schema::for_each_field<T>([&](const char* col, auto member) {
-      finite_column("/radx/" + std::string(table) + "/" + col, table, recs,
-                    [&](const T& r) -> const auto& { return r.*member; });
+      finite_column(
+          "/radx/" + std::string(table) + "/" + col, record_kind(table),
+          recs, [&](const T& r) -> const auto& { return r.*member; });
     });
   });
   for (std::size_t i = 0; i < m_.interfaces.size(); ++i)
-    finite_record("/radx/interfaces/" + std::to_string(i), {"interface", m_.interfaces[i].id}, m_.interfaces[i], "");
+    finite_record("/radx/interfaces/" + std::to_string(i), {"interface", m_.interfaces[i].id},
+                  m_.interfaces[i], "");
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -475,9 +518,9 @@ void Checker::check_materials() {
     const Owner o{"material", mat.id};
     code(entry("/radx/materials/law", i), o, "law", static_cast<int>(mat.law), {0, 1, 2, 13, 27, 36, 42, 70},
          "0, 1, 2, 13, 27, 36, 42 or 70 (docs/model-file.md section 6)");
-    for (const auto& [column, v] : {std::pair{"rho", mat.rho}, std::pair{"rho_ref", mat.rho_ref},
-                                    std::pair{"young", mat.young}, std::pair{"shear", mat.shear},
-                                    std::pair{"bulk", mat.bulk}}) {
+    for (const auto& [column, v] :
+         {std::pair{"rho", mat.rho}, std::pair{"rho_ref", mat.rho_ref}, std::pair{"young", mat.young},
+          std::pair{"shear", mat.shear}, std::pair{"bulk", mat.bulk}}) {
       not_negative(entry(std::string("/radx/materials/") + column, i), o, column, v);
     }
     if (!(mat.poisson > -1 && mat.poisson < 0.5) && std::isfinite(mat.poisson)) {
@@ -490,7 +533,8 @@ void Checker::check_materials() {
 
 // The curves a material names (law 36, 70, /FAIL/TAB, /FAIL/BIQUAD): function indices, and the parallel
 // columns of each curve list of equal length.
-void Checker::check_material_curves(std::size_t i, const model::Material& mat, std::vector<std::size_t>& base) {
+void Checker::check_material_curves(std::size_t i, const model::Material& mat,
+                                    std::vector<std::size_t>& base) {
   const Owner o{"material", mat.id};
   const auto curves = [&](std::size_t slot, const std::string& column, const std::vector<std::int32_t>& fn,
                           std::initializer_list<std::size_t> parallel) {
@@ -501,12 +545,14 @@ void Checker::check_material_curves(std::size_t i, const model::Material& mat, s
     base[slot] += fn.size();
   };
   curves(0, "tab_function", mat.tab.function, {mat.tab.scale.size(), mat.tab.rate.size()});
-  curves(1, "fail_tab_function", mat.fail_tab.function, {mat.fail_tab.scale.size(), mat.fail_tab.rate.size()});
-  curves(2, "foam_load_function", mat.foam.load_function, {mat.foam.load_scale.size(), mat.foam.load_rate.size()});
+  curves(1, "fail_tab_function", mat.fail_tab.function,
+         {mat.fail_tab.scale.size(), mat.fail_tab.rate.size()});
+  curves(2, "foam_load_function", mat.foam.load_function,
+         {mat.foam.load_scale.size(), mat.foam.load_rate.size()});
   curves(3, "foam_unload_function", mat.foam.unload_function,
          {mat.foam.unload_scale.size(), mat.foam.unload_rate.size()});
-  same_size(entry("/radx/materials/ogden_mu", base[4]), o, "ogden_mu", mat.ogden.mu.size(), mat.ogden.alpha.size(),
-            "one per ogden_alpha");
+  same_size(entry("/radx/materials/ogden_mu", base[4]), o, "ogden_mu", mat.ogden.mu.size(),
+            mat.ogden.alpha.size(), "one per ogden_alpha");
   base[4] += mat.ogden.mu.size();
   index("/radx/materials/fail_tab_size_function", i, -1, o, "function index", mat.fail_tab.size_function,
         functions(), true);
@@ -531,7 +577,8 @@ void Checker::check_properties() {
     not_negative(entry("/radx/properties/beam_area", i), o, "beam area", p.beam.area);
     index("/radx/properties/spring_skew", i, -1, o, "skew index", p.spring.skew, skews, true);
     if (p.kind == model::PropertyKind::Spring) {
-      code(entry("/radx/properties/spring_type", i), o, "spring type", p.spring.type, {4, 8, 13}, "4, 8 or 13");
+      code(entry("/radx/properties/spring_type", i), o, "spring type", p.spring.type, {4, 8, 13},
+           "4, 8 or 13");
     }
     const char* dofs[6] = {"x", "y", "z", "rx", "ry", "rz"};
     for (int d = 0; d < 6; ++d) {
@@ -582,8 +629,8 @@ void Checker::check_node_groups_and_boxes() {
     for (std::size_t k = 1; k < g.nodes.size(); ++k) {
       if (g.nodes[k] > g.nodes[k - 1]) continue;
       bad(entry("/radx/node_groups/nodes", base + k),
-          o.text() + ": node index " + std::to_string(g.nodes[k]) + " after " + std::to_string(g.nodes[k - 1]) +
-              "; expected increasing node indices, each once");
+          o.text() + ": node index " + std::to_string(g.nodes[k]) + " after " +
+              std::to_string(g.nodes[k - 1]) + "; expected increasing node indices, each once");
     }
     base += g.nodes.size();
   }
@@ -604,12 +651,13 @@ void Checker::check_surfaces() {
   for (const auto& s : m_.surfaces) {
     const Owner o{"surface", s.id};
     const std::size_t n = s.segments.size();
-    same_size(entry("/radx/surfaces/owner_type", base), o, "owner_type", s.owner_type.size(), n, "one per segment");
+    same_size(entry("/radx/surfaces/owner_type", base), o, "owner_type", s.owner_type.size(), n,
+              "one per segment");
     same_size(entry("/radx/surfaces/owner", base), o, "owner", s.owner.size(), n, "one per segment");
     for (std::size_t k = 0; k < n; ++k) {
       for (int j = 0; j < 4; ++j)
-        index("/radx/surfaces/segments", base + k, j, o, "node index", s.segments[k][static_cast<std::size_t>(j)],
-              nodes(), false);
+        index("/radx/surfaces/segments", base + k, j, o, "node index",
+              s.segments[k][static_cast<std::size_t>(j)], nodes(), false);
       if (k >= s.owner_type.size() || k >= s.owner.size()) continue;
       const auto type = s.owner_type[k];
       const model::ElementBlock* block = type == SegmentOwner::Shell4   ? &m_.shells
@@ -618,8 +666,8 @@ void Checker::check_surfaces() {
                                          : type == SegmentOwner::Tetra4 ? &m_.tetras
                                                                         : nullptr;
       if (block == nullptr && type != SegmentOwner::None) {
-        code(entry("/radx/surfaces/owner_type", base + k), o, "owner type", static_cast<int>(type), {0, 1, 2, 3, 4},
-             "0 none, 1 shell, 2 3-node shell, 3 brick or 4 tetrahedron");
+        code(entry("/radx/surfaces/owner_type", base + k), o, "owner type", static_cast<int>(type),
+             {0, 1, 2, 3, 4}, "0 none, 1 shell, 2 3-node shell, 3 brick or 4 tetrahedron");
         continue;
       }
       const std::string items = block ? std::string(model::element_type_name(block->type)) + "s" : "elements";
@@ -667,17 +715,19 @@ void Checker::check_kinematic_conditions() {
     skew_id(entry("/radx/imposed_velocities/skew", i), o, "skew", c.skew);
     skew_id(entry("/radx/imposed_velocities/frame", i), o, "frame", c.frame);
     sensor_id(entry("/radx/imposed_velocities/sensor", i), o, "sensor", c.sensor);
-    if (c.ascale_x == 0) bad_value(entry("/radx/imposed_velocities/ascale_x", i), o.text() + ": Ascale_x 0; expected != 0");
+    if (c.ascale_x == 0)
+      bad_value(entry("/radx/imposed_velocities/ascale_x", i), o.text() + ": Ascale_x 0; expected != 0");
   }
   std::size_t base = 0;
   for (std::size_t i = 0; i < m_.imposed_final_geometries.size(); ++i) {
     const auto& c = m_.imposed_final_geometries[i];
     const Owner o{"/IMPDISP/FGEO", c.id};
-    index("/radx/imposed_final_geometries/function", i, -1, o, "function index", c.function, functions(), false);
+    index("/radx/imposed_final_geometries/function", i, -1, o, "function index", c.function, functions(),
+          false);
     sensor_id(entry("/radx/imposed_final_geometries/sensor", i), o, "sensor", c.sensor);
     indices("/radx/imposed_final_geometries/nodes", base, o, "node index", c.nodes, nodes());
-    same_size(entry("/radx/imposed_final_geometries/targets", base), o, "targets", c.targets.size(), c.nodes.size(),
-              "one per node");
+    same_size(entry("/radx/imposed_final_geometries/targets", base), o, "targets", c.targets.size(),
+              c.nodes.size(), "one per node");
     base += c.nodes.size();
   }
   for (std::size_t i = 0; i < m_.initial_velocities.size(); ++i) {
@@ -698,7 +748,8 @@ void Checker::check_loads() {
     code(entry("/radx/concentrated_loads/dir", i), o, "direction", c.dir, {0, 1, 2, 3, 4, 5}, "0 to 5");
     skew_id(entry("/radx/concentrated_loads/skew", i), o, "skew", c.skew);
     sensor_id(entry("/radx/concentrated_loads/sensor", i), o, "sensor", c.sensor);
-    if (c.ascale_x == 0) bad_value(entry("/radx/concentrated_loads/ascale_x", i), o.text() + ": Ascale_x 0; expected != 0");
+    if (c.ascale_x == 0)
+      bad_value(entry("/radx/concentrated_loads/ascale_x", i), o.text() + ": Ascale_x 0; expected != 0");
   }
   for (std::size_t i = 0; i < m_.pressure_loads.size(); ++i) {
     const auto& c = m_.pressure_loads[i];
@@ -706,7 +757,8 @@ void Checker::check_loads() {
     index("/radx/pressure_loads/surface", i, -1, o, "surface index", c.surface, surfaces(), false);
     index("/radx/pressure_loads/function", i, -1, o, "function index", c.function, functions(), false);
     sensor_id(entry("/radx/pressure_loads/sensor", i), o, "sensor", c.sensor);
-    if (c.ascale_x == 0) bad_value(entry("/radx/pressure_loads/ascale_x", i), o.text() + ": Ascale_x 0; expected != 0");
+    if (c.ascale_x == 0)
+      bad_value(entry("/radx/pressure_loads/ascale_x", i), o.text() + ": Ascale_x 0; expected != 0");
   }
   for (std::size_t i = 0; i < m_.gravities.size(); ++i) {
     const auto& c = m_.gravities[i];
@@ -716,7 +768,8 @@ void Checker::check_loads() {
     code(entry("/radx/gravities/dir", i), o, "direction", c.dir, {0, 1, 2}, "0, 1 or 2");
     skew_id(entry("/radx/gravities/skew", i), o, "skew", c.skew);
     sensor_id(entry("/radx/gravities/sensor", i), o, "sensor", c.sensor);
-    if (c.ascale_x == 0) bad_value(entry("/radx/gravities/ascale_x", i), o.text() + ": Ascale_x 0; expected != 0");
+    if (c.ascale_x == 0)
+      bad_value(entry("/radx/gravities/ascale_x", i), o.text() + ": Ascale_x 0; expected != 0");
   }
   for (std::size_t i = 0; i < m_.added_masses.size(); ++i) {
     const auto& c = m_.added_masses[i];
@@ -866,9 +919,11 @@ void Checker::check_interface(std::size_t i, const model::Interface& in) {
   const std::string g = "/radx/interfaces/" + std::to_string(i);
   const Owner o{"interface", in.id};
   index(g + "@secondary_group", 0, -1, o, "node group index", in.secondary_group, groups(), true);
-  const bool surface_ok = index(g + "@main_surface", 0, -1, o, "surface index", in.main_surface, surfaces(), true);
-  const std::size_t segments =
-      surface_ok && in.main_surface >= 0 ? m_.surfaces[static_cast<std::size_t>(in.main_surface)].segments.size() : 0;
+  const bool surface_ok =
+      index(g + "@main_surface", 0, -1, o, "surface index", in.main_surface, surfaces(), true);
+  const std::size_t segments = surface_ok && in.main_surface >= 0
+                                   ? m_.surfaces[static_cast<std::size_t>(in.main_surface)].segments.size()
+                                   : 0;
   const std::size_t secondary = in.secondary_nodes.size();
   indices(g + "/secondary_nodes", 0, o, "node index", in.secondary_nodes, nodes());
   for (std::size_t k = 1; k < secondary; ++k) {
@@ -893,7 +948,8 @@ void Checker::check_interface(std::size_t i, const model::Interface& in) {
             in.penetrating_nodes.size(), "one per penetrating node");
   index(g + "@law_curve", 0, -1, o, "function index", in.law.curve, functions(), true);
   code(g + "@law_normal", o, "normal law", static_cast<int>(in.law.normal), {0, 1, 2, 3, 4}, "0 to 4");
-  code(g + "@law_friction", o, "friction law", static_cast<int>(in.law.friction), {0, 1, 2, 3, 4, 5}, "0 to 5");
+  code(g + "@law_friction", o, "friction law", static_cast<int>(in.law.friction), {0, 1, 2, 3, 4, 5},
+       "0 to 5");
   same_size(g + "/law_power_k", o, "law_power_k", in.law.power_k.size(), in.law.power_m.size(),
             "one per law_power_m");
   sensor_id(g + "@sens_id", o, "sensor", in.sens_id);
@@ -905,13 +961,16 @@ void Checker::check_tied_interfaces() {
   for (std::size_t i = 0; i < m_.tied_interfaces.size(); ++i) {
     const auto& t = m_.tied_interfaces[i];
     const Owner o{"/INTER/TYPE2", t.id};
-    index("/radx/tied_interfaces/secondary_group", i, -1, o, "node group index", t.secondary_group, groups(), true);
+    index("/radx/tied_interfaces/secondary_group", i, -1, o, "node group index", t.secondary_group, groups(),
+          true);
     index("/radx/tied_interfaces/main_surface", i, -1, o, "surface index", t.main_surface, surfaces(), true);
     const std::size_t n = t.tie_node.size();
     indices("/radx/tied_interfaces/tie_node", base, o, "node index", t.tie_node, nodes());
-    for (const auto& [column, have] : {std::pair{"tie_segment", t.tie_segment.size()}, std::pair{"tie_r", t.tie_r.size()},
-                                       std::pair{"tie_s", t.tie_s.size()}, std::pair{"tie_offset", t.tie_offset.size()}})
-      same_size(entry(std::string("/radx/tied_interfaces/") + column, base), o, column, have, n, "one per tie_node");
+    for (const auto& [column, have] :
+         {std::pair{"tie_segment", t.tie_segment.size()}, std::pair{"tie_r", t.tie_r.size()},
+          std::pair{"tie_s", t.tie_s.size()}, std::pair{"tie_offset", t.tie_offset.size()}})
+      same_size(entry(std::string("/radx/tied_interfaces/") + column, base), o, column, have, n,
+                "one per tie_node");
     for (std::size_t k = 0; k < std::min(n, t.tie_segment.size()); ++k)
       for (int j = 0; j < 4; ++j)
         index("/radx/tied_interfaces/tie_segment", base + k, j, o, "node index",

@@ -31,7 +31,7 @@ enum class ModelFileCode : std::uint16_t {
 
 struct ModelFileProblem {
   ModelFileCode code = ModelFileCode::BadReference;
-  std::string where;    // dataset and entry: "/radx/node_groups/nodes[12]", "/radx/elements/shell4/conn[3, 1]"
+  std::string where;  // dataset and entry: "/radx/node_groups/nodes[12]", "/radx/elements/shell4/conn[3, 1]"
   std::string message;  // the record (with its user id), the value, what is accepted
 };
 
