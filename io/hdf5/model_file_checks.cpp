@@ -21,11 +21,9 @@
 #include <sstream>
 #include <string_view>
 #include <type_traits>
-#include <unordered_set>
 #include <utility>
 
 #include "io/hdf5/model_schema.hpp"
-#include "solver/model/formulations.hpp"
 
 namespace radx::io {
 
@@ -218,16 +216,21 @@ class Checker {
   // and each non-zero one once.
   void unique_ids(const std::string& ds, std::string_view kind, const std::vector<std::int64_t>& ids,
                   bool zero_allowed) {
-    std::vector<std::pair<std::int64_t, std::size_t>> sorted;
-    sorted.reserve(ids.size());
+    bool all_positive = true;
     for (std::size_t i = 0; i < ids.size(); ++i) {
-      if (ids[i] > 0) {
-        sorted.emplace_back(ids[i], i);
-      } else if (ids[i] < 0 || !zero_allowed) {
+      if (ids[i] > 0) continue;
+      all_positive = false;
+      if (ids[i] < 0 || !zero_allowed)
         bad(entry(ds, i),
             std::string(kind) + " id " + std::to_string(ids[i]) + " is not a valid id; expected > 0");
-      }
     }
+    // The usual case in O(n): the map the reader builds anyway takes every id once.
+    std::int64_t duplicate = 0;
+    if (all_positive && model::IdMap().build(ids, duplicate)) return;
+    std::vector<std::pair<std::int64_t, std::size_t>> sorted;
+    sorted.reserve(ids.size());
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      if (ids[i] > 0) sorted.emplace_back(ids[i], i);
     std::sort(sorted.begin(), sorted.end());
     for (std::size_t k = 1; k < sorted.size(); ++k) {
       if (sorted[k].first != sorted[k - 1].first) continue;
@@ -352,17 +355,18 @@ void Checker::check_block(const std::string& name, const model::ElementBlock& b)
   const std::size_t n = b.size();
   const auto npe = static_cast<std::size_t>(b.npe());
   bool sizes_ok = true;
-  const auto column_size = [&](const char* column, std::size_t have, std::size_t want, bool may_be_empty) {
-    if (have == want || (may_be_empty && have == 0)) return;
+  // `per` values for each element id; thickness and phi may also be empty (only shells use them).
+  const auto column_size = [&](const char* column, std::size_t have, std::size_t per, bool may_be_empty) {
+    if (have == n * per || (may_be_empty && have == 0)) return;
     sizes_ok = false;
-    bad(ds + "/" + column, "has " + std::to_string(have) + " values; expected " + std::to_string(want) +
-                               " (" + std::to_string(npe) + " per " + std::string(kind) + " of " + ds +
-                               "/id)");
+    bad(ds + "/" + column, "has " + std::to_string(have) + " values; expected " + std::to_string(n * per) +
+                               " (" + std::to_string(per) + " per " + std::string(kind) + " of " + ds +
+                               "/id" + (may_be_empty ? ", or none)" : ")"));
   };
-  column_size("part", b.part.size(), n, false);
-  column_size("conn", b.conn.size(), n * npe, false);
-  column_size("thickness", b.thickness.size(), n, true);
-  column_size("phi", b.phi.size(), n, true);
+  column_size("part", b.part.size(), 1, false);
+  column_size("conn", b.conn.size(), npe, false);
+  column_size("thickness", b.thickness.size(), 1, true);
+  column_size("phi", b.phi.size(), 1, true);
   if (!sizes_ok) return;
   unique_ids(ds + "/id", kind, b.id, false);
   // The third node of a spring and of a beam orients it and may be blank.
@@ -406,9 +410,10 @@ void Checker::check_block_parts(const std::string& ds, const model::ElementBlock
     case ElementType::Beam2: want = PropertyKind::Beam; break;
   }
   const Range parts{m_.parts.size(), "parts"};
+  const std::string part_ds = ds + "/part";
   for (std::size_t e = 0; e < b.size(); ++e) {
     const Owner o{model::element_type_name(b.type), b.id[e]};
-    if (!index(ds + "/part", e, -1, o, "part index", b.part[e], parts, false)) continue;
+    if (!index(part_ds, e, -1, o, "part index", b.part[e], parts, false)) continue;
     const auto& part = m_.parts[static_cast<std::size_t>(b.part[e])];
     if (part.property < 0 || static_cast<std::size_t>(part.property) >= m_.properties.size()) continue;
     const auto& prop = m_.properties[static_cast<std::size_t>(part.property)];

@@ -9,8 +9,9 @@
 // The file's hash chains hash_bytes over the pieces listed in the header, each seeded with the hash so far.
 #include "io/hdf5/model_file_hash.hpp"
 
-#include <array>
+#include <bit>
 #include <cstdio>
+#include <cstring>
 #include <string_view>
 #include <vector>
 
@@ -31,7 +32,11 @@ constexpr std::uint64_t rotl(std::uint64_t x, int r) {
 // Little-endian whatever the host: the same bytes give the same hash everywhere (one load on x86).
 std::uint64_t load_word(const unsigned char* p) {
   std::uint64_t w = 0;
-  for (int i = 7; i >= 0; --i) w = (w << 8) | p[i];
+  if constexpr (std::endian::native == std::endian::little) {
+    std::memcpy(&w, p, sizeof w);
+  } else {
+    for (int i = 7; i >= 0; --i) w = (w << 8) | p[i];
+  }
   return w;
 }
 
@@ -46,10 +51,14 @@ std::uint64_t hash_bytes(const void* data, std::size_t size, std::uint64_t seed)
   const unsigned char* const end = p + size;
   std::uint64_t h = seed + kP3;
   if (size >= 32) {
-    std::array<std::uint64_t, 4> v{seed + kP1 + kP2, seed + kP2, seed, seed - kP1};
-    for (; end - p >= 32; p += 32)
-      for (std::size_t j = 0; j < 4; ++j) v[j] = lane(v[j], load_word(p + 8 * j));
-    h = rotl(v[0], 1) + rotl(v[1], 7) + rotl(v[2], 12) + rotl(v[3], 18);
+    std::uint64_t v0 = seed + kP1 + kP2, v1 = seed + kP2, v2 = seed, v3 = seed - kP1;
+    for (; end - p >= 32; p += 32) {
+      v0 = lane(v0, load_word(p));
+      v1 = lane(v1, load_word(p + 8));
+      v2 = lane(v2, load_word(p + 16));
+      v3 = lane(v3, load_word(p + 24));
+    }
+    h = rotl(v0, 1) + rotl(v1, 7) + rotl(v2, 12) + rotl(v3, 18);
   }
   h += size;
   for (; end - p >= 8; p += 8) h = rotl(h ^ lane(0, load_word(p)), 27) * kP1 + kP3;
