@@ -51,7 +51,8 @@ const Model& sample_model() {
 
 std::string listed(const ModelFileProblems& p) {
   std::string s;
-  for (const auto& i : p.items) s += "RX" + std::to_string(static_cast<int>(i.code)) + " " + i.where + ": " + i.message + "\n";
+  for (const auto& i : p.items)
+    s += "RX" + std::to_string(static_cast<int>(i.code)) + " " + i.where + ": " + i.message + "\n";
   return s;
 }
 
@@ -99,7 +100,8 @@ TEST_CASE("model-file checks: the probe's damaged indices are named by dataset a
     Model m = ok;
     m.interfaces[0].secondary_nodes.back() = 10'000'000;
     const std::size_t k = ok.interfaces[0].secondary_nodes.size() - 1;
-    expect_one(m, ModelFileCode::BadReference, "/radx/interfaces/0/secondary_nodes[" + std::to_string(k) + "]",
+    expect_one(m, ModelFileCode::BadReference,
+               "/radx/interfaces/0/secondary_nodes[" + std::to_string(k) + "]",
                {"interface " + std::to_string(ok.interfaces[0].id), "10000000"});
   }
   SECTION("a time-history object") {
@@ -245,7 +247,8 @@ TEST_CASE("every sample deck's model file is read back without a problem", "[io]
     opt.out_dir = (dir.path() / std::to_string(decks)).string();
     std::ostringstream out, err;
     const auto res = radx::app::run_starter(opt, out, err);
-    if (res.exit_code != 0) continue;  // decks the starter refuses on purpose (none expected outside invalid/)
+    if (res.exit_code != 0)
+      continue;  // decks the starter refuses on purpose (none expected outside invalid/)
     ++decks;
     Model m;
     const auto r = radx::io::read_model_file(res.model_path, m);
@@ -308,8 +311,8 @@ TEST_CASE("model-file fingerprint: hash_bytes sees every byte and its place", "[
   CHECK(radx::io::hash_bytes(bytes.data(), bytes.size(), 0) == h);
   CHECK(radx::io::hash_bytes(bytes.data(), bytes.size(), 1) != h);  // the seed chains the pieces
   // Every single-bit change of every length class (stripes, words, tail bytes) changes the hash.
-  for (const std::size_t n : {std::size_t{3}, std::size_t{8}, std::size_t{31}, std::size_t{32}, std::size_t{77},
-                              std::size_t{1000}}) {
+  for (const std::size_t n : {std::size_t{3}, std::size_t{8}, std::size_t{31}, std::size_t{32},
+                              std::size_t{77}, std::size_t{1000}}) {
     const std::uint64_t base = radx::io::hash_bytes(bytes.data(), n, 0);
     for (std::size_t i = 0; i < n; ++i) {
       for (int bit = 0; bit < 8; ++bit) {
