@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -195,23 +194,20 @@ Diag model_file_diag(io::ModelFileCode code) {
   return static_cast<Diag>(static_cast<std::uint16_t>(code));
 }
 
-// The engine deck runs the model its starter deck made: the /RUN name is the model's run name (the
-// starter deck's /BEGIN Runname; Radioss names both files after it).
+// The engine deck runs the model of its own run: the run the starter wrote the model for (NAME of its
+// NAME_0000.rad) is the engine deck's (NAME of NAME_0001.rad, run_files.hpp), as radx names every file of a
+// run. Another deck's model, given with --model or copied under this run's name, is refused.
 void check_model_of_this_run(const io::ModelFileFingerprint& f, const std::string& model_path,
-                             const std::string& engine_deck, const model::RunControls& controls,
-                             Diagnostics& diags) {
-  const auto same = [](const std::string& a, const std::string& b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](char x, char y) {
-      return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
-    });
-  };
-  if (f.run_name.empty() || same(f.run_name, controls.run_name)) return;
-  const std::string made_by =
+                             const std::string& engine_deck, const std::string& root,
+                             const model::RunControls& controls, Diagnostics& diags) {
+  if (f.run == root) return;
+  const std::string made_from =
       f.deck_files.empty() ? std::string() : " (made from " + f.deck_files.front() + ")";
   diags.error(Diag::ModelFileOtherRun, Where{model_path}, About{},
-              "the model file is the model of run " + f.run_name + made_by + ", but the engine deck " +
-                  engine_deck + " runs /RUN/" + controls.run_name + ": give the model of " +
-                  controls.run_name + " (run radx-starter " + controls.run_name +
+              (f.run.empty() ? std::string("the model file does not say which run it is the model of")
+                             : "the model file is the model of run " + f.run + made_from) +
+                  ", but the engine deck " + engine_deck + " is run " + root + " (/RUN/" + controls.run_name +
+                  "): give the model of " + root + " (run radx-starter " + root +
                   "_0000.rad, or give its model file with --model)");
 }
 
@@ -229,7 +225,7 @@ bool read_checked_model(const std::string& model_path, const std::string& engine
   Diagnostics diags;
   for (const auto& p : r.problems.items)
     diags.error(model_file_diag(p.code), Where{model_path}, About{}, p.where + ": " + p.message);
-  check_model_of_this_run(r.fingerprint, model_path, engine_deck, controls, diags);
+  check_model_of_this_run(r.fingerprint, model_path, engine_deck, root, controls, diags);
   if (!diags.has_errors()) return true;
   diags.print(err);
   const std::size_t count = r.problems.count + diags.error_count() - r.problems.items.size();

@@ -399,6 +399,7 @@ void write_fingerprint(hid_t file, const ModelFileOrigin& origin) {
   write_attr(file, "radx_model_format_version", &kModelFormatVersion);
   write_string_attr(file, "radx_version", version);
   write_string_attr(file, "radx_commit", origin.radx_commit.empty() ? "unknown" : origin.radx_commit);
+  write_string_attr(file, "radx_run", origin.run);
   write_string_attr(file, "radx_deck_hash", origin.deck_hash);
   write_string_array_attr(file, "radx_deck_files", origin.deck_files);
 }
@@ -473,6 +474,7 @@ ModelFileFingerprint read_fingerprint(hid_t file) {
   f.format_version = read_attr<std::int64_t>(file, "radx_model_format_version");
   f.radx_version = read_string_attr(file, "radx_version");
   if (has_attr(file, "radx_commit")) f.radx_commit = read_string_attr(file, "radx_commit");
+  if (has_attr(file, "radx_run")) f.run = read_string_attr(file, "radx_run");
   if (has_attr(file, "radx_deck_hash")) f.deck_hash = read_string_attr(file, "radx_deck_hash");
   if (has_attr(file, "radx_deck_files")) f.deck_files = read_string_array_attr(file, "radx_deck_files");
   if (has_attr(file, kContentHashAttribute)) f.content_hash = read_string_attr(file, kContentHashAttribute);
@@ -526,8 +528,10 @@ void read_file(const std::string& path, Model& m, ModelFileReading& r) {
 
 }  // namespace
 
-ModelFileOrigin model_file_origin(const std::vector<std::string>& deck_files, std::string radx_commit) {
+ModelFileOrigin model_file_origin(std::string run, const std::vector<std::string>& deck_files,
+                                  std::string radx_commit) {
   ModelFileOrigin o;
+  o.run = std::move(run);
   o.deck_files = deck_files;
   o.radx_commit = std::move(radx_commit);
   std::uint64_t h = 0;

@@ -19,20 +19,23 @@ inline constexpr std::int64_t kModelFormatVersion = 22;
 
 // Where a model comes from, stamped into its file by the starter (docs/model-file.md section 3).
 struct ModelFileOrigin {
+  std::string run;                      // the run the model is for: NAME of NAME_0000.rad (run_files.hpp)
   std::string deck_hash;                // 16 hex digits: the hash of the deck's files, in the order read
   std::vector<std::string> deck_files;  // the deck's files as the starter read them, the main deck first
   std::string radx_commit;              // the git commit of the radx that writes the file
 };
 
-// The origin of a model built from the deck files `deck_files` (Deck::files: the main deck, then each
-// included file in the order read) by the radx of commit `radx_commit`: the files' hash chains their
-// names and bytes; a file that cannot be read counts by its name.
-ModelFileOrigin model_file_origin(const std::vector<std::string>& deck_files, std::string radx_commit);
+// The origin of the model of run `run` built from the deck files `deck_files` (Deck::files: the main deck,
+// then each included file in the order read) by the radx of commit `radx_commit`: the files' hash chains
+// their names and bytes; a file that cannot be read counts by its name.
+ModelFileOrigin model_file_origin(std::string run, const std::vector<std::string>& deck_files,
+                                  std::string radx_commit);
 
 // The fingerprint read back from a model file.
 struct ModelFileFingerprint {
   std::int64_t format_version = 0;
   std::string radx_version, radx_commit;
+  std::string run;       // radx_run: the run the starter wrote the model for (empty: not said)
   std::string run_name;  // /radx@run_name, the starter deck's /BEGIN run name
   std::string deck_hash;
   std::vector<std::string> deck_files;
@@ -59,7 +62,7 @@ struct ModelFileReading {
 // the content hash of everything written.
 bool write_model_file(const radx::model::Model& m, const std::string& path, const ModelFileOrigin& origin,
                       std::string& error);
-// The same without an origin (deck hash and files empty, commit "unknown").
+// The same without an origin (run, deck hash and files empty, commit "unknown"): a file the engine refuses.
 bool write_model_file(const radx::model::Model& m, const std::string& path, std::string& error);
 
 // Reads a model file written by write_model_file into `m` (replaced entirely): checks its format version

@@ -393,8 +393,9 @@ void Checker::check_block(const std::string& name, const model::ElementBlock& b)
   check_block_parts(ds, b);
 }
 
-// Each element's part, and that the part's property is of the element's kind: the engine reads the
-// property's fields of that kind (a shell's thickness, a solid's formulation).
+// Each element's part, that the part has a material (but for a spring), and that its property is of the
+// element's kind: the engine reads the property's fields of that kind (a shell's thickness, a solid's
+// formulation).
 void Checker::check_block_parts(const std::string& ds, const model::ElementBlock& b) {
   using model::ElementType;
   using model::PropertyKind;
@@ -415,14 +416,19 @@ void Checker::check_block_parts(const std::string& ds, const model::ElementBlock
     const Owner o{model::element_type_name(b.type), b.id[e]};
     if (!index(part_ds, e, -1, o, "part index", b.part[e], parts, false)) continue;
     const auto& part = m_.parts[static_cast<std::size_t>(b.part[e])];
+    // Every element but a spring computes its force through its part's material.
+    if (part.material == kNone && b.type != ElementType::Spring2) {
+      bad(entry(part_ds, e), o.text() + ": its part " + std::to_string(part.id) + " has no material; a " +
+                                 std::string(model::element_type_name(b.type)) + " needs one");
+    }
     if (part.property < 0 || static_cast<std::size_t>(part.property) >= m_.properties.size()) continue;
     const auto& prop = m_.properties[static_cast<std::size_t>(part.property)];
     if (prop.kind == want) continue;
-    bad(entry(ds + "/part", e), o.text() + ": its part " + std::to_string(part.id) + " has property " +
-                                    std::to_string(prop.id) + " of kind " +
-                                    std::to_string(static_cast<int>(prop.kind)) + "; a " +
-                                    std::string(model::element_type_name(b.type)) +
-                                    " needs a property of kind " + std::to_string(static_cast<int>(want)));
+    bad(entry(part_ds, e), o.text() + ": its part " + std::to_string(part.id) + " has property " +
+                               std::to_string(prop.id) + " of kind " +
+                               std::to_string(static_cast<int>(prop.kind)) + "; a " +
+                               std::string(model::element_type_name(b.type)) + " needs a property of kind " +
+                               std::to_string(static_cast<int>(want)));
   }
 }
 

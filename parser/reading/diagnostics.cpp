@@ -127,7 +127,8 @@ const std::vector<CodeInfo>& code_table() {
        "the model file was changed after the starter wrote it (its content hash differs), or has no content "
        "hash"},
       {Diag::ModelFileOtherRun,
-       "the model file is the model of another run: its run name differs from the engine deck's /RUN name"},
+       "the model file is the model of another run: the starter wrote it for another deck than the engine "
+       "deck's"},
   };
   return table;
 }

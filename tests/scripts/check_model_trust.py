@@ -23,7 +23,7 @@ bad value (the cases that change one integer) or what is wrong with the file as 
   inivel_group           /radx/initial_velocities/group[0] = 99         RX901, against the model file
   changed_value          one coordinate moved by 1e-3 (a valid model)   RX904: changed after the starter wrote it
   other_format           radx_model_format_version = version - 1        RX903, both radx versions named
-  other_model_flag       the other deck's model given with --model      RX905, both run names and files
+  other_model_flag       the other deck's model given with --model      RX905, both runs, decks and files
   other_model_copied     the other deck's model copied as NAME_0000.hdf RX905
 
 Those changes are the probe's: before the checks, the first four ended in SIGSEGV (exit 139), the two part
@@ -181,7 +181,7 @@ def main():
         print("%s: exit %d, %s" % (case, r.returncode, (r.stderr.splitlines() or [""])[0][:200]))
 
     # Another deck's model: with --model, and copied under the name the engine looks for.
-    other_texts = ["model of run " + other_name, "/RUN/" + name, engine_deck(a.deck)]
+    other_texts = ["model of run " + other_name, "is run " + name, engine_deck(a.deck), a.other_deck]
     if not a.only or "other_model_flag" in a.only:
         out = os.path.join(a.out, "other_model_flag")
         r = run([a.radx_engine, engine_deck(a.deck), "--out", out, "--model", other_model, "--no-plot"])

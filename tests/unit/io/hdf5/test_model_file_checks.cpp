@@ -22,6 +22,7 @@
 #include "io/hdf5/model_file.hpp"
 #include "io/hdf5/model_file_checks.hpp"
 #include "io/hdf5/model_file_hash.hpp"
+#include "solver/model/run_files.hpp"
 #include "test_util.hpp"
 
 namespace fs = std::filesystem;
@@ -213,6 +214,18 @@ TEST_CASE("model-file checks: counts, ids and codes", "[io][model_file_checks]")
     m.functions[0].x[1] = m.functions[0].x[0];
     expect_one(m, ModelFileCode::BadValue, "/radx/functions/x[1]", {"strictly increasing"});
   }
+  SECTION("a part without a material under elements that need one") {
+    Model m = ok;
+    const auto part = static_cast<std::size_t>(ok.bricks.part[0]);
+    m.parts[part].material = radx::model::kNone;
+    const ModelFileProblems p = radx::io::check_model_content(m);
+    INFO(listed(p));
+    std::size_t bricks = 0;
+    for (const auto q : ok.bricks.part) bricks += static_cast<std::size_t>(q) == part ? 1 : 0;
+    REQUIRE(p.count == bricks);  // each brick of the part names it
+    CHECK(p.items[0].where == "/radx/elements/brick8/part[0]");
+    CHECK(p.items[0].message.find("has no material; a brick needs one") != std::string::npos);
+  }
   SECTION("an element whose part has a property of another kind") {
     Model m = ok;
     const std::int32_t brick_part = ok.bricks.part[0];
@@ -256,6 +269,7 @@ TEST_CASE("every sample deck's model file is read back without a problem", "[io]
     CHECK(r.ok());
     CHECK(r.fingerprint.content_hash == r.fingerprint.computed_hash);
     CHECK(r.fingerprint.deck_files.front() == p);
+    CHECK(r.fingerprint.run == radx::model::run_output_root(p));
   }
   CHECK(decks > 50);
 }
@@ -264,7 +278,8 @@ TEST_CASE("model-file fingerprint: the content hash follows the content only", "
   radx::test::TempDir dir;
   const Model& m = sample_model();
   const auto origin = radx::io::model_file_origin(
-      {std::string(RADX_SOURCE_DIR) + "/decks/block_on_plate/BLOCK_ON_PLATE_0000.rad"}, "abc1234");
+      "BLOCK_ON_PLATE", {std::string(RADX_SOURCE_DIR) + "/decks/block_on_plate/BLOCK_ON_PLATE_0000.rad"},
+      "abc1234");
   std::string error;
   REQUIRE(radx::io::write_model_file(m, dir.file("A_0000.hdf"), origin, error));
   REQUIRE(radx::io::write_model_file(m, dir.file("B_0000.hdf"), origin, error));
@@ -275,6 +290,7 @@ TEST_CASE("model-file fingerprint: the content hash follows the content only", "
   // The same model twice: the same hash (it does not depend on where HDF5 put things in the file).
   CHECK(a.fingerprint.content_hash == b.fingerprint.content_hash);
   CHECK(a.fingerprint.radx_commit == "abc1234");
+  CHECK(a.fingerprint.run == "BLOCK_ON_PLATE");
   CHECK(a.fingerprint.deck_hash.size() == 16);
   CHECK(a.fingerprint.run_name == m.run_name);
 
