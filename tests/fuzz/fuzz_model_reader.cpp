@@ -106,7 +106,9 @@ void change_real(double& x, double other, const Change& c) {
     case Zero: x = 0; break;
     case MinusOne: x = -1; break;
     case Huge: x = negative ? -1e300 : 1e300; break;
-    case Extreme: x = negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity(); break;
+    case Extreme:
+      x = negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+      break;
     case NotANumber: x = std::numeric_limits<double>::quiet_NaN(); break;
     case CopyOther: x = other; break;
     case PlusOne: x = std::nextafter(x, std::numeric_limits<double>::infinity()); break;
@@ -161,7 +163,8 @@ std::size_t column_count(Model& m) {
 void run_engine(Model& m) {
   std::int64_t ignored = 0;
   m.nodes.index.build(m.nodes.id, ignored);
-  radx::io::schema::for_each_block(m, [&](const char*, radx::model::ElementBlock& b) { b.index.build(b.id, ignored); });
+  radx::io::schema::for_each_block(
+      m, [&](const char*, radx::model::ElementBlock& b) { b.index.build(b.id, ignored); });
   (void)radx::model::estimate_stable_step(m, 10);
   radx::model::RunControls controls;
   controls.run_name = m.run_name;

@@ -46,11 +46,12 @@ struct Width<std::array<E, K>> {
 template <class E, class Fn>
 void vector_column(std::string_view name, std::vector<E>& v, Fn& fn) {
   using W = Width<E>;
-  fn(name, v.size() * W::k, [&](std::size_t i) -> auto& { return W::at(v[i / W::k], i % W::k); },
-     [&](std::size_t, bool grow) {
-       if (grow && !v.empty()) v.push_back(v.back());
-       if (!grow && !v.empty()) v.pop_back();
-     });
+  fn(
+      name, v.size() * W::k, [&](std::size_t i) -> auto& { return W::at(v[i / W::k], i % W::k); },
+      [&](std::size_t, bool grow) {
+        if (grow && !v.empty()) v.push_back(v.back());
+        if (!grow && !v.empty()) v.pop_back();
+      });
 }
 
 // One member of every record of `recs`, reached by `get`.
@@ -59,7 +60,8 @@ void table_column(const std::string& name, std::vector<T>& recs, const Get& get,
   using M = std::remove_cvref_t<decltype(get(std::declval<T&>()))>;
   if constexpr (io::schema::Record<M>) {
     io::schema::for_each_field<M>([&](const char* sub, auto member) {
-      table_column(name + "_" + sub, recs, [&](T& r) -> auto& { return get(r).*member; }, fn);
+      table_column(
+          name + "_" + sub, recs, [&](T & r) -> auto& { return get(r).*member; }, fn);
     });
   } else if constexpr (kIsText<M>) {
     return;  // names and titles: the engine only prints them
@@ -80,29 +82,33 @@ void table_column(const std::string& name, std::vector<T>& recs, const Get& get,
       k = 0;
       return get(recs.front());  // not reached: i < total
     };
-    fn(name, total * W::k,
-       [&](std::size_t i) -> auto& {
-         std::size_t k = 0;
-         M& v = locate(i, k);
-         return W::at(v[k], i % W::k);
-       },
-       [&](std::size_t i, bool grow) {
-         std::size_t k = 0;
-         M& v = locate(i, k);
-         if (grow) v.insert(v.begin() + static_cast<std::ptrdiff_t>(k), v[k]);
-         if (!grow) v.erase(v.begin() + static_cast<std::ptrdiff_t>(k));
-       });
+    fn(
+        name, total * W::k,
+        [&](std::size_t i) -> auto& {
+          std::size_t k = 0;
+          M& v = locate(i, k);
+          return W::at(v[k], i % W::k);
+        },
+        [&](std::size_t i, bool grow) {
+          std::size_t k = 0;
+          M& v = locate(i, k);
+          if (grow) v.insert(v.begin() + static_cast<std::ptrdiff_t>(k), v[k]);
+          if (!grow) v.erase(v.begin() + static_cast<std::ptrdiff_t>(k));
+        });
   } else {
     using W = Width<M>;
-    fn(name, recs.size() * W::k, [&](std::size_t i) -> auto& { return W::at(get(recs[i / W::k]), i % W::k); },
-       kNoResize);
+    fn(
+        name,
+        recs.size() * W::k, [&](std::size_t i) -> auto& { return W::at(get(recs[i / W::k]), i % W::k); },
+        kNoResize);
   }
 }
 
 template <class T, class Fn>
 void table(const std::string& name, std::vector<T>& recs, Fn& fn) {
   io::schema::for_each_field<T>([&](const char* col, auto member) {
-    table_column(name + "/" + col, recs, [member](T& r) -> auto& { return r.*member; }, fn);
+    table_column(
+        name + "/" + col, recs, [member](T & r) -> auto& { return r.*member; }, fn);
   });
 }
 
@@ -115,7 +121,8 @@ void for_each_column(model::Model& m, Fn&& fn) {
   detail::vector_column("nodes/y", m.nodes.y, fn);
   detail::vector_column("nodes/z", m.nodes.z, fn);
   detail::vector_column("node_mass", m.node_mass, fn);
-  fn("total_mass", 1, [&](std::size_t) -> auto& { return m.total_mass; }, detail::kNoResize);
+  fn(
+      "total_mass", 1, [&](std::size_t) -> auto& { return m.total_mass; }, detail::kNoResize);
   io::schema::for_each_block(m, [&](const char* name, model::ElementBlock& b) {
     const std::string block = std::string("elements/") + name;
     detail::vector_column(block + "/id", b.id, fn);
