@@ -199,6 +199,62 @@ std::string starter_hint(const std::string& model_path, const std::string& root)
          "_0000.rad), or give the model file with --model FILE\n";
 }
 
+// A problem of the model file as a diagnostic of that file: the codes are the same numbers (9xx).
+Diag model_file_diag(io::ModelFileCode code) {
+  static_assert(static_cast<int>(Diag::ModelFileBadReference) ==
+                static_cast<int>(io::ModelFileCode::BadReference));
+  static_assert(static_cast<int>(Diag::ModelFileBadValue) == static_cast<int>(io::ModelFileCode::BadValue));
+  static_assert(static_cast<int>(Diag::ModelFileOtherFormat) ==
+                static_cast<int>(io::ModelFileCode::OtherFormat));
+  static_assert(static_cast<int>(Diag::ModelFileChanged) == static_cast<int>(io::ModelFileCode::Changed));
+  static_assert(static_cast<int>(Diag::ModelFileOtherRun) == static_cast<int>(io::ModelFileCode::OtherRun));
+  return static_cast<Diag>(static_cast<std::uint16_t>(code));
+}
+
+// The engine deck runs the model of its own run: the run the starter wrote the model for (NAME of its
+// NAME_0000.rad) is the engine deck's (NAME of NAME_0001.rad, run_files.hpp), as radx names every file of a
+// run. Another deck's model, given with --model or copied under this run's name, is refused.
+void check_model_of_this_run(const io::ModelFileFingerprint& f, const std::string& model_path,
+                             const std::string& engine_deck, const std::string& root,
+                             const model::RunControls& controls, Diagnostics& diags) {
+  if (f.run == root) return;
+  const std::string made_from =
+      f.deck_files.empty() ? std::string() : " (made from " + f.deck_files.front() + ")";
+  diags.error(Diag::ModelFileOtherRun, Where{model_path}, About{},
+              (f.run.empty() ? std::string("the model file does not say which run it is the model of")
+                             : "the model file is the model of run " + f.run + made_from) +
+                  ", but the engine deck " + engine_deck + " is run " + root + " (/RUN/" + controls.run_name +
+                  "): give the model of " + root + " (run radx-starter " + root +
+                  "_0000.rad, or give its model file with --model)");
+}
+
+// The model file read, checked entry by entry, and found to be the model of this run. False, with every
+// problem printed against the model file, when the engine must not run it.
+bool read_checked_model(const std::string& model_path, const std::string& engine_deck,
+                        const std::string& root, const model::RunControls& controls, model::Model& model,
+                        std::ostream& err) {
+  const io::ModelFileReading r = io::read_model_file(model_path, model);
+  if (!r.error.empty()) {
+    err << model_path << ": error: cannot read the model file: " << r.error << '\n';
+    err << starter_hint(model_path, root);
+    return false;
+  }
+  Diagnostics diags;
+  for (const auto& p : r.problems.items)
+    diags.error(model_file_diag(p.code), Where{model_path}, About{}, p.where + ": " + p.message);
+  check_model_of_this_run(r.fingerprint, model_path, engine_deck, root, controls, diags);
+  if (!diags.has_errors()) return true;
+  diags.print(err);
+  const std::size_t count = r.problems.count + diags.error_count() - r.problems.items.size();
+  if (r.problems.count > r.problems.items.size())
+    err << "radx-engine: the first " << r.problems.items.size() << " problems of the model file are listed\n";
+  err << "radx-engine: " << count << " error(s) in the model file " << model_path
+      << "; nothing was run. The engine runs only a model file its starter wrote, unchanged, for this run: "
+         "run the starter on the deck again (radx-starter "
+      << root << "_0000.rad)\n";
+  return false;
+}
+
 // The run starts: nothing of an earlier run of this name may stay beside its outputs, where a script would
 // take it for this run's, even if this run is refused or killed before its first cycle. False (with the
 // reason on err) when the folder cannot be locked or cleared.
@@ -626,12 +682,8 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   const std::string model_path =
       opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;
   model::Model model;
+  if (!read_checked_model(model_path, opt.engine_deck, root, controls, model, err)) return 1;
   std::string error;
-  if (!io::read_model_file(model_path, model, error)) {
-    err << model_path << ": error: cannot read the model file: " << error << '\n';
-    err << starter_hint(model_path, root);
-    return 1;
-  }
   s.mass_unit = model.units.mass_name;
   s.length_unit = model.units.length_name;
   s.time_unit = model.units.time_name;

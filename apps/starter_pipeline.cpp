@@ -2,6 +2,8 @@
 
 #include "apps/engine_pipeline.hpp"
 
+#include "apps/build_info.hpp"
+
 #include <cctype>
 #include <chrono>
 #include <filesystem>
@@ -174,7 +176,9 @@ void write_starter_outputs(const StarterOptions& opt, const Deck& deck, const mo
   const std::string model_path = root + ".hdf";
   std::string error;
   if (!diags.has_errors()) {
-    if (!io::write_model_file(model, model_path, error)) {
+    const io::ModelFileOrigin origin =
+        io::model_file_origin(model::run_output_root(opt.deck), deck.files, std::string(build_commit()));
+    if (!io::write_model_file(model, model_path, origin, error)) {
       err << opt.deck << ": error: cannot write the model file: " << error << '\n';
       ++res.errors;
     } else {

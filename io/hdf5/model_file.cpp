@@ -7,19 +7,23 @@
 //   the HDF5 error stack. write_model_file / read_model_file catch it and return false: nothing else
 //   escapes.
 // - The /VTKHDF mesh is written by io/hdf5/vtkhdf_mesh.cpp, shared with the result mesh file P.mesh.hdf.
-// - Schema<S>: one table per Model struct of (member name, member pointer). It drives both directions:
-//   a collection (vector of records) is written as a "table" group: attribute count, one dataset per
-//   member (a column), variable-length members as CSR (values + <name>_offsets), nested structs
-//   flattened as <outer>_<inner>. Interfaces and Units are written one group per record: scalars as
-//   attributes, vectors as datasets.
+// - Schema<S> (io/hdf5/model_schema.hpp): one table per Model struct of (member name, member pointer). It
+//   drives both directions: a collection (vector of records) is written as a "table" group: attribute
+//   count, one dataset per member (a column), variable-length members as CSR (values + <name>_offsets),
+//   nested structs flattened as <outer>_<inner>. Interfaces and Units are written one group per record:
+//   scalars as attributes, vectors as datasets.
 // - Big arrays (points, connectivity, element blocks) are written with one H5Dwrite each, contiguous
 //   layout, no fill, no conversion (memory and file types are both little-endian).
 #include "io/hdf5/model_file.hpp"
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <tuple>
 #include <type_traits>
@@ -27,6 +31,9 @@
 #include <vector>
 
 #include "io/hdf5/hdf5_util.hpp"
+#include "io/hdf5/model_file_checks.hpp"
+#include "io/hdf5/model_file_hash.hpp"
+#include "io/hdf5/model_schema.hpp"
 #include "io/hdf5/vtkhdf_mesh.hpp"
 
 #ifndef RADX_VERSION
@@ -40,7 +47,8 @@ namespace {
 namespace fs = std::filesystem;
 using model::Model;
 // The generic HDF5 helpers are this file's vocabulary: used unqualified.
-using namespace radx::io::h5;  // NOLINT(google-build-using-namespace)
+using namespace radx::io::h5;      // NOLINT(google-build-using-namespace)
+using namespace radx::io::schema;  // NOLINT(google-build-using-namespace)
 
 // ---------------------------------------------------------------------------------------------------
 // Types
@@ -73,15 +81,6 @@ struct Item<std::array<E, K>> {
   using value = E;
   static constexpr hsize_t k = K;
 };
-
-template <class M>
-inline constexpr bool kIsVector = false;
-template <class E>
-inline constexpr bool kIsVector<std::vector<E>> = true;
-template <class M>
-inline constexpr bool kIsArray = false;
-template <class E, std::size_t K>
-inline constexpr bool kIsArray<std::array<E, K>> = true;
 
 // ---------------------------------------------------------------------------------------------------
 // Items: a vector of scalars or std::arrays of scalars, stored as [n] or [n, K] with the stored type.
@@ -155,248 +154,6 @@ void check_offsets(const std::vector<std::int64_t>& off, std::size_t n, std::siz
     throw Failure(where + " is not a valid CSR offsets array for " + std::to_string(n) + " rows and " +
                   std::to_string(total) + " values");
   }
-}
-
-// ---------------------------------------------------------------------------------------------------
-// Schemas: (name, member pointer) for every member of every Model struct, in declaration order.
-
-template <class S, class M>
-struct Field {
-  const char* name;
-  M S::*member;
-};
-template <class S, class M>
-constexpr Field<S, M> field(const char* name, M S::*member) {
-  return {name, member};
-}
-
-template <class S>
-struct Schema {};
-
-template <class M>
-concept Record = requires {
-  Schema<M>::fields;
-};
-
-template <class S, class Fn>
-void for_each_field(Fn&& fn) {
-  std::apply([&](const auto&... f) { (fn(f.name, f.member), ...); }, Schema<S>::fields);
-}
-
-// Number of members of an aggregate: the largest N for which S{x1, ..., xN} compiles, each x converting
-// to anything. Lets the compiler check that a Schema lists every member: a member added to model.hpp
-// and not here is a compile error, not a field silently missing from the file.
-struct AnyValue {
-  template <class T>
-  operator T() const;  // NOLINT: declared only, used in unevaluated context
-};
-template <class S, std::size_t... I>
-constexpr bool brace_initializable(std::index_sequence<I...>) {
-  return requires {
-    S{(void(I), AnyValue{})...};
-  };
-}
-template <class S, std::size_t N = 0>
-constexpr std::size_t member_count() {
-  if constexpr (brace_initializable<S>(std::make_index_sequence<N + 1>())) {
-    return member_count<S, N + 1>();
-  } else {
-    return N;
-  }
-}
-
-#define RADX_FIELD(m) field(#m, &S::m)
-#define RADX_SCHEMA(Type, ...)                                                                           \
-  template <>                                                                                            \
-  struct Schema<model::Type> {                                                                           \
-    using S = model::Type;                                                                               \
-    static constexpr auto fields = std::make_tuple(__VA_ARGS__);                                         \
-  };                                                                                                     \
-  static_assert(std::tuple_size_v<decltype(Schema<model::Type>::fields)> == member_count<model::Type>(), \
-                "the Schema of " #Type " must list every member of model::" #Type                        \
-                " (then update docs/model-file.md and kModelFormatVersion)")
-
-RADX_SCHEMA(Units, RADX_FIELD(mass), RADX_FIELD(length), RADX_FIELD(time), RADX_FIELD(mass_name),
-            RADX_FIELD(length_name), RADX_FIELD(time_name));
-RADX_SCHEMA(PlasTab, RADX_FIELD(function_id), RADX_FIELD(function), RADX_FIELD(scale), RADX_FIELD(rate),
-            RADX_FIELD(fsmooth), RADX_FIELD(vp));
-RADX_SCHEMA(PlasBrit, RADX_FIELD(eps_t1), RADX_FIELD(eps_m1), RADX_FIELD(d_max1), RADX_FIELD(eps_f1),
-            RADX_FIELD(eps_t2), RADX_FIELD(eps_m2), RADX_FIELD(d_max2), RADX_FIELD(eps_f2));
-RADX_SCHEMA(Ogden, RADX_FIELD(mu), RADX_FIELD(alpha), RADX_FIELD(sig_cut), RADX_FIELD(iform));
-RADX_SCHEMA(FoamTab, RADX_FIELD(load_function_id), RADX_FIELD(load_function), RADX_FIELD(load_scale),
-            RADX_FIELD(load_rate), RADX_FIELD(unload_function_id), RADX_FIELD(unload_function),
-            RADX_FIELD(unload_scale), RADX_FIELD(unload_rate), RADX_FIELD(e_max), RADX_FIELD(eps_max),
-            RADX_FIELD(itens), RADX_FIELD(tens_function_id), RADX_FIELD(tens_function),
-            RADX_FIELD(tens_scale), RADX_FIELD(israte), RADX_FIELD(iflag), RADX_FIELD(shape),
-            RADX_FIELD(hys));
-RADX_SCHEMA(FailJohnson, RADX_FIELD(on), RADX_FIELD(fail_id), RADX_FIELD(d1), RADX_FIELD(d2), RADX_FIELD(d3),
-            RADX_FIELD(d4), RADX_FIELD(d5), RADX_FIELD(eps_dot_0), RADX_FIELD(eps_f_min), RADX_FIELD(dadv),
-            RADX_FIELD(ifail_sh), RADX_FIELD(ifail_so));
-RADX_SCHEMA(FailTab, RADX_FIELD(on), RADX_FIELD(fail_id), RADX_FIELD(ifail_sh), RADX_FIELD(ifail_so),
-            RADX_FIELD(p_thickfail), RADX_FIELD(dcrit), RADX_FIELD(d), RADX_FIELD(n), RADX_FIELD(function_id),
-            RADX_FIELD(function), RADX_FIELD(scale), RADX_FIELD(rate), RADX_FIELD(size_function_id),
-            RADX_FIELD(size_function), RADX_FIELD(size_scale), RADX_FIELD(el_ref),
-            RADX_FIELD(temp_function_id), RADX_FIELD(temp_factor));
-RADX_SCHEMA(FailBiquad, RADX_FIELD(on), RADX_FIELD(fail_id), RADX_FIELD(c1), RADX_FIELD(c2), RADX_FIELD(c3),
-            RADX_FIELD(c4), RADX_FIELD(c5), RADX_FIELD(m_flag), RADX_FIELD(s_flag), RADX_FIELD(inst_start),
-            RADX_FIELD(p_thickfail), RADX_FIELD(size_function_id), RADX_FIELD(size_function),
-            RADX_FIELD(el_ref));
-RADX_SCHEMA(Material, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(law), RADX_FIELD(keyword),
-            RADX_FIELD(rho), RADX_FIELD(rho_ref), RADX_FIELD(young), RADX_FIELD(poisson), RADX_FIELD(shear),
-            RADX_FIELD(bulk), RADX_FIELD(iflag), RADX_FIELD(flag_vp), RADX_FIELD(icc), RADX_FIELD(fsmooth),
-            RADX_FIELD(a), RADX_FIELD(b), RADX_FIELD(n), RADX_FIELD(eps_p_max), RADX_FIELD(sig_max0),
-            RADX_FIELD(sig_y_input), RADX_FIELD(uts), RADX_FIELD(e_uts), RADX_FIELD(c), RADX_FIELD(eps_dot_0),
-            RADX_FIELD(f_cut), RADX_FIELD(chard), RADX_FIELD(p_min), RADX_FIELD(m_temp), RADX_FIELD(t_melt),
-            RADX_FIELD(rho_cp), RADX_FIELD(t_ref), RADX_FIELD(t_max), RADX_FIELD(tab), RADX_FIELD(fail_jc),
-            RADX_FIELD(fail_tab), RADX_FIELD(fail_bq), RADX_FIELD(brit), RADX_FIELD(ogden), RADX_FIELD(foam));
-RADX_SCHEMA(ShellProperty, RADX_FIELD(ishell), RADX_FIELD(ismstr), RADX_FIELD(ish3n), RADX_FIELD(idrill),
-            RADX_FIELD(ipinch), RADX_FIELD(n_ip), RADX_FIELD(ithick), RADX_FIELD(iplas), RADX_FIELD(ipos),
-            RADX_FIELD(p_thick_fail), RADX_FIELD(hm), RADX_FIELD(hf), RADX_FIELD(hr), RADX_FIELD(dm),
-            RADX_FIELD(dn), RADX_FIELD(thickness), RADX_FIELD(ashear));
-RADX_SCHEMA(SolidProperty, RADX_FIELD(isolid), RADX_FIELD(ismstr), RADX_FIELD(icpre), RADX_FIELD(iframe),
-            RADX_FIELD(inpts), RADX_FIELD(itetra4), RADX_FIELD(itetra10), RADX_FIELD(iale), RADX_FIELD(qa),
-            RADX_FIELD(qb), RADX_FIELD(h), RADX_FIELD(lambda_v), RADX_FIELD(mu_v), RADX_FIELD(dn),
-            RADX_FIELD(dt_min), RADX_FIELD(q_default));
-RADX_SCHEMA(SpringLaw, RADX_FIELD(stiffness), RADX_FIELD(damping), RADX_FIELD(a), RADX_FIELD(b),
-            RADX_FIELD(d), RADX_FIELD(e), RADX_FIELD(hardening), RADX_FIELD(f_load), RADX_FIELD(f_damp),
-            RADX_FIELD(f_unload), RADX_FIELD(f_damp4), RADX_FIELD(fscale), RADX_FIELD(ascale),
-            RADX_FIELD(hscale), RADX_FIELD(delta_min), RADX_FIELD(delta_max));
-RADX_SCHEMA(SpringProperty, RADX_FIELD(type), RADX_FIELD(mass), RADX_FIELD(inertia), RADX_FIELD(ileng),
-            RADX_FIELD(sensor), RADX_FIELD(skew), RADX_FIELD(ifail), RADX_FIELD(x), RADX_FIELD(y),
-            RADX_FIELD(z), RADX_FIELD(rx), RADX_FIELD(ry), RADX_FIELD(rz));
-RADX_SCHEMA(TrussProperty, RADX_FIELD(area));
-RADX_SCHEMA(BeamProperty, RADX_FIELD(area), RADX_FIELD(iyy), RADX_FIELD(izz), RADX_FIELD(ixx), RADX_FIELD(dm),
-            RADX_FIELD(df), RADX_FIELD(ishear), RADX_FIELD(ismstr), RADX_FIELD(release_x),
-            RADX_FIELD(release_y1), RADX_FIELD(release_z1), RADX_FIELD(release_y2), RADX_FIELD(release_z2));
-RADX_SCHEMA(Property, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(shell),
-            RADX_FIELD(solid), RADX_FIELD(spring), RADX_FIELD(truss), RADX_FIELD(beam));
-RADX_SCHEMA(Part, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(property), RADX_FIELD(material),
-            RADX_FIELD(subset), RADX_FIELD(contact_thickness), RADX_FIELD(mass), RADX_FIELD(element_count));
-RADX_SCHEMA(Subset, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(children), RADX_FIELD(parts));
-RADX_SCHEMA(NodeGroup, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(nodes));
-RADX_SCHEMA(Box, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(shape), RADX_FIELD(p1), RADX_FIELD(p2),
-            RADX_FIELD(diameter));
-RADX_SCHEMA(Surface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(segments),
-            RADX_FIELD(owner_type), RADX_FIELD(owner));
-RADX_SCHEMA(Function, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(x), RADX_FIELD(y));
-RADX_SCHEMA(BoundaryCondition, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(fixed), RADX_FIELD(skew),
-            RADX_FIELD(group));
-RADX_SCHEMA(ImposedVelocity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(function), RADX_FIELD(dir),
-            RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(frame), RADX_FIELD(icoor), RADX_FIELD(group),
-            RADX_FIELD(ascale_x), RADX_FIELD(fscale_y), RADX_FIELD(t_start), RADX_FIELD(t_stop),
-            RADX_FIELD(displacement));
-RADX_SCHEMA(ImposedFinalGeometry, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(function), RADX_FIELD(sensor),
-            RADX_FIELD(ascale_x), RADX_FIELD(t_start), RADX_FIELD(t_stop), RADX_FIELD(nodes),
-            RADX_FIELD(targets));
-RADX_SCHEMA(Skew, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(origin), RADX_FIELD(axes), RADX_FIELD(n1),
-            RADX_FIELD(n2), RADX_FIELD(n3), RADX_FIELD(dir), RADX_FIELD(frame));
-RADX_SCHEMA(AddedMass, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(type), RADX_FIELD(mass),
-            RADX_FIELD(group));
-RADX_SCHEMA(InitialVelocity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(v), RADX_FIELD(group),
-            RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(t_start), RADX_FIELD(rotational));
-RADX_SCHEMA(ConcentratedLoad, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(function), RADX_FIELD(dir),
-            RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(group), RADX_FIELD(itypfun),
-            RADX_FIELD(ascale_x), RADX_FIELD(fscale_y));
-RADX_SCHEMA(PressureLoad, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(surface), RADX_FIELD(function),
-            RADX_FIELD(sensor), RADX_FIELD(ipinch), RADX_FIELD(idel), RADX_FIELD(itypfun),
-            RADX_FIELD(ascale_x), RADX_FIELD(fscale_y));
-RADX_SCHEMA(Gravity, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(function), RADX_FIELD(dir),
-            RADX_FIELD(skew), RADX_FIELD(sensor), RADX_FIELD(group), RADX_FIELD(ascale_x),
-            RADX_FIELD(fscale_y));
-RADX_SCHEMA(RigidWall, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(node), RADX_FIELD(slide),
-            RADX_FIELD(iform), RADX_FIELD(ifq), RADX_FIELD(group1), RADX_FIELD(group2), RADX_FIELD(distance),
-            RADX_FIELD(friction), RADX_FIELD(diameter), RADX_FIELD(ffac), RADX_FIELD(mass), RADX_FIELD(m),
-            RADX_FIELD(m1), RADX_FIELD(v0), RADX_FIELD(normal), RADX_FIELD(secondary), RADX_FIELD(shape),
-            RADX_FIELD(m2));
-RADX_SCHEMA(RigidBody, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(main_node), RADX_FIELD(sensor),
-            RADX_FIELD(skew), RADX_FIELD(ispher), RADX_FIELD(ikrem), RADX_FIELD(icog), RADX_FIELD(ioptoff),
-            RADX_FIELD(iexpams), RADX_FIELD(ifail), RADX_FIELD(mass), RADX_FIELD(inertia), RADX_FIELD(fn),
-            RADX_FIELD(ft), RADX_FIELD(exp_n), RADX_FIELD(exp_t), RADX_FIELD(group), RADX_FIELD(surface),
-            RADX_FIELD(secondary), RADX_FIELD(rigid_material));
-RADX_SCHEMA(Accelerometer, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(node), RADX_FIELD(skew),
-            RADX_FIELD(fcut));
-RADX_SCHEMA(Sensor, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(type), RADX_FIELD(t_delay),
-            RADX_FIELD(t_stop));
-RADX_SCHEMA(Section, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(n1), RADX_FIELD(n2), RADX_FIELD(n3),
-            RADX_FIELD(node_group), RADX_FIELD(iframe), RADX_FIELD(nodes), RADX_FIELD(shells),
-            RADX_FIELD(shells3), RADX_FIELD(bricks), RADX_FIELD(trusses), RADX_FIELD(beams));
-RADX_SCHEMA(TimeHistoryGroup, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(kind), RADX_FIELD(variables),
-            RADX_FIELD(objects), RADX_FIELD(skews));
-RADX_SCHEMA(ContactLaw, RADX_FIELD(normal), RADX_FIELD(friction), RADX_FIELD(bidirectional), RADX_FIELD(kc),
-            RADX_FIELD(pz), RADX_FIELD(lambda), RADX_FIELD(pe), RADX_FIELD(kc_max), RADX_FIELD(curve),
-            RADX_FIELD(cubic), RADX_FIELD(power_m), RADX_FIELD(power_k), RADX_FIELD(mu), RADX_FIELD(ct),
-            RADX_FIELD(kappa));
-RADX_SCHEMA(TiedInterface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(secondary_group),
-            RADX_FIELD(main_surface), RADX_FIELD(ignore), RADX_FIELD(spotflag), RADX_FIELD(level),
-            RADX_FIELD(isearch), RADX_FIELD(idel2), RADX_FIELD(dsearch), RADX_FIELD(search_distance),
-            RADX_FIELD(tie_node), RADX_FIELD(tie_segment), RADX_FIELD(tie_r), RADX_FIELD(tie_s),
-            RADX_FIELD(tie_offset), RADX_FIELD(not_found));
-RADX_SCHEMA(Interface, RADX_FIELD(id), RADX_FIELD(title), RADX_FIELD(lagdt), RADX_FIELD(secondary_group),
-            RADX_FIELD(main_surface), RADX_FIELD(istf), RADX_FIELD(igap), RADX_FIELD(ibag), RADX_FIELD(idel),
-            RADX_FIELD(ithe), RADX_FIELD(icurv), RADX_FIELD(iadm), RADX_FIELD(itied), RADX_FIELD(ists),
-            RADX_FIELD(fscale_gap), RADX_FIELD(gap_max), RADX_FIELD(fpenmax), RADX_FIELD(stmin),
-            RADX_FIELD(stmax), RADX_FIELD(mesh_size_pct), RADX_FIELD(dt_min), RADX_FIELD(irem_gap),
-            RADX_FIELD(irem_i2), RADX_FIELD(stfac), RADX_FIELD(fric), RADX_FIELD(gapmin_input),
-            RADX_FIELD(t_start), RADX_FIELD(t_stop), RADX_FIELD(ibc), RADX_FIELD(inacti), RADX_FIELD(vis_s),
-            RADX_FIELD(vis_f), RADX_FIELD(bumult), RADX_FIELD(ifric), RADX_FIELD(ifiltr), RADX_FIELD(iform),
-            RADX_FIELD(xfreq), RADX_FIELD(c), RADX_FIELD(sens_id), RADX_FIELD(fct_id_f), RADX_FIELD(fric_id),
-            RADX_FIELD(ascale_f), RADX_FIELD(contact_law_id), RADX_FIELD(contact_law), RADX_FIELD(law),
-            RADX_FIELD(secondary_nodes), RADX_FIELD(gapmin), RADX_FIELD(gapmin_automatic),
-            RADX_FIELD(gap_node), RADX_FIELD(gap_segment), RADX_FIELD(stiff_node), RADX_FIELD(stiff_segment),
-            RADX_FIELD(gap_lo), RADX_FIELD(gap_hi), RADX_FIELD(stiff_lo), RADX_FIELD(stiff_hi),
-            RADX_FIELD(initial_penetrations), RADX_FIELD(max_initial_penetration),
-            RADX_FIELD(max_penetration_node), RADX_FIELD(inactive_nodes), RADX_FIELD(inactive_segments),
-            RADX_FIELD(penetrating_nodes), RADX_FIELD(initial_gap_reduction), RADX_FIELD(tributary_area));
-
-#undef RADX_SCHEMA
-#undef RADX_FIELD
-
-// Written member by member below (write_radx, read_file, write_block, read_block): a new member of these
-// structs must be added there.
-static_assert(member_count<Model>() == 42, "model::Model changed: update write_radx and read_file");
-static_assert(member_count<model::Nodes>() == 5, "model::Nodes changed: update write_radx and read_file");
-static_assert(member_count<model::ElementBlock>() == 7, "model::ElementBlock changed: update write_block");
-
-// The collections of the Model: table groups under /radx (one column per member) ...
-template <class ModelT, class Fn>
-void for_each_table(ModelT& m, Fn&& fn) {
-  fn("materials", m.materials);
-  fn("properties", m.properties);
-  fn("parts", m.parts);
-  fn("subsets", m.subsets);
-  fn("node_groups", m.node_groups);
-  fn("boxes", m.boxes);
-  fn("surfaces", m.surfaces);
-  fn("functions", m.functions);
-  fn("bcs", m.bcs);
-  fn("imposed_velocities", m.imposed_velocities);
-  fn("imposed_final_geometries", m.imposed_final_geometries);
-  fn("initial_velocities", m.initial_velocities);
-  fn("concentrated_loads", m.concentrated_loads);
-  fn("pressure_loads", m.pressure_loads);
-  fn("gravities", m.gravities);
-  fn("rigid_walls", m.rigid_walls);
-  fn("rigid_bodies", m.rigid_bodies);
-  fn("added_masses", m.added_masses);
-  fn("skews", m.skews);
-  fn("sections", m.sections);
-  fn("accelerometers", m.accelerometers);
-  fn("sensors", m.sensors);
-  fn("time_histories", m.time_histories);
-  fn("tied_interfaces", m.tied_interfaces);
-}
-
-// ... and the element blocks under /radx/elements.
-template <class ModelT, class Fn>
-void for_each_block(ModelT& m, Fn&& fn) {
-  fn("shell4", m.shells);
-  fn("shell3", m.shells3);
-  fn("brick8", m.bricks);
-  fn("tetra4", m.tetras);
-  fn("brick20", m.bricks20);
-  fn("spring2", m.springs);
-  fn("truss2", m.trusses);
-  fn("beam2", m.beams);
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -635,17 +392,27 @@ void write_radx(hid_t file, const Model& m) {
   write_strings(radx, "substitutions", m.substitutions);
 }
 
+// The fingerprint beside the model (docs/model-file.md section 3): where the model comes from, and last the
+// hash of everything else in the file.
+void write_fingerprint(hid_t file, const ModelFileOrigin& origin) {
+  const std::string version = RADX_VERSION;
+  write_attr(file, "radx_model_format_version", &kModelFormatVersion);
+  write_string_attr(file, "radx_version", version);
+  write_string_attr(file, "radx_commit", origin.radx_commit.empty() ? "unknown" : origin.radx_commit);
+  write_string_attr(file, "radx_run", origin.run);
+  write_string_attr(file, "radx_deck_hash", origin.deck_hash);
+  write_string_array_attr(file, "radx_deck_files", origin.deck_files);
+}
+
 // Writes the whole file at `part`; closes it (and flushes it to disk) before returning.
-void write_file(const Model& m, const std::string& part) {
+void write_file(const Model& m, const ModelFileOrigin& origin, const std::string& part) {
   check_vtkhdf_mesh(m);
   Handle file = create_file(part);
-  {
-    const std::string version = RADX_VERSION;
-    write_attr(file, "radx_model_format_version", &kModelFormatVersion);
-    write_string_attr(file, "radx_version", version);
-    write_vtkhdf_mesh(file, m);
-    write_radx(file, m);
-  }
+  write_fingerprint(file, origin);
+  write_vtkhdf_mesh(file, m);
+  write_radx(file, m);
+  check(H5Fflush(file, H5F_SCOPE_LOCAL), "cannot flush file " + part);
+  write_string_attr(file, kContentHashAttribute, model_content_hash(file));
   file.close("cannot close file " + part);
   sync_file(part);
 }
@@ -653,7 +420,9 @@ void write_file(const Model& m, const std::string& part) {
 // ---------------------------------------------------------------------------------------------------
 // Reading
 
-void read_block(hid_t elements, const std::string& name, model::ElementBlock& b, std::size_t node_count) {
+// The arrays of one element block; their lengths, indices and ids are checked with the rest of the model
+// (model_file_checks.cpp) before its IdMap is built.
+void read_block(hid_t elements, const std::string& name, model::ElementBlock& b) {
   const Handle g = open_group(elements, name);
   const auto type = read_attr<std::uint8_t>(g, "type");
   if (type != static_cast<std::uint8_t>(b.type)) {
@@ -665,79 +434,125 @@ void read_block(hid_t elements, const std::string& name, model::ElementBlock& b,
   b.conn = read_dataset<std::int32_t>(g, "conn", static_cast<hsize_t>(b.npe()));
   b.thickness = read_dataset<double>(g, "thickness");
   b.phi = read_dataset<double>(g, "phi");
-  if (b.part.size() != b.size() || b.conn.size() != b.size() * static_cast<std::size_t>(b.npe())) {
-    throw Failure("datasets part and conn of " + path_of(g, "") + " do not match its id count");
-  }
-  for (std::size_t k = 0; k < b.conn.size(); ++k) {
-    const std::int32_t node = b.conn[k];
-    // A spring's third node (orientation) is optional.
-    if ((b.type == model::ElementType::Spring2 || b.type == model::ElementType::Beam2) && k % 3 == 2 &&
-        node == model::kNone)
-      continue;
-    if (node < 0 || static_cast<std::size_t>(node) >= node_count) {
-      throw Failure("dataset " + path_of(g, "conn") + " has node index " + std::to_string(node) +
-                    " out of range");
-    }
-  }
-  std::int64_t duplicate = 0;
-  if (!b.index.build(b.id, duplicate)) {
-    throw Failure("dataset " + path_of(g, "id") + " repeats element id " + std::to_string(duplicate));
+}
+
+void read_nodes(hid_t radx, Model& m) {
+  const Handle nodes = open_group(radx, "nodes");
+  m.nodes.id = read_dataset<std::int64_t>(nodes, "id");
+  const std::vector<double> xyz = read_dataset<double>(nodes, "xyz", 3);
+  const std::size_t nn = std::min(m.nodes.id.size(), xyz.size() / 3);
+  m.nodes.x.resize(nn);
+  m.nodes.y.resize(nn);
+  m.nodes.z.resize(nn);
+  for (std::size_t i = 0; i < nn; ++i) {
+    m.nodes.x[i] = xyz[3 * i];
+    m.nodes.y[i] = xyz[3 * i + 1];
+    m.nodes.z[i] = xyz[3 * i + 2];
   }
 }
 
-void read_file(const std::string& path, Model& m) {
-  Handle file = open_file_read_only(path);
-  const auto format = read_attr<std::int64_t>(file, "radx_model_format_version");
-  if (format != kModelFormatVersion) {
-    throw Failure("model format version " + std::to_string(format) + " (written by radx " +
-                  read_string_attr(file, "radx_version") + "), this radx reads version " +
-                  std::to_string(kModelFormatVersion) + ": run the starter of this radx again");
-  }
-  m = Model{};
+void read_radx(hid_t file, Model& m) {
   const Handle radx = open_group(file, "radx");
   m.title = read_string_attr(radx, "title");
   m.run_name = read_string_attr(radx, "run_name");
   m.deck_version = read_attr<std::int32_t>(radx, "deck_version");
   m.total_mass = read_attr<double>(radx, "total_mass");
   read_record(open_group(radx, "units"), m.units);
-  {
-    const Handle nodes = open_group(radx, "nodes");
-    m.nodes.id = read_dataset<std::int64_t>(nodes, "id");
-    const std::vector<double> xyz = read_dataset<double>(nodes, "xyz", 3);
-    const std::size_t nn = m.nodes.size();
-    if (xyz.size() != 3 * nn)
-      throw Failure("dataset " + path_of(nodes, "xyz") + " does not match the node ids");
-    m.nodes.x.resize(nn);
-    m.nodes.y.resize(nn);
-    m.nodes.z.resize(nn);
-    for (std::size_t i = 0; i < nn; ++i) {
-      m.nodes.x[i] = xyz[3 * i];
-      m.nodes.y[i] = xyz[3 * i + 1];
-      m.nodes.z[i] = xyz[3 * i + 2];
-    }
-    std::int64_t duplicate = 0;
-    if (!m.nodes.index.build(m.nodes.id, duplicate)) {
-      throw Failure("dataset " + path_of(nodes, "id") + " repeats node id " + std::to_string(duplicate));
-    }
-  }
+  read_nodes(radx, m);
   m.node_mass = read_dataset<double>(radx, "node_mass");
   const Handle elements = open_group(radx, "elements");
-  for_each_block(
-      m, [&](const char* name, model::ElementBlock& b) { read_block(elements, name, b, m.nodes.size()); });
+  for_each_block(m, [&](const char* name, model::ElementBlock& b) { read_block(elements, name, b); });
   for_each_table(m, [&](const char* name, auto& recs) { read_table(radx, name, recs); });
   read_record_list(radx, "interfaces", m.interfaces);
   m.ignored_keywords = read_strings(radx, "ignored_keywords");
   m.substitutions = read_strings(radx, "substitutions");
+}
+
+// The stored fingerprint; missing attributes stay empty (reported by the caller).
+ModelFileFingerprint read_fingerprint(hid_t file) {
+  ModelFileFingerprint f;
+  f.format_version = read_attr<std::int64_t>(file, "radx_model_format_version");
+  f.radx_version = read_string_attr(file, "radx_version");
+  if (has_attr(file, "radx_commit")) f.radx_commit = read_string_attr(file, "radx_commit");
+  if (has_attr(file, "radx_run")) f.run = read_string_attr(file, "radx_run");
+  if (has_attr(file, "radx_deck_hash")) f.deck_hash = read_string_attr(file, "radx_deck_hash");
+  if (has_attr(file, "radx_deck_files")) f.deck_files = read_string_array_attr(file, "radx_deck_files");
+  if (has_attr(file, kContentHashAttribute)) f.content_hash = read_string_attr(file, kContentHashAttribute);
+  return f;
+}
+
+// Another layout cannot be read at all: the one problem, with both radx versions.
+bool same_format(const ModelFileFingerprint& f, ModelFileReading& r) {
+  if (f.format_version == kModelFormatVersion) return true;
+  r.problems.add(ModelFileCode::OtherFormat, "/@radx_model_format_version",
+                 "model-file format version " + std::to_string(f.format_version) + ", written by radx " +
+                     f.radx_version + (f.radx_commit.empty() ? "" : " (commit " + f.radx_commit + ")") +
+                     "; this radx " RADX_VERSION " reads version " + std::to_string(kModelFormatVersion) +
+                     " only: run the starter of this radx on the deck again");
+  return false;
+}
+
+void check_content_hash(hid_t file, ModelFileReading& r) {
+  auto& f = r.fingerprint;
+  f.computed_hash = model_content_hash(file);
+  if (f.content_hash == f.computed_hash) return;
+  r.problems.add(ModelFileCode::Changed, std::string("/@") + kContentHashAttribute,
+                 f.content_hash.empty()
+                     ? std::string("the file has no content hash: it was not written by a radx starter")
+                     : "the file was changed after the starter wrote it: its content hash is " +
+                           f.computed_hash + ", the starter stored " + f.content_hash +
+                           "; run the starter on the deck again rather than edit the model file");
+}
+
+// The IdMaps of a model whose ids passed the checks (positive and unique).
+void build_id_maps(Model& m) {
+  std::int64_t ignored = 0;
+  m.nodes.index.build(m.nodes.id, ignored);
+  for_each_block(m, [&](const char*, model::ElementBlock& b) { b.index.build(b.id, ignored); });
+}
+
+void read_file(const std::string& path, Model& m, ModelFileReading& r) {
+  Handle file = open_file_read_only(path);
+  r.fingerprint = read_fingerprint(file);
+  if (!same_format(r.fingerprint, r)) return;
+  check_content_hash(file, r);
+  m = Model{};
+  read_radx(file, m);
+  r.fingerprint.run_name = m.run_name;
   file.close("cannot close file " + path);
+  const ModelFileProblems content = check_model_content(m);
+  for (const auto& p : content.items) r.problems.add(p.code, p.where, p.message);
+  r.problems.count += content.count - content.items.size();
+  if (r.problems.empty()) build_id_maps(m);
 }
 
 }  // namespace
 
-bool write_model_file(const Model& m, const std::string& path, std::string& error) {
+ModelFileOrigin model_file_origin(std::string run, const std::vector<std::string>& deck_files,
+                                  std::string radx_commit) {
+  ModelFileOrigin o;
+  o.run = std::move(run);
+  o.deck_files = deck_files;
+  o.radx_commit = std::move(radx_commit);
+  std::uint64_t h = 0;
+  for (const auto& name : deck_files) {
+    h = hash_bytes(name.data(), name.size(), h);
+    std::ifstream in(name, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    h = hash_bytes(text.data(), text.size(), h);
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  o.deck_hash = hex;
+  return o;
+}
+
+bool write_model_file(const Model& m, const std::string& path, const ModelFileOrigin& origin,
+                      std::string& error) {
   const std::string part = path + ".part";
   try {
     const QuietHdf5 quiet;
-    write_file(m, part);
+    write_file(m, origin, part);
     replace_file(part, path);
     return true;
   } catch (const std::exception& e) {
@@ -748,14 +563,29 @@ bool write_model_file(const Model& m, const std::string& path, std::string& erro
   return false;
 }
 
-bool read_model_file(const std::string& path, Model& m, std::string& error) {
+bool write_model_file(const Model& m, const std::string& path, std::string& error) {
+  return write_model_file(m, path, ModelFileOrigin{}, error);
+}
+
+ModelFileReading read_model_file(const std::string& path, Model& m) {
+  ModelFileReading r;
   try {
     const QuietHdf5 quiet;
-    read_file(path, m);
-    return true;
+    read_file(path, m, r);
   } catch (const std::exception& e) {
-    error = "cannot read model file " + path + ": " + e.what();
+    r.error = e.what();
   }
+  return r;
+}
+
+bool read_model_file(const std::string& path, Model& m, std::string& error) {
+  const ModelFileReading r = read_model_file(path, m);
+  if (r.ok()) return true;
+  error = "cannot read model file " + path + ": " + (r.error.empty() ? "" : r.error);
+  for (const auto& p : r.problems.items)
+    error += (error.back() == ' ' ? "" : "; ") + p.where + ": " + p.message;
+  if (r.problems.count > r.problems.items.size())
+    error += "; and " + std::to_string(r.problems.count - r.problems.items.size()) + " more";
   return false;
 }
 

@@ -116,6 +116,21 @@ const std::vector<CodeInfo>& code_table() {
        "the engine deck has no /END line: it is read to the end of the file, as Radioss does"},
       {Diag::EngineRestartDecks,
        "NAME_0002.rad and later beside the engine deck: OpenRadioss restart decks, which radx does not run"},
+      {Diag::ModelFileBadReference,
+       "a model-file entry the engine cannot use: an index out of range, arrays of different lengths, a "
+       "repeated "
+       "id, an unknown code, a skew or sensor id the model lacks"},
+      {Diag::ModelFileBadValue,
+       "a model-file value the physics cannot take: not finite, a negative mass, density, modulus or "
+       "thickness, "
+       "every nodal mass 0"},
+      {Diag::ModelFileOtherFormat, "the model file is of another format version: written by another radx"},
+      {Diag::ModelFileChanged,
+       "the model file was changed after the starter wrote it (its content hash differs), or has no content "
+       "hash"},
+      {Diag::ModelFileOtherRun,
+       "the model file is the model of another run: the starter wrote it for another deck than the engine "
+       "deck's"},
   };
   return table;
 }

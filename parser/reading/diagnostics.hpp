@@ -16,7 +16,8 @@ namespace radx {
 enum class Severity : std::uint8_t { Note, Warning, Error };
 
 // Stable diagnostic codes. Numbering: 1xx files and lines, 2xx fields, 3xx keywords and cards,
-// 4xx ids and references, 5xx values, 6xx geometry and mesh, 7xx contact interfaces, 8xx engine deck.
+// 4xx ids and references, 5xx values, 6xx geometry and mesh, 7xx contact interfaces, 8xx engine deck, 9xx
+// the model file as the engine reads it (io/hdf5/model_file_checks.hpp uses the same numbers).
 enum class Diag : std::uint16_t {
   // files and lines
   FileNotFound = 101,
@@ -93,6 +94,12 @@ enum class Diag : std::uint16_t {
   EngineRunNameMismatch = 803,
   EngineNoEnd = 804,
   EngineRestartDecks = 805,
+  // model file
+  ModelFileBadReference = 901,
+  ModelFileBadValue = 902,
+  ModelFileOtherFormat = 903,
+  ModelFileChanged = 904,
+  ModelFileOtherRun = 905,
 };
 
 // "RX" + number, e.g. RX402. Never changes once released.

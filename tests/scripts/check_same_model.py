@@ -8,8 +8,9 @@ compares every model file with the reference's, independently of the C++ reader 
 groups and datasets, the same shapes, dtypes and values (exact: the decks write the same decimal text, so
 any difference is a field read from the wrong columns, a card read in the wrong order or a default applied
 differently), and the same attributes. Only /radx@deck_version, the format the deck was written in, may
-differ (it must be the deck's /BEGIN version). Exit 0 when every model file matches, 1 otherwise (each
-difference printed as "FAIL: ...").
+differ (it must be the deck's /BEGIN version), and with it the fingerprint of the deck (the root attributes
+radx_run, radx_deck_hash, radx_deck_files, radx_content_hash). Exit 0 when every model file matches, 1
+otherwise (each difference printed as "FAIL: ...").
 
 Needs h5py and numpy: run with /usr/bin/python3 (Debian python3-h5py, python3-numpy).
 """
@@ -86,6 +87,8 @@ def compare(ref_path, path, version):
                 where = "%s@%s" % (name, key)
                 if key not in r.attrs or key not in g.attrs:
                     fail("%s: attribute %s is only in one file" % (path, where))
+                elif name == "/" and key in ("radx_run", "radx_deck_hash", "radx_deck_files", "radx_content_hash"):
+                    continue  # the fingerprint of another deck (its run, its text; deck_version below)
                 elif name == "radx" and key == "deck_version":
                     if int(g.attrs[key]) != version:
                         fail("%s: deck_version %s, the deck says %d" % (path, g.attrs[key], version))
