@@ -12,8 +12,8 @@
 //   member (a column), variable-length members as CSR (values + <name>_offsets), nested structs
 //   flattened as <outer>_<inner>. Interfaces and Units are written one group per record: scalars as
 //   attributes, vectors as datasets.
-// - Big arrays (points, connectivity, element blocks) are written with one H5Dwrite each, contiguous
-//   layout, no fill, no conversion (memory and file types are both little-endian).
+// - Big arrays (points, connectivity, element blocks) are written with one H5Dwrite each, in checksummed
+//   chunks, no fill, no conversion (memory and file types are both little-endian).
 #include "io/hdf5/model_file.hpp"
 
 #include <hdf5.h>
@@ -638,7 +638,7 @@ void write_radx(hid_t file, const Model& m) {
 // Writes the whole file at `part`; closes it (and flushes it to disk) before returning.
 void write_file(const Model& m, const std::string& part) {
   check_vtkhdf_mesh(m);
-  Handle file = create_file(part);
+  WriteFile file = create_file(part);
   {
     const std::string version = RADX_VERSION;
     write_attr(file, "radx_model_format_version", &kModelFormatVersion);
@@ -646,7 +646,7 @@ void write_file(const Model& m, const std::string& part) {
     write_vtkhdf_mesh(file, m);
     write_radx(file, m);
   }
-  file.close("cannot close file " + part);
+  file.close();
   sync_file(part);
 }
 
