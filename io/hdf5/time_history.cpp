@@ -218,10 +218,10 @@ void TimeHistoryWriter::Impl::create_file() const {
 }
 
 // Disk space an in-place flush may take past the file's end, generously: the rows held twice (a partly
-// filled chunk is written anew elsewhere), two chunks more per group, and 1 MiB for the metadata that grows
-// with them (chunk indexes, object headers).
+// filled chunk is written anew elsewhere), two chunks more per group, and 64 KiB for the metadata that
+// grows with them (chunk indexes, object headers).
 std::uint64_t TimeHistoryWriter::Impl::flush_bytes() const {
-  std::uint64_t bytes = std::uint64_t{1} << 20;
+  std::uint64_t bytes = std::uint64_t{1} << 16;
   for (std::size_t i = 0; i < groups.size(); ++i) {
     const std::size_t cols = 1 + value_count(groups[i]);
     bytes += 2 * sizeof(double) * (data[i].size() + 2 * chunk_rows(cols) * cols);
