@@ -208,28 +208,17 @@ inline int* sec2_descriptor(hid_t obj) {
   return fd;
 }
 
-// Sets aside the disk space of everything allocated in the file of `obj` and not yet written (its holes and
-// what lies past its end), plus `bytes` more, so that HDF5's writes to come do not fail for want of space
-// (see WriteFile). Throws Failure naming the file and the system's reason when the space is not there: a full
-// disk, a quota, or a file size beyond the process's limit (RLIMIT_FSIZE, whose writes would fail with "File
-// too large"). File systems that cannot reserve space (fallocate) are written without.
-inline void reserve_space(hid_t obj, std::uint64_t bytes) {
-  int* fd = sec2_descriptor(obj);
+// Sets aside, on descriptor `fd` of file `name` whose allocated space ends at `allocated`, the disk space of
+// what is allocated and not yet written (its holes and what lies past its end) plus `bytes` more. Throws
+// Failure naming the file and the system's reason when the space is not there: a full disk, a quota, or a
+// file size beyond the process's limit (RLIMIT_FSIZE, whose writes would fail with "File too large"). File
+// systems that cannot reserve space (fallocate) are written without.
+inline void reserve_on(int fd, const std::string& name, std::uint64_t allocated, std::uint64_t bytes) {
   struct stat st {};
-  haddr_t eoa = 0;
-  if (fd == nullptr || ::fstat(*fd, &st) != 0) return;
-  {
-    const Handle file(H5Iget_file_id(obj), H5Fclose, "cannot find the file of an HDF5 object");
-    if (H5Fget_eoa(file, &eoa) < 0) {
-      H5Eclear2(H5E_DEFAULT);
-      return;
-    }
-  }
+  if (::fstat(fd, &st) != 0) return;
   const auto eof = static_cast<std::uint64_t>(st.st_size);
-  const std::uint64_t end = std::max<std::uint64_t>(eof, eoa) + bytes;
+  const std::uint64_t end = std::max<std::uint64_t>(eof, allocated) + bytes;
   const auto failure = [&](int error) {
-    std::string name(static_cast<std::size_t>(std::max<ssize_t>(0, H5Fget_name(obj, nullptr, 0))), '\0');
-    if (!name.empty()) H5Fget_name(obj, name.data(), name.size() + 1);
     return Failure("cannot write file " + name + ": " + std::strerror(error));
   };
   // With 64 KiB to spare: HDF5 allocates the metadata of the groups and attributes created between two
@@ -242,13 +231,45 @@ inline void reserve_space(hid_t obj, std::uint64_t bytes) {
   // From the first hole: HDF5 writes the metadata where it allocated it, among the raw data written since,
   // so a file being written has holes below its end until it is flushed. Space set aside is no hole any
   // more: each byte is reserved once.
-  const off_t hole = ::lseek(*fd, 0, SEEK_HOLE);
+  const off_t hole = ::lseek(fd, 0, SEEK_HOLE);
   const auto start = static_cast<std::uint64_t>(hole >= 0 ? hole : static_cast<off_t>(eof));
   if (start < end &&
-      ::fallocate(*fd, FALLOC_FL_KEEP_SIZE, static_cast<off_t>(start), static_cast<off_t>(end - start)) !=
-          0 &&
+      ::fallocate(fd, FALLOC_FL_KEEP_SIZE, static_cast<off_t>(start), static_cast<off_t>(end - start)) != 0 &&
       errno != EOPNOTSUPP && errno != ENOSYS && errno != EINVAL)
     throw failure(errno);
+}
+
+// reserve_on for the file of `obj` (a file open for writing, or an object in it), so that HDF5's writes to
+// come do not fail for want of space (see WriteFile).
+inline void reserve_space(hid_t obj, std::uint64_t bytes) {
+  int* fd = sec2_descriptor(obj);
+  haddr_t eoa = 0;
+  std::string name;
+  {
+    const Handle file(H5Iget_file_id(obj), H5Fclose, "cannot find the file of an HDF5 object");
+    const ssize_t n = H5Fget_name(file, nullptr, 0);
+    if (fd == nullptr || n < 0 || H5Fget_eoa(file, &eoa) < 0) {
+      H5Eclear2(H5E_DEFAULT);
+      return;
+    }
+    name.resize(static_cast<std::size_t>(n));
+    H5Fget_name(file, name.data(), name.size() + 1);
+  }
+  reserve_on(*fd, name, eoa, bytes);
+}
+
+// reserve_on for the existing file `path`, before it is opened for writing in place: a failure then leaves
+// the file as it was, its "open for writing" flag (write_access) not set.
+inline void reserve_space_at(const std::string& path, std::uint64_t bytes) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) return;  // the open for writing says why
+  try {
+    reserve_on(fd, path, 0, bytes);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  ::close(fd);
 }
 
 // Owner of an HDF5 file open for writing.

@@ -235,8 +235,8 @@ std::uint64_t TimeHistoryWriter::Impl::flush_bytes() const {
 // raised, one 8-byte write, so a reader that honours the count never reads a row of an unfinished flush.
 void TimeHistoryWriter::Impl::extend_file() const {
   {
+    h5::reserve_space_at(path, flush_bytes());
     h5::WriteFile file = h5::open_file_read_write(path, true);
-    file.reserve(flush_bytes());
     for (std::size_t i = 0; i < groups.size(); ++i) {
       const std::size_t cols = 1 + value_count(groups[i]);
       h5::append_rows<double>(file, groups[i].path, data[i], cols, static_cast<hsize_t>(on_disk));
