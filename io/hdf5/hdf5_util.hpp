@@ -477,12 +477,18 @@ inline void link_external(const std::string& file_name, const std::string& objec
 inline constexpr std::size_t kChunkBytes = std::size_t{1} << 20;
 
 // Chunk shape of a dataset of `dims` (not empty) whose values have `value_size` bytes: whole rows (every
-// dimension after the first in full), about kChunkBytes of them, at least one, at most the dataset's.
+// dimension after the first in full), the rows shared evenly among as many chunks of at most about
+// kChunkBytes as needed. Evenly, because HDF5 stores a dataset's last chunk whole however few of its rows
+// the dataset has: chunks of kChunkBytes would waste up to one per dataset (a 1.05 MiB array stored in 2
+// MiB).
 inline std::vector<hsize_t> chunk_shape(const std::vector<hsize_t>& dims, std::size_t value_size) {
   std::vector<hsize_t> chunk = dims;
   hsize_t row_bytes = value_size;
   for (std::size_t d = 1; d < dims.size(); ++d) row_bytes *= std::max<hsize_t>(1, dims[d]);
-  chunk[0] = std::clamp<hsize_t>(kChunkBytes / row_bytes, 1, std::max<hsize_t>(1, dims[0]));
+  const hsize_t rows = std::max<hsize_t>(1, dims[0]);
+  const hsize_t rows_per_chunk = std::max<hsize_t>(1, kChunkBytes / row_bytes);
+  const hsize_t chunks = (rows + rows_per_chunk - 1) / rows_per_chunk;
+  chunk[0] = (rows + chunks - 1) / chunks;
   return chunk;
 }
 
