@@ -394,14 +394,13 @@ void EngineOutputs::finish(const solver::RunResult& result, bool plot, std::ostr
   req.time_unit = s.model.units.time_name;
   req.energy_unit = io::unit_label(s.model.units, 1, 2, -2);
   req.samples = std::move(s.energy);  // the last use: a copy would double the samples at the very end
+  // The CSV is the data and is always written: a failure to write it is one of the run's outputs lost. The
+  // chart is a convenience (--no-plot skips it and its Python start-up): a missing tool is a warning.
+  std::string error;
+  if (!io::write_energy_csv(req, error)) throw std::runtime_error("energy balance not written: " + error);
   std::string warning;
-  if (!plot) {
-    // --no-plot skips only the chart (and its Python start-up); the CSV is the data and is always written.
-    if (!io::write_energy_csv(req, warning))
-      warn << "radx-engine: warning: energy balance not written: " << warning << '\n';
-    return;
-  }
-  if (!io::write_energy_plot(req, warning)) warn << "radx-engine: warning: " << warning << '\n';
+  if (plot && !io::draw_energy_png(req, io::kDebianPython, warning))
+    warn << "radx-engine: warning: " << warning << '\n';
 }
 
 int EngineOutputs::states_written() const {

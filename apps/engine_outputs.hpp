@@ -44,7 +44,8 @@ class EngineOutputs {
   // Called with every full report: writes what is due.
   void on_report(const solver::CycleReport& r);
   // At the end of the run (normal or error): the last state and time-history row if not yet written,
-  // the final time-history flush, and the energy plot (a missing plotting tool is a warning on `warn`).
+  // the final time-history flush, the energy CSV and the energy plot (a missing plotting tool is a warning
+  // on `warn`). Throws std::runtime_error naming the file that cannot be written.
   void finish(const solver::RunResult& result, bool plot, std::ostream& warn);
 
   [[nodiscard]] int states_written() const;

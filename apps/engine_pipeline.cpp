@@ -32,6 +32,7 @@
 #include "io/hdf5/results_writer.hpp"
 #include "io/listing/engine_listing.hpp"
 #include "io/listing/summary_json.hpp"
+#include "io/text_file.hpp"
 #include "parser/building/build_run_controls.hpp"
 #include "parser/building/plausibility.hpp"
 #include "parser/reading/deck.hpp"
@@ -236,7 +237,9 @@ bool read_checked_model(const std::string& model_path, const std::string& engine
   const io::ModelFileReading r = io::read_model_file(model_path, model);
   if (!r.error.empty()) {
     err << model_path << ": error: cannot read the model file: " << r.error << '\n';
-    err << starter_hint(model_path, root);
+    err << (r.error.find("the file is damaged") != std::string::npos
+                ? "  run the starter again to write the model file anew\n"
+                : starter_hint(model_path, root));
     return false;
   }
   Diagnostics diags;
@@ -352,15 +355,33 @@ void finish_outputs(EngineOutputs& outputs, bool plot, std::ostream& err, solver
   }
 }
 
-// The summary written, the reason also on standard error (where a batch system or a script looks for it), and
-// the exit code: 0 normal, 1 error, 128 + the signal for an interruption (as a shell reports it).
-int end_of_run(const io::RunSummary& s, const std::string& summary_path, int stopped_by, std::ostream& err) {
-  if (s.status == io::RunStatus::Error) err << "radx-engine: error termination: " << s.message << '\n';
+// A listing or summary that cannot be written makes the run an error termination, with that reason unless
+// the run already ended in error; the error goes to standard error at once.
+void fail_run(io::RunSummary& s, const std::string& why, std::ostream& err) {
+  err << "radx-engine: error: " << why << '\n';
+  if (s.status == io::RunStatus::Error) return;
+  s.status = io::RunStatus::Error;
+  s.message = why;
+}
+
+// The summary and the listing's termination lines written, the reason also on standard error (where a batch
+// system or a script looks for it), and the exit code: 0 normal, 1 error, 128 + the signal for an
+// interruption (as a shell reports it). The summary first, then the listing file, and standard output last:
+// it says NORMAL TERMINATION only when both were written. A summary that cannot be written leaves none.
+int end_of_run(io::RunSummary& s, io::EngineListing& listing, io::CheckedOutputFile& listing_file,
+               const std::string& summary_path, int stopped_by, std::ostream& err) {
+  const std::string listing_error = listing_file.error();
+  if (!listing_error.empty() && s.message.find(listing_error) == std::string::npos)
+    fail_run(s, "cannot write the listing: " + listing_error, err);
   std::string error;
-  if (!io::write_summary_json(summary_path, s, error)) {
-    err << "radx-engine: " << error << '\n';
-    return 1;
+  if (!io::write_summary_json(summary_path, s, error)) fail_run(s, "cannot write the summary: " + error, err);
+  listing.summary_to_file(s);
+  if (listing_error.empty() && !listing_file.error().empty()) {
+    fail_run(s, "cannot write the listing: " + listing_file.error(), err);
+    io::write_summary_json(summary_path, s, error);
   }
+  listing.summary_to_terminal(s);
+  if (s.status == io::RunStatus::Error) err << "radx-engine: error termination: " << s.message << '\n';
   if (s.status == io::RunStatus::Interrupted)
     err << "radx-engine: " << s.message << "; the last state, the summary and the listing are written\n";
   if (s.status == io::RunStatus::Interrupted) return 128 + stopped_by;
@@ -513,7 +534,7 @@ struct CycleWatch {
   const model::RunControls& controls;
   EngineOutputs& outputs;
   io::EngineListing& listing;
-  std::ostream& listing_file;
+  io::CheckedOutputFile& listing_file;
   std::ostream& err;
   io::RunSummary& s;
   std::chrono::steady_clock::time_point wall0 = std::chrono::steady_clock::now();
@@ -541,6 +562,10 @@ struct CycleWatch {
       outputs.on_report(r);
     } catch (const std::exception& e) {
       stop_message = std::string("cannot write the results: ") + e.what();
+      return false;
+    }
+    if (const std::string& e = listing_file.error(); !e.empty()) {
+      stop_message = "cannot write the listing: " + e;
       return false;
     }
     // Read once per cycle, on full reports only: a signal that lands after a partial report stops the next
@@ -683,7 +708,6 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
       opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;
   model::Model model;
   if (!read_checked_model(model_path, opt.engine_deck, root, controls, model, err)) return 1;
-  std::string error;
   s.mass_unit = model.units.mass_name;
   s.length_unit = model.units.length_name;
   s.time_unit = model.units.time_name;
@@ -713,9 +737,9 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   // no summary or one that says it did not finish.
   start_summary(s, model, engine, {&diags, &model_diags});
   const std::string listing_path = (fs::path(opt.out_dir) / (root + "_0001.out")).string();
-  std::ofstream listing_file(listing_path, std::ios::trunc);
-  if (!listing_file) {
-    err << "radx-engine: error: cannot write " << listing_path << '\n';
+  io::CheckedOutputFile listing_file(listing_path);
+  if (!listing_file.is_open()) {
+    err << "radx-engine: error: " << listing_file.error() << '\n';
     return 1;
   }
   // An error before the first cycle still leaves a summary that says so.
@@ -768,8 +792,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   set_final_status(s, result, watch.stopped_by, watch.stop_message);
   fill_run_summary(s, result, model, controls, engine, *outputs,
                    (fs::path(opt.out_dir) / (root + "_th.h5")).string());
-  listing.summary(s);
-  return end_of_run(s, summary_path, watch.stopped_by, err);
+  return end_of_run(s, listing, listing_file, summary_path, watch.stopped_by, err);
 }
 
 }  // namespace radx::app

@@ -3,6 +3,8 @@
 // keyword reference generated from the declarations; `radx th FILE` lists or exports a time history;
 // `radx regress DIR...` runs every deck under the folders given and compares them with their references
 // (apps/regress_command.hpp); `radx diff RUN_A RUN_B` compares two runs (io/compare/run_compare.hpp).
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -337,8 +339,13 @@ int th(const std::vector<std::string>& args) {
                 << " Hz that SAE J211 asks for the " << filter
                 << " class; the filter ran, but a finer /TFILE interval gives a truer pulse\n";
   }
-  const bool written = have_output ? radx::io::write_th_csv_file(groups, chosen, output, error, filter)
-                                   : radx::io::write_th_csv(groups, chosen, std::cout, error, filter);
+  bool written = have_output ? radx::io::write_th_csv_file(groups, chosen, output, error, filter)
+                             : radx::io::write_th_csv(groups, chosen, std::cout, error, filter);
+  // Standard output redirected to a file: a full disk shows only as the stream's state after the flush.
+  if (written && !have_output && !std::cout.flush()) {
+    error = std::string("cannot write the CSV to standard output: ") + std::strerror(errno);
+    written = false;
+  }
   if (!written) {
     std::cerr << "radx th: " << file << ": " << error << '\n';
     return radx::app::kExitInputError;

@@ -12,8 +12,8 @@
 //   count, one dataset per member (a column), variable-length members as CSR (values + <name>_offsets),
 //   nested structs flattened as <outer>_<inner>. Interfaces and Units are written one group per record:
 //   scalars as attributes, vectors as datasets.
-// - Big arrays (points, connectivity, element blocks) are written with one H5Dwrite each, contiguous
-//   layout, no fill, no conversion (memory and file types are both little-endian).
+// - Big arrays (points, connectivity, element blocks) are written with one H5Dwrite each, in checksummed
+//   chunks, no fill, no conversion (memory and file types are both little-endian).
 #include "io/hdf5/model_file.hpp"
 
 #include <hdf5.h>
@@ -407,13 +407,13 @@ void write_fingerprint(hid_t file, const ModelFileOrigin& origin) {
 // Writes the whole file at `part`; closes it (and flushes it to disk) before returning.
 void write_file(const Model& m, const ModelFileOrigin& origin, const std::string& part) {
   check_vtkhdf_mesh(m);
-  Handle file = create_file(part);
+  WriteFile file = create_file(part);
   write_fingerprint(file, origin);
   write_vtkhdf_mesh(file, m);
   write_radx(file, m);
-  check(H5Fflush(file, H5F_SCOPE_LOCAL), "cannot flush file " + part);
+  file.flush();
   write_string_attr(file, kContentHashAttribute, model_content_hash(file));
-  file.close("cannot close file " + part);
+  file.close();
   sync_file(part);
 }
 

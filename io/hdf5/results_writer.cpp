@@ -15,9 +15,9 @@
 // after that write; a reader that opens it during the write, or a kill inside the write, can see it cut
 // (a later state, or the next run, writes it whole again).
 //
-// Speed: the state's big arrays are written straight from the caller's spans, contiguous, without fill
-// value and without type conversion, one H5Dwrite per dataset (no chunking or compression: deflate would
-// cost seconds per state of a million nodes).
+// Speed: the state's big arrays are written straight from the caller's spans, without fill value and
+// without type conversion, one H5Dwrite per dataset, in chunks of about 1 MiB with a Fletcher32 checksum
+// each (hdf5_util.hpp; no compression: deflate would cost seconds per state of a million nodes).
 #include "io/hdf5/results_writer.hpp"
 
 #include <fcntl.h>
@@ -271,10 +271,10 @@ void ResultsWriter::Impl::write_mesh(const model::Model& model) {
   const std::string final_path = path(mesh_name());
   const std::string part = final_path + ".part";
   try {
-    h5::Handle file = h5::create_file(part);
+    h5::WriteFile file = h5::create_file(part);
     mesh = write_vtkhdf_mesh(file, model);
     write_mesh_extras(file, model);
-    file.close("cannot close file " + part);
+    file.close();
     h5::sync_file(part);
     h5::replace_file(part, final_path);
   } catch (...) {
@@ -311,7 +311,7 @@ void ResultsWriter::Impl::write_mesh_extras(hid_t file, const model::Model& mode
 
 void ResultsWriter::Impl::write_state_file(const std::string& part, const ResultState& state,
                                            int index) const {
-  h5::Handle file = h5::create_file(part);
+  h5::WriteFile file = h5::create_file(part);
   const std::string mesh_file = mesh_name();
   {
     const h5::Handle vtk = h5::create_group(file, "VTKHDF");
@@ -367,7 +367,7 @@ void ResultsWriter::Impl::write_state_file(const std::string& part, const Result
     unit(field_data, "StateIndex", "1");
     h5::write_dataset(field_data, "units", text_bytes(unit_lines));
   }
-  file.close("cannot close file " + part);
+  file.close();
   // On disk before the rename: after a system crash a listed state is complete, not an empty file.
   h5::sync_file(part);
 }

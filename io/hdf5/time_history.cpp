@@ -6,8 +6,8 @@
 //   dataset path of every group, in the order they were written, which is the order of the columns of
 //   `radx th --csv`).
 // - one float64 dataset [rows, 1 + columns] per group at the group's path ("global", "node/1"; the
-//   groups on the way are created), column 0 the time; chunked (about 16 KiB per chunk) with an
-//   unlimited first dimension, extended at each flush.
+//   groups on the way are created), column 0 the time; chunked (about 16 KiB per chunk, each with a
+//   Fletcher32 checksum) with an unlimited first dimension, extended at each flush.
 // - dataset attributes: columns (string array, one name per column: "time", then "<object id>:<variable>"
 //   object-major, or "<variable>" for the global group), units (string array, one per column), variables
 //   (string array), variable_units (string array, one per variable: the units of a group without objects
@@ -169,6 +169,7 @@ struct TimeHistoryWriter::Impl {
   std::chrono::steady_clock::time_point last_append = last_flush;
 
   [[nodiscard]] std::size_t buffered() const { return rows - on_disk; }
+  [[nodiscard]] std::uint64_t flush_bytes() const;
   void create_file() const;
   void extend_file() const;
 };
@@ -179,7 +180,7 @@ void TimeHistoryWriter::Impl::create_file() const {
   const std::string part = path + ".part";
   try {
     {
-      h5::Handle file = h5::create_file(part, true);
+      h5::WriteFile file = h5::create_file(part, true);
       h5::write_attr(file, "radx_th_format_version", &kFormatVersion);
       h5::write_string_attr(file, "time_unit", time_unit);
       std::vector<std::string> paths;
@@ -205,7 +206,7 @@ void TimeHistoryWriter::Impl::create_file() const {
         h5::write_string_attr(ds, "object_kind", g.object_kind);
         h5::write_string_attr(ds, "title", g.title);
       }
-      file.close("cannot close file " + part);
+      file.close();
     }
     h5::sync_file(part);
     h5::replace_file(part, path);
@@ -216,25 +217,38 @@ void TimeHistoryWriter::Impl::create_file() const {
   }
 }
 
+// Disk space an in-place flush may take past the file's end, generously: the rows held twice (a partly
+// filled chunk is written anew elsewhere), two chunks more per group, and 64 KiB for the metadata that
+// grows with them (chunk indexes, object headers).
+std::uint64_t TimeHistoryWriter::Impl::flush_bytes() const {
+  std::uint64_t bytes = std::uint64_t{1} << 16;
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    const std::size_t cols = 1 + value_count(groups[i]);
+    bytes += 2 * sizeof(double) * (data[i].size() + 2 * chunk_rows(cols) * cols);
+  }
+  return bytes;
+}
+
 // Later flushes extend every dataset in place to the same absolute row count and write the new rows at
 // the same absolute offset, so a failed flush retried later writes the same rows to the same places.
 // The rows go in first and are flushed (SWMR orders those writes); only then is the count of complete rows
 // raised, one 8-byte write, so a reader that honours the count never reads a row of an unfinished flush.
 void TimeHistoryWriter::Impl::extend_file() const {
   {
-    h5::Handle file = h5::open_file_read_write(path, true);
+    h5::reserve_space_at(path, flush_bytes());
+    h5::WriteFile file = h5::open_file_read_write(path, true);
     for (std::size_t i = 0; i < groups.size(); ++i) {
       const std::size_t cols = 1 + value_count(groups[i]);
       h5::append_rows<double>(file, groups[i].path, data[i], cols, static_cast<hsize_t>(on_disk));
     }
-    h5::check(H5Fflush(file, H5F_SCOPE_LOCAL), "cannot flush file " + path);
+    file.flush();
     {
       const std::int64_t complete = static_cast<std::int64_t>(rows);
       const std::string what = std::string("cannot write attribute ") + kRowsAttr + " of " + path;
       const h5::Handle attr(H5Aopen(file, kRowsAttr, H5P_DEFAULT), H5Aclose, what);
       h5::check(H5Awrite(attr, H5T_NATIVE_INT64, &complete), what);
     }
-    file.close("cannot close file " + path);
+    file.close();
   }
   h5::sync_file(path);
 }

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "io/signal/cfc_filter.hpp"
+#include "io/text_file.hpp"
 
 namespace radx::io {
 
@@ -310,13 +311,12 @@ bool write_th_csv_file(const std::vector<ThGroupData>& groups, const std::vector
   const std::string part = path + ".part";
   bool ok = false;
   {
-    std::ofstream f(part, std::ios::trunc | std::ios::binary);
-    if (!f) {
-      error = "cannot create " + part;
+    CheckedOutputFile f(part);
+    if (!f.is_open()) {
+      error = f.error();
     } else if (write_th_csv(groups, chosen, f, error, label)) {
-      f.close();
-      ok = !f.fail();
-      if (!ok) error = "cannot write " + part;
+      ok = f.error().empty();
+      if (!ok) error = f.error();
     }
   }
   std::error_code ec;

@@ -115,10 +115,11 @@ bool write_energy_csv(const EnergyPlotRequest& r, std::string& error) {
     text += '\n';
     written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
   }
+  const int failure = written ? 0 : errno;
   const bool closed = std::fclose(f) == 0;
   std::error_code ec;
   if (!written || !closed) {
-    error = "cannot write " + r.csv_path + " (disk full?)";
+    error = "cannot write " + r.csv_path + ": " + std::strerror(failure != 0 ? failure : errno);
     fs::remove(part, ec);
     return false;
   }

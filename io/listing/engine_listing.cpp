@@ -498,13 +498,23 @@ void EngineListing::message(std::string_view text) {
 }
 
 void EngineListing::summary(const RunSummary& s) {
+  summary_to_file(s);
+  summary_to_terminal(s);
+}
+
+void EngineListing::summary_to_file(const RunSummary& s) {
+  if (!s_.file) return;
   std::ostringstream os;
   write_run_summary(os, s);
-  if (s_.file) *s_.file << os.str() << std::flush;
-  if (s_.terminal) {
-    clear_progress();
-    *s_.terminal << os.str() << std::flush;
-  }
+  *s_.file << os.str() << std::flush;
+}
+
+void EngineListing::summary_to_terminal(const RunSummary& s) {
+  if (!s_.terminal) return;
+  std::ostringstream os;
+  write_run_summary(os, s);
+  clear_progress();
+  *s_.terminal << os.str() << std::flush;
 }
 
 }  // namespace radx::io

@@ -269,7 +269,11 @@ class EngineListing {
                 double min_interval = 0.5);
   // A free message line (a warning during the run) to the file and the terminal.
   void message(std::string_view text);
+  // The end-of-run block to both sinks; or to each alone, so a caller can learn whether the file took it
+  // before the terminal says how the run ended.
   void summary(const RunSummary& s);
+  void summary_to_file(const RunSummary& s);
+  void summary_to_terminal(const RunSummary& s);
   [[nodiscard]] std::size_t lines_written() const { return lines_; }
 
  private:

@@ -2,10 +2,12 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -280,21 +282,24 @@ std::string summary_json_path(const std::string& dir, const std::string& output_
   return (std::filesystem::path(dir) / (output_root + "_summary.json")).string();
 }
 
-bool write_summary_json(const std::string& path, const RunSummary& s, std::string& error) {
-  const std::string text = summary_json(s);
+namespace {
+
+// One attempt at the summary: through `path.part`, flushed to disk, and a rename. False with `error`
+// naming the file and the system's reason.
+bool write_summary_once(const std::string& path, const std::string& text, std::string& error) {
   const std::string part = path + ".part";
   std::FILE* f = std::fopen(part.c_str(), "wb");
   if (!f) {
-    error = "cannot create " + part;
+    error = "cannot create " + part + ": " + std::strerror(errno);
     return false;
   }
-  bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  ok = std::fflush(f) == 0 && ok;
-  ok = ::fsync(::fileno(f)) == 0 && ok;
-  ok = std::fclose(f) == 0 && ok;
+  int failure = std::fwrite(text.data(), 1, text.size(), f) == text.size() ? 0 : errno;
+  if (std::fflush(f) != 0 && failure == 0) failure = errno;
+  if (::fsync(::fileno(f)) != 0 && failure == 0) failure = errno;
+  if (std::fclose(f) != 0 && failure == 0) failure = errno;
   std::error_code ec;
-  if (!ok) {
-    error = "cannot write " + part;
+  if (failure != 0) {
+    error = "cannot write " + part + ": " + std::strerror(failure);
     std::filesystem::remove(part, ec);
     return false;
   }
@@ -305,6 +310,19 @@ bool write_summary_json(const std::string& path, const RunSummary& s, std::strin
     return false;
   }
   return true;
+}
+
+}  // namespace
+
+bool write_summary_json(const std::string& path, const RunSummary& s, std::string& error) {
+  const std::string text = summary_json(s);
+  if (write_summary_once(path, text, error)) return true;
+  // The summary there is the one written as the run started ("running"), which must not outlive the run:
+  // removed, which on a full disk also frees its space for a second try.
+  std::error_code ec;
+  if (!std::filesystem::remove(path, ec) || ec) return false;
+  std::string again;
+  return write_summary_once(path, text, again);
 }
 
 namespace {

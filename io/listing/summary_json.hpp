@@ -44,8 +44,10 @@ std::string summary_json(const RunSummary& s);
 // dir/ROOT_summary.json.
 std::string summary_json_path(const std::string& dir, const std::string& output_root);
 
-// Writes summary_json(s) to `path` through path + ".part" and a rename. False with `error` set on failure
-// (the .part file is removed).
+// Writes summary_json(s) to `path` through path + ".part" and a rename. False with `error` set on failure,
+// naming the file and the system's reason (the .part file is removed). When the .part cannot be written,
+// the summary at `path` (the "running" one of the run's start) is removed and the write tried once more:
+// on a full disk that frees the space it needs, and either way no stale summary is left.
 bool write_summary_json(const std::string& path, const RunSummary& s, std::string& error);
 
 // Reads `path` into `s`: status, message, run_name, run_number, version, commit, arch, units, cycles, time,

@@ -369,6 +369,12 @@ RegressResult evaluate_deck(const RegressDeck& deck, const ChildOutcome& child, 
     r.status = RegressStatus::RunError;
     return r;
   }
+  // A time history the run wrote that cannot be read (damaged: a checksum says so) is an output lost.
+  if (!files.th_error.empty()) {
+    r.status = RegressStatus::RunError;
+    r.detail = "cannot read the time history: " + files.th_error;
+    return r;
+  }
   const RunSummary& s = *files.summary;
   RunFigures fig;
   fig.cycles = s.cycles;

@@ -7,6 +7,9 @@
 #include "parser/building/model_builder.hpp"
 #include "parser/reading/deck.hpp"
 
+#include <signal.h>
+#include <sys/resource.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -49,6 +52,32 @@ class TempDir {
 
  private:
   std::filesystem::path path_;
+};
+
+// For its lifetime, writes past `bytes` in any file fail with EFBIG ("File too large"): the soft
+// RLIMIT_FSIZE of the process, SIGXFSZ ignored (whose default would end the process). How tests make a
+// write fail without a full disk.
+class FileSizeLimit {
+ public:
+  explicit FileSizeLimit(rlim_t bytes) {
+    ::getrlimit(RLIMIT_FSIZE, &saved_);
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    ::sigaction(SIGXFSZ, &ignore, &saved_action_);
+    struct rlimit limit = saved_;
+    limit.rlim_cur = bytes;
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+  }
+  ~FileSizeLimit() {
+    ::setrlimit(RLIMIT_FSIZE, &saved_);
+    ::sigaction(SIGXFSZ, &saved_action_, nullptr);
+  }
+  FileSizeLimit(const FileSizeLimit&) = delete;
+  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+
+ private:
+  struct rlimit saved_ {};
+  struct sigaction saved_action_ {};
 };
 
 // A card line built field by field: put(value, first_col, last_col) right-justifies the value.
