@@ -759,7 +759,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   }
   s.status = io::RunStatus::Running;
   s.message = "the run has started; this summary is replaced when it ends";
-  if (!io::write_summary_json(summary_path, s, error)) return early_error(error);
+  if (std::string error; !io::write_summary_json(summary_path, s, error)) return early_error(error);
   io::EngineListing listing(io::ListingSinks{&listing_file, &out, controls.print_stdout,
                                              io::stdout_is_terminal(), controls.print_header_every});
   io::EngineListingHeader h = listing_header(opt, model, model_path, root, controls, {&diags, &model_diags});
