@@ -499,10 +499,16 @@ struct Type7Contact::Impl {
 
   // The pair's slip mobility 1 / m_slip = [s free] / m_s + sum_j [j free] h_j^2 / m_j (1/kg): the change of
   // the relative velocity per unit force on the secondary node (and -h_j of it on main node j); 0 when
-  // nothing can move. The same measure as a LAGDT row's (lagrange_contact.cpp).
+  // nothing can move. The same measure as a LAGDT row's (lagrange_contact.cpp). A node whose motion a
+  // kinematic condition sets (imposed velocity, rigid body, rigid wall: `held`) does not yield to the pair's
+  // force with its own nodal mass: it counts as fixed, so a rigid impactor's pairs are not capped below
+  // the law's force.
   double slip_mobility(std::int32_t s_node, const std::array<std::int32_t, 4>& seg,
                        const std::array<double, 4>& h, const ContactNodes& nodes) const {
-    auto is_free = [&](std::int32_t n) { return (nodes.fixed[static_cast<std::size_t>(n)] & 7u) != 7u; };
+    auto is_free = [&](std::int32_t n) {
+      const auto k = static_cast<std::size_t>(n);
+      return (nodes.fixed[k] & 7u) != 7u && (nodes.held.empty() || !nodes.held[k]);
+    };
     auto inverse_mass = [&](std::int32_t n) {
       const double m = nodes.mass[static_cast<std::size_t>(n)];
       return is_free(n) && m > 0 ? 1.0 / m : 0.0;

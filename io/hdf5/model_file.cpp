@@ -275,10 +275,47 @@ std::size_t read_count(hid_t g) {
   return static_cast<std::size_t>(count);
 }
 
+// A table's count bounded by its columns before anything is allocated for it: every column has count rows
+// (a CSR column's offsets count + 1), so a count above the longest column's rows is damage, and allocating
+// it first could take the memory of the machine.
+std::size_t read_table_count(hid_t g) {
+  const std::size_t count = read_count(g);
+  if (count == 0) return 0;
+  H5G_info_t info{};
+  check(H5Gget_info(g, &info), "cannot read group " + path_of(g, ""));
+  hsize_t longest = 0;
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const Handle obj(H5Oopen_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, H5P_DEFAULT), H5Oclose,
+                     "cannot open a member of " + path_of(g, ""));
+    if (H5Iget_type(obj) != H5I_DATASET) continue;
+    const Handle space(H5Dget_space(obj), H5Sclose, "cannot read a dataset of " + path_of(g, ""));
+    hsize_t dims[2] = {0, 0};
+    if (H5Sget_simple_extent_ndims(space) >= 1) H5Sget_simple_extent_dims(space, dims, nullptr);
+    longest = std::max(longest, dims[0]);
+  }
+  if (count > longest) {
+    throw Failure("attribute count of " + path_of(g, "") + " is " + std::to_string(count) +
+                  ", more than its longest column holds (" + std::to_string(longest) + " rows)");
+  }
+  return count;
+}
+
+// A record list's count bounded by its record groups ("0", "1", ...) before anything is allocated.
+std::size_t read_record_count(hid_t g) {
+  const std::size_t count = read_count(g);
+  H5G_info_t info{};
+  check(H5Gget_info(g, &info), "cannot read group " + path_of(g, ""));
+  if (count > info.nlinks) {
+    throw Failure("attribute count of " + path_of(g, "") + " is " + std::to_string(count) +
+                  ", more than its " + std::to_string(info.nlinks) + " records");
+  }
+  return count;
+}
+
 template <class T>
 void read_table(hid_t parent, const std::string& name, std::vector<T>& recs) {
   const Handle g = open_group(parent, name);
-  recs.assign(read_count(g), T{});
+  recs.assign(read_table_count(g), T{});
   for_each_field<T>([&](const char* col, auto member) { read_column(g, col, recs, member_of(member)); });
 }
 
@@ -348,7 +385,7 @@ void write_record_list(hid_t parent, const std::string& name, const std::vector<
 template <class T>
 void read_record_list(hid_t parent, const std::string& name, std::vector<T>& recs) {
   const Handle g = open_group(parent, name);
-  recs.assign(read_count(g), T{});
+  recs.assign(read_record_count(g), T{});
   for (std::size_t i = 0; i < recs.size(); ++i) read_record(open_group(g, std::to_string(i)), recs[i]);
 }
 

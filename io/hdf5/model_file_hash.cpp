@@ -79,7 +79,11 @@ class FileHasher {
  public:
   [[nodiscard]] std::uint64_t value() const { return h_; }
 
-  void group(hid_t g, const std::string& path) {
+  // depth: a radx model file nests groups four deep at most; a damaged file whose group links back into
+  // its own subtree would otherwise recurse until the stack ran out.
+  void group(hid_t g, const std::string& path, int depth = 0) {
+    if (depth > kMaxDepth)
+      fail("group " + path + " is nested deeper than any radx model file (a link loop?)");
     text(path);
     attributes(g, path == "/");
     H5G_info_t info{};
@@ -89,7 +93,7 @@ class FileHasher {
       const std::string child = (path == "/" ? "/" : path + "/") + name;
       const Handle obj(H5Oopen(g, name.c_str(), H5P_DEFAULT), H5Oclose, "cannot open " + child);
       switch (H5Iget_type(obj)) {
-        case H5I_GROUP: group(obj, child); break;
+        case H5I_GROUP: group(obj, child, depth + 1); break;
         case H5I_DATASET: dataset(obj, child); break;
         default: text(child); break;  // a named datatype: its name only
       }
@@ -97,6 +101,7 @@ class FileHasher {
   }
 
  private:
+  static constexpr int kMaxDepth = 32;
   std::uint64_t h_ = 0;
 
   void bytes(const void* data, std::size_t size) { h_ = hash_bytes(data, size, h_); }

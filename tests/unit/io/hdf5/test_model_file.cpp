@@ -1151,6 +1151,31 @@ TEST_CASE("model file: read failures are reported", "[io][model_file]") {
     REQUIRE_FALSE(radx::io::read_model_file(path, m, error));
     CHECK(error.find("/radx/materials/young") != std::string::npos);
   }
+
+  // A damaged count must be refused before anything is allocated for it: 2e9 records of a material would
+  // take hundreds of gigabytes (an out-of-memory kill, not an error).
+  SECTION("a table count beyond its columns is refused before it is allocated") {
+    const std::string path = dir.file("C_0000.hdf");
+    REQUIRE(radx::io::write_model_file(make_model(), path, error));
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    REQUIRE(file >= 0);
+    // Replaced as h5py's attrs.modify replaces it: deleted, then created again with the new value.
+    const hid_t group = H5Gopen2(file, "/radx/materials", H5P_DEFAULT);
+    REQUIRE(group >= 0);
+    REQUIRE(H5Adelete(group, "count") >= 0);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attr = H5Acreate2(group, "count", H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT);
+    REQUIRE(attr >= 0);
+    const std::int64_t huge = 2'000'000'000;
+    REQUIRE(H5Awrite(attr, H5T_NATIVE_INT64, &huge) >= 0);
+    H5Aclose(attr);
+    H5Sclose(space);
+    H5Gclose(group);
+    H5Fclose(file);
+    REQUIRE_FALSE(radx::io::read_model_file(path, m, error));
+    CHECK(error.find("attribute count of /radx/materials is 2000000000, more than its longest column") !=
+          std::string::npos);
+  }
 }
 
 // A write that fails inside HDF5 (here past a file size limit) once left a freed file object behind an open
