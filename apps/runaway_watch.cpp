@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "solver/engine/step_control_names.hpp"
+
 namespace radx::app {
 
 namespace {
@@ -18,38 +20,6 @@ std::string num(double v) {
 }
 
 }  // namespace
-
-std::string step_control_name(const solver::StepControl& c) {
-  using K = solver::StepControl::Kind;
-  const std::string id = std::to_string(c.user_id);
-  switch (c.kind) {
-    case K::Interface: return "interface " + id + " (secondary node " + std::to_string(c.node_id) + ")";
-    case K::Spring: return "spring " + id;
-    case K::Brick: return "brick " + id;
-    case K::Tetra: return "tetrahedron " + id;
-    case K::Shell: return "shell " + id;
-    case K::Shell3: return "3-node shell " + id;
-    case K::Truss: return "truss " + id;
-    case K::Beam: return "beam " + id;
-    case K::Node: return "node " + id + " (/DT/NODA)";
-    case K::Imposed: return "/DTIX";
-    case K::None: break;
-  }
-  return "nothing named";
-}
-
-std::string step_stop_keyword(const solver::StepControl& c) {
-  using K = solver::StepControl::Kind;
-  switch (c.kind) {
-    case K::Interface: return "/DT/INTER/STOP";
-    case K::Spring: return "/DT/SPRING/STOP";
-    case K::Brick:
-    case K::Tetra: return "/DT/BRICK/STOP";
-    case K::Shell: return "/DT/SHELL/STOP";
-    case K::Shell3: return "/DT/SH_3N/STOP";
-    default: return "/DT";
-  }
-}
 
 std::string wall_time_words(double seconds) {
   constexpr double kMinute = 60, kHour = 3600, kDay = 86400, kYear = 365.25 * kDay;
@@ -77,7 +47,7 @@ std::string RunawayWatch::check(const solver::CycleReport& r, double wall_second
   const double per_cycle = wall_seconds / static_cast<double>(r.cycle);
   std::string m = "the run will not end in any reasonable time: the time step has fallen to " + num(r.dt) +
                   " " + time_unit_ + " (since cycle " + std::to_string(since_) + "), set by " +
-                  step_control_name(r.control) + "; the " + num(t_stop_ - r.time) + " " + time_unit_ +
+                  solver::step_control_name(r.control) + "; the " + num(t_stop_ - r.time) + " " + time_unit_ +
                   " left to the end time take about " + num(left) + " more cycles";
   if (estimated_cycles_ > 0)
     m += ", " + num(left / estimated_cycles_) + " times the starter's estimate of the whole run (" +
@@ -85,7 +55,7 @@ std::string RunawayWatch::check(const solver::CycleReport& r, double wall_second
   m += "; at the " + num(per_cycle * 1e6) + " us per cycle measured so far that is " +
        wall_time_words(left * per_cycle) + " of wall time";
   if (!stops)
-    m += ". The run goes on; --stop-if-runaway (or " + step_stop_keyword(r.control) +
+    m += ". The run goes on; --stop-if-runaway (or " + solver::step_stop_keyword(r.control.kind) +
          " with a Tmin) stops such a run";
   return m +
          "; check what sets the step (a steep contact or spring law, a tiny or crushed element, the units)";

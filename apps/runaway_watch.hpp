@@ -42,10 +42,6 @@ class RunawayWatch {
   std::int64_t since_ = -1;  // the first cycle of the current fall, -1 when the step is not fallen
 };
 
-// What controls the step, in words: "interface 1 (secondary node 101)", "spring 5", "brick 12", ...
-std::string step_control_name(const solver::StepControl& c);
-// The /DT keyword whose Tmin stops a run whose step this control sets.
-std::string step_stop_keyword(const solver::StepControl& c);
 // A wall time in the unit that reads best: "42 s", "3.5 h", "12 days", "3.1e+04 years".
 std::string wall_time_words(double seconds);
 

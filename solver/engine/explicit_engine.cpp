@@ -5,6 +5,7 @@
 // mid-side node, no inertia for these; TYPE8 springs I/2 per node;
 // type-3 beams as add_beam_inertias says (trusses carry none).
 #include "solver/engine/explicit_engine.hpp"
+#include "solver/engine/step_control_names.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -1098,8 +1099,7 @@ void ExplicitEngine::assemble_and_accelerate(bool accelerate) {
 // would name: the first group with the smallest step (ties go to the earlier group).
 namespace {
 
-// The /DT/<family>/STOP control of the elements a vote comes from (null for families without one), the
-// family's keyword word and an element's name.
+// The /DT/<family>/STOP control of the elements a vote comes from (null for families without one).
 const model::DtControl* stop_family(StepControl::Kind kind, const model::RunControls& c) {
   switch (kind) {
     case StepControl::Kind::Brick:
@@ -1110,29 +1110,11 @@ const model::DtControl* stop_family(StepControl::Kind kind, const model::RunCont
     default: return nullptr;
   }
 }
-const char* step_family_keyword(StepControl::Kind kind) {
-  switch (kind) {
-    case StepControl::Kind::Shell: return "SHELL";
-    case StepControl::Kind::Shell3: return "SH_3N";
-    case StepControl::Kind::Spring: return "SPRING";
-    default: return "BRICK";
-  }
-}
 std::string short_number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", v);
   return buf;
 }
-const char* step_family_name(StepControl::Kind kind) {
-  switch (kind) {
-    case StepControl::Kind::Shell: return "shell";
-    case StepControl::Kind::Shell3: return "3-node shell";
-    case StepControl::Kind::Spring: return "spring";
-    case StepControl::Kind::Tetra: return "tetrahedron";
-    default: return "brick";
-  }
-}
-
 }  // namespace
 
 double ExplicitEngine::element_time_step(StepControl& control) {
@@ -1142,9 +1124,8 @@ double ExplicitEngine::element_time_step(StepControl& control) {
     if (const auto* fam = stop_family(v.kind, controls_); fam != nullptr && fam->given &&
                                                           fam->action == model::DtAction::Stop &&
                                                           v.dt < fam->t_min && step_stop_.empty())
-      step_stop_ = std::string(step_family_name(v.kind)) + " " + std::to_string(v.user_id) +
-                   " has the step " + short_number(v.dt) + ", below the /DT/" + step_family_keyword(v.kind) +
-                   "/STOP minimum " + short_number(fam->t_min);
+      step_stop_ = step_control_name(StepControl{v.kind, v.user_id}) + " has the step " + short_number(v.dt) +
+                   ", below the " + step_stop_keyword(v.kind) + " minimum " + short_number(fam->t_min);
     switched_elements_ += v.switched;
     if (v.violation_id != 0 && cst_violation_.empty())
       cst_violation_ = "element " + std::to_string(v.violation_id) + " was held at the /DT/.../CST step " +
