@@ -837,8 +837,16 @@ void Checker::check_skews_and_sections() {
   for (std::size_t i = 0; i < m_.skews.size(); ++i) {
     const auto& s = m_.skews[i];
     const Owner o{"skew", s.id};
-    for (const auto& [column, n] : {std::pair{"n1", s.n1}, std::pair{"n2", s.n2}, std::pair{"n3", s.n3}})
-      index(std::string("/radx/skews/") + column, i, -1, o, "node index", n, nodes(), true);
+    // A moving skew follows three nodes, all needed every cycle; a fixed one names none.
+    const bool fixed = !s.moving();
+    for (const auto& [column, n] : {std::pair{"n1", s.n1}, std::pair{"n2", s.n2}, std::pair{"n3", s.n3}}) {
+      if (fixed && n != kNone)
+        bad(entry(std::string("/radx/skews/") + column, i),
+            o.text() + ": node index " + std::to_string(n) +
+                " given to a fixed skew (n1 is -1); expected -1");
+      else if (!fixed)
+        index(std::string("/radx/skews/") + column, i, -1, o, "node index", n, nodes(), false);
+    }
     code(entry("/radx/skews/dir", i), o, "direction", s.dir, {0, 1, 2}, "0, 1 or 2");
   }
   unique_record_ids("sections", "section", m_.sections);

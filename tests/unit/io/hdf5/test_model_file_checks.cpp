@@ -207,6 +207,23 @@ TEST_CASE("model-file checks: counts, ids and codes", "[io][model_file_checks]")
     m.bcs[0].skew = 424242;
     expect_one(m, ModelFileCode::BadReference, "/radx/bcs/skew[0]", {"skew 424242 names no skew"});
   }
+  SECTION("a moving skew missing one of its three nodes, a fixed skew naming one") {
+    // The fuzzer's finding: a /SKEW/MOV whose second node reads -1 made the engine index node -1 each cycle.
+    Model m = ok;
+    radx::model::Skew moving;
+    moving.id = 71;
+    moving.n1 = 0;
+    moving.n2 = radx::model::kNone;
+    moving.n3 = 2;
+    m.skews.push_back(moving);
+    expect_one(m, ModelFileCode::BadReference, "/radx/skews/n2[" + std::to_string(m.skews.size() - 1) + "]",
+               {"skew 71", "node index -1 is out of range"});
+    m.skews.back().n1 = radx::model::kNone;
+    m.skews.back().n2 = 1;
+    m.skews.back().n3 = radx::model::kNone;
+    expect_one(m, ModelFileCode::BadReference, "/radx/skews/n2[" + std::to_string(m.skews.size() - 1) + "]",
+               {"skew 71", "given to a fixed skew"});
+  }
   SECTION("function abscissas that do not increase") {
     Model m = ok;
     REQUIRE(!m.functions.empty());
