@@ -5,7 +5,9 @@
 //   test_comm_mpi --lose-rank R N   every rank loops votes; rank R kills itself (SIGKILL) at iteration N, as
 //   a
 //                                   crashed or OOM-killed rank would. The others must not hang: mpirun ends
-//                                   the job (tests/mpi/check_rank_lost.py).
+//                                   the job (tests/mpi/check_mpi_failures.py).
+//   test_comm_mpi --bad-root        every rank gathers to a root that does not exist: the MPI call fails, and
+//                                   the communicator names it and ends every rank.
 #include <signal.h>
 #include <unistd.h>
 
@@ -62,8 +64,13 @@ int main(int argc, char** argv) {
   radx::app::MpiComm comm(&argc, &argv);
   if (argc == 4 && std::strcmp(argv[1], "--lose-rank") == 0)
     return lose_rank(comm, std::atoi(argv[2]), std::atoi(argv[3]));
+  if (argc == 2 && std::strcmp(argv[1], "--bad-root") == 0) {
+    (void)comm.gather(Buffer(8), comm.size());
+    return 0;  // not reached: the failed call ends every rank
+  }
   if (argc != 1) {
-    if (comm.rank() == 0) std::fprintf(stderr, "usage: test_comm_mpi [--lose-rank RANK ITERATION]\n");
+    if (comm.rank() == 0)
+      std::fprintf(stderr, "usage: test_comm_mpi [--lose-rank RANK ITERATION | --bad-root]\n");
     return 2;
   }
   return run_checks(comm);
