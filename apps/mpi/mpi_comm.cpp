@@ -160,6 +160,7 @@ std::vector<Buffer> MpiComm::exchange(const std::vector<Buffer>& to_rank) {
         rank_, "MPI_Alltoall (message sizes)");
   std::vector<Buffer> received(P);
   std::vector<MPI_Request> requests;
+  requests.reserve(2 * P);
   const auto me = static_cast<std::size_t>(rank_);
   // Only non-empty messages travel; its own comes back by copy.
   for (std::size_t r = 0; r < P; ++r) {
