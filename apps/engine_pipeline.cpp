@@ -40,6 +40,7 @@
 #include "solver/engine/explicit_engine.hpp"
 #include "solver/model/run_files.hpp"
 #include "solver/model/stable_step.hpp"
+#include "solver/parallel/serial_comm.hpp"
 
 namespace radx::app {
 
@@ -317,6 +318,17 @@ void report_cycle_messages(solver::ExplicitEngine& engine, const solver::CycleRe
     std::snprintf(at, sizeof at, " (cycle %lld, t = %.5E)", static_cast<long long>(r.cycle), r.time);
     listing.message(" " + m + at);
   }
+}
+
+// A run on more than one rank needs what the engine does not have yet: it does not split the model over
+// ranks. Refused before anything is read or written, by rank 0 alone (the other ranks say nothing), with the
+// same exit code on every rank.
+int refuse_distributed_run(const solver::parallel::Comm& comm, std::ostream& err) {
+  if (comm.rank() == 0)
+    err << "radx-engine-mpi: error: runs on more than one rank are not available yet: the engine does not "
+           "split the model over ranks (node owners, ghost nodes, the keyed exchange of shared-node forces, "
+           "gathered outputs); run with mpirun -np 1, or radx-engine\n";
+  return 1;
 }
 
 // How the run ended: normally, interrupted by a signal, or in error; and the reason.
@@ -672,6 +684,9 @@ void remove_earlier_engine_outputs(const std::string& out_dir, const std::string
 }
 
 int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
+  solver::parallel::SerialComm one_rank;
+  const solver::parallel::Comm& comm = opt.comm != nullptr ? *opt.comm : one_rank;
+  if (comm.size() > 1) return refuse_distributed_run(comm, err);
   // Before anything that takes time (reading the deck and the model, setting up): a signal during it stops
   // the run before its first cycle, and the default action (an end without a summary) never meets it.
   const StopSignals stop_signals;

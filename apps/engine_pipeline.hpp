@@ -6,6 +6,10 @@
 #include <iosfwd>
 #include <string>
 
+namespace radx::solver::parallel {
+class Comm;
+}
+
 namespace radx::app {
 
 struct EngineOptions {
@@ -17,9 +21,13 @@ struct EngineOptions {
   // --stop-if-runaway: a run whose step leaves more cycles to the end time than it can take
   // (apps/runaway_watch.hpp) stops with an error termination instead of going on with a warning.
   bool stop_if_runaway = false;
+  // The ranks the run is on: radx-engine gives a SerialComm, radx-engine-mpi an MpiComm
+  // (apps/engine_cli.hpp); null is one rank. Rank 0 alone prints and writes files. Until the engine splits
+  // the model over ranks, a run on more than one rank is refused before anything is read or written.
+  solver::parallel::Comm* comm = nullptr;
 };
 
-// 0 normal termination, 1 input error or error termination.
+// 0 normal termination, 1 input error or error termination (also every rank of a run on more than one rank).
 int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err);
 
 // Removes what an earlier engine run of `root` left in `out_dir` (summary, energy files, time history,
