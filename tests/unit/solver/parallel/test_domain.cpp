@@ -4,7 +4,6 @@
 // P = 2, 3, 4 and two group splits, on sample decks with shells (4- and 3-node), bricks, tetrahedra,
 // 20-node bricks, springs, trusses and beams, after a few cycles so the groups hold real forces.
 #include <algorithm>
-#include <barrier>
 #include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -15,11 +14,11 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <type_traits>
 #include <vector>
 
 #include "contact/type7_prepare.hpp"
+#include "loopback_comm.hpp"
 #include "solver/engine/explicit_engine.hpp"
 #include "solver/parallel/domain.hpp"
 #include "test_util.hpp"
@@ -483,48 +482,6 @@ TEST_CASE("node owners, owned runs, ghost lists and skyline slots are consistent
   }
 }
 
-namespace {
-
-// P ranks as P threads of one process: exchange() only, the one collective the domain uses.
-class ThreadComm final : public par::Comm {
- public:
-  struct Shared {
-    explicit Shared(int P)
-        : ranks(P),
-          sync(P),
-          mail(static_cast<std::size_t>(P), std::vector<par::Buffer>(static_cast<std::size_t>(P))) {}
-    int ranks;
-    std::barrier<> sync;
-    std::vector<std::vector<par::Buffer>> mail;  // [from][to]
-  };
-  ThreadComm(Shared& shared, int rank) : shared_(shared), rank_(rank) {}
-  [[nodiscard]] int rank() const override { return rank_; }
-  [[nodiscard]] int size() const override { return shared_.ranks; }
-  std::vector<par::Buffer> exchange(const std::vector<par::Buffer>& to_rank) override {
-    shared_.mail[static_cast<std::size_t>(rank_)] = to_rank;
-    shared_.sync.arrive_and_wait();
-    std::vector<par::Buffer> got(static_cast<std::size_t>(shared_.ranks));
-    for (std::size_t s = 0; s < got.size(); ++s) got[s] = shared_.mail[s][static_cast<std::size_t>(rank_)];
-    shared_.sync.arrive_and_wait();  // nobody overwrites its mail before every rank has read it
-    return got;
-  }
-  par::Vote vote(const par::Vote&) override { throw std::logic_error("not used"); }
-  void max(std::span<double>) override { throw std::logic_error("not used"); }
-  void sum_exact(std::span<std::int64_t>) override { throw std::logic_error("not used"); }
-  void bit_or(std::span<std::uint64_t>) override { throw std::logic_error("not used"); }
-  std::vector<par::Buffer> gather(const par::Buffer&, int) override { throw std::logic_error("not used"); }
-  std::vector<par::Buffer> all_gather(const par::Buffer&) override { throw std::logic_error("not used"); }
-  void broadcast(par::Buffer&, int) override { throw std::logic_error("not used"); }
-  void barrier() override { shared_.sync.arrive_and_wait(); }
-  [[noreturn]] void abort(int, const std::string&) override { std::abort(); }
-
- private:
-  Shared& shared_;
-  int rank_;
-};
-
-}  // namespace
-
 TEST_CASE("through a communicator, owners get the serial sums and ghosts the owners' x, v and omega",
           "[parallel][domain]") {
   const RunSample run(radx::test::model_of_deck(mixed_mesh_deck()), 4);
@@ -554,19 +511,14 @@ TEST_CASE("through a communicator, owners get the serial sums and ghosts the own
         s.wx[n] = serial_nodes.wx[n], s.wy[n] = serial_nodes.wy[n], s.wz[n] = serial_nodes.wz[n];
       }
   }
-  ThreadComm::Shared shared_comm(P);
-  std::vector<std::thread> threads;
-  for (int r = 0; r < P; ++r)
-    threads.emplace_back([&, r] {
-      const auto k = static_cast<std::size_t>(r);
-      ThreadComm comm(shared_comm, r);
-      par::SharedSums shared(plans[k]);
-      for (const std::int64_t flat : plans[k].groups)
-        par::add_owned_group_sums(groups, plans[k], flat, sums[k], shared);
-      par::exchange_shared_sums(shared, comm, sums[k]);
-      par::exchange_ghosts(plans[k], comm, state[k]);
-    });
-  for (auto& t : threads) t.join();
+  radx::test::run_ranks(P, [&](par::Comm& comm) {
+    const auto k = static_cast<std::size_t>(comm.rank());
+    par::SharedSums shared(plans[k]);
+    for (const std::int64_t flat : plans[k].groups)
+      par::add_owned_group_sums(groups, plans[k], flat, sums[k], shared);
+    par::exchange_shared_sums(shared, comm, sums[k]);
+    par::exchange_ghosts(plans[k], comm, state[k]);
+  });
 
   std::int64_t wrong_sums = 0, wrong_ghosts = 0, ghosts = 0, rotations = 0;
   for (std::size_t r = 0; r < static_cast<std::size_t>(P); ++r) {
