@@ -1,7 +1,7 @@
 """radx-engine-mpi on 1, 2 and 3 ranks against radx-engine, to the bit (docs/parallel.md).
 
 usage: /usr/bin/python3 run_np.py --radx-starter EXE --radx-engine EXE --radx-engine-mpi EXE --mpirun MPIRUN
-           --out DIR [--np 1,2,3] [--refused DECK_0000.rad...] DECK_0000.rad...
+           --out DIR [--np 1,2,3] [--refused DECK_0000.rad]... DECK_0000.rad...
 
   * Each deck (NAME_0000.rad, its engine deck NAME_0001.rad beside it) runs through the starter once, then
     through `radx-engine --threads 1` and `mpirun -np P radx-engine-mpi --threads 1` for each P, each in its
@@ -117,7 +117,7 @@ def main():
         ap.add_argument(opt, required=True)
     ap.add_argument("--h5diff", default="h5diff")
     ap.add_argument("--np", default="1,2,3")
-    ap.add_argument("--refused", nargs="*", default=[])
+    ap.add_argument("--refused", action="append", default=[])
     ap.add_argument("decks", nargs="*")
     a = ap.parse_args()
     a.np = [int(p) for p in a.np.split(",")]
