@@ -1413,6 +1413,8 @@ void ExplicitEngine::tell_contact_deleted_elements() {
   const std::int64_t deleted = count_deleted();
   if (deleted == deleted_elements_) return;
   deleted_elements_ = deleted;
+  // The count is every rank's (gathered votes); the elements' life factors come from their owners.
+  if (domain_) domain_->share_group_arrays(groups_, [](auto& g, auto&& visit) { visit(g.off); });
   std::vector<std::uint8_t> alive(model_.element_count(), 1);
   groups_.for_each([&](const auto& g) {
     if constexpr (kMeshCell<std::decay_t<decltype(g)>>) {
@@ -1460,6 +1462,8 @@ bool ExplicitEngine::choose_time_step(LoopState& L, RunResult& res) {
   }
   if (controls_.nodal.given) {  // /DT/NODA and /DT/NODA/CST: the nodal step replaces the element step
     StepControl nctl;
+    // Every group's stiffness at its nodes, from the group's owner (the nodal pass runs on every rank).
+    if (domain_) domain_->share_group_arrays(groups_, [](auto& g, auto&& visit) { visit(g.k_nodal); });
     dt_elem = nodal_time_step(nctl);  // /DT/NODA replaces the element step by the nodal one
     ctl = nctl;
   }

@@ -15,22 +15,12 @@ std::vector<std::int32_t> block_group_ranks(std::int64_t groups, int ranks) {
   return rank;
 }
 
-std::vector<std::string> features_not_distributed(const model::Model& m, const model::RunControls& c) {
+std::vector<std::string> features_not_distributed(const model::Model& m, const model::RunControls&) {
   std::vector<std::string> found;
   const auto refuse = [&](bool present, const char* what) {
     if (present) found.emplace_back(what);
   };
-  refuse(!m.interfaces.empty(), "/INTER/TYPE7 and /INTER/LAGDT contact");
-  refuse(!m.tied_interfaces.empty(), "/INTER/TYPE2 ties");
-  refuse(!m.rigid_bodies.empty(), "/RBODY rigid bodies");
-  refuse(!m.rigid_walls.empty(), "/RWALL rigid walls");
   refuse(!m.sections.empty(), "/SECT sections");
-  refuse(!m.accelerometers.empty(), "/ACCEL accelerometers");
-  refuse(!m.sensors.empty(), "/SENSOR sensors");
-  refuse(std::any_of(m.skews.begin(), m.skews.end(), [](const model::Skew& s) { return s.moving(); }),
-         "/SKEW/MOV moving skews");
-  refuse(c.nodal.given, "/DT/NODA nodal time steps");
-  refuse(c.inter.given, "/DT/INTER contact time-step controls");
   return found;
 }
 

@@ -1,14 +1,19 @@
 """radx-engine-mpi on 1, 2 and 3 ranks against radx-engine, to the bit (docs/parallel.md).
 
 usage: /usr/bin/python3 run_np.py --radx-starter EXE --radx-engine EXE --radx-engine-mpi EXE --mpirun MPIRUN
-           --out DIR [--np 1,2,3] [--refused DECK_0000.rad]... DECK_0000.rad...
+           --out DIR [--np 1,2,3] [--impact N --generator GEN_SHELL_PLATE_PY] [--refused DECK_0000.rad]...
+           DECK_0000.rad...
 
   * Each deck (NAME_0000.rad, its engine deck NAME_0001.rad beside it) runs through the starter once, then
     through `radx-engine --threads 1` and `mpirun -np P radx-engine-mpi --threads 1` for each P, each in its
     own folder holding the same model file. Every state (NAME.mesh.hdf, NAME_%06d.hdf) and the time history
-    NAME_th.h5 are compared by h5diff without tolerance (exit 0: no value differs in any bit); the energy CSV
+    NAME_th.h5 (where the deck asks for one) are compared by h5diff without tolerance (exit 0: no value
+    differs in any bit); the energy CSV
     must be the same text; the summaries equal apart from timings (keys naming seconds or microseconds per
     element-cycle) and the thread and rank counts.
+  * --impact N adds the impact benchmark's deck (bench/gen_shell_plate.py --n N --impact, 0.5 ms): an N x N
+    shell plate and a brick block in many groups of 128 elements, so that many nodes are shared by groups of
+    different ranks (the sample decks are mostly one group or two).
   * Each --refused deck uses a feature not yet run on more than one rank: at np 2 mpirun exits 1, rank 0
     alone names the feature ("cannot be split over 2 ranks yet"), and the folder holds nothing but the model.
 """
@@ -79,7 +84,10 @@ def compare(a, deck):
         here = sorted(os.path.basename(p) for p in glob.glob(os.path.join(mpi, name + "*.hdf"))
                       if not p.endswith("_0000.hdf"))
         check(here == states and len(states) >= 2, "%s np %d: the same %d state files" % (name, np_, len(states)))
-        files = states + [name + "_th.h5"]
+        th = [name + "_th.h5"] if os.path.exists(os.path.join(serial, name + "_th.h5")) else []
+        check(os.path.exists(os.path.join(mpi, name + "_th.h5")) == bool(th),
+              "%s np %d: a time history where one rank writes one" % (name, np_))
+        files = states + th
         differ = [f for f in files
                   if run([a.h5diff, "-q", os.path.join(serial, f), os.path.join(mpi, f)]).returncode != 0]
         check(not differ, "%s np %d: h5diff without tolerance on %d files%s" % (
@@ -118,9 +126,18 @@ def main():
     ap.add_argument("--h5diff", default="h5diff")
     ap.add_argument("--np", default="1,2,3")
     ap.add_argument("--refused", action="append", default=[])
+    ap.add_argument("--impact", type=int, default=0)
+    ap.add_argument("--generator")
     ap.add_argument("decks", nargs="*")
     a = ap.parse_args()
     a.np = [int(p) for p in a.np.split(",")]
+    if a.impact > 0:
+        gen = os.path.join(a.out, "generated")
+        shutil.rmtree(gen, ignore_errors=True)
+        os.makedirs(gen)
+        r = run(["/usr/bin/python3", a.generator, "--n", str(a.impact), "--impact", "--tstop", "0.0005", "--out", gen])
+        check(r.returncode == 0, "the impact deck generated (%s)" % r.stderr.strip()[-300:])
+        a.decks.append(os.path.join(gen, "PLATE%dI_0000.rad" % a.impact))
     for deck in a.decks:
         compare(a, deck)
     for deck in a.refused:

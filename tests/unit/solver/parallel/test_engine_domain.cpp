@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/type7_prepare.hpp"
 #include "loopback_comm.hpp"
 #include "solver/engine/explicit_engine.hpp"
 #include "solver/parallel/engine_domain.hpp"
@@ -68,11 +69,11 @@ void check_ranks(const radx::model::Model& model, int cycles, const std::string&
 
 TEST_CASE("the engine on 2 and 3 ranks gives one rank's coordinates, velocities and energies to the bit",
           "[parallel][engine]") {
-  // The impact benchmark's plate (shells) and block (bricks) without their contact: many groups of 128
-  // elements in rows, so most group boundaries put nodes on two ranks' groups.
+  // The impact benchmark's plate (shells) and block (bricks) with their TYPE7 contact (run on every rank):
+  // many groups of 128 elements in rows, so most group boundaries put nodes on two ranks' groups.
   radx::test::TempDir dir;
   auto impact = radx::test::impact_benchmark_model(dir, 24);
-  impact.interfaces.clear();
+  radx::contact::prepare_type7_interfaces(impact);  // the starter's gaps and search boxes
   const RunEnd probe = run_cycles(impact, 2, nullptr);
   REQUIRE(probe.groups >= 6);  // enough groups for every rank to have several
   check_ranks(impact, 60, "impact plate and block, N = 24");
@@ -80,11 +81,14 @@ TEST_CASE("the engine on 2 and 3 ranks gives one rank's coordinates, velocities 
 
 TEST_CASE("a run with a feature not yet split over ranks is refused by the engine on more than one rank",
           "[parallel][engine]") {
+  // A section's force sums every element's nodal forces at every cycle: not gathered yet.
   radx::test::TempDir dir;
-  const auto impact = radx::test::impact_benchmark_model(dir, 8);  // with its TYPE7 contact
+  auto impact = radx::test::impact_benchmark_model(dir, 8);
+  radx::contact::prepare_type7_interfaces(impact);
+  impact.sections.emplace_back();
   const auto refused = par::features_not_distributed(impact, radx::model::RunControls{});
   REQUIRE(refused.size() == 1);
-  CHECK(refused[0].find("/INTER/TYPE7") != std::string::npos);
+  CHECK(refused[0].find("/SECT") != std::string::npos);
   std::vector<std::string> said(2);
   radx::test::run_ranks(2, [&](par::Comm& comm) {
     try {
@@ -93,5 +97,5 @@ TEST_CASE("a run with a feature not yet split over ranks is refused by the engin
       said[static_cast<std::size_t>(comm.rank())] = e.what();
     }
   });
-  for (const auto& s : said) CHECK(s.find("/INTER/TYPE7") != std::string::npos);
+  for (const auto& s : said) CHECK(s.find("/SECT") != std::string::npos);
 }
