@@ -54,9 +54,10 @@ int main(int argc, char** argv) {
     s.add(terms[0]);
     sink = s.value();
   });
-  std::printf("terms %zu, best of %d: plain sum %.2f ns/term, ExactSum::add %.2f ns/term, "
-              "one add + value() %.0f ns\n",
-              n, reps, plain, exact, value);
+  std::printf(
+      "terms %zu, best of %d: plain sum %.2f ns/term, ExactSum::add %.2f ns/term, "
+      "one add + value() %.0f ns\n",
+      n, reps, plain, exact, value);
 
   // (2^53 - 1) 2^-50: its lowest digit is 2^32 - 1 (biased exponent 1025 = 1 + 32 x 32), so 2^31 + 7 terms
   // overflow an int64 bin unless the carries are propagated on the way.

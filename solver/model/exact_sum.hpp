@@ -1,5 +1,5 @@
 // ExactSum: a sum of doubles with no rounding until it is read, so that it gives the same bits in any order
-// of its terms and over any split of them between threads or ranks (docs/theory/energy_balance.md, "Order-free
+// of its terms and over any split of them between threads or ranks (docs/theory/elements.md 8.1, "Order-free
 // sums").
 //
 // Every finite double is an integer multiple of 2^-1074 (the smallest subnormal): x = (-1)^s m 2^(e - 1075)
@@ -63,7 +63,7 @@ class ExactSum {
     const std::uint32_t p = biased - static_cast<std::uint32_t>(normal);
     const std::size_t b = p / kDigitBits;
     const std::uint32_t r = p % kDigitBits;
-    const std::uint64_t shifted_low = m << r;      // the low 64 bits of m 2^r
+    const std::uint64_t shifted_low = m << r;          // the low 64 bits of m 2^r
     const std::uint64_t high = m >> (kDigitBits - r);  // m 2^r / 2^32, r < 32 so the shift is 1..32
     // Two's-complement negation by the sign bit: (d ^ -s) + s is d for s = 0 and -d for s = 1.
     const auto s = static_cast<std::int64_t>(bits >> 63);
@@ -159,13 +159,13 @@ class ExactSum {
       return i >= 0 ? static_cast<std::uint64_t>(d[static_cast<std::size_t>(i)]) : std::uint64_t{0};
     };
     const auto hi = static_cast<std::ptrdiff_t>(h);
-    const std::uint64_t upper = (digit(hi) << kDigitBits) | digit(hi - 1);  // window bits 64..127
+    const std::uint64_t upper = (digit(hi) << kDigitBits) | digit(hi - 1);      // window bits 64..127
     const std::uint64_t lower = (digit(hi - 2) << kDigitBits) | digit(hi - 3);  // window bits 0..63
     bool sticky = false;
     for (std::ptrdiff_t i = hi - 4; i >= 0 && !sticky; --i) sticky = digit(i) != 0;
     const int window_exponent = kDigitBits * static_cast<int>(hi - 3) - 1074;  // weight of window bit 0
     const int length = 128 - std::countl_zero(upper);  // upper != 0: digit h is not zero
-    const int drop = length - 53;                      // window bits below the kept 53 (>= 44: digit h-1 is whole)
+    const int drop = length - 53;  // window bits below the kept 53 (>= 44: digit h-1 is whole)
     // The kept bits, the first dropped bit (round) and whether any later bit is set.
     std::uint64_t kept;
     bool round_bit, rest;

@@ -92,11 +92,11 @@ TEST_CASE("exact sum: subnormal terms and sums are exact") {
 }
 
 TEST_CASE("exact sum: rounds once to nearest, ties to even, with the bits far below the tie") {
-  const double two53 = 9007199254740992.0;  // 2^53: the spacing of doubles here is 2
-  CHECK(sum_of({two53, 1.0}) == two53);                   // tie: down to the even 2^53
-  CHECK(sum_of({two53, 3.0}) == two53 + 4.0);             // tie: up to the even 2^53 + 4
-  CHECK(sum_of({two53, 1.0, 1e-300}) == two53 + 2.0);     // above the tie by 1e-300: up
-  CHECK(sum_of({two53, 1.0, -1e-300}) == two53);          // below the tie: down
+  const double two53 = 9007199254740992.0;             // 2^53: the spacing of doubles here is 2
+  CHECK(sum_of({two53, 1.0}) == two53);                // tie: down to the even 2^53
+  CHECK(sum_of({two53, 3.0}) == two53 + 4.0);          // tie: up to the even 2^53 + 4
+  CHECK(sum_of({two53, 1.0, 1e-300}) == two53 + 2.0);  // above the tie by 1e-300: up
+  CHECK(sum_of({two53, 1.0, -1e-300}) == two53);       // below the tie: down
   CHECK(sum_of({two53 + 2.0, 1.0, -1e-300}) == two53 + 2.0);
   CHECK(sum_of({-two53, -1.0, -1e-300}) == -(two53 + 2.0));  // the same, negative
   CHECK(sum_of({DBL_MAX, std::ldexp(1.0, 970)}) == std::numeric_limits<double>::infinity());  // tie at 2^1024
@@ -105,9 +105,9 @@ TEST_CASE("exact sum: rounds once to nearest, ties to even, with the bits far be
 }
 
 TEST_CASE("exact sum: the correctly rounded exact sum of scaled integers") {
-  // Terms k 2^e with |k| < 2^50 and e in [-60, 5] (at most 1400 terms, below 2^126): the exact sum is an integer times 2^-60 that a 128-bit
-  // integer holds; its conversion to double rounds once to nearest (GCC's __floattidf), and the scaling by
-  // 2^-60 is exact. That is the reference, independent of the accumulator.
+  // Terms k 2^e with |k| < 2^50 and e in [-60, 5] (at most 1400 terms, below 2^126): the exact sum is an
+  // integer times 2^-60 that a 128-bit integer holds; its conversion to double rounds once to nearest (GCC's
+  // __floattidf), and the scaling by 2^-60 is exact. That is the reference, independent of the accumulator.
   std::mt19937_64 rng(777);
   std::uniform_int_distribution<std::int64_t> k_of(-(std::int64_t{1} << 50), std::int64_t{1} << 50);
   std::uniform_int_distribution<int> e_of(-60, 5);
