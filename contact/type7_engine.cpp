@@ -1306,11 +1306,12 @@ const LagrangeStats& Type7Contact::lagrange_stats() const {
   return impl_->lagrange.stats();
 }
 
-// The booked energies are the negated works; the sum over the interfaces is exact too, rounded once.
+// The booked energies are the negated works (0 - w: +0 when nothing was booked); the sum over the interfaces
+// is exact too, rounded once.
 double Type7Contact::energy_lagrange() const {
   model::ExactSum w;
   for (const auto& st : impl_->interfaces) w.merge(st.w_lagrange);
-  return -w.value();
+  return 0.0 - w.value();
 }
 
 const std::vector<double>& Type7Contact::force() const {
@@ -1359,10 +1360,10 @@ std::vector<InterfaceResult> Type7Contact::results() const {
     out.push_back(st.result);
     auto& r = out.back();
     if (st.search) r.search_sorts = st.search->sorts();
-    r.e_elastic = -st.w_elastic.value();
-    r.e_damping = -st.w_damping.value();
-    r.e_friction = -st.w_friction.value();
-    r.e_lagrange = -st.w_lagrange.value();
+    r.e_elastic = 0.0 - st.w_elastic.value();
+    r.e_damping = 0.0 - st.w_damping.value();
+    r.e_friction = 0.0 - st.w_friction.value();
+    r.e_lagrange = 0.0 - st.w_lagrange.value();
     for (std::size_t d = 0; d < 3; ++d) {
       r.normal_force[d] = st.normal_force[d].value();
       r.tangential_force[d] = st.tangential_force[d].value();
@@ -1374,17 +1375,17 @@ std::vector<InterfaceResult> Type7Contact::results() const {
 double Type7Contact::energy_elastic() const {
   model::ExactSum w;
   for (const auto& st : impl_->interfaces) w.merge(st.w_elastic);
-  return -w.value();
+  return 0.0 - w.value();
 }
 double Type7Contact::energy_damping() const {
   model::ExactSum w;
   for (const auto& st : impl_->interfaces) w.merge(st.w_damping);
-  return -w.value();
+  return 0.0 - w.value();
 }
 double Type7Contact::energy_friction() const {
   model::ExactSum w;
   for (const auto& st : impl_->interfaces) w.merge(st.w_friction);
-  return -w.value();
+  return 0.0 - w.value();
 }
 
 std::vector<std::string> Type7Contact::take_messages() {
