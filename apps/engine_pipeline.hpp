@@ -17,6 +17,10 @@ struct EngineOptions {
   // --stop-if-runaway: a run whose step leaves more cycles to the end time than it can take
   // (apps/runaway_watch.hpp) stops with an error termination instead of going on with a warning.
   bool stop_if_runaway = false;
+  // --decompose P (P > 0): do not run; print and write the decomposition over P ranks
+  // (apps/engine_decompose.hpp), the group ranks from `partition_file` when given (--partition FILE).
+  int decompose_ranks = 0;
+  std::string partition_file;
 };
 
 // 0 normal termination, 1 input error or error termination.

@@ -12,6 +12,7 @@ void usage(std::ostream& os) {
   os << "usage: radx-engine [NAME_0001.rad] [--out DIR] [--model FILE] [--threads N] [--no-plot]\n"
         "                   [--stop-if-runaway]\n"
         "       radx-engine -i NAME_0001.rad ...\n"
+        "       radx-engine --decompose P [--partition FILE] NAME_0001.rad [--out DIR] [--model FILE]\n"
         "\n"
         "Runs the explicit engine: reads the engine deck and the starter's model file NAME_0000.hdf (in the\n"
         "output folder unless --model is given), and writes the listing NAME_0001.out (also on stdout) and\n"
@@ -31,6 +32,13 @@ void usage(std::ostream& os) {
         "                 its time step falls so far that the cycles left to the end time exceed 100 times\n"
         "                 the starter's estimate of the whole run, or 1e9; without it the run goes on and\n"
         "                 warns once, naming what sets the step and the wall time it would take\n"
+        "  --decompose P  do not run: deal the element groups out to P ranks (METIS, as a run on P ranks\n"
+        "                 does), print each rank's groups, elements, weights, owned, ghost and shared nodes\n"
+        "                 and the imbalance, and write NAME_domain.hdf (cell array domain for ParaView) and\n"
+        "                 NAME_partition.txt (the group ranks); an earlier run's outputs stay as they are\n"
+        "  --partition FILE\n"
+        "                 with --decompose: the group ranks from FILE (lines \"GROUP RANK\", the format of\n"
+        "                 NAME_partition.txt) instead of METIS, to cut a rigid body or a tie on purpose\n"
         "  --help, --version (or -version)\n"
         "\n"
         "SIGTERM or SIGINT stops the run after the cycle under way, with a last state, the summary (status\n"
@@ -58,7 +66,8 @@ int main(int argc, char** argv) {
       std::cout << "radx-engine " << radx::app::version_text() << '\n';
       return radx::app::kExitOk;
     }
-    const bool takes_value = a == "-i" || a == "--out" || a == "--model" || a == "--threads" || a == "-nt";
+    const bool takes_value = a == "-i" || a == "--out" || a == "--model" || a == "--threads" || a == "-nt" ||
+                             a == "--decompose" || a == "--partition";
     if (takes_value && i + 1 >= argc) {
       std::cerr << "radx-engine: " << a << " needs a value\n";
       return radx::app::kExitUsage;
@@ -79,14 +88,27 @@ int main(int argc, char** argv) {
         std::cerr << "radx-engine: " << a << " needs a positive integer\n";
         return radx::app::kExitUsage;
       }
+    } else if (a == "--decompose") {
+      try {
+        opt.decompose_ranks = std::stoi(argv[++i]);
+      } catch (...) {
+        opt.decompose_ranks = -1;
+      }
+      if (opt.decompose_ranks < 1) {
+        std::cerr << "radx-engine: --decompose needs a positive integer (the rank count)\n";
+        return radx::app::kExitUsage;
+      }
+    } else if (a == "--partition") {
+      opt.partition_file = argv[++i];
     } else if (a == "--no-plot") {
       opt.plot = false;
     } else if (a == "--stop-if-runaway") {
       opt.stop_if_runaway = true;
     } else if (!a.empty() && a[0] == '-') {
-      std::cerr << radx::app::unknown_option("radx-engine", a,
-                                             {"-i", "--out", "--model", "--threads", "-nt", "--no-plot",
-                                              "--stop-if-runaway", "--version", "-version", "--help"})
+      std::cerr << radx::app::unknown_option(
+                       "radx-engine", a,
+                       {"-i", "--out", "--model", "--threads", "-nt", "--no-plot", "--stop-if-runaway",
+                        "--decompose", "--partition", "--version", "-version", "--help"})
                 << '\n';
       usage(std::cerr);
       return radx::app::kExitUsage;
@@ -100,6 +122,10 @@ int main(int argc, char** argv) {
   if (opt.engine_deck.empty()) {
     std::cerr << "radx-engine: give the engine deck (NAME_0001.rad)\n";
     usage(std::cerr);
+    return radx::app::kExitUsage;
+  }
+  if (!opt.partition_file.empty() && opt.decompose_ranks == 0) {
+    std::cerr << "radx-engine: --partition goes with --decompose P\n";
     return radx::app::kExitUsage;
   }
   return radx::app::run_engine(opt, std::cout, std::cerr);
