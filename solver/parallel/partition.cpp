@@ -1,13 +1,15 @@
 // The decomposition of a model's element groups over P ranks (partition.hpp).
 //
 // Graph: vertex v = a group (or the groups of a small rigid body, contracted); edge (u, v) with weight
-//   w_uv = |nodes(u) ∩ nodes(v)| + |TYPE2 ties between u and v|;
+//   w_uv = |nodes(u) ∩ nodes(v)| + |TYPE2 ties between u and v| + |TYPE7 t = 0 candidates between u and v|;
 // METIS_PartGraphKway minimises the cut sum of w_uv over the edges between ranks subject to, for each
 // constraint c (kernel cost, contact work), max_rank W_c(rank) <= ubvec_c * W_c(total) / P.
 // Node owner: argmax_rank (element entries of the rank on the node), ties to the lowest rank.
 #include "solver/parallel/partition.hpp"
 
 #include <metis.h>
+
+#include "contact/type7_search.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -133,49 +135,72 @@ struct Incidence {
   }
 };
 
-// TYPE7 work: each secondary node on the first group touching it, each main segment on its element's group
-// (else on the first group touching its first node).
-std::vector<std::int64_t> contact_work(const model::Model& m, const ElementGroups& groups,
-                                       const Incidence& inc) {
-  std::vector<std::int64_t> work(static_cast<std::size_t>(groups.count()), 0);
+// The group of main segment k of surface s: its element's, else the first group touching its first node.
+std::int32_t segment_group(const model::Model& m, const model::Surface& s, std::size_t k,
+                           std::span<const std::int32_t> cell_group, const Incidence& inc) {
+  const std::int32_t e = k < s.owner.size() ? s.owner[k] : model::kNone;
+  const auto type = k < s.owner_type.size() ? s.owner_type[k] : model::SegmentOwner::None;
+  if (e != model::kNone) {
+    std::size_t first = 0;
+    switch (type) {
+      case model::SegmentOwner::Shell4: first = 0; break;
+      case model::SegmentOwner::Shell3: first = m.shells.size(); break;
+      case model::SegmentOwner::Brick8: first = m.shells.size() + m.shells3.size(); break;
+      case model::SegmentOwner::Tetra4: first = m.shells.size() + m.shells3.size() + m.bricks.size(); break;
+      case model::SegmentOwner::None: first = cell_group.size(); break;
+    }
+    const std::size_t cell = first + static_cast<std::size_t>(e);
+    if (cell < cell_group.size() && cell_group[cell] >= 0) return cell_group[cell];
+  }
+  return inc.first_group(s.segments[k][0]);
+}
+
+// What TYPE7 contact puts on the groups: work (each secondary node and main segment once, each on one group;
+// each pair candidate on its node's group, whose rank computes the pair) and links (the groups of a
+// candidate's node and segment). The candidates are those of a search at the initial coordinates, with the
+// largest gap of the interface (Type7Search, as the engine's first cycle sorts; a /CTCLAW law's reach beyond
+// the gap left out).
+struct ContactLoad {
+  std::vector<std::int64_t> work;                            // per group
+  std::vector<std::pair<std::int32_t, std::int32_t>> links;  // (node group, segment group)
+};
+
+ContactLoad contact_load(const model::Model& m, const ElementGroups& groups, const Incidence& inc) {
+  ContactLoad load;
+  load.work.assign(static_cast<std::size_t>(groups.count()), 0);
   const std::vector<std::int32_t> cell_group = cell_groups(m, groups);
   const auto add = [&](std::int32_t g) {
-    if (g >= 0) ++work[static_cast<std::size_t>(g)];
+    if (g >= 0) ++load.work[static_cast<std::size_t>(g)];
   };
-  const std::size_t first_shell3 = m.shells.size(), first_brick = first_shell3 + m.shells3.size(),
-                    first_tetra = first_brick + m.bricks.size();
+  const contact::Coordinates x0{m.nodes.x, m.nodes.y, m.nodes.z};
   for (const model::Interface& in : m.interfaces) {
     for (const std::int32_t n : in.secondary_nodes) add(inc.first_group(n));
     if (in.main_surface == model::kNone) continue;
     const model::Surface& s = m.surfaces[static_cast<std::size_t>(in.main_surface)];
-    for (std::size_t k = 0; k < s.segments.size(); ++k) {
-      const std::int32_t e = k < s.owner.size() ? s.owner[k] : model::kNone;
-      const auto type = k < s.owner_type.size() ? s.owner_type[k] : model::SegmentOwner::None;
-      std::size_t cell = std::numeric_limits<std::size_t>::max();
-      if (e != model::kNone) {
-        const auto i = static_cast<std::size_t>(e);
-        switch (type) {
-          case model::SegmentOwner::Shell4: cell = i; break;
-          case model::SegmentOwner::Shell3: cell = first_shell3 + i; break;
-          case model::SegmentOwner::Brick8: cell = first_brick + i; break;
-          case model::SegmentOwner::Tetra4: cell = first_tetra + i; break;
-          case model::SegmentOwner::None: break;
-        }
-      }
-      add(cell < cell_group.size() && cell_group[cell] >= 0 ? cell_group[cell]
-                                                            : inc.first_group(s.segments[k][0]));
+    std::vector<std::int32_t> seg_group(s.segments.size());
+    for (std::size_t k = 0; k < s.segments.size(); ++k)
+      add(seg_group[k] = segment_group(m, s, k, cell_group, inc));
+    if (in.secondary_nodes.empty() || s.segments.empty()) continue;
+    const double gap = in.igap == 0 ? in.gapmin : std::max(in.gap_hi, in.gapmin);
+    contact::Type7Search search(in.secondary_nodes, s.segments, gap, in.bumult);
+    search.update(x0, true);
+    for (const contact::Candidate& c : search.candidates()) {
+      const std::int32_t node_group = inc.first_group(in.secondary_nodes[static_cast<std::size_t>(c.node)]);
+      add(node_group);
+      const std::int32_t other = seg_group[static_cast<std::size_t>(c.segment)];
+      if (node_group >= 0 && other >= 0) load.links.emplace_back(node_group, other);
     }
   }
-  return work;
+  return load;
 }
 
-GroupWeights weights_of(const model::Model& m, const ElementGroups& groups, const Incidence& inc) {
+GroupWeights weights_of(const ElementGroups& groups, const ContactLoad& contact) {
   GroupWeights w;
   groups.for_each([&](const auto& g) {
     w.elements.push_back(g.count);
     w.cost.push_back(element_cost(g) * g.count);
   });
-  w.contact = contact_work(m, groups, inc);
+  w.contact = contact.work;
   return w;
 }
 
@@ -252,6 +277,7 @@ struct MetisGraph {
 // Edges between groups: one per shared node and one per TYPE2 tie, mapped onto the vertices (self edges of
 // contracted groups dropped) and summed per vertex pair.
 std::vector<std::pair<std::int32_t, std::int32_t>> vertex_pairs(const model::Model& m, const Incidence& inc,
+                                                                const ContactLoad& contact,
                                                                 std::span<const std::int32_t> vertex) {
   std::vector<std::pair<std::int32_t, std::int32_t>> pairs;
   const auto add = [&](std::int32_t a, std::int32_t b) {
@@ -277,6 +303,7 @@ std::vector<std::pair<std::int32_t, std::int32_t>> vertex_pairs(const model::Mod
       for (auto i = ng.begin[s]; i < ng.begin[s + 1]; ++i)
         for (const std::int32_t g : main_groups) add(ng.item[static_cast<std::size_t>(i)], g);
     }
+  for (const auto& [a, b] : contact.links) add(a, b);
   std::sort(pairs.begin(), pairs.end());
   return pairs;
 }
@@ -293,23 +320,23 @@ std::vector<idx_t> scaled(std::span<const std::int64_t> w) {
   return out;
 }
 
-MetisGraph metis_graph(const model::Model& m, const Incidence& inc, const GroupWeights& w,
-                       std::span<const std::int32_t> vertex, std::size_t vertices) {
+MetisGraph metis_graph(const model::Model& m, const Incidence& inc, const ContactLoad& contact,
+                       const GroupWeights& w, std::span<const std::int32_t> vertex, std::size_t vertices) {
   MetisGraph G;
-  std::vector<std::int64_t> cost(vertices, 0), contact(vertices, 0);
+  std::vector<std::int64_t> cost(vertices, 0), work(vertices, 0);
   for (std::size_t g = 0; g < vertex.size(); ++g) {
     cost[static_cast<std::size_t>(vertex[g])] += w.cost[g];
-    contact[static_cast<std::size_t>(vertex[g])] += w.contact[g];
+    work[static_cast<std::size_t>(vertex[g])] += w.contact[g];
   }
-  const bool has_contact = std::any_of(contact.begin(), contact.end(), [](auto c) { return c > 0; });
+  const bool has_contact = std::any_of(work.begin(), work.end(), [](auto c) { return c > 0; });
   G.ncon = has_contact ? 2 : 1;
-  const std::vector<idx_t> c0 = scaled(cost), c1 = scaled(contact);
+  const std::vector<idx_t> c0 = scaled(cost), c1 = scaled(work);
   for (std::size_t v = 0; v < vertices; ++v) {
     G.vwgt.push_back(c0[v]);
     if (has_contact) G.vwgt.push_back(c1[v]);
   }
   // Summed pairs, then both directions, grouped by vertex in ascending neighbour order.
-  const auto pairs = vertex_pairs(m, inc, vertex);
+  const auto pairs = vertex_pairs(m, inc, contact, vertex);
   std::vector<std::tuple<std::int32_t, std::int32_t, std::int64_t>> edges;
   for (std::size_t k = 0; k < pairs.size();) {
     std::size_t e = k;
@@ -479,7 +506,8 @@ std::vector<std::int32_t> cell_groups(const model::Model& m, const ElementGroups
 }
 
 GroupWeights group_weights(const model::Model& m, const ElementGroups& groups) {
-  return weights_of(m, groups, Incidence(m, groups));
+  const Incidence inc(m, groups);
+  return weights_of(groups, contact_load(m, groups, inc));
 }
 
 std::string check_group_ranks(std::int64_t groups, std::span<const int> group_rank, int ranks) {
@@ -504,14 +532,15 @@ PartitionSummary summarize_partition(const model::Model& m, const ElementGroups&
                                      std::span<const int> group_rank, int ranks) {
   require_valid(groups.count(), group_rank, ranks);
   const Incidence inc(m, groups);
-  return summarize(m, inc, weights_of(m, groups, inc), group_rank, ranks);
+  return summarize(m, inc, weights_of(groups, contact_load(m, groups, inc)), group_rank, ranks);
 }
 
 Partition partition_groups(const model::Model& m, const ElementGroups& groups, int ranks) {
   if (ranks < 1)
     throw std::invalid_argument("the rank count must be at least 1, not " + std::to_string(ranks));
   const Incidence inc(m, groups);
-  const GroupWeights w = weights_of(m, groups, inc);
+  const ContactLoad contact = contact_load(m, groups, inc);
+  const GroupWeights w = weights_of(groups, contact);
   const auto count = static_cast<std::size_t>(groups.count());
   Partition p;
   p.group_rank.assign(count, 0);
@@ -535,7 +564,7 @@ Partition partition_groups(const model::Model& m, const ElementGroups& groups, i
                      std::to_string(p.rigid_bodies_kept) + " small rigid bodies keeps its groups together)"
                : std::string()) +
           " and each rank takes whole groups: give at most " + std::to_string(vertices) + " ranks");
-    MetisGraph G = metis_graph(m, inc, w, vertex, static_cast<std::size_t>(vertices));
+    MetisGraph G = metis_graph(m, inc, contact, w, vertex, static_cast<std::size_t>(vertices));
     const std::vector<idx_t> part = run_metis(G, ranks);
     for (std::size_t g = 0; g < count; ++g)
       p.group_rank[g] = static_cast<int>(part[static_cast<std::size_t>(vertex[g])]);

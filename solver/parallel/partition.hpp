@@ -3,12 +3,13 @@
 // The unit is the engine's element group (build_groups: up to 128 elements of one part), never split, so
 // every element is computed on its rank exactly as on one rank. The groups are the vertices of a graph given
 // to METIS (METIS_PartGraphKway, a fixed seed: the same input gives the same partition on every run):
-//   - an edge between two groups for each node they share (weight: the shared node count), and for each
+//   - an edge between two groups for each node they share (weight: the shared node count), for each
 //     /INTER/TYPE2 tie between the groups of its secondary node and those of its main segment's nodes (1 a
-//     tie), so the cut crosses few nodes and few ties;
+//     tie), and for each TYPE7 candidate pair at t = 0 between its node's group and its segment's, so the
+//     cut crosses few nodes, ties and contact pairs;
 //   - two balance constraints, ubvec {1.03, 1.10}: the kernel cost (instructions per element-cycle of the
-//     group's kernel x its elements) and the contact work (each TYPE7 secondary node and main segment counted
-//     once, on one group touching it);
+//     group's kernel x its elements) and the contact work (each TYPE7 secondary node, main segment and t = 0
+//     candidate pair counted once, on one group: the first touching the node, the segment's element's);
 //   - a rigid body whose elements (those touching its nodes) are under 1 % of the model's elements has all
 //     the groups touching its nodes contracted into one vertex before METIS, so it lands on one rank.
 // The statistics (owned, ghost and shared nodes, neighbours, imbalance) follow from the group ranks alone,
@@ -37,7 +38,7 @@ inline constexpr double kSmallRigidBody = 0.01;
 struct GroupWeights {
   std::vector<std::int64_t> elements;  // elements of the group
   std::vector<std::int64_t> cost;      // kernel instructions per cycle: cost per element x elements
-  std::vector<std::int64_t> contact;   // TYPE7 secondary nodes and main segments the group carries
+  std::vector<std::int64_t> contact;   // TYPE7 secondary nodes, main segments and t = 0 candidates it carries
 };
 
 // The kernel cost weights and the contact work of every group (see the header comment).
