@@ -217,3 +217,22 @@ TEST_CASE("one rank takes every group without METIS; more ranks than groups are 
   bad.pop_back();
   CHECK(par::check_group_ranks(groups.count(), bad, 2).find("give one rank per group") != std::string::npos);
 }
+
+TEST_CASE("a TYPE2 tie whose secondary node and main nodes have different owners is counted as cut",
+          "[partition]") {
+  const auto b = impact(20);  // the plate: 21 x 21 nodes, 400 shells in 4 groups of rows
+  const ElementGroups& groups = b->groups();
+  radx::model::Model m = b->model;
+  radx::model::TiedInterface tie;
+  tie.tie_node = {0};  // a corner of the plate's first row: the first group's alone
+  // Nodes of the plate's last row (21 x 20 = 420 ...), far from the first group.
+  tie.tie_segment = {{420, 421, 440, 439}};
+  tie.tie_r = tie.tie_s = tie.tie_offset = {0.0};
+  m.tied_interfaces.push_back(tie);
+  std::vector<int> ranks(static_cast<std::size_t>(groups.count()), 1);
+  ranks[0] = 0;  // the first group alone on rank 0
+  CHECK(par::summarize_partition(m, groups, ranks, 2).ties_cut == 1);
+  std::fill(ranks.begin(), ranks.end(), 0);
+  ranks.back() = 1;  // the block's last group on rank 1: the tie stays whole on rank 0
+  CHECK(par::summarize_partition(m, groups, ranks, 2).ties_cut == 0);
+}
