@@ -139,7 +139,7 @@ TEST_CASE("node owners, ghosts and shared nodes follow the most-entries rule", "
   CHECK(total == static_cast<std::int64_t>(per_node.size()));
 }
 
-TEST_CASE("a small rigid body's groups go to one rank; a large one's are left to METIS", "[partition]") {
+TEST_CASE("a small rigid body's groups go to one rank, a large one's are left to METIS", "[partition]") {
   const auto b = impact(200, 20);
   const ElementGroups& groups = b->groups();
   const int P = 4;
@@ -190,7 +190,7 @@ TEST_CASE("a small rigid body's groups go to one rank; a large one's are left to
   CHECK(par::partition_groups(big, groups, P).rigid_bodies_kept == 0);
 }
 
-TEST_CASE("one rank takes every group without METIS; more ranks than groups are refused", "[partition]") {
+TEST_CASE("one rank takes every group without METIS, more ranks than groups are refused", "[partition]") {
   const auto b = impact(20);  // 400 shells (4 groups) and 400 bricks (4 groups)
   const ElementGroups& groups = b->groups();
   const par::Partition one = par::partition_groups(b->model, groups, 1);
