@@ -178,9 +178,8 @@ int decompose_model(const model::Model& m, const solver::ElementGroups& groups, 
       summary = std::move(p.summary);
       kept = p.rigid_bodies_kept;
     } catch (const std::invalid_argument& e) {
-      Diagnostics diags;
-      diags.error(Diag::DecompositionRanks, Where{}, About{}, e.what());
-      diags.print(err);
+      // An option, not a line of a file: the message names the program instead of a file.
+      err << "radx-engine: error: " << diag_code(Diag::DecompositionRanks) << ": " << e.what() << '\n';
       return 1;
     }
     source = ranks == 1 ? "one rank: every group on rank 0"
