@@ -25,6 +25,10 @@ struct EngineOptions {
   // (apps/engine_cli.hpp); null is one rank. Rank 0 alone prints and writes files. Until the engine splits
   // the model over ranks, a run on more than one rank is refused before anything is read or written.
   solver::parallel::Comm* comm = nullptr;
+  // --decompose P (P > 0): do not run; print and write the decomposition over P ranks
+  // (apps/engine_decompose.hpp), the group ranks from `partition_file` when given (--partition FILE).
+  int decompose_ranks = 0;
+  std::string partition_file;
 };
 
 // 0 normal termination, 1 input error or error termination (also every rank of a run on more than one rank).
