@@ -32,6 +32,7 @@ void usage(std::ostream& os, const std::string& program) {
   os << "usage: " << program << " [NAME_0001.rad] [--out DIR] [--model FILE] [--threads N] [--no-plot]\n"
      << indent << "[--stop-if-runaway]\n"
      << "       " << program << " -i NAME_0001.rad ...\n"
+     << "       " << program << " --decompose P [--partition FILE] NAME_0001.rad [--out DIR] [--model FILE]\n"
      << "\n"
         "Runs the explicit engine: reads the engine deck and the starter's model file NAME_0000.hdf (in the\n"
         "output folder unless --model is given), and writes the listing NAME_0001.out (also on stdout) and\n"
@@ -51,6 +52,13 @@ void usage(std::ostream& os, const std::string& program) {
         "                 its time step falls so far that the cycles left to the end time exceed 100 times\n"
         "                 the starter's estimate of the whole run, or 1e9; without it the run goes on and\n"
         "                 warns once, naming what sets the step and the wall time it would take\n"
+        "  --decompose P  do not run: deal the element groups out to P ranks (METIS, as a run on P ranks\n"
+        "                 does), print each rank's groups, elements, weights, owned, ghost and shared nodes\n"
+        "                 and the imbalance, and write NAME_domain.hdf (cell array domain for ParaView) and\n"
+        "                 NAME_partition.txt (the group ranks); an earlier run's outputs stay as they are\n"
+        "  --partition FILE\n"
+        "                 with --decompose: the group ranks from FILE (lines \"GROUP RANK\", the format of\n"
+        "                 NAME_partition.txt) instead of METIS, to cut a rigid body or a tie on purpose\n"
         "  --help, --version (or -version)\n"
         "\n"
         "SIGTERM or SIGINT stops the run after the cycle under way, with a last state, the summary (status\n"
@@ -84,7 +92,8 @@ int engine_main(int argc, char** argv, const char* program_name, solver::paralle
       out << program << " " << version_text() << '\n';
       return kExitOk;
     }
-    const bool takes_value = a == "-i" || a == "--out" || a == "--model" || a == "--threads" || a == "-nt";
+    const bool takes_value = a == "-i" || a == "--out" || a == "--model" || a == "--threads" || a == "-nt" ||
+                             a == "--decompose" || a == "--partition";
     if (takes_value && i + 1 >= argc) {
       err << program << ": " << a << " needs a value\n";
       return kExitUsage;
@@ -105,6 +114,18 @@ int engine_main(int argc, char** argv, const char* program_name, solver::paralle
         err << program << ": " << a << " needs a positive integer\n";
         return kExitUsage;
       }
+    } else if (a == "--decompose") {
+      try {
+        opt.decompose_ranks = std::stoi(argv[++i]);
+      } catch (...) {
+        opt.decompose_ranks = -1;
+      }
+      if (opt.decompose_ranks < 1) {
+        err << program << ": --decompose needs a positive integer (the rank count)\n";
+        return kExitUsage;
+      }
+    } else if (a == "--partition") {
+      opt.partition_file = argv[++i];
     } else if (a == "--no-plot") {
       opt.plot = false;
     } else if (a == "--stop-if-runaway") {
@@ -112,7 +133,7 @@ int engine_main(int argc, char** argv, const char* program_name, solver::paralle
     } else if (!a.empty() && a[0] == '-') {
       err << unknown_option(program, a,
                             {"-i", "--out", "--model", "--threads", "-nt", "--no-plot", "--stop-if-runaway",
-                             "--version", "-version", "--help"})
+                             "--decompose", "--partition", "--version", "-version", "--help"})
           << '\n';
       usage(err, program);
       return kExitUsage;
@@ -126,6 +147,10 @@ int engine_main(int argc, char** argv, const char* program_name, solver::paralle
   if (opt.engine_deck.empty()) {
     err << program << ": give the engine deck (NAME_0001.rad)\n";
     usage(err, program);
+    return kExitUsage;
+  }
+  if (!opt.partition_file.empty() && opt.decompose_ranks == 0) {
+    err << program << ": --partition goes with --decompose P\n";
     return kExitUsage;
   }
   opt.comm = &comm;

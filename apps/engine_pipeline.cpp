@@ -1,6 +1,7 @@
 #include "apps/engine_pipeline.hpp"
 
 #include "apps/build_info.hpp"
+#include "apps/engine_decompose.hpp"
 #include "apps/engine_outputs.hpp"
 #include "apps/runaway_watch.hpp"
 #include "apps/stop_deadline.hpp"
@@ -701,6 +702,32 @@ void remove_earlier_engine_outputs(const std::string& out_dir, const std::string
 
 namespace {
 
+// radx-engine --decompose P: the deck and the model read and checked as for a run, the engine's element
+// groups built, and the decomposition printed and written (apps/engine_decompose.hpp). Nothing runs, and
+// nothing an earlier run left in the output folder is touched (no lock either: only NAME_domain.hdf and
+// NAME_partition.txt are written, each whole or not at all).
+int decompose_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
+  const std::string root = model::run_output_root(opt.engine_deck);
+  Diagnostics diags;
+  EngineDeck deck;
+  model::RunControls controls;
+  if (!read_engine_deck_checked(opt.engine_deck, diags, deck, controls, err)) return 1;
+  const std::string model_path =
+      opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;
+  model::Model model;
+  if (!read_checked_model(model_path, opt.engine_deck, root, controls, model, err)) return 1;
+  std::unique_ptr<solver::ExplicitEngine> engine;
+  try {
+    // One thread: only the groups are wanted.
+    engine = std::make_unique<solver::ExplicitEngine>(model, controls, solver::EngineOptions(1));
+  } catch (const std::exception& e) {
+    err << opt.engine_deck << ": error: " << e.what() << '\n';
+    return 1;
+  }
+  return decompose_model(model, engine->groups(), opt.decompose_ranks, opt.partition_file, opt.out_dir, root,
+                         out, err);
+}
+
 int run_engine_on_this_rank(const EngineOptions& opt, std::ostream& out, std::ostream& err);
 
 // A stream that drops what it is given: the printing of ranks other than 0.
@@ -742,6 +769,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
 namespace {
 
 int run_engine_on_this_rank(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
+  if (opt.decompose_ranks > 0) return decompose_engine(opt, out, err);
   // Before anything that takes time (reading the deck and the model, setting up): a signal during it stops
   // the run before its first cycle, and the default action (an end without a summary) never meets it.
   const StopSignals stop_signals;

@@ -26,6 +26,10 @@ struct EngineOptions {
   // engine does not run on more than one rank yet (solver/parallel/engine_domain.hpp) is refused by name
   // before anything is written.
   solver::parallel::Comm* comm = nullptr;
+  // --decompose P (P > 0): do not run; print and write the decomposition over P ranks
+  // (apps/engine_decompose.hpp), the group ranks from `partition_file` when given (--partition FILE).
+  int decompose_ranks = 0;
+  std::string partition_file;
 };
 
 // 0 normal termination, 1 input error or error termination (also every rank of a run on more than one rank).

@@ -43,7 +43,7 @@ constexpr CommandHelp kCommands[] = {
      "code)\n"},
     {"run",
      "  run [DECK] [--out DIR] [--threads N] [--no-plot] [--allow-substitutions] [--starter-only]\n"
-     "      [--stop-if-runaway]\n"
+     "      [--stop-if-runaway] [--decompose P]\n"
      "                              the starter then the engine: DECK is NAME_0000.rad (NAME_0001.rad "
      "beside\n"
      "                              it) or a one-file deck; without DECK, the embedded default deck.\n"
@@ -51,7 +51,9 @@ constexpr CommandHelp kCommands[] = {
      "                              where the deck asks for one it lacks (each is listed) instead of\n"
      "                              refusing the deck. --starter-only: stop after the starter (a\n"
      "                              starter deck with no engine deck). --stop-if-runaway: as\n"
-     "                              radx-engine's (stop a run whose step has collapsed)\n"},
+     "                              radx-engine's (stop a run whose step has collapsed).\n"
+     "                              --decompose P: after the starter, radx-engine --decompose P (print\n"
+     "                              and write the decomposition over P ranks; no run)\n"},
     {"th",
      "  th FILE [--csv [-o OUT.csv] [--var SELECTOR]... [--filter CFC]] | th FILE --recover\n"
      "                              a time history P_th.h5: without --csv, list its groups (objects,\n"
@@ -135,7 +137,7 @@ int run(const std::vector<std::string>& args) {
   bool starter_only = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if ((a == "--out" || a == "--threads") && i + 1 >= args.size()) {
+    if ((a == "--out" || a == "--threads" || a == "--decompose") && i + 1 >= args.size()) {
       std::cerr << "radx run: " << a << " needs a value\n";
       return radx::app::kExitUsage;
     }
@@ -151,6 +153,16 @@ int run(const std::vector<std::string>& args) {
         std::cerr << "radx run: --threads needs a positive integer\n";
         return radx::app::kExitUsage;
       }
+    } else if (a == "--decompose") {
+      try {
+        eopt.decompose_ranks = std::stoi(args[++i]);
+      } catch (...) {
+        eopt.decompose_ranks = -1;
+      }
+      if (eopt.decompose_ranks < 1) {
+        std::cerr << "radx run: --decompose needs a positive integer (the rank count)\n";
+        return radx::app::kExitUsage;
+      }
     } else if (a == "--no-plot") {
       eopt.plot = false;
     } else if (a == "--stop-if-runaway") {
@@ -162,7 +174,7 @@ int run(const std::vector<std::string>& args) {
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << radx::app::unknown_option("radx run", a,
                                              {"--out", "--threads", "--no-plot", "--allow-substitutions",
-                                              "--starter-only", "--stop-if-runaway", "--help"})
+                                              "--starter-only", "--stop-if-runaway", "--decompose", "--help"})
                 << '\n';
       return radx::app::kExitUsage;
     } else if (sopt.deck.empty()) {

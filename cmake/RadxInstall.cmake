@@ -48,7 +48,7 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/radxConfig.cmake.in
   ${PROJECT_BINARY_DIR}/radxConfig.cmake INSTALL_DESTINATION ${RADX_CMAKE_DIR})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/radxConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/radxConfig.cmake ${PROJECT_BINARY_DIR}/radxConfigVersion.cmake
-  ${PROJECT_SOURCE_DIR}/cmake/FindCHOLMOD.cmake DESTINATION ${RADX_CMAKE_DIR})
+  ${PROJECT_SOURCE_DIR}/cmake/FindCHOLMOD.cmake ${PROJECT_SOURCE_DIR}/cmake/FindMETIS.cmake DESTINATION ${RADX_CMAKE_DIR})
 
 # The Debian package: one package, radx, with all of the above under /usr. Its Depends come from the
 # executables' shared libraries (dpkg-shlibdeps: libhdf5, CHOLMOD, libstdc++, ...); the energy chart needs
@@ -66,5 +66,5 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3-matplotlib")
-set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libeigen3-dev, libhdf5-dev, libsuitesparse-dev, python3-paraview")
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libeigen3-dev, libhdf5-dev, libmetis-dev, libsuitesparse-dev, python3-paraview")
 include(CPack)

@@ -57,6 +57,7 @@
 #include "contact/type7_laws.hpp"
 #include "contact/type7_prepare.hpp"
 #include "contact/type7_search.hpp"
+#include "solver/model/exact_sum.hpp"
 #include "solver/model/geometry.hpp"
 
 namespace radx::contact {
@@ -91,8 +92,11 @@ struct InterfaceState {
   std::vector<std::uint8_t> hit;                    // IBC: first impact seen
   std::vector<std::int32_t> owner_cell;             // model cell behind each segment (Idel), -1 unknown
   std::vector<PairRecord> pairs;
-  InterfaceResult result;
-  double w_elastic = 0, w_damping = 0, w_friction = 0, w_lagrange = 0;
+  InterfaceResult result;  // its energies and forces are filled from the exact sums below by results()
+  // Works of the contact forces since the start, and the forces of the last cycle: reported sums, exact and
+  // order-free (model::ExactSum), so any split of the pairs between threads or ranks gives the same bits.
+  model::ExactSum w_elastic, w_damping, w_friction, w_lagrange;
+  std::array<model::ExactSum, 3> normal_force, tangential_force;
   bool started = false;    // the first cycle inside [Tstart, Tstop) has been seen
   bool from_start = true;  // the starter's initial-penetration treatment holds (Tstart 0, no sensor)
   std::int32_t sensor = model::kNone;  // dense index into model.sensors
@@ -594,14 +598,14 @@ struct Type7Contact::Impl {
     }
     st.pairs.push_back(PairRecord{q.row.node, seg, q.row.h, q.f_el, q.f_dp, q.f_fr});
     // The other half of the step's work (see book_work): this cycle's force with v^{n-1/2}.
-    st.w_elastic += 0.5 * model::dot(q.f_el, q.vr) * dt1_;
-    st.w_damping += 0.5 * model::dot(q.f_dp, q.vr) * dt1_;
-    st.w_friction += 0.5 * model::dot(q.f_fr, q.vr) * dt1_;
+    st.w_elastic.add(0.5 * model::dot(q.f_el, q.vr) * dt1_);
+    st.w_damping.add(0.5 * model::dot(q.f_dp, q.vr) * dt1_);
+    st.w_friction.add(0.5 * model::dot(q.f_fr, q.vr) * dt1_);
     ++st.result.active_pairs;
     st.result.max_penetration = std::max(st.result.max_penetration, q.p);
     for (std::size_t d = 0; d < 3; ++d) {
-      st.result.normal_force[d] += q.f_el[d] + q.f_dp[d];
-      st.result.tangential_force[d] += q.f_fr[d];
+      st.normal_force[d].add(q.f_el[d] + q.f_dp[d]);
+      st.tangential_force[d].add(q.f_fr[d]);
     }
     if (q.dt_vote < vote.dt) {
       vote.dt = q.dt_vote;
@@ -796,13 +800,10 @@ struct Type7Contact::Impl {
   void book_work(InterfaceState& st, const ContactNodes& nodes, double dt1) {
     for (const auto& p : st.pairs) {
       const Vec3 vr = relative_velocity(velocity(nodes), p.node, p.seg, p.h);
-      st.w_elastic += 0.5 * model::dot(p.f_elastic, vr) * dt1;
-      st.w_damping += 0.5 * model::dot(p.f_damping, vr) * dt1;
-      st.w_friction += 0.5 * model::dot(p.f_friction, vr) * dt1;
+      st.w_elastic.add(0.5 * model::dot(p.f_elastic, vr) * dt1);
+      st.w_damping.add(0.5 * model::dot(p.f_damping, vr) * dt1);
+      st.w_friction.add(0.5 * model::dot(p.f_friction, vr) * dt1);
     }
-    st.result.e_elastic = -st.w_elastic;
-    st.result.e_damping = -st.w_damping;
-    st.result.e_friction = -st.w_friction;
   }
 
   // The second half of the last cycle's multiplier work, over [t^n, t^{n+1/2}] with the mean velocity
@@ -812,9 +813,8 @@ struct Type7Contact::Impl {
       const Vec3 vr = relative_velocity(velocity(nodes), r.node, r.seg, r.h);
       const Vec3 vmean = model::scale(model::add(vr, r.vr_full), 0.5);
       auto& st = interfaces[static_cast<std::size_t>(r.iface)];
-      st.w_lagrange += model::dot(r.f_normal, vmean) * 0.5 * r.dt2;
-      st.w_friction += model::dot(r.f_friction, vmean) * 0.5 * r.dt2;
-      st.result.e_lagrange = -st.w_lagrange;
+      st.w_lagrange.add(model::dot(r.f_normal, vmean) * 0.5 * r.dt2);
+      st.w_friction.add(model::dot(r.f_friction, vmean) * 0.5 * r.dt2);
     }
     lagrange_records.clear();
   }
@@ -1123,8 +1123,8 @@ struct Type7Contact::Impl {
     const auto& in = *st.in;
     st.pairs.clear();
     st.result.active_pairs = 0;
-    st.result.normal_force = {0, 0, 0};
-    st.result.tangential_force = {0, 0, 0};
+    st.normal_force = {};
+    st.tangential_force = {};
     st.result.switched_pairs = 0;
     if (st.sensor != model::kNone) {
       if (static_cast<std::size_t>(st.sensor) >= sensor_starts.size())
@@ -1204,10 +1204,6 @@ ContactStep Type7Contact::compute(double t, double dt1, const ContactNodes& node
   for (const auto& q : s.pending)
     if (q.st != nullptr) s.apply_pair(q, vote);
   for (auto& st : s.interfaces) {
-    // Both halves of the step's work are in now (book_work and apply_pair).
-    st.result.e_elastic = -st.w_elastic;
-    st.result.e_damping = -st.w_damping;
-    st.result.e_friction = -st.w_friction;
     st.result.switched_pairs_max = std::max(st.result.switched_pairs_max, st.result.switched_pairs);
     st.result.switched_pairs_total += st.result.switched_pairs;
   }
@@ -1269,8 +1265,8 @@ const std::vector<NodeForce>& Type7Contact::lagrange_correction(const LagrangeNo
     for (std::size_t j = 0; j < (triangle ? 3u : 4u); ++j)
       if (row.h[j] != 0) put(row.seg[j], model::scale(f, -row.h[j]));
     for (std::size_t d = 0; d < 3; ++d) {
-      st.result.normal_force[d] += fn[d];
-      st.result.tangential_force[d] += out.friction[d];
+      st.normal_force[d].add(fn[d]);
+      st.tangential_force[d].add(out.friction[d]);
     }
     // Work over [t^{n-1/2}, t^n] with the mean velocity of that half step (exact for a force constant over
     // the step, which the multiplier is): F . (v_r^{n-1/2} + v_r^n) / 2 dt1 / 2; the other half at the next
@@ -1278,10 +1274,8 @@ const std::vector<NodeForce>& Type7Contact::lagrange_correction(const LagrangeNo
     const Vec3 vr_half = relative_velocity(v_half, row.node, row.seg, row.h);
     const Vec3 vr_full = relative_velocity(v_full, row.node, row.seg, row.h);
     const Vec3 vmean = model::scale(model::add(vr_half, vr_full), 0.5);
-    st.w_lagrange += model::dot(fn, vmean) * 0.5 * dt1;
-    st.w_friction += model::dot(out.friction, vmean) * 0.5 * dt1;
-    st.result.e_lagrange = -st.w_lagrange;
-    st.result.e_friction = -st.w_friction;
+    st.w_lagrange.add(model::dot(fn, vmean) * 0.5 * dt1);
+    st.w_friction.add(model::dot(out.friction, vmean) * 0.5 * dt1);
     s.lagrange_records.push_back(
         LagrangeRecord{row.law, row.node, row.seg, row.h, fn, out.friction, vr_full, dt2});
   }
@@ -1312,10 +1306,12 @@ const LagrangeStats& Type7Contact::lagrange_stats() const {
   return impl_->lagrange.stats();
 }
 
+// The booked energies are the negated works (0 - w: +0 when nothing was booked); the sum over the interfaces
+// is exact too, rounded once.
 double Type7Contact::energy_lagrange() const {
-  double e = 0;
-  for (const auto& st : impl_->interfaces) e += st.result.e_lagrange;
-  return e;
+  model::ExactSum w;
+  for (const auto& st : impl_->interfaces) w.merge(st.w_lagrange);
+  return 0.0 - w.value();
 }
 
 const std::vector<double>& Type7Contact::force() const {
@@ -1362,25 +1358,34 @@ std::vector<InterfaceResult> Type7Contact::results() const {
   std::vector<InterfaceResult> out;
   for (const auto& st : impl_->interfaces) {
     out.push_back(st.result);
-    if (st.search) out.back().search_sorts = st.search->sorts();
+    auto& r = out.back();
+    if (st.search) r.search_sorts = st.search->sorts();
+    r.e_elastic = 0.0 - st.w_elastic.value();
+    r.e_damping = 0.0 - st.w_damping.value();
+    r.e_friction = 0.0 - st.w_friction.value();
+    r.e_lagrange = 0.0 - st.w_lagrange.value();
+    for (std::size_t d = 0; d < 3; ++d) {
+      r.normal_force[d] = st.normal_force[d].value();
+      r.tangential_force[d] = st.tangential_force[d].value();
+    }
   }
   return out;
 }
 
 double Type7Contact::energy_elastic() const {
-  double e = 0;
-  for (const auto& st : impl_->interfaces) e += st.result.e_elastic;
-  return e;
+  model::ExactSum w;
+  for (const auto& st : impl_->interfaces) w.merge(st.w_elastic);
+  return 0.0 - w.value();
 }
 double Type7Contact::energy_damping() const {
-  double e = 0;
-  for (const auto& st : impl_->interfaces) e += st.result.e_damping;
-  return e;
+  model::ExactSum w;
+  for (const auto& st : impl_->interfaces) w.merge(st.w_damping);
+  return 0.0 - w.value();
 }
 double Type7Contact::energy_friction() const {
-  double e = 0;
-  for (const auto& st : impl_->interfaces) e += st.result.e_friction;
-  return e;
+  model::ExactSum w;
+  for (const auto& st : impl_->interfaces) w.merge(st.w_friction);
+  return 0.0 - w.value();
 }
 
 std::vector<std::string> Type7Contact::take_messages() {

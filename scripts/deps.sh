@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages radx needs, only those missing (safe to run again).
-# Build: cmake, ninja, g++, Eigen, SuiteSparse (CHOLMOD), HDF5, Catch2, and Open MPI for radx-engine-mpi and
+# Build: cmake, ninja, g++, Eigen, SuiteSparse (CHOLMOD), HDF5, METIS, Catch2, and Open MPI for radx-engine-mpi and
 # mpirun (docs/parallel.md; the other executables do not link it). Tests: hdf5-tools, h5py, and
 # ParaView's pvpython (python3-paraview), which the tests use to open the files as a user would. Runs:
 # python3-matplotlib, with which the engine draws NAME_energy.png (io/listing/energy_plot.hpp). Fuzzing and the clang
@@ -13,7 +13,7 @@
 # both commands, looks for it.
 # Usage: scripts/deps.sh [run]
 set -euo pipefail
-packages=(cmake ninja-build g++ libeigen3-dev libsuitesparse-dev libhdf5-dev catch2 python3-matplotlib git
+packages=(cmake ninja-build g++ libeigen3-dev libsuitesparse-dev libhdf5-dev libmetis-dev catch2 python3-matplotlib git
           libopenmpi-dev openmpi-bin)
 if [[ "${1:-}" != run ]]; then
   packages+=(hdf5-tools python3-h5py python3-numpy python3-paraview clang-format clang libclang-rt-dev libomp-dev

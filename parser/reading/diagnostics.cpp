@@ -116,6 +116,14 @@ const std::vector<CodeInfo>& code_table() {
        "the engine deck has no /END line: it is read to the end of the file, as Radioss does"},
       {Diag::EngineRestartDecks,
        "NAME_0002.rad and later beside the engine deck: OpenRadioss restart decks, which radx does not run"},
+      {Diag::DecompositionRanks,
+       "radx-engine --decompose P: more ranks than the model has element groups to deal out (after each "
+       "small "
+       "rigid body's groups are joined)"},
+      {Diag::BadGroupRankFile,
+       "a group-rank file (radx-engine --partition) line that is not \"GROUP RANK\" with both in range, a "
+       "group "
+       "given twice, or a group given no rank"},
       {Diag::ModelFileBadReference,
        "a model-file entry the engine cannot use: an index out of range, arrays of different lengths, a "
        "repeated "

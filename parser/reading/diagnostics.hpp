@@ -94,6 +94,8 @@ enum class Diag : std::uint16_t {
   EngineRunNameMismatch = 803,
   EngineNoEnd = 804,
   EngineRestartDecks = 805,
+  DecompositionRanks = 806,
+  BadGroupRankFile = 807,
   // model file
   ModelFileBadReference = 901,
   ModelFileBadValue = 902,

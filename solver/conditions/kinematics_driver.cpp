@@ -78,45 +78,44 @@ void KinematicsDriver::kinematic_conditions(double t, double dt1, double dt2) {
 
 void KinematicsDriver::after_update(double) {}
 
+// The node terms here and the rigid bodies' negated copies of them (RigidBodies::kinetic_correction) are the
+// same expressions, so a secondary node's terms cancel exactly in the exact sums.
 void KinematicsDriver::kinetic_energy(double dt1, double& translational, double& rotational) const {
   const auto& s = nodes_;
-  translational = rotational = 0;
+  KineticSums sums;
   const double h = 0.5 * dt1;
   for (std::size_t n = 0; n < s.n; ++n) {
     const double vx = s.vx[n] + h * s.ax[n], vy = s.vy[n] + h * s.ay[n], vz = s.vz[n] + h * s.az[n];
-    translational += 0.5 * s.mass[n] * (vx * vx + vy * vy + vz * vz);
+    sums.translational.add(0.5 * s.mass[n] * (vx * vx + vy * vy + vz * vz));
     const double wx = s.wx[n] + h * s.awx[n], wy = s.wy[n] + h * s.awy[n], wz = s.wz[n] + h * s.awz[n];
-    rotational += 0.5 * s.inertia[n] * (wx * wx + wy * wy + wz * wz);
+    sums.rotational.add(0.5 * s.inertia[n] * (wx * wx + wy * wy + wz * wz));
   }
-  if (parts_->bodies.size() > 0) {
-    const auto c = parts_->bodies.kinetic_correction(s, dt1);
-    translational += c.translational;
-    rotational += c.rotational;
-  }
+  if (parts_->bodies.size() > 0) parts_->bodies.kinetic_correction(s, dt1, sums);
+  translational = sums.translational.value();
+  rotational = sums.rotational.value();
 }
 
 std::array<double, 3> KinematicsDriver::momentum(double dt1) const {
   const auto& s = nodes_;
-  std::array<double, 3> p{};
+  KineticSums sums;
   const double h = 0.5 * dt1;
   for (std::size_t n = 0; n < s.n; ++n) {
-    p[0] += s.mass[n] * (s.vx[n] + h * s.ax[n]);
-    p[1] += s.mass[n] * (s.vy[n] + h * s.ay[n]);
-    p[2] += s.mass[n] * (s.vz[n] + h * s.az[n]);
+    sums.momentum[0].add(s.mass[n] * (s.vx[n] + h * s.ax[n]));
+    sums.momentum[1].add(s.mass[n] * (s.vy[n] + h * s.ay[n]));
+    sums.momentum[2].add(s.mass[n] * (s.vz[n] + h * s.az[n]));
   }
-  if (parts_->bodies.size() > 0) {
-    const auto c = parts_->bodies.kinetic_correction(s, dt1);
-    for (int k = 0; k < 3; ++k) p[k] += c.momentum[k];
-  }
-  return p;
+  if (parts_->bodies.size() > 0) parts_->bodies.kinetic_correction(s, dt1, sums);
+  return {sums.momentum[0].value(), sums.momentum[1].value(), sums.momentum[2].value()};
 }
 
 double KinematicsDriver::external_work() const {
   return parts_->external_work;
 }
 
-double KinematicsDriver::mass_correction() const {
-  return parts_->bodies.size() > 0 ? parts_->bodies.kinetic_correction(nodes_, 0.0).mass : 0.0;
+model::ExactSum KinematicsDriver::mass_correction() const {
+  KineticSums sums;
+  if (parts_->bodies.size() > 0) parts_->bodies.kinetic_correction(nodes_, 0.0, sums);
+  return sums.mass;
 }
 
 std::vector<std::uint8_t> KinematicsDriver::held_nodes() const {

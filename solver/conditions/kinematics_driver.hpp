@@ -13,6 +13,7 @@
 #include "solver/conditions/rigid_wall_plane.hpp"
 #include "solver/conditions/skew_frames.hpp"
 #include "solver/engine/node_state.hpp"
+#include "solver/model/exact_sum.hpp"
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
 
@@ -46,12 +47,13 @@ class KinematicsDriver {
   // After x += dt2 v (moving frames of rigid bodies).
   void after_update(double dt2);
   // KE at the full step, v = v^{n-1/2} + dt1/2 a^n (docs/theory/elements.md section 8), rigid bodies counted
-  // once.
+  // once. Exact sums, rounded once (model::ExactSum): the same bits in any order of the nodes.
   void kinetic_energy(double dt1, double& translational, double& rotational) const;
   [[nodiscard]] std::array<double, 3> momentum(double dt1) const;
   [[nodiscard]] double external_work() const;
-  // Correction to the nodal mass sum so that each rigid body counts once.
-  [[nodiscard]] double mass_correction() const;
+  // Correction to the nodal mass sum so that each rigid body counts once (exact: merge it into the sum of
+  // the nodal masses before rounding).
+  [[nodiscard]] model::ExactSum mass_correction() const;
   // Per node, 1 where a condition applied after the accelerations moves the node (/IMPVEL, rigid bodies
   // with their main node, rigid walls' secondary and moving nodes); /BCS only holds dofs and is not marked.
   [[nodiscard]] std::vector<std::uint8_t> held_nodes() const;

@@ -349,8 +349,7 @@ void RigidBodies::secondary_kinematics(NodeState& s, double dt1, double dt2) con
   }
 }
 
-KineticCorrection RigidBodies::kinetic_correction(const NodeState& s, double dt1) const {
-  KineticCorrection c;
+void RigidBodies::kinetic_correction(const NodeState& s, double dt1, KineticSums& c) const {
   const double h = 0.5 * dt1;
   for (const auto& b : bodies_) {
     if (!b.active) continue;
@@ -358,20 +357,22 @@ KineticCorrection RigidBodies::kinetic_correction(const NodeState& s, double dt1
     const Eigen::Map<const RowMat3> r(b.axes.data());
     const Vec3 w = spin(s, mn) + h * spin_rate(s, mn);
     const Vec3 wp = r * w;
-    c.rotational += 0.5 * (b.principal[0] * wp(0) * wp(0) + b.principal[1] * wp(1) * wp(1) +
-                           b.principal[2] * wp(2) * wp(2)) -
-                    0.5 * s.inertia[mn] * w.squaredNorm();
+    c.rotational.add(0.5 * (b.principal[0] * wp(0) * wp(0) + b.principal[1] * wp(1) * wp(1) +
+                            b.principal[2] * wp(2) * wp(2)));
+    c.rotational.add(-(0.5 * s.inertia[mn] * w.squaredNorm()));
+    // Each secondary's terms exactly as the node sums add them (kinematics_driver.cpp), negated: they cancel.
     for (const auto n : b.secondary) {
       const auto k = static_cast<std::size_t>(n);
-      const Vec3 v = velocity(s, k) + h * acceleration(s, k);
-      const Vec3 ws = spin(s, k) + h * spin_rate(s, k);
-      c.translational -= 0.5 * s.mass[k] * v.squaredNorm();
-      c.rotational -= 0.5 * s.inertia[k] * ws.squaredNorm();
-      c.mass -= s.mass[k];
-      for (int d = 0; d < 3; ++d) c.momentum[static_cast<std::size_t>(d)] -= s.mass[k] * v(d);
+      const double vx = s.vx[k] + h * s.ax[k], vy = s.vy[k] + h * s.ay[k], vz = s.vz[k] + h * s.az[k];
+      const double wx = s.wx[k] + h * s.awx[k], wy = s.wy[k] + h * s.awy[k], wz = s.wz[k] + h * s.awz[k];
+      c.translational.add(-(0.5 * s.mass[k] * (vx * vx + vy * vy + vz * vz)));
+      c.rotational.add(-(0.5 * s.inertia[k] * (wx * wx + wy * wy + wz * wz)));
+      c.mass.add(-s.mass[k]);
+      c.momentum[0].add(-(s.mass[k] * vx));
+      c.momentum[1].add(-(s.mass[k] * vy));
+      c.momentum[2].add(-(s.mass[k] * vz));
     }
   }
-  return c;
 }
 
 std::array<double, 6> current_inertia(const RigidBodyInfo& b) {

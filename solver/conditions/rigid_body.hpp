@@ -60,6 +60,7 @@
 #include <vector>
 
 #include "solver/engine/node_state.hpp"
+#include "solver/model/exact_sum.hpp"
 #include "solver/model/model.hpp"
 
 namespace radx::solver {
@@ -92,11 +93,12 @@ struct RigidBodyInfo {
 // (the principal values after Ispher). Ixx Iyy Izz Ixy Iyz Ixz.
 std::array<double, 6> current_inertia(const RigidBodyInfo& b);
 
-// Amounts to ADD to the sums over all nodes (translational and rotational KE, mass, momentum) so that
-// each rigid body is counted once (docs/theory/elements.md 7.2 point 5).
-struct KineticCorrection {
-  double translational = 0, rotational = 0, mass = 0;
-  std::array<double, 3> momentum{};
+// The reported sums over the nodes (translational and rotational KE, mass, momentum), exact and order-free
+// (docs/theory/elements.md 8.1): a rigid body's correction added to them cancels its secondaries' node
+// terms exactly.
+struct KineticSums {
+  model::ExactSum translational, rotational, mass;
+  std::array<model::ExactSum, 3> momentum;
 };
 
 class RigidBodies {
@@ -116,8 +118,9 @@ class RigidBodies {
   void gather_and_accelerate(NodeState& s, double t, double dt1, std::span<const double> sensor_starts = {});
   // Cycle step 5, last kinematic condition before v += dt12 a. Precondition: dt1 + dt2 > 0.
   void secondary_kinematics(NodeState& s, double dt1, double dt2) const;
-  // Energy balance at print time (velocities v + dt1/2 a).
-  [[nodiscard]] KineticCorrection kinetic_correction(const NodeState& s, double dt1) const;
+  // Energy balance at print time (velocities v + dt1/2 a): adds to `sums` what makes each rigid body count
+  // once in the sums over all nodes (docs/theory/elements.md 7.2 point 5).
+  void kinetic_correction(const NodeState& s, double dt1, KineticSums& sums) const;
   // Kinetic energy of body b at print time: 1/2 M |v_N|^2 + 1/2 sum I_i w_i^2.
   [[nodiscard]] double kinetic_energy(std::size_t b, const NodeState& s, double dt1) const;
 

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "solver/model/exact_sum.hpp"
+
 namespace radx::solver {
 
 RigidWalls::RigidWalls(const model::Model& m) {
@@ -171,8 +173,12 @@ double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
     const double tol_wall = std::abs(vn - w.vn_prev);
     if (w.shape == 3) w.vn_prev = vn;
     const double mu2 = w.friction * w.friction;
+    // fnx.. and contact_mass feed a moving wall's motion (force_prev): serial sums in secondary order. What
+    // is only reported (forces, impulses, work) is summed exactly, order-free (model::ExactSum).
     double fnx = 0, fny = 0, fnz = 0, ftx = 0, fty = 0, ftz = 0;
-    double contact_mass = 0, w_normal = 0, w_tangential = 0;
+    double contact_mass = 0;
+    std::array<model::ExactSum, 3> reported_fn, reported_ft;
+    model::ExactSum w_normal, w_tangential;
     int contacts = 0;
     for (const auto n32 : w.secondary) {
       const auto n = static_cast<std::size_t>(n32);
@@ -201,10 +207,13 @@ double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
       const double p = s.ax[n] * nx + s.ay[n] * ny + s.az[n] * nz;
       const double fn = m * (u + p * dt12 - vp);
       const double fx = fn * nx, fy = fn * ny, fz = fn * nz;
-      w_normal -= fact * u * fn;
+      w_normal.add(-(fact * u * fn));
       fnx += fx;
       fny += fy;
       fnz += fz;
+      reported_fn[0].add(fx);
+      reported_fn[1].add(fy);
+      reported_fn[2].add(fz);
       contact_mass += m;
       const double du = u - vp;  // normal velocity removed
       if (w.slide == 0) {
@@ -241,22 +250,24 @@ double RigidWalls::apply(NodeState& s, double dt1, double dt2) {
         s.vx[n] -= du * nx;
         s.vy[n] -= du * ny;
         s.vz[n] -= du * nz;
-        w_tangential -= (s.vx[n] - vwx) * tx + (s.vy[n] - vwy) * ty + (s.vz[n] - vwz) * tz;
+        w_tangential.add(-((s.vx[n] - vwx) * tx + (s.vy[n] - vwy) * ty + (s.vz[n] - vwz) * tz));
       }
       ftx += tx;
       fty += ty;
       ftz += tz;
+      reported_ft[0].add(tx);
+      reported_ft[1].add(ty);
+      reported_ft[2].add(tz);
     }
-    work += w_tangential + 0.5 * dt1 * w_normal;
+    work += w_tangential.value() + 0.5 * dt1 * w_normal.value();
     o.contacts = contacts;
-    o.normal_force = {fnx * fact, fny * fact, fnz * fact};
-    o.tangential_force = {ftx * fact, fty * fact, ftz * fact};
-    o.normal_impulse[0] += fnx;
-    o.normal_impulse[1] += fny;
-    o.normal_impulse[2] += fnz;
-    o.tangential_impulse[0] += ftx;
-    o.tangential_impulse[1] += fty;
-    o.tangential_impulse[2] += ftz;
+    for (std::size_t d = 0; d < 3; ++d) {
+      const double impulse_n = reported_fn[d].value(), impulse_t = reported_ft[d].value();
+      o.normal_force[d] = impulse_n * fact;
+      o.tangential_force[d] = impulse_t * fact;
+      o.normal_impulse[d] += impulse_n;
+      o.tangential_impulse[d] += impulse_t;
+    }
     w.force_prev = {(fnx + ftx) * fact, (fny + fty) * fact, (fnz + ftz) * fact};
     w.contact_mass_prev = contact_mass;
   }

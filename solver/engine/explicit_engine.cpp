@@ -21,6 +21,7 @@
 #include <utility>
 
 #include "solver/conditions/kinematics_driver.hpp"
+#include "solver/model/exact_sum.hpp"
 #include "solver/model/geometry.hpp"
 #include "solver/model/hex20_shape.hpp"
 #include "solver/model/masses.hpp"
@@ -219,8 +220,10 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
       for (const auto& f : refused) names += (names.empty() ? "" : ", ") + f;
       throw std::runtime_error("the engine does not run these on more than one rank yet: " + names);
     }
-    domain_ = std::make_unique<parallel::EngineDomain>(groups_, static_cast<std::int64_t>(nodes_.n),
-                                                       *options_.comm);
+    auto& comm = *options_.comm;
+    domain_ =
+        std::make_unique<parallel::EngineDomain>(groups_, parallel::engine_group_ranks(model_, groups_, comm),
+                                                 static_cast<std::int64_t>(nodes_.n), comm);
   }
   group_votes_.resize(static_cast<std::size_t>(group_count()));
   team_ =
@@ -1287,14 +1290,18 @@ CycleReport ExplicitEngine::report(std::int64_t cycle, double time, double dt,
   r.control = control;
   r.energy = energy_;
   r.mass0 = mass0_;
-  double mass = 0, added = 0;
-  for (std::size_t n = 0; n < nodes_.n; ++n) {
-    mass += nodes_.mass[n];
-    added += nodes_.added_mass[n];
-  }
-  r.mass = mass + kinematics_->mass_correction();
-  r.added_mass = added;
+  r.mass = total_mass();
+  model::ExactSum added;
+  for (std::size_t n = 0; n < nodes_.n; ++n) added.add(nodes_.added_mass[n]);
+  r.added_mass = added.value();
   return r;
+}
+
+// The nodal masses with each rigid body counted once, exact and order-free (docs/theory/elements.md 8.1).
+double ExplicitEngine::total_mass() const {
+  model::ExactSum mass = kinematics_->mass_correction();
+  for (std::size_t n = 0; n < nodes_.n; ++n) mass.add(nodes_.mass[n]);
+  return mass.value();
 }
 
 // The time loop. Each cycle is the list of its stages, in the order of explicit_engine.hpp:
@@ -1315,8 +1322,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
   kinematics_->initial_conditions();
   if (contact_) held_ = kinematics_->held_nodes();
   // Reference mass after the set-up (rigid bodies and moving walls may add mass).
-  mass0_ = kinematics_->mass_correction();
-  for (std::size_t n = 0; n < nodes_.n; ++n) mass0_ += nodes_.mass[n];
+  mass0_ = total_mass();
 
   LoopState L;
   while (true) {
@@ -1632,21 +1638,40 @@ void ExplicitEngine::share_output_state() {
   });
 }
 
+// The element energies: each group's partial sums (from 0, in element order), then the partials added in
+// flat group order. A group is never split between ranks, so its partial is the same on any rank count; the
+// ranks will gather the partials (24 B a group) and add them in this order, as one rank does.
 void ExplicitEngine::sum_energies(const LoopState& L) {
   auto& kin = *kinematics_;
-  energy_.internal = energy_.hourglass = energy_.plastic_work = energy_.spring = 0;
+  struct GroupEnergy {
+    double internal = 0, hourglass = 0, plastic_work = 0;
+    bool spring = false;  // a spring group: its internal energy is the spring energy
+  };
+  std::vector<GroupEnergy> partials;
+  partials.reserve(static_cast<std::size_t>(groups_.count()));
   groups_.for_each([&](const auto& g) {
+    GroupEnergy e;
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
+      e.internal += g.e_int[k];
       if constexpr (kHasMaterial<std::decay_t<decltype(g)>>) {
-        energy_.internal += g.e_int[k];
-        energy_.hourglass += g.e_hg[k];
-        energy_.plastic_work += g.w_plastic[k];
-      } else {
-        energy_.spring += g.e_int[k];
+        e.hourglass += g.e_hg[k];
+        e.plastic_work += g.w_plastic[k];
       }
     }
+    e.spring = !kHasMaterial<std::decay_t<decltype(g)>>;
+    partials.push_back(e);
   });
+  energy_.internal = energy_.hourglass = energy_.plastic_work = energy_.spring = 0;
+  for (const auto& e : partials) {
+    if (e.spring) {
+      energy_.spring += e.internal;
+    } else {
+      energy_.internal += e.internal;
+      energy_.hourglass += e.hourglass;
+      energy_.plastic_work += e.plastic_work;
+    }
+  }
   energy_.internal += energy_.spring;
   if (contact_) {
     energy_.contact_elastic = contact_->energy_elastic();

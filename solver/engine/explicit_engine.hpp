@@ -203,6 +203,7 @@ class ExplicitEngine {
   double nodal_time_step(StepControl& control);
   [[nodiscard]] std::string bad_element(double time, std::int64_t cycle) const;
   CycleReport report(std::int64_t cycle, double time, double dt, const StepControl& control) const;
+  [[nodiscard]] double total_mass() const;
 
   const model::Model& model_;  // the caller keeps the model alive for the engine's lifetime
   // A copy: controls are small, and a temporary passed to the constructor must not dangle.

@@ -16,10 +16,15 @@
 // side gives F = -P, the half on the loaded side F = +P (quasi-statically). Radioss accumulates these sums
 // every cycle into impulses (its time history holds integrals over time); radx evaluates them every cycle and
 // writes their means over each output interval (solver/outputs/time_history_values.hpp).
+// The sums (F, M, the centre of modes 1 and 2) are reported only: they are exact and order-free
+// (model::ExactSum), so any split of the cut's terms between threads or ranks gives the same bits.
 #include "solver/outputs/section_cut.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+
+#include "solver/model/exact_sum.hpp"
 
 namespace radx::solver {
 
@@ -111,25 +116,29 @@ SectionCut SectionSum::evaluate(const NodeState& nodes, const ElementGroups& gro
       break;
     case 1:
     case 2: {
-      double w_sum = 0;
+      model::ExactSum w_sum;
+      std::array<model::ExactSum, 3> weighted_position;
       for (const auto n : nodes_) {
         const double w = iframe_ % 10 == 1 ? 1.0 : nodes.mass[static_cast<std::size_t>(n)];
         const Vec3 p = x(n);
-        for (std::size_t d = 0; d < 3; ++d) c.centre[d] += w * p[d];
-        w_sum += w;
+        for (std::size_t d = 0; d < 3; ++d) weighted_position[d].add(w * p[d]);
+        w_sum.add(w);
       }
-      if (w_sum > 0)
-        for (auto& v : c.centre) v /= w_sum;
+      const double w_total = w_sum.value();
+      if (w_total > 0)
+        for (std::size_t d = 0; d < 3; ++d) c.centre[d] = weighted_position[d].value() / w_total;
       break;
     }
     default: break;  // 3: the origin
   }
+  std::array<model::ExactSum, 3> force, moment;
   auto add = [&](std::int32_t node, const double* f, std::size_t stride, bool with_moment) {
     const Vec3 fq{f[0], f[stride], f[2 * stride]};
     const Vec3 m = cross(minus(x(node), c.centre), fq);
     for (std::size_t d = 0; d < 3; ++d) {
-      c.force[d] += fq[d];
-      c.moment[d] += m[d] + (with_moment ? f[(3 + d) * stride] : 0.0);
+      force[d].add(fq[d]);
+      moment[d].add(m[d]);
+      if (with_moment) moment[d].add(f[(3 + d) * stride]);
     }
   };
   constexpr auto G = static_cast<std::size_t>(kGroupSize);
@@ -147,6 +156,10 @@ SectionCut SectionSum::evaluate(const NodeState& nodes, const ElementGroups& gro
       case Kind::Truss: add_corners(groups.trusses[k], t, 2, 3); break;
       case Kind::Beam: add_corners(groups.beams[k], t, 2, 6); break;
     }
+  }
+  for (std::size_t d = 0; d < 3; ++d) {
+    c.force[d] = force[d].value();
+    c.moment[d] = moment[d].value();
   }
   const double fn = dot(c.force, c.normal);
   for (std::size_t d = 0; d < 3; ++d) {

@@ -9,6 +9,7 @@
 #include "solver/conditions/kinematics_driver.hpp"
 #include "solver/conditions/rigid_body.hpp"
 #include "solver/elements/shell/shell_section.hpp"
+#include "solver/model/exact_sum.hpp"
 #include "solver/model/masses.hpp"
 
 namespace radx::solver {
@@ -310,23 +311,29 @@ void ThGroupSampler::sample_parts(const ExplicitEngine& e, const CycleReport& r,
   const auto& s = e.nodes();
   const auto& m = e.model();
   const double h = 0.5 * r.dt1;
-  // Element energies and eroded mass per part, then node sums per part.
+  // Element energies and eroded mass per part: each group's partial, added to its part in flat group order
+  // (as the engine's totals, sum_energies). Then the node sums per part, exact (model::ExactSum).
   std::vector<double> ie(m.parts.size(), 0.0), he(m.parts.size(), 0.0), eroded(m.parts.size(), 0.0);
   const auto& mats = e.materials();
   e.groups().for_each([&](const auto& g) {
     if constexpr (kHasMaterial<std::decay_t<decltype(g)>>) {
       const auto p = static_cast<std::size_t>(g.part);
       const double rho0 = mats[static_cast<std::size_t>(g.material)].rho0;
+      double g_ie = 0, g_he = 0, g_eroded = 0;
       for (int i = 0; i < g.count; ++i) {
         const auto k = static_cast<std::size_t>(i);
-        ie[p] += g.e_int[k];
-        he[p] += g.e_hg[k];
-        if (g.off[k] <= 0) eroded[p] += initial_mass(g, k, rho0);
+        g_ie += g.e_int[k];
+        g_he += g.e_hg[k];
+        if (g.off[k] <= 0) g_eroded += initial_mass(g, k, rho0);
       }
+      ie[p] += g_ie;
+      he[p] += g_he;
+      eroded[p] += g_eroded;
     }
   });
   for (std::size_t o = 0; o < objects_.size(); ++o) {
-    double v_ie = 0, v_he = 0, v_er = 0, ke = 0, mass = 0, mom[3] = {0, 0, 0};
+    double v_ie = 0, v_he = 0, v_er = 0;
+    model::ExactSum ke, mass, mom[3];
     for (const auto p : object_parts_[o]) {
       const auto pp = static_cast<std::size_t>(p);
       v_ie += ie[pp];
@@ -336,17 +343,17 @@ void ThGroupSampler::sample_parts(const ExplicitEngine& e, const CycleReport& r,
         const auto n = static_cast<std::size_t>(node);
         const double mn = share * s.mass[n];
         const double v[3] = {s.vx[n] + h * s.ax[n], s.vy[n] + h * s.ay[n], s.vz[n] + h * s.az[n]};
-        ke += 0.5 * mn * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        mass += mn;
-        for (int d = 0; d < 3; ++d) mom[d] += mn * v[d];
+        ke.add(0.5 * mn * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+        mass.add(mn);
+        for (int d = 0; d < 3; ++d) mom[d].add(mn * v[d]);
       }
     }
     put(o, "IE", v_ie);
-    put(o, "KE", ke);
-    put(o, "XMOM", mom[0]);
-    put(o, "YMOM", mom[1]);
-    put(o, "ZMOM", mom[2]);
-    put(o, "MASS", mass);
+    put(o, "KE", ke.value());
+    put(o, "XMOM", mom[0].value());
+    put(o, "YMOM", mom[1].value());
+    put(o, "ZMOM", mom[2].value());
+    put(o, "MASS", mass.value());
     put(o, "HE", v_he);
     put(o, "ERODED", v_er);
   }

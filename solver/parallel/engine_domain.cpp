@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cassert>
+#include <utility>
+
+#include "solver/parallel/partition.hpp"
 
 namespace radx::solver::parallel {
 
@@ -39,19 +42,51 @@ std::vector<std::vector<NodeRun>> runs_of_every_rank(const std::vector<std::int3
   return runs;
 }
 
-std::vector<std::int64_t> block_begins(const std::vector<std::int32_t>& group_rank, int ranks) {
+// Each rank's groups ascending, as a CSR list (begin [ranks + 1], groups).
+std::vector<std::int64_t> rank_begins(const std::vector<std::int32_t>& group_rank, int ranks) {
   std::vector<std::int64_t> begin(static_cast<std::size_t>(ranks) + 1, 0);
   for (const auto r : group_rank) ++begin[static_cast<std::size_t>(r) + 1];
   for (std::size_t r = 0; r < static_cast<std::size_t>(ranks); ++r) begin[r + 1] += begin[r];
   return begin;
 }
+std::vector<std::int64_t> rank_group_lists(const std::vector<std::int32_t>& group_rank, int ranks) {
+  auto next = rank_begins(group_rank, ranks);
+  std::vector<std::int64_t> list(group_rank.size());
+  for (std::size_t g = 0; g < group_rank.size(); ++g)
+    list[static_cast<std::size_t>(next[static_cast<std::size_t>(group_rank[g])]++)] =
+        static_cast<std::int64_t>(g);
+  return list;
+}
 
 }  // namespace
 
-EngineDomain::EngineDomain(const ElementGroups& groups, std::int64_t node_count, Comm& comm)
+std::vector<std::int32_t> engine_group_ranks(const model::Model& model, const ElementGroups& groups,
+                                             Comm& comm) {
+  const int ranks = comm.size();
+  std::vector<std::int32_t> rank(static_cast<std::size_t>(groups.count()));
+  Buffer message(rank.size() * sizeof(std::int32_t));
+  if (comm.rank() == 0) {
+    try {
+      const auto p = partition_groups(model, groups, ranks);
+      std::copy(p.group_rank.begin(), p.group_rank.end(), rank.begin());
+    } catch (const std::invalid_argument&) {  // fewer groups than ranks: blocks, some ranks without groups
+      rank = block_group_ranks(groups.count(), ranks);
+    }
+    if (!rank.empty()) std::memcpy(message.data(), rank.data(), message.size());
+  }
+  comm.broadcast(message, 0);
+  if (message.size() != rank.size() * sizeof(std::int32_t))
+    throw std::runtime_error("rank 0's group ranks do not cover this rank's groups");
+  if (!rank.empty()) std::memcpy(rank.data(), message.data(), message.size());
+  return rank;
+}
+
+EngineDomain::EngineDomain(const ElementGroups& groups, std::vector<std::int32_t> group_rank,
+                           std::int64_t node_count, Comm& comm)
     : comm_(comm),
-      group_rank_(block_group_ranks(groups.count(), comm.size())),
-      groups_begin_(block_begins(group_rank_, comm.size())),
+      group_rank_(std::move(group_rank)),
+      rank_groups_begin_(rank_begins(group_rank_, comm.size())),
+      rank_groups_(rank_group_lists(group_rank_, comm.size())),
       plan_(build_domain_plan(groups, group_rank_, node_count, comm.size(), comm.rank())),
       shared_(plan_),
       node_runs_(

@@ -1,8 +1,10 @@
 // The explicit engine's side of the domain decomposition: what one rank computes of a cycle and what it
 // exchanges so that P ranks reproduce one rank's results to the bit (docs/parallel.md).
 //
-// Groups are placed on ranks in contiguous blocks of the flat group order: rank(g) = floor(g P / G), so a
-// rank's groups are a subsequence of the serial order. Per cycle:
+// Groups are placed on ranks by the METIS partition (partition.hpp), computed on rank 0 and broadcast; a
+// model with fewer groups than ranks takes contiguous blocks of the flat group order instead,
+// rank(g) = floor(g P / G), leaving some ranks without groups. A rank's groups, in flat order, are a
+// subsequence of the serial order. Per cycle:
 //   - each rank computes its own groups only; their entries on nodes no other rank touches are summed as the
 //     serial engine sums them (the same order: the group order restricted to the groups reaching the node);
 //     entries on shared nodes also go to their skyline slots, and each shared node's owner sums them from
@@ -37,6 +39,12 @@ namespace radx::solver::parallel {
 // The rank of each group for `ranks` ranks: contiguous blocks of the flat order, floor(g P / G).
 [[nodiscard]] std::vector<std::int32_t> block_group_ranks(std::int64_t groups, int ranks);
 
+// The rank of each group for the engine on comm's ranks: the METIS partition, or blocks when the model has
+// fewer groups than ranks; computed on rank 0 and broadcast, so every rank holds the same. Called by every
+// rank.
+[[nodiscard]] std::vector<std::int32_t> engine_group_ranks(const model::Model& model,
+                                                           const ElementGroups& groups, Comm& comm);
+
 // What a model uses that the engine does not yet run on more than one rank, by keyword (empty: all of it
 // runs). The same list on every rank: it reads the replicated model and controls only.
 [[nodiscard]] std::vector<std::string> features_not_distributed(const model::Model& model,
@@ -44,7 +52,9 @@ namespace radx::solver::parallel {
 
 class EngineDomain {
  public:
-  EngineDomain(const ElementGroups& groups, std::int64_t node_count, Comm& comm);
+  // Every rank builds its domain from the same groups and the same group ranks (engine_group_ranks).
+  EngineDomain(const ElementGroups& groups, std::vector<std::int32_t> group_rank, std::int64_t node_count,
+               Comm& comm);
   EngineDomain(const EngineDomain&) = delete;
   EngineDomain& operator=(const EngineDomain&) = delete;
 
@@ -113,9 +123,9 @@ class EngineDomain {
     for (std::size_t r = 0; r < all.size(); ++r) {
       if (static_cast<int>(r) == plan_.rank) continue;
       const std::byte* q = all[r].data();
-      for (std::size_t k = static_cast<std::size_t>(groups_begin_[r]);
-           k < static_cast<std::size_t>(groups_begin_[r + 1]); ++k)
-        f(static_cast<std::int64_t>(k), q);
+      for (std::size_t k = static_cast<std::size_t>(rank_groups_begin_[r]);
+           k < static_cast<std::size_t>(rank_groups_begin_[r + 1]); ++k)
+        f(rank_groups_[k], q);
       if (q != all[r].data() + all[r].size())
         throw std::runtime_error("a rank's group message does not have the size its groups need");
     }
@@ -123,7 +133,9 @@ class EngineDomain {
 
   Comm& comm_;
   std::vector<std::int32_t> group_rank_;
-  std::vector<std::int64_t> groups_begin_;  // [ranks + 1]: rank r's groups are [begin[r], begin[r + 1])
+  // Every rank's groups, ascending: rank r's are rank_groups_[rank_groups_begin_[r] .. [r + 1]).
+  std::vector<std::int64_t> rank_groups_begin_;
+  std::vector<std::int64_t> rank_groups_;
   DomainPlan plan_;
   SharedSums shared_;                            // refers to plan_
   std::vector<std::vector<NodeRun>> node_runs_;  // every rank's owned nodes, as runs
