@@ -10,7 +10,8 @@
 //     entries on shared nodes also go to their skyline slots, and each shared node's owner sums them from
 //     zero in the serial order (DomainPlan, SharedSums):   S_n[d] = ((0 + c_1[d]) + c_2[d]) + ... + c_m[d];
 //   - then every rank receives every owner's sums S_n (6 doubles a node), so the node passes (loads,
-//     assembly, conditions, integration) run on every rank over all nodes, on the same values as one rank;
+//     assembly, conditions, integration), contact, rigid bodies and walls, ties and sensors run on every rank
+//     over all nodes, on the same values as one rank (replicated, not split);
 //   - the groups' time-step votes (one record a group) are gathered on every rank and combined in group order
 //     as one rank combines them;
 //   - before the element energies, outputs or the listing of deleted elements read the groups, the owners
@@ -46,7 +47,8 @@ namespace radx::solver::parallel {
                                                            const ElementGroups& groups, Comm& comm);
 
 // What a model uses that the engine does not yet run on more than one rank, by keyword (empty: all of it
-// runs). The same list on every rank: it reads the replicated model and controls only.
+// runs): /SECT, whose force reads every element's nodal forces at every cycle (not gathered). The same list
+// on every rank: it reads the replicated model and controls only.
 [[nodiscard]] std::vector<std::string> features_not_distributed(const model::Model& model,
                                                                 const model::RunControls& controls);
 
