@@ -10,6 +10,7 @@
 #include <metis.h>
 
 #include "contact/type7_search.hpp"
+#include "solver/parallel/domain.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -379,28 +380,15 @@ std::vector<idx_t> run_metis(MetisGraph& G, int ranks) {
   return part;
 }
 
-std::vector<std::int32_t> node_owners_of(const Incidence& inc, std::span<const int> group_rank, int ranks) {
+// Each node's owner by the domain's rule (node_owner_ranks: most entries, ties to the lowest rank), -1 for a
+// node no group's element touches: the statistics count such nodes on no rank.
+std::vector<std::int32_t> node_owners_of(const ElementGroups& groups, const Incidence& inc,
+                                         std::span<const int> group_rank, int ranks) {
   const auto& ng = inc.node_groups;
-  std::vector<std::int32_t> owner(ng.rows(), -1);
-  std::vector<std::int64_t> entries(static_cast<std::size_t>(ranks), 0);
-  for (std::size_t n = 0; n < ng.rows(); ++n) {
-    for (auto j = ng.begin[n]; j < ng.begin[n + 1]; ++j)
-      entries[static_cast<std::size_t>(
-          group_rank[static_cast<std::size_t>(ng.item[static_cast<std::size_t>(j)])])] +=
-          ng.count[static_cast<std::size_t>(j)];
-    std::int64_t best = 0;
-    for (auto j = ng.begin[n]; j < ng.begin[n + 1]; ++j) {
-      const int r = group_rank[static_cast<std::size_t>(ng.item[static_cast<std::size_t>(j)])];
-      const std::int64_t e = entries[static_cast<std::size_t>(r)];
-      if (e > best || (e == best && r < owner[n])) {
-        best = e;
-        owner[n] = r;
-      }
-    }
-    for (auto j = ng.begin[n]; j < ng.begin[n + 1]; ++j)
-      entries[static_cast<std::size_t>(
-          group_rank[static_cast<std::size_t>(ng.item[static_cast<std::size_t>(j)])])] = 0;
-  }
+  std::vector<std::int32_t> owner =
+      node_owner_ranks(groups, group_rank, static_cast<std::int64_t>(ng.rows()), ranks);
+  for (std::size_t n = 0; n < ng.rows(); ++n)
+    if (ng.begin[n] == ng.begin[n + 1]) owner[n] = -1;
   return owner;
 }
 
@@ -466,8 +454,8 @@ void count_cut_conditions(const model::Model& m, PartitionSummary& s) {
     }
 }
 
-PartitionSummary summarize(const model::Model& m, const Incidence& inc, const GroupWeights& w,
-                           std::span<const int> group_rank, int ranks) {
+PartitionSummary summarize(const model::Model& m, const ElementGroups& groups, const Incidence& inc,
+                           const GroupWeights& w, std::span<const int> group_rank, int ranks) {
   PartitionSummary s;
   s.ranks = ranks;
   s.per_rank.resize(static_cast<std::size_t>(ranks));
@@ -478,7 +466,7 @@ PartitionSummary summarize(const model::Model& m, const Incidence& inc, const Gr
     r.cost += w.cost[g];
     r.contact += w.contact[g];
   }
-  s.node_owner = node_owners_of(inc, group_rank, ranks);
+  s.node_owner = node_owners_of(groups, inc, group_rank, ranks);
   count_nodes(inc, group_rank, s);
   s.cost_imbalance = imbalance(s.per_rank, &RankShare::cost);
   s.contact_imbalance = imbalance(s.per_rank, &RankShare::contact);
@@ -522,17 +510,11 @@ std::string check_group_ranks(std::int64_t groups, std::span<const int> group_ra
   return {};
 }
 
-std::vector<std::int32_t> node_owners(const model::Model& m, const ElementGroups& groups,
-                                      std::span<const int> group_rank, int ranks) {
-  require_valid(groups.count(), group_rank, ranks);
-  return node_owners_of(Incidence(m, groups), group_rank, ranks);
-}
-
 PartitionSummary summarize_partition(const model::Model& m, const ElementGroups& groups,
                                      std::span<const int> group_rank, int ranks) {
   require_valid(groups.count(), group_rank, ranks);
   const Incidence inc(m, groups);
-  return summarize(m, inc, weights_of(groups, contact_load(m, groups, inc)), group_rank, ranks);
+  return summarize(m, groups, inc, weights_of(groups, contact_load(m, groups, inc)), group_rank, ranks);
 }
 
 Partition partition_groups(const model::Model& m, const ElementGroups& groups, int ranks) {
@@ -569,7 +551,7 @@ Partition partition_groups(const model::Model& m, const ElementGroups& groups, i
     for (std::size_t g = 0; g < count; ++g)
       p.group_rank[g] = static_cast<int>(part[static_cast<std::size_t>(vertex[g])]);
   }
-  p.summary = summarize(m, inc, w, p.group_rank, ranks);
+  p.summary = summarize(m, groups, inc, w, p.group_rank, ranks);
   return p;
 }
 

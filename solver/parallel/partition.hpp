@@ -47,7 +47,7 @@ struct GroupWeights {
 // One rank's share of a decomposition.
 struct RankShare {
   std::int64_t groups = 0, elements = 0, cost = 0, contact = 0;
-  std::int64_t owned_nodes = 0;   // nodes it owns (node_owners)
+  std::int64_t owned_nodes = 0;   // nodes it owns (node_owner_ranks, solver/parallel/domain.hpp)
   std::int64_t ghost_nodes = 0;   // nodes its elements touch that another rank owns
   std::int64_t shared_nodes = 0;  // nodes its elements touch that another rank's elements touch too
   std::vector<int> neighbours;    // ranks it shares a node with, ascending
@@ -61,7 +61,8 @@ struct PartitionSummary {
   double contact_imbalance = 1.0;     // heaviest rank's contact work over the mean (1 without contact)
   std::int64_t rigid_bodies_cut = 0;  // bodies whose nodes' owners are on more than one rank
   std::int64_t ties_cut = 0;          // TYPE2 ties whose secondary node and main nodes have different owners
-  // Each node's owner rank (-1: a node no element of a group touches), see node_owners.
+  // Each node's owner rank (-1: a node no element of a group touches), by node_owner_ranks
+  // (solver/parallel/domain.hpp).
   std::vector<std::int32_t> node_owner;
 };
 
@@ -81,12 +82,6 @@ struct Partition {
 // std::invalid_argument when group_rank has another size than the group count or a rank out of range.
 [[nodiscard]] PartitionSummary summarize_partition(const model::Model& m, const ElementGroups& groups,
                                                    std::span<const int> group_rank, int ranks);
-
-// Each node's owner: the rank with the most element entries (element, node slot) on the node, ties to the
-// lowest rank; -1 for a node that no group's element touches. The same rule as node_owner_ranks of the domain
-// plan (solver/parallel/domain.hpp): one of the two is to go once both are in.
-[[nodiscard]] std::vector<std::int32_t> node_owners(const model::Model& m, const ElementGroups& groups,
-                                                    std::span<const int> group_rank, int ranks);
 
 // The flat group of each cell of the model (cells in the results' order: first_cell), -1 for a cell in no
 // group (an element without forces).
