@@ -25,6 +25,7 @@
 #include <fstream>
 #include <memory>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -41,7 +42,7 @@
 #include "solver/engine/explicit_engine.hpp"
 #include "solver/model/run_files.hpp"
 #include "solver/model/stable_step.hpp"
-#include "solver/parallel/serial_comm.hpp"
+#include "solver/parallel/engine_domain.hpp"
 
 namespace radx::app {
 
@@ -321,15 +322,30 @@ void report_cycle_messages(solver::ExplicitEngine& engine, const solver::CycleRe
   }
 }
 
-// A run on more than one rank needs what the engine does not have yet: it does not split the model over
-// ranks. Refused before anything is read or written, by rank 0 alone (the other ranks say nothing), with the
-// same exit code on every rank.
-int refuse_distributed_run(const solver::parallel::Comm& comm, std::ostream& err) {
-  if (comm.rank() == 0)
-    err << "radx-engine-mpi: error: runs on more than one rank are not available yet: the engine does not "
-           "split the model over ranks (node owners, ghost nodes, the keyed exchange of shared-node forces, "
-           "gathered outputs); run with mpirun -np 1, or radx-engine\n";
-  return 1;
+// What the model uses that the engine does not run on more than one rank yet (solver/parallel/
+// engine_domain.hpp), read before the output folder is claimed, so a refused run leaves nothing written.
+// Every rank reads the same deck and model and finds the same list; rank 0 alone says it. A deck or model
+// that does not read is left to the run itself, which reports it.
+bool refuse_distributed_run(const EngineOptions& opt, const solver::parallel::Comm& comm, std::ostream& err) {
+  std::ostringstream quiet;
+  Diagnostics diags;
+  EngineDeck deck;
+  model::RunControls controls;
+  if (!read_engine_deck_checked(opt.engine_deck, diags, deck, controls, quiet)) return false;
+  const std::string root = model::run_output_root(opt.engine_deck);
+  const std::string model_path =
+      opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;
+  model::Model model;
+  if (!read_checked_model(model_path, opt.engine_deck, root, controls, model, quiet)) return false;
+  const auto refused = solver::parallel::features_not_distributed(model, controls);
+  if (refused.empty()) return false;
+  if (comm.rank() == 0) {
+    err << "radx-engine-mpi: error: " << opt.engine_deck << ": the run cannot be split over " << comm.size()
+        << " ranks yet: it uses";
+    for (std::size_t k = 0; k < refused.size(); ++k) err << (k == 0 ? " " : ", ") << refused[k];
+    err << ", which the engine runs on one rank only; run it with mpirun -np 1, or radx-engine\n";
+  }
+  return true;
 }
 
 // How the run ended: normally, interrupted by a signal, or in error; and the reason.
@@ -712,12 +728,47 @@ int decompose_engine(const EngineOptions& opt, std::ostream& out, std::ostream& 
                          out, err);
 }
 
+int run_engine_on_this_rank(const EngineOptions& opt, std::ostream& out, std::ostream& err);
+
+// A stream that drops what it is given: the printing of ranks other than 0.
+class NullStream : public std::ostream {
+ public:
+  NullStream() : std::ostream(nullptr) {}
+};
+
+// Ranks other than 0 run the same pipeline, so they take every collective step rank 0 takes (the outputs'
+// gathers, the stop decisions), into a private folder that is removed at the end: rank 0 alone writes the
+// run's files and prints.
+int run_engine_on_other_rank(const EngineOptions& opt) {
+  const std::string root = model::run_output_root(opt.engine_deck);
+  std::string scratch = (fs::temp_directory_path() / "radx-rank-XXXXXX").string();
+  if (::mkdtemp(scratch.data()) == nullptr) {
+    opt.comm->abort(1, "radx-engine-mpi: error: rank " + std::to_string(opt.comm->rank()) +
+                           " cannot make its scratch folder: " + std::strerror(errno));
+  }
+  EngineOptions mine = opt;
+  mine.out_dir = scratch;
+  mine.model_file =
+      opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;
+  mine.plot = false;
+  NullStream quiet;
+  const int code = run_engine_on_this_rank(mine, quiet, quiet);
+  std::error_code ignored;
+  fs::remove_all(scratch, ignored);
+  return code;
+}
+
 }  // namespace
 
 int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
-  solver::parallel::SerialComm one_rank;
-  const solver::parallel::Comm& comm = opt.comm != nullptr ? *opt.comm : one_rank;
-  if (comm.size() > 1) return refuse_distributed_run(comm, err);
+  if (opt.comm == nullptr || opt.comm->size() == 1) return run_engine_on_this_rank(opt, out, err);
+  if (refuse_distributed_run(opt, *opt.comm, err)) return 1;
+  return opt.comm->rank() == 0 ? run_engine_on_this_rank(opt, out, err) : run_engine_on_other_rank(opt);
+}
+
+namespace {
+
+int run_engine_on_this_rank(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   if (opt.decompose_ranks > 0) return decompose_engine(opt, out, err);
   // Before anything that takes time (reading the deck and the model, setting up): a signal during it stops
   // the run before its first cycle, and the default action (an end without a summary) never meets it.
@@ -767,6 +818,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   std::unique_ptr<solver::ExplicitEngine> engine_ptr;
   std::unique_ptr<EngineOutputs> outputs;
   solver::EngineOptions engine_options(opt.threads, std::max(1, controls.print_every));
+  engine_options.comm = opt.comm;
   // A stop signal makes the next cycle a full report (energies summed), so the run ends on a cycle whose
   // state, time-history row and summary agree.
   engine_options.output_due = [&outputs](double t) {
@@ -841,5 +893,7 @@ int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
                    (fs::path(opt.out_dir) / (root + "_th.h5")).string());
   return end_of_run(s, listing, listing_file, summary_path, watch.stopped_by, err);
 }
+
+}  // namespace
 
 }  // namespace radx::app

@@ -22,8 +22,9 @@ struct EngineOptions {
   // (apps/runaway_watch.hpp) stops with an error termination instead of going on with a warning.
   bool stop_if_runaway = false;
   // The ranks the run is on: radx-engine gives a SerialComm, radx-engine-mpi an MpiComm
-  // (apps/engine_cli.hpp); null is one rank. Rank 0 alone prints and writes files. Until the engine splits
-  // the model over ranks, a run on more than one rank is refused before anything is read or written.
+  // (apps/engine_cli.hpp); null is one rank. Rank 0 alone prints and writes files. A run using what the
+  // engine does not run on more than one rank yet (solver/parallel/engine_domain.hpp) is refused by name
+  // before anything is written.
   solver::parallel::Comm* comm = nullptr;
   // --decompose P (P > 0): do not run; print and write the decomposition over P ranks
   // (apps/engine_decompose.hpp), the group ranks from `partition_file` when given (--partition FILE).

@@ -26,6 +26,7 @@
 #include "solver/model/hex20_shape.hpp"
 #include "solver/model/masses.hpp"
 #include "solver/model/stable_step.hpp"
+#include "solver/parallel/engine_domain.hpp"
 
 namespace radx::solver {
 
@@ -213,6 +214,17 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
   build_groups();
   element_sums_.assign(6 * nodes_.n, 0.0);
   build_sum_regions();
+  if (options_.comm != nullptr && options_.comm->size() > 1) {
+    if (const auto refused = parallel::features_not_distributed(model_, controls_); !refused.empty()) {
+      std::string names;
+      for (const auto& f : refused) names += (names.empty() ? "" : ", ") + f;
+      throw std::runtime_error("the engine does not run these on more than one rank yet: " + names);
+    }
+    auto& comm = *options_.comm;
+    domain_ =
+        std::make_unique<parallel::EngineDomain>(groups_, parallel::engine_group_ranks(model_, groups_, comm),
+                                                 static_cast<std::int64_t>(nodes_.n), comm);
+  }
   group_votes_.resize(static_cast<std::size_t>(group_count()));
   team_ =
       std::make_unique<ThreadTeam>(options_.threads > 0 ? options_.threads : ThreadTeam::default_threads());
@@ -272,6 +284,8 @@ void ExplicitEngine::list_deleted_elements(std::int64_t cycle, double time) {
   std::int64_t ended = 0;
   for (const auto& v : group_votes_) ended += v.ended;
   if (ended == ended_elements_) return;
+  // The counts are every rank's (gathered votes); the elements' life factors come from their owners.
+  if (domain_) domain_->share_group_arrays(groups_, [](auto& g, auto&& visit) { visit(g.off); });
   const std::int64_t before = ended_elements_;
   ended_elements_ = ended;
   if (deletion_listed_.empty()) deletion_listed_.assign(model_.cell_count(), 0);
@@ -877,18 +891,29 @@ void ExplicitEngine::add_group_forces(std::int64_t flat, std::int32_t slot) {
 // blocks share wait for both.
 void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
   const std::int64_t groups = group_count();
-  const auto add = [this](std::int64_t flat, std::int32_t slot) { add_group_forces(flat, slot); };
+  // On more than one rank another rank's group adds nothing here; it still passes its turn in the order.
+  const auto owned = [this](std::int64_t flat) { return domain_ == nullptr || domain_->owns(flat); };
+  const auto add = [&](std::int64_t flat, std::int32_t slot) {
+    if (owned(flat)) add_group_forces(flat, slot);
+  };
   element_sums_order_.reset();
   team_->run(
       groups,
       [&](std::int64_t flat) {
-        group_forces_and_vote(flat, cyc);
+        if (owned(flat)) {
+          group_forces_and_vote(flat, cyc);
+          if (domain_) domain_->write_shared_slots(groups_, flat);
+        }
         element_sums_order_.finished(flat, add);
       },
       groups >= kMinParallelGroups);
   element_sums_order_.drain(add);
   // every group's forces are in the sums
   assert(element_sums_order_.committed() == element_sums_order_.parts());
+  if (domain_) {  // the shared nodes' sums from their owners, every node's sums and every group's vote here
+    domain_->complete_element_sums(element_sums_);
+    domain_->share_group_records(std::span(group_votes_));
+  }
 }
 
 namespace {
@@ -1394,6 +1419,8 @@ void ExplicitEngine::tell_contact_deleted_elements() {
   const std::int64_t deleted = count_deleted();
   if (deleted == deleted_elements_) return;
   deleted_elements_ = deleted;
+  // The count is every rank's (gathered votes); the elements' life factors come from their owners.
+  if (domain_) domain_->share_group_arrays(groups_, [](auto& g, auto&& visit) { visit(g.off); });
   std::vector<std::uint8_t> alive(model_.element_count(), 1);
   groups_.for_each([&](const auto& g) {
     if constexpr (kMeshCell<std::decay_t<decltype(g)>>) {
@@ -1411,6 +1438,11 @@ bool ExplicitEngine::choose_time_step(LoopState& L, RunResult& res) {
   StepControl ctl;
   double dt_elem = element_time_step(ctl);
   if (!(dt_elem > 0)) {
+    if (domain_)  // the bad element's step and volume from its owner (every rank sees the same votes)
+      domain_->share_group_arrays(groups_, [](auto& g, auto&& visit) {
+        visit(g.dt);
+        if constexpr (requires { g.vol; }) visit(g.vol);
+      });
     res.status = RunStatus::Error;
     res.message = bad_element(L.time, L.cycle);
     return false;
@@ -1436,6 +1468,8 @@ bool ExplicitEngine::choose_time_step(LoopState& L, RunResult& res) {
   }
   if (controls_.nodal.given) {  // /DT/NODA and /DT/NODA/CST: the nodal step replaces the element step
     StepControl nctl;
+    // Every group's stiffness at its nodes, from the group's owner (the nodal pass runs on every rank).
+    if (domain_) domain_->share_group_arrays(groups_, [](auto& g, auto&& visit) { visit(g.k_nodal); });
     dt_elem = nodal_time_step(nctl);  // /DT/NODA replaces the element step by the nodal one
     ctl = nctl;
   }
@@ -1519,10 +1553,13 @@ bool ExplicitEngine::lagrange_correction(LoopState& L, RunResult& res) {
 bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(const CycleReport&)>& on_cycle,
                              RunResult& res) {
   auto& kin = *kinematics_;
-  const bool full = L.first || last || L.cycle % std::max<std::int64_t>(1, options_.report_every) == 0 ||
-                    (options_.output_due && options_.output_due(L.time));
+  // A stop signal seen by one rank makes the cycle full on all (each rank's output_due reads its own).
+  const bool full =
+      any_rank(L.first || last || L.cycle % std::max<std::int64_t>(1, options_.report_every) == 0 ||
+               (options_.output_due && options_.output_due(L.time)));
   CycleReport rep;
   if (full) {
+    share_output_state();
     sum_energies(L);
     rep = report(L.cycle, L.time, L.dt2, L.control);
     rep.momentum = kin.momentum(L.dt1);
@@ -1544,12 +1581,61 @@ bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(c
                   ", time " + short_text(L.time) + "); the run stops";
     return false;
   }
-  if (on_cycle && !on_cycle(rep)) {
+  // Every rank stops when one does (a write failure or a signal may be one rank's alone).
+  if (any_rank(on_cycle && !on_cycle(rep))) {
     res.status = RunStatus::Error;
     if (res.message.empty()) res.message = "stopped by a /STOP criterion";
     return false;
   }
   return true;
+}
+
+// On more than one rank: whether any rank says `mine` (every rank gets the same answer); else `mine`.
+bool ExplicitEngine::any_rank(bool mine) const {
+  if (!domain_) return mine;
+  std::uint64_t word = mine ? 1 : 0;
+  domain_->comm().bit_or(std::span(&word, 1));
+  return word != 0;
+}
+
+// On more than one rank: the group state the energies, the result fields and the time history read, from
+// each group's owner into every rank's copy, so they read what one rank has.
+void ExplicitEngine::share_output_state() {
+  if (!domain_) return;
+  domain_->share_group_arrays(groups_, [](auto& g, auto&& visit) {
+    visit(g.off);
+    visit(g.e_int);
+    visit(g.dt);
+    if constexpr (requires { g.sig; }) {
+      visit(g.sig);
+      visit(g.eps_p);
+      visit(g.dmg);
+      visit(g.e_hg);
+      visit(g.w_plastic);
+      visit(g.rate);
+    }
+    if constexpr (requires { g.thick; }) {
+      visit(g.thick);
+      visit(g.dmg_inst);
+    }
+    if constexpr (requires { g.sig_p; }) {
+      visit(g.sig_p);
+      visit(g.eps_p_p);
+      visit(g.dmg_p);
+    }
+    if constexpr (requires { g.vol; }) {
+      visit(g.vol);
+      visit(g.rho);
+      visit(g.q);
+    }
+    if constexpr (requires { g.force; }) visit(g.force);
+    if constexpr (requires { g.dx; }) visit(g.dx);
+    if constexpr (std::is_same_v<std::decay_t<decltype(g)>, TrussGroup>) {
+      visit(g.strain);
+      visit(g.area);
+    }
+    if constexpr (requires { g.resultant; }) visit(g.resultant);
+  });
 }
 
 // The element energies: each group's partial sums (from 0, in element order), then the partials added in

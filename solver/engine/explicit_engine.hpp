@@ -40,10 +40,14 @@
 #include "solver/model/model.hpp"
 #include "solver/model/run_controls.hpp"
 #include "solver/outputs/accelerometer.hpp"
+#include "solver/parallel/comm.hpp"
 
 namespace radx::solver {
 
 class KinematicsDriver;
+namespace parallel {
+class EngineDomain;
+}
 
 struct EnergyBalance {
   // `internal` includes the springs' work, as OpenRadioss's balance does; `spring` is that part alone.
@@ -102,6 +106,9 @@ struct EngineOptions {
   // Also a full report on cycles where this returns true for the cycle's time (outputs due: animation
   // states, time-history rows). Called once per cycle; empty: never.
   std::function<bool(double time)> output_due;
+  // The ranks the run is split over (solver/parallel/engine_domain.hpp); null or one rank: the whole model
+  // here. Every rank builds its engine from the same model and controls.
+  parallel::Comm* comm = nullptr;
 };
 
 enum class RunStatus : std::uint8_t { Normal, Error };
@@ -229,6 +236,11 @@ class ExplicitEngine {
   std::unique_ptr<Accelerometers> accelerometers_;  // /ACCEL, read every cycle after the conditions
   std::unique_ptr<ThreadTeam> team_;  // before contact_, whose ParallelFor calls it: destroyed after it
   std::unique_ptr<contact::Type7Contact> contact_;
+  // On more than one rank: this rank's groups and the exchanges that keep one rank's results (null: one
+  // rank).
+  std::unique_ptr<parallel::EngineDomain> domain_;
+  void share_output_state();
+  [[nodiscard]] bool any_rank(bool mine) const;
   std::int64_t deleted_elements_ = 0;  // elements with off == 0, to tell contact (Idel) when it changes
   // Elements of any kind whose deletion the listing has been told (by cell), their count, and the lines.
   std::vector<std::uint8_t> deletion_listed_;

@@ -1,0 +1,146 @@
+// The explicit engine's side of the domain decomposition: what one rank computes of a cycle and what it
+// exchanges so that P ranks reproduce one rank's results to the bit (docs/parallel.md).
+//
+// Groups are placed on ranks by the METIS partition (partition.hpp), computed on rank 0 and broadcast; a
+// model with fewer groups than ranks takes contiguous blocks of the flat group order instead,
+// rank(g) = floor(g P / G), leaving some ranks without groups. A rank's groups, in flat order, are a
+// subsequence of the serial order. Per cycle:
+//   - each rank computes its own groups only; their entries on nodes no other rank touches are summed as the
+//     serial engine sums them (the same order: the group order restricted to the groups reaching the node);
+//     entries on shared nodes also go to their skyline slots, and each shared node's owner sums them from
+//     zero in the serial order (DomainPlan, SharedSums):   S_n[d] = ((0 + c_1[d]) + c_2[d]) + ... + c_m[d];
+//   - then every rank receives every owner's sums S_n (6 doubles a node), so the node passes (loads,
+//     assembly, conditions, integration), contact, rigid bodies and walls, ties and sensors run on every rank
+//     over all nodes, on the same values as one rank (replicated, not split);
+//   - the groups' time-step votes (one record a group) are gathered on every rank and combined in group order
+//     as one rank combines them;
+//   - before the element energies, outputs or the listing of deleted elements read the groups, the owners
+//   send
+//     the arrays those read to every rank (share_group_arrays).
+// The node passes are thus replicated (every rank integrates every node) and the node sums gathered whole:
+// correct for any P, not yet the owned-nodes-only passes with ghost updates of the design.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "solver/elements/element_groups.hpp"
+#include "solver/model/model.hpp"
+#include "solver/model/run_controls.hpp"
+#include "solver/parallel/comm.hpp"
+#include "solver/parallel/domain.hpp"
+
+namespace radx::solver::parallel {
+
+// The rank of each group for `ranks` ranks: contiguous blocks of the flat order, floor(g P / G).
+[[nodiscard]] std::vector<std::int32_t> block_group_ranks(std::int64_t groups, int ranks);
+
+// The rank of each group for the engine on comm's ranks: the METIS partition, or blocks when the model has
+// fewer groups than ranks; computed on rank 0 and broadcast, so every rank holds the same. Called by every
+// rank.
+[[nodiscard]] std::vector<std::int32_t> engine_group_ranks(const model::Model& model,
+                                                           const ElementGroups& groups, Comm& comm);
+
+// What a model uses that the engine does not yet run on more than one rank, by keyword (empty: all of it
+// runs): /SECT, whose force reads every element's nodal forces at every cycle (not gathered). The same list
+// on every rank: it reads the replicated model and controls only.
+[[nodiscard]] std::vector<std::string> features_not_distributed(const model::Model& model,
+                                                                const model::RunControls& controls);
+
+class EngineDomain {
+ public:
+  // Every rank builds its domain from the same groups and the same group ranks (engine_group_ranks).
+  EngineDomain(const ElementGroups& groups, std::vector<std::int32_t> group_rank, std::int64_t node_count,
+               Comm& comm);
+  EngineDomain(const EngineDomain&) = delete;
+  EngineDomain& operator=(const EngineDomain&) = delete;
+
+  [[nodiscard]] bool owns(std::int64_t flat) const {
+    return plan_.local_group[static_cast<std::size_t>(flat)] >= 0;
+  }
+  [[nodiscard]] const DomainPlan& plan() const { return plan_; }
+  [[nodiscard]] Comm& comm() const { return comm_; }
+
+  // The entries of owned group `flat` on shared nodes into their skyline slots (any thread; slots are
+  // distinct).
+  void write_shared_slots(const ElementGroups& groups, std::int64_t flat);
+
+  // After the element stage: the owners sum the shared nodes, then every rank receives every node's sums
+  // into element_sums [node][6]. Called by every rank.
+  void complete_element_sums(std::span<double> element_sums);
+
+  // One trivially copyable record per group (indexed by flat group): each owner's records reach every rank.
+  template <class T>
+  void share_group_records(std::span<T> per_group) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    Buffer mine(plan_.groups.size() * sizeof(T));
+    std::byte* p = mine.data();
+    for (const std::int64_t flat : plan_.groups) {
+      std::memcpy(p, &per_group[static_cast<std::size_t>(flat)], sizeof(T));
+      p += sizeof(T);
+    }
+    const auto all = comm_.all_gather(mine);
+    for_each_remote_group(all, [&](std::int64_t flat, const std::byte*& q) {
+      std::memcpy(&per_group[static_cast<std::size_t>(flat)], q, sizeof(T));
+      q += sizeof(T);
+    });
+  }
+
+  // Arrays of the groups, chosen by select(group, visit) calling visit(array) for each array to share: each
+  // owner's arrays reach every rank's copies of its groups. Array sizes are the same on every rank (groups
+  // are built from the replicated model).
+  template <class Select>
+  void share_group_arrays(ElementGroups& groups, Select&& select) {
+    Buffer mine;
+    for (const std::int64_t flat : plan_.groups)
+      groups.visit(flat, [&](auto& g) {
+        select(g, [&](const auto& array) {
+          const std::size_t bytes = array.size() * sizeof(array[0]);
+          const std::size_t at = mine.size();
+          mine.resize(at + bytes);
+          if (bytes != 0) std::memcpy(mine.data() + at, array.data(), bytes);
+        });
+      });
+    const auto all = comm_.all_gather(mine);
+    for_each_remote_group(all, [&](std::int64_t flat, const std::byte*& q) {
+      groups.visit(flat, [&](auto& g) {
+        select(g, [&](auto& array) {
+          const std::size_t bytes = array.size() * sizeof(array[0]);
+          if (bytes != 0) std::memcpy(array.data(), q, bytes);
+          q += bytes;
+        });
+      });
+    });
+  }
+
+ private:
+  // f(flat, cursor) for each group of every other rank, in that rank's order, the cursor walking its message.
+  template <class F>
+  void for_each_remote_group(const std::vector<Buffer>& all, F&& f) const {
+    for (std::size_t r = 0; r < all.size(); ++r) {
+      if (static_cast<int>(r) == plan_.rank) continue;
+      const std::byte* q = all[r].data();
+      for (std::size_t k = static_cast<std::size_t>(rank_groups_begin_[r]);
+           k < static_cast<std::size_t>(rank_groups_begin_[r + 1]); ++k)
+        f(rank_groups_[k], q);
+      if (q != all[r].data() + all[r].size())
+        throw std::runtime_error("a rank's group message does not have the size its groups need");
+    }
+  }
+
+  Comm& comm_;
+  std::vector<std::int32_t> group_rank_;
+  // Every rank's groups, ascending: rank r's are rank_groups_[rank_groups_begin_[r] .. [r + 1]).
+  std::vector<std::int64_t> rank_groups_begin_;
+  std::vector<std::int64_t> rank_groups_;
+  DomainPlan plan_;
+  SharedSums shared_;                            // refers to plan_
+  std::vector<std::vector<NodeRun>> node_runs_;  // every rank's owned nodes, as runs
+};
+
+}  // namespace radx::solver::parallel

@@ -1,0 +1,101 @@
+// The engine split over ranks (solver/parallel/engine_domain.hpp) against one rank: after N cycles on 2 and
+// 3 loopback ranks, every rank's coordinates, velocities, angular velocities and energy balance must be
+// the one-rank engine's to the bit (the determinism rule of docs/parallel.md: no tolerance is right here).
+#include <catch2/catch.hpp>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "contact/type7_prepare.hpp"
+#include "loopback_comm.hpp"
+#include "solver/engine/explicit_engine.hpp"
+#include "solver/parallel/engine_domain.hpp"
+#include "test_util.hpp"
+
+namespace {
+
+namespace par = radx::solver::parallel;
+
+// What a run leaves that the comparison reads: the node kinematics and the last report's energies.
+struct RunEnd {
+  std::vector<double> values;
+  std::int64_t cycles = 0;
+  std::int64_t groups = 0;
+};
+
+RunEnd run_cycles(const radx::model::Model& model, int cycles, par::Comm* comm) {
+  radx::model::RunControls rc;
+  rc.t_stop = 1.0;  // stopped after `cycles` cycles
+  radx::solver::EngineOptions options(1, 1);
+  options.comm = comm;
+  radx::solver::ExplicitEngine engine(model, rc, options);
+  int n = 0;
+  const auto res = engine.run([&](const radx::solver::CycleReport&) { return ++n < cycles; });
+  RunEnd end;
+  end.cycles = res.cycles;
+  end.groups = engine.groups().count();
+  const auto& s = engine.nodes();
+  for (const auto* a : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.wx, &s.wy, &s.wz})
+    end.values.insert(end.values.end(), a->begin(), a->end());
+  const auto& e = res.last.energy;
+  end.values.insert(end.values.end(), {e.kinetic_t, e.kinetic_r, e.internal, e.hourglass, e.external_work,
+                                       e.plastic_work, e.spring, e.error_percent, res.last.dt, res.time});
+  return end;
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+// The model's run on one rank and on P loopback ranks: every rank ends with one rank's bits.
+void check_ranks(const radx::model::Model& model, int cycles, const std::string& what) {
+  REQUIRE(par::features_not_distributed(model, radx::model::RunControls{}).empty());
+  const RunEnd serial = run_cycles(model, cycles, nullptr);
+  REQUIRE(serial.cycles == cycles - 1);
+  for (const int P : {2, 3}) {
+    std::vector<RunEnd> ends(static_cast<std::size_t>(P));
+    radx::test::run_ranks(P, [&](par::Comm& comm) {
+      ends[static_cast<std::size_t>(comm.rank())] = run_cycles(model, cycles, &comm);
+    });
+    for (int r = 0; r < P; ++r) {
+      INFO(what << ": rank " << r << " of " << P << ", " << serial.groups << " groups");
+      CHECK(ends[static_cast<std::size_t>(r)].cycles == serial.cycles);
+      CHECK(same_bits(ends[static_cast<std::size_t>(r)].values, serial.values));
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the engine on 2 and 3 ranks gives one rank's coordinates, velocities and energies to the bit",
+          "[parallel][engine]") {
+  // The impact benchmark's plate (shells) and block (bricks) with their TYPE7 contact (run on every rank):
+  // many groups of 128 elements in rows, so most group boundaries put nodes on two ranks' groups.
+  radx::test::TempDir dir;
+  auto impact = radx::test::impact_benchmark_model(dir, 24);
+  radx::contact::prepare_type7_interfaces(impact);  // the starter's gaps and search boxes
+  const RunEnd probe = run_cycles(impact, 2, nullptr);
+  REQUIRE(probe.groups >= 6);  // enough groups for every rank to have several
+  check_ranks(impact, 60, "impact plate and block, N = 24");
+}
+
+TEST_CASE("a run with a feature not yet split over ranks is refused by the engine on more than one rank",
+          "[parallel][engine]") {
+  // A section's force sums every element's nodal forces at every cycle: not gathered yet.
+  radx::test::TempDir dir;
+  auto impact = radx::test::impact_benchmark_model(dir, 8);
+  radx::contact::prepare_type7_interfaces(impact);
+  impact.sections.emplace_back();
+  const auto refused = par::features_not_distributed(impact, radx::model::RunControls{});
+  REQUIRE(refused.size() == 1);
+  CHECK(refused[0].find("/SECT") != std::string::npos);
+  std::vector<std::string> said(2);
+  radx::test::run_ranks(2, [&](par::Comm& comm) {
+    try {
+      run_cycles(impact, 2, &comm);
+    } catch (const std::exception& e) {
+      said[static_cast<std::size_t>(comm.rank())] = e.what();
+    }
+  });
+  for (const auto& s : said) CHECK(s.find("/SECT") != std::string::npos);
+}
