@@ -181,6 +181,9 @@ int decompose_model(const model::Model& m, const solver::ElementGroups& groups, 
       // An option, not a line of a file: the message names the program instead of a file.
       err << "radx-engine: error: " << diag_code(Diag::DecompositionRanks) << ": " << e.what() << '\n';
       return 1;
+    } catch (const std::exception& e) {  // METIS failing, or memory
+      err << "radx-engine: error: the partition over " << ranks << " ranks failed: " << e.what() << '\n';
+      return 1;
     }
     source = ranks == 1 ? "one rank: every group on rank 0"
                         : "METIS k-way, seed " + std::to_string(par::kPartitionSeed);

@@ -728,7 +728,10 @@ int decompose_engine(const EngineOptions& opt, std::ostream& out, std::ostream& 
                          out, err);
 }
 
-int run_engine_on_this_rank(const EngineOptions& opt, std::ostream& out, std::ostream& err);
+// `loop_ended`, when given, is set once the engine's cycle loop has ended: on more than one rank every rank
+// leaves it on the same cycle, so an end before that point is this rank's alone.
+int run_engine_on_this_rank(const EngineOptions& opt, std::ostream& out, std::ostream& err,
+                            bool* loop_ended = nullptr);
 
 // A stream that drops what it is given: the printing of ranks other than 0.
 class NullStream : public std::ostream {
@@ -739,7 +742,7 @@ class NullStream : public std::ostream {
 // Ranks other than 0 run the same pipeline, so they take every collective step rank 0 takes (the outputs'
 // gathers, the stop decisions), into a private folder that is removed at the end: rank 0 alone writes the
 // run's files and prints.
-int run_engine_on_other_rank(const EngineOptions& opt) {
+int run_engine_on_other_rank(const EngineOptions& opt, bool* loop_ended) {
   const std::string root = model::run_output_root(opt.engine_deck);
   std::string scratch = (fs::temp_directory_path() / "radx-rank-XXXXXX").string();
   if (::mkdtemp(scratch.data()) == nullptr) {
@@ -752,9 +755,16 @@ int run_engine_on_other_rank(const EngineOptions& opt) {
       opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;
   mine.plot = false;
   NullStream quiet;
-  const int code = run_engine_on_this_rank(mine, quiet, quiet);
+  std::ostringstream errors;  // said only if this rank ends the run alone (below), else rank 0 says it
+  const int code = run_engine_on_this_rank(mine, quiet, errors, loop_ended);
   std::error_code ignored;
   fs::remove_all(scratch, ignored);
+  if (code != 0 && !*loop_ended) {
+    std::string text = errors.str();
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    opt.comm->abort(code, text.empty() ? "failed before the run's end; ending every rank"
+                                       : text + " (ending every rank)");
+  }
   return code;
 }
 
@@ -763,12 +773,20 @@ int run_engine_on_other_rank(const EngineOptions& opt) {
 int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
   if (opt.comm == nullptr || opt.comm->size() == 1) return run_engine_on_this_rank(opt, out, err);
   if (refuse_distributed_run(opt, *opt.comm, err)) return 1;
-  return opt.comm->rank() == 0 ? run_engine_on_this_rank(opt, out, err) : run_engine_on_other_rank(opt);
+  bool loop_ended = false;
+  const int code = opt.comm->rank() == 0 ? run_engine_on_this_rank(opt, out, err, &loop_ended)
+                                         : run_engine_on_other_rank(opt, &loop_ended);
+  // A rank that fails before the cycle loop has ended on every rank (its output folder locked, a file it
+  // cannot write, an exception of its own) would leave the others waiting in a collective: end them all.
+  // Rank 0 has printed its message; the others say theirs as they end (run_engine_on_other_rank).
+  if (code != 0 && !loop_ended) opt.comm->abort(code, "the error above ends the run on every rank");
+  return code;
 }
 
 namespace {
 
-int run_engine_on_this_rank(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
+int run_engine_on_this_rank(const EngineOptions& opt, std::ostream& out, std::ostream& err,
+                            bool* loop_ended) {
   if (opt.decompose_ranks > 0) return decompose_engine(opt, out, err);
   // Before anything that takes time (reading the deck and the model, setting up): a signal during it stops
   // the run before its first cycle, and the default action (an end without a summary) never meets it.
@@ -876,6 +894,7 @@ int run_engine_on_this_rank(const EngineOptions& opt, std::ostream& out, std::os
       deadline.cycle_ended();
       return watch.after_cycle(r);
     });
+    if (loop_ended != nullptr) *loop_ended = true;
   } catch (const std::exception& e) {
     err << opt.engine_deck << ": error: " << e.what() << '\n';
     s.status = io::RunStatus::Error;

@@ -1606,6 +1606,7 @@ void ExplicitEngine::share_output_state() {
     visit(g.off);
     visit(g.e_int);
     visit(g.dt);
+    visit(g.k_nodal);  // the nodal_time_step field, with or without /DT/NODA
     if constexpr (requires { g.sig; }) {
       visit(g.sig);
       visit(g.eps_p);
@@ -1635,12 +1636,15 @@ void ExplicitEngine::share_output_state() {
       visit(g.area);
     }
     if constexpr (requires { g.resultant; }) visit(g.resultant);
+    // A co-rotational brick's stress is kept in its element frame (brick_global_stress rotates it back).
+    if constexpr (std::is_same_v<std::decay_t<decltype(g)>, BrickGroup>) visit(g.frame);
   });
 }
 
 // The element energies: each group's partial sums (from 0, in element order), then the partials added in
-// flat group order. A group is never split between ranks, so its partial is the same on any rank count; the
-// ranks will gather the partials (24 B a group) and add them in this order, as one rank does.
+// flat group order. A group is never split between ranks, so its partial is the same on any rank count; on
+// more than one rank every rank holds every group's energies (share_output_state) and adds them in this
+// order.
 void ExplicitEngine::sum_energies(const LoopState& L) {
   auto& kin = *kinematics_;
   struct GroupEnergy {

@@ -64,20 +64,37 @@ std::vector<std::int32_t> engine_group_ranks(const model::Model& model, const El
                                              Comm& comm) {
   const int ranks = comm.size();
   std::vector<std::int32_t> rank(static_cast<std::size_t>(groups.count()));
-  Buffer message(rank.size() * sizeof(std::int32_t));
+  const std::size_t bytes = rank.size() * sizeof(std::int32_t);
+  // The message: a first byte 0 and the group ranks, or 1 and rank 0's error, which every rank then throws
+  // (a rank left waiting in the broadcast would hang the run).
+  Buffer message;
   if (comm.rank() == 0) {
+    std::string failure;
     try {
       const auto p = partition_groups(model, groups, ranks);
       std::copy(p.group_rank.begin(), p.group_rank.end(), rank.begin());
     } catch (const std::invalid_argument&) {  // fewer groups than ranks: blocks, some ranks without groups
       rank = block_group_ranks(groups.count(), ranks);
+    } catch (const std::exception& e) {
+      failure = e.what();
     }
-    if (!rank.empty()) std::memcpy(message.data(), rank.data(), message.size());
+    message.assign(1, std::byte{failure.empty() ? std::uint8_t{0} : std::uint8_t{1}});
+    if (!failure.empty()) {
+      const auto* text = reinterpret_cast<const std::byte*>(failure.data());
+      message.insert(message.end(), text, text + failure.size());
+    } else if (bytes > 0) {
+      const auto* data = reinterpret_cast<const std::byte*>(rank.data());
+      message.insert(message.end(), data, data + bytes);
+    }
   }
   comm.broadcast(message, 0);
-  if (message.size() != rank.size() * sizeof(std::int32_t))
+  if (!message.empty() && message[0] == std::byte{1})
+    throw std::runtime_error(
+        "the partition over " + std::to_string(ranks) + " ranks failed on rank 0: " +
+        std::string(reinterpret_cast<const char*>(message.data()) + 1, message.size() - 1));
+  if (message.size() != bytes + 1)
     throw std::runtime_error("rank 0's group ranks do not cover this rank's groups");
-  if (!rank.empty()) std::memcpy(rank.data(), message.data(), message.size());
+  if (bytes > 0) std::memcpy(rank.data(), message.data() + 1, bytes);
   return rank;
 }
 

@@ -21,6 +21,7 @@ import os
 import shutil
 import subprocess
 import sys
+import time
 
 MPI_FLAGS = ["--allow-run-as-root", "--oversubscribe", "--mca", "mpi_yield_when_idle", "1"]
 
@@ -99,6 +100,41 @@ def check_rank0_speaks(a):
           "np 2: a usage error said once, exit 2 (exit %d)" % r.returncode)
 
 
+def check_one_rank_fails_alone(a, deck, out):
+    # Rank 0 alone cannot claim the output folder (another process holds its lock); ranks 1 and 2 set up in
+    # their scratch folders and go on to the engine's first collective. Before the abort on a rank's own
+    # failure they waited there for good: the run must end on every rank within seconds, non-zero, with the
+    # lock's message and what it does to the other ranks.
+    name = os.path.basename(deck)[: -len("_0000.rad")]
+    engine_deck = deck.replace("_0000.rad", "_0001.rad")
+    serial = os.path.join(out, name, "serial")
+    locked = os.path.join(out, name, "locked")
+    shutil.rmtree(locked, ignore_errors=True)
+    os.makedirs(locked)
+    shutil.copy(os.path.join(serial, name + "_0000.hdf"), locked)
+    holder = subprocess.Popen(["flock", os.path.join(locked, name + ".lock"), "sleep", "60"])
+    try:
+        time.sleep(0.5)
+        t0 = time.monotonic()
+        try:
+            r = subprocess.run(["timeout", "30", a.mpirun, *MPI_FLAGS, "-np", "3", a.radx_engine_mpi, engine_deck,
+                                "--out", locked, "--threads", "1", "--no-plot"],
+                               capture_output=True, text=True, timeout=60)
+            code, err = r.returncode, r.stderr
+        except subprocess.TimeoutExpired:
+            code, err = 124, ""
+        seconds = time.monotonic() - t0
+    finally:
+        holder.kill()
+        holder.wait()
+    check(code not in (0, 124) and seconds < 20,
+          "np 3, rank 0's folder locked: every rank ends (exit %d after %.1f s, limit 20 s)" % (code, seconds))
+    check("is running " + name in err and "ends the run on every rank" in err,
+          "np 3, rank 0's folder locked: the lock and the end of every rank are said: %s" % err.strip()[-400:])
+    check(not glob.glob(os.path.join(locked, name + "*.hdf.series")),
+          "np 3, rank 0's folder locked: no results written")
+
+
 def libraries(exe):
     r = run(["ldd", exe])
     return r.stdout
@@ -114,6 +150,7 @@ def main():
     for deck in a.decks:
         compare_np1(a, deck, a.out, a.h5diff)
     check_rank0_speaks(a)
+    check_one_rank_fails_alone(a, a.decks[0], a.out)
     for exe in (a.radx_engine, a.radx_starter, a.radx):
         check("libmpi" not in libraries(exe), "ldd %s: no libmpi" % os.path.basename(exe))
     check("libmpi" in libraries(a.radx_engine_mpi), "ldd radx-engine-mpi: libmpi (the ldd check can see MPI)")
