@@ -781,26 +781,12 @@ inline void add_entry(double* sum, const double* f) {
   if constexpr (C % 2 == 1) sum[C - 1] += f[(C - 1) * G];
 }
 
-// Calls f(group, nodes per element, components) for the group of flat index `flat`, components an
-// integral_constant: 6 for a buffer of forces and moments (shells, TYPE8 and TYPE13 springs), 3 for forces
-// alone.
+// Calls f(group, nodes per element, components) for the group of flat index `flat`: the rule the domain's
+// shared-node slots follow too (parallel::visit_group_entries), so the two cannot disagree on a group's
+// components.
 template <class F>
 void ExplicitEngine::visit_group_sums(std::int64_t flat, F&& f) const {
-  using Forces = std::integral_constant<std::size_t, 3>;
-  using ForcesAndMoments = std::integral_constant<std::size_t, 6>;
-  groups_.visit(flat, [&](const auto& g) {
-    using Group = std::decay_t<decltype(g)>;
-    if constexpr (std::is_same_v<Group, ShellGroup> || std::is_same_v<Group, BeamGroup>) {
-      f(g, g.nodes_per_element(), ForcesAndMoments{});
-    } else if constexpr (std::is_same_v<Group, SpringGroup>) {
-      if (g.node_stride() == 6)
-        f(g, g.nodes_per_element(), ForcesAndMoments{});
-      else
-        f(g, g.nodes_per_element(), Forces{});
-    } else {
-      f(g, g.nodes_per_element(), Forces{});
-    }
-  });
+  parallel::visit_group_entries(groups_, flat, std::forward<F>(f));
 }
 
 // The regions (runs of node chunks, kMaxSumRegions) each group writes into, and for a group writing into

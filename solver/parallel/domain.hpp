@@ -31,7 +31,7 @@ namespace radx::solver::parallel {
 
 // Calls f(group, nodes per element, components) for the group of flat index `flat`, components an
 // integral_constant: 6 for a buffer of forces and moments (shells, beams, TYPE8 and TYPE13 springs), 3 for
-// forces alone. The same rule as the engine's own sums (ExplicitEngine::visit_group_sums).
+// forces alone. The engine's own sums use it too (ExplicitEngine::visit_group_sums).
 template <class Groups, class F>
 void visit_group_entries(Groups& groups, std::int64_t flat, F&& f) {
   using Forces = std::integral_constant<std::size_t, 3>;
