@@ -223,8 +223,9 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
     auto& comm = *options_.comm;
     domain_ =
         std::make_unique<parallel::EngineDomain>(groups_, parallel::engine_group_ranks(model_, groups_, comm),
-                                                 static_cast<std::int64_t>(nodes_.n), comm);
+                                                 parallel::replicated_nodes(model_), comm);
   }
+  build_node_pass_chunks();
   group_votes_.resize(static_cast<std::size_t>(group_count()));
   team_ =
       std::make_unique<ThreadTeam>(options_.threads > 0 ? options_.threads : ThreadTeam::default_threads());
@@ -1081,17 +1082,33 @@ Chunks ExplicitEngine::node_chunks() const {
   return Chunks::of(static_cast<std::int64_t>(nodes_.n), kNodeChunk);
 }
 
-// Calls body(c, first, last) for every node chunk c, nodes [first, last), on the team; a model of fewer than
-// two chunks' nodes on the calling thread alone.
+void ExplicitEngine::build_node_pass_chunks() {
+  pass_chunks_.clear();
+  pass_nodes_ = 0;
+  const auto add_run = [this](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; b += static_cast<std::size_t>(kNodeChunk))
+      pass_chunks_.push_back({b, std::min(last, b + static_cast<std::size_t>(kNodeChunk))});
+    pass_nodes_ += last - first;
+  };
+  if (!domain_) {
+    add_run(0, nodes_.n);
+    return;
+  }
+  for (const auto& run : domain_->pass_runs())
+    add_run(static_cast<std::size_t>(run.first), static_cast<std::size_t>(run.last));
+}
+
+// Calls body(c, first, last) for every node pass chunk c, nodes [first, last), on the team; fewer than two
+// chunks' nodes on the calling thread alone.
 template <class Body>
 void ExplicitEngine::node_pass(Body&& body) {
-  const auto chunks = node_chunks();
   team_->run(
-      chunks.count(),
+      static_cast<std::int64_t>(pass_chunks_.size()),
       [&](std::int64_t c) {
-        body(c, static_cast<std::size_t>(chunks.begin(c)), static_cast<std::size_t>(chunks.end(c)));
+        const auto& span = pass_chunks_[static_cast<std::size_t>(c)];
+        body(c, span.first, span.last);
       },
-      static_cast<std::int64_t>(nodes_.n) >= 2 * kNodeChunk);
+      pass_nodes_ >= 2 * static_cast<std::size_t>(kNodeChunk));
 }
 
 // 4-5. f = f_ext + the element sums (made in group order by the element stage), node by node; with
@@ -1333,6 +1350,9 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
     ++L.cycle;
     L.first = false;
   }
+  // An error ends the loop on every rank at once (every stop is decided on shared values); the state the
+  // caller writes then must be every node's.
+  if (domain_ && res.status != RunStatus::Normal) share_output_state();
   res.cycles = L.cycle;
   res.time = L.time;
   res.dt1 = L.dt1;
@@ -1588,6 +1608,7 @@ bool ExplicitEngine::any_rank(bool mine) const {
 // each group's owner into every rank's copy, so they read what one rank has.
 void ExplicitEngine::share_output_state() {
   if (!domain_) return;
+  domain_->gather_node_state(nodes_);
   domain_->share_group_arrays(groups_, [](auto& g, auto&& visit) {
     visit(g.off);
     visit(g.e_int);
@@ -1685,24 +1706,38 @@ bool ExplicitEngine::integrate(LoopState& L, RunResult& res) {
   auto& s = nodes_;
   const double dt12 = L.dt12();
   const double dt2 = L.dt2;
-  std::vector<std::uint8_t> chunk_finite(static_cast<std::size_t>(node_chunks().count()), 1);
+  std::vector<std::uint8_t> chunk_finite(pass_chunks_.size(), 1);
   node_pass([&](std::int64_t c, std::size_t first, std::size_t last) {
     chunk_finite[static_cast<std::size_t>(c)] = integrate_nodes(s, dt12, dt2, first, last) ? 1 : 0;
   });
   loads_zeroed_ = true;
-  const bool finite =
-      std::all_of(chunk_finite.begin(), chunk_finite.end(), [](std::uint8_t f) { return f != 0; });
+  const bool finite = any_rank(!std::all_of(chunk_finite.begin(), chunk_finite.end(),
+                                            [](std::uint8_t f) { return f != 0; })) == false;
+  if (finite && domain_) domain_->update_ghosts(s);
   L.element_seconds += seconds_since(t0);
   kinematics_->after_update(dt2);
   if (finite) return true;
   res.status = RunStatus::Error;
-  std::int64_t bad = 0;
-  for (std::size_t n = 0; n < s.n && bad == 0; ++n)
-    if (!std::isfinite(s.x[n] + s.y[n] + s.z[n])) bad = model_.nodes.id[n];
-  res.message = "node " + std::to_string(bad) + " has non-finite coordinates at cycle " +
+  res.message = "node " + std::to_string(first_nonfinite_node()) + " has non-finite coordinates at cycle " +
                 std::to_string(L.cycle) + ", time " + std::to_string(L.time) +
                 ": the run is unstable (check the time step and the mesh)";
   return false;
+}
+
+// The user id of the first node (in node order) with a non-finite coordinate among those the ranks integrate,
+// or 0: each rank's first, the smallest of them.
+std::int64_t ExplicitEngine::first_nonfinite_node() const {
+  const auto& s = nodes_;
+  std::int64_t first = std::numeric_limits<std::int64_t>::max();
+  for (const auto& span : pass_chunks_)
+    for (std::size_t n = span.first; n < span.last && first == std::numeric_limits<std::int64_t>::max(); ++n)
+      if (!std::isfinite(s.x[n] + s.y[n] + s.z[n])) first = static_cast<std::int64_t>(n);
+  if (domain_) {
+    const parallel::Vote v = domain_->comm().vote(parallel::Vote{static_cast<double>(first), first});
+    first = v.key;
+  }
+  return first == std::numeric_limits<std::int64_t>::max() ? 0
+                                                           : model_.nodes.id[static_cast<std::size_t>(first)];
 }
 
 }  // namespace radx::solver

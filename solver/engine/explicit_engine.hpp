@@ -196,6 +196,8 @@ class ExplicitEngine {
   template <class F>
   void visit_group_sums(std::int64_t flat, F&& f) const;
   [[nodiscard]] Chunks node_chunks() const;
+  void build_node_pass_chunks();
+  [[nodiscard]] std::int64_t first_nonfinite_node() const;
   template <class Body>
   void node_pass(Body&& body);
   void assemble_and_accelerate(bool accelerate);
@@ -279,6 +281,13 @@ class ExplicitEngine {
   std::int64_t count_deleted() const;
   std::vector<GroupVote> group_votes_;  // filled by the element stage, combined by element_time_step
   bool loads_zeroed_ = false;
+  // The node passes' chunks [first, last): every node in kNodeChunk blocks on one rank; on more than one,
+  // the nodes this rank integrates (EngineDomain::pass_runs), each run cut into such blocks.
+  struct NodeSpan {
+    std::size_t first = 0, last = 0;
+  };
+  std::vector<NodeSpan> pass_chunks_;
+  std::size_t pass_nodes_ = 0;
   // The assembly pass also computes a = f / m when nothing changes f or m between it and step 5: no TYPE2
   // ties, no /DT/NODA (it may add mass), no /DT/INTER/CST added mass; contact then updates a where it adds.
   bool fuse_accelerations_ = false;  // integrate() zeroed f_ext and the moments for the next cycle's loads

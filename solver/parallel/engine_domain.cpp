@@ -3,6 +3,7 @@
 #include "solver/parallel/engine_domain.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <utility>
 
@@ -29,9 +30,13 @@ std::vector<std::string> features_not_distributed(const model::Model& m, const m
 
 namespace {
 
-std::vector<std::vector<NodeRun>> runs_of_every_rank(const std::vector<std::int32_t>& owner, int ranks) {
+// Every rank's owned nodes that `keep(node)` selects, as ascending runs.
+template <class Keep>
+std::vector<std::vector<NodeRun>> runs_of_every_rank(const std::vector<std::int32_t>& owner, int ranks,
+                                                     Keep&& keep) {
   std::vector<std::vector<NodeRun>> runs(static_cast<std::size_t>(ranks));
   for (std::size_t n = 0; n < owner.size(); ++n) {
+    if (!keep(n)) continue;
     auto& r = runs[static_cast<std::size_t>(owner[n])];
     const auto node = static_cast<std::int64_t>(n);
     if (!r.empty() && r.back().last == node)
@@ -40,6 +45,38 @@ std::vector<std::vector<NodeRun>> runs_of_every_rank(const std::vector<std::int3
       r.push_back({node, node + 1});
   }
   return runs;
+}
+
+// The nodes `rank` owns or every rank keeps whole, as ascending runs.
+std::vector<NodeRun> pass_runs_of(const std::vector<std::int32_t>& owner,
+                                  std::span<const std::uint8_t> replicated, int rank) {
+  std::vector<NodeRun> runs;
+  for (std::size_t n = 0; n < owner.size(); ++n) {
+    if (owner[n] != rank && replicated[n] == 0) continue;
+    const auto node = static_cast<std::int64_t>(n);
+    if (!runs.empty() && runs.back().last == node)
+      ++runs.back().last;
+    else
+      runs.push_back({node, node + 1});
+  }
+  return runs;
+}
+
+void mark_group(const model::Model& m, std::int32_t group, std::vector<std::uint8_t>& mark) {
+  if (group == model::kNone) return;
+  for (const auto n : m.node_groups[static_cast<std::size_t>(group)].nodes)
+    mark[static_cast<std::size_t>(n)] = 1;
+}
+
+void mark_surface(const model::Model& m, std::int32_t surface, std::vector<std::uint8_t>& mark) {
+  if (surface == model::kNone) return;
+  for (const auto& seg : m.surfaces[static_cast<std::size_t>(surface)].segments)
+    for (const auto n : seg) mark[static_cast<std::size_t>(n)] = 1;
+}
+
+void mark_nodes(std::span<const std::int32_t> nodes, std::vector<std::uint8_t>& mark) {
+  for (const auto n : nodes)
+    if (n != model::kNone) mark[static_cast<std::size_t>(n)] = 1;
 }
 
 // Each rank's groups ascending, as a CSR list (begin [ranks + 1], groups).
@@ -59,6 +96,42 @@ std::vector<std::int64_t> rank_group_lists(const std::vector<std::int32_t>& grou
 }
 
 }  // namespace
+
+std::vector<std::uint8_t> replicated_nodes(const model::Model& m) {
+  std::vector<std::uint8_t> mark(m.nodes.id.size(), 0);
+  for (const auto& v : m.imposed_velocities) mark_group(m, v.group, mark);
+  for (const auto& g : m.imposed_final_geometries) mark_nodes(g.nodes, mark);
+  for (const auto& v : m.initial_velocities)  // at t = 0 every rank sets every node alike
+    if (v.sensor != 0 || v.t_start > 0) mark_group(m, v.group, mark);
+  for (const auto& l : m.concentrated_loads) mark_group(m, l.group, mark);
+  for (const auto& p : m.pressure_loads) mark_surface(m, p.surface, mark);
+  for (const auto& g : m.gravities) {
+    if (g.group == model::kNone)
+      std::fill(mark.begin(), mark.end(), 1);
+    else
+      mark_group(m, g.group, mark);
+  }
+  for (const auto& w : m.rigid_walls) {
+    mark_nodes(w.secondary, mark);
+    mark_nodes(std::span(&w.node, 1), mark);
+  }
+  for (const auto& b : m.rigid_bodies) {
+    mark_nodes(b.secondary, mark);
+    mark_nodes(std::span(&b.main_node, 1), mark);
+  }
+  for (const auto& t : m.tied_interfaces) {
+    mark_nodes(t.tie_node, mark);
+    for (const auto& seg : t.tie_segment) mark_nodes(seg, mark);
+  }
+  for (const auto& i : m.interfaces) {
+    mark_nodes(i.secondary_nodes, mark);
+    mark_surface(m, i.main_surface, mark);
+  }
+  for (const auto& k : m.skews)
+    if (k.moving()) mark_nodes(std::array{k.n1, k.n2, k.n3}, mark);
+  for (const auto& a : m.accelerometers) mark_nodes(std::span(&a.node, 1), mark);
+  return mark;
+}
 
 std::vector<std::int32_t> engine_group_ranks(const model::Model& model, const ElementGroups& groups,
                                              Comm& comm) {
@@ -99,15 +172,24 @@ std::vector<std::int32_t> engine_group_ranks(const model::Model& model, const El
 }
 
 EngineDomain::EngineDomain(const ElementGroups& groups, std::vector<std::int32_t> group_rank,
-                           std::int64_t node_count, Comm& comm)
+                           std::span<const std::uint8_t> replicated, Comm& comm)
     : comm_(comm),
       group_rank_(std::move(group_rank)),
       rank_groups_begin_(rank_begins(group_rank_, comm.size())),
       rank_groups_(rank_group_lists(group_rank_, comm.size())),
-      plan_(build_domain_plan(groups, group_rank_, node_count, comm.size(), comm.rank())),
-      shared_(plan_),
-      node_runs_(
-          runs_of_every_rank(node_owner_ranks(groups, group_rank_, node_count, comm.size()), comm.size())) {}
+      plan_(build_domain_plan(groups, group_rank_, static_cast<std::int64_t>(replicated.size()), comm.size(),
+                              comm.rank())),
+      shared_(plan_) {
+  const auto owner =
+      node_owner_ranks(groups, group_rank_, static_cast<std::int64_t>(replicated.size()), comm.size());
+  replicated_runs_ =
+      runs_of_every_rank(owner, comm.size(), [&](std::size_t n) { return replicated[n] != 0; });
+  unreplicated_runs_ =
+      runs_of_every_rank(owner, comm.size(), [&](std::size_t n) { return replicated[n] == 0; });
+  pass_runs_ = pass_runs_of(owner, replicated, comm.rank());
+  for (const auto n : plan_.ghost_nodes)
+    if (replicated[static_cast<std::size_t>(n)] == 0) partial_ghosts_.push_back(n);
+}
 
 void EngineDomain::write_shared_slots(const ElementGroups& groups, std::int64_t flat) {
   const std::int32_t local = plan_.local_group[static_cast<std::size_t>(flat)];
@@ -129,28 +211,58 @@ void EngineDomain::write_shared_slots(const ElementGroups& groups, std::int64_t 
 
 void EngineDomain::complete_element_sums(std::span<double> element_sums) {
   exchange_shared_sums(shared_, comm_, element_sums);
-  const auto& mine = node_runs_[static_cast<std::size_t>(plan_.rank)];
-  std::size_t doubles = 0;
-  for (const auto& run : mine) doubles += 6 * static_cast<std::size_t>(run.last - run.first);
-  Buffer out(doubles * sizeof(double));
+  // A ghost's sum here holds this rank's entries only (its owner has the whole sum); cleared, as the
+  // assembly pass that would clear it does not walk the ghost.
+  for (const auto n : partial_ghosts_)
+    std::fill_n(element_sums.data() + 6 * static_cast<std::size_t>(n), 6, 0.0);
+  const NodeField sums{element_sums.data(), 6};
+  all_gather_runs(replicated_runs_, std::span(&sums, 1));
+}
+
+void EngineDomain::update_ghosts(NodeState& nodes) {
+  exchange_ghosts(plan_, comm_, nodes);
+}
+
+void EngineDomain::gather_node_state(NodeState& s) {
+  const std::array<NodeField, 24> fields{
+      {{s.x.data(), 1},   {s.y.data(), 1},      {s.z.data(), 1},      {s.vx.data(), 1},    {s.vy.data(), 1},
+       {s.vz.data(), 1},  {s.ax.data(), 1},     {s.ay.data(), 1},     {s.az.data(), 1},    {s.fx.data(), 1},
+       {s.fy.data(), 1},  {s.fz.data(), 1},     {s.wx.data(), 1},     {s.wy.data(), 1},    {s.wz.data(), 1},
+       {s.mx.data(), 1},  {s.my.data(), 1},     {s.mz.data(), 1},     {s.awx.data(), 1},   {s.awy.data(), 1},
+       {s.awz.data(), 1}, {s.fx_ext.data(), 1}, {s.fy_ext.data(), 1}, {s.fz_ext.data(), 1}}};
+  all_gather_runs(unreplicated_runs_, fields);
+}
+
+void EngineDomain::all_gather_runs(const std::vector<std::vector<NodeRun>>& runs,
+                                   std::span<const NodeField> fields) {
+  const auto doubles_of = [&](const std::vector<NodeRun>& rs) {
+    std::size_t d = 0;
+    for (const auto& run : rs)
+      for (const auto& f : fields) d += f.width * static_cast<std::size_t>(run.last - run.first);
+    return d;
+  };
+  const auto& mine = runs[static_cast<std::size_t>(plan_.rank)];
+  Buffer out(doubles_of(mine) * sizeof(double));
   std::byte* p = out.data();
-  for (const auto& run : mine) {
-    const std::size_t bytes = 6 * static_cast<std::size_t>(run.last - run.first) * sizeof(double);
-    std::memcpy(p, element_sums.data() + 6 * run.first, bytes);
-    p += bytes;
-  }
+  for (const auto& run : mine)
+    for (const auto& f : fields) {
+      const std::size_t bytes = f.width * static_cast<std::size_t>(run.last - run.first) * sizeof(double);
+      std::memcpy(p, f.data + f.width * static_cast<std::size_t>(run.first), bytes);
+      p += bytes;
+    }
   const auto all = comm_.all_gather(out);
   for (std::size_t r = 0; r < all.size(); ++r) {
     if (static_cast<int>(r) == plan_.rank) continue;
+    if (all[r].size() != doubles_of(runs[r]) * sizeof(double))
+      throw std::runtime_error("rank " + std::to_string(r) +
+                               "'s node message does not have the size its nodes need");
     const std::byte* q = all[r].data();
-    for (const auto& run : node_runs_[r]) {
-      const std::size_t bytes = 6 * static_cast<std::size_t>(run.last - run.first) * sizeof(double);
-      if (q + bytes > all[r].data() + all[r].size())
-        throw std::runtime_error("rank " + std::to_string(r) +
-                                 "'s node sums are shorter than its nodes need");
-      std::memcpy(element_sums.data() + 6 * run.first, q, bytes);
-      q += bytes;
-    }
+    for (const auto& run : runs[r])
+      for (const auto& f : fields) {
+        const std::size_t bytes = f.width * static_cast<std::size_t>(run.last - run.first) * sizeof(double);
+        std::memcpy(f.data + f.width * static_cast<std::size_t>(run.first), q, bytes);
+        q += bytes;
+      }
   }
 }
 

@@ -4,21 +4,22 @@
 // Groups are placed on ranks by the METIS partition (partition.hpp), computed on rank 0 and broadcast; a
 // model with fewer groups than ranks takes contiguous blocks of the flat group order instead,
 // rank(g) = floor(g P / G), leaving some ranks without groups. A rank's groups, in flat order, are a
-// subsequence of the serial order. Per cycle:
+// subsequence of the serial order. Each node has one owner (node_owner_ranks). Per cycle:
 //   - each rank computes its own groups only; their entries on nodes no other rank touches are summed as the
 //     serial engine sums them (the same order: the group order restricted to the groups reaching the node);
 //     entries on shared nodes also go to their skyline slots, and each shared node's owner sums them from
 //     zero in the serial order (DomainPlan, SharedSums):   S_n[d] = ((0 + c_1[d]) + c_2[d]) + ... + c_m[d];
-//   - then every rank receives every owner's sums S_n (6 doubles a node), so the node passes (loads,
-//     assembly, conditions, integration), contact, rigid bodies and walls, ties and sensors run on every rank
-//     over all nodes, on the same values as one rank (replicated, not split);
+//   - the replicated nodes (replicated_nodes: those a stage that runs whole on every rank reads or writes:
+//     loads, imposed motion, rigid walls and bodies, ties, contact, moving skews, accelerometers) get their
+//     sums S_n from their owners on every rank, and every rank runs their node passes and those stages on
+//     the same values as one rank;
+//   - every other node is assembled, accelerated, conditioned and integrated by its owner alone (node passes
+//     over pass_runs: owned or replicated nodes); after integration the owners send x, v (and omega) to the
+//     ranks whose groups read the node (its ghosts there);
 //   - the groups' time-step votes (one record a group) are gathered on every rank and combined in group order
 //     as one rank combines them;
-//   - before the element energies, outputs or the listing of deleted elements read the groups, the owners
-//   send
-//     the arrays those read to every rank (share_group_arrays).
-// The node passes are thus replicated (every rank integrates every node) and the node sums gathered whole:
-// correct for any P, not yet the owned-nodes-only passes with ghost updates of the design.
+//   - before the energies, outputs or the listing of deleted elements read the nodes or groups, the owners
+//     send what those read to every rank (gather_node_state, share_group_arrays).
 #pragma once
 
 #include <cstdint>
@@ -46,6 +47,13 @@ namespace radx::solver::parallel {
 [[nodiscard]] std::vector<std::int32_t> engine_group_ranks(const model::Model& model,
                                                            const ElementGroups& groups, Comm& comm);
 
+// The nodes that a stage run whole on every rank reads or writes, 1 each: nodes of loads (concentrated,
+// pressure, gravity), imposed velocities and displacements, delayed initial velocities, rigid walls (their
+// secondary and wall nodes), rigid bodies, TYPE2 ties (secondary nodes and main segments), contact interfaces
+// (secondary nodes and main segments), moving skews and accelerometers. Boundary conditions are not among
+// them: they act on each node alone, on whichever rank integrates it.
+[[nodiscard]] std::vector<std::uint8_t> replicated_nodes(const model::Model& model);
+
 // What a model uses that the engine does not yet run on more than one rank, by keyword (empty: all of it
 // runs): /SECT, whose force reads every element's nodal forces at every cycle (not gathered). The same list
 // on every rank: it reads the replicated model and controls only.
@@ -55,8 +63,9 @@ namespace radx::solver::parallel {
 class EngineDomain {
  public:
   // Every rank builds its domain from the same groups and the same group ranks (engine_group_ranks).
-  EngineDomain(const ElementGroups& groups, std::vector<std::int32_t> group_rank, std::int64_t node_count,
-               Comm& comm);
+  // `replicated` (replicated_nodes, one entry a node) is the same on every rank.
+  EngineDomain(const ElementGroups& groups, std::vector<std::int32_t> group_rank,
+               std::span<const std::uint8_t> replicated, Comm& comm);
   EngineDomain(const EngineDomain&) = delete;
   EngineDomain& operator=(const EngineDomain&) = delete;
 
@@ -70,9 +79,21 @@ class EngineDomain {
   // distinct).
   void write_shared_slots(const ElementGroups& groups, std::int64_t flat);
 
-  // After the element stage: the owners sum the shared nodes, then every rank receives every node's sums
-  // into element_sums [node][6]. Called by every rank.
+  // The nodes this rank's node passes walk: those it owns and the replicated ones, as ascending runs.
+  [[nodiscard]] const std::vector<NodeRun>& pass_runs() const { return pass_runs_; }
+
+  // After the element stage: the owners sum the shared nodes, every rank receives the replicated nodes' sums
+  // into element_sums [node][6], and the partial sums of ghosts (nodes owned elsewhere) are cleared. Called
+  // by every rank.
   void complete_element_sums(std::span<double> element_sums);
+
+  // After integration: x, v (and omega) of each ghost from its owner. Called by every rank.
+  void update_ghosts(NodeState& nodes);
+
+  // The state of every node this rank does not integrate (x, v, a, f, omega, moments, angular a, external
+  // forces), from its owner, so that every rank holds every node as one rank does: before the energies and
+  // outputs read them. Called by every rank.
+  void gather_node_state(NodeState& nodes);
 
   // One trivially copyable record per group (indexed by flat group): each owner's records reach every rank.
   template <class T>
@@ -139,8 +160,21 @@ class EngineDomain {
   std::vector<std::int64_t> rank_groups_begin_;
   std::vector<std::int64_t> rank_groups_;
   DomainPlan plan_;
-  SharedSums shared_;                            // refers to plan_
-  std::vector<std::vector<NodeRun>> node_runs_;  // every rank's owned nodes, as runs
+  SharedSums shared_;  // refers to plan_
+  // A field of the nodes: `width` doubles a node from `data` (node n at data + width n).
+  struct NodeField {
+    double* data;
+    std::size_t width;
+  };
+  // Each rank sends its runs[rank] of every field; the others' runs arrive into this rank's fields.
+  void all_gather_runs(const std::vector<std::vector<NodeRun>>& runs, std::span<const NodeField> fields);
+
+  // Every rank's owned nodes, replicated ones (their sums go to every rank) and the rest (gathered for
+  // outputs only), as runs.
+  std::vector<std::vector<NodeRun>> replicated_runs_;
+  std::vector<std::vector<NodeRun>> unreplicated_runs_;
+  std::vector<NodeRun> pass_runs_;
+  std::vector<std::int32_t> partial_ghosts_;  // ghosts not replicated: their local sums are partial
 };
 
 }  // namespace radx::solver::parallel
