@@ -99,3 +99,81 @@ TEST_CASE("a run with a feature not yet split over ranks is refused by the engin
   });
   for (const auto& s : said) CHECK(s.find("/SECT") != std::string::npos);
 }
+
+TEST_CASE("the nodes kept whole on every rank are those of the stages every rank runs whole, and no others",
+          "[parallel][engine]") {
+  // One feature a node (or a few), each on nodes of its own, so a feature left out shows as its nodes
+  // unmarked; nodes under a boundary condition only, or under none, must stay the owner's alone.
+  namespace model = radx::model;
+  model::Model m;
+  for (std::int64_t id = 1; id <= 24; ++id) m.nodes.id.push_back(id);
+  const auto group = [&](std::vector<std::int32_t> nodes) {
+    m.node_groups.push_back({});
+    m.node_groups.back().nodes = std::move(nodes);
+    return static_cast<std::int32_t>(m.node_groups.size() - 1);
+  };
+  const auto surface = [&](std::array<std::int32_t, 4> segment) {
+    m.surfaces.push_back({});
+    m.surfaces.back().segments.push_back(segment);
+    return static_cast<std::int32_t>(m.surfaces.size() - 1);
+  };
+  std::vector<std::int32_t> expected;
+  const auto expect = [&](std::initializer_list<std::int32_t> nodes) {
+    expected.insert(expected.end(), nodes);
+  };
+  m.imposed_velocities.push_back({});
+  m.imposed_velocities.back().group = group({0, 1});
+  expect({0, 1});
+  m.imposed_final_geometries.push_back({});
+  m.imposed_final_geometries.back().nodes = {2};
+  expect({2});
+  m.initial_velocities.push_back({});  // applied at t = 0 alike on every rank: not kept whole
+  m.initial_velocities.back().group = group({3});
+  m.initial_velocities.push_back({});  // delayed: applied mid-run, with its work
+  m.initial_velocities.back().group = group({4});
+  m.initial_velocities.back().t_start = 1e-3;
+  expect({4});
+  m.concentrated_loads.push_back({});
+  m.concentrated_loads.back().group = group({5});
+  expect({5});
+  m.pressure_loads.push_back({});
+  m.pressure_loads.back().surface = surface({6, 7, 8, 8});
+  expect({6, 7, 8});
+  m.rigid_walls.push_back({});
+  m.rigid_walls.back().secondary = {9};
+  m.rigid_walls.back().node = 10;
+  expect({9, 10});
+  m.rigid_bodies.push_back({});
+  m.rigid_bodies.back().secondary = {11};
+  m.rigid_bodies.back().main_node = 12;
+  expect({11, 12});
+  m.tied_interfaces.push_back({});
+  m.tied_interfaces.back().tie_node = {13};
+  m.tied_interfaces.back().tie_segment = {{14, 15, 16, 16}};
+  expect({13, 14, 15, 16});
+  m.interfaces.push_back({});
+  m.interfaces.back().secondary_nodes = {17};
+  m.interfaces.back().main_surface = surface({18, 19, 20, 20});
+  expect({17, 18, 19, 20});
+  m.skews.push_back({});  // a fixed skew reads no node
+  m.skews.push_back({});
+  m.skews.back().n1 = 21;
+  m.skews.back().n2 = 0;
+  m.skews.back().n3 = 1;
+  expect({21});
+  m.accelerometers.push_back({});
+  m.accelerometers.back().node = 22;
+  expect({22});
+  m.bcs.push_back({});
+  m.bcs.back().group = group({23});
+  m.gravities.push_back({});
+  m.gravities.back().group = group({3});
+  expect({3});
+
+  std::vector<std::uint8_t> want(m.nodes.id.size(), 0);
+  for (const auto n : expected) want[static_cast<std::size_t>(n)] = 1;
+  CHECK(par::replicated_nodes(m) == want);
+
+  m.gravities.back().group = model::kNone;  // gravity on every node: every node kept whole
+  CHECK(par::replicated_nodes(m) == std::vector<std::uint8_t>(m.nodes.id.size(), 1));
+}
