@@ -255,9 +255,7 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
 std::int64_t ExplicitEngine::count_deleted() const {
   // The element stage counted each group's deleted elements (springs count none: their failure does not
   // concern contact).
-  std::int64_t n = 0;
-  for (const auto& v : group_votes_) n += v.deleted;
-  return n;
+  return step_vote_.deleted;
 }
 
 ExplicitEngine::~ExplicitEngine() = default;
@@ -282,8 +280,7 @@ constexpr std::int64_t kDeletionLines = 1000;
 // which, once, as Radioss's "DELETE OF ... ELEMENT" and "RUPTURE OF ..." lines do. Scans the groups only in a
 // cycle whose count of such elements changed.
 void ExplicitEngine::list_deleted_elements(std::int64_t cycle, double time) {
-  std::int64_t ended = 0;
-  for (const auto& v : group_votes_) ended += v.ended;
+  const std::int64_t ended = step_vote_.ended;
   if (ended == ended_elements_) return;
   // The counts are every rank's (gathered votes); the elements' life factors come from their owners.
   if (domain_) domain_->share_group_arrays(groups_, [](auto& g, auto&& visit) { visit(g.off); });
@@ -897,10 +894,7 @@ void ExplicitEngine::compute_element_forces(const CycleInfo& cyc) {
   element_sums_order_.drain(add);
   // every group's forces are in the sums
   assert(element_sums_order_.committed() == element_sums_order_.parts());
-  if (domain_) {  // the shared nodes' sums from their owners, every node's sums and every group's vote here
-    domain_->complete_element_sums(element_sums_);
-    domain_->share_group_records(std::span(group_votes_));
-  }
+  combine_step_votes(cyc.time);
 }
 
 namespace {
@@ -1144,31 +1138,96 @@ std::string short_number(double v) {
   std::snprintf(buf, sizeof buf, "%.4g", v);
   return buf;
 }
+
+// One group's vote into a rank's, in group order (flat ascending).
+void add_group_vote(StepVote& into, const GroupVote& v, std::int64_t flat, const model::RunControls& c) {
+  // /DT/<family>/STOP: an element of the family below its Tmin ends the run (OpenRadioss IDTMIN = 1).
+  if (const auto* fam = stop_family(v.kind, c); into.stop_flat == StepVote::kNoGroup && fam != nullptr &&
+                                                fam->given && fam->action == model::DtAction::Stop &&
+                                                v.dt < fam->t_min) {
+    into.stop = v;
+    into.stop_flat = flat;
+  }
+  into.switched += v.switched;
+  into.deleted += v.deleted;
+  into.ended += v.ended;
+  if (v.violation_id != 0 && into.violation_flat == StepVote::kNoGroup) {
+    into.violation = v;
+    into.violation_flat = flat;
+  }
+  if (v.dt < into.best.dt) {
+    into.best = v;
+    into.best_flat = flat;
+  }
+}
+
+// Another rank's vote into this one: each first by its flat group (an infinite or NaN step never wins, as
+// in the serial scan), counts summed, flags OR-ed.
+void merge_step_votes(StepVote& into, const StepVote& v) {
+  if (v.best.dt < into.best.dt ||
+      (v.best.dt == into.best.dt && v.best.dt < kInf && v.best_flat < into.best_flat)) {
+    into.best = v.best;
+    into.best_flat = v.best_flat;
+  }
+  if (v.stop_flat < into.stop_flat) {
+    into.stop = v.stop;
+    into.stop_flat = v.stop_flat;
+  }
+  if (v.violation_flat < into.violation_flat) {
+    into.violation = v.violation;
+    into.violation_flat = v.violation_flat;
+  }
+  into.switched += v.switched;
+  into.deleted += v.deleted;
+  into.ended += v.ended;
+  into.flags |= v.flags;
+}
+
 }  // namespace
 
-double ExplicitEngine::element_time_step(StepControl& control) {
-  double best = kInf;
-  for (const auto& v : group_votes_) {
-    // /DT/<family>/STOP: an element of the family below its Tmin ends the run (OpenRadioss IDTMIN = 1).
-    if (const auto* fam = stop_family(v.kind, controls_); fam != nullptr && fam->given &&
-                                                          fam->action == model::DtAction::Stop &&
-                                                          v.dt < fam->t_min && step_stop_.empty())
-      step_stop_ = step_control_name(StepControl{v.kind, v.user_id}) + " has the step " + short_number(v.dt) +
-                   ", below the " + step_stop_keyword(v.kind) + " minimum " + short_number(fam->t_min);
-    switched_elements_ += v.switched;
-    if (v.violation_id != 0 && cst_violation_.empty())
-      cst_violation_ = "element " + std::to_string(v.violation_id) + " was held at the /DT/.../CST step " +
-                       std::to_string(v.violation_frozen) + " but its own stable step fell to " +
-                       std::to_string(v.violation_dt) +
-                       " (radx keeps large-strain kinematics after the switch); the run stops before it "
-                       "goes unstable: refine the mesh or use /DT/NODA/CST";
-    if (v.dt < best) {
-      best = v.dt;
-      control.kind = v.kind;
-      control.user_id = v.user_id;
-    }
+// After the element stage: this rank's groups' votes in group order; on more than one rank, with the shared
+// and replicated nodes' sums, every rank's vote (one small record a rank, whatever the model's size), merged.
+void ExplicitEngine::combine_step_votes(double time) {
+  step_vote_ = StepVote{};
+  if (!domain_) {
+    for (std::int64_t flat = 0; flat < group_count(); ++flat)
+      add_group_vote(step_vote_, group_votes_[static_cast<std::size_t>(flat)], flat, controls_);
+    return;
   }
-  return best;
+  for (const std::int64_t flat : domain_->plan().groups)
+    add_group_vote(step_vote_, group_votes_[static_cast<std::size_t>(flat)], flat, controls_);
+  if (options_.output_due && options_.output_due(time)) step_vote_.flags |= StepVote::kOutputDue;
+  parallel::Buffer mine(sizeof(StepVote));
+  std::memcpy(mine.data(), &step_vote_, sizeof(StepVote));
+  const auto all = domain_->complete_element_sums(element_sums_, mine);
+  step_vote_ = StepVote{};
+  for (const auto& theirs : all) {
+    if (theirs.size() != sizeof(StepVote)) throw std::runtime_error("a rank's step vote has the wrong size");
+    StepVote v;
+    std::memcpy(&v, theirs.data(), sizeof(StepVote));
+    merge_step_votes(step_vote_, v);
+  }
+}
+
+// The combined vote's step and what controls it; its /DT/.../STOP and /CST findings, for choose_time_step.
+double ExplicitEngine::element_time_step(StepControl& control) {
+  const StepVote& v = step_vote_;
+  if (v.stop_flat != StepVote::kNoGroup && step_stop_.empty())
+    step_stop_ = step_control_name(StepControl{v.stop.kind, v.stop.user_id}) + " has the step " +
+                 short_number(v.stop.dt) + ", below the " + step_stop_keyword(v.stop.kind) + " minimum " +
+                 short_number(stop_family(v.stop.kind, controls_)->t_min);
+  switched_elements_ += v.switched;
+  if (v.violation_flat != StepVote::kNoGroup && cst_violation_.empty())
+    cst_violation_ = "element " + std::to_string(v.violation.violation_id) +
+                     " was held at the /DT/.../CST step " + std::to_string(v.violation.violation_frozen) +
+                     " but its own stable step fell to " + std::to_string(v.violation.violation_dt) +
+                     " (radx keeps large-strain kinematics after the switch); the run stops before it "
+                     "goes unstable: refine the mesh or use /DT/NODA/CST";
+  if (v.best_flat != StepVote::kNoGroup) {
+    control.kind = v.best.kind;
+    control.user_id = v.best.user_id;
+  }
+  return v.best.dt;
 }
 
 double ExplicitEngine::nodal_time_step(StepControl& control) {
@@ -1559,10 +1618,11 @@ bool ExplicitEngine::lagrange_correction(LoopState& L, RunResult& res) {
 bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(const CycleReport&)>& on_cycle,
                              RunResult& res) {
   auto& kin = *kinematics_;
-  // A stop signal seen by one rank makes the cycle full on all (each rank's output_due reads its own).
-  const bool full =
-      any_rank(L.first || last || L.cycle % std::max<std::int64_t>(1, options_.report_every) == 0 ||
-               (options_.output_due && options_.output_due(L.time)));
+  // On more than one rank, a stop signal seen by one rank makes the cycle full on all: each rank's
+  // output_due, read at the element stage, rode in the step vote.
+  const bool due = domain_ ? (step_vote_.flags & StepVote::kOutputDue) != 0
+                           : options_.output_due && options_.output_due(L.time);
+  const bool full = L.first || last || L.cycle % std::max<std::int64_t>(1, options_.report_every) == 0 || due;
   CycleReport rep;
   if (full) {
     share_output_state();
@@ -1587,8 +1647,11 @@ bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(c
                   ", time " + short_text(L.time) + "); the run stops";
     return false;
   }
-  // Every rank stops when one does (a write failure or a signal may be one rank's alone).
-  if (any_rank(on_cycle && !on_cycle(rep))) {
+  // Every rank stops when one does (a write failure or a signal may be one rank's alone): decided on full
+  // cycles, where the ranks agree to meet; a rank's wish to stop on a partial cycle waits for the next one.
+  stop_wanted_ = (on_cycle && !on_cycle(rep)) || stop_wanted_;
+  const bool stop = domain_ == nullptr ? stop_wanted_ : full && any_rank(stop_wanted_);
+  if (stop) {
     res.status = RunStatus::Error;
     if (res.message.empty()) res.message = "stopped by a /STOP criterion";
     return false;

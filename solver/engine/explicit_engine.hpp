@@ -24,6 +24,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <memory_resource>
 #include <string>
@@ -138,6 +139,23 @@ struct GroupVote {
   double violation_frozen = 0, violation_dt = 0;
 };
 
+// The element stage's step vote of one rank, then of all: its groups' votes taken in group order as the
+// serial scan takes them (the first group with the smallest step, the first below its /DT/.../STOP minimum,
+// the first /DT/.../CST violation, each with its flat group index; counts summed), and the rank's flags.
+// Ranks' votes combine into the same result in any order: firsts by flat index, counts by integer sums.
+struct StepVote {
+  static constexpr std::int64_t kNoGroup = std::numeric_limits<std::int64_t>::max();
+  static constexpr std::uint32_t kOutputDue = 1;  // an output or a stop signal makes this cycle full
+  GroupVote best{std::numeric_limits<double>::infinity()};
+  std::int64_t best_flat = kNoGroup;
+  GroupVote stop{};
+  std::int64_t stop_flat = kNoGroup;
+  GroupVote violation{};
+  std::int64_t violation_flat = kNoGroup;
+  std::int64_t switched = 0, deleted = 0, ended = 0;
+  std::uint32_t flags = 0;
+};
+
 class ExplicitEngine {
  public:
   ExplicitEngine(const model::Model& model, const model::RunControls& controls, EngineOptions options);
@@ -146,7 +164,9 @@ class ExplicitEngine {
   ExplicitEngine& operator=(const ExplicitEngine&) = delete;
 
   // Runs to the end time. `on_cycle` is called after every cycle with the cycle's report (the caller
-  // decides what to print or write); returning false stops the run (status Error, its message kept).
+  // decides what to print or write); returning false stops the run (status Error, its message kept). On
+  // more than one rank the ranks agree to stop on full cycles only (report.full): a false on a partial cycle
+  // stops the run at the next full one.
   RunResult run(const std::function<bool(const CycleReport&)>& on_cycle);
 
   [[nodiscard]] const NodeState& nodes() const { return nodes_; }
@@ -279,7 +299,10 @@ class ExplicitEngine {
   std::vector<std::uint8_t>
       held_;  // nodes moved by /IMPVEL, rigid bodies or rigid walls (LAGDT stays penalty)
   std::int64_t count_deleted() const;
-  std::vector<GroupVote> group_votes_;  // filled by the element stage, combined by element_time_step
+  std::vector<GroupVote> group_votes_;  // filled by the element stage for this rank's groups
+  StepVote step_vote_;                  // their combination with every rank's (combine_step_votes)
+  bool stop_wanted_ = false;            // on_cycle asked to stop (on more than one rank: acted on when full)
+  void combine_step_votes(double time);
   bool loads_zeroed_ = false;
   // The node passes' chunks [first, last): every node in kNodeChunk blocks on one rank; on more than one,
   // the nodes this rank integrates (EngineDomain::pass_runs), each run cut into such blocks.

@@ -209,14 +209,15 @@ void EngineDomain::write_shared_slots(const ElementGroups& groups, std::int64_t 
   });
 }
 
-void EngineDomain::complete_element_sums(std::span<double> element_sums) {
+std::vector<Buffer> EngineDomain::complete_element_sums(std::span<double> element_sums,
+                                                        const Buffer& record) {
   exchange_shared_sums(shared_, comm_, element_sums);
   // A ghost's sum here holds this rank's entries only (its owner has the whole sum); cleared, as the
   // assembly pass that would clear it does not walk the ghost.
   for (const auto n : partial_ghosts_)
     std::fill_n(element_sums.data() + 6 * static_cast<std::size_t>(n), 6, 0.0);
   const NodeField sums{element_sums.data(), 6};
-  all_gather_runs(replicated_runs_, std::span(&sums, 1));
+  return all_gather_runs(replicated_runs_, std::span(&sums, 1), record);
 }
 
 void EngineDomain::update_ghosts(NodeState& nodes) {
@@ -233,8 +234,9 @@ void EngineDomain::gather_node_state(NodeState& s) {
   all_gather_runs(unreplicated_runs_, fields);
 }
 
-void EngineDomain::all_gather_runs(const std::vector<std::vector<NodeRun>>& runs,
-                                   std::span<const NodeField> fields) {
+std::vector<Buffer> EngineDomain::all_gather_runs(const std::vector<std::vector<NodeRun>>& runs,
+                                                  std::span<const NodeField> fields, const Buffer& header) {
+  // A message: the header's size (8 bytes), the header, then each run's fields.
   const auto doubles_of = [&](const std::vector<NodeRun>& rs) {
     std::size_t d = 0;
     for (const auto& run : rs)
@@ -242,8 +244,13 @@ void EngineDomain::all_gather_runs(const std::vector<std::vector<NodeRun>>& runs
     return d;
   };
   const auto& mine = runs[static_cast<std::size_t>(plan_.rank)];
-  Buffer out(doubles_of(mine) * sizeof(double));
+  const std::uint64_t header_bytes = header.size();
+  Buffer out(sizeof header_bytes + header.size() + doubles_of(mine) * sizeof(double));
   std::byte* p = out.data();
+  std::memcpy(p, &header_bytes, sizeof header_bytes);
+  p += sizeof header_bytes;
+  if (!header.empty()) std::memcpy(p, header.data(), header.size());
+  p += header.size();
   for (const auto& run : mine)
     for (const auto& f : fields) {
       const std::size_t bytes = f.width * static_cast<std::size_t>(run.last - run.first) * sizeof(double);
@@ -251,12 +258,17 @@ void EngineDomain::all_gather_runs(const std::vector<std::vector<NodeRun>>& runs
       p += bytes;
     }
   const auto all = comm_.all_gather(out);
+  std::vector<Buffer> headers(all.size());
   for (std::size_t r = 0; r < all.size(); ++r) {
-    if (static_cast<int>(r) == plan_.rank) continue;
-    if (all[r].size() != doubles_of(runs[r]) * sizeof(double))
+    std::uint64_t theirs = 0;
+    if (all[r].size() >= sizeof theirs) std::memcpy(&theirs, all[r].data(), sizeof theirs);
+    if (all[r].size() != sizeof theirs + theirs + doubles_of(runs[r]) * sizeof(double))
       throw std::runtime_error("rank " + std::to_string(r) +
                                "'s node message does not have the size its nodes need");
-    const std::byte* q = all[r].data();
+    const std::byte* q = all[r].data() + sizeof theirs;
+    headers[r].assign(q, q + theirs);
+    q += theirs;
+    if (static_cast<int>(r) == plan_.rank) continue;
     for (const auto& run : runs[r])
       for (const auto& f : fields) {
         const std::size_t bytes = f.width * static_cast<std::size_t>(run.last - run.first) * sizeof(double);
@@ -264,6 +276,7 @@ void EngineDomain::all_gather_runs(const std::vector<std::vector<NodeRun>>& runs
         q += bytes;
       }
   }
+  return headers;
 }
 
 }  // namespace radx::solver::parallel

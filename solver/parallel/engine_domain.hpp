@@ -83,9 +83,11 @@ class EngineDomain {
   [[nodiscard]] const std::vector<NodeRun>& pass_runs() const { return pass_runs_; }
 
   // After the element stage: the owners sum the shared nodes, every rank receives the replicated nodes' sums
-  // into element_sums [node][6], and the partial sums of ghosts (nodes owned elsewhere) are cleared. Called
-  // by every rank.
-  void complete_element_sums(std::span<double> element_sums);
+  // into element_sums [node][6], and the partial sums of ghosts (nodes owned elsewhere) are cleared. Each
+  // rank's `record` (its step vote) rides in the same message: every rank's is returned, indexed by rank.
+  // Called by every rank.
+  [[nodiscard]] std::vector<Buffer> complete_element_sums(std::span<double> element_sums,
+                                                          const Buffer& record);
 
   // After integration: x, v (and omega) of each ghost from its owner. Called by every rank.
   void update_ghosts(NodeState& nodes);
@@ -166,8 +168,10 @@ class EngineDomain {
     double* data;
     std::size_t width;
   };
-  // Each rank sends its runs[rank] of every field; the others' runs arrive into this rank's fields.
-  void all_gather_runs(const std::vector<std::vector<NodeRun>>& runs, std::span<const NodeField> fields);
+  // Each rank sends `header` and its runs[rank] of every field; the others' runs arrive into this rank's
+  // fields, and every rank's header is returned, indexed by rank.
+  std::vector<Buffer> all_gather_runs(const std::vector<std::vector<NodeRun>>& runs,
+                                      std::span<const NodeField> fields, const Buffer& header = {});
 
   // Every rank's owned nodes, replicated ones (their sums go to every rank) and the rest (gathered for
   // outputs only), as runs.
