@@ -158,8 +158,7 @@ std::vector<int> read_group_ranks(const std::string& path, std::int64_t groups, 
   if (count > 0)
     diags.error(Diag::BadGroupRankFile, Where{path}, About{},
                 std::to_string(count) + (count == 1 ? " element group has" : " element groups have") +
-                    " no rank (" + missing +
-                    (count > 10 ? ", ..." : "") + "): give " + accepted);
+                    " no rank (" + missing + (count > 10 ? ", ..." : "") + "): give " + accepted);
   else if (!diags.has_errors())
     check_every_rank_named(path, rank, ranks, diags);
   return rank;

@@ -100,12 +100,14 @@ TEST_CASE("a run with a feature not yet split over ranks is refused by the engin
   for (const auto& s : said) CHECK(s.find("/SECT") != std::string::npos);
 }
 
-TEST_CASE("given group ranks replace the partition on every rank, and ranks that do not fit are refused by all",
-          "[parallel][engine]") {
+TEST_CASE(
+    "given group ranks replace the partition on every rank, and ranks that do not fit are refused by all",
+    "[parallel][engine]") {
   radx::test::TempDir dir;
   auto impact = radx::test::impact_benchmark_model(dir, 8);
   radx::contact::prepare_type7_interfaces(impact);
-  const radx::solver::ExplicitEngine engine(impact, radx::model::RunControls{}, radx::solver::EngineOptions(1));
+  const radx::solver::ExplicitEngine engine(impact, radx::model::RunControls{},
+                                            radx::solver::EngineOptions(1));
   const auto& groups = engine.groups();
   const std::int64_t G = groups.count();
   REQUIRE(G >= 3);
