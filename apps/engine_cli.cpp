@@ -30,7 +30,7 @@ class NullStream : public std::ostream {
 void usage(std::ostream& os, const std::string& program) {
   const std::string indent(program.size() + 8, ' ');
   os << "usage: " << program << " [NAME_0001.rad] [--out DIR] [--model FILE] [--threads N] [--no-plot]\n"
-     << indent << "[--stop-if-runaway]\n"
+     << indent << "[--stop-if-runaway] [--partition FILE]\n"
      << "       " << program << " -i NAME_0001.rad ...\n"
      << "       " << program << " --decompose P [--partition FILE] NAME_0001.rad [--out DIR] [--model FILE]\n"
      << "\n"
@@ -57,8 +57,12 @@ void usage(std::ostream& os, const std::string& program) {
         "                 and the imbalance, and write NAME_domain.hdf (cell array domain for ParaView) and\n"
         "                 NAME_partition.txt (the group ranks); an earlier run's outputs stay as they are\n"
         "  --partition FILE\n"
-        "                 with --decompose: the group ranks from FILE (lines \"GROUP RANK\", the format of\n"
-        "                 NAME_partition.txt) instead of METIS, to cut a rigid body or a tie on purpose\n"
+        "                 the group ranks from FILE (lines \"GROUP RANK\", the format of "
+        "NAME_partition.txt)\n"
+        "                 instead of METIS, to cut a rigid body or a tie on purpose: for a run on P ranks\n"
+        "                 (mpirun -np P radx-engine-mpi) or with --decompose P, FILE gives every element\n"
+        "                 group once and every rank 0 .. P-1 a group; a bad file is refused before anything\n"
+        "                 is written (RX807, naming the file and line)\n"
         "  --help, --version (or -version)\n"
         "\n"
         "SIGTERM or SIGINT stops the run after the cycle under way, with a last state, the summary (status\n"
@@ -147,10 +151,6 @@ int engine_main(int argc, char** argv, const char* program_name, solver::paralle
   if (opt.engine_deck.empty()) {
     err << program << ": give the engine deck (NAME_0001.rad)\n";
     usage(err, program);
-    return kExitUsage;
-  }
-  if (!opt.partition_file.empty() && opt.decompose_ranks == 0) {
-    err << program << ": --partition goes with --decompose P\n";
     return kExitUsage;
   }
   opt.comm = &comm;

@@ -89,6 +89,27 @@ void print_table(const solver::parallel::PartitionSummary& s, std::int64_t kept,
       << "; TYPE2 ties cut: " << s.ties_cut << '\n';
 }
 
+// A file for P ranks names each of them: one that leaves a rank without a group was written for fewer ranks
+// (or edited by mistake), and would leave that rank idle.
+void check_every_rank_named(const std::string& path, const std::vector<int>& rank, int ranks,
+                            Diagnostics& diags) {
+  std::vector<char> named(static_cast<std::size_t>(ranks), 0);
+  for (const int r : rank) named[static_cast<std::size_t>(r)] = 1;
+  std::string idle;
+  int highest = -1;
+  for (int r = 0; r < ranks; ++r) {
+    if (named[static_cast<std::size_t>(r)] == 0)
+      idle += (idle.empty() ? "" : ", ") + std::to_string(r);
+    else
+      highest = r;
+  }
+  if (idle.empty()) return;
+  diags.error(Diag::BadGroupRankFile, Where{path}, About{},
+              "rank(s) " + idle + " of the " + std::to_string(ranks) +
+                  " ranks have no group (the file names ranks up to " + std::to_string(highest) +
+                  "): a group-rank file for P ranks gives each rank 0 .. P-1 at least one group");
+}
+
 }  // namespace
 
 std::vector<int> read_group_ranks(const std::string& path, std::int64_t groups, int ranks,
@@ -115,6 +136,9 @@ std::vector<int> read_group_ranks(const std::string& path, std::int64_t groups, 
       diags.error(Diag::BadGroupRankFile, Where{path, number}, About{},
                   "group " + std::to_string(v[0]) + " rank " + std::to_string(v[1]) +
                       " is out of range: give " + accepted);
+      // A group given a rank out of range is given, wrongly: not reported again as missing.
+      if (v[0] >= 0 && v[0] < groups && line_of[static_cast<std::size_t>(v[0])] == 0)
+        line_of[static_cast<std::size_t>(v[0])] = number;
       continue;
     }
     const auto g = static_cast<std::size_t>(v[0]);
@@ -133,8 +157,10 @@ std::vector<int> read_group_ranks(const std::string& path, std::int64_t groups, 
     if (line_of[g] == 0 && count++ < 10) missing += (missing.empty() ? "" : ", ") + std::to_string(g);
   if (count > 0)
     diags.error(Diag::BadGroupRankFile, Where{path}, About{},
-                std::to_string(count) + " element groups have no rank (" + missing +
-                    (count > 10 ? ", ..." : "") + "): give " + accepted);
+                std::to_string(count) + (count == 1 ? " element group has" : " element groups have") +
+                    " no rank (" + missing + (count > 10 ? ", ..." : "") + "): give " + accepted);
+  else if (!diags.has_errors())
+    check_every_rank_named(path, rank, ranks, diags);
   return rank;
 }
 

@@ -18,8 +18,9 @@
 namespace radx::app {
 
 // The group-rank file: a line "GROUP RANK" for every flat element group (0 .. groups - 1, each once, in any
-// order), RANK in 0 .. ranks - 1; text from '#' to the end of a line and blank lines are skipped. Every
-// problem is added to `diags` (RX807, with the file and line); the ranks are valid only without errors.
+// order), RANK in 0 .. ranks - 1, every rank given at least one group; text from '#' to the end of a line
+// and blank lines are skipped. Every problem is added to `diags` (RX807, with the file and line); the ranks
+// are valid only without errors.
 std::vector<int> read_group_ranks(const std::string& path, std::int64_t groups, int ranks,
                                   Diagnostics& diags);
 

@@ -702,30 +702,78 @@ void remove_earlier_engine_outputs(const std::string& out_dir, const std::string
 
 namespace {
 
-// radx-engine --decompose P: the deck and the model read and checked as for a run, the engine's element
-// groups built, and the decomposition printed and written (apps/engine_decompose.hpp). Nothing runs, and
-// nothing an earlier run left in the output folder is touched (no lock either: only NAME_domain.hdf and
-// NAME_partition.txt are written, each whole or not at all).
-int decompose_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
+// The model of a run and the engine's element groups, read and checked as for a run, without running: the
+// engine has one thread, and its groups are the ones a run builds. The model outlives the engine, which
+// refers to it.
+struct GroupedModel {
+  model::Model model;
+  std::unique_ptr<solver::ExplicitEngine> engine;
+};
+
+// False, with the problems printed on `err`, when the deck, the model or the engine's set-up fails.
+bool read_grouped_model(const EngineOptions& opt, GroupedModel& g, std::ostream& err) {
   const std::string root = model::run_output_root(opt.engine_deck);
   Diagnostics diags;
   EngineDeck deck;
   model::RunControls controls;
-  if (!read_engine_deck_checked(opt.engine_deck, diags, deck, controls, err)) return 1;
+  if (!read_engine_deck_checked(opt.engine_deck, diags, deck, controls, err)) return false;
   const std::string model_path =
       opt.model_file.empty() ? (fs::path(opt.out_dir) / (root + "_0000.hdf")).string() : opt.model_file;
-  model::Model model;
-  if (!read_checked_model(model_path, opt.engine_deck, root, controls, model, err)) return 1;
-  std::unique_ptr<solver::ExplicitEngine> engine;
+  if (!read_checked_model(model_path, opt.engine_deck, root, controls, g.model, err)) return false;
   try {
-    // One thread: only the groups are wanted.
-    engine = std::make_unique<solver::ExplicitEngine>(model, controls, solver::EngineOptions(1));
+    g.engine = std::make_unique<solver::ExplicitEngine>(g.model, controls, solver::EngineOptions(1));
   } catch (const std::exception& e) {
     err << opt.engine_deck << ": error: " << e.what() << '\n';
-    return 1;
+    return false;
   }
-  return decompose_model(model, engine->groups(), opt.decompose_ranks, opt.partition_file, opt.out_dir, root,
-                         out, err);
+  return true;
+}
+
+// radx-engine --decompose P: the engine's element groups built, and the decomposition printed and written
+// (apps/engine_decompose.hpp). Nothing runs, and nothing an earlier run left in the output folder is touched
+// (no lock either: only NAME_domain.hdf and NAME_partition.txt are written, each whole or not at all).
+int decompose_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
+  GroupedModel g;
+  if (!read_grouped_model(opt, g, err)) return 1;
+  return decompose_model(g.model, g.engine->groups(), opt.decompose_ranks, opt.partition_file, opt.out_dir,
+                         model::run_output_root(opt.engine_deck), out, err);
+}
+
+// A run with --partition FILE: the group ranks from FILE (apps/engine_decompose.hpp) instead of METIS, for
+// the comm's P ranks. Rank 0 reads and checks the file before the output folder is claimed, then broadcasts
+// its verdict and the ranks, so that a bad file ends every rank with exit 1, said once (by rank 0) and with
+// nothing written. A deck or model that does not read is left to the run, which reports it. False when the
+// run must not start; else `group_ranks` holds the file's ranks on every rank (empty when left to the run).
+bool read_given_group_ranks(const EngineOptions& opt, std::ostream& err,
+                            std::vector<std::int32_t>& group_ranks) {
+  const int rank = opt.comm != nullptr ? opt.comm->rank() : 0;
+  const int ranks = opt.comm != nullptr ? opt.comm->size() : 1;
+  solver::parallel::Buffer message(1, std::byte{0});  // 0 and the ranks, or 1: the file is refused
+  if (rank == 0) {
+    std::ostringstream quiet;
+    GroupedModel g;
+    if (read_grouped_model(opt, g, quiet)) {
+      Diagnostics diags;
+      const auto file_ranks = read_group_ranks(opt.partition_file, g.engine->groups().count(), ranks, diags);
+      if (diags.has_errors()) {
+        diags.print(err);
+        err << (ranks > 1 ? "radx-engine-mpi: " : "radx-engine: ") << diags.error_count()
+            << " error(s) in the group-rank file " << opt.partition_file << " (--partition, for " << ranks
+            << (ranks > 1 ? " ranks: mpirun -np " + std::to_string(ranks) : " rank")
+            << "); nothing was run\n";
+        message[0] = std::byte{1};
+      } else {
+        const std::vector<std::int32_t> given(file_ranks.begin(), file_ranks.end());
+        const auto* bytes = reinterpret_cast<const std::byte*>(given.data());
+        message.insert(message.end(), bytes, bytes + given.size() * sizeof(std::int32_t));
+      }
+    }
+  }
+  if (opt.comm != nullptr) opt.comm->broadcast(message, 0);
+  if (message[0] != std::byte{0}) return false;
+  group_ranks.resize((message.size() - 1) / sizeof(std::int32_t));
+  if (!group_ranks.empty()) std::memcpy(group_ranks.data(), message.data() + 1, message.size() - 1);
+  return true;
 }
 
 // `loop_ended`, when given, is set once the engine's cycle loop has ended: on more than one rank every rank
@@ -770,7 +818,14 @@ int run_engine_on_other_rank(const EngineOptions& opt, bool* loop_ended) {
 
 }  // namespace
 
-int run_engine(const EngineOptions& opt, std::ostream& out, std::ostream& err) {
+int run_engine(const EngineOptions& options, std::ostream& out, std::ostream& err) {
+  EngineOptions opt = options;
+  if (!opt.partition_file.empty() && opt.decompose_ranks == 0 &&
+      !read_given_group_ranks(opt, err, opt.group_ranks))
+    return 1;
+  if (!opt.group_ranks.empty() && opt.comm != nullptr && opt.comm->size() > 1)
+    out << "radx-engine-mpi: the element groups go to the ranks " << opt.partition_file
+        << " gives (--partition), not to METIS's\n";
   if (opt.comm == nullptr || opt.comm->size() == 1) return run_engine_on_this_rank(opt, out, err);
   if (refuse_distributed_run(opt, *opt.comm, err)) return 1;
   bool loop_ended = false;
@@ -837,6 +892,7 @@ int run_engine_on_this_rank(const EngineOptions& opt, std::ostream& out, std::os
   std::unique_ptr<EngineOutputs> outputs;
   solver::EngineOptions engine_options(opt.threads, std::max(1, controls.print_every));
   engine_options.comm = opt.comm;
+  engine_options.group_ranks = opt.group_ranks;
   // A stop signal makes the next cycle a full report (energies summed), so the run ends on a cycle whose
   // state, time-history row and summary agree.
   engine_options.output_due = [&outputs](double t) {

@@ -3,8 +3,10 @@
 // NAME_summary.json.
 #pragma once
 
+#include <cstdint>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace radx::solver::parallel {
 class Comm;
@@ -29,7 +31,10 @@ struct EngineOptions {
   // --decompose P (P > 0): do not run; print and write the decomposition over P ranks
   // (apps/engine_decompose.hpp), the group ranks from `partition_file` when given (--partition FILE).
   int decompose_ranks = 0;
+  // --partition FILE: with --decompose, the decomposition shown; else the run's group ranks instead of METIS,
+  // read into group_ranks by run_engine (on every rank) before anything is written.
   std::string partition_file;
+  std::vector<std::int32_t> group_ranks;
 };
 
 // 0 normal termination, 1 input error or error termination (also every rank of a run on more than one rank).

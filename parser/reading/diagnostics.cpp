@@ -122,8 +122,7 @@ const std::vector<CodeInfo>& code_table() {
        "rigid body's groups are joined)"},
       {Diag::BadGroupRankFile,
        "a group-rank file (radx-engine --partition) line that is not \"GROUP RANK\" with both in range, a "
-       "group "
-       "given twice, or a group given no rank"},
+       "group given twice, a group given no rank, or a rank given no group (a file for another rank count)"},
       {Diag::ModelFileBadReference,
        "a model-file entry the engine cannot use: an index out of range, arrays of different lengths, a "
        "repeated "

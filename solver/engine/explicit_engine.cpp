@@ -221,9 +221,9 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
       throw std::runtime_error("the engine does not run these on more than one rank yet: " + names);
     }
     auto& comm = *options_.comm;
-    domain_ =
-        std::make_unique<parallel::EngineDomain>(groups_, parallel::engine_group_ranks(model_, groups_, comm),
-                                                 parallel::replicated_nodes(model_), comm);
+    domain_ = std::make_unique<parallel::EngineDomain>(
+        groups_, parallel::engine_group_ranks(model_, groups_, comm, options_.group_ranks),
+        parallel::replicated_nodes(model_), comm);
   }
   build_node_pass_chunks();
   group_votes_.resize(static_cast<std::size_t>(group_count()));

@@ -110,6 +110,9 @@ struct EngineOptions {
   // The ranks the run is split over (solver/parallel/engine_domain.hpp); null or one rank: the whole model
   // here. Every rank builds its engine from the same model and controls.
   parallel::Comm* comm = nullptr;
+  // The rank of each flat element group, given (radx-engine-mpi --partition FILE) instead of the METIS
+  // partition; empty: METIS. Rank 0's are used and broadcast (parallel::engine_group_ranks).
+  std::vector<std::int32_t> group_ranks;
 };
 
 enum class RunStatus : std::uint8_t { Normal, Error };

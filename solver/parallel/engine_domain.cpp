@@ -134,7 +134,7 @@ std::vector<std::uint8_t> replicated_nodes(const model::Model& m) {
 }
 
 std::vector<std::int32_t> engine_group_ranks(const model::Model& model, const ElementGroups& groups,
-                                             Comm& comm) {
+                                             Comm& comm, std::span<const std::int32_t> given) {
   const int ranks = comm.size();
   std::vector<std::int32_t> rank(static_cast<std::size_t>(groups.count()));
   const std::size_t bytes = rank.size() * sizeof(std::int32_t);
@@ -144,8 +144,16 @@ std::vector<std::int32_t> engine_group_ranks(const model::Model& model, const El
   if (comm.rank() == 0) {
     std::string failure;
     try {
-      const auto p = partition_groups(model, groups, ranks);
-      std::copy(p.group_rank.begin(), p.group_rank.end(), rank.begin());
+      if (!given.empty()) {
+        // Checked by the caller against the file it came from; a mismatch here is a caller's bug, said
+        // by every rank rather than run on a partition that does not fit.
+        if (const std::string why = check_group_ranks(groups.count(), given, ranks); !why.empty())
+          throw std::runtime_error("the given group ranks do not fit: " + why);
+        std::copy(given.begin(), given.end(), rank.begin());
+      } else {
+        const auto p = partition_groups(model, groups, ranks);
+        std::copy(p.group_rank.begin(), p.group_rank.end(), rank.begin());
+      }
     } catch (const std::invalid_argument&) {  // fewer groups than ranks: blocks, some ranks without groups
       rank = block_group_ranks(groups.count(), ranks);
     } catch (const std::exception& e) {

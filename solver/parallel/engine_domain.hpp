@@ -41,11 +41,13 @@ namespace radx::solver::parallel {
 // The rank of each group for `ranks` ranks: contiguous blocks of the flat order, floor(g P / G).
 [[nodiscard]] std::vector<std::int32_t> block_group_ranks(std::int64_t groups, int ranks);
 
-// The rank of each group for the engine on comm's ranks: the METIS partition, or blocks when the model has
-// fewer groups than ranks; computed on rank 0 and broadcast, so every rank holds the same. Called by every
-// rank.
+// The rank of each group for the engine on comm's ranks: `given` when not empty (one rank in 0 .. P-1 per
+// group, as radx-engine-mpi --partition FILE reads them; rank 0's are used), else the METIS partition, or
+// blocks when the model has fewer groups than ranks; decided on rank 0 and broadcast, so every rank holds the
+// same. Called by every rank; throws on every rank when rank 0's `given` does not fit the groups and ranks.
 [[nodiscard]] std::vector<std::int32_t> engine_group_ranks(const model::Model& model,
-                                                           const ElementGroups& groups, Comm& comm);
+                                                           const ElementGroups& groups, Comm& comm,
+                                                           std::span<const std::int32_t> given = {});
 
 // The nodes that a stage run whole on every rank reads or writes, 1 each: nodes of loads (concentrated,
 // pressure, gravity), imposed velocities and displacements, delayed initial velocities, rigid walls (their

@@ -10,9 +10,9 @@ usage: check_decompose.py --starter EXE --engine EXE --deck NAME_0000.rad --out 
     and the file's node_owner equal to that;
   * ParaView (pvpython, under xvfb-run -a when there is one) opens the file with its VTKHDF reader and sees the
     cell array `domain` with range [0, 2];
-  * --partition with the written NAME_partition.txt edited (every group on rank 0 but the last, on rank 2)
-    gives that assignment; a damaged file is refused with RX807 and a line number; P above the group count is
-    refused with RX806; neither leaves a file behind.
+  * --partition with the written NAME_partition.txt edited (every group on rank 0 but the last two, on ranks
+    1 and 2) gives that assignment; a damaged file is refused with RX807 and a line number, and so is one that
+    leaves a rank without a group; P above the group count is refused with RX806; none leaves a file behind.
 Exit 0 on success, 1 with FAIL lines otherwise.
 """
 import argparse
@@ -160,15 +160,15 @@ def main():
     edited = os.path.join(a.out, "edited.txt")
     with open(edited, "w") as f:
         for g in range(groups):
-            f.write(f"{g} {2 if g == groups - 1 else 0}\n")
+            f.write(f"{g} {max(0, g - (groups - 3))}\n")
     code, out, err = run([a.engine, "--decompose", str(P), "--partition", edited, engine_deck, "--out", a.out])
     check(code == 0, f"--partition exit {code}: {err[-2000:]}")
     with h5py.File(domain_path, "r") as f:
         domain = f["VTKHDF/CellData/domain"][()]
         group = f["VTKHDF/CellData/group"][()]
-    check(np.array_equal(domain, np.where(group == groups - 1, 2, 0)), "--partition's ranks are not the file's")
+    check(np.array_equal(domain, np.maximum(0, group - (groups - 3))), "--partition's ranks are not the file's")
     rows, _ = parse_table(out)
-    check(rows.get(1, {}).get("groups") == 0, "rank 1 should have no group under the edited ranks")
+    check(rows.get(1, {}).get("groups") == 1, "rank 1 should have one group under the edited ranks")
 
     # Refusals leave nothing behind.
     os.remove(domain_path)
@@ -178,6 +178,11 @@ def main():
     code, out, err = run([a.engine, "--decompose", str(P), "--partition", edited, engine_deck, "--out", a.out])
     check(code == 1 and "RX807" in err and "edited.txt:2:" in err and "edited.txt:3:" in err,
           f"a damaged group-rank file: exit {code}, {err[-2000:]}")
+    with open(edited, "w") as f:
+        f.write("".join(f"{g} {2 if g == groups - 1 else 0}\n" for g in range(groups)))
+    code, out, err = run([a.engine, "--decompose", str(P), "--partition", edited, engine_deck, "--out", a.out])
+    check(code == 1 and "RX807" in err and "rank(s) 1 of the 3 ranks have no group" in err,
+          f"a group-rank file leaving rank 1 idle: exit {code}, {err[-2000:]}")
     code, out, err = run([a.engine, "--decompose", str(groups + 1), engine_deck, "--out", a.out])
     check(code == 1 and "RX806" in err and f"give at most {groups} ranks" in err,
           f"--decompose {groups + 1} (more ranks than groups): exit {code}, {err[-2000:]}")

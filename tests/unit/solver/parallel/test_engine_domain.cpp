@@ -177,3 +177,41 @@ TEST_CASE("the nodes kept whole on every rank are those of the stages every rank
   m.gravities.back().group = model::kNone;  // gravity on every node: every node kept whole
   CHECK(par::replicated_nodes(m) == std::vector<std::uint8_t>(m.nodes.id.size(), 1));
 }
+
+TEST_CASE(
+    "given group ranks replace the partition on every rank, and ranks that do not fit are refused by all",
+    "[parallel][engine]") {
+  radx::test::TempDir dir;
+  auto impact = radx::test::impact_benchmark_model(dir, 8);
+  radx::contact::prepare_type7_interfaces(impact);
+  const radx::solver::ExplicitEngine engine(impact, radx::model::RunControls{},
+                                            radx::solver::EngineOptions(1));
+  const auto& groups = engine.groups();
+  const std::int64_t G = groups.count();
+  REQUIRE(G >= 3);
+  // Not what METIS or the blocks would give: every group on rank 2 but the first two, on ranks 1 and 0.
+  std::vector<std::int32_t> given(static_cast<std::size_t>(G), 2);
+  given[0] = 1;
+  given[1] = 0;
+  constexpr int P = 3;
+  std::vector<std::vector<std::int32_t>> got(P);
+  radx::test::run_ranks(P, [&](par::Comm& comm) {
+    // Only rank 0's are read: the others pass none and still end with rank 0's.
+    const std::vector<std::int32_t> mine = comm.rank() == 0 ? given : std::vector<std::int32_t>{};
+    got[static_cast<std::size_t>(comm.rank())] = par::engine_group_ranks(impact, groups, comm, mine);
+  });
+  for (int r = 0; r < P; ++r) CHECK(got[static_cast<std::size_t>(r)] == given);
+
+  // One rank too many for P = 2, or one group short: every rank throws rank 0's reason instead of running.
+  for (const auto& bad : {given, std::vector<std::int32_t>(given.begin(), given.end() - 1)}) {
+    std::vector<std::string> said(2);
+    radx::test::run_ranks(2, [&](par::Comm& comm) {
+      try {
+        (void)par::engine_group_ranks(impact, groups, comm, bad);
+      } catch (const std::exception& e) {
+        said[static_cast<std::size_t>(comm.rank())] = e.what();
+      }
+    });
+    for (const auto& s : said) CHECK(s.find("the given group ranks do not fit") != std::string::npos);
+  }
+}
