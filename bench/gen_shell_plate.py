@@ -31,6 +31,9 @@ Model (units Mg, mm, s): a 1000 x 1000 mm steel plate, 1 mm thick, meshed with N
   PLATE<N>I_ADDMASS. --contact none writes the same model without the interfaces (and their time history):
   the block's and the plate's elements all run, the block passes through the plate unhindered (root name
   PLATE<N>I_NOCONTACT; the MPI benchmark bench/mpi_scaling.sh, whose engine does not split contact).
+--th-records K and --anim-states K set the time history's interval (/TFILE, Tstop / K, default 100) and the
+states' (/ANIM/DT, Tstop / K, default 2); 0 leaves the card out (the engine then writes the time history and
+the states at t = 0 and at the end only).
 Tstop is set so that about 1500 cycles run at the shell time step 0.9 h / sqrt(E/rho) (h = 1000/N mm);
 contact can lower the step in the --impact variant. With Igap 0 the computed gaps are min(t, lmin/2) = 0.5 mm
 for interface 1 when h = 1 mm (N = 1000) and l/10 = 1 mm for interface 2, so nothing penetrates at t = 0.
@@ -161,7 +164,7 @@ def starter(n, impact, root, lagdt=False, ishell=1, isolid=1, block_nx=BLOCK_NX,
     return d.lines
 
 
-def engine(n, root, inter_tmin=0.0, tstop=None):
+def engine(n, root, inter_tmin=0.0, tstop=None, th_records=100, anim_states=2):
     h = L_PLATE / n
     dt_shell = 0.9 * h / math.sqrt(E_STEEL / RHO_STEEL)
     if tstop is None:
@@ -171,9 +174,11 @@ def engine(n, root, inter_tmin=0.0, tstop=None):
     e.comment("Tstop = %d cycles x shell time step 0.9 h / sqrt(E/rho) = %d x %.4g s" % (CYCLES, CYCLES, dt_shell))
     e.ruler()
     e.card("/RUN", "%s/1" % root, Tstop=tstop, sig=SIG)
-    e.card("/TFILE", dt_his=sig3(tstop / 100), sig=SIG)
-    e.card("/ANIM/DT", Tstart=0.0, dT=sig3(tstop / 2), sig=SIG)
-    e.raw("/ANIM/ELEM/VONM", "/ANIM/ELEM/EPSP", "/ANIM/VECT/VEL")
+    if th_records > 0:
+        e.card("/TFILE", dt_his=sig3(tstop / th_records), sig=SIG)
+    if anim_states > 0:
+        e.card("/ANIM/DT", Tstart=0.0, dT=sig3(tstop / anim_states), sig=SIG)
+        e.raw("/ANIM/ELEM/VONM", "/ANIM/ELEM/EPSP", "/ANIM/VECT/VEL")
     e.card("/DT", Tscale=0.9, Tmin=0.0)
     if inter_tmin:
         e.raw("#  /DT/INTER/CST: LAGDT pairs below Tmin switch to Lagrange multipliers; TYPE7 nodes get added mass")
@@ -198,6 +203,10 @@ def main(argv):
                         "surface (default 1); down to -0.5 (the mid-surface, which TYPE7 sees with its gap)")
     p.add_argument("--tstop", type=float, default=None,
                    help="end time in s (default: 1500 cycles of the plate's shell step)")
+    p.add_argument("--th-records", type=int, default=100,
+                   help="time history records over the run (/TFILE dt_his = Tstop / K; default 100; 0: no /TFILE)")
+    p.add_argument("--anim-states", type=int, default=2,
+                   help="animation states after t = 0 (/ANIM/DT dT = Tstop / K; default 2; 0: no /ANIM)")
     p.add_argument("--contact", choices=("type7", "lagdt", "addmass", "none"), default="type7",
                    help="with --impact: plain TYPE7 (default); lagdt: /INTER/LAGDT/TYPE7 with /DT/INTER/CST Tmin; "
                         "addmass: plain TYPE7 with /DT/INTER/CST Tmin (added mass); none: no interface (the "
@@ -237,7 +246,10 @@ def main(argv):
     rc.write(s_path, starter(args.n, args.impact, root, lagdt=args.contact == "lagdt", ishell=args.ishell,
                              isolid=args.isolid, block_nx=args.block, brick=args.brick_size,
                              block_z0=THICK / 2 + args.gap, bumult=args.bumult, contact=args.contact != "none"))
-    lines, tstop = engine(args.n, root, args.tmin if args.contact in ("lagdt", "addmass") else 0.0, args.tstop)
+    if args.th_records < 0 or args.anim_states < 0:
+        p.error("--th-records and --anim-states must be 0 or more")
+    lines, tstop = engine(args.n, root, args.tmin if args.contact in ("lagdt", "addmass") else 0.0, args.tstop,
+                          args.th_records, args.anim_states)
     rc.write(e_path, lines)
     print("wrote %s and %s: %d shells, %d plate nodes%s, Tstop %g s (%.1f s)" %
           (s_path, e_path, args.n * args.n, (args.n + 1) ** 2,

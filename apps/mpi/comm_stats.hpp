@@ -1,7 +1,7 @@
 // What one rank's communicator did over a run, per collective kind: calls, messages and bytes to and from
-// other ranks, and the seconds spent inside MPI (the transfer and the wait for the other ranks, which MPI does
-// not tell apart). radx-engine-mpi --comm-stats prints them for every rank at the end, beside the rank's wall
-// time, so the share of the run spent communicating is their ratio (bench/mpi_scaling.sh).
+// other ranks, and the seconds spent inside MPI (the transfer and the wait for the other ranks, which MPI
+// does not tell apart). radx-engine-mpi --comm-stats prints them for every rank at the end, beside the rank's
+// wall time, so the share of the run spent communicating is their ratio (bench/mpi_scaling.sh).
 //
 // Bytes are the caller's data as it leaves or reaches this rank, whatever algorithm MPI uses inside a
 // collective (a tree or a ring forwards more): for a payload of n bytes per rank,
