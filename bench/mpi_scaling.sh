@@ -131,6 +131,7 @@ run() {
       ;;
     2x1.*)
       # shellcheck disable=SC2046  # the flags are words
+      # shellcheck disable=SC2016  # $0, $OMPI_COMM_WORLD_RANK and $@ are the inner shell's, one per rank
       "$mpirun" $(mpi_flags "${config#2x1.}") -np 2 sh -c 'exec /usr/bin/time -v -o "$0/time.$OMPI_COMM_WORLD_RANK" "$@"' \
         "$dir" "$bin/radx-engine-mpi" "$deck" --model "$model" --out "$dir" --threads 1 --no-plot --comm-stats \
         > "$dir/run.out" 2>&1 ||
@@ -165,28 +166,22 @@ done
 median() { printf '%s\n' "$@" | sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 echo
 echo "medians over $rounds rounds (wall s of the whole run; the listing's us/element-cycle, without start-up):"
+declare -A med_wall med_cost
 best=""
-best_wall=""
 for c in "${configs[@]}"; do
-  # shellcheck disable=SC2086  # the walls are words
-  m=$(median ${walls[$c]})
-  # shellcheck disable=SC2086
-  echo "  $c: $m s, $(median ${costs[$c]}) us/element-cycle"
-  # shellcheck disable=SC2086
-  declare "cost_${c//./_}=$(median ${costs[$c]})"
-  declare "median_${c//./_}=$m"
-  if [[ $c == 2x1.* ]] && { [[ -z "$best" ]] || awk -v a="$m" -v b="$best_wall" 'BEGIN {exit !(a < b)}'; }; then
-    best=$c best_wall=$m
+  # shellcheck disable=SC2086  # the walls and costs are words
+  med_wall[$c]=$(median ${walls[$c]}) med_cost[$c]=$(median ${costs[$c]})
+  echo "  $c: ${med_wall[$c]} s, ${med_cost[$c]} us/element-cycle"
+  if [[ $c == 2x1.* ]] && { [[ -z "$best" ]] || awk -v a="${med_wall[$c]}" -v b="${med_wall[$best]}" 'BEGIN {exit !(a < b)}'; }; then
+    best=$c
   fi
 done
-m11=$median_1x1 m12=$median_1x2
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.3f", a / b}'; }
 echo "fastest 2-rank variant: ${best#2x1.} ($(mpi_flags "${best#2x1.}"))"
-best_cost_var="cost_${best//./_}"
-best_cost=${!best_cost_var}
-echo "speed-up 2x1 over 1x1: $(awk -v a="$m11" -v b="$best_wall" 'BEGIN {printf "%.3f", a / b}') (target >= 1.6);" \
-  "by the listing's cost $(awk -v a="$cost_1x1" -v b="$best_cost" 'BEGIN {printf "%.3f", a / b}')"
-echo "2x1 over 1x2: $(awk -v a="$m12" -v b="$best_wall" 'BEGIN {printf "%.3f", a / b}') (target: 0.9 to 1.1, within 10 %);" \
-  "by the listing's cost $(awk -v a="$cost_1x2" -v b="$best_cost" 'BEGIN {printf "%.3f", a / b}')"
+echo "speed-up 2x1 over 1x1: $(ratio "${med_wall[1x1]}" "${med_wall[$best]}") (target >= 1.6);" \
+  "by the listing's cost $(ratio "${med_cost[1x1]}" "${med_cost[$best]}")"
+echo "2x1 over 1x2: $(ratio "${med_wall[1x2]}" "${med_wall[$best]}") (target: 0.9 to 1.1, within 10 %);" \
+  "by the listing's cost $(ratio "${med_cost[1x2]}" "${med_cost[$best]}")"
 echo "element imbalance of 2 ranks: $element_imbalance (elements $elements_per_rank; target <= 1.05); METIS cost imbalance $cost_imbalance"
 last="$work/$best.$rounds"
 echo "MPI share per rank, fastest variant's last round (target <= 5 %):"
@@ -196,8 +191,11 @@ sed -n '/^| rank | collective/,/^$/p' "$last/run.out" | sed 's/^/  /'
 
 # Identity: every 2-rank run against the first 1x1 run, on the time history and the last state.
 reference="$work/1x1.1"
-last_state=$(ls "$reference" | grep -E "^${root}_?[0-9]*\.hdf$|^${root}A[0-9]+\.hdf$" | grep -v '_0000\.hdf$' | sort | tail -1 || true)
-[[ -n "$last_state" ]] || last_state=$(cd "$reference" && ls -- *.hdf | grep -v '_0000\.hdf$' | sort | tail -1)
+last_state=""
+for f in "$reference/${root}"_[0-9][0-9][0-9][0-9][0-9][0-9].hdf; do  # the states, in order
+  [[ -f "$f" ]] && last_state=$(basename "$f")
+done
+[[ -n "$last_state" ]] || { echo "mpi_scaling: no animation state in $reference" >&2; exit 1; }
 failed=0
 checked=0
 for c in "${configs[@]}"; do

@@ -32,9 +32,11 @@ reduction does not). Parallel efficiency = t_c / (imbalance x t_c + t_comm). Com
 with compute (the engine waits in each collective), so this is the estimate's upper bound on its cost.
 
 The engine on main replicates the node passes (every rank integrates every node) and all-gathers every
-node's sums each cycle; the "as measured" rows model what it sends today. The "design" rows replace that
-all-gather by the domain exchange (owned nodes only, ghosts updated; docs/parallel-domain.md), keeping the
-all-gather of the group votes (--vote-bytes a group, default 72: GroupVote of the engine).
+node's sums each cycle; the "as measured" rows model what it sends today (with the compute split as
+designed: today's replicated node passes would add their O(all nodes) time on every rank). The "design"
+rows replace that all-gather by the domain exchange (owned nodes only, ghosts updated;
+docs/parallel-domain.md), keeping the all-gather of the group votes (--vote-bytes a group, default 72: the
+engine's GroupVote).
 
 Usage: bench/mpi_weak_scaling.py [--n 300] [--cycles 20 40] [--ranks 16 64] [--elements-per-rank 100000]
                                  [--alpha 1.5e-6] [--gbits 100] [--no-domain-traffic] [--keep DIR]
