@@ -219,7 +219,7 @@ def main():
                   % (P, n, el, el // P, b, m))
 
     # Each kind's per-call contribution (bytes sent a call) as a function of the elements per rank.
-    kinds = sorted({k for s in measured.values() for k in s})
+    kinds = sorted({k for s in measured.values() for k, v in s.items() if v[0] > 0})
 
     def contribution(k):
         pts = []
