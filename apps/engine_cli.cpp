@@ -1,9 +1,11 @@
 #include "apps/engine_cli.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <ostream>
 #include <streambuf>
 #include <string>
+#include <vector>
 
 #include "apps/build_info.hpp"
 #include "apps/cli_common.hpp"
@@ -27,7 +29,7 @@ class NullStream : public std::ostream {
   Discard buffer_;
 };
 
-void usage(std::ostream& os, const std::string& program) {
+void usage(std::ostream& os, const std::string& program, std::span<const ExtraFlag> extra_flags) {
   const std::string indent(program.size() + 8, ' ');
   os << "usage: " << program << " [NAME_0001.rad] [--out DIR] [--model FILE] [--threads N] [--no-plot]\n"
      << indent << "[--stop-if-runaway] [--partition FILE]\n"
@@ -62,8 +64,9 @@ void usage(std::ostream& os, const std::string& program) {
         "                 instead of METIS, to cut a rigid body or a tie on purpose: for a run on P ranks\n"
         "                 (mpirun -np P radx-engine-mpi) or with --decompose P, FILE gives every element\n"
         "                 group once and every rank 0 .. P-1 a group; a bad file is refused before anything\n"
-        "                 is written (RX807, naming the file and line)\n"
-        "  --help, --version (or -version)\n"
+        "                 is written (RX807, naming the file and line)\n";
+  for (const auto& f : extra_flags) os << "  " << f.name << '\n' << f.help;
+  os << "  --help, --version (or -version)\n"
         "\n"
         "SIGTERM or SIGINT stops the run after the cycle under way, with a last state, the summary (status\n"
         "\"interrupted\") and the listing's termination lines; a second one ends it at once, and so does\n"
@@ -76,7 +79,8 @@ void usage(std::ostream& os, const std::string& program) {
 
 }  // namespace
 
-int engine_main(int argc, char** argv, const char* program_name, solver::parallel::Comm& comm) {
+int engine_main(int argc, char** argv, const char* program_name, solver::parallel::Comm& comm,
+                std::span<ExtraFlag> extra_flags) {
   const std::string program = program_name;
   NullStream null_out;
   NullStream null_err;
@@ -87,7 +91,7 @@ int engine_main(int argc, char** argv, const char* program_name, solver::paralle
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h") {
-      usage(out, program);
+      usage(out, program, extra_flags);
       return kExitOk;
     }
     // -version and -nt N are Radioss's own spellings (engine_linux64 -i DECK -nt N): scripts written for it
@@ -102,7 +106,11 @@ int engine_main(int argc, char** argv, const char* program_name, solver::paralle
       err << program << ": " << a << " needs a value\n";
       return kExitUsage;
     }
-    if (a == "-i") {
+    const auto extra =
+        std::find_if(extra_flags.begin(), extra_flags.end(), [&](const ExtraFlag& f) { return f.name == a; });
+    if (extra != extra_flags.end()) {
+      extra->given = true;
+    } else if (a == "-i") {
       opt.engine_deck = argv[++i];
     } else if (a == "--out") {
       opt.out_dir = argv[++i];
@@ -135,11 +143,12 @@ int engine_main(int argc, char** argv, const char* program_name, solver::paralle
     } else if (a == "--stop-if-runaway") {
       opt.stop_if_runaway = true;
     } else if (!a.empty() && a[0] == '-') {
-      err << unknown_option(program, a,
-                            {"-i", "--out", "--model", "--threads", "-nt", "--no-plot", "--stop-if-runaway",
-                             "--decompose", "--partition", "--version", "-version", "--help"})
-          << '\n';
-      usage(err, program);
+      std::vector<std::string> known = {"-i",          "--out",     "--model",           "--threads",
+                                        "-nt",         "--no-plot", "--stop-if-runaway", "--decompose",
+                                        "--partition", "--version", "-version",          "--help"};
+      for (const auto& f : extra_flags) known.push_back(f.name);
+      err << unknown_option(program, a, known) << '\n';
+      usage(err, program, extra_flags);
       return kExitUsage;
     } else if (opt.engine_deck.empty()) {
       opt.engine_deck = a;
@@ -150,7 +159,7 @@ int engine_main(int argc, char** argv, const char* program_name, solver::paralle
   }
   if (opt.engine_deck.empty()) {
     err << program << ": give the engine deck (NAME_0001.rad)\n";
-    usage(err, program);
+    usage(err, program, extra_flags);
     return kExitUsage;
   }
   opt.comm = &comm;

@@ -1,9 +1,10 @@
 // Bytes per cycle each rank sends and receives for the domain exchange (solver/parallel/domain.hpp): the
 // shared-node sums shipped to their owners (one slot of 3 or 6 doubles per entry on a shared node) and the
-// ghost update after integration (x, v: 48 B a node, 72 B with omega), for P ranks and two simple splits of
-// the element groups (contiguous blocks of the flat order, and round robin; METIS is the partition step's).
-// Prints, per P and split, the shared nodes, the busiest rank's ghosts, and the busiest rank's bytes sent
-// plus received per cycle.
+// ghost update after integration (x, v: 48 B a node, 72 B with omega), for P ranks and three splits of the
+// element groups: contiguous blocks of the flat order, round robin, and the METIS partition radx-engine-mpi
+// uses (solver/parallel/partition.hpp). Prints, per P and split, the shared nodes, the busiest rank's ghosts,
+// its bytes sent plus received per cycle and its messages sent per cycle (bench/mpi_weak_scaling.py reads
+// the METIS rows).
 //
 // Usage: radx_bench_domain MODEL_FILE [P ...]   (default P: 2 3 4 8 16)
 #include <algorithm>
@@ -16,22 +17,33 @@
 #include "io/hdf5/model_file.hpp"
 #include "solver/engine/explicit_engine.hpp"
 #include "solver/parallel/domain.hpp"
+#include "solver/parallel/partition.hpp"
 
 namespace {
 
 namespace par = radx::solver::parallel;
 
-std::vector<std::int32_t> split(std::int64_t groups, int P, bool round_robin) {
-  std::vector<std::int32_t> r(static_cast<std::size_t>(groups));
-  for (std::int64_t k = 0; k < groups; ++k)
-    r[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(round_robin ? k % P : k * P / groups);
+enum class Split { kBlocks, kRoundRobin, kMetis };
+
+std::vector<std::int32_t> split(const radx::model::Model& model, const radx::solver::ElementGroups& groups,
+                                int P, Split how) {
+  const std::int64_t count = groups.count();
+  std::vector<std::int32_t> r(static_cast<std::size_t>(count));
+  if (how == Split::kMetis) {
+    const auto p = par::partition_groups(model, groups, P);
+    std::copy(p.group_rank.begin(), p.group_rank.end(), r.begin());
+    return r;
+  }
+  for (std::int64_t k = 0; k < count; ++k)
+    r[static_cast<std::size_t>(k)] =
+        static_cast<std::int32_t>(how == Split::kRoundRobin ? k % P : k * P / count);
   return r;
 }
 
-void report(const radx::solver::ExplicitEngine& engine, int P, bool round_robin) {
+void report(const radx::model::Model& model, const radx::solver::ExplicitEngine& engine, int P, Split how) {
   const auto& groups = engine.groups();
   const auto nodes = static_cast<std::int64_t>(engine.nodes().n);
-  const auto group_rank = split(groups.count(), P, round_robin);
+  const auto group_rank = split(model, groups, P, how);
   std::int64_t shared = 0, most_ghosts = 0, most_sums = 0, most_ghost_bytes = 0, most_total = 0;
   int most_messages = 0;
   for (int r = 0; r < P; ++r) {
@@ -46,9 +58,11 @@ void report(const radx::solver::ExplicitEngine& engine, int P, bool round_robin)
     most_messages = std::max(most_messages, t.shared_sum_messages + t.ghost_messages);
   }
   std::printf("| %3d | %-11s | %8lld | %8lld | %10.1f | %10.1f | %10.1f | %4d |\n", P,
-              round_robin ? "round robin" : "blocks", static_cast<long long>(shared),
-              static_cast<long long>(most_ghosts), most_sums / 1e3, most_ghost_bytes / 1e3, most_total / 1e3,
-              most_messages);
+              how == Split::kMetis        ? "metis"
+              : how == Split::kRoundRobin ? "round robin"
+                                          : "blocks",
+              static_cast<long long>(shared), static_cast<long long>(most_ghosts), most_sums / 1e3,
+              most_ghost_bytes / 1e3, most_total / 1e3, most_messages);
 }
 
 }  // namespace
@@ -76,8 +90,9 @@ int main(int argc, char** argv) {
   std::printf("(* the busiest rank; kB sent plus received per cycle)\n");
   for (const int P : ranks) {
     if (P < 2) continue;
-    report(engine, P, false);
-    report(engine, P, true);
+    report(model, engine, P, Split::kBlocks);
+    report(model, engine, P, Split::kRoundRobin);
+    report(model, engine, P, Split::kMetis);
   }
   return 0;
 }

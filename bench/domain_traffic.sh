@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Bytes per cycle of the domain exchange on the impact model (bench/domain_traffic.cpp): writes the model
 # (bench/gen_shell_plate.py --n N --impact --block N/10, as bench/cycle_traffic.sh), runs the starter, and
-# prints, for P ranks and two splits of the element groups, the shared nodes, the busiest rank's ghosts and
-# its bytes per cycle for the shared-node sums and the ghost update.
+# prints, for P ranks and three splits of the element groups (blocks, round robin, METIS), the shared nodes,
+# the busiest rank's ghosts and its bytes per cycle for the shared-node sums and the ghost update.
 # Usage: bench/domain_traffic.sh [N] [P ...]   (N = 200 by default; builds what it needs in build/)
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -6,6 +6,8 @@
     python3 bench/gen_shell_plate.py --impact           # adds a 10 x 10 x 4 brick block and two TYPE7
     python3 bench/gen_shell_plate.py --n 200 --impact --contact lagdt     # the LAGDT variant (PLATE200I_LAGDT)
     python3 bench/gen_shell_plate.py --n 200 --impact --contact addmass   # TYPE7 + /DT/INTER/CST added mass
+    python3 bench/gen_shell_plate.py --n 400 --impact --block 40 --brick-size 5 --contact none
+                                                         # contact-free (PLATE400I_NOCONTACT): 166,400 elements
     python3 bench/gen_shell_plate.py --n 200 --ishell 24                  # the plate in QEPH (PLATE200_QEPH)
     python3 bench/gen_shell_plate.py --n 200 --impact --isolid 24         # the block in HEPH bricks (PLATE200I_HEPH)
 
@@ -26,7 +28,12 @@ Model (units Mg, mm, s): a 1000 x 1000 mm steel plate, 1 mm thick, meshed with N
   --contact lagdt writes both interfaces as /INTER/LAGDT/TYPE7 and adds /DT/INTER/CST 0.9 Tmin (--tmin) to the
   engine deck: pairs whose step would fall below Tmin switch to Lagrange multipliers; --contact addmass keeps
   the TYPE7 cards with the same /DT/INTER/CST, which adds mass instead. Root names PLATE<N>I_LAGDT and
-  PLATE<N>I_ADDMASS.
+  PLATE<N>I_ADDMASS. --contact none writes the same model without the interfaces (and their time history):
+  the block's and the plate's elements all run, the block passes through the plate unhindered (root name
+  PLATE<N>I_NOCONTACT; the MPI benchmark bench/mpi_scaling.sh, whose engine does not split contact).
+--th-records K and --anim-states K set the time history's interval (/TFILE, Tstop / K, default 100) and the
+states' (/ANIM/DT, Tstop / K, default 2); 0 leaves the card out (the engine then writes the time history and
+the states at t = 0 and at the end only).
 Tstop is set so that about 1500 cycles run at the shell time step 0.9 h / sqrt(E/rho) (h = 1000/N mm);
 contact can lower the step in the --impact variant. With Igap 0 the computed gaps are min(t, lmin/2) = 0.5 mm
 for interface 1 when h = 1 mm (N = 1000) and l/10 = 1 mm for interface 2, so nothing penetrates at t = 0.
@@ -66,7 +73,7 @@ def first_power_of_ten_above(n):
 
 
 def starter(n, impact, root, lagdt=False, ishell=1, isolid=1, block_nx=BLOCK_NX, brick=L_PLATE / 100.0,
-            block_z0=BLOCK_Z0, bumult=0.0):
+            block_z0=BLOCK_Z0, bumult=0.0, contact=True):
     nn = n + 1
     d = rc.Deck(fill=0)
     d.raw("#RADIOSS STARTER")
@@ -139,7 +146,7 @@ def starter(n, impact, root, lagdt=False, ishell=1, isolid=1, block_nx=BLOCK_NX,
     d.card("/BCS", 1, "Clamped plate edges", Tra_rot=rc.bcs_code("111", "111"), grnod_ID=1)
     d.card("/INIVEL/TRA", 1, "Block at 10 m/s downwards" if impact else "Plate at 1 m/s downwards",
            Vz=-10000.0 if impact else -1000.0, grnod_ID=3 if impact else 2)
-    if impact:
+    if impact and contact:
         d.ruler()
         for iid, title, grnod, surf, istf, inacti, fric, iform, viss in (
                 (1, "Block nodes on plate surface", 3, 1, 4, 6, 0.1, 1, 0.05),
@@ -150,14 +157,14 @@ def starter(n, impact, root, lagdt=False, ishell=1, isolid=1, block_nx=BLOCK_NX,
     d.ruler()
     d.card("/TH/NODE", 1, "Plate centre", variables=["DEF"], rows=[(1 + (n // 2) + nn * (n // 2), 0, "Plate centre")])
     d.card("/TH/PART", 2, "Parts", variables=["DEF"], ids=[1, 2] if impact else [1])
-    if impact:
+    if impact and contact:
         d.card("/TH/INTER", 3, "Both interfaces", variables=["DEF"], ids=[1, 2])
     d.ruler()
     d.raw("/END")
     return d.lines
 
 
-def engine(n, root, inter_tmin=0.0, tstop=None):
+def engine(n, root, inter_tmin=0.0, tstop=None, th_records=100, anim_states=2):
     h = L_PLATE / n
     dt_shell = 0.9 * h / math.sqrt(E_STEEL / RHO_STEEL)
     if tstop is None:
@@ -167,9 +174,11 @@ def engine(n, root, inter_tmin=0.0, tstop=None):
     e.comment("Tstop = %d cycles x shell time step 0.9 h / sqrt(E/rho) = %d x %.4g s" % (CYCLES, CYCLES, dt_shell))
     e.ruler()
     e.card("/RUN", "%s/1" % root, Tstop=tstop, sig=SIG)
-    e.card("/TFILE", dt_his=sig3(tstop / 100), sig=SIG)
-    e.card("/ANIM/DT", Tstart=0.0, dT=sig3(tstop / 2), sig=SIG)
-    e.raw("/ANIM/ELEM/VONM", "/ANIM/ELEM/EPSP", "/ANIM/VECT/VEL")
+    if th_records > 0:
+        e.card("/TFILE", dt_his=sig3(tstop / th_records), sig=SIG)
+    if anim_states > 0:
+        e.card("/ANIM/DT", Tstart=0.0, dT=sig3(tstop / anim_states), sig=SIG)
+        e.raw("/ANIM/ELEM/VONM", "/ANIM/ELEM/EPSP", "/ANIM/VECT/VEL")
     e.card("/DT", Tscale=0.9, Tmin=0.0)
     if inter_tmin:
         e.raw("#  /DT/INTER/CST: LAGDT pairs below Tmin switch to Lagrange multipliers; TYPE7 nodes get added mass")
@@ -194,9 +203,14 @@ def main(argv):
                         "surface (default 1); down to -0.5 (the mid-surface, which TYPE7 sees with its gap)")
     p.add_argument("--tstop", type=float, default=None,
                    help="end time in s (default: 1500 cycles of the plate's shell step)")
-    p.add_argument("--contact", choices=("type7", "lagdt", "addmass"), default="type7",
+    p.add_argument("--th-records", type=int, default=100,
+                   help="time history records over the run (/TFILE dt_his = Tstop / K; default 100; 0: no /TFILE)")
+    p.add_argument("--anim-states", type=int, default=2,
+                   help="animation states after t = 0 (/ANIM/DT dT = Tstop / K; default 2; 0: no /ANIM)")
+    p.add_argument("--contact", choices=("type7", "lagdt", "addmass", "none"), default="type7",
                    help="with --impact: plain TYPE7 (default); lagdt: /INTER/LAGDT/TYPE7 with /DT/INTER/CST Tmin; "
-                        "addmass: plain TYPE7 with /DT/INTER/CST Tmin (added mass)")
+                        "addmass: plain TYPE7 with /DT/INTER/CST Tmin (added mass); none: no interface (the "
+                        "block passes through the plate; root name _NOCONTACT)")
     p.add_argument("--tmin", type=float, default=8e-7,
                    help="Tmin of /DT/INTER/CST for --contact lagdt and addmass (default 8e-7 s: just below the "
                         "shell step of --n 200)")
@@ -217,7 +231,9 @@ def main(argv):
     if args.contact != "type7" and not args.impact:
         p.error("--contact needs --impact")
     root = "PLATE%d%s" % (args.n, "I" if args.impact else "")
-    if args.contact != "type7":
+    if args.contact == "none":
+        root += "_NOCONTACT"
+    elif args.contact != "type7":
         root += "_" + args.contact.upper()
     if args.ishell != 1:
         root += {12: "_QBAT", 24: "_QEPH"}[args.ishell]
@@ -229,8 +245,11 @@ def main(argv):
     e_path = os.path.join(args.out, root + "_0001.rad")
     rc.write(s_path, starter(args.n, args.impact, root, lagdt=args.contact == "lagdt", ishell=args.ishell,
                              isolid=args.isolid, block_nx=args.block, brick=args.brick_size,
-                             block_z0=THICK / 2 + args.gap, bumult=args.bumult))
-    lines, tstop = engine(args.n, root, args.tmin if args.contact != "type7" else 0.0, args.tstop)
+                             block_z0=THICK / 2 + args.gap, bumult=args.bumult, contact=args.contact != "none"))
+    if args.th_records < 0 or args.anim_states < 0:
+        p.error("--th-records and --anim-states must be 0 or more")
+    lines, tstop = engine(args.n, root, args.tmin if args.contact in ("lagdt", "addmass") else 0.0, args.tstop,
+                          args.th_records, args.anim_states)
     rc.write(e_path, lines)
     print("wrote %s and %s: %d shells, %d plate nodes%s, Tstop %g s (%.1f s)" %
           (s_path, e_path, args.n * args.n, (args.n + 1) ** 2,

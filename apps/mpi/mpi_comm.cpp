@@ -2,11 +2,13 @@
 
 #include <mpi.h>
 
+#include <chrono>
 #include <climits>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "solver/parallel/vote_order.hpp"
@@ -70,6 +72,31 @@ const void* data_or_null(const Buffer& b) {
   return b.empty() ? nullptr : b.data();
 }
 
+// One collective call counted: the call on construction, the seconds until destruction (the transfer and the
+// wait for the other ranks; the copies around the MPI calls are microseconds against them).
+class Counted {
+ public:
+  explicit Counted(CommCounts& c) : counts_(c), start_(std::chrono::steady_clock::now()) { ++counts_.calls; }
+  ~Counted() {
+    counts_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  Counted(const Counted&) = delete;
+  Counted& operator=(const Counted&) = delete;
+
+ private:
+  CommCounts& counts_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+// An all-reduce of `bytes` a rank: its contribution out, the result in.
+void count_reduction(CommCounts& c, std::size_t bytes) {
+  c.bytes_sent += static_cast<std::int64_t>(bytes);
+  c.bytes_received += static_cast<std::int64_t>(bytes);
+}
+
+// The size every rank's message is announced with (an int64) in exchange, gather, all-gather and broadcast.
+constexpr std::int64_t kSizeBytes = sizeof(std::int64_t);
+
 // Splits a gathered whole into messages of the given sizes.
 std::vector<Buffer> split(const Buffer& whole, const std::vector<int>& counts,
                           const std::vector<int>& displs) {
@@ -123,6 +150,9 @@ MpiComm::~MpiComm() {
 }
 
 Vote MpiComm::vote(const Vote& mine) {
+  auto& tally = stats_[CommKind::kVote];
+  const Counted counted(tally);
+  count_reduction(tally, sizeof(Vote));
   const Vote entry = solver::parallel::vote_of_rank(mine, rank_);
   Vote result;
   check(MPI_Allreduce(&entry, &result, 1, types_->vote, types_->vote_op, MPI_COMM_WORLD), rank_,
@@ -131,24 +161,35 @@ Vote MpiComm::vote(const Vote& mine) {
 }
 
 void MpiComm::max(std::span<double> values) {
+  auto& tally = stats_[CommKind::kMax];
+  const Counted counted(tally);
+  count_reduction(tally, values.size_bytes());
   check(MPI_Allreduce(MPI_IN_PLACE, values.data(), entry_count(values.size(), rank_, "a max"), MPI_DOUBLE,
                       MPI_MAX, MPI_COMM_WORLD),
         rank_, "MPI_Allreduce (max)");
 }
 
 void MpiComm::sum_exact(std::span<std::int64_t> bins) {
+  auto& tally = stats_[CommKind::kSumExact];
+  const Counted counted(tally);
+  count_reduction(tally, bins.size_bytes());
   check(MPI_Allreduce(MPI_IN_PLACE, bins.data(), entry_count(bins.size(), rank_, "an exact sum"), MPI_INT64_T,
                       MPI_SUM, MPI_COMM_WORLD),
         rank_, "MPI_Allreduce (exact sum)");
 }
 
 void MpiComm::bit_or(std::span<std::uint64_t> words) {
+  auto& tally = stats_[CommKind::kBitOr];
+  const Counted counted(tally);
+  count_reduction(tally, words.size_bytes());
   check(MPI_Allreduce(MPI_IN_PLACE, words.data(), entry_count(words.size(), rank_, "an OR"), MPI_UINT64_T,
                       MPI_BOR, MPI_COMM_WORLD),
         rank_, "MPI_Allreduce (bit or)");
 }
 
 std::vector<Buffer> MpiComm::exchange(const std::vector<Buffer>& to_rank) {
+  auto& tally = stats_[CommKind::kExchange];
+  const Counted counted(tally);
   if (to_rank.size() != static_cast<std::size_t>(size_))
     abort_all(rank_, "exchange given " + std::to_string(to_rank.size()) + " messages for " +
                          std::to_string(size_) + " ranks");
@@ -158,6 +199,8 @@ std::vector<Buffer> MpiComm::exchange(const std::vector<Buffer>& to_rank) {
   for (std::size_t r = 0; r < P; ++r) send_sizes[r] = static_cast<std::int64_t>(to_rank[r].size());
   check(MPI_Alltoall(send_sizes.data(), 1, MPI_INT64_T, recv_sizes.data(), 1, MPI_INT64_T, MPI_COMM_WORLD),
         rank_, "MPI_Alltoall (message sizes)");
+  tally.bytes_sent += kSizeBytes * (size_ - 1);
+  tally.bytes_received += kSizeBytes * (size_ - 1);
   std::vector<Buffer> received(P);
   std::vector<MPI_Request> requests;
   requests.reserve(2 * P);
@@ -166,12 +209,15 @@ std::vector<Buffer> MpiComm::exchange(const std::vector<Buffer>& to_rank) {
   for (std::size_t r = 0; r < P; ++r) {
     if (r == me || recv_sizes[r] == 0) continue;
     received[r].resize(static_cast<std::size_t>(byte_count(recv_sizes[r], rank_, "a message received")));
+    tally.bytes_received += recv_sizes[r];
     check(MPI_Irecv(received[r].data(), static_cast<int>(recv_sizes[r]), MPI_BYTE, static_cast<int>(r),
                     kExchangeTag, MPI_COMM_WORLD, &requests.emplace_back()),
           rank_, "MPI_Irecv (exchange)");
   }
   for (std::size_t r = 0; r < P; ++r) {
     if (r == me || send_sizes[r] == 0) continue;
+    tally.bytes_sent += send_sizes[r];
+    ++tally.messages;
     check(MPI_Isend(to_rank[r].data(), byte_count(send_sizes[r], rank_, "a message sent"), MPI_BYTE,
                     static_cast<int>(r), kExchangeTag, MPI_COMM_WORLD, &requests.emplace_back()),
           rank_, "MPI_Isend (exchange)");
@@ -183,6 +229,8 @@ std::vector<Buffer> MpiComm::exchange(const std::vector<Buffer>& to_rank) {
 }
 
 std::vector<Buffer> MpiComm::gather(const Buffer& mine, int root) {
+  auto& tally = stats_[CommKind::kGather];
+  const Counted counted(tally);
   const std::int64_t my_size = static_cast<std::int64_t>(mine.size());
   const auto P = static_cast<std::size_t>(size_);
   std::vector<std::int64_t> sizes(rank_ == root ? P : 0);
@@ -200,11 +248,17 @@ std::vector<Buffer> MpiComm::gather(const Buffer& mine, int root) {
   check(MPI_Gatherv(data_or_null(mine), byte_count(my_size, rank_, "a message to gather"), MPI_BYTE,
                     data_or_null(whole), counts.data(), displs.data(), MPI_BYTE, root, MPI_COMM_WORLD),
         rank_, "MPI_Gatherv");
-  if (rank_ != root) return {};
+  if (rank_ != root) {
+    tally.bytes_sent += kSizeBytes + my_size;
+    return {};
+  }
+  tally.bytes_received += (size_ - 1) * kSizeBytes + total - my_size;
   return split(whole, counts, displs);
 }
 
 std::vector<Buffer> MpiComm::all_gather(const Buffer& mine) {
+  auto& tally = stats_[CommKind::kAllGather];
+  const Counted counted(tally);
   const std::int64_t my_size = static_cast<std::int64_t>(mine.size());
   const auto P = static_cast<std::size_t>(size_);
   std::vector<std::int64_t> sizes(P);
@@ -222,12 +276,17 @@ std::vector<Buffer> MpiComm::all_gather(const Buffer& mine) {
   check(MPI_Allgatherv(data_or_null(mine), counts[static_cast<std::size_t>(rank_)], MPI_BYTE,
                        data_or_null(whole), counts.data(), displs.data(), MPI_BYTE, MPI_COMM_WORLD),
         rank_, "MPI_Allgatherv");
+  tally.bytes_sent += kSizeBytes + my_size;
+  tally.bytes_received += (size_ - 1) * kSizeBytes + total - my_size;
   return split(whole, counts, displs);
 }
 
 void MpiComm::broadcast(Buffer& data, int root) {
+  auto& tally = stats_[CommKind::kBroadcast];
+  const Counted counted(tally);
   std::int64_t size = static_cast<std::int64_t>(data.size());
   check(MPI_Bcast(&size, 1, MPI_INT64_T, root, MPI_COMM_WORLD), rank_, "MPI_Bcast (message size)");
+  (rank_ == root ? tally.bytes_sent : tally.bytes_received) += kSizeBytes + size;
   const int count = byte_count(size, rank_, "a broadcast message");
   if (rank_ != root) data.resize(static_cast<std::size_t>(count));
   if (count == 0) return;
@@ -235,11 +294,21 @@ void MpiComm::broadcast(Buffer& data, int root) {
 }
 
 void MpiComm::barrier() {
+  const Counted counted(stats_[CommKind::kBarrier]);
   check(MPI_Barrier(MPI_COMM_WORLD), rank_, "MPI_Barrier");
 }
 
 void MpiComm::abort(int exit_code, const std::string& message) {
   abort_all(rank_, message, exit_code);
+}
+
+std::vector<RankCommStats> MpiComm::gather_stats(double wall_seconds) {
+  static_assert(std::is_trivially_copyable_v<RankCommStats>);
+  const RankCommStats mine{rank_, wall_seconds, stats_};
+  std::vector<RankCommStats> all(rank_ == 0 ? static_cast<std::size_t>(size_) : 0);
+  check(MPI_Gather(&mine, sizeof mine, MPI_BYTE, all.data(), sizeof mine, MPI_BYTE, 0, MPI_COMM_WORLD), rank_,
+        "MPI_Gather (communication statistics)");
+  return all;
 }
 
 }  // namespace radx::app

@@ -5,10 +5,15 @@
 // collectives, between the thread team's stages) and finalises it when destroyed. Every MPI call returns its
 // error (MPI_ERRORS_RETURN); a failed call prints which call failed, on which rank, with MPI's reason, and
 // ends every rank (MPI_Abort), so an error never leaves the other ranks waiting.
+//
+// Every collective is counted (apps/mpi/comm_stats.hpp): calls, messages, bytes and seconds inside MPI, per
+// kind, for radx-engine-mpi --comm-stats. The count costs two clock reads a call.
 #pragma once
 
 #include <memory>
+#include <vector>
 
+#include "apps/mpi/comm_stats.hpp"
 #include "solver/parallel/comm.hpp"
 
 namespace radx::app {
@@ -39,11 +44,18 @@ class MpiComm final : public solver::parallel::Comm {
   void barrier() override;
   [[noreturn]] void abort(int exit_code, const std::string& message) override;
 
+  // What this rank's collectives have done since the communicator was made.
+  [[nodiscard]] const CommStats& stats() const { return stats_; }
+  // Every rank's statistics (as they stand when called, this call's own traffic not included) and wall time,
+  // indexed by rank, on rank 0; the others return an empty vector. Called by every rank.
+  [[nodiscard]] std::vector<RankCommStats> gather_stats(double wall_seconds);
+
  private:
   struct Types;  // the vote's MPI datatype and reduction, created once
   int rank_ = 0;
   int size_ = 1;
   std::unique_ptr<Types> types_;
+  CommStats stats_;
 };
 
 }  // namespace radx::app
