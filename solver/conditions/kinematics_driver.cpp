@@ -80,31 +80,35 @@ void KinematicsDriver::after_update(double) {}
 
 // The node terms here and the rigid bodies' negated copies of them (RigidBodies::kinetic_correction) are the
 // same expressions, so a secondary node's terms cancel exactly in the exact sums.
-void KinematicsDriver::kinetic_energy(double dt1, double& translational, double& rotational) const {
+KineticSums KinematicsDriver::kinetic_sums(double dt1, std::span<const std::array<std::size_t, 2>> runs,
+                                           bool with_bodies) const {
   const auto& s = nodes_;
   KineticSums sums;
   const double h = 0.5 * dt1;
-  for (std::size_t n = 0; n < s.n; ++n) {
-    const double vx = s.vx[n] + h * s.ax[n], vy = s.vy[n] + h * s.ay[n], vz = s.vz[n] + h * s.az[n];
-    sums.translational.add(0.5 * s.mass[n] * (vx * vx + vy * vy + vz * vz));
-    const double wx = s.wx[n] + h * s.awx[n], wy = s.wy[n] + h * s.awy[n], wz = s.wz[n] + h * s.awz[n];
-    sums.rotational.add(0.5 * s.inertia[n] * (wx * wx + wy * wy + wz * wz));
-  }
-  if (parts_->bodies.size() > 0) parts_->bodies.kinetic_correction(s, dt1, sums);
+  for (const auto& run : runs)
+    for (std::size_t n = run[0]; n < run[1]; ++n) {
+      const double vx = s.vx[n] + h * s.ax[n], vy = s.vy[n] + h * s.ay[n], vz = s.vz[n] + h * s.az[n];
+      sums.translational.add(0.5 * s.mass[n] * (vx * vx + vy * vy + vz * vz));
+      const double wx = s.wx[n] + h * s.awx[n], wy = s.wy[n] + h * s.awy[n], wz = s.wz[n] + h * s.awz[n];
+      sums.rotational.add(0.5 * s.inertia[n] * (wx * wx + wy * wy + wz * wz));
+      sums.momentum[0].add(s.mass[n] * vx);
+      sums.momentum[1].add(s.mass[n] * vy);
+      sums.momentum[2].add(s.mass[n] * vz);
+    }
+  if (with_bodies && parts_->bodies.size() > 0) parts_->bodies.kinetic_correction(s, dt1, sums);
+  return sums;
+}
+
+void KinematicsDriver::kinetic_energy(double dt1, double& translational, double& rotational) const {
+  const std::array<std::size_t, 2> all{0, nodes_.n};
+  const KineticSums sums = kinetic_sums(dt1, std::span(&all, 1), true);
   translational = sums.translational.value();
   rotational = sums.rotational.value();
 }
 
 std::array<double, 3> KinematicsDriver::momentum(double dt1) const {
-  const auto& s = nodes_;
-  KineticSums sums;
-  const double h = 0.5 * dt1;
-  for (std::size_t n = 0; n < s.n; ++n) {
-    sums.momentum[0].add(s.mass[n] * (s.vx[n] + h * s.ax[n]));
-    sums.momentum[1].add(s.mass[n] * (s.vy[n] + h * s.ay[n]));
-    sums.momentum[2].add(s.mass[n] * (s.vz[n] + h * s.az[n]));
-  }
-  if (parts_->bodies.size() > 0) parts_->bodies.kinetic_correction(s, dt1, sums);
+  const std::array<std::size_t, 2> all{0, nodes_.n};
+  const KineticSums sums = kinetic_sums(dt1, std::span(&all, 1), true);
   return {sums.momentum[0].value(), sums.momentum[1].value(), sums.momentum[2].value()};
 }
 

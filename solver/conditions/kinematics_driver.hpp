@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/conditions/rigid_body.hpp"
 #include "solver/conditions/rigid_wall_plane.hpp"
 #include "solver/conditions/skew_frames.hpp"
 #include "solver/engine/node_state.hpp"
@@ -50,6 +51,11 @@ class KinematicsDriver {
   // once. Exact sums, rounded once (model::ExactSum): the same bits in any order of the nodes.
   void kinetic_energy(double dt1, double& translational, double& rotational) const;
   [[nodiscard]] std::array<double, 3> momentum(double dt1) const;
+  // The exact sums of both over the nodes [first, last) of each run, and the rigid bodies' correction when
+  // `with_bodies`: on several ranks each adds the nodes it owns and one the bodies, and the sums' bins add
+  // up to one rank's (Comm::sum_exact).
+  [[nodiscard]] KineticSums kinetic_sums(double dt1, std::span<const std::array<std::size_t, 2>> runs,
+                                         bool with_bodies) const;
   [[nodiscard]] double external_work() const;
   // Correction to the nodal mass sum so that each rigid body counts once (exact: merge it into the sum of
   // the nodal masses before rounding).

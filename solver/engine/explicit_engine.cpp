@@ -1617,7 +1617,6 @@ bool ExplicitEngine::lagrange_correction(LoopState& L, RunResult& res) {
 // every element and node), then the caller's on_cycle (listing, states, /STOP), which may stop the run.
 bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(const CycleReport&)>& on_cycle,
                              RunResult& res) {
-  auto& kin = *kinematics_;
   // On more than one rank, a stop signal seen by one rank makes the cycle full on all: each rank's
   // output_due, read at the element stage, rode in the step vote.
   const bool due = domain_ ? (step_vote_.flags & StepVote::kOutputDue) != 0
@@ -1628,7 +1627,7 @@ bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(c
     share_output_state();
     sum_energies(L);
     rep = report(L.cycle, L.time, L.dt2, L.control);
-    rep.momentum = kin.momentum(L.dt1);
+    rep.momentum = momentum_;
     rep.dt1 = L.dt1;
   } else {
     rep.cycle = L.cycle;
@@ -1667,63 +1666,98 @@ bool ExplicitEngine::any_rank(bool mine) const {
   return word != 0;
 }
 
-// On more than one rank: the group state the energies, the result fields and the time history read, from
-// each group's owner into every rank's copy, so they read what one rank has.
+// On more than one rank: the node and group state the result fields and the time history read, from each
+// node's and group's owner into rank 0's copy (the writer), so it reads what one rank has. The other ranks
+// need none of it: the energies come from each owner's sums (kinetic_sums, sum_energies).
 void ExplicitEngine::share_output_state() {
   if (!domain_) return;
-  domain_->gather_node_state(nodes_);
-  domain_->share_group_arrays(groups_, [](auto& g, auto&& visit) {
-    visit(g.off);
-    visit(g.e_int);
-    visit(g.dt);
-    visit(g.k_nodal);  // the nodal_time_step field, with or without /DT/NODA
-    if constexpr (requires { g.sig; }) {
-      visit(g.sig);
-      visit(g.eps_p);
-      visit(g.dmg);
-      visit(g.e_hg);
-      visit(g.w_plastic);
-      visit(g.rate);
+  domain_->gather_node_state(nodes_, 0);
+  domain_->share_group_arrays(
+      groups_,
+      [](auto& g, auto&& visit) {
+        visit(g.off);
+        visit(g.e_int);
+        visit(g.dt);
+        visit(g.k_nodal);  // the nodal_time_step field, with or without /DT/NODA
+        if constexpr (requires { g.sig; }) {
+          visit(g.sig);
+          visit(g.eps_p);
+          visit(g.dmg);
+          visit(g.e_hg);
+          visit(g.w_plastic);
+          visit(g.rate);
+        }
+        if constexpr (requires { g.thick; }) {
+          visit(g.thick);
+          visit(g.dmg_inst);
+        }
+        if constexpr (requires { g.sig_p; }) {
+          visit(g.sig_p);
+          visit(g.eps_p_p);
+          visit(g.dmg_p);
+        }
+        if constexpr (requires { g.vol; }) {
+          visit(g.vol);
+          visit(g.rho);
+          visit(g.q);
+        }
+        if constexpr (requires { g.force; }) visit(g.force);
+        if constexpr (requires { g.dx; }) visit(g.dx);
+        if constexpr (std::is_same_v<std::decay_t<decltype(g)>, TrussGroup>) {
+          visit(g.strain);
+          visit(g.area);
+        }
+        if constexpr (requires { g.resultant; }) visit(g.resultant);
+        // A co-rotational brick's stress is kept in its element frame (brick_global_stress rotates it back).
+        if constexpr (std::is_same_v<std::decay_t<decltype(g)>, BrickGroup>) visit(g.frame);
+      },
+      0);
+}
+
+// Kinetic energy and momentum at t_n (energy_, momentum_): exact sums over every node, the rigid bodies
+// counted once; on more than one rank each rank sums the nodes it owns (rank 0 the bodies' correction), and
+// the sums' bins are added over the ranks, which gives one rank's bits.
+void ExplicitEngine::kinetic_sums(double dt1) {
+  std::vector<std::array<std::size_t, 2>> runs;
+  if (!domain_) {
+    runs.push_back({0, nodes_.n});
+  } else {
+    for (const auto& r : domain_->owned_runs())
+      runs.push_back({static_cast<std::size_t>(r.first), static_cast<std::size_t>(r.last)});
+  }
+  KineticSums sums = kinematics_->kinetic_sums(dt1, runs, !domain_ || domain_->comm().rank() == 0);
+  std::array<model::ExactSum*, 5> parts{&sums.translational, &sums.rotational, &sums.momentum[0],
+                                        &sums.momentum[1], &sums.momentum[2]};
+  if (domain_) {
+    constexpr std::size_t n = model::ExactSum::kStateSize;
+    std::vector<std::int64_t> bins(parts.size() * n);
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      parts[k]->normalise();
+      std::copy_n(parts[k]->state().begin(), n, bins.begin() + static_cast<std::ptrdiff_t>(k * n));
     }
-    if constexpr (requires { g.thick; }) {
-      visit(g.thick);
-      visit(g.dmg_inst);
-    }
-    if constexpr (requires { g.sig_p; }) {
-      visit(g.sig_p);
-      visit(g.eps_p_p);
-      visit(g.dmg_p);
-    }
-    if constexpr (requires { g.vol; }) {
-      visit(g.vol);
-      visit(g.rho);
-      visit(g.q);
-    }
-    if constexpr (requires { g.force; }) visit(g.force);
-    if constexpr (requires { g.dx; }) visit(g.dx);
-    if constexpr (std::is_same_v<std::decay_t<decltype(g)>, TrussGroup>) {
-      visit(g.strain);
-      visit(g.area);
-    }
-    if constexpr (requires { g.resultant; }) visit(g.resultant);
-    // A co-rotational brick's stress is kept in its element frame (brick_global_stress rotates it back).
-    if constexpr (std::is_same_v<std::decay_t<decltype(g)>, BrickGroup>) visit(g.frame);
-  });
+    domain_->comm().sum_exact(bins);
+    for (std::size_t k = 0; k < parts.size(); ++k)
+      *parts[k] = model::ExactSum::from_state(std::span(bins).subspan(k * n, n));
+  }
+  energy_.kinetic_t = sums.translational.value();
+  energy_.kinetic_r = sums.rotational.value();
+  momentum_ = {sums.momentum[0].value(), sums.momentum[1].value(), sums.momentum[2].value()};
 }
 
 // The element energies: each group's partial sums (from 0, in element order), then the partials added in
 // flat group order. A group is never split between ranks, so its partial is the same on any rank count; on
-// more than one rank every rank holds every group's energies (share_output_state) and adds them in this
-// order.
+// more than one rank each owner sends its groups' partials to every rank, which adds them in this order.
 void ExplicitEngine::sum_energies(const LoopState& L) {
   auto& kin = *kinematics_;
   struct GroupEnergy {
     double internal = 0, hourglass = 0, plastic_work = 0;
     bool spring = false;  // a spring group: its internal energy is the spring energy
   };
-  std::vector<GroupEnergy> partials;
-  partials.reserve(static_cast<std::size_t>(groups_.count()));
+  std::vector<GroupEnergy> partials(static_cast<std::size_t>(groups_.count()));
+  std::int64_t flat = -1;
   groups_.for_each([&](const auto& g) {
+    ++flat;
+    if (domain_ && !domain_->owns(flat)) return;  // its owner's partial arrives below
     GroupEnergy e;
     for (int i = 0; i < g.count; ++i) {
       const auto k = static_cast<std::size_t>(i);
@@ -1734,8 +1768,9 @@ void ExplicitEngine::sum_energies(const LoopState& L) {
       }
     }
     e.spring = !kHasMaterial<std::decay_t<decltype(g)>>;
-    partials.push_back(e);
+    partials[static_cast<std::size_t>(flat)] = e;
   });
+  if (domain_) domain_->share_group_records(std::span(partials));
   energy_.internal = energy_.hourglass = energy_.plastic_work = energy_.spring = 0;
   for (const auto& e : partials) {
     if (e.spring) {
@@ -1753,7 +1788,7 @@ void ExplicitEngine::sum_energies(const LoopState& L) {
     energy_.contact_friction = contact_->energy_friction();
     energy_.contact_lagrange = contact_->energy_lagrange();
   }
-  kin.kinetic_energy(L.dt1, energy_.kinetic_t, energy_.kinetic_r);
+  kinetic_sums(L.dt1);
   energy_.external_work = kin.external_work();
   if (L.first) energy_.initial_total = energy_.total() - energy_.external_work;
   const double denom = energy_.initial_total + energy_.external_work;

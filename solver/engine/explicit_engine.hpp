@@ -265,6 +265,8 @@ class ExplicitEngine {
   // rank).
   std::unique_ptr<parallel::EngineDomain> domain_;
   void share_output_state();
+  void kinetic_sums(double dt1);
+  std::array<double, 3> momentum_{};  // at the last full cycle (kinetic_sums)
   [[nodiscard]] bool any_rank(bool mine) const;
   std::int64_t deleted_elements_ = 0;  // elements with off == 0, to tell contact (Idel) when it changes
   // Elements of any kind whose deletion the listing has been told (by cell), their count, and the lines.

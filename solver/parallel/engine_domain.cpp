@@ -232,18 +232,19 @@ void EngineDomain::update_ghosts(NodeState& nodes) {
   exchange_ghosts(plan_, comm_, nodes);
 }
 
-void EngineDomain::gather_node_state(NodeState& s) {
+void EngineDomain::gather_node_state(NodeState& s, int root) {
   const std::array<NodeField, 24> fields{
       {{s.x.data(), 1},   {s.y.data(), 1},      {s.z.data(), 1},      {s.vx.data(), 1},    {s.vy.data(), 1},
        {s.vz.data(), 1},  {s.ax.data(), 1},     {s.ay.data(), 1},     {s.az.data(), 1},    {s.fx.data(), 1},
        {s.fy.data(), 1},  {s.fz.data(), 1},     {s.wx.data(), 1},     {s.wy.data(), 1},    {s.wz.data(), 1},
        {s.mx.data(), 1},  {s.my.data(), 1},     {s.mz.data(), 1},     {s.awx.data(), 1},   {s.awy.data(), 1},
        {s.awz.data(), 1}, {s.fx_ext.data(), 1}, {s.fy_ext.data(), 1}, {s.fz_ext.data(), 1}}};
-  all_gather_runs(unreplicated_runs_, fields);
+  all_gather_runs(unreplicated_runs_, fields, {}, root);
 }
 
 std::vector<Buffer> EngineDomain::all_gather_runs(const std::vector<std::vector<NodeRun>>& runs,
-                                                  std::span<const NodeField> fields, const Buffer& header) {
+                                                  std::span<const NodeField> fields, const Buffer& header,
+                                                  int root) {
   // A message: the header's size (8 bytes), the header, then each run's fields.
   const auto doubles_of = [&](const std::vector<NodeRun>& rs) {
     std::size_t d = 0;
@@ -265,7 +266,7 @@ std::vector<Buffer> EngineDomain::all_gather_runs(const std::vector<std::vector<
       std::memcpy(p, f.data + f.width * static_cast<std::size_t>(run.first), bytes);
       p += bytes;
     }
-  const auto all = comm_.all_gather(out);
+  const auto all = root < 0 ? comm_.all_gather(out) : comm_.gather(out, root);
   std::vector<Buffer> headers(all.size());
   for (std::size_t r = 0; r < all.size(); ++r) {
     std::uint64_t theirs = 0;

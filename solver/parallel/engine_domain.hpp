@@ -94,10 +94,13 @@ class EngineDomain {
   // After integration: x, v (and omega) of each ghost from its owner. Called by every rank.
   void update_ghosts(NodeState& nodes);
 
-  // The state of every node this rank does not integrate (x, v, a, f, omega, moments, angular a, external
-  // forces), from its owner, so that every rank holds every node as one rank does: before the energies and
-  // outputs read them. Called by every rank.
-  void gather_node_state(NodeState& nodes);
+  // The state of every node rank `root` does not integrate (x, v, a, f, omega, moments, angular a, external
+  // forces), from its owner, so that the root holds every node as one rank does: before its outputs read
+  // them. Called by every rank.
+  void gather_node_state(NodeState& nodes, int root);
+
+  // This rank's owned nodes, as runs (each node is counted by one rank in order-free sums).
+  [[nodiscard]] const std::vector<NodeRun>& owned_runs() const { return plan_.owned_runs; }
 
   // One trivially copyable record per group (indexed by flat group): each owner's records reach every rank.
   template <class T>
@@ -117,10 +120,10 @@ class EngineDomain {
   }
 
   // Arrays of the groups, chosen by select(group, visit) calling visit(array) for each array to share: each
-  // owner's arrays reach every rank's copies of its groups. Array sizes are the same on every rank (groups
-  // are built from the replicated model).
+  // owner's arrays reach every rank's copies of its groups (root -1), or rank root's alone. Array sizes are
+  // the same on every rank (groups are built from the replicated model).
   template <class Select>
-  void share_group_arrays(ElementGroups& groups, Select&& select) {
+  void share_group_arrays(ElementGroups& groups, Select&& select, int root = -1) {
     Buffer mine;
     for (const std::int64_t flat : plan_.groups)
       groups.visit(flat, [&](auto& g) {
@@ -131,7 +134,8 @@ class EngineDomain {
           if (bytes != 0) std::memcpy(mine.data() + at, array.data(), bytes);
         });
       });
-    const auto all = comm_.all_gather(mine);
+    const auto all = root < 0 ? comm_.all_gather(mine) : comm_.gather(mine, root);
+    if (all.empty()) return;  // not the root
     for_each_remote_group(all, [&](std::int64_t flat, const std::byte*& q) {
       groups.visit(flat, [&](auto& g) {
         select(g, [&](auto& array) {
@@ -171,9 +175,11 @@ class EngineDomain {
     std::size_t width;
   };
   // Each rank sends `header` and its runs[rank] of every field; the others' runs arrive into this rank's
-  // fields, and every rank's header is returned, indexed by rank.
+  // fields, and every rank's header is returned, indexed by rank: on every rank (root -1) or on rank root
+  // alone (the others return no header and receive nothing).
   std::vector<Buffer> all_gather_runs(const std::vector<std::vector<NodeRun>>& runs,
-                                      std::span<const NodeField> fields, const Buffer& header = {});
+                                      std::span<const NodeField> fields, const Buffer& header = {},
+                                      int root = -1);
 
   // Every rank's owned nodes, replicated ones (their sums go to every rank) and the rest (gathered for
   // outputs only), as runs.
