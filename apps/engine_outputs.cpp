@@ -324,6 +324,10 @@ bool EngineOutputs::due(double time) const {
   return time >= impl_->next_state || time >= impl_->next_th;
 }
 
+bool EngineOutputs::state_due(double time) const {
+  return time >= impl_->next_state;
+}
+
 void EngineOutputs::on_report(const solver::CycleReport& r) {
   auto& s = *impl_;
   const auto& c = s.controls;

@@ -38,6 +38,8 @@ class EngineOutputs {
 
   // True when a state or a time-history row is due at `time` (the engine then makes a full report).
   [[nodiscard]] bool due(double time) const;
+  // Whether a state (animation) is due at `time`: the engine gathers whole states on more than one rank.
+  [[nodiscard]] bool state_due(double time) const;
   // Called with every cycle's report, before on_report: the time-history groups that write interval means
   // (interfaces, sections: solver/outputs/time_history_values.hpp) add the cycle to their integrals.
   void accumulate(const solver::CycleReport& r);

@@ -898,6 +898,9 @@ int run_engine_on_this_rank(const EngineOptions& opt, std::ostream& out, std::os
   engine_options.output_due = [&outputs](double t) {
     return StopSignals::received() != 0 || (outputs && outputs->due(t));
   };
+  engine_options.state_due = [&outputs](double t) {
+    return StopSignals::received() != 0 || (outputs && outputs->state_due(t));
+  };
   try {
     engine_ptr = std::make_unique<solver::ExplicitEngine>(model, controls, engine_options);
   } catch (const std::exception& e) {

@@ -226,6 +226,12 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
         parallel::replicated_nodes(model_), comm);
   }
   build_node_pass_chunks();
+  for (const auto& th : model_.time_histories)
+    th_reads_elements_ =
+        th_reads_elements_ || (th.kind != model::ThKind::Node && th.kind != model::ThKind::Part &&
+                               th.kind != model::ThKind::Subset && th.kind != model::ThKind::Inter &&
+                               th.kind != model::ThKind::Rwall && th.kind != model::ThKind::Rbody &&
+                               th.kind != model::ThKind::Accel);
   group_votes_.resize(static_cast<std::size_t>(group_count()));
   team_ =
       std::make_unique<ThreadTeam>(options_.threads > 0 ? options_.threads : ThreadTeam::default_threads());
@@ -1197,6 +1203,7 @@ void ExplicitEngine::combine_step_votes(double time) {
   for (const std::int64_t flat : domain_->plan().groups)
     add_group_vote(step_vote_, group_votes_[static_cast<std::size_t>(flat)], flat, controls_);
   if (options_.output_due && options_.output_due(time)) step_vote_.flags |= StepVote::kOutputDue;
+  if (!options_.state_due || options_.state_due(time)) step_vote_.flags |= StepVote::kStateDue;
   parallel::Buffer mine(sizeof(StepVote));
   std::memcpy(mine.data(), &step_vote_, sizeof(StepVote));
   const auto all = domain_->complete_element_sums(element_sums_, mine);
@@ -1411,7 +1418,7 @@ RunResult ExplicitEngine::run(const std::function<bool(const CycleReport&)>& on_
   }
   // An error ends the loop on every rank at once (every stop is decided on shared values); the state the
   // caller writes then must be every node's.
-  if (domain_ && res.status != RunStatus::Normal) share_output_state();
+  if (domain_ && res.status != RunStatus::Normal) share_output_state(true);
   res.cycles = L.cycle;
   res.time = L.time;
   res.dt1 = L.dt1;
@@ -1624,7 +1631,8 @@ bool ExplicitEngine::outputs(LoopState& L, bool last, const std::function<bool(c
   const bool full = L.first || last || L.cycle % std::max<std::int64_t>(1, options_.report_every) == 0 || due;
   CycleReport rep;
   if (full) {
-    share_output_state();
+    share_output_state(L.first || last || th_reads_elements_ ||
+                       (step_vote_.flags & StepVote::kStateDue) != 0);
     sum_energies(L);
     rep = report(L.cycle, L.time, L.dt2, L.control);
     rep.momentum = momentum_;
@@ -1669,9 +1677,20 @@ bool ExplicitEngine::any_rank(bool mine) const {
 // On more than one rank: the node and group state the result fields and the time history read, from each
 // node's and group's owner into rank 0's copy (the writer), so it reads what one rank has. The other ranks
 // need none of it: the energies come from each owner's sums (kinetic_sums, sum_energies).
-void ExplicitEngine::share_output_state() {
+void ExplicitEngine::share_output_state(bool whole) {
   if (!domain_) return;
   domain_->gather_node_state(nodes_, 0);
+  if (!whole) {  // the parts' time history: energies and eroded mass
+    domain_->share_group_arrays(
+        groups_,
+        [](auto& g, auto&& visit) {
+          visit(g.off);
+          visit(g.e_int);
+          if constexpr (requires { g.e_hg; }) visit(g.e_hg);
+        },
+        0);
+    return;
+  }
   domain_->share_group_arrays(
       groups_,
       [](auto& g, auto&& visit) {

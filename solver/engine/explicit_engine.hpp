@@ -107,6 +107,11 @@ struct EngineOptions {
   // Also a full report on cycles where this returns true for the cycle's time (outputs due: animation
   // states, time-history rows). Called once per cycle; empty: never.
   std::function<bool(double time)> output_due;
+  // Of those, the cycles that write a state (animation, the last state of a stop): on more than one rank
+  // rank 0 then gathers every group's whole state; on the other full cycles (listing, time history) only
+  // what the energies and the time history's nodes and parts read, unless the time history has element
+  // objects. Empty: every full cycle is a state cycle.
+  std::function<bool(double time)> state_due;
   // The ranks the run is split over (solver/parallel/engine_domain.hpp); null or one rank: the whole model
   // here. Every rank builds its engine from the same model and controls.
   parallel::Comm* comm = nullptr;
@@ -149,6 +154,7 @@ struct GroupVote {
 struct StepVote {
   static constexpr std::int64_t kNoGroup = std::numeric_limits<std::int64_t>::max();
   static constexpr std::uint32_t kOutputDue = 1;  // an output or a stop signal makes this cycle full
+  static constexpr std::uint32_t kStateDue = 2;   // and a state is written
   GroupVote best{std::numeric_limits<double>::infinity()};
   std::int64_t best_flat = kNoGroup;
   GroupVote stop{};
@@ -264,7 +270,9 @@ class ExplicitEngine {
   // On more than one rank: this rank's groups and the exchanges that keep one rank's results (null: one
   // rank).
   std::unique_ptr<parallel::EngineDomain> domain_;
-  void share_output_state();
+  // `whole`: every array the result fields read; else those of the energies and the parts' time history.
+  void share_output_state(bool whole);
+  bool th_reads_elements_ = false;  // a /TH of elements: every full cycle gathers whole states
   void kinetic_sums(double dt1);
   std::array<double, 3> momentum_{};  // at the last full cycle (kinetic_sums)
   [[nodiscard]] bool any_rank(bool mine) const;
