@@ -226,6 +226,12 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
         parallel::replicated_nodes(model_), comm);
   }
   build_node_pass_chunks();
+  if (domain_) {
+    std::vector<std::int32_t> watched;
+    for (const auto& th : model_.time_histories)
+      if (th.kind == model::ThKind::Node) watched.insert(watched.end(), th.objects.begin(), th.objects.end());
+    domain_->watch_nodes(watched);
+  }
   for (const auto& th : model_.time_histories)
     th_reads_elements_ =
         th_reads_elements_ || (th.kind != model::ThKind::Node && th.kind != model::ThKind::Part &&
@@ -1679,8 +1685,8 @@ bool ExplicitEngine::any_rank(bool mine) const {
 // need none of it: the energies come from each owner's sums (kinetic_sums, sum_energies).
 void ExplicitEngine::share_output_state(bool whole) {
   if (!domain_) return;
-  domain_->gather_node_state(nodes_, 0);
-  if (!whole) {  // the parts' time history: energies and eroded mass
+  if (!whole) {  // the time history's nodes, and its parts: motion, energies and eroded mass
+    domain_->gather_node_motion(nodes_, 0);
     domain_->share_group_arrays(
         groups_,
         [](auto& g, auto&& visit) {
@@ -1691,6 +1697,7 @@ void ExplicitEngine::share_output_state(bool whole) {
         0);
     return;
   }
+  domain_->gather_node_state(nodes_, 0);
   domain_->share_group_arrays(
       groups_,
       [](auto& g, auto&& visit) {

@@ -188,8 +188,8 @@ EngineDomain::EngineDomain(const ElementGroups& groups, std::vector<std::int32_t
       plan_(build_domain_plan(groups, group_rank_, static_cast<std::int64_t>(replicated.size()), comm.size(),
                               comm.rank())),
       shared_(plan_) {
-  const auto owner =
-      node_owner_ranks(groups, group_rank_, static_cast<std::int64_t>(replicated.size()), comm.size());
+  owner_ = node_owner_ranks(groups, group_rank_, static_cast<std::int64_t>(replicated.size()), comm.size());
+  const auto& owner = owner_;
   replicated_runs_ =
       runs_of_every_rank(owner, comm.size(), [&](std::size_t n) { return replicated[n] != 0; });
   unreplicated_runs_ =
@@ -232,14 +232,41 @@ void EngineDomain::update_ghosts(NodeState& nodes) {
   exchange_ghosts(plan_, comm_, nodes);
 }
 
+void EngineDomain::watch_nodes(std::span<const std::int32_t> watched) {
+  std::vector<std::uint8_t> mark(owner_.size(), 0);
+  for (const auto n : watched) mark[static_cast<std::size_t>(n)] = 1;
+  // The unreplicated ones: the others are whole on every rank already.
+  std::vector<std::uint8_t> unreplicated(owner_.size(), 0);
+  for (const auto& runs : unreplicated_runs_)
+    for (const auto& r : runs) std::fill(unreplicated.begin() + r.first, unreplicated.begin() + r.last, 1);
+  watched_runs_ = runs_of_every_rank(owner_, comm_.size(),
+                                     [&](std::size_t n) { return mark[n] != 0 && unreplicated[n] != 0; });
+}
+
+void EngineDomain::gather_node_motion(NodeState& s, int root) {
+  const std::array<NodeField, 6> motion{{{s.vx.data(), 1},
+                                         {s.vy.data(), 1},
+                                         {s.vz.data(), 1},
+                                         {s.ax.data(), 1},
+                                         {s.ay.data(), 1},
+                                         {s.az.data(), 1}}};
+  all_gather_runs(unreplicated_runs_, motion, {}, root);
+  if (!watched_runs_.empty()) gather_runs_of_state(watched_runs_, s, root);
+}
+
 void EngineDomain::gather_node_state(NodeState& s, int root) {
+  gather_runs_of_state(unreplicated_runs_, s, root);
+}
+
+void EngineDomain::gather_runs_of_state(const std::vector<std::vector<NodeRun>>& runs, NodeState& s,
+                                        int root) {
   const std::array<NodeField, 24> fields{
       {{s.x.data(), 1},   {s.y.data(), 1},      {s.z.data(), 1},      {s.vx.data(), 1},    {s.vy.data(), 1},
        {s.vz.data(), 1},  {s.ax.data(), 1},     {s.ay.data(), 1},     {s.az.data(), 1},    {s.fx.data(), 1},
        {s.fy.data(), 1},  {s.fz.data(), 1},     {s.wx.data(), 1},     {s.wy.data(), 1},    {s.wz.data(), 1},
        {s.mx.data(), 1},  {s.my.data(), 1},     {s.mz.data(), 1},     {s.awx.data(), 1},   {s.awy.data(), 1},
        {s.awz.data(), 1}, {s.fx_ext.data(), 1}, {s.fy_ext.data(), 1}, {s.fz_ext.data(), 1}}};
-  all_gather_runs(unreplicated_runs_, fields, {}, root);
+  all_gather_runs(runs, fields, {}, root);
 }
 
 std::vector<Buffer> EngineDomain::all_gather_runs(const std::vector<std::vector<NodeRun>>& runs,

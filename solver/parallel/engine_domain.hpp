@@ -98,6 +98,11 @@ class EngineDomain {
   // forces), from its owner, so that the root holds every node as one rank does: before its outputs read
   // them. Called by every rank.
   void gather_node_state(NodeState& nodes, int root);
+  // Less of it, for a time-history or listing cycle: every node's v and a (the parts' kinetic energy and
+  // momentum) and the whole state of the nodes in `watched` (the time history's nodes, set once by
+  // watch_nodes).
+  void gather_node_motion(NodeState& nodes, int root);
+  void watch_nodes(std::span<const std::int32_t> watched);
 
   // This rank's owned nodes, as runs (each node is counted by one rank in order-free sums).
   [[nodiscard]] const std::vector<NodeRun>& owned_runs() const { return plan_.owned_runs; }
@@ -177,6 +182,7 @@ class EngineDomain {
   // Each rank sends `header` and its runs[rank] of every field; the others' runs arrive into this rank's
   // fields, and every rank's header is returned, indexed by rank: on every rank (root -1) or on rank root
   // alone (the others return no header and receive nothing).
+  void gather_runs_of_state(const std::vector<std::vector<NodeRun>>& runs, NodeState& nodes, int root);
   std::vector<Buffer> all_gather_runs(const std::vector<std::vector<NodeRun>>& runs,
                                       std::span<const NodeField> fields, const Buffer& header = {},
                                       int root = -1);
@@ -185,6 +191,8 @@ class EngineDomain {
   // outputs only), as runs.
   std::vector<std::vector<NodeRun>> replicated_runs_;
   std::vector<std::vector<NodeRun>> unreplicated_runs_;
+  std::vector<std::vector<NodeRun>> watched_runs_;  // unreplicated nodes of the time history, per owner
+  std::vector<std::int32_t> owner_;
   std::vector<NodeRun> pass_runs_;
   std::vector<std::int32_t> partial_ghosts_;  // ghosts not replicated: their local sums are partial
 };

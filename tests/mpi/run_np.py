@@ -13,7 +13,10 @@ usage: /usr/bin/python3 run_np.py --radx-starter EXE --radx-engine EXE --radx-en
     element-cycle) and the thread and rank counts.
   * --impact N adds the impact benchmark's deck (bench/gen_shell_plate.py --n N --impact, 0.5 ms): an N x N
     shell plate and a brick block in many groups of 128 elements, so that many nodes are shared by groups of
-    different ranks (the sample decks are mostly one group or two).
+    different ranks (the sample decks are mostly one group or two); and the same model without contact, its
+    time history watching nodes over the plate and the moving block: no node is then kept whole on every
+    rank, so this is where the owned-node passes, the ghost updates and the time-history cycles' partial
+    gather on rank 0 show.
   * Each --refused deck uses a feature not yet run on more than one rank: at np 2 mpirun exits 1, rank 0
     alone names the feature ("cannot be split over 2 ranks yet"), and the folder holds nothing but the model.
 """
@@ -50,6 +53,30 @@ def timing_free(summary):
     if isinstance(summary, list):
         return [timing_free(v) for v in summary]
     return summary
+
+
+def watch_nodes(deck, n):
+    """Replaces the deck's /TH/NODE node list by nodes spread over the plate (ids 1 .. (n + 1)^2, at rest
+    without contact) and over the moving block (the deck's other nodes)."""
+    with open(deck) as f:
+        lines = f.read().split("\n")
+    ids, in_nodes = [], False
+    for line in lines:
+        if line.startswith("/"):
+            in_nodes = line.startswith("/NODE")
+        elif in_nodes and line.split() and line.split()[0].isdigit():
+            ids.append(int(line.split()[0]))
+    side = n + 1
+    step = max(1, n // 4)
+    plate = {1 + i * side + j for i in range(0, side, step) for j in range(0, side, step)}
+    block = [i for i in ids if i > side * side]
+    watched = sorted(plate | set(block[:: max(1, len(block) // 12)]))
+    start = lines.index("/TH/NODE/1")
+    end = next(i for i in range(start + 1, len(lines)) if lines[i].startswith("/"))
+    body = [l for l in lines[start:end] if l.startswith("#") or not l[:1].isdigit() and not l.startswith(" ")]
+    lines[start:end] = body + ["%10d%10d" % (i, 0) for i in watched]
+    with open(deck, "w") as f:
+        f.write("\n".join(lines))
 
 
 def names(deck):
@@ -138,6 +165,15 @@ def main():
         r = run(["/usr/bin/python3", a.generator, "--n", str(a.impact), "--impact", "--tstop", "0.0005", "--out", gen])
         check(r.returncode == 0, "the impact deck generated (%s)" % r.stderr.strip()[-300:])
         a.decks.append(os.path.join(gen, "PLATE%dI_0000.rad" % a.impact))
+        # Without contact no node is kept whole on every rank: each rank integrates its own, and on the
+        # time-history cycles rank 0 gathers only their motion and the watched nodes' whole state. The
+        # time history watches nodes all over the plate and the block, so that other ranks own some.
+        r = run(["/usr/bin/python3", a.generator, "--n", str(a.impact), "--impact", "--contact", "none",
+                 "--th-records", "40", "--anim-states", "3", "--tstop", "0.0005", "--out", gen])
+        check(r.returncode == 0, "the contact-free impact deck generated (%s)" % r.stderr.strip()[-300:])
+        free = os.path.join(gen, "PLATE%dI_NOCONTACT_0000.rad" % a.impact)
+        watch_nodes(free, a.impact)
+        a.decks.append(free)
     for deck in a.decks:
         compare(a, deck)
     for deck in a.refused:
