@@ -1210,8 +1210,9 @@ void ExplicitEngine::combine_step_votes(double time) {
     add_group_vote(step_vote_, group_votes_[static_cast<std::size_t>(flat)], flat, controls_);
   if (options_.output_due && options_.output_due(time)) step_vote_.flags |= StepVote::kOutputDue;
   if (!options_.state_due || options_.state_due(time)) step_vote_.flags |= StepVote::kStateDue;
+  static_assert(std::is_trivially_copyable_v<StepVote>);
   parallel::Buffer mine(sizeof(StepVote));
-  std::memcpy(mine.data(), &step_vote_, sizeof(StepVote));
+  std::memcpy(mine.data(), &step_vote_, sizeof(StepVote));  // padding included: the merge reads fields only
   const auto all = domain_->complete_element_sums(element_sums_, mine);
   step_vote_ = StepVote{};
   for (const auto& theirs : all) {

@@ -178,6 +178,8 @@ class ExplicitEngine {
   // stops the run at the next full one.
   RunResult run(const std::function<bool(const CycleReport&)>& on_cycle);
 
+  // On more than one rank, rank 0 holds every node after a full cycle (and at the run's end); the other
+  // ranks hold their owned and replicated nodes and ghosts, the rest stale.
   [[nodiscard]] const NodeState& nodes() const { return nodes_; }
   [[nodiscard]] const ElementGroups& groups() const { return groups_; }
   [[nodiscard]] std::size_t element_count() const { return element_count_; }

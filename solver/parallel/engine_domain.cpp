@@ -30,20 +30,21 @@ std::vector<std::string> features_not_distributed(const model::Model& m, const m
 
 namespace {
 
+// Node `node` (above every node in `runs`) onto ascending runs: the last run grows, or a new one starts.
+void append_node(std::vector<NodeRun>& runs, std::int64_t node) {
+  if (!runs.empty() && runs.back().last == node)
+    ++runs.back().last;
+  else
+    runs.push_back({node, node + 1});
+}
+
 // Every rank's owned nodes that `keep(node)` selects, as ascending runs.
 template <class Keep>
 std::vector<std::vector<NodeRun>> runs_of_every_rank(const std::vector<std::int32_t>& owner, int ranks,
                                                      Keep&& keep) {
   std::vector<std::vector<NodeRun>> runs(static_cast<std::size_t>(ranks));
-  for (std::size_t n = 0; n < owner.size(); ++n) {
-    if (!keep(n)) continue;
-    auto& r = runs[static_cast<std::size_t>(owner[n])];
-    const auto node = static_cast<std::int64_t>(n);
-    if (!r.empty() && r.back().last == node)
-      ++r.back().last;
-    else
-      r.push_back({node, node + 1});
-  }
+  for (std::size_t n = 0; n < owner.size(); ++n)
+    if (keep(n)) append_node(runs[static_cast<std::size_t>(owner[n])], static_cast<std::int64_t>(n));
   return runs;
 }
 
@@ -51,14 +52,8 @@ std::vector<std::vector<NodeRun>> runs_of_every_rank(const std::vector<std::int3
 std::vector<NodeRun> pass_runs_of(const std::vector<std::int32_t>& owner,
                                   std::span<const std::uint8_t> replicated, int rank) {
   std::vector<NodeRun> runs;
-  for (std::size_t n = 0; n < owner.size(); ++n) {
-    if (owner[n] != rank && replicated[n] == 0) continue;
-    const auto node = static_cast<std::int64_t>(n);
-    if (!runs.empty() && runs.back().last == node)
-      ++runs.back().last;
-    else
-      runs.push_back({node, node + 1});
-  }
+  for (std::size_t n = 0; n < owner.size(); ++n)
+    if (owner[n] == rank || replicated[n] != 0) append_node(runs, static_cast<std::int64_t>(n));
   return runs;
 }
 
@@ -241,6 +236,8 @@ void EngineDomain::watch_nodes(std::span<const std::int32_t> watched) {
     for (const auto& r : runs) std::fill(unreplicated.begin() + r.first, unreplicated.begin() + r.last, 1);
   watched_runs_ = runs_of_every_rank(owner_, comm_.size(),
                                      [&](std::size_t n) { return mark[n] != 0 && unreplicated[n] != 0; });
+  any_watched_ =
+      std::any_of(watched_runs_.begin(), watched_runs_.end(), [](const auto& r) { return !r.empty(); });
 }
 
 void EngineDomain::gather_node_motion(NodeState& s, int root) {
@@ -251,7 +248,7 @@ void EngineDomain::gather_node_motion(NodeState& s, int root) {
                                          {s.ay.data(), 1},
                                          {s.az.data(), 1}}};
   all_gather_runs(unreplicated_runs_, motion, {}, root);
-  if (!watched_runs_.empty()) gather_runs_of_state(watched_runs_, s, root);
+  if (any_watched_) gather_runs_of_state(watched_runs_, s, root);
 }
 
 void EngineDomain::gather_node_state(NodeState& s, int root) {
@@ -298,7 +295,8 @@ std::vector<Buffer> EngineDomain::all_gather_runs(const std::vector<std::vector<
   for (std::size_t r = 0; r < all.size(); ++r) {
     std::uint64_t theirs = 0;
     if (all[r].size() >= sizeof theirs) std::memcpy(&theirs, all[r].data(), sizeof theirs);
-    if (all[r].size() != sizeof theirs + theirs + doubles_of(runs[r]) * sizeof(double))
+    if (theirs > all[r].size() - std::min(all[r].size(), sizeof theirs) ||
+        all[r].size() != sizeof theirs + theirs + doubles_of(runs[r]) * sizeof(double))
       throw std::runtime_error("rank " + std::to_string(r) +
                                "'s node message does not have the size its nodes need");
     const std::byte* q = all[r].data() + sizeof theirs;

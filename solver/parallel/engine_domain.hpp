@@ -16,10 +16,12 @@
 //   - every other node is assembled, accelerated, conditioned and integrated by its owner alone (node passes
 //     over pass_runs: owned or replicated nodes); after integration the owners send x, v (and omega) to the
 //     ranks whose groups read the node (its ghosts there);
-//   - the groups' time-step votes (one record a group) are gathered on every rank and combined in group order
-//     as one rank combines them;
-//   - before the energies, outputs or the listing of deleted elements read the nodes or groups, the owners
-//     send what those read to every rank (gather_node_state, share_group_arrays).
+//   - each rank's groups' time-step votes, combined in group order into one record a rank, ride with the
+//     replicated nodes' sums to every rank (complete_element_sums), which merges them as one rank's scan;
+//   - before the outputs read the nodes or groups, the owners send what those read to rank 0, the writer
+//     (gather_node_state, gather_node_motion, share_group_arrays with a root); the listing of deleted
+//     elements and a bad element's message gather life factors and steps on every rank. Boundary conditions
+//     are applied by every rank to every node they hold (harmless where a rank does not integrate the node).
 #pragma once
 
 #include <cstdint>
@@ -192,6 +194,7 @@ class EngineDomain {
   std::vector<std::vector<NodeRun>> replicated_runs_;
   std::vector<std::vector<NodeRun>> unreplicated_runs_;
   std::vector<std::vector<NodeRun>> watched_runs_;  // unreplicated nodes of the time history, per owner
+  bool any_watched_ = false;                        // some rank owns one (the same on every rank)
   std::vector<std::int32_t> owner_;
   std::vector<NodeRun> pass_runs_;
   std::vector<std::int32_t> partial_ghosts_;  // ghosts not replicated: their local sums are partial

@@ -39,7 +39,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import gen_cut_deck as gen  # noqa: E402  (the deck's node numbering: which nodes the body and the tie hold)
-from run_np import MPI_FLAGS, timing_free  # noqa: E402
+from run_np import MPI_FLAGS, check, failures, finish, timing_free  # noqa: E402
 
 ROOT = gen.ROOT
 # Part -> rank: the root, the tip and the clamp on different ranks where P allows (P = 2: root and clamp
@@ -50,14 +50,6 @@ BODY_NODES = gen.TIP_BLOCK.face(gen.TIP_BLOCK.nx) + [n for n, *_ in gen.CLAMP_BL
 TIED_NODES = gen.TIP_BLOCK.face(0)
 MAIN_NODES = gen.ROOT_BLOCK.face(gen.ROOT_BLOCK.nx)
 REFUSAL = "error(s) in the group-rank file"
-
-failures = []
-
-
-def check(ok, what):
-    print(("ok:   " if ok else "FAIL: ") + what, flush=True)
-    if not ok:
-        failures.append(what)
 
 
 def run(cmd, timeout=600):
@@ -260,10 +252,7 @@ def main():
     check(r.returncode == 0, "radx-engine exit %d %s" % (r.returncode, r.stderr.strip()[-300:]))
     if not failures:
         (errors if a.errors else forced_cut)(a, serial)
-    if failures:
-        print("%d check(s) failed" % len(failures))
-        sys.exit(1)
-    print("all checks passed")
+    finish()
 
 
 if __name__ == "__main__":

@@ -42,6 +42,14 @@ def check(ok, what):
         failures.append(what)
 
 
+def finish():
+    """Ends the script: exit 1 with the count when a check failed."""
+    if failures:
+        print("%d check(s) failed" % len(failures))
+        sys.exit(1)
+    print("all checks passed")
+
+
 def run(cmd):
     return subprocess.run(cmd, capture_output=True, text=True, timeout=600)
 
@@ -178,10 +186,7 @@ def main():
         compare(a, deck)
     for deck in a.refused:
         check_refused(a, deck)
-    if failures:
-        print("%d check(s) failed" % len(failures))
-        sys.exit(1)
-    print("all checks passed")
+    finish()
 
 
 if __name__ == "__main__":
