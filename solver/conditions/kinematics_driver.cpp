@@ -99,19 +99,6 @@ KineticSums KinematicsDriver::kinetic_sums(double dt1, std::span<const std::arra
   return sums;
 }
 
-void KinematicsDriver::kinetic_energy(double dt1, double& translational, double& rotational) const {
-  const std::array<std::size_t, 2> all{0, nodes_.n};
-  const KineticSums sums = kinetic_sums(dt1, std::span(&all, 1), true);
-  translational = sums.translational.value();
-  rotational = sums.rotational.value();
-}
-
-std::array<double, 3> KinematicsDriver::momentum(double dt1) const {
-  const std::array<std::size_t, 2> all{0, nodes_.n};
-  const KineticSums sums = kinetic_sums(dt1, std::span(&all, 1), true);
-  return {sums.momentum[0].value(), sums.momentum[1].value(), sums.momentum[2].value()};
-}
-
 double KinematicsDriver::external_work() const {
   return parts_->external_work;
 }

@@ -47,13 +47,11 @@ class KinematicsDriver {
   void kinematic_conditions(double t, double dt1, double dt2);
   // After x += dt2 v (moving frames of rigid bodies).
   void after_update(double dt2);
-  // KE at the full step, v = v^{n-1/2} + dt1/2 a^n (docs/theory/elements.md section 8), rigid bodies counted
-  // once. Exact sums, rounded once (model::ExactSum): the same bits in any order of the nodes.
-  void kinetic_energy(double dt1, double& translational, double& rotational) const;
-  [[nodiscard]] std::array<double, 3> momentum(double dt1) const;
-  // The exact sums of both over the nodes [first, last) of each run, and the rigid bodies' correction when
-  // `with_bodies`: on several ranks each adds the nodes it owns and one the bodies, and the sums' bins add
-  // up to one rank's (Comm::sum_exact).
+  // KE and momentum at the full step, v = v^{n-1/2} + dt1/2 a^n (docs/theory/elements.md section 8), as
+  // exact sums (model::ExactSum: the same bits in any order of the nodes) over the nodes [first, last) of
+  // each run, with the rigid bodies' correction (each body counted once) when `with_bodies`: on several
+  // ranks each adds the nodes it owns and one the bodies, and the sums' bins add up to one rank's
+  // (Comm::sum_exact).
   [[nodiscard]] KineticSums kinetic_sums(double dt1, std::span<const std::array<std::size_t, 2>> runs,
                                          bool with_bodies) const;
   [[nodiscard]] double external_work() const;

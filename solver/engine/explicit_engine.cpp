@@ -221,17 +221,14 @@ ExplicitEngine::ExplicitEngine(const model::Model& model, const model::RunContro
       throw std::runtime_error("the engine does not run these on more than one rank yet: " + names);
     }
     auto& comm = *options_.comm;
-    domain_ = std::make_unique<parallel::EngineDomain>(
-        groups_, parallel::engine_group_ranks(model_, groups_, comm, options_.group_ranks),
-        parallel::replicated_nodes(model_), comm);
-  }
-  build_node_pass_chunks();
-  if (domain_) {
-    std::vector<std::int32_t> watched;
+    std::vector<std::int32_t> watched;  // the time history's nodes: rank 0 reads them on its cycles
     for (const auto& th : model_.time_histories)
       if (th.kind == model::ThKind::Node) watched.insert(watched.end(), th.objects.begin(), th.objects.end());
-    domain_->watch_nodes(watched);
+    domain_ = std::make_unique<parallel::EngineDomain>(
+        groups_, parallel::engine_group_ranks(model_, groups_, comm, options_.group_ranks),
+        parallel::replicated_nodes(model_), watched, comm);
   }
+  build_node_pass_chunks();
   for (const auto& th : model_.time_histories)
     th_reads_elements_ =
         th_reads_elements_ || (th.kind != model::ThKind::Node && th.kind != model::ThKind::Part &&
@@ -1836,8 +1833,8 @@ bool ExplicitEngine::integrate(LoopState& L, RunResult& res) {
     chunk_finite[static_cast<std::size_t>(c)] = integrate_nodes(s, dt12, dt2, first, last) ? 1 : 0;
   });
   loads_zeroed_ = true;
-  const bool finite = any_rank(!std::all_of(chunk_finite.begin(), chunk_finite.end(),
-                                            [](std::uint8_t f) { return f != 0; })) == false;
+  const bool finite =
+      !any_rank(std::any_of(chunk_finite.begin(), chunk_finite.end(), [](std::uint8_t f) { return f == 0; }));
   if (finite && domain_) domain_->update_ghosts(s);
   L.element_seconds += seconds_since(t0);
   kinematics_->after_update(dt2);

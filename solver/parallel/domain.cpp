@@ -268,7 +268,8 @@ DomainPlan build_domain_plan(const ElementGroups& groups, std::span<const std::i
   plan.rank = rank;
   plan.node_count = node_count;
   const NodeIncidence inc = node_incidence(groups, group_rank, node_count);
-  const std::vector<std::int32_t> owner = owners_of(inc, node_count);
+  plan.node_owner = owners_of(inc, node_count);
+  const std::vector<std::int32_t>& owner = plan.node_owner;
 
   plan.local_group.assign(group_rank.size(), -1);
   for (std::size_t flat = 0; flat < group_rank.size(); ++flat)

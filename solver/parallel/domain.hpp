@@ -85,6 +85,8 @@ struct DomainPlan {
   // Owned nodes as runs, ascending (what the node passes walk instead of node chunks), and their count.
   std::vector<NodeRun> owned_runs;
   std::int64_t owned_nodes = 0;
+  // Every node's owning rank (node_owner_ranks), the same on every rank.
+  std::vector<std::int32_t> node_owner;
 
   // Ghost update, per rank r: the nodes this rank receives from their owner r (nodes its groups touch that
   // r owns) and the nodes it sends to r (nodes it owns that r's groups touch), ascending. *_rotation says,

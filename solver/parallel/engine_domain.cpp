@@ -175,7 +175,8 @@ std::vector<std::int32_t> engine_group_ranks(const model::Model& model, const El
 }
 
 EngineDomain::EngineDomain(const ElementGroups& groups, std::vector<std::int32_t> group_rank,
-                           std::span<const std::uint8_t> replicated, Comm& comm)
+                           std::span<const std::uint8_t> replicated, std::span<const std::int32_t> watched,
+                           Comm& comm)
     : comm_(comm),
       group_rank_(std::move(group_rank)),
       rank_groups_begin_(rank_begins(group_rank_, comm.size())),
@@ -183,8 +184,7 @@ EngineDomain::EngineDomain(const ElementGroups& groups, std::vector<std::int32_t
       plan_(build_domain_plan(groups, group_rank_, static_cast<std::int64_t>(replicated.size()), comm.size(),
                               comm.rank())),
       shared_(plan_) {
-  owner_ = node_owner_ranks(groups, group_rank_, static_cast<std::int64_t>(replicated.size()), comm.size());
-  const auto& owner = owner_;
+  const auto& owner = plan_.node_owner;
   replicated_runs_ =
       runs_of_every_rank(owner, comm.size(), [&](std::size_t n) { return replicated[n] != 0; });
   unreplicated_runs_ =
@@ -192,6 +192,13 @@ EngineDomain::EngineDomain(const ElementGroups& groups, std::vector<std::int32_t
   pass_runs_ = pass_runs_of(owner, replicated, comm.rank());
   for (const auto n : plan_.ghost_nodes)
     if (replicated[static_cast<std::size_t>(n)] == 0) partial_ghosts_.push_back(n);
+  // The watched nodes but the replicated ones, which every rank holds whole already.
+  std::vector<std::uint8_t> watch(owner.size(), 0);
+  for (const auto n : watched)
+    watch[static_cast<std::size_t>(n)] = replicated[static_cast<std::size_t>(n)] == 0;
+  watched_runs_ = runs_of_every_rank(owner, comm.size(), [&](std::size_t n) { return watch[n] != 0; });
+  any_watched_ =
+      std::any_of(watched_runs_.begin(), watched_runs_.end(), [](const auto& r) { return !r.empty(); });
 }
 
 void EngineDomain::write_shared_slots(const ElementGroups& groups, std::int64_t flat) {
@@ -225,19 +232,6 @@ std::vector<Buffer> EngineDomain::complete_element_sums(std::span<double> elemen
 
 void EngineDomain::update_ghosts(NodeState& nodes) {
   exchange_ghosts(plan_, comm_, nodes);
-}
-
-void EngineDomain::watch_nodes(std::span<const std::int32_t> watched) {
-  std::vector<std::uint8_t> mark(owner_.size(), 0);
-  for (const auto n : watched) mark[static_cast<std::size_t>(n)] = 1;
-  // The unreplicated ones: the others are whole on every rank already.
-  std::vector<std::uint8_t> unreplicated(owner_.size(), 0);
-  for (const auto& runs : unreplicated_runs_)
-    for (const auto& r : runs) std::fill(unreplicated.begin() + r.first, unreplicated.begin() + r.last, 1);
-  watched_runs_ = runs_of_every_rank(owner_, comm_.size(),
-                                     [&](std::size_t n) { return mark[n] != 0 && unreplicated[n] != 0; });
-  any_watched_ =
-      std::any_of(watched_runs_.begin(), watched_runs_.end(), [](const auto& r) { return !r.empty(); });
 }
 
 void EngineDomain::gather_node_motion(NodeState& s, int root) {

@@ -67,9 +67,10 @@ namespace radx::solver::parallel {
 class EngineDomain {
  public:
   // Every rank builds its domain from the same groups and the same group ranks (engine_group_ranks).
-  // `replicated` (replicated_nodes, one entry a node) is the same on every rank.
+  // `replicated` (replicated_nodes, one entry a node) and `watched` (the time history's nodes, whose whole
+  // state gather_node_motion sends) are the same on every rank.
   EngineDomain(const ElementGroups& groups, std::vector<std::int32_t> group_rank,
-               std::span<const std::uint8_t> replicated, Comm& comm);
+               std::span<const std::uint8_t> replicated, std::span<const std::int32_t> watched, Comm& comm);
   EngineDomain(const EngineDomain&) = delete;
   EngineDomain& operator=(const EngineDomain&) = delete;
 
@@ -101,10 +102,8 @@ class EngineDomain {
   // them. Called by every rank.
   void gather_node_state(NodeState& nodes, int root);
   // Less of it, for a time-history or listing cycle: every node's v and a (the parts' kinetic energy and
-  // momentum) and the whole state of the nodes in `watched` (the time history's nodes, set once by
-  // watch_nodes).
+  // momentum) and the whole state of the watched nodes.
   void gather_node_motion(NodeState& nodes, int root);
-  void watch_nodes(std::span<const std::int32_t> watched);
 
   // This rank's owned nodes, as runs (each node is counted by one rank in order-free sums).
   [[nodiscard]] const std::vector<NodeRun>& owned_runs() const { return plan_.owned_runs; }
@@ -195,7 +194,6 @@ class EngineDomain {
   std::vector<std::vector<NodeRun>> unreplicated_runs_;
   std::vector<std::vector<NodeRun>> watched_runs_;  // unreplicated nodes of the time history, per owner
   bool any_watched_ = false;                        // some rank owns one (the same on every rank)
-  std::vector<std::int32_t> owner_;
   std::vector<NodeRun> pass_runs_;
   std::vector<std::int32_t> partial_ghosts_;  // ghosts not replicated: their local sums are partial
 };
